@@ -12,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
 
 all: generate
 
@@ -38,7 +38,7 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap:
 	@tools/bootstrap
 
-test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden
+test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden test-consumer
 
 # Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
 # from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
@@ -105,6 +105,18 @@ endif
 test-bigendian: generate
 	$(PY) -m pytest -q tests/bigendian
 
+# The C and C++ packages consumed from outside the repository as docs/packaging.md says
+# (tests/consumer/): Release -O3 with -Werror under gcc (and clang where installed), cmake --install
+# of both into one prefix + find_package, pkg-config, add_subdirectory into a C-only project.
+test-consumer: generate
+	$(PY) -m pytest -q tests/consumer/test_consumers.py
+
+# The C core built freestanding for a Cortex-M4F (arm-none-eabi-gcc + newlib, -Os) into a minimal
+# image whose code size it prints. Not part of `make test`: needs gcc-arm-none-eabi and
+# libnewlib-arm-none-eabi (tools/bootstrap --ci; .ci/run runs it).
+test-cortexm: generate
+	$(PY) -m pytest -q -s tests/consumer/test_cortexm.py
+
 # Fuzzing (tests/fuzz/, docs/fuzzing.md): every harness of every language and package, one at a
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the
 # run; its input is saved under build/fuzz/findings/<lang>/<package>/<target>/. Needs clang-14,
@@ -118,15 +130,15 @@ FUZZ_ONLY ?=
 FUZZ_SELECT = $(foreach o,$(FUZZ_ONLY),--only $(o))
 
 fuzz: generate
-	$(PY) tests/fuzz/fuzz.py run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
+	$(PY) -m tests.fuzz.fuzz run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
 
 fuzz-long: generate
-	$(PY) tests/fuzz/fuzz.py run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
+	$(PY) -m tests.fuzz.fuzz run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
 
 # Part of `make test`: the inputs of tests/fuzz/regressions/ (and the seed corpus) through every
 # language's harnesses without clang or libFuzzer (gcc/g++ with ASan+UBSan, cargo test, pytest).
 test-fuzz-regressions: generate
-	$(PY) tests/fuzz/fuzz.py replay
+	$(PY) -m tests.fuzz.fuzz replay
 
 # Benchmarks of the four languages (tests/bench/run.py, docs/benchmarks.md): builds them into
 # build/bench/, runs them on the streams of tests/bench/streams.py and prints one table.

@@ -39,18 +39,19 @@ def snippet(source: str, part: str) -> str:
 def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
     """(text, code) telling how to vendor and build the package."""
     if lang == "c":
-        opt = re.search(r"option\((\w+_BUILD_TESTS)", files.get(f"c/{pkg}/CMakeLists.txt", ""))
-        off = f"set({opt.group(1)} OFF)\n" if opt else ""
         return (
-            f"Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your CMake build:",
-            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg})",
+            f"Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your"
+            f" CMake build (or install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see"
+            " the package's README). Its tests, tools and examples stay off when it is not the top-level"
+            " project:",
+            f"add_subdirectory(third_party/{pkg})\n"
+            f"target_link_libraries(your_app PRIVATE {pkg}::c)   # {pkg}::c_json for canonical JSON lines",
         )
     if lang == "cpp":
-        opt = re.search(r"option\((\w+_BUILD_TESTS)", files.get(f"cpp/{pkg}/CMakeLists.txt", ""))
-        off = f"set({opt.group(1)} OFF)\n" if opt else ""
         return (
-            f"Copy `generated/cpp/{pkg}/` into your tree (header-only C++17) and add it to your CMake build:",
-            f"{off}add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::{pkg})",
+            f"Copy `generated/cpp/{pkg}/` into your tree (header-only C++17) and add it to your CMake build (or"
+            f" install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see the package's README):",
+            f"add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::cpp)",
         )
     if lang == "python":
         return (

@@ -1,8 +1,8 @@
 """Builds and runs the fuzz harnesses of every language over every generated package.
 
-    python tests/fuzz/fuzz.py run [--seconds N | --runs N [--python-runs M]] [--only LANG[/PACKAGE[/TARGET]] ...]
-    python tests/fuzz/fuzz.py build [--only ...]
-    python tests/fuzz/fuzz.py replay
+    python -m tests.fuzz.fuzz run [--seconds N | --runs N [--python-runs M]] [--only LANG[/PACKAGE[/TARGET]] ...]
+    python -m tests.fuzz.fuzz build [--only ...]
+    python -m tests.fuzz.fuzz replay
 
 `run` builds what is missing or out of date, writes the seed corpora (tests/fuzz/seeds.py), then
 runs the targets one at a time (the machine is shared: never two fuzzers at once) and prints a
@@ -41,6 +41,8 @@ import sys
 import time
 from pathlib import Path
 
+from generator.targets.c.backend import c_prefix
+
 ROOT = Path(__file__).resolve().parents[2]
 HERE = ROOT / "tests" / "fuzz"
 BUILD = ROOT / "build" / "fuzz"
@@ -62,8 +64,8 @@ def packages() -> list[str]:
 
 
 def prefix(package: str) -> str:
-    """mipcodec -> mip (the C prefix of the package's names)."""
-    return package[: -len("codec")]
+    """mipcodec -> mipc (the C prefix of the package's names, as the C back end derives it)."""
+    return c_prefix(package)
 
 
 def log(msg: str) -> None:

@@ -55,5 +55,28 @@ def _protocol_h(byte_order: str) -> str:
 
 def test_protocol_header_carries_the_byte_order():
     """byte_order: little reaches the runtime's readers and writers through one constant."""
-    assert "#define MSCIP_LITTLE_ENDIAN 0\n" in _protocol_h("big")
-    assert "#define MSCIP_LITTLE_ENDIAN 1\n" in _protocol_h("little")
+    assert "#define MSCIPC_LITTLE_ENDIAN 0\n" in _protocol_h("big")
+    assert "#define MSCIPC_LITTLE_ENDIAN 1\n" in _protocol_h("little")
+
+
+def test_prefix_is_not_the_protocol_name():
+    """The C prefix is the package name without "codec", plus "c": the vendor SDKs name their C API
+    after the protocol (mip_, MIP_), so every macro of a package's headers starts with the package's
+    own prefix (tests/consumer checks the same for the library's linker symbols)."""
+    assert backend.c_prefix("mipcodec") == "mipc"
+    assert backend.c_prefix("mscipcodec") == "mscipc"
+    assert backend.c_prefix("democodec") == "democ"
+    assert backend.c_prefix("sbp") == "sbpc"
+    ir = json.loads(IR.read_text(encoding="utf-8"))
+    out = backend.render(ir, [])
+    for proto in ir["protocols"]:
+        own = backend.c_prefix(proto["package"]).upper() + "_"
+        macros = {
+            m
+            for path, text in out.items()
+            if path.startswith(f"c/{proto['package']}/include/")
+            for m in re.findall(r"^#\s*define\s+(\w+)", text, re.M)
+        }
+        assert macros
+        assert sorted(m for m in macros if not m.startswith(own)) == []
+        assert own != proto["name"].upper() + "_"

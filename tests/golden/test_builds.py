@@ -35,7 +35,10 @@ def run(cmd: list[str], **kw) -> None:
 def cmake_build_and_test(lang: str) -> None:
     src, out = GOLDEN / lang / PACKAGE, BUILD / lang / PACKAGE
     if not (out / "build.ninja").is_file():
-        run(["cmake", "-G", "Ninja", "-S", src, "-B", out, "-DCMAKE_BUILD_TYPE=Debug"])
+        # the packages' own -Werror option (OFF for consumers), as the project's CI builds them
+        run(
+            ["cmake", "-G", "Ninja", "-S", src, "-B", out, "-DCMAKE_BUILD_TYPE=Debug", f"-D{PACKAGE.upper()}_WERROR=ON"]
+        )
     run(["cmake", "--build", out])
     run([out / f"{PACKAGE}-tests", "--gtest_brief=1"])
 

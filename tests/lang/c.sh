@@ -20,10 +20,15 @@ packages() {
     done
 }
 
+# The package's <PKG>_WERROR option (OFF for consumers), ON in the project's own builds.
+werror() {
+    echo "$(tr '[:lower:]' '[:upper:]' <<<"$1")_WERROR=ON"
+}
+
 build_one() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
     if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" >&2
     fi
     cmake --build "$out" >&2
 }
@@ -31,7 +36,7 @@ build_one() {
 ensure_built() {
     local out="$ROOT/build/c/$PACKAGE"
     if [ -x "$out/$PACKAGE-decode" ] && [ -x "$out/$PACKAGE-encode" ] &&
-        cmake --build "$out" --target "$PACKAGE-decode" "$PACKAGE-encode" >/dev/null 2>&1; then
+        cmake --build "$out" --target "${PACKAGE}_c_decode" "${PACKAGE}_c_encode" >/dev/null 2>&1; then
         return
     fi
     build_one "$PACKAGE"
@@ -60,7 +65,7 @@ sanitized() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c-sanitize/$1"
     local san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
     if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS="$san" \
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" -DCMAKE_C_FLAGS="$san" \
             -DCMAKE_CXX_FLAGS="$san" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
     fi
     cmake --build "$out" >&2
@@ -87,7 +92,7 @@ PY
 ensure_example() {
     local out="$ROOT/build/c/$PACKAGE"
     if [ -x "$out/$PACKAGE-getting-started" ] &&
-        cmake --build "$out" --target "$PACKAGE-getting-started" >/dev/null 2>&1; then
+        cmake --build "$out" --target "${PACKAGE}_c_getting_started" >/dev/null 2>&1; then
         return
     fi
     build_one "$PACKAGE"

@@ -20,11 +20,14 @@ packages() {
   done
 }
 
+# The package's <PKG>_WERROR option (OFF for consumers), ON in the project's own builds.
+werror() { echo "$(tr '[:lower:]' '[:upper:]' <<<"$1")_WERROR=ON"; }
+
 configure() { # package
   local src="$GEN/$1" out="$ROOT/build/cpp/$1"
   [ -f "$src/CMakeLists.txt" ] || { echo "cpp.sh: $src is missing; run 'python -m generator --only cpp'" >&2; exit 2; }
   if [ ! -f "$out/build.ninja" ]; then
-    cmake -G Ninja -S "$src" -B "$out" >&2
+    cmake -G Ninja -S "$src" -B "$out" -D"$(werror "$1")" >&2
   fi
 }
 
@@ -59,7 +62,7 @@ build() { # package [targets...]
 tool() { # decode|encode|getting-started
   local exe="$ROOT/build/cpp/$PKG/$PKG-$1"
   # Always let ninja check (a no-op when up to date), so a regenerated package is rebuilt.
-  build "$PKG" "$PKG-$1" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
+  build "$PKG" "${PKG}_cpp_${1//-/_}" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
   echo "$exe"
 }
 
@@ -78,7 +81,7 @@ case "$cmd" in
       san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
       out="$ROOT/build/cpp-sanitize/$p"
       if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="$san" \
+        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$p")" -DCMAKE_CXX_FLAGS="$san" \
           -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
       fi
       cmake --build "$out" >&2

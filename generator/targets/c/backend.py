@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from generator import model
+from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import example_context
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
@@ -56,9 +57,9 @@ _TEMPLATES = {
     "protocol.h.j2": "include/{pkg}/protocol.h",
     "types.h.j2": "include/{pkg}/types.h",
     "types_internal.h.j2": "src/types_internal.h",
-    "types.c.j2": "src/types.c",
     "dispatch.h.j2": "include/{pkg}/dispatch.h",
     "dispatch.c.j2": "src/dispatch.c",
+    "dispatch_json.c.j2": "src/dispatch_json.c",
     "layouts_internal.h.j2": "src/layouts_internal.h",
     "umbrella.h.j2": "include/{pkg}/{pkg}.h",
     "version.h.j2": "include/{pkg}/version.h",
@@ -102,8 +103,18 @@ def member(name: str) -> str:
     return name + "_" if name in _KEYWORDS else name
 
 
+def c_prefix(package: str) -> str:
+    """The C symbol prefix of a package (without the trailing underscore; its upper case is the
+    macro prefix): the package name without a trailing "codec", plus "c" (mipcodec -> mipc_/MIPC_,
+    mscipcodec -> mscipc_/MSCIPC_). The vendor SDKs name their C API after the protocol (mip_,
+    MIP_), so a prefix that is not the protocol's name lets both be linked into one program; the
+    runtime is written with the neutral codec_/CODEC_ that this replaces (runtime_replacements)."""
+    base = package[: -len("codec")] if package.endswith("codec") and package != "codec" else package
+    return re.sub(r"[^a-z0-9_]", "_", base.lower()) + "c"
+
+
 def prefix_of(protocol: dict) -> str:
-    return re.sub(r"[^a-z0-9_]", "_", protocol["name"].lower())
+    return c_prefix(protocol["package"])
 
 
 def _int_literal(value: int, ctype: str, base: str) -> str:
@@ -536,6 +547,7 @@ class _Package:
             "p": self.p,
             "P": self.P,
             "pkg": self.pkg,
+            "PKG": self.pkg.upper(),
             "byte_order": self.proto["byte_order"],
             "title": self.proto["title"],
             "protocol": self.proto["name"],
@@ -588,9 +600,18 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
+        out.update(cmake_package_files(root, ctx, pkg_config(pkg.pkg, proto["title"], "c")))
+        # The core library holds the binary encoders and decoders, the JSON library (<pkg>_json)
+        # their canonical JSON: one source file of each per set, for the types and the reserved
+        # fields, so that a firmware build compiles and links no JSON code.
+        for part, suffix in (("wire", ""), ("json", "_json")):
+            out[root + f"src/types{suffix}.c"] = env.get_template("c/types.c.j2").render(ctx, part=part)
         for s in pkg.sets:
             out[root + f"include/{s['header']}"] = env.get_template("c/set.h.j2").render(ctx, set=s)
-            out[root + f"src/sets/{s['name']}.c"] = env.get_template("c/set.c.j2").render(ctx, set=s)
+            for part, suffix in (("wire", ""), ("json", "_json")):
+                out[root + f"src/sets/{s['name']}{suffix}.c"] = env.get_template("c/set.c.j2").render(
+                    ctx, set=s, part=part
+                )
         reserved = {
             "name": "reserved",
             "header": f"{pkg.pkg}/reserved.h",
@@ -600,7 +621,8 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "doc": "Reserved fields (valid in every set of their kind)",
         }
         out[root + f"include/{pkg.pkg}/reserved.h"] = env.get_template("c/set.h.j2").render(ctx, set=reserved)
-        out[root + "src/reserved.c"] = env.get_template("c/set.c.j2").render(ctx, set=reserved)
+        for part, suffix in (("wire", ""), ("json", "_json")):
+            out[root + f"src/reserved{suffix}.c"] = env.get_template("c/set.c.j2").render(ctx, set=reserved, part=part)
     return out
 
 

@@ -28,6 +28,7 @@ from __future__ import annotations
 import re
 
 from generator import model
+from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import example_context
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
@@ -611,6 +612,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         ctx = {
             "ns": P.ns,
             "pkg": pkg,
+            "PKG": pkg.upper(),
             "protocol": proto["name"],
             "title": proto["title"],
             "framing": P.framing(),
@@ -655,4 +657,5 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
+        files.update(cmake_package_files(f"{root}/", ctx, pkg_config(pkg, proto["title"], "cpp")))
     return files

@@ -4,8 +4,8 @@
  *
  * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
  * over the whole file in memory (read once, not timed):
- *   lang=c        mode=frame   mip_parser_feed + flush: every packet reported, garbage skipped
- *   lang=c        mode=decode  the same, plus field splitting and mip_decode_field of every field
+ *   lang=c        mode=frame   mipc_parser_feed + flush: every packet reported, garbage skipped
+ *   lang=c        mode=decode  the same, plus field splitting and mipc_decode_field of every field
  *   lang=baseline mode=copy    memchr(sync byte) + memcpy of each packet into a buffer
  * and prints one line per measurement:
  *   BENCH lang=c stream=accel_gyro mode=frame packets=N bytes=B seconds=S
@@ -103,32 +103,32 @@ static int load(const char *dir, const char *name, stream_t *s) {
 
 /* ---- frame: the callback parser ---- */
 
-static void on_frame(void *ctx, const mip_event_t *ev) {
+static void on_frame(void *ctx, const mipc_event_t *ev) {
     counts_t *c = ctx;
-    if (ev->kind == MIP_EVENT_PACKET) {
+    if (ev->kind == MIPC_EVENT_PACKET) {
         c->packets++;
-        c->check += ev->length + ev->packet[MIP_SET_OFFSET];
+        c->check += ev->length + ev->packet[MIPC_SET_OFFSET];
     }
 }
 
 /* ---- decode: callback parser + field iterator + dispatch ---- */
 
-static void on_decode(void *ctx, const mip_event_t *ev) {
+static void on_decode(void *ctx, const mipc_event_t *ev) {
     counts_t *c = ctx;
-    mip_field_iter_t it;
-    mip_field_entry_t e;
-    mip_field_value_t value;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    mipc_field_value_t value;
     uint8_t set;
-    if (ev->kind != MIP_EVENT_PACKET) {
+    if (ev->kind != MIPC_EVENT_PACKET) {
         return;
     }
     c->packets++;
-    set = mip_packet_set(ev->packet);
-    mip_field_iter_init(&it, set, mip_packet_payload(ev->packet), mip_packet_payload_length(ev->packet));
-    while (mip_field_iter_next(&it, &e)) {
+    set = mipc_packet_set(ev->packet);
+    mipc_field_iter_init(&it, set, mipc_packet_payload(ev->packet), mipc_packet_payload_length(ev->packet));
+    while (mipc_field_iter_next(&it, &e)) {
         uint32_t word = 0;
-        if (e.kind != MIP_ENTRY_FIELD ||
-            mip_decode_field(set, e.descriptor, e.data, e.length, MIP_DEVICE_ANY, &value, NULL) != MIP_OK) {
+        if (e.kind != MIPC_ENTRY_FIELD ||
+            mipc_decode_field(set, e.descriptor, e.data, e.length, MIPC_DEVICE_ANY, &value, NULL) != MIPC_OK) {
             c->errors++;
             continue;
         }
@@ -144,19 +144,19 @@ static void on_decode(void *ctx, const mip_event_t *ev) {
 /* ---- baseline: memchr + memcpy ---- */
 
 static void copy_pass(const stream_t *s, counts_t *c) {
-    static uint8_t buf[MIP_MAX_PACKET];
+    static uint8_t buf[MIPC_MAX_PACKET];
     const uint8_t *p = s->data;
     const uint8_t *end = s->data + s->len;
-    while (p + MIP_HEADER_SIZE <= end) {
+    while (p + MIPC_HEADER_SIZE <= end) {
         size_t total;
-        if (*p != MIP_SYNC_0) {
-            p = memchr(p, MIP_SYNC_0, (size_t)(end - p));
+        if (*p != MIPC_SYNC_0) {
+            p = memchr(p, MIPC_SYNC_0, (size_t)(end - p));
         }
-        if (!p || p + MIP_HEADER_SIZE > end) {
+        if (!p || p + MIPC_HEADER_SIZE > end) {
             break;
         }
-        total = MIP_HEADER_SIZE + (size_t)p[MIP_LENGTH_OFFSET] + MIP_CHECKSUM_SIZE;
-        if (p[1] != MIP_SYNC_1 || total > (size_t)(end - p)) {
+        total = MIPC_HEADER_SIZE + (size_t)p[MIPC_LENGTH_OFFSET] + MIPC_CHECKSUM_SIZE;
+        if (p[1] != MIPC_SYNC_1 || total > (size_t)(end - p)) {
             p++;
             continue;
         }
@@ -170,15 +170,15 @@ static void copy_pass(const stream_t *s, counts_t *c) {
 typedef enum { MODE_FRAME, MODE_DECODE, MODE_COPY } mode_t_;
 
 static void run_pass(const stream_t *s, mode_t_ mode, counts_t *c) {
-    mip_parser_t parser;
+    mipc_parser_t parser;
     memset(c, 0, sizeof *c);
     if (mode == MODE_COPY) {
         copy_pass(s, c);
         return;
     }
-    mip_parser_init(&parser);
-    mip_parser_feed(&parser, s->data, s->len, mode == MODE_FRAME ? on_frame : on_decode, c);
-    mip_parser_flush(&parser, mode == MODE_FRAME ? on_frame : on_decode, c);
+    mipc_parser_init(&parser);
+    mipc_parser_feed(&parser, s->data, s->len, mode == MODE_FRAME ? on_frame : on_decode, c);
+    mipc_parser_flush(&parser, mode == MODE_FRAME ? on_frame : on_decode, c);
 }
 
 int main(int argc, char **argv) {

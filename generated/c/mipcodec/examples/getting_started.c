@@ -9,26 +9,27 @@
 
 // [parse-stream]
 /* Called by the parser for every packet and every run of skipped bytes. */
-static void on_event(void *ctx, const mip_event_t *event) {
-    mip_field_iter_t fields;
-    mip_field_entry_t entry;
+static void on_event(void *ctx, const mipc_event_t *event) {
+    mipc_field_iter_t fields;
+    mipc_field_entry_t entry;
     const char *separator = "";
     uint8_t set;
     (void)ctx;
-    if (event->kind == MIP_EVENT_SKIP) {
+    if (event->kind == MIPC_EVENT_SKIP) {
         printf("skipped %llu\n", (unsigned long long)event->length);
         return;
     }
-    set = mip_packet_set(event->packet);
+    set = mipc_packet_set(event->packet);
     printf("packet set=0x%02x fields=", set);
-    mip_field_iter_init(&fields, set, mip_packet_payload(event->packet),
-                        mip_packet_payload_length(event->packet));
-    while (mip_field_iter_next(&fields, &entry)) {
-        mip_field_value_t value;
+    mipc_field_iter_init(&fields, set, mipc_packet_payload(event->packet),
+                         mipc_packet_payload_length(event->packet));
+    while (mipc_field_iter_next(&fields, &entry)) {
+        mipc_field_value_t value;
         const char *name = "?"; /* trailing bytes, or a field that does not decode */
-        if (entry.kind == MIP_ENTRY_FIELD && mip_decode_field(set, entry.descriptor, entry.data, entry.length,
-                                                              MIP_DEVICE_ANY, &value, NULL) == MIP_OK) {
-            name = mip_layout_info(value.id)->name;
+        if (entry.kind == MIPC_ENTRY_FIELD &&
+            mipc_decode_field(set, entry.descriptor, entry.data, entry.length, MIPC_DEVICE_ANY, &value,
+                              NULL) == MIPC_OK) {
+            name = mipc_layout_info(value.id)->name;
         }
         printf("%s%s", separator, name);
         separator = ",";
@@ -40,18 +41,18 @@ static void on_event(void *ctx, const mip_event_t *event) {
 // [build-command]
 /* Builds the command with its typed value and prints the packet bytes. */
 static int print_command(void) {
-    mip_base_ping_t command;
-    uint8_t data[MIP_MAX_FIELD_DATA];
-    uint8_t packet[MIP_MAX_PACKET];
+    mipc_base_ping_t command;
+    uint8_t data[MIPC_MAX_FIELD_DATA];
+    uint8_t packet[MIPC_MAX_PACKET];
     size_t data_len = 0;
     size_t packet_len = 0;
     size_t i;
-    mip_packet_builder_t builder;
+    mipc_packet_builder_t builder;
     memset(&command, 0, sizeof command);
-    mip_packet_begin(&builder, packet, sizeof packet, MIP_BASE_SET);
-    if (mip_base_ping_encode(&command, data, sizeof data, &data_len) != MIP_OK ||
-        mip_packet_add_field(&builder, MIP_BASE_PING_DESCRIPTOR, data, data_len) != MIP_OK ||
-        mip_packet_finish(&builder, &packet_len) != MIP_OK) {
+    mipc_packet_begin(&builder, packet, sizeof packet, MIPC_BASE_SET);
+    if (mipc_base_ping_encode(&command, data, sizeof data, &data_len) != MIPC_OK ||
+        mipc_packet_add_field(&builder, MIPC_BASE_PING_DESCRIPTOR, data, data_len) != MIPC_OK ||
+        mipc_packet_finish(&builder, &packet_len) != MIPC_OK) {
         fprintf(stderr, "getting_started: cannot build the command\n");
         return 1;
     }
@@ -67,7 +68,7 @@ static int print_command(void) {
 // [read-file]
 /* Feeds the file to the parser block by block, then flushes it at the end of the input. */
 static int decode_file(const char *path) {
-    mip_parser_t parser;
+    mipc_parser_t parser;
     uint8_t block[4096];
     size_t n;
     FILE *file = fopen(path, "rb");
@@ -75,9 +76,9 @@ static int decode_file(const char *path) {
         fprintf(stderr, "getting_started: cannot open %s: %s\n", path, strerror(errno));
         return 1;
     }
-    mip_parser_init(&parser);
+    mipc_parser_init(&parser);
     while ((n = fread(block, 1, sizeof block, file)) > 0) {
-        mip_parser_feed(&parser, block, n, on_event, NULL);
+        mipc_parser_feed(&parser, block, n, on_event, NULL);
     }
     if (ferror(file)) {
         fprintf(stderr, "getting_started: cannot read %s\n", path);
@@ -85,7 +86,7 @@ static int decode_file(const char *path) {
         return 1;
     }
     fclose(file);
-    mip_parser_flush(&parser, on_event, NULL);
+    mipc_parser_flush(&parser, on_event, NULL);
     return 0;
 }
 // [end]

@@ -2,11 +2,10 @@
 #include "mipcodec/field_iter.h"
 
 #include <assert.h>
-#include <stdio.h>
 
-bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, uint8_t length_byte,
-                              mip_trailing_kind_t why) {
-    entry->kind = MIP_ENTRY_TRAILING;
+bool mipc_field_iter_trailing_(mipc_field_iter_t *it, mipc_field_entry_t *entry, uint8_t length_byte,
+                               mipc_trailing_kind_t why) {
+    entry->kind = MIPC_ENTRY_TRAILING;
     entry->offset = it->pos;
     entry->descriptor = 0;
     entry->data = it->payload + it->pos;
@@ -17,24 +16,4 @@ bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, ui
     return true;
 }
 
-size_t mip_trailing_format(const mip_field_entry_t *entry, char *buf, size_t cap) {
-    assert(entry != NULL);
-    assert(buf != NULL || cap == 0);
-    int n;
-    switch (entry->trailing) {
-    case MIP_TRAILING_SHORT_LENGTH:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
-                     (unsigned)entry->length_byte, entry->offset);
-        break;
-    case MIP_TRAILING_OVERRUN:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
-                     (unsigned)entry->length_byte, entry->offset, entry->length);
-        break;
-    case MIP_TRAILING_SHORT_HEADER:
-    default:
-        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     MIP_FIELD_HEADER_SIZE, entry->length);
-        break;
-    }
-    return n < 0 ? 0 : (size_t)n;
-}
+/* mipc_trailing_format is in status.c, with the other messages (no stdio). */

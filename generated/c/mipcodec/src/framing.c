@@ -4,7 +4,7 @@
 #include <assert.h>
 #include <string.h>
 
-const uint8_t mip_sync[MIP_SYNC_SIZE] = MIP_SYNC_BYTES;
+const uint8_t mipc_sync[MIPC_SYNC_SIZE] = MIPC_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -30,7 +30,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
+uint16_t mipc_checksum_word(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL || len == 0);
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
@@ -69,122 +69,122 @@ uint16_t mip_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-#if MIP_CHECKSUM_SUM1_FIRST
+#if MIPC_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
 #else
     return (uint16_t)(sum2 << 8 | sum1);
 #endif
 }
 
-void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]) {
+void mipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIPC_CHECKSUM_SIZE]) {
     assert(bytes != NULL || len == 0);
     assert(out != NULL);
-    unsigned word = mip_checksum_word(bytes, len);
+    unsigned word = mipc_checksum_word(bytes, len);
     out[0] = (uint8_t)(word >> 8);
     out[1] = (uint8_t)(word & 0xFFu);
 }
 
 /* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
-bool mip_checksum_matches(const uint8_t *bytes, size_t len) {
+bool mipc_checksum_matches(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL);
-    return mip_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
+    return mipc_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
-bool mip_packet_valid(const uint8_t *packet, size_t len) {
+bool mipc_packet_valid(const uint8_t *packet, size_t len) {
     assert(packet != NULL || len == 0);
     size_t payload;
-    if (len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE || memcmp(packet, mip_sync, MIP_SYNC_SIZE) != 0) {
+    if (len < MIPC_HEADER_SIZE + MIPC_CHECKSUM_SIZE || memcmp(packet, mipc_sync, MIPC_SYNC_SIZE) != 0) {
         return false;
     }
-    payload = packet[MIP_LENGTH_OFFSET];
-    if (payload > MIP_MAX_PAYLOAD || len != MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE) {
+    payload = packet[MIPC_LENGTH_OFFSET];
+    if (payload > MIPC_MAX_PAYLOAD || len != MIPC_HEADER_SIZE + payload + MIPC_CHECKSUM_SIZE) {
         return false;
     }
-    return mip_checksum_matches(packet, MIP_HEADER_SIZE + payload);
+    return mipc_checksum_matches(packet, MIPC_HEADER_SIZE + payload);
 }
 
-void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+void mipc_packet_begin(mipc_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
     assert(b != NULL);
     assert(buf != NULL || cap == 0);
     b->buf = buf;
     b->cap = buf ? cap : 0;
     b->len = 0;
-    b->status = MIP_OK;
-    if (b->cap < MIP_HEADER_SIZE) {
-        b->status = MIP_ERR_BUFFER;
+    b->status = MIPC_OK;
+    if (b->cap < MIPC_HEADER_SIZE) {
+        b->status = MIPC_ERR_BUFFER;
         return;
     }
-    memcpy(buf, mip_sync, MIP_SYNC_SIZE);
-    buf[MIP_SET_OFFSET] = set;
+    memcpy(buf, mipc_sync, MIPC_SYNC_SIZE);
+    buf[MIPC_SET_OFFSET] = set;
     b->set = set;
-    buf[MIP_LENGTH_OFFSET] = 0;
-    b->len = MIP_HEADER_SIZE;
+    buf[MIPC_LENGTH_OFFSET] = 0;
+    b->len = MIPC_HEADER_SIZE;
 }
 
-static mip_status_t reserve(mip_packet_builder_t *b, size_t n) {
-    if (b->status != MIP_OK) {
+static mipc_status_t reserve(mipc_packet_builder_t *b, size_t n) {
+    if (b->status != MIPC_OK) {
         return b->status;
     }
-    if (b->len - MIP_HEADER_SIZE + n > MIP_MAX_PAYLOAD) {
-        b->status = MIP_ERR_TOO_LONG;
-    } else if (b->cap - b->len < n + MIP_CHECKSUM_SIZE) {
-        b->status = MIP_ERR_BUFFER;
+    if (b->len - MIPC_HEADER_SIZE + n > MIPC_MAX_PAYLOAD) {
+        b->status = MIPC_ERR_TOO_LONG;
+    } else if (b->cap - b->len < n + MIPC_CHECKSUM_SIZE) {
+        b->status = MIPC_ERR_BUFFER;
     }
     return b->status;
 }
 
-mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                  size_t data_len) {
+mipc_status_t mipc_packet_add_field(mipc_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                    size_t data_len) {
     assert(b != NULL);
     assert(data != NULL || data_len == 0);
-    int adjust = mip_field_length_adjust(b->set, descriptor);
-    if (b->status == MIP_OK && data_len > MIP_MAX_FIELD_DATA) {
-        b->status = MIP_ERR_TOO_LONG;
+    int adjust = mipc_field_length_adjust(b->set, descriptor);
+    if (b->status == MIPC_OK && data_len > MIPC_MAX_FIELD_DATA) {
+        b->status = MIPC_ERR_TOO_LONG;
     }
-    if (b->status == MIP_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+    if (b->status == MIPC_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
         /* too long for the length byte, or shorter than an irregular field's size byte allows */
-        b->status = (int)data_len + adjust > 0xFF ? MIP_ERR_TOO_LONG : MIP_ERR_INVALID;
+        b->status = (int)data_len + adjust > 0xFF ? MIPC_ERR_TOO_LONG : MIPC_ERR_INVALID;
     }
-    if (reserve(b, MIP_FIELD_HEADER_SIZE + data_len) != MIP_OK) {
+    if (reserve(b, MIPC_FIELD_HEADER_SIZE + data_len) != MIPC_OK) {
         return b->status;
     }
-    b->buf[b->len + MIP_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
-    b->buf[b->len + MIP_FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    b->buf[b->len + MIPC_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
+    b->buf[b->len + MIPC_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
-        memcpy(b->buf + b->len + MIP_FIELD_HEADER_SIZE, data, data_len);
+        memcpy(b->buf + b->len + MIPC_FIELD_HEADER_SIZE, data, data_len);
     }
-    b->len += MIP_FIELD_HEADER_SIZE + data_len;
-    return MIP_OK;
+    b->len += MIPC_FIELD_HEADER_SIZE + data_len;
+    return MIPC_OK;
 }
 
-mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+mipc_status_t mipc_packet_add_raw(mipc_packet_builder_t *b, const uint8_t *bytes, size_t len) {
     assert(b != NULL);
     assert(bytes != NULL || len == 0);
-    if (reserve(b, len) != MIP_OK) {
+    if (reserve(b, len) != MIPC_OK) {
         return b->status;
     }
     if (len > 0) {
         memcpy(b->buf + b->len, bytes, len);
     }
     b->len += len;
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_packet_finish(mip_packet_builder_t *b, size_t *len_out) {
+mipc_status_t mipc_packet_finish(mipc_packet_builder_t *b, size_t *len_out) {
     assert(b != NULL);
-    if (b->status != MIP_OK) {
+    if (b->status != MIPC_OK) {
         return b->status;
     }
-    if (b->cap - b->len < MIP_CHECKSUM_SIZE) {
-        b->status = MIP_ERR_BUFFER;
+    if (b->cap - b->len < MIPC_CHECKSUM_SIZE) {
+        b->status = MIPC_ERR_BUFFER;
         return b->status;
     }
-    b->buf[MIP_LENGTH_OFFSET] = (uint8_t)(b->len - MIP_HEADER_SIZE);
-    mip_checksum(b->buf, b->len, b->buf + b->len);
-    b->len += MIP_CHECKSUM_SIZE;
+    b->buf[MIPC_LENGTH_OFFSET] = (uint8_t)(b->len - MIPC_HEADER_SIZE);
+    mipc_checksum(b->buf, b->len, b->buf + b->len);
+    b->len += MIPC_CHECKSUM_SIZE;
     if (len_out) {
         *len_out = b->len;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }

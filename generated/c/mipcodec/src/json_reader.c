@@ -10,7 +10,7 @@
 
 #define MAX_NESTING 64
 
-void mip_jr_init(mip_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
+void mipc_jr_init(mipc_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
     memset(jr, 0, sizeof *jr);
     jr->s = s;
     jr->len = s ? len : 0;
@@ -21,7 +21,7 @@ void mip_jr_init(mip_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_
     }
 }
 
-int mip_jr_fail(mip_jr_t *jr, const char *fmt, ...) {
+int mipc_jr_fail(mipc_jr_t *jr, const char *fmt, ...) {
     va_list ap;
     size_t len = 0;
     size_t i;
@@ -30,7 +30,7 @@ int mip_jr_fail(mip_jr_t *jr, const char *fmt, ...) {
         return -1;
     }
     jr->failed = true;
-    for (i = 0; i < jr->depth && i < MIP_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
+    for (i = 0; i < jr->depth && i < MIPC_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
         int n;
         if (jr->index[i] != SIZE_MAX) {
             n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i],
@@ -52,27 +52,27 @@ int mip_jr_fail(mip_jr_t *jr, const char *fmt, ...) {
     return -1;
 }
 
-void mip_jr_push(mip_jr_t *jr, const char *name) {
-    if (jr->depth < MIP_JR_MAX_DEPTH) {
+void mipc_jr_push(mipc_jr_t *jr, const char *name) {
+    if (jr->depth < MIPC_JR_MAX_DEPTH) {
         jr->path[jr->depth] = name;
         jr->index[jr->depth] = SIZE_MAX;
     }
     jr->depth++;
 }
 
-void mip_jr_index(mip_jr_t *jr, size_t index) {
-    if (jr->depth > 0 && jr->depth <= MIP_JR_MAX_DEPTH) {
+void mipc_jr_index(mipc_jr_t *jr, size_t index) {
+    if (jr->depth > 0 && jr->depth <= MIPC_JR_MAX_DEPTH) {
         jr->index[jr->depth - 1] = index;
     }
 }
 
-void mip_jr_pop(mip_jr_t *jr) {
+void mipc_jr_pop(mipc_jr_t *jr) {
     if (jr->depth > 0) {
         jr->depth--;
     }
 }
 
-size_t mip_jr_ws(const mip_jr_t *jr, size_t pos) {
+size_t mipc_jr_ws(const mipc_jr_t *jr, size_t pos) {
     while (pos < jr->len &&
            (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
         pos++;
@@ -80,11 +80,11 @@ size_t mip_jr_ws(const mip_jr_t *jr, size_t pos) {
     return pos;
 }
 
-static int at(const mip_jr_t *jr, size_t pos, char c) {
+static int at(const mipc_jr_t *jr, size_t pos, char c) {
     return pos < jr->len && jr->s[pos] == c;
 }
 
-static int is_digit(const mip_jr_t *jr, size_t pos) {
+static int is_digit(const mipc_jr_t *jr, size_t pos) {
     return pos < jr->len && jr->s[pos] >= '0' && jr->s[pos] <= '9';
 }
 
@@ -134,17 +134,17 @@ static size_t utf8_length(const unsigned char *s, size_t n) {
 }
 
 /* Scans a string starting at the quote; *end after the closing quote. */
-static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
+static int scan_string(mipc_jr_t *jr, size_t pos, size_t *end) {
     size_t i = pos + 1;
     while (i < jr->len && jr->s[i] != '"') {
         unsigned char c = (unsigned char)jr->s[i];
         if (c < 0x20) {
-            return mip_jr_fail(jr, "control character in a string");
+            return mipc_jr_fail(jr, "control character in a string");
         }
         if (c >= 0x80) { /* the line is UTF-8 text (§5) */
             size_t len = utf8_length((const unsigned char *)jr->s + i, jr->len - i);
             if (len == 0) {
-                return mip_jr_fail(jr, "invalid UTF-8");
+                return mipc_jr_fail(jr, "invalid UTF-8");
             }
             i += len;
             continue;
@@ -158,25 +158,25 @@ static int scan_string(mip_jr_t *jr, size_t pos, size_t *end) {
                 int k;
                 for (k = 1; k <= 4; k++) {
                     if (i + (size_t)k >= jr->len || hex_value(jr->s[i + (size_t)k]) < 0) {
-                        return mip_jr_fail(jr, "bad \\u escape in a string");
+                        return mipc_jr_fail(jr, "bad \\u escape in a string");
                     }
                 }
                 i += 4;
             } else if (jr->s[i] == '\0' || !strchr("\"\\/bfnrt", jr->s[i])) {
-                return mip_jr_fail(jr, "bad escape in a string");
+                return mipc_jr_fail(jr, "bad escape in a string");
             }
         }
         i++;
     }
     if (i >= jr->len) {
-        return mip_jr_fail(jr, "unterminated string");
+        return mipc_jr_fail(jr, "unterminated string");
     }
     *end = i + 1;
     return 0;
 }
 
 /* Scans a number; *is_int tells whether it has neither fraction nor exponent. */
-static int scan_number(mip_jr_t *jr, size_t pos, size_t *end, int *is_int) {
+static int scan_number(mipc_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     size_t i = pos;
     *is_int = 1;
     if (at(jr, i, '-')) {
@@ -189,13 +189,13 @@ static int scan_number(mip_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
     } else {
-        return mip_jr_fail(jr, "invalid number");
+        return mipc_jr_fail(jr, "invalid number");
     }
     if (at(jr, i, '.')) {
         *is_int = 0;
         i++;
         if (!is_digit(jr, i)) {
-            return mip_jr_fail(jr, "invalid number");
+            return mipc_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -208,7 +208,7 @@ static int scan_number(mip_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
         if (!is_digit(jr, i)) {
-            return mip_jr_fail(jr, "invalid number");
+            return mipc_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -218,30 +218,30 @@ static int scan_number(mip_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     return 0;
 }
 
-static int literal(mip_jr_t *jr, size_t pos, const char *word, size_t *end) {
+static int literal(mipc_jr_t *jr, size_t pos, const char *word, size_t *end) {
     size_t n = strlen(word);
     if (jr->len - pos < n || memcmp(jr->s + pos, word, n) != 0) {
-        return mip_jr_fail(jr, "invalid JSON value");
+        return mipc_jr_fail(jr, "invalid JSON value");
     }
     *end = pos + n;
     return 0;
 }
 
-static int skip_value(mip_jr_t *jr, size_t pos, size_t *end, int nesting) {
+static int skip_value(mipc_jr_t *jr, size_t pos, size_t *end, int nesting) {
     int is_int;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (pos >= jr->len) {
-        return mip_jr_fail(jr, "missing JSON value");
+        return mipc_jr_fail(jr, "missing JSON value");
     }
     if (nesting > MAX_NESTING) {
-        return mip_jr_fail(jr, "JSON nested too deeply");
+        return mipc_jr_fail(jr, "JSON nested too deeply");
     }
     switch (jr->s[pos]) {
     case '{':
     case '[': {
         char close = jr->s[pos] == '{' ? '}' : ']';
         int object = close == '}';
-        pos = mip_jr_ws(jr, pos + 1);
+        pos = mipc_jr_ws(jr, pos + 1);
         if (at(jr, pos, close)) {
             *end = pos + 1;
             return 0;
@@ -249,29 +249,29 @@ static int skip_value(mip_jr_t *jr, size_t pos, size_t *end, int nesting) {
         for (;;) {
             if (object) {
                 if (!at(jr, pos, '"')) {
-                    return mip_jr_fail(jr, "expected a key in quotes");
+                    return mipc_jr_fail(jr, "expected a key in quotes");
                 }
                 if (scan_string(jr, pos, &pos)) {
                     return -1;
                 }
-                pos = mip_jr_ws(jr, pos);
+                pos = mipc_jr_ws(jr, pos);
                 if (!at(jr, pos, ':')) {
-                    return mip_jr_fail(jr, "expected ':' after a key");
+                    return mipc_jr_fail(jr, "expected ':' after a key");
                 }
                 pos++;
             }
             if (skip_value(jr, pos, &pos, nesting + 1)) {
                 return -1;
             }
-            pos = mip_jr_ws(jr, pos);
+            pos = mipc_jr_ws(jr, pos);
             if (at(jr, pos, close)) {
                 *end = pos + 1;
                 return 0;
             }
             if (!at(jr, pos, ',')) {
-                return mip_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
+                return mipc_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
             }
-            pos = mip_jr_ws(jr, pos + 1);
+            pos = mipc_jr_ws(jr, pos + 1);
         }
     }
     case '"':
@@ -287,30 +287,30 @@ static int skip_value(mip_jr_t *jr, size_t pos, size_t *end, int nesting) {
     }
 }
 
-int mip_jr_skip(mip_jr_t *jr, size_t pos, size_t *end) {
+int mipc_jr_skip(mipc_jr_t *jr, size_t pos, size_t *end) {
     return skip_value(jr, pos, end, 0);
 }
 
-int mip_jr_document(mip_jr_t *jr, size_t *pos) {
-    size_t start = mip_jr_ws(jr, 0);
+int mipc_jr_document(mipc_jr_t *jr, size_t *pos) {
+    size_t start = mipc_jr_ws(jr, 0);
     size_t end;
     if (!at(jr, start, '{')) {
-        return mip_jr_fail(jr, "expected a JSON object");
+        return mipc_jr_fail(jr, "expected a JSON object");
     }
-    if (mip_jr_skip(jr, start, &end)) {
+    if (mipc_jr_skip(jr, start, &end)) {
         return -1;
     }
-    if (mip_jr_ws(jr, end) != jr->len) {
-        return mip_jr_fail(jr, "unexpected text after the JSON object");
+    if (mipc_jr_ws(jr, end) != jr->len) {
+        return mipc_jr_fail(jr, "unexpected text after the JSON object");
     }
     *pos = start;
     return 0;
 }
 
-/* Walks an object that mip_jr_skip accepted: calls back for each key. */
+/* Walks an object that mipc_jr_skip accepted: calls back for each key. */
 /* The character at jr->s[*i] inside a string that scan_string accepted: escapes decoded and a
  * UTF-8 sequence read as one code point; advances *i past it. */
-static unsigned string_char(const mip_jr_t *jr, size_t *i) {
+static unsigned string_char(const mipc_jr_t *jr, size_t *i) {
     const unsigned char *u = (const unsigned char *)jr->s + *i;
     unsigned code = u[0];
     if (code == '\\') {
@@ -342,7 +342,7 @@ static unsigned string_char(const mip_jr_t *jr, size_t *i) {
 
 /* True when the JSON string at key_pos..key_end (quotes included, already scanned) denotes the
  * ASCII text name: escapes are decoded first ("na\u006de" is the key "name", §5). */
-static bool key_equals(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
+static bool key_equals(const mipc_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
     size_t i = key_pos + 1;
     size_t k = 0;
     while (i < key_end - 1) {
@@ -355,7 +355,7 @@ static bool key_equals(const mip_jr_t *jr, size_t key_pos, size_t key_end, const
     return name[k] == '\0';
 }
 
-static size_t key_index(const mip_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
+static size_t key_index(const mipc_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
                         size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
@@ -366,17 +366,17 @@ static size_t key_index(const mip_jr_t *jr, size_t key_pos, size_t key_end, cons
     return n;
 }
 
-int mip_jr_object(mip_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
+int mipc_jr_object(mipc_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
     size_t end;
     uint64_t seen = 0;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (!at(jr, pos, '{')) {
-        return mip_jr_fail(jr, "expected an object");
+        return mipc_jr_fail(jr, "expected an object");
     }
-    if (mip_jr_skip(jr, pos, &end)) {
+    if (mipc_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    pos = mip_jr_ws(jr, pos + 1);
+    pos = mipc_jr_ws(jr, pos + 1);
     while (!at(jr, pos, '}')) {
         size_t key_end;
         size_t k;
@@ -384,64 +384,64 @@ int mip_jr_object(mip_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
         k = key_index(jr, pos, key_end, keys, n);
         if (k == n) {
             int shown = (int)(key_end - pos > 40 ? 40 : key_end - pos);
-            return mip_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
+            return mipc_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
         }
         if (k < 64 && (seen & ((uint64_t)1 << k))) {
-            return mip_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
+            return mipc_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
         }
         if (k < 64) {
             seen |= (uint64_t)1 << k;
         }
-        pos = mip_jr_ws(jr, key_end) + 1;
+        pos = mipc_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = mip_jr_ws(jr, pos);
+        pos = mipc_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = mip_jr_ws(jr, pos + 1);
+            pos = mipc_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int mip_jr_get(mip_jr_t *jr, size_t pos, const char *key, size_t *value) {
-    pos = mip_jr_ws(jr, pos) + 1;
-    pos = mip_jr_ws(jr, pos);
+int mipc_jr_get(mipc_jr_t *jr, size_t pos, const char *key, size_t *value) {
+    pos = mipc_jr_ws(jr, pos) + 1;
+    pos = mipc_jr_ws(jr, pos);
     while (at(jr, pos, '"')) {
         size_t key_end;
         scan_string(jr, pos, &key_end);
         if (key_index(jr, pos, key_end, &key, 1) == 0) {
-            *value = mip_jr_ws(jr, mip_jr_ws(jr, key_end) + 1);
+            *value = mipc_jr_ws(jr, mipc_jr_ws(jr, key_end) + 1);
             return 1;
         }
-        pos = mip_jr_ws(jr, key_end) + 1;
+        pos = mipc_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = mip_jr_ws(jr, pos);
+        pos = mipc_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = mip_jr_ws(jr, pos + 1);
+            pos = mipc_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int mip_jr_array(mip_jr_t *jr, size_t pos, size_t *it) {
+int mipc_jr_array(mipc_jr_t *jr, size_t pos, size_t *it) {
     size_t end;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (!at(jr, pos, '[')) {
-        return mip_jr_fail(jr, "expected an array");
+        return mipc_jr_fail(jr, "expected an array");
     }
-    if (mip_jr_skip(jr, pos, &end)) {
+    if (mipc_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    *it = mip_jr_ws(jr, pos + 1);
+    *it = mipc_jr_ws(jr, pos + 1);
     return 0;
 }
 
-int mip_jr_next(mip_jr_t *jr, size_t *it, size_t *elem) {
-    size_t pos = mip_jr_ws(jr, *it);
+int mipc_jr_next(mipc_jr_t *jr, size_t *it, size_t *elem) {
+    size_t pos = mipc_jr_ws(jr, *it);
     if (at(jr, pos, ']')) {
         return 0;
     }
     if (at(jr, pos, ',')) {
-        pos = mip_jr_ws(jr, pos + 1);
+        pos = mipc_jr_ws(jr, pos + 1);
     }
     *elem = pos;
     if (skip_value(jr, pos, it, 0)) {
@@ -450,34 +450,40 @@ int mip_jr_next(mip_jr_t *jr, size_t *it, size_t *elem) {
     return 1;
 }
 
-/* Magnitude of an integer token; *negative for a leading '-'. */
-static int integer(mip_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
+/* Magnitude of an integer token; *negative for a leading '-'. Returns 0, or -1 after recording
+ * the failure: a literal -1 on every failing path (not mipc_jr_fail's result), so that the
+ * compiler sees that *mag and *negative are written whenever 0 is returned (gcc -O3 otherwise
+ * warns that the callers' values may be used uninitialized). */
+static int integer(mipc_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
     size_t end;
     size_t i;
     int is_int;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (pos >= jr->len || !(jr->s[pos] == '-' || (jr->s[pos] >= '0' && jr->s[pos] <= '9'))) {
-        return mip_jr_fail(jr, "expected %s", expected);
+        (void)mipc_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     if (!is_int) {
-        return mip_jr_fail(jr, "expected %s", expected);
+        (void)mipc_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *negative = jr->s[pos] == '-';
     *mag = 0;
     for (i = pos + (*negative ? 1u : 0u); i < end; i++) {
         unsigned d = (unsigned)(jr->s[i] - '0');
         if (*mag > (UINT64_MAX - d) / 10) {
-            return mip_jr_fail(jr, "expected %s", expected);
+            (void)mipc_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *mag = *mag * 10 + d;
     }
     return 0;
 }
 
-int mip_jr_uint(mip_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
+int mipc_jr_uint(mipc_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
     char expected[64];
     uint64_t mag;
     int negative;
@@ -486,13 +492,14 @@ int mip_jr_uint(mip_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
         return -1;
     }
     if ((negative && mag != 0) || mag > max) {
-        return mip_jr_fail(jr, "expected %s", expected);
+        (void)mipc_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *out = mag;
     return 0;
 }
 
-int mip_jr_sint(mip_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
+int mipc_jr_sint(mipc_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
     char expected[80];
     uint64_t mag;
     int negative;
@@ -504,38 +511,40 @@ int mip_jr_sint(mip_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out
         /* -mag >= min  <=>  mag <= -(min + 1) + 1 */
         uint64_t limit = (uint64_t)(-(min + 1)) + 1u;
         if (mag > limit) {
-            return mip_jr_fail(jr, "expected %s", expected);
+            (void)mipc_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = mag == 0 ? 0 : -(int64_t)(mag - 1) - 1;
     } else {
         if (mag > (uint64_t)max) {
-            return mip_jr_fail(jr, "expected %s", expected);
+            (void)mipc_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = (int64_t)mag;
     }
     return 0;
 }
 
-int mip_jr_null(mip_jr_t *jr, size_t pos) {
-    pos = mip_jr_ws(jr, pos);
+int mipc_jr_null(mipc_jr_t *jr, size_t pos) {
+    pos = mipc_jr_ws(jr, pos);
     if (jr->len - pos < 4 || memcmp(jr->s + pos, "null", 4) != 0) {
-        return mip_jr_fail(jr, "expected null");
+        return mipc_jr_fail(jr, "expected null");
     }
     return 0;
 }
 
-bool mip_jr_is_string(const mip_jr_t *jr, size_t pos) {
-    return at(jr, mip_jr_ws(jr, pos), '"');
+bool mipc_jr_is_string(const mipc_jr_t *jr, size_t pos) {
+    return at(jr, mipc_jr_ws(jr, pos), '"');
 }
 
 /* Decodes the string at pos into bytes (code points up to U+00FF); *n gets the byte count,
  * which may exceed cap (then only cap bytes are stored). */
-static int string_bytes(mip_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
+static int string_bytes(mipc_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
     size_t end;
     size_t i;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return mip_jr_fail(jr, "expected %s", expected);
+        return mipc_jr_fail(jr, "expected %s", expected);
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -575,13 +584,13 @@ static int string_bytes(mip_jr_t *jr, size_t pos, char *out, size_t cap, size_t 
             /* UTF-8 of U+0080..U+00FF */
             unsigned char c2 = i + 1 < end - 1 ? (unsigned char)jr->s[i + 1] : 0;
             if ((c != 0xC2 && c != 0xC3) || (c2 & 0xC0) != 0x80) {
-                return mip_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+                return mipc_jr_fail(jr, "character outside U+0000..U+00FF in a string");
             }
             code = ((unsigned)(c & 0x1F) << 6) | (c2 & 0x3Fu);
             i++;
         }
         if (code > 0xFF) {
-            return mip_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+            return mipc_jr_fail(jr, "character outside U+0000..U+00FF in a string");
         }
         if (*n < cap) {
             out[*n] = (char)(unsigned char)code;
@@ -591,7 +600,7 @@ static int string_bytes(mip_jr_t *jr, size_t pos, char *out, size_t cap, size_t 
     return 0;
 }
 
-int mip_jr_chars(mip_jr_t *jr, size_t pos, char *out, size_t n) {
+int mipc_jr_chars(mipc_jr_t *jr, size_t pos, char *out, size_t n) {
     char expected[64];
     size_t got;
     snprintf(expected, sizeof expected, "a string of exactly %zu characters", n);
@@ -599,19 +608,19 @@ int mip_jr_chars(mip_jr_t *jr, size_t pos, char *out, size_t n) {
         return -1;
     }
     if (got != n) {
-        return mip_jr_fail(jr, "expected %s, got %zu", expected, got);
+        return mipc_jr_fail(jr, "expected %s, got %zu", expected, got);
     }
     return 0;
 }
 
-int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
+int mipc_jr_hex(mipc_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     size_t end;
     size_t i;
     size_t digits = 0;
     int hi = 0;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return mip_jr_fail(jr, "expected a hex string");
+        return mipc_jr_fail(jr, "expected a hex string");
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -621,7 +630,7 @@ int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
         unsigned code = string_char(jr, &i);
         int d = code < 0x80 ? hex_value((char)code) : -1;
         if (d < 0) {
-            return mip_jr_fail(jr, "expected hex digits");
+            return mipc_jr_fail(jr, "expected hex digits");
         }
         if (digits % 2 == 0) {
             hi = d;
@@ -631,17 +640,17 @@ int mip_jr_hex(mip_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
         digits++;
     }
     if (digits % 2 != 0) {
-        return mip_jr_fail(jr, "expected an even number of hex digits");
+        return mipc_jr_fail(jr, "expected an even number of hex digits");
     }
     *n = digits / 2;
     if (*n > cap) {
-        return mip_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
+        return mipc_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
     }
     return 0;
 }
 
-int mip_jr_bool(mip_jr_t *jr, size_t pos, bool *out) {
-    pos = mip_jr_ws(jr, pos);
+int mipc_jr_bool(mipc_jr_t *jr, size_t pos, bool *out) {
+    pos = mipc_jr_ws(jr, pos);
     if (jr->len - pos >= 4 && memcmp(jr->s + pos, "true", 4) == 0) {
         *out = true;
         return 0;
@@ -650,79 +659,79 @@ int mip_jr_bool(mip_jr_t *jr, size_t pos, bool *out) {
         *out = false;
         return 0;
     }
-    return mip_jr_fail(jr, "expected true or false");
+    return mipc_jr_fail(jr, "expected true or false");
 }
 
-int mip_jr_char(mip_jr_t *jr, size_t pos, char *out) {
-    return mip_jr_chars(jr, pos, out, 1);
+int mipc_jr_char(mipc_jr_t *jr, size_t pos, char *out) {
+    return mipc_jr_chars(jr, pos, out, 1);
 }
 
-int mip_jr_u8(mip_jr_t *jr, size_t pos, uint8_t *out) {
+int mipc_jr_u8(mipc_jr_t *jr, size_t pos, uint8_t *out) {
     uint64_t v;
-    if (mip_jr_uint(jr, pos, UINT8_MAX, &v)) {
+    if (mipc_jr_uint(jr, pos, UINT8_MAX, &v)) {
         return -1;
     }
     *out = (uint8_t)v;
     return 0;
 }
 
-int mip_jr_u16(mip_jr_t *jr, size_t pos, uint16_t *out) {
+int mipc_jr_u16(mipc_jr_t *jr, size_t pos, uint16_t *out) {
     uint64_t v;
-    if (mip_jr_uint(jr, pos, UINT16_MAX, &v)) {
+    if (mipc_jr_uint(jr, pos, UINT16_MAX, &v)) {
         return -1;
     }
     *out = (uint16_t)v;
     return 0;
 }
 
-int mip_jr_u32(mip_jr_t *jr, size_t pos, uint32_t *out) {
+int mipc_jr_u32(mipc_jr_t *jr, size_t pos, uint32_t *out) {
     uint64_t v;
-    if (mip_jr_uint(jr, pos, UINT32_MAX, &v)) {
+    if (mipc_jr_uint(jr, pos, UINT32_MAX, &v)) {
         return -1;
     }
     *out = (uint32_t)v;
     return 0;
 }
 
-int mip_jr_u64(mip_jr_t *jr, size_t pos, uint64_t *out) {
+int mipc_jr_u64(mipc_jr_t *jr, size_t pos, uint64_t *out) {
     uint64_t v;
-    if (mip_jr_uint(jr, pos, UINT64_MAX, &v)) {
+    if (mipc_jr_uint(jr, pos, UINT64_MAX, &v)) {
         return -1;
     }
     *out = (uint64_t)v;
     return 0;
 }
 
-int mip_jr_s8(mip_jr_t *jr, size_t pos, int8_t *out) {
+int mipc_jr_s8(mipc_jr_t *jr, size_t pos, int8_t *out) {
     int64_t v;
-    if (mip_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
+    if (mipc_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
         return -1;
     }
     *out = (int8_t)v;
     return 0;
 }
 
-int mip_jr_s16(mip_jr_t *jr, size_t pos, int16_t *out) {
+int mipc_jr_s16(mipc_jr_t *jr, size_t pos, int16_t *out) {
     int64_t v;
-    if (mip_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
+    if (mipc_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
         return -1;
     }
     *out = (int16_t)v;
     return 0;
 }
 
-int mip_jr_s32(mip_jr_t *jr, size_t pos, int32_t *out) {
+int mipc_jr_s32(mipc_jr_t *jr, size_t pos, int32_t *out) {
     int64_t v;
-    if (mip_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
+    if (mipc_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
         return -1;
     }
     *out = (int32_t)v;
     return 0;
 }
 
-int mip_jr_s64(mip_jr_t *jr, size_t pos, int64_t *out) {
+int mipc_jr_s64(mipc_jr_t *jr, size_t pos, int64_t *out) {
     int64_t v;
-    if (mip_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
+    if (mipc_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
         return -1;
     }
     *out = (int64_t)v;
@@ -802,12 +811,12 @@ static double number_value(const char *s, size_t n) {
 }
 
 /* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
-static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
+static int number(mipc_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
                   const char *expected) {
     size_t end;
     int is_int;
     *has_bits = 0;
-    pos = mip_jr_ws(jr, pos);
+    pos = mipc_jr_ws(jr, pos);
     if (at(jr, pos, '"')) {
         size_t n;
         char text[32];
@@ -845,19 +854,19 @@ static int number(mip_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *ha
                 }
             }
         }
-        return mip_jr_fail(jr, "expected %s", expected);
+        return mipc_jr_fail(jr, "expected %s", expected);
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     *out = number_value(jr->s + pos, end - pos);
     if (*out == HUGE_VAL || *out == -HUGE_VAL) {
-        return mip_jr_fail(jr, "number out of range for a double");
+        return mipc_jr_fail(jr, "number out of range for a double");
     }
     return 0;
 }
 
-int mip_jr_f64(mip_jr_t *jr, size_t pos, double *out) {
+int mipc_jr_f64(mipc_jr_t *jr, size_t pos, double *out) {
     uint64_t bits;
     int has_bits;
     const char *expected = "a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x\" and 16 hex digits";
@@ -866,14 +875,14 @@ int mip_jr_f64(mip_jr_t *jr, size_t pos, double *out) {
     }
     if (has_bits) {
         if (((bits >> 52) & 0x7FF) != 0x7FF || (bits & 0xFFFFFFFFFFFFFull) == 0) {
-            return mip_jr_fail(jr, "not a NaN bit pattern");
+            return mipc_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &bits, sizeof bits);
     }
     return 0;
 }
 
-int mip_jr_f32(mip_jr_t *jr, size_t pos, float *out) {
+int mipc_jr_f32(mipc_jr_t *jr, size_t pos, float *out) {
     uint64_t bits;
     int has_bits;
     double d = 0;
@@ -884,7 +893,7 @@ int mip_jr_f32(mip_jr_t *jr, size_t pos, float *out) {
     if (has_bits) {
         uint32_t b32 = (uint32_t)bits;
         if (((b32 >> 23) & 0xFF) != 0xFF || (b32 & 0x7FFFFFu) == 0) {
-            return mip_jr_fail(jr, "not a NaN bit pattern");
+            return mipc_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &b32, sizeof b32);
         return 0;
@@ -897,7 +906,7 @@ int mip_jr_f32(mip_jr_t *jr, size_t pos, float *out) {
      * (0x1.ffffffp127) up is infinite as a float: out of range (§5). Below it, a double beyond
      * FLT_MAX rounds to FLT_MAX (spelled out: C leaves that conversion undefined). */
     if (d >= 0x1.ffffffp127 || d <= -0x1.ffffffp127) {
-        return mip_jr_fail(jr, "number out of range for a float");
+        return mipc_jr_fail(jr, "number out of range for a float");
     }
     if (d > FLT_MAX || d < -FLT_MAX) {
         *out = d > 0 ? FLT_MAX : -FLT_MAX;

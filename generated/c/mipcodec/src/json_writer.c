@@ -4,25 +4,24 @@
 #include "mipcodec/json.h"
 
 #include <assert.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-void mip_jw_init(mip_jw_t *w, char *buf, size_t cap) {
+void mipc_jw_init(mipc_jw_t *w, char *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
-size_t mip_jw_finish(mip_jw_t *w) {
+size_t mipc_jw_finish(mipc_jw_t *w) {
     if (w->cap > 0) {
         w->buf[w->len < w->cap ? w->len : w->cap - 1] = '\0';
     }
     return w->len;
 }
 
-void mip_jw_raw(mip_jw_t *w, const char *text, size_t n) {
+void mipc_jw_raw(mipc_jw_t *w, const char *text, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (w->len + 1 < w->cap) {
@@ -32,61 +31,61 @@ void mip_jw_raw(mip_jw_t *w, const char *text, size_t n) {
     }
 }
 
-void mip_jw_lit(mip_jw_t *w, const char *text) {
-    mip_jw_raw(w, text, strlen(text));
+void mipc_jw_lit(mipc_jw_t *w, const char *text) {
+    mipc_jw_raw(w, text, strlen(text));
 }
 
-void mip_jw_key(mip_jw_t *w, int *first, const char *key) {
+void mipc_jw_key(mipc_jw_t *w, int *first, const char *key) {
     if (!*first) {
-        mip_jw_raw(w, ",", 1);
+        mipc_jw_raw(w, ",", 1);
     }
     *first = 0;
-    mip_jw_raw(w, "\"", 1);
-    mip_jw_lit(w, key);
-    mip_jw_raw(w, "\":", 2);
+    mipc_jw_raw(w, "\"", 1);
+    mipc_jw_lit(w, key);
+    mipc_jw_raw(w, "\":", 2);
 }
 
-void mip_jw_sep(mip_jw_t *w, size_t index) {
+void mipc_jw_sep(mipc_jw_t *w, size_t index) {
     if (index > 0) {
-        mip_jw_raw(w, ",", 1);
+        mipc_jw_raw(w, ",", 1);
     }
 }
 
-void mip_jw_uint(mip_jw_t *w, uint64_t v) {
+void mipc_jw_uint(mipc_jw_t *w, uint64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRIu64, v);
-    mip_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%llu", (unsigned long long)v);
+    mipc_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
-void mip_jw_int(mip_jw_t *w, int64_t v) {
+void mipc_jw_int(mipc_jw_t *w, int64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRId64, v);
-    mip_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%lld", (long long)v);
+    mipc_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
 static const char k_hex[] = "0123456789abcdef";
 
-void mip_jw_hex(mip_jw_t *w, const uint8_t *bytes, size_t n) {
+void mipc_jw_hex(mipc_jw_t *w, const uint8_t *bytes, size_t n) {
     size_t i;
-    mip_jw_raw(w, "\"", 1);
+    mipc_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         char two[2];
         two[0] = k_hex[bytes[i] >> 4];
         two[1] = k_hex[bytes[i] & 0x0F];
-        mip_jw_raw(w, two, 2);
+        mipc_jw_raw(w, two, 2);
     }
-    mip_jw_raw(w, "\"", 1);
+    mipc_jw_raw(w, "\"", 1);
 }
 
-void mip_jw_string(mip_jw_t *w, const char *bytes, size_t n) {
+void mipc_jw_string(mipc_jw_t *w, const char *bytes, size_t n) {
     size_t i;
-    mip_jw_raw(w, "\"", 1);
+    mipc_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         unsigned char b = (unsigned char)bytes[i];
         if (b == '"') {
-            mip_jw_raw(w, "\\\"", 2);
+            mipc_jw_raw(w, "\\\"", 2);
         } else if (b == '\\') {
-            mip_jw_raw(w, "\\\\", 2);
+            mipc_jw_raw(w, "\\\\", 2);
         } else if (b < 0x20 || b >= 0x7F) {
             char esc[6];
             esc[0] = '\\';
@@ -95,68 +94,68 @@ void mip_jw_string(mip_jw_t *w, const char *bytes, size_t n) {
             esc[3] = '0';
             esc[4] = k_hex[b >> 4];
             esc[5] = k_hex[b & 0x0F];
-            mip_jw_raw(w, esc, 6);
+            mipc_jw_raw(w, esc, 6);
         } else {
-            mip_jw_raw(w, (const char *)&bytes[i], 1);
+            mipc_jw_raw(w, (const char *)&bytes[i], 1);
         }
     }
-    mip_jw_raw(w, "\"", 1);
+    mipc_jw_raw(w, "\"", 1);
 }
 
-void mip_jw_bool(mip_jw_t *w, const bool *v) {
-    mip_jw_lit(w, *v ? "true" : "false");
+void mipc_jw_bool(mipc_jw_t *w, const bool *v) {
+    mipc_jw_lit(w, *v ? "true" : "false");
 }
 
-void mip_jw_char(mip_jw_t *w, const char *v) {
-    mip_jw_string(w, v, 1);
+void mipc_jw_char(mipc_jw_t *w, const char *v) {
+    mipc_jw_string(w, v, 1);
 }
 
-void mip_jw_u8(mip_jw_t *w, const uint8_t *v) {
-    mip_jw_uint(w, *v);
+void mipc_jw_u8(mipc_jw_t *w, const uint8_t *v) {
+    mipc_jw_uint(w, *v);
 }
 
-void mip_jw_u16(mip_jw_t *w, const uint16_t *v) {
-    mip_jw_uint(w, *v);
+void mipc_jw_u16(mipc_jw_t *w, const uint16_t *v) {
+    mipc_jw_uint(w, *v);
 }
 
-void mip_jw_u32(mip_jw_t *w, const uint32_t *v) {
-    mip_jw_uint(w, *v);
+void mipc_jw_u32(mipc_jw_t *w, const uint32_t *v) {
+    mipc_jw_uint(w, *v);
 }
 
-void mip_jw_u64(mip_jw_t *w, const uint64_t *v) {
-    mip_jw_uint(w, *v);
+void mipc_jw_u64(mipc_jw_t *w, const uint64_t *v) {
+    mipc_jw_uint(w, *v);
 }
 
-void mip_jw_s8(mip_jw_t *w, const int8_t *v) {
-    mip_jw_int(w, *v);
+void mipc_jw_s8(mipc_jw_t *w, const int8_t *v) {
+    mipc_jw_int(w, *v);
 }
 
-void mip_jw_s16(mip_jw_t *w, const int16_t *v) {
-    mip_jw_int(w, *v);
+void mipc_jw_s16(mipc_jw_t *w, const int16_t *v) {
+    mipc_jw_int(w, *v);
 }
 
-void mip_jw_s32(mip_jw_t *w, const int32_t *v) {
-    mip_jw_int(w, *v);
+void mipc_jw_s32(mipc_jw_t *w, const int32_t *v) {
+    mipc_jw_int(w, *v);
 }
 
-void mip_jw_s64(mip_jw_t *w, const int64_t *v) {
-    mip_jw_int(w, *v);
+void mipc_jw_s64(mipc_jw_t *w, const int64_t *v) {
+    mipc_jw_int(w, *v);
 }
 
-void mip_jw_f32(mip_jw_t *w, const float *v) {
-    char buf[MIP_JSON_NUMBER_MAX];
-    size_t n = mip_json_format_float(*v, buf, sizeof buf);
-    mip_jw_raw(w, buf, n);
+void mipc_jw_f32(mipc_jw_t *w, const float *v) {
+    char buf[MIPC_JSON_NUMBER_MAX];
+    size_t n = mipc_json_format_float(*v, buf, sizeof buf);
+    mipc_jw_raw(w, buf, n);
 }
 
-void mip_jw_f64(mip_jw_t *w, const double *v) {
-    char buf[MIP_JSON_NUMBER_MAX];
-    size_t n = mip_json_format_double(*v, buf, sizeof buf);
-    mip_jw_raw(w, buf, n);
+void mipc_jw_f64(mipc_jw_t *w, const double *v) {
+    char buf[MIPC_JSON_NUMBER_MAX];
+    size_t n = mipc_json_format_double(*v, buf, sizeof buf);
+    mipc_jw_raw(w, buf, n);
 }
 
-void mip_jw_chars(mip_jw_t *w, const char *v, size_t n) {
-    mip_jw_string(w, v, n);
+void mipc_jw_chars(mipc_jw_t *w, const char *v, size_t n) {
+    mipc_jw_string(w, v, n);
 }
 
 /* ------------------------------------------------------------------ numbers */
@@ -447,7 +446,7 @@ static size_t format_finite(double v, char *buf, size_t cap) {
     return finish(buf, cap, len);
 }
 
-size_t mip_json_format_double(double v, char *buf, size_t cap) {
+size_t mipc_json_format_double(double v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint64_t bits;
     char text[32];
@@ -459,13 +458,13 @@ size_t mip_json_format_double(double v, char *buf, size_t cap) {
         if (bits == 0x7FF8000000000000ull) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%016" PRIx64 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%016llx\"", (unsigned long long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite(v, buf, cap);
 }
 
-size_t mip_json_format_float(float v, char *buf, size_t cap) {
+size_t mipc_json_format_float(float v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint32_t bits;
     char text[32];
@@ -477,17 +476,17 @@ size_t mip_json_format_float(float v, char *buf, size_t cap) {
         if (bits == 0x7FC00000u) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%08" PRIx32 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%08lx\"", (unsigned long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite((double)v, buf, cap);
 }
 
-size_t mip_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
+size_t mipc_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
     assert(bytes != NULL || n == 0);
     assert(buf != NULL || cap == 0);
-    mip_jw_t w;
-    mip_jw_init(&w, buf, cap);
-    mip_jw_string(&w, bytes, n);
-    return mip_jw_finish(&w);
+    mipc_jw_t w;
+    mipc_jw_init(&w, buf, cap);
+    mipc_jw_string(&w, bytes, n);
+    return mipc_jw_finish(&w);
 }

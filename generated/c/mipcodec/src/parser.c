@@ -4,13 +4,13 @@
 #include <assert.h>
 #include <string.h>
 
-void mip_parser_init(mip_parser_t *parser) {
+void mipc_parser_init(mipc_parser_t *parser) {
     assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
 /* Marks the first n buffered bytes as skipped and drops them. */
-static void skip(mip_parser_t *parser, size_t n) {
+static void skip(mipc_parser_t *parser, size_t n) {
     if (n == 0) {
         return;
     }
@@ -23,12 +23,12 @@ static void skip(mip_parser_t *parser, size_t n) {
     parser->base += n;
 }
 
-static void emit_skip(mip_parser_t *parser, mip_event_fn fn, void *ctx) {
-    mip_event_t ev;
+static void emit_skip(mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
+    mipc_event_t ev;
     if (parser->skip_count == 0) {
         return;
     }
-    ev.kind = MIP_EVENT_SKIP;
+    ev.kind = MIPC_EVENT_SKIP;
     ev.offset = parser->skip_offset;
     ev.length = parser->skip_count;
     ev.packet = NULL;
@@ -39,14 +39,14 @@ static void emit_skip(mip_parser_t *parser, mip_event_fn fn, void *ctx) {
 }
 
 /* Index of the first full sync sequence, or of a partial one at the end, or used. */
-static size_t find_sync(const mip_parser_t *parser) {
+static size_t find_sync(const mipc_parser_t *parser) {
     size_t i;
     for (i = 0; i < parser->used; i++) {
         size_t k = 0;
-        while (k < MIP_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == mip_sync[k]) {
+        while (k < MIPC_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == mipc_sync[k]) {
             k++;
         }
-        if (k == MIP_SYNC_SIZE || i + k == parser->used) {
+        if (k == MIPC_SYNC_SIZE || i + k == parser->used) {
             return i;
         }
     }
@@ -55,7 +55,7 @@ static size_t find_sync(const mip_parser_t *parser) {
 
 /* Consumes what the buffered bytes decide; stops when more input is needed. At the end of
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
-static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final) {
+static void process(mipc_parser_t *parser, mipc_event_fn fn, void *ctx, int final) {
     for (;;) {
         size_t payload;
         size_t total;
@@ -63,19 +63,19 @@ static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final)
         if (parser->used == 0) {
             return;
         }
-        if (parser->used < MIP_HEADER_SIZE) {
+        if (parser->used < MIPC_HEADER_SIZE) {
             if (!final) {
                 return; /* a partial sync or an incomplete header: wait */
             }
             skip(parser, 1);
             continue;
         }
-        payload = parser->buf[MIP_LENGTH_OFFSET];
-        if (payload > MIP_MAX_PAYLOAD) {
+        payload = parser->buf[MIPC_LENGTH_OFFSET];
+        if (payload > MIPC_MAX_PAYLOAD) {
             skip(parser, 1); /* false sync */
             continue;
         }
-        total = MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE;
+        total = MIPC_HEADER_SIZE + payload + MIPC_CHECKSUM_SIZE;
         if (parser->used < total) {
             if (!final) {
                 return; /* incomplete packet: wait */
@@ -83,14 +83,14 @@ static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final)
             skip(parser, 1);
             continue;
         }
-        if (!mip_checksum_matches(parser->buf, MIP_HEADER_SIZE + payload)) {
+        if (!mipc_checksum_matches(parser->buf, MIPC_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
         emit_skip(parser, fn, ctx);
         if (fn) {
-            mip_event_t ev;
-            ev.kind = MIP_EVENT_PACKET;
+            mipc_event_t ev;
+            ev.kind = MIPC_EVENT_PACKET;
             ev.offset = parser->base;
             ev.length = total;
             ev.packet = parser->buf;
@@ -104,15 +104,15 @@ static void process(mip_parser_t *parser, mip_event_fn fn, void *ctx, int final)
 
 /* Bytes the buffered candidate at buf[0] needs before process() can decide on it (0: none
  * buffered). A partial sync or header needs the header; a header, the whole packet. */
-static size_t wanted(const mip_parser_t *parser) {
+static size_t wanted(const mipc_parser_t *parser) {
     size_t total;
     if (parser->used == 0) {
         return 0;
     }
-    if (parser->used < MIP_HEADER_SIZE) {
-        return MIP_HEADER_SIZE - parser->used;
+    if (parser->used < MIPC_HEADER_SIZE) {
+        return MIPC_HEADER_SIZE - parser->used;
     }
-    total = MIP_HEADER_SIZE + (size_t)parser->buf[MIP_LENGTH_OFFSET] + MIP_CHECKSUM_SIZE;
+    total = MIPC_HEADER_SIZE + (size_t)parser->buf[MIPC_LENGTH_OFFSET] + MIPC_CHECKSUM_SIZE;
     return total > parser->used ? total - parser->used : 1;
 }
 
@@ -120,7 +120,7 @@ static size_t wanted(const mip_parser_t *parser) {
  * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
  * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
  * of data[0] on entry and of data[consumed] on return. */
-static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_event_fn fn, void *ctx) {
+static size_t scan(const uint8_t *data, size_t len, mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
     const uint64_t base = parser->base;
     size_t pos = 0;
     while (pos < len) {
@@ -128,8 +128,8 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        if (p[0] != mip_sync[0]) {
-            const uint8_t *q = memchr(p, mip_sync[0], left);
+        if (p[0] != mipc_sync[0]) {
+            const uint8_t *q = memchr(p, mipc_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
             if (parser->skip_count == 0) {
                 parser->skip_offset = base + pos;
@@ -138,24 +138,24 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
             pos += n;
             continue;
         }
-        if (left < MIP_HEADER_SIZE) {
+        if (left < MIPC_HEADER_SIZE) {
             /* a partial sync or header at the end: the caller buffers it (unless it already
              * differs from the sync sequence, then skip its first byte) */
-            if (memcmp(p, mip_sync, left < MIP_SYNC_SIZE ? left : MIP_SYNC_SIZE) == 0) {
+            if (memcmp(p, mipc_sync, left < MIPC_SYNC_SIZE ? left : MIPC_SYNC_SIZE) == 0) {
                 break;
             }
-        } else if (memcmp(p, mip_sync, MIP_SYNC_SIZE) == 0 &&
-                   (payload = p[MIP_LENGTH_OFFSET]) <= MIP_MAX_PAYLOAD) {
-            total = MIP_HEADER_SIZE + payload + MIP_CHECKSUM_SIZE;
+        } else if (memcmp(p, mipc_sync, MIPC_SYNC_SIZE) == 0 &&
+                   (payload = p[MIPC_LENGTH_OFFSET]) <= MIPC_MAX_PAYLOAD) {
+            total = MIPC_HEADER_SIZE + payload + MIPC_CHECKSUM_SIZE;
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            if (mip_checksum_matches(p, MIP_HEADER_SIZE + payload)) {
+            if (mipc_checksum_matches(p, MIPC_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {
-                    mip_event_t ev;
-                    ev.kind = MIP_EVENT_PACKET;
+                    mipc_event_t ev;
+                    ev.kind = MIPC_EVENT_PACKET;
                     ev.offset = base + pos;
                     ev.length = total;
                     ev.packet = p;
@@ -176,7 +176,7 @@ static size_t scan(const uint8_t *data, size_t len, mip_parser_t *parser, mip_ev
     return pos;
 }
 
-void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_event_fn fn, void *ctx) {
+void mipc_parser_feed(mipc_parser_t *parser, const uint8_t *data, size_t len, mipc_event_fn fn, void *ctx) {
     assert(parser != NULL);
     assert(data != NULL || len == 0);
     assert(fn != NULL);
@@ -205,7 +205,7 @@ void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_
     }
 }
 
-void mip_parser_flush(mip_parser_t *parser, mip_event_fn fn, void *ctx) {
+void mipc_parser_flush(mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
     assert(parser != NULL);
     assert(fn != NULL);
     process(parser, fn, ctx, 1);

@@ -9,16 +9,16 @@
 
 /* The protocol's rule (protocol.h). A protocol without data sets or timestamps still gets
  * one-element arrays (C has no empty ones); the #if blocks below leave them unused. */
-static const uint8_t k_data_sets[MIP_SAMPLE_SETS] = MIP_SAMPLE_DATA_SETS;
-#define TIMESTAMPS MIP_SAMPLE_TIMESTAMPS
+static const uint8_t k_data_sets[MIPC_SAMPLE_SETS] = MIPC_SAMPLE_DATA_SETS;
+#define TIMESTAMPS MIPC_SAMPLE_TIMESTAMPS
 #if TIMESTAMPS > 0
-static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MIP_SAMPLE_STAMP_DESCRIPTORS;
-static const uint8_t k_stamp_size[TIMESTAMPS] = MIP_SAMPLE_STAMP_SIZES;
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MIPC_SAMPLE_STAMP_DESCRIPTORS;
+static const uint8_t k_stamp_size[TIMESTAMPS] = MIPC_SAMPLE_STAMP_SIZES;
 #endif
 
 static bool is_shared(uint8_t descriptor) {
-#if MIP_SAMPLE_FIRST_SHARED < 256
-    return descriptor >= MIP_SAMPLE_FIRST_SHARED;
+#if MIPC_SAMPLE_FIRST_SHARED < 256
+    return descriptor >= MIPC_SAMPLE_FIRST_SHARED;
 #else
     (void)descriptor;
     return false;
@@ -26,9 +26,9 @@ static bool is_shared(uint8_t descriptor) {
 }
 
 static int slot_of(uint8_t set) {
-#if MIP_SAMPLE_DATA_SET_COUNT > 0
+#if MIPC_SAMPLE_DATA_SET_COUNT > 0
     int i;
-    for (i = 0; i < MIP_SAMPLE_SETS; i++) {
+    for (i = 0; i < MIPC_SAMPLE_SETS; i++) {
         if (k_data_sets[i] == set) {
             return i;
         }
@@ -43,22 +43,22 @@ static int slot_of(uint8_t set) {
 /* The payload of a complete packet, or NULL when the buffer does not hold one. */
 static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen) {
     size_t n;
-    if (!packet || len < MIP_HEADER_SIZE + MIP_CHECKSUM_SIZE) {
+    if (!packet || len < MIPC_HEADER_SIZE + MIPC_CHECKSUM_SIZE) {
         return NULL;
     }
-    n = packet[MIP_LENGTH_OFFSET];
-    if (MIP_HEADER_SIZE + n + MIP_CHECKSUM_SIZE > len) {
+    n = packet[MIPC_LENGTH_OFFSET];
+    if (MIPC_HEADER_SIZE + n + MIPC_CHECKSUM_SIZE > len) {
         return NULL;
     }
     *plen = n;
-    return packet + MIP_HEADER_SIZE;
+    return packet + MIPC_HEADER_SIZE;
 }
 
-size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+size_t mipc_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
     assert(packet != NULL || len == 0);
     assert(key != NULL);
-    mip_field_iter_t it;
-    mip_field_entry_t e;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
     size_t plen = 0;
     size_t key_len = 0;
     size_t prefix = 0;
@@ -72,15 +72,15 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     if (!payload) {
         return 0;
     }
-    mip_field_iter_init(&it, mip_packet_set(packet), payload, plen);
-    while (mip_field_iter_next(&it, &e) && e.kind == MIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+    mipc_field_iter_init(&it, mipc_packet_set(packet), payload, plen);
+    while (mipc_field_iter_next(&it, &e) && e.kind == MIPC_ENTRY_FIELD && is_shared(e.descriptor)) {
 #if TIMESTAMPS > 0
         int t;
         for (t = 0; t < TIMESTAMPS; t++) {
             if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
-                size_t n = MIP_FIELD_HEADER_SIZE + e.length;
+                size_t n = MIPC_FIELD_HEADER_SIZE + e.length;
                 seen[t] = true;
-                if (key_len + n <= MIP_SAMPLE_KEY_MAX) {
+                if (key_len + n <= MIPC_SAMPLE_KEY_MAX) {
                     memcpy(key + key_len, payload + e.offset, n);
                     key_len += n;
                 }
@@ -90,7 +90,7 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
 #else
         (void)key;
 #endif
-        prefix = e.offset + MIP_FIELD_HEADER_SIZE + e.length;
+        prefix = e.offset + MIPC_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {
         *shared_prefix = prefix;
@@ -98,31 +98,31 @@ size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *s
     return key_len;
 }
 
-void mip_sample_tracker_init(mip_sample_tracker_t *tracker) {
+void mipc_sample_tracker_init(mipc_sample_tracker_t *tracker) {
     assert(tracker != NULL);
     memset(tracker, 0, sizeof *tracker);
 }
 
-bool mip_sample_tracker_feed(mip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                             mip_sample_info_t *info) {
+bool mipc_sample_tracker_feed(mipc_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                              mipc_sample_info_t *info) {
     assert(tracker != NULL);
     assert(packet != NULL || len == 0);
     assert(info != NULL);
-    uint8_t key[MIP_SAMPLE_KEY_MAX];
+    uint8_t key[MIPC_SAMPLE_KEY_MAX];
     size_t key_len;
     size_t prefix = 0;
     size_t plen = 0;
-    mip_sample_slot_t *slot;
+    mipc_sample_slot_t *slot;
     int i;
     if (!payload_of(packet, len, &plen)) {
         return false;
     }
-    i = slot_of(packet[MIP_SET_OFFSET]);
+    i = slot_of(packet[MIPC_SET_OFFSET]);
     if (i < 0) {
         return false;
     }
     slot = &tracker->slots[i];
-    key_len = mip_sample_key(packet, len, key, &prefix);
+    key_len = mipc_sample_key(packet, len, key, &prefix);
     info->shared_prefix = prefix;
     if (key_len > 0 && slot->used && slot->key_len == key_len && memcmp(slot->key, key, key_len) == 0) {
         info->number = slot->number;

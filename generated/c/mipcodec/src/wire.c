@@ -1,45 +1,45 @@
-/* Bounds-checked reader and writer in the protocol's byte order (MIP_LITTLE_ENDIAN).
+/* Bounds-checked reader and writer in the protocol's byte order (MIPC_LITTLE_ENDIAN).
  * Generated: do not edit. */
 #include "wire.h"
 
 #include <string.h>
 
-void mip_reader_init(mip_reader_t *r, const uint8_t *data, size_t len, mip_decode_error_t *err) {
+void mipc_reader_init(mipc_reader_t *r, const uint8_t *data, size_t len, mipc_decode_error_t *err) {
     memset(r, 0, sizeof *r);
     r->data = data;
     r->len = data ? len : 0;
     r->err = err;
 }
 
-void mip_rd_push(mip_reader_t *r, const char *name) {
-    if (r->depth < MIP_PATH_MAX_DEPTH) {
+void mipc_rd_push(mipc_reader_t *r, const char *name) {
+    if (r->depth < MIPC_PATH_MAX_DEPTH) {
         r->path[r->depth].name = name;
         r->path[r->depth].index = SIZE_MAX;
     }
     r->depth++;
 }
 
-void mip_rd_index(mip_reader_t *r, size_t index) {
-    if (r->depth > 0 && r->depth <= MIP_PATH_MAX_DEPTH) {
+void mipc_rd_index(mipc_reader_t *r, size_t index) {
+    if (r->depth > 0 && r->depth <= MIPC_PATH_MAX_DEPTH) {
         r->path[r->depth - 1].index = index;
     }
 }
 
-void mip_rd_pop(mip_reader_t *r) {
+void mipc_rd_pop(mipc_reader_t *r) {
     if (r->depth > 0) {
         r->depth--;
     }
 }
 
-static mip_decode_error_t *begin_error(mip_reader_t *r, mip_decode_error_kind_t kind) {
+static mipc_decode_error_t *begin_error(mipc_reader_t *r, mipc_decode_error_kind_t kind) {
     size_t i;
-    mip_decode_error_t *e = r->err;
+    mipc_decode_error_t *e = r->err;
     if (!e) {
         return NULL;
     }
     memset(e, 0, sizeof *e);
     e->kind = kind;
-    e->depth = r->depth < MIP_PATH_MAX_DEPTH ? r->depth : MIP_PATH_MAX_DEPTH;
+    e->depth = r->depth < MIPC_PATH_MAX_DEPTH ? r->depth : MIPC_PATH_MAX_DEPTH;
     for (i = 0; i < e->depth; i++) {
         e->path[i] = r->path[i];
     }
@@ -48,12 +48,12 @@ static mip_decode_error_t *begin_error(mip_reader_t *r, mip_decode_error_kind_t 
     return e;
 }
 
-static int need(mip_reader_t *r, size_t n) {
-    mip_decode_error_t *e;
+static int need(mipc_reader_t *r, size_t n) {
+    mipc_decode_error_t *e;
     if (r->len - r->pos >= n) {
         return 0;
     }
-    e = begin_error(r, MIP_DECODE_NEEDS_BYTES);
+    e = begin_error(r, MIPC_DECODE_NEEDS_BYTES);
     if (e) {
         e->need = n;
     }
@@ -61,11 +61,11 @@ static int need(mip_reader_t *r, size_t n) {
 }
 
 /* An n-byte unsigned value in the protocol's byte order. */
-static uint64_t get_uint(mip_reader_t *r, size_t n) {
+static uint64_t get_uint(mipc_reader_t *r, size_t n) {
     uint64_t v = 0;
     size_t i;
     for (i = 0; i < n; i++) {
-#if MIP_LITTLE_ENDIAN
+#if MIPC_LITTLE_ENDIAN
         v |= (uint64_t)r->data[r->pos + i] << (8 * i);
 #else
         v = (v << 8) | (uint64_t)r->data[r->pos + i];
@@ -85,15 +85,15 @@ static int64_t to_signed(uint64_t u, unsigned bits) {
     return (int64_t)u;
 }
 
-int mip_rd_bool(mip_reader_t *r, bool *out) {
+int mipc_rd_bool(mipc_reader_t *r, bool *out) {
     uint8_t b;
-    mip_decode_error_t *e;
+    mipc_decode_error_t *e;
     if (need(r, 1)) {
         return -1;
     }
     b = r->data[r->pos];
     if (b > 1) {
-        e = begin_error(r, MIP_DECODE_BOOL);
+        e = begin_error(r, MIPC_DECODE_BOOL);
         if (e) {
             e->value = b;
         }
@@ -104,11 +104,11 @@ int mip_rd_bool(mip_reader_t *r, bool *out) {
     return 0;
 }
 
-int mip_rd_char(mip_reader_t *r, char *out) {
-    return mip_rd_chars(r, out, 1);
+int mipc_rd_char(mipc_reader_t *r, char *out) {
+    return mipc_rd_chars(r, out, 1);
 }
 
-int mip_rd_u8(mip_reader_t *r, uint8_t *out) {
+int mipc_rd_u8(mipc_reader_t *r, uint8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -116,7 +116,7 @@ int mip_rd_u8(mip_reader_t *r, uint8_t *out) {
     return 0;
 }
 
-int mip_rd_u16(mip_reader_t *r, uint16_t *out) {
+int mipc_rd_u16(mipc_reader_t *r, uint16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -124,7 +124,7 @@ int mip_rd_u16(mip_reader_t *r, uint16_t *out) {
     return 0;
 }
 
-int mip_rd_u32(mip_reader_t *r, uint32_t *out) {
+int mipc_rd_u32(mipc_reader_t *r, uint32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -132,7 +132,7 @@ int mip_rd_u32(mip_reader_t *r, uint32_t *out) {
     return 0;
 }
 
-int mip_rd_u64(mip_reader_t *r, uint64_t *out) {
+int mipc_rd_u64(mipc_reader_t *r, uint64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -140,7 +140,7 @@ int mip_rd_u64(mip_reader_t *r, uint64_t *out) {
     return 0;
 }
 
-int mip_rd_s8(mip_reader_t *r, int8_t *out) {
+int mipc_rd_s8(mipc_reader_t *r, int8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -148,7 +148,7 @@ int mip_rd_s8(mip_reader_t *r, int8_t *out) {
     return 0;
 }
 
-int mip_rd_s16(mip_reader_t *r, int16_t *out) {
+int mipc_rd_s16(mipc_reader_t *r, int16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -156,7 +156,7 @@ int mip_rd_s16(mip_reader_t *r, int16_t *out) {
     return 0;
 }
 
-int mip_rd_s32(mip_reader_t *r, int32_t *out) {
+int mipc_rd_s32(mipc_reader_t *r, int32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -164,7 +164,7 @@ int mip_rd_s32(mip_reader_t *r, int32_t *out) {
     return 0;
 }
 
-int mip_rd_s64(mip_reader_t *r, int64_t *out) {
+int mipc_rd_s64(mipc_reader_t *r, int64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -172,7 +172,7 @@ int mip_rd_s64(mip_reader_t *r, int64_t *out) {
     return 0;
 }
 
-int mip_rd_f32(mip_reader_t *r, float *out) {
+int mipc_rd_f32(mipc_reader_t *r, float *out) {
     uint32_t bits;
     if (need(r, 4)) {
         return -1;
@@ -182,7 +182,7 @@ int mip_rd_f32(mip_reader_t *r, float *out) {
     return 0;
 }
 
-int mip_rd_f64(mip_reader_t *r, double *out) {
+int mipc_rd_f64(mipc_reader_t *r, double *out) {
     uint64_t bits;
     if (need(r, 8)) {
         return -1;
@@ -192,7 +192,7 @@ int mip_rd_f64(mip_reader_t *r, double *out) {
     return 0;
 }
 
-int mip_rd_chars(mip_reader_t *r, char *out, size_t n) {
+int mipc_rd_chars(mipc_reader_t *r, char *out, size_t n) {
     if (need(r, n)) {
         return -1;
     }
@@ -203,25 +203,25 @@ int mip_rd_chars(mip_reader_t *r, char *out, size_t n) {
     return 0;
 }
 
-int mip_rd_remaining(mip_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
+int mipc_rd_remaining(mipc_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
     size_t left = r->len - r->pos;
-    mip_decode_error_t *e;
+    mipc_decode_error_t *e;
     if (left % elem_size != 0) {
-        e = begin_error(r, MIP_DECODE_REMAINING);
+        e = begin_error(r, MIPC_DECODE_REMAINING);
         if (e) {
             e->need = elem_size;
         }
         return -1;
     }
     if ((uint64_t)(left / elem_size) > max) {
-        return mip_rd_count_error(r, (uint64_t)(left / elem_size), max);
+        return mipc_rd_count_error(r, (uint64_t)(left / elem_size), max);
     }
     *count = left / elem_size;
     return 0;
 }
 
-int mip_rd_count_error(mip_reader_t *r, uint64_t count, uint64_t max) {
-    mip_decode_error_t *e = begin_error(r, MIP_DECODE_COUNT);
+int mipc_rd_count_error(mipc_reader_t *r, uint64_t count, uint64_t max) {
+    mipc_decode_error_t *e = begin_error(r, MIPC_DECODE_COUNT);
     if (e) {
         e->count = count;
         e->max = max;
@@ -229,16 +229,16 @@ int mip_rd_count_error(mip_reader_t *r, uint64_t count, uint64_t max) {
     return -1;
 }
 
-int mip_rd_selector_error_u(mip_reader_t *r, uint64_t value) {
-    mip_decode_error_t *e = begin_error(r, MIP_DECODE_SELECTOR);
+int mipc_rd_selector_error_u(mipc_reader_t *r, uint64_t value) {
+    mipc_decode_error_t *e = begin_error(r, MIPC_DECODE_SELECTOR);
     if (e) {
         e->value = value;
     }
     return -1;
 }
 
-int mip_rd_selector_error_s(mip_reader_t *r, int64_t value) {
-    mip_decode_error_t *e = begin_error(r, MIP_DECODE_SELECTOR);
+int mipc_rd_selector_error_s(mipc_reader_t *r, int64_t value) {
+    mipc_decode_error_t *e = begin_error(r, MIPC_DECODE_SELECTOR);
     if (e) {
         e->value = (uint64_t)value;
         e->value_signed = true;
@@ -246,97 +246,97 @@ int mip_rd_selector_error_s(mip_reader_t *r, int64_t value) {
     return -1;
 }
 
-int mip_rd_finish(mip_reader_t *r) {
+int mipc_rd_finish(mipc_reader_t *r) {
     if (r->pos < r->len) {
         r->depth = 0;
-        begin_error(r, MIP_DECODE_UNEXPECTED);
+        begin_error(r, MIPC_DECODE_UNEXPECTED);
         return -1;
     }
     return 0;
 }
 
-void mip_writer_init(mip_writer_t *w, uint8_t *buf, size_t cap) {
+void mipc_writer_init(mipc_writer_t *w, uint8_t *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
 /* The low n bytes of v in the protocol's byte order. */
-static mip_status_t put_uint(mip_writer_t *w, uint64_t v, size_t n) {
+static mipc_status_t put_uint(mipc_writer_t *w, uint64_t v, size_t n) {
     size_t i;
     if (w->cap - w->len < n) {
-        return MIP_ERR_BUFFER;
+        return MIPC_ERR_BUFFER;
     }
     for (i = 0; i < n; i++) {
-#if MIP_LITTLE_ENDIAN
+#if MIPC_LITTLE_ENDIAN
         w->buf[w->len + i] = (uint8_t)(v >> (8 * i));
 #else
         w->buf[w->len + i] = (uint8_t)(v >> (8 * (n - 1 - i)));
 #endif
     }
     w->len += n;
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_wr_bool(mip_writer_t *w, const bool *v) {
+mipc_status_t mipc_wr_bool(mipc_writer_t *w, const bool *v) {
     return put_uint(w, *v ? 1u : 0u, 1);
 }
 
-mip_status_t mip_wr_char(mip_writer_t *w, const char *v) {
-    return mip_wr_chars(w, v, 1);
+mipc_status_t mipc_wr_char(mipc_writer_t *w, const char *v) {
+    return mipc_wr_chars(w, v, 1);
 }
 
-mip_status_t mip_wr_u8(mip_writer_t *w, const uint8_t *v) {
+mipc_status_t mipc_wr_u8(mipc_writer_t *w, const uint8_t *v) {
     return put_uint(w, *v, 1);
 }
 
-mip_status_t mip_wr_u16(mip_writer_t *w, const uint16_t *v) {
+mipc_status_t mipc_wr_u16(mipc_writer_t *w, const uint16_t *v) {
     return put_uint(w, *v, 2);
 }
 
-mip_status_t mip_wr_u32(mip_writer_t *w, const uint32_t *v) {
+mipc_status_t mipc_wr_u32(mipc_writer_t *w, const uint32_t *v) {
     return put_uint(w, *v, 4);
 }
 
-mip_status_t mip_wr_u64(mip_writer_t *w, const uint64_t *v) {
+mipc_status_t mipc_wr_u64(mipc_writer_t *w, const uint64_t *v) {
     return put_uint(w, *v, 8);
 }
 
-mip_status_t mip_wr_s8(mip_writer_t *w, const int8_t *v) {
+mipc_status_t mipc_wr_s8(mipc_writer_t *w, const int8_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 1);
 }
 
-mip_status_t mip_wr_s16(mip_writer_t *w, const int16_t *v) {
+mipc_status_t mipc_wr_s16(mipc_writer_t *w, const int16_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 2);
 }
 
-mip_status_t mip_wr_s32(mip_writer_t *w, const int32_t *v) {
+mipc_status_t mipc_wr_s32(mipc_writer_t *w, const int32_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 4);
 }
 
-mip_status_t mip_wr_s64(mip_writer_t *w, const int64_t *v) {
+mipc_status_t mipc_wr_s64(mipc_writer_t *w, const int64_t *v) {
     return put_uint(w, (uint64_t)*v, 8);
 }
 
-mip_status_t mip_wr_f32(mip_writer_t *w, const float *v) {
+mipc_status_t mipc_wr_f32(mipc_writer_t *w, const float *v) {
     uint32_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 4);
 }
 
-mip_status_t mip_wr_f64(mip_writer_t *w, const double *v) {
+mipc_status_t mipc_wr_f64(mipc_writer_t *w, const double *v) {
     uint64_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 8);
 }
 
-mip_status_t mip_wr_chars(mip_writer_t *w, const char *v, size_t n) {
+mipc_status_t mipc_wr_chars(mipc_writer_t *w, const char *v, size_t n) {
     if (w->cap - w->len < n) {
-        return MIP_ERR_BUFFER;
+        return MIPC_ERR_BUFFER;
     }
     if (n > 0) {
         memcpy(w->buf + w->len, v, n);
     }
     w->len += n;
-    return MIP_OK;
+    return MIPC_OK;
 }

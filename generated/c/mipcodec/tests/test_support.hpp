@@ -30,7 +30,7 @@ inline std::string to_hex(const std::vector<uint8_t> &bytes) {
 }
 
 struct Event {
-    mip_event_kind_t kind;
+    mipc_event_kind_t kind;
     uint64_t offset;
     uint64_t length;
     bool operator==(const Event &o) const {
@@ -40,23 +40,23 @@ struct Event {
 
 struct Collector {
     const std::vector<uint8_t> *input = nullptr;
-    mip_device_t device = MIP_DEVICE_ANY;
+    mipc_device_t device = MIPC_DEVICE_ANY;
     std::string text;
     std::vector<Event> events;
 };
 
-inline void collect(void *arg, const mip_event_t *ev) {
+inline void collect(void *arg, const mipc_event_t *ev) {
     Collector *c = static_cast<Collector *>(arg);
     c->events.push_back(Event{ev->kind, ev->offset, ev->length});
     std::string line(1024, '\0');
     size_t n;
     for (;;) {
-        if (ev->kind == MIP_EVENT_SKIP) {
-            n = mip_json_skip_line(ev->offset, c->input->data() + ev->offset, static_cast<size_t>(ev->length),
-                                   &line[0], line.size());
+        if (ev->kind == MIPC_EVENT_SKIP) {
+            n = mipc_json_skip_line(ev->offset, c->input->data() + ev->offset,
+                                    static_cast<size_t>(ev->length), &line[0], line.size());
         } else {
-            n = mip_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
-                                     &line[0], line.size());
+            n = mipc_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
+                                      &line[0], line.size());
         }
         if (n < line.size()) {
             break;
@@ -69,26 +69,26 @@ inline void collect(void *arg, const mip_event_t *ev) {
 
 // Feeds the bytes in chunks of `chunk` bytes (0: all at once); returns the JSON lines.
 inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk,
-                        mip_device_t device = MIP_DEVICE_ANY) {
+                        mipc_device_t device = MIPC_DEVICE_ANY) {
     Collector c;
     c.input = &bytes;
     c.device = device;
-    mip_parser_t parser;
-    mip_parser_init(&parser);
+    mipc_parser_t parser;
+    mipc_parser_init(&parser);
     if (chunk == 0) {
-        mip_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
+        mipc_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
     } else {
         for (size_t i = 0; i < bytes.size(); i += chunk) {
             size_t n = bytes.size() - i < chunk ? bytes.size() - i : chunk;
-            mip_parser_feed(&parser, bytes.data() + i, n, collect, &c);
+            mipc_parser_feed(&parser, bytes.data() + i, n, collect, &c);
         }
     }
-    mip_parser_flush(&parser, collect, &c);
+    mipc_parser_flush(&parser, collect, &c);
     return c;
 }
 
 inline std::string decode_text(const std::vector<uint8_t> &bytes, size_t chunk,
-                               mip_device_t device = MIP_DEVICE_ANY) {
+                               mipc_device_t device = MIPC_DEVICE_ANY) {
     return decode(bytes, chunk, device).text;
 }
 
@@ -105,12 +105,12 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
         if (line.empty()) {
             continue;
         }
-        std::vector<uint8_t> buf(line.size() / 2 + MIP_MAX_PACKET);
+        std::vector<uint8_t> buf(line.size() / 2 + MIPC_MAX_PACKET);
         char msg[512];
         size_t n = 0;
-        mip_status_t st =
-            mip_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
-        if (st != MIP_OK) {
+        mipc_status_t st =
+            mipc_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
+        if (st != MIPC_OK) {
             *error = msg;
             return false;
         }
@@ -122,14 +122,14 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
 // A packet of descriptor set `set` holding the given (descriptor, data) fields.
 inline std::vector<uint8_t> packet(uint8_t set,
                                    const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
-    std::vector<uint8_t> buf(MIP_MAX_PACKET);
-    mip_packet_builder_t b;
-    mip_packet_begin(&b, buf.data(), buf.size(), set);
+    std::vector<uint8_t> buf(MIPC_MAX_PACKET);
+    mipc_packet_builder_t b;
+    mipc_packet_begin(&b, buf.data(), buf.size(), set);
     for (const auto &f : fields) {
-        mip_packet_add_field(&b, f.first, f.second.data(), f.second.size());
+        mipc_packet_add_field(&b, f.first, f.second.data(), f.second.size());
     }
     size_t n = 0;
-    if (mip_packet_finish(&b, &n) != MIP_OK) {
+    if (mipc_packet_finish(&b, &n) != MIPC_OK) {
         return {};
     }
     buf.resize(n);
@@ -140,8 +140,8 @@ inline std::vector<uint8_t> packet(uint8_t set,
 inline uint8_t garbage_byte() {
     for (unsigned b = 0;; b++) {
         bool in_sync = false;
-        for (size_t i = 0; i < MIP_SYNC_SIZE; i++) {
-            in_sync = in_sync || mip_sync[i] == b;
+        for (size_t i = 0; i < MIPC_SYNC_SIZE; i++) {
+            in_sync = in_sync || mipc_sync[i] == b;
         }
         if (!in_sync) {
             return static_cast<uint8_t>(b);

@@ -7,7 +7,7 @@
 
 namespace {
 
-[[maybe_unused]] void check_vector(const char *hex, mip_device_t device, const char *expect) {
+[[maybe_unused]] void check_vector(const char *hex, mipc_device_t device, const char *expect) {
     using namespace test_support;
     std::vector<uint8_t> bytes = from_hex(hex);
     EXPECT_EQ(decode_text(bytes, 0, device), expect) << "decoded whole";
@@ -29,71 +29,71 @@ namespace {
 } // namespace
 
 TEST(Vectors, startup_settings_save_gx5) {
-    check_vector("75650c030330031f45", MIP_DEVICE_GX5_45,
+    check_vector("75650c030330031f45", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
                  "settings\",\"device\":\"gx5_45\",\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, startup_settings_ack) {
-    check_vector("75650c0404f130000f0a", MIP_DEVICE_ANY,
+    check_vector("75650c0404f130000f0a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":48,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, startup_settings_read_gx5) {
-    check_vector("75650c030330021e44", MIP_DEVICE_GX5_45,
+    check_vector("75650c030330021e44", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
                  "settings\",\"device\":\"gx5_45\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, startup_settings_load_cv7) {
-    check_vector("75650c030330042046", MIP_DEVICE_CV7_INS,
+    check_vector("75650c030330042046", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
                  "settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, startup_settings_default_cv7) {
-    check_vector("75650c030330052147", MIP_DEVICE_CV7_INS,
+    check_vector("75650c030330052147", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":48,\"name\":\"device_startup_"
                  "settings\",\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_euler_example_2) {
     check_vector(
-        "75650c0f0f3101bfc90ff90000000000000000c60f", MIP_DEVICE_ANY,
+        "75650c0f0f3101bfc90ff90000000000000000c60f", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\","
         "\"values\":{\"function\":1,\"roll\":-1.5707999467849731,\"pitch\":0.0,\"yaw\":0.0}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_euler_example_3) {
-    check_vector("75650c0f0f3101000000003fc90ff93fc90ff9563d", MIP_DEVICE_ANY,
+    check_vector("75650c0f0f3101000000003fc90ff93fc90ff9563d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_"
                  "euler\",\"values\":{\"function\":1,\"roll\":0.0,\"pitch\":1.5707999467849731,\"yaw\":1."
                  "5707999467849731}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_euler_read) {
-    check_vector("75650c030331021f46", MIP_DEVICE_ANY,
+    check_vector("75650c030331021f46", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_"
                  "euler\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_euler_reply) {
     check_vector(
-        "75650c1204f131000eb1000000003fc90ff93fc90ff9fdd3", MIP_DEVICE_ANY,
+        "75650c1204f131000eb1000000003fc90ff93fc90ff9fdd3", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":49,\"ack_code\":0}},{\"descriptor\":177,\"name\":\"sensor_to_vehicle_euler_"
         "response\",\"values\":{\"roll\":0.0,\"pitch\":1.5707999467849731,\"yaw\":1.5707999467849731}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_quaternion_write_identity) {
-    check_vector("75650c131332013f800000000000000000000000000000fe17", MIP_DEVICE_ANY,
+    check_vector("75650c131332013f800000000000000000000000000000fe17", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":50,\"name\":\"sensor_to_vehicle_"
                  "quaternion\",\"values\":{\"function\":1,\"q\":[1.0,0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_quaternion_reply) {
-    check_vector("75650c1604f1320012b23f0000003f0000003f0000003f000000e3cc", MIP_DEVICE_ANY,
+    check_vector("75650c1604f1320012b23f0000003f0000003f0000003f000000e3cc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":50,\"ack_code\":0}},{\"descriptor\":178,\"name\":\"sensor_to_"
                  "vehicle_quaternion_response\",\"values\":{\"q\":[0.5,0.5,0.5,0.5]}}]}\n");
@@ -101,14 +101,14 @@ TEST(Vectors, sensor_to_vehicle_quaternion_reply) {
 
 TEST(Vectors, sensor_to_vehicle_dcm_example_2) {
     check_vector("75650c272733013f800000000000000000000000000000000000003f80000000000000bf800000000000002529",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_dcm\","
                  "\"values\":{\"function\":1,\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_dcm_example_3) {
     check_vector("75650c2727330100000000bf8000000000000000000000000000003f800000bf8000000000000000000000a529",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":51,\"name\":\"sensor_to_vehicle_dcm\","
                  "\"values\":{\"function\":1,\"dcm\":[0.0,-1.0,0.0,0.0,0.0,1.0,-1.0,0.0,0.0]}}]}\n");
 }
@@ -116,76 +116,76 @@ TEST(Vectors, sensor_to_vehicle_dcm_example_3) {
 TEST(Vectors, sensor_to_vehicle_dcm_reply) {
     check_vector(
         "75650c2a04f1330026b33f800000000000000000000000000000000000003f80000000000000bf80000000000000cee5",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":51,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"sensor_to_vehicle_dcm_"
         "response\",\"values\":{\"dcm\":[1.0,0.0,0.0,0.0,0.0,1.0,0.0,-1.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_write_zero_gx5) {
-    check_vector("75650c0f0f37010000000000000000000000003c75", MIP_DEVICE_GX5_45,
+    check_vector("75650c0f0f37010000000000000000000000003c75", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":"
                  "\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_ack) {
-    check_vector("75650c0404f137001618", MIP_DEVICE_ANY,
+    check_vector("75650c0404f137001618", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":55,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, accel_bias_write_no_ack_gx5) {
     check_vector(
-        "75650c0f0f37063b03126fba83126f00000000be32", MIP_DEVICE_GX5_45,
+        "75650c0f0f37063b03126fba83126f00000000be32", MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":\"gx5_"
         "45\",\"values\":{\"function\":6,\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_read_full_length_gx5) {
-    check_vector("75650c0f0f37020000000000000000000000003d82", MIP_DEVICE_GX5_45,
+    check_vector("75650c0f0f37020000000000000000000000003d82", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":"
                  "\"gx5_45\",\"values\":{\"function\":2,\"bias\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_write_cv7) {
-    check_vector("75650c0f0f37013e800000be0000003d8000007541", MIP_DEVICE_CV7_INS,
+    check_vector("75650c0f0f37013e800000be0000003d8000007541", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":"
                  "\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.25,-0.125,0.0625]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_read_cv7) {
-    check_vector("75650c030337022552", MIP_DEVICE_CV7_INS,
+    check_vector("75650c030337022552", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":55,\"name\":\"accel_bias\",\"device\":"
                  "\"cv7_ins\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, accel_bias_reply) {
-    check_vector("75650c1204f137000e9a3e800000be0000003d80000005b8", MIP_DEVICE_ANY,
+    check_vector("75650c1204f137000e9a3e800000be0000003d80000005b8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":55,\"ack_code\":0}},{\"descriptor\":154,\"name\":\"accel_bias_"
                  "response\",\"values\":{\"bias\":[0.25,-0.125,0.0625]}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_write_zero_gx5) {
-    check_vector("75650c0f0f38010000000000000000000000003d83", MIP_DEVICE_GX5_45,
+    check_vector("75650c0f0f38010000000000000000000000003d83", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":"
                  "\"gx5_45\",\"values\":{\"function\":1,\"bias\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_ack) {
-    check_vector("75650c0404f13800171a", MIP_DEVICE_ANY,
+    check_vector("75650c0404f13800171a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":56,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_save_cv7) {
-    check_vector("75650c030338032755", MIP_DEVICE_CV7_INS,
+    check_vector("75650c030338032755", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":"
                  "\"cv7_ins\",\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_write_cv7) {
-    check_vector("75650c0f0f38013b03126fba83126f3a03126f7883", MIP_DEVICE_CV7_INS,
+    check_vector("75650c0f0f38013b03126fba83126f3a03126f7883", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":56,\"name\":\"gyro_bias\",\"device\":"
                  "\"cv7_ins\",\"values\":{\"function\":1,\"bias\":[0.0020000000949949026,-0."
                  "0010000000474974513,0.0005000000237487257]}}]}\n");
@@ -193,52 +193,52 @@ TEST(Vectors, gyro_bias_write_cv7) {
 
 TEST(Vectors, gyro_bias_reply) {
     check_vector(
-        "75650c1204f138000e9b3b03126fba83126f3a03126f0909", MIP_DEVICE_ANY,
+        "75650c1204f138000e9b3b03126fba83126f3a03126f0909", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":56,\"ack_code\":0}},{\"descriptor\":155,\"name\":\"gyro_bias_response\","
         "\"values\":{\"bias\":[0.0020000000949949026,-0.0010000000474974513,0.0005000000237487257]}}]}\n");
 }
 
 TEST(Vectors, capture_gyro_bias_command) {
-    check_vector("75650c04043927105ee0", MIP_DEVICE_ANY,
+    check_vector("75650c04043927105ee0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\","
                  "\"values\":{\"averaging_time_ms\":10000}}]}\n");
 }
 
 TEST(Vectors, capture_gyro_bias_reply) {
-    check_vector("75650c1204f139000e9b000000000000000000000000cf19", MIP_DEVICE_ANY,
+    check_vector("75650c1204f139000e9b000000000000000000000000cf19", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":57,\"ack_code\":0}},{\"descriptor\":155,\"name\":\"gyro_bias_"
                  "response\",\"values\":{\"bias\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, capture_gyro_bias_short_cv7) {
-    check_vector("75650c04043903e81270", MIP_DEVICE_ANY,
+    check_vector("75650c04043903e81270", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":57,\"name\":\"capture_gyro_bias\","
                  "\"values\":{\"averaging_time_ms\":1000}}]}\n");
 }
 
 TEST(Vectors, mag_hard_iron_write_zero_gx5) {
-    check_vector("75650c0f0f3a010000000000000000000000003f9f", MIP_DEVICE_GX5_45,
+    check_vector("75650c0f0f3a010000000000000000000000003f9f", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_offset\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, mag_hard_iron_ack) {
-    check_vector("75650c0404f13a00191e", MIP_DEVICE_ANY,
+    check_vector("75650c0404f13a00191e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":58,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_hard_iron_write_cv7) {
-    check_vector("75650c0f0f3a013da3d70abdf5c28f3eb333335ad8", MIP_DEVICE_CV7_INS,
+    check_vector("75650c0f0f3a013da3d70abdf5c28f3eb333335ad8", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":58,\"name\":\"mag_hard_iron_offset\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"offset\":[0.07999999821186066,-0."
                  "11999999731779099,0.3499999940395355]}}]}\n");
 }
 
 TEST(Vectors, mag_hard_iron_reply) {
-    check_vector("75650c1204f13a000e9c3da3d70abdf5c28f3eb33333ec6f", MIP_DEVICE_ANY,
+    check_vector("75650c1204f13a000e9c3da3d70abdf5c28f3eb33333ec6f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":58,\"ack_code\":0}},{\"descriptor\":156,\"name\":\"mag_hard_iron_"
                  "offset_response\",\"values\":{\"offset\":[0.07999999821186066,-0.11999999731779099,0."
@@ -247,20 +247,20 @@ TEST(Vectors, mag_hard_iron_reply) {
 
 TEST(Vectors, mag_soft_iron_write_identity_gx5) {
     check_vector("75650c27273b013f8000000000000000000000000000003f8000000000000000000000000000003f800000ad59",
-                 MIP_DEVICE_GX5_45,
+                 MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_matrix\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"matrix\":[1.0,0.0,0.0,0.0,1.0,0.0,0.0,0."
                  "0,1.0]}}]}\n");
 }
 
 TEST(Vectors, mag_soft_iron_ack) {
-    check_vector("75650c0404f13b001a20", MIP_DEVICE_ANY,
+    check_vector("75650c0404f13b001a20", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":59,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_soft_iron_default_cv7) {
-    check_vector("75650c03033b052c5d", MIP_DEVICE_CV7_INS,
+    check_vector("75650c03033b052c5d", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":59,\"name\":\"mag_soft_iron_matrix\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":5}}]}\n");
 }
@@ -268,7 +268,7 @@ TEST(Vectors, mag_soft_iron_default_cv7) {
 TEST(Vectors, mag_soft_iron_reply) {
     check_vector(
         "75650c2a04f13b00269d3f828f5c3c23d70abcf5c28f3c23d70a3f7ae1483ca3d70abcf5c28f3ca3d70a3f8000005487",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":59,\"ack_code\":0}},{\"descriptor\":157,\"name\":\"mag_soft_iron_matrix_"
         "response\",\"values\":{\"matrix\":[1.0199999809265137,0.009999999776482582,-0.029999999329447746,0."
@@ -277,44 +277,44 @@ TEST(Vectors, mag_soft_iron_reply) {
 }
 
 TEST(Vectors, coning_sculling_enable_write) {
-    check_vector("75650c04043e01012e94", MIP_DEVICE_ANY,
+    check_vector("75650c04043e01012e94", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":62,\"name\":\"coning_sculling_"
                  "enable\",\"values\":{\"function\":1,\"enable\":true}}]}\n");
 }
 
 TEST(Vectors, coning_sculling_enable_ack) {
-    check_vector("75650c0404f13e001d26", MIP_DEVICE_ANY,
+    check_vector("75650c0404f13e001d26", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":62,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, coning_sculling_enable_read_reply) {
-    check_vector("75650c0704f13e00039e00c1da", MIP_DEVICE_ANY,
+    check_vector("75650c0704f13e00039e00c1da", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":62,\"ack_code\":0}},{\"descriptor\":158,\"name\":\"coning_sculling_"
                  "enable_response\",\"values\":{\"enable\":false}}]}\n");
 }
 
 TEST(Vectors, uart_baudrate_write_115200) {
-    check_vector("75650c070740010001c200f8da", MIP_DEVICE_ANY,
+    check_vector("75650c070740010001c200f8da", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\","
                  "\"values\":{\"function\":1,\"baud\":115200}}]}\n");
 }
 
 TEST(Vectors, uart_baudrate_ack) {
-    check_vector("75650c0404f140001f2a", MIP_DEVICE_ANY,
+    check_vector("75650c0404f140001f2a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":64,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, uart_baudrate_read) {
-    check_vector("75650c030340022e64", MIP_DEVICE_ANY,
+    check_vector("75650c030340022e64", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":64,\"name\":\"uart_baudrate\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, uart_baudrate_reply_921600) {
-    check_vector("75650c0a04f140000687000e1000d037", MIP_DEVICE_ANY,
+    check_vector("75650c0a04f140000687000e1000d037", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":64,\"ack_code\":0}},{\"descriptor\":135,\"name\":\"uart_baudrate_"
                  "response\",\"values\":{\"baud\":921600}}]}\n");
@@ -322,87 +322,87 @@ TEST(Vectors, uart_baudrate_reply_921600) {
 
 TEST(Vectors, gpio_config_timestamp_falling_pullup) {
     check_vector(
-        "75650c07074101010402044171", MIP_DEVICE_ANY,
+        "75650c07074101010402044171", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":1,\"feature\":4,\"behavior\":{\"behavior\":2},\"pin_mode\":4}}]}\n");
 }
 
 TEST(Vectors, gpio_config_output_low_pin1) {
     check_vector(
-        "75650c07074101010102003a64", MIP_DEVICE_ANY,
+        "75650c07074101010102003a64", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":1,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}\n");
 }
 
 TEST(Vectors, gpio_config_input_pullup_pin3) {
     check_vector(
-        "75650c07074101030101043f6e", MIP_DEVICE_ANY,
+        "75650c07074101030101043f6e", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":3,\"feature\":1,\"behavior\":{\"behavior\":1},\"pin_mode\":4}}]}\n");
 }
 
 TEST(Vectors, gpio_config_output_low_pin4) {
     check_vector(
-        "75650c07074101040102003d70", MIP_DEVICE_ANY,
+        "75650c07074101040102003d70", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":4,\"feature\":1,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}\n");
 }
 
 TEST(Vectors, gpio_state_write_high_pin4) {
-    check_vector("75650c05054201040138e4", MIP_DEVICE_ANY,
+    check_vector("75650c05054201040138e4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":"
                  "{\"function\":1,\"pin\":4,\"state\":true}}]}\n");
 }
 
 TEST(Vectors, gpio_state_write_low_pin4) {
-    check_vector("75650c05054201040037e3", MIP_DEVICE_ANY,
+    check_vector("75650c05054201040037e3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":"
                  "{\"function\":1,\"pin\":4,\"state\":false}}]}\n");
 }
 
 TEST(Vectors, gpio_config_uart_port2_rx_pin2) {
     check_vector(
-        "75650c07074101020522005fb4", MIP_DEVICE_ANY,
+        "75650c07074101020522005fb4", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":2,\"feature\":5,\"behavior\":{\"behavior\":34},\"pin_mode\":0}}]}\n");
 }
 
 TEST(Vectors, gpio_config_pps_input_open_drain) {
     check_vector(
-        "75650c07074101010201013b66", MIP_DEVICE_ANY,
+        "75650c07074101010201013b66", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":1},\"pin_mode\":1}}]}\n");
 }
 
 TEST(Vectors, gpio_config_encoder_b_pulldown) {
     check_vector(
-        "75650c07074101040302024178", MIP_DEVICE_ANY,
+        "75650c07074101040302024178", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":4,\"feature\":3,\"behavior\":{\"behavior\":2},\"pin_mode\":2}}]}\n");
 }
 
 TEST(Vectors, gpio_config_unused_pin3) {
     check_vector(
-        "75650c07074101030000003965", MIP_DEVICE_ANY,
+        "75650c07074101030000003965", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\",\"values\":{"
         "\"function\":1,\"pin\":3,\"feature\":0,\"behavior\":{\"behavior\":0},\"pin_mode\":0}}]}\n");
 }
 
 TEST(Vectors, gpio_config_save_all) {
-    check_vector("75650c040441030032a0", MIP_DEVICE_ANY,
+    check_vector("75650c040441030032a0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\","
                  "\"values\":{\"function\":3,\"pin\":0}}]}\n");
 }
 
 TEST(Vectors, gpio_config_read_pin1) {
-    check_vector("75650c0404410201329f", MIP_DEVICE_ANY,
+    check_vector("75650c0404410201329f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":65,\"name\":\"gpio_config\","
                  "\"values\":{\"function\":2,\"pin\":1}}]}\n");
 }
 
 TEST(Vectors, gpio_config_reply_pps_output) {
     check_vector(
-        "75650c0a04f1410006c101020200f225", MIP_DEVICE_ANY,
+        "75650c0a04f1410006c101020200f225", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_response\","
         "\"values\":{\"pin\":1,\"feature\":2,\"behavior\":{\"behavior\":2},\"pin_mode\":0}}]}\n");
@@ -410,20 +410,20 @@ TEST(Vectors, gpio_config_reply_pps_output) {
 
 TEST(Vectors, gpio_config_reply_timestamp_either) {
     check_vector(
-        "75650c0a04f1410006c102040304fa35", MIP_DEVICE_ANY,
+        "75650c0a04f1410006c102040304fa35", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":65,\"ack_code\":0}},{\"descriptor\":193,\"name\":\"gpio_config_response\","
         "\"values\":{\"pin\":2,\"feature\":4,\"behavior\":{\"behavior\":3},\"pin_mode\":4}}]}\n");
 }
 
 TEST(Vectors, gpio_state_read_pin3) {
-    check_vector("75650c040442020335a4", MIP_DEVICE_ANY,
+    check_vector("75650c040442020335a4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":66,\"name\":\"gpio_state\",\"values\":"
                  "{\"function\":2,\"pin\":3}}]}\n");
 }
 
 TEST(Vectors, gpio_state_reply_pin3_high) {
-    check_vector("75650c0804f1420004c20301ef33", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1420004c20301ef33", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":194,\"name\":\"gpio_state_"
                  "response\",\"values\":{\"pin\":3,\"state\":true}}]}\n");
@@ -431,39 +431,39 @@ TEST(Vectors, gpio_state_reply_pin3_high) {
 
 TEST(Vectors, odometer_config_write_quadrature) {
     check_vector(
-        "75650c0c0c430102447a00003c23d70a4293", MIP_DEVICE_ANY,
+        "75650c0c0c430102447a00003c23d70a4293", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":67,\"name\":\"odometer_config\",\"values\":{"
         "\"function\":1,\"mode\":2,\"scaling\":1000.0,\"uncertainty\":0.009999999776482582}}]}\n");
 }
 
 TEST(Vectors, odometer_config_reply_disabled) {
-    check_vector("75650c0f04f143000bc300c37a00003d800000f54f", MIP_DEVICE_ANY,
+    check_vector("75650c0f04f143000bc300c37a00003d800000f54f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":195,\"name\":\"odometer_config_"
                  "response\",\"values\":{\"mode\":0,\"scaling\":-250.0,\"uncertainty\":0.0625}}]}\n");
 }
 
 TEST(Vectors, advanced_lowpass_filter_write_accel) {
-    check_vector("75650c090950010401000000004e80", MIP_DEVICE_ANY,
+    check_vector("75650c090950010401000000004e80", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
                  "filter\",\"values\":{\"function\":1,\"target_descriptor\":4,\"enable\":true,\"manual\":"
                  "false,\"frequency\":0,\"reserved\":0}}]}\n");
 }
 
 TEST(Vectors, advanced_lowpass_filter_ack) {
-    check_vector("75650c0404f150002f4a", MIP_DEVICE_ANY,
+    check_vector("75650c0404f150002f4a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":80,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, advanced_lowpass_filter_read_gyro) {
-    check_vector("75650c040450020545d0", MIP_DEVICE_ANY,
+    check_vector("75650c040450020545d0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
                  "filter\",\"values\":{\"function\":2,\"target_descriptor\":5}}]}\n");
 }
 
 TEST(Vectors, advanced_lowpass_filter_reply_gyro) {
-    check_vector("75650c0c04f15000088b0501010064003526", MIP_DEVICE_ANY,
+    check_vector("75650c0c04f15000088b0501010064003526", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":139,\"name\":\"advanced_lowpass_"
                  "filter_response\",\"values\":{\"target_descriptor\":5,\"enable\":true,\"manual\":true,"
@@ -471,26 +471,26 @@ TEST(Vectors, advanced_lowpass_filter_reply_gyro) {
 }
 
 TEST(Vectors, advanced_lowpass_filter_default_all_cv7) {
-    check_vector("75650c040450050043d1", MIP_DEVICE_ANY,
+    check_vector("75650c040450050043d1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":80,\"name\":\"advanced_lowpass_"
                  "filter\",\"values\":{\"function\":5,\"target_descriptor\":0}}]}\n");
 }
 
 TEST(Vectors, complementary_filter_write) {
-    check_vector("75650c0d0d5101010140a0000040a000001452", MIP_DEVICE_ANY,
+    check_vector("75650c0d0d5101010140a0000040a000001452", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":81,\"name\":\"complementary_filter\","
                  "\"values\":{\"function\":1,\"pitch_roll_enable\":true,\"heading_enable\":true,\"pitch_roll_"
                  "time_constant\":5.0,\"heading_time_constant\":5.0}}]}\n");
 }
 
 TEST(Vectors, complementary_filter_ack) {
-    check_vector("75650c0404f15100304c", MIP_DEVICE_ANY,
+    check_vector("75650c0404f15100304c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":81,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, complementary_filter_reply) {
-    check_vector("75650c1004f151000c97010041200000447a0000ffd5", MIP_DEVICE_ANY,
+    check_vector("75650c1004f151000c97010041200000447a0000ffd5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":81,\"ack_code\":0}},{\"descriptor\":151,\"name\":\"complementary_"
                  "filter_response\",\"values\":{\"pitch_roll_enable\":true,\"heading_enable\":false,\"pitch_"
@@ -498,32 +498,32 @@ TEST(Vectors, complementary_filter_reply) {
 }
 
 TEST(Vectors, sensor_range_write_accel_8g) {
-    check_vector("75650c0505520101034720", MIP_DEVICE_ANY,
+    check_vector("75650c0505520101034720", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\","
                  "\"values\":{\"function\":1,\"sensor\":1,\"setting\":3}}]}\n");
 }
 
 TEST(Vectors, sensor_range_save_all) {
-    check_vector("75650c040452030043d3", MIP_DEVICE_ANY,
+    check_vector("75650c040452030043d3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":82,\"name\":\"sensor_range\","
                  "\"values\":{\"function\":3,\"sensor\":0}}]}\n");
 }
 
 TEST(Vectors, sensor_range_reply_gyro) {
-    check_vector("75650c0804f1520004d202020fc2", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1520004d202020fc2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":\"sensor_range_"
                  "response\",\"values\":{\"sensor\":2,\"setting\":2}}]}\n");
 }
 
 TEST(Vectors, get_calibrated_sensor_ranges_accel) {
-    check_vector("75650c030353014089", MIP_DEVICE_ANY,
+    check_vector("75650c030353014089", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":83,\"name\":\"get_calibrated_sensor_"
                  "ranges\",\"values\":{\"sensor\":1}}]}\n");
 }
 
 TEST(Vectors, calibrated_sensor_ranges_accel) {
-    check_vector("75650c1704f1530013d30103024080000003410000000441800000fa6b", MIP_DEVICE_ANY,
+    check_vector("75650c1704f1530013d30103024080000003410000000441800000fa6b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"calibrated_"
                  "sensor_ranges\",\"values\":{\"sensor\":1,\"num_ranges\":3,\"ranges\":[{\"setting\":2,"
@@ -531,20 +531,20 @@ TEST(Vectors, calibrated_sensor_ranges_accel) {
 }
 
 TEST(Vectors, lowpass_filter_write_accel_manual) {
-    check_vector("75650c0b0b540180040101424800006152", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b540180040101424800006152", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
                  "\"values\":{\"function\":1,\"desc_set\":128,\"field_desc\":4,\"enable\":true,\"manual\":"
                  "true,\"frequency\":50.0}}]}\n");
 }
 
 TEST(Vectors, lowpass_filter_read_comp_rate) {
-    check_vector("75650c05055402820ed638", MIP_DEVICE_ANY,
+    check_vector("75650c05055402820ed638", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
                  "\"values\":{\"function\":2,\"desc_set\":130,\"field_desc\":14}}]}\n");
 }
 
 TEST(Vectors, lowpass_filter_reply_auto) {
-    check_vector("75650c0e04f154000ad4820e010041c80000b592", MIP_DEVICE_ANY,
+    check_vector("75650c0e04f154000ad4820e010041c80000b592", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":\"lowpass_filter_"
                  "response\",\"values\":{\"desc_set\":130,\"field_desc\":14,\"enable\":true,\"manual\":false,"
@@ -552,64 +552,64 @@ TEST(Vectors, lowpass_filter_reply_auto) {
 }
 
 TEST(Vectors, lowpass_filter_default_all) {
-    check_vector("75650c050554050000492f", MIP_DEVICE_ANY,
+    check_vector("75650c050554050000492f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":84,\"name\":\"lowpass_filter\","
                  "\"values\":{\"function\":5,\"desc_set\":0,\"field_desc\":0}}]}\n");
 }
 
 TEST(Vectors, capture_gyro_bias_reply_table_published) {
-    check_vector("75650c0404f139000e9b000000000000000000000000cf19", MIP_DEVICE_ANY,
+    check_vector("75650c0404f139000e9b000000000000000000000000cf19", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0404f139000e9b000000000000000000000000cf19\"}\n");
 }
 
 TEST(Vectors, mag_soft_iron_copy_paste_published) {
     check_vector("75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":"
                  "\"75650c27273b013f8000000000000000000000000000003f80000000000000000000003f800000ad59\"}\n");
 }
 
 TEST(Vectors, mag_soft_iron_ack_table_published) {
-    check_vector("75650c1204f13b001a20", MIP_DEVICE_ANY,
+    check_vector("75650c1204f13b001a20", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c1204f13b001a20\"}\n");
 }
 
 TEST(Vectors, coning_sculling_enable_ack_table_published) {
-    check_vector("75650c0404f138001d26", MIP_DEVICE_ANY,
+    check_vector("75650c0404f138001d26", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0404f138001d26\"}\n");
 }
 
 TEST(Vectors, advanced_lowpass_filter_table_published) {
-    check_vector("75650c090950010401000000004c6d", MIP_DEVICE_ANY,
+    check_vector("75650c090950010401000000004c6d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c090950010401000000004c6d\"}\n");
 }
 
 TEST(Vectors, complementary_filter_copy_paste_published) {
-    check_vector("75650c09095101040100000000", MIP_DEVICE_ANY,
+    check_vector("75650c09095101040100000000", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c09095101040100000000\"}\n");
 }
 
 TEST(Vectors, setup_imu_message_format_write) {
     check_vector(
-        "75650c0d0d08010312000a04000a05000a45f2", MIP_DEVICE_ANY,
+        "75650c0d0d08010312000a04000a05000a45f2", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\",\"values\":{"
         "\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,\"decimation\":10},{"
         "\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}\n");
 }
 
 TEST(Vectors, setup_imu_message_format_ack) {
-    check_vector("75650c0404f10800e7ba", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10800e7ba", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":8,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_write_ack_table_published) {
-    check_vector("75650c0404f10100e7ba", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10100e7ba", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0404f10100e7ba\"}\n");
 }
 
 TEST(Vectors, setup_filter_message_format_write) {
-    check_vector("75650c13130a010511000a10000a01000a02000a03000a7562", MIP_DEVICE_ANY,
+    check_vector("75650c13130a010511000a10000a01000a02000a03000a7562", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":5,\"descriptors\":[{\"descriptor\":17,"
                  "\"decimation\":10},{\"descriptor\":16,\"decimation\":10},{\"descriptor\":1,\"decimation\":"
@@ -617,32 +617,32 @@ TEST(Vectors, setup_filter_message_format_write) {
 }
 
 TEST(Vectors, filter_message_format_ack) {
-    check_vector("75650c0404f10a00e9be", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10a00e9be", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":10,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, save_message_formats_command) {
-    check_vector("75650c0804080300040a03000e31", MIP_DEVICE_ANY,
+    check_vector("75650c0804080300040a03000e31", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":3,\"num_descriptors\":0}},{\"descriptor\":10,\"name\":\"filter_"
                  "message_format\",\"values\":{\"function\":3,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, message_formats_two_acks) {
-    check_vector("75650c0804f1080004f10a00ea71", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1080004f10a00ea71", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
                  "\"values\":{\"command_descriptor\":10,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, save_message_formats_reply_table_published) {
-    check_vector("75650c0804f1080004f10a00e9be", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1080004f10a00e9be", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0804f1080004f10a00e9be\"}\n");
 }
 
 TEST(Vectors, setup_enable_streams_command) {
-    check_vector("75650c0a0511010101051101030124cc", MIP_DEVICE_GX5_45,
+    check_vector("75650c0a0511010101051101030124cc", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":1}},{"
                  "\"descriptor\":17,\"name\":\"data_stream_control\",\"device\":\"gx5_45\",\"values\":{"
@@ -650,7 +650,7 @@ TEST(Vectors, setup_enable_streams_command) {
 }
 
 TEST(Vectors, setup_enable_streams_reply) {
-    check_vector("75650c0804f1110004f11100fab5", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1110004f11100fab5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
                  "\"values\":{\"command_descriptor\":17,\"ack_code\":0}}]}\n");
@@ -658,30 +658,30 @@ TEST(Vectors, setup_enable_streams_reply) {
 
 TEST(Vectors, setup_poll_cf_euler) {
     check_vector(
-        "75650c07070100010c000002fc", MIP_DEVICE_ANY,
+        "75650c07070100010c000002fc", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{"
         "\"option\":0,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":12,\"reserved\":0}]}}]}\n");
 }
 
 TEST(Vectors, setup_poll_cf_euler_table_published) {
-    check_vector("75650c070701000006000002fc", MIP_DEVICE_ANY,
+    check_vector("75650c070701000006000002fc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c070701000006000002fc\"}\n");
 }
 
 TEST(Vectors, poll_imu_ack) {
-    check_vector("75650c0404f10100e0ac", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10100e0ac", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, poll_imu_stored_format) {
-    check_vector("75650c0404010000efda", MIP_DEVICE_ANY,
+    check_vector("75650c0404010000efda", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
 }
 
 TEST(Vectors, poll_imu_specified_format) {
-    check_vector("75650c0a0a0100020400000500000627", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a0100020400000500000627", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
                  "\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}\n");
@@ -689,103 +689,103 @@ TEST(Vectors, poll_imu_specified_format) {
 
 TEST(Vectors, poll_imu_suppress_ack) {
     check_vector(
-        "75650c0707010101040000fbe9", MIP_DEVICE_ANY,
+        "75650c0707010101040000fbe9", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":1,\"name\":\"poll_imu_data\",\"values\":{"
         "\"option\":1,\"num_descriptors\":1,\"descriptors\":[{\"descriptor\":4,\"reserved\":0}]}}]}\n");
 }
 
 TEST(Vectors, poll_gnss_stored_format) {
-    check_vector("75650c0404020000f0dd", MIP_DEVICE_ANY,
+    check_vector("75650c0404020000f0dd", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
 }
 
 TEST(Vectors, poll_gnss_specified_format) {
-    check_vector("75650c0a0a020002030000050000062a", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a020002030000050000062a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":2,\"name\":\"poll_gnss_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
                  "\"reserved\":0},{\"descriptor\":5,\"reserved\":0}]}}]}\n");
 }
 
 TEST(Vectors, poll_gnss_ack) {
-    check_vector("75650c0404f10200e1ae", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10200e1ae", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":2,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, poll_filter_stored_format) {
-    check_vector("75650c0404030000f1e0", MIP_DEVICE_ANY,
+    check_vector("75650c0404030000f1e0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":0,\"descriptors\":[]}}]}\n");
 }
 
 TEST(Vectors, poll_filter_specified_format) {
-    check_vector("75650c0a0a030002010000020000021e", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a030002010000020000021e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":3,\"name\":\"poll_filter_data\","
                  "\"values\":{\"option\":0,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,"
                  "\"reserved\":0},{\"descriptor\":2,\"reserved\":0}]}}]}\n");
 }
 
 TEST(Vectors, poll_filter_ack) {
-    check_vector("75650c0404f10300e2b0", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10300e2b0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":3,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, get_imu_base_rate_command) {
-    check_vector("75650c020206f0f7", MIP_DEVICE_ANY,
+    check_vector("75650c020206f0f7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":6,\"name\":\"get_imu_base_rate\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, get_imu_base_rate_reply) {
-    check_vector("75650c0804f1060004830064d46b", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1060004830064d46b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":6,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"imu_base_rate\","
                  "\"values\":{\"rate\":100}}]}\n");
 }
 
 TEST(Vectors, get_gnss_base_rate_command) {
-    check_vector("75650c020207f1f8", MIP_DEVICE_ANY,
+    check_vector("75650c020207f1f8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":7,\"name\":\"get_gnss_base_rate\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, get_gnss_base_rate_reply) {
-    check_vector("75650c0804f10700048400047614", MIP_DEVICE_ANY,
+    check_vector("75650c0804f10700048400047614", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":7,\"ack_code\":0}},{\"descriptor\":132,\"name\":\"gnss_base_rate\","
                  "\"values\":{\"rate\":4}}]}\n");
 }
 
 TEST(Vectors, get_filter_base_rate_command) {
-    check_vector("75650c02020bf5fc", MIP_DEVICE_ANY,
+    check_vector("75650c02020bf5fc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":11,\"name\":\"get_filter_base_rate\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, get_filter_base_rate_reply) {
-    check_vector("75650c0804f10b00048a0064e09e", MIP_DEVICE_ANY,
+    check_vector("75650c0804f10b00048a0064e09e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":11,\"ack_code\":0}},{\"descriptor\":138,\"name\":\"filter_base_"
                  "rate\",\"values\":{\"rate\":100}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_write) {
-    check_vector("75650c0a0a08010204000a05000a22a0", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a08010204000a05000a22a0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
                  "\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_read) {
-    check_vector("75650c0404080200f8f3", MIP_DEVICE_ANY,
+    check_vector("75650c0404080200f8f3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_read_reply) {
-    check_vector("75650c0d04f1080009800204000a05000a980f", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f1080009800204000a05000a980f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":8,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"imu_message_"
                  "format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":4,"
@@ -793,42 +793,42 @@ TEST(Vectors, imu_message_format_read_reply) {
 }
 
 TEST(Vectors, imu_message_format_read_reply_table_published) {
-    check_vector("75650c0d04f1080009800203000a04000a980f", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f1080009800203000a04000a980f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0d04f1080009800203000a04000a980f\"}\n");
 }
 
 TEST(Vectors, imu_message_format_load) {
-    check_vector("75650c0404080400faf7", MIP_DEVICE_ANY,
+    check_vector("75650c0404080400faf7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":4,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_write) {
-    check_vector("75650c0a0a0901020300040500041685", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a0901020300040500041685", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
                  "\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_ack) {
-    check_vector("75650c0404f10900e8bc", MIP_DEVICE_ANY,
+    check_vector("75650c0404f10900e8bc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":9,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_read) {
-    check_vector("75650c0404090200f9f6", MIP_DEVICE_ANY,
+    check_vector("75650c0404090200f9f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
                  "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_read_table_published) {
-    check_vector("75650c0404090200f9f3", MIP_DEVICE_ANY,
+    check_vector("75650c0404090200f9f3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c0404090200f9f3\"}\n");
 }
 
 TEST(Vectors, gnss_message_format_read_reply) {
-    check_vector("75650c0d04f109000981020300040500048dfe", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f109000981020300040500048dfe", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":9,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"gnss_message_"
                  "format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
@@ -836,33 +836,33 @@ TEST(Vectors, gnss_message_format_read_reply) {
 }
 
 TEST(Vectors, filter_message_format_write) {
-    check_vector("75650c0a0a0a01020100010200010c6a", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a0a01020100010200010c6a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,"
                  "\"decimation\":1},{\"descriptor\":2,\"decimation\":1}]}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_write_copy_paste_published) {
-    check_vector("75650c0a0a0901020300040500041685", MIP_DEVICE_ANY,
+    check_vector("75650c0a0a0901020300040500041685", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":3,"
                  "\"decimation\":4},{\"descriptor\":5,\"decimation\":4}]}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read) {
-    check_vector("75650c04040a0200faf9", MIP_DEVICE_ANY,
+    check_vector("75650c04040a0200faf9", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
                  "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read_copy_paste_published) {
-    check_vector("75650c0404090200f9f6", MIP_DEVICE_ANY,
+    check_vector("75650c0404090200f9f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
                  "\"values\":{\"function\":2,\"num_descriptors\":0}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read_reply) {
-    check_vector("75650c0d04f10a0009820201000102000184ed", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f10a0009820201000102000184ed", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":10,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"filter_message_"
                  "format_response\",\"values\":{\"num_descriptors\":2,\"descriptors\":[{\"descriptor\":1,"
@@ -871,7 +871,7 @@ TEST(Vectors, filter_message_format_read_reply) {
 
 TEST(Vectors, two_message_formats_in_one_packet) {
     check_vector("75650c200d08010312000a04000a05000a130a010511000a10000a01000a02000a03000ad43d",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":1,\"num_descriptors\":3,\"descriptors\":[{\"descriptor\":18,"
                  "\"decimation\":10},{\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":"
@@ -882,39 +882,39 @@ TEST(Vectors, two_message_formats_in_one_packet) {
 }
 
 TEST(Vectors, data_stream_imu_on) {
-    check_vector("75650c050511010101041a", MIP_DEVICE_GX5_45,
+    check_vector("75650c050511010101041a", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":1}}]}\n");
 }
 
 TEST(Vectors, data_stream_imu_off) {
-    check_vector("75650c0505110101000319", MIP_DEVICE_GX5_45,
+    check_vector("75650c0505110101000319", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"device_selector\":1,\"enable\":0}}]}\n");
 }
 
 TEST(Vectors, data_stream_ack) {
-    check_vector("75650c0404f11100f0cc", MIP_DEVICE_ANY,
+    check_vector("75650c0404f11100f0cc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":17,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, data_stream_gx5_read_filter) {
-    check_vector("75650c0505110203000620", MIP_DEVICE_GX5_45,
+    check_vector("75650c0505110203000620", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":3,\"enable\":0}}]}\n");
 }
 
 TEST(Vectors, data_stream_gx5_read_reply) {
     check_vector(
-        "75650c0804f11100048503018156", MIP_DEVICE_GX5_45,
+        "75650c0804f11100048503018156", MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_"
         "response\",\"device\":\"gx5_45\",\"values\":{\"device_selector\":3,\"enabled\":1}}]}\n");
 }
 
 TEST(Vectors, gnss_constellation_settings_write) {
-    check_vector("75650c121221010020020001081000000601080e0000845a", MIP_DEVICE_ANY,
+    check_vector("75650c121221010020020001081000000601080e0000845a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
                  "settings\",\"values\":{\"function\":1,\"max_channels\":32,\"config_count\":2,\"settings\":["
                  "{\"constellation_id\":0,\"enable\":1,\"reserved_channels\":8,\"max_channels\":16,\"option_"
@@ -923,20 +923,20 @@ TEST(Vectors, gnss_constellation_settings_write) {
 }
 
 TEST(Vectors, gnss_constellation_settings_ack) {
-    check_vector("75650c0404f1210000ec", MIP_DEVICE_ANY,
+    check_vector("75650c0404f1210000ec", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":33,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_constellation_settings_read) {
-    check_vector("75650c06062102000000157a", MIP_DEVICE_ANY,
+    check_vector("75650c06062102000000157a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
                  "settings\",\"values\":{\"function\":2,\"max_channels\":0,\"config_count\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_constellation_settings_read_reply) {
     check_vector(
-        "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c", MIP_DEVICE_ANY,
+        "75650c2304f121001fa000200020040001081000000601080e0000010101030000050100030001683c", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":33,\"ack_code\":0}},{\"descriptor\":160,\"name\":\"gnss_constellation_"
         "settings_response\",\"values\":{\"max_channels_available\":32,\"max_channels\":32,\"config_count\":"
@@ -948,20 +948,20 @@ TEST(Vectors, gnss_constellation_settings_read_reply) {
 }
 
 TEST(Vectors, gnss_sbas_settings_write) {
-    check_vector("75650c0b0b22010100030200780079165c", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b22010100030200780079165c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\","
                  "\"values\":{\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_included_prns\":2,"
                  "\"included_prns\":[120,121]}}]}\n");
 }
 
 TEST(Vectors, gnss_sbas_settings_ack) {
-    check_vector("75650c0404f1220001ee", MIP_DEVICE_ANY,
+    check_vector("75650c0404f1220001ee", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":34,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_sbas_settings_read_reply_three_prns) {
-    check_vector("75650c1004f122000ca10100070300780079007a30d5", MIP_DEVICE_ANY,
+    check_vector("75650c1004f122000ca10100070300780079007a30d5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":\"gnss_sbas_"
                  "settings_response\",\"values\":{\"enable_sbas\":1,\"sbas_options\":7,\"num_included_prns\":"
@@ -969,20 +969,20 @@ TEST(Vectors, gnss_sbas_settings_read_reply_three_prns) {
 }
 
 TEST(Vectors, gnss_sbas_settings_read_short) {
-    check_vector("75650c030322021028", MIP_DEVICE_ANY,
+    check_vector("75650c030322021028", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, gnss_sbas_settings_write_include_all) {
     check_vector(
-        "75650c07072201010003001ba9", MIP_DEVICE_ANY,
+        "75650c07072201010003001ba9", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":34,\"name\":\"gnss_sbas_settings\",\"values\":{"
         "\"function\":1,\"enable_sbas\":1,\"sbas_options\":3,\"num_included_prns\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_sbas_settings_read_reply_disabled) {
-    check_vector("75650c0a04f1220006a100000000ae7f", MIP_DEVICE_ANY,
+    check_vector("75650c0a04f1220006a100000000ae7f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":161,\"name\":\"gnss_sbas_"
                  "settings_response\",\"values\":{\"enable_sbas\":0,\"sbas_options\":0,\"num_included_prns\":"
@@ -990,25 +990,25 @@ TEST(Vectors, gnss_sbas_settings_read_reply_disabled) {
 }
 
 TEST(Vectors, gnss_assisted_fix_enable) {
-    check_vector("75650c0505230101ff1460", MIP_DEVICE_ANY,
+    check_vector("75650c0505230101ff1460", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
                  "control\",\"values\":{\"function\":1,\"option\":1,\"flags\":255}}]}\n");
 }
 
 TEST(Vectors, gnss_assisted_fix_ack) {
-    check_vector("75650c0404f1230002f0", MIP_DEVICE_ANY,
+    check_vector("75650c0404f1230002f0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":35,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_assisted_fix_read) {
-    check_vector("75650c0505230200ff1461", MIP_DEVICE_ANY,
+    check_vector("75650c0505230200ff1461", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
                  "control\",\"values\":{\"function\":2,\"option\":0,\"flags\":255}}]}\n");
 }
 
 TEST(Vectors, gnss_assisted_fix_read_reply) {
-    check_vector("75650c0804f1230004a201ffac13", MIP_DEVICE_ANY,
+    check_vector("75650c0804f1230004a201ffac13", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":35,\"ack_code\":0}},{\"descriptor\":162,\"name\":\"gnss_assisted_"
                  "fix_control_response\",\"values\":{\"option\":1,\"flags\":255}}]}\n");
@@ -1016,39 +1016,39 @@ TEST(Vectors, gnss_assisted_fix_read_reply) {
 
 TEST(Vectors, gnss_assist_time_update_command) {
     check_vector(
-        "75650c1111240140e722c6b851eb85078140a000001deb", MIP_DEVICE_ANY,
+        "75650c1111240140e722c6b851eb85078140a000001deb", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
         "\"values\":{\"function\":1,\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}\n");
 }
 
 TEST(Vectors, gnss_assist_time_update_ack) {
-    check_vector("75650c0404f1240003f2", MIP_DEVICE_ANY,
+    check_vector("75650c0404f1240003f2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":36,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_assist_time_update_read) {
-    check_vector("75650c1111240200000000000000000000000000002e12", MIP_DEVICE_ANY,
+    check_vector("75650c1111240200000000000000000000000000002e12", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":2,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}\n");
 }
 
 TEST(Vectors, gnss_assist_time_update_read_reply) {
     check_vector(
-        "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7", MIP_DEVICE_ANY,
+        "75650c1404f1240010a340e722c6b851eb85078140a00000b6e7", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":36,\"ack_code\":0}},{\"descriptor\":163,\"name\":\"gnss_assist_time_update_"
         "response\",\"values\":{\"tow\":47382.21,\"week_number\":1921,\"accuracy\":5.0}}]}\n");
 }
 
 TEST(Vectors, device_status_basic_command) {
-    check_vector("75650c050564186b01d87f", MIP_DEVICE_ANY,
+    check_vector("75650c050564186b01d87f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\","
                  "\"values\":{\"model_number\":6251,\"status_selector\":1}}]}\n");
 }
 
 TEST(Vectors, device_status_basic_reply) {
-    check_vector("75650c1304f164000f90186b010000000000010000ea60c0cc", MIP_DEVICE_ANY,
+    check_vector("75650c1304f164000f90186b010000000000010000ea60c0cc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"device_status_"
                  "response\",\"values\":{\"model_number\":6251,\"status_selector\":1,\"status\":{\"status_"
@@ -1056,7 +1056,7 @@ TEST(Vectors, device_status_basic_reply) {
 }
 
 TEST(Vectors, device_status_diagnostic_command) {
-    check_vector("75650c050564186b02d980", MIP_DEVICE_ANY,
+    check_vector("75650c050564186b02d980", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":100,\"name\":\"device_status\","
                  "\"values\":{\"model_number\":6251,\"status_selector\":2}}]}\n");
 }
@@ -1065,7 +1065,7 @@ TEST(Vectors, device_status_diagnostic_reply) {
     check_vector(
         "75650c4f04f164004b90186b020000000000010000ea60010000003c0000e86c0101010000000000000000000000000001e2"
         "40000003150000000000000000000075300000ea5e00000002000000f00000e9663669",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"device_status_response\","
         "\"values\":{\"model_number\":6251,\"status_selector\":2,\"status\":{\"status_flags\":0,\"system_"
@@ -1078,75 +1078,75 @@ TEST(Vectors, device_status_diagnostic_reply) {
 }
 
 TEST(Vectors, raw_rtcm_message_command) {
-    check_vector("75650c080820664100a0fcc019f4", MIP_DEVICE_ANY,
+    check_vector("75650c080820664100a0fcc019f4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":32,\"name\":\"raw_rtcm_message\","
                  "\"values\":{\"data\":[102,65,0,160,252,192]}}]}\n");
 }
 
 TEST(Vectors, raw_rtcm_message_ack) {
-    check_vector("75650c0404f12000ffea", MIP_DEVICE_ANY,
+    check_vector("75650c0404f12000ffea", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":32,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, get_base_rate_sensor_command) {
-    check_vector("75650c03030e807a7e", MIP_DEVICE_ANY,
+    check_vector("75650c03030e807a7e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":14,\"name\":\"get_base_rate\","
                  "\"values\":{\"desc_set\":128}}]}\n");
 }
 
 TEST(Vectors, get_base_rate_sensor_reply) {
-    check_vector("75650c0904f10e00058e8003e8f058", MIP_DEVICE_ANY,
+    check_vector("75650c0904f10e00058e8003e8f058", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":14,\"ack_code\":0}},{\"descriptor\":142,\"name\":\"base_rate\","
                  "\"values\":{\"desc_set\":128,\"rate\":1000}}]}\n");
 }
 
 TEST(Vectors, pps_source_write_generated) {
-    check_vector("75650c04042801041b55", MIP_DEVICE_ANY,
+    check_vector("75650c04042801041b55", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":1,\"source\":4}}]}\n");
 }
 
 TEST(Vectors, pps_source_ack) {
-    check_vector("75650c0404f1280007fa", MIP_DEVICE_ANY,
+    check_vector("75650c0404f1280007fa", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, pps_source_save) {
-    check_vector("75650c030328031735", MIP_DEVICE_ANY,
+    check_vector("75650c030328031735", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, pps_source_write_disabled) {
-    check_vector("75650c04042801001751", MIP_DEVICE_ANY,
+    check_vector("75650c04042801001751", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":1,\"source\":0}}]}\n");
 }
 
 TEST(Vectors, pps_source_load) {
-    check_vector("75650c030328041836", MIP_DEVICE_ANY,
+    check_vector("75650c030328041836", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, pps_source_load_copy_paste_published) {
-    check_vector("75650c0404f128040bfe", MIP_DEVICE_ANY,
+    check_vector("75650c0404f128040bfe", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":4}}]}\n");
 }
 
 TEST(Vectors, pps_source_default_save_read) {
-    check_vector("75650c090328050328030328027a4a", MIP_DEVICE_ANY,
+    check_vector("75650c090328050328030328027a4a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":5}},{\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":3}},{"
                  "\"descriptor\":40,\"name\":\"pps_source\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, pps_source_default_save_read_reply) {
-    check_vector("75650c0f04f1280004f1280004f1280003a801f8d9", MIP_DEVICE_ANY,
+    check_vector("75650c0f04f1280004f1280004f1280003a801f8d9", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
                  "\"values\":{\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_"
@@ -1155,33 +1155,33 @@ TEST(Vectors, pps_source_default_save_read_reply) {
 }
 
 TEST(Vectors, pps_source_write_gpio) {
-    check_vector("75650c04042801031a54", MIP_DEVICE_ANY,
+    check_vector("75650c04042801031a54", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":40,\"name\":\"pps_source\",\"values\":"
                  "{\"function\":1,\"source\":3}}]}\n");
 }
 
 TEST(Vectors, pps_source_read_reply_receiver_2) {
-    check_vector("75650c0704f1280003a802b782", MIP_DEVICE_ANY,
+    check_vector("75650c0704f1280003a802b782", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":168,\"name\":\"pps_source_"
                  "response\",\"values\":{\"source\":2}}]}\n");
 }
 
 TEST(Vectors, factory_streaming_overwrite) {
-    check_vector("75650c0404100000fe07", MIP_DEVICE_ANY,
+    check_vector("75650c0404100000fe07", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\","
                  "\"values\":{\"action\":0,\"reserved\":0}}]}\n");
 }
 
 TEST(Vectors, poll_nmea_data_one_sentence) {
-    check_vector("75650c0909040001010191000595c3", MIP_DEVICE_ANY,
+    check_vector("75650c0909040001010191000595c3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":4,\"name\":\"poll_nmea_data\","
                  "\"values\":{\"suppress_ack\":false,\"count\":1,\"format_entries\":[{\"message_id\":1,"
                  "\"talker_id\":1,\"source_desc_set\":145,\"decimation\":5}]}}]}\n");
 }
 
 TEST(Vectors, nmea_message_format_write) {
-    check_vector("75650c0e0e0c0102010182000a04029100013732", MIP_DEVICE_ANY,
+    check_vector("75650c0e0e0c0102010182000a04029100013732", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_format\","
                  "\"values\":{\"function\":1,\"count\":2,\"format_entries\":[{\"message_id\":1,\"talker_id\":"
                  "1,\"source_desc_set\":130,\"decimation\":10},{\"message_id\":4,\"talker_id\":2,\"source_"
@@ -1189,13 +1189,13 @@ TEST(Vectors, nmea_message_format_write) {
 }
 
 TEST(Vectors, nmea_message_format_read) {
-    check_vector("75650c03030c02fafc", MIP_DEVICE_ANY,
+    check_vector("75650c03030c02fafc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":12,\"name\":\"nmea_message_format\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, nmea_message_format_read_reply) {
-    check_vector("75650c1104f10c000d8c02010182000a0402910001b919", MIP_DEVICE_ANY,
+    check_vector("75650c1104f10c000d8c02010182000a0402910001b919", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":12,\"ack_code\":0}},{\"descriptor\":140,\"name\":\"nmea_message_"
                  "format_response\",\"values\":{\"count\":2,\"format_entries\":[{\"message_id\":1,\"talker_"
@@ -1204,26 +1204,26 @@ TEST(Vectors, nmea_message_format_read_reply) {
 }
 
 TEST(Vectors, poll_data_sensor_suppress_ack) {
-    check_vector("75650c07070d80010204058db3", MIP_DEVICE_ANY,
+    check_vector("75650c07070d80010204058db3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":13,\"name\":\"poll_data\",\"values\":{"
                  "\"desc_set\":128,\"suppress_ack\":true,\"num_descriptors\":2,\"descriptors\":[4,5]}}]}\n");
 }
 
 TEST(Vectors, message_format_write_sensor) {
-    check_vector("75650c0b0b0f01800204000a05000aab00", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b0f01800204000a05000aab00", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
                  "\"values\":{\"function\":1,\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{"
                  "\"descriptor\":4,\"decimation\":10},{\"descriptor\":5,\"decimation\":10}]}}]}\n");
 }
 
 TEST(Vectors, message_format_read_sensor) {
-    check_vector("75650c04040f02807f88", MIP_DEVICE_ANY,
+    check_vector("75650c04040f02807f88", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
                  "\"values\":{\"function\":2,\"desc_set\":128}}]}\n");
 }
 
 TEST(Vectors, message_format_read_sensor_reply) {
-    check_vector("75650c0e04f10f000a8f800204000a05000a307c", MIP_DEVICE_ANY,
+    check_vector("75650c0e04f10f000a8f800204000a05000a307c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":15,\"ack_code\":0}},{\"descriptor\":143,\"name\":\"message_format_"
                  "response\",\"values\":{\"desc_set\":128,\"num_descriptors\":2,\"descriptors\":[{"
@@ -1231,52 +1231,52 @@ TEST(Vectors, message_format_read_sensor_reply) {
 }
 
 TEST(Vectors, message_format_save_all) {
-    check_vector("75650c04040f0300000a", MIP_DEVICE_ANY,
+    check_vector("75650c04040f0300000a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":15,\"name\":\"message_format\","
                  "\"values\":{\"function\":3,\"desc_set\":0}}]}\n");
 }
 
 TEST(Vectors, factory_streaming_merge) {
-    check_vector("75650c0404100100ff09", MIP_DEVICE_ANY,
+    check_vector("75650c0404100100ff09", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":16,\"name\":\"factory_streaming\","
                  "\"values\":{\"action\":1,\"reserved\":0}}]}\n");
 }
 
 TEST(Vectors, data_stream_cv7_enable_filter) {
-    check_vector("75650c050511018201851c", MIP_DEVICE_CV7_INS,
+    check_vector("75650c050511018201851c", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"desc_set\":130,\"enable\":true}}]}\n");
 }
 
 TEST(Vectors, data_stream_cv7_read_filter) {
-    check_vector("75650c04041102828390", MIP_DEVICE_CV7_INS,
+    check_vector("75650c04041102828390", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":2,\"desc_set\":130}}]}\n");
 }
 
 TEST(Vectors, data_stream_cv7_read_filter_reply) {
     check_vector(
-        "75650c0804f11100048582010054", MIP_DEVICE_CV7_INS,
+        "75650c0804f11100048582010054", MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"data_stream_control_"
         "response\",\"device\":\"cv7_ins\",\"values\":{\"desc_set\":130,\"enabled\":true}}]}\n");
 }
 
 TEST(Vectors, data_stream_cv7_save_all) {
-    check_vector("75650c04041103000210", MIP_DEVICE_CV7_INS,
+    check_vector("75650c04041103000210", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":3,\"desc_set\":0}}]}\n");
 }
 
 TEST(Vectors, get_supported_events_triggers) {
-    check_vector("75650c03032a011737", MIP_DEVICE_ANY,
+    check_vector("75650c03032a011737", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_events\","
                  "\"values\":{\"query\":1}}]}\n");
 }
 
 TEST(Vectors, get_supported_events_triggers_reply) {
     check_vector(
-        "75650c0f04f12a000bb4010c03010402080308fd58", MIP_DEVICE_ANY,
+        "75650c0f04f12a000bb4010c03010402080308fd58", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"supported_events\","
         "\"values\":{\"query\":1,\"info\":{\"max_instances\":12,\"num_entries\":3,\"entries\":[{\"type\":1,"
@@ -1284,13 +1284,13 @@ TEST(Vectors, get_supported_events_triggers_reply) {
 }
 
 TEST(Vectors, get_supported_events_actions) {
-    check_vector("75650c03032a021838", MIP_DEVICE_ANY,
+    check_vector("75650c03032a021838", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":42,\"name\":\"get_supported_events\","
                  "\"values\":{\"query\":2}}]}\n");
 }
 
 TEST(Vectors, get_supported_events_actions_reply) {
-    check_vector("75650c0d04f12a0009b4020c0201060208f040", MIP_DEVICE_ANY,
+    check_vector("75650c0d04f12a0009b4020c0201060208f040", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":42,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"supported_"
                  "events\",\"values\":{\"query\":2,\"info\":{\"max_instances\":12,\"num_entries\":2,"
@@ -1298,61 +1298,61 @@ TEST(Vectors, get_supported_events_actions_reply) {
 }
 
 TEST(Vectors, imu_message_format_read_short) {
-    check_vector("75650c03030802f6f4", MIP_DEVICE_ANY,
+    check_vector("75650c03030802f6f4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, imu_message_format_save_short) {
-    check_vector("75650c03030803f7f5", MIP_DEVICE_ANY,
+    check_vector("75650c03030803f7f5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":8,\"name\":\"imu_message_format\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, gnss_message_format_read_short) {
-    check_vector("75650c03030902f7f6", MIP_DEVICE_ANY,
+    check_vector("75650c03030902f7f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":9,\"name\":\"gnss_message_format\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_read_short) {
-    check_vector("75650c03030a02f8f8", MIP_DEVICE_ANY,
+    check_vector("75650c03030a02f8f8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, filter_message_format_default_short) {
-    check_vector("75650c03030a05fbfb", MIP_DEVICE_ANY,
+    check_vector("75650c03030a05fbfb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":10,\"name\":\"filter_message_format\","
                  "\"values\":{\"function\":5}}]}\n");
 }
 
 TEST(Vectors, data_stream_control_read_short) {
-    check_vector("75650c0404110201020f", MIP_DEVICE_GX5_45,
+    check_vector("75650c0404110201020f", MIPC_DEVICE_GX5_45,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":17,\"name\":\"data_stream_control\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"device_selector\":1}}]}\n");
 }
 
 TEST(Vectors, gnss_constellation_settings_read_short) {
-    check_vector("75650c030321020f26", MIP_DEVICE_ANY,
+    check_vector("75650c030321020f26", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":33,\"name\":\"gnss_constellation_"
                  "settings\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, gnss_assisted_fix_control_read_short) {
-    check_vector("75650c03032302112a", MIP_DEVICE_ANY,
+    check_vector("75650c03032302112a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":35,\"name\":\"gnss_assisted_fix_"
                  "control\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, gnss_assist_time_update_read_short) {
-    check_vector("75650c03032402122c", MIP_DEVICE_ANY,
+    check_vector("75650c03032402122c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, frame_config_write_antenna_offset) {
-    check_vector("7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1", MIP_DEVICE_ANY,
+    check_vector("7565131e1e0101010101bea3d70a3de147aebf23d70a00000000000000000000000046a1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","
                  "\"values\":{\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":true,"
                  "\"translation\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853],\"rotation\":"
@@ -1360,7 +1360,7 @@ TEST(Vectors, frame_config_write_antenna_offset) {
 }
 
 TEST(Vectors, frame_config_write_notes_example) {
-    check_vector("7565131e1e0101010100000000003f80000000000000000000000000000000000000ecef", MIP_DEVICE_ANY,
+    check_vector("7565131e1e0101010100000000003f80000000000000000000000000000000000000ecef", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","
                  "\"values\":{\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":false,"
                  "\"translation\":[0.0,1.0,0.0],\"rotation\":{\"euler\":[0.0,0.0,0.0]}}}]}\n");
@@ -1368,7 +1368,7 @@ TEST(Vectors, frame_config_write_notes_example) {
 
 TEST(Vectors, frame_config_write_pitch_down) {
     check_vector(
-        "7565131e1e01010101003f333333000000000000000000000000bfc8f5c300000000448e", MIP_DEVICE_ANY,
+        "7565131e1e01010101003f333333000000000000000000000000bfc8f5c300000000448e", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{"
         "\"function\":1,\"frame_id\":1,\"format\":1,\"tracking_enabled\":false,\"translation\":[0."
         "699999988079071,0.0,0.0],\"rotation\":{\"euler\":[0.0,-1.5700000524520874,0.0]}}}]}\n");
@@ -1376,21 +1376,21 @@ TEST(Vectors, frame_config_write_pitch_down) {
 
 TEST(Vectors, frame_config_write_quaternion) {
     check_vector(
-        "756513222201010202010000000000000000becccccd3f8000000000000000000000000000001a06", MIP_DEVICE_ANY,
+        "756513222201010202010000000000000000becccccd3f8000000000000000000000000000001a06", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\",\"values\":{"
         "\"function\":1,\"frame_id\":2,\"format\":2,\"tracking_enabled\":true,\"translation\":[0.0,0.0,-0."
         "4000000059604645],\"rotation\":{\"quaternion\":[1.0,0.0,0.0,0.0]}}}]}\n");
 }
 
 TEST(Vectors, frame_config_read_euler) {
-    check_vector("756513050501020101fc0e", MIP_DEVICE_ANY,
+    check_vector("756513050501020101fc0e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","
                  "\"values\":{\"function\":2,\"frame_id\":1,\"format\":1}}]}\n");
 }
 
 TEST(Vectors, frame_config_read_euler_reply) {
     check_vector("7565132104f101001d81010101bea3d70a3de147aebf23d70a000000000000000000000000bd93",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"frame_config_"
                  "response\",\"values\":{\"frame_id\":1,\"format\":1,\"tracking_enabled\":true,"
@@ -1399,14 +1399,14 @@ TEST(Vectors, frame_config_read_euler_reply) {
 }
 
 TEST(Vectors, frame_config_read_quaternion) {
-    check_vector("756513050501020202fe11", MIP_DEVICE_ANY,
+    check_vector("756513050501020202fe11", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","
                  "\"values\":{\"function\":2,\"frame_id\":2,\"format\":2}}]}\n");
 }
 
 TEST(Vectors, frame_config_read_quaternion_reply) {
     check_vector("7565132504f1010021810202010000000000000000becccccd3f3504f300000000000000003f3504f3a89c",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"frame_config_"
                  "response\",\"values\":{\"frame_id\":2,\"format\":2,\"tracking_enabled\":true,"
@@ -1415,38 +1415,38 @@ TEST(Vectors, frame_config_read_quaternion_reply) {
 }
 
 TEST(Vectors, frame_config_save) {
-    check_vector("7565130404010301fa0b", MIP_DEVICE_ANY,
+    check_vector("7565130404010301fa0b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":1,\"name\":\"frame_config\","
                  "\"values\":{\"function\":3,\"frame_id\":1}}]}\n");
 }
 
 TEST(Vectors, echo_control_write_suppress_ack) {
-    check_vector("75651304041f01001560", MIP_DEVICE_ANY,
+    check_vector("75651304041f01001560", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\","
                  "\"values\":{\"function\":1,\"mode\":0}}]}\n");
 }
 
 TEST(Vectors, echo_control_write_response) {
-    check_vector("75651304041f01021762", MIP_DEVICE_ANY,
+    check_vector("75651304041f01021762", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\","
                  "\"values\":{\"function\":1,\"mode\":2}}]}\n");
 }
 
 TEST(Vectors, echo_control_read) {
-    check_vector("75651303031f021445", MIP_DEVICE_ANY,
+    check_vector("75651303031f021445", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, echo_control_read_reply) {
-    check_vector("7565130704f11f00039f01ab81", MIP_DEVICE_ANY,
+    check_vector("7565130704f11f00039f01ab81", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":31,\"ack_code\":0}},{\"descriptor\":159,\"name\":\"echo_control_"
                  "response\",\"values\":{\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, echo_control_default) {
-    check_vector("75651303031f051748", MIP_DEVICE_ANY,
+    check_vector("75651303031f051748", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":31,\"name\":\"echo_control\","
                  "\"values\":{\"function\":5}}]}\n");
 }
@@ -1454,7 +1454,7 @@ TEST(Vectors, echo_control_default) {
 TEST(Vectors, ecef_position_measurement) {
     check_vector("7565133333210200112210f47de9811501412e848100000000c151edd810000000414f47d010000000402000004"
                  "020000040a0000000076337",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":33,\"name\":\"ecef_position\","
                  "\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1234567890123456789},"
                  "\"frame_id\":1,\"position\":[1000000.5,-4700000.25,4100000.125],\"uncertainty\":[2.5,2.5,5."
@@ -1464,7 +1464,7 @@ TEST(Vectors, ecef_position_measurement) {
 TEST(Vectors, llh_position_measurement) {
     check_vector("7565133333220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003"
                  "fc000004040000000075911",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\","
                  "\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000000000000},"
                  "\"frame_id\":1,\"latitude\":44.4375,\"longitude\":-73.0625,\"height\":120.5,"
@@ -1475,14 +1475,14 @@ TEST(Vectors, llh_position_height_only) {
     check_vector(
         "75651333332201000000000df84758000100000000000000000000000000000000405e200000000000000000000000000040"
         "40000000045dfd",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\",\"values\":{"
         "\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":60000000000},\"frame_id\":1,\"latitude\":0."
         "0,\"longitude\":0.0,\"height\":120.5,\"uncertainty\":[0.0,0.0,3.0],\"valid_flags\":4}}]}\n");
 }
 
 TEST(Vectors, height_above_ellipsoid_measurement) {
-    check_vector("7565131717230100000000012a05f20001437a4000400000000001a04e", MIP_DEVICE_ANY,
+    check_vector("7565131717230100000000012a05f20001437a4000400000000001a04e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":35,\"name\":\"height_above_"
                  "ellipsoid\",\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":5000000000}"
                  ",\"frame_id\":1,\"height\":250.25,\"uncertainty\":2.0,\"valid_flags\":1}}]}\n");
@@ -1490,7 +1490,7 @@ TEST(Vectors, height_above_ellipsoid_measurement) {
 
 TEST(Vectors, ecef_velocity_measurement) {
     check_vector("7565132727280200136dcc953b596500013fc00000be800000000000003dcccccd3dcccccd3dcccccd00076a41",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":40,\"name\":\"ecef_velocity\","
                  "\"values\":{\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000500000000},"
                  "\"frame_id\":1,\"velocity\":[1.5,-0.25,0.0],\"uncertainty\":[0.10000000149011612,0."
@@ -1499,7 +1499,7 @@ TEST(Vectors, ecef_velocity_measurement) {
 
 TEST(Vectors, ned_velocity_measurement_time_of_arrival) {
     check_vector("756513272729030000000000000000000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0003d0c1",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":41,\"name\":\"ned_velocity\","
                  "\"values\":{\"time\":{\"timebase\":3,\"reserved\":0,\"nanoseconds\":0},\"frame_id\":1,"
                  "\"velocity\":[10.0,-2.5,0.125],\"uncertainty\":[0.05000000074505806,0.05000000074505806,0."
@@ -1508,7 +1508,7 @@ TEST(Vectors, ned_velocity_measurement_time_of_arrival) {
 
 TEST(Vectors, body_frame_velocity_example) {
     check_vector("75651327272a0100000000000002693002406fae1400000000000000003df5c28f3df5c28f3df5c28f000300a3",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":42,\"name\":\"body_frame_velocity\","
                  "\"values\":{\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":158000},\"frame_id\":2,"
                  "\"velocity\":[3.744999885559082,0.0,0.0],\"uncertainty\":[0.11999999731779099,0."
@@ -1516,14 +1516,14 @@ TEST(Vectors, body_frame_velocity_example) {
 }
 
 TEST(Vectors, body_frame_velocity_nack_invalid_parameter) {
-    check_vector("7565130404f12a03132b", MIP_DEVICE_ANY,
+    check_vector("7565130404f12a03132b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":42,\"ack_code\":3}}]}\n");
 }
 
 TEST(Vectors, true_heading_measurement) {
     check_vector(
-        "75651317173101000000000077359400013fc90fdb3c8f5c290001d181", MIP_DEVICE_ANY,
+        "75651317173101000000000077359400013fc90fdb3c8f5c290001d181", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":49,\"name\":\"true_heading\",\"values\":{"
         "\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":2000000000},\"frame_id\":1,\"heading\":1."
         "5707963705062866,\"uncertainty\":0.017500000074505806,\"valid_flags\":1}}]}\n");
@@ -1532,7 +1532,7 @@ TEST(Vectors, true_heading_measurement) {
 TEST(Vectors, magnetic_field_example) {
     check_vector(
         "75651327273201000000000000026930033ee6e9793eb0a3d73ecd4fdf3cfdf3b63cfdf3b63cfdf3b60007e0ec",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":50,\"name\":\"magnetic_field\",\"values\":{"
         "\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":158000},\"frame_id\":3,\"magnetic_field\":["
         "0.45100000500679016,0.3449999988079071,0.4009999930858612],\"uncertainty\":[0.03099999949336052,0."
@@ -1540,13 +1540,13 @@ TEST(Vectors, magnetic_field_example) {
 }
 
 TEST(Vectors, magnetic_field_ack) {
-    check_vector("7565130404f132001838", MIP_DEVICE_ANY,
+    check_vector("7565130404f132001838", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":50,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, pressure_measurement) {
-    check_vector("756513171733010000000000b2d05e0000447d50003f000000000180c0", MIP_DEVICE_ANY,
+    check_vector("756513171733010000000000b2d05e0000447d50003f000000000180c0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":51,\"name\":\"pressure\",\"values\":{"
                  "\"time\":{\"timebase\":1,\"reserved\":0,\"nanoseconds\":3000000000},\"frame_id\":0,"
                  "\"pressure\":1013.25,\"uncertainty\":0.5,\"valid_flags\":1}}]}\n");
@@ -1556,7 +1556,7 @@ TEST(Vectors, llh_position_and_ned_velocity_one_packet) {
     check_vector(
         "7565135a33220200136dcc951d8c0000014046380000000000c052440000000000405e2000000000003fc000003fc0000040"
         "400000000727290200136dcc951d8c00000141200000c02000003e0000003d4ccccd3d4ccccd3dcccccd0007c9ab",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":34,\"name\":\"llh_position\",\"values\":{"
         "\"time\":{\"timebase\":2,\"reserved\":0,\"nanoseconds\":1400000000000000000},\"frame_id\":1,"
         "\"latitude\":44.4375,\"longitude\":-73.0625,\"height\":120.5,\"uncertainty\":[1.5,1.5,3.0],\"valid_"
@@ -1567,7 +1567,7 @@ TEST(Vectors, llh_position_and_ned_velocity_one_packet) {
 }
 
 TEST(Vectors, llh_position_and_ned_velocity_acks) {
-    check_vector("7565130804f1220004f129002a91", MIP_DEVICE_ANY,
+    check_vector("7565130804f1220004f129002a91", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":19,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":34,\"ack_code\":0}},{\"descriptor\":241,\"name\":\"ack_nack\","
                  "\"values\":{\"command_descriptor\":41,\"ack_code\":0}}]}\n");
@@ -1575,36 +1575,36 @@ TEST(Vectors, llh_position_and_ned_velocity_acks) {
 
 TEST(Vectors, ping_command) {
     check_vector(
-        "756501020201e0c6", MIP_DEVICE_ANY,
+        "756501020201e0c6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, ping_reply) {
-    check_vector("7565010404f10100d56a", MIP_DEVICE_ANY,
+    check_vector("7565010404f10100d56a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, set_to_idle_command) {
     check_vector(
-        "756501020202e1c7", MIP_DEVICE_ANY,
+        "756501020202e1c7", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"set_to_idle\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, set_to_idle_copy_paste_published) {
     check_vector(
-        "756501020201e0c6", MIP_DEVICE_ANY,
+        "756501020201e0c6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, set_to_idle_reply) {
-    check_vector("7565010404f10200d66c", MIP_DEVICE_ANY,
+    check_vector("7565010404f10200d66c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":2,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, get_device_info_command) {
-    check_vector("756501020203e2c8", MIP_DEVICE_ANY,
+    check_vector("756501020203e2c8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":3,\"name\":\"get_device_info\","
                  "\"values\":{}}]}\n");
 }
@@ -1613,7 +1613,7 @@ TEST(Vectors, get_device_info_reply) {
     check_vector(
         "7565015804f10300548105fe33444d2d4758352d3435202020202020363233322d3432373020202020202020363233322d30"
         "303132322020202020202020202020202020202020202020202035672c20313530642f73202020202020b801",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_"
         "descriptor\":3,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"device_info\",\"values\":{\"info\":{"
         "\"firmware_version\":1534,\"model_name\":\"3DM-GX5-45      \",\"model_number\":\"6232-4270       "
@@ -1622,40 +1622,40 @@ TEST(Vectors, get_device_info_reply) {
 }
 
 TEST(Vectors, get_device_descriptors_command) {
-    check_vector("756501020204e3c9", MIP_DEVICE_ANY,
+    check_vector("756501020204e3c9", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"get_device_descriptors\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, get_device_descriptors_reply) {
-    check_vector("7565011204f104000e820101010201030c010c020c721805", MIP_DEVICE_ANY,
+    check_vector("7565011204f104000e820101010201030c010c020c721805", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":4,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"device_"
                  "descriptors\",\"values\":{\"descriptors\":[257,258,259,3073,3074,3186]}}]}\n");
 }
 
 TEST(Vectors, get_device_descriptors_reply_empty) {
-    check_vector("7565010604f1040002825eb4", MIP_DEVICE_ANY,
+    check_vector("7565010604f1040002825eb4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":4,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"device_"
                  "descriptors\",\"values\":{\"descriptors\":[]}}]}\n");
 }
 
 TEST(Vectors, built_in_test_command) {
-    check_vector("756501020205e4ca", MIP_DEVICE_ANY,
+    check_vector("756501020205e4ca", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":5,\"name\":\"built_in_test\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, built_in_test_reply) {
-    check_vector("7565010a04f10500068300000000687d", MIP_DEVICE_ANY,
+    check_vector("7565010a04f10500068300000000687d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":5,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"built_in_test_"
                  "result\",\"device\":\"gx5_45\",\"values\":{\"flags\":0}}]}\n");
 }
 
 TEST(Vectors, built_in_test_reply_gx5_flags) {
-    check_vector("7565010a04f105000683010003016d88", MIP_DEVICE_ANY,
+    check_vector("7565010a04f105000683010003016d88", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":5,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"built_in_test_"
                  "result\",\"device\":\"gx5_45\",\"values\":{\"flags\":16777985}}]}\n");
@@ -1663,47 +1663,47 @@ TEST(Vectors, built_in_test_reply_gx5_flags) {
 
 TEST(Vectors, resume_command) {
     check_vector(
-        "756501020206e5cb", MIP_DEVICE_ANY,
+        "756501020206e5cb", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":6,\"name\":\"resume\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, resume_reply) {
-    check_vector("7565010404f10600da74", MIP_DEVICE_ANY,
+    check_vector("7565010404f10600da74", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":6,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, resume_reply_table_published) {
-    check_vector("7565010404f10100da74", MIP_DEVICE_ANY,
+    check_vector("7565010404f10100da74", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"7565010404f10100da74\"}\n");
 }
 
 TEST(Vectors, get_extended_descriptors_command) {
-    check_vector("756501020207e6cc", MIP_DEVICE_ANY,
+    check_vector("756501020207e6cc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":7,\"name\":\"get_extended_"
                  "descriptors\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, get_extended_descriptors_table_published) {
-    check_vector("756501020204e6cc", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"756501020204e6cc\"}\n");
+    check_vector("756501020204e6cc", MIPC_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"756501020204e6cc\"}\n");
 }
 
 TEST(Vectors, get_extended_descriptors_reply) {
-    check_vector("7565010e04f107000a860d270d28822b822c39fc", MIP_DEVICE_ANY,
+    check_vector("7565010e04f107000a860d270d28822b822c39fc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":7,\"ack_code\":0}},{\"descriptor\":134,\"name\":\"extended_"
                  "descriptors\",\"values\":{\"descriptors\":[3367,3368,33323,33324]}}]}\n");
 }
 
 TEST(Vectors, continuous_bit_command) {
-    check_vector("756501020208e7cd", MIP_DEVICE_ANY,
+    check_vector("756501020208e7cd", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":8,\"name\":\"continuous_bit\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, continuous_bit_reply) {
     check_vector(
-        "7565011604f108001288000102030405060708090a0b0c0d0e0f0082", MIP_DEVICE_ANY,
+        "7565011604f108001288000102030405060708090a0b0c0d0e0f0082", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_"
         "descriptor\":8,\"ack_code\":0}},{\"descriptor\":136,\"name\":\"continuous_bit_result\",\"values\":{"
         "\"result\":{\"system_byte_0\":0,\"reserved_byte_1\":1,\"system_byte_2\":2,\"system_byte_3\":3,\"imu_"
@@ -1713,105 +1713,105 @@ TEST(Vectors, continuous_bit_reply) {
 }
 
 TEST(Vectors, comm_port_speed_write) {
-    check_vector("75650108080901010001c200b936", MIP_DEVICE_ANY,
+    check_vector("75650108080901010001c200b936", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":9,\"name\":\"comm_port_speed\","
                  "\"values\":{\"function\":1,\"port\":1,\"baud\":115200}}]}\n");
 }
 
 TEST(Vectors, comm_port_speed_read) {
-    check_vector("7565010404090201efb5", MIP_DEVICE_ANY,
+    check_vector("7565010404090201efb5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":9,\"name\":\"comm_port_speed\","
                  "\"values\":{\"function\":2,\"port\":1}}]}\n");
 }
 
 TEST(Vectors, comm_port_speed_save_all) {
-    check_vector("7565010404090300efb6", MIP_DEVICE_ANY,
+    check_vector("7565010404090300efb6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":9,\"name\":\"comm_port_speed\","
                  "\"values\":{\"function\":3,\"port\":0}}]}\n");
 }
 
 TEST(Vectors, comm_port_speed_read_reply) {
-    check_vector("7565010b04f10900078901000e1000938f", MIP_DEVICE_ANY,
+    check_vector("7565010b04f10900078901000e1000938f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":9,\"ack_code\":0}},{\"descriptor\":137,\"name\":\"comm_port_speed_"
                  "response\",\"values\":{\"port\":1,\"baud\":921600}}]}\n");
 }
 
 TEST(Vectors, gps_time_update_write_week) {
-    check_vector("756501080872010100000698fd32", MIP_DEVICE_ANY,
+    check_vector("756501080872010100000698fd32", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":114,\"name\":\"gps_time_update\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":1,\"field_id\":1,\"value\":1688}}]}\n");
 }
 
 TEST(Vectors, gps_time_update_table_published) {
-    check_vector("756501080872010000000698fd32", MIP_DEVICE_ANY,
+    check_vector("756501080872010000000698fd32", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"756501080872010000000698fd32\"}\n");
 }
 
 TEST(Vectors, gps_time_update_reply) {
-    check_vector("7565010404f17200464c", MIP_DEVICE_ANY,
+    check_vector("7565010404f17200464c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":114,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gps_time_update_read_week) {
-    check_vector("756501040472020158f0", MIP_DEVICE_ANY,
+    check_vector("756501040472020158f0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":114,\"name\":\"gps_time_update\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":2,\"field_id\":1}}]}\n");
 }
 
 TEST(Vectors, gps_week_reply) {
-    check_vector("7565010a04f17200068400000698748e", MIP_DEVICE_ANY,
+    check_vector("7565010a04f17200068400000698748e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":114,\"ack_code\":0}},{\"descriptor\":132,\"name\":\"gps_week\","
                  "\"values\":{\"week\":1688}}]}\n");
 }
 
 TEST(Vectors, gps_seconds_reply) {
-    check_vector("7565010a04f17200068500054600228a", MIP_DEVICE_ANY,
+    check_vector("7565010a04f17200068500054600228a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":114,\"ack_code\":0}},{\"descriptor\":133,\"name\":\"gps_seconds\","
                  "\"values\":{\"seconds\":345600}}]}\n");
 }
 
 TEST(Vectors, gps_time_update_write_no_ack) {
-    check_vector("756501080872060200054600b04c", MIP_DEVICE_ANY,
+    check_vector("756501080872060200054600b04c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":114,\"name\":\"gps_time_update\","
                  "\"device\":\"gx5_45\",\"values\":{\"function\":6,\"field_id\":2,\"value\":345600}}]}\n");
 }
 
 TEST(Vectors, device_reset_command) {
-    check_vector("75650102027e5d43", MIP_DEVICE_ANY,
+    check_vector("75650102027e5d43", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":126,\"name\":\"device_reset\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, device_reset_reply) {
-    check_vector("7565010404f17e005264", MIP_DEVICE_ANY,
+    check_vector("7565010404f17e005264", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":126,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, nack_invalid_parameter) {
-    check_vector("7565010404f17e035567", MIP_DEVICE_ANY,
+    check_vector("7565010404f17e035567", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":126,\"ack_code\":3}}]}\n");
 }
 
 TEST(Vectors, two_commands_one_packet) {
-    check_vector("7565010402010202e696", MIP_DEVICE_ANY,
+    check_vector("7565010402010202e696", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{"
                  "\"descriptor\":2,\"name\":\"set_to_idle\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, gps_time_update_write_week_cv7) {
-    check_vector("756501080872010100000698fd32", MIP_DEVICE_CV7_INS,
+    check_vector("756501080872010100000698fd32", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":114,\"name\":\"gps_time_update\","
                  "\"device\":\"cv7_ins\",\"values\":{\"function\":1,\"field_id\":1,\"value\":1688}}]}\n");
 }
 
 TEST(Vectors, built_in_test_reply_cv7_flags) {
-    check_vector("7565010a04f10500068300802000083d", MIP_DEVICE_CV7_INS,
+    check_vector("7565010a04f10500068300802000083d", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":5,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"built_in_test_"
                  "result\",\"device\":\"cv7_ins\",\"values\":{\"flags\":8396800}}]}\n");
@@ -1820,7 +1820,7 @@ TEST(Vectors, built_in_test_reply_cv7_flags) {
 TEST(Vectors, device_info_every_string_byte) {
     check_vector("756501545481ffff5122425c00011f7f80ff7e20090a0d5a0000000000000000000000000000000020202020202"
                  "020202020202020202020202122232425262728292a2b2c2d2e2ff0f1f2f3f4f5f6f7f8f9fafbfcfdfeff39e6",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":129,\"name\":\"device_info\","
                  "\"values\":{\"info\":{\"firmware_version\":65535,\"model_name\":"
                  "\"Q\\\"B\\\\\\u0000\\u0001\\u001f\\u007f\\u0080\\u00ff~ "
@@ -1834,47 +1834,47 @@ TEST(Vectors, device_info_every_string_byte) {
 }
 
 TEST(Vectors, encode_input_float_rounding) {
-    check_vector("75650c11112401000000000000000000003f800000ec7f", MIP_DEVICE_ANY,
+    check_vector("75650c11112401000000000000000000003f800000ec7f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":1.0}}]}\n");
 }
 
 TEST(Vectors, encode_input_float_range) {
     check_vector(
-        "75650c11112401000000000000000000007f7fffff2979", MIP_DEVICE_ANY,
+        "75650c11112401000000000000000000007f7fffff2979", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
         "\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":3.4028234663852886e+38}}]}\n");
 }
 
 TEST(Vectors, encode_input_double_range) {
-    check_vector("75650c1111240100000000000000000000000000002d03", MIP_DEVICE_ANY,
+    check_vector("75650c1111240100000000000000000000000000002d03", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":1,\"tow\":0.0,\"week_number\":0,\"accuracy\":0.0}}]}\n");
 }
 
 TEST(Vectors, encode_input_negative_zero) {
     check_vector(
-        "75650c1111240180000000000000000000800000002d03", MIP_DEVICE_ANY,
+        "75650c1111240180000000000000000000800000002d03", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_update\","
         "\"values\":{\"function\":1,\"tow\":-0.0,\"week_number\":0,\"accuracy\":-0.0}}]}\n");
 }
 
 TEST(Vectors, encode_input_denormals) {
-    check_vector("75650c1111240100000000000000010000000000012f0b", MIP_DEVICE_ANY,
+    check_vector("75650c1111240100000000000000010000000000012f0b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":1,\"tow\":5e-324,\"week_number\":0,\"accuracy\":1."
                  "401298464324817e-45}}]}\n");
 }
 
 TEST(Vectors, encode_input_nan_text) {
-    check_vector("75650c11112401fff000000000000100007fc000015d69", MIP_DEVICE_ANY,
+    check_vector("75650c11112401fff000000000000100007fc000015d69", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":36,\"name\":\"gnss_assist_time_"
                  "update\",\"values\":{\"function\":1,\"tow\":\"nan:0xfff0000000000001\",\"week_number\":0,"
                  "\"accuracy\":\"nan:0x7fc00001\"}}]}\n");
 }
 
 TEST(Vectors, encode_input_packet_keys) {
-    check_vector("75650c0504c8abcd013087", MIP_DEVICE_ANY,
+    check_vector("75650c0504c8abcd013087", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":200,\"data\":\"abcd\",\"error\":"
                  "\"unknown descriptor\"},{\"trailing\":\"01\",\"error\":\"field header at payload offset 4 "
                  "needs 2 bytes, 1 left\"}]}\n");
@@ -1882,39 +1882,39 @@ TEST(Vectors, encode_input_packet_keys) {
 
 TEST(Vectors, encode_input_field_keys) {
     check_vector(
-        "756501020201e0c6", MIP_DEVICE_ANY,
+        "756501020201e0c6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, event_trigger_gpio_edge) {
     check_vector(
-        "75650c07072e01010101042af4", MIP_DEVICE_ANY,
+        "75650c07072e01010101042af4", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":1,\"type\":1,\"parameters\":{\"pin\":1,\"mode\":4}}}]}\n");
 }
 
 TEST(Vectors, event_action_message_sensor) {
-    check_vector("75650c0f0f2f0101010280000005d0d5d6070847ca", MIP_DEVICE_ANY,
+    check_vector("75650c0f0f2f0101010280000005d0d5d6070847ca", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":1,\"type\":2,\"parameters\":{\"desc_"
                  "set\":128,\"decimation\":0,\"num_fields\":5,\"descriptors\":[208,213,214,7,8]}}}]}\n");
 }
 
 TEST(Vectors, event_action_message_filter) {
-    check_vector("75650c0e0e2f0102010282000004d0d5d6053d7a", MIP_DEVICE_ANY,
+    check_vector("75650c0e0e2f0102010282000004d0d5d6053d7a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":2,\"trigger\":1,\"type\":2,\"parameters\":{\"desc_"
                  "set\":130,\"decimation\":0,\"num_fields\":4,\"descriptors\":[208,213,214,5]}}}]}\n");
 }
 
 TEST(Vectors, event_control_enable_1) {
-    check_vector("75650c05052b0101011e82", MIP_DEVICE_ANY,
+    check_vector("75650c05052b0101011e82", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":43,\"name\":\"event_control\","
                  "\"values\":{\"function\":1,\"instance\":1,\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_active_high) {
-    check_vector("75650c08082f0101010101012b31", MIP_DEVICE_ANY,
+    check_vector("75650c08082f0101010101012b31", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":1,\"type\":1,\"parameters\":{\"pin\":"
                  "1,\"mode\":1}}}]}\n");
@@ -1922,7 +1922,7 @@ TEST(Vectors, event_action_gpio_active_high) {
 
 TEST(Vectors, event_trigger_threshold_interval) {
     check_vector(
-        "75650c19192e01010280d50102415fca0540000000416fca0560000000308a", MIP_DEVICE_ANY,
+        "75650c19192e01010280d50102415fca0540000000416fca0560000000308a", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":1,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":213,\"param_id\":1,\"type\":2,\"low_thres\":8333333.0,\"high_thres\":16666667.0}}}]}\n");
@@ -1930,47 +1930,47 @@ TEST(Vectors, event_trigger_threshold_interval) {
 
 TEST(Vectors, event_trigger_gpio_while_low) {
     check_vector(
-        "75650c07072e01010103022af6", MIP_DEVICE_ANY,
+        "75650c07072e01010103022af6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":1,\"type\":1,\"parameters\":{\"pin\":3,\"mode\":2}}}]}\n");
 }
 
 TEST(Vectors, get_event_trigger_status_1) {
-    check_vector("75650c04042c01011c5e", MIP_DEVICE_ANY,
+    check_vector("75650c04042c01011c5e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":44,\"name\":\"get_event_trigger_"
                  "status\",\"values\":{\"requested_count\":1,\"requested_instances\":[1]}}]}\n");
 }
 
 TEST(Vectors, event_trigger_status_enabled) {
-    check_vector("75650c0904f12c0005b6010102cf63", MIP_DEVICE_ANY,
+    check_vector("75650c0904f12c0005b6010102cf63", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":44,\"ack_code\":0}},{\"descriptor\":182,\"name\":\"event_trigger_"
                  "status\",\"values\":{\"count\":1,\"triggers\":[{\"type\":1,\"status\":2}]}}]}\n");
 }
 
 TEST(Vectors, event_trigger_status_active) {
-    check_vector("75650c0904f12c0005b6010103d064", MIP_DEVICE_ANY,
+    check_vector("75650c0904f12c0005b6010103d064", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":44,\"ack_code\":0}},{\"descriptor\":182,\"name\":\"event_trigger_"
                  "status\",\"values\":{\"count\":1,\"triggers\":[{\"type\":1,\"status\":3}]}}]}\n");
 }
 
 TEST(Vectors, event_action_message_decimated_sensor) {
-    check_vector("75650c0c0c2f0101010280000a020405c778", MIP_DEVICE_ANY,
+    check_vector("75650c0c0c2f0101010280000a020405c778", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":1,\"type\":2,\"parameters\":{\"desc_"
                  "set\":128,\"decimation\":10,\"num_fields\":2,\"descriptors\":[4,5]}}}]}\n");
 }
 
 TEST(Vectors, event_action_message_decimated_filter) {
-    check_vector("75650c0b0b2f0102010282000a0105c3ab", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b2f0102010282000a0105c3ab", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":2,\"trigger\":1,\"type\":2,\"parameters\":{\"desc_"
                  "set\":130,\"decimation\":10,\"num_fields\":1,\"descriptors\":[5]}}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_oneshot_high) {
-    check_vector("75650c08082f010101010405323b", MIP_DEVICE_ANY,
+    check_vector("75650c08082f010101010405323b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":1,\"type\":1,\"parameters\":{\"pin\":"
                  "4,\"mode\":5}}}]}\n");
@@ -1978,7 +1978,7 @@ TEST(Vectors, event_action_gpio_oneshot_high) {
 
 TEST(Vectors, event_trigger_threshold_roll_45) {
     check_vector(
-        "75650c19192e010102800c01013fe921fb323ae5afbfe921fb323ae5afe040", MIP_DEVICE_ANY,
+        "75650c19192e010102800c01013fe921fb323ae5afbfe921fb323ae5afe040", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":1,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":0.7853981,\"high_thres\":-0.7853981}}}]}\n");
@@ -1986,47 +1986,47 @@ TEST(Vectors, event_trigger_threshold_roll_45) {
 
 TEST(Vectors, event_trigger_threshold_pitch_45) {
     check_vector(
-        "75650c19192e010202800c02013fe921fb323ae5afbfe921fb323ae5afe268", MIP_DEVICE_ANY,
+        "75650c19192e010202800c02013fe921fb323ae5afbfe921fb323ae5afe268", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":2,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":2,\"type\":1,\"low_thres\":0.7853981,\"high_thres\":-0.7853981}}}]}\n");
 }
 
 TEST(Vectors, event_control_enable_2) {
-    check_vector("75650c05052b0102011f84", MIP_DEVICE_ANY,
+    check_vector("75650c05052b0102011f84", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":43,\"name\":\"event_control\","
                  "\"values\":{\"function\":1,\"instance\":2,\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, event_trigger_combination_any) {
-    check_vector("75650c0b0b2e010303fffe0102000031f6", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b2e010303fffe0102000031f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
                  "\"values\":{\"function\":1,\"instance\":3,\"type\":3,\"parameters\":{\"logic_table\":65534,"
                  "\"input_triggers\":[1,2,0,0]}}}]}\n");
 }
 
 TEST(Vectors, event_control_enable_3) {
-    check_vector("75650c05052b0103012086", MIP_DEVICE_ANY,
+    check_vector("75650c05052b0103012086", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":43,\"name\":\"event_control\","
                  "\"values\":{\"function\":1,\"instance\":3,\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_trigger_3) {
-    check_vector("75650c08082f010103010401303f", MIP_DEVICE_ANY,
+    check_vector("75650c08082f010103010401303f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"
                  "4,\"mode\":1}}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_oneshot_trigger_3) {
-    check_vector("75650c08082f0101030104053443", MIP_DEVICE_ANY,
+    check_vector("75650c08082f0101030104053443", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"
                  "4,\"mode\":5}}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_oneshot_trigger_3_published) {
-    check_vector("75650c08082f010103010401303f", MIP_DEVICE_ANY,
+    check_vector("75650c08082f010103010401303f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":1,\"trigger\":3,\"type\":1,\"parameters\":{\"pin\":"
                  "4,\"mode\":1}}}]}\n");
@@ -2034,41 +2034,41 @@ TEST(Vectors, event_action_gpio_oneshot_trigger_3_published) {
 
 TEST(Vectors, event_trigger_threshold_roll_10) {
     check_vector(
-        "75650c19192e010202800c0101bfc6571814c9bba03fc6571814c9bba0b1fa", MIP_DEVICE_ANY,
+        "75650c19192e010202800c0101bfc6571814c9bba03fc6571814c9bba0b1fa", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":2,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":-0.1745329,\"high_thres\":0.1745329}}}]}\n");
 }
 
 TEST(Vectors, event_trigger_combination_latch) {
-    check_vector("75650c0b0b2e010303cece03010200d3e9", MIP_DEVICE_ANY,
+    check_vector("75650c0b0b2e010303cece03010200d3e9", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
                  "\"values\":{\"function\":1,\"instance\":3,\"type\":3,\"parameters\":{\"logic_table\":52942,"
                  "\"input_triggers\":[3,1,2,0]}}}]}\n");
 }
 
 TEST(Vectors, event_action_gpio_oneshot_low) {
-    check_vector("75650c08082f0102020104063545", MIP_DEVICE_ANY,
+    check_vector("75650c08082f0102020104063545", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":47,\"name\":\"event_action_config\","
                  "\"values\":{\"function\":1,\"instance\":2,\"trigger\":2,\"type\":1,\"parameters\":{\"pin\":"
                  "4,\"mode\":6}}}]}\n");
 }
 
 TEST(Vectors, event_trigger_config_read) {
-    check_vector("75650c04042e02011f66", MIP_DEVICE_ANY,
+    check_vector("75650c04042e02011f66", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
                  "\"values\":{\"function\":2,\"instance\":1}}]}\n");
 }
 
 TEST(Vectors, event_trigger_config_read_reply_none) {
-    check_vector("75650c0804f12e0004b80100ce98", MIP_DEVICE_ANY,
+    check_vector("75650c0804f12e0004b80100ce98", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":46,\"ack_code\":0}},{\"descriptor\":184,\"name\":\"event_trigger_"
                  "config_response\",\"values\":{\"instance\":1,\"type\":0,\"parameters\":null}}]}\n");
 }
 
 TEST(Vectors, get_event_action_status_all_reply) {
-    check_vector("75650c0b04f12d0007b70202010103da41", MIP_DEVICE_ANY,
+    check_vector("75650c0b04f12d0007b70202010103da41", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":45,\"ack_code\":0}},{\"descriptor\":183,\"name\":\"event_action_"
                  "status\",\"values\":{\"count\":2,\"actions\":[{\"action_type\":2,\"trigger_id\":1},{"
@@ -2076,7 +2076,7 @@ TEST(Vectors, get_event_action_status_all_reply) {
 }
 
 TEST(Vectors, doubles_power_of_two_and_negative_zero) {
-    check_vector("75650c19192e010402800c010116900000000000008000000000000000014c", MIP_DEVICE_ANY,
+    check_vector("75650c19192e010402800c010116900000000000008000000000000000014c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
                  "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,"
                  "\"field_desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":5.225680706521042e-200,\"high_"
@@ -2085,7 +2085,7 @@ TEST(Vectors, doubles_power_of_two_and_negative_zero) {
 
 TEST(Vectors, doubles_denormal_and_1e16) {
     check_vector(
-        "75650c19192e010402800c010100000000000000014341c37937e0800033cf", MIP_DEVICE_ANY,
+        "75650c19192e010402800c010100000000000000014341c37937e0800033cf", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":5e-324,\"high_thres\":1e+16}}}]}\n");
@@ -2093,7 +2093,7 @@ TEST(Vectors, doubles_denormal_and_1e16) {
 
 TEST(Vectors, doubles_positional_boundary) {
     check_vector(
-        "75650c19192e010402800c01013f1a36e2eb1c432d3ee4f8b588e368f156da", MIP_DEVICE_ANY,
+        "75650c19192e010402800c01013f1a36e2eb1c432d3ee4f8b588e368f156da", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":0.0001,\"high_thres\":1e-05}}}]}\n");
@@ -2101,14 +2101,14 @@ TEST(Vectors, doubles_positional_boundary) {
 
 TEST(Vectors, doubles_large_values) {
     check_vector(
-        "75650c19192e010402800c01017e37e43c8800759c42dc12218377de6bdd44", MIP_DEVICE_ANY,
+        "75650c19192e010402800c01017e37e43c8800759c42dc12218377de6bdd44", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
         "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,\"field_"
         "desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":1e+300,\"high_thres\":123456789012345.67}}}]}\n");
 }
 
 TEST(Vectors, doubles_infinity_and_nan_payload) {
-    check_vector("75650c19192e010402800c01017ff0000000000000fff00000000000013a05", MIP_DEVICE_ANY,
+    check_vector("75650c19192e010402800c01017ff0000000000000fff00000000000013a05", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"name\":\"event_trigger_config\","
                  "\"values\":{\"function\":1,\"instance\":4,\"type\":2,\"parameters\":{\"desc_set\":128,"
                  "\"field_desc\":12,\"param_id\":1,\"type\":1,\"low_thres\":\"inf\",\"high_thres\":\"nan:"
@@ -2116,260 +2116,260 @@ TEST(Vectors, doubles_infinity_and_nan_payload) {
 }
 
 TEST(Vectors, reset_filter_command) {
-    check_vector("75650d020201ecf6", MIP_DEVICE_ANY,
+    check_vector("75650d020201ecf6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":1,\"name\":\"reset_filter\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, reset_filter_reply) {
-    check_vector("75650d0404f10100e1b2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f10100e1b2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, reset_and_run_filter_one_packet) {
-    check_vector("75650d0402010205f5e1", MIP_DEVICE_ANY,
+    check_vector("75650d0402010205f5e1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":1,\"name\":\"reset_filter\","
                  "\"values\":{}},{\"descriptor\":5,\"name\":\"run_filter\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, set_initial_attitude_zero) {
-    check_vector("75650d0e0e02000000000000000000000000056f", MIP_DEVICE_ANY,
+    check_vector("75650d0e0e02000000000000000000000000056f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":2,\"name\":\"set_initial_attitude\","
                  "\"values\":{\"roll\":0.0,\"pitch\":0.0,\"heading\":0.0}}]}\n");
 }
 
 TEST(Vectors, set_initial_attitude_copy_paste_published) {
-    check_vector("75650d0e0e020000000000000000000000000000056f", MIP_DEVICE_ANY,
+    check_vector("75650d0e0e020000000000000000000000000000056f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0e0e020000000000000000000000000000056f\"}\n");
 }
 
 TEST(Vectors, set_initial_attitude_reply) {
-    check_vector("75650d0404f10200e2b4", MIP_DEVICE_ANY,
+    check_vector("75650d0404f10200e2b4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":2,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, set_initial_attitude_getting_started) {
     check_vector(
-        "75650d0e0e02bae3ed9b3c7d6ddfbf855cf5c409", MIP_DEVICE_ANY,
+        "75650d0e0e02bae3ed9b3c7d6ddfbf855cf5c409", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":2,\"name\":\"set_initial_attitude\",\"values\":"
         "{\"roll\":-0.001738953753374517,\"pitch\":0.01546808984130621,\"heading\":-1.04189932346344}}]}\n");
 }
 
 TEST(Vectors, set_initial_attitude_getting_started_table_published) {
-    check_vector("75650d060602bae3ed9b3c7d6ddfbf855cf5c409", MIP_DEVICE_ANY,
+    check_vector("75650d060602bae3ed9b3c7d6ddfbf855cf5c409", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d060602bae3ed9b3c7d6ddfbf855cf5c409\"}\n");
 }
 
 TEST(Vectors, set_initial_heading_command) {
-    check_vector("75650d06060300000000f6e4", MIP_DEVICE_ANY,
+    check_vector("75650d06060300000000f6e4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":3,\"name\":\"set_initial_heading\","
                  "\"values\":{\"heading\":0.0}}]}\n");
 }
 
 TEST(Vectors, set_initial_heading_reply) {
-    check_vector("75650d0404f10300e3b6", MIP_DEVICE_ANY,
+    check_vector("75650d0404f10300e3b6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":3,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, set_initial_heading_half_pi) {
-    check_vector("75650d0606033fc90fdbe834", MIP_DEVICE_ANY,
+    check_vector("75650d0606033fc90fdbe834", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":3,\"name\":\"set_initial_heading\","
                  "\"values\":{\"heading\":1.5707963705062866}}]}\n");
 }
 
 TEST(Vectors, run_filter_command) {
     check_vector(
-        "75650d020205f0fa", MIP_DEVICE_ANY,
+        "75650d020205f0fa", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":5,\"name\":\"run_filter\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, run_filter_reply) {
-    check_vector("75650d0404f10500e5ba", MIP_DEVICE_ANY,
+    check_vector("75650d0404f10500e5ba", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":5,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_write) {
-    check_vector("75650d04041001010110", MIP_DEVICE_ANY,
+    check_vector("75650d04041001010110", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\","
                  "\"values\":{\"function\":1,\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_copy_paste_published) {
-    check_vector("75650c04041001010110", MIP_DEVICE_ANY,
+    check_vector("75650c04041001010110", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650c04041001010110\"}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_reply) {
-    check_vector("75650d0404f11000f0d0", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11000f0d0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":16,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_write_airborne_high_g) {
-    check_vector("75650d04041001040413", MIP_DEVICE_ANY,
+    check_vector("75650d04041001040413", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\","
                  "\"values\":{\"function\":1,\"mode\":4}}]}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_read) {
-    check_vector("75650d03031002ff09", MIP_DEVICE_ANY,
+    check_vector("75650d03031002ff09", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":16,\"name\":\"vehicle_dynamics_mode\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, vehicle_dynamics_mode_read_reply) {
-    check_vector("75650d0704f1100003800278c3", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1100003800278c3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":16,\"ack_code\":0}},{\"descriptor\":128,\"name\":\"vehicle_dynamics_"
                  "mode_response\",\"values\":{\"mode\":2}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_write) {
-    check_vector("75650d0f0f11010000000000000000000000001772", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f11010000000000000000000000001772", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_"
                  "transform\",\"values\":{\"function\":1,\"roll\":0.0,\"pitch\":0.0,\"yaw\":0.0}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_copy_paste_published) {
-    check_vector("75650d0f0f1101000000000000000000001772", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f1101000000000000000000001772", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0f0f1101000000000000000000001772\"}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_reply) {
-    check_vector("75650d0404f11100f1d2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11100f1d2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":17,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_write_rotated) {
-    check_vector("75650d0f0f110140490fdb00000000bfc90fdbfc2e", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f110140490fdb00000000bfc90fdbfc2e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_"
                  "transform\",\"values\":{\"function\":1,\"roll\":3.1415927410125732,\"pitch\":0.0,\"yaw\":-"
                  "1.5707963705062866}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_read) {
-    check_vector("75650d03031102000b", MIP_DEVICE_ANY,
+    check_vector("75650d03031102000b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":17,\"name\":\"sensor_to_vehicle_"
                  "transform\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_transform_read_reply) {
     check_vector(
-        "75650d1204f111000e8100000000000000003fc90fdb80ab", MIP_DEVICE_ANY,
+        "75650d1204f111000e8100000000000000003fc90fdb80ab", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":17,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"sensor_to_vehicle_"
         "transform_response\",\"values\":{\"roll\":0.0,\"pitch\":0.0,\"yaw\":1.5707963705062866}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_offset_write) {
-    check_vector("75650d0f0f12010000000000000000000000001880", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f12010000000000000000000000001880", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":18,\"name\":\"sensor_to_vehicle_"
                  "offset\",\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_offset_reply) {
-    check_vector("75650d0404f11200f2d4", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11200f2d4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":18,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, sensor_to_vehicle_offset_read_reply) {
-    check_vector("75650d1204f112000e823e800000bf0000003f800000cc54", MIP_DEVICE_ANY,
+    check_vector("75650d1204f112000e823e800000bf0000003f800000cc54", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":18,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"sensor_to_"
                  "vehicle_offset_response\",\"values\":{\"offset\":[0.25,-0.5,1.0]}}]}\n");
 }
 
 TEST(Vectors, antenna_offset_write) {
-    check_vector("75650d0f0f1301000000000000000000000000198e", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f1301000000000000000000000000198e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":19,\"name\":\"antenna_offset\","
                  "\"values\":{\"function\":1,\"offset\":[0.0,0.0,0.0]}}]}\n");
 }
 
 TEST(Vectors, antenna_offset_reply) {
-    check_vector("75650d0404f11300f3d6", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11300f3d6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":19,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, antenna_offset_write_cv7_example) {
     check_vector(
-        "75650d0f0f1301bea3d70a3de147aebf23d70a3173", MIP_DEVICE_ANY,
+        "75650d0f0f1301bea3d70a3de147aebf23d70a3173", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":19,\"name\":\"antenna_offset\",\"values\":{"
         "\"function\":1,\"offset\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}\n");
 }
 
 TEST(Vectors, antenna_offset_read_reply) {
     check_vector(
-        "75650d1204f113000e83bea3d70a3de147aebf23d70aaa7a", MIP_DEVICE_ANY,
+        "75650d1204f113000e83bea3d70a3de147aebf23d70aaa7a", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":19,\"ack_code\":0}},{\"descriptor\":131,\"name\":\"antenna_offset_response\","
         "\"values\":{\"offset\":[-0.3199999928474426,0.10999999940395355,-0.6399999856948853]}}]}\n");
 }
 
 TEST(Vectors, estimation_control_write_all) {
-    check_vector("75650d05051401ffff0427", MIP_DEVICE_ANY,
+    check_vector("75650d05051401ffff0427", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":20,\"name\":\"estimation_control\","
                  "\"values\":{\"function\":1,\"flags\":65535}}]}\n");
 }
 
 TEST(Vectors, estimation_control_reply) {
-    check_vector("75650d0404f11400f4d8", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11400f4d8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":20,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, estimation_control_write_gyro_bias) {
-    check_vector("75650d050514010001072b", MIP_DEVICE_ANY,
+    check_vector("75650d050514010001072b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":20,\"name\":\"estimation_control\","
                  "\"values\":{\"function\":1,\"flags\":1}}]}\n");
 }
 
 TEST(Vectors, estimation_control_read_reply) {
-    check_vector("75650d0804f1140004840063e3cb", MIP_DEVICE_ANY,
+    check_vector("75650d0804f1140004840063e3cb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":20,\"ack_code\":0}},{\"descriptor\":132,\"name\":\"estimation_"
                  "control_response\",\"values\":{\"flags\":99}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_write_external) {
-    check_vector("75650d04041501020720", MIP_DEVICE_ANY,
+    check_vector("75650d04041501020720", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\","
                  "\"values\":{\"function\":1,\"source\":2}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_reply) {
-    check_vector("75650d0404f11500f5da", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11500f5da", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":21,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_write_internal_2) {
-    check_vector("75650d04041501040922", MIP_DEVICE_ANY,
+    check_vector("75650d04041501040922", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\","
                  "\"values\":{\"function\":1,\"source\":4}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_save) {
-    check_vector("75650d030315030514", MIP_DEVICE_ANY,
+    check_vector("75650d030315030514", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":21,\"name\":\"gnss_source_control\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_read_reply_internal_1) {
-    check_vector("75650d0704f1150003860384e9", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1150003860384e9", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":21,\"ack_code\":0}},{\"descriptor\":134,\"name\":\"gnss_source_"
                  "control_response\",\"values\":{\"source\":3}}]}\n");
 }
 
 TEST(Vectors, gnss_source_control_read_reply_internal) {
-    check_vector("75650d0704f1150003860182e7", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1150003860182e7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":21,\"ack_code\":0}},{\"descriptor\":134,\"name\":\"gnss_source_"
                  "control_response\",\"values\":{\"source\":1}}]}\n");
@@ -2378,7 +2378,7 @@ TEST(Vectors, gnss_source_control_read_reply_internal) {
 TEST(Vectors, external_gnss_update_example) {
     check_vector("75650d4848160000000000000000000000000000000000000000000000000000000000000000000000000000000"
                  "00000000000003f0000003f0000003f0000003dcccccd3dcccccd3dcccccd308a",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":22,\"name\":\"external_gnss_update\","
                  "\"values\":{\"gps_tow\":0.0,\"gps_week\":0,\"latitude\":0.0,\"longitude\":0.0,\"height\":0."
                  "0,\"velocity\":[0.0,0.0,0.0],\"position_uncertainty\":[0.5,0.5,0.5],\"velocity_"
@@ -2386,7 +2386,7 @@ TEST(Vectors, external_gnss_update_example) {
 }
 
 TEST(Vectors, external_gnss_update_reply) {
-    check_vector("75650d0404f11600f6dc", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11600f6dc", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":22,\"ack_code\":0}}]}\n");
 }
@@ -2395,7 +2395,7 @@ TEST(Vectors, external_gnss_update_values) {
     check_vector(
         "75650d484816411518010000000008fc4046380000000000c0524c0000000000405e2000000000003fc00000c01000003e00"
         "00003f0000003f0000003f8000003dcccccd3dcccccd3e4ccccd8b7a",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":22,\"name\":\"external_gnss_update\","
         "\"values\":{\"gps_tow\":345600.25,\"gps_week\":2300,\"latitude\":44.4375,\"longitude\":-73.1875,"
         "\"height\":120.5,\"velocity\":[1.5,-2.25,0.125],\"position_uncertainty\":[0.5,0.5,1.0],\"velocity_"
@@ -2403,70 +2403,70 @@ TEST(Vectors, external_gnss_update_values) {
 }
 
 TEST(Vectors, external_heading_update_example) {
-    check_vector("75650d0b0b173dcccccd3dcccccd015934", MIP_DEVICE_ANY,
+    check_vector("75650d0b0b173dcccccd3dcccccd015934", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":23,\"name\":\"external_heading_"
                  "update\",\"values\":{\"heading\":0.10000000149011612,\"heading_uncertainty\":0."
                  "10000000149011612,\"type\":1}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_reply) {
-    check_vector("75650d0404f11700f7de", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11700f7de", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":23,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_magnetic) {
     check_vector(
-        "75650d0b0b17c02000003d4ccccd02180e", MIP_DEVICE_ANY,
+        "75650d0b0b17c02000003d4ccccd02180e", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":23,\"name\":\"external_heading_update\","
         "\"values\":{\"heading\":-2.5,\"heading_uncertainty\":0.05000000074505806,\"type\":2}}]}\n");
 }
 
 TEST(Vectors, heading_update_control_write_magnetometer) {
-    check_vector("75650d04041801010928", MIP_DEVICE_ANY,
+    check_vector("75650d04041801010928", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":24,\"name\":\"heading_update_"
                  "control\",\"values\":{\"function\":1,\"source\":1}}]}\n");
 }
 
 TEST(Vectors, heading_update_control_reply) {
-    check_vector("75650d0404f11800f8e0", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11800f8e0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":24,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, heading_update_control_read) {
-    check_vector("75650d030318020719", MIP_DEVICE_ANY,
+    check_vector("75650d030318020719", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":24,\"name\":\"heading_update_"
                  "control\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, heading_update_control_read_reply) {
-    check_vector("75650d0704f118000387078cfe", MIP_DEVICE_ANY,
+    check_vector("75650d0704f118000387078cfe", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":24,\"ack_code\":0}},{\"descriptor\":135,\"name\":\"heading_update_"
                  "control_response\",\"values\":{\"source\":7}}]}\n");
 }
 
 TEST(Vectors, auto_init_control_write_enable) {
-    check_vector("75650d04041901010a2b", MIP_DEVICE_ANY,
+    check_vector("75650d04041901010a2b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":25,\"name\":\"auto_init_control\","
                  "\"values\":{\"function\":1,\"enable\":1}}]}\n");
 }
 
 TEST(Vectors, auto_init_control_reply) {
-    check_vector("75650d0404f11900f9e2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11900f9e2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":25,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, auto_init_control_read) {
-    check_vector("75650d03031902081b", MIP_DEVICE_ANY,
+    check_vector("75650d03031902081b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":25,\"name\":\"auto_init_control\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, auto_init_control_read_reply) {
-    check_vector("75650d0704f1190003880087fe", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1190003880087fe", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":25,\"ack_code\":0}},{\"descriptor\":136,\"name\":\"auto_init_"
                  "control_response\",\"values\":{\"enable\":0}}]}\n");
@@ -2474,25 +2474,25 @@ TEST(Vectors, auto_init_control_read_reply) {
 
 TEST(Vectors, accel_noise_write) {
     check_vector(
-        "75650d0f0f1a013ca3d70a3ca3d70a3ca3d70a60a3", MIP_DEVICE_ANY,
+        "75650d0f0f1a013ca3d70a3ca3d70a3ca3d70a60a3", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":26,\"name\":\"accel_noise\",\"values\":{"
         "\"function\":1,\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}\n");
 }
 
 TEST(Vectors, accel_noise_copy_paste_published) {
-    check_vector("75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0f0f011a013ca3d70a3ca3d70a3ca3d760a3\"}\n");
 }
 
 TEST(Vectors, accel_noise_reply) {
-    check_vector("75650d0404f11a00fae4", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11a00fae4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":26,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, accel_noise_read_reply) {
     check_vector(
-        "75650d1204f11a000e893ca3d70a3ca3d70a3ca3d70adf06", MIP_DEVICE_ANY,
+        "75650d1204f11a000e893ca3d70a3ca3d70a3ca3d70adf06", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":26,\"ack_code\":0}},{\"descriptor\":137,\"name\":\"accel_noise_response\","
         "\"values\":{\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}\n");
@@ -2500,26 +2500,26 @@ TEST(Vectors, accel_noise_read_reply) {
 
 TEST(Vectors, gyro_noise_write) {
     check_vector(
-        "75650d0f0f1b013a0d4bad3a0d4bad3a0d4baddee8", MIP_DEVICE_ANY,
+        "75650d0f0f1b013a0d4bad3a0d4bad3a0d4baddee8", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":27,\"name\":\"gyro_noise\",\"values\":{"
         "\"function\":1,\"noise\":[0.0005389999714680016,0.0005389999714680016,0.0005389999714680016]}}]}\n");
 }
 
 TEST(Vectors, gyro_noise_reply) {
-    check_vector("75650d0404f11b00fbe6", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11b00fbe6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":27,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gyro_noise_default) {
-    check_vector("75650d03031b050d22", MIP_DEVICE_ANY,
+    check_vector("75650d03031b050d22", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":27,\"name\":\"gyro_noise\",\"values\":"
                  "{\"function\":5}}]}\n");
 }
 
 TEST(Vectors, gyro_noise_read_reply) {
     check_vector(
-        "75650d1204f11b000e8a386212af386212af386212afb23f", MIP_DEVICE_ANY,
+        "75650d1204f11b000e8a386212af386212af386212afb23f", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":27,\"ack_code\":0}},{\"descriptor\":138,\"name\":\"gyro_noise_response\","
         "\"values\":{\"noise\":[5.3899999329587445e-05,5.3899999329587445e-05,5.3899999329587445e-05]}}]}\n");
@@ -2527,27 +2527,27 @@ TEST(Vectors, gyro_noise_read_reply) {
 
 TEST(Vectors, accel_bias_model_example) {
     check_vector(
-        "75650d1b1b1c013c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d4952d02c", MIP_DEVICE_ANY,
+        "75650d1b1b1c013c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d4952d02c", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":28,\"name\":\"accel_bias_model\",\"values\":{"
         "\"function\":1,\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":["
         "0.0006000000284984708,0.0006000000284984708,0.0006000000284984708]}}]}\n");
 }
 
 TEST(Vectors, accel_bias_model_reply) {
-    check_vector("75650d0404f11c00fce8", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11c00fce8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":28,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, accel_bias_model_read) {
-    check_vector("75650d03031c020b21", MIP_DEVICE_ANY,
+    check_vector("75650d03031c020b21", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":28,\"name\":\"accel_bias_model\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, accel_bias_model_read_reply) {
     check_vector(
-        "75650d1e04f11c001a8b3c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d495251d1", MIP_DEVICE_ANY,
+        "75650d1e04f11c001a8b3c23d70a3c23d70a3c23d70a3a1d49523a1d49523a1d495251d1", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":28,\"ack_code\":0}},{\"descriptor\":139,\"name\":\"accel_bias_model_"
         "response\",\"values\":{\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"
@@ -2556,27 +2556,27 @@ TEST(Vectors, accel_bias_model_read_reply) {
 
 TEST(Vectors, gyro_bias_model_example) {
     check_vector(
-        "75650d1b1b1d013c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5ac6efe", MIP_DEVICE_ANY,
+        "75650d1b1b1d013c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5ac6efe", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":29,\"name\":\"gyro_bias_model\",\"values\":{"
         "\"function\":1,\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],\"noise\":["
         "0.00015999999595806003,0.00015999999595806003,0.00015999999595806003]}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_model_reply) {
-    check_vector("75650d0404f11d00fdea", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11d00fdea", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":29,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_model_load) {
-    check_vector("75650d03031d040e25", MIP_DEVICE_ANY,
+    check_vector("75650d03031d040e25", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":29,\"name\":\"gyro_bias_model\","
                  "\"values\":{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, gyro_bias_model_read_reply) {
     check_vector(
-        "75650d1e04f11d001a8c3c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5acf0be", MIP_DEVICE_ANY,
+        "75650d1e04f11d001a8c3c23d70a3c23d70a3c23d70a3927c5ac3927c5ac3927c5acf0be", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":29,\"ack_code\":0}},{\"descriptor\":140,\"name\":\"gyro_bias_model_"
         "response\",\"values\":{\"beta\":[0.009999999776482582,0.009999999776482582,0.009999999776482582],"
@@ -2584,105 +2584,105 @@ TEST(Vectors, gyro_bias_model_read_reply) {
 }
 
 TEST(Vectors, zupt_control_write) {
-    check_vector("75650d08081e01010000000017ba", MIP_DEVICE_ANY,
+    check_vector("75650d08081e01010000000017ba", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":30,\"name\":\"zupt_control\","
                  "\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.0}}]}\n");
 }
 
 TEST(Vectors, zupt_control_write_threshold) {
-    check_vector("75650d08081e01013c23d70a57cb", MIP_DEVICE_ANY,
+    check_vector("75650d08081e01013c23d70a57cb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":30,\"name\":\"zupt_control\","
                  "\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.009999999776482582}}]}\n");
 }
 
 TEST(Vectors, zupt_control_reply) {
-    check_vector("75650d0404f11e00feec", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11e00feec", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":30,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, zupt_control_read_reply) {
-    check_vector("75650d0b04f11e00078d013dcccccd3c73", MIP_DEVICE_ANY,
+    check_vector("75650d0b04f11e00078d013dcccccd3c73", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":30,\"ack_code\":0}},{\"descriptor\":141,\"name\":\"zupt_control_"
                  "response\",\"values\":{\"enable\":1,\"threshold\":0.10000000149011612}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_with_time_example) {
-    check_vector("75650d15151f40dd4c000000000006a43c23d70a3c23d70a01c4a6", MIP_DEVICE_ANY,
+    check_vector("75650d15151f40dd4c000000000006a43c23d70a3c23d70a01c4a6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":31,\"name\":\"external_heading_update_"
                  "with_time\",\"values\":{\"gps_tow\":30000.0,\"gps_week\":1700,\"heading\":0."
                  "009999999776482582,\"heading_uncertainty\":0.009999999776482582,\"type\":1}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_with_time_reply) {
-    check_vector("75650d0404f11f00ffee", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11f00ffee", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":31,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_with_time_reply_table_published) {
-    check_vector("75650d0404f10100ffee", MIP_DEVICE_ANY,
+    check_vector("75650d0404f10100ffee", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f10100ffee\"}\n");
 }
 
 TEST(Vectors, external_heading_update_with_time_nack) {
-    check_vector("75650d0404f11f0302f1", MIP_DEVICE_ANY,
+    check_vector("75650d0404f11f0302f1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":31,\"ack_code\":3}}]}\n");
 }
 
 TEST(Vectors, external_heading_update_with_time_cv7) {
-    check_vector("75650d15151f411518010000000008fcc02000003d4ccccd02a749", MIP_DEVICE_ANY,
+    check_vector("75650d15151f411518010000000008fcc02000003d4ccccd02a749", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":31,\"name\":\"external_heading_update_"
                  "with_time\",\"values\":{\"gps_tow\":345600.25,\"gps_week\":2300,\"heading\":-2.5,\"heading_"
                  "uncertainty\":0.05000000074505806,\"type\":2}}]}\n");
 }
 
 TEST(Vectors, pitch_roll_aiding_control_write) {
-    check_vector("75650d04044b01013cc1", MIP_DEVICE_ANY,
+    check_vector("75650d04044b01013cc1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_"
                  "control\",\"values\":{\"function\":1,\"source\":1}}]}\n");
 }
 
 TEST(Vectors, pitch_roll_aiding_control_ack_published) {
-    check_vector("75650d0404f14700b9f0", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14700b9f0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f14700b9f0\"}\n");
 }
 
 TEST(Vectors, pitch_roll_aiding_control_ack) {
-    check_vector("75650d0404f14b002b46", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14b002b46", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":75,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, pitch_roll_aiding_control_read) {
-    check_vector("75650d03034b023a7f", MIP_DEVICE_ANY,
+    check_vector("75650d03034b023a7f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":75,\"name\":\"pitch_roll_aiding_"
                  "control\",\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, pitch_roll_aiding_control_read_reply) {
-    check_vector("75650d0704f14b0003bb00ec5e", MIP_DEVICE_ANY,
+    check_vector("75650d0704f14b0003bb00ec5e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":75,\"ack_code\":0}},{\"descriptor\":187,\"name\":\"pitch_roll_"
                  "aiding_control_response\",\"values\":{\"source\":0}}]}\n");
 }
 
 TEST(Vectors, altitude_aiding_control_write) {
-    check_vector("75650d040447010138b5", MIP_DEVICE_ANY,
+    check_vector("75650d040447010138b5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":71,\"name\":\"altitude_aiding_"
                  "control\",\"values\":{\"function\":1,\"source\":1}}]}\n");
 }
 
 TEST(Vectors, altitude_aiding_control_ack) {
-    check_vector("75650d0404f14700273e", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14700273e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":71,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, altitude_aiding_control_read_reply) {
-    check_vector("75650d0704f1470003b701e543", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1470003b701e543", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":71,\"ack_code\":0}},{\"descriptor\":183,\"name\":\"altitude_aiding_"
                  "control_response\",\"values\":{\"source\":1}}]}\n");
@@ -2690,100 +2690,100 @@ TEST(Vectors, altitude_aiding_control_read_reply) {
 
 TEST(Vectors, mag_noise_std_dev_write) {
     check_vector(
-        "75650d0f0f42013ca3d70a3ca3d70a3ca3d70a88d3", MIP_DEVICE_ANY,
+        "75650d0f0f42013ca3d70a3ca3d70a3ca3d70a88d3", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":66,\"name\":\"mag_noise_std_dev\",\"values\":{"
         "\"function\":1,\"noise\":[0.019999999552965164,0.019999999552965164,0.019999999552965164]}}]}\n");
 }
 
 TEST(Vectors, mag_noise_std_dev_ack) {
-    check_vector("75650d0404f142002234", MIP_DEVICE_ANY,
+    check_vector("75650d0404f142002234", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":66,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_noise_std_dev_read_reply) {
-    check_vector("75650d1204f142000eb13ca3d70a3d0000003f0000002b50", MIP_DEVICE_ANY,
+    check_vector("75650d1204f142000eb13ca3d70a3d0000003f0000002b50", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":66,\"ack_code\":0}},{\"descriptor\":177,\"name\":\"mag_noise_std_"
                  "dev_response\",\"values\":{\"noise\":[0.019999999552965164,0.03125,0.5]}}]}\n");
 }
 
 TEST(Vectors, gravity_noise_std_dev_write) {
-    check_vector("75650d0f0f28013c23d70a3c23d70a3c23d70aeee7", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f28013c23d70a3c23d70a3c23d70aeee7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
                  "\"values\":{\"function\":1,\"noise\":[0.009999999776482582,0.009999999776482582,0."
                  "009999999776482582]}}]}\n");
 }
 
 TEST(Vectors, gravity_noise_std_dev_ack) {
-    check_vector("75650d0404f128000800", MIP_DEVICE_ANY,
+    check_vector("75650d0404f128000800", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gravity_noise_std_dev_read) {
-    check_vector("75650d030328021739", MIP_DEVICE_ANY,
+    check_vector("75650d030328021739", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, gravity_noise_std_dev_read_reply) {
-    check_vector("75650d1204f128000e933c23d70a3c8000003e800000719e", MIP_DEVICE_ANY,
+    check_vector("75650d1204f128000e933c23d70a3c8000003e800000719e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":40,\"ack_code\":0}},{\"descriptor\":147,\"name\":\"gravity_noise_"
                  "std_dev_response\",\"values\":{\"noise\":[0.009999999776482582,0.015625,0.25]}}]}\n");
 }
 
 TEST(Vectors, gravity_noise_std_dev_load) {
-    check_vector("75650d03032804193b", MIP_DEVICE_ANY,
+    check_vector("75650d03032804193b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":40,\"name\":\"gravity_noise_std_dev\","
                  "\"values\":{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, pressure_altitude_noise_std_dev_write) {
-    check_vector("75650d070729013f800000de4e", MIP_DEVICE_ANY,
+    check_vector("75650d070729013f800000de4e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":41,\"name\":\"pressure_altitude_noise_"
                  "std_dev\",\"values\":{\"function\":1,\"noise\":1.0}}]}\n");
 }
 
 TEST(Vectors, pressure_altitude_noise_std_dev_write_published) {
-    check_vector("75650d050529013f800000de4e", MIP_DEVICE_ANY,
+    check_vector("75650d050529013f800000de4e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d050529013f800000de4e\"}\n");
 }
 
 TEST(Vectors, pressure_altitude_noise_std_dev_ack) {
-    check_vector("75650d0404f129000902", MIP_DEVICE_ANY,
+    check_vector("75650d0404f129000902", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":41,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, pressure_altitude_noise_std_dev_ack_published) {
-    check_vector("75650d0404f1290097ac", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1290097ac", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f1290097ac\"}\n");
 }
 
 TEST(Vectors, pressure_altitude_noise_std_dev_read_reply) {
-    check_vector("75650d0a04f1290006944020000009e2", MIP_DEVICE_ANY,
+    check_vector("75650d0a04f1290006944020000009e2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":41,\"ack_code\":0}},{\"descriptor\":148,\"name\":\"pressure_"
                  "altitude_noise_std_dev_response\",\"values\":{\"noise\":2.5}}]}\n");
 }
 
 TEST(Vectors, hard_iron_offset_noise_write) {
-    check_vector("75650d0f0f2b013a83126f3a83126f3a83126febd2", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f2b013a83126f3a83126f3a83126febd2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":43,\"name\":\"hard_iron_offset_"
                  "noise\",\"values\":{\"function\":1,\"noise\":[0.0010000000474974513,0.0010000000474974513,"
                  "0.0010000000474974513]}}]}\n");
 }
 
 TEST(Vectors, hard_iron_offset_noise_ack) {
-    check_vector("75650d0404f12b000b06", MIP_DEVICE_ANY,
+    check_vector("75650d0404f12b000b06", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":43,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, hard_iron_offset_noise_read_reply) {
-    check_vector("75650d1204f12b000e963a83126f3b03126f3b83126ff98c", MIP_DEVICE_ANY,
+    check_vector("75650d1204f12b000e963a83126f3b03126f3b83126ff98c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":43,\"ack_code\":0}},{\"descriptor\":150,\"name\":\"hard_iron_offset_"
                  "noise_response\",\"values\":{\"noise\":[0.0010000000474974513,0.0020000000949949026,0."
@@ -2792,7 +2792,7 @@ TEST(Vectors, hard_iron_offset_noise_read_reply) {
 
 TEST(Vectors, soft_iron_matrix_noise_write) {
     check_vector("75650d27272c0138d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b71738d1b717f18c",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":44,\"name\":\"soft_iron_matrix_"
                  "noise\",\"values\":{\"function\":1,\"noise\":[9.999999747378752e-05,9.999999747378752e-05,"
                  "9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9.999999747378752e-05,9."
@@ -2800,25 +2800,25 @@ TEST(Vectors, soft_iron_matrix_noise_write) {
 }
 
 TEST(Vectors, soft_iron_matrix_noise_table_published) {
-    check_vector("75650d0f0f2c0138d1b71738d1b71738d1b717f18c", MIP_DEVICE_ANY,
+    check_vector("75650d0f0f2c0138d1b71738d1b71738d1b717f18c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0f0f2c0138d1b71738d1b71738d1b717f18c\"}\n");
 }
 
 TEST(Vectors, soft_iron_matrix_noise_ack) {
-    check_vector("75650d0404f12c000c08", MIP_DEVICE_ANY,
+    check_vector("75650d0404f12c000c08", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":44,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, soft_iron_matrix_noise_ack_published) {
-    check_vector("75650d0404f12c009ab2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f12c009ab2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f12c009ab2\"}\n");
 }
 
 TEST(Vectors, soft_iron_matrix_noise_read_reply) {
     check_vector(
         "75650d2a04f12c00269738d1b7170000000000000000000000003951b717000000000000000000000000399d49528fdc",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":44,\"ack_code\":0}},{\"descriptor\":151,\"name\":\"soft_iron_matrix_noise_"
         "response\",\"values\":{\"noise\":[9.999999747378752e-05,0.0,0.0,0.0,0.00019999999494757503,0.0,0.0,"
@@ -2826,137 +2826,137 @@ TEST(Vectors, soft_iron_matrix_noise_read_reply) {
 }
 
 TEST(Vectors, zero_angular_rate_update_control_write) {
-    check_vector("75650d08082001010000000019c8", MIP_DEVICE_ANY,
+    check_vector("75650d08082001010000000019c8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_"
                  "update_control\",\"values\":{\"function\":1,\"enable\":1,\"threshold\":0.0}}]}\n");
 }
 
 TEST(Vectors, zero_angular_rate_update_control_ack) {
-    check_vector("75650d0404f1200000f0", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1200000f0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":32,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, zero_angular_rate_update_control_read_reply) {
     check_vector(
-        "75650d0b04f12000078e013d4ccccdbf0b", MIP_DEVICE_ANY,
+        "75650d0b04f12000078e013d4ccccdbf0b", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":32,\"ack_code\":0}},{\"descriptor\":142,\"name\":\"zero_angular_rate_update_"
         "control_response\",\"values\":{\"enable\":1,\"threshold\":0.05000000074505806}}]}\n");
 }
 
 TEST(Vectors, zero_angular_rate_update_control_default) {
-    check_vector("75650d03032005122c", MIP_DEVICE_ANY,
+    check_vector("75650d03032005122c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":32,\"name\":\"zero_angular_rate_"
                  "update_control\",\"values\":{\"function\":5}}]}\n");
 }
 
 TEST(Vectors, tare_orientation_write) {
-    check_vector("75650d04042101071849", MIP_DEVICE_ANY,
+    check_vector("75650d04042101071849", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
                  "\"values\":{\"function\":1,\"axes\":7}}]}\n");
 }
 
 TEST(Vectors, tare_orientation_ack) {
-    check_vector("75650d0404f1210001f2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1210001f2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":33,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, tare_orientation_reset_all) {
-    check_vector("75650d04042101001142", MIP_DEVICE_ANY,
+    check_vector("75650d04042101001142", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
                  "\"values\":{\"function\":1,\"axes\":0}}]}\n");
 }
 
 TEST(Vectors, tare_orientation_save) {
-    check_vector("75650d03032103112c", MIP_DEVICE_ANY,
+    check_vector("75650d03032103112c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":33,\"name\":\"tare_orientation\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, commanded_zupt) {
-    check_vector("75650d0202220d17", MIP_DEVICE_ANY,
+    check_vector("75650d0202220d17", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":34,\"name\":\"commanded_zupt\","
                  "\"values\":{}}]}\n");
 }
 
 TEST(Vectors, commanded_zupt_ack) {
-    check_vector("75650d0404f1220002f4", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1220002f4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":34,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, commanded_zero_angular_rate_update) {
-    check_vector("75650d0202230e18", MIP_DEVICE_ANY,
+    check_vector("75650d0202230e18", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":35,\"name\":\"commanded_zero_angular_"
                  "rate_update\",\"values\":{}}]}\n");
 }
 
 TEST(Vectors, commanded_zero_angular_rate_update_ack) {
-    check_vector("75650d0404f1230003f6", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1230003f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":35,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, declination_source_write) {
-    check_vector("75650d0808430103000000003ec7", MIP_DEVICE_ANY,
+    check_vector("75650d0808430103000000003ec7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\","
                  "\"values\":{\"function\":1,\"source\":3,\"declination\":0.0}}]}\n");
 }
 
 TEST(Vectors, declination_source_ack) {
-    check_vector("75650d0404f143002336", MIP_DEVICE_ANY,
+    check_vector("75650d0404f143002336", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":67,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, declination_source_read_reply) {
-    check_vector("75650d0b04f1430007b202be800000235e", MIP_DEVICE_ANY,
+    check_vector("75650d0b04f1430007b202be800000235e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":67,\"ack_code\":0}},{\"descriptor\":178,\"name\":\"declination_"
                  "source_response\",\"values\":{\"source\":2,\"declination\":-0.25}}]}\n");
 }
 
 TEST(Vectors, declination_source_write_none_cv7) {
-    check_vector("75650d0808430101000000003cbd", MIP_DEVICE_ANY,
+    check_vector("75650d0808430101000000003cbd", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":67,\"name\":\"declination_source\","
                  "\"values\":{\"function\":1,\"source\":1,\"declination\":0.0}}]}\n");
 }
 
 TEST(Vectors, inclination_source_write) {
-    check_vector("75650d08084c0103000000004706", MIP_DEVICE_ANY,
+    check_vector("75650d08084c0103000000004706", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":76,\"name\":\"inclination_source\","
                  "\"values\":{\"function\":1,\"source\":3,\"inclination\":0.0}}]}\n");
 }
 
 TEST(Vectors, inclination_source_ack) {
-    check_vector("75650d0404f14c002c48", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14c002c48", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":76,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, inclination_source_read_reply) {
-    check_vector("75650d0b04f14c0007bc033f900000c824", MIP_DEVICE_ANY,
+    check_vector("75650d0b04f14c0007bc033f900000c824", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":76,\"ack_code\":0}},{\"descriptor\":188,\"name\":\"inclination_"
                  "source_response\",\"values\":{\"source\":3,\"inclination\":1.125}}]}\n");
 }
 
 TEST(Vectors, magnetic_field_magnitude_source_write) {
-    check_vector("75650d08084d01033f0000008709", MIP_DEVICE_ANY,
+    check_vector("75650d08084d01033f0000008709", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":77,\"name\":\"magnetic_field_"
                  "magnitude_source\",\"values\":{\"function\":1,\"source\":3,\"magnitude\":0.5}}]}\n");
 }
 
 TEST(Vectors, magnetic_field_magnitude_source_ack) {
-    check_vector("75650d0404f14d002d4a", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14d002d4a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":77,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, magnetic_field_magnitude_source_read_reply) {
-    check_vector("75650d0b04f14d0007bd013f0000003879", MIP_DEVICE_ANY,
+    check_vector("75650d0b04f14d0007bd013f0000003879", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":77,\"ack_code\":0}},{\"descriptor\":189,\"name\":\"magnetic_field_"
                  "magnitude_source_response\",\"values\":{\"source\":1,\"magnitude\":0.5}}]}\n");
@@ -2964,7 +2964,7 @@ TEST(Vectors, magnetic_field_magnitude_source_read_reply) {
 
 TEST(Vectors, gravity_magnitude_adaptive_measurement_write) {
     check_vector(
-        "75650d1c1c4401013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f6fe8", MIP_DEVICE_ANY,
+        "75650d1c1c4401013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f6fe8", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_adaptive_"
         "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0."
         "20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,"
@@ -2972,25 +2972,25 @@ TEST(Vectors, gravity_magnitude_adaptive_measurement_write) {
 }
 
 TEST(Vectors, gravity_magnitude_adaptive_measurement_ack) {
-    check_vector("75650d0404f144002438", MIP_DEVICE_ANY,
+    check_vector("75650d0404f144002438", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":68,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, gravity_magnitude_adaptive_measurement_ack_published) {
-    check_vector("75650d0404f14400b2e2", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14400b2e2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f14400b2e2\"}\n");
 }
 
 TEST(Vectors, gravity_magnitude_adaptive_measurement_auto_only) {
-    check_vector("75650d040444010236ad", MIP_DEVICE_ANY,
+    check_vector("75650d040444010236ad", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":68,\"name\":\"gravity_magnitude_"
                  "adaptive_measurement\",\"values\":{\"function\":1,\"mode\":2}}]}\n");
 }
 
 TEST(Vectors, gravity_magnitude_adaptive_measurement_read_reply) {
     check_vector(
-        "75650d1f04f144001bb3023f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f1989", MIP_DEVICE_ANY,
+        "75650d1f04f144001bb3023f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f1989", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":68,\"ack_code\":0}},{\"descriptor\":179,\"name\":\"gravity_magnitude_"
         "adaptive_measurement_response\",\"values\":{\"mode\":2,\"frequency\":1.0,\"low_limit\":-0."
@@ -3000,7 +3000,7 @@ TEST(Vectors, gravity_magnitude_adaptive_measurement_read_reply) {
 
 TEST(Vectors, mag_magnitude_adaptive_measurement_write) {
     check_vector(
-        "75650d1c1c4501013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f7003", MIP_DEVICE_ANY,
+        "75650d1c1c4501013f800000be4ccccd3e4ccccd3e4ccccd3e4ccccd3b83126f7003", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_"
         "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":1.0,\"low_limit\":-0."
         "20000000298023224,\"high_limit\":0.20000000298023224,\"low_limit_uncertainty\":0.20000000298023224,"
@@ -3008,24 +3008,25 @@ TEST(Vectors, mag_magnitude_adaptive_measurement_write) {
 }
 
 TEST(Vectors, mag_magnitude_adaptive_measurement_ack) {
-    check_vector("75650d0404f14500253a", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14500253a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":69,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_magnitude_adaptive_measurement_ack_published) {
-    check_vector("75650d0404f14500b3e4", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14500b3e4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f14500b3e4\"}\n");
 }
 
 TEST(Vectors, mag_magnitude_adaptive_measurement_disable) {
-    check_vector("75650d040445010035ae", MIP_DEVICE_ANY,
+    check_vector("75650d040445010035ae", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":69,\"name\":\"mag_magnitude_adaptive_"
                  "measurement\",\"values\":{\"function\":1,\"mode\":0}}]}\n");
 }
 
 TEST(Vectors, mag_magnitude_adaptive_measurement_read_reply) {
-    check_vector("75650d1f04f145001bb401400000003e8000003f4000003e0000003e0000003c23d70a49ac", MIP_DEVICE_ANY,
+    check_vector("75650d1f04f145001bb401400000003e8000003f4000003e0000003e0000003c23d70a49ac",
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":69,\"ack_code\":0}},{\"descriptor\":180,\"name\":\"mag_magnitude_"
                  "adaptive_measurement_response\",\"values\":{\"mode\":1,\"frequency\":2.0,\"low_limit\":0."
@@ -3034,7 +3035,7 @@ TEST(Vectors, mag_magnitude_adaptive_measurement_read_reply) {
 }
 
 TEST(Vectors, mag_dip_angle_adaptive_measurement_write) {
-    check_vector("75650d1414460101412000003e99999a3e4ccccd3c23d70a255f", MIP_DEVICE_ANY,
+    check_vector("75650d1414460101412000003e99999a3e4ccccd3c23d70a255f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":70,\"name\":\"mag_dip_angle_adaptive_"
                  "measurement\",\"values\":{\"function\":1,\"mode\":1,\"frequency\":10.0,\"high_limit\":0."
                  "30000001192092896,\"high_limit_uncertainty\":0.20000000298023224,\"minimum_uncertainty\":0."
@@ -3042,19 +3043,19 @@ TEST(Vectors, mag_dip_angle_adaptive_measurement_write) {
 }
 
 TEST(Vectors, mag_dip_angle_adaptive_measurement_ack) {
-    check_vector("75650d0404f14600263c", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14600263c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":70,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_dip_angle_adaptive_measurement_ack_published) {
-    check_vector("75650d0404f14600b4e6", MIP_DEVICE_ANY,
+    check_vector("75650d0404f14600b4e6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f14600b4e6\"}\n");
 }
 
 TEST(Vectors, mag_dip_angle_adaptive_measurement_read_reply) {
     check_vector(
-        "75650d1704f1460013b500412000003e99999a3e4ccccd3c23d70acfa6", MIP_DEVICE_ANY,
+        "75650d1704f1460013b500412000003e99999a3e4ccccd3c23d70acfa6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":70,\"ack_code\":0}},{\"descriptor\":181,\"name\":\"mag_dip_angle_adaptive_"
         "measurement_response\",\"values\":{\"mode\":0,\"frequency\":10.0,\"high_limit\":0.30000001192092896,"
@@ -3062,59 +3063,60 @@ TEST(Vectors, mag_dip_angle_adaptive_measurement_read_reply) {
 }
 
 TEST(Vectors, mag_capture_auto_calibration_write) {
-    check_vector("75650d030327011536", MIP_DEVICE_ANY,
+    check_vector("75650d030327011536", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_"
                  "calibration\",\"values\":{\"function\":1}}]}\n");
 }
 
 TEST(Vectors, mag_capture_auto_calibration_table_published) {
-    check_vector("75650d020227011536", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"75650d020227011536\"}\n");
+    check_vector("75650d020227011536", MIPC_DEVICE_ANY,
+                 "{\"offset\":0,\"skipped\":\"75650d020227011536\"}\n");
 }
 
 TEST(Vectors, mag_capture_auto_calibration_ack) {
-    check_vector("75650d0404f1270007fe", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1270007fe", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":39,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, mag_capture_auto_calibration_ack_published) {
-    check_vector("75650d0404f1270095a8", MIP_DEVICE_ANY,
+    check_vector("75650d0404f1270095a8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650d0404f1270095a8\"}\n");
 }
 
 TEST(Vectors, mag_capture_auto_calibration_save) {
-    check_vector("75650d030327031738", MIP_DEVICE_ANY,
+    check_vector("75650d030327031738", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":39,\"name\":\"mag_capture_auto_"
                  "calibration\",\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, aiding_measurement_control_write) {
-    check_vector("75650d060650010004004871", MIP_DEVICE_ANY,
+    check_vector("75650d060650010004004871", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
                  "control\",\"values\":{\"function\":1,\"source\":4,\"enable\":false}}]}\n");
 }
 
 TEST(Vectors, aiding_measurement_control_read) {
-    check_vector("75650d050550020001441e", MIP_DEVICE_ANY,
+    check_vector("75650d050550020001441e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
                  "control\",\"values\":{\"function\":2,\"source\":1}}]}\n");
 }
 
 TEST(Vectors, aiding_measurement_control_save_all) {
-    check_vector("75650d05055003ffff421d", MIP_DEVICE_ANY,
+    check_vector("75650d05055003ffff421d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
                  "control\",\"values\":{\"function\":3,\"source\":65535}}]}\n");
 }
 
 TEST(Vectors, aiding_measurement_control_read_reply) {
-    check_vector("75650d0904f1500005d00001010cce", MIP_DEVICE_ANY,
+    check_vector("75650d0904f1500005d00001010cce", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":80,\"ack_code\":0}},{\"descriptor\":208,\"name\":\"aiding_"
                  "measurement_control_response\",\"values\":{\"source\":1,\"enable\":true}}]}\n");
 }
 
 TEST(Vectors, aiding_measurement_control_write_external_heading) {
-    check_vector("75650d060650010005014a74", MIP_DEVICE_ANY,
+    check_vector("75650d060650010005014a74", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_measurement_"
                  "control\",\"values\":{\"function\":1,\"source\":5,\"enable\":true}}]}\n");
 }
@@ -3122,7 +3124,7 @@ TEST(Vectors, aiding_measurement_control_write_external_heading) {
 TEST(Vectors, initialization_configuration_write_manual_llh) {
     check_vector(
         "75650d2b2b520100030042b4000040200000bfc000004231c000c292400042c900003f800000bf0000000000000002ba90",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\","
         "\"values\":{\"function\":1,\"wait_for_run_command\":0,\"initial_cond_src\":3,\"auto_heading_"
         "alignment_selector\":0,\"initial_heading\":90.0,\"initial_pitch\":2.5,\"initial_roll\":-1.5,"
@@ -3133,7 +3135,7 @@ TEST(Vectors, initialization_configuration_write_manual_llh) {
 TEST(Vectors, initialization_configuration_write_auto) {
     check_vector(
         "75650d2b2b5201010006000000000000000000000000000000000000000000000000000000000000000000000000019831",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_configuration\","
         "\"values\":{\"function\":1,\"wait_for_run_command\":1,\"initial_cond_src\":0,\"auto_heading_"
         "alignment_selector\":6,\"initial_heading\":0.0,\"initial_pitch\":0.0,\"initial_roll\":0.0,\"initial_"
@@ -3141,7 +3143,7 @@ TEST(Vectors, initialization_configuration_write_auto) {
 }
 
 TEST(Vectors, initialization_configuration_read) {
-    check_vector("75650d03035202418d", MIP_DEVICE_ANY,
+    check_vector("75650d03035202418d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":82,\"name\":\"initialization_"
                  "configuration\",\"values\":{\"function\":2}}]}\n");
 }
@@ -3149,7 +3151,7 @@ TEST(Vectors, initialization_configuration_read) {
 TEST(Vectors, initialization_configuration_read_reply) {
     check_vector("75650d2e04f152002ad2000109c234000000000000000000004987e357ca93df524a73218e000000003e800000b"
                  "e00000001d954",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":82,\"ack_code\":0}},{\"descriptor\":210,\"name\":\"initialization_"
                  "configuration_response\",\"values\":{\"wait_for_run_command\":0,\"initial_cond_src\":1,"
@@ -3159,32 +3161,32 @@ TEST(Vectors, initialization_configuration_read_reply) {
 }
 
 TEST(Vectors, adaptive_filter_control_write) {
-    check_vector("75650d06065301033a981c8d", MIP_DEVICE_ANY,
+    check_vector("75650d06065301033a981c8d", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":83,\"name\":\"adaptive_filter_"
                  "control\",\"values\":{\"function\":1,\"level\":3,\"time_limit\":15000}}]}\n");
 }
 
 TEST(Vectors, adaptive_filter_control_read_reply) {
-    check_vector("75650d0904f1530005d30001f405e2", MIP_DEVICE_ANY,
+    check_vector("75650d0904f1530005d30001f405e2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":83,\"ack_code\":0}},{\"descriptor\":211,\"name\":\"adaptive_filter_"
                  "control_response\",\"values\":{\"level\":0,\"time_limit\":500}}]}\n");
 }
 
 TEST(Vectors, multi_antenna_offset_write) {
-    check_vector("75650d10105401023f000000be800000bf8000001a91", MIP_DEVICE_ANY,
+    check_vector("75650d10105401023f000000be800000bf8000001a91", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\","
                  "\"values\":{\"function\":1,\"receiver_id\":2,\"antenna_offset\":[0.5,-0.25,-1.0]}}]}\n");
 }
 
 TEST(Vectors, multi_antenna_offset_read) {
-    check_vector("75650d040454020146de", MIP_DEVICE_ANY,
+    check_vector("75650d040454020146de", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":84,\"name\":\"multi_antenna_offset\","
                  "\"values\":{\"function\":2,\"receiver_id\":1}}]}\n");
 }
 
 TEST(Vectors, multi_antenna_offset_read_reply) {
-    check_vector("75650d1304f154000fd401bea3d70a3de147aebf23d70a3ffb", MIP_DEVICE_ANY,
+    check_vector("75650d1304f154000fd401bea3d70a3de147aebf23d70a3ffb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":84,\"ack_code\":0}},{\"descriptor\":212,\"name\":\"multi_antenna_"
                  "offset_response\",\"values\":{\"receiver_id\":1,\"antenna_offset\":[-0.3199999928474426,0."
@@ -3192,7 +3194,7 @@ TEST(Vectors, multi_antenna_offset_read_reply) {
 }
 
 TEST(Vectors, relative_position_configuration_write) {
-    check_vector("75650d1d1d550101024046380000000000c052480000000000404ba00000000000bd4f", MIP_DEVICE_ANY,
+    check_vector("75650d1d1d550101024046380000000000c052480000000000404ba00000000000bd4f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":85,\"name\":\"relative_position_"
                  "configuration\",\"values\":{\"function\":1,\"source\":1,\"reference_frame_selector\":2,"
                  "\"reference_coordinates\":[44.4375,-73.125,55.25]}}]}\n");
@@ -3200,7 +3202,7 @@ TEST(Vectors, relative_position_configuration_write) {
 
 TEST(Vectors, relative_position_configuration_read_reply) {
     check_vector("75650d2004f155001cd500014130fc6ae86e47a0c1527bea41eb851f414e6431e0000000a3eb",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":85,\"ack_code\":0}},{\"descriptor\":213,\"name\":\"relative_"
                  "position_configuration_response\",\"values\":{\"source\":0,\"reference_frame_selector\":1,"
@@ -3209,67 +3211,67 @@ TEST(Vectors, relative_position_configuration_read_reply) {
 
 TEST(Vectors, reference_point_lever_arm_write) {
     check_vector(
-        "75650d10105601013fc0000000000000bf4000005db2", MIP_DEVICE_ANY,
+        "75650d10105601013fc0000000000000bf4000005db2", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":86,\"name\":\"reference_point_lever_arm\","
         "\"values\":{\"function\":1,\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}\n");
 }
 
 TEST(Vectors, reference_point_lever_arm_read_reply) {
     check_vector(
-        "75650d1304f156000fd6013fc0000000000000bf4000002944", MIP_DEVICE_ANY,
+        "75650d1304f156000fd6013fc0000000000000bf4000002944", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":86,\"ack_code\":0}},{\"descriptor\":214,\"name\":\"reference_point_lever_arm_"
         "response\",\"values\":{\"ref_point_sel\":1,\"lever_arm_offset\":[1.5,0.0,-0.75]}}]}\n");
 }
 
 TEST(Vectors, speed_lever_arm_write) {
-    check_vector("75650d1010610101bf000000bf4000003e800000e68b", MIP_DEVICE_ANY,
+    check_vector("75650d1010610101bf000000bf4000003e800000e68b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\","
                  "\"values\":{\"function\":1,\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}\n");
 }
 
 TEST(Vectors, speed_lever_arm_read) {
-    check_vector("75650d04046102015305", MIP_DEVICE_ANY,
+    check_vector("75650d04046102015305", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":97,\"name\":\"speed_lever_arm\","
                  "\"values\":{\"function\":2,\"source\":1}}]}\n");
 }
 
 TEST(Vectors, speed_lever_arm_read_reply) {
-    check_vector("75650d1304f161000fe101bf000000bf4000003e800000bdcd", MIP_DEVICE_ANY,
+    check_vector("75650d1304f161000fe101bf000000bf4000003e800000bdcd", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":97,\"ack_code\":0}},{\"descriptor\":225,\"name\":\"speed_lever_arm_"
                  "response\",\"values\":{\"source\":1,\"lever_arm_offset\":[-0.5,-0.75,0.25]}}]}\n");
 }
 
 TEST(Vectors, wheeled_vehicle_constraint_control_write) {
-    check_vector("75650d04046301015409", MIP_DEVICE_ANY,
+    check_vector("75650d04046301015409", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_"
                  "constraint_control\",\"values\":{\"function\":1,\"enable\":1}}]}\n");
 }
 
 TEST(Vectors, wheeled_vehicle_constraint_control_read_reply) {
-    check_vector("75650d0704f1630003e3002c26", MIP_DEVICE_ANY,
+    check_vector("75650d0704f1630003e3002c26", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_"
                  "constraint_control_response\",\"values\":{\"enable\":0}}]}\n");
 }
 
 TEST(Vectors, gnss_antenna_calibration_control_write) {
-    check_vector("75650d08086401013f0000009ca0", MIP_DEVICE_ANY,
+    check_vector("75650d08086401013f0000009ca0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":100,\"name\":\"gnss_antenna_"
                  "calibration_control\",\"values\":{\"function\":1,\"enable\":1,\"max_offset\":0.5}}]}\n");
 }
 
 TEST(Vectors, gnss_antenna_calibration_control_read_reply) {
     check_vector(
-        "75650d0b04f1640007e4013dcccccdd9f3", MIP_DEVICE_ANY,
+        "75650d0b04f1640007e4013dcccccdd9f3", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":100,\"ack_code\":0}},{\"descriptor\":228,\"name\":\"gnss_antenna_calibration_"
         "control_response\",\"values\":{\"enable\":1,\"max_offset\":0.10000000149011612}}]}\n");
 }
 
 TEST(Vectors, two_settings_one_packet) {
-    check_vector("75650d06036302035302ad6b", MIP_DEVICE_ANY,
+    check_vector("75650d06036302035302ad6b", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":99,\"name\":\"wheeled_vehicle_"
                  "constraint_control\",\"values\":{\"function\":2}},{\"descriptor\":83,\"name\":\"adaptive_"
                  "filter_control\",\"values\":{\"function\":2}}]}\n");
@@ -3277,7 +3279,7 @@ TEST(Vectors, two_settings_one_packet) {
 
 TEST(Vectors, two_settings_one_packet_reply) {
     check_vector(
-        "75650d1004f1630003e30104f1530005d3023a982abd", MIP_DEVICE_ANY,
+        "75650d1004f1630003e30104f1530005d3023a982abd", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":99,\"ack_code\":0}},{\"descriptor\":227,\"name\":\"wheeled_vehicle_"
         "constraint_control_response\",\"values\":{\"enable\":1}},{\"descriptor\":241,\"name\":\"ack_nack\","
@@ -3289,7 +3291,7 @@ TEST(Vectors, filter_nav_stream_gx5) {
     check_vector(
         "756582560e1141151802000000000898000108100003000200831c014046400000000000c052500000000000405e08000000"
         "0000000110023fc00000be8000003e000000000114033f000000bf0000003f000000bf00000000011085",
-        MIP_DEVICE_GX5_45,
+        MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":17,\"name\":\"gps_timestamp\",\"values\":{"
         "\"tow\":345600.5,\"week_number\":2200,\"valid_flags\":1}},{\"descriptor\":16,\"name\":\"filter_"
         "status\",\"device\":\"gx5_45\",\"values\":{\"filter_state\":3,\"dynamics_mode\":2,\"status_flags\":"
@@ -3301,21 +3303,21 @@ TEST(Vectors, filter_nav_stream_gx5) {
 
 TEST(Vectors, filter_status_gx5_initializing) {
     check_vector(
-        "756582080810000100033000b04d", MIP_DEVICE_GX5_45,
+        "756582080810000100033000b04d", MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":16,\"name\":\"filter_status\",\"device\":"
         "\"gx5_45\",\"values\":{\"filter_state\":1,\"dynamics_mode\":3,\"status_flags\":12288}}]}\n");
 }
 
 TEST(Vectors, filter_status_cv7_faq_4_1_1025) {
     check_vector(
-        "75658208081000040001040186ff", MIP_DEVICE_CV7_INS,
+        "75658208081000040001040186ff", MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":16,\"name\":\"filter_status\",\"device\":"
         "\"cv7_ins\",\"values\":{\"filter_state\":4,\"dynamics_mode\":1,\"status_flags\":1025}}]}\n");
 }
 
 TEST(Vectors, filter_status_cv7_converging_warnings) {
     check_vector(
-        "75658208081000020001108a1996", MIP_DEVICE_CV7_INS,
+        "75658208081000020001108a1996", MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":16,\"name\":\"filter_status\",\"device\":"
         "\"cv7_ins\",\"values\":{\"filter_state\":2,\"dynamics_mode\":1,\"status_flags\":4234}}]}\n");
 }
@@ -3324,7 +3326,7 @@ TEST(Vectors, filter_attitude_fields) {
     check_vector(
         "7565825c2804000000003f80000000000000bf800000000000000000000000000000000000003f800000000110053e800000"
         "be0000003fc000000001100a3c0000003c8000003d800000000014123b0000003b8000003c0000003c800000000117b7",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":4,\"name\":\"attitude_dcm\",\"values\":{"
         "\"dcm\":[0.0,1.0,0.0,-1.0,0.0,0.0,0.0,0.0,1.0],\"valid_flags\":1}},{\"descriptor\":5,\"name\":"
         "\"euler_angles\",\"values\":{\"roll\":0.25,\"pitch\":-0.125,\"yaw\":1.5,\"valid_flags\":1}},{"
@@ -3339,7 +3341,7 @@ TEST(Vectors, filter_bias_and_uncertainty_fields) {
         "7565826010063a800000bb0000003a000000000110073d000000bd8000003e0000000001100b39800000398000003a000000"
         "0001100c3c0000003c0000003c800000000110083fa000003fa0000040200000000110093e0000003e0000003e8000000000"
         "f5c1",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":6,\"name\":\"gyro_bias\",\"values\":{\"bias\":"
         "[0.0009765625,-0.001953125,0.00048828125],\"valid_flags\":1}},{\"descriptor\":7,\"name\":\"accel_"
         "bias\",\"values\":{\"bias\":[0.03125,-0.0625,0.125],\"valid_flags\":1}},{\"descriptor\":11,\"name\":"
@@ -3354,7 +3356,7 @@ TEST(Vectors, filter_bias_and_uncertainty_fields) {
 TEST(Vectors, filter_compensated_inertial_gx5) {
     check_vector(
         "75658228100d3f000000bfa00000000000000001100e3d800000bd0000003f8000000001080f411d000000010e41",
-        MIP_DEVICE_GX5_45,
+        MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":13,\"name\":\"linear_accel\",\"values\":{"
         "\"accel\":[0.5,-1.25,0.0],\"valid_flags\":1}},{\"descriptor\":14,\"name\":\"comp_angular_rate\","
         "\"values\":{\"gyro\":[0.0625,-0.03125,1.0],\"valid_flags\":1}},{\"descriptor\":15,\"name\":\"wgs84_"
@@ -3365,7 +3367,7 @@ TEST(Vectors, filter_gravity_comp_accel_pressure_alt_mag_model) {
     check_vector(
         "7565824010133f000000be800000411c00000001101c3fc00000c0000000c11c00000001082144800000000018153e800000"
         "bd0000003f0000003f800000be0000000001b593",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":19,\"name\":\"gravity_vector\",\"values\":{"
         "\"gravity\":[0.5,-0.25,9.75],\"valid_flags\":1}},{\"descriptor\":28,\"name\":\"compensated_accel\","
         "\"values\":{\"accel\":[1.5,-2.0,-9.75],\"valid_flags\":1}},{\"descriptor\":33,\"name\":\"pressure_"
@@ -3377,7 +3379,7 @@ TEST(Vectors, filter_gravity_comp_accel_pressure_alt_mag_model) {
 TEST(Vectors, filter_scale_factors) {
     check_vector("7565824010163c000000bb8000000000000000011017ba8000003b00000039800000000110183d8000003d80000"
                  "03e000000000010193d0000003c8000003f0000000001d2e6",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":22,\"name\":\"gyro_scale_factor\","
                  "\"values\":{\"scale_factor\":[0.0078125,-0.00390625,0.0],\"valid_flags\":1}},{"
                  "\"descriptor\":23,\"name\":\"accel_scale_factor\",\"values\":{\"scale_factor\":[-0."
@@ -3389,7 +3391,7 @@ TEST(Vectors, filter_scale_factors) {
 
 TEST(Vectors, filter_heading_update_state_standard_atmosphere) {
     check_vector("756582260e143fc000003d80000000050001182044800000447fe000410800004460b0003f88000000016a9d",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":20,\"name\":\"heading_update_state\","
                  "\"values\":{\"heading\":1.5,\"heading_uncertainty\":0.0625,\"source\":5,\"valid_flags\":1}}"
                  ",{\"descriptor\":32,\"name\":\"standard_atmosphere\",\"values\":{\"geometric_altitude\":"
@@ -3399,7 +3401,7 @@ TEST(Vectors, filter_heading_update_state_standard_atmosphere) {
 
 TEST(Vectors, filter_heading_update_state_gnss_velocity_stale) {
     check_vector(
-        "7565820e0e14c04000003e800000000200004cdf", MIP_DEVICE_ANY,
+        "7565820e0e14c04000003e800000000200004cdf", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":20,\"name\":\"heading_update_state\","
         "\"values\":{\"heading\":-3.0,\"heading_uncertainty\":0.25,\"source\":2,\"valid_flags\":0}}]}\n");
 }
@@ -3409,7 +3411,7 @@ TEST(Vectors, filter_mag_auto_hard_soft_iron) {
         "7565827010253e000000bd8000003e800000000110283c0000003c0000003c800000000128263f8000003c80000000000000"
         "bc8000003f7800000000000000000000000000003f840000000128293b0000003b0000003b0000003b8000003b8000003b80"
         "00003c0000003c0000003c00000000000fb2",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":37,\"name\":\"mag_auto_hard_iron_offset\","
         "\"values\":{\"hard_iron_offset\":[0.125,-0.0625,0.25],\"valid_flags\":1}},{\"descriptor\":40,"
         "\"name\":\"mag_auto_hard_iron_offset_uncertainty\",\"values\":{\"hard_iron_offset_uncertainty\":[0."
@@ -3422,7 +3424,7 @@ TEST(Vectors, filter_mag_auto_hard_soft_iron) {
 
 TEST(Vectors, filter_gnss_antenna_offset_correction) {
     check_vector("7565822010303f000000be8000003f900000000110313d8000003d8000003e000000000002fb",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":48,\"name\":\"gnss_antenna_offset_"
                  "correction\",\"values\":{\"offset\":[0.5,-0.25,1.125],\"valid_flags\":1}},{\"descriptor\":"
                  "49,\"name\":\"gnss_antenna_offset_correction_uncertainty\",\"values\":{\"offset_"
@@ -3432,7 +3434,7 @@ TEST(Vectors, filter_gnss_antenna_offset_correction) {
 TEST(Vectors, filter_multi_antenna_offset_correction_two_receivers) {
     check_vector("756582441134013d000000bd800000000000000001113402be0000003e8000003f00000000001135013c8000003"
                  "c8000003d00000000011135023e8000003e8000003f000000000063a9",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":52,\"name\":\"multi_antenna_offset_"
                  "correction\",\"values\":{\"receiver_id\":1,\"offset\":[0.03125,-0.0625,0.0],\"valid_"
                  "flags\":1}},{\"descriptor\":52,\"name\":\"multi_antenna_offset_correction\",\"values\":{"
@@ -3448,7 +3450,7 @@ TEST(Vectors, filter_ecef_and_relative_position_velocity) {
         "756582681c40c133a8ce80000000c152030850000000414f1e10e0000000000110413fc00000be8000000000000000011036"
         "3fa000003fa0000040200000000110373d8000003d8000003e00000000001c424059200000000000c0394000000000004000"
         "00000000000000019b63",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":64,\"name\":\"ecef_position\",\"values\":{"
         "\"position\":[-1288398.5,-4721697.25,4078625.75],\"valid_flags\":1}},{\"descriptor\":65,\"name\":"
         "\"ecef_velocity\",\"values\":{\"velocity\":[1.5,-0.25,0.0],\"valid_flags\":1}},{\"descriptor\":54,"
@@ -3462,7 +3464,7 @@ TEST(Vectors, filter_aiding_status_summary_dual_antenna_odometer) {
     check_vector(
         "7565824611430148a8c010095e0000000000000000094648a8c010000103094648a8c01001310d134948a8c0103f4000003c"
         "800000020007000108473c800000000108483b8000000001f8b3",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":67,\"name\":\"gnss_position_aiding_status\","
         "\"values\":{\"receiver_id\":1,\"time_of_week\":345600.5,\"status\":2398,\"reserved\":[0,0,0,0,0,0,0,"
         "0]}},{\"descriptor\":70,\"name\":\"aiding_measurement_summary\",\"values\":{\"time_of_week\":345600."
@@ -3478,7 +3480,7 @@ TEST(Vectors, filter_aiding_status_summary_dual_antenna_odometer) {
 TEST(Vectors, filter_gnss_aiding_status_no_fix_config_error) {
     check_vector("7565822d11430200000000c00100000000000000000946000000000006301349000000000000000000000000000"
                  "001000082ef",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":67,\"name\":\"gnss_position_aiding_"
                  "status\",\"values\":{\"receiver_id\":2,\"time_of_week\":0.0,\"status\":49153,\"reserved\":["
                  "0,0,0,0,0,0,0,0]}},{\"descriptor\":70,\"name\":\"aiding_measurement_summary\",\"values\":{"
@@ -3490,7 +3492,7 @@ TEST(Vectors, filter_gnss_aiding_status_no_fix_config_error) {
 TEST(Vectors, filter_aiding_frame_config_error) {
     check_vector("7565823a1f50013e000000be800000000000003f000000bf0000003f0000003f0000001b51013d8000003d80000"
                  "03d0000003c0000003c0000003c80000056fb",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":130,\"fields\":[{\"descriptor\":80,\"name\":\"aiding_frame_config_"
                  "error\",\"values\":{\"frame_id\":1,\"translation\":[0.125,-0.25,0.0],\"attitude\":[0.5,-0."
                  "5,0.5,0.5]}},{\"descriptor\":81,\"name\":\"aiding_frame_config_error_uncertainty\","
@@ -3499,7 +3501,7 @@ TEST(Vectors, filter_aiding_frame_config_error) {
 }
 
 TEST(Vectors, receiver_info_command) {
-    check_vector("75650e020201edfa", MIP_DEVICE_ANY,
+    check_vector("75650e020201edfa", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":1,\"name\":\"receiver_info\","
                  "\"values\":{}}]}\n");
 }
@@ -3508,7 +3510,7 @@ TEST(Vectors, receiver_info_reply_two_receivers) {
     check_vector(
         "75650e4b04f1010047810201915a45442d4639502c48504720312e33320000000000000000000000000000000002925a4544"
         "2d4639502c48504720312e333200000000000000000000000000000000b5ca",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
         "\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"receiver_info_response\","
         "\"values\":{\"num_receivers\":2,\"receiver_info\":[{\"receiver_id\":1,\"mip_data_descriptor_set\":"
@@ -3522,34 +3524,34 @@ TEST(Vectors, receiver_info_reply_two_receivers) {
 }
 
 TEST(Vectors, receiver_info_reply_none) {
-    check_vector("75650e0704f101000381006981", MIP_DEVICE_ANY,
+    check_vector("75650e0704f101000381006981", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":1,\"ack_code\":0}},{\"descriptor\":129,\"name\":\"receiver_info_"
                  "response\",\"values\":{\"num_receivers\":0,\"receiver_info\":[]}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_write) {
-    check_vector("75650e0b0b020105010505000000001197", MIP_DEVICE_ANY,
+    check_vector("75650e0b0b020105010505000000001197", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":1,\"gps_enable\":5,\"glonass_enable\":1,\"galileo_enable\":5,"
                  "\"beidou_enable\":5,\"reserved\":[0,0,0,0]}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_write_every_bit) {
-    check_vector("75650e0b0b0201070307070000000019cb", MIP_DEVICE_ANY,
+    check_vector("75650e0b0b0201070307070000000019cb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":1,\"gps_enable\":7,\"glonass_enable\":3,\"galileo_enable\":7,"
                  "\"beidou_enable\":7,\"reserved\":[0,0,0,0]}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_read) {
-    check_vector("75650e03030202f2f2", MIP_DEVICE_ANY,
+    check_vector("75650e03030202f2f2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_read_reply) {
-    check_vector("75650e0e04f102000a820100050100000000804f", MIP_DEVICE_ANY,
+    check_vector("75650e0e04f102000a820100050100000000804f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":2,\"ack_code\":0}},{\"descriptor\":130,\"name\":\"signal_"
                  "configuration_response\",\"values\":{\"gps_enable\":1,\"glonass_enable\":0,\"galileo_"
@@ -3557,19 +3559,19 @@ TEST(Vectors, signal_configuration_read_reply) {
 }
 
 TEST(Vectors, signal_configuration_save) {
-    check_vector("75650e03030203f3f3", MIP_DEVICE_ANY,
+    check_vector("75650e03030203f3f3", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_load) {
-    check_vector("75650e03030204f4f4", MIP_DEVICE_ANY,
+    check_vector("75650e03030204f4f4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, signal_configuration_default) {
-    check_vector("75650e03030205f5f5", MIP_DEVICE_ANY,
+    check_vector("75650e03030205f5f5", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":2,\"name\":\"signal_configuration\","
                  "\"values\":{\"function\":5}}]}\n");
 }
@@ -3577,7 +3579,7 @@ TEST(Vectors, signal_configuration_default) {
 TEST(Vectors, spartn_configuration_write_lband) {
     check_vector("75650e5151200101020000000000003031303130313031303130313031303130313031303130313031303130313"
                  "0310000000000003031303130313031303130313031303130313031303130313031303130313031ceb1",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\","
                  "\"values\":{\"function\":1,\"enable\":1,\"type\":2,\"current_key_tow\":0,\"current_key_"
                  "week\":0,\"current_key\":\"01010101010101010101010101010101\",\"next_key_tow\":0,\"next_"
@@ -3587,7 +3589,7 @@ TEST(Vectors, spartn_configuration_write_lband) {
 TEST(Vectors, spartn_configuration_write_network) {
     check_vector("75650e51512001010100054600091a3031323334353637383941424344454630313233343536373839414243444"
                  "5460007e900091b4645444342413938373635343332313046454443424139383736353433323130b7c5",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\","
                  "\"values\":{\"function\":1,\"enable\":1,\"type\":1,\"current_key_tow\":345600,\"current_"
                  "key_week\":2330,\"current_key\":\"0123456789ABCDEF0123456789ABCDEF\",\"next_key_tow\":"
@@ -3595,13 +3597,13 @@ TEST(Vectors, spartn_configuration_write_network) {
 }
 
 TEST(Vectors, spartn_configuration_ack) {
-    check_vector("75650e0404f1200001f6", MIP_DEVICE_ANY,
+    check_vector("75650e0404f1200001f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":32,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, spartn_configuration_read) {
-    check_vector("75650e03032002102e", MIP_DEVICE_ANY,
+    check_vector("75650e03032002102e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\","
                  "\"values\":{\"function\":2}}]}\n");
 }
@@ -3609,7 +3611,7 @@ TEST(Vectors, spartn_configuration_read) {
 TEST(Vectors, spartn_configuration_read_reply) {
     check_vector("75650e5404f1200050a001020000000000003031303130313031303130313031303130313031303130313031303"
                  "1303130310000000000003031303130313031303130313031303130313031303130313031303130313031647e",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{"
                  "\"command_descriptor\":32,\"ack_code\":0}},{\"descriptor\":160,\"name\":\"spartn_"
                  "configuration_response\",\"values\":{\"enable\":1,\"type\":2,\"current_key_tow\":0,"
@@ -3618,13 +3620,13 @@ TEST(Vectors, spartn_configuration_read_reply) {
 }
 
 TEST(Vectors, spartn_configuration_save) {
-    check_vector("75650e03032003112f", MIP_DEVICE_ANY,
+    check_vector("75650e03032003112f", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, spartn_configuration_default) {
-    check_vector("75650e030320051331", MIP_DEVICE_ANY,
+    check_vector("75650e030320051331", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":32,\"name\":\"spartn_configuration\","
                  "\"values\":{\"function\":5}}]}\n");
 }
@@ -3632,7 +3634,7 @@ TEST(Vectors, spartn_configuration_default) {
 TEST(Vectors, gx5_gnss_llh_ecef_position) {
     check_vector("7565814c2c034046c00000000000c057500000000000407008000000000040720c00000000003fc000004010000"
                  "0001f2004c110000200000000c1520000100000004151400008000000406000000003fe78",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\","
                  "\"values\":{\"latitude\":45.5,\"longitude\":-93.25,\"ellipsoid_height\":256.5,\"msl_"
                  "height\":288.75,\"horizontal_accuracy\":1.5,\"vertical_accuracy\":2.25,\"valid_flags\":31}}"
@@ -3644,7 +3646,7 @@ TEST(Vectors, gx5_gnss_velocity_dop) {
     check_vector(
         "7565815824053fc00000be8000003e0000003fc800003fc0000043af40003e80000040200000001b14063f000000bfa00000"
         "3f4000003ec00000000120073fe000003fc000003f6000003fa000003f4000003f2000003f000000007f5dd1",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":5,\"name\":\"ned_velocity\",\"values\":{"
         "\"velocity\":[1.5,-0.25,0.125],\"speed\":1.5625,\"ground_speed\":1.5,\"heading\":350.5,\"speed_"
         "accuracy\":0.25,\"heading_accuracy\":2.5,\"valid_flags\":27}},{\"descriptor\":6,\"name\":\"ecef_"
@@ -3656,7 +3658,7 @@ TEST(Vectors, gx5_gnss_velocity_dop) {
 TEST(Vectors, gx5_gnss_time_clock) {
     check_vector("756581390f0807e8021d173b3a000002ee00030e09411518020000000008ff00031c0a3f50000000000000bec00"
                  "000000000003f0000000000000000074207",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":8,\"name\":\"utc_time\",\"values\":{"
                  "\"year\":2024,\"month\":2,\"day\":29,\"hour\":23,\"minute\":59,\"second\":58,"
                  "\"millisecond\":750,\"valid_flags\":3}},{\"descriptor\":9,\"name\":\"gps_time\",\"values\":"
@@ -3666,7 +3668,7 @@ TEST(Vectors, gx5_gnss_time_clock) {
 }
 
 TEST(Vectors, gx5_gnss_fix_hardware_status) {
-    check_vector("7565810f080b000900010007070d0104010007afa8", MIP_DEVICE_ANY,
+    check_vector("7565810f080b000900010007070d0104010007afa8", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":11,\"name\":\"fix_info\",\"values\":{"
                  "\"fix_type\":0,\"num_sv\":9,\"fix_flags\":1,\"valid_flags\":7}},{\"descriptor\":13,"
                  "\"name\":\"hardware_status\",\"values\":{\"receiver_state\":1,\"antenna_state\":4,"
@@ -3674,7 +3676,7 @@ TEST(Vectors, gx5_gnss_fix_hardware_status) {
 }
 
 TEST(Vectors, gx5_gnss_fix_time_only_antenna_open) {
-    check_vector("7565810f080b020100020003070d0203000006a449", MIP_DEVICE_ANY,
+    check_vector("7565810f080b020100020003070d0203000006a449", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":11,\"name\":\"fix_info\",\"values\":{"
                  "\"fix_type\":2,\"num_sv\":1,\"fix_flags\":2,\"valid_flags\":3}},{\"descriptor\":13,"
                  "\"name\":\"hardware_status\",\"values\":{\"receiver_state\":2,\"antenna_state\":3,"
@@ -3682,7 +3684,7 @@ TEST(Vectors, gx5_gnss_fix_time_only_antenna_open) {
 }
 
 TEST(Vectors, gx5_gnss_sv_info_two_entries) {
-    check_vector("7565811c0e0c010c002d010e00230003007b0e0c02190020002dfffb0002007b74c7", MIP_DEVICE_ANY,
+    check_vector("7565811c0e0c010c002d010e00230003007b0e0c02190020002dfffb0002007b74c7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":12,\"name\":\"sv_info\",\"values\":{"
                  "\"channel\":1,\"sv_id\":12,\"carrier_to_noise_ratio\":45,\"azimuth\":270,\"elevation\":35,"
                  "\"sv_flags\":3,\"valid_flags\":123}},{\"descriptor\":12,\"name\":\"sv_info\",\"values\":{"
@@ -3694,7 +3696,7 @@ TEST(Vectors, gx5_gnss_dgnss_info_and_channels) {
     check_vector(
         "756581300e0e4020000003ff00020002000f110f0c40200000c07000003e000000000f110f194040000041280000bd800000"
         "00078b31",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":129,\"fields\":[{\"descriptor\":14,\"name\":\"dgnss_info\",\"values\":{"
         "\"newest_age\":2.5,\"base_station_id\":1023,\"base_station_status\":2,\"num_channels\":2,\"valid_"
         "flags\":15}},{\"descriptor\":15,\"name\":\"dgnss_channel_status\",\"values\":{\"sv_id\":12,\"age\":"
@@ -3706,7 +3708,7 @@ TEST(Vectors, gx5_gnss_dgnss_info_and_channels) {
 TEST(Vectors, gnss_receiver_1_satellite_status_two_fields) {
     check_vector("756591361b200102411518020000000008fc010c423600004387200001007f1b200202411518020000000008fc0"
                  "3074120000042b4400000003fd5ee",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\","
                  "\"values\":{\"index\":1,\"count\":2,\"tow\":345600.5,\"week_number\":2300,\"gnss_id\":1,"
                  "\"satellite_id\":12,\"elevation\":45.5,\"azimuth\":270.25,\"health\":true,\"valid_flags\":"
@@ -3717,7 +3719,7 @@ TEST(Vectors, gnss_receiver_1_satellite_status_two_fields) {
 
 TEST(Vectors, gnss_external_satellite_status) {
     check_vector(
-        "7565941b1b20010140f518040000000008fd0215427300004334000001007fdf60", MIP_DEVICE_ANY,
+        "7565941b1b20010140f518040000000008fd0215427300004334000001007fdf60", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":148,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":86400.25,\"week_number\":2301,\"gnss_id\":2,\"satellite_id\":21,"
         "\"elevation\":60.75,\"azimuth\":180.0,\"health\":true,\"valid_flags\":127}}]}\n");
@@ -3727,7 +3729,7 @@ TEST(Vectors, gnss_receiver_1_raw) {
     check_vector(
         "7565913f3f220101411518020000000008fc000105010c0d422a0000054174403872000000419a9ac519000000c49a50003f"
         "4000003c8000003e00000041480000ffffb219",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":34,\"name\":\"raw\",\"values\":{\"index\":1,"
         "\"count\":1,\"tow\":345600.5,\"week_number\":2300,\"receiver_id\":1,\"tracking_channel\":5,\"gnss_"
         "id\":1,\"satellite_id\":12,\"signal_id\":13,\"signal_strength\":42.5,\"quality\":5,\"pseudorange\":"
@@ -3741,7 +3743,7 @@ TEST(Vectors, gnss_receiver_2_satellite_status_and_raw) {
         "0e42190000044174fb18080000000000000000000000440000003fc00000000000003e800000000000005bff3f220202411f"
         "a4000000000008fb040011041ea9000000000100000000000000000000000000000000000000000000000000000000000000"
         "0000000000017fe53c",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":32,\"name\":\"satellite_status\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":518400.0,\"week_number\":2299,\"gnss_id\":4,\"satellite_id\":30,"
         "\"elevation\":-2.5,\"azimuth\":359.5,\"health\":false,\"valid_flags\":14}},{\"descriptor\":34,"
@@ -3763,7 +3765,7 @@ TEST(Vectors, gnss_receiver_1_gps_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000003a155",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":97,\"name\":\"gps_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":5,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3780,7 +3782,7 @@ TEST(Vectors, gnss_receiver_1_glonass_ephemeris) {
         "7565916868620101411518000000000008fc03fc0000a8c00000ac4401be90000000000000bf1000000000000041678c29d0"
         "000000c162d687e800000041721eac00000000449a5000c52be400440008000000000035800000b60000000001c8b5800000"
         "02001e010101000173f2",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":98,\"name\":\"glonass_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":3,\"freq_number\":-4,"
         "\"tk\":43200,\"tb\":44100,\"sat_type\":1,\"gamma\":-2.384185791015625e-07,\"tau_n\":-6.103515625e-"
@@ -3796,7 +3798,7 @@ TEST(Vectors, gnss_receiver_1_galileo_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000001af4d",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":99,\"name\":\"galileo_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":19,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3815,7 +3817,7 @@ TEST(Vectors, gnss_receiver_1_beidou_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000007ab54",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":100,\"name\":\"beidou_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":8,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3834,7 +3836,7 @@ TEST(Vectors, gnss_receiver_2_gps_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000007aa6f",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":97,\"name\":\"gps_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":9,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3851,7 +3853,7 @@ TEST(Vectors, gnss_receiver_2_glonass_ephemeris) {
         "7565926868620101411518000000000008fc04fc0000a8c00000ac4401be90000000000000bf1000000000000041678c29d0"
         "000000c162d687e800000041721eac00000000449a5000c52be400440008000000000035800000b60000000001c8b5800000"
         "02001e010101000175b6",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":98,\"name\":\"glonass_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":4,\"freq_number\":-4,"
         "\"tk\":43200,\"tb\":44100,\"sat_type\":1,\"gamma\":-2.384185791015625e-07,\"tau_n\":-6.103515625e-"
@@ -3867,7 +3869,7 @@ TEST(Vectors, gnss_receiver_2_galileo_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000005acbf",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":99,\"name\":\"galileo_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":11,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3886,7 +3888,7 @@ TEST(Vectors, gnss_receiver_2_beidou_ephemeris) {
         "00003ff40000000000003ed000000000000000000000000000003f80000000000000bff80000000000004006000000000000"
         "bee00000000000003fef0000000000003e900000000000003eb8000000000000bec80000000000003f00000000000000bf10"
         "0000000000004067700000000000c0344000000000000000b875",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":100,\"name\":\"beidou_ephemeris\",\"values\":{"
         "\"index\":1,\"count\":1,\"tow\":345600.0,\"week_number\":2300,\"satellite_id\":27,\"health\":0,"
         "\"iodc\":45,\"iode\":45,\"t_oc\":352800.0,\"af0\":-0.0001220703125,\"af1\":-1.9073486328125e-06,"
@@ -3903,7 +3905,7 @@ TEST(Vectors, cv7_gnss_receiver_1_position_velocity) {
         "756591842c034046200000000000c052480000000000405c20000000000040622800000000003f4000003fa00000001f2004"
         "4134f80080000000c150ed00300000004150ec40100000003fc0000000032405c02000003f00000000000000402000004020"
         "00004328c0003e00000040800000003f14063f800000c00000003e8000003e0000000003374f",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\",\"values\":{"
         "\"latitude\":44.25,\"longitude\":-73.125,\"ellipsoid_height\":112.5,\"msl_height\":145.25,"
         "\"horizontal_accuracy\":0.75,\"vertical_accuracy\":1.25,\"valid_flags\":31}},{\"descriptor\":4,"
@@ -3919,7 +3921,7 @@ TEST(Vectors, cv7_gnss_receiver_2_dop_time_fix_status) {
     check_vector(
         "7565924c200740100000400000003f9000003fe000003f8000003f4000003f600000000f0f0807e90c1f0000010000007d00"
         "030e094115184880000000095f0003080b061500020007070d01020200070b4c",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":146,\"fields\":[{\"descriptor\":7,\"name\":\"dop\",\"values\":{\"gdop\":2.25,"
         "\"pdop\":2.0,\"hdop\":1.125,\"vdop\":1.75,\"tdop\":1.0,\"ndop\":0.75,\"edop\":0.875,\"valid_flags\":"
         "15}},{\"descriptor\":8,\"name\":\"utc_time\",\"values\":{\"year\":2025,\"month\":12,\"day\":31,"
@@ -3934,7 +3936,7 @@ TEST(Vectors, cv7_gnss_receiver_1_clock_leap_sbas) {
     check_vector(
         "7565913b2410bf200000000000003ea00000000000003ef00000000000003eb0000000000000000f05111200021212411518"
         "010000000008ff027b0707003f508a",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":145,\"fields\":[{\"descriptor\":16,\"name\":\"clock_info_2\",\"values\":{"
         "\"bias\":-0.0001220703125,\"drift\":4.76837158203125e-07,\"bias_accuracy_estimate\":1.52587890625e-"
         "05,\"drift_accuracy_estimate\":9.5367431640625e-07,\"valid_flags\":15}},{\"descriptor\":17,\"name\":"
@@ -3948,7 +3950,7 @@ TEST(Vectors, cv7_gnss_external_nmea_fields) {
         "756594672c03c040f000000000004062e80000000000404e4000000000004043000000000000000000000000000000072405"
         "000000000000000000000000000000004090000042b400000000000000000000000c0f0807e9060f0c1e2d000001f4000108"
         "0b070b00020007685e",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":148,\"fields\":[{\"descriptor\":3,\"name\":\"llh_position\",\"values\":{"
         "\"latitude\":-33.875,\"longitude\":151.25,\"ellipsoid_height\":60.5,\"msl_height\":38.0,"
         "\"horizontal_accuracy\":0.0,\"vertical_accuracy\":0.0,\"valid_flags\":7}},{\"descriptor\":5,"
@@ -3963,7 +3965,7 @@ TEST(Vectors, cv7_gnss_corrections_base_station_rtk_status) {
     check_vector("756593622e30411517fc0000000008ffc133a8ce80000000c152030830000000414f1e10a00000003fc000000ff"
                  "f0057003f3431411518000000000008ff014d000000003f0000003f4000003fa000004000000000000000000000"
                  "00000000000000000000f7d2df",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":147,\"fields\":[{\"descriptor\":48,\"name\":\"base_station_info\","
                  "\"values\":{\"tow\":345599.0,\"week_number\":2303,\"ecef_position\":[-1288398.5,-4721696."
                  "75,4078625.25],\"height\":1.5,\"station_id\":4095,\"indicators\":87,\"valid_flags\":63}},{"
@@ -3974,25 +3976,25 @@ TEST(Vectors, cv7_gnss_corrections_base_station_rtk_status) {
 }
 
 TEST(Vectors, overview_field_descriptor_0x03) {
-    check_vector("7565800e0e033e7a63a0bb8e3b297fe5bf7f83e1", MIP_DEVICE_ANY,
+    check_vector("7565800e0e033e7a63a0bb8e3b297fe5bf7f83e1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":3,\"data\":"
                  "\"3e7a63a0bb8e3b297fe5bf7f\",\"error\":\"unknown descriptor\"}]}\n");
 }
 
 TEST(Vectors, overview_scaled_mag) {
-    check_vector("7565800e0e063e7a63a0bb8e3b297fe5bf7f8608", MIP_DEVICE_ANY,
+    check_vector("7565800e0e063e7a63a0bb8e3b297fe5bf7f8608", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":6,\"name\":\"scaled_mag\",\"values\":"
                  "{\"scaled_mag\":[0.2445206642150879,-0.004340548533946276,\"nan:0x7fe5bf7f\"]}}]}\n");
 }
 
 TEST(Vectors, overview_gyro_mag_published) {
-    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e063e7a63a0bb8e3b297fe5bf7fe0c6", MIP_DEVICE_ANY,
+    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e063e7a63a0bb8e3b297fe5bf7fe0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":"
                  "\"7565801c0e053e7a63a0bb8e3b297fe5bf7f0e063e7a63a0bb8e3b297fe5bf7fe0c6\"}\n");
 }
 
 TEST(Vectors, overview_gyro_mag) {
-    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e063e7a63a0bb8e3b297fe5bf7fb11e", MIP_DEVICE_ANY,
+    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e063e7a63a0bb8e3b297fe5bf7fb11e", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":5,\"name\":\"scaled_gyro\","
                  "\"values\":{\"scaled_gyro\":[0.2445206642150879,-0.004340548533946276,\"nan:0x7fe5bf7f\"]}}"
                  ",{\"descriptor\":6,\"name\":\"scaled_mag\",\"values\":{\"scaled_mag\":[0.2445206642150879,-"
@@ -4000,33 +4002,33 @@ TEST(Vectors, overview_gyro_mag) {
 }
 
 TEST(Vectors, scaled_accel_example_gx5_published) {
-    check_vector("7565800e0e043e7a63a0bb8e3b297fe5bf7f92c0", MIP_DEVICE_ANY,
+    check_vector("7565800e0e043e7a63a0bb8e3b297fe5bf7f92c0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"7565800e0e043e7a63a0bb8e3b297fe5bf7f92c0\"}\n");
 }
 
 TEST(Vectors, scaled_accel_example) {
     check_vector(
-        "7565800e0e043e7a63a0bb8e3b297fe5bf7f84ee", MIP_DEVICE_ANY,
+        "7565800e0e043e7a63a0bb8e3b297fe5bf7f84ee", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{"
         "\"scaled_accel\":[0.2445206642150879,-0.004340548533946276,\"nan:0x7fe5bf7f\"]}}]}\n");
 }
 
 TEST(Vectors, poll_imu_data_packet_published) {
-    check_vector("7565801c0e043e7a63a0bb8e3b297fe5bf7f0e033e7a63a0bb8e3b297fe5bf7f41bb", MIP_DEVICE_ANY,
+    check_vector("7565801c0e043e7a63a0bb8e3b297fe5bf7f0e033e7a63a0bb8e3b297fe5bf7f41bb", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":"
                  "\"7565801c0e043e7a63a0bb8e3b297fe5bf7f0e033e7a63a0bb8e3b297fe5bf7f41bb\"}\n");
 }
 
 TEST(Vectors, poll_imu_data_packet_as_printed) {
     check_vector(
-        "7565801c0e043e7a63a0bb8e3b297fe5bf7f0e033e7a63a0bb8e3b297fe5bf7faddc", MIP_DEVICE_ANY,
+        "7565801c0e043e7a63a0bb8e3b297fe5bf7f0e033e7a63a0bb8e3b297fe5bf7faddc", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{"
         "\"scaled_accel\":[0.2445206642150879,-0.004340548533946276,\"nan:0x7fe5bf7f\"]}},{\"descriptor\":3,"
         "\"data\":\"3e7a63a0bb8e3b297fe5bf7f\",\"error\":\"unknown descriptor\"}]}\n");
 }
 
 TEST(Vectors, poll_imu_data_packet_corrected) {
-    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e043e7a63a0bb8e3b297fe5bf7faf04", MIP_DEVICE_ANY,
+    check_vector("7565801c0e053e7a63a0bb8e3b297fe5bf7f0e043e7a63a0bb8e3b297fe5bf7faf04", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":5,\"name\":\"scaled_gyro\","
                  "\"values\":{\"scaled_gyro\":[0.2445206642150879,-0.004340548533946276,\"nan:0x7fe5bf7f\"]}}"
                  ",{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[0."
@@ -4036,7 +4038,7 @@ TEST(Vectors, poll_imu_data_packet_corrected) {
 TEST(Vectors, accel_gyro_mag_typical) {
     check_vector(
         "7565802a0e043f800000bf000000000000000e053e8000003a83126fc00000000e063f0000003e000000bec00000f2e2",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{"
         "\"scaled_accel\":[1.0,-0.5,0.0]}},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_"
         "gyro\":[0.25,0.0010000000474974513,-2.0]}},{\"descriptor\":6,\"name\":\"scaled_mag\",\"values\":{"
@@ -4045,13 +4047,13 @@ TEST(Vectors, accel_gyro_mag_typical) {
 
 TEST(Vectors, cf_euler_poll_reply) {
     check_vector(
-        "7565800e0e0cbae3ed9b3c7d6ddfbf855cf541bb", MIP_DEVICE_GX5_45,
+        "7565800e0e0cbae3ed9b3c7d6ddfbf855cf541bb", MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":12,\"name\":\"cf_euler_angles\",\"values\":{"
         "\"roll\":-0.001738953753374517,\"pitch\":0.01546808984130621,\"yaw\":-1.04189932346344}}]}\n");
 }
 
 TEST(Vectors, delta_theta_delta_velocity) {
-    check_vector("7565801c0e073f000000be8000003e0000000e083d800000bfc0000040000000d8a2", MIP_DEVICE_ANY,
+    check_vector("7565801c0e073f000000be8000003e0000000e083d800000bfc0000040000000d8a2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":7,\"name\":\"delta_theta\","
                  "\"values\":{\"delta_theta\":[0.5,-0.25,0.125]}},{\"descriptor\":8,\"name\":\"delta_"
                  "velocity\",\"values\":{\"delta_velocity\":[0.0625,-1.5,2.0]}}]}\n");
@@ -4060,7 +4062,7 @@ TEST(Vectors, delta_theta_delta_velocity) {
 TEST(Vectors, cf_orientation_matrix_and_quaternion) {
     check_vector("756580382609000000003f80000000000000bf800000000000000000000000000000000000003f800000120a3f0"
                  "000003f000000bf0000003f00000016be",
-                 MIP_DEVICE_ANY,
+                 MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":9,\"name\":\"cf_orientation_matrix\","
                  "\"values\":{\"m\":[0.0,1.0,0.0,-1.0,0.0,0.0,0.0,0.0,1.0]}},{\"descriptor\":10,\"name\":"
                  "\"cf_quaternion\",\"values\":{\"q\":[0.5,0.5,-0.5,0.5]}}]}\n");
@@ -4069,7 +4071,7 @@ TEST(Vectors, cf_orientation_matrix_and_quaternion) {
 TEST(Vectors, cf_euler_stabilized_north_up) {
     check_vector(
         "7565802a0e0c3e800000be000000404000000e103e800000000000003f0000000e110000000000000000bf8000001344",
-        MIP_DEVICE_GX5_45,
+        MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":12,\"name\":\"cf_euler_angles\",\"values\":{"
         "\"roll\":0.25,\"pitch\":-0.125,\"yaw\":3.0}},{\"descriptor\":16,\"name\":\"cf_stabilized_north\","
         "\"values\":{\"stabilized_north\":[0.25,0.0,0.5]}},{\"descriptor\":17,\"name\":\"cf_stabilized_up\","
@@ -4079,7 +4081,7 @@ TEST(Vectors, cf_euler_stabilized_north_up) {
 TEST(Vectors, imu_format_example_data_packet) {
     check_vector(
         "7565802a0e1241086a0200000000080000050e040000000000000000bf8000000e053b00000000000000bf000000c4a1",
-        MIP_DEVICE_GX5_45,
+        MIPC_DEVICE_GX5_45,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":18,\"name\":\"gps_timestamp\",\"values\":{"
         "\"tow\":200000.25,\"week_number\":2048,\"valid_flags\":5}},{\"descriptor\":4,\"name\":\"scaled_"
         "accel\",\"values\":{\"scaled_accel\":[0.0,0.0,-1.0]}},{\"descriptor\":5,\"name\":\"scaled_gyro\","
@@ -4087,7 +4089,7 @@ TEST(Vectors, imu_format_example_data_packet) {
 }
 
 TEST(Vectors, gps_timestamp_cv7_all_flags) {
-    check_vector("7565800e0e12411a5e000000000008fc001f6478", MIP_DEVICE_CV7_INS,
+    check_vector("7565800e0e12411a5e000000000008fc001f6478", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":18,\"name\":\"gps_timestamp\","
                  "\"values\":{\"tow\":432000.0,\"week_number\":2300,\"valid_flags\":31}}]}\n");
 }
@@ -4095,7 +4097,7 @@ TEST(Vectors, gps_timestamp_cv7_all_flags) {
 TEST(Vectors, temperature_pressure_overrange_odometer) {
     check_vector(
         "756580240e1441a400004235000041f900000617447d5000041812140c40c02000003d80000000019026",
-        MIP_DEVICE_CV7_INS,
+        MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":20,\"name\":\"temperature_statistics\","
         "\"values\":{\"min_temp\":20.5,\"max_temp\":45.25,\"mean_temp\":31.125}},{\"descriptor\":23,\"name\":"
         "\"scaled_pressure\",\"values\":{\"scaled_pressure\":1013.25}},{\"descriptor\":24,\"name\":"
@@ -4106,7 +4108,7 @@ TEST(Vectors, temperature_pressure_overrange_odometer) {
 TEST(Vectors, event_source_reference_time_delta_theta_velocity) {
     check_vector("7565803303d0020ad50000011f71fb04cb0ad60000000000fe502b0e073a80000000000000bf0000000e0800000"
                  "0003c800000bd8000009210",
-                 MIP_DEVICE_CV7_INS,
+                 MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\","
                  "\"values\":{\"trigger_id\":2}},{\"descriptor\":213,\"name\":\"reference_timestamp\","
                  "\"values\":{\"nanoseconds\":1234567890123}},{\"descriptor\":214,\"name\":\"reference_time_"
@@ -4116,7 +4118,7 @@ TEST(Vectors, event_source_reference_time_delta_theta_velocity) {
 }
 
 TEST(Vectors, shared_gps_timestamp_delta_time) {
-    check_vector("756580180ed340f5180200000000092900030ad43f900000000000008423", MIP_DEVICE_CV7_INS,
+    check_vector("756580180ed340f5180200000000092900030ad43f900000000000008423", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
                  "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,"
                  "\"name\":\"delta_time\",\"values\":{\"seconds\":0.015625}}]}\n");
@@ -4124,7 +4126,7 @@ TEST(Vectors, shared_gps_timestamp_delta_time) {
 
 TEST(Vectors, external_time_in_system_set) {
     check_vector("7565a01f0cd717979cfe362a000000010cd800000000000f4240000104020100030305ad9f",
-                 MIP_DEVICE_CV7_INS,
+                 MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":215,\"name\":\"external_timestamp\","
                  "\"values\":{\"nanoseconds\":1700000000000000000,\"valid_flags\":1}},{\"descriptor\":216,"
                  "\"name\":\"external_time_delta\",\"values\":{\"dt_nanos\":1000000,\"valid_flags\":1}},{"
@@ -4141,7 +4143,7 @@ TEST(Vectors, continuation_packets_share_timestamps) {
         "000e0c3e800000be000000404000000e1240f51802000000000929001f0e1441a400004235000041f900000617447d500004"
         "180000846b7565805303d0000ed340f5180200000000092900030ad43f900000000000000ad50000011f71fb04cb0ad60000"
         "000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010c40c02000003d8000000001da22",
-        MIP_DEVICE_CV7_INS,
+        MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{"
         "\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,"
         "\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{"
@@ -4174,69 +4176,69 @@ TEST(Vectors, continuation_packets_share_timestamps) {
 }
 
 TEST(Vectors, communication_mode_write_sensor_direct) {
-    check_vector("75657f040410010274bd", MIP_DEVICE_ANY,
+    check_vector("75657f040410010274bd", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":1,\"mode\":2}}]}\n");
 }
 
 TEST(Vectors, communication_mode_ack) {
-    check_vector("75657f0404f11000627c", MIP_DEVICE_ANY,
+    check_vector("75657f0404f11000627c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
                  "{\"command_descriptor\":16,\"ack_code\":0}}]}\n");
 }
 
 TEST(Vectors, communication_mode_read) {
-    check_vector("75657f030310027143", MIP_DEVICE_ANY,
+    check_vector("75657f030310027143", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":2}}]}\n");
 }
 
 TEST(Vectors, communication_mode_read_placeholder) {
-    check_vector("75657f040410020174be", MIP_DEVICE_ANY,
+    check_vector("75657f040410020174be", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":2,\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, communication_mode_read_reply) {
-    check_vector("75657f0704f11000039001f9e4", MIP_DEVICE_ANY,
+    check_vector("75657f0704f11000039001f9e4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
                  "{\"command_descriptor\":16,\"ack_code\":0}},{\"descriptor\":144,\"name\":\"communication_"
                  "mode_response\",\"values\":{\"mode\":1}}]}\n");
 }
 
 TEST(Vectors, communication_mode_write_gnss_direct) {
-    check_vector("75657f040410010375be", MIP_DEVICE_ANY,
+    check_vector("75657f040410010375be", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":1,\"mode\":3}}]}\n");
 }
 
 TEST(Vectors, communication_mode_save) {
-    check_vector("75657f030310037244", MIP_DEVICE_ANY,
+    check_vector("75657f030310037244", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":3}}]}\n");
 }
 
 TEST(Vectors, communication_mode_load) {
-    check_vector("75657f030310047345", MIP_DEVICE_ANY,
+    check_vector("75657f030310047345", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":4}}]}\n");
 }
 
 TEST(Vectors, communication_mode_default) {
-    check_vector("75657f030310057446", MIP_DEVICE_ANY,
+    check_vector("75657f030310057446", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":16,\"name\":\"communication_mode\","
                  "\"values\":{\"function\":5}}]}\n");
 }
 
 TEST(Vectors, communication_mode_nack_command_failed) {
-    check_vector("75657f0404f110046680", MIP_DEVICE_ANY,
+    check_vector("75657f0404f110046680", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":127,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
                  "{\"command_descriptor\":16,\"ack_code\":4}}]}\n");
 }
 
 TEST(Vectors, streaming_built_in_test) {
     check_vector(
-        "7565a01212012200f804422041010400000000500200b785", MIP_DEVICE_CV7_INS,
+        "7565a01212012200f804422041010400000000500200b785", MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":1,\"name\":\"built_in_test\",\"values\":{"
         "\"result\":{\"system_byte_0\":34,\"reserved_byte_1\":0,\"system_byte_2\":248,\"system_byte_3\":4,"
         "\"imu_byte_4\":66,\"imu_byte_5\":32,\"imu_byte_6\":65,\"imu_byte_7\":1,\"nav_byte_8\":4,\"reserved_"
@@ -4245,7 +4247,7 @@ TEST(Vectors, streaming_built_in_test) {
 }
 
 TEST(Vectors, time_sync_lost_gpio_low) {
-    check_vector("7565a007040200ff0303008c04", MIP_DEVICE_CV7_INS,
+    check_vector("7565a007040200ff0303008c04", MIPC_DEVICE_CV7_INS,
                  "{\"offset\":0,\"set\":160,\"fields\":[{\"descriptor\":2,\"name\":\"time_sync_status\","
                  "\"values\":{\"time_sync\":false,\"last_pps_rcvd\":255}},{\"descriptor\":3,\"name\":\"gpio_"
                  "state\",\"values\":{\"states\":0}}]}\n");
@@ -4261,7 +4263,7 @@ TEST(Streams, continuation_packets_with_garbage_and_a_reply_between) {
         "180000846b0075007565010404f10100d56a7565805303d0000ed340f5180200000000092900030ad43f900000000000000a"
         "d50000011f71fb04cb0ad60000000000ee6b280cd713aef6e5f153594000010cd80000000000ee6b2800010c40c02000003d"
         "8000000001da22",
-        MIP_DEVICE_CV7_INS,
+        MIPC_DEVICE_CV7_INS,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":208,\"name\":\"event_source\",\"values\":{"
         "\"trigger_id\":0}},{\"descriptor\":211,\"name\":\"gps_timestamp\",\"values\":{\"tow\":86400.125,"
         "\"week_number\":2345,\"valid_flags\":3}},{\"descriptor\":212,\"name\":\"delta_time\",\"values\":{"
@@ -4297,7 +4299,7 @@ TEST(Streams, continuation_packets_with_garbage_and_a_reply_between) {
 
 TEST(Streams, zero_length_fields) {
     check_vector(
-        "75658012020402fe0e043f800000bf00000040000000427b", MIP_DEVICE_ANY,
+        "75658012020402fe0e043f800000bf00000040000000427b", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"\",\"error\":\"scaled_accel[0]: "
         "needs 4 bytes at offset 0, 0 left\"},{\"descriptor\":254,\"data\":\"\",\"error\":\"unknown "
         "descriptor\"},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":[1.0,-0.5,2."
@@ -4305,14 +4307,14 @@ TEST(Streams, zero_length_fields) {
 }
 
 TEST(Streams, field_length_zero_after_a_field) {
-    check_vector("756580120e043f800000bf000000400000000004112273a1", MIP_DEVICE_ANY,
+    check_vector("756580120e043f800000bf000000400000000004112273a1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\","
                  "\"values\":{\"scaled_accel\":[1.0,-0.5,2.0]}},{\"trailing\":\"00041122\",\"error\":\"field "
                  "length 0 at payload offset 14 is shorter than the field header\"}]}\n");
 }
 
 TEST(Streams, short_field_does_not_stop_the_next) {
-    check_vector("756580180a043f800000bf0000000e053e80000000000000c0400000cf9c", MIP_DEVICE_ANY,
+    check_vector("756580180a043f800000bf0000000e053e80000000000000c0400000cf9c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\","
                  "\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 "
                  "left\"},{\"descriptor\":5,\"name\":\"scaled_gyro\",\"values\":{\"scaled_gyro\":[0.25,0.0,-"
@@ -4320,66 +4322,66 @@ TEST(Streams, short_field_does_not_stop_the_next) {
 }
 
 TEST(Streams, invalid_bool_byte) {
-    check_vector("75650c03039e028c20", MIP_DEVICE_ANY,
+    check_vector("75650c03039e028c20", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":158,\"data\":\"02\",\"error\":"
                  "\"enable: invalid bool value 2 at offset 0\"}]}\n");
 }
 
 TEST(Streams, count_past_the_maximum) {
-    check_vector("75650e0303810877f6", MIP_DEVICE_ANY,
+    check_vector("75650e0303810877f6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":14,\"fields\":[{\"descriptor\":129,\"data\":\"08\",\"error\":"
                  "\"receiver_info: count 8 exceeds maximum 7\"}]}\n");
 }
 
 TEST(Streams, unknown_enum_value_is_kept) {
-    check_vector("75650d0505d0007f014116", MIP_DEVICE_ANY,
+    check_vector("75650d0505d0007f014116", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":13,\"fields\":[{\"descriptor\":208,\"name\":\"aiding_measurement_"
                  "control_response\",\"values\":{\"source\":127,\"enable\":true}}]}\n");
 }
 
 TEST(Streams, reserved_bits_are_kept) {
-    check_vector("7565800e0ed340f51802000000000929ffffc861", MIP_DEVICE_ANY,
+    check_vector("7565800e0ed340f51802000000000929ffffc861", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
                  "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":65535}}]}\n");
 }
 
 TEST(Streams, shared_descriptor_in_an_undefined_data_set) {
-    check_vector("7565a70e0ed340f518020000000009290003f4d7", MIP_DEVICE_ANY,
+    check_vector("7565a70e0ed340f518020000000009290003f4d7", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":211,\"name\":\"gps_timestamp\","
                  "\"values\":{\"tow\":86400.125,\"week_number\":2345,\"valid_flags\":3}}]}\n");
 }
 
 TEST(Streams, set_zero_has_no_kind) {
-    check_vector("756500020201dfc2", MIP_DEVICE_ANY,
+    check_vector("756500020201dfc2", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":0,\"fields\":[{\"descriptor\":1,\"data\":\"\",\"error\":\"unknown "
                  "descriptor set\"}]}\n");
 }
 
 TEST(Streams, ack_descriptor_in_a_data_set) {
-    check_vector("7565800404f101005464", MIP_DEVICE_ANY,
+    check_vector("7565800404f101005464", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":241,\"data\":\"0100\",\"error\":"
                  "\"unknown descriptor\"}]}\n");
 }
 
 TEST(Streams, empty_stream) {
-    check_vector("", MIP_DEVICE_ANY, "");
+    check_vector("", MIPC_DEVICE_ANY, "");
 }
 
 TEST(Streams, only_garbage) {
     check_vector(
-        "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f", MIP_DEVICE_ANY,
+        "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"skipped\":\"000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f\"}\n");
 }
 
 TEST(Streams, garbage_inside_packet) {
-    check_vector("75650102aabbcc0201e0c6756501020201e0c6", MIP_DEVICE_ANY,
+    check_vector("75650102aabbcc0201e0c6756501020201e0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650102aabbcc0201e0c6\"}\n{\"offset\":11,\"set\":1,\"fields\":"
                  "[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Streams, sync_bytes_inside_a_valid_payload) {
     check_vector(
-        "7565800606fe7565756518b5756501020201e0c6", MIP_DEVICE_ANY,
+        "7565800606fe7565756518b5756501020201e0c6", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":254,\"data\":\"75657565\",\"error\":\"unknown "
         "descriptor\"}]}\n{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\","
         "\"values\":{}}]}\n");
@@ -4387,7 +4389,7 @@ TEST(Streams, sync_bytes_inside_a_valid_payload) {
 
 TEST(Streams, lone_sync_bytes_between_packets) {
     check_vector(
-        "756501020201e0c675756501020201e0c665756501020201e0c6756501", MIP_DEVICE_ANY,
+        "756501020201e0c675756501020201e0c665756501020201e0c6756501", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
         "\"offset\":8,\"skipped\":\"75\"}\n{\"offset\":9,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":"
         "\"ping\",\"values\":{}}]}\n{\"offset\":17,\"skipped\":\"65\"}\n{\"offset\":18,\"set\":1,\"fields\":["
@@ -4395,21 +4397,21 @@ TEST(Streams, lone_sync_bytes_between_packets) {
 }
 
 TEST(Streams, repeated_sync_pairs_before_a_packet) {
-    check_vector("756575657565756501020201e0c6", MIP_DEVICE_ANY,
+    check_vector("756575657565756501020201e0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"756575657565\"}\n{\"offset\":6,\"set\":1,\"fields\":[{"
                  "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Streams, false_sync_of_maximum_length_over_two_packets) {
     check_vector(
-        "756580ff756501020201e0c67565010404f10100d56a", MIP_DEVICE_ANY,
+        "756580ff756501020201e0c67565010404f10100d56a", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"skipped\":\"756580ff\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,"
         "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"set\":1,\"fields\":[{\"descriptor\":241,"
         "\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n");
 }
 
 TEST(Streams, checksum_bytes_swapped) {
-    check_vector("756501020201c6e0756501020201e0c6", MIP_DEVICE_ANY,
+    check_vector("756501020201c6e0756501020201e0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"756501020201c6e0\"}\n{\"offset\":8,\"set\":1,\"fields\":[{"
                  "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
@@ -4422,7 +4424,7 @@ TEST(Streams, longest_legal_packet) {
         "bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf00000040000000"
         "0e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf000000400000000e043f800000bf00"
         "00004000000003fe00faf6756501020201e0c6",
-        MIP_DEVICE_ANY,
+        MIPC_DEVICE_ANY,
         "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{"
         "\"scaled_accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_"
         "accel\":[1.0,-0.5,2.0]}},{\"descriptor\":4,\"name\":\"scaled_accel\",\"values\":{\"scaled_accel\":["
@@ -4447,92 +4449,92 @@ TEST(Streams, longest_legal_packet) {
 }
 
 TEST(Streams, empty_payloads) {
-    check_vector("756580005a0375650100db05", MIP_DEVICE_ANY,
+    check_vector("756580005a0375650100db05", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[]}\n{\"offset\":6,\"set\":1,\"fields\":[]}\n");
 }
 
 TEST(Streams, truncated_packet_after_a_valid_one) {
-    check_vector("756501020201e0c6756501020201e0", MIP_DEVICE_ANY,
+    check_vector("756501020201e0c6756501020201e0", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
                  "\"offset\":8,\"skipped\":\"756501020201e0\"}\n");
 }
 
 TEST(Streams, mscip_packet_in_a_mip_stream) {
-    check_vector("756501020201e0c6a5a5010202004f25756501020201e0c6", MIP_DEVICE_ANY,
+    check_vector("756501020201e0c6a5a5010202004f25756501020201e0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
                  "\"offset\":8,\"skipped\":\"a5a5010202004f25\"}\n{\"offset\":16,\"set\":1,\"fields\":[{"
                  "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Streams, garbage_around_ping) {
-    check_vector("00ff756501020201e0c675", MIP_DEVICE_ANY,
+    check_vector("00ff756501020201e0c675", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"00ff\"}\n{\"offset\":2,\"set\":1,\"fields\":[{\"descriptor\":1,"
                  "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":10,\"skipped\":\"75\"}\n");
 }
 
 TEST(Streams, false_sync_running_past_the_end) {
-    check_vector("75650110756501020201e0c6", MIP_DEVICE_ANY,
+    check_vector("75650110756501020201e0c6", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"skipped\":\"75650110\"}\n{\"offset\":4,\"set\":1,\"fields\":[{"
                  "\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
 }
 
 TEST(Streams, bad_checksum_then_valid) {
     check_vector(
-        "756501020201e0c77565010404f10100d56a", MIP_DEVICE_ANY,
+        "756501020201e0c77565010404f10100d56a", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"skipped\":\"756501020201e0c7\"}\n{\"offset\":8,\"set\":1,\"fields\":[{"
         "\"descriptor\":241,\"name\":\"ack_nack\",\"values\":{\"command_descriptor\":1,\"ack_code\":0}}]}\n");
 }
 
 TEST(Streams, packet_inside_false_packet) {
     check_vector(
-        "7565010a756501020201e0c600000000", MIP_DEVICE_ANY,
+        "7565010a756501020201e0c600000000", MIPC_DEVICE_ANY,
         "{\"offset\":0,\"skipped\":\"7565010a\"}\n{\"offset\":4,\"set\":1,\"fields\":[{\"descriptor\":1,"
         "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":12,\"skipped\":\"00000000\"}\n");
 }
 
 TEST(Streams, truncated_packet_at_end) {
-    check_vector("7565010404f1", MIP_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"7565010404f1\"}\n");
+    check_vector("7565010404f1", MIPC_DEVICE_ANY, "{\"offset\":0,\"skipped\":\"7565010404f1\"}\n");
 }
 
 TEST(Streams, field_length_overruns_payload) {
-    check_vector("7565010402010302e798", MIP_DEVICE_ANY,
+    check_vector("7565010402010302e798", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}},{"
                  "\"trailing\":\"0302\",\"error\":\"field length 3 at payload offset 2 overruns the payload "
                  "(2 bytes left)\"}]}\n");
 }
 
 TEST(Streams, field_length_below_header) {
-    check_vector("756501020101dfc4", MIP_DEVICE_ANY,
+    check_vector("756501020101dfc4", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"trailing\":\"0101\",\"error\":\"field length 1 at "
                  "payload offset 0 is shorter than the field header\"}]}\n");
 }
 
 TEST(Streams, field_too_short_for_type) {
-    check_vector("7565800a0a043f800000bf000000f0f1", MIP_DEVICE_ANY,
+    check_vector("7565800a0a043f800000bf000000f0f1", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":4,\"data\":\"3f800000bf000000\","
                  "\"error\":\"scaled_accel[2]: needs 4 bytes at offset 8, 0 left\"}]}\n");
 }
 
 TEST(Streams, field_with_trailing_bytes) {
-    check_vector("756501030302553804", MIP_DEVICE_ANY,
+    check_vector("756501030302553804", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"55\",\"error\":\"1 "
                  "unexpected bytes at offset 0\"}]}\n");
 }
 
 TEST(Streams, unknown_set_and_descriptor) {
-    check_vector("7565a70404331234026a", MIP_DEVICE_ANY,
+    check_vector("7565a70404331234026a", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":167,\"fields\":[{\"descriptor\":51,\"data\":\"1234\",\"error\":"
                  "\"unknown descriptor set\"}]}\n");
 }
 
 TEST(Streams, ack_in_undefined_command_set) {
-    check_vector("75657e0404f110006176", MIP_DEVICE_ANY,
+    check_vector("75657e0404f110006176", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":126,\"fields\":[{\"descriptor\":241,\"name\":\"ack_nack\",\"values\":"
                  "{\"command_descriptor\":16,\"ack_code\":0}}]}\n");
 }
 
 TEST(Streams, union_selector_without_member) {
-    check_vector("75650c07072e0101090104320c", MIP_DEVICE_ANY,
+    check_vector("75650c07072e0101090104320c", MIPC_DEVICE_ANY,
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":"
                  "\"parameters: no member for selector value 9\"}]}\n");
 }

@@ -9,27 +9,27 @@
 
 // [parse-stream]
 /* Called by the parser for every packet and every run of skipped bytes. */
-static void on_event(void *ctx, const mscip_event_t *event) {
-    mscip_field_iter_t fields;
-    mscip_field_entry_t entry;
+static void on_event(void *ctx, const mscipc_event_t *event) {
+    mscipc_field_iter_t fields;
+    mscipc_field_entry_t entry;
     const char *separator = "";
     uint8_t set;
     (void)ctx;
-    if (event->kind == MSCIP_EVENT_SKIP) {
+    if (event->kind == MSCIPC_EVENT_SKIP) {
         printf("skipped %llu\n", (unsigned long long)event->length);
         return;
     }
-    set = mscip_packet_set(event->packet);
+    set = mscipc_packet_set(event->packet);
     printf("packet set=0x%02x fields=", set);
-    mscip_field_iter_init(&fields, set, mscip_packet_payload(event->packet),
-                          mscip_packet_payload_length(event->packet));
-    while (mscip_field_iter_next(&fields, &entry)) {
-        mscip_field_value_t value;
+    mscipc_field_iter_init(&fields, set, mscipc_packet_payload(event->packet),
+                           mscipc_packet_payload_length(event->packet));
+    while (mscipc_field_iter_next(&fields, &entry)) {
+        mscipc_field_value_t value;
         const char *name = "?"; /* trailing bytes, or a field that does not decode */
-        if (entry.kind == MSCIP_ENTRY_FIELD &&
-            mscip_decode_field(set, entry.descriptor, entry.data, entry.length, MSCIP_DEVICE_ANY, &value,
-                               NULL) == MSCIP_OK) {
-            name = mscip_layout_info(value.id)->name;
+        if (entry.kind == MSCIPC_ENTRY_FIELD &&
+            mscipc_decode_field(set, entry.descriptor, entry.data, entry.length, MSCIPC_DEVICE_ANY, &value,
+                                NULL) == MSCIPC_OK) {
+            name = mscipc_layout_info(value.id)->name;
         }
         printf("%s%s", separator, name);
         separator = ",";
@@ -41,18 +41,18 @@ static void on_event(void *ctx, const mscip_event_t *event) {
 // [build-command]
 /* Builds the command with its typed value and prints the packet bytes. */
 static int print_command(void) {
-    mscip_base_ping_t command;
-    uint8_t data[MSCIP_MAX_FIELD_DATA];
-    uint8_t packet[MSCIP_MAX_PACKET];
+    mscipc_base_ping_t command;
+    uint8_t data[MSCIPC_MAX_FIELD_DATA];
+    uint8_t packet[MSCIPC_MAX_PACKET];
     size_t data_len = 0;
     size_t packet_len = 0;
     size_t i;
-    mscip_packet_builder_t builder;
+    mscipc_packet_builder_t builder;
     memset(&command, 0, sizeof command);
-    mscip_packet_begin(&builder, packet, sizeof packet, MSCIP_BASE_SET);
-    if (mscip_base_ping_encode(&command, data, sizeof data, &data_len) != MSCIP_OK ||
-        mscip_packet_add_field(&builder, MSCIP_BASE_PING_DESCRIPTOR, data, data_len) != MSCIP_OK ||
-        mscip_packet_finish(&builder, &packet_len) != MSCIP_OK) {
+    mscipc_packet_begin(&builder, packet, sizeof packet, MSCIPC_BASE_SET);
+    if (mscipc_base_ping_encode(&command, data, sizeof data, &data_len) != MSCIPC_OK ||
+        mscipc_packet_add_field(&builder, MSCIPC_BASE_PING_DESCRIPTOR, data, data_len) != MSCIPC_OK ||
+        mscipc_packet_finish(&builder, &packet_len) != MSCIPC_OK) {
         fprintf(stderr, "getting_started: cannot build the command\n");
         return 1;
     }
@@ -68,7 +68,7 @@ static int print_command(void) {
 // [read-file]
 /* Feeds the file to the parser block by block, then flushes it at the end of the input. */
 static int decode_file(const char *path) {
-    mscip_parser_t parser;
+    mscipc_parser_t parser;
     uint8_t block[4096];
     size_t n;
     FILE *file = fopen(path, "rb");
@@ -76,9 +76,9 @@ static int decode_file(const char *path) {
         fprintf(stderr, "getting_started: cannot open %s: %s\n", path, strerror(errno));
         return 1;
     }
-    mscip_parser_init(&parser);
+    mscipc_parser_init(&parser);
     while ((n = fread(block, 1, sizeof block, file)) > 0) {
-        mscip_parser_feed(&parser, block, n, on_event, NULL);
+        mscipc_parser_feed(&parser, block, n, on_event, NULL);
     }
     if (ferror(file)) {
         fprintf(stderr, "getting_started: cannot read %s\n", path);
@@ -86,7 +86,7 @@ static int decode_file(const char *path) {
         return 1;
     }
     fclose(file);
-    mscip_parser_flush(&parser, on_event, NULL);
+    mscipc_parser_flush(&parser, on_event, NULL);
     return 0;
 }
 // [end]

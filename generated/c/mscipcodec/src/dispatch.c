@@ -5,21 +5,21 @@
 #include <assert.h>
 #include <string.h>
 
-const char *mscip_device_id(mscip_device_t device) {
+const char *mscipc_device_id(mscipc_device_t device) {
     switch (device) {
-    case MSCIP_DEVICE_MS_IMU3020:
+    case MSCIPC_DEVICE_MS_IMU3020:
         return "ms_imu3020";
-    case MSCIP_DEVICE_ANY:
+    case MSCIPC_DEVICE_ANY:
     default:
         return NULL;
     }
 }
 
-bool mscip_device_from_id(const char *id, mscip_device_t *out) {
+bool mscipc_device_from_id(const char *id, mscipc_device_t *out) {
     assert(id != NULL);
     assert(out != NULL);
     if (strcmp(id, "ms_imu3020") == 0) {
-        *out = MSCIP_DEVICE_MS_IMU3020;
+        *out = MSCIPC_DEVICE_MS_IMU3020;
         return true;
     }
     (void)id;
@@ -27,121 +27,124 @@ bool mscip_device_from_id(const char *id, mscip_device_t *out) {
     return false;
 }
 
-mscip_set_kind_t mscip_set_kind(uint8_t set) {
+mscipc_set_kind_t mscipc_set_kind(uint8_t set) {
     if (set >= 0x01 && set <= 0x7F) {
-        return MSCIP_SET_KIND_COMMAND;
+        return MSCIPC_SET_KIND_COMMAND;
     }
     if (set >= 0x80 && 1) {
-        return MSCIP_SET_KIND_DATA;
+        return MSCIPC_SET_KIND_DATA;
     }
     (void)set;
-    return MSCIP_SET_KIND_NONE;
+    return MSCIPC_SET_KIND_NONE;
 }
 
-static const mscip_layout_info_t k_layouts[MSCIP_FIELD_COUNT] = {
-    {MSCIP_FIELD_NONE, NULL, NULL, MSCIP_DEVICE_ANY, 0},
-    {MSCIP_FIELD_ACK, "ack", NULL, MSCIP_DEVICE_ANY, 0x80},
-    {MSCIP_FIELD_BASE_PING, "ping", NULL, MSCIP_DEVICE_ANY, 0x02},
-    {MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES, "get_device_messages", NULL, MSCIP_DEVICE_ANY, 0x03},
-    {MSCIP_FIELD_BASE_DEVICE_MESSAGES, "device_messages", NULL, MSCIP_DEVICE_ANY, 0x83},
-    {MSCIP_FIELD_BASE_DEVICE_RESET, "device_reset", NULL, MSCIP_DEVICE_ANY, 0x04},
-    {MSCIP_FIELD_BASE_GET_DEVICE_MODEL, "get_device_model", NULL, MSCIP_DEVICE_ANY, 0x05},
-    {MSCIP_FIELD_BASE_DEVICE_MODEL, "device_model", NULL, MSCIP_DEVICE_ANY, 0x85},
-    {MSCIP_FIELD_BASE_GET_DEVICE_SN, "get_device_sn", NULL, MSCIP_DEVICE_ANY, 0x06},
-    {MSCIP_FIELD_BASE_DEVICE_SN, "device_sn", NULL, MSCIP_DEVICE_ANY, 0x86},
-    {MSCIP_FIELD_BASE_GET_DEVICE_FW, "get_device_fw", NULL, MSCIP_DEVICE_ANY, 0x07},
-    {MSCIP_FIELD_BASE_DEVICE_FW, "device_fw", NULL, MSCIP_DEVICE_ANY, 0x87},
-    {MSCIP_FIELD_BASE_GET_DEVICE_CAL, "get_device_cal", NULL, MSCIP_DEVICE_ANY, 0x08},
-    {MSCIP_FIELD_BASE_DEVICE_CAL, "device_cal", NULL, MSCIP_DEVICE_ANY, 0x88},
-    {MSCIP_FIELD_BASE_CORRELATE_GPS_TIME, "correlate_gps_time", NULL, MSCIP_DEVICE_ANY, 0x09},
-    {MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE, "uart_baud_rate", NULL, MSCIP_DEVICE_ANY, 0x01},
-    {MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, "uart_baud_rate_response", NULL, MSCIP_DEVICE_ANY, 0x81},
-    {MSCIP_FIELD_IMU_CONFIG_FILTER, "filter", NULL, MSCIP_DEVICE_ANY, 0x03},
-    {MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE, "filter_response", NULL, MSCIP_DEVICE_ANY, 0x83},
-    {MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE, "sample_rate", NULL, MSCIP_DEVICE_ANY, 0x04},
-    {MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, "sample_rate_response", NULL, MSCIP_DEVICE_ANY, 0x84},
-    {MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS, "select_sensors", NULL, MSCIP_DEVICE_ANY, 0x05},
-    {MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, "select_sensors_response", NULL, MSCIP_DEVICE_ANY, 0x85},
-    {MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, "get_internal_sample_rate", NULL, MSCIP_DEVICE_ANY,
+static const mscipc_layout_info_t k_layouts[MSCIPC_FIELD_COUNT] = {
+    {MSCIPC_FIELD_NONE, NULL, NULL, MSCIPC_DEVICE_ANY, 0},
+    {MSCIPC_FIELD_ACK, "ack", NULL, MSCIPC_DEVICE_ANY, 0x80},
+    {MSCIPC_FIELD_BASE_PING, "ping", NULL, MSCIPC_DEVICE_ANY, 0x02},
+    {MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES, "get_device_messages", NULL, MSCIPC_DEVICE_ANY, 0x03},
+    {MSCIPC_FIELD_BASE_DEVICE_MESSAGES, "device_messages", NULL, MSCIPC_DEVICE_ANY, 0x83},
+    {MSCIPC_FIELD_BASE_DEVICE_RESET, "device_reset", NULL, MSCIPC_DEVICE_ANY, 0x04},
+    {MSCIPC_FIELD_BASE_GET_DEVICE_MODEL, "get_device_model", NULL, MSCIPC_DEVICE_ANY, 0x05},
+    {MSCIPC_FIELD_BASE_DEVICE_MODEL, "device_model", NULL, MSCIPC_DEVICE_ANY, 0x85},
+    {MSCIPC_FIELD_BASE_GET_DEVICE_SN, "get_device_sn", NULL, MSCIPC_DEVICE_ANY, 0x06},
+    {MSCIPC_FIELD_BASE_DEVICE_SN, "device_sn", NULL, MSCIPC_DEVICE_ANY, 0x86},
+    {MSCIPC_FIELD_BASE_GET_DEVICE_FW, "get_device_fw", NULL, MSCIPC_DEVICE_ANY, 0x07},
+    {MSCIPC_FIELD_BASE_DEVICE_FW, "device_fw", NULL, MSCIPC_DEVICE_ANY, 0x87},
+    {MSCIPC_FIELD_BASE_GET_DEVICE_CAL, "get_device_cal", NULL, MSCIPC_DEVICE_ANY, 0x08},
+    {MSCIPC_FIELD_BASE_DEVICE_CAL, "device_cal", NULL, MSCIPC_DEVICE_ANY, 0x88},
+    {MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME, "correlate_gps_time", NULL, MSCIPC_DEVICE_ANY, 0x09},
+    {MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE, "uart_baud_rate", NULL, MSCIPC_DEVICE_ANY, 0x01},
+    {MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, "uart_baud_rate_response", NULL, MSCIPC_DEVICE_ANY,
+     0x81},
+    {MSCIPC_FIELD_IMU_CONFIG_FILTER, "filter", NULL, MSCIPC_DEVICE_ANY, 0x03},
+    {MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE, "filter_response", NULL, MSCIPC_DEVICE_ANY, 0x83},
+    {MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE, "sample_rate", NULL, MSCIPC_DEVICE_ANY, 0x04},
+    {MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, "sample_rate_response", NULL, MSCIPC_DEVICE_ANY, 0x84},
+    {MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS, "select_sensors", NULL, MSCIPC_DEVICE_ANY, 0x05},
+    {MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, "select_sensors_response", NULL, MSCIPC_DEVICE_ANY,
+     0x85},
+    {MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, "get_internal_sample_rate", NULL, MSCIPC_DEVICE_ANY,
      0x06},
-    {MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, "internal_sample_rate", NULL, MSCIP_DEVICE_ANY, 0x86},
-    {MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE, "accel_range", NULL, MSCIP_DEVICE_ANY, 0x07},
-    {MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, "accel_range_response", NULL, MSCIP_DEVICE_ANY, 0x87},
-    {MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE, "gyro_range", NULL, MSCIP_DEVICE_ANY, 0x08},
-    {MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, "gyro_range_response", NULL, MSCIP_DEVICE_ANY, 0x88},
-    {MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL, "config_all", NULL, MSCIP_DEVICE_ANY, 0x09},
-    {MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF, "data_on_off", NULL, MSCIP_DEVICE_ANY, 0x0A},
-    {MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, "data_on_off_response", NULL, MSCIP_DEVICE_ANY, 0x8A},
-    {MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF, "xtrig_on_off", NULL, MSCIP_DEVICE_ANY, 0x0B},
-    {MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, "xtrig_on_off_response", NULL, MSCIP_DEVICE_ANY, 0x8B},
-    {MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, "select_sensors_rev_b", NULL, MSCIP_DEVICE_ANY, 0x0C},
-    {MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE, "select_sensors_rev_b_response", NULL,
-     MSCIP_DEVICE_ANY, 0x8C},
-    {MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, "aux_accel_range", NULL, MSCIP_DEVICE_ANY, 0x0D},
-    {MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, "aux_accel_range_response", NULL, MSCIP_DEVICE_ANY,
+    {MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, "internal_sample_rate", NULL, MSCIPC_DEVICE_ANY, 0x86},
+    {MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE, "accel_range", NULL, MSCIPC_DEVICE_ANY, 0x07},
+    {MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, "accel_range_response", NULL, MSCIPC_DEVICE_ANY, 0x87},
+    {MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE, "gyro_range", NULL, MSCIPC_DEVICE_ANY, 0x08},
+    {MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, "gyro_range_response", NULL, MSCIPC_DEVICE_ANY, 0x88},
+    {MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL, "config_all", NULL, MSCIPC_DEVICE_ANY, 0x09},
+    {MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF, "data_on_off", NULL, MSCIPC_DEVICE_ANY, 0x0A},
+    {MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, "data_on_off_response", NULL, MSCIPC_DEVICE_ANY, 0x8A},
+    {MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF, "xtrig_on_off", NULL, MSCIPC_DEVICE_ANY, 0x0B},
+    {MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, "xtrig_on_off_response", NULL, MSCIPC_DEVICE_ANY, 0x8B},
+    {MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, "select_sensors_rev_b", NULL, MSCIPC_DEVICE_ANY, 0x0C},
+    {MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE, "select_sensors_rev_b_response", NULL,
+     MSCIPC_DEVICE_ANY, 0x8C},
+    {MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, "aux_accel_range", NULL, MSCIPC_DEVICE_ANY, 0x0D},
+    {MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, "aux_accel_range_response", NULL, MSCIPC_DEVICE_ANY,
      0x8D},
-    {MSCIP_FIELD_IMU_DATA_SCALED_ACCEL, "scaled_accel", NULL, MSCIP_DEVICE_ANY, 0x81},
-    {MSCIP_FIELD_IMU_DATA_SCALED_GYRO, "scaled_gyro", NULL, MSCIP_DEVICE_ANY, 0x82},
-    {MSCIP_FIELD_IMU_DATA_SCALED_MAG, "scaled_mag", NULL, MSCIP_DEVICE_ANY, 0x83},
-    {MSCIP_FIELD_IMU_DATA_DELTA_THETA, "delta_theta", NULL, MSCIP_DEVICE_ANY, 0x84},
-    {MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY, "delta_velocity", NULL, MSCIP_DEVICE_ANY, 0x85},
-    {MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE, "scaled_pressure", NULL, MSCIP_DEVICE_ANY, 0x86},
-    {MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE, "scaled_temperature", NULL, MSCIP_DEVICE_ANY, 0x87},
-    {MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME, "gps_correlated_time", NULL, MSCIP_DEVICE_ANY, 0x88},
-    {MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL, "scaled_aux_accel", NULL, MSCIP_DEVICE_ANY, 0x89},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL, "scaled_accel", NULL, MSCIPC_DEVICE_ANY, 0x81},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_GYRO, "scaled_gyro", NULL, MSCIPC_DEVICE_ANY, 0x82},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_MAG, "scaled_mag", NULL, MSCIPC_DEVICE_ANY, 0x83},
+    {MSCIPC_FIELD_IMU_DATA_DELTA_THETA, "delta_theta", NULL, MSCIPC_DEVICE_ANY, 0x84},
+    {MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY, "delta_velocity", NULL, MSCIPC_DEVICE_ANY, 0x85},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE, "scaled_pressure", NULL, MSCIPC_DEVICE_ANY, 0x86},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE, "scaled_temperature", NULL, MSCIPC_DEVICE_ANY, 0x87},
+    {MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME, "gps_correlated_time", NULL, MSCIPC_DEVICE_ANY, 0x88},
+    {MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL, "scaled_aux_accel", NULL, MSCIPC_DEVICE_ANY, 0x89},
 };
 
-static const mscip_field_info_t k_fields[46] = {
-    {"ack", 0x80, MSCIP_FIELD_ACK, 1},                                                                /* 0 */
-    {"ping", 0x02, MSCIP_FIELD_BASE_PING, 1},                                                         /* 1 */
-    {"get_device_messages", 0x03, MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES, 1},                           /* 2 */
-    {"device_messages", 0x83, MSCIP_FIELD_BASE_DEVICE_MESSAGES, 1},                                   /* 3 */
-    {"device_reset", 0x04, MSCIP_FIELD_BASE_DEVICE_RESET, 1},                                         /* 4 */
-    {"get_device_model", 0x05, MSCIP_FIELD_BASE_GET_DEVICE_MODEL, 1},                                 /* 5 */
-    {"device_model", 0x85, MSCIP_FIELD_BASE_DEVICE_MODEL, 1},                                         /* 6 */
-    {"get_device_sn", 0x06, MSCIP_FIELD_BASE_GET_DEVICE_SN, 1},                                       /* 7 */
-    {"device_sn", 0x86, MSCIP_FIELD_BASE_DEVICE_SN, 1},                                               /* 8 */
-    {"get_device_fw", 0x07, MSCIP_FIELD_BASE_GET_DEVICE_FW, 1},                                       /* 9 */
-    {"device_fw", 0x87, MSCIP_FIELD_BASE_DEVICE_FW, 1},                                               /* 10 */
-    {"get_device_cal", 0x08, MSCIP_FIELD_BASE_GET_DEVICE_CAL, 1},                                     /* 11 */
-    {"device_cal", 0x88, MSCIP_FIELD_BASE_DEVICE_CAL, 1},                                             /* 12 */
-    {"correlate_gps_time", 0x09, MSCIP_FIELD_BASE_CORRELATE_GPS_TIME, 1},                             /* 13 */
-    {"uart_baud_rate", 0x01, MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE, 1},                               /* 14 */
-    {"uart_baud_rate_response", 0x81, MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, 1},             /* 15 */
-    {"filter", 0x03, MSCIP_FIELD_IMU_CONFIG_FILTER, 1},                                               /* 16 */
-    {"filter_response", 0x83, MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE, 1},                             /* 17 */
-    {"sample_rate", 0x04, MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE, 1},                                     /* 18 */
-    {"sample_rate_response", 0x84, MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, 1},                   /* 19 */
-    {"select_sensors", 0x05, MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS, 1},                               /* 20 */
-    {"select_sensors_response", 0x85, MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, 1},             /* 21 */
-    {"get_internal_sample_rate", 0x06, MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, 1},           /* 22 */
-    {"internal_sample_rate", 0x86, MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, 1},                   /* 23 */
-    {"accel_range", 0x07, MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE, 1},                                     /* 24 */
-    {"accel_range_response", 0x87, MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, 1},                   /* 25 */
-    {"gyro_range", 0x08, MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE, 1},                                       /* 26 */
-    {"gyro_range_response", 0x88, MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, 1},                     /* 27 */
-    {"config_all", 0x09, MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL, 1},                                       /* 28 */
-    {"data_on_off", 0x0A, MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF, 1},                                     /* 29 */
-    {"data_on_off_response", 0x8A, MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, 1},                   /* 30 */
-    {"xtrig_on_off", 0x0B, MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF, 1},                                   /* 31 */
-    {"xtrig_on_off_response", 0x8B, MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, 1},                 /* 32 */
-    {"select_sensors_rev_b", 0x0C, MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, 1},                   /* 33 */
-    {"select_sensors_rev_b_response", 0x8C, MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE, 1}, /* 34 */
-    {"aux_accel_range", 0x0D, MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, 1},                             /* 35 */
-    {"aux_accel_range_response", 0x8D, MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, 1},           /* 36 */
-    {"scaled_accel", 0x81, MSCIP_FIELD_IMU_DATA_SCALED_ACCEL, 1},                                     /* 37 */
-    {"scaled_gyro", 0x82, MSCIP_FIELD_IMU_DATA_SCALED_GYRO, 1},                                       /* 38 */
-    {"scaled_mag", 0x83, MSCIP_FIELD_IMU_DATA_SCALED_MAG, 1},                                         /* 39 */
-    {"delta_theta", 0x84, MSCIP_FIELD_IMU_DATA_DELTA_THETA, 1},                                       /* 40 */
-    {"delta_velocity", 0x85, MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY, 1},                                 /* 41 */
-    {"scaled_pressure", 0x86, MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE, 1},                               /* 42 */
-    {"scaled_temperature", 0x87, MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE, 1},                         /* 43 */
-    {"gps_correlated_time", 0x88, MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME, 1},                       /* 44 */
-    {"scaled_aux_accel", 0x89, MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL, 1},                             /* 45 */
+static const mscipc_field_info_t k_fields[46] = {
+    {"ack", 0x80, MSCIPC_FIELD_ACK, 1},                                                      /* 0 */
+    {"ping", 0x02, MSCIPC_FIELD_BASE_PING, 1},                                               /* 1 */
+    {"get_device_messages", 0x03, MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES, 1},                 /* 2 */
+    {"device_messages", 0x83, MSCIPC_FIELD_BASE_DEVICE_MESSAGES, 1},                         /* 3 */
+    {"device_reset", 0x04, MSCIPC_FIELD_BASE_DEVICE_RESET, 1},                               /* 4 */
+    {"get_device_model", 0x05, MSCIPC_FIELD_BASE_GET_DEVICE_MODEL, 1},                       /* 5 */
+    {"device_model", 0x85, MSCIPC_FIELD_BASE_DEVICE_MODEL, 1},                               /* 6 */
+    {"get_device_sn", 0x06, MSCIPC_FIELD_BASE_GET_DEVICE_SN, 1},                             /* 7 */
+    {"device_sn", 0x86, MSCIPC_FIELD_BASE_DEVICE_SN, 1},                                     /* 8 */
+    {"get_device_fw", 0x07, MSCIPC_FIELD_BASE_GET_DEVICE_FW, 1},                             /* 9 */
+    {"device_fw", 0x87, MSCIPC_FIELD_BASE_DEVICE_FW, 1},                                     /* 10 */
+    {"get_device_cal", 0x08, MSCIPC_FIELD_BASE_GET_DEVICE_CAL, 1},                           /* 11 */
+    {"device_cal", 0x88, MSCIPC_FIELD_BASE_DEVICE_CAL, 1},                                   /* 12 */
+    {"correlate_gps_time", 0x09, MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME, 1},                   /* 13 */
+    {"uart_baud_rate", 0x01, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE, 1},                     /* 14 */
+    {"uart_baud_rate_response", 0x81, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, 1},   /* 15 */
+    {"filter", 0x03, MSCIPC_FIELD_IMU_CONFIG_FILTER, 1},                                     /* 16 */
+    {"filter_response", 0x83, MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE, 1},                   /* 17 */
+    {"sample_rate", 0x04, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE, 1},                           /* 18 */
+    {"sample_rate_response", 0x84, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, 1},         /* 19 */
+    {"select_sensors", 0x05, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS, 1},                     /* 20 */
+    {"select_sensors_response", 0x85, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, 1},   /* 21 */
+    {"get_internal_sample_rate", 0x06, MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, 1}, /* 22 */
+    {"internal_sample_rate", 0x86, MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, 1},         /* 23 */
+    {"accel_range", 0x07, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE, 1},                           /* 24 */
+    {"accel_range_response", 0x87, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, 1},         /* 25 */
+    {"gyro_range", 0x08, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE, 1},                             /* 26 */
+    {"gyro_range_response", 0x88, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, 1},           /* 27 */
+    {"config_all", 0x09, MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL, 1},                             /* 28 */
+    {"data_on_off", 0x0A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF, 1},                           /* 29 */
+    {"data_on_off_response", 0x8A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, 1},         /* 30 */
+    {"xtrig_on_off", 0x0B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF, 1},                         /* 31 */
+    {"xtrig_on_off_response", 0x8B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, 1},       /* 32 */
+    {"select_sensors_rev_b", 0x0C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, 1},         /* 33 */
+    {"select_sensors_rev_b_response", 0x8C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE,
+     1},                                                                                     /* 34 */
+    {"aux_accel_range", 0x0D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, 1},                   /* 35 */
+    {"aux_accel_range_response", 0x8D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, 1}, /* 36 */
+    {"scaled_accel", 0x81, MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL, 1},                           /* 37 */
+    {"scaled_gyro", 0x82, MSCIPC_FIELD_IMU_DATA_SCALED_GYRO, 1},                             /* 38 */
+    {"scaled_mag", 0x83, MSCIPC_FIELD_IMU_DATA_SCALED_MAG, 1},                               /* 39 */
+    {"delta_theta", 0x84, MSCIPC_FIELD_IMU_DATA_DELTA_THETA, 1},                             /* 40 */
+    {"delta_velocity", 0x85, MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY, 1},                       /* 41 */
+    {"scaled_pressure", 0x86, MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE, 1},                     /* 42 */
+    {"scaled_temperature", 0x87, MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE, 1},               /* 43 */
+    {"gps_correlated_time", 0x88, MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME, 1},             /* 44 */
+    {"scaled_aux_accel", 0x89, MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL, 1},                   /* 45 */
 };
 
-const mscip_layout_info_t *mscip_layout_info(mscip_field_id_t id) {
-    if ((size_t)id >= MSCIP_FIELD_COUNT) {
+const mscipc_layout_info_t *mscipc_layout_info(mscipc_field_id_t id) {
+    if ((size_t)id >= MSCIPC_FIELD_COUNT) {
         return NULL;
     }
     return &k_layouts[id];
@@ -213,7 +216,7 @@ static const uint16_t *const k_sets[256] = {
 
 /* Fields of a set (reserved and shared data fields included, see k_set_*); *set_known tells
  * whether the set is defined at all. */
-static const mscip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
+static const mscipc_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *set_known) {
     const uint16_t *table = k_sets[set];
     *set_known = table != NULL;
     if (!table || table[descriptor] == 0) {
@@ -222,172 +225,172 @@ static const mscip_field_info_t *defined(uint8_t set, uint8_t descriptor, bool *
     return &k_fields[table[descriptor] - 1];
 }
 
-/* The body of mscip_find_field, static so that mscip_decode_field inlines it. */
-static const mscip_field_info_t *find_field(uint8_t set, uint8_t descriptor, mscip_status_t *why) {
+/* The body of mscipc_find_field, static so that mscipc_decode_field inlines it. */
+static const mscipc_field_info_t *find_field(uint8_t set, uint8_t descriptor, mscipc_status_t *why) {
     bool known = false;
-    mscip_set_kind_t kind;
-    const mscip_field_info_t *f = defined(set, descriptor, &known);
+    mscipc_set_kind_t kind;
+    const mscipc_field_info_t *f = defined(set, descriptor, &known);
     if (f) {
         return f;
     }
-    kind = mscip_set_kind(set);
+    kind = mscipc_set_kind(set);
     /* reserved fields of the set's kind */
     switch (kind) {
-    case MSCIP_SET_KIND_COMMAND:
+    case MSCIPC_SET_KIND_COMMAND:
         if (descriptor == 0x80) {
             return &k_fields[0]; /* ack */
         }
         break;
-    case MSCIP_SET_KIND_DATA:
+    case MSCIPC_SET_KIND_DATA:
         break;
-    case MSCIP_SET_KIND_NONE:
+    case MSCIPC_SET_KIND_NONE:
     default:
         break;
     }
     if (why) {
-        *why = known ? MSCIP_ERR_UNKNOWN_DESCRIPTOR : MSCIP_ERR_UNKNOWN_SET;
+        *why = known ? MSCIPC_ERR_UNKNOWN_DESCRIPTOR : MSCIPC_ERR_UNKNOWN_SET;
     }
     return NULL;
 }
 
-const mscip_field_info_t *mscip_find_field(uint8_t set, uint8_t descriptor, mscip_status_t *why) {
+const mscipc_field_info_t *mscipc_find_field(uint8_t set, uint8_t descriptor, mscipc_status_t *why) {
     return find_field(set, descriptor, why);
 }
 
-static mscip_status_t decode_layout(mscip_field_id_t id, const uint8_t *data, size_t len,
-                                    mscip_field_value_t *out, mscip_decode_error_t *err) {
+static mscipc_status_t decode_layout(mscipc_field_id_t id, const uint8_t *data, size_t len,
+                                     mscipc_field_value_t *out, mscipc_decode_error_t *err) {
     out->id = id;
     switch (id) {
-    case MSCIP_FIELD_ACK:
-        return mscip_ack_decode(data, len, &out->u.ack, err);
-    case MSCIP_FIELD_BASE_PING:
-        return mscip_base_ping_decode(data, len, &out->u.base_ping, err);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES:
-        return mscip_base_get_device_messages_decode(data, len, &out->u.base_get_device_messages, err);
-    case MSCIP_FIELD_BASE_DEVICE_MESSAGES:
-        return mscip_base_device_messages_decode(data, len, &out->u.base_device_messages, err);
-    case MSCIP_FIELD_BASE_DEVICE_RESET:
-        return mscip_base_device_reset_decode(data, len, &out->u.base_device_reset, err);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MODEL:
-        return mscip_base_get_device_model_decode(data, len, &out->u.base_get_device_model, err);
-    case MSCIP_FIELD_BASE_DEVICE_MODEL:
-        return mscip_base_device_model_decode(data, len, &out->u.base_device_model, err);
-    case MSCIP_FIELD_BASE_GET_DEVICE_SN:
-        return mscip_base_get_device_sn_decode(data, len, &out->u.base_get_device_sn, err);
-    case MSCIP_FIELD_BASE_DEVICE_SN:
-        return mscip_base_device_sn_decode(data, len, &out->u.base_device_sn, err);
-    case MSCIP_FIELD_BASE_GET_DEVICE_FW:
-        return mscip_base_get_device_fw_decode(data, len, &out->u.base_get_device_fw, err);
-    case MSCIP_FIELD_BASE_DEVICE_FW:
-        return mscip_base_device_fw_decode(data, len, &out->u.base_device_fw, err);
-    case MSCIP_FIELD_BASE_GET_DEVICE_CAL:
-        return mscip_base_get_device_cal_decode(data, len, &out->u.base_get_device_cal, err);
-    case MSCIP_FIELD_BASE_DEVICE_CAL:
-        return mscip_base_device_cal_decode(data, len, &out->u.base_device_cal, err);
-    case MSCIP_FIELD_BASE_CORRELATE_GPS_TIME:
-        return mscip_base_correlate_gps_time_decode(data, len, &out->u.base_correlate_gps_time, err);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE:
-        return mscip_imu_config_uart_baud_rate_decode(data, len, &out->u.imu_config_uart_baud_rate, err);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
-        return mscip_imu_config_uart_baud_rate_response_decode(
+    case MSCIPC_FIELD_ACK:
+        return mscipc_ack_decode(data, len, &out->u.ack, err);
+    case MSCIPC_FIELD_BASE_PING:
+        return mscipc_base_ping_decode(data, len, &out->u.base_ping, err);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES:
+        return mscipc_base_get_device_messages_decode(data, len, &out->u.base_get_device_messages, err);
+    case MSCIPC_FIELD_BASE_DEVICE_MESSAGES:
+        return mscipc_base_device_messages_decode(data, len, &out->u.base_device_messages, err);
+    case MSCIPC_FIELD_BASE_DEVICE_RESET:
+        return mscipc_base_device_reset_decode(data, len, &out->u.base_device_reset, err);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_MODEL:
+        return mscipc_base_get_device_model_decode(data, len, &out->u.base_get_device_model, err);
+    case MSCIPC_FIELD_BASE_DEVICE_MODEL:
+        return mscipc_base_device_model_decode(data, len, &out->u.base_device_model, err);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_SN:
+        return mscipc_base_get_device_sn_decode(data, len, &out->u.base_get_device_sn, err);
+    case MSCIPC_FIELD_BASE_DEVICE_SN:
+        return mscipc_base_device_sn_decode(data, len, &out->u.base_device_sn, err);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_FW:
+        return mscipc_base_get_device_fw_decode(data, len, &out->u.base_get_device_fw, err);
+    case MSCIPC_FIELD_BASE_DEVICE_FW:
+        return mscipc_base_device_fw_decode(data, len, &out->u.base_device_fw, err);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_CAL:
+        return mscipc_base_get_device_cal_decode(data, len, &out->u.base_get_device_cal, err);
+    case MSCIPC_FIELD_BASE_DEVICE_CAL:
+        return mscipc_base_device_cal_decode(data, len, &out->u.base_device_cal, err);
+    case MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME:
+        return mscipc_base_correlate_gps_time_decode(data, len, &out->u.base_correlate_gps_time, err);
+    case MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE:
+        return mscipc_imu_config_uart_baud_rate_decode(data, len, &out->u.imu_config_uart_baud_rate, err);
+    case MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
+        return mscipc_imu_config_uart_baud_rate_response_decode(
             data, len, &out->u.imu_config_uart_baud_rate_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER:
-        return mscip_imu_config_filter_decode(data, len, &out->u.imu_config_filter, err);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE:
-        return mscip_imu_config_filter_response_decode(data, len, &out->u.imu_config_filter_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE:
-        return mscip_imu_config_sample_rate_decode(data, len, &out->u.imu_config_sample_rate, err);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
-        return mscip_imu_config_sample_rate_response_decode(data, len,
-                                                            &out->u.imu_config_sample_rate_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS:
-        return mscip_imu_config_select_sensors_decode(data, len, &out->u.imu_config_select_sensors, err);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
-        return mscip_imu_config_select_sensors_response_decode(
+    case MSCIPC_FIELD_IMU_CONFIG_FILTER:
+        return mscipc_imu_config_filter_decode(data, len, &out->u.imu_config_filter, err);
+    case MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE:
+        return mscipc_imu_config_filter_response_decode(data, len, &out->u.imu_config_filter_response, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE:
+        return mscipc_imu_config_sample_rate_decode(data, len, &out->u.imu_config_sample_rate, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
+        return mscipc_imu_config_sample_rate_response_decode(data, len,
+                                                             &out->u.imu_config_sample_rate_response, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS:
+        return mscipc_imu_config_select_sensors_decode(data, len, &out->u.imu_config_select_sensors, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
+        return mscipc_imu_config_select_sensors_response_decode(
             data, len, &out->u.imu_config_select_sensors_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_get_internal_sample_rate_decode(
+    case MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
+        return mscipc_imu_config_get_internal_sample_rate_decode(
             data, len, &out->u.imu_config_get_internal_sample_rate, err);
-    case MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_internal_sample_rate_decode(data, len,
-                                                            &out->u.imu_config_internal_sample_rate, err);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE:
-        return mscip_imu_config_accel_range_decode(data, len, &out->u.imu_config_accel_range, err);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_accel_range_response_decode(data, len,
-                                                            &out->u.imu_config_accel_range_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE:
-        return mscip_imu_config_gyro_range_decode(data, len, &out->u.imu_config_gyro_range, err);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
-        return mscip_imu_config_gyro_range_response_decode(data, len, &out->u.imu_config_gyro_range_response,
-                                                           err);
-    case MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL:
-        return mscip_imu_config_config_all_decode(data, len, &out->u.imu_config_config_all, err);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF:
-        return mscip_imu_config_data_on_off_decode(data, len, &out->u.imu_config_data_on_off, err);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
-        return mscip_imu_config_data_on_off_response_decode(data, len,
-                                                            &out->u.imu_config_data_on_off_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
-        return mscip_imu_config_xtrig_on_off_decode(data, len, &out->u.imu_config_xtrig_on_off, err);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
-        return mscip_imu_config_xtrig_on_off_response_decode(data, len,
-                                                             &out->u.imu_config_xtrig_on_off_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
-        return mscip_imu_config_select_sensors_rev_b_decode(data, len,
-                                                            &out->u.imu_config_select_sensors_rev_b, err);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
-        return mscip_imu_config_select_sensors_rev_b_response_decode(
+    case MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
+        return mscipc_imu_config_internal_sample_rate_decode(data, len,
+                                                             &out->u.imu_config_internal_sample_rate, err);
+    case MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE:
+        return mscipc_imu_config_accel_range_decode(data, len, &out->u.imu_config_accel_range, err);
+    case MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
+        return mscipc_imu_config_accel_range_response_decode(data, len,
+                                                             &out->u.imu_config_accel_range_response, err);
+    case MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE:
+        return mscipc_imu_config_gyro_range_decode(data, len, &out->u.imu_config_gyro_range, err);
+    case MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
+        return mscipc_imu_config_gyro_range_response_decode(data, len, &out->u.imu_config_gyro_range_response,
+                                                            err);
+    case MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL:
+        return mscipc_imu_config_config_all_decode(data, len, &out->u.imu_config_config_all, err);
+    case MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF:
+        return mscipc_imu_config_data_on_off_decode(data, len, &out->u.imu_config_data_on_off, err);
+    case MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
+        return mscipc_imu_config_data_on_off_response_decode(data, len,
+                                                             &out->u.imu_config_data_on_off_response, err);
+    case MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
+        return mscipc_imu_config_xtrig_on_off_decode(data, len, &out->u.imu_config_xtrig_on_off, err);
+    case MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
+        return mscipc_imu_config_xtrig_on_off_response_decode(data, len,
+                                                              &out->u.imu_config_xtrig_on_off_response, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
+        return mscipc_imu_config_select_sensors_rev_b_decode(data, len,
+                                                             &out->u.imu_config_select_sensors_rev_b, err);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
+        return mscipc_imu_config_select_sensors_rev_b_response_decode(
             data, len, &out->u.imu_config_select_sensors_rev_b_response, err);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
-        return mscip_imu_config_aux_accel_range_decode(data, len, &out->u.imu_config_aux_accel_range, err);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_aux_accel_range_response_decode(
+    case MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
+        return mscipc_imu_config_aux_accel_range_decode(data, len, &out->u.imu_config_aux_accel_range, err);
+    case MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
+        return mscipc_imu_config_aux_accel_range_response_decode(
             data, len, &out->u.imu_config_aux_accel_range_response, err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_ACCEL:
-        return mscip_imu_data_scaled_accel_decode(data, len, &out->u.imu_data_scaled_accel, err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_GYRO:
-        return mscip_imu_data_scaled_gyro_decode(data, len, &out->u.imu_data_scaled_gyro, err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_MAG:
-        return mscip_imu_data_scaled_mag_decode(data, len, &out->u.imu_data_scaled_mag, err);
-    case MSCIP_FIELD_IMU_DATA_DELTA_THETA:
-        return mscip_imu_data_delta_theta_decode(data, len, &out->u.imu_data_delta_theta, err);
-    case MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY:
-        return mscip_imu_data_delta_velocity_decode(data, len, &out->u.imu_data_delta_velocity, err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE:
-        return mscip_imu_data_scaled_pressure_decode(data, len, &out->u.imu_data_scaled_pressure, err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE:
-        return mscip_imu_data_scaled_temperature_decode(data, len, &out->u.imu_data_scaled_temperature, err);
-    case MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
-        return mscip_imu_data_gps_correlated_time_decode(data, len, &out->u.imu_data_gps_correlated_time,
-                                                         err);
-    case MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
-        return mscip_imu_data_scaled_aux_accel_decode(data, len, &out->u.imu_data_scaled_aux_accel, err);
-    case MSCIP_FIELD_NONE:
-    case MSCIP_FIELD_COUNT:
+    case MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL:
+        return mscipc_imu_data_scaled_accel_decode(data, len, &out->u.imu_data_scaled_accel, err);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_GYRO:
+        return mscipc_imu_data_scaled_gyro_decode(data, len, &out->u.imu_data_scaled_gyro, err);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_MAG:
+        return mscipc_imu_data_scaled_mag_decode(data, len, &out->u.imu_data_scaled_mag, err);
+    case MSCIPC_FIELD_IMU_DATA_DELTA_THETA:
+        return mscipc_imu_data_delta_theta_decode(data, len, &out->u.imu_data_delta_theta, err);
+    case MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY:
+        return mscipc_imu_data_delta_velocity_decode(data, len, &out->u.imu_data_delta_velocity, err);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE:
+        return mscipc_imu_data_scaled_pressure_decode(data, len, &out->u.imu_data_scaled_pressure, err);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE:
+        return mscipc_imu_data_scaled_temperature_decode(data, len, &out->u.imu_data_scaled_temperature, err);
+    case MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
+        return mscipc_imu_data_gps_correlated_time_decode(data, len, &out->u.imu_data_gps_correlated_time,
+                                                          err);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
+        return mscipc_imu_data_scaled_aux_accel_decode(data, len, &out->u.imu_data_scaled_aux_accel, err);
+    case MSCIPC_FIELD_NONE:
+    case MSCIPC_FIELD_COUNT:
     default:
-        return MSCIP_ERR_INVALID;
+        return MSCIPC_ERR_INVALID;
     }
 }
 
-/* Every case of mscip_decode_field: several layouts per field, a device to choose among them, error
- * details. Out of line (MSCIP_NOINLINE) so that the common case below stays a short function. */
-static MSCIP_NOINLINE mscip_status_t decode_field_general(uint8_t set, uint8_t descriptor,
-                                                          const uint8_t *data, size_t len,
-                                                          mscip_device_t device, mscip_field_value_t *out,
-                                                          mscip_decode_error_t *err) {
-    mscip_status_t why = MSCIP_ERR_UNKNOWN_SET;
-    const mscip_field_info_t *f = find_field(set, descriptor, &why);
+/* Every case of mscipc_decode_field: several layouts per field, a device to choose among them, error
+ * details. Out of line (MSCIPC_NOINLINE) so that the common case below stays a short function. */
+static MSCIPC_NOINLINE mscipc_status_t decode_field_general(uint8_t set, uint8_t descriptor,
+                                                            const uint8_t *data, size_t len,
+                                                            mscipc_device_t device, mscipc_field_value_t *out,
+                                                            mscipc_decode_error_t *err) {
+    mscipc_status_t why = MSCIPC_ERR_UNKNOWN_SET;
+    const mscipc_field_info_t *f = find_field(set, descriptor, &why);
     size_t first;
     size_t count;
     size_t i;
-    out->id = MSCIP_FIELD_NONE;
+    out->id = MSCIPC_FIELD_NONE;
     if (!f) {
         return why;
     }
     first = (size_t)f->first_layout;
     count = f->layout_count;
-    if (device != MSCIP_DEVICE_ANY) {
+    if (device != MSCIPC_DEVICE_ANY) {
         for (i = 0; i < count; i++) {
             if (k_layouts[first + i].device_id == device) {
                 first += i;
@@ -399,420 +402,159 @@ static MSCIP_NOINLINE mscip_status_t decode_field_general(uint8_t set, uint8_t d
     /* No error details on the way (the common case is a field that decodes); when no layout
      * decodes, the first one runs again to report its error. */
     for (i = 0; i < count; i++) {
-        if (decode_layout((mscip_field_id_t)(first + i), data, len, out, NULL) == MSCIP_OK) {
-            return MSCIP_OK;
+        if (decode_layout((mscipc_field_id_t)(first + i), data, len, out, NULL) == MSCIPC_OK) {
+            return MSCIPC_OK;
         }
     }
     if (err) {
         memset(err, 0, sizeof *err);
-        (void)decode_layout((mscip_field_id_t)first, data, len, out, err);
+        (void)decode_layout((mscipc_field_id_t)first, data, len, out, err);
     }
-    out->id = MSCIP_FIELD_NONE;
-    return MSCIP_ERR_DECODE;
+    out->id = MSCIPC_FIELD_NONE;
+    return MSCIPC_ERR_DECODE;
 }
 
 /* The common case first: a field its set defines, with one layout (the device does not choose
  * among one). Its decoder fills *err itself when it fails (as decode_field_general's second run
  * does). Anything else goes to decode_field_general, which starts over. */
-mscip_status_t mscip_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
-                                  mscip_device_t device, mscip_field_value_t *out,
-                                  mscip_decode_error_t *err) {
+mscipc_status_t mscipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                                    mscipc_device_t device, mscipc_field_value_t *out,
+                                    mscipc_decode_error_t *err) {
     const uint16_t *table = k_sets[set];
     assert(data != NULL || len == 0);
     assert(out != NULL);
     if (table && table[descriptor] != 0) {
-        const mscip_field_info_t *f = &k_fields[table[descriptor] - 1];
+        const mscipc_field_info_t *f = &k_fields[table[descriptor] - 1];
         if (f->layout_count == 1) {
-            if (decode_layout(f->first_layout, data, len, out, err) == MSCIP_OK) {
-                return MSCIP_OK;
+            if (decode_layout(f->first_layout, data, len, out, err) == MSCIPC_OK) {
+                return MSCIPC_OK;
             }
-            out->id = MSCIP_FIELD_NONE;
-            return MSCIP_ERR_DECODE;
+            out->id = MSCIPC_FIELD_NONE;
+            return MSCIPC_ERR_DECODE;
         }
     }
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
-mscip_status_t mscip_encode_field(const mscip_field_value_t *value, uint8_t *buf, size_t cap,
-                                  size_t *len_out) {
+mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,
+                                    size_t *len_out) {
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
     switch (value->id) {
-    case MSCIP_FIELD_ACK:
-        return mscip_ack_encode(&value->u.ack, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_PING:
-        return mscip_base_ping_encode(&value->u.base_ping, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES:
-        return mscip_base_get_device_messages_encode(&value->u.base_get_device_messages, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_MESSAGES:
-        return mscip_base_device_messages_encode(&value->u.base_device_messages, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_RESET:
-        return mscip_base_device_reset_encode(&value->u.base_device_reset, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MODEL:
-        return mscip_base_get_device_model_encode(&value->u.base_get_device_model, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_MODEL:
-        return mscip_base_device_model_encode(&value->u.base_device_model, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_GET_DEVICE_SN:
-        return mscip_base_get_device_sn_encode(&value->u.base_get_device_sn, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_SN:
-        return mscip_base_device_sn_encode(&value->u.base_device_sn, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_GET_DEVICE_FW:
-        return mscip_base_get_device_fw_encode(&value->u.base_get_device_fw, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_FW:
-        return mscip_base_device_fw_encode(&value->u.base_device_fw, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_GET_DEVICE_CAL:
-        return mscip_base_get_device_cal_encode(&value->u.base_get_device_cal, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_DEVICE_CAL:
-        return mscip_base_device_cal_encode(&value->u.base_device_cal, buf, cap, len_out);
-    case MSCIP_FIELD_BASE_CORRELATE_GPS_TIME:
-        return mscip_base_correlate_gps_time_encode(&value->u.base_correlate_gps_time, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE:
-        return mscip_imu_config_uart_baud_rate_encode(&value->u.imu_config_uart_baud_rate, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
-        return mscip_imu_config_uart_baud_rate_response_encode(&value->u.imu_config_uart_baud_rate_response,
-                                                               buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER:
-        return mscip_imu_config_filter_encode(&value->u.imu_config_filter, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE:
-        return mscip_imu_config_filter_response_encode(&value->u.imu_config_filter_response, buf, cap,
+    case MSCIPC_FIELD_ACK:
+        return mscipc_ack_encode(&value->u.ack, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_PING:
+        return mscipc_base_ping_encode(&value->u.base_ping, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES:
+        return mscipc_base_get_device_messages_encode(&value->u.base_get_device_messages, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_MESSAGES:
+        return mscipc_base_device_messages_encode(&value->u.base_device_messages, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_RESET:
+        return mscipc_base_device_reset_encode(&value->u.base_device_reset, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_MODEL:
+        return mscipc_base_get_device_model_encode(&value->u.base_get_device_model, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_MODEL:
+        return mscipc_base_device_model_encode(&value->u.base_device_model, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_SN:
+        return mscipc_base_get_device_sn_encode(&value->u.base_get_device_sn, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_SN:
+        return mscipc_base_device_sn_encode(&value->u.base_device_sn, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_FW:
+        return mscipc_base_get_device_fw_encode(&value->u.base_get_device_fw, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_FW:
+        return mscipc_base_device_fw_encode(&value->u.base_device_fw, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_GET_DEVICE_CAL:
+        return mscipc_base_get_device_cal_encode(&value->u.base_get_device_cal, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_DEVICE_CAL:
+        return mscipc_base_device_cal_encode(&value->u.base_device_cal, buf, cap, len_out);
+    case MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME:
+        return mscipc_base_correlate_gps_time_encode(&value->u.base_correlate_gps_time, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE:
+        return mscipc_imu_config_uart_baud_rate_encode(&value->u.imu_config_uart_baud_rate, buf, cap,
                                                        len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE:
-        return mscip_imu_config_sample_rate_encode(&value->u.imu_config_sample_rate, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
-        return mscip_imu_config_sample_rate_response_encode(&value->u.imu_config_sample_rate_response, buf,
-                                                            cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS:
-        return mscip_imu_config_select_sensors_encode(&value->u.imu_config_select_sensors, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
-        return mscip_imu_config_select_sensors_response_encode(&value->u.imu_config_select_sensors_response,
-                                                               buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_get_internal_sample_rate_encode(&value->u.imu_config_get_internal_sample_rate,
+    case MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
+        return mscipc_imu_config_uart_baud_rate_response_encode(&value->u.imu_config_uart_baud_rate_response,
                                                                 buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_internal_sample_rate_encode(&value->u.imu_config_internal_sample_rate, buf,
-                                                            cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE:
-        return mscip_imu_config_accel_range_encode(&value->u.imu_config_accel_range, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_accel_range_response_encode(&value->u.imu_config_accel_range_response, buf,
-                                                            cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE:
-        return mscip_imu_config_gyro_range_encode(&value->u.imu_config_gyro_range, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
-        return mscip_imu_config_gyro_range_response_encode(&value->u.imu_config_gyro_range_response, buf, cap,
-                                                           len_out);
-    case MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL:
-        return mscip_imu_config_config_all_encode(&value->u.imu_config_config_all, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF:
-        return mscip_imu_config_data_on_off_encode(&value->u.imu_config_data_on_off, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
-        return mscip_imu_config_data_on_off_response_encode(&value->u.imu_config_data_on_off_response, buf,
-                                                            cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
-        return mscip_imu_config_xtrig_on_off_encode(&value->u.imu_config_xtrig_on_off, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
-        return mscip_imu_config_xtrig_on_off_response_encode(&value->u.imu_config_xtrig_on_off_response, buf,
-                                                             cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
-        return mscip_imu_config_select_sensors_rev_b_encode(&value->u.imu_config_select_sensors_rev_b, buf,
-                                                            cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
-        return mscip_imu_config_select_sensors_rev_b_response_encode(
-            &value->u.imu_config_select_sensors_rev_b_response, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
-        return mscip_imu_config_aux_accel_range_encode(&value->u.imu_config_aux_accel_range, buf, cap,
-                                                       len_out);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_aux_accel_range_response_encode(&value->u.imu_config_aux_accel_range_response,
-                                                                buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_ACCEL:
-        return mscip_imu_data_scaled_accel_encode(&value->u.imu_data_scaled_accel, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_GYRO:
-        return mscip_imu_data_scaled_gyro_encode(&value->u.imu_data_scaled_gyro, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_MAG:
-        return mscip_imu_data_scaled_mag_encode(&value->u.imu_data_scaled_mag, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_DELTA_THETA:
-        return mscip_imu_data_delta_theta_encode(&value->u.imu_data_delta_theta, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY:
-        return mscip_imu_data_delta_velocity_encode(&value->u.imu_data_delta_velocity, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE:
-        return mscip_imu_data_scaled_pressure_encode(&value->u.imu_data_scaled_pressure, buf, cap, len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE:
-        return mscip_imu_data_scaled_temperature_encode(&value->u.imu_data_scaled_temperature, buf, cap,
+    case MSCIPC_FIELD_IMU_CONFIG_FILTER:
+        return mscipc_imu_config_filter_encode(&value->u.imu_config_filter, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE:
+        return mscipc_imu_config_filter_response_encode(&value->u.imu_config_filter_response, buf, cap,
                                                         len_out);
-    case MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
-        return mscip_imu_data_gps_correlated_time_encode(&value->u.imu_data_gps_correlated_time, buf, cap,
+    case MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE:
+        return mscipc_imu_config_sample_rate_encode(&value->u.imu_config_sample_rate, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
+        return mscipc_imu_config_sample_rate_response_encode(&value->u.imu_config_sample_rate_response, buf,
+                                                             cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS:
+        return mscipc_imu_config_select_sensors_encode(&value->u.imu_config_select_sensors, buf, cap,
+                                                       len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
+        return mscipc_imu_config_select_sensors_response_encode(&value->u.imu_config_select_sensors_response,
+                                                                buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
+        return mscipc_imu_config_get_internal_sample_rate_encode(
+            &value->u.imu_config_get_internal_sample_rate, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
+        return mscipc_imu_config_internal_sample_rate_encode(&value->u.imu_config_internal_sample_rate, buf,
+                                                             cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE:
+        return mscipc_imu_config_accel_range_encode(&value->u.imu_config_accel_range, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
+        return mscipc_imu_config_accel_range_response_encode(&value->u.imu_config_accel_range_response, buf,
+                                                             cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE:
+        return mscipc_imu_config_gyro_range_encode(&value->u.imu_config_gyro_range, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
+        return mscipc_imu_config_gyro_range_response_encode(&value->u.imu_config_gyro_range_response, buf,
+                                                            cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL:
+        return mscipc_imu_config_config_all_encode(&value->u.imu_config_config_all, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF:
+        return mscipc_imu_config_data_on_off_encode(&value->u.imu_config_data_on_off, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
+        return mscipc_imu_config_data_on_off_response_encode(&value->u.imu_config_data_on_off_response, buf,
+                                                             cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
+        return mscipc_imu_config_xtrig_on_off_encode(&value->u.imu_config_xtrig_on_off, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
+        return mscipc_imu_config_xtrig_on_off_response_encode(&value->u.imu_config_xtrig_on_off_response, buf,
+                                                              cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
+        return mscipc_imu_config_select_sensors_rev_b_encode(&value->u.imu_config_select_sensors_rev_b, buf,
+                                                             cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
+        return mscipc_imu_config_select_sensors_rev_b_response_encode(
+            &value->u.imu_config_select_sensors_rev_b_response, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
+        return mscipc_imu_config_aux_accel_range_encode(&value->u.imu_config_aux_accel_range, buf, cap,
+                                                        len_out);
+    case MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
+        return mscipc_imu_config_aux_accel_range_response_encode(
+            &value->u.imu_config_aux_accel_range_response, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL:
+        return mscipc_imu_data_scaled_accel_encode(&value->u.imu_data_scaled_accel, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_GYRO:
+        return mscipc_imu_data_scaled_gyro_encode(&value->u.imu_data_scaled_gyro, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_MAG:
+        return mscipc_imu_data_scaled_mag_encode(&value->u.imu_data_scaled_mag, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_DELTA_THETA:
+        return mscipc_imu_data_delta_theta_encode(&value->u.imu_data_delta_theta, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY:
+        return mscipc_imu_data_delta_velocity_encode(&value->u.imu_data_delta_velocity, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE:
+        return mscipc_imu_data_scaled_pressure_encode(&value->u.imu_data_scaled_pressure, buf, cap, len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE:
+        return mscipc_imu_data_scaled_temperature_encode(&value->u.imu_data_scaled_temperature, buf, cap,
                                                          len_out);
-    case MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
-        return mscip_imu_data_scaled_aux_accel_encode(&value->u.imu_data_scaled_aux_accel, buf, cap, len_out);
-    case MSCIP_FIELD_NONE:
-    case MSCIP_FIELD_COUNT:
+    case MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
+        return mscipc_imu_data_gps_correlated_time_encode(&value->u.imu_data_gps_correlated_time, buf, cap,
+                                                          len_out);
+    case MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
+        return mscipc_imu_data_scaled_aux_accel_encode(&value->u.imu_data_scaled_aux_accel, buf, cap,
+                                                       len_out);
+    case MSCIPC_FIELD_NONE:
+    case MSCIPC_FIELD_COUNT:
     default:
-        return MSCIP_ERR_INVALID;
-    }
-}
-
-void mscip_value_to_json(mscip_jw_t *w, const mscip_field_value_t *value) {
-    switch (value->id) {
-    case MSCIP_FIELD_ACK:
-        mscip_ack_to_json(w, &value->u.ack);
-        return;
-    case MSCIP_FIELD_BASE_PING:
-        mscip_base_ping_to_json(w, &value->u.base_ping);
-        return;
-    case MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES:
-        mscip_base_get_device_messages_to_json(w, &value->u.base_get_device_messages);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_MESSAGES:
-        mscip_base_device_messages_to_json(w, &value->u.base_device_messages);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_RESET:
-        mscip_base_device_reset_to_json(w, &value->u.base_device_reset);
-        return;
-    case MSCIP_FIELD_BASE_GET_DEVICE_MODEL:
-        mscip_base_get_device_model_to_json(w, &value->u.base_get_device_model);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_MODEL:
-        mscip_base_device_model_to_json(w, &value->u.base_device_model);
-        return;
-    case MSCIP_FIELD_BASE_GET_DEVICE_SN:
-        mscip_base_get_device_sn_to_json(w, &value->u.base_get_device_sn);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_SN:
-        mscip_base_device_sn_to_json(w, &value->u.base_device_sn);
-        return;
-    case MSCIP_FIELD_BASE_GET_DEVICE_FW:
-        mscip_base_get_device_fw_to_json(w, &value->u.base_get_device_fw);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_FW:
-        mscip_base_device_fw_to_json(w, &value->u.base_device_fw);
-        return;
-    case MSCIP_FIELD_BASE_GET_DEVICE_CAL:
-        mscip_base_get_device_cal_to_json(w, &value->u.base_get_device_cal);
-        return;
-    case MSCIP_FIELD_BASE_DEVICE_CAL:
-        mscip_base_device_cal_to_json(w, &value->u.base_device_cal);
-        return;
-    case MSCIP_FIELD_BASE_CORRELATE_GPS_TIME:
-        mscip_base_correlate_gps_time_to_json(w, &value->u.base_correlate_gps_time);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE:
-        mscip_imu_config_uart_baud_rate_to_json(w, &value->u.imu_config_uart_baud_rate);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
-        mscip_imu_config_uart_baud_rate_response_to_json(w, &value->u.imu_config_uart_baud_rate_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_FILTER:
-        mscip_imu_config_filter_to_json(w, &value->u.imu_config_filter);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE:
-        mscip_imu_config_filter_response_to_json(w, &value->u.imu_config_filter_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE:
-        mscip_imu_config_sample_rate_to_json(w, &value->u.imu_config_sample_rate);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
-        mscip_imu_config_sample_rate_response_to_json(w, &value->u.imu_config_sample_rate_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS:
-        mscip_imu_config_select_sensors_to_json(w, &value->u.imu_config_select_sensors);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
-        mscip_imu_config_select_sensors_response_to_json(w, &value->u.imu_config_select_sensors_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
-        mscip_imu_config_get_internal_sample_rate_to_json(w, &value->u.imu_config_get_internal_sample_rate);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
-        mscip_imu_config_internal_sample_rate_to_json(w, &value->u.imu_config_internal_sample_rate);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE:
-        mscip_imu_config_accel_range_to_json(w, &value->u.imu_config_accel_range);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
-        mscip_imu_config_accel_range_response_to_json(w, &value->u.imu_config_accel_range_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE:
-        mscip_imu_config_gyro_range_to_json(w, &value->u.imu_config_gyro_range);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
-        mscip_imu_config_gyro_range_response_to_json(w, &value->u.imu_config_gyro_range_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL:
-        mscip_imu_config_config_all_to_json(w, &value->u.imu_config_config_all);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF:
-        mscip_imu_config_data_on_off_to_json(w, &value->u.imu_config_data_on_off);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
-        mscip_imu_config_data_on_off_response_to_json(w, &value->u.imu_config_data_on_off_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
-        mscip_imu_config_xtrig_on_off_to_json(w, &value->u.imu_config_xtrig_on_off);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
-        mscip_imu_config_xtrig_on_off_response_to_json(w, &value->u.imu_config_xtrig_on_off_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
-        mscip_imu_config_select_sensors_rev_b_to_json(w, &value->u.imu_config_select_sensors_rev_b);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
-        mscip_imu_config_select_sensors_rev_b_response_to_json(
-            w, &value->u.imu_config_select_sensors_rev_b_response);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
-        mscip_imu_config_aux_accel_range_to_json(w, &value->u.imu_config_aux_accel_range);
-        return;
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
-        mscip_imu_config_aux_accel_range_response_to_json(w, &value->u.imu_config_aux_accel_range_response);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_ACCEL:
-        mscip_imu_data_scaled_accel_to_json(w, &value->u.imu_data_scaled_accel);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_GYRO:
-        mscip_imu_data_scaled_gyro_to_json(w, &value->u.imu_data_scaled_gyro);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_MAG:
-        mscip_imu_data_scaled_mag_to_json(w, &value->u.imu_data_scaled_mag);
-        return;
-    case MSCIP_FIELD_IMU_DATA_DELTA_THETA:
-        mscip_imu_data_delta_theta_to_json(w, &value->u.imu_data_delta_theta);
-        return;
-    case MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY:
-        mscip_imu_data_delta_velocity_to_json(w, &value->u.imu_data_delta_velocity);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE:
-        mscip_imu_data_scaled_pressure_to_json(w, &value->u.imu_data_scaled_pressure);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE:
-        mscip_imu_data_scaled_temperature_to_json(w, &value->u.imu_data_scaled_temperature);
-        return;
-    case MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
-        mscip_imu_data_gps_correlated_time_to_json(w, &value->u.imu_data_gps_correlated_time);
-        return;
-    case MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
-        mscip_imu_data_scaled_aux_accel_to_json(w, &value->u.imu_data_scaled_aux_accel);
-        return;
-    case MSCIP_FIELD_NONE:
-    case MSCIP_FIELD_COUNT:
-    default:
-        mscip_jw_lit(w, "null");
-        return;
-    }
-}
-
-int mscip_value_from_json(mscip_jr_t *jr, size_t pos, mscip_field_id_t id, mscip_field_value_t *value) {
-    value->id = id;
-    switch (id) {
-    case MSCIP_FIELD_ACK:
-        return mscip_ack_from_json(jr, pos, &value->u.ack);
-    case MSCIP_FIELD_BASE_PING:
-        return mscip_base_ping_from_json(jr, pos, &value->u.base_ping);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MESSAGES:
-        return mscip_base_get_device_messages_from_json(jr, pos, &value->u.base_get_device_messages);
-    case MSCIP_FIELD_BASE_DEVICE_MESSAGES:
-        return mscip_base_device_messages_from_json(jr, pos, &value->u.base_device_messages);
-    case MSCIP_FIELD_BASE_DEVICE_RESET:
-        return mscip_base_device_reset_from_json(jr, pos, &value->u.base_device_reset);
-    case MSCIP_FIELD_BASE_GET_DEVICE_MODEL:
-        return mscip_base_get_device_model_from_json(jr, pos, &value->u.base_get_device_model);
-    case MSCIP_FIELD_BASE_DEVICE_MODEL:
-        return mscip_base_device_model_from_json(jr, pos, &value->u.base_device_model);
-    case MSCIP_FIELD_BASE_GET_DEVICE_SN:
-        return mscip_base_get_device_sn_from_json(jr, pos, &value->u.base_get_device_sn);
-    case MSCIP_FIELD_BASE_DEVICE_SN:
-        return mscip_base_device_sn_from_json(jr, pos, &value->u.base_device_sn);
-    case MSCIP_FIELD_BASE_GET_DEVICE_FW:
-        return mscip_base_get_device_fw_from_json(jr, pos, &value->u.base_get_device_fw);
-    case MSCIP_FIELD_BASE_DEVICE_FW:
-        return mscip_base_device_fw_from_json(jr, pos, &value->u.base_device_fw);
-    case MSCIP_FIELD_BASE_GET_DEVICE_CAL:
-        return mscip_base_get_device_cal_from_json(jr, pos, &value->u.base_get_device_cal);
-    case MSCIP_FIELD_BASE_DEVICE_CAL:
-        return mscip_base_device_cal_from_json(jr, pos, &value->u.base_device_cal);
-    case MSCIP_FIELD_BASE_CORRELATE_GPS_TIME:
-        return mscip_base_correlate_gps_time_from_json(jr, pos, &value->u.base_correlate_gps_time);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE:
-        return mscip_imu_config_uart_baud_rate_from_json(jr, pos, &value->u.imu_config_uart_baud_rate);
-    case MSCIP_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE:
-        return mscip_imu_config_uart_baud_rate_response_from_json(
-            jr, pos, &value->u.imu_config_uart_baud_rate_response);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER:
-        return mscip_imu_config_filter_from_json(jr, pos, &value->u.imu_config_filter);
-    case MSCIP_FIELD_IMU_CONFIG_FILTER_RESPONSE:
-        return mscip_imu_config_filter_response_from_json(jr, pos, &value->u.imu_config_filter_response);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE:
-        return mscip_imu_config_sample_rate_from_json(jr, pos, &value->u.imu_config_sample_rate);
-    case MSCIP_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE:
-        return mscip_imu_config_sample_rate_response_from_json(jr, pos,
-                                                               &value->u.imu_config_sample_rate_response);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS:
-        return mscip_imu_config_select_sensors_from_json(jr, pos, &value->u.imu_config_select_sensors);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE:
-        return mscip_imu_config_select_sensors_response_from_json(
-            jr, pos, &value->u.imu_config_select_sensors_response);
-    case MSCIP_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_get_internal_sample_rate_from_json(
-            jr, pos, &value->u.imu_config_get_internal_sample_rate);
-    case MSCIP_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE:
-        return mscip_imu_config_internal_sample_rate_from_json(jr, pos,
-                                                               &value->u.imu_config_internal_sample_rate);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE:
-        return mscip_imu_config_accel_range_from_json(jr, pos, &value->u.imu_config_accel_range);
-    case MSCIP_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_accel_range_response_from_json(jr, pos,
-                                                               &value->u.imu_config_accel_range_response);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE:
-        return mscip_imu_config_gyro_range_from_json(jr, pos, &value->u.imu_config_gyro_range);
-    case MSCIP_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE:
-        return mscip_imu_config_gyro_range_response_from_json(jr, pos,
-                                                              &value->u.imu_config_gyro_range_response);
-    case MSCIP_FIELD_IMU_CONFIG_CONFIG_ALL:
-        return mscip_imu_config_config_all_from_json(jr, pos, &value->u.imu_config_config_all);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF:
-        return mscip_imu_config_data_on_off_from_json(jr, pos, &value->u.imu_config_data_on_off);
-    case MSCIP_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE:
-        return mscip_imu_config_data_on_off_response_from_json(jr, pos,
-                                                               &value->u.imu_config_data_on_off_response);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF:
-        return mscip_imu_config_xtrig_on_off_from_json(jr, pos, &value->u.imu_config_xtrig_on_off);
-    case MSCIP_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE:
-        return mscip_imu_config_xtrig_on_off_response_from_json(jr, pos,
-                                                                &value->u.imu_config_xtrig_on_off_response);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B:
-        return mscip_imu_config_select_sensors_rev_b_from_json(jr, pos,
-                                                               &value->u.imu_config_select_sensors_rev_b);
-    case MSCIP_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE:
-        return mscip_imu_config_select_sensors_rev_b_response_from_json(
-            jr, pos, &value->u.imu_config_select_sensors_rev_b_response);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE:
-        return mscip_imu_config_aux_accel_range_from_json(jr, pos, &value->u.imu_config_aux_accel_range);
-    case MSCIP_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE:
-        return mscip_imu_config_aux_accel_range_response_from_json(
-            jr, pos, &value->u.imu_config_aux_accel_range_response);
-    case MSCIP_FIELD_IMU_DATA_SCALED_ACCEL:
-        return mscip_imu_data_scaled_accel_from_json(jr, pos, &value->u.imu_data_scaled_accel);
-    case MSCIP_FIELD_IMU_DATA_SCALED_GYRO:
-        return mscip_imu_data_scaled_gyro_from_json(jr, pos, &value->u.imu_data_scaled_gyro);
-    case MSCIP_FIELD_IMU_DATA_SCALED_MAG:
-        return mscip_imu_data_scaled_mag_from_json(jr, pos, &value->u.imu_data_scaled_mag);
-    case MSCIP_FIELD_IMU_DATA_DELTA_THETA:
-        return mscip_imu_data_delta_theta_from_json(jr, pos, &value->u.imu_data_delta_theta);
-    case MSCIP_FIELD_IMU_DATA_DELTA_VELOCITY:
-        return mscip_imu_data_delta_velocity_from_json(jr, pos, &value->u.imu_data_delta_velocity);
-    case MSCIP_FIELD_IMU_DATA_SCALED_PRESSURE:
-        return mscip_imu_data_scaled_pressure_from_json(jr, pos, &value->u.imu_data_scaled_pressure);
-    case MSCIP_FIELD_IMU_DATA_SCALED_TEMPERATURE:
-        return mscip_imu_data_scaled_temperature_from_json(jr, pos, &value->u.imu_data_scaled_temperature);
-    case MSCIP_FIELD_IMU_DATA_GPS_CORRELATED_TIME:
-        return mscip_imu_data_gps_correlated_time_from_json(jr, pos, &value->u.imu_data_gps_correlated_time);
-    case MSCIP_FIELD_IMU_DATA_SCALED_AUX_ACCEL:
-        return mscip_imu_data_scaled_aux_accel_from_json(jr, pos, &value->u.imu_data_scaled_aux_accel);
-    case MSCIP_FIELD_NONE:
-    case MSCIP_FIELD_COUNT:
-    default:
-        (void)pos;
-        return mscip_jr_fail(jr, "no such field layout");
+        return MSCIPC_ERR_INVALID;
     }
 }

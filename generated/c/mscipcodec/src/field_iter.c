@@ -2,11 +2,10 @@
 #include "mscipcodec/field_iter.h"
 
 #include <assert.h>
-#include <stdio.h>
 
-bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *entry, uint8_t length_byte,
-                                mscip_trailing_kind_t why) {
-    entry->kind = MSCIP_ENTRY_TRAILING;
+bool mscipc_field_iter_trailing_(mscipc_field_iter_t *it, mscipc_field_entry_t *entry, uint8_t length_byte,
+                                 mscipc_trailing_kind_t why) {
+    entry->kind = MSCIPC_ENTRY_TRAILING;
     entry->offset = it->pos;
     entry->descriptor = 0;
     entry->data = it->payload + it->pos;
@@ -17,24 +16,4 @@ bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *ent
     return true;
 }
 
-size_t mscip_trailing_format(const mscip_field_entry_t *entry, char *buf, size_t cap) {
-    assert(entry != NULL);
-    assert(buf != NULL || cap == 0);
-    int n;
-    switch (entry->trailing) {
-    case MSCIP_TRAILING_SHORT_LENGTH:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
-                     (unsigned)entry->length_byte, entry->offset);
-        break;
-    case MSCIP_TRAILING_OVERRUN:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
-                     (unsigned)entry->length_byte, entry->offset, entry->length);
-        break;
-    case MSCIP_TRAILING_SHORT_HEADER:
-    default:
-        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     MSCIP_FIELD_HEADER_SIZE, entry->length);
-        break;
-    }
-    return n < 0 ? 0 : (size_t)n;
-}
+/* mscipc_trailing_format is in status.c, with the other messages (no stdio). */

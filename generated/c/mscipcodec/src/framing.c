@@ -4,7 +4,7 @@
 #include <assert.h>
 #include <string.h>
 
-const uint8_t mscip_sync[MSCIP_SYNC_SIZE] = MSCIP_SYNC_BYTES;
+const uint8_t mscipc_sync[MSCIPC_SYNC_SIZE] = MSCIPC_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -30,7 +30,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-uint16_t mscip_checksum_word(const uint8_t *bytes, size_t len) {
+uint16_t mscipc_checksum_word(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL || len == 0);
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
@@ -69,122 +69,123 @@ uint16_t mscip_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-#if MSCIP_CHECKSUM_SUM1_FIRST
+#if MSCIPC_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
 #else
     return (uint16_t)(sum2 << 8 | sum1);
 #endif
 }
 
-void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]) {
+void mscipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIPC_CHECKSUM_SIZE]) {
     assert(bytes != NULL || len == 0);
     assert(out != NULL);
-    unsigned word = mscip_checksum_word(bytes, len);
+    unsigned word = mscipc_checksum_word(bytes, len);
     out[0] = (uint8_t)(word >> 8);
     out[1] = (uint8_t)(word & 0xFFu);
 }
 
 /* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
-bool mscip_checksum_matches(const uint8_t *bytes, size_t len) {
+bool mscipc_checksum_matches(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL);
-    return mscip_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
+    return mscipc_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
-bool mscip_packet_valid(const uint8_t *packet, size_t len) {
+bool mscipc_packet_valid(const uint8_t *packet, size_t len) {
     assert(packet != NULL || len == 0);
     size_t payload;
-    if (len < MSCIP_HEADER_SIZE + MSCIP_CHECKSUM_SIZE || memcmp(packet, mscip_sync, MSCIP_SYNC_SIZE) != 0) {
+    if (len < MSCIPC_HEADER_SIZE + MSCIPC_CHECKSUM_SIZE ||
+        memcmp(packet, mscipc_sync, MSCIPC_SYNC_SIZE) != 0) {
         return false;
     }
-    payload = packet[MSCIP_LENGTH_OFFSET];
-    if (payload > MSCIP_MAX_PAYLOAD || len != MSCIP_HEADER_SIZE + payload + MSCIP_CHECKSUM_SIZE) {
+    payload = packet[MSCIPC_LENGTH_OFFSET];
+    if (payload > MSCIPC_MAX_PAYLOAD || len != MSCIPC_HEADER_SIZE + payload + MSCIPC_CHECKSUM_SIZE) {
         return false;
     }
-    return mscip_checksum_matches(packet, MSCIP_HEADER_SIZE + payload);
+    return mscipc_checksum_matches(packet, MSCIPC_HEADER_SIZE + payload);
 }
 
-void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+void mscipc_packet_begin(mscipc_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
     assert(b != NULL);
     assert(buf != NULL || cap == 0);
     b->buf = buf;
     b->cap = buf ? cap : 0;
     b->len = 0;
-    b->status = MSCIP_OK;
-    if (b->cap < MSCIP_HEADER_SIZE) {
-        b->status = MSCIP_ERR_BUFFER;
+    b->status = MSCIPC_OK;
+    if (b->cap < MSCIPC_HEADER_SIZE) {
+        b->status = MSCIPC_ERR_BUFFER;
         return;
     }
-    memcpy(buf, mscip_sync, MSCIP_SYNC_SIZE);
-    buf[MSCIP_SET_OFFSET] = set;
+    memcpy(buf, mscipc_sync, MSCIPC_SYNC_SIZE);
+    buf[MSCIPC_SET_OFFSET] = set;
     b->set = set;
-    buf[MSCIP_LENGTH_OFFSET] = 0;
-    b->len = MSCIP_HEADER_SIZE;
+    buf[MSCIPC_LENGTH_OFFSET] = 0;
+    b->len = MSCIPC_HEADER_SIZE;
 }
 
-static mscip_status_t reserve(mscip_packet_builder_t *b, size_t n) {
-    if (b->status != MSCIP_OK) {
+static mscipc_status_t reserve(mscipc_packet_builder_t *b, size_t n) {
+    if (b->status != MSCIPC_OK) {
         return b->status;
     }
-    if (b->len - MSCIP_HEADER_SIZE + n > MSCIP_MAX_PAYLOAD) {
-        b->status = MSCIP_ERR_TOO_LONG;
-    } else if (b->cap - b->len < n + MSCIP_CHECKSUM_SIZE) {
-        b->status = MSCIP_ERR_BUFFER;
+    if (b->len - MSCIPC_HEADER_SIZE + n > MSCIPC_MAX_PAYLOAD) {
+        b->status = MSCIPC_ERR_TOO_LONG;
+    } else if (b->cap - b->len < n + MSCIPC_CHECKSUM_SIZE) {
+        b->status = MSCIPC_ERR_BUFFER;
     }
     return b->status;
 }
 
-mscip_status_t mscip_packet_add_field(mscip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                      size_t data_len) {
+mscipc_status_t mscipc_packet_add_field(mscipc_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                        size_t data_len) {
     assert(b != NULL);
     assert(data != NULL || data_len == 0);
-    int adjust = mscip_field_length_adjust(b->set, descriptor);
-    if (b->status == MSCIP_OK && data_len > MSCIP_MAX_FIELD_DATA) {
-        b->status = MSCIP_ERR_TOO_LONG;
+    int adjust = mscipc_field_length_adjust(b->set, descriptor);
+    if (b->status == MSCIPC_OK && data_len > MSCIPC_MAX_FIELD_DATA) {
+        b->status = MSCIPC_ERR_TOO_LONG;
     }
-    if (b->status == MSCIP_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+    if (b->status == MSCIPC_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
         /* too long for the length byte, or shorter than an irregular field's size byte allows */
-        b->status = (int)data_len + adjust > 0xFF ? MSCIP_ERR_TOO_LONG : MSCIP_ERR_INVALID;
+        b->status = (int)data_len + adjust > 0xFF ? MSCIPC_ERR_TOO_LONG : MSCIPC_ERR_INVALID;
     }
-    if (reserve(b, MSCIP_FIELD_HEADER_SIZE + data_len) != MSCIP_OK) {
+    if (reserve(b, MSCIPC_FIELD_HEADER_SIZE + data_len) != MSCIPC_OK) {
         return b->status;
     }
-    b->buf[b->len + MSCIP_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
-    b->buf[b->len + MSCIP_FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    b->buf[b->len + MSCIPC_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
+    b->buf[b->len + MSCIPC_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
-        memcpy(b->buf + b->len + MSCIP_FIELD_HEADER_SIZE, data, data_len);
+        memcpy(b->buf + b->len + MSCIPC_FIELD_HEADER_SIZE, data, data_len);
     }
-    b->len += MSCIP_FIELD_HEADER_SIZE + data_len;
-    return MSCIP_OK;
+    b->len += MSCIPC_FIELD_HEADER_SIZE + data_len;
+    return MSCIPC_OK;
 }
 
-mscip_status_t mscip_packet_add_raw(mscip_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+mscipc_status_t mscipc_packet_add_raw(mscipc_packet_builder_t *b, const uint8_t *bytes, size_t len) {
     assert(b != NULL);
     assert(bytes != NULL || len == 0);
-    if (reserve(b, len) != MSCIP_OK) {
+    if (reserve(b, len) != MSCIPC_OK) {
         return b->status;
     }
     if (len > 0) {
         memcpy(b->buf + b->len, bytes, len);
     }
     b->len += len;
-    return MSCIP_OK;
+    return MSCIPC_OK;
 }
 
-mscip_status_t mscip_packet_finish(mscip_packet_builder_t *b, size_t *len_out) {
+mscipc_status_t mscipc_packet_finish(mscipc_packet_builder_t *b, size_t *len_out) {
     assert(b != NULL);
-    if (b->status != MSCIP_OK) {
+    if (b->status != MSCIPC_OK) {
         return b->status;
     }
-    if (b->cap - b->len < MSCIP_CHECKSUM_SIZE) {
-        b->status = MSCIP_ERR_BUFFER;
+    if (b->cap - b->len < MSCIPC_CHECKSUM_SIZE) {
+        b->status = MSCIPC_ERR_BUFFER;
         return b->status;
     }
-    b->buf[MSCIP_LENGTH_OFFSET] = (uint8_t)(b->len - MSCIP_HEADER_SIZE);
-    mscip_checksum(b->buf, b->len, b->buf + b->len);
-    b->len += MSCIP_CHECKSUM_SIZE;
+    b->buf[MSCIPC_LENGTH_OFFSET] = (uint8_t)(b->len - MSCIPC_HEADER_SIZE);
+    mscipc_checksum(b->buf, b->len, b->buf + b->len);
+    b->len += MSCIPC_CHECKSUM_SIZE;
     if (len_out) {
         *len_out = b->len;
     }
-    return MSCIP_OK;
+    return MSCIPC_OK;
 }

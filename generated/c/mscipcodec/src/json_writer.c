@@ -4,25 +4,24 @@
 #include "mscipcodec/json.h"
 
 #include <assert.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-void mscip_jw_init(mscip_jw_t *w, char *buf, size_t cap) {
+void mscipc_jw_init(mscipc_jw_t *w, char *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
-size_t mscip_jw_finish(mscip_jw_t *w) {
+size_t mscipc_jw_finish(mscipc_jw_t *w) {
     if (w->cap > 0) {
         w->buf[w->len < w->cap ? w->len : w->cap - 1] = '\0';
     }
     return w->len;
 }
 
-void mscip_jw_raw(mscip_jw_t *w, const char *text, size_t n) {
+void mscipc_jw_raw(mscipc_jw_t *w, const char *text, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (w->len + 1 < w->cap) {
@@ -32,61 +31,61 @@ void mscip_jw_raw(mscip_jw_t *w, const char *text, size_t n) {
     }
 }
 
-void mscip_jw_lit(mscip_jw_t *w, const char *text) {
-    mscip_jw_raw(w, text, strlen(text));
+void mscipc_jw_lit(mscipc_jw_t *w, const char *text) {
+    mscipc_jw_raw(w, text, strlen(text));
 }
 
-void mscip_jw_key(mscip_jw_t *w, int *first, const char *key) {
+void mscipc_jw_key(mscipc_jw_t *w, int *first, const char *key) {
     if (!*first) {
-        mscip_jw_raw(w, ",", 1);
+        mscipc_jw_raw(w, ",", 1);
     }
     *first = 0;
-    mscip_jw_raw(w, "\"", 1);
-    mscip_jw_lit(w, key);
-    mscip_jw_raw(w, "\":", 2);
+    mscipc_jw_raw(w, "\"", 1);
+    mscipc_jw_lit(w, key);
+    mscipc_jw_raw(w, "\":", 2);
 }
 
-void mscip_jw_sep(mscip_jw_t *w, size_t index) {
+void mscipc_jw_sep(mscipc_jw_t *w, size_t index) {
     if (index > 0) {
-        mscip_jw_raw(w, ",", 1);
+        mscipc_jw_raw(w, ",", 1);
     }
 }
 
-void mscip_jw_uint(mscip_jw_t *w, uint64_t v) {
+void mscipc_jw_uint(mscipc_jw_t *w, uint64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRIu64, v);
-    mscip_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%llu", (unsigned long long)v);
+    mscipc_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
-void mscip_jw_int(mscip_jw_t *w, int64_t v) {
+void mscipc_jw_int(mscipc_jw_t *w, int64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRId64, v);
-    mscip_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%lld", (long long)v);
+    mscipc_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
 static const char k_hex[] = "0123456789abcdef";
 
-void mscip_jw_hex(mscip_jw_t *w, const uint8_t *bytes, size_t n) {
+void mscipc_jw_hex(mscipc_jw_t *w, const uint8_t *bytes, size_t n) {
     size_t i;
-    mscip_jw_raw(w, "\"", 1);
+    mscipc_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         char two[2];
         two[0] = k_hex[bytes[i] >> 4];
         two[1] = k_hex[bytes[i] & 0x0F];
-        mscip_jw_raw(w, two, 2);
+        mscipc_jw_raw(w, two, 2);
     }
-    mscip_jw_raw(w, "\"", 1);
+    mscipc_jw_raw(w, "\"", 1);
 }
 
-void mscip_jw_string(mscip_jw_t *w, const char *bytes, size_t n) {
+void mscipc_jw_string(mscipc_jw_t *w, const char *bytes, size_t n) {
     size_t i;
-    mscip_jw_raw(w, "\"", 1);
+    mscipc_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         unsigned char b = (unsigned char)bytes[i];
         if (b == '"') {
-            mscip_jw_raw(w, "\\\"", 2);
+            mscipc_jw_raw(w, "\\\"", 2);
         } else if (b == '\\') {
-            mscip_jw_raw(w, "\\\\", 2);
+            mscipc_jw_raw(w, "\\\\", 2);
         } else if (b < 0x20 || b >= 0x7F) {
             char esc[6];
             esc[0] = '\\';
@@ -95,68 +94,68 @@ void mscip_jw_string(mscip_jw_t *w, const char *bytes, size_t n) {
             esc[3] = '0';
             esc[4] = k_hex[b >> 4];
             esc[5] = k_hex[b & 0x0F];
-            mscip_jw_raw(w, esc, 6);
+            mscipc_jw_raw(w, esc, 6);
         } else {
-            mscip_jw_raw(w, (const char *)&bytes[i], 1);
+            mscipc_jw_raw(w, (const char *)&bytes[i], 1);
         }
     }
-    mscip_jw_raw(w, "\"", 1);
+    mscipc_jw_raw(w, "\"", 1);
 }
 
-void mscip_jw_bool(mscip_jw_t *w, const bool *v) {
-    mscip_jw_lit(w, *v ? "true" : "false");
+void mscipc_jw_bool(mscipc_jw_t *w, const bool *v) {
+    mscipc_jw_lit(w, *v ? "true" : "false");
 }
 
-void mscip_jw_char(mscip_jw_t *w, const char *v) {
-    mscip_jw_string(w, v, 1);
+void mscipc_jw_char(mscipc_jw_t *w, const char *v) {
+    mscipc_jw_string(w, v, 1);
 }
 
-void mscip_jw_u8(mscip_jw_t *w, const uint8_t *v) {
-    mscip_jw_uint(w, *v);
+void mscipc_jw_u8(mscipc_jw_t *w, const uint8_t *v) {
+    mscipc_jw_uint(w, *v);
 }
 
-void mscip_jw_u16(mscip_jw_t *w, const uint16_t *v) {
-    mscip_jw_uint(w, *v);
+void mscipc_jw_u16(mscipc_jw_t *w, const uint16_t *v) {
+    mscipc_jw_uint(w, *v);
 }
 
-void mscip_jw_u32(mscip_jw_t *w, const uint32_t *v) {
-    mscip_jw_uint(w, *v);
+void mscipc_jw_u32(mscipc_jw_t *w, const uint32_t *v) {
+    mscipc_jw_uint(w, *v);
 }
 
-void mscip_jw_u64(mscip_jw_t *w, const uint64_t *v) {
-    mscip_jw_uint(w, *v);
+void mscipc_jw_u64(mscipc_jw_t *w, const uint64_t *v) {
+    mscipc_jw_uint(w, *v);
 }
 
-void mscip_jw_s8(mscip_jw_t *w, const int8_t *v) {
-    mscip_jw_int(w, *v);
+void mscipc_jw_s8(mscipc_jw_t *w, const int8_t *v) {
+    mscipc_jw_int(w, *v);
 }
 
-void mscip_jw_s16(mscip_jw_t *w, const int16_t *v) {
-    mscip_jw_int(w, *v);
+void mscipc_jw_s16(mscipc_jw_t *w, const int16_t *v) {
+    mscipc_jw_int(w, *v);
 }
 
-void mscip_jw_s32(mscip_jw_t *w, const int32_t *v) {
-    mscip_jw_int(w, *v);
+void mscipc_jw_s32(mscipc_jw_t *w, const int32_t *v) {
+    mscipc_jw_int(w, *v);
 }
 
-void mscip_jw_s64(mscip_jw_t *w, const int64_t *v) {
-    mscip_jw_int(w, *v);
+void mscipc_jw_s64(mscipc_jw_t *w, const int64_t *v) {
+    mscipc_jw_int(w, *v);
 }
 
-void mscip_jw_f32(mscip_jw_t *w, const float *v) {
-    char buf[MSCIP_JSON_NUMBER_MAX];
-    size_t n = mscip_json_format_float(*v, buf, sizeof buf);
-    mscip_jw_raw(w, buf, n);
+void mscipc_jw_f32(mscipc_jw_t *w, const float *v) {
+    char buf[MSCIPC_JSON_NUMBER_MAX];
+    size_t n = mscipc_json_format_float(*v, buf, sizeof buf);
+    mscipc_jw_raw(w, buf, n);
 }
 
-void mscip_jw_f64(mscip_jw_t *w, const double *v) {
-    char buf[MSCIP_JSON_NUMBER_MAX];
-    size_t n = mscip_json_format_double(*v, buf, sizeof buf);
-    mscip_jw_raw(w, buf, n);
+void mscipc_jw_f64(mscipc_jw_t *w, const double *v) {
+    char buf[MSCIPC_JSON_NUMBER_MAX];
+    size_t n = mscipc_json_format_double(*v, buf, sizeof buf);
+    mscipc_jw_raw(w, buf, n);
 }
 
-void mscip_jw_chars(mscip_jw_t *w, const char *v, size_t n) {
-    mscip_jw_string(w, v, n);
+void mscipc_jw_chars(mscipc_jw_t *w, const char *v, size_t n) {
+    mscipc_jw_string(w, v, n);
 }
 
 /* ------------------------------------------------------------------ numbers */
@@ -447,7 +446,7 @@ static size_t format_finite(double v, char *buf, size_t cap) {
     return finish(buf, cap, len);
 }
 
-size_t mscip_json_format_double(double v, char *buf, size_t cap) {
+size_t mscipc_json_format_double(double v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint64_t bits;
     char text[32];
@@ -459,13 +458,13 @@ size_t mscip_json_format_double(double v, char *buf, size_t cap) {
         if (bits == 0x7FF8000000000000ull) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%016" PRIx64 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%016llx\"", (unsigned long long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite(v, buf, cap);
 }
 
-size_t mscip_json_format_float(float v, char *buf, size_t cap) {
+size_t mscipc_json_format_float(float v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint32_t bits;
     char text[32];
@@ -477,17 +476,17 @@ size_t mscip_json_format_float(float v, char *buf, size_t cap) {
         if (bits == 0x7FC00000u) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%08" PRIx32 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%08lx\"", (unsigned long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite((double)v, buf, cap);
 }
 
-size_t mscip_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
+size_t mscipc_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
     assert(bytes != NULL || n == 0);
     assert(buf != NULL || cap == 0);
-    mscip_jw_t w;
-    mscip_jw_init(&w, buf, cap);
-    mscip_jw_string(&w, bytes, n);
-    return mscip_jw_finish(&w);
+    mscipc_jw_t w;
+    mscipc_jw_init(&w, buf, cap);
+    mscipc_jw_string(&w, bytes, n);
+    return mscipc_jw_finish(&w);
 }

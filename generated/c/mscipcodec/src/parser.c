@@ -4,13 +4,13 @@
 #include <assert.h>
 #include <string.h>
 
-void mscip_parser_init(mscip_parser_t *parser) {
+void mscipc_parser_init(mscipc_parser_t *parser) {
     assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
 /* Marks the first n buffered bytes as skipped and drops them. */
-static void skip(mscip_parser_t *parser, size_t n) {
+static void skip(mscipc_parser_t *parser, size_t n) {
     if (n == 0) {
         return;
     }
@@ -23,12 +23,12 @@ static void skip(mscip_parser_t *parser, size_t n) {
     parser->base += n;
 }
 
-static void emit_skip(mscip_parser_t *parser, mscip_event_fn fn, void *ctx) {
-    mscip_event_t ev;
+static void emit_skip(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx) {
+    mscipc_event_t ev;
     if (parser->skip_count == 0) {
         return;
     }
-    ev.kind = MSCIP_EVENT_SKIP;
+    ev.kind = MSCIPC_EVENT_SKIP;
     ev.offset = parser->skip_offset;
     ev.length = parser->skip_count;
     ev.packet = NULL;
@@ -39,14 +39,14 @@ static void emit_skip(mscip_parser_t *parser, mscip_event_fn fn, void *ctx) {
 }
 
 /* Index of the first full sync sequence, or of a partial one at the end, or used. */
-static size_t find_sync(const mscip_parser_t *parser) {
+static size_t find_sync(const mscipc_parser_t *parser) {
     size_t i;
     for (i = 0; i < parser->used; i++) {
         size_t k = 0;
-        while (k < MSCIP_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == mscip_sync[k]) {
+        while (k < MSCIPC_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == mscipc_sync[k]) {
             k++;
         }
-        if (k == MSCIP_SYNC_SIZE || i + k == parser->used) {
+        if (k == MSCIPC_SYNC_SIZE || i + k == parser->used) {
             return i;
         }
     }
@@ -55,7 +55,7 @@ static size_t find_sync(const mscip_parser_t *parser) {
 
 /* Consumes what the buffered bytes decide; stops when more input is needed. At the end of
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
-static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int final) {
+static void process(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx, int final) {
     for (;;) {
         size_t payload;
         size_t total;
@@ -63,19 +63,19 @@ static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int fi
         if (parser->used == 0) {
             return;
         }
-        if (parser->used < MSCIP_HEADER_SIZE) {
+        if (parser->used < MSCIPC_HEADER_SIZE) {
             if (!final) {
                 return; /* a partial sync or an incomplete header: wait */
             }
             skip(parser, 1);
             continue;
         }
-        payload = parser->buf[MSCIP_LENGTH_OFFSET];
-        if (payload > MSCIP_MAX_PAYLOAD) {
+        payload = parser->buf[MSCIPC_LENGTH_OFFSET];
+        if (payload > MSCIPC_MAX_PAYLOAD) {
             skip(parser, 1); /* false sync */
             continue;
         }
-        total = MSCIP_HEADER_SIZE + payload + MSCIP_CHECKSUM_SIZE;
+        total = MSCIPC_HEADER_SIZE + payload + MSCIPC_CHECKSUM_SIZE;
         if (parser->used < total) {
             if (!final) {
                 return; /* incomplete packet: wait */
@@ -83,14 +83,14 @@ static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int fi
             skip(parser, 1);
             continue;
         }
-        if (!mscip_checksum_matches(parser->buf, MSCIP_HEADER_SIZE + payload)) {
+        if (!mscipc_checksum_matches(parser->buf, MSCIPC_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
         emit_skip(parser, fn, ctx);
         if (fn) {
-            mscip_event_t ev;
-            ev.kind = MSCIP_EVENT_PACKET;
+            mscipc_event_t ev;
+            ev.kind = MSCIPC_EVENT_PACKET;
             ev.offset = parser->base;
             ev.length = total;
             ev.packet = parser->buf;
@@ -104,15 +104,15 @@ static void process(mscip_parser_t *parser, mscip_event_fn fn, void *ctx, int fi
 
 /* Bytes the buffered candidate at buf[0] needs before process() can decide on it (0: none
  * buffered). A partial sync or header needs the header; a header, the whole packet. */
-static size_t wanted(const mscip_parser_t *parser) {
+static size_t wanted(const mscipc_parser_t *parser) {
     size_t total;
     if (parser->used == 0) {
         return 0;
     }
-    if (parser->used < MSCIP_HEADER_SIZE) {
-        return MSCIP_HEADER_SIZE - parser->used;
+    if (parser->used < MSCIPC_HEADER_SIZE) {
+        return MSCIPC_HEADER_SIZE - parser->used;
     }
-    total = MSCIP_HEADER_SIZE + (size_t)parser->buf[MSCIP_LENGTH_OFFSET] + MSCIP_CHECKSUM_SIZE;
+    total = MSCIPC_HEADER_SIZE + (size_t)parser->buf[MSCIPC_LENGTH_OFFSET] + MSCIPC_CHECKSUM_SIZE;
     return total > parser->used ? total - parser->used : 1;
 }
 
@@ -120,7 +120,7 @@ static size_t wanted(const mscip_parser_t *parser) {
  * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
  * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
  * of data[0] on entry and of data[consumed] on return. */
-static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, mscip_event_fn fn, void *ctx) {
+static size_t scan(const uint8_t *data, size_t len, mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx) {
     const uint64_t base = parser->base;
     size_t pos = 0;
     while (pos < len) {
@@ -128,8 +128,8 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        if (p[0] != mscip_sync[0]) {
-            const uint8_t *q = memchr(p, mscip_sync[0], left);
+        if (p[0] != mscipc_sync[0]) {
+            const uint8_t *q = memchr(p, mscipc_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
             if (parser->skip_count == 0) {
                 parser->skip_offset = base + pos;
@@ -138,24 +138,24 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
             pos += n;
             continue;
         }
-        if (left < MSCIP_HEADER_SIZE) {
+        if (left < MSCIPC_HEADER_SIZE) {
             /* a partial sync or header at the end: the caller buffers it (unless it already
              * differs from the sync sequence, then skip its first byte) */
-            if (memcmp(p, mscip_sync, left < MSCIP_SYNC_SIZE ? left : MSCIP_SYNC_SIZE) == 0) {
+            if (memcmp(p, mscipc_sync, left < MSCIPC_SYNC_SIZE ? left : MSCIPC_SYNC_SIZE) == 0) {
                 break;
             }
-        } else if (memcmp(p, mscip_sync, MSCIP_SYNC_SIZE) == 0 &&
-                   (payload = p[MSCIP_LENGTH_OFFSET]) <= MSCIP_MAX_PAYLOAD) {
-            total = MSCIP_HEADER_SIZE + payload + MSCIP_CHECKSUM_SIZE;
+        } else if (memcmp(p, mscipc_sync, MSCIPC_SYNC_SIZE) == 0 &&
+                   (payload = p[MSCIPC_LENGTH_OFFSET]) <= MSCIPC_MAX_PAYLOAD) {
+            total = MSCIPC_HEADER_SIZE + payload + MSCIPC_CHECKSUM_SIZE;
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            if (mscip_checksum_matches(p, MSCIP_HEADER_SIZE + payload)) {
+            if (mscipc_checksum_matches(p, MSCIPC_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {
-                    mscip_event_t ev;
-                    ev.kind = MSCIP_EVENT_PACKET;
+                    mscipc_event_t ev;
+                    ev.kind = MSCIPC_EVENT_PACKET;
                     ev.offset = base + pos;
                     ev.length = total;
                     ev.packet = p;
@@ -176,8 +176,8 @@ static size_t scan(const uint8_t *data, size_t len, mscip_parser_t *parser, msci
     return pos;
 }
 
-void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, mscip_event_fn fn,
-                       void *ctx) {
+void mscipc_parser_feed(mscipc_parser_t *parser, const uint8_t *data, size_t len, mscipc_event_fn fn,
+                        void *ctx) {
     assert(parser != NULL);
     assert(data != NULL || len == 0);
     assert(fn != NULL);
@@ -206,7 +206,7 @@ void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, 
     }
 }
 
-void mscip_parser_flush(mscip_parser_t *parser, mscip_event_fn fn, void *ctx) {
+void mscipc_parser_flush(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx) {
     assert(parser != NULL);
     assert(fn != NULL);
     process(parser, fn, ctx, 1);

@@ -9,16 +9,16 @@
 
 /* The protocol's rule (protocol.h). A protocol without data sets or timestamps still gets
  * one-element arrays (C has no empty ones); the #if blocks below leave them unused. */
-static const uint8_t k_data_sets[MSCIP_SAMPLE_SETS] = MSCIP_SAMPLE_DATA_SETS;
-#define TIMESTAMPS MSCIP_SAMPLE_TIMESTAMPS
+static const uint8_t k_data_sets[MSCIPC_SAMPLE_SETS] = MSCIPC_SAMPLE_DATA_SETS;
+#define TIMESTAMPS MSCIPC_SAMPLE_TIMESTAMPS
 #if TIMESTAMPS > 0
-static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MSCIP_SAMPLE_STAMP_DESCRIPTORS;
-static const uint8_t k_stamp_size[TIMESTAMPS] = MSCIP_SAMPLE_STAMP_SIZES;
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = MSCIPC_SAMPLE_STAMP_DESCRIPTORS;
+static const uint8_t k_stamp_size[TIMESTAMPS] = MSCIPC_SAMPLE_STAMP_SIZES;
 #endif
 
 static bool is_shared(uint8_t descriptor) {
-#if MSCIP_SAMPLE_FIRST_SHARED < 256
-    return descriptor >= MSCIP_SAMPLE_FIRST_SHARED;
+#if MSCIPC_SAMPLE_FIRST_SHARED < 256
+    return descriptor >= MSCIPC_SAMPLE_FIRST_SHARED;
 #else
     (void)descriptor;
     return false;
@@ -26,9 +26,9 @@ static bool is_shared(uint8_t descriptor) {
 }
 
 static int slot_of(uint8_t set) {
-#if MSCIP_SAMPLE_DATA_SET_COUNT > 0
+#if MSCIPC_SAMPLE_DATA_SET_COUNT > 0
     int i;
-    for (i = 0; i < MSCIP_SAMPLE_SETS; i++) {
+    for (i = 0; i < MSCIPC_SAMPLE_SETS; i++) {
         if (k_data_sets[i] == set) {
             return i;
         }
@@ -43,22 +43,22 @@ static int slot_of(uint8_t set) {
 /* The payload of a complete packet, or NULL when the buffer does not hold one. */
 static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen) {
     size_t n;
-    if (!packet || len < MSCIP_HEADER_SIZE + MSCIP_CHECKSUM_SIZE) {
+    if (!packet || len < MSCIPC_HEADER_SIZE + MSCIPC_CHECKSUM_SIZE) {
         return NULL;
     }
-    n = packet[MSCIP_LENGTH_OFFSET];
-    if (MSCIP_HEADER_SIZE + n + MSCIP_CHECKSUM_SIZE > len) {
+    n = packet[MSCIPC_LENGTH_OFFSET];
+    if (MSCIPC_HEADER_SIZE + n + MSCIPC_CHECKSUM_SIZE > len) {
         return NULL;
     }
     *plen = n;
-    return packet + MSCIP_HEADER_SIZE;
+    return packet + MSCIPC_HEADER_SIZE;
 }
 
-size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+size_t mscipc_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
     assert(packet != NULL || len == 0);
     assert(key != NULL);
-    mscip_field_iter_t it;
-    mscip_field_entry_t e;
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
     size_t plen = 0;
     size_t key_len = 0;
     size_t prefix = 0;
@@ -72,15 +72,15 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
     if (!payload) {
         return 0;
     }
-    mscip_field_iter_init(&it, mscip_packet_set(packet), payload, plen);
-    while (mscip_field_iter_next(&it, &e) && e.kind == MSCIP_ENTRY_FIELD && is_shared(e.descriptor)) {
+    mscipc_field_iter_init(&it, mscipc_packet_set(packet), payload, plen);
+    while (mscipc_field_iter_next(&it, &e) && e.kind == MSCIPC_ENTRY_FIELD && is_shared(e.descriptor)) {
 #if TIMESTAMPS > 0
         int t;
         for (t = 0; t < TIMESTAMPS; t++) {
             if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
-                size_t n = MSCIP_FIELD_HEADER_SIZE + e.length;
+                size_t n = MSCIPC_FIELD_HEADER_SIZE + e.length;
                 seen[t] = true;
-                if (key_len + n <= MSCIP_SAMPLE_KEY_MAX) {
+                if (key_len + n <= MSCIPC_SAMPLE_KEY_MAX) {
                     memcpy(key + key_len, payload + e.offset, n);
                     key_len += n;
                 }
@@ -90,7 +90,7 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
 #else
         (void)key;
 #endif
-        prefix = e.offset + MSCIP_FIELD_HEADER_SIZE + e.length;
+        prefix = e.offset + MSCIPC_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {
         *shared_prefix = prefix;
@@ -98,31 +98,31 @@ size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t 
     return key_len;
 }
 
-void mscip_sample_tracker_init(mscip_sample_tracker_t *tracker) {
+void mscipc_sample_tracker_init(mscipc_sample_tracker_t *tracker) {
     assert(tracker != NULL);
     memset(tracker, 0, sizeof *tracker);
 }
 
-bool mscip_sample_tracker_feed(mscip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                               mscip_sample_info_t *info) {
+bool mscipc_sample_tracker_feed(mscipc_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                                mscipc_sample_info_t *info) {
     assert(tracker != NULL);
     assert(packet != NULL || len == 0);
     assert(info != NULL);
-    uint8_t key[MSCIP_SAMPLE_KEY_MAX];
+    uint8_t key[MSCIPC_SAMPLE_KEY_MAX];
     size_t key_len;
     size_t prefix = 0;
     size_t plen = 0;
-    mscip_sample_slot_t *slot;
+    mscipc_sample_slot_t *slot;
     int i;
     if (!payload_of(packet, len, &plen)) {
         return false;
     }
-    i = slot_of(packet[MSCIP_SET_OFFSET]);
+    i = slot_of(packet[MSCIPC_SET_OFFSET]);
     if (i < 0) {
         return false;
     }
     slot = &tracker->slots[i];
-    key_len = mscip_sample_key(packet, len, key, &prefix);
+    key_len = mscipc_sample_key(packet, len, key, &prefix);
     info->shared_prefix = prefix;
     if (key_len > 0 && slot->used && slot->key_len == key_len && memcmp(slot->key, key, key_len) == 0) {
         info->number = slot->number;

@@ -1,29 +1,30 @@
-/* Status texts and the exact decode error messages of docs/conformance.md section 3.
- * Generated: do not edit. */
+/* Status texts and the exact messages of docs/conformance.md section 3 (decode errors, trailing
+ * bytes of a payload), written without stdio so that the core builds freestanding (no printf on a
+ * Cortex-M image). Generated: do not edit. */
 #include "mscipcodec/status.h"
 
 #include <assert.h>
-#include <inttypes.h>
-#include <stdio.h>
 #include <string.h>
 
-const char *mscip_status_text(mscip_status_t status) {
+#include "mscipcodec/field_iter.h"
+
+const char *mscipc_status_text(mscipc_status_t status) {
     switch (status) {
-    case MSCIP_OK:
+    case MSCIPC_OK:
         return "ok";
-    case MSCIP_ERR_DECODE:
+    case MSCIPC_ERR_DECODE:
         return "field data does not match the layout";
-    case MSCIP_ERR_BUFFER:
+    case MSCIPC_ERR_BUFFER:
         return "output buffer too small";
-    case MSCIP_ERR_INVALID:
+    case MSCIPC_ERR_INVALID:
         return "value cannot be encoded";
-    case MSCIP_ERR_UNKNOWN_SET:
+    case MSCIPC_ERR_UNKNOWN_SET:
         return "unknown descriptor set";
-    case MSCIP_ERR_UNKNOWN_DESCRIPTOR:
+    case MSCIPC_ERR_UNKNOWN_DESCRIPTOR:
         return "unknown descriptor";
-    case MSCIP_ERR_TOO_LONG:
+    case MSCIPC_ERR_TOO_LONG:
         return "exceeds the framing limits";
-    case MSCIP_ERR_JSON:
+    case MSCIPC_ERR_JSON:
         return "invalid JSON line";
     }
     return "unknown status";
@@ -41,59 +42,133 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
-size_t mscip_decode_error_format(const mscip_decode_error_t *err, char *buf, size_t cap) {
+/* Appends the decimal digits of v. */
+static void append_u64(char *buf, size_t cap, size_t *len, uint64_t v) {
+    char digits[21];
+    size_t i = sizeof digits - 1;
+    digits[i] = '\0';
+    do {
+        digits[--i] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    append(buf, cap, len, digits + i);
+}
+
+/* Appends v (two's complement) as a signed decimal. */
+static void append_i64(char *buf, size_t cap, size_t *len, uint64_t v) {
+    if (v > (uint64_t)INT64_MAX) {
+        append(buf, cap, len, "-");
+        v = ~v + 1u;
+    }
+    append_u64(buf, cap, len, v);
+}
+
+size_t mscipc_decode_error_format(const mscipc_decode_error_t *err, char *buf, size_t cap) {
     assert(err != NULL);
     assert(buf != NULL || cap == 0);
-    char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
         buf[0] = '\0';
     }
-    if (err->kind != MSCIP_DECODE_UNEXPECTED) {
-        for (i = 0; i < err->depth && i < MSCIP_PATH_MAX_DEPTH; i++) {
+    if (err->kind != MSCIPC_DECODE_UNEXPECTED) {
+        for (i = 0; i < err->depth && i < MSCIPC_PATH_MAX_DEPTH; i++) {
             if (i > 0) {
                 append(buf, cap, &len, ".");
             }
             append(buf, cap, &len, err->path[i].name ? err->path[i].name : "?");
             if (err->path[i].index != SIZE_MAX) {
-                snprintf(num, sizeof num, "[%zu]", err->path[i].index);
-                append(buf, cap, &len, num);
+                append(buf, cap, &len, "[");
+                append_u64(buf, cap, &len, err->path[i].index);
+                append(buf, cap, &len, "]");
             }
         }
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
-    case MSCIP_DECODE_NEEDS_BYTES:
-        snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
-                 err->have);
+    case MSCIPC_DECODE_NEEDS_BYTES:
+        append(buf, cap, &len, "needs ");
+        append_u64(buf, cap, &len, err->need);
+        append(buf, cap, &len, " bytes at offset ");
+        append_u64(buf, cap, &len, err->offset);
+        append(buf, cap, &len, ", ");
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " left");
         break;
-    case MSCIP_DECODE_COUNT:
-        snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
+    case MSCIPC_DECODE_COUNT:
+        append(buf, cap, &len, "count ");
+        append_u64(buf, cap, &len, err->count);
+        append(buf, cap, &len, " exceeds maximum ");
+        append_u64(buf, cap, &len, err->max);
         break;
-    case MSCIP_DECODE_REMAINING:
-        snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
-                 err->offset, err->need);
+    case MSCIPC_DECODE_REMAINING:
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " bytes left at offset ");
+        append_u64(buf, cap, &len, err->offset);
+        append(buf, cap, &len, ", not a multiple of ");
+        append_u64(buf, cap, &len, err->need);
         break;
-    case MSCIP_DECODE_BOOL:
-        snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
+    case MSCIPC_DECODE_BOOL:
+        append(buf, cap, &len, "invalid bool value ");
+        append_u64(buf, cap, &len, err->value);
+        append(buf, cap, &len, " at offset ");
+        append_u64(buf, cap, &len, err->offset);
         break;
-    case MSCIP_DECODE_SELECTOR:
+    case MSCIPC_DECODE_SELECTOR:
+        append(buf, cap, &len, "no member for selector value ");
         if (err->value_signed) {
-            int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
-            snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
+            append_i64(buf, cap, &len, err->value);
         } else {
-            snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
+            append_u64(buf, cap, &len, err->value);
         }
         break;
-    case MSCIP_DECODE_UNEXPECTED:
-        snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
+    case MSCIPC_DECODE_UNEXPECTED:
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " unexpected bytes at offset ");
+        append_u64(buf, cap, &len, err->offset);
         break;
-    case MSCIP_DECODE_NONE:
+    case MSCIPC_DECODE_NONE:
     default:
-        snprintf(num, sizeof num, "no error");
+        append(buf, cap, &len, "no error");
         break;
     }
-    append(buf, cap, &len, num);
+    return len;
+}
+
+size_t mscipc_trailing_format(const mscipc_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
+    size_t len = 0;
+    if (cap > 0) {
+        buf[0] = '\0';
+    }
+    switch (entry->trailing) {
+    case MSCIPC_TRAILING_SHORT_LENGTH:
+        append(buf, cap, &len, "field length ");
+        append_u64(buf, cap, &len, entry->length_byte);
+        append(buf, cap, &len, " at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " is shorter than the field header");
+        break;
+    case MSCIPC_TRAILING_OVERRUN:
+        append(buf, cap, &len, "field length ");
+        append_u64(buf, cap, &len, entry->length_byte);
+        append(buf, cap, &len, " at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " overruns the payload (");
+        append_u64(buf, cap, &len, entry->length);
+        append(buf, cap, &len, " bytes left)");
+        break;
+    case MSCIPC_TRAILING_SHORT_HEADER:
+    default:
+        append(buf, cap, &len, "field header at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " needs ");
+        append_u64(buf, cap, &len, MSCIPC_FIELD_HEADER_SIZE);
+        append(buf, cap, &len, " bytes, ");
+        append_u64(buf, cap, &len, entry->length);
+        append(buf, cap, &len, " left");
+        break;
+    }
     return len;
 }

@@ -1,45 +1,45 @@
-/* Bounds-checked reader and writer in the protocol's byte order (MSCIP_LITTLE_ENDIAN).
+/* Bounds-checked reader and writer in the protocol's byte order (MSCIPC_LITTLE_ENDIAN).
  * Generated: do not edit. */
 #include "wire.h"
 
 #include <string.h>
 
-void mscip_reader_init(mscip_reader_t *r, const uint8_t *data, size_t len, mscip_decode_error_t *err) {
+void mscipc_reader_init(mscipc_reader_t *r, const uint8_t *data, size_t len, mscipc_decode_error_t *err) {
     memset(r, 0, sizeof *r);
     r->data = data;
     r->len = data ? len : 0;
     r->err = err;
 }
 
-void mscip_rd_push(mscip_reader_t *r, const char *name) {
-    if (r->depth < MSCIP_PATH_MAX_DEPTH) {
+void mscipc_rd_push(mscipc_reader_t *r, const char *name) {
+    if (r->depth < MSCIPC_PATH_MAX_DEPTH) {
         r->path[r->depth].name = name;
         r->path[r->depth].index = SIZE_MAX;
     }
     r->depth++;
 }
 
-void mscip_rd_index(mscip_reader_t *r, size_t index) {
-    if (r->depth > 0 && r->depth <= MSCIP_PATH_MAX_DEPTH) {
+void mscipc_rd_index(mscipc_reader_t *r, size_t index) {
+    if (r->depth > 0 && r->depth <= MSCIPC_PATH_MAX_DEPTH) {
         r->path[r->depth - 1].index = index;
     }
 }
 
-void mscip_rd_pop(mscip_reader_t *r) {
+void mscipc_rd_pop(mscipc_reader_t *r) {
     if (r->depth > 0) {
         r->depth--;
     }
 }
 
-static mscip_decode_error_t *begin_error(mscip_reader_t *r, mscip_decode_error_kind_t kind) {
+static mscipc_decode_error_t *begin_error(mscipc_reader_t *r, mscipc_decode_error_kind_t kind) {
     size_t i;
-    mscip_decode_error_t *e = r->err;
+    mscipc_decode_error_t *e = r->err;
     if (!e) {
         return NULL;
     }
     memset(e, 0, sizeof *e);
     e->kind = kind;
-    e->depth = r->depth < MSCIP_PATH_MAX_DEPTH ? r->depth : MSCIP_PATH_MAX_DEPTH;
+    e->depth = r->depth < MSCIPC_PATH_MAX_DEPTH ? r->depth : MSCIPC_PATH_MAX_DEPTH;
     for (i = 0; i < e->depth; i++) {
         e->path[i] = r->path[i];
     }
@@ -48,12 +48,12 @@ static mscip_decode_error_t *begin_error(mscip_reader_t *r, mscip_decode_error_k
     return e;
 }
 
-static int need(mscip_reader_t *r, size_t n) {
-    mscip_decode_error_t *e;
+static int need(mscipc_reader_t *r, size_t n) {
+    mscipc_decode_error_t *e;
     if (r->len - r->pos >= n) {
         return 0;
     }
-    e = begin_error(r, MSCIP_DECODE_NEEDS_BYTES);
+    e = begin_error(r, MSCIPC_DECODE_NEEDS_BYTES);
     if (e) {
         e->need = n;
     }
@@ -61,11 +61,11 @@ static int need(mscip_reader_t *r, size_t n) {
 }
 
 /* An n-byte unsigned value in the protocol's byte order. */
-static uint64_t get_uint(mscip_reader_t *r, size_t n) {
+static uint64_t get_uint(mscipc_reader_t *r, size_t n) {
     uint64_t v = 0;
     size_t i;
     for (i = 0; i < n; i++) {
-#if MSCIP_LITTLE_ENDIAN
+#if MSCIPC_LITTLE_ENDIAN
         v |= (uint64_t)r->data[r->pos + i] << (8 * i);
 #else
         v = (v << 8) | (uint64_t)r->data[r->pos + i];
@@ -85,15 +85,15 @@ static int64_t to_signed(uint64_t u, unsigned bits) {
     return (int64_t)u;
 }
 
-int mscip_rd_bool(mscip_reader_t *r, bool *out) {
+int mscipc_rd_bool(mscipc_reader_t *r, bool *out) {
     uint8_t b;
-    mscip_decode_error_t *e;
+    mscipc_decode_error_t *e;
     if (need(r, 1)) {
         return -1;
     }
     b = r->data[r->pos];
     if (b > 1) {
-        e = begin_error(r, MSCIP_DECODE_BOOL);
+        e = begin_error(r, MSCIPC_DECODE_BOOL);
         if (e) {
             e->value = b;
         }
@@ -104,11 +104,11 @@ int mscip_rd_bool(mscip_reader_t *r, bool *out) {
     return 0;
 }
 
-int mscip_rd_char(mscip_reader_t *r, char *out) {
-    return mscip_rd_chars(r, out, 1);
+int mscipc_rd_char(mscipc_reader_t *r, char *out) {
+    return mscipc_rd_chars(r, out, 1);
 }
 
-int mscip_rd_u8(mscip_reader_t *r, uint8_t *out) {
+int mscipc_rd_u8(mscipc_reader_t *r, uint8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -116,7 +116,7 @@ int mscip_rd_u8(mscip_reader_t *r, uint8_t *out) {
     return 0;
 }
 
-int mscip_rd_u16(mscip_reader_t *r, uint16_t *out) {
+int mscipc_rd_u16(mscipc_reader_t *r, uint16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -124,7 +124,7 @@ int mscip_rd_u16(mscip_reader_t *r, uint16_t *out) {
     return 0;
 }
 
-int mscip_rd_u32(mscip_reader_t *r, uint32_t *out) {
+int mscipc_rd_u32(mscipc_reader_t *r, uint32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -132,7 +132,7 @@ int mscip_rd_u32(mscip_reader_t *r, uint32_t *out) {
     return 0;
 }
 
-int mscip_rd_u64(mscip_reader_t *r, uint64_t *out) {
+int mscipc_rd_u64(mscipc_reader_t *r, uint64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -140,7 +140,7 @@ int mscip_rd_u64(mscip_reader_t *r, uint64_t *out) {
     return 0;
 }
 
-int mscip_rd_s8(mscip_reader_t *r, int8_t *out) {
+int mscipc_rd_s8(mscipc_reader_t *r, int8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -148,7 +148,7 @@ int mscip_rd_s8(mscip_reader_t *r, int8_t *out) {
     return 0;
 }
 
-int mscip_rd_s16(mscip_reader_t *r, int16_t *out) {
+int mscipc_rd_s16(mscipc_reader_t *r, int16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -156,7 +156,7 @@ int mscip_rd_s16(mscip_reader_t *r, int16_t *out) {
     return 0;
 }
 
-int mscip_rd_s32(mscip_reader_t *r, int32_t *out) {
+int mscipc_rd_s32(mscipc_reader_t *r, int32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -164,7 +164,7 @@ int mscip_rd_s32(mscip_reader_t *r, int32_t *out) {
     return 0;
 }
 
-int mscip_rd_s64(mscip_reader_t *r, int64_t *out) {
+int mscipc_rd_s64(mscipc_reader_t *r, int64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -172,7 +172,7 @@ int mscip_rd_s64(mscip_reader_t *r, int64_t *out) {
     return 0;
 }
 
-int mscip_rd_f32(mscip_reader_t *r, float *out) {
+int mscipc_rd_f32(mscipc_reader_t *r, float *out) {
     uint32_t bits;
     if (need(r, 4)) {
         return -1;
@@ -182,7 +182,7 @@ int mscip_rd_f32(mscip_reader_t *r, float *out) {
     return 0;
 }
 
-int mscip_rd_f64(mscip_reader_t *r, double *out) {
+int mscipc_rd_f64(mscipc_reader_t *r, double *out) {
     uint64_t bits;
     if (need(r, 8)) {
         return -1;
@@ -192,7 +192,7 @@ int mscip_rd_f64(mscip_reader_t *r, double *out) {
     return 0;
 }
 
-int mscip_rd_chars(mscip_reader_t *r, char *out, size_t n) {
+int mscipc_rd_chars(mscipc_reader_t *r, char *out, size_t n) {
     if (need(r, n)) {
         return -1;
     }
@@ -203,25 +203,25 @@ int mscip_rd_chars(mscip_reader_t *r, char *out, size_t n) {
     return 0;
 }
 
-int mscip_rd_remaining(mscip_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
+int mscipc_rd_remaining(mscipc_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
     size_t left = r->len - r->pos;
-    mscip_decode_error_t *e;
+    mscipc_decode_error_t *e;
     if (left % elem_size != 0) {
-        e = begin_error(r, MSCIP_DECODE_REMAINING);
+        e = begin_error(r, MSCIPC_DECODE_REMAINING);
         if (e) {
             e->need = elem_size;
         }
         return -1;
     }
     if ((uint64_t)(left / elem_size) > max) {
-        return mscip_rd_count_error(r, (uint64_t)(left / elem_size), max);
+        return mscipc_rd_count_error(r, (uint64_t)(left / elem_size), max);
     }
     *count = left / elem_size;
     return 0;
 }
 
-int mscip_rd_count_error(mscip_reader_t *r, uint64_t count, uint64_t max) {
-    mscip_decode_error_t *e = begin_error(r, MSCIP_DECODE_COUNT);
+int mscipc_rd_count_error(mscipc_reader_t *r, uint64_t count, uint64_t max) {
+    mscipc_decode_error_t *e = begin_error(r, MSCIPC_DECODE_COUNT);
     if (e) {
         e->count = count;
         e->max = max;
@@ -229,16 +229,16 @@ int mscip_rd_count_error(mscip_reader_t *r, uint64_t count, uint64_t max) {
     return -1;
 }
 
-int mscip_rd_selector_error_u(mscip_reader_t *r, uint64_t value) {
-    mscip_decode_error_t *e = begin_error(r, MSCIP_DECODE_SELECTOR);
+int mscipc_rd_selector_error_u(mscipc_reader_t *r, uint64_t value) {
+    mscipc_decode_error_t *e = begin_error(r, MSCIPC_DECODE_SELECTOR);
     if (e) {
         e->value = value;
     }
     return -1;
 }
 
-int mscip_rd_selector_error_s(mscip_reader_t *r, int64_t value) {
-    mscip_decode_error_t *e = begin_error(r, MSCIP_DECODE_SELECTOR);
+int mscipc_rd_selector_error_s(mscipc_reader_t *r, int64_t value) {
+    mscipc_decode_error_t *e = begin_error(r, MSCIPC_DECODE_SELECTOR);
     if (e) {
         e->value = (uint64_t)value;
         e->value_signed = true;
@@ -246,97 +246,97 @@ int mscip_rd_selector_error_s(mscip_reader_t *r, int64_t value) {
     return -1;
 }
 
-int mscip_rd_finish(mscip_reader_t *r) {
+int mscipc_rd_finish(mscipc_reader_t *r) {
     if (r->pos < r->len) {
         r->depth = 0;
-        begin_error(r, MSCIP_DECODE_UNEXPECTED);
+        begin_error(r, MSCIPC_DECODE_UNEXPECTED);
         return -1;
     }
     return 0;
 }
 
-void mscip_writer_init(mscip_writer_t *w, uint8_t *buf, size_t cap) {
+void mscipc_writer_init(mscipc_writer_t *w, uint8_t *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
 /* The low n bytes of v in the protocol's byte order. */
-static mscip_status_t put_uint(mscip_writer_t *w, uint64_t v, size_t n) {
+static mscipc_status_t put_uint(mscipc_writer_t *w, uint64_t v, size_t n) {
     size_t i;
     if (w->cap - w->len < n) {
-        return MSCIP_ERR_BUFFER;
+        return MSCIPC_ERR_BUFFER;
     }
     for (i = 0; i < n; i++) {
-#if MSCIP_LITTLE_ENDIAN
+#if MSCIPC_LITTLE_ENDIAN
         w->buf[w->len + i] = (uint8_t)(v >> (8 * i));
 #else
         w->buf[w->len + i] = (uint8_t)(v >> (8 * (n - 1 - i)));
 #endif
     }
     w->len += n;
-    return MSCIP_OK;
+    return MSCIPC_OK;
 }
 
-mscip_status_t mscip_wr_bool(mscip_writer_t *w, const bool *v) {
+mscipc_status_t mscipc_wr_bool(mscipc_writer_t *w, const bool *v) {
     return put_uint(w, *v ? 1u : 0u, 1);
 }
 
-mscip_status_t mscip_wr_char(mscip_writer_t *w, const char *v) {
-    return mscip_wr_chars(w, v, 1);
+mscipc_status_t mscipc_wr_char(mscipc_writer_t *w, const char *v) {
+    return mscipc_wr_chars(w, v, 1);
 }
 
-mscip_status_t mscip_wr_u8(mscip_writer_t *w, const uint8_t *v) {
+mscipc_status_t mscipc_wr_u8(mscipc_writer_t *w, const uint8_t *v) {
     return put_uint(w, *v, 1);
 }
 
-mscip_status_t mscip_wr_u16(mscip_writer_t *w, const uint16_t *v) {
+mscipc_status_t mscipc_wr_u16(mscipc_writer_t *w, const uint16_t *v) {
     return put_uint(w, *v, 2);
 }
 
-mscip_status_t mscip_wr_u32(mscip_writer_t *w, const uint32_t *v) {
+mscipc_status_t mscipc_wr_u32(mscipc_writer_t *w, const uint32_t *v) {
     return put_uint(w, *v, 4);
 }
 
-mscip_status_t mscip_wr_u64(mscip_writer_t *w, const uint64_t *v) {
+mscipc_status_t mscipc_wr_u64(mscipc_writer_t *w, const uint64_t *v) {
     return put_uint(w, *v, 8);
 }
 
-mscip_status_t mscip_wr_s8(mscip_writer_t *w, const int8_t *v) {
+mscipc_status_t mscipc_wr_s8(mscipc_writer_t *w, const int8_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 1);
 }
 
-mscip_status_t mscip_wr_s16(mscip_writer_t *w, const int16_t *v) {
+mscipc_status_t mscipc_wr_s16(mscipc_writer_t *w, const int16_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 2);
 }
 
-mscip_status_t mscip_wr_s32(mscip_writer_t *w, const int32_t *v) {
+mscipc_status_t mscipc_wr_s32(mscipc_writer_t *w, const int32_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 4);
 }
 
-mscip_status_t mscip_wr_s64(mscip_writer_t *w, const int64_t *v) {
+mscipc_status_t mscipc_wr_s64(mscipc_writer_t *w, const int64_t *v) {
     return put_uint(w, (uint64_t)*v, 8);
 }
 
-mscip_status_t mscip_wr_f32(mscip_writer_t *w, const float *v) {
+mscipc_status_t mscipc_wr_f32(mscipc_writer_t *w, const float *v) {
     uint32_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 4);
 }
 
-mscip_status_t mscip_wr_f64(mscip_writer_t *w, const double *v) {
+mscipc_status_t mscipc_wr_f64(mscipc_writer_t *w, const double *v) {
     uint64_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 8);
 }
 
-mscip_status_t mscip_wr_chars(mscip_writer_t *w, const char *v, size_t n) {
+mscipc_status_t mscipc_wr_chars(mscipc_writer_t *w, const char *v, size_t n) {
     if (w->cap - w->len < n) {
-        return MSCIP_ERR_BUFFER;
+        return MSCIPC_ERR_BUFFER;
     }
     if (n > 0) {
         memcpy(w->buf + w->len, v, n);
     }
     w->len += n;
-    return MSCIP_OK;
+    return MSCIPC_OK;
 }

@@ -695,8 +695,8 @@ TEST(Canonical, Doubles) {
     for (const DoubleCase &c : kDoubles) {
         double d;
         std::memcpy(&d, &c.bits, sizeof d);
-        char buf[MSCIP_JSON_NUMBER_MAX];
-        size_t n = mscip_json_format_double(d, buf, sizeof buf);
+        char buf[MSCIPC_JSON_NUMBER_MAX];
+        size_t n = mscipc_json_format_double(d, buf, sizeof buf);
         EXPECT_EQ(std::string(buf, n), c.text) << "bits " << std::hex << c.bits;
     }
 }
@@ -705,8 +705,8 @@ TEST(Canonical, Floats) {
     for (const FloatCase &c : kFloats) {
         float f;
         std::memcpy(&f, &c.bits, sizeof f);
-        char buf[MSCIP_JSON_NUMBER_MAX];
-        size_t n = mscip_json_format_float(f, buf, sizeof buf);
+        char buf[MSCIPC_JSON_NUMBER_MAX];
+        size_t n = mscipc_json_format_float(f, buf, sizeof buf);
         EXPECT_EQ(std::string(buf, n), c.text) << "bits " << std::hex << c.bits;
     }
 }
@@ -717,38 +717,38 @@ TEST(Canonical, StringsEscapeEveryByte) {
         all[i] = static_cast<char>(i);
     }
     char buf[sizeof kAllBytes + 1];
-    mscip_json_format_string(all, sizeof all, buf, sizeof buf);
+    mscipc_json_format_string(all, sizeof all, buf, sizeof buf);
     EXPECT_STREQ(buf, kAllBytes);
 }
 
-// mscip_gps_time_flags_t: each member's mask and shift, and (value & MASK) >> SHIFT of an all-ones value.
+// mscipc_gps_time_flags_t: each member's mask and shift, and (value & MASK) >> SHIFT of an all-ones value.
 TEST(Bitfields, GpsTimeFlags) {
-    const mscip_gps_time_flags_t all =
-        static_cast<mscip_gps_time_flags_t>(~static_cast<mscip_gps_time_flags_t>(0));
-    EXPECT_EQ(static_cast<uint64_t>(MSCIP_GPS_TIME_FLAGS_PPS_RECEIVED_MASK), UINT64_C(0x1));
-    EXPECT_EQ(MSCIP_GPS_TIME_FLAGS_PPS_RECEIVED_SHIFT, 0);
-    EXPECT_EQ(static_cast<uint64_t>((all & MSCIP_GPS_TIME_FLAGS_PPS_RECEIVED_MASK) >>
-                                    MSCIP_GPS_TIME_FLAGS_PPS_RECEIVED_SHIFT),
+    const mscipc_gps_time_flags_t all =
+        static_cast<mscipc_gps_time_flags_t>(~static_cast<mscipc_gps_time_flags_t>(0));
+    EXPECT_EQ(static_cast<uint64_t>(MSCIPC_GPS_TIME_FLAGS_PPS_RECEIVED_MASK), UINT64_C(0x1));
+    EXPECT_EQ(MSCIPC_GPS_TIME_FLAGS_PPS_RECEIVED_SHIFT, 0);
+    EXPECT_EQ(static_cast<uint64_t>((all & MSCIPC_GPS_TIME_FLAGS_PPS_RECEIVED_MASK) >>
+                                    MSCIPC_GPS_TIME_FLAGS_PPS_RECEIVED_SHIFT),
               UINT64_C(0x1));
-    EXPECT_EQ(static_cast<uint64_t>(MSCIP_GPS_TIME_FLAGS_TIME_SET_MASK), UINT64_C(0x2));
-    EXPECT_EQ(MSCIP_GPS_TIME_FLAGS_TIME_SET_SHIFT, 1);
-    EXPECT_EQ(static_cast<uint64_t>((all & MSCIP_GPS_TIME_FLAGS_TIME_SET_MASK) >>
-                                    MSCIP_GPS_TIME_FLAGS_TIME_SET_SHIFT),
+    EXPECT_EQ(static_cast<uint64_t>(MSCIPC_GPS_TIME_FLAGS_TIME_SET_MASK), UINT64_C(0x2));
+    EXPECT_EQ(MSCIPC_GPS_TIME_FLAGS_TIME_SET_SHIFT, 1);
+    EXPECT_EQ(static_cast<uint64_t>((all & MSCIPC_GPS_TIME_FLAGS_TIME_SET_MASK) >>
+                                    MSCIPC_GPS_TIME_FLAGS_TIME_SET_SHIFT),
               UINT64_C(0x1));
-    EXPECT_EQ(static_cast<uint64_t>(MSCIP_GPS_TIME_FLAGS_TIME_NOT_SET_MASK), UINT64_C(0x4));
-    EXPECT_EQ(MSCIP_GPS_TIME_FLAGS_TIME_NOT_SET_SHIFT, 2);
-    EXPECT_EQ(static_cast<uint64_t>((all & MSCIP_GPS_TIME_FLAGS_TIME_NOT_SET_MASK) >>
-                                    MSCIP_GPS_TIME_FLAGS_TIME_NOT_SET_SHIFT),
+    EXPECT_EQ(static_cast<uint64_t>(MSCIPC_GPS_TIME_FLAGS_TIME_NOT_SET_MASK), UINT64_C(0x4));
+    EXPECT_EQ(MSCIPC_GPS_TIME_FLAGS_TIME_NOT_SET_SHIFT, 2);
+    EXPECT_EQ(static_cast<uint64_t>((all & MSCIPC_GPS_TIME_FLAGS_TIME_NOT_SET_MASK) >>
+                                    MSCIPC_GPS_TIME_FLAGS_TIME_NOT_SET_SHIFT),
               UINT64_C(0x1));
-    EXPECT_EQ(static_cast<uint64_t>(MSCIP_GPS_TIME_FLAGS_PPS_LOST_MASK), UINT64_C(0x8));
-    EXPECT_EQ(MSCIP_GPS_TIME_FLAGS_PPS_LOST_SHIFT, 3);
-    EXPECT_EQ(static_cast<uint64_t>((all & MSCIP_GPS_TIME_FLAGS_PPS_LOST_MASK) >>
-                                    MSCIP_GPS_TIME_FLAGS_PPS_LOST_SHIFT),
+    EXPECT_EQ(static_cast<uint64_t>(MSCIPC_GPS_TIME_FLAGS_PPS_LOST_MASK), UINT64_C(0x8));
+    EXPECT_EQ(MSCIPC_GPS_TIME_FLAGS_PPS_LOST_SHIFT, 3);
+    EXPECT_EQ(static_cast<uint64_t>((all & MSCIPC_GPS_TIME_FLAGS_PPS_LOST_MASK) >>
+                                    MSCIPC_GPS_TIME_FLAGS_PPS_LOST_SHIFT),
               UINT64_C(0x1));
-    EXPECT_EQ(static_cast<uint64_t>(MSCIP_GPS_TIME_FLAGS_RESERVED_MASK), UINT64_C(0xFFF0));
-    EXPECT_EQ(MSCIP_GPS_TIME_FLAGS_RESERVED_SHIFT, 4);
-    EXPECT_EQ(static_cast<uint64_t>((all & MSCIP_GPS_TIME_FLAGS_RESERVED_MASK) >>
-                                    MSCIP_GPS_TIME_FLAGS_RESERVED_SHIFT),
+    EXPECT_EQ(static_cast<uint64_t>(MSCIPC_GPS_TIME_FLAGS_RESERVED_MASK), UINT64_C(0xFFF0));
+    EXPECT_EQ(MSCIPC_GPS_TIME_FLAGS_RESERVED_SHIFT, 4);
+    EXPECT_EQ(static_cast<uint64_t>((all & MSCIPC_GPS_TIME_FLAGS_RESERVED_MASK) >>
+                                    MSCIPC_GPS_TIME_FLAGS_RESERVED_SHIFT),
               UINT64_C(0xFFF));
 }
 

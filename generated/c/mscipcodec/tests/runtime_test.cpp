@@ -16,11 +16,11 @@ using namespace test_support;
 namespace {
 
 // A set and descriptor that designate no field (for raw-field tests).
-bool unknown_field(uint8_t *set, uint8_t *descriptor, mscip_status_t want) {
+bool unknown_field(uint8_t *set, uint8_t *descriptor, mscipc_status_t want) {
     for (unsigned s = 0; s < 256; s++) {
         for (unsigned d = 0; d < 256; d++) {
-            mscip_status_t why = MSCIP_OK;
-            if (!mscip_find_field(static_cast<uint8_t>(s), static_cast<uint8_t>(d), &why) && why == want) {
+            mscipc_status_t why = MSCIPC_OK;
+            if (!mscipc_find_field(static_cast<uint8_t>(s), static_cast<uint8_t>(d), &why) && why == want) {
                 *set = static_cast<uint8_t>(s);
                 *descriptor = static_cast<uint8_t>(d);
                 return true;
@@ -49,20 +49,20 @@ TEST(Parser, JsonLinesAreIndependentOfChunking) {
 TEST(Parser, SkipLineCarriesTheSkippedBytes) {
     std::vector<uint8_t> stream = {garbage_byte(), 0x22, 0xAB};
     char line[128];
-    mscip_json_skip_line(0, stream.data(), stream.size(), line, sizeof line);
+    mscipc_json_skip_line(0, stream.data(), stream.size(), line, sizeof line);
     EXPECT_EQ(std::string(line), "{\"offset\":0,\"skipped\":\"" + to_hex(stream) + "\"}");
     EXPECT_EQ(decode_text(stream, 0), std::string(line) + "\n");
 }
 TEST(Dispatch, UnknownSetAndDescriptorBecomeRawFields) {
     uint8_t set = 0;
     uint8_t descriptor = 0;
-    if (unknown_field(&set, &descriptor, MSCIP_ERR_UNKNOWN_SET)) {
+    if (unknown_field(&set, &descriptor, MSCIPC_ERR_UNKNOWN_SET)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {0x3e, 0x7a}}});
         EXPECT_EQ(decode_text(pkt, 0), "{\"offset\":0,\"set\":" + std::to_string(set) +
                                            ",\"fields\":[{\"descriptor\":" + std::to_string(descriptor) +
                                            ",\"data\":\"3e7a\",\"error\":\"unknown descriptor set\"}]}\n");
     }
-    if (unknown_field(&set, &descriptor, MSCIP_ERR_UNKNOWN_DESCRIPTOR)) {
+    if (unknown_field(&set, &descriptor, MSCIPC_ERR_UNKNOWN_DESCRIPTOR)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {}}});
         std::string text = decode_text(pkt, 0);
         EXPECT_EQ(text, "{\"offset\":0,\"set\":" + std::to_string(set) +
@@ -75,7 +75,7 @@ TEST(Dispatch, UnknownSetAndDescriptorBecomeRawFields) {
     }
 }
 TEST(Json, EncodeLineErrors) {
-    uint8_t out[MSCIP_MAX_PACKET];
+    uint8_t out[MSCIPC_MAX_PACKET];
     char msg[512];
     size_t n = 0;
     const char *bad[] = {
@@ -90,33 +90,35 @@ TEST(Json, EncodeLineErrors) {
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"data\":\"01\",\"error\":\"x\"},]}",
     };
     for (const char *line : bad) {
-        EXPECT_EQ(mscip_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
-                  MSCIP_ERR_JSON)
+        EXPECT_EQ(mscipc_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
+                  MSCIPC_ERR_JSON)
             << line;
         EXPECT_NE(msg[0], '\0') << line;
     }
     const char *skip = " {\"skipped\":\"A5ff75\", \"offset\": 12} ";
-    ASSERT_EQ(mscip_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg), MSCIP_OK)
+    ASSERT_EQ(mscipc_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg),
+              MSCIPC_OK)
         << msg;
     ASSERT_EQ(n, 3u);
     EXPECT_EQ(out[0], 0xA5);
     EXPECT_EQ(out[2], 0x75);
-    EXPECT_EQ(mscip_json_encode_line(skip, std::strlen(skip), out, 2, &n, msg, sizeof msg), MSCIP_ERR_JSON);
+    EXPECT_EQ(mscipc_json_encode_line(skip, std::strlen(skip), out, 2, &n, msg, sizeof msg), MSCIPC_ERR_JSON);
 }
 
 TEST(Json, RawAndTrailingEntriesRoundTrip) {
     const char *line =
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":200,\"data\":\"0102\",\"error\":\"e\"},"
         "{\"trailing\":\"09\",\"error\":\"e\"}]}";
-    uint8_t out[MSCIP_MAX_PACKET];
+    uint8_t out[MSCIPC_MAX_PACKET];
     char msg[512];
     size_t n = 0;
-    ASSERT_EQ(mscip_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), MSCIP_OK)
+    ASSERT_EQ(mscipc_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
+              MSCIPC_OK)
         << msg;
-    ASSERT_EQ(n, MSCIP_HEADER_SIZE + MSCIP_FIELD_HEADER_SIZE + 2u + 1u + MSCIP_CHECKSUM_SIZE);
-    EXPECT_TRUE(mscip_packet_valid(out, n));
-    const uint8_t *payload = mscip_packet_payload(out);
-    EXPECT_EQ(payload[MSCIP_FIELD_DESCRIPTOR_OFFSET], 200);
-    EXPECT_EQ(payload[MSCIP_FIELD_LENGTH_OFFSET], 2 + MSCIP_FIELD_LENGTH_ADJUST);
-    EXPECT_EQ(payload[MSCIP_FIELD_HEADER_SIZE + 2], 0x09);
+    ASSERT_EQ(n, MSCIPC_HEADER_SIZE + MSCIPC_FIELD_HEADER_SIZE + 2u + 1u + MSCIPC_CHECKSUM_SIZE);
+    EXPECT_TRUE(mscipc_packet_valid(out, n));
+    const uint8_t *payload = mscipc_packet_payload(out);
+    EXPECT_EQ(payload[MSCIPC_FIELD_DESCRIPTOR_OFFSET], 200);
+    EXPECT_EQ(payload[MSCIPC_FIELD_LENGTH_OFFSET], 2 + MSCIPC_FIELD_LENGTH_ADJUST);
+    EXPECT_EQ(payload[MSCIPC_FIELD_HEADER_SIZE + 2], 0x09);
 }

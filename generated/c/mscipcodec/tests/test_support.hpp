@@ -30,7 +30,7 @@ inline std::string to_hex(const std::vector<uint8_t> &bytes) {
 }
 
 struct Event {
-    mscip_event_kind_t kind;
+    mscipc_event_kind_t kind;
     uint64_t offset;
     uint64_t length;
     bool operator==(const Event &o) const {
@@ -40,23 +40,23 @@ struct Event {
 
 struct Collector {
     const std::vector<uint8_t> *input = nullptr;
-    mscip_device_t device = MSCIP_DEVICE_ANY;
+    mscipc_device_t device = MSCIPC_DEVICE_ANY;
     std::string text;
     std::vector<Event> events;
 };
 
-inline void collect(void *arg, const mscip_event_t *ev) {
+inline void collect(void *arg, const mscipc_event_t *ev) {
     Collector *c = static_cast<Collector *>(arg);
     c->events.push_back(Event{ev->kind, ev->offset, ev->length});
     std::string line(1024, '\0');
     size_t n;
     for (;;) {
-        if (ev->kind == MSCIP_EVENT_SKIP) {
-            n = mscip_json_skip_line(ev->offset, c->input->data() + ev->offset,
-                                     static_cast<size_t>(ev->length), &line[0], line.size());
+        if (ev->kind == MSCIPC_EVENT_SKIP) {
+            n = mscipc_json_skip_line(ev->offset, c->input->data() + ev->offset,
+                                      static_cast<size_t>(ev->length), &line[0], line.size());
         } else {
-            n = mscip_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
-                                       &line[0], line.size());
+            n = mscipc_json_packet_line(ev->packet, static_cast<size_t>(ev->length), ev->offset, c->device,
+                                        &line[0], line.size());
         }
         if (n < line.size()) {
             break;
@@ -69,26 +69,26 @@ inline void collect(void *arg, const mscip_event_t *ev) {
 
 // Feeds the bytes in chunks of `chunk` bytes (0: all at once); returns the JSON lines.
 inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk,
-                        mscip_device_t device = MSCIP_DEVICE_ANY) {
+                        mscipc_device_t device = MSCIPC_DEVICE_ANY) {
     Collector c;
     c.input = &bytes;
     c.device = device;
-    mscip_parser_t parser;
-    mscip_parser_init(&parser);
+    mscipc_parser_t parser;
+    mscipc_parser_init(&parser);
     if (chunk == 0) {
-        mscip_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
+        mscipc_parser_feed(&parser, bytes.data(), bytes.size(), collect, &c);
     } else {
         for (size_t i = 0; i < bytes.size(); i += chunk) {
             size_t n = bytes.size() - i < chunk ? bytes.size() - i : chunk;
-            mscip_parser_feed(&parser, bytes.data() + i, n, collect, &c);
+            mscipc_parser_feed(&parser, bytes.data() + i, n, collect, &c);
         }
     }
-    mscip_parser_flush(&parser, collect, &c);
+    mscipc_parser_flush(&parser, collect, &c);
     return c;
 }
 
 inline std::string decode_text(const std::vector<uint8_t> &bytes, size_t chunk,
-                               mscip_device_t device = MSCIP_DEVICE_ANY) {
+                               mscipc_device_t device = MSCIPC_DEVICE_ANY) {
     return decode(bytes, chunk, device).text;
 }
 
@@ -105,12 +105,12 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
         if (line.empty()) {
             continue;
         }
-        std::vector<uint8_t> buf(line.size() / 2 + MSCIP_MAX_PACKET);
+        std::vector<uint8_t> buf(line.size() / 2 + MSCIPC_MAX_PACKET);
         char msg[512];
         size_t n = 0;
-        mscip_status_t st =
-            mscip_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
-        if (st != MSCIP_OK) {
+        mscipc_status_t st =
+            mscipc_json_encode_line(line.data(), line.size(), buf.data(), buf.size(), &n, msg, sizeof msg);
+        if (st != MSCIPC_OK) {
             *error = msg;
             return false;
         }
@@ -122,14 +122,14 @@ inline bool encode_text(const std::string &text, std::vector<uint8_t> *out, std:
 // A packet of descriptor set `set` holding the given (descriptor, data) fields.
 inline std::vector<uint8_t> packet(uint8_t set,
                                    const std::vector<std::pair<uint8_t, std::vector<uint8_t>>> &fields) {
-    std::vector<uint8_t> buf(MSCIP_MAX_PACKET);
-    mscip_packet_builder_t b;
-    mscip_packet_begin(&b, buf.data(), buf.size(), set);
+    std::vector<uint8_t> buf(MSCIPC_MAX_PACKET);
+    mscipc_packet_builder_t b;
+    mscipc_packet_begin(&b, buf.data(), buf.size(), set);
     for (const auto &f : fields) {
-        mscip_packet_add_field(&b, f.first, f.second.data(), f.second.size());
+        mscipc_packet_add_field(&b, f.first, f.second.data(), f.second.size());
     }
     size_t n = 0;
-    if (mscip_packet_finish(&b, &n) != MSCIP_OK) {
+    if (mscipc_packet_finish(&b, &n) != MSCIPC_OK) {
         return {};
     }
     buf.resize(n);
@@ -140,8 +140,8 @@ inline std::vector<uint8_t> packet(uint8_t set,
 inline uint8_t garbage_byte() {
     for (unsigned b = 0;; b++) {
         bool in_sync = false;
-        for (size_t i = 0; i < MSCIP_SYNC_SIZE; i++) {
-            in_sync = in_sync || mscip_sync[i] == b;
+        for (size_t i = 0; i < MSCIPC_SYNC_SIZE; i++) {
+            in_sync = in_sync || mscipc_sync[i] == b;
         }
         if (!in_sync) {
             return static_cast<uint8_t>(b);

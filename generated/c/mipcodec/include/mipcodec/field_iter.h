@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_FIELD_ITER_H
-#define MIP_FIELD_ITER_H
+#ifndef MIPC_FIELD_ITER_H
+#define MIPC_FIELD_ITER_H
 
 #include "mipcodec/framing.h"
 
@@ -17,45 +17,45 @@ extern "C" {
 #endif
 
 typedef enum {
-    MIP_ENTRY_FIELD = 1,   /* a complete field */
-    MIP_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
-} mip_entry_kind_t;
+    MIPC_ENTRY_FIELD = 1,   /* a complete field */
+    MIPC_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
+} mipc_entry_kind_t;
 
 typedef enum {
-    MIP_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
-    MIP_TRAILING_SHORT_LENGTH =
+    MIPC_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
+    MIPC_TRAILING_SHORT_LENGTH =
         2, /* field length {length} at payload offset {offset} is shorter than the field header */
-    MIP_TRAILING_OVERRUN =
+    MIPC_TRAILING_OVERRUN =
         3 /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
-} mip_trailing_kind_t;
+} mipc_trailing_kind_t;
 
 typedef struct {
-    mip_entry_kind_t kind;
-    size_t offset;                /* payload offset of the field header / trailing bytes */
-    uint8_t descriptor;           /* fields */
-    const uint8_t *data;          /* field data (after the header), or the trailing bytes */
-    size_t length;                /* bytes at data */
-    mip_trailing_kind_t trailing; /* trailing entries: why */
-    uint8_t length_byte;          /* trailing entries: the field length byte as sent */
-} mip_field_entry_t;
+    mipc_entry_kind_t kind;
+    size_t offset;                 /* payload offset of the field header / trailing bytes */
+    uint8_t descriptor;            /* fields */
+    const uint8_t *data;           /* field data (after the header), or the trailing bytes */
+    size_t length;                 /* bytes at data */
+    mipc_trailing_kind_t trailing; /* trailing entries: why */
+    uint8_t length_byte;           /* trailing entries: the field length byte as sent */
+} mipc_field_entry_t;
 
 typedef struct {
     const uint8_t *payload;
     size_t len;
     size_t pos;
     uint8_t set;
-} mip_field_iter_t;
+} mipc_field_iter_t;
 
-/* Private: the trailing entry of mip_field_iter_next (out of line: it is rare). */
-bool mip_field_iter_trailing_(mip_field_iter_t *it, mip_field_entry_t *entry, uint8_t length_byte,
-                              mip_trailing_kind_t why);
+/* Private: the trailing entry of mipc_field_iter_next (out of line: it is rare). */
+bool mipc_field_iter_trailing_(mipc_field_iter_t *it, mipc_field_entry_t *entry, uint8_t length_byte,
+                               mipc_trailing_kind_t why);
 
 /* init and next are inline: a decode loop calls next for every field, and inline the iterator
  * and the entry stay in registers. */
 /** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths).
  * `payload` may be NULL (an empty payload, whatever len says). */
-static inline void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const uint8_t *payload,
-                                       size_t len) {
+static inline void mipc_field_iter_init(mipc_field_iter_t *it, uint8_t set, const uint8_t *payload,
+                                        size_t len) {
     assert(it != NULL);
     it->set = set;
     it->payload = payload;
@@ -64,7 +64,7 @@ static inline void mip_field_iter_init(mip_field_iter_t *it, uint8_t set, const 
 }
 
 /** Next entry: returns true and fills *entry, or false after the last one. */
-static inline bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *entry) {
+static inline bool mipc_field_iter_next(mipc_field_iter_t *it, mipc_field_entry_t *entry) {
     size_t left;
     int data_len;
     size_t total;
@@ -75,32 +75,33 @@ static inline bool mip_field_iter_next(mip_field_iter_t *it, mip_field_entry_t *
     if (left == 0) {
         return false;
     }
-    if (left < MIP_FIELD_HEADER_SIZE) {
-        return mip_field_iter_trailing_(it, entry, 0, MIP_TRAILING_SHORT_HEADER);
+    if (left < MIPC_FIELD_HEADER_SIZE) {
+        return mipc_field_iter_trailing_(it, entry, 0, MIPC_TRAILING_SHORT_HEADER);
     }
     head = it->payload + it->pos;
-    data_len = (int)head[MIP_FIELD_LENGTH_OFFSET] -
-               mip_field_length_adjust(it->set, head[MIP_FIELD_DESCRIPTOR_OFFSET]);
+    data_len = (int)head[MIPC_FIELD_LENGTH_OFFSET] -
+               mipc_field_length_adjust(it->set, head[MIPC_FIELD_DESCRIPTOR_OFFSET]);
     if (data_len < 0) {
-        return mip_field_iter_trailing_(it, entry, head[MIP_FIELD_LENGTH_OFFSET], MIP_TRAILING_SHORT_LENGTH);
+        return mipc_field_iter_trailing_(it, entry, head[MIPC_FIELD_LENGTH_OFFSET],
+                                         MIPC_TRAILING_SHORT_LENGTH);
     }
-    total = MIP_FIELD_HEADER_SIZE + (size_t)data_len;
+    total = MIPC_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {
-        return mip_field_iter_trailing_(it, entry, head[MIP_FIELD_LENGTH_OFFSET], MIP_TRAILING_OVERRUN);
+        return mipc_field_iter_trailing_(it, entry, head[MIPC_FIELD_LENGTH_OFFSET], MIPC_TRAILING_OVERRUN);
     }
-    entry->kind = MIP_ENTRY_FIELD;
+    entry->kind = MIPC_ENTRY_FIELD;
     entry->offset = it->pos;
-    entry->descriptor = head[MIP_FIELD_DESCRIPTOR_OFFSET];
-    entry->data = head + MIP_FIELD_HEADER_SIZE;
+    entry->descriptor = head[MIPC_FIELD_DESCRIPTOR_OFFSET];
+    entry->data = head + MIPC_FIELD_HEADER_SIZE;
     entry->length = (size_t)data_len;
-    entry->trailing = MIP_TRAILING_SHORT_HEADER;
-    entry->length_byte = head[MIP_FIELD_LENGTH_OFFSET];
+    entry->trailing = MIPC_TRAILING_SHORT_HEADER;
+    entry->length_byte = head[MIPC_FIELD_LENGTH_OFFSET];
     it->pos += total;
     return true;
 }
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
-size_t mip_trailing_format(const mip_field_entry_t *entry, char *buf, size_t cap);
+size_t mipc_trailing_format(const mipc_field_entry_t *entry, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

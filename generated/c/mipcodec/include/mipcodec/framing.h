@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_FRAMING_H
-#define MIP_FRAMING_H
+#ifndef MIPC_FRAMING_H
+#define MIPC_FRAMING_H
 
 #include "mipcodec/protocol.h"
 #include "mipcodec/status.h"
@@ -17,32 +17,32 @@ extern "C" {
 #endif
 
 /** The sync sequence as bytes. */
-extern const uint8_t mip_sync[MIP_SYNC_SIZE];
+extern const uint8_t mipc_sync[MIPC_SYNC_SIZE];
 
 /**
  * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
- * out[0..1] receive the checksum in wire order (see MIP_CHECKSUM_SUM1_FIRST).
+ * out[0..1] receive the checksum in wire order (see MIPC_CHECKSUM_SUM1_FIRST).
  */
-void mip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIP_CHECKSUM_SIZE]);
+void mipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIPC_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */
-uint16_t mip_checksum_word(const uint8_t *bytes, size_t len);
-/** True when the MIP_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
-bool mip_checksum_matches(const uint8_t *bytes, size_t len);
+uint16_t mipc_checksum_word(const uint8_t *bytes, size_t len);
+/** True when the MIPC_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
+bool mipc_checksum_matches(const uint8_t *bytes, size_t len);
 
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
-bool mip_packet_valid(const uint8_t *packet, size_t len);
+bool mipc_packet_valid(const uint8_t *packet, size_t len);
 /* The header accessors are inline: a decode loop calls them for every packet. */
-/** Descriptor set of a packet (at least MIP_HEADER_SIZE bytes: check the length first). */
-static inline uint8_t mip_packet_set(const uint8_t *packet) {
-    return packet[MIP_SET_OFFSET];
+/** Descriptor set of a packet (at least MIPC_HEADER_SIZE bytes: check the length first). */
+static inline uint8_t mipc_packet_set(const uint8_t *packet) {
+    return packet[MIPC_SET_OFFSET];
 }
-/** Payload length byte of a packet (at least MIP_HEADER_SIZE bytes). */
-static inline uint8_t mip_packet_payload_length(const uint8_t *packet) {
-    return packet[MIP_LENGTH_OFFSET];
+/** Payload length byte of a packet (at least MIPC_HEADER_SIZE bytes). */
+static inline uint8_t mipc_packet_payload_length(const uint8_t *packet) {
+    return packet[MIPC_LENGTH_OFFSET];
 }
 /** Start of the payload of a packet. */
-static inline const uint8_t *mip_packet_payload(const uint8_t *packet) {
-    return packet + MIP_HEADER_SIZE;
+static inline const uint8_t *mipc_packet_payload(const uint8_t *packet) {
+    return packet + MIPC_HEADER_SIZE;
 }
 
 /**
@@ -53,19 +53,19 @@ typedef struct {
     uint8_t *buf;
     size_t cap;
     size_t len;
-    mip_status_t status;
+    mipc_status_t status;
     uint8_t set;
-} mip_packet_builder_t;
+} mipc_packet_builder_t;
 
 /** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */
-void mip_packet_begin(mip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
+void mipc_packet_begin(mipc_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
 /** Appends a field: header (descriptor, length) and data_len bytes of data. */
-mip_status_t mip_packet_add_field(mip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                  size_t data_len);
+mipc_status_t mipc_packet_add_field(mipc_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                    size_t data_len);
 /** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
-mip_status_t mip_packet_add_raw(mip_packet_builder_t *b, const uint8_t *bytes, size_t len);
+mipc_status_t mipc_packet_add_raw(mipc_packet_builder_t *b, const uint8_t *bytes, size_t len);
 /** Writes the payload length and checksum; *len_out (len_out may be NULL) receives the packet size. */
-mip_status_t mip_packet_finish(mip_packet_builder_t *b, size_t *len_out);
+mipc_status_t mipc_packet_finish(mipc_packet_builder_t *b, size_t *len_out);
 
 #ifdef __cplusplus
 }

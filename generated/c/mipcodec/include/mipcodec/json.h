@@ -7,8 +7,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_JSON_H
-#define MIP_JSON_H
+#ifndef MIPC_JSON_H
+#define MIPC_JSON_H
 
 #include "mipcodec/dispatch.h"
 
@@ -16,38 +16,38 @@
 extern "C" {
 #endif
 
-/** Room for any number mip_json_format_double/float print (with quotes for inf/nan). */
-#define MIP_JSON_NUMBER_MAX 40
+/** Room for any number mipc_json_format_double/float print (with quotes for inf/nan). */
+#define MIPC_JSON_NUMBER_MAX 40
 
 /**
  * A double as canonical JSON: the shortest decimal that round-trips, laid out like Python's
  * repr(float); "inf", "-inf", "nan" or "nan:0x<16 hex digits>" (in quotes) otherwise.
  * Returns the length (like snprintf; buf is NUL-terminated when cap > 0).
  */
-size_t mip_json_format_double(double v, char *buf, size_t cap);
+size_t mipc_json_format_double(double v, char *buf, size_t cap);
 /** A float: widened to double exactly, NaN bits printed with 8 hex digits. */
-size_t mip_json_format_float(float v, char *buf, size_t cap);
+size_t mipc_json_format_float(float v, char *buf, size_t cap);
 
 /** Bytes as a canonical JSON string (byte b -> U+00bb, escaped per section 4), like snprintf. */
-size_t mip_json_format_string(const char *bytes, size_t n, char *buf, size_t cap);
+size_t mipc_json_format_string(const char *bytes, size_t n, char *buf, size_t cap);
 
 /**
  * The JSON line (without newline) of a packet the parser reported: every field decoded, or
  * raw with its error, trailing bytes last. Returns the full length, like snprintf.
  */
-size_t mip_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mip_device_t device,
-                            char *out, size_t cap);
+size_t mipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mipc_device_t device,
+                             char *out, size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
-size_t mip_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
+size_t mipc_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
 
 /**
  * Turns one JSON line (a packet or a skip run, as printed by the decoder) back into bytes:
  * packets are rebuilt from their fields with lengths and checksum recomputed.
- * Returns MIP_OK, MIP_ERR_BUFFER (out too small) or MIP_ERR_JSON with a message in msg.
+ * Returns MIPC_OK, MIPC_ERR_BUFFER (out too small) or MIPC_ERR_JSON with a message in msg.
  * out_len may be NULL; *out_len receives the number of bytes written.
  */
-mip_status_t mip_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
-                                  char *msg, size_t msg_cap);
+mipc_status_t mipc_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
+                                    char *msg, size_t msg_cap);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 /* mipcodec: C99 codec of the MicroStrain MIP protocol. Generated from the spec: do not edit.
  * Everything is bounded by caller buffers; nothing allocates. */
-#ifndef MIP_MIPCODEC_H
-#define MIP_MIPCODEC_H
+#ifndef MIPC_MIPCODEC_H
+#define MIPC_MIPCODEC_H
 
 #include "mipcodec/version.h"
 #include "mipcodec/status.h"

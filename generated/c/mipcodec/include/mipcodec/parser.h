@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_PARSER_H
-#define MIP_PARSER_H
+#ifndef MIPC_PARSER_H
+#define MIPC_PARSER_H
 
 #include "mipcodec/framing.h"
 
@@ -15,37 +15,37 @@ extern "C" {
 #endif
 
 typedef enum {
-    MIP_EVENT_PACKET = 1, /* a packet with a valid checksum */
-    MIP_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
-} mip_event_kind_t;
+    MIPC_EVENT_PACKET = 1, /* a packet with a valid checksum */
+    MIPC_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
+} mipc_event_kind_t;
 
 typedef struct {
-    mip_event_kind_t kind;
+    mipc_event_kind_t kind;
     uint64_t offset;       /* stream offset of the packet or of the first skipped byte */
     uint64_t length;       /* packet size, or number of skipped bytes */
     const uint8_t *packet; /* the packet bytes (valid during the callback); NULL for skips */
-} mip_event_t;
+} mipc_event_t;
 
-typedef void (*mip_event_fn)(void *ctx, const mip_event_t *event);
+typedef void (*mipc_event_fn)(void *ctx, const mipc_event_t *event);
 
 /**
  * Fixed-size state: at most one maximum packet is buffered. Events do not depend on how the
  * input is split into chunks; a skip run is reported just before the next packet or at flush.
  */
 typedef struct {
-    uint8_t buf[MIP_MAX_PACKET];
+    uint8_t buf[MIPC_MAX_PACKET];
     size_t used;          /* bytes in buf */
     uint64_t base;        /* stream offset of buf[0] */
     uint64_t skip_offset; /* pending skip run */
     uint64_t skip_count;
-} mip_parser_t;
+} mipc_parser_t;
 
-void mip_parser_init(mip_parser_t *parser);
+void mipc_parser_init(mipc_parser_t *parser);
 /** Feeds a chunk of the stream; events are delivered through fn (not NULL) with ctx (may be NULL). */
-void mip_parser_feed(mip_parser_t *parser, const uint8_t *data, size_t len, mip_event_fn fn, void *ctx);
+void mipc_parser_feed(mipc_parser_t *parser, const uint8_t *data, size_t len, mipc_event_fn fn, void *ctx);
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
-void mip_parser_flush(mip_parser_t *parser, mip_event_fn fn, void *ctx);
+void mipc_parser_flush(mipc_parser_t *parser, mipc_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

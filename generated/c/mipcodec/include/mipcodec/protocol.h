@@ -1,67 +1,67 @@
 /* Constants of the MicroStrain MIP protocol, rendered from protocols[] of the IR: the only protocol
  * input of the runtime (the files copied from generator/targets/c/runtime/).
  * Generated: do not edit. */
-#ifndef MIP_PROTOCOL_H
-#define MIP_PROTOCOL_H
+#ifndef MIPC_PROTOCOL_H
+#define MIPC_PROTOCOL_H
 
 #include <stdint.h>
 
 /* Byte order of multi-byte values in field data (byte_order: big). */
-#define MIP_LITTLE_ENDIAN 0
+#define MIPC_LITTLE_ENDIAN 0
 
 /* Sync sequence that starts every packet. */
-#define MIP_SYNC_SIZE 2
-#define MIP_SYNC_0 0x75
-#define MIP_SYNC_1 0x65
-#define MIP_SYNC_BYTES {0x75, 0x65}
+#define MIPC_SYNC_SIZE 2
+#define MIPC_SYNC_0 0x75
+#define MIPC_SYNC_1 0x65
+#define MIPC_SYNC_BYTES {0x75, 0x65}
 /* Packet header: sync bytes, then set, payload_length. */
-#define MIP_HEADER_SIZE 4
-#define MIP_SET_OFFSET 2
-#define MIP_LENGTH_OFFSET 3
-#define MIP_MAX_PAYLOAD 255
-#define MIP_CHECKSUM_SIZE 2
+#define MIPC_HEADER_SIZE 4
+#define MIPC_SET_OFFSET 2
+#define MIPC_LENGTH_OFFSET 3
+#define MIPC_MAX_PAYLOAD 255
+#define MIPC_CHECKSUM_SIZE 2
 /* Checksum bytes in wire order: sum1, sum2. */
-#define MIP_CHECKSUM_SUM1_FIRST 1
+#define MIPC_CHECKSUM_SUM1_FIRST 1
 /* Largest packet: header, maximum payload and checksum. */
-#define MIP_MAX_PACKET 261
+#define MIPC_MAX_PACKET 261
 /* Field header: length, descriptor. */
-#define MIP_FIELD_HEADER_SIZE 2
-#define MIP_FIELD_LENGTH_OFFSET 0
-#define MIP_FIELD_DESCRIPTOR_OFFSET 1
+#define MIPC_FIELD_HEADER_SIZE 2
+#define MIPC_FIELD_LENGTH_OFFSET 0
+#define MIPC_FIELD_DESCRIPTOR_OFFSET 1
 /* The field length byte counts the field header and the data:
- * data length = length byte - MIP_FIELD_LENGTH_ADJUST. */
-#define MIP_FIELD_LENGTH_ADJUST 2
+ * data length = length byte - MIPC_FIELD_LENGTH_ADJUST. */
+#define MIPC_FIELD_LENGTH_ADJUST 2
 /*
- * Length byte - data length of field (set, descriptor): MIP_FIELD_LENGTH_ADJUST, except for the
+ * Length byte - data length of field (set, descriptor): MIPC_FIELD_LENGTH_ADJUST, except for the
  * fields the spec marks with length_byte_adjust (0 in this protocol).
  */
-static inline int mip_field_length_adjust(uint8_t set, uint8_t descriptor) {
+static inline int mipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
     (void)set;
     (void)descriptor;
-    return MIP_FIELD_LENGTH_ADJUST;
+    return MIPC_FIELD_LENGTH_ADJUST;
 }
 /* Largest data a single field can carry. */
-#define MIP_MAX_FIELD_DATA 253
+#define MIPC_MAX_FIELD_DATA 253
 
 /* Samples (docs/conformance.md section 6). Data sets that group continuation packets (one
- * tracker slot each; MIP_SAMPLE_DATA_SET_COUNT of them, the array never empty). */
-#define MIP_SAMPLE_DATA_SET_COUNT 8
-#define MIP_SAMPLE_SETS 8
-#define MIP_SAMPLE_DATA_SETS {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0}
-/* Shared descriptors: from MIP_SAMPLE_FIRST_SHARED up (256: none). */
-#define MIP_SAMPLE_FIRST_SHARED 0xD0
+ * tracker slot each; MIPC_SAMPLE_DATA_SET_COUNT of them, the array never empty). */
+#define MIPC_SAMPLE_DATA_SET_COUNT 8
+#define MIPC_SAMPLE_SETS 8
+#define MIPC_SAMPLE_DATA_SETS {0x80, 0x81, 0x82, 0x91, 0x92, 0x93, 0x94, 0xA0}
+/* Shared descriptors: from MIPC_SAMPLE_FIRST_SHARED up (256: none). */
+#define MIPC_SAMPLE_FIRST_SHARED 0xD0
 /* Shared timestamp fields (descriptor, data size) that make up the sample key. */
-#define MIP_SAMPLE_TIMESTAMPS 3
-#define MIP_SAMPLE_STAMP_DESCRIPTORS {0xD3, 0xD5, 0xD7}
-#define MIP_SAMPLE_STAMP_SIZES {12, 8, 10}
+#define MIPC_SAMPLE_TIMESTAMPS 3
+#define MIPC_SAMPLE_STAMP_DESCRIPTORS {0xD3, 0xD5, 0xD7}
+#define MIPC_SAMPLE_STAMP_SIZES {12, 8, 10}
 /* Largest sample key: field header + data of every shared timestamp field. */
-#define MIP_SAMPLE_KEY_MAX 36
+#define MIPC_SAMPLE_KEY_MAX 36
 
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
-#define MIP_PATH_MAX_DEPTH 3
-/** Enough room for any message mip_decode_error_format() can produce. */
-#define MIP_ERROR_MESSAGE_MAX 325
+#define MIPC_PATH_MAX_DEPTH 3
+/** Enough room for any message mipc_decode_error_format() can produce. */
+#define MIPC_ERROR_MESSAGE_MAX 325
 /* Longest field name or device id, and a NUL. */
-#define MIP_NAME_MAX 48
+#define MIPC_NAME_MAX 48
 
 #endif

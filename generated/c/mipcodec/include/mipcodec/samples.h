@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_SAMPLES_H
-#define MIP_SAMPLES_H
+#ifndef MIPC_SAMPLES_H
+#define MIPC_SAMPLES_H
 
 #include "mipcodec/framing.h"
 
@@ -19,33 +19,33 @@ typedef struct {
     uint64_t number; /* sample number of the last packet of this set */
     uint8_t key_len; /* 0: that packet had no key */
     uint8_t used;    /* a packet of this set was seen */
-    uint8_t key[MIP_SAMPLE_KEY_MAX];
-} mip_sample_slot_t;
+    uint8_t key[MIPC_SAMPLE_KEY_MAX];
+} mipc_sample_slot_t;
 
 /** Fixed-size state (no allocation): the key and sample number of the last packet of each set. */
 typedef struct {
-    mip_sample_slot_t slots[MIP_SAMPLE_SETS];
+    mipc_sample_slot_t slots[MIPC_SAMPLE_SETS];
     uint64_t next; /* number of the next new sample */
-} mip_sample_tracker_t;
+} mipc_sample_tracker_t;
 
 typedef struct {
     uint64_t number;      /* the sample the packet belongs to (numbered from 0 in stream order) */
     bool continues;       /* true: a continuation of an earlier packet's sample */
     size_t shared_prefix; /* payload bytes of the leading shared run (copies, in a continuation) */
-} mip_sample_info_t;
+} mipc_sample_info_t;
 
-void mip_sample_tracker_init(mip_sample_tracker_t *tracker);
+void mipc_sample_tracker_init(mipc_sample_tracker_t *tracker);
 /**
  * Places one complete packet (as delivered by the parser). Returns true and fills *info for a
  * packet of a data set; false for other packets (command sets, unknown sets, a malformed buffer).
  */
-bool mip_sample_tracker_feed(mip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                             mip_sample_info_t *info);
+bool mipc_sample_tracker_feed(mipc_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                              mipc_sample_info_t *info);
 /**
- * The key of a complete packet into key[MIP_SAMPLE_KEY_MAX]; returns its length (0: no key).
+ * The key of a complete packet into key[MIPC_SAMPLE_KEY_MAX]; returns its length (0: no key).
  * *shared_prefix (if not NULL) receives the payload bytes of the leading shared run.
  */
-size_t mip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
+size_t mipc_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
 
 #ifdef __cplusplus
 }

@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MIP_STATUS_H
-#define MIP_STATUS_H
+#ifndef MIPC_STATUS_H
+#define MIPC_STATUS_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -20,40 +20,40 @@ extern "C" {
 
 /** Result of every encode/decode/dispatch call. */
 typedef enum {
-    MIP_OK = 0,
-    MIP_ERR_DECODE = 1,      /* field data does not match the layout (see mip_decode_error_t) */
-    MIP_ERR_BUFFER = 2,      /* the output buffer is too small */
-    MIP_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
-    MIP_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
-    MIP_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
-    MIP_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
-    MIP_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
-} mip_status_t;
+    MIPC_OK = 0,
+    MIPC_ERR_DECODE = 1,      /* field data does not match the layout (see mipc_decode_error_t) */
+    MIPC_ERR_BUFFER = 2,      /* the output buffer is too small */
+    MIPC_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
+    MIPC_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
+    MIPC_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
+    MIPC_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
+    MIPC_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
+} mipc_status_t;
 
 /** Short English text of a status code. */
-const char *mip_status_text(mip_status_t status);
+const char *mipc_status_text(mipc_status_t status);
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {
     const char *name;
     size_t index;
-} mip_path_segment_t;
+} mipc_path_segment_t;
 
 /** Which of the messages of docs/conformance.md section 3 a decode error is. */
 typedef enum {
-    MIP_DECODE_NONE = 0,
-    MIP_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
-    MIP_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
-    MIP_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
-    MIP_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
-    MIP_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
-    MIP_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
-} mip_decode_error_kind_t;
+    MIPC_DECODE_NONE = 0,
+    MIPC_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
+    MIPC_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
+    MIPC_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
+    MIPC_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
+    MIPC_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
+    MIPC_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
+} mipc_decode_error_kind_t;
 
 /** Everything needed to print the exact message of a decode error. */
 typedef struct {
-    mip_decode_error_kind_t kind;
-    mip_path_segment_t path[MIP_PATH_MAX_DEPTH];
+    mipc_decode_error_kind_t kind;
+    mipc_path_segment_t path[MIPC_PATH_MAX_DEPTH];
     size_t depth;      /* number of path segments */
     size_t offset;     /* offset within the field data */
     size_t need;       /* bytes the value needs / element size */
@@ -62,13 +62,13 @@ typedef struct {
     uint64_t max;      /* maximum element count */
     uint64_t value;    /* invalid bool / selector value (two's complement when value_signed) */
     bool value_signed; /* value is an int64_t */
-} mip_decode_error_t;
+} mipc_decode_error_t;
 
 /**
  * Writes the message of a decode error into buf (always NUL-terminated when cap > 0).
  * Returns the length the full message has (like snprintf).
  */
-size_t mip_decode_error_format(const mip_decode_error_t *err, char *buf, size_t cap);
+size_t mipc_decode_error_format(const mipc_decode_error_t *err, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

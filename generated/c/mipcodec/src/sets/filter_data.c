@@ -6,59 +6,59 @@
 #include <assert.h>
 #include <string.h>
 
-/* ---- mip_filter_data_llh_position_t */
+/* ---- mipc_filter_data_llh_position_t */
 
-static int mip_filter_data_llh_position_read(mip_reader_t *r, mip_filter_data_llh_position_t *out) {
-    mip_rd_push(r, "latitude");
-    if (mip_rd_f64(r, &out->latitude)) {
+static int mipc_filter_data_llh_position_read(mipc_reader_t *r, mipc_filter_data_llh_position_t *out) {
+    mipc_rd_push(r, "latitude");
+    if (mipc_rd_f64(r, &out->latitude)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "longitude");
-    if (mip_rd_f64(r, &out->longitude)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "longitude");
+    if (mipc_rd_f64(r, &out->longitude)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "ellipsoid_height");
-    if (mip_rd_f64(r, &out->ellipsoid_height)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "ellipsoid_height");
+    if (mipc_rd_f64(r, &out->ellipsoid_height)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_filter_data_llh_position_write(mip_writer_t *w,
-                                                       const mip_filter_data_llh_position_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f64(w, &in->latitude)) != MIP_OK) {
+static mipc_status_t mipc_filter_data_llh_position_write(mipc_writer_t *w,
+                                                         const mipc_filter_data_llh_position_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f64(w, &in->latitude)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_f64(w, &in->longitude)) != MIP_OK) {
+    if ((st = mipc_wr_f64(w, &in->longitude)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_f64(w, &in->ellipsoid_height)) != MIP_OK) {
+    if ((st = mipc_wr_f64(w, &in->ellipsoid_height)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_llh_position_encode(const mip_filter_data_llh_position_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_llh_position_encode(const mipc_filter_data_llh_position_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_llh_position_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_llh_position_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -66,159 +66,89 @@ mip_status_t mip_filter_data_llh_position_encode(const mip_filter_data_llh_posit
 
 /* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_llh_position_load(const uint8_t *d, mip_filter_data_llh_position_t *out) {
-    out->latitude = mip_ld_f64(d + 0);
-    out->longitude = mip_ld_f64(d + 8);
-    out->ellipsoid_height = mip_ld_f64(d + 16);
-    out->valid_flags = mip_ld_u16(d + 24);
+static int mipc_filter_data_llh_position_load(const uint8_t *d, mipc_filter_data_llh_position_t *out) {
+    out->latitude = mipc_ld_f64(d + 0);
+    out->longitude = mipc_ld_f64(d + 8);
+    out->ellipsoid_height = mipc_ld_f64(d + 16);
+    out->valid_flags = mipc_ld_u16(d + 24);
     return 0;
 }
 
 /* The general reader: lengths other than 26, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_decode_read(const uint8_t *data, size_t len,
-                                                                          mip_filter_data_llh_position_t *out,
-                                                                          mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_llh_position_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_llh_position_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_llh_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_llh_position_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_llh_position_t *out,
-                                                 mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_llh_position_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_llh_position_t *out,
+                                                   mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 26 && mip_filter_data_llh_position_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 26 && mipc_filter_data_llh_position_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_llh_position_decode_read(data, len, out, err);
+    return mipc_filter_data_llh_position_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_llh_position_to_json(mip_jw_t *w, const mip_filter_data_llh_position_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "latitude");
-    mip_jw_f64(w, &in->latitude);
-    mip_jw_key(w, &first, "longitude");
-    mip_jw_f64(w, &in->longitude);
-    mip_jw_key(w, &first, "ellipsoid_height");
-    mip_jw_f64(w, &in->ellipsoid_height);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
+/* ---- mipc_filter_data_ned_velocity_t */
+
+static int mipc_filter_data_ned_velocity_read(mipc_reader_t *r, mipc_filter_data_ned_velocity_t *out) {
+    mipc_rd_push(r, "north");
+    if (mipc_rd_f32(r, &out->north)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "east");
+    if (mipc_rd_f32(r, &out->east)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "down");
+    if (mipc_rd_f32(r, &out->down)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_filter_data_llh_position_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_llh_position_t *out) {
-    static const char *const keys[] = {"latitude", "longitude", "ellipsoid_height", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "latitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"latitude\"");
-    }
-    {
-        mip_jr_push(jr, "latitude");
-        if (mip_jr_f64(jr, vp, &out->latitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "longitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"longitude\"");
-    }
-    {
-        mip_jr_push(jr, "longitude");
-        if (mip_jr_f64(jr, vp, &out->longitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "ellipsoid_height", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"ellipsoid_height\"");
-    }
-    {
-        mip_jr_push(jr, "ellipsoid_height");
-        if (mip_jr_f64(jr, vp, &out->ellipsoid_height)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ned_velocity_t */
-
-static int mip_filter_data_ned_velocity_read(mip_reader_t *r, mip_filter_data_ned_velocity_t *out) {
-    mip_rd_push(r, "north");
-    if (mip_rd_f32(r, &out->north)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "east");
-    if (mip_rd_f32(r, &out->east)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "down");
-    if (mip_rd_f32(r, &out->down)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_ned_velocity_write(mip_writer_t *w,
-                                                       const mip_filter_data_ned_velocity_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->north)) != MIP_OK) {
+static mipc_status_t mipc_filter_data_ned_velocity_write(mipc_writer_t *w,
+                                                         const mipc_filter_data_ned_velocity_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->north)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_f32(w, &in->east)) != MIP_OK) {
+    if ((st = mipc_wr_f32(w, &in->east)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_f32(w, &in->down)) != MIP_OK) {
+    if ((st = mipc_wr_f32(w, &in->down)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_ned_velocity_encode(const mip_filter_data_ned_velocity_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_ned_velocity_encode(const mipc_filter_data_ned_velocity_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ned_velocity_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ned_velocity_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -226,151 +156,82 @@ mip_status_t mip_filter_data_ned_velocity_encode(const mip_filter_data_ned_veloc
 
 /* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_ned_velocity_load(const uint8_t *d, mip_filter_data_ned_velocity_t *out) {
-    out->north = mip_ld_f32(d + 0);
-    out->east = mip_ld_f32(d + 4);
-    out->down = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
+static int mipc_filter_data_ned_velocity_load(const uint8_t *d, mipc_filter_data_ned_velocity_t *out) {
+    out->north = mipc_ld_f32(d + 0);
+    out->east = mipc_ld_f32(d + 4);
+    out->down = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
 /* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_decode_read(const uint8_t *data, size_t len,
-                                                                          mip_filter_data_ned_velocity_t *out,
-                                                                          mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ned_velocity_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ned_velocity_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_ned_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_ned_velocity_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ned_velocity_t *out,
-                                                 mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_ned_velocity_t *out,
+                                                   mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 14 && mip_filter_data_ned_velocity_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 14 && mipc_filter_data_ned_velocity_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_ned_velocity_decode_read(data, len, out, err);
+    return mipc_filter_data_ned_velocity_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_ned_velocity_to_json(mip_jw_t *w, const mip_filter_data_ned_velocity_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "north");
-    mip_jw_f32(w, &in->north);
-    mip_jw_key(w, &first, "east");
-    mip_jw_f32(w, &in->east);
-    mip_jw_key(w, &first, "down");
-    mip_jw_f32(w, &in->down);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_attitude_quaternion_t */
 
-int mip_filter_data_ned_velocity_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ned_velocity_t *out) {
-    static const char *const keys[] = {"north", "east", "down", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
+static int mipc_filter_data_attitude_quaternion_read(mipc_reader_t *r,
+                                                     mipc_filter_data_attitude_quaternion_t *out) {
+    size_t i;
+    mipc_rd_push(r, "q");
+    for (i = 0; i < 4; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->q[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "north", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"north\"");
-    }
-    {
-        mip_jr_push(jr, "north");
-        if (mip_jr_f32(jr, vp, &out->north)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "east", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"east\"");
-    }
-    {
-        mip_jr_push(jr, "east");
-        if (mip_jr_f32(jr, vp, &out->east)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "down", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"down\"");
-    }
-    {
-        mip_jr_push(jr, "down");
-        if (mip_jr_f32(jr, vp, &out->down)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_attitude_quaternion_t */
-
-static int mip_filter_data_attitude_quaternion_read(mip_reader_t *r,
-                                                    mip_filter_data_attitude_quaternion_t *out) {
-    size_t i;
-    mip_rd_push(r, "q");
-    for (i = 0; i < 4; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->q[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_attitude_quaternion_write(mip_writer_t *w, const mip_filter_data_attitude_quaternion_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_attitude_quaternion_write(mipc_writer_t *w,
+                                           const mipc_filter_data_attitude_quaternion_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 4; i++) {
-        if ((st = mip_wr_f32(w, &in->q[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->q[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_attitude_quaternion_encode(const mip_filter_data_attitude_quaternion_t *value,
-                                                        uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_attitude_quaternion_encode(const mipc_filter_data_attitude_quaternion_t *value,
+                                                          uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_attitude_quaternion_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_attitude_quaternion_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -378,156 +239,82 @@ mip_status_t mip_filter_data_attitude_quaternion_encode(const mip_filter_data_at
 
 /* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_attitude_quaternion_load(const uint8_t *d,
-                                                    mip_filter_data_attitude_quaternion_t *out) {
-    out->q[0] = mip_ld_f32(d + 0);
-    out->q[1] = mip_ld_f32(d + 4);
-    out->q[2] = mip_ld_f32(d + 8);
-    out->q[3] = mip_ld_f32(d + 12);
-    out->valid_flags = mip_ld_u16(d + 16);
+static int mipc_filter_data_attitude_quaternion_load(const uint8_t *d,
+                                                     mipc_filter_data_attitude_quaternion_t *out) {
+    out->q[0] = mipc_ld_f32(d + 0);
+    out->q[1] = mipc_ld_f32(d + 4);
+    out->q[2] = mipc_ld_f32(d + 8);
+    out->q[3] = mipc_ld_f32(d + 12);
+    out->valid_flags = mipc_ld_u16(d + 16);
     return 0;
 }
 
 /* The general reader: lengths other than 18, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_attitude_quaternion_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_attitude_quaternion_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_attitude_quaternion_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_attitude_quaternion_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_attitude_quaternion_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_attitude_quaternion_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_attitude_quaternion_t *out,
-                                                        mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
+                                                          mipc_filter_data_attitude_quaternion_t *out,
+                                                          mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 18 && mip_filter_data_attitude_quaternion_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 18 && mipc_filter_data_attitude_quaternion_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_attitude_quaternion_decode_read(data, len, out, err);
+    return mipc_filter_data_attitude_quaternion_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_attitude_quaternion_to_json(mip_jw_t *w,
-                                                 const mip_filter_data_attitude_quaternion_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "q");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 4; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->q[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_attitude_dcm_t */
 
-int mip_filter_data_attitude_quaternion_from_json(mip_jr_t *jr, size_t pos,
-                                                  mip_filter_data_attitude_quaternion_t *out) {
-    static const char *const keys[] = {"q", "valid_flags"};
-    size_t vp = 0;
-    int found;
+static int mipc_filter_data_attitude_dcm_read(mipc_reader_t *r, mipc_filter_data_attitude_dcm_t *out) {
     size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+    mipc_rd_push(r, "dcm");
+    for (i = 0; i < 9; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->dcm[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "q", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"q\"");
-    }
-    {
-        mip_jr_push(jr, "q");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 4) {
-                return mip_jr_fail(jr, "more than 4 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->q[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 4) {
-            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_attitude_dcm_t */
-
-static int mip_filter_data_attitude_dcm_read(mip_reader_t *r, mip_filter_data_attitude_dcm_t *out) {
-    size_t i;
-    mip_rd_push(r, "dcm");
-    for (i = 0; i < 9; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->dcm[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_attitude_dcm_write(mip_writer_t *w,
-                                                       const mip_filter_data_attitude_dcm_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_filter_data_attitude_dcm_write(mipc_writer_t *w,
+                                                         const mipc_filter_data_attitude_dcm_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 9; i++) {
-        if ((st = mip_wr_f32(w, &in->dcm[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->dcm[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_attitude_dcm_encode(const mip_filter_data_attitude_dcm_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_attitude_dcm_encode(const mipc_filter_data_attitude_dcm_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_attitude_dcm_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_attitude_dcm_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -535,168 +322,257 @@ mip_status_t mip_filter_data_attitude_dcm_encode(const mip_filter_data_attitude_
 
 /* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_attitude_dcm_load(const uint8_t *d, mip_filter_data_attitude_dcm_t *out) {
-    out->dcm[0] = mip_ld_f32(d + 0);
-    out->dcm[1] = mip_ld_f32(d + 4);
-    out->dcm[2] = mip_ld_f32(d + 8);
-    out->dcm[3] = mip_ld_f32(d + 12);
-    out->dcm[4] = mip_ld_f32(d + 16);
-    out->dcm[5] = mip_ld_f32(d + 20);
-    out->dcm[6] = mip_ld_f32(d + 24);
-    out->dcm[7] = mip_ld_f32(d + 28);
-    out->dcm[8] = mip_ld_f32(d + 32);
-    out->valid_flags = mip_ld_u16(d + 36);
+static int mipc_filter_data_attitude_dcm_load(const uint8_t *d, mipc_filter_data_attitude_dcm_t *out) {
+    out->dcm[0] = mipc_ld_f32(d + 0);
+    out->dcm[1] = mipc_ld_f32(d + 4);
+    out->dcm[2] = mipc_ld_f32(d + 8);
+    out->dcm[3] = mipc_ld_f32(d + 12);
+    out->dcm[4] = mipc_ld_f32(d + 16);
+    out->dcm[5] = mipc_ld_f32(d + 20);
+    out->dcm[6] = mipc_ld_f32(d + 24);
+    out->dcm[7] = mipc_ld_f32(d + 28);
+    out->dcm[8] = mipc_ld_f32(d + 32);
+    out->valid_flags = mipc_ld_u16(d + 36);
     return 0;
 }
 
 /* The general reader: lengths other than 38, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_attitude_dcm_decode_read(const uint8_t *data, size_t len,
-                                                                          mip_filter_data_attitude_dcm_t *out,
-                                                                          mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_attitude_dcm_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_attitude_dcm_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_attitude_dcm_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_attitude_dcm_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_attitude_dcm_t *out,
-                                                 mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_attitude_dcm_t *out,
+                                                   mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 38 && mip_filter_data_attitude_dcm_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 38 && mipc_filter_data_attitude_dcm_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_attitude_dcm_decode_read(data, len, out, err);
+    return mipc_filter_data_attitude_dcm_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_attitude_dcm_to_json(mip_jw_t *w, const mip_filter_data_attitude_dcm_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "dcm");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 9; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->dcm[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_euler_angles_t */
 
-int mip_filter_data_attitude_dcm_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_attitude_dcm_t *out) {
-    static const char *const keys[] = {"dcm", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+static int mipc_filter_data_euler_angles_read(mipc_reader_t *r, mipc_filter_data_euler_angles_t *out) {
+    mipc_rd_push(r, "roll");
+    if (mipc_rd_f32(r, &out->roll)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "dcm", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"dcm\"");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "pitch");
+    if (mipc_rd_f32(r, &out->pitch)) {
+        return -1;
     }
-    {
-        mip_jr_push(jr, "dcm");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 9) {
-                return mip_jr_fail(jr, "more than 9 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->dcm[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 9) {
-            return mip_jr_fail(jr, "expected 9 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "yaw");
+    if (mipc_rd_f32(r, &out->yaw)) {
+        return -1;
     }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
     }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_euler_angles_write(mipc_writer_t *w,
+                                                         const mipc_filter_data_euler_angles_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->roll)) != MIPC_OK) {
+        return st;
     }
+    if ((st = mipc_wr_f32(w, &in->pitch)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->yaw)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_euler_angles_encode(const mipc_filter_data_euler_angles_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_euler_angles_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_euler_angles_load(const uint8_t *d, mipc_filter_data_euler_angles_t *out) {
+    out->roll = mipc_ld_f32(d + 0);
+    out->pitch = mipc_ld_f32(d + 4);
+    out->yaw = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
-/* ---- mip_filter_data_euler_angles_t */
-
-static int mip_filter_data_euler_angles_read(mip_reader_t *r, mip_filter_data_euler_angles_t *out) {
-    mip_rd_push(r, "roll");
-    if (mip_rd_f32(r, &out->roll)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "pitch");
-    if (mip_rd_f32(r, &out->pitch)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "yaw");
-    if (mip_rd_f32(r, &out->yaw)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_euler_angles_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_euler_angles_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_euler_angles_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-static mip_status_t mip_filter_data_euler_angles_write(mip_writer_t *w,
-                                                       const mip_filter_data_euler_angles_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->roll)) != MIP_OK) {
-        return st;
+mipc_status_t mipc_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_euler_angles_t *out,
+                                                   mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_euler_angles_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    if ((st = mip_wr_f32(w, &in->pitch)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->yaw)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
+    return mipc_filter_data_euler_angles_decode_read(data, len, out, err);
 }
 
-mip_status_t mip_filter_data_euler_angles_encode(const mip_filter_data_euler_angles_t *value, uint8_t *buf,
+/* ---- mipc_filter_data_gyro_bias_t */
+
+static int mipc_filter_data_gyro_bias_read(mipc_reader_t *r, mipc_filter_data_gyro_bias_t *out) {
+    size_t i;
+    mipc_rd_push(r, "bias");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->bias[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_gyro_bias_write(mipc_writer_t *w,
+                                                      const mipc_filter_data_gyro_bias_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->bias[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gyro_bias_encode(const mipc_filter_data_gyro_bias_t *value, uint8_t *buf,
+                                                size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gyro_bias_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_gyro_bias_load(const uint8_t *d, mipc_filter_data_gyro_bias_t *out) {
+    out->bias[0] = mipc_ld_f32(d + 0);
+    out->bias[1] = mipc_ld_f32(d + 4);
+    out->bias[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gyro_bias_decode_read(const uint8_t *data, size_t len,
+                                                                          mipc_filter_data_gyro_bias_t *out,
+                                                                          mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gyro_bias_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
+                                                mipc_filter_data_gyro_bias_t *out, mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_gyro_bias_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gyro_bias_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_accel_bias_t */
+
+static int mipc_filter_data_accel_bias_read(mipc_reader_t *r, mipc_filter_data_accel_bias_t *out) {
+    size_t i;
+    mipc_rd_push(r, "bias");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->bias[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_accel_bias_write(mipc_writer_t *w,
+                                                       const mipc_filter_data_accel_bias_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->bias[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_accel_bias_encode(const mipc_filter_data_accel_bias_t *value, uint8_t *buf,
                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_euler_angles_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_accel_bias_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -704,1115 +580,372 @@ mip_status_t mip_filter_data_euler_angles_encode(const mip_filter_data_euler_ang
 
 /* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_euler_angles_load(const uint8_t *d, mip_filter_data_euler_angles_t *out) {
-    out->roll = mip_ld_f32(d + 0);
-    out->pitch = mip_ld_f32(d + 4);
-    out->yaw = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
+static int mipc_filter_data_accel_bias_load(const uint8_t *d, mipc_filter_data_accel_bias_t *out) {
+    out->bias[0] = mipc_ld_f32(d + 0);
+    out->bias[1] = mipc_ld_f32(d + 4);
+    out->bias[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
 /* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_decode_read(const uint8_t *data, size_t len,
-                                                                          mip_filter_data_euler_angles_t *out,
-                                                                          mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_accel_bias_decode_read(const uint8_t *data, size_t len,
+                                                                           mipc_filter_data_accel_bias_t *out,
+                                                                           mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_euler_angles_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_accel_bias_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_euler_angles_t *out,
-                                                 mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_accel_bias_t *out,
+                                                 mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 14 && mip_filter_data_euler_angles_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 14 && mipc_filter_data_accel_bias_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_euler_angles_decode_read(data, len, out, err);
+    return mipc_filter_data_accel_bias_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_euler_angles_to_json(mip_jw_t *w, const mip_filter_data_euler_angles_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "roll");
-    mip_jw_f32(w, &in->roll);
-    mip_jw_key(w, &first, "pitch");
-    mip_jw_f32(w, &in->pitch);
-    mip_jw_key(w, &first, "yaw");
-    mip_jw_f32(w, &in->yaw);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_llh_position_uncertainty_t */
 
-int mip_filter_data_euler_angles_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_euler_angles_t *out) {
-    static const char *const keys[] = {"roll", "pitch", "yaw", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
+static int mipc_filter_data_llh_position_uncertainty_read(mipc_reader_t *r,
+                                                          mipc_filter_data_llh_position_uncertainty_t *out) {
+    mipc_rd_push(r, "north");
+    if (mipc_rd_f32(r, &out->north)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "roll", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"roll\"");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "east");
+    if (mipc_rd_f32(r, &out->east)) {
+        return -1;
     }
-    {
-        mip_jr_push(jr, "roll");
-        if (mip_jr_f32(jr, vp, &out->roll)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "down");
+    if (mipc_rd_f32(r, &out->down)) {
+        return -1;
     }
-    found = mip_jr_get(jr, pos, "pitch", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"pitch\"");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
     }
-    {
-        mip_jr_push(jr, "pitch");
-        if (mip_jr_f32(jr, vp, &out->pitch)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_llh_position_uncertainty_write(mipc_writer_t *w,
+                                                const mipc_filter_data_llh_position_uncertainty_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->north)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "yaw", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"yaw\"");
+    if ((st = mipc_wr_f32(w, &in->east)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "yaw");
-        if (mip_jr_f32(jr, vp, &out->yaw)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_f32(w, &in->down)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_llh_position_uncertainty_encode(const mipc_filter_data_llh_position_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_llh_position_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
     }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_llh_position_uncertainty_load(const uint8_t *d,
+                                                          mipc_filter_data_llh_position_uncertainty_t *out) {
+    out->north = mipc_ld_f32(d + 0);
+    out->east = mipc_ld_f32(d + 4);
+    out->down = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
-/* ---- mip_filter_data_gyro_bias_t */
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_llh_position_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_llh_position_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_llh_position_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
 
-static int mip_filter_data_gyro_bias_read(mip_reader_t *r, mip_filter_data_gyro_bias_t *out) {
+mipc_status_t
+mipc_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_llh_position_uncertainty_t *out,
+                                                 mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_llh_position_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_llh_position_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ned_velocity_uncertainty_t */
+
+static int mipc_filter_data_ned_velocity_uncertainty_read(mipc_reader_t *r,
+                                                          mipc_filter_data_ned_velocity_uncertainty_t *out) {
+    mipc_rd_push(r, "north");
+    if (mipc_rd_f32(r, &out->north)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "east");
+    if (mipc_rd_f32(r, &out->east)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "down");
+    if (mipc_rd_f32(r, &out->down)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_ned_velocity_uncertainty_write(mipc_writer_t *w,
+                                                const mipc_filter_data_ned_velocity_uncertainty_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->north)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->east)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->down)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ned_velocity_uncertainty_encode(const mipc_filter_data_ned_velocity_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ned_velocity_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_ned_velocity_uncertainty_load(const uint8_t *d,
+                                                          mipc_filter_data_ned_velocity_uncertainty_t *out) {
+    out->north = mipc_ld_f32(d + 0);
+    out->east = mipc_ld_f32(d + 4);
+    out->down = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ned_velocity_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ned_velocity_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ned_velocity_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_ned_velocity_uncertainty_t *out,
+                                                 mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ned_velocity_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_euler_angles_uncertainty_t */
+
+static int mipc_filter_data_euler_angles_uncertainty_read(mipc_reader_t *r,
+                                                          mipc_filter_data_euler_angles_uncertainty_t *out) {
+    mipc_rd_push(r, "roll");
+    if (mipc_rd_f32(r, &out->roll)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "pitch");
+    if (mipc_rd_f32(r, &out->pitch)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "yaw");
+    if (mipc_rd_f32(r, &out->yaw)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_euler_angles_uncertainty_write(mipc_writer_t *w,
+                                                const mipc_filter_data_euler_angles_uncertainty_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->roll)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->pitch)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->yaw)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_euler_angles_uncertainty_encode(const mipc_filter_data_euler_angles_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_euler_angles_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_euler_angles_uncertainty_load(const uint8_t *d,
+                                                          mipc_filter_data_euler_angles_uncertainty_t *out) {
+    out->roll = mipc_ld_f32(d + 0);
+    out->pitch = mipc_ld_f32(d + 4);
+    out->yaw = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_euler_angles_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_euler_angles_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_euler_angles_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_euler_angles_uncertainty_t *out,
+                                                 mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_euler_angles_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_gyro_bias_uncertainty_t */
+
+static int mipc_filter_data_gyro_bias_uncertainty_read(mipc_reader_t *r,
+                                                       mipc_filter_data_gyro_bias_uncertainty_t *out) {
     size_t i;
-    mip_rd_push(r, "bias");
+    mipc_rd_push(r, "bias_uncertainty");
     for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->bias[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->bias_uncertainty[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_filter_data_gyro_bias_write(mip_writer_t *w, const mip_filter_data_gyro_bias_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_gyro_bias_uncertainty_write(mipc_writer_t *w,
+                                             const mipc_filter_data_gyro_bias_uncertainty_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->bias[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->bias_uncertainty[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gyro_bias_encode(const mip_filter_data_gyro_bias_t *value, uint8_t *buf,
-                                              size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gyro_bias_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_gyro_bias_load(const uint8_t *d, mip_filter_data_gyro_bias_t *out) {
-    out->bias[0] = mip_ld_f32(d + 0);
-    out->bias[1] = mip_ld_f32(d + 4);
-    out->bias[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_decode_read(const uint8_t *data, size_t len,
-                                                                       mip_filter_data_gyro_bias_t *out,
-                                                                       mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gyro_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
-                                              mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gyro_bias_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gyro_bias_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gyro_bias_to_json(mip_jw_t *w, const mip_filter_data_gyro_bias_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "bias");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->bias[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gyro_bias_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_gyro_bias_t *out) {
-    static const char *const keys[] = {"bias", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "bias", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"bias\"");
-    }
-    {
-        mip_jr_push(jr, "bias");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->bias[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_accel_bias_t */
-
-static int mip_filter_data_accel_bias_read(mip_reader_t *r, mip_filter_data_accel_bias_t *out) {
-    size_t i;
-    mip_rd_push(r, "bias");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->bias[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_accel_bias_write(mip_writer_t *w,
-                                                     const mip_filter_data_accel_bias_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->bias[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_accel_bias_encode(const mip_filter_data_accel_bias_t *value, uint8_t *buf,
-                                               size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_accel_bias_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_accel_bias_load(const uint8_t *d, mip_filter_data_accel_bias_t *out) {
-    out->bias[0] = mip_ld_f32(d + 0);
-    out->bias[1] = mip_ld_f32(d + 4);
-    out->bias[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_decode_read(const uint8_t *data, size_t len,
-                                                                        mip_filter_data_accel_bias_t *out,
-                                                                        mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_accel_bias_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
-                                               mip_filter_data_accel_bias_t *out, mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_accel_bias_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_accel_bias_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_accel_bias_to_json(mip_jw_t *w, const mip_filter_data_accel_bias_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "bias");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->bias[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_accel_bias_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_accel_bias_t *out) {
-    static const char *const keys[] = {"bias", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "bias", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"bias\"");
-    }
-    {
-        mip_jr_push(jr, "bias");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->bias[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_llh_position_uncertainty_t */
-
-static int mip_filter_data_llh_position_uncertainty_read(mip_reader_t *r,
-                                                         mip_filter_data_llh_position_uncertainty_t *out) {
-    mip_rd_push(r, "north");
-    if (mip_rd_f32(r, &out->north)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "east");
-    if (mip_rd_f32(r, &out->east)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "down");
-    if (mip_rd_f32(r, &out->down)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_llh_position_uncertainty_write(mip_writer_t *w,
-                                               const mip_filter_data_llh_position_uncertainty_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->north)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->east)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->down)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_llh_position_uncertainty_encode(const mip_filter_data_llh_position_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_llh_position_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_llh_position_uncertainty_load(const uint8_t *d,
-                                                         mip_filter_data_llh_position_uncertainty_t *out) {
-    out->north = mip_ld_f32(d + 0);
-    out->east = mip_ld_f32(d + 4);
-    out->down = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_llh_position_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_llh_position_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_llh_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_llh_position_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_llh_position_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_llh_position_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_llh_position_uncertainty_to_json(mip_jw_t *w,
-                                                      const mip_filter_data_llh_position_uncertainty_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "north");
-    mip_jw_f32(w, &in->north);
-    mip_jw_key(w, &first, "east");
-    mip_jw_f32(w, &in->east);
-    mip_jw_key(w, &first, "down");
-    mip_jw_f32(w, &in->down);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_llh_position_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                       mip_filter_data_llh_position_uncertainty_t *out) {
-    static const char *const keys[] = {"north", "east", "down", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "north", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"north\"");
-    }
-    {
-        mip_jr_push(jr, "north");
-        if (mip_jr_f32(jr, vp, &out->north)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "east", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"east\"");
-    }
-    {
-        mip_jr_push(jr, "east");
-        if (mip_jr_f32(jr, vp, &out->east)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "down", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"down\"");
-    }
-    {
-        mip_jr_push(jr, "down");
-        if (mip_jr_f32(jr, vp, &out->down)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ned_velocity_uncertainty_t */
-
-static int mip_filter_data_ned_velocity_uncertainty_read(mip_reader_t *r,
-                                                         mip_filter_data_ned_velocity_uncertainty_t *out) {
-    mip_rd_push(r, "north");
-    if (mip_rd_f32(r, &out->north)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "east");
-    if (mip_rd_f32(r, &out->east)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "down");
-    if (mip_rd_f32(r, &out->down)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_ned_velocity_uncertainty_write(mip_writer_t *w,
-                                               const mip_filter_data_ned_velocity_uncertainty_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->north)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->east)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->down)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ned_velocity_uncertainty_encode(const mip_filter_data_ned_velocity_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ned_velocity_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ned_velocity_uncertainty_load(const uint8_t *d,
-                                                         mip_filter_data_ned_velocity_uncertainty_t *out) {
-    out->north = mip_ld_f32(d + 0);
-    out->east = mip_ld_f32(d + 4);
-    out->down = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ned_velocity_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ned_velocity_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ned_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_ned_velocity_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_ned_velocity_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ned_velocity_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ned_velocity_uncertainty_to_json(mip_jw_t *w,
-                                                      const mip_filter_data_ned_velocity_uncertainty_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "north");
-    mip_jw_f32(w, &in->north);
-    mip_jw_key(w, &first, "east");
-    mip_jw_f32(w, &in->east);
-    mip_jw_key(w, &first, "down");
-    mip_jw_f32(w, &in->down);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ned_velocity_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                       mip_filter_data_ned_velocity_uncertainty_t *out) {
-    static const char *const keys[] = {"north", "east", "down", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "north", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"north\"");
-    }
-    {
-        mip_jr_push(jr, "north");
-        if (mip_jr_f32(jr, vp, &out->north)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "east", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"east\"");
-    }
-    {
-        mip_jr_push(jr, "east");
-        if (mip_jr_f32(jr, vp, &out->east)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "down", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"down\"");
-    }
-    {
-        mip_jr_push(jr, "down");
-        if (mip_jr_f32(jr, vp, &out->down)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_euler_angles_uncertainty_t */
-
-static int mip_filter_data_euler_angles_uncertainty_read(mip_reader_t *r,
-                                                         mip_filter_data_euler_angles_uncertainty_t *out) {
-    mip_rd_push(r, "roll");
-    if (mip_rd_f32(r, &out->roll)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "pitch");
-    if (mip_rd_f32(r, &out->pitch)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "yaw");
-    if (mip_rd_f32(r, &out->yaw)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_euler_angles_uncertainty_write(mip_writer_t *w,
-                                               const mip_filter_data_euler_angles_uncertainty_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->roll)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->pitch)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->yaw)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_euler_angles_uncertainty_encode(const mip_filter_data_euler_angles_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_euler_angles_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_euler_angles_uncertainty_load(const uint8_t *d,
-                                                         mip_filter_data_euler_angles_uncertainty_t *out) {
-    out->roll = mip_ld_f32(d + 0);
-    out->pitch = mip_ld_f32(d + 4);
-    out->yaw = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_euler_angles_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_euler_angles_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_euler_angles_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_euler_angles_uncertainty_t *out,
-                                                             mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_euler_angles_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_euler_angles_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_euler_angles_uncertainty_to_json(mip_jw_t *w,
-                                                      const mip_filter_data_euler_angles_uncertainty_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "roll");
-    mip_jw_f32(w, &in->roll);
-    mip_jw_key(w, &first, "pitch");
-    mip_jw_f32(w, &in->pitch);
-    mip_jw_key(w, &first, "yaw");
-    mip_jw_f32(w, &in->yaw);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_euler_angles_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                       mip_filter_data_euler_angles_uncertainty_t *out) {
-    static const char *const keys[] = {"roll", "pitch", "yaw", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "roll", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"roll\"");
-    }
-    {
-        mip_jr_push(jr, "roll");
-        if (mip_jr_f32(jr, vp, &out->roll)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "pitch", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"pitch\"");
-    }
-    {
-        mip_jr_push(jr, "pitch");
-        if (mip_jr_f32(jr, vp, &out->pitch)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "yaw", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"yaw\"");
-    }
-    {
-        mip_jr_push(jr, "yaw");
-        if (mip_jr_f32(jr, vp, &out->yaw)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_gyro_bias_uncertainty_t */
-
-static int mip_filter_data_gyro_bias_uncertainty_read(mip_reader_t *r,
-                                                      mip_filter_data_gyro_bias_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "bias_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->bias_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_gyro_bias_uncertainty_write(mip_writer_t *w,
-                                            const mip_filter_data_gyro_bias_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->bias_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gyro_bias_uncertainty_encode(const mip_filter_data_gyro_bias_uncertainty_t *value,
-                                             uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gyro_bias_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_gyro_bias_uncertainty_load(const uint8_t *d,
-                                                      mip_filter_data_gyro_bias_uncertainty_t *out) {
-    out->bias_uncertainty[0] = mip_ld_f32(d + 0);
-    out->bias_uncertainty[1] = mip_ld_f32(d + 4);
-    out->bias_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gyro_bias_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gyro_bias_uncertainty_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gyro_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_gyro_bias_uncertainty_t *out,
-                                                          mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gyro_bias_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gyro_bias_uncertainty_to_json(mip_jw_t *w,
-                                                   const mip_filter_data_gyro_bias_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "bias_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->bias_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gyro_bias_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                    mip_filter_data_gyro_bias_uncertainty_t *out) {
-    static const char *const keys[] = {"bias_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "bias_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"bias_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "bias_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->bias_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_accel_bias_uncertainty_t */
-
-static int mip_filter_data_accel_bias_uncertainty_read(mip_reader_t *r,
-                                                       mip_filter_data_accel_bias_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "bias_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->bias_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_accel_bias_uncertainty_write(mip_writer_t *w,
-                                             const mip_filter_data_accel_bias_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->bias_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_accel_bias_uncertainty_encode(const mip_filter_data_accel_bias_uncertainty_t *value,
+mipc_status_t
+mipc_filter_data_gyro_bias_uncertainty_encode(const mipc_filter_data_gyro_bias_uncertainty_t *value,
                                               uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_accel_bias_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gyro_bias_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -1820,460 +953,328 @@ mip_filter_data_accel_bias_uncertainty_encode(const mip_filter_data_accel_bias_u
 
 /* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_accel_bias_uncertainty_load(const uint8_t *d,
-                                                       mip_filter_data_accel_bias_uncertainty_t *out) {
-    out->bias_uncertainty[0] = mip_ld_f32(d + 0);
-    out->bias_uncertainty[1] = mip_ld_f32(d + 4);
-    out->bias_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
+static int mipc_filter_data_gyro_bias_uncertainty_load(const uint8_t *d,
+                                                       mipc_filter_data_gyro_bias_uncertainty_t *out) {
+    out->bias_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->bias_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->bias_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
 /* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_accel_bias_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_accel_bias_uncertainty_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gyro_bias_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gyro_bias_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_accel_bias_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_gyro_bias_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_data_accel_bias_uncertainty_t *out,
-                                                           mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_gyro_bias_uncertainty_t *out,
+                                                            mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 14 && mip_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 14 && mipc_filter_data_gyro_bias_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_accel_bias_uncertainty_decode_read(data, len, out, err);
+    return mipc_filter_data_gyro_bias_uncertainty_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_accel_bias_uncertainty_to_json(mip_jw_t *w,
-                                                    const mip_filter_data_accel_bias_uncertainty_t *in) {
-    int first = 1;
+/* ---- mipc_filter_data_accel_bias_uncertainty_t */
+
+static int mipc_filter_data_accel_bias_uncertainty_read(mipc_reader_t *r,
+                                                        mipc_filter_data_accel_bias_uncertainty_t *out) {
     size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "bias_uncertainty");
-    mip_jw_raw(w, "[", 1);
+    mipc_rd_push(r, "bias_uncertainty");
     for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->bias_uncertainty[i]);
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->bias_uncertainty[i])) {
+            return -1;
+        }
     }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_accel_bias_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                     mip_filter_data_accel_bias_uncertainty_t *out) {
-    static const char *const keys[] = {"bias_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "bias_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"bias_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "bias_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->bias_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_linear_accel_t */
-
-static int mip_filter_data_linear_accel_read(mip_reader_t *r, mip_filter_data_linear_accel_t *out) {
-    size_t i;
-    mip_rd_push(r, "accel");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->accel[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_linear_accel_write(mip_writer_t *w,
-                                                       const mip_filter_data_linear_accel_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_accel_bias_uncertainty_write(mipc_writer_t *w,
+                                              const mipc_filter_data_accel_bias_uncertainty_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->accel[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->bias_uncertainty[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_linear_accel_encode(const mip_filter_data_linear_accel_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_linear_accel_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_linear_accel_load(const uint8_t *d, mip_filter_data_linear_accel_t *out) {
-    out->accel[0] = mip_ld_f32(d + 0);
-    out->accel[1] = mip_ld_f32(d + 4);
-    out->accel[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_linear_accel_decode_read(const uint8_t *data, size_t len,
-                                                                          mip_filter_data_linear_accel_t *out,
-                                                                          mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_linear_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_linear_accel_t *out,
-                                                 mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_linear_accel_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_linear_accel_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_linear_accel_to_json(mip_jw_t *w, const mip_filter_data_linear_accel_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "accel");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->accel[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_linear_accel_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_linear_accel_t *out) {
-    static const char *const keys[] = {"accel", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "accel", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"accel\"");
-    }
-    {
-        mip_jr_push(jr, "accel");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->accel[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_comp_angular_rate_t */
-
-static int mip_filter_data_comp_angular_rate_read(mip_reader_t *r, mip_filter_data_comp_angular_rate_t *out) {
-    size_t i;
-    mip_rd_push(r, "gyro");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->gyro[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_comp_angular_rate_write(mip_writer_t *w,
-                                                            const mip_filter_data_comp_angular_rate_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->gyro[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_comp_angular_rate_encode(const mip_filter_data_comp_angular_rate_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_comp_angular_rate_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_comp_angular_rate_load(const uint8_t *d,
-                                                  mip_filter_data_comp_angular_rate_t *out) {
-    out->gyro[0] = mip_ld_f32(d + 0);
-    out->gyro[1] = mip_ld_f32(d + 4);
-    out->gyro[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_comp_angular_rate_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_comp_angular_rate_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_comp_angular_rate_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_comp_angular_rate_t *out,
-                                                      mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_comp_angular_rate_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_comp_angular_rate_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_comp_angular_rate_to_json(mip_jw_t *w, const mip_filter_data_comp_angular_rate_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "gyro");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->gyro[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_comp_angular_rate_from_json(mip_jr_t *jr, size_t pos,
-                                                mip_filter_data_comp_angular_rate_t *out) {
-    static const char *const keys[] = {"gyro", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "gyro", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"gyro\"");
-    }
-    {
-        mip_jr_push(jr, "gyro");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->gyro[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_wgs84_gravity_magnitude_t */
-
-static int mip_filter_data_wgs84_gravity_magnitude_read(mip_reader_t *r,
-                                                        mip_filter_data_wgs84_gravity_magnitude_t *out) {
-    mip_rd_push(r, "gravity_magnitude");
-    if (mip_rd_f32(r, &out->gravity_magnitude)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_wgs84_gravity_magnitude_write(mip_writer_t *w,
-                                              const mip_filter_data_wgs84_gravity_magnitude_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->gravity_magnitude)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_wgs84_gravity_magnitude_encode(const mip_filter_data_wgs84_gravity_magnitude_t *value,
+mipc_status_t
+mipc_filter_data_accel_bias_uncertainty_encode(const mipc_filter_data_accel_bias_uncertainty_t *value,
                                                uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_wgs84_gravity_magnitude_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_accel_bias_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_accel_bias_uncertainty_load(const uint8_t *d,
+                                                        mipc_filter_data_accel_bias_uncertainty_t *out) {
+    out->bias_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->bias_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->bias_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_accel_bias_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_accel_bias_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_accel_bias_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                             mipc_filter_data_accel_bias_uncertainty_t *out,
+                                                             mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_accel_bias_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_accel_bias_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_linear_accel_t */
+
+static int mipc_filter_data_linear_accel_read(mipc_reader_t *r, mipc_filter_data_linear_accel_t *out) {
+    size_t i;
+    mipc_rd_push(r, "accel");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->accel[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_linear_accel_write(mipc_writer_t *w,
+                                                         const mipc_filter_data_linear_accel_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->accel[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_linear_accel_encode(const mipc_filter_data_linear_accel_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_linear_accel_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_linear_accel_load(const uint8_t *d, mipc_filter_data_linear_accel_t *out) {
+    out->accel[0] = mipc_ld_f32(d + 0);
+    out->accel[1] = mipc_ld_f32(d + 4);
+    out->accel[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_linear_accel_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_linear_accel_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_linear_accel_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_linear_accel_t *out,
+                                                   mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_linear_accel_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_linear_accel_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_comp_angular_rate_t */
+
+static int mipc_filter_data_comp_angular_rate_read(mipc_reader_t *r,
+                                                   mipc_filter_data_comp_angular_rate_t *out) {
+    size_t i;
+    mipc_rd_push(r, "gyro");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->gyro[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_comp_angular_rate_write(mipc_writer_t *w, const mipc_filter_data_comp_angular_rate_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->gyro[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_comp_angular_rate_encode(const mipc_filter_data_comp_angular_rate_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_comp_angular_rate_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_comp_angular_rate_load(const uint8_t *d,
+                                                   mipc_filter_data_comp_angular_rate_t *out) {
+    out->gyro[0] = mipc_ld_f32(d + 0);
+    out->gyro[1] = mipc_ld_f32(d + 4);
+    out->gyro[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_comp_angular_rate_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_comp_angular_rate_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_comp_angular_rate_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_comp_angular_rate_t *out,
+                                                        mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_comp_angular_rate_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_comp_angular_rate_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_wgs84_gravity_magnitude_t */
+
+static int mipc_filter_data_wgs84_gravity_magnitude_read(mipc_reader_t *r,
+                                                         mipc_filter_data_wgs84_gravity_magnitude_t *out) {
+    mipc_rd_push(r, "gravity_magnitude");
+    if (mipc_rd_f32(r, &out->gravity_magnitude)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_wgs84_gravity_magnitude_write(mipc_writer_t *w,
+                                               const mipc_filter_data_wgs84_gravity_magnitude_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->gravity_magnitude)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_wgs84_gravity_magnitude_encode(const mipc_filter_data_wgs84_gravity_magnitude_t *value,
+                                                uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_wgs84_gravity_magnitude_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -2281,271 +1282,84 @@ mip_filter_data_wgs84_gravity_magnitude_encode(const mip_filter_data_wgs84_gravi
 
 /* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_wgs84_gravity_magnitude_load(const uint8_t *d,
-                                                        mip_filter_data_wgs84_gravity_magnitude_t *out) {
-    out->gravity_magnitude = mip_ld_f32(d + 0);
-    out->valid_flags = mip_ld_u16(d + 4);
+static int mipc_filter_data_wgs84_gravity_magnitude_load(const uint8_t *d,
+                                                         mipc_filter_data_wgs84_gravity_magnitude_t *out) {
+    out->gravity_magnitude = mipc_ld_f32(d + 0);
+    out->valid_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
 /* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_wgs84_gravity_magnitude_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_wgs84_gravity_magnitude_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_wgs84_gravity_magnitude_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_wgs84_gravity_magnitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_wgs84_gravity_magnitude_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
-                                                            mip_filter_data_wgs84_gravity_magnitude_t *out,
-                                                            mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
+                                                              mipc_filter_data_wgs84_gravity_magnitude_t *out,
+                                                              mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 6 && mip_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 6 && mipc_filter_data_wgs84_gravity_magnitude_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_wgs84_gravity_magnitude_decode_read(data, len, out, err);
+    return mipc_filter_data_wgs84_gravity_magnitude_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_wgs84_gravity_magnitude_to_json(mip_jw_t *w,
-                                                     const mip_filter_data_wgs84_gravity_magnitude_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "gravity_magnitude");
-    mip_jw_f32(w, &in->gravity_magnitude);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
+/* ---- mipc_filter_data_filter_status_gx5_45_t */
+
+static int mipc_filter_data_filter_status_gx5_45_read(mipc_reader_t *r,
+                                                      mipc_filter_data_filter_status_gx5_45_t *out) {
+    mipc_rd_push(r, "filter_state");
+    if (mipc_rd_u16(r, &out->filter_state)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "dynamics_mode");
+    if (mipc_rd_u16(r, &out->dynamics_mode)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "status_flags");
+    if (mipc_rd_u16(r, &out->status_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_filter_data_wgs84_gravity_magnitude_from_json(mip_jr_t *jr, size_t pos,
-                                                      mip_filter_data_wgs84_gravity_magnitude_t *out) {
-    static const char *const keys[] = {"gravity_magnitude", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "gravity_magnitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"gravity_magnitude\"");
-    }
-    {
-        mip_jr_push(jr, "gravity_magnitude");
-        if (mip_jr_f32(jr, vp, &out->gravity_magnitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_filter_status_gx5_45_t */
-
-static int mip_filter_data_filter_status_gx5_45_read(mip_reader_t *r,
-                                                     mip_filter_data_filter_status_gx5_45_t *out) {
-    mip_rd_push(r, "filter_state");
-    if (mip_rd_u16(r, &out->filter_state)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "dynamics_mode");
-    if (mip_rd_u16(r, &out->dynamics_mode)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "status_flags");
-    if (mip_rd_u16(r, &out->status_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_filter_status_gx5_45_write(mip_writer_t *w,
-                                           const mip_filter_data_filter_status_gx5_45_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_u16(w, &in->filter_state)) != MIP_OK) {
+static mipc_status_t
+mipc_filter_data_filter_status_gx5_45_write(mipc_writer_t *w,
+                                            const mipc_filter_data_filter_status_gx5_45_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_u16(w, &in->filter_state)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->dynamics_mode)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->dynamics_mode)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->status_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->status_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_filter_status_gx5_45_encode(const mip_filter_data_filter_status_gx5_45_t *value,
-                                                         uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_filter_status_gx5_45_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_filter_status_gx5_45_load(const uint8_t *d,
-                                                     mip_filter_data_filter_status_gx5_45_t *out) {
-    out->filter_state = mip_ld_u16(d + 0);
-    out->dynamics_mode = mip_ld_u16(d + 2);
-    out->status_flags = mip_ld_u16(d + 4);
-    return 0;
-}
-
-/* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_gx5_45_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_filter_status_gx5_45_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_filter_status_gx5_45_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_filter_status_gx5_45_t *out,
-                                                         mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 6 && mip_filter_data_filter_status_gx5_45_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_filter_status_gx5_45_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_filter_status_gx5_45_to_json(mip_jw_t *w,
-                                                  const mip_filter_data_filter_status_gx5_45_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "filter_state");
-    mip_jw_u16(w, &in->filter_state);
-    mip_jw_key(w, &first, "dynamics_mode");
-    mip_jw_u16(w, &in->dynamics_mode);
-    mip_jw_key(w, &first, "status_flags");
-    mip_jw_u16(w, &in->status_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_filter_status_gx5_45_from_json(mip_jr_t *jr, size_t pos,
-                                                   mip_filter_data_filter_status_gx5_45_t *out) {
-    static const char *const keys[] = {"filter_state", "dynamics_mode", "status_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "filter_state", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"filter_state\"");
-    }
-    {
-        mip_jr_push(jr, "filter_state");
-        if (mip_jr_u16(jr, vp, &out->filter_state)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "dynamics_mode", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"dynamics_mode\"");
-    }
-    {
-        mip_jr_push(jr, "dynamics_mode");
-        if (mip_jr_u16(jr, vp, &out->dynamics_mode)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "status_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"status_flags\"");
-    }
-    {
-        mip_jr_push(jr, "status_flags");
-        if (mip_jr_u16(jr, vp, &out->status_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_filter_status_cv7_ins_t */
-
-static int mip_filter_data_filter_status_cv7_ins_read(mip_reader_t *r,
-                                                      mip_filter_data_filter_status_cv7_ins_t *out) {
-    mip_rd_push(r, "filter_state");
-    if (mip_rd_u16(r, &out->filter_state)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "dynamics_mode");
-    if (mip_rd_u16(r, &out->dynamics_mode)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "status_flags");
-    if (mip_rd_u16(r, &out->status_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_filter_status_cv7_ins_write(mip_writer_t *w,
-                                            const mip_filter_data_filter_status_cv7_ins_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_u16(w, &in->filter_state)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->dynamics_mode)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->status_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_filter_status_cv7_ins_encode(const mip_filter_data_filter_status_cv7_ins_t *value,
+mipc_status_t
+mipc_filter_data_filter_status_gx5_45_encode(const mipc_filter_data_filter_status_gx5_45_t *value,
                                              uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_filter_status_cv7_ins_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_filter_status_gx5_45_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -2553,139 +1367,167 @@ mip_filter_data_filter_status_cv7_ins_encode(const mip_filter_data_filter_status
 
 /* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_filter_status_cv7_ins_load(const uint8_t *d,
-                                                      mip_filter_data_filter_status_cv7_ins_t *out) {
-    out->filter_state = mip_ld_u16(d + 0);
-    out->dynamics_mode = mip_ld_u16(d + 2);
-    out->status_flags = mip_ld_u16(d + 4);
+static int mipc_filter_data_filter_status_gx5_45_load(const uint8_t *d,
+                                                      mipc_filter_data_filter_status_gx5_45_t *out) {
+    out->filter_state = mipc_ld_u16(d + 0);
+    out->dynamics_mode = mipc_ld_u16(d + 2);
+    out->status_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
 /* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_filter_status_cv7_ins_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_filter_status_cv7_ins_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_filter_status_gx5_45_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_filter_status_gx5_45_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_filter_status_cv7_ins_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_filter_status_gx5_45_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_filter_status_cv7_ins_t *out,
-                                                          mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
+                                                           mipc_filter_data_filter_status_gx5_45_t *out,
+                                                           mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 6 && mip_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 6 && mipc_filter_data_filter_status_gx5_45_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_filter_status_cv7_ins_decode_read(data, len, out, err);
+    return mipc_filter_data_filter_status_gx5_45_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_filter_status_cv7_ins_to_json(mip_jw_t *w,
-                                                   const mip_filter_data_filter_status_cv7_ins_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "filter_state");
-    mip_jw_u16(w, &in->filter_state);
-    mip_jw_key(w, &first, "dynamics_mode");
-    mip_jw_u16(w, &in->dynamics_mode);
-    mip_jw_key(w, &first, "status_flags");
-    mip_jw_u16(w, &in->status_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_filter_status_cv7_ins_t */
 
-int mip_filter_data_filter_status_cv7_ins_from_json(mip_jr_t *jr, size_t pos,
-                                                    mip_filter_data_filter_status_cv7_ins_t *out) {
-    static const char *const keys[] = {"filter_state", "dynamics_mode", "status_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
+static int mipc_filter_data_filter_status_cv7_ins_read(mipc_reader_t *r,
+                                                       mipc_filter_data_filter_status_cv7_ins_t *out) {
+    mipc_rd_push(r, "filter_state");
+    if (mipc_rd_u16(r, &out->filter_state)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "filter_state", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"filter_state\"");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "dynamics_mode");
+    if (mipc_rd_u16(r, &out->dynamics_mode)) {
+        return -1;
     }
-    {
-        mip_jr_push(jr, "filter_state");
-        if (mip_jr_u16(jr, vp, &out->filter_state)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "status_flags");
+    if (mipc_rd_u16(r, &out->status_flags)) {
+        return -1;
     }
-    found = mip_jr_get(jr, pos, "dynamics_mode", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"dynamics_mode\"");
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_filter_status_cv7_ins_write(mipc_writer_t *w,
+                                             const mipc_filter_data_filter_status_cv7_ins_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_u16(w, &in->filter_state)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "dynamics_mode");
-        if (mip_jr_u16(jr, vp, &out->dynamics_mode)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u16(w, &in->dynamics_mode)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "status_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"status_flags\"");
+    if ((st = mipc_wr_u16(w, &in->status_flags)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "status_flags");
-        if (mip_jr_u16(jr, vp, &out->status_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_filter_status_cv7_ins_encode(const mipc_filter_data_filter_status_cv7_ins_t *value,
+                                              uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_filter_status_cv7_ins_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
     }
+    return st;
+}
+
+/* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_filter_status_cv7_ins_load(const uint8_t *d,
+                                                       mipc_filter_data_filter_status_cv7_ins_t *out) {
+    out->filter_state = mipc_ld_u16(d + 0);
+    out->dynamics_mode = mipc_ld_u16(d + 2);
+    out->status_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
-/* ---- mip_filter_data_gps_timestamp_t */
-
-static int mip_filter_data_gps_timestamp_read(mip_reader_t *r, mip_filter_data_gps_timestamp_t *out) {
-    mip_rd_push(r, "tow");
-    if (mip_rd_f64(r, &out->tow)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "week_number");
-    if (mip_rd_u16(r, &out->week_number)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+/* The general reader: lengths other than 6, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_filter_status_cv7_ins_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_filter_status_cv7_ins_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_filter_status_cv7_ins_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-static mip_status_t mip_filter_data_gps_timestamp_write(mip_writer_t *w,
-                                                        const mip_filter_data_gps_timestamp_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f64(w, &in->tow)) != MIP_OK) {
-        return st;
+mipc_status_t mipc_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_filter_status_cv7_ins_t *out,
+                                                            mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 6 && mipc_filter_data_filter_status_cv7_ins_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    if ((st = mip_wr_u16(w, &in->week_number)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
+    return mipc_filter_data_filter_status_cv7_ins_decode_read(data, len, out, err);
 }
 
-mip_status_t mip_filter_data_gps_timestamp_encode(const mip_filter_data_gps_timestamp_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+/* ---- mipc_filter_data_gps_timestamp_t */
+
+static int mipc_filter_data_gps_timestamp_read(mipc_reader_t *r, mipc_filter_data_gps_timestamp_t *out) {
+    mipc_rd_push(r, "tow");
+    if (mipc_rd_f64(r, &out->tow)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "week_number");
+    if (mipc_rd_u16(r, &out->week_number)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_gps_timestamp_write(mipc_writer_t *w,
+                                                          const mipc_filter_data_gps_timestamp_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f64(w, &in->tow)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->week_number)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gps_timestamp_encode(const mipc_filter_data_gps_timestamp_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gps_timestamp_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gps_timestamp_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -2693,138 +1535,81 @@ mip_status_t mip_filter_data_gps_timestamp_encode(const mip_filter_data_gps_time
 
 /* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_gps_timestamp_load(const uint8_t *d, mip_filter_data_gps_timestamp_t *out) {
-    out->tow = mip_ld_f64(d + 0);
-    out->week_number = mip_ld_u16(d + 8);
-    out->valid_flags = mip_ld_u16(d + 10);
+static int mipc_filter_data_gps_timestamp_load(const uint8_t *d, mipc_filter_data_gps_timestamp_t *out) {
+    out->tow = mipc_ld_f64(d + 0);
+    out->week_number = mipc_ld_u16(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 10);
     return 0;
 }
 
 /* The general reader: lengths other than 12, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gps_timestamp_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gps_timestamp_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gps_timestamp_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gps_timestamp_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_gps_timestamp_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_gps_timestamp_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_gps_timestamp_t *out,
-                                                  mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_gps_timestamp_t *out,
+                                                    mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 12 && mip_filter_data_gps_timestamp_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 12 && mipc_filter_data_gps_timestamp_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_gps_timestamp_decode_read(data, len, out, err);
+    return mipc_filter_data_gps_timestamp_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_gps_timestamp_to_json(mip_jw_t *w, const mip_filter_data_gps_timestamp_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "tow");
-    mip_jw_f64(w, &in->tow);
-    mip_jw_key(w, &first, "week_number");
-    mip_jw_u16(w, &in->week_number);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_quaternion_attitude_uncertainty_t */
 
-int mip_filter_data_gps_timestamp_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_gps_timestamp_t *out) {
-    static const char *const keys[] = {"tow", "week_number", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
+static int mipc_filter_data_quaternion_attitude_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_quaternion_attitude_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "q");
+    for (i = 0; i < 4; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->q[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "tow", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"tow\"");
-    }
-    {
-        mip_jr_push(jr, "tow");
-        if (mip_jr_f64(jr, vp, &out->tow)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "week_number", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"week_number\"");
-    }
-    {
-        mip_jr_push(jr, "week_number");
-        if (mip_jr_u16(jr, vp, &out->week_number)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_quaternion_attitude_uncertainty_t */
-
-static int
-mip_filter_data_quaternion_attitude_uncertainty_read(mip_reader_t *r,
-                                                     mip_filter_data_quaternion_attitude_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "q");
-    for (i = 0; i < 4; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->q[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_quaternion_attitude_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_quaternion_attitude_uncertainty_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_quaternion_attitude_uncertainty_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 4; i++) {
-        if ((st = mip_wr_f32(w, &in->q[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->q[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_quaternion_attitude_uncertainty_encode(
-    const mip_filter_data_quaternion_attitude_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_encode(
+    const mipc_filter_data_quaternion_attitude_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_quaternion_attitude_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_quaternion_attitude_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -2832,159 +1617,83 @@ mip_status_t mip_filter_data_quaternion_attitude_uncertainty_encode(
 
 /* The layout is 18 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int
-mip_filter_data_quaternion_attitude_uncertainty_load(const uint8_t *d,
-                                                     mip_filter_data_quaternion_attitude_uncertainty_t *out) {
-    out->q[0] = mip_ld_f32(d + 0);
-    out->q[1] = mip_ld_f32(d + 4);
-    out->q[2] = mip_ld_f32(d + 8);
-    out->q[3] = mip_ld_f32(d + 12);
-    out->valid_flags = mip_ld_u16(d + 16);
+static int mipc_filter_data_quaternion_attitude_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_quaternion_attitude_uncertainty_t *out) {
+    out->q[0] = mipc_ld_f32(d + 0);
+    out->q[1] = mipc_ld_f32(d + 4);
+    out->q[2] = mipc_ld_f32(d + 8);
+    out->q[3] = mipc_ld_f32(d + 12);
+    out->valid_flags = mipc_ld_u16(d + 16);
     return 0;
 }
 
 /* The general reader: lengths other than 18, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_quaternion_attitude_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_quaternion_attitude_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_quaternion_attitude_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_quaternion_attitude_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_quaternion_attitude_uncertainty_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_quaternion_attitude_uncertainty_t *out,
-                                                       mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_quaternion_attitude_uncertainty_t *out,
+    mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 18 && mip_filter_data_quaternion_attitude_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 18 && mipc_filter_data_quaternion_attitude_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_quaternion_attitude_uncertainty_decode_read(data, len, out, err);
+    return mipc_filter_data_quaternion_attitude_uncertainty_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_quaternion_attitude_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_quaternion_attitude_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "q");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 4; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->q[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_gravity_vector_t */
 
-int mip_filter_data_quaternion_attitude_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_quaternion_attitude_uncertainty_t *out) {
-    static const char *const keys[] = {"q", "valid_flags"};
-    size_t vp = 0;
-    int found;
+static int mipc_filter_data_gravity_vector_read(mipc_reader_t *r, mipc_filter_data_gravity_vector_t *out) {
     size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+    mipc_rd_push(r, "gravity");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->gravity[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "q", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"q\"");
-    }
-    {
-        mip_jr_push(jr, "q");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 4) {
-                return mip_jr_fail(jr, "more than 4 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->q[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 4) {
-            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_gravity_vector_t */
-
-static int mip_filter_data_gravity_vector_read(mip_reader_t *r, mip_filter_data_gravity_vector_t *out) {
-    size_t i;
-    mip_rd_push(r, "gravity");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->gravity[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_gravity_vector_write(mip_writer_t *w,
-                                                         const mip_filter_data_gravity_vector_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_filter_data_gravity_vector_write(mipc_writer_t *w,
+                                                           const mipc_filter_data_gravity_vector_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->gravity[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->gravity[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gravity_vector_encode(const mip_filter_data_gravity_vector_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_gravity_vector_encode(const mipc_filter_data_gravity_vector_t *value,
+                                                     uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gravity_vector_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gravity_vector_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -2992,164 +1701,92 @@ mip_status_t mip_filter_data_gravity_vector_encode(const mip_filter_data_gravity
 
 /* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_gravity_vector_load(const uint8_t *d, mip_filter_data_gravity_vector_t *out) {
-    out->gravity[0] = mip_ld_f32(d + 0);
-    out->gravity[1] = mip_ld_f32(d + 4);
-    out->gravity[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
+static int mipc_filter_data_gravity_vector_load(const uint8_t *d, mipc_filter_data_gravity_vector_t *out) {
+    out->gravity[0] = mipc_ld_f32(d + 0);
+    out->gravity[1] = mipc_ld_f32(d + 4);
+    out->gravity[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
     return 0;
 }
 
 /* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gravity_vector_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gravity_vector_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gravity_vector_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gravity_vector_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_gravity_vector_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_gravity_vector_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_gravity_vector_t *out,
-                                                   mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
+                                                     mipc_filter_data_gravity_vector_t *out,
+                                                     mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 14 && mip_filter_data_gravity_vector_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 14 && mipc_filter_data_gravity_vector_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_gravity_vector_decode_read(data, len, out, err);
+    return mipc_filter_data_gravity_vector_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_gravity_vector_to_json(mip_jw_t *w, const mip_filter_data_gravity_vector_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "gravity");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->gravity[i]);
+/* ---- mipc_filter_data_heading_update_state_t */
+
+static int mipc_filter_data_heading_update_state_read(mipc_reader_t *r,
+                                                      mipc_filter_data_heading_update_state_t *out) {
+    mipc_rd_push(r, "heading");
+    if (mipc_rd_f32(r, &out->heading)) {
+        return -1;
     }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "heading_uncertainty");
+    if (mipc_rd_f32(r, &out->heading_uncertainty)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "source");
+    if (mipc_rd_u16(r, &out->source)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_filter_data_gravity_vector_from_json(mip_jr_t *jr, size_t pos,
-                                             mip_filter_data_gravity_vector_t *out) {
-    static const char *const keys[] = {"gravity", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "gravity", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"gravity\"");
-    }
-    {
-        mip_jr_push(jr, "gravity");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->gravity[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_heading_update_state_t */
-
-static int mip_filter_data_heading_update_state_read(mip_reader_t *r,
-                                                     mip_filter_data_heading_update_state_t *out) {
-    mip_rd_push(r, "heading");
-    if (mip_rd_f32(r, &out->heading)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "heading_uncertainty");
-    if (mip_rd_f32(r, &out->heading_uncertainty)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "source");
-    if (mip_rd_u16(r, &out->source)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_heading_update_state_write(mip_writer_t *w,
-                                           const mip_filter_data_heading_update_state_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->heading)) != MIP_OK) {
+static mipc_status_t
+mipc_filter_data_heading_update_state_write(mipc_writer_t *w,
+                                            const mipc_filter_data_heading_update_state_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->heading)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_f32(w, &in->heading_uncertainty)) != MIP_OK) {
+    if ((st = mipc_wr_f32(w, &in->heading_uncertainty)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->source)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->source)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_heading_update_state_encode(const mip_filter_data_heading_update_state_t *value,
-                                                         uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t
+mipc_filter_data_heading_update_state_encode(const mipc_filter_data_heading_update_state_t *value,
+                                             uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_heading_update_state_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_heading_update_state_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -3157,177 +1794,106 @@ mip_status_t mip_filter_data_heading_update_state_encode(const mip_filter_data_h
 
 /* The layout is 12 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_heading_update_state_load(const uint8_t *d,
-                                                     mip_filter_data_heading_update_state_t *out) {
-    out->heading = mip_ld_f32(d + 0);
-    out->heading_uncertainty = mip_ld_f32(d + 4);
-    out->source = mip_ld_u16(d + 8);
-    out->valid_flags = mip_ld_u16(d + 10);
+static int mipc_filter_data_heading_update_state_load(const uint8_t *d,
+                                                      mipc_filter_data_heading_update_state_t *out) {
+    out->heading = mipc_ld_f32(d + 0);
+    out->heading_uncertainty = mipc_ld_f32(d + 4);
+    out->source = mipc_ld_u16(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 10);
     return 0;
 }
 
 /* The general reader: lengths other than 12, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_heading_update_state_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_heading_update_state_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_heading_update_state_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_heading_update_state_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_heading_update_state_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_heading_update_state_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_heading_update_state_t *out,
-                                                         mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
+                                                           mipc_filter_data_heading_update_state_t *out,
+                                                           mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 12 && mip_filter_data_heading_update_state_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 12 && mipc_filter_data_heading_update_state_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_heading_update_state_decode_read(data, len, out, err);
+    return mipc_filter_data_heading_update_state_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_heading_update_state_to_json(mip_jw_t *w,
-                                                  const mip_filter_data_heading_update_state_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "heading");
-    mip_jw_f32(w, &in->heading);
-    mip_jw_key(w, &first, "heading_uncertainty");
-    mip_jw_f32(w, &in->heading_uncertainty);
-    mip_jw_key(w, &first, "source");
-    mip_jw_u16(w, &in->source);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
+/* ---- mipc_filter_data_magnetic_model_t */
+
+static int mipc_filter_data_magnetic_model_read(mipc_reader_t *r, mipc_filter_data_magnetic_model_t *out) {
+    mipc_rd_push(r, "intensity_north");
+    if (mipc_rd_f32(r, &out->intensity_north)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "intensity_east");
+    if (mipc_rd_f32(r, &out->intensity_east)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "intensity_down");
+    if (mipc_rd_f32(r, &out->intensity_down)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "inclination");
+    if (mipc_rd_f32(r, &out->inclination)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "declination");
+    if (mipc_rd_f32(r, &out->declination)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_filter_data_heading_update_state_from_json(mip_jr_t *jr, size_t pos,
-                                                   mip_filter_data_heading_update_state_t *out) {
-    static const char *const keys[] = {"heading", "heading_uncertainty", "source", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
+static mipc_status_t mipc_filter_data_magnetic_model_write(mipc_writer_t *w,
+                                                           const mipc_filter_data_magnetic_model_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->intensity_north)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "heading", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"heading\"");
+    if ((st = mipc_wr_f32(w, &in->intensity_east)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "heading");
-        if (mip_jr_f32(jr, vp, &out->heading)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_f32(w, &in->intensity_down)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "heading_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"heading_uncertainty\"");
+    if ((st = mipc_wr_f32(w, &in->inclination)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "heading_uncertainty");
-        if (mip_jr_f32(jr, vp, &out->heading_uncertainty)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_f32(w, &in->declination)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "source", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"source\"");
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "source");
-        if (mip_jr_u16(jr, vp, &out->source)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    return MIPC_OK;
 }
 
-/* ---- mip_filter_data_magnetic_model_t */
-
-static int mip_filter_data_magnetic_model_read(mip_reader_t *r, mip_filter_data_magnetic_model_t *out) {
-    mip_rd_push(r, "intensity_north");
-    if (mip_rd_f32(r, &out->intensity_north)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "intensity_east");
-    if (mip_rd_f32(r, &out->intensity_east)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "intensity_down");
-    if (mip_rd_f32(r, &out->intensity_down)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "inclination");
-    if (mip_rd_f32(r, &out->inclination)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "declination");
-    if (mip_rd_f32(r, &out->declination)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_magnetic_model_write(mip_writer_t *w,
-                                                         const mip_filter_data_magnetic_model_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->intensity_north)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->intensity_east)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->intensity_down)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->inclination)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->declination)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_magnetic_model_encode(const mip_filter_data_magnetic_model_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_magnetic_model_encode(const mipc_filter_data_magnetic_model_t *value,
+                                                     uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_magnetic_model_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_magnetic_model_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -3335,994 +1901,534 @@ mip_status_t mip_filter_data_magnetic_model_encode(const mip_filter_data_magneti
 
 /* The layout is 22 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_magnetic_model_load(const uint8_t *d, mip_filter_data_magnetic_model_t *out) {
-    out->intensity_north = mip_ld_f32(d + 0);
-    out->intensity_east = mip_ld_f32(d + 4);
-    out->intensity_down = mip_ld_f32(d + 8);
-    out->inclination = mip_ld_f32(d + 12);
-    out->declination = mip_ld_f32(d + 16);
-    out->valid_flags = mip_ld_u16(d + 20);
+static int mipc_filter_data_magnetic_model_load(const uint8_t *d, mipc_filter_data_magnetic_model_t *out) {
+    out->intensity_north = mipc_ld_f32(d + 0);
+    out->intensity_east = mipc_ld_f32(d + 4);
+    out->intensity_down = mipc_ld_f32(d + 8);
+    out->inclination = mipc_ld_f32(d + 12);
+    out->declination = mipc_ld_f32(d + 16);
+    out->valid_flags = mipc_ld_u16(d + 20);
     return 0;
 }
 
 /* The general reader: lengths other than 22, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_magnetic_model_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_magnetic_model_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_magnetic_model_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_magnetic_model_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_magnetic_model_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_magnetic_model_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_magnetic_model_t *out,
-                                                   mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
+                                                     mipc_filter_data_magnetic_model_t *out,
+                                                     mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 22 && mip_filter_data_magnetic_model_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 22 && mipc_filter_data_magnetic_model_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_magnetic_model_decode_read(data, len, out, err);
+    return mipc_filter_data_magnetic_model_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_magnetic_model_to_json(mip_jw_t *w, const mip_filter_data_magnetic_model_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "intensity_north");
-    mip_jw_f32(w, &in->intensity_north);
-    mip_jw_key(w, &first, "intensity_east");
-    mip_jw_f32(w, &in->intensity_east);
-    mip_jw_key(w, &first, "intensity_down");
-    mip_jw_f32(w, &in->intensity_down);
-    mip_jw_key(w, &first, "inclination");
-    mip_jw_f32(w, &in->inclination);
-    mip_jw_key(w, &first, "declination");
-    mip_jw_f32(w, &in->declination);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_gyro_scale_factor_t */
 
-int mip_filter_data_magnetic_model_from_json(mip_jr_t *jr, size_t pos,
-                                             mip_filter_data_magnetic_model_t *out) {
-    static const char *const keys[] = {"intensity_north", "intensity_east", "intensity_down",
-                                       "inclination",     "declination",    "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 6)) {
+static int mipc_filter_data_gyro_scale_factor_read(mipc_reader_t *r,
+                                                   mipc_filter_data_gyro_scale_factor_t *out) {
+    size_t i;
+    mipc_rd_push(r, "scale_factor");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->scale_factor[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "intensity_north", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"intensity_north\"");
-    }
-    {
-        mip_jr_push(jr, "intensity_north");
-        if (mip_jr_f32(jr, vp, &out->intensity_north)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "intensity_east", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"intensity_east\"");
-    }
-    {
-        mip_jr_push(jr, "intensity_east");
-        if (mip_jr_f32(jr, vp, &out->intensity_east)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "intensity_down", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"intensity_down\"");
-    }
-    {
-        mip_jr_push(jr, "intensity_down");
-        if (mip_jr_f32(jr, vp, &out->intensity_down)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "inclination", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"inclination\"");
-    }
-    {
-        mip_jr_push(jr, "inclination");
-        if (mip_jr_f32(jr, vp, &out->inclination)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "declination", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"declination\"");
-    }
-    {
-        mip_jr_push(jr, "declination");
-        if (mip_jr_f32(jr, vp, &out->declination)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_gyro_scale_factor_t */
-
-static int mip_filter_data_gyro_scale_factor_read(mip_reader_t *r, mip_filter_data_gyro_scale_factor_t *out) {
-    size_t i;
-    mip_rd_push(r, "scale_factor");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->scale_factor[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_gyro_scale_factor_write(mip_writer_t *w,
-                                                            const mip_filter_data_gyro_scale_factor_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_gyro_scale_factor_write(mipc_writer_t *w, const mipc_filter_data_gyro_scale_factor_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->scale_factor[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->scale_factor[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gyro_scale_factor_encode(const mip_filter_data_gyro_scale_factor_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gyro_scale_factor_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_gyro_scale_factor_load(const uint8_t *d,
-                                                  mip_filter_data_gyro_scale_factor_t *out) {
-    out->scale_factor[0] = mip_ld_f32(d + 0);
-    out->scale_factor[1] = mip_ld_f32(d + 4);
-    out->scale_factor[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gyro_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_gyro_scale_factor_t *out,
-                                                      mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gyro_scale_factor_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gyro_scale_factor_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gyro_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_gyro_scale_factor_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->scale_factor[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gyro_scale_factor_from_json(mip_jr_t *jr, size_t pos,
-                                                mip_filter_data_gyro_scale_factor_t *out) {
-    static const char *const keys[] = {"scale_factor", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "scale_factor", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor\"");
-    }
-    {
-        mip_jr_push(jr, "scale_factor");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->scale_factor[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_accel_scale_factor_t */
-
-static int mip_filter_data_accel_scale_factor_read(mip_reader_t *r,
-                                                   mip_filter_data_accel_scale_factor_t *out) {
-    size_t i;
-    mip_rd_push(r, "scale_factor");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->scale_factor[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_accel_scale_factor_write(mip_writer_t *w,
-                                                             const mip_filter_data_accel_scale_factor_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->scale_factor[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_accel_scale_factor_encode(const mip_filter_data_accel_scale_factor_t *value,
-                                                       uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_accel_scale_factor_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_accel_scale_factor_load(const uint8_t *d,
-                                                   mip_filter_data_accel_scale_factor_t *out) {
-    out->scale_factor[0] = mip_ld_f32(d + 0);
-    out->scale_factor[1] = mip_ld_f32(d + 4);
-    out->scale_factor[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_accel_scale_factor_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_accel_scale_factor_t *out,
-                                                       mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_accel_scale_factor_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_accel_scale_factor_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_accel_scale_factor_to_json(mip_jw_t *w, const mip_filter_data_accel_scale_factor_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->scale_factor[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_accel_scale_factor_from_json(mip_jr_t *jr, size_t pos,
-                                                 mip_filter_data_accel_scale_factor_t *out) {
-    static const char *const keys[] = {"scale_factor", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "scale_factor", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor\"");
-    }
-    {
-        mip_jr_push(jr, "scale_factor");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->scale_factor[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_gyro_scale_factor_uncertainty_t */
-
-static int
-mip_filter_data_gyro_scale_factor_uncertainty_read(mip_reader_t *r,
-                                                   mip_filter_data_gyro_scale_factor_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "scale_factor_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->scale_factor_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_gyro_scale_factor_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->scale_factor_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_encode(
-    const mip_filter_data_gyro_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gyro_scale_factor_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int
-mip_filter_data_gyro_scale_factor_uncertainty_load(const uint8_t *d,
-                                                   mip_filter_data_gyro_scale_factor_uncertainty_t *out) {
-    out->scale_factor_uncertainty[0] = mip_ld_f32(d + 0);
-    out->scale_factor_uncertainty[1] = mip_ld_f32(d + 4);
-    out->scale_factor_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gyro_scale_factor_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
-                                                     mip_filter_data_gyro_scale_factor_uncertainty_t *out,
-                                                     mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gyro_scale_factor_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gyro_scale_factor_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gyro_scale_factor_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_gyro_scale_factor_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->scale_factor_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gyro_scale_factor_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_gyro_scale_factor_uncertainty_t *out) {
-    static const char *const keys[] = {"scale_factor_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "scale_factor_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "scale_factor_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->scale_factor_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_accel_scale_factor_uncertainty_t */
-
-static int
-mip_filter_data_accel_scale_factor_uncertainty_read(mip_reader_t *r,
-                                                    mip_filter_data_accel_scale_factor_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "scale_factor_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->scale_factor_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_accel_scale_factor_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_accel_scale_factor_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->scale_factor_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_accel_scale_factor_uncertainty_encode(
-    const mip_filter_data_accel_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_accel_scale_factor_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int
-mip_filter_data_accel_scale_factor_uncertainty_load(const uint8_t *d,
-                                                    mip_filter_data_accel_scale_factor_uncertainty_t *out) {
-    out->scale_factor_uncertainty[0] = mip_ld_f32(d + 0);
-    out->scale_factor_uncertainty[1] = mip_ld_f32(d + 4);
-    out->scale_factor_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_accel_scale_factor_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_accel_scale_factor_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_accel_scale_factor_uncertainty_t *out,
-                                                      mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_accel_scale_factor_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_accel_scale_factor_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_accel_scale_factor_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_accel_scale_factor_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->scale_factor_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_accel_scale_factor_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_accel_scale_factor_uncertainty_t *out) {
-    static const char *const keys[] = {"scale_factor_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "scale_factor_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "scale_factor_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->scale_factor_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_compensated_accel_t */
-
-static int mip_filter_data_compensated_accel_read(mip_reader_t *r, mip_filter_data_compensated_accel_t *out) {
-    size_t i;
-    mip_rd_push(r, "accel");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->accel[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_compensated_accel_write(mip_writer_t *w,
-                                                            const mip_filter_data_compensated_accel_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->accel[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_compensated_accel_encode(const mip_filter_data_compensated_accel_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_compensated_accel_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_compensated_accel_load(const uint8_t *d,
-                                                  mip_filter_data_compensated_accel_t *out) {
-    out->accel[0] = mip_ld_f32(d + 0);
-    out->accel[1] = mip_ld_f32(d + 4);
-    out->accel[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_compensated_accel_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_compensated_accel_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_compensated_accel_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_compensated_accel_t *out,
-                                                      mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_compensated_accel_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_compensated_accel_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_compensated_accel_to_json(mip_jw_t *w, const mip_filter_data_compensated_accel_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "accel");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->accel[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_compensated_accel_from_json(mip_jr_t *jr, size_t pos,
-                                                mip_filter_data_compensated_accel_t *out) {
-    static const char *const keys[] = {"accel", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "accel", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"accel\"");
-    }
-    {
-        mip_jr_push(jr, "accel");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->accel[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_standard_atmosphere_t */
-
-static int mip_filter_data_standard_atmosphere_read(mip_reader_t *r,
-                                                    mip_filter_data_standard_atmosphere_t *out) {
-    mip_rd_push(r, "geometric_altitude");
-    if (mip_rd_f32(r, &out->geometric_altitude)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "geopotential_altitude");
-    if (mip_rd_f32(r, &out->geopotential_altitude)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "temperature");
-    if (mip_rd_f32(r, &out->temperature)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "pressure");
-    if (mip_rd_f32(r, &out->pressure)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "density");
-    if (mip_rd_f32(r, &out->density)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_standard_atmosphere_write(mip_writer_t *w, const mip_filter_data_standard_atmosphere_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->geometric_altitude)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->geopotential_altitude)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->temperature)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->pressure)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->density)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_standard_atmosphere_encode(const mip_filter_data_standard_atmosphere_t *value,
+mipc_status_t mipc_filter_data_gyro_scale_factor_encode(const mipc_filter_data_gyro_scale_factor_t *value,
                                                         uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_standard_atmosphere_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gyro_scale_factor_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_gyro_scale_factor_load(const uint8_t *d,
+                                                   mipc_filter_data_gyro_scale_factor_t *out) {
+    out->scale_factor[0] = mipc_ld_f32(d + 0);
+    out->scale_factor[1] = mipc_ld_f32(d + 4);
+    out->scale_factor[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gyro_scale_factor_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gyro_scale_factor_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gyro_scale_factor_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_gyro_scale_factor_t *out,
+                                                        mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_gyro_scale_factor_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gyro_scale_factor_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_accel_scale_factor_t */
+
+static int mipc_filter_data_accel_scale_factor_read(mipc_reader_t *r,
+                                                    mipc_filter_data_accel_scale_factor_t *out) {
+    size_t i;
+    mipc_rd_push(r, "scale_factor");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->scale_factor[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_accel_scale_factor_write(mipc_writer_t *w, const mipc_filter_data_accel_scale_factor_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->scale_factor[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_accel_scale_factor_encode(const mipc_filter_data_accel_scale_factor_t *value,
+                                                         uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_accel_scale_factor_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_accel_scale_factor_load(const uint8_t *d,
+                                                    mipc_filter_data_accel_scale_factor_t *out) {
+    out->scale_factor[0] = mipc_ld_f32(d + 0);
+    out->scale_factor[1] = mipc_ld_f32(d + 4);
+    out->scale_factor[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_accel_scale_factor_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_accel_scale_factor_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_accel_scale_factor_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
+                                                         mipc_filter_data_accel_scale_factor_t *out,
+                                                         mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_accel_scale_factor_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_accel_scale_factor_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_gyro_scale_factor_uncertainty_t */
+
+static int
+mipc_filter_data_gyro_scale_factor_uncertainty_read(mipc_reader_t *r,
+                                                    mipc_filter_data_gyro_scale_factor_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "scale_factor_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->scale_factor_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_gyro_scale_factor_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_gyro_scale_factor_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->scale_factor_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gyro_scale_factor_uncertainty_encode(
+    const mipc_filter_data_gyro_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gyro_scale_factor_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_gyro_scale_factor_uncertainty_load(const uint8_t *d,
+                                                    mipc_filter_data_gyro_scale_factor_uncertainty_t *out) {
+    out->scale_factor_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->scale_factor_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->scale_factor_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gyro_scale_factor_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gyro_scale_factor_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gyro_scale_factor_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
+                                                      mipc_filter_data_gyro_scale_factor_uncertainty_t *out,
+                                                      mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_gyro_scale_factor_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gyro_scale_factor_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_accel_scale_factor_uncertainty_t */
+
+static int
+mipc_filter_data_accel_scale_factor_uncertainty_read(mipc_reader_t *r,
+                                                     mipc_filter_data_accel_scale_factor_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "scale_factor_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->scale_factor_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_accel_scale_factor_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_accel_scale_factor_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->scale_factor_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_accel_scale_factor_uncertainty_encode(
+    const mipc_filter_data_accel_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_accel_scale_factor_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_accel_scale_factor_uncertainty_load(const uint8_t *d,
+                                                     mipc_filter_data_accel_scale_factor_uncertainty_t *out) {
+    out->scale_factor_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->scale_factor_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->scale_factor_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_accel_scale_factor_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_accel_scale_factor_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_accel_scale_factor_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
+                                                       mipc_filter_data_accel_scale_factor_uncertainty_t *out,
+                                                       mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_accel_scale_factor_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_accel_scale_factor_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_compensated_accel_t */
+
+static int mipc_filter_data_compensated_accel_read(mipc_reader_t *r,
+                                                   mipc_filter_data_compensated_accel_t *out) {
+    size_t i;
+    mipc_rd_push(r, "accel");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->accel[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_compensated_accel_write(mipc_writer_t *w, const mipc_filter_data_compensated_accel_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->accel[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_compensated_accel_encode(const mipc_filter_data_compensated_accel_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_compensated_accel_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_compensated_accel_load(const uint8_t *d,
+                                                   mipc_filter_data_compensated_accel_t *out) {
+    out->accel[0] = mipc_ld_f32(d + 0);
+    out->accel[1] = mipc_ld_f32(d + 4);
+    out->accel[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_compensated_accel_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_compensated_accel_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_compensated_accel_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_compensated_accel_t *out,
+                                                        mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_compensated_accel_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_compensated_accel_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_standard_atmosphere_t */
+
+static int mipc_filter_data_standard_atmosphere_read(mipc_reader_t *r,
+                                                     mipc_filter_data_standard_atmosphere_t *out) {
+    mipc_rd_push(r, "geometric_altitude");
+    if (mipc_rd_f32(r, &out->geometric_altitude)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "geopotential_altitude");
+    if (mipc_rd_f32(r, &out->geopotential_altitude)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "temperature");
+    if (mipc_rd_f32(r, &out->temperature)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "pressure");
+    if (mipc_rd_f32(r, &out->pressure)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "density");
+    if (mipc_rd_f32(r, &out->density)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_standard_atmosphere_write(mipc_writer_t *w,
+                                           const mipc_filter_data_standard_atmosphere_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->geometric_altitude)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->geopotential_altitude)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->temperature)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->pressure)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->density)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_standard_atmosphere_encode(const mipc_filter_data_standard_atmosphere_t *value,
+                                                          uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_standard_atmosphere_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -4330,174 +2436,77 @@ mip_status_t mip_filter_data_standard_atmosphere_encode(const mip_filter_data_st
 
 /* The layout is 22 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_standard_atmosphere_load(const uint8_t *d,
-                                                    mip_filter_data_standard_atmosphere_t *out) {
-    out->geometric_altitude = mip_ld_f32(d + 0);
-    out->geopotential_altitude = mip_ld_f32(d + 4);
-    out->temperature = mip_ld_f32(d + 8);
-    out->pressure = mip_ld_f32(d + 12);
-    out->density = mip_ld_f32(d + 16);
-    out->valid_flags = mip_ld_u16(d + 20);
+static int mipc_filter_data_standard_atmosphere_load(const uint8_t *d,
+                                                     mipc_filter_data_standard_atmosphere_t *out) {
+    out->geometric_altitude = mipc_ld_f32(d + 0);
+    out->geopotential_altitude = mipc_ld_f32(d + 4);
+    out->temperature = mipc_ld_f32(d + 8);
+    out->pressure = mipc_ld_f32(d + 12);
+    out->density = mipc_ld_f32(d + 16);
+    out->valid_flags = mipc_ld_u16(d + 20);
     return 0;
 }
 
 /* The general reader: lengths other than 22, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_standard_atmosphere_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_standard_atmosphere_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_standard_atmosphere_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_standard_atmosphere_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_standard_atmosphere_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_standard_atmosphere_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_standard_atmosphere_t *out,
-                                                        mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
+                                                          mipc_filter_data_standard_atmosphere_t *out,
+                                                          mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 22 && mip_filter_data_standard_atmosphere_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 22 && mipc_filter_data_standard_atmosphere_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_standard_atmosphere_decode_read(data, len, out, err);
+    return mipc_filter_data_standard_atmosphere_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_standard_atmosphere_to_json(mip_jw_t *w,
-                                                 const mip_filter_data_standard_atmosphere_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "geometric_altitude");
-    mip_jw_f32(w, &in->geometric_altitude);
-    mip_jw_key(w, &first, "geopotential_altitude");
-    mip_jw_f32(w, &in->geopotential_altitude);
-    mip_jw_key(w, &first, "temperature");
-    mip_jw_f32(w, &in->temperature);
-    mip_jw_key(w, &first, "pressure");
-    mip_jw_f32(w, &in->pressure);
-    mip_jw_key(w, &first, "density");
-    mip_jw_f32(w, &in->density);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_pressure_altitude_t */
 
-int mip_filter_data_standard_atmosphere_from_json(mip_jr_t *jr, size_t pos,
-                                                  mip_filter_data_standard_atmosphere_t *out) {
-    static const char *const keys[] = {
-        "geometric_altitude", "geopotential_altitude", "temperature", "pressure", "density", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 6)) {
+static int mipc_filter_data_pressure_altitude_read(mipc_reader_t *r,
+                                                   mipc_filter_data_pressure_altitude_t *out) {
+    mipc_rd_push(r, "pressure_altitude");
+    if (mipc_rd_f32(r, &out->pressure_altitude)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "geometric_altitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"geometric_altitude\"");
-    }
-    {
-        mip_jr_push(jr, "geometric_altitude");
-        if (mip_jr_f32(jr, vp, &out->geometric_altitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "geopotential_altitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"geopotential_altitude\"");
-    }
-    {
-        mip_jr_push(jr, "geopotential_altitude");
-        if (mip_jr_f32(jr, vp, &out->geopotential_altitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "temperature", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"temperature\"");
-    }
-    {
-        mip_jr_push(jr, "temperature");
-        if (mip_jr_f32(jr, vp, &out->temperature)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "pressure", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"pressure\"");
-    }
-    {
-        mip_jr_push(jr, "pressure");
-        if (mip_jr_f32(jr, vp, &out->pressure)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "density", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"density\"");
-    }
-    {
-        mip_jr_push(jr, "density");
-        if (mip_jr_f32(jr, vp, &out->density)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_pressure_altitude_t */
-
-static int mip_filter_data_pressure_altitude_read(mip_reader_t *r, mip_filter_data_pressure_altitude_t *out) {
-    mip_rd_push(r, "pressure_altitude");
-    if (mip_rd_f32(r, &out->pressure_altitude)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_filter_data_pressure_altitude_write(mip_writer_t *w,
-                                                            const mip_filter_data_pressure_altitude_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->pressure_altitude)) != MIP_OK) {
+static mipc_status_t
+mipc_filter_data_pressure_altitude_write(mipc_writer_t *w, const mipc_filter_data_pressure_altitude_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->pressure_altitude)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_pressure_altitude_encode(const mip_filter_data_pressure_altitude_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_pressure_altitude_encode(const mipc_filter_data_pressure_altitude_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_pressure_altitude_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_pressure_altitude_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -4505,2474 +2514,1352 @@ mip_status_t mip_filter_data_pressure_altitude_encode(const mip_filter_data_pres
 
 /* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_pressure_altitude_load(const uint8_t *d,
-                                                  mip_filter_data_pressure_altitude_t *out) {
-    out->pressure_altitude = mip_ld_f32(d + 0);
-    out->valid_flags = mip_ld_u16(d + 4);
+static int mipc_filter_data_pressure_altitude_load(const uint8_t *d,
+                                                   mipc_filter_data_pressure_altitude_t *out) {
+    out->pressure_altitude = mipc_ld_f32(d + 0);
+    out->valid_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
 /* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_pressure_altitude_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_pressure_altitude_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_pressure_altitude_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_pressure_altitude_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_pressure_altitude_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_pressure_altitude_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_pressure_altitude_t *out,
-                                                      mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_pressure_altitude_t *out,
+                                                        mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 6 && mip_filter_data_pressure_altitude_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 6 && mipc_filter_data_pressure_altitude_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_pressure_altitude_decode_read(data, len, out, err);
+    return mipc_filter_data_pressure_altitude_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_pressure_altitude_to_json(mip_jw_t *w, const mip_filter_data_pressure_altitude_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "pressure_altitude");
-    mip_jw_f32(w, &in->pressure_altitude);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_pressure_altitude_from_json(mip_jr_t *jr, size_t pos,
-                                                mip_filter_data_pressure_altitude_t *out) {
-    static const char *const keys[] = {"pressure_altitude", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "pressure_altitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"pressure_altitude\"");
-    }
-    {
-        mip_jr_push(jr, "pressure_altitude");
-        if (mip_jr_f32(jr, vp, &out->pressure_altitude)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_mag_auto_hard_iron_offset_t */
-
-static int mip_filter_data_mag_auto_hard_iron_offset_read(mip_reader_t *r,
-                                                          mip_filter_data_mag_auto_hard_iron_offset_t *out) {
-    size_t i;
-    mip_rd_push(r, "hard_iron_offset");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->hard_iron_offset[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_mag_auto_hard_iron_offset_write(mip_writer_t *w,
-                                                const mip_filter_data_mag_auto_hard_iron_offset_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->hard_iron_offset[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_mag_auto_hard_iron_offset_encode(const mip_filter_data_mag_auto_hard_iron_offset_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_mag_auto_hard_iron_offset_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_mag_auto_hard_iron_offset_load(const uint8_t *d,
-                                                          mip_filter_data_mag_auto_hard_iron_offset_t *out) {
-    out->hard_iron_offset[0] = mip_ld_f32(d + 0);
-    out->hard_iron_offset[1] = mip_ld_f32(d + 4);
-    out->hard_iron_offset[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_mag_auto_hard_iron_offset_t *out,
-                                                 mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_mag_auto_hard_iron_offset_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_mag_auto_hard_iron_offset_to_json(
-    mip_jw_t *w, const mip_filter_data_mag_auto_hard_iron_offset_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "hard_iron_offset");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->hard_iron_offset[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_mag_auto_hard_iron_offset_from_json(mip_jr_t *jr, size_t pos,
-                                                        mip_filter_data_mag_auto_hard_iron_offset_t *out) {
-    static const char *const keys[] = {"hard_iron_offset", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "hard_iron_offset", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"hard_iron_offset\"");
-    }
-    {
-        mip_jr_push(jr, "hard_iron_offset");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->hard_iron_offset[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_mag_auto_soft_iron_matrix_t */
-
-static int mip_filter_data_mag_auto_soft_iron_matrix_read(mip_reader_t *r,
-                                                          mip_filter_data_mag_auto_soft_iron_matrix_t *out) {
-    size_t i;
-    mip_rd_push(r, "soft_iron_matrix");
-    for (i = 0; i < 9; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->soft_iron_matrix[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_mag_auto_soft_iron_matrix_write(mip_writer_t *w,
-                                                const mip_filter_data_mag_auto_soft_iron_matrix_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 9; i++) {
-        if ((st = mip_wr_f32(w, &in->soft_iron_matrix[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_mag_auto_soft_iron_matrix_encode(const mip_filter_data_mag_auto_soft_iron_matrix_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_mag_auto_soft_iron_matrix_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_mag_auto_soft_iron_matrix_load(const uint8_t *d,
-                                                          mip_filter_data_mag_auto_soft_iron_matrix_t *out) {
-    out->soft_iron_matrix[0] = mip_ld_f32(d + 0);
-    out->soft_iron_matrix[1] = mip_ld_f32(d + 4);
-    out->soft_iron_matrix[2] = mip_ld_f32(d + 8);
-    out->soft_iron_matrix[3] = mip_ld_f32(d + 12);
-    out->soft_iron_matrix[4] = mip_ld_f32(d + 16);
-    out->soft_iron_matrix[5] = mip_ld_f32(d + 20);
-    out->soft_iron_matrix[6] = mip_ld_f32(d + 24);
-    out->soft_iron_matrix[7] = mip_ld_f32(d + 28);
-    out->soft_iron_matrix[8] = mip_ld_f32(d + 32);
-    out->valid_flags = mip_ld_u16(d + 36);
-    return 0;
-}
-
-/* The general reader: lengths other than 38, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_mag_auto_soft_iron_matrix_t *out,
-                                                 mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_mag_auto_soft_iron_matrix_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_mag_auto_soft_iron_matrix_to_json(
-    mip_jw_t *w, const mip_filter_data_mag_auto_soft_iron_matrix_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "soft_iron_matrix");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 9; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->soft_iron_matrix[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_mag_auto_soft_iron_matrix_from_json(mip_jr_t *jr, size_t pos,
-                                                        mip_filter_data_mag_auto_soft_iron_matrix_t *out) {
-    static const char *const keys[] = {"soft_iron_matrix", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "soft_iron_matrix", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"soft_iron_matrix\"");
-    }
-    {
-        mip_jr_push(jr, "soft_iron_matrix");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 9) {
-                return mip_jr_fail(jr, "more than 9 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->soft_iron_matrix[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 9) {
-            return mip_jr_fail(jr, "expected 9 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t */
-
-static int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "hard_iron_offset_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->hard_iron_offset_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->hard_iron_offset_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
-    const mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_mag_auto_hard_iron_offset_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(
-    const uint8_t *d, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
-    out->hard_iron_offset_uncertainty[0] = mip_ld_f32(d + 0);
-    out->hard_iron_offset_uncertainty[1] = mip_ld_f32(d + 4);
-    out->hard_iron_offset_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_mag_auto_hard_iron_offset_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "hard_iron_offset_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->hard_iron_offset_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_mag_auto_hard_iron_offset_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
-    static const char *const keys[] = {"hard_iron_offset_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "hard_iron_offset_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"hard_iron_offset_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "hard_iron_offset_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->hard_iron_offset_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t */
-
-static int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "soft_iron_matrix_uncertainty");
-    for (i = 0; i < 9; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->soft_iron_matrix_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 9; i++) {
-        if ((st = mip_wr_f32(w, &in->soft_iron_matrix_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
-    const mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(
-    const uint8_t *d, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
-    out->soft_iron_matrix_uncertainty[0] = mip_ld_f32(d + 0);
-    out->soft_iron_matrix_uncertainty[1] = mip_ld_f32(d + 4);
-    out->soft_iron_matrix_uncertainty[2] = mip_ld_f32(d + 8);
-    out->soft_iron_matrix_uncertainty[3] = mip_ld_f32(d + 12);
-    out->soft_iron_matrix_uncertainty[4] = mip_ld_f32(d + 16);
-    out->soft_iron_matrix_uncertainty[5] = mip_ld_f32(d + 20);
-    out->soft_iron_matrix_uncertainty[6] = mip_ld_f32(d + 24);
-    out->soft_iron_matrix_uncertainty[7] = mip_ld_f32(d + 28);
-    out->soft_iron_matrix_uncertainty[8] = mip_ld_f32(d + 32);
-    out->valid_flags = mip_ld_u16(d + 36);
-    return 0;
-}
-
-/* The general reader: lengths other than 38, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 38 && mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "soft_iron_matrix_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 9; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->soft_iron_matrix_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
-    static const char *const keys[] = {"soft_iron_matrix_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "soft_iron_matrix_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"soft_iron_matrix_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "soft_iron_matrix_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 9) {
-                return mip_jr_fail(jr, "more than 9 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->soft_iron_matrix_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 9) {
-            return mip_jr_fail(jr, "expected 9 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_gnss_antenna_offset_correction_t */
+/* ---- mipc_filter_data_mag_auto_hard_iron_offset_t */
 
 static int
-mip_filter_data_gnss_antenna_offset_correction_read(mip_reader_t *r,
-                                                    mip_filter_data_gnss_antenna_offset_correction_t *out) {
+mipc_filter_data_mag_auto_hard_iron_offset_read(mipc_reader_t *r,
+                                                mipc_filter_data_mag_auto_hard_iron_offset_t *out) {
     size_t i;
-    mip_rd_push(r, "offset");
+    mipc_rd_push(r, "hard_iron_offset");
     for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->offset[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->hard_iron_offset[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_filter_data_gnss_antenna_offset_correction_write(
-    mip_writer_t *w, const mip_filter_data_gnss_antenna_offset_correction_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_mag_auto_hard_iron_offset_write(mipc_writer_t *w,
+                                                 const mipc_filter_data_mag_auto_hard_iron_offset_t *in) {
+    mipc_status_t st;
     size_t i;
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->offset[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->hard_iron_offset[i])) != MIPC_OK) {
             return st;
         }
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_encode(
-    const mip_filter_data_gnss_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gnss_antenna_offset_correction_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int
-mip_filter_data_gnss_antenna_offset_correction_load(const uint8_t *d,
-                                                    mip_filter_data_gnss_antenna_offset_correction_t *out) {
-    out->offset[0] = mip_ld_f32(d + 0);
-    out->offset[1] = mip_ld_f32(d + 4);
-    out->offset[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_gnss_antenna_offset_correction_t *out,
-                                                      mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gnss_antenna_offset_correction_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gnss_antenna_offset_correction_to_json(
-    mip_jw_t *w, const mip_filter_data_gnss_antenna_offset_correction_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "offset");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->offset[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gnss_antenna_offset_correction_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_gnss_antenna_offset_correction_t *out) {
-    static const char *const keys[] = {"offset", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "offset", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"offset\"");
-    }
-    {
-        mip_jr_push(jr, "offset");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->offset[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_gnss_antenna_offset_correction_uncertainty_t */
-
-static int mip_filter_data_gnss_antenna_offset_correction_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "offset_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->offset_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->offset_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
-    const mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gnss_antenna_offset_correction_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(
-    const uint8_t *d, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
-    out->offset_uncertainty[0] = mip_ld_f32(d + 0);
-    out->offset_uncertainty[1] = mip_ld_f32(d + 4);
-    out->offset_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gnss_antenna_offset_correction_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "offset_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->offset_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gnss_antenna_offset_correction_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
-    static const char *const keys[] = {"offset_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "offset_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"offset_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "offset_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->offset_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_multi_antenna_offset_correction_t */
-
-static int
-mip_filter_data_multi_antenna_offset_correction_read(mip_reader_t *r,
-                                                     mip_filter_data_multi_antenna_offset_correction_t *out) {
-    size_t i;
-    mip_rd_push(r, "receiver_id");
-    if (mip_rd_u8(r, &out->receiver_id)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "offset");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->offset[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_multi_antenna_offset_correction_write(
-    mip_writer_t *w, const mip_filter_data_multi_antenna_offset_correction_t *in) {
-    mip_status_t st;
-    size_t i;
-    if ((st = mip_wr_u8(w, &in->receiver_id)) != MIP_OK) {
-        return st;
-    }
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->offset[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_multi_antenna_offset_correction_encode(
-    const mip_filter_data_multi_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_multi_antenna_offset_correction_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int
-mip_filter_data_multi_antenna_offset_correction_load(const uint8_t *d,
-                                                     mip_filter_data_multi_antenna_offset_correction_t *out) {
-    out->receiver_id = mip_ld_u8(d + 0);
-    out->offset[0] = mip_ld_f32(d + 1);
-    out->offset[1] = mip_ld_f32(d + 5);
-    out->offset[2] = mip_ld_f32(d + 9);
-    out->valid_flags = mip_ld_u16(d + 13);
-    return 0;
-}
-
-/* The general reader: lengths other than 15, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_multi_antenna_offset_correction_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_multi_antenna_offset_correction_t *out,
-                                                       mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_multi_antenna_offset_correction_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_multi_antenna_offset_correction_to_json(
-    mip_jw_t *w, const mip_filter_data_multi_antenna_offset_correction_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "receiver_id");
-    mip_jw_u8(w, &in->receiver_id);
-    mip_jw_key(w, &first, "offset");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->offset[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_multi_antenna_offset_correction_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_multi_antenna_offset_correction_t *out) {
-    static const char *const keys[] = {"receiver_id", "offset", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "receiver_id", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"receiver_id\"");
-    }
-    {
-        mip_jr_push(jr, "receiver_id");
-        if (mip_jr_u8(jr, vp, &out->receiver_id)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "offset", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"offset\"");
-    }
-    {
-        mip_jr_push(jr, "offset");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->offset[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_multi_antenna_offset_correction_uncertainty_t */
-
-static int mip_filter_data_multi_antenna_offset_correction_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "receiver_id");
-    if (mip_rd_u8(r, &out->receiver_id)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "offset_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->offset_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_multi_antenna_offset_correction_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    if ((st = mip_wr_u8(w, &in->receiver_id)) != MIP_OK) {
-        return st;
-    }
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->offset_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_encode(
-    const mip_filter_data_multi_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
-    size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_multi_antenna_offset_correction_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_multi_antenna_offset_correction_uncertainty_load(
-    const uint8_t *d, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
-    out->receiver_id = mip_ld_u8(d + 0);
-    out->offset_uncertainty[0] = mip_ld_f32(d + 1);
-    out->offset_uncertainty[1] = mip_ld_f32(d + 5);
-    out->offset_uncertainty[2] = mip_ld_f32(d + 9);
-    out->valid_flags = mip_ld_u16(d + 13);
-    return 0;
-}
-
-/* The general reader: lengths other than 15, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_multi_antenna_offset_correction_uncertainty_read(&r, out) ? MIP_ERR_DECODE
-                                                                                     : MIP_OK;
-}
-
-mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 15 && mip_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_multi_antenna_offset_correction_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_multi_antenna_offset_correction_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "receiver_id");
-    mip_jw_u8(w, &in->receiver_id);
-    mip_jw_key(w, &first, "offset_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->offset_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_multi_antenna_offset_correction_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
-    static const char *const keys[] = {"receiver_id", "offset_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "receiver_id", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"receiver_id\"");
-    }
-    {
-        mip_jr_push(jr, "receiver_id");
-        if (mip_jr_u8(jr, vp, &out->receiver_id)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "offset_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"offset_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "offset_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->offset_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ecef_position_uncertainty_t */
-
-static int mip_filter_data_ecef_position_uncertainty_read(mip_reader_t *r,
-                                                          mip_filter_data_ecef_position_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "position_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->position_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_ecef_position_uncertainty_write(mip_writer_t *w,
-                                                const mip_filter_data_ecef_position_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->position_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ecef_position_uncertainty_encode(const mip_filter_data_ecef_position_uncertainty_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ecef_position_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ecef_position_uncertainty_load(const uint8_t *d,
-                                                          mip_filter_data_ecef_position_uncertainty_t *out) {
-    out->position_uncertainty[0] = mip_ld_f32(d + 0);
-    out->position_uncertainty[1] = mip_ld_f32(d + 4);
-    out->position_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ecef_position_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_position_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ecef_position_uncertainty_t *out,
-                                                 mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_ecef_position_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ecef_position_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ecef_position_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_ecef_position_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "position_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->position_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ecef_position_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                        mip_filter_data_ecef_position_uncertainty_t *out) {
-    static const char *const keys[] = {"position_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "position_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"position_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "position_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->position_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ecef_velocity_uncertainty_t */
-
-static int mip_filter_data_ecef_velocity_uncertainty_read(mip_reader_t *r,
-                                                          mip_filter_data_ecef_velocity_uncertainty_t *out) {
-    size_t i;
-    mip_rd_push(r, "velocity_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->velocity_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_ecef_velocity_uncertainty_write(mip_writer_t *w,
-                                                const mip_filter_data_ecef_velocity_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->velocity_uncertainty[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ecef_velocity_uncertainty_encode(const mip_filter_data_ecef_velocity_uncertainty_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ecef_velocity_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ecef_velocity_uncertainty_load(const uint8_t *d,
-                                                          mip_filter_data_ecef_velocity_uncertainty_t *out) {
-    out->velocity_uncertainty[0] = mip_ld_f32(d + 0);
-    out->velocity_uncertainty[1] = mip_ld_f32(d + 4);
-    out->velocity_uncertainty[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ecef_velocity_uncertainty_t *out,
-                                                 mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_ecef_velocity_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ecef_velocity_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ecef_velocity_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_ecef_velocity_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "velocity_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->velocity_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ecef_velocity_uncertainty_from_json(mip_jr_t *jr, size_t pos,
-                                                        mip_filter_data_ecef_velocity_uncertainty_t *out) {
-    static const char *const keys[] = {"velocity_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "velocity_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"velocity_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "velocity_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->velocity_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ecef_position_t */
-
-static int mip_filter_data_ecef_position_read(mip_reader_t *r, mip_filter_data_ecef_position_t *out) {
-    size_t i;
-    mip_rd_push(r, "position");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f64(r, &out->position[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_ecef_position_write(mip_writer_t *w,
-                                                        const mip_filter_data_ecef_position_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f64(w, &in->position[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_ecef_position_encode(const mip_filter_data_ecef_position_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ecef_position_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ecef_position_load(const uint8_t *d, mip_filter_data_ecef_position_t *out) {
-    out->position[0] = mip_ld_f64(d + 0);
-    out->position[1] = mip_ld_f64(d + 8);
-    out->position[2] = mip_ld_f64(d + 16);
-    out->valid_flags = mip_ld_u16(d + 24);
-    return 0;
-}
-
-/* The general reader: lengths other than 26, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ecef_position_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ecef_position_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_position_t *out,
-                                                  mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 26 && mip_filter_data_ecef_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ecef_position_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ecef_position_to_json(mip_jw_t *w, const mip_filter_data_ecef_position_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "position");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f64(w, &in->position[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ecef_position_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ecef_position_t *out) {
-    static const char *const keys[] = {"position", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "position", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"position\"");
-    }
-    {
-        mip_jr_push(jr, "position");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f64(jr, ep, &out->position[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ecef_velocity_t */
-
-static int mip_filter_data_ecef_velocity_read(mip_reader_t *r, mip_filter_data_ecef_velocity_t *out) {
-    size_t i;
-    mip_rd_push(r, "velocity");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->velocity[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_ecef_velocity_write(mip_writer_t *w,
-                                                        const mip_filter_data_ecef_velocity_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->velocity[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t mip_filter_data_ecef_velocity_encode(const mip_filter_data_ecef_velocity_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ecef_velocity_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ecef_velocity_load(const uint8_t *d, mip_filter_data_ecef_velocity_t *out) {
-    out->velocity[0] = mip_ld_f32(d + 0);
-    out->velocity[1] = mip_ld_f32(d + 4);
-    out->velocity[2] = mip_ld_f32(d + 8);
-    out->valid_flags = mip_ld_u16(d + 12);
-    return 0;
-}
-
-/* The general reader: lengths other than 14, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ecef_velocity_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ecef_velocity_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ecef_velocity_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_velocity_t *out,
-                                                  mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 14 && mip_filter_data_ecef_velocity_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ecef_velocity_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ecef_velocity_to_json(mip_jw_t *w, const mip_filter_data_ecef_velocity_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "velocity");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->velocity[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ecef_velocity_from_json(mip_jr_t *jr, size_t pos, mip_filter_data_ecef_velocity_t *out) {
-    static const char *const keys[] = {"velocity", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "velocity", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"velocity\"");
-    }
-    {
-        mip_jr_push(jr, "velocity");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->velocity[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_ned_relative_position_t */
-
-static int mip_filter_data_ned_relative_position_read(mip_reader_t *r,
-                                                      mip_filter_data_ned_relative_position_t *out) {
-    size_t i;
-    mip_rd_push(r, "relative_position");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f64(r, &out->relative_position[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_ned_relative_position_write(mip_writer_t *w,
-                                            const mip_filter_data_ned_relative_position_t *in) {
-    mip_status_t st;
-    size_t i;
-    for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f64(w, &in->relative_position[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_ned_relative_position_encode(const mip_filter_data_ned_relative_position_t *value,
-                                             uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_ned_relative_position_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int mip_filter_data_ned_relative_position_load(const uint8_t *d,
-                                                      mip_filter_data_ned_relative_position_t *out) {
-    out->relative_position[0] = mip_ld_f64(d + 0);
-    out->relative_position[1] = mip_ld_f64(d + 8);
-    out->relative_position[2] = mip_ld_f64(d + 16);
-    out->valid_flags = mip_ld_u16(d + 24);
-    return 0;
-}
-
-/* The general reader: lengths other than 26, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_ned_relative_position_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_ned_relative_position_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_ned_relative_position_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_ned_relative_position_t *out,
-                                                          mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 26 && mip_filter_data_ned_relative_position_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_ned_relative_position_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_ned_relative_position_to_json(mip_jw_t *w,
-                                                   const mip_filter_data_ned_relative_position_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "relative_position");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f64(w, &in->relative_position[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_ned_relative_position_from_json(mip_jr_t *jr, size_t pos,
-                                                    mip_filter_data_ned_relative_position_t *out) {
-    static const char *const keys[] = {"relative_position", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "relative_position", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"relative_position\"");
-    }
-    {
-        mip_jr_push(jr, "relative_position");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f64(jr, ep, &out->relative_position[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_gnss_position_aiding_status_t */
-
-static int
-mip_filter_data_gnss_position_aiding_status_read(mip_reader_t *r,
-                                                 mip_filter_data_gnss_position_aiding_status_t *out) {
-    size_t i;
-    mip_rd_push(r, "receiver_id");
-    if (mip_rd_u8(r, &out->receiver_id)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "time_of_week");
-    if (mip_rd_f32(r, &out->time_of_week)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "status");
-    if (mip_rd_u16(r, &out->status)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "reserved");
-    for (i = 0; i < 8; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_u8(r, &out->reserved[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_gnss_position_aiding_status_write(mip_writer_t *w,
-                                                  const mip_filter_data_gnss_position_aiding_status_t *in) {
-    mip_status_t st;
-    size_t i;
-    if ((st = mip_wr_u8(w, &in->receiver_id)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->time_of_week)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->status)) != MIP_OK) {
-        return st;
-    }
-    for (i = 0; i < 8; i++) {
-        if ((st = mip_wr_u8(w, &in->reserved[i])) != MIP_OK) {
-            return st;
-        }
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gnss_position_aiding_status_encode(const mip_filter_data_gnss_position_aiding_status_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
-    assert(value != NULL);
-    assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gnss_position_aiding_status_write(&w, value);
-    if (st == MIP_OK && len_out) {
-        *len_out = w.len;
-    }
-    return st;
-}
-
-/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
- * byte to the reader path, which reports it. */
-static int
-mip_filter_data_gnss_position_aiding_status_load(const uint8_t *d,
-                                                 mip_filter_data_gnss_position_aiding_status_t *out) {
-    out->receiver_id = mip_ld_u8(d + 0);
-    out->time_of_week = mip_ld_f32(d + 1);
-    out->status = mip_ld_u16(d + 5);
-    out->reserved[0] = mip_ld_u8(d + 7);
-    out->reserved[1] = mip_ld_u8(d + 8);
-    out->reserved[2] = mip_ld_u8(d + 9);
-    out->reserved[3] = mip_ld_u8(d + 10);
-    out->reserved[4] = mip_ld_u8(d + 11);
-    out->reserved[5] = mip_ld_u8(d + 12);
-    out->reserved[6] = mip_ld_u8(d + 13);
-    out->reserved[7] = mip_ld_u8(d + 14);
-    return 0;
-}
-
-/* The general reader: lengths other than 15, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gnss_position_aiding_status_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_position_aiding_status_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
-    memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_position_aiding_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_gnss_position_aiding_status_t *out,
-                                                   mip_decode_error_t *err) {
-    assert(data != NULL || len == 0);
-    assert(out != NULL);
-    if (len == 15 && mip_filter_data_gnss_position_aiding_status_load(data, out) == 0) {
-        return MIP_OK;
-    }
-    return mip_filter_data_gnss_position_aiding_status_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_gnss_position_aiding_status_to_json(
-    mip_jw_t *w, const mip_filter_data_gnss_position_aiding_status_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "receiver_id");
-    mip_jw_u8(w, &in->receiver_id);
-    mip_jw_key(w, &first, "time_of_week");
-    mip_jw_f32(w, &in->time_of_week);
-    mip_jw_key(w, &first, "status");
-    mip_jw_u16(w, &in->status);
-    mip_jw_key(w, &first, "reserved");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 8; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_u8(w, &in->reserved[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_gnss_position_aiding_status_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_gnss_position_aiding_status_t *out) {
-    static const char *const keys[] = {"receiver_id", "time_of_week", "status", "reserved"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "receiver_id", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"receiver_id\"");
-    }
-    {
-        mip_jr_push(jr, "receiver_id");
-        if (mip_jr_u8(jr, vp, &out->receiver_id)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "time_of_week", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"time_of_week\"");
-    }
-    {
-        mip_jr_push(jr, "time_of_week");
-        if (mip_jr_f32(jr, vp, &out->time_of_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "status", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"status\"");
-    }
-    {
-        mip_jr_push(jr, "status");
-        if (mip_jr_u16(jr, vp, &out->status)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "reserved", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"reserved\"");
-    }
-    {
-        mip_jr_push(jr, "reserved");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 8) {
-                return mip_jr_fail(jr, "more than 8 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_u8(jr, ep, &out->reserved[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 8) {
-            return mip_jr_fail(jr, "expected 8 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_aiding_measurement_summary_t */
-
-static int
-mip_filter_data_aiding_measurement_summary_read(mip_reader_t *r,
-                                                mip_filter_data_aiding_measurement_summary_t *out) {
-    mip_rd_push(r, "time_of_week");
-    if (mip_rd_f32(r, &out->time_of_week)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "source");
-    if (mip_rd_u8(r, &out->source)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "type");
-    if (mip_rd_u8(r, &out->type)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "indicator");
-    if (mip_rd_u8(r, &out->indicator)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_aiding_measurement_summary_write(mip_writer_t *w,
-                                                 const mip_filter_data_aiding_measurement_summary_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->time_of_week)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->source)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->indicator)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_aiding_measurement_summary_encode(const mip_filter_data_aiding_measurement_summary_t *value,
+mipc_status_t
+mipc_filter_data_mag_auto_hard_iron_offset_encode(const mipc_filter_data_mag_auto_hard_iron_offset_t *value,
                                                   uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_aiding_measurement_summary_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_mag_auto_hard_iron_offset_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_mag_auto_hard_iron_offset_load(const uint8_t *d,
+                                                mipc_filter_data_mag_auto_hard_iron_offset_t *out) {
+    out->hard_iron_offset[0] = mipc_ld_f32(d + 0);
+    out->hard_iron_offset[1] = mipc_ld_f32(d + 4);
+    out->hard_iron_offset[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_hard_iron_offset_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_mag_auto_hard_iron_offset_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_mag_auto_hard_iron_offset_t *out,
+                                                  mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_mag_auto_hard_iron_offset_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_mag_auto_hard_iron_offset_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_mag_auto_soft_iron_matrix_t */
+
+static int
+mipc_filter_data_mag_auto_soft_iron_matrix_read(mipc_reader_t *r,
+                                                mipc_filter_data_mag_auto_soft_iron_matrix_t *out) {
+    size_t i;
+    mipc_rd_push(r, "soft_iron_matrix");
+    for (i = 0; i < 9; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->soft_iron_matrix[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_mag_auto_soft_iron_matrix_write(mipc_writer_t *w,
+                                                 const mipc_filter_data_mag_auto_soft_iron_matrix_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 9; i++) {
+        if ((st = mipc_wr_f32(w, &in->soft_iron_matrix[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_mag_auto_soft_iron_matrix_encode(const mipc_filter_data_mag_auto_soft_iron_matrix_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_mag_auto_soft_iron_matrix_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_mag_auto_soft_iron_matrix_load(const uint8_t *d,
+                                                mipc_filter_data_mag_auto_soft_iron_matrix_t *out) {
+    out->soft_iron_matrix[0] = mipc_ld_f32(d + 0);
+    out->soft_iron_matrix[1] = mipc_ld_f32(d + 4);
+    out->soft_iron_matrix[2] = mipc_ld_f32(d + 8);
+    out->soft_iron_matrix[3] = mipc_ld_f32(d + 12);
+    out->soft_iron_matrix[4] = mipc_ld_f32(d + 16);
+    out->soft_iron_matrix[5] = mipc_ld_f32(d + 20);
+    out->soft_iron_matrix[6] = mipc_ld_f32(d + 24);
+    out->soft_iron_matrix[7] = mipc_ld_f32(d + 28);
+    out->soft_iron_matrix[8] = mipc_ld_f32(d + 32);
+    out->valid_flags = mipc_ld_u16(d + 36);
+    return 0;
+}
+
+/* The general reader: lengths other than 38, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_soft_iron_matrix_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_mag_auto_soft_iron_matrix_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_mag_auto_soft_iron_matrix_t *out,
+                                                  mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 38 && mipc_filter_data_mag_auto_soft_iron_matrix_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_mag_auto_soft_iron_matrix_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t */
+
+static int mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "hard_iron_offset_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->hard_iron_offset_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->hard_iron_offset_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
+    const mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out) {
+    out->hard_iron_offset_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->hard_iron_offset_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->hard_iron_offset_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t */
+
+static int mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "soft_iron_matrix_uncertainty");
+    for (i = 0; i < 9; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->soft_iron_matrix_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 9; i++) {
+        if ((st = mipc_wr_f32(w, &in->soft_iron_matrix_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
+    const mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 38 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out) {
+    out->soft_iron_matrix_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->soft_iron_matrix_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->soft_iron_matrix_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->soft_iron_matrix_uncertainty[3] = mipc_ld_f32(d + 12);
+    out->soft_iron_matrix_uncertainty[4] = mipc_ld_f32(d + 16);
+    out->soft_iron_matrix_uncertainty[5] = mipc_ld_f32(d + 20);
+    out->soft_iron_matrix_uncertainty[6] = mipc_ld_f32(d + 24);
+    out->soft_iron_matrix_uncertainty[7] = mipc_ld_f32(d + 28);
+    out->soft_iron_matrix_uncertainty[8] = mipc_ld_f32(d + 32);
+    out->valid_flags = mipc_ld_u16(d + 36);
+    return 0;
+}
+
+/* The general reader: lengths other than 38, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 38 && mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_gnss_antenna_offset_correction_t */
+
+static int
+mipc_filter_data_gnss_antenna_offset_correction_read(mipc_reader_t *r,
+                                                     mipc_filter_data_gnss_antenna_offset_correction_t *out) {
+    size_t i;
+    mipc_rd_push(r, "offset");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->offset[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_write(
+    mipc_writer_t *w, const mipc_filter_data_gnss_antenna_offset_correction_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->offset[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_encode(
+    const mipc_filter_data_gnss_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gnss_antenna_offset_correction_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_gnss_antenna_offset_correction_load(const uint8_t *d,
+                                                     mipc_filter_data_gnss_antenna_offset_correction_t *out) {
+    out->offset[0] = mipc_ld_f32(d + 0);
+    out->offset[1] = mipc_ld_f32(d + 4);
+    out->offset[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_antenna_offset_correction_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gnss_antenna_offset_correction_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
+                                                       mipc_filter_data_gnss_antenna_offset_correction_t *out,
+                                                       mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_gnss_antenna_offset_correction_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gnss_antenna_offset_correction_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t */
+
+static int mipc_filter_data_gnss_antenna_offset_correction_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "offset_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->offset_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->offset_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
+    const mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gnss_antenna_offset_correction_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_gnss_antenna_offset_correction_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *out) {
+    out->offset_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->offset_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->offset_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gnss_antenna_offset_correction_uncertainty_read(&r, out) ? MIPC_ERR_DECODE
+                                                                                     : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_gnss_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gnss_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_multi_antenna_offset_correction_t */
+
+static int mipc_filter_data_multi_antenna_offset_correction_read(
+    mipc_reader_t *r, mipc_filter_data_multi_antenna_offset_correction_t *out) {
+    size_t i;
+    mipc_rd_push(r, "receiver_id");
+    if (mipc_rd_u8(r, &out->receiver_id)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "offset");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->offset[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_multi_antenna_offset_correction_write(
+    mipc_writer_t *w, const mipc_filter_data_multi_antenna_offset_correction_t *in) {
+    mipc_status_t st;
+    size_t i;
+    if ((st = mipc_wr_u8(w, &in->receiver_id)) != MIPC_OK) {
+        return st;
+    }
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->offset[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_encode(
+    const mipc_filter_data_multi_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_multi_antenna_offset_correction_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_multi_antenna_offset_correction_load(
+    const uint8_t *d, mipc_filter_data_multi_antenna_offset_correction_t *out) {
+    out->receiver_id = mipc_ld_u8(d + 0);
+    out->offset[0] = mipc_ld_f32(d + 1);
+    out->offset[1] = mipc_ld_f32(d + 5);
+    out->offset[2] = mipc_ld_f32(d + 9);
+    out->valid_flags = mipc_ld_u16(d + 13);
+    return 0;
+}
+
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_multi_antenna_offset_correction_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_multi_antenna_offset_correction_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_t *out,
+    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 15 && mipc_filter_data_multi_antenna_offset_correction_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_multi_antenna_offset_correction_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_multi_antenna_offset_correction_uncertainty_t */
+
+static int mipc_filter_data_multi_antenna_offset_correction_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "receiver_id");
+    if (mipc_rd_u8(r, &out->receiver_id)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "offset_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->offset_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    if ((st = mipc_wr_u8(w, &in->receiver_id)) != MIPC_OK) {
+        return st;
+    }
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->offset_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_encode(
+    const mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_multi_antenna_offset_correction_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_multi_antenna_offset_correction_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *out) {
+    out->receiver_id = mipc_ld_u8(d + 0);
+    out->offset_uncertainty[0] = mipc_ld_f32(d + 1);
+    out->offset_uncertainty[1] = mipc_ld_f32(d + 5);
+    out->offset_uncertainty[2] = mipc_ld_f32(d + 9);
+    out->valid_flags = mipc_ld_u16(d + 13);
+    return 0;
+}
+
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_multi_antenna_offset_correction_uncertainty_read(&r, out) ? MIPC_ERR_DECODE
+                                                                                      : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 15 && mipc_filter_data_multi_antenna_offset_correction_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_multi_antenna_offset_correction_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ecef_position_uncertainty_t */
+
+static int
+mipc_filter_data_ecef_position_uncertainty_read(mipc_reader_t *r,
+                                                mipc_filter_data_ecef_position_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "position_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->position_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_ecef_position_uncertainty_write(mipc_writer_t *w,
+                                                 const mipc_filter_data_ecef_position_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->position_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ecef_position_uncertainty_encode(const mipc_filter_data_ecef_position_uncertainty_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ecef_position_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_ecef_position_uncertainty_load(const uint8_t *d,
+                                                mipc_filter_data_ecef_position_uncertainty_t *out) {
+    out->position_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->position_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->position_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ecef_position_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ecef_position_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ecef_position_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_ecef_position_uncertainty_t *out,
+                                                  mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_ecef_position_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ecef_position_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ecef_velocity_uncertainty_t */
+
+static int
+mipc_filter_data_ecef_velocity_uncertainty_read(mipc_reader_t *r,
+                                                mipc_filter_data_ecef_velocity_uncertainty_t *out) {
+    size_t i;
+    mipc_rd_push(r, "velocity_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->velocity_uncertainty[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_ecef_velocity_uncertainty_write(mipc_writer_t *w,
+                                                 const mipc_filter_data_ecef_velocity_uncertainty_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->velocity_uncertainty[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ecef_velocity_uncertainty_encode(const mipc_filter_data_ecef_velocity_uncertainty_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ecef_velocity_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_ecef_velocity_uncertainty_load(const uint8_t *d,
+                                                mipc_filter_data_ecef_velocity_uncertainty_t *out) {
+    out->velocity_uncertainty[0] = mipc_ld_f32(d + 0);
+    out->velocity_uncertainty[1] = mipc_ld_f32(d + 4);
+    out->velocity_uncertainty[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ecef_velocity_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ecef_velocity_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ecef_velocity_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_ecef_velocity_uncertainty_t *out,
+                                                  mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_ecef_velocity_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ecef_velocity_uncertainty_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ecef_position_t */
+
+static int mipc_filter_data_ecef_position_read(mipc_reader_t *r, mipc_filter_data_ecef_position_t *out) {
+    size_t i;
+    mipc_rd_push(r, "position");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f64(r, &out->position[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_ecef_position_write(mipc_writer_t *w,
+                                                          const mipc_filter_data_ecef_position_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f64(w, &in->position[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_ecef_position_encode(const mipc_filter_data_ecef_position_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ecef_position_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_ecef_position_load(const uint8_t *d, mipc_filter_data_ecef_position_t *out) {
+    out->position[0] = mipc_ld_f64(d + 0);
+    out->position[1] = mipc_ld_f64(d + 8);
+    out->position[2] = mipc_ld_f64(d + 16);
+    out->valid_flags = mipc_ld_u16(d + 24);
+    return 0;
+}
+
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ecef_position_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ecef_position_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ecef_position_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_ecef_position_t *out,
+                                                    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 26 && mipc_filter_data_ecef_position_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ecef_position_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ecef_velocity_t */
+
+static int mipc_filter_data_ecef_velocity_read(mipc_reader_t *r, mipc_filter_data_ecef_velocity_t *out) {
+    size_t i;
+    mipc_rd_push(r, "velocity");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->velocity[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t mipc_filter_data_ecef_velocity_write(mipc_writer_t *w,
+                                                          const mipc_filter_data_ecef_velocity_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f32(w, &in->velocity[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_ecef_velocity_encode(const mipc_filter_data_ecef_velocity_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ecef_velocity_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 14 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_ecef_velocity_load(const uint8_t *d, mipc_filter_data_ecef_velocity_t *out) {
+    out->velocity[0] = mipc_ld_f32(d + 0);
+    out->velocity[1] = mipc_ld_f32(d + 4);
+    out->velocity[2] = mipc_ld_f32(d + 8);
+    out->valid_flags = mipc_ld_u16(d + 12);
+    return 0;
+}
+
+/* The general reader: lengths other than 14, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ecef_velocity_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ecef_velocity_t *out, mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ecef_velocity_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_ecef_velocity_t *out,
+                                                    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 14 && mipc_filter_data_ecef_velocity_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ecef_velocity_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_ned_relative_position_t */
+
+static int mipc_filter_data_ned_relative_position_read(mipc_reader_t *r,
+                                                       mipc_filter_data_ned_relative_position_t *out) {
+    size_t i;
+    mipc_rd_push(r, "relative_position");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f64(r, &out->relative_position[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_ned_relative_position_write(mipc_writer_t *w,
+                                             const mipc_filter_data_ned_relative_position_t *in) {
+    mipc_status_t st;
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        if ((st = mipc_wr_f64(w, &in->relative_position[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_ned_relative_position_encode(const mipc_filter_data_ned_relative_position_t *value,
+                                              uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_ned_relative_position_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 26 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int mipc_filter_data_ned_relative_position_load(const uint8_t *d,
+                                                       mipc_filter_data_ned_relative_position_t *out) {
+    out->relative_position[0] = mipc_ld_f64(d + 0);
+    out->relative_position[1] = mipc_ld_f64(d + 8);
+    out->relative_position[2] = mipc_ld_f64(d + 16);
+    out->valid_flags = mipc_ld_u16(d + 24);
+    return 0;
+}
+
+/* The general reader: lengths other than 26, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_ned_relative_position_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_ned_relative_position_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_ned_relative_position_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_ned_relative_position_t *out,
+                                                            mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 26 && mipc_filter_data_ned_relative_position_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_ned_relative_position_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_gnss_position_aiding_status_t */
+
+static int
+mipc_filter_data_gnss_position_aiding_status_read(mipc_reader_t *r,
+                                                  mipc_filter_data_gnss_position_aiding_status_t *out) {
+    size_t i;
+    mipc_rd_push(r, "receiver_id");
+    if (mipc_rd_u8(r, &out->receiver_id)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "time_of_week");
+    if (mipc_rd_f32(r, &out->time_of_week)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "status");
+    if (mipc_rd_u16(r, &out->status)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "reserved");
+    for (i = 0; i < 8; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_u8(r, &out->reserved[i])) {
+            return -1;
+        }
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_gnss_position_aiding_status_write(mipc_writer_t *w,
+                                                   const mipc_filter_data_gnss_position_aiding_status_t *in) {
+    mipc_status_t st;
+    size_t i;
+    if ((st = mipc_wr_u8(w, &in->receiver_id)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_f32(w, &in->time_of_week)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u16(w, &in->status)) != MIPC_OK) {
+        return st;
+    }
+    for (i = 0; i < 8; i++) {
+        if ((st = mipc_wr_u8(w, &in->reserved[i])) != MIPC_OK) {
+            return st;
+        }
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t mipc_filter_data_gnss_position_aiding_status_encode(
+    const mipc_filter_data_gnss_position_aiding_status_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gnss_position_aiding_status_write(&w, value);
+    if (st == MIPC_OK && len_out) {
+        *len_out = w.len;
+    }
+    return st;
+}
+
+/* The layout is 15 bytes of plain values: straight loads. -1 sends a bad bool
+ * byte to the reader path, which reports it. */
+static int
+mipc_filter_data_gnss_position_aiding_status_load(const uint8_t *d,
+                                                  mipc_filter_data_gnss_position_aiding_status_t *out) {
+    out->receiver_id = mipc_ld_u8(d + 0);
+    out->time_of_week = mipc_ld_f32(d + 1);
+    out->status = mipc_ld_u16(d + 5);
+    out->reserved[0] = mipc_ld_u8(d + 7);
+    out->reserved[1] = mipc_ld_u8(d + 8);
+    out->reserved[2] = mipc_ld_u8(d + 9);
+    out->reserved[3] = mipc_ld_u8(d + 10);
+    out->reserved[4] = mipc_ld_u8(d + 11);
+    out->reserved[5] = mipc_ld_u8(d + 12);
+    out->reserved[6] = mipc_ld_u8(d + 13);
+    out->reserved[7] = mipc_ld_u8(d + 14);
+    return 0;
+}
+
+/* The general reader: lengths other than 15, bad bool bytes, error details. */
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gnss_position_aiding_status_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_position_aiding_status_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    mipc_reader_init(&r, data, len, err);
+    memset(out, 0, sizeof *out);
+    return mipc_filter_data_gnss_position_aiding_status_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_gnss_position_aiding_status_t *out,
+                                                    mipc_decode_error_t *err) {
+    assert(data != NULL || len == 0);
+    assert(out != NULL);
+    if (len == 15 && mipc_filter_data_gnss_position_aiding_status_load(data, out) == 0) {
+        return MIPC_OK;
+    }
+    return mipc_filter_data_gnss_position_aiding_status_decode_read(data, len, out, err);
+}
+
+/* ---- mipc_filter_data_aiding_measurement_summary_t */
+
+static int
+mipc_filter_data_aiding_measurement_summary_read(mipc_reader_t *r,
+                                                 mipc_filter_data_aiding_measurement_summary_t *out) {
+    mipc_rd_push(r, "time_of_week");
+    if (mipc_rd_f32(r, &out->time_of_week)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "source");
+    if (mipc_rd_u8(r, &out->source)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "type");
+    if (mipc_rd_u8(r, &out->type)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "indicator");
+    if (mipc_rd_u8(r, &out->indicator)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
+}
+
+static mipc_status_t
+mipc_filter_data_aiding_measurement_summary_write(mipc_writer_t *w,
+                                                  const mipc_filter_data_aiding_measurement_summary_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->time_of_week)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u8(w, &in->source)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u8(w, &in->type)) != MIPC_OK) {
+        return st;
+    }
+    if ((st = mipc_wr_u8(w, &in->indicator)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
+}
+
+mipc_status_t
+mipc_filter_data_aiding_measurement_summary_encode(const mipc_filter_data_aiding_measurement_summary_t *value,
+                                                   uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
+    assert(value != NULL);
+    assert(buf != NULL || cap == 0);
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_aiding_measurement_summary_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -6981,151 +3868,79 @@ mip_filter_data_aiding_measurement_summary_encode(const mip_filter_data_aiding_m
 /* The layout is 7 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
 static int
-mip_filter_data_aiding_measurement_summary_load(const uint8_t *d,
-                                                mip_filter_data_aiding_measurement_summary_t *out) {
-    out->time_of_week = mip_ld_f32(d + 0);
-    out->source = mip_ld_u8(d + 4);
-    out->type = mip_ld_u8(d + 5);
-    out->indicator = mip_ld_u8(d + 6);
+mipc_filter_data_aiding_measurement_summary_load(const uint8_t *d,
+                                                 mipc_filter_data_aiding_measurement_summary_t *out) {
+    out->time_of_week = mipc_ld_f32(d + 0);
+    out->source = mipc_ld_u8(d + 4);
+    out->type = mipc_ld_u8(d + 5);
+    out->indicator = mipc_ld_u8(d + 6);
     return 0;
 }
 
 /* The general reader: lengths other than 7, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_aiding_measurement_summary_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_aiding_measurement_summary_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_aiding_measurement_summary_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_aiding_measurement_summary_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_aiding_measurement_summary_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_aiding_measurement_summary_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_aiding_measurement_summary_t *out,
-                                                  mip_decode_error_t *err) {
+mipc_status_t
+mipc_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_aiding_measurement_summary_t *out,
+                                                   mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 7 && mip_filter_data_aiding_measurement_summary_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 7 && mipc_filter_data_aiding_measurement_summary_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_aiding_measurement_summary_decode_read(data, len, out, err);
+    return mipc_filter_data_aiding_measurement_summary_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_aiding_measurement_summary_to_json(
-    mip_jw_t *w, const mip_filter_data_aiding_measurement_summary_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "time_of_week");
-    mip_jw_f32(w, &in->time_of_week);
-    mip_jw_key(w, &first, "source");
-    mip_jw_u8(w, &in->source);
-    mip_jw_key(w, &first, "type");
-    mip_jw_u8(w, &in->type);
-    mip_jw_key(w, &first, "indicator");
-    mip_jw_u8(w, &in->indicator);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_aiding_measurement_summary_from_json(mip_jr_t *jr, size_t pos,
-                                                         mip_filter_data_aiding_measurement_summary_t *out) {
-    static const char *const keys[] = {"time_of_week", "source", "type", "indicator"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 4)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "time_of_week", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"time_of_week\"");
-    }
-    {
-        mip_jr_push(jr, "time_of_week");
-        if (mip_jr_f32(jr, vp, &out->time_of_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "source", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"source\"");
-    }
-    {
-        mip_jr_push(jr, "source");
-        if (mip_jr_u8(jr, vp, &out->source)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "type", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"type\"");
-    }
-    {
-        mip_jr_push(jr, "type");
-        if (mip_jr_u8(jr, vp, &out->type)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "indicator", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"indicator\"");
-    }
-    {
-        mip_jr_push(jr, "indicator");
-        if (mip_jr_u8(jr, vp, &out->indicator)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_odometer_scale_factor_error_t */
+/* ---- mipc_filter_data_odometer_scale_factor_error_t */
 
 static int
-mip_filter_data_odometer_scale_factor_error_read(mip_reader_t *r,
-                                                 mip_filter_data_odometer_scale_factor_error_t *out) {
-    mip_rd_push(r, "scale_factor_error");
-    if (mip_rd_f32(r, &out->scale_factor_error)) {
+mipc_filter_data_odometer_scale_factor_error_read(mipc_reader_t *r,
+                                                  mipc_filter_data_odometer_scale_factor_error_t *out) {
+    mipc_rd_push(r, "scale_factor_error");
+    if (mipc_rd_f32(r, &out->scale_factor_error)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t
-mip_filter_data_odometer_scale_factor_error_write(mip_writer_t *w,
-                                                  const mip_filter_data_odometer_scale_factor_error_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->scale_factor_error)) != MIP_OK) {
+static mipc_status_t
+mipc_filter_data_odometer_scale_factor_error_write(mipc_writer_t *w,
+                                                   const mipc_filter_data_odometer_scale_factor_error_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->scale_factor_error)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_odometer_scale_factor_error_encode(const mip_filter_data_odometer_scale_factor_error_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_encode(
+    const mipc_filter_data_odometer_scale_factor_error_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_odometer_scale_factor_error_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_odometer_scale_factor_error_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -7134,121 +3949,76 @@ mip_filter_data_odometer_scale_factor_error_encode(const mip_filter_data_odomete
 /* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
 static int
-mip_filter_data_odometer_scale_factor_error_load(const uint8_t *d,
-                                                 mip_filter_data_odometer_scale_factor_error_t *out) {
-    out->scale_factor_error = mip_ld_f32(d + 0);
-    out->valid_flags = mip_ld_u16(d + 4);
+mipc_filter_data_odometer_scale_factor_error_load(const uint8_t *d,
+                                                  mipc_filter_data_odometer_scale_factor_error_t *out) {
+    out->scale_factor_error = mipc_ld_f32(d + 0);
+    out->valid_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
 /* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_odometer_scale_factor_error_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_odometer_scale_factor_error_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_odometer_scale_factor_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_odometer_scale_factor_error_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_odometer_scale_factor_error_t *out,
-                                                   mip_decode_error_t *err) {
+mipc_status_t
+mipc_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_odometer_scale_factor_error_t *out,
+                                                    mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 6 && mip_filter_data_odometer_scale_factor_error_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 6 && mipc_filter_data_odometer_scale_factor_error_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_odometer_scale_factor_error_decode_read(data, len, out, err);
+    return mipc_filter_data_odometer_scale_factor_error_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_odometer_scale_factor_error_to_json(
-    mip_jw_t *w, const mip_filter_data_odometer_scale_factor_error_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor_error");
-    mip_jw_f32(w, &in->scale_factor_error);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_odometer_scale_factor_error_uncertainty_t */
 
-int mip_filter_data_odometer_scale_factor_error_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_odometer_scale_factor_error_t *out) {
-    static const char *const keys[] = {"scale_factor_error", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+static int mipc_filter_data_odometer_scale_factor_error_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
+    mipc_rd_push(r, "scale_factor_error_uncertainty");
+    if (mipc_rd_f32(r, &out->scale_factor_error_uncertainty)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "scale_factor_error", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor_error\"");
-    }
-    {
-        mip_jr_push(jr, "scale_factor_error");
-        if (mip_jr_f32(jr, vp, &out->scale_factor_error)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_odometer_scale_factor_error_uncertainty_t */
-
-static int mip_filter_data_odometer_scale_factor_error_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
-    mip_rd_push(r, "scale_factor_error_uncertainty");
-    if (mip_rd_f32(r, &out->scale_factor_error_uncertainty)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_odometer_scale_factor_error_uncertainty_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->scale_factor_error_uncertainty)) != MIP_OK) {
+static mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_odometer_scale_factor_error_uncertainty_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->scale_factor_error_uncertainty)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
         return st;
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
-    const mip_filter_data_odometer_scale_factor_error_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_encode(
+    const mipc_filter_data_odometer_scale_factor_error_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_odometer_scale_factor_error_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_odometer_scale_factor_error_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -7256,153 +4026,108 @@ mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
 
 /* The layout is 6 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_odometer_scale_factor_error_uncertainty_load(
-    const uint8_t *d, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
-    out->scale_factor_error_uncertainty = mip_ld_f32(d + 0);
-    out->valid_flags = mip_ld_u16(d + 4);
+static int mipc_filter_data_odometer_scale_factor_error_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
+    out->scale_factor_error_uncertainty = mipc_ld_f32(d + 0);
+    out->valid_flags = mipc_ld_u16(d + 4);
     return 0;
 }
 
 /* The general reader: lengths other than 6, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_odometer_scale_factor_error_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_odometer_scale_factor_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_odometer_scale_factor_error_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
-    mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_odometer_scale_factor_error_uncertainty_t *out,
+    mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 6 && mip_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 6 && mipc_filter_data_odometer_scale_factor_error_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_odometer_scale_factor_error_uncertainty_decode_read(data, len, out, err);
+    return mipc_filter_data_odometer_scale_factor_error_uncertainty_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_odometer_scale_factor_error_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_odometer_scale_factor_error_uncertainty_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "scale_factor_error_uncertainty");
-    mip_jw_f32(w, &in->scale_factor_error_uncertainty);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
+/* ---- mipc_filter_data_gnss_dual_antenna_status_t */
+
+static int mipc_filter_data_gnss_dual_antenna_status_read(mipc_reader_t *r,
+                                                          mipc_filter_data_gnss_dual_antenna_status_t *out) {
+    mipc_rd_push(r, "time_of_week");
+    if (mipc_rd_f32(r, &out->time_of_week)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "heading");
+    if (mipc_rd_f32(r, &out->heading)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "heading_uncertainty");
+    if (mipc_rd_f32(r, &out->heading_uncertainty)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "fix_type");
+    if (mipc_rd_u8(r, &out->fix_type)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "status_flags");
+    if (mipc_rd_u16(r, &out->status_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "valid_flags");
+    if (mipc_rd_u16(r, &out->valid_flags)) {
+        return -1;
+    }
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_filter_data_odometer_scale_factor_error_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out) {
-    static const char *const keys[] = {"scale_factor_error_uncertainty", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
-        return -1;
+static mipc_status_t
+mipc_filter_data_gnss_dual_antenna_status_write(mipc_writer_t *w,
+                                                const mipc_filter_data_gnss_dual_antenna_status_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_f32(w, &in->time_of_week)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "scale_factor_error_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"scale_factor_error_uncertainty\"");
+    if ((st = mipc_wr_f32(w, &in->heading)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "scale_factor_error_uncertainty");
-        if (mip_jr_f32(jr, vp, &out->scale_factor_error_uncertainty)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_f32(w, &in->heading_uncertainty)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
+    if ((st = mipc_wr_u8(w, &in->fix_type)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u16(w, &in->status_flags)) != MIPC_OK) {
+        return st;
     }
-    return 0;
+    if ((st = mipc_wr_u16(w, &in->valid_flags)) != MIPC_OK) {
+        return st;
+    }
+    return MIPC_OK;
 }
 
-/* ---- mip_filter_data_gnss_dual_antenna_status_t */
-
-static int mip_filter_data_gnss_dual_antenna_status_read(mip_reader_t *r,
-                                                         mip_filter_data_gnss_dual_antenna_status_t *out) {
-    mip_rd_push(r, "time_of_week");
-    if (mip_rd_f32(r, &out->time_of_week)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "heading");
-    if (mip_rd_f32(r, &out->heading)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "heading_uncertainty");
-    if (mip_rd_f32(r, &out->heading_uncertainty)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "fix_type");
-    if (mip_rd_u8(r, &out->fix_type)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "status_flags");
-    if (mip_rd_u16(r, &out->status_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "valid_flags");
-    if (mip_rd_u16(r, &out->valid_flags)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_filter_data_gnss_dual_antenna_status_write(mip_writer_t *w,
-                                               const mip_filter_data_gnss_dual_antenna_status_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_f32(w, &in->time_of_week)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->heading)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_f32(w, &in->heading_uncertainty)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->fix_type)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->status_flags)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->valid_flags)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_filter_data_gnss_dual_antenna_status_encode(const mip_filter_data_gnss_dual_antenna_status_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t
+mipc_filter_data_gnss_dual_antenna_status_encode(const mipc_filter_data_gnss_dual_antenna_status_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_gnss_dual_antenna_status_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_gnss_dual_antenna_status_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -7410,198 +4135,102 @@ mip_filter_data_gnss_dual_antenna_status_encode(const mip_filter_data_gnss_dual_
 
 /* The layout is 17 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_gnss_dual_antenna_status_load(const uint8_t *d,
-                                                         mip_filter_data_gnss_dual_antenna_status_t *out) {
-    out->time_of_week = mip_ld_f32(d + 0);
-    out->heading = mip_ld_f32(d + 4);
-    out->heading_uncertainty = mip_ld_f32(d + 8);
-    out->fix_type = mip_ld_u8(d + 12);
-    out->status_flags = mip_ld_u16(d + 13);
-    out->valid_flags = mip_ld_u16(d + 15);
+static int mipc_filter_data_gnss_dual_antenna_status_load(const uint8_t *d,
+                                                          mipc_filter_data_gnss_dual_antenna_status_t *out) {
+    out->time_of_week = mipc_ld_f32(d + 0);
+    out->heading = mipc_ld_f32(d + 4);
+    out->heading_uncertainty = mipc_ld_f32(d + 8);
+    out->fix_type = mipc_ld_u8(d + 12);
+    out->status_flags = mipc_ld_u16(d + 13);
+    out->valid_flags = mipc_ld_u16(d + 15);
     return 0;
 }
 
 /* The general reader: lengths other than 17, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_gnss_dual_antenna_status_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_dual_antenna_status_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_gnss_dual_antenna_status_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_dual_antenna_status_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_gnss_dual_antenna_status_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_gnss_dual_antenna_status_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_gnss_dual_antenna_status_t *out,
-                                                             mip_decode_error_t *err) {
+mipc_status_t
+mipc_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_gnss_dual_antenna_status_t *out,
+                                                 mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 17 && mip_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 17 && mipc_filter_data_gnss_dual_antenna_status_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_gnss_dual_antenna_status_decode_read(data, len, out, err);
+    return mipc_filter_data_gnss_dual_antenna_status_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_gnss_dual_antenna_status_to_json(mip_jw_t *w,
-                                                      const mip_filter_data_gnss_dual_antenna_status_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "time_of_week");
-    mip_jw_f32(w, &in->time_of_week);
-    mip_jw_key(w, &first, "heading");
-    mip_jw_f32(w, &in->heading);
-    mip_jw_key(w, &first, "heading_uncertainty");
-    mip_jw_f32(w, &in->heading_uncertainty);
-    mip_jw_key(w, &first, "fix_type");
-    mip_jw_u8(w, &in->fix_type);
-    mip_jw_key(w, &first, "status_flags");
-    mip_jw_u16(w, &in->status_flags);
-    mip_jw_key(w, &first, "valid_flags");
-    mip_jw_u16(w, &in->valid_flags);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_aiding_frame_config_error_t */
 
-int mip_filter_data_gnss_dual_antenna_status_from_json(mip_jr_t *jr, size_t pos,
-                                                       mip_filter_data_gnss_dual_antenna_status_t *out) {
-    static const char *const keys[] = {"time_of_week", "heading",      "heading_uncertainty",
-                                       "fix_type",     "status_flags", "valid_flags"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 6)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "time_of_week", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"time_of_week\"");
-    }
-    {
-        mip_jr_push(jr, "time_of_week");
-        if (mip_jr_f32(jr, vp, &out->time_of_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "heading", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"heading\"");
-    }
-    {
-        mip_jr_push(jr, "heading");
-        if (mip_jr_f32(jr, vp, &out->heading)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "heading_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"heading_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "heading_uncertainty");
-        if (mip_jr_f32(jr, vp, &out->heading_uncertainty)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "fix_type", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"fix_type\"");
-    }
-    {
-        mip_jr_push(jr, "fix_type");
-        if (mip_jr_u8(jr, vp, &out->fix_type)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "status_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"status_flags\"");
-    }
-    {
-        mip_jr_push(jr, "status_flags");
-        if (mip_jr_u16(jr, vp, &out->status_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "valid_flags", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"valid_flags\"");
-    }
-    {
-        mip_jr_push(jr, "valid_flags");
-        if (mip_jr_u16(jr, vp, &out->valid_flags)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_filter_data_aiding_frame_config_error_t */
-
-static int mip_filter_data_aiding_frame_config_error_read(mip_reader_t *r,
-                                                          mip_filter_data_aiding_frame_config_error_t *out) {
+static int
+mipc_filter_data_aiding_frame_config_error_read(mipc_reader_t *r,
+                                                mipc_filter_data_aiding_frame_config_error_t *out) {
     size_t i;
-    mip_rd_push(r, "frame_id");
-    if (mip_rd_u8(r, &out->frame_id)) {
+    mipc_rd_push(r, "frame_id");
+    if (mipc_rd_u8(r, &out->frame_id)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "translation");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "translation");
     for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->translation[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->translation[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "attitude");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "attitude");
     for (i = 0; i < 4; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->attitude[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->attitude[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t
-mip_filter_data_aiding_frame_config_error_write(mip_writer_t *w,
-                                                const mip_filter_data_aiding_frame_config_error_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_filter_data_aiding_frame_config_error_write(mipc_writer_t *w,
+                                                 const mipc_filter_data_aiding_frame_config_error_t *in) {
+    mipc_status_t st;
     size_t i;
-    if ((st = mip_wr_u8(w, &in->frame_id)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->frame_id)) != MIPC_OK) {
         return st;
     }
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->translation[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->translation[i])) != MIPC_OK) {
             return st;
         }
     }
     for (i = 0; i < 4; i++) {
-        if ((st = mip_wr_f32(w, &in->attitude[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->attitude[i])) != MIPC_OK) {
             return st;
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_aiding_frame_config_error_encode(const mip_filter_data_aiding_frame_config_error_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t
+mipc_filter_data_aiding_frame_config_error_encode(const mipc_filter_data_aiding_frame_config_error_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_aiding_frame_config_error_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_aiding_frame_config_error_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -7609,214 +4238,103 @@ mip_filter_data_aiding_frame_config_error_encode(const mip_filter_data_aiding_fr
 
 /* The layout is 29 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_aiding_frame_config_error_load(const uint8_t *d,
-                                                          mip_filter_data_aiding_frame_config_error_t *out) {
-    out->frame_id = mip_ld_u8(d + 0);
-    out->translation[0] = mip_ld_f32(d + 1);
-    out->translation[1] = mip_ld_f32(d + 5);
-    out->translation[2] = mip_ld_f32(d + 9);
-    out->attitude[0] = mip_ld_f32(d + 13);
-    out->attitude[1] = mip_ld_f32(d + 17);
-    out->attitude[2] = mip_ld_f32(d + 21);
-    out->attitude[3] = mip_ld_f32(d + 25);
+static int
+mipc_filter_data_aiding_frame_config_error_load(const uint8_t *d,
+                                                mipc_filter_data_aiding_frame_config_error_t *out) {
+    out->frame_id = mipc_ld_u8(d + 0);
+    out->translation[0] = mipc_ld_f32(d + 1);
+    out->translation[1] = mipc_ld_f32(d + 5);
+    out->translation[2] = mipc_ld_f32(d + 9);
+    out->attitude[0] = mipc_ld_f32(d + 13);
+    out->attitude[1] = mipc_ld_f32(d + 17);
+    out->attitude[2] = mipc_ld_f32(d + 21);
+    out->attitude[3] = mipc_ld_f32(d + 25);
     return 0;
 }
 
 /* The general reader: lengths other than 29, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_aiding_frame_config_error_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_aiding_frame_config_error_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_aiding_frame_config_error_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_aiding_frame_config_error_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t
-mip_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_aiding_frame_config_error_t *out,
-                                                 mip_decode_error_t *err) {
+mipc_status_t
+mipc_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_aiding_frame_config_error_t *out,
+                                                  mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 29 && mip_filter_data_aiding_frame_config_error_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 29 && mipc_filter_data_aiding_frame_config_error_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_aiding_frame_config_error_decode_read(data, len, out, err);
+    return mipc_filter_data_aiding_frame_config_error_decode_read(data, len, out, err);
 }
 
-void mip_filter_data_aiding_frame_config_error_to_json(
-    mip_jw_t *w, const mip_filter_data_aiding_frame_config_error_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "frame_id");
-    mip_jw_u8(w, &in->frame_id);
-    mip_jw_key(w, &first, "translation");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->translation[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "attitude");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 4; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->attitude[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_filter_data_aiding_frame_config_error_uncertainty_t */
 
-int mip_filter_data_aiding_frame_config_error_from_json(mip_jr_t *jr, size_t pos,
-                                                        mip_filter_data_aiding_frame_config_error_t *out) {
-    static const char *const keys[] = {"frame_id", "translation", "attitude"};
-    size_t vp = 0;
-    int found;
+static int mipc_filter_data_aiding_frame_config_error_uncertainty_read(
+    mipc_reader_t *r, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out) {
     size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
+    mipc_rd_push(r, "frame_id");
+    if (mipc_rd_u8(r, &out->frame_id)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "frame_id", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"frame_id\"");
-    }
-    {
-        mip_jr_push(jr, "frame_id");
-        if (mip_jr_u8(jr, vp, &out->frame_id)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "translation_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->translation_uncertainty[i])) {
             return -1;
         }
-        mip_jr_pop(jr);
     }
-    found = mip_jr_get(jr, pos, "translation", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"translation\"");
-    }
-    {
-        mip_jr_push(jr, "translation");
-        if (mip_jr_array(jr, vp, &it)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "attitude_uncertainty");
+    for (i = 0; i < 3; i++) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_f32(r, &out->attitude_uncertainty[i])) {
             return -1;
         }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->translation[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
     }
-    found = mip_jr_get(jr, pos, "attitude", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"attitude\"");
-    }
-    {
-        mip_jr_push(jr, "attitude");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 4) {
-                return mip_jr_fail(jr, "more than 4 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->attitude[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 4) {
-            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-/* ---- mip_filter_data_aiding_frame_config_error_uncertainty_t */
-
-static int mip_filter_data_aiding_frame_config_error_uncertainty_read(
-    mip_reader_t *r, mip_filter_data_aiding_frame_config_error_uncertainty_t *out) {
+static mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_write(
+    mipc_writer_t *w, const mipc_filter_data_aiding_frame_config_error_uncertainty_t *in) {
+    mipc_status_t st;
     size_t i;
-    mip_rd_push(r, "frame_id");
-    if (mip_rd_u8(r, &out->frame_id)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "translation_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->translation_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "attitude_uncertainty");
-    for (i = 0; i < 3; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_f32(r, &out->attitude_uncertainty[i])) {
-            return -1;
-        }
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_write(
-    mip_writer_t *w, const mip_filter_data_aiding_frame_config_error_uncertainty_t *in) {
-    mip_status_t st;
-    size_t i;
-    if ((st = mip_wr_u8(w, &in->frame_id)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->frame_id)) != MIPC_OK) {
         return st;
     }
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->translation_uncertainty[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->translation_uncertainty[i])) != MIPC_OK) {
             return st;
         }
     }
     for (i = 0; i < 3; i++) {
-        if ((st = mip_wr_f32(w, &in->attitude_uncertainty[i])) != MIP_OK) {
+        if ((st = mipc_wr_f32(w, &in->attitude_uncertainty[i])) != MIPC_OK) {
             return st;
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_encode(
-    const mip_filter_data_aiding_frame_config_error_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_encode(
+    const mipc_filter_data_aiding_frame_config_error_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_filter_data_aiding_frame_config_error_uncertainty_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_filter_data_aiding_frame_config_error_uncertainty_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -7824,149 +4342,37 @@ mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_encode(
 
 /* The layout is 25 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_filter_data_aiding_frame_config_error_uncertainty_load(
-    const uint8_t *d, mip_filter_data_aiding_frame_config_error_uncertainty_t *out) {
-    out->frame_id = mip_ld_u8(d + 0);
-    out->translation_uncertainty[0] = mip_ld_f32(d + 1);
-    out->translation_uncertainty[1] = mip_ld_f32(d + 5);
-    out->translation_uncertainty[2] = mip_ld_f32(d + 9);
-    out->attitude_uncertainty[0] = mip_ld_f32(d + 13);
-    out->attitude_uncertainty[1] = mip_ld_f32(d + 17);
-    out->attitude_uncertainty[2] = mip_ld_f32(d + 21);
+static int mipc_filter_data_aiding_frame_config_error_uncertainty_load(
+    const uint8_t *d, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out) {
+    out->frame_id = mipc_ld_u8(d + 0);
+    out->translation_uncertainty[0] = mipc_ld_f32(d + 1);
+    out->translation_uncertainty[1] = mipc_ld_f32(d + 5);
+    out->translation_uncertainty[2] = mipc_ld_f32(d + 9);
+    out->attitude_uncertainty[0] = mipc_ld_f32(d + 13);
+    out->attitude_uncertainty[1] = mipc_ld_f32(d + 17);
+    out->attitude_uncertainty[2] = mipc_ld_f32(d + 21);
     return 0;
 }
 
 /* The general reader: lengths other than 25, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode_read(
-    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
-    mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_decode_read(
+    const uint8_t *data, size_t len, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_filter_data_aiding_frame_config_error_uncertainty_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_filter_data_aiding_frame_config_error_uncertainty_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
-    mip_decode_error_t *err) {
+mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out,
+    mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 25 && mip_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 25 && mipc_filter_data_aiding_frame_config_error_uncertainty_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_filter_data_aiding_frame_config_error_uncertainty_decode_read(data, len, out, err);
-}
-
-void mip_filter_data_aiding_frame_config_error_uncertainty_to_json(
-    mip_jw_t *w, const mip_filter_data_aiding_frame_config_error_uncertainty_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "frame_id");
-    mip_jw_u8(w, &in->frame_id);
-    mip_jw_key(w, &first, "translation_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->translation_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_key(w, &first, "attitude_uncertainty");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 3; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_f32(w, &in->attitude_uncertainty[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_filter_data_aiding_frame_config_error_uncertainty_from_json(
-    mip_jr_t *jr, size_t pos, mip_filter_data_aiding_frame_config_error_uncertainty_t *out) {
-    static const char *const keys[] = {"frame_id", "translation_uncertainty", "attitude_uncertainty"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 3)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "frame_id", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"frame_id\"");
-    }
-    {
-        mip_jr_push(jr, "frame_id");
-        if (mip_jr_u8(jr, vp, &out->frame_id)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "translation_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"translation_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "translation_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->translation_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "attitude_uncertainty", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"attitude_uncertainty\"");
-    }
-    {
-        mip_jr_push(jr, "attitude_uncertainty");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 3) {
-                return mip_jr_fail(jr, "more than 3 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_f32(jr, ep, &out->attitude_uncertainty[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 3) {
-            return mip_jr_fail(jr, "expected 3 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    return mipc_filter_data_aiding_frame_config_error_uncertainty_decode_read(data, len, out, err);
 }

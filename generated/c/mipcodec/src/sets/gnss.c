@@ -6,553 +6,318 @@
 #include <assert.h>
 #include <string.h>
 
-/* ---- mip_gnss_receiver_info_t */
+/* ---- mipc_gnss_receiver_info_t */
 
-static int mip_gnss_receiver_info_read(mip_reader_t *r, mip_gnss_receiver_info_t *out) {
+static int mipc_gnss_receiver_info_read(mipc_reader_t *r, mipc_gnss_receiver_info_t *out) {
     (void)out;
-    return mip_rd_finish(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_gnss_receiver_info_write(mip_writer_t *w, const mip_gnss_receiver_info_t *in) {
+static mipc_status_t mipc_gnss_receiver_info_write(mipc_writer_t *w, const mipc_gnss_receiver_info_t *in) {
     (void)w;
     (void)in;
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_gnss_receiver_info_encode(const mip_gnss_receiver_info_t *value, uint8_t *buf, size_t cap,
-                                           size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_gnss_receiver_info_encode(const mipc_gnss_receiver_info_t *value, uint8_t *buf, size_t cap,
+                                             size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_receiver_info_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_receiver_info_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
 }
 
-mip_status_t mip_gnss_receiver_info_decode(const uint8_t *data, size_t len, mip_gnss_receiver_info_t *out,
-                                           mip_decode_error_t *err) {
-    mip_reader_t r;
+mipc_status_t mipc_gnss_receiver_info_decode(const uint8_t *data, size_t len, mipc_gnss_receiver_info_t *out,
+                                             mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_receiver_info_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_gnss_receiver_info_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-void mip_gnss_receiver_info_to_json(mip_jw_t *w, const mip_gnss_receiver_info_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_raw(w, "}", 1);
-    (void)in;
-    (void)first;
-}
+/* ---- mipc_gnss_receiver_info_response_t */
 
-int mip_gnss_receiver_info_from_json(mip_jr_t *jr, size_t pos, mip_gnss_receiver_info_t *out) {
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, NULL, 0)) {
-        return -1;
-    }
-    return 0;
-}
-
-/* ---- mip_gnss_receiver_info_response_t */
-
-static int mip_gnss_receiver_info_response_read(mip_reader_t *r, mip_gnss_receiver_info_response_t *out) {
+static int mipc_gnss_receiver_info_response_read(mipc_reader_t *r, mipc_gnss_receiver_info_response_t *out) {
     size_t i;
-    mip_rd_push(r, "num_receivers");
-    if (mip_rd_u8(r, &out->num_receivers)) {
+    mipc_rd_push(r, "num_receivers");
+    if (mipc_rd_u8(r, &out->num_receivers)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "receiver_info");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "receiver_info");
     if (out->num_receivers > 7) {
-        return mip_rd_count_error(r, (uint64_t)out->num_receivers, 7);
+        return mipc_rd_count_error(r, (uint64_t)out->num_receivers, 7);
     }
     for (i = 0; i < (size_t)out->num_receivers; i++) {
-        mip_rd_index(r, i);
-        if (mip_gnss_receiver_info_entry_read(r, &out->receiver_info[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_gnss_receiver_info_entry_read(r, &out->receiver_info[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_gnss_receiver_info_response_write(mip_writer_t *w,
-                                                          const mip_gnss_receiver_info_response_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_gnss_receiver_info_response_write(mipc_writer_t *w,
+                                                            const mipc_gnss_receiver_info_response_t *in) {
+    mipc_status_t st;
     size_t i;
-    if ((st = mip_wr_u8(w, &in->num_receivers)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->num_receivers)) != MIPC_OK) {
         return st;
     }
     if (in->num_receivers > 7) {
-        return MIP_ERR_INVALID;
+        return MIPC_ERR_INVALID;
     }
     for (i = 0; i < (size_t)in->num_receivers; i++) {
-        if ((st = mip_gnss_receiver_info_entry_write(w, &in->receiver_info[i])) != MIP_OK) {
+        if ((st = mipc_gnss_receiver_info_entry_write(w, &in->receiver_info[i])) != MIPC_OK) {
             return st;
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_gnss_receiver_info_response_encode(const mip_gnss_receiver_info_response_t *value,
-                                                    uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_gnss_receiver_info_response_encode(const mipc_gnss_receiver_info_response_t *value,
+                                                      uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_receiver_info_response_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_receiver_info_response_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
 }
 
-mip_status_t mip_gnss_receiver_info_response_decode(const uint8_t *data, size_t len,
-                                                    mip_gnss_receiver_info_response_t *out,
-                                                    mip_decode_error_t *err) {
-    mip_reader_t r;
+mipc_status_t mipc_gnss_receiver_info_response_decode(const uint8_t *data, size_t len,
+                                                      mipc_gnss_receiver_info_response_t *out,
+                                                      mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_receiver_info_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_gnss_receiver_info_response_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-void mip_gnss_receiver_info_response_to_json(mip_jw_t *w, const mip_gnss_receiver_info_response_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "num_receivers");
-    mip_jw_u8(w, &in->num_receivers);
-    mip_jw_key(w, &first, "receiver_info");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < (size_t)in->num_receivers && i < 7; i++) {
-        mip_jw_sep(w, i);
-        mip_gnss_receiver_info_entry_to_json(w, &in->receiver_info[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_gnss_signal_configuration_t */
 
-int mip_gnss_receiver_info_response_from_json(mip_jr_t *jr, size_t pos,
-                                              mip_gnss_receiver_info_response_t *out) {
-    static const char *const keys[] = {"num_receivers", "receiver_info"};
-    size_t vp = 0;
-    int found;
+static int mipc_gnss_signal_configuration_read(mipc_reader_t *r, mipc_gnss_signal_configuration_t *out) {
     size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 2)) {
+    mipc_rd_push(r, "function");
+    if (mipc_rd_u8(r, &out->function)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "num_receivers", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"num_receivers\"");
-    }
-    {
-        mip_jr_push(jr, "num_receivers");
-        if (mip_jr_u8(jr, vp, &out->num_receivers)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "receiver_info", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"receiver_info\"");
-    }
-    {
-        mip_jr_push(jr, "receiver_info");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 7) {
-                return mip_jr_fail(jr, "more than 7 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_gnss_receiver_info_entry_from_json(jr, ep, &out->receiver_info[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != (size_t)out->num_receivers) {
-            return mip_jr_fail(jr, "%zu elements but num_receivers is %zu", i, (size_t)out->num_receivers);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_gnss_signal_configuration_t */
-
-static int mip_gnss_signal_configuration_read(mip_reader_t *r, mip_gnss_signal_configuration_t *out) {
-    size_t i;
-    mip_rd_push(r, "function");
-    if (mip_rd_u8(r, &out->function)) {
-        return -1;
-    }
-    mip_rd_pop(r);
+    mipc_rd_pop(r);
     if (r->pos < r->len) {
         out->has_gps_enable = true;
-        mip_rd_push(r, "gps_enable");
-        if (mip_rd_u8(r, &out->gps_enable)) {
+        mipc_rd_push(r, "gps_enable");
+        if (mipc_rd_u8(r, &out->gps_enable)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_glonass_enable = true;
-        mip_rd_push(r, "glonass_enable");
-        if (mip_rd_u8(r, &out->glonass_enable)) {
+        mipc_rd_push(r, "glonass_enable");
+        if (mipc_rd_u8(r, &out->glonass_enable)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_galileo_enable = true;
-        mip_rd_push(r, "galileo_enable");
-        if (mip_rd_u8(r, &out->galileo_enable)) {
+        mipc_rd_push(r, "galileo_enable");
+        if (mipc_rd_u8(r, &out->galileo_enable)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_beidou_enable = true;
-        mip_rd_push(r, "beidou_enable");
-        if (mip_rd_u8(r, &out->beidou_enable)) {
+        mipc_rd_push(r, "beidou_enable");
+        if (mipc_rd_u8(r, &out->beidou_enable)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_reserved = true;
-        mip_rd_push(r, "reserved");
+        mipc_rd_push(r, "reserved");
         for (i = 0; i < 4; i++) {
-            mip_rd_index(r, i);
-            if (mip_rd_u8(r, &out->reserved[i])) {
+            mipc_rd_index(r, i);
+            if (mipc_rd_u8(r, &out->reserved[i])) {
                 return -1;
             }
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
-    return mip_rd_finish(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_gnss_signal_configuration_write(mip_writer_t *w,
-                                                        const mip_gnss_signal_configuration_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_gnss_signal_configuration_write(mipc_writer_t *w,
+                                                          const mipc_gnss_signal_configuration_t *in) {
+    mipc_status_t st;
     size_t i;
     int absent = 0;
-    if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->function)) != MIPC_OK) {
         return st;
     }
     if (!in->has_gps_enable) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->gps_enable)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->gps_enable)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_glonass_enable) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->glonass_enable)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->glonass_enable)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_galileo_enable) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->galileo_enable)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->galileo_enable)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_beidou_enable) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->beidou_enable)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->beidou_enable)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_reserved) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
         for (i = 0; i < 4; i++) {
-            if ((st = mip_wr_u8(w, &in->reserved[i])) != MIP_OK) {
+            if ((st = mipc_wr_u8(w, &in->reserved[i])) != MIPC_OK) {
                 return st;
             }
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_gnss_signal_configuration_encode(const mip_gnss_signal_configuration_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_gnss_signal_configuration_encode(const mipc_gnss_signal_configuration_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_signal_configuration_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_signal_configuration_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
 }
 
-mip_status_t mip_gnss_signal_configuration_decode(const uint8_t *data, size_t len,
-                                                  mip_gnss_signal_configuration_t *out,
-                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
+mipc_status_t mipc_gnss_signal_configuration_decode(const uint8_t *data, size_t len,
+                                                    mipc_gnss_signal_configuration_t *out,
+                                                    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_signal_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_gnss_signal_configuration_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-void mip_gnss_signal_configuration_to_json(mip_jw_t *w, const mip_gnss_signal_configuration_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "function");
-    mip_jw_u8(w, &in->function);
-    if (in->has_gps_enable) {
-        mip_jw_key(w, &first, "gps_enable");
-        mip_jw_u8(w, &in->gps_enable);
-    }
-    if (in->has_glonass_enable) {
-        mip_jw_key(w, &first, "glonass_enable");
-        mip_jw_u8(w, &in->glonass_enable);
-    }
-    if (in->has_galileo_enable) {
-        mip_jw_key(w, &first, "galileo_enable");
-        mip_jw_u8(w, &in->galileo_enable);
-    }
-    if (in->has_beidou_enable) {
-        mip_jw_key(w, &first, "beidou_enable");
-        mip_jw_u8(w, &in->beidou_enable);
-    }
-    if (in->has_reserved) {
-        mip_jw_key(w, &first, "reserved");
-        mip_jw_raw(w, "[", 1);
-        for (i = 0; i < 4; i++) {
-            mip_jw_sep(w, i);
-            mip_jw_u8(w, &in->reserved[i]);
-        }
-        mip_jw_raw(w, "]", 1);
-    }
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_gnss_signal_configuration_response_t */
 
-int mip_gnss_signal_configuration_from_json(mip_jr_t *jr, size_t pos, mip_gnss_signal_configuration_t *out) {
-    static const char *const keys[] = {"function",       "gps_enable",    "glonass_enable",
-                                       "galileo_enable", "beidou_enable", "reserved"};
-    size_t vp = 0;
-    int found;
-    int absent = 0;
+static int mipc_gnss_signal_configuration_response_read(mipc_reader_t *r,
+                                                        mipc_gnss_signal_configuration_response_t *out) {
     size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 6)) {
+    mipc_rd_push(r, "gps_enable");
+    if (mipc_rd_u8(r, &out->gps_enable)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "function", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"function\"");
-    }
-    {
-        mip_jr_push(jr, "function");
-        if (mip_jr_u8(jr, vp, &out->function)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "gps_enable", &vp);
-    out->has_gps_enable = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"gps_enable\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "gps_enable");
-        if (mip_jr_u8(jr, vp, &out->gps_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "glonass_enable", &vp);
-    out->has_glonass_enable = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"glonass_enable\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "glonass_enable");
-        if (mip_jr_u8(jr, vp, &out->glonass_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "galileo_enable", &vp);
-    out->has_galileo_enable = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"galileo_enable\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "galileo_enable");
-        if (mip_jr_u8(jr, vp, &out->galileo_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "beidou_enable", &vp);
-    out->has_beidou_enable = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"beidou_enable\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "beidou_enable");
-        if (mip_jr_u8(jr, vp, &out->beidou_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "reserved", &vp);
-    out->has_reserved = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"reserved\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "reserved");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 4) {
-                return mip_jr_fail(jr, "more than 4 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_u8(jr, ep, &out->reserved[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 4) {
-            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_gnss_signal_configuration_response_t */
-
-static int mip_gnss_signal_configuration_response_read(mip_reader_t *r,
-                                                       mip_gnss_signal_configuration_response_t *out) {
-    size_t i;
-    mip_rd_push(r, "gps_enable");
-    if (mip_rd_u8(r, &out->gps_enable)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "glonass_enable");
+    if (mipc_rd_u8(r, &out->glonass_enable)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "glonass_enable");
-    if (mip_rd_u8(r, &out->glonass_enable)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "galileo_enable");
+    if (mipc_rd_u8(r, &out->galileo_enable)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "galileo_enable");
-    if (mip_rd_u8(r, &out->galileo_enable)) {
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "beidou_enable");
+    if (mipc_rd_u8(r, &out->beidou_enable)) {
         return -1;
     }
-    mip_rd_pop(r);
-    mip_rd_push(r, "beidou_enable");
-    if (mip_rd_u8(r, &out->beidou_enable)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "reserved");
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "reserved");
     for (i = 0; i < 4; i++) {
-        mip_rd_index(r, i);
-        if (mip_rd_u8(r, &out->reserved[i])) {
+        mipc_rd_index(r, i);
+        if (mipc_rd_u8(r, &out->reserved[i])) {
             return -1;
         }
     }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t
-mip_gnss_signal_configuration_response_write(mip_writer_t *w,
-                                             const mip_gnss_signal_configuration_response_t *in) {
-    mip_status_t st;
+static mipc_status_t
+mipc_gnss_signal_configuration_response_write(mipc_writer_t *w,
+                                              const mipc_gnss_signal_configuration_response_t *in) {
+    mipc_status_t st;
     size_t i;
-    if ((st = mip_wr_u8(w, &in->gps_enable)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->gps_enable)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->glonass_enable)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->glonass_enable)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->galileo_enable)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->galileo_enable)) != MIPC_OK) {
         return st;
     }
-    if ((st = mip_wr_u8(w, &in->beidou_enable)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->beidou_enable)) != MIPC_OK) {
         return st;
     }
     for (i = 0; i < 4; i++) {
-        if ((st = mip_wr_u8(w, &in->reserved[i])) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->reserved[i])) != MIPC_OK) {
             return st;
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t
-mip_gnss_signal_configuration_response_encode(const mip_gnss_signal_configuration_response_t *value,
-                                              uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t
+mipc_gnss_signal_configuration_response_encode(const mipc_gnss_signal_configuration_response_t *value,
+                                               uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_signal_configuration_response_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_signal_configuration_response_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -560,730 +325,324 @@ mip_gnss_signal_configuration_response_encode(const mip_gnss_signal_configuratio
 
 /* The layout is 8 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int mip_gnss_signal_configuration_response_load(const uint8_t *d,
-                                                       mip_gnss_signal_configuration_response_t *out) {
-    out->gps_enable = mip_ld_u8(d + 0);
-    out->glonass_enable = mip_ld_u8(d + 1);
-    out->galileo_enable = mip_ld_u8(d + 2);
-    out->beidou_enable = mip_ld_u8(d + 3);
-    out->reserved[0] = mip_ld_u8(d + 4);
-    out->reserved[1] = mip_ld_u8(d + 5);
-    out->reserved[2] = mip_ld_u8(d + 6);
-    out->reserved[3] = mip_ld_u8(d + 7);
+static int mipc_gnss_signal_configuration_response_load(const uint8_t *d,
+                                                        mipc_gnss_signal_configuration_response_t *out) {
+    out->gps_enable = mipc_ld_u8(d + 0);
+    out->glonass_enable = mipc_ld_u8(d + 1);
+    out->galileo_enable = mipc_ld_u8(d + 2);
+    out->beidou_enable = mipc_ld_u8(d + 3);
+    out->reserved[0] = mipc_ld_u8(d + 4);
+    out->reserved[1] = mipc_ld_u8(d + 5);
+    out->reserved[2] = mipc_ld_u8(d + 6);
+    out->reserved[3] = mipc_ld_u8(d + 7);
     return 0;
 }
 
 /* The general reader: lengths other than 8, bad bool bytes, error details. */
-static MIP_NOINLINE mip_status_t mip_gnss_signal_configuration_response_decode_read(
-    const uint8_t *data, size_t len, mip_gnss_signal_configuration_response_t *out, mip_decode_error_t *err) {
-    mip_reader_t r;
+static MIPC_NOINLINE mipc_status_t mipc_gnss_signal_configuration_response_decode_read(
+    const uint8_t *data, size_t len, mipc_gnss_signal_configuration_response_t *out,
+    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_signal_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_gnss_signal_configuration_response_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-mip_status_t mip_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
-                                                           mip_gnss_signal_configuration_response_t *out,
-                                                           mip_decode_error_t *err) {
+mipc_status_t mipc_gnss_signal_configuration_response_decode(const uint8_t *data, size_t len,
+                                                             mipc_gnss_signal_configuration_response_t *out,
+                                                             mipc_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 8 && mip_gnss_signal_configuration_response_load(data, out) == 0) {
-        return MIP_OK;
+    if (len == 8 && mipc_gnss_signal_configuration_response_load(data, out) == 0) {
+        return MIPC_OK;
     }
-    return mip_gnss_signal_configuration_response_decode_read(data, len, out, err);
+    return mipc_gnss_signal_configuration_response_decode_read(data, len, out, err);
 }
 
-void mip_gnss_signal_configuration_response_to_json(mip_jw_t *w,
-                                                    const mip_gnss_signal_configuration_response_t *in) {
-    int first = 1;
-    size_t i;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "gps_enable");
-    mip_jw_u8(w, &in->gps_enable);
-    mip_jw_key(w, &first, "glonass_enable");
-    mip_jw_u8(w, &in->glonass_enable);
-    mip_jw_key(w, &first, "galileo_enable");
-    mip_jw_u8(w, &in->galileo_enable);
-    mip_jw_key(w, &first, "beidou_enable");
-    mip_jw_u8(w, &in->beidou_enable);
-    mip_jw_key(w, &first, "reserved");
-    mip_jw_raw(w, "[", 1);
-    for (i = 0; i < 4; i++) {
-        mip_jw_sep(w, i);
-        mip_jw_u8(w, &in->reserved[i]);
-    }
-    mip_jw_raw(w, "]", 1);
-    mip_jw_raw(w, "}", 1);
-}
+/* ---- mipc_gnss_spartn_configuration_t */
 
-int mip_gnss_signal_configuration_response_from_json(mip_jr_t *jr, size_t pos,
-                                                     mip_gnss_signal_configuration_response_t *out) {
-    static const char *const keys[] = {"gps_enable", "glonass_enable", "galileo_enable", "beidou_enable",
-                                       "reserved"};
-    size_t vp = 0;
-    int found;
-    size_t i;
-    size_t it = 0;
-    size_t ep = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 5)) {
+static int mipc_gnss_spartn_configuration_read(mipc_reader_t *r, mipc_gnss_spartn_configuration_t *out) {
+    mipc_rd_push(r, "function");
+    if (mipc_rd_u8(r, &out->function)) {
         return -1;
     }
-    found = mip_jr_get(jr, pos, "gps_enable", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"gps_enable\"");
-    }
-    {
-        mip_jr_push(jr, "gps_enable");
-        if (mip_jr_u8(jr, vp, &out->gps_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "glonass_enable", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"glonass_enable\"");
-    }
-    {
-        mip_jr_push(jr, "glonass_enable");
-        if (mip_jr_u8(jr, vp, &out->glonass_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "galileo_enable", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"galileo_enable\"");
-    }
-    {
-        mip_jr_push(jr, "galileo_enable");
-        if (mip_jr_u8(jr, vp, &out->galileo_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "beidou_enable", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"beidou_enable\"");
-    }
-    {
-        mip_jr_push(jr, "beidou_enable");
-        if (mip_jr_u8(jr, vp, &out->beidou_enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "reserved", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"reserved\"");
-    }
-    {
-        mip_jr_push(jr, "reserved");
-        if (mip_jr_array(jr, vp, &it)) {
-            return -1;
-        }
-        for (i = 0;; i++) {
-            int more = mip_jr_next(jr, &it, &ep);
-            if (more < 0) {
-                return -1;
-            }
-            if (!more) {
-                break;
-            }
-            if (i >= 4) {
-                return mip_jr_fail(jr, "more than 4 elements");
-            }
-            mip_jr_index(jr, i);
-            if (mip_jr_u8(jr, ep, &out->reserved[i])) {
-                return -1;
-            }
-        }
-        mip_jr_index(jr, SIZE_MAX);
-        if (i != 4) {
-            return mip_jr_fail(jr, "expected 4 elements, got %zu", i);
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
-}
-
-/* ---- mip_gnss_spartn_configuration_t */
-
-static int mip_gnss_spartn_configuration_read(mip_reader_t *r, mip_gnss_spartn_configuration_t *out) {
-    mip_rd_push(r, "function");
-    if (mip_rd_u8(r, &out->function)) {
-        return -1;
-    }
-    mip_rd_pop(r);
+    mipc_rd_pop(r);
     if (r->pos < r->len) {
         out->has_enable = true;
-        mip_rd_push(r, "enable");
-        if (mip_rd_u8(r, &out->enable)) {
+        mipc_rd_push(r, "enable");
+        if (mipc_rd_u8(r, &out->enable)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_type = true;
-        mip_rd_push(r, "type");
-        if (mip_rd_u8(r, &out->type)) {
+        mipc_rd_push(r, "type");
+        if (mipc_rd_u8(r, &out->type)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_current_key_tow = true;
-        mip_rd_push(r, "current_key_tow");
-        if (mip_rd_u32(r, &out->current_key_tow)) {
+        mipc_rd_push(r, "current_key_tow");
+        if (mipc_rd_u32(r, &out->current_key_tow)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_current_key_week = true;
-        mip_rd_push(r, "current_key_week");
-        if (mip_rd_u16(r, &out->current_key_week)) {
+        mipc_rd_push(r, "current_key_week");
+        if (mipc_rd_u16(r, &out->current_key_week)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_current_key = true;
-        mip_rd_push(r, "current_key");
-        if (mip_rd_chars(r, out->current_key, 32)) {
+        mipc_rd_push(r, "current_key");
+        if (mipc_rd_chars(r, out->current_key, 32)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_next_key_tow = true;
-        mip_rd_push(r, "next_key_tow");
-        if (mip_rd_u32(r, &out->next_key_tow)) {
+        mipc_rd_push(r, "next_key_tow");
+        if (mipc_rd_u32(r, &out->next_key_tow)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_next_key_week = true;
-        mip_rd_push(r, "next_key_week");
-        if (mip_rd_u16(r, &out->next_key_week)) {
+        mipc_rd_push(r, "next_key_week");
+        if (mipc_rd_u16(r, &out->next_key_week)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
     if (r->pos < r->len) {
         out->has_next_key = true;
-        mip_rd_push(r, "next_key");
-        if (mip_rd_chars(r, out->next_key, 32)) {
+        mipc_rd_push(r, "next_key");
+        if (mipc_rd_chars(r, out->next_key, 32)) {
             return -1;
         }
-        mip_rd_pop(r);
+        mipc_rd_pop(r);
     }
-    return mip_rd_finish(r);
+    return mipc_rd_finish(r);
 }
 
-static mip_status_t mip_gnss_spartn_configuration_write(mip_writer_t *w,
-                                                        const mip_gnss_spartn_configuration_t *in) {
-    mip_status_t st;
+static mipc_status_t mipc_gnss_spartn_configuration_write(mipc_writer_t *w,
+                                                          const mipc_gnss_spartn_configuration_t *in) {
+    mipc_status_t st;
     int absent = 0;
-    if ((st = mip_wr_u8(w, &in->function)) != MIP_OK) {
+    if ((st = mipc_wr_u8(w, &in->function)) != MIPC_OK) {
         return st;
     }
     if (!in->has_enable) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->enable)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->enable)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_type) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
+        if ((st = mipc_wr_u8(w, &in->type)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_current_key_tow) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u32(w, &in->current_key_tow)) != MIP_OK) {
+        if ((st = mipc_wr_u32(w, &in->current_key_tow)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_current_key_week) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u16(w, &in->current_key_week)) != MIP_OK) {
+        if ((st = mipc_wr_u16(w, &in->current_key_week)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_current_key) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_chars(w, in->current_key, 32)) != MIP_OK) {
+        if ((st = mipc_wr_chars(w, in->current_key, 32)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_next_key_tow) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u32(w, &in->next_key_tow)) != MIP_OK) {
+        if ((st = mipc_wr_u32(w, &in->next_key_tow)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_next_key_week) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_u16(w, &in->next_key_week)) != MIP_OK) {
+        if ((st = mipc_wr_u16(w, &in->next_key_week)) != MIPC_OK) {
             return st;
         }
     }
     if (!in->has_next_key) {
         absent = 1;
     } else if (absent) {
-        return MIP_ERR_INVALID; /* an optional parameter after an absent one */
+        return MIPC_ERR_INVALID; /* an optional parameter after an absent one */
     } else {
-        if ((st = mip_wr_chars(w, in->next_key, 32)) != MIP_OK) {
+        if ((st = mipc_wr_chars(w, in->next_key, 32)) != MIPC_OK) {
             return st;
         }
     }
-    return MIP_OK;
+    return MIPC_OK;
 }
 
-mip_status_t mip_gnss_spartn_configuration_encode(const mip_gnss_spartn_configuration_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t mipc_gnss_spartn_configuration_encode(const mipc_gnss_spartn_configuration_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_spartn_configuration_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_spartn_configuration_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
 }
 
-mip_status_t mip_gnss_spartn_configuration_decode(const uint8_t *data, size_t len,
-                                                  mip_gnss_spartn_configuration_t *out,
-                                                  mip_decode_error_t *err) {
-    mip_reader_t r;
+mipc_status_t mipc_gnss_spartn_configuration_decode(const uint8_t *data, size_t len,
+                                                    mipc_gnss_spartn_configuration_t *out,
+                                                    mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_spartn_configuration_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
+    return mipc_gnss_spartn_configuration_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }
 
-void mip_gnss_spartn_configuration_to_json(mip_jw_t *w, const mip_gnss_spartn_configuration_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "function");
-    mip_jw_u8(w, &in->function);
-    if (in->has_enable) {
-        mip_jw_key(w, &first, "enable");
-        mip_jw_u8(w, &in->enable);
+/* ---- mipc_gnss_spartn_configuration_response_t */
+
+static int mipc_gnss_spartn_configuration_response_read(mipc_reader_t *r,
+                                                        mipc_gnss_spartn_configuration_response_t *out) {
+    mipc_rd_push(r, "enable");
+    if (mipc_rd_u8(r, &out->enable)) {
+        return -1;
     }
-    if (in->has_type) {
-        mip_jw_key(w, &first, "type");
-        mip_jw_u8(w, &in->type);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "type");
+    if (mipc_rd_u8(r, &out->type)) {
+        return -1;
     }
-    if (in->has_current_key_tow) {
-        mip_jw_key(w, &first, "current_key_tow");
-        mip_jw_u32(w, &in->current_key_tow);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "current_key_tow");
+    if (mipc_rd_u32(r, &out->current_key_tow)) {
+        return -1;
     }
-    if (in->has_current_key_week) {
-        mip_jw_key(w, &first, "current_key_week");
-        mip_jw_u16(w, &in->current_key_week);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "current_key_week");
+    if (mipc_rd_u16(r, &out->current_key_week)) {
+        return -1;
     }
-    if (in->has_current_key) {
-        mip_jw_key(w, &first, "current_key");
-        mip_jw_chars(w, in->current_key, 32);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "current_key");
+    if (mipc_rd_chars(r, out->current_key, 32)) {
+        return -1;
     }
-    if (in->has_next_key_tow) {
-        mip_jw_key(w, &first, "next_key_tow");
-        mip_jw_u32(w, &in->next_key_tow);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "next_key_tow");
+    if (mipc_rd_u32(r, &out->next_key_tow)) {
+        return -1;
     }
-    if (in->has_next_key_week) {
-        mip_jw_key(w, &first, "next_key_week");
-        mip_jw_u16(w, &in->next_key_week);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "next_key_week");
+    if (mipc_rd_u16(r, &out->next_key_week)) {
+        return -1;
     }
-    if (in->has_next_key) {
-        mip_jw_key(w, &first, "next_key");
-        mip_jw_chars(w, in->next_key, 32);
+    mipc_rd_pop(r);
+    mipc_rd_push(r, "next_key");
+    if (mipc_rd_chars(r, out->next_key, 32)) {
+        return -1;
     }
-    mip_jw_raw(w, "}", 1);
+    mipc_rd_pop(r);
+    return mipc_rd_finish(r);
 }
 
-int mip_gnss_spartn_configuration_from_json(mip_jr_t *jr, size_t pos, mip_gnss_spartn_configuration_t *out) {
-    static const char *const keys[] = {"function",        "enable",           "type",
-                                       "current_key_tow", "current_key_week", "current_key",
-                                       "next_key_tow",    "next_key_week",    "next_key"};
-    size_t vp = 0;
-    int found;
-    int absent = 0;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 9)) {
-        return -1;
+static mipc_status_t
+mipc_gnss_spartn_configuration_response_write(mipc_writer_t *w,
+                                              const mipc_gnss_spartn_configuration_response_t *in) {
+    mipc_status_t st;
+    if ((st = mipc_wr_u8(w, &in->enable)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "function", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"function\"");
+    if ((st = mipc_wr_u8(w, &in->type)) != MIPC_OK) {
+        return st;
     }
-    {
-        mip_jr_push(jr, "function");
-        if (mip_jr_u8(jr, vp, &out->function)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u32(w, &in->current_key_tow)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "enable", &vp);
-    out->has_enable = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"enable\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "enable");
-        if (mip_jr_u8(jr, vp, &out->enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u16(w, &in->current_key_week)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "type", &vp);
-    out->has_type = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"type\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "type");
-        if (mip_jr_u8(jr, vp, &out->type)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_chars(w, in->current_key, 32)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "current_key_tow", &vp);
-    out->has_current_key_tow = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"current_key_tow\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "current_key_tow");
-        if (mip_jr_u32(jr, vp, &out->current_key_tow)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u32(w, &in->next_key_tow)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "current_key_week", &vp);
-    out->has_current_key_week = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"current_key_week\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "current_key_week");
-        if (mip_jr_u16(jr, vp, &out->current_key_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_u16(w, &in->next_key_week)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "current_key", &vp);
-    out->has_current_key = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"current_key\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "current_key");
-        if (mip_jr_chars(jr, vp, out->current_key, 32)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
+    if ((st = mipc_wr_chars(w, in->next_key, 32)) != MIPC_OK) {
+        return st;
     }
-    found = mip_jr_get(jr, pos, "next_key_tow", &vp);
-    out->has_next_key_tow = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"next_key_tow\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "next_key_tow");
-        if (mip_jr_u32(jr, vp, &out->next_key_tow)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "next_key_week", &vp);
-    out->has_next_key_week = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"next_key_week\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "next_key_week");
-        if (mip_jr_u16(jr, vp, &out->next_key_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "next_key", &vp);
-    out->has_next_key = found == 1;
-    if (found != 1) {
-        absent = 1;
-    } else if (absent) {
-        return mip_jr_fail(jr, "optional parameter \"next_key\" given after an absent one");
-    } else {
-        mip_jr_push(jr, "next_key");
-        if (mip_jr_chars(jr, vp, out->next_key, 32)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    return MIPC_OK;
 }
 
-/* ---- mip_gnss_spartn_configuration_response_t */
-
-static int mip_gnss_spartn_configuration_response_read(mip_reader_t *r,
-                                                       mip_gnss_spartn_configuration_response_t *out) {
-    mip_rd_push(r, "enable");
-    if (mip_rd_u8(r, &out->enable)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "type");
-    if (mip_rd_u8(r, &out->type)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "current_key_tow");
-    if (mip_rd_u32(r, &out->current_key_tow)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "current_key_week");
-    if (mip_rd_u16(r, &out->current_key_week)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "current_key");
-    if (mip_rd_chars(r, out->current_key, 32)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "next_key_tow");
-    if (mip_rd_u32(r, &out->next_key_tow)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "next_key_week");
-    if (mip_rd_u16(r, &out->next_key_week)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    mip_rd_push(r, "next_key");
-    if (mip_rd_chars(r, out->next_key, 32)) {
-        return -1;
-    }
-    mip_rd_pop(r);
-    return mip_rd_finish(r);
-}
-
-static mip_status_t
-mip_gnss_spartn_configuration_response_write(mip_writer_t *w,
-                                             const mip_gnss_spartn_configuration_response_t *in) {
-    mip_status_t st;
-    if ((st = mip_wr_u8(w, &in->enable)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u8(w, &in->type)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u32(w, &in->current_key_tow)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->current_key_week)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_chars(w, in->current_key, 32)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u32(w, &in->next_key_tow)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_u16(w, &in->next_key_week)) != MIP_OK) {
-        return st;
-    }
-    if ((st = mip_wr_chars(w, in->next_key, 32)) != MIP_OK) {
-        return st;
-    }
-    return MIP_OK;
-}
-
-mip_status_t
-mip_gnss_spartn_configuration_response_encode(const mip_gnss_spartn_configuration_response_t *value,
-                                              uint8_t *buf, size_t cap, size_t *len_out) {
-    mip_writer_t w;
-    mip_status_t st;
+mipc_status_t
+mipc_gnss_spartn_configuration_response_encode(const mipc_gnss_spartn_configuration_response_t *value,
+                                               uint8_t *buf, size_t cap, size_t *len_out) {
+    mipc_writer_t w;
+    mipc_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    mip_writer_init(&w, buf, cap);
-    st = mip_gnss_spartn_configuration_response_write(&w, value);
-    if (st == MIP_OK && len_out) {
+    mipc_writer_init(&w, buf, cap);
+    st = mipc_gnss_spartn_configuration_response_write(&w, value);
+    if (st == MIPC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
 }
 
-mip_status_t mip_gnss_spartn_configuration_response_decode(const uint8_t *data, size_t len,
-                                                           mip_gnss_spartn_configuration_response_t *out,
-                                                           mip_decode_error_t *err) {
-    mip_reader_t r;
+mipc_status_t mipc_gnss_spartn_configuration_response_decode(const uint8_t *data, size_t len,
+                                                             mipc_gnss_spartn_configuration_response_t *out,
+                                                             mipc_decode_error_t *err) {
+    mipc_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    mip_reader_init(&r, data, len, err);
+    mipc_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return mip_gnss_spartn_configuration_response_read(&r, out) ? MIP_ERR_DECODE : MIP_OK;
-}
-
-void mip_gnss_spartn_configuration_response_to_json(mip_jw_t *w,
-                                                    const mip_gnss_spartn_configuration_response_t *in) {
-    int first = 1;
-    mip_jw_raw(w, "{", 1);
-    mip_jw_key(w, &first, "enable");
-    mip_jw_u8(w, &in->enable);
-    mip_jw_key(w, &first, "type");
-    mip_jw_u8(w, &in->type);
-    mip_jw_key(w, &first, "current_key_tow");
-    mip_jw_u32(w, &in->current_key_tow);
-    mip_jw_key(w, &first, "current_key_week");
-    mip_jw_u16(w, &in->current_key_week);
-    mip_jw_key(w, &first, "current_key");
-    mip_jw_chars(w, in->current_key, 32);
-    mip_jw_key(w, &first, "next_key_tow");
-    mip_jw_u32(w, &in->next_key_tow);
-    mip_jw_key(w, &first, "next_key_week");
-    mip_jw_u16(w, &in->next_key_week);
-    mip_jw_key(w, &first, "next_key");
-    mip_jw_chars(w, in->next_key, 32);
-    mip_jw_raw(w, "}", 1);
-}
-
-int mip_gnss_spartn_configuration_response_from_json(mip_jr_t *jr, size_t pos,
-                                                     mip_gnss_spartn_configuration_response_t *out) {
-    static const char *const keys[] = {"enable",      "type",         "current_key_tow", "current_key_week",
-                                       "current_key", "next_key_tow", "next_key_week",   "next_key"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (mip_jr_object(jr, pos, keys, 8)) {
-        return -1;
-    }
-    found = mip_jr_get(jr, pos, "enable", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"enable\"");
-    }
-    {
-        mip_jr_push(jr, "enable");
-        if (mip_jr_u8(jr, vp, &out->enable)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "type", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"type\"");
-    }
-    {
-        mip_jr_push(jr, "type");
-        if (mip_jr_u8(jr, vp, &out->type)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "current_key_tow", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"current_key_tow\"");
-    }
-    {
-        mip_jr_push(jr, "current_key_tow");
-        if (mip_jr_u32(jr, vp, &out->current_key_tow)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "current_key_week", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"current_key_week\"");
-    }
-    {
-        mip_jr_push(jr, "current_key_week");
-        if (mip_jr_u16(jr, vp, &out->current_key_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "current_key", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"current_key\"");
-    }
-    {
-        mip_jr_push(jr, "current_key");
-        if (mip_jr_chars(jr, vp, out->current_key, 32)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "next_key_tow", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"next_key_tow\"");
-    }
-    {
-        mip_jr_push(jr, "next_key_tow");
-        if (mip_jr_u32(jr, vp, &out->next_key_tow)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "next_key_week", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"next_key_week\"");
-    }
-    {
-        mip_jr_push(jr, "next_key_week");
-        if (mip_jr_u16(jr, vp, &out->next_key_week)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    found = mip_jr_get(jr, pos, "next_key", &vp);
-    if (found != 1) {
-        return mip_jr_fail(jr, "missing parameter \"next_key\"");
-    }
-    {
-        mip_jr_push(jr, "next_key");
-        if (mip_jr_chars(jr, vp, out->next_key, 32)) {
-            return -1;
-        }
-        mip_jr_pop(jr);
-    }
-    return 0;
+    return mipc_gnss_spartn_configuration_response_read(&r, out) ? MIPC_ERR_DECODE : MIPC_OK;
 }

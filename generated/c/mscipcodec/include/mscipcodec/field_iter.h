@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MSCIP_FIELD_ITER_H
-#define MSCIP_FIELD_ITER_H
+#ifndef MSCIPC_FIELD_ITER_H
+#define MSCIPC_FIELD_ITER_H
 
 #include "mscipcodec/framing.h"
 
@@ -17,45 +17,45 @@ extern "C" {
 #endif
 
 typedef enum {
-    MSCIP_ENTRY_FIELD = 1,   /* a complete field */
-    MSCIP_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
-} mscip_entry_kind_t;
+    MSCIPC_ENTRY_FIELD = 1,   /* a complete field */
+    MSCIPC_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
+} mscipc_entry_kind_t;
 
 typedef enum {
-    MSCIP_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
-    MSCIP_TRAILING_SHORT_LENGTH =
+    MSCIPC_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
+    MSCIPC_TRAILING_SHORT_LENGTH =
         2, /* field length {length} at payload offset {offset} is shorter than the field header */
-    MSCIP_TRAILING_OVERRUN =
+    MSCIPC_TRAILING_OVERRUN =
         3 /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
-} mscip_trailing_kind_t;
+} mscipc_trailing_kind_t;
 
 typedef struct {
-    mscip_entry_kind_t kind;
-    size_t offset;                  /* payload offset of the field header / trailing bytes */
-    uint8_t descriptor;             /* fields */
-    const uint8_t *data;            /* field data (after the header), or the trailing bytes */
-    size_t length;                  /* bytes at data */
-    mscip_trailing_kind_t trailing; /* trailing entries: why */
-    uint8_t length_byte;            /* trailing entries: the field length byte as sent */
-} mscip_field_entry_t;
+    mscipc_entry_kind_t kind;
+    size_t offset;                   /* payload offset of the field header / trailing bytes */
+    uint8_t descriptor;              /* fields */
+    const uint8_t *data;             /* field data (after the header), or the trailing bytes */
+    size_t length;                   /* bytes at data */
+    mscipc_trailing_kind_t trailing; /* trailing entries: why */
+    uint8_t length_byte;             /* trailing entries: the field length byte as sent */
+} mscipc_field_entry_t;
 
 typedef struct {
     const uint8_t *payload;
     size_t len;
     size_t pos;
     uint8_t set;
-} mscip_field_iter_t;
+} mscipc_field_iter_t;
 
-/* Private: the trailing entry of mscip_field_iter_next (out of line: it is rare). */
-bool mscip_field_iter_trailing_(mscip_field_iter_t *it, mscip_field_entry_t *entry, uint8_t length_byte,
-                                mscip_trailing_kind_t why);
+/* Private: the trailing entry of mscipc_field_iter_next (out of line: it is rare). */
+bool mscipc_field_iter_trailing_(mscipc_field_iter_t *it, mscipc_field_entry_t *entry, uint8_t length_byte,
+                                 mscipc_trailing_kind_t why);
 
 /* init and next are inline: a decode loop calls next for every field, and inline the iterator
  * and the entry stay in registers. */
 /** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths).
  * `payload` may be NULL (an empty payload, whatever len says). */
-static inline void mscip_field_iter_init(mscip_field_iter_t *it, uint8_t set, const uint8_t *payload,
-                                         size_t len) {
+static inline void mscipc_field_iter_init(mscipc_field_iter_t *it, uint8_t set, const uint8_t *payload,
+                                          size_t len) {
     assert(it != NULL);
     it->set = set;
     it->payload = payload;
@@ -64,7 +64,7 @@ static inline void mscip_field_iter_init(mscip_field_iter_t *it, uint8_t set, co
 }
 
 /** Next entry: returns true and fills *entry, or false after the last one. */
-static inline bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_entry_t *entry) {
+static inline bool mscipc_field_iter_next(mscipc_field_iter_t *it, mscipc_field_entry_t *entry) {
     size_t left;
     int data_len;
     size_t total;
@@ -75,33 +75,34 @@ static inline bool mscip_field_iter_next(mscip_field_iter_t *it, mscip_field_ent
     if (left == 0) {
         return false;
     }
-    if (left < MSCIP_FIELD_HEADER_SIZE) {
-        return mscip_field_iter_trailing_(it, entry, 0, MSCIP_TRAILING_SHORT_HEADER);
+    if (left < MSCIPC_FIELD_HEADER_SIZE) {
+        return mscipc_field_iter_trailing_(it, entry, 0, MSCIPC_TRAILING_SHORT_HEADER);
     }
     head = it->payload + it->pos;
-    data_len = (int)head[MSCIP_FIELD_LENGTH_OFFSET] -
-               mscip_field_length_adjust(it->set, head[MSCIP_FIELD_DESCRIPTOR_OFFSET]);
+    data_len = (int)head[MSCIPC_FIELD_LENGTH_OFFSET] -
+               mscipc_field_length_adjust(it->set, head[MSCIPC_FIELD_DESCRIPTOR_OFFSET]);
     if (data_len < 0) {
-        return mscip_field_iter_trailing_(it, entry, head[MSCIP_FIELD_LENGTH_OFFSET],
-                                          MSCIP_TRAILING_SHORT_LENGTH);
+        return mscipc_field_iter_trailing_(it, entry, head[MSCIPC_FIELD_LENGTH_OFFSET],
+                                           MSCIPC_TRAILING_SHORT_LENGTH);
     }
-    total = MSCIP_FIELD_HEADER_SIZE + (size_t)data_len;
+    total = MSCIPC_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {
-        return mscip_field_iter_trailing_(it, entry, head[MSCIP_FIELD_LENGTH_OFFSET], MSCIP_TRAILING_OVERRUN);
+        return mscipc_field_iter_trailing_(it, entry, head[MSCIPC_FIELD_LENGTH_OFFSET],
+                                           MSCIPC_TRAILING_OVERRUN);
     }
-    entry->kind = MSCIP_ENTRY_FIELD;
+    entry->kind = MSCIPC_ENTRY_FIELD;
     entry->offset = it->pos;
-    entry->descriptor = head[MSCIP_FIELD_DESCRIPTOR_OFFSET];
-    entry->data = head + MSCIP_FIELD_HEADER_SIZE;
+    entry->descriptor = head[MSCIPC_FIELD_DESCRIPTOR_OFFSET];
+    entry->data = head + MSCIPC_FIELD_HEADER_SIZE;
     entry->length = (size_t)data_len;
-    entry->trailing = MSCIP_TRAILING_SHORT_HEADER;
-    entry->length_byte = head[MSCIP_FIELD_LENGTH_OFFSET];
+    entry->trailing = MSCIPC_TRAILING_SHORT_HEADER;
+    entry->length_byte = head[MSCIPC_FIELD_LENGTH_OFFSET];
     it->pos += total;
     return true;
 }
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
-size_t mscip_trailing_format(const mscip_field_entry_t *entry, char *buf, size_t cap);
+size_t mscipc_trailing_format(const mscipc_field_entry_t *entry, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MSCIP_FRAMING_H
-#define MSCIP_FRAMING_H
+#ifndef MSCIPC_FRAMING_H
+#define MSCIPC_FRAMING_H
 
 #include "mscipcodec/protocol.h"
 #include "mscipcodec/status.h"
@@ -17,32 +17,32 @@ extern "C" {
 #endif
 
 /** The sync sequence as bytes. */
-extern const uint8_t mscip_sync[MSCIP_SYNC_SIZE];
+extern const uint8_t mscipc_sync[MSCIPC_SYNC_SIZE];
 
 /**
  * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
- * out[0..1] receive the checksum in wire order (see MSCIP_CHECKSUM_SUM1_FIRST).
+ * out[0..1] receive the checksum in wire order (see MSCIPC_CHECKSUM_SUM1_FIRST).
  */
-void mscip_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIP_CHECKSUM_SIZE]);
+void mscipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MSCIPC_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */
-uint16_t mscip_checksum_word(const uint8_t *bytes, size_t len);
-/** True when the MSCIP_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
-bool mscip_checksum_matches(const uint8_t *bytes, size_t len);
+uint16_t mscipc_checksum_word(const uint8_t *bytes, size_t len);
+/** True when the MSCIPC_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
+bool mscipc_checksum_matches(const uint8_t *bytes, size_t len);
 
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
-bool mscip_packet_valid(const uint8_t *packet, size_t len);
+bool mscipc_packet_valid(const uint8_t *packet, size_t len);
 /* The header accessors are inline: a decode loop calls them for every packet. */
-/** Descriptor set of a packet (at least MSCIP_HEADER_SIZE bytes: check the length first). */
-static inline uint8_t mscip_packet_set(const uint8_t *packet) {
-    return packet[MSCIP_SET_OFFSET];
+/** Descriptor set of a packet (at least MSCIPC_HEADER_SIZE bytes: check the length first). */
+static inline uint8_t mscipc_packet_set(const uint8_t *packet) {
+    return packet[MSCIPC_SET_OFFSET];
 }
-/** Payload length byte of a packet (at least MSCIP_HEADER_SIZE bytes). */
-static inline uint8_t mscip_packet_payload_length(const uint8_t *packet) {
-    return packet[MSCIP_LENGTH_OFFSET];
+/** Payload length byte of a packet (at least MSCIPC_HEADER_SIZE bytes). */
+static inline uint8_t mscipc_packet_payload_length(const uint8_t *packet) {
+    return packet[MSCIPC_LENGTH_OFFSET];
 }
 /** Start of the payload of a packet. */
-static inline const uint8_t *mscip_packet_payload(const uint8_t *packet) {
-    return packet + MSCIP_HEADER_SIZE;
+static inline const uint8_t *mscipc_packet_payload(const uint8_t *packet) {
+    return packet + MSCIPC_HEADER_SIZE;
 }
 
 /**
@@ -53,19 +53,19 @@ typedef struct {
     uint8_t *buf;
     size_t cap;
     size_t len;
-    mscip_status_t status;
+    mscipc_status_t status;
     uint8_t set;
-} mscip_packet_builder_t;
+} mscipc_packet_builder_t;
 
 /** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */
-void mscip_packet_begin(mscip_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
+void mscipc_packet_begin(mscipc_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
 /** Appends a field: header (descriptor, length) and data_len bytes of data. */
-mscip_status_t mscip_packet_add_field(mscip_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                      size_t data_len);
+mscipc_status_t mscipc_packet_add_field(mscipc_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                        size_t data_len);
 /** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
-mscip_status_t mscip_packet_add_raw(mscip_packet_builder_t *b, const uint8_t *bytes, size_t len);
+mscipc_status_t mscipc_packet_add_raw(mscipc_packet_builder_t *b, const uint8_t *bytes, size_t len);
 /** Writes the payload length and checksum; *len_out (len_out may be NULL) receives the packet size. */
-mscip_status_t mscip_packet_finish(mscip_packet_builder_t *b, size_t *len_out);
+mscipc_status_t mscipc_packet_finish(mscipc_packet_builder_t *b, size_t *len_out);
 
 #ifdef __cplusplus
 }

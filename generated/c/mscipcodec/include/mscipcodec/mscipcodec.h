@@ -1,7 +1,7 @@
 /* mscipcodec: C99 codec of the Memsense MS-CIP protocol. Generated from the spec: do not edit.
  * Everything is bounded by caller buffers; nothing allocates. */
-#ifndef MSCIP_MSCIPCODEC_H
-#define MSCIP_MSCIPCODEC_H
+#ifndef MSCIPC_MSCIPCODEC_H
+#define MSCIPC_MSCIPCODEC_H
 
 #include "mscipcodec/version.h"
 #include "mscipcodec/status.h"

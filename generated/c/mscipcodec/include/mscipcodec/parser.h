@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MSCIP_PARSER_H
-#define MSCIP_PARSER_H
+#ifndef MSCIPC_PARSER_H
+#define MSCIPC_PARSER_H
 
 #include "mscipcodec/framing.h"
 
@@ -15,37 +15,38 @@ extern "C" {
 #endif
 
 typedef enum {
-    MSCIP_EVENT_PACKET = 1, /* a packet with a valid checksum */
-    MSCIP_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
-} mscip_event_kind_t;
+    MSCIPC_EVENT_PACKET = 1, /* a packet with a valid checksum */
+    MSCIPC_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
+} mscipc_event_kind_t;
 
 typedef struct {
-    mscip_event_kind_t kind;
+    mscipc_event_kind_t kind;
     uint64_t offset;       /* stream offset of the packet or of the first skipped byte */
     uint64_t length;       /* packet size, or number of skipped bytes */
     const uint8_t *packet; /* the packet bytes (valid during the callback); NULL for skips */
-} mscip_event_t;
+} mscipc_event_t;
 
-typedef void (*mscip_event_fn)(void *ctx, const mscip_event_t *event);
+typedef void (*mscipc_event_fn)(void *ctx, const mscipc_event_t *event);
 
 /**
  * Fixed-size state: at most one maximum packet is buffered. Events do not depend on how the
  * input is split into chunks; a skip run is reported just before the next packet or at flush.
  */
 typedef struct {
-    uint8_t buf[MSCIP_MAX_PACKET];
+    uint8_t buf[MSCIPC_MAX_PACKET];
     size_t used;          /* bytes in buf */
     uint64_t base;        /* stream offset of buf[0] */
     uint64_t skip_offset; /* pending skip run */
     uint64_t skip_count;
-} mscip_parser_t;
+} mscipc_parser_t;
 
-void mscip_parser_init(mscip_parser_t *parser);
+void mscipc_parser_init(mscipc_parser_t *parser);
 /** Feeds a chunk of the stream; events are delivered through fn (not NULL) with ctx (may be NULL). */
-void mscip_parser_feed(mscip_parser_t *parser, const uint8_t *data, size_t len, mscip_event_fn fn, void *ctx);
+void mscipc_parser_feed(mscipc_parser_t *parser, const uint8_t *data, size_t len, mscipc_event_fn fn,
+                        void *ctx);
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
-void mscip_parser_flush(mscip_parser_t *parser, mscip_event_fn fn, void *ctx);
+void mscipc_parser_flush(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MSCIP_SAMPLES_H
-#define MSCIP_SAMPLES_H
+#ifndef MSCIPC_SAMPLES_H
+#define MSCIPC_SAMPLES_H
 
 #include "mscipcodec/framing.h"
 
@@ -19,33 +19,33 @@ typedef struct {
     uint64_t number; /* sample number of the last packet of this set */
     uint8_t key_len; /* 0: that packet had no key */
     uint8_t used;    /* a packet of this set was seen */
-    uint8_t key[MSCIP_SAMPLE_KEY_MAX];
-} mscip_sample_slot_t;
+    uint8_t key[MSCIPC_SAMPLE_KEY_MAX];
+} mscipc_sample_slot_t;
 
 /** Fixed-size state (no allocation): the key and sample number of the last packet of each set. */
 typedef struct {
-    mscip_sample_slot_t slots[MSCIP_SAMPLE_SETS];
+    mscipc_sample_slot_t slots[MSCIPC_SAMPLE_SETS];
     uint64_t next; /* number of the next new sample */
-} mscip_sample_tracker_t;
+} mscipc_sample_tracker_t;
 
 typedef struct {
     uint64_t number;      /* the sample the packet belongs to (numbered from 0 in stream order) */
     bool continues;       /* true: a continuation of an earlier packet's sample */
     size_t shared_prefix; /* payload bytes of the leading shared run (copies, in a continuation) */
-} mscip_sample_info_t;
+} mscipc_sample_info_t;
 
-void mscip_sample_tracker_init(mscip_sample_tracker_t *tracker);
+void mscipc_sample_tracker_init(mscipc_sample_tracker_t *tracker);
 /**
  * Places one complete packet (as delivered by the parser). Returns true and fills *info for a
  * packet of a data set; false for other packets (command sets, unknown sets, a malformed buffer).
  */
-bool mscip_sample_tracker_feed(mscip_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                               mscip_sample_info_t *info);
+bool mscipc_sample_tracker_feed(mscipc_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                                mscipc_sample_info_t *info);
 /**
- * The key of a complete packet into key[MSCIP_SAMPLE_KEY_MAX]; returns its length (0: no key).
+ * The key of a complete packet into key[MSCIPC_SAMPLE_KEY_MAX]; returns its length (0: no key).
  * *shared_prefix (if not NULL) receives the payload bytes of the leading shared run.
  */
-size_t mscip_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
+size_t mscipc_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
 
 #ifdef __cplusplus
 }

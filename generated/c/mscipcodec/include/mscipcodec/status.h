@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef MSCIP_STATUS_H
-#define MSCIP_STATUS_H
+#ifndef MSCIPC_STATUS_H
+#define MSCIPC_STATUS_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -20,40 +20,40 @@ extern "C" {
 
 /** Result of every encode/decode/dispatch call. */
 typedef enum {
-    MSCIP_OK = 0,
-    MSCIP_ERR_DECODE = 1,      /* field data does not match the layout (see mscip_decode_error_t) */
-    MSCIP_ERR_BUFFER = 2,      /* the output buffer is too small */
-    MSCIP_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
-    MSCIP_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
-    MSCIP_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
-    MSCIP_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
-    MSCIP_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
-} mscip_status_t;
+    MSCIPC_OK = 0,
+    MSCIPC_ERR_DECODE = 1,      /* field data does not match the layout (see mscipc_decode_error_t) */
+    MSCIPC_ERR_BUFFER = 2,      /* the output buffer is too small */
+    MSCIPC_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
+    MSCIPC_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
+    MSCIPC_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
+    MSCIPC_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
+    MSCIPC_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
+} mscipc_status_t;
 
 /** Short English text of a status code. */
-const char *mscip_status_text(mscip_status_t status);
+const char *mscipc_status_text(mscipc_status_t status);
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {
     const char *name;
     size_t index;
-} mscip_path_segment_t;
+} mscipc_path_segment_t;
 
 /** Which of the messages of docs/conformance.md section 3 a decode error is. */
 typedef enum {
-    MSCIP_DECODE_NONE = 0,
-    MSCIP_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
-    MSCIP_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
-    MSCIP_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
-    MSCIP_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
-    MSCIP_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
-    MSCIP_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
-} mscip_decode_error_kind_t;
+    MSCIPC_DECODE_NONE = 0,
+    MSCIPC_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
+    MSCIPC_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
+    MSCIPC_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
+    MSCIPC_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
+    MSCIPC_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
+    MSCIPC_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
+} mscipc_decode_error_kind_t;
 
 /** Everything needed to print the exact message of a decode error. */
 typedef struct {
-    mscip_decode_error_kind_t kind;
-    mscip_path_segment_t path[MSCIP_PATH_MAX_DEPTH];
+    mscipc_decode_error_kind_t kind;
+    mscipc_path_segment_t path[MSCIPC_PATH_MAX_DEPTH];
     size_t depth;      /* number of path segments */
     size_t offset;     /* offset within the field data */
     size_t need;       /* bytes the value needs / element size */
@@ -62,13 +62,13 @@ typedef struct {
     uint64_t max;      /* maximum element count */
     uint64_t value;    /* invalid bool / selector value (two's complement when value_signed) */
     bool value_signed; /* value is an int64_t */
-} mscip_decode_error_t;
+} mscipc_decode_error_t;
 
 /**
  * Writes the message of a decode error into buf (always NUL-terminated when cap > 0).
  * Returns the length the full message has (like snprintf).
  */
-size_t mscip_decode_error_format(const mscip_decode_error_t *err, char *buf, size_t cap);
+size_t mscipc_decode_error_format(const mscipc_decode_error_t *err, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

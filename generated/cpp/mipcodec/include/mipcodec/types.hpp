@@ -8419,13 +8419,13 @@ inline bool from_string(const char *name, VehicleDynamicsMode &out) {
 struct ActionGpioParams {
     std::uint8_t pin{};                       ///< GPIO pin number.
     ::mipcodec::types::ActionGpioMode mode{}; ///< Behavior of the pin.
-    friend bool operator==(const ActionGpioParams &a, const ActionGpioParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.pin == b.pin && a.mode == b.mode;
+    friend bool operator==(const ActionGpioParams &Lhs, const ActionGpioParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pin == Rhs.pin && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const ActionGpioParams &a, const ActionGpioParams &b) {
-        return !(a == b);
+    friend bool operator!=(const ActionGpioParams &Lhs, const ActionGpioParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8435,14 +8435,14 @@ struct MessageParams {
     std::uint16_t decimation{}; ///< Decimation from the base rate; 0 emits one packet per activation.
     std::uint8_t num_fields{};  ///< Number of fields in the packet (at most 12).
     ::mipcodec::BoundedVector<std::uint8_t, 12> descriptors{}; ///< Field descriptors.
-    friend bool operator==(const MessageParams &a, const MessageParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.decimation == b.decimation &&
-               a.num_fields == b.num_fields && a.descriptors == b.descriptors;
+    friend bool operator==(const MessageParams &Lhs, const MessageParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.decimation == Rhs.decimation &&
+               Lhs.num_fields == Rhs.num_fields && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const MessageParams &a, const MessageParams &b) {
-        return !(a == b);
+    friend bool operator!=(const MessageParams &Lhs, const MessageParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8462,13 +8462,13 @@ struct ActionParams {
 struct ActionStatusEntry {
     ::mipcodec::types::ActionType action_type{}; ///< Configured action type.
     std::uint8_t trigger_id{};                   ///< Associated trigger instance.
-    friend bool operator==(const ActionStatusEntry &a, const ActionStatusEntry &b) {
-        (void)a;
-        (void)b;
-        return true && a.action_type == b.action_type && a.trigger_id == b.trigger_id;
+    friend bool operator==(const ActionStatusEntry &Lhs, const ActionStatusEntry &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.action_type == Rhs.action_type && Lhs.trigger_id == Rhs.trigger_id;
     }
-    friend bool operator!=(const ActionStatusEntry &a, const ActionStatusEntry &b) {
-        return !(a == b);
+    friend bool operator!=(const ActionStatusEntry &Lhs, const ActionStatusEntry &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8476,26 +8476,26 @@ struct ActionStatusEntry {
 struct AidingFrameEuler {
     std::array<float, 3>
         euler{}; ///< Roll, pitch, yaw of the frame relative to the vehicle frame, each within +/- pi. [rad]
-    friend bool operator==(const AidingFrameEuler &a, const AidingFrameEuler &b) {
-        (void)a;
-        (void)b;
-        return true && a.euler == b.euler;
+    friend bool operator==(const AidingFrameEuler &Lhs, const AidingFrameEuler &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.euler == Rhs.euler;
     }
-    friend bool operator!=(const AidingFrameEuler &a, const AidingFrameEuler &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingFrameEuler &Lhs, const AidingFrameEuler &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// Aiding frame rotation as a quaternion
 struct AidingFrameQuaternion {
     std::array<float, 4> quaternion{}; ///< Rotation of the frame relative to the vehicle frame, (w, x, y, z).
-    friend bool operator==(const AidingFrameQuaternion &a, const AidingFrameQuaternion &b) {
-        (void)a;
-        (void)b;
-        return true && a.quaternion == b.quaternion;
+    friend bool operator==(const AidingFrameQuaternion &Lhs, const AidingFrameQuaternion &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.quaternion == Rhs.quaternion;
     }
-    friend bool operator!=(const AidingFrameQuaternion &a, const AidingFrameQuaternion &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingFrameQuaternion &Lhs, const AidingFrameQuaternion &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8518,13 +8518,14 @@ struct AidingTime {
     ::mipcodec::types::AidingTimebase timebase{}; ///< Clock of the timestamp.
     std::uint8_t reserved{};                      ///< Reserved.
     std::uint64_t nanoseconds{}; ///< Time of the measurement in nanoseconds, in the timebase's clock. [ns]
-    friend bool operator==(const AidingTime &a, const AidingTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.timebase == b.timebase && a.reserved == b.reserved && a.nanoseconds == b.nanoseconds;
+    friend bool operator==(const AidingTime &Lhs, const AidingTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.timebase == Rhs.timebase && Lhs.reserved == Rhs.reserved &&
+               Lhs.nanoseconds == Rhs.nanoseconds;
     }
-    friend bool operator!=(const AidingTime &a, const AidingTime &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingTime &Lhs, const AidingTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8532,13 +8533,13 @@ struct AidingTime {
 struct CombinationParams {
     std::uint16_t logic_table{};                  ///< Last column of the truth table of the inputs.
     std::array<std::uint8_t, 4> input_triggers{}; ///< Trigger IDs of the inputs; 0 for unused inputs.
-    friend bool operator==(const CombinationParams &a, const CombinationParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.logic_table == b.logic_table && a.input_triggers == b.input_triggers;
+    friend bool operator==(const CombinationParams &Lhs, const CombinationParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.logic_table == Rhs.logic_table && Lhs.input_triggers == Rhs.input_triggers;
     }
-    friend bool operator!=(const CombinationParams &a, const CombinationParams &b) {
-        return !(a == b);
+    friend bool operator!=(const CombinationParams &Lhs, const CombinationParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8551,15 +8552,15 @@ struct ConstellationSettings {
     std::uint8_t max_channels{};      ///< Maximum tracking channels for this constellation (0-32, not below
                                       ///< reserved_channels).
     ::mipcodec::types::ConstellationOptions option_flags{}; ///< Constellation options.
-    friend bool operator==(const ConstellationSettings &a, const ConstellationSettings &b) {
-        (void)a;
-        (void)b;
-        return true && a.constellation_id == b.constellation_id && a.enable == b.enable &&
-               a.reserved_channels == b.reserved_channels && a.max_channels == b.max_channels &&
-               a.option_flags == b.option_flags;
+    friend bool operator==(const ConstellationSettings &Lhs, const ConstellationSettings &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.constellation_id == Rhs.constellation_id && Lhs.enable == Rhs.enable &&
+               Lhs.reserved_channels == Rhs.reserved_channels && Lhs.max_channels == Rhs.max_channels &&
+               Lhs.option_flags == Rhs.option_flags;
     }
-    friend bool operator!=(const ConstellationSettings &a, const ConstellationSettings &b) {
-        return !(a == b);
+    friend bool operator!=(const ConstellationSettings &Lhs, const ConstellationSettings &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8583,20 +8584,20 @@ struct Cv7ContinuousBit {
     ::mipcodec::types::Cv7ContinuousBitGnss13 gnss_byte_13{}; ///< Bits 104-111: GNSS receivers.
     ::mipcodec::types::Cv7ContinuousBitGnss14 gnss_byte_14{}; ///< Bits 112-119: GNSS receivers.
     std::uint8_t reserved_byte_15{};                          ///< Bits 120-127: reserved.
-    friend bool operator==(const Cv7ContinuousBit &a, const Cv7ContinuousBit &b) {
-        (void)a;
-        (void)b;
-        return true && a.system_byte_0 == b.system_byte_0 && a.reserved_byte_1 == b.reserved_byte_1 &&
-               a.system_byte_2 == b.system_byte_2 && a.system_byte_3 == b.system_byte_3 &&
-               a.imu_byte_4 == b.imu_byte_4 && a.imu_byte_5 == b.imu_byte_5 && a.imu_byte_6 == b.imu_byte_6 &&
-               a.imu_byte_7 == b.imu_byte_7 && a.nav_byte_8 == b.nav_byte_8 &&
-               a.reserved_byte_9 == b.reserved_byte_9 && a.reserved_byte_10 == b.reserved_byte_10 &&
-               a.reserved_byte_11 == b.reserved_byte_11 && a.reserved_byte_12 == b.reserved_byte_12 &&
-               a.gnss_byte_13 == b.gnss_byte_13 && a.gnss_byte_14 == b.gnss_byte_14 &&
-               a.reserved_byte_15 == b.reserved_byte_15;
+    friend bool operator==(const Cv7ContinuousBit &Lhs, const Cv7ContinuousBit &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.system_byte_0 == Rhs.system_byte_0 && Lhs.reserved_byte_1 == Rhs.reserved_byte_1 &&
+               Lhs.system_byte_2 == Rhs.system_byte_2 && Lhs.system_byte_3 == Rhs.system_byte_3 &&
+               Lhs.imu_byte_4 == Rhs.imu_byte_4 && Lhs.imu_byte_5 == Rhs.imu_byte_5 &&
+               Lhs.imu_byte_6 == Rhs.imu_byte_6 && Lhs.imu_byte_7 == Rhs.imu_byte_7 &&
+               Lhs.nav_byte_8 == Rhs.nav_byte_8 && Lhs.reserved_byte_9 == Rhs.reserved_byte_9 &&
+               Lhs.reserved_byte_10 == Rhs.reserved_byte_10 && Lhs.reserved_byte_11 == Rhs.reserved_byte_11 &&
+               Lhs.reserved_byte_12 == Rhs.reserved_byte_12 && Lhs.gnss_byte_13 == Rhs.gnss_byte_13 &&
+               Lhs.gnss_byte_14 == Rhs.gnss_byte_14 && Lhs.reserved_byte_15 == Rhs.reserved_byte_15;
     }
-    friend bool operator!=(const Cv7ContinuousBit &a, const Cv7ContinuousBit &b) {
-        return !(a == b);
+    friend bool operator!=(const Cv7ContinuousBit &Lhs, const Cv7ContinuousBit &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8604,13 +8605,13 @@ struct Cv7ContinuousBit {
 struct DescriptorRate {
     std::uint8_t descriptor{};  ///< Data field descriptor.
     std::uint16_t decimation{}; ///< Rate decimation: the field is output at base rate / decimation.
-    friend bool operator==(const DescriptorRate &a, const DescriptorRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.descriptor == b.descriptor && a.decimation == b.decimation;
+    friend bool operator==(const DescriptorRate &Lhs, const DescriptorRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.descriptor == Rhs.descriptor && Lhs.decimation == Rhs.decimation;
     }
-    friend bool operator!=(const DescriptorRate &a, const DescriptorRate &b) {
-        return !(a == b);
+    friend bool operator!=(const DescriptorRate &Lhs, const DescriptorRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8622,15 +8623,15 @@ struct DeviceInfo {
     std::array<char, 16> serial_number{};  ///< Serial number.
     std::array<char, 16> lot_number{};     ///< Lot number.
     std::array<char, 16> device_options{}; ///< Device options (e.g. sensor ranges).
-    friend bool operator==(const DeviceInfo &a, const DeviceInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.firmware_version == b.firmware_version && a.model_name == b.model_name &&
-               a.model_number == b.model_number && a.serial_number == b.serial_number &&
-               a.lot_number == b.lot_number && a.device_options == b.device_options;
+    friend bool operator==(const DeviceInfo &Lhs, const DeviceInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.firmware_version == Rhs.firmware_version && Lhs.model_name == Rhs.model_name &&
+               Lhs.model_number == Rhs.model_number && Lhs.serial_number == Rhs.serial_number &&
+               Lhs.lot_number == Rhs.lot_number && Lhs.device_options == Rhs.device_options;
     }
-    friend bool operator!=(const DeviceInfo &a, const DeviceInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceInfo &Lhs, const DeviceInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8639,92 +8640,93 @@ struct GnssReceiverInfoEntry {
     std::uint8_t receiver_id{};             ///< Receiver id (1, 2, ...).
     std::uint8_t mip_data_descriptor_set{}; ///< MIP data descriptor set of this receiver's data.
     std::array<char, 32> description{};     ///< ASCII, comma-delimited: module name/model, firmware version.
-    friend bool operator==(const GnssReceiverInfoEntry &a, const GnssReceiverInfoEntry &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_id == b.receiver_id &&
-               a.mip_data_descriptor_set == b.mip_data_descriptor_set && a.description == b.description;
+    friend bool operator==(const GnssReceiverInfoEntry &Lhs, const GnssReceiverInfoEntry &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_id == Rhs.receiver_id &&
+               Lhs.mip_data_descriptor_set == Rhs.mip_data_descriptor_set &&
+               Lhs.description == Rhs.description;
     }
-    friend bool operator!=(const GnssReceiverInfoEntry &a, const GnssReceiverInfoEntry &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssReceiverInfoEntry &Lhs, const GnssReceiverInfoEntry &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorUnused
 struct GpioBehaviorUnused {
     ::mipcodec::types::GpioUnusedBehavior behavior{}; ///< Behavior value (0).
-    friend bool operator==(const GpioBehaviorUnused &a, const GpioBehaviorUnused &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorUnused &Lhs, const GpioBehaviorUnused &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorUnused &a, const GpioBehaviorUnused &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorUnused &Lhs, const GpioBehaviorUnused &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorIo
 struct GpioBehaviorIo {
     ::mipcodec::types::GpioIoBehavior behavior{}; ///< Input, or output with its initial state.
-    friend bool operator==(const GpioBehaviorIo &a, const GpioBehaviorIo &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorIo &Lhs, const GpioBehaviorIo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorIo &a, const GpioBehaviorIo &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorIo &Lhs, const GpioBehaviorIo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorPps
 struct GpioBehaviorPps {
     ::mipcodec::types::GpioPpsBehavior behavior{}; ///< PPS input or output.
-    friend bool operator==(const GpioBehaviorPps &a, const GpioBehaviorPps &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorPps &Lhs, const GpioBehaviorPps &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorPps &a, const GpioBehaviorPps &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorPps &Lhs, const GpioBehaviorPps &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorEncoder
 struct GpioBehaviorEncoder {
     ::mipcodec::types::GpioEncoderBehavior behavior{}; ///< Quadrature channel A or B.
-    friend bool operator==(const GpioBehaviorEncoder &a, const GpioBehaviorEncoder &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorEncoder &Lhs, const GpioBehaviorEncoder &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorEncoder &a, const GpioBehaviorEncoder &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorEncoder &Lhs, const GpioBehaviorEncoder &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorTimestamp
 struct GpioBehaviorTimestamp {
     ::mipcodec::types::GpioTimestampBehavior behavior{}; ///< Which edges are timestamped.
-    friend bool operator==(const GpioBehaviorTimestamp &a, const GpioBehaviorTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorTimestamp &Lhs, const GpioBehaviorTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorTimestamp &a, const GpioBehaviorTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorTimestamp &Lhs, const GpioBehaviorTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
 /// GpioBehaviorUart
 struct GpioBehaviorUart {
     ::mipcodec::types::GpioUartBehavior behavior{}; ///< UART port and direction.
-    friend bool operator==(const GpioBehaviorUart &a, const GpioBehaviorUart &b) {
-        (void)a;
-        (void)b;
-        return true && a.behavior == b.behavior;
+    friend bool operator==(const GpioBehaviorUart &Lhs, const GpioBehaviorUart &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.behavior == Rhs.behavior;
     }
-    friend bool operator!=(const GpioBehaviorUart &a, const GpioBehaviorUart &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioBehaviorUart &Lhs, const GpioBehaviorUart &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8748,14 +8750,14 @@ struct Gx5BasicStatus {
     std::uint32_t status_flags{}; ///< Status flags (reserved).
     std::uint16_t system_state{}; ///< System state (values not documented).
     std::uint32_t system_timer{}; ///< Time since start-up. [ms]
-    friend bool operator==(const Gx5BasicStatus &a, const Gx5BasicStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.status_flags == b.status_flags && a.system_state == b.system_state &&
-               a.system_timer == b.system_timer;
+    friend bool operator==(const Gx5BasicStatus &Lhs, const Gx5BasicStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.status_flags == Rhs.status_flags && Lhs.system_state == Rhs.system_state &&
+               Lhs.system_timer == Rhs.system_timer;
     }
-    friend bool operator!=(const Gx5BasicStatus &a, const Gx5BasicStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const Gx5BasicStatus &Lhs, const Gx5BasicStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8782,27 +8784,29 @@ struct Gx5DiagnosticStatus {
     std::uint32_t gnss_parse_errors{};      ///< GNSS message parsing errors. [count]
     std::uint32_t gnss_messages_read{};     ///< GNSS messages read in total. [count]
     std::uint32_t last_gnss_message_time{}; ///< System timer value at the last GNSS message read. [ms]
-    friend bool operator==(const Gx5DiagnosticStatus &a, const Gx5DiagnosticStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.status_flags == b.status_flags && a.system_state == b.system_state &&
-               a.system_timer == b.system_timer && a.gnss_power_state == b.gnss_power_state &&
-               a.pps_pulse_count == b.pps_pulse_count && a.last_pps_time == b.last_pps_time &&
-               a.imu_stream_enabled == b.imu_stream_enabled &&
-               a.gnss_stream_enabled == b.gnss_stream_enabled &&
-               a.filter_stream_enabled == b.filter_stream_enabled &&
-               a.imu_dropped_packets == b.imu_dropped_packets &&
-               a.gnss_dropped_packets == b.gnss_dropped_packets &&
-               a.filter_dropped_packets == b.filter_dropped_packets &&
-               a.com_bytes_written == b.com_bytes_written && a.com_bytes_read == b.com_bytes_read &&
-               a.com_write_overruns == b.com_write_overruns && a.imu_parse_errors == b.imu_parse_errors &&
-               a.imu_messages_read == b.imu_messages_read &&
-               a.last_imu_message_time == b.last_imu_message_time &&
-               a.gnss_parse_errors == b.gnss_parse_errors && a.gnss_messages_read == b.gnss_messages_read &&
-               a.last_gnss_message_time == b.last_gnss_message_time;
+    friend bool operator==(const Gx5DiagnosticStatus &Lhs, const Gx5DiagnosticStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.status_flags == Rhs.status_flags && Lhs.system_state == Rhs.system_state &&
+               Lhs.system_timer == Rhs.system_timer && Lhs.gnss_power_state == Rhs.gnss_power_state &&
+               Lhs.pps_pulse_count == Rhs.pps_pulse_count && Lhs.last_pps_time == Rhs.last_pps_time &&
+               Lhs.imu_stream_enabled == Rhs.imu_stream_enabled &&
+               Lhs.gnss_stream_enabled == Rhs.gnss_stream_enabled &&
+               Lhs.filter_stream_enabled == Rhs.filter_stream_enabled &&
+               Lhs.imu_dropped_packets == Rhs.imu_dropped_packets &&
+               Lhs.gnss_dropped_packets == Rhs.gnss_dropped_packets &&
+               Lhs.filter_dropped_packets == Rhs.filter_dropped_packets &&
+               Lhs.com_bytes_written == Rhs.com_bytes_written && Lhs.com_bytes_read == Rhs.com_bytes_read &&
+               Lhs.com_write_overruns == Rhs.com_write_overruns &&
+               Lhs.imu_parse_errors == Rhs.imu_parse_errors &&
+               Lhs.imu_messages_read == Rhs.imu_messages_read &&
+               Lhs.last_imu_message_time == Rhs.last_imu_message_time &&
+               Lhs.gnss_parse_errors == Rhs.gnss_parse_errors &&
+               Lhs.gnss_messages_read == Rhs.gnss_messages_read &&
+               Lhs.last_gnss_message_time == Rhs.last_gnss_message_time;
     }
-    friend bool operator!=(const Gx5DiagnosticStatus &a, const Gx5DiagnosticStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const Gx5DiagnosticStatus &Lhs, const Gx5DiagnosticStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8823,13 +8827,13 @@ struct Gx5DeviceStatus {
 struct Gx5PollDescriptor {
     std::uint8_t descriptor{}; ///< Data field descriptor to include in the polled packet.
     std::uint16_t reserved{};  ///< Reserved; 0 in every example.
-    friend bool operator==(const Gx5PollDescriptor &a, const Gx5PollDescriptor &b) {
-        (void)a;
-        (void)b;
-        return true && a.descriptor == b.descriptor && a.reserved == b.reserved;
+    friend bool operator==(const Gx5PollDescriptor &Lhs, const Gx5PollDescriptor &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.descriptor == Rhs.descriptor && Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const Gx5PollDescriptor &a, const Gx5PollDescriptor &b) {
-        return !(a == b);
+    friend bool operator!=(const Gx5PollDescriptor &Lhs, const Gx5PollDescriptor &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8842,14 +8846,14 @@ struct NmeaMessage {
     std::uint8_t
         source_desc_set{}; ///< Data descriptor set the sentence is built from (IMU, filter, GNSS 1 or 2).
     std::uint16_t decimation{}; ///< Decimation relative to the base rate of the source descriptor set.
-    friend bool operator==(const NmeaMessage &a, const NmeaMessage &b) {
-        (void)a;
-        (void)b;
-        return true && a.message_id == b.message_id && a.talker_id == b.talker_id &&
-               a.source_desc_set == b.source_desc_set && a.decimation == b.decimation;
+    friend bool operator==(const NmeaMessage &Lhs, const NmeaMessage &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.message_id == Rhs.message_id && Lhs.talker_id == Rhs.talker_id &&
+               Lhs.source_desc_set == Rhs.source_desc_set && Lhs.decimation == Rhs.decimation;
     }
-    friend bool operator!=(const NmeaMessage &a, const NmeaMessage &b) {
-        return !(a == b);
+    friend bool operator!=(const NmeaMessage &Lhs, const NmeaMessage &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8857,13 +8861,13 @@ struct NmeaMessage {
 struct SensorRangeEntry {
     std::uint8_t setting{}; ///< Value to use as setting in Sensor Range (0x0C,0x52).
     float range{};          ///< Range this setting gives; units depend on the sensor (see SensorRangeType).
-    friend bool operator==(const SensorRangeEntry &a, const SensorRangeEntry &b) {
-        (void)a;
-        (void)b;
-        return true && a.setting == b.setting && a.range == b.range;
+    friend bool operator==(const SensorRangeEntry &Lhs, const SensorRangeEntry &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.setting == Rhs.setting && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const SensorRangeEntry &a, const SensorRangeEntry &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorRangeEntry &Lhs, const SensorRangeEntry &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8871,13 +8875,13 @@ struct SensorRangeEntry {
 struct SupportedActionType {
     ::mipcodec::types::ActionType type{}; ///< Action type, as in Event Action Configuration (0x0C,0x2F).
     std::uint8_t count{};                 ///< Maximum number of instances of this type.
-    friend bool operator==(const SupportedActionType &a, const SupportedActionType &b) {
-        (void)a;
-        (void)b;
-        return true && a.type == b.type && a.count == b.count;
+    friend bool operator==(const SupportedActionType &Lhs, const SupportedActionType &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.type == Rhs.type && Lhs.count == Rhs.count;
     }
-    friend bool operator!=(const SupportedActionType &a, const SupportedActionType &b) {
-        return !(a == b);
+    friend bool operator!=(const SupportedActionType &Lhs, const SupportedActionType &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8887,14 +8891,14 @@ struct SupportedActions {
     std::uint8_t num_entries{};   ///< Number of supported action types.
     ::mipcodec::BoundedVector<::mipcodec::types::SupportedActionType, 125>
         entries{}; ///< Supported action types.
-    friend bool operator==(const SupportedActions &a, const SupportedActions &b) {
-        (void)a;
-        (void)b;
-        return true && a.max_instances == b.max_instances && a.num_entries == b.num_entries &&
-               a.entries == b.entries;
+    friend bool operator==(const SupportedActions &Lhs, const SupportedActions &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.max_instances == Rhs.max_instances && Lhs.num_entries == Rhs.num_entries &&
+               Lhs.entries == Rhs.entries;
     }
-    friend bool operator!=(const SupportedActions &a, const SupportedActions &b) {
-        return !(a == b);
+    friend bool operator!=(const SupportedActions &Lhs, const SupportedActions &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8902,13 +8906,13 @@ struct SupportedActions {
 struct SupportedTriggerType {
     ::mipcodec::types::TriggerType type{}; ///< Trigger type, as in Event Trigger Configuration (0x0C,0x2E).
     std::uint8_t count{};                  ///< Maximum number of instances of this type.
-    friend bool operator==(const SupportedTriggerType &a, const SupportedTriggerType &b) {
-        (void)a;
-        (void)b;
-        return true && a.type == b.type && a.count == b.count;
+    friend bool operator==(const SupportedTriggerType &Lhs, const SupportedTriggerType &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.type == Rhs.type && Lhs.count == Rhs.count;
     }
-    friend bool operator!=(const SupportedTriggerType &a, const SupportedTriggerType &b) {
-        return !(a == b);
+    friend bool operator!=(const SupportedTriggerType &Lhs, const SupportedTriggerType &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8918,14 +8922,14 @@ struct SupportedTriggers {
     std::uint8_t num_entries{};   ///< Number of supported trigger types.
     ::mipcodec::BoundedVector<::mipcodec::types::SupportedTriggerType, 125>
         entries{}; ///< Supported trigger types.
-    friend bool operator==(const SupportedTriggers &a, const SupportedTriggers &b) {
-        (void)a;
-        (void)b;
-        return true && a.max_instances == b.max_instances && a.num_entries == b.num_entries &&
-               a.entries == b.entries;
+    friend bool operator==(const SupportedTriggers &Lhs, const SupportedTriggers &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.max_instances == Rhs.max_instances && Lhs.num_entries == Rhs.num_entries &&
+               Lhs.entries == Rhs.entries;
     }
-    friend bool operator!=(const SupportedTriggers &a, const SupportedTriggers &b) {
-        return !(a == b);
+    friend bool operator!=(const SupportedTriggers &Lhs, const SupportedTriggers &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8950,14 +8954,15 @@ struct ThresholdParams {
     ::mipcodec::types::ThresholdType type{}; ///< Type of comparison.
     double low_thres{};                      ///< Low threshold (window) or active time (interval).
     double high_thres{};                     ///< High threshold (window) or interval (interval).
-    friend bool operator==(const ThresholdParams &a, const ThresholdParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.field_desc == b.field_desc && a.param_id == b.param_id &&
-               a.type == b.type && a.low_thres == b.low_thres && a.high_thres == b.high_thres;
+    friend bool operator==(const ThresholdParams &Lhs, const ThresholdParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.field_desc == Rhs.field_desc &&
+               Lhs.param_id == Rhs.param_id && Lhs.type == Rhs.type && Lhs.low_thres == Rhs.low_thres &&
+               Lhs.high_thres == Rhs.high_thres;
     }
-    friend bool operator!=(const ThresholdParams &a, const ThresholdParams &b) {
-        return !(a == b);
+    friend bool operator!=(const ThresholdParams &Lhs, const ThresholdParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8965,13 +8970,13 @@ struct ThresholdParams {
 struct TriggerGpioParams {
     std::uint8_t pin{};                        ///< GPIO pin number.
     ::mipcodec::types::TriggerGpioMode mode{}; ///< How the pin state affects the trigger.
-    friend bool operator==(const TriggerGpioParams &a, const TriggerGpioParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.pin == b.pin && a.mode == b.mode;
+    friend bool operator==(const TriggerGpioParams &Lhs, const TriggerGpioParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pin == Rhs.pin && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const TriggerGpioParams &a, const TriggerGpioParams &b) {
-        return !(a == b);
+    friend bool operator!=(const TriggerGpioParams &Lhs, const TriggerGpioParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -8993,13 +8998,13 @@ struct TriggerParams {
 struct TriggerStatusEntry {
     ::mipcodec::types::TriggerType type{};     ///< Configured trigger type.
     ::mipcodec::types::TriggerStatus status{}; ///< Trigger status.
-    friend bool operator==(const TriggerStatusEntry &a, const TriggerStatusEntry &b) {
-        (void)a;
-        (void)b;
-        return true && a.type == b.type && a.status == b.status;
+    friend bool operator==(const TriggerStatusEntry &Lhs, const TriggerStatusEntry &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.type == Rhs.type && Lhs.status == Rhs.status;
     }
-    friend bool operator!=(const TriggerStatusEntry &a, const TriggerStatusEntry &b) {
-        return !(a == b);
+    friend bool operator!=(const TriggerStatusEntry &Lhs, const TriggerStatusEntry &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -588,13 +588,13 @@ inline bool from_string(const char *name, SensorCode &out) {
 struct MessageId {
     std::uint8_t message_type{}; ///< Message type (0x01, 0x02, 0xA2, ...).
     std::uint8_t message_code{}; ///< Message code within the type.
-    friend bool operator==(const MessageId &a, const MessageId &b) {
-        (void)a;
-        (void)b;
-        return true && a.message_type == b.message_type && a.message_code == b.message_code;
+    friend bool operator==(const MessageId &Lhs, const MessageId &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.message_type == Rhs.message_type && Lhs.message_code == Rhs.message_code;
     }
-    friend bool operator!=(const MessageId &a, const MessageId &b) {
-        return !(a == b);
+    friend bool operator!=(const MessageId &Lhs, const MessageId &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

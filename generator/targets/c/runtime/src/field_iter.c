@@ -2,7 +2,6 @@
 #include "codec/field_iter.h"
 
 #include <assert.h>
-#include <stdio.h>
 
 bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *entry, uint8_t length_byte,
                                 codec_trailing_kind_t why) {
@@ -17,24 +16,4 @@ bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *ent
     return true;
 }
 
-size_t codec_trailing_format(const codec_field_entry_t *entry, char *buf, size_t cap) {
-    assert(entry != NULL);
-    assert(buf != NULL || cap == 0);
-    int n;
-    switch (entry->trailing) {
-    case CODEC_TRAILING_SHORT_LENGTH:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
-                     (unsigned)entry->length_byte, entry->offset);
-        break;
-    case CODEC_TRAILING_OVERRUN:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
-                     (unsigned)entry->length_byte, entry->offset, entry->length);
-        break;
-    case CODEC_TRAILING_SHORT_HEADER:
-    default:
-        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     CODEC_FIELD_HEADER_SIZE, entry->length);
-        break;
-    }
-    return n < 0 ? 0 : (size_t)n;
-}
+/* codec_trailing_format is in status.c, with the other messages (no stdio). */

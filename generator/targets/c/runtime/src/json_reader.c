@@ -450,27 +450,33 @@ int codec_jr_next(codec_jr_t *jr, size_t *it, size_t *elem) {
     return 1;
 }
 
-/* Magnitude of an integer token; *negative for a leading '-'. */
+/* Magnitude of an integer token; *negative for a leading '-'. Returns 0, or -1 after recording
+ * the failure: a literal -1 on every failing path (not codec_jr_fail's result), so that the
+ * compiler sees that *mag and *negative are written whenever 0 is returned (gcc -O3 otherwise
+ * warns that the callers' values may be used uninitialized). */
 static int integer(codec_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
     size_t end;
     size_t i;
     int is_int;
     pos = codec_jr_ws(jr, pos);
     if (pos >= jr->len || !(jr->s[pos] == '-' || (jr->s[pos] >= '0' && jr->s[pos] <= '9'))) {
-        return codec_jr_fail(jr, "expected %s", expected);
+        (void)codec_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     if (!is_int) {
-        return codec_jr_fail(jr, "expected %s", expected);
+        (void)codec_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *negative = jr->s[pos] == '-';
     *mag = 0;
     for (i = pos + (*negative ? 1u : 0u); i < end; i++) {
         unsigned d = (unsigned)(jr->s[i] - '0');
         if (*mag > (UINT64_MAX - d) / 10) {
-            return codec_jr_fail(jr, "expected %s", expected);
+            (void)codec_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *mag = *mag * 10 + d;
     }
@@ -486,7 +492,8 @@ int codec_jr_uint(codec_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
         return -1;
     }
     if ((negative && mag != 0) || mag > max) {
-        return codec_jr_fail(jr, "expected %s", expected);
+        (void)codec_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *out = mag;
     return 0;
@@ -504,12 +511,14 @@ int codec_jr_sint(codec_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t 
         /* -mag >= min  <=>  mag <= -(min + 1) + 1 */
         uint64_t limit = (uint64_t)(-(min + 1)) + 1u;
         if (mag > limit) {
-            return codec_jr_fail(jr, "expected %s", expected);
+            (void)codec_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = mag == 0 ? 0 : -(int64_t)(mag - 1) - 1;
     } else {
         if (mag > (uint64_t)max) {
-            return codec_jr_fail(jr, "expected %s", expected);
+            (void)codec_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = (int64_t)mag;
     }

@@ -4,7 +4,6 @@
 #include "codec/json.h"
 
 #include <assert.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,13 +53,13 @@ void codec_jw_sep(codec_jw_t *w, size_t index) {
 
 void codec_jw_uint(codec_jw_t *w, uint64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRIu64, v);
+    int n = snprintf(buf, sizeof buf, "%llu", (unsigned long long)v);
     codec_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
 void codec_jw_int(codec_jw_t *w, int64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRId64, v);
+    int n = snprintf(buf, sizeof buf, "%lld", (long long)v);
     codec_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
@@ -459,7 +458,7 @@ size_t codec_json_format_double(double v, char *buf, size_t cap) {
         if (bits == 0x7FF8000000000000ull) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%016" PRIx64 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%016llx\"", (unsigned long long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite(v, buf, cap);
@@ -477,7 +476,7 @@ size_t codec_json_format_float(float v, char *buf, size_t cap) {
         if (bits == 0x7FC00000u) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%08" PRIx32 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%08lx\"", (unsigned long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite((double)v, buf, cap);

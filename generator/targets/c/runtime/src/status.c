@@ -1,11 +1,12 @@
-/* Status texts and the exact decode error messages of docs/conformance.md section 3.
- * Generated: do not edit. */
+/* Status texts and the exact messages of docs/conformance.md section 3 (decode errors, trailing
+ * bytes of a payload), written without stdio so that the core builds freestanding (no printf on a
+ * Cortex-M image). Generated: do not edit. */
 #include "codec/status.h"
 
 #include <assert.h>
-#include <inttypes.h>
-#include <stdio.h>
 #include <string.h>
+
+#include "codec/field_iter.h"
 
 const char *codec_status_text(codec_status_t status) {
     switch (status) {
@@ -41,10 +42,30 @@ static void append(char *buf, size_t cap, size_t *len, const char *text) {
     *len += n;
 }
 
+/* Appends the decimal digits of v. */
+static void append_u64(char *buf, size_t cap, size_t *len, uint64_t v) {
+    char digits[21];
+    size_t i = sizeof digits - 1;
+    digits[i] = '\0';
+    do {
+        digits[--i] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    append(buf, cap, len, digits + i);
+}
+
+/* Appends v (two's complement) as a signed decimal. */
+static void append_i64(char *buf, size_t cap, size_t *len, uint64_t v) {
+    if (v > (uint64_t)INT64_MAX) {
+        append(buf, cap, len, "-");
+        v = ~v + 1u;
+    }
+    append_u64(buf, cap, len, v);
+}
+
 size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, size_t cap) {
     assert(err != NULL);
     assert(buf != NULL || cap == 0);
-    char num[96];
     size_t len = 0;
     size_t i;
     if (cap > 0) {
@@ -57,43 +78,97 @@ size_t codec_decode_error_format(const codec_decode_error_t *err, char *buf, siz
             }
             append(buf, cap, &len, err->path[i].name ? err->path[i].name : "?");
             if (err->path[i].index != SIZE_MAX) {
-                snprintf(num, sizeof num, "[%zu]", err->path[i].index);
-                append(buf, cap, &len, num);
+                append(buf, cap, &len, "[");
+                append_u64(buf, cap, &len, err->path[i].index);
+                append(buf, cap, &len, "]");
             }
         }
         append(buf, cap, &len, ": ");
     }
     switch (err->kind) {
     case CODEC_DECODE_NEEDS_BYTES:
-        snprintf(num, sizeof num, "needs %zu bytes at offset %zu, %zu left", err->need, err->offset,
-                 err->have);
+        append(buf, cap, &len, "needs ");
+        append_u64(buf, cap, &len, err->need);
+        append(buf, cap, &len, " bytes at offset ");
+        append_u64(buf, cap, &len, err->offset);
+        append(buf, cap, &len, ", ");
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " left");
         break;
     case CODEC_DECODE_COUNT:
-        snprintf(num, sizeof num, "count %" PRIu64 " exceeds maximum %" PRIu64, err->count, err->max);
+        append(buf, cap, &len, "count ");
+        append_u64(buf, cap, &len, err->count);
+        append(buf, cap, &len, " exceeds maximum ");
+        append_u64(buf, cap, &len, err->max);
         break;
     case CODEC_DECODE_REMAINING:
-        snprintf(num, sizeof num, "%zu bytes left at offset %zu, not a multiple of %zu", err->have,
-                 err->offset, err->need);
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " bytes left at offset ");
+        append_u64(buf, cap, &len, err->offset);
+        append(buf, cap, &len, ", not a multiple of ");
+        append_u64(buf, cap, &len, err->need);
         break;
     case CODEC_DECODE_BOOL:
-        snprintf(num, sizeof num, "invalid bool value %" PRIu64 " at offset %zu", err->value, err->offset);
+        append(buf, cap, &len, "invalid bool value ");
+        append_u64(buf, cap, &len, err->value);
+        append(buf, cap, &len, " at offset ");
+        append_u64(buf, cap, &len, err->offset);
         break;
     case CODEC_DECODE_SELECTOR:
+        append(buf, cap, &len, "no member for selector value ");
         if (err->value_signed) {
-            int64_t v = err->value > (uint64_t)INT64_MAX ? -(int64_t)(~err->value) - 1 : (int64_t)err->value;
-            snprintf(num, sizeof num, "no member for selector value %" PRId64, v);
+            append_i64(buf, cap, &len, err->value);
         } else {
-            snprintf(num, sizeof num, "no member for selector value %" PRIu64, err->value);
+            append_u64(buf, cap, &len, err->value);
         }
         break;
     case CODEC_DECODE_UNEXPECTED:
-        snprintf(num, sizeof num, "%zu unexpected bytes at offset %zu", err->have, err->offset);
+        append_u64(buf, cap, &len, err->have);
+        append(buf, cap, &len, " unexpected bytes at offset ");
+        append_u64(buf, cap, &len, err->offset);
         break;
     case CODEC_DECODE_NONE:
     default:
-        snprintf(num, sizeof num, "no error");
+        append(buf, cap, &len, "no error");
         break;
     }
-    append(buf, cap, &len, num);
+    return len;
+}
+
+size_t codec_trailing_format(const codec_field_entry_t *entry, char *buf, size_t cap) {
+    assert(entry != NULL);
+    assert(buf != NULL || cap == 0);
+    size_t len = 0;
+    if (cap > 0) {
+        buf[0] = '\0';
+    }
+    switch (entry->trailing) {
+    case CODEC_TRAILING_SHORT_LENGTH:
+        append(buf, cap, &len, "field length ");
+        append_u64(buf, cap, &len, entry->length_byte);
+        append(buf, cap, &len, " at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " is shorter than the field header");
+        break;
+    case CODEC_TRAILING_OVERRUN:
+        append(buf, cap, &len, "field length ");
+        append_u64(buf, cap, &len, entry->length_byte);
+        append(buf, cap, &len, " at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " overruns the payload (");
+        append_u64(buf, cap, &len, entry->length);
+        append(buf, cap, &len, " bytes left)");
+        break;
+    case CODEC_TRAILING_SHORT_HEADER:
+    default:
+        append(buf, cap, &len, "field header at payload offset ");
+        append_u64(buf, cap, &len, entry->offset);
+        append(buf, cap, &len, " needs ");
+        append_u64(buf, cap, &len, CODEC_FIELD_HEADER_SIZE);
+        append(buf, cap, &len, " bytes, ");
+        append_u64(buf, cap, &len, entry->length);
+        append(buf, cap, &len, " left");
+        break;
+    }
     return len;
 }

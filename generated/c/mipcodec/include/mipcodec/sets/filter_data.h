@@ -1,7 +1,7 @@
 /* Estimation Filter Data Set (descriptor set 0x82): one struct per field layout, with its
  * encoder and decoder. Generated from the spec: do not edit. */
-#ifndef MIP_SETS_FILTER_DATA_H
-#define MIP_SETS_FILTER_DATA_H
+#ifndef MIPC_SETS_FILTER_DATA_H
+#define MIPC_SETS_FILTER_DATA_H
 
 #include "mipcodec/types.h"
 
@@ -9,1051 +9,1057 @@
 extern "C" {
 #endif
 
-#define MIP_FILTER_DATA_SET 0x82
+#define MIPC_FILTER_DATA_SET 0x82
 
 /* ---- llh_position (data): LLH position */
-#define MIP_FILTER_DATA_LLH_POSITION_DESCRIPTOR 0x01
+#define MIPC_FILTER_DATA_LLH_POSITION_DESCRIPTOR 0x01
 
 /** LLH position. Estimated position as WGS84 geodetic latitude, longitude and height above the ellipsoid. */
 typedef struct {
-    double latitude;                             /* Latitude. [deg] */
-    double longitude;                            /* Longitude. [deg] */
-    double ellipsoid_height;                     /* Height above the WGS84 ellipsoid. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether latitude, longitude and height are valid. */
-} mip_filter_data_llh_position_t;
+    double latitude;                              /* Latitude. [deg] */
+    double longitude;                             /* Longitude. [deg] */
+    double ellipsoid_height;                      /* Height above the WGS84 ellipsoid. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether latitude, longitude and height are valid. */
+} mipc_filter_data_llh_position_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_LLH_POSITION_MAX_SIZE 26
+#define MIPC_FILTER_DATA_LLH_POSITION_MAX_SIZE 26
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_llh_position_encode(const mip_filter_data_llh_position_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_llh_position_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_llh_position_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_llh_position_encode(const mipc_filter_data_llh_position_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_llh_position_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_llh_position_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- ned_velocity (data): NED velocity */
-#define MIP_FILTER_DATA_NED_VELOCITY_DESCRIPTOR 0x02
+#define MIPC_FILTER_DATA_NED_VELOCITY_DESCRIPTOR 0x02
 
 /** NED velocity. Estimated velocity in the local-level north-east-down frame. */
 typedef struct {
-    float north;                                 /* North velocity. [m/s] */
-    float east;                                  /* East velocity. [m/s] */
-    float down;                                  /* Down velocity. [m/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the velocity is valid. */
-} mip_filter_data_ned_velocity_t;
+    float north;                                  /* North velocity. [m/s] */
+    float east;                                   /* East velocity. [m/s] */
+    float down;                                   /* Down velocity. [m/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the velocity is valid. */
+} mipc_filter_data_ned_velocity_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_NED_VELOCITY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_NED_VELOCITY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_ned_velocity_encode(const mip_filter_data_ned_velocity_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ned_velocity_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_ned_velocity_encode(const mipc_filter_data_ned_velocity_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_ned_velocity_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_ned_velocity_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- attitude_quaternion (data): Attitude quaternion */
-#define MIP_FILTER_DATA_ATTITUDE_QUATERNION_DESCRIPTOR 0x03
+#define MIPC_FILTER_DATA_ATTITUDE_QUATERNION_DESCRIPTOR 0x03
 
 /** Attitude quaternion. Estimated orientation as a quaternion (q0, q1 i, q2 j, q3 k) rotating vectors from
  * the earth-fixed local-level (NED) frame into the device (vehicle) frame. */
 typedef struct {
     float q[4]; /* Quaternion (q0, q1, q2, q3); the GX5-45 lists the four floats separately. */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the quaternion is valid. */
-} mip_filter_data_attitude_quaternion_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the quaternion is valid. */
+} mipc_filter_data_attitude_quaternion_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ATTITUDE_QUATERNION_MAX_SIZE 18
+#define MIPC_FILTER_DATA_ATTITUDE_QUATERNION_MAX_SIZE 18
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_attitude_quaternion_encode(const mip_filter_data_attitude_quaternion_t *value,
-                                                        uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_attitude_quaternion_t *out,
-                                                        mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_attitude_quaternion_encode(const mipc_filter_data_attitude_quaternion_t *value,
+                                                          uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_attitude_quaternion_decode(const uint8_t *data, size_t len,
+                                                          mipc_filter_data_attitude_quaternion_t *out,
+                                                          mipc_decode_error_t *err);
 
 /* ---- attitude_dcm (data): Attitude direction cosine matrix */
-#define MIP_FILTER_DATA_ATTITUDE_DCM_DESCRIPTOR 0x04
+#define MIPC_FILTER_DATA_ATTITUDE_DCM_DESCRIPTOR 0x04
 
 /** Attitude direction cosine matrix. Estimated orientation as a 3x3 direction cosine matrix, row-major (M11,
  * M12, M13, M21, ...), that transforms a vector from the earth-fixed local-level (NED) frame into the device
  * (vehicle) frame. */
 typedef struct {
     float dcm[9]; /* Matrix elements in row-major order; the GX5-45 lists M1,1 ... M3,3 at offsets 0-32. */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the matrix is valid. */
-} mip_filter_data_attitude_dcm_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the matrix is valid. */
+} mipc_filter_data_attitude_dcm_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ATTITUDE_DCM_MAX_SIZE 38
+#define MIPC_FILTER_DATA_ATTITUDE_DCM_MAX_SIZE 38
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_attitude_dcm_encode(const mip_filter_data_attitude_dcm_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_attitude_dcm_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_attitude_dcm_encode(const mipc_filter_data_attitude_dcm_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_attitude_dcm_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_attitude_dcm_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- euler_angles (data): Euler angles */
-#define MIP_FILTER_DATA_EULER_ANGLES_DESCRIPTOR 0x05
+#define MIPC_FILTER_DATA_EULER_ANGLES_DESCRIPTOR 0x05
 
 /** Euler angles. Estimated roll, pitch and yaw relative to the local-level (NED) frame, in 3-2-1
  * (yaw-pitch-roll, aircraft) order. */
 typedef struct {
-    float roll;                                  /* Roll angle. [rad] */
-    float pitch;                                 /* Pitch angle. [rad] */
-    float yaw;                                   /* Yaw (heading) angle. [rad] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the angles are valid. */
-} mip_filter_data_euler_angles_t;
+    float roll;                                   /* Roll angle. [rad] */
+    float pitch;                                  /* Pitch angle. [rad] */
+    float yaw;                                    /* Yaw (heading) angle. [rad] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the angles are valid. */
+} mipc_filter_data_euler_angles_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_EULER_ANGLES_MAX_SIZE 14
+#define MIPC_FILTER_DATA_EULER_ANGLES_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_euler_angles_encode(const mip_filter_data_euler_angles_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_euler_angles_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_euler_angles_encode(const mipc_filter_data_euler_angles_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_euler_angles_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_euler_angles_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- gyro_bias (data): Gyro bias */
-#define MIP_FILTER_DATA_GYRO_BIAS_DESCRIPTOR 0x06
+#define MIPC_FILTER_DATA_GYRO_BIAS_DESCRIPTOR 0x06
 
 /** Gyro bias. Estimated gyro bias, in the sensor frame. */
 typedef struct {
-    float bias[3];                               /* (x, y, z) gyro bias. [rad/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the bias is valid. */
-} mip_filter_data_gyro_bias_t;
+    float bias[3];                                /* (x, y, z) gyro bias. [rad/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the bias is valid. */
+} mipc_filter_data_gyro_bias_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GYRO_BIAS_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GYRO_BIAS_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gyro_bias_encode(const mip_filter_data_gyro_bias_t *value, uint8_t *buf,
-                                              size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
-                                              mip_filter_data_gyro_bias_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gyro_bias_encode(const mipc_filter_data_gyro_bias_t *value, uint8_t *buf,
+                                                size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gyro_bias_decode(const uint8_t *data, size_t len,
+                                                mipc_filter_data_gyro_bias_t *out, mipc_decode_error_t *err);
 
 /* ---- accel_bias (data): Accel bias */
-#define MIP_FILTER_DATA_ACCEL_BIAS_DESCRIPTOR 0x07
+#define MIPC_FILTER_DATA_ACCEL_BIAS_DESCRIPTOR 0x07
 
 /** Accel bias. Estimated accelerometer bias, in the sensor frame. */
 typedef struct {
-    float bias[3];                               /* (x, y, z) accelerometer bias. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the bias is valid. */
-} mip_filter_data_accel_bias_t;
+    float bias[3];                                /* (x, y, z) accelerometer bias. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the bias is valid. */
+} mipc_filter_data_accel_bias_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ACCEL_BIAS_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ACCEL_BIAS_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_accel_bias_encode(const mip_filter_data_accel_bias_t *value, uint8_t *buf,
-                                               size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
-                                               mip_filter_data_accel_bias_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_accel_bias_encode(const mipc_filter_data_accel_bias_t *value, uint8_t *buf,
+                                                 size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_accel_bias_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_accel_bias_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- llh_position_uncertainty (data): LLH position uncertainty */
-#define MIP_FILTER_DATA_LLH_POSITION_UNCERTAINTY_DESCRIPTOR 0x08
+#define MIPC_FILTER_DATA_LLH_POSITION_UNCERTAINTY_DESCRIPTOR 0x08
 
 /** LLH position uncertainty. 1-sigma uncertainty of the estimated position, along the local-level north, east
  * and down axes. */
 typedef struct {
-    float north;                                 /* North 1-sigma uncertainty. [m] */
-    float east;                                  /* East 1-sigma uncertainty. [m] */
-    float down;                                  /* Down 1-sigma uncertainty. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_llh_position_uncertainty_t;
+    float north;                                  /* North 1-sigma uncertainty. [m] */
+    float east;                                   /* East 1-sigma uncertainty. [m] */
+    float down;                                   /* Down 1-sigma uncertainty. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_llh_position_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_LLH_POSITION_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_LLH_POSITION_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_llh_position_uncertainty_encode(const mip_filter_data_llh_position_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_llh_position_uncertainty_t *out,
-                                                             mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_llh_position_uncertainty_encode(const mipc_filter_data_llh_position_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_llh_position_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_llh_position_uncertainty_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- ned_velocity_uncertainty (data): NED velocity uncertainty */
-#define MIP_FILTER_DATA_NED_VELOCITY_UNCERTAINTY_DESCRIPTOR 0x09
+#define MIPC_FILTER_DATA_NED_VELOCITY_UNCERTAINTY_DESCRIPTOR 0x09
 
 /** NED velocity uncertainty. 1-sigma uncertainty of the estimated velocity, along the local-level north, east
  * and down axes. */
 typedef struct {
-    float north;                                 /* North 1-sigma uncertainty. [m/s] */
-    float east;                                  /* East 1-sigma uncertainty. [m/s] */
-    float down;                                  /* Down 1-sigma uncertainty. [m/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_ned_velocity_uncertainty_t;
+    float north;                                  /* North 1-sigma uncertainty. [m/s] */
+    float east;                                   /* East 1-sigma uncertainty. [m/s] */
+    float down;                                   /* Down 1-sigma uncertainty. [m/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_ned_velocity_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_NED_VELOCITY_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_NED_VELOCITY_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_ned_velocity_uncertainty_encode(const mip_filter_data_ned_velocity_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_ned_velocity_uncertainty_t *out,
-                                                             mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_ned_velocity_uncertainty_encode(const mipc_filter_data_ned_velocity_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_ned_velocity_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_ned_velocity_uncertainty_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- euler_angles_uncertainty (data): Euler angles uncertainty */
-#define MIP_FILTER_DATA_EULER_ANGLES_UNCERTAINTY_DESCRIPTOR 0x0A
+#define MIPC_FILTER_DATA_EULER_ANGLES_UNCERTAINTY_DESCRIPTOR 0x0A
 
 /** Euler angles uncertainty. 1-sigma uncertainty of the estimated roll, pitch and yaw. The GX5-45 derives
  * these from the quaternion uncertainty and flags them invalid when the pitch exceeds +/-70 degrees. */
 typedef struct {
-    float roll;                                  /* Roll 1-sigma uncertainty. [rad] */
-    float pitch;                                 /* Pitch 1-sigma uncertainty. [rad] */
-    float yaw;                                   /* Yaw 1-sigma uncertainty. [rad] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_euler_angles_uncertainty_t;
+    float roll;                                   /* Roll 1-sigma uncertainty. [rad] */
+    float pitch;                                  /* Pitch 1-sigma uncertainty. [rad] */
+    float yaw;                                    /* Yaw 1-sigma uncertainty. [rad] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_euler_angles_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_EULER_ANGLES_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_EULER_ANGLES_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_euler_angles_uncertainty_encode(const mip_filter_data_euler_angles_uncertainty_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_euler_angles_uncertainty_t *out,
-                                                             mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_euler_angles_uncertainty_encode(const mipc_filter_data_euler_angles_uncertainty_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_euler_angles_uncertainty_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_euler_angles_uncertainty_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- gyro_bias_uncertainty (data): Gyro bias uncertainty */
-#define MIP_FILTER_DATA_GYRO_BIAS_UNCERTAINTY_DESCRIPTOR 0x0B
+#define MIPC_FILTER_DATA_GYRO_BIAS_UNCERTAINTY_DESCRIPTOR 0x0B
 
 /** Gyro bias uncertainty. 1-sigma uncertainty of the estimated gyro bias, in the sensor frame. */
 typedef struct {
-    float bias_uncertainty[3];                   /* (x, y, z) 1-sigma uncertainty. [rad/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_gyro_bias_uncertainty_t;
+    float bias_uncertainty[3];                    /* (x, y, z) 1-sigma uncertainty. [rad/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_gyro_bias_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GYRO_BIAS_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GYRO_BIAS_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_gyro_bias_uncertainty_encode(const mip_filter_data_gyro_bias_uncertainty_t *value,
-                                             uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_gyro_bias_uncertainty_t *out,
-                                                          mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_gyro_bias_uncertainty_encode(const mipc_filter_data_gyro_bias_uncertainty_t *value,
+                                              uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gyro_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_gyro_bias_uncertainty_t *out,
+                                                            mipc_decode_error_t *err);
 
 /* ---- accel_bias_uncertainty (data): Accel bias uncertainty */
-#define MIP_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY_DESCRIPTOR 0x0C
+#define MIPC_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY_DESCRIPTOR 0x0C
 
 /** Accel bias uncertainty. 1-sigma uncertainty of the estimated accelerometer bias, in the sensor frame. */
 typedef struct {
-    float bias_uncertainty[3];                   /* (x, y, z) 1-sigma uncertainty. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_accel_bias_uncertainty_t;
+    float bias_uncertainty[3];                    /* (x, y, z) 1-sigma uncertainty. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_accel_bias_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_accel_bias_uncertainty_encode(const mip_filter_data_accel_bias_uncertainty_t *value,
-                                              uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
-                                                           mip_filter_data_accel_bias_uncertainty_t *out,
-                                                           mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_accel_bias_uncertainty_encode(const mipc_filter_data_accel_bias_uncertainty_t *value,
+                                               uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_accel_bias_uncertainty_decode(const uint8_t *data, size_t len,
+                                                             mipc_filter_data_accel_bias_uncertainty_t *out,
+                                                             mipc_decode_error_t *err);
 
 /* ---- linear_accel (data): Linear acceleration */
-#define MIP_FILTER_DATA_LINEAR_ACCEL_DESCRIPTOR 0x0D
+#define MIPC_FILTER_DATA_LINEAR_ACCEL_DESCRIPTOR 0x0D
 
 /** Linear acceleration. Filter-compensated acceleration with the estimated gravity removed, in the vehicle
  * frame (GX5-45: in the sensor frame when no sensor-to-vehicle rotation is set). */
 typedef struct {
-    float accel[3];                              /* (x, y, z) linear acceleration. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the acceleration is valid. */
-} mip_filter_data_linear_accel_t;
+    float accel[3];                               /* (x, y, z) linear acceleration. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the acceleration is valid. */
+} mipc_filter_data_linear_accel_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_LINEAR_ACCEL_MAX_SIZE 14
+#define MIPC_FILTER_DATA_LINEAR_ACCEL_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_linear_accel_encode(const mip_filter_data_linear_accel_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_linear_accel_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_linear_accel_encode(const mipc_filter_data_linear_accel_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_linear_accel_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_linear_accel_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- comp_angular_rate (data): Compensated angular rate */
-#define MIP_FILTER_DATA_COMP_ANGULAR_RATE_DESCRIPTOR 0x0E
+#define MIPC_FILTER_DATA_COMP_ANGULAR_RATE_DESCRIPTOR 0x0E
 
 /** Compensated angular rate. Angular rate with the estimated gyro bias removed, in the vehicle frame (GX5-45:
  * in the sensor frame when no sensor-to-vehicle rotation is set). */
 typedef struct {
-    float gyro[3];                               /* (x, y, z) angular rate. [rad/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the angular rate is valid. */
-} mip_filter_data_comp_angular_rate_t;
+    float gyro[3];                                /* (x, y, z) angular rate. [rad/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the angular rate is valid. */
+} mipc_filter_data_comp_angular_rate_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_COMP_ANGULAR_RATE_MAX_SIZE 14
+#define MIPC_FILTER_DATA_COMP_ANGULAR_RATE_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_comp_angular_rate_encode(const mip_filter_data_comp_angular_rate_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_comp_angular_rate_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_comp_angular_rate_encode(const mipc_filter_data_comp_angular_rate_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_comp_angular_rate_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_comp_angular_rate_t *out,
+                                                        mipc_decode_error_t *err);
 
 /* ---- wgs84_gravity_magnitude (data): WGS84 local gravity magnitude */
-#define MIP_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE_DESCRIPTOR 0x0F
+#define MIPC_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE_DESCRIPTOR 0x0F
 
 /** WGS84 local gravity magnitude. Magnitude of the local gravity from the WGS84 gravity model (valid for
  * altitudes up to 20 km). GX5-45 only. */
 typedef struct {
-    float gravity_magnitude;                     /* Local gravity magnitude. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the gravity value is valid. */
-} mip_filter_data_wgs84_gravity_magnitude_t;
+    float gravity_magnitude;                      /* Local gravity magnitude. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the gravity value is valid. */
+} mipc_filter_data_wgs84_gravity_magnitude_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE_MAX_SIZE 6
+#define MIPC_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_wgs84_gravity_magnitude_encode(const mip_filter_data_wgs84_gravity_magnitude_t *value,
-                                               uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
-                                                            mip_filter_data_wgs84_gravity_magnitude_t *out,
-                                                            mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_wgs84_gravity_magnitude_encode(const mipc_filter_data_wgs84_gravity_magnitude_t *value,
+                                                uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_wgs84_gravity_magnitude_decode(const uint8_t *data, size_t len,
+                                                              mipc_filter_data_wgs84_gravity_magnitude_t *out,
+                                                              mipc_decode_error_t *err);
 
 /* ---- filter_status (data, 2 per-device variants): Filter status */
-#define MIP_FILTER_DATA_FILTER_STATUS_DESCRIPTOR 0x10
+#define MIPC_FILTER_DATA_FILTER_STATUS_DESCRIPTOR 0x10
 
 /** Filter status (gx5_45). Filter state (or mode), dynamics mode and status flags. All three are
  * device-specific: the same numbers mean different things on the GX5-45 and on the CV7. */
 typedef struct {
-    mip_filter_state_gx5_t filter_state;          /* Filter state. */
-    mip_filter_dynamics_mode_gx5_t dynamics_mode; /* Vehicle dynamics mode. */
-    mip_filter_status_flags_gx5_t status_flags; /* Status flags; their meaning depends on the filter state. */
-} mip_filter_data_filter_status_gx5_45_t;
+    mipc_filter_state_gx5_t filter_state;          /* Filter state. */
+    mipc_filter_dynamics_mode_gx5_t dynamics_mode; /* Vehicle dynamics mode. */
+    mipc_filter_status_flags_gx5_t
+        status_flags; /* Status flags; their meaning depends on the filter state. */
+} mipc_filter_data_filter_status_gx5_45_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_FILTER_STATUS_GX5_45_MAX_SIZE 6
+#define MIPC_FILTER_DATA_FILTER_STATUS_GX5_45_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_filter_status_gx5_45_encode(const mip_filter_data_filter_status_gx5_45_t *value,
-                                                         uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_filter_status_gx5_45_t *out,
-                                                         mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_filter_status_gx5_45_encode(const mipc_filter_data_filter_status_gx5_45_t *value,
+                                             uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_filter_status_gx5_45_decode(const uint8_t *data, size_t len,
+                                                           mipc_filter_data_filter_status_gx5_45_t *out,
+                                                           mipc_decode_error_t *err);
 
 /** Filter status (cv7_ins). Filter state (or mode), dynamics mode and status flags. All three are
  * device-specific: the same numbers mean different things on the GX5-45 and on the CV7. */
 typedef struct {
-    mip_filter_mode_cv7_t filter_state;           /* Filter mode reached (Filter States page). */
-    mip_filter_dynamics_mode_cv7_t dynamics_mode; /* Dynamics mode. */
-    mip_filter_status_flags_cv7_t status_flags;   /* Filter condition and warning flags. */
-} mip_filter_data_filter_status_cv7_ins_t;
+    mipc_filter_mode_cv7_t filter_state;           /* Filter mode reached (Filter States page). */
+    mipc_filter_dynamics_mode_cv7_t dynamics_mode; /* Dynamics mode. */
+    mipc_filter_status_flags_cv7_t status_flags;   /* Filter condition and warning flags. */
+} mipc_filter_data_filter_status_cv7_ins_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_FILTER_STATUS_CV7_INS_MAX_SIZE 6
+#define MIPC_FILTER_DATA_FILTER_STATUS_CV7_INS_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_filter_status_cv7_ins_encode(const mip_filter_data_filter_status_cv7_ins_t *value,
-                                             uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_filter_status_cv7_ins_t *out,
-                                                          mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_filter_status_cv7_ins_encode(const mipc_filter_data_filter_status_cv7_ins_t *value,
+                                              uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_filter_status_cv7_ins_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_filter_status_cv7_ins_t *out,
+                                                            mipc_decode_error_t *err);
 
 /* ---- gps_timestamp (data): GPS timestamp */
-#define MIP_FILTER_DATA_GPS_TIMESTAMP_DESCRIPTOR 0x11
+#define MIPC_FILTER_DATA_GPS_TIMESTAMP_DESCRIPTOR 0x11
 
 /** GPS timestamp. GPS time of the filter solution in this packet. The CV7 notes that it may be deprecated in
  * favour of the shared GPS timestamp field (0xD3). */
 typedef struct {
-    double tow;                                  /* GPS time of week. [s] */
-    uint16_t week_number;                        /* GPS week number since 1980. [weeks] */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the time is valid. */
-} mip_filter_data_gps_timestamp_t;
+    double tow;                                   /* GPS time of week. [s] */
+    uint16_t week_number;                         /* GPS week number since 1980. [weeks] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the time is valid. */
+} mipc_filter_data_gps_timestamp_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GPS_TIMESTAMP_MAX_SIZE 12
+#define MIPC_FILTER_DATA_GPS_TIMESTAMP_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gps_timestamp_encode(const mip_filter_data_gps_timestamp_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_gps_timestamp_t *out,
-                                                  mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gps_timestamp_encode(const mipc_filter_data_gps_timestamp_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gps_timestamp_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_gps_timestamp_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- quaternion_attitude_uncertainty (data): Quaternion attitude uncertainty */
-#define MIP_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY_DESCRIPTOR 0x12
+#define MIPC_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY_DESCRIPTOR 0x12
 
 /** Quaternion attitude uncertainty. 1-sigma uncertainty of the attitude quaternion, one value per quaternion
  * element (dimensionless). */
 typedef struct {
-    float q[4];                                  /* 1-sigma uncertainty of (q0, q1, q2, q3). */
-    mip_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
-} mip_filter_data_quaternion_attitude_uncertainty_t;
+    float q[4];                                   /* 1-sigma uncertainty of (q0, q1, q2, q3). */
+    mipc_filter_output_valid_flags_t valid_flags; /* Whether the uncertainties are valid. */
+} mipc_filter_data_quaternion_attitude_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY_MAX_SIZE 18
+#define MIPC_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY_MAX_SIZE 18
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_quaternion_attitude_uncertainty_encode(
-    const mip_filter_data_quaternion_attitude_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_encode(
+    const mipc_filter_data_quaternion_attitude_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_quaternion_attitude_uncertainty_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_quaternion_attitude_uncertainty_t *out,
-                                                       mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_quaternion_attitude_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_quaternion_attitude_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- gravity_vector (data): Gravity vector */
-#define MIP_FILTER_DATA_GRAVITY_VECTOR_DESCRIPTOR 0x13
+#define MIPC_FILTER_DATA_GRAVITY_VECTOR_DESCRIPTOR 0x13
 
 /** Gravity vector. Estimated gravity vector. GX5-45: in the sensor frame, or in the vehicle frame when a
  * sensor-to-vehicle transformation is set; CV7: in the vehicle frame. */
 typedef struct {
-    float gravity[3];                            /* (x, y, z) gravity. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Gravity vector valid. */
-} mip_filter_data_gravity_vector_t;
+    float gravity[3];                             /* (x, y, z) gravity. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Gravity vector valid. */
+} mipc_filter_data_gravity_vector_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GRAVITY_VECTOR_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GRAVITY_VECTOR_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gravity_vector_encode(const mip_filter_data_gravity_vector_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_gravity_vector_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gravity_vector_encode(const mipc_filter_data_gravity_vector_t *value,
+                                                     uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gravity_vector_decode(const uint8_t *data, size_t len,
+                                                     mipc_filter_data_gravity_vector_t *out,
+                                                     mipc_decode_error_t *err);
 
 /* ---- heading_update_state (data): Heading update source state */
-#define MIP_FILTER_DATA_HEADING_UPDATE_STATE_DESCRIPTOR 0x14
+#define MIPC_FILTER_DATA_HEADING_UPDATE_STATE_DESCRIPTOR 0x14
 
 /** Heading update source state. The last heading update the filter received: heading (relative to true
  * north), its uncertainty and the sources in use. */
 typedef struct {
-    float heading;                            /* Heading, from true north. [rad] */
-    float heading_uncertainty;                /* 1-sigma heading uncertainty. [rad] */
-    mip_filter_heading_source_flags_t source; /* Heading update sources in use (may be combined). */
-    mip_filter_heading_update_valid_flags_t
+    float heading;                             /* Heading, from true north. [rad] */
+    float heading_uncertainty;                 /* 1-sigma heading uncertainty. [rad] */
+    mipc_filter_heading_source_flags_t source; /* Heading update sources in use (may be combined). */
+    mipc_filter_heading_update_valid_flags_t
         valid_flags; /* Whether a heading update arrived within 2 seconds. */
-} mip_filter_data_heading_update_state_t;
+} mipc_filter_data_heading_update_state_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_HEADING_UPDATE_STATE_MAX_SIZE 12
+#define MIPC_FILTER_DATA_HEADING_UPDATE_STATE_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_heading_update_state_encode(const mip_filter_data_heading_update_state_t *value,
-                                                         uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
-                                                         mip_filter_data_heading_update_state_t *out,
-                                                         mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_heading_update_state_encode(const mipc_filter_data_heading_update_state_t *value,
+                                             uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_heading_update_state_decode(const uint8_t *data, size_t len,
+                                                           mipc_filter_data_heading_update_state_t *out,
+                                                           mipc_decode_error_t *err);
 
 /* ---- magnetic_model (data): Magnetic model solution */
-#define MIP_FILTER_DATA_MAGNETIC_MODEL_DESCRIPTOR 0x15
+#define MIPC_FILTER_DATA_MAGNETIC_MODEL_DESCRIPTOR 0x15
 
 /** Magnetic model solution. Earth magnetic field at the current position from the World Magnetic Model
  * (GX5-45: WMM 2010), in the NED frame; needs a valid GNSS position. Invalid while the model is being
  * recalculated and when GNSS is unavailable. */
 typedef struct {
-    float intensity_north;                       /* North component of the field. [gauss] */
-    float intensity_east;                        /* East component of the field. [gauss] */
-    float intensity_down;                        /* Down component of the field. [gauss] */
-    float inclination;                           /* Inclination (dip) angle. [rad] */
-    float declination;                           /* Declination angle. [rad] */
-    mip_filter_output_valid_flags_t valid_flags; /* Model solution valid. */
-} mip_filter_data_magnetic_model_t;
+    float intensity_north;                        /* North component of the field. [gauss] */
+    float intensity_east;                         /* East component of the field. [gauss] */
+    float intensity_down;                         /* Down component of the field. [gauss] */
+    float inclination;                            /* Inclination (dip) angle. [rad] */
+    float declination;                            /* Declination angle. [rad] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Model solution valid. */
+} mipc_filter_data_magnetic_model_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MAGNETIC_MODEL_MAX_SIZE 22
+#define MIPC_FILTER_DATA_MAGNETIC_MODEL_MAX_SIZE 22
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_magnetic_model_encode(const mip_filter_data_magnetic_model_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_magnetic_model_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_magnetic_model_encode(const mipc_filter_data_magnetic_model_t *value,
+                                                     uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_magnetic_model_decode(const uint8_t *data, size_t len,
+                                                     mipc_filter_data_magnetic_model_t *out,
+                                                     mipc_decode_error_t *err);
 
 /* ---- gyro_scale_factor (data): Gyro scale factor */
-#define MIP_FILTER_DATA_GYRO_SCALE_FACTOR_DESCRIPTOR 0x16
+#define MIPC_FILTER_DATA_GYRO_SCALE_FACTOR_DESCRIPTOR 0x16
 
 /** Gyro scale factor. Estimated gyro scale factor errors in the sensor body frame. */
 typedef struct {
     float scale_factor[3]; /* (x, y, z) scale factor, as a fraction (percent / 100). [%/100] */
-    mip_filter_output_valid_flags_t valid_flags; /* Scale factor values valid. */
-} mip_filter_data_gyro_scale_factor_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Scale factor values valid. */
+} mipc_filter_data_gyro_scale_factor_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GYRO_SCALE_FACTOR_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GYRO_SCALE_FACTOR_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gyro_scale_factor_encode(const mip_filter_data_gyro_scale_factor_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_gyro_scale_factor_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gyro_scale_factor_encode(const mipc_filter_data_gyro_scale_factor_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gyro_scale_factor_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_gyro_scale_factor_t *out,
+                                                        mipc_decode_error_t *err);
 
 /* ---- accel_scale_factor (data): Accelerometer scale factor */
-#define MIP_FILTER_DATA_ACCEL_SCALE_FACTOR_DESCRIPTOR 0x17
+#define MIPC_FILTER_DATA_ACCEL_SCALE_FACTOR_DESCRIPTOR 0x17
 
 /** Accelerometer scale factor. Estimated accelerometer scale factor errors in the sensor body frame. */
 typedef struct {
     float scale_factor[3]; /* (x, y, z) scale factor, as a fraction (percent / 100). [%/100] */
-    mip_filter_output_valid_flags_t valid_flags; /* Scale factor values valid. */
-} mip_filter_data_accel_scale_factor_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Scale factor values valid. */
+} mipc_filter_data_accel_scale_factor_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ACCEL_SCALE_FACTOR_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ACCEL_SCALE_FACTOR_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_accel_scale_factor_encode(const mip_filter_data_accel_scale_factor_t *value,
-                                                       uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_accel_scale_factor_t *out,
-                                                       mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_accel_scale_factor_encode(const mipc_filter_data_accel_scale_factor_t *value,
+                                                         uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_accel_scale_factor_decode(const uint8_t *data, size_t len,
+                                                         mipc_filter_data_accel_scale_factor_t *out,
+                                                         mipc_decode_error_t *err);
 
 /* ---- gyro_scale_factor_uncertainty (data): Gyro scale factor uncertainty */
-#define MIP_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY_DESCRIPTOR 0x18
+#define MIPC_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY_DESCRIPTOR 0x18
 
 /** Gyro scale factor uncertainty. 1-sigma uncertainty of the estimated gyro scale factors, sensor body frame.
  */
 typedef struct {
-    float scale_factor_uncertainty[3];           /* (x, y, z) 1-sigma uncertainty. [%/100] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_gyro_scale_factor_uncertainty_t;
+    float scale_factor_uncertainty[3];            /* (x, y, z) 1-sigma uncertainty. [%/100] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_gyro_scale_factor_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gyro_scale_factor_uncertainty_encode(
-    const mip_filter_data_gyro_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
-                                                     mip_filter_data_gyro_scale_factor_uncertainty_t *out,
-                                                     mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gyro_scale_factor_uncertainty_encode(
+    const mipc_filter_data_gyro_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_gyro_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
+                                                      mipc_filter_data_gyro_scale_factor_uncertainty_t *out,
+                                                      mipc_decode_error_t *err);
 
 /* ---- accel_scale_factor_uncertainty (data): Accelerometer scale factor uncertainty */
-#define MIP_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY_DESCRIPTOR 0x19
+#define MIPC_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY_DESCRIPTOR 0x19
 
 /** Accelerometer scale factor uncertainty. 1-sigma uncertainty of the estimated accelerometer scale factors,
  * sensor body frame. */
 typedef struct {
-    float scale_factor_uncertainty[3];           /* (x, y, z) 1-sigma uncertainty. [%/100] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_accel_scale_factor_uncertainty_t;
+    float scale_factor_uncertainty[3];            /* (x, y, z) 1-sigma uncertainty. [%/100] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_accel_scale_factor_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_accel_scale_factor_uncertainty_encode(
-    const mip_filter_data_accel_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_accel_scale_factor_uncertainty_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_accel_scale_factor_uncertainty_encode(
+    const mipc_filter_data_accel_scale_factor_uncertainty_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_accel_scale_factor_uncertainty_decode(const uint8_t *data, size_t len,
+                                                       mipc_filter_data_accel_scale_factor_uncertainty_t *out,
+                                                       mipc_decode_error_t *err);
 
 /* ---- compensated_accel (data): Compensated acceleration */
-#define MIP_FILTER_DATA_COMPENSATED_ACCEL_DESCRIPTOR 0x1C
+#define MIPC_FILTER_DATA_COMPENSATED_ACCEL_DESCRIPTOR 0x1C
 
 /** Compensated acceleration. Acceleration with the filter's bias estimate removed (gravity included; 0x0D is
  * the linear acceleration without gravity). GX5-45: sensor frame, or vehicle frame when a sensor-to-vehicle
  * transformation is set; CV7: vehicle frame. */
 typedef struct {
-    float accel[3];                              /* (x, y, z) compensated acceleration. [m/s^2] */
-    mip_filter_output_valid_flags_t valid_flags; /* Compensated accelerations valid. */
-} mip_filter_data_compensated_accel_t;
+    float accel[3];                               /* (x, y, z) compensated acceleration. [m/s^2] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Compensated accelerations valid. */
+} mipc_filter_data_compensated_accel_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_COMPENSATED_ACCEL_MAX_SIZE 14
+#define MIPC_FILTER_DATA_COMPENSATED_ACCEL_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_compensated_accel_encode(const mip_filter_data_compensated_accel_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_compensated_accel_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_compensated_accel_encode(const mipc_filter_data_compensated_accel_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_compensated_accel_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_compensated_accel_t *out,
+                                                        mipc_decode_error_t *err);
 
 /* ---- standard_atmosphere (data): Standard atmosphere model */
-#define MIP_FILTER_DATA_STANDARD_ATMOSPHERE_DESCRIPTOR 0x20
+#define MIPC_FILTER_DATA_STANDARD_ATMOSPHERE_DESCRIPTOR 0x20
 
 /** Standard atmosphere model. US 1976 Standard Atmosphere values at the current altitude; needs a valid GNSS
  * location (invalid while GNSS is unavailable). */
 typedef struct {
-    float geometric_altitude;                    /* Geometric altitude. [m] */
-    float geopotential_altitude;                 /* Geopotential altitude. [m] */
-    float temperature;                           /* Standard temperature. [degC] */
-    float pressure;                              /* Standard pressure. [mbar] */
-    float density;                               /* Standard air density. [kg/m^3] */
-    mip_filter_output_valid_flags_t valid_flags; /* Atmosphere model solution valid. */
-} mip_filter_data_standard_atmosphere_t;
+    float geometric_altitude;                     /* Geometric altitude. [m] */
+    float geopotential_altitude;                  /* Geopotential altitude. [m] */
+    float temperature;                            /* Standard temperature. [degC] */
+    float pressure;                               /* Standard pressure. [mbar] */
+    float density;                                /* Standard air density. [kg/m^3] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Atmosphere model solution valid. */
+} mipc_filter_data_standard_atmosphere_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_STANDARD_ATMOSPHERE_MAX_SIZE 22
+#define MIPC_FILTER_DATA_STANDARD_ATMOSPHERE_MAX_SIZE 22
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_standard_atmosphere_encode(const mip_filter_data_standard_atmosphere_t *value,
-                                                        uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
-                                                        mip_filter_data_standard_atmosphere_t *out,
-                                                        mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_standard_atmosphere_encode(const mipc_filter_data_standard_atmosphere_t *value,
+                                                          uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_standard_atmosphere_decode(const uint8_t *data, size_t len,
+                                                          mipc_filter_data_standard_atmosphere_t *out,
+                                                          mipc_decode_error_t *err);
 
 /* ---- pressure_altitude (data): Pressure altitude */
-#define MIP_FILTER_DATA_PRESSURE_ALTITUDE_DESCRIPTOR 0x21
+#define MIPC_FILTER_DATA_PRESSURE_ALTITUDE_DESCRIPTOR 0x21
 
 /** Pressure altitude. Altitude from the pressure sensor through the US 1976 Standard Atmosphere model; needs
  * a valid pressure reading. The model supports pressures down to 0.0037 mbar (84,852 m). */
 typedef struct {
-    float pressure_altitude;                     /* Pressure altitude. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Pressure altitude valid. */
-} mip_filter_data_pressure_altitude_t;
+    float pressure_altitude;                      /* Pressure altitude. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Pressure altitude valid. */
+} mipc_filter_data_pressure_altitude_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_PRESSURE_ALTITUDE_MAX_SIZE 6
+#define MIPC_FILTER_DATA_PRESSURE_ALTITUDE_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_pressure_altitude_encode(const mip_filter_data_pressure_altitude_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_pressure_altitude_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_pressure_altitude_encode(const mipc_filter_data_pressure_altitude_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_pressure_altitude_decode(const uint8_t *data, size_t len,
+                                                        mipc_filter_data_pressure_altitude_t *out,
+                                                        mipc_decode_error_t *err);
 
 /* ---- mag_auto_hard_iron_offset (data): Magnetometer auto hard iron offset */
-#define MIP_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_DESCRIPTOR 0x25
+#define MIPC_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_DESCRIPTOR 0x25
 
 /** Magnetometer auto hard iron offset. Offset vector the filter adds to the hard iron offset to compensate
  * in-run magnetometer bias errors. */
 typedef struct {
-    float hard_iron_offset[3];                   /* (x, y, z) offset. [gauss] */
-    mip_filter_output_valid_flags_t valid_flags; /* Vector valid. */
-} mip_filter_data_mag_auto_hard_iron_offset_t;
+    float hard_iron_offset[3];                    /* (x, y, z) offset. [gauss] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Vector valid. */
+} mipc_filter_data_mag_auto_hard_iron_offset_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_MAX_SIZE 14
+#define MIPC_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_mag_auto_hard_iron_offset_encode(const mip_filter_data_mag_auto_hard_iron_offset_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_mag_auto_hard_iron_offset_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_mag_auto_hard_iron_offset_encode(const mipc_filter_data_mag_auto_hard_iron_offset_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_mag_auto_hard_iron_offset_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_mag_auto_hard_iron_offset_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- mag_auto_soft_iron_matrix (data): Magnetometer auto soft iron matrix */
-#define MIP_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_DESCRIPTOR 0x26
+#define MIPC_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_DESCRIPTOR 0x26
 
 /** Magnetometer auto soft iron matrix. Matrix the filter applies to the soft iron calibration matrix to
  * compensate in-run magnetometer errors. */
 typedef struct {
-    float soft_iron_matrix[9];                   /* M11..M33, row-major (dimensionless). */
-    mip_filter_output_valid_flags_t valid_flags; /* Matrix valid. */
-} mip_filter_data_mag_auto_soft_iron_matrix_t;
+    float soft_iron_matrix[9];                    /* M11..M33, row-major (dimensionless). */
+    mipc_filter_output_valid_flags_t valid_flags; /* Matrix valid. */
+} mipc_filter_data_mag_auto_soft_iron_matrix_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_MAX_SIZE 38
+#define MIPC_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_MAX_SIZE 38
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_mag_auto_soft_iron_matrix_encode(const mip_filter_data_mag_auto_soft_iron_matrix_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_mag_auto_soft_iron_matrix_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_mag_auto_soft_iron_matrix_encode(const mipc_filter_data_mag_auto_soft_iron_matrix_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_mag_auto_soft_iron_matrix_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_mag_auto_soft_iron_matrix_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- mag_auto_hard_iron_offset_uncertainty (data): Magnetometer auto hard iron offset uncertainty */
-#define MIP_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY_DESCRIPTOR 0x28
+#define MIPC_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY_DESCRIPTOR 0x28
 
 /** Magnetometer auto hard iron offset uncertainty. 1-sigma uncertainty of the auto hard iron offset
  * (0x82,0x25). */
 typedef struct {
-    float hard_iron_offset_uncertainty[3];       /* (x, y, z) 1-sigma uncertainty. [gauss] */
-    mip_filter_output_valid_flags_t valid_flags; /* Vector valid. */
-} mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t;
+    float hard_iron_offset_uncertainty[3];        /* (x, y, z) 1-sigma uncertainty. [gauss] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Vector valid. */
+} mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
-    const mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_encode(
+    const mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- mag_auto_soft_iron_matrix_uncertainty (data): Magnetometer auto soft iron matrix uncertainty */
-#define MIP_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY_DESCRIPTOR 0x29
+#define MIPC_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY_DESCRIPTOR 0x29
 
 /** Magnetometer auto soft iron matrix uncertainty. 1-sigma uncertainty of each element of the auto soft iron
  * matrix (0x82,0x26). */
 typedef struct {
     float soft_iron_matrix_uncertainty[9]; /* 1-sigma uncertainty of M11..M33, row-major (dimensionless). */
-    mip_filter_output_valid_flags_t valid_flags; /* Matrix valid. */
-} mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Matrix valid. */
+} mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY_MAX_SIZE 38
+#define MIPC_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY_MAX_SIZE 38
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
-    const mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_encode(
+    const mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- gnss_antenna_offset_correction (data): GNSS antenna offset correction */
-#define MIP_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_DESCRIPTOR 0x30
+#define MIPC_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_DESCRIPTOR 0x30
 
 /** GNSS antenna offset correction. Estimated correction of the GNSS antenna offset (the vector from the IMU
  * to the antenna), in the sensor body frame. */
 typedef struct {
-    float offset[3];                             /* (x, y, z) offset correction. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Offset correction values valid. */
-} mip_filter_data_gnss_antenna_offset_correction_t;
+    float offset[3];                              /* (x, y, z) offset correction. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Offset correction values valid. */
+} mipc_filter_data_gnss_antenna_offset_correction_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_encode(
-    const mip_filter_data_gnss_antenna_offset_correction_t *value, uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
-                                                      mip_filter_data_gnss_antenna_offset_correction_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_encode(
+    const mipc_filter_data_gnss_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
+    size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_gnss_antenna_offset_correction_decode(const uint8_t *data, size_t len,
+                                                       mipc_filter_data_gnss_antenna_offset_correction_t *out,
+                                                       mipc_decode_error_t *err);
 
 /* ---- gnss_antenna_offset_correction_uncertainty (data): GNSS antenna offset correction uncertainty */
-#define MIP_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_DESCRIPTOR 0x31
+#define MIPC_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_DESCRIPTOR 0x31
 
 /** GNSS antenna offset correction uncertainty. 1-sigma uncertainty of the GNSS antenna offset correction,
  * sensor body frame. */
 typedef struct {
-    float offset_uncertainty[3];                 /* (x, y, z) 1-sigma uncertainty. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_gnss_antenna_offset_correction_uncertainty_t;
+    float offset_uncertainty[3];                  /* (x, y, z) 1-sigma uncertainty. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
-    const mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_encode(
+    const mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- multi_antenna_offset_correction (data): Multi-antenna offset correction */
-#define MIP_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_DESCRIPTOR 0x34
+#define MIPC_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_DESCRIPTOR 0x34
 
 /** Multi-antenna offset correction. Estimated correction of one GNSS antenna's offset, in the vehicle frame;
  * added to the stored offset vector to compensate errors in its definition. */
 typedef struct {
-    uint8_t receiver_id;                         /* Receiver to which the antenna is attached. */
-    float offset[3];                             /* (x, y, z) offset correction. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Offset correction valid. */
-} mip_filter_data_multi_antenna_offset_correction_t;
+    uint8_t receiver_id;                          /* Receiver to which the antenna is attached. */
+    float offset[3];                              /* (x, y, z) offset correction. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Offset correction valid. */
+} mipc_filter_data_multi_antenna_offset_correction_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_MAX_SIZE 15
+#define MIPC_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_MAX_SIZE 15
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_multi_antenna_offset_correction_encode(
-    const mip_filter_data_multi_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_encode(
+    const mipc_filter_data_multi_antenna_offset_correction_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_multi_antenna_offset_correction_decode(const uint8_t *data, size_t len,
-                                                       mip_filter_data_multi_antenna_offset_correction_t *out,
-                                                       mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- multi_antenna_offset_correction_uncertainty (data): Multi-antenna offset correction uncertainty */
-#define MIP_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_DESCRIPTOR 0x35
+#define MIPC_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_DESCRIPTOR 0x35
 
 /** Multi-antenna offset correction uncertainty. 1-sigma uncertainty of one GNSS antenna's offset correction,
  * vehicle frame. */
 typedef struct {
-    uint8_t receiver_id;                         /* Receiver to which the antenna is attached. */
-    float offset_uncertainty[3];                 /* (x, y, z) 1-sigma uncertainty. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_multi_antenna_offset_correction_uncertainty_t;
+    uint8_t receiver_id;                          /* Receiver to which the antenna is attached. */
+    float offset_uncertainty[3];                  /* (x, y, z) 1-sigma uncertainty. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_multi_antenna_offset_correction_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_MAX_SIZE 15
+#define MIPC_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY_MAX_SIZE 15
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_encode(
-    const mip_filter_data_multi_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_encode(
+    const mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_multi_antenna_offset_correction_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_multi_antenna_offset_correction_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- ecef_position_uncertainty (data): ECEF position uncertainty */
-#define MIP_FILTER_DATA_ECEF_POSITION_UNCERTAINTY_DESCRIPTOR 0x36
+#define MIPC_FILTER_DATA_ECEF_POSITION_UNCERTAINTY_DESCRIPTOR 0x36
 
 /** ECEF position uncertainty. 1-sigma position uncertainty in the ECEF frame. */
 typedef struct {
-    float position_uncertainty[3];               /* (x, y, z) 1-sigma uncertainty. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_ecef_position_uncertainty_t;
+    float position_uncertainty[3];                /* (x, y, z) 1-sigma uncertainty. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_ecef_position_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ECEF_POSITION_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ECEF_POSITION_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_ecef_position_uncertainty_encode(const mip_filter_data_ecef_position_uncertainty_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ecef_position_uncertainty_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_ecef_position_uncertainty_encode(const mipc_filter_data_ecef_position_uncertainty_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_ecef_position_uncertainty_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_ecef_position_uncertainty_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- ecef_velocity_uncertainty (data): ECEF velocity uncertainty */
-#define MIP_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY_DESCRIPTOR 0x37
+#define MIPC_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY_DESCRIPTOR 0x37
 
 /** ECEF velocity uncertainty. 1-sigma velocity uncertainty in the ECEF frame. */
 typedef struct {
-    float velocity_uncertainty[3];               /* (x, y, z) 1-sigma uncertainty. [m/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
-} mip_filter_data_ecef_velocity_uncertainty_t;
+    float velocity_uncertainty[3];                /* (x, y, z) 1-sigma uncertainty. [m/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainties valid. */
+} mipc_filter_data_ecef_velocity_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_ecef_velocity_uncertainty_encode(const mip_filter_data_ecef_velocity_uncertainty_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_ecef_velocity_uncertainty_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_ecef_velocity_uncertainty_encode(const mipc_filter_data_ecef_velocity_uncertainty_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_ecef_velocity_uncertainty_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_ecef_velocity_uncertainty_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- ecef_position (data): ECEF position */
-#define MIP_FILTER_DATA_ECEF_POSITION_DESCRIPTOR 0x40
+#define MIPC_FILTER_DATA_ECEF_POSITION_DESCRIPTOR 0x40
 
 /** ECEF position. Estimated position in the ECEF frame. */
 typedef struct {
-    double position[3];                          /* (x, y, z) ECEF position. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Position valid. */
-} mip_filter_data_ecef_position_t;
+    double position[3];                           /* (x, y, z) ECEF position. [m] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Position valid. */
+} mipc_filter_data_ecef_position_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ECEF_POSITION_MAX_SIZE 26
+#define MIPC_FILTER_DATA_ECEF_POSITION_MAX_SIZE 26
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_ecef_position_encode(const mip_filter_data_ecef_position_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_position_t *out,
-                                                  mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_ecef_position_encode(const mipc_filter_data_ecef_position_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_ecef_position_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_ecef_position_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- ecef_velocity (data): ECEF velocity */
-#define MIP_FILTER_DATA_ECEF_VELOCITY_DESCRIPTOR 0x41
+#define MIPC_FILTER_DATA_ECEF_VELOCITY_DESCRIPTOR 0x41
 
 /** ECEF velocity. Estimated velocity in the ECEF frame. */
 typedef struct {
-    float velocity[3];                           /* (x, y, z) ECEF velocity. [m/s] */
-    mip_filter_output_valid_flags_t valid_flags; /* Velocity valid. */
-} mip_filter_data_ecef_velocity_t;
+    float velocity[3];                            /* (x, y, z) ECEF velocity. [m/s] */
+    mipc_filter_output_valid_flags_t valid_flags; /* Velocity valid. */
+} mipc_filter_data_ecef_velocity_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ECEF_VELOCITY_MAX_SIZE 14
+#define MIPC_FILTER_DATA_ECEF_VELOCITY_MAX_SIZE 14
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_ecef_velocity_encode(const mip_filter_data_ecef_velocity_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_ecef_velocity_t *out,
-                                                  mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_ecef_velocity_encode(const mipc_filter_data_ecef_velocity_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_ecef_velocity_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_ecef_velocity_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- ned_relative_position (data): NED relative position */
-#define MIP_FILTER_DATA_NED_RELATIVE_POSITION_DESCRIPTOR 0x42
+#define MIPC_FILTER_DATA_NED_RELATIVE_POSITION_DESCRIPTOR 0x42
 
 /** NED relative position. Estimated position relative to the reference position set with Relative Position
  * Configuration (0x0D,0x55), as north, east, down. */
 typedef struct {
     double relative_position[3]; /* (north, east, down) position relative to the reference. [m] */
-    mip_filter_output_valid_flags_t valid_flags; /* Relative position valid. */
-} mip_filter_data_ned_relative_position_t;
+    mipc_filter_output_valid_flags_t valid_flags; /* Relative position valid. */
+} mipc_filter_data_ned_relative_position_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_NED_RELATIVE_POSITION_MAX_SIZE 26
+#define MIPC_FILTER_DATA_NED_RELATIVE_POSITION_MAX_SIZE 26
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_ned_relative_position_encode(const mip_filter_data_ned_relative_position_t *value,
-                                             uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
-                                                          mip_filter_data_ned_relative_position_t *out,
-                                                          mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_ned_relative_position_encode(const mipc_filter_data_ned_relative_position_t *value,
+                                              uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_ned_relative_position_decode(const uint8_t *data, size_t len,
+                                                            mipc_filter_data_ned_relative_position_t *out,
+                                                            mipc_decode_error_t *err);
 
 /* ---- gnss_position_aiding_status (data): GNSS position aiding status */
-#define MIP_FILTER_DATA_GNSS_POSITION_AIDING_STATUS_DESCRIPTOR 0x43
+#define MIPC_FILTER_DATA_GNSS_POSITION_AIDING_STATUS_DESCRIPTOR 0x43
 
 /** GNSS position aiding status. How the filter is using the position measurements of one GNSS receiver. */
 typedef struct {
     uint8_t receiver_id; /* GNSS receiver the status refers to. */
     float time_of_week;  /* GPS time of week of the last GNSS aiding measurement. [s] */
-    mip_filter_gnss_aiding_status_flags_t status; /* Aiding measurement status. */
-    uint8_t reserved[8];                          /* Reserved. */
-} mip_filter_data_gnss_position_aiding_status_t;
+    mipc_filter_gnss_aiding_status_flags_t status; /* Aiding measurement status. */
+    uint8_t reserved[8];                           /* Reserved. */
+} mipc_filter_data_gnss_position_aiding_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GNSS_POSITION_AIDING_STATUS_MAX_SIZE 15
+#define MIPC_FILTER_DATA_GNSS_POSITION_AIDING_STATUS_MAX_SIZE 15
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_gnss_position_aiding_status_encode(const mip_filter_data_gnss_position_aiding_status_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_gnss_position_aiding_status_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_gnss_position_aiding_status_encode(
+    const mipc_filter_data_gnss_position_aiding_status_t *value, uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_gnss_position_aiding_status_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_gnss_position_aiding_status_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- aiding_measurement_summary (data): Aiding measurement summary */
-#define MIP_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY_DESCRIPTOR 0x46
+#define MIPC_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY_DESCRIPTOR 0x46
 
 /** Aiding measurement summary. Summary of one aiding measurement over the measurement interval ending at the
  * given time: whether it is enabled and used, and any warnings. */
 typedef struct {
     float time_of_week; /* GPS time of week at the end of the measurement interval. [s] */
     uint8_t source;     /* Measurement source (not described by the manual). */
-    mip_filter_aiding_measurement_type_t type;           /* Which aiding measurement is summarised. */
-    mip_filter_aiding_measurement_indicator_t indicator; /* Measurement state and warnings. */
-} mip_filter_data_aiding_measurement_summary_t;
+    mipc_filter_aiding_measurement_type_t type;           /* Which aiding measurement is summarised. */
+    mipc_filter_aiding_measurement_indicator_t indicator; /* Measurement state and warnings. */
+} mipc_filter_data_aiding_measurement_summary_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY_MAX_SIZE 7
+#define MIPC_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY_MAX_SIZE 7
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_aiding_measurement_summary_encode(const mip_filter_data_aiding_measurement_summary_t *value,
-                                                  uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
-                                                  mip_filter_data_aiding_measurement_summary_t *out,
-                                                  mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_aiding_measurement_summary_encode(const mipc_filter_data_aiding_measurement_summary_t *value,
+                                                   uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_aiding_measurement_summary_decode(const uint8_t *data, size_t len,
+                                                   mipc_filter_data_aiding_measurement_summary_t *out,
+                                                   mipc_decode_error_t *err);
 
 /* ---- odometer_scale_factor_error (data): Odometer scale factor error */
-#define MIP_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_DESCRIPTOR 0x47
+#define MIPC_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_DESCRIPTOR 0x47
 
 /** Odometer scale factor error. Estimated odometer scale factor error; the total scale factor is the user
  * scale factor times (1 + this error). */
 typedef struct {
-    float scale_factor_error;                    /* Scale factor error (dimensionless). */
-    mip_filter_output_valid_flags_t valid_flags; /* Estimate valid. */
-} mip_filter_data_odometer_scale_factor_error_t;
+    float scale_factor_error;                     /* Scale factor error (dimensionless). */
+    mipc_filter_output_valid_flags_t valid_flags; /* Estimate valid. */
+} mipc_filter_data_odometer_scale_factor_error_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_MAX_SIZE 6
+#define MIPC_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_odometer_scale_factor_error_encode(const mip_filter_data_odometer_scale_factor_error_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
-                                                   mip_filter_data_odometer_scale_factor_error_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_encode(
+    const mipc_filter_data_odometer_scale_factor_error_t *value, uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_odometer_scale_factor_error_decode(const uint8_t *data, size_t len,
+                                                    mipc_filter_data_odometer_scale_factor_error_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- odometer_scale_factor_error_uncertainty (data): Odometer scale factor error uncertainty */
-#define MIP_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY_DESCRIPTOR 0x48
+#define MIPC_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY_DESCRIPTOR 0x48
 
 /** Odometer scale factor error uncertainty. 1-sigma uncertainty of the odometer scale factor error. */
 typedef struct {
-    float scale_factor_error_uncertainty;        /* 1-sigma uncertainty (dimensionless). */
-    mip_filter_output_valid_flags_t valid_flags; /* Uncertainty valid. */
-} mip_filter_data_odometer_scale_factor_error_uncertainty_t;
+    float scale_factor_error_uncertainty;         /* 1-sigma uncertainty (dimensionless). */
+    mipc_filter_output_valid_flags_t valid_flags; /* Uncertainty valid. */
+} mipc_filter_data_odometer_scale_factor_error_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY_MAX_SIZE 6
+#define MIPC_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY_MAX_SIZE 6
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_encode(
-    const mip_filter_data_odometer_scale_factor_error_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_encode(
+    const mipc_filter_data_odometer_scale_factor_error_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_odometer_scale_factor_error_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_odometer_scale_factor_error_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_odometer_scale_factor_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_odometer_scale_factor_error_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 /* ---- gnss_dual_antenna_status (data): GNSS dual antenna status */
-#define MIP_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS_DESCRIPTOR 0x49
+#define MIPC_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS_DESCRIPTOR 0x49
 
 /** GNSS dual antenna status. State of the GNSS dual-antenna heading measurement the filter last used. */
 typedef struct {
     float time_of_week;        /* GPS time of week of the last dual-antenna aiding measurement. [s] */
     float heading;             /* Dual-antenna heading. [rad] */
     float heading_uncertainty; /* 1-sigma heading uncertainty. [rad] */
-    mip_filter_dual_antenna_fix_type_t fix_type;         /* Fix type. */
-    mip_filter_dual_antenna_status_flags_t status_flags; /* Receiver and antenna-offset validity. */
-    mip_filter_output_valid_flags_t valid_flags;         /* Field valid. */
-} mip_filter_data_gnss_dual_antenna_status_t;
+    mipc_filter_dual_antenna_fix_type_t fix_type;         /* Fix type. */
+    mipc_filter_dual_antenna_status_flags_t status_flags; /* Receiver and antenna-offset validity. */
+    mipc_filter_output_valid_flags_t valid_flags;         /* Field valid. */
+} mipc_filter_data_gnss_dual_antenna_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS_MAX_SIZE 17
+#define MIPC_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS_MAX_SIZE 17
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_gnss_dual_antenna_status_encode(const mip_filter_data_gnss_dual_antenna_status_t *value,
-                                                uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
-                                                             mip_filter_data_gnss_dual_antenna_status_t *out,
-                                                             mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_gnss_dual_antenna_status_encode(const mipc_filter_data_gnss_dual_antenna_status_t *value,
+                                                 uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_gnss_dual_antenna_status_decode(const uint8_t *data, size_t len,
+                                                 mipc_filter_data_gnss_dual_antenna_status_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- aiding_frame_config_error (data): Aiding frame configuration error */
-#define MIP_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_DESCRIPTOR 0x50
+#define MIPC_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_DESCRIPTOR 0x50
 
 /** Aiding frame configuration error. Estimated error of one user aiding frame configuration (Aiding Frame
  * Configuration, 0x13,0x01), used to compensate small errors in it. */
@@ -1061,23 +1067,23 @@ typedef struct {
     uint8_t frame_id;     /* Aiding reference frame id (as in 0x13,0x01). */
     float translation[3]; /* Translation error, X, Y, Z. [m] */
     float attitude[4];    /* Attitude error quaternion. */
-} mip_filter_data_aiding_frame_config_error_t;
+} mipc_filter_data_aiding_frame_config_error_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_MAX_SIZE 29
+#define MIPC_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_MAX_SIZE 29
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_filter_data_aiding_frame_config_error_encode(const mip_filter_data_aiding_frame_config_error_t *value,
-                                                 uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
-                                                 mip_filter_data_aiding_frame_config_error_t *out,
-                                                 mip_decode_error_t *err);
+mipc_status_t
+mipc_filter_data_aiding_frame_config_error_encode(const mipc_filter_data_aiding_frame_config_error_t *value,
+                                                  uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_filter_data_aiding_frame_config_error_decode(const uint8_t *data, size_t len,
+                                                  mipc_filter_data_aiding_frame_config_error_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- aiding_frame_config_error_uncertainty (data): Aiding frame configuration error uncertainty */
-#define MIP_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY_DESCRIPTOR 0x51
+#define MIPC_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY_DESCRIPTOR 0x51
 
 /** Aiding frame configuration error uncertainty. 1-sigma uncertainty of the estimated aiding frame
  * configuration error (0x82,0x50). */
@@ -1085,19 +1091,19 @@ typedef struct {
     uint8_t frame_id;                 /* Aiding reference frame id (as in 0x13,0x01). */
     float translation_uncertainty[3]; /* 1-sigma translation uncertainty, X, Y, Z. [m] */
     float attitude_uncertainty[3];    /* 1-sigma attitude uncertainty, X, Y, Z. [rad] */
-} mip_filter_data_aiding_frame_config_error_uncertainty_t;
+} mipc_filter_data_aiding_frame_config_error_uncertainty_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY_MAX_SIZE 25
+#define MIPC_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY_MAX_SIZE 25
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_encode(
-    const mip_filter_data_aiding_frame_config_error_uncertainty_t *value, uint8_t *buf, size_t cap,
+mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_encode(
+    const mipc_filter_data_aiding_frame_config_error_uncertainty_t *value, uint8_t *buf, size_t cap,
     size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_filter_data_aiding_frame_config_error_uncertainty_decode(
-    const uint8_t *data, size_t len, mip_filter_data_aiding_frame_config_error_uncertainty_t *out,
-    mip_decode_error_t *err);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_decode(
+    const uint8_t *data, size_t len, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out,
+    mipc_decode_error_t *err);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 /* GNSS Corrections Data Set (descriptor set 0x93): one struct per field layout, with its
  * encoder and decoder. Generated from the spec: do not edit. */
-#ifndef MIP_SETS_GNSS_CORRECTIONS_H
-#define MIP_SETS_GNSS_CORRECTIONS_H
+#ifndef MIPC_SETS_GNSS_CORRECTIONS_H
+#define MIPC_SETS_GNSS_CORRECTIONS_H
 
 #include "mipcodec/types.h"
 
@@ -9,44 +9,44 @@
 extern "C" {
 #endif
 
-#define MIP_GNSS_CORRECTIONS_SET 0x93
+#define MIPC_GNSS_CORRECTIONS_SET 0x93
 
 /* ---- base_station_info (data): Base station information */
-#define MIP_GNSS_CORRECTIONS_BASE_STATION_INFO_DESCRIPTOR 0x30
+#define MIPC_GNSS_CORRECTIONS_BASE_STATION_INFO_DESCRIPTOR 0x30
 
 /** Base station information. Base station reported by the RTCM corrections (message 1005 or 1006): its ECEF
  * position, antenna height, station id and indicators, with the GPS time the message was received. */
 typedef struct {
-    double tow;                                    /* GPS time of week the message was received. [s] */
-    uint16_t week_number;                          /* GPS week number (since 1980). [weeks] */
-    double ecef_position[3];                       /* (x, y, z) ECEF position of the base station. [m] */
-    float height;                                  /* Antenna height above the survey marker. [m] */
-    uint16_t station_id;                           /* Reference station id (0-4095). */
-    mip_gnss_base_station_indicators_t indicators; /* Base station indicator bits. */
-    mip_gnss_base_station_info_valid_flags_t valid_flags; /* Which values are valid. */
-} mip_gnss_corrections_base_station_info_t;
+    double tow;                                     /* GPS time of week the message was received. [s] */
+    uint16_t week_number;                           /* GPS week number (since 1980). [weeks] */
+    double ecef_position[3];                        /* (x, y, z) ECEF position of the base station. [m] */
+    float height;                                   /* Antenna height above the survey marker. [m] */
+    uint16_t station_id;                            /* Reference station id (0-4095). */
+    mipc_gnss_base_station_indicators_t indicators; /* Base station indicator bits. */
+    mipc_gnss_base_station_info_valid_flags_t valid_flags; /* Which values are valid. */
+} mipc_gnss_corrections_base_station_info_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_GNSS_CORRECTIONS_BASE_STATION_INFO_MAX_SIZE 44
+#define MIPC_GNSS_CORRECTIONS_BASE_STATION_INFO_MAX_SIZE 44
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_gnss_corrections_base_station_info_encode(const mip_gnss_corrections_base_station_info_t *value,
-                                              uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
-                                                           mip_gnss_corrections_base_station_info_t *out,
-                                                           mip_decode_error_t *err);
+mipc_status_t
+mipc_gnss_corrections_base_station_info_encode(const mipc_gnss_corrections_base_station_info_t *value,
+                                               uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_gnss_corrections_base_station_info_decode(const uint8_t *data, size_t len,
+                                                             mipc_gnss_corrections_base_station_info_t *out,
+                                                             mipc_decode_error_t *err);
 
 /* ---- rtk_corrections_status (data): RTK corrections status */
-#define MIP_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS_DESCRIPTOR 0x31
+#define MIPC_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS_DESCRIPTOR 0x31
 
 /** RTK corrections status. Status of the RTK corrections received in the current epoch, the RTK dongle status
  * and the latency of the last correction per constellation, with the GPS time. */
 typedef struct {
     double tow;           /* GPS time of week. [s] */
     uint16_t week_number; /* GPS week number (since 1980). [weeks] */
-    mip_rtk_corrections_epoch_status_t
+    mipc_rtk_corrections_epoch_status_t
         epoch_status;                 /* Status of the corrections received during this epoch. */
     uint32_t dongle_status;           /* RTK dongle status flags (only valid when an RTK dongle is used). */
     float gps_correction_latency;     /* Latency of the last GPS correction. [s] */
@@ -54,21 +54,20 @@ typedef struct {
     float galileo_correction_latency; /* Latency of the last Galileo correction. [s] */
     float beidou_correction_latency;  /* Latency of the last BeiDou correction. [s] */
     uint32_t reserved[4];             /* Reserved for future use. */
-    mip_rtk_corrections_status_valid_flags_t valid_flags; /* Which values are valid. */
-} mip_gnss_corrections_rtk_corrections_status_t;
+    mipc_rtk_corrections_status_valid_flags_t valid_flags; /* Which values are valid. */
+} mipc_gnss_corrections_rtk_corrections_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS_MAX_SIZE 50
+#define MIPC_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS_MAX_SIZE 50
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t
-mip_gnss_corrections_rtk_corrections_status_encode(const mip_gnss_corrections_rtk_corrections_status_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t
-mip_gnss_corrections_rtk_corrections_status_decode(const uint8_t *data, size_t len,
-                                                   mip_gnss_corrections_rtk_corrections_status_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_gnss_corrections_rtk_corrections_status_encode(
+    const mipc_gnss_corrections_rtk_corrections_status_t *value, uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t
+mipc_gnss_corrections_rtk_corrections_status_decode(const uint8_t *data, size_t len,
+                                                    mipc_gnss_corrections_rtk_corrections_status_t *out,
+                                                    mipc_decode_error_t *err);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 /* Sensor (IMU) Data Set (descriptor set 0x80): one struct per field layout, with its
  * encoder and decoder. Generated from the spec: do not edit. */
-#ifndef MIP_SETS_SENSOR_H
-#define MIP_SETS_SENSOR_H
+#ifndef MIPC_SETS_SENSOR_H
+#define MIPC_SETS_SENSOR_H
 
 #include "mipcodec/types.h"
 
@@ -9,145 +9,145 @@
 extern "C" {
 #endif
 
-#define MIP_SENSOR_SET 0x80
+#define MIPC_SENSOR_SET 0x80
 
 /* ---- scaled_accel (data): Scaled accelerometer vector */
-#define MIP_SENSOR_SCALED_ACCEL_DESCRIPTOR 0x04
+#define MIPC_SENSOR_SCALED_ACCEL_DESCRIPTOR 0x04
 
 /** Scaled accelerometer vector. Sensed acceleration, temperature compensated, in g (1 g = 9.80665 m/s^2), X,
  * Y, Z in the sensor (GX5-45) or vehicle (CV7) frame. */
 typedef struct {
     float scaled_accel[3]; /* (x, y, z) acceleration. [g] */
-} mip_sensor_scaled_accel_t;
+} mipc_sensor_scaled_accel_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_SCALED_ACCEL_MAX_SIZE 12
+#define MIPC_SENSOR_SCALED_ACCEL_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_scaled_accel_encode(const mip_sensor_scaled_accel_t *value, uint8_t *buf, size_t cap,
-                                            size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_scaled_accel_decode(const uint8_t *data, size_t len, mip_sensor_scaled_accel_t *out,
-                                            mip_decode_error_t *err);
+mipc_status_t mipc_sensor_scaled_accel_encode(const mipc_sensor_scaled_accel_t *value, uint8_t *buf,
+                                              size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_scaled_accel_decode(const uint8_t *data, size_t len,
+                                              mipc_sensor_scaled_accel_t *out, mipc_decode_error_t *err);
 
 /* ---- scaled_gyro (data): Scaled gyro vector */
-#define MIP_SENSOR_SCALED_GYRO_DESCRIPTOR 0x05
+#define MIPC_SENSOR_SCALED_GYRO_DESCRIPTOR 0x05
 
 /** Scaled gyro vector. Sensed angular rate, temperature compensated, in radians/second, X, Y, Z. */
 typedef struct {
     float scaled_gyro[3]; /* (x, y, z) angular rate. [rad/s] */
-} mip_sensor_scaled_gyro_t;
+} mipc_sensor_scaled_gyro_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_SCALED_GYRO_MAX_SIZE 12
+#define MIPC_SENSOR_SCALED_GYRO_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_scaled_gyro_encode(const mip_sensor_scaled_gyro_t *value, uint8_t *buf, size_t cap,
-                                           size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mip_sensor_scaled_gyro_t *out,
-                                           mip_decode_error_t *err);
+mipc_status_t mipc_sensor_scaled_gyro_encode(const mipc_sensor_scaled_gyro_t *value, uint8_t *buf, size_t cap,
+                                             size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_scaled_gyro_decode(const uint8_t *data, size_t len, mipc_sensor_scaled_gyro_t *out,
+                                             mipc_decode_error_t *err);
 
 /* ---- scaled_mag (data): Scaled magnetometer vector */
-#define MIP_SENSOR_SCALED_MAG_DESCRIPTOR 0x06
+#define MIPC_SENSOR_SCALED_MAG_DESCRIPTOR 0x06
 
 /** Scaled magnetometer vector. Sensed magnetic field, temperature compensated, in Gauss, X, Y, Z. */
 typedef struct {
     float scaled_mag[3]; /* (x, y, z) magnetic field. [gauss] */
-} mip_sensor_scaled_mag_t;
+} mipc_sensor_scaled_mag_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_SCALED_MAG_MAX_SIZE 12
+#define MIPC_SENSOR_SCALED_MAG_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_scaled_mag_encode(const mip_sensor_scaled_mag_t *value, uint8_t *buf, size_t cap,
-                                          size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mip_sensor_scaled_mag_t *out,
-                                          mip_decode_error_t *err);
+mipc_status_t mipc_sensor_scaled_mag_encode(const mipc_sensor_scaled_mag_t *value, uint8_t *buf, size_t cap,
+                                            size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_scaled_mag_decode(const uint8_t *data, size_t len, mipc_sensor_scaled_mag_t *out,
+                                            mipc_decode_error_t *err);
 
 /* ---- delta_theta (data): Delta theta vector */
-#define MIP_SENSOR_DELTA_THETA_DESCRIPTOR 0x07
+#define MIPC_SENSOR_DELTA_THETA_DESCRIPTOR 0x07
 
 /** Delta theta vector. Time integral of the angular rate over the interval set by the IMU message format (the
  * output period), in radians, X, Y, Z in the sensor (GX5-45) or vehicle (CV7) frame. */
 typedef struct {
     float delta_theta[3]; /* (x, y, z) integrated angular rate. [rad] */
-} mip_sensor_delta_theta_t;
+} mipc_sensor_delta_theta_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_DELTA_THETA_MAX_SIZE 12
+#define MIPC_SENSOR_DELTA_THETA_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_delta_theta_encode(const mip_sensor_delta_theta_t *value, uint8_t *buf, size_t cap,
-                                           size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_delta_theta_decode(const uint8_t *data, size_t len, mip_sensor_delta_theta_t *out,
-                                           mip_decode_error_t *err);
+mipc_status_t mipc_sensor_delta_theta_encode(const mipc_sensor_delta_theta_t *value, uint8_t *buf, size_t cap,
+                                             size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_delta_theta_decode(const uint8_t *data, size_t len, mipc_sensor_delta_theta_t *out,
+                                             mipc_decode_error_t *err);
 
 /* ---- delta_velocity (data): Delta velocity vector */
-#define MIP_SENSOR_DELTA_VELOCITY_DESCRIPTOR 0x08
+#define MIPC_SENSOR_DELTA_VELOCITY_DESCRIPTOR 0x08
 
 /** Delta velocity vector. Time integral of the sensed (specific) acceleration over the interval set by the
  * IMU message format, in g*seconds (multiply by 9.80665 for m/s), X, Y, Z in the sensor (GX5-45) or vehicle
  * (CV7) frame. */
 typedef struct {
     float delta_velocity[3]; /* (x, y, z) integrated acceleration. [g*s] */
-} mip_sensor_delta_velocity_t;
+} mipc_sensor_delta_velocity_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_DELTA_VELOCITY_MAX_SIZE 12
+#define MIPC_SENSOR_DELTA_VELOCITY_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_delta_velocity_encode(const mip_sensor_delta_velocity_t *value, uint8_t *buf,
-                                              size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
-                                              mip_sensor_delta_velocity_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_sensor_delta_velocity_encode(const mipc_sensor_delta_velocity_t *value, uint8_t *buf,
+                                                size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_delta_velocity_decode(const uint8_t *data, size_t len,
+                                                mipc_sensor_delta_velocity_t *out, mipc_decode_error_t *err);
 
 /* ---- cf_orientation_matrix (data): Complementary filter orientation matrix */
-#define MIP_SENSOR_CF_ORIENTATION_MATRIX_DESCRIPTOR 0x09
+#define MIPC_SENSOR_CF_ORIENTATION_MATRIX_DESCRIPTOR 0x09
 
 /** Complementary filter orientation matrix. 3x3 orientation (direction cosine) matrix from the complementary
  * filter, rotating a vector from the earth-fixed (NED local-level) frame into the sensor (GX5-45) or vehicle
  * (CV7) frame: v_local = M * v_earth. Elements sent row-major, M11 M12 M13 M21 ... M33. */
 typedef struct {
     float m[9]; /* Orientation matrix, row-major (dimensionless). */
-} mip_sensor_cf_orientation_matrix_t;
+} mipc_sensor_cf_orientation_matrix_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_CF_ORIENTATION_MATRIX_MAX_SIZE 36
+#define MIPC_SENSOR_CF_ORIENTATION_MATRIX_MAX_SIZE 36
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_cf_orientation_matrix_encode(const mip_sensor_cf_orientation_matrix_t *value,
-                                                     uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
-                                                     mip_sensor_cf_orientation_matrix_t *out,
-                                                     mip_decode_error_t *err);
+mipc_status_t mipc_sensor_cf_orientation_matrix_encode(const mipc_sensor_cf_orientation_matrix_t *value,
+                                                       uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_cf_orientation_matrix_decode(const uint8_t *data, size_t len,
+                                                       mipc_sensor_cf_orientation_matrix_t *out,
+                                                       mipc_decode_error_t *err);
 
 /* ---- cf_quaternion (data): Complementary filter quaternion */
-#define MIP_SENSOR_CF_QUATERNION_DESCRIPTOR 0x0A
+#define MIPC_SENSOR_CF_QUATERNION_DESCRIPTOR 0x0A
 
 /** Complementary filter quaternion. Orientation quaternion (q0, q1, q2, q3) from the complementary filter, of
  * the sensor (GX5-45) or vehicle (CV7) frame relative to the earth-fixed (NED) frame: v_local = Q^-1 *
  * v_earth * Q. */
 typedef struct {
     float q[4]; /* Quaternion elements q0 (scalar), q1, q2, q3 (dimensionless). */
-} mip_sensor_cf_quaternion_t;
+} mipc_sensor_cf_quaternion_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_CF_QUATERNION_MAX_SIZE 16
+#define MIPC_SENSOR_CF_QUATERNION_MAX_SIZE 16
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_cf_quaternion_encode(const mip_sensor_cf_quaternion_t *value, uint8_t *buf,
-                                             size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_cf_quaternion_decode(const uint8_t *data, size_t len, mip_sensor_cf_quaternion_t *out,
-                                             mip_decode_error_t *err);
+mipc_status_t mipc_sensor_cf_quaternion_encode(const mipc_sensor_cf_quaternion_t *value, uint8_t *buf,
+                                               size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_cf_quaternion_decode(const uint8_t *data, size_t len,
+                                               mipc_sensor_cf_quaternion_t *out, mipc_decode_error_t *err);
 
 /* ---- cf_euler_angles (data): Complementary filter Euler angles */
-#define MIP_SENSOR_CF_EULER_ANGLES_DESCRIPTOR 0x0C
+#define MIPC_SENSOR_CF_EULER_ANGLES_DESCRIPTOR 0x0C
 
 /** Complementary filter Euler angles. Roll, pitch and yaw (aircraft 3-2-1 order) from the complementary
  * filter, in radians, relative to the earth-fixed (NED local-level) frame. */
@@ -155,84 +155,86 @@ typedef struct {
     float roll;  /* Roll angle. [rad] */
     float pitch; /* Pitch angle. [rad] */
     float yaw;   /* Yaw angle. [rad] */
-} mip_sensor_cf_euler_angles_t;
+} mipc_sensor_cf_euler_angles_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_CF_EULER_ANGLES_MAX_SIZE 12
+#define MIPC_SENSOR_CF_EULER_ANGLES_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_cf_euler_angles_encode(const mip_sensor_cf_euler_angles_t *value, uint8_t *buf,
-                                               size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
-                                               mip_sensor_cf_euler_angles_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_sensor_cf_euler_angles_encode(const mipc_sensor_cf_euler_angles_t *value, uint8_t *buf,
+                                                 size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_cf_euler_angles_decode(const uint8_t *data, size_t len,
+                                                 mipc_sensor_cf_euler_angles_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- cf_stabilized_north (data): Complementary filter stabilized north vector */
-#define MIP_SENSOR_CF_STABILIZED_NORTH_DESCRIPTOR 0x10
+#define MIPC_SENSOR_CF_STABILIZED_NORTH_DESCRIPTOR 0x10
 
 /** Complementary filter stabilized north vector. The complementary filter's gyro-stabilized estimate of the
  * geomagnetic field vector (magnetic north), in Gauss, in the sensor frame. Equal to the magnetometer reading
  * without magnetic interference, but free of transient interference. */
 typedef struct {
     float stabilized_north[3]; /* (x, y, z) stabilized magnetic field estimate. [gauss] */
-} mip_sensor_cf_stabilized_north_t;
+} mipc_sensor_cf_stabilized_north_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_CF_STABILIZED_NORTH_MAX_SIZE 12
+#define MIPC_SENSOR_CF_STABILIZED_NORTH_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_cf_stabilized_north_encode(const mip_sensor_cf_stabilized_north_t *value,
-                                                   uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
-                                                   mip_sensor_cf_stabilized_north_t *out,
-                                                   mip_decode_error_t *err);
+mipc_status_t mipc_sensor_cf_stabilized_north_encode(const mipc_sensor_cf_stabilized_north_t *value,
+                                                     uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_cf_stabilized_north_decode(const uint8_t *data, size_t len,
+                                                     mipc_sensor_cf_stabilized_north_t *out,
+                                                     mipc_decode_error_t *err);
 
 /* ---- cf_stabilized_up (data): Complementary filter stabilized up vector */
-#define MIP_SENSOR_CF_STABILIZED_UP_DESCRIPTOR 0x11
+#define MIPC_SENSOR_CF_STABILIZED_UP_DESCRIPTOR 0x11
 
 /** Complementary filter stabilized up vector. The complementary filter's gyro-stabilized estimate of the
  * gravity vector (vertical), in g, in the sensor frame. Equal to the accelerometer reading when stationary,
  * but free of linear acceleration. */
 typedef struct {
     float stabilized_up[3]; /* (x, y, z) stabilized gravity estimate. [g] */
-} mip_sensor_cf_stabilized_up_t;
+} mipc_sensor_cf_stabilized_up_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_CF_STABILIZED_UP_MAX_SIZE 12
+#define MIPC_SENSOR_CF_STABILIZED_UP_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_cf_stabilized_up_encode(const mip_sensor_cf_stabilized_up_t *value, uint8_t *buf,
-                                                size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
-                                                mip_sensor_cf_stabilized_up_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_sensor_cf_stabilized_up_encode(const mipc_sensor_cf_stabilized_up_t *value, uint8_t *buf,
+                                                  size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_cf_stabilized_up_decode(const uint8_t *data, size_t len,
+                                                  mipc_sensor_cf_stabilized_up_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- gps_timestamp (data): GPS timestamp of sensor data (GX5-45 GPS correlation timestamp) */
-#define MIP_SENSOR_GPS_TIMESTAMP_DESCRIPTOR 0x12
+#define MIPC_SENSOR_GPS_TIMESTAMP_DESCRIPTOR 0x12
 
 /** GPS timestamp of sensor data (GX5-45 GPS correlation timestamp). GPS time of the sensor sample as time of
  * week and week number, with status flags. Without a PPS the device runs on its internal clock and the time
  * drifts; expect a jump when the PPS returns. The fractional part of the time of week is the time since the
  * last PPS. The CV7 recommends the shared GPS timestamp (0xD3) instead. */
 typedef struct {
-    double tow;                                   /* GPS time of week. [s] */
-    uint16_t week_number;                         /* GPS week number since 1980. [weeks] */
-    mip_sensor_gps_timestamp_flags_t valid_flags; /* Timestamp status flags (GX5-45: Timestamp Flags). */
-} mip_sensor_gps_timestamp_t;
+    double tow;                                    /* GPS time of week. [s] */
+    uint16_t week_number;                          /* GPS week number since 1980. [weeks] */
+    mipc_sensor_gps_timestamp_flags_t valid_flags; /* Timestamp status flags (GX5-45: Timestamp Flags). */
+} mipc_sensor_gps_timestamp_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_GPS_TIMESTAMP_MAX_SIZE 12
+#define MIPC_SENSOR_GPS_TIMESTAMP_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_gps_timestamp_encode(const mip_sensor_gps_timestamp_t *value, uint8_t *buf,
-                                             size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_gps_timestamp_decode(const uint8_t *data, size_t len, mip_sensor_gps_timestamp_t *out,
-                                             mip_decode_error_t *err);
+mipc_status_t mipc_sensor_gps_timestamp_encode(const mipc_sensor_gps_timestamp_t *value, uint8_t *buf,
+                                               size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_gps_timestamp_decode(const uint8_t *data, size_t len,
+                                               mipc_sensor_gps_timestamp_t *out, mipc_decode_error_t *err);
 
 /* ---- temperature_statistics (data): Temperature statistics */
-#define MIP_SENSOR_TEMPERATURE_STATISTICS_DESCRIPTOR 0x14
+#define MIPC_SENSOR_TEMPERATURE_STATISTICS_DESCRIPTOR 0x14
 
 /** Temperature statistics. Minimum, maximum and mean sensor temperature since the last power-on or reset,
  * from the MEMS sensors or combined with board temperature sensors. */
@@ -240,75 +242,77 @@ typedef struct {
     float min_temp;  /* Minimum temperature. [degC] */
     float max_temp;  /* Maximum temperature. [degC] */
     float mean_temp; /* Mean temperature. [degC] */
-} mip_sensor_temperature_statistics_t;
+} mipc_sensor_temperature_statistics_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_TEMPERATURE_STATISTICS_MAX_SIZE 12
+#define MIPC_SENSOR_TEMPERATURE_STATISTICS_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_temperature_statistics_encode(const mip_sensor_temperature_statistics_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
-                                                      mip_sensor_temperature_statistics_t *out,
-                                                      mip_decode_error_t *err);
+mipc_status_t mipc_sensor_temperature_statistics_encode(const mipc_sensor_temperature_statistics_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_temperature_statistics_decode(const uint8_t *data, size_t len,
+                                                        mipc_sensor_temperature_statistics_t *out,
+                                                        mipc_decode_error_t *err);
 
 /* ---- scaled_pressure (data): Scaled ambient pressure */
-#define MIP_SENSOR_SCALED_PRESSURE_DESCRIPTOR 0x17
+#define MIPC_SENSOR_SCALED_PRESSURE_DESCRIPTOR 0x17
 
 /** Scaled ambient pressure. Sensed ambient pressure, temperature compensated, in millibar. */
 typedef struct {
     float scaled_pressure; /* Ambient pressure. [mbar] */
-} mip_sensor_scaled_pressure_t;
+} mipc_sensor_scaled_pressure_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_SCALED_PRESSURE_MAX_SIZE 4
+#define MIPC_SENSOR_SCALED_PRESSURE_MAX_SIZE 4
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_scaled_pressure_encode(const mip_sensor_scaled_pressure_t *value, uint8_t *buf,
-                                               size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
-                                               mip_sensor_scaled_pressure_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_sensor_scaled_pressure_encode(const mipc_sensor_scaled_pressure_t *value, uint8_t *buf,
+                                                 size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_scaled_pressure_decode(const uint8_t *data, size_t len,
+                                                 mipc_sensor_scaled_pressure_t *out,
+                                                 mipc_decode_error_t *err);
 
 /* ---- overrange_status (data): Over-range status */
-#define MIP_SENSOR_OVERRANGE_STATUS_DESCRIPTOR 0x18
+#define MIPC_SENSOR_OVERRANGE_STATUS_DESCRIPTOR 0x18
 
 /** Over-range status. Which sensor axes are near or beyond their range, per axis (a smaller, faster form of
  * the over-range bits of the continuous BIT). */
 typedef struct {
-    mip_overrange_status_flags_t status; /* Over-range flags, one per axis. */
-} mip_sensor_overrange_status_t;
+    mipc_overrange_status_flags_t status; /* Over-range flags, one per axis. */
+} mipc_sensor_overrange_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_OVERRANGE_STATUS_MAX_SIZE 2
+#define MIPC_SENSOR_OVERRANGE_STATUS_MAX_SIZE 2
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_overrange_status_encode(const mip_sensor_overrange_status_t *value, uint8_t *buf,
-                                                size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_overrange_status_decode(const uint8_t *data, size_t len,
-                                                mip_sensor_overrange_status_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_sensor_overrange_status_encode(const mipc_sensor_overrange_status_t *value, uint8_t *buf,
+                                                  size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_overrange_status_decode(const uint8_t *data, size_t len,
+                                                  mipc_sensor_overrange_status_t *out,
+                                                  mipc_decode_error_t *err);
 
 /* ---- odometer_data (data): Odometer data */
-#define MIP_SENSOR_ODOMETER_DATA_DESCRIPTOR 0x40
+#define MIPC_SENSOR_ODOMETER_DATA_DESCRIPTOR 0x40
 
 /** Odometer data. Speed measured by the odometer (wheel encoder) input and its uncertainty. */
 typedef struct {
     float speed;       /* Average speed over the interval; can be negative with quadrature encoders. [m/s] */
     float uncertainty; /* Uncertainty of the speed. [m/s] */
-    mip_odometer_data_valid_flags_t valid_flags; /* Bit 0 set when the odometer is configured. */
-} mip_sensor_odometer_data_t;
+    mipc_odometer_data_valid_flags_t valid_flags; /* Bit 0 set when the odometer is configured. */
+} mipc_sensor_odometer_data_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SENSOR_ODOMETER_DATA_MAX_SIZE 10
+#define MIPC_SENSOR_ODOMETER_DATA_MAX_SIZE 10
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_sensor_odometer_data_encode(const mip_sensor_odometer_data_t *value, uint8_t *buf,
-                                             size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_sensor_odometer_data_decode(const uint8_t *data, size_t len, mip_sensor_odometer_data_t *out,
-                                             mip_decode_error_t *err);
+mipc_status_t mipc_sensor_odometer_data_encode(const mipc_sensor_odometer_data_t *value, uint8_t *buf,
+                                               size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_sensor_odometer_data_decode(const uint8_t *data, size_t len,
+                                               mipc_sensor_odometer_data_t *out, mipc_decode_error_t *err);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 /* System Data Set (descriptor set 0xA0): one struct per field layout, with its
  * encoder and decoder. Generated from the spec: do not edit. */
-#ifndef MIP_SETS_SYSTEM_DATA_H
-#define MIP_SETS_SYSTEM_DATA_H
+#ifndef MIPC_SETS_SYSTEM_DATA_H
+#define MIPC_SETS_SYSTEM_DATA_H
 
 #include "mipcodec/types.h"
 
@@ -9,68 +9,69 @@
 extern "C" {
 #endif
 
-#define MIP_SYSTEM_DATA_SET 0xA0
+#define MIPC_SYSTEM_DATA_SET 0xA0
 
 /* ---- built_in_test (data): Built-in test (streaming continuous BIT) */
-#define MIP_SYSTEM_DATA_BUILT_IN_TEST_DESCRIPTOR 0x01
+#define MIPC_SYSTEM_DATA_BUILT_IN_TEST_DESCRIPTOR 0x01
 
 /** Built-in test (streaming continuous BIT). The continuous built-in test result, streamed or polled (the
  * same bits as the Continuous BIT command 0x01,0x08). The bits latch until the next output of this message;
  * some may be set in normal situations (e.g. no GNSS fix yet). Large: stream at a low rate. */
 typedef struct {
-    mip_cv7_continuous_bit_t result; /* Continuous BIT bit map, 16 bytes, least-significant byte first. */
-} mip_system_data_built_in_test_t;
+    mipc_cv7_continuous_bit_t result; /* Continuous BIT bit map, 16 bytes, least-significant byte first. */
+} mipc_system_data_built_in_test_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SYSTEM_DATA_BUILT_IN_TEST_MAX_SIZE 16
+#define MIPC_SYSTEM_DATA_BUILT_IN_TEST_MAX_SIZE 16
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_system_data_built_in_test_encode(const mip_system_data_built_in_test_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_system_data_built_in_test_decode(const uint8_t *data, size_t len,
-                                                  mip_system_data_built_in_test_t *out,
-                                                  mip_decode_error_t *err);
+mipc_status_t mipc_system_data_built_in_test_encode(const mipc_system_data_built_in_test_t *value,
+                                                    uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_system_data_built_in_test_decode(const uint8_t *data, size_t len,
+                                                    mipc_system_data_built_in_test_t *out,
+                                                    mipc_decode_error_t *err);
 
 /* ---- time_sync_status (data): Time sync status */
-#define MIP_SYSTEM_DATA_TIME_SYNC_STATUS_DESCRIPTOR 0x02
+#define MIPC_SYSTEM_DATA_TIME_SYNC_STATUS_DESCRIPTOR 0x02
 
 /** Time sync status. Whether the device is synchronised to the PPS signal, and how long ago the last pulse
  * came. */
 typedef struct {
     bool time_sync;        /* True while PPS sync is valid; false if PPS is disabled or not detected. */
     uint8_t last_pps_rcvd; /* Seconds since the last PPS pulse, saturating at 255. [s] */
-} mip_system_data_time_sync_status_t;
+} mipc_system_data_time_sync_status_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SYSTEM_DATA_TIME_SYNC_STATUS_MAX_SIZE 2
+#define MIPC_SYSTEM_DATA_TIME_SYNC_STATUS_MAX_SIZE 2
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_system_data_time_sync_status_encode(const mip_system_data_time_sync_status_t *value,
-                                                     uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
-                                                     mip_system_data_time_sync_status_t *out,
-                                                     mip_decode_error_t *err);
+mipc_status_t mipc_system_data_time_sync_status_encode(const mipc_system_data_time_sync_status_t *value,
+                                                       uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_system_data_time_sync_status_decode(const uint8_t *data, size_t len,
+                                                       mipc_system_data_time_sync_status_t *out,
+                                                       mipc_decode_error_t *err);
 
 /* ---- gpio_state (data): GPIO state */
-#define MIP_SYSTEM_DATA_GPIO_STATE_DESCRIPTOR 0x03
+#define MIPC_SYSTEM_DATA_GPIO_STATE_DESCRIPTOR 0x03
 
 /** GPIO state. States of the user GPIO pins, sampled within one base period of the system data set. For slow
  * signals; pins must be configured with the GPIO feature (0x0C,0x41) to read validly. */
 typedef struct {
-    mip_gpio_pin_states_t states; /* One bit per pin; pins that do not exist read 0. */
-} mip_system_data_gpio_state_t;
+    mipc_gpio_pin_states_t states; /* One bit per pin; pins that do not exist read 0. */
+} mipc_system_data_gpio_state_t;
 
 /* Largest encoded data (after the field header). */
-#define MIP_SYSTEM_DATA_GPIO_STATE_MAX_SIZE 1
+#define MIPC_SYSTEM_DATA_GPIO_STATE_MAX_SIZE 1
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mip_status_t mip_system_data_gpio_state_encode(const mip_system_data_gpio_state_t *value, uint8_t *buf,
-                                               size_t cap, size_t *len_out);
-/** Decodes field data; on MIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mip_status_t mip_system_data_gpio_state_decode(const uint8_t *data, size_t len,
-                                               mip_system_data_gpio_state_t *out, mip_decode_error_t *err);
+mipc_status_t mipc_system_data_gpio_state_encode(const mipc_system_data_gpio_state_t *value, uint8_t *buf,
+                                                 size_t cap, size_t *len_out);
+/** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mipc_status_t mipc_system_data_gpio_state_decode(const uint8_t *data, size_t len,
+                                                 mipc_system_data_gpio_state_t *out,
+                                                 mipc_decode_error_t *err);
 
 #ifdef __cplusplus
 }

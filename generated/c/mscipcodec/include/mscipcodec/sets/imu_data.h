@@ -1,7 +1,7 @@
 /* IMU Data Message (descriptor set 0xA2): one struct per field layout, with its
  * encoder and decoder. Generated from the spec: do not edit. */
-#ifndef MSCIP_SETS_IMU_DATA_H
-#define MSCIP_SETS_IMU_DATA_H
+#ifndef MSCIPC_SETS_IMU_DATA_H
+#define MSCIPC_SETS_IMU_DATA_H
 
 #include "mscipcodec/types.h"
 
@@ -9,180 +9,181 @@
 extern "C" {
 #endif
 
-#define MSCIP_IMU_DATA_SET 0xA2
+#define MSCIPC_IMU_DATA_SET 0xA2
 
 /* ---- scaled_accel (data): Scaled acceleration vector */
-#define MSCIP_IMU_DATA_SCALED_ACCEL_DESCRIPTOR 0x81
+#define MSCIPC_IMU_DATA_SCALED_ACCEL_DESCRIPTOR 0x81
 
 /** Scaled acceleration vector. X, Y and Z acceleration in g. */
 typedef struct {
     float accel[3]; /* Acceleration [x, y, z]. [g] */
-} mscip_imu_data_scaled_accel_t;
+} mscipc_imu_data_scaled_accel_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_ACCEL_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_SCALED_ACCEL_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_accel_encode(const mscip_imu_data_scaled_accel_t *value, uint8_t *buf,
-                                                  size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
-                                                  mscip_imu_data_scaled_accel_t *out,
-                                                  mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_accel_encode(const mscipc_imu_data_scaled_accel_t *value, uint8_t *buf,
+                                                    size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_accel_decode(const uint8_t *data, size_t len,
+                                                    mscipc_imu_data_scaled_accel_t *out,
+                                                    mscipc_decode_error_t *err);
 
 /* ---- scaled_gyro (data): Scaled angular rate vector */
-#define MSCIP_IMU_DATA_SCALED_GYRO_DESCRIPTOR 0x82
+#define MSCIPC_IMU_DATA_SCALED_GYRO_DESCRIPTOR 0x82
 
 /** Scaled angular rate vector. X, Y and Z angular rate in degrees per second. */
 typedef struct {
     float gyro[3]; /* Angular rate [x, y, z]. [deg/s] */
-} mscip_imu_data_scaled_gyro_t;
+} mscipc_imu_data_scaled_gyro_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_GYRO_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_SCALED_GYRO_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_gyro_encode(const mscip_imu_data_scaled_gyro_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
-                                                 mscip_imu_data_scaled_gyro_t *out,
-                                                 mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_gyro_encode(const mscipc_imu_data_scaled_gyro_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_gyro_decode(const uint8_t *data, size_t len,
+                                                   mscipc_imu_data_scaled_gyro_t *out,
+                                                   mscipc_decode_error_t *err);
 
 /* ---- scaled_mag (data): Scaled magnetic field vector */
-#define MSCIP_IMU_DATA_SCALED_MAG_DESCRIPTOR 0x83
+#define MSCIPC_IMU_DATA_SCALED_MAG_DESCRIPTOR 0x83
 
 /** Scaled magnetic field vector. X, Y and Z magnetic field in gauss. */
 typedef struct {
     float mag[3]; /* Magnetic field [x, y, z]. [gauss] */
-} mscip_imu_data_scaled_mag_t;
+} mscipc_imu_data_scaled_mag_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_MAG_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_SCALED_MAG_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_mag_encode(const mscip_imu_data_scaled_mag_t *value, uint8_t *buf,
-                                                size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
-                                                mscip_imu_data_scaled_mag_t *out, mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_mag_encode(const mscipc_imu_data_scaled_mag_t *value, uint8_t *buf,
+                                                  size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_mag_decode(const uint8_t *data, size_t len,
+                                                  mscipc_imu_data_scaled_mag_t *out,
+                                                  mscipc_decode_error_t *err);
 
 /* ---- delta_theta (data): Scaled delta theta vector */
-#define MSCIP_IMU_DATA_DELTA_THETA_DESCRIPTOR 0x84
+#define MSCIPC_IMU_DATA_DELTA_THETA_DESCRIPTOR 0x84
 
 /** Scaled delta theta vector. X, Y and Z change in angle in radians. */
 typedef struct {
     float delta_theta[3]; /* Change in angle [x, y, z]. [rad] */
-} mscip_imu_data_delta_theta_t;
+} mscipc_imu_data_delta_theta_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_DELTA_THETA_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_DELTA_THETA_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_delta_theta_encode(const mscip_imu_data_delta_theta_t *value, uint8_t *buf,
-                                                 size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
-                                                 mscip_imu_data_delta_theta_t *out,
-                                                 mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_delta_theta_encode(const mscipc_imu_data_delta_theta_t *value, uint8_t *buf,
+                                                   size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_delta_theta_decode(const uint8_t *data, size_t len,
+                                                   mscipc_imu_data_delta_theta_t *out,
+                                                   mscipc_decode_error_t *err);
 
 /* ---- delta_velocity (data): Scaled delta velocity vector */
-#define MSCIP_IMU_DATA_DELTA_VELOCITY_DESCRIPTOR 0x85
+#define MSCIPC_IMU_DATA_DELTA_VELOCITY_DESCRIPTOR 0x85
 
 /** Scaled delta velocity vector. X, Y and Z change in velocity in metres per second. */
 typedef struct {
     float delta_velocity[3]; /* Change in velocity [x, y, z]. [m/s] */
-} mscip_imu_data_delta_velocity_t;
+} mscipc_imu_data_delta_velocity_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_DELTA_VELOCITY_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_DELTA_VELOCITY_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_delta_velocity_encode(const mscip_imu_data_delta_velocity_t *value,
-                                                    uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
-                                                    mscip_imu_data_delta_velocity_t *out,
-                                                    mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_delta_velocity_encode(const mscipc_imu_data_delta_velocity_t *value,
+                                                      uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_delta_velocity_decode(const uint8_t *data, size_t len,
+                                                      mscipc_imu_data_delta_velocity_t *out,
+                                                      mscipc_decode_error_t *err);
 
 /* ---- scaled_pressure (data): Scaled pressure */
-#define MSCIP_IMU_DATA_SCALED_PRESSURE_DESCRIPTOR 0x86
+#define MSCIPC_IMU_DATA_SCALED_PRESSURE_DESCRIPTOR 0x86
 
 /** Scaled pressure. Atmospheric pressure in millibar. */
 typedef struct {
     float pressure; /* Pressure. [mbar] */
-} mscip_imu_data_scaled_pressure_t;
+} mscipc_imu_data_scaled_pressure_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_PRESSURE_MAX_SIZE 4
+#define MSCIPC_IMU_DATA_SCALED_PRESSURE_MAX_SIZE 4
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_pressure_encode(const mscip_imu_data_scaled_pressure_t *value,
-                                                     uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
-                                                     mscip_imu_data_scaled_pressure_t *out,
-                                                     mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_pressure_encode(const mscipc_imu_data_scaled_pressure_t *value,
+                                                       uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_pressure_decode(const uint8_t *data, size_t len,
+                                                       mscipc_imu_data_scaled_pressure_t *out,
+                                                       mscipc_decode_error_t *err);
 
 /* ---- scaled_temperature (data): Scaled temperature */
-#define MSCIP_IMU_DATA_SCALED_TEMPERATURE_DESCRIPTOR 0x87
+#define MSCIPC_IMU_DATA_SCALED_TEMPERATURE_DESCRIPTOR 0x87
 
 /** Scaled temperature. IMU temperature in degrees Celsius. */
 typedef struct {
     float temperature; /* Temperature. [degC] */
-} mscip_imu_data_scaled_temperature_t;
+} mscipc_imu_data_scaled_temperature_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_TEMPERATURE_MAX_SIZE 4
+#define MSCIPC_IMU_DATA_SCALED_TEMPERATURE_MAX_SIZE 4
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_temperature_encode(const mscip_imu_data_scaled_temperature_t *value,
-                                                        uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
-                                                        mscip_imu_data_scaled_temperature_t *out,
-                                                        mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_temperature_encode(const mscipc_imu_data_scaled_temperature_t *value,
+                                                          uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_temperature_decode(const uint8_t *data, size_t len,
+                                                          mscipc_imu_data_scaled_temperature_t *out,
+                                                          mscipc_decode_error_t *err);
 
 /* ---- gps_correlated_time (data): GPS correlated time */
-#define MSCIP_IMU_DATA_GPS_CORRELATED_TIME_DESCRIPTOR 0x88
+#define MSCIPC_IMU_DATA_GPS_CORRELATED_TIME_DESCRIPTOR 0x88
 
 /** GPS correlated time. GPS time of the sample: seconds of the week (precision follows the output rate, 5 ms
  * at 200 Hz), week number, and the correlation flags. */
 typedef struct {
-    double seconds;               /* GPS seconds of the week. [s] */
-    uint16_t week;                /* GPS week number. [weeks] */
-    mscip_gps_time_flags_t flags; /* GPS correlated time flags. */
-} mscip_imu_data_gps_correlated_time_t;
+    double seconds;                /* GPS seconds of the week. [s] */
+    uint16_t week;                 /* GPS week number. [weeks] */
+    mscipc_gps_time_flags_t flags; /* GPS correlated time flags. */
+} mscipc_imu_data_gps_correlated_time_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_GPS_CORRELATED_TIME_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_GPS_CORRELATED_TIME_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_gps_correlated_time_encode(const mscip_imu_data_gps_correlated_time_t *value,
-                                                         uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
-                                                         mscip_imu_data_gps_correlated_time_t *out,
-                                                         mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_gps_correlated_time_encode(const mscipc_imu_data_gps_correlated_time_t *value,
+                                                           uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_gps_correlated_time_decode(const uint8_t *data, size_t len,
+                                                           mscipc_imu_data_gps_correlated_time_t *out,
+                                                           mscipc_decode_error_t *err);
 
 /* ---- scaled_aux_accel (data): Scaled aux accel vector */
-#define MSCIP_IMU_DATA_SCALED_AUX_ACCEL_DESCRIPTOR 0x89
+#define MSCIPC_IMU_DATA_SCALED_AUX_ACCEL_DESCRIPTOR 0x89
 
 /** Scaled aux accel vector. X, Y and Z acceleration of the auxiliary accelerometer in g. */
 typedef struct {
     float accel[3]; /* Auxiliary acceleration [x, y, z]. [g] */
-} mscip_imu_data_scaled_aux_accel_t;
+} mscipc_imu_data_scaled_aux_accel_t;
 
 /* Largest encoded data (after the field header). */
-#define MSCIP_IMU_DATA_SCALED_AUX_ACCEL_MAX_SIZE 12
+#define MSCIPC_IMU_DATA_SCALED_AUX_ACCEL_MAX_SIZE 12
 
 /** Encodes the field data (no field header) into buf; *len_out receives its size. */
-mscip_status_t mscip_imu_data_scaled_aux_accel_encode(const mscip_imu_data_scaled_aux_accel_t *value,
-                                                      uint8_t *buf, size_t cap, size_t *len_out);
-/** Decodes field data; on MSCIP_ERR_DECODE, *err (if not NULL) tells what is wrong. */
-mscip_status_t mscip_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
-                                                      mscip_imu_data_scaled_aux_accel_t *out,
-                                                      mscip_decode_error_t *err);
+mscipc_status_t mscipc_imu_data_scaled_aux_accel_encode(const mscipc_imu_data_scaled_aux_accel_t *value,
+                                                        uint8_t *buf, size_t cap, size_t *len_out);
+/** Decodes field data; on MSCIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
+mscipc_status_t mscipc_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
+                                                        mscipc_imu_data_scaled_aux_accel_t *out,
+                                                        mscipc_decode_error_t *err);
 
 #ifdef __cplusplus
 }

@@ -31,15 +31,15 @@ struct FrameConfig {
         translation{}; ///< Translation X, Y, Z of the frame in the vehicle frame. [m]
     std::optional<::mipcodec::types::AidingFrameRotation>
         rotation{}; ///< Rotation of the frame, in the given format.
-    friend bool operator==(const FrameConfig &a, const FrameConfig &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.frame_id == b.frame_id && a.format == b.format &&
-               a.tracking_enabled == b.tracking_enabled && a.translation == b.translation &&
-               a.rotation == b.rotation;
+    friend bool operator==(const FrameConfig &Lhs, const FrameConfig &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.frame_id == Rhs.frame_id &&
+               Lhs.format == Rhs.format && Lhs.tracking_enabled == Rhs.tracking_enabled &&
+               Lhs.translation == Rhs.translation && Lhs.rotation == Rhs.rotation;
     }
-    friend bool operator!=(const FrameConfig &a, const FrameConfig &b) {
-        return !(a == b);
+    friend bool operator!=(const FrameConfig &Lhs, const FrameConfig &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -56,15 +56,15 @@ struct FrameConfigResponse {
     bool tracking_enabled{};                       ///< Whether the Kalman filter tracks errors in this frame.
     std::array<float, 3> translation{};            ///< Translation X, Y, Z. [m]
     ::mipcodec::types::AidingFrameRotation rotation{}; ///< Rotation, in the given format.
-    friend bool operator==(const FrameConfigResponse &a, const FrameConfigResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.frame_id == b.frame_id && a.format == b.format &&
-               a.tracking_enabled == b.tracking_enabled && a.translation == b.translation &&
-               a.rotation == b.rotation;
+    friend bool operator==(const FrameConfigResponse &Lhs, const FrameConfigResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.frame_id == Rhs.frame_id && Lhs.format == Rhs.format &&
+               Lhs.tracking_enabled == Rhs.tracking_enabled && Lhs.translation == Rhs.translation &&
+               Lhs.rotation == Rhs.rotation;
     }
-    friend bool operator!=(const FrameConfigResponse &a, const FrameConfigResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const FrameConfigResponse &Lhs, const FrameConfigResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -78,13 +78,13 @@ struct EchoControl {
 
     ::mipcodec::types::FunctionSelector function{};          ///< Function selector.
     std::optional<::mipcodec::types::AidingEchoMode> mode{}; ///< How aiding commands are answered.
-    friend bool operator==(const EchoControl &a, const EchoControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode;
+    friend bool operator==(const EchoControl &Lhs, const EchoControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const EchoControl &a, const EchoControl &b) {
-        return !(a == b);
+    friend bool operator!=(const EchoControl &Lhs, const EchoControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -97,13 +97,13 @@ struct EchoControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::AidingEchoMode mode{}; ///< How aiding commands are answered.
-    friend bool operator==(const EchoControlResponse &a, const EchoControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode;
+    friend bool operator==(const EchoControlResponse &Lhs, const EchoControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const EchoControlResponse &a, const EchoControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const EchoControlResponse &Lhs, const EchoControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -120,14 +120,14 @@ struct EcefPosition {
     std::array<double, 3> position{};     ///< ECEF position X, Y, Z. [m]
     std::array<float, 3> uncertainty{};   ///< ECEF position 1-sigma uncertainty; not 0 for a valid axis. [m]
     ::mipcodec::types::AidingVectorValidFlags valid_flags{}; ///< Valid axes; invalid axes are ignored.
-    friend bool operator==(const EcefPosition &a, const EcefPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.position == b.position &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.position == Rhs.position &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefPosition &a, const EcefPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -147,15 +147,15 @@ struct LlhPosition {
     std::array<float, 3> uncertainty{};   ///< 1-sigma uncertainty in north, east, down (the table prints no
                                           ///< unit); not 0 for a valid component. [m]
     ::mipcodec::types::AidingLlhValidFlags valid_flags{}; ///< Valid components; invalid ones are ignored.
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.latitude == b.latitude &&
-               a.longitude == b.longitude && a.height == b.height && a.uncertainty == b.uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.latitude == Rhs.latitude &&
+               Lhs.longitude == Rhs.longitude && Lhs.height == Rhs.height &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -172,14 +172,14 @@ struct HeightAboveEllipsoid {
     float height{};                       ///< Height above the ellipsoid. [m]
     float uncertainty{};                  ///< 1-sigma uncertainty. [m]
     std::uint16_t valid_flags{}; ///< Valid flags; 0 means the measurement is ignored (no bits are defined).
-    friend bool operator==(const HeightAboveEllipsoid &a, const HeightAboveEllipsoid &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.height == b.height &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const HeightAboveEllipsoid &Lhs, const HeightAboveEllipsoid &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.height == Rhs.height &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const HeightAboveEllipsoid &a, const HeightAboveEllipsoid &b) {
-        return !(a == b);
+    friend bool operator!=(const HeightAboveEllipsoid &Lhs, const HeightAboveEllipsoid &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -196,14 +196,14 @@ struct EcefVelocity {
     std::array<float, 3> velocity{};      ///< ECEF velocity X, Y, Z. [m/s]
     std::array<float, 3> uncertainty{}; ///< ECEF velocity 1-sigma uncertainty; not 0 for a valid axis. [m/s]
     ::mipcodec::types::AidingVectorValidFlags valid_flags{}; ///< Valid axes; invalid axes are ignored.
-    friend bool operator==(const EcefVelocity &a, const EcefVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.velocity == b.velocity &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.velocity == Rhs.velocity &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefVelocity &a, const EcefVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -221,14 +221,14 @@ struct NedVelocity {
     std::array<float, 3> uncertainty{};   ///< NED velocity 1-sigma uncertainty; not 0 for a valid axis. [m/s]
     ::mipcodec::types::AidingVectorValidFlags
         valid_flags{}; ///< Valid components (x = north, y = east, z = down).
-    friend bool operator==(const NedVelocity &a, const NedVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.velocity == b.velocity &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.velocity == Rhs.velocity &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocity &a, const NedVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -245,14 +245,14 @@ struct BodyFrameVelocity {
     std::array<float, 3> velocity{};      ///< Velocity X, Y, Z in the aiding frame. [m/s]
     std::array<float, 3> uncertainty{}; ///< 1-sigma uncertainty; not 0 (or negative) for a valid axis. [m/s]
     ::mipcodec::types::AidingVectorValidFlags valid_flags{}; ///< Valid axes; invalid axes are ignored.
-    friend bool operator==(const BodyFrameVelocity &a, const BodyFrameVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.velocity == b.velocity &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const BodyFrameVelocity &Lhs, const BodyFrameVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.velocity == Rhs.velocity &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const BodyFrameVelocity &a, const BodyFrameVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const BodyFrameVelocity &Lhs, const BodyFrameVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -269,14 +269,14 @@ struct TrueHeading {
     float heading{};                      ///< True heading, within +/- pi. [rad]
     float uncertainty{};                  ///< 1-sigma uncertainty; not 0 unless the valid flags are 0. [rad]
     std::uint16_t valid_flags{}; ///< Valid flags; 0 means the measurement is ignored (no bits are defined).
-    friend bool operator==(const TrueHeading &a, const TrueHeading &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.heading == b.heading &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const TrueHeading &Lhs, const TrueHeading &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.heading == Rhs.heading &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const TrueHeading &a, const TrueHeading &b) {
-        return !(a == b);
+    friend bool operator!=(const TrueHeading &Lhs, const TrueHeading &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -293,14 +293,15 @@ struct MagneticField {
     std::array<float, 3> magnetic_field{}; ///< Magnetic field X, Y, Z. [gauss]
     std::array<float, 3> uncertainty{};    ///< 1-sigma uncertainty; not 0 for a valid axis. [gauss]
     ::mipcodec::types::AidingVectorValidFlags valid_flags{}; ///< Valid axes; invalid axes are ignored.
-    friend bool operator==(const MagneticField &a, const MagneticField &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.magnetic_field == b.magnetic_field &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagneticField &Lhs, const MagneticField &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id &&
+               Lhs.magnetic_field == Rhs.magnetic_field && Lhs.uncertainty == Rhs.uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagneticField &a, const MagneticField &b) {
-        return !(a == b);
+    friend bool operator!=(const MagneticField &Lhs, const MagneticField &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -317,14 +318,14 @@ struct Pressure {
     float pressure{};                     ///< Static pressure. [mbar]
     float uncertainty{};                  ///< 1-sigma uncertainty; not 0 unless the valid flags are 0. [mbar]
     std::uint16_t valid_flags{}; ///< Valid flags; 0 means the measurement is ignored (no bits are defined).
-    friend bool operator==(const Pressure &a, const Pressure &b) {
-        (void)a;
-        (void)b;
-        return true && a.time == b.time && a.frame_id == b.frame_id && a.pressure == b.pressure &&
-               a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const Pressure &Lhs, const Pressure &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time == Rhs.time && Lhs.frame_id == Rhs.frame_id && Lhs.pressure == Rhs.pressure &&
+               Lhs.uncertainty == Rhs.uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const Pressure &a, const Pressure &b) {
-        return !(a == b);
+    friend bool operator!=(const Pressure &Lhs, const Pressure &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

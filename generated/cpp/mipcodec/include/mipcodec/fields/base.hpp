@@ -21,13 +21,13 @@ struct Ping {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const Ping &a, const Ping &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const Ping &Lhs, const Ping &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const Ping &a, const Ping &b) {
-        return !(a == b);
+    friend bool operator!=(const Ping &Lhs, const Ping &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -39,13 +39,13 @@ struct SetToIdle {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const SetToIdle &a, const SetToIdle &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const SetToIdle &Lhs, const SetToIdle &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const SetToIdle &a, const SetToIdle &b) {
-        return !(a == b);
+    friend bool operator!=(const SetToIdle &Lhs, const SetToIdle &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -57,13 +57,13 @@ struct GetDeviceInfo {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceInfo &a, const GetDeviceInfo &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceInfo &Lhs, const GetDeviceInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceInfo &a, const GetDeviceInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceInfo &Lhs, const GetDeviceInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -76,13 +76,13 @@ struct DeviceInfo {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::DeviceInfo info{}; ///< Device information.
-    friend bool operator==(const DeviceInfo &a, const DeviceInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.info == b.info;
+    friend bool operator==(const DeviceInfo &Lhs, const DeviceInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.info == Rhs.info;
     }
-    friend bool operator!=(const DeviceInfo &a, const DeviceInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceInfo &Lhs, const DeviceInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -94,13 +94,13 @@ struct GetDeviceDescriptors {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceDescriptors &a, const GetDeviceDescriptors &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceDescriptors &Lhs, const GetDeviceDescriptors &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceDescriptors &a, const GetDeviceDescriptors &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceDescriptors &Lhs, const GetDeviceDescriptors &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -114,13 +114,13 @@ struct DeviceDescriptors {
 
     ::mipcodec::BoundedVector<std::uint16_t, 126>
         descriptors{}; ///< Supported descriptors, (set << 8) | descriptor.
-    friend bool operator==(const DeviceDescriptors &a, const DeviceDescriptors &b) {
-        (void)a;
-        (void)b;
-        return true && a.descriptors == b.descriptors;
+    friend bool operator==(const DeviceDescriptors &Lhs, const DeviceDescriptors &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const DeviceDescriptors &a, const DeviceDescriptors &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceDescriptors &Lhs, const DeviceDescriptors &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -132,13 +132,13 @@ struct BuiltInTest {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const BuiltInTest &a, const BuiltInTest &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const BuiltInTest &Lhs, const BuiltInTest &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const BuiltInTest &a, const BuiltInTest &b) {
-        return !(a == b);
+    friend bool operator!=(const BuiltInTest &Lhs, const BuiltInTest &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -152,13 +152,13 @@ struct BuiltInTestResultGx545 {
     static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
 
     ::mipcodec::types::Gx5BitFlags flags{}; ///< BIT error flags; 0 means all tests passed.
-    friend bool operator==(const BuiltInTestResultGx545 &a, const BuiltInTestResultGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.flags == b.flags;
+    friend bool operator==(const BuiltInTestResultGx545 &Lhs, const BuiltInTestResultGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const BuiltInTestResultGx545 &a, const BuiltInTestResultGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const BuiltInTestResultGx545 &Lhs, const BuiltInTestResultGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -172,13 +172,13 @@ struct BuiltInTestResultCv7Ins {
     static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
 
     ::mipcodec::types::Cv7BitFlags flags{}; ///< BIT result bitfield; 0 means all tests passed.
-    friend bool operator==(const BuiltInTestResultCv7Ins &a, const BuiltInTestResultCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.flags == b.flags;
+    friend bool operator==(const BuiltInTestResultCv7Ins &Lhs, const BuiltInTestResultCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const BuiltInTestResultCv7Ins &a, const BuiltInTestResultCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const BuiltInTestResultCv7Ins &Lhs, const BuiltInTestResultCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -190,13 +190,13 @@ struct Resume {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const Resume &a, const Resume &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const Resume &Lhs, const Resume &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const Resume &a, const Resume &b) {
-        return !(a == b);
+    friend bool operator!=(const Resume &Lhs, const Resume &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -208,13 +208,13 @@ struct GetExtendedDescriptors {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetExtendedDescriptors &a, const GetExtendedDescriptors &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetExtendedDescriptors &Lhs, const GetExtendedDescriptors &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetExtendedDescriptors &a, const GetExtendedDescriptors &b) {
-        return !(a == b);
+    friend bool operator!=(const GetExtendedDescriptors &Lhs, const GetExtendedDescriptors &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -228,13 +228,13 @@ struct ExtendedDescriptors {
 
     ::mipcodec::BoundedVector<std::uint16_t, 126>
         descriptors{}; ///< Supported extended descriptors, (set << 8) | descriptor.
-    friend bool operator==(const ExtendedDescriptors &a, const ExtendedDescriptors &b) {
-        (void)a;
-        (void)b;
-        return true && a.descriptors == b.descriptors;
+    friend bool operator==(const ExtendedDescriptors &Lhs, const ExtendedDescriptors &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const ExtendedDescriptors &a, const ExtendedDescriptors &b) {
-        return !(a == b);
+    friend bool operator!=(const ExtendedDescriptors &Lhs, const ExtendedDescriptors &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -246,13 +246,13 @@ struct ContinuousBit {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const ContinuousBit &a, const ContinuousBit &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const ContinuousBit &Lhs, const ContinuousBit &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const ContinuousBit &a, const ContinuousBit &b) {
-        return !(a == b);
+    friend bool operator!=(const ContinuousBit &Lhs, const ContinuousBit &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -266,13 +266,13 @@ struct ContinuousBitResult {
 
     ::mipcodec::types::Cv7ContinuousBit result{}; ///< Continuous BIT bit map (16 bytes, least-significant
                                                   ///< byte first), as in system data 0xA0,0x01.
-    friend bool operator==(const ContinuousBitResult &a, const ContinuousBitResult &b) {
-        (void)a;
-        (void)b;
-        return true && a.result == b.result;
+    friend bool operator==(const ContinuousBitResult &Lhs, const ContinuousBitResult &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.result == Rhs.result;
     }
-    friend bool operator!=(const ContinuousBitResult &a, const ContinuousBitResult &b) {
-        return !(a == b);
+    friend bool operator!=(const ContinuousBitResult &Lhs, const ContinuousBitResult &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -288,13 +288,13 @@ struct CommPortSpeed {
     std::uint8_t port{}; ///< Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB); 0 means all ports for save,
                          ///< load and default.
     std::optional<std::uint32_t> baud{}; ///< Port baud rate; must be a supported rate. [bit/s]
-    friend bool operator==(const CommPortSpeed &a, const CommPortSpeed &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.port == b.port && a.baud == b.baud;
+    friend bool operator==(const CommPortSpeed &Lhs, const CommPortSpeed &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.port == Rhs.port && Lhs.baud == Rhs.baud;
     }
-    friend bool operator!=(const CommPortSpeed &a, const CommPortSpeed &b) {
-        return !(a == b);
+    friend bool operator!=(const CommPortSpeed &Lhs, const CommPortSpeed &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -308,13 +308,13 @@ struct CommPortSpeedResponse {
 
     std::uint8_t port{};  ///< Port ID (0x01 main, 0x11-0x13 UART1-3, 0x21 USB).
     std::uint32_t baud{}; ///< Port baud rate. [bit/s]
-    friend bool operator==(const CommPortSpeedResponse &a, const CommPortSpeedResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.port == b.port && a.baud == b.baud;
+    friend bool operator==(const CommPortSpeedResponse &Lhs, const CommPortSpeedResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.port == Rhs.port && Lhs.baud == Rhs.baud;
     }
-    friend bool operator!=(const CommPortSpeedResponse &a, const CommPortSpeedResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const CommPortSpeedResponse &Lhs, const CommPortSpeedResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -330,13 +330,13 @@ struct GpsTimeUpdateGx545 {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     ::mipcodec::types::GpsTimeField field_id{};     ///< Which time value: 1 GPS week number, 2 GPS seconds.
     std::optional<std::uint32_t> value{};           ///< New week number or seconds, depending on field_id.
-    friend bool operator==(const GpsTimeUpdateGx545 &a, const GpsTimeUpdateGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.field_id == b.field_id && a.value == b.value;
+    friend bool operator==(const GpsTimeUpdateGx545 &Lhs, const GpsTimeUpdateGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.field_id == Rhs.field_id && Lhs.value == Rhs.value;
     }
-    friend bool operator!=(const GpsTimeUpdateGx545 &a, const GpsTimeUpdateGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTimeUpdateGx545 &Lhs, const GpsTimeUpdateGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -352,13 +352,13 @@ struct GpsTimeUpdateCv7Ins {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     ::mipcodec::types::GpsTimeField field_id{};     ///< Determines how to interpret value.
     std::uint32_t value{};                          ///< Week number or time of week, depending on field_id.
-    friend bool operator==(const GpsTimeUpdateCv7Ins &a, const GpsTimeUpdateCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.field_id == b.field_id && a.value == b.value;
+    friend bool operator==(const GpsTimeUpdateCv7Ins &Lhs, const GpsTimeUpdateCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.field_id == Rhs.field_id && Lhs.value == Rhs.value;
     }
-    friend bool operator!=(const GpsTimeUpdateCv7Ins &a, const GpsTimeUpdateCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTimeUpdateCv7Ins &Lhs, const GpsTimeUpdateCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -371,13 +371,13 @@ struct GpsWeek {
     static constexpr const char *kDevice = nullptr;
 
     std::uint32_t week{}; ///< Current GPS week value. [weeks]
-    friend bool operator==(const GpsWeek &a, const GpsWeek &b) {
-        (void)a;
-        (void)b;
-        return true && a.week == b.week;
+    friend bool operator==(const GpsWeek &Lhs, const GpsWeek &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.week == Rhs.week;
     }
-    friend bool operator!=(const GpsWeek &a, const GpsWeek &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsWeek &Lhs, const GpsWeek &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -390,13 +390,13 @@ struct GpsSeconds {
     static constexpr const char *kDevice = nullptr;
 
     std::uint32_t seconds{}; ///< Current GPS seconds value. [s]
-    friend bool operator==(const GpsSeconds &a, const GpsSeconds &b) {
-        (void)a;
-        (void)b;
-        return true && a.seconds == b.seconds;
+    friend bool operator==(const GpsSeconds &Lhs, const GpsSeconds &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.seconds == Rhs.seconds;
     }
-    friend bool operator!=(const GpsSeconds &a, const GpsSeconds &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsSeconds &Lhs, const GpsSeconds &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -408,13 +408,13 @@ struct DeviceReset {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const DeviceReset &a, const DeviceReset &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const DeviceReset &Lhs, const DeviceReset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const DeviceReset &a, const DeviceReset &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceReset &Lhs, const DeviceReset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -21,13 +21,13 @@ struct ResetFilter {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const ResetFilter &a, const ResetFilter &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const ResetFilter &Lhs, const ResetFilter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const ResetFilter &a, const ResetFilter &b) {
-        return !(a == b);
+    friend bool operator!=(const ResetFilter &Lhs, const ResetFilter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -42,13 +42,13 @@ struct SetInitialAttitude {
     float roll{};    ///< Roll angle, in [-pi, pi]. [rad]
     float pitch{};   ///< Pitch angle, in [-pi/2, pi/2]. [rad]
     float heading{}; ///< Heading (yaw) angle, in [-pi, pi]. [rad]
-    friend bool operator==(const SetInitialAttitude &a, const SetInitialAttitude &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.heading == b.heading;
+    friend bool operator==(const SetInitialAttitude &Lhs, const SetInitialAttitude &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.heading == Rhs.heading;
     }
-    friend bool operator!=(const SetInitialAttitude &a, const SetInitialAttitude &b) {
-        return !(a == b);
+    friend bool operator!=(const SetInitialAttitude &Lhs, const SetInitialAttitude &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -61,13 +61,13 @@ struct SetInitialHeading {
     static constexpr const char *kDevice = nullptr;
 
     float heading{}; ///< Initial heading, in [-pi, pi]. [rad]
-    friend bool operator==(const SetInitialHeading &a, const SetInitialHeading &b) {
-        (void)a;
-        (void)b;
-        return true && a.heading == b.heading;
+    friend bool operator==(const SetInitialHeading &Lhs, const SetInitialHeading &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.heading == Rhs.heading;
     }
-    friend bool operator!=(const SetInitialHeading &a, const SetInitialHeading &b) {
-        return !(a == b);
+    friend bool operator!=(const SetInitialHeading &Lhs, const SetInitialHeading &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -79,13 +79,13 @@ struct RunFilter {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const RunFilter &a, const RunFilter &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const RunFilter &Lhs, const RunFilter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const RunFilter &a, const RunFilter &b) {
-        return !(a == b);
+    friend bool operator!=(const RunFilter &Lhs, const RunFilter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -99,13 +99,13 @@ struct VehicleDynamicsMode {
 
     ::mipcodec::types::FunctionSelector function{};               ///< Function selector.
     std::optional<::mipcodec::types::VehicleDynamicsMode> mode{}; ///< New dynamics mode.
-    friend bool operator==(const VehicleDynamicsMode &a, const VehicleDynamicsMode &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode;
+    friend bool operator==(const VehicleDynamicsMode &Lhs, const VehicleDynamicsMode &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const VehicleDynamicsMode &a, const VehicleDynamicsMode &b) {
-        return !(a == b);
+    friend bool operator!=(const VehicleDynamicsMode &Lhs, const VehicleDynamicsMode &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -118,13 +118,13 @@ struct VehicleDynamicsModeResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::VehicleDynamicsMode mode{}; ///< Current dynamics mode.
-    friend bool operator==(const VehicleDynamicsModeResponse &a, const VehicleDynamicsModeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode;
+    friend bool operator==(const VehicleDynamicsModeResponse &Lhs, const VehicleDynamicsModeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const VehicleDynamicsModeResponse &a, const VehicleDynamicsModeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const VehicleDynamicsModeResponse &Lhs, const VehicleDynamicsModeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -140,13 +140,14 @@ struct SensorToVehicleTransform {
     std::optional<float> roll{};                    ///< Roll angle of the sensor-to-vehicle rotation. [rad]
     std::optional<float> pitch{};                   ///< Pitch angle of the sensor-to-vehicle rotation. [rad]
     std::optional<float> yaw{};                     ///< Yaw angle of the sensor-to-vehicle rotation. [rad]
-    friend bool operator==(const SensorToVehicleTransform &a, const SensorToVehicleTransform &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    friend bool operator==(const SensorToVehicleTransform &Lhs, const SensorToVehicleTransform &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch &&
+               Lhs.yaw == Rhs.yaw;
     }
-    friend bool operator!=(const SensorToVehicleTransform &a, const SensorToVehicleTransform &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleTransform &Lhs, const SensorToVehicleTransform &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -161,15 +162,15 @@ struct SensorToVehicleTransformResponse {
     float roll{};  ///< Roll angle. [rad]
     float pitch{}; ///< Pitch angle. [rad]
     float yaw{};   ///< Yaw angle. [rad]
-    friend bool operator==(const SensorToVehicleTransformResponse &a,
-                           const SensorToVehicleTransformResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    friend bool operator==(const SensorToVehicleTransformResponse &Lhs,
+                           const SensorToVehicleTransformResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.yaw == Rhs.yaw;
     }
-    friend bool operator!=(const SensorToVehicleTransformResponse &a,
-                           const SensorToVehicleTransformResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleTransformResponse &Lhs,
+                           const SensorToVehicleTransformResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -183,13 +184,13 @@ struct SensorToVehicleOffset {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> offset{};   ///< (x, y, z) offset in the sensor body frame. [m]
-    friend bool operator==(const SensorToVehicleOffset &a, const SensorToVehicleOffset &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.offset == b.offset;
+    friend bool operator==(const SensorToVehicleOffset &Lhs, const SensorToVehicleOffset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const SensorToVehicleOffset &a, const SensorToVehicleOffset &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleOffset &Lhs, const SensorToVehicleOffset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -202,13 +203,15 @@ struct SensorToVehicleOffsetResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> offset{}; ///< (x, y, z) offset in the sensor body frame. [m]
-    friend bool operator==(const SensorToVehicleOffsetResponse &a, const SensorToVehicleOffsetResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.offset == b.offset;
+    friend bool operator==(const SensorToVehicleOffsetResponse &Lhs,
+                           const SensorToVehicleOffsetResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const SensorToVehicleOffsetResponse &a, const SensorToVehicleOffsetResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleOffsetResponse &Lhs,
+                           const SensorToVehicleOffsetResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -223,13 +226,13 @@ struct AntennaOffset {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>>
         offset{}; ///< (x, y, z) antenna offset (sensor frame on GX5-45, vehicle frame on CV7). [m]
-    friend bool operator==(const AntennaOffset &a, const AntennaOffset &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.offset == b.offset;
+    friend bool operator==(const AntennaOffset &Lhs, const AntennaOffset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const AntennaOffset &a, const AntennaOffset &b) {
-        return !(a == b);
+    friend bool operator!=(const AntennaOffset &Lhs, const AntennaOffset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -242,13 +245,13 @@ struct AntennaOffsetResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> offset{}; ///< (x, y, z) antenna offset. [m]
-    friend bool operator==(const AntennaOffsetResponse &a, const AntennaOffsetResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.offset == b.offset;
+    friend bool operator==(const AntennaOffsetResponse &Lhs, const AntennaOffsetResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const AntennaOffsetResponse &a, const AntennaOffsetResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AntennaOffsetResponse &Lhs, const AntennaOffsetResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -262,13 +265,13 @@ struct EstimationControl {
 
     ::mipcodec::types::FunctionSelector function{};                   ///< Function selector.
     std::optional<::mipcodec::types::EstimationControlFlags> flags{}; ///< States to estimate.
-    friend bool operator==(const EstimationControl &a, const EstimationControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.flags == b.flags;
+    friend bool operator==(const EstimationControl &Lhs, const EstimationControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const EstimationControl &a, const EstimationControl &b) {
-        return !(a == b);
+    friend bool operator!=(const EstimationControl &Lhs, const EstimationControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -281,13 +284,13 @@ struct EstimationControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::EstimationControlFlags flags{}; ///< States being estimated.
-    friend bool operator==(const EstimationControlResponse &a, const EstimationControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.flags == b.flags;
+    friend bool operator==(const EstimationControlResponse &Lhs, const EstimationControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const EstimationControlResponse &a, const EstimationControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const EstimationControlResponse &Lhs, const EstimationControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -301,13 +304,13 @@ struct GnssSourceControl {
 
     ::mipcodec::types::FunctionSelector function{};              ///< Function selector.
     std::optional<::mipcodec::types::FilterGnssSource> source{}; ///< GNSS source.
-    friend bool operator==(const GnssSourceControl &a, const GnssSourceControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source;
+    friend bool operator==(const GnssSourceControl &Lhs, const GnssSourceControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const GnssSourceControl &a, const GnssSourceControl &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssSourceControl &Lhs, const GnssSourceControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -320,13 +323,13 @@ struct GnssSourceControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FilterGnssSource source{}; ///< GNSS source.
-    friend bool operator==(const GnssSourceControlResponse &a, const GnssSourceControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source;
+    friend bool operator==(const GnssSourceControlResponse &Lhs, const GnssSourceControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const GnssSourceControlResponse &a, const GnssSourceControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssSourceControlResponse &Lhs, const GnssSourceControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -346,16 +349,16 @@ struct ExternalGnssUpdate {
     std::array<float, 3> velocity{};             ///< (north, east, down) velocity. [m/s]
     std::array<float, 3> position_uncertainty{}; ///< (north, east, down) position 1-sigma uncertainty. [m]
     std::array<float, 3> velocity_uncertainty{}; ///< (north, east, down) velocity 1-sigma uncertainty. [m/s]
-    friend bool operator==(const ExternalGnssUpdate &a, const ExternalGnssUpdate &b) {
-        (void)a;
-        (void)b;
-        return true && a.gps_tow == b.gps_tow && a.gps_week == b.gps_week && a.latitude == b.latitude &&
-               a.longitude == b.longitude && a.height == b.height && a.velocity == b.velocity &&
-               a.position_uncertainty == b.position_uncertainty &&
-               a.velocity_uncertainty == b.velocity_uncertainty;
+    friend bool operator==(const ExternalGnssUpdate &Lhs, const ExternalGnssUpdate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gps_tow == Rhs.gps_tow && Lhs.gps_week == Rhs.gps_week &&
+               Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude && Lhs.height == Rhs.height &&
+               Lhs.velocity == Rhs.velocity && Lhs.position_uncertainty == Rhs.position_uncertainty &&
+               Lhs.velocity_uncertainty == Rhs.velocity_uncertainty;
     }
-    friend bool operator!=(const ExternalGnssUpdate &a, const ExternalGnssUpdate &b) {
-        return !(a == b);
+    friend bool operator!=(const ExternalGnssUpdate &Lhs, const ExternalGnssUpdate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -370,14 +373,14 @@ struct ExternalHeadingUpdate {
     float heading{};             ///< Heading angle, within +-pi. [rad]
     float heading_uncertainty{}; ///< Heading 1-sigma uncertainty; must be greater than 0. [rad]
     ::mipcodec::types::ExternalHeadingType type{}; ///< True or magnetic heading.
-    friend bool operator==(const ExternalHeadingUpdate &a, const ExternalHeadingUpdate &b) {
-        (void)a;
-        (void)b;
-        return true && a.heading == b.heading && a.heading_uncertainty == b.heading_uncertainty &&
-               a.type == b.type;
+    friend bool operator==(const ExternalHeadingUpdate &Lhs, const ExternalHeadingUpdate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.heading == Rhs.heading && Lhs.heading_uncertainty == Rhs.heading_uncertainty &&
+               Lhs.type == Rhs.type;
     }
-    friend bool operator!=(const ExternalHeadingUpdate &a, const ExternalHeadingUpdate &b) {
-        return !(a == b);
+    friend bool operator!=(const ExternalHeadingUpdate &Lhs, const ExternalHeadingUpdate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -392,13 +395,13 @@ struct HeadingUpdateControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<::mipcodec::types::HeadingUpdateSource>
         source{}; ///< Heading aiding source (the manual's "Enable Flag").
-    friend bool operator==(const HeadingUpdateControl &a, const HeadingUpdateControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source;
+    friend bool operator==(const HeadingUpdateControl &Lhs, const HeadingUpdateControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const HeadingUpdateControl &a, const HeadingUpdateControl &b) {
-        return !(a == b);
+    friend bool operator!=(const HeadingUpdateControl &Lhs, const HeadingUpdateControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -411,13 +414,13 @@ struct HeadingUpdateControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::HeadingUpdateSource source{}; ///< Heading aiding source.
-    friend bool operator==(const HeadingUpdateControlResponse &a, const HeadingUpdateControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source;
+    friend bool operator==(const HeadingUpdateControlResponse &Lhs, const HeadingUpdateControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const HeadingUpdateControlResponse &a, const HeadingUpdateControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const HeadingUpdateControlResponse &Lhs, const HeadingUpdateControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -431,13 +434,13 @@ struct AutoInitControl {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables auto-initialisation.
-    friend bool operator==(const AutoInitControl &a, const AutoInitControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable;
+    friend bool operator==(const AutoInitControl &Lhs, const AutoInitControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const AutoInitControl &a, const AutoInitControl &b) {
-        return !(a == b);
+    friend bool operator!=(const AutoInitControl &Lhs, const AutoInitControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -450,13 +453,13 @@ struct AutoInitControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
-    friend bool operator==(const AutoInitControlResponse &a, const AutoInitControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable;
+    friend bool operator==(const AutoInitControlResponse &Lhs, const AutoInitControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const AutoInitControlResponse &a, const AutoInitControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AutoInitControlResponse &Lhs, const AutoInitControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -470,13 +473,13 @@ struct AccelNoise {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> noise{};    ///< (x, y, z) accelerometer noise 1-sigma. [m/s^2]
-    friend bool operator==(const AccelNoise &a, const AccelNoise &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const AccelNoise &Lhs, const AccelNoise &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const AccelNoise &a, const AccelNoise &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelNoise &Lhs, const AccelNoise &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -489,13 +492,13 @@ struct AccelNoiseResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> noise{}; ///< (x, y, z) accelerometer noise 1-sigma. [m/s^2]
-    friend bool operator==(const AccelNoiseResponse &a, const AccelNoiseResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const AccelNoiseResponse &Lhs, const AccelNoiseResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const AccelNoiseResponse &a, const AccelNoiseResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelNoiseResponse &Lhs, const AccelNoiseResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -509,13 +512,13 @@ struct GyroNoise {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> noise{};    ///< (x, y, z) gyro noise 1-sigma. [rad/s]
-    friend bool operator==(const GyroNoise &a, const GyroNoise &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const GyroNoise &Lhs, const GyroNoise &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GyroNoise &a, const GyroNoise &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroNoise &Lhs, const GyroNoise &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -528,13 +531,13 @@ struct GyroNoiseResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> noise{}; ///< (x, y, z) gyro noise 1-sigma. [rad/s]
-    friend bool operator==(const GyroNoiseResponse &a, const GyroNoiseResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const GyroNoiseResponse &Lhs, const GyroNoiseResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GyroNoiseResponse &a, const GyroNoiseResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroNoiseResponse &Lhs, const GyroNoiseResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -549,13 +552,13 @@ struct AccelBiasModel {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> beta{};     ///< (x, y, z) accelerometer bias beta. [1/s]
     std::optional<std::array<float, 3>> noise{};    ///< (x, y, z) accelerometer bias noise 1-sigma. [m/s^2]
-    friend bool operator==(const AccelBiasModel &a, const AccelBiasModel &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.beta == b.beta && a.noise == b.noise;
+    friend bool operator==(const AccelBiasModel &Lhs, const AccelBiasModel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.beta == Rhs.beta && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const AccelBiasModel &a, const AccelBiasModel &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasModel &Lhs, const AccelBiasModel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -569,13 +572,13 @@ struct AccelBiasModelResponse {
 
     std::array<float, 3> beta{};  ///< (x, y, z) accelerometer bias beta. [1/s]
     std::array<float, 3> noise{}; ///< (x, y, z) accelerometer bias noise 1-sigma. [m/s^2]
-    friend bool operator==(const AccelBiasModelResponse &a, const AccelBiasModelResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.beta == b.beta && a.noise == b.noise;
+    friend bool operator==(const AccelBiasModelResponse &Lhs, const AccelBiasModelResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.beta == Rhs.beta && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const AccelBiasModelResponse &a, const AccelBiasModelResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasModelResponse &Lhs, const AccelBiasModelResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -590,13 +593,13 @@ struct GyroBiasModel {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> beta{};     ///< (x, y, z) gyro bias beta. [1/s]
     std::optional<std::array<float, 3>> noise{};    ///< (x, y, z) gyro bias noise 1-sigma. [rad/s]
-    friend bool operator==(const GyroBiasModel &a, const GyroBiasModel &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.beta == b.beta && a.noise == b.noise;
+    friend bool operator==(const GyroBiasModel &Lhs, const GyroBiasModel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.beta == Rhs.beta && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GyroBiasModel &a, const GyroBiasModel &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasModel &Lhs, const GyroBiasModel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -610,13 +613,13 @@ struct GyroBiasModelResponse {
 
     std::array<float, 3> beta{};  ///< (x, y, z) gyro bias beta. [1/s]
     std::array<float, 3> noise{}; ///< (x, y, z) gyro bias noise 1-sigma. [rad/s]
-    friend bool operator==(const GyroBiasModelResponse &a, const GyroBiasModelResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.beta == b.beta && a.noise == b.noise;
+    friend bool operator==(const GyroBiasModelResponse &Lhs, const GyroBiasModelResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.beta == Rhs.beta && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GyroBiasModelResponse &a, const GyroBiasModelResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasModelResponse &Lhs, const GyroBiasModelResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -631,13 +634,14 @@ struct ZuptControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables ZUPTs.
     std::optional<float> threshold{}; ///< Velocity magnitude at or below which a ZUPT is applied. [m/s]
-    friend bool operator==(const ZuptControl &a, const ZuptControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable && a.threshold == b.threshold;
+    friend bool operator==(const ZuptControl &Lhs, const ZuptControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable &&
+               Lhs.threshold == Rhs.threshold;
     }
-    friend bool operator!=(const ZuptControl &a, const ZuptControl &b) {
-        return !(a == b);
+    friend bool operator!=(const ZuptControl &Lhs, const ZuptControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -651,13 +655,13 @@ struct ZuptControlResponse {
 
     std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
     float threshold{};     ///< ZUPT velocity threshold. [m/s]
-    friend bool operator==(const ZuptControlResponse &a, const ZuptControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable && a.threshold == b.threshold;
+    friend bool operator==(const ZuptControlResponse &Lhs, const ZuptControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable && Lhs.threshold == Rhs.threshold;
     }
-    friend bool operator!=(const ZuptControlResponse &a, const ZuptControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ZuptControlResponse &Lhs, const ZuptControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -674,14 +678,17 @@ struct ExternalHeadingUpdateWithTime {
     float heading{};             ///< Heading angle from true north, within +-pi. [rad]
     float heading_uncertainty{}; ///< Heading 1-sigma uncertainty; must be greater than 0. [rad]
     ::mipcodec::types::ExternalHeadingType type{}; ///< True or magnetic heading.
-    friend bool operator==(const ExternalHeadingUpdateWithTime &a, const ExternalHeadingUpdateWithTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.gps_tow == b.gps_tow && a.gps_week == b.gps_week && a.heading == b.heading &&
-               a.heading_uncertainty == b.heading_uncertainty && a.type == b.type;
+    friend bool operator==(const ExternalHeadingUpdateWithTime &Lhs,
+                           const ExternalHeadingUpdateWithTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gps_tow == Rhs.gps_tow && Lhs.gps_week == Rhs.gps_week &&
+               Lhs.heading == Rhs.heading && Lhs.heading_uncertainty == Rhs.heading_uncertainty &&
+               Lhs.type == Rhs.type;
     }
-    friend bool operator!=(const ExternalHeadingUpdateWithTime &a, const ExternalHeadingUpdateWithTime &b) {
-        return !(a == b);
+    friend bool operator!=(const ExternalHeadingUpdateWithTime &Lhs,
+                           const ExternalHeadingUpdateWithTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -697,13 +704,14 @@ struct ZeroAngularRateUpdateControl {
     std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables the update.
     std::optional<float>
         threshold{}; ///< Angular rate magnitude at or below which the update is applied. [rad/s]
-    friend bool operator==(const ZeroAngularRateUpdateControl &a, const ZeroAngularRateUpdateControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable && a.threshold == b.threshold;
+    friend bool operator==(const ZeroAngularRateUpdateControl &Lhs, const ZeroAngularRateUpdateControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable &&
+               Lhs.threshold == Rhs.threshold;
     }
-    friend bool operator!=(const ZeroAngularRateUpdateControl &a, const ZeroAngularRateUpdateControl &b) {
-        return !(a == b);
+    friend bool operator!=(const ZeroAngularRateUpdateControl &Lhs, const ZeroAngularRateUpdateControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -717,15 +725,15 @@ struct ZeroAngularRateUpdateControlResponse {
 
     std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
     float threshold{};     ///< Angular rate threshold. [rad/s]
-    friend bool operator==(const ZeroAngularRateUpdateControlResponse &a,
-                           const ZeroAngularRateUpdateControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable && a.threshold == b.threshold;
+    friend bool operator==(const ZeroAngularRateUpdateControlResponse &Lhs,
+                           const ZeroAngularRateUpdateControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable && Lhs.threshold == Rhs.threshold;
     }
-    friend bool operator!=(const ZeroAngularRateUpdateControlResponse &a,
-                           const ZeroAngularRateUpdateControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ZeroAngularRateUpdateControlResponse &Lhs,
+                           const ZeroAngularRateUpdateControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -739,13 +747,13 @@ struct TareOrientation {
 
     ::mipcodec::types::FunctionSelector function{};    ///< Function selector.
     std::optional<::mipcodec::types::TareAxes> axes{}; ///< Axes to tare; 0 resets all axes.
-    friend bool operator==(const TareOrientation &a, const TareOrientation &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.axes == b.axes;
+    friend bool operator==(const TareOrientation &Lhs, const TareOrientation &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.axes == Rhs.axes;
     }
-    friend bool operator!=(const TareOrientation &a, const TareOrientation &b) {
-        return !(a == b);
+    friend bool operator!=(const TareOrientation &Lhs, const TareOrientation &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -757,13 +765,13 @@ struct CommandedZupt {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const CommandedZupt &a, const CommandedZupt &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const CommandedZupt &Lhs, const CommandedZupt &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const CommandedZupt &a, const CommandedZupt &b) {
-        return !(a == b);
+    friend bool operator!=(const CommandedZupt &Lhs, const CommandedZupt &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -775,13 +783,15 @@ struct CommandedZeroAngularRateUpdate {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const CommandedZeroAngularRateUpdate &a, const CommandedZeroAngularRateUpdate &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const CommandedZeroAngularRateUpdate &Lhs,
+                           const CommandedZeroAngularRateUpdate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const CommandedZeroAngularRateUpdate &a, const CommandedZeroAngularRateUpdate &b) {
-        return !(a == b);
+    friend bool operator!=(const CommandedZeroAngularRateUpdate &Lhs,
+                           const CommandedZeroAngularRateUpdate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -794,13 +804,13 @@ struct MagCaptureAutoCalibration {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    friend bool operator==(const MagCaptureAutoCalibration &a, const MagCaptureAutoCalibration &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function;
+    friend bool operator==(const MagCaptureAutoCalibration &Lhs, const MagCaptureAutoCalibration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function;
     }
-    friend bool operator!=(const MagCaptureAutoCalibration &a, const MagCaptureAutoCalibration &b) {
-        return !(a == b);
+    friend bool operator!=(const MagCaptureAutoCalibration &Lhs, const MagCaptureAutoCalibration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -814,13 +824,13 @@ struct GravityNoiseStdDev {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> noise{};    ///< Gravity noise 1-sigma (x, y, z). [g]
-    friend bool operator==(const GravityNoiseStdDev &a, const GravityNoiseStdDev &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const GravityNoiseStdDev &Lhs, const GravityNoiseStdDev &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GravityNoiseStdDev &a, const GravityNoiseStdDev &b) {
-        return !(a == b);
+    friend bool operator!=(const GravityNoiseStdDev &Lhs, const GravityNoiseStdDev &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -833,13 +843,13 @@ struct GravityNoiseStdDevResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> noise{}; ///< Gravity noise 1-sigma (x, y, z). [g]
-    friend bool operator==(const GravityNoiseStdDevResponse &a, const GravityNoiseStdDevResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const GravityNoiseStdDevResponse &Lhs, const GravityNoiseStdDevResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const GravityNoiseStdDevResponse &a, const GravityNoiseStdDevResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GravityNoiseStdDevResponse &Lhs, const GravityNoiseStdDevResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -853,13 +863,13 @@ struct PressureAltitudeNoiseStdDev {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<float> noise{};                   ///< Pressure altitude noise 1-sigma. [m]
-    friend bool operator==(const PressureAltitudeNoiseStdDev &a, const PressureAltitudeNoiseStdDev &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const PressureAltitudeNoiseStdDev &Lhs, const PressureAltitudeNoiseStdDev &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const PressureAltitudeNoiseStdDev &a, const PressureAltitudeNoiseStdDev &b) {
-        return !(a == b);
+    friend bool operator!=(const PressureAltitudeNoiseStdDev &Lhs, const PressureAltitudeNoiseStdDev &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -872,15 +882,15 @@ struct PressureAltitudeNoiseStdDevResponse {
     static constexpr const char *kDevice = nullptr;
 
     float noise{}; ///< Pressure altitude noise 1-sigma. [m]
-    friend bool operator==(const PressureAltitudeNoiseStdDevResponse &a,
-                           const PressureAltitudeNoiseStdDevResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const PressureAltitudeNoiseStdDevResponse &Lhs,
+                           const PressureAltitudeNoiseStdDevResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const PressureAltitudeNoiseStdDevResponse &a,
-                           const PressureAltitudeNoiseStdDevResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const PressureAltitudeNoiseStdDevResponse &Lhs,
+                           const PressureAltitudeNoiseStdDevResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -894,13 +904,13 @@ struct HardIronOffsetNoise {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> noise{};    ///< Hard iron offset noise 1-sigma (x, y, z). [gauss]
-    friend bool operator==(const HardIronOffsetNoise &a, const HardIronOffsetNoise &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const HardIronOffsetNoise &Lhs, const HardIronOffsetNoise &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const HardIronOffsetNoise &a, const HardIronOffsetNoise &b) {
-        return !(a == b);
+    friend bool operator!=(const HardIronOffsetNoise &Lhs, const HardIronOffsetNoise &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -913,13 +923,13 @@ struct HardIronOffsetNoiseResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> noise{}; ///< Hard iron offset noise 1-sigma (x, y, z). [gauss]
-    friend bool operator==(const HardIronOffsetNoiseResponse &a, const HardIronOffsetNoiseResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const HardIronOffsetNoiseResponse &Lhs, const HardIronOffsetNoiseResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const HardIronOffsetNoiseResponse &a, const HardIronOffsetNoiseResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const HardIronOffsetNoiseResponse &Lhs, const HardIronOffsetNoiseResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -933,13 +943,13 @@ struct SoftIronMatrixNoise {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 9>> noise{};    ///< Soft iron matrix noise 1-sigma, row-major m11..m33.
-    friend bool operator==(const SoftIronMatrixNoise &a, const SoftIronMatrixNoise &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const SoftIronMatrixNoise &Lhs, const SoftIronMatrixNoise &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const SoftIronMatrixNoise &a, const SoftIronMatrixNoise &b) {
-        return !(a == b);
+    friend bool operator!=(const SoftIronMatrixNoise &Lhs, const SoftIronMatrixNoise &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -952,13 +962,13 @@ struct SoftIronMatrixNoiseResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 9> noise{}; ///< Soft iron matrix noise 1-sigma, row-major m11..m33.
-    friend bool operator==(const SoftIronMatrixNoiseResponse &a, const SoftIronMatrixNoiseResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const SoftIronMatrixNoiseResponse &Lhs, const SoftIronMatrixNoiseResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const SoftIronMatrixNoiseResponse &a, const SoftIronMatrixNoiseResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SoftIronMatrixNoiseResponse &Lhs, const SoftIronMatrixNoiseResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -972,13 +982,13 @@ struct MagNoiseStdDev {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> noise{};    ///< Magnetometer noise 1-sigma (x, y, z). [gauss]
-    friend bool operator==(const MagNoiseStdDev &a, const MagNoiseStdDev &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.noise == b.noise;
+    friend bool operator==(const MagNoiseStdDev &Lhs, const MagNoiseStdDev &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const MagNoiseStdDev &a, const MagNoiseStdDev &b) {
-        return !(a == b);
+    friend bool operator!=(const MagNoiseStdDev &Lhs, const MagNoiseStdDev &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -991,13 +1001,13 @@ struct MagNoiseStdDevResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> noise{}; ///< Magnetometer noise 1-sigma (x, y, z). [gauss]
-    friend bool operator==(const MagNoiseStdDevResponse &a, const MagNoiseStdDevResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.noise == b.noise;
+    friend bool operator==(const MagNoiseStdDevResponse &Lhs, const MagNoiseStdDevResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.noise == Rhs.noise;
     }
-    friend bool operator!=(const MagNoiseStdDevResponse &a, const MagNoiseStdDevResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagNoiseStdDevResponse &Lhs, const MagNoiseStdDevResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1012,13 +1022,14 @@ struct DeclinationSource {
     ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
     std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Declination source.
     std::optional<float> declination{}; ///< Manual declination angle (used when source is manual). [rad]
-    friend bool operator==(const DeclinationSource &a, const DeclinationSource &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source && a.declination == b.declination;
+    friend bool operator==(const DeclinationSource &Lhs, const DeclinationSource &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source &&
+               Lhs.declination == Rhs.declination;
     }
-    friend bool operator!=(const DeclinationSource &a, const DeclinationSource &b) {
-        return !(a == b);
+    friend bool operator!=(const DeclinationSource &Lhs, const DeclinationSource &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1032,13 +1043,13 @@ struct DeclinationSourceResponse {
 
     ::mipcodec::types::MagneticParamSource source{}; ///< Declination source.
     float declination{};                             ///< Declination angle. [rad]
-    friend bool operator==(const DeclinationSourceResponse &a, const DeclinationSourceResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.declination == b.declination;
+    friend bool operator==(const DeclinationSourceResponse &Lhs, const DeclinationSourceResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source && Lhs.declination == Rhs.declination;
     }
-    friend bool operator!=(const DeclinationSourceResponse &a, const DeclinationSourceResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const DeclinationSourceResponse &Lhs, const DeclinationSourceResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1058,19 +1069,19 @@ struct GravityMagnitudeAdaptiveMeasurement {
     std::optional<float> low_limit_uncertainty{};  ///< Low limit uncertainty, 1-sigma. [m/s^2]
     std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [m/s^2]
     std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [m/s^2]
-    friend bool operator==(const GravityMagnitudeAdaptiveMeasurement &a,
-                           const GravityMagnitudeAdaptiveMeasurement &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
-               a.low_limit == b.low_limit && a.high_limit == b.high_limit &&
-               a.low_limit_uncertainty == b.low_limit_uncertainty &&
-               a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const GravityMagnitudeAdaptiveMeasurement &Lhs,
+                           const GravityMagnitudeAdaptiveMeasurement &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode &&
+               Lhs.frequency == Rhs.frequency && Lhs.low_limit == Rhs.low_limit &&
+               Lhs.high_limit == Rhs.high_limit && Lhs.low_limit_uncertainty == Rhs.low_limit_uncertainty &&
+               Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurement &a,
-                           const GravityMagnitudeAdaptiveMeasurement &b) {
-        return !(a == b);
+    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurement &Lhs,
+                           const GravityMagnitudeAdaptiveMeasurement &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1089,18 +1100,19 @@ struct GravityMagnitudeAdaptiveMeasurementResponse {
     float low_limit_uncertainty{};                     ///< Low limit uncertainty, 1-sigma. [m/s^2]
     float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [m/s^2]
     float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [m/s^2]
-    friend bool operator==(const GravityMagnitudeAdaptiveMeasurementResponse &a,
-                           const GravityMagnitudeAdaptiveMeasurementResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode && a.frequency == b.frequency && a.low_limit == b.low_limit &&
-               a.high_limit == b.high_limit && a.low_limit_uncertainty == b.low_limit_uncertainty &&
-               a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const GravityMagnitudeAdaptiveMeasurementResponse &Lhs,
+                           const GravityMagnitudeAdaptiveMeasurementResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode && Lhs.frequency == Rhs.frequency &&
+               Lhs.low_limit == Rhs.low_limit && Lhs.high_limit == Rhs.high_limit &&
+               Lhs.low_limit_uncertainty == Rhs.low_limit_uncertainty &&
+               Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurementResponse &a,
-                           const GravityMagnitudeAdaptiveMeasurementResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GravityMagnitudeAdaptiveMeasurementResponse &Lhs,
+                           const GravityMagnitudeAdaptiveMeasurementResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1120,19 +1132,19 @@ struct MagMagnitudeAdaptiveMeasurement {
     std::optional<float> low_limit_uncertainty{};  ///< Low limit uncertainty, 1-sigma. [gauss]
     std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [gauss]
     std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [gauss]
-    friend bool operator==(const MagMagnitudeAdaptiveMeasurement &a,
-                           const MagMagnitudeAdaptiveMeasurement &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
-               a.low_limit == b.low_limit && a.high_limit == b.high_limit &&
-               a.low_limit_uncertainty == b.low_limit_uncertainty &&
-               a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const MagMagnitudeAdaptiveMeasurement &Lhs,
+                           const MagMagnitudeAdaptiveMeasurement &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode &&
+               Lhs.frequency == Rhs.frequency && Lhs.low_limit == Rhs.low_limit &&
+               Lhs.high_limit == Rhs.high_limit && Lhs.low_limit_uncertainty == Rhs.low_limit_uncertainty &&
+               Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const MagMagnitudeAdaptiveMeasurement &a,
-                           const MagMagnitudeAdaptiveMeasurement &b) {
-        return !(a == b);
+    friend bool operator!=(const MagMagnitudeAdaptiveMeasurement &Lhs,
+                           const MagMagnitudeAdaptiveMeasurement &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1151,18 +1163,19 @@ struct MagMagnitudeAdaptiveMeasurementResponse {
     float low_limit_uncertainty{};                     ///< Low limit uncertainty, 1-sigma. [gauss]
     float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [gauss]
     float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [gauss]
-    friend bool operator==(const MagMagnitudeAdaptiveMeasurementResponse &a,
-                           const MagMagnitudeAdaptiveMeasurementResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode && a.frequency == b.frequency && a.low_limit == b.low_limit &&
-               a.high_limit == b.high_limit && a.low_limit_uncertainty == b.low_limit_uncertainty &&
-               a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const MagMagnitudeAdaptiveMeasurementResponse &Lhs,
+                           const MagMagnitudeAdaptiveMeasurementResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode && Lhs.frequency == Rhs.frequency &&
+               Lhs.low_limit == Rhs.low_limit && Lhs.high_limit == Rhs.high_limit &&
+               Lhs.low_limit_uncertainty == Rhs.low_limit_uncertainty &&
+               Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const MagMagnitudeAdaptiveMeasurementResponse &a,
-                           const MagMagnitudeAdaptiveMeasurementResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagMagnitudeAdaptiveMeasurementResponse &Lhs,
+                           const MagMagnitudeAdaptiveMeasurementResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1180,15 +1193,18 @@ struct MagDipAngleAdaptiveMeasurement {
     std::optional<float> high_limit{};             ///< High limit of the dip angle error. [rad]
     std::optional<float> high_limit_uncertainty{}; ///< High limit uncertainty, 1-sigma. [rad]
     std::optional<float> minimum_uncertainty{};    ///< Minimum uncertainty, 1-sigma. [rad]
-    friend bool operator==(const MagDipAngleAdaptiveMeasurement &a, const MagDipAngleAdaptiveMeasurement &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode && a.frequency == b.frequency &&
-               a.high_limit == b.high_limit && a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const MagDipAngleAdaptiveMeasurement &Lhs,
+                           const MagDipAngleAdaptiveMeasurement &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode &&
+               Lhs.frequency == Rhs.frequency && Lhs.high_limit == Rhs.high_limit &&
+               Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const MagDipAngleAdaptiveMeasurement &a, const MagDipAngleAdaptiveMeasurement &b) {
-        return !(a == b);
+    friend bool operator!=(const MagDipAngleAdaptiveMeasurement &Lhs,
+                           const MagDipAngleAdaptiveMeasurement &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1205,17 +1221,17 @@ struct MagDipAngleAdaptiveMeasurementResponse {
     float high_limit{};                                ///< High limit of the dip angle error. [rad]
     float high_limit_uncertainty{};                    ///< High limit uncertainty, 1-sigma. [rad]
     float minimum_uncertainty{};                       ///< Minimum uncertainty, 1-sigma. [rad]
-    friend bool operator==(const MagDipAngleAdaptiveMeasurementResponse &a,
-                           const MagDipAngleAdaptiveMeasurementResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode && a.frequency == b.frequency && a.high_limit == b.high_limit &&
-               a.high_limit_uncertainty == b.high_limit_uncertainty &&
-               a.minimum_uncertainty == b.minimum_uncertainty;
+    friend bool operator==(const MagDipAngleAdaptiveMeasurementResponse &Lhs,
+                           const MagDipAngleAdaptiveMeasurementResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode && Lhs.frequency == Rhs.frequency &&
+               Lhs.high_limit == Rhs.high_limit && Lhs.high_limit_uncertainty == Rhs.high_limit_uncertainty &&
+               Lhs.minimum_uncertainty == Rhs.minimum_uncertainty;
     }
-    friend bool operator!=(const MagDipAngleAdaptiveMeasurementResponse &a,
-                           const MagDipAngleAdaptiveMeasurementResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagDipAngleAdaptiveMeasurementResponse &Lhs,
+                           const MagDipAngleAdaptiveMeasurementResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1230,13 +1246,13 @@ struct AltitudeAidingControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<::mipcodec::types::AltitudeAidingSource>
         source{}; ///< Altitude aiding input (0 disabled, 1 pressure).
-    friend bool operator==(const AltitudeAidingControl &a, const AltitudeAidingControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source;
+    friend bool operator==(const AltitudeAidingControl &Lhs, const AltitudeAidingControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const AltitudeAidingControl &a, const AltitudeAidingControl &b) {
-        return !(a == b);
+    friend bool operator!=(const AltitudeAidingControl &Lhs, const AltitudeAidingControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1249,13 +1265,15 @@ struct AltitudeAidingControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::AltitudeAidingSource source{}; ///< Altitude aiding input.
-    friend bool operator==(const AltitudeAidingControlResponse &a, const AltitudeAidingControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source;
+    friend bool operator==(const AltitudeAidingControlResponse &Lhs,
+                           const AltitudeAidingControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const AltitudeAidingControlResponse &a, const AltitudeAidingControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AltitudeAidingControlResponse &Lhs,
+                           const AltitudeAidingControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1270,13 +1288,13 @@ struct PitchRollAidingControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<::mipcodec::types::PitchRollAidingSource>
         source{}; ///< Pitch/roll aiding input (0 disabled, 1 gravity vector).
-    friend bool operator==(const PitchRollAidingControl &a, const PitchRollAidingControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source;
+    friend bool operator==(const PitchRollAidingControl &Lhs, const PitchRollAidingControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const PitchRollAidingControl &a, const PitchRollAidingControl &b) {
-        return !(a == b);
+    friend bool operator!=(const PitchRollAidingControl &Lhs, const PitchRollAidingControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1289,13 +1307,15 @@ struct PitchRollAidingControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::PitchRollAidingSource source{}; ///< Pitch/roll aiding input.
-    friend bool operator==(const PitchRollAidingControlResponse &a, const PitchRollAidingControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source;
+    friend bool operator==(const PitchRollAidingControlResponse &Lhs,
+                           const PitchRollAidingControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const PitchRollAidingControlResponse &a, const PitchRollAidingControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const PitchRollAidingControlResponse &Lhs,
+                           const PitchRollAidingControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1310,13 +1330,14 @@ struct InclinationSource {
     ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
     std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Inclination source.
     std::optional<float> inclination{}; ///< Manual inclination angle (used when source is manual). [rad]
-    friend bool operator==(const InclinationSource &a, const InclinationSource &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source && a.inclination == b.inclination;
+    friend bool operator==(const InclinationSource &Lhs, const InclinationSource &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source &&
+               Lhs.inclination == Rhs.inclination;
     }
-    friend bool operator!=(const InclinationSource &a, const InclinationSource &b) {
-        return !(a == b);
+    friend bool operator!=(const InclinationSource &Lhs, const InclinationSource &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1330,13 +1351,13 @@ struct InclinationSourceResponse {
 
     ::mipcodec::types::MagneticParamSource source{}; ///< Inclination source.
     float inclination{};                             ///< Inclination angle. [rad]
-    friend bool operator==(const InclinationSourceResponse &a, const InclinationSourceResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.inclination == b.inclination;
+    friend bool operator==(const InclinationSourceResponse &Lhs, const InclinationSourceResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source && Lhs.inclination == Rhs.inclination;
     }
-    friend bool operator!=(const InclinationSourceResponse &a, const InclinationSourceResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const InclinationSourceResponse &Lhs, const InclinationSourceResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1351,13 +1372,14 @@ struct MagneticFieldMagnitudeSource {
     ::mipcodec::types::FunctionSelector function{};                 ///< Function selector.
     std::optional<::mipcodec::types::MagneticParamSource> source{}; ///< Magnitude source.
     std::optional<float> magnitude{}; ///< Manual field magnitude (used when source is manual). [gauss]
-    friend bool operator==(const MagneticFieldMagnitudeSource &a, const MagneticFieldMagnitudeSource &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source && a.magnitude == b.magnitude;
+    friend bool operator==(const MagneticFieldMagnitudeSource &Lhs, const MagneticFieldMagnitudeSource &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source &&
+               Lhs.magnitude == Rhs.magnitude;
     }
-    friend bool operator!=(const MagneticFieldMagnitudeSource &a, const MagneticFieldMagnitudeSource &b) {
-        return !(a == b);
+    friend bool operator!=(const MagneticFieldMagnitudeSource &Lhs, const MagneticFieldMagnitudeSource &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1371,15 +1393,15 @@ struct MagneticFieldMagnitudeSourceResponse {
 
     ::mipcodec::types::MagneticParamSource source{}; ///< Magnitude source.
     float magnitude{};                               ///< Field magnitude. [gauss]
-    friend bool operator==(const MagneticFieldMagnitudeSourceResponse &a,
-                           const MagneticFieldMagnitudeSourceResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.magnitude == b.magnitude;
+    friend bool operator==(const MagneticFieldMagnitudeSourceResponse &Lhs,
+                           const MagneticFieldMagnitudeSourceResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source && Lhs.magnitude == Rhs.magnitude;
     }
-    friend bool operator!=(const MagneticFieldMagnitudeSourceResponse &a,
-                           const MagneticFieldMagnitudeSourceResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagneticFieldMagnitudeSourceResponse &Lhs,
+                           const MagneticFieldMagnitudeSourceResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1394,13 +1416,13 @@ struct AidingMeasurementControl {
     ::mipcodec::types::FunctionSelector function{};      ///< Function selector.
     ::mipcodec::types::AidingMeasurementSource source{}; ///< Aiding measurement source.
     std::optional<bool> enable{};                        ///< Whether the source is used.
-    friend bool operator==(const AidingMeasurementControl &a, const AidingMeasurementControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source && a.enable == b.enable;
+    friend bool operator==(const AidingMeasurementControl &Lhs, const AidingMeasurementControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const AidingMeasurementControl &a, const AidingMeasurementControl &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingMeasurementControl &Lhs, const AidingMeasurementControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1414,15 +1436,15 @@ struct AidingMeasurementControlResponse {
 
     ::mipcodec::types::AidingMeasurementSource source{}; ///< Aiding measurement source.
     bool enable{};                                       ///< Whether the source is used.
-    friend bool operator==(const AidingMeasurementControlResponse &a,
-                           const AidingMeasurementControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.enable == b.enable;
+    friend bool operator==(const AidingMeasurementControlResponse &Lhs,
+                           const AidingMeasurementControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const AidingMeasurementControlResponse &a,
-                           const AidingMeasurementControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingMeasurementControlResponse &Lhs,
+                           const AidingMeasurementControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1450,19 +1472,19 @@ struct InitializationConfiguration {
                                                             ///< chosen by reference_frame_selector. [m/s]
     std::optional<::mipcodec::types::FilterReferenceFrame>
         reference_frame_selector{}; ///< Frame of the initial position and velocity.
-    friend bool operator==(const InitializationConfiguration &a, const InitializationConfiguration &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.wait_for_run_command == b.wait_for_run_command &&
-               a.initial_cond_src == b.initial_cond_src &&
-               a.auto_heading_alignment_selector == b.auto_heading_alignment_selector &&
-               a.initial_heading == b.initial_heading && a.initial_pitch == b.initial_pitch &&
-               a.initial_roll == b.initial_roll && a.initial_position == b.initial_position &&
-               a.initial_velocity == b.initial_velocity &&
-               a.reference_frame_selector == b.reference_frame_selector;
+    friend bool operator==(const InitializationConfiguration &Lhs, const InitializationConfiguration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.wait_for_run_command == Rhs.wait_for_run_command &&
+               Lhs.initial_cond_src == Rhs.initial_cond_src &&
+               Lhs.auto_heading_alignment_selector == Rhs.auto_heading_alignment_selector &&
+               Lhs.initial_heading == Rhs.initial_heading && Lhs.initial_pitch == Rhs.initial_pitch &&
+               Lhs.initial_roll == Rhs.initial_roll && Lhs.initial_position == Rhs.initial_position &&
+               Lhs.initial_velocity == Rhs.initial_velocity &&
+               Lhs.reference_frame_selector == Rhs.reference_frame_selector;
     }
-    friend bool operator!=(const InitializationConfiguration &a, const InitializationConfiguration &b) {
-        return !(a == b);
+    friend bool operator!=(const InitializationConfiguration &Lhs, const InitializationConfiguration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1485,21 +1507,21 @@ struct InitializationConfigurationResponse {
     std::array<float, 3> initial_velocity{}; ///< User-specified initial velocity. [m/s]
     ::mipcodec::types::FilterReferenceFrame
         reference_frame_selector{}; ///< Frame of the initial position and velocity.
-    friend bool operator==(const InitializationConfigurationResponse &a,
-                           const InitializationConfigurationResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.wait_for_run_command == b.wait_for_run_command &&
-               a.initial_cond_src == b.initial_cond_src &&
-               a.auto_heading_alignment_selector == b.auto_heading_alignment_selector &&
-               a.initial_heading == b.initial_heading && a.initial_pitch == b.initial_pitch &&
-               a.initial_roll == b.initial_roll && a.initial_position == b.initial_position &&
-               a.initial_velocity == b.initial_velocity &&
-               a.reference_frame_selector == b.reference_frame_selector;
+    friend bool operator==(const InitializationConfigurationResponse &Lhs,
+                           const InitializationConfigurationResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.wait_for_run_command == Rhs.wait_for_run_command &&
+               Lhs.initial_cond_src == Rhs.initial_cond_src &&
+               Lhs.auto_heading_alignment_selector == Rhs.auto_heading_alignment_selector &&
+               Lhs.initial_heading == Rhs.initial_heading && Lhs.initial_pitch == Rhs.initial_pitch &&
+               Lhs.initial_roll == Rhs.initial_roll && Lhs.initial_position == Rhs.initial_position &&
+               Lhs.initial_velocity == Rhs.initial_velocity &&
+               Lhs.reference_frame_selector == Rhs.reference_frame_selector;
     }
-    friend bool operator!=(const InitializationConfigurationResponse &a,
-                           const InitializationConfigurationResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const InitializationConfigurationResponse &Lhs,
+                           const InitializationConfigurationResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1514,13 +1536,14 @@ struct AdaptiveFilterControl {
     ::mipcodec::types::FunctionSelector function{};                ///< Function selector.
     std::optional<::mipcodec::types::AdaptiveFilterLevel> level{}; ///< Auto-adaptive operating level.
     std::optional<std::uint16_t> time_limit{}; ///< Longest measurement rejection before recovery mode. [ms]
-    friend bool operator==(const AdaptiveFilterControl &a, const AdaptiveFilterControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.level == b.level && a.time_limit == b.time_limit;
+    friend bool operator==(const AdaptiveFilterControl &Lhs, const AdaptiveFilterControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.level == Rhs.level &&
+               Lhs.time_limit == Rhs.time_limit;
     }
-    friend bool operator!=(const AdaptiveFilterControl &a, const AdaptiveFilterControl &b) {
-        return !(a == b);
+    friend bool operator!=(const AdaptiveFilterControl &Lhs, const AdaptiveFilterControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1534,13 +1557,15 @@ struct AdaptiveFilterControlResponse {
 
     ::mipcodec::types::AdaptiveFilterLevel level{}; ///< Auto-adaptive operating level.
     std::uint16_t time_limit{}; ///< Longest measurement rejection before recovery mode. [ms]
-    friend bool operator==(const AdaptiveFilterControlResponse &a, const AdaptiveFilterControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.level == b.level && a.time_limit == b.time_limit;
+    friend bool operator==(const AdaptiveFilterControlResponse &Lhs,
+                           const AdaptiveFilterControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.level == Rhs.level && Lhs.time_limit == Rhs.time_limit;
     }
-    friend bool operator!=(const AdaptiveFilterControlResponse &a, const AdaptiveFilterControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AdaptiveFilterControlResponse &Lhs,
+                           const AdaptiveFilterControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1555,14 +1580,14 @@ struct MultiAntennaOffset {
     ::mipcodec::types::FunctionSelector function{};       ///< Function selector.
     std::uint8_t receiver_id{};                           ///< Receiver: 1, 2, ...
     std::optional<std::array<float, 3>> antenna_offset{}; ///< Antenna lever arm in the vehicle frame. [m]
-    friend bool operator==(const MultiAntennaOffset &a, const MultiAntennaOffset &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.receiver_id == b.receiver_id &&
-               a.antenna_offset == b.antenna_offset;
+    friend bool operator==(const MultiAntennaOffset &Lhs, const MultiAntennaOffset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.receiver_id == Rhs.receiver_id &&
+               Lhs.antenna_offset == Rhs.antenna_offset;
     }
-    friend bool operator!=(const MultiAntennaOffset &a, const MultiAntennaOffset &b) {
-        return !(a == b);
+    friend bool operator!=(const MultiAntennaOffset &Lhs, const MultiAntennaOffset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1576,13 +1601,13 @@ struct MultiAntennaOffsetResponse {
 
     std::uint8_t receiver_id{};            ///< Receiver: 1, 2, ...
     std::array<float, 3> antenna_offset{}; ///< Antenna lever arm in the vehicle frame. [m]
-    friend bool operator==(const MultiAntennaOffsetResponse &a, const MultiAntennaOffsetResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_id == b.receiver_id && a.antenna_offset == b.antenna_offset;
+    friend bool operator==(const MultiAntennaOffsetResponse &Lhs, const MultiAntennaOffsetResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_id == Rhs.receiver_id && Lhs.antenna_offset == Rhs.antenna_offset;
     }
-    friend bool operator!=(const MultiAntennaOffsetResponse &a, const MultiAntennaOffsetResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MultiAntennaOffsetResponse &Lhs, const MultiAntennaOffsetResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1601,15 +1626,17 @@ struct RelativePositionConfiguration {
         reference_frame_selector{}; ///< Frame of the reference coordinates.
     std::optional<std::array<double, 3>>
         reference_coordinates{}; ///< Reference location (ECEF m, or LLH deg/deg/m).
-    friend bool operator==(const RelativePositionConfiguration &a, const RelativePositionConfiguration &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source &&
-               a.reference_frame_selector == b.reference_frame_selector &&
-               a.reference_coordinates == b.reference_coordinates;
+    friend bool operator==(const RelativePositionConfiguration &Lhs,
+                           const RelativePositionConfiguration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source &&
+               Lhs.reference_frame_selector == Rhs.reference_frame_selector &&
+               Lhs.reference_coordinates == Rhs.reference_coordinates;
     }
-    friend bool operator!=(const RelativePositionConfiguration &a, const RelativePositionConfiguration &b) {
-        return !(a == b);
+    friend bool operator!=(const RelativePositionConfiguration &Lhs,
+                           const RelativePositionConfiguration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1625,16 +1652,17 @@ struct RelativePositionConfigurationResponse {
     ::mipcodec::types::FilterReferenceFrame
         reference_frame_selector{};                ///< Frame of the reference coordinates.
     std::array<double, 3> reference_coordinates{}; ///< Reference location (ECEF m, or LLH deg/deg/m).
-    friend bool operator==(const RelativePositionConfigurationResponse &a,
-                           const RelativePositionConfigurationResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.reference_frame_selector == b.reference_frame_selector &&
-               a.reference_coordinates == b.reference_coordinates;
+    friend bool operator==(const RelativePositionConfigurationResponse &Lhs,
+                           const RelativePositionConfigurationResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source &&
+               Lhs.reference_frame_selector == Rhs.reference_frame_selector &&
+               Lhs.reference_coordinates == Rhs.reference_coordinates;
     }
-    friend bool operator!=(const RelativePositionConfigurationResponse &a,
-                           const RelativePositionConfigurationResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const RelativePositionConfigurationResponse &Lhs,
+                           const RelativePositionConfigurationResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1650,14 +1678,14 @@ struct ReferencePointLeverArm {
     std::optional<::mipcodec::types::ReferencePointSelector>
         ref_point_sel{}; ///< Reference point; reserved, must be 1 (vehicle).
     std::optional<std::array<float, 3>> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
-    friend bool operator==(const ReferencePointLeverArm &a, const ReferencePointLeverArm &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.ref_point_sel == b.ref_point_sel &&
-               a.lever_arm_offset == b.lever_arm_offset;
+    friend bool operator==(const ReferencePointLeverArm &Lhs, const ReferencePointLeverArm &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.ref_point_sel == Rhs.ref_point_sel &&
+               Lhs.lever_arm_offset == Rhs.lever_arm_offset;
     }
-    friend bool operator!=(const ReferencePointLeverArm &a, const ReferencePointLeverArm &b) {
-        return !(a == b);
+    friend bool operator!=(const ReferencePointLeverArm &Lhs, const ReferencePointLeverArm &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1671,13 +1699,15 @@ struct ReferencePointLeverArmResponse {
 
     ::mipcodec::types::ReferencePointSelector ref_point_sel{}; ///< Reference point.
     std::array<float, 3> lever_arm_offset{};                   ///< Lever arm in the vehicle frame. [m]
-    friend bool operator==(const ReferencePointLeverArmResponse &a, const ReferencePointLeverArmResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.ref_point_sel == b.ref_point_sel && a.lever_arm_offset == b.lever_arm_offset;
+    friend bool operator==(const ReferencePointLeverArmResponse &Lhs,
+                           const ReferencePointLeverArmResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.ref_point_sel == Rhs.ref_point_sel && Lhs.lever_arm_offset == Rhs.lever_arm_offset;
     }
-    friend bool operator!=(const ReferencePointLeverArmResponse &a, const ReferencePointLeverArmResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ReferencePointLeverArmResponse &Lhs,
+                           const ReferencePointLeverArmResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1692,14 +1722,14 @@ struct SpeedLeverArm {
     ::mipcodec::types::FunctionSelector function{};         ///< Function selector.
     std::uint8_t source{};                                  ///< Speed source; reserved, must be 1.
     std::optional<std::array<float, 3>> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
-    friend bool operator==(const SpeedLeverArm &a, const SpeedLeverArm &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source &&
-               a.lever_arm_offset == b.lever_arm_offset;
+    friend bool operator==(const SpeedLeverArm &Lhs, const SpeedLeverArm &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source &&
+               Lhs.lever_arm_offset == Rhs.lever_arm_offset;
     }
-    friend bool operator!=(const SpeedLeverArm &a, const SpeedLeverArm &b) {
-        return !(a == b);
+    friend bool operator!=(const SpeedLeverArm &Lhs, const SpeedLeverArm &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1713,13 +1743,13 @@ struct SpeedLeverArmResponse {
 
     std::uint8_t source{};                   ///< Speed source (1).
     std::array<float, 3> lever_arm_offset{}; ///< Lever arm in the vehicle frame. [m]
-    friend bool operator==(const SpeedLeverArmResponse &a, const SpeedLeverArmResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source && a.lever_arm_offset == b.lever_arm_offset;
+    friend bool operator==(const SpeedLeverArmResponse &Lhs, const SpeedLeverArmResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source && Lhs.lever_arm_offset == Rhs.lever_arm_offset;
     }
-    friend bool operator!=(const SpeedLeverArmResponse &a, const SpeedLeverArmResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SpeedLeverArmResponse &Lhs, const SpeedLeverArmResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1733,15 +1763,15 @@ struct WheeledVehicleConstraintControl {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables the constraint.
-    friend bool operator==(const WheeledVehicleConstraintControl &a,
-                           const WheeledVehicleConstraintControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable;
+    friend bool operator==(const WheeledVehicleConstraintControl &Lhs,
+                           const WheeledVehicleConstraintControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const WheeledVehicleConstraintControl &a,
-                           const WheeledVehicleConstraintControl &b) {
-        return !(a == b);
+    friend bool operator!=(const WheeledVehicleConstraintControl &Lhs,
+                           const WheeledVehicleConstraintControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1754,15 +1784,15 @@ struct WheeledVehicleConstraintControlResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
-    friend bool operator==(const WheeledVehicleConstraintControlResponse &a,
-                           const WheeledVehicleConstraintControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable;
+    friend bool operator==(const WheeledVehicleConstraintControlResponse &Lhs,
+                           const WheeledVehicleConstraintControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const WheeledVehicleConstraintControlResponse &a,
-                           const WheeledVehicleConstraintControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const WheeledVehicleConstraintControlResponse &Lhs,
+                           const WheeledVehicleConstraintControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1777,13 +1807,16 @@ struct GnssAntennaCalibrationControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::uint8_t> enable{};           ///< 0 disables, 1 enables lever arm error tracking.
     std::optional<float> max_offset{}; ///< Largest absolute lever arm offset error in the vehicle frame. [m]
-    friend bool operator==(const GnssAntennaCalibrationControl &a, const GnssAntennaCalibrationControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable && a.max_offset == b.max_offset;
+    friend bool operator==(const GnssAntennaCalibrationControl &Lhs,
+                           const GnssAntennaCalibrationControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable &&
+               Lhs.max_offset == Rhs.max_offset;
     }
-    friend bool operator!=(const GnssAntennaCalibrationControl &a, const GnssAntennaCalibrationControl &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAntennaCalibrationControl &Lhs,
+                           const GnssAntennaCalibrationControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1797,15 +1830,15 @@ struct GnssAntennaCalibrationControlResponse {
 
     std::uint8_t enable{}; ///< 0 disabled, 1 enabled.
     float max_offset{};    ///< Largest absolute lever arm offset error. [m]
-    friend bool operator==(const GnssAntennaCalibrationControlResponse &a,
-                           const GnssAntennaCalibrationControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable && a.max_offset == b.max_offset;
+    friend bool operator==(const GnssAntennaCalibrationControlResponse &Lhs,
+                           const GnssAntennaCalibrationControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable && Lhs.max_offset == Rhs.max_offset;
     }
-    friend bool operator!=(const GnssAntennaCalibrationControlResponse &a,
-                           const GnssAntennaCalibrationControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAntennaCalibrationControlResponse &Lhs,
+                           const GnssAntennaCalibrationControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -26,14 +26,14 @@ struct LlhPosition {
     double ellipsoid_height{}; ///< Height above the WGS84 ellipsoid. [m]
     ::mipcodec::types::FilterOutputValidFlags
         valid_flags{}; ///< Whether latitude, longitude and height are valid.
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.latitude == b.latitude && a.longitude == b.longitude &&
-               a.ellipsoid_height == b.ellipsoid_height && a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude &&
+               Lhs.ellipsoid_height == Rhs.ellipsoid_height && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -49,14 +49,14 @@ struct NedVelocity {
     float east{};                                            ///< East velocity. [m/s]
     float down{};                                            ///< Down velocity. [m/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the velocity is valid.
-    friend bool operator==(const NedVelocity &a, const NedVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.north == b.north && a.east == b.east && a.down == b.down &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.north == Rhs.north && Lhs.east == Rhs.east && Lhs.down == Rhs.down &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocity &a, const NedVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -70,13 +70,13 @@ struct AttitudeQuaternion {
 
     std::array<float, 4> q{}; ///< Quaternion (q0, q1, q2, q3); the GX5-45 lists the four floats separately.
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the quaternion is valid.
-    friend bool operator==(const AttitudeQuaternion &a, const AttitudeQuaternion &b) {
-        (void)a;
-        (void)b;
-        return true && a.q == b.q && a.valid_flags == b.valid_flags;
+    friend bool operator==(const AttitudeQuaternion &Lhs, const AttitudeQuaternion &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.q == Rhs.q && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AttitudeQuaternion &a, const AttitudeQuaternion &b) {
-        return !(a == b);
+    friend bool operator!=(const AttitudeQuaternion &Lhs, const AttitudeQuaternion &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -91,13 +91,13 @@ struct AttitudeDcm {
     std::array<float, 9>
         dcm{}; ///< Matrix elements in row-major order; the GX5-45 lists M1,1 ... M3,3 at offsets 0-32.
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the matrix is valid.
-    friend bool operator==(const AttitudeDcm &a, const AttitudeDcm &b) {
-        (void)a;
-        (void)b;
-        return true && a.dcm == b.dcm && a.valid_flags == b.valid_flags;
+    friend bool operator==(const AttitudeDcm &Lhs, const AttitudeDcm &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.dcm == Rhs.dcm && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AttitudeDcm &a, const AttitudeDcm &b) {
-        return !(a == b);
+    friend bool operator!=(const AttitudeDcm &Lhs, const AttitudeDcm &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -113,14 +113,14 @@ struct EulerAngles {
     float pitch{};                                           ///< Pitch angle. [rad]
     float yaw{};                                             ///< Yaw (heading) angle. [rad]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the angles are valid.
-    friend bool operator==(const EulerAngles &a, const EulerAngles &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EulerAngles &Lhs, const EulerAngles &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.yaw == Rhs.yaw &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EulerAngles &a, const EulerAngles &b) {
-        return !(a == b);
+    friend bool operator!=(const EulerAngles &Lhs, const EulerAngles &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -134,13 +134,13 @@ struct GyroBias {
 
     std::array<float, 3> bias{};                             ///< (x, y, z) gyro bias. [rad/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the bias is valid.
-    friend bool operator==(const GyroBias &a, const GyroBias &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GyroBias &Lhs, const GyroBias &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GyroBias &a, const GyroBias &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBias &Lhs, const GyroBias &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -154,13 +154,13 @@ struct AccelBias {
 
     std::array<float, 3> bias{};                             ///< (x, y, z) accelerometer bias. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the bias is valid.
-    friend bool operator==(const AccelBias &a, const AccelBias &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias && a.valid_flags == b.valid_flags;
+    friend bool operator==(const AccelBias &Lhs, const AccelBias &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AccelBias &a, const AccelBias &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBias &Lhs, const AccelBias &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -176,14 +176,14 @@ struct LlhPositionUncertainty {
     float east{};                                            ///< East 1-sigma uncertainty. [m]
     float down{};                                            ///< Down 1-sigma uncertainty. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const LlhPositionUncertainty &a, const LlhPositionUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.north == b.north && a.east == b.east && a.down == b.down &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPositionUncertainty &Lhs, const LlhPositionUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.north == Rhs.north && Lhs.east == Rhs.east && Lhs.down == Rhs.down &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPositionUncertainty &a, const LlhPositionUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPositionUncertainty &Lhs, const LlhPositionUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -199,14 +199,14 @@ struct NedVelocityUncertainty {
     float east{};                                            ///< East 1-sigma uncertainty. [m/s]
     float down{};                                            ///< Down 1-sigma uncertainty. [m/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const NedVelocityUncertainty &a, const NedVelocityUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.north == b.north && a.east == b.east && a.down == b.down &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocityUncertainty &Lhs, const NedVelocityUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.north == Rhs.north && Lhs.east == Rhs.east && Lhs.down == Rhs.down &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocityUncertainty &a, const NedVelocityUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocityUncertainty &Lhs, const NedVelocityUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -222,14 +222,14 @@ struct EulerAnglesUncertainty {
     float pitch{};                                           ///< Pitch 1-sigma uncertainty. [rad]
     float yaw{};                                             ///< Yaw 1-sigma uncertainty. [rad]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const EulerAnglesUncertainty &a, const EulerAnglesUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EulerAnglesUncertainty &Lhs, const EulerAnglesUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.yaw == Rhs.yaw &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EulerAnglesUncertainty &a, const EulerAnglesUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const EulerAnglesUncertainty &Lhs, const EulerAnglesUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -243,13 +243,13 @@ struct GyroBiasUncertainty {
 
     std::array<float, 3> bias_uncertainty{};                 ///< (x, y, z) 1-sigma uncertainty. [rad/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const GyroBiasUncertainty &a, const GyroBiasUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias_uncertainty == b.bias_uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GyroBiasUncertainty &Lhs, const GyroBiasUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias_uncertainty == Rhs.bias_uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GyroBiasUncertainty &a, const GyroBiasUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasUncertainty &Lhs, const GyroBiasUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -263,13 +263,13 @@ struct AccelBiasUncertainty {
 
     std::array<float, 3> bias_uncertainty{};                 ///< (x, y, z) 1-sigma uncertainty. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const AccelBiasUncertainty &a, const AccelBiasUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias_uncertainty == b.bias_uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const AccelBiasUncertainty &Lhs, const AccelBiasUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias_uncertainty == Rhs.bias_uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AccelBiasUncertainty &a, const AccelBiasUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasUncertainty &Lhs, const AccelBiasUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -283,13 +283,13 @@ struct LinearAccel {
 
     std::array<float, 3> accel{};                            ///< (x, y, z) linear acceleration. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the acceleration is valid.
-    friend bool operator==(const LinearAccel &a, const LinearAccel &b) {
-        (void)a;
-        (void)b;
-        return true && a.accel == b.accel && a.valid_flags == b.valid_flags;
+    friend bool operator==(const LinearAccel &Lhs, const LinearAccel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.accel == Rhs.accel && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LinearAccel &a, const LinearAccel &b) {
-        return !(a == b);
+    friend bool operator!=(const LinearAccel &Lhs, const LinearAccel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -303,13 +303,13 @@ struct CompAngularRate {
 
     std::array<float, 3> gyro{};                             ///< (x, y, z) angular rate. [rad/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the angular rate is valid.
-    friend bool operator==(const CompAngularRate &a, const CompAngularRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.gyro == b.gyro && a.valid_flags == b.valid_flags;
+    friend bool operator==(const CompAngularRate &Lhs, const CompAngularRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gyro == Rhs.gyro && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const CompAngularRate &a, const CompAngularRate &b) {
-        return !(a == b);
+    friend bool operator!=(const CompAngularRate &Lhs, const CompAngularRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -323,13 +323,13 @@ struct Wgs84GravityMagnitude {
 
     float gravity_magnitude{};                               ///< Local gravity magnitude. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the gravity value is valid.
-    friend bool operator==(const Wgs84GravityMagnitude &a, const Wgs84GravityMagnitude &b) {
-        (void)a;
-        (void)b;
-        return true && a.gravity_magnitude == b.gravity_magnitude && a.valid_flags == b.valid_flags;
+    friend bool operator==(const Wgs84GravityMagnitude &Lhs, const Wgs84GravityMagnitude &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gravity_magnitude == Rhs.gravity_magnitude && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const Wgs84GravityMagnitude &a, const Wgs84GravityMagnitude &b) {
-        return !(a == b);
+    friend bool operator!=(const Wgs84GravityMagnitude &Lhs, const Wgs84GravityMagnitude &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -346,14 +346,14 @@ struct FilterStatusGx545 {
     ::mipcodec::types::FilterDynamicsModeGx5 dynamics_mode{}; ///< Vehicle dynamics mode.
     ::mipcodec::types::FilterStatusFlagsGx5
         status_flags{}; ///< Status flags; their meaning depends on the filter state.
-    friend bool operator==(const FilterStatusGx545 &a, const FilterStatusGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.filter_state == b.filter_state && a.dynamics_mode == b.dynamics_mode &&
-               a.status_flags == b.status_flags;
+    friend bool operator==(const FilterStatusGx545 &Lhs, const FilterStatusGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.filter_state == Rhs.filter_state && Lhs.dynamics_mode == Rhs.dynamics_mode &&
+               Lhs.status_flags == Rhs.status_flags;
     }
-    friend bool operator!=(const FilterStatusGx545 &a, const FilterStatusGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterStatusGx545 &Lhs, const FilterStatusGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -369,14 +369,14 @@ struct FilterStatusCv7Ins {
     ::mipcodec::types::FilterModeCv7 filter_state{};          ///< Filter mode reached (Filter States page).
     ::mipcodec::types::FilterDynamicsModeCv7 dynamics_mode{}; ///< Dynamics mode.
     ::mipcodec::types::FilterStatusFlagsCv7 status_flags{};   ///< Filter condition and warning flags.
-    friend bool operator==(const FilterStatusCv7Ins &a, const FilterStatusCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.filter_state == b.filter_state && a.dynamics_mode == b.dynamics_mode &&
-               a.status_flags == b.status_flags;
+    friend bool operator==(const FilterStatusCv7Ins &Lhs, const FilterStatusCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.filter_state == Rhs.filter_state && Lhs.dynamics_mode == Rhs.dynamics_mode &&
+               Lhs.status_flags == Rhs.status_flags;
     }
-    friend bool operator!=(const FilterStatusCv7Ins &a, const FilterStatusCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterStatusCv7Ins &Lhs, const FilterStatusCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -391,13 +391,14 @@ struct GpsTimestamp {
     double tow{};                                            ///< GPS time of week. [s]
     std::uint16_t week_number{};                             ///< GPS week number since 1980. [weeks]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the time is valid.
-    friend bool operator==(const GpsTimestamp &a, const GpsTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsTimestamp &a, const GpsTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -411,13 +412,15 @@ struct QuaternionAttitudeUncertainty {
 
     std::array<float, 4> q{};                                ///< 1-sigma uncertainty of (q0, q1, q2, q3).
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Whether the uncertainties are valid.
-    friend bool operator==(const QuaternionAttitudeUncertainty &a, const QuaternionAttitudeUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.q == b.q && a.valid_flags == b.valid_flags;
+    friend bool operator==(const QuaternionAttitudeUncertainty &Lhs,
+                           const QuaternionAttitudeUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.q == Rhs.q && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const QuaternionAttitudeUncertainty &a, const QuaternionAttitudeUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const QuaternionAttitudeUncertainty &Lhs,
+                           const QuaternionAttitudeUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -431,13 +434,13 @@ struct GravityVector {
 
     std::array<float, 3> gravity{};                          ///< (x, y, z) gravity. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Gravity vector valid.
-    friend bool operator==(const GravityVector &a, const GravityVector &b) {
-        (void)a;
-        (void)b;
-        return true && a.gravity == b.gravity && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GravityVector &Lhs, const GravityVector &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gravity == Rhs.gravity && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GravityVector &a, const GravityVector &b) {
-        return !(a == b);
+    friend bool operator!=(const GravityVector &Lhs, const GravityVector &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -455,14 +458,14 @@ struct HeadingUpdateState {
         source{}; ///< Heading update sources in use (may be combined).
     ::mipcodec::types::FilterHeadingUpdateValidFlags
         valid_flags{}; ///< Whether a heading update arrived within 2 seconds.
-    friend bool operator==(const HeadingUpdateState &a, const HeadingUpdateState &b) {
-        (void)a;
-        (void)b;
-        return true && a.heading == b.heading && a.heading_uncertainty == b.heading_uncertainty &&
-               a.source == b.source && a.valid_flags == b.valid_flags;
+    friend bool operator==(const HeadingUpdateState &Lhs, const HeadingUpdateState &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.heading == Rhs.heading && Lhs.heading_uncertainty == Rhs.heading_uncertainty &&
+               Lhs.source == Rhs.source && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const HeadingUpdateState &a, const HeadingUpdateState &b) {
-        return !(a == b);
+    friend bool operator!=(const HeadingUpdateState &Lhs, const HeadingUpdateState &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -480,15 +483,16 @@ struct MagneticModel {
     float inclination{};                                     ///< Inclination (dip) angle. [rad]
     float declination{};                                     ///< Declination angle. [rad]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Model solution valid.
-    friend bool operator==(const MagneticModel &a, const MagneticModel &b) {
-        (void)a;
-        (void)b;
-        return true && a.intensity_north == b.intensity_north && a.intensity_east == b.intensity_east &&
-               a.intensity_down == b.intensity_down && a.inclination == b.inclination &&
-               a.declination == b.declination && a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagneticModel &Lhs, const MagneticModel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.intensity_north == Rhs.intensity_north &&
+               Lhs.intensity_east == Rhs.intensity_east && Lhs.intensity_down == Rhs.intensity_down &&
+               Lhs.inclination == Rhs.inclination && Lhs.declination == Rhs.declination &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagneticModel &a, const MagneticModel &b) {
-        return !(a == b);
+    friend bool operator!=(const MagneticModel &Lhs, const MagneticModel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -502,13 +506,13 @@ struct GyroScaleFactor {
 
     std::array<float, 3> scale_factor{}; ///< (x, y, z) scale factor, as a fraction (percent / 100). [%/100]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Scale factor values valid.
-    friend bool operator==(const GyroScaleFactor &a, const GyroScaleFactor &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor == b.scale_factor && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GyroScaleFactor &Lhs, const GyroScaleFactor &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor == Rhs.scale_factor && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GyroScaleFactor &a, const GyroScaleFactor &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroScaleFactor &Lhs, const GyroScaleFactor &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -522,13 +526,13 @@ struct AccelScaleFactor {
 
     std::array<float, 3> scale_factor{}; ///< (x, y, z) scale factor, as a fraction (percent / 100). [%/100]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Scale factor values valid.
-    friend bool operator==(const AccelScaleFactor &a, const AccelScaleFactor &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor == b.scale_factor && a.valid_flags == b.valid_flags;
+    friend bool operator==(const AccelScaleFactor &Lhs, const AccelScaleFactor &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor == Rhs.scale_factor && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AccelScaleFactor &a, const AccelScaleFactor &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelScaleFactor &Lhs, const AccelScaleFactor &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -542,14 +546,14 @@ struct GyroScaleFactorUncertainty {
 
     std::array<float, 3> scale_factor_uncertainty{};         ///< (x, y, z) 1-sigma uncertainty. [%/100]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const GyroScaleFactorUncertainty &a, const GyroScaleFactorUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor_uncertainty == b.scale_factor_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const GyroScaleFactorUncertainty &Lhs, const GyroScaleFactorUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor_uncertainty == Rhs.scale_factor_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GyroScaleFactorUncertainty &a, const GyroScaleFactorUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroScaleFactorUncertainty &Lhs, const GyroScaleFactorUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -563,14 +567,14 @@ struct AccelScaleFactorUncertainty {
 
     std::array<float, 3> scale_factor_uncertainty{};         ///< (x, y, z) 1-sigma uncertainty. [%/100]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const AccelScaleFactorUncertainty &a, const AccelScaleFactorUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor_uncertainty == b.scale_factor_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const AccelScaleFactorUncertainty &Lhs, const AccelScaleFactorUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor_uncertainty == Rhs.scale_factor_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const AccelScaleFactorUncertainty &a, const AccelScaleFactorUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelScaleFactorUncertainty &Lhs, const AccelScaleFactorUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -584,13 +588,13 @@ struct CompensatedAccel {
 
     std::array<float, 3> accel{};                            ///< (x, y, z) compensated acceleration. [m/s^2]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Compensated accelerations valid.
-    friend bool operator==(const CompensatedAccel &a, const CompensatedAccel &b) {
-        (void)a;
-        (void)b;
-        return true && a.accel == b.accel && a.valid_flags == b.valid_flags;
+    friend bool operator==(const CompensatedAccel &Lhs, const CompensatedAccel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.accel == Rhs.accel && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const CompensatedAccel &a, const CompensatedAccel &b) {
-        return !(a == b);
+    friend bool operator!=(const CompensatedAccel &Lhs, const CompensatedAccel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -608,15 +612,16 @@ struct StandardAtmosphere {
     float pressure{};                                        ///< Standard pressure. [mbar]
     float density{};                                         ///< Standard air density. [kg/m^3]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Atmosphere model solution valid.
-    friend bool operator==(const StandardAtmosphere &a, const StandardAtmosphere &b) {
-        (void)a;
-        (void)b;
-        return true && a.geometric_altitude == b.geometric_altitude &&
-               a.geopotential_altitude == b.geopotential_altitude && a.temperature == b.temperature &&
-               a.pressure == b.pressure && a.density == b.density && a.valid_flags == b.valid_flags;
+    friend bool operator==(const StandardAtmosphere &Lhs, const StandardAtmosphere &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.geometric_altitude == Rhs.geometric_altitude &&
+               Lhs.geopotential_altitude == Rhs.geopotential_altitude && Lhs.temperature == Rhs.temperature &&
+               Lhs.pressure == Rhs.pressure && Lhs.density == Rhs.density &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const StandardAtmosphere &a, const StandardAtmosphere &b) {
-        return !(a == b);
+    friend bool operator!=(const StandardAtmosphere &Lhs, const StandardAtmosphere &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -630,13 +635,13 @@ struct PressureAltitude {
 
     float pressure_altitude{};                               ///< Pressure altitude. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Pressure altitude valid.
-    friend bool operator==(const PressureAltitude &a, const PressureAltitude &b) {
-        (void)a;
-        (void)b;
-        return true && a.pressure_altitude == b.pressure_altitude && a.valid_flags == b.valid_flags;
+    friend bool operator==(const PressureAltitude &Lhs, const PressureAltitude &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pressure_altitude == Rhs.pressure_altitude && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const PressureAltitude &a, const PressureAltitude &b) {
-        return !(a == b);
+    friend bool operator!=(const PressureAltitude &Lhs, const PressureAltitude &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -650,13 +655,13 @@ struct MagAutoHardIronOffset {
 
     std::array<float, 3> hard_iron_offset{};                 ///< (x, y, z) offset. [gauss]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Vector valid.
-    friend bool operator==(const MagAutoHardIronOffset &a, const MagAutoHardIronOffset &b) {
-        (void)a;
-        (void)b;
-        return true && a.hard_iron_offset == b.hard_iron_offset && a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagAutoHardIronOffset &Lhs, const MagAutoHardIronOffset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.hard_iron_offset == Rhs.hard_iron_offset && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagAutoHardIronOffset &a, const MagAutoHardIronOffset &b) {
-        return !(a == b);
+    friend bool operator!=(const MagAutoHardIronOffset &Lhs, const MagAutoHardIronOffset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -670,13 +675,13 @@ struct MagAutoSoftIronMatrix {
 
     std::array<float, 9> soft_iron_matrix{};                 ///< M11..M33, row-major (dimensionless).
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Matrix valid.
-    friend bool operator==(const MagAutoSoftIronMatrix &a, const MagAutoSoftIronMatrix &b) {
-        (void)a;
-        (void)b;
-        return true && a.soft_iron_matrix == b.soft_iron_matrix && a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagAutoSoftIronMatrix &Lhs, const MagAutoSoftIronMatrix &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.soft_iron_matrix == Rhs.soft_iron_matrix && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagAutoSoftIronMatrix &a, const MagAutoSoftIronMatrix &b) {
-        return !(a == b);
+    friend bool operator!=(const MagAutoSoftIronMatrix &Lhs, const MagAutoSoftIronMatrix &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -690,16 +695,16 @@ struct MagAutoHardIronOffsetUncertainty {
 
     std::array<float, 3> hard_iron_offset_uncertainty{};     ///< (x, y, z) 1-sigma uncertainty. [gauss]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Vector valid.
-    friend bool operator==(const MagAutoHardIronOffsetUncertainty &a,
-                           const MagAutoHardIronOffsetUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.hard_iron_offset_uncertainty == b.hard_iron_offset_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagAutoHardIronOffsetUncertainty &Lhs,
+                           const MagAutoHardIronOffsetUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.hard_iron_offset_uncertainty == Rhs.hard_iron_offset_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagAutoHardIronOffsetUncertainty &a,
-                           const MagAutoHardIronOffsetUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const MagAutoHardIronOffsetUncertainty &Lhs,
+                           const MagAutoHardIronOffsetUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -714,16 +719,16 @@ struct MagAutoSoftIronMatrixUncertainty {
     std::array<float, 9>
         soft_iron_matrix_uncertainty{}; ///< 1-sigma uncertainty of M11..M33, row-major (dimensionless).
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Matrix valid.
-    friend bool operator==(const MagAutoSoftIronMatrixUncertainty &a,
-                           const MagAutoSoftIronMatrixUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.soft_iron_matrix_uncertainty == b.soft_iron_matrix_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const MagAutoSoftIronMatrixUncertainty &Lhs,
+                           const MagAutoSoftIronMatrixUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.soft_iron_matrix_uncertainty == Rhs.soft_iron_matrix_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MagAutoSoftIronMatrixUncertainty &a,
-                           const MagAutoSoftIronMatrixUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const MagAutoSoftIronMatrixUncertainty &Lhs,
+                           const MagAutoSoftIronMatrixUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -737,13 +742,13 @@ struct GnssAntennaOffsetCorrection {
 
     std::array<float, 3> offset{};                           ///< (x, y, z) offset correction. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Offset correction values valid.
-    friend bool operator==(const GnssAntennaOffsetCorrection &a, const GnssAntennaOffsetCorrection &b) {
-        (void)a;
-        (void)b;
-        return true && a.offset == b.offset && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GnssAntennaOffsetCorrection &Lhs, const GnssAntennaOffsetCorrection &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.offset == Rhs.offset && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GnssAntennaOffsetCorrection &a, const GnssAntennaOffsetCorrection &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAntennaOffsetCorrection &Lhs, const GnssAntennaOffsetCorrection &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -757,15 +762,15 @@ struct GnssAntennaOffsetCorrectionUncertainty {
 
     std::array<float, 3> offset_uncertainty{};               ///< (x, y, z) 1-sigma uncertainty. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const GnssAntennaOffsetCorrectionUncertainty &a,
-                           const GnssAntennaOffsetCorrectionUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.offset_uncertainty == b.offset_uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GnssAntennaOffsetCorrectionUncertainty &Lhs,
+                           const GnssAntennaOffsetCorrectionUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.offset_uncertainty == Rhs.offset_uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GnssAntennaOffsetCorrectionUncertainty &a,
-                           const GnssAntennaOffsetCorrectionUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAntennaOffsetCorrectionUncertainty &Lhs,
+                           const GnssAntennaOffsetCorrectionUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -780,14 +785,14 @@ struct MultiAntennaOffsetCorrection {
     std::uint8_t receiver_id{};                              ///< Receiver to which the antenna is attached.
     std::array<float, 3> offset{};                           ///< (x, y, z) offset correction. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Offset correction valid.
-    friend bool operator==(const MultiAntennaOffsetCorrection &a, const MultiAntennaOffsetCorrection &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_id == b.receiver_id && a.offset == b.offset &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const MultiAntennaOffsetCorrection &Lhs, const MultiAntennaOffsetCorrection &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_id == Rhs.receiver_id && Lhs.offset == Rhs.offset &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MultiAntennaOffsetCorrection &a, const MultiAntennaOffsetCorrection &b) {
-        return !(a == b);
+    friend bool operator!=(const MultiAntennaOffsetCorrection &Lhs, const MultiAntennaOffsetCorrection &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -802,16 +807,16 @@ struct MultiAntennaOffsetCorrectionUncertainty {
     std::uint8_t receiver_id{};                              ///< Receiver to which the antenna is attached.
     std::array<float, 3> offset_uncertainty{};               ///< (x, y, z) 1-sigma uncertainty. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const MultiAntennaOffsetCorrectionUncertainty &a,
-                           const MultiAntennaOffsetCorrectionUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_id == b.receiver_id && a.offset_uncertainty == b.offset_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const MultiAntennaOffsetCorrectionUncertainty &Lhs,
+                           const MultiAntennaOffsetCorrectionUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_id == Rhs.receiver_id &&
+               Lhs.offset_uncertainty == Rhs.offset_uncertainty && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const MultiAntennaOffsetCorrectionUncertainty &a,
-                           const MultiAntennaOffsetCorrectionUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const MultiAntennaOffsetCorrectionUncertainty &Lhs,
+                           const MultiAntennaOffsetCorrectionUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -825,13 +830,14 @@ struct EcefPositionUncertainty {
 
     std::array<float, 3> position_uncertainty{};             ///< (x, y, z) 1-sigma uncertainty. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const EcefPositionUncertainty &a, const EcefPositionUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.position_uncertainty == b.position_uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefPositionUncertainty &Lhs, const EcefPositionUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.position_uncertainty == Rhs.position_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefPositionUncertainty &a, const EcefPositionUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefPositionUncertainty &Lhs, const EcefPositionUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -845,13 +851,14 @@ struct EcefVelocityUncertainty {
 
     std::array<float, 3> velocity_uncertainty{};             ///< (x, y, z) 1-sigma uncertainty. [m/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainties valid.
-    friend bool operator==(const EcefVelocityUncertainty &a, const EcefVelocityUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity_uncertainty == b.velocity_uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefVelocityUncertainty &Lhs, const EcefVelocityUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity_uncertainty == Rhs.velocity_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefVelocityUncertainty &a, const EcefVelocityUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefVelocityUncertainty &Lhs, const EcefVelocityUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -865,13 +872,13 @@ struct EcefPosition {
 
     std::array<double, 3> position{};                        ///< (x, y, z) ECEF position. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Position valid.
-    friend bool operator==(const EcefPosition &a, const EcefPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.position == b.position && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.position == Rhs.position && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefPosition &a, const EcefPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -885,13 +892,13 @@ struct EcefVelocity {
 
     std::array<float, 3> velocity{};                         ///< (x, y, z) ECEF velocity. [m/s]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Velocity valid.
-    friend bool operator==(const EcefVelocity &a, const EcefVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefVelocity &a, const EcefVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -906,13 +913,13 @@ struct NedRelativePosition {
     std::array<double, 3>
         relative_position{}; ///< (north, east, down) position relative to the reference. [m]
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Relative position valid.
-    friend bool operator==(const NedRelativePosition &a, const NedRelativePosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.relative_position == b.relative_position && a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedRelativePosition &Lhs, const NedRelativePosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.relative_position == Rhs.relative_position && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedRelativePosition &a, const NedRelativePosition &b) {
-        return !(a == b);
+    friend bool operator!=(const NedRelativePosition &Lhs, const NedRelativePosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -928,14 +935,14 @@ struct GnssPositionAidingStatus {
     float time_of_week{};       ///< GPS time of week of the last GNSS aiding measurement. [s]
     ::mipcodec::types::FilterGnssAidingStatusFlags status{}; ///< Aiding measurement status.
     std::array<std::uint8_t, 8> reserved{};                  ///< Reserved.
-    friend bool operator==(const GnssPositionAidingStatus &a, const GnssPositionAidingStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_id == b.receiver_id && a.time_of_week == b.time_of_week &&
-               a.status == b.status && a.reserved == b.reserved;
+    friend bool operator==(const GnssPositionAidingStatus &Lhs, const GnssPositionAidingStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_id == Rhs.receiver_id && Lhs.time_of_week == Rhs.time_of_week &&
+               Lhs.status == Rhs.status && Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const GnssPositionAidingStatus &a, const GnssPositionAidingStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssPositionAidingStatus &Lhs, const GnssPositionAidingStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -951,14 +958,14 @@ struct AidingMeasurementSummary {
     std::uint8_t source{}; ///< Measurement source (not described by the manual).
     ::mipcodec::types::FilterAidingMeasurementType type{}; ///< Which aiding measurement is summarised.
     ::mipcodec::types::FilterAidingMeasurementIndicator indicator{}; ///< Measurement state and warnings.
-    friend bool operator==(const AidingMeasurementSummary &a, const AidingMeasurementSummary &b) {
-        (void)a;
-        (void)b;
-        return true && a.time_of_week == b.time_of_week && a.source == b.source && a.type == b.type &&
-               a.indicator == b.indicator;
+    friend bool operator==(const AidingMeasurementSummary &Lhs, const AidingMeasurementSummary &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time_of_week == Rhs.time_of_week && Lhs.source == Rhs.source &&
+               Lhs.type == Rhs.type && Lhs.indicator == Rhs.indicator;
     }
-    friend bool operator!=(const AidingMeasurementSummary &a, const AidingMeasurementSummary &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingMeasurementSummary &Lhs, const AidingMeasurementSummary &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -972,13 +979,13 @@ struct OdometerScaleFactorError {
 
     float scale_factor_error{};                              ///< Scale factor error (dimensionless).
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Estimate valid.
-    friend bool operator==(const OdometerScaleFactorError &a, const OdometerScaleFactorError &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor_error == b.scale_factor_error && a.valid_flags == b.valid_flags;
+    friend bool operator==(const OdometerScaleFactorError &Lhs, const OdometerScaleFactorError &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor_error == Rhs.scale_factor_error && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const OdometerScaleFactorError &a, const OdometerScaleFactorError &b) {
-        return !(a == b);
+    friend bool operator!=(const OdometerScaleFactorError &Lhs, const OdometerScaleFactorError &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -992,16 +999,16 @@ struct OdometerScaleFactorErrorUncertainty {
 
     float scale_factor_error_uncertainty{};                  ///< 1-sigma uncertainty (dimensionless).
     ::mipcodec::types::FilterOutputValidFlags valid_flags{}; ///< Uncertainty valid.
-    friend bool operator==(const OdometerScaleFactorErrorUncertainty &a,
-                           const OdometerScaleFactorErrorUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.scale_factor_error_uncertainty == b.scale_factor_error_uncertainty &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const OdometerScaleFactorErrorUncertainty &Lhs,
+                           const OdometerScaleFactorErrorUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scale_factor_error_uncertainty == Rhs.scale_factor_error_uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const OdometerScaleFactorErrorUncertainty &a,
-                           const OdometerScaleFactorErrorUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const OdometerScaleFactorErrorUncertainty &Lhs,
+                           const OdometerScaleFactorErrorUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1019,15 +1026,15 @@ struct GnssDualAntennaStatus {
     ::mipcodec::types::FilterDualAntennaFixType fix_type{};         ///< Fix type.
     ::mipcodec::types::FilterDualAntennaStatusFlags status_flags{}; ///< Receiver and antenna-offset validity.
     ::mipcodec::types::FilterOutputValidFlags valid_flags{};        ///< Field valid.
-    friend bool operator==(const GnssDualAntennaStatus &a, const GnssDualAntennaStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.time_of_week == b.time_of_week && a.heading == b.heading &&
-               a.heading_uncertainty == b.heading_uncertainty && a.fix_type == b.fix_type &&
-               a.status_flags == b.status_flags && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GnssDualAntennaStatus &Lhs, const GnssDualAntennaStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time_of_week == Rhs.time_of_week && Lhs.heading == Rhs.heading &&
+               Lhs.heading_uncertainty == Rhs.heading_uncertainty && Lhs.fix_type == Rhs.fix_type &&
+               Lhs.status_flags == Rhs.status_flags && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GnssDualAntennaStatus &a, const GnssDualAntennaStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssDualAntennaStatus &Lhs, const GnssDualAntennaStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1042,13 +1049,14 @@ struct AidingFrameConfigError {
     std::uint8_t frame_id{};            ///< Aiding reference frame id (as in 0x13,0x01).
     std::array<float, 3> translation{}; ///< Translation error, X, Y, Z. [m]
     std::array<float, 4> attitude{};    ///< Attitude error quaternion.
-    friend bool operator==(const AidingFrameConfigError &a, const AidingFrameConfigError &b) {
-        (void)a;
-        (void)b;
-        return true && a.frame_id == b.frame_id && a.translation == b.translation && a.attitude == b.attitude;
+    friend bool operator==(const AidingFrameConfigError &Lhs, const AidingFrameConfigError &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.frame_id == Rhs.frame_id && Lhs.translation == Rhs.translation &&
+               Lhs.attitude == Rhs.attitude;
     }
-    friend bool operator!=(const AidingFrameConfigError &a, const AidingFrameConfigError &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingFrameConfigError &Lhs, const AidingFrameConfigError &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1063,16 +1071,17 @@ struct AidingFrameConfigErrorUncertainty {
     std::uint8_t frame_id{};                        ///< Aiding reference frame id (as in 0x13,0x01).
     std::array<float, 3> translation_uncertainty{}; ///< 1-sigma translation uncertainty, X, Y, Z. [m]
     std::array<float, 3> attitude_uncertainty{};    ///< 1-sigma attitude uncertainty, X, Y, Z. [rad]
-    friend bool operator==(const AidingFrameConfigErrorUncertainty &a,
-                           const AidingFrameConfigErrorUncertainty &b) {
-        (void)a;
-        (void)b;
-        return true && a.frame_id == b.frame_id && a.translation_uncertainty == b.translation_uncertainty &&
-               a.attitude_uncertainty == b.attitude_uncertainty;
+    friend bool operator==(const AidingFrameConfigErrorUncertainty &Lhs,
+                           const AidingFrameConfigErrorUncertainty &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.frame_id == Rhs.frame_id &&
+               Lhs.translation_uncertainty == Rhs.translation_uncertainty &&
+               Lhs.attitude_uncertainty == Rhs.attitude_uncertainty;
     }
-    friend bool operator!=(const AidingFrameConfigErrorUncertainty &a,
-                           const AidingFrameConfigErrorUncertainty &b) {
-        return !(a == b);
+    friend bool operator!=(const AidingFrameConfigErrorUncertainty &Lhs,
+                           const AidingFrameConfigErrorUncertainty &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

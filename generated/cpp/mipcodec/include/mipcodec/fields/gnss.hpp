@@ -21,13 +21,13 @@ struct ReceiverInfo {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const ReceiverInfo &a, const ReceiverInfo &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const ReceiverInfo &Lhs, const ReceiverInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const ReceiverInfo &a, const ReceiverInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const ReceiverInfo &Lhs, const ReceiverInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -42,13 +42,13 @@ struct ReceiverInfoResponse {
     std::uint8_t num_receivers{}; ///< Number of physical receivers in the device.
     ::mipcodec::BoundedVector<::mipcodec::types::GnssReceiverInfoEntry, 7>
         receiver_info{}; ///< Information on each receiver.
-    friend bool operator==(const ReceiverInfoResponse &a, const ReceiverInfoResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.num_receivers == b.num_receivers && a.receiver_info == b.receiver_info;
+    friend bool operator==(const ReceiverInfoResponse &Lhs, const ReceiverInfoResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.num_receivers == Rhs.num_receivers && Lhs.receiver_info == Rhs.receiver_info;
     }
-    friend bool operator!=(const ReceiverInfoResponse &a, const ReceiverInfoResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ReceiverInfoResponse &Lhs, const ReceiverInfoResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -66,15 +66,15 @@ struct SignalConfiguration {
     std::optional<::mipcodec::types::GnssGalileoSignals> galileo_enable{}; ///< Galileo signals to use.
     std::optional<::mipcodec::types::GnssBeidouSignals> beidou_enable{};   ///< BeiDou signals to use.
     std::optional<std::array<std::uint8_t, 4>> reserved{};                 ///< Reserved.
-    friend bool operator==(const SignalConfiguration &a, const SignalConfiguration &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.gps_enable == b.gps_enable &&
-               a.glonass_enable == b.glonass_enable && a.galileo_enable == b.galileo_enable &&
-               a.beidou_enable == b.beidou_enable && a.reserved == b.reserved;
+    friend bool operator==(const SignalConfiguration &Lhs, const SignalConfiguration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.gps_enable == Rhs.gps_enable &&
+               Lhs.glonass_enable == Rhs.glonass_enable && Lhs.galileo_enable == Rhs.galileo_enable &&
+               Lhs.beidou_enable == Rhs.beidou_enable && Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const SignalConfiguration &a, const SignalConfiguration &b) {
-        return !(a == b);
+    friend bool operator!=(const SignalConfiguration &Lhs, const SignalConfiguration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -91,15 +91,15 @@ struct SignalConfigurationResponse {
     ::mipcodec::types::GnssGalileoSignals galileo_enable{}; ///< Galileo signals in use.
     ::mipcodec::types::GnssBeidouSignals beidou_enable{};   ///< BeiDou signals in use.
     std::array<std::uint8_t, 4> reserved{};                 ///< Reserved.
-    friend bool operator==(const SignalConfigurationResponse &a, const SignalConfigurationResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.gps_enable == b.gps_enable && a.glonass_enable == b.glonass_enable &&
-               a.galileo_enable == b.galileo_enable && a.beidou_enable == b.beidou_enable &&
-               a.reserved == b.reserved;
+    friend bool operator==(const SignalConfigurationResponse &Lhs, const SignalConfigurationResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gps_enable == Rhs.gps_enable && Lhs.glonass_enable == Rhs.glonass_enable &&
+               Lhs.galileo_enable == Rhs.galileo_enable && Lhs.beidou_enable == Rhs.beidou_enable &&
+               Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const SignalConfigurationResponse &a, const SignalConfigurationResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SignalConfigurationResponse &Lhs, const SignalConfigurationResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -123,16 +123,16 @@ struct SpartnConfiguration {
     std::optional<std::uint32_t> next_key_tow{};  ///< GPS time of week until which the next key is valid. [s]
     std::optional<std::uint16_t> next_key_week{}; ///< GPS week until which the next key is valid. [weeks]
     std::optional<std::array<char, 32>> next_key{}; ///< Next key: 32 ASCII hex characters.
-    friend bool operator==(const SpartnConfiguration &a, const SpartnConfiguration &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable && a.type == b.type &&
-               a.current_key_tow == b.current_key_tow && a.current_key_week == b.current_key_week &&
-               a.current_key == b.current_key && a.next_key_tow == b.next_key_tow &&
-               a.next_key_week == b.next_key_week && a.next_key == b.next_key;
+    friend bool operator==(const SpartnConfiguration &Lhs, const SpartnConfiguration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable && Lhs.type == Rhs.type &&
+               Lhs.current_key_tow == Rhs.current_key_tow && Lhs.current_key_week == Rhs.current_key_week &&
+               Lhs.current_key == Rhs.current_key && Lhs.next_key_tow == Rhs.next_key_tow &&
+               Lhs.next_key_week == Rhs.next_key_week && Lhs.next_key == Rhs.next_key;
     }
-    friend bool operator!=(const SpartnConfiguration &a, const SpartnConfiguration &b) {
-        return !(a == b);
+    friend bool operator!=(const SpartnConfiguration &Lhs, const SpartnConfiguration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -152,16 +152,16 @@ struct SpartnConfigurationResponse {
     std::uint32_t next_key_tow{};       ///< GPS time of week until which the next key is valid. [s]
     std::uint16_t next_key_week{};      ///< GPS week until which the next key is valid. [weeks]
     std::array<char, 32> next_key{};    ///< Next key: 32 ASCII hex characters.
-    friend bool operator==(const SpartnConfigurationResponse &a, const SpartnConfigurationResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable && a.type == b.type && a.current_key_tow == b.current_key_tow &&
-               a.current_key_week == b.current_key_week && a.current_key == b.current_key &&
-               a.next_key_tow == b.next_key_tow && a.next_key_week == b.next_key_week &&
-               a.next_key == b.next_key;
+    friend bool operator==(const SpartnConfigurationResponse &Lhs, const SpartnConfigurationResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable && Lhs.type == Rhs.type &&
+               Lhs.current_key_tow == Rhs.current_key_tow && Lhs.current_key_week == Rhs.current_key_week &&
+               Lhs.current_key == Rhs.current_key && Lhs.next_key_tow == Rhs.next_key_tow &&
+               Lhs.next_key_week == Rhs.next_key_week && Lhs.next_key == Rhs.next_key;
     }
-    friend bool operator!=(const SpartnConfigurationResponse &a, const SpartnConfigurationResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SpartnConfigurationResponse &Lhs, const SpartnConfigurationResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

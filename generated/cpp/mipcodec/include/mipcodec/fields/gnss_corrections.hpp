@@ -28,15 +28,16 @@ struct BaseStationInfo {
     std::uint16_t station_id{};            ///< Reference station id (0-4095).
     ::mipcodec::types::GnssBaseStationIndicators indicators{};      ///< Base station indicator bits.
     ::mipcodec::types::GnssBaseStationInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const BaseStationInfo &a, const BaseStationInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number &&
-               a.ecef_position == b.ecef_position && a.height == b.height && a.station_id == b.station_id &&
-               a.indicators == b.indicators && a.valid_flags == b.valid_flags;
+    friend bool operator==(const BaseStationInfo &Lhs, const BaseStationInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.ecef_position == Rhs.ecef_position && Lhs.height == Rhs.height &&
+               Lhs.station_id == Rhs.station_id && Lhs.indicators == Rhs.indicators &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const BaseStationInfo &a, const BaseStationInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const BaseStationInfo &Lhs, const BaseStationInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -59,18 +60,19 @@ struct RtkCorrectionsStatus {
     float beidou_correction_latency{};  ///< Latency of the last BeiDou correction. [s]
     std::array<std::uint32_t, 4> reserved{};                         ///< Reserved for future use.
     ::mipcodec::types::RtkCorrectionsStatusValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const RtkCorrectionsStatus &a, const RtkCorrectionsStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.epoch_status == b.epoch_status &&
-               a.dongle_status == b.dongle_status && a.gps_correction_latency == b.gps_correction_latency &&
-               a.glonass_correction_latency == b.glonass_correction_latency &&
-               a.galileo_correction_latency == b.galileo_correction_latency &&
-               a.beidou_correction_latency == b.beidou_correction_latency && a.reserved == b.reserved &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const RtkCorrectionsStatus &Lhs, const RtkCorrectionsStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.epoch_status == Rhs.epoch_status && Lhs.dongle_status == Rhs.dongle_status &&
+               Lhs.gps_correction_latency == Rhs.gps_correction_latency &&
+               Lhs.glonass_correction_latency == Rhs.glonass_correction_latency &&
+               Lhs.galileo_correction_latency == Rhs.galileo_correction_latency &&
+               Lhs.beidou_correction_latency == Rhs.beidou_correction_latency &&
+               Lhs.reserved == Rhs.reserved && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const RtkCorrectionsStatus &a, const RtkCorrectionsStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const RtkCorrectionsStatus &Lhs, const RtkCorrectionsStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

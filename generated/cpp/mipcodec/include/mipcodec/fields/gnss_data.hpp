@@ -28,16 +28,16 @@ struct LlhPosition {
     float horizontal_accuracy{}; ///< Horizontal position accuracy estimate. [m]
     float vertical_accuracy{};   ///< Vertical position accuracy estimate. [m]
     ::mipcodec::types::GnssLlhPositionValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.latitude == b.latitude && a.longitude == b.longitude &&
-               a.ellipsoid_height == b.ellipsoid_height && a.msl_height == b.msl_height &&
-               a.horizontal_accuracy == b.horizontal_accuracy && a.vertical_accuracy == b.vertical_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude &&
+               Lhs.ellipsoid_height == Rhs.ellipsoid_height && Lhs.msl_height == Rhs.msl_height &&
+               Lhs.horizontal_accuracy == Rhs.horizontal_accuracy &&
+               Lhs.vertical_accuracy == Rhs.vertical_accuracy && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -52,14 +52,14 @@ struct EcefPosition {
     std::array<double, 3> position{};                            ///< (x, y, z) ECEF position. [m]
     float position_accuracy{};                                   ///< Position accuracy estimate. [m]
     ::mipcodec::types::GnssEcefPositionValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const EcefPosition &a, const EcefPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.position == b.position && a.position_accuracy == b.position_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.position == Rhs.position && Lhs.position_accuracy == Rhs.position_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefPosition &a, const EcefPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -78,15 +78,16 @@ struct NedVelocity {
     float speed_accuracy{};                                     ///< Speed accuracy estimate. [m/s]
     float heading_accuracy{};                                   ///< Heading accuracy estimate. [deg]
     ::mipcodec::types::GnssNedVelocityValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const NedVelocity &a, const NedVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.speed == b.speed && a.ground_speed == b.ground_speed &&
-               a.heading == b.heading && a.speed_accuracy == b.speed_accuracy &&
-               a.heading_accuracy == b.heading_accuracy && a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.speed == Rhs.speed &&
+               Lhs.ground_speed == Rhs.ground_speed && Lhs.heading == Rhs.heading &&
+               Lhs.speed_accuracy == Rhs.speed_accuracy && Lhs.heading_accuracy == Rhs.heading_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocity &a, const NedVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -101,14 +102,14 @@ struct EcefVelocity {
     std::array<float, 3> velocity{};                             ///< (x, y, z) ECEF velocity. [m/s]
     float velocity_accuracy{};                                   ///< Velocity accuracy estimate. [m/s]
     ::mipcodec::types::GnssEcefVelocityValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const EcefVelocity &a, const EcefVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.velocity_accuracy == b.velocity_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.velocity_accuracy == Rhs.velocity_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefVelocity &a, const EcefVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -128,14 +129,15 @@ struct Dop {
     float ndop{};                                       ///< Northing DOP.
     float edop{};                                       ///< Easting DOP.
     ::mipcodec::types::GnssDopValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const Dop &a, const Dop &b) {
-        (void)a;
-        (void)b;
-        return true && a.gdop == b.gdop && a.pdop == b.pdop && a.hdop == b.hdop && a.vdop == b.vdop &&
-               a.tdop == b.tdop && a.ndop == b.ndop && a.edop == b.edop && a.valid_flags == b.valid_flags;
+    friend bool operator==(const Dop &Lhs, const Dop &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gdop == Rhs.gdop && Lhs.pdop == Rhs.pdop && Lhs.hdop == Rhs.hdop &&
+               Lhs.vdop == Rhs.vdop && Lhs.tdop == Rhs.tdop && Lhs.ndop == Rhs.ndop && Lhs.edop == Rhs.edop &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const Dop &a, const Dop &b) {
-        return !(a == b);
+    friend bool operator!=(const Dop &Lhs, const Dop &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -155,15 +157,15 @@ struct UtcTime {
     std::uint8_t second{};                                     ///< Second (0-59).
     std::uint32_t millisecond{};                               ///< Millisecond. [ms]
     ::mipcodec::types::GnssUtcTimeValidFlagsGx5 valid_flags{}; ///< Validity of the date and of the time.
-    friend bool operator==(const UtcTime &a, const UtcTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.year == b.year && a.month == b.month && a.day == b.day && a.hour == b.hour &&
-               a.minute == b.minute && a.second == b.second && a.millisecond == b.millisecond &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const UtcTime &Lhs, const UtcTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.year == Rhs.year && Lhs.month == Rhs.month && Lhs.day == Rhs.day &&
+               Lhs.hour == Rhs.hour && Lhs.minute == Rhs.minute && Lhs.second == Rhs.second &&
+               Lhs.millisecond == Rhs.millisecond && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const UtcTime &a, const UtcTime &b) {
-        return !(a == b);
+    friend bool operator!=(const UtcTime &Lhs, const UtcTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -178,13 +180,14 @@ struct GpsTime {
     double tow{};                                           ///< GPS time of week. [s]
     std::uint16_t week_number{};                            ///< GPS week number (since 1980). [weeks]
     ::mipcodec::types::GnssGpsTimeValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const GpsTime &a, const GpsTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsTime &Lhs, const GpsTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsTime &a, const GpsTime &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTime &Lhs, const GpsTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -200,14 +203,14 @@ struct ClockInfo {
     double drift{};                                           ///< Receiver clock drift. [s/s]
     double accuracy_estimate{};                               ///< Clock accuracy estimate. [s]
     ::mipcodec::types::GnssClockInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const ClockInfo &a, const ClockInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias && a.drift == b.drift && a.accuracy_estimate == b.accuracy_estimate &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const ClockInfo &Lhs, const ClockInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias && Lhs.drift == Rhs.drift &&
+               Lhs.accuracy_estimate == Rhs.accuracy_estimate && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const ClockInfo &a, const ClockInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const ClockInfo &Lhs, const ClockInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -223,14 +226,14 @@ struct FixInfo {
     std::uint8_t num_sv{};                                  ///< Number of satellites used for the solution.
     ::mipcodec::types::GnssFixFlags fix_flags{};            ///< Corrections used.
     ::mipcodec::types::GnssFixInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const FixInfo &a, const FixInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.fix_type == b.fix_type && a.num_sv == b.num_sv && a.fix_flags == b.fix_flags &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const FixInfo &Lhs, const FixInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.fix_type == Rhs.fix_type && Lhs.num_sv == Rhs.num_sv &&
+               Lhs.fix_flags == Rhs.fix_flags && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const FixInfo &a, const FixInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const FixInfo &Lhs, const FixInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -249,15 +252,16 @@ struct SvInfo {
     std::int16_t elevation{};                              ///< Elevation, whole degrees. [deg]
     ::mipcodec::types::GnssSvFlags sv_flags{};             ///< Use and health of the vehicle.
     ::mipcodec::types::GnssSvInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const SvInfo &a, const SvInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.channel == b.channel && a.sv_id == b.sv_id &&
-               a.carrier_to_noise_ratio == b.carrier_to_noise_ratio && a.azimuth == b.azimuth &&
-               a.elevation == b.elevation && a.sv_flags == b.sv_flags && a.valid_flags == b.valid_flags;
+    friend bool operator==(const SvInfo &Lhs, const SvInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.channel == Rhs.channel && Lhs.sv_id == Rhs.sv_id &&
+               Lhs.carrier_to_noise_ratio == Rhs.carrier_to_noise_ratio && Lhs.azimuth == Rhs.azimuth &&
+               Lhs.elevation == Rhs.elevation && Lhs.sv_flags == Rhs.sv_flags &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const SvInfo &a, const SvInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const SvInfo &Lhs, const SvInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -273,14 +277,14 @@ struct HardwareStatus {
     ::mipcodec::types::GnssAntennaState antenna_state{};   ///< Antenna connection state.
     ::mipcodec::types::GnssAntennaPower antenna_power{};   ///< Antenna power state.
     ::mipcodec::types::GnssHardwareStatusValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const HardwareStatus &a, const HardwareStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_state == b.receiver_state && a.antenna_state == b.antenna_state &&
-               a.antenna_power == b.antenna_power && a.valid_flags == b.valid_flags;
+    friend bool operator==(const HardwareStatus &Lhs, const HardwareStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_state == Rhs.receiver_state && Lhs.antenna_state == Rhs.antenna_state &&
+               Lhs.antenna_power == Rhs.antenna_power && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const HardwareStatus &a, const HardwareStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const HardwareStatus &Lhs, const HardwareStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -298,15 +302,15 @@ struct DgnssInfo {
         base_station_status{};                                ///< Base station status (UDRE scale factor).
     std::uint16_t num_channels{};                             ///< Number of DGNSS channels.
     ::mipcodec::types::GnssDgnssInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const DgnssInfo &a, const DgnssInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.newest_age == b.newest_age && a.base_station_id == b.base_station_id &&
-               a.base_station_status == b.base_station_status && a.num_channels == b.num_channels &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const DgnssInfo &Lhs, const DgnssInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.newest_age == Rhs.newest_age && Lhs.base_station_id == Rhs.base_station_id &&
+               Lhs.base_station_status == Rhs.base_station_status && Lhs.num_channels == Rhs.num_channels &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const DgnssInfo &a, const DgnssInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const DgnssInfo &Lhs, const DgnssInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -323,16 +327,16 @@ struct DgnssChannelStatus {
     float pseudorange_correction{};                                    ///< Pseudorange correction. [m]
     float pseudorange_rate_correction{};                               ///< Pseudorange rate correction. [m/s]
     ::mipcodec::types::GnssDgnssChannelStatusValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const DgnssChannelStatus &a, const DgnssChannelStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.sv_id == b.sv_id && a.age == b.age &&
-               a.pseudorange_correction == b.pseudorange_correction &&
-               a.pseudorange_rate_correction == b.pseudorange_rate_correction &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const DgnssChannelStatus &Lhs, const DgnssChannelStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sv_id == Rhs.sv_id && Lhs.age == Rhs.age &&
+               Lhs.pseudorange_correction == Rhs.pseudorange_correction &&
+               Lhs.pseudorange_rate_correction == Rhs.pseudorange_rate_correction &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const DgnssChannelStatus &a, const DgnssChannelStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const DgnssChannelStatus &Lhs, const DgnssChannelStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -28,16 +28,16 @@ struct LlhPosition {
     float horizontal_accuracy{}; ///< Horizontal position accuracy estimate. [m]
     float vertical_accuracy{};   ///< Vertical position accuracy estimate. [m]
     ::mipcodec::types::GnssLlhPositionValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.latitude == b.latitude && a.longitude == b.longitude &&
-               a.ellipsoid_height == b.ellipsoid_height && a.msl_height == b.msl_height &&
-               a.horizontal_accuracy == b.horizontal_accuracy && a.vertical_accuracy == b.vertical_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude &&
+               Lhs.ellipsoid_height == Rhs.ellipsoid_height && Lhs.msl_height == Rhs.msl_height &&
+               Lhs.horizontal_accuracy == Rhs.horizontal_accuracy &&
+               Lhs.vertical_accuracy == Rhs.vertical_accuracy && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -56,15 +56,16 @@ struct NedVelocity {
     float speed_accuracy{};                                     ///< Speed accuracy estimate. [m/s]
     float heading_accuracy{};                                   ///< Heading accuracy estimate. [deg]
     ::mipcodec::types::GnssNedVelocityValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const NedVelocity &a, const NedVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.speed == b.speed && a.ground_speed == b.ground_speed &&
-               a.heading == b.heading && a.speed_accuracy == b.speed_accuracy &&
-               a.heading_accuracy == b.heading_accuracy && a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.speed == Rhs.speed &&
+               Lhs.ground_speed == Rhs.ground_speed && Lhs.heading == Rhs.heading &&
+               Lhs.speed_accuracy == Rhs.speed_accuracy && Lhs.heading_accuracy == Rhs.heading_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocity &a, const NedVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -85,15 +86,15 @@ struct UtcTime {
     std::uint32_t millisecond{}; ///< Millisecond (0-999). [ms]
     ::mipcodec::types::GnssUtcTimeValidFlagsCv7
         valid_flags{}; ///< Validity of the date/time and of the leap seconds.
-    friend bool operator==(const UtcTime &a, const UtcTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.year == b.year && a.month == b.month && a.day == b.day && a.hour == b.hour &&
-               a.minute == b.minute && a.second == b.second && a.millisecond == b.millisecond &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const UtcTime &Lhs, const UtcTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.year == Rhs.year && Lhs.month == Rhs.month && Lhs.day == Rhs.day &&
+               Lhs.hour == Rhs.hour && Lhs.minute == Rhs.minute && Lhs.second == Rhs.second &&
+               Lhs.millisecond == Rhs.millisecond && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const UtcTime &a, const UtcTime &b) {
-        return !(a == b);
+    friend bool operator!=(const UtcTime &Lhs, const UtcTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -109,14 +110,14 @@ struct FixInfo {
     std::uint8_t num_sv{};                                  ///< Number of satellites used in the solution.
     ::mipcodec::types::GnssFixFlags fix_flags{};            ///< Corrections used.
     ::mipcodec::types::GnssFixInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const FixInfo &a, const FixInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.fix_type == b.fix_type && a.num_sv == b.num_sv && a.fix_flags == b.fix_flags &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const FixInfo &Lhs, const FixInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.fix_type == Rhs.fix_type && Lhs.num_sv == Rhs.num_sv &&
+               Lhs.fix_flags == Rhs.fix_flags && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const FixInfo &a, const FixInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const FixInfo &Lhs, const FixInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -138,16 +139,16 @@ struct SatelliteStatus {
     float azimuth{};   ///< Azimuth of the satellite seen from the receiver. [deg]
     bool health{};     ///< True if the satellite is healthy.
     ::mipcodec::types::GnssSatelliteStatusValidFlags valid_flags{}; ///< Which parameters are valid.
-    friend bool operator==(const SatelliteStatus &a, const SatelliteStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.gnss_id == b.gnss_id && a.satellite_id == b.satellite_id &&
-               a.elevation == b.elevation && a.azimuth == b.azimuth && a.health == b.health &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const SatelliteStatus &Lhs, const SatelliteStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.gnss_id == Rhs.gnss_id &&
+               Lhs.satellite_id == Rhs.satellite_id && Lhs.elevation == Rhs.elevation &&
+               Lhs.azimuth == Rhs.azimuth && Lhs.health == Rhs.health && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const SatelliteStatus &a, const SatelliteStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const SatelliteStatus &Lhs, const SatelliteStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

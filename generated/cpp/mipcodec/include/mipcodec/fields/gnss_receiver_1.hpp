@@ -28,16 +28,16 @@ struct LlhPosition {
     float horizontal_accuracy{}; ///< Horizontal position accuracy estimate. [m]
     float vertical_accuracy{};   ///< Vertical position accuracy estimate. [m]
     ::mipcodec::types::GnssLlhPositionValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.latitude == b.latitude && a.longitude == b.longitude &&
-               a.ellipsoid_height == b.ellipsoid_height && a.msl_height == b.msl_height &&
-               a.horizontal_accuracy == b.horizontal_accuracy && a.vertical_accuracy == b.vertical_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude &&
+               Lhs.ellipsoid_height == Rhs.ellipsoid_height && Lhs.msl_height == Rhs.msl_height &&
+               Lhs.horizontal_accuracy == Rhs.horizontal_accuracy &&
+               Lhs.vertical_accuracy == Rhs.vertical_accuracy && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -52,14 +52,14 @@ struct EcefPosition {
     std::array<double, 3> position{};                            ///< (x, y, z) ECEF position. [m]
     float position_accuracy{};                                   ///< Position accuracy estimate. [m]
     ::mipcodec::types::GnssEcefPositionValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const EcefPosition &a, const EcefPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.position == b.position && a.position_accuracy == b.position_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.position == Rhs.position && Lhs.position_accuracy == Rhs.position_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefPosition &a, const EcefPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefPosition &Lhs, const EcefPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -78,15 +78,16 @@ struct NedVelocity {
     float speed_accuracy{};                                     ///< Speed accuracy estimate. [m/s]
     float heading_accuracy{};                                   ///< Heading accuracy estimate. [deg]
     ::mipcodec::types::GnssNedVelocityValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const NedVelocity &a, const NedVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.speed == b.speed && a.ground_speed == b.ground_speed &&
-               a.heading == b.heading && a.speed_accuracy == b.speed_accuracy &&
-               a.heading_accuracy == b.heading_accuracy && a.valid_flags == b.valid_flags;
+    friend bool operator==(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.speed == Rhs.speed &&
+               Lhs.ground_speed == Rhs.ground_speed && Lhs.heading == Rhs.heading &&
+               Lhs.speed_accuracy == Rhs.speed_accuracy && Lhs.heading_accuracy == Rhs.heading_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const NedVelocity &a, const NedVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const NedVelocity &Lhs, const NedVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -101,14 +102,14 @@ struct EcefVelocity {
     std::array<float, 3> velocity{};                             ///< (x, y, z) ECEF velocity. [m/s]
     float velocity_accuracy{};                                   ///< Velocity accuracy estimate. [m/s]
     ::mipcodec::types::GnssEcefVelocityValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const EcefVelocity &a, const EcefVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.velocity == b.velocity && a.velocity_accuracy == b.velocity_accuracy &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.velocity == Rhs.velocity && Lhs.velocity_accuracy == Rhs.velocity_accuracy &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const EcefVelocity &a, const EcefVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const EcefVelocity &Lhs, const EcefVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -128,14 +129,15 @@ struct Dop {
     float ndop{};                                       ///< Northing DOP.
     float edop{};                                       ///< Easting DOP.
     ::mipcodec::types::GnssDopValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const Dop &a, const Dop &b) {
-        (void)a;
-        (void)b;
-        return true && a.gdop == b.gdop && a.pdop == b.pdop && a.hdop == b.hdop && a.vdop == b.vdop &&
-               a.tdop == b.tdop && a.ndop == b.ndop && a.edop == b.edop && a.valid_flags == b.valid_flags;
+    friend bool operator==(const Dop &Lhs, const Dop &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gdop == Rhs.gdop && Lhs.pdop == Rhs.pdop && Lhs.hdop == Rhs.hdop &&
+               Lhs.vdop == Rhs.vdop && Lhs.tdop == Rhs.tdop && Lhs.ndop == Rhs.ndop && Lhs.edop == Rhs.edop &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const Dop &a, const Dop &b) {
-        return !(a == b);
+    friend bool operator!=(const Dop &Lhs, const Dop &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -156,15 +158,15 @@ struct UtcTime {
     std::uint32_t millisecond{}; ///< Millisecond (0-999). [ms]
     ::mipcodec::types::GnssUtcTimeValidFlagsCv7
         valid_flags{}; ///< Validity of the date/time and of the leap seconds.
-    friend bool operator==(const UtcTime &a, const UtcTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.year == b.year && a.month == b.month && a.day == b.day && a.hour == b.hour &&
-               a.minute == b.minute && a.second == b.second && a.millisecond == b.millisecond &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const UtcTime &Lhs, const UtcTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.year == Rhs.year && Lhs.month == Rhs.month && Lhs.day == Rhs.day &&
+               Lhs.hour == Rhs.hour && Lhs.minute == Rhs.minute && Lhs.second == Rhs.second &&
+               Lhs.millisecond == Rhs.millisecond && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const UtcTime &a, const UtcTime &b) {
-        return !(a == b);
+    friend bool operator!=(const UtcTime &Lhs, const UtcTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -179,13 +181,14 @@ struct GpsTime {
     double tow{};                                           ///< GPS time of week. [s]
     std::uint16_t week_number{};                            ///< GPS week number (since 1980). [weeks]
     ::mipcodec::types::GnssGpsTimeValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const GpsTime &a, const GpsTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsTime &Lhs, const GpsTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsTime &a, const GpsTime &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTime &Lhs, const GpsTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -201,14 +204,14 @@ struct FixInfo {
     std::uint8_t num_sv{};                                  ///< Number of satellites used in the solution.
     ::mipcodec::types::GnssFixFlags fix_flags{};            ///< Corrections used.
     ::mipcodec::types::GnssFixInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const FixInfo &a, const FixInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.fix_type == b.fix_type && a.num_sv == b.num_sv && a.fix_flags == b.fix_flags &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const FixInfo &Lhs, const FixInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.fix_type == Rhs.fix_type && Lhs.num_sv == Rhs.num_sv &&
+               Lhs.fix_flags == Rhs.fix_flags && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const FixInfo &a, const FixInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const FixInfo &Lhs, const FixInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -224,14 +227,14 @@ struct HardwareStatus {
     ::mipcodec::types::GnssAntennaState antenna_state{};   ///< Antenna connection state.
     ::mipcodec::types::GnssAntennaPower antenna_power{};   ///< Antenna power state.
     ::mipcodec::types::GnssHardwareStatusValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const HardwareStatus &a, const HardwareStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.receiver_state == b.receiver_state && a.antenna_state == b.antenna_state &&
-               a.antenna_power == b.antenna_power && a.valid_flags == b.valid_flags;
+    friend bool operator==(const HardwareStatus &Lhs, const HardwareStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.receiver_state == Rhs.receiver_state && Lhs.antenna_state == Rhs.antenna_state &&
+               Lhs.antenna_power == Rhs.antenna_power && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const HardwareStatus &a, const HardwareStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const HardwareStatus &Lhs, const HardwareStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -248,15 +251,16 @@ struct ClockInfo2 {
     double bias_accuracy_estimate{};                           ///< Clock bias accuracy estimate. [s]
     double drift_accuracy_estimate{};                          ///< Clock drift accuracy estimate. [s/s]
     ::mipcodec::types::GnssClockInfo2ValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const ClockInfo2 &a, const ClockInfo2 &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias && a.drift == b.drift &&
-               a.bias_accuracy_estimate == b.bias_accuracy_estimate &&
-               a.drift_accuracy_estimate == b.drift_accuracy_estimate && a.valid_flags == b.valid_flags;
+    friend bool operator==(const ClockInfo2 &Lhs, const ClockInfo2 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias && Lhs.drift == Rhs.drift &&
+               Lhs.bias_accuracy_estimate == Rhs.bias_accuracy_estimate &&
+               Lhs.drift_accuracy_estimate == Rhs.drift_accuracy_estimate &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const ClockInfo2 &a, const ClockInfo2 &b) {
-        return !(a == b);
+    friend bool operator!=(const ClockInfo2 &Lhs, const ClockInfo2 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -270,13 +274,13 @@ struct GpsLeapSeconds {
 
     std::uint8_t leap_seconds{};                                ///< GPS - UTC leap seconds. [s]
     ::mipcodec::types::GnssLeapSecondsValidFlags valid_flags{}; ///< Validity of the leap seconds.
-    friend bool operator==(const GpsLeapSeconds &a, const GpsLeapSeconds &b) {
-        (void)a;
-        (void)b;
-        return true && a.leap_seconds == b.leap_seconds && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsLeapSeconds &Lhs, const GpsLeapSeconds &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.leap_seconds == Rhs.leap_seconds && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsLeapSeconds &a, const GpsLeapSeconds &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsLeapSeconds &Lhs, const GpsLeapSeconds &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -295,15 +299,15 @@ struct SbasInfo {
     std::uint8_t count{};                                    ///< Number of SBAS corrections.
     ::mipcodec::types::GnssSbasStatus sbas_status{};         ///< Status of the SBAS service.
     ::mipcodec::types::GnssSbasInfoValidFlags valid_flags{}; ///< Which values are valid.
-    friend bool operator==(const SbasInfo &a, const SbasInfo &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.sbas_system == b.sbas_system &&
-               a.sbas_id == b.sbas_id && a.count == b.count && a.sbas_status == b.sbas_status &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const SbasInfo &Lhs, const SbasInfo &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.sbas_system == Rhs.sbas_system && Lhs.sbas_id == Rhs.sbas_id && Lhs.count == Rhs.count &&
+               Lhs.sbas_status == Rhs.sbas_status && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const SbasInfo &a, const SbasInfo &b) {
-        return !(a == b);
+    friend bool operator!=(const SbasInfo &Lhs, const SbasInfo &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -325,16 +329,16 @@ struct SatelliteStatus {
     float azimuth{};   ///< Azimuth of the satellite seen from the receiver. [deg]
     bool health{};     ///< True if the satellite is healthy.
     ::mipcodec::types::GnssSatelliteStatusValidFlags valid_flags{}; ///< Which parameters are valid.
-    friend bool operator==(const SatelliteStatus &a, const SatelliteStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.gnss_id == b.gnss_id && a.satellite_id == b.satellite_id &&
-               a.elevation == b.elevation && a.azimuth == b.azimuth && a.health == b.health &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const SatelliteStatus &Lhs, const SatelliteStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.gnss_id == Rhs.gnss_id &&
+               Lhs.satellite_id == Rhs.satellite_id && Lhs.elevation == Rhs.elevation &&
+               Lhs.azimuth == Rhs.azimuth && Lhs.health == Rhs.health && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const SatelliteStatus &a, const SatelliteStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const SatelliteStatus &Lhs, const SatelliteStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -367,21 +371,21 @@ struct Raw {
     float lock_time{}; ///< Minimum time the carrier phase has been continuously locked; the largest value
                        ///< reported depends on the receiver. [s]
     ::mipcodec::types::GnssRawValidFlags valid_flags{}; ///< Which parameters are valid.
-    friend bool operator==(const Raw &a, const Raw &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.receiver_id == b.receiver_id &&
-               a.tracking_channel == b.tracking_channel && a.gnss_id == b.gnss_id &&
-               a.satellite_id == b.satellite_id && a.signal_id == b.signal_id &&
-               a.signal_strength == b.signal_strength && a.quality == b.quality &&
-               a.pseudorange == b.pseudorange && a.carrier_phase == b.carrier_phase &&
-               a.doppler == b.doppler && a.range_uncert == b.range_uncert &&
-               a.phase_uncert == b.phase_uncert && a.doppler_uncert == b.doppler_uncert &&
-               a.lock_time == b.lock_time && a.valid_flags == b.valid_flags;
+    friend bool operator==(const Raw &Lhs, const Raw &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.receiver_id == Rhs.receiver_id &&
+               Lhs.tracking_channel == Rhs.tracking_channel && Lhs.gnss_id == Rhs.gnss_id &&
+               Lhs.satellite_id == Rhs.satellite_id && Lhs.signal_id == Rhs.signal_id &&
+               Lhs.signal_strength == Rhs.signal_strength && Lhs.quality == Rhs.quality &&
+               Lhs.pseudorange == Rhs.pseudorange && Lhs.carrier_phase == Rhs.carrier_phase &&
+               Lhs.doppler == Rhs.doppler && Lhs.range_uncert == Rhs.range_uncert &&
+               Lhs.phase_uncert == Rhs.phase_uncert && Lhs.doppler_uncert == Rhs.doppler_uncert &&
+               Lhs.lock_time == Rhs.lock_time && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const Raw &a, const Raw &b) {
-        return !(a == b);
+    friend bool operator!=(const Raw &Lhs, const Raw &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -429,24 +433,25 @@ struct GpsEphemeris {
     double c_rs{};                  ///< Harmonic correction term, sine, to the orbit radius. [m]
     ::mipcodec::types::GnssEphemerisValidFlags
         valid_flags{}; ///< Which data are valid, and how isc_l2c is to be read.
-    friend bool operator==(const GpsEphemeris &a, const GpsEphemeris &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.satellite_id == b.satellite_id && a.health == b.health &&
-               a.iodc == b.iodc && a.iode == b.iode && a.t_oc == b.t_oc && a.af0 == b.af0 && a.af1 == b.af1 &&
-               a.af2 == b.af2 && a.t_gd == b.t_gd && a.isc_l1ca == b.isc_l1ca && a.isc_l2c == b.isc_l2c &&
-               a.t_oe == b.t_oe && a.a == b.a && a.a_dot == b.a_dot && a.mean_anomaly == b.mean_anomaly &&
-               a.delta_mean_motion == b.delta_mean_motion &&
-               a.delta_mean_motion_dot == b.delta_mean_motion_dot && a.eccentricity == b.eccentricity &&
-               a.argument_of_perigee == b.argument_of_perigee && a.omega == b.omega &&
-               a.omega_dot == b.omega_dot && a.inclination == b.inclination &&
-               a.inclination_dot == b.inclination_dot && a.c_ic == b.c_ic && a.c_is == b.c_is &&
-               a.c_uc == b.c_uc && a.c_us == b.c_us && a.c_rc == b.c_rc && a.c_rs == b.c_rs &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsEphemeris &Lhs, const GpsEphemeris &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.satellite_id == Rhs.satellite_id &&
+               Lhs.health == Rhs.health && Lhs.iodc == Rhs.iodc && Lhs.iode == Rhs.iode &&
+               Lhs.t_oc == Rhs.t_oc && Lhs.af0 == Rhs.af0 && Lhs.af1 == Rhs.af1 && Lhs.af2 == Rhs.af2 &&
+               Lhs.t_gd == Rhs.t_gd && Lhs.isc_l1ca == Rhs.isc_l1ca && Lhs.isc_l2c == Rhs.isc_l2c &&
+               Lhs.t_oe == Rhs.t_oe && Lhs.a == Rhs.a && Lhs.a_dot == Rhs.a_dot &&
+               Lhs.mean_anomaly == Rhs.mean_anomaly && Lhs.delta_mean_motion == Rhs.delta_mean_motion &&
+               Lhs.delta_mean_motion_dot == Rhs.delta_mean_motion_dot &&
+               Lhs.eccentricity == Rhs.eccentricity && Lhs.argument_of_perigee == Rhs.argument_of_perigee &&
+               Lhs.omega == Rhs.omega && Lhs.omega_dot == Rhs.omega_dot &&
+               Lhs.inclination == Rhs.inclination && Lhs.inclination_dot == Rhs.inclination_dot &&
+               Lhs.c_ic == Rhs.c_ic && Lhs.c_is == Rhs.c_is && Lhs.c_uc == Rhs.c_uc && Lhs.c_us == Rhs.c_us &&
+               Lhs.c_rc == Rhs.c_rc && Lhs.c_rs == Rhs.c_rs && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsEphemeris &a, const GpsEphemeris &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsEphemeris &Lhs, const GpsEphemeris &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -483,19 +488,20 @@ struct GlonassEphemeris {
     std::uint8_t p3{};         ///< Number of satellites in the almanac of this frame.
     std::uint8_t p4{};         ///< Non-zero when ephemeris parameters are present.
     ::mipcodec::types::GnssGlonassEphemerisValidFlags valid_flags{}; ///< Which data are valid.
-    friend bool operator==(const GlonassEphemeris &a, const GlonassEphemeris &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.satellite_id == b.satellite_id &&
-               a.freq_number == b.freq_number && a.tk == b.tk && a.tb == b.tb && a.sat_type == b.sat_type &&
-               a.gamma == b.gamma && a.tau_n == b.tau_n && a.x == b.x && a.v == b.v && a.a == b.a &&
-               a.health == b.health && a.p == b.p && a.nt == b.nt && a.delta_tau_n == b.delta_tau_n &&
-               a.ft == b.ft && a.en == b.en && a.p1 == b.p1 && a.p2 == b.p2 && a.p3 == b.p3 && a.p4 == b.p4 &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const GlonassEphemeris &Lhs, const GlonassEphemeris &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.satellite_id == Rhs.satellite_id &&
+               Lhs.freq_number == Rhs.freq_number && Lhs.tk == Rhs.tk && Lhs.tb == Rhs.tb &&
+               Lhs.sat_type == Rhs.sat_type && Lhs.gamma == Rhs.gamma && Lhs.tau_n == Rhs.tau_n &&
+               Lhs.x == Rhs.x && Lhs.v == Rhs.v && Lhs.a == Rhs.a && Lhs.health == Rhs.health &&
+               Lhs.p == Rhs.p && Lhs.nt == Rhs.nt && Lhs.delta_tau_n == Rhs.delta_tau_n && Lhs.ft == Rhs.ft &&
+               Lhs.en == Rhs.en && Lhs.p1 == Rhs.p1 && Lhs.p2 == Rhs.p2 && Lhs.p3 == Rhs.p3 &&
+               Lhs.p4 == Rhs.p4 && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GlonassEphemeris &a, const GlonassEphemeris &b) {
-        return !(a == b);
+    friend bool operator!=(const GlonassEphemeris &Lhs, const GlonassEphemeris &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -543,24 +549,25 @@ struct GalileoEphemeris {
     double c_rs{};                  ///< Harmonic correction term, sine, to the orbit radius. [m]
     ::mipcodec::types::GnssEphemerisValidFlags
         valid_flags{}; ///< Which data are valid, and how isc_l2c is to be read.
-    friend bool operator==(const GalileoEphemeris &a, const GalileoEphemeris &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.satellite_id == b.satellite_id && a.health == b.health &&
-               a.iodc == b.iodc && a.iode == b.iode && a.t_oc == b.t_oc && a.af0 == b.af0 && a.af1 == b.af1 &&
-               a.af2 == b.af2 && a.t_gd == b.t_gd && a.isc_l1ca == b.isc_l1ca && a.isc_l2c == b.isc_l2c &&
-               a.t_oe == b.t_oe && a.a == b.a && a.a_dot == b.a_dot && a.mean_anomaly == b.mean_anomaly &&
-               a.delta_mean_motion == b.delta_mean_motion &&
-               a.delta_mean_motion_dot == b.delta_mean_motion_dot && a.eccentricity == b.eccentricity &&
-               a.argument_of_perigee == b.argument_of_perigee && a.omega == b.omega &&
-               a.omega_dot == b.omega_dot && a.inclination == b.inclination &&
-               a.inclination_dot == b.inclination_dot && a.c_ic == b.c_ic && a.c_is == b.c_is &&
-               a.c_uc == b.c_uc && a.c_us == b.c_us && a.c_rc == b.c_rc && a.c_rs == b.c_rs &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const GalileoEphemeris &Lhs, const GalileoEphemeris &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.satellite_id == Rhs.satellite_id &&
+               Lhs.health == Rhs.health && Lhs.iodc == Rhs.iodc && Lhs.iode == Rhs.iode &&
+               Lhs.t_oc == Rhs.t_oc && Lhs.af0 == Rhs.af0 && Lhs.af1 == Rhs.af1 && Lhs.af2 == Rhs.af2 &&
+               Lhs.t_gd == Rhs.t_gd && Lhs.isc_l1ca == Rhs.isc_l1ca && Lhs.isc_l2c == Rhs.isc_l2c &&
+               Lhs.t_oe == Rhs.t_oe && Lhs.a == Rhs.a && Lhs.a_dot == Rhs.a_dot &&
+               Lhs.mean_anomaly == Rhs.mean_anomaly && Lhs.delta_mean_motion == Rhs.delta_mean_motion &&
+               Lhs.delta_mean_motion_dot == Rhs.delta_mean_motion_dot &&
+               Lhs.eccentricity == Rhs.eccentricity && Lhs.argument_of_perigee == Rhs.argument_of_perigee &&
+               Lhs.omega == Rhs.omega && Lhs.omega_dot == Rhs.omega_dot &&
+               Lhs.inclination == Rhs.inclination && Lhs.inclination_dot == Rhs.inclination_dot &&
+               Lhs.c_ic == Rhs.c_ic && Lhs.c_is == Rhs.c_is && Lhs.c_uc == Rhs.c_uc && Lhs.c_us == Rhs.c_us &&
+               Lhs.c_rc == Rhs.c_rc && Lhs.c_rs == Rhs.c_rs && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GalileoEphemeris &a, const GalileoEphemeris &b) {
-        return !(a == b);
+    friend bool operator!=(const GalileoEphemeris &Lhs, const GalileoEphemeris &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -608,24 +615,25 @@ struct BeidouEphemeris {
     double c_rs{};                  ///< Harmonic correction term, sine, to the orbit radius. [m]
     ::mipcodec::types::GnssEphemerisValidFlags
         valid_flags{}; ///< Which data are valid, and how isc_l2c is to be read.
-    friend bool operator==(const BeidouEphemeris &a, const BeidouEphemeris &b) {
-        (void)a;
-        (void)b;
-        return true && a.index == b.index && a.count == b.count && a.tow == b.tow &&
-               a.week_number == b.week_number && a.satellite_id == b.satellite_id && a.health == b.health &&
-               a.iodc == b.iodc && a.iode == b.iode && a.t_oc == b.t_oc && a.af0 == b.af0 && a.af1 == b.af1 &&
-               a.af2 == b.af2 && a.t_gd == b.t_gd && a.isc_l1ca == b.isc_l1ca && a.isc_l2c == b.isc_l2c &&
-               a.t_oe == b.t_oe && a.a == b.a && a.a_dot == b.a_dot && a.mean_anomaly == b.mean_anomaly &&
-               a.delta_mean_motion == b.delta_mean_motion &&
-               a.delta_mean_motion_dot == b.delta_mean_motion_dot && a.eccentricity == b.eccentricity &&
-               a.argument_of_perigee == b.argument_of_perigee && a.omega == b.omega &&
-               a.omega_dot == b.omega_dot && a.inclination == b.inclination &&
-               a.inclination_dot == b.inclination_dot && a.c_ic == b.c_ic && a.c_is == b.c_is &&
-               a.c_uc == b.c_uc && a.c_us == b.c_us && a.c_rc == b.c_rc && a.c_rs == b.c_rs &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const BeidouEphemeris &Lhs, const BeidouEphemeris &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.index == Rhs.index && Lhs.count == Rhs.count && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.satellite_id == Rhs.satellite_id &&
+               Lhs.health == Rhs.health && Lhs.iodc == Rhs.iodc && Lhs.iode == Rhs.iode &&
+               Lhs.t_oc == Rhs.t_oc && Lhs.af0 == Rhs.af0 && Lhs.af1 == Rhs.af1 && Lhs.af2 == Rhs.af2 &&
+               Lhs.t_gd == Rhs.t_gd && Lhs.isc_l1ca == Rhs.isc_l1ca && Lhs.isc_l2c == Rhs.isc_l2c &&
+               Lhs.t_oe == Rhs.t_oe && Lhs.a == Rhs.a && Lhs.a_dot == Rhs.a_dot &&
+               Lhs.mean_anomaly == Rhs.mean_anomaly && Lhs.delta_mean_motion == Rhs.delta_mean_motion &&
+               Lhs.delta_mean_motion_dot == Rhs.delta_mean_motion_dot &&
+               Lhs.eccentricity == Rhs.eccentricity && Lhs.argument_of_perigee == Rhs.argument_of_perigee &&
+               Lhs.omega == Rhs.omega && Lhs.omega_dot == Rhs.omega_dot &&
+               Lhs.inclination == Rhs.inclination && Lhs.inclination_dot == Rhs.inclination_dot &&
+               Lhs.c_ic == Rhs.c_ic && Lhs.c_is == Rhs.c_is && Lhs.c_uc == Rhs.c_uc && Lhs.c_us == Rhs.c_us &&
+               Lhs.c_rc == Rhs.c_rc && Lhs.c_rs == Rhs.c_rs && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const BeidouEphemeris &a, const BeidouEphemeris &b) {
-        return !(a == b);
+    friend bool operator!=(const BeidouEphemeris &Lhs, const BeidouEphemeris &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

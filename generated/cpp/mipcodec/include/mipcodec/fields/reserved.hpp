@@ -22,13 +22,13 @@ struct AckNack {
 
     std::uint8_t command_descriptor{};     ///< Descriptor of the command being answered.
     ::mipcodec::types::AckCode ack_code{}; ///< 0 is an ACK; any other value is a NACK.
-    friend bool operator==(const AckNack &a, const AckNack &b) {
-        (void)a;
-        (void)b;
-        return true && a.command_descriptor == b.command_descriptor && a.ack_code == b.ack_code;
+    friend bool operator==(const AckNack &Lhs, const AckNack &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.command_descriptor == Rhs.command_descriptor && Lhs.ack_code == Rhs.ack_code;
     }
-    friend bool operator!=(const AckNack &a, const AckNack &b) {
-        return !(a == b);
+    friend bool operator!=(const AckNack &Lhs, const AckNack &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -22,13 +22,13 @@ struct ScaledAccel {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> scaled_accel{}; ///< (x, y, z) acceleration. [g]
-    friend bool operator==(const ScaledAccel &a, const ScaledAccel &b) {
-        (void)a;
-        (void)b;
-        return true && a.scaled_accel == b.scaled_accel;
+    friend bool operator==(const ScaledAccel &Lhs, const ScaledAccel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scaled_accel == Rhs.scaled_accel;
     }
-    friend bool operator!=(const ScaledAccel &a, const ScaledAccel &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledAccel &Lhs, const ScaledAccel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -41,13 +41,13 @@ struct ScaledGyro {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> scaled_gyro{}; ///< (x, y, z) angular rate. [rad/s]
-    friend bool operator==(const ScaledGyro &a, const ScaledGyro &b) {
-        (void)a;
-        (void)b;
-        return true && a.scaled_gyro == b.scaled_gyro;
+    friend bool operator==(const ScaledGyro &Lhs, const ScaledGyro &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scaled_gyro == Rhs.scaled_gyro;
     }
-    friend bool operator!=(const ScaledGyro &a, const ScaledGyro &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledGyro &Lhs, const ScaledGyro &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -60,13 +60,13 @@ struct ScaledMag {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> scaled_mag{}; ///< (x, y, z) magnetic field. [gauss]
-    friend bool operator==(const ScaledMag &a, const ScaledMag &b) {
-        (void)a;
-        (void)b;
-        return true && a.scaled_mag == b.scaled_mag;
+    friend bool operator==(const ScaledMag &Lhs, const ScaledMag &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scaled_mag == Rhs.scaled_mag;
     }
-    friend bool operator!=(const ScaledMag &a, const ScaledMag &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledMag &Lhs, const ScaledMag &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -79,13 +79,13 @@ struct DeltaTheta {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> delta_theta{}; ///< (x, y, z) integrated angular rate. [rad]
-    friend bool operator==(const DeltaTheta &a, const DeltaTheta &b) {
-        (void)a;
-        (void)b;
-        return true && a.delta_theta == b.delta_theta;
+    friend bool operator==(const DeltaTheta &Lhs, const DeltaTheta &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.delta_theta == Rhs.delta_theta;
     }
-    friend bool operator!=(const DeltaTheta &a, const DeltaTheta &b) {
-        return !(a == b);
+    friend bool operator!=(const DeltaTheta &Lhs, const DeltaTheta &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -98,13 +98,13 @@ struct DeltaVelocity {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> delta_velocity{}; ///< (x, y, z) integrated acceleration. [g*s]
-    friend bool operator==(const DeltaVelocity &a, const DeltaVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.delta_velocity == b.delta_velocity;
+    friend bool operator==(const DeltaVelocity &Lhs, const DeltaVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.delta_velocity == Rhs.delta_velocity;
     }
-    friend bool operator!=(const DeltaVelocity &a, const DeltaVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const DeltaVelocity &Lhs, const DeltaVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -117,13 +117,13 @@ struct CfOrientationMatrix {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 9> m{}; ///< Orientation matrix, row-major (dimensionless).
-    friend bool operator==(const CfOrientationMatrix &a, const CfOrientationMatrix &b) {
-        (void)a;
-        (void)b;
-        return true && a.m == b.m;
+    friend bool operator==(const CfOrientationMatrix &Lhs, const CfOrientationMatrix &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.m == Rhs.m;
     }
-    friend bool operator!=(const CfOrientationMatrix &a, const CfOrientationMatrix &b) {
-        return !(a == b);
+    friend bool operator!=(const CfOrientationMatrix &Lhs, const CfOrientationMatrix &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -136,13 +136,13 @@ struct CfQuaternion {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 4> q{}; ///< Quaternion elements q0 (scalar), q1, q2, q3 (dimensionless).
-    friend bool operator==(const CfQuaternion &a, const CfQuaternion &b) {
-        (void)a;
-        (void)b;
-        return true && a.q == b.q;
+    friend bool operator==(const CfQuaternion &Lhs, const CfQuaternion &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.q == Rhs.q;
     }
-    friend bool operator!=(const CfQuaternion &a, const CfQuaternion &b) {
-        return !(a == b);
+    friend bool operator!=(const CfQuaternion &Lhs, const CfQuaternion &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -157,13 +157,13 @@ struct CfEulerAngles {
     float roll{};  ///< Roll angle. [rad]
     float pitch{}; ///< Pitch angle. [rad]
     float yaw{};   ///< Yaw angle. [rad]
-    friend bool operator==(const CfEulerAngles &a, const CfEulerAngles &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    friend bool operator==(const CfEulerAngles &Lhs, const CfEulerAngles &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.yaw == Rhs.yaw;
     }
-    friend bool operator!=(const CfEulerAngles &a, const CfEulerAngles &b) {
-        return !(a == b);
+    friend bool operator!=(const CfEulerAngles &Lhs, const CfEulerAngles &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -176,13 +176,13 @@ struct CfStabilizedNorth {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> stabilized_north{}; ///< (x, y, z) stabilized magnetic field estimate. [gauss]
-    friend bool operator==(const CfStabilizedNorth &a, const CfStabilizedNorth &b) {
-        (void)a;
-        (void)b;
-        return true && a.stabilized_north == b.stabilized_north;
+    friend bool operator==(const CfStabilizedNorth &Lhs, const CfStabilizedNorth &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.stabilized_north == Rhs.stabilized_north;
     }
-    friend bool operator!=(const CfStabilizedNorth &a, const CfStabilizedNorth &b) {
-        return !(a == b);
+    friend bool operator!=(const CfStabilizedNorth &Lhs, const CfStabilizedNorth &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -195,13 +195,13 @@ struct CfStabilizedUp {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> stabilized_up{}; ///< (x, y, z) stabilized gravity estimate. [g]
-    friend bool operator==(const CfStabilizedUp &a, const CfStabilizedUp &b) {
-        (void)a;
-        (void)b;
-        return true && a.stabilized_up == b.stabilized_up;
+    friend bool operator==(const CfStabilizedUp &Lhs, const CfStabilizedUp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.stabilized_up == Rhs.stabilized_up;
     }
-    friend bool operator!=(const CfStabilizedUp &a, const CfStabilizedUp &b) {
-        return !(a == b);
+    friend bool operator!=(const CfStabilizedUp &Lhs, const CfStabilizedUp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -217,13 +217,14 @@ struct GpsTimestamp {
     std::uint16_t week_number{}; ///< GPS week number since 1980. [weeks]
     ::mipcodec::types::SensorGpsTimestampFlags
         valid_flags{}; ///< Timestamp status flags (GX5-45: Timestamp Flags).
-    friend bool operator==(const GpsTimestamp &a, const GpsTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsTimestamp &a, const GpsTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -238,13 +239,14 @@ struct TemperatureStatistics {
     float min_temp{};  ///< Minimum temperature. [degC]
     float max_temp{};  ///< Maximum temperature. [degC]
     float mean_temp{}; ///< Mean temperature. [degC]
-    friend bool operator==(const TemperatureStatistics &a, const TemperatureStatistics &b) {
-        (void)a;
-        (void)b;
-        return true && a.min_temp == b.min_temp && a.max_temp == b.max_temp && a.mean_temp == b.mean_temp;
+    friend bool operator==(const TemperatureStatistics &Lhs, const TemperatureStatistics &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.min_temp == Rhs.min_temp && Lhs.max_temp == Rhs.max_temp &&
+               Lhs.mean_temp == Rhs.mean_temp;
     }
-    friend bool operator!=(const TemperatureStatistics &a, const TemperatureStatistics &b) {
-        return !(a == b);
+    friend bool operator!=(const TemperatureStatistics &Lhs, const TemperatureStatistics &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -257,13 +259,13 @@ struct ScaledPressure {
     static constexpr const char *kDevice = nullptr;
 
     float scaled_pressure{}; ///< Ambient pressure. [mbar]
-    friend bool operator==(const ScaledPressure &a, const ScaledPressure &b) {
-        (void)a;
-        (void)b;
-        return true && a.scaled_pressure == b.scaled_pressure;
+    friend bool operator==(const ScaledPressure &Lhs, const ScaledPressure &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.scaled_pressure == Rhs.scaled_pressure;
     }
-    friend bool operator!=(const ScaledPressure &a, const ScaledPressure &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledPressure &Lhs, const ScaledPressure &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -276,13 +278,13 @@ struct OverrangeStatus {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::OverrangeStatusFlags status{}; ///< Over-range flags, one per axis.
-    friend bool operator==(const OverrangeStatus &a, const OverrangeStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.status == b.status;
+    friend bool operator==(const OverrangeStatus &Lhs, const OverrangeStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.status == Rhs.status;
     }
-    friend bool operator!=(const OverrangeStatus &a, const OverrangeStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const OverrangeStatus &Lhs, const OverrangeStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -297,13 +299,14 @@ struct OdometerData {
     float speed{};       ///< Average speed over the interval; can be negative with quadrature encoders. [m/s]
     float uncertainty{}; ///< Uncertainty of the speed. [m/s]
     ::mipcodec::types::OdometerDataValidFlags valid_flags{}; ///< Bit 0 set when the odometer is configured.
-    friend bool operator==(const OdometerData &a, const OdometerData &b) {
-        (void)a;
-        (void)b;
-        return true && a.speed == b.speed && a.uncertainty == b.uncertainty && a.valid_flags == b.valid_flags;
+    friend bool operator==(const OdometerData &Lhs, const OdometerData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.speed == Rhs.speed && Lhs.uncertainty == Rhs.uncertainty &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const OdometerData &a, const OdometerData &b) {
-        return !(a == b);
+    friend bool operator!=(const OdometerData &Lhs, const OdometerData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -23,13 +23,13 @@ struct EventSource {
 
     std::uint8_t
         trigger_id{}; ///< Trigger (or, per line 1836, action) instance ID; 0 for scheduled streaming.
-    friend bool operator==(const EventSource &a, const EventSource &b) {
-        (void)a;
-        (void)b;
-        return true && a.trigger_id == b.trigger_id;
+    friend bool operator==(const EventSource &Lhs, const EventSource &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.trigger_id == Rhs.trigger_id;
     }
-    friend bool operator!=(const EventSource &a, const EventSource &b) {
-        return !(a == b);
+    friend bool operator!=(const EventSource &Lhs, const EventSource &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -44,13 +44,14 @@ struct GpsTimestamp {
     double tow{};                                                  ///< GPS time of week. [s]
     std::uint16_t week_number{};                                   ///< GPS week number since 1980. [weeks]
     ::mipcodec::types::SharedGpsTimestampValidFlags valid_flags{}; ///< Which parts of the time have been set.
-    friend bool operator==(const GpsTimestamp &a, const GpsTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.valid_flags == b.valid_flags;
+    friend bool operator==(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const GpsTimestamp &a, const GpsTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsTimestamp &Lhs, const GpsTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -63,13 +64,13 @@ struct DeltaTime {
     static constexpr const char *kDevice = nullptr;
 
     double seconds{}; ///< Seconds since the last output. [s]
-    friend bool operator==(const DeltaTime &a, const DeltaTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.seconds == b.seconds;
+    friend bool operator==(const DeltaTime &Lhs, const DeltaTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.seconds == Rhs.seconds;
     }
-    friend bool operator!=(const DeltaTime &a, const DeltaTime &b) {
-        return !(a == b);
+    friend bool operator!=(const DeltaTime &Lhs, const DeltaTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -82,13 +83,13 @@ struct ReferenceTimestamp {
     static constexpr const char *kDevice = nullptr;
 
     std::uint64_t nanoseconds{}; ///< Nanoseconds since initialization. [ns]
-    friend bool operator==(const ReferenceTimestamp &a, const ReferenceTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.nanoseconds == b.nanoseconds;
+    friend bool operator==(const ReferenceTimestamp &Lhs, const ReferenceTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.nanoseconds == Rhs.nanoseconds;
     }
-    friend bool operator!=(const ReferenceTimestamp &a, const ReferenceTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const ReferenceTimestamp &Lhs, const ReferenceTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -101,13 +102,13 @@ struct ReferenceTimeDelta {
     static constexpr const char *kDevice = nullptr;
 
     std::uint64_t dt_nanos{}; ///< Nanoseconds since the last occurrence of this field. [ns]
-    friend bool operator==(const ReferenceTimeDelta &a, const ReferenceTimeDelta &b) {
-        (void)a;
-        (void)b;
-        return true && a.dt_nanos == b.dt_nanos;
+    friend bool operator==(const ReferenceTimeDelta &Lhs, const ReferenceTimeDelta &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.dt_nanos == Rhs.dt_nanos;
     }
-    friend bool operator!=(const ReferenceTimeDelta &a, const ReferenceTimeDelta &b) {
-        return !(a == b);
+    friend bool operator!=(const ReferenceTimeDelta &Lhs, const ReferenceTimeDelta &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -121,13 +122,13 @@ struct ExternalTimestamp {
 
     std::uint64_t nanoseconds{};                                  ///< External time in nanoseconds. [ns]
     ::mipcodec::types::ExternalTimestampValidFlags valid_flags{}; ///< Bit 0: nanoseconds valid.
-    friend bool operator==(const ExternalTimestamp &a, const ExternalTimestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.nanoseconds == b.nanoseconds && a.valid_flags == b.valid_flags;
+    friend bool operator==(const ExternalTimestamp &Lhs, const ExternalTimestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.nanoseconds == Rhs.nanoseconds && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const ExternalTimestamp &a, const ExternalTimestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const ExternalTimestamp &Lhs, const ExternalTimestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -141,13 +142,13 @@ struct ExternalTimeDelta {
 
     std::uint64_t dt_nanos{}; ///< Nanoseconds since the last occurrence of this field. [ns]
     ::mipcodec::types::ExternalTimeDeltaValidFlags valid_flags{}; ///< Bit 0: delta valid.
-    friend bool operator==(const ExternalTimeDelta &a, const ExternalTimeDelta &b) {
-        (void)a;
-        (void)b;
-        return true && a.dt_nanos == b.dt_nanos && a.valid_flags == b.valid_flags;
+    friend bool operator==(const ExternalTimeDelta &Lhs, const ExternalTimeDelta &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.dt_nanos == Rhs.dt_nanos && Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const ExternalTimeDelta &a, const ExternalTimeDelta &b) {
-        return !(a == b);
+    friend bool operator!=(const ExternalTimeDelta &Lhs, const ExternalTimeDelta &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -24,13 +24,13 @@ struct CommunicationMode {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<::mipcodec::types::SystemCommMode>
         mode{}; ///< New communication mode (ignored for functions other than write).
-    friend bool operator==(const CommunicationMode &a, const CommunicationMode &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode;
+    friend bool operator==(const CommunicationMode &Lhs, const CommunicationMode &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const CommunicationMode &a, const CommunicationMode &b) {
-        return !(a == b);
+    friend bool operator!=(const CommunicationMode &Lhs, const CommunicationMode &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -43,13 +43,13 @@ struct CommunicationModeResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::SystemCommMode mode{}; ///< Current communication mode.
-    friend bool operator==(const CommunicationModeResponse &a, const CommunicationModeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode;
+    friend bool operator==(const CommunicationModeResponse &Lhs, const CommunicationModeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const CommunicationModeResponse &a, const CommunicationModeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const CommunicationModeResponse &Lhs, const CommunicationModeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

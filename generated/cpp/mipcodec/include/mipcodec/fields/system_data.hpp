@@ -23,13 +23,13 @@ struct BuiltInTest {
 
     ::mipcodec::types::Cv7ContinuousBit
         result{}; ///< Continuous BIT bit map, 16 bytes, least-significant byte first.
-    friend bool operator==(const BuiltInTest &a, const BuiltInTest &b) {
-        (void)a;
-        (void)b;
-        return true && a.result == b.result;
+    friend bool operator==(const BuiltInTest &Lhs, const BuiltInTest &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.result == Rhs.result;
     }
-    friend bool operator!=(const BuiltInTest &a, const BuiltInTest &b) {
-        return !(a == b);
+    friend bool operator!=(const BuiltInTest &Lhs, const BuiltInTest &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -43,13 +43,13 @@ struct TimeSyncStatus {
 
     bool time_sync{};             ///< True while PPS sync is valid; false if PPS is disabled or not detected.
     std::uint8_t last_pps_rcvd{}; ///< Seconds since the last PPS pulse, saturating at 255. [s]
-    friend bool operator==(const TimeSyncStatus &a, const TimeSyncStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.time_sync == b.time_sync && a.last_pps_rcvd == b.last_pps_rcvd;
+    friend bool operator==(const TimeSyncStatus &Lhs, const TimeSyncStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.time_sync == Rhs.time_sync && Lhs.last_pps_rcvd == Rhs.last_pps_rcvd;
     }
-    friend bool operator!=(const TimeSyncStatus &a, const TimeSyncStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const TimeSyncStatus &Lhs, const TimeSyncStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -62,13 +62,13 @@ struct GpioState {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::GpioPinStates states{}; ///< One bit per pin; pins that do not exist read 0.
-    friend bool operator==(const GpioState &a, const GpioState &b) {
-        (void)a;
-        (void)b;
-        return true && a.states == b.states;
+    friend bool operator==(const GpioState &Lhs, const GpioState &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.states == Rhs.states;
     }
-    friend bool operator!=(const GpioState &a, const GpioState &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioState &Lhs, const GpioState &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -24,13 +24,13 @@ struct EventControl {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::uint8_t instance{}; ///< Trigger instance; 0 applies to all configured triggers (not for read).
     std::optional<::mipcodec::types::EventControlMode> mode{}; ///< How to change the trigger state.
-    friend bool operator==(const EventControl &a, const EventControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.instance == b.instance && a.mode == b.mode;
+    friend bool operator==(const EventControl &Lhs, const EventControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.instance == Rhs.instance && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const EventControl &a, const EventControl &b) {
-        return !(a == b);
+    friend bool operator!=(const EventControl &Lhs, const EventControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -44,13 +44,13 @@ struct EventControlResponse {
 
     std::uint8_t instance{};                    ///< Trigger instance.
     ::mipcodec::types::EventControlMode mode{}; ///< Trigger mode.
-    friend bool operator==(const EventControlResponse &a, const EventControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.instance == b.instance && a.mode == b.mode;
+    friend bool operator==(const EventControlResponse &Lhs, const EventControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.instance == Rhs.instance && Lhs.mode == Rhs.mode;
     }
-    friend bool operator!=(const EventControlResponse &a, const EventControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const EventControlResponse &Lhs, const EventControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -64,14 +64,14 @@ struct GetEventTriggerStatus {
 
     std::uint8_t requested_count{}; ///< Number of entries requested; 0 requests all trigger slots.
     ::mipcodec::BoundedVector<std::uint8_t, 252> requested_instances{}; ///< Trigger instances to query.
-    friend bool operator==(const GetEventTriggerStatus &a, const GetEventTriggerStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.requested_count == b.requested_count &&
-               a.requested_instances == b.requested_instances;
+    friend bool operator==(const GetEventTriggerStatus &Lhs, const GetEventTriggerStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.requested_count == Rhs.requested_count &&
+               Lhs.requested_instances == Rhs.requested_instances;
     }
-    friend bool operator!=(const GetEventTriggerStatus &a, const GetEventTriggerStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const GetEventTriggerStatus &Lhs, const GetEventTriggerStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -86,13 +86,13 @@ struct EventTriggerStatus {
     std::uint8_t count{}; ///< Number of entries.
     ::mipcodec::BoundedVector<::mipcodec::types::TriggerStatusEntry, 126>
         triggers{}; ///< The configured triggers.
-    friend bool operator==(const EventTriggerStatus &a, const EventTriggerStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.count == b.count && a.triggers == b.triggers;
+    friend bool operator==(const EventTriggerStatus &Lhs, const EventTriggerStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.count == Rhs.count && Lhs.triggers == Rhs.triggers;
     }
-    friend bool operator!=(const EventTriggerStatus &a, const EventTriggerStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const EventTriggerStatus &Lhs, const EventTriggerStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -106,14 +106,14 @@ struct GetEventActionStatus {
 
     std::uint8_t requested_count{}; ///< Number of entries requested; 0 requests all action slots.
     ::mipcodec::BoundedVector<std::uint8_t, 252> requested_instances{}; ///< Action instances to query.
-    friend bool operator==(const GetEventActionStatus &a, const GetEventActionStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.requested_count == b.requested_count &&
-               a.requested_instances == b.requested_instances;
+    friend bool operator==(const GetEventActionStatus &Lhs, const GetEventActionStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.requested_count == Rhs.requested_count &&
+               Lhs.requested_instances == Rhs.requested_instances;
     }
-    friend bool operator!=(const GetEventActionStatus &a, const GetEventActionStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const GetEventActionStatus &Lhs, const GetEventActionStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -128,13 +128,13 @@ struct EventActionStatus {
     std::uint8_t count{}; ///< Number of entries.
     ::mipcodec::BoundedVector<::mipcodec::types::ActionStatusEntry, 126>
         actions{}; ///< The configured actions.
-    friend bool operator==(const EventActionStatus &a, const EventActionStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.count == b.count && a.actions == b.actions;
+    friend bool operator==(const EventActionStatus &Lhs, const EventActionStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.count == Rhs.count && Lhs.actions == Rhs.actions;
     }
-    friend bool operator!=(const EventActionStatus &a, const EventActionStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const EventActionStatus &Lhs, const EventActionStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -150,14 +150,14 @@ struct EventTriggerConfig {
     std::uint8_t instance{}; ///< Trigger number; 0 applies to all instances for save, load and default.
     std::optional<::mipcodec::types::TriggerType> type{};         ///< Type of trigger.
     std::optional<::mipcodec::types::TriggerParams> parameters{}; ///< Parameters of the trigger type.
-    friend bool operator==(const EventTriggerConfig &a, const EventTriggerConfig &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.instance == b.instance && a.type == b.type &&
-               a.parameters == b.parameters;
+    friend bool operator==(const EventTriggerConfig &Lhs, const EventTriggerConfig &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.instance == Rhs.instance && Lhs.type == Rhs.type &&
+               Lhs.parameters == Rhs.parameters;
     }
-    friend bool operator!=(const EventTriggerConfig &a, const EventTriggerConfig &b) {
-        return !(a == b);
+    friend bool operator!=(const EventTriggerConfig &Lhs, const EventTriggerConfig &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -172,13 +172,14 @@ struct EventTriggerConfigResponse {
     std::uint8_t instance{};                       ///< Trigger number.
     ::mipcodec::types::TriggerType type{};         ///< Type of trigger.
     ::mipcodec::types::TriggerParams parameters{}; ///< Parameters of the trigger type.
-    friend bool operator==(const EventTriggerConfigResponse &a, const EventTriggerConfigResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.instance == b.instance && a.type == b.type && a.parameters == b.parameters;
+    friend bool operator==(const EventTriggerConfigResponse &Lhs, const EventTriggerConfigResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.instance == Rhs.instance && Lhs.type == Rhs.type &&
+               Lhs.parameters == Rhs.parameters;
     }
-    friend bool operator!=(const EventTriggerConfigResponse &a, const EventTriggerConfigResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const EventTriggerConfigResponse &Lhs, const EventTriggerConfigResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -195,14 +196,14 @@ struct EventActionConfig {
     std::optional<std::uint8_t> trigger{};                       ///< Trigger ID number.
     std::optional<::mipcodec::types::ActionType> type{};         ///< Type of action.
     std::optional<::mipcodec::types::ActionParams> parameters{}; ///< Parameters of the action type.
-    friend bool operator==(const EventActionConfig &a, const EventActionConfig &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.instance == b.instance && a.trigger == b.trigger &&
-               a.type == b.type && a.parameters == b.parameters;
+    friend bool operator==(const EventActionConfig &Lhs, const EventActionConfig &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.instance == Rhs.instance &&
+               Lhs.trigger == Rhs.trigger && Lhs.type == Rhs.type && Lhs.parameters == Rhs.parameters;
     }
-    friend bool operator!=(const EventActionConfig &a, const EventActionConfig &b) {
-        return !(a == b);
+    friend bool operator!=(const EventActionConfig &Lhs, const EventActionConfig &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -218,14 +219,14 @@ struct EventActionConfigResponse {
     std::uint8_t trigger{};                       ///< Trigger ID number.
     ::mipcodec::types::ActionType type{};         ///< Type of action.
     ::mipcodec::types::ActionParams parameters{}; ///< Parameters of the action type.
-    friend bool operator==(const EventActionConfigResponse &a, const EventActionConfigResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.instance == b.instance && a.trigger == b.trigger && a.type == b.type &&
-               a.parameters == b.parameters;
+    friend bool operator==(const EventActionConfigResponse &Lhs, const EventActionConfigResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.instance == Rhs.instance && Lhs.trigger == Rhs.trigger && Lhs.type == Rhs.type &&
+               Lhs.parameters == Rhs.parameters;
     }
-    friend bool operator!=(const EventActionConfigResponse &a, const EventActionConfigResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const EventActionConfigResponse &Lhs, const EventActionConfigResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -239,13 +240,13 @@ struct DeviceStartupSettingsGx545 {
     static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::gx5_45;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    friend bool operator==(const DeviceStartupSettingsGx545 &a, const DeviceStartupSettingsGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function;
+    friend bool operator==(const DeviceStartupSettingsGx545 &Lhs, const DeviceStartupSettingsGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function;
     }
-    friend bool operator!=(const DeviceStartupSettingsGx545 &a, const DeviceStartupSettingsGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceStartupSettingsGx545 &Lhs, const DeviceStartupSettingsGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -259,13 +260,13 @@ struct DeviceStartupSettingsCv7Ins {
     static constexpr ::mipcodec::Device kDeviceId = ::mipcodec::Device::cv7_ins;
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
-    friend bool operator==(const DeviceStartupSettingsCv7Ins &a, const DeviceStartupSettingsCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function;
+    friend bool operator==(const DeviceStartupSettingsCv7Ins &Lhs, const DeviceStartupSettingsCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function;
     }
-    friend bool operator!=(const DeviceStartupSettingsCv7Ins &a, const DeviceStartupSettingsCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceStartupSettingsCv7Ins &Lhs, const DeviceStartupSettingsCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -281,13 +282,14 @@ struct SensorToVehicleEuler {
     std::optional<float> roll{};                    ///< Roll angle. [rad]
     std::optional<float> pitch{};                   ///< Pitch angle. [rad]
     std::optional<float> yaw{};                     ///< Yaw angle. [rad]
-    friend bool operator==(const SensorToVehicleEuler &a, const SensorToVehicleEuler &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    friend bool operator==(const SensorToVehicleEuler &Lhs, const SensorToVehicleEuler &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch &&
+               Lhs.yaw == Rhs.yaw;
     }
-    friend bool operator!=(const SensorToVehicleEuler &a, const SensorToVehicleEuler &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleEuler &Lhs, const SensorToVehicleEuler &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -302,13 +304,13 @@ struct SensorToVehicleEulerResponse {
     float roll{};  ///< Roll angle. [rad]
     float pitch{}; ///< Pitch angle. [rad]
     float yaw{};   ///< Yaw angle. [rad]
-    friend bool operator==(const SensorToVehicleEulerResponse &a, const SensorToVehicleEulerResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.roll == b.roll && a.pitch == b.pitch && a.yaw == b.yaw;
+    friend bool operator==(const SensorToVehicleEulerResponse &Lhs, const SensorToVehicleEulerResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.roll == Rhs.roll && Lhs.pitch == Rhs.pitch && Lhs.yaw == Rhs.yaw;
     }
-    friend bool operator!=(const SensorToVehicleEulerResponse &a, const SensorToVehicleEulerResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleEulerResponse &Lhs, const SensorToVehicleEulerResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -322,13 +324,13 @@ struct SensorToVehicleQuaternion {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 4>> q{};        ///< Unit quaternion of the transformation, [w, i, j, k].
-    friend bool operator==(const SensorToVehicleQuaternion &a, const SensorToVehicleQuaternion &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.q == b.q;
+    friend bool operator==(const SensorToVehicleQuaternion &Lhs, const SensorToVehicleQuaternion &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.q == Rhs.q;
     }
-    friend bool operator!=(const SensorToVehicleQuaternion &a, const SensorToVehicleQuaternion &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleQuaternion &Lhs, const SensorToVehicleQuaternion &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -341,15 +343,15 @@ struct SensorToVehicleQuaternionResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 4> q{}; ///< Unit quaternion of the transformation, [w, i, j, k].
-    friend bool operator==(const SensorToVehicleQuaternionResponse &a,
-                           const SensorToVehicleQuaternionResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.q == b.q;
+    friend bool operator==(const SensorToVehicleQuaternionResponse &Lhs,
+                           const SensorToVehicleQuaternionResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.q == Rhs.q;
     }
-    friend bool operator!=(const SensorToVehicleQuaternionResponse &a,
-                           const SensorToVehicleQuaternionResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleQuaternionResponse &Lhs,
+                           const SensorToVehicleQuaternionResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -363,13 +365,13 @@ struct SensorToVehicleDcm {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 9>> dcm{};      ///< Direction cosine matrix, row-major.
-    friend bool operator==(const SensorToVehicleDcm &a, const SensorToVehicleDcm &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.dcm == b.dcm;
+    friend bool operator==(const SensorToVehicleDcm &Lhs, const SensorToVehicleDcm &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.dcm == Rhs.dcm;
     }
-    friend bool operator!=(const SensorToVehicleDcm &a, const SensorToVehicleDcm &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleDcm &Lhs, const SensorToVehicleDcm &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -382,13 +384,13 @@ struct SensorToVehicleDcmResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 9> dcm{}; ///< Direction cosine matrix, row-major.
-    friend bool operator==(const SensorToVehicleDcmResponse &a, const SensorToVehicleDcmResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.dcm == b.dcm;
+    friend bool operator==(const SensorToVehicleDcmResponse &Lhs, const SensorToVehicleDcmResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.dcm == Rhs.dcm;
     }
-    friend bool operator!=(const SensorToVehicleDcmResponse &a, const SensorToVehicleDcmResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorToVehicleDcmResponse &Lhs, const SensorToVehicleDcmResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -403,13 +405,13 @@ struct AccelBiasGx545 {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z accelerometer bias. [g]
-    friend bool operator==(const AccelBiasGx545 &a, const AccelBiasGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.bias == b.bias;
+    friend bool operator==(const AccelBiasGx545 &Lhs, const AccelBiasGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const AccelBiasGx545 &a, const AccelBiasGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasGx545 &Lhs, const AccelBiasGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -424,13 +426,13 @@ struct AccelBiasCv7Ins {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z accelerometer bias in the sensor frame. [g]
-    friend bool operator==(const AccelBiasCv7Ins &a, const AccelBiasCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.bias == b.bias;
+    friend bool operator==(const AccelBiasCv7Ins &Lhs, const AccelBiasCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const AccelBiasCv7Ins &a, const AccelBiasCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasCv7Ins &Lhs, const AccelBiasCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -443,13 +445,13 @@ struct AccelBiasResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> bias{}; ///< X, Y, Z accelerometer bias in the sensor frame. [g]
-    friend bool operator==(const AccelBiasResponse &a, const AccelBiasResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias;
+    friend bool operator==(const AccelBiasResponse &Lhs, const AccelBiasResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const AccelBiasResponse &a, const AccelBiasResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelBiasResponse &Lhs, const AccelBiasResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -464,13 +466,13 @@ struct GyroBiasGx545 {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z gyro bias. [rad/s]
-    friend bool operator==(const GyroBiasGx545 &a, const GyroBiasGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.bias == b.bias;
+    friend bool operator==(const GyroBiasGx545 &Lhs, const GyroBiasGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const GyroBiasGx545 &a, const GyroBiasGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasGx545 &Lhs, const GyroBiasGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -485,13 +487,13 @@ struct GyroBiasCv7Ins {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> bias{};     ///< X, Y, Z gyro bias in the sensor frame. [rad/s]
-    friend bool operator==(const GyroBiasCv7Ins &a, const GyroBiasCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.bias == b.bias;
+    friend bool operator==(const GyroBiasCv7Ins &Lhs, const GyroBiasCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const GyroBiasCv7Ins &a, const GyroBiasCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasCv7Ins &Lhs, const GyroBiasCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -504,13 +506,13 @@ struct GyroBiasResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> bias{}; ///< X, Y, Z gyro bias in the sensor frame. [rad/s]
-    friend bool operator==(const GyroBiasResponse &a, const GyroBiasResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.bias == b.bias;
+    friend bool operator==(const GyroBiasResponse &Lhs, const GyroBiasResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bias == Rhs.bias;
     }
-    friend bool operator!=(const GyroBiasResponse &a, const GyroBiasResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroBiasResponse &Lhs, const GyroBiasResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -523,13 +525,13 @@ struct CaptureGyroBias {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t averaging_time_ms{}; ///< Sampling time, 1000 to 30000 ms. [ms]
-    friend bool operator==(const CaptureGyroBias &a, const CaptureGyroBias &b) {
-        (void)a;
-        (void)b;
-        return true && a.averaging_time_ms == b.averaging_time_ms;
+    friend bool operator==(const CaptureGyroBias &Lhs, const CaptureGyroBias &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.averaging_time_ms == Rhs.averaging_time_ms;
     }
-    friend bool operator!=(const CaptureGyroBias &a, const CaptureGyroBias &b) {
-        return !(a == b);
+    friend bool operator!=(const CaptureGyroBias &Lhs, const CaptureGyroBias &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -544,13 +546,13 @@ struct MagHardIronOffsetGx545 {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> offset{};   ///< X, Y, Z hard iron offset. [gauss]
-    friend bool operator==(const MagHardIronOffsetGx545 &a, const MagHardIronOffsetGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.offset == b.offset;
+    friend bool operator==(const MagHardIronOffsetGx545 &Lhs, const MagHardIronOffsetGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const MagHardIronOffsetGx545 &a, const MagHardIronOffsetGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const MagHardIronOffsetGx545 &Lhs, const MagHardIronOffsetGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -565,13 +567,13 @@ struct MagHardIronOffsetCv7Ins {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 3>> offset{};   ///< X, Y, Z hard iron offset in the sensor frame. [gauss]
-    friend bool operator==(const MagHardIronOffsetCv7Ins &a, const MagHardIronOffsetCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.offset == b.offset;
+    friend bool operator==(const MagHardIronOffsetCv7Ins &Lhs, const MagHardIronOffsetCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const MagHardIronOffsetCv7Ins &a, const MagHardIronOffsetCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const MagHardIronOffsetCv7Ins &Lhs, const MagHardIronOffsetCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -584,13 +586,13 @@ struct MagHardIronOffsetResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> offset{}; ///< X, Y, Z hard iron offset in the sensor frame. [gauss]
-    friend bool operator==(const MagHardIronOffsetResponse &a, const MagHardIronOffsetResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.offset == b.offset;
+    friend bool operator==(const MagHardIronOffsetResponse &Lhs, const MagHardIronOffsetResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.offset == Rhs.offset;
     }
-    friend bool operator!=(const MagHardIronOffsetResponse &a, const MagHardIronOffsetResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagHardIronOffsetResponse &Lhs, const MagHardIronOffsetResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -605,13 +607,13 @@ struct MagSoftIronMatrixGx545 {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 9>> matrix{};   ///< Soft iron matrix m11..m33, row-major (dimensionless).
-    friend bool operator==(const MagSoftIronMatrixGx545 &a, const MagSoftIronMatrixGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.matrix == b.matrix;
+    friend bool operator==(const MagSoftIronMatrixGx545 &Lhs, const MagSoftIronMatrixGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.matrix == Rhs.matrix;
     }
-    friend bool operator!=(const MagSoftIronMatrixGx545 &a, const MagSoftIronMatrixGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const MagSoftIronMatrixGx545 &Lhs, const MagSoftIronMatrixGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -626,13 +628,13 @@ struct MagSoftIronMatrixCv7Ins {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::array<float, 9>> matrix{};   ///< Soft iron matrix, row-major (dimensionless).
-    friend bool operator==(const MagSoftIronMatrixCv7Ins &a, const MagSoftIronMatrixCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.matrix == b.matrix;
+    friend bool operator==(const MagSoftIronMatrixCv7Ins &Lhs, const MagSoftIronMatrixCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.matrix == Rhs.matrix;
     }
-    friend bool operator!=(const MagSoftIronMatrixCv7Ins &a, const MagSoftIronMatrixCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const MagSoftIronMatrixCv7Ins &Lhs, const MagSoftIronMatrixCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -645,13 +647,13 @@ struct MagSoftIronMatrixResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 9> matrix{}; ///< Soft iron matrix, row-major (dimensionless).
-    friend bool operator==(const MagSoftIronMatrixResponse &a, const MagSoftIronMatrixResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.matrix == b.matrix;
+    friend bool operator==(const MagSoftIronMatrixResponse &Lhs, const MagSoftIronMatrixResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.matrix == Rhs.matrix;
     }
-    friend bool operator!=(const MagSoftIronMatrixResponse &a, const MagSoftIronMatrixResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MagSoftIronMatrixResponse &Lhs, const MagSoftIronMatrixResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -666,13 +668,13 @@ struct ConingScullingEnable {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<bool>
         enable{}; ///< True enables coning and sculling compensation (0x01), false disables it (0x00).
-    friend bool operator==(const ConingScullingEnable &a, const ConingScullingEnable &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable == b.enable;
+    friend bool operator==(const ConingScullingEnable &Lhs, const ConingScullingEnable &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const ConingScullingEnable &a, const ConingScullingEnable &b) {
-        return !(a == b);
+    friend bool operator!=(const ConingScullingEnable &Lhs, const ConingScullingEnable &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -685,13 +687,13 @@ struct ConingScullingEnableResponse {
     static constexpr const char *kDevice = nullptr;
 
     bool enable{}; ///< True if coning and sculling compensation is enabled.
-    friend bool operator==(const ConingScullingEnableResponse &a, const ConingScullingEnableResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable == b.enable;
+    friend bool operator==(const ConingScullingEnableResponse &Lhs, const ConingScullingEnableResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const ConingScullingEnableResponse &a, const ConingScullingEnableResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ConingScullingEnableResponse &Lhs, const ConingScullingEnableResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -705,13 +707,13 @@ struct UartBaudrate {
 
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::optional<std::uint32_t> baud{}; ///< New baud rate; must be a rate the device supports. [bit/s]
-    friend bool operator==(const UartBaudrate &a, const UartBaudrate &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.baud == b.baud;
+    friend bool operator==(const UartBaudrate &Lhs, const UartBaudrate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.baud == Rhs.baud;
     }
-    friend bool operator!=(const UartBaudrate &a, const UartBaudrate &b) {
-        return !(a == b);
+    friend bool operator!=(const UartBaudrate &Lhs, const UartBaudrate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -724,13 +726,13 @@ struct UartBaudrateResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::uint32_t baud{}; ///< Current baud rate. [bit/s]
-    friend bool operator==(const UartBaudrateResponse &a, const UartBaudrateResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.baud == b.baud;
+    friend bool operator==(const UartBaudrateResponse &Lhs, const UartBaudrateResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.baud == Rhs.baud;
     }
-    friend bool operator!=(const UartBaudrateResponse &a, const UartBaudrateResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const UartBaudrateResponse &Lhs, const UartBaudrateResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -748,14 +750,14 @@ struct GpioConfig {
     std::optional<::mipcodec::types::GpioBehavior>
         behavior{}; ///< Role of the pin within the feature (meaning depends on feature).
     std::optional<::mipcodec::types::GpioPinMode> pin_mode{}; ///< Electrical mode of the pin.
-    friend bool operator==(const GpioConfig &a, const GpioConfig &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.pin == b.pin && a.feature == b.feature &&
-               a.behavior == b.behavior && a.pin_mode == b.pin_mode;
+    friend bool operator==(const GpioConfig &Lhs, const GpioConfig &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.pin == Rhs.pin && Lhs.feature == Rhs.feature &&
+               Lhs.behavior == Rhs.behavior && Lhs.pin_mode == Rhs.pin_mode;
     }
-    friend bool operator!=(const GpioConfig &a, const GpioConfig &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioConfig &Lhs, const GpioConfig &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -771,14 +773,14 @@ struct GpioConfigResponse {
     ::mipcodec::types::GpioFeature feature{};   ///< What the pin is used for.
     ::mipcodec::types::GpioBehavior behavior{}; ///< Role of the pin within the feature.
     ::mipcodec::types::GpioPinMode pin_mode{};  ///< Electrical mode of the pin.
-    friend bool operator==(const GpioConfigResponse &a, const GpioConfigResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.pin == b.pin && a.feature == b.feature && a.behavior == b.behavior &&
-               a.pin_mode == b.pin_mode;
+    friend bool operator==(const GpioConfigResponse &Lhs, const GpioConfigResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pin == Rhs.pin && Lhs.feature == Rhs.feature && Lhs.behavior == Rhs.behavior &&
+               Lhs.pin_mode == Rhs.pin_mode;
     }
-    friend bool operator!=(const GpioConfigResponse &a, const GpioConfigResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioConfigResponse &Lhs, const GpioConfigResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -793,13 +795,13 @@ struct GpioState {
     ::mipcodec::types::FunctionSelector function{}; ///< Function selector.
     std::uint8_t pin{};                             ///< GPIO pin number from 1 (not 0).
     std::optional<bool> state{};                    ///< Pin state (true = high).
-    friend bool operator==(const GpioState &a, const GpioState &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.pin == b.pin && a.state == b.state;
+    friend bool operator==(const GpioState &Lhs, const GpioState &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.pin == Rhs.pin && Lhs.state == Rhs.state;
     }
-    friend bool operator!=(const GpioState &a, const GpioState &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioState &Lhs, const GpioState &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -813,13 +815,13 @@ struct GpioStateResponse {
 
     std::uint8_t pin{}; ///< GPIO pin number from 1.
     bool state{};       ///< Pin state (true = high).
-    friend bool operator==(const GpioStateResponse &a, const GpioStateResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.pin == b.pin && a.state == b.state;
+    friend bool operator==(const GpioStateResponse &Lhs, const GpioStateResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pin == Rhs.pin && Lhs.state == Rhs.state;
     }
-    friend bool operator!=(const GpioStateResponse &a, const GpioStateResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioStateResponse &Lhs, const GpioStateResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -836,14 +838,14 @@ struct OdometerConfig {
     std::optional<float> scaling{}; ///< Encoder pulses per metre (N / (2 pi R), N pulses per revolution, R
                                     ///< wheel radius); negative if the encoder turns backwards. [pulses/m]
     std::optional<float> uncertainty{}; ///< 1-sigma uncertainty of the pulses-to-distance scale. [m/m]
-    friend bool operator==(const OdometerConfig &a, const OdometerConfig &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.mode == b.mode && a.scaling == b.scaling &&
-               a.uncertainty == b.uncertainty;
+    friend bool operator==(const OdometerConfig &Lhs, const OdometerConfig &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.mode == Rhs.mode && Lhs.scaling == Rhs.scaling &&
+               Lhs.uncertainty == Rhs.uncertainty;
     }
-    friend bool operator!=(const OdometerConfig &a, const OdometerConfig &b) {
-        return !(a == b);
+    friend bool operator!=(const OdometerConfig &Lhs, const OdometerConfig &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -858,13 +860,14 @@ struct OdometerConfigResponse {
     ::mipcodec::types::OdometerMode mode{}; ///< Odometer mode.
     float scaling{};                        ///< Encoder pulses per metre. [pulses/m]
     float uncertainty{};                    ///< 1-sigma uncertainty of the scale. [m/m]
-    friend bool operator==(const OdometerConfigResponse &a, const OdometerConfigResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.mode == b.mode && a.scaling == b.scaling && a.uncertainty == b.uncertainty;
+    friend bool operator==(const OdometerConfigResponse &Lhs, const OdometerConfigResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mode == Rhs.mode && Lhs.scaling == Rhs.scaling &&
+               Lhs.uncertainty == Rhs.uncertainty;
     }
-    friend bool operator!=(const OdometerConfigResponse &a, const OdometerConfigResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const OdometerConfigResponse &Lhs, const OdometerConfigResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -884,15 +887,15 @@ struct AdvancedLowpassFilter {
     std::optional<std::uint16_t>
         frequency{}; ///< -3 dB cutoff frequency (at most 250 Hz on GX5-45); ignored when not manual. [Hz]
     std::optional<std::uint8_t> reserved{}; ///< Reserved, send 0.
-    friend bool operator==(const AdvancedLowpassFilter &a, const AdvancedLowpassFilter &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.target_descriptor == b.target_descriptor &&
-               a.enable == b.enable && a.manual == b.manual && a.frequency == b.frequency &&
-               a.reserved == b.reserved;
+    friend bool operator==(const AdvancedLowpassFilter &Lhs, const AdvancedLowpassFilter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.target_descriptor == Rhs.target_descriptor &&
+               Lhs.enable == Rhs.enable && Lhs.manual == Rhs.manual && Lhs.frequency == Rhs.frequency &&
+               Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const AdvancedLowpassFilter &a, const AdvancedLowpassFilter &b) {
-        return !(a == b);
+    friend bool operator!=(const AdvancedLowpassFilter &Lhs, const AdvancedLowpassFilter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -909,14 +912,16 @@ struct AdvancedLowpassFilterResponse {
     bool manual{};                    ///< True if the cutoff was set manually.
     std::uint16_t frequency{};        ///< -3 dB cutoff frequency (unspecified in automatic mode). [Hz]
     std::uint8_t reserved{};          ///< Reserved; ignore.
-    friend bool operator==(const AdvancedLowpassFilterResponse &a, const AdvancedLowpassFilterResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.target_descriptor == b.target_descriptor && a.enable == b.enable &&
-               a.manual == b.manual && a.frequency == b.frequency && a.reserved == b.reserved;
+    friend bool operator==(const AdvancedLowpassFilterResponse &Lhs,
+                           const AdvancedLowpassFilterResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.target_descriptor == Rhs.target_descriptor && Lhs.enable == Rhs.enable &&
+               Lhs.manual == Rhs.manual && Lhs.frequency == Rhs.frequency && Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const AdvancedLowpassFilterResponse &a, const AdvancedLowpassFilterResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AdvancedLowpassFilterResponse &Lhs,
+                           const AdvancedLowpassFilterResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -933,16 +938,16 @@ struct ComplementaryFilter {
     std::optional<bool> heading_enable{}; ///< Enable heading (north) correction; needs a magnetometer.
     std::optional<float> pitch_roll_time_constant{}; ///< Time constant of the pitch/roll correction. [s]
     std::optional<float> heading_time_constant{};    ///< Time constant of the heading correction. [s]
-    friend bool operator==(const ComplementaryFilter &a, const ComplementaryFilter &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.pitch_roll_enable == b.pitch_roll_enable &&
-               a.heading_enable == b.heading_enable &&
-               a.pitch_roll_time_constant == b.pitch_roll_time_constant &&
-               a.heading_time_constant == b.heading_time_constant;
+    friend bool operator==(const ComplementaryFilter &Lhs, const ComplementaryFilter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.pitch_roll_enable == Rhs.pitch_roll_enable &&
+               Lhs.heading_enable == Rhs.heading_enable &&
+               Lhs.pitch_roll_time_constant == Rhs.pitch_roll_time_constant &&
+               Lhs.heading_time_constant == Rhs.heading_time_constant;
     }
-    friend bool operator!=(const ComplementaryFilter &a, const ComplementaryFilter &b) {
-        return !(a == b);
+    friend bool operator!=(const ComplementaryFilter &Lhs, const ComplementaryFilter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -958,15 +963,16 @@ struct ComplementaryFilterResponse {
     bool heading_enable{};            ///< Heading (north) correction enabled.
     float pitch_roll_time_constant{}; ///< Time constant of the pitch/roll correction. [s]
     float heading_time_constant{};    ///< Time constant of the heading correction. [s]
-    friend bool operator==(const ComplementaryFilterResponse &a, const ComplementaryFilterResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.pitch_roll_enable == b.pitch_roll_enable && a.heading_enable == b.heading_enable &&
-               a.pitch_roll_time_constant == b.pitch_roll_time_constant &&
-               a.heading_time_constant == b.heading_time_constant;
+    friend bool operator==(const ComplementaryFilterResponse &Lhs, const ComplementaryFilterResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pitch_roll_enable == Rhs.pitch_roll_enable &&
+               Lhs.heading_enable == Rhs.heading_enable &&
+               Lhs.pitch_roll_time_constant == Rhs.pitch_roll_time_constant &&
+               Lhs.heading_time_constant == Rhs.heading_time_constant;
     }
-    friend bool operator!=(const ComplementaryFilterResponse &a, const ComplementaryFilterResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ComplementaryFilterResponse &Lhs, const ComplementaryFilterResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -982,13 +988,13 @@ struct SensorRange {
     ::mipcodec::types::SensorRangeType
         sensor{};                          ///< Sensor to configure; all only for save, load and default.
     std::optional<std::uint8_t> setting{}; ///< Range setting value (from 0x0C,0x53).
-    friend bool operator==(const SensorRange &a, const SensorRange &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.sensor == b.sensor && a.setting == b.setting;
+    friend bool operator==(const SensorRange &Lhs, const SensorRange &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.sensor == Rhs.sensor && Lhs.setting == Rhs.setting;
     }
-    friend bool operator!=(const SensorRange &a, const SensorRange &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorRange &Lhs, const SensorRange &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1002,13 +1008,13 @@ struct SensorRangeResponse {
 
     ::mipcodec::types::SensorRangeType sensor{}; ///< Sensor.
     std::uint8_t setting{};                      ///< Range setting value.
-    friend bool operator==(const SensorRangeResponse &a, const SensorRangeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.sensor == b.sensor && a.setting == b.setting;
+    friend bool operator==(const SensorRangeResponse &Lhs, const SensorRangeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sensor == Rhs.sensor && Lhs.setting == Rhs.setting;
     }
-    friend bool operator!=(const SensorRangeResponse &a, const SensorRangeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SensorRangeResponse &Lhs, const SensorRangeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1021,13 +1027,13 @@ struct GetCalibratedSensorRanges {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::SensorRangeType sensor{}; ///< Sensor to query (not all).
-    friend bool operator==(const GetCalibratedSensorRanges &a, const GetCalibratedSensorRanges &b) {
-        (void)a;
-        (void)b;
-        return true && a.sensor == b.sensor;
+    friend bool operator==(const GetCalibratedSensorRanges &Lhs, const GetCalibratedSensorRanges &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sensor == Rhs.sensor;
     }
-    friend bool operator!=(const GetCalibratedSensorRanges &a, const GetCalibratedSensorRanges &b) {
-        return !(a == b);
+    friend bool operator!=(const GetCalibratedSensorRanges &Lhs, const GetCalibratedSensorRanges &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1043,13 +1049,14 @@ struct CalibratedSensorRanges {
     std::uint8_t num_ranges{};                   ///< Number of supported ranges.
     ::mipcodec::BoundedVector<::mipcodec::types::SensorRangeEntry, 50>
         ranges{}; ///< Supported (setting, range) pairs.
-    friend bool operator==(const CalibratedSensorRanges &a, const CalibratedSensorRanges &b) {
-        (void)a;
-        (void)b;
-        return true && a.sensor == b.sensor && a.num_ranges == b.num_ranges && a.ranges == b.ranges;
+    friend bool operator==(const CalibratedSensorRanges &Lhs, const CalibratedSensorRanges &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sensor == Rhs.sensor && Lhs.num_ranges == Rhs.num_ranges &&
+               Lhs.ranges == Rhs.ranges;
     }
-    friend bool operator!=(const CalibratedSensorRanges &a, const CalibratedSensorRanges &b) {
-        return !(a == b);
+    friend bool operator!=(const CalibratedSensorRanges &Lhs, const CalibratedSensorRanges &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1069,14 +1076,15 @@ struct LowpassFilter {
     std::optional<bool> manual{}; ///< Use the given frequency; false tracks half the message rate.
     std::optional<float>
         frequency{}; ///< Cutoff frequency (read back in automatic mode: the actual cutoff). [Hz]
-    friend bool operator==(const LowpassFilter &a, const LowpassFilter &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.desc_set == b.desc_set && a.field_desc == b.field_desc &&
-               a.enable == b.enable && a.manual == b.manual && a.frequency == b.frequency;
+    friend bool operator==(const LowpassFilter &Lhs, const LowpassFilter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.desc_set == Rhs.desc_set &&
+               Lhs.field_desc == Rhs.field_desc && Lhs.enable == Rhs.enable && Lhs.manual == Rhs.manual &&
+               Lhs.frequency == Rhs.frequency;
     }
-    friend bool operator!=(const LowpassFilter &a, const LowpassFilter &b) {
-        return !(a == b);
+    friend bool operator!=(const LowpassFilter &Lhs, const LowpassFilter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1093,14 +1101,14 @@ struct LowpassFilterResponse {
     bool enable{};             ///< True if the filter is enabled.
     bool manual{};             ///< True if the frequency was set manually.
     float frequency{};         ///< Cutoff frequency (the actual one in automatic mode). [Hz]
-    friend bool operator==(const LowpassFilterResponse &a, const LowpassFilterResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.field_desc == b.field_desc && a.enable == b.enable &&
-               a.manual == b.manual && a.frequency == b.frequency;
+    friend bool operator==(const LowpassFilterResponse &Lhs, const LowpassFilterResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.field_desc == Rhs.field_desc &&
+               Lhs.enable == Rhs.enable && Lhs.manual == Rhs.manual && Lhs.frequency == Rhs.frequency;
     }
-    friend bool operator!=(const LowpassFilterResponse &a, const LowpassFilterResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const LowpassFilterResponse &Lhs, const LowpassFilterResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1116,14 +1124,14 @@ struct PollImuData {
     std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
     ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
         descriptors{}; ///< Descriptors to poll, in output order.
-    friend bool operator==(const PollImuData &a, const PollImuData &b) {
-        (void)a;
-        (void)b;
-        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const PollImuData &Lhs, const PollImuData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.option == Rhs.option && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const PollImuData &a, const PollImuData &b) {
-        return !(a == b);
+    friend bool operator!=(const PollImuData &Lhs, const PollImuData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1139,14 +1147,14 @@ struct PollGnssData {
     std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
     ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
         descriptors{}; ///< Descriptors to poll, in output order.
-    friend bool operator==(const PollGnssData &a, const PollGnssData &b) {
-        (void)a;
-        (void)b;
-        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const PollGnssData &Lhs, const PollGnssData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.option == Rhs.option && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const PollGnssData &a, const PollGnssData &b) {
-        return !(a == b);
+    friend bool operator!=(const PollGnssData &Lhs, const PollGnssData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1162,14 +1170,14 @@ struct PollFilterData {
     std::uint8_t num_descriptors{};            ///< Number of descriptors; 0 uses the stored message format.
     ::mipcodec::BoundedVector<::mipcodec::types::Gx5PollDescriptor, 83>
         descriptors{}; ///< Descriptors to poll, in output order.
-    friend bool operator==(const PollFilterData &a, const PollFilterData &b) {
-        (void)a;
-        (void)b;
-        return true && a.option == b.option && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const PollFilterData &Lhs, const PollFilterData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.option == Rhs.option && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const PollFilterData &a, const PollFilterData &b) {
-        return !(a == b);
+    friend bool operator!=(const PollFilterData &Lhs, const PollFilterData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1184,14 +1192,14 @@ struct PollNmeaData {
     bool suppress_ack{};  ///< Do not send the ACK/NACK reply.
     std::uint8_t count{}; ///< Number of format entries.
     ::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50> format_entries{}; ///< Sentences to produce.
-    friend bool operator==(const PollNmeaData &a, const PollNmeaData &b) {
-        (void)a;
-        (void)b;
-        return true && a.suppress_ack == b.suppress_ack && a.count == b.count &&
-               a.format_entries == b.format_entries;
+    friend bool operator==(const PollNmeaData &Lhs, const PollNmeaData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.suppress_ack == Rhs.suppress_ack && Lhs.count == Rhs.count &&
+               Lhs.format_entries == Rhs.format_entries;
     }
-    friend bool operator!=(const PollNmeaData &a, const PollNmeaData &b) {
-        return !(a == b);
+    friend bool operator!=(const PollNmeaData &Lhs, const PollNmeaData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1207,14 +1215,14 @@ struct PollData {
     bool suppress_ack{};                                        ///< Do not send the ACK/NACK reply.
     std::uint8_t num_descriptors{};                             ///< Number of descriptors.
     ::mipcodec::BoundedVector<std::uint8_t, 250> descriptors{}; ///< Field descriptors, in output order.
-    friend bool operator==(const PollData &a, const PollData &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.suppress_ack == b.suppress_ack &&
-               a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    friend bool operator==(const PollData &Lhs, const PollData &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.suppress_ack == Rhs.suppress_ack &&
+               Lhs.num_descriptors == Rhs.num_descriptors && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const PollData &a, const PollData &b) {
-        return !(a == b);
+    friend bool operator!=(const PollData &Lhs, const PollData &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1226,13 +1234,13 @@ struct GetImuBaseRate {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetImuBaseRate &a, const GetImuBaseRate &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetImuBaseRate &Lhs, const GetImuBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetImuBaseRate &a, const GetImuBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GetImuBaseRate &Lhs, const GetImuBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1245,13 +1253,13 @@ struct ImuBaseRate {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
-    friend bool operator==(const ImuBaseRate &a, const ImuBaseRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.rate == b.rate;
+    friend bool operator==(const ImuBaseRate &Lhs, const ImuBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.rate == Rhs.rate;
     }
-    friend bool operator!=(const ImuBaseRate &a, const ImuBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const ImuBaseRate &Lhs, const ImuBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1263,13 +1271,13 @@ struct GetGnssBaseRate {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetGnssBaseRate &a, const GetGnssBaseRate &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetGnssBaseRate &Lhs, const GetGnssBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetGnssBaseRate &a, const GetGnssBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GetGnssBaseRate &Lhs, const GetGnssBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1282,13 +1290,13 @@ struct GnssBaseRate {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
-    friend bool operator==(const GnssBaseRate &a, const GnssBaseRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.rate == b.rate;
+    friend bool operator==(const GnssBaseRate &Lhs, const GnssBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.rate == Rhs.rate;
     }
-    friend bool operator!=(const GnssBaseRate &a, const GnssBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssBaseRate &Lhs, const GnssBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1300,13 +1308,13 @@ struct GetFilterBaseRate {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetFilterBaseRate &a, const GetFilterBaseRate &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetFilterBaseRate &Lhs, const GetFilterBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetFilterBaseRate &a, const GetFilterBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GetFilterBaseRate &Lhs, const GetFilterBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1319,13 +1327,13 @@ struct FilterBaseRate {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t rate{}; ///< Base rate used for rate decimation calculations. [Hz]
-    friend bool operator==(const FilterBaseRate &a, const FilterBaseRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.rate == b.rate;
+    friend bool operator==(const FilterBaseRate &Lhs, const FilterBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.rate == Rhs.rate;
     }
-    friend bool operator!=(const FilterBaseRate &a, const FilterBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterBaseRate &Lhs, const FilterBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1338,13 +1346,13 @@ struct GetBaseRate {
     static constexpr const char *kDevice = nullptr;
 
     std::uint8_t desc_set{}; ///< Data descriptor set (must be supported).
-    friend bool operator==(const GetBaseRate &a, const GetBaseRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set;
+    friend bool operator==(const GetBaseRate &Lhs, const GetBaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set;
     }
-    friend bool operator!=(const GetBaseRate &a, const GetBaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GetBaseRate &Lhs, const GetBaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1358,13 +1366,13 @@ struct BaseRate {
 
     std::uint8_t desc_set{}; ///< Echo of the descriptor set in the command.
     std::uint16_t rate{};    ///< Base rate; 0 means variable or unknown (data sent as it arrives). [Hz]
-    friend bool operator==(const BaseRate &a, const BaseRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.rate == b.rate;
+    friend bool operator==(const BaseRate &Lhs, const BaseRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.rate == Rhs.rate;
     }
-    friend bool operator!=(const BaseRate &a, const BaseRate &b) {
-        return !(a == b);
+    friend bool operator!=(const BaseRate &Lhs, const BaseRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1381,14 +1389,14 @@ struct ImuMessageFormat {
                                                     ///< write, which may also leave it out).
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
-    friend bool operator==(const ImuMessageFormat &a, const ImuMessageFormat &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const ImuMessageFormat &Lhs, const ImuMessageFormat &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const ImuMessageFormat &a, const ImuMessageFormat &b) {
-        return !(a == b);
+    friend bool operator!=(const ImuMessageFormat &Lhs, const ImuMessageFormat &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1403,13 +1411,13 @@ struct ImuMessageFormatResponse {
     std::uint8_t num_descriptors{}; ///< Number of descriptors.
     ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
         descriptors{}; ///< Descriptors and rate decimations.
-    friend bool operator==(const ImuMessageFormatResponse &a, const ImuMessageFormatResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    friend bool operator==(const ImuMessageFormatResponse &Lhs, const ImuMessageFormatResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.num_descriptors == Rhs.num_descriptors && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const ImuMessageFormatResponse &a, const ImuMessageFormatResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const ImuMessageFormatResponse &Lhs, const ImuMessageFormatResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1426,14 +1434,14 @@ struct GnssMessageFormat {
                                                     ///< write, which may also leave it out).
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
-    friend bool operator==(const GnssMessageFormat &a, const GnssMessageFormat &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const GnssMessageFormat &Lhs, const GnssMessageFormat &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const GnssMessageFormat &a, const GnssMessageFormat &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssMessageFormat &Lhs, const GnssMessageFormat &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1448,13 +1456,13 @@ struct GnssMessageFormatResponse {
     std::uint8_t num_descriptors{}; ///< Number of descriptors.
     ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
         descriptors{}; ///< Descriptors and rate decimations.
-    friend bool operator==(const GnssMessageFormatResponse &a, const GnssMessageFormatResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    friend bool operator==(const GnssMessageFormatResponse &Lhs, const GnssMessageFormatResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.num_descriptors == Rhs.num_descriptors && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const GnssMessageFormatResponse &a, const GnssMessageFormatResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssMessageFormatResponse &Lhs, const GnssMessageFormatResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1471,14 +1479,14 @@ struct FilterMessageFormat {
                                                     ///< write, which may also leave it out).
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and rate decimations (decimation = base rate / desired rate).
-    friend bool operator==(const FilterMessageFormat &a, const FilterMessageFormat &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const FilterMessageFormat &Lhs, const FilterMessageFormat &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const FilterMessageFormat &a, const FilterMessageFormat &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterMessageFormat &Lhs, const FilterMessageFormat &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1493,13 +1501,13 @@ struct FilterMessageFormatResponse {
     std::uint8_t num_descriptors{}; ///< Number of descriptors.
     ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 84>
         descriptors{}; ///< Descriptors and rate decimations.
-    friend bool operator==(const FilterMessageFormatResponse &a, const FilterMessageFormatResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    friend bool operator==(const FilterMessageFormatResponse &Lhs, const FilterMessageFormatResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.num_descriptors == Rhs.num_descriptors && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const FilterMessageFormatResponse &a, const FilterMessageFormatResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterMessageFormatResponse &Lhs, const FilterMessageFormatResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1515,13 +1523,14 @@ struct NmeaMessageFormat {
     std::optional<std::uint8_t> count{};            ///< Number of format entries.
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50>>
         format_entries{}; ///< Sentences, talkers, sources and decimations.
-    friend bool operator==(const NmeaMessageFormat &a, const NmeaMessageFormat &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.count == b.count && a.format_entries == b.format_entries;
+    friend bool operator==(const NmeaMessageFormat &Lhs, const NmeaMessageFormat &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.count == Rhs.count &&
+               Lhs.format_entries == Rhs.format_entries;
     }
-    friend bool operator!=(const NmeaMessageFormat &a, const NmeaMessageFormat &b) {
-        return !(a == b);
+    friend bool operator!=(const NmeaMessageFormat &Lhs, const NmeaMessageFormat &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1536,13 +1545,13 @@ struct NmeaMessageFormatResponse {
     std::uint8_t count{}; ///< Number of format entries.
     ::mipcodec::BoundedVector<::mipcodec::types::NmeaMessage, 50>
         format_entries{}; ///< Sentences, talkers, sources and decimations.
-    friend bool operator==(const NmeaMessageFormatResponse &a, const NmeaMessageFormatResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.count == b.count && a.format_entries == b.format_entries;
+    friend bool operator==(const NmeaMessageFormatResponse &Lhs, const NmeaMessageFormatResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.count == Rhs.count && Lhs.format_entries == Rhs.format_entries;
     }
-    friend bool operator!=(const NmeaMessageFormatResponse &a, const NmeaMessageFormatResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const NmeaMessageFormatResponse &Lhs, const NmeaMessageFormatResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1559,14 +1568,14 @@ struct MessageFormat {
     std::optional<std::uint8_t> num_descriptors{}; ///< Number of descriptors.
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>>
         descriptors{}; ///< Descriptors and decimations.
-    friend bool operator==(const MessageFormat &a, const MessageFormat &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.desc_set == b.desc_set &&
-               a.num_descriptors == b.num_descriptors && a.descriptors == b.descriptors;
+    friend bool operator==(const MessageFormat &Lhs, const MessageFormat &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.desc_set == Rhs.desc_set &&
+               Lhs.num_descriptors == Rhs.num_descriptors && Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const MessageFormat &a, const MessageFormat &b) {
-        return !(a == b);
+    friend bool operator!=(const MessageFormat &Lhs, const MessageFormat &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1582,14 +1591,14 @@ struct MessageFormatResponse {
     std::uint8_t num_descriptors{}; ///< Number of descriptors.
     ::mipcodec::BoundedVector<::mipcodec::types::DescriptorRate, 83>
         descriptors{}; ///< Descriptors and decimations.
-    friend bool operator==(const MessageFormatResponse &a, const MessageFormatResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.num_descriptors == b.num_descriptors &&
-               a.descriptors == b.descriptors;
+    friend bool operator==(const MessageFormatResponse &Lhs, const MessageFormatResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.num_descriptors == Rhs.num_descriptors &&
+               Lhs.descriptors == Rhs.descriptors;
     }
-    friend bool operator!=(const MessageFormatResponse &a, const MessageFormatResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const MessageFormatResponse &Lhs, const MessageFormatResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1604,13 +1613,13 @@ struct FactoryStreaming {
     ::mipcodec::types::FactoryStreamingAction
         action{};            ///< How to combine the support descriptors with the current formats.
     std::uint8_t reserved{}; ///< Reserved; set to 0x00.
-    friend bool operator==(const FactoryStreaming &a, const FactoryStreaming &b) {
-        (void)a;
-        (void)b;
-        return true && a.action == b.action && a.reserved == b.reserved;
+    friend bool operator==(const FactoryStreaming &Lhs, const FactoryStreaming &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.action == Rhs.action && Lhs.reserved == Rhs.reserved;
     }
-    friend bool operator!=(const FactoryStreaming &a, const FactoryStreaming &b) {
-        return !(a == b);
+    friend bool operator!=(const FactoryStreaming &Lhs, const FactoryStreaming &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1627,14 +1636,14 @@ struct DataStreamControlGx545 {
     ::mipcodec::types::Gx5StreamSelector device_selector{}; ///< Stream to control.
     std::optional<std::uint8_t> enable{}; ///< 0x00 disable, 0x01 enable (default); ignored except for write,
                                           ///< and may be left out by the other functions.
-    friend bool operator==(const DataStreamControlGx545 &a, const DataStreamControlGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.device_selector == b.device_selector &&
-               a.enable == b.enable;
+    friend bool operator==(const DataStreamControlGx545 &Lhs, const DataStreamControlGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.device_selector == Rhs.device_selector &&
+               Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const DataStreamControlGx545 &a, const DataStreamControlGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const DataStreamControlGx545 &Lhs, const DataStreamControlGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1651,13 +1660,14 @@ struct DataStreamControlCv7Ins {
     std::uint8_t
         desc_set{}; ///< Data descriptor set of the stream; 0 means all streams for save, load and default.
     std::optional<bool> enable{}; ///< Enable (true) or disable (false) the stream.
-    friend bool operator==(const DataStreamControlCv7Ins &a, const DataStreamControlCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.desc_set == b.desc_set && a.enable == b.enable;
+    friend bool operator==(const DataStreamControlCv7Ins &Lhs, const DataStreamControlCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.desc_set == Rhs.desc_set &&
+               Lhs.enable == Rhs.enable;
     }
-    friend bool operator!=(const DataStreamControlCv7Ins &a, const DataStreamControlCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const DataStreamControlCv7Ins &Lhs, const DataStreamControlCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1672,13 +1682,15 @@ struct DataStreamControlResponseGx545 {
 
     ::mipcodec::types::Gx5StreamSelector device_selector{}; ///< Stream.
     std::uint8_t enabled{}; ///< Current enable flag: 0x00 disabled, 0x01 enabled.
-    friend bool operator==(const DataStreamControlResponseGx545 &a, const DataStreamControlResponseGx545 &b) {
-        (void)a;
-        (void)b;
-        return true && a.device_selector == b.device_selector && a.enabled == b.enabled;
+    friend bool operator==(const DataStreamControlResponseGx545 &Lhs,
+                           const DataStreamControlResponseGx545 &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.device_selector == Rhs.device_selector && Lhs.enabled == Rhs.enabled;
     }
-    friend bool operator!=(const DataStreamControlResponseGx545 &a, const DataStreamControlResponseGx545 &b) {
-        return !(a == b);
+    friend bool operator!=(const DataStreamControlResponseGx545 &Lhs,
+                           const DataStreamControlResponseGx545 &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1693,15 +1705,15 @@ struct DataStreamControlResponseCv7Ins {
 
     std::uint8_t desc_set{}; ///< Data descriptor set of the stream.
     bool enabled{};          ///< Whether the stream is enabled.
-    friend bool operator==(const DataStreamControlResponseCv7Ins &a,
-                           const DataStreamControlResponseCv7Ins &b) {
-        (void)a;
-        (void)b;
-        return true && a.desc_set == b.desc_set && a.enabled == b.enabled;
+    friend bool operator==(const DataStreamControlResponseCv7Ins &Lhs,
+                           const DataStreamControlResponseCv7Ins &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.desc_set == Rhs.desc_set && Lhs.enabled == Rhs.enabled;
     }
-    friend bool operator!=(const DataStreamControlResponseCv7Ins &a,
-                           const DataStreamControlResponseCv7Ins &b) {
-        return !(a == b);
+    friend bool operator!=(const DataStreamControlResponseCv7Ins &Lhs,
+                           const DataStreamControlResponseCv7Ins &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1714,13 +1726,13 @@ struct RawRtcmMessage {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::BoundedVector<std::uint8_t, 253> data{}; ///< Raw RTCM 2.3 bytes, passed through unchanged.
-    friend bool operator==(const RawRtcmMessage &a, const RawRtcmMessage &b) {
-        (void)a;
-        (void)b;
-        return true && a.data == b.data;
+    friend bool operator==(const RawRtcmMessage &Lhs, const RawRtcmMessage &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.data == Rhs.data;
     }
-    friend bool operator!=(const RawRtcmMessage &a, const RawRtcmMessage &b) {
-        return !(a == b);
+    friend bool operator!=(const RawRtcmMessage &Lhs, const RawRtcmMessage &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1738,14 +1750,14 @@ struct GnssConstellationSettings {
     std::optional<std::uint8_t> config_count{}; ///< Number of constellation entries.
     std::optional<::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>>
         settings{}; ///< Per-constellation settings.
-    friend bool operator==(const GnssConstellationSettings &a, const GnssConstellationSettings &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.max_channels == b.max_channels &&
-               a.config_count == b.config_count && a.settings == b.settings;
+    friend bool operator==(const GnssConstellationSettings &Lhs, const GnssConstellationSettings &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.max_channels == Rhs.max_channels &&
+               Lhs.config_count == Rhs.config_count && Lhs.settings == Rhs.settings;
     }
-    friend bool operator!=(const GnssConstellationSettings &a, const GnssConstellationSettings &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssConstellationSettings &Lhs, const GnssConstellationSettings &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1762,17 +1774,17 @@ struct GnssConstellationSettingsResponse {
     std::uint8_t config_count{};            ///< Number of constellation entries.
     ::mipcodec::BoundedVector<::mipcodec::types::ConstellationSettings, 41>
         settings{}; ///< Per-constellation settings.
-    friend bool operator==(const GnssConstellationSettingsResponse &a,
-                           const GnssConstellationSettingsResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.max_channels_available == b.max_channels_available &&
-               a.max_channels == b.max_channels && a.config_count == b.config_count &&
-               a.settings == b.settings;
+    friend bool operator==(const GnssConstellationSettingsResponse &Lhs,
+                           const GnssConstellationSettingsResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.max_channels_available == Rhs.max_channels_available &&
+               Lhs.max_channels == Rhs.max_channels && Lhs.config_count == Rhs.config_count &&
+               Lhs.settings == Rhs.settings;
     }
-    friend bool operator!=(const GnssConstellationSettingsResponse &a,
-                           const GnssConstellationSettingsResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssConstellationSettingsResponse &Lhs,
+                           const GnssConstellationSettingsResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1790,15 +1802,15 @@ struct GnssSbasSettings {
     std::optional<std::uint8_t> num_included_prns{}; ///< Number of SBAS PRNs listed; 0 includes all.
     std::optional<::mipcodec::BoundedVector<std::uint16_t, 124>>
         included_prns{}; ///< SBAS PRNs to search for.
-    friend bool operator==(const GnssSbasSettings &a, const GnssSbasSettings &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.enable_sbas == b.enable_sbas &&
-               a.sbas_options == b.sbas_options && a.num_included_prns == b.num_included_prns &&
-               a.included_prns == b.included_prns;
+    friend bool operator==(const GnssSbasSettings &Lhs, const GnssSbasSettings &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.enable_sbas == Rhs.enable_sbas &&
+               Lhs.sbas_options == Rhs.sbas_options && Lhs.num_included_prns == Rhs.num_included_prns &&
+               Lhs.included_prns == Rhs.included_prns;
     }
-    friend bool operator!=(const GnssSbasSettings &a, const GnssSbasSettings &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssSbasSettings &Lhs, const GnssSbasSettings &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1814,14 +1826,14 @@ struct GnssSbasSettingsResponse {
     ::mipcodec::types::SbasOptions sbas_options{}; ///< SBAS options.
     std::uint8_t num_included_prns{};              ///< Number of SBAS PRNs listed; 0 means all.
     ::mipcodec::BoundedVector<std::uint16_t, 124> included_prns{}; ///< SBAS PRNs searched for.
-    friend bool operator==(const GnssSbasSettingsResponse &a, const GnssSbasSettingsResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.enable_sbas == b.enable_sbas && a.sbas_options == b.sbas_options &&
-               a.num_included_prns == b.num_included_prns && a.included_prns == b.included_prns;
+    friend bool operator==(const GnssSbasSettingsResponse &Lhs, const GnssSbasSettingsResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.enable_sbas == Rhs.enable_sbas && Lhs.sbas_options == Rhs.sbas_options &&
+               Lhs.num_included_prns == Rhs.num_included_prns && Lhs.included_prns == Rhs.included_prns;
     }
-    friend bool operator!=(const GnssSbasSettingsResponse &a, const GnssSbasSettingsResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssSbasSettingsResponse &Lhs, const GnssSbasSettingsResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1836,13 +1848,13 @@ struct GnssAssistedFixControl {
     ::mipcodec::types::FunctionSelector function{};               ///< Function selector.
     std::optional<::mipcodec::types::AssistedFixOption> option{}; ///< Assisted fix on or off.
     std::optional<std::uint8_t> flags{};                          ///< No flags defined; set to 0xFF.
-    friend bool operator==(const GnssAssistedFixControl &a, const GnssAssistedFixControl &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.option == b.option && a.flags == b.flags;
+    friend bool operator==(const GnssAssistedFixControl &Lhs, const GnssAssistedFixControl &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.option == Rhs.option && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const GnssAssistedFixControl &a, const GnssAssistedFixControl &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAssistedFixControl &Lhs, const GnssAssistedFixControl &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1856,13 +1868,15 @@ struct GnssAssistedFixControlResponse {
 
     ::mipcodec::types::AssistedFixOption option{}; ///< Assisted fix on or off.
     std::uint8_t flags{};                          ///< Assisted fix flags.
-    friend bool operator==(const GnssAssistedFixControlResponse &a, const GnssAssistedFixControlResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.option == b.option && a.flags == b.flags;
+    friend bool operator==(const GnssAssistedFixControlResponse &Lhs,
+                           const GnssAssistedFixControlResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.option == Rhs.option && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const GnssAssistedFixControlResponse &a, const GnssAssistedFixControlResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAssistedFixControlResponse &Lhs,
+                           const GnssAssistedFixControlResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1878,14 +1892,14 @@ struct GnssAssistTimeUpdate {
     std::optional<double> tow{};                    ///< GPS time of week. [s]
     std::optional<std::uint16_t> week_number{};     ///< GPS week number.
     std::optional<float> accuracy{};                ///< Accuracy of the given time. [s]
-    friend bool operator==(const GnssAssistTimeUpdate &a, const GnssAssistTimeUpdate &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.tow == b.tow && a.week_number == b.week_number &&
-               a.accuracy == b.accuracy;
+    friend bool operator==(const GnssAssistTimeUpdate &Lhs, const GnssAssistTimeUpdate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.tow == Rhs.tow &&
+               Lhs.week_number == Rhs.week_number && Lhs.accuracy == Rhs.accuracy;
     }
-    friend bool operator!=(const GnssAssistTimeUpdate &a, const GnssAssistTimeUpdate &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAssistTimeUpdate &Lhs, const GnssAssistTimeUpdate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1900,13 +1914,14 @@ struct GnssAssistTimeUpdateResponse {
     double tow{};                ///< GPS time of week. [s]
     std::uint16_t week_number{}; ///< GPS week number.
     float accuracy{};            ///< Time accuracy. [s]
-    friend bool operator==(const GnssAssistTimeUpdateResponse &a, const GnssAssistTimeUpdateResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.tow == b.tow && a.week_number == b.week_number && a.accuracy == b.accuracy;
+    friend bool operator==(const GnssAssistTimeUpdateResponse &Lhs, const GnssAssistTimeUpdateResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.tow == Rhs.tow && Lhs.week_number == Rhs.week_number &&
+               Lhs.accuracy == Rhs.accuracy;
     }
-    friend bool operator!=(const GnssAssistTimeUpdateResponse &a, const GnssAssistTimeUpdateResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GnssAssistTimeUpdateResponse &Lhs, const GnssAssistTimeUpdateResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1920,13 +1935,13 @@ struct PpsSource {
 
     ::mipcodec::types::FunctionSelector function{};       ///< Function selector.
     std::optional<::mipcodec::types::PpsSource> source{}; ///< PPS source.
-    friend bool operator==(const PpsSource &a, const PpsSource &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.source == b.source;
+    friend bool operator==(const PpsSource &Lhs, const PpsSource &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const PpsSource &a, const PpsSource &b) {
-        return !(a == b);
+    friend bool operator!=(const PpsSource &Lhs, const PpsSource &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1939,13 +1954,13 @@ struct PpsSourceResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::PpsSource source{}; ///< PPS source.
-    friend bool operator==(const PpsSourceResponse &a, const PpsSourceResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.source == b.source;
+    friend bool operator==(const PpsSourceResponse &Lhs, const PpsSourceResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.source == Rhs.source;
     }
-    friend bool operator!=(const PpsSourceResponse &a, const PpsSourceResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const PpsSourceResponse &Lhs, const PpsSourceResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1958,13 +1973,13 @@ struct GetSupportedEvents {
     static constexpr const char *kDevice = nullptr;
 
     ::mipcodec::types::SupportedEventsQuery query{}; ///< Trigger types or action types.
-    friend bool operator==(const GetSupportedEvents &a, const GetSupportedEvents &b) {
-        (void)a;
-        (void)b;
-        return true && a.query == b.query;
+    friend bool operator==(const GetSupportedEvents &Lhs, const GetSupportedEvents &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.query == Rhs.query;
     }
-    friend bool operator!=(const GetSupportedEvents &a, const GetSupportedEvents &b) {
-        return !(a == b);
+    friend bool operator!=(const GetSupportedEvents &Lhs, const GetSupportedEvents &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1978,13 +1993,13 @@ struct SupportedEvents {
 
     ::mipcodec::types::SupportedEventsQuery query{}; ///< Echo of the query.
     ::mipcodec::types::SupportedEventsInfo info{};   ///< Slots and supported types.
-    friend bool operator==(const SupportedEvents &a, const SupportedEvents &b) {
-        (void)a;
-        (void)b;
-        return true && a.query == b.query && a.info == b.info;
+    friend bool operator==(const SupportedEvents &Lhs, const SupportedEvents &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.query == Rhs.query && Lhs.info == Rhs.info;
     }
-    friend bool operator!=(const SupportedEvents &a, const SupportedEvents &b) {
-        return !(a == b);
+    friend bool operator!=(const SupportedEvents &Lhs, const SupportedEvents &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -1998,13 +2013,13 @@ struct DeviceStatus {
 
     std::uint16_t model_number{}; ///< Device model number; 6251 (0x186B) for the 3DM-GX5-45.
     ::mipcodec::types::DeviceStatusSelector status_selector{}; ///< Which status structure to return.
-    friend bool operator==(const DeviceStatus &a, const DeviceStatus &b) {
-        (void)a;
-        (void)b;
-        return true && a.model_number == b.model_number && a.status_selector == b.status_selector;
+    friend bool operator==(const DeviceStatus &Lhs, const DeviceStatus &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.model_number == Rhs.model_number && Lhs.status_selector == Rhs.status_selector;
     }
-    friend bool operator!=(const DeviceStatus &a, const DeviceStatus &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceStatus &Lhs, const DeviceStatus &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -2019,14 +2034,14 @@ struct DeviceStatusResponse {
     std::uint16_t model_number{};                              ///< Echo of the model number.
     ::mipcodec::types::DeviceStatusSelector status_selector{}; ///< Echo of the status selector.
     ::mipcodec::types::Gx5DeviceStatus status{};               ///< The selected status structure.
-    friend bool operator==(const DeviceStatusResponse &a, const DeviceStatusResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.model_number == b.model_number && a.status_selector == b.status_selector &&
-               a.status == b.status;
+    friend bool operator==(const DeviceStatusResponse &Lhs, const DeviceStatusResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.model_number == Rhs.model_number && Lhs.status_selector == Rhs.status_selector &&
+               Lhs.status == Rhs.status;
     }
-    friend bool operator!=(const DeviceStatusResponse &a, const DeviceStatusResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceStatusResponse &Lhs, const DeviceStatusResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -21,13 +21,13 @@ struct Ping {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const Ping &a, const Ping &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const Ping &Lhs, const Ping &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const Ping &a, const Ping &b) {
-        return !(a == b);
+    friend bool operator!=(const Ping &Lhs, const Ping &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -39,13 +39,13 @@ struct GetDeviceMessages {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceMessages &a, const GetDeviceMessages &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceMessages &Lhs, const GetDeviceMessages &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceMessages &a, const GetDeviceMessages &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceMessages &Lhs, const GetDeviceMessages &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -59,13 +59,13 @@ struct DeviceMessages {
 
     ::mscipcodec::BoundedVector<::mscipcodec::types::MessageId, 126>
         messages{}; ///< Supported messages ("2 * number of commands in bytes").
-    friend bool operator==(const DeviceMessages &a, const DeviceMessages &b) {
-        (void)a;
-        (void)b;
-        return true && a.messages == b.messages;
+    friend bool operator==(const DeviceMessages &Lhs, const DeviceMessages &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.messages == Rhs.messages;
     }
-    friend bool operator!=(const DeviceMessages &a, const DeviceMessages &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceMessages &Lhs, const DeviceMessages &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -77,13 +77,13 @@ struct DeviceReset {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const DeviceReset &a, const DeviceReset &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const DeviceReset &Lhs, const DeviceReset &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const DeviceReset &a, const DeviceReset &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceReset &Lhs, const DeviceReset &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -95,13 +95,13 @@ struct GetDeviceModel {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceModel &a, const GetDeviceModel &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceModel &Lhs, const GetDeviceModel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceModel &a, const GetDeviceModel &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceModel &Lhs, const GetDeviceModel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -114,13 +114,13 @@ struct DeviceModel {
     static constexpr const char *kDevice = nullptr;
 
     std::array<char, 16> model{}; ///< Device model, e.g. " MS_IMU3020".
-    friend bool operator==(const DeviceModel &a, const DeviceModel &b) {
-        (void)a;
-        (void)b;
-        return true && a.model == b.model;
+    friend bool operator==(const DeviceModel &Lhs, const DeviceModel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.model == Rhs.model;
     }
-    friend bool operator!=(const DeviceModel &a, const DeviceModel &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceModel &Lhs, const DeviceModel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -132,13 +132,13 @@ struct GetDeviceSn {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceSn &a, const GetDeviceSn &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceSn &Lhs, const GetDeviceSn &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceSn &a, const GetDeviceSn &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceSn &Lhs, const GetDeviceSn &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -151,13 +151,13 @@ struct DeviceSn {
     static constexpr const char *kDevice = nullptr;
 
     std::array<char, 16> serial_number{}; ///< Serial number, e.g. " 20268".
-    friend bool operator==(const DeviceSn &a, const DeviceSn &b) {
-        (void)a;
-        (void)b;
-        return true && a.serial_number == b.serial_number;
+    friend bool operator==(const DeviceSn &Lhs, const DeviceSn &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.serial_number == Rhs.serial_number;
     }
-    friend bool operator!=(const DeviceSn &a, const DeviceSn &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceSn &Lhs, const DeviceSn &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -169,13 +169,13 @@ struct GetDeviceFw {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceFw &a, const GetDeviceFw &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceFw &Lhs, const GetDeviceFw &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceFw &a, const GetDeviceFw &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceFw &Lhs, const GetDeviceFw &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -188,13 +188,13 @@ struct DeviceFw {
     static constexpr const char *kDevice = nullptr;
 
     std::array<char, 16> firmware{}; ///< Firmware revision, e.g. " R_1_2_3".
-    friend bool operator==(const DeviceFw &a, const DeviceFw &b) {
-        (void)a;
-        (void)b;
-        return true && a.firmware == b.firmware;
+    friend bool operator==(const DeviceFw &Lhs, const DeviceFw &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.firmware == Rhs.firmware;
     }
-    friend bool operator!=(const DeviceFw &a, const DeviceFw &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceFw &Lhs, const DeviceFw &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -206,13 +206,13 @@ struct GetDeviceCal {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetDeviceCal &a, const GetDeviceCal &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetDeviceCal &Lhs, const GetDeviceCal &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetDeviceCal &a, const GetDeviceCal &b) {
-        return !(a == b);
+    friend bool operator!=(const GetDeviceCal &Lhs, const GetDeviceCal &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -225,13 +225,13 @@ struct DeviceCal {
     static constexpr const char *kDevice = nullptr;
 
     std::array<char, 16> date{}; ///< Calibration date MM-DD-YYYY, e.g. " 05-08-2015".
-    friend bool operator==(const DeviceCal &a, const DeviceCal &b) {
-        (void)a;
-        (void)b;
-        return true && a.date == b.date;
+    friend bool operator==(const DeviceCal &Lhs, const DeviceCal &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.date == Rhs.date;
     }
-    friend bool operator!=(const DeviceCal &a, const DeviceCal &b) {
-        return !(a == b);
+    friend bool operator!=(const DeviceCal &Lhs, const DeviceCal &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -245,13 +245,13 @@ struct CorrelateGpsTime {
 
     std::uint16_t week{};    ///< GPS week number. [weeks]
     std::uint32_t seconds{}; ///< GPS time of week in whole seconds. [s]
-    friend bool operator==(const CorrelateGpsTime &a, const CorrelateGpsTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.week == b.week && a.seconds == b.seconds;
+    friend bool operator==(const CorrelateGpsTime &Lhs, const CorrelateGpsTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.week == Rhs.week && Lhs.seconds == Rhs.seconds;
     }
-    friend bool operator!=(const CorrelateGpsTime &a, const CorrelateGpsTime &b) {
-        return !(a == b);
+    friend bool operator!=(const CorrelateGpsTime &Lhs, const CorrelateGpsTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -23,13 +23,13 @@ struct UartBaudRate {
 
     ::mscipcodec::types::FunctionCode function{};             ///< Function selector.
     std::optional<::mscipcodec::types::BaudRate> baud_rate{}; ///< New baud rate. [baud]
-    friend bool operator==(const UartBaudRate &a, const UartBaudRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.baud_rate == b.baud_rate;
+    friend bool operator==(const UartBaudRate &Lhs, const UartBaudRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.baud_rate == Rhs.baud_rate;
     }
-    friend bool operator!=(const UartBaudRate &a, const UartBaudRate &b) {
-        return !(a == b);
+    friend bool operator!=(const UartBaudRate &Lhs, const UartBaudRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -42,13 +42,13 @@ struct UartBaudRateResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::BaudRate baud_rate{}; ///< Current baud rate. [baud]
-    friend bool operator==(const UartBaudRateResponse &a, const UartBaudRateResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.baud_rate == b.baud_rate;
+    friend bool operator==(const UartBaudRateResponse &Lhs, const UartBaudRateResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.baud_rate == Rhs.baud_rate;
     }
-    friend bool operator!=(const UartBaudRateResponse &a, const UartBaudRateResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const UartBaudRateResponse &Lhs, const UartBaudRateResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -62,13 +62,13 @@ struct Filter {
 
     ::mscipcodec::types::FunctionCode function{};                    ///< Function selector.
     std::optional<::mscipcodec::types::FilterBandwidth> bandwidth{}; ///< Filter bandwidth control code.
-    friend bool operator==(const Filter &a, const Filter &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.bandwidth == b.bandwidth;
+    friend bool operator==(const Filter &Lhs, const Filter &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.bandwidth == Rhs.bandwidth;
     }
-    friend bool operator!=(const Filter &a, const Filter &b) {
-        return !(a == b);
+    friend bool operator!=(const Filter &Lhs, const Filter &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -81,13 +81,13 @@ struct FilterResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::FilterBandwidth bandwidth{}; ///< Filter bandwidth control code.
-    friend bool operator==(const FilterResponse &a, const FilterResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.bandwidth == b.bandwidth;
+    friend bool operator==(const FilterResponse &Lhs, const FilterResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.bandwidth == Rhs.bandwidth;
     }
-    friend bool operator!=(const FilterResponse &a, const FilterResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const FilterResponse &Lhs, const FilterResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -101,13 +101,13 @@ struct SampleRate {
 
     ::mscipcodec::types::FunctionCode function{}; ///< Function selector.
     std::optional<std::uint16_t> decimation{};    ///< Divider of the internal sample rate.
-    friend bool operator==(const SampleRate &a, const SampleRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.decimation == b.decimation;
+    friend bool operator==(const SampleRate &Lhs, const SampleRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.decimation == Rhs.decimation;
     }
-    friend bool operator!=(const SampleRate &a, const SampleRate &b) {
-        return !(a == b);
+    friend bool operator!=(const SampleRate &Lhs, const SampleRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -120,13 +120,13 @@ struct SampleRateResponse {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t decimation{}; ///< Divider of the internal sample rate.
-    friend bool operator==(const SampleRateResponse &a, const SampleRateResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.decimation == b.decimation;
+    friend bool operator==(const SampleRateResponse &Lhs, const SampleRateResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.decimation == Rhs.decimation;
     }
-    friend bool operator!=(const SampleRateResponse &a, const SampleRateResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SampleRateResponse &Lhs, const SampleRateResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -142,13 +142,14 @@ struct SelectSensors {
     std::optional<std::uint8_t> reserved{};       ///< Reserved for future use (0x00).
     std::optional<::mscipcodec::BoundedVector<::mscipcodec::types::SensorCode, 251>>
         sensors{}; ///< Measurements to output, in order.
-    friend bool operator==(const SelectSensors &a, const SelectSensors &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.reserved == b.reserved && a.sensors == b.sensors;
+    friend bool operator==(const SelectSensors &Lhs, const SelectSensors &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.reserved == Rhs.reserved &&
+               Lhs.sensors == Rhs.sensors;
     }
-    friend bool operator!=(const SelectSensors &a, const SelectSensors &b) {
-        return !(a == b);
+    friend bool operator!=(const SelectSensors &Lhs, const SelectSensors &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -161,13 +162,13 @@ struct SelectSensorsResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::BoundedVector<::mscipcodec::types::SensorCode, 253> sensors{}; ///< Selected measurements.
-    friend bool operator==(const SelectSensorsResponse &a, const SelectSensorsResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.sensors == b.sensors;
+    friend bool operator==(const SelectSensorsResponse &Lhs, const SelectSensorsResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sensors == Rhs.sensors;
     }
-    friend bool operator!=(const SelectSensorsResponse &a, const SelectSensorsResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SelectSensorsResponse &Lhs, const SelectSensorsResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -179,13 +180,13 @@ struct GetInternalSampleRate {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const GetInternalSampleRate &a, const GetInternalSampleRate &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const GetInternalSampleRate &Lhs, const GetInternalSampleRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const GetInternalSampleRate &a, const GetInternalSampleRate &b) {
-        return !(a == b);
+    friend bool operator!=(const GetInternalSampleRate &Lhs, const GetInternalSampleRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -198,13 +199,13 @@ struct InternalSampleRate {
     static constexpr const char *kDevice = nullptr;
 
     std::uint16_t rate{}; ///< Internal sample rate (e.g. 800). [Hz]
-    friend bool operator==(const InternalSampleRate &a, const InternalSampleRate &b) {
-        (void)a;
-        (void)b;
-        return true && a.rate == b.rate;
+    friend bool operator==(const InternalSampleRate &Lhs, const InternalSampleRate &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.rate == Rhs.rate;
     }
-    friend bool operator!=(const InternalSampleRate &a, const InternalSampleRate &b) {
-        return !(a == b);
+    friend bool operator!=(const InternalSampleRate &Lhs, const InternalSampleRate &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -218,13 +219,13 @@ struct AccelRange {
 
     ::mscipcodec::types::FunctionCode function{};           ///< Function selector.
     std::optional<::mscipcodec::types::AccelRange> range{}; ///< Accelerometer range code.
-    friend bool operator==(const AccelRange &a, const AccelRange &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.range == b.range;
+    friend bool operator==(const AccelRange &Lhs, const AccelRange &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const AccelRange &a, const AccelRange &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelRange &Lhs, const AccelRange &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -237,13 +238,13 @@ struct AccelRangeResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::AccelRange range{}; ///< Accelerometer range code.
-    friend bool operator==(const AccelRangeResponse &a, const AccelRangeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.range == b.range;
+    friend bool operator==(const AccelRangeResponse &Lhs, const AccelRangeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const AccelRangeResponse &a, const AccelRangeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AccelRangeResponse &Lhs, const AccelRangeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -257,13 +258,13 @@ struct GyroRange {
 
     ::mscipcodec::types::FunctionCode function{};          ///< Function selector.
     std::optional<::mscipcodec::types::GyroRange> range{}; ///< Gyroscope range code.
-    friend bool operator==(const GyroRange &a, const GyroRange &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.range == b.range;
+    friend bool operator==(const GyroRange &Lhs, const GyroRange &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const GyroRange &a, const GyroRange &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroRange &Lhs, const GyroRange &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -276,13 +277,13 @@ struct GyroRangeResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::GyroRange range{}; ///< Gyroscope range code.
-    friend bool operator==(const GyroRangeResponse &a, const GyroRangeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.range == b.range;
+    friend bool operator==(const GyroRangeResponse &Lhs, const GyroRangeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const GyroRangeResponse &a, const GyroRangeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const GyroRangeResponse &Lhs, const GyroRangeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -295,13 +296,13 @@ struct ConfigAll {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::FunctionCode function{}; ///< Function selector.
-    friend bool operator==(const ConfigAll &a, const ConfigAll &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function;
+    friend bool operator==(const ConfigAll &Lhs, const ConfigAll &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function;
     }
-    friend bool operator!=(const ConfigAll &a, const ConfigAll &b) {
-        return !(a == b);
+    friend bool operator!=(const ConfigAll &Lhs, const ConfigAll &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -315,13 +316,13 @@ struct DataOnOff {
 
     ::mscipcodec::types::FunctionCode function{};        ///< Function selector.
     std::optional<::mscipcodec::types::OnOff> control{}; ///< Data on or off.
-    friend bool operator==(const DataOnOff &a, const DataOnOff &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.control == b.control;
+    friend bool operator==(const DataOnOff &Lhs, const DataOnOff &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.control == Rhs.control;
     }
-    friend bool operator!=(const DataOnOff &a, const DataOnOff &b) {
-        return !(a == b);
+    friend bool operator!=(const DataOnOff &Lhs, const DataOnOff &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -334,13 +335,13 @@ struct DataOnOffResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::OnOff control{}; ///< Data on or off.
-    friend bool operator==(const DataOnOffResponse &a, const DataOnOffResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.control == b.control;
+    friend bool operator==(const DataOnOffResponse &Lhs, const DataOnOffResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.control == Rhs.control;
     }
-    friend bool operator!=(const DataOnOffResponse &a, const DataOnOffResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const DataOnOffResponse &Lhs, const DataOnOffResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -354,13 +355,13 @@ struct XtrigOnOff {
 
     ::mscipcodec::types::FunctionCode function{};        ///< Function selector.
     std::optional<::mscipcodec::types::OnOff> control{}; ///< External trigger on or off.
-    friend bool operator==(const XtrigOnOff &a, const XtrigOnOff &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.control == b.control;
+    friend bool operator==(const XtrigOnOff &Lhs, const XtrigOnOff &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.control == Rhs.control;
     }
-    friend bool operator!=(const XtrigOnOff &a, const XtrigOnOff &b) {
-        return !(a == b);
+    friend bool operator!=(const XtrigOnOff &Lhs, const XtrigOnOff &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -373,13 +374,13 @@ struct XtrigOnOffResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::OnOff control{}; ///< External trigger on or off.
-    friend bool operator==(const XtrigOnOffResponse &a, const XtrigOnOffResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.control == b.control;
+    friend bool operator==(const XtrigOnOffResponse &Lhs, const XtrigOnOffResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.control == Rhs.control;
     }
-    friend bool operator!=(const XtrigOnOffResponse &a, const XtrigOnOffResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const XtrigOnOffResponse &Lhs, const XtrigOnOffResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -394,13 +395,13 @@ struct SelectSensorsRevB {
     ::mscipcodec::types::FunctionCode function{}; ///< Function selector.
     std::optional<::mscipcodec::BoundedVector<::mscipcodec::types::SensorCode, 252>>
         sensors{}; ///< Measurements to output, in order.
-    friend bool operator==(const SelectSensorsRevB &a, const SelectSensorsRevB &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.sensors == b.sensors;
+    friend bool operator==(const SelectSensorsRevB &Lhs, const SelectSensorsRevB &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.sensors == Rhs.sensors;
     }
-    friend bool operator!=(const SelectSensorsRevB &a, const SelectSensorsRevB &b) {
-        return !(a == b);
+    friend bool operator!=(const SelectSensorsRevB &Lhs, const SelectSensorsRevB &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -413,13 +414,13 @@ struct SelectSensorsRevBResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::BoundedVector<::mscipcodec::types::SensorCode, 253> sensors{}; ///< Selected measurements.
-    friend bool operator==(const SelectSensorsRevBResponse &a, const SelectSensorsRevBResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.sensors == b.sensors;
+    friend bool operator==(const SelectSensorsRevBResponse &Lhs, const SelectSensorsRevBResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.sensors == Rhs.sensors;
     }
-    friend bool operator!=(const SelectSensorsRevBResponse &a, const SelectSensorsRevBResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const SelectSensorsRevBResponse &Lhs, const SelectSensorsRevBResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -433,13 +434,13 @@ struct AuxAccelRange {
 
     ::mscipcodec::types::FunctionCode function{};           ///< Function selector.
     std::optional<::mscipcodec::types::AccelRange> range{}; ///< Auxiliary accelerometer range code.
-    friend bool operator==(const AuxAccelRange &a, const AuxAccelRange &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.range == b.range;
+    friend bool operator==(const AuxAccelRange &Lhs, const AuxAccelRange &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const AuxAccelRange &a, const AuxAccelRange &b) {
-        return !(a == b);
+    friend bool operator!=(const AuxAccelRange &Lhs, const AuxAccelRange &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -452,13 +453,13 @@ struct AuxAccelRangeResponse {
     static constexpr const char *kDevice = nullptr;
 
     ::mscipcodec::types::AccelRange range{}; ///< Auxiliary accelerometer range code.
-    friend bool operator==(const AuxAccelRangeResponse &a, const AuxAccelRangeResponse &b) {
-        (void)a;
-        (void)b;
-        return true && a.range == b.range;
+    friend bool operator==(const AuxAccelRangeResponse &Lhs, const AuxAccelRangeResponse &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.range == Rhs.range;
     }
-    friend bool operator!=(const AuxAccelRangeResponse &a, const AuxAccelRangeResponse &b) {
-        return !(a == b);
+    friend bool operator!=(const AuxAccelRangeResponse &Lhs, const AuxAccelRangeResponse &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

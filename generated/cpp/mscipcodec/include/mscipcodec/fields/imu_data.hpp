@@ -22,13 +22,13 @@ struct ScaledAccel {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> accel{}; ///< Acceleration [x, y, z]. [g]
-    friend bool operator==(const ScaledAccel &a, const ScaledAccel &b) {
-        (void)a;
-        (void)b;
-        return true && a.accel == b.accel;
+    friend bool operator==(const ScaledAccel &Lhs, const ScaledAccel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.accel == Rhs.accel;
     }
-    friend bool operator!=(const ScaledAccel &a, const ScaledAccel &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledAccel &Lhs, const ScaledAccel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -41,13 +41,13 @@ struct ScaledGyro {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> gyro{}; ///< Angular rate [x, y, z]. [deg/s]
-    friend bool operator==(const ScaledGyro &a, const ScaledGyro &b) {
-        (void)a;
-        (void)b;
-        return true && a.gyro == b.gyro;
+    friend bool operator==(const ScaledGyro &Lhs, const ScaledGyro &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.gyro == Rhs.gyro;
     }
-    friend bool operator!=(const ScaledGyro &a, const ScaledGyro &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledGyro &Lhs, const ScaledGyro &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -60,13 +60,13 @@ struct ScaledMag {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> mag{}; ///< Magnetic field [x, y, z]. [gauss]
-    friend bool operator==(const ScaledMag &a, const ScaledMag &b) {
-        (void)a;
-        (void)b;
-        return true && a.mag == b.mag;
+    friend bool operator==(const ScaledMag &Lhs, const ScaledMag &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.mag == Rhs.mag;
     }
-    friend bool operator!=(const ScaledMag &a, const ScaledMag &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledMag &Lhs, const ScaledMag &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -79,13 +79,13 @@ struct DeltaTheta {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> delta_theta{}; ///< Change in angle [x, y, z]. [rad]
-    friend bool operator==(const DeltaTheta &a, const DeltaTheta &b) {
-        (void)a;
-        (void)b;
-        return true && a.delta_theta == b.delta_theta;
+    friend bool operator==(const DeltaTheta &Lhs, const DeltaTheta &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.delta_theta == Rhs.delta_theta;
     }
-    friend bool operator!=(const DeltaTheta &a, const DeltaTheta &b) {
-        return !(a == b);
+    friend bool operator!=(const DeltaTheta &Lhs, const DeltaTheta &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -98,13 +98,13 @@ struct DeltaVelocity {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> delta_velocity{}; ///< Change in velocity [x, y, z]. [m/s]
-    friend bool operator==(const DeltaVelocity &a, const DeltaVelocity &b) {
-        (void)a;
-        (void)b;
-        return true && a.delta_velocity == b.delta_velocity;
+    friend bool operator==(const DeltaVelocity &Lhs, const DeltaVelocity &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.delta_velocity == Rhs.delta_velocity;
     }
-    friend bool operator!=(const DeltaVelocity &a, const DeltaVelocity &b) {
-        return !(a == b);
+    friend bool operator!=(const DeltaVelocity &Lhs, const DeltaVelocity &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -117,13 +117,13 @@ struct ScaledPressure {
     static constexpr const char *kDevice = nullptr;
 
     float pressure{}; ///< Pressure. [mbar]
-    friend bool operator==(const ScaledPressure &a, const ScaledPressure &b) {
-        (void)a;
-        (void)b;
-        return true && a.pressure == b.pressure;
+    friend bool operator==(const ScaledPressure &Lhs, const ScaledPressure &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pressure == Rhs.pressure;
     }
-    friend bool operator!=(const ScaledPressure &a, const ScaledPressure &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledPressure &Lhs, const ScaledPressure &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -136,13 +136,13 @@ struct ScaledTemperature {
     static constexpr const char *kDevice = nullptr;
 
     float temperature{}; ///< Temperature. [degC]
-    friend bool operator==(const ScaledTemperature &a, const ScaledTemperature &b) {
-        (void)a;
-        (void)b;
-        return true && a.temperature == b.temperature;
+    friend bool operator==(const ScaledTemperature &Lhs, const ScaledTemperature &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.temperature == Rhs.temperature;
     }
-    friend bool operator!=(const ScaledTemperature &a, const ScaledTemperature &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledTemperature &Lhs, const ScaledTemperature &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -157,13 +157,13 @@ struct GpsCorrelatedTime {
     double seconds{};                          ///< GPS seconds of the week. [s]
     std::uint16_t week{};                      ///< GPS week number. [weeks]
     ::mscipcodec::types::GpsTimeFlags flags{}; ///< GPS correlated time flags.
-    friend bool operator==(const GpsCorrelatedTime &a, const GpsCorrelatedTime &b) {
-        (void)a;
-        (void)b;
-        return true && a.seconds == b.seconds && a.week == b.week && a.flags == b.flags;
+    friend bool operator==(const GpsCorrelatedTime &Lhs, const GpsCorrelatedTime &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.seconds == Rhs.seconds && Lhs.week == Rhs.week && Lhs.flags == Rhs.flags;
     }
-    friend bool operator!=(const GpsCorrelatedTime &a, const GpsCorrelatedTime &b) {
-        return !(a == b);
+    friend bool operator!=(const GpsCorrelatedTime &Lhs, const GpsCorrelatedTime &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -176,13 +176,13 @@ struct ScaledAuxAccel {
     static constexpr const char *kDevice = nullptr;
 
     std::array<float, 3> accel{}; ///< Auxiliary acceleration [x, y, z]. [g]
-    friend bool operator==(const ScaledAuxAccel &a, const ScaledAuxAccel &b) {
-        (void)a;
-        (void)b;
-        return true && a.accel == b.accel;
+    friend bool operator==(const ScaledAuxAccel &Lhs, const ScaledAuxAccel &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.accel == Rhs.accel;
     }
-    friend bool operator!=(const ScaledAuxAccel &a, const ScaledAuxAccel &b) {
-        return !(a == b);
+    friend bool operator!=(const ScaledAuxAccel &Lhs, const ScaledAuxAccel &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -22,13 +22,13 @@ struct Ack {
 
     std::uint8_t command_code{}; ///< Message code of the command being answered ("Message echo").
     ::mscipcodec::types::ErrorCode error_code{}; ///< 0 when the command was received without error.
-    friend bool operator==(const Ack &a, const Ack &b) {
-        (void)a;
-        (void)b;
-        return true && a.command_code == b.command_code && a.error_code == b.error_code;
+    friend bool operator==(const Ack &Lhs, const Ack &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.command_code == Rhs.command_code && Lhs.error_code == Rhs.error_code;
     }
-    friend bool operator!=(const Ack &a, const Ack &b) {
-        return !(a == b);
+    friend bool operator!=(const Ack &Lhs, const Ack &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -9,27 +9,27 @@
 
 // [parse-stream]
 /* Called by the parser for every packet and every run of skipped bytes. */
-static void on_event(void *ctx, const demo_event_t *event) {
-    demo_field_iter_t fields;
-    demo_field_entry_t entry;
+static void on_event(void *ctx, const democ_event_t *event) {
+    democ_field_iter_t fields;
+    democ_field_entry_t entry;
     const char *separator = "";
     uint8_t set;
     (void)ctx;
-    if (event->kind == DEMO_EVENT_SKIP) {
+    if (event->kind == DEMOC_EVENT_SKIP) {
         printf("skipped %llu\n", (unsigned long long)event->length);
         return;
     }
-    set = demo_packet_set(event->packet);
+    set = democ_packet_set(event->packet);
     printf("packet set=0x%02x fields=", set);
-    demo_field_iter_init(&fields, set, demo_packet_payload(event->packet),
-                         demo_packet_payload_length(event->packet));
-    while (demo_field_iter_next(&fields, &entry)) {
-        demo_field_value_t value;
+    democ_field_iter_init(&fields, set, democ_packet_payload(event->packet),
+                          democ_packet_payload_length(event->packet));
+    while (democ_field_iter_next(&fields, &entry)) {
+        democ_field_value_t value;
         const char *name = "?"; /* trailing bytes, or a field that does not decode */
-        if (entry.kind == DEMO_ENTRY_FIELD &&
-            demo_decode_field(set, entry.descriptor, entry.data, entry.length, DEMO_DEVICE_ANY, &value,
-                              NULL) == DEMO_OK) {
-            name = demo_layout_info(value.id)->name;
+        if (entry.kind == DEMOC_ENTRY_FIELD &&
+            democ_decode_field(set, entry.descriptor, entry.data, entry.length, DEMOC_DEVICE_ANY, &value,
+                               NULL) == DEMOC_OK) {
+            name = democ_layout_info(value.id)->name;
         }
         printf("%s%s", separator, name);
         separator = ",";
@@ -41,18 +41,18 @@ static void on_event(void *ctx, const demo_event_t *event) {
 // [build-command]
 /* Builds the command with its typed value and prints the packet bytes. */
 static int print_command(void) {
-    demo_commands_ping_t command;
-    uint8_t data[DEMO_MAX_FIELD_DATA];
-    uint8_t packet[DEMO_MAX_PACKET];
+    democ_commands_ping_t command;
+    uint8_t data[DEMOC_MAX_FIELD_DATA];
+    uint8_t packet[DEMOC_MAX_PACKET];
     size_t data_len = 0;
     size_t packet_len = 0;
     size_t i;
-    demo_packet_builder_t builder;
+    democ_packet_builder_t builder;
     memset(&command, 0, sizeof command);
-    demo_packet_begin(&builder, packet, sizeof packet, DEMO_COMMANDS_SET);
-    if (demo_commands_ping_encode(&command, data, sizeof data, &data_len) != DEMO_OK ||
-        demo_packet_add_field(&builder, DEMO_COMMANDS_PING_DESCRIPTOR, data, data_len) != DEMO_OK ||
-        demo_packet_finish(&builder, &packet_len) != DEMO_OK) {
+    democ_packet_begin(&builder, packet, sizeof packet, DEMOC_COMMANDS_SET);
+    if (democ_commands_ping_encode(&command, data, sizeof data, &data_len) != DEMOC_OK ||
+        democ_packet_add_field(&builder, DEMOC_COMMANDS_PING_DESCRIPTOR, data, data_len) != DEMOC_OK ||
+        democ_packet_finish(&builder, &packet_len) != DEMOC_OK) {
         fprintf(stderr, "getting_started: cannot build the command\n");
         return 1;
     }
@@ -68,7 +68,7 @@ static int print_command(void) {
 // [read-file]
 /* Feeds the file to the parser block by block, then flushes it at the end of the input. */
 static int decode_file(const char *path) {
-    demo_parser_t parser;
+    democ_parser_t parser;
     uint8_t block[4096];
     size_t n;
     FILE *file = fopen(path, "rb");
@@ -76,9 +76,9 @@ static int decode_file(const char *path) {
         fprintf(stderr, "getting_started: cannot open %s: %s\n", path, strerror(errno));
         return 1;
     }
-    demo_parser_init(&parser);
+    democ_parser_init(&parser);
     while ((n = fread(block, 1, sizeof block, file)) > 0) {
-        demo_parser_feed(&parser, block, n, on_event, NULL);
+        democ_parser_feed(&parser, block, n, on_event, NULL);
     }
     if (ferror(file)) {
         fprintf(stderr, "getting_started: cannot read %s\n", path);
@@ -86,7 +86,7 @@ static int decode_file(const char *path) {
         return 1;
     }
     fclose(file);
-    demo_parser_flush(&parser, on_event, NULL);
+    democ_parser_flush(&parser, on_event, NULL);
     return 0;
 }
 // [end]

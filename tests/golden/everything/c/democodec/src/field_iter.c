@@ -2,11 +2,10 @@
 #include "democodec/field_iter.h"
 
 #include <assert.h>
-#include <stdio.h>
 
-bool demo_field_iter_trailing_(demo_field_iter_t *it, demo_field_entry_t *entry, uint8_t length_byte,
-                               demo_trailing_kind_t why) {
-    entry->kind = DEMO_ENTRY_TRAILING;
+bool democ_field_iter_trailing_(democ_field_iter_t *it, democ_field_entry_t *entry, uint8_t length_byte,
+                                democ_trailing_kind_t why) {
+    entry->kind = DEMOC_ENTRY_TRAILING;
     entry->offset = it->pos;
     entry->descriptor = 0;
     entry->data = it->payload + it->pos;
@@ -17,24 +16,4 @@ bool demo_field_iter_trailing_(demo_field_iter_t *it, demo_field_entry_t *entry,
     return true;
 }
 
-size_t demo_trailing_format(const demo_field_entry_t *entry, char *buf, size_t cap) {
-    assert(entry != NULL);
-    assert(buf != NULL || cap == 0);
-    int n;
-    switch (entry->trailing) {
-    case DEMO_TRAILING_SHORT_LENGTH:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu is shorter than the field header",
-                     (unsigned)entry->length_byte, entry->offset);
-        break;
-    case DEMO_TRAILING_OVERRUN:
-        n = snprintf(buf, cap, "field length %u at payload offset %zu overruns the payload (%zu bytes left)",
-                     (unsigned)entry->length_byte, entry->offset, entry->length);
-        break;
-    case DEMO_TRAILING_SHORT_HEADER:
-    default:
-        n = snprintf(buf, cap, "field header at payload offset %zu needs %d bytes, %zu left", entry->offset,
-                     DEMO_FIELD_HEADER_SIZE, entry->length);
-        break;
-    }
-    return n < 0 ? 0 : (size_t)n;
-}
+/* democ_trailing_format is in status.c, with the other messages (no stdio). */

@@ -4,7 +4,7 @@
 #include <assert.h>
 #include <string.h>
 
-const uint8_t demo_sync[DEMO_SYNC_SIZE] = DEMO_SYNC_BYTES;
+const uint8_t democ_sync[DEMOC_SYNC_SIZE] = DEMOC_SYNC_BYTES;
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
  * load on little-endian hosts). */
@@ -30,7 +30,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * into sum1 and sum2 with the recurrence above. Unsigned arithmetic wraps modulo 2^64, a multiple
  * of 256.
  */
-uint16_t demo_checksum_word(const uint8_t *bytes, size_t len) {
+uint16_t democ_checksum_word(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL || len == 0);
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
@@ -69,122 +69,122 @@ uint16_t demo_checksum_word(const uint8_t *bytes, size_t len) {
     }
     sum1 = (unsigned)(s1 & 0xFFu);
     sum2 = (unsigned)(s2 & 0xFFu);
-#if DEMO_CHECKSUM_SUM1_FIRST
+#if DEMOC_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
 #else
     return (uint16_t)(sum2 << 8 | sum1);
 #endif
 }
 
-void demo_checksum(const uint8_t *bytes, size_t len, uint8_t out[DEMO_CHECKSUM_SIZE]) {
+void democ_checksum(const uint8_t *bytes, size_t len, uint8_t out[DEMOC_CHECKSUM_SIZE]) {
     assert(bytes != NULL || len == 0);
     assert(out != NULL);
-    unsigned word = demo_checksum_word(bytes, len);
+    unsigned word = democ_checksum_word(bytes, len);
     out[0] = (uint8_t)(word >> 8);
     out[1] = (uint8_t)(word & 0xFFu);
 }
 
 /* The checksum stays in a register: comparing it as bytes stored to memory and loaded back as
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
-bool demo_checksum_matches(const uint8_t *bytes, size_t len) {
+bool democ_checksum_matches(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL);
-    return demo_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
+    return democ_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
-bool demo_packet_valid(const uint8_t *packet, size_t len) {
+bool democ_packet_valid(const uint8_t *packet, size_t len) {
     assert(packet != NULL || len == 0);
     size_t payload;
-    if (len < DEMO_HEADER_SIZE + DEMO_CHECKSUM_SIZE || memcmp(packet, demo_sync, DEMO_SYNC_SIZE) != 0) {
+    if (len < DEMOC_HEADER_SIZE + DEMOC_CHECKSUM_SIZE || memcmp(packet, democ_sync, DEMOC_SYNC_SIZE) != 0) {
         return false;
     }
-    payload = packet[DEMO_LENGTH_OFFSET];
-    if (payload > DEMO_MAX_PAYLOAD || len != DEMO_HEADER_SIZE + payload + DEMO_CHECKSUM_SIZE) {
+    payload = packet[DEMOC_LENGTH_OFFSET];
+    if (payload > DEMOC_MAX_PAYLOAD || len != DEMOC_HEADER_SIZE + payload + DEMOC_CHECKSUM_SIZE) {
         return false;
     }
-    return demo_checksum_matches(packet, DEMO_HEADER_SIZE + payload);
+    return democ_checksum_matches(packet, DEMOC_HEADER_SIZE + payload);
 }
 
-void demo_packet_begin(demo_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
+void democ_packet_begin(democ_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set) {
     assert(b != NULL);
     assert(buf != NULL || cap == 0);
     b->buf = buf;
     b->cap = buf ? cap : 0;
     b->len = 0;
-    b->status = DEMO_OK;
-    if (b->cap < DEMO_HEADER_SIZE) {
-        b->status = DEMO_ERR_BUFFER;
+    b->status = DEMOC_OK;
+    if (b->cap < DEMOC_HEADER_SIZE) {
+        b->status = DEMOC_ERR_BUFFER;
         return;
     }
-    memcpy(buf, demo_sync, DEMO_SYNC_SIZE);
-    buf[DEMO_SET_OFFSET] = set;
+    memcpy(buf, democ_sync, DEMOC_SYNC_SIZE);
+    buf[DEMOC_SET_OFFSET] = set;
     b->set = set;
-    buf[DEMO_LENGTH_OFFSET] = 0;
-    b->len = DEMO_HEADER_SIZE;
+    buf[DEMOC_LENGTH_OFFSET] = 0;
+    b->len = DEMOC_HEADER_SIZE;
 }
 
-static demo_status_t reserve(demo_packet_builder_t *b, size_t n) {
-    if (b->status != DEMO_OK) {
+static democ_status_t reserve(democ_packet_builder_t *b, size_t n) {
+    if (b->status != DEMOC_OK) {
         return b->status;
     }
-    if (b->len - DEMO_HEADER_SIZE + n > DEMO_MAX_PAYLOAD) {
-        b->status = DEMO_ERR_TOO_LONG;
-    } else if (b->cap - b->len < n + DEMO_CHECKSUM_SIZE) {
-        b->status = DEMO_ERR_BUFFER;
+    if (b->len - DEMOC_HEADER_SIZE + n > DEMOC_MAX_PAYLOAD) {
+        b->status = DEMOC_ERR_TOO_LONG;
+    } else if (b->cap - b->len < n + DEMOC_CHECKSUM_SIZE) {
+        b->status = DEMOC_ERR_BUFFER;
     }
     return b->status;
 }
 
-demo_status_t demo_packet_add_field(demo_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                    size_t data_len) {
+democ_status_t democ_packet_add_field(democ_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                      size_t data_len) {
     assert(b != NULL);
     assert(data != NULL || data_len == 0);
-    int adjust = demo_field_length_adjust(b->set, descriptor);
-    if (b->status == DEMO_OK && data_len > DEMO_MAX_FIELD_DATA) {
-        b->status = DEMO_ERR_TOO_LONG;
+    int adjust = democ_field_length_adjust(b->set, descriptor);
+    if (b->status == DEMOC_OK && data_len > DEMOC_MAX_FIELD_DATA) {
+        b->status = DEMOC_ERR_TOO_LONG;
     }
-    if (b->status == DEMO_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
+    if (b->status == DEMOC_OK && ((int)data_len + adjust < 0 || (int)data_len + adjust > 0xFF)) {
         /* too long for the length byte, or shorter than an irregular field's size byte allows */
-        b->status = (int)data_len + adjust > 0xFF ? DEMO_ERR_TOO_LONG : DEMO_ERR_INVALID;
+        b->status = (int)data_len + adjust > 0xFF ? DEMOC_ERR_TOO_LONG : DEMOC_ERR_INVALID;
     }
-    if (reserve(b, DEMO_FIELD_HEADER_SIZE + data_len) != DEMO_OK) {
+    if (reserve(b, DEMOC_FIELD_HEADER_SIZE + data_len) != DEMOC_OK) {
         return b->status;
     }
-    b->buf[b->len + DEMO_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
-    b->buf[b->len + DEMO_FIELD_DESCRIPTOR_OFFSET] = descriptor;
+    b->buf[b->len + DEMOC_FIELD_LENGTH_OFFSET] = (uint8_t)((int)data_len + adjust);
+    b->buf[b->len + DEMOC_FIELD_DESCRIPTOR_OFFSET] = descriptor;
     if (data_len > 0) {
-        memcpy(b->buf + b->len + DEMO_FIELD_HEADER_SIZE, data, data_len);
+        memcpy(b->buf + b->len + DEMOC_FIELD_HEADER_SIZE, data, data_len);
     }
-    b->len += DEMO_FIELD_HEADER_SIZE + data_len;
-    return DEMO_OK;
+    b->len += DEMOC_FIELD_HEADER_SIZE + data_len;
+    return DEMOC_OK;
 }
 
-demo_status_t demo_packet_add_raw(demo_packet_builder_t *b, const uint8_t *bytes, size_t len) {
+democ_status_t democ_packet_add_raw(democ_packet_builder_t *b, const uint8_t *bytes, size_t len) {
     assert(b != NULL);
     assert(bytes != NULL || len == 0);
-    if (reserve(b, len) != DEMO_OK) {
+    if (reserve(b, len) != DEMOC_OK) {
         return b->status;
     }
     if (len > 0) {
         memcpy(b->buf + b->len, bytes, len);
     }
     b->len += len;
-    return DEMO_OK;
+    return DEMOC_OK;
 }
 
-demo_status_t demo_packet_finish(demo_packet_builder_t *b, size_t *len_out) {
+democ_status_t democ_packet_finish(democ_packet_builder_t *b, size_t *len_out) {
     assert(b != NULL);
-    if (b->status != DEMO_OK) {
+    if (b->status != DEMOC_OK) {
         return b->status;
     }
-    if (b->cap - b->len < DEMO_CHECKSUM_SIZE) {
-        b->status = DEMO_ERR_BUFFER;
+    if (b->cap - b->len < DEMOC_CHECKSUM_SIZE) {
+        b->status = DEMOC_ERR_BUFFER;
         return b->status;
     }
-    b->buf[DEMO_LENGTH_OFFSET] = (uint8_t)(b->len - DEMO_HEADER_SIZE);
-    demo_checksum(b->buf, b->len, b->buf + b->len);
-    b->len += DEMO_CHECKSUM_SIZE;
+    b->buf[DEMOC_LENGTH_OFFSET] = (uint8_t)(b->len - DEMOC_HEADER_SIZE);
+    democ_checksum(b->buf, b->len, b->buf + b->len);
+    b->len += DEMOC_CHECKSUM_SIZE;
     if (len_out) {
         *len_out = b->len;
     }
-    return DEMO_OK;
+    return DEMOC_OK;
 }

@@ -10,7 +10,7 @@
 
 #define MAX_NESTING 64
 
-void demo_jr_init(demo_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
+void democ_jr_init(democ_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap) {
     memset(jr, 0, sizeof *jr);
     jr->s = s;
     jr->len = s ? len : 0;
@@ -21,7 +21,7 @@ void demo_jr_init(demo_jr_t *jr, const char *s, size_t len, char *msg, size_t ms
     }
 }
 
-int demo_jr_fail(demo_jr_t *jr, const char *fmt, ...) {
+int democ_jr_fail(democ_jr_t *jr, const char *fmt, ...) {
     va_list ap;
     size_t len = 0;
     size_t i;
@@ -30,7 +30,7 @@ int demo_jr_fail(demo_jr_t *jr, const char *fmt, ...) {
         return -1;
     }
     jr->failed = true;
-    for (i = 0; i < jr->depth && i < DEMO_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
+    for (i = 0; i < jr->depth && i < DEMOC_JR_MAX_DEPTH && len < jr->msg_cap; i++) {
         int n;
         if (jr->index[i] != SIZE_MAX) {
             n = snprintf(jr->msg + len, jr->msg_cap - len, "%s%s[%zu]", i ? "." : "", jr->path[i],
@@ -52,27 +52,27 @@ int demo_jr_fail(demo_jr_t *jr, const char *fmt, ...) {
     return -1;
 }
 
-void demo_jr_push(demo_jr_t *jr, const char *name) {
-    if (jr->depth < DEMO_JR_MAX_DEPTH) {
+void democ_jr_push(democ_jr_t *jr, const char *name) {
+    if (jr->depth < DEMOC_JR_MAX_DEPTH) {
         jr->path[jr->depth] = name;
         jr->index[jr->depth] = SIZE_MAX;
     }
     jr->depth++;
 }
 
-void demo_jr_index(demo_jr_t *jr, size_t index) {
-    if (jr->depth > 0 && jr->depth <= DEMO_JR_MAX_DEPTH) {
+void democ_jr_index(democ_jr_t *jr, size_t index) {
+    if (jr->depth > 0 && jr->depth <= DEMOC_JR_MAX_DEPTH) {
         jr->index[jr->depth - 1] = index;
     }
 }
 
-void demo_jr_pop(demo_jr_t *jr) {
+void democ_jr_pop(democ_jr_t *jr) {
     if (jr->depth > 0) {
         jr->depth--;
     }
 }
 
-size_t demo_jr_ws(const demo_jr_t *jr, size_t pos) {
+size_t democ_jr_ws(const democ_jr_t *jr, size_t pos) {
     while (pos < jr->len &&
            (jr->s[pos] == ' ' || jr->s[pos] == '\t' || jr->s[pos] == '\r' || jr->s[pos] == '\n')) {
         pos++;
@@ -80,11 +80,11 @@ size_t demo_jr_ws(const demo_jr_t *jr, size_t pos) {
     return pos;
 }
 
-static int at(const demo_jr_t *jr, size_t pos, char c) {
+static int at(const democ_jr_t *jr, size_t pos, char c) {
     return pos < jr->len && jr->s[pos] == c;
 }
 
-static int is_digit(const demo_jr_t *jr, size_t pos) {
+static int is_digit(const democ_jr_t *jr, size_t pos) {
     return pos < jr->len && jr->s[pos] >= '0' && jr->s[pos] <= '9';
 }
 
@@ -134,17 +134,17 @@ static size_t utf8_length(const unsigned char *s, size_t n) {
 }
 
 /* Scans a string starting at the quote; *end after the closing quote. */
-static int scan_string(demo_jr_t *jr, size_t pos, size_t *end) {
+static int scan_string(democ_jr_t *jr, size_t pos, size_t *end) {
     size_t i = pos + 1;
     while (i < jr->len && jr->s[i] != '"') {
         unsigned char c = (unsigned char)jr->s[i];
         if (c < 0x20) {
-            return demo_jr_fail(jr, "control character in a string");
+            return democ_jr_fail(jr, "control character in a string");
         }
         if (c >= 0x80) { /* the line is UTF-8 text (§5) */
             size_t len = utf8_length((const unsigned char *)jr->s + i, jr->len - i);
             if (len == 0) {
-                return demo_jr_fail(jr, "invalid UTF-8");
+                return democ_jr_fail(jr, "invalid UTF-8");
             }
             i += len;
             continue;
@@ -158,25 +158,25 @@ static int scan_string(demo_jr_t *jr, size_t pos, size_t *end) {
                 int k;
                 for (k = 1; k <= 4; k++) {
                     if (i + (size_t)k >= jr->len || hex_value(jr->s[i + (size_t)k]) < 0) {
-                        return demo_jr_fail(jr, "bad \\u escape in a string");
+                        return democ_jr_fail(jr, "bad \\u escape in a string");
                     }
                 }
                 i += 4;
             } else if (jr->s[i] == '\0' || !strchr("\"\\/bfnrt", jr->s[i])) {
-                return demo_jr_fail(jr, "bad escape in a string");
+                return democ_jr_fail(jr, "bad escape in a string");
             }
         }
         i++;
     }
     if (i >= jr->len) {
-        return demo_jr_fail(jr, "unterminated string");
+        return democ_jr_fail(jr, "unterminated string");
     }
     *end = i + 1;
     return 0;
 }
 
 /* Scans a number; *is_int tells whether it has neither fraction nor exponent. */
-static int scan_number(demo_jr_t *jr, size_t pos, size_t *end, int *is_int) {
+static int scan_number(democ_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     size_t i = pos;
     *is_int = 1;
     if (at(jr, i, '-')) {
@@ -189,13 +189,13 @@ static int scan_number(demo_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
     } else {
-        return demo_jr_fail(jr, "invalid number");
+        return democ_jr_fail(jr, "invalid number");
     }
     if (at(jr, i, '.')) {
         *is_int = 0;
         i++;
         if (!is_digit(jr, i)) {
-            return demo_jr_fail(jr, "invalid number");
+            return democ_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -208,7 +208,7 @@ static int scan_number(demo_jr_t *jr, size_t pos, size_t *end, int *is_int) {
             i++;
         }
         if (!is_digit(jr, i)) {
-            return demo_jr_fail(jr, "invalid number");
+            return democ_jr_fail(jr, "invalid number");
         }
         while (is_digit(jr, i)) {
             i++;
@@ -218,30 +218,30 @@ static int scan_number(demo_jr_t *jr, size_t pos, size_t *end, int *is_int) {
     return 0;
 }
 
-static int literal(demo_jr_t *jr, size_t pos, const char *word, size_t *end) {
+static int literal(democ_jr_t *jr, size_t pos, const char *word, size_t *end) {
     size_t n = strlen(word);
     if (jr->len - pos < n || memcmp(jr->s + pos, word, n) != 0) {
-        return demo_jr_fail(jr, "invalid JSON value");
+        return democ_jr_fail(jr, "invalid JSON value");
     }
     *end = pos + n;
     return 0;
 }
 
-static int skip_value(demo_jr_t *jr, size_t pos, size_t *end, int nesting) {
+static int skip_value(democ_jr_t *jr, size_t pos, size_t *end, int nesting) {
     int is_int;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (pos >= jr->len) {
-        return demo_jr_fail(jr, "missing JSON value");
+        return democ_jr_fail(jr, "missing JSON value");
     }
     if (nesting > MAX_NESTING) {
-        return demo_jr_fail(jr, "JSON nested too deeply");
+        return democ_jr_fail(jr, "JSON nested too deeply");
     }
     switch (jr->s[pos]) {
     case '{':
     case '[': {
         char close = jr->s[pos] == '{' ? '}' : ']';
         int object = close == '}';
-        pos = demo_jr_ws(jr, pos + 1);
+        pos = democ_jr_ws(jr, pos + 1);
         if (at(jr, pos, close)) {
             *end = pos + 1;
             return 0;
@@ -249,29 +249,29 @@ static int skip_value(demo_jr_t *jr, size_t pos, size_t *end, int nesting) {
         for (;;) {
             if (object) {
                 if (!at(jr, pos, '"')) {
-                    return demo_jr_fail(jr, "expected a key in quotes");
+                    return democ_jr_fail(jr, "expected a key in quotes");
                 }
                 if (scan_string(jr, pos, &pos)) {
                     return -1;
                 }
-                pos = demo_jr_ws(jr, pos);
+                pos = democ_jr_ws(jr, pos);
                 if (!at(jr, pos, ':')) {
-                    return demo_jr_fail(jr, "expected ':' after a key");
+                    return democ_jr_fail(jr, "expected ':' after a key");
                 }
                 pos++;
             }
             if (skip_value(jr, pos, &pos, nesting + 1)) {
                 return -1;
             }
-            pos = demo_jr_ws(jr, pos);
+            pos = democ_jr_ws(jr, pos);
             if (at(jr, pos, close)) {
                 *end = pos + 1;
                 return 0;
             }
             if (!at(jr, pos, ',')) {
-                return demo_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
+                return democ_jr_fail(jr, object ? "expected ',' or '}'" : "expected ',' or ']'");
             }
-            pos = demo_jr_ws(jr, pos + 1);
+            pos = democ_jr_ws(jr, pos + 1);
         }
     }
     case '"':
@@ -287,30 +287,30 @@ static int skip_value(demo_jr_t *jr, size_t pos, size_t *end, int nesting) {
     }
 }
 
-int demo_jr_skip(demo_jr_t *jr, size_t pos, size_t *end) {
+int democ_jr_skip(democ_jr_t *jr, size_t pos, size_t *end) {
     return skip_value(jr, pos, end, 0);
 }
 
-int demo_jr_document(demo_jr_t *jr, size_t *pos) {
-    size_t start = demo_jr_ws(jr, 0);
+int democ_jr_document(democ_jr_t *jr, size_t *pos) {
+    size_t start = democ_jr_ws(jr, 0);
     size_t end;
     if (!at(jr, start, '{')) {
-        return demo_jr_fail(jr, "expected a JSON object");
+        return democ_jr_fail(jr, "expected a JSON object");
     }
-    if (demo_jr_skip(jr, start, &end)) {
+    if (democ_jr_skip(jr, start, &end)) {
         return -1;
     }
-    if (demo_jr_ws(jr, end) != jr->len) {
-        return demo_jr_fail(jr, "unexpected text after the JSON object");
+    if (democ_jr_ws(jr, end) != jr->len) {
+        return democ_jr_fail(jr, "unexpected text after the JSON object");
     }
     *pos = start;
     return 0;
 }
 
-/* Walks an object that demo_jr_skip accepted: calls back for each key. */
+/* Walks an object that democ_jr_skip accepted: calls back for each key. */
 /* The character at jr->s[*i] inside a string that scan_string accepted: escapes decoded and a
  * UTF-8 sequence read as one code point; advances *i past it. */
-static unsigned string_char(const demo_jr_t *jr, size_t *i) {
+static unsigned string_char(const democ_jr_t *jr, size_t *i) {
     const unsigned char *u = (const unsigned char *)jr->s + *i;
     unsigned code = u[0];
     if (code == '\\') {
@@ -342,7 +342,7 @@ static unsigned string_char(const demo_jr_t *jr, size_t *i) {
 
 /* True when the JSON string at key_pos..key_end (quotes included, already scanned) denotes the
  * ASCII text name: escapes are decoded first ("na\u006de" is the key "name", §5). */
-static bool key_equals(const demo_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
+static bool key_equals(const democ_jr_t *jr, size_t key_pos, size_t key_end, const char *name) {
     size_t i = key_pos + 1;
     size_t k = 0;
     while (i < key_end - 1) {
@@ -355,7 +355,7 @@ static bool key_equals(const demo_jr_t *jr, size_t key_pos, size_t key_end, cons
     return name[k] == '\0';
 }
 
-static size_t key_index(const demo_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
+static size_t key_index(const democ_jr_t *jr, size_t key_pos, size_t key_end, const char *const *keys,
                         size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
@@ -366,17 +366,17 @@ static size_t key_index(const demo_jr_t *jr, size_t key_pos, size_t key_end, con
     return n;
 }
 
-int demo_jr_object(demo_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
+int democ_jr_object(democ_jr_t *jr, size_t pos, const char *const *keys, size_t n) {
     size_t end;
     uint64_t seen = 0;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (!at(jr, pos, '{')) {
-        return demo_jr_fail(jr, "expected an object");
+        return democ_jr_fail(jr, "expected an object");
     }
-    if (demo_jr_skip(jr, pos, &end)) {
+    if (democ_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    pos = demo_jr_ws(jr, pos + 1);
+    pos = democ_jr_ws(jr, pos + 1);
     while (!at(jr, pos, '}')) {
         size_t key_end;
         size_t k;
@@ -384,64 +384,64 @@ int demo_jr_object(demo_jr_t *jr, size_t pos, const char *const *keys, size_t n)
         k = key_index(jr, pos, key_end, keys, n);
         if (k == n) {
             int shown = (int)(key_end - pos > 40 ? 40 : key_end - pos);
-            return demo_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
+            return democ_jr_fail(jr, "unknown key %.*s", shown, jr->s + pos);
         }
         if (k < 64 && (seen & ((uint64_t)1 << k))) {
-            return demo_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
+            return democ_jr_fail(jr, "duplicate key \"%s\"", keys[k]);
         }
         if (k < 64) {
             seen |= (uint64_t)1 << k;
         }
-        pos = demo_jr_ws(jr, key_end) + 1;
+        pos = democ_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = demo_jr_ws(jr, pos);
+        pos = democ_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = demo_jr_ws(jr, pos + 1);
+            pos = democ_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int demo_jr_get(demo_jr_t *jr, size_t pos, const char *key, size_t *value) {
-    pos = demo_jr_ws(jr, pos) + 1;
-    pos = demo_jr_ws(jr, pos);
+int democ_jr_get(democ_jr_t *jr, size_t pos, const char *key, size_t *value) {
+    pos = democ_jr_ws(jr, pos) + 1;
+    pos = democ_jr_ws(jr, pos);
     while (at(jr, pos, '"')) {
         size_t key_end;
         scan_string(jr, pos, &key_end);
         if (key_index(jr, pos, key_end, &key, 1) == 0) {
-            *value = demo_jr_ws(jr, demo_jr_ws(jr, key_end) + 1);
+            *value = democ_jr_ws(jr, democ_jr_ws(jr, key_end) + 1);
             return 1;
         }
-        pos = demo_jr_ws(jr, key_end) + 1;
+        pos = democ_jr_ws(jr, key_end) + 1;
         skip_value(jr, pos, &pos, 0);
-        pos = demo_jr_ws(jr, pos);
+        pos = democ_jr_ws(jr, pos);
         if (at(jr, pos, ',')) {
-            pos = demo_jr_ws(jr, pos + 1);
+            pos = democ_jr_ws(jr, pos + 1);
         }
     }
     return 0;
 }
 
-int demo_jr_array(demo_jr_t *jr, size_t pos, size_t *it) {
+int democ_jr_array(democ_jr_t *jr, size_t pos, size_t *it) {
     size_t end;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (!at(jr, pos, '[')) {
-        return demo_jr_fail(jr, "expected an array");
+        return democ_jr_fail(jr, "expected an array");
     }
-    if (demo_jr_skip(jr, pos, &end)) {
+    if (democ_jr_skip(jr, pos, &end)) {
         return -1;
     }
-    *it = demo_jr_ws(jr, pos + 1);
+    *it = democ_jr_ws(jr, pos + 1);
     return 0;
 }
 
-int demo_jr_next(demo_jr_t *jr, size_t *it, size_t *elem) {
-    size_t pos = demo_jr_ws(jr, *it);
+int democ_jr_next(democ_jr_t *jr, size_t *it, size_t *elem) {
+    size_t pos = democ_jr_ws(jr, *it);
     if (at(jr, pos, ']')) {
         return 0;
     }
     if (at(jr, pos, ',')) {
-        pos = demo_jr_ws(jr, pos + 1);
+        pos = democ_jr_ws(jr, pos + 1);
     }
     *elem = pos;
     if (skip_value(jr, pos, it, 0)) {
@@ -450,34 +450,40 @@ int demo_jr_next(demo_jr_t *jr, size_t *it, size_t *elem) {
     return 1;
 }
 
-/* Magnitude of an integer token; *negative for a leading '-'. */
-static int integer(demo_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
+/* Magnitude of an integer token; *negative for a leading '-'. Returns 0, or -1 after recording
+ * the failure: a literal -1 on every failing path (not democ_jr_fail's result), so that the
+ * compiler sees that *mag and *negative are written whenever 0 is returned (gcc -O3 otherwise
+ * warns that the callers' values may be used uninitialized). */
+static int integer(democ_jr_t *jr, size_t pos, uint64_t *mag, int *negative, const char *expected) {
     size_t end;
     size_t i;
     int is_int;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (pos >= jr->len || !(jr->s[pos] == '-' || (jr->s[pos] >= '0' && jr->s[pos] <= '9'))) {
-        return demo_jr_fail(jr, "expected %s", expected);
+        (void)democ_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     if (!is_int) {
-        return demo_jr_fail(jr, "expected %s", expected);
+        (void)democ_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *negative = jr->s[pos] == '-';
     *mag = 0;
     for (i = pos + (*negative ? 1u : 0u); i < end; i++) {
         unsigned d = (unsigned)(jr->s[i] - '0');
         if (*mag > (UINT64_MAX - d) / 10) {
-            return demo_jr_fail(jr, "expected %s", expected);
+            (void)democ_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *mag = *mag * 10 + d;
     }
     return 0;
 }
 
-int demo_jr_uint(demo_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
+int democ_jr_uint(democ_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
     char expected[64];
     uint64_t mag;
     int negative;
@@ -486,13 +492,14 @@ int demo_jr_uint(demo_jr_t *jr, size_t pos, uint64_t max, uint64_t *out) {
         return -1;
     }
     if ((negative && mag != 0) || mag > max) {
-        return demo_jr_fail(jr, "expected %s", expected);
+        (void)democ_jr_fail(jr, "expected %s", expected);
+        return -1;
     }
     *out = mag;
     return 0;
 }
 
-int demo_jr_sint(demo_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
+int democ_jr_sint(democ_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out) {
     char expected[80];
     uint64_t mag;
     int negative;
@@ -504,38 +511,40 @@ int demo_jr_sint(demo_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *o
         /* -mag >= min  <=>  mag <= -(min + 1) + 1 */
         uint64_t limit = (uint64_t)(-(min + 1)) + 1u;
         if (mag > limit) {
-            return demo_jr_fail(jr, "expected %s", expected);
+            (void)democ_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = mag == 0 ? 0 : -(int64_t)(mag - 1) - 1;
     } else {
         if (mag > (uint64_t)max) {
-            return demo_jr_fail(jr, "expected %s", expected);
+            (void)democ_jr_fail(jr, "expected %s", expected);
+            return -1;
         }
         *out = (int64_t)mag;
     }
     return 0;
 }
 
-int demo_jr_null(demo_jr_t *jr, size_t pos) {
-    pos = demo_jr_ws(jr, pos);
+int democ_jr_null(democ_jr_t *jr, size_t pos) {
+    pos = democ_jr_ws(jr, pos);
     if (jr->len - pos < 4 || memcmp(jr->s + pos, "null", 4) != 0) {
-        return demo_jr_fail(jr, "expected null");
+        return democ_jr_fail(jr, "expected null");
     }
     return 0;
 }
 
-bool demo_jr_is_string(const demo_jr_t *jr, size_t pos) {
-    return at(jr, demo_jr_ws(jr, pos), '"');
+bool democ_jr_is_string(const democ_jr_t *jr, size_t pos) {
+    return at(jr, democ_jr_ws(jr, pos), '"');
 }
 
 /* Decodes the string at pos into bytes (code points up to U+00FF); *n gets the byte count,
  * which may exceed cap (then only cap bytes are stored). */
-static int string_bytes(demo_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
+static int string_bytes(democ_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n, const char *expected) {
     size_t end;
     size_t i;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return demo_jr_fail(jr, "expected %s", expected);
+        return democ_jr_fail(jr, "expected %s", expected);
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -575,13 +584,13 @@ static int string_bytes(demo_jr_t *jr, size_t pos, char *out, size_t cap, size_t
             /* UTF-8 of U+0080..U+00FF */
             unsigned char c2 = i + 1 < end - 1 ? (unsigned char)jr->s[i + 1] : 0;
             if ((c != 0xC2 && c != 0xC3) || (c2 & 0xC0) != 0x80) {
-                return demo_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+                return democ_jr_fail(jr, "character outside U+0000..U+00FF in a string");
             }
             code = ((unsigned)(c & 0x1F) << 6) | (c2 & 0x3Fu);
             i++;
         }
         if (code > 0xFF) {
-            return demo_jr_fail(jr, "character outside U+0000..U+00FF in a string");
+            return democ_jr_fail(jr, "character outside U+0000..U+00FF in a string");
         }
         if (*n < cap) {
             out[*n] = (char)(unsigned char)code;
@@ -591,7 +600,7 @@ static int string_bytes(demo_jr_t *jr, size_t pos, char *out, size_t cap, size_t
     return 0;
 }
 
-int demo_jr_chars(demo_jr_t *jr, size_t pos, char *out, size_t n) {
+int democ_jr_chars(democ_jr_t *jr, size_t pos, char *out, size_t n) {
     char expected[64];
     size_t got;
     snprintf(expected, sizeof expected, "a string of exactly %zu characters", n);
@@ -599,19 +608,19 @@ int demo_jr_chars(demo_jr_t *jr, size_t pos, char *out, size_t n) {
         return -1;
     }
     if (got != n) {
-        return demo_jr_fail(jr, "expected %s, got %zu", expected, got);
+        return democ_jr_fail(jr, "expected %s, got %zu", expected, got);
     }
     return 0;
 }
 
-int demo_jr_hex(demo_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
+int democ_jr_hex(democ_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) {
     size_t end;
     size_t i;
     size_t digits = 0;
     int hi = 0;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (!at(jr, pos, '"')) {
-        return demo_jr_fail(jr, "expected a hex string");
+        return democ_jr_fail(jr, "expected a hex string");
     }
     if (scan_string(jr, pos, &end)) {
         return -1;
@@ -621,7 +630,7 @@ int demo_jr_hex(demo_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) 
         unsigned code = string_char(jr, &i);
         int d = code < 0x80 ? hex_value((char)code) : -1;
         if (d < 0) {
-            return demo_jr_fail(jr, "expected hex digits");
+            return democ_jr_fail(jr, "expected hex digits");
         }
         if (digits % 2 == 0) {
             hi = d;
@@ -631,17 +640,17 @@ int demo_jr_hex(demo_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) 
         digits++;
     }
     if (digits % 2 != 0) {
-        return demo_jr_fail(jr, "expected an even number of hex digits");
+        return democ_jr_fail(jr, "expected an even number of hex digits");
     }
     *n = digits / 2;
     if (*n > cap) {
-        return demo_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
+        return democ_jr_fail(jr, "%zu bytes is more than the %zu allowed here", *n, cap);
     }
     return 0;
 }
 
-int demo_jr_bool(demo_jr_t *jr, size_t pos, bool *out) {
-    pos = demo_jr_ws(jr, pos);
+int democ_jr_bool(democ_jr_t *jr, size_t pos, bool *out) {
+    pos = democ_jr_ws(jr, pos);
     if (jr->len - pos >= 4 && memcmp(jr->s + pos, "true", 4) == 0) {
         *out = true;
         return 0;
@@ -650,79 +659,79 @@ int demo_jr_bool(demo_jr_t *jr, size_t pos, bool *out) {
         *out = false;
         return 0;
     }
-    return demo_jr_fail(jr, "expected true or false");
+    return democ_jr_fail(jr, "expected true or false");
 }
 
-int demo_jr_char(demo_jr_t *jr, size_t pos, char *out) {
-    return demo_jr_chars(jr, pos, out, 1);
+int democ_jr_char(democ_jr_t *jr, size_t pos, char *out) {
+    return democ_jr_chars(jr, pos, out, 1);
 }
 
-int demo_jr_u8(demo_jr_t *jr, size_t pos, uint8_t *out) {
+int democ_jr_u8(democ_jr_t *jr, size_t pos, uint8_t *out) {
     uint64_t v;
-    if (demo_jr_uint(jr, pos, UINT8_MAX, &v)) {
+    if (democ_jr_uint(jr, pos, UINT8_MAX, &v)) {
         return -1;
     }
     *out = (uint8_t)v;
     return 0;
 }
 
-int demo_jr_u16(demo_jr_t *jr, size_t pos, uint16_t *out) {
+int democ_jr_u16(democ_jr_t *jr, size_t pos, uint16_t *out) {
     uint64_t v;
-    if (demo_jr_uint(jr, pos, UINT16_MAX, &v)) {
+    if (democ_jr_uint(jr, pos, UINT16_MAX, &v)) {
         return -1;
     }
     *out = (uint16_t)v;
     return 0;
 }
 
-int demo_jr_u32(demo_jr_t *jr, size_t pos, uint32_t *out) {
+int democ_jr_u32(democ_jr_t *jr, size_t pos, uint32_t *out) {
     uint64_t v;
-    if (demo_jr_uint(jr, pos, UINT32_MAX, &v)) {
+    if (democ_jr_uint(jr, pos, UINT32_MAX, &v)) {
         return -1;
     }
     *out = (uint32_t)v;
     return 0;
 }
 
-int demo_jr_u64(demo_jr_t *jr, size_t pos, uint64_t *out) {
+int democ_jr_u64(democ_jr_t *jr, size_t pos, uint64_t *out) {
     uint64_t v;
-    if (demo_jr_uint(jr, pos, UINT64_MAX, &v)) {
+    if (democ_jr_uint(jr, pos, UINT64_MAX, &v)) {
         return -1;
     }
     *out = (uint64_t)v;
     return 0;
 }
 
-int demo_jr_s8(demo_jr_t *jr, size_t pos, int8_t *out) {
+int democ_jr_s8(democ_jr_t *jr, size_t pos, int8_t *out) {
     int64_t v;
-    if (demo_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
+    if (democ_jr_sint(jr, pos, INT8_MIN, INT8_MAX, &v)) {
         return -1;
     }
     *out = (int8_t)v;
     return 0;
 }
 
-int demo_jr_s16(demo_jr_t *jr, size_t pos, int16_t *out) {
+int democ_jr_s16(democ_jr_t *jr, size_t pos, int16_t *out) {
     int64_t v;
-    if (demo_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
+    if (democ_jr_sint(jr, pos, INT16_MIN, INT16_MAX, &v)) {
         return -1;
     }
     *out = (int16_t)v;
     return 0;
 }
 
-int demo_jr_s32(demo_jr_t *jr, size_t pos, int32_t *out) {
+int democ_jr_s32(democ_jr_t *jr, size_t pos, int32_t *out) {
     int64_t v;
-    if (demo_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
+    if (democ_jr_sint(jr, pos, INT32_MIN, INT32_MAX, &v)) {
         return -1;
     }
     *out = (int32_t)v;
     return 0;
 }
 
-int demo_jr_s64(demo_jr_t *jr, size_t pos, int64_t *out) {
+int democ_jr_s64(democ_jr_t *jr, size_t pos, int64_t *out) {
     int64_t v;
-    if (demo_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
+    if (democ_jr_sint(jr, pos, INT64_MIN, INT64_MAX, &v)) {
         return -1;
     }
     *out = (int64_t)v;
@@ -802,12 +811,12 @@ static double number_value(const char *s, size_t n) {
 }
 
 /* A number, or "inf", "-inf", "nan", "nan:0x<hex_digits>"; *bits set for "nan:0x..". */
-static int number(demo_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
+static int number(democ_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *has_bits, size_t hex_digits,
                   const char *expected) {
     size_t end;
     int is_int;
     *has_bits = 0;
-    pos = demo_jr_ws(jr, pos);
+    pos = democ_jr_ws(jr, pos);
     if (at(jr, pos, '"')) {
         size_t n;
         char text[32];
@@ -845,19 +854,19 @@ static int number(demo_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *h
                 }
             }
         }
-        return demo_jr_fail(jr, "expected %s", expected);
+        return democ_jr_fail(jr, "expected %s", expected);
     }
     if (scan_number(jr, pos, &end, &is_int)) {
         return -1;
     }
     *out = number_value(jr->s + pos, end - pos);
     if (*out == HUGE_VAL || *out == -HUGE_VAL) {
-        return demo_jr_fail(jr, "number out of range for a double");
+        return democ_jr_fail(jr, "number out of range for a double");
     }
     return 0;
 }
 
-int demo_jr_f64(demo_jr_t *jr, size_t pos, double *out) {
+int democ_jr_f64(democ_jr_t *jr, size_t pos, double *out) {
     uint64_t bits;
     int has_bits;
     const char *expected = "a number, \"inf\", \"-inf\", \"nan\" or \"nan:0x\" and 16 hex digits";
@@ -866,14 +875,14 @@ int demo_jr_f64(demo_jr_t *jr, size_t pos, double *out) {
     }
     if (has_bits) {
         if (((bits >> 52) & 0x7FF) != 0x7FF || (bits & 0xFFFFFFFFFFFFFull) == 0) {
-            return demo_jr_fail(jr, "not a NaN bit pattern");
+            return democ_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &bits, sizeof bits);
     }
     return 0;
 }
 
-int demo_jr_f32(demo_jr_t *jr, size_t pos, float *out) {
+int democ_jr_f32(democ_jr_t *jr, size_t pos, float *out) {
     uint64_t bits;
     int has_bits;
     double d = 0;
@@ -884,7 +893,7 @@ int demo_jr_f32(demo_jr_t *jr, size_t pos, float *out) {
     if (has_bits) {
         uint32_t b32 = (uint32_t)bits;
         if (((b32 >> 23) & 0xFF) != 0xFF || (b32 & 0x7FFFFFu) == 0) {
-            return demo_jr_fail(jr, "not a NaN bit pattern");
+            return democ_jr_fail(jr, "not a NaN bit pattern");
         }
         memcpy(out, &b32, sizeof b32);
         return 0;
@@ -897,7 +906,7 @@ int demo_jr_f32(demo_jr_t *jr, size_t pos, float *out) {
      * (0x1.ffffffp127) up is infinite as a float: out of range (§5). Below it, a double beyond
      * FLT_MAX rounds to FLT_MAX (spelled out: C leaves that conversion undefined). */
     if (d >= 0x1.ffffffp127 || d <= -0x1.ffffffp127) {
-        return demo_jr_fail(jr, "number out of range for a float");
+        return democ_jr_fail(jr, "number out of range for a float");
     }
     if (d > FLT_MAX || d < -FLT_MAX) {
         *out = d > 0 ? FLT_MAX : -FLT_MAX;

@@ -4,25 +4,24 @@
 #include "democodec/json.h"
 
 #include <assert.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-void demo_jw_init(demo_jw_t *w, char *buf, size_t cap) {
+void democ_jw_init(democ_jw_t *w, char *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
-size_t demo_jw_finish(demo_jw_t *w) {
+size_t democ_jw_finish(democ_jw_t *w) {
     if (w->cap > 0) {
         w->buf[w->len < w->cap ? w->len : w->cap - 1] = '\0';
     }
     return w->len;
 }
 
-void demo_jw_raw(demo_jw_t *w, const char *text, size_t n) {
+void democ_jw_raw(democ_jw_t *w, const char *text, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
         if (w->len + 1 < w->cap) {
@@ -32,61 +31,61 @@ void demo_jw_raw(demo_jw_t *w, const char *text, size_t n) {
     }
 }
 
-void demo_jw_lit(demo_jw_t *w, const char *text) {
-    demo_jw_raw(w, text, strlen(text));
+void democ_jw_lit(democ_jw_t *w, const char *text) {
+    democ_jw_raw(w, text, strlen(text));
 }
 
-void demo_jw_key(demo_jw_t *w, int *first, const char *key) {
+void democ_jw_key(democ_jw_t *w, int *first, const char *key) {
     if (!*first) {
-        demo_jw_raw(w, ",", 1);
+        democ_jw_raw(w, ",", 1);
     }
     *first = 0;
-    demo_jw_raw(w, "\"", 1);
-    demo_jw_lit(w, key);
-    demo_jw_raw(w, "\":", 2);
+    democ_jw_raw(w, "\"", 1);
+    democ_jw_lit(w, key);
+    democ_jw_raw(w, "\":", 2);
 }
 
-void demo_jw_sep(demo_jw_t *w, size_t index) {
+void democ_jw_sep(democ_jw_t *w, size_t index) {
     if (index > 0) {
-        demo_jw_raw(w, ",", 1);
+        democ_jw_raw(w, ",", 1);
     }
 }
 
-void demo_jw_uint(demo_jw_t *w, uint64_t v) {
+void democ_jw_uint(democ_jw_t *w, uint64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRIu64, v);
-    demo_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%llu", (unsigned long long)v);
+    democ_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
-void demo_jw_int(demo_jw_t *w, int64_t v) {
+void democ_jw_int(democ_jw_t *w, int64_t v) {
     char buf[24];
-    int n = snprintf(buf, sizeof buf, "%" PRId64, v);
-    demo_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
+    int n = snprintf(buf, sizeof buf, "%lld", (long long)v);
+    democ_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
 static const char k_hex[] = "0123456789abcdef";
 
-void demo_jw_hex(demo_jw_t *w, const uint8_t *bytes, size_t n) {
+void democ_jw_hex(democ_jw_t *w, const uint8_t *bytes, size_t n) {
     size_t i;
-    demo_jw_raw(w, "\"", 1);
+    democ_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         char two[2];
         two[0] = k_hex[bytes[i] >> 4];
         two[1] = k_hex[bytes[i] & 0x0F];
-        demo_jw_raw(w, two, 2);
+        democ_jw_raw(w, two, 2);
     }
-    demo_jw_raw(w, "\"", 1);
+    democ_jw_raw(w, "\"", 1);
 }
 
-void demo_jw_string(demo_jw_t *w, const char *bytes, size_t n) {
+void democ_jw_string(democ_jw_t *w, const char *bytes, size_t n) {
     size_t i;
-    demo_jw_raw(w, "\"", 1);
+    democ_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         unsigned char b = (unsigned char)bytes[i];
         if (b == '"') {
-            demo_jw_raw(w, "\\\"", 2);
+            democ_jw_raw(w, "\\\"", 2);
         } else if (b == '\\') {
-            demo_jw_raw(w, "\\\\", 2);
+            democ_jw_raw(w, "\\\\", 2);
         } else if (b < 0x20 || b >= 0x7F) {
             char esc[6];
             esc[0] = '\\';
@@ -95,68 +94,68 @@ void demo_jw_string(demo_jw_t *w, const char *bytes, size_t n) {
             esc[3] = '0';
             esc[4] = k_hex[b >> 4];
             esc[5] = k_hex[b & 0x0F];
-            demo_jw_raw(w, esc, 6);
+            democ_jw_raw(w, esc, 6);
         } else {
-            demo_jw_raw(w, (const char *)&bytes[i], 1);
+            democ_jw_raw(w, (const char *)&bytes[i], 1);
         }
     }
-    demo_jw_raw(w, "\"", 1);
+    democ_jw_raw(w, "\"", 1);
 }
 
-void demo_jw_bool(demo_jw_t *w, const bool *v) {
-    demo_jw_lit(w, *v ? "true" : "false");
+void democ_jw_bool(democ_jw_t *w, const bool *v) {
+    democ_jw_lit(w, *v ? "true" : "false");
 }
 
-void demo_jw_char(demo_jw_t *w, const char *v) {
-    demo_jw_string(w, v, 1);
+void democ_jw_char(democ_jw_t *w, const char *v) {
+    democ_jw_string(w, v, 1);
 }
 
-void demo_jw_u8(demo_jw_t *w, const uint8_t *v) {
-    demo_jw_uint(w, *v);
+void democ_jw_u8(democ_jw_t *w, const uint8_t *v) {
+    democ_jw_uint(w, *v);
 }
 
-void demo_jw_u16(demo_jw_t *w, const uint16_t *v) {
-    demo_jw_uint(w, *v);
+void democ_jw_u16(democ_jw_t *w, const uint16_t *v) {
+    democ_jw_uint(w, *v);
 }
 
-void demo_jw_u32(demo_jw_t *w, const uint32_t *v) {
-    demo_jw_uint(w, *v);
+void democ_jw_u32(democ_jw_t *w, const uint32_t *v) {
+    democ_jw_uint(w, *v);
 }
 
-void demo_jw_u64(demo_jw_t *w, const uint64_t *v) {
-    demo_jw_uint(w, *v);
+void democ_jw_u64(democ_jw_t *w, const uint64_t *v) {
+    democ_jw_uint(w, *v);
 }
 
-void demo_jw_s8(demo_jw_t *w, const int8_t *v) {
-    demo_jw_int(w, *v);
+void democ_jw_s8(democ_jw_t *w, const int8_t *v) {
+    democ_jw_int(w, *v);
 }
 
-void demo_jw_s16(demo_jw_t *w, const int16_t *v) {
-    demo_jw_int(w, *v);
+void democ_jw_s16(democ_jw_t *w, const int16_t *v) {
+    democ_jw_int(w, *v);
 }
 
-void demo_jw_s32(demo_jw_t *w, const int32_t *v) {
-    demo_jw_int(w, *v);
+void democ_jw_s32(democ_jw_t *w, const int32_t *v) {
+    democ_jw_int(w, *v);
 }
 
-void demo_jw_s64(demo_jw_t *w, const int64_t *v) {
-    demo_jw_int(w, *v);
+void democ_jw_s64(democ_jw_t *w, const int64_t *v) {
+    democ_jw_int(w, *v);
 }
 
-void demo_jw_f32(demo_jw_t *w, const float *v) {
-    char buf[DEMO_JSON_NUMBER_MAX];
-    size_t n = demo_json_format_float(*v, buf, sizeof buf);
-    demo_jw_raw(w, buf, n);
+void democ_jw_f32(democ_jw_t *w, const float *v) {
+    char buf[DEMOC_JSON_NUMBER_MAX];
+    size_t n = democ_json_format_float(*v, buf, sizeof buf);
+    democ_jw_raw(w, buf, n);
 }
 
-void demo_jw_f64(demo_jw_t *w, const double *v) {
-    char buf[DEMO_JSON_NUMBER_MAX];
-    size_t n = demo_json_format_double(*v, buf, sizeof buf);
-    demo_jw_raw(w, buf, n);
+void democ_jw_f64(democ_jw_t *w, const double *v) {
+    char buf[DEMOC_JSON_NUMBER_MAX];
+    size_t n = democ_json_format_double(*v, buf, sizeof buf);
+    democ_jw_raw(w, buf, n);
 }
 
-void demo_jw_chars(demo_jw_t *w, const char *v, size_t n) {
-    demo_jw_string(w, v, n);
+void democ_jw_chars(democ_jw_t *w, const char *v, size_t n) {
+    democ_jw_string(w, v, n);
 }
 
 /* ------------------------------------------------------------------ numbers */
@@ -447,7 +446,7 @@ static size_t format_finite(double v, char *buf, size_t cap) {
     return finish(buf, cap, len);
 }
 
-size_t demo_json_format_double(double v, char *buf, size_t cap) {
+size_t democ_json_format_double(double v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint64_t bits;
     char text[32];
@@ -459,13 +458,13 @@ size_t demo_json_format_double(double v, char *buf, size_t cap) {
         if (bits == 0x7FF8000000000000ull) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%016" PRIx64 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%016llx\"", (unsigned long long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite(v, buf, cap);
 }
 
-size_t demo_json_format_float(float v, char *buf, size_t cap) {
+size_t democ_json_format_float(float v, char *buf, size_t cap) {
     assert(buf != NULL || cap == 0);
     uint32_t bits;
     char text[32];
@@ -477,17 +476,17 @@ size_t demo_json_format_float(float v, char *buf, size_t cap) {
         if (bits == 0x7FC00000u) {
             return finish(buf, cap, put_text(buf, cap, 0, "\"nan\""));
         }
-        snprintf(text, sizeof text, "\"nan:0x%08" PRIx32 "\"", bits);
+        snprintf(text, sizeof text, "\"nan:0x%08lx\"", (unsigned long)bits);
         return finish(buf, cap, put_text(buf, cap, 0, text));
     }
     return format_finite((double)v, buf, cap);
 }
 
-size_t demo_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
+size_t democ_json_format_string(const char *bytes, size_t n, char *buf, size_t cap) {
     assert(bytes != NULL || n == 0);
     assert(buf != NULL || cap == 0);
-    demo_jw_t w;
-    demo_jw_init(&w, buf, cap);
-    demo_jw_string(&w, bytes, n);
-    return demo_jw_finish(&w);
+    democ_jw_t w;
+    democ_jw_init(&w, buf, cap);
+    democ_jw_string(&w, bytes, n);
+    return democ_jw_finish(&w);
 }

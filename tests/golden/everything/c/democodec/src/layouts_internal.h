@@ -1,6 +1,6 @@
 /* Private: JSON functions of every field layout. Generated: do not edit. */
-#ifndef DEMO_LAYOUTS_INTERNAL_H
-#define DEMO_LAYOUTS_INTERNAL_H
+#ifndef DEMOC_LAYOUTS_INTERNAL_H
+#define DEMOC_LAYOUTS_INTERNAL_H
 
 #include "democodec/dispatch.h"
 #include "json_reader.h"
@@ -9,39 +9,39 @@
 /* Keeps a rarely taken path (the general reader, error details) out of line so that the common
  * path around it stays a short function without register saves. */
 #if defined(__GNUC__) || defined(__clang__)
-#define DEMO_NOINLINE __attribute__((noinline))
+#define DEMOC_NOINLINE __attribute__((noinline))
 #elif defined(_MSC_VER)
-#define DEMO_NOINLINE __declspec(noinline)
+#define DEMOC_NOINLINE __declspec(noinline)
 #else
-#define DEMO_NOINLINE
+#define DEMOC_NOINLINE
 #endif
 
-void demo_ack_to_json(demo_jw_t *w, const demo_ack_t *in);
-int demo_ack_from_json(demo_jr_t *jr, size_t pos, demo_ack_t *out);
-void demo_commands_ping_to_json(demo_jw_t *w, const demo_commands_ping_t *in);
-int demo_commands_ping_from_json(demo_jr_t *jr, size_t pos, demo_commands_ping_t *out);
-void demo_commands_configure_to_json(demo_jw_t *w, const demo_commands_configure_t *in);
-int demo_commands_configure_from_json(demo_jr_t *jr, size_t pos, demo_commands_configure_t *out);
-void demo_commands_configuration_to_json(demo_jw_t *w, const demo_commands_configuration_t *in);
-int demo_commands_configuration_from_json(demo_jr_t *jr, size_t pos, demo_commands_configuration_t *out);
-void demo_commands_per_device_dev_a_to_json(demo_jw_t *w, const demo_commands_per_device_dev_a_t *in);
-int demo_commands_per_device_dev_a_from_json(demo_jr_t *jr, size_t pos,
-                                             demo_commands_per_device_dev_a_t *out);
-void demo_commands_per_device_dev_b_to_json(demo_jw_t *w, const demo_commands_per_device_dev_b_t *in);
-int demo_commands_per_device_dev_b_from_json(demo_jr_t *jr, size_t pos,
-                                             demo_commands_per_device_dev_b_t *out);
-void demo_data_sample_to_json(demo_jw_t *w, const demo_data_sample_t *in);
-int demo_data_sample_from_json(demo_jr_t *jr, size_t pos, demo_data_sample_t *out);
-void demo_receiver_1_llh_position_to_json(demo_jw_t *w, const demo_receiver_1_llh_position_t *in);
-int demo_receiver_1_llh_position_from_json(demo_jr_t *jr, size_t pos, demo_receiver_1_llh_position_t *out);
-void demo_receiver_2_llh_position_to_json(demo_jw_t *w, const demo_receiver_2_llh_position_t *in);
-int demo_receiver_2_llh_position_from_json(demo_jr_t *jr, size_t pos, demo_receiver_2_llh_position_t *out);
-void demo_shared_timestamp_to_json(demo_jw_t *w, const demo_shared_timestamp_t *in);
-int demo_shared_timestamp_from_json(demo_jr_t *jr, size_t pos, demo_shared_timestamp_t *out);
+void democ_ack_to_json(democ_jw_t *w, const democ_ack_t *in);
+int democ_ack_from_json(democ_jr_t *jr, size_t pos, democ_ack_t *out);
+void democ_commands_ping_to_json(democ_jw_t *w, const democ_commands_ping_t *in);
+int democ_commands_ping_from_json(democ_jr_t *jr, size_t pos, democ_commands_ping_t *out);
+void democ_commands_configure_to_json(democ_jw_t *w, const democ_commands_configure_t *in);
+int democ_commands_configure_from_json(democ_jr_t *jr, size_t pos, democ_commands_configure_t *out);
+void democ_commands_configuration_to_json(democ_jw_t *w, const democ_commands_configuration_t *in);
+int democ_commands_configuration_from_json(democ_jr_t *jr, size_t pos, democ_commands_configuration_t *out);
+void democ_commands_per_device_dev_a_to_json(democ_jw_t *w, const democ_commands_per_device_dev_a_t *in);
+int democ_commands_per_device_dev_a_from_json(democ_jr_t *jr, size_t pos,
+                                              democ_commands_per_device_dev_a_t *out);
+void democ_commands_per_device_dev_b_to_json(democ_jw_t *w, const democ_commands_per_device_dev_b_t *in);
+int democ_commands_per_device_dev_b_from_json(democ_jr_t *jr, size_t pos,
+                                              democ_commands_per_device_dev_b_t *out);
+void democ_data_sample_to_json(democ_jw_t *w, const democ_data_sample_t *in);
+int democ_data_sample_from_json(democ_jr_t *jr, size_t pos, democ_data_sample_t *out);
+void democ_receiver_1_llh_position_to_json(democ_jw_t *w, const democ_receiver_1_llh_position_t *in);
+int democ_receiver_1_llh_position_from_json(democ_jr_t *jr, size_t pos, democ_receiver_1_llh_position_t *out);
+void democ_receiver_2_llh_position_to_json(democ_jw_t *w, const democ_receiver_2_llh_position_t *in);
+int democ_receiver_2_llh_position_from_json(democ_jr_t *jr, size_t pos, democ_receiver_2_llh_position_t *out);
+void democ_shared_timestamp_to_json(democ_jw_t *w, const democ_shared_timestamp_t *in);
+int democ_shared_timestamp_from_json(democ_jr_t *jr, size_t pos, democ_shared_timestamp_t *out);
 
 /* The "values" object of a decoded field. */
-void demo_value_to_json(demo_jw_t *w, const demo_field_value_t *value);
+void democ_value_to_json(democ_jw_t *w, const democ_field_value_t *value);
 /* Reads the "values" object of layout id into *value (sets value->id). */
-int demo_value_from_json(demo_jr_t *jr, size_t pos, demo_field_id_t id, demo_field_value_t *value);
+int democ_value_from_json(democ_jr_t *jr, size_t pos, democ_field_id_t id, democ_field_value_t *value);
 
 #endif

@@ -4,13 +4,13 @@
 #include <assert.h>
 #include <string.h>
 
-void demo_parser_init(demo_parser_t *parser) {
+void democ_parser_init(democ_parser_t *parser) {
     assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
 }
 
 /* Marks the first n buffered bytes as skipped and drops them. */
-static void skip(demo_parser_t *parser, size_t n) {
+static void skip(democ_parser_t *parser, size_t n) {
     if (n == 0) {
         return;
     }
@@ -23,12 +23,12 @@ static void skip(demo_parser_t *parser, size_t n) {
     parser->base += n;
 }
 
-static void emit_skip(demo_parser_t *parser, demo_event_fn fn, void *ctx) {
-    demo_event_t ev;
+static void emit_skip(democ_parser_t *parser, democ_event_fn fn, void *ctx) {
+    democ_event_t ev;
     if (parser->skip_count == 0) {
         return;
     }
-    ev.kind = DEMO_EVENT_SKIP;
+    ev.kind = DEMOC_EVENT_SKIP;
     ev.offset = parser->skip_offset;
     ev.length = parser->skip_count;
     ev.packet = NULL;
@@ -39,14 +39,14 @@ static void emit_skip(demo_parser_t *parser, demo_event_fn fn, void *ctx) {
 }
 
 /* Index of the first full sync sequence, or of a partial one at the end, or used. */
-static size_t find_sync(const demo_parser_t *parser) {
+static size_t find_sync(const democ_parser_t *parser) {
     size_t i;
     for (i = 0; i < parser->used; i++) {
         size_t k = 0;
-        while (k < DEMO_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == demo_sync[k]) {
+        while (k < DEMOC_SYNC_SIZE && i + k < parser->used && parser->buf[i + k] == democ_sync[k]) {
             k++;
         }
-        if (k == DEMO_SYNC_SIZE || i + k == parser->used) {
+        if (k == DEMOC_SYNC_SIZE || i + k == parser->used) {
             return i;
         }
     }
@@ -55,7 +55,7 @@ static size_t find_sync(const demo_parser_t *parser) {
 
 /* Consumes what the buffered bytes decide; stops when more input is needed. At the end of
  * input (final) there is no more: a candidate that would wait is a false sync instead. */
-static void process(demo_parser_t *parser, demo_event_fn fn, void *ctx, int final) {
+static void process(democ_parser_t *parser, democ_event_fn fn, void *ctx, int final) {
     for (;;) {
         size_t payload;
         size_t total;
@@ -63,19 +63,19 @@ static void process(demo_parser_t *parser, demo_event_fn fn, void *ctx, int fina
         if (parser->used == 0) {
             return;
         }
-        if (parser->used < DEMO_HEADER_SIZE) {
+        if (parser->used < DEMOC_HEADER_SIZE) {
             if (!final) {
                 return; /* a partial sync or an incomplete header: wait */
             }
             skip(parser, 1);
             continue;
         }
-        payload = parser->buf[DEMO_LENGTH_OFFSET];
-        if (payload > DEMO_MAX_PAYLOAD) {
+        payload = parser->buf[DEMOC_LENGTH_OFFSET];
+        if (payload > DEMOC_MAX_PAYLOAD) {
             skip(parser, 1); /* false sync */
             continue;
         }
-        total = DEMO_HEADER_SIZE + payload + DEMO_CHECKSUM_SIZE;
+        total = DEMOC_HEADER_SIZE + payload + DEMOC_CHECKSUM_SIZE;
         if (parser->used < total) {
             if (!final) {
                 return; /* incomplete packet: wait */
@@ -83,14 +83,14 @@ static void process(demo_parser_t *parser, demo_event_fn fn, void *ctx, int fina
             skip(parser, 1);
             continue;
         }
-        if (!demo_checksum_matches(parser->buf, DEMO_HEADER_SIZE + payload)) {
+        if (!democ_checksum_matches(parser->buf, DEMOC_HEADER_SIZE + payload)) {
             skip(parser, 1); /* false sync: resynchronise at the next byte */
             continue;
         }
         emit_skip(parser, fn, ctx);
         if (fn) {
-            demo_event_t ev;
-            ev.kind = DEMO_EVENT_PACKET;
+            democ_event_t ev;
+            ev.kind = DEMOC_EVENT_PACKET;
             ev.offset = parser->base;
             ev.length = total;
             ev.packet = parser->buf;
@@ -104,15 +104,15 @@ static void process(demo_parser_t *parser, demo_event_fn fn, void *ctx, int fina
 
 /* Bytes the buffered candidate at buf[0] needs before process() can decide on it (0: none
  * buffered). A partial sync or header needs the header; a header, the whole packet. */
-static size_t wanted(const demo_parser_t *parser) {
+static size_t wanted(const democ_parser_t *parser) {
     size_t total;
     if (parser->used == 0) {
         return 0;
     }
-    if (parser->used < DEMO_HEADER_SIZE) {
-        return DEMO_HEADER_SIZE - parser->used;
+    if (parser->used < DEMOC_HEADER_SIZE) {
+        return DEMOC_HEADER_SIZE - parser->used;
     }
-    total = DEMO_HEADER_SIZE + (size_t)parser->buf[DEMO_LENGTH_OFFSET] + DEMO_CHECKSUM_SIZE;
+    total = DEMOC_HEADER_SIZE + (size_t)parser->buf[DEMOC_LENGTH_OFFSET] + DEMOC_CHECKSUM_SIZE;
     return total > parser->used ? total - parser->used : 1;
 }
 
@@ -120,7 +120,7 @@ static size_t wanted(const demo_parser_t *parser) {
  * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
  * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
  * of data[0] on entry and of data[consumed] on return. */
-static size_t scan(const uint8_t *data, size_t len, demo_parser_t *parser, demo_event_fn fn, void *ctx) {
+static size_t scan(const uint8_t *data, size_t len, democ_parser_t *parser, democ_event_fn fn, void *ctx) {
     const uint64_t base = parser->base;
     size_t pos = 0;
     while (pos < len) {
@@ -128,8 +128,8 @@ static size_t scan(const uint8_t *data, size_t len, demo_parser_t *parser, demo_
         size_t left = len - pos;
         size_t payload;
         size_t total;
-        if (p[0] != demo_sync[0]) {
-            const uint8_t *q = memchr(p, demo_sync[0], left);
+        if (p[0] != democ_sync[0]) {
+            const uint8_t *q = memchr(p, democ_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
             if (parser->skip_count == 0) {
                 parser->skip_offset = base + pos;
@@ -138,24 +138,24 @@ static size_t scan(const uint8_t *data, size_t len, demo_parser_t *parser, demo_
             pos += n;
             continue;
         }
-        if (left < DEMO_HEADER_SIZE) {
+        if (left < DEMOC_HEADER_SIZE) {
             /* a partial sync or header at the end: the caller buffers it (unless it already
              * differs from the sync sequence, then skip its first byte) */
-            if (memcmp(p, demo_sync, left < DEMO_SYNC_SIZE ? left : DEMO_SYNC_SIZE) == 0) {
+            if (memcmp(p, democ_sync, left < DEMOC_SYNC_SIZE ? left : DEMOC_SYNC_SIZE) == 0) {
                 break;
             }
-        } else if (memcmp(p, demo_sync, DEMO_SYNC_SIZE) == 0 &&
-                   (payload = p[DEMO_LENGTH_OFFSET]) <= DEMO_MAX_PAYLOAD) {
-            total = DEMO_HEADER_SIZE + payload + DEMO_CHECKSUM_SIZE;
+        } else if (memcmp(p, democ_sync, DEMOC_SYNC_SIZE) == 0 &&
+                   (payload = p[DEMOC_LENGTH_OFFSET]) <= DEMOC_MAX_PAYLOAD) {
+            total = DEMOC_HEADER_SIZE + payload + DEMOC_CHECKSUM_SIZE;
             if (left < total) {
                 break; /* incomplete packet: the caller buffers it */
             }
-            if (demo_checksum_matches(p, DEMO_HEADER_SIZE + payload)) {
+            if (democ_checksum_matches(p, DEMOC_HEADER_SIZE + payload)) {
                 parser->base = base + pos;
                 emit_skip(parser, fn, ctx);
                 if (fn) {
-                    demo_event_t ev;
-                    ev.kind = DEMO_EVENT_PACKET;
+                    democ_event_t ev;
+                    ev.kind = DEMOC_EVENT_PACKET;
                     ev.offset = base + pos;
                     ev.length = total;
                     ev.packet = p;
@@ -176,7 +176,8 @@ static size_t scan(const uint8_t *data, size_t len, demo_parser_t *parser, demo_
     return pos;
 }
 
-void demo_parser_feed(demo_parser_t *parser, const uint8_t *data, size_t len, demo_event_fn fn, void *ctx) {
+void democ_parser_feed(democ_parser_t *parser, const uint8_t *data, size_t len, democ_event_fn fn,
+                       void *ctx) {
     assert(parser != NULL);
     assert(data != NULL || len == 0);
     assert(fn != NULL);
@@ -205,7 +206,7 @@ void demo_parser_feed(demo_parser_t *parser, const uint8_t *data, size_t len, de
     }
 }
 
-void demo_parser_flush(demo_parser_t *parser, demo_event_fn fn, void *ctx) {
+void democ_parser_flush(democ_parser_t *parser, democ_event_fn fn, void *ctx) {
     assert(parser != NULL);
     assert(fn != NULL);
     process(parser, fn, ctx, 1);

@@ -7,41 +7,41 @@
 #include <assert.h>
 #include <string.h>
 
-/* ---- demo_ack_t */
+/* ---- democ_ack_t */
 
-static int demo_ack_read(demo_reader_t *r, demo_ack_t *out) {
-    demo_rd_push(r, "echo");
-    if (demo_rd_u8(r, &out->echo)) {
+static int democ_ack_read(democ_reader_t *r, democ_ack_t *out) {
+    democ_rd_push(r, "echo");
+    if (democ_rd_u8(r, &out->echo)) {
         return -1;
     }
-    demo_rd_pop(r);
-    demo_rd_push(r, "code");
-    if (demo_rd_u8(r, &out->code)) {
+    democ_rd_pop(r);
+    democ_rd_push(r, "code");
+    if (democ_rd_u8(r, &out->code)) {
         return -1;
     }
-    demo_rd_pop(r);
-    return demo_rd_finish(r);
+    democ_rd_pop(r);
+    return democ_rd_finish(r);
 }
 
-static demo_status_t demo_ack_write(demo_writer_t *w, const demo_ack_t *in) {
-    demo_status_t st;
-    if ((st = demo_wr_u8(w, &in->echo)) != DEMO_OK) {
+static democ_status_t democ_ack_write(democ_writer_t *w, const democ_ack_t *in) {
+    democ_status_t st;
+    if ((st = democ_wr_u8(w, &in->echo)) != DEMOC_OK) {
         return st;
     }
-    if ((st = demo_wr_u8(w, &in->code)) != DEMO_OK) {
+    if ((st = democ_wr_u8(w, &in->code)) != DEMOC_OK) {
         return st;
     }
-    return DEMO_OK;
+    return DEMOC_OK;
 }
 
-demo_status_t demo_ack_encode(const demo_ack_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
-    demo_writer_t w;
-    demo_status_t st;
+democ_status_t democ_ack_encode(const democ_ack_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
+    democ_writer_t w;
+    democ_status_t st;
     assert(value != NULL);
     assert(buf != NULL || cap == 0);
-    demo_writer_init(&w, buf, cap);
-    st = demo_ack_write(&w, value);
-    if (st == DEMO_OK && len_out) {
+    democ_writer_init(&w, buf, cap);
+    st = democ_ack_write(&w, value);
+    if (st == DEMOC_OK && len_out) {
         *len_out = w.len;
     }
     return st;
@@ -49,71 +49,29 @@ demo_status_t demo_ack_encode(const demo_ack_t *value, uint8_t *buf, size_t cap,
 
 /* The layout is 2 bytes of plain values: straight loads. -1 sends a bad bool
  * byte to the reader path, which reports it. */
-static int demo_ack_load(const uint8_t *d, demo_ack_t *out) {
-    out->echo = demo_ld_u8(d + 0);
-    out->code = demo_ld_u8(d + 1);
+static int democ_ack_load(const uint8_t *d, democ_ack_t *out) {
+    out->echo = democ_ld_u8(d + 0);
+    out->code = democ_ld_u8(d + 1);
     return 0;
 }
 
 /* The general reader: lengths other than 2, bad bool bytes, error details. */
-static DEMO_NOINLINE demo_status_t demo_ack_decode_read(const uint8_t *data, size_t len, demo_ack_t *out,
-                                                        demo_decode_error_t *err) {
-    demo_reader_t r;
+static DEMOC_NOINLINE democ_status_t democ_ack_decode_read(const uint8_t *data, size_t len, democ_ack_t *out,
+                                                           democ_decode_error_t *err) {
+    democ_reader_t r;
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    demo_reader_init(&r, data, len, err);
+    democ_reader_init(&r, data, len, err);
     memset(out, 0, sizeof *out);
-    return demo_ack_read(&r, out) ? DEMO_ERR_DECODE : DEMO_OK;
+    return democ_ack_read(&r, out) ? DEMOC_ERR_DECODE : DEMOC_OK;
 }
 
-demo_status_t demo_ack_decode(const uint8_t *data, size_t len, demo_ack_t *out, demo_decode_error_t *err) {
+democ_status_t democ_ack_decode(const uint8_t *data, size_t len, democ_ack_t *out,
+                                democ_decode_error_t *err) {
     assert(data != NULL || len == 0);
     assert(out != NULL);
-    if (len == 2 && demo_ack_load(data, out) == 0) {
-        return DEMO_OK;
+    if (len == 2 && democ_ack_load(data, out) == 0) {
+        return DEMOC_OK;
     }
-    return demo_ack_decode_read(data, len, out, err);
-}
-
-void demo_ack_to_json(demo_jw_t *w, const demo_ack_t *in) {
-    int first = 1;
-    demo_jw_raw(w, "{", 1);
-    demo_jw_key(w, &first, "echo");
-    demo_jw_u8(w, &in->echo);
-    demo_jw_key(w, &first, "code");
-    demo_jw_u8(w, &in->code);
-    demo_jw_raw(w, "}", 1);
-}
-
-int demo_ack_from_json(demo_jr_t *jr, size_t pos, demo_ack_t *out) {
-    static const char *const keys[] = {"echo", "code"};
-    size_t vp = 0;
-    int found;
-    memset(out, 0, sizeof *out);
-    if (demo_jr_object(jr, pos, keys, 2)) {
-        return -1;
-    }
-    found = demo_jr_get(jr, pos, "echo", &vp);
-    if (found != 1) {
-        return demo_jr_fail(jr, "missing parameter \"echo\"");
-    }
-    {
-        demo_jr_push(jr, "echo");
-        if (demo_jr_u8(jr, vp, &out->echo)) {
-            return -1;
-        }
-        demo_jr_pop(jr);
-    }
-    found = demo_jr_get(jr, pos, "code", &vp);
-    if (found != 1) {
-        return demo_jr_fail(jr, "missing parameter \"code\"");
-    }
-    {
-        demo_jr_push(jr, "code");
-        if (demo_jr_u8(jr, vp, &out->code)) {
-            return -1;
-        }
-        demo_jr_pop(jr);
-    }
-    return 0;
+    return democ_ack_decode_read(data, len, out, err);
 }

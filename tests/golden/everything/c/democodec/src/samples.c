@@ -9,16 +9,16 @@
 
 /* The protocol's rule (protocol.h). A protocol without data sets or timestamps still gets
  * one-element arrays (C has no empty ones); the #if blocks below leave them unused. */
-static const uint8_t k_data_sets[DEMO_SAMPLE_SETS] = DEMO_SAMPLE_DATA_SETS;
-#define TIMESTAMPS DEMO_SAMPLE_TIMESTAMPS
+static const uint8_t k_data_sets[DEMOC_SAMPLE_SETS] = DEMOC_SAMPLE_DATA_SETS;
+#define TIMESTAMPS DEMOC_SAMPLE_TIMESTAMPS
 #if TIMESTAMPS > 0
-static const uint8_t k_stamp_descriptor[TIMESTAMPS] = DEMO_SAMPLE_STAMP_DESCRIPTORS;
-static const uint8_t k_stamp_size[TIMESTAMPS] = DEMO_SAMPLE_STAMP_SIZES;
+static const uint8_t k_stamp_descriptor[TIMESTAMPS] = DEMOC_SAMPLE_STAMP_DESCRIPTORS;
+static const uint8_t k_stamp_size[TIMESTAMPS] = DEMOC_SAMPLE_STAMP_SIZES;
 #endif
 
 static bool is_shared(uint8_t descriptor) {
-#if DEMO_SAMPLE_FIRST_SHARED < 256
-    return descriptor >= DEMO_SAMPLE_FIRST_SHARED;
+#if DEMOC_SAMPLE_FIRST_SHARED < 256
+    return descriptor >= DEMOC_SAMPLE_FIRST_SHARED;
 #else
     (void)descriptor;
     return false;
@@ -26,9 +26,9 @@ static bool is_shared(uint8_t descriptor) {
 }
 
 static int slot_of(uint8_t set) {
-#if DEMO_SAMPLE_DATA_SET_COUNT > 0
+#if DEMOC_SAMPLE_DATA_SET_COUNT > 0
     int i;
-    for (i = 0; i < DEMO_SAMPLE_SETS; i++) {
+    for (i = 0; i < DEMOC_SAMPLE_SETS; i++) {
         if (k_data_sets[i] == set) {
             return i;
         }
@@ -43,22 +43,22 @@ static int slot_of(uint8_t set) {
 /* The payload of a complete packet, or NULL when the buffer does not hold one. */
 static const uint8_t *payload_of(const uint8_t *packet, size_t len, size_t *plen) {
     size_t n;
-    if (!packet || len < DEMO_HEADER_SIZE + DEMO_CHECKSUM_SIZE) {
+    if (!packet || len < DEMOC_HEADER_SIZE + DEMOC_CHECKSUM_SIZE) {
         return NULL;
     }
-    n = packet[DEMO_LENGTH_OFFSET];
-    if (DEMO_HEADER_SIZE + n + DEMO_CHECKSUM_SIZE > len) {
+    n = packet[DEMOC_LENGTH_OFFSET];
+    if (DEMOC_HEADER_SIZE + n + DEMOC_CHECKSUM_SIZE > len) {
         return NULL;
     }
     *plen = n;
-    return packet + DEMO_HEADER_SIZE;
+    return packet + DEMOC_HEADER_SIZE;
 }
 
-size_t demo_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
+size_t democ_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix) {
     assert(packet != NULL || len == 0);
     assert(key != NULL);
-    demo_field_iter_t it;
-    demo_field_entry_t e;
+    democ_field_iter_t it;
+    democ_field_entry_t e;
     size_t plen = 0;
     size_t key_len = 0;
     size_t prefix = 0;
@@ -72,15 +72,15 @@ size_t demo_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *
     if (!payload) {
         return 0;
     }
-    demo_field_iter_init(&it, demo_packet_set(packet), payload, plen);
-    while (demo_field_iter_next(&it, &e) && e.kind == DEMO_ENTRY_FIELD && is_shared(e.descriptor)) {
+    democ_field_iter_init(&it, democ_packet_set(packet), payload, plen);
+    while (democ_field_iter_next(&it, &e) && e.kind == DEMOC_ENTRY_FIELD && is_shared(e.descriptor)) {
 #if TIMESTAMPS > 0
         int t;
         for (t = 0; t < TIMESTAMPS; t++) {
             if (k_stamp_descriptor[t] == e.descriptor && k_stamp_size[t] == e.length && !seen[t]) {
-                size_t n = DEMO_FIELD_HEADER_SIZE + e.length;
+                size_t n = DEMOC_FIELD_HEADER_SIZE + e.length;
                 seen[t] = true;
-                if (key_len + n <= DEMO_SAMPLE_KEY_MAX) {
+                if (key_len + n <= DEMOC_SAMPLE_KEY_MAX) {
                     memcpy(key + key_len, payload + e.offset, n);
                     key_len += n;
                 }
@@ -90,7 +90,7 @@ size_t demo_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *
 #else
         (void)key;
 #endif
-        prefix = e.offset + DEMO_FIELD_HEADER_SIZE + e.length;
+        prefix = e.offset + DEMOC_FIELD_HEADER_SIZE + e.length;
     }
     if (shared_prefix) {
         *shared_prefix = prefix;
@@ -98,31 +98,31 @@ size_t demo_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *
     return key_len;
 }
 
-void demo_sample_tracker_init(demo_sample_tracker_t *tracker) {
+void democ_sample_tracker_init(democ_sample_tracker_t *tracker) {
     assert(tracker != NULL);
     memset(tracker, 0, sizeof *tracker);
 }
 
-bool demo_sample_tracker_feed(demo_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                              demo_sample_info_t *info) {
+bool democ_sample_tracker_feed(democ_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                               democ_sample_info_t *info) {
     assert(tracker != NULL);
     assert(packet != NULL || len == 0);
     assert(info != NULL);
-    uint8_t key[DEMO_SAMPLE_KEY_MAX];
+    uint8_t key[DEMOC_SAMPLE_KEY_MAX];
     size_t key_len;
     size_t prefix = 0;
     size_t plen = 0;
-    demo_sample_slot_t *slot;
+    democ_sample_slot_t *slot;
     int i;
     if (!payload_of(packet, len, &plen)) {
         return false;
     }
-    i = slot_of(packet[DEMO_SET_OFFSET]);
+    i = slot_of(packet[DEMOC_SET_OFFSET]);
     if (i < 0) {
         return false;
     }
     slot = &tracker->slots[i];
-    key_len = demo_sample_key(packet, len, key, &prefix);
+    key_len = democ_sample_key(packet, len, key, &prefix);
     info->shared_prefix = prefix;
     if (key_len > 0 && slot->used && slot->key_len == key_len && memcmp(slot->key, key, key_len) == 0) {
         info->number = slot->number;

@@ -1,45 +1,45 @@
-/* Bounds-checked reader and writer in the protocol's byte order (DEMO_LITTLE_ENDIAN).
+/* Bounds-checked reader and writer in the protocol's byte order (DEMOC_LITTLE_ENDIAN).
  * Generated: do not edit. */
 #include "wire.h"
 
 #include <string.h>
 
-void demo_reader_init(demo_reader_t *r, const uint8_t *data, size_t len, demo_decode_error_t *err) {
+void democ_reader_init(democ_reader_t *r, const uint8_t *data, size_t len, democ_decode_error_t *err) {
     memset(r, 0, sizeof *r);
     r->data = data;
     r->len = data ? len : 0;
     r->err = err;
 }
 
-void demo_rd_push(demo_reader_t *r, const char *name) {
-    if (r->depth < DEMO_PATH_MAX_DEPTH) {
+void democ_rd_push(democ_reader_t *r, const char *name) {
+    if (r->depth < DEMOC_PATH_MAX_DEPTH) {
         r->path[r->depth].name = name;
         r->path[r->depth].index = SIZE_MAX;
     }
     r->depth++;
 }
 
-void demo_rd_index(demo_reader_t *r, size_t index) {
-    if (r->depth > 0 && r->depth <= DEMO_PATH_MAX_DEPTH) {
+void democ_rd_index(democ_reader_t *r, size_t index) {
+    if (r->depth > 0 && r->depth <= DEMOC_PATH_MAX_DEPTH) {
         r->path[r->depth - 1].index = index;
     }
 }
 
-void demo_rd_pop(demo_reader_t *r) {
+void democ_rd_pop(democ_reader_t *r) {
     if (r->depth > 0) {
         r->depth--;
     }
 }
 
-static demo_decode_error_t *begin_error(demo_reader_t *r, demo_decode_error_kind_t kind) {
+static democ_decode_error_t *begin_error(democ_reader_t *r, democ_decode_error_kind_t kind) {
     size_t i;
-    demo_decode_error_t *e = r->err;
+    democ_decode_error_t *e = r->err;
     if (!e) {
         return NULL;
     }
     memset(e, 0, sizeof *e);
     e->kind = kind;
-    e->depth = r->depth < DEMO_PATH_MAX_DEPTH ? r->depth : DEMO_PATH_MAX_DEPTH;
+    e->depth = r->depth < DEMOC_PATH_MAX_DEPTH ? r->depth : DEMOC_PATH_MAX_DEPTH;
     for (i = 0; i < e->depth; i++) {
         e->path[i] = r->path[i];
     }
@@ -48,12 +48,12 @@ static demo_decode_error_t *begin_error(demo_reader_t *r, demo_decode_error_kind
     return e;
 }
 
-static int need(demo_reader_t *r, size_t n) {
-    demo_decode_error_t *e;
+static int need(democ_reader_t *r, size_t n) {
+    democ_decode_error_t *e;
     if (r->len - r->pos >= n) {
         return 0;
     }
-    e = begin_error(r, DEMO_DECODE_NEEDS_BYTES);
+    e = begin_error(r, DEMOC_DECODE_NEEDS_BYTES);
     if (e) {
         e->need = n;
     }
@@ -61,11 +61,11 @@ static int need(demo_reader_t *r, size_t n) {
 }
 
 /* An n-byte unsigned value in the protocol's byte order. */
-static uint64_t get_uint(demo_reader_t *r, size_t n) {
+static uint64_t get_uint(democ_reader_t *r, size_t n) {
     uint64_t v = 0;
     size_t i;
     for (i = 0; i < n; i++) {
-#if DEMO_LITTLE_ENDIAN
+#if DEMOC_LITTLE_ENDIAN
         v |= (uint64_t)r->data[r->pos + i] << (8 * i);
 #else
         v = (v << 8) | (uint64_t)r->data[r->pos + i];
@@ -85,15 +85,15 @@ static int64_t to_signed(uint64_t u, unsigned bits) {
     return (int64_t)u;
 }
 
-int demo_rd_bool(demo_reader_t *r, bool *out) {
+int democ_rd_bool(democ_reader_t *r, bool *out) {
     uint8_t b;
-    demo_decode_error_t *e;
+    democ_decode_error_t *e;
     if (need(r, 1)) {
         return -1;
     }
     b = r->data[r->pos];
     if (b > 1) {
-        e = begin_error(r, DEMO_DECODE_BOOL);
+        e = begin_error(r, DEMOC_DECODE_BOOL);
         if (e) {
             e->value = b;
         }
@@ -104,11 +104,11 @@ int demo_rd_bool(demo_reader_t *r, bool *out) {
     return 0;
 }
 
-int demo_rd_char(demo_reader_t *r, char *out) {
-    return demo_rd_chars(r, out, 1);
+int democ_rd_char(democ_reader_t *r, char *out) {
+    return democ_rd_chars(r, out, 1);
 }
 
-int demo_rd_u8(demo_reader_t *r, uint8_t *out) {
+int democ_rd_u8(democ_reader_t *r, uint8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -116,7 +116,7 @@ int demo_rd_u8(demo_reader_t *r, uint8_t *out) {
     return 0;
 }
 
-int demo_rd_u16(demo_reader_t *r, uint16_t *out) {
+int democ_rd_u16(democ_reader_t *r, uint16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -124,7 +124,7 @@ int demo_rd_u16(demo_reader_t *r, uint16_t *out) {
     return 0;
 }
 
-int demo_rd_u32(demo_reader_t *r, uint32_t *out) {
+int democ_rd_u32(democ_reader_t *r, uint32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -132,7 +132,7 @@ int demo_rd_u32(demo_reader_t *r, uint32_t *out) {
     return 0;
 }
 
-int demo_rd_u64(demo_reader_t *r, uint64_t *out) {
+int democ_rd_u64(democ_reader_t *r, uint64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -140,7 +140,7 @@ int demo_rd_u64(demo_reader_t *r, uint64_t *out) {
     return 0;
 }
 
-int demo_rd_s8(demo_reader_t *r, int8_t *out) {
+int democ_rd_s8(democ_reader_t *r, int8_t *out) {
     if (need(r, 1)) {
         return -1;
     }
@@ -148,7 +148,7 @@ int demo_rd_s8(demo_reader_t *r, int8_t *out) {
     return 0;
 }
 
-int demo_rd_s16(demo_reader_t *r, int16_t *out) {
+int democ_rd_s16(democ_reader_t *r, int16_t *out) {
     if (need(r, 2)) {
         return -1;
     }
@@ -156,7 +156,7 @@ int demo_rd_s16(demo_reader_t *r, int16_t *out) {
     return 0;
 }
 
-int demo_rd_s32(demo_reader_t *r, int32_t *out) {
+int democ_rd_s32(democ_reader_t *r, int32_t *out) {
     if (need(r, 4)) {
         return -1;
     }
@@ -164,7 +164,7 @@ int demo_rd_s32(demo_reader_t *r, int32_t *out) {
     return 0;
 }
 
-int demo_rd_s64(demo_reader_t *r, int64_t *out) {
+int democ_rd_s64(democ_reader_t *r, int64_t *out) {
     if (need(r, 8)) {
         return -1;
     }
@@ -172,7 +172,7 @@ int demo_rd_s64(demo_reader_t *r, int64_t *out) {
     return 0;
 }
 
-int demo_rd_f32(demo_reader_t *r, float *out) {
+int democ_rd_f32(democ_reader_t *r, float *out) {
     uint32_t bits;
     if (need(r, 4)) {
         return -1;
@@ -182,7 +182,7 @@ int demo_rd_f32(demo_reader_t *r, float *out) {
     return 0;
 }
 
-int demo_rd_f64(demo_reader_t *r, double *out) {
+int democ_rd_f64(democ_reader_t *r, double *out) {
     uint64_t bits;
     if (need(r, 8)) {
         return -1;
@@ -192,7 +192,7 @@ int demo_rd_f64(demo_reader_t *r, double *out) {
     return 0;
 }
 
-int demo_rd_chars(demo_reader_t *r, char *out, size_t n) {
+int democ_rd_chars(democ_reader_t *r, char *out, size_t n) {
     if (need(r, n)) {
         return -1;
     }
@@ -203,25 +203,25 @@ int demo_rd_chars(demo_reader_t *r, char *out, size_t n) {
     return 0;
 }
 
-int demo_rd_remaining(demo_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
+int democ_rd_remaining(democ_reader_t *r, size_t elem_size, uint64_t max, size_t *count) {
     size_t left = r->len - r->pos;
-    demo_decode_error_t *e;
+    democ_decode_error_t *e;
     if (left % elem_size != 0) {
-        e = begin_error(r, DEMO_DECODE_REMAINING);
+        e = begin_error(r, DEMOC_DECODE_REMAINING);
         if (e) {
             e->need = elem_size;
         }
         return -1;
     }
     if ((uint64_t)(left / elem_size) > max) {
-        return demo_rd_count_error(r, (uint64_t)(left / elem_size), max);
+        return democ_rd_count_error(r, (uint64_t)(left / elem_size), max);
     }
     *count = left / elem_size;
     return 0;
 }
 
-int demo_rd_count_error(demo_reader_t *r, uint64_t count, uint64_t max) {
-    demo_decode_error_t *e = begin_error(r, DEMO_DECODE_COUNT);
+int democ_rd_count_error(democ_reader_t *r, uint64_t count, uint64_t max) {
+    democ_decode_error_t *e = begin_error(r, DEMOC_DECODE_COUNT);
     if (e) {
         e->count = count;
         e->max = max;
@@ -229,16 +229,16 @@ int demo_rd_count_error(demo_reader_t *r, uint64_t count, uint64_t max) {
     return -1;
 }
 
-int demo_rd_selector_error_u(demo_reader_t *r, uint64_t value) {
-    demo_decode_error_t *e = begin_error(r, DEMO_DECODE_SELECTOR);
+int democ_rd_selector_error_u(democ_reader_t *r, uint64_t value) {
+    democ_decode_error_t *e = begin_error(r, DEMOC_DECODE_SELECTOR);
     if (e) {
         e->value = value;
     }
     return -1;
 }
 
-int demo_rd_selector_error_s(demo_reader_t *r, int64_t value) {
-    demo_decode_error_t *e = begin_error(r, DEMO_DECODE_SELECTOR);
+int democ_rd_selector_error_s(democ_reader_t *r, int64_t value) {
+    democ_decode_error_t *e = begin_error(r, DEMOC_DECODE_SELECTOR);
     if (e) {
         e->value = (uint64_t)value;
         e->value_signed = true;
@@ -246,97 +246,97 @@ int demo_rd_selector_error_s(demo_reader_t *r, int64_t value) {
     return -1;
 }
 
-int demo_rd_finish(demo_reader_t *r) {
+int democ_rd_finish(democ_reader_t *r) {
     if (r->pos < r->len) {
         r->depth = 0;
-        begin_error(r, DEMO_DECODE_UNEXPECTED);
+        begin_error(r, DEMOC_DECODE_UNEXPECTED);
         return -1;
     }
     return 0;
 }
 
-void demo_writer_init(demo_writer_t *w, uint8_t *buf, size_t cap) {
+void democ_writer_init(democ_writer_t *w, uint8_t *buf, size_t cap) {
     w->buf = buf;
     w->cap = buf ? cap : 0;
     w->len = 0;
 }
 
 /* The low n bytes of v in the protocol's byte order. */
-static demo_status_t put_uint(demo_writer_t *w, uint64_t v, size_t n) {
+static democ_status_t put_uint(democ_writer_t *w, uint64_t v, size_t n) {
     size_t i;
     if (w->cap - w->len < n) {
-        return DEMO_ERR_BUFFER;
+        return DEMOC_ERR_BUFFER;
     }
     for (i = 0; i < n; i++) {
-#if DEMO_LITTLE_ENDIAN
+#if DEMOC_LITTLE_ENDIAN
         w->buf[w->len + i] = (uint8_t)(v >> (8 * i));
 #else
         w->buf[w->len + i] = (uint8_t)(v >> (8 * (n - 1 - i)));
 #endif
     }
     w->len += n;
-    return DEMO_OK;
+    return DEMOC_OK;
 }
 
-demo_status_t demo_wr_bool(demo_writer_t *w, const bool *v) {
+democ_status_t democ_wr_bool(democ_writer_t *w, const bool *v) {
     return put_uint(w, *v ? 1u : 0u, 1);
 }
 
-demo_status_t demo_wr_char(demo_writer_t *w, const char *v) {
-    return demo_wr_chars(w, v, 1);
+democ_status_t democ_wr_char(democ_writer_t *w, const char *v) {
+    return democ_wr_chars(w, v, 1);
 }
 
-demo_status_t demo_wr_u8(demo_writer_t *w, const uint8_t *v) {
+democ_status_t democ_wr_u8(democ_writer_t *w, const uint8_t *v) {
     return put_uint(w, *v, 1);
 }
 
-demo_status_t demo_wr_u16(demo_writer_t *w, const uint16_t *v) {
+democ_status_t democ_wr_u16(democ_writer_t *w, const uint16_t *v) {
     return put_uint(w, *v, 2);
 }
 
-demo_status_t demo_wr_u32(demo_writer_t *w, const uint32_t *v) {
+democ_status_t democ_wr_u32(democ_writer_t *w, const uint32_t *v) {
     return put_uint(w, *v, 4);
 }
 
-demo_status_t demo_wr_u64(demo_writer_t *w, const uint64_t *v) {
+democ_status_t democ_wr_u64(democ_writer_t *w, const uint64_t *v) {
     return put_uint(w, *v, 8);
 }
 
-demo_status_t demo_wr_s8(demo_writer_t *w, const int8_t *v) {
+democ_status_t democ_wr_s8(democ_writer_t *w, const int8_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 1);
 }
 
-demo_status_t demo_wr_s16(demo_writer_t *w, const int16_t *v) {
+democ_status_t democ_wr_s16(democ_writer_t *w, const int16_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 2);
 }
 
-demo_status_t demo_wr_s32(demo_writer_t *w, const int32_t *v) {
+democ_status_t democ_wr_s32(democ_writer_t *w, const int32_t *v) {
     return put_uint(w, (uint64_t)(int64_t)*v, 4);
 }
 
-demo_status_t demo_wr_s64(demo_writer_t *w, const int64_t *v) {
+democ_status_t democ_wr_s64(democ_writer_t *w, const int64_t *v) {
     return put_uint(w, (uint64_t)*v, 8);
 }
 
-demo_status_t demo_wr_f32(demo_writer_t *w, const float *v) {
+democ_status_t democ_wr_f32(democ_writer_t *w, const float *v) {
     uint32_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 4);
 }
 
-demo_status_t demo_wr_f64(demo_writer_t *w, const double *v) {
+democ_status_t democ_wr_f64(democ_writer_t *w, const double *v) {
     uint64_t bits;
     memcpy(&bits, v, sizeof bits);
     return put_uint(w, bits, 8);
 }
 
-demo_status_t demo_wr_chars(demo_writer_t *w, const char *v, size_t n) {
+democ_status_t democ_wr_chars(democ_writer_t *w, const char *v, size_t n) {
     if (w->cap - w->len < n) {
-        return DEMO_ERR_BUFFER;
+        return DEMOC_ERR_BUFFER;
     }
     if (n > 0) {
         memcpy(w->buf + w->len, v, n);
     }
     w->len += n;
-    return DEMO_OK;
+    return DEMOC_OK;
 }

@@ -1,8 +1,8 @@
 /* Private: bounds-checked reader and writer used by the generated layouts, in the protocol's
- * byte order (DEMO_LITTLE_ENDIAN in protocol.h).
+ * byte order (DEMOC_LITTLE_ENDIAN in protocol.h).
  * Generated: do not edit. */
-#ifndef DEMO_WIRE_H
-#define DEMO_WIRE_H
+#ifndef DEMOC_WIRE_H
+#define DEMOC_WIRE_H
 
 #include "democodec/status.h"
 
@@ -14,133 +14,133 @@ typedef struct {
     const uint8_t *data;
     size_t len;
     size_t pos;
-    demo_path_segment_t path[DEMO_PATH_MAX_DEPTH];
+    democ_path_segment_t path[DEMOC_PATH_MAX_DEPTH];
     size_t depth;
-    demo_decode_error_t *err;
-} demo_reader_t;
+    democ_decode_error_t *err;
+} democ_reader_t;
 
-void demo_reader_init(demo_reader_t *r, const uint8_t *data, size_t len, demo_decode_error_t *err);
+void democ_reader_init(democ_reader_t *r, const uint8_t *data, size_t len, democ_decode_error_t *err);
 
 /* Parameter path bookkeeping (the names are string literals). */
-void demo_rd_push(demo_reader_t *r, const char *name);
-void demo_rd_index(demo_reader_t *r, size_t index);
-void demo_rd_pop(demo_reader_t *r);
+void democ_rd_push(democ_reader_t *r, const char *name);
+void democ_rd_index(democ_reader_t *r, size_t index);
+void democ_rd_pop(democ_reader_t *r);
 
-int demo_rd_bool(demo_reader_t *r, bool *out);
-int demo_rd_char(demo_reader_t *r, char *out);
-int demo_rd_u8(demo_reader_t *r, uint8_t *out);
-int demo_rd_u16(demo_reader_t *r, uint16_t *out);
-int demo_rd_u32(demo_reader_t *r, uint32_t *out);
-int demo_rd_u64(demo_reader_t *r, uint64_t *out);
-int demo_rd_s8(demo_reader_t *r, int8_t *out);
-int demo_rd_s16(demo_reader_t *r, int16_t *out);
-int demo_rd_s32(demo_reader_t *r, int32_t *out);
-int demo_rd_s64(demo_reader_t *r, int64_t *out);
-int demo_rd_f32(demo_reader_t *r, float *out);
-int demo_rd_f64(demo_reader_t *r, double *out);
+int democ_rd_bool(democ_reader_t *r, bool *out);
+int democ_rd_char(democ_reader_t *r, char *out);
+int democ_rd_u8(democ_reader_t *r, uint8_t *out);
+int democ_rd_u16(democ_reader_t *r, uint16_t *out);
+int democ_rd_u32(democ_reader_t *r, uint32_t *out);
+int democ_rd_u64(democ_reader_t *r, uint64_t *out);
+int democ_rd_s8(democ_reader_t *r, int8_t *out);
+int democ_rd_s16(democ_reader_t *r, int16_t *out);
+int democ_rd_s32(democ_reader_t *r, int32_t *out);
+int democ_rd_s64(democ_reader_t *r, int64_t *out);
+int democ_rd_f32(democ_reader_t *r, float *out);
+int democ_rd_f64(democ_reader_t *r, double *out);
 /* A string of exactly n bytes, kept verbatim. */
-int demo_rd_chars(demo_reader_t *r, char *out, size_t n);
+int democ_rd_chars(democ_reader_t *r, char *out, size_t n);
 /* A `remaining` array of fixed-size elements: the element count, checked against max. */
-int demo_rd_remaining(demo_reader_t *r, size_t elem_size, uint64_t max, size_t *count);
+int democ_rd_remaining(democ_reader_t *r, size_t elem_size, uint64_t max, size_t *count);
 /* Errors raised by generated code. */
-int demo_rd_count_error(demo_reader_t *r, uint64_t count, uint64_t max);
-int demo_rd_selector_error_u(demo_reader_t *r, uint64_t value);
-int demo_rd_selector_error_s(demo_reader_t *r, int64_t value);
+int democ_rd_count_error(democ_reader_t *r, uint64_t count, uint64_t max);
+int democ_rd_selector_error_u(democ_reader_t *r, uint64_t value);
+int democ_rd_selector_error_s(democ_reader_t *r, int64_t value);
 /* After the last parameter: leftover bytes are an error. */
-int demo_rd_finish(demo_reader_t *r);
+int democ_rd_finish(democ_reader_t *r);
 
 /* Straight loads in the protocol's byte order for fixed layouts (the caller has checked the
  * length). Signed and floating values take the bits of the unsigned value (exact-width types have
  * no padding). */
-static inline uint8_t demo_ld_u8(const uint8_t *d) {
+static inline uint8_t democ_ld_u8(const uint8_t *d) {
     return d[0];
 }
-#if DEMO_LITTLE_ENDIAN
-static inline uint16_t demo_ld_u16(const uint8_t *d) {
+#if DEMOC_LITTLE_ENDIAN
+static inline uint16_t democ_ld_u16(const uint8_t *d) {
     return (uint16_t)((unsigned)d[1] << 8 | d[0]);
 }
-static inline uint32_t demo_ld_u32(const uint8_t *d) {
+static inline uint32_t democ_ld_u32(const uint8_t *d) {
     return (uint32_t)d[3] << 24 | (uint32_t)d[2] << 16 | (uint32_t)d[1] << 8 | (uint32_t)d[0];
 }
-static inline uint64_t demo_ld_u64(const uint8_t *d) {
-    return (uint64_t)demo_ld_u32(d + 4) << 32 | demo_ld_u32(d);
+static inline uint64_t democ_ld_u64(const uint8_t *d) {
+    return (uint64_t)democ_ld_u32(d + 4) << 32 | democ_ld_u32(d);
 }
 #else
-static inline uint16_t demo_ld_u16(const uint8_t *d) {
+static inline uint16_t democ_ld_u16(const uint8_t *d) {
     return (uint16_t)((unsigned)d[0] << 8 | d[1]);
 }
-static inline uint32_t demo_ld_u32(const uint8_t *d) {
+static inline uint32_t democ_ld_u32(const uint8_t *d) {
     return (uint32_t)d[0] << 24 | (uint32_t)d[1] << 16 | (uint32_t)d[2] << 8 | (uint32_t)d[3];
 }
-static inline uint64_t demo_ld_u64(const uint8_t *d) {
-    return (uint64_t)demo_ld_u32(d) << 32 | demo_ld_u32(d + 4);
+static inline uint64_t democ_ld_u64(const uint8_t *d) {
+    return (uint64_t)democ_ld_u32(d) << 32 | democ_ld_u32(d + 4);
 }
 #endif
-static inline bool demo_ld_bool(const uint8_t *d) {
+static inline bool democ_ld_bool(const uint8_t *d) {
     return d[0] != 0;
 }
-static inline char demo_ld_char(const uint8_t *d) {
+static inline char democ_ld_char(const uint8_t *d) {
     char c;
     memcpy(&c, d, 1);
     return c;
 }
-static inline int8_t demo_ld_s8(const uint8_t *d) {
+static inline int8_t democ_ld_s8(const uint8_t *d) {
     int8_t v;
     memcpy(&v, d, 1);
     return v;
 }
-static inline int16_t demo_ld_s16(const uint8_t *d) {
-    uint16_t u = demo_ld_u16(d);
+static inline int16_t democ_ld_s16(const uint8_t *d) {
+    uint16_t u = democ_ld_u16(d);
     int16_t v;
     memcpy(&v, &u, sizeof v);
     return v;
 }
-static inline int32_t demo_ld_s32(const uint8_t *d) {
-    uint32_t u = demo_ld_u32(d);
+static inline int32_t democ_ld_s32(const uint8_t *d) {
+    uint32_t u = democ_ld_u32(d);
     int32_t v;
     memcpy(&v, &u, sizeof v);
     return v;
 }
-static inline int64_t demo_ld_s64(const uint8_t *d) {
-    uint64_t u = demo_ld_u64(d);
+static inline int64_t democ_ld_s64(const uint8_t *d) {
+    uint64_t u = democ_ld_u64(d);
     int64_t v;
     memcpy(&v, &u, sizeof v);
     return v;
 }
-static inline float demo_ld_f32(const uint8_t *d) {
-    uint32_t u = demo_ld_u32(d);
+static inline float democ_ld_f32(const uint8_t *d) {
+    uint32_t u = democ_ld_u32(d);
     float v;
     memcpy(&v, &u, sizeof v);
     return v;
 }
-static inline double demo_ld_f64(const uint8_t *d) {
-    uint64_t u = demo_ld_u64(d);
+static inline double democ_ld_f64(const uint8_t *d) {
+    uint64_t u = democ_ld_u64(d);
     double v;
     memcpy(&v, &u, sizeof v);
     return v;
 }
 
-/* Writes field data into a bounded buffer; functions return DEMO_OK or DEMO_ERR_BUFFER. */
+/* Writes field data into a bounded buffer; functions return DEMOC_OK or DEMOC_ERR_BUFFER. */
 typedef struct {
     uint8_t *buf;
     size_t cap;
     size_t len;
-} demo_writer_t;
+} democ_writer_t;
 
-void demo_writer_init(demo_writer_t *w, uint8_t *buf, size_t cap);
+void democ_writer_init(democ_writer_t *w, uint8_t *buf, size_t cap);
 
-demo_status_t demo_wr_bool(demo_writer_t *w, const bool *v);
-demo_status_t demo_wr_char(demo_writer_t *w, const char *v);
-demo_status_t demo_wr_u8(demo_writer_t *w, const uint8_t *v);
-demo_status_t demo_wr_u16(demo_writer_t *w, const uint16_t *v);
-demo_status_t demo_wr_u32(demo_writer_t *w, const uint32_t *v);
-demo_status_t demo_wr_u64(demo_writer_t *w, const uint64_t *v);
-demo_status_t demo_wr_s8(demo_writer_t *w, const int8_t *v);
-demo_status_t demo_wr_s16(demo_writer_t *w, const int16_t *v);
-demo_status_t demo_wr_s32(demo_writer_t *w, const int32_t *v);
-demo_status_t demo_wr_s64(demo_writer_t *w, const int64_t *v);
-demo_status_t demo_wr_f32(demo_writer_t *w, const float *v);
-demo_status_t demo_wr_f64(demo_writer_t *w, const double *v);
-demo_status_t demo_wr_chars(demo_writer_t *w, const char *v, size_t n);
+democ_status_t democ_wr_bool(democ_writer_t *w, const bool *v);
+democ_status_t democ_wr_char(democ_writer_t *w, const char *v);
+democ_status_t democ_wr_u8(democ_writer_t *w, const uint8_t *v);
+democ_status_t democ_wr_u16(democ_writer_t *w, const uint16_t *v);
+democ_status_t democ_wr_u32(democ_writer_t *w, const uint32_t *v);
+democ_status_t democ_wr_u64(democ_writer_t *w, const uint64_t *v);
+democ_status_t democ_wr_s8(democ_writer_t *w, const int8_t *v);
+democ_status_t democ_wr_s16(democ_writer_t *w, const int16_t *v);
+democ_status_t democ_wr_s32(democ_writer_t *w, const int32_t *v);
+democ_status_t democ_wr_s64(democ_writer_t *w, const int64_t *v);
+democ_status_t democ_wr_f32(democ_writer_t *w, const float *v);
+democ_status_t democ_wr_f64(democ_writer_t *w, const double *v);
+democ_status_t democ_wr_chars(democ_writer_t *w, const char *v, size_t n);
 
 #endif

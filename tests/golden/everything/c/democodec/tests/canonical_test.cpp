@@ -695,8 +695,8 @@ TEST(Canonical, Doubles) {
     for (const DoubleCase &c : kDoubles) {
         double d;
         std::memcpy(&d, &c.bits, sizeof d);
-        char buf[DEMO_JSON_NUMBER_MAX];
-        size_t n = demo_json_format_double(d, buf, sizeof buf);
+        char buf[DEMOC_JSON_NUMBER_MAX];
+        size_t n = democ_json_format_double(d, buf, sizeof buf);
         EXPECT_EQ(std::string(buf, n), c.text) << "bits " << std::hex << c.bits;
     }
 }
@@ -705,8 +705,8 @@ TEST(Canonical, Floats) {
     for (const FloatCase &c : kFloats) {
         float f;
         std::memcpy(&f, &c.bits, sizeof f);
-        char buf[DEMO_JSON_NUMBER_MAX];
-        size_t n = demo_json_format_float(f, buf, sizeof buf);
+        char buf[DEMOC_JSON_NUMBER_MAX];
+        size_t n = democ_json_format_float(f, buf, sizeof buf);
         EXPECT_EQ(std::string(buf, n), c.text) << "bits " << std::hex << c.bits;
     }
 }
@@ -717,22 +717,23 @@ TEST(Canonical, StringsEscapeEveryByte) {
         all[i] = static_cast<char>(i);
     }
     char buf[sizeof kAllBytes + 1];
-    demo_json_format_string(all, sizeof all, buf, sizeof buf);
+    democ_json_format_string(all, sizeof all, buf, sizeof buf);
     EXPECT_STREQ(buf, kAllBytes);
 }
 
-// demo_flags_t: each member's mask and shift, and (value & MASK) >> SHIFT of an all-ones value.
+// democ_flags_t: each member's mask and shift, and (value & MASK) >> SHIFT of an all-ones value.
 TEST(Bitfields, Flags) {
-    const demo_flags_t all = static_cast<demo_flags_t>(~static_cast<demo_flags_t>(0));
-    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_OK_MASK), UINT64_C(0x1));
-    EXPECT_EQ(DEMO_FLAGS_OK_SHIFT, 0);
-    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_OK_MASK) >> DEMO_FLAGS_OK_SHIFT), UINT64_C(0x1));
-    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_LEVEL_MASK), UINT64_C(0xF000));
-    EXPECT_EQ(DEMO_FLAGS_LEVEL_SHIFT, 12);
-    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_LEVEL_MASK) >> DEMO_FLAGS_LEVEL_SHIFT), UINT64_C(0xF));
-    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_ALL_MASK), UINT64_C(0xFFFF));
-    EXPECT_EQ(DEMO_FLAGS_ALL_SHIFT, 0);
-    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_ALL_MASK) >> DEMO_FLAGS_ALL_SHIFT), UINT64_C(0xFFFF));
+    const democ_flags_t all = static_cast<democ_flags_t>(~static_cast<democ_flags_t>(0));
+    EXPECT_EQ(static_cast<uint64_t>(DEMOC_FLAGS_OK_MASK), UINT64_C(0x1));
+    EXPECT_EQ(DEMOC_FLAGS_OK_SHIFT, 0);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMOC_FLAGS_OK_MASK) >> DEMOC_FLAGS_OK_SHIFT), UINT64_C(0x1));
+    EXPECT_EQ(static_cast<uint64_t>(DEMOC_FLAGS_LEVEL_MASK), UINT64_C(0xF000));
+    EXPECT_EQ(DEMOC_FLAGS_LEVEL_SHIFT, 12);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMOC_FLAGS_LEVEL_MASK) >> DEMOC_FLAGS_LEVEL_SHIFT),
+              UINT64_C(0xF));
+    EXPECT_EQ(static_cast<uint64_t>(DEMOC_FLAGS_ALL_MASK), UINT64_C(0xFFFF));
+    EXPECT_EQ(DEMOC_FLAGS_ALL_SHIFT, 0);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMOC_FLAGS_ALL_MASK) >> DEMOC_FLAGS_ALL_SHIFT), UINT64_C(0xFFFF));
 }
 
 } // namespace

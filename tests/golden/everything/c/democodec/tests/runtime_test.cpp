@@ -16,11 +16,11 @@ using namespace test_support;
 namespace {
 
 // A set and descriptor that designate no field (for raw-field tests).
-bool unknown_field(uint8_t *set, uint8_t *descriptor, demo_status_t want) {
+bool unknown_field(uint8_t *set, uint8_t *descriptor, democ_status_t want) {
     for (unsigned s = 0; s < 256; s++) {
         for (unsigned d = 0; d < 256; d++) {
-            demo_status_t why = DEMO_OK;
-            if (!demo_find_field(static_cast<uint8_t>(s), static_cast<uint8_t>(d), &why) && why == want) {
+            democ_status_t why = DEMOC_OK;
+            if (!democ_find_field(static_cast<uint8_t>(s), static_cast<uint8_t>(d), &why) && why == want) {
                 *set = static_cast<uint8_t>(s);
                 *descriptor = static_cast<uint8_t>(d);
                 return true;
@@ -49,20 +49,20 @@ TEST(Parser, JsonLinesAreIndependentOfChunking) {
 TEST(Parser, SkipLineCarriesTheSkippedBytes) {
     std::vector<uint8_t> stream = {garbage_byte(), 0x22, 0xAB};
     char line[128];
-    demo_json_skip_line(0, stream.data(), stream.size(), line, sizeof line);
+    democ_json_skip_line(0, stream.data(), stream.size(), line, sizeof line);
     EXPECT_EQ(std::string(line), "{\"offset\":0,\"skipped\":\"" + to_hex(stream) + "\"}");
     EXPECT_EQ(decode_text(stream, 0), std::string(line) + "\n");
 }
 TEST(Dispatch, UnknownSetAndDescriptorBecomeRawFields) {
     uint8_t set = 0;
     uint8_t descriptor = 0;
-    if (unknown_field(&set, &descriptor, DEMO_ERR_UNKNOWN_SET)) {
+    if (unknown_field(&set, &descriptor, DEMOC_ERR_UNKNOWN_SET)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {0x3e, 0x7a}}});
         EXPECT_EQ(decode_text(pkt, 0), "{\"offset\":0,\"set\":" + std::to_string(set) +
                                            ",\"fields\":[{\"descriptor\":" + std::to_string(descriptor) +
                                            ",\"data\":\"3e7a\",\"error\":\"unknown descriptor set\"}]}\n");
     }
-    if (unknown_field(&set, &descriptor, DEMO_ERR_UNKNOWN_DESCRIPTOR)) {
+    if (unknown_field(&set, &descriptor, DEMOC_ERR_UNKNOWN_DESCRIPTOR)) {
         std::vector<uint8_t> pkt = packet(set, {{descriptor, {}}});
         std::string text = decode_text(pkt, 0);
         EXPECT_EQ(text, "{\"offset\":0,\"set\":" + std::to_string(set) +
@@ -75,7 +75,7 @@ TEST(Dispatch, UnknownSetAndDescriptorBecomeRawFields) {
     }
 }
 TEST(Json, EncodeLineErrors) {
-    uint8_t out[DEMO_MAX_PACKET];
+    uint8_t out[DEMOC_MAX_PACKET];
     char msg[512];
     size_t n = 0;
     const char *bad[] = {
@@ -90,33 +90,33 @@ TEST(Json, EncodeLineErrors) {
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"data\":\"01\",\"error\":\"x\"},]}",
     };
     for (const char *line : bad) {
-        EXPECT_EQ(demo_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
-                  DEMO_ERR_JSON)
+        EXPECT_EQ(democ_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg),
+                  DEMOC_ERR_JSON)
             << line;
         EXPECT_NE(msg[0], '\0') << line;
     }
     const char *skip = " {\"skipped\":\"A5ff75\", \"offset\": 12} ";
-    ASSERT_EQ(demo_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg), DEMO_OK)
+    ASSERT_EQ(democ_json_encode_line(skip, std::strlen(skip), out, sizeof out, &n, msg, sizeof msg), DEMOC_OK)
         << msg;
     ASSERT_EQ(n, 3u);
     EXPECT_EQ(out[0], 0xA5);
     EXPECT_EQ(out[2], 0x75);
-    EXPECT_EQ(demo_json_encode_line(skip, std::strlen(skip), out, 2, &n, msg, sizeof msg), DEMO_ERR_JSON);
+    EXPECT_EQ(democ_json_encode_line(skip, std::strlen(skip), out, 2, &n, msg, sizeof msg), DEMOC_ERR_JSON);
 }
 
 TEST(Json, RawAndTrailingEntriesRoundTrip) {
     const char *line =
         "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":200,\"data\":\"0102\",\"error\":\"e\"},"
         "{\"trailing\":\"09\",\"error\":\"e\"}]}";
-    uint8_t out[DEMO_MAX_PACKET];
+    uint8_t out[DEMOC_MAX_PACKET];
     char msg[512];
     size_t n = 0;
-    ASSERT_EQ(demo_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), DEMO_OK)
+    ASSERT_EQ(democ_json_encode_line(line, std::strlen(line), out, sizeof out, &n, msg, sizeof msg), DEMOC_OK)
         << msg;
-    ASSERT_EQ(n, DEMO_HEADER_SIZE + DEMO_FIELD_HEADER_SIZE + 2u + 1u + DEMO_CHECKSUM_SIZE);
-    EXPECT_TRUE(demo_packet_valid(out, n));
-    const uint8_t *payload = demo_packet_payload(out);
-    EXPECT_EQ(payload[DEMO_FIELD_DESCRIPTOR_OFFSET], 200);
-    EXPECT_EQ(payload[DEMO_FIELD_LENGTH_OFFSET], 2 + DEMO_FIELD_LENGTH_ADJUST);
-    EXPECT_EQ(payload[DEMO_FIELD_HEADER_SIZE + 2], 0x09);
+    ASSERT_EQ(n, DEMOC_HEADER_SIZE + DEMOC_FIELD_HEADER_SIZE + 2u + 1u + DEMOC_CHECKSUM_SIZE);
+    EXPECT_TRUE(democ_packet_valid(out, n));
+    const uint8_t *payload = democ_packet_payload(out);
+    EXPECT_EQ(payload[DEMOC_FIELD_DESCRIPTOR_OFFSET], 200);
+    EXPECT_EQ(payload[DEMOC_FIELD_LENGTH_OFFSET], 2 + DEMOC_FIELD_LENGTH_ADJUST);
+    EXPECT_EQ(payload[DEMOC_FIELD_HEADER_SIZE + 2], 0x09);
 }

@@ -26,7 +26,7 @@ typedef struct {
     size_t hist_len;
     size_t hist_cap;
     uint64_t hist_base;
-    demo_device_t device;
+    democ_device_t device;
     char *line;
     size_t line_cap;
     int failed;    /* out of memory */
@@ -34,7 +34,7 @@ typedef struct {
     int samples;
     int skip_open;      /* a skip line's start is printed, its end is not */
     uint64_t skip_done; /* stream offset up to which the open skip line's bytes are printed */
-    demo_sample_tracker_t tracker;
+    democ_sample_tracker_t tracker;
 } decode_ctx_t;
 
 static int grow(decode_ctx_t *ctx, size_t need) {
@@ -62,22 +62,22 @@ static void put_hex(decode_ctx_t *ctx, uint64_t from, uint64_t to) {
 }
 
 /* The line of an event into ctx->line; returns its full length. */
-static size_t format(decode_ctx_t *ctx, const demo_event_t *ev) {
-    if (ev->kind == DEMO_EVENT_SKIP) {
-        return demo_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
-                                   (size_t)ev->length, ctx->line, ctx->line_cap);
+static size_t format(decode_ctx_t *ctx, const democ_event_t *ev) {
+    if (ev->kind == DEMOC_EVENT_SKIP) {
+        return democ_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
+                                    (size_t)ev->length, ctx->line, ctx->line_cap);
     }
-    return demo_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
-                                 ctx->line_cap);
+    return democ_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
+                                  ctx->line_cap);
 }
 
-static void on_event(void *arg, const demo_event_t *ev) {
+static void on_event(void *arg, const democ_event_t *ev) {
     decode_ctx_t *ctx = (decode_ctx_t *)arg;
     size_t need;
     if (ctx->failed || ctx->write_err) {
         return;
     }
-    if (ev->kind == DEMO_EVENT_SKIP && ctx->skip_open) {
+    if (ev->kind == DEMOC_EVENT_SKIP && ctx->skip_open) {
         put_hex(ctx, ctx->skip_done, ev->offset + ev->length);
         tool_put("\"}\n", 3, &ctx->write_err);
         ctx->skip_open = 0;
@@ -90,10 +90,10 @@ static void on_event(void *arg, const demo_event_t *ev) {
         }
         need = format(ctx, ev);
     }
-    if (ctx->samples && ev->kind == DEMO_EVENT_PACKET) {
-        demo_sample_info_t info;
+    if (ctx->samples && ev->kind == DEMOC_EVENT_PACKET) {
+        democ_sample_info_t info;
         const char *at = strstr(ctx->line, ",\"fields\":");
-        if (at && demo_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
+        if (at && democ_sample_tracker_feed(&ctx->tracker, ev->packet, (size_t)ev->length, &info)) {
             char number[40];
             size_t head = (size_t)(at - ctx->line);
             int k = snprintf(number, sizeof number, ",\"sample\":%llu", (unsigned long long)info.number);
@@ -110,7 +110,7 @@ static void on_event(void *arg, const demo_event_t *ev) {
 
 /* After a block: a long pending skip run is printed so far, then the bytes the parser has
  * decided on are dropped. */
-static void trim(decode_ctx_t *ctx, const demo_parser_t *parser) {
+static void trim(decode_ctx_t *ctx, const democ_parser_t *parser) {
     uint64_t keep = parser->skip_count ? parser->skip_offset : parser->base;
     size_t drop;
     if (parser->skip_count && (ctx->skip_open || parser->skip_count > k_skip_spill) && !ctx->write_err) {
@@ -139,7 +139,7 @@ static void trim(decode_ctx_t *ctx, const demo_parser_t *parser) {
 static void print_device_ids(FILE *out) {
     int d;
     const char *id;
-    for (d = 1; (id = demo_device_id((demo_device_t)d)) != NULL; d++) {
+    for (d = 1; (id = democ_device_id((democ_device_t)d)) != NULL; d++) {
         fprintf(out, " %s", id);
     }
 }
@@ -151,10 +151,10 @@ static int usage_error(const char *what) {
 
 /* Decodes `in` to stdout; returns the exit status. */
 static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
-    demo_parser_t parser;
+    democ_parser_t parser;
     const int flush_blocks = !tool_stdout_is_file();
-    demo_parser_init(&parser);
-    demo_sample_tracker_init(&ctx->tracker);
+    democ_parser_init(&parser);
+    democ_sample_tracker_init(&ctx->tracker);
     for (;;) {
         long n;
         if (ctx->hist_cap - ctx->hist_len < k_block) {
@@ -180,7 +180,7 @@ static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
             break;
         }
         ctx->hist_len += (size_t)n;
-        demo_parser_feed(&parser, ctx->hist + ctx->hist_len - (size_t)n, (size_t)n, on_event, ctx);
+        democ_parser_feed(&parser, ctx->hist + ctx->hist_len - (size_t)n, (size_t)n, on_event, ctx);
         trim(ctx, &parser);
         if (flush_blocks) {
             tool_flush(&ctx->write_err);
@@ -193,7 +193,7 @@ static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
         }
     }
     if (!ctx->failed) {
-        demo_parser_flush(&parser, on_event, ctx);
+        democ_parser_flush(&parser, on_event, ctx);
     }
     if (ctx->failed) {
         fprintf(stderr, "%s: out of memory\n", k_prog);
@@ -213,7 +213,7 @@ int main(int argc, char **argv) {
     int i;
     int status;
     memset(&ctx, 0, sizeof ctx);
-    ctx.device = DEMO_DEVICE_ANY;
+    ctx.device = DEMOC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *id = NULL;
@@ -237,7 +237,7 @@ int main(int argc, char **argv) {
         } else {
             path = a;
         }
-        if (id && !demo_device_from_id(id, &ctx.device)) {
+        if (id && !democ_device_from_id(id, &ctx.device)) {
             fprintf(stderr, "%s: unknown device '%s' (expected one of:", k_prog, id);
             print_device_ids(stderr);
             fputs(")\n", stderr);

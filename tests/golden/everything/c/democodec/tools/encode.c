@@ -28,10 +28,10 @@ static int blank(const char *s, size_t n) {
 /* Encodes one line (without its newline); returns 0, 1 for a bad line, 2 out of memory. */
 static int encode_one(const char *line, size_t n, unsigned long line_no, int *write_err) {
     char msg[512];
-    size_t cap = n / 2 + DEMO_MAX_PACKET;
+    size_t cap = n / 2 + DEMOC_MAX_PACKET;
     size_t out_len = 0;
     uint8_t *out;
-    demo_status_t st;
+    democ_status_t st;
     if (blank(line, n)) {
         return 0;
     }
@@ -39,14 +39,14 @@ static int encode_one(const char *line, size_t n, unsigned long line_no, int *wr
     if (!out) {
         return 2;
     }
-    st = demo_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
-    if (st == DEMO_OK) {
+    st = democ_json_encode_line(line, n, out, cap, &out_len, msg, sizeof msg);
+    if (st == DEMOC_OK) {
         tool_put(out, out_len, write_err);
     } else {
         fprintf(stderr, "line %lu: %s\n", line_no, msg);
     }
     free(out);
-    return st == DEMO_OK ? 0 : 1;
+    return st == DEMOC_OK ? 0 : 1;
 }
 
 int main(int argc, char **argv) {

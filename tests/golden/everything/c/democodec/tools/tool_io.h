@@ -3,8 +3,8 @@
  * for I/O faults: a closed pipe on stdout ends the tool by SIGPIPE, quietly (the Unix convention,
  * as `cat` does); any other read or write error is one line on stderr and exit status 2. The
  * tools may allocate; the library does not. Generated: do not edit. */
-#ifndef DEMO_TOOLS_TOOL_IO_H
-#define DEMO_TOOLS_TOOL_IO_H
+#ifndef DEMOC_TOOLS_TOOL_IO_H
+#define DEMOC_TOOLS_TOOL_IO_H
 
 #include <errno.h>
 #include <stdio.h>
@@ -15,15 +15,15 @@
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#define DEMO_TOOL_POSIX 1
+#define DEMOC_TOOL_POSIX 1
 #else
-#define DEMO_TOOL_POSIX 0
+#define DEMOC_TOOL_POSIX 0
 #endif
 
 /* Reads what is available, at most cap bytes (blocking only until some bytes arrive, so a live
  * stream is decoded as it comes). Returns the count, 0 at the end, or -1 with errno set. */
 static long tool_read(FILE *in, unsigned char *buf, size_t cap) {
-#if DEMO_TOOL_POSIX
+#if DEMOC_TOOL_POSIX
     for (;;) {
         ssize_t n = read(fileno(in), buf, cap);
         if (n >= 0) {
@@ -48,7 +48,7 @@ static long tool_read(FILE *in, unsigned char *buf, size_t cap) {
 /* Whether stdout is a regular file (then it is written in large blocks; otherwise, a pipe or a
  * terminal, every block of input read is flushed as soon as its lines are printed). */
 static int tool_stdout_is_file(void) {
-#if DEMO_TOOL_POSIX
+#if DEMOC_TOOL_POSIX
     struct stat st;
     return fstat(fileno(stdout), &st) == 0 && S_ISREG(st.st_mode);
 #else
@@ -59,7 +59,7 @@ static int tool_stdout_is_file(void) {
 /* A write to stdout failed with errno err: a closed pipe ends the process by SIGPIPE (as if the
  * signal had not been ignored); otherwise one line on stderr. Returns the exit status 2. */
 static int tool_write_error(const char *prog, int err) {
-#if DEMO_TOOL_POSIX
+#if DEMOC_TOOL_POSIX
     if (err == EPIPE) {
         signal(SIGPIPE, SIG_DFL);
         raise(SIGPIPE);

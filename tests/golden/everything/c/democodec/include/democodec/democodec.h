@@ -1,7 +1,7 @@
 /* democodec: C99 codec of the Demo protocol with every spec feature protocol. Generated from the spec: do not
  * edit. Everything is bounded by caller buffers; nothing allocates. */
-#ifndef DEMO_DEMOCODEC_H
-#define DEMO_DEMOCODEC_H
+#ifndef DEMOC_DEMOCODEC_H
+#define DEMOC_DEMOCODEC_H
 
 #include "democodec/version.h"
 #include "democodec/status.h"

@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_FIELD_ITER_H
-#define DEMO_FIELD_ITER_H
+#ifndef DEMOC_FIELD_ITER_H
+#define DEMOC_FIELD_ITER_H
 
 #include "democodec/framing.h"
 
@@ -17,45 +17,45 @@ extern "C" {
 #endif
 
 typedef enum {
-    DEMO_ENTRY_FIELD = 1,   /* a complete field */
-    DEMO_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
-} demo_entry_kind_t;
+    DEMOC_ENTRY_FIELD = 1,   /* a complete field */
+    DEMOC_ENTRY_TRAILING = 2 /* the rest of the payload, which is not a complete field */
+} democ_entry_kind_t;
 
 typedef enum {
-    DEMO_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
-    DEMO_TRAILING_SHORT_LENGTH =
+    DEMOC_TRAILING_SHORT_HEADER = 1, /* field header at payload offset {offset} needs N bytes, {left} left */
+    DEMOC_TRAILING_SHORT_LENGTH =
         2, /* field length {length} at payload offset {offset} is shorter than the field header */
-    DEMO_TRAILING_OVERRUN =
+    DEMOC_TRAILING_OVERRUN =
         3 /* field length {length} at payload offset {offset} overruns the payload ({left} bytes left) */
-} demo_trailing_kind_t;
+} democ_trailing_kind_t;
 
 typedef struct {
-    demo_entry_kind_t kind;
-    size_t offset;                 /* payload offset of the field header / trailing bytes */
-    uint8_t descriptor;            /* fields */
-    const uint8_t *data;           /* field data (after the header), or the trailing bytes */
-    size_t length;                 /* bytes at data */
-    demo_trailing_kind_t trailing; /* trailing entries: why */
-    uint8_t length_byte;           /* trailing entries: the field length byte as sent */
-} demo_field_entry_t;
+    democ_entry_kind_t kind;
+    size_t offset;                  /* payload offset of the field header / trailing bytes */
+    uint8_t descriptor;             /* fields */
+    const uint8_t *data;            /* field data (after the header), or the trailing bytes */
+    size_t length;                  /* bytes at data */
+    democ_trailing_kind_t trailing; /* trailing entries: why */
+    uint8_t length_byte;            /* trailing entries: the field length byte as sent */
+} democ_field_entry_t;
 
 typedef struct {
     const uint8_t *payload;
     size_t len;
     size_t pos;
     uint8_t set;
-} demo_field_iter_t;
+} democ_field_iter_t;
 
-/* Private: the trailing entry of demo_field_iter_next (out of line: it is rare). */
-bool demo_field_iter_trailing_(demo_field_iter_t *it, demo_field_entry_t *entry, uint8_t length_byte,
-                               demo_trailing_kind_t why);
+/* Private: the trailing entry of democ_field_iter_next (out of line: it is rare). */
+bool democ_field_iter_trailing_(democ_field_iter_t *it, democ_field_entry_t *entry, uint8_t length_byte,
+                                democ_trailing_kind_t why);
 
 /* init and next are inline: a decode loop calls next for every field, and inline the iterator
  * and the entry stay in registers. */
 /** Iterates the payload of a packet of descriptor set `set` (the set decides irregular field lengths).
  * `payload` may be NULL (an empty payload, whatever len says). */
-static inline void demo_field_iter_init(demo_field_iter_t *it, uint8_t set, const uint8_t *payload,
-                                        size_t len) {
+static inline void democ_field_iter_init(democ_field_iter_t *it, uint8_t set, const uint8_t *payload,
+                                         size_t len) {
     assert(it != NULL);
     it->set = set;
     it->payload = payload;
@@ -64,7 +64,7 @@ static inline void demo_field_iter_init(demo_field_iter_t *it, uint8_t set, cons
 }
 
 /** Next entry: returns true and fills *entry, or false after the last one. */
-static inline bool demo_field_iter_next(demo_field_iter_t *it, demo_field_entry_t *entry) {
+static inline bool democ_field_iter_next(democ_field_iter_t *it, democ_field_entry_t *entry) {
     size_t left;
     int data_len;
     size_t total;
@@ -75,33 +75,33 @@ static inline bool demo_field_iter_next(demo_field_iter_t *it, demo_field_entry_
     if (left == 0) {
         return false;
     }
-    if (left < DEMO_FIELD_HEADER_SIZE) {
-        return demo_field_iter_trailing_(it, entry, 0, DEMO_TRAILING_SHORT_HEADER);
+    if (left < DEMOC_FIELD_HEADER_SIZE) {
+        return democ_field_iter_trailing_(it, entry, 0, DEMOC_TRAILING_SHORT_HEADER);
     }
     head = it->payload + it->pos;
-    data_len = (int)head[DEMO_FIELD_LENGTH_OFFSET] -
-               demo_field_length_adjust(it->set, head[DEMO_FIELD_DESCRIPTOR_OFFSET]);
+    data_len = (int)head[DEMOC_FIELD_LENGTH_OFFSET] -
+               democ_field_length_adjust(it->set, head[DEMOC_FIELD_DESCRIPTOR_OFFSET]);
     if (data_len < 0) {
-        return demo_field_iter_trailing_(it, entry, head[DEMO_FIELD_LENGTH_OFFSET],
-                                         DEMO_TRAILING_SHORT_LENGTH);
+        return democ_field_iter_trailing_(it, entry, head[DEMOC_FIELD_LENGTH_OFFSET],
+                                          DEMOC_TRAILING_SHORT_LENGTH);
     }
-    total = DEMO_FIELD_HEADER_SIZE + (size_t)data_len;
+    total = DEMOC_FIELD_HEADER_SIZE + (size_t)data_len;
     if (total > left) {
-        return demo_field_iter_trailing_(it, entry, head[DEMO_FIELD_LENGTH_OFFSET], DEMO_TRAILING_OVERRUN);
+        return democ_field_iter_trailing_(it, entry, head[DEMOC_FIELD_LENGTH_OFFSET], DEMOC_TRAILING_OVERRUN);
     }
-    entry->kind = DEMO_ENTRY_FIELD;
+    entry->kind = DEMOC_ENTRY_FIELD;
     entry->offset = it->pos;
-    entry->descriptor = head[DEMO_FIELD_DESCRIPTOR_OFFSET];
-    entry->data = head + DEMO_FIELD_HEADER_SIZE;
+    entry->descriptor = head[DEMOC_FIELD_DESCRIPTOR_OFFSET];
+    entry->data = head + DEMOC_FIELD_HEADER_SIZE;
     entry->length = (size_t)data_len;
-    entry->trailing = DEMO_TRAILING_SHORT_HEADER;
-    entry->length_byte = head[DEMO_FIELD_LENGTH_OFFSET];
+    entry->trailing = DEMOC_TRAILING_SHORT_HEADER;
+    entry->length_byte = head[DEMOC_FIELD_LENGTH_OFFSET];
     it->pos += total;
     return true;
 }
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
-size_t demo_trailing_format(const demo_field_entry_t *entry, char *buf, size_t cap);
+size_t democ_trailing_format(const democ_field_entry_t *entry, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

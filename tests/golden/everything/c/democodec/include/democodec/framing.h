@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_FRAMING_H
-#define DEMO_FRAMING_H
+#ifndef DEMOC_FRAMING_H
+#define DEMOC_FRAMING_H
 
 #include "democodec/protocol.h"
 #include "democodec/status.h"
@@ -17,32 +17,32 @@ extern "C" {
 #endif
 
 /** The sync sequence as bytes. */
-extern const uint8_t demo_sync[DEMO_SYNC_SIZE];
+extern const uint8_t democ_sync[DEMOC_SYNC_SIZE];
 
 /**
  * Fletcher-16 over bytes: sum1 = sum1 + b, sum2 = sum2 + sum1 (mod 256).
- * out[0..1] receive the checksum in wire order (see DEMO_CHECKSUM_SUM1_FIRST).
+ * out[0..1] receive the checksum in wire order (see DEMOC_CHECKSUM_SUM1_FIRST).
  */
-void demo_checksum(const uint8_t *bytes, size_t len, uint8_t out[DEMO_CHECKSUM_SIZE]);
+void democ_checksum(const uint8_t *bytes, size_t len, uint8_t out[DEMOC_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */
-uint16_t demo_checksum_word(const uint8_t *bytes, size_t len);
-/** True when the DEMO_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
-bool demo_checksum_matches(const uint8_t *bytes, size_t len);
+uint16_t democ_checksum_word(const uint8_t *bytes, size_t len);
+/** True when the DEMOC_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
+bool democ_checksum_matches(const uint8_t *bytes, size_t len);
 
 /** True when a complete packet (header, payload, checksum) has a valid checksum and length. */
-bool demo_packet_valid(const uint8_t *packet, size_t len);
+bool democ_packet_valid(const uint8_t *packet, size_t len);
 /* The header accessors are inline: a decode loop calls them for every packet. */
-/** Descriptor set of a packet (at least DEMO_HEADER_SIZE bytes: check the length first). */
-static inline uint8_t demo_packet_set(const uint8_t *packet) {
-    return packet[DEMO_SET_OFFSET];
+/** Descriptor set of a packet (at least DEMOC_HEADER_SIZE bytes: check the length first). */
+static inline uint8_t democ_packet_set(const uint8_t *packet) {
+    return packet[DEMOC_SET_OFFSET];
 }
-/** Payload length byte of a packet (at least DEMO_HEADER_SIZE bytes). */
-static inline uint8_t demo_packet_payload_length(const uint8_t *packet) {
-    return packet[DEMO_LENGTH_OFFSET];
+/** Payload length byte of a packet (at least DEMOC_HEADER_SIZE bytes). */
+static inline uint8_t democ_packet_payload_length(const uint8_t *packet) {
+    return packet[DEMOC_LENGTH_OFFSET];
 }
 /** Start of the payload of a packet. */
-static inline const uint8_t *demo_packet_payload(const uint8_t *packet) {
-    return packet + DEMO_HEADER_SIZE;
+static inline const uint8_t *democ_packet_payload(const uint8_t *packet) {
+    return packet + DEMOC_HEADER_SIZE;
 }
 
 /**
@@ -53,19 +53,19 @@ typedef struct {
     uint8_t *buf;
     size_t cap;
     size_t len;
-    demo_status_t status;
+    democ_status_t status;
     uint8_t set;
-} demo_packet_builder_t;
+} democ_packet_builder_t;
 
 /** Starts a packet of descriptor set `set` in buf (writes sync and header placeholders). */
-void demo_packet_begin(demo_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
+void democ_packet_begin(democ_packet_builder_t *b, uint8_t *buf, size_t cap, uint8_t set);
 /** Appends a field: header (descriptor, length) and data_len bytes of data. */
-demo_status_t demo_packet_add_field(demo_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
-                                    size_t data_len);
+democ_status_t democ_packet_add_field(democ_packet_builder_t *b, uint8_t descriptor, const uint8_t *data,
+                                      size_t data_len);
 /** Appends bytes to the payload verbatim (used to rebuild trailing bytes). */
-demo_status_t demo_packet_add_raw(demo_packet_builder_t *b, const uint8_t *bytes, size_t len);
+democ_status_t democ_packet_add_raw(democ_packet_builder_t *b, const uint8_t *bytes, size_t len);
 /** Writes the payload length and checksum; *len_out (len_out may be NULL) receives the packet size. */
-demo_status_t demo_packet_finish(demo_packet_builder_t *b, size_t *len_out);
+democ_status_t democ_packet_finish(democ_packet_builder_t *b, size_t *len_out);
 
 #ifdef __cplusplus
 }

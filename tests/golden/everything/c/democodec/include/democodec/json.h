@@ -7,8 +7,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_JSON_H
-#define DEMO_JSON_H
+#ifndef DEMOC_JSON_H
+#define DEMOC_JSON_H
 
 #include "democodec/dispatch.h"
 
@@ -16,38 +16,38 @@
 extern "C" {
 #endif
 
-/** Room for any number demo_json_format_double/float print (with quotes for inf/nan). */
-#define DEMO_JSON_NUMBER_MAX 40
+/** Room for any number democ_json_format_double/float print (with quotes for inf/nan). */
+#define DEMOC_JSON_NUMBER_MAX 40
 
 /**
  * A double as canonical JSON: the shortest decimal that round-trips, laid out like Python's
  * repr(float); "inf", "-inf", "nan" or "nan:0x<16 hex digits>" (in quotes) otherwise.
  * Returns the length (like snprintf; buf is NUL-terminated when cap > 0).
  */
-size_t demo_json_format_double(double v, char *buf, size_t cap);
+size_t democ_json_format_double(double v, char *buf, size_t cap);
 /** A float: widened to double exactly, NaN bits printed with 8 hex digits. */
-size_t demo_json_format_float(float v, char *buf, size_t cap);
+size_t democ_json_format_float(float v, char *buf, size_t cap);
 
 /** Bytes as a canonical JSON string (byte b -> U+00bb, escaped per section 4), like snprintf. */
-size_t demo_json_format_string(const char *bytes, size_t n, char *buf, size_t cap);
+size_t democ_json_format_string(const char *bytes, size_t n, char *buf, size_t cap);
 
 /**
  * The JSON line (without newline) of a packet the parser reported: every field decoded, or
  * raw with its error, trailing bytes last. Returns the full length, like snprintf.
  */
-size_t demo_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, demo_device_t device,
-                             char *out, size_t cap);
+size_t democ_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, democ_device_t device,
+                              char *out, size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
-size_t demo_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
+size_t democ_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
 
 /**
  * Turns one JSON line (a packet or a skip run, as printed by the decoder) back into bytes:
  * packets are rebuilt from their fields with lengths and checksum recomputed.
- * Returns DEMO_OK, DEMO_ERR_BUFFER (out too small) or DEMO_ERR_JSON with a message in msg.
+ * Returns DEMOC_OK, DEMOC_ERR_BUFFER (out too small) or DEMOC_ERR_JSON with a message in msg.
  * out_len may be NULL; *out_len receives the number of bytes written.
  */
-demo_status_t demo_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
-                                    char *msg, size_t msg_cap);
+democ_status_t democ_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
+                                      char *msg, size_t msg_cap);
 
 #ifdef __cplusplus
 }

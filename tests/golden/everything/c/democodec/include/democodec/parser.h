@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_PARSER_H
-#define DEMO_PARSER_H
+#ifndef DEMOC_PARSER_H
+#define DEMOC_PARSER_H
 
 #include "democodec/framing.h"
 
@@ -15,37 +15,37 @@ extern "C" {
 #endif
 
 typedef enum {
-    DEMO_EVENT_PACKET = 1, /* a packet with a valid checksum */
-    DEMO_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
-} demo_event_kind_t;
+    DEMOC_EVENT_PACKET = 1, /* a packet with a valid checksum */
+    DEMOC_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
+} democ_event_kind_t;
 
 typedef struct {
-    demo_event_kind_t kind;
+    democ_event_kind_t kind;
     uint64_t offset;       /* stream offset of the packet or of the first skipped byte */
     uint64_t length;       /* packet size, or number of skipped bytes */
     const uint8_t *packet; /* the packet bytes (valid during the callback); NULL for skips */
-} demo_event_t;
+} democ_event_t;
 
-typedef void (*demo_event_fn)(void *ctx, const demo_event_t *event);
+typedef void (*democ_event_fn)(void *ctx, const democ_event_t *event);
 
 /**
  * Fixed-size state: at most one maximum packet is buffered. Events do not depend on how the
  * input is split into chunks; a skip run is reported just before the next packet or at flush.
  */
 typedef struct {
-    uint8_t buf[DEMO_MAX_PACKET];
+    uint8_t buf[DEMOC_MAX_PACKET];
     size_t used;          /* bytes in buf */
     uint64_t base;        /* stream offset of buf[0] */
     uint64_t skip_offset; /* pending skip run */
     uint64_t skip_count;
-} demo_parser_t;
+} democ_parser_t;
 
-void demo_parser_init(demo_parser_t *parser);
+void democ_parser_init(democ_parser_t *parser);
 /** Feeds a chunk of the stream; events are delivered through fn (not NULL) with ctx (may be NULL). */
-void demo_parser_feed(demo_parser_t *parser, const uint8_t *data, size_t len, demo_event_fn fn, void *ctx);
+void democ_parser_feed(democ_parser_t *parser, const uint8_t *data, size_t len, democ_event_fn fn, void *ctx);
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
-void demo_parser_flush(demo_parser_t *parser, demo_event_fn fn, void *ctx);
+void democ_parser_flush(democ_parser_t *parser, democ_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

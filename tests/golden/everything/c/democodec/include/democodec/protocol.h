@@ -1,67 +1,67 @@
 /* Constants of the Demo protocol with every spec feature protocol, rendered from protocols[] of the IR: the
  * only protocol input of the runtime (the files copied from generator/targets/c/runtime/). Generated: do not
  * edit. */
-#ifndef DEMO_PROTOCOL_H
-#define DEMO_PROTOCOL_H
+#ifndef DEMOC_PROTOCOL_H
+#define DEMOC_PROTOCOL_H
 
 #include <stdint.h>
 
 /* Byte order of multi-byte values in field data (byte_order: big). */
-#define DEMO_LITTLE_ENDIAN 0
+#define DEMOC_LITTLE_ENDIAN 0
 
 /* Sync sequence that starts every packet. */
-#define DEMO_SYNC_SIZE 2
-#define DEMO_SYNC_0 0xA5
-#define DEMO_SYNC_1 0xA5
-#define DEMO_SYNC_BYTES {0xA5, 0xA5}
+#define DEMOC_SYNC_SIZE 2
+#define DEMOC_SYNC_0 0xA5
+#define DEMOC_SYNC_1 0xA5
+#define DEMOC_SYNC_BYTES {0xA5, 0xA5}
 /* Packet header: sync bytes, then set, payload_length. */
-#define DEMO_HEADER_SIZE 4
-#define DEMO_SET_OFFSET 2
-#define DEMO_LENGTH_OFFSET 3
-#define DEMO_MAX_PAYLOAD 255
-#define DEMO_CHECKSUM_SIZE 2
+#define DEMOC_HEADER_SIZE 4
+#define DEMOC_SET_OFFSET 2
+#define DEMOC_LENGTH_OFFSET 3
+#define DEMOC_MAX_PAYLOAD 255
+#define DEMOC_CHECKSUM_SIZE 2
 /* Checksum bytes in wire order: sum1, sum2. */
-#define DEMO_CHECKSUM_SUM1_FIRST 1
+#define DEMOC_CHECKSUM_SUM1_FIRST 1
 /* Largest packet: header, maximum payload and checksum. */
-#define DEMO_MAX_PACKET 261
+#define DEMOC_MAX_PACKET 261
 /* Field header: descriptor, length. */
-#define DEMO_FIELD_HEADER_SIZE 2
-#define DEMO_FIELD_LENGTH_OFFSET 1
-#define DEMO_FIELD_DESCRIPTOR_OFFSET 0
+#define DEMOC_FIELD_HEADER_SIZE 2
+#define DEMOC_FIELD_LENGTH_OFFSET 1
+#define DEMOC_FIELD_DESCRIPTOR_OFFSET 0
 /* The field length byte counts only the data:
- * data length = length byte - DEMO_FIELD_LENGTH_ADJUST. */
-#define DEMO_FIELD_LENGTH_ADJUST 0
+ * data length = length byte - DEMOC_FIELD_LENGTH_ADJUST. */
+#define DEMOC_FIELD_LENGTH_ADJUST 0
 /*
- * Length byte - data length of field (set, descriptor): DEMO_FIELD_LENGTH_ADJUST, except for the
+ * Length byte - data length of field (set, descriptor): DEMOC_FIELD_LENGTH_ADJUST, except for the
  * fields the spec marks with length_byte_adjust (0 in this protocol).
  */
-static inline int demo_field_length_adjust(uint8_t set, uint8_t descriptor) {
+static inline int democ_field_length_adjust(uint8_t set, uint8_t descriptor) {
     (void)set;
     (void)descriptor;
-    return DEMO_FIELD_LENGTH_ADJUST;
+    return DEMOC_FIELD_LENGTH_ADJUST;
 }
 /* Largest data a single field can carry. */
-#define DEMO_MAX_FIELD_DATA 253
+#define DEMOC_MAX_FIELD_DATA 253
 
 /* Samples (docs/conformance.md section 6). Data sets that group continuation packets (one
- * tracker slot each; DEMO_SAMPLE_DATA_SET_COUNT of them, the array never empty). */
-#define DEMO_SAMPLE_DATA_SET_COUNT 3
-#define DEMO_SAMPLE_SETS 3
-#define DEMO_SAMPLE_DATA_SETS {0x90, 0x91, 0x92}
-/* Shared descriptors: from DEMO_SAMPLE_FIRST_SHARED up (256: none). */
-#define DEMO_SAMPLE_FIRST_SHARED 0xD0
+ * tracker slot each; DEMOC_SAMPLE_DATA_SET_COUNT of them, the array never empty). */
+#define DEMOC_SAMPLE_DATA_SET_COUNT 3
+#define DEMOC_SAMPLE_SETS 3
+#define DEMOC_SAMPLE_DATA_SETS {0x90, 0x91, 0x92}
+/* Shared descriptors: from DEMOC_SAMPLE_FIRST_SHARED up (256: none). */
+#define DEMOC_SAMPLE_FIRST_SHARED 0xD0
 /* Shared timestamp fields (descriptor, data size) that make up the sample key. */
-#define DEMO_SAMPLE_TIMESTAMPS 0
-#define DEMO_SAMPLE_STAMP_DESCRIPTORS {0x00}
-#define DEMO_SAMPLE_STAMP_SIZES {0}
+#define DEMOC_SAMPLE_TIMESTAMPS 0
+#define DEMOC_SAMPLE_STAMP_DESCRIPTORS {0x00}
+#define DEMOC_SAMPLE_STAMP_SIZES {0}
 /* Largest sample key: field header + data of every shared timestamp field. */
-#define DEMO_SAMPLE_KEY_MAX 1
+#define DEMOC_SAMPLE_KEY_MAX 1
 
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
-#define DEMO_PATH_MAX_DEPTH 2
-/** Enough room for any message demo_decode_error_format() can produce. */
-#define DEMO_ERROR_MESSAGE_MAX 232
+#define DEMOC_PATH_MAX_DEPTH 2
+/** Enough room for any message democ_decode_error_format() can produce. */
+#define DEMOC_ERROR_MESSAGE_MAX 232
 /* Longest field name or device id, and a NUL. */
-#define DEMO_NAME_MAX 14
+#define DEMOC_NAME_MAX 14
 
 #endif

@@ -6,8 +6,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_SAMPLES_H
-#define DEMO_SAMPLES_H
+#ifndef DEMOC_SAMPLES_H
+#define DEMOC_SAMPLES_H
 
 #include "democodec/framing.h"
 
@@ -19,33 +19,33 @@ typedef struct {
     uint64_t number; /* sample number of the last packet of this set */
     uint8_t key_len; /* 0: that packet had no key */
     uint8_t used;    /* a packet of this set was seen */
-    uint8_t key[DEMO_SAMPLE_KEY_MAX];
-} demo_sample_slot_t;
+    uint8_t key[DEMOC_SAMPLE_KEY_MAX];
+} democ_sample_slot_t;
 
 /** Fixed-size state (no allocation): the key and sample number of the last packet of each set. */
 typedef struct {
-    demo_sample_slot_t slots[DEMO_SAMPLE_SETS];
+    democ_sample_slot_t slots[DEMOC_SAMPLE_SETS];
     uint64_t next; /* number of the next new sample */
-} demo_sample_tracker_t;
+} democ_sample_tracker_t;
 
 typedef struct {
     uint64_t number;      /* the sample the packet belongs to (numbered from 0 in stream order) */
     bool continues;       /* true: a continuation of an earlier packet's sample */
     size_t shared_prefix; /* payload bytes of the leading shared run (copies, in a continuation) */
-} demo_sample_info_t;
+} democ_sample_info_t;
 
-void demo_sample_tracker_init(demo_sample_tracker_t *tracker);
+void democ_sample_tracker_init(democ_sample_tracker_t *tracker);
 /**
  * Places one complete packet (as delivered by the parser). Returns true and fills *info for a
  * packet of a data set; false for other packets (command sets, unknown sets, a malformed buffer).
  */
-bool demo_sample_tracker_feed(demo_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
-                              demo_sample_info_t *info);
+bool democ_sample_tracker_feed(democ_sample_tracker_t *tracker, const uint8_t *packet, size_t len,
+                               democ_sample_info_t *info);
 /**
- * The key of a complete packet into key[DEMO_SAMPLE_KEY_MAX]; returns its length (0: no key).
+ * The key of a complete packet into key[DEMOC_SAMPLE_KEY_MAX]; returns its length (0: no key).
  * *shared_prefix (if not NULL) receives the payload bytes of the leading shared run.
  */
-size_t demo_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
+size_t democ_sample_key(const uint8_t *packet, size_t len, uint8_t *key, size_t *shared_prefix);
 
 #ifdef __cplusplus
 }

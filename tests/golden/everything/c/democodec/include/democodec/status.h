@@ -5,8 +5,8 @@
  * paired with a size (bytes/len, buf/cap, out/cap) may be NULL when that size is 0. Debug builds
  * (without NDEBUG) check these preconditions with assert(); docs/conformance.md section 7.
  */
-#ifndef DEMO_STATUS_H
-#define DEMO_STATUS_H
+#ifndef DEMOC_STATUS_H
+#define DEMOC_STATUS_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -20,40 +20,40 @@ extern "C" {
 
 /** Result of every encode/decode/dispatch call. */
 typedef enum {
-    DEMO_OK = 0,
-    DEMO_ERR_DECODE = 1,      /* field data does not match the layout (see demo_decode_error_t) */
-    DEMO_ERR_BUFFER = 2,      /* the output buffer is too small */
-    DEMO_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
-    DEMO_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
-    DEMO_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
-    DEMO_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
-    DEMO_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
-} demo_status_t;
+    DEMOC_OK = 0,
+    DEMOC_ERR_DECODE = 1,      /* field data does not match the layout (see democ_decode_error_t) */
+    DEMOC_ERR_BUFFER = 2,      /* the output buffer is too small */
+    DEMOC_ERR_INVALID = 3,     /* the value cannot be encoded (count above maximum, absent optional, ...) */
+    DEMOC_ERR_UNKNOWN_SET = 4, /* "unknown descriptor set" */
+    DEMOC_ERR_UNKNOWN_DESCRIPTOR = 5, /* "unknown descriptor" */
+    DEMOC_ERR_TOO_LONG = 6,           /* a field or payload exceeds the framing limits */
+    DEMOC_ERR_JSON = 7                /* a JSON line is malformed or names unknown things */
+} democ_status_t;
 
 /** Short English text of a status code. */
-const char *demo_status_text(demo_status_t status);
+const char *democ_status_text(democ_status_t status);
 
 /** One step of a parameter path: a name, and an element index when index != SIZE_MAX. */
 typedef struct {
     const char *name;
     size_t index;
-} demo_path_segment_t;
+} democ_path_segment_t;
 
 /** Which of the messages of docs/conformance.md section 3 a decode error is. */
 typedef enum {
-    DEMO_DECODE_NONE = 0,
-    DEMO_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
-    DEMO_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
-    DEMO_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
-    DEMO_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
-    DEMO_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
-    DEMO_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
-} demo_decode_error_kind_t;
+    DEMOC_DECODE_NONE = 0,
+    DEMOC_DECODE_NEEDS_BYTES, /* {path}: needs {need} bytes at offset {offset}, {have} left */
+    DEMOC_DECODE_COUNT,       /* {path}: count {count} exceeds maximum {max} */
+    DEMOC_DECODE_REMAINING,   /* {path}: {have} bytes left at offset {offset}, not a multiple of {need} */
+    DEMOC_DECODE_BOOL,        /* {path}: invalid bool value {value} at offset {offset} */
+    DEMOC_DECODE_SELECTOR,    /* {path}: no member for selector value {value} */
+    DEMOC_DECODE_UNEXPECTED   /* {have} unexpected bytes at offset {offset} */
+} democ_decode_error_kind_t;
 
 /** Everything needed to print the exact message of a decode error. */
 typedef struct {
-    demo_decode_error_kind_t kind;
-    demo_path_segment_t path[DEMO_PATH_MAX_DEPTH];
+    democ_decode_error_kind_t kind;
+    democ_path_segment_t path[DEMOC_PATH_MAX_DEPTH];
     size_t depth;      /* number of path segments */
     size_t offset;     /* offset within the field data */
     size_t need;       /* bytes the value needs / element size */
@@ -62,13 +62,13 @@ typedef struct {
     uint64_t max;      /* maximum element count */
     uint64_t value;    /* invalid bool / selector value (two's complement when value_signed) */
     bool value_signed; /* value is an int64_t */
-} demo_decode_error_t;
+} democ_decode_error_t;
 
 /**
  * Writes the message of a decode error into buf (always NUL-terminated when cap > 0).
  * Returns the length the full message has (like snprintf).
  */
-size_t demo_decode_error_format(const demo_decode_error_t *err, char *buf, size_t cap);
+size_t democ_decode_error_format(const democ_decode_error_t *err, char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

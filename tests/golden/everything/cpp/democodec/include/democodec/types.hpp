@@ -190,13 +190,13 @@ inline bool from_string(const char *name, Signed &out) {
 struct GpioParams {
     std::uint8_t pin{};
     bool polarity{};
-    friend bool operator==(const GpioParams &a, const GpioParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.pin == b.pin && a.polarity == b.polarity;
+    friend bool operator==(const GpioParams &Lhs, const GpioParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.pin == Rhs.pin && Lhs.polarity == Rhs.polarity;
     }
-    friend bool operator!=(const GpioParams &a, const GpioParams &b) {
-        return !(a == b);
+    friend bool operator!=(const GpioParams &Lhs, const GpioParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -205,13 +205,13 @@ struct ThresholdParams {
     double low{};
     double high{};
     std::array<float, 3> axes{};
-    friend bool operator==(const ThresholdParams &a, const ThresholdParams &b) {
-        (void)a;
-        (void)b;
-        return true && a.low == b.low && a.high == b.high && a.axes == b.axes;
+    friend bool operator==(const ThresholdParams &Lhs, const ThresholdParams &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.low == Rhs.low && Lhs.high == Rhs.high && Lhs.axes == Rhs.axes;
     }
-    friend bool operator!=(const ThresholdParams &a, const ThresholdParams &b) {
-        return !(a == b);
+    friend bool operator!=(const ThresholdParams &Lhs, const ThresholdParams &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -21,13 +21,13 @@ struct Ping {
     static constexpr bool kHasVariants = false;
     static constexpr const char *kDevice = nullptr;
 
-    friend bool operator==(const Ping &a, const Ping &b) {
-        (void)a;
-        (void)b;
+    friend bool operator==(const Ping &Lhs, const Ping &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
         return true;
     }
-    friend bool operator!=(const Ping &a, const Ping &b) {
-        return !(a == b);
+    friend bool operator!=(const Ping &Lhs, const Ping &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -44,14 +44,14 @@ struct Configure {
     std::optional<::democodec::types::Mode> mode{};
     std::optional<::democodec::types::TriggerParams> params{};
     std::optional<bool> suppress_ack{};
-    friend bool operator==(const Configure &a, const Configure &b) {
-        (void)a;
-        (void)b;
-        return true && a.function == b.function && a.instance == b.instance && a.mode == b.mode &&
-               a.params == b.params && a.suppress_ack == b.suppress_ack;
+    friend bool operator==(const Configure &Lhs, const Configure &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.function == Rhs.function && Lhs.instance == Rhs.instance && Lhs.mode == Rhs.mode &&
+               Lhs.params == Rhs.params && Lhs.suppress_ack == Rhs.suppress_ack;
     }
-    friend bool operator!=(const Configure &a, const Configure &b) {
-        return !(a == b);
+    friend bool operator!=(const Configure &Lhs, const Configure &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -73,15 +73,16 @@ struct Configuration {
     ::democodec::types::Flags flags{};
     ::democodec::types::Signed signed_{};
     ::democodec::BoundedVector<char, 135> tail{};
-    friend bool operator==(const Configuration &a, const Configuration &b) {
-        (void)a;
-        (void)b;
-        return true && a.instance == b.instance && a.count == b.count && a.rates == b.rates &&
-               a.name == b.name && a.label == b.label && a.matrix == b.matrix && a.fixed == b.fixed &&
-               a.flags == b.flags && a.signed_ == b.signed_ && a.tail == b.tail;
+    friend bool operator==(const Configuration &Lhs, const Configuration &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.instance == Rhs.instance && Lhs.count == Rhs.count && Lhs.rates == Rhs.rates &&
+               Lhs.name == Rhs.name && Lhs.label == Rhs.label && Lhs.matrix == Rhs.matrix &&
+               Lhs.fixed == Rhs.fixed && Lhs.flags == Rhs.flags && Lhs.signed_ == Rhs.signed_ &&
+               Lhs.tail == Rhs.tail;
     }
-    friend bool operator!=(const Configuration &a, const Configuration &b) {
-        return !(a == b);
+    friend bool operator!=(const Configuration &Lhs, const Configuration &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -95,13 +96,13 @@ struct PerDeviceDevA {
     static constexpr ::democodec::Device kDeviceId = ::democodec::Device::dev_a;
 
     std::uint32_t a{};
-    friend bool operator==(const PerDeviceDevA &a, const PerDeviceDevA &b) {
-        (void)a;
-        (void)b;
-        return true && a.a == b.a;
+    friend bool operator==(const PerDeviceDevA &Lhs, const PerDeviceDevA &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.a == Rhs.a;
     }
-    friend bool operator!=(const PerDeviceDevA &a, const PerDeviceDevA &b) {
-        return !(a == b);
+    friend bool operator!=(const PerDeviceDevA &Lhs, const PerDeviceDevA &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 
@@ -116,13 +117,13 @@ struct PerDeviceDevB {
 
     std::uint64_t b{};
     std::optional<std::uint8_t> extra{};
-    friend bool operator==(const PerDeviceDevB &a, const PerDeviceDevB &b) {
-        (void)a;
-        (void)b;
-        return true && a.b == b.b && a.extra == b.extra;
+    friend bool operator==(const PerDeviceDevB &Lhs, const PerDeviceDevB &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.b == Rhs.b && Lhs.extra == Rhs.extra;
     }
-    friend bool operator!=(const PerDeviceDevB &a, const PerDeviceDevB &b) {
-        return !(a == b);
+    friend bool operator!=(const PerDeviceDevB &Lhs, const PerDeviceDevB &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -25,13 +25,13 @@ struct Sample {
     std::uint64_t big{};
     std::int8_t small{};
     float f{};
-    friend bool operator==(const Sample &a, const Sample &b) {
-        (void)a;
-        (void)b;
-        return true && a.quat == b.quat && a.big == b.big && a.small == b.small && a.f == b.f;
+    friend bool operator==(const Sample &Lhs, const Sample &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.quat == Rhs.quat && Lhs.big == Rhs.big && Lhs.small == Rhs.small && Lhs.f == Rhs.f;
     }
-    friend bool operator!=(const Sample &a, const Sample &b) {
-        return !(a == b);
+    friend bool operator!=(const Sample &Lhs, const Sample &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -24,14 +24,14 @@ struct LlhPosition {
     double latitude{};  ///<  [deg]
     double longitude{}; ///<  [deg]
     std::uint16_t valid_flags{};
-    friend bool operator==(const LlhPosition &a, const LlhPosition &b) {
-        (void)a;
-        (void)b;
-        return true && a.latitude == b.latitude && a.longitude == b.longitude &&
-               a.valid_flags == b.valid_flags;
+    friend bool operator==(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.latitude == Rhs.latitude && Lhs.longitude == Rhs.longitude &&
+               Lhs.valid_flags == Rhs.valid_flags;
     }
-    friend bool operator!=(const LlhPosition &a, const LlhPosition &b) {
-        return !(a == b);
+    friend bool operator!=(const LlhPosition &Lhs, const LlhPosition &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

@@ -22,13 +22,13 @@ struct Ack {
 
     std::uint8_t echo{};
     std::uint8_t code{};
-    friend bool operator==(const Ack &a, const Ack &b) {
-        (void)a;
-        (void)b;
-        return true && a.echo == b.echo && a.code == b.code;
+    friend bool operator==(const Ack &Lhs, const Ack &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.echo == Rhs.echo && Lhs.code == Rhs.code;
     }
-    friend bool operator!=(const Ack &a, const Ack &b) {
-        return !(a == b);
+    friend bool operator!=(const Ack &Lhs, const Ack &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

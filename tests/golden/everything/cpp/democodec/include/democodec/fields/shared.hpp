@@ -22,13 +22,13 @@ struct Timestamp {
     static constexpr const char *kDevice = nullptr;
 
     std::uint64_t nanoseconds{};
-    friend bool operator==(const Timestamp &a, const Timestamp &b) {
-        (void)a;
-        (void)b;
-        return true && a.nanoseconds == b.nanoseconds;
+    friend bool operator==(const Timestamp &Lhs, const Timestamp &Rhs) {
+        (void)Lhs;
+        (void)Rhs;
+        return true && Lhs.nanoseconds == Rhs.nanoseconds;
     }
-    friend bool operator!=(const Timestamp &a, const Timestamp &b) {
-        return !(a == b);
+    friend bool operator!=(const Timestamp &Lhs, const Timestamp &Rhs) {
+        return !(Lhs == Rhs);
     }
 };
 

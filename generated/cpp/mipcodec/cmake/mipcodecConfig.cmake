@@ -1,0 +1,37 @@
+# mipcodecConfig.cmake: the CMake package mipcodec, installed byte-identical by the C and the C++
+# package of the MicroStrain MIP protocol, so that both fit one install tree. Generated: do not edit.
+#
+#   find_package(mipcodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(mipcodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
+#   target_link_libraries(app PRIVATE mipcodec::c)          # C core (no stdio, no heap)
+#   target_link_libraries(app PRIVATE mipcodec::c_json)     # C canonical JSON (links mipcodec::c)
+#   target_link_libraries(app PRIVATE mipcodec::cpp)        # C++17 header-only library
+#
+# Components: c and c_json (the C package: mipcodec-c-targets.cmake), cpp (the C++ package:
+# mipcodec-cpp-targets.cmake).
+foreach(_mipcodec_part c cpp)
+    if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
+        include("${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
+    endif()
+endforeach()
+unset(_mipcodec_part)
+
+if(NOT TARGET mipcodec::c AND NOT TARGET mipcodec::cpp)
+    set(mipcodec_FOUND FALSE)
+    set(mipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}")
+    return()
+endif()
+
+foreach(_mipcodec_comp ${mipcodec_FIND_COMPONENTS})
+    if(TARGET mipcodec::${_mipcodec_comp})
+        set(mipcodec_${_mipcodec_comp}_FOUND TRUE)
+    else()
+        set(mipcodec_${_mipcodec_comp}_FOUND FALSE)
+        if(mipcodec_FIND_REQUIRED_${_mipcodec_comp})
+            set(mipcodec_FOUND FALSE)
+            set(mipcodec_NOT_FOUND_MESSAGE
+                "component ${_mipcodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+        endif()
+    endif()
+endforeach()
+unset(_mipcodec_comp)

@@ -1,0 +1,50 @@
+"""What the C and C++ packages share of their CMake packaging (docs/packaging.md): the config
+package file {pkg}Config.cmake, which both back ends render from one template to the same bytes
+so that the two packages of a protocol install into one tree (find_package({pkg}) then gives
+{pkg}::c, {pkg}::c_json and {pkg}::cpp, whichever are installed), and the pkg-config files."""
+
+from __future__ import annotations
+
+from generator.render import environment
+
+
+def pkg_config(package: str, title: str, lang: str) -> list[dict]:
+    """The pkg-config files of a package (templates/cmake/pc.in.j2): the C core and JSON libraries, or
+    the C++ header-only library; names as docs/packaging.md lists them."""
+    if lang == "c":
+        return [
+            {
+                "name": package,
+                "description": f"C99 codec of the {title} protocol (core)",
+                "lib": package,
+                "requires": None,
+            },
+            {
+                "name": f"{package}-json",
+                "description": f"canonical JSON of the {title} protocol (C)",
+                "lib": f"{package}_json",
+                "requires": package,
+            },
+        ]
+    return [
+        {
+            "name": f"{package}-cpp",
+            "description": f"C++17 header-only codec of the {title} protocol",
+            "lib": None,
+            "requires": None,
+        }
+    ]
+
+
+def cmake_package_files(root: str, ctx: dict, pcs: list[dict]) -> dict[str, str]:
+    """The CMake config package file (the same bytes from the C and the C++ back end, so that both
+    packages install into one tree), its pkg-config helper and the .pc templates of a package."""
+    env = environment()
+    pkg = ctx["pkg"]
+    out = {
+        root + f"cmake/{pkg}Config.cmake": env.get_template("cmake/config.cmake.j2").render(ctx),
+        root + f"cmake/{pkg}-pkg-config.cmake": env.get_template("cmake/pkg-config.cmake.j2").render(ctx),
+    }
+    for pc in pcs:
+        out[root + f"cmake/{pc['name']}.pc.in"] = env.get_template("cmake/pc.in.j2").render(ctx, pc=pc)
+    return out

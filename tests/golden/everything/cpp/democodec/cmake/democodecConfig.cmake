@@ -1,0 +1,37 @@
+# democodecConfig.cmake: the CMake package democodec, installed byte-identical by the C and the C++
+# package of the Demo protocol with every spec feature protocol, so that both fit one install tree. Generated: do not edit.
+#
+#   find_package(democodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(democodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
+#   target_link_libraries(app PRIVATE democodec::c)          # C core (no stdio, no heap)
+#   target_link_libraries(app PRIVATE democodec::c_json)     # C canonical JSON (links democodec::c)
+#   target_link_libraries(app PRIVATE democodec::cpp)        # C++17 header-only library
+#
+# Components: c and c_json (the C package: democodec-c-targets.cmake), cpp (the C++ package:
+# democodec-cpp-targets.cmake).
+foreach(_democodec_part c cpp)
+    if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-targets.cmake")
+        include("${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-targets.cmake")
+    endif()
+endforeach()
+unset(_democodec_part)
+
+if(NOT TARGET democodec::c AND NOT TARGET democodec::cpp)
+    set(democodec_FOUND FALSE)
+    set(democodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of democodec is installed in ${CMAKE_CURRENT_LIST_DIR}")
+    return()
+endif()
+
+foreach(_democodec_comp ${democodec_FIND_COMPONENTS})
+    if(TARGET democodec::${_democodec_comp})
+        set(democodec_${_democodec_comp}_FOUND TRUE)
+    else()
+        set(democodec_${_democodec_comp}_FOUND FALSE)
+        if(democodec_FIND_REQUIRED_${_democodec_comp})
+            set(democodec_FOUND FALSE)
+            set(democodec_NOT_FOUND_MESSAGE
+                "component ${_democodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+        endif()
+    endif()
+endforeach()
+unset(_democodec_comp)
