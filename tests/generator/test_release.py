@@ -93,19 +93,25 @@ def test_every_package_carries_the_version_and_its_spec_hash(tree_name: str) -> 
         pkg, want_hash = proto["package"], _independent_hash(proto)
         assert re.fullmatch(r"[0-9a-f]{16}", want_hash)
         hashes.add(want_hash)
-        P = pkg.upper()
-        want_macros = {
-            f"{P}_VERSION_MAJOR": str(major),
-            f"{P}_VERSION_MINOR": str(minor),
-            f"{P}_VERSION_PATCH": str(patch),
-            f"{P}_VERSION": f'"{version}"',
-            f"{P}_SPEC_HASH": f'"{want_hash}"',
-        }
+        # C macros carry the C symbol prefix (package name without "codec", plus "c": MIPC_,
+        # docs/packaging.md); C++ macros the package name (MIPCODEC_).
+        c_prefix = (pkg[: -len("codec")] if pkg.endswith("codec") else pkg) + "c"
+
+        def want_macros(P: str, want_hash: str = want_hash) -> dict[str, str]:
+            return {
+                f"{P}_VERSION_MAJOR": str(major),
+                f"{P}_VERSION_MINOR": str(minor),
+                f"{P}_VERSION_PATCH": str(patch),
+                f"{P}_VERSION": f'"{version}"',
+                f"{P}_SPEC_HASH": f'"{want_hash}"',
+            }
+
         # C and C++: the macros, the C++ constants, the CMake project version.
-        for lang, header in (("c", "version.h"), ("cpp", "version.hpp")):
+        for lang, header, P in (("c", "version.h", c_prefix.upper()), ("cpp", "version.hpp", pkg.upper())):
             root = tree / lang / pkg
             defines = _defines(root / "include" / pkg / header)
-            assert {k: defines.get(k) for k in want_macros} == want_macros, f"{lang}/{pkg}"
+            want = want_macros(P)
+            assert {k: defines.get(k) for k in want} == want, f"{lang}/{pkg}"
             assert _cmake_version(root / "CMakeLists.txt") == version, f"{lang}/{pkg}"
             umbrella = (root / "include" / pkg / (f"{pkg}.h" if lang == "c" else f"{pkg}.hpp")).read_text()
             assert f'#include "{pkg}/{header}"' in umbrella, f"{lang}/{pkg}: the umbrella header includes {header}"
