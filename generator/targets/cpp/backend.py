@@ -69,6 +69,7 @@ def runtime_files(pkg: str) -> dict[str, str]:
         "tools/tool_io.hpp": "tools/tool_io.hpp",
         "package_tests/test_support.hpp": "tests/test_support.hpp",
         "package_tests/test_package.cpp": "tests/test_package.cpp",
+        "package_tests/test_canonical.cpp": "tests/test_canonical.cpp",
     }
 
 
@@ -652,7 +653,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         )
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
         files[f"{root}/tests/test_types.cpp"] = env.get_template("cpp/tests/test_types.cpp.j2").render(ctx)
-        files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
+        files[f"{root}/tests/canonical_cases.hpp"] = env.get_template("cpp/tests/canonical_cases.hpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
     return files
