@@ -18,7 +18,8 @@ templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is 
   include/<pkg>/types_json.hpp       Json<T> of the types
   include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec), and <set>_json.hpp
   include/<pkg>/layouts_json.hpp     every set's <set>_json.hpp (for json_lines.hpp)
-  include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
+  include/<pkg>/lookup.hpp           runtime: (set, descriptor) -> layouts, over the tables of lookup_tables.hpp
+  include/<pkg>/lookup_tables.hpp    the answers of the search (with reserved and shared fields) as tables
   include/<pkg>/version.hpp          version and spec hash (generator/release.py)
   tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt, LICENSE
 """
@@ -45,8 +46,10 @@ OUTPUT_DIRS = ["cpp"]
 # The hand-written runtime (generator/targets/cpp/runtime/, see its README.md): {file there: file
 # in the package}. The library headers' only protocol input is the generated framing.hpp;
 # dispatch.hpp, json_lines.hpp, the tools and the package tests also use the generated API
-# (devices.hpp, lookup.hpp, layouts_json.hpp).
+# (devices.hpp, lookup_tables.hpp, layouts_json.hpp).
 RUNTIME_HEADERS = [
+    "lookup_types.hpp",
+    "lookup.hpp",
     "wire.hpp",
     "checksum.hpp",
     "packet.hpp",
@@ -636,7 +639,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "devices.hpp": "devices.hpp.j2",
             "types.hpp": "types.hpp.j2",
             "types_json.hpp": "types_json.hpp.j2",
-            "lookup.hpp": "lookup.hpp.j2",
+            "lookup_tables.hpp": "lookup_tables.hpp.j2",
             "layouts_json.hpp": "layouts_json.hpp.j2",
             f"{pkg}.hpp": "package.hpp.j2",
             "version.hpp": "version.hpp.j2",
