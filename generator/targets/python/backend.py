@@ -62,8 +62,8 @@ RUNTIME_FILES = [
 ]
 # Plain files of runtime/package_tests/, copied into every package's tests/ directory; the test
 # files import the protocol's cases from generated modules beside them (tests/vector_cases.py,
-# tests/canonical_cases.py).
-PACKAGE_TEST_FILES = ["conftest.py", "test_vectors.py", "test_canonical.py"]
+# tests/canonical_cases.py, tests/typed_cases.py).
+PACKAGE_TEST_FILES = ["conftest.py", "test_vectors.py", "test_canonical.py", "test_typed.py"]
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
@@ -678,7 +678,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         )
         tests = {
             "vector_cases.py": {"cases": _vector_cases(vectors, proto)},
-            "test_typed.py": _typed_context(m, sets),
+            "typed_cases.py": _typed_context(m, sets),
             "canonical_cases.py": {"canonical": _canonical_context()},
             "test_runtime.py": {},
         }
