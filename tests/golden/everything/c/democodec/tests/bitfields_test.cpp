@@ -1,0 +1,25 @@
+// Bitfield masks, from generator/testcases.py: the bitfield members that the C, C++, Python and
+// Rust packages all check. Generated: do not edit.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+#include "test_support.hpp"
+
+namespace {
+
+// demo_flags_t: each member's mask and shift, and (value & MASK) >> SHIFT of an all-ones value.
+TEST(Bitfields, Flags) {
+    const demo_flags_t all = static_cast<demo_flags_t>(~static_cast<demo_flags_t>(0));
+    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_OK_MASK), UINT64_C(0x1));
+    EXPECT_EQ(DEMO_FLAGS_OK_SHIFT, 0);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_OK_MASK) >> DEMO_FLAGS_OK_SHIFT), UINT64_C(0x1));
+    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_LEVEL_MASK), UINT64_C(0xF000));
+    EXPECT_EQ(DEMO_FLAGS_LEVEL_SHIFT, 12);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_LEVEL_MASK) >> DEMO_FLAGS_LEVEL_SHIFT), UINT64_C(0xF));
+    EXPECT_EQ(static_cast<uint64_t>(DEMO_FLAGS_ALL_MASK), UINT64_C(0xFFFF));
+    EXPECT_EQ(DEMO_FLAGS_ALL_SHIFT, 0);
+    EXPECT_EQ(static_cast<uint64_t>((all & DEMO_FLAGS_ALL_MASK) >> DEMO_FLAGS_ALL_SHIFT), UINT64_C(0xFFFF));
+}
+
+} // namespace
