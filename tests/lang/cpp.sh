@@ -40,7 +40,7 @@ runtime_tests() {
   [ -x "$fmt" ] || fmt="$(command -v clang-format)"
   (cd "$ROOT" && "$fmt" --style=file --dry-run --Werror "$rt"/include/protopkg/*.hpp "$rt"/tools/*.cpp \
     "$rt"/package_tests/* "$rt"/tests/*.cpp "$rt"/tests/*.hpp "$rt"/tests/*/*/protopkg/*.hpp \
-    "$rt"/tests/package/protopkg/*.hpp)
+    "$rt"/tests/package/*.hpp "$rt"/tests/package/protopkg/*.hpp)
   if [ ! -f "$out/build.ninja" ]; then
     cmake -G Ninja -S "$rt/tests" -B "$out" \
       -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \

@@ -50,6 +50,7 @@ _RUNTIME_FILES = {
     "tools/tool_io.h": "tools/tool_io.h",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
+    "tests/package/canonical_test.cpp": "tests/canonical_test.cpp",
 }
 
 # Template -> generated file (relative to the package directory): what varies with the spec.
@@ -67,7 +68,8 @@ _TEMPLATES = {
     "README.md.j2": "README.md",
     "examples/getting_started.c.j2": "examples/getting_started.c",
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
-    "tests/canonical_test.cpp.j2": "tests/canonical_test.cpp",
+    "tests/canonical_cases.hpp.j2": "tests/canonical_cases.hpp",
+    "tests/bitfields_test.cpp.j2": "tests/bitfields_test.cpp",
 }
 
 

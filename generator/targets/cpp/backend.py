@@ -18,7 +18,8 @@ templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is 
   include/<pkg>/types_json.hpp       Json<T> of the types
   include/<pkg>/fields/<set>.hpp     <pkg>::<set>: one struct per layout (+ Codec), and <set>_json.hpp
   include/<pkg>/layouts_json.hpp     every set's <set>_json.hpp (for json_lines.hpp)
-  include/<pkg>/lookup.hpp           (set, descriptor) -> layouts, with reserved and shared fields
+  include/<pkg>/lookup.hpp           runtime: (set, descriptor) -> layouts, over the tables of lookup_tables.hpp
+  include/<pkg>/lookup_tables.hpp    the answers of the search (with reserved and shared fields) as tables
   include/<pkg>/version.hpp          version and spec hash (generator/release.py)
   tools/decode.cpp, tools/encode.cpp, tests/*.cpp, CMakeLists.txt, LICENSE
 """
@@ -46,8 +47,10 @@ OUTPUT_DIRS = ["cpp"]
 # The hand-written runtime (generator/targets/cpp/runtime/, see its README.md): {file there: file
 # in the package}. The library headers' only protocol input is the generated framing.hpp;
 # dispatch.hpp, json_lines.hpp, the tools and the package tests also use the generated API
-# (devices.hpp, lookup.hpp, layouts_json.hpp).
+# (devices.hpp, lookup_tables.hpp, layouts_json.hpp).
 RUNTIME_HEADERS = [
+    "lookup_types.hpp",
+    "lookup.hpp",
     "wire.hpp",
     "checksum.hpp",
     "packet.hpp",
@@ -70,6 +73,7 @@ def runtime_files(pkg: str) -> dict[str, str]:
         "tools/tool_io.hpp": "tools/tool_io.hpp",
         "package_tests/test_support.hpp": "tests/test_support.hpp",
         "package_tests/test_package.cpp": "tests/test_package.cpp",
+        "package_tests/test_canonical.cpp": "tests/test_canonical.cpp",
     }
 
 
@@ -637,7 +641,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "devices.hpp": "devices.hpp.j2",
             "types.hpp": "types.hpp.j2",
             "types_json.hpp": "types_json.hpp.j2",
-            "lookup.hpp": "lookup.hpp.j2",
+            "lookup_tables.hpp": "lookup_tables.hpp.j2",
             "layouts_json.hpp": "layouts_json.hpp.j2",
             f"{pkg}.hpp": "package.hpp.j2",
             "version.hpp": "version.hpp.j2",
@@ -654,7 +658,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         )
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
         files[f"{root}/tests/test_types.cpp"] = env.get_template("cpp/tests/test_types.cpp.j2").render(ctx)
-        files[f"{root}/tests/test_canonical.cpp"] = env.get_template("cpp/tests/test_canonical.cpp.j2").render(ctx)
+        files[f"{root}/tests/canonical_cases.hpp"] = env.get_template("cpp/tests/canonical_cases.hpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
         files.update(cmake_package_files(f"{root}/", ctx, pkg_config(pkg, proto["title"], "cpp")))

@@ -60,8 +60,10 @@ RUNTIME_FILES = [
     "_speedups.c",
     "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]
-# Plain files of runtime/package_tests/, copied into every package's tests/ directory.
-PACKAGE_TEST_FILES = ["conftest.py"]
+# Plain files of runtime/package_tests/, copied into every package's tests/ directory; the test
+# files import the protocol's cases from generated modules beside them (tests/vector_cases.py,
+# tests/canonical_cases.py, tests/typed_cases.py).
+PACKAGE_TEST_FILES = ["conftest.py", "test_vectors.py", "test_canonical.py", "test_typed.py"]
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
 PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
@@ -675,9 +677,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             **ctx, example=_example(proto)
         )
         tests = {
-            "test_vectors.py": {"cases": _vector_cases(vectors, proto)},
-            "test_typed.py": _typed_context(m, sets),
-            "test_canonical.py": {"canonical": _canonical_context()},
+            "vector_cases.py": {"cases": _vector_cases(vectors, proto)},
+            "typed_cases.py": _typed_context(m, sets),
+            "canonical_cases.py": {"canonical": _canonical_context()},
             "test_runtime.py": {},
         }
         for name, extra in tests.items():

@@ -1,57 +1,14 @@
-"""Typed round trips (generated): every layout class with sample values; every bitfield member."""
-
-# ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
+"""Typed round trips of democodec: every layout class with sample values, every bitfield member
+(tests/typed_cases.py, generated from the spec). Plain source, the same in every package
+(generator/targets/python/runtime/package_tests/)."""
 
 import pytest
-from democodec import commands, data, receiver_1, receiver_2, reserved, shared, types
-from democodec.canonical import loads
-from democodec.framing import MAX_FIELD_DATA, PacketBuilder
-from democodec.packets import DecodedField, decode_packet
-from democodec.registry import SET_KINDS
+from typed_cases import BITFIELD_MEMBERS, SAMPLES, canonical, framing, packets, registry
 
-SAMPLES = [
-    ("commands.Ping", lambda: commands.Ping()),
-    (
-        "commands.Configure",
-        lambda: commands.Configure(
-            function=types.Function.SAVE,
-            instance=51,
-            mode=types.Mode.GPIO,
-            params=types.GpioParams(pin=88, polarity=False),
-            suppress_ack=True,
-        ),
-    ),
-    (
-        "commands.Configuration",
-        lambda: commands.Configuration(
-            instance=94,
-            count=2,
-            rates=[131, 168],
-            name=b"bcd\x00\x00\x00\x00\x00",
-            label=b"cde             ",
-            matrix=[1e16, 123.456, -0.0, 0.1, -2.5e-310, 1e16, 123.456, -0.0, 0.1],
-            fixed=[110, -48, 184, -50],
-            flags=types.Flags(0x1),
-            signed=types.Signed.PLUS_ONE,
-            tail=[b"S", b"T"],
-        ),
-    ),
-    ("commands.PerDevice_dev_a", lambda: commands.PerDevice_dev_a(a=211)),
-    ("commands.PerDevice_dev_b", lambda: commands.PerDevice_dev_b(b=156, extra=193)),
-    ("data.Sample", lambda: data.Sample(quat=[1024.0, -0.0, 1.5, -2.25], big=70, small=35, f=-0.0)),
-    ("receiver_1.LlhPosition", lambda: receiver_1.LlhPosition(latitude=-2.5e-310, longitude=1e16, valid_flags=233)),
-    ("receiver_2.LlhPosition", lambda: receiver_2.LlhPosition(latitude=123.456, longitude=-0.0, valid_flags=217)),
-    ("shared.Timestamp", lambda: shared.Timestamp(nanoseconds=193)),
-    ("reserved.Ack", lambda: reserved.Ack(echo=243, code=29)),
-    ("types.GpioParams", lambda: types.GpioParams(pin=250, polarity=True)),
-    ("types.ThresholdParams", lambda: types.ThresholdParams(low=123.456, high=-0.0, axes=[1.5, -2.25, 0.375])),
-]
-
-BITFIELD_MEMBERS = [
-    (types.Flags, "ok", "OK", 0, 1, 0x1),
-    (types.Flags, "level", "LEVEL", 12, 4, 0xF000),
-    (types.Flags, "all", "ALL", 0, 16, 0xFFFF),
-]
+loads = canonical.loads
+MAX_FIELD_DATA, PacketBuilder = framing.MAX_FIELD_DATA, framing.PacketBuilder
+DecodedField, decode_packet = packets.DecodedField, packets.decode_packet
+SET_KINDS = registry.SET_KINDS
 
 
 @pytest.mark.parametrize("name,make", SAMPLES, ids=[s[0] for s in SAMPLES])

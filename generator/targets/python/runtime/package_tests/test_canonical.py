@@ -1,25 +1,15 @@
-"""Canonical text (docs/conformance.md section 4), generated from generator/testcases.py: the
-float, double and string table that the C, C++, Python and Rust packages all check."""
-
-# ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
+"""Canonical text (docs/conformance.md section 4) of <package>: the float, double and string
+table of tests/canonical_cases.py (generated from generator/testcases.py) that the C, C++, Python
+and Rust packages all check. Plain source, the same in every package
+(generator/targets/python/runtime/package_tests/)."""
 
 import math
 
-from {{ package }}.canonical import f32_bits, f32_from_bits, f32_text, f64_bits, f64_from_bits, f64_text, float_from_json, loads, string_text
+from canonical_cases import ALL_BYTES, DOUBLES, FLOATS, canonical
 
-DOUBLES = [
-{% for c in canonical.doubles %}
-    ({{ c.bits }}, {{ c.text }}),
-{% endfor %}
-]
-
-FLOATS = [
-{% for c in canonical.floats %}
-    ({{ c.bits }}, {{ c.text }}),
-{% endfor %}
-]
-
-ALL_BYTES = {{ canonical.all_bytes }}
+f32_bits, f32_from_bits, f32_text = canonical.f32_bits, canonical.f32_from_bits, canonical.f32_text
+f64_bits, f64_from_bits, f64_text = canonical.f64_bits, canonical.f64_from_bits, canonical.f64_text
+float_from_json, loads, string_text = canonical.float_from_json, canonical.loads, canonical.string_text
 
 
 def test_doubles_print_canonically_and_read_back():

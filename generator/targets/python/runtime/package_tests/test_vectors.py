@@ -1,18 +1,29 @@
-"""Golden vectors and stream corpus (generated from tests/vectors/{{ proto.name }}/ and
-tests/streams/{{ proto.name }}/): decode whole and fed in chunks of every size, encode back."""
-
-# ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
+"""Golden vectors and stream corpus of <package> (tests/vector_cases.py, generated from the spec's
+tests/vectors/ and tests/streams/): decode whole and fed in chunks of every size, encode back.
+Plain source, the same in every package (generator/targets/python/runtime/package_tests/)."""
 
 import pytest
-from {{ package }} import packets
-from {{ package }} import Decoder, Packet, Parser, RawPacket, Skip, Trailing, decode_all, decode_columns, decode_bytes, decode_packet, decode_stream, encode_lines, parse
-from {{ package }}.packets import event_line
+from vector_cases import CASES, package
 
-CASES = [
-{% for c in cases %}
-    {{ c | pyrepr }},
-{% endfor %}
-]
+packets = package.packets
+Decoder, Packet, Parser, RawPacket, Skip, Trailing = (
+    package.Decoder,
+    package.Packet,
+    package.Parser,
+    package.RawPacket,
+    package.Skip,
+    package.Trailing,
+)
+decode_all, decode_bytes, decode_columns, decode_packet, decode_stream, encode_lines, parse = (
+    package.decode_all,
+    package.decode_bytes,
+    package.decode_columns,
+    package.decode_packet,
+    package.decode_stream,
+    package.encode_lines,
+    package.parse,
+)
+event_line = packets.event_line
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])
@@ -51,8 +62,7 @@ def test_accelerated_paths_match_the_pure_path(case):
     events = _pure_events(data)
     assert parse(data) == events, case["where"]
     expected = [
-        packets._decode_packet_pure(e.data, e.offset, case["device"]) if isinstance(e, RawPacket) else e
-        for e in events
+        packets._decode_packet_pure(e.data, e.offset, case["device"]) if isinstance(e, RawPacket) else e for e in events
     ]
     got = decode_all(data, case["device"])
     decoder = Decoder(case["device"])

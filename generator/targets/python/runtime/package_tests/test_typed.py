@@ -1,25 +1,14 @@
-"""Typed round trips (generated): every layout class with sample values; every bitfield member."""
-
-# ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
+"""Typed round trips of <package>: every layout class with sample values, every bitfield member
+(tests/typed_cases.py, generated from the spec). Plain source, the same in every package
+(generator/targets/python/runtime/package_tests/)."""
 
 import pytest
-from {{ package }} import {{ sample_modules | join(", ") }}
-from {{ package }}.canonical import loads
-from {{ package }}.framing import MAX_FIELD_DATA, PacketBuilder
-from {{ package }}.packets import DecodedField, decode_packet
-from {{ package }}.registry import SET_KINDS
+from typed_cases import BITFIELD_MEMBERS, SAMPLES, canonical, framing, packets, registry
 
-SAMPLES = [
-{% for s in samples %}
-    ("{{ s.cls }}", lambda: {{ s.expr }}),
-{% endfor %}
-]
-
-BITFIELD_MEMBERS = [
-{% for b in bitfields %}
-    ({{ b.cls }}, "{{ b.attr }}", "{{ b.const }}", {{ b.first }}, {{ b.width }}, {{ "0x%X" | format(b.mask) }}),
-{% endfor %}
-]
+loads = canonical.loads
+MAX_FIELD_DATA, PacketBuilder = framing.MAX_FIELD_DATA, framing.PacketBuilder
+DecodedField, decode_packet = packets.DecodedField, packets.decode_packet
+SET_KINDS = registry.SET_KINDS
 
 
 @pytest.mark.parametrize("name,make", SAMPLES, ids=[s[0] for s in SAMPLES])
@@ -51,7 +40,9 @@ def test_in_a_packet(name, make):
     assert entry.value == value
 
 
-@pytest.mark.parametrize("cls,attr,const,first,width,mask", BITFIELD_MEMBERS, ids=[f"{b[0].__name__}.{b[1]}" for b in BITFIELD_MEMBERS])
+@pytest.mark.parametrize(
+    "cls,attr,const,first,width,mask", BITFIELD_MEMBERS, ids=[f"{b[0].__name__}.{b[1]}" for b in BITFIELD_MEMBERS]
+)
 def test_bitfield_member(cls, attr, const, first, width, mask):
     constant = getattr(cls, const)
     assert isinstance(constant, cls) and constant == mask
