@@ -10,6 +10,8 @@ import struct
 import subprocess
 from pathlib import Path
 
+from generator.targets.c.backend import c_prefix
+
 ROOT = Path(__file__).resolve().parents[2]
 PKG = ROOT / "generated" / "c" / "mipcodec"
 HARNESS = r"""
@@ -19,17 +21,17 @@ HARNESS = r"""
 #include <string.h>
 #include "mipcodec/json.h"
 int main(void) {
-    char line[64], out[MIP_JSON_NUMBER_MAX];
+    char line[64], out[PFX_JSON_NUMBER_MAX];
     while (fgets(line, sizeof line, stdin)) {
         uint64_t b = strtoull(line, NULL, 16);
         double v;
         memcpy(&v, &b, sizeof v);
-        mip_json_format_double(v, out, sizeof out);
+        pfx_json_format_double(v, out, sizeof out);
         puts(out);
     }
     return 0;
 }
-"""
+""".replace("PFX_", c_prefix("mipcodec").upper() + "_").replace("pfx_", c_prefix("mipcodec") + "_")
 
 
 def canonical(bits: int) -> str:
