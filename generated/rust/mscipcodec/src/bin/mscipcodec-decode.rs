@@ -55,7 +55,7 @@ fn io_message(e: &io::Error) -> String {
 /// what every block of input gave is flushed at once.
 #[cfg(unix)]
 fn output() -> io::Result<(Box<dyn Write>, bool)> {
-    use std::os::fd::AsFd;
+    use std::os::unix::io::AsFd;
     let file = std::fs::File::from(io::stdout().as_fd().try_clone_to_owned()?);
     let is_file = file.metadata().map(|m| m.is_file()).unwrap_or(false);
     Ok((Box::new(file), is_file))
@@ -72,8 +72,8 @@ fn output() -> io::Result<(Box<dyn Write>, bool)> {
 /// input redirected from /dev/null is opened read-only).
 #[cfg(unix)]
 fn input() -> io::Result<Box<dyn Read>> {
-    use std::os::fd::AsFd;
     use std::os::unix::fs::{FileTypeExt, MetadataExt};
+    use std::os::unix::io::AsFd;
     extern "C" {
         fn fcntl(fd: i32, cmd: i32, ...) -> i32;
     }
