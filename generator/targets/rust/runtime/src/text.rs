@@ -209,7 +209,10 @@ pub fn encode_line(line: &str) -> Result<Vec<u8>, JsonError> {
 pub fn encode_text(text: &str) -> Result<Vec<u8>, (usize, JsonError)> {
     let mut out = Vec::new();
     for (i, line) in text.lines().enumerate() {
-        if line.trim_matches(|c: char| matches!(c, ' ' | '\t' | '\r' | '\n')).is_empty() {
+        if line
+            .trim_matches(|c: char| matches!(c, ' ' | '\t' | '\r' | '\n'))
+            .is_empty()
+        {
             continue;
         }
         out.extend(encode_line(line).map_err(|e| (i + 1, e))?);

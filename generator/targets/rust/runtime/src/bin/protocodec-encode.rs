@@ -66,8 +66,8 @@ fn output() -> io::Result<(Box<dyn Write>, bool)> {
 /// input redirected from /dev/null is opened read-only).
 #[cfg(unix)]
 fn input() -> io::Result<Box<dyn Read>> {
-    use std::os::unix::io::AsFd;
     use std::os::unix::fs::{FileTypeExt, MetadataExt};
+    use std::os::unix::io::AsFd;
     extern "C" {
         fn fcntl(fd: i32, cmd: i32, ...) -> i32;
     }
