@@ -15,6 +15,11 @@ Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed i
   decode  mipcodec.Decoder: every packet decoded into Packet / DecodedField / typed dataclass
           values (the objects decode_packet(raw.data, raw.offset) returns), packets and fields
           counted; each chunk's objects are dropped before the next, as when processing a log
+  session-ingest  (lang=python) a Session with one command pending whose reply never comes (deadline
+          far away), every data packet routed to a per-packet handler that counts it and its fields
+  session-roundtrip  (lang=python, stream=loopback-tcp) --roundtrips pings through the blocking API
+          (mipcodec.connect over a loopback TCP socket) to a responder thread that acks each one;
+          bytes = bytes sent + received
 lang=python also prints a `# extra:` line for mipcodec.decode_all(data) (whole stream, every
 object kept until the end of the pass), and lang=python-columns mode=decode lines for
 mipcodec.decode_columns(data): the columnar fast API (per-field tables of numbers built in C, no
@@ -89,6 +94,67 @@ def decode_pass(mipcodec, data):
             packets += 1
             fields += len(e.fields)
     return packets, fields
+
+
+def session_ingest_pass(mipcodec, data):
+    """A session with one command pending (a ping whose reply never comes, deadline far away) fed
+    CHUNK bytes at a time: every data packet goes to a per-packet handler, which counts it and its
+    fields as decode_pass does: (packets, fields)."""
+    session = mipcodec.Session(timeout_ms=1 << 40)
+    packets = fields = 0
+
+    def on_packet(packet):
+        nonlocal packets, fields
+        packets += 1
+        fields += len(packet.fields)
+
+    session.on_packet(on_packet)
+    pending = session.start(mipcodec.base.Ping(), 0)
+    for i in range(0, len(data), CHUNK):
+        session.feed(data[i : i + CHUNK], 0)
+    session.close(0)
+    if pending.result is not None or len(session.pending) != 1:
+        raise SystemExit(f"bench.py: session-ingest: the pending ping completed: {pending.result!r}")
+    return packets, fields
+
+
+def roundtrip(mipcodec, count: int) -> tuple[float, int]:
+    """`count` pings through the blocking API (Device over a loopback TCP socket) to a responder
+    thread that answers each with its ack: (seconds, bytes sent + received)."""
+    import socket
+    import threading
+
+    srv = socket.create_server(("127.0.0.1", 0))
+    port = srv.getsockname()[1]
+    ack = mipcodec.build_packet(0x01, mipcodec.reserved.AckNack(command_descriptor=0x01))
+    counted = {"in": 0}
+
+    def responder() -> None:
+        conn, _ = srv.accept()
+        conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        parser = mipcodec.Parser()
+        with conn:
+            while True:
+                data = conn.recv(65536)
+                if not data:
+                    return
+                counted["in"] += len(data)
+                replies = [ack for e in parser.feed(data) if type(e) is mipcodec.RawPacket and e.set == 0x01]
+                if replies:
+                    conn.sendall(b"".join(replies))
+
+    thread = threading.Thread(target=responder, daemon=True)
+    thread.start()
+    device = mipcodec.connect(f"tcp:127.0.0.1:{port}", timeout_ms=5000)
+    device.base.ping()  # warm-up: connection set up, code paths loaded
+    t0 = time.perf_counter()
+    for _ in range(count):
+        device.base.ping()
+    seconds = time.perf_counter() - t0
+    device.close()
+    thread.join(10)
+    srv.close()
+    return seconds, (count + 1) * (len(ack) + len(mipcodec.build_packet(0x01, mipcodec.base.Ping())))
 
 
 def decode_all_pass(mipcodec, data):
@@ -166,7 +232,7 @@ def export_pass(mipcodec, path: Path, fmt: str, passes: int) -> tuple[float, int
     return best, rows
 
 
-def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use_gc: bool) -> int:
+def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use_gc: bool, roundtrips: int) -> int:
     import mipcodec
 
     if mipcodec.ACCELERATED != (lang == "python"):
@@ -182,6 +248,7 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
         status |= check_values(mipcodec, data, lang, name, side)
         runs = [("frame", frame_pass), ("decode", decode_pass)]
         if lang == "python":
+            runs += [("session-ingest", session_ingest_pass)]
             runs += [("decode_all", decode_all_pass), ("columns", columns_pass)]
         for mode, fn in runs:
             seconds, (packets, fields) = timed(fn, mipcodec, data, passes, use_gc)
@@ -210,6 +277,11 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
                     print(f"bench.py: export {name} {fmt}: {rows} rows, expected {side['fields']}", file=sys.stderr)
                     status = 1
                 sys.stdout.flush()
+    if lang == "python" and roundtrips > 0:
+        seconds, nbytes = roundtrip(mipcodec, roundtrips)
+        print(
+            f"BENCH lang={lang} stream=loopback-tcp mode=session-roundtrip packets={roundtrips} bytes={nbytes} seconds={seconds:.6f}"
+        )
     return status
 
 
@@ -221,12 +293,13 @@ def main() -> int:
     ap.add_argument("--only", choices=["python", "python-pure"], help="run one flavour in this process")
     ap.add_argument("--streams", default=",".join(STREAMS), help="comma-separated stream names")
     ap.add_argument("--gc", action="store_true", help="leave the garbage collector on during the timed passes")
+    ap.add_argument("--roundtrips", type=int, default=2000, help="ping round trips of mode session-roundtrip (0: none)")
     args = ap.parse_args()
     streams = [s for s in args.streams.split(",") if s]
 
     if args.only:
         passes = args.passes if args.only == "python" else args.pure_passes
-        return run_flavour(args.only, args.dir, streams, passes, args.gc)
+        return run_flavour(args.only, args.dir, streams, passes, args.gc, args.roundtrips)
 
     # Build the accelerated copy (no-op when up to date), then one process per flavour.
     built = subprocess.run(
@@ -242,7 +315,15 @@ def main() -> int:
         if lang == "python-pure":
             env["MIPCODEC_PURE"] = "1"
         cmd = [sys.executable, __file__, str(args.dir), "--only", lang, "--streams", ",".join(streams)]
-        cmd += ["--passes", str(args.passes), "--pure-passes", str(args.pure_passes)] + (["--gc"] if args.gc else [])
+        cmd += [
+            "--passes",
+            str(args.passes),
+            "--pure-passes",
+            str(args.pure_passes),
+            "--roundtrips",
+            str(args.roundtrips),
+        ]
+        cmd += ["--gc"] if args.gc else []
         status |= subprocess.run(cmd, env=env).returncode
     return status
 

@@ -199,11 +199,20 @@ static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ss
 
 enum { SCAN_RAW, SCAN_DECODE, SCAN_COLUMNS };
 
+/* What scan() reports beside the events for the session (session.py): the indexes in events of
+ * the packets whose set byte is flagged in mask[256] (sets with a pending command), and the number
+ * of packets (so that no Skip event is among them when it equals the number of events). */
+typedef struct {
+    const unsigned char *mask; /* NULL: nothing watched */
+    PyObject *hits;            /* list of int */
+    Py_ssize_t packets;
+} Watch;
+
 /* The parser loop of framing.Parser._scan over p[0:n] (stream offset `base`). A packet becomes
  * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), or rows of `columns` (SCAN_COLUMNS);
  * Skip events go to `events`. Returns the number of bytes consumed, or -1 with an exception set. */
 static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode,
-                            Columns *columns, SkipRun *skip, PyObject *events) {
+                            Columns *columns, SkipRun *skip, PyObject *events, Watch *watch) {
     Py_ssize_t pos = 0;
     while (pos < n) {
         Py_ssize_t i = find_sync(p, pos, n);
@@ -261,6 +270,17 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
                         return -1;
                     }
                     Py_DECREF(ev);
+                    if (watch != NULL) {
+                        watch->packets++;
+                        if (watch->mask != NULL && watch->mask[p[i + SET_OFFSET]]) {
+                            PyObject *at = PyLong_FromSsize_t(PyList_GET_SIZE(events) - 1);
+                            if (at == NULL || PyList_Append(watch->hits, at) < 0) {
+                                Py_XDECREF(at);
+                                return -1;
+                            }
+                            Py_DECREF(at);
+                        }
+                    }
                     pos = i + total;
                     continue;
                 }
@@ -303,8 +323,11 @@ static void gc_resume(int was_enabled) {
 #endif
 }
 
-/* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool, decode: bool = False)
- *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket. */
+/* scan(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool, decode: bool = False,
+ *      watch: bytes | None = None)
+ *   -> (events, consumed, skip_at); with decode, packets are decoded (Packet) instead of RawPacket.
+ * With watch (256 bytes, non-zero at the set bytes to watch): (events, consumed, skip_at, hits,
+ * packets), hits the indexes in events of the packets of the watched sets, packets their number. */
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
     if (packet_type == NULL) {
@@ -315,9 +338,22 @@ static PyObject *scan(PyObject *self, PyObject *args) {
     Py_ssize_t base;
     SkipRun skip;
     int final, decode = 0;
-    if (!PyArg_ParseTuple(args, "O!nO!np|p", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
-                          &skip.at, &final, &decode)) {
+    PyObject *mask = Py_None;
+    if (!PyArg_ParseTuple(args, "O!nO!np|pO", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
+                          &skip.at, &final, &decode, &mask)) {
         return NULL;
+    }
+    Watch watch = {NULL, NULL, 0};
+    if (mask != Py_None) {
+        if (!PyBytes_Check(mask) || PyBytes_GET_SIZE(mask) != 256) {
+            PyErr_SetString(PyExc_TypeError, "watch must be 256 bytes or None");
+            return NULL;
+        }
+        watch.mask = (const unsigned char *)PyBytes_AS_STRING(mask);
+        watch.hits = PyList_New(0);
+        if (watch.hits == NULL) {
+            return NULL;
+        }
     }
     /* Decoding may run Python code (the fallbacks): it works on a private copy of the buffer.
      * Framing alone runs none (only our own objects are made), so it reads buf in place. */
@@ -327,6 +363,7 @@ static PyObject *scan(PyObject *self, PyObject *args) {
     if (decode) {
         copy = PyBytes_FromStringAndSize((const char *)p, n);
         if (copy == NULL) {
+            Py_XDECREF(watch.hits);
             return NULL;
         }
         p = (const unsigned char *)PyBytes_AS_STRING(copy);
@@ -334,15 +371,21 @@ static PyObject *scan(PyObject *self, PyObject *args) {
     PyObject *events = PyList_New(0);
     if (events == NULL) {
         Py_XDECREF(copy);
+        Py_XDECREF(watch.hits);
         return NULL;
     }
     int gc = gc_pause();
-    Py_ssize_t pos = scan_core(p, n, base, final, decode ? SCAN_DECODE : SCAN_RAW, NULL, &skip, events);
+    Py_ssize_t pos = scan_core(p, n, base, final, decode ? SCAN_DECODE : SCAN_RAW, NULL, &skip, events,
+                               watch.mask != NULL ? &watch : NULL);
     gc_resume(gc);
     Py_XDECREF(copy);
     if (pos < 0) {
         Py_DECREF(events);
+        Py_XDECREF(watch.hits);
         return NULL;
+    }
+    if (watch.mask != NULL) {
+        return Py_BuildValue("NnnNn", events, pos, skip.at, watch.hits, watch.packets);
     }
     return Py_BuildValue("Nnn", events, pos, skip.at);
 }
@@ -702,7 +745,7 @@ static PyObject *decode_all(PyObject *self, PyObject *arg) {
     }
     int gc = gc_pause();
     Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0, 1,
-                               SCAN_DECODE, NULL, &skip, events);
+                               SCAN_DECODE, NULL, &skip, events, NULL);
     gc_resume(gc);
     Py_DECREF(copy);
     if (pos < 0 || flush_skip(&skip, events) < 0) {
@@ -1012,7 +1055,7 @@ static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     } else {
         int gc = gc_pause();
         Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
-                                   1, SCAN_COLUMNS, &c, &skip, skips);
+                                   1, SCAN_COLUMNS, &c, &skip, skips, NULL);
         gc_resume(gc);
         if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
             PyObject *tables = tables_out(&c);

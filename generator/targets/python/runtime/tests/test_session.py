@@ -84,6 +84,91 @@ def test_data_is_routed_while_a_command_is_pending():
     assert [pk.set for pk in packets] == [0x80] and len(fields) == 1 and fields[0][1] == 0x80
 
 
+def _routing_stream() -> bytes:
+    # Data, garbage and false syncs (of the pending command's set too), a reply for another
+    # command, then the reply, then more data: what a session sees while a command is pending.
+    false_sync = bytes([0x75, 0x65, 0x01, 0x05, 0x00])  # a header of set 0x01 whose packet never checks
+    return (
+        data_packet() * 3
+        + b"\x00\x13"
+        + false_sync
+        + data_packet()
+        + ack(0x02)
+        + data_packet() * 2
+        + ack(0x01)
+        + data_packet()
+        + b"\x75"
+        + data_packet()
+    )
+
+
+def _kinds(events):
+    return [
+        (e.status,)
+        if isinstance(e, Result)
+        else ("skip", e.offset, e.count)
+        if isinstance(e, Skip)
+        else (e.set, e.offset)
+        for e in events
+    ]
+
+
+@pytest.mark.parametrize("handlers", ["none", "packet", "two", "field", "both"])
+def test_routing_with_a_pending_command_does_not_depend_on_chunks_or_handlers(handlers):
+    # The session's routing (a fast path where no packet of a pending command's set can be among
+    # the events, one in C when the accelerator is built) against the events of a plain Decoder:
+    # every chunking gives the same events, the reply is matched once, every other packet reaches
+    # the handlers in stream order, once, and the interleaving of handlers is per packet.
+    from testproto.packets import Decoder
+
+    stream = _routing_stream()
+    reference = Decoder().feed(stream) + Decoder().flush()
+    replies = [
+        i
+        for i, e in enumerate(reference)
+        if isinstance(e, Packet) and e.set == 0x01 and e.fields[0].value.command_descriptor == 1
+    ]
+    assert len(replies) == 1
+    want = _kinds(reference[: replies[0]]) + [("ack",)] + _kinds(reference[replies[0] + 1 :])
+    want_calls = [("p", e.offset) for e in reference if isinstance(e, Packet)]
+    want_calls = [c for c in want_calls if c[1] != reference[replies[0]].offset]
+    for size in (1, 2, 3, 7, 16, len(stream)):
+        s = Session()
+        calls: list = []
+
+        def record(key, calls=calls):
+            return lambda *args: calls.append((key, args[-1].offset))
+
+        if handlers in ("packet", "two", "both"):
+            s.on_packet(record("p"))
+        if handlers == "two":
+            s.on_packet(record("q"))
+        if handlers in ("field", "both"):
+            s.on_field(0x80, 0x01, record("f"))
+        p = s.start(command.Ping(), 0)
+        events = []
+        for i in range(0, len(stream), size):
+            events += s.feed(stream[i : i + size], 1)
+        events += s.close(1)
+        assert p.result.status == "ack" and not s.pending
+        assert _kinds(events) == want, size
+        if handlers == "packet":
+            assert calls == want_calls
+        elif handlers == "two":
+            assert calls == [(k, o) for _p, o in want_calls for k in ("p", "q")]
+        elif handlers == "field":
+            assert calls == [
+                ("f", o)
+                for _p, o in want_calls
+                if o not in [e.offset for e in reference if isinstance(e, Packet) and e.set != 0x80]
+            ]
+        elif handlers == "both":
+            data = {e.offset for e in reference if isinstance(e, Packet) and e.set == 0x80}
+            assert calls == [c for _p, o in want_calls for c in ([("p", o), ("f", o)] if o in data else [("p", o)])]
+        else:
+            assert calls == []
+
+
 def test_timeout_then_late_reply_is_a_packet():
     s = Session(timeout_ms=100)
     p = s.start(command.Ping(), 0)

@@ -20,13 +20,14 @@ and `on_sample`, also while a command is pending.
 from __future__ import annotations
 
 import time
+from collections import deque
 from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 from . import _session as _meta
 from . import registry
 from .canonical import error_text, loads
 from .codec import Field
-from .framing import PacketBuilder, Parser, RawPacket, Skip
+from .framing import PacketBuilder, Parser, RawPacket, Skip, _speedups
 from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from .samples import Sample, SampleGrouper
 
@@ -329,21 +330,64 @@ class TimedParser(Decoder):
         self.inter_packet_timeout_ms = inter_packet_timeout_ms
         self._wait_at = -1
         self._wait_since = 0
+        self._mask_sets: frozenset = frozenset()
+        self._mask = bytes(256)
+        self._hits = []
+        self._packets = 0
+        self._watching: Optional[bytes] = None
 
     def feed_at(self, data: Any, now_ms: int) -> List[Any]:
         """Consume bytes received at `now_ms` (may be empty: only the timed rule runs)."""
+        return self.feed_watch(data, now_ms, frozenset())[0]
+
+    def feed_watch(self, data: Any, now_ms: int, sets: frozenset) -> Tuple[List[Any], List[int], bool]:
+        """`feed_at`, and for the session: the indexes in the events of the packets whose set is
+        in `sets` (the sets of its pending commands), and True when no Skip is among the events
+        (False: there may be). With the C accelerator the parser reports both while it decodes;
+        no Python code looks at each packet."""
+        buf = self._buf
+        self._hits: List[int] = []
+        self._packets = 0
+        self._watching = self._watch_mask(sets) if _speedups is not None and self.device is None else None
         events: List[Any] = []
-        while self._buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
+        while buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
             self._skipped(0, 1)
-            del self._buf[:1]
+            del buf[:1]
             self._base += 1
-            events += self._scan(final=False)
+            events += self._scan_at(len(events))
         if data:
-            events += self.feed(data)
-        if not self._buf:
+            buf += data
+            if events:
+                events += self._scan_at(len(events))
+            else:
+                events = self._scan_at(0)
+        if not buf:
             self._wait_at = -1
         elif self._wait_at != self._base:
             self._wait_at, self._wait_since = self._base, now_ms
+        if self._watching is None:
+            if sets:
+                self._hits = [i for i, e in enumerate(events) if type(e) is not Skip and e.set in sets]
+            return events, self._hits, False
+        return events, self._hits, self._packets == len(events)
+
+    def _watch_mask(self, sets: frozenset) -> bytes:
+        if sets != self._mask_sets:
+            self._mask_sets = sets
+            self._mask = bytes(1 if b in sets else 0 for b in range(256))
+        return self._mask
+
+    def _scan_at(self, first: int) -> List[Any]:
+        """_scan; with the accelerator watching, the hits (indexes from `first`) and packets counted."""
+        if self._watching is None:
+            return self._scan(final=False)
+        events, pos, self._skip_at, hits, packets = _speedups.scan(
+            self._buf, self._base, self._skip, self._skip_at, False, not self.raw, self._watching
+        )
+        del self._buf[:pos]
+        self._base += pos
+        self._hits += [first + i for i in hits] if first else hits
+        self._packets += packets
         return events
 
     def _scan(self, final: bool) -> List[Any]:
@@ -388,6 +432,7 @@ class Session:
         self.check_device = check_device
         self._parser = TimedParser(inter_packet_timeout_ms, device)
         self._pending: List[Pending] = []
+        self._sets: frozenset = frozenset()  # the sets of the pending commands (replies come in them)
         self._packet_handlers: List[Callable[[Packet], Any]] = []
         self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
         self._sample_handlers: List[Callable[[Sample], Any]] = []
@@ -459,15 +504,48 @@ class Session:
             )
             return p
         self._pending.append(p)
+        self._pending_changed()
         return p
+
+    def _pending_changed(self) -> None:
+        self._sets = frozenset(p.set for p in self._pending)
 
     # -------------------------------------------------------------- input
     def feed(self, data: Any, now_ms: int) -> List[Event]:
         """Bytes received at `now_ms`: returns the events in order (Results of commands that
         completed, Packets that are not replies, Skip runs) after calling the handlers."""
-        events: List[Event] = self._expire(now_ms)
-        self._route(self._parser.feed_at(data, now_ms), events)
+        events: List[Event] = self._expire(now_ms) if self._pending else []
+        parsed, hits, clean = self._parser.feed_watch(data, now_ms, self._sets)
+        if not parsed:
+            return events
+        if self._parser.raw:
+            self._route(parsed, events)
+            return events
+        # Only a packet of a set with a pending command can be a reply (the parser lists them):
+        # the runs of events between those are not replies and are handled without a look.
+        if not hits:
+            if events:
+                events += parsed
+            else:
+                events = parsed
+            if self._packet_handlers or self._field_handlers:
+                self._deliver(parsed, clean)
+            return events
+        at = 0
+        for i in hits:
+            self._plain(parsed, at, i, events)
+            self._event(parsed[i], events)
+            at = i + 1
+        self._plain(parsed, at, len(parsed), events)
         return events
+
+    def _plain(self, parsed: List[Any], a: int, b: int, events: List[Event]) -> None:
+        """Events parsed[a:b], none of which is a reply: added to `events`, handlers called."""
+        if a < b:
+            run = parsed[a:b]
+            events += run
+            if self._packet_handlers or self._field_handlers or self._grouper is not None:
+                self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
         """Nothing received: runs the timeouts and the timed rule at `now_ms`."""
@@ -493,8 +571,37 @@ class Session:
                 out.append(p.result)
             else:
                 keep.append(p)
-        self._pending = keep
+        if out:
+            self._pending = keep
+            self._pending_changed()
         return out
+
+    def _deliver(self, parsed: List[Any], clean: bool) -> None:
+        """Calls the handlers for events none of which is a reply (packet by packet, each packet's
+        handlers in the order of section 8; one packet handler alone: a loop in C). `clean`: no
+        Skip is among them."""
+        if len(self._packet_handlers) == 1 and not self._field_handlers and self._grouper is None:
+            if not clean:
+                packet_type = Packet
+                parsed = [e for e in parsed if type(e) is packet_type]
+            deque(map(self._packet_handlers[0], parsed), 0)
+            return
+        if self._grouper is None and not self._packet_handlers:
+            # Field handlers only: a look at the packets of the sets they are for.
+            handlers = self._field_handlers
+            sets = {k[0] for k in handlers}
+            skip_type = Skip
+            for e in parsed:
+                if type(e) is skip_type or e.set not in sets:
+                    continue
+                for f in e.fields:
+                    if isinstance(f, DecodedField):
+                        for on_field in handlers.get((e.set, f.descriptor), ()):
+                            on_field(f.value, e)
+            return
+        for e in parsed:
+            if not isinstance(e, Skip):
+                self._data(e)
 
     def _route(self, parsed: List[Any], events: List[Event]) -> None:
         if self._packet_handlers or self._field_handlers or self._grouper is not None:
@@ -503,7 +610,7 @@ class Session:
             return
         # No handlers (the common case of a caller reading the events): only packets of a set
         # with a pending command need a look.
-        sets = {p.set for p in self._pending}
+        sets = self._sets
         for e in parsed:
             if type(e) is Skip or e.set not in sets:
                 events.append(e)
@@ -520,12 +627,19 @@ class Session:
             packet = decode_packet(raw.data, raw.offset, self.device)
         else:
             packet = e
-        if self._pending and any(p.set == packet.set for p in self._pending):
+        if packet.set in self._sets:
             results = self._match(packet)
             if results:
                 events.extend(results)
                 return
         events.append(packet)
+        self._data(packet, raw)
+
+    def _data(self, packet: Any, raw: Optional[RawPacket] = None) -> None:
+        """The handlers of one packet that is not a reply (raw: its RawPacket event, when parsed raw)."""
+        if type(packet) is RawPacket:
+            raw = packet
+            packet = decode_packet(raw.data, raw.offset, self.device)
         for on_packet in self._packet_handlers:
             on_packet(packet)
         if self._field_handlers:
@@ -563,6 +677,7 @@ class Session:
                     end = j
                     break
             self._pending.remove(p)
+            self._pending_changed()
             p.result = _tagged(_complete(p, getattr(ack, _meta.ACK_CODE), list(fields[i + 1 : end])), p.tag)
             results.append(p.result)
         return results
