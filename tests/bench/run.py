@@ -10,7 +10,9 @@
   3. their `BENCH lang=.. stream=.. mode=.. packets=N bytes=B seconds=S` lines, collected into a
      table: language, stream, mode, Mpkt/s, MB/s and the ratio to the baseline (a memchr+memcpy
      pass in C over the same bytes, measured in the same run) so figures from a noisy machine
-     can be compared.
+     can be compared; the last column gives, for mode session-ingest, its ratio to the same
+     language's decode of the same stream, and for session-roundtrip (stream loopback-tcp,
+     packets = round trips) the round trips per second and microseconds per round trip.
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -167,8 +169,9 @@ def table(rows: list[dict[str, str]], langs: list[str]) -> str:
             base[r["stream"]] = int(r["bytes"]) / float(r["seconds"])
     order = ["baseline"] + [row for lang in langs for row in LANG_ROWS[lang]]
     lang_rank = {name: i for i, name in enumerate(order)}
-    mode_rank = {"copy": 0, "frame": 1, "decode": 2, "csv": 3, "parquet": 4}
-    stream_rank = {s: i for i, s in enumerate(STREAMS)}
+    mode_rank = {"copy": 0, "frame": 1, "decode": 2, "session-ingest": 3, "csv": 4, "parquet": 5}
+    stream_rank = {s: i for i, s in enumerate(STREAMS + ("loopback-tcp",))}
+    decode = {(r["lang"], r["stream"]): float(r["seconds"]) for r in rows if r["mode"] == "decode"}
 
     def key(r: dict[str, str]):
         return (
@@ -179,14 +182,16 @@ def table(rows: list[dict[str, str]], langs: list[str]) -> str:
             mode_rank.get(r["mode"], 9),
         )
 
-    head = ("language", "stream", "mode", "Mpkt/s", "MB/s", "x baseline")
+    head = ("language", "stream", "mode", "Mpkt/s", "MB/s", "x baseline", "session")
     lines = [head]
     for r in sorted(rows, key=key):
         seconds = float(r["seconds"])
         pps = int(r["packets"]) / seconds / 1e6 if seconds > 0 else 0.0
         bps = int(r["bytes"]) / seconds if seconds > 0 else 0.0
         ratio = f"{bps / base[r['stream']]:.2f}" if r["stream"] in base and base[r["stream"]] > 0 else "-"
-        lines.append((r["lang"], r["stream"], r["mode"], f"{pps:.2f}", f"{bps / 1e6:.0f}", ratio))
+        lines.append(
+            (r["lang"], r["stream"], r["mode"], f"{pps:.2f}", f"{bps / 1e6:.0f}", ratio, session_note(r, decode))
+        )
     widths = [max(len(line[i]) for line in lines) for i in range(len(head))]
     out = []
     for n, line in enumerate(lines):
@@ -197,6 +202,20 @@ def table(rows: list[dict[str, str]], langs: list[str]) -> str:
                 "|" + "|".join("-" * (w + 2) if i < 3 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|"
             )
     return "\n".join(out)
+
+
+def session_note(r: dict[str, str], decode: dict[tuple[str, str], float]) -> str:
+    """The session column: session-ingest as a fraction of the same language's decode rate on the
+    same stream (same packets: the ratio of the times), session-roundtrip as round trips per
+    second and microseconds per round trip."""
+    seconds = float(r["seconds"])
+    if r["mode"] == "session-ingest":
+        d = decode.get((r["lang"], r["stream"]))
+        return f"{d / seconds:.2f} x decode" if d and seconds > 0 else "-"
+    if r["mode"] == "session-roundtrip" and seconds > 0 and int(r["packets"]) > 0:
+        n = int(r["packets"])
+        return f"{n / seconds:,.0f}/s, {seconds / n * 1e6:.1f} us each"
+    return ""
 
 
 def machine() -> str:
