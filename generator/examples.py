@@ -68,3 +68,92 @@ def example_context(protocol: dict, api_names: Callable[[dict, dict, dict], dict
         "field": field,
         "api": api_names(protocol, set_, field),
     }
+
+
+# ---------------------------------------------------------------------------------------------
+# The "configure the device and stream data" example (issue 20): examples/configure_and_stream.<ext>,
+# run as `configure_and_stream ADDRESS [COUNT]` (ADDRESS tcp:HOST:PORT or a serial device path).
+# It connects with the session's blocking API, pings, reads the device information, writes then
+# reads one setting, sets the data message format, enables the stream and prints COUNT data
+# packets through one handler per data descriptor. The documentation quotes the parts between
+# the marker comments `[connect]`, `[configure]`, `[stream]` and `[end]`.
+#
+# The commands are the spec's names per protocol (the commands a user of that device family
+# configures first); session_example() resolves and checks them against the IR, so a renamed
+# command fails the generator with a clear message instead of generating a broken example.
+SESSION_PROGRAM = "configure_and_stream"
+SESSION_PARTS = ("connect", "configure", "stream")
+SESSION_COUNT = 5  # data packets printed when COUNT is not given
+SESSION_EXAMPLES: dict[str, dict] = {
+    "mip": {
+        "device": "cv7_ins",
+        "ping": ("base", "ping"),
+        "info": ("base", "get_device_info"),
+        "setting": ("threedm", "sensor_to_vehicle_euler", {"roll": 0.0, "pitch": 0.0, "yaw": 1.5}),
+        "format": (
+            "threedm",
+            "message_format",
+            {
+                "desc_set": 0x80,
+                "descriptors": [{"descriptor": 0x04, "decimation": 100}, {"descriptor": 0x05, "decimation": 100}],
+            },
+        ),
+        "enable": ("threedm", "data_stream_control", {"desc_set": 0x80, "enable": True}),
+        "data": ("sensor", ("scaled_accel", "scaled_gyro")),
+    },
+    "mscip": {
+        "device": "ms_imu3020",
+        "ping": ("base", "ping"),
+        "info": ("base", "get_device_model"),
+        "setting": ("imu_config", "sample_rate", {"decimation": 10}),
+        "format": ("imu_config", "select_sensors", {"reserved": 0, "sensors": [0x81, 0x82]}),
+        "enable": ("imu_config", "data_on_off", {"control": 1}),
+        "data": ("imu_data", ("scaled_accel", "scaled_gyro")),
+    },
+}
+
+
+def _find(protocol: dict, set_name: str, field_name: str) -> tuple[dict, dict]:
+    for s in protocol["sets"]:
+        if s["name"] == set_name:
+            for f in s["fields"]:
+                if f["name"] == field_name:
+                    return s, f
+    raise ExampleError(
+        f"protocol {protocol['name']}: the configure-and-stream example uses {set_name}.{field_name},"
+        " which the spec does not have (generator/examples.py SESSION_EXAMPLES)"
+    )
+
+
+def _variant(protocol: dict, field: dict, device: str) -> dict:
+    for v in field["variants"]:
+        if v["device"] is None or v["device"] == device:
+            return v
+    raise ExampleError(f"protocol {protocol['name']}: {field['name']} has no layout for {device}")
+
+
+def session_example(protocol: dict) -> dict | None:
+    """The configure-and-stream example of a protocol, resolved against the IR (None when the
+    protocol has none): device, and per step (ping, info, setting, format, enable) the set, field,
+    layout variant for the device and the values written; data: the set and its fields."""
+    table = SESSION_EXAMPLES.get(protocol["name"])
+    if table is None or not protocol.get("session"):
+        return None
+    device = table["device"]
+    if device not in [d["id"] if isinstance(d, dict) else d for d in protocol["devices"]]:
+        raise ExampleError(f"protocol {protocol['name']}: the example's device {device} is not in the spec")
+    out: dict = {"program": SESSION_PROGRAM, "count": SESSION_COUNT, "device": device}
+    for step in ("ping", "info", "setting", "format", "enable"):
+        set_name, field_name, *rest = table[step]
+        s, f = _find(protocol, set_name, field_name)
+        v = _variant(protocol, f, device)
+        values = rest[0] if rest else {}
+        names = {q["name"] for q in v["params"]}
+        unknown = sorted(set(values) - names)
+        if unknown:
+            raise ExampleError(f"protocol {protocol['name']}: {field_name} has no parameter {', '.join(unknown)}")
+        out[step] = {"set": s, "field": f, "variant": v, "values": values}
+    data_set, data_names = table["data"]
+    fields = [_find(protocol, data_set, n) for n in data_names]
+    out["data"] = {"set": fields[0][0], "fields": [f for _s, f in fields]}
+    return out

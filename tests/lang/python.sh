@@ -17,6 +17,7 @@
 #   tests/lang/python.sh encode                       python -m <package> encode (stdin -> stdout)
 #   tests/lang/python.sh session --connect ADDRESS ...  python -m <package>.session_tool (docs/conformance.md section 7)
 #   tests/lang/python.sh example FILE                 the package's examples/getting_started.py FILE
+#   tests/lang/python.sh configure ADDRESS [COUNT]    the package's examples/configure_and_stream.py
 # The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
 # decode/encode run the pure-Python code straight from generated/python/<package>; bytecode
 # is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/. The optional
@@ -40,7 +41,7 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE" >&2
+    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT]" >&2
     exit 2
 }
 
@@ -143,6 +144,9 @@ session)
     ;;
 example)
     run_py "$ROOT/generated/python/$PACKAGE/examples/getting_started.py" "$@"
+    ;;
+configure)
+    run_py "$ROOT/generated/python/$PACKAGE/examples/configure_and_stream.py" "$@"
     ;;
 *)
     usage

@@ -22,7 +22,7 @@ from __future__ import annotations
 import textwrap
 
 from generator import columns, model
-from generator.examples import example_context
+from generator.examples import ExampleError, example_context, session_example
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -676,6 +676,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)
         )
+        configure = _configure_example(proto, session["api_sets"])
+        if configure is not None:
+            files[f"{root}/examples/{configure['program']}.py"] = env.get_template(
+                "python/examples/configure_and_stream.py.j2"
+            ).render(**ctx, example=configure)
         tests = {
             "vector_cases.py": {"cases": _vector_cases(vectors, proto)},
             "typed_cases.py": _typed_context(m, sets),
@@ -740,6 +745,74 @@ def _example(proto: dict) -> dict:
     example = example_context(proto, api_names)
     example["module"], example["class_name"] = example["api"]["class"].rsplit(".", 1)
     return example
+
+
+def _configure_example(proto: dict, api_sets: list[dict]) -> dict | None:
+    """The configure-and-stream example (generator/examples.py session_example) as Python calls
+    of the typed command API (command_api.py) with literal arguments."""
+    ex = session_example(proto)
+    if ex is None:
+        return None
+    types = {t["name"]: t for t in proto["types"]}
+    device = ex["device"]
+
+    def literal(tref: dict, value) -> str:
+        if isinstance(value, list):
+            return "[" + ", ".join(literal(tref, v) for v in value) + "]"
+        if tref["kind"] == "struct":
+            return f"types.{tref['name']}(" + ", ".join(f"{py_attr(k)}={pyrepr(v)}" for k, v in value.items()) + ")"
+        if tref["kind"] == "enum":
+            member = next((m["name"] for m in types[tref["name"]]["values"] if m["value"] == value), None)
+            if member is not None:
+                return f"types.{tref['name']}.{const_name(member)}"
+        if isinstance(value, int) and not isinstance(value, bool) and value >= 0x10:
+            return f"0x{value:02X}"
+        return pyrepr(value)
+
+    def call(step: str, fn: str | None) -> str:
+        st = ex[step]
+        s_attr = set_module(st["set"])
+        s_attr = s_attr + "_set" if s_attr in DEVICE_ATTRIBUTES else s_attr
+        api_set = next(a for a in api_sets if a["attr"] == s_attr)
+        command = next(c for c in api_set["commands"] if c["attr"] == py_attr(st["field"]["name"]))
+        names = {m["name"] for m in command["methods"]}
+        name = "__call__" if fn is None else (f"{fn}_{device}" if f"{fn}_{device}" in names else fn)
+        if name not in names:
+            raise ExampleError(f"{st['field']['name']} has no {name} method for {device}")
+        params = {q["name"]: q for q in st["variant"]["params"]}
+        args = (
+            ", ".join(f"{py_attr(k)}={literal(params[k]['type'], v)}" for k, v in st["values"].items())
+            if fn in (None, "write")
+            else ""
+        )
+        head = f"device.{s_attr}.{command['attr']}"
+        return f"{head}({args})" if name == "__call__" else f"{head}.{name}({args})"
+
+    def fn_of(step: str) -> str | None:
+        return "write" if ex[step]["field"]["functions"] else None
+
+    data_set = ex["data"]["set"]
+    return {
+        "program": ex["program"],
+        "count": ex["count"],
+        "device": device,
+        "ping": call("ping", None),
+        "info": call("info", None),
+        "info_title": ex["info"]["field"]["title"],
+        "setting_title": ex["setting"]["field"]["title"],
+        "setting_write": call("setting", "write"),
+        "setting_read": call("setting", "read"),
+        "format_title": ex["format"]["field"]["title"],
+        "format_write": call("format", fn_of("format")),
+        "enable_title": ex["enable"]["field"]["title"],
+        "enable_write": call("enable", fn_of("enable")),
+        "data_set": f"0x{data_set['id']:02X}",
+        "data_set_title": data_set["title"],
+        "data_fields": [
+            {"descriptor": f"0x{f['id']:02X}", "name": f["name"], "handler": f"on_{py_attr(f['name'])}"}
+            for f in ex["data"]["fields"]
+        ],
+    }
 
 
 def _canonical_context() -> dict:

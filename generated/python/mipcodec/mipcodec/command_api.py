@@ -6862,11 +6862,28 @@ class SystemCommands:
         self.communication_mode = CommunicationMode(device)
 
 
+class DeviceCommands:
+    """The command sets of a Device, as type checkers see them (session.Device derives from this
+    class when type checking; `bind` sets the attributes)."""
+
+    base: BaseCommands
+
+    threedm: ThreedmCommands
+
+    filter: FilterCommands
+
+    gnss: GnssCommands
+
+    aiding: AidingCommands
+
+    system: SystemCommands
+
+
 def bind(device: _s.Device) -> None:
     """Give a Device its command sets (called by Device itself)."""
-    device.base = BaseCommands(device)  # type: ignore[attr-defined]
-    device.threedm = ThreedmCommands(device)  # type: ignore[attr-defined]
-    device.filter = FilterCommands(device)  # type: ignore[attr-defined]
-    device.gnss = GnssCommands(device)  # type: ignore[attr-defined]
-    device.aiding = AidingCommands(device)  # type: ignore[attr-defined]
-    device.system = SystemCommands(device)  # type: ignore[attr-defined]
+    device.base = BaseCommands(device)
+    device.threedm = ThreedmCommands(device)
+    device.filter = FilterCommands(device)
+    device.gnss = GnssCommands(device)
+    device.aiding = AidingCommands(device)
+    device.system = SystemCommands(device)

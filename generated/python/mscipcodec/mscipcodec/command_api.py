@@ -962,7 +962,16 @@ class ImuConfigCommands:
         self.aux_accel_range = AuxAccelRange(device)
 
 
+class DeviceCommands:
+    """The command sets of a Device, as type checkers see them (session.Device derives from this
+    class when type checking; `bind` sets the attributes)."""
+
+    base: BaseCommands
+
+    imu_config: ImuConfigCommands
+
+
 def bind(device: _s.Device) -> None:
     """Give a Device its command sets (called by Device itself)."""
-    device.base = BaseCommands(device)  # type: ignore[attr-defined]
-    device.imu_config = ImuConfigCommands(device)  # type: ignore[attr-defined]
+    device.base = BaseCommands(device)
+    device.imu_config = ImuConfigCommands(device)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import time
 from collections import deque
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Union
 
 from . import _session as _meta
 from . import registry
@@ -330,9 +330,9 @@ class TimedParser(Decoder):
         self.inter_packet_timeout_ms = inter_packet_timeout_ms
         self._wait_at = -1
         self._wait_since = 0
-        self._mask_sets: frozenset = frozenset()
+        self._mask_sets: FrozenSet[int] = frozenset()
         self._mask = bytes(256)
-        self._hits = []
+        self._hits: List[int] = []
         self._packets = 0
         self._watching: Optional[bytes] = None
 
@@ -340,13 +340,13 @@ class TimedParser(Decoder):
         """Consume bytes received at `now_ms` (may be empty: only the timed rule runs)."""
         return self.feed_watch(data, now_ms, frozenset())[0]
 
-    def feed_watch(self, data: Any, now_ms: int, sets: frozenset) -> Tuple[List[Any], List[int], bool]:
+    def feed_watch(self, data: Any, now_ms: int, sets: FrozenSet[int]) -> Tuple[List[Any], List[int], bool]:
         """`feed_at`, and for the session: the indexes in the events of the packets whose set is
         in `sets` (the sets of its pending commands), and True when no Skip is among the events
         (False: there may be). With the C accelerator the parser reports both while it decodes;
         no Python code looks at each packet."""
         buf = self._buf
-        self._hits: List[int] = []
+        self._hits = []
         self._packets = 0
         self._watching = self._watch_mask(sets) if _speedups is not None and self.device is None else None
         events: List[Any] = []
@@ -371,7 +371,7 @@ class TimedParser(Decoder):
             return events, self._hits, False
         return events, self._hits, self._packets == len(events)
 
-    def _watch_mask(self, sets: frozenset) -> bytes:
+    def _watch_mask(self, sets: FrozenSet[int]) -> bytes:
         if sets != self._mask_sets:
             self._mask_sets = sets
             self._mask = bytes(1 if b in sets else 0 for b in range(256))
@@ -381,6 +381,7 @@ class TimedParser(Decoder):
         """_scan; with the accelerator watching, the hits (indexes from `first`) and packets counted."""
         if self._watching is None:
             return self._scan(final=False)
+        events: List[Any]
         events, pos, self._skip_at, hits, packets = _speedups.scan(
             self._buf, self._base, self._skip, self._skip_at, False, not self.raw, self._watching
         )
@@ -432,7 +433,7 @@ class Session:
         self.check_device = check_device
         self._parser = TimedParser(inter_packet_timeout_ms, device)
         self._pending: List[Pending] = []
-        self._sets: frozenset = frozenset()  # the sets of the pending commands (replies come in them)
+        self._sets: FrozenSet[int] = frozenset()  # the sets of the pending commands (replies come in them)
         self._packet_handlers: List[Callable[[Packet], Any]] = []
         self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
         self._sample_handlers: List[Callable[[Sample], Any]] = []
@@ -508,7 +509,7 @@ class Session:
         return p
 
     def _pending_changed(self) -> None:
-        self._sets = frozenset(p.set for p in self._pending)
+        self._sets = frozenset(p.set for p in self._pending if p.set is not None)
 
     # -------------------------------------------------------------- input
     def feed(self, data: Any, now_ms: int) -> List[Event]:
@@ -700,7 +701,14 @@ def _complete(p: Pending, code: Any, reply: List[Entry]) -> Result:
 
 
 # ----------------------------------------------------------------------------- blocking API
-class Device:
+if TYPE_CHECKING:
+    # The typed command API's attributes (device.base, ...), which command_api.bind sets at run time.
+    from .command_api import DeviceCommands as _CommandSets
+else:
+    _CommandSets = object
+
+
+class Device(_CommandSets):
     """A session over a transport (transport.py), blocking: `run` sends a command and waits for
     its result, feeding every received byte to the session, so data packets reach the handlers
     meanwhile. The typed command API is bound as attributes (`device.base.ping()`)."""

@@ -33,5 +33,9 @@ class CommandCommands:
         self.set_mode = SetMode(device)
 
 
+class DeviceCommands:
+    command: CommandCommands
+
+
 def bind(device: Device) -> None:
-    device.command = CommandCommands(device)  # type: ignore[attr-defined]
+    device.command = CommandCommands(device)

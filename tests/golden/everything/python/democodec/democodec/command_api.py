@@ -148,6 +148,13 @@ class CommandsCommands:
         self.per_device = PerDevice(device)
 
 
+class DeviceCommands:
+    """The command sets of a Device, as type checkers see them (session.Device derives from this
+    class when type checking; `bind` sets the attributes)."""
+
+    commands: CommandsCommands
+
+
 def bind(device: _s.Device) -> None:
     """Give a Device its command sets (called by Device itself)."""
-    device.commands = CommandsCommands(device)  # type: ignore[attr-defined]
+    device.commands = CommandsCommands(device)
