@@ -12,12 +12,18 @@ from __future__ import annotations
 import json
 import re
 
-from ..examples import END, PARTS, PROGRAM, example_command
-from .model import LANG_TITLES, Docs, Page, code, hx
+from ..examples import END, PARTS, PROGRAM, SESSION_PARTS, SESSION_PROGRAM, example_command, session_example
+from .model import CONFIGURE_ANCHOR, LANG_TITLES, Docs, Page, code, hx
 
 EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
 EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
+SESSION_EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{SESSION_PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}
+SESSION_TITLES = {
+    "connect": "Connect and identify the device",
+    "configure": "Write and read a setting",
+    "stream": "Enable the data stream and handle its fields",
+}
 
 
 def snippet(source: str, part: str) -> str:
@@ -93,6 +99,54 @@ def _example_vector(docs: Docs, p: dict) -> dict | None:
     return None
 
 
+def configure_section(docs: Docs, pg: Page, lang: str) -> None:
+    """The "Configure the device and stream data" section of a language's page: the parts of
+    `examples/configure_and_stream.<ext>` of each protocol's package (generator/examples.py
+    session_example), or a note where that language's package does not have the program yet."""
+    pg.h(2, "Configure the device and stream data", CONFIGURE_ANCHOR)
+    pg.p(
+        "Talking to a device goes through the package's command session: each command is sent, its ack "
+        "or NACK (and the reply fields that come with it) is matched, a command that gets no answer times "
+        "out, and every data packet that arrives meanwhile goes to the handlers. The snippets are cut from "
+        f"the example program `examples/{SESSION_PROGRAM}` of each package, which the test suite runs "
+        "against a scripted device over TCP (`tests/conformance/test_configure_example.py`)."
+    )
+    for p in docs.ir["protocols"]:
+        ex = session_example(p)
+        if ex is None:
+            continue
+        pkg = p["package"]
+        rel = SESSION_EXAMPLE_FILES[lang].format(pkg=pkg)
+        source = docs.examples.get(rel)
+        pg.h(3, f"{p['title']} ({pkg})", f"{CONFIGURE_ANCHOR}-{p['name']}")
+        if source is None:
+            pg.p(f"The {LANG_TITLES[lang]} session example of `{pkg}` is not generated yet.")
+            continue
+        devices = {d["id"]: d["title"] for d in p["devices"]}
+        pg.p(
+            f"Run as `{SESSION_PROGRAM} ADDRESS [COUNT]`, ADDRESS `tcp:HOST:PORT` or a serial device path; "
+            f"written for the {devices.get(ex['device'], ex['device'])}."
+        )
+        for part in SESSION_PARTS:
+            pg.h(4, SESSION_TITLES[part], f"{CONFIGURE_ANCHOR}-{p['name']}-{part}")
+            if part == "connect":
+                pg.p(
+                    "Open the transport with the device model selected: a command the model does not support is "
+                    "refused before it is sent. Each call returns the typed reply or raises (a NACK with its error "
+                    "code, a timeout, a refusal)."
+                )
+            elif part == "configure":
+                pg.p(f"Write {ex['setting']['field']['title']}, then read it back.")
+            else:
+                pg.p(
+                    "Register one handler per data descriptor, choose the fields of the data message "
+                    f"({ex['format']['field']['title']}), enable the stream ({ex['enable']['field']['title']}) "
+                    "and receive: the handlers run while the program waits."
+                )
+            pg.code(snippet(source, part), lang)
+        pg.p(f"The whole program: `generated/{rel}`.")
+
+
 def add_pages(docs: Docs) -> None:
     for lang in docs.api:
         pg = docs.add(
@@ -145,3 +199,4 @@ def add_pages(docs: Docs) -> None:
             pg.p(
                 f"The whole program: `generated/{rel}`. The package's `decode` tool prints canonical JSON lines for any capture."
             )
+        configure_section(docs, pg, lang)

@@ -95,6 +95,10 @@ def source_text(s: dict) -> str:
     return out
 
 
+# The anchor of the "Configure the device and stream data" section of the getting-started pages.
+CONFIGURE_ANCHOR = "configure-and-stream"
+
+
 class Docs:
     """Builds every page. api: {lang: module with api_names}; examples: {(lang, package): source}."""
 
@@ -149,10 +153,20 @@ class Docs:
         for lang, mod in self.api.items():
             n = mod.api_names(p, s, f)
             shown = []
-            for key in ("type", "class", "variants", "encode", "decode", "session", "module", "header", "namespace"):
+            for key in ("type", "class", "variants", "encode", "decode", "module", "header", "namespace"):
                 if key in n and not (key == "variants" and "type" not in n and "class" not in n):
                     shown.append(f"{key}: {code(n[key])}")
             rows.append([LANG_TITLES[lang], "<br>".join(shown)])
+        return rows
+
+    def session_calls(self, p: dict, s: dict | None, f: dict, pg: Page) -> list[list[str]]:
+        """Rows (language, call) for every language whose api_names gives the field a session call."""
+        rows = []
+        for lang, mod in self.api.items():
+            n = mod.api_names(p, s, f)
+            if "session" in n:
+                link = pg.link_to(f"getting-started/{lang}.md", CONFIGURE_ANCHOR)
+                rows.append([f"[{LANG_TITLES[lang]}]({link})", code(n["session"])])
         return rows
 
     # ------------------------------------------------------------------ build
@@ -555,6 +569,14 @@ class Docs:
         pg.table(["", ""], ident, "identity")
         pg.h(2, "Names in each language")
         pg.table(["language", "names"], self.names(p, s, f), "names")
+        calls = self.session_calls(p, s, f, pg)
+        if calls:
+            pg.h(2, "Session call")
+            pg.p(
+                "The call of each language's typed command API: it sends the command through a session, waits "
+                "for its ack or NACK and returns the typed reply (the language links to a complete example)."
+            )
+            pg.table(["language", "session call"], calls, "session-call")
         pg.h(2, "Sources")
         pg.items([source_text(x) for x in f["sources"]])
         multi = len(f["variants"]) > 1

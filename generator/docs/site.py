@@ -22,12 +22,12 @@ from .model import LANG_TITLES
 
 
 def _generated_examples() -> dict[str, str]:
-    from .getting_started import EXAMPLE_FILES
+    from .getting_started import EXAMPLE_FILES, SESSION_EXAMPLE_FILES
 
     out = {}
     for p in (ROOT / "generated").glob("*/*/CMakeLists.txt"):
         out[str(p.relative_to(ROOT / "generated"))] = p.read_text(encoding="utf-8")
-    for pattern in EXAMPLE_FILES.values():
+    for pattern in [*EXAMPLE_FILES.values(), *SESSION_EXAMPLE_FILES.values()]:
         for p in (ROOT / "generated").glob(pattern.format(pkg="*")):
             out[str(p.relative_to(ROOT / "generated"))] = p.read_text(encoding="utf-8")
     return out
