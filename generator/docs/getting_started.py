@@ -103,6 +103,8 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
     """The "Configure the device and stream data" section of a language's page: the parts of
     `examples/configure_and_stream.<ext>` of each protocol's package (generator/examples.py
     session_example), or a note where that language's package does not have the program yet."""
+    if not any(session_example(p) is not None for p in docs.ir["protocols"]):
+        return
     pg.h(2, "Configure the device and stream data", CONFIGURE_ANCHOR)
     pg.p(
         "Talking to a device goes through the package's command session: each command is sent, its ack "
