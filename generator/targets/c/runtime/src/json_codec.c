@@ -419,8 +419,9 @@ codec_status_t codec_json_command_line(const char *line, size_t len, codec_field
         jr.depth = 0;
         return CODEC_ERR_JSON;
     }
-    if (codec_jr_object(&jr, pos, keys, 3) || codec_jr_get(&jr, pos, "set", &vp) != 1 || codec_jr_u8(&jr, vp, &set) ||
-        codec_jr_get(&jr, pos, "fields", &vp) != 1 || codec_jr_array(&jr, vp, &it)) {
+    if (codec_jr_object(&jr, pos, keys, 3) || codec_jr_get(&jr, pos, "set", &vp) != 1 ||
+        codec_jr_u8(&jr, vp, &set) || codec_jr_get(&jr, pos, "fields", &vp) != 1 ||
+        codec_jr_array(&jr, vp, &it)) {
         return CODEC_ERR_JSON;
     }
     for (;;) {
@@ -443,7 +444,8 @@ codec_status_t codec_json_command_line(const char *line, size_t len, codec_field
     }
     if (codec_jr_get(&jr, field, "values", &vp) != 1) {
         if (msg_cap > 0) {
-            snprintf(msg, msg_cap, "expected a decoded command field (descriptor, name, values), not a raw field");
+            snprintf(msg, msg_cap,
+                     "expected a decoded command field (descriptor, name, values), not a raw field");
         }
         return CODEC_ERR_JSON;
     }

@@ -95,14 +95,16 @@ codec_result_kind_t codec_link_run(codec_link_t *link, const codec_field_value_t
     link->result.error = "";
     link->tag = opt.tag;
     link->done = false;
-    st = codec_session_start(&link->session, command, link->transport.now_ms(link->transport.ctx), &opt, packet,
-                             sizeof packet, &started);
+    st = codec_session_start(&link->session, command, link->transport.now_ms(link->transport.ctx), &opt,
+                             packet, sizeof packet, &started);
     if (st != CODEC_OK) {
         return failed(link, CODEC_RESULT_REFUSED,
-                      st == CODEC_ERR_INVALID ? "not a command, or its values cannot be encoded" : codec_status_text(st),
+                      st == CODEC_ERR_INVALID ? "not a command, or its values cannot be encoded"
+                                              : codec_status_text(st),
                       result);
     }
-    if (started.packet_len > 0 && link->transport.write(link->transport.ctx, packet, started.packet_len) < 0) {
+    if (started.packet_len > 0 &&
+        link->transport.write(link->transport.ctx, packet, started.packet_len) < 0) {
         return failed(link, CODEC_RESULT_TRANSPORT, "write failed", result);
     }
     if (started.done) {
@@ -157,7 +159,8 @@ void codec_link_close(codec_link_t *link) {
     codec_session_close(&link->session, link->transport.now_ms(link->transport.ctx));
 }
 
-codec_status_t codec_link_reply(const codec_link_t *link, const codec_result_t *result, codec_field_value_t *value) {
+codec_status_t codec_link_reply(const codec_link_t *link, const codec_result_t *result,
+                                codec_field_value_t *value) {
     codec_field_entry_t e;
     assert(link != NULL);
     assert(result != NULL);
@@ -165,5 +168,6 @@ codec_status_t codec_link_reply(const codec_link_t *link, const codec_result_t *
     if (!codec_result_reply_entry(result, &e)) {
         return CODEC_ERR_UNKNOWN_DESCRIPTOR;
     }
-    return codec_decode_field(result->set, e.descriptor, e.data, e.length, link->session.config.device, value, NULL);
+    return codec_decode_field(result->set, e.descriptor, e.data, e.length, link->session.config.device, value,
+                              NULL);
 }

@@ -156,14 +156,16 @@ static codec_status_t open_serial(codec_posix_t *t, const char *path, unsigned l
     if (tcgetattr(t->fd, &tio) != 0) {
         return fail(t, what, strerror(errno));
     }
-    tio.c_iflag &= (tcflag_t) ~(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL | IXON | IXOFF | IXANY);
+    tio.c_iflag &=
+        (tcflag_t) ~(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL | IXON | IXOFF | IXANY);
     tio.c_oflag &= (tcflag_t)~OPOST;
     tio.c_lflag &= (tcflag_t) ~(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
     tio.c_cflag &= (tcflag_t) ~(CSIZE | PARENB | CSTOPB);
     tio.c_cflag |= (tcflag_t)(CS8 | CREAD | CLOCAL);
     tio.c_cc[VMIN] = 0;
     tio.c_cc[VTIME] = 0;
-    if (cfsetispeed(&tio, speed) != 0 || cfsetospeed(&tio, speed) != 0 || tcsetattr(t->fd, TCSANOW, &tio) != 0) {
+    if (cfsetispeed(&tio, speed) != 0 || cfsetospeed(&tio, speed) != 0 ||
+        tcsetattr(t->fd, TCSANOW, &tio) != 0) {
         return fail(t, what, strerror(errno));
     }
     t->socket = false;

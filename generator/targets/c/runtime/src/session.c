@@ -367,8 +367,8 @@ static void complete(codec_session_t *s, const codec_pending_t *p, const codec_e
             } else {
                 codec_field_value_t value;
                 codec_decode_error_t err;
-                codec_status_t st = codec_decode_field(p->set, e.descriptor, e.data, e.length, s->config.device,
-                                                       &value, &err);
+                codec_status_t st = codec_decode_field(p->set, e.descriptor, e.data, e.length,
+                                                       s->config.device, &value, &err);
                 if (st != CODEC_OK) {
                     text_t t;
                     if (st == CODEC_ERR_DECODE) {
@@ -423,7 +423,8 @@ static bool match(codec_session_t *s, const codec_event_t *pkt) {
         uint8_t next_echo = 0;
         uint32_t next_code = 0;
         if (more && e.kind == CODEC_ENTRY_FIELD && e.descriptor == CODEC_SESSION_ACK_DESCRIPTOR) {
-            int ack = codec_session_ack_decode(set, e.data, e.length, s->config.device, &next_echo, &next_code);
+            int ack =
+                codec_session_ack_decode(set, e.data, e.length, s->config.device, &next_echo, &next_code);
             /* an ack field that does not decode (raw) also ends the reply of the ack before it */
             is_ack = ack > 0;
             boundary = ack >= 0;
@@ -476,7 +477,8 @@ static void route(codec_session_t *s, const codec_event_t *pkt) {
     if (s->field_count > 0) {
         codec_field_iter_t it;
         codec_field_entry_t e;
-        codec_field_iter_init(&it, set, codec_packet_payload(pkt->packet), codec_packet_payload_length(pkt->packet));
+        codec_field_iter_init(&it, set, codec_packet_payload(pkt->packet),
+                              codec_packet_payload_length(pkt->packet));
         while (codec_field_iter_next(&it, &e)) {
             codec_field_value_t value;
             bool decoded = false;
@@ -489,8 +491,8 @@ static void route(codec_session_t *s, const codec_event_t *pkt) {
                     continue;
                 }
                 if (!decoded) {
-                    if (codec_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value, NULL) !=
-                        CODEC_OK) {
+                    if (codec_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value,
+                                           NULL) != CODEC_OK) {
                         break;
                     }
                     decoded = true;

@@ -44,8 +44,8 @@ static void on_event(void *ctx, const codec_session_event_t *ev) {
     if (ev->kind == CODEC_SESSION_RESULT) {
         n = codec_json_result_line(ev->result, ev->result->tag, tool->device, g_line, sizeof g_line);
     } else if (ev->kind == CODEC_SESSION_PACKET) {
-        n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset, tool->device,
-                                   g_line, sizeof g_line);
+        n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset,
+                                   tool->device, g_line, sizeof g_line);
     } else {
         uint64_t off = ev->stream->offset;
         uint64_t len = ev->stream->length;
@@ -220,8 +220,8 @@ int main(int argc, char **argv) {
         }
         memcpy(name, a, n);
         name[n] = '\0';
-        if (strcmp(name, "--connect") != 0 && strcmp(name, "--timeout-ms") != 0 && strcmp(name, "--device") != 0 &&
-            strcmp(name, "--baud") != 0) {
+        if (strcmp(name, "--connect") != 0 && strcmp(name, "--timeout-ms") != 0 &&
+            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0) {
             return usage_error("unknown argument '%s'", a);
         }
         if (eq) {

@@ -76,7 +76,8 @@ void codec_link_close(codec_link_t *link);
  * Decodes the typed reply of an acknowledged result (codec_result_reply_entry) into *value for
  * the link's device. CODEC_ERR_UNKNOWN_DESCRIPTOR when the result has no reply field.
  */
-codec_status_t codec_link_reply(const codec_link_t *link, const codec_result_t *result, codec_field_value_t *value);
+codec_status_t codec_link_reply(const codec_link_t *link, const codec_result_t *result,
+                                codec_field_value_t *value);
 
 #ifdef __cplusplus
 }

@@ -36,12 +36,12 @@ extern "C" {
 
 /** The one result every started command gets. */
 typedef enum {
-    CODEC_RESULT_ACK = 1,     /* acknowledged; the reply fields are valid */
-    CODEC_RESULT_NACK = 2,    /* the device answered with an error code */
-    CODEC_RESULT_TIMEOUT = 3, /* no reply before the deadline */
-    CODEC_RESULT_INVALID = 4, /* acknowledged, but a reply field does not decode or is missing (error) */
-    CODEC_RESULT_SENT = 5,    /* the command suppresses its ack: complete once sent */
-    CODEC_RESULT_REFUSED = 6, /* not sent (device support, full queue; error) */
+    CODEC_RESULT_ACK = 1,      /* acknowledged; the reply fields are valid */
+    CODEC_RESULT_NACK = 2,     /* the device answered with an error code */
+    CODEC_RESULT_TIMEOUT = 3,  /* no reply before the deadline */
+    CODEC_RESULT_INVALID = 4,  /* acknowledged, but a reply field does not decode or is missing (error) */
+    CODEC_RESULT_SENT = 5,     /* the command suppresses its ack: complete once sent */
+    CODEC_RESULT_REFUSED = 6,  /* not sent (device support, full queue; error) */
     CODEC_RESULT_TRANSPORT = 7 /* blocking API only: the transport failed (error) */
 } codec_result_kind_t;
 
@@ -56,12 +56,12 @@ typedef struct {
     codec_field_id_t command; /* the command's layout */
     uint8_t set;
     uint8_t descriptor;
-    bool has_code;  /* ack, nack, invalid */
-    uint32_t code;  /* the ack/nack code */
+    bool has_code;         /* ack, nack, invalid */
+    uint32_t code;         /* the ack/nack code */
     const uint8_t *packet; /* the reply packet (ack, nack, invalid), else NULL */
     size_t packet_len;
-    uint64_t offset;       /* its stream offset */
-    size_t reply_begin;    /* payload offsets of the reply field entries (after the ack) */
+    uint64_t offset;    /* its stream offset */
+    size_t reply_begin; /* payload offsets of the reply field entries (after the ack) */
     size_t reply_end;
     uint8_t expect[CODEC_SESSION_MAX_EXPECT]; /* the reply descriptors the command expects */
     size_t expect_count;
@@ -91,7 +91,8 @@ typedef void (*codec_session_event_fn)(void *ctx, const codec_session_event_t *e
 /** A data handler for a whole packet that is not a reply. */
 typedef void (*codec_packet_handler_fn)(void *ctx, const codec_event_t *packet);
 /** A data handler for one decoded field (set, descriptor) of a packet that is not a reply. */
-typedef void (*codec_field_handler_fn)(void *ctx, const codec_field_value_t *value, const codec_event_t *packet);
+typedef void (*codec_field_handler_fn)(void *ctx, const codec_field_value_t *value,
+                                       const codec_event_t *packet);
 
 typedef struct {
     codec_device_t device;            /* CODEC_DEVICE_ANY: none selected */
@@ -128,7 +129,7 @@ typedef struct {
 typedef struct {
     codec_session_config_t config;
     codec_parser_t parser;
-    bool waiting;        /* the parser waits for more input at stream offset wait_at */
+    bool waiting; /* the parser waits for more input at stream offset wait_at */
     uint64_t wait_at;
     uint64_t wait_since; /* since this time */
     uint64_t now;
@@ -198,13 +199,13 @@ typedef struct {
     codec_field_id_t id;
     uint8_t set;
     uint8_t descriptor;
-    int function;                /* function selector value, -1: no selector */
-    bool function_listed;        /* the layout accepts the function (true without a selector) */
-    uint32_t function_devices;   /* devices the function's value is limited to (bit 1 << device; all: ~0) */
-    uint32_t field_devices;      /* devices any layout of (set, descriptor) lists */
+    int function;                 /* function selector value, -1: no selector */
+    bool function_listed;         /* the layout accepts the function (true without a selector) */
+    uint32_t function_devices;    /* devices the function's value is limited to (bit 1 << device; all: ~0) */
+    uint32_t field_devices;       /* devices any layout of (set, descriptor) lists */
     codec_device_t layout_device; /* the device of a per-device layout, else CODEC_DEVICE_ANY */
-    bool suppressed;             /* the command as given suppresses its ack */
-    uint32_t allowance_ms;       /* extra reply time (spec timeout) */
+    bool suppressed;              /* the command as given suppresses its ack */
+    uint32_t allowance_ms;        /* extra reply time (spec timeout) */
     uint8_t expect[CODEC_SESSION_MAX_EXPECT]; /* expected reply descriptors (spec responses, when) */
     size_t expect_count;
 } codec_command_facts_t;
@@ -216,8 +217,8 @@ const char *codec_function_name(int value);
 /** The field data of descriptor CODEC_SESSION_ACK_DESCRIPTOR in a packet of `set`: 1 when it is the
  * ack field and decodes (*echo, *code), 0 when it does not decode (a raw field), -1 when it decodes
  * as another field. */
-int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device, uint8_t *echo,
-                             uint32_t *code);
+int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device,
+                             uint8_t *echo, uint32_t *code);
 
 #ifdef __cplusplus
 }

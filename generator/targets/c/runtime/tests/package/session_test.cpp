@@ -56,8 +56,8 @@ struct PacketArg {
 size_t packet_fmt(char *buf, size_t cap, const void *arg) {
     const PacketArg *a = static_cast<const PacketArg *>(arg);
     if (a->ev->kind == CODEC_EVENT_SKIP) {
-        return codec_json_skip_line(a->ev->offset, a->received->data() + a->ev->offset, (size_t)a->ev->length, buf,
-                                    cap);
+        return codec_json_skip_line(a->ev->offset, a->received->data() + a->ev->offset, (size_t)a->ev->length,
+                                    buf, cap);
     }
     return codec_json_packet_line(a->ev->packet, (size_t)a->ev->length, a->ev->offset, a->device, buf, cap);
 }
@@ -109,13 +109,15 @@ std::string run_case(const session_cases::Case &c, size_t split_step = SIZE_MAX,
             char msg[CODEC_ERROR_MESSAGE_MAX + 200];
             number++;
             std::string text(step.send);
-            EXPECT_EQ(codec_json_command_line(text.data(), text.size(), &command, msg, sizeof msg), CODEC_OK) << msg;
+            EXPECT_EQ(codec_json_command_line(text.data(), text.size(), &command, msg, sizeof msg), CODEC_OK)
+                << msg;
             codec_start_options_t opt;
             codec_start_options_init(&opt);
             opt.tag = number;
             uint8_t packet[CODEC_MAX_PACKET];
             codec_started_t started;
-            EXPECT_EQ(codec_session_start(&r.session, &command, now, &opt, packet, sizeof packet, &started), CODEC_OK);
+            EXPECT_EQ(codec_session_start(&r.session, &command, now, &opt, packet, sizeof packet, &started),
+                      CODEC_OK);
             if (step.bytes && !started.done) {
                 EXPECT_EQ(to_hex(std::vector<uint8_t>(packet, packet + started.packet_len)), step.bytes)
                     << "command " << number;
@@ -169,4 +171,4 @@ TEST(SessionCorpus, HasCases) {
     EXPECT_GT(session_cases::cases().size(), 0u);
 }
 
-}  // namespace
+} // namespace
