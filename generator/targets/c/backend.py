@@ -708,6 +708,7 @@ class _Package:
                         out.append(
                             {
                                 "name": name,
+                                "field": (s["id"], f["name"]),
                                 "title": _comment(f.get("title")),
                                 "fn": fn,
                                 "fn_macro": f"{fmacro}_{fn.upper()}" if fn else None,
@@ -910,6 +911,17 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     return out
 
 
+_COMMAND_API: dict[int, tuple[dict, list[dict]]] = {}
+
+
+def _command_api_of(protocol: dict) -> list[dict]:
+    """The typed command API of a protocol (cached per protocol object for the docs back end)."""
+    key = id(protocol)
+    if key not in _COMMAND_API or _COMMAND_API[key][0] is not protocol:
+        _COMMAND_API[key] = (protocol, _Package(protocol, []).command_api())
+    return _COMMAND_API[key][1]
+
+
 def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     """Names a C user types for a field: struct type(s), encode and decode functions, header."""
     p = prefix_of(protocol)
@@ -917,10 +929,16 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     header = f"{protocol['package']}/sets/{set_['name']}.h" if set_ else f"{protocol['package']}/reserved.h"
     variants = field.get("variants") or [{"device": None}]
     bases = [base + (f"_{v['device']}" if v.get("device") else "") for v in variants]
-    return {
+    out = {
         "type": ", ".join(b + "_t" for b in bases),
         "encode": ", ".join(b + "_encode" for b in bases),
         "decode": ", ".join(b + "_decode" for b in bases),
         "descriptor": f"{base.upper()}_DESCRIPTOR",
         "header": header,
     }
+    if set_ is not None and field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (commands.h.j2): one function per function the command supports,
+        # per device when the layouts' parameters differ (_Package.command_api).
+        names = [c["name"] for c in _command_api_of(protocol) if c["field"] == (set_["id"], field["name"])]
+        out["session"] = ", ".join(f"{n}(link, ...)" for n in names)
+    return out
