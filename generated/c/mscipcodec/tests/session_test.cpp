@@ -168,8 +168,4 @@ TEST(SessionCorpus, EveryCaseWholeAndSplitEverywhere) {
     }
 }
 
-TEST(SessionCorpus, HasCases) {
-    EXPECT_GT(session_cases::cases().size(), 0u);
-}
-
 } // namespace
