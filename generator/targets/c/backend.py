@@ -789,8 +789,61 @@ class _Package:
         lv = target[1]["layouts"][0]
         return {"value": False, "ctype": lv["c"], "fn": lv["fn"], "descriptor": f"0x{ids[0]:02X}"}
 
+    def stream_example(self) -> dict | None:
+        """What examples/configure_and_stream.c calls for this protocol (None: no such example):
+        the device it talks to, the device-information read, one setting written and read back,
+        and the command that starts the data stream. The commands are named here, per protocol,
+        and checked against the generated API."""
+        p, P = self.p, self.P
+        choices = {
+            "mip": {
+                "device": "cv7_ins",
+                "ping": f"{p}_base_ping",
+                "info": (f"{p}_base_get_device_info", f"{p}_base_device_info_t", "info.info.model_name"),
+                "write": (f"{p}_threedm_sensor_to_vehicle_euler_write", "0.0f, 0.0f, 1.5708f"),
+                "read": (
+                    f"{p}_threedm_sensor_to_vehicle_euler_read",
+                    f"{p}_threedm_sensor_to_vehicle_euler_response_t",
+                    "sensor to vehicle: roll %.4f pitch %.4f yaw %.4f",
+                    "(double)setting.roll, (double)setting.pitch, (double)setting.yaw",
+                ),
+                "enable": (f"{p}_threedm_data_stream_control_write_cv7_ins", "0x80, true"),
+            },
+            "mscip": {
+                "device": None,
+                "ping": f"{p}_base_ping",
+                "info": (f"{p}_base_get_device_model", f"{p}_base_device_model_t", "info.model"),
+                "write": (f"{p}_imu_config_sample_rate_write", "4"),
+                "read": (
+                    f"{p}_imu_config_sample_rate_read",
+                    f"{p}_imu_config_sample_rate_response_t",
+                    "sample rate decimation: %u",
+                    "(unsigned)setting.decimation",
+                ),
+                "enable": (f"{p}_imu_config_data_on_off_write", f"{P}_ON_OFF_ON"),
+            },
+        }
+        c = choices.get(self.proto["name"])
+        if c is None:
+            return None
+        names = {x["name"] for x in self.command_api()}
+        for key in ("ping", "info", "write", "read", "enable"):
+            name = c[key] if isinstance(c[key], str) else c[key][0]
+            if name not in names:
+                raise BackendError(f"C back end: the configure-and-stream example calls {name}, which is not generated")
+        return {
+            "device_c": f"{P}_DEVICE_{c['device'].upper()}" if c["device"] else f"{P}_DEVICE_ANY",
+            "device": c["device"],
+            "ping": c["ping"],
+            "info": {"fn": c["info"][0], "ctype": c["info"][1], "text": c["info"][2]},
+            "write": {"fn": c["write"][0], "args": c["write"][1]},
+            "read": {"fn": c["read"][0], "ctype": c["read"][1], "format": c["read"][2], "args": c["read"][3]},
+            "enable": {"fn": c["enable"][0], "args": c["enable"][1]},
+        }
+
     def context(self) -> dict:
         return {
+            "stream_example": self.stream_example(),
             "commands": self.command_api(),
             "session": self.session(),
             "p": self.p,
@@ -885,6 +938,10 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
+        if ctx["stream_example"]:
+            out[root + "examples/configure_and_stream.c"] = env.get_template(
+                "c/examples/configure_and_stream.c.j2"
+            ).render(ctx, ex=ctx["stream_example"])
         out.update(cmake_package_files(root, ctx, pkg_config(pkg.pkg, proto["title"], "c")))
         # The core library holds the binary encoders and decoders, the JSON library (<pkg>_json)
         # their canonical JSON: one source file of each per set, for the types and the reserved
