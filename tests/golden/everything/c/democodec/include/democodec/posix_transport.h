@@ -13,7 +13,7 @@ extern "C" {
 typedef struct {
     int fd;
     bool socket;
-    char error[160]; /* the last failure */
+    char error[400]; /* the last failure */
 } democ_posix_t;
 
 /**
