@@ -6,6 +6,7 @@
 #   tests/lang/c.sh decode FILE|- [--device ID]   run <package>-decode (builds first if needed)
 #   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
 #   tests/lang/c.sh example FILE                  run <package>-getting-started FILE (builds first if needed)
+#   tests/lang/c.sh session --connect ADDRESS ...  run <package>-session (docs/conformance.md section 8)
 # decode/encode/example use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
 # output goes to stderr so that decode/encode keep stdout clean.
 set -euo pipefail
@@ -99,7 +100,7 @@ ensure_example() {
 }
 
 usage() {
-    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE" >&2
+    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ..." >&2
     exit 2
 }
 
@@ -131,6 +132,13 @@ decode)
 encode)
     ensure_built
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-encode" "$@"
+    ;;
+session)
+    out="$ROOT/build/c/$PACKAGE"
+    if [ ! -x "$out/$PACKAGE-session" ] || ! cmake --build "$out" --target "${PACKAGE}_c_session" >/dev/null 2>&1; then
+        build_one "$PACKAGE"
+    fi
+    exec "$out/$PACKAGE-session" "$@"
     ;;
 example)
     ensure_example

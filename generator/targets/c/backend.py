@@ -8,6 +8,7 @@ package with its symbol prefix; its only protocol input is the generated include
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from generator import model
 from generator.cmake import cmake_package_files, pkg_config
@@ -16,6 +17,7 @@ from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
+from generator.sessions import load_sessions
 from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
 from .facts import KEYWORDS as _KEYWORDS
@@ -45,12 +47,20 @@ _RUNTIME_FILES = {
     "src/json_reader.c": "src/json_reader.c",
     "include/codec/json.h": "include/codec/json.h",
     "src/json_codec.c": "src/json_codec.c",
+    "include/codec/session.h": "include/codec/session.h",
+    "src/session.c": "src/session.c",
+    "include/codec/link.h": "include/codec/link.h",
+    "src/link.c": "src/link.c",
+    "include/codec/posix_transport.h": "include/codec/posix_transport.h",
+    "src/posix_transport.c": "src/posix_transport.c",
+    "tools/session.c": "tools/session.c",
     "tools/decode.c": "tools/decode.c",
     "tools/encode.c": "tools/encode.c",
     "tools/tool_io.h": "tools/tool_io.h",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
     "tests/package/canonical_test.cpp": "tests/canonical_test.cpp",
+    "tests/package/session_test.cpp": "tests/session_test.cpp",
 }
 
 # Template -> generated file (relative to the package directory): what varies with the spec.
@@ -70,6 +80,10 @@ _TEMPLATES = {
     "tests/vectors_test.cpp.j2": "tests/vectors_test.cpp",
     "tests/canonical_cases.hpp.j2": "tests/canonical_cases.hpp",
     "tests/bitfields_test.cpp.j2": "tests/bitfields_test.cpp",
+    "session_facts.c.j2": "src/session_facts.c",
+    "commands.h.j2": "include/{pkg}/commands.h",
+    "commands.c.j2": "src/commands.c",
+    "tests/session_cases.hpp.j2": "tests/session_cases.hpp",
 }
 
 
@@ -544,8 +558,294 @@ class _Package:
         example["set_macro"] = next(s["macro"] for s in self.sets if s["id"] == example["set"]["id"])
         return example
 
+    # -------------------------------------------------------------- session (docs/conformance.md section 8)
+    def _int_value(self, tref: dict, value) -> int | None:
+        """An enum value name (or integer) of a parameter's type as an integer."""
+        if value is None or isinstance(value, int):
+            return value
+        t = self.types[tref["name"]]
+        return next(v["value"] for v in t["values"] if v["name"] == value)
+
+    def _param_ref(self, v: dict, name: str) -> dict:
+        """How the facts code reads a parameter of a command struct: its member, presence flag."""
+        lay = model.params(self.proto, v["params"], v["functions"])
+        optional = any(q.name == name and q.optional for q in lay.params)
+        return {"c": member(name), "has": f"has_{name}" if optional else None}
+
+    def session(self) -> dict:
+        """The ack rule and the facts of every command layout that session_facts.c.j2 prints: per
+        layout its devices, functions, expected replies with their conditions, ack suppression and
+        timeout allowance (docs/design.md "Session layer")."""
+        rule = self.proto["session"]
+        fs = self.proto.get("function_selector") or {}
+        fvalues: dict[str, int] = {}
+        fdevices: dict[int, list[str]] = {}
+        if fs.get("enum"):
+            for v in self.types[fs["enum"]]["values"]:
+                fvalues[v["name"]] = v["value"]
+                if v.get("devices"):
+                    fdevices[v["value"]] = v["devices"]
+        dev_bit = {d["id"]: i + 1 for i, d in enumerate(self.proto["devices"])}
+
+        def mask(devices) -> str:
+            return f"0x{sum(1 << dev_bit[d] for d in devices):X}u"
+
+        rows = []
+        max_expect = 1
+        for s, sv in zip(self.proto["sets"], self.sets):
+            if s["kind"] != "command":
+                continue
+            for f, fv in zip(s["fields"], sv["fields"]):
+                if f["role"] != "command":
+                    continue
+                field_devices = mask(sorted({d for v in f["variants"] for d in v["devices"]}))
+                for v, lv in zip(f["variants"], fv["layouts"]):
+                    responses = []
+                    for r in v["responses"]:
+                        w = r["when"] or {}
+                        param = w.get("param")
+                        q = next((q for q in v["params"] if q["name"] == param), None) if param else None
+                        responses.append(
+                            {
+                                "id": f"0x{r['id']:02X}",
+                                "function": fvalues[w["function"]] if "function" in w else None,
+                                "param": self._param_ref(v, param) if param else None,
+                                "value": self._int_value(q["type"], w.get("value")) if q else None,
+                            }
+                        )
+                    max_expect = max(max_expect, len(responses))
+                    ack = v["ack_suppressed_by"]
+                    suppress = None
+                    if ack is not None and "function" in ack:
+                        suppress = {"function": fvalues[ack["function"]]}
+                    elif ack is not None:
+                        q = next(q for q in v["params"] if q["name"] == ack["param"])
+                        suppress = {
+                            "param": self._param_ref(v, ack["param"]),
+                            "value": self._int_value(q["type"], ack.get("value")),
+                        }
+                    t = v.get("timeout")
+                    timeout = None
+                    if t is not None:
+                        timeout = {
+                            "ms": t["ms"],
+                            "param": self._param_ref(v, t["param"]) if t["param"] else None,
+                            "functions": [fvalues[x] for x in t["functions"]] if t["functions"] else None,
+                        }
+                    rows.append(
+                        {
+                            "id": lv["id"],
+                            "member": lv["member"],
+                            "ctype": lv["c"],
+                            "set": f"0x{s['id']:02X}",
+                            "descriptor": f"0x{f['id']:02X}",
+                            "functions": [fvalues[x] for x in v["functions"]] if v["functions"] is not None else None,
+                            "field_devices": field_devices,
+                            "layout_device": lv["device_c"] if lv["device"] else f"{self.P}_DEVICE_ANY",
+                            "responses": responses,
+                            "suppress": suppress,
+                            "timeout": timeout,
+                            "uses_c": bool(
+                                v["functions"] is not None
+                                or any(x["param"] for x in responses)
+                                or (suppress or {}).get("param")
+                                or (timeout or {}).get("param")
+                            ),
+                        }
+                    )
+        ack_layout = None
+        if rule:
+            r = next(r for r in self.reserved if r["descriptor"] == rule["ack"] and r["role"] == "ack")
+            ack_layout = r["layouts"][0]
+        return {
+            "rule": rule,
+            "ack_layout": ack_layout,
+            "max_expect": max_expect,
+            "command_rows": rows,
+            "function_names": [{"value": v, "name": n} for n, v in fvalues.items()],
+            "function_devices": [{"value": k, "mask": mask(d)} for k, d in fdevices.items()],
+            "all_devices": mask([d["id"] for d in self.proto["devices"]]),
+        }
+
+    def command_api(self) -> list[dict]:
+        """The typed command API (commands.h.j2, commands.c.j2): one C function per command and
+        function it supports (the plain command name without a function selector), typed
+        parameters in, the typed reply out. Layouts whose parameters differ per device get one
+        function per device (suffix _<device>); otherwise the link's device picks the layout."""
+        fs = self.proto.get("function_selector") or {}
+        fmacro = self.type_macro(fs["enum"]) if fs.get("enum") else None
+        out = []
+        for s, sv in zip(self.proto["sets"], self.sets):
+            if s["kind"] != "command":
+                continue
+            by_id = {f["id"]: (f, fv) for f, fv in zip(s["fields"], sv["fields"])}
+            for f, fv in zip(s["fields"], sv["fields"]):
+                if f["role"] != "command":
+                    continue
+                base = f"{self.p}_{s['name']}_{f['name']}"
+                pairs = list(zip(f["variants"], fv["layouts"]))
+                plain = f["variants"][0]["functions"] is None
+                functions: list[str] = []
+                for v, _ in pairs:
+                    for fn in v["functions"] or []:
+                        if fn not in functions:
+                            functions.append(fn)
+                for fn in [None] if plain else functions:
+                    groups: dict[tuple, list] = {}
+                    for v, lv in pairs:
+                        if fn is not None and fn not in (v["functions"] or []):
+                            continue
+                        args = self._api_args(v, lv, fn)
+                        key = tuple(a["decl"] for a in args)
+                        groups.setdefault(key, []).append((v, lv, args))
+                    split = len(groups) > 1
+                    for group in groups.values():
+                        name = base if fn is None else f"{base}_{fn}"
+                        if split:
+                            name += f"_{group[0][1]['device']}"
+                        self._claim(name, f"command function {name}")
+                        reply = self._api_reply(s, group, fn, by_id)
+                        out.append(
+                            {
+                                "name": name,
+                                "field": (s["id"], f["name"]),
+                                "title": _comment(f.get("title")),
+                                "fn": fn,
+                                "fn_macro": f"{fmacro}_{fn.upper()}" if fn else None,
+                                "args": group[0][2],
+                                "layouts": [
+                                    {
+                                        "id": lv["id"],
+                                        "member": lv["member"],
+                                        "ctype": lv["c"],
+                                        "device_c": lv["device_c"],
+                                        "args": largs,
+                                    }
+                                    for _, lv, largs in group
+                                ],
+                                "choose": len(group) > 1,
+                                "reply": reply,
+                            }
+                        )
+        return out
+
+    def _api_args(self, v: dict, lv: dict, fn: str | None) -> list[dict]:
+        """The arguments of one typed command function: the parameters sent for fn (the function
+        selector and the counts of counted arrays are set by the function)."""
+        views = {q["name"]: q for q in lv["params"]}
+        lay = model.params(self.proto, v["params"], v["functions"])
+        counts = {q.count_param for q in lay.params if q.kind == model.COUNTED}
+        args = []
+        for q in lay.params:
+            if q.function or q.name in counts:
+                continue
+            if q.functions is not None and fn not in q.functions:
+                continue
+            view = views[q.name]
+            ctype = view["e"]["ctype"]
+            c = view["c"]
+            arg = c + "_" if c in ("link", "reply") else c
+            a = {"c": c, "arg": arg, "has": view["has"], "kind": q.kind}
+            if q.kind == model.SCALAR and q.elem.kind in ("struct", "union") or q.kind == model.UNION:
+                a["decl"] = f"const {ctype} *{arg}"
+                a["how"] = "struct"
+            elif q.kind == model.SCALAR:
+                a["decl"] = f"{ctype} {arg}"
+                a["how"] = "value"
+            elif q.kind == model.FIXED:
+                a["decl"] = f"const {ctype} {arg}[{view['n']}]"
+                a["how"] = "array"
+            elif q.kind == model.STRING:
+                a["decl"] = f"const char {arg}[{view['n']}]"
+                a["how"] = "array"
+            else:
+                a["decl"] = f"const {ctype} *{arg}, size_t {q.name}_count"
+                a["how"] = "counted" if q.kind == model.COUNTED else "remaining"
+                a["count_arg"] = f"{q.name}_count"
+                a["max"] = view["max"]
+                a["count_c"] = view["count_c"]
+                if q.kind == model.COUNTED:
+                    cq = next(x for x in lay.params if x.name == q.count_param)
+                    a["count_ctype"] = views[cq.name]["e"]["ctype"]
+            args.append(a)
+        return args
+
+    def _api_reply(self, s: dict, group: list, fn: str | None, by_id: dict) -> dict | None:
+        """The reply a typed command function returns: one layout of the command's set (its
+        struct), any field (a field value), or None."""
+        ids: list[int] = []
+        for v, _, _ in group:
+            for r in v["responses"]:
+                w = r["when"] or {}
+                if "function" in w and w["function"] != fn:
+                    continue
+                if r["id"] not in ids:
+                    ids.append(r["id"])
+        if not ids:
+            return None
+        target = by_id.get(ids[0])
+        if len(ids) > 1 or target is None or len(target[0]["variants"]) > 1:
+            return {"value": True, "ctype": f"{self.p}_field_value_t"}
+        lv = target[1]["layouts"][0]
+        return {"value": False, "ctype": lv["c"], "fn": lv["fn"], "descriptor": f"0x{ids[0]:02X}"}
+
+    def stream_example(self) -> dict | None:
+        """What examples/configure_and_stream.c calls for this protocol (None: no such example):
+        the device it talks to, the device-information read, one setting written and read back,
+        and the command that starts the data stream. The commands are named here, per protocol,
+        and checked against the generated API."""
+        p, P = self.p, self.P
+        choices = {
+            "mip": {
+                "device": "cv7_ins",
+                "ping": f"{p}_base_ping",
+                "info": (f"{p}_base_get_device_info", f"{p}_base_device_info_t", "info.info.model_name"),
+                "write": (f"{p}_threedm_sensor_to_vehicle_euler_write", "0.0f, 0.0f, 1.5708f"),
+                "read": (
+                    f"{p}_threedm_sensor_to_vehicle_euler_read",
+                    f"{p}_threedm_sensor_to_vehicle_euler_response_t",
+                    "sensor to vehicle: roll %.4f pitch %.4f yaw %.4f",
+                    "(double)setting.roll, (double)setting.pitch, (double)setting.yaw",
+                ),
+                "enable": (f"{p}_threedm_data_stream_control_write_cv7_ins", "0x80, true"),
+            },
+            "mscip": {
+                "device": None,
+                "ping": f"{p}_base_ping",
+                "info": (f"{p}_base_get_device_model", f"{p}_base_device_model_t", "info.model"),
+                "write": (f"{p}_imu_config_sample_rate_write", "4"),
+                "read": (
+                    f"{p}_imu_config_sample_rate_read",
+                    f"{p}_imu_config_sample_rate_response_t",
+                    "sample rate decimation: %u",
+                    "(unsigned)setting.decimation",
+                ),
+                "enable": (f"{p}_imu_config_data_on_off_write", f"{P}_ON_OFF_ON"),
+            },
+        }
+        c = choices.get(self.proto["name"])
+        if c is None:
+            return None
+        names = {x["name"] for x in self.command_api()}
+        for key in ("ping", "info", "write", "read", "enable"):
+            name = c[key] if isinstance(c[key], str) else c[key][0]
+            if name not in names:
+                raise BackendError(f"C back end: the configure-and-stream example calls {name}, which is not generated")
+        return {
+            "device_c": f"{P}_DEVICE_{c['device'].upper()}" if c["device"] else f"{P}_DEVICE_ANY",
+            "device": c["device"],
+            "ping": c["ping"],
+            "info": {"fn": c["info"][0], "ctype": c["info"][1], "text": c["info"][2]},
+            "write": {"fn": c["write"][0], "args": c["write"][1]},
+            "read": {"fn": c["read"][0], "ctype": c["read"][1], "format": c["read"][2], "args": c["read"][3]},
+            "enable": {"fn": c["enable"][0], "args": c["enable"][1]},
+        }
+
     def context(self) -> dict:
         return {
+            "stream_example": self.stream_example(),
+            "commands": self.command_api(),
+            "session": self.session(),
             "p": self.p,
             "P": self.P,
             "pkg": self.pkg,
@@ -589,19 +889,59 @@ def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
     ]
 
 
+def _session_cases(ir: dict) -> dict[str, list[dict]]:
+    """The session corpus of the project (tests/sessions/<protocol>/) per protocol, as C literals;
+    empty for another spec (a test fixture) whose protocols the corpus does not name."""
+    root = Path(__file__).resolve().parents[3] / "tests" / "sessions"
+    names = {p["name"] for p in ir["protocols"]}
+    if not root.is_dir() or not {d.name for d in root.iterdir() if d.is_dir()} <= names:
+        return {}
+    out: dict[str, list[dict]] = {}
+    prefixes = {p["name"]: prefix_of(p).upper() for p in ir["protocols"]}
+    for c in load_sessions(ir, root):
+        P = prefixes[c["protocol"]]
+        steps = []
+        for s in c["steps"]:
+            send = s.get("send")
+            steps.append(
+                {
+                    "at": s["at"],
+                    "send": _c_string(send) if send is not None else "nullptr",
+                    "bytes": _c_string(s["bytes"]) if send is not None and s.get("bytes") else "nullptr",
+                    "receive": _c_string(s["receive"]) if "receive" in s else "nullptr",
+                }
+            )
+        out.setdefault(c["protocol"], []).append(
+            {
+                "name": c["name"],
+                "device_c": f"{P}_DEVICE_{c['device'].upper()}" if c["device"] else f"{P}_DEVICE_ANY",
+                "timeout_ms": c["timeout_ms"],
+                "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
+                "steps": steps,
+                "expect": _c_string("".join(line + "\n" for line in c["expect"])),
+            }
+        )
+    return out
+
+
 def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     out: dict[str, str] = {}
+    sessions = _session_cases(ir)
     for proto in ir["protocols"]:
         pkg = _Package(proto, vectors)
-        ctx = {**pkg.context(), **release.stamp(proto)}
+        ctx = {**pkg.context(), **release.stamp(proto), "session_cases": sessions.get(proto["name"], [])}
         root = f"c/{pkg.pkg}/"
         out[root + "LICENSE"] = release.license
         runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
         out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
+        if ctx["stream_example"]:
+            out[root + "examples/configure_and_stream.c"] = env.get_template(
+                "c/examples/configure_and_stream.c.j2"
+            ).render(ctx, ex=ctx["stream_example"])
         out.update(cmake_package_files(root, ctx, pkg_config(pkg.pkg, proto["title"], "c")))
         # The core library holds the binary encoders and decoders, the JSON library (<pkg>_json)
         # their canonical JSON: one source file of each per set, for the types and the reserved
@@ -628,6 +968,17 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     return out
 
 
+_COMMAND_API: dict[int, tuple[dict, list[dict]]] = {}
+
+
+def _command_api_of(protocol: dict) -> list[dict]:
+    """The typed command API of a protocol (cached per protocol object for the docs back end)."""
+    key = id(protocol)
+    if key not in _COMMAND_API or _COMMAND_API[key][0] is not protocol:
+        _COMMAND_API[key] = (protocol, _Package(protocol, []).command_api())
+    return _COMMAND_API[key][1]
+
+
 def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     """Names a C user types for a field: struct type(s), encode and decode functions, header."""
     p = prefix_of(protocol)
@@ -635,10 +986,16 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     header = f"{protocol['package']}/sets/{set_['name']}.h" if set_ else f"{protocol['package']}/reserved.h"
     variants = field.get("variants") or [{"device": None}]
     bases = [base + (f"_{v['device']}" if v.get("device") else "") for v in variants]
-    return {
+    out = {
         "type": ", ".join(b + "_t" for b in bases),
         "encode": ", ".join(b + "_encode" for b in bases),
         "decode": ", ".join(b + "_decode" for b in bases),
         "descriptor": f"{base.upper()}_DESCRIPTOR",
         "header": header,
     }
+    if set_ is not None and field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (commands.h.j2): one function per function the command supports,
+        # per device when the layouts' parameters differ (_Package.command_api).
+        names = [c["name"] for c in _command_api_of(protocol) if c["field"] == (set_["id"], field["name"])]
+        out["session"] = ", ".join(f"{n}(link, ...)" for n in names)
+    return out

@@ -1,12 +1,20 @@
 /* Benchmark of the generated C package mipcodec (issue 8): a plain timed loop.
  *
- *   bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]
+ *   bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode MODE]
  *
  * For every stream DIR/<name>.bin (with its sidecar DIR/<name>.json) it times, best of N passes
  * over the whole file in memory (read once, not timed):
  *   lang=c        mode=frame   mipc_parser_feed + flush: every packet reported, garbage skipped
  *   lang=c        mode=decode  the same, plus field splitting and mipc_decode_field of every field
  *   lang=baseline mode=copy    memchr(sync byte) + memcpy of each packet into a buffer
+ *   lang=c        mode=session-ingest  the stream fed to a command session (mipcodec/session.h)
+ *                                      with a ping pending whose reply never comes: every packet
+ *                                      routed to a per-packet handler that decodes as mode=decode
+ * and once, after the streams:
+ *   lang=c stream=loopback-tcp mode=session-roundtrip  pings through the blocking API
+ *                                      (mipc_base_ping over mipc_link_t and the POSIX TCP
+ *                                      transport) to a forked responder that acks each one;
+ *                                      packets = round trips, bytes = bytes sent + received
  * and prints one line per measurement:
  *   BENCH lang=c stream=accel_gyro mode=frame packets=N bytes=B seconds=S
  * The packet and field counts are checked against the sidecar (exit 1 on mismatch); a checksum
@@ -17,9 +25,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "mipcodec/mipcodec.h"
+#include "mipcodec/posix_transport.h"
 
 static const char *const k_streams[] = {"accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"};
 
@@ -127,8 +142,8 @@ static void on_decode(void *ctx, const mipc_event_t *ev) {
     mipc_field_iter_init(&it, set, mipc_packet_payload(ev->packet), mipc_packet_payload_length(ev->packet));
     while (mipc_field_iter_next(&it, &e)) {
         uint32_t word = 0;
-        if (e.kind != MIPC_ENTRY_FIELD ||
-            mipc_decode_field(set, e.descriptor, e.data, e.length, MIPC_DEVICE_ANY, &value, NULL) != MIPC_OK) {
+        if (e.kind != MIPC_ENTRY_FIELD || mipc_decode_field(set, e.descriptor, e.data, e.length,
+                                                            MIPC_DEVICE_ANY, &value, NULL) != MIPC_OK) {
             c->errors++;
             continue;
         }
@@ -167,7 +182,108 @@ static void copy_pass(const stream_t *s, counts_t *c) {
     }
 }
 
-typedef enum { MODE_FRAME, MODE_DECODE, MODE_COPY } mode_t_;
+/* ---- session-ingest: a session with a command pending routes every packet to on_decode ---- */
+
+static void session_pass(const stream_t *s, counts_t *c) {
+    static mipc_session_t session;
+    mipc_session_config_t config;
+    mipc_field_value_t ping;
+    mipc_started_t started;
+    uint8_t packet[MIPC_MAX_PACKET];
+    mipc_session_config_init(&config);
+    config.timeout_ms = 0xFFFFFFFFu; /* the reply never comes, and the deadline is far away */
+    mipc_session_init(&session, &config);
+    mipc_session_on_packet(&session, on_decode, c);
+    memset(&ping, 0, sizeof ping);
+    ping.id = MIPC_FIELD_BASE_PING;
+    if (mipc_session_start(&session, &ping, 0, NULL, packet, sizeof packet, &started) != MIPC_OK ||
+        started.done) {
+        c->errors++;
+    }
+    mipc_session_feed(&session, s->data, s->len, 1);
+    mipc_session_close(&session, 2);
+    if (mipc_session_pending(&session) != 1) {
+        c->errors++;
+    }
+}
+
+/* ---- session-roundtrip: pings over loopback TCP to a forked responder ---- */
+
+/* The responder: acks every ping (75 65 01 02 02 01 E0 C6) it reads. */
+static void respond(int fd) {
+    static const uint8_t ack[] = {0x75, 0x65, 0x01, 0x04, 0x04, 0xF1, 0x01, 0x00, 0xD5, 0x6A};
+    uint8_t buf[4096];
+    size_t have = 0;
+    for (;;) {
+        ssize_t n = recv(fd, buf + have, sizeof buf - have, 0);
+        size_t i = 0;
+        if (n <= 0) {
+            return;
+        }
+        have += (size_t)n;
+        while (have - i >= 8) {
+            if (send(fd, ack, sizeof ack, 0) != (ssize_t)sizeof ack) {
+                return;
+            }
+            i += 8;
+        }
+        memmove(buf, buf + i, have - i);
+        have -= i;
+    }
+}
+
+static int roundtrip(int count, double *seconds, uint64_t *bytes) {
+    struct sockaddr_in addr;
+    socklen_t len = sizeof addr;
+    static mipc_link_t link;
+    mipc_posix_t port;
+    mipc_transport_t transport;
+    mipc_session_config_t config;
+    char address[64];
+    int srv = socket(AF_INET, SOCK_STREAM, 0);
+    int one = 1;
+    pid_t child;
+    int i;
+    int ok = 1;
+    double t0;
+    memset(&addr, 0, sizeof addr);
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (srv < 0 || bind(srv, (struct sockaddr *)&addr, sizeof addr) != 0 || listen(srv, 1) != 0 ||
+        getsockname(srv, (struct sockaddr *)&addr, &len) != 0) {
+        return -1;
+    }
+    child = fork();
+    if (child == 0) {
+        int fd = accept(srv, NULL, NULL);
+        if (fd >= 0) {
+            setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+            respond(fd);
+        }
+        _exit(0);
+    }
+    close(srv);
+    snprintf(address, sizeof address, "tcp:127.0.0.1:%u", (unsigned)ntohs(addr.sin_port));
+    if (mipc_posix_open(&port, address, 115200) != MIPC_OK) {
+        fprintf(stderr, "bench: %s\n", port.error);
+        kill(child, SIGTERM);
+        return -1;
+    }
+    mipc_posix_transport(&port, &transport);
+    mipc_session_config_init(&config);
+    mipc_link_init(&link, &transport, &config);
+    t0 = now();
+    for (i = 0; i < count && ok; i++) {
+        ok = mipc_base_ping(&link) == MIPC_RESULT_ACK;
+    }
+    *seconds = now() - t0;
+    *bytes = (uint64_t)count * (8u + 10u);
+    mipc_posix_close(&port);
+    waitpid(child, NULL, 0);
+    return ok ? 0 : -1;
+}
+
+typedef enum { MODE_FRAME, MODE_DECODE, MODE_COPY, MODE_SESSION } mode_t_;
 
 static void run_pass(const stream_t *s, mode_t_ mode, counts_t *c) {
     mipc_parser_t parser;
@@ -176,13 +292,17 @@ static void run_pass(const stream_t *s, mode_t_ mode, counts_t *c) {
         copy_pass(s, c);
         return;
     }
+    if (mode == MODE_SESSION) {
+        session_pass(s, c);
+        return;
+    }
     mipc_parser_init(&parser);
     mipc_parser_feed(&parser, s->data, s->len, mode == MODE_FRAME ? on_frame : on_decode, c);
     mipc_parser_flush(&parser, mode == MODE_FRAME ? on_frame : on_decode, c);
 }
 
 int main(int argc, char **argv) {
-    static const char *const mode_names[] = {"frame", "decode", "copy"};
+    static const char *const mode_names[] = {"frame", "decode", "copy", "session-ingest"};
     const char *dir = NULL;
     int passes = 5;
     int first_mode = MODE_FRAME;
@@ -208,7 +328,8 @@ int main(int argc, char **argv) {
         }
     }
     if (!dir || passes < 1) {
-        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME] [--mode frame|decode|copy]\n");
+        fprintf(stderr, "usage: bench DIR [--passes N] [--baseline-only] [--stream NAME] "
+                        "[--mode frame|decode|copy|session-ingest|session-roundtrip]\n");
         return 2;
     }
     for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
@@ -220,7 +341,7 @@ int main(int argc, char **argv) {
         if (load(dir, k_streams[si], &s) != 0) {
             return 1;
         }
-        for (m = first_mode; m <= MODE_COPY; m++) {
+        for (m = first_mode; m <= (first_mode == MODE_COPY ? MODE_COPY : MODE_SESSION); m++) {
             double best = 1e30;
             counts_t c;
             int k;
@@ -241,10 +362,10 @@ int main(int argc, char **argv) {
                         mode_names[m], (unsigned long long)c.packets, (unsigned long long)s.packets);
                 failed = 1;
             }
-            if (m == MODE_DECODE && (c.fields != s.fields || c.errors != 0)) {
-                fprintf(stderr, "bench: %s decode: %llu fields (%llu errors), the sidecar says %llu\n",
-                        k_streams[si], (unsigned long long)c.fields, (unsigned long long)c.errors,
-                        (unsigned long long)s.fields);
+            if ((m == MODE_DECODE || m == MODE_SESSION) && (c.fields != s.fields || c.errors != 0)) {
+                fprintf(stderr, "bench: %s %s: %llu fields (%llu errors), the sidecar says %llu\n",
+                        k_streams[si], mode_names[m], (unsigned long long)c.fields,
+                        (unsigned long long)c.errors, (unsigned long long)s.fields);
                 failed = 1;
             }
             printf("BENCH lang=%s stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n",
@@ -255,6 +376,19 @@ int main(int argc, char **argv) {
             fflush(stdout);
         }
         free(s.data);
+    }
+    if (first_mode != MODE_COPY && !only && (!only_mode || strcmp(only_mode, "session-roundtrip") == 0)) {
+        int count = 200 * passes;
+        double best = 0;
+        uint64_t bytes = 0;
+        if (roundtrip(count, &best, &bytes) != 0) {
+            fprintf(stderr, "bench: session-roundtrip failed\n");
+            failed = 1;
+        } else {
+            printf("BENCH lang=c stream=loopback-tcp mode=session-roundtrip packets=%d bytes=%llu "
+                   "seconds=%.6f\n",
+                   count, (unsigned long long)bytes, best);
+        }
     }
     return failed;
 }

@@ -351,3 +351,107 @@ mipc_status_t mipc_json_encode_line(const char *line, size_t len, uint8_t *out, 
     }
     return st == MIPC_OK ? MIPC_OK : MIPC_ERR_JSON;
 }
+
+/* ------------------------------------------------------------------ session lines */
+
+size_t mipc_json_result_line(const mipc_result_t *result, uint64_t line, mipc_device_t device, char *out,
+                             size_t cap) {
+    assert(result != NULL);
+    assert(out != NULL || cap == 0);
+    mipc_jw_t w;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    size_t i = 0;
+    mipc_jw_init(&w, out, cap);
+    mipc_jw_lit(&w, "{\"line\":");
+    mipc_jw_uint(&w, line);
+    mipc_jw_lit(&w, ",\"result\":\"");
+    mipc_jw_lit(&w, mipc_result_kind_name(result->kind));
+    mipc_jw_lit(&w, "\",\"code\":");
+    if (result->has_code) {
+        mipc_jw_uint(&w, result->code);
+    } else {
+        mipc_jw_lit(&w, "null");
+    }
+    mipc_jw_lit(&w, ",\"reply\":[");
+    mipc_result_reply_iter(result, &it);
+    while (mipc_field_iter_next(&it, &e)) {
+        mipc_jw_sep(&w, i++);
+        field_json(&w, result->set, &e, device);
+    }
+    mipc_jw_lit(&w, "]");
+    if (result->kind == MIPC_RESULT_INVALID || result->kind == MIPC_RESULT_REFUSED ||
+        result->kind == MIPC_RESULT_TRANSPORT) {
+        mipc_jw_lit(&w, ",\"error\":");
+        mipc_jw_string(&w, result->error, strlen(result->error));
+    }
+    mipc_jw_lit(&w, "}");
+    return mipc_jw_finish(&w);
+}
+
+mipc_status_t mipc_json_command_line(const char *line, size_t len, mipc_field_value_t *out, char *msg,
+                                     size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL);
+    assert(msg != NULL || msg_cap == 0);
+    static const char *const keys[] = {"offset", "set", "fields"};
+    uint8_t packet[MIPC_MAX_PACKET];
+    mipc_jr_t jr;
+    size_t n = 0;
+    size_t pos;
+    size_t vp;
+    size_t it;
+    size_t ep;
+    size_t count = 0;
+    size_t field = 0;
+    uint8_t set;
+    uint8_t descriptor;
+    mipc_status_t st = mipc_json_encode_line(line, len, packet, sizeof packet, &n, msg, msg_cap);
+    if (st != MIPC_OK) {
+        return MIPC_ERR_JSON;
+    }
+    mipc_jr_init(&jr, line, len, msg, msg_cap);
+    if (mipc_jr_document(&jr, &pos)) {
+        return MIPC_ERR_JSON;
+    }
+    if (mipc_jr_get(&jr, pos, "skipped", &vp) == 1) {
+        mipc_jr_fail(&jr, "expected a packet line with one command field, not a skip run");
+        jr.depth = 0;
+        return MIPC_ERR_JSON;
+    }
+    if (mipc_jr_object(&jr, pos, keys, 3) || mipc_jr_get(&jr, pos, "set", &vp) != 1 ||
+        mipc_jr_u8(&jr, vp, &set) || mipc_jr_get(&jr, pos, "fields", &vp) != 1 ||
+        mipc_jr_array(&jr, vp, &it)) {
+        return MIPC_ERR_JSON;
+    }
+    for (;;) {
+        int more = mipc_jr_next(&jr, &it, &ep);
+        if (more < 0) {
+            return MIPC_ERR_JSON;
+        }
+        if (!more) {
+            break;
+        }
+        if (count++ == 0) {
+            field = ep;
+        }
+    }
+    if (count != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap, "expected exactly one command field, got %u", (unsigned)count);
+        }
+        return MIPC_ERR_JSON;
+    }
+    if (mipc_jr_get(&jr, field, "values", &vp) != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap,
+                     "expected a decoded command field (descriptor, name, values), not a raw field");
+        }
+        return MIPC_ERR_JSON;
+    }
+    if (mipc_jr_get(&jr, field, "descriptor", &vp) != 1 || mipc_jr_u8(&jr, vp, &descriptor) ||
+        decoded_field(&jr, field, set, descriptor, out)) {
+        return MIPC_ERR_JSON;
+    }
+    return MIPC_OK;
+}

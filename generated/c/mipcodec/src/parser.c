@@ -211,3 +211,13 @@ void mipc_parser_flush(mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }
+
+void mipc_parser_drop_first(mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
+    if (parser->used == 0) {
+        return;
+    }
+    skip(parser, 1);
+    process(parser, fn, ctx, 0);
+}

@@ -351,3 +351,107 @@ mscipc_status_t mscipc_json_encode_line(const char *line, size_t len, uint8_t *o
     }
     return st == MSCIPC_OK ? MSCIPC_OK : MSCIPC_ERR_JSON;
 }
+
+/* ------------------------------------------------------------------ session lines */
+
+size_t mscipc_json_result_line(const mscipc_result_t *result, uint64_t line, mscipc_device_t device,
+                               char *out, size_t cap) {
+    assert(result != NULL);
+    assert(out != NULL || cap == 0);
+    mscipc_jw_t w;
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
+    size_t i = 0;
+    mscipc_jw_init(&w, out, cap);
+    mscipc_jw_lit(&w, "{\"line\":");
+    mscipc_jw_uint(&w, line);
+    mscipc_jw_lit(&w, ",\"result\":\"");
+    mscipc_jw_lit(&w, mscipc_result_kind_name(result->kind));
+    mscipc_jw_lit(&w, "\",\"code\":");
+    if (result->has_code) {
+        mscipc_jw_uint(&w, result->code);
+    } else {
+        mscipc_jw_lit(&w, "null");
+    }
+    mscipc_jw_lit(&w, ",\"reply\":[");
+    mscipc_result_reply_iter(result, &it);
+    while (mscipc_field_iter_next(&it, &e)) {
+        mscipc_jw_sep(&w, i++);
+        field_json(&w, result->set, &e, device);
+    }
+    mscipc_jw_lit(&w, "]");
+    if (result->kind == MSCIPC_RESULT_INVALID || result->kind == MSCIPC_RESULT_REFUSED ||
+        result->kind == MSCIPC_RESULT_TRANSPORT) {
+        mscipc_jw_lit(&w, ",\"error\":");
+        mscipc_jw_string(&w, result->error, strlen(result->error));
+    }
+    mscipc_jw_lit(&w, "}");
+    return mscipc_jw_finish(&w);
+}
+
+mscipc_status_t mscipc_json_command_line(const char *line, size_t len, mscipc_field_value_t *out, char *msg,
+                                         size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL);
+    assert(msg != NULL || msg_cap == 0);
+    static const char *const keys[] = {"offset", "set", "fields"};
+    uint8_t packet[MSCIPC_MAX_PACKET];
+    mscipc_jr_t jr;
+    size_t n = 0;
+    size_t pos;
+    size_t vp;
+    size_t it;
+    size_t ep;
+    size_t count = 0;
+    size_t field = 0;
+    uint8_t set;
+    uint8_t descriptor;
+    mscipc_status_t st = mscipc_json_encode_line(line, len, packet, sizeof packet, &n, msg, msg_cap);
+    if (st != MSCIPC_OK) {
+        return MSCIPC_ERR_JSON;
+    }
+    mscipc_jr_init(&jr, line, len, msg, msg_cap);
+    if (mscipc_jr_document(&jr, &pos)) {
+        return MSCIPC_ERR_JSON;
+    }
+    if (mscipc_jr_get(&jr, pos, "skipped", &vp) == 1) {
+        mscipc_jr_fail(&jr, "expected a packet line with one command field, not a skip run");
+        jr.depth = 0;
+        return MSCIPC_ERR_JSON;
+    }
+    if (mscipc_jr_object(&jr, pos, keys, 3) || mscipc_jr_get(&jr, pos, "set", &vp) != 1 ||
+        mscipc_jr_u8(&jr, vp, &set) || mscipc_jr_get(&jr, pos, "fields", &vp) != 1 ||
+        mscipc_jr_array(&jr, vp, &it)) {
+        return MSCIPC_ERR_JSON;
+    }
+    for (;;) {
+        int more = mscipc_jr_next(&jr, &it, &ep);
+        if (more < 0) {
+            return MSCIPC_ERR_JSON;
+        }
+        if (!more) {
+            break;
+        }
+        if (count++ == 0) {
+            field = ep;
+        }
+    }
+    if (count != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap, "expected exactly one command field, got %u", (unsigned)count);
+        }
+        return MSCIPC_ERR_JSON;
+    }
+    if (mscipc_jr_get(&jr, field, "values", &vp) != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap,
+                     "expected a decoded command field (descriptor, name, values), not a raw field");
+        }
+        return MSCIPC_ERR_JSON;
+    }
+    if (mscipc_jr_get(&jr, field, "descriptor", &vp) != 1 || mscipc_jr_u8(&jr, vp, &descriptor) ||
+        decoded_field(&jr, field, set, descriptor, out)) {
+        return MSCIPC_ERR_JSON;
+    }
+    return MSCIPC_OK;
+}

@@ -212,3 +212,13 @@ void mscipc_parser_flush(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx)
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }
+
+void mscipc_parser_drop_first(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
+    if (parser->used == 0) {
+        return;
+    }
+    skip(parser, 1);
+    process(parser, fn, ctx, 0);
+}

@@ -27,6 +27,9 @@
 #include "mipcodec/sets/system_data.h"
 #include "mipcodec/sets/shared.h"
 #include "mipcodec/dispatch.h"
+#include "mipcodec/session.h"
+#include "mipcodec/link.h"
+#include "mipcodec/commands.h"
 #include "mipcodec/json.h"
 
 #endif

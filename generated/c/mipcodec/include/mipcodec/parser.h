@@ -46,6 +46,10 @@ void mipc_parser_feed(mipc_parser_t *parser, const uint8_t *data, size_t len, mi
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
 void mipc_parser_flush(mipc_parser_t *parser, mipc_event_fn fn, void *ctx);
+/** The timed rule of section 8: the first buffered byte (where the parser waits for more input)
+ * is skipped as a false sync and parsing resumes at the next byte, with no new input. Does
+ * nothing when nothing is buffered. */
+void mipc_parser_drop_first(mipc_parser_t *parser, mipc_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -57,6 +57,12 @@ static inline int mipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 /* Largest sample key: field header + data of every shared timestamp field. */
 #define MIPC_SAMPLE_KEY_MAX 36
 
+/* Command sessions (docs/conformance.md section 8): the ack field's descriptor and the code of
+ * success; the most reply descriptors one command expects. */
+#define MIPC_SESSION_ACK_DESCRIPTOR 0xF1
+#define MIPC_SESSION_ACK_OK 0u
+#define MIPC_SESSION_MAX_EXPECT 2
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MIPC_PATH_MAX_DEPTH 3
 /** Enough room for any message mipc_decode_error_format() can produce. */

@@ -11,6 +11,7 @@
 #define MSCIPC_JSON_H
 
 #include "mscipcodec/dispatch.h"
+#include "mscipcodec/session.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -48,6 +49,23 @@ size_t mscipc_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, ch
  */
 mscipc_status_t mscipc_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap,
                                         size_t *out_len, char *msg, size_t msg_cap);
+
+/**
+ * The session tool's result line of docs/conformance.md section 8 (without newline):
+ * {"line":N,"result":..,"code":C|null,"reply":[...]} and "error" for invalid and refused.
+ * The reply fields are decoded for `device`. Returns the full length, like snprintf.
+ */
+size_t mscipc_json_result_line(const mscipc_result_t *result, uint64_t line, mscipc_device_t device,
+                               char *out, size_t cap);
+
+/**
+ * The command of one session tool input line: a packet line as mscipc_json_encode_line accepts
+ * it with exactly one decoded field (its "device" picks the layout of a per-device field).
+ * Returns MSCIPC_OK, or MSCIPC_ERR_JSON with the reason in msg (a field that is not a command is
+ * refused by mscipc_command_facts, not here).
+ */
+mscipc_status_t mscipc_json_command_line(const char *line, size_t len, mscipc_field_value_t *out, char *msg,
+                                         size_t msg_cap);
 
 #ifdef __cplusplus
 }

@@ -15,6 +15,9 @@
 #include "mscipcodec/sets/imu_config.h"
 #include "mscipcodec/sets/imu_data.h"
 #include "mscipcodec/dispatch.h"
+#include "mscipcodec/session.h"
+#include "mscipcodec/link.h"
+#include "mscipcodec/commands.h"
 #include "mscipcodec/json.h"
 
 #endif

@@ -47,6 +47,10 @@ void mscipc_parser_feed(mscipc_parser_t *parser, const uint8_t *data, size_t len
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
 void mscipc_parser_flush(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx);
+/** The timed rule of section 8: the first buffered byte (where the parser waits for more input)
+ * is skipped as a false sync and parsing resumes at the next byte, with no new input. Does
+ * nothing when nothing is buffered. */
+void mscipc_parser_drop_first(mscipc_parser_t *parser, mscipc_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -58,6 +58,12 @@ static inline int mscipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 /* Largest sample key: field header + data of every shared timestamp field. */
 #define MSCIPC_SAMPLE_KEY_MAX 1
 
+/* Command sessions (docs/conformance.md section 8): the ack field's descriptor and the code of
+ * success; the most reply descriptors one command expects. */
+#define MSCIPC_SESSION_ACK_DESCRIPTOR 0x80
+#define MSCIPC_SESSION_ACK_OK 0u
+#define MSCIPC_SESSION_MAX_EXPECT 1
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MSCIPC_PATH_MAX_DEPTH 2
 /** Enough room for any message mscipc_decode_error_format() can produce. */

@@ -351,3 +351,107 @@ codec_status_t codec_json_encode_line(const char *line, size_t len, uint8_t *out
     }
     return st == CODEC_OK ? CODEC_OK : CODEC_ERR_JSON;
 }
+
+/* ------------------------------------------------------------------ session lines */
+
+size_t codec_json_result_line(const codec_result_t *result, uint64_t line, codec_device_t device, char *out,
+                              size_t cap) {
+    assert(result != NULL);
+    assert(out != NULL || cap == 0);
+    codec_jw_t w;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    size_t i = 0;
+    codec_jw_init(&w, out, cap);
+    codec_jw_lit(&w, "{\"line\":");
+    codec_jw_uint(&w, line);
+    codec_jw_lit(&w, ",\"result\":\"");
+    codec_jw_lit(&w, codec_result_kind_name(result->kind));
+    codec_jw_lit(&w, "\",\"code\":");
+    if (result->has_code) {
+        codec_jw_uint(&w, result->code);
+    } else {
+        codec_jw_lit(&w, "null");
+    }
+    codec_jw_lit(&w, ",\"reply\":[");
+    codec_result_reply_iter(result, &it);
+    while (codec_field_iter_next(&it, &e)) {
+        codec_jw_sep(&w, i++);
+        field_json(&w, result->set, &e, device);
+    }
+    codec_jw_lit(&w, "]");
+    if (result->kind == CODEC_RESULT_INVALID || result->kind == CODEC_RESULT_REFUSED ||
+        result->kind == CODEC_RESULT_TRANSPORT) {
+        codec_jw_lit(&w, ",\"error\":");
+        codec_jw_string(&w, result->error, strlen(result->error));
+    }
+    codec_jw_lit(&w, "}");
+    return codec_jw_finish(&w);
+}
+
+codec_status_t codec_json_command_line(const char *line, size_t len, codec_field_value_t *out, char *msg,
+                                       size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL);
+    assert(msg != NULL || msg_cap == 0);
+    static const char *const keys[] = {"offset", "set", "fields"};
+    uint8_t packet[CODEC_MAX_PACKET];
+    codec_jr_t jr;
+    size_t n = 0;
+    size_t pos;
+    size_t vp;
+    size_t it;
+    size_t ep;
+    size_t count = 0;
+    size_t field = 0;
+    uint8_t set;
+    uint8_t descriptor;
+    codec_status_t st = codec_json_encode_line(line, len, packet, sizeof packet, &n, msg, msg_cap);
+    if (st != CODEC_OK) {
+        return CODEC_ERR_JSON;
+    }
+    codec_jr_init(&jr, line, len, msg, msg_cap);
+    if (codec_jr_document(&jr, &pos)) {
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_get(&jr, pos, "skipped", &vp) == 1) {
+        codec_jr_fail(&jr, "expected a packet line with one command field, not a skip run");
+        jr.depth = 0;
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_object(&jr, pos, keys, 3) || codec_jr_get(&jr, pos, "set", &vp) != 1 ||
+        codec_jr_u8(&jr, vp, &set) || codec_jr_get(&jr, pos, "fields", &vp) != 1 ||
+        codec_jr_array(&jr, vp, &it)) {
+        return CODEC_ERR_JSON;
+    }
+    for (;;) {
+        int more = codec_jr_next(&jr, &it, &ep);
+        if (more < 0) {
+            return CODEC_ERR_JSON;
+        }
+        if (!more) {
+            break;
+        }
+        if (count++ == 0) {
+            field = ep;
+        }
+    }
+    if (count != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap, "expected exactly one command field, got %u", (unsigned)count);
+        }
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_get(&jr, field, "values", &vp) != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap,
+                     "expected a decoded command field (descriptor, name, values), not a raw field");
+        }
+        return CODEC_ERR_JSON;
+    }
+    if (codec_jr_get(&jr, field, "descriptor", &vp) != 1 || codec_jr_u8(&jr, vp, &descriptor) ||
+        decoded_field(&jr, field, set, descriptor, out)) {
+        return CODEC_ERR_JSON;
+    }
+    return CODEC_OK;
+}

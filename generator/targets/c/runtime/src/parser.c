@@ -212,3 +212,13 @@ void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
     process(parser, fn, ctx, 1);
     emit_skip(parser, fn, ctx);
 }
+
+void codec_parser_drop_first(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
+    assert(parser != NULL);
+    assert(fn != NULL);
+    if (parser->used == 0) {
+        return;
+    }
+    skip(parser, 1);
+    process(parser, fn, ctx, 0);
+}

@@ -46,6 +46,10 @@ void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, 
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
 void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx);
+/** The timed rule of section 8: the first buffered byte (where the parser waits for more input)
+ * is skipped as a false sync and parsing resumes at the next byte, with no new input. Does
+ * nothing when nothing is buffered. */
+void codec_parser_drop_first(codec_parser_t *parser, codec_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }

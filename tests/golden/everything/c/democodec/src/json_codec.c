@@ -351,3 +351,107 @@ democ_status_t democ_json_encode_line(const char *line, size_t len, uint8_t *out
     }
     return st == DEMOC_OK ? DEMOC_OK : DEMOC_ERR_JSON;
 }
+
+/* ------------------------------------------------------------------ session lines */
+
+size_t democ_json_result_line(const democ_result_t *result, uint64_t line, democ_device_t device, char *out,
+                              size_t cap) {
+    assert(result != NULL);
+    assert(out != NULL || cap == 0);
+    democ_jw_t w;
+    democ_field_iter_t it;
+    democ_field_entry_t e;
+    size_t i = 0;
+    democ_jw_init(&w, out, cap);
+    democ_jw_lit(&w, "{\"line\":");
+    democ_jw_uint(&w, line);
+    democ_jw_lit(&w, ",\"result\":\"");
+    democ_jw_lit(&w, democ_result_kind_name(result->kind));
+    democ_jw_lit(&w, "\",\"code\":");
+    if (result->has_code) {
+        democ_jw_uint(&w, result->code);
+    } else {
+        democ_jw_lit(&w, "null");
+    }
+    democ_jw_lit(&w, ",\"reply\":[");
+    democ_result_reply_iter(result, &it);
+    while (democ_field_iter_next(&it, &e)) {
+        democ_jw_sep(&w, i++);
+        field_json(&w, result->set, &e, device);
+    }
+    democ_jw_lit(&w, "]");
+    if (result->kind == DEMOC_RESULT_INVALID || result->kind == DEMOC_RESULT_REFUSED ||
+        result->kind == DEMOC_RESULT_TRANSPORT) {
+        democ_jw_lit(&w, ",\"error\":");
+        democ_jw_string(&w, result->error, strlen(result->error));
+    }
+    democ_jw_lit(&w, "}");
+    return democ_jw_finish(&w);
+}
+
+democ_status_t democ_json_command_line(const char *line, size_t len, democ_field_value_t *out, char *msg,
+                                       size_t msg_cap) {
+    assert(line != NULL || len == 0);
+    assert(out != NULL);
+    assert(msg != NULL || msg_cap == 0);
+    static const char *const keys[] = {"offset", "set", "fields"};
+    uint8_t packet[DEMOC_MAX_PACKET];
+    democ_jr_t jr;
+    size_t n = 0;
+    size_t pos;
+    size_t vp;
+    size_t it;
+    size_t ep;
+    size_t count = 0;
+    size_t field = 0;
+    uint8_t set;
+    uint8_t descriptor;
+    democ_status_t st = democ_json_encode_line(line, len, packet, sizeof packet, &n, msg, msg_cap);
+    if (st != DEMOC_OK) {
+        return DEMOC_ERR_JSON;
+    }
+    democ_jr_init(&jr, line, len, msg, msg_cap);
+    if (democ_jr_document(&jr, &pos)) {
+        return DEMOC_ERR_JSON;
+    }
+    if (democ_jr_get(&jr, pos, "skipped", &vp) == 1) {
+        democ_jr_fail(&jr, "expected a packet line with one command field, not a skip run");
+        jr.depth = 0;
+        return DEMOC_ERR_JSON;
+    }
+    if (democ_jr_object(&jr, pos, keys, 3) || democ_jr_get(&jr, pos, "set", &vp) != 1 ||
+        democ_jr_u8(&jr, vp, &set) || democ_jr_get(&jr, pos, "fields", &vp) != 1 ||
+        democ_jr_array(&jr, vp, &it)) {
+        return DEMOC_ERR_JSON;
+    }
+    for (;;) {
+        int more = democ_jr_next(&jr, &it, &ep);
+        if (more < 0) {
+            return DEMOC_ERR_JSON;
+        }
+        if (!more) {
+            break;
+        }
+        if (count++ == 0) {
+            field = ep;
+        }
+    }
+    if (count != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap, "expected exactly one command field, got %u", (unsigned)count);
+        }
+        return DEMOC_ERR_JSON;
+    }
+    if (democ_jr_get(&jr, field, "values", &vp) != 1) {
+        if (msg_cap > 0) {
+            snprintf(msg, msg_cap,
+                     "expected a decoded command field (descriptor, name, values), not a raw field");
+        }
+        return DEMOC_ERR_JSON;
+    }
+    if (democ_jr_get(&jr, field, "descriptor", &vp) != 1 || democ_jr_u8(&jr, vp, &descriptor) ||
+        decoded_field(&jr, field, set, descriptor, out)) {
+        return DEMOC_ERR_JSON;
+    }
+    return DEMOC_OK;
+}

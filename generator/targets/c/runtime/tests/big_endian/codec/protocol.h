@@ -39,6 +39,10 @@ static inline int codec_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define CODEC_SAMPLE_STAMP_SIZES {8, 4}
 #define CODEC_SAMPLE_KEY_MAX 16
 
+#define CODEC_SESSION_ACK_DESCRIPTOR 0xF1
+#define CODEC_SESSION_ACK_OK 0u
+#define CODEC_SESSION_MAX_EXPECT 1
+
 #define CODEC_PATH_MAX_DEPTH 2
 #define CODEC_ERROR_MESSAGE_MAX 200
 #define CODEC_NAME_MAX 32

@@ -41,6 +41,10 @@ static inline int codec_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define CODEC_SAMPLE_STAMP_SIZES {0}
 #define CODEC_SAMPLE_KEY_MAX 1
 
+#define CODEC_SESSION_ACK_DESCRIPTOR 0xF1
+#define CODEC_SESSION_ACK_OK 0u
+#define CODEC_SESSION_MAX_EXPECT 1
+
 #define CODEC_PATH_MAX_DEPTH 1
 #define CODEC_ERROR_MESSAGE_MAX 200
 #define CODEC_NAME_MAX 32

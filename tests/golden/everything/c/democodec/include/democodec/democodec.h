@@ -17,6 +17,9 @@
 #include "democodec/sets/receiver_2.h"
 #include "democodec/sets/shared.h"
 #include "democodec/dispatch.h"
+#include "democodec/session.h"
+#include "democodec/link.h"
+#include "democodec/commands.h"
 #include "democodec/json.h"
 
 #endif

@@ -11,6 +11,7 @@
 #define DEMOC_JSON_H
 
 #include "democodec/dispatch.h"
+#include "democodec/session.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -48,6 +49,23 @@ size_t democ_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, cha
  */
 democ_status_t democ_json_encode_line(const char *line, size_t len, uint8_t *out, size_t cap, size_t *out_len,
                                       char *msg, size_t msg_cap);
+
+/**
+ * The session tool's result line of docs/conformance.md section 8 (without newline):
+ * {"line":N,"result":..,"code":C|null,"reply":[...]} and "error" for invalid and refused.
+ * The reply fields are decoded for `device`. Returns the full length, like snprintf.
+ */
+size_t democ_json_result_line(const democ_result_t *result, uint64_t line, democ_device_t device, char *out,
+                              size_t cap);
+
+/**
+ * The command of one session tool input line: a packet line as democ_json_encode_line accepts
+ * it with exactly one decoded field (its "device" picks the layout of a per-device field).
+ * Returns DEMOC_OK, or DEMOC_ERR_JSON with the reason in msg (a field that is not a command is
+ * refused by democ_command_facts, not here).
+ */
+democ_status_t democ_json_command_line(const char *line, size_t len, democ_field_value_t *out, char *msg,
+                                       size_t msg_cap);
 
 #ifdef __cplusplus
 }

@@ -57,6 +57,12 @@ static inline int democ_field_length_adjust(uint8_t set, uint8_t descriptor) {
 /* Largest sample key: field header + data of every shared timestamp field. */
 #define DEMOC_SAMPLE_KEY_MAX 1
 
+/* Command sessions (docs/conformance.md section 8): the ack field's descriptor and the code of
+ * success; the most reply descriptors one command expects. */
+#define DEMOC_SESSION_ACK_DESCRIPTOR 0x80
+#define DEMOC_SESSION_ACK_OK 0u
+#define DEMOC_SESSION_MAX_EXPECT 1
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define DEMOC_PATH_MAX_DEPTH 2
 /** Enough room for any message democ_decode_error_format() can produce. */

@@ -1,0 +1,265 @@
+/* POSIX transports: TCP sockets and termios serial ports. Generated: do not edit. */
+#if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
+#undef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L
+#endif
+#if defined(__APPLE__) && !defined(_DARWIN_C_SOURCE)
+#define _DARWIN_C_SOURCE
+#endif
+#include "codec/posix_transport.h"
+
+#include <assert.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/types.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifndef MSG_NOSIGNAL
+#define MSG_NOSIGNAL 0
+#endif
+
+static codec_status_t fail(codec_posix_t *t, const char *what, const char *detail) {
+    snprintf(t->error, sizeof t->error, "%s%s%s", what, detail ? ": " : "", detail ? detail : "");
+    if (t->fd >= 0) {
+        close(t->fd);
+        t->fd = -1;
+    }
+    return CODEC_ERR_INVALID;
+}
+
+static codec_status_t open_tcp(codec_posix_t *t, const char *address) {
+    char host[256];
+    const char *rest = address + 4;
+    const char *port;
+    struct addrinfo hints;
+    struct addrinfo *res = NULL;
+    struct addrinfo *ai;
+    char what[320];
+    int rc;
+    size_t n;
+    if (rest[0] == '[') {
+        const char *end = strchr(rest, ']');
+        if (end == NULL || end[1] != ':') {
+            port = NULL;
+        } else {
+            n = (size_t)(end - rest - 1);
+            if (n >= sizeof host) {
+                port = NULL;
+            } else {
+                memcpy(host, rest + 1, n);
+                host[n] = '\0';
+                port = end + 2;
+            }
+        }
+    } else {
+        const char *colon = strrchr(rest, ':');
+        n = colon ? (size_t)(colon - rest) : 0;
+        if (colon == NULL || n >= sizeof host || memchr(rest, ':', n) != NULL) {
+            port = NULL;
+        } else {
+            memcpy(host, rest, n);
+            host[n] = '\0';
+            port = colon + 1;
+        }
+    }
+    if (port == NULL || host[0] == '\0' || port[0] == '\0' || strspn(port, "0123456789") != strlen(port) ||
+        atol(port) < 1 || atol(port) > 65535) {
+        snprintf(what, sizeof what, "bad TCP address '%s' (expected tcp:HOST:PORT)", address);
+        return fail(t, what, NULL);
+    }
+    memset(&hints, 0, sizeof hints);
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    snprintf(what, sizeof what, "cannot connect to %s:%s", host, port);
+    rc = getaddrinfo(host, port, &hints, &res);
+    if (rc != 0) {
+        return fail(t, what, gai_strerror(rc));
+    }
+    errno = 0;
+    for (ai = res; ai != NULL; ai = ai->ai_next) {
+        t->fd = socket(ai->ai_family, ai->ai_socktype, ai->ai_protocol);
+        if (t->fd < 0) {
+            continue;
+        }
+        if (connect(t->fd, ai->ai_addr, ai->ai_addrlen) == 0) {
+            break;
+        }
+        close(t->fd);
+        t->fd = -1;
+    }
+    freeaddrinfo(res);
+    if (t->fd < 0) {
+        return fail(t, what, strerror(errno ? errno : ECONNREFUSED));
+    }
+    {
+        int one = 1;
+        setsockopt(t->fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    }
+    t->socket = true;
+    return CODEC_OK;
+}
+
+static speed_t baud_constant(unsigned long baud, bool *ok) {
+    *ok = true;
+    switch (baud) {
+    case 9600:
+        return B9600;
+    case 19200:
+        return B19200;
+    case 38400:
+        return B38400;
+    case 57600:
+        return B57600;
+    case 115200:
+        return B115200;
+    case 230400:
+        return B230400;
+#ifdef B460800
+    case 460800:
+        return B460800;
+#endif
+#ifdef B921600
+    case 921600:
+        return B921600;
+#endif
+    default:
+        *ok = false;
+        return B0;
+    }
+}
+
+static codec_status_t open_serial(codec_posix_t *t, const char *path, unsigned long baud) {
+    struct termios tio;
+    bool ok;
+    speed_t speed = baud_constant(baud, &ok);
+    char what[320];
+    snprintf(what, sizeof what, "cannot open %s at %lu baud", path, baud);
+    if (!ok) {
+        char why[64];
+        snprintf(why, sizeof why, "unsupported baud rate %lu", baud);
+        return fail(t, what, why);
+    }
+    t->fd = open(path, O_RDWR | O_NOCTTY);
+    if (t->fd < 0) {
+        return fail(t, what, strerror(errno));
+    }
+    if (tcgetattr(t->fd, &tio) != 0) {
+        return fail(t, what, strerror(errno));
+    }
+    tio.c_iflag &=
+        (tcflag_t) ~(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL | IXON | IXOFF | IXANY);
+    tio.c_oflag &= (tcflag_t)~OPOST;
+    tio.c_lflag &= (tcflag_t) ~(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
+    tio.c_cflag &= (tcflag_t) ~(CSIZE | PARENB | CSTOPB);
+    tio.c_cflag |= (tcflag_t)(CS8 | CREAD | CLOCAL);
+    tio.c_cc[VMIN] = 0;
+    tio.c_cc[VTIME] = 0;
+    if (cfsetispeed(&tio, speed) != 0 || cfsetospeed(&tio, speed) != 0 ||
+        tcsetattr(t->fd, TCSANOW, &tio) != 0) {
+        return fail(t, what, strerror(errno));
+    }
+    t->socket = false;
+    return CODEC_OK;
+}
+
+codec_status_t codec_posix_open(codec_posix_t *posix, const char *address, unsigned long baud) {
+    assert(posix != NULL);
+    assert(address != NULL);
+    memset(posix, 0, sizeof *posix);
+    posix->fd = -1;
+    if (address[0] == '\0') {
+        return fail(posix, "empty address (expected tcp:HOST:PORT or a serial port path)", NULL);
+    }
+    if (strncmp(address, "tcp:", 4) == 0) {
+        return open_tcp(posix, address);
+    }
+    return open_serial(posix, address, baud);
+}
+
+static int posix_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
+    codec_posix_t *t = (codec_posix_t *)ctx;
+    struct pollfd p;
+    ssize_t n;
+    int rc;
+    p.fd = t->fd;
+    p.events = POLLIN;
+    p.revents = 0;
+    rc = poll(&p, 1, timeout_ms > 0x7fffffffu ? 0x7fffffff : (int)timeout_ms);
+    if (rc < 0) {
+        if (errno == EINTR) {
+            return 0;
+        }
+        snprintf(t->error, sizeof t->error, "receive failed: %s", strerror(errno));
+        return -1;
+    }
+    if (rc == 0) {
+        return 0;
+    }
+    n = t->socket ? recv(t->fd, buf, cap, 0) : read(t->fd, buf, cap);
+    if (n < 0) {
+        if (errno == EINTR || errno == EAGAIN) {
+            return 0;
+        }
+        snprintf(t->error, sizeof t->error, "receive failed: %s", strerror(errno));
+        return -1;
+    }
+    if (n == 0) {
+        if (!t->socket) {
+            return 0;
+        }
+        snprintf(t->error, sizeof t->error, "connection closed by the device");
+        return -1;
+    }
+    return (int)n;
+}
+
+static int posix_write(void *ctx, const uint8_t *data, size_t len) {
+    codec_posix_t *t = (codec_posix_t *)ctx;
+    while (len > 0) {
+        ssize_t n = t->socket ? send(t->fd, data, len, MSG_NOSIGNAL) : write(t->fd, data, len);
+        if (n < 0) {
+            if (errno == EINTR) {
+                continue;
+            }
+            snprintf(t->error, sizeof t->error, "send failed: %s", strerror(errno));
+            return -1;
+        }
+        data += n;
+        len -= (size_t)n;
+    }
+    return 0;
+}
+
+static uint64_t posix_now_ms(void *ctx) {
+    struct timespec ts;
+    (void)ctx;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000u + (uint64_t)ts.tv_nsec / 1000000u;
+}
+
+void codec_posix_transport(codec_posix_t *posix, codec_transport_t *out) {
+    assert(posix != NULL);
+    assert(out != NULL);
+    out->ctx = posix;
+    out->read = posix_read;
+    out->write = posix_write;
+    out->now_ms = posix_now_ms;
+}
+
+void codec_posix_close(codec_posix_t *posix) {
+    assert(posix != NULL);
+    if (posix->fd >= 0) {
+        close(posix->fd);
+        posix->fd = -1;
+    }
+}

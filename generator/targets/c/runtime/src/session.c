@@ -1,0 +1,575 @@
+/* Command sessions of docs/conformance.md section 8 (the sans-I/O core). No stdio, no heap.
+ * Generated: do not edit. */
+#include "codec/session.h"
+
+#include <assert.h>
+#include <string.h>
+
+#include "codec/field_iter.h"
+
+const char *codec_result_kind_name(codec_result_kind_t kind) {
+    switch (kind) {
+    case CODEC_RESULT_ACK:
+        return "ack";
+    case CODEC_RESULT_NACK:
+        return "nack";
+    case CODEC_RESULT_TIMEOUT:
+        return "timeout";
+    case CODEC_RESULT_INVALID:
+        return "invalid";
+    case CODEC_RESULT_SENT:
+        return "sent";
+    case CODEC_RESULT_REFUSED:
+        return "refused";
+    case CODEC_RESULT_TRANSPORT:
+        return "transport";
+    }
+    return "unknown";
+}
+
+/* ------------------------------------------------------------------ text without stdio */
+typedef struct {
+    char *buf;
+    size_t cap;
+    size_t len;
+} text_t;
+
+static void text_init(text_t *t, char *buf, size_t cap) {
+    t->buf = buf;
+    t->cap = cap;
+    t->len = 0;
+    if (cap > 0) {
+        buf[0] = '\0';
+    }
+}
+
+static void text_add(text_t *t, const char *s) {
+    size_t n = strlen(s);
+    if (t->len + 1 < t->cap) {
+        size_t room = t->cap - t->len - 1;
+        size_t k = n < room ? n : room;
+        memcpy(t->buf + t->len, s, k);
+        t->buf[t->len + k] = '\0';
+    }
+    t->len += n;
+}
+
+static void text_uint(text_t *t, uint64_t v) {
+    char digits[21];
+    size_t i = sizeof digits - 1;
+    digits[i] = '\0';
+    do {
+        digits[--i] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    text_add(t, digits + i);
+}
+
+/* ------------------------------------------------------------------ results */
+void codec_result_reply_iter(const codec_result_t *result, codec_field_iter_t *it) {
+    assert(result != NULL);
+    assert(it != NULL);
+    if (result->packet == NULL || result->reply_end <= result->reply_begin) {
+        codec_field_iter_init(it, result->set, NULL, 0);
+        return;
+    }
+    codec_field_iter_init(it, result->set, codec_packet_payload(result->packet) + result->reply_begin,
+                          result->reply_end - result->reply_begin);
+}
+
+bool codec_result_reply_entry(const codec_result_t *result, codec_field_entry_t *entry) {
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    bool have_first = false;
+    size_t i;
+    assert(entry != NULL);
+    codec_result_reply_iter(result, &it);
+    while (codec_field_iter_next(&it, &e)) {
+        if (e.kind != CODEC_ENTRY_FIELD) {
+            continue;
+        }
+        for (i = 0; i < result->expect_count; i++) {
+            if (result->expect[i] == e.descriptor) {
+                *entry = e;
+                return true;
+            }
+        }
+        if (!have_first) {
+            *entry = e;
+            have_first = true;
+        }
+    }
+    return have_first;
+}
+
+/* ------------------------------------------------------------------ configuration */
+void codec_session_config_init(codec_session_config_t *config) {
+    assert(config != NULL);
+    memset(config, 0, sizeof *config);
+    config->device = CODEC_DEVICE_ANY;
+    config->timeout_ms = CODEC_SESSION_DEFAULT_TIMEOUT_MS;
+    config->inter_packet_timeout_ms = CODEC_SESSION_DEFAULT_INTER_PACKET_TIMEOUT_MS;
+    config->max_pending = CODEC_SESSION_MAX_PENDING;
+    config->check_device = true;
+}
+
+codec_status_t codec_session_init(codec_session_t *session, const codec_session_config_t *config) {
+    assert(session != NULL);
+    assert(config != NULL);
+    memset(session, 0, sizeof *session);
+    if (config->max_pending < 1 || config->max_pending > CODEC_SESSION_MAX_PENDING) {
+        return CODEC_ERR_INVALID;
+    }
+    if (config->device != CODEC_DEVICE_ANY && codec_device_id(config->device) == NULL) {
+        return CODEC_ERR_INVALID;
+    }
+    session->config = *config;
+    codec_parser_init(&session->parser);
+    return CODEC_OK;
+}
+
+void codec_session_on_packet(codec_session_t *session, codec_packet_handler_fn fn, void *ctx) {
+    assert(session != NULL);
+    session->packet_fn = fn;
+    session->packet_ctx = ctx;
+}
+
+codec_status_t codec_session_on_field(codec_session_t *session, uint8_t set, uint8_t descriptor,
+                                      codec_field_handler_fn fn, void *ctx) {
+    codec_field_handler_t *h;
+    assert(session != NULL);
+    assert(fn != NULL);
+    if (session->field_count >= CODEC_SESSION_MAX_FIELD_HANDLERS) {
+        return CODEC_ERR_BUFFER;
+    }
+    h = &session->fields[session->field_count++];
+    h->set = set;
+    h->descriptor = descriptor;
+    h->fn = fn;
+    h->ctx = ctx;
+    return CODEC_OK;
+}
+
+void codec_start_options_init(codec_start_options_t *options) {
+    assert(options != NULL);
+    options->timeout_ms = -1;
+    options->check_device = -1;
+    options->tag = 0;
+}
+
+size_t codec_session_pending(const codec_session_t *session) {
+    assert(session != NULL);
+    return session->count;
+}
+
+/* ------------------------------------------------------------------ start */
+static void result_init(codec_result_t *r, codec_result_kind_t kind, const codec_command_facts_t *facts,
+                        uintptr_t tag) {
+    memset(r, 0, sizeof *r);
+    r->kind = kind;
+    r->tag = tag;
+    r->command = facts->id;
+    r->set = facts->set;
+    r->descriptor = facts->descriptor;
+    memcpy(r->expect, facts->expect, sizeof r->expect);
+    r->expect_count = facts->expect_count;
+    r->error = "";
+}
+
+static uint32_t device_bit(codec_device_t device) {
+    unsigned d = (unsigned)device;
+    return d < 32u ? (uint32_t)1u << d : 0u;
+}
+
+/* Why the session's device does not support the command (section 8, start step 1): writes the
+ * message and returns true, or returns false. */
+static bool support_error(const codec_command_facts_t *f, codec_device_t device, char *buf, size_t cap) {
+    const char *name = codec_layout_info(f->id)->name;
+    const char *dev = codec_device_id(device);
+    text_t t;
+    text_init(&t, buf, cap);
+    if ((f->field_devices & device_bit(device)) == 0) {
+        text_add(&t, name);
+        text_add(&t, " is not supported by ");
+        text_add(&t, dev);
+        return true;
+    }
+    if (f->layout_device != CODEC_DEVICE_ANY && f->layout_device != device) {
+        text_add(&t, name);
+        text_add(&t, ": this layout is for ");
+        text_add(&t, codec_device_id(f->layout_device));
+        text_add(&t, ", not ");
+        text_add(&t, dev);
+        return true;
+    }
+    if (f->function >= 0 && (!f->function_listed || (f->function_devices & device_bit(device)) == 0)) {
+        const char *fn = codec_function_name(f->function);
+        text_add(&t, "function ");
+        if (fn) {
+            text_add(&t, fn);
+        } else {
+            text_uint(&t, (uint64_t)f->function);
+        }
+        text_add(&t, " of ");
+        text_add(&t, name);
+        text_add(&t, " is not supported by ");
+        text_add(&t, dev);
+        return true;
+    }
+    return false;
+}
+
+codec_status_t codec_session_start(codec_session_t *session, const codec_field_value_t *command, uint64_t now,
+                                   const codec_start_options_t *options, uint8_t *packet, size_t cap,
+                                   codec_started_t *out) {
+    codec_command_facts_t facts;
+    codec_start_options_t opt;
+    codec_packet_builder_t b;
+    uint8_t data[CODEC_MAX_FIELD_DATA];
+    size_t n = 0;
+    codec_status_t st;
+    bool check;
+    uint64_t base;
+    codec_pending_t *p;
+    assert(session != NULL);
+    assert(command != NULL);
+    assert(packet != NULL || cap == 0);
+    assert(out != NULL);
+    memset(out, 0, sizeof *out);
+    if (options) {
+        opt = *options;
+    } else {
+        codec_start_options_init(&opt);
+    }
+    if (!codec_command_facts(command, &facts)) {
+        return CODEC_ERR_INVALID;
+    }
+    check = opt.check_device < 0 ? session->config.check_device : opt.check_device > 0;
+    base = opt.timeout_ms < 0 ? session->config.timeout_ms : (uint64_t)opt.timeout_ms;
+    if (check && session->config.device != CODEC_DEVICE_ANY &&
+        support_error(&facts, session->config.device, session->error, sizeof session->error)) {
+        result_init(&out->result, CODEC_RESULT_REFUSED, &facts, opt.tag);
+        out->result.error = session->error;
+        out->done = true;
+        out->deadline = now;
+        return CODEC_OK;
+    }
+    st = codec_encode_field(command, data, sizeof data, &n);
+    if (st != CODEC_OK) {
+        return CODEC_ERR_INVALID;
+    }
+    codec_packet_begin(&b, packet, cap, facts.set);
+    codec_packet_add_field(&b, facts.descriptor, data, n);
+    st = codec_packet_finish(&b, &out->packet_len);
+    if (st != CODEC_OK) {
+        out->packet_len = 0;
+        return st == CODEC_ERR_BUFFER ? CODEC_ERR_BUFFER : CODEC_ERR_INVALID;
+    }
+    out->deadline = now + base + facts.allowance_ms;
+    if (facts.suppressed) {
+        result_init(&out->result, CODEC_RESULT_SENT, &facts, opt.tag);
+        out->done = true;
+        return CODEC_OK;
+    }
+    if (session->count >= session->config.max_pending) {
+        text_t t;
+        text_init(&t, session->error, sizeof session->error);
+        text_uint(&t, session->config.max_pending);
+        text_add(&t, " commands already pending");
+        result_init(&out->result, CODEC_RESULT_REFUSED, &facts, opt.tag);
+        out->result.error = session->error;
+        out->packet_len = 0;
+        out->done = true;
+        return CODEC_OK;
+    }
+    p = &session->pending[session->count++];
+    p->used = true;
+    p->set = facts.set;
+    p->descriptor = facts.descriptor;
+    p->command = facts.id;
+    p->deadline = out->deadline;
+    p->tag = opt.tag;
+    memcpy(p->expect, facts.expect, sizeof p->expect);
+    p->expect_count = facts.expect_count;
+    return CODEC_OK;
+}
+
+/* ------------------------------------------------------------------ input */
+static void emit(codec_session_t *s, const codec_session_event_t *ev) {
+    if (s->config.on_event) {
+        s->config.on_event(s->config.ctx, ev);
+    }
+}
+
+static void remove_pending(codec_session_t *s, size_t i) {
+    memmove(&s->pending[i], &s->pending[i + 1], (s->count - i - 1) * sizeof s->pending[0]);
+    s->count--;
+    memset(&s->pending[s->count], 0, sizeof s->pending[0]);
+}
+
+static void pending_result(const codec_pending_t *p, codec_result_kind_t kind, codec_result_t *r) {
+    memset(r, 0, sizeof *r);
+    r->kind = kind;
+    r->tag = p->tag;
+    r->command = p->command;
+    r->set = p->set;
+    r->descriptor = p->descriptor;
+    memcpy(r->expect, p->expect, sizeof r->expect);
+    r->expect_count = p->expect_count;
+    r->error = "";
+}
+
+static void expire(codec_session_t *s, uint64_t now) {
+    size_t i = 0;
+    while (i < s->count) {
+        if (now >= s->pending[i].deadline) {
+            codec_result_t r;
+            codec_session_event_t ev;
+            codec_pending_t p = s->pending[i];
+            remove_pending(s, i);
+            pending_result(&p, CODEC_RESULT_TIMEOUT, &r);
+            ev.kind = CODEC_SESSION_RESULT;
+            ev.result = &r;
+            ev.stream = NULL;
+            emit(s, &ev);
+        } else {
+            i++;
+        }
+    }
+}
+
+/* The result of an ack (code) whose reply is payload[begin, end) (section 8, feed step 4). */
+static void complete(codec_session_t *s, const codec_pending_t *p, const codec_event_t *pkt, uint32_t code,
+                     size_t begin, size_t end) {
+    codec_result_t r;
+    codec_session_event_t ev;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    size_t i;
+    pending_result(p, CODEC_RESULT_ACK, &r);
+    r.has_code = true;
+    r.code = code;
+    r.packet = pkt->packet;
+    r.packet_len = (size_t)pkt->length;
+    r.offset = pkt->offset;
+    r.reply_begin = begin;
+    r.reply_end = end;
+    if (code != CODEC_SESSION_ACK_OK) {
+        r.kind = CODEC_RESULT_NACK;
+    } else {
+        bool found = p->expect_count == 0;
+        codec_result_reply_iter(&r, &it);
+        while (codec_field_iter_next(&it, &e)) {
+            if (e.kind == CODEC_ENTRY_TRAILING) {
+                codec_trailing_format(&e, s->error, sizeof s->error);
+                r.kind = CODEC_RESULT_INVALID;
+                break;
+            } else {
+                codec_field_value_t value;
+                codec_decode_error_t err;
+                codec_status_t st = codec_decode_field(p->set, e.descriptor, e.data, e.length,
+                                                       s->config.device, &value, &err);
+                if (st != CODEC_OK) {
+                    text_t t;
+                    if (st == CODEC_ERR_DECODE) {
+                        codec_decode_error_format(&err, s->error, sizeof s->error);
+                    } else {
+                        text_init(&t, s->error, sizeof s->error);
+                        text_add(&t, codec_status_text(st));
+                    }
+                    r.kind = CODEC_RESULT_INVALID;
+                    break;
+                }
+                for (i = 0; i < p->expect_count; i++) {
+                    found = found || p->expect[i] == e.descriptor;
+                }
+            }
+        }
+        if (r.kind == CODEC_RESULT_ACK && !found) {
+            text_t t;
+            text_init(&t, s->error, sizeof s->error);
+            text_add(&t, "missing reply field ");
+            text_uint(&t, p->expect[0]);
+            r.kind = CODEC_RESULT_INVALID;
+        }
+        if (r.kind == CODEC_RESULT_INVALID) {
+            r.error = s->error;
+        }
+    }
+    ev.kind = CODEC_SESSION_RESULT;
+    ev.result = &r;
+    ev.stream = NULL;
+    emit(s, &ev);
+}
+
+/* Matches the ack fields of a packet of a set with a pending command; true when it answered at
+ * least one (then it is a reply, not data). */
+static bool match(codec_session_t *s, const codec_event_t *pkt) {
+    const uint8_t set = codec_packet_set(pkt->packet);
+    const uint8_t *payload = codec_packet_payload(pkt->packet);
+    const size_t len = codec_packet_payload_length(pkt->packet);
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    bool answered = false;
+    bool have_ack = false;
+    uint8_t echo = 0;
+    uint32_t code = 0;
+    size_t begin = 0;
+    codec_field_iter_init(&it, set, payload, len);
+    for (;;) {
+        bool more = codec_field_iter_next(&it, &e);
+        bool boundary = !more;
+        bool is_ack = false;
+        uint8_t next_echo = 0;
+        uint32_t next_code = 0;
+        if (more && e.kind == CODEC_ENTRY_FIELD && e.descriptor == CODEC_SESSION_ACK_DESCRIPTOR) {
+            int ack =
+                codec_session_ack_decode(set, e.data, e.length, s->config.device, &next_echo, &next_code);
+            /* an ack field that does not decode (raw) also ends the reply of the ack before it */
+            is_ack = ack > 0;
+            boundary = ack >= 0;
+        }
+        if (boundary && have_ack) {
+            size_t end = more ? e.offset : len;
+            size_t i;
+            for (i = 0; i < s->count; i++) {
+                if (s->pending[i].set == set && s->pending[i].descriptor == echo) {
+                    codec_pending_t p = s->pending[i];
+                    remove_pending(s, i);
+                    complete(s, &p, pkt, code, begin, end);
+                    answered = true;
+                    break;
+                }
+            }
+            have_ack = false;
+        }
+        if (!more) {
+            return answered;
+        }
+        if (is_ack) {
+            have_ack = true;
+            echo = next_echo;
+            code = next_code;
+            begin = it.pos;
+        }
+    }
+}
+
+static void route(codec_session_t *s, const codec_event_t *pkt) {
+    codec_session_event_t ev;
+    size_t i;
+    const uint8_t set = codec_packet_set(pkt->packet);
+    for (i = 0; i < s->count; i++) {
+        if (s->pending[i].set == set) {
+            if (match(s, pkt)) {
+                return;
+            }
+            break;
+        }
+    }
+    ev.kind = CODEC_SESSION_PACKET;
+    ev.result = NULL;
+    ev.stream = pkt;
+    emit(s, &ev);
+    if (s->packet_fn) {
+        s->packet_fn(s->packet_ctx, pkt);
+    }
+    if (s->field_count > 0) {
+        codec_field_iter_t it;
+        codec_field_entry_t e;
+        codec_field_iter_init(&it, set, codec_packet_payload(pkt->packet),
+                              codec_packet_payload_length(pkt->packet));
+        while (codec_field_iter_next(&it, &e)) {
+            codec_field_value_t value;
+            bool decoded = false;
+            if (e.kind != CODEC_ENTRY_FIELD) {
+                continue;
+            }
+            for (i = 0; i < s->field_count; i++) {
+                const codec_field_handler_t *h = &s->fields[i];
+                if (h->set != set || h->descriptor != e.descriptor) {
+                    continue;
+                }
+                if (!decoded) {
+                    if (codec_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value,
+                                           NULL) != CODEC_OK) {
+                        break;
+                    }
+                    decoded = true;
+                }
+                h->fn(h->ctx, &value, pkt);
+            }
+        }
+    }
+}
+
+static void on_stream(void *ctx, const codec_event_t *event) {
+    codec_session_t *s = (codec_session_t *)ctx;
+    if (event->kind == CODEC_EVENT_SKIP) {
+        codec_session_event_t ev;
+        ev.kind = CODEC_SESSION_SKIP;
+        ev.result = NULL;
+        ev.stream = event;
+        emit(s, &ev);
+        return;
+    }
+    route(s, event);
+}
+
+void codec_session_feed(codec_session_t *session, const uint8_t *data, size_t len, uint64_t now) {
+    codec_parser_t *parser;
+    assert(session != NULL);
+    assert(data != NULL || len == 0);
+    parser = &session->parser;
+    session->now = now;
+    expire(session, now);
+    /* The timed rule runs before the new bytes are added (section 8, feed step 2). */
+    while (parser->used > 0 && session->waiting && session->wait_at == parser->base &&
+           now - session->wait_since > session->config.inter_packet_timeout_ms) {
+        codec_parser_drop_first(parser, on_stream, session);
+    }
+    if (len > 0) {
+        codec_parser_feed(parser, data, len, on_stream, session);
+    }
+    if (parser->used == 0) {
+        session->waiting = false;
+    } else if (!session->waiting || session->wait_at != parser->base) {
+        session->waiting = true;
+        session->wait_at = parser->base;
+        session->wait_since = now;
+    }
+}
+
+void codec_session_poll(codec_session_t *session, uint64_t now) {
+    codec_session_feed(session, NULL, 0, now);
+}
+
+void codec_session_close(codec_session_t *session, uint64_t now) {
+    assert(session != NULL);
+    codec_session_poll(session, now);
+    codec_parser_flush(&session->parser, on_stream, session);
+    session->waiting = false;
+}
+
+bool codec_session_next_deadline(const codec_session_t *session, uint64_t *deadline) {
+    bool any = false;
+    uint64_t best = 0;
+    size_t i;
+    assert(session != NULL);
+    assert(deadline != NULL);
+    for (i = 0; i < session->count; i++) {
+        if (!any || session->pending[i].deadline < best) {
+            best = session->pending[i].deadline;
+            any = true;
+        }
+    }
+    if (session->parser.used > 0 && session->waiting) {
+        uint64_t w = session->wait_since + session->config.inter_packet_timeout_ms + 1u;
+        if (!any || w < best) {
+            best = w;
+            any = true;
+        }
+    }
+    *deadline = best;
+    return any;
+}

@@ -1,0 +1,310 @@
+/* codec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]: the session
+ * conformance tool of docs/conformance.md section 8. Reads command packets as canonical JSON lines
+ * on stdin, runs them in order over the connection and prints one result line per command; every
+ * other packet received (and every skip run) is printed as its canonical line, in arrival order.
+ * Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
+ * skipped), 2 for usage or connection errors. Generated: do not edit. */
+#if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
+#undef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L
+#endif
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "codec/json.h"
+#include "codec/link.h"
+#include "codec/posix_transport.h"
+
+#define PROG "codec-session"
+#define USAGE "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]"
+
+typedef struct {
+    codec_device_t device;
+    uint8_t *received; /* every byte received (skip lines print theirs) */
+    size_t received_len;
+    size_t received_cap;
+    int failed;
+} tool_t;
+
+static char g_line[64 * 1024];
+
+static void print_line(size_t n) {
+    if (n >= sizeof g_line) {
+        n = sizeof g_line - 1;
+    }
+    fwrite(g_line, 1, n, stdout);
+    fputc('\n', stdout);
+    fflush(stdout);
+}
+
+static void on_event(void *ctx, const codec_session_event_t *ev) {
+    tool_t *tool = (tool_t *)ctx;
+    size_t n;
+    if (ev->kind == CODEC_SESSION_RESULT) {
+        n = codec_json_result_line(ev->result, ev->result->tag, tool->device, g_line, sizeof g_line);
+    } else if (ev->kind == CODEC_SESSION_PACKET) {
+        n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset,
+                                   tool->device, g_line, sizeof g_line);
+    } else {
+        uint64_t off = ev->stream->offset;
+        uint64_t len = ev->stream->length;
+        const uint8_t *bytes = off + len <= tool->received_len ? tool->received + off : NULL;
+        n = codec_json_skip_line(off, bytes, bytes ? (size_t)len : 0, g_line, sizeof g_line);
+    }
+    print_line(n);
+}
+
+/* The transport, recording what it reads (skip lines print the bytes). */
+typedef struct {
+    codec_transport_t inner;
+    tool_t *tool;
+} recorder_t;
+
+static int rec_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
+    recorder_t *r = (recorder_t *)ctx;
+    tool_t *t = r->tool;
+    int n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
+    if (n > 0) {
+        if (t->received_len + (size_t)n > t->received_cap) {
+            size_t cap2 = (t->received_cap + (size_t)n) * 2;
+            uint8_t *p = (uint8_t *)realloc(t->received, cap2);
+            if (p == NULL) {
+                fprintf(stderr, PROG ": out of memory\n");
+                exit(2);
+            }
+            t->received = p;
+            t->received_cap = cap2;
+        }
+        memcpy(t->received + t->received_len, buf, (size_t)n);
+        t->received_len += (size_t)n;
+    }
+    return n;
+}
+
+static int rec_write(void *ctx, const uint8_t *data, size_t len) {
+    recorder_t *r = (recorder_t *)ctx;
+    return r->inner.write(r->inner.ctx, data, len);
+}
+
+static uint64_t rec_now(void *ctx) {
+    recorder_t *r = (recorder_t *)ctx;
+    return r->inner.now_ms(r->inner.ctx);
+}
+
+static int usage_error(const char *fmt, const char *arg) {
+    fprintf(stderr, PROG ": ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, " (" USAGE ")\n");
+    return 2;
+}
+
+static int int_option(const char *name, const char *text, unsigned long low, unsigned long *out) {
+    char *end;
+    if (text[0] < '0' || text[0] > '9' || strspn(text, "0123456789") != strlen(text)) {
+        fprintf(stderr, PROG ": %s needs an integer >= %lu, not '%s' (" USAGE ")\n", name, low, text);
+        return -1;
+    }
+    *out = strtoul(text, &end, 10);
+    if (*out < low || *out > 0xffffffffUL) {
+        fprintf(stderr, PROG ": %s needs an integer >= %lu, not '%s' (" USAGE ")\n", name, low, text);
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads one line of any length (without its newline) into *buf; false at the end of input. */
+static bool read_line(char **buf, size_t *cap, size_t *len) {
+    int c;
+    *len = 0;
+    c = getchar();
+    if (c == EOF) {
+        return false;
+    }
+    while (c != EOF && c != '\n') {
+        if (*len + 1 >= *cap) {
+            size_t cap2 = *cap ? *cap * 2 : 4096;
+            char *p = (char *)realloc(*buf, cap2);
+            if (p == NULL) {
+                fprintf(stderr, PROG ": out of memory\n");
+                exit(2);
+            }
+            *buf = p;
+            *cap = cap2;
+        }
+        (*buf)[(*len)++] = (char)c;
+        c = getchar();
+    }
+    if (*buf) {
+        (*buf)[*len] = '\0';
+    }
+    return true;
+}
+
+static bool blank(const char *s, size_t n) {
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (s[i] != ' ' && s[i] != '\t' && s[i] != '\r' && s[i] != '\f' && s[i] != '\v') {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Strict UTF-8 (no overlong forms, surrogates or values past U+10FFFF). */
+static bool utf8_ok(const unsigned char *s, size_t n) {
+    size_t i = 0;
+    while (i < n) {
+        unsigned c = s[i];
+        size_t k;
+        unsigned v;
+        unsigned min;
+        if (c < 0x80) {
+            i++;
+            continue;
+        }
+        if (c >= 0xC2 && c <= 0xDF) {
+            k = 1, v = c & 0x1Fu, min = 0x80;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            k = 2, v = c & 0x0Fu, min = 0x800;
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            k = 3, v = c & 0x07u, min = 0x10000;
+        } else {
+            return false;
+        }
+        for (size_t j = 1; j <= k; j++) {
+            if (i + j >= n || (s[i + j] & 0xC0u) != 0x80u) {
+                return false;
+            }
+            v = (v << 6) | (s[i + j] & 0x3Fu);
+        }
+        if (v < min || v > 0x10FFFF || (v >= 0xD800 && v <= 0xDFFF)) {
+            return false;
+        }
+        i += k + 1;
+    }
+    return true;
+}
+
+int main(int argc, char **argv) {
+    const char *connect = NULL;
+    unsigned long timeout_ms = CODEC_SESSION_DEFAULT_TIMEOUT_MS;
+    unsigned long baud = 115200;
+    codec_device_t device = CODEC_DEVICE_ANY;
+    codec_posix_t posix;
+    recorder_t rec;
+    codec_transport_t transport;
+    codec_session_config_t config;
+    static codec_link_t link;
+    static tool_t tool;
+    char *line = NULL;
+    size_t cap = 0;
+    size_t len;
+    unsigned long number = 0;
+    int status = 0;
+    int i;
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
+            printf("%s\n", USAGE);
+            return 0;
+        }
+    }
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *eq = strchr(a, '=');
+        char name[32];
+        const char *value;
+        size_t n = eq ? (size_t)(eq - a) : strlen(a);
+        if (n >= sizeof name) {
+            return usage_error("unknown argument '%s'", a);
+        }
+        memcpy(name, a, n);
+        name[n] = '\0';
+        if (strcmp(name, "--connect") != 0 && strcmp(name, "--timeout-ms") != 0 &&
+            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0) {
+            return usage_error("unknown argument '%s'", a);
+        }
+        if (eq) {
+            value = eq + 1;
+        } else if (i + 1 < argc) {
+            value = argv[++i];
+        } else {
+            return usage_error("%s needs a value", name);
+        }
+        if (strcmp(name, "--connect") == 0) {
+            connect = value;
+        } else if (strcmp(name, "--timeout-ms") == 0) {
+            if (int_option(name, value, 0, &timeout_ms)) {
+                return 2;
+            }
+        } else if (strcmp(name, "--baud") == 0) {
+            if (int_option(name, value, 1, &baud)) {
+                return 2;
+            }
+        } else if (!codec_device_from_id(value, &device) || device == CODEC_DEVICE_ANY) {
+            return usage_error("unknown device '%s'", value);
+        }
+    }
+    if (connect == NULL) {
+        return usage_error("%s", "--connect ADDRESS is required");
+    }
+    if (codec_posix_open(&posix, connect, baud) != CODEC_OK) {
+        fprintf(stderr, PROG ": %s\n", posix.error);
+        return 2;
+    }
+    tool.device = device;
+    codec_posix_transport(&posix, &rec.inner);
+    rec.tool = &tool;
+    transport.ctx = &rec;
+    transport.read = rec_read;
+    transport.write = rec_write;
+    transport.now_ms = rec_now;
+    codec_session_config_init(&config);
+    config.device = device;
+    config.timeout_ms = (uint32_t)timeout_ms;
+    config.on_event = on_event;
+    config.ctx = &tool;
+    if (codec_link_init(&link, &transport, &config) != CODEC_OK) {
+        fprintf(stderr, PROG ": cannot start the session\n");
+        return 2;
+    }
+    while (read_line(&line, &cap, &len)) {
+        codec_field_value_t command;
+        codec_command_facts_t facts;
+        codec_start_options_t opt;
+        char msg[CODEC_ERROR_MESSAGE_MAX + 200];
+        number++;
+        if (!utf8_ok((const unsigned char *)line, len)) {
+            fprintf(stderr, PROG ": line %lu: not UTF-8\n", number);
+            status = 1;
+            continue;
+        }
+        if (line == NULL || blank(line, len)) {
+            continue;
+        }
+        if (codec_json_command_line(line, len, &command, msg, sizeof msg) != CODEC_OK) {
+            fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
+            status = 1;
+            continue;
+        }
+        if (!codec_command_facts(&command, &facts)) {
+            const codec_layout_info_t *info = codec_layout_info(command.id);
+            fprintf(stderr, PROG ": line %lu: %s (descriptor %u) is not a command\n", number,
+                    info ? info->name : "?", info ? (unsigned)info->descriptor : 0u);
+            status = 1;
+            continue;
+        }
+        codec_start_options_init(&opt);
+        opt.tag = number;
+        if (codec_link_run(&link, &command, &opt, NULL) == CODEC_RESULT_TRANSPORT) {
+            fprintf(stderr, PROG ": %s\n", posix.error);
+            codec_posix_close(&posix);
+            return 2;
+        }
+    }
+    codec_link_close(&link);
+    codec_posix_close(&posix);
+    free(line);
+    free(tool.received);
+    return status;
+}
