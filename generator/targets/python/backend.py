@@ -1045,7 +1045,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
     if m.function_enum:
         fvalues = {v["name"]: v["value"] for v in m.types[m.function_enum]["values"]}
     code_values = {}
-    if proto["session"]:
+    if proto["session"] and proto["session"]["code_enum"]:
         code_values = {v["name"]: v["value"] for v in m.types[proto["session"]["code_enum"]]["values"]}
     ok = proto["session"]["ok"] if proto["session"] else 0
     fallback = next((v for v in code_values.values() if v != ok), 1)

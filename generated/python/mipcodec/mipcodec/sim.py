@@ -249,7 +249,7 @@ class Simulator:
             self.current.pop(key, None)
 
     def _response(self, command: Field, key: Tuple[Any, ...], fn: Optional[int]) -> Optional[Field]:
-        rows = _meta.COMMANDS.get((command.SET, command.DESCRIPTOR), ())
+        rows = _meta.COMMANDS.get((int(command.SET or 0), command.DESCRIPTOR), ())
         row = next((r for r in rows if r[0] is type(command)), None)
         if row is None:
             return None
@@ -264,7 +264,7 @@ class Simulator:
         return None
 
     def _build_response(self, command: Field, key: Tuple[Any, ...], descriptor: int) -> Optional[Field]:
-        classes = registry.FIELDS.get((command.SET, descriptor), ())
+        classes = registry.FIELDS.get((int(command.SET or 0), descriptor), ())
         cls = next((c for c in classes if c.DEVICE in (None, self.device)), classes[0] if classes else None)
         if cls is None:
             return None
@@ -288,7 +288,7 @@ class Simulator:
             value = _complete(cls())
         if stored is None:
             _identify(value, _sim.DEVICE_TITLES.get(self.device, self.device))
-        return value
+        return value  # type: ignore[no-any-return]
 
     def _reply(self, set_id: int, descriptor: int, code: int, replies: List[Field]) -> bytes:
         ack_cls = registry.RESERVED["command"][_meta.ACK_DESCRIPTOR][0]
@@ -342,7 +342,7 @@ class Simulator:
             if en is None:
                 continue
             set_id = _set_of(en[0], value)
-            if set_id is not None and getattr(value, en[1], 0):
+            if set_id is not None and bool(getattr(value, en[1], False)):
                 enabled.add(set_id)
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
