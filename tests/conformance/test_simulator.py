@@ -116,6 +116,39 @@ def _perturbed(value):
     return value
 
 
+def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
+    """The factory values of the read reply's plain parameters (by name): the spec's default of the
+    command parameter of that name where the manual states one, else zero (an enum without a zero
+    value: its first value)."""
+    types = {t["name"]: t for t in protocol["types"]}
+    defaults = {q["name"]: q["default"]["value"] for q in variant["params"] if q.get("default")}
+    rid = next(r["id"] for r in variant["responses"] if (r["when"] or {}).get("function") == "read")
+    reply = next(f for f in set_["fields"] if f["id"] == rid)
+    params = next(v for v in reply["variants"] if v["device"] in (None, device))["params"]
+    if len(params) == len(variant["params"]):  # a reply parameter named otherwise (enable -> enabled)
+        names = [q["name"] for q in variant["params"]]
+        defaults = {r["name"]: defaults[c] for r, c in zip(params, names) if c in defaults} | defaults
+    out = {}
+    for q in params:
+        kind = q["type"]["kind"]
+        if q["count"] is not None or kind not in ("primitive", "enum", "bitfield"):
+            continue
+        if q["name"] in defaults:
+            out[q["name"]] = defaults[q["name"]]
+        elif kind == "enum":
+            values = [v["value"] for v in types[q["type"]["name"]]["values"]]
+            out[q["name"]] = 0 if 0 in values else values[0]
+        elif q["type"].get("name") == "bool":
+            out[q["name"]] = False
+        else:
+            out[q["name"]] = 0
+    return out
+
+
+def keys_of(line: str) -> set:
+    return set(json.loads(line)["fields"][0]["values"])
+
+
 def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], list]]:
     """Per command with write and read on `device`: (name, its lines, what each read must give
     back: "factory", or the values written)."""
@@ -166,7 +199,7 @@ def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], li
             lines = [line("read", key), line("write", a), line("read", key), line("save", key), line("write", b)]
             lines += [line("read", key), line("load", key), line("read", key), line("default", key), line("read", key)]
             expect = [None, "ack", a, "ack", "ack", b, "ack", a, "ack", "factory"]
-            plans.append((f["name"], lines, expect, sel))
+            plans.append((f["name"], lines, expect, sel, _factory(protocol, s, v, device)))
     return plans
 
 
@@ -175,11 +208,15 @@ def check_roundtrips(protocol: dict, device: str, out: list[dict]) -> int:
     res = results(out)
     assert len(res) == sum(len(p[1]) for p in plans)
     at = 0
-    for name, lines, expect, sel in plans:
+    for name, lines, expect, sel, defaults in plans:
         got = res[at : at + len(lines)]
         at += len(lines)
         assert all(r["result"] == "ack" for r in got), (name, got)
         factory = got[0]["reply"][0]["values"]
+        # the factory value: the spec's default where the manual states one, else zero
+        for k, v in defaults.items():
+            if k not in keys_of(lines[0]):
+                assert factory[k] == v, (name, k, factory[k], v)
         for want, r in zip(expect, got):
             if want in (None, "ack"):
                 continue
@@ -282,21 +319,23 @@ def test_python_device_streams_at_the_configured_rate(transport: str) -> None:
             assert 40 <= rate <= 60, (len(accel), elapsed)  # 1000 Hz / 20
             assert pings > 5
             assert all(abs(a[2] + 1.0) < 0.05 and abs(a[0]) < 0.05 for a in accel)  # gravity on z
-            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x80, enable=False)
+            stream = dev.threedm.data_stream_control
+            stream.write_cv7_ins(desc_set=0x80, enable=False)
             pump_for(dev, 0.1)
             accel.clear()
             pump_for(dev, 0.3)
             assert accel == []
-            dev.threedm.data_stream_control.load_cv7_ins(desc_set=0x80)
+            stream.save_cv7_ins(desc_set=0x80)  # startup value: disabled
+            stream.default_cv7_ins(desc_set=0x80)  # factory value: enabled (the spec's default, CV7 manual)
+            assert stream.read_cv7_ins(desc_set=0x80).enabled is True
             pump_for(dev, 0.2)
-            assert accel == [], "never saved: load restores the factory value, disabled"
-            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x80, enable=True)
-            dev.threedm.data_stream_control.save_cv7_ins(desc_set=0x80)
-            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x80, enable=False)
-            dev.threedm.data_stream_control.load_cv7_ins(desc_set=0x80)
-            pump_for(dev, 0.2)
-            assert accel, "load restores the saved value, enabled"
-            dev.threedm.data_stream_control.default_cv7_ins(desc_set=0x80)
+            assert accel, "default restores the factory value, enabled"
+            stream.load_cv7_ins(desc_set=0x80)
+            assert stream.read_cv7_ins(desc_set=0x80).enabled is False
+            pump_for(dev, 0.1)
+            accel.clear()
+            pump_for(dev, 0.3)
+            assert accel == [], "load restores the saved value, disabled"
         finally:
             dev.transport.close()
 

@@ -1054,6 +1054,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
     }
     commands = []
     data = []
+    defaults = []
     by_name: dict[str, list[str]] = {}
     for sm in sets:
         s = sm["set"]
@@ -1078,6 +1079,9 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
                         py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None
                     )
                     commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
+                    factory = {py_attr(q["name"]): q["default"]["value"] for q in params if q.get("default")}
+                    if factory:
+                        defaults.append({"cls": cls, "value": pyrepr(factory)})
                 elif s["kind"] == "data" or f["role"] == "data":
                     units = tuple(
                         (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1093,6 +1097,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
     return {
         "nack": nack,
         "sim_commands": commands,
+        "factory": defaults,
         "sim_data": data,
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),

@@ -896,3 +896,13 @@ ALL_SETTINGS: Tuple[Any, ...] = (
 )
 
 DEVICE_TITLES: Dict[str, str] = {"gx5_45": "3DM-GX5-45", "cv7_ins": "3DM-CV7-GNSS/INS"}
+
+# Factory values the manuals state (the spec's `default`, with its source line); every other
+# parameter's factory value is zero: class -> {parameter: value}
+FACTORY: Dict[Any, Dict[str, Any]] = {
+    threedm.DataStreamControl_cv7_ins: {"enable": True},
+    filter.VehicleDynamicsMode: {"mode": 1},
+    filter.MagneticFieldMagnitudeSource: {"source": 2},
+    filter.AdaptiveFilterControl: {"level": 2},
+    system.CommunicationMode: {"mode": 1},
+}

@@ -86,3 +86,7 @@ BASE_RATES: Dict[str, Dict[int, int]] = {"ms_imu3020": {162: 1000}}
 ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 
 DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
+
+# Factory values the manuals state (the spec's `default`, with its source line); every other
+# parameter's factory value is zero: class -> {parameter: value}
+FACTORY: Dict[Any, Dict[str, Any]] = {}
