@@ -56,3 +56,7 @@ BASE_RATES: Dict[str, Dict[int, int]] = {}
 ALL_SETTINGS: Tuple[Any, ...] = ()
 
 DEVICE_TITLES: Dict[str, str] = {"dev_a": "Device A", "dev_b": "Device B"}
+
+# Factory values the manuals state (the spec's `default`, with its source line); every other
+# parameter's factory value is zero: class -> {parameter: value}
+FACTORY: Dict[Any, Dict[str, Any]] = {}

@@ -268,8 +268,8 @@ class Simulator:
         cls = next((c for c in classes if c.DEVICE in (None, self.device)), classes[0] if classes else None)
         if cls is None:
             return None
-        values: Dict[str, Any] = {}
         stored = self.current.get(key)
+        values: Dict[str, Any] = {} if stored is not None else dict(_sim.FACTORY.get(type(command), {}))
         for source in (stored, command):
             if source is None:
                 continue
@@ -277,6 +277,13 @@ class Simulator:
                 v = getattr(source, a)
                 if a != "function" and v is not None:
                     values[a] = v
+        # A reply parameter named otherwise than the command's (enable -> enabled) takes the value
+        # of the command parameter at its position, when both have as many.
+        sent = [a for a in type(command)._ATTRS if a != "function"]
+        if len(sent) == len(cls._ATTRS):
+            for mine, theirs in zip(cls._ATTRS, sent):
+                if mine not in values and theirs in values:
+                    values[mine] = values[theirs]
         rate_set = _set_of(_sim.RATES[type(command)], command) if type(command) in _sim.RATES else None
         if rate_set is not None:
             values["rate"] = self.base_rates.get(rate_set, 0)
@@ -336,14 +343,24 @@ class Simulator:
                 if dec > 0:
                     entries.append((d, dec))
             plan[set_id] = entries
-        enabled = set()  # factory value zero: a stream runs once its control enables it
+        # A stream without a stored control has its factory value: the spec's default, else off.
+        factory = any(
+            bool(_sim.FACTORY.get(cls, {}).get(en[1]))
+            for cls, en in _sim.ENABLES.items()
+            if getattr(cls, "DEVICE", None) in (None, self.device)
+        )
+        enabled = set(plan) if factory else set()
         for value in self.current.values():
             en = _sim.ENABLES.get(type(value))
             if en is None:
                 continue
             set_id = _set_of(en[0], value)
-            if set_id is not None and bool(getattr(value, en[1], False)):
+            if set_id is None:
+                continue
+            if getattr(value, en[1], None):
                 enabled.add(set_id)
+            else:
+                enabled.discard(set_id)
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
 
