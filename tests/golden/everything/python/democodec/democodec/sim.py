@@ -423,7 +423,7 @@ class Simulator:
         if cls is None:
             return None
         value = cls()
-        elapsed = t - (self.start_time or t)
+        elapsed = t - (t if self.start_time is None else self.start_time)
         for attr, units, count in _sim.DATA.get(cls, ()):
             current = getattr(value, attr, None)
             if isinstance(current, list):
