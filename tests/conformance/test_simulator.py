@@ -261,8 +261,9 @@ BAD_ENUM = command_line(MIP, 12, 0x28, "pps_source", {"function": 1, "source": 9
 @pytest.mark.parametrize("lang", SESSION_LANGUAGES)
 def test_nacks_faults_and_device_information(lang: str, transport: str) -> None:
     # No --device for the tool: it sends what the simulated CV7-INS must refuse itself.
-    lines = [INFO, GX5_ONLY, GX5_READ_ONLY, BAD_ENUM, PING, PING, PING, PING]
+    lines = [INFO, GX5_ONLY, GX5_READ_ONLY, BAD_ENUM, *[PING] * 7]
     faults = ["--nack", "ping:4@1", "--drop", "ping@1", "--corrupt", "ping@1"]
+    faults += ["--delay", "ping:150@1", "--split", "ping@1", "--garbage", "ping:5@1"]
     with Sim("mip", "cv7_ins", listen_for(transport), *faults) as sim:
         out = session_tool(lang, "mip", sim.address, lines)
     res = results(out)
@@ -272,13 +273,17 @@ def test_nacks_faults_and_device_information(lang: str, transport: str) -> None:
         ("nack", 1),  # get_imu_base_rate: a GX5-45 command, unknown to the CV7-INS
         ("nack", 3),  # device_startup_settings read: the CV7-INS has no read
         ("nack", 3),  # mode 99: the enum does not define it
+        # one fault per reply, the first that applies in the order nack, drop, delay, corrupt, split, garbage
         ("nack", 4),  # --nack ping:4@1
         ("timeout", None),  # --drop ping@1
+        ("ack", 0),  # --delay ping:150@1, within the 300 ms timeout
         ("timeout", None),  # --corrupt ping@1: the reply is skipped as a bad packet
+        ("ack", 0),  # --split ping@1: two writes 20 ms apart
+        ("ack", 0),  # --garbage ping:5@1: five bytes skipped before the reply
         ("ack", 0),
     ]
     skipped = [x for x in out if "skipped" in x]
-    assert skipped, out  # the corrupted reply shows as a skip run
+    assert len(skipped) == 2 and len(bytes.fromhex(skipped[1]["skipped"])) == 5, out
 
 
 # ------------------------------------------------------------------------------- the Python API
