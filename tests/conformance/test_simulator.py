@@ -486,3 +486,29 @@ def test_replay_pace_follows_the_timestamps() -> None:
     chunks = sim.replay_chunks(b"".join(packets))
     assert [round(t, 3) for t, _ in chunks] == [0.0, 0.1, 0.2, 0.3]
     assert [t for t, _ in sim.replay_chunks(b"".join(packets), fast=True)] == [0.0] * 4
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+def test_streaming_through_the_session_tool(lang: str, transport: str) -> None:
+    """Data at the configured rate reaches any language's tool while it waits for a reply (one
+    dropped by the simulator: the tool waits the whole 300 ms timeout), and commands are answered
+    while the data streams."""
+    fmt = {"function": 1, "desc_set": 0x80, "num_descriptors": 2}
+    fmt["descriptors"] = [{"descriptor": 0xD5, "decimation": 10}, {"descriptor": 0x04, "decimation": 10}]
+    control = {"descriptor": 0x11, "name": "data_stream_control", "device": "cv7_ins"}
+    control["values"] = {"function": 1, "desc_set": 0x80, "enable": True}
+    lines = [
+        command_line(MIP, 12, 0x0F, "message_format", fmt),
+        json.dumps({"offset": 0, "set": 12, "fields": [control]}),
+        INFO,
+        PING,
+    ]
+    with Sim("mip", "cv7_ins", listen_for(transport), "--drop", "get_device_info") as sim:
+        out = session_tool(lang, "mip", sim.address, lines, "--device", "cv7_ins")
+    assert [r["result"] for r in results(out)] == ["ack", "ack", "timeout", "ack"]
+    data = [x for x in out if x.get("set") == 0x80]
+    assert 20 <= len(data) <= 60, len(data)  # 100 Hz (1 kHz / 10) for a little over 300 ms
+    assert all([f["descriptor"] for f in p["fields"]] == [0xD5, 0x04] for p in data)
+    stamps = [p["fields"][0]["values"]["nanoseconds"] for p in data]
+    assert all(b - a == 10_000_000 for a, b in zip(stamps, stamps[1:]))  # every 10 ms of device time

@@ -505,11 +505,11 @@ def _plausible(attr: str, units: Any, i: int, n: int, elapsed: float, rng: rando
         return default
     if isinstance(default, int):
         if units == "ns":
-            return int(elapsed * 1e9)
+            return round(elapsed * 1e9)
         if units == "us":
-            return int(elapsed * 1e6)
+            return round(elapsed * 1e6)
         if units == "ms":
-            return int(elapsed * 1e3)
+            return round(elapsed * 1e3)
         if units == "weeks":
             return 2400
         return default
