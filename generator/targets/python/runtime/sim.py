@@ -163,7 +163,8 @@ class Simulator:
             return "", nack["unknown_set"], [], []
         if isinstance(entry, RawField):
             classes = registry.FIELDS.get((set_id, entry.descriptor))
-            if not classes or classes[0].ROLE != "command":
+            rows = _meta.COMMANDS.get((set_id, entry.descriptor), ())
+            if not classes or classes[0].ROLE != "command" or not any(self.device in r[2] for r in rows):
                 return "", nack["unknown_descriptor"], [], []
             return classes[0].NAME, nack["invalid_parameter"], [], []
         if not isinstance(entry, DecodedField):

@@ -38,6 +38,7 @@ def test_answers_as_the_model_does():
     assert acks(ask(sim, (0x02, b""))) == [(0x02, 1)]  # does not decode
     assert ask(sim, command.SetMode(mode=t.Mode.AUTO)) == []  # the spec suppresses its ack
     assert acks(ask(Simulator("beta"), command.SetMode(mode=t.Mode.ON))) == [(0x02, 1)]  # alpha only
+    assert acks(ask(Simulator("beta"), (0x02, b""))) == [(0x02, 1)]  # alpha only, even undecodable
     assert ask(sim, sensor.Reading(), set_id=0x80) == []  # data sent to the device: ignored
 
 
