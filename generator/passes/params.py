@@ -5,7 +5,7 @@ call build_params."""
 
 from __future__ import annotations
 
-from ..primitives import ALIASES, PRIMITIVES
+from ..primitives import ALIASES, PRIMITIVES, int_range
 from .context import Context, SpecFile
 from .sizes import fill_capacities, fill_offsets, fixed, max_field_data, param_size
 
@@ -140,6 +140,7 @@ def build_params(
             "optional": optional,
             "optional_for": optional_for,
             "notes": p.get("notes", []),
+            "default": _default(ctx, sf, pp, p, owner, tref, count, pf),
         }
         q["size"] = param_size(q)
         names[name] = q
@@ -310,3 +311,86 @@ def _optional_for(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, pf
 
 def _is_integer(tref: dict) -> bool:
     return tref["kind"] == "primitive" and PRIMITIVES[tref["name"]][1] == "int" and not PRIMITIVES[tref["name"]][2]
+
+
+def _default(
+    ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, tref: dict, count: dict | None, pf: list | None
+) -> dict | None:
+    """The `default` of a setting's parameter (docs/spec-format.md), its value checked against the
+    type (an enum value by name or number, as the enum's number in the IR) and its manual against
+    the protocol's; None without one."""
+    d = p.get("default")
+    if d is None:
+        return None
+    where = pp + ("default",)
+    if pf is None or "write" not in pf:
+        ctx.err(
+            sf,
+            where,
+            f"{owner}: default of {p['name']}: only a setting's parameters sent for write have one",
+            "no default",
+        )
+        return None
+    manual = d["source"]["manual"]
+    if manual not in ctx.manual_devices:
+        ctx.err(
+            sf,
+            where + ("source", "manual"),
+            f"unknown manual '{manual}'",
+            "one of the manuals listed under devices in the protocol file: " + ", ".join(sorted(ctx.manual_devices)),
+        )
+    value = d["value"]
+    n = None
+    if count is not None:
+        if count["kind"] != "fixed":
+            ctx.err(sf, where, f"{owner}: default of {p['name']}: not supported for a counted array", "no default")
+            return None
+        n = count["value"]
+        if not isinstance(value, list) or len(value) != n:
+            ctx.err(
+                sf, where + ("value",), f"{owner}: default of {p['name']} is not a list of {n} values", f"{n} values"
+            )
+            return None
+        items = value
+    elif isinstance(value, list):
+        ctx.err(sf, where + ("value",), f"{owner}: default of {p['name']} is a list", "one value")
+        return None
+    else:
+        items = [value]
+    out = []
+    for item in items:
+        v = _default_item(ctx, sf, where + ("value",), owner, p["name"], tref, item)
+        if v is None:
+            return None
+        out.append(v)
+    return {"value": out if n is not None else out[0], "source": {"manual": manual, "line": d["source"]["line"]}}
+
+
+def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: str, tref: dict, item):
+    kind = tref["kind"]
+    bad = f"{owner}: default of {name}: {item!r} is not a value of {tref.get('name', kind)}"
+    if kind == "enum":
+        values = ctx.types.get(tref["name"], {}).get("values", [])
+        for v in values:
+            if item == v["name"] or (isinstance(item, int) and not isinstance(item, bool) and item == v["value"]):
+                return v["value"]
+        ctx.err(sf, where, bad, "one of " + ", ".join(v["name"] for v in values))
+        return None
+    base = tref.get("base") if kind == "bitfield" else tref.get("name") if kind == "primitive" else None
+    if base is None or base not in PRIMITIVES:
+        ctx.err(sf, where, f"{owner}: default of {name}: not supported for a {kind}", "no default")
+        return None
+    _, pkind, _ = PRIMITIVES[base]
+    if pkind == "bool":
+        ok = isinstance(item, bool)
+    elif pkind == "float":
+        ok = isinstance(item, (int, float)) and not isinstance(item, bool)
+    elif pkind == "int":
+        lo, hi = int_range(base)
+        ok = isinstance(item, int) and not isinstance(item, bool) and lo <= item <= hi
+    else:
+        ok = False
+    if not ok:
+        ctx.err(sf, where, bad, f"a {base} value")
+        return None
+    return float(item) if pkind == "float" else item

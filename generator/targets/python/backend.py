@@ -55,6 +55,7 @@ RUNTIME_FILES = [
     "samples.py",
     "session.py",
     "session_tool.py",
+    "sim.py",
     "transport.py",
     "tools.py",
     "_speedups.c",
@@ -77,6 +78,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "types",
     "tests",
     "_session",
+    "_sim",
     "command_api",
 }
 
@@ -666,6 +668,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         session = _session_context(m, sets)
         for name in SESSION_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
+        files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
+            **ctx, **_sim_context(m, sets)
+        )
         files[f"{root}/{pkg}/_columns.py"] = env.get_template("python/package/_columns.py.j2").render(
             **ctx, **_columns_context(proto)
         )
@@ -1043,3 +1048,140 @@ def _session_example(api_sets: list[dict]) -> dict | None:
             "returns": False,
         }
     return None
+
+
+# -------------------------------------------------------------------------------------- simulator
+# The simulated device (runtime sim.py, issue 21) answers from the IR: which parameters a function
+# sends, which are enums, the reply fields and their `when`. What the IR does not say, decided
+# here and printed into _sim.py:
+# - the meaning of the NACK codes (by the code enum's value names; a role the enum does not name
+#   falls back to the first non-ok code);
+NACK_ROLES = {
+    "unknown_descriptor": ("unknown_command", "invalid_message_code"),
+    "unknown_set": ("unknown_descriptor_set", "invalid_message_type"),
+    "invalid_parameter": ("invalid_parameter",),
+    "failed": ("command_failed", "invalid_parameter"),
+}
+# - the commands that configure streaming, per protocol (a set is a number, or the parameter that
+#   carries it, or a list of alternatives, each a parameter or (parameter, {selector value: set})). Base rates in Hz per device and data set,
+#   from the manuals: GX5-45 dcp lines 375, 387 (IMU and filter 500 Hz) and 973 (GNSS 4 Hz); CV7
+#   docs line 2688 (sensor, filter, system 1 kHz; GNSS receivers 5 Hz); MS-IMU3020: internal
+#   sample rate, Table 35 (1000 Hz assumed, see docs/conformance.md section 9).
+STREAMING: dict[str, dict] = {
+    "mip": {
+        "formats": {
+            "message_format": ("desc_set", "descriptors", "descriptor", "decimation"),
+            "imu_message_format": (0x80, "descriptors", "descriptor", "decimation"),
+            "gnss_message_format": (0x81, "descriptors", "descriptor", "decimation"),
+            "filter_message_format": (0x82, "descriptors", "descriptor", "decimation"),
+        },
+        "enables": {"data_stream_control": ([("device_selector", {1: 0x80, 2: 0x81, 3: 0x82}), "desc_set"], "enable")},
+        "rates": {
+            "get_base_rate": "desc_set",
+            "get_imu_base_rate": 0x80,
+            "get_gnss_base_rate": 0x81,
+            "get_filter_base_rate": 0x82,
+        },
+        "polls": {
+            "poll_imu_data": (0x80, "descriptors"),
+            "poll_gnss_data": (0x81, "descriptors"),
+            "poll_filter_data": (0x82, "descriptors"),
+            "poll_data": ("desc_set", "descriptors"),
+        },
+        "base_rates": {
+            "gx5_45": {0x80: 500, 0x81: 4, 0x82: 500},
+            "cv7_ins": {0x80: 1000, 0x82: 1000, 0x91: 5, 0x92: 5, 0xA0: 1000},
+        },
+        "decimation": None,
+        "all_settings": ["device_startup_settings"],
+    },
+    "mscip": {
+        "formats": {
+            "select_sensors": (0xA2, "sensors", None, None),
+            "select_sensors_rev_b": (0xA2, "sensors", None, None),
+        },
+        "enables": {"data_on_off": (0xA2, "control")},
+        "rates": {"get_internal_sample_rate": 0xA2},
+        "polls": {},
+        "base_rates": {"ms_imu3020": {0xA2: 1000}},
+        "decimation": ("sample_rate", "decimation"),
+        "all_settings": ["config_all"],
+    },
+}
+
+
+def _sim_context(m: _Proto, sets: list[dict]) -> dict:
+    """What _sim.py.j2 prints: per command layout class the parameters each function sends and the
+    enum parameters; per data layout class the units of its parameters; the streaming table."""
+    proto = m.p
+    fvalues = {}
+    if m.function_enum:
+        fvalues = {v["name"]: v["value"] for v in m.types[m.function_enum]["values"]}
+    code_values = {}
+    if proto["session"] and proto["session"]["code_enum"]:
+        code_values = {v["name"]: v["value"] for v in m.types[proto["session"]["code_enum"]]["values"]}
+    ok = proto["session"]["ok"] if proto["session"] else 0
+    fallback = next((v for v in code_values.values() if v != ok), 1)
+    nack = {
+        role: next((code_values[n] for n in names if n in code_values), fallback) for role, names in NACK_ROLES.items()
+    }
+    commands = []
+    data = []
+    defaults = []
+    by_name: dict[str, list[str]] = {}
+    for sm in sets:
+        s = sm["set"]
+        names = _layout_classes(s["fields"])
+        for f in s["fields"]:
+            multi = len(f["variants"]) > 1
+            for v in f["variants"]:
+                cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
+                if f["role"] == "command":
+                    by_name.setdefault(f["name"], []).append(cls)
+                    params = [
+                        q for q in v["params"] if not (m.function_enum and q["type"].get("name") == m.function_enum)
+                    ]
+                    keys = {}
+                    for fn in v["functions"] or []:
+                        keys[fvalues[fn]] = tuple(
+                            py_attr(q["name"])
+                            for q in params
+                            if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
+                        )
+                    enums = tuple(
+                        py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None
+                    )
+                    commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
+                    factory = {py_attr(q["name"]): q["default"]["value"] for q in params if q.get("default")}
+                    if factory:
+                        defaults.append({"cls": cls, "value": pyrepr(factory)})
+                elif s["kind"] == "data" or f["role"] == "data":
+                    units = tuple(
+                        (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
+                        for q in v["params"]
+                        if q["type"]["kind"] == "primitive"
+                    )
+                    data.append({"cls": cls, "units": pyrepr(units)})
+    streaming = STREAMING.get(proto["name"], {})
+
+    def classes(table: dict) -> list[dict]:
+        return [{"cls": c, "value": pyrepr(value)} for name, value in table.items() for c in by_name.get(name, [])]
+
+    return {
+        "nack": nack,
+        "sim_commands": commands,
+        "factory": defaults,
+        "sim_data": data,
+        "formats": classes(streaming.get("formats", {})),
+        "enables": classes(streaming.get("enables", {})),
+        "rates": classes(streaming.get("rates", {})),
+        "polls": classes(streaming.get("polls", {})),
+        "base_rates": pyrepr(streaming.get("base_rates", {})),
+        "decimation": [
+            {"cls": c, "value": pyrepr(streaming["decimation"][1])}
+            for c in by_name.get((streaming.get("decimation") or ("",))[0], [])
+        ],
+        "all_settings": [c for n in streaming.get("all_settings", []) for c in by_name.get(n, [])],
+        "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
+        "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
+    }

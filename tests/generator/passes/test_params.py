@@ -93,3 +93,41 @@ def test_optional_for_names_functions_the_parameter_is_sent_for(tmp_path):
         "base.yaml:15:9: error: base.cmd: required parameter b follows optional parameter a"
         " (expected optional parameters (not sent for every function) at the end)",
     ]
+
+
+def test_default_values_are_checked_against_the_type_and_exported(tmp_path):
+    src = "source: {manual: a.txt, line: 9}"
+    ctx, v = _layout(
+        tmp_path,
+        f"      - {{name: flag, type: bool, functions: [write], default: {{value: true, {src}}}}}\n"
+        f"      - {{name: rate, type: u16, functions: [write], default: {{value: 400, {src}}}}}\n"
+        f"      - {{name: axes, type: vector3f, functions: [write], default: {{value: [0, 0, 1], {src}}}}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == []
+    assert [q["default"] for q in v["params"]] == [
+        {"value": True, "source": {"manual": "a.txt", "line": 9}},
+        {"value": 400, "source": {"manual": "a.txt", "line": 9}},
+        {"value": [0.0, 0.0, 1.0], "source": {"manual": "a.txt", "line": 9}},
+    ]
+
+
+def test_default_values_that_do_not_fit_are_located_errors(tmp_path):
+    src = "source: {manual: a.txt, line: 9}"
+    ctx, v = _layout(
+        tmp_path,
+        f"      - {{name: rate, type: u8, functions: [write], default: {{value: 300, {src}}}}}\n"
+        f"      - {{name: axes, type: vector3f, functions: [write], default: {{value: [1, 2], {src}}}}}\n"
+        "      - {name: flag, type: bool, functions: [write], default: {value: true, source: {manual: z.txt, line: 1}}}\n"
+        f"      - {{name: key, type: u8, functions: [read], default: {{value: 1, {src}}}}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == [
+        "base.yaml:14:69: error: base.cmd: default of rate: 300 is not a value of u8 (expected a u8 value)",
+        "base.yaml:15:75: error: base.cmd: default of axes is not a list of 3 values (expected 3 values)",
+        "base.yaml:16:94: error: unknown manual 'z.txt' (expected one of the manuals listed under devices in the"
+        " protocol file: a.txt, b.txt)",
+        "base.yaml:17:59: error: base.cmd: default of key: only a setting's parameters sent for write have one"
+        " (expected no default)",
+    ]
+    assert v["params"][0]["default"] is None

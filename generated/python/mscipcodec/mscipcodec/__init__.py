@@ -52,7 +52,7 @@ from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
 __version__ = "0.1.0"
-SPEC_HASH = "d0b17e43b10441a7"
+SPEC_HASH = "0c5f957ceebee19d"
 
 __all__ = [
     "SPEC_HASH",

@@ -77,7 +77,7 @@ pub const VERSION_MINOR: u32 = 10;
 pub const VERSION_PATCH: u32 = 3;
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "1d3f1495a97aed54";
+pub const SPEC_HASH: &str = "fc66d12ce9b4981b";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

@@ -1,0 +1,771 @@
+"""A simulated MicroStrain MIP device (docs/conformance.md section 9): test an application without
+the hardware, over a pseudo-terminal or TCP.
+
+    python -m mipcodec.sim --listen pty|tcp:HOST:PORT [--device ID] [--seed N] [fault options]
+
+prints the address it listens on as its first line and serves until terminated. The behaviour
+comes from the spec: `_session.py` (functions, reply fields and their `when`, device support, ack
+suppression) and `_sim.py` (the parameters each function sends, enum parameters, units of data
+values, the streaming commands, base rates, NACK codes), both generated from the IR.
+
+`Simulator` is the sans-I/O core: `feed(bytes, now)` takes what the host sent, `poll(now)`
+produces the data stream due by `now`; both return `(time, bytes)` chunks to write at those
+times (faults delay and split them). `serve()` runs it over a pty or a TCP socket.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import errno
+import math
+import os
+import random
+import select
+import socket
+import sys
+import time
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+from . import _session as _meta
+from . import _sim, registry
+from ._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
+from .codec import Choice, Enum, Field
+from .framing import PacketBuilder, Parser, RawPacket
+from .packets import DecodedField, RawField, decode_packet
+from .session import support_error
+
+Chunk = Tuple[float, bytes]
+FAULT_KINDS = ("drop", "delay", "corrupt", "split", "garbage", "nack")
+
+
+class Fault:
+    """A fault applied to the replies to one command (its name, or "all"): drop, delay (`arg` ms),
+    corrupt (checksum), split (two writes 20 ms apart), garbage (bytes before the reply), nack
+    (`arg`: the code, default the invalid-parameter code); for the first `times` replies only
+    when given."""
+
+    def __init__(self, kind: str, command: str, arg: Optional[int] = None, times: Optional[int] = None) -> None:
+        self.kind = kind
+        self.command = command
+        self.arg = arg
+        self.times = times
+
+    @classmethod
+    def parse(cls, kind: str, text: str) -> Fault:
+        """From an option value COMMAND[:ARG][@TIMES]."""
+        times = None
+        if "@" in text:
+            text, _, n = text.rpartition("@")
+            if not n.isdigit() or int(n) < 1:
+                raise ValueError(f"--{kind} {text}@{n}: the count after @ must be a positive integer")
+            times = int(n)
+        command, _, arg = text.partition(":")
+        if not command:
+            raise ValueError(f"--{kind}: expected COMMAND[:ARG][@TIMES] (a command name or 'all')")
+        value = None
+        if arg:
+            if not arg.isdigit():
+                raise ValueError(f"--{kind} {text}: {arg!r} is not a non-negative integer")
+            value = int(arg)
+        elif kind == "delay":
+            raise ValueError(f"--delay {text}: expected COMMAND:MILLISECONDS")
+        return cls(kind, command, value, times)
+
+    def applies(self, name: str) -> bool:
+        if self.times is not None and self.times <= 0:
+            return False
+        if self.command not in ("all", name):
+            return False
+        if self.times is not None:
+            self.times -= 1
+        return True
+
+
+def _set_of(source: Any, command: Any) -> Optional[int]:
+    """The data set a streaming command refers to (_sim.py: a number, a parameter, alternatives)."""
+    if isinstance(source, int):
+        return source
+    if isinstance(source, str):
+        value = getattr(command, source, None)
+        return None if value is None else int(value)
+    for alt in source:
+        name, mapping = (alt, None) if isinstance(alt, str) else alt
+        if hasattr(command, name):
+            value = getattr(command, name)
+            if value is None:
+                return None
+            return mapping.get(int(value)) if mapping else int(value)
+    return None
+
+
+class Simulator:
+    """The simulated device: settings (current, startup, factory), replies, streams, faults."""
+
+    def __init__(self, device: Optional[str] = None, seed: int = 0, faults: Sequence[Fault] = ()) -> None:
+        if device is None:
+            device = registry.DEVICES[0]
+        if device not in registry.DEVICES:
+            raise ValueError(f"unknown device {device!r} (expected one of {', '.join(registry.DEVICES)})")
+        self.device = device
+        self.rng = random.Random(seed)
+        self.faults = list(faults)
+        self.parser = Parser()
+        self.current: Dict[Tuple[Any, ...], Field] = {}
+        self.startup: Dict[Tuple[Any, ...], Field] = {}
+        self.base_rates = dict(_sim.BASE_RATES.get(device, {}))
+        self.start_time: Optional[float] = None
+        self.ticks: Dict[int, int] = {}  # data set -> last tick sent
+        self.plan: Dict[int, List[Tuple[int, int]]] = {}  # data set -> [(descriptor, decimation)]
+        self.commands = 0
+        self._replan()
+
+    # ------------------------------------------------------------------ commands
+    def feed(self, data: bytes, now: float) -> List[Chunk]:
+        """The replies to the commands in `data` (and the data due by `now`)."""
+        out = self.poll(now)
+        for event in self.parser.feed(data):
+            if isinstance(event, RawPacket):
+                out.extend(self._packet(event.data, now))
+        return out
+
+    def _packet(self, raw: bytes, now: float) -> List[Chunk]:
+        set_id = raw[SET_OFFSET]
+        if registry.set_kind(set_id) != "command":
+            return []
+        packet = decode_packet(raw, device=self.device)
+        out: List[Chunk] = []
+        for entry in packet.fields:
+            descriptor = getattr(entry, "descriptor", None)
+            if descriptor is None:
+                continue
+            self.commands += 1
+            try:
+                name, code, replies, extra = self._answer(set_id, entry, now)
+            except Exception as e:  # a simulator bug must not end the session: report, NACK
+                print(f"{__package__}.sim: {type(e).__name__}: {e}", file=sys.stderr)
+                name, code, replies, extra = "", _sim.NACK["failed"], [], []
+            if code is None:
+                out.extend(extra)
+                continue
+            try:
+                reply = self._reply(set_id, descriptor, code, replies)
+            except ValueError:  # the reply does not fit one packet: the device cannot report it
+                reply = self._reply(set_id, descriptor, _sim.NACK["invalid_parameter"], [])
+            out.extend(self._faulted(name, reply, now))
+            out.extend(extra)
+        return out
+
+    def _answer(self, set_id: int, entry: Any, now: float) -> Tuple[str, Optional[int], List[Field], List[Chunk]]:
+        """(command name, code or None for no reply, reply fields, packets sent after the reply)."""
+        nack = _sim.NACK
+        if not any(s == set_id for s, _ in registry.FIELDS):
+            return "", nack["unknown_set"], [], []
+        if isinstance(entry, RawField):
+            classes = registry.FIELDS.get((set_id, entry.descriptor))
+            rows = _meta.COMMANDS.get((set_id, entry.descriptor), ())
+            if not classes or classes[0].ROLE != "command" or not any(self.device in r[2] for r in rows):
+                return "", nack["unknown_descriptor"], [], []
+            return classes[0].NAME, nack["invalid_parameter"], [], []
+        if not isinstance(entry, DecodedField):
+            return "", None, [], []
+        command = entry.value
+        name = command.NAME
+        if command.ROLE != "command":
+            return name, nack["unknown_descriptor"], [], []
+        for fault in self.faults:
+            if fault.kind == "nack" and fault.applies(name):
+                return "", nack["invalid_parameter"] if fault.arg is None else fault.arg, [], []  # "": no other fault
+        error = support_error(command, self.device)
+        if error is not None:
+            unknown = error == f"{name} is not supported by {self.device}"
+            return name, nack["unknown_descriptor" if unknown else "invalid_parameter"], [], []
+        info = _sim.COMMANDS.get(type(command))
+        if info is not None and any(
+            not isinstance(getattr(command, a, None), Enum) and getattr(command, a, None) is not None for a in info[1]
+        ):
+            return name, nack["invalid_parameter"], [], []
+        replies, extra = self._execute(command, now)
+        if _suppressed(command):
+            return name, None, [], extra
+        return name, _meta.ACK_OK, replies, extra
+
+    def _key(self, command: Field, function: Optional[int]) -> Tuple[Any, ...]:
+        keys = _sim.COMMANDS.get(type(command), ({}, ()))[0]
+        read = _function_value("read")
+        attrs = keys.get(read, ()) if read in keys else keys.get(function if function is not None else -1, ())
+        return (command.SET, command.DESCRIPTOR, tuple(_plain(getattr(command, a, None)) for a in attrs))
+
+    def _execute(self, command: Field, now: float) -> Tuple[List[Field], List[Chunk]]:
+        fn = getattr(command, "function", None)
+        fn = None if fn is None else int(fn)
+        key = self._key(command, fn)
+        kind = _meta.function_name(fn).lower() if fn is not None else None
+        if type(command) in _sim.ALL_SETTINGS and kind in ("save", "load", "default"):
+            self._all(kind)
+        elif kind in ("write", "write_no_ack"):
+            self.current[key] = command
+        elif kind in ("save", "load", "default"):
+            for k in self._matching(key):
+                if kind == "save":
+                    if k in self.current:
+                        self.startup[k] = self.current[k]
+                elif kind == "load":
+                    self._restore(k, self.startup)
+                else:
+                    self.current.pop(k, None)
+        self._replan()
+        replies = [r for r in (self._response(command, key, fn),) if r is not None]
+        extra: List[Chunk] = []
+        poll = _sim.POLLS.get(type(command))
+        if poll is not None:
+            set_id = _set_of(poll[0], command)
+            if set_id is not None:
+                wanted = [_descriptor_of(d) for d in (getattr(command, poll[1], None) or [])]
+                fields = wanted or [d for d, _ in self.plan.get(set_id, [])]
+                extra = [(now + 0.001, p) for p in self._sample_packets(set_id, fields, now)]
+        return replies, extra
+
+    def _all(self, kind: str) -> None:
+        """Save, load or default every setting (_sim.ALL_SETTINGS: device startup settings)."""
+        if kind == "save":
+            self.startup = dict(self.current)
+        elif kind == "load":
+            self.current = dict(self.startup)
+        else:
+            self.current = {}
+
+    def _matching(self, key: Tuple[Any, ...]) -> List[Tuple[Any, ...]]:
+        """The settings a save/load/default of `key` applies to: the key itself, or every key of the
+        command when the function sends no key parameter (or only zeros: "all")."""
+        if key[2] and any(v != 0 for v in key[2]):
+            return [key]
+        every = {k for k in list(self.current) + list(self.startup) if k[:2] == key[:2]}
+        return sorted(every | {key}, key=repr)
+
+    def _restore(self, key: Tuple[Any, ...], table: Dict[Tuple[Any, ...], Field]) -> None:
+        if key in table:
+            self.current[key] = table[key]
+        else:
+            self.current.pop(key, None)
+
+    def _response(self, command: Field, key: Tuple[Any, ...], fn: Optional[int]) -> Optional[Field]:
+        rows = _meta.COMMANDS.get((int(command.SET or 0), command.DESCRIPTOR), ())
+        row = next((r for r in rows if r[0] is type(command)), None)
+        if row is None:
+            return None
+        for descriptor, when_fn, param, value in row[4]:
+            if when_fn is not None and fn != when_fn:
+                continue
+            if param is not None:
+                got = getattr(command, param, None)
+                if (value is None and not got) or (value is not None and got is not None and int(got) != value):
+                    continue
+            return self._build_response(command, key, descriptor)
+        return None
+
+    def _build_response(self, command: Field, key: Tuple[Any, ...], descriptor: int) -> Optional[Field]:
+        classes = registry.FIELDS.get((int(command.SET or 0), descriptor), ())
+        cls = next((c for c in classes if c.DEVICE in (None, self.device)), classes[0] if classes else None)
+        if cls is None:
+            return None
+        stored = self.current.get(key)
+        values: Dict[str, Any] = {} if stored is not None else dict(_sim.FACTORY.get(type(command), {}))
+        for source in (stored, command):
+            if source is None:
+                continue
+            for a in source._ATTRS:
+                v = getattr(source, a)
+                if a != "function" and v is not None:
+                    values[a] = v
+        # A reply parameter named otherwise than the command's (enable -> enabled) takes the value
+        # of the command parameter at its position, when both have as many.
+        sent = [a for a in type(command)._ATTRS if a != "function"]
+        if len(sent) == len(cls._ATTRS):
+            for mine, theirs in zip(cls._ATTRS, sent):
+                if mine not in values and theirs in values:
+                    values[mine] = values[theirs]
+        rate_set = _set_of(_sim.RATES[type(command)], command) if type(command) in _sim.RATES else None
+        if rate_set is not None:
+            values["rate"] = self.base_rates.get(rate_set, 0)
+        kwargs = {a: values[a] for a in cls._ATTRS if a in values}
+        try:
+            value = _complete(cls(**kwargs))
+            value.encode()
+        except (TypeError, ValueError):
+            value = _complete(cls())
+        if stored is None:
+            _identify(value, _sim.DEVICE_TITLES.get(self.device, self.device))
+        return value  # type: ignore[no-any-return]
+
+    def _reply(self, set_id: int, descriptor: int, code: int, replies: List[Field]) -> bytes:
+        ack_cls = registry.RESERVED["command"][_meta.ACK_DESCRIPTOR][0]
+        builder = PacketBuilder(set_id).add(ack_cls(**{_meta.ACK_ECHO: descriptor, _meta.ACK_CODE: code}))
+        for r in replies:
+            builder.add(r)
+        return builder.build()
+
+    def _faulted(self, name: str, packet: bytes, now: float) -> List[Chunk]:
+        """The reply as sent: the first fault (in option order) that applies to it, if any."""
+        fault = next((f for f in self.faults if f.kind != "nack" and name and f.applies(name)), None)
+        if fault is None:
+            return [(now, packet)]
+        if fault.kind == "drop":
+            return []
+        if fault.kind == "delay":
+            return [(now + (fault.arg or 0) / 1000.0, packet)]
+        if fault.kind == "corrupt":
+            return [(now, packet[:-1] + bytes([packet[-1] ^ 0xFF]))]
+        if fault.kind == "garbage":
+            return [(now, bytes(self.rng.randrange(256) for _ in range(fault.arg or 7)) + packet)]
+        half = len(packet) // 2  # split
+        return [(now, packet[:half]), (now + 0.02, packet[half:])]
+
+    # ------------------------------------------------------------------ streaming
+    def _replan(self) -> None:
+        """The data streams of the current settings: per data set, [(descriptor, decimation)]."""
+        plan: Dict[int, List[Tuple[int, int]]] = {}
+        decimation = 1
+        for value in self.current.values():
+            attr = _sim.DECIMATION.get(type(value))
+            if attr is not None:
+                decimation = max(1, int(getattr(value, attr, 1) or 1))
+        for value in self.current.values():
+            fmt = _sim.FORMATS.get(type(value))
+            if fmt is None:
+                continue
+            set_id = _set_of(fmt[0], value)
+            if set_id is None:
+                continue
+            entries = []
+            for item in getattr(value, fmt[1], None) or []:
+                d = int(getattr(item, fmt[2]) if fmt[2] else item)
+                dec = int(getattr(item, fmt[3])) if fmt[3] else decimation
+                if dec > 0:
+                    entries.append((d, dec))
+            plan[set_id] = entries
+        # A stream without a stored control has its factory value: the spec's default, else off.
+        factory = any(
+            bool(_sim.FACTORY.get(cls, {}).get(en[1]))
+            for cls, en in _sim.ENABLES.items()
+            if getattr(cls, "DEVICE", None) in (None, self.device)
+        )
+        enabled = set(plan) if factory else set()
+        for value in self.current.values():
+            en = _sim.ENABLES.get(type(value))
+            if en is None:
+                continue
+            set_id = _set_of(en[0], value)
+            if set_id is None:
+                continue
+            if getattr(value, en[1], None):
+                enabled.add(set_id)
+            else:
+                enabled.discard(set_id)
+        plan = {s: e for s, e in plan.items() if s in enabled}
+        self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
+
+    def poll(self, now: float) -> List[Chunk]:
+        """The data packets due by `now` (each at its tick's time)."""
+        if self.start_time is None:
+            self.start_time = now
+        out: List[Chunk] = []
+        for set_id, entries in self.plan.items():
+            rate = self.base_rates[set_id]
+            tick_now = int((now - self.start_time) * rate)
+            last = self.ticks.get(set_id, tick_now - 1)
+            for tick in range(max(last + 1, tick_now - rate), tick_now + 1):
+                due = [d for d, dec in entries if tick % dec == 0]
+                if due:
+                    t = self.start_time + tick / rate
+                    out.extend((t, p) for p in self._sample_packets(set_id, due, t))
+            self.ticks[set_id] = tick_now
+        return out
+
+    def next_wakeup(self, now: float) -> Optional[float]:
+        """When the next data packet is due (None: no stream)."""
+        if not self.plan or self.start_time is None:
+            return None
+        return min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] for s in self.plan)
+
+    def _sample_packets(self, set_id: int, descriptors: List[int], t: float) -> List[bytes]:
+        """One sample of `descriptors` as a packet and continuation packets (docs/conformance.md
+        section 6): split at field boundaries, the leading shared fields repeated in each."""
+        fields: List[Tuple[int, bytes]] = []
+        for d in descriptors:
+            value = self._data_value(set_id, d, t)
+            if value is not None:
+                fields.append((d, value.encode()))
+        if not fields:
+            return []
+        first_shared = FIRST_SHARED
+        lead = 0
+        while lead < len(fields) and first_shared is not None and fields[lead][0] >= first_shared:
+            lead += 1
+        shared, rest = fields[:lead], fields[lead:]
+        packets: List[bytes] = []
+        overhead = FIELD_HEADER_SIZE
+        size_shared = sum(len(b) + overhead for _, b in shared)
+        current: List[Tuple[int, bytes]] = []
+        size = size_shared
+        for d, b in rest:
+            if current and size + len(b) + overhead > MAX_PAYLOAD:
+                packets.append(_build(set_id, shared + current))
+                current, size = [], size_shared
+            current.append((d, b))
+            size += len(b) + overhead
+        if current or not packets:
+            packets.append(_build(set_id, shared + current))
+        return packets
+
+    def _data_value(self, set_id: int, descriptor: int, t: float) -> Optional[Field]:
+        classes = registry.lookup(set_id, descriptor) or ()
+        cls = next((c for c in classes if c.DEVICE in (None, self.device)), None)
+        if cls is None:
+            return None
+        value = cls()
+        elapsed = t - (t if self.start_time is None else self.start_time)
+        for attr, units, count in _sim.DATA.get(cls, ()):
+            current = getattr(value, attr, None)
+            if isinstance(current, list):
+                n = len(current) if current else (count or 0)
+                setattr(
+                    value,
+                    attr,
+                    [
+                        _plausible(attr, units, i, n, elapsed, self.rng, current[i] if i < len(current) else 0)
+                        for i in range(n)
+                    ],
+                )
+            elif current is not None:
+                setattr(value, attr, _plausible(attr, units, 0, 1, elapsed, self.rng, current))
+        return value
+
+
+# ---------------------------------------------------------------------------------------- helpers
+def _complete(value: Any) -> Any:
+    """Fills a union left at None with the member its selector chooses (a factory value)."""
+    for op in getattr(type(value), "_OPS", ()):
+        if isinstance(op, Choice) and getattr(value, op.name, None) is None:
+            member = op.union._MEMBERS.get(int(getattr(value, op.selector, 0) or 0))
+            if member is not None:
+                setattr(value, op.name, member())
+    return value
+
+
+def _build(set_id: int, fields: List[Tuple[int, bytes]]) -> bytes:
+    b = PacketBuilder(set_id)
+    for d, data in fields:
+        b.add_field(d, data)
+    return b.build()
+
+
+def _function_value(name: str) -> Optional[int]:
+    return next((v for v, n in _meta.FUNCTION_NAMES.items() if n == name), None)
+
+
+def _plain(value: Any) -> Any:
+    if isinstance(value, list):
+        return tuple(_plain(v) for v in value)
+    if dataclasses.is_dataclass(value):
+        return repr(value)
+    return int(value) if isinstance(value, int) else value
+
+
+def _suppressed(command: Field) -> bool:
+    from .session import ack_suppressed
+
+    return bool(ack_suppressed(command))
+
+
+def _descriptor_of(item: Any) -> int:
+    return int(getattr(item, "descriptor", item))
+
+
+def _identify(value: Any, device: str) -> None:
+    """Fills the identification strings of a reply (all blank by default) with the device name."""
+    if not dataclasses.is_dataclass(value):
+        return
+    for f in dataclasses.fields(value):
+        v = getattr(value, f.name)
+        if isinstance(v, bytes) and v.strip(b" \x00") == b"" and v:
+            text = device.encode("ascii", "replace")[: len(v)]
+            setattr(value, f.name, text + b" " * (len(v) - len(text)))
+        elif dataclasses.is_dataclass(v):
+            _identify(v, device)
+
+
+GRAVITY = 9.80665
+
+
+def _plausible(attr: str, units: Any, i: int, n: int, elapsed: float, rng: random.Random, default: Any) -> Any:
+    """A plausible value of a data parameter from its units and name: gravity on the accelerometer
+    (-1 g or -9.81 m/s^2 on the z axis), a fixed position moving slowly, clocks from the elapsed
+    time, small seeded noise on other floats; integers and flags stay at their defaults."""
+    if isinstance(default, bool) or not isinstance(default, (int, float)) or isinstance(default, Enum):
+        return default
+    if isinstance(default, int):
+        if units == "ns":
+            return round(elapsed * 1e9)
+        if units == "us":
+            return round(elapsed * 1e6)
+        if units == "ms":
+            return round(elapsed * 1e3)
+        if units == "weeks":
+            return 2400
+        return default
+    noise = rng.gauss(0.0, 0.001)
+    if units == "s":
+        return 345600.0 + elapsed
+    if units in ("g", "m/s^2") and n == 3:
+        return (-1.0 if units == "g" else -GRAVITY) + noise if i == 2 else noise
+    if attr == "gravity_magnitude":
+        return GRAVITY + noise
+    if attr == "latitude":
+        return 46.5197 + elapsed * 1e-6
+    if attr == "longitude":
+        return 6.6323 + elapsed * 1e-6
+    if attr in ("ellipsoid_height", "height", "msl_height"):
+        return 372.0 + 0.01 * math.sin(elapsed)
+    if units == "degC":
+        return 25.0 + noise
+    if units == "mbar":
+        return 1013.25 + noise
+    if attr in ("q",) and n == 4:
+        return 1.0 if i == 0 else noise
+    return noise
+
+
+# ---------------------------------------------------------------------------------------- replay
+def replay_chunks(data: bytes, fast: bool = False) -> List[Tuple[float, bytes]]:
+    """The packets of a capture with their times from its first: from the shared timestamps
+    (_columns.TIMES) of the data packets, each packet sent when its time comes (a packet without
+    one at the time of the one before); all at 0 when `fast`."""
+    from . import _columns
+
+    times = {(s, d): (a, per) for s, d, a, per in getattr(_columns, "TIMES", ())}
+    out: List[Tuple[float, bytes]] = []
+    first: Optional[float] = None
+    last = 0.0
+    for event in Parser().feed(data) + Parser().flush():
+        if not isinstance(event, RawPacket):
+            continue
+        t = last
+        if not fast:
+            try:
+                packet = decode_packet(event.data, check=False)
+            except ValueError:
+                packet = None
+            for entry in packet.fields if packet is not None else []:
+                if isinstance(entry, DecodedField):
+                    src = times.get((entry.value.SET, entry.descriptor)) or times.get((_shared_set(), entry.descriptor))
+                    if src is not None:
+                        stamp = float(getattr(entry.value, src[0])) / src[1]
+                        first = stamp if first is None else first
+                        t = max(last, stamp - first)
+                        break
+        last = t
+        out.append((0.0 if fast else t, event.data))
+    return out
+
+
+def _shared_set() -> int:
+    return -1 if registry.SHARED_SET is None else int(registry.SHARED_SET)
+
+
+# ---------------------------------------------------------------------------------------- serving
+class _Link:
+    """One byte pipe to the host (a pty master or an accepted TCP connection), non-blocking: what
+    the host does not read yet waits in `backlog`, up to BACKLOG bytes (more is dropped, as a
+    device's output buffer overruns)."""
+
+    BACKLOG = 1 << 18
+
+    def __init__(self, fd: int, sock: Optional[socket.socket] = None) -> None:
+        self.fd = fd
+        self.sock = sock
+        self.backlog = bytearray()
+        os.set_blocking(fd, False)
+
+    def write(self, data: bytes) -> None:
+        if len(self.backlog) + len(data) <= self.BACKLOG:
+            self.backlog += data
+        self.flush()
+
+    def flush(self) -> None:
+        while self.backlog:
+            try:
+                n = os.write(self.fd, self.backlog)
+            except BlockingIOError:
+                return
+            except OSError as e:
+                if e.errno == errno.EIO:  # a pty whose host closed it: keep the bytes for the next
+                    return
+                raise
+            del self.backlog[:n]
+
+    def read(self) -> Optional[bytes]:
+        """The bytes the host sent (b"": none yet), None when a TCP host has gone."""
+        try:
+            data = os.read(self.fd, 65536)
+        except BlockingIOError:
+            return b""
+        except OSError as e:
+            if e.errno == errno.EIO and self.sock is None:
+                return b""
+            return None
+        if not data and self.sock is not None:
+            return None
+        return data
+
+    def close(self) -> None:
+        if self.sock is not None:
+            self.sock.close()
+
+
+def serve(
+    listen: str, sim: Optional[Simulator], replay: Optional[List[Tuple[float, bytes]]] = None, out: Any = None
+) -> None:
+    """Serves `sim` (or a replay) on `listen` ("pty" or "tcp:HOST:PORT") until terminated; the
+    first line written to `out` (stdout) is the address to connect to. A pty's slave side stays
+    open here too, so its master never reads end-of-file between two hosts."""
+    out = out or sys.stdout
+    if listen == "pty":
+        import tty
+
+        master, slave = os.openpty()
+        tty.setraw(slave)
+        print(os.ttyname(slave), file=out, flush=True)
+        _loop(_Link(master), None, sim, replay)
+        return
+    if not listen.startswith("tcp:"):
+        raise ValueError(f"bad --listen {listen!r} (expected pty or tcp:HOST:PORT)")
+    host, _, port = listen[4:].rpartition(":")
+    host = host.strip("[]") or "127.0.0.1"
+    if not port.isdigit() or int(port) > 65535:
+        raise ValueError(f"bad --listen {listen!r} (expected tcp:HOST:PORT; port 0 picks a free one)")
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    server = socket.socket(family, socket.SOCK_STREAM)
+    server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    server.bind((host, int(port)))
+    server.listen(1)
+    shown = f"[{host}]" if family == socket.AF_INET6 else host
+    print(f"tcp:{shown}:{server.getsockname()[1]}", file=out, flush=True)
+    _loop(None, server, sim, replay)
+
+
+def _loop(
+    link: Optional[_Link],
+    server: Optional[socket.socket],
+    sim: Optional[Simulator],
+    replay: Optional[List[Tuple[float, bytes]]],
+) -> None:
+    """Serves one host at a time (TCP: the next connection after the last one closed); the
+    simulated settings persist across connections, as a device's do."""
+    pending: List[Chunk] = []
+    started = time.monotonic()
+    queue = list(replay or [])
+    while True:
+        now = time.monotonic()
+        if link is not None:
+            if sim is not None:
+                pending.extend(sim.poll(now))
+            while queue and started + queue[0][0] <= now:
+                pending.append((now, queue.pop(0)[1]))
+            pending.sort(key=lambda c: c[0])
+            while pending and pending[0][0] <= now:
+                link.write(pending.pop(0)[1])
+        wake = [c[0] for c in pending[:1]]
+        if sim is not None and link is not None:
+            w = sim.next_wakeup(now)
+            if w is not None:
+                wake.append(w)
+        if queue and link is not None:
+            wake.append(started + queue[0][0])
+        timeout = min(0.5, max(0.0, min(wake) - now)) if wake else 0.5
+        readers = [link.fd] if link is not None else []
+        if server is not None and link is None:
+            readers.append(server.fileno())
+        writers = [link.fd] if link is not None and link.backlog else []
+        ready, writable, _ = select.select(readers, writers, [], timeout)
+        if link is not None and writable:
+            link.flush()
+        if server is not None and server.fileno() in ready:
+            conn, _ = server.accept()
+            conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+            link = _Link(conn.fileno(), conn)
+            started = time.monotonic()
+            queue = list(replay or [])
+            continue
+        if link is not None and link.fd in ready:
+            data = link.read()
+            if data is None:
+                link.close()
+                link = None
+                pending.clear()
+                continue
+            if data and sim is not None:
+                pending.extend(sim.feed(data, time.monotonic()))
+            elif not data and link.sock is None:
+                time.sleep(0.01)  # a pty without a host reports EIO at once: do not spin
+
+
+# ---------------------------------------------------------------------------------------- command
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog=f"python -m {__package__}.sim",
+        description="A simulated device answering commands and streaming data as the spec says "
+        "(docs/conformance.md section 9). Prints the address it listens on, then serves until terminated.",
+    )
+    p.add_argument("--listen", required=True, help="pty, or tcp:HOST:PORT (port 0: a free port)")
+    p.add_argument("--device", help=f"device model: {', '.join(registry.DEVICES)} (default {registry.DEVICES[0]})")
+    p.add_argument("--seed", type=int, default=0, help="seed of the simulated values (default 0)")
+    p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
+    p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
+    for kind, what in (
+        ("drop", "COMMAND[@N]: send no reply to COMMAND"),
+        ("delay", "COMMAND:MS[@N]: send the reply MS milliseconds late"),
+        ("corrupt", "COMMAND[@N]: send the reply with a wrong checksum"),
+        ("split", "COMMAND[@N]: send the reply in two writes 20 ms apart"),
+        ("garbage", "COMMAND[:BYTES][@N]: send random bytes (7 by default) before the reply"),
+        ("nack", "COMMAND[:CODE][@N]: answer COMMAND with a NACK (default: the invalid-parameter code)"),
+    ):
+        p.add_argument(
+            f"--{kind}",
+            action="append",
+            default=[],
+            metavar="SPEC",
+            help=what + "; COMMAND a name or 'all', @N the first N times only",
+        )
+    return p
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    parser = _parser()
+    args = parser.parse_args(argv)
+    try:
+        faults = [Fault.parse(kind, text) for kind in FAULT_KINDS for text in getattr(args, kind)]
+        replay = None
+        sim = None
+        if args.replay:
+            try:
+                with open(args.replay, "rb") as f:
+                    replay = replay_chunks(f.read(), fast=args.fast)
+            except OSError as e:
+                raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
+        else:
+            sim = Simulator(args.device, args.seed, faults)
+        serve(args.listen, sim, replay)
+    except ValueError as e:
+        print(f"{parser.prog}: {e}", file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"{parser.prog}: {e.strerror or e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 0
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

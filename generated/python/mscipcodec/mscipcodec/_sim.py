@@ -1,0 +1,92 @@
+"""What the Memsense MS-CIP spec says, for the simulated device (sim.py, docs/conformance.md
+section 9): per command layout the parameters each function sends (the key of a setting) and its
+enum parameters; per data layout the units of its values; the commands that configure streaming
+(generator/targets/python/backend.py STREAMING), base rates in Hz and the NACK code of each refusal.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict, Tuple
+
+from . import base, imu_config, imu_data
+
+# NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
+# a command the simulator failed to carry out.
+NACK: Dict[str, int] = {
+    "unknown_descriptor": 3,
+    "unknown_set": 2,
+    "invalid_parameter": 4,
+    "failed": 4,
+}
+
+# class -> ({function value: parameters it sends, without the selector}, enum parameters)
+COMMANDS: Dict[Any, Tuple[Dict[int, Tuple[str, ...]], Tuple[str, ...]]] = {
+    base.Ping: ({}, ()),
+    base.GetDeviceMessages: ({}, ()),
+    base.DeviceReset: ({}, ()),
+    base.GetDeviceModel: ({}, ()),
+    base.GetDeviceSn: ({}, ()),
+    base.GetDeviceFw: ({}, ()),
+    base.GetDeviceCal: ({}, ()),
+    base.CorrelateGpsTime: ({}, ()),
+    imu_config.UartBaudRate: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("baud_rate",)),
+    imu_config.Filter: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("bandwidth",)),
+    imu_config.SampleRate: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ()),
+    imu_config.SelectSensors: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ()),
+    imu_config.GetInternalSampleRate: ({}, ()),
+    imu_config.AccelRange: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("range",)),
+    imu_config.GyroRange: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("range",)),
+    imu_config.ConfigAll: ({3: (), 4: (), 5: ()}, ()),
+    imu_config.DataOnOff: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("control",)),
+    imu_config.XtrigOnOff: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("control",)),
+    imu_config.SelectSensorsRevB: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ()),
+    imu_config.AuxAccelRange: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("range",)),
+}
+
+# class -> ((parameter, units, fixed count or None), ...) of its plain values
+DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
+    imu_data.ScaledAccel: (("accel", "g", 3),),
+    imu_data.ScaledGyro: (("gyro", "deg/s", 3),),
+    imu_data.ScaledMag: (("mag", "gauss", 3),),
+    imu_data.DeltaTheta: (("delta_theta", "rad", 3),),
+    imu_data.DeltaVelocity: (("delta_velocity", "m/s", 3),),
+    imu_data.ScaledPressure: (("pressure", "mbar", None),),
+    imu_data.ScaledTemperature: (("temperature", "degC", None),),
+    imu_data.GpsCorrelatedTime: (("seconds", "s", None), ("week", "weeks", None)),
+    imu_data.ScaledAuxAccel: (("accel", "g", 3),),
+}
+
+# Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
+FORMATS: Dict[Any, Any] = {
+    imu_config.SelectSensors: (162, "sensors", None, None),
+    imu_config.SelectSensorsRevB: (162, "sensors", None, None),
+}
+
+# Stream control: class -> (set, enable parameter)
+ENABLES: Dict[Any, Any] = {
+    imu_config.DataOnOff: (162, "control"),
+}
+
+# Base rate queries: class -> set
+RATES: Dict[Any, Any] = {
+    imu_config.GetInternalSampleRate: 162,
+}
+
+# Poll commands: class -> (set, descriptor list parameter)
+POLLS: Dict[Any, Any] = {}
+
+# One decimation for every streamed field (when the format list has none): class -> parameter
+DECIMATION: Dict[Any, str] = {
+    imu_config.SampleRate: "decimation",
+}
+
+BASE_RATES: Dict[str, Dict[int, int]] = {"ms_imu3020": {162: 1000}}
+
+# Commands whose save, load and default apply to every setting at once
+ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
+
+DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
+
+# Factory values the manuals state (the spec's `default`, with its source line); every other
+# parameter's factory value is zero: class -> {parameter: value}
+FACTORY: Dict[Any, Dict[str, Any]] = {}

@@ -1,0 +1,514 @@
+"""End to end: sessions against the simulated device (docs/conformance.md section 9).
+
+1. The conformance tool of every language of SESSION_LANGUAGES (`tests/conformance/session LANG
+   --connect ADDRESS`) against `tests/conformance/simulate` over a pseudo-terminal and over TCP,
+   driven by command lines only (so any language runs it): ping, device information, and for every
+   command that has write and read, with values generated from the spec (tests/conformance/
+   samples.py): read (factory) -> write A -> read A -> save -> write B -> read B -> load -> read A
+   -> default -> read factory; NACKs for a command or a function the model does not support and
+   for an enum value the spec does not define; a NACK, a timeout and a corrupted reply forced by
+   the simulator's fault options.
+2. The Python blocking API (`Device`) over both transports: streaming at the configured rate with
+   commands answered meanwhile, continuation packets grouped into samples, a poll, a dropped
+   reply's timeout; raw packets: an unknown descriptor and set, a count above the maximum.
+3. The simulator's own errors: bad options (exit 2), replay of a capture.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import select
+import socket
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+from generator.spec import load_spec
+from tests.conformance.samples import field_samples
+from tests.helpers.generated import python_package
+
+ROOT = Path(__file__).resolve().parents[2]
+SIMULATE = ROOT / "tests" / "conformance" / "simulate"
+SESSION = ROOT / "tests" / "conformance" / "session"
+# The session languages the end-to-end tests run (tests/conformance/session LANG): one place.
+SESSION_LANGUAGES = ["python"]
+TRANSPORTS = ["pty", "tcp"]
+IR = load_spec()
+PROTOCOLS = {p["name"]: p for p in IR["protocols"]}
+# (protocol, device) the round trips run on: every device model of the spec.
+MODELS = [(p["name"], d["id"]) for p in IR["protocols"] for d in p["devices"]]
+
+
+class Sim:
+    """A running `tests/conformance/simulate`; `address` is its first line."""
+
+    def __init__(self, protocol: str, device: str, listen: str, *extra: str) -> None:
+        cmd = [str(SIMULATE), "--listen", listen, "--protocol", protocol, "--device", device, *extra]
+        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        ready, _, _ = select.select([self.proc.stdout], [], [], 30)
+        line = self.proc.stdout.readline().strip() if ready else ""
+        if not line:
+            self.close()
+            raise AssertionError(f"the simulator printed no address: {self.proc.stderr.read()}")
+        self.address = line
+
+    def close(self) -> None:
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            self.proc.wait(10)
+
+    def __enter__(self) -> Sim:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def listen_for(transport: str) -> str:
+    return "pty" if transport == "pty" else "tcp:127.0.0.1:0"
+
+
+def session_tool(lang: str, protocol: str, address: str, lines: list[str], *extra: str) -> list[dict]:
+    cmd = [str(SESSION), lang, "--connect", address, "--protocol", protocol, "--timeout-ms", "300", *extra]
+    run = subprocess.run(cmd, input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    return [json.loads(x) for x in run.stdout.splitlines()]
+
+
+def results(out: list[dict]) -> list[dict]:
+    return [x for x in out if "result" in x]
+
+
+def command_line(protocol: dict, set_id: int, descriptor: int, name: str, values: dict) -> str:
+    field = {"descriptor": descriptor, "name": name, "values": values}
+    return json.dumps({"offset": 0, "set": set_id, "fields": [field]}, separators=(",", ":"))
+
+
+# ------------------------------------------------------------------------------- the round trips
+def _function_value(protocol: dict, name: str) -> int:
+    enum = protocol["function_selector"]["enum"]
+    t = next(t for t in protocol["types"] if t["name"] == enum)
+    return next(v["value"] for v in t["values"] if v["name"] == name)
+
+
+def _command(protocol: dict, set_id: int, field: dict, device: str, values: dict) -> str:
+    """A command line for the session tool (the device named when the command has per-device layouts)."""
+    entry = {"descriptor": field["id"], "name": field["name"]}
+    if len(field["variants"]) > 1:
+        entry["device"] = device
+    entry["values"] = values
+    return json.dumps({"offset": 0, "set": set_id, "fields": [entry]}, separators=(",", ":"))
+
+
+def _perturbed(value):
+    """Another value of the same shape: floats doubled (still exact), bools negated."""
+    if isinstance(value, dict):
+        return {k: v if k == "function" else _perturbed(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_perturbed(v) for v in value]
+    if isinstance(value, bool):
+        return not value
+    if isinstance(value, float):
+        return value * 2 if value else 0.5
+    return value
+
+
+def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
+    """The factory values of the read reply's plain parameters (by name): the spec's default of the
+    command parameter of that name where the manual states one, else zero (an enum without a zero
+    value: its first value)."""
+    types = {t["name"]: t for t in protocol["types"]}
+    defaults = {q["name"]: q["default"]["value"] for q in variant["params"] if q.get("default")}
+    rid = next(r["id"] for r in variant["responses"] if (r["when"] or {}).get("function") == "read")
+    reply = next(f for f in set_["fields"] if f["id"] == rid)
+    params = next(v for v in reply["variants"] if v["device"] in (None, device))["params"]
+    if len(params) == len(variant["params"]):  # a reply parameter named otherwise (enable -> enabled)
+        names = [q["name"] for q in variant["params"]]
+        defaults = {r["name"]: defaults[c] for r, c in zip(params, names) if c in defaults} | defaults
+    out = {}
+    for q in params:
+        kind = q["type"]["kind"]
+        if q["count"] is not None or kind not in ("primitive", "enum", "bitfield"):
+            continue
+        if q["name"] in defaults:
+            out[q["name"]] = defaults[q["name"]]
+        elif kind == "enum":
+            values = [v["value"] for v in types[q["type"]["name"]]["values"]]
+            out[q["name"]] = 0 if 0 in values else values[0]
+        elif q["type"].get("name") == "bool":
+            out[q["name"]] = False
+        else:
+            out[q["name"]] = 0
+    return out
+
+
+def keys_of(line: str) -> set:
+    return set(json.loads(line)["fields"][0]["values"])
+
+
+def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], list]]:
+    """Per command with write and read on `device`: (name, its lines, what each read must give
+    back: "factory", or the values written)."""
+    samples = field_samples(protocol)
+    plans = []
+    for s in protocol["sets"]:
+        if s["kind"] != "command":
+            continue
+        for f in s["fields"]:
+            if f["role"] != "command" or device not in f["devices"]:
+                continue
+            v = next(
+                (v for v in f["variants"] if v["device"] in (None, device) and device in v["devices"]),
+                None,
+            )
+            if (
+                v is None
+                or not v["functions"]
+                or not {"write", "read", "save", "load", "default"} <= set(v["functions"])
+            ):
+                continue
+            sel = "function"
+            write = _function_value(protocol, "write")
+            writes = [
+                x
+                for x in samples
+                if x.set_id == s["id"]
+                and x.descriptor == f["id"]
+                and x.device in (None, device)
+                and x.values.get(sel) == write
+            ]
+            distinct = list({json.dumps(x.values, sort_keys=True): x for x in writes}.values())
+            if not distinct:
+                continue
+            order = sorted((x.values for x in distinct), key=lambda x: len(json.dumps(x)))
+            full = [x for x in order if len(x) == max(map(len, order))]  # every parameter present
+            a = full[0]  # not the longest: its read reply must fit beside the ack in one packet
+            keys = [q["name"] for q in v["params"] if q["functions"] and "read" in q["functions"] and not q["optional"]]
+            other = full[1] if len(full) > 2 else _perturbed(a)
+            b = {**other, **{k: a[k] for k in keys}}  # the same setting, other values
+
+            def line(function: str, values: dict, set_id: int = s["id"], field: dict = f) -> str:
+                return _command(
+                    protocol, set_id, field, device, {**values, "function": _function_value(protocol, function)}
+                )
+
+            key = {k: a[k] for k in keys}
+            lines = [line("read", key), line("write", a), line("read", key), line("save", key), line("write", b)]
+            lines += [line("read", key), line("load", key), line("read", key), line("default", key), line("read", key)]
+            expect = [None, "ack", a, "ack", "ack", b, "ack", a, "ack", "factory"]
+            plans.append((f["name"], lines, expect, sel, _factory(protocol, s, v, device)))
+    return plans
+
+
+def check_roundtrips(protocol: dict, device: str, out: list[dict]) -> int:
+    plans = roundtrip_plan(protocol, device)
+    res = results(out)
+    assert len(res) == sum(len(p[1]) for p in plans)
+    at = 0
+    for name, lines, expect, sel, defaults in plans:
+        got = res[at : at + len(lines)]
+        at += len(lines)
+        assert all(r["result"] == "ack" for r in got), (name, got)
+        factory = got[0]["reply"][0]["values"]
+        # the factory value: the spec's default where the manual states one, else zero
+        for k, v in defaults.items():
+            if k not in keys_of(lines[0]):
+                assert factory[k] == v, (name, k, factory[k], v)
+        for want, r in zip(expect, got):
+            if want in (None, "ack"):
+                continue
+            reply = r["reply"][0]["values"]
+            if want == "factory":
+                assert reply == factory, (name, "default", reply, factory)
+                continue
+            shared = {k: v for k, v in want.items() if k in reply and k != sel}
+            assert shared, (name, want, reply)
+            assert {k: reply[k] for k in shared} == shared, (name, want, reply)
+    return len(plans)
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+@pytest.mark.parametrize("protocol,device", MODELS)
+def test_roundtrips_through_the_session_tool(lang: str, protocol: str, device: str, transport: str) -> None:
+    proto = PROTOCOLS[protocol]
+    ping = next(f for s in proto["sets"] if s["id"] == 1 for f in s["fields"] if f["name"] == "ping")
+    lines = [command_line(proto, 1, ping["id"], "ping", {})]
+    plans = roundtrip_plan(proto, device)
+    assert len(plans) >= (3 if protocol == "mscip" else 40), [p[0] for p in plans]
+    for p in plans:
+        lines += p[1]
+    with Sim(protocol, device, listen_for(transport)) as sim:
+        out = session_tool(lang, protocol, sim.address, lines, "--device", device)
+    res = results(out)
+    assert res[0] == {"line": 1, "result": "ack", "code": 0, "reply": []}
+    assert check_roundtrips(proto, device, [*res[1:]]) == len(plans)
+
+
+MIP = PROTOCOLS["mip"]
+INFO = command_line(MIP, 1, 3, "get_device_info", {})
+PING = command_line(MIP, 1, 1, "ping", {})
+GX5_ONLY = command_line(MIP, 12, 0x06, "get_imu_base_rate", {})
+STARTUP = {"descriptor": 0x30, "name": "device_startup_settings", "device": "gx5_45", "values": {"function": 2}}
+GX5_READ_ONLY = json.dumps({"offset": 0, "set": 12, "fields": [STARTUP]})
+BAD_ENUM = command_line(MIP, 12, 0x28, "pps_source", {"function": 1, "source": 99})
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+def test_nacks_faults_and_device_information(lang: str, transport: str) -> None:
+    # No --device for the tool: it sends what the simulated CV7-INS must refuse itself.
+    lines = [INFO, GX5_ONLY, GX5_READ_ONLY, BAD_ENUM, *[PING] * 7]
+    faults = ["--nack", "ping:4@1", "--drop", "ping@1", "--corrupt", "ping@1"]
+    faults += ["--delay", "ping:150@1", "--split", "ping@1", "--garbage", "ping:5@1"]
+    with Sim("mip", "cv7_ins", listen_for(transport), *faults) as sim:
+        out = session_tool(lang, "mip", sim.address, lines)
+    res = results(out)
+    info = res[0]["reply"][0]["values"]["info"]
+    assert res[0]["result"] == "ack" and info["model_name"].startswith("3DM-CV7-GNSS/INS"), res[0]
+    assert [(r["result"], r["code"]) for r in res[1:]] == [
+        ("nack", 1),  # get_imu_base_rate: a GX5-45 command, unknown to the CV7-INS
+        ("nack", 3),  # device_startup_settings read: the CV7-INS has no read
+        ("nack", 3),  # mode 99: the enum does not define it
+        # one fault per reply, the first that applies in the order nack, drop, delay, corrupt, split, garbage
+        ("nack", 4),  # --nack ping:4@1
+        ("timeout", None),  # --drop ping@1
+        ("ack", 0),  # --delay ping:150@1, within the 300 ms timeout
+        ("timeout", None),  # --corrupt ping@1: the reply is skipped as a bad packet
+        ("ack", 0),  # --split ping@1: two writes 20 ms apart
+        ("ack", 0),  # --garbage ping:5@1: five bytes skipped before the reply
+        ("ack", 0),
+    ]
+    skipped = [x for x in out if "skipped" in x]
+    assert len(skipped) == 2 and len(bytes.fromhex(skipped[1]["skipped"])) == 5, out
+
+
+# ------------------------------------------------------------------------------- the Python API
+def pump_for(dev, seconds: float) -> None:
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        dev.pump(max(1, int((end - time.monotonic()) * 1000)))
+
+
+def open_device(pkg, address: str, device: str):
+    session = importlib.import_module(pkg.__name__ + ".session")
+    transport = importlib.import_module(pkg.__name__ + ".transport")
+    return session.Device(transport.open_transport(address), device=device, timeout_ms=500)
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+def test_python_device_streams_at_the_configured_rate(transport: str) -> None:
+    pkg = python_package("mipcodec")
+    t = pkg.types
+    with Sim("mip", "cv7_ins", listen_for(transport), "--seed", "7") as sim:
+        dev = open_device(pkg, sim.address, "cv7_ins")
+        try:
+            assert dev.threedm.get_base_rate(desc_set=0x80).rate == 1000
+            fmt = [t.DescriptorRate(descriptor=d, decimation=20) for d in (0xD5, 0x04, 0x05)]
+            dev.threedm.message_format.write(desc_set=0x80, descriptors=fmt)
+            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x80, enable=True)
+            assert [x.descriptor for x in dev.threedm.message_format.read(desc_set=0x80).descriptors] == [0xD5, 4, 5]
+            accel = []
+            dev.on_field(0x80, 0x04, lambda value, packet: accel.append(value.scaled_accel))
+            start = time.monotonic()
+            pings = 0
+            while time.monotonic() - start < 1.0:
+                dev.base.ping()  # commands are answered while data streams
+                pings += 1
+                pump_for(dev, 0.02)
+            elapsed = time.monotonic() - start
+            rate = len(accel) / elapsed
+            assert 40 <= rate <= 60, (len(accel), elapsed)  # 1000 Hz / 20
+            assert pings > 5
+            assert all(abs(a[2] + 1.0) < 0.05 and abs(a[0]) < 0.05 for a in accel)  # gravity on z
+            stream = dev.threedm.data_stream_control
+            stream.write_cv7_ins(desc_set=0x80, enable=False)
+            pump_for(dev, 0.1)
+            accel.clear()
+            pump_for(dev, 0.3)
+            assert accel == []
+            stream.save_cv7_ins(desc_set=0x80)  # startup value: disabled
+            stream.default_cv7_ins(desc_set=0x80)  # factory value: enabled (the spec's default, CV7 manual)
+            assert stream.read_cv7_ins(desc_set=0x80).enabled is True
+            pump_for(dev, 0.2)
+            assert accel, "default restores the factory value, enabled"
+            stream.load_cv7_ins(desc_set=0x80)
+            assert stream.read_cv7_ins(desc_set=0x80).enabled is False
+            pump_for(dev, 0.1)
+            accel.clear()
+            pump_for(dev, 0.3)
+            assert accel == [], "load restores the saved value, disabled"
+        finally:
+            dev.transport.close()
+
+
+def test_python_device_continuation_packets_and_poll() -> None:
+    pkg = python_package("mipcodec")
+    t = pkg.types
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "cv7_ins")
+        try:
+            packets, samples = [], []
+            dev.on_packet(packets.append)
+            dev.on_sample(samples.append)
+            # 0xD5 first (shared timestamp) and more data than one packet holds (255 bytes)
+            descriptors = [0xD5, *range(0x01, 0x0F)]
+            fmt = [t.DescriptorRate(descriptor=d, decimation=100) for d in descriptors]
+            dev.threedm.message_format.write(desc_set=0x82, descriptors=fmt)
+            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x82, enable=True)
+            pump_for(dev, 0.35)
+            dev.threedm.data_stream_control.write_cv7_ins(desc_set=0x82, enable=False)
+            pump_for(dev, 0.05)
+            data = [p for p in packets if p.set == 0x82]
+            assert len(data) >= 4
+            assert len(samples) >= 2
+            for sample in samples[:-1]:
+                assert len(sample.offsets) >= 2  # a packet and its continuation packets
+                names = [f.name for f in sample.fields]
+                assert names.count("reference_timestamp") == 1
+                assert "llh_position" in names and "comp_angular_rate" in names
+            for p in data:
+                assert p.fields[0].descriptor == 0xD5  # repeated in every continuation packet
+            packets.clear()
+            dev.threedm.poll_data(desc_set=0x80, suppress_ack=False, descriptors=[0x04])
+            pump_for(dev, 0.1)
+            polled = [p for p in packets if p.set == 0x80]
+            assert len(polled) == 1 and [f.descriptor for f in polled[0].fields] == [0x04]
+        finally:
+            dev.transport.close()
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+def test_python_device_timeout_from_a_dropped_reply(transport: str) -> None:
+    pkg = python_package("mscipcodec")
+    with Sim(
+        "mscip", "ms_imu3020", listen_for(transport), "--drop", "ping@1", "--delay", "get_device_model:100"
+    ) as sim:
+        dev = open_device(pkg, sim.address, "ms_imu3020")
+        try:
+            start = time.monotonic()
+            with pytest.raises(importlib.import_module("mscipcodec.session").CommandTimeout):
+                dev.base.ping()
+            assert 0.45 <= time.monotonic() - start < 2.0
+            dev.base.ping()
+            start = time.monotonic()
+            dev.base.get_device_model()
+            assert time.monotonic() - start >= 0.09
+        finally:
+            dev.transport.close()
+
+
+def test_mscip_streams_the_selected_sensors() -> None:
+    pkg = python_package("mscipcodec")
+    t = pkg.types
+    with Sim("mscip", "ms_imu3020", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "ms_imu3020")
+        try:
+            packets = []
+            dev.on_packet(packets.append)
+            dev.imu_config.sample_rate.write(decimation=50)
+            dev.imu_config.select_sensors.write(reserved=0, sensors=[t.SensorCode.SCALED_ACCEL])
+            dev.imu_config.data_on_off.write(control=t.OnOff.ON)
+            pump_for(dev, 0.5)
+            dev.imu_config.data_on_off.write(control=t.OnOff.OFF)
+            data = [p for p in packets if p.set == 0xA2]
+            assert 7 <= len(data) <= 13, len(data)  # 1000 Hz / 50 for 0.5 s
+            assert all(f.descriptor == 0x81 for p in data for f in p.fields)
+        finally:
+            dev.transport.close()
+
+
+# ------------------------------------------------------------------------------- raw packets
+def raw_exchange(address: str, packet: bytes) -> bytes:
+    host, _, port = address[4:].rpartition(":")
+    with socket.create_connection((host, int(port)), timeout=5) as s:
+        s.sendall(packet)
+        s.settimeout(1.0)
+        return s.recv(4096)
+
+
+def test_raw_nacks_unknown_descriptor_set_and_count_above_maximum() -> None:
+    pkg = python_package("mipcodec")
+    b = pkg.PacketBuilder
+    cases = [
+        (b(0x01).add_field(0x55, b"").build(), 0x55, 1),  # unknown command descriptor
+        (b(0x0C).add_field(0x0F, bytes([1, 0x80, 84]) + bytes(3 * 84)[:240]).build(), 0x0F, 3),  # count 84 > 83
+    ]
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0") as sim:
+        for packet, descriptor, code in cases:
+            reply = pkg.decode_packet(raw_exchange(sim.address, packet))
+            ack = reply.fields[0].value
+            assert (ack.command_descriptor, int(ack.ack_code)) == (descriptor, code)
+        reply = raw_exchange(sim.address, b(0x7E).add_field(0x01, b"").build())
+        assert int(pkg.decode_packet(reply).fields[0].value.ack_code) == 6  # unknown descriptor set
+
+
+# ------------------------------------------------------------------------------- the tool itself
+def test_simulator_usage_errors() -> None:
+    for args in (
+        ["--listen", "udp:1"],
+        ["--listen", "pty", "--device", "nope"],
+        ["--listen", "pty", "--delay", "ping"],
+    ):
+        run = subprocess.run([str(SIMULATE), *args], capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2, (args, run.stdout, run.stderr)
+        assert "Traceback" not in run.stderr and run.stderr.strip(), run.stderr
+
+
+def test_replay_of_a_capture(tmp_path: Path) -> None:
+    pkg = python_package("mipcodec")
+    capture = b"".join(pkg.PacketBuilder(1).add_field(1, b"").build() for _ in range(3))
+    path = tmp_path / "capture.bin"
+    path.write_bytes(capture)
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0", "--replay", str(path), "--fast") as sim:
+        host, _, port = sim.address[4:].rpartition(":")
+        got = b""
+        with socket.create_connection((host, int(port)), timeout=5) as s:
+            s.settimeout(2.0)
+            while len(got) < len(capture):
+                chunk = s.recv(4096)
+                if not chunk:
+                    break
+                got += chunk
+    assert got == capture
+
+
+def test_replay_pace_follows_the_timestamps() -> None:
+    pkg = python_package("mipcodec")
+    sim = importlib.import_module("mipcodec.sim")
+    shared = pkg.shared
+    packets = [
+        pkg.PacketBuilder(0x80).add(shared.ReferenceTimestamp(nanoseconds=n * 100_000_000)).build() for n in range(4)
+    ]
+    chunks = sim.replay_chunks(b"".join(packets))
+    assert [round(t, 3) for t, _ in chunks] == [0.0, 0.1, 0.2, 0.3]
+    assert [t for t, _ in sim.replay_chunks(b"".join(packets), fast=True)] == [0.0] * 4
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+def test_streaming_through_the_session_tool(lang: str, transport: str) -> None:
+    """Data at the configured rate reaches any language's tool while it waits for a reply (one
+    dropped by the simulator: the tool waits the whole 300 ms timeout), and commands are answered
+    while the data streams."""
+    fmt = {"function": 1, "desc_set": 0x80, "num_descriptors": 2}
+    fmt["descriptors"] = [{"descriptor": 0xD5, "decimation": 10}, {"descriptor": 0x04, "decimation": 10}]
+    control = {"descriptor": 0x11, "name": "data_stream_control", "device": "cv7_ins"}
+    control["values"] = {"function": 1, "desc_set": 0x80, "enable": True}
+    lines = [
+        command_line(MIP, 12, 0x0F, "message_format", fmt),
+        json.dumps({"offset": 0, "set": 12, "fields": [control]}),
+        INFO,
+        PING,
+    ]
+    with Sim("mip", "cv7_ins", listen_for(transport), "--drop", "get_device_info") as sim:
+        out = session_tool(lang, "mip", sim.address, lines, "--device", "cv7_ins")
+    assert [r["result"] for r in results(out)] == ["ack", "ack", "timeout", "ack"]
+    data = [x for x in out if x.get("set") == 0x80]
+    assert 20 <= len(data) <= 60, len(data)  # 100 Hz (1 kHz / 10) for a little over 300 ms
+    assert all([f["descriptor"] for f in p["fields"]] == [0xD5, 0x04] for p in data)
+    stamps = [p["fields"][0]["values"]["nanoseconds"] for p in data]
+    assert all(b - a == 10_000_000 for a, b in zip(stamps, stamps[1:]))  # every 10 ms of device time

@@ -1,0 +1,62 @@
+"""What the Demo protocol with every spec feature spec says, for the simulated device (sim.py, docs/conformance.md
+section 9): per command layout the parameters each function sends (the key of a setting) and its
+enum parameters; per data layout the units of its values; the commands that configure streaming
+(generator/targets/python/backend.py STREAMING), base rates in Hz and the NACK code of each refusal.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict, Tuple
+
+from . import commands, data, receiver_1, receiver_2, shared
+
+# NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
+# a command the simulator failed to carry out.
+NACK: Dict[str, int] = {
+    "unknown_descriptor": 1,
+    "unknown_set": 1,
+    "invalid_parameter": 1,
+    "failed": 1,
+}
+
+# class -> ({function value: parameters it sends, without the selector}, enum parameters)
+COMMANDS: Dict[Any, Tuple[Dict[int, Tuple[str, ...]], Tuple[str, ...]]] = {
+    commands.Ping: ({}, ()),
+    commands.Configure: ({1: ("instance",), 2: ("instance",), 3: ("instance",)}, ("mode",)),
+    commands.PerDevice_dev_a: ({}, ()),
+    commands.PerDevice_dev_b: ({}, ()),
+}
+
+# class -> ((parameter, units, fixed count or None), ...) of its plain values
+DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
+    data.Sample: (("quat", None, 4), ("big", None, None), ("small", None, None), ("f", None, None)),
+    receiver_1.LlhPosition: (("latitude", "deg", None), ("longitude", "deg", None), ("valid_flags", None, None)),
+    receiver_2.LlhPosition: (("latitude", "deg", None), ("longitude", "deg", None), ("valid_flags", None, None)),
+    shared.Timestamp: (("nanoseconds", None, None),),
+}
+
+# Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
+FORMATS: Dict[Any, Any] = {}
+
+# Stream control: class -> (set, enable parameter)
+ENABLES: Dict[Any, Any] = {}
+
+# Base rate queries: class -> set
+RATES: Dict[Any, Any] = {}
+
+# Poll commands: class -> (set, descriptor list parameter)
+POLLS: Dict[Any, Any] = {}
+
+# One decimation for every streamed field (when the format list has none): class -> parameter
+DECIMATION: Dict[Any, str] = {}
+
+BASE_RATES: Dict[str, Dict[int, int]] = {}
+
+# Commands whose save, load and default apply to every setting at once
+ALL_SETTINGS: Tuple[Any, ...] = ()
+
+DEVICE_TITLES: Dict[str, str] = {"dev_a": "Device A", "dev_b": "Device B"}
+
+# Factory values the manuals state (the spec's `default`, with its source line); every other
+# parameter's factory value is zero: class -> {parameter: value}
+FACTORY: Dict[Any, Dict[str, Any]] = {}
