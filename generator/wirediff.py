@@ -166,6 +166,11 @@ class Differ:
         for key in ("framing", "byte_order", "set_kinds", "shared_data", "reserved_fields", "function_selector"):
             if json.dumps(a.get(key), sort_keys=True) != json.dumps(b.get(key), sort_keys=True):
                 self.add(BREAKING, b, key, f"{key} changed")
+        for key in ("samples", "session"):
+            # Rules the packages promise (docs/conformance.md sections 6 and 8): how samples group,
+            # how a reply is matched. Not bytes, but a consumer's results change with them.
+            if json.dumps(a.get(key), sort_keys=True) != json.dumps(b.get(key), sort_keys=True):
+                self.add(BREAKING, b, key, f"{key} rule changed")
         da = {d["id"]: d for d in a["devices"]}
         db = {d["id"]: d for d in b["devices"]}
         for d in sorted(set(da) | set(db)):
@@ -340,6 +345,13 @@ class Differ:
         for r in rb:
             if r not in ra:
                 self.add(COMPATIBLE, p, where, f"response 0x{r[0]:02X} {r[1]} added")
+        if v.get("timeout") != w.get("timeout"):
+            self.add(
+                COMPATIBLE,
+                p,
+                where,
+                f"reply timeout allowance {_timeout(v.get('timeout'))} -> {_timeout(w.get('timeout'))}",
+            )
         self.params(p, where, name, v["params"], w["params"], command=role == "command")
 
     def params(self, p: dict, where: str, owner: str, pa: list, pb: list, command: bool) -> None:
@@ -427,6 +439,13 @@ def _names(items: set, key: str) -> str:
 
 def _when(when) -> str:
     return "always" if not when else "when " + ", ".join(f"{k} {v}" for k, v in sorted(when.items()))
+
+
+def _timeout(t) -> str:
+    if not t:
+        return "none"
+    text = f"{t['ms']} ms" + (f" + {t['param']}" if t.get("param") else "")
+    return text + (f" (functions {', '.join(t['functions'])})" if t.get("functions") else "")
 
 
 def _off(offset) -> str:
