@@ -4,7 +4,6 @@ and quiet regenerations (adding one descriptor changes its own files plus indexe
 from __future__ import annotations
 
 import copy
-import difflib
 import json
 import shutil
 import subprocess
@@ -278,10 +277,19 @@ def test_adding_one_descriptor_changes_only_its_files_and_indexes(tmp_path):
     after = _render_all(spec)
     assert set(before) <= set(after)
     changed = sorted(rel for rel in after if before.get(rel) != after[rel])
-    removed = 0
-    for rel in changed:
-        diff = difflib.unified_diff(before.get(rel, "").splitlines(), after[rel].splitlines(), lineterm="", n=0)
-        removed += sum(1 for line in diff if line.startswith("-") and not line.startswith("---"))
+    for side, files in (("a", before), ("b", after)):
+        for rel in changed:
+            path = tmp_path / side / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(files.get(rel, ""))
+    # git counts the lines faster than difflib does on ir.json.
+    numstat = subprocess.run(
+        ["git", "diff", "--no-index", "--numstat", str(tmp_path / "a"), str(tmp_path / "b")],
+        capture_output=True,
+        text=True,
+    ).stdout
+    removed = sum(int(line.split("\t")[1]) for line in numstat.splitlines())
+    assert len(numstat.splitlines()) == len(changed)
     # Only the sensor set's own files and the indexes (dispatch, registries, lookup tables, the
     # IR, the version stamps that carry the spec hash, the typed test cases) change.
     index_words = (
