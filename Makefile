@@ -28,9 +28,10 @@ $(VENV)/.stamp: requirements.txt
 	touch $@
 
 # Regenerate only when an input changed; the generator itself writes only changed files.
+# `$(PY) -m generator generate` is the `mipgen generate` command (pip install -e .; README).
 generate: build/.generated
 build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
-	$(PY) -m generator
+	$(PY) -m generator generate
 	@mkdir -p build && touch $@
 
 # What the tests need beyond `make` (cmake, googletest, Chromium, clippy, ...): tools/bootstrap
@@ -151,8 +152,9 @@ bench: generate
 check: $(VENV)/.stamp
 	$(PY) -m generator.drift
 
+# YAML traps (unquoted on/off/yes/no), descriptors without a golden vector, stated lengths.
 lint: $(VENV)/.stamp
-	$(PY) -m generator --lint
+	$(PY) -m generator lint
 
 audit: $(VENV)/.stamp
 	$(PY) -m generator.audit --manuals $(MANUALS) $(if $(KINDS),--kinds $(KINDS))

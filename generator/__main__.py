@@ -1,5 +1,7 @@
 """Command line: python -m generator [--spec DIR [--vectors DIR]] [--out DIR] [--only LANG,...] [--lint]
 
+`python -m generator generate|diff|lint ...` is the `mipgen` command (generator/cli.py).
+
 Loads and validates spec/, builds the IR, and renders every back end into generated/.
 Exit status: 0 ok, 1 spec errors (printed as file:line:column: error: ...), 2 usage/tool errors.
 """
@@ -14,6 +16,11 @@ from .diagnostics import SpecError, SpecErrors
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] in ("generate", "diff", "lint"):
+        from .cli import main as cli_main
+
+        return cli_main(argv, prog="python -m generator")
     ap = argparse.ArgumentParser(prog="python -m generator", description=__doc__.splitlines()[0])
     ap.add_argument(
         "--spec",

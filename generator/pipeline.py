@@ -24,8 +24,9 @@ def run(
     lint: bool,
     docs_dir: Path | None = None,
     vectors_dir: Path | None = None,
+    overlays: list[Path] = (),
 ) -> int:
-    ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT)
+    ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT, overlays=list(overlays))
     if lint:
         for item in lint_stated_lengths(ir):
             print(
@@ -65,8 +66,8 @@ def run(
         files.update(docs.render(ir, vectors, files))
     write_tree(out_dir, files, owned)
     # docs/errata.md is the project's page about its own spec: a spec given with --spec (a test
-    # fixture, the golden tree) never rewrites it, unless a docs directory is named.
-    if spec_dir is None or docs_dir is not None:
+    # fixture, the golden tree) or with overlays never rewrites it, unless a docs directory is named.
+    if (spec_dir is None and not overlays) or docs_dir is not None:
         docs_dir = docs_dir or ROOT / "docs"
         write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0

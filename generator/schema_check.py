@@ -22,9 +22,33 @@ def _short(value) -> str:
     return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
 
 
-def describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
+def readable_path(data, path) -> str:
+    """A path in a spec file as a person reads it: list items that have a name are named
+    (`fields[scaled_gyro].role`, not `fields.1.role`)."""
+    parts: list[str] = []
+    node = data
+    for key in path:
+        item = None
+        try:
+            item = node[key]
+        except (KeyError, IndexError, TypeError):
+            pass
+        if isinstance(key, int) and isinstance(item, dict) and isinstance(item.get("name"), str):
+            label = item["name"] if len(item["name"]) <= 40 else item["name"][:37] + "..."
+            if parts:
+                parts[-1] += f"[{label}]"
+            else:
+                parts.append(f"[{label}]")
+        else:
+            parts.append(str(key))
+        node = item
+    return ".".join(parts)
+
+
+def describe(best: jsonschema.ValidationError, data=None) -> tuple[str, str | None]:
     """Turn a jsonschema error into (what is wrong, what is expected)."""
-    where = ".".join(str(p) for p in best.absolute_path) or "(top level)"
+    where = readable_path(data, best.absolute_path) if data is not None else ".".join(map(str, best.absolute_path))
+    where = where or "(top level)"
     v = best.validator
     if v == "required":
         missing = best.message.split("'")[1] if "'" in best.message else best.message
@@ -38,7 +62,13 @@ def describe(best: jsonschema.ValidationError) -> tuple[str, str | None]:
     if v == "pattern":
         return f"{where}: {_short(best.instance)} is not a valid name", f"a name matching {best.validator_value}"
     if v == "type":
-        return f"{where}: {_short(best.instance)} has the wrong type", f"{best.validator_value}"
+        wanted = best.validator_value
+        if isinstance(best.instance, bool) and "string" in (wanted if isinstance(wanted, list) else [wanted]):
+            return (
+                f"{where}: {_short(best.instance)} has the wrong type (YAML reads an unquoted on/off/yes/no as a boolean)",
+                "a string: put the word in quotes",
+            )
+        return f"{where}: {_short(best.instance)} has the wrong type", f"{wanted}"
     if v in ("minimum", "maximum"):
         return f"{where}: {_short(best.instance)} is out of range", f"{v} {best.validator_value}"
     return f"{where}: {best.message}", None
@@ -49,7 +79,7 @@ def schema_errors(validator: jsonschema.Validator, data, locate) -> list[SpecErr
     errors = []
     for e in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path))):
         best = deepest(e)
-        msg, expected = describe(best)
+        msg, expected = describe(best, data)
         path = tuple(best.absolute_path)
         if best.validator == "additionalProperties" and isinstance(best.instance, dict):
             extra = [k for k in best.instance if k not in best.schema.get("properties", {})]

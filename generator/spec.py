@@ -10,12 +10,14 @@ import jsonschema
 
 from .diagnostics import SpecError, SpecErrors
 from .ir import IR_VERSION, build_protocol
+from .overlay import apply_extensions
 from .passes.context import SpecFile
 from .schema_check import schema_errors
 from .yamlpos import load
 
 ROOT = Path(__file__).resolve().parent.parent
 SCHEMA_PATH = ROOT / "spec" / "schema" / "spec.schema.json"
+FILE_KINDS = ("protocol", "set", "types", "extends")  # the key that tells a file's kind
 
 
 def _schema_validator():
@@ -23,7 +25,12 @@ def _schema_validator():
     with open(SCHEMA_PATH, encoding="utf-8") as fh:
         schema = json.load(fh)
     validators = {}
-    for key, ref in (("protocol", "protocolFile"), ("set", "setFile"), ("types", "typesFile")):
+    for key, ref in (
+        ("protocol", "protocolFile"),
+        ("set", "setFile"),
+        ("types", "typesFile"),
+        ("extends", "extensionFile"),
+    ):
         sub = {"$schema": schema["$schema"], "$defs": schema["$defs"], "$ref": f"#/$defs/{ref}"}
         validators[key] = jsonschema.Draft202012Validator(sub)
     validators[None] = jsonschema.Draft202012Validator(schema)
@@ -31,13 +38,14 @@ def _schema_validator():
 
 
 def _validate_shape(validators, sf: SpecFile) -> list[SpecError]:
-    kind = next((k for k in ("protocol", "set", "types") if k in sf.data), None)
+    kind = next((k for k in FILE_KINDS if k in sf.data), None)
     if kind is None:
         return [
             SpecError(
                 sf.locate(()),
                 "cannot tell what kind of spec file this is",
-                "a top-level 'protocol:' (protocol file), 'set:' (descriptor set) or 'types:' (shared types) key",
+                "a top-level 'protocol:' (protocol file), 'set:' (descriptor set), 'types:' (shared types)"
+                " or 'extends:' (an overlay's additions) key",
             )
         ]
     return schema_errors(validators[kind], sf.data, sf.locate)
@@ -74,6 +82,7 @@ def build_from_files(dir_name: str, spec_files: list[SpecFile]) -> dict:
     protocol_file = None
     set_files: list[SpecFile] = []
     type_files: list[SpecFile] = []
+    extensions: list[SpecFile] = []
     for sf in spec_files:
         if "protocol" in sf.data:
             if protocol_file is not None:
@@ -87,6 +96,8 @@ def build_from_files(dir_name: str, spec_files: list[SpecFile]) -> dict:
             protocol_file = sf
         elif "set" in sf.data:
             set_files.append(sf)
+        elif "extends" in sf.data:
+            extensions.append(sf)
         else:
             type_files.append(sf)
     if errors:
@@ -95,35 +106,83 @@ def build_from_files(dir_name: str, spec_files: list[SpecFile]) -> dict:
         raise SpecErrors(
             [SpecError(None, f"{dir_name}/ has no protocol file", "a file with 'protocol:' describing the framing")]
         )
+    if extensions:
+        errors = apply_extensions(protocol_file, set_files + type_files, extensions)
+        if errors:
+            raise SpecErrors(errors)
     protocol, build_errors = build_protocol(protocol_file, set_files, type_files)
     if build_errors:
         raise SpecErrors(build_errors)
     return protocol
 
 
-def load_protocol_dir(directory: Path, root: Path = ROOT) -> dict:
-    """Load spec/<protocol>/ and return the protocol's IR (one protocol entry)."""
-    validator = _schema_validator()
+def _read_dir(directory: Path, root: Path, validator, errors: list[SpecError]) -> list[SpecFile]:
     files = sorted(p for p in directory.iterdir() if p.suffix in (".yaml", ".yml"))
-    errors: list[SpecError] = []
     spec_files: list[SpecFile] = []
     for path in files:
         try:
             spec_files.append(read_spec_file(path, os.path.relpath(path, root), validator))
         except SpecErrors as e:
             errors.extend(e.errors)
+    return spec_files
+
+
+def load_protocol_dir(directory: Path, root: Path = ROOT, overlays: list[tuple[Path, Path]] = ()) -> dict:
+    """Load spec/<protocol>/ (and the same protocol's directories of overlays, each given as
+    (directory, the root its file names are relative to)) and return the protocol's IR entry."""
+    validator = _schema_validator()
+    errors: list[SpecError] = []
+    spec_files = _read_dir(directory, root, validator, errors)
+    for odir, oroot in overlays:
+        spec_files += _read_dir(odir, oroot, validator, errors)
     if errors:
         raise SpecErrors(errors)
     return build_from_files(os.path.relpath(directory, root), spec_files)
 
 
-def load_spec(spec_dir: Path | None = None, root: Path = ROOT) -> dict:
+def _protocol_dirs(spec_dir: Path) -> list[Path]:
+    return sorted(p for p in spec_dir.iterdir() if p.is_dir() and p.name != "schema")
+
+
+def load_spec(spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Path] = ()) -> dict:
+    """The IR of a spec directory (one subdirectory per protocol) with the overlay directories
+    laid over it in order (generator/overlay.py): an overlay's <protocol>/ adds files to that
+    protocol; a directory naming no protocol of the spec is a protocol of its own."""
     spec_dir = spec_dir or root / "spec"
     protocols = []
     errors: list[SpecError] = []
-    for d in sorted(p for p in spec_dir.iterdir() if p.is_dir() and p.name != "schema"):
+    for d in [spec_dir, *overlays]:
+        if not Path(d).is_dir():
+            raise SpecErrors(
+                [SpecError(None, f"spec directory {d} does not exist", "a directory of protocol directories")]
+            )
+    base = {d.name: d for d in _protocol_dirs(spec_dir)}
+    extra: dict[str, list[tuple[Path, Path]]] = {name: [] for name in base}
+    for o in overlays:
+        o = Path(o)
+        subdirs = _protocol_dirs(o)
+        if not subdirs:
+            raise SpecErrors(
+                [
+                    SpecError(
+                        None,
+                        f"overlay {o} has no protocol directory",
+                        "one directory per protocol it adds to, named as in the spec: "
+                        + ", ".join(f"{o}/{n}/" for n in sorted(base)),
+                    )
+                ]
+            )
+        for sub in subdirs:
+            if sub.name in base:
+                extra[sub.name].append((sub, o.resolve().parent))
+            else:
+                base[sub.name] = sub  # a protocol of the overlay's own
+                extra[sub.name] = []
+    for name in sorted(base):
+        d = base[name]
         try:
-            protocols.append(load_protocol_dir(d, root))
+            own_root = root if d.resolve().is_relative_to(Path(root).resolve()) else d.resolve().parent.parent
+            protocols.append(load_protocol_dir(d, own_root, extra[name]))
         except SpecErrors as e:
             errors.extend(e.errors)
     if errors:

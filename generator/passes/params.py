@@ -5,6 +5,8 @@ call build_params."""
 
 from __future__ import annotations
 
+import difflib
+
 from ..primitives import ALIASES, PRIMITIVES, int_range
 from .context import Context, SpecFile
 from .sizes import fill_capacities, fill_offsets, fixed, max_field_data, param_size
@@ -42,11 +44,13 @@ def typeref(ctx: Context, sf: SpecFile, path: tuple, p: dict) -> tuple[dict, str
     t = ctx.types.get(tname)
     if t is None:
         known = sorted(list(PRIMITIVES) + list(ALIASES) + ["string"] + list(ctx.types))
+        near = difflib.get_close_matches(str(tname), known, n=3, cutoff=0.6)
         ctx.err(
             sf,
             path + ("type",),
-            f"parameter {p['name']}: unknown type '{tname}'",
-            "a primitive, vector type, string or defined type: " + ", ".join(known),
+            f"parameter {p['name']}: unknown type '{tname}'"
+            + (" (did you mean " + " or ".join(f"'{x}'" for x in near) + "?)" if near else ""),
+            f"a primitive, vector type, string or a type defined in the spec ({len(known)} names; docs/spec-format.md)",
         )
         return {"kind": "primitive", "name": "u8", "size": fixed(1)}, None, None
     ref = {"kind": t["kind"], "name": tname, "size": t["size"]}

@@ -70,18 +70,21 @@ def _fields(ctx: Context, d: dict, parts: list[SpecFile], is_shared: bool) -> li
     others. `sources`, `devices` and `variants` are filled in by the variants pass."""
     shared = ctx.pf.data.get("shared_data")
     fields = []
-    ids: dict[int, str] = {}
+    ids: dict[int, tuple[str, SpecFile, tuple]] = {}
     fnames: set[str] = set()
     for sf, i, f in [(part, i, f) for part in parts for i, f in enumerate(part.data["fields"])]:
         fp = ("fields", i)
         if f["id"] in ids:
+            first, first_sf, first_path = ids[f["id"]]
             ctx.err(
                 sf,
                 fp + ("id",),
-                f"{d['name']}: descriptor 0x{f['id']:02X} is used by both '{ids[f['id']]}' and '{f['name']}'",
+                f"{d['name']}: descriptor 0x{f['id']:02X} is used by both '{first}' and '{f['name']}'"
+                f" (the first at {first_sf.locate(first_path)})",
                 "unique descriptors within a set",
             )
-        ids[f["id"]] = f["name"]
+        else:
+            ids[f["id"]] = (f["name"], sf, fp + ("id",))
         if f["name"] in fnames:
             ctx.err(
                 sf,

@@ -15,7 +15,7 @@ CASES = [
     (
         "missing set",
         "[{fields: [{descriptor: 1, name: ping, values: {}}]}]",
-        "cases.0.packets.0: missing required key 'set'",
+        "cases[bad].packets.0: missing required key 'set'",
     ),
     ("field not a mapping", '[{set: 1, fields: ["junk"]}]', "'junk' has the wrong type (expected object)"),
     (

@@ -30,7 +30,8 @@ def test_descriptors_and_names_are_unique_within_a_set(tmp_path):
     fields = _field(0x01, "ping") + _field(0x01, "ping")
     ctx = build(tmp_path, {"base.yaml": command_set(fields)}, "sets")
     assert errors(ctx) == [
-        "base.yaml:8:10: error: base: descriptor 0x01 is used by both 'ping' and 'ping' (expected unique descriptors within a set)",
+        "base.yaml:8:10: error: base: descriptor 0x01 is used by both 'ping' and 'ping' (the first at base.yaml:7:10)"
+        " (expected unique descriptors within a set)",
         "base.yaml:8:22: error: base: two fields named 'ping' (expected unique field names within a set)",
     ]
 

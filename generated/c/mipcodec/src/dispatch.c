@@ -498,390 +498,366 @@ static const mipc_layout_info_t k_layouts[MIPC_FIELD_COUNT] = {
     {MIPC_FIELD_SHARED_EXTERNAL_TIME_DELTA, "external_time_delta", NULL, MIPC_DEVICE_ANY, 0xD8},
 };
 
-static const mipc_field_info_t k_fields[340] = {
-    {"ack_nack", 0xF1, MIPC_FIELD_ACK_NACK, 1},                                                   /* 0 */
-    {"ping", 0x01, MIPC_FIELD_BASE_PING, 1},                                                      /* 1 */
-    {"set_to_idle", 0x02, MIPC_FIELD_BASE_SET_TO_IDLE, 1},                                        /* 2 */
-    {"get_device_info", 0x03, MIPC_FIELD_BASE_GET_DEVICE_INFO, 1},                                /* 3 */
-    {"device_info", 0x81, MIPC_FIELD_BASE_DEVICE_INFO, 1},                                        /* 4 */
-    {"get_device_descriptors", 0x04, MIPC_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},                  /* 5 */
-    {"device_descriptors", 0x82, MIPC_FIELD_BASE_DEVICE_DESCRIPTORS, 1},                          /* 6 */
-    {"built_in_test", 0x05, MIPC_FIELD_BASE_BUILT_IN_TEST, 1},                                    /* 7 */
-    {"built_in_test_result", 0x83, MIPC_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},               /* 8 */
-    {"resume", 0x06, MIPC_FIELD_BASE_RESUME, 1},                                                  /* 9 */
-    {"get_extended_descriptors", 0x07, MIPC_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},              /* 10 */
-    {"extended_descriptors", 0x86, MIPC_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},                      /* 11 */
-    {"continuous_bit", 0x08, MIPC_FIELD_BASE_CONTINUOUS_BIT, 1},                                  /* 12 */
-    {"continuous_bit_result", 0x88, MIPC_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},                    /* 13 */
-    {"comm_port_speed", 0x09, MIPC_FIELD_BASE_COMM_PORT_SPEED, 1},                                /* 14 */
-    {"comm_port_speed_response", 0x89, MIPC_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},              /* 15 */
-    {"gps_time_update", 0x72, MIPC_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},                         /* 16 */
-    {"gps_week", 0x84, MIPC_FIELD_BASE_GPS_WEEK, 1},                                              /* 17 */
-    {"gps_seconds", 0x85, MIPC_FIELD_BASE_GPS_SECONDS, 1},                                        /* 18 */
-    {"device_reset", 0x7E, MIPC_FIELD_BASE_DEVICE_RESET, 1},                                      /* 19 */
-    {"event_control", 0x2B, MIPC_FIELD_THREEDM_EVENT_CONTROL, 1},                                 /* 20 */
-    {"event_control_response", 0xB5, MIPC_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},               /* 21 */
-    {"get_event_trigger_status", 0x2C, MIPC_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},           /* 22 */
-    {"event_trigger_status", 0xB6, MIPC_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},                   /* 23 */
-    {"get_event_action_status", 0x2D, MIPC_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},             /* 24 */
-    {"event_action_status", 0xB7, MIPC_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},                     /* 25 */
-    {"event_trigger_config", 0x2E, MIPC_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},                   /* 26 */
-    {"event_trigger_config_response", 0xB8, MIPC_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1}, /* 27 */
-    {"event_action_config", 0x2F, MIPC_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},                     /* 28 */
-    {"event_action_config_response", 0xB9, MIPC_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},   /* 29 */
-    {"device_startup_settings", 0x30, MIPC_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45, 2},      /* 30 */
-    {"sensor_to_vehicle_euler", 0x31, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER, 1},             /* 31 */
-    {"sensor_to_vehicle_euler_response", 0xB1, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE,
-     1},                                                                                        /* 32 */
-    {"sensor_to_vehicle_quaternion", 0x32, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION, 1}, /* 33 */
+static const mipc_field_info_t k_fields[] = {
+    {"ack_nack", 0xF1, MIPC_FIELD_ACK_NACK, 1},
+    {"ping", 0x01, MIPC_FIELD_BASE_PING, 1},
+    {"set_to_idle", 0x02, MIPC_FIELD_BASE_SET_TO_IDLE, 1},
+    {"get_device_info", 0x03, MIPC_FIELD_BASE_GET_DEVICE_INFO, 1},
+    {"device_info", 0x81, MIPC_FIELD_BASE_DEVICE_INFO, 1},
+    {"get_device_descriptors", 0x04, MIPC_FIELD_BASE_GET_DEVICE_DESCRIPTORS, 1},
+    {"device_descriptors", 0x82, MIPC_FIELD_BASE_DEVICE_DESCRIPTORS, 1},
+    {"built_in_test", 0x05, MIPC_FIELD_BASE_BUILT_IN_TEST, 1},
+    {"built_in_test_result", 0x83, MIPC_FIELD_BASE_BUILT_IN_TEST_RESULT_GX5_45, 2},
+    {"resume", 0x06, MIPC_FIELD_BASE_RESUME, 1},
+    {"get_extended_descriptors", 0x07, MIPC_FIELD_BASE_GET_EXTENDED_DESCRIPTORS, 1},
+    {"extended_descriptors", 0x86, MIPC_FIELD_BASE_EXTENDED_DESCRIPTORS, 1},
+    {"continuous_bit", 0x08, MIPC_FIELD_BASE_CONTINUOUS_BIT, 1},
+    {"continuous_bit_result", 0x88, MIPC_FIELD_BASE_CONTINUOUS_BIT_RESULT, 1},
+    {"comm_port_speed", 0x09, MIPC_FIELD_BASE_COMM_PORT_SPEED, 1},
+    {"comm_port_speed_response", 0x89, MIPC_FIELD_BASE_COMM_PORT_SPEED_RESPONSE, 1},
+    {"gps_time_update", 0x72, MIPC_FIELD_BASE_GPS_TIME_UPDATE_GX5_45, 2},
+    {"gps_week", 0x84, MIPC_FIELD_BASE_GPS_WEEK, 1},
+    {"gps_seconds", 0x85, MIPC_FIELD_BASE_GPS_SECONDS, 1},
+    {"device_reset", 0x7E, MIPC_FIELD_BASE_DEVICE_RESET, 1},
+    {"event_control", 0x2B, MIPC_FIELD_THREEDM_EVENT_CONTROL, 1},
+    {"event_control_response", 0xB5, MIPC_FIELD_THREEDM_EVENT_CONTROL_RESPONSE, 1},
+    {"get_event_trigger_status", 0x2C, MIPC_FIELD_THREEDM_GET_EVENT_TRIGGER_STATUS, 1},
+    {"event_trigger_status", 0xB6, MIPC_FIELD_THREEDM_EVENT_TRIGGER_STATUS, 1},
+    {"get_event_action_status", 0x2D, MIPC_FIELD_THREEDM_GET_EVENT_ACTION_STATUS, 1},
+    {"event_action_status", 0xB7, MIPC_FIELD_THREEDM_EVENT_ACTION_STATUS, 1},
+    {"event_trigger_config", 0x2E, MIPC_FIELD_THREEDM_EVENT_TRIGGER_CONFIG, 1},
+    {"event_trigger_config_response", 0xB8, MIPC_FIELD_THREEDM_EVENT_TRIGGER_CONFIG_RESPONSE, 1},
+    {"event_action_config", 0x2F, MIPC_FIELD_THREEDM_EVENT_ACTION_CONFIG, 1},
+    {"event_action_config_response", 0xB9, MIPC_FIELD_THREEDM_EVENT_ACTION_CONFIG_RESPONSE, 1},
+    {"device_startup_settings", 0x30, MIPC_FIELD_THREEDM_DEVICE_STARTUP_SETTINGS_GX5_45, 2},
+    {"sensor_to_vehicle_euler", 0x31, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER, 1},
+    {"sensor_to_vehicle_euler_response", 0xB1, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_EULER_RESPONSE, 1},
+    {"sensor_to_vehicle_quaternion", 0x32, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION, 1},
     {"sensor_to_vehicle_quaternion_response", 0xB2, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_QUATERNION_RESPONSE,
-     1},                                                                                              /* 34 */
-    {"sensor_to_vehicle_dcm", 0x33, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM, 1},                     /* 35 */
-    {"sensor_to_vehicle_dcm_response", 0xB3, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE, 1},   /* 36 */
-    {"accel_bias", 0x37, MIPC_FIELD_THREEDM_ACCEL_BIAS_GX5_45, 2},                                    /* 37 */
-    {"accel_bias_response", 0x9A, MIPC_FIELD_THREEDM_ACCEL_BIAS_RESPONSE, 1},                         /* 38 */
-    {"gyro_bias", 0x38, MIPC_FIELD_THREEDM_GYRO_BIAS_GX5_45, 2},                                      /* 39 */
-    {"gyro_bias_response", 0x9B, MIPC_FIELD_THREEDM_GYRO_BIAS_RESPONSE, 1},                           /* 40 */
-    {"capture_gyro_bias", 0x39, MIPC_FIELD_THREEDM_CAPTURE_GYRO_BIAS, 1},                             /* 41 */
-    {"mag_hard_iron_offset", 0x3A, MIPC_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45, 2},                /* 42 */
-    {"mag_hard_iron_offset_response", 0x9C, MIPC_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE, 1},     /* 43 */
-    {"mag_soft_iron_matrix", 0x3B, MIPC_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45, 2},                /* 44 */
-    {"mag_soft_iron_matrix_response", 0x9D, MIPC_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE, 1},     /* 45 */
-    {"coning_sculling_enable", 0x3E, MIPC_FIELD_THREEDM_CONING_SCULLING_ENABLE, 1},                   /* 46 */
-    {"coning_sculling_enable_response", 0x9E, MIPC_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE, 1}, /* 47 */
-    {"uart_baudrate", 0x40, MIPC_FIELD_THREEDM_UART_BAUDRATE, 1},                                     /* 48 */
-    {"uart_baudrate_response", 0x87, MIPC_FIELD_THREEDM_UART_BAUDRATE_RESPONSE, 1},                   /* 49 */
-    {"gpio_config", 0x41, MIPC_FIELD_THREEDM_GPIO_CONFIG, 1},                                         /* 50 */
-    {"gpio_config_response", 0xC1, MIPC_FIELD_THREEDM_GPIO_CONFIG_RESPONSE, 1},                       /* 51 */
-    {"gpio_state", 0x42, MIPC_FIELD_THREEDM_GPIO_STATE, 1},                                           /* 52 */
-    {"gpio_state_response", 0xC2, MIPC_FIELD_THREEDM_GPIO_STATE_RESPONSE, 1},                         /* 53 */
-    {"odometer_config", 0x43, MIPC_FIELD_THREEDM_ODOMETER_CONFIG, 1},                                 /* 54 */
-    {"odometer_config_response", 0xC3, MIPC_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE, 1},               /* 55 */
-    {"advanced_lowpass_filter", 0x50, MIPC_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER, 1},                 /* 56 */
-    {"advanced_lowpass_filter_response", 0x8B, MIPC_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE,
-     1},                                                                                            /* 57 */
-    {"complementary_filter", 0x51, MIPC_FIELD_THREEDM_COMPLEMENTARY_FILTER, 1},                     /* 58 */
-    {"complementary_filter_response", 0x97, MIPC_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE, 1},   /* 59 */
-    {"sensor_range", 0x52, MIPC_FIELD_THREEDM_SENSOR_RANGE, 1},                                     /* 60 */
-    {"sensor_range_response", 0xD2, MIPC_FIELD_THREEDM_SENSOR_RANGE_RESPONSE, 1},                   /* 61 */
-    {"get_calibrated_sensor_ranges", 0x53, MIPC_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES, 1},     /* 62 */
-    {"calibrated_sensor_ranges", 0xD3, MIPC_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES, 1},             /* 63 */
-    {"lowpass_filter", 0x54, MIPC_FIELD_THREEDM_LOWPASS_FILTER, 1},                                 /* 64 */
-    {"lowpass_filter_response", 0xD4, MIPC_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE, 1},               /* 65 */
-    {"poll_imu_data", 0x01, MIPC_FIELD_THREEDM_POLL_IMU_DATA, 1},                                   /* 66 */
-    {"poll_gnss_data", 0x02, MIPC_FIELD_THREEDM_POLL_GNSS_DATA, 1},                                 /* 67 */
-    {"poll_filter_data", 0x03, MIPC_FIELD_THREEDM_POLL_FILTER_DATA, 1},                             /* 68 */
-    {"poll_nmea_data", 0x04, MIPC_FIELD_THREEDM_POLL_NMEA_DATA, 1},                                 /* 69 */
-    {"poll_data", 0x0D, MIPC_FIELD_THREEDM_POLL_DATA, 1},                                           /* 70 */
-    {"get_imu_base_rate", 0x06, MIPC_FIELD_THREEDM_GET_IMU_BASE_RATE, 1},                           /* 71 */
-    {"imu_base_rate", 0x83, MIPC_FIELD_THREEDM_IMU_BASE_RATE, 1},                                   /* 72 */
-    {"get_gnss_base_rate", 0x07, MIPC_FIELD_THREEDM_GET_GNSS_BASE_RATE, 1},                         /* 73 */
-    {"gnss_base_rate", 0x84, MIPC_FIELD_THREEDM_GNSS_BASE_RATE, 1},                                 /* 74 */
-    {"get_filter_base_rate", 0x0B, MIPC_FIELD_THREEDM_GET_FILTER_BASE_RATE, 1},                     /* 75 */
-    {"filter_base_rate", 0x8A, MIPC_FIELD_THREEDM_FILTER_BASE_RATE, 1},                             /* 76 */
-    {"get_base_rate", 0x0E, MIPC_FIELD_THREEDM_GET_BASE_RATE, 1},                                   /* 77 */
-    {"base_rate", 0x8E, MIPC_FIELD_THREEDM_BASE_RATE, 1},                                           /* 78 */
-    {"imu_message_format", 0x08, MIPC_FIELD_THREEDM_IMU_MESSAGE_FORMAT, 1},                         /* 79 */
-    {"imu_message_format_response", 0x80, MIPC_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE, 1},       /* 80 */
-    {"gnss_message_format", 0x09, MIPC_FIELD_THREEDM_GNSS_MESSAGE_FORMAT, 1},                       /* 81 */
-    {"gnss_message_format_response", 0x81, MIPC_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE, 1},     /* 82 */
-    {"filter_message_format", 0x0A, MIPC_FIELD_THREEDM_FILTER_MESSAGE_FORMAT, 1},                   /* 83 */
-    {"filter_message_format_response", 0x82, MIPC_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE, 1}, /* 84 */
-    {"nmea_message_format", 0x0C, MIPC_FIELD_THREEDM_NMEA_MESSAGE_FORMAT, 1},                       /* 85 */
-    {"nmea_message_format_response", 0x8C, MIPC_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE, 1},     /* 86 */
-    {"message_format", 0x0F, MIPC_FIELD_THREEDM_MESSAGE_FORMAT, 1},                                 /* 87 */
-    {"message_format_response", 0x8F, MIPC_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE, 1},               /* 88 */
-    {"factory_streaming", 0x10, MIPC_FIELD_THREEDM_FACTORY_STREAMING, 1},                           /* 89 */
-    {"data_stream_control", 0x11, MIPC_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45, 2},                /* 90 */
-    {"data_stream_control_response", 0x85, MIPC_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45,
-     2},                                                                                      /* 91 */
-    {"raw_rtcm_message", 0x20, MIPC_FIELD_THREEDM_RAW_RTCM_MESSAGE, 1},                       /* 92 */
-    {"gnss_constellation_settings", 0x21, MIPC_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS, 1}, /* 93 */
+     1},
+    {"sensor_to_vehicle_dcm", 0x33, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM, 1},
+    {"sensor_to_vehicle_dcm_response", 0xB3, MIPC_FIELD_THREEDM_SENSOR_TO_VEHICLE_DCM_RESPONSE, 1},
+    {"accel_bias", 0x37, MIPC_FIELD_THREEDM_ACCEL_BIAS_GX5_45, 2},
+    {"accel_bias_response", 0x9A, MIPC_FIELD_THREEDM_ACCEL_BIAS_RESPONSE, 1},
+    {"gyro_bias", 0x38, MIPC_FIELD_THREEDM_GYRO_BIAS_GX5_45, 2},
+    {"gyro_bias_response", 0x9B, MIPC_FIELD_THREEDM_GYRO_BIAS_RESPONSE, 1},
+    {"capture_gyro_bias", 0x39, MIPC_FIELD_THREEDM_CAPTURE_GYRO_BIAS, 1},
+    {"mag_hard_iron_offset", 0x3A, MIPC_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_GX5_45, 2},
+    {"mag_hard_iron_offset_response", 0x9C, MIPC_FIELD_THREEDM_MAG_HARD_IRON_OFFSET_RESPONSE, 1},
+    {"mag_soft_iron_matrix", 0x3B, MIPC_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_GX5_45, 2},
+    {"mag_soft_iron_matrix_response", 0x9D, MIPC_FIELD_THREEDM_MAG_SOFT_IRON_MATRIX_RESPONSE, 1},
+    {"coning_sculling_enable", 0x3E, MIPC_FIELD_THREEDM_CONING_SCULLING_ENABLE, 1},
+    {"coning_sculling_enable_response", 0x9E, MIPC_FIELD_THREEDM_CONING_SCULLING_ENABLE_RESPONSE, 1},
+    {"uart_baudrate", 0x40, MIPC_FIELD_THREEDM_UART_BAUDRATE, 1},
+    {"uart_baudrate_response", 0x87, MIPC_FIELD_THREEDM_UART_BAUDRATE_RESPONSE, 1},
+    {"gpio_config", 0x41, MIPC_FIELD_THREEDM_GPIO_CONFIG, 1},
+    {"gpio_config_response", 0xC1, MIPC_FIELD_THREEDM_GPIO_CONFIG_RESPONSE, 1},
+    {"gpio_state", 0x42, MIPC_FIELD_THREEDM_GPIO_STATE, 1},
+    {"gpio_state_response", 0xC2, MIPC_FIELD_THREEDM_GPIO_STATE_RESPONSE, 1},
+    {"odometer_config", 0x43, MIPC_FIELD_THREEDM_ODOMETER_CONFIG, 1},
+    {"odometer_config_response", 0xC3, MIPC_FIELD_THREEDM_ODOMETER_CONFIG_RESPONSE, 1},
+    {"advanced_lowpass_filter", 0x50, MIPC_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER, 1},
+    {"advanced_lowpass_filter_response", 0x8B, MIPC_FIELD_THREEDM_ADVANCED_LOWPASS_FILTER_RESPONSE, 1},
+    {"complementary_filter", 0x51, MIPC_FIELD_THREEDM_COMPLEMENTARY_FILTER, 1},
+    {"complementary_filter_response", 0x97, MIPC_FIELD_THREEDM_COMPLEMENTARY_FILTER_RESPONSE, 1},
+    {"sensor_range", 0x52, MIPC_FIELD_THREEDM_SENSOR_RANGE, 1},
+    {"sensor_range_response", 0xD2, MIPC_FIELD_THREEDM_SENSOR_RANGE_RESPONSE, 1},
+    {"get_calibrated_sensor_ranges", 0x53, MIPC_FIELD_THREEDM_GET_CALIBRATED_SENSOR_RANGES, 1},
+    {"calibrated_sensor_ranges", 0xD3, MIPC_FIELD_THREEDM_CALIBRATED_SENSOR_RANGES, 1},
+    {"lowpass_filter", 0x54, MIPC_FIELD_THREEDM_LOWPASS_FILTER, 1},
+    {"lowpass_filter_response", 0xD4, MIPC_FIELD_THREEDM_LOWPASS_FILTER_RESPONSE, 1},
+    {"poll_imu_data", 0x01, MIPC_FIELD_THREEDM_POLL_IMU_DATA, 1},
+    {"poll_gnss_data", 0x02, MIPC_FIELD_THREEDM_POLL_GNSS_DATA, 1},
+    {"poll_filter_data", 0x03, MIPC_FIELD_THREEDM_POLL_FILTER_DATA, 1},
+    {"poll_nmea_data", 0x04, MIPC_FIELD_THREEDM_POLL_NMEA_DATA, 1},
+    {"poll_data", 0x0D, MIPC_FIELD_THREEDM_POLL_DATA, 1},
+    {"get_imu_base_rate", 0x06, MIPC_FIELD_THREEDM_GET_IMU_BASE_RATE, 1},
+    {"imu_base_rate", 0x83, MIPC_FIELD_THREEDM_IMU_BASE_RATE, 1},
+    {"get_gnss_base_rate", 0x07, MIPC_FIELD_THREEDM_GET_GNSS_BASE_RATE, 1},
+    {"gnss_base_rate", 0x84, MIPC_FIELD_THREEDM_GNSS_BASE_RATE, 1},
+    {"get_filter_base_rate", 0x0B, MIPC_FIELD_THREEDM_GET_FILTER_BASE_RATE, 1},
+    {"filter_base_rate", 0x8A, MIPC_FIELD_THREEDM_FILTER_BASE_RATE, 1},
+    {"get_base_rate", 0x0E, MIPC_FIELD_THREEDM_GET_BASE_RATE, 1},
+    {"base_rate", 0x8E, MIPC_FIELD_THREEDM_BASE_RATE, 1},
+    {"imu_message_format", 0x08, MIPC_FIELD_THREEDM_IMU_MESSAGE_FORMAT, 1},
+    {"imu_message_format_response", 0x80, MIPC_FIELD_THREEDM_IMU_MESSAGE_FORMAT_RESPONSE, 1},
+    {"gnss_message_format", 0x09, MIPC_FIELD_THREEDM_GNSS_MESSAGE_FORMAT, 1},
+    {"gnss_message_format_response", 0x81, MIPC_FIELD_THREEDM_GNSS_MESSAGE_FORMAT_RESPONSE, 1},
+    {"filter_message_format", 0x0A, MIPC_FIELD_THREEDM_FILTER_MESSAGE_FORMAT, 1},
+    {"filter_message_format_response", 0x82, MIPC_FIELD_THREEDM_FILTER_MESSAGE_FORMAT_RESPONSE, 1},
+    {"nmea_message_format", 0x0C, MIPC_FIELD_THREEDM_NMEA_MESSAGE_FORMAT, 1},
+    {"nmea_message_format_response", 0x8C, MIPC_FIELD_THREEDM_NMEA_MESSAGE_FORMAT_RESPONSE, 1},
+    {"message_format", 0x0F, MIPC_FIELD_THREEDM_MESSAGE_FORMAT, 1},
+    {"message_format_response", 0x8F, MIPC_FIELD_THREEDM_MESSAGE_FORMAT_RESPONSE, 1},
+    {"factory_streaming", 0x10, MIPC_FIELD_THREEDM_FACTORY_STREAMING, 1},
+    {"data_stream_control", 0x11, MIPC_FIELD_THREEDM_DATA_STREAM_CONTROL_GX5_45, 2},
+    {"data_stream_control_response", 0x85, MIPC_FIELD_THREEDM_DATA_STREAM_CONTROL_RESPONSE_GX5_45, 2},
+    {"raw_rtcm_message", 0x20, MIPC_FIELD_THREEDM_RAW_RTCM_MESSAGE, 1},
+    {"gnss_constellation_settings", 0x21, MIPC_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS, 1},
     {"gnss_constellation_settings_response", 0xA0, MIPC_FIELD_THREEDM_GNSS_CONSTELLATION_SETTINGS_RESPONSE,
-     1},                                                                                      /* 94 */
-    {"gnss_sbas_settings", 0x22, MIPC_FIELD_THREEDM_GNSS_SBAS_SETTINGS, 1},                   /* 95 */
-    {"gnss_sbas_settings_response", 0xA1, MIPC_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE, 1}, /* 96 */
-    {"gnss_assisted_fix_control", 0x23, MIPC_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL, 1},     /* 97 */
-    {"gnss_assisted_fix_control_response", 0xA2, MIPC_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE,
-     1},                                                                              /* 98 */
-    {"gnss_assist_time_update", 0x24, MIPC_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE, 1}, /* 99 */
-    {"gnss_assist_time_update_response", 0xA3, MIPC_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE,
-     1},                                                                                           /* 100 */
-    {"pps_source", 0x28, MIPC_FIELD_THREEDM_PPS_SOURCE, 1},                                        /* 101 */
-    {"pps_source_response", 0xA8, MIPC_FIELD_THREEDM_PPS_SOURCE_RESPONSE, 1},                      /* 102 */
-    {"get_supported_events", 0x2A, MIPC_FIELD_THREEDM_GET_SUPPORTED_EVENTS, 1},                    /* 103 */
-    {"supported_events", 0xB4, MIPC_FIELD_THREEDM_SUPPORTED_EVENTS, 1},                            /* 104 */
-    {"device_status", 0x64, MIPC_FIELD_THREEDM_DEVICE_STATUS, 1},                                  /* 105 */
-    {"device_status_response", 0x90, MIPC_FIELD_THREEDM_DEVICE_STATUS_RESPONSE, 1},                /* 106 */
-    {"reset_filter", 0x01, MIPC_FIELD_FILTER_RESET_FILTER, 1},                                     /* 107 */
-    {"set_initial_attitude", 0x02, MIPC_FIELD_FILTER_SET_INITIAL_ATTITUDE, 1},                     /* 108 */
-    {"set_initial_heading", 0x03, MIPC_FIELD_FILTER_SET_INITIAL_HEADING, 1},                       /* 109 */
-    {"run_filter", 0x05, MIPC_FIELD_FILTER_RUN_FILTER, 1},                                         /* 110 */
-    {"vehicle_dynamics_mode", 0x10, MIPC_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, 1},                   /* 111 */
-    {"vehicle_dynamics_mode_response", 0x80, MIPC_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, 1}, /* 112 */
-    {"sensor_to_vehicle_transform", 0x11, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, 1},       /* 113 */
-    {"sensor_to_vehicle_transform_response", 0x81, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE,
-     1},                                                                               /* 114 */
-    {"sensor_to_vehicle_offset", 0x12, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, 1}, /* 115 */
-    {"sensor_to_vehicle_offset_response", 0x82, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE,
-     1},                                                                                             /* 116 */
-    {"antenna_offset", 0x13, MIPC_FIELD_FILTER_ANTENNA_OFFSET, 1},                                   /* 117 */
-    {"antenna_offset_response", 0x83, MIPC_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, 1},                 /* 118 */
-    {"estimation_control", 0x14, MIPC_FIELD_FILTER_ESTIMATION_CONTROL, 1},                           /* 119 */
-    {"estimation_control_response", 0x84, MIPC_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, 1},         /* 120 */
-    {"gnss_source_control", 0x15, MIPC_FIELD_FILTER_GNSS_SOURCE_CONTROL, 1},                         /* 121 */
-    {"gnss_source_control_response", 0x86, MIPC_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, 1},       /* 122 */
-    {"external_gnss_update", 0x16, MIPC_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, 1},                       /* 123 */
-    {"external_heading_update", 0x17, MIPC_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, 1},                 /* 124 */
-    {"heading_update_control", 0x18, MIPC_FIELD_FILTER_HEADING_UPDATE_CONTROL, 1},                   /* 125 */
-    {"heading_update_control_response", 0x87, MIPC_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, 1}, /* 126 */
-    {"auto_init_control", 0x19, MIPC_FIELD_FILTER_AUTO_INIT_CONTROL, 1},                             /* 127 */
-    {"auto_init_control_response", 0x88, MIPC_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, 1},           /* 128 */
-    {"accel_noise", 0x1A, MIPC_FIELD_FILTER_ACCEL_NOISE, 1},                                         /* 129 */
-    {"accel_noise_response", 0x89, MIPC_FIELD_FILTER_ACCEL_NOISE_RESPONSE, 1},                       /* 130 */
-    {"gyro_noise", 0x1B, MIPC_FIELD_FILTER_GYRO_NOISE, 1},                                           /* 131 */
-    {"gyro_noise_response", 0x8A, MIPC_FIELD_FILTER_GYRO_NOISE_RESPONSE, 1},                         /* 132 */
-    {"accel_bias_model", 0x1C, MIPC_FIELD_FILTER_ACCEL_BIAS_MODEL, 1},                               /* 133 */
-    {"accel_bias_model_response", 0x8B, MIPC_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, 1},             /* 134 */
-    {"gyro_bias_model", 0x1D, MIPC_FIELD_FILTER_GYRO_BIAS_MODEL, 1},                                 /* 135 */
-    {"gyro_bias_model_response", 0x8C, MIPC_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, 1},               /* 136 */
-    {"zupt_control", 0x1E, MIPC_FIELD_FILTER_ZUPT_CONTROL, 1},                                       /* 137 */
-    {"zupt_control_response", 0x8D, MIPC_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},                     /* 138 */
-    {"external_heading_update_with_time", 0x1F, MIPC_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME,
-     1}, /* 139 */
-    {"zero_angular_rate_update_control", 0x20, MIPC_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL,
-     1}, /* 140 */
+     1},
+    {"gnss_sbas_settings", 0x22, MIPC_FIELD_THREEDM_GNSS_SBAS_SETTINGS, 1},
+    {"gnss_sbas_settings_response", 0xA1, MIPC_FIELD_THREEDM_GNSS_SBAS_SETTINGS_RESPONSE, 1},
+    {"gnss_assisted_fix_control", 0x23, MIPC_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL, 1},
+    {"gnss_assisted_fix_control_response", 0xA2, MIPC_FIELD_THREEDM_GNSS_ASSISTED_FIX_CONTROL_RESPONSE, 1},
+    {"gnss_assist_time_update", 0x24, MIPC_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE, 1},
+    {"gnss_assist_time_update_response", 0xA3, MIPC_FIELD_THREEDM_GNSS_ASSIST_TIME_UPDATE_RESPONSE, 1},
+    {"pps_source", 0x28, MIPC_FIELD_THREEDM_PPS_SOURCE, 1},
+    {"pps_source_response", 0xA8, MIPC_FIELD_THREEDM_PPS_SOURCE_RESPONSE, 1},
+    {"get_supported_events", 0x2A, MIPC_FIELD_THREEDM_GET_SUPPORTED_EVENTS, 1},
+    {"supported_events", 0xB4, MIPC_FIELD_THREEDM_SUPPORTED_EVENTS, 1},
+    {"device_status", 0x64, MIPC_FIELD_THREEDM_DEVICE_STATUS, 1},
+    {"device_status_response", 0x90, MIPC_FIELD_THREEDM_DEVICE_STATUS_RESPONSE, 1},
+    {"reset_filter", 0x01, MIPC_FIELD_FILTER_RESET_FILTER, 1},
+    {"set_initial_attitude", 0x02, MIPC_FIELD_FILTER_SET_INITIAL_ATTITUDE, 1},
+    {"set_initial_heading", 0x03, MIPC_FIELD_FILTER_SET_INITIAL_HEADING, 1},
+    {"run_filter", 0x05, MIPC_FIELD_FILTER_RUN_FILTER, 1},
+    {"vehicle_dynamics_mode", 0x10, MIPC_FIELD_FILTER_VEHICLE_DYNAMICS_MODE, 1},
+    {"vehicle_dynamics_mode_response", 0x80, MIPC_FIELD_FILTER_VEHICLE_DYNAMICS_MODE_RESPONSE, 1},
+    {"sensor_to_vehicle_transform", 0x11, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM, 1},
+    {"sensor_to_vehicle_transform_response", 0x81, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_TRANSFORM_RESPONSE, 1},
+    {"sensor_to_vehicle_offset", 0x12, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET, 1},
+    {"sensor_to_vehicle_offset_response", 0x82, MIPC_FIELD_FILTER_SENSOR_TO_VEHICLE_OFFSET_RESPONSE, 1},
+    {"antenna_offset", 0x13, MIPC_FIELD_FILTER_ANTENNA_OFFSET, 1},
+    {"antenna_offset_response", 0x83, MIPC_FIELD_FILTER_ANTENNA_OFFSET_RESPONSE, 1},
+    {"estimation_control", 0x14, MIPC_FIELD_FILTER_ESTIMATION_CONTROL, 1},
+    {"estimation_control_response", 0x84, MIPC_FIELD_FILTER_ESTIMATION_CONTROL_RESPONSE, 1},
+    {"gnss_source_control", 0x15, MIPC_FIELD_FILTER_GNSS_SOURCE_CONTROL, 1},
+    {"gnss_source_control_response", 0x86, MIPC_FIELD_FILTER_GNSS_SOURCE_CONTROL_RESPONSE, 1},
+    {"external_gnss_update", 0x16, MIPC_FIELD_FILTER_EXTERNAL_GNSS_UPDATE, 1},
+    {"external_heading_update", 0x17, MIPC_FIELD_FILTER_EXTERNAL_HEADING_UPDATE, 1},
+    {"heading_update_control", 0x18, MIPC_FIELD_FILTER_HEADING_UPDATE_CONTROL, 1},
+    {"heading_update_control_response", 0x87, MIPC_FIELD_FILTER_HEADING_UPDATE_CONTROL_RESPONSE, 1},
+    {"auto_init_control", 0x19, MIPC_FIELD_FILTER_AUTO_INIT_CONTROL, 1},
+    {"auto_init_control_response", 0x88, MIPC_FIELD_FILTER_AUTO_INIT_CONTROL_RESPONSE, 1},
+    {"accel_noise", 0x1A, MIPC_FIELD_FILTER_ACCEL_NOISE, 1},
+    {"accel_noise_response", 0x89, MIPC_FIELD_FILTER_ACCEL_NOISE_RESPONSE, 1},
+    {"gyro_noise", 0x1B, MIPC_FIELD_FILTER_GYRO_NOISE, 1},
+    {"gyro_noise_response", 0x8A, MIPC_FIELD_FILTER_GYRO_NOISE_RESPONSE, 1},
+    {"accel_bias_model", 0x1C, MIPC_FIELD_FILTER_ACCEL_BIAS_MODEL, 1},
+    {"accel_bias_model_response", 0x8B, MIPC_FIELD_FILTER_ACCEL_BIAS_MODEL_RESPONSE, 1},
+    {"gyro_bias_model", 0x1D, MIPC_FIELD_FILTER_GYRO_BIAS_MODEL, 1},
+    {"gyro_bias_model_response", 0x8C, MIPC_FIELD_FILTER_GYRO_BIAS_MODEL_RESPONSE, 1},
+    {"zupt_control", 0x1E, MIPC_FIELD_FILTER_ZUPT_CONTROL, 1},
+    {"zupt_control_response", 0x8D, MIPC_FIELD_FILTER_ZUPT_CONTROL_RESPONSE, 1},
+    {"external_heading_update_with_time", 0x1F, MIPC_FIELD_FILTER_EXTERNAL_HEADING_UPDATE_WITH_TIME, 1},
+    {"zero_angular_rate_update_control", 0x20, MIPC_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL, 1},
     {"zero_angular_rate_update_control_response", 0x8E,
-     MIPC_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, 1},  /* 141 */
-    {"tare_orientation", 0x21, MIPC_FIELD_FILTER_TARE_ORIENTATION, 1}, /* 142 */
-    {"commanded_zupt", 0x22, MIPC_FIELD_FILTER_COMMANDED_ZUPT, 1},     /* 143 */
-    {"commanded_zero_angular_rate_update", 0x23, MIPC_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE,
-     1},                                                                                             /* 144 */
-    {"mag_capture_auto_calibration", 0x27, MIPC_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, 1},       /* 145 */
-    {"gravity_noise_std_dev", 0x28, MIPC_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, 1},                     /* 146 */
-    {"gravity_noise_std_dev_response", 0x93, MIPC_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, 1},   /* 147 */
-    {"pressure_altitude_noise_std_dev", 0x29, MIPC_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, 1}, /* 148 */
+     MIPC_FIELD_FILTER_ZERO_ANGULAR_RATE_UPDATE_CONTROL_RESPONSE, 1},
+    {"tare_orientation", 0x21, MIPC_FIELD_FILTER_TARE_ORIENTATION, 1},
+    {"commanded_zupt", 0x22, MIPC_FIELD_FILTER_COMMANDED_ZUPT, 1},
+    {"commanded_zero_angular_rate_update", 0x23, MIPC_FIELD_FILTER_COMMANDED_ZERO_ANGULAR_RATE_UPDATE, 1},
+    {"mag_capture_auto_calibration", 0x27, MIPC_FIELD_FILTER_MAG_CAPTURE_AUTO_CALIBRATION, 1},
+    {"gravity_noise_std_dev", 0x28, MIPC_FIELD_FILTER_GRAVITY_NOISE_STD_DEV, 1},
+    {"gravity_noise_std_dev_response", 0x93, MIPC_FIELD_FILTER_GRAVITY_NOISE_STD_DEV_RESPONSE, 1},
+    {"pressure_altitude_noise_std_dev", 0x29, MIPC_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV, 1},
     {"pressure_altitude_noise_std_dev_response", 0x94,
-     MIPC_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, 1},                                 /* 149 */
-    {"hard_iron_offset_noise", 0x2B, MIPC_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, 1},                   /* 150 */
-    {"hard_iron_offset_noise_response", 0x96, MIPC_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, 1}, /* 151 */
-    {"soft_iron_matrix_noise", 0x2C, MIPC_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, 1},                   /* 152 */
-    {"soft_iron_matrix_noise_response", 0x97, MIPC_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, 1}, /* 153 */
-    {"mag_noise_std_dev", 0x42, MIPC_FIELD_FILTER_MAG_NOISE_STD_DEV, 1},                             /* 154 */
-    {"mag_noise_std_dev_response", 0xB1, MIPC_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, 1},           /* 155 */
-    {"declination_source", 0x43, MIPC_FIELD_FILTER_DECLINATION_SOURCE, 1},                           /* 156 */
-    {"declination_source_response", 0xB2, MIPC_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, 1},         /* 157 */
+     MIPC_FIELD_FILTER_PRESSURE_ALTITUDE_NOISE_STD_DEV_RESPONSE, 1},
+    {"hard_iron_offset_noise", 0x2B, MIPC_FIELD_FILTER_HARD_IRON_OFFSET_NOISE, 1},
+    {"hard_iron_offset_noise_response", 0x96, MIPC_FIELD_FILTER_HARD_IRON_OFFSET_NOISE_RESPONSE, 1},
+    {"soft_iron_matrix_noise", 0x2C, MIPC_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE, 1},
+    {"soft_iron_matrix_noise_response", 0x97, MIPC_FIELD_FILTER_SOFT_IRON_MATRIX_NOISE_RESPONSE, 1},
+    {"mag_noise_std_dev", 0x42, MIPC_FIELD_FILTER_MAG_NOISE_STD_DEV, 1},
+    {"mag_noise_std_dev_response", 0xB1, MIPC_FIELD_FILTER_MAG_NOISE_STD_DEV_RESPONSE, 1},
+    {"declination_source", 0x43, MIPC_FIELD_FILTER_DECLINATION_SOURCE, 1},
+    {"declination_source_response", 0xB2, MIPC_FIELD_FILTER_DECLINATION_SOURCE_RESPONSE, 1},
     {"gravity_magnitude_adaptive_measurement", 0x44, MIPC_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT,
-     1}, /* 158 */
+     1},
     {"gravity_magnitude_adaptive_measurement_response", 0xB3,
-     MIPC_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 159 */
-    {"mag_magnitude_adaptive_measurement", 0x45, MIPC_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT,
-     1}, /* 160 */
+     MIPC_FIELD_FILTER_GRAVITY_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},
+    {"mag_magnitude_adaptive_measurement", 0x45, MIPC_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT, 1},
     {"mag_magnitude_adaptive_measurement_response", 0xB4,
-     MIPC_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1}, /* 161 */
-    {"mag_dip_angle_adaptive_measurement", 0x46, MIPC_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT,
-     1}, /* 162 */
+     MIPC_FIELD_FILTER_MAG_MAGNITUDE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},
+    {"mag_dip_angle_adaptive_measurement", 0x46, MIPC_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT, 1},
     {"mag_dip_angle_adaptive_measurement_response", 0xB5,
-     MIPC_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},              /* 163 */
-    {"altitude_aiding_control", 0x47, MIPC_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, 1}, /* 164 */
-    {"altitude_aiding_control_response", 0xB7, MIPC_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE,
-     1},                                                                                 /* 165 */
-    {"pitch_roll_aiding_control", 0x4B, MIPC_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, 1}, /* 166 */
-    {"pitch_roll_aiding_control_response", 0xBB, MIPC_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE,
-     1},                                                                                             /* 167 */
-    {"inclination_source", 0x4C, MIPC_FIELD_FILTER_INCLINATION_SOURCE, 1},                           /* 168 */
-    {"inclination_source_response", 0xBC, MIPC_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, 1},         /* 169 */
-    {"magnetic_field_magnitude_source", 0x4D, MIPC_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, 1}, /* 170 */
+     MIPC_FIELD_FILTER_MAG_DIP_ANGLE_ADAPTIVE_MEASUREMENT_RESPONSE, 1},
+    {"altitude_aiding_control", 0x47, MIPC_FIELD_FILTER_ALTITUDE_AIDING_CONTROL, 1},
+    {"altitude_aiding_control_response", 0xB7, MIPC_FIELD_FILTER_ALTITUDE_AIDING_CONTROL_RESPONSE, 1},
+    {"pitch_roll_aiding_control", 0x4B, MIPC_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL, 1},
+    {"pitch_roll_aiding_control_response", 0xBB, MIPC_FIELD_FILTER_PITCH_ROLL_AIDING_CONTROL_RESPONSE, 1},
+    {"inclination_source", 0x4C, MIPC_FIELD_FILTER_INCLINATION_SOURCE, 1},
+    {"inclination_source_response", 0xBC, MIPC_FIELD_FILTER_INCLINATION_SOURCE_RESPONSE, 1},
+    {"magnetic_field_magnitude_source", 0x4D, MIPC_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE, 1},
     {"magnetic_field_magnitude_source_response", 0xBD,
-     MIPC_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, 1},                       /* 171 */
-    {"aiding_measurement_control", 0x50, MIPC_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, 1}, /* 172 */
-    {"aiding_measurement_control_response", 0xD0, MIPC_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE,
-     1},                                                                                       /* 173 */
-    {"initialization_configuration", 0x52, MIPC_FIELD_FILTER_INITIALIZATION_CONFIGURATION, 1}, /* 174 */
+     MIPC_FIELD_FILTER_MAGNETIC_FIELD_MAGNITUDE_SOURCE_RESPONSE, 1},
+    {"aiding_measurement_control", 0x50, MIPC_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL, 1},
+    {"aiding_measurement_control_response", 0xD0, MIPC_FIELD_FILTER_AIDING_MEASUREMENT_CONTROL_RESPONSE, 1},
+    {"initialization_configuration", 0x52, MIPC_FIELD_FILTER_INITIALIZATION_CONFIGURATION, 1},
     {"initialization_configuration_response", 0xD2, MIPC_FIELD_FILTER_INITIALIZATION_CONFIGURATION_RESPONSE,
-     1},                                                                             /* 175 */
-    {"adaptive_filter_control", 0x53, MIPC_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, 1}, /* 176 */
-    {"adaptive_filter_control_response", 0xD3, MIPC_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE,
-     1},                                                                                             /* 177 */
-    {"multi_antenna_offset", 0x54, MIPC_FIELD_FILTER_MULTI_ANTENNA_OFFSET, 1},                       /* 178 */
-    {"multi_antenna_offset_response", 0xD4, MIPC_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, 1},     /* 179 */
-    {"relative_position_configuration", 0x55, MIPC_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, 1}, /* 180 */
+     1},
+    {"adaptive_filter_control", 0x53, MIPC_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL, 1},
+    {"adaptive_filter_control_response", 0xD3, MIPC_FIELD_FILTER_ADAPTIVE_FILTER_CONTROL_RESPONSE, 1},
+    {"multi_antenna_offset", 0x54, MIPC_FIELD_FILTER_MULTI_ANTENNA_OFFSET, 1},
+    {"multi_antenna_offset_response", 0xD4, MIPC_FIELD_FILTER_MULTI_ANTENNA_OFFSET_RESPONSE, 1},
+    {"relative_position_configuration", 0x55, MIPC_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION, 1},
     {"relative_position_configuration_response", 0xD5,
-     MIPC_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, 1},                     /* 181 */
-    {"reference_point_lever_arm", 0x56, MIPC_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, 1}, /* 182 */
-    {"reference_point_lever_arm_response", 0xD6, MIPC_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE,
-     1},                                                                               /* 183 */
-    {"speed_lever_arm", 0x61, MIPC_FIELD_FILTER_SPEED_LEVER_ARM, 1},                   /* 184 */
-    {"speed_lever_arm_response", 0xE1, MIPC_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, 1}, /* 185 */
-    {"wheeled_vehicle_constraint_control", 0x63, MIPC_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL,
-     1}, /* 186 */
+     MIPC_FIELD_FILTER_RELATIVE_POSITION_CONFIGURATION_RESPONSE, 1},
+    {"reference_point_lever_arm", 0x56, MIPC_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM, 1},
+    {"reference_point_lever_arm_response", 0xD6, MIPC_FIELD_FILTER_REFERENCE_POINT_LEVER_ARM_RESPONSE, 1},
+    {"speed_lever_arm", 0x61, MIPC_FIELD_FILTER_SPEED_LEVER_ARM, 1},
+    {"speed_lever_arm_response", 0xE1, MIPC_FIELD_FILTER_SPEED_LEVER_ARM_RESPONSE, 1},
+    {"wheeled_vehicle_constraint_control", 0x63, MIPC_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL, 1},
     {"wheeled_vehicle_constraint_control_response", 0xE3,
-     MIPC_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE, 1}, /* 187 */
-    {"gnss_antenna_calibration_control", 0x64, MIPC_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL,
-     1}, /* 188 */
+     MIPC_FIELD_FILTER_WHEELED_VEHICLE_CONSTRAINT_CONTROL_RESPONSE, 1},
+    {"gnss_antenna_calibration_control", 0x64, MIPC_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL, 1},
     {"gnss_antenna_calibration_control_response", 0xE4,
-     MIPC_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, 1},                          /* 189 */
-    {"receiver_info", 0x01, MIPC_FIELD_GNSS_RECEIVER_INFO, 1},                                 /* 190 */
-    {"receiver_info_response", 0x81, MIPC_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},               /* 191 */
-    {"signal_configuration", 0x02, MIPC_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},                   /* 192 */
-    {"signal_configuration_response", 0x82, MIPC_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1}, /* 193 */
-    {"spartn_configuration", 0x20, MIPC_FIELD_GNSS_SPARTN_CONFIGURATION, 1},                   /* 194 */
-    {"spartn_configuration_response", 0xA0, MIPC_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1}, /* 195 */
-    {"frame_config", 0x01, MIPC_FIELD_AIDING_FRAME_CONFIG, 1},                                 /* 196 */
-    {"frame_config_response", 0x81, MIPC_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},               /* 197 */
-    {"echo_control", 0x1F, MIPC_FIELD_AIDING_ECHO_CONTROL, 1},                                 /* 198 */
-    {"echo_control_response", 0x9F, MIPC_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},               /* 199 */
-    {"ecef_position", 0x21, MIPC_FIELD_AIDING_ECEF_POSITION, 1},                               /* 200 */
-    {"llh_position", 0x22, MIPC_FIELD_AIDING_LLH_POSITION, 1},                                 /* 201 */
-    {"height_above_ellipsoid", 0x23, MIPC_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},             /* 202 */
-    {"ecef_velocity", 0x28, MIPC_FIELD_AIDING_ECEF_VELOCITY, 1},                               /* 203 */
-    {"ned_velocity", 0x29, MIPC_FIELD_AIDING_NED_VELOCITY, 1},                                 /* 204 */
-    {"body_frame_velocity", 0x2A, MIPC_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},                   /* 205 */
-    {"true_heading", 0x31, MIPC_FIELD_AIDING_TRUE_HEADING, 1},                                 /* 206 */
-    {"magnetic_field", 0x32, MIPC_FIELD_AIDING_MAGNETIC_FIELD, 1},                             /* 207 */
-    {"pressure", 0x33, MIPC_FIELD_AIDING_PRESSURE, 1},                                         /* 208 */
-    {"communication_mode", 0x10, MIPC_FIELD_SYSTEM_COMMUNICATION_MODE, 1},                     /* 209 */
-    {"communication_mode_response", 0x90, MIPC_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},   /* 210 */
-    {"scaled_accel", 0x04, MIPC_FIELD_SENSOR_SCALED_ACCEL, 1},                                 /* 211 */
-    {"scaled_gyro", 0x05, MIPC_FIELD_SENSOR_SCALED_GYRO, 1},                                   /* 212 */
-    {"scaled_mag", 0x06, MIPC_FIELD_SENSOR_SCALED_MAG, 1},                                     /* 213 */
-    {"delta_theta", 0x07, MIPC_FIELD_SENSOR_DELTA_THETA, 1},                                   /* 214 */
-    {"delta_velocity", 0x08, MIPC_FIELD_SENSOR_DELTA_VELOCITY, 1},                             /* 215 */
-    {"cf_orientation_matrix", 0x09, MIPC_FIELD_SENSOR_CF_ORIENTATION_MATRIX, 1},               /* 216 */
-    {"cf_quaternion", 0x0A, MIPC_FIELD_SENSOR_CF_QUATERNION, 1},                               /* 217 */
-    {"cf_euler_angles", 0x0C, MIPC_FIELD_SENSOR_CF_EULER_ANGLES, 1},                           /* 218 */
-    {"cf_stabilized_north", 0x10, MIPC_FIELD_SENSOR_CF_STABILIZED_NORTH, 1},                   /* 219 */
-    {"cf_stabilized_up", 0x11, MIPC_FIELD_SENSOR_CF_STABILIZED_UP, 1},                         /* 220 */
-    {"gps_timestamp", 0x12, MIPC_FIELD_SENSOR_GPS_TIMESTAMP, 1},                               /* 221 */
-    {"temperature_statistics", 0x14, MIPC_FIELD_SENSOR_TEMPERATURE_STATISTICS, 1},             /* 222 */
-    {"scaled_pressure", 0x17, MIPC_FIELD_SENSOR_SCALED_PRESSURE, 1},                           /* 223 */
-    {"overrange_status", 0x18, MIPC_FIELD_SENSOR_OVERRANGE_STATUS, 1},                         /* 224 */
-    {"odometer_data", 0x40, MIPC_FIELD_SENSOR_ODOMETER_DATA, 1},                               /* 225 */
-    {"llh_position", 0x03, MIPC_FIELD_GNSS_DATA_LLH_POSITION, 1},                              /* 226 */
-    {"ecef_position", 0x04, MIPC_FIELD_GNSS_DATA_ECEF_POSITION, 1},                            /* 227 */
-    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_DATA_NED_VELOCITY, 1},                              /* 228 */
-    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_DATA_ECEF_VELOCITY, 1},                            /* 229 */
-    {"dop", 0x07, MIPC_FIELD_GNSS_DATA_DOP, 1},                                                /* 230 */
-    {"utc_time", 0x08, MIPC_FIELD_GNSS_DATA_UTC_TIME, 1},                                      /* 231 */
-    {"gps_time", 0x09, MIPC_FIELD_GNSS_DATA_GPS_TIME, 1},                                      /* 232 */
-    {"clock_info", 0x0A, MIPC_FIELD_GNSS_DATA_CLOCK_INFO, 1},                                  /* 233 */
-    {"fix_info", 0x0B, MIPC_FIELD_GNSS_DATA_FIX_INFO, 1},                                      /* 234 */
-    {"sv_info", 0x0C, MIPC_FIELD_GNSS_DATA_SV_INFO, 1},                                        /* 235 */
-    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_DATA_HARDWARE_STATUS, 1},                        /* 236 */
-    {"dgnss_info", 0x0E, MIPC_FIELD_GNSS_DATA_DGNSS_INFO, 1},                                  /* 237 */
-    {"dgnss_channel_status", 0x0F, MIPC_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS, 1},              /* 238 */
-    {"llh_position", 0x01, MIPC_FIELD_FILTER_DATA_LLH_POSITION, 1},                            /* 239 */
-    {"ned_velocity", 0x02, MIPC_FIELD_FILTER_DATA_NED_VELOCITY, 1},                            /* 240 */
-    {"attitude_quaternion", 0x03, MIPC_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, 1},              /* 241 */
-    {"attitude_dcm", 0x04, MIPC_FIELD_FILTER_DATA_ATTITUDE_DCM, 1},                            /* 242 */
-    {"euler_angles", 0x05, MIPC_FIELD_FILTER_DATA_EULER_ANGLES, 1},                            /* 243 */
-    {"gyro_bias", 0x06, MIPC_FIELD_FILTER_DATA_GYRO_BIAS, 1},                                  /* 244 */
-    {"accel_bias", 0x07, MIPC_FIELD_FILTER_DATA_ACCEL_BIAS, 1},                                /* 245 */
-    {"llh_position_uncertainty", 0x08, MIPC_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, 1},    /* 246 */
-    {"ned_velocity_uncertainty", 0x09, MIPC_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, 1},    /* 247 */
-    {"euler_angles_uncertainty", 0x0A, MIPC_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, 1},    /* 248 */
-    {"gyro_bias_uncertainty", 0x0B, MIPC_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, 1},          /* 249 */
-    {"accel_bias_uncertainty", 0x0C, MIPC_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, 1},        /* 250 */
-    {"linear_accel", 0x0D, MIPC_FIELD_FILTER_DATA_LINEAR_ACCEL, 1},                            /* 251 */
-    {"comp_angular_rate", 0x0E, MIPC_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, 1},                  /* 252 */
-    {"wgs84_gravity_magnitude", 0x0F, MIPC_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, 1},      /* 253 */
-    {"filter_status", 0x10, MIPC_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, 2},                   /* 254 */
-    {"gps_timestamp", 0x11, MIPC_FIELD_FILTER_DATA_GPS_TIMESTAMP, 1},                          /* 255 */
-    {"quaternion_attitude_uncertainty", 0x12, MIPC_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY,
-     1},                                                                            /* 256 */
-    {"gravity_vector", 0x13, MIPC_FIELD_FILTER_DATA_GRAVITY_VECTOR, 1},             /* 257 */
-    {"heading_update_state", 0x14, MIPC_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, 1}, /* 258 */
-    {"magnetic_model", 0x15, MIPC_FIELD_FILTER_DATA_MAGNETIC_MODEL, 1},             /* 259 */
-    {"gyro_scale_factor", 0x16, MIPC_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, 1},       /* 260 */
-    {"accel_scale_factor", 0x17, MIPC_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, 1},     /* 261 */
-    {"gyro_scale_factor_uncertainty", 0x18, MIPC_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY,
-     1}, /* 262 */
-    {"accel_scale_factor_uncertainty", 0x19, MIPC_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY,
-     1},                                                                                      /* 263 */
-    {"compensated_accel", 0x1C, MIPC_FIELD_FILTER_DATA_COMPENSATED_ACCEL, 1},                 /* 264 */
-    {"standard_atmosphere", 0x20, MIPC_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, 1},             /* 265 */
-    {"pressure_altitude", 0x21, MIPC_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, 1},                 /* 266 */
-    {"mag_auto_hard_iron_offset", 0x25, MIPC_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, 1}, /* 267 */
-    {"mag_auto_soft_iron_matrix", 0x26, MIPC_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, 1}, /* 268 */
+     MIPC_FIELD_FILTER_GNSS_ANTENNA_CALIBRATION_CONTROL_RESPONSE, 1},
+    {"receiver_info", 0x01, MIPC_FIELD_GNSS_RECEIVER_INFO, 1},
+    {"receiver_info_response", 0x81, MIPC_FIELD_GNSS_RECEIVER_INFO_RESPONSE, 1},
+    {"signal_configuration", 0x02, MIPC_FIELD_GNSS_SIGNAL_CONFIGURATION, 1},
+    {"signal_configuration_response", 0x82, MIPC_FIELD_GNSS_SIGNAL_CONFIGURATION_RESPONSE, 1},
+    {"spartn_configuration", 0x20, MIPC_FIELD_GNSS_SPARTN_CONFIGURATION, 1},
+    {"spartn_configuration_response", 0xA0, MIPC_FIELD_GNSS_SPARTN_CONFIGURATION_RESPONSE, 1},
+    {"frame_config", 0x01, MIPC_FIELD_AIDING_FRAME_CONFIG, 1},
+    {"frame_config_response", 0x81, MIPC_FIELD_AIDING_FRAME_CONFIG_RESPONSE, 1},
+    {"echo_control", 0x1F, MIPC_FIELD_AIDING_ECHO_CONTROL, 1},
+    {"echo_control_response", 0x9F, MIPC_FIELD_AIDING_ECHO_CONTROL_RESPONSE, 1},
+    {"ecef_position", 0x21, MIPC_FIELD_AIDING_ECEF_POSITION, 1},
+    {"llh_position", 0x22, MIPC_FIELD_AIDING_LLH_POSITION, 1},
+    {"height_above_ellipsoid", 0x23, MIPC_FIELD_AIDING_HEIGHT_ABOVE_ELLIPSOID, 1},
+    {"ecef_velocity", 0x28, MIPC_FIELD_AIDING_ECEF_VELOCITY, 1},
+    {"ned_velocity", 0x29, MIPC_FIELD_AIDING_NED_VELOCITY, 1},
+    {"body_frame_velocity", 0x2A, MIPC_FIELD_AIDING_BODY_FRAME_VELOCITY, 1},
+    {"true_heading", 0x31, MIPC_FIELD_AIDING_TRUE_HEADING, 1},
+    {"magnetic_field", 0x32, MIPC_FIELD_AIDING_MAGNETIC_FIELD, 1},
+    {"pressure", 0x33, MIPC_FIELD_AIDING_PRESSURE, 1},
+    {"communication_mode", 0x10, MIPC_FIELD_SYSTEM_COMMUNICATION_MODE, 1},
+    {"communication_mode_response", 0x90, MIPC_FIELD_SYSTEM_COMMUNICATION_MODE_RESPONSE, 1},
+    {"scaled_accel", 0x04, MIPC_FIELD_SENSOR_SCALED_ACCEL, 1},
+    {"scaled_gyro", 0x05, MIPC_FIELD_SENSOR_SCALED_GYRO, 1},
+    {"scaled_mag", 0x06, MIPC_FIELD_SENSOR_SCALED_MAG, 1},
+    {"delta_theta", 0x07, MIPC_FIELD_SENSOR_DELTA_THETA, 1},
+    {"delta_velocity", 0x08, MIPC_FIELD_SENSOR_DELTA_VELOCITY, 1},
+    {"cf_orientation_matrix", 0x09, MIPC_FIELD_SENSOR_CF_ORIENTATION_MATRIX, 1},
+    {"cf_quaternion", 0x0A, MIPC_FIELD_SENSOR_CF_QUATERNION, 1},
+    {"cf_euler_angles", 0x0C, MIPC_FIELD_SENSOR_CF_EULER_ANGLES, 1},
+    {"cf_stabilized_north", 0x10, MIPC_FIELD_SENSOR_CF_STABILIZED_NORTH, 1},
+    {"cf_stabilized_up", 0x11, MIPC_FIELD_SENSOR_CF_STABILIZED_UP, 1},
+    {"gps_timestamp", 0x12, MIPC_FIELD_SENSOR_GPS_TIMESTAMP, 1},
+    {"temperature_statistics", 0x14, MIPC_FIELD_SENSOR_TEMPERATURE_STATISTICS, 1},
+    {"scaled_pressure", 0x17, MIPC_FIELD_SENSOR_SCALED_PRESSURE, 1},
+    {"overrange_status", 0x18, MIPC_FIELD_SENSOR_OVERRANGE_STATUS, 1},
+    {"odometer_data", 0x40, MIPC_FIELD_SENSOR_ODOMETER_DATA, 1},
+    {"llh_position", 0x03, MIPC_FIELD_GNSS_DATA_LLH_POSITION, 1},
+    {"ecef_position", 0x04, MIPC_FIELD_GNSS_DATA_ECEF_POSITION, 1},
+    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_DATA_NED_VELOCITY, 1},
+    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_DATA_ECEF_VELOCITY, 1},
+    {"dop", 0x07, MIPC_FIELD_GNSS_DATA_DOP, 1},
+    {"utc_time", 0x08, MIPC_FIELD_GNSS_DATA_UTC_TIME, 1},
+    {"gps_time", 0x09, MIPC_FIELD_GNSS_DATA_GPS_TIME, 1},
+    {"clock_info", 0x0A, MIPC_FIELD_GNSS_DATA_CLOCK_INFO, 1},
+    {"fix_info", 0x0B, MIPC_FIELD_GNSS_DATA_FIX_INFO, 1},
+    {"sv_info", 0x0C, MIPC_FIELD_GNSS_DATA_SV_INFO, 1},
+    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_DATA_HARDWARE_STATUS, 1},
+    {"dgnss_info", 0x0E, MIPC_FIELD_GNSS_DATA_DGNSS_INFO, 1},
+    {"dgnss_channel_status", 0x0F, MIPC_FIELD_GNSS_DATA_DGNSS_CHANNEL_STATUS, 1},
+    {"llh_position", 0x01, MIPC_FIELD_FILTER_DATA_LLH_POSITION, 1},
+    {"ned_velocity", 0x02, MIPC_FIELD_FILTER_DATA_NED_VELOCITY, 1},
+    {"attitude_quaternion", 0x03, MIPC_FIELD_FILTER_DATA_ATTITUDE_QUATERNION, 1},
+    {"attitude_dcm", 0x04, MIPC_FIELD_FILTER_DATA_ATTITUDE_DCM, 1},
+    {"euler_angles", 0x05, MIPC_FIELD_FILTER_DATA_EULER_ANGLES, 1},
+    {"gyro_bias", 0x06, MIPC_FIELD_FILTER_DATA_GYRO_BIAS, 1},
+    {"accel_bias", 0x07, MIPC_FIELD_FILTER_DATA_ACCEL_BIAS, 1},
+    {"llh_position_uncertainty", 0x08, MIPC_FIELD_FILTER_DATA_LLH_POSITION_UNCERTAINTY, 1},
+    {"ned_velocity_uncertainty", 0x09, MIPC_FIELD_FILTER_DATA_NED_VELOCITY_UNCERTAINTY, 1},
+    {"euler_angles_uncertainty", 0x0A, MIPC_FIELD_FILTER_DATA_EULER_ANGLES_UNCERTAINTY, 1},
+    {"gyro_bias_uncertainty", 0x0B, MIPC_FIELD_FILTER_DATA_GYRO_BIAS_UNCERTAINTY, 1},
+    {"accel_bias_uncertainty", 0x0C, MIPC_FIELD_FILTER_DATA_ACCEL_BIAS_UNCERTAINTY, 1},
+    {"linear_accel", 0x0D, MIPC_FIELD_FILTER_DATA_LINEAR_ACCEL, 1},
+    {"comp_angular_rate", 0x0E, MIPC_FIELD_FILTER_DATA_COMP_ANGULAR_RATE, 1},
+    {"wgs84_gravity_magnitude", 0x0F, MIPC_FIELD_FILTER_DATA_WGS84_GRAVITY_MAGNITUDE, 1},
+    {"filter_status", 0x10, MIPC_FIELD_FILTER_DATA_FILTER_STATUS_GX5_45, 2},
+    {"gps_timestamp", 0x11, MIPC_FIELD_FILTER_DATA_GPS_TIMESTAMP, 1},
+    {"quaternion_attitude_uncertainty", 0x12, MIPC_FIELD_FILTER_DATA_QUATERNION_ATTITUDE_UNCERTAINTY, 1},
+    {"gravity_vector", 0x13, MIPC_FIELD_FILTER_DATA_GRAVITY_VECTOR, 1},
+    {"heading_update_state", 0x14, MIPC_FIELD_FILTER_DATA_HEADING_UPDATE_STATE, 1},
+    {"magnetic_model", 0x15, MIPC_FIELD_FILTER_DATA_MAGNETIC_MODEL, 1},
+    {"gyro_scale_factor", 0x16, MIPC_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR, 1},
+    {"accel_scale_factor", 0x17, MIPC_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR, 1},
+    {"gyro_scale_factor_uncertainty", 0x18, MIPC_FIELD_FILTER_DATA_GYRO_SCALE_FACTOR_UNCERTAINTY, 1},
+    {"accel_scale_factor_uncertainty", 0x19, MIPC_FIELD_FILTER_DATA_ACCEL_SCALE_FACTOR_UNCERTAINTY, 1},
+    {"compensated_accel", 0x1C, MIPC_FIELD_FILTER_DATA_COMPENSATED_ACCEL, 1},
+    {"standard_atmosphere", 0x20, MIPC_FIELD_FILTER_DATA_STANDARD_ATMOSPHERE, 1},
+    {"pressure_altitude", 0x21, MIPC_FIELD_FILTER_DATA_PRESSURE_ALTITUDE, 1},
+    {"mag_auto_hard_iron_offset", 0x25, MIPC_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET, 1},
+    {"mag_auto_soft_iron_matrix", 0x26, MIPC_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX, 1},
     {"mag_auto_hard_iron_offset_uncertainty", 0x28,
-     MIPC_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, 1}, /* 269 */
+     MIPC_FIELD_FILTER_DATA_MAG_AUTO_HARD_IRON_OFFSET_UNCERTAINTY, 1},
     {"mag_auto_soft_iron_matrix_uncertainty", 0x29,
-     MIPC_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, 1}, /* 270 */
-    {"gnss_antenna_offset_correction", 0x30, MIPC_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION,
-     1}, /* 271 */
+     MIPC_FIELD_FILTER_DATA_MAG_AUTO_SOFT_IRON_MATRIX_UNCERTAINTY, 1},
+    {"gnss_antenna_offset_correction", 0x30, MIPC_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION, 1},
     {"gnss_antenna_offset_correction_uncertainty", 0x31,
-     MIPC_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1}, /* 272 */
-    {"multi_antenna_offset_correction", 0x34, MIPC_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION,
-     1}, /* 273 */
+     MIPC_FIELD_FILTER_DATA_GNSS_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},
+    {"multi_antenna_offset_correction", 0x34, MIPC_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION, 1},
     {"multi_antenna_offset_correction_uncertainty", 0x35,
-     MIPC_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},                      /* 274 */
-    {"ecef_position_uncertainty", 0x36, MIPC_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, 1},     /* 275 */
-    {"ecef_velocity_uncertainty", 0x37, MIPC_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, 1},     /* 276 */
-    {"ecef_position", 0x40, MIPC_FIELD_FILTER_DATA_ECEF_POSITION, 1},                             /* 277 */
-    {"ecef_velocity", 0x41, MIPC_FIELD_FILTER_DATA_ECEF_VELOCITY, 1},                             /* 278 */
-    {"ned_relative_position", 0x42, MIPC_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, 1},             /* 279 */
-    {"gnss_position_aiding_status", 0x43, MIPC_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, 1}, /* 280 */
-    {"aiding_measurement_summary", 0x46, MIPC_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, 1},   /* 281 */
-    {"odometer_scale_factor_error", 0x47, MIPC_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, 1}, /* 282 */
+     MIPC_FIELD_FILTER_DATA_MULTI_ANTENNA_OFFSET_CORRECTION_UNCERTAINTY, 1},
+    {"ecef_position_uncertainty", 0x36, MIPC_FIELD_FILTER_DATA_ECEF_POSITION_UNCERTAINTY, 1},
+    {"ecef_velocity_uncertainty", 0x37, MIPC_FIELD_FILTER_DATA_ECEF_VELOCITY_UNCERTAINTY, 1},
+    {"ecef_position", 0x40, MIPC_FIELD_FILTER_DATA_ECEF_POSITION, 1},
+    {"ecef_velocity", 0x41, MIPC_FIELD_FILTER_DATA_ECEF_VELOCITY, 1},
+    {"ned_relative_position", 0x42, MIPC_FIELD_FILTER_DATA_NED_RELATIVE_POSITION, 1},
+    {"gnss_position_aiding_status", 0x43, MIPC_FIELD_FILTER_DATA_GNSS_POSITION_AIDING_STATUS, 1},
+    {"aiding_measurement_summary", 0x46, MIPC_FIELD_FILTER_DATA_AIDING_MEASUREMENT_SUMMARY, 1},
+    {"odometer_scale_factor_error", 0x47, MIPC_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR, 1},
     {"odometer_scale_factor_error_uncertainty", 0x48,
-     MIPC_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, 1},                      /* 283 */
-    {"gnss_dual_antenna_status", 0x49, MIPC_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, 1},   /* 284 */
-    {"aiding_frame_config_error", 0x50, MIPC_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, 1}, /* 285 */
+     MIPC_FIELD_FILTER_DATA_ODOMETER_SCALE_FACTOR_ERROR_UNCERTAINTY, 1},
+    {"gnss_dual_antenna_status", 0x49, MIPC_FIELD_FILTER_DATA_GNSS_DUAL_ANTENNA_STATUS, 1},
+    {"aiding_frame_config_error", 0x50, MIPC_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR, 1},
     {"aiding_frame_config_error_uncertainty", 0x51,
-     MIPC_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, 1},                       /* 286 */
-    {"llh_position", 0x03, MIPC_FIELD_GNSS_RECEIVER_1_LLH_POSITION, 1},                      /* 287 */
-    {"ecef_position", 0x04, MIPC_FIELD_GNSS_RECEIVER_1_ECEF_POSITION, 1},                    /* 288 */
-    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_RECEIVER_1_NED_VELOCITY, 1},                      /* 289 */
-    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY, 1},                    /* 290 */
-    {"dop", 0x07, MIPC_FIELD_GNSS_RECEIVER_1_DOP, 1},                                        /* 291 */
-    {"utc_time", 0x08, MIPC_FIELD_GNSS_RECEIVER_1_UTC_TIME, 1},                              /* 292 */
-    {"gps_time", 0x09, MIPC_FIELD_GNSS_RECEIVER_1_GPS_TIME, 1},                              /* 293 */
-    {"fix_info", 0x0B, MIPC_FIELD_GNSS_RECEIVER_1_FIX_INFO, 1},                              /* 294 */
-    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS, 1},                /* 295 */
-    {"clock_info_2", 0x10, MIPC_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2, 1},                      /* 296 */
-    {"gps_leap_seconds", 0x11, MIPC_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS, 1},              /* 297 */
-    {"sbas_info", 0x12, MIPC_FIELD_GNSS_RECEIVER_1_SBAS_INFO, 1},                            /* 298 */
-    {"satellite_status", 0x20, MIPC_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS, 1},              /* 299 */
-    {"raw", 0x22, MIPC_FIELD_GNSS_RECEIVER_1_RAW, 1},                                        /* 300 */
-    {"gps_ephemeris", 0x61, MIPC_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS, 1},                    /* 301 */
-    {"glonass_ephemeris", 0x62, MIPC_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS, 1},            /* 302 */
-    {"galileo_ephemeris", 0x63, MIPC_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS, 1},            /* 303 */
-    {"beidou_ephemeris", 0x64, MIPC_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS, 1},              /* 304 */
-    {"llh_position", 0x03, MIPC_FIELD_GNSS_RECEIVER_2_LLH_POSITION, 1},                      /* 305 */
-    {"ecef_position", 0x04, MIPC_FIELD_GNSS_RECEIVER_2_ECEF_POSITION, 1},                    /* 306 */
-    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_RECEIVER_2_NED_VELOCITY, 1},                      /* 307 */
-    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY, 1},                    /* 308 */
-    {"dop", 0x07, MIPC_FIELD_GNSS_RECEIVER_2_DOP, 1},                                        /* 309 */
-    {"utc_time", 0x08, MIPC_FIELD_GNSS_RECEIVER_2_UTC_TIME, 1},                              /* 310 */
-    {"gps_time", 0x09, MIPC_FIELD_GNSS_RECEIVER_2_GPS_TIME, 1},                              /* 311 */
-    {"fix_info", 0x0B, MIPC_FIELD_GNSS_RECEIVER_2_FIX_INFO, 1},                              /* 312 */
-    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS, 1},                /* 313 */
-    {"clock_info_2", 0x10, MIPC_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2, 1},                      /* 314 */
-    {"gps_leap_seconds", 0x11, MIPC_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS, 1},              /* 315 */
-    {"sbas_info", 0x12, MIPC_FIELD_GNSS_RECEIVER_2_SBAS_INFO, 1},                            /* 316 */
-    {"satellite_status", 0x20, MIPC_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS, 1},              /* 317 */
-    {"raw", 0x22, MIPC_FIELD_GNSS_RECEIVER_2_RAW, 1},                                        /* 318 */
-    {"gps_ephemeris", 0x61, MIPC_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS, 1},                    /* 319 */
-    {"glonass_ephemeris", 0x62, MIPC_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS, 1},            /* 320 */
-    {"galileo_ephemeris", 0x63, MIPC_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS, 1},            /* 321 */
-    {"beidou_ephemeris", 0x64, MIPC_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS, 1},              /* 322 */
-    {"base_station_info", 0x30, MIPC_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO, 1},           /* 323 */
-    {"rtk_corrections_status", 0x31, MIPC_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS, 1}, /* 324 */
-    {"llh_position", 0x03, MIPC_FIELD_GNSS_EXTERNAL_LLH_POSITION, 1},                        /* 325 */
-    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_EXTERNAL_NED_VELOCITY, 1},                        /* 326 */
-    {"utc_time", 0x08, MIPC_FIELD_GNSS_EXTERNAL_UTC_TIME, 1},                                /* 327 */
-    {"fix_info", 0x0B, MIPC_FIELD_GNSS_EXTERNAL_FIX_INFO, 1},                                /* 328 */
-    {"satellite_status", 0x20, MIPC_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS, 1},                /* 329 */
-    {"built_in_test", 0x01, MIPC_FIELD_SYSTEM_DATA_BUILT_IN_TEST, 1},                        /* 330 */
-    {"time_sync_status", 0x02, MIPC_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS, 1},                  /* 331 */
-    {"gpio_state", 0x03, MIPC_FIELD_SYSTEM_DATA_GPIO_STATE, 1},                              /* 332 */
-    {"event_source", 0xD0, MIPC_FIELD_SHARED_EVENT_SOURCE, 1},                               /* 333 */
-    {"gps_timestamp", 0xD3, MIPC_FIELD_SHARED_GPS_TIMESTAMP, 1},                             /* 334 */
-    {"delta_time", 0xD4, MIPC_FIELD_SHARED_DELTA_TIME, 1},                                   /* 335 */
-    {"reference_timestamp", 0xD5, MIPC_FIELD_SHARED_REFERENCE_TIMESTAMP, 1},                 /* 336 */
-    {"reference_time_delta", 0xD6, MIPC_FIELD_SHARED_REFERENCE_TIME_DELTA, 1},               /* 337 */
-    {"external_timestamp", 0xD7, MIPC_FIELD_SHARED_EXTERNAL_TIMESTAMP, 1},                   /* 338 */
-    {"external_time_delta", 0xD8, MIPC_FIELD_SHARED_EXTERNAL_TIME_DELTA, 1},                 /* 339 */
+     MIPC_FIELD_FILTER_DATA_AIDING_FRAME_CONFIG_ERROR_UNCERTAINTY, 1},
+    {"llh_position", 0x03, MIPC_FIELD_GNSS_RECEIVER_1_LLH_POSITION, 1},
+    {"ecef_position", 0x04, MIPC_FIELD_GNSS_RECEIVER_1_ECEF_POSITION, 1},
+    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_RECEIVER_1_NED_VELOCITY, 1},
+    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_RECEIVER_1_ECEF_VELOCITY, 1},
+    {"dop", 0x07, MIPC_FIELD_GNSS_RECEIVER_1_DOP, 1},
+    {"utc_time", 0x08, MIPC_FIELD_GNSS_RECEIVER_1_UTC_TIME, 1},
+    {"gps_time", 0x09, MIPC_FIELD_GNSS_RECEIVER_1_GPS_TIME, 1},
+    {"fix_info", 0x0B, MIPC_FIELD_GNSS_RECEIVER_1_FIX_INFO, 1},
+    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_RECEIVER_1_HARDWARE_STATUS, 1},
+    {"clock_info_2", 0x10, MIPC_FIELD_GNSS_RECEIVER_1_CLOCK_INFO_2, 1},
+    {"gps_leap_seconds", 0x11, MIPC_FIELD_GNSS_RECEIVER_1_GPS_LEAP_SECONDS, 1},
+    {"sbas_info", 0x12, MIPC_FIELD_GNSS_RECEIVER_1_SBAS_INFO, 1},
+    {"satellite_status", 0x20, MIPC_FIELD_GNSS_RECEIVER_1_SATELLITE_STATUS, 1},
+    {"raw", 0x22, MIPC_FIELD_GNSS_RECEIVER_1_RAW, 1},
+    {"gps_ephemeris", 0x61, MIPC_FIELD_GNSS_RECEIVER_1_GPS_EPHEMERIS, 1},
+    {"glonass_ephemeris", 0x62, MIPC_FIELD_GNSS_RECEIVER_1_GLONASS_EPHEMERIS, 1},
+    {"galileo_ephemeris", 0x63, MIPC_FIELD_GNSS_RECEIVER_1_GALILEO_EPHEMERIS, 1},
+    {"beidou_ephemeris", 0x64, MIPC_FIELD_GNSS_RECEIVER_1_BEIDOU_EPHEMERIS, 1},
+    {"llh_position", 0x03, MIPC_FIELD_GNSS_RECEIVER_2_LLH_POSITION, 1},
+    {"ecef_position", 0x04, MIPC_FIELD_GNSS_RECEIVER_2_ECEF_POSITION, 1},
+    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_RECEIVER_2_NED_VELOCITY, 1},
+    {"ecef_velocity", 0x06, MIPC_FIELD_GNSS_RECEIVER_2_ECEF_VELOCITY, 1},
+    {"dop", 0x07, MIPC_FIELD_GNSS_RECEIVER_2_DOP, 1},
+    {"utc_time", 0x08, MIPC_FIELD_GNSS_RECEIVER_2_UTC_TIME, 1},
+    {"gps_time", 0x09, MIPC_FIELD_GNSS_RECEIVER_2_GPS_TIME, 1},
+    {"fix_info", 0x0B, MIPC_FIELD_GNSS_RECEIVER_2_FIX_INFO, 1},
+    {"hardware_status", 0x0D, MIPC_FIELD_GNSS_RECEIVER_2_HARDWARE_STATUS, 1},
+    {"clock_info_2", 0x10, MIPC_FIELD_GNSS_RECEIVER_2_CLOCK_INFO_2, 1},
+    {"gps_leap_seconds", 0x11, MIPC_FIELD_GNSS_RECEIVER_2_GPS_LEAP_SECONDS, 1},
+    {"sbas_info", 0x12, MIPC_FIELD_GNSS_RECEIVER_2_SBAS_INFO, 1},
+    {"satellite_status", 0x20, MIPC_FIELD_GNSS_RECEIVER_2_SATELLITE_STATUS, 1},
+    {"raw", 0x22, MIPC_FIELD_GNSS_RECEIVER_2_RAW, 1},
+    {"gps_ephemeris", 0x61, MIPC_FIELD_GNSS_RECEIVER_2_GPS_EPHEMERIS, 1},
+    {"glonass_ephemeris", 0x62, MIPC_FIELD_GNSS_RECEIVER_2_GLONASS_EPHEMERIS, 1},
+    {"galileo_ephemeris", 0x63, MIPC_FIELD_GNSS_RECEIVER_2_GALILEO_EPHEMERIS, 1},
+    {"beidou_ephemeris", 0x64, MIPC_FIELD_GNSS_RECEIVER_2_BEIDOU_EPHEMERIS, 1},
+    {"base_station_info", 0x30, MIPC_FIELD_GNSS_CORRECTIONS_BASE_STATION_INFO, 1},
+    {"rtk_corrections_status", 0x31, MIPC_FIELD_GNSS_CORRECTIONS_RTK_CORRECTIONS_STATUS, 1},
+    {"llh_position", 0x03, MIPC_FIELD_GNSS_EXTERNAL_LLH_POSITION, 1},
+    {"ned_velocity", 0x05, MIPC_FIELD_GNSS_EXTERNAL_NED_VELOCITY, 1},
+    {"utc_time", 0x08, MIPC_FIELD_GNSS_EXTERNAL_UTC_TIME, 1},
+    {"fix_info", 0x0B, MIPC_FIELD_GNSS_EXTERNAL_FIX_INFO, 1},
+    {"satellite_status", 0x20, MIPC_FIELD_GNSS_EXTERNAL_SATELLITE_STATUS, 1},
+    {"built_in_test", 0x01, MIPC_FIELD_SYSTEM_DATA_BUILT_IN_TEST, 1},
+    {"time_sync_status", 0x02, MIPC_FIELD_SYSTEM_DATA_TIME_SYNC_STATUS, 1},
+    {"gpio_state", 0x03, MIPC_FIELD_SYSTEM_DATA_GPIO_STATE, 1},
+    {"event_source", 0xD0, MIPC_FIELD_SHARED_EVENT_SOURCE, 1},
+    {"gps_timestamp", 0xD3, MIPC_FIELD_SHARED_GPS_TIMESTAMP, 1},
+    {"delta_time", 0xD4, MIPC_FIELD_SHARED_DELTA_TIME, 1},
+    {"reference_timestamp", 0xD5, MIPC_FIELD_SHARED_REFERENCE_TIMESTAMP, 1},
+    {"reference_time_delta", 0xD6, MIPC_FIELD_SHARED_REFERENCE_TIME_DELTA, 1},
+    {"external_timestamp", 0xD7, MIPC_FIELD_SHARED_EXTERNAL_TIMESTAMP, 1},
+    {"external_time_delta", 0xD8, MIPC_FIELD_SHARED_EXTERNAL_TIME_DELTA, 1},
 };
 
 const mipc_layout_info_t *mipc_layout_info(mipc_field_id_t id) {

@@ -93,54 +93,53 @@ static const mscipc_layout_info_t k_layouts[MSCIPC_FIELD_COUNT] = {
     {MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL, "scaled_aux_accel", NULL, MSCIPC_DEVICE_ANY, 0x89},
 };
 
-static const mscipc_field_info_t k_fields[46] = {
-    {"ack", 0x80, MSCIPC_FIELD_ACK, 1},                                                      /* 0 */
-    {"ping", 0x02, MSCIPC_FIELD_BASE_PING, 1},                                               /* 1 */
-    {"get_device_messages", 0x03, MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES, 1},                 /* 2 */
-    {"device_messages", 0x83, MSCIPC_FIELD_BASE_DEVICE_MESSAGES, 1},                         /* 3 */
-    {"device_reset", 0x04, MSCIPC_FIELD_BASE_DEVICE_RESET, 1},                               /* 4 */
-    {"get_device_model", 0x05, MSCIPC_FIELD_BASE_GET_DEVICE_MODEL, 1},                       /* 5 */
-    {"device_model", 0x85, MSCIPC_FIELD_BASE_DEVICE_MODEL, 1},                               /* 6 */
-    {"get_device_sn", 0x06, MSCIPC_FIELD_BASE_GET_DEVICE_SN, 1},                             /* 7 */
-    {"device_sn", 0x86, MSCIPC_FIELD_BASE_DEVICE_SN, 1},                                     /* 8 */
-    {"get_device_fw", 0x07, MSCIPC_FIELD_BASE_GET_DEVICE_FW, 1},                             /* 9 */
-    {"device_fw", 0x87, MSCIPC_FIELD_BASE_DEVICE_FW, 1},                                     /* 10 */
-    {"get_device_cal", 0x08, MSCIPC_FIELD_BASE_GET_DEVICE_CAL, 1},                           /* 11 */
-    {"device_cal", 0x88, MSCIPC_FIELD_BASE_DEVICE_CAL, 1},                                   /* 12 */
-    {"correlate_gps_time", 0x09, MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME, 1},                   /* 13 */
-    {"uart_baud_rate", 0x01, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE, 1},                     /* 14 */
-    {"uart_baud_rate_response", 0x81, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, 1},   /* 15 */
-    {"filter", 0x03, MSCIPC_FIELD_IMU_CONFIG_FILTER, 1},                                     /* 16 */
-    {"filter_response", 0x83, MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE, 1},                   /* 17 */
-    {"sample_rate", 0x04, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE, 1},                           /* 18 */
-    {"sample_rate_response", 0x84, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, 1},         /* 19 */
-    {"select_sensors", 0x05, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS, 1},                     /* 20 */
-    {"select_sensors_response", 0x85, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, 1},   /* 21 */
-    {"get_internal_sample_rate", 0x06, MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, 1}, /* 22 */
-    {"internal_sample_rate", 0x86, MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, 1},         /* 23 */
-    {"accel_range", 0x07, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE, 1},                           /* 24 */
-    {"accel_range_response", 0x87, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, 1},         /* 25 */
-    {"gyro_range", 0x08, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE, 1},                             /* 26 */
-    {"gyro_range_response", 0x88, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, 1},           /* 27 */
-    {"config_all", 0x09, MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL, 1},                             /* 28 */
-    {"data_on_off", 0x0A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF, 1},                           /* 29 */
-    {"data_on_off_response", 0x8A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, 1},         /* 30 */
-    {"xtrig_on_off", 0x0B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF, 1},                         /* 31 */
-    {"xtrig_on_off_response", 0x8B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, 1},       /* 32 */
-    {"select_sensors_rev_b", 0x0C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, 1},         /* 33 */
-    {"select_sensors_rev_b_response", 0x8C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE,
-     1},                                                                                     /* 34 */
-    {"aux_accel_range", 0x0D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, 1},                   /* 35 */
-    {"aux_accel_range_response", 0x8D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, 1}, /* 36 */
-    {"scaled_accel", 0x81, MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL, 1},                           /* 37 */
-    {"scaled_gyro", 0x82, MSCIPC_FIELD_IMU_DATA_SCALED_GYRO, 1},                             /* 38 */
-    {"scaled_mag", 0x83, MSCIPC_FIELD_IMU_DATA_SCALED_MAG, 1},                               /* 39 */
-    {"delta_theta", 0x84, MSCIPC_FIELD_IMU_DATA_DELTA_THETA, 1},                             /* 40 */
-    {"delta_velocity", 0x85, MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY, 1},                       /* 41 */
-    {"scaled_pressure", 0x86, MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE, 1},                     /* 42 */
-    {"scaled_temperature", 0x87, MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE, 1},               /* 43 */
-    {"gps_correlated_time", 0x88, MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME, 1},             /* 44 */
-    {"scaled_aux_accel", 0x89, MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL, 1},                   /* 45 */
+static const mscipc_field_info_t k_fields[] = {
+    {"ack", 0x80, MSCIPC_FIELD_ACK, 1},
+    {"ping", 0x02, MSCIPC_FIELD_BASE_PING, 1},
+    {"get_device_messages", 0x03, MSCIPC_FIELD_BASE_GET_DEVICE_MESSAGES, 1},
+    {"device_messages", 0x83, MSCIPC_FIELD_BASE_DEVICE_MESSAGES, 1},
+    {"device_reset", 0x04, MSCIPC_FIELD_BASE_DEVICE_RESET, 1},
+    {"get_device_model", 0x05, MSCIPC_FIELD_BASE_GET_DEVICE_MODEL, 1},
+    {"device_model", 0x85, MSCIPC_FIELD_BASE_DEVICE_MODEL, 1},
+    {"get_device_sn", 0x06, MSCIPC_FIELD_BASE_GET_DEVICE_SN, 1},
+    {"device_sn", 0x86, MSCIPC_FIELD_BASE_DEVICE_SN, 1},
+    {"get_device_fw", 0x07, MSCIPC_FIELD_BASE_GET_DEVICE_FW, 1},
+    {"device_fw", 0x87, MSCIPC_FIELD_BASE_DEVICE_FW, 1},
+    {"get_device_cal", 0x08, MSCIPC_FIELD_BASE_GET_DEVICE_CAL, 1},
+    {"device_cal", 0x88, MSCIPC_FIELD_BASE_DEVICE_CAL, 1},
+    {"correlate_gps_time", 0x09, MSCIPC_FIELD_BASE_CORRELATE_GPS_TIME, 1},
+    {"uart_baud_rate", 0x01, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE, 1},
+    {"uart_baud_rate_response", 0x81, MSCIPC_FIELD_IMU_CONFIG_UART_BAUD_RATE_RESPONSE, 1},
+    {"filter", 0x03, MSCIPC_FIELD_IMU_CONFIG_FILTER, 1},
+    {"filter_response", 0x83, MSCIPC_FIELD_IMU_CONFIG_FILTER_RESPONSE, 1},
+    {"sample_rate", 0x04, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE, 1},
+    {"sample_rate_response", 0x84, MSCIPC_FIELD_IMU_CONFIG_SAMPLE_RATE_RESPONSE, 1},
+    {"select_sensors", 0x05, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS, 1},
+    {"select_sensors_response", 0x85, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_RESPONSE, 1},
+    {"get_internal_sample_rate", 0x06, MSCIPC_FIELD_IMU_CONFIG_GET_INTERNAL_SAMPLE_RATE, 1},
+    {"internal_sample_rate", 0x86, MSCIPC_FIELD_IMU_CONFIG_INTERNAL_SAMPLE_RATE, 1},
+    {"accel_range", 0x07, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE, 1},
+    {"accel_range_response", 0x87, MSCIPC_FIELD_IMU_CONFIG_ACCEL_RANGE_RESPONSE, 1},
+    {"gyro_range", 0x08, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE, 1},
+    {"gyro_range_response", 0x88, MSCIPC_FIELD_IMU_CONFIG_GYRO_RANGE_RESPONSE, 1},
+    {"config_all", 0x09, MSCIPC_FIELD_IMU_CONFIG_CONFIG_ALL, 1},
+    {"data_on_off", 0x0A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF, 1},
+    {"data_on_off_response", 0x8A, MSCIPC_FIELD_IMU_CONFIG_DATA_ON_OFF_RESPONSE, 1},
+    {"xtrig_on_off", 0x0B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF, 1},
+    {"xtrig_on_off_response", 0x8B, MSCIPC_FIELD_IMU_CONFIG_XTRIG_ON_OFF_RESPONSE, 1},
+    {"select_sensors_rev_b", 0x0C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B, 1},
+    {"select_sensors_rev_b_response", 0x8C, MSCIPC_FIELD_IMU_CONFIG_SELECT_SENSORS_REV_B_RESPONSE, 1},
+    {"aux_accel_range", 0x0D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE, 1},
+    {"aux_accel_range_response", 0x8D, MSCIPC_FIELD_IMU_CONFIG_AUX_ACCEL_RANGE_RESPONSE, 1},
+    {"scaled_accel", 0x81, MSCIPC_FIELD_IMU_DATA_SCALED_ACCEL, 1},
+    {"scaled_gyro", 0x82, MSCIPC_FIELD_IMU_DATA_SCALED_GYRO, 1},
+    {"scaled_mag", 0x83, MSCIPC_FIELD_IMU_DATA_SCALED_MAG, 1},
+    {"delta_theta", 0x84, MSCIPC_FIELD_IMU_DATA_DELTA_THETA, 1},
+    {"delta_velocity", 0x85, MSCIPC_FIELD_IMU_DATA_DELTA_VELOCITY, 1},
+    {"scaled_pressure", 0x86, MSCIPC_FIELD_IMU_DATA_SCALED_PRESSURE, 1},
+    {"scaled_temperature", 0x87, MSCIPC_FIELD_IMU_DATA_SCALED_TEMPERATURE, 1},
+    {"gps_correlated_time", 0x88, MSCIPC_FIELD_IMU_DATA_GPS_CORRELATED_TIME, 1},
+    {"scaled_aux_accel", 0x89, MSCIPC_FIELD_IMU_DATA_SCALED_AUX_ACCEL, 1},
 };
 
 const mscipc_layout_info_t *mscipc_layout_info(mscipc_field_id_t id) {

@@ -58,16 +58,16 @@ static const democ_layout_info_t k_layouts[DEMOC_FIELD_COUNT] = {
     {DEMOC_FIELD_SHARED_TIMESTAMP, "timestamp", NULL, DEMOC_DEVICE_ANY, 0xD3},
 };
 
-static const democ_field_info_t k_fields[9] = {
-    {"ack", 0x80, DEMOC_FIELD_ACK, 1},                              /* 0 */
-    {"ping", 0x01, DEMOC_FIELD_COMMANDS_PING, 1},                   /* 1 */
-    {"configure", 0x02, DEMOC_FIELD_COMMANDS_CONFIGURE, 1},         /* 2 */
-    {"configuration", 0x82, DEMOC_FIELD_COMMANDS_CONFIGURATION, 1}, /* 3 */
-    {"per_device", 0x03, DEMOC_FIELD_COMMANDS_PER_DEVICE_DEV_A, 2}, /* 4 */
-    {"sample", 0x01, DEMOC_FIELD_DATA_SAMPLE, 1},                   /* 5 */
-    {"llh_position", 0x03, DEMOC_FIELD_RECEIVER_1_LLH_POSITION, 1}, /* 6 */
-    {"llh_position", 0x03, DEMOC_FIELD_RECEIVER_2_LLH_POSITION, 1}, /* 7 */
-    {"timestamp", 0xD3, DEMOC_FIELD_SHARED_TIMESTAMP, 1},           /* 8 */
+static const democ_field_info_t k_fields[] = {
+    {"ack", 0x80, DEMOC_FIELD_ACK, 1},
+    {"ping", 0x01, DEMOC_FIELD_COMMANDS_PING, 1},
+    {"configure", 0x02, DEMOC_FIELD_COMMANDS_CONFIGURE, 1},
+    {"configuration", 0x82, DEMOC_FIELD_COMMANDS_CONFIGURATION, 1},
+    {"per_device", 0x03, DEMOC_FIELD_COMMANDS_PER_DEVICE_DEV_A, 2},
+    {"sample", 0x01, DEMOC_FIELD_DATA_SAMPLE, 1},
+    {"llh_position", 0x03, DEMOC_FIELD_RECEIVER_1_LLH_POSITION, 1},
+    {"llh_position", 0x03, DEMOC_FIELD_RECEIVER_2_LLH_POSITION, 1},
+    {"timestamp", 0xD3, DEMOC_FIELD_SHARED_TIMESTAMP, 1},
 };
 
 const democ_layout_info_t *democ_layout_info(democ_field_id_t id) {
