@@ -11,6 +11,8 @@ the process by SIGPIPE, quietly, as the C tools and `cat` do; any other read or 
 (a full disk, an unreadable file, a directory, a closed stdin) is one line on stderr and exit 2,
 never a traceback. Input is read in blocks as it arrives; when stdout is not a regular file, the
 lines of every block are flushed at once (a live stream shows each packet when it arrives).
+Without --device and --samples the lines come from `LineDecoder`, printed in C when the
+accelerator is built (the same text as the pure path, which prints them otherwise).
 """
 
 from __future__ import annotations
