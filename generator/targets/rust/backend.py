@@ -822,7 +822,7 @@ class _Session:
                         assign.append(f"..<{struct} as crate::wire::Wire>::ZERO")
                     builds.append(
                         {
-                            "device": f"Device::{self.m.device_variant(v['device'])}" if v["device"] else None,
+                            "device": f"Model::{self.m.device_variant(v['device'])}" if v["device"] else None,
                             "struct": struct,
                             "wrap": wrap,
                             "assign": assign,
@@ -851,10 +851,13 @@ class _Session:
         }
 
     def _signature(self, v: dict, fn: str | None) -> dict:
-        """The arguments of function fn of layout v, and the struct fields they set."""
+        """The arguments of function fn of layout v, and the struct fields they set (count
+        parameters of counted arrays are set from the array)."""
         pm = model.layout(self.proto, v)
         counted = {q.count_param: q for q in pm.params if q.count_param}
         args, assign = [], []
+        arg_optional: dict[str, bool] = {}
+        counts = []
         for q in pm.params:
             x = ident(q.name)
             if q.function:
@@ -864,20 +867,23 @@ class _Session:
             if qfns is not None and fn not in qfns:
                 continue
             if q.name in counted:
-                arr = ident(counted[q.name].name)
-                arr_opt = counted[q.name].optional
-                length = f"{arr}.as_ref().map_or(0, |a| a.len())" if arr_opt else f"{arr}.len()"
-                cast = f"{length} as {self.m.elem_type(q.elem)}"
-                assign.append(f"{x}: Some({cast})" if q.optional else f"{x}: {cast}")
+                counts.append(q)
                 continue
             inner = self._inner(q)
             required = (qfns is not None and fn not in (q.ir.get("optional_for") or [])) or not q.ir.get("optional")
+            arg_optional[q.name] = not required
             if required:
                 args.append({"name": x, "type": inner})
                 assign.append(f"{x}: Some({x})" if q.optional else x)
             else:
                 args.append({"name": x, "type": f"Option<{inner}>"})
                 assign.append(x)
+        for q in counts:
+            arr = counted[q.name]
+            a = ident(arr.name)
+            length = f"{a}.as_ref().map_or(0, |a| a.len())" if arg_optional.get(arr.name) else f"{a}.len()"
+            cast = f"{length} as {self.m.elem_type(q.elem)}"
+            assign.append(f"{ident(q.name)}: Some({cast})" if q.optional else f"{ident(q.name)}: {cast}")
         args = [a for a in args if not a["type"].startswith("Option<")] + [
             a for a in args if a["type"].startswith("Option<")
         ]

@@ -311,7 +311,7 @@ fn send_gps_time_update_write<T: Transport>(
     value: u32,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::base::GpsTimeUpdateCv7Ins {
                 function: crate::types::FunctionSelector(1),
                 field_id,
@@ -799,8 +799,8 @@ fn send_get_event_trigger_status_get_event_trigger_status<T: Transport>(
     requested_instances: crate::bounded::BoundedVec<u8, 252>,
 ) -> Result<crate::threedm::EventTriggerStatus, SessionError> {
     let command = crate::threedm::GetEventTriggerStatus {
-        requested_count: requested_instances.len() as u8,
         requested_instances,
+        requested_count: requested_instances.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GetEventTriggerStatus(command));
     let done = device.call(&value)?;
@@ -815,8 +815,8 @@ fn send_get_event_action_status_get_event_action_status<T: Transport>(
     requested_instances: crate::bounded::BoundedVec<u8, 252>,
 ) -> Result<crate::threedm::EventActionStatus, SessionError> {
     let command = crate::threedm::GetEventActionStatus {
-        requested_count: requested_instances.len() as u8,
         requested_instances,
+        requested_count: requested_instances.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GetEventActionStatus(command));
     let done = device.call(&value)?;
@@ -1088,7 +1088,7 @@ fn send_device_startup_settings_save<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::DeviceStartupSettingsCv7Ins {
                 function: crate::types::FunctionSelector(3),
             };
@@ -1112,7 +1112,7 @@ fn send_device_startup_settings_load<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::DeviceStartupSettingsCv7Ins {
                 function: crate::types::FunctionSelector(4),
             };
@@ -1136,7 +1136,7 @@ fn send_device_startup_settings_default<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::DeviceStartupSettingsCv7Ins {
                 function: crate::types::FunctionSelector(5),
             };
@@ -1467,7 +1467,7 @@ fn send_accel_bias_write<T: Transport>(
     bias: [f32; 3],
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::AccelBiasCv7Ins {
                 function: crate::types::FunctionSelector(1),
                 bias: Some(bias),
@@ -1493,7 +1493,7 @@ fn send_accel_bias_read<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<crate::threedm::AccelBiasResponse, SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::AccelBiasCv7Ins {
                 function: crate::types::FunctionSelector(2),
                 ..<crate::threedm::AccelBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1521,7 +1521,7 @@ fn send_accel_bias_read<T: Transport>(
 
 fn send_accel_bias_save<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::AccelBiasCv7Ins {
                 function: crate::types::FunctionSelector(3),
                 ..<crate::threedm::AccelBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1545,7 +1545,7 @@ fn send_accel_bias_save<T: Transport>(device: &mut Device<T>) -> Result<(), Sess
 
 fn send_accel_bias_load<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::AccelBiasCv7Ins {
                 function: crate::types::FunctionSelector(4),
                 ..<crate::threedm::AccelBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1569,7 +1569,7 @@ fn send_accel_bias_load<T: Transport>(device: &mut Device<T>) -> Result<(), Sess
 
 fn send_accel_bias_default<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::AccelBiasCv7Ins {
                 function: crate::types::FunctionSelector(5),
                 ..<crate::threedm::AccelBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1643,7 +1643,7 @@ fn send_gyro_bias_write<T: Transport>(
     bias: [f32; 3],
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::GyroBiasCv7Ins {
                 function: crate::types::FunctionSelector(1),
                 bias: Some(bias),
@@ -1669,7 +1669,7 @@ fn send_gyro_bias_read<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<crate::threedm::GyroBiasResponse, SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::GyroBiasCv7Ins {
                 function: crate::types::FunctionSelector(2),
                 ..<crate::threedm::GyroBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1697,7 +1697,7 @@ fn send_gyro_bias_read<T: Transport>(
 
 fn send_gyro_bias_save<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::GyroBiasCv7Ins {
                 function: crate::types::FunctionSelector(3),
                 ..<crate::threedm::GyroBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1721,7 +1721,7 @@ fn send_gyro_bias_save<T: Transport>(device: &mut Device<T>) -> Result<(), Sessi
 
 fn send_gyro_bias_load<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::GyroBiasCv7Ins {
                 function: crate::types::FunctionSelector(4),
                 ..<crate::threedm::GyroBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1745,7 +1745,7 @@ fn send_gyro_bias_load<T: Transport>(device: &mut Device<T>) -> Result<(), Sessi
 
 fn send_gyro_bias_default<T: Transport>(device: &mut Device<T>) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::GyroBiasCv7Ins {
                 function: crate::types::FunctionSelector(5),
                 ..<crate::threedm::GyroBiasCv7Ins as crate::wire::Wire>::ZERO
@@ -1832,7 +1832,7 @@ fn send_mag_hard_iron_offset_write<T: Transport>(
     offset: [f32; 3],
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagHardIronOffsetCv7Ins {
                 function: crate::types::FunctionSelector(1),
                 offset: Some(offset),
@@ -1858,7 +1858,7 @@ fn send_mag_hard_iron_offset_read<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<crate::threedm::MagHardIronOffsetResponse, SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagHardIronOffsetCv7Ins {
                 function: crate::types::FunctionSelector(2),
                 ..<crate::threedm::MagHardIronOffsetCv7Ins as crate::wire::Wire>::ZERO
@@ -1888,7 +1888,7 @@ fn send_mag_hard_iron_offset_save<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagHardIronOffsetCv7Ins {
                 function: crate::types::FunctionSelector(3),
                 ..<crate::threedm::MagHardIronOffsetCv7Ins as crate::wire::Wire>::ZERO
@@ -1914,7 +1914,7 @@ fn send_mag_hard_iron_offset_load<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagHardIronOffsetCv7Ins {
                 function: crate::types::FunctionSelector(4),
                 ..<crate::threedm::MagHardIronOffsetCv7Ins as crate::wire::Wire>::ZERO
@@ -1940,7 +1940,7 @@ fn send_mag_hard_iron_offset_default<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagHardIronOffsetCv7Ins {
                 function: crate::types::FunctionSelector(5),
                 ..<crate::threedm::MagHardIronOffsetCv7Ins as crate::wire::Wire>::ZERO
@@ -2014,7 +2014,7 @@ fn send_mag_soft_iron_matrix_write<T: Transport>(
     matrix: [f32; 9],
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagSoftIronMatrixCv7Ins {
                 function: crate::types::FunctionSelector(1),
                 matrix: Some(matrix),
@@ -2040,7 +2040,7 @@ fn send_mag_soft_iron_matrix_read<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<crate::threedm::MagSoftIronMatrixResponse, SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagSoftIronMatrixCv7Ins {
                 function: crate::types::FunctionSelector(2),
                 ..<crate::threedm::MagSoftIronMatrixCv7Ins as crate::wire::Wire>::ZERO
@@ -2070,7 +2070,7 @@ fn send_mag_soft_iron_matrix_save<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagSoftIronMatrixCv7Ins {
                 function: crate::types::FunctionSelector(3),
                 ..<crate::threedm::MagSoftIronMatrixCv7Ins as crate::wire::Wire>::ZERO
@@ -2096,7 +2096,7 @@ fn send_mag_soft_iron_matrix_load<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagSoftIronMatrixCv7Ins {
                 function: crate::types::FunctionSelector(4),
                 ..<crate::threedm::MagSoftIronMatrixCv7Ins as crate::wire::Wire>::ZERO
@@ -2122,7 +2122,7 @@ fn send_mag_soft_iron_matrix_default<T: Transport>(
     device: &mut Device<T>,
 ) -> Result<(), SessionError> {
     let value = match device.model() {
-        Some(Device::Cv7Ins) => {
+        Some(Model::Cv7Ins) => {
             let command = crate::threedm::MagSoftIronMatrixCv7Ins {
                 function: crate::types::FunctionSelector(5),
                 ..<crate::threedm::MagSoftIronMatrixCv7Ins as crate::wire::Wire>::ZERO
@@ -3058,8 +3058,8 @@ fn send_poll_imu_data_poll_imu_data<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::PollImuData {
         option,
-        num_descriptors: descriptors.len() as u8,
         descriptors,
+        num_descriptors: descriptors.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::PollImuData(command));
     device.call(&value).map(|_| ())
@@ -3072,8 +3072,8 @@ fn send_poll_gnss_data_poll_gnss_data<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::PollGnssData {
         option,
-        num_descriptors: descriptors.len() as u8,
         descriptors,
+        num_descriptors: descriptors.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::PollGnssData(command));
     device.call(&value).map(|_| ())
@@ -3086,8 +3086,8 @@ fn send_poll_filter_data_poll_filter_data<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::PollFilterData {
         option,
-        num_descriptors: descriptors.len() as u8,
         descriptors,
+        num_descriptors: descriptors.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::PollFilterData(command));
     device.call(&value).map(|_| ())
@@ -3100,8 +3100,8 @@ fn send_poll_nmea_data_poll_nmea_data<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::PollNmeaData {
         suppress_ack,
-        count: format_entries.len() as u8,
         format_entries,
+        count: format_entries.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::PollNmeaData(command));
     device.call(&value).map(|_| ())
@@ -3116,8 +3116,8 @@ fn send_poll_data_poll_data<T: Transport>(
     let command = crate::threedm::PollData {
         desc_set,
         suppress_ack,
-        num_descriptors: descriptors.len() as u8,
         descriptors,
+        num_descriptors: descriptors.len() as u8,
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::PollData(command));
     device.call(&value).map(|_| ())
@@ -3222,8 +3222,8 @@ fn send_imu_message_format_write<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::ImuMessageFormat {
         function: crate::types::FunctionSelector(1),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors: Some(descriptors),
+        num_descriptors: Some(descriptors.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3235,8 +3235,8 @@ fn send_imu_message_format_read<T: Transport>(
 ) -> Result<crate::threedm::ImuMessageFormatResponse, SessionError> {
     let command = crate::threedm::ImuMessageFormat {
         function: crate::types::FunctionSelector(2),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(command));
     let done = device.call(&value)?;
@@ -3252,8 +3252,8 @@ fn send_imu_message_format_save<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::ImuMessageFormat {
         function: crate::types::FunctionSelector(3),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3265,8 +3265,8 @@ fn send_imu_message_format_load<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::ImuMessageFormat {
         function: crate::types::FunctionSelector(4),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3278,8 +3278,8 @@ fn send_imu_message_format_default<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::ImuMessageFormat {
         function: crate::types::FunctionSelector(5),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::ImuMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3335,8 +3335,8 @@ fn send_gnss_message_format_write<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::GnssMessageFormat {
         function: crate::types::FunctionSelector(1),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors: Some(descriptors),
+        num_descriptors: Some(descriptors.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3348,8 +3348,8 @@ fn send_gnss_message_format_read<T: Transport>(
 ) -> Result<crate::threedm::GnssMessageFormatResponse, SessionError> {
     let command = crate::threedm::GnssMessageFormat {
         function: crate::types::FunctionSelector(2),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(command));
     let done = device.call(&value)?;
@@ -3365,8 +3365,8 @@ fn send_gnss_message_format_save<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::GnssMessageFormat {
         function: crate::types::FunctionSelector(3),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3378,8 +3378,8 @@ fn send_gnss_message_format_load<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::GnssMessageFormat {
         function: crate::types::FunctionSelector(4),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3391,8 +3391,8 @@ fn send_gnss_message_format_default<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::GnssMessageFormat {
         function: crate::types::FunctionSelector(5),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3448,8 +3448,8 @@ fn send_filter_message_format_write<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::FilterMessageFormat {
         function: crate::types::FunctionSelector(1),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors: Some(descriptors),
+        num_descriptors: Some(descriptors.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3461,8 +3461,8 @@ fn send_filter_message_format_read<T: Transport>(
 ) -> Result<crate::threedm::FilterMessageFormatResponse, SessionError> {
     let command = crate::threedm::FilterMessageFormat {
         function: crate::types::FunctionSelector(2),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(command));
     let done = device.call(&value)?;
@@ -3478,8 +3478,8 @@ fn send_filter_message_format_save<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::FilterMessageFormat {
         function: crate::types::FunctionSelector(3),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3491,8 +3491,8 @@ fn send_filter_message_format_load<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::FilterMessageFormat {
         function: crate::types::FunctionSelector(4),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3504,8 +3504,8 @@ fn send_filter_message_format_default<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::FilterMessageFormat {
         function: crate::types::FunctionSelector(5),
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors,
+        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::FilterMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3549,8 +3549,8 @@ fn send_nmea_message_format_write<T: Transport>(
 ) -> Result<(), SessionError> {
     let command = crate::threedm::NmeaMessageFormat {
         function: crate::types::FunctionSelector(1),
-        count: Some(format_entries.as_ref().map_or(0, |a| a.len()) as u8),
         format_entries: Some(format_entries),
+        count: Some(format_entries.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::NmeaMessageFormat(command));
     device.call(&value).map(|_| ())
@@ -3641,8 +3641,8 @@ fn send_message_format_write<T: Transport>(
     let command = crate::threedm::MessageFormat {
         function: crate::types::FunctionSelector(1),
         desc_set,
-        num_descriptors: Some(descriptors.as_ref().map_or(0, |a| a.len()) as u8),
         descriptors: Some(descriptors),
+        num_descriptors: Some(descriptors.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::MessageFormat(command));
     device.call(&value).map(|_| ())
@@ -4016,8 +4016,8 @@ fn send_gnss_constellation_settings_write<T: Transport>(
     let command = crate::threedm::GnssConstellationSettings {
         function: crate::types::FunctionSelector(1),
         max_channels: Some(max_channels),
-        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
         settings: Some(settings),
+        config_count: Some(settings.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(command));
     device.call(&value).map(|_| ())
@@ -4031,8 +4031,8 @@ fn send_gnss_constellation_settings_read<T: Transport>(
     let command = crate::threedm::GnssConstellationSettings {
         function: crate::types::FunctionSelector(2),
         max_channels,
-        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
         settings,
+        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(command));
     let done = device.call(&value)?;
@@ -4052,8 +4052,8 @@ fn send_gnss_constellation_settings_save<T: Transport>(
     let command = crate::threedm::GnssConstellationSettings {
         function: crate::types::FunctionSelector(3),
         max_channels,
-        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
         settings,
+        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(command));
     device.call(&value).map(|_| ())
@@ -4067,8 +4067,8 @@ fn send_gnss_constellation_settings_load<T: Transport>(
     let command = crate::threedm::GnssConstellationSettings {
         function: crate::types::FunctionSelector(4),
         max_channels,
-        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
         settings,
+        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(command));
     device.call(&value).map(|_| ())
@@ -4082,8 +4082,8 @@ fn send_gnss_constellation_settings_default<T: Transport>(
     let command = crate::threedm::GnssConstellationSettings {
         function: crate::types::FunctionSelector(5),
         max_channels,
-        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
         settings,
+        config_count: Some(settings.as_ref().map_or(0, |a| a.len()) as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssConstellationSettings(command));
     device.call(&value).map(|_| ())
@@ -4133,8 +4133,8 @@ fn send_gnss_sbas_settings_write<T: Transport>(
         function: crate::types::FunctionSelector(1),
         enable_sbas: Some(enable_sbas),
         sbas_options: Some(sbas_options),
-        num_included_prns: Some(included_prns.as_ref().map_or(0, |a| a.len()) as u8),
         included_prns: Some(included_prns),
+        num_included_prns: Some(included_prns.len() as u8),
     };
     let value = FieldValue::Threedm(crate::threedm::SetField::GnssSbasSettings(command));
     device.call(&value).map(|_| ())
