@@ -953,6 +953,48 @@ def _session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
     return out
 
 
+# The configure-and-stream example per protocol (examples/configure_and_stream.rs): the device
+# model, the device-information command, one setting written and read back, and the command that
+# starts a data stream (typed command API calls after `device.`).
+_SESSION_EXAMPLES = {
+    "mip": {
+        "model": "cv7_ins",
+        "info": ("device info", "base().get_device_info()"),
+        "setting": "sensor_to_vehicle_euler",
+        "write": "threedm().sensor_to_vehicle_euler().write(0.0, 1.5708, 1.5708)",
+        "read": "threedm().sensor_to_vehicle_euler().read()",
+        "stream": "threedm().data_stream_control().write_cv7_ins(0x80, true)",
+    },
+    "mscip": {
+        "model": "ms_imu3020",
+        "info": ("device model", "base().get_device_model()"),
+        "setting": "sample_rate",
+        "write": "imu_config().sample_rate().write(10)",
+        "read": "imu_config().sample_rate().read()",
+        "stream": "imu_config().select_sensors().write(0, crate::bounded::BoundedVec::from_slice("
+        "&[crate::types::SensorCode::SCALED_ACCEL]).ok_or(\"too many sensors\")?)",
+    },
+}
+
+
+def _session_example(m: _Protocol) -> dict | None:
+    """The context of examples/configure_and_stream.rs, or None for a protocol without one."""
+    ex = _SESSION_EXAMPLES.get(m.proto["name"])
+    if ex is None:
+        return None
+    device = next(d for d in m.proto["devices"] if d["id"] == ex["model"])
+    return {
+        "title": device["title"],
+        "model": m.device_variant(ex["model"]),
+        "info_what": ex["info"][0],
+        "info_call": ex["info"][1],
+        "setting": ex["setting"],
+        "write_call": ex["write"].replace("crate::", m.package + "::"),
+        "read_call": ex["read"],
+        "stream_call": ex["stream"].replace("crate::", m.package + "::"),
+    }
+
+
 def _opt(v) -> str:
     return "None" if v is None else f"Some({v})"
 
@@ -1024,10 +1066,15 @@ def render(
         ctx["example"] = _example(proto)
         ctx.update(_Session(model).context())
         ctx["session_cases"] = _session_cases(proto, sessions or [])
+        ctx["session_example"] = _session_example(model)
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
         for tpl, out in _TEMPLATES:
             files[root + out] = env.get_template(f"rust/{tpl}").render(**ctx)
+        if ctx["session_example"]:
+            files[root + "examples/configure_and_stream.rs"] = env.get_template(
+                "rust/example_configure_and_stream.rs.j2"
+            ).render(**ctx)
         files[root + "src/framing.rs"] = env.get_template("rust/framing.rs.j2").render(**ctx) + "\n" + checksum
         for path, text in _runtime_files(model.package).items():
             files[root + path] = text
@@ -1067,4 +1114,14 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         out["variants"] = ", ".join(
             f"{v['device']}: {module}::{camel(field['name'])}{camel(v['device'])}" for v in field["variants"]
         )
+    if field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (command_api.rs.j2): device.<set>().<command>().<function>(...).
+        call = f"device.{ident(model.set_module(set_))}()"
+        functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
+        if len(functions) > 1:
+            out["session"] = f"{call}.{ident(field['name'])}().{{{','.join(ident(fn) for fn in functions)}}}(...)"
+        elif functions:
+            out["session"] = f"{call}.{ident(field['name'])}().{ident(functions[0])}(...)"
+        else:
+            out["session"] = f"{call}.{ident(field['name'])}(...)"
     return out
