@@ -8,6 +8,7 @@
 
 use std::cell::Cell;
 use std::error::Error;
+use std::f32::consts::FRAC_PI_2;
 use std::process::ExitCode;
 use std::rc::Rc;
 
@@ -31,7 +32,7 @@ fn run(address: &str, count: usize) -> Result<(), Box<dyn Error>> {
     device
         .threedm()
         .sensor_to_vehicle_euler()
-        .write(0.0, 1.5708, 1.5708)?;
+        .write(0.0, FRAC_PI_2, FRAC_PI_2)?;
     let setting = device.threedm().sensor_to_vehicle_euler().read()?;
     println!("sensor_to_vehicle_euler: {setting:?}");
     // [end]

@@ -579,6 +579,7 @@ impl<const N: usize> Queue<N> {
         slot
     }
 
+    #[inline]
     fn has_set(&self, set: u8) -> bool {
         self.slots[..self.len]
             .iter()
@@ -595,6 +596,7 @@ impl<const N: usize> Queue<N> {
     }
 
     /// Routes one parser event: results of the commands a packet answers, else the packet.
+    #[inline]
     fn route<F: FnMut(SessionEvent<'_>)>(&mut self, event: Event<'_>, on: &mut F) {
         match event {
             Event::Skip { offset, count } => on(SessionEvent::Skip { offset, count }),

@@ -81,7 +81,9 @@ impl Transport for TcpTransport {
             Err(e)
                 if matches!(
                     e.kind(),
-                    io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut | io::ErrorKind::Interrupted
+                    io::ErrorKind::WouldBlock
+                        | io::ErrorKind::TimedOut
+                        | io::ErrorKind::Interrupted
                 ) =>
             {
                 Ok(0)
@@ -122,7 +124,12 @@ impl Transport for SerialTransport {
             .map_err(io::Error::from)?;
         match self.port.read(buf) {
             Ok(n) => Ok(n),
-            Err(e) if matches!(e.kind(), io::ErrorKind::TimedOut | io::ErrorKind::Interrupted) => {
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::TimedOut | io::ErrorKind::Interrupted
+                ) =>
+            {
                 Ok(0)
             }
             Err(e) => Err(e),
@@ -134,10 +141,17 @@ impl Transport for SerialTransport {
 /// at `baud` (needs the `serial` feature).
 pub fn open_transport(address: &str, baud: u32) -> Result<Box<dyn Transport>, SessionError> {
     if let Some(rest) = address.strip_prefix("tcp:") {
-        let bad = || SessionError::Address(format!("bad TCP address '{address}' (expected tcp:HOST:PORT)"));
+        let bad = || {
+            SessionError::Address(format!(
+                "bad TCP address '{address}' (expected tcp:HOST:PORT)"
+            ))
+        };
         let (host, port) = rest.rsplit_once(':').ok_or_else(bad)?;
         let port: u16 = port.parse().map_err(|_| bad())?;
-        let host = host.strip_prefix('[').and_then(|h| h.strip_suffix(']')).unwrap_or(host);
+        let host = host
+            .strip_prefix('[')
+            .and_then(|h| h.strip_suffix(']'))
+            .unwrap_or(host);
         if host.is_empty() {
             return Err(bad());
         }

@@ -129,7 +129,8 @@ pub fn support_error(command: &FieldValue, device: Device) -> Option<Refusal> {
             });
         }
     }
-    if let (Some(functions), Some(function)) = (facts.functions, commands::command_function(command))
+    if let (Some(functions), Some(function)) =
+        (facts.functions, commands::command_function(command))
     {
         let limited = commands::FUNCTION_DEVICES
             .iter()
@@ -578,6 +579,7 @@ impl<const N: usize> Queue<N> {
         slot
     }
 
+    #[inline]
     fn has_set(&self, set: u8) -> bool {
         self.slots[..self.len]
             .iter()
@@ -587,11 +589,14 @@ impl<const N: usize> Queue<N> {
 
     fn find(&self, set: u8, descriptor: u8) -> Option<usize> {
         self.slots[..self.len].iter().position(|s| {
-            s.map_or(false, |s| s.facts.set == set && s.facts.descriptor == descriptor)
+            s.map_or(false, |s| {
+                s.facts.set == set && s.facts.descriptor == descriptor
+            })
         })
     }
 
     /// Routes one parser event: results of the commands a packet answers, else the packet.
+    #[inline]
     fn route<F: FnMut(SessionEvent<'_>)>(&mut self, event: Event<'_>, on: &mut F) {
         match event {
             Event::Skip { offset, count } => on(SessionEvent::Skip { offset, count }),
