@@ -690,7 +690,10 @@ class _Session:
                     else:
                         used.append(ack["param"])
                         val = self._int_value(by_name[ack["param"]].ir["type"], ack.get("value"))
-                        ack_text = "AckSuppression::Param { param: %s, value: %s }" % (rust_str(ack["param"]), _opt(val))
+                        ack_text = "AckSuppression::Param { param: %s, value: %s }" % (
+                            rust_str(ack["param"]),
+                            _opt(val),
+                        )
                     t = v.get("timeout")
                     if t is None:
                         timeout = "None"
@@ -734,7 +737,9 @@ class _Session:
                             expr = f"v.{x}.map(|x| {self._to_int(q, 'x')})"
                         else:
                             expr = f"Some({self._to_int(q, 'v.' + x)})"
-                        param_match.append({"pattern": self._pattern(s, f, v, "v"), "name": rust_str(name), "expr": expr})
+                        param_match.append(
+                            {"pattern": self._pattern(s, f, v, "v"), "name": rust_str(name), "expr": expr}
+                        )
         fdevices = []
         if self.function_enum:
             for v in self.m.types[self.function_enum]["values"]:
@@ -962,6 +967,10 @@ _SESSION_EXAMPLES = {
         "info": ("device info", "base().get_device_info()"),
         "setting": "sensor_to_vehicle_euler",
         "uses": ["std::f32::consts::FRAC_PI_2"],
+        "readme": [
+            "device.threedm().sensor_to_vehicle_euler().write(0.0, 1.5708, 1.5708)?;",
+            "let rotation = device.threedm().sensor_to_vehicle_euler().read()?; // SensorToVehicleEulerResponse",
+        ],
         "write": "threedm().sensor_to_vehicle_euler().write(0.0, FRAC_PI_2, FRAC_PI_2)",
         "read": "threedm().sensor_to_vehicle_euler().read()",
         "stream": "threedm().data_stream_control().write_cv7_ins(0x80, true)",
@@ -969,11 +978,15 @@ _SESSION_EXAMPLES = {
     "mscip": {
         "model": "ms_imu3020",
         "info": ("device model", "base().get_device_model()"),
+        "readme": [
+            "device.imu_config().sample_rate().write(10)?;",
+            "let rate = device.imu_config().sample_rate().read()?; // SampleRateResponse",
+        ],
         "setting": "sample_rate",
         "write": "imu_config().sample_rate().write(10)",
         "read": "imu_config().sample_rate().read()",
         "stream": "imu_config().select_sensors().write(0, crate::bounded::BoundedVec::from_slice("
-        "&[crate::types::SensorCode::SCALED_ACCEL]).ok_or(\"too many sensors\")?)",
+        '&[crate::types::SensorCode::SCALED_ACCEL]).ok_or("too many sensors")?)',
     },
 }
 
@@ -991,6 +1004,7 @@ def _session_example(m: _Protocol) -> dict | None:
         "info_call": ex["info"][1],
         "setting": ex["setting"],
         "uses": ex.get("uses", []),
+        "readme": ex["readme"],
         "write_call": ex["write"].replace("crate::", m.package + "::"),
         "read_call": ex["read"],
         "stream_call": ex["stream"].replace("crate::", m.package + "::"),

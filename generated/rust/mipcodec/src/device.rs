@@ -1,8 +1,8 @@
 //! The blocking session API (std): a [`Device`] runs commands over a [`Transport`] (TCP, or a
 //! serial port with the `serial` feature), feeding every received byte to a
-//! [`Session`](crate::session::Session), so data packets reach the handlers while a command
+//! [`Session`], so data packets reach the handlers while a command
 //! waits for its reply (`docs/conformance.md` §8). The typed command API
-//! ([`crate::command_api`], `device.threedm().sensor_to_vehicle_euler().read()` and so on) is
+//! (the generated `command_api` module, `device.threedm().sensor_to_vehicle_euler().read()` and so on) is
 //! generated on top of [`Device::call`].
 
 use std::fmt;
