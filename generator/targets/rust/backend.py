@@ -21,6 +21,7 @@ from generator.testcases import bitfield_cases, canonical_cases, layout_error_ca
 
 from .facts import (
     CATEGORIES,
+    DEVICE_METHODS,
     INCLUDE,
     KEYWORDS,
     KEYWORDS_COMMON,
@@ -789,7 +790,7 @@ class _Session:
                 module = self.m.set_module(s)
                 out.append(
                     {
-                        "method": ident(module),
+                        "method": _set_method(module),
                         "struct": camel(module) + "Commands",
                         "title": s["title"],
                         "set": _hex(s["id"]),
@@ -1011,6 +1012,11 @@ def _session_example(m: _Protocol) -> dict | None:
     }
 
 
+def _set_method(module: str) -> str:
+    """The method of `device::Device` that gives a set's typed commands (`device.threedm()`)."""
+    return ident(module + "_set" if module in DEVICE_METHODS else module)
+
+
 def _opt(v) -> str:
     return "None" if v is None else f"Some({v})"
 
@@ -1132,7 +1138,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         )
     if field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (command_api.rs.j2): device.<set>().<command>().<function>(...).
-        call = f"device.{ident(model.set_module(set_))}()"
+        call = f"device.{_set_method(model.set_module(set_))}()"
         functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
         if len(functions) > 1:
             out["session"] = f"{call}.{ident(field['name'])}().{{{','.join(ident(fn) for fn in functions)}}}(...)"
