@@ -20,6 +20,7 @@ INPUTS = [
     "templates",
     "tests/vectors",
     "tests/streams",
+    "tests/sessions",
     ".clang-format",
     "ruff.toml",
     "rustfmt.toml",

@@ -431,9 +431,10 @@ impl<'a> CommandResult<'a> {
     /// Writes the session tool's line for input line `line` (`docs/conformance.md` §8, no
     /// newline).
     pub fn write_line(&self, w: &mut dyn Write, line: u64) -> fmt::Result {
+        w.write_str("{\"line\":")?;
         write!(
             w,
-            "{{\"line\":{line},\"result\":\"{}\",\"code\":",
+            "{line},\"result\":\"{}\",\"code\":",
             self.status.as_str()
         )?;
         match self.code {
