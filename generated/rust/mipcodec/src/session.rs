@@ -580,7 +580,7 @@ impl<const N: usize> Queue<N> {
         slot
     }
 
-    #[inline]
+    #[inline(always)]
     fn has_set(&self, set: u8) -> bool {
         self.slots[..self.len]
             .iter()
@@ -596,8 +596,9 @@ impl<const N: usize> Queue<N> {
         })
     }
 
-    /// Routes one parser event: results of the commands a packet answers, else the packet.
-    #[inline]
+    /// Routes one parser event: results of the commands a packet answers, else the packet
+    /// (inlined into the parser's loop: this is the per-packet path of data streams).
+    #[inline(always)]
     fn route<F: FnMut(SessionEvent<'_>)>(&mut self, event: Event<'_>, on: &mut F) {
         match event {
             Event::Skip { offset, count } => on(SessionEvent::Skip { offset, count }),

@@ -431,9 +431,10 @@ impl<'a> CommandResult<'a> {
     /// Writes the session tool's line for input line `line` (`docs/conformance.md` §8, no
     /// newline).
     pub fn write_line(&self, w: &mut dyn Write, line: u64) -> fmt::Result {
+        w.write_str("{\"line\":")?;
         write!(
             w,
-            "{{\"line\":{line},\"result\":\"{}\",\"code\":",
+            "{line},\"result\":\"{}\",\"code\":",
             self.status.as_str()
         )?;
         match self.code {
@@ -579,7 +580,7 @@ impl<const N: usize> Queue<N> {
         slot
     }
 
-    #[inline]
+    #[inline(always)]
     fn has_set(&self, set: u8) -> bool {
         self.slots[..self.len]
             .iter()
@@ -595,8 +596,9 @@ impl<const N: usize> Queue<N> {
         })
     }
 
-    /// Routes one parser event: results of the commands a packet answers, else the packet.
-    #[inline]
+    /// Routes one parser event: results of the commands a packet answers, else the packet
+    /// (inlined into the parser's loop: this is the per-packet path of data streams).
+    #[inline(always)]
     fn route<F: FnMut(SessionEvent<'_>)>(&mut self, event: Event<'_>, on: &mut F) {
         match event {
             Event::Skip { offset, count } => on(SessionEvent::Skip { offset, count }),
