@@ -9,6 +9,7 @@ example's commands went out (the fake device reads each one as a complete packet
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 from pathlib import Path
 
@@ -109,15 +110,19 @@ def test_configure_and_stream_example(protocol):
         expect_data.append("data " + pkg.packets.decode_packet(data, len(received), script["device"]).line())
         steps.append({"at": at + 5 * k, "receive": data.hex()})
         received += data
-    dev = FakeDevice({"steps": steps, "expect": []}, proto["framing"]).start()
     manifest = ROOT / "generated" / "rust" / proto["package"] / "Cargo.toml"
+    cargo = ["cargo", "--quiet", "--manifest-path", str(manifest), "--example", "configure_and_stream"]
+    env = {**os.environ, "CARGO_TARGET_DIR": str(ROOT / "build" / "rust" / "target")}
+    # Built first: the fake device waits 30 s for its connection.
+    build = subprocess.run([cargo[0], "build", *cargo[1:]], capture_output=True, text=True, timeout=900, env=env)
+    assert build.returncode == 0, build.stderr
+    dev = FakeDevice({"steps": steps, "expect": []}, proto["framing"]).start()
     proc = subprocess.run(
-        ["cargo", "run", "--quiet", "--manifest-path", str(manifest), "--example", "configure_and_stream", "--"]
-        + [f"tcp:127.0.0.1:{dev.port}", str(DATA_PACKETS)],
+        [cargo[0], "run", *cargo[1:], "--", f"tcp:127.0.0.1:{dev.port}", str(DATA_PACKETS)],
         capture_output=True,
         text=True,
         timeout=900,
-        env={**__import__("os").environ, "CARGO_TARGET_DIR": str(ROOT / "build" / "rust" / "target")},
+        env=env,
     )
     dev.join(10)
     assert proc.returncode == 0, proc.stderr
@@ -138,7 +143,7 @@ def test_tool_over_ipv6():
     srv = socket.socket(socket.AF_INET6, socket.SOCK_STREAM)
     srv.bind(("::1", 0))
     srv.listen(1)
-    srv.settimeout(60)
+    srv.settimeout(900)  # the tool may be built first (tests/lang/rust.sh)
     port = srv.getsockname()[1]
     got: list[bytes] = []
 

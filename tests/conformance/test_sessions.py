@@ -129,6 +129,12 @@ def test_corpus_covers_the_issue():
 TOOL_LANGS = ["python", "rust"]
 
 
+def _ready(lang: str) -> None:
+    """Builds the tool of each protocol first (`--help`): the fake device waits 30 s for its connection."""
+    for proto in PROTOCOLS:
+        subprocess.run([str(TOOL), lang, "--help", "--protocol", proto], capture_output=True, timeout=900)
+
+
 def run_tool(case: dict, lang: str = "python") -> tuple[subprocess.CompletedProcess, FakeDevice]:
     dev = FakeDevice(case, PROTOCOLS[case["protocol"]]["framing"]).start()
     lines = "".join(step["send"] + "\n" for step in case["steps"] if "send" in step)
@@ -145,6 +151,7 @@ LIVE = [c for c in CASES if c["live"]]
 @pytest.mark.parametrize("lang", TOOL_LANGS)
 def test_tool_over_tcp(lang):
     """Every live case through the tool and the fake device (run in parallel: they mostly wait)."""
+    _ready(lang)
     with ThreadPoolExecutor(max_workers=4) as pool:
         runs = list(pool.map(lambda c: run_tool(c, lang), LIVE))
     failures = []
@@ -162,6 +169,7 @@ def test_tool_over_tcp(lang):
 
 @pytest.mark.parametrize("lang", TOOL_LANGS)
 def test_tool_bad_line_is_reported_and_skipped(lang):
+    _ready(lang)
     case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "ping_ack")
     dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
     bad = [
