@@ -5,7 +5,7 @@
    reports up to the step's time; at the end, poll while commands are pending, then `close`.
    Each `receive` is also fed split at every position (two feeds at the same time); the lines
    must not change.
-2. The conformance tool (`tests/conformance/session python`) runs every live case over loopback
+2. The conformance tool (`tests/conformance/session LANG`, each of TOOL_LANGS) runs every live case over loopback
    TCP against the scripted fake device (tests/conformance/fake_device.py), with the case's
    commands as its input lines: the same lines must come out.
 3. The tool's errors: a bad input line (stderr, exit 1, the other lines still run), a connection
@@ -125,10 +125,14 @@ def test_corpus_covers_the_issue():
         assert codes <= nacks, f"{proto}: no NACK case for codes {sorted(codes - nacks)}"
 
 
-def run_tool(case: dict) -> tuple[subprocess.CompletedProcess, FakeDevice]:
+# The languages whose session tool has landed (the others print so and exit 2).
+TOOL_LANGS = ["python", "cpp"]
+
+
+def run_tool(case: dict, lang: str = "python") -> tuple[subprocess.CompletedProcess, FakeDevice]:
     dev = FakeDevice(case, PROTOCOLS[case["protocol"]]["framing"]).start()
     lines = "".join(step["send"] + "\n" for step in case["steps"] if "send" in step)
-    args = [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{dev.port}", "--timeout-ms", str(case["timeout_ms"])]
+    args = [str(TOOL), lang, "--connect", f"tcp:127.0.0.1:{dev.port}", "--timeout-ms", str(case["timeout_ms"])]
     args += ["--protocol", case["protocol"]] + (["--device", case["device"]] if case["device"] else [])
     proc = subprocess.run(args, input=lines, capture_output=True, text=True, timeout=60)
     dev.join(10)
@@ -138,10 +142,11 @@ def run_tool(case: dict) -> tuple[subprocess.CompletedProcess, FakeDevice]:
 LIVE = [c for c in CASES if c["live"]]
 
 
-def test_tool_over_tcp():
+@pytest.mark.parametrize("lang", TOOL_LANGS)
+def test_tool_over_tcp(lang):
     """Every live case through the tool and the fake device (run in parallel: they mostly wait)."""
     with ThreadPoolExecutor(max_workers=4) as pool:
-        runs = list(pool.map(run_tool, LIVE))
+        runs = list(pool.map(lambda c: run_tool(c, lang), LIVE))
     failures = []
     for case, (proc, dev) in zip(LIVE, runs):
         got = proc.stdout.splitlines()
@@ -155,7 +160,8 @@ def test_tool_over_tcp():
     assert not failures, "\n".join(failures)
 
 
-def test_tool_bad_line_is_reported_and_skipped():
+@pytest.mark.parametrize("lang", TOOL_LANGS)
+def test_tool_bad_line_is_reported_and_skipped(lang):
     case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "ping_ack")
     dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
     bad = [
@@ -165,7 +171,7 @@ def test_tool_bad_line_is_reported_and_skipped():
     ]
     lines = "\n".join(bad) + "\n\n" + case["steps"][0]["send"] + "\n"
     proc = subprocess.run(
-        [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{dev.port}"],
+        [str(TOOL), lang, "--connect", f"tcp:127.0.0.1:{dev.port}"],
         input=lines,
         capture_output=True,
         text=True,
@@ -179,13 +185,14 @@ def test_tool_bad_line_is_reported_and_skipped():
     assert "not a command" in err[2]
 
 
-def test_tool_connection_refused_and_usage():
+@pytest.mark.parametrize("lang", TOOL_LANGS)
+def test_tool_connection_refused_and_usage(lang):
     s = socket.socket()
     s.bind(("127.0.0.1", 0))
     port = s.getsockname()[1]
     s.close()
     proc = subprocess.run(
-        [str(TOOL), "python", "--connect", f"tcp:127.0.0.1:{port}"],
+        [str(TOOL), lang, "--connect", f"tcp:127.0.0.1:{port}"],
         input="",
         capture_output=True,
         text=True,
@@ -198,13 +205,13 @@ def test_tool_connection_refused_and_usage():
         ["--device", "nope", "--connect", "tcp:a:1"],
         [],
     ):
-        proc = subprocess.run([str(TOOL), "python", *args], input="", capture_output=True, text=True, timeout=60)
+        proc = subprocess.run([str(TOOL), lang, *args], input="", capture_output=True, text=True, timeout=60)
         assert proc.returncode == 2 and proc.stderr, args
-    proc = subprocess.run([str(TOOL), "python", "--connect", "tcp:nohost"], input="", capture_output=True, text=True)
+    proc = subprocess.run([str(TOOL), lang, "--connect", "tcp:nohost"], input="", capture_output=True, text=True)
     assert proc.returncode == 2 and "bad TCP address" in proc.stderr
 
 
-@pytest.mark.parametrize("lang", ["c", "cpp", "rust"])
+@pytest.mark.parametrize("lang", ["c", "rust"])
 def test_tool_other_languages_not_yet(lang):
     proc = subprocess.run([str(TOOL), lang, "--connect", "tcp:127.0.0.1:1"], input="", capture_output=True, text=True)
     assert proc.returncode == 2 and "not implemented yet" in proc.stderr
