@@ -771,7 +771,7 @@ def session_context(P: _Proto) -> dict:
                 params = {q["name"]: q for q in v["params"]}
                 slots: list[str] = []
 
-                def slot(name: str) -> int:
+                def slot(name: str, slots: list[str] = slots) -> int:
                     if name not in slots:
                         slots.append(name)
                     return slots.index(name)
@@ -793,7 +793,9 @@ def session_context(P: _Proto) -> dict:
                     ack_row = f"1, -1, false, {fvalues[a['function']]}"
                 else:
                     val = _int_value(P, params[a["param"]]["type"], a.get("value"))
-                    ack_row = f"2, {slot(a['param'])}, {'true' if val is not None else 'false'}, {int_literal(val or 0)}"
+                    ack_row = (
+                        f"2, {slot(a['param'])}, {'true' if val is not None else 'false'}, {int_literal(val or 0)}"
+                    )
                 t = v.get("timeout")
                 if t is None:
                     timeout_row = "false, 0, -1, true, 0"
@@ -917,9 +919,7 @@ def command_api_context(P: _Proto) -> dict:
                     if fn is not None and fn not in (v["functions"] or []):
                         continue
                     sig = _cpp_signature(v, fn, fenum, lay["type"])
-                    groups.setdefault(tuple(a["key"] for a in sig["args"]), []).append(
-                        {**lay, "sig": sig}
-                    )
+                    groups.setdefault(tuple(a["key"] for a in sig["args"]), []).append({**lay, "sig": sig})
                 split = len(groups) > 1
                 for group in groups.values():
                     name = _cpp_fn(fn) + (f"_{group[0]['device']}" if split else "")

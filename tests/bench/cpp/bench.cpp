@@ -209,8 +209,8 @@ bool roundtrip(int trips, int passes) {
     addr.sin_family = AF_INET;
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     socklen_t len = sizeof addr;
-    if (srv < 0 || ::bind(srv, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 || ::listen(srv, 1) != 0 ||
-        ::getsockname(srv, reinterpret_cast<sockaddr *>(&addr), &len) != 0) {
+    if (srv < 0 || ::bind(srv, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 ||
+        ::listen(srv, 1) != 0 || ::getsockname(srv, reinterpret_cast<sockaddr *>(&addr), &len) != 0) {
         std::fprintf(stderr, "bench: cannot listen on loopback\n");
         return false;
     }
@@ -252,8 +252,9 @@ bool roundtrip(int trips, int passes) {
     server.join();
     ::close(srv);
     if (ok) {
-        std::printf("BENCH lang=cpp stream=loopback-tcp mode=session-roundtrip packets=%d bytes=%llu seconds=%.6f\n",
-                    trips, static_cast<unsigned long long>(bytes), best);
+        std::printf(
+            "BENCH lang=cpp stream=loopback-tcp mode=session-roundtrip packets=%d bytes=%llu seconds=%.6f\n",
+            trips, static_cast<unsigned long long>(bytes), best);
         std::fflush(stdout);
     }
     return ok;
@@ -295,7 +296,9 @@ int main(int argc, char **argv) {
             return 1;
         }
         for (Mode m : {Mode::frame, Mode::decode, Mode::session_ingest}) {
-            const char *mode_name = m == Mode::frame ? "frame" : m == Mode::decode ? "decode" : "session-ingest";
+            const char *mode_name = m == Mode::frame    ? "frame"
+                                    : m == Mode::decode ? "decode"
+                                                        : "session-ingest";
             if (only_mode != nullptr && std::strcmp(only_mode, mode_name) != 0) {
                 continue;
             }
@@ -311,17 +314,19 @@ int main(int argc, char **argv) {
             }
             if (c.packets != s.packets) {
                 std::fprintf(stderr, "bench: %s %s: %llu packets, the sidecar says %llu\n", name, mode_name,
-                             static_cast<unsigned long long>(c.packets), static_cast<unsigned long long>(s.packets));
+                             static_cast<unsigned long long>(c.packets),
+                             static_cast<unsigned long long>(s.packets));
                 failed = 1;
             }
             if (m != Mode::frame && (c.fields != s.fields || c.errors != 0)) {
                 std::fprintf(stderr, "bench: %s %s: %llu fields (%llu errors), the sidecar says %llu\n", name,
-                             mode_name, static_cast<unsigned long long>(c.fields), static_cast<unsigned long long>(c.errors),
+                             mode_name, static_cast<unsigned long long>(c.fields),
+                             static_cast<unsigned long long>(c.errors),
                              static_cast<unsigned long long>(s.fields));
                 failed = 1;
             }
-            std::printf("BENCH lang=cpp stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n", name, mode_name,
-                        static_cast<unsigned long long>(c.packets), s.data.size(), best);
+            std::printf("BENCH lang=cpp stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n", name,
+                        mode_name, static_cast<unsigned long long>(c.packets), s.data.size(), best);
             std::fprintf(stderr, "bench: %s %s check %016llx\n", name, mode_name,
                          static_cast<unsigned long long>(c.check));
             std::fflush(stdout);

@@ -121,13 +121,25 @@ struct Result {
             break;
         case Status::invalid:
         case Status::refused:
-            std::snprintf(t.text.data(), t.text.size(), "%s: %s", name(), error.c_str());
+            // Concatenated by hand: the message may be cut at the buffer's end.
+            append(t, name());
+            append(t, ": ");
+            append(t, error.c_str());
             break;
         default:
             std::snprintf(t.text.data(), t.text.size(), "%s: %s", name(), to_string(status));
             break;
         }
         return t;
+    }
+
+  private:
+    static void append(ErrorText &t, const char *text) {
+        std::size_t n = std::strlen(t.text.data());
+        while (*text != '\0' && n + 1 < t.text.size()) {
+            t.text[n++] = *text++;
+        }
+        t.text[n] = '\0';
     }
 };
 

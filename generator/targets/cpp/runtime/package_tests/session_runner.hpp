@@ -26,7 +26,8 @@ struct SessionStep {
 /// that step in two parts at the same time.
 inline std::vector<std::string> run_session_case(const char *device, std::int64_t timeout_ms,
                                                  std::int64_t inter_packet_timeout_ms,
-                                                 const std::vector<SessionStep> &steps, std::size_t split_step = ~std::size_t{0},
+                                                 const std::vector<SessionStep> &steps,
+                                                 std::size_t split_step = ~std::size_t{0},
                                                  std::size_t split_at = 0) {
     protopkg::Session<>::Options options;
     if (device != nullptr) {
@@ -38,8 +39,8 @@ inline std::vector<std::string> run_session_case(const char *device, std::int64_
     std::vector<std::string> out;
     std::vector<std::uint8_t> stream; // every byte fed, for the skip lines
     auto emit = [&](const protopkg::SessionEvent &e) {
-        out.push_back(protopkg::session_event_line(e, options.device,
-                                                   [&](std::uint64_t offset) { return stream.data() + offset; }));
+        out.push_back(protopkg::session_event_line(
+            e, options.device, [&](std::uint64_t offset) { return stream.data() + offset; }));
     };
     auto advance = [&](std::int64_t t) {
         for (;;) {
@@ -64,8 +65,9 @@ inline std::vector<std::string> run_session_case(const char *device, std::int64_
                 call.tag = number;
                 protopkg::Started st = s.start(command, now, call);
                 if (step.bytes != nullptr && !st.complete) {
-                    EXPECT_EQ(to_hex(std::vector<std::uint8_t>(st.packet.data, st.packet.data + st.packet.size)),
-                              step.bytes)
+                    EXPECT_EQ(
+                        to_hex(std::vector<std::uint8_t>(st.packet.data, st.packet.data + st.packet.size)),
+                        step.bytes)
                         << "command " << number;
                 }
                 if (st.complete) {
@@ -98,8 +100,9 @@ inline std::vector<std::string> run_session_case(const char *device, std::int64_
 
 /// A case of the corpus: whole, then each receive split at every position (the first split that
 /// differs is reported).
-inline void check_session_case(const char *device, std::int64_t timeout_ms, std::int64_t inter_packet_timeout_ms,
-                               const std::vector<SessionStep> &steps, const std::vector<std::string> &expect) {
+inline void check_session_case(const char *device, std::int64_t timeout_ms,
+                               std::int64_t inter_packet_timeout_ms, const std::vector<SessionStep> &steps,
+                               const std::vector<std::string> &expect) {
     EXPECT_EQ(run_session_case(device, timeout_ms, inter_packet_timeout_ms, steps), expect) << "whole";
     for (std::size_t k = 0; k < steps.size(); ++k) {
         if (steps[k].receive == nullptr) {

@@ -176,9 +176,8 @@ int main(int argc, char **argv) {
     protopkg::Connection dev(recording, options);
     recording.device = &dev;
     dev.on_event([&](const protopkg::SessionEvent &e) {
-        const std::string line = protopkg::session_event_line(e, device_id, [&](std::uint64_t offset) {
-            return hist.data() + (offset - hist_base);
-        });
+        const std::string line = protopkg::session_event_line(
+            e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); });
         std::fwrite(line.data(), 1, line.size(), stdout);
         std::fputc('\n', stdout);
         std::fflush(stdout);

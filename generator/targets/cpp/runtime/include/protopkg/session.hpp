@@ -27,10 +27,10 @@
 namespace protopkg {
 
 inline constexpr std::int64_t kDefaultTimeoutMs = 1000;           ///< reply timeout T
-inline constexpr std::int64_t kDefaultInterPacketTimeoutMs = 100;  ///< inter-packet timeout P
-inline constexpr std::size_t kDefaultMaxPending = 8;               ///< pending queue capacity
-inline constexpr std::size_t kMaxHandlers = 16;                    ///< per-packet and per-field handlers
-inline constexpr std::size_t kMaxExpected = 4;                     ///< expected reply descriptors per command
+inline constexpr std::int64_t kDefaultInterPacketTimeoutMs = 100; ///< inter-packet timeout P
+inline constexpr std::size_t kDefaultMaxPending = 8;              ///< pending queue capacity
+inline constexpr std::size_t kMaxHandlers = 16;                   ///< per-packet and per-field handlers
+inline constexpr std::size_t kMaxExpected = 4;                    ///< expected reply descriptors per command
 
 /// The outcome of a command.
 enum class Status : std::uint8_t { ack, nack, timeout, invalid, sent, refused };
@@ -112,20 +112,33 @@ struct Result {
         ErrorText t;
         switch (status) {
         case Status::nack:
-            std::snprintf(t.text.data(), t.text.size(), "%s: NACK, code %lld", name(), static_cast<long long>(code));
+            std::snprintf(t.text.data(), t.text.size(), "%s: NACK, code %lld", name(),
+                          static_cast<long long>(code));
             break;
         case Status::timeout:
             std::snprintf(t.text.data(), t.text.size(), "%s: no reply before the timeout", name());
             break;
         case Status::invalid:
         case Status::refused:
-            std::snprintf(t.text.data(), t.text.size(), "%s: %s", name(), error.c_str());
+            // Concatenated by hand: the message may be cut at the buffer's end.
+            append(t, name());
+            append(t, ": ");
+            append(t, error.c_str());
             break;
         default:
             std::snprintf(t.text.data(), t.text.size(), "%s: %s", name(), to_string(status));
             break;
         }
         return t;
+    }
+
+  private:
+    static void append(ErrorText &t, const char *text) {
+        std::size_t n = std::strlen(t.text.data());
+        while (*text != '\0' && n + 1 < t.text.size()) {
+            t.text[n++] = *text++;
+        }
+        t.text[n] = '\0';
     }
 };
 
@@ -171,7 +184,8 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
         }
     }
     if (!listed) {
-        std::snprintf(out.text.data(), out.text.size(), "%s is not supported by %s", row.name, device_name(*device));
+        std::snprintf(out.text.data(), out.text.size(), "%s is not supported by %s", row.name,
+                      device_name(*device));
         return true;
     }
     if (row.device >= 0 && static_cast<std::size_t>(row.device) != index) {
@@ -186,8 +200,8 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
         if (!in_layout || (limited != 0 && (limited & bit) == 0)) {
             const char *fname = function_name(*fn);
             if (fname != nullptr) {
-                std::snprintf(out.text.data(), out.text.size(), "function %s of %s is not supported by %s", fname,
-                              row.name, device_name(*device));
+                std::snprintf(out.text.data(), out.text.size(), "function %s of %s is not supported by %s",
+                              fname, row.name, device_name(*device));
             } else {
                 std::snprintf(out.text.data(), out.text.size(), "function %lld of %s is not supported by %s",
                               static_cast<long long>(*fn), row.name, device_name(*device));
@@ -234,7 +248,8 @@ template <class T> std::int64_t allowance_ms(const T &command) {
 }
 
 /// The reply field descriptors the command as given expects with its ack (spec `responses`).
-template <class T> std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExpected> &out) {
+template <class T>
+std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExpected> &out) {
     using Traits = CommandTraits<T>;
     const CommandRow &row = kCommandRows[Traits::kRow];
     std::uint8_t n = 0;
@@ -346,8 +361,8 @@ template <std::size_t N = kDefaultMaxPending> class Session {
             s.complete = true;
             s.result.status = Status::refused;
             s.result.has_error = true;
-            std::snprintf(s.result.error.text.data(), s.result.error.text.size(), "%llu commands already pending",
-                          static_cast<unsigned long long>(N));
+            std::snprintf(s.result.error.text.data(), s.result.error.text.size(),
+                          "%llu commands already pending", static_cast<unsigned long long>(N));
             return s;
         }
         s.packet = bytes;
@@ -578,7 +593,8 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         }
     };
 
-    void complete(const Slot &slot, const PacketView &packet, std::int64_t code, std::size_t begin, std::size_t end) {
+    void complete(const Slot &slot, const PacketView &packet, std::int64_t code, std::size_t begin,
+                  std::size_t end) {
         begin_result(slot, Status::ack);
         result_.has_code = true;
         result_.code = code;

@@ -12,7 +12,8 @@
 namespace protopkg {
 
 /// {"line":N,"result":"ack","code":C,"reply":[...]} (with "error" for invalid and refused).
-inline void write_result_json(JsonWriter &w, std::uint64_t line, const Result &r, const std::optional<Device> &device) {
+inline void write_result_json(JsonWriter &w, std::uint64_t line, const Result &r,
+                              const std::optional<Device> &device) {
     w.begin_object();
     w.key("line");
     w.uinteger(line);
@@ -85,7 +86,8 @@ template <class F> struct CommandPick {
             return;
         }
         if constexpr (T::kHasVariants) {
-            if (device == nullptr || device->type != json::Value::Type::string || device->text != T::kDevice) {
+            if (device == nullptr || device->type != json::Value::Type::string ||
+                device->text != T::kDevice) {
                 return;
             }
         }
@@ -105,8 +107,8 @@ template <class F> struct CommandPick {
     }
 
     void not_command() {
-        error = json::printable(name) + " (set " + std::to_string(set) + ", descriptor " + std::to_string(descriptor) +
-                ") is not a command";
+        error = json::printable(name) + " (set " + std::to_string(set) + ", descriptor " +
+                std::to_string(descriptor) + ") is not a command";
     }
 };
 

@@ -22,15 +22,15 @@ struct CommandRow {
     std::uint8_t set;
     std::uint8_t descriptor;
     const char *name;
-    std::int8_t device;         ///< the device whose layout this is (an index of kDevices), or -1
-    std::uint32_t devices;      ///< bit i: kDevices[i] supports the command with this layout
-    bool has_functions;         ///< the layout has a function selector
-    std::uint64_t functions;    ///< bit v: function selector value v is accepted
-    const ReplyRule *replies;   ///< the reply rules (reply_count of them)
+    std::int8_t device;       ///< the device whose layout this is (an index of kDevices), or -1
+    std::uint32_t devices;    ///< bit i: kDevices[i] supports the command with this layout
+    bool has_functions;       ///< the layout has a function selector
+    std::uint64_t functions;  ///< bit v: function selector value v is accepted
+    const ReplyRule *replies; ///< the reply rules (reply_count of them)
     std::uint8_t reply_count;
-    std::uint8_t ack_kind;      ///< 0: never suppressed, 1: by function `ack_value`, 2: by parameter `ack_param`
-    std::int8_t ack_param;      ///< parameter slot (ack_kind 2)
-    bool ack_has_value;         ///< ack_kind 2: suppressed when the parameter equals ack_value (else non-zero)
+    std::uint8_t ack_kind; ///< 0: never suppressed, 1: by function `ack_value`, 2: by parameter `ack_param`
+    std::int8_t ack_param; ///< parameter slot (ack_kind 2)
+    bool ack_has_value;    ///< ack_kind 2: suppressed when the parameter equals ack_value (else non-zero)
     std::int64_t ack_value;
     bool has_timeout;           ///< the spec gives this command extra time
     std::uint32_t timeout_ms;   ///< fixed allowance

@@ -22,7 +22,8 @@ class Transport {
     virtual bool write(const std::uint8_t *data, std::size_t size, ErrorText &error) = 0;
     /// Waits up to timeout_ms for bytes: the count read (> 0), 0 when none came, -1 (with `error`)
     /// when the connection failed or closed.
-    virtual long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms, ErrorText &error) = 0;
+    virtual long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
+                      ErrorText &error) = 0;
 };
 
 /// What Connection::run returns: the command's result, or an I/O failure of the transport.
@@ -69,9 +70,9 @@ class Connection {
         if (!clock_) {
             const auto t0 = std::chrono::steady_clock::now();
             clock_ = [t0]() {
-                return static_cast<std::int64_t>(
-                    std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
-                        .count());
+                return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                                     std::chrono::steady_clock::now() - t0)
+                                                     .count());
             };
         }
     }

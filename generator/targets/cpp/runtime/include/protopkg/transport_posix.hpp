@@ -53,15 +53,18 @@ class FdTransport : public Transport {
         return true;
     }
 
-    long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms, ErrorText &error) override {
+    long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
+              ErrorText &error) override {
         pollfd p{fd_, POLLIN, 0};
-        const int timeout = timeout_ms > 2000000000 ? 2000000000 : static_cast<int>(timeout_ms < 0 ? 0 : timeout_ms);
+        const int timeout =
+            timeout_ms > 2000000000 ? 2000000000 : static_cast<int>(timeout_ms < 0 ? 0 : timeout_ms);
         const int r = ::poll(&p, 1, timeout);
         if (r < 0) {
             if (errno == EINTR) {
                 return 0;
             }
-            std::snprintf(error.text.data(), error.text.size(), "%s: poll failed: %s", what_, std::strerror(errno));
+            std::snprintf(error.text.data(), error.text.size(), "%s: poll failed: %s", what_,
+                          std::strerror(errno));
             return -1;
         }
         if (r == 0) {
@@ -72,7 +75,8 @@ class FdTransport : public Transport {
             if (errno == EINTR || errno == EAGAIN) {
                 return 0;
             }
-            std::snprintf(error.text.data(), error.text.size(), "%s: read failed: %s", what_, std::strerror(errno));
+            std::snprintf(error.text.data(), error.text.size(), "%s: read failed: %s", what_,
+                          std::strerror(errno));
             return -1;
         }
         if (n == 0) {
@@ -118,8 +122,9 @@ inline bool parse_tcp_address(const std::string &address, std::string &host, std
         host = rest.substr(0, colon);
     }
     port = rest.substr(colon + 1);
-    if (host.empty() || port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos ||
-        std::atol(port.c_str()) < 1 || std::atol(port.c_str()) > 65535) {
+    if (host.empty() || port.empty() || port.size() > 5 ||
+        port.find_first_not_of("0123456789") != std::string::npos || std::atol(port.c_str()) < 1 ||
+        std::atol(port.c_str()) > 65535) {
         return false;
     }
     return true;
