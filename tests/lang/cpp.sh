@@ -108,6 +108,11 @@ case "$cmd" in
     exe="$(tool session)"
     exec "$exe" "$@"
     ;;
+  configure-and-stream-build)
+    # Builds the configure-and-stream example (examples/configure_and_stream.cpp); prints its path.
+    mkdir -p "$ROOT/build/cpp"
+    tool configure-and-stream
+    ;;
   example)
     mkdir -p "$ROOT/build/cpp"
     exe="$(tool getting-started)"

@@ -696,6 +696,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             ctx
         )
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
+        example = configure_example(P)
+        if example is not None:
+            files[f"{root}/examples/configure_and_stream.cpp"] = env.get_template(
+                "cpp/examples/configure_and_stream.cpp.j2"
+            ).render(ctx, ex=example)
         files[f"{root}/tests/test_sessions.cpp"] = env.get_template("cpp/tests/test_sessions.cpp.j2").render(
             ctx, session_cases=session_cases(proto, sessions)
         )
@@ -987,3 +992,35 @@ def _cpp_reply(P: _Proto, s: dict, group: list[dict], fn: str | None, by_id: dic
     if len(ids) != 1 or ids[0] not in by_id or len(by_id[ids[0]]["variants"]) != 1:
         return None
     return f"::{P.ns}::{_set_ns(s)}::{names[(by_id[ids[0]]['name'], None)]}"
+
+
+def configure_example(P: _Proto) -> dict | None:
+    """The configure-and-stream example's calls (examples/configure_and_stream.cpp.j2), for a
+    protocol with a ping, a device-information command, the sensor-to-vehicle rotation and a data
+    stream switch (MIP); None for the others (no example)."""
+    cmds = {
+        f["name"]: (s, f)
+        for s in P.p["sets"]
+        if s["kind"] == "command"
+        for f in s["fields"]
+        if f["role"] == "command"
+    }
+    need = ("ping", "get_device_info", "sensor_to_vehicle_euler", "data_stream_control")
+    if not all(n in cmds for n in need):
+        return None
+    device = "cv7_ins" if any(d["id"] == "cv7_ins" for d in P.p["devices"]) else None
+    if device is None:
+        return None
+
+    def path(name: str) -> str:
+        return f"{_set_ns(cmds[name][0])}::{ident(name)}"
+
+    return {
+        "device": ident(device),
+        "ping": path("ping") + "::call",
+        "info": path("get_device_info") + "::call",
+        "info_member": "info",
+        "setting": path("sensor_to_vehicle_euler"),
+        "stream": path("data_stream_control") + f"::write_{device}",
+        "stream_args": "0x82, true",
+    }
