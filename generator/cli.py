@@ -1,5 +1,5 @@
-"""mipgen: the generator as a command (`pip install -e .` installs it; `python -m generator` is the
-same program).
+"""mipgen: the generator as a command (`pip install .` or a wheel installs it, docs/packaging.md;
+`python -m generator` in the checkout is the same program).
 
     mipgen generate [--spec DIR [OVERLAY ...]] [--vectors DIR] [--out DIR] [--langs c,cpp,python,rust,docs]
     mipgen diff OLD NEW [--json] [--changelog]
@@ -40,16 +40,18 @@ def _spec_args(ap: argparse.ArgumentParser) -> None:
 
 def _split_spec(ap, spec: list[str] | None):
     """(spec_dir or None for the project's spec/, overlays)."""
-    from .spec import ROOT
+    from .resources import CHECKOUT
 
     if not spec:
+        if CHECKOUT is None:
+            ap.error("--spec DIR is needed: an installed mipgen has no project spec of its own")
         return None, []
     dirs = [Path(s) for s in spec]
     for d in dirs:
         if not d.is_dir():
             ap.error(f"--spec {d}: no such directory")
     base = dirs[0]
-    return (None if base.resolve() == (ROOT / "spec").resolve() else base), dirs[1:]
+    return (None if CHECKOUT and base.resolve() == (CHECKOUT / "spec").resolve() else base), dirs[1:]
 
 
 def _run_spec_errors(fn) -> int:

@@ -10,6 +10,7 @@ from .export import ir_to_json
 from .output import write_file, write_tree
 from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
+from .resources import CHECKOUT
 from .sessions import load_sessions
 from .spec import ROOT, load_spec
 from .stated_lengths import lint_stated_lengths
@@ -27,6 +28,8 @@ def run(
     vectors_dir: Path | None = None,
     overlays: list[Path] = (),
 ) -> int:
+    if spec_dir is None and CHECKOUT is None:
+        raise ToolError("no spec directory given, and an installed generator has no project spec: pass --spec DIR")
     ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT, overlays=list(overlays))
     if lint:
         for item in lint_stated_lengths(ir):
@@ -79,4 +82,4 @@ def run(
 
 def _project_root(path: Path) -> Path | None:
     """The project root when path is inside it (vector file names then read tests/...), else None."""
-    return ROOT if path.resolve().is_relative_to(ROOT) else None
+    return CHECKOUT if CHECKOUT and path.resolve().is_relative_to(CHECKOUT) else None

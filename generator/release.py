@@ -24,10 +24,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .diagnostics import Location, SpecError
+from .resources import LICENSE_FILE, ROOT, VERSION_FILE  # the checkout's, or the wheel's copies
 
-ROOT = Path(__file__).resolve().parent.parent
-VERSION_FILE = ROOT / "VERSION"
-LICENSE_FILE = ROOT / "LICENSE"
 SPEC_HASH_DIGITS = 16
 
 # MAJOR.MINOR.PATCH, no leading zeros (semver 2.0.0 section 2). Pre-release and build suffixes

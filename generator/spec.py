@@ -12,11 +12,11 @@ from .diagnostics import SpecError, SpecErrors
 from .ir import IR_VERSION, build_protocol
 from .overlay import apply_extensions
 from .passes.context import SpecFile
+from .resources import ROOT, SCHEMA_DIR
 from .schema_check import schema_errors
 from .yamlpos import load
 
-ROOT = Path(__file__).resolve().parent.parent
-SCHEMA_PATH = ROOT / "spec" / "schema" / "spec.schema.json"
+SCHEMA_PATH = SCHEMA_DIR / "spec.schema.json"
 FILE_KINDS = ("protocol", "set", "types", "extends")  # the key that tells a file's kind
 
 

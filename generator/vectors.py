@@ -23,6 +23,7 @@ from .passes.context import SpecFile
 from .passes.lookup_order import entries as lookup_entries
 from .passes.lookup_order import set_kind
 from .primitives import PRIMITIVES, int_range
+from .resources import SCHEMA_DIR
 from .schema_check import schema_errors
 from .yamlpos import load
 
@@ -135,7 +136,7 @@ def load_vectors(ir: dict, vectors_dir: Path, root: Path | None = None) -> list[
     return cases
 
 
-SCHEMA = Path(__file__).resolve().parent.parent / "spec" / "schema" / "vectors.schema.json"
+SCHEMA = SCHEMA_DIR / "vectors.schema.json"
 
 
 def _shape_errors(sf: SpecFile) -> list[SpecError]:

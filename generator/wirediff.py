@@ -30,7 +30,8 @@ from io import BytesIO
 from pathlib import Path
 
 from .naming import camel, snake
-from .spec import ROOT, load_spec
+from .resources import CHECKOUT
+from .spec import load_spec
 
 BREAKING, COMPATIBLE, API, DOC = "wire-breaking", "wire-compatible", "api-only", "documentation"
 ORDER = (BREAKING, API, COMPATIBLE, DOC)
@@ -59,8 +60,10 @@ class Change:
 
 
 # ------------------------------------------------------------------------------ loading
-def load_side(arg: str, root: Path = ROOT) -> tuple[dict, str]:
-    """The IR of a spec directory or of a git revision's spec/, and how to call it."""
+def load_side(arg: str, root: Path | None = None) -> tuple[dict, str]:
+    """The IR of a spec directory or of a git revision's spec/ (of the repository root: by
+    default this checkout, or the current directory for an installed mipgen), and how to call it."""
+    root = root or CHECKOUT or Path.cwd()
     path = Path(arg)
     if path.is_dir():
         spec_dir = path / "spec" if (path / "spec").is_dir() and not _has_protocol(path) else path

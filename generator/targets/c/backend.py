@@ -8,7 +8,6 @@ package with its symbol prefix; its only protocol input is the generated include
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 from generator import model
 from generator.cmake import cmake_package_files, pkg_config
@@ -17,6 +16,7 @@ from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
+from generator.resources import sessions_dir
 from generator.sessions import load_sessions
 from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
@@ -892,9 +892,9 @@ def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
 def _session_cases(ir: dict) -> dict[str, list[dict]]:
     """The session corpus of the project (tests/sessions/<protocol>/) per protocol, as C literals;
     empty for another spec (a test fixture) whose protocols the corpus does not name."""
-    root = Path(__file__).resolve().parents[3] / "tests" / "sessions"
+    root = sessions_dir()
     names = {p["name"] for p in ir["protocols"]}
-    if not root.is_dir() or not {d.name for d in root.iterdir() if d.is_dir()} <= names:
+    if root is None or not root.is_dir() or not {d.name for d in root.iterdir() if d.is_dir()} <= names:
         return {}
     out: dict[str, list[dict]] = {}
     prefixes = {p["name"]: prefix_of(p).upper() for p in ir["protocols"]}

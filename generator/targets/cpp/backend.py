@@ -836,13 +836,15 @@ def session_context(P: _Proto) -> dict:
 def _load_sessions(ir: dict) -> list[dict]:
     """The project's session corpus (tests/sessions/), or none when the IR is not the project's
     (a spec given with --spec: its protocols do not match the corpus)."""
-    from pathlib import Path
 
     from generator.diagnostics import SpecErrors
     from generator.sessions import load_sessions
 
     try:
-        return load_sessions(ir, Path(__file__).resolve().parents[3] / "tests" / "sessions")
+        from generator.resources import sessions_dir
+
+        root = sessions_dir()
+        return load_sessions(ir, root) if root else []
     except (SpecErrors, KeyError, TypeError, ValueError):
         return []
 
@@ -999,11 +1001,7 @@ def configure_example(P: _Proto) -> dict | None:
     protocol with a ping, a device-information command, the sensor-to-vehicle rotation and a data
     stream switch (MIP); None for the others (no example)."""
     cmds = {
-        f["name"]: (s, f)
-        for s in P.p["sets"]
-        if s["kind"] == "command"
-        for f in s["fields"]
-        if f["role"] == "command"
+        f["name"]: (s, f) for s in P.p["sets"] if s["kind"] == "command" for f in s["fields"] if f["role"] == "command"
     }
     need = ("ping", "get_device_info", "sensor_to_vehicle_euler", "data_stream_control")
     if not all(n in cmds for n in need):
