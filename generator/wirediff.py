@@ -1,7 +1,7 @@
 """`mipgen diff OLD NEW`: what changed between two specs, on the wire and in the generated API.
 
-OLD and NEW are spec directories or git revisions of this repository (their spec/). Both are
-loaded into the IR (generator/spec.py) and compared protocol by protocol: framing, devices,
+OLD and NEW are spec directories or git revisions (their spec/) of the current directory's
+repository (else of this checkout). Both are loaded into the IR (generator/spec.py) and compared protocol by protocol: framing, devices,
 enums and bitfields (values and bits by number), structs, descriptor sets, and per descriptor
 its device support, functions, responses and each layout's parameters (name, type, count and
 offset). Every change is classified:
@@ -61,9 +61,10 @@ class Change:
 
 # ------------------------------------------------------------------------------ loading
 def load_side(arg: str, root: Path | None = None) -> tuple[dict, str]:
-    """The IR of a spec directory or of a git revision's spec/ (of the repository root: by
-    default this checkout, or the current directory for an installed mipgen), and how to call it."""
-    root = root or CHECKOUT or Path.cwd()
+    """The IR of a spec directory or of a git revision's spec/, and how to call it. Revisions are
+    those of the git repository of the current directory (as for `git diff`), else of this
+    checkout; root names another repository."""
+    root = root or _repository()
     path = Path(arg)
     if path.is_dir():
         spec_dir = path / "spec" if (path / "spec").is_dir() and not _has_protocol(path) else path
@@ -82,6 +83,14 @@ def load_side(arg: str, root: Path | None = None) -> tuple[dict, str]:
         with tarfile.open(fileobj=BytesIO(archive.stdout)) as tar:
             tar.extractall(tmp, filter="data")
         return _load(Path(tmp) / "spec", f"{arg}:spec"), f"{arg} ({rev.stdout.strip()[:12]})"
+
+
+def _repository() -> Path:
+    cwd = Path.cwd()
+    inside = subprocess.run(["git", "-C", str(cwd), "rev-parse", "--show-toplevel"], capture_output=True, text=True)
+    if inside.returncode == 0 and inside.stdout.strip():
+        return Path(inside.stdout.strip())
+    return CHECKOUT or cwd
 
 
 def _has_protocol(path: Path) -> bool:

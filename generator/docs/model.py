@@ -580,7 +580,7 @@ class Docs:
         pg.h(2, "Sources")
         pg.items([source_text(x) for x in f["sources"]])
         multi = len(f["variants"]) > 1
-        letters = {v: k for k, v in p["function_selector"]["letters"].items()}
+        letters = {v: k for k, v in p["function_selector"].get("letters", {}).items()}
         fsel = types.get(p["function_selector"]["enum"])
         shown_types: set[str] = set()
         for v in f["variants"]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import copy
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -193,7 +194,7 @@ def test_diff_optional_trailing_command_parameter_is_compatible_but_data_paramet
     assert c.kind == wirediff.BREAKING and "old decoders reject" in c.what
 
 
-def test_diff_cli_on_directories_and_revisions(tmp_path, capsys):
+def test_diff_cli_on_directories_and_revisions(tmp_path, capsys, monkeypatch):
     new = tmp_path / "new"
     shutil.copytree(ROOT / "spec", new)
     sensor = new / "mip" / "sensor.yaml"
@@ -210,12 +211,44 @@ def test_diff_cli_on_directories_and_revisions(tmp_path, capsys):
         "old_offset": 8,
         "new_offset": 8,
     }
-    # Two real revisions of this repository: issue 23 let read/save/load/default commands leave
-    # their trailing parameters out (optional_for): compatible on the wire.
-    assert mipgen(["diff", "07a46f1~1", "07a46f1", "--json"]) == 0
+    # Two git revisions of a repository of our own (no history of this one needed: CI's clones
+    # may be shallow): the project's spec without, then with, issue 23's optional_for (read/save/
+    # load/default commands may leave their trailing parameters out): compatible on the wire.
+    repo = tmp_path / "repo"
+    shutil.copytree(ROOT / "spec", repo / "spec")
+    streaming = repo / "spec" / "mip" / "3dm_streaming.yaml"
+    current = streaming.read_text()
+    streaming.write_text(re.sub(r", optional_for: \[[^\]]*\]", "", current))
+    git = [
+        "git",
+        "-C",
+        str(repo),
+        "-c",
+        "user.name=t",
+        "-c",
+        "user.email=t@example.invalid",
+        "-c",
+        "commit.gpgsign=false",
+    ]
+    subprocess.run([*git, "init", "-q"], check=True)
+    subprocess.run([*git, "add", "spec"], check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "before optional_for"], check=True)
+    streaming.write_text(current)
+    subprocess.run([*git, "commit", "-q", "-am", "optional_for"], check=True)
+    monkeypatch.chdir(repo)
+    assert mipgen(["diff", "HEAD~1", "HEAD", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["verdict"] == "wire-compatible" and doc["counts"]["wire-compatible"] == 15
     assert all(c["what"].endswith("is now optional") for c in doc["changes"] if c["kind"] == "wire-compatible")
+    assert {c["where"].split()[0] for c in doc["changes"]} == {
+        "0x0C,0x08",
+        "0x0C,0x09",
+        "0x0C,0x0A",
+        "0x0C,0x11",
+        "0x0C,0x21",
+        "0x0C,0x23",
+        "0x0C,0x24",
+    }
     assert mipgen(["diff", "no-such-revision-xyz", str(ROOT / "spec")]) == 2
     assert "neither a spec directory nor a git revision" in capsys.readouterr().err
 
