@@ -134,7 +134,7 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
             if part == "connect":
                 pg.p(
                     "Open the transport with the device model selected: a command the model does not support is "
-                    "refused before it is sent. Each call returns the typed reply or raises (a NACK with its error "
+                    "refused before it is sent. Each call gives the typed reply or fails (a NACK with its error "
                     "code, a timeout, a refusal)."
                 )
             elif part == "configure":
