@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import inspect
 from pathlib import Path
 
 from .errata import render_errata
@@ -39,9 +40,10 @@ def run(
     if spec_dir is None:
         vectors = load_corpus(ir, ROOT)
         # The session corpus (docs/conformance.md section 7) is checked here; its runners load it.
-        load_sessions(ir, ROOT / "tests" / "sessions")
+        sessions = load_sessions(ir, ROOT / "tests" / "sessions")
     else:
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
+        sessions = []
     release = load_release(spec_dir)  # VERSION and LICENSE: checked by --validate-only too
     if validate_only:
         return 0
@@ -52,7 +54,9 @@ def run(
         if only and name not in only:
             continue
         owned.extend(mod.OUTPUT_DIRS)
-        rendered = mod.render(ir, vectors, release)
+        # Back ends that render the session corpus into their tests take it as `sessions`.
+        extra = {"sessions": sessions} if "sessions" in inspect.signature(mod.render).parameters else {}
+        rendered = mod.render(ir, vectors, release, **extra)
         for rel in rendered:
             if not any(rel == d or rel.startswith(d.rstrip("/") + "/") for d in mod.OUTPUT_DIRS):
                 raise ToolError(f"back end {name} wrote {rel}, outside its directories {mod.OUTPUT_DIRS}")

@@ -13,6 +13,12 @@
      can be compared; the last column gives, for mode session-ingest, its ratio to the same
      language's decode of the same stream, and for session-roundtrip (stream loopback-tcp,
      packets = round trips) the round trips per second and microseconds per round trip.
+  4. each language's decode CLI (lang=<lang>-cli mode=decode-cli, issue 22), built with release
+     flags into build/bench/cli/ (C and C++: CMake Release; Rust: cargo --release in build/rust/target,
+     shared with tests/lang/rust.sh; Python: the package with its C accelerator, build/python/ext/),
+     run on accel_gyro.bin and on the device capture (../shared/captures/mip_data.bin, when there)
+     repeated 200 x --scale times, output to a file: wall time and maximum resident memory of each
+     process (wait4), and the outputs must be byte-identical across languages (--no-cli skips it).
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -27,6 +33,7 @@ import platform
 import shlex
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -130,6 +137,132 @@ def commands(langs: list[str], out: Path, passes: int) -> list[tuple[str, list[s
         else:
             runs.append(("python", None, f"{script.relative_to(ROOT)} not found"))
     return runs
+
+
+CAPTURE = ROOT.parent / "shared" / "captures" / "mip_data.bin"
+
+
+def build_clis(langs: list[str], out: Path) -> dict[str, list[str]]:
+    """The decode command of each language in langs, built with release flags."""
+    cmds: dict[str, list[str]] = {}
+    for lang in ("c", "cpp"):
+        if lang not in langs:
+            continue
+        build = out / "cli" / lang
+        if not (build / "build.ninja").is_file():
+            log(f"configuring the {lang} decode CLI (CMake Release) in {shown(build)}/")
+            src = ROOT / "generated" / lang / "mipcodec"
+            cfg = ["cmake", "-G", "Ninja", "-S", str(src), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
+            subprocess.run(cfg, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(
+            ["cmake", "--build", str(build), "--target", f"mipcodec_{lang}_decode"],
+            check=True,
+            stdout=subprocess.DEVNULL,
+        )
+        cmds[lang] = [str(build / "mipcodec-decode")]
+    if "rust" in langs:
+        target = ROOT / "build" / "rust" / "target"  # the one tests/lang/rust.sh builds
+        manifest = ROOT / "generated" / "rust" / "mipcodec" / "Cargo.toml"
+        log("building the Rust decode CLI (cargo --release)")
+        subprocess.run(
+            ["cargo", "build", "--quiet", "--release", "--manifest-path", str(manifest), "--bins"],
+            check=True,
+            env=dict(os.environ, CARGO_TARGET_DIR=str(target)),
+        )
+        cmds["rust"] = [str(target / "release" / "mipcodec-decode")]
+    if "python" in langs:
+        ext = subprocess.run(
+            [str(ROOT / "tests" / "lang" / "python.sh"), "ext"], check=True, capture_output=True, text=True
+        ).stdout.split()
+        where = next(d for d in ext if d.endswith("/mipcodec"))
+        cmds["python"] = ["env", f"PYTHONPATH={where}", sys.executable, "-m", "mipcodec", "decode"]
+    return cmds
+
+
+def cli_inputs(out: Path, scale: float) -> list[tuple[str, Path]]:
+    """accel_gyro.bin and the device capture repeated 200 x scale times (when it is there)."""
+    inputs = [("accel_gyro", out / "accel_gyro.bin")]
+    if CAPTURE.is_file():
+        times = max(1, round(200 * scale))
+        path = out / f"capture_x{times}.bin"
+        if not path.is_file() or path.stat().st_size != times * CAPTURE.stat().st_size:
+            path.write_bytes(CAPTURE.read_bytes() * times)
+        inputs.append((path.stem, path))
+    else:
+        log(f"{CAPTURE} not found: the decode CLIs run on accel_gyro only")
+    return inputs
+
+
+def cli_bench(langs: list[str], out: Path, scale: float) -> tuple[list[dict[str, str]], bool]:
+    """BENCH rows of the decode CLIs (with rss_kb=), and False when one failed or they disagree."""
+    rows: list[dict[str, str]] = []
+    ok = True
+    cmds = build_clis(langs, out)
+    result = out / "cli-output.jsonl"
+    # GNU time measures each CLI's maximum resident memory and CPU time; without it, wait4's
+    # figures (whose maximum RSS also counts the pages the child had from this process).
+    timed = out / "cli-time.txt"
+    timer = ["/usr/bin/time", "-f", "%M %U %S", "-o", str(timed)] if os.access("/usr/bin/time", os.X_OK) else []
+    for stream, path in cli_inputs(out, scale):
+        digests: dict[str, str] = {}
+        for lang, cmd in cmds.items():
+            with open(result, "wb") as sink:
+                t0 = time.perf_counter()
+                proc = subprocess.Popen([*timer, *cmd, str(path)], stdout=sink, cwd=ROOT)
+                _pid, status, usage = os.wait4(proc.pid, 0)
+                seconds = time.perf_counter() - t0
+            if status != 0:
+                log(f"{lang} decode CLI on {path.name}: exit status {status}")
+                ok = False
+                continue
+            rss, cpu = usage.ru_maxrss, usage.ru_utime + usage.ru_stime
+            if timer:
+                fields = timed.read_text().split()
+                rss, cpu = int(fields[0]), float(fields[1]) + float(fields[2])
+            digest = hashlib.sha256()
+            lines = skips = 0
+            with open(result, "rb") as f:
+                for block in iter(lambda: f.read(1 << 20), b""):
+                    digest.update(block)
+                    lines += block.count(b"\n")
+                    skips += block.count(b'"skipped":')
+            digests[lang] = digest.hexdigest()
+            line = (
+                f"BENCH lang={lang}-cli stream={stream} mode=decode-cli packets={lines - skips}"
+                f" bytes={path.stat().st_size} seconds={seconds:.6f} rss_kb={rss} cpu={cpu:.6f}"
+            )
+            print(line, file=sys.stderr, flush=True)
+            row = parse(line)
+            assert row is not None
+            rows.append(row)
+        if len(set(digests.values())) > 1:
+            log(f"the decode CLIs disagree on {path.name}: {digests}")
+            ok = False
+    result.unlink(missing_ok=True)
+    timed.unlink(missing_ok=True)
+    return rows, ok
+
+
+def cli_table(rows: list[dict[str, str]]) -> str:
+    """The decode CLIs per stream: wall seconds, MB/s of input, max RSS, the ratio to the fastest,
+    and the same for CPU seconds (user + system: steadier than wall time on a shared machine)."""
+    head = "| CLI | stream | seconds | MB/s | max RSS MB | x fastest | CPU s | x fastest CPU |"
+    lines = [head, "|---|---|---:|---:|---:|---:|---:|---:|"]
+    for stream in dict.fromkeys(r["stream"] for r in rows):
+        mine = [r for r in rows if r["stream"] == stream]
+        fastest = min(float(r["seconds"]) for r in mine)
+        least = min(float(r.get("cpu", "0")) for r in mine)
+        for r in mine:
+            sec = float(r["seconds"])
+            mbs = int(r["bytes"]) / sec / 1e6 if sec > 0 else 0.0
+            rss = int(r.get("rss_kb", "0")) / 1024
+            ratio = sec / fastest if fastest > 0 else 0.0
+            cpu = float(r.get("cpu", "0"))
+            cpu_ratio = f"{cpu / least:.2f}" if least > 0 else "-"
+            lines.append(
+                f"| {r['lang']} | {stream} | {sec:.2f} | {mbs:.1f} | {rss:.1f} | {ratio:.2f} | {cpu:.2f} | {cpu_ratio} |"
+            )
+    return "\n".join(lines)
 
 
 def parse(line: str) -> dict[str, str] | None:
@@ -236,6 +369,7 @@ def main() -> int:
     ap.add_argument("--scale", type=float, default=1.0, help="stream size factor (streams.py --scale)")
     ap.add_argument("--passes", type=int, default=5, help="passes per measurement, best kept (C and C++)")
     ap.add_argument("--out", default=str(ROOT / "build" / "bench"), help="stream and binary directory")
+    ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs (step 4)")
     args = ap.parse_args()
     langs = [x for x in (s.strip() for s in args.langs.split(",")) if x]
     unknown = [x for x in langs if x not in LANGS]
@@ -265,9 +399,21 @@ def main() -> int:
         rows += got
         if not ok:
             failed.append(name)
+    cli_rows: list[dict[str, str]] = []
+    if not args.no_cli:
+        try:
+            cli_rows, ok = cli_bench(langs, out, args.scale)
+        except (subprocess.CalledProcessError, OSError) as e:
+            log(f"decode CLIs: {e}")
+            ok = False
+        if not ok:
+            failed.append("decode-cli")
     print(f"Benchmarks (issue 8): {machine()}; best of {args.passes} passes; scale {args.scale}")
     print()
     print(table(rows, langs))
+    if cli_rows:
+        print("\nDecode CLIs (one run each, output to a file):\n")
+        print(cli_table(cli_rows))
     if skipped:
         print(f"\nskipped: {', '.join(skipped)}")
     if failed:

@@ -413,6 +413,10 @@ for key, t in cols.tables.items():
             assert np.array_equal(np.asarray(getattr(t.row(i), attr), dtype=a.dtype).reshape(a[i].shape), a[i]), (key, attr, i)
 assert shapes["scaled_accel"][1:] == (3,), shapes
 assert shapes["dcm"][1:] == (3, 3), shapes
+q = cols.tables[(0x80, 0x0A)].arrays()["q"]  # the complementary filter's quaternion
+assert q.shape == (cols.tables[(0x80, 0x0A)].rows, 4) and q.dtype == np.float64, q.shape
+m = cols.tables[(0x80, 0x09)].arrays()["m"]  # its orientation matrix, row-major
+assert m.shape[1:] == (3, 3) and m[0, 0, 1] == cols.tables[(0x80, 0x09)].row(0).m[1], m.shape
 df = cols.tables[(0x80, 0x04)].dataframe()
 assert list(df.columns) == ["offset", "scaled_accel.x", "scaled_accel.y", "scaled_accel.z"], list(df.columns)
 assert df["scaled_accel.y"].tolist() == cols.tables[(0x80, 0x04)].arrays()["scaled_accel"][:, 1].tolist()

@@ -21,6 +21,7 @@ from generator.testcases import bitfield_cases, canonical_cases, layout_error_ca
 
 from .facts import (
     CATEGORIES,
+    DEVICE_METHODS,
     INCLUDE,
     KEYWORDS,
     KEYWORDS_COMMON,
@@ -580,6 +581,446 @@ class _Protocol:
         return out
 
 
+# ---------------------------------------------------------------------------------------- session
+# The most reply descriptors one command may expect (MAX_EXPECT of runtime/src/session.rs).
+_MAX_EXPECT = 4
+
+
+class _Session:
+    """What commands.rs.j2 (the spec facts of every command layout, docs/conformance.md section 8)
+    and command_api.rs.j2 (the typed command API) print, computed from the IR."""
+
+    def __init__(self, m: _Protocol):
+        self.m = m
+        self.proto = m.proto
+        fs = self.proto.get("function_selector") or {}
+        self.function_enum = fs.get("enum")
+        self.fvalues: dict[str, int] = {}
+        if self.function_enum:
+            for v in m.types[self.function_enum]["values"]:
+                self.fvalues[v["name"]] = v["value"]
+
+    def _int_value(self, tref: dict, value) -> int | None:
+        if value is None or isinstance(value, int):
+            return value
+        if isinstance(value, bool):
+            return int(value)
+        t = self.m.types[tref["name"]]
+        return next(v["value"] for v in t["values"] if v["name"] == value)
+
+    def _pattern(self, s: dict, f: dict, v: dict, bind: str) -> str:
+        """The match pattern of a FieldValue holding layout v of field f (binding it to `bind`)."""
+        module = self.m.set_module(s)
+        variant = camel(module)
+        rust = camel(f["name"])
+        if len(f["variants"]) > 1:
+            inner = f"crate::{module}::{rust}::{self.m.device_variant(v['device'])}({bind})"
+        else:
+            inner = bind
+        return f"FieldValue::{variant}(crate::{module}::SetField::{rust}({inner}))"
+
+    def _constructor(self, s: dict, f: dict, v: dict, value: str) -> tuple[str, str]:
+        """(struct path of layout v, the FieldValue expression wrapping `value`)."""
+        module = self.m.set_module(s)
+        rust = camel(f["name"])
+        if len(f["variants"]) > 1:
+            dv = self.m.device_variant(v["device"])
+            struct = f"crate::{module}::{rust}{camel(v['device'])}"
+            inner = f"crate::{module}::{rust}::{dv}({value})"
+        else:
+            struct = f"crate::{module}::{rust}"
+            inner = value
+        return struct, f"FieldValue::{camel(module)}(crate::{module}::SetField::{rust}({inner}))"
+
+    def _to_int(self, q: model.Param, x: str) -> str:
+        """A Rust expression of type i64 for the value `x` of a scalar parameter (bool, integer, enum)."""
+        e = q.elem
+        if e.kind == "primitive" and e.name == "bool":
+            return f"i64::from({x})"
+        if e.kind == "primitive":
+            return f"{x} as i64"
+        return f"{x}.0 as i64"
+
+    def context(self) -> dict:
+        proto = self.proto
+        rule = proto.get("session")
+        if rule is None:
+            raise ToolError(f"{proto['name']}: the Rust session layer needs the protocol's ack rule (session)")
+        ack_rust = camel(rule["ack_name"])
+        code_t = self.m.types.get(rule["code_enum"]) if rule.get("code_enum") else None
+        code_expr = "a.{}.0".format(ident(rule["code"])) if code_t else "a.{}".format(ident(rule["code"]))
+        rows = []
+        facts_match = []
+        function_match = []
+        param_match = []
+        for s in proto["sets"]:
+            if s["kind"] != "command":
+                continue
+            for f in s["fields"]:
+                if f["role"] != "command":
+                    continue
+                for v in f["variants"]:
+                    index = len(rows)
+                    pm = model.layout(proto, v)
+                    by_name = {q.name: q for q in pm.params}
+                    used: list[str] = []
+                    replies = []
+                    for r in v["responses"]:
+                        w = r["when"] or {}
+                        fn = self.fvalues.get(w["function"]) if "function" in w else None
+                        param = w.get("param")
+                        value = self._int_value(by_name[param].ir["type"], w.get("value")) if param else None
+                        if param:
+                            used.append(param)
+                        replies.append(
+                            "ReplyFacts { descriptor: %s, function: %s, param: %s, value: %s }"
+                            % (
+                                _hex(r["id"]),
+                                _opt(fn),
+                                _opt(rust_str(param) if param else None),
+                                _opt(value),
+                            )
+                        )
+                    if len(replies) > _MAX_EXPECT:
+                        raise ToolError(f"{f['name']}: more than {_MAX_EXPECT} reply fields")
+                    ack = v["ack_suppressed_by"]
+                    if ack is None:
+                        ack_text = "AckSuppression::Never"
+                    elif "function" in ack:
+                        ack_text = f"AckSuppression::Function({self.fvalues[ack['function']]})"
+                    else:
+                        used.append(ack["param"])
+                        val = self._int_value(by_name[ack["param"]].ir["type"], ack.get("value"))
+                        ack_text = "AckSuppression::Param { param: %s, value: %s }" % (
+                            rust_str(ack["param"]),
+                            _opt(val),
+                        )
+                    t = v.get("timeout")
+                    if t is None:
+                        timeout = "None"
+                    else:
+                        fns = [str(self.fvalues[x]) for x in t["functions"]] if t["functions"] else None
+                        if t["param"]:
+                            used.append(t["param"])
+                        timeout = "Some(Allowance { ms: %d, param: %s, functions: %s })" % (
+                            t["ms"],
+                            _opt(rust_str(t["param"]) if t["param"] else None),
+                            "Some(&[%s])" % ", ".join(fns) if fns else "None",
+                        )
+                    functions = (
+                        "Some(&[%s])" % ", ".join(str(self.fvalues[x]) for x in v["functions"])
+                        if v["functions"] is not None
+                        else "None"
+                    )
+                    devices = ", ".join(f"Device::{self.m.device_variant(d)}" for d in v["devices"])
+                    device = f"Some(Device::{self.m.device_variant(v['device'])})" if v["device"] else "None"
+                    rows.append(
+                        {
+                            "set": _hex(s["id"]),
+                            "descriptor": _hex(f["id"]),
+                            "name": rust_str(f["name"]),
+                            "device": device,
+                            "devices": devices,
+                            "functions": functions,
+                            "replies": replies,
+                            "ack": ack_text,
+                            "timeout": timeout,
+                        }
+                    )
+                    facts_match.append({"pattern": self._pattern(s, f, v, "_"), "index": index})
+                    fq = next((q for q in pm.params if q.function), None)
+                    if fq is not None:
+                        function_match.append({"pattern": self._pattern(s, f, v, "v"), "expr": f"v.{ident(fq.name)}.0"})
+                    for name in dict.fromkeys(used):
+                        q = by_name[name]
+                        x = ident(q.name)
+                        if q.optional:
+                            expr = f"v.{x}.map(|x| {self._to_int(q, 'x')})"
+                        else:
+                            expr = f"Some({self._to_int(q, 'v.' + x)})"
+                        param_match.append(
+                            {"pattern": self._pattern(s, f, v, "v"), "name": rust_str(name), "expr": expr}
+                        )
+        fdevices = []
+        if self.function_enum:
+            for v in self.m.types[self.function_enum]["values"]:
+                if v.get("devices"):
+                    fdevices.append(
+                        {
+                            "value": v["value"],
+                            "devices": ", ".join(f"Device::{self.m.device_variant(d)}" for d in v["devices"]),
+                        }
+                    )
+        uses = ["CommandFacts"] + [
+            name
+            for name, used in (
+                ("AckSuppression", rows),
+                ("Allowance", any(r["timeout"] != "None" for r in rows)),
+                ("ReplyFacts", any(r["replies"] for r in rows)),
+            )
+            if used
+        ]
+        return {
+            "session_imports": ", ".join(sorted(uses)),
+            "session_rule": {
+                "ack": _hex(rule["ack"]),
+                "ok": rule["ok"],
+                "pattern": f"FieldValue::Reserved(crate::reserved::ReservedField::{ack_rust}(a))",
+                "echo": f"a.{ident(rule['echo'])}",
+                "code": f"u32::from({code_expr})",
+            },
+            "function_names": [{"value": v, "name": rust_str(n)} for n, v in self.fvalues.items()],
+            "function_devices": fdevices,
+            "command_rows": rows,
+            "facts_match": facts_match,
+            "function_match": function_match,
+            "param_match": param_match,
+            "api_sets": self.api_sets(),
+        }
+
+    # ------------------------------------------------------------ typed API
+    def api_sets(self) -> list[dict]:
+        out = []
+        for s in self.proto["sets"]:
+            if s["kind"] != "command":
+                continue
+            by_id = {f["id"]: f for f in s["fields"]}
+            commands = [self._command(s, f, by_id) for f in s["fields"] if f["role"] == "command"]
+            if commands:
+                module = self.m.set_module(s)
+                out.append(
+                    {
+                        "method": _set_method(module),
+                        "struct": camel(module) + "Commands",
+                        "title": s["title"],
+                        "set": _hex(s["id"]),
+                        "commands": commands,
+                    }
+                )
+        return out
+
+    def _command(self, s: dict, f: dict, by_id: dict) -> dict:
+        variants = f["variants"]
+        plain = variants[0]["functions"] is None
+        functions: list[str] = []
+        for v in variants:
+            for fn in v["functions"] or []:
+                if fn not in functions:
+                    functions.append(fn)
+        methods = []
+        for fn in [None] if plain else functions:
+            groups: dict[tuple, list[dict]] = {}
+            for v in variants:
+                if fn is not None and fn not in (v["functions"] or []):
+                    continue
+                sig = self._signature(v, fn)
+                groups.setdefault(tuple((a["name"], a["type"]) for a in sig["args"]), []).append({"v": v, "sig": sig})
+            split = len(groups) > 1
+            for group in groups.values():
+                base = ident(f["name"]) if fn is None else ident(fn)
+                name = f"{base}_{group[0]['v']['device']}" if split else base
+                builds = []
+                for g in group:
+                    v = g["v"]
+                    struct, wrap = self._constructor(s, f, v, "command")
+                    assign = list(g["sig"]["assign"])
+                    if len(assign) < len(model.layout(self.proto, v).params):
+                        assign.append(f"..<{struct} as crate::wire::Wire>::ZERO")
+                    builds.append(
+                        {
+                            "device": f"Model::{self.m.device_variant(v['device'])}" if v["device"] else None,
+                            "struct": struct,
+                            "wrap": wrap,
+                            "assign": assign,
+                        }
+                    )
+                reply = self._reply(s, f, [g["v"] for g in group], fn, by_id)
+                methods.append(
+                    {
+                        "name": name,
+                        "args": group[0]["sig"]["args"],
+                        "builds": builds,
+                        "returns": reply["type"],
+                        "extract": reply["extract"],
+                        "doc": (f"Function `{fn}`" if fn else f"Sends `{f['name']}`")
+                        + (f" (layout for {', '.join(g['v']['device'] for g in group)})" if split else "")
+                        + (": returns the reply field." if reply["type"] != "()" else "."),
+                    }
+                )
+        return {
+            "method": ident(f["name"]),
+            "struct": camel(f["name"]) + "Command",
+            "title": f["title"],
+            "plain": plain,
+            "methods": methods,
+            "descriptor": _hex(f["id"]),
+        }
+
+    def _signature(self, v: dict, fn: str | None) -> dict:
+        """The arguments of function fn of layout v, and the struct fields they set (count
+        parameters of counted arrays are set from the array)."""
+        pm = model.layout(self.proto, v)
+        counted = {q.count_param: q for q in pm.params if q.count_param}
+        args, assign = [], []
+        arg_optional: dict[str, bool] = {}
+        counts = []
+        for q in pm.params:
+            x = ident(q.name)
+            if q.function:
+                assign.append(f"{x}: crate::types::{camel(self.function_enum)}({self.fvalues[fn]})")
+                continue
+            qfns = q.ir.get("functions")
+            if qfns is not None and fn not in qfns:
+                continue
+            if q.name in counted:
+                counts.append(q)
+                continue
+            inner = self._inner(q)
+            required = (qfns is not None and fn not in (q.ir.get("optional_for") or [])) or not q.ir.get("optional")
+            arg_optional[q.name] = not required
+            if required:
+                args.append({"name": x, "type": inner})
+                assign.append(f"{x}: Some({x})" if q.optional else x)
+            else:
+                args.append({"name": x, "type": f"Option<{inner}>"})
+                assign.append(x)
+        for q in counts:
+            arr = counted[q.name]
+            a = ident(arr.name)
+            length = f"{a}.as_ref().map_or(0, |a| a.len())" if arg_optional.get(arr.name) else f"{a}.len()"
+            cast = f"{length} as {self.m.elem_type(q.elem)}"
+            assign.append(f"{ident(q.name)}: Some({cast})" if q.optional else f"{ident(q.name)}: {cast}")
+        args = [a for a in args if not a["type"].startswith("Option<")] + [
+            a for a in args if a["type"].startswith("Option<")
+        ]
+        return {"args": args, "assign": assign}
+
+    def _inner(self, q: model.Param) -> str:
+        elem = self.m.elem_type(q.elem)
+        if q.kind == "fixed":
+            return f"[{elem}; {q.count}]"
+        if q.kind in ("counted", "remaining"):
+            return f"crate::bounded::BoundedVec<{elem}, {q.max_count}>"
+        return elem
+
+    def _reply(self, s: dict, f: dict, variants: list[dict], fn: str | None, by_id: dict) -> dict:
+        ids: list[int] = []
+        for v in variants:
+            for r in v["responses"]:
+                w = r["when"] or {}
+                if "function" in w and w["function"] != fn:
+                    continue
+                if r["id"] not in ids:
+                    ids.append(r["id"])
+        if not ids:
+            return {"type": "()", "extract": None}
+        if len(ids) > 1:
+            return {"type": "Option<FieldValue>", "extract": "any"}
+        rf = by_id[ids[0]]
+        module = self.m.set_module(s)
+        rust = camel(rf["name"])
+        return {
+            "type": f"crate::{module}::{rust}",
+            "extract": f"FieldValue::{camel(module)}(crate::{module}::SetField::{rust}(r))",
+        }
+
+
+def _session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
+    """The session corpus cases of the protocol (generator/sessions.py) as Rust literals."""
+    out = []
+    used: set[str] = set()
+    for c in sessions:
+        if c["protocol"] != proto["name"]:
+            continue
+        fn = "session_" + re.sub(r"[^a-z0-9_]", "_", c["name"].lower())
+        while fn in used:
+            fn += "_"
+        used.add(fn)
+        steps = []
+        for st in c["steps"]:
+            if "send" in st:
+                steps.append(
+                    "Step::Send { at: %d, line: %s, bytes: %s }"
+                    % (st["at"], rust_str(st["send"]), _opt(rust_str(st["bytes"]) if st["bytes"] else None))
+                )
+            else:
+                steps.append("Step::Receive { at: %d, hex: %s }" % (st["at"], rust_str(st["receive"])))
+        out.append(
+            {
+                "fn": fn,
+                "name": c["name"],
+                "device": _opt(rust_str(c["device"]) if c["device"] else None),
+                "timeout_ms": c["timeout_ms"],
+                "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
+                "steps": steps,
+                "expect": [rust_str(line) for line in c["expect"]],
+            }
+        )
+    return out
+
+
+# The configure-and-stream example per protocol (examples/configure_and_stream.rs): the device
+# model, the device-information command, one setting written and read back, and the command that
+# starts a data stream (typed command API calls after `device.`).
+_SESSION_EXAMPLES = {
+    "mip": {
+        "model": "cv7_ins",
+        "info": ("device info", "base().get_device_info()"),
+        "setting": "sensor_to_vehicle_euler",
+        "uses": ["std::f32::consts::FRAC_PI_2"],
+        "readme": [
+            "device.threedm().sensor_to_vehicle_euler().write(0.0, 1.5708, 1.5708)?;",
+            "let rotation = device.threedm().sensor_to_vehicle_euler().read()?; // SensorToVehicleEulerResponse",
+        ],
+        "write": "threedm().sensor_to_vehicle_euler().write(0.0, FRAC_PI_2, FRAC_PI_2)",
+        "read": "threedm().sensor_to_vehicle_euler().read()",
+        "stream": "threedm().data_stream_control().write_cv7_ins(0x80, true)",
+    },
+    "mscip": {
+        "model": "ms_imu3020",
+        "info": ("device model", "base().get_device_model()"),
+        "readme": [
+            "device.imu_config().sample_rate().write(10)?;",
+            "let rate = device.imu_config().sample_rate().read()?; // SampleRateResponse",
+        ],
+        "setting": "sample_rate",
+        "write": "imu_config().sample_rate().write(10)",
+        "read": "imu_config().sample_rate().read()",
+        "stream": "imu_config().select_sensors().write(0, crate::bounded::BoundedVec::from_slice("
+        '&[crate::types::SensorCode::SCALED_ACCEL]).ok_or("too many sensors")?)',
+    },
+}
+
+
+def _session_example(m: _Protocol) -> dict | None:
+    """The context of examples/configure_and_stream.rs, or None for a protocol without one."""
+    ex = _SESSION_EXAMPLES.get(m.proto["name"])
+    if ex is None:
+        return None
+    device = next(d for d in m.proto["devices"] if d["id"] == ex["model"])
+    return {
+        "title": device["title"],
+        "model": m.device_variant(ex["model"]),
+        "info_what": ex["info"][0],
+        "info_call": ex["info"][1],
+        "setting": ex["setting"],
+        "uses": ex.get("uses", []),
+        "readme": ex["readme"],
+        "write_call": ex["write"].replace("crate::", m.package + "::"),
+        "read_call": ex["read"],
+        "stream_call": ex["stream"].replace("crate::", m.package + "::"),
+    }
+
+
+def _set_method(module: str) -> str:
+    """The method of `device::Device` that gives a set's typed commands (`device.threedm()`)."""
+    return ident(module + "_set" if module in DEVICE_METHODS else module)
+
+
+def _opt(v) -> str:
+    return "None" if v is None else f"Some({v})"
+
+
 # ---------------------------------------------------------------------------------------- entry points
 _TEMPLATES = [
     ("Cargo.toml.j2", "Cargo.toml"),
@@ -591,6 +1032,9 @@ _TEMPLATES = [
     ("test_vectors.rs.j2", "tests/vectors.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
     ("example_getting_started.rs.j2", "examples/getting_started.rs"),
+    ("commands.rs.j2", "src/commands.rs"),
+    ("command_api.rs.j2", "src/command_api.rs"),
+    ("test_sessions.rs.j2", "tests/sessions.rs"),
 ]
 
 # The runtime (runtime/src/ beside this module) by name in the crate. The command-line tools
@@ -598,9 +1042,22 @@ _TEMPLATES = [
 _RUNTIME_CRATE = "protocodec"
 _RUNTIME = {
     f"src/{name}.rs": f"src/{name}.rs"
-    for name in ("error", "wire", "bounded", "json", "json_read", "parser", "fields", "builder", "samples", "text")
+    for name in (
+        "error",
+        "wire",
+        "bounded",
+        "json",
+        "json_read",
+        "parser",
+        "fields",
+        "builder",
+        "samples",
+        "text",
+        "session",
+        "device",
+    )
 }
-_RUNTIME_TOOLS = [f"src/bin/{_RUNTIME_CRATE}-decode.rs", f"src/bin/{_RUNTIME_CRATE}-encode.rs"]
+_RUNTIME_TOOLS = [f"src/bin/{_RUNTIME_CRATE}-{tool}.rs" for tool in ("decode", "encode", "session")]
 # The checksum half of `crate::framing`, after the constants rendered from framing.rs.j2.
 _RUNTIME_CHECKSUM = "src/framing_checksum.rs"
 
@@ -613,7 +1070,9 @@ def _runtime_files(package: str) -> dict[str, str]:
     return files
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(
+    ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] | None = None
+) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
@@ -627,10 +1086,17 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
         ctx["example"] = _example(proto)
+        ctx.update(_Session(model).context())
+        ctx["session_cases"] = _session_cases(proto, sessions or [])
+        ctx["session_example"] = _session_example(model)
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
         for tpl, out in _TEMPLATES:
             files[root + out] = env.get_template(f"rust/{tpl}").render(**ctx)
+        if ctx["session_example"]:
+            files[root + "examples/configure_and_stream.rs"] = env.get_template(
+                "rust/example_configure_and_stream.rs.j2"
+            ).render(**ctx)
         files[root + "src/framing.rs"] = env.get_template("rust/framing.rs.j2").render(**ctx) + "\n" + checksum
         for path, text in _runtime_files(model.package).items():
             files[root + path] = text
@@ -670,4 +1136,14 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         out["variants"] = ", ".join(
             f"{v['device']}: {module}::{camel(field['name'])}{camel(v['device'])}" for v in field["variants"]
         )
+    if field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (command_api.rs.j2): device.<set>().<command>().<function>(...).
+        call = f"device.{_set_method(model.set_module(set_))}()"
+        functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
+        if len(functions) > 1:
+            out["session"] = f"{call}.{ident(field['name'])}().{{{','.join(ident(fn) for fn in functions)}}}(...)"
+        elif functions:
+            out["session"] = f"{call}.{ident(field['name'])}().{ident(functions[0])}(...)"
+        else:
+            out["session"] = f"{call}.{ident(field['name'])}(...)"
     return out

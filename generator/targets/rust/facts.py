@@ -38,6 +38,9 @@ RESERVED_MODULES = frozenset(
     {
         "bounded",
         "builder",
+        "command_api",
+        "commands",
+        "device",
         "dispatch",
         "error",
         "fields",
@@ -47,12 +50,33 @@ RESERVED_MODULES = frozenset(
         "parser",
         "reserved",
         "samples",
+        "session",
         "text",
         "types",
         "wire",
         "std",
         "core",
         "alloc",
+    }
+)
+
+# Methods of the blocking session API's `device::Device` (runtime/src/device.rs): the typed
+# command API's per-set methods (`device.threedm()`) take another name when a set's would clash.
+DEVICE_METHODS = frozenset(
+    {
+        "new",
+        "with_timeout_ms",
+        "with_check_device",
+        "model",
+        "now_ms",
+        "on_packet",
+        "on_field",
+        "on_event",
+        "run",
+        "call",
+        "listen",
+        "pump",
+        "close",
     }
 )
 

@@ -279,6 +279,150 @@ static void big_sub(big_t *a, const big_t *b) {
     }
 }
 
+#if defined(__SIZEOF_INT128__)
+#define MSCIPC_U128 1
+__extension__ typedef unsigned __int128 mscipc_u128_t;
+
+static mscipc_u128_t big_u128(const big_t *a) {
+    mscipc_u128_t v = 0;
+    int i;
+    for (i = a->n - 1; i >= 0; i--) {
+        v = (v << 32) | a->d[i];
+    }
+    return v;
+}
+
+/* The digit loop of `shortest` below on values that fit in 128 bits (see there). */
+static void shortest_u128(mscipc_u128_t r, mscipc_u128_t s, mscipc_u128_t mp, mscipc_u128_t mm, int even,
+                          char *digits, int *n) {
+    for (;;) {
+        int d = 0;
+        int low;
+        int high;
+        r *= 10;
+        mp *= 10;
+        mm *= 10;
+        while (r >= s) {
+            r -= s;
+            d++;
+        }
+        low = even ? r <= mm : r < mm;
+        high = even ? r + mp >= s : r + mp > s;
+        if (!low && !high) {
+            digits[(*n)++] = (char)('0' + d);
+            continue;
+        }
+        if (low && high) {
+            mscipc_u128_t r2 = r + r; /* 2r against s: which of d, d + 1 is closer */
+            if (r2 > s || (r2 == s && (d & 1))) {
+                d++;
+            }
+        } else if (high) {
+            d++;
+        }
+        digits[(*n)++] = (char)('0' + d);
+        break;
+    }
+    digits[*n] = '\0';
+}
+
+/* The same digit loop in four 64-bit limbs (256 bits) for larger values: s < 2^224 keeps every
+ * value under 20 s < 2^229 (float32 values of every magnitude, doubles within about 1e+/-60). */
+typedef struct {
+    uint64_t d[4]; /* little-endian limbs */
+} w256_t;
+
+static w256_t big_w256(const big_t *a) {
+    w256_t v;
+    int i;
+    memset(&v, 0, sizeof v);
+    for (i = 0; i < a->n; i++) {
+        v.d[i / 2] |= (uint64_t)a->d[i] << (32 * (i % 2));
+    }
+    return v;
+}
+
+static void w256_mul10(w256_t *a) {
+    mscipc_u128_t carry = 0;
+    int i;
+    for (i = 0; i < 4; i++) {
+        mscipc_u128_t t = (mscipc_u128_t)a->d[i] * 10u + carry;
+        a->d[i] = (uint64_t)t;
+        carry = t >> 64;
+    }
+}
+
+static w256_t w256_add(const w256_t *a, const w256_t *b) {
+    w256_t t;
+    uint64_t carry = 0;
+    int i;
+    for (i = 0; i < 4; i++) {
+        uint64_t x = a->d[i] + carry;
+        uint64_t c1 = x < carry;
+        t.d[i] = x + b->d[i];
+        carry = c1 + (t.d[i] < x);
+    }
+    return t;
+}
+
+static int w256_cmp(const w256_t *a, const w256_t *b) {
+    int i;
+    for (i = 3; i >= 0; i--) {
+        if (a->d[i] != b->d[i]) {
+            return a->d[i] < b->d[i] ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+static void w256_sub(w256_t *a, const w256_t *b) {
+    uint64_t borrow = 0;
+    int i;
+    for (i = 0; i < 4; i++) {
+        uint64_t x = a->d[i] - b->d[i];
+        uint64_t b1 = a->d[i] < b->d[i];
+        a->d[i] = x - borrow;
+        borrow = b1 + (x < borrow);
+    }
+}
+
+static void shortest_w256(w256_t r, w256_t s, w256_t mp, w256_t mm, int even, char *digits, int *n) {
+    for (;;) {
+        int d = 0;
+        int low;
+        int high;
+        w256_t t;
+        w256_mul10(&r);
+        w256_mul10(&mp);
+        w256_mul10(&mm);
+        while (w256_cmp(&r, &s) >= 0) {
+            w256_sub(&r, &s);
+            d++;
+        }
+        low = even ? w256_cmp(&r, &mm) <= 0 : w256_cmp(&r, &mm) < 0;
+        t = w256_add(&r, &mp);
+        high = even ? w256_cmp(&t, &s) >= 0 : w256_cmp(&t, &s) > 0;
+        if (!low && !high) {
+            digits[(*n)++] = (char)('0' + d);
+            continue;
+        }
+        if (low && high) {
+            int c;
+            t = w256_add(&r, &r); /* 2r against s: which of d, d + 1 is closer */
+            c = w256_cmp(&t, &s);
+            if (c > 0 || (c == 0 && (d & 1))) {
+                d++;
+            }
+        } else if (high) {
+            d++;
+        }
+        digits[(*n)++] = (char)('0' + d);
+        break;
+    }
+    digits[*n] = '\0';
+}
+#endif
+
 /* Shortest digits of v (finite, > 0), closest to v among the shortest; x = scientific exponent. */
 static void shortest(double v, char *digits, int *n, int *x) {
     uint64_t bits;
@@ -340,6 +484,20 @@ static void shortest(double v, char *digits, int *n, int *x) {
         k++;
     }
     *n = 0;
+#ifdef MSCIPC_U128
+    if (s.n <= 3) {
+        /* r, m+, m- < s < 2^96 from here on, and every value below stays under 20 s < 2^101:
+         * the same steps in native 128-bit integers (most values of everyday magnitude). */
+        shortest_u128(big_u128(&r), big_u128(&s), big_u128(&mp), big_u128(&mm), even, digits, n);
+        *x = k - 1;
+        return;
+    }
+    if (s.n <= 7) {
+        shortest_w256(big_w256(&r), big_w256(&s), big_w256(&mp), big_w256(&mm), even, digits, n);
+        *x = k - 1;
+        return;
+    }
+#endif
     for (;;) {
         int d = 0;
         int low;

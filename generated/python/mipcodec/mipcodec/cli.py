@@ -11,6 +11,8 @@ the process by SIGPIPE, quietly, as the C tools and `cat` do; any other read or 
 (a full disk, an unreadable file, a directory, a closed stdin) is one line on stderr and exit 2,
 never a traceback. Input is read in blocks as it arrives; when stdout is not a regular file, the
 lines of every block are flushed at once (a live stream shows each packet when it arrives).
+Without --device and --samples the lines come from `LineDecoder`, printed in C when the
+accelerator is built (the same text as the pure path, which prints them otherwise).
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from . import registry
 from ._protocol import PACKAGE as PROG
 from .codec import EncodeError
 from .framing import Parser, RawPacket, Skip
-from .packets import encode_line, event_line
+from .packets import LineDecoder, encode_line, event_line
 from .samples import SampleTracker
 
 USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
@@ -150,14 +152,19 @@ def _decode(args: List[str]) -> int:
             text = text[:at] + ',"sample":' + str(placed[0]) + text[at:]
         return text
 
-    def write(events: Iterable[Union[RawPacket, Skip]]) -> None:
-        text = "".join(line(event) + "\n" for event in events)
+    def put(data: bytes) -> None:
         try:
-            out.write(text.encode("ascii"))
+            out.write(data)
             if flush_blocks:
                 out.flush()
         except OSError as e:
             raise _write_failed(e) from None
+
+    def write(events: Iterable[Union[RawPacket, Skip]]) -> None:
+        put("".join(line(event) + "\n" for event in events).encode("ascii"))
+
+    # The plain decode (no device, no sample numbers) prints its lines in C when it can.
+    lines = LineDecoder() if device is None and tracker is None else None
 
     read = getattr(source, "read1", source.read)  # read1: do not wait for a full chunk from a live stream
     try:
@@ -172,8 +179,14 @@ def _decode(args: List[str]) -> int:
                 raise IOFailure(f"cannot read {name}: {_reason(e)}") from None
             if not chunk:
                 break
-            write(parser.feed(chunk))
-        write(parser.flush())
+            if lines is not None:
+                put(lines.feed(chunk))
+            else:
+                write(parser.feed(chunk))
+        if lines is not None:
+            put(lines.flush())
+        else:
+            write(parser.flush())
         try:
             out.flush()
         except OSError as e:

@@ -41,6 +41,11 @@ def test_decode_every_chunking(case):
         events = [e for i in range(0, len(data), size) for e in decoder.feed(data[i : i + size])] + decoder.flush()
         lines = [event_line(e) if isinstance(e, Skip) else e.line() for e in events]
         assert lines == case["expect"], f"{case['where']}: Decoder fed chunks of {size} bytes"
+        if case["device"] is None:  # the decode CLI's loop (in C with the accelerator)
+            text = packets.LineDecoder()
+            out = b"".join(text.feed(data[i : i + size]) for i in range(0, len(data), size)) + text.flush()
+            want = "".join(line + "\n" for line in case["expect"]).encode("ascii")
+            assert out == want, f"{case['where']}: LineDecoder fed chunks of {size} bytes"
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["name"] for c in CASES])

@@ -120,6 +120,21 @@ impl<'a> Fields<'a> {
     }
 }
 
+impl<'a> Fields<'a> {
+    /// Fields of the part `rest` of a payload that starts at payload offset `offset` (at a field
+    /// boundary): the offsets in framing errors count from the payload's start.
+    #[inline]
+    pub const fn at(set: u8, rest: &'a [u8], offset: usize) -> Self {
+        Self { set, rest, offset }
+    }
+
+    /// Payload offset of the next entry.
+    #[inline]
+    pub fn offset(&self) -> usize {
+        self.offset
+    }
+}
+
 impl<'a> Iterator for Fields<'a> {
     type Item = FieldItem<'a>;
 

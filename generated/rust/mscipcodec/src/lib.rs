@@ -5,8 +5,11 @@
 //! continuation packets ([`samples`]), a packet builder
 //! ([`builder::PacketBuilder`]), a field iterator ([`fields::Packet`]), typed values for every
 //! field (one module per descriptor set, [`reserved`], [`types`]) and the canonical JSON writer
-//! ([`json`]). The default `std` feature adds the JSON reader ([`json_read`]), the text helpers
-//! used by the command-line tools ([`text`]) and the tools themselves.
+//! ([`json`]), and the sans-I/O command session ([`session`], with the spec's facts of every
+//! command in [`commands`]). The default `std` feature adds the JSON reader ([`json_read`]), the
+//! text helpers used by the command-line tools ([`text`]), the tools themselves, and the
+//! blocking session API over TCP or (feature `serial`) a serial port ([`device`]) with the typed
+//! command API ([`command_api`]).
 //!
 //! ```
 //! use mscipcodec::builder::PacketBuilder;
@@ -41,6 +44,11 @@
 
 pub mod bounded;
 pub mod builder;
+#[cfg(feature = "std")]
+pub mod command_api;
+pub mod commands;
+#[cfg(feature = "std")]
+pub mod device;
 pub mod dispatch;
 pub mod error;
 pub mod fields;
@@ -51,6 +59,7 @@ pub mod json_read;
 pub mod parser;
 pub mod reserved;
 pub mod samples;
+pub mod session;
 #[cfg(feature = "std")]
 pub mod text;
 pub mod types;

@@ -245,16 +245,36 @@ _fast_decode_packet: Any = None
 
 
 def _program(set_id: int, descriptor: int) -> Any:
-    """For the C accelerator: (class, fast_items) of the first layout of a field, or None."""
+    """For the C accelerator: (class, fast_items, head, keys) of the first layout of a field, or
+    None. head and keys are the canonical JSON around the values (DecodedField.line): the entry up
+    to the values object's brace, and '"name":' per item."""
     classes = registry.lookup(set_id, descriptor)
     if classes is None:
         return None
-    items = fast_items(classes[0])
-    return None if items is None else (classes[0], items)
+    cls = classes[0]
+    items = fast_items(cls)
+    if items is None:
+        return None
+    device = f',"device":"{cls.DEVICE}"' if cls.DEVICE is not None else ""
+    head = '{"descriptor":' + str(descriptor) + ',"name":"' + cls.NAME + '"' + device + ',"values":{'
+    keys = tuple(p.key.encode("ascii") for op in cls._OPS for p in op.params)
+    return (cls, items, head.encode("ascii"), keys)
+
+
+def _field_line(set_id: int, descriptor: int, data: bytes) -> str:
+    """For the C accelerator: the canonical entry of a field it does not print itself."""
+    return decode_field(set_id, descriptor, data).line()
+
+
+def _packet_line(packet: bytes, offset: int) -> str:
+    """For the C accelerator: the canonical line of a packet whose payload does not split into fields."""
+    return _decode_unchecked(packet, offset).line()
 
 
 if _speedups is not None:
-    _speedups.setup(RawPacket, Skip, Packet, DecodedField, _decode_packet_pure, decode_field, _program)
+    _speedups.setup(
+        RawPacket, Skip, Packet, DecodedField, _decode_packet_pure, decode_field, _program, _field_line, _packet_line
+    )
     _fast_decode_packet = _speedups.decode_packet  # the unchecked decode, in C
 
 
@@ -294,6 +314,39 @@ class Decoder(Parser):
         del self._buf[:pos]
         self._base += pos
         return events
+
+
+class LineDecoder(Parser):
+    """A stream parser whose output is the canonical JSON lines (the decode CLI's loop):
+    feed(bytes) -> bytes of complete lines (ASCII, each ending in a newline), flush() at end.
+
+    The lines are those of `event_line` for the events `Parser` gives, whatever the chunking;
+    with the C accelerator they are printed in C (fields it cannot print come from the same
+    Python line writers), without a Python object per packet.
+    """
+
+    # Returns text where Parser returns events.
+    def feed(self, data: BytesLike) -> bytes:  # type: ignore[override]
+        """Consume more input; returns the lines of the events it completes."""
+        self._buf += data
+        return self._lines(False)
+
+    def flush(self) -> bytes:  # type: ignore[override]
+        """End of input: returns the last lines (the trailing skip run among them)."""
+        text = self._lines(True)
+        if self._skip:
+            text += (skip_line(self._skip_at, self._skip) + "\n").encode("ascii")
+            self._skip = bytearray()
+        return text
+
+    def _lines(self, final: bool) -> bytes:
+        if _speedups is None:
+            return "".join(event_line(e) + "\n" for e in self._scan(final)).encode("ascii")
+        text: bytes
+        text, pos, self._skip_at = _speedups.scan_text(self._buf, self._base, self._skip, self._skip_at, final)
+        del self._buf[:pos]
+        self._base += pos
+        return text
 
 
 def decode_all(data: BytesLike, device: Optional[str] = None) -> List[DecodedEvent]:
@@ -616,6 +669,7 @@ __all__ = [
     "Columns",
     "Table",
     "Decoder",
+    "LineDecoder",
     "decode_stream",
     "decode_bytes",
     "event_line",

@@ -579,6 +579,8 @@ class FastExporter:
 
         self.lock = threading.Lock()
         self.layouts: Dict[Any, Optional[Tuple[Layout, List[int]]]] = {}
+        self.pool: Any = None  # the writer threads (concurrent.futures), made on first use
+        self.pending: List[Any] = []  # the writes of the last block
 
     def _layout(self, cls: Any) -> Optional[Tuple[Layout, List[int]]]:
         if cls not in self.layouts:
@@ -651,29 +653,37 @@ class FastExporter:
             for i in keep:
                 cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
             pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
-        # pyarrow formats and writes without the GIL: one table per thread.
-        if len(pieces) > 1 and (os.cpu_count() or 1) > 1:
-            from concurrent.futures import ThreadPoolExecutor
+        # pyarrow formats and writes without the GIL: one table per thread, while the caller
+        # decodes the next block; a block's writes start when the previous block's are done.
+        self.wait()
+        if (os.cpu_count() or 1) > 1:
+            if self.pool is None:
+                from concurrent.futures import ThreadPoolExecutor
 
-            with ThreadPoolExecutor(max_workers=min(len(pieces), os.cpu_count() or 1)) as pool:
-                for done in [pool.submit(self._write, key, parts) for key, parts in pieces.items()]:
-                    done.result()
+                self.pool = ThreadPoolExecutor(max_workers=os.cpu_count() or 1)
+            self.pending = [self.pool.submit(self._write, key, parts) for key, parts in pieces.items()]
         else:
             for key, parts in pieces.items():
                 self._write(key, parts)
 
+    def wait(self) -> None:
+        """Until the writes of the last block are done (their first error raised here)."""
+        pending, self.pending = self.pending, []
+        for done in pending:
+            done.result()
+
     def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
         np, pa = self.np, self.pa
         if kind == "float32":
-            return pa.array(a.astype(np.float32))
+            return _arrow(np, pa, a.astype(np.float32))
         if kind == "enum" and not self.enum_numbers:
             names = _columns.ENUMS.get(enum or "", {})
             return pa.array([names.get(int(v), str(int(v))) for v in a], type=pa.string())
         if kind == "bool":
-            return pa.array(a.astype(bool))
+            return _arrow(np, pa, a.astype(bool))
         if kind in ("int", "bits", "enum") and a.dtype == np.uint64 and (a.size == 0 or a.max() < (1 << 63)):
-            return pa.array(a.astype(np.int64))
-        return pa.array(a)
+            return _arrow(np, pa, a.astype(np.int64))
+        return _arrow(np, pa, a)
 
     def _py_column(self, vals: List[Any], kind: str) -> Any:
         pa = self.pa
@@ -702,7 +712,7 @@ class FastExporter:
             col = chunk[0] if len(chunk) == 1 else pa.concat_arrays([_as_arrow(pa, c) for c in _unify(pa, chunk)])
             col = _as_arrow(pa, col)
             if len(parts) > 1:
-                col = col.take(pa.array(order))
+                col = col.take(_arrow(np, pa, order))
             columns.append(col)
         table = pa.Table.from_arrays(columns, names=headers)
         with self.lock:
@@ -728,6 +738,11 @@ class FastExporter:
         return w
 
     def close(self) -> List[Tuple[str, int]]:
+        try:
+            self.wait()
+        finally:
+            if self.pool is not None:
+                self.pool.shutdown()
         out = []
         for (set_id, cls), w in self.writers.items():
             w.close()
@@ -736,7 +751,22 @@ class FastExporter:
 
 
 def _as_arrow(pa: Any, c: Any) -> Any:
-    return c if isinstance(c, (pa.Array, pa.ChunkedArray)) else pa.array(c)
+    if isinstance(c, (pa.Array, pa.ChunkedArray)):
+        return c
+    np = importlib.import_module("numpy")
+    return _arrow(np, pa, c) if isinstance(c, np.ndarray) else pa.array(c)
+
+
+def _arrow(np: Any, pa: Any, a: Any, valid: Any = None) -> Any:
+    """A one-dimensional numpy array of numbers or bools as an arrow array, sharing its memory;
+    `valid` (bools) marks the non-null entries. (pa.array would do the same but imports pandas,
+    about a second of start-up, on its first call.)"""
+    a = np.ascontiguousarray(a)
+    mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))
+    nulls = 0 if valid is None else int(len(a) - np.count_nonzero(valid))
+    if a.dtype == np.bool_:
+        return pa.Array.from_buffers(pa.bool_(), len(a), [mask, pa.py_buffer(np.packbits(a, bitorder="little"))], nulls)
+    return pa.Array.from_buffers(pa.from_numpy_dtype(a.dtype), len(a), [mask, pa.py_buffer(a)], nulls)
 
 
 def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
@@ -772,7 +802,7 @@ def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
     pos = np.searchsorted(times[0], offsets)
     pos[pos >= len(times[0])] = 0
     hit = times[0][pos] == offsets
-    return pa.array(np.where(hit, times[1][pos], 0.0), mask=~hit)
+    return _arrow(np, pa, np.where(hit, times[1][pos], 0.0), hit)
 
 
 def export(args: argparse.Namespace) -> int:

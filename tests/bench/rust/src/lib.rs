@@ -192,3 +192,91 @@ pub fn decode(data: &[u8]) -> Tally {
     parser.flush(&mut on);
     t
 }
+
+/// Decodes every field of a packet into the tally (the per-packet work of decode).
+#[inline(always)]
+fn decode_packet_fields(t: &mut Tally, packet: &Packet<'_>) {
+    let set = packet.set();
+    for item in packet.fields() {
+        match item {
+            FieldItem::Field { descriptor, data } => {
+                t.fields += 1;
+                match &decode_field(set, descriptor, data, None) {
+                    Ok(value) => {
+                        let value = black_box(value);
+                        t.checksum = t.checksum.wrapping_add(first_float_bits(value));
+                    }
+                    Err(_) => t.errors += 1,
+                }
+            }
+            FieldItem::Trailing { .. } => t.errors += 1,
+        }
+    }
+}
+
+/// Session ingest (issue 20): the stream fed to a command session that has one command (a
+/// ping) pending whose reply never comes, its deadline far away; every packet that is not a
+/// reply goes to a per-packet handler that decodes its fields as `decode` does.
+pub fn session_ingest(data: &[u8]) -> Tally {
+    use mipcodec::base::{Ping, SetField};
+    use mipcodec::session::{Session, SessionEvent, StartOptions};
+    let mut t = Tally::default();
+    let mut session: Session = Session::new(None).with_timeout_ms(u64::MAX / 4);
+    let ping = FieldValue::Base(SetField::Ping(Ping {}));
+    if session.start(&ping, 0, StartOptions::default()).is_err() {
+        t.errors += 1;
+    }
+    let mut on = |event: SessionEvent<'_>| match event {
+        SessionEvent::Packet { packet, .. } => {
+            t.packets += 1;
+            t.packet_bytes += packet.bytes().len() as u64;
+            decode_packet_fields(&mut t, &packet);
+        }
+        SessionEvent::Skip { count, .. } => t.skipped_bytes += count,
+        SessionEvent::Result(_) => t.errors += 1,
+    };
+    session.feed(data, 1, &mut on);
+    session.close(1, &mut on);
+    t
+}
+
+/// Session round trips (issue 20): `n` pings through the blocking API (`Device`, the typed
+/// `device.base().ping()`) over a loopback TCP socket to a responder thread that answers each
+/// ping with its ack. Returns the bytes sent and received.
+pub fn session_roundtrip(n: u64) -> Result<u64, String> {
+    use std::io::{Read, Write};
+    use std::net::{TcpListener, TcpStream};
+
+    use mipcodec::device::{Device, TcpTransport};
+
+    const PING: [u8; 8] = [0x75, 0x65, 0x01, 0x02, 0x02, 0x01, 0xE0, 0xC6];
+    const ACK: [u8; 10] = [0x75, 0x65, 0x01, 0x04, 0x04, 0xF1, 0x01, 0x00, 0xD5, 0x6A];
+    let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| e.to_string())?;
+    let port = listener.local_addr().map_err(|e| e.to_string())?.port();
+    let responder = std::thread::spawn(move || -> Result<(), String> {
+        let (mut conn, _) = listener.accept().map_err(|e| e.to_string())?;
+        let _ = conn.set_nodelay(true);
+        let mut packet = [0u8; 8];
+        for _ in 0..n {
+            conn.read_exact(&mut packet).map_err(|e| e.to_string())?;
+            if packet != PING {
+                return Err(format!("responder: not a ping: {packet:02x?}"));
+            }
+            conn.write_all(&ACK).map_err(|e| e.to_string())?;
+        }
+        Ok(())
+    });
+    let stream = TcpStream::connect(("127.0.0.1", port)).map_err(|e| e.to_string())?;
+    let mut device = Device::new(TcpTransport::new(stream), None);
+    for i in 0..n {
+        device
+            .base()
+            .ping()
+            .map_err(|e| format!("round trip {i}: {e}"))?;
+    }
+    drop(device);
+    responder
+        .join()
+        .map_err(|_| "responder panicked".to_string())??;
+    Ok(n * (PING.len() + ACK.len()) as u64)
+}

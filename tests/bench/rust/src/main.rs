@@ -2,8 +2,10 @@
 //! (written by `tests/bench/streams.py`; all four unless STREAMs are named), checks the counts
 //! of every pass against the sidecars and prints one line per stream and mode for
 //! `tests/bench/run.py`:
-//!   BENCH lang=rust stream=NAME mode=frame|decode packets=N bytes=B seconds=BEST
-//! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream.
+//!   BENCH lang=rust stream=NAME mode=frame|decode|session-ingest packets=N bytes=B seconds=BEST
+//! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream, then
+//!   BENCH lang=rust stream=loopback-tcp mode=session-roundtrip packets=N bytes=B seconds=BEST
+//! for N ping round trips through the blocking session API over loopback TCP.
 //! Exits non-zero if a stream is missing or a count does not match.
 
 use std::hint::black_box;
@@ -11,7 +13,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use mipcodec_bench::{decode, frame, Stream, Tally, STREAMS};
+use mipcodec_bench::{decode, frame, session_ingest, session_roundtrip, Stream, Tally, STREAMS};
+
+/// Ping round trips of one session-roundtrip pass.
+const ROUND_TRIPS: u64 = 2000;
 
 fn best_of(
     passes: u32,
@@ -45,7 +50,10 @@ fn run() -> Result<(), String> {
         None => 5,
     };
     let only: Vec<String> = args.collect();
-    if let Some(bad) = only.iter().find(|n| !STREAMS.contains(&n.as_str())) {
+    if let Some(bad) = only
+        .iter()
+        .find(|n| !STREAMS.contains(&n.as_str()) && n.as_str() != "loopback-tcp")
+    {
         return Err(format!(
             "unknown stream {bad} (streams: {})",
             STREAMS.join(", ")
@@ -62,6 +70,7 @@ fn run() -> Result<(), String> {
         for (mode, work, is_decode) in [
             ("frame", frame as fn(&[u8]) -> Tally, false),
             ("decode", decode, true),
+            ("session-ingest", session_ingest, true),
         ] {
             let (secs, t) = best_of(passes, &stream, work, is_decode)?;
             println!(
@@ -76,6 +85,22 @@ fn run() -> Result<(), String> {
                 t.checksum
             );
         }
+    }
+    if only.is_empty() || only.iter().any(|n| n == "loopback-tcp") {
+        let mut best = f64::INFINITY;
+        let mut bytes = 0;
+        for _ in 0..passes {
+            let start = Instant::now();
+            bytes = session_roundtrip(ROUND_TRIPS)?;
+            best = best.min(start.elapsed().as_secs_f64());
+        }
+        println!(
+            "BENCH lang=rust stream=loopback-tcp mode=session-roundtrip packets={ROUND_TRIPS} bytes={bytes} seconds={best:.6}"
+        );
+        eprintln!(
+            "rust loopback-tcp session-roundtrip {:8.1} us per round trip",
+            best / ROUND_TRIPS as f64 * 1e6
+        );
     }
     Ok(())
 }

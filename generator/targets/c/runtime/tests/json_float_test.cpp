@@ -105,6 +105,17 @@ TEST(JsonFloat, RandomDoubles) {
     }
 }
 
+// Doubles of everyday magnitude (about 1e-15 to 1e24), where the digit loop runs in native
+// 128-bit integers when the compiler has them; the other tests reach the multi-limb path too.
+TEST(JsonFloat, RandomEverydayDoubles) {
+    std::mt19937_64 rng(20261126);
+    for (int i = 0; i < 200000; i++) {
+        uint64_t exponent = 1023 - 50 + rng() % 131;
+        double v = from_bits((exponent << 52) | (rng() & 0xFFFFFFFFFFFFFull));
+        ASSERT_NO_FATAL_FAILURE(check(v)) << "value " << v;
+    }
+}
+
 TEST(JsonFloat, EveryExponentEdges) {
     for (uint64_t e = 0; e < 0x7FF; e++) {
         for (uint64_t m :

@@ -91,6 +91,40 @@ def test_accelerated_paths_match_the_pure_path():
                 assert [type(v) for v in g.values()] == [type(v) for v in e.values()]
 
 
+def _pure_lines(data):
+    """The canonical lines by the pure-Python parser loop and line writers (the reference)."""
+    parser = Parser()
+    parser._scan = parser._scan_pure
+    events = parser.feed(data) + parser.flush()
+    return "".join(
+        (packets._decode_packet_pure(e.data, e.offset).line() if isinstance(e, RawPacket) else packets.event_line(e))
+        + "\n"
+        for e in events
+    ).encode("ascii")
+
+
+def test_line_decoder_prints_the_canonical_lines_in_any_chunking():
+    # LineDecoder (the decode CLI's loop; in C when the accelerator is built) against the pure
+    # path: every fixed layout with NaN floats, invalid bools, unknown enums, strings with bytes to
+    # escape, fields one byte short or long, slow layouts, trailing payload bytes, garbage and a
+    # cut packet at the end; fed whole, in 5-byte and in 1-byte chunks.
+    fills = b""
+    for (set_id, descriptor), classes in registry.FIELDS.items():
+        items = c.fast_items(classes[0])
+        if items is None:
+            continue
+        for fill in (0x00, 0x01, 0xFF, 0x22, 0x5C, 0x7F, "random"):
+            full = _layout_data(items, fill)
+            for data in (full, full[:-1], full + b"\x00"):
+                fills += b"\x55" + PacketBuilder(set_id).add_field(descriptor, data).build()
+    for data in [_stream(seed) for seed in range(5)] + [fills, b"", SYNC, b"\x00" * 3]:
+        want = _pure_lines(data)
+        for size in (len(data) or 1, 5, 1):
+            decoder = packets.LineDecoder()
+            got = b"".join(decoder.feed(data[i : i + size]) for i in range(0, len(data), size)) + decoder.flush()
+            assert got == want, size
+
+
 def test_events_and_packets_copy_and_pickle():
     # RawPacket, Skip, Packet and DecodedField keep their attributes in C base classes when the
     # accelerator is built: copying and pickling must still carry them.

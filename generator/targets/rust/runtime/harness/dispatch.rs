@@ -1,5 +1,6 @@
 //! Stand-in for the generated `dispatch` module (templates/rust/dispatch.rs.j2), for the tiny
-//! protocol of harness/framing.rs: one device, a command set 0x01 without fields, and data set
+//! protocol of harness/framing.rs: one device, a command set 0x01 with `ping` (descriptor 0x01,
+//! no parameters) and the reserved `ack` (descriptor 0xF1: `echo`, `code`, two u8), and data set
 //! 0x80 with one field, `counter` (descriptor 0x01: `count`, a u16). Just the API that the
 //! runtime's `text` module, the command-line tools and the tests use; the JSON of packets, skip
 //! runs and raw fields is written as the generated module writes it.
@@ -15,6 +16,12 @@ use crate::wire::{Reader, Wire, Writer};
 pub const DATA_SET: u8 = 0x80;
 /// Descriptor of `counter` in [`DATA_SET`].
 pub const COUNTER: u8 = 0x01;
+/// The command set.
+pub const COMMAND_SET: u8 = 0x01;
+/// Descriptor of `ping` in [`COMMAND_SET`].
+pub const PING: u8 = 0x01;
+/// Descriptor of the reserved `ack` field.
+pub const ACK: u8 = 0xF1;
 
 /// A device of the protocol.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -50,32 +57,57 @@ pub fn set_defined(set: u8) -> bool {
 pub enum FieldValue {
     /// `counter` of set 0x80.
     Counter(u16),
+    /// `ping` of set 0x01 (a command).
+    Ping,
+    /// `ack` (reserved): the echoed command descriptor and the code.
+    Ack(u8, u8),
 }
 
 impl FieldValue {
     /// Field descriptor.
     pub fn descriptor(&self) -> u8 {
-        COUNTER
+        match self {
+            FieldValue::Counter(_) => COUNTER,
+            FieldValue::Ping => PING,
+            FieldValue::Ack(..) => ACK,
+        }
     }
 
     /// Field name as printed in JSON.
     pub fn name(&self) -> &'static str {
-        "counter"
+        match self {
+            FieldValue::Counter(_) => "counter",
+            FieldValue::Ping => "ping",
+            FieldValue::Ack(..) => "ack",
+        }
     }
 
     /// Encodes the field data (without the field header).
     pub fn encode_data(&self, w: &mut Writer<'_>) -> Result<(), EncodeError> {
-        let FieldValue::Counter(count) = self;
-        count.encode(w)
+        match self {
+            FieldValue::Counter(count) => count.encode(w),
+            FieldValue::Ping => Ok(()),
+            FieldValue::Ack(echo, code) => {
+                echo.encode(w)?;
+                code.encode(w)
+            }
+        }
     }
 
     /// Writes the canonical JSON of the field: descriptor, name and values.
     pub fn write_json(&self, w: &mut dyn Write) -> fmt::Result {
-        let FieldValue::Counter(count) = self;
         write!(w, "{{\"descriptor\":{},\"name\":", self.descriptor())?;
         json::write_str(w, self.name())?;
-        w.write_str(",\"values\":{\"count\":")?;
-        count.write_json(w)?;
+        match self {
+            FieldValue::Counter(count) => {
+                w.write_str(",\"values\":{\"count\":")?;
+                count.write_json(w)?;
+            }
+            FieldValue::Ping => w.write_str(",\"values\":{")?,
+            FieldValue::Ack(echo, code) => {
+                write!(w, ",\"values\":{{\"echo\":{echo},\"code\":{code}")?;
+            }
+        }
         w.write_str("}}")
     }
 
@@ -89,6 +121,17 @@ impl FieldValue {
     ) -> Result<Self, crate::json_read::JsonError> {
         use crate::json_read::{FromJson, JsonError, Obj};
         let _ = device;
+        if (set, descriptor) == (COMMAND_SET, PING) {
+            Obj::new(values, &[])?;
+            return Ok(FieldValue::Ping);
+        }
+        if (set, descriptor) == (COMMAND_SET, ACK) {
+            let o = Obj::new(values, &["echo", "code"])?;
+            return Ok(FieldValue::Ack(
+                o.req("echo", u8::from_json)?,
+                o.req("code", u8::from_json)?,
+            ));
+        }
         if (set, descriptor) != (DATA_SET, COUNTER) {
             return Err(JsonError::new(std::format!(
                 "descriptor {descriptor} is not defined in set {set}; write the field raw, with \"data\""
@@ -113,6 +156,17 @@ pub fn decode_field(
         let count = u16::decode(&mut r).map_err(|e| e.at("count"))?;
         r.finish()?;
         return Ok(FieldValue::Counter(count));
+    }
+    if (set, descriptor) == (COMMAND_SET, PING) {
+        Reader::new(data).finish()?;
+        return Ok(FieldValue::Ping);
+    }
+    if (set, descriptor) == (COMMAND_SET, ACK) {
+        let mut r = Reader::new(data);
+        let echo = u8::decode(&mut r).map_err(|e| e.at("echo"))?;
+        let code = u8::decode(&mut r).map_err(|e| e.at("code"))?;
+        r.finish()?;
+        return Ok(FieldValue::Ack(echo, code));
     }
     Err(DecodeError::new(if set_defined(set) {
         DecodeErrorKind::UnknownDescriptor

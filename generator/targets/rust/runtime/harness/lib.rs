@@ -9,6 +9,10 @@
 pub mod bounded;
 #[path = "../src/builder.rs"]
 pub mod builder;
+pub mod commands;
+#[cfg(feature = "std")]
+#[path = "../src/device.rs"]
+pub mod device;
 pub mod dispatch;
 #[path = "../src/error.rs"]
 pub mod error;
@@ -24,6 +28,8 @@ pub mod json_read;
 pub mod parser;
 #[path = "../src/samples.rs"]
 pub mod samples;
+#[path = "../src/session.rs"]
+pub mod session;
 #[cfg(feature = "std")]
 #[path = "../src/text.rs"]
 pub mod text;

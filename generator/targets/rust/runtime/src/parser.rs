@@ -119,6 +119,27 @@ impl Parser {
         }
     }
 
+    /// Bytes buffered for a candidate packet that waits for more input (0: none).
+    pub fn waiting(&self) -> usize {
+        self.len
+    }
+
+    /// Stream offset of the first buffered byte: the position the parser waits at when
+    /// [`Parser::waiting`] is not 0.
+    pub fn waiting_at(&self) -> u64 {
+        self.base
+    }
+
+    /// The timed inter-packet rule (`docs/conformance.md` §8): the first buffered byte is skipped
+    /// as a false sync and the search resumes at the next byte, with no new input. Calls `on`
+    /// for every event that completes. Nothing happens when nothing is buffered.
+    pub fn drop_waiting<F: FnMut(Event<'_>)>(&mut self, mut on: F) {
+        if self.len > 0 {
+            self.skip(1);
+            self.process(&mut on, false);
+        }
+    }
+
     /// Feeds `data`; calls `on` for every event it completes.
     ///
     /// Packets that lie wholly inside `data` are checked and reported in place (their bytes

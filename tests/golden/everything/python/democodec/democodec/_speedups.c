@@ -6,7 +6,10 @@
  *   - decode_packet() / decode_all(): field splitting and dispatch by (set, descriptor), with the
  *     typed values of layouts made of fixed-size scalars (codec.Run of ints, floats, bools, chars,
  *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
- *     back to the pure-Python decoder, so messages and values are those of the pure path.
+ *     back to the pure-Python decoder, so messages and values are those of the pure path;
+ *   - scan_text(): the decode CLI's loop, parser + decode + canonical JSON lines written here for
+ *     the same fixed layouts (floats by PyOS_double_to_string 'r', i.e. repr); every other field,
+ *     NaN or invalid bool is printed by the pure-Python line writer, so the text is the same.
  * The objects it returns are instances of the package's own classes (RawPacket, Skip, Packet,
  * DecodedField and the generated dataclasses), equal to what the pure path returns. The protocol's
  * constants come from _protocol.h, generated from the IR like _protocol.py.
@@ -96,7 +99,9 @@ static int ready_base(PyTypeObject *tp, const char *name, PyMemberDef *members) 
 static PyTypeObject *raw_packet_type, *skip_type, *packet_type, *decoded_type;
 static PyObject *py_decode_packet; /* pure decode_packet(packet, offset, device) */
 static PyObject *py_decode_field;  /* decode_field(set, descriptor, data) */
-static PyObject *py_program;       /* program(set, descriptor) -> None or (cls, items) */
+static PyObject *py_program;       /* program(set, descriptor) -> None or (cls, items, head, keys) */
+static PyObject *py_field_line;    /* field_line(set, descriptor, data) -> str: the canonical entry */
+static PyObject *py_packet_line;   /* packet_line(packet, offset) -> str: the canonical packet line */
 
 static PyObject *new3(PyTypeObject *tp, PyObject *a, PyObject *b, PyObject *c) {
     /* Steals a, b, c (which may be NULL on error: then returns NULL). */
@@ -198,7 +203,16 @@ static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject 
 typedef struct Columns Columns;
 static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
 
-enum { SCAN_RAW, SCAN_DECODE, SCAN_COLUMNS };
+/* A growing text buffer (the lines of scan_text). */
+typedef struct {
+    char *p;
+    Py_ssize_t len, cap;
+} Text;
+
+static int text_packet(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
+static int text_skip(Text *t, SkipRun *s);
+
+enum { SCAN_RAW, SCAN_DECODE, SCAN_COLUMNS, SCAN_TEXT };
 
 /* What scan() reports beside the events for the session (session.py): the indexes in events of
  * the packets whose set byte is flagged in mask[256] (sets with a pending command), and the number
@@ -210,10 +224,11 @@ typedef struct {
 } Watch;
 
 /* The parser loop of framing.Parser._scan over p[0:n] (stream offset `base`). A packet becomes
- * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), or rows of `columns` (SCAN_COLUMNS);
- * Skip events go to `events`. Returns the number of bytes consumed, or -1 with an exception set. */
+ * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), rows of `ctx` (SCAN_COLUMNS, a
+ * Columns) or its canonical line in `ctx` (SCAN_TEXT, a Text, skip runs too); Skip events go to
+ * `events`. Returns the number of bytes consumed, or -1 with an exception set. */
 static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode,
-                            Columns *columns, SkipRun *skip, PyObject *events, Watch *watch) {
+                            void *ctx, SkipRun *skip, PyObject *events, Watch *watch) {
     Py_ssize_t pos = 0;
     while (pos < n) {
         Py_ssize_t i = find_sync(p, pos, n);
@@ -247,11 +262,18 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
             Py_ssize_t total = body + CHECKSUM_SIZE;
             if (n - i >= total) {
                 if (checksum_ok(p + i, body)) {
+                    if (mode == SCAN_TEXT) {
+                        if (text_skip(ctx, skip) < 0 || text_packet(ctx, p + i, total, base + i) < 0) {
+                            return -1;
+                        }
+                        pos = i + total;
+                        continue;
+                    }
                     if (flush_skip(skip, events) < 0) {
                         return -1;
                     }
                     if (mode == SCAN_COLUMNS) {
-                        if (column_packet(columns, p + i, total, base + i) < 0) {
+                        if (column_packet(ctx, p + i, total, base + i) < 0) {
                             return -1;
                         }
                         pos = i + total;
@@ -400,6 +422,7 @@ typedef struct {
     int count;      /* -1: scalar */
     PyObject *aux;  /* owned */
     PyObject *attr; /* owned, interned attribute name */
+    PyObject *key;  /* owned bytes: '"name":' of the canonical JSON */
 } Item;
 
 typedef enum { ENTRY_SLOW = 1, ENTRY_FAST = 2 } EntryKind;
@@ -407,6 +430,7 @@ typedef enum { ENTRY_SLOW = 1, ENTRY_FAST = 2 } EntryKind;
 typedef struct {
     EntryKind kind;
     PyObject *cls;   /* owned */
+    PyObject *head;  /* owned bytes: '{"descriptor":D,"name":"N",["device":"X",]"values":{' */
     Py_ssize_t size; /* data bytes */
     int nitems;
     Item items[];
@@ -576,12 +600,17 @@ static Entry *entry_for(int set_id, int descriptor) {
         }
         e->kind = ENTRY_SLOW;
     } else {
-        PyObject *cls, *items;
-        if (!PyArg_ParseTuple(prog, "OO!", &cls, &PyTuple_Type, &items)) {
+        PyObject *cls, *items, *head, *keys;
+        if (!PyArg_ParseTuple(prog, "OO!SO!", &cls, &PyTuple_Type, &items, &head, &PyTuple_Type, &keys)) {
             Py_DECREF(prog);
             return NULL;
         }
         Py_ssize_t n = PyTuple_GET_SIZE(items);
+        if (PyTuple_GET_SIZE(keys) != n) {
+            Py_DECREF(prog);
+            PyErr_SetString(PyExc_SystemError, "program(): one key per item expected");
+            return NULL;
+        }
         e = PyMem_Calloc(1, sizeof(Entry) + (size_t)n * sizeof(Item));
         if (e == NULL) {
             Py_DECREF(prog);
@@ -590,6 +619,7 @@ static Entry *entry_for(int set_id, int descriptor) {
         }
         e->kind = ENTRY_FAST;
         e->cls = Py_NewRef(cls);
+        e->head = Py_NewRef(head);
         e->nitems = (int)n;
         for (Py_ssize_t k = 0; k < n; k++) {
             Item *it = &e->items[k];
@@ -601,6 +631,13 @@ static Entry *entry_for(int set_id, int descriptor) {
                 return NULL; /* the half-built entry leaks, once, on a programming error */
             }
             it->kind = kind[0];
+            it->key = PyTuple_GET_ITEM(keys, k);
+            if (!PyBytes_Check(it->key)) {
+                Py_DECREF(prog);
+                PyErr_SetString(PyExc_SystemError, "program(): keys must be bytes");
+                return NULL;
+            }
+            Py_INCREF(it->key);
             it->attr = Py_NewRef(attr);
             PyUnicode_InternInPlace(&it->attr);
             it->aux = Py_NewRef(aux);
@@ -1072,12 +1109,334 @@ static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     return result;
 }
 
-/* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program) */
+/* ------------------------------------------------------------------------------ text */
+/* scan_text: the canonical JSON lines of docs/conformance.md section 4, written here for the
+ * fields of fast entries; any other field entry (slow layout, size mismatch, NaN, invalid bool)
+ * is the pure-Python line of that entry, a packet that does not split into fields the pure-Python
+ * line of the packet. The text is ASCII. */
+static int text_reserve(Text *t, Py_ssize_t more) {
+    if (t->len + more <= t->cap) {
+        return 0;
+    }
+    Py_ssize_t cap = t->cap ? t->cap : 1 << 16;
+    while (cap < t->len + more) {
+        cap *= 2;
+    }
+    char *p = PyMem_Realloc(t->p, (size_t)cap);
+    if (p == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    t->p = p;
+    t->cap = cap;
+    return 0;
+}
+
+static int text_put(Text *t, const char *s, Py_ssize_t n) {
+    if (text_reserve(t, n) < 0) {
+        return -1;
+    }
+    memcpy(t->p + t->len, s, (size_t)n);
+    t->len += n;
+    return 0;
+}
+
+/* Decimal digits of v into the buffer (room reserved by the caller). */
+static void text_u64(Text *t, unsigned long long v) {
+    char d[20];
+    int k = 0;
+    do {
+        d[k++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    while (k) {
+        t->p[t->len++] = d[--k];
+    }
+}
+
+static void text_i64(Text *t, long long v) {
+    if (v < 0) {
+        t->p[t->len++] = '-';
+        text_u64(t, 0ULL - (unsigned long long)v);
+    } else {
+        text_u64(t, (unsigned long long)v);
+    }
+}
+
+/* A finite double as repr(float) prints it; the infinities as the canonical strings. */
+static int text_double(Text *t, double d) {
+    if (d == Py_HUGE_VAL) {
+        return text_put(t, "\"inf\"", 5);
+    }
+    if (d == -Py_HUGE_VAL) {
+        return text_put(t, "\"-inf\"", 6);
+    }
+    char *s = PyOS_double_to_string(d, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    if (s == NULL) {
+        return -1;
+    }
+    int rc = text_put(t, s, (Py_ssize_t)strlen(s));
+    PyMem_Free(s);
+    return rc;
+}
+
+/* canonical.string_text: byte b is U+00bb; ", \ and bytes outside 0x20..0x7e escaped. */
+static int text_string(Text *t, const unsigned char *p, Py_ssize_t n) {
+    if (text_reserve(t, 6 * n + 2) < 0) {
+        return -1;
+    }
+    static const char hex[] = "0123456789abcdef";
+    char *o = t->p + t->len;
+    *o++ = '"';
+    for (Py_ssize_t k = 0; k < n; k++) {
+        unsigned char b = p[k];
+        if (b == '"' || b == '\\') {
+            *o++ = '\\';
+            *o++ = (char)b;
+        } else if (b < 0x20 || b >= 0x7F) {
+            memcpy(o, "\\u00", 4);
+            o[4] = hex[b >> 4];
+            o[5] = hex[b & 15];
+            o += 6;
+        } else {
+            *o++ = (char)b;
+        }
+    }
+    *o++ = '"';
+    t->len = o - t->p;
+    return 0;
+}
+
+#define TEXT_NOT_FAST 1
+
+/* One element; 0, TEXT_NOT_FAST (a NaN or an invalid bool), or -1 with an exception. */
+static int text_element(Text *t, const Item *it, const unsigned char *p) {
+    if (text_reserve(t, 24) < 0) {
+        return -1;
+    }
+    switch (it->kind) {
+    case 'f': {
+        unsigned int bits = load32(p);
+        float f;
+        memcpy(&f, &bits, 4);
+        return f != f ? TEXT_NOT_FAST : text_double(t, (double)f);
+    }
+    case 'd': {
+        unsigned long long bits = load(p, 8);
+        double d;
+        memcpy(&d, &bits, 8);
+        return d != d ? TEXT_NOT_FAST : text_double(t, d);
+    }
+    case 'u':
+    case 'e':
+    case 'F':
+        text_u64(t, load(p, it->size));
+        return 0;
+    case 'i': {
+        unsigned long long v = load(p, it->size);
+        int shift = 64 - 8 * it->size;
+        text_i64(t, shift ? (long long)(v << shift) >> shift : (long long)v);
+        return 0;
+    }
+    case '?':
+        if (p[0] > 1) {
+            return TEXT_NOT_FAST;
+        }
+        return p[0] ? text_put(t, "true", 4) : text_put(t, "false", 5);
+    case 'c':
+    case 's':
+        return text_string(t, p, it->size);
+    default:
+        PyErr_Format(PyExc_SystemError, "bad item kind %c", it->kind);
+        return -1;
+    }
+}
+
+/* The entry of a fast field; 0, TEXT_NOT_FAST, or -1 with an exception. */
+static int text_fast_field(Text *t, const Entry *e, const unsigned char *p) {
+    if (text_put(t, PyBytes_AS_STRING(e->head), PyBytes_GET_SIZE(e->head)) < 0) {
+        return -1;
+    }
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        if ((k && text_put(t, ",", 1) < 0) ||
+            text_put(t, PyBytes_AS_STRING(it->key), PyBytes_GET_SIZE(it->key)) < 0) {
+            return -1;
+        }
+        if (it->count < 0) {
+            int rc = text_element(t, it, p);
+            if (rc) {
+                return rc;
+            }
+            p += it->size;
+            continue;
+        }
+        if (text_put(t, "[", 1) < 0) {
+            return -1;
+        }
+        for (int j = 0; j < it->count; j++) {
+            int rc = (j && text_put(t, ",", 1) < 0) ? -1 : text_element(t, it, p);
+            if (rc) {
+                return rc;
+            }
+            p += it->size;
+        }
+        if (text_put(t, "]", 1) < 0) {
+            return -1;
+        }
+    }
+    return text_put(t, "}}", 2);
+}
+
+/* Appends the str a Python line writer returned (stolen); -1 with an exception. */
+static int text_str(Text *t, PyObject *s) {
+    if (s == NULL) {
+        return -1;
+    }
+    Py_ssize_t n;
+    const char *u = PyUnicode_Check(s) ? PyUnicode_AsUTF8AndSize(s, &n) : NULL;
+    if (u == NULL) {
+        if (!PyErr_Occurred()) {
+            PyErr_SetString(PyExc_TypeError, "a line writer returned no str");
+        }
+        Py_DECREF(s);
+        return -1;
+    }
+    int rc = text_put(t, u, n);
+    Py_DECREF(s);
+    return rc;
+}
+
+static int text_packet(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset) {
+    int set_id = p[SET_OFFSET];
+    const unsigned char *pl = p + HEADER_SIZE;
+    Py_ssize_t len = n - HEADER_SIZE - CHECKSUM_SIZE;
+    for (Py_ssize_t o = 0; o < len;) {
+        int bad = len - o < FIELD_HEADER_SIZE;
+        if (!bad) {
+            int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+            int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+            bad = data_length < 0 || FIELD_HEADER_SIZE + data_length > len - o;
+            o += FIELD_HEADER_SIZE + (data_length < 0 ? 0 : data_length);
+        }
+        if (bad) { /* a payload that does not split into fields: the pure-Python line */
+            if (text_str(t, PyObject_CallFunction(py_packet_line, "y#n", (const char *)p, n, offset)) < 0) {
+                return -1;
+            }
+            return text_put(t, "\n", 1);
+        }
+    }
+    if (text_reserve(t, 64) < 0) {
+        return -1;
+    }
+    memcpy(t->p + t->len, "{\"offset\":", 10);
+    t->len += 10;
+    text_i64(t, (long long)offset);
+    memcpy(t->p + t->len, ",\"set\":", 7);
+    t->len += 7;
+    text_u64(t, (unsigned long long)set_id);
+    memcpy(t->p + t->len, ",\"fields\":[", 11);
+    t->len += 11;
+    for (Py_ssize_t o = 0, k = 0; o < len; k++) {
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        Py_ssize_t data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        const unsigned char *data = pl + o + FIELD_HEADER_SIZE;
+        o += FIELD_HEADER_SIZE + data_length;
+        Entry *e = entry_for(set_id, descriptor);
+        if (e == NULL || (k && text_put(t, ",", 1) < 0)) {
+            return -1;
+        }
+        Py_ssize_t mark = t->len;
+        if (e->kind == ENTRY_FAST && e->size == data_length) {
+            int rc = text_fast_field(t, e, data);
+            if (rc < 0) {
+                return -1;
+            }
+            if (rc == 0) {
+                continue;
+            }
+            t->len = mark; /* a NaN or an invalid bool: the pure-Python entry */
+        }
+        if (text_str(t, PyObject_CallFunction(py_field_line, "iiy#", set_id, descriptor, (const char *)data,
+                                              data_length)) < 0) {
+            return -1;
+        }
+    }
+    return text_put(t, "]}\n", 3);
+}
+
+/* The line of the pending skip run, if any, and the run emptied. */
+static int text_skip(Text *t, SkipRun *s) {
+    Py_ssize_t have = PyByteArray_GET_SIZE(s->bytes);
+    if (have == 0) {
+        return 0;
+    }
+    static const char hex[] = "0123456789abcdef";
+    const unsigned char *b = (const unsigned char *)PyByteArray_AS_STRING(s->bytes);
+    if (text_reserve(t, 2 * have + 48) < 0) {
+        return -1;
+    }
+    memcpy(t->p + t->len, "{\"offset\":", 10);
+    t->len += 10;
+    text_i64(t, (long long)s->at);
+    memcpy(t->p + t->len, ",\"skipped\":\"", 12);
+    t->len += 12;
+    for (Py_ssize_t k = 0; k < have; k++) {
+        t->p[t->len++] = hex[b[k] >> 4];
+        t->p[t->len++] = hex[b[k] & 15];
+    }
+    memcpy(t->p + t->len, "\"}\n", 3);
+    t->len += 3;
+    return PyByteArray_Resize(s->bytes, 0);
+}
+
+/* scan_text(buf: bytearray, base: int, skip: bytearray, skip_at: int, final: bool)
+ *   -> (text: bytes, consumed, skip_at): the canonical lines of the packets (and the skip runs
+ * before them) that scan() would return as events; a skip run still open stays in `skip`. */
+static PyObject *scan_text(PyObject *self, PyObject *args) {
+    (void)self;
+    if (packet_type == NULL || py_field_line == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        return NULL;
+    }
+    PyObject *buf;
+    Py_ssize_t base;
+    SkipRun skip;
+    int final;
+    if (!PyArg_ParseTuple(args, "O!nO!np", &PyByteArray_Type, &buf, &base, &PyByteArray_Type, &skip.bytes,
+                          &skip.at, &final)) {
+        return NULL;
+    }
+    /* The fallbacks run Python code: work on a private copy of the buffer. */
+    PyObject *copy = PyBytes_FromStringAndSize(PyByteArray_AS_STRING(buf), PyByteArray_GET_SIZE(buf));
+    if (copy == NULL) {
+        return NULL;
+    }
+    Text t = {NULL, 0, 0};
+    PyObject *events = PyList_New(0); /* stays empty: skip runs are written as text */
+    PyObject *result = NULL;
+    if (events != NULL) {
+        int gc = gc_pause();
+        Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy),
+                                   base, final, SCAN_TEXT, &t, &skip, events, NULL);
+        gc_resume(gc);
+        if (pos >= 0) {
+            result = Py_BuildValue("y#nn", t.p ? t.p : "", t.len, pos, skip.at);
+        }
+    }
+    Py_XDECREF(events);
+    Py_DECREF(copy);
+    PyMem_Free(t.p);
+    return result;
+}
+
+/* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program, field_line,
+ *       packet_line) */
 static PyObject *setup(PyObject *self, PyObject *args) {
     (void)self;
-    PyObject *t[4], *f[3];
-    if (!PyArg_ParseTuple(args, "O!O!O!O!OOO", &PyType_Type, &t[0], &PyType_Type, &t[1], &PyType_Type, &t[2],
-                          &PyType_Type, &t[3], &f[0], &f[1], &f[2])) {
+    PyObject *t[4], *f[5];
+    if (!PyArg_ParseTuple(args, "O!O!O!O!OOOOO", &PyType_Type, &t[0], &PyType_Type, &t[1], &PyType_Type,
+                          &t[2], &PyType_Type, &t[3], &f[0], &f[1], &f[2], &f[3], &f[4])) {
         return NULL;
     }
     PyTypeObject *bases[4] = {&EventBase, &EventBase, &PacketBase, &DecodedFieldBase};
@@ -1096,6 +1455,8 @@ static PyObject *setup(PyObject *self, PyObject *args) {
     py_decode_packet = Py_NewRef(f[0]);
     py_decode_field = Py_NewRef(f[1]);
     py_program = Py_NewRef(f[2]);
+    py_field_line = Py_NewRef(f[3]);
+    py_packet_line = Py_NewRef(f[4]);
     Py_RETURN_NONE;
 }
 
@@ -1108,6 +1469,8 @@ static PyMethodDef methods[] = {
      "decode_all(data): every event of a complete stream, packets decoded."},
     {"decode_columns", decode_columns, METH_O,
      "decode_columns(data): a complete stream as per-field tables."},
+    {"scan_text", scan_text, METH_VARARGS,
+     "scan_text(buf, base, skip, skip_at, final): the parser loop printing canonical JSON lines."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -8,7 +8,7 @@ use std::io::Read;
 use std::process::ExitCode;
 
 use democodec::builder::PacketBuilder;
-use democodec::commands::Ping;
+use democodec::commands_set::Ping;
 use democodec::fields::{FieldItem, Packet};
 use democodec::parser::{Event, Parser};
 

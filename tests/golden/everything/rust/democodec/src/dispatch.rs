@@ -78,7 +78,7 @@ pub fn set_defined(set: u8) -> bool {
 #[repr(u8)]
 pub enum FieldValue {
     /// A field of set 0x01.
-    Commands(crate::commands::SetField),
+    CommandsSet(crate::commands_set::SetField),
     /// A field of set 0x90.
     Data(crate::data::SetField),
     /// A field of set 0x91.
@@ -95,7 +95,7 @@ impl FieldValue {
     /// Field descriptor.
     pub fn descriptor(&self) -> u8 {
         match self {
-            FieldValue::Commands(v) => v.descriptor(),
+            FieldValue::CommandsSet(v) => v.descriptor(),
             FieldValue::Data(v) => v.descriptor(),
             FieldValue::Receiver1(v) => v.descriptor(),
             FieldValue::Receiver2(v) => v.descriptor(),
@@ -107,7 +107,7 @@ impl FieldValue {
     /// Field name as printed in JSON.
     pub fn name(&self) -> &'static str {
         match self {
-            FieldValue::Commands(v) => v.name(),
+            FieldValue::CommandsSet(v) => v.name(),
             FieldValue::Data(v) => v.name(),
             FieldValue::Receiver1(v) => v.name(),
             FieldValue::Receiver2(v) => v.name(),
@@ -119,7 +119,7 @@ impl FieldValue {
     /// Device of the layout used, for fields with per-device layouts.
     pub fn device(&self) -> Option<Device> {
         match self {
-            FieldValue::Commands(v) => v.device(),
+            FieldValue::CommandsSet(v) => v.device(),
             FieldValue::Data(v) => v.device(),
             FieldValue::Receiver1(v) => v.device(),
             FieldValue::Receiver2(v) => v.device(),
@@ -131,7 +131,7 @@ impl FieldValue {
     /// Encodes the field data (without the field header).
     pub fn encode_data(&self, w: &mut Writer<'_>) -> Result<(), EncodeError> {
         match self {
-            FieldValue::Commands(v) => v.encode_data(w),
+            FieldValue::CommandsSet(v) => v.encode_data(w),
             FieldValue::Data(v) => v.encode_data(w),
             FieldValue::Receiver1(v) => v.encode_data(w),
             FieldValue::Receiver2(v) => v.encode_data(w),
@@ -143,7 +143,7 @@ impl FieldValue {
     /// Writes the canonical JSON of the values (`{...}`).
     pub fn write_values_json(&self, w: &mut dyn Write) -> fmt::Result {
         match self {
-            FieldValue::Commands(v) => v.write_values_json(w),
+            FieldValue::CommandsSet(v) => v.write_values_json(w),
             FieldValue::Data(v) => v.write_values_json(w),
             FieldValue::Receiver1(v) => v.write_values_json(w),
             FieldValue::Receiver2(v) => v.write_values_json(w),
@@ -176,8 +176,8 @@ impl FieldValue {
         values: &crate::json_read::Json,
     ) -> Result<Self, crate::json_read::JsonError> {
         let found = match set {
-            0x01 => crate::commands::SetField::from_json(descriptor, device, values)
-                .map(|r| r.map(FieldValue::Commands)),
+            0x01 => crate::commands_set::SetField::from_json(descriptor, device, values)
+                .map(|r| r.map(FieldValue::CommandsSet)),
             0x90 => crate::data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Data)),
             0x91 => crate::receiver_1::SetField::from_json(descriptor, device, values)
@@ -239,7 +239,7 @@ type DescriptorDecoders = [Option<Decoder>; 256];
 /// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
-    t[0x01] = Some(&COMMANDS_DECODERS);
+    t[0x01] = Some(&COMMANDS_SET_DECODERS);
     t[0x90] = Some(&DATA_DECODERS);
     t[0x91] = Some(&RECEIVER_1_DECODERS);
     t[0x92] = Some(&RECEIVER_2_DECODERS);
@@ -248,12 +248,12 @@ static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
 };
 
 /// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
-static COMMANDS_DECODERS: DescriptorDecoders = {
+static COMMANDS_SET_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
-    t[0x01] = Some(decoders::commands_ping);
-    t[0x02] = Some(decoders::commands_configure);
-    t[0x03] = Some(decoders::commands_per_device);
-    t[0x82] = Some(decoders::commands_configuration);
+    t[0x01] = Some(decoders::commands_set_ping);
+    t[0x02] = Some(decoders::commands_set_configure);
+    t[0x03] = Some(decoders::commands_set_per_device);
+    t[0x82] = Some(decoders::commands_set_configuration);
     t
 };
 
@@ -355,45 +355,45 @@ mod decoders {
     }
 
     #[inline(never)]
-    pub(super) fn commands_ping(
+    pub(super) fn commands_set_ping(
         data: &[u8],
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        decode_layout(data, |v: crate::commands::Ping| {
-            FieldValue::Commands(crate::commands::SetField::Ping(v))
+        decode_layout(data, |v: crate::commands_set::Ping| {
+            FieldValue::CommandsSet(crate::commands_set::SetField::Ping(v))
         })
     }
 
     #[inline(never)]
-    pub(super) fn commands_configure(
+    pub(super) fn commands_set_configure(
         data: &[u8],
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        decode_layout(data, |v: crate::commands::Configure| {
-            FieldValue::Commands(crate::commands::SetField::Configure(v))
+        decode_layout(data, |v: crate::commands_set::Configure| {
+            FieldValue::CommandsSet(crate::commands_set::SetField::Configure(v))
         })
     }
 
     #[inline(never)]
-    pub(super) fn commands_configuration(
+    pub(super) fn commands_set_configuration(
         data: &[u8],
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
         let _ = device;
-        decode_layout(data, |v: crate::commands::Configuration| {
-            FieldValue::Commands(crate::commands::SetField::Configuration(v))
+        decode_layout(data, |v: crate::commands_set::Configuration| {
+            FieldValue::CommandsSet(crate::commands_set::SetField::Configuration(v))
         })
     }
 
     #[inline(never)]
-    pub(super) fn commands_per_device(
+    pub(super) fn commands_set_per_device(
         data: &[u8],
         device: Option<Device>,
     ) -> Result<FieldValue, DecodeError> {
-        crate::commands::PerDevice::decode_data(data, device)
-            .map(|v| FieldValue::Commands(crate::commands::SetField::PerDevice(v)))
+        crate::commands_set::PerDevice::decode_data(data, device)
+            .map(|v| FieldValue::CommandsSet(crate::commands_set::SetField::PerDevice(v)))
     }
 
     #[inline(never)]

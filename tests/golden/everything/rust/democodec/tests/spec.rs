@@ -731,49 +731,49 @@ fn bitfield_flags_accessors() {
 #[test]
 fn fixed_layout_errors() {
     assert_eq!(
-        democodec::commands::Ping::decode_data(&[])
+        democodec::commands_set::Ping::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Ok(()),
     );
     assert_eq!(
-        democodec::commands::Ping::decode_data(&[0u8; 1])
+        democodec::commands_set::Ping::decode_data(&[0u8; 1])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 0".to_string()),
     );
     assert_eq!(
-        democodec::commands::Configure::decode_data(&[])
+        democodec::commands_set::Configure::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("function: needs 1 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
-        democodec::commands::Configuration::decode_data(&[])
+        democodec::commands_set::Configuration::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("instance: needs 1 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
-        democodec::commands::PerDeviceDevA::decode_data(&[])
+        democodec::commands_set::PerDeviceDevA::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("a: needs 4 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
-        democodec::commands::PerDeviceDevA::decode_data(&[0u8; 5])
+        democodec::commands_set::PerDeviceDevA::decode_data(&[0u8; 5])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 4".to_string()),
     );
     assert_eq!(
-        democodec::commands::PerDeviceDevB::decode_data(&[])
+        democodec::commands_set::PerDeviceDevB::decode_data(&[])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("b: needs 8 bytes at offset 0, 0 left".to_string()),
     );
     assert_eq!(
-        democodec::commands::PerDeviceDevB::decode_data(&[0u8; 10])
+        democodec::commands_set::PerDeviceDevB::decode_data(&[0u8; 10])
             .map(|_| ())
             .map_err(|e| e.to_string()),
         Err("1 unexpected bytes at offset 9".to_string()),
@@ -843,9 +843,10 @@ fn fixed_layout_errors() {
 #[test]
 fn zero_values_round_trip_through_packets() {
     {
-        use democodec::commands::Ping;
+        use democodec::commands_set::Ping;
         let value = Ping::default();
-        let mut builder = democodec::builder::PacketBuilder::new(democodec::commands::Ping::SET);
+        let mut builder =
+            democodec::builder::PacketBuilder::new(democodec::commands_set::Ping::SET);
         builder.add(&value).unwrap();
         let bytes = builder.finish().to_vec();
         let packet = democodec::fields::Packet::new(&bytes).unwrap();
@@ -858,10 +859,10 @@ fn zero_values_round_trip_through_packets() {
         assert!(fields.next().is_none());
     }
     {
-        use democodec::commands::PerDeviceDevA;
+        use democodec::commands_set::PerDeviceDevA;
         let value = PerDeviceDevA::default();
         let mut builder =
-            democodec::builder::PacketBuilder::new(democodec::commands::PerDeviceDevA::SET);
+            democodec::builder::PacketBuilder::new(democodec::commands_set::PerDeviceDevA::SET);
         builder.add(&value).unwrap();
         let bytes = builder.finish().to_vec();
         let packet = democodec::fields::Packet::new(&bytes).unwrap();
@@ -874,10 +875,10 @@ fn zero_values_round_trip_through_packets() {
         assert!(fields.next().is_none());
     }
     {
-        use democodec::commands::PerDeviceDevB;
+        use democodec::commands_set::PerDeviceDevB;
         let value = PerDeviceDevB::default();
         let mut builder =
-            democodec::builder::PacketBuilder::new(democodec::commands::PerDeviceDevB::SET);
+            democodec::builder::PacketBuilder::new(democodec::commands_set::PerDeviceDevB::SET);
         builder.add(&value).unwrap();
         let bytes = builder.finish().to_vec();
         let packet = democodec::fields::Packet::new(&bytes).unwrap();
