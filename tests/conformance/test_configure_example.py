@@ -10,7 +10,7 @@ field (default values); after the stream enable it sends COUNT + 2 data packets 
 example's data fields, each after a stray byte the session must skip. The test checks the
 commands the program sent (set, descriptor, function, the values it wrote), its output (one
 `device`, one `setting` line, one line per data field of the first COUNT packets, each naming
-the parameters it prints as `name=value`) and its exit
+the parameters it prints, `name=value` or `name: value`) and its exit
 status; then that a NACK ends it with status 1 and a message, that bad usage exits 2, and that
 the source marks the parts the documentation quotes.
 """
@@ -18,6 +18,7 @@ the source marks the parts the documentation quotes.
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 from pathlib import Path
 
@@ -126,6 +127,8 @@ def test_configure_and_stream(lang, protocol):
     proto = PROTOCOLS[protocol]
     case, plan = script(proto)
     framing = proto["framing"]
+    built = run_example(lang, protocol, timeout=1800)  # builds the program: the fake device waits 30 s
+    assert built.returncode == 2 and "usage" in built.stderr, built.stderr
     dev = FakeDevice(case, framing).start()
     r = run_example(lang, protocol, f"tcp:127.0.0.1:{dev.port}", str(COUNT))
     dev.join(30)
@@ -150,16 +153,17 @@ def test_configure_and_stream(lang, protocol):
     assert lines[0].startswith("device ") and lines[1].startswith("setting ")
     names = [f["name"] for f in ex["data"]["fields"]]
     assert [ln.split()[0] for ln in lines[2:]] == names * COUNT, r.stdout
-    # Every parameter of the setting's reply and of each data field is printed as name=value.
+    # Every parameter of the setting's reply and of each data field is printed with its name
+    # (name=value; Rust's Debug: name: value).
     setting = ex["setting"]
     rid = _reply_ids(setting["variant"], "read")[0]
     reply = next(f for f in setting["set"]["fields"] if f["id"] == rid)
     for q in device_variant(proto, reply, ex["device"])["params"]:
-        assert f"{q['name']}=" in lines[1], (q["name"], lines[1])
+        assert re.search(rf"\b{q['name']}\s*[=:]", lines[1]), (q["name"], lines[1])
     fields = {f["name"]: device_variant(proto, f, ex["device"]) for f in ex["data"]["fields"]}
     for ln in lines[2:]:
         for q in fields[ln.split()[0]]["params"]:
-            assert f"{q['name']}=" in ln, (q["name"], ln)
+            assert re.search(rf"\b{q['name']}\s*[=:]", ln), (q["name"], ln)
 
 
 @pytest.mark.parametrize("lang,protocol", CASES, ids=[f"{a}-{b}" for a, b in CASES])
