@@ -104,7 +104,20 @@ def build_cpp(bindir: Path) -> Path:
     exe = bindir / "bench-cpp"
     if stale(exe, [main, *sorted(inc.rglob("*.hpp"))]):
         cxx = os.environ.get("CXX", "g++")
-        cmd = [cxx, "-O2", "-std=c++17", "-Wall", "-Wextra", "-Werror", "-I", str(inc), str(main), "-o", str(exe)]
+        cmd = [
+            cxx,
+            "-O2",
+            "-std=c++17",
+            "-pthread",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-I",
+            str(inc),
+            str(main),
+            "-o",
+            str(exe),
+        ]
         log("building the C++ benchmark: " + shlex.join([cxx, "-O2", "-std=c++17", "..."]))
         subprocess.run(cmd, check=True)
     return exe

@@ -5,11 +5,11 @@
    reports up to the step's time; at the end, poll while commands are pending, then `close`.
    Each `receive` is also fed split at every position (two feeds at the same time); the lines
    must not change.
-2. The conformance tool (`tests/conformance/session python`) runs every live case over loopback
+2. The conformance tool (`tests/conformance/session LANG`, each of TOOL_LANGS) runs every live case over loopback
    TCP against the scripted fake device (tests/conformance/fake_device.py), with the case's
    commands as its input lines: the same lines must come out.
 3. The tool's errors: a bad input line (stderr, exit 1, the other lines still run), a connection
-   refused and bad usage (exit 2), and the languages that have no session layer yet (exit 2).
+   refused and bad usage (exit 2).
 """
 
 from __future__ import annotations
@@ -126,7 +126,7 @@ def test_corpus_covers_the_issue():
 
 
 # The languages whose session tool has landed (the others print so and exit 2).
-TOOL_LANGS = ["python", "c", "rust"]
+TOOL_LANGS = ["python", "c", "cpp", "rust"]
 
 
 def _ready(lang: str) -> None:
@@ -217,12 +217,6 @@ def test_tool_connection_refused_and_usage(lang):
         assert proc.returncode == 2 and proc.stderr, args
     proc = subprocess.run([str(TOOL), lang, "--connect", "tcp:nohost"], input="", capture_output=True, text=True)
     assert proc.returncode == 2 and "bad TCP address" in proc.stderr
-
-
-@pytest.mark.parametrize("lang", ["cpp"])
-def test_tool_other_languages_not_yet(lang):
-    proc = subprocess.run([str(TOOL), lang, "--connect", "tcp:127.0.0.1:1"], input="", capture_output=True, text=True)
-    assert proc.returncode == 2 and "not implemented yet" in proc.stderr
 
 
 def test_typed_api_over_tcp():

@@ -34,7 +34,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SIMULATE = ROOT / "tests" / "conformance" / "simulate"
 SESSION = ROOT / "tests" / "conformance" / "session"
 # The session languages the end-to-end tests run (tests/conformance/session LANG): one place.
-SESSION_LANGUAGES = ["python"]
+SESSION_LANGUAGES = ["python", "c", "cpp", "rust"]
 TRANSPORTS = ["pty", "tcp"]
 IR = load_spec()
 PROTOCOLS = {p["name"]: p for p in IR["protocols"]}

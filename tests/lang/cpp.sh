@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|example FILE
+# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE
 # Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites (after
 # the runtime's own tests, in place: generator/targets/cpp/runtime/tests/ into build/cpp-runtime/), or
-# runs the decode/encode tools or the getting-started example (<package>-getting-started FILE),
+# runs the decode/encode/session tools or the getting-started example (<package>-getting-started FILE),
 # building them first when needed; `runtime` runs only the runtime's in-place checks. Works from any
 # directory.
 # CPP_PACKAGE selects the package for decode/encode/example (default: mipcodec).
@@ -11,7 +11,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
 
-usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|example FILE" >&2; exit 2; }
+usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE" >&2; exit 2; }
 
 packages() {
   local d
@@ -59,7 +59,7 @@ build() { # package [targets...]
   cmake --build "$ROOT/build/cpp/$pkg" ${1:+--target "$@"} >&2
 }
 
-tool() { # decode|encode|getting-started
+tool() { # decode|encode|session|getting-started
   local exe="$ROOT/build/cpp/$PKG/$PKG-$1"
   # Always let ninja check (a no-op when up to date), so a regenerated package is rebuilt.
   build "$PKG" "${PKG}_cpp_${1//-/_}" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
@@ -101,6 +101,17 @@ case "$cmd" in
     mkdir -p "$ROOT/build/cpp"
     exe="$(tool encode)"
     exec "$exe" "$@"
+    ;;
+  session)
+    # The session conformance tool (docs/conformance.md section 8).
+    mkdir -p "$ROOT/build/cpp"
+    exe="$(tool session)"
+    exec "$exe" "$@"
+    ;;
+  configure-and-stream-build)
+    # Builds the configure-and-stream example (examples/configure_and_stream.cpp); prints its path.
+    mkdir -p "$ROOT/build/cpp"
+    tool configure-and-stream
     ;;
   example)
     mkdir -p "$ROOT/build/cpp"

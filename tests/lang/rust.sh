@@ -225,7 +225,8 @@ test_embedded() {
 }
 
 build_one() {
-    cargo build --release --quiet --manifest-path "$(manifest "$1")" --bins >&2
+    # The tools with the `serial` feature: the session tool opens serial ports (and pseudo-terminals).
+    cargo build --release --quiet --manifest-path "$(manifest "$1")" --bins --features serial >&2
 }
 
 # Build the tools unless all exist and are newer than every file of the crate.

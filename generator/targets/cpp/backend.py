@@ -61,6 +61,11 @@ RUNTIME_HEADERS = [
     "json_reader.hpp",
     "json_codec.hpp",
     "json_lines.hpp",
+    "session_types.hpp",
+    "session.hpp",
+    "session_json.hpp",
+    "transport.hpp",
+    "transport_posix.hpp",
 ]
 
 
@@ -70,10 +75,12 @@ def runtime_files(pkg: str) -> dict[str, str]:
         **{f"include/protopkg/{h}": f"include/{pkg}/{h}" for h in RUNTIME_HEADERS},
         "tools/decode.cpp": "tools/decode.cpp",
         "tools/encode.cpp": "tools/encode.cpp",
+        "tools/session.cpp": "tools/session.cpp",
         "tools/tool_io.hpp": "tools/tool_io.hpp",
         "package_tests/test_support.hpp": "tests/test_support.hpp",
         "package_tests/test_package.cpp": "tests/test_package.cpp",
         "package_tests/test_canonical.cpp": "tests/test_canonical.cpp",
+        "package_tests/session_runner.hpp": "tests/session_runner.hpp",
     }
 
 
@@ -136,6 +143,23 @@ RUNTIME_NAMESPACES = {
     "json_read_counted",
     "json_read_remaining",
     "json_check_object",
+    "write_field_entry_json",
+    "decode_ack",
+    "function_name",
+    "function_devices",
+    "support_error",
+    "ack_suppressed",
+    "allowance_ms",
+    "expected_replies",
+    "write_result_json",
+    "session_event_line",
+    "with_command_from_line",
+    "parse_tcp_address",
+    "open_tcp",
+    "open_serial",
+    "open_transport",
+    "baud_speed",
+    "api",
 }  # namespace-scope names of the runtime; a set with one of these names gets a "_set" suffix
 
 
@@ -221,6 +245,14 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         out["variants"] = ", ".join(types)
         for v, t in zip(field["variants"], types):
             out[f"type_{v['device']}"] = t
+    if not is_reserved and field.get("role") == "command" and set_["kind"] == "command":
+        # The typed command API (commands.hpp.j2): api::<set>::<command>::<function>(connection, ...).
+        call = f"{pkg}::api::{_set_ns(set_)}::{ident(field['name'])}"
+        functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
+        if len(functions) > 1:
+            out["session"] = f"{call}::{{{','.join(ident(fn) for fn in functions)}}}(connection, ...)"
+        else:
+            out["session"] = f"{call}::{_cpp_fn(functions[0] if functions else None)}(connection, ...)"
     return out
 
 
@@ -607,6 +639,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     release = release or load_release()
     env = environment()
     files: dict[str, str] = {}
+    sessions = _load_sessions(ir)
     for proto in ir["protocols"]:
         P = _Proto(proto)
         pkg = proto["package"]
@@ -648,6 +681,12 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         }
         for out, tpl in spec.items():
             files[f"{inc}/{out}"] = env.get_template(f"cpp/include/{tpl}").render(ctx)
+        files[f"{inc}/session_facts.hpp"] = env.get_template("cpp/include/session_facts.hpp.j2").render(
+            ctx, **session_context(P)
+        )
+        files[f"{inc}/commands.hpp"] = env.get_template("cpp/include/commands.hpp.j2").render(
+            ctx, **command_api_context(P)
+        )
         for s in sets:
             files[f"{inc}/fields/{s['file']}.hpp"] = env.get_template("cpp/include/fields.hpp.j2").render(ctx, set=s)
             files[f"{inc}/fields/{s['file']}_json.hpp"] = env.get_template("cpp/include/fields_json.hpp.j2").render(
@@ -657,9 +696,331 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             ctx
         )
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
+        example = configure_example(P)
+        if example is not None:
+            files[f"{root}/examples/configure_and_stream.cpp"] = env.get_template(
+                "cpp/examples/configure_and_stream.cpp.j2"
+            ).render(ctx, ex=example)
+        files[f"{root}/tests/test_sessions.cpp"] = env.get_template("cpp/tests/test_sessions.cpp.j2").render(
+            ctx, session_cases=session_cases(proto, sessions)
+        )
         files[f"{root}/tests/test_types.cpp"] = env.get_template("cpp/tests/test_types.cpp.j2").render(ctx)
         files[f"{root}/tests/canonical_cases.hpp"] = env.get_template("cpp/tests/canonical_cases.hpp.j2").render(ctx)
         files[f"{root}/CMakeLists.txt"] = env.get_template("cpp/CMakeLists.txt.j2").render(ctx)
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
         files.update(cmake_package_files(f"{root}/", ctx, pkg_config(pkg, proto["title"], "cpp")))
     return files
+
+
+# ----------------------------------------------------------------------------- session layer
+def _int_value(P: _Proto, tref: dict, value) -> int | None:
+    """An enum value name (or integer) of a parameter's type as an integer."""
+    if value is None or isinstance(value, int):
+        return value
+    t = P.types[tref["name"]]
+    return next(v["value"] for v in t["values"] if v["name"] == value)
+
+
+def _param_expr(P: _Proto, q: dict) -> str:
+    """The value of parameter q of `v` as std::optional<std::int64_t> (nullopt when absent)."""
+    member = f"v.{ident(q['name'])}"
+    if q["optional"]:
+        return f"{member} ? std::optional<std::int64_t>(static_cast<std::int64_t>(*{member})) : std::nullopt"
+    return f"std::optional<std::int64_t>(static_cast<std::int64_t>({member}))"
+
+
+def session_context(P: _Proto) -> dict:
+    """What session_facts.hpp.j2 prints: the ack rule, the function names and their device limits,
+    and one CommandRow per command layout (with its reply rules) plus a CommandTraits<T> per layout
+    (its row, its function selector value, the parameters its rules read by slot)."""
+    proto = P.p
+    devices = [d["id"] for d in proto["devices"]]
+    if len(devices) > 32:
+        raise ValueError("the C++ session's device masks hold at most 32 devices")
+    fenum = (proto.get("function_selector") or {}).get("enum")
+    fvalues: dict[str, int] = {}
+    functions = []
+    if fenum:
+        for v in P.types[fenum]["values"]:
+            if not 0 <= v["value"] < 64:
+                raise ValueError(f"function selector value {v['value']} does not fit the C++ session's masks")
+            fvalues[v["name"]] = v["value"]
+            mask = sum(1 << devices.index(d) for d in v.get("devices") or [])
+            functions.append({"value": v["value"], "name": cpp_string(v["name"]), "devices": f"0x{mask:X}u"})
+
+    def fmask(names) -> str:
+        return f"0x{sum(1 << fvalues[n] for n in names):X}ULL"
+
+    rule = proto.get("session")
+    ack = None
+    if rule:
+        rf = next(f for f in proto["reserved_fields"] if f["id"] == rule["ack"] and f.get("role") == "ack")
+        names = _layout_names(proto["reserved_fields"])
+        ack = {
+            "descriptor": f"0x{rule['ack']:02X}",
+            "ok": rule["ok"],
+            "type": f"::{P.ns}::{P.reserved_ns}::{names[(rf['name'], None)]}",
+            "echo": ident(rule["echo"]),
+            "code": ident(rule["code"]),
+        }
+    rows = []
+    for s in proto["sets"]:
+        if s["kind"] != "command":
+            continue
+        names = _layout_names(s["fields"])
+        for f in s["fields"]:
+            if f["role"] != "command":
+                continue
+            multi = len(f["variants"]) > 1
+            for v in f["variants"]:
+                params = {q["name"]: q for q in v["params"]}
+                slots: list[str] = []
+
+                def slot(name: str, slots: list[str] = slots) -> int:
+                    if name not in slots:
+                        slots.append(name)
+                    return slots.index(name)
+
+                replies = []
+                for r in v["responses"]:
+                    w = r["when"] or {}
+                    fn = fvalues[w["function"]] if "function" in w else -1
+                    param = w.get("param")
+                    value = _int_value(P, params[param]["type"], w.get("value")) if param else None
+                    replies.append(
+                        f"{{0x{r['id']:02X}, {fn}, {slot(param) if param else -1}, "
+                        f"{'true' if value is not None else 'false'}, {int_literal(value or 0)}}}"
+                    )
+                a = v["ack_suppressed_by"]
+                if a is None:
+                    ack_row = "0, -1, false, 0"
+                elif "function" in a:
+                    ack_row = f"1, -1, false, {fvalues[a['function']]}"
+                else:
+                    val = _int_value(P, params[a["param"]]["type"], a.get("value"))
+                    ack_row = (
+                        f"2, {slot(a['param'])}, {'true' if val is not None else 'false'}, {int_literal(val or 0)}"
+                    )
+                t = v.get("timeout")
+                if t is None:
+                    timeout_row = "false, 0, -1, true, 0"
+                else:
+                    tp = slot(t["param"]) if t["param"] else -1
+                    all_fn = not t["functions"]
+                    timeout_row = f"true, {t['ms']}u, {tp}, {'true' if all_fn else 'false'}, " + (
+                        "0" if all_fn else fmask(t["functions"])
+                    )
+                has_fn = v["functions"] is not None
+                dev_mask = sum(1 << devices.index(d) for d in v["devices"])
+                rows.append(
+                    {
+                        "type": f"::{P.ns}::{_set_ns(s)}::{names[(f['name'], v['device'] if multi else None)]}",
+                        "index": len(rows),
+                        "replies": replies,
+                        "row": (
+                            f"0x{s['id']:02X}, 0x{f['id']:02X}, {cpp_string(f['name'])}, "
+                            f"{devices.index(v['device']) if v['device'] else -1}, 0x{dev_mask:X}u, "
+                            f"{'true' if has_fn else 'false'}, {fmask(v['functions']) if has_fn else '0'}, "
+                        ),
+                        "row_tail": f"{len(replies)}, {ack_row}, {timeout_row}",
+                        # The function selector member (generator/model.py function_param).
+                        "function": (
+                            "std::optional<std::int64_t>(static_cast<std::int64_t>(v.function))" if has_fn else None
+                        ),
+                        "slots": [_param_expr(P, params[n]) for n in slots],
+                    }
+                )
+    return {"session_ack": ack, "session_functions": functions, "session_rows": rows}
+
+
+def _load_sessions(ir: dict) -> list[dict]:
+    """The project's session corpus (tests/sessions/), or none when the IR is not the project's
+    (a spec given with --spec: its protocols do not match the corpus)."""
+    from pathlib import Path
+
+    from generator.diagnostics import SpecErrors
+    from generator.sessions import load_sessions
+
+    try:
+        return load_sessions(ir, Path(__file__).resolve().parents[3] / "tests" / "sessions")
+    except (SpecErrors, KeyError, TypeError, ValueError):
+        return []
+
+
+def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
+    """The corpus cases of one protocol as C++ literals (test_sessions.cpp.j2)."""
+    out = []
+    for c in sessions:
+        if c["protocol"] != proto["name"]:
+            continue
+        steps = []
+        for st in c["steps"]:
+            send = st.get("send")
+            steps.append(
+                {
+                    "at": st["at"],
+                    "send": cpp_string(send) if send is not None else "nullptr",
+                    "bytes": cpp_string(st["bytes"]) if send is not None and st.get("bytes") else "nullptr",
+                    "receive": cpp_string(st["receive"]) if "receive" in st else "nullptr",
+                }
+            )
+        out.append(
+            {
+                "name": re.sub(r"[^A-Za-z0-9]", "_", c["name"]),
+                "source": c["name"],
+                "file": c["file"],
+                "device": cpp_string(c["device"]) if c["device"] else "nullptr",
+                "timeout_ms": c["timeout_ms"],
+                "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
+                "steps": steps,
+                "expect": [cpp_string(line) for line in c["expect"]],
+            }
+        )
+    return out
+
+
+def _cpp_fn(fn: str | None) -> str:
+    return "call" if fn is None else ident(fn)
+
+
+def command_api_context(P: _Proto) -> dict:
+    """What commands.hpp.j2 prints: the typed command API, one function per command and function
+    (`api::<set>::<command>::<function>(connection, args...)`, `call` without a selector), with
+    the parameters sent for that function as arguments (the selector and count parameters set by
+    the call) and the reply field's struct as Reply<R> (else Call). A function whose layouts need
+    different arguments per device gets one call per device (`write_gx5_45`)."""
+    proto = P.p
+    fenum = (proto.get("function_selector") or {}).get("enum")
+    sets = []
+    for s in proto["sets"]:
+        if s["kind"] != "command":
+            continue
+        names = _layout_names(s["fields"])
+        by_id = {f["id"]: f for f in s["fields"]}
+        commands = []
+        for f in s["fields"]:
+            if f["role"] != "command":
+                continue
+            multi = len(f["variants"]) > 1
+            layouts = [
+                {
+                    "v": v,
+                    "type": f"::{P.ns}::{_set_ns(s)}::{names[(f['name'], v['device'] if multi else None)]}",
+                    "device": v["device"],
+                }
+                for v in f["variants"]
+            ]
+            plain = f["variants"][0]["functions"] is None
+            functions: list[str] = []
+            for lay in layouts:
+                for fn in lay["v"]["functions"] or []:
+                    if fn not in functions:
+                        functions.append(fn)
+            calls = []
+            for fn in [None] if plain else functions:
+                groups: dict[tuple, list[dict]] = {}
+                for lay in layouts:
+                    v = lay["v"]
+                    if fn is not None and fn not in (v["functions"] or []):
+                        continue
+                    sig = _cpp_signature(v, fn, fenum, lay["type"])
+                    groups.setdefault(tuple(a["key"] for a in sig["args"]), []).append({**lay, "sig": sig})
+                split = len(groups) > 1
+                for group in groups.values():
+                    name = _cpp_fn(fn) + (f"_{group[0]['device']}" if split else "")
+                    reply = _cpp_reply(P, s, group, fn, by_id, names)
+                    calls.append(
+                        {
+                            "name": ident(name),
+                            "fn": fn,
+                            "args": group[0]["sig"]["args"],
+                            "reply": reply,
+                            # The other devices' layouts first, each when its device is selected;
+                            # the first layout last, for any other device or none.
+                            "layouts": [
+                                {"type": g["type"], "device": ident(g["device"]), "sets": g["sig"]["sets"]}
+                                for g in group[1:]
+                            ]
+                            + [{"type": group[0]["type"], "device": None, "sets": group[0]["sig"]["sets"]}],
+                        }
+                    )
+            commands.append({"ns": ident(f["name"]), "title": " ".join(f["title"].split()), "calls": calls})
+        if commands:
+            sets.append({"ns": _set_ns(s), "title": s["title"], "commands": commands})
+    return {"api_sets": sets, "function_enum": f"::{P.ns}::types::{fenum}" if fenum else None}
+
+
+def _cpp_signature(v: dict, fn: str | None, fenum: str | None, type_: str) -> dict:
+    """Arguments (required first, as declared) and member assignments of one call."""
+    counted = {q["count"]["param"]: q for q in v["params"] if q["count"] and q["count"]["kind"] == "param"}
+    args = []
+    sets = []
+    if fn is not None:  # the function selector (generator/model.py function_param), sent first
+        sets.append(f"v.function = ::{type_.split('::')[1]}::types::{fenum}::{ident(fn)};")
+    for q in v["params"]:
+        m = ident(q["name"])
+        if q["functions"] is not None and fn not in q["functions"]:
+            continue
+        if q["name"] in counted:
+            arr = ident(counted[q["name"]]["name"])
+            size = f"v.{arr} ? v.{arr}->size() : 0" if counted[q["name"]]["optional"] else f"v.{arr}.size()"
+            sets.append(f"v.{m} = static_cast<std::remove_reference_t<decltype(v.{m})>>({size});")
+            continue
+        required = (q["functions"] is not None and fn not in (q["optional_for"] or [])) or not q["optional"]
+        member = f"decltype({type_}::{m})"
+        if required and q["optional"]:
+            decl = f"const typename {member}::value_type &"
+        else:
+            decl = f"const {member} &"
+        key = (m, required, q["optional"], repr(q["type"]), repr(q["count"]))
+        args.append({"name": m, "decl": decl, "required": required, "key": key})
+        sets.append(f"v.{m} = {m};")
+    args = [a for a in args if a["required"]] + [a for a in args if not a["required"]]
+    return {"args": args, "sets": [x for x in sets if x]}
+
+
+def _cpp_reply(P: _Proto, s: dict, group: list[dict], fn: str | None, by_id: dict, names: dict) -> str | None:
+    """The struct of the reply field the call returns, or None (the call returns Call)."""
+    ids = []
+    for g in group:
+        for r in g["v"]["responses"]:
+            w = r["when"] or {}
+            if "function" in w and w["function"] != fn:
+                continue
+            if r["id"] not in ids:
+                ids.append(r["id"])
+    if len(ids) != 1 or ids[0] not in by_id or len(by_id[ids[0]]["variants"]) != 1:
+        return None
+    return f"::{P.ns}::{_set_ns(s)}::{names[(by_id[ids[0]]['name'], None)]}"
+
+
+def configure_example(P: _Proto) -> dict | None:
+    """The configure-and-stream example's calls (examples/configure_and_stream.cpp.j2), for a
+    protocol with a ping, a device-information command, the sensor-to-vehicle rotation and a data
+    stream switch (MIP); None for the others (no example)."""
+    cmds = {
+        f["name"]: (s, f)
+        for s in P.p["sets"]
+        if s["kind"] == "command"
+        for f in s["fields"]
+        if f["role"] == "command"
+    }
+    need = ("ping", "get_device_info", "sensor_to_vehicle_euler", "data_stream_control")
+    if not all(n in cmds for n in need):
+        return None
+    device = "cv7_ins" if any(d["id"] == "cv7_ins" for d in P.p["devices"]) else None
+    if device is None:
+        return None
+
+    def path(name: str) -> str:
+        return f"{_set_ns(cmds[name][0])}::{ident(name)}"
+
+    return {
+        "device": ident(device),
+        "ping": path("ping") + "::call",
+        "info": path("get_device_info") + "::call",
+        "info_member": "info",
+        "setting": path("sensor_to_vehicle_euler"),
+        "stream": path("data_stream_control") + f"::write_{device}",
+        "stream_args": "0x82, true",
+    }

@@ -1,14 +1,25 @@
 // Benchmark of the generated C++ package mipcodec (issue 8): a plain timed loop.
 //
-//   bench DIR [--passes N] [--stream NAME] [--mode frame|decode]
+//   bench DIR [--passes N] [--stream NAME] [--mode frame|decode|session-ingest|session-roundtrip]
 //
 // For every stream DIR/<name>.bin (sidecar DIR/<name>.json) it times, best of N passes over the
 // whole file in memory (read once, not timed):
 //   lang=cpp mode=frame   StreamParser::feed + flush: every packet reported, garbage skipped
 //   lang=cpp mode=decode  the same, plus FieldIterator and decode_field of every field
+//   lang=cpp mode=session-ingest  the stream fed to a Session with one command pending whose reply
+//                         never comes (deadline far away): every packet routed to a per-packet
+//                         handler that decodes its fields as `decode` does
+// and once, stream=loopback-tcp mode=session-roundtrip: ping round trips through the blocking
+// API (api::base::ping over a Connection on a loopback TCP socket) to a responder thread that
+// answers each ping with its ack (bytes = bytes sent + received);
 // and prints `BENCH lang=cpp stream=<name> mode=<mode> packets=N bytes=B seconds=S` lines. The
 // packet and field counts are checked against the sidecar (exit 1 on mismatch); a checksum of
 // the decoded values is printed to stderr so the work cannot be optimised away.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -18,9 +29,13 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <thread>
 #include <vector>
 
+#include "mipcodec/commands.hpp"
 #include "mipcodec/mipcodec.hpp"
+#include "mipcodec/session.hpp"
+#include "mipcodec/transport_posix.hpp"
 
 namespace {
 
@@ -98,7 +113,7 @@ struct Consume {
     }
 };
 
-enum class Mode { frame, decode };
+enum class Mode { frame, decode, session_ingest };
 
 void run_pass(const Stream &s, Mode mode, Counts &c) {
     c = Counts{};
@@ -115,6 +130,33 @@ void run_pass(const Stream &s, Mode mode, Counts &c) {
         return;
     }
     const std::optional<mipcodec::Device> any;
+    if (mode == Mode::session_ingest) {
+        // One command pending (a ping whose ack never comes) for the whole stream.
+        mipcodec::Session<>::Options options;
+        options.timeout_ms = std::int64_t{1} << 40;
+        mipcodec::Session<> session(options);
+        session.on_packet([&c, &any](const mipcodec::PacketView &packet, std::uint64_t) {
+            ++c.packets;
+            const std::uint8_t set = packet.set();
+            mipcodec::FieldIterator fields(packet);
+            mipcodec::FieldEntry entry;
+            while (fields.next(entry)) {
+                if (entry.kind != mipcodec::FieldEntry::Kind::field) {
+                    ++c.errors;
+                    continue;
+                }
+                mipcodec::decode_field(set, entry.descriptor, entry.data, entry.size, any, Consume{c});
+            }
+        });
+        session.start(mipcodec::base::Ping{}, 0);
+        auto ignore = [](const mipcodec::SessionEvent &) {};
+        session.feed(s.data.data(), s.data.size(), 1, ignore);
+        session.close(2, ignore);
+        if (session.pending() != 1) {
+            ++c.errors;
+        }
+        return;
+    }
     auto on = [&c, &any](const mipcodec::StreamEvent &e) {
         if (e.kind != mipcodec::StreamEvent::Kind::packet) {
             return;
@@ -133,6 +175,89 @@ void run_pass(const Stream &s, Mode mode, Counts &c) {
     };
     parser.feed(s.data.data(), s.data.size(), on);
     parser.flush(on);
+}
+
+// Answers every complete packet read from `fd` with the ack of its first field's descriptor.
+void responder(int fd) {
+    std::vector<std::uint8_t> buf;
+    std::uint8_t chunk[512];
+    for (;;) {
+        const ssize_t n = ::read(fd, chunk, sizeof chunk);
+        if (n <= 0) {
+            break;
+        }
+        buf.insert(buf.end(), chunk, chunk + n);
+        while (buf.size() >= 4 && buf.size() >= std::size_t{4} + buf[3] + 2) {
+            const std::size_t total = std::size_t{4} + buf[3] + 2;
+            mipcodec::PacketBuilder b(buf[2]);
+            mipcodec::reserved::AckNack ack{};
+            ack.command_descriptor = buf[5];
+            b.add(ack);
+            const mipcodec::PacketView p = b.finish();
+            if (::write(fd, p.data, p.size) != static_cast<ssize_t>(p.size)) {
+                return;
+            }
+            buf.erase(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(total));
+        }
+    }
+}
+
+// Ping round trips over loopback TCP through the blocking API; false on a failure.
+bool roundtrip(int trips, int passes) {
+    const int srv = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof addr;
+    if (srv < 0 || ::bind(srv, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 ||
+        ::listen(srv, 1) != 0 || ::getsockname(srv, reinterpret_cast<sockaddr *>(&addr), &len) != 0) {
+        std::fprintf(stderr, "bench: cannot listen on loopback\n");
+        return false;
+    }
+    std::thread server([srv]() {
+        const int fd = ::accept(srv, nullptr, nullptr);
+        if (fd >= 0) {
+            int one = 1;
+            ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+            responder(fd);
+            ::close(fd);
+        }
+    });
+    std::string error;
+    std::unique_ptr<mipcodec::Transport> t =
+        mipcodec::open_tcp("tcp:127.0.0.1:" + std::to_string(ntohs(addr.sin_port)), error);
+    bool ok = t != nullptr;
+    double best = 1e30;
+    std::uint64_t bytes = 0;
+    if (ok) {
+        mipcodec::Connection connection(*t);
+        for (int k = 0; k < passes && ok; ++k) {
+            const auto t0 = std::chrono::steady_clock::now();
+            for (int i = 0; i < trips; ++i) {
+                const mipcodec::Call call = mipcodec::api::base::ping::call(connection);
+                if (!call.ok()) {
+                    std::fprintf(stderr, "bench: ping %d: %s\n", i, call.describe().c_str());
+                    ok = false;
+                    break;
+                }
+                bytes = static_cast<std::uint64_t>(trips) * (8 + call.result.packet_size);
+            }
+            const std::chrono::duration<double> dt = std::chrono::steady_clock::now() - t0;
+            best = dt.count() < best ? dt.count() : best;
+        }
+        t.reset(); // closes the socket: the responder ends
+    } else {
+        std::fprintf(stderr, "bench: %s\n", error.c_str());
+    }
+    server.join();
+    ::close(srv);
+    if (ok) {
+        std::printf(
+            "BENCH lang=cpp stream=loopback-tcp mode=session-roundtrip packets=%d bytes=%llu seconds=%.6f\n",
+            trips, static_cast<unsigned long long>(bytes), best);
+        std::fflush(stdout);
+    }
+    return ok;
 }
 
 } // namespace
@@ -157,7 +282,8 @@ int main(int argc, char **argv) {
         }
     }
     if (dir == nullptr || passes < 1) {
-        std::fprintf(stderr, "usage: bench DIR [--passes N] [--stream NAME] [--mode frame|decode]\n");
+        std::fprintf(stderr, "usage: bench DIR [--passes N] [--stream NAME] "
+                             "[--mode frame|decode|session-ingest|session-roundtrip]\n");
         return 2;
     }
     int failed = 0;
@@ -169,8 +295,10 @@ int main(int argc, char **argv) {
         if (!load(dir, name, s)) {
             return 1;
         }
-        for (Mode m : {Mode::frame, Mode::decode}) {
-            const char *mode_name = m == Mode::frame ? "frame" : "decode";
+        for (Mode m : {Mode::frame, Mode::decode, Mode::session_ingest}) {
+            const char *mode_name = m == Mode::frame    ? "frame"
+                                    : m == Mode::decode ? "decode"
+                                                        : "session-ingest";
             if (only_mode != nullptr && std::strcmp(only_mode, mode_name) != 0) {
                 continue;
             }
@@ -186,21 +314,27 @@ int main(int argc, char **argv) {
             }
             if (c.packets != s.packets) {
                 std::fprintf(stderr, "bench: %s %s: %llu packets, the sidecar says %llu\n", name, mode_name,
-                             static_cast<unsigned long long>(c.packets), static_cast<unsigned long long>(s.packets));
+                             static_cast<unsigned long long>(c.packets),
+                             static_cast<unsigned long long>(s.packets));
                 failed = 1;
             }
-            if (m == Mode::decode && (c.fields != s.fields || c.errors != 0)) {
-                std::fprintf(stderr, "bench: %s decode: %llu fields (%llu errors), the sidecar says %llu\n", name,
-                             static_cast<unsigned long long>(c.fields), static_cast<unsigned long long>(c.errors),
+            if (m != Mode::frame && (c.fields != s.fields || c.errors != 0)) {
+                std::fprintf(stderr, "bench: %s %s: %llu fields (%llu errors), the sidecar says %llu\n", name,
+                             mode_name, static_cast<unsigned long long>(c.fields),
+                             static_cast<unsigned long long>(c.errors),
                              static_cast<unsigned long long>(s.fields));
                 failed = 1;
             }
-            std::printf("BENCH lang=cpp stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n", name, mode_name,
-                        static_cast<unsigned long long>(c.packets), s.data.size(), best);
+            std::printf("BENCH lang=cpp stream=%s mode=%s packets=%llu bytes=%zu seconds=%.6f\n", name,
+                        mode_name, static_cast<unsigned long long>(c.packets), s.data.size(), best);
             std::fprintf(stderr, "bench: %s %s check %016llx\n", name, mode_name,
                          static_cast<unsigned long long>(c.check));
             std::fflush(stdout);
         }
+    }
+    if (only == nullptr && (only_mode == nullptr || std::strcmp(only_mode, "session-roundtrip") == 0) &&
+        !roundtrip(2000, passes > 3 ? 3 : passes)) {
+        failed = 1;
     }
     return failed;
 }

@@ -58,6 +58,23 @@ struct FieldJsonVisitor {
 
 } // namespace detail
 
+/// The canonical object of one payload entry of a packet of set `set`: a decoded field, a raw
+/// field or trailing bytes.
+inline void write_field_entry_json(JsonWriter &w, std::uint8_t set, const FieldEntry &e,
+                                   const std::optional<Device> &device) {
+    if (e.kind == FieldEntry::Kind::trailing) {
+        w.begin_object();
+        w.key("trailing");
+        w.hex(e.data, e.size);
+        w.key("error");
+        w.string(e.text().c_str());
+        w.end_object();
+        return;
+    }
+    detail::FieldJsonVisitor visitor{w, e.descriptor, e.data, e.size};
+    decode_field(set, e.descriptor, e.data, e.size, device, visitor);
+}
+
 /// {"offset":O,"set":S,"fields":[...]} for one packet (no newline).
 inline void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
                               const std::optional<Device> &device) {
@@ -71,17 +88,7 @@ inline void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketV
     FieldIterator it(packet);
     FieldEntry e;
     while (it.next(e)) {
-        if (e.kind == FieldEntry::Kind::trailing) {
-            w.begin_object();
-            w.key("trailing");
-            w.hex(e.data, e.size);
-            w.key("error");
-            w.string(e.text().c_str());
-            w.end_object();
-            continue;
-        }
-        detail::FieldJsonVisitor visitor{w, e.descriptor, e.data, e.size};
-        decode_field(packet.set(), e.descriptor, e.data, e.size, device, visitor);
+        write_field_entry_json(w, packet.set(), e, device);
     }
     w.end_array();
     w.end_object();

@@ -77,6 +77,26 @@ class StreamParser {
         return skip_count_ > 0 ? skip_offset_ : base_;
     }
 
+    /// True while the parser waits for more input at a candidate (a partial sync, header or packet).
+    bool buffered() const {
+        return len_ > 0;
+    }
+
+    /// Stream offset of the candidate it waits at (when buffered()).
+    std::uint64_t buffered_at() const {
+        return base_;
+    }
+
+    /// The timed rule of docs/conformance.md section 8: the candidate it waits at is a false sync;
+    /// its first byte is skipped and parsing resumes at the next byte (no new input).
+    template <class Handler> void drop_one(Handler &&on_event) {
+        if (len_ == 0) {
+            return;
+        }
+        skip(1);
+        process(on_event, false);
+    }
+
   private:
     /// Bytes the buffered candidate (at buf_[start_]) needs before process() can decide on it.
     std::size_t wanted() const {

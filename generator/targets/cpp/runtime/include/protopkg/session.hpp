@@ -1,0 +1,659 @@
+// Command sessions (docs/conformance.md section 8): the sans-I/O core. The caller gives the current
+// time in milliseconds with every call, sends the bytes start() returns and feeds the bytes it
+// receives; the session matches acks/nacks and their reply fields to the pending commands and
+// reports every other packet. Everything protocol-specific is the generated session_facts.hpp.
+//
+// Storage is fixed: the parser's one maximum packet, a queue of at most N pending commands and at
+// most kMaxHandlers registered handlers. Nothing is allocated while bytes are fed (registering a
+// handler may allocate, once, inside its std::function).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <optional>
+#include <type_traits>
+
+#include "protopkg/devices.hpp"
+#include "protopkg/dispatch.hpp"
+#include "protopkg/packet.hpp"
+#include "protopkg/parser.hpp"
+#include "protopkg/session_facts.hpp"
+#include "protopkg/session_types.hpp"
+
+namespace protopkg {
+
+inline constexpr std::int64_t kDefaultTimeoutMs = 1000;           ///< reply timeout T
+inline constexpr std::int64_t kDefaultInterPacketTimeoutMs = 100; ///< inter-packet timeout P
+inline constexpr std::size_t kDefaultMaxPending = 8;              ///< pending queue capacity
+inline constexpr std::size_t kMaxHandlers = 16;                   ///< per-packet and per-field handlers
+inline constexpr std::size_t kMaxExpected = 4;                    ///< expected reply descriptors per command
+
+/// The outcome of a command.
+enum class Status : std::uint8_t { ack, nack, timeout, invalid, sent, refused };
+
+inline const char *to_string(Status s) {
+    switch (s) {
+    case Status::ack:
+        return "ack";
+    case Status::nack:
+        return "nack";
+    case Status::timeout:
+        return "timeout";
+    case Status::invalid:
+        return "invalid";
+    case Status::sent:
+        return "sent";
+    case Status::refused:
+        return "refused";
+    }
+    return "";
+}
+
+/// The one result of a started command. The reply packet is copied in (`packet`); the reply is
+/// its field entries from payload offset reply_begin up to reply_end.
+struct Result {
+    Status status = Status::refused;
+    const CommandRow *row = nullptr; ///< the command's layout facts
+    std::uint64_t tag = 0;           ///< the tag given to start()
+    bool has_code = false;           ///< ack, nack and invalid carry the ack/nack code
+    std::int64_t code = 0;
+    bool has_error = false; ///< invalid and refused say why
+    ErrorText error{};
+    std::array<std::uint8_t, kMaxExpected> expect{}; ///< expected reply descriptors
+    std::uint8_t expect_count = 0;
+    std::array<std::uint8_t, kMaxPacket> packet{}; ///< the reply packet (ack, nack, invalid)
+    std::size_t packet_size = 0;
+    std::size_t reply_begin = 0;
+    std::size_t reply_end = 0;
+
+    /// ack or sent.
+    bool ok() const {
+        return status == Status::ack || status == Status::sent;
+    }
+    const char *name() const {
+        return row != nullptr ? row->name : "";
+    }
+    PacketView reply_packet() const {
+        return PacketView{packet.data(), packet_size};
+    }
+    /// Calls f(const FieldEntry&) for each entry of the reply, in order.
+    template <class F> void for_each_reply(F &&f) const {
+        if (packet_size == 0) {
+            return;
+        }
+        FieldIterator it(reply_packet());
+        FieldEntry e;
+        while (it.next(e)) {
+            if (e.payload_offset >= reply_begin && e.payload_offset < reply_end) {
+                f(static_cast<const FieldEntry &>(e));
+            }
+        }
+    }
+    /// The reply field of layout T (its descriptor, decoded as T), or nullopt.
+    template <class T> std::optional<T> reply() const {
+        std::optional<T> out;
+        for_each_reply([&](const FieldEntry &e) {
+            if (!out && e.kind == FieldEntry::Kind::field && e.descriptor == T::kDescriptor) {
+                T value{};
+                DecodeError err;
+                if (decode(e.data, e.size, value, err)) {
+                    out = value;
+                }
+            }
+        });
+        return out;
+    }
+    /// "{name}: NACK, code 3", "{name}: no reply before the timeout", "{name}: {error}", ...
+    ErrorText describe() const {
+        ErrorText t;
+        switch (status) {
+        case Status::nack:
+            std::snprintf(t.text.data(), t.text.size(), "%s: NACK, code %lld", name(),
+                          static_cast<long long>(code));
+            break;
+        case Status::timeout:
+            std::snprintf(t.text.data(), t.text.size(), "%s: no reply before the timeout", name());
+            break;
+        case Status::invalid:
+        case Status::refused:
+            // Concatenated by hand: the message may be cut at the buffer's end.
+            append(t, name());
+            append(t, ": ");
+            append(t, error.c_str());
+            break;
+        default:
+            std::snprintf(t.text.data(), t.text.size(), "%s: %s", name(), to_string(status));
+            break;
+        }
+        return t;
+    }
+
+  private:
+    static void append(ErrorText &t, const char *text) {
+        std::size_t n = std::strlen(t.text.data());
+        while (*text != '\0' && n + 1 < t.text.size()) {
+            t.text[n++] = *text++;
+        }
+        t.text[n] = '\0';
+    }
+};
+
+/// One event of feed/poll/close, in stream order.
+struct SessionEvent {
+    enum class Kind : std::uint8_t { result, packet, skip };
+    Kind kind = Kind::packet;
+    const Result *result = nullptr; ///< result events (valid during the callback)
+    std::uint64_t offset = 0;       ///< packet or first skipped byte, counted from the first byte fed
+    std::uint64_t count = 0;        ///< skipped bytes
+    PacketView packet;              ///< packet events (valid during the callback)
+};
+
+/// Per-call options of start().
+struct StartOptions {
+    std::optional<std::int64_t> timeout_ms; ///< the command's reply timeout (else the session's)
+    std::optional<bool> check_device;       ///< refuse what the device does not support (else the session's)
+    std::uint64_t tag = 0;                  ///< copied into the Result
+};
+
+/// What start() did: the bytes to send (`packet`, empty when nothing is to be sent; valid until
+/// the next start) and, when the command completed at once (sent, refused), its result.
+struct Started {
+    PacketView packet;
+    bool complete = false;
+    Result result;
+    std::int64_t deadline = 0;
+};
+
+/// Why `device` does not support `command` (a layout of row `row`), written to `out`; false when it does.
+template <class T> bool support_error(const T &command, std::optional<Device> device, ErrorText &out) {
+    using Traits = CommandTraits<T>;
+    const CommandRow &row = kCommandRows[Traits::kRow];
+    if (!device) {
+        return false;
+    }
+    const auto index = static_cast<std::size_t>(*device);
+    const std::uint32_t bit = std::uint32_t{1} << index;
+    bool listed = false;
+    for (const CommandRow &r : kCommandRows) {
+        if (r.set == row.set && r.descriptor == row.descriptor && (r.devices & bit) != 0) {
+            listed = true;
+        }
+    }
+    if (!listed) {
+        std::snprintf(out.text.data(), out.text.size(), "%s is not supported by %s", row.name,
+                      device_name(*device));
+        return true;
+    }
+    if (row.device >= 0 && static_cast<std::size_t>(row.device) != index) {
+        std::snprintf(out.text.data(), out.text.size(), "%s: this layout is for %s, not %s", row.name,
+                      device_name(kDevices[static_cast<std::size_t>(row.device)]), device_name(*device));
+        return true;
+    }
+    const std::optional<std::int64_t> fn = Traits::function(command);
+    if (row.has_functions && fn) {
+        const bool in_layout = *fn >= 0 && *fn < 64 && ((row.functions >> *fn) & 1U) != 0;
+        const std::uint32_t limited = function_devices(*fn);
+        if (!in_layout || (limited != 0 && (limited & bit) == 0)) {
+            const char *fname = function_name(*fn);
+            if (fname != nullptr) {
+                std::snprintf(out.text.data(), out.text.size(), "function %s of %s is not supported by %s",
+                              fname, row.name, device_name(*device));
+            } else {
+                std::snprintf(out.text.data(), out.text.size(), "function %lld of %s is not supported by %s",
+                              static_cast<long long>(*fn), row.name, device_name(*device));
+            }
+            return true;
+        }
+    }
+    return false;
+}
+
+/// True when the command as given asks the device not to reply (spec `ack_suppressed_by`).
+template <class T> bool ack_suppressed(const T &command) {
+    using Traits = CommandTraits<T>;
+    const CommandRow &row = kCommandRows[Traits::kRow];
+    if (row.ack_kind == 1) {
+        const std::optional<std::int64_t> fn = Traits::function(command);
+        return fn && *fn == row.ack_value;
+    }
+    if (row.ack_kind == 2) {
+        const std::optional<std::int64_t> v = Traits::param(command, row.ack_param);
+        return v && (row.ack_has_value ? *v == row.ack_value : *v != 0);
+    }
+    return false;
+}
+
+/// The extra reply time the spec gives the command as given (spec `timeout`).
+template <class T> std::int64_t allowance_ms(const T &command) {
+    using Traits = CommandTraits<T>;
+    const CommandRow &row = kCommandRows[Traits::kRow];
+    if (!row.has_timeout) {
+        return 0;
+    }
+    if (!row.timeout_all_functions) {
+        const std::optional<std::int64_t> fn = Traits::function(command);
+        if (!fn || *fn < 0 || *fn >= 64 || ((row.timeout_functions >> *fn) & 1U) == 0) {
+            return 0;
+        }
+    }
+    std::int64_t ms = row.timeout_ms;
+    if (row.timeout_param >= 0) {
+        ms += Traits::param(command, row.timeout_param).value_or(0);
+    }
+    return ms;
+}
+
+/// The reply field descriptors the command as given expects with its ack (spec `responses`).
+template <class T>
+std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExpected> &out) {
+    using Traits = CommandTraits<T>;
+    const CommandRow &row = kCommandRows[Traits::kRow];
+    std::uint8_t n = 0;
+    const std::optional<std::int64_t> fn = Traits::function(command);
+    for (std::size_t i = 0; i < row.reply_count && n < kMaxExpected; ++i) {
+        const ReplyRule &r = row.replies[i];
+        if (r.function >= 0 && (!fn || *fn != r.function)) {
+            continue;
+        }
+        if (r.param >= 0) {
+            const std::optional<std::int64_t> v = Traits::param(command, r.param);
+            if (!v || (r.has_value ? *v != r.value : *v == 0)) {
+                continue;
+            }
+        }
+        out[n++] = r.descriptor;
+    }
+    return n;
+}
+
+/// The session core. N: the pending queue's capacity.
+template <std::size_t N = kDefaultMaxPending> class Session {
+    static_assert(N >= 1, "a session needs room for one pending command");
+
+  public:
+    struct Options {
+        std::optional<Device> device;
+        std::int64_t timeout_ms = kDefaultTimeoutMs;
+        std::int64_t inter_packet_timeout_ms = kDefaultInterPacketTimeoutMs;
+        bool check_device = true;
+    };
+
+    Session() = default;
+    explicit Session(const Options &options) : opt_(options) {}
+
+    const std::optional<Device> &device() const {
+        return opt_.device;
+    }
+    std::size_t pending() const {
+        return count_;
+    }
+
+    /// handler(const PacketView&, std::uint64_t offset) for every packet that is not a reply.
+    /// False when kMaxHandlers handlers are registered.
+    bool on_packet(std::function<void(const PacketView &, std::uint64_t)> handler) {
+        if (packet_handlers_ >= kMaxHandlers) {
+            return false;
+        }
+        packet_[packet_handlers_++] = std::move(handler);
+        return true;
+    }
+
+    /// handler(const T&, const PacketView&) for every field (T::kSet, T::kDescriptor) of a packet
+    /// that is not a reply and that decodes as T.
+    template <class T, class F> bool on_field(F handler) {
+        return on_field_data(T::kSet, T::kDescriptor,
+                             [handler](const std::uint8_t *data, std::size_t size, const PacketView &p) {
+                                 T value{};
+                                 DecodeError err;
+                                 if (decode(data, size, value, err)) {
+                                     handler(static_cast<const T &>(value), p);
+                                 }
+                             });
+    }
+
+    /// handler(data, size, packet) for every field (set, descriptor) of a packet that is not a reply.
+    bool on_field_data(std::uint8_t set, std::uint8_t descriptor,
+                       std::function<void(const std::uint8_t *, std::size_t, const PacketView &)> handler) {
+        if (field_handlers_ >= kMaxHandlers) {
+            return false;
+        }
+        field_[field_handlers_++] = FieldHandler{set, descriptor, std::move(handler)};
+        return true;
+    }
+
+    /// Starts a command at `now`: see Started.
+    template <class T> Started start(const T &command, std::int64_t now, const StartOptions &call = {}) {
+        static_assert(CommandTraits<T>::kCommand, "not a command layout");
+        const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
+        Started s;
+        s.result.row = &row;
+        s.result.tag = call.tag;
+        s.result.expect_count = expected_replies(command, s.result.expect);
+        const bool check = call.check_device.value_or(opt_.check_device);
+        if (check && support_error(command, opt_.device, s.result.error)) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            return s;
+        }
+        out_ = PacketBuilder(row.set);
+        if (out_.add(command) != EncodeError::none) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            std::snprintf(s.result.error.text.data(), s.result.error.text.size(), "%s",
+                          to_string(out_.error()));
+            return s;
+        }
+        const PacketView bytes = out_.finish();
+        s.deadline = now + call.timeout_ms.value_or(opt_.timeout_ms) + allowance_ms(command);
+        if (ack_suppressed(command)) {
+            s.packet = bytes;
+            s.complete = true;
+            s.result.status = Status::sent;
+            return s;
+        }
+        if (count_ >= N) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            std::snprintf(s.result.error.text.data(), s.result.error.text.size(),
+                          "%llu commands already pending", static_cast<unsigned long long>(N));
+            return s;
+        }
+        s.packet = bytes;
+        Slot &slot = queue_[count_++];
+        slot.row = &row;
+        slot.deadline = s.deadline;
+        slot.tag = call.tag;
+        slot.expect = s.result.expect;
+        slot.expect_count = s.result.expect_count;
+        return s;
+    }
+
+    /// The earliest time at which poll() has something to do (a timeout or the timed rule).
+    std::optional<std::int64_t> next_deadline() const {
+        std::optional<std::int64_t> t;
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (!t || queue_[i].deadline < *t) {
+                t = queue_[i].deadline;
+            }
+        }
+        if (waiting_) {
+            const std::int64_t w = wait_since_ + opt_.inter_packet_timeout_ms + 1;
+            if (!t || w < *t) {
+                t = w;
+            }
+        }
+        return t;
+    }
+
+    /// Bytes received at `now`; on_event(const SessionEvent&) for each event, in order.
+    template <class Handler>
+    void feed(const std::uint8_t *data, std::size_t size, std::int64_t now, Handler &&on_event) {
+        expire(now, on_event);
+        auto parsed = [&](const StreamEvent &e) { route(e, on_event); };
+        while (waiting_ && parser_.buffered() && wait_at_ == parser_.buffered_at() &&
+               now - wait_since_ > opt_.inter_packet_timeout_ms) {
+            parser_.drop_one(parsed);
+        }
+        if (size > 0) {
+            parser_.feed(data, size, parsed);
+        }
+        if (!parser_.buffered()) {
+            waiting_ = false;
+        } else if (!waiting_ || wait_at_ != parser_.buffered_at()) {
+            waiting_ = true;
+            wait_at_ = parser_.buffered_at();
+            wait_since_ = now;
+        }
+    }
+
+    /// Nothing received: the timeouts and the timed rule at `now`.
+    template <class Handler> void poll(std::int64_t now, Handler &&on_event) {
+        feed(nullptr, 0, now, on_event);
+    }
+
+    /// End of input: poll, then the buffered bytes that are not a complete packet are skipped.
+    template <class Handler> void close(std::int64_t now, Handler &&on_event) {
+        poll(now, on_event);
+        parser_.flush([&](const StreamEvent &e) { route(e, on_event); });
+        waiting_ = false;
+    }
+
+    /// Stream offset from which a caller that prints skipped bytes must keep its input.
+    std::uint64_t retain_from() const {
+        return parser_.retain_from();
+    }
+
+  private:
+    struct Slot {
+        const CommandRow *row = nullptr;
+        std::int64_t deadline = 0;
+        std::uint64_t tag = 0;
+        std::array<std::uint8_t, kMaxExpected> expect{};
+        std::uint8_t expect_count = 0;
+    };
+    struct FieldHandler {
+        std::uint8_t set = 0;
+        std::uint8_t descriptor = 0;
+        std::function<void(const std::uint8_t *, std::size_t, const PacketView &)> call;
+    };
+
+    void remove(std::size_t i) {
+        for (std::size_t j = i; j + 1 < count_; ++j) {
+            queue_[j] = queue_[j + 1];
+        }
+        --count_;
+    }
+
+    void begin_result(const Slot &slot, Status status) {
+        result_.status = status;
+        result_.row = slot.row;
+        result_.tag = slot.tag;
+        result_.has_code = false;
+        result_.code = 0;
+        result_.has_error = false;
+        result_.error.text[0] = '\0';
+        result_.expect = slot.expect;
+        result_.expect_count = slot.expect_count;
+        result_.packet_size = 0;
+        result_.reply_begin = 0;
+        result_.reply_end = 0;
+    }
+
+    template <class Handler> void emit_result(Handler &on_event) {
+        SessionEvent ev;
+        ev.kind = SessionEvent::Kind::result;
+        ev.result = &result_;
+        on_event(static_cast<const SessionEvent &>(ev));
+    }
+
+    template <class Handler> void expire(std::int64_t now, Handler &on_event) {
+        std::size_t i = 0;
+        while (i < count_) {
+            if (now >= queue_[i].deadline) {
+                const Slot slot = queue_[i];
+                remove(i);
+                begin_result(slot, Status::timeout);
+                emit_result(on_event);
+            } else {
+                ++i;
+            }
+        }
+    }
+
+    template <class Handler> void route(const StreamEvent &e, Handler &on_event) {
+        SessionEvent ev;
+        if (e.kind == StreamEvent::Kind::skip) {
+            ev.kind = SessionEvent::Kind::skip;
+            ev.offset = e.offset;
+            ev.count = e.count;
+            on_event(static_cast<const SessionEvent &>(ev));
+            return;
+        }
+        if (count_ > 0 && set_pending(e.packet.set()) && match(e.packet, on_event)) {
+            return;
+        }
+        ev.kind = SessionEvent::Kind::packet;
+        ev.offset = e.offset;
+        ev.packet = e.packet;
+        on_event(static_cast<const SessionEvent &>(ev));
+        for (std::size_t i = 0; i < packet_handlers_; ++i) {
+            packet_[i](e.packet, e.offset);
+        }
+        if (field_handlers_ > 0) {
+            FieldIterator it(e.packet);
+            FieldEntry f;
+            while (it.next(f)) {
+                if (f.kind != FieldEntry::Kind::field) {
+                    continue;
+                }
+                for (std::size_t i = 0; i < field_handlers_; ++i) {
+                    if (field_[i].set == e.packet.set() && field_[i].descriptor == f.descriptor) {
+                        field_[i].call(f.data, f.size, e.packet);
+                    }
+                }
+            }
+        }
+    }
+
+    bool set_pending(std::uint8_t set) const {
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (queue_[i].row->set == set) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// Completes the pending commands this packet answers; false when it answers none.
+    template <class Handler> bool match(const PacketView &packet, Handler &on_event) {
+        if (!kHasAckRule) {
+            return false;
+        }
+        bool any = false;
+        FieldIterator it(packet);
+        FieldEntry e;
+        // The entries of the packet once, remembering where acks start (a packet has at most
+        // kMaxPayload / field header fields).
+        std::array<std::size_t, kMaxPayload / kFieldHeaderSize + 1> starts{};
+        std::array<std::uint8_t, kMaxPayload / kFieldHeaderSize + 1> kinds{}; // 0 other, 1 ack, 2 raw ack
+        std::array<std::uint8_t, kMaxPayload / kFieldHeaderSize + 1> echoes{};
+        std::array<std::int64_t, kMaxPayload / kFieldHeaderSize + 1> codes{};
+        std::size_t n = 0;
+        while (it.next(e) && n < starts.size()) {
+            starts[n] = e.payload_offset;
+            kinds[n] = 0;
+            if (e.kind == FieldEntry::Kind::field && e.descriptor == kAckDescriptor) {
+                kinds[n] = decode_ack(packet.set(), e.data, e.size, opt_.device, echoes[n], codes[n]) ? 1 : 2;
+            }
+            ++n;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (kinds[i] != 1) {
+                continue;
+            }
+            std::size_t q = count_;
+            for (std::size_t j = 0; j < count_; ++j) {
+                if (queue_[j].row->set == packet.set() && queue_[j].row->descriptor == echoes[i]) {
+                    q = j;
+                    break;
+                }
+            }
+            if (q == count_) {
+                continue;
+            }
+            std::size_t end = i + 1;
+            while (end < n && kinds[end] == 0) {
+                ++end;
+            }
+            const Slot slot = queue_[q];
+            remove(q);
+            complete(slot, packet, codes[i], i + 1 < n ? starts[i + 1] : packet.payload_size(),
+                     end < n ? starts[end] : packet.payload_size());
+            emit_result(on_event);
+            any = true;
+        }
+        return any;
+    }
+
+    /// Whether a reply entry decodes (with the session's device), and its error when not.
+    struct ReplyCheck {
+        bool raw_seen = false;
+        DecodeError err;
+        template <class T> void field(const T &) {}
+        void raw(const DecodeError &e) {
+            err = e;
+            raw_seen = true;
+        }
+    };
+
+    void complete(const Slot &slot, const PacketView &packet, std::int64_t code, std::size_t begin,
+                  std::size_t end) {
+        begin_result(slot, Status::ack);
+        result_.has_code = true;
+        result_.code = code;
+        std::memcpy(result_.packet.data(), packet.data, packet.size);
+        result_.packet_size = packet.size;
+        result_.reply_begin = begin;
+        result_.reply_end = end;
+        if (code != kAckOk) {
+            result_.status = Status::nack;
+            return;
+        }
+        bool bad = false;
+        bool found = slot.expect_count == 0;
+        result_.for_each_reply([&](const FieldEntry &f) {
+            if (bad) {
+                return;
+            }
+            if (f.kind == FieldEntry::Kind::trailing) {
+                bad = true;
+                result_.error = f.text();
+                return;
+            }
+            ReplyCheck check;
+            decode_field(packet.set(), f.descriptor, f.data, f.size, opt_.device, check);
+            if (check.raw_seen) {
+                bad = true;
+                result_.error = check.err.text();
+                return;
+            }
+            for (std::size_t k = 0; k < slot.expect_count; ++k) {
+                if (slot.expect[k] == f.descriptor) {
+                    found = true;
+                }
+            }
+        });
+        if (bad) {
+            result_.status = Status::invalid;
+            result_.has_error = true;
+        } else if (!found) {
+            result_.status = Status::invalid;
+            result_.has_error = true;
+            std::snprintf(result_.error.text.data(), result_.error.text.size(), "missing reply field %u",
+                          static_cast<unsigned>(slot.expect[0]));
+        }
+    }
+
+    Options opt_{};
+    StreamParser parser_;
+    bool waiting_ = false;
+    std::uint64_t wait_at_ = 0;
+    std::int64_t wait_since_ = 0;
+    std::array<Slot, N> queue_{};
+    std::size_t count_ = 0;
+    Result result_{};
+    PacketBuilder out_{0};
+    std::array<std::function<void(const PacketView &, std::uint64_t)>, kMaxHandlers> packet_{};
+    std::size_t packet_handlers_ = 0;
+    std::array<FieldHandler, kMaxHandlers> field_{};
+    std::size_t field_handlers_ = 0;
+};
+
+} // namespace protopkg
