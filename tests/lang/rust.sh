@@ -23,7 +23,7 @@
 #   tests/lang/rust.sh decode FILE [--device ID]  run <package>-decode (FILE may be -)
 #   tests/lang/rust.sh encode                     run <package>-encode (stdin -> stdout)
 #   tests/lang/rust.sh example FILE               cargo run --example getting_started -- FILE
-#   tests/lang/rust.sh configure ADDRESS [COUNT]  cargo run --example configure_and_stream -- ADDRESS [COUNT]
+#   tests/lang/rust.sh configure ADDRESS [COUNT]  cargo run --features serial --example configure_and_stream -- ADDRESS [COUNT]
 #   tests/lang/rust.sh session --connect ADDRESS ...  run <package>-session, the session tool
 #                                                 (docs/conformance.md section 8)
 # The crate for decode/encode/example/configure is $RUST_PACKAGE (default: mipcodec). Works from any directory.
@@ -294,7 +294,8 @@ session)
     exec "$CARGO_TARGET_DIR/release/$PACKAGE-session" "$@"
     ;;
 configure)
-    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --example configure_and_stream -- "$@"
+    # With the `serial` feature: ADDRESS may be a serial port or a pseudo-terminal (the simulator's).
+    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --features serial --example configure_and_stream -- "$@"
     ;;
 example)
     # cargo run (not the binary under target/): both crates' examples are named getting_started.
