@@ -10,7 +10,7 @@ field (default values); after the stream enable it sends COUNT + 2 data packets 
 example's data fields, each after a stray byte the session must skip. The test checks the
 commands the program sent (set, descriptor, function, the values it wrote), its output (one
 `device`, one `setting` line, one line per data field of the first COUNT packets, each naming
-the parameters it prints, `name=value` or `name: value`) and its exit
+the parameters it prints, `name=value`, `name: value` or `"name":value`) and its exit
 status; then that a NACK ends it with status 1 and a message, that bad usage exits 2, and that
 the source marks the parts the documentation quotes.
 """
@@ -154,16 +154,16 @@ def test_configure_and_stream(lang, protocol):
     names = [f["name"] for f in ex["data"]["fields"]]
     assert [ln.split()[0] for ln in lines[2:]] == names * COUNT, r.stdout
     # Every parameter of the setting's reply and of each data field is printed with its name
-    # (name=value; Rust's Debug: name: value).
+    # (name=value; Rust's Debug: name: value; C++'s JSON: "name":value).
     setting = ex["setting"]
     rid = _reply_ids(setting["variant"], "read")[0]
     reply = next(f for f in setting["set"]["fields"] if f["id"] == rid)
     for q in device_variant(proto, reply, ex["device"])["params"]:
-        assert re.search(rf"\b{q['name']}\s*[=:]", lines[1]), (q["name"], lines[1])
+        assert re.search(rf"\b{q['name']}\"?\s*[=:]", lines[1]), (q["name"], lines[1])
     fields = {f["name"]: device_variant(proto, f, ex["device"]) for f in ex["data"]["fields"]}
     for ln in lines[2:]:
         for q in fields[ln.split()[0]]["params"]:
-            assert re.search(rf"\b{q['name']}\s*[=:]", ln), (q["name"], ln)
+            assert re.search(rf"\b{q['name']}\"?\s*[=:]", ln), (q["name"], ln)
 
 
 @pytest.mark.parametrize("lang,protocol", CASES, ids=[f"{a}-{b}" for a, b in CASES])
