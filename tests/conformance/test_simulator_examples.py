@@ -26,8 +26,8 @@ GRAVITY = {"g": 1.0, "m/s^2": 9.80665, "m/s/s": 9.80665, "m/s²": 9.80665}
 
 
 def values_of(line: str, name: str) -> list[float]:
-    """The numbers printed for parameter `name` (`name=...` or Rust's `name: ...`; a list in [])."""
-    m = re.search(rf"\b{name}\s*[=:]\s*(\[[^\]]*\]|{NUMBER})", line)
+    """The numbers printed for parameter `name` (`name=...`, Rust's `name: ...`, JSON's `"name":...`; a list in [])."""
+    m = re.search(rf"\b{name}\"?\s*[=:]\s*(\[[^\]]*\]|{NUMBER})", line)
     assert m, (name, line)
     return [float(x) for x in re.findall(NUMBER, m.group(1))]
 
