@@ -125,7 +125,8 @@ def _find(protocol: dict, set_name: str, field_name: str) -> tuple[dict, dict]:
     )
 
 
-def _variant(protocol: dict, field: dict, device: str) -> dict:
+def device_variant(protocol: dict, field: dict, device: str) -> dict:
+    """The layout of field for device (a per-device variant, or the one shared by all)."""
     for v in field["variants"]:
         if v["device"] is None or v["device"] == device:
             return v
@@ -146,7 +147,7 @@ def session_example(protocol: dict) -> dict | None:
     for step in ("ping", "info", "setting", "format", "enable"):
         set_name, field_name, *rest = table[step]
         s, f = _find(protocol, set_name, field_name)
-        v = _variant(protocol, f, device)
+        v = device_variant(protocol, f, device)
         values = rest[0] if rest else {}
         names = {q["name"] for q in v["params"]}
         unknown = sorted(set(values) - names)

@@ -19,6 +19,8 @@ EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
 EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 SESSION_EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{SESSION_PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}
+# The variable that picks the package of tests/lang/<lang>.sh (default mipcodec).
+RUN_PACKAGE_VARS = {"c": "C_PACKAGE", "cpp": "CPP_PACKAGE", "python": "PY_PACKAGE", "rust": "RUST_PACKAGE"}
 SESSION_TITLES = {
     "connect": "Connect and identify the device",
     "configure": "Write and read a setting",
@@ -134,7 +136,7 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
             if part == "connect":
                 pg.p(
                     "Open the transport with the device model selected: a command the model does not support is "
-                    "refused before it is sent. Each call returns the typed reply or raises (a NACK with its error "
+                    "refused before it is sent. Each call gives the typed reply or fails (a NACK with its error "
                     "code, a timeout, a refusal)."
                 )
             elif part == "configure":
@@ -147,6 +149,38 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
                 )
             pg.code(snippet(source, part), lang)
         pg.p(f"The whole program: `generated/{rel}`.")
+        simulator_section(pg, lang, p, ex)
+
+
+def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
+    """How to run the example against the simulated device, over TCP and a pseudo-terminal."""
+    pg.h(4, "Run it against the simulator", f"{CONFIGURE_ANCHOR}-{p['name']}-simulator")
+    pkg = p["package"]
+    title = next((d["title"] for d in p["devices"] if d["id"] == ex["device"]), ex["device"])
+    pg.p(
+        f"Without the hardware, run the program against the simulated {title} (`python -m {pkg}.sim`; in "
+        "this repository `tests/conformance/simulate`, docs/conformance.md section 9): it answers every "
+        "command as the device does, keeps the setting the program writes and streams the data it enables. "
+        f"Start it, then give the address it prints first to the program; `tests/lang/{lang}.sh configure "
+        "ADDRESS [COUNT]` builds and runs this example (`tests/conformance/test_simulator_examples.py` runs "
+        "both, over TCP and a pseudo-terminal)"
+        + (
+            ", with the crate's `serial` feature that serial ports and pseudo-terminals need"
+            " (`cargo run --features serial --example configure_and_stream -- ADDRESS`):"
+            if lang == "rust"
+            else ":"
+        )
+    )
+    select = "" if pkg == "mipcodec" else f"{RUN_PACKAGE_VARS[lang]}={pkg} "
+    sim = f"tests/conformance/simulate --protocol {p['name']} --device {ex['device']}"
+    run = f"{select}tests/lang/{lang}.sh configure"
+    pg.code(
+        f"{sim} --listen tcp:127.0.0.1:0 &   # prints tcp:127.0.0.1:PORT\n"
+        f"{run} tcp:127.0.0.1:PORT 5\n"
+        f"{sim} --listen pty &               # prints the pty's path, e.g. /dev/pts/3\n"
+        f"{run} /dev/pts/3 5",
+        "sh",
+    )
 
 
 def add_pages(docs: Docs) -> None:

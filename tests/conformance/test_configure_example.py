@@ -7,21 +7,24 @@ The script is derived from the spec alone: for each step of the example (ping, d
 information, setting write and read, message format, stream enable) the device reads one
 command and answers with its ack and, where the spec gives the command a reply field, that
 field (default values); after the stream enable it sends COUNT + 2 data packets with the
-example's data fields. The test checks the commands the program sent (set, descriptor, function,
-the values it wrote), its output (one `device`, one `setting` line, one line per data field of
-the first COUNT packets) and its exit status; then that a NACK ends it with status 1 and a
-message, and that bad usage exits 2.
+example's data fields, each after a stray byte the session must skip. The test checks the
+commands the program sent (set, descriptor, function, the values it wrote), its output (one
+`device`, one `setting` line, one line per data field of the first COUNT packets, each naming
+the parameters it prints, `name=value`, `name: value` or `"name":value`) and its exit
+status; then that a NACK ends it with status 1 and a message, that bad usage exits 2, and that
+the source marks the parts the documentation quotes.
 """
 
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 from pathlib import Path
 
 import pytest
 
-from generator.examples import session_example
+from generator.examples import SESSION_PARTS, device_variant, session_example
 from generator.spec import load_spec
 from tests.conformance.fake_device import FakeDevice
 from tests.helpers.generated import python_package
@@ -109,7 +112,7 @@ def script(protocol: dict, nack_at: int | None = None) -> tuple[dict, list[tuple
         data = pkg.PacketBuilder(ex["data"]["set"]["id"])
         for f in ex["data"]["fields"]:
             data.add(pkg.registry.lookup(ex["data"]["set"]["id"], f["id"])[0]())
-        steps.append({"receive": data.build().hex() * (COUNT + 2), "at": at + 1})
+        steps.append({"receive": ("00" + data.build().hex()) * (COUNT + 2), "at": at + 1})
     return {"steps": steps, "expect": []}, plan
 
 
@@ -124,6 +127,8 @@ def test_configure_and_stream(lang, protocol):
     proto = PROTOCOLS[protocol]
     case, plan = script(proto)
     framing = proto["framing"]
+    built = run_example(lang, protocol, timeout=1800)  # builds the program: the fake device waits 30 s
+    assert built.returncode == 2 and "usage" in built.stderr, built.stderr
     dev = FakeDevice(case, framing).start()
     r = run_example(lang, protocol, f"tcp:127.0.0.1:{dev.port}", str(COUNT))
     dev.join(30)
@@ -148,6 +153,17 @@ def test_configure_and_stream(lang, protocol):
     assert lines[0].startswith("device ") and lines[1].startswith("setting ")
     names = [f["name"] for f in ex["data"]["fields"]]
     assert [ln.split()[0] for ln in lines[2:]] == names * COUNT, r.stdout
+    # Every parameter of the setting's reply and of each data field is printed with its name
+    # (name=value; Rust's Debug: name: value; C++'s JSON: "name":value).
+    setting = ex["setting"]
+    rid = _reply_ids(setting["variant"], "read")[0]
+    reply = next(f for f in setting["set"]["fields"] if f["id"] == rid)
+    for q in device_variant(proto, reply, ex["device"])["params"]:
+        assert re.search(rf"\b{q['name']}\"?\s*[=:]", lines[1]), (q["name"], lines[1])
+    fields = {f["name"]: device_variant(proto, f, ex["device"]) for f in ex["data"]["fields"]}
+    for ln in lines[2:]:
+        for q in fields[ln.split()[0]]["params"]:
+            assert re.search(rf"\b{q['name']}\"?\s*[=:]", ln), (q["name"], ln)
 
 
 @pytest.mark.parametrize("lang,protocol", CASES, ids=[f"{a}-{b}" for a, b in CASES])
@@ -164,3 +180,17 @@ def test_configure_and_stream_nack_and_usage(lang, protocol):
     assert r.returncode == 2 and "usage" in r.stderr
     r = run_example(lang, protocol, "tcp:127.0.0.1:1")
     assert r.returncode == 1 and "Traceback" not in r.stderr and r.stderr.strip()
+    r = run_example(lang, protocol, "tcp:127.0.0.1:1", "many")
+    assert r.returncode == 2 and "usage" in r.stderr
+
+
+@pytest.mark.parametrize("lang,protocol", CASES, ids=[f"{a}-{b}" for a, b in CASES])
+def test_configure_example_marks_its_parts(lang, protocol):
+    """Each part the documentation cuts (generator/examples.py SESSION_PARTS) opens once with a
+    `[part]` comment line and is closed by an `[end]` line before the next part opens."""
+    pkg = PROTOCOLS[protocol]["package"]
+    text = (ROOT / "generated" / lang / pkg / "examples" / f"configure_and_stream.{EXTENSIONS[lang]}").read_text()
+    comments = [ln.split()[-1] for ln in text.splitlines() if ln.strip()[:2] in ("//", "# ")]
+    marks = [m for m in comments if m in [f"[{part}]" for part in SESSION_PARTS + ("end",)]]
+    assert sorted(marks[0::2]) == sorted(f"[{part}]" for part in SESSION_PARTS), marks
+    assert marks[1::2] == ["[end]"] * len(SESSION_PARTS), marks

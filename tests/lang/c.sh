@@ -7,7 +7,9 @@
 #   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
 #   tests/lang/c.sh example FILE                  run <package>-getting-started FILE (builds first if needed)
 #   tests/lang/c.sh session --connect ADDRESS ...  run <package>-session (docs/conformance.md section 8)
-# decode/encode/example use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
+#   tests/lang/c.sh configure ADDRESS [COUNT]     run <package>-configure-and-stream (examples/configure_and_stream.c,
+#                                                 built with the package's posix module when missing or out of date)
+# decode/encode/example/configure use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
 # output goes to stderr so that decode/encode keep stdout clean.
 set -euo pipefail
 
@@ -99,8 +101,17 @@ ensure_example() {
     build_one "$PACKAGE"
 }
 
+# Configures package $1 when needed and builds only its target $2.
+build_target() {
+    local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
+    if [ ! -f "$out/build.ninja" ]; then
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" >&2
+    fi
+    cmake --build "$out" --target "$2" >&2
+}
+
 usage() {
-    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ..." >&2
+    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ... | configure ADDRESS [COUNT]" >&2
     exit 2
 }
 
@@ -139,6 +150,10 @@ session)
         build_one "$PACKAGE"
     fi
     exec "$out/$PACKAGE-session" "$@"
+    ;;
+configure)
+    build_target "$PACKAGE" "${PACKAGE}_c_configure_and_stream"
+    exec "$ROOT/build/c/$PACKAGE/$PACKAGE-configure-and-stream" "$@"
     ;;
 example)
     ensure_example

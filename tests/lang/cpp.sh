@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
-# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE
+# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]
 # Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites (after
 # the runtime's own tests, in place: generator/targets/cpp/runtime/tests/ into build/cpp-runtime/), or
 # runs the decode/encode/session tools or the getting-started example (<package>-getting-started FILE),
 # building them first when needed; `runtime` runs only the runtime's in-place checks. Works from any
 # directory.
-# CPP_PACKAGE selects the package for decode/encode/example (default: mipcodec).
+# CPP_PACKAGE selects the package for decode/encode/example/configure (default: mipcodec).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
 
-usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE" >&2; exit 2; }
+usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]" >&2; exit 2; }
 
 packages() {
   local d
@@ -108,10 +108,11 @@ case "$cmd" in
     exe="$(tool session)"
     exec "$exe" "$@"
     ;;
-  configure-and-stream-build)
-    # Builds the configure-and-stream example (examples/configure_and_stream.cpp); prints its path.
+  configure)
+    # The configure-and-stream example (examples/configure_and_stream.cpp): ADDRESS [COUNT].
     mkdir -p "$ROOT/build/cpp"
-    tool configure-and-stream
+    exe="$(tool configure-and-stream)"
+    exec "$exe" "$@"
     ;;
   example)
     mkdir -p "$ROOT/build/cpp"

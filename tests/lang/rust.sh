@@ -23,9 +23,10 @@
 #   tests/lang/rust.sh decode FILE [--device ID]  run <package>-decode (FILE may be -)
 #   tests/lang/rust.sh encode                     run <package>-encode (stdin -> stdout)
 #   tests/lang/rust.sh example FILE               cargo run --example getting_started -- FILE
+#   tests/lang/rust.sh configure ADDRESS [COUNT]  cargo run --features serial --example configure_and_stream -- ADDRESS [COUNT]
 #   tests/lang/rust.sh session --connect ADDRESS ...  run <package>-session, the session tool
 #                                                 (docs/conformance.md section 8)
-# The crate for decode/encode/example is $RUST_PACKAGE (default: mipcodec). Works from any directory.
+# The crate for decode/encode/example/configure is $RUST_PACKAGE (default: mipcodec). Works from any directory.
 # Target directories live under build/rust/ (never in generated/); cargo output goes to stderr.
 set -euo pipefail
 
@@ -48,7 +49,7 @@ EMBEDDED_TARGET_DIR="$ROOT/build/rust/target-embedded"
 MSRV_TARGET_DIR="$ROOT/build/rust/target-msrv"
 
 usage() {
-    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE" >&2
+    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT]" >&2
     exit 2
 }
 
@@ -291,6 +292,10 @@ encode)
 session)
     ensure_built
     exec "$CARGO_TARGET_DIR/release/$PACKAGE-session" "$@"
+    ;;
+configure)
+    # With the `serial` feature: ADDRESS may be a serial port or a pseudo-terminal (the simulator's).
+    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --features serial --example configure_and_stream -- "$@"
     ;;
 example)
     # cargo run (not the binary under target/): both crates' examples are named getting_started.

@@ -11,7 +11,7 @@ import re
 
 from generator import model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import example_context
+from generator.examples import ExampleError, device_variant, example_context, session_example
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -745,7 +745,7 @@ class _Package:
             ctype = view["e"]["ctype"]
             c = view["c"]
             arg = c + "_" if c in ("link", "reply") else c
-            a = {"c": c, "arg": arg, "has": view["has"], "kind": q.kind}
+            a = {"name": q.name, "c": c, "arg": arg, "has": view["has"], "kind": q.kind}
             if q.kind == model.SCALAR and q.elem.kind in ("struct", "union") or q.kind == model.UNION:
                 a["decl"] = f"const {ctype} *{arg}"
                 a["how"] = "struct"
@@ -767,6 +767,7 @@ class _Package:
                 if q.kind == model.COUNTED:
                     cq = next(x for x in lay.params if x.name == q.count_param)
                     a["count_ctype"] = views[cq.name]["e"]["ctype"]
+                    a["count_has"] = views[cq.name]["has"]  # an optional count is present when sent
             args.append(a)
         return args
 
@@ -790,56 +791,195 @@ class _Package:
         return {"value": False, "ctype": lv["c"], "fn": lv["fn"], "descriptor": f"0x{ids[0]:02X}"}
 
     def stream_example(self) -> dict | None:
-        """What examples/configure_and_stream.c calls for this protocol (None: no such example):
-        the device it talks to, the device-information read, one setting written and read back,
-        and the command that starts the data stream. The commands are named here, per protocol,
-        and checked against the generated API."""
-        p, P = self.p, self.P
-        choices = {
-            "mip": {
-                "device": "cv7_ins",
-                "ping": f"{p}_base_ping",
-                "info": (f"{p}_base_get_device_info", f"{p}_base_device_info_t", "info.info.model_name"),
-                "write": (f"{p}_threedm_sensor_to_vehicle_euler_write", "0.0f, 0.0f, 1.5708f"),
-                "read": (
-                    f"{p}_threedm_sensor_to_vehicle_euler_read",
-                    f"{p}_threedm_sensor_to_vehicle_euler_response_t",
-                    "sensor to vehicle: roll %.4f pitch %.4f yaw %.4f",
-                    "(double)setting.roll, (double)setting.pitch, (double)setting.yaw",
-                ),
-                "enable": (f"{p}_threedm_data_stream_control_write_cv7_ins", "0x80, true"),
-            },
-            "mscip": {
-                "device": None,
-                "ping": f"{p}_base_ping",
-                "info": (f"{p}_base_get_device_model", f"{p}_base_device_model_t", "info.model"),
-                "write": (f"{p}_imu_config_sample_rate_write", "4"),
-                "read": (
-                    f"{p}_imu_config_sample_rate_read",
-                    f"{p}_imu_config_sample_rate_response_t",
-                    "sample rate decimation: %u",
-                    "(unsigned)setting.decimation",
-                ),
-                "enable": (f"{p}_imu_config_data_on_off_write", f"{P}_ON_OFF_ON"),
-            },
-        }
-        c = choices.get(self.proto["name"])
-        if c is None:
+        """The configure-and-stream example (generator/examples.py session_example) as C: for
+        each step the typed command function (commands.h) with its arguments as C literals (and
+        the constant arrays or structs they point to), the printf format and arguments of the
+        replies and data fields it prints, and the handlers of the data fields. None when the
+        protocol has no such example."""
+        ex = session_example(self.proto)
+        if ex is None:
             return None
-        names = {x["name"] for x in self.command_api()}
-        for key in ("ping", "info", "write", "read", "enable"):
-            name = c[key] if isinstance(c[key], str) else c[key][0]
-            if name not in names:
-                raise BackendError(f"C back end: the configure-and-stream example calls {name}, which is not generated")
+        P = self.P
+        device = ex["device"]
+        device_c = f"{P}_DEVICE_{device.upper()}"
+        api = self.command_api()
+
+        def function(step: str, fn: str | None) -> dict:
+            st = ex[step]
+            rows = [
+                r
+                for r in api
+                if r["field"] == (st["set"]["id"], st["field"]["name"])
+                and r["fn"] == fn
+                and any(lay["device_c"] in (device_c, f"{P}_DEVICE_ANY") for lay in r["layouts"])
+            ]
+            if not rows:
+                raise ExampleError(
+                    f"C back end: the configure-and-stream example needs {st['field']['name']}"
+                    f"{' ' + fn if fn else ''} for {device}, which the command API does not have"
+                )
+            return rows[0]
+
+        def call(step: str, fn: str | None) -> dict:
+            """The call of one step: function, arguments (after the link), constants they use."""
+            st = ex[step]
+            row = function(step, fn)
+            types = {q["name"]: q["type"] for q in st["variant"]["params"]}
+            args, consts = [], []
+            for a in row["args"]:
+                if fn not in (None, "write") or a["name"] not in st["values"]:
+                    raise ExampleError(
+                        f"C back end: the configure-and-stream example gives no value for {a['name']} of"
+                        f" {row['name']} (generator/examples.py SESSION_EXAMPLES)"
+                    )
+                value, tref = st["values"][a["name"]], types[a["name"]]
+                if a["how"] == "value":
+                    args.append(self._literal(tref, value))
+                    continue
+                if a["how"] == "struct":
+                    consts.append(f"static const {self._c_type(tref)} {a['arg']} = {self._literal(tref, value)};")
+                    args.append(f"&{a['arg']}")
+                    continue
+                items = ", ".join(self._literal(tref, v) for v in value)
+                if tref["kind"] == "primitive" and tref["name"] == "char":
+                    args.append(_c_string(value))
+                    continue
+                consts.append(f"static const {self._c_type(tref)} {a['arg']}[] = {{{items}}};")
+                args.append(a["arg"])
+                if a["how"] in ("counted", "remaining"):
+                    args.append(f"{len(value)}u")
+            what = f"{st['set']['name']}.{st['field']['name']}" + (f" {fn}" if fn else "")
+            return {"fn": row["name"], "args": "".join(", " + x for x in args), "consts": consts, "what": what}
+
+        def fn_of(step: str) -> str | None:
+            return "write" if ex[step]["field"]["functions"] else None
+
+        def reply(step: str, fn: str | None, var: str) -> dict:
+            r = function(step, fn)["reply"]
+            if r is None or r["value"]:
+                raise ExampleError(f"C back end: {ex[step]['field']['name']} has no typed reply to print")
+            lv = next(lay for lay in self.layouts if lay["c"] == r["ctype"])
+            return {"ctype": r["ctype"], **self._printf(self._layout_params(lv), var + ".")}
+
+        data_set = ex["data"]["set"]
+        fields = []
+        for f in ex["data"]["fields"]:
+            v = device_variant(self.proto, f, device)
+            lv = self._layout_of(data_set, f, v)
+            printed = self._printf(model.params(self.proto, v["params"], v["functions"]).params, "v->")
+            fields.append(
+                {
+                    "name": f["name"],
+                    "descriptor": f"0x{f['id']:02X}",
+                    "handler": f"on_{f['name']}",
+                    "ctype": lv["c"],
+                    "member": lv["member"],
+                    "id": lv["id"] if len(f["variants"]) > 1 else None,
+                    **printed,
+                }
+            )
         return {
-            "device_c": f"{P}_DEVICE_{c['device'].upper()}" if c["device"] else f"{P}_DEVICE_ANY",
-            "device": c["device"],
-            "ping": c["ping"],
-            "info": {"fn": c["info"][0], "ctype": c["info"][1], "text": c["info"][2]},
-            "write": {"fn": c["write"][0], "args": c["write"][1]},
-            "read": {"fn": c["read"][0], "ctype": c["read"][1], "format": c["read"][2], "args": c["read"][3]},
-            "enable": {"fn": c["enable"][0], "args": c["enable"][1]},
+            "program": ex["program"],
+            "count": ex["count"],
+            "device": device,
+            "device_c": device_c,
+            "ping": call("ping", None),
+            "info": {**call("info", None), **reply("info", None, "info")},
+            "info_title": ex["info"]["field"]["title"],
+            "setting_title": ex["setting"]["field"]["title"],
+            "setting_write": call("setting", "write"),
+            "setting_read": {**call("setting", "read"), **reply("setting", "read", "setting")},
+            "format_title": ex["format"]["field"]["title"],
+            "format": call("format", fn_of("format")),
+            "enable_title": ex["enable"]["field"]["title"],
+            "enable": call("enable", fn_of("enable")),
+            "data_set": f"0x{data_set['id']:02X}",
+            "data_set_title": data_set["title"],
+            "data_fields": fields,
         }
+
+    def _layout_of(self, s: dict, f: dict, v: dict) -> dict:
+        """The C layout view of variant v of field f of set s."""
+        sv = next(x for x in self.sets if x["id"] == s["id"])
+        fv = next(x for x in sv["fields"] if x["descriptor"] == f["id"])
+        return fv["layouts"][f["variants"].index(v)]
+
+    def _layout_params(self, lv: dict) -> tuple:
+        """The parameters (layout model) of the IR layout behind a C layout view."""
+        for s in self.proto["sets"]:
+            for f in s["fields"]:
+                for v in f["variants"]:
+                    if self._layout_of(s, f, v) is lv:
+                        return model.params(self.proto, v["params"], v["functions"]).params
+        raise BackendError(f"C back end: no layout {lv['c']}")
+
+    def _c_type(self, tref: dict) -> str:
+        return _PRIM[tref["name"]][0] if tref["kind"] == "primitive" else self.type_c(tref["name"])
+
+    def _literal(self, tref: dict, value, hex_ok: bool = True) -> str:
+        """A value of the example table as a C initializer of type tref (integers from 0x10 in
+        hex, as the Python example writes them, except the members of a struct)."""
+        kind = tref["kind"]
+        if kind == "struct":
+            t = self.types[tref["name"]]
+            qs = {q["name"]: q["type"] for q in t["params"]}
+            return "{" + ", ".join(f".{member(k)} = {self._literal(qs[k], x, False)}" for k, x in value.items()) + "}"
+        if kind == "enum":
+            number = self._int_value(tref, value)
+            view = next(t for t in self.type_views if t["name"] == tref["name"])
+            t = self.types[tref["name"]]
+            for tv, vv in zip(t["values"], view["values"]):
+                if tv["value"] == number:
+                    return vv["macro"]
+            return f"({view['c']}){number}"
+        if kind == "primitive" and tref["name"] == "bool":
+            return "true" if value else "false"
+        if kind == "primitive" and tref["name"] in ("float", "double"):
+            return repr(float(value)) + ("f" if tref["name"] == "float" else "")
+        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
+            return f"0x{value:02X}" if value >= 0x10 and hex_ok else str(value)
+        raise ExampleError(f"C back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+
+    def _printf(self, params, prefix: str) -> dict:
+        """printf format and arguments printing parameters as `name=value` pairs (arrays in
+        brackets, strings in quotes), reading them from the C expression prefix + member."""
+        fmt: list[str] = []
+        args: list[str] = []
+
+        def scalar(e: model.Elem, expr: str) -> str:
+            if e.kind in ("struct", "union") or e.primitive is None:
+                raise ExampleError(f"C back end: the configure-and-stream example cannot print {expr}")
+            if e.primitive == "bool":
+                args.append(f'{expr} ? "true" : "false"')
+                return "%s"
+            if e.primitive in ("float", "double"):
+                args.append(f"(double){expr}")
+                return "%g"
+            if PRIMITIVES[e.primitive][2]:
+                args.append(f"(long long){expr}")
+                return "%lld"
+            args.append(f"(unsigned long long){expr}")
+            return "%llu"
+
+        def walk(qs, pre: str, label: str) -> None:
+            for q in qs:
+                if q.optional or q.kind not in (model.SCALAR, model.FIXED, model.STRING) or q.function:
+                    raise ExampleError(f"C back end: the configure-and-stream example cannot print {q.name}")
+                expr = pre + member(q.name)
+                name = label + q.name
+                if q.kind == model.STRING:
+                    fmt.append(f'{name}=\\"%.*s\\"')
+                    args.extend([f"(int)sizeof {expr}", expr])
+                elif q.kind == model.FIXED:
+                    fmt.append(f"{name}=[" + ", ".join(scalar(q.elem, f"{expr}[{i}]") for i in range(q.count)) + "]")
+                elif q.elem.kind == "struct":
+                    t = self.types[q.elem.name]
+                    walk(model.params(self.proto, t["params"], None).params, expr + ".", name + ".")
+                else:
+                    fmt.append(f"{name}={scalar(q.elem, expr)}")
+
+        walk(params, prefix, "")
+        return {"format": " ".join(fmt), "printf_args": "".join(", " + a for a in args)}
 
     def context(self) -> dict:
         return {

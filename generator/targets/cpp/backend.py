@@ -30,7 +30,7 @@ import re
 
 from generator import model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import example_context
+from generator.examples import ExampleError, example_context, session_example
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -836,15 +836,13 @@ def session_context(P: _Proto) -> dict:
 def _load_sessions(ir: dict) -> list[dict]:
     """The project's session corpus (tests/sessions/), or none when the IR is not the project's
     (a spec given with --spec: its protocols do not match the corpus)."""
+    from pathlib import Path
 
     from generator.diagnostics import SpecErrors
     from generator.sessions import load_sessions
 
     try:
-        from generator.resources import sessions_dir
-
-        root = sessions_dir()
-        return load_sessions(ir, root) if root else []
+        return load_sessions(ir, Path(__file__).resolve().parents[3] / "tests" / "sessions")
     except (SpecErrors, KeyError, TypeError, ValueError):
         return []
 
@@ -957,6 +955,7 @@ def _cpp_signature(v: dict, fn: str | None, fenum: str | None, type_: str) -> di
     counted = {q["count"]["param"]: q for q in v["params"] if q["count"] and q["count"]["kind"] == "param"}
     args = []
     sets = []
+    counts: list[str] = []
     if fn is not None:  # the function selector (generator/model.py function_param), sent first
         sets.append(f"v.function = ::{type_.split('::')[1]}::types::{fenum}::{ident(fn)};")
     for q in v["params"]:
@@ -966,7 +965,8 @@ def _cpp_signature(v: dict, fn: str | None, fenum: str | None, type_: str) -> di
         if q["name"] in counted:
             arr = ident(counted[q["name"]]["name"])
             size = f"v.{arr} ? v.{arr}->size() : 0" if counted[q["name"]]["optional"] else f"v.{arr}.size()"
-            sets.append(f"v.{m} = static_cast<std::remove_reference_t<decltype(v.{m})>>({size});")
+            # set after the array itself (below), which it counts
+            counts.append(f"v.{m} = static_cast<std::remove_reference_t<decltype(v.{m})>>({size});")
             continue
         required = (q["functions"] is not None and fn not in (q["optional_for"] or [])) or not q["optional"]
         member = f"decltype({type_}::{m})"
@@ -978,7 +978,7 @@ def _cpp_signature(v: dict, fn: str | None, fenum: str | None, type_: str) -> di
         args.append({"name": m, "decl": decl, "required": required, "key": key})
         sets.append(f"v.{m} = {m};")
     args = [a for a in args if a["required"]] + [a for a in args if not a["required"]]
-    return {"args": args, "sets": [x for x in sets if x]}
+    return {"args": args, "sets": [x for x in sets + counts if x]}
 
 
 def _cpp_reply(P: _Proto, s: dict, group: list[dict], fn: str | None, by_id: dict, names: dict) -> str | None:
@@ -997,28 +997,100 @@ def _cpp_reply(P: _Proto, s: dict, group: list[dict], fn: str | None, by_id: dic
 
 
 def configure_example(P: _Proto) -> dict | None:
-    """The configure-and-stream example's calls (examples/configure_and_stream.cpp.j2), for a
-    protocol with a ping, a device-information command, the sensor-to-vehicle rotation and a data
-    stream switch (MIP); None for the others (no example)."""
-    cmds = {
-        f["name"]: (s, f) for s in P.p["sets"] if s["kind"] == "command" for f in s["fields"] if f["role"] == "command"
-    }
-    need = ("ping", "get_device_info", "sensor_to_vehicle_euler", "data_stream_control")
-    if not all(n in cmds for n in need):
+    """The configure-and-stream example (generator/examples.py session_example) as calls of the
+    typed command API (commands.hpp) with literal arguments (and the bounded vectors they fill),
+    the reply and data-field structs it prints as canonical JSON; None for a protocol without
+    the example."""
+    ex = session_example(P.p)
+    if ex is None:
         return None
-    device = "cv7_ins" if any(d["id"] == "cv7_ins" for d in P.p["devices"]) else None
-    if device is None:
-        return None
+    ns = P.ns
+    device = ex["device"]
+    api = command_api_context(P)["api_sets"]
 
-    def path(name: str) -> str:
-        return f"{_set_ns(cmds[name][0])}::{ident(name)}"
+    def literal(tref: dict, value, top: bool = True) -> str:
+        kind = tref["kind"]
+        if kind == "struct":
+            t = next(x for x in P.p["types"] if x["name"] == tref["name"])
+            if set(value) != {q["name"] for q in t["params"]}:
+                raise ExampleError(f"C++ back end: the example must give every member of {tref['name']}")
+            inner = ", ".join(literal(q["type"], value[q["name"]], False) for q in t["params"])
+            return f"::{ns}::types::{camel(tref['name'])}{{{inner}}}"
+        if kind == "enum":
+            t = next(x for x in P.p["types"] if x["name"] == tref["name"])
+            number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
+            name = next((x["name"] for x in t["values"] if x["value"] == number), None)
+            enum = f"::{ns}::types::{camel(tref['name'])}"
+            return f"{enum}::{ident(name)}" if name is not None else f"static_cast<{enum}>({number})"
+        if kind == "primitive" and tref["name"] == "bool":
+            return "true" if value else "false"
+        if kind == "primitive" and tref["name"] in ("float", "double"):
+            return repr(float(value)) + ("f" if tref["name"] == "float" else "")
+        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
+            return f"0x{value:02X}" if value >= 0x10 and top else str(value)
+        raise ExampleError(f"C++ back end: the configure-and-stream example cannot write a {kind} value {value!r}")
 
+    def call(step: str, fn: str | None) -> dict:
+        """`api::<set>::<command>::<function>(device, args)` and the vectors it fills first."""
+        st = ex[step]
+        aset = next(a for a in api if a["ns"] == _set_ns(st["set"]))
+        command = next(c for c in aset["commands"] if c["ns"] == ident(st["field"]["name"]))
+        calls = {c["name"]: c for c in command["calls"]}
+        base = _cpp_fn(fn)
+        c = calls.get(f"{base}_{device}") or calls.get(base)
+        if c is None:
+            raise ExampleError(f"C++ back end: {st['field']['name']} has no call {base} for {device}")
+        params = {ident(q["name"]): q for q in st["variant"]["params"]}
+        values = {ident(k): v for k, v in st["values"].items()} if fn in (None, "write") else {}
+        args, fills = [], []
+        for a in c["args"]:
+            q = params[a["name"]]
+            if a["name"] not in values:
+                if not a["required"]:
+                    continue  # optional arguments come last: left at their default
+                raise ExampleError(
+                    f"C++ back end: the configure-and-stream example gives no value for {q['name']} of"
+                    f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
+                )
+            value, tref, count = values[a["name"]], q["type"], q["count"]
+            if count and count["kind"] == "fixed":
+                args.append("{" + ", ".join(literal(tref, v) for v in value) + "}")
+            elif count:
+                local = a["decl"].removeprefix("const ").removesuffix(" &").removeprefix("typename ")
+                fills.append(f"{local} {a['name']};")
+                fills += [f"{a['name']}.push_back({literal(tref, v)});" for v in value]
+                args.append(a["name"])
+            else:
+                args.append(literal(tref, value))
+        target = f"api::{aset['ns']}::{command['ns']}::{c['name']}"
+        what = f"{st['set']['name']}.{st['field']['name']}" + (f" {fn}" if fn else "")
+        return {"call": f"{target}({', '.join(['device', *args])})", "fills": fills, "what": what}
+
+    def fn_of(step: str) -> str | None:
+        return "write" if ex[step]["field"]["functions"] else None
+
+    data_set = ex["data"]["set"]
+    names = _layout_names(data_set["fields"])
+    fields = []
+    for f in ex["data"]["fields"]:
+        if len(f["variants"]) > 1:
+            raise ExampleError(f"C++ back end: the example's data field {f['name']} has per-device layouts")
+        fields.append({"name": f["name"], "type": f"::{ns}::{_set_ns(data_set)}::{names[(f['name'], None)]}"})
     return {
+        "program": ex["program"],
+        "count": ex["count"],
         "device": ident(device),
-        "ping": path("ping") + "::call",
-        "info": path("get_device_info") + "::call",
-        "info_member": "info",
-        "setting": path("sensor_to_vehicle_euler"),
-        "stream": path("data_stream_control") + f"::write_{device}",
-        "stream_args": "0x82, true",
+        "ping": call("ping", None),
+        "info": call("info", None),
+        "info_title": ex["info"]["field"]["title"],
+        "setting_title": ex["setting"]["field"]["title"],
+        "setting_write": call("setting", "write"),
+        "setting_read": call("setting", "read"),
+        "format_title": ex["format"]["field"]["title"],
+        "format": call("format", fn_of("format")),
+        "enable_title": ex["enable"]["field"]["title"],
+        "enable": call("enable", fn_of("enable")),
+        "data_set": f"0x{data_set['id']:02X}",
+        "data_set_title": data_set["title"],
+        "data_fields": fields,
     }

@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 
 from generator import model, naming
-from generator.examples import example_context
+from generator.examples import ExampleError, example_context, session_example
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -959,56 +959,120 @@ def _session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
     return out
 
 
-# The configure-and-stream example per protocol (examples/configure_and_stream.rs): the device
-# model, the device-information command, one setting written and read back, and the command that
-# starts a data stream (typed command API calls after `device.`).
-_SESSION_EXAMPLES = {
-    "mip": {
-        "model": "cv7_ins",
-        "info": ("device info", "base().get_device_info()"),
-        "setting": "sensor_to_vehicle_euler",
-        "uses": ["std::f32::consts::FRAC_PI_2"],
-        "readme": [
-            "device.threedm().sensor_to_vehicle_euler().write(0.0, 1.5708, 1.5708)?;",
-            "let rotation = device.threedm().sensor_to_vehicle_euler().read()?; // SensorToVehicleEulerResponse",
-        ],
-        "write": "threedm().sensor_to_vehicle_euler().write(0.0, FRAC_PI_2, FRAC_PI_2)",
-        "read": "threedm().sensor_to_vehicle_euler().read()",
-        "stream": "threedm().data_stream_control().write_cv7_ins(0x80, true)",
-    },
-    "mscip": {
-        "model": "ms_imu3020",
-        "info": ("device model", "base().get_device_model()"),
-        "readme": [
-            "device.imu_config().sample_rate().write(10)?;",
-            "let rate = device.imu_config().sample_rate().read()?; // SampleRateResponse",
-        ],
-        "setting": "sample_rate",
-        "write": "imu_config().sample_rate().write(10)",
-        "read": "imu_config().sample_rate().read()",
-        "stream": "imu_config().select_sensors().write(0, crate::bounded::BoundedVec::from_slice("
-        '&[crate::types::SensorCode::SCALED_ACCEL]).ok_or("too many sensors")?)',
-    },
-}
-
-
-def _session_example(m: _Protocol) -> dict | None:
-    """The context of examples/configure_and_stream.rs, or None for a protocol without one."""
-    ex = _SESSION_EXAMPLES.get(m.proto["name"])
+def _session_example(m: _Protocol, api_sets: list[dict]) -> dict | None:
+    """The context of examples/configure_and_stream.rs (generator/examples.py session_example) as
+    calls of the typed command API (command_api.rs.j2) with literal arguments, or None for a
+    protocol without the example."""
+    ex = session_example(m.proto)
     if ex is None:
         return None
-    device = next(d for d in m.proto["devices"] if d["id"] == ex["model"])
+    pkg = m.package
+    device = ex["device"]
+
+    def literal(tref: dict, value, top: bool = True) -> str:
+        kind = tref["kind"]
+        if kind == "struct":
+            t = m.types[tref["name"]]
+            qs = {q["name"]: q["type"] for q in t["params"]}
+            if set(value) != set(qs):
+                raise ExampleError(f"Rust back end: the example gives {sorted(value)} of {tref['name']} ({sorted(qs)})")
+            inner = ", ".join(f"{ident(k)}: {literal(qs[k], v, False)}" for k, v in value.items())
+            return f"{pkg}::types::{camel(tref['name'])} {{ {inner} }}"
+        if kind == "enum":
+            t = m.types[tref["name"]]
+            number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
+            name = next((x["name"] for x in t["values"] if x["value"] == number), None)
+            enum = f"{pkg}::types::{camel(tref['name'])}"
+            return f"{enum}::{upper(name)}" if name is not None else f"{enum}({number})"
+        if kind == "primitive" and tref["name"] == "bool":
+            return "true" if value else "false"
+        if kind == "primitive" and tref["name"] in ("float", "double"):
+            return repr(float(value))
+        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
+            return f"0x{value:02X}" if value >= 0x10 and top else str(value)
+        raise ExampleError(f"Rust back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+
+    def call(step: str, fn: str | None) -> dict:
+        """`device.<set>().<command>()[.<function>](args)` and the `let`s of its bounded arrays."""
+        st = ex[step]
+        api = next(a for a in api_sets if a["method"] == _set_method(m.set_module(st["set"])))
+        command = next(c for c in api["commands"] if c["method"] == ident(st["field"]["name"]))
+        names = {x["name"]: x for x in command["methods"]}
+        base = ident(st["field"]["name"]) if fn is None else ident(fn)
+        method = names.get(f"{base}_{device}") or names.get(base)
+        if method is None:
+            raise ExampleError(f"Rust back end: {st['field']['name']} has no method {base} for {device}")
+        params = {ident(q.name): q for q in model.layout(m.proto, st["variant"]).params}
+        values = {ident(k): v for k, v in st["values"].items()} if fn in (None, "write") else {}
+        args, lets = [], []
+        for a in method["args"]:
+            q = params[a["name"]]
+            if a["name"] not in values:
+                if a["type"].startswith("Option<"):
+                    args.append("None")
+                    continue
+                raise ExampleError(
+                    f"Rust back end: the configure-and-stream example gives no value for {q.name} of"
+                    f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
+                )
+            value, tref = values[a["name"]], q.ir["type"]
+            if q.kind == "fixed":
+                text = "[" + ", ".join(literal(tref, v) for v in value) + "]"
+            elif q.kind in ("counted", "remaining"):
+                items = ", ".join(literal(tref, v) for v in value)
+                lets.append(
+                    f'let {a["name"]} = {pkg}::bounded::BoundedVec::from_slice(&[{items}]).ok_or("too many {q.name}")?;'
+                )
+                text = a["name"]
+            else:
+                text = literal(tref, value)
+            args.append(f"Some({text})" if a["type"].startswith("Option<") else text)
+        head = f"device.{api['method']}()"
+        target = f"{head}.{method['name']}" if command["plain"] else f"{head}.{command['method']}().{method['name']}"
+        returns = method["returns"].rsplit("::", 1)[-1]
+        return {"call": f"{target}({', '.join(args)})", "lets": lets, "returns": returns}
+
+    def fn_of(step: str) -> str | None:
+        return "write" if ex[step]["field"]["functions"] else None
+
+    data_set = ex["data"]["set"]
+    module = m.set_module(data_set)
+    fields = []
+    for f in ex["data"]["fields"]:
+        if len(f["variants"]) > 1:
+            raise ExampleError(f"Rust back end: the example's data field {f['name']} has per-device layouts")
+        fields.append(
+            {
+                "name": f["name"],
+                "descriptor": _hex(f["id"]),
+                "pattern": f"FieldValue::{camel(module)}({pkg}::{module}::SetField::{camel(f['name'])}(v))",
+            }
+        )
+    setting_write, setting_read = call("setting", "write"), call("setting", "read")
+    titles = {d["id"]: d["title"] for d in m.proto["devices"]}
     return {
-        "title": device["title"],
-        "model": m.device_variant(ex["model"]),
-        "info_what": ex["info"][0],
-        "info_call": ex["info"][1],
-        "setting": ex["setting"],
-        "uses": ex.get("uses", []),
-        "readme": ex["readme"],
-        "write_call": ex["write"].replace("crate::", m.package + "::"),
-        "read_call": ex["read"],
-        "stream_call": ex["stream"].replace("crate::", m.package + "::"),
+        "program": ex["program"],
+        "count": ex["count"],
+        "title": titles.get(device, device),
+        "model": m.device_variant(device),
+        "ping": call("ping", None),
+        "info": call("info", None),
+        "info_title": ex["info"]["field"]["title"],
+        "setting_title": ex["setting"]["field"]["title"],
+        "setting_write": setting_write,
+        "setting_read": setting_read,
+        "format_title": ex["format"]["field"]["title"],
+        "format": call("format", fn_of("format")),
+        "enable_title": ex["enable"]["field"]["title"],
+        "enable": call("enable", fn_of("enable")),
+        "data_set": _hex(data_set["id"]),
+        "data_set_title": data_set["title"],
+        "data_fields": fields,
+        "readme": [
+            *setting_write["lets"],
+            setting_write["call"] + "?;",
+            f"let setting = {setting_read['call']}?; // {setting_read['returns']}",
+        ],
     }
 
 
@@ -1088,7 +1152,7 @@ def render(
         ctx["example"] = _example(proto)
         ctx.update(_Session(model).context())
         ctx["session_cases"] = _session_cases(proto, sessions or [])
-        ctx["session_example"] = _session_example(model)
+        ctx["session_example"] = _session_example(model, ctx["api_sets"])
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
         for tpl, out in _TEMPLATES:

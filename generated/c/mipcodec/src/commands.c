@@ -2273,6 +2273,7 @@ mipc_result_kind_t mipc_threedm_imu_message_format_write(mipc_link_t *link,
             memcpy(cmd_.u.threedm_imu_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_imu_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_imu_message_format.has_num_descriptors = true;
         cmd_.u.threedm_imu_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2298,6 +2299,7 @@ mipc_result_kind_t mipc_threedm_imu_message_format_read(mipc_link_t *link,
             memcpy(cmd_.u.threedm_imu_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_imu_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_imu_message_format.has_num_descriptors = true;
         cmd_.u.threedm_imu_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, &result_);
@@ -2329,6 +2331,7 @@ mipc_result_kind_t mipc_threedm_imu_message_format_save(mipc_link_t *link,
             memcpy(cmd_.u.threedm_imu_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_imu_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_imu_message_format.has_num_descriptors = true;
         cmd_.u.threedm_imu_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2352,6 +2355,7 @@ mipc_result_kind_t mipc_threedm_imu_message_format_load(mipc_link_t *link,
             memcpy(cmd_.u.threedm_imu_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_imu_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_imu_message_format.has_num_descriptors = true;
         cmd_.u.threedm_imu_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2375,6 +2379,7 @@ mipc_result_kind_t mipc_threedm_imu_message_format_default(mipc_link_t *link,
             memcpy(cmd_.u.threedm_imu_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_imu_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_imu_message_format.has_num_descriptors = true;
         cmd_.u.threedm_imu_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2398,6 +2403,7 @@ mipc_result_kind_t mipc_threedm_gnss_message_format_write(mipc_link_t *link,
             memcpy(cmd_.u.threedm_gnss_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_gnss_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_gnss_message_format.has_num_descriptors = true;
         cmd_.u.threedm_gnss_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2423,6 +2429,7 @@ mipc_result_kind_t mipc_threedm_gnss_message_format_read(mipc_link_t *link,
             memcpy(cmd_.u.threedm_gnss_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_gnss_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_gnss_message_format.has_num_descriptors = true;
         cmd_.u.threedm_gnss_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, &result_);
@@ -2454,6 +2461,7 @@ mipc_result_kind_t mipc_threedm_gnss_message_format_save(mipc_link_t *link,
             memcpy(cmd_.u.threedm_gnss_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_gnss_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_gnss_message_format.has_num_descriptors = true;
         cmd_.u.threedm_gnss_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2477,6 +2485,7 @@ mipc_result_kind_t mipc_threedm_gnss_message_format_load(mipc_link_t *link,
             memcpy(cmd_.u.threedm_gnss_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_gnss_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_gnss_message_format.has_num_descriptors = true;
         cmd_.u.threedm_gnss_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2500,6 +2509,7 @@ mipc_result_kind_t mipc_threedm_gnss_message_format_default(mipc_link_t *link,
             memcpy(cmd_.u.threedm_gnss_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_gnss_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_gnss_message_format.has_num_descriptors = true;
         cmd_.u.threedm_gnss_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2523,6 +2533,7 @@ mipc_result_kind_t mipc_threedm_filter_message_format_write(mipc_link_t *link,
             memcpy(cmd_.u.threedm_filter_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_filter_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_filter_message_format.has_num_descriptors = true;
         cmd_.u.threedm_filter_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2548,6 +2559,7 @@ mipc_threedm_filter_message_format_read(mipc_link_t *link, const mipc_descriptor
             memcpy(cmd_.u.threedm_filter_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_filter_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_filter_message_format.has_num_descriptors = true;
         cmd_.u.threedm_filter_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, &result_);
@@ -2579,6 +2591,7 @@ mipc_result_kind_t mipc_threedm_filter_message_format_save(mipc_link_t *link,
             memcpy(cmd_.u.threedm_filter_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_filter_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_filter_message_format.has_num_descriptors = true;
         cmd_.u.threedm_filter_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2602,6 +2615,7 @@ mipc_result_kind_t mipc_threedm_filter_message_format_load(mipc_link_t *link,
             memcpy(cmd_.u.threedm_filter_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_filter_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_filter_message_format.has_num_descriptors = true;
         cmd_.u.threedm_filter_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2625,6 +2639,7 @@ mipc_result_kind_t mipc_threedm_filter_message_format_default(mipc_link_t *link,
             memcpy(cmd_.u.threedm_filter_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_filter_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_filter_message_format.has_num_descriptors = true;
         cmd_.u.threedm_filter_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2648,6 +2663,7 @@ mipc_result_kind_t mipc_threedm_nmea_message_format_write(mipc_link_t *link,
             memcpy(cmd_.u.threedm_nmea_message_format.format_entries, format_entries,
                    format_entries_count * sizeof cmd_.u.threedm_nmea_message_format.format_entries[0]);
         }
+        cmd_.u.threedm_nmea_message_format.has_count = true;
         cmd_.u.threedm_nmea_message_format.count = (uint8_t)format_entries_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -2730,6 +2746,7 @@ mipc_result_kind_t mipc_threedm_message_format_write(mipc_link_t *link, uint8_t 
             memcpy(cmd_.u.threedm_message_format.descriptors, descriptors,
                    descriptors_count * sizeof cmd_.u.threedm_message_format.descriptors[0]);
         }
+        cmd_.u.threedm_message_format.has_num_descriptors = true;
         cmd_.u.threedm_message_format.num_descriptors = (uint8_t)descriptors_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -3016,6 +3033,7 @@ mipc_threedm_gnss_constellation_settings_write(mipc_link_t *link, uint16_t max_c
             memcpy(cmd_.u.threedm_gnss_constellation_settings.settings, settings,
                    settings_count * sizeof cmd_.u.threedm_gnss_constellation_settings.settings[0]);
         }
+        cmd_.u.threedm_gnss_constellation_settings.has_config_count = true;
         cmd_.u.threedm_gnss_constellation_settings.config_count = (uint8_t)settings_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -3042,6 +3060,7 @@ mipc_result_kind_t mipc_threedm_gnss_constellation_settings_read(
             memcpy(cmd_.u.threedm_gnss_constellation_settings.settings, settings,
                    settings_count * sizeof cmd_.u.threedm_gnss_constellation_settings.settings[0]);
         }
+        cmd_.u.threedm_gnss_constellation_settings.has_config_count = true;
         cmd_.u.threedm_gnss_constellation_settings.config_count = (uint8_t)settings_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, &result_);
@@ -3076,6 +3095,7 @@ mipc_threedm_gnss_constellation_settings_save(mipc_link_t *link, uint16_t max_ch
             memcpy(cmd_.u.threedm_gnss_constellation_settings.settings, settings,
                    settings_count * sizeof cmd_.u.threedm_gnss_constellation_settings.settings[0]);
         }
+        cmd_.u.threedm_gnss_constellation_settings.has_config_count = true;
         cmd_.u.threedm_gnss_constellation_settings.config_count = (uint8_t)settings_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -3102,6 +3122,7 @@ mipc_threedm_gnss_constellation_settings_load(mipc_link_t *link, uint16_t max_ch
             memcpy(cmd_.u.threedm_gnss_constellation_settings.settings, settings,
                    settings_count * sizeof cmd_.u.threedm_gnss_constellation_settings.settings[0]);
         }
+        cmd_.u.threedm_gnss_constellation_settings.has_config_count = true;
         cmd_.u.threedm_gnss_constellation_settings.config_count = (uint8_t)settings_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -3128,6 +3149,7 @@ mipc_threedm_gnss_constellation_settings_default(mipc_link_t *link, uint16_t max
             memcpy(cmd_.u.threedm_gnss_constellation_settings.settings, settings,
                    settings_count * sizeof cmd_.u.threedm_gnss_constellation_settings.settings[0]);
         }
+        cmd_.u.threedm_gnss_constellation_settings.has_config_count = true;
         cmd_.u.threedm_gnss_constellation_settings.config_count = (uint8_t)settings_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);
@@ -3156,6 +3178,7 @@ mipc_result_kind_t mipc_threedm_gnss_sbas_settings_write(mipc_link_t *link, uint
             memcpy(cmd_.u.threedm_gnss_sbas_settings.included_prns, included_prns,
                    included_prns_count * sizeof cmd_.u.threedm_gnss_sbas_settings.included_prns[0]);
         }
+        cmd_.u.threedm_gnss_sbas_settings.has_num_included_prns = true;
         cmd_.u.threedm_gnss_sbas_settings.num_included_prns = (uint8_t)included_prns_count;
     }
     kind_ = mipc_link_run(link, &cmd_, NULL, NULL);

@@ -291,9 +291,9 @@ call(Connection &connection,
      const StartOptions &options = {}) {
     {
         ::mipcodec::threedm::GetEventTriggerStatus v{};
+        v.requested_instances = requested_instances;
         v.requested_count =
             static_cast<std::remove_reference_t<decltype(v.requested_count)>>(v.requested_instances.size());
-        v.requested_instances = requested_instances;
         return reply_of<::mipcodec::threedm::EventTriggerStatus>(connection.run(v, options));
     }
 }
@@ -307,9 +307,9 @@ call(Connection &connection,
      const StartOptions &options = {}) {
     {
         ::mipcodec::threedm::GetEventActionStatus v{};
+        v.requested_instances = requested_instances;
         v.requested_count =
             static_cast<std::remove_reference_t<decltype(v.requested_count)>>(v.requested_instances.size());
-        v.requested_instances = requested_instances;
         return reply_of<::mipcodec::threedm::EventActionStatus>(connection.run(v, options));
     }
 }
@@ -1428,9 +1428,9 @@ inline Call call(Connection &connection, const decltype(::mipcodec::threedm::Pol
     {
         ::mipcodec::threedm::PollImuData v{};
         v.option = option;
+        v.descriptors = descriptors;
         v.num_descriptors =
             static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1444,9 +1444,9 @@ inline Call call(Connection &connection, const decltype(::mipcodec::threedm::Pol
     {
         ::mipcodec::threedm::PollGnssData v{};
         v.option = option;
+        v.descriptors = descriptors;
         v.num_descriptors =
             static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1460,9 +1460,9 @@ inline Call call(Connection &connection, const decltype(::mipcodec::threedm::Pol
     {
         ::mipcodec::threedm::PollFilterData v{};
         v.option = option;
+        v.descriptors = descriptors;
         v.num_descriptors =
             static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1477,8 +1477,8 @@ inline Call call(Connection &connection,
     {
         ::mipcodec::threedm::PollNmeaData v{};
         v.suppress_ack = suppress_ack;
-        v.count = static_cast<std::remove_reference_t<decltype(v.count)>>(v.format_entries.size());
         v.format_entries = format_entries;
+        v.count = static_cast<std::remove_reference_t<decltype(v.count)>>(v.format_entries.size());
         return connection.run(v, options);
     }
 }
@@ -1494,9 +1494,9 @@ inline Call call(Connection &connection, const decltype(::mipcodec::threedm::Pol
         ::mipcodec::threedm::PollData v{};
         v.desc_set = desc_set;
         v.suppress_ack = suppress_ack;
+        v.descriptors = descriptors;
         v.num_descriptors =
             static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1557,9 +1557,9 @@ write(Connection &connection,
     {
         ::mipcodec::threedm::ImuMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1570,9 +1570,9 @@ read(Connection &connection,
     {
         ::mipcodec::threedm::ImuMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::read;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return reply_of<::mipcodec::threedm::ImuMessageFormatResponse>(connection.run(v, options));
     }
 }
@@ -1582,9 +1582,9 @@ inline Call save(Connection &connection,
     {
         ::mipcodec::threedm::ImuMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::save;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1594,9 +1594,9 @@ inline Call load(Connection &connection,
     {
         ::mipcodec::threedm::ImuMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::load;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1606,9 +1606,9 @@ inline Call default_(Connection &connection,
     {
         ::mipcodec::threedm::ImuMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1623,9 +1623,9 @@ write(Connection &connection,
     {
         ::mipcodec::threedm::GnssMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1636,9 +1636,9 @@ read(Connection &connection,
     {
         ::mipcodec::threedm::GnssMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::read;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return reply_of<::mipcodec::threedm::GnssMessageFormatResponse>(connection.run(v, options));
     }
 }
@@ -1648,9 +1648,9 @@ inline Call save(Connection &connection,
     {
         ::mipcodec::threedm::GnssMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::save;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1660,9 +1660,9 @@ inline Call load(Connection &connection,
     {
         ::mipcodec::threedm::GnssMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::load;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1672,9 +1672,9 @@ inline Call default_(Connection &connection,
     {
         ::mipcodec::threedm::GnssMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1689,9 +1689,9 @@ write(Connection &connection,
     {
         ::mipcodec::threedm::FilterMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1702,9 +1702,9 @@ read(Connection &connection,
     {
         ::mipcodec::threedm::FilterMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::read;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return reply_of<::mipcodec::threedm::FilterMessageFormatResponse>(connection.run(v, options));
     }
 }
@@ -1714,9 +1714,9 @@ inline Call save(Connection &connection,
     {
         ::mipcodec::threedm::FilterMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::save;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1726,9 +1726,9 @@ inline Call load(Connection &connection,
     {
         ::mipcodec::threedm::FilterMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::load;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1738,9 +1738,9 @@ inline Call default_(Connection &connection,
     {
         ::mipcodec::threedm::FilterMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -1755,9 +1755,9 @@ inline Call write(Connection &connection,
     {
         ::mipcodec::threedm::NmeaMessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
+        v.format_entries = format_entries;
         v.count = static_cast<std::remove_reference_t<decltype(v.count)>>(
             v.format_entries ? v.format_entries->size() : 0);
-        v.format_entries = format_entries;
         return connection.run(v, options);
     }
 }
@@ -1802,9 +1802,9 @@ write(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat:
         ::mipcodec::threedm::MessageFormat v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
         v.desc_set = desc_set;
+        v.descriptors = descriptors;
         v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
             v.descriptors ? v.descriptors->size() : 0);
-        v.descriptors = descriptors;
         return connection.run(v, options);
     }
 }
@@ -2010,9 +2010,9 @@ write(Connection &connection,
         ::mipcodec::threedm::GnssConstellationSettings v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
         v.max_channels = max_channels;
+        v.settings = settings;
         v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
             v.settings ? v.settings->size() : 0);
-        v.settings = settings;
         return connection.run(v, options);
     }
 }
@@ -2025,9 +2025,9 @@ read(Connection &connection,
         ::mipcodec::threedm::GnssConstellationSettings v{};
         v.function = ::mipcodec::types::FunctionSelector::read;
         v.max_channels = max_channels;
+        v.settings = settings;
         v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
             v.settings ? v.settings->size() : 0);
-        v.settings = settings;
         return reply_of<::mipcodec::threedm::GnssConstellationSettingsResponse>(connection.run(v, options));
     }
 }
@@ -2040,9 +2040,9 @@ save(Connection &connection,
         ::mipcodec::threedm::GnssConstellationSettings v{};
         v.function = ::mipcodec::types::FunctionSelector::save;
         v.max_channels = max_channels;
+        v.settings = settings;
         v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
             v.settings ? v.settings->size() : 0);
-        v.settings = settings;
         return connection.run(v, options);
     }
 }
@@ -2055,9 +2055,9 @@ load(Connection &connection,
         ::mipcodec::threedm::GnssConstellationSettings v{};
         v.function = ::mipcodec::types::FunctionSelector::load;
         v.max_channels = max_channels;
+        v.settings = settings;
         v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
             v.settings ? v.settings->size() : 0);
-        v.settings = settings;
         return connection.run(v, options);
     }
 }
@@ -2070,9 +2070,9 @@ default_(Connection &connection,
         ::mipcodec::threedm::GnssConstellationSettings v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;
         v.max_channels = max_channels;
+        v.settings = settings;
         v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
             v.settings ? v.settings->size() : 0);
-        v.settings = settings;
         return connection.run(v, options);
     }
 }
@@ -2091,9 +2091,9 @@ inline Call write(
         v.function = ::mipcodec::types::FunctionSelector::write;
         v.enable_sbas = enable_sbas;
         v.sbas_options = sbas_options;
+        v.included_prns = included_prns;
         v.num_included_prns = static_cast<std::remove_reference_t<decltype(v.num_included_prns)>>(
             v.included_prns ? v.included_prns->size() : 0);
-        v.included_prns = included_prns;
         return connection.run(v, options);
     }
 }
