@@ -836,13 +836,14 @@ def session_context(P: _Proto) -> dict:
 def _load_sessions(ir: dict) -> list[dict]:
     """The project's session corpus (tests/sessions/), or none when the IR is not the project's
     (a spec given with --spec: its protocols do not match the corpus)."""
-    from pathlib import Path
-
     from generator.diagnostics import SpecErrors
     from generator.sessions import load_sessions
 
     try:
-        return load_sessions(ir, Path(__file__).resolve().parents[3] / "tests" / "sessions")
+        from generator.resources import sessions_dir
+
+        root = sessions_dir()
+        return load_sessions(ir, root) if root else []
     except (SpecErrors, KeyError, TypeError, ValueError):
         return []
 
