@@ -1095,6 +1095,9 @@ STREAMING: dict[str, dict] = {
         },
         "decimation": None,
         "all_settings": ["device_startup_settings"],
+        # Streams the model's stream control cannot address stream whenever their format is set:
+        # the GX5-45's selector lists IMU and filter only (line 1049, Gx5StreamSelector's note).
+        "unaddressed": {"gx5_45": [0x81]},
     },
     "mscip": {
         "formats": {
@@ -1329,6 +1332,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
             for c in by_name.get((streaming.get("decimation") or ("",))[0], [])
         ],
         "all_settings": [c for n in streaming.get("all_settings", []) for c in by_name.get(n, [])],
+        "unaddressed": pyrepr(streaming.get("unaddressed", {})),
         "actions": [{"cls": c, "value": pyrepr(a)} for n, a in WORLD_ACTIONS.items() for c in by_name.get(n, [])],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),

@@ -1066,6 +1066,9 @@ BASE_RATES: Dict[str, Dict[int, int]] = {
     "cv7_ins": {128: 1000, 130: 1000, 145: 5, 146: 5, 160: 1000},
 }
 
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {"gx5_45": [129]}
+
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = (
     threedm.DeviceStartupSettings_gx5_45,

@@ -91,6 +91,9 @@ DECIMATION: Dict[Any, str] = {
 
 BASE_RATES: Dict[str, Dict[int, int]] = {"ms_imu3020": {162: 1000}}
 
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {}
+
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 

@@ -246,8 +246,6 @@ class Simulator:
             for r in replies:
                 if hasattr(r, "bias"):
                     r.bias = list(bias)
-        elif action[0] == "auto_init":
-            self.world.filter.auto_init = self._setting_on(type(command), action[1])
         extra: List[Chunk] = []
         poll = _sim.POLLS.get(type(command))
         if poll is not None:
@@ -428,6 +426,10 @@ class Simulator:
                 enabled.add(set_id)
             else:
                 enabled.discard(set_id)
+        enabled |= set(_sim.UNADDRESSED.get(self.device, ()))
+        for cls, action in _sim.ACTIONS.items():  # settings the filter follows
+            if action[0] == "auto_init" and getattr(cls, "DEVICE", None) in (None, self.device):
+                self.world.filter.auto_init = self._setting_on(cls, action[1])
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
 
