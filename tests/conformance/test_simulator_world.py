@@ -284,3 +284,25 @@ def test_application_flow_reaches_full_navigation(device: str, lang: str, transp
     tows = [s["gps_timestamp"].tow for s in samples]
     assert all(b > a for a, b in zip(tows, tows[1:]))  # GPS time advances with the simulated clock
     assert tows[-1] - tows[0] >= 2.5  # 30 samples at 10 Hz of simulated time
+
+
+def test_baud_rate_change_over_the_pty() -> None:
+    """With --baud, comm port speed is acknowledged at the old rate; then only a host at the new
+    rate is understood (a host left at the old one times out)."""
+    session = importlib.import_module("mipcodec.session")
+    transport = importlib.import_module("mipcodec.transport")
+    with Sim("mip", "cv7_ins", "pty", "--baud") as sim:
+        dev = session.Device(transport.open_transport(sim.address, 115200), device="cv7_ins", timeout_ms=300)
+        try:
+            dev.base.ping()
+            dev.base.comm_port_speed.write(port=1, baud=921600)  # acknowledged at 115200
+            with pytest.raises(session.CommandTimeout):
+                dev.base.ping()
+        finally:
+            dev.transport.close()
+        dev = session.Device(transport.open_transport(sim.address, 921600), device="cv7_ins", timeout_ms=300)
+        try:
+            dev.base.ping()
+            assert dev.base.comm_port_speed.read(port=1).baud == 921600
+        finally:
+            dev.transport.close()

@@ -1098,6 +1098,8 @@ STREAMING: dict[str, dict] = {
         # Streams the model's stream control cannot address stream whenever their format is set:
         # the GX5-45's selector lists IMU and filter only (line 1049, Gx5StreamSelector's note).
         "unaddressed": {"gx5_45": [0x81]},
+        # Commands that change the baud rate of the port (write): class name -> rate parameter
+        "baud": {"comm_port_speed": "baud", "uart_baudrate": "baud"},
     },
     "mscip": {
         "formats": {
@@ -1110,6 +1112,7 @@ STREAMING: dict[str, dict] = {
         "base_rates": {"ms_imu3020": {0xA2: 1000}},
         "decimation": ("sample_rate", "decimation"),
         "all_settings": ["config_all"],
+        "baud": {"uart_baud_rate": "baud_rate"},
     },
 }
 
@@ -1333,6 +1336,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         ],
         "all_settings": [c for n in streaming.get("all_settings", []) for c in by_name.get(n, [])],
         "unaddressed": pyrepr(streaming.get("unaddressed", {})),
+        "baud": classes(streaming.get("baud", {})),
         "actions": [{"cls": c, "value": pyrepr(a)} for n, a in WORLD_ACTIONS.items() for c in by_name.get(n, [])],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),

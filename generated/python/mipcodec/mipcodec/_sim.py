@@ -1066,6 +1066,12 @@ BASE_RATES: Dict[str, Dict[int, int]] = {
     "cv7_ins": {128: 1000, 130: 1000, 145: 5, 146: 5, 160: 1000},
 }
 
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {
+    base.CommPortSpeed: "baud",
+    threedm.UartBaudrate: "baud",
+}
+
 # Data sets the stream control of a model cannot address: they stream whenever their format is set
 UNADDRESSED: Dict[str, Any] = {"gx5_45": [129]}
 

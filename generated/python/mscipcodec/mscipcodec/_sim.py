@@ -91,6 +91,11 @@ DECIMATION: Dict[Any, str] = {
 
 BASE_RATES: Dict[str, Dict[int, int]] = {"ms_imu3020": {162: 1000}}
 
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {
+    imu_config.UartBaudRate: "baud_rate",
+}
+
 # Data sets the stream control of a model cannot address: they stream whenever their format is set
 UNADDRESSED: Dict[str, Any] = {}
 

@@ -110,6 +110,7 @@ class Simulator:
         faults: Sequence[Fault] = (),
         scenario: str = "static",
         speed: float = 1.0,
+        baud: bool = False,
     ) -> None:
         if not speed > 0:
             raise ValueError(f"bad speed {speed!r} (expected a factor above 0)")
@@ -131,6 +132,8 @@ class Simulator:
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
+        self.follow_baud = baud  # a write of the port's baud rate changes the pty's line rate
+        self.baud_changes: List[Tuple[float, int]] = []  # (after the reply sent at, new baud rate)
         self._replan()
 
     def sim_time(self, now: float) -> float:
@@ -173,6 +176,8 @@ class Simulator:
                 reply = self._reply(set_id, descriptor, _sim.NACK["invalid_parameter"], [])
             late, self.delay = now + self.delay / self.speed, 0.0
             out.extend(self._faulted(name, reply, late))
+            if self.baud_changes and self.baud_changes[-1][0] < 0:  # acked at the old rate first
+                self.baud_changes[-1] = (late, self.baud_changes[-1][1])
             out.extend(extra)
         return out
 
@@ -239,6 +244,9 @@ class Simulator:
                     self.current.pop(k, None)
         self._replan()
         replies = [r for r in (self._response(command, key, fn),) if r is not None]
+        baud = _sim.BAUD.get(type(command))
+        if baud is not None and kind == "write" and self.follow_baud:
+            self.baud_changes.append((-1.0, int(getattr(command, baud, 0) or 0)))
         action = _sim.ACTIONS.get(type(command), ("",))
         if action[0] == "capture":
             self.delay = float(getattr(command, action[1], 0) or 0) / 1000.0
@@ -709,13 +717,30 @@ class _Link:
 
     BACKLOG = 1 << 18
 
-    def __init__(self, fd: int, sock: Optional[socket.socket] = None) -> None:
+    def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
         self.fd = fd
         self.sock = sock
+        self.slave = slave  # a pty's slave side: the host's line settings (its baud rate)
+        self.baud: Optional[int] = None  # the device's rate once a command changed it
         self.backlog = bytearray()
         os.set_blocking(fd, False)
 
+    def mismatched(self) -> bool:
+        """Whether the host's line runs at another rate than the device's (after a baud change on
+        a pty; before one, any rate works): bytes then arrive as garbage on both sides."""
+        if self.baud is None or self.slave is None:
+            return False
+        import termios
+
+        try:
+            speed = termios.tcgetattr(self.slave)[5]
+        except termios.error:
+            return False
+        return _BAUD_CODES.get(speed) != self.baud
+
     def write(self, data: bytes) -> None:
+        if self.mismatched():
+            data = bytes((b ^ 0x5A) for b in data)
         if len(self.backlog) + len(data) <= self.BACKLOG:
             self.backlog += data
         self.flush()
@@ -744,6 +769,8 @@ class _Link:
             return None
         if not data and self.sock is not None:
             return None
+        if data and self.mismatched():
+            return bytes((b ^ 0x5A) for b in data)
         return data
 
     def close(self) -> None:
@@ -764,7 +791,7 @@ def serve(
         master, slave = os.openpty()
         tty.setraw(slave)
         print(os.ttyname(slave), file=out, flush=True)
-        _loop(_Link(master), None, sim, replay)
+        _loop(_Link(master, slave=slave), None, sim, replay)
         return
     if not listen.startswith("tcp:"):
         raise ValueError(f"bad --listen {listen!r} (expected pty or tcp:HOST:PORT)")
@@ -780,6 +807,17 @@ def serve(
     shown = f"[{host}]" if family == socket.AF_INET6 else host
     print(f"tcp:{shown}:{server.getsockname()[1]}", file=out, flush=True)
     _loop(None, server, sim, replay)
+
+
+def _baud_codes() -> Dict[int, int]:
+    try:
+        import termios
+    except ImportError:
+        return {}
+    return {getattr(termios, n): int(n[1:]) for n in dir(termios) if n[:1] == "B" and n[1:].isdigit()}
+
+
+_BAUD_CODES = _baud_codes()
 
 
 def _loop(
@@ -802,7 +840,10 @@ def _loop(
                 pending.append((now, queue.pop(0)[1]))
             pending.sort(key=lambda c: c[0])
             while pending and pending[0][0] <= now:
-                link.write(pending.pop(0)[1])
+                when, data = pending.pop(0)
+                link.write(data)
+                while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
+                    link.baud = sim.baud_changes.pop(0)[1]
         wake = [c[0] for c in pending[:1]]
         if sim is not None and link is not None:
             w = sim.next_wakeup(now)
@@ -853,6 +894,11 @@ def _parser() -> argparse.ArgumentParser:
         default="static",
         help="the simulated world: static (on a bench), circle (driving a 50 m circle), file:PATH (a trajectory)",
     )
+    p.add_argument(
+        "--baud",
+        action="store_true",
+        help="a baud rate change (written) is acknowledged at the old rate, then the pty serves at the new one only",
+    )
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
     p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
     p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
@@ -888,7 +934,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             except OSError as e:
                 raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
         else:
-            sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed)
+            sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed, baud=args.baud)
         serve(args.listen, sim, replay)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)

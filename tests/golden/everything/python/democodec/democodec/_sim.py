@@ -61,6 +61,12 @@ DECIMATION: Dict[Any, str] = {}
 
 BASE_RATES: Dict[str, Dict[int, int]] = {}
 
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {}
+
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {}
+
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = ()
 
