@@ -179,6 +179,11 @@ def cv7_external_aiding_python(address: str) -> list:
             )  # fmt: skip
         for source in (t.AidingMeasurementSource.GNSS_POS_VEL, t.AidingMeasurementSource.EXTERNAL_HEADING):
             dev.filter.aiding_measurement_control.write(source=source, enable=True)
+        dev.filter.initialization_configuration.write(
+            wait_for_run_command=0, initial_cond_src=t.FilterInitialConditionSource.AUTO_POS_VEL_ATT,
+            auto_heading_alignment_selector=t.HeadingAlignmentMethods(0x08), initial_heading=0.0, initial_pitch=0.0,
+            initial_roll=0.0, initial_position=[0.0] * 3, initial_velocity=[0.0] * 3, reference_frame_selector=1,
+        )  # fmt: skip
         dev.filter.reset_filter()
         dev.base.resume()
         return _navigate(dev, "cv7_ins", aid=True)
@@ -306,3 +311,16 @@ def test_baud_rate_change_over_the_pty() -> None:
             assert dev.base.comm_port_speed.read(port=1).baud == 921600
         finally:
             dev.transport.close()
+
+
+def test_cv7_waits_for_the_run_command_when_configured() -> None:
+    sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    config = pkg.filter.InitializationConfiguration(
+        function=1, wait_for_run_command=1, initial_cond_src=0, auto_heading_alignment_selector=0, initial_heading=0.0,
+        initial_pitch=0.0, initial_roll=0.0, initial_position=[0.0] * 3, initial_velocity=[0.0] * 3,
+        reference_frame_selector=1,
+    )  # fmt: skip
+    assert command(sim, config, 0.0)[0][1] == 0
+    assert sample(sim, 0x82, 0x10, 3.0).filter_state == t.FilterModeCv7.INIT
+    assert command(sim, pkg.filter.RunFilter(), 0.0)[0][1] == 0
+    assert sample(sim, 0x82, 0x10, 3.0).filter_state == t.FilterModeCv7.VERT_GYRO

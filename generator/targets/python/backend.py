@@ -1253,6 +1253,10 @@ WORLD_ACTIONS = {
     "body_frame_velocity": ("aid", "body_velocity", (8, 0xFFFF)),
     "aiding_measurement_control": ("enable", "source", "enable"),
     "frame_config": ("frame", "frame_id"),
+    # CV7 "Wait for Run" (line 504; Run Navigation Filter 0x0D,0x05, line 8268): the filter stays
+    # in initialization until run when the initialization configuration asks to wait.
+    "initialization_configuration": ("wait_run", "wait_for_run_command"),
+    "run_filter": ("run",),
 }
 
 

@@ -1026,6 +1026,8 @@ ACTIONS: Dict[Any, Tuple[Any, ...]] = {
     aiding.BodyFrameVelocity: ("aid", "body_velocity", (8, 65535)),
     filter.AidingMeasurementControl: ("enable", "source", "enable"),
     aiding.FrameConfig: ("frame", "frame_id"),
+    filter.InitializationConfiguration: ("wait_run", "wait_for_run_command"),
+    filter.RunFilter: ("run",),
 }
 
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)

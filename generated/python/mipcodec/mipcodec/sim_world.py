@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import random
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 GRAVITY = 9.80665
 EARTH_RADIUS = 6378137.0
@@ -59,7 +59,7 @@ def _to_body(m: List[List[float]], v: Sequence[float]) -> Vec:
 
 def pressure_mbar(height: float) -> float:
     """The standard atmosphere's pressure at a height (m)."""
-    return 1013.25 * (1.0 - 2.25577e-5 * height) ** 5.25588
+    return float(1013.25 * (1.0 - 2.25577e-5 * height) ** 5.25588)
 
 
 class Scenario:
@@ -110,7 +110,7 @@ class Scenario:
 
 
 def _read_track(path: str) -> List[Tuple[float, ...]]:
-    rows = []
+    rows: List[Tuple[float, ...]] = []
     try:
         with open(path, encoding="utf-8") as f:
             for n, line in enumerate(f, 1):
@@ -146,9 +146,10 @@ class NavFilter:
     TIMEOUT = 2.0  # seconds without a measurement before the filter stops using it
     SETTLE = 1.0  # seconds of IMU data before the first mode
 
-    def __init__(self, profile: Dict[str, object]) -> None:
+    def __init__(self, profile: Dict[str, Any]) -> None:
         self.profile = profile
         self.auto_init = bool(profile.get("auto_init", True))
+        self.wait_for_run = False
         self.reset(0.0)
 
     def reset(self, t: float) -> None:
@@ -156,6 +157,7 @@ class NavFilter:
         self.accepted: Dict[str, float] = {}  # aiding kind -> last simulated time accepted
         self.attitude_set = False
         self.running = False
+        self.run_command = False
         self.mode_since = t
         self.last_state = ""
 
@@ -168,7 +170,7 @@ class NavFilter:
 
     def state(self, t: float, gnss_fix: bool) -> Tuple[str, int]:
         """(state name of the device's enum, status flags) at simulated time t."""
-        names = self.profile["states"]  # type: ignore[index]
+        names: List[str] = list(self.profile["states"])
         if self.profile.get("aiding") == "gnss":
             attitude = self.auto_init or self.attitude_set
             if t - self.started < 0.5:
@@ -181,7 +183,7 @@ class NavFilter:
         else:
             heading = self._fresh("heading", t)
             posvel = self._fresh("position", t) and self._fresh("velocity", t)
-            if t - self.started < self.SETTLE:
+            if t - self.started < self.SETTLE or (self.wait_for_run and not self.run_command):
                 name = names[0]
             elif heading and posvel:
                 name = names[3]
@@ -199,18 +201,18 @@ class NavFilter:
 
     def valid(self, name: str, kind: str) -> bool:
         """Whether an output of `kind` ("attitude", "navigation", "any") is valid in state `name`."""
-        names = self.profile["states"]  # type: ignore[index]
+        names: List[str] = list(self.profile["states"])
         if self.profile.get("aiding") == "gnss":
-            return name == names[2]
+            return bool(name == names[2])
         if kind == "navigation":
-            return name == names[3]
-        return name != names[0]
+            return bool(name == names[3])
+        return bool(name != names[0])
 
 
 class World:
     """The scenario, the sensors' view of it and the filter: `quantities(t)` at simulated time t."""
 
-    def __init__(self, scenario: str = "static", seed: int = 0, profile: Optional[Dict[str, object]] = None) -> None:
+    def __init__(self, scenario: str = "static", seed: int = 0, profile: Optional[Dict[str, Any]] = None) -> None:
         self.scenario = Scenario(scenario)
         self.rng = random.Random(seed ^ 0x5EED)
         self.gyro_bias: Vec = tuple(self.rng.gauss(0.0, 0.002) for _ in range(3))  # type: ignore[assignment]
@@ -229,7 +231,7 @@ class World:
     def gnss_fix(self, t: float) -> bool:
         return t >= GNSS_FIX_AFTER and not any(a <= t < b for a, b in self.gnss_outages)
 
-    def quantities(self, t: float) -> Dict[str, object]:
+    def quantities(self, t: float) -> Dict[str, Any]:
         """Every quantity at simulated time t, in SI units (rad, m, m/s, m/s^2, gauss, mbar, s)."""
         n = self.rng.gauss
         pos, vel, acc, euler, rate = self.scenario.truth(t)
