@@ -139,9 +139,11 @@ def test_cv7_filter_modes_follow_accepted_aiding() -> None:
     command(sim, heading, 2.0)
     assert sample(sim, 0x82, 0x10, 2.1).filter_state == mode.AHRS
     assert int(sample(sim, 0x82, 0x01, 2.1).valid_flags) == 0 and int(sample(sim, 0x82, 0x05, 2.1).valid_flags) == 1
+    ten_m_north = world_mod.ORIGIN[0] + math.degrees(10.0 / world_mod.EARTH_RADIUS)
     position = pkg.aiding.LlhPosition(
-        time=aiding_time(), frame_id=1, latitude=46.5, longitude=6.6, height=372.0, uncertainty=[1, 1, 1], valid_flags=7
-    )
+        time=aiding_time(), frame_id=1, latitude=ten_m_north, longitude=world_mod.ORIGIN[1], height=372.0,
+        uncertainty=[1, 1, 1], valid_flags=7,
+    )  # fmt: skip
     velocity = pkg.aiding.NedVelocity(
         time=aiding_time(), frame_id=1, velocity=[0, 0, 0], uncertainty=[0.1] * 3, valid_flags=7
     )
@@ -149,7 +151,10 @@ def test_cv7_filter_modes_follow_accepted_aiding() -> None:
     command(sim, velocity, 2.2)
     status = sample(sim, 0x82, 0x10, 2.3)
     assert status.filter_state == mode.FULL_NAV and int(status.status_flags) & 3 == 2  # converging
-    assert int(sample(sim, 0x82, 0x01, 2.3).valid_flags) == 1
+    llh = sample(sim, 0x82, 0x01, 2.3)
+    assert int(llh.valid_flags) == 1
+    north = math.radians(llh.latitude - world_mod.ORIGIN[0]) * world_mod.EARTH_RADIUS
+    assert 4.5 < north < 5.5  # moved halfway toward the measurement, 10 m north of the truth
     assert int(sample(sim, 0x82, 0x10, 3.5).status_flags) & 3 == 1  # stable
     assert sample(sim, 0x82, 0x10, 5.0).filter_state == mode.VERT_GYRO  # aiding stopped 2 s ago
 

@@ -1185,7 +1185,7 @@ WORLD: dict[str, dict[str, dict[str, str]]] = {
             "valid_flags": "valid:navigation",
         },
         "ned_velocity": {**_FILTER_VEC, "valid_flags": "valid:navigation"},
-        "euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "yaw", "valid_flags": "valid:attitude"},
+        "euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "nav_yaw", "valid_flags": "valid:attitude"},
         "attitude_quaternion": {"q": "quaternion", "valid_flags": "valid:attitude"},
         "attitude_dcm": {"dcm": "dcm", "valid_flags": "valid:attitude"},
         "gyro_bias": {"bias": "gyro_bias", "valid_flags": "valid:attitude"},
@@ -1238,19 +1238,21 @@ FILTER = {
 # setting's parameter turns auto-initialization on (0x0D,0x19, line 1645); aid: a measurement of a
 # kind (heading, position, velocity, body_velocity) from an aiding frame (aiding frame
 # configuration 0x13,0x01 must define it) accepted when aiding measurement control enables one of
-# the sources (AidingMeasurementSource values; 0xFFFF all); frame: the frame configuration setting.
+# the sources (AidingMeasurementSource values; 0xFFFF all), its values (the parameters named, in
+# the world's units: heading rad, latitude/longitude deg, height m, NED velocity m/s) pulling the
+# filter's outputs toward them; frame: the frame configuration setting.
 WORLD_ACTIONS = {
     "capture_gyro_bias": ("capture", "averaging_time_ms"),
     "reset_filter": ("reset",),
     "set_initial_attitude": ("attitude",),
     "set_initial_heading": ("attitude",),
     "auto_init_control": ("auto_init", "enable"),
-    "true_heading": ("aid", "heading", (5, 0xFFFF)),
-    "llh_position": ("aid", "position", (0, 0xFFFF)),
-    "ecef_position": ("aid", "position", (0, 0xFFFF)),
-    "ned_velocity": ("aid", "velocity", (0, 0xFFFF)),
-    "ecef_velocity": ("aid", "velocity", (0, 0xFFFF)),
-    "body_frame_velocity": ("aid", "body_velocity", (8, 0xFFFF)),
+    "true_heading": ("aid", "heading", (5, 0xFFFF), ("heading",)),
+    "llh_position": ("aid", "position", (0, 0xFFFF), ("latitude", "longitude", "height")),
+    "ecef_position": ("aid", "position", (0, 0xFFFF), ()),
+    "ned_velocity": ("aid", "velocity", (0, 0xFFFF), ("velocity",)),
+    "ecef_velocity": ("aid", "velocity", (0, 0xFFFF), ()),
+    "body_frame_velocity": ("aid", "body_velocity", (8, 0xFFFF), ()),
     "aiding_measurement_control": ("enable", "source", "enable"),
     "frame_config": ("frame", "frame_id"),
     # CV7 "Wait for Run" (line 504; Run Navigation Filter 0x0D,0x05, line 8268): the filter stays

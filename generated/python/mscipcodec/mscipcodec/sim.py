@@ -297,7 +297,9 @@ class Simulator:
             enables = [(c, a) for c, a in _sim.ACTIONS.items() if a[0] == "enable"]
             enabled = any(self._setting_on(c, a[2], **{a[1]: action[2]}) for c, a in enables)
             if enabled and int(getattr(command, "valid_flags", 0) or 0):
-                nav.accept(action[1], t)
+                values = [getattr(command, a) for a in action[3]]
+                flat = [float(x) for v in values for x in (v if isinstance(v, list) else [v])]
+                self.world.aid(action[1], t, flat)
         return None
 
     def _all(self, kind: str) -> None:

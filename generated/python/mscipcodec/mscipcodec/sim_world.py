@@ -158,6 +158,7 @@ class NavFilter:
         self.attitude_set = False
         self.running = False
         self.run_command = False
+        self.offsets: Dict[str, Tuple[float, ...]] = {}  # output - truth the aiding left (NED m, m/s; rad)
         self.mode_since = t
         self.last_state = ""
 
@@ -228,6 +229,22 @@ class World:
         self.captured_bias = tuple(b + self.rng.gauss(0.0, 1e-5) for b in self.gyro_bias)  # type: ignore[assignment]
         return self.captured_bias
 
+    def aid(self, kind: str, t: float, values: Sequence[float]) -> None:
+        """An accepted aiding measurement at simulated time t: the filter uses it, and its outputs
+        move halfway toward it (the offset of the measurement from the truth, weighted)."""
+        self.filter.accept(kind, t)
+        pos, vel, _, euler, _ = self.scenario.truth(t)
+        if kind == "heading" and len(values) == 1:
+            self.filter.offsets["heading"] = (0.5 * _wrap(values[0] - euler[2]),)
+        elif kind == "position" and len(values) == 3:
+            lat0 = math.radians(ORIGIN[0])
+            north = math.radians(values[0] - ORIGIN[0]) * EARTH_RADIUS
+            east = math.radians(values[1] - ORIGIN[1]) * EARTH_RADIUS * math.cos(lat0)
+            measured = (north, east, ORIGIN[2] - values[2])
+            self.filter.offsets["position"] = tuple(0.5 * (measured[k] - pos[k]) for k in range(3))
+        elif kind == "velocity" and len(values) == 3:
+            self.filter.offsets["velocity"] = tuple(0.5 * (values[k] - vel[k]) for k in range(3))
+
     def gnss_fix(self, t: float) -> bool:
         return t >= GNSS_FIX_AFTER and not any(a <= t < b for a, b in self.gnss_outages)
 
@@ -236,6 +253,10 @@ class World:
         n = self.rng.gauss
         pos, vel, acc, euler, rate = self.scenario.truth(t)
         roll, pitch, yaw = euler
+        offsets = self.filter.offsets
+        out_pos = [pos[k] + offsets.get("position", (0.0, 0.0, 0.0))[k] for k in range(3)]
+        out_vel = [vel[k] + offsets.get("velocity", (0.0, 0.0, 0.0))[k] for k in range(3)]
+        out_yaw = yaw + offsets.get("heading", (0.0,))[0]
         c = _rot(roll, pitch, yaw)
         lat0 = math.radians(ORIGIN[0])
         lat = ORIGIN[0] + math.degrees(pos[0] / EARTH_RADIUS)
@@ -283,12 +304,13 @@ class World:
             "roll": roll + n(0.0, 1e-3),
             "pitch": pitch + n(0.0, 1e-3),
             "yaw": _wrap(yaw + n(0.0, 2e-3)),
+            "nav_yaw": _wrap(out_yaw + n(0.0, 2e-3)),
             "quaternion": quat,
             "dcm": tuple(c[j][i] for i in range(3) for j in range(3)),  # NED-to-body, row-major
-            "latitude": lat + math.degrees(n(0.0, nav_err) / EARTH_RADIUS),
-            "longitude": lon + math.degrees(n(0.0, nav_err) / EARTH_RADIUS),
-            "height": height + n(0.0, nav_err),
-            "velocity_ned": tuple(v + n(0.0, 0.01) for v in vel),
+            "latitude": ORIGIN[0] + math.degrees((out_pos[0] + n(0.0, nav_err)) / EARTH_RADIUS),
+            "longitude": ORIGIN[1] + math.degrees((out_pos[1] + n(0.0, nav_err)) / (EARTH_RADIUS * math.cos(lat0))),
+            "height": ORIGIN[2] - out_pos[2] + n(0.0, nav_err),
+            "velocity_ned": tuple(v + n(0.0, 0.01) for v in out_vel),
             "gnss_latitude": lat + math.degrees(gnss_err[0] / EARTH_RADIUS),
             "gnss_longitude": lon + math.degrees(gnss_err[1] / EARTH_RADIUS),
             "gnss_height": height + gnss_err[2],

@@ -287,6 +287,8 @@ class Simulator:
             nav.reset(t)
         elif action[0] == "attitude":
             nav.attitude_set = True
+        elif action[0] == "run":
+            nav.run_command = True
         elif action[0] == "aid":
             frame = int(getattr(command, "frame_id", 0) or 0)
             frames = [c for c, a in _sim.ACTIONS.items() if a[0] == "frame"]
@@ -295,7 +297,9 @@ class Simulator:
             enables = [(c, a) for c, a in _sim.ACTIONS.items() if a[0] == "enable"]
             enabled = any(self._setting_on(c, a[2], **{a[1]: action[2]}) for c, a in enables)
             if enabled and int(getattr(command, "valid_flags", 0) or 0):
-                nav.accept(action[1], t)
+                values = [getattr(command, a) for a in action[3]]
+                flat = [float(x) for v in values for x in (v if isinstance(v, list) else [v])]
+                self.world.aid(action[1], t, flat)
         return None
 
     def _all(self, kind: str) -> None:
@@ -438,6 +442,8 @@ class Simulator:
         for cls, action in _sim.ACTIONS.items():  # settings the filter follows
             if action[0] == "auto_init" and getattr(cls, "DEVICE", None) in (None, self.device):
                 self.world.filter.auto_init = self._setting_on(cls, action[1])
+            if action[0] == "wait_run" and getattr(cls, "DEVICE", None) in (None, self.device):
+                self.world.filter.wait_for_run = self._setting_on(cls, action[1])
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
 
@@ -592,9 +598,8 @@ def _show(
         member = (
             world["filter_state"] if name == "filter_state" else nav.get("fix", ["", ""])[0 if world["gnss_fix"] else 1]
         )
-        enum = type(current)
-        if isinstance(current, Enum) and str(member).upper() in enum.__members__:
-            setattr(value, attr, enum[str(member).upper()])
+        if isinstance(current, Enum) and str(member).upper() in type(current).__members__:
+            setattr(value, attr, type(current)[str(member).upper()])
         return
     if kind == "flags":
         setattr(value, attr, type(current)(int(world[name])) if current is not None else int(world[name]))
@@ -840,8 +845,8 @@ def _loop(
                 pending.append((now, queue.pop(0)[1]))
             pending.sort(key=lambda c: c[0])
             while pending and pending[0][0] <= now:
-                when, data = pending.pop(0)
-                link.write(data)
+                when, chunk = pending.pop(0)
+                link.write(chunk)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
         wake = [c[0] for c in pending[:1]]

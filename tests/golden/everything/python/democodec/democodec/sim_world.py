@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import random
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 GRAVITY = 9.80665
 EARTH_RADIUS = 6378137.0
@@ -59,7 +59,7 @@ def _to_body(m: List[List[float]], v: Sequence[float]) -> Vec:
 
 def pressure_mbar(height: float) -> float:
     """The standard atmosphere's pressure at a height (m)."""
-    return 1013.25 * (1.0 - 2.25577e-5 * height) ** 5.25588
+    return float(1013.25 * (1.0 - 2.25577e-5 * height) ** 5.25588)
 
 
 class Scenario:
@@ -110,7 +110,7 @@ class Scenario:
 
 
 def _read_track(path: str) -> List[Tuple[float, ...]]:
-    rows = []
+    rows: List[Tuple[float, ...]] = []
     try:
         with open(path, encoding="utf-8") as f:
             for n, line in enumerate(f, 1):
@@ -146,9 +146,10 @@ class NavFilter:
     TIMEOUT = 2.0  # seconds without a measurement before the filter stops using it
     SETTLE = 1.0  # seconds of IMU data before the first mode
 
-    def __init__(self, profile: Dict[str, object]) -> None:
+    def __init__(self, profile: Dict[str, Any]) -> None:
         self.profile = profile
         self.auto_init = bool(profile.get("auto_init", True))
+        self.wait_for_run = False
         self.reset(0.0)
 
     def reset(self, t: float) -> None:
@@ -156,6 +157,8 @@ class NavFilter:
         self.accepted: Dict[str, float] = {}  # aiding kind -> last simulated time accepted
         self.attitude_set = False
         self.running = False
+        self.run_command = False
+        self.offsets: Dict[str, Tuple[float, ...]] = {}  # output - truth the aiding left (NED m, m/s; rad)
         self.mode_since = t
         self.last_state = ""
 
@@ -168,7 +171,7 @@ class NavFilter:
 
     def state(self, t: float, gnss_fix: bool) -> Tuple[str, int]:
         """(state name of the device's enum, status flags) at simulated time t."""
-        names = self.profile["states"]  # type: ignore[index]
+        names: List[str] = list(self.profile["states"])
         if self.profile.get("aiding") == "gnss":
             attitude = self.auto_init or self.attitude_set
             if t - self.started < 0.5:
@@ -181,7 +184,7 @@ class NavFilter:
         else:
             heading = self._fresh("heading", t)
             posvel = self._fresh("position", t) and self._fresh("velocity", t)
-            if t - self.started < self.SETTLE:
+            if t - self.started < self.SETTLE or (self.wait_for_run and not self.run_command):
                 name = names[0]
             elif heading and posvel:
                 name = names[3]
@@ -199,18 +202,18 @@ class NavFilter:
 
     def valid(self, name: str, kind: str) -> bool:
         """Whether an output of `kind` ("attitude", "navigation", "any") is valid in state `name`."""
-        names = self.profile["states"]  # type: ignore[index]
+        names: List[str] = list(self.profile["states"])
         if self.profile.get("aiding") == "gnss":
-            return name == names[2]
+            return bool(name == names[2])
         if kind == "navigation":
-            return name == names[3]
-        return name != names[0]
+            return bool(name == names[3])
+        return bool(name != names[0])
 
 
 class World:
     """The scenario, the sensors' view of it and the filter: `quantities(t)` at simulated time t."""
 
-    def __init__(self, scenario: str = "static", seed: int = 0, profile: Optional[Dict[str, object]] = None) -> None:
+    def __init__(self, scenario: str = "static", seed: int = 0, profile: Optional[Dict[str, Any]] = None) -> None:
         self.scenario = Scenario(scenario)
         self.rng = random.Random(seed ^ 0x5EED)
         self.gyro_bias: Vec = tuple(self.rng.gauss(0.0, 0.002) for _ in range(3))  # type: ignore[assignment]
@@ -226,14 +229,34 @@ class World:
         self.captured_bias = tuple(b + self.rng.gauss(0.0, 1e-5) for b in self.gyro_bias)  # type: ignore[assignment]
         return self.captured_bias
 
+    def aid(self, kind: str, t: float, values: Sequence[float]) -> None:
+        """An accepted aiding measurement at simulated time t: the filter uses it, and its outputs
+        move halfway toward it (the offset of the measurement from the truth, weighted)."""
+        self.filter.accept(kind, t)
+        pos, vel, _, euler, _ = self.scenario.truth(t)
+        if kind == "heading" and len(values) == 1:
+            self.filter.offsets["heading"] = (0.5 * _wrap(values[0] - euler[2]),)
+        elif kind == "position" and len(values) == 3:
+            lat0 = math.radians(ORIGIN[0])
+            north = math.radians(values[0] - ORIGIN[0]) * EARTH_RADIUS
+            east = math.radians(values[1] - ORIGIN[1]) * EARTH_RADIUS * math.cos(lat0)
+            measured = (north, east, ORIGIN[2] - values[2])
+            self.filter.offsets["position"] = tuple(0.5 * (measured[k] - pos[k]) for k in range(3))
+        elif kind == "velocity" and len(values) == 3:
+            self.filter.offsets["velocity"] = tuple(0.5 * (values[k] - vel[k]) for k in range(3))
+
     def gnss_fix(self, t: float) -> bool:
         return t >= GNSS_FIX_AFTER and not any(a <= t < b for a, b in self.gnss_outages)
 
-    def quantities(self, t: float) -> Dict[str, object]:
+    def quantities(self, t: float) -> Dict[str, Any]:
         """Every quantity at simulated time t, in SI units (rad, m, m/s, m/s^2, gauss, mbar, s)."""
         n = self.rng.gauss
         pos, vel, acc, euler, rate = self.scenario.truth(t)
         roll, pitch, yaw = euler
+        offsets = self.filter.offsets
+        out_pos = [pos[k] + offsets.get("position", (0.0, 0.0, 0.0))[k] for k in range(3)]
+        out_vel = [vel[k] + offsets.get("velocity", (0.0, 0.0, 0.0))[k] for k in range(3)]
+        out_yaw = yaw + offsets.get("heading", (0.0,))[0]
         c = _rot(roll, pitch, yaw)
         lat0 = math.radians(ORIGIN[0])
         lat = ORIGIN[0] + math.degrees(pos[0] / EARTH_RADIUS)
@@ -281,12 +304,13 @@ class World:
             "roll": roll + n(0.0, 1e-3),
             "pitch": pitch + n(0.0, 1e-3),
             "yaw": _wrap(yaw + n(0.0, 2e-3)),
+            "nav_yaw": _wrap(out_yaw + n(0.0, 2e-3)),
             "quaternion": quat,
             "dcm": tuple(c[j][i] for i in range(3) for j in range(3)),  # NED-to-body, row-major
-            "latitude": lat + math.degrees(n(0.0, nav_err) / EARTH_RADIUS),
-            "longitude": lon + math.degrees(n(0.0, nav_err) / EARTH_RADIUS),
-            "height": height + n(0.0, nav_err),
-            "velocity_ned": tuple(v + n(0.0, 0.01) for v in vel),
+            "latitude": ORIGIN[0] + math.degrees((out_pos[0] + n(0.0, nav_err)) / EARTH_RADIUS),
+            "longitude": ORIGIN[1] + math.degrees((out_pos[1] + n(0.0, nav_err)) / (EARTH_RADIUS * math.cos(lat0))),
+            "height": ORIGIN[2] - out_pos[2] + n(0.0, nav_err),
+            "velocity_ned": tuple(v + n(0.0, 0.01) for v in out_vel),
             "gnss_latitude": lat + math.degrees(gnss_err[0] / EARTH_RADIUS),
             "gnss_longitude": lon + math.degrees(gnss_err[1] / EARTH_RADIUS),
             "gnss_height": height + gnss_err[2],
