@@ -329,3 +329,17 @@ def test_cv7_waits_for_the_run_command_when_configured() -> None:
     assert sample(sim, 0x82, 0x10, 3.0).filter_state == t.FilterModeCv7.INIT
     assert command(sim, pkg.filter.RunFilter(), 0.0)[0][1] == 0
     assert sample(sim, 0x82, 0x10, 3.0).filter_state == t.FilterModeCv7.VERT_GYRO
+
+
+def test_set_to_idle_stops_the_streams_until_resume() -> None:
+    sim = sim_mod.Simulator("cv7_ins")
+    fmt = pkg.threedm.MessageFormat(
+        function=1, desc_set=0x80, num_descriptors=1, descriptors=[t.DescriptorRate(descriptor=4, decimation=10)]
+    )
+    assert command(sim, fmt, 0.0)[0][1] == 0
+    sim.poll(0.0)
+    assert len(sim.poll(0.1)) >= 9  # 100 Hz
+    command(sim, pkg.base.SetToIdle(), 0.1)
+    assert sim.poll(0.3) == []
+    command(sim, pkg.base.Resume(), 0.3)
+    assert 9 <= len(sim.poll(0.4)) <= 11  # from resume on, not the backlog

@@ -1259,6 +1259,9 @@ WORLD_ACTIONS = {
     # in initialization until run when the initialization configuration asks to wait.
     "initialization_configuration": ("wait_run", "wait_for_run_command"),
     "run_filter": ("run",),
+    # Set to idle stops the data streams until resume (GX5-45 line 363 and 834; CV7 lines 8045, 8101).
+    "set_to_idle": ("idle",),
+    "resume": ("resume",),
 }
 
 

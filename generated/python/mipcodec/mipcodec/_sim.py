@@ -1033,6 +1033,8 @@ ACTIONS: Dict[Any, Tuple[Any, ...]] = {
     aiding.FrameConfig: ("frame", "frame_id"),
     filter.InitializationConfiguration: ("wait_run", "wait_for_run_command"),
     filter.RunFilter: ("run",),
+    base.SetToIdle: ("idle",),
+    base.Resume: ("resume",),
 }
 
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)

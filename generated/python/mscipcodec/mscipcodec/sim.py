@@ -132,6 +132,7 @@ class Simulator:
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
+        self.idle = False  # set to idle: no streams until resume
         self.follow_baud = baud  # a write of the port's baud rate changes the pty's line rate
         self.baud_changes: List[Tuple[float, int]] = []  # (after the reply sent at, new baud rate)
         self._replan()
@@ -289,6 +290,8 @@ class Simulator:
             nav.attitude_set = True
         elif action[0] == "run":
             nav.run_command = True
+        elif action[0] in ("idle", "resume"):
+            self.idle = action[0] == "idle"
         elif action[0] == "aid":
             frame = int(getattr(command, "frame_id", 0) or 0)
             frames = [c for c, a in _sim.ACTIONS.items() if a[0] == "frame"]
@@ -457,7 +460,7 @@ class Simulator:
             last = self.ticks.get(set_id, tick_now - 1)
             for tick in range(max(last + 1, tick_now - rate), tick_now + 1):
                 due = [d for d, dec in entries if tick % dec == 0]
-                if due:
+                if due and not self.idle:
                     t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
                     out.extend((t, p) for p in self._sample_packets(set_id, due, t))
             self.ticks[set_id] = tick_now
