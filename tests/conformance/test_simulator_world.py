@@ -343,3 +343,13 @@ def test_set_to_idle_stops_the_streams_until_resume() -> None:
     assert sim.poll(0.3) == []
     command(sim, pkg.base.Resume(), 0.3)
     assert 9 <= len(sim.poll(0.4)) <= 11  # from resume on, not the backlog
+
+
+def test_world_options_are_checked() -> None:
+    import subprocess
+
+    from tests.conformance.test_simulator import SIMULATE
+
+    for bad in (["--speed", "0"], ["--scenario", "moon"], ["--gnss-outage", "5"], ["--gnss-outage", "9:3"]):
+        run = subprocess.run([str(SIMULATE), "--listen", "pty", *bad], capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2 and run.stderr.strip() and "Traceback" not in run.stderr, (bad, run.stderr)

@@ -907,6 +907,13 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="a baud rate change (written) is acknowledged at the old rate, then the pty serves at the new one only",
     )
+    p.add_argument(
+        "--gnss-outage",
+        action="append",
+        default=[],
+        metavar="START:END",
+        help="no GNSS fix from START to END seconds of simulated time (repeatable)",
+    )
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
     p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
     p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
@@ -928,6 +935,17 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
+def _outage(text: str) -> Tuple[float, float]:
+    start, _, end = text.partition(":")
+    try:
+        a, b = float(start), float(end)
+    except ValueError:
+        raise ValueError(f"--gnss-outage {text}: expected START:END in seconds") from None
+    if not 0 <= a < b:
+        raise ValueError(f"--gnss-outage {text}: expected 0 <= START < END")
+    return a, b
+
+
 def main(argv: Optional[List[str]] = None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
@@ -943,6 +961,7 @@ def main(argv: Optional[List[str]] = None) -> int:
                 raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
         else:
             sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed, baud=args.baud)
+            sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
         serve(args.listen, sim, replay)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)
