@@ -12,12 +12,13 @@
 from __future__ import annotations
 
 import importlib
+import json
 import math
 import time
 
 import pytest
 
-from tests.conformance.test_simulator import TRANSPORTS, Sim, listen_for, open_device, pump_for
+from tests.conformance.test_simulator import TRANSPORTS, Sim, listen_for, open_device, pump_for, results, session_tool
 from tests.helpers.generated import python_package
 
 pkg = python_package("mipcodec")
@@ -353,3 +354,71 @@ def test_world_options_are_checked() -> None:
     for bad in (["--speed", "0"], ["--scenario", "moon"], ["--gnss-outage", "5"], ["--gnss-outage", "9:3"]):
         run = subprocess.run([str(SIMULATE), "--listen", "pty", *bad], capture_output=True, text=True, timeout=60)
         assert run.returncode == 2 and run.stderr.strip() and "Traceback" not in run.stderr, (bad, run.stderr)
+
+
+def _line(set_id: int, descriptor: int, name: str, values: dict | None = None, device: str | None = None) -> str:
+    field = {"descriptor": descriptor, "name": name, "values": values or {}}
+    if device:
+        field["device"] = device
+    return json.dumps({"offset": 0, "set": set_id, "fields": [field]}, separators=(",", ":"))
+
+
+def _rates(descriptors: list, decimation: int) -> dict:
+    entries = [{"descriptor": d, "decimation": decimation} for d in descriptors]
+    return {"function": 1, "num_descriptors": len(entries), "descriptors": entries}
+
+
+def gx5_internal_gnss_tool(lang: str, address: str) -> list:
+    """The GX5-45 flow through a language's session tool (command lines only, so every language
+    of SESSION_LANGUAGES runs it): configure, then wait (replies the simulator drops) while the
+    data prints; the filter samples printed in full navigation."""
+    lines = [
+        _line(0x01, 0x01, "ping"),
+        _line(0x01, 0x02, "set_to_idle"),
+        _line(0x01, 0x03, "get_device_info"),
+        _line(0x0C, 0x30, "device_startup_settings", {"function": 5}, "gx5_45"),
+        _line(0x0C, 0x39, "capture_gyro_bias", {"averaging_time_ms": 1000}),
+        _line(0x0D, 0x11, "sensor_to_vehicle_transform", {"function": 1, "roll": 0.0, "pitch": 0.0, "yaw": 0.0}),
+        _line(0x0C, 0x07, "get_gnss_base_rate"),
+        _line(0x0C, 0x0B, "get_filter_base_rate"),
+        _line(0x0C, 0x09, "gnss_message_format", _rates([0x0B], 1)),
+        _line(0x0C, 0x0A, "filter_message_format", _rates([0x11, 0x10, 0x01, 0x02, 0x05], 50)),
+        _line(0x0D, 0x18, "heading_update_control", {"function": 1, "source": 4}),
+        _line(0x0D, 0x19, "auto_init_control", {"function": 1, "enable": 1}),
+        _line(0x0D, 0x01, "reset_filter"),
+        _line(0x0C, 0x11, "data_stream_control", {"function": 1, "device_selector": 3, "enable": 1}, "gx5_45"),
+        _line(0x01, 0x06, "resume"),
+        *[_line(0x01, 0x04, "get_device_descriptors")] * 2,  # dropped: 2 x 300 ms = 12 s simulated of data
+    ]
+    out = session_tool(lang, "mip", address, lines, "--device", "gx5_45")
+    assert [r["result"] for r in results(out)] == ["ack"] * 15 + ["timeout"] * 2, results(out)
+    assert any(
+        f["name"] == "fix_info" and f["values"]["num_sv"] > 0 for x in out if x.get("set") == 0x81 for f in x["fields"]
+    )
+    samples = []
+    for x in out:
+        if x.get("set") == 0x82:
+            values = {f["name"]: f["values"] for f in x["fields"]}
+            if values.get("filter_status", {}).get("filter_state") in (2, "run_solution_valid"):
+                samples.append(values)
+    return samples
+
+
+TOOL_FLOWS = {"gx5_45": ["python"]}  # + "c", "cpp", "rust": the same lines through their tools
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize(("device", "lang"), [(d, lang) for d, langs in TOOL_FLOWS.items() for lang in langs])
+def test_application_flow_through_the_session_tool(device: str, lang: str, transport: str) -> None:
+    args = ("--scenario", "circle", "--speed", str(SPEED), "--drop", "get_device_descriptors")
+    with Sim("mip", device, listen_for(transport), *args) as sim:
+        samples = gx5_internal_gnss_tool(lang, sim.address)
+    assert len(samples) >= 30, len(samples)
+    for s in samples:
+        tow = s["gps_timestamp"]["tow"]
+        pos, vel, _, euler, _ = _truth(tow)
+        llh = s["llh_position"]
+        north = math.radians(llh["latitude"] - world_mod.ORIGIN[0]) * world_mod.EARTH_RADIUS
+        assert abs(north - pos[0]) < 1.0
+        yaw_error = (s["euler_angles"]["yaw"] - euler[2] + math.pi) % (2 * math.pi) - math.pi
+        assert abs(yaw_error) < 0.02
