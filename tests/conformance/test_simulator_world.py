@@ -18,7 +18,16 @@ import time
 
 import pytest
 
-from tests.conformance.test_simulator import TRANSPORTS, Sim, listen_for, open_device, pump_for, results, session_tool
+from tests.conformance.test_simulator import (
+    SESSION_LANGUAGES,
+    TRANSPORTS,
+    Sim,
+    listen_for,
+    open_device,
+    pump_for,
+    results,
+    session_tool,
+)
 from tests.helpers.generated import python_package
 
 pkg = python_package("mipcodec")
@@ -404,7 +413,9 @@ def gx5_internal_gnss_tool(lang: str, address: str) -> list:
     return samples
 
 
-TOOL_FLOWS = {"gx5_45": ["python"]}  # + "c", "cpp", "rust": the same lines through their tools
+# The flows every session language runs through its tool (command lines): the CV7-INS flow needs
+# aiding sent every 500 ms while waiting, which the tools' line-by-line input does not do yet.
+TOOL_FLOWS = {"gx5_45": SESSION_LANGUAGES}
 
 
 @pytest.mark.parametrize("transport", TRANSPORTS)
