@@ -247,20 +247,28 @@ def _navigate(dev, device: str, aid: bool) -> list:
     reached = None
     while time.monotonic() < deadline and len(samples) < 30:
         if aid and "gps_timestamp" in latest:
-            pos, vel, _, euler, _ = _truth(latest["gps_timestamp"].tow)
+            tow = latest["gps_timestamp"].tow  # measured then (internal reference time), sent now
+            pos, vel, _, euler, _ = _truth(tow)
+            stamp = t.AidingTime(
+                timebase=t.AidingTimebase.INTERNAL_REFERENCE, nanoseconds=round((tow - world_mod.GPS_TOW0) * 1e9)
+            )
             llh = (
                 world_mod.ORIGIN[0] + math.degrees(pos[0] / world_mod.EARTH_RADIUS),
                 world_mod.ORIGIN[1]
                 + math.degrees(pos[1] / (world_mod.EARTH_RADIUS * math.cos(math.radians(world_mod.ORIGIN[0])))),
             )
             at = t.AidingTime(timebase=t.AidingTimebase.TIME_OF_ARRIVAL)
-            dev.aiding.true_heading(time=at, frame_id=1, heading=euler[2], uncertainty=0.01, valid_flags=1)
+            dev.aiding.true_heading(time=stamp, frame_id=1, heading=euler[2], uncertainty=0.01, valid_flags=1)
             dev.aiding.llh_position(
-                time=at, frame_id=2, latitude=llh[0], longitude=llh[1], height=372.0, uncertainty=[1.0] * 3,
+                time=stamp, frame_id=2, latitude=llh[0], longitude=llh[1], height=372.0, uncertainty=[1.0] * 3,
                 valid_flags=t.AidingLlhValidFlags(7),
             )  # fmt: skip
             dev.aiding.ned_velocity(
-                time=at, frame_id=2, velocity=list(vel), uncertainty=[0.1] * 3, valid_flags=t.AidingVectorValidFlags(7)
+                time=stamp,
+                frame_id=2,
+                velocity=list(vel),
+                uncertainty=[0.1] * 3,
+                valid_flags=t.AidingVectorValidFlags(7),
             )
             dev.aiding.body_frame_velocity(
                 time=at,
@@ -433,3 +441,14 @@ def test_application_flow_through_the_session_tool(device: str, lang: str, trans
         assert abs(north - pos[0]) < 1.0
         yaw_error = (s["euler_angles"]["yaw"] - euler[2] + math.pi) % (2 * math.pi) - math.pi
         assert abs(yaw_error) < 0.02
+
+
+def test_aiding_is_compared_with_the_truth_at_its_timestamp() -> None:
+    world = world_mod.World("circle")
+    pos, _, _, _, _ = world.scenario.truth(1.0)
+    lat = world_mod.ORIGIN[0] + math.degrees(pos[0] / world_mod.EARTH_RADIUS)
+    lon = world_mod.ORIGIN[1] + math.degrees(pos[1] / (world_mod.EARTH_RADIUS * math.cos(math.radians(46.5197))))
+    world.aid("position", 3.0, [lat, lon, 372.0], measured=1.0)  # measured at 1 s, arrived at 3 s
+    assert all(abs(o) < 0.01 for o in world.filter.offsets["position"])
+    world.aid("position", 3.0, [lat, lon, 372.0])  # time of arrival: 2 s old at 5 m/s
+    assert math.hypot(*world.filter.offsets["position"][:2]) > 3.0

@@ -302,7 +302,11 @@ class Simulator:
             if enabled and int(getattr(command, "valid_flags", 0) or 0):
                 values = [getattr(command, a) for a in action[3]]
                 flat = [float(x) for v in values for x in (v if isinstance(v, list) else [v])]
-                self.world.aid(action[1], t, flat)
+                stamp = getattr(command, "time", None)  # internal reference time: when it was measured
+                measured = t
+                if stamp is not None and int(getattr(stamp, "timebase", 0) or 0) == 1:
+                    measured = min(t, int(getattr(stamp, "nanoseconds", 0) or 0) / 1e9)
+                self.world.aid(action[1], t, flat, measured)
         return None
 
     def _all(self, kind: str) -> None:

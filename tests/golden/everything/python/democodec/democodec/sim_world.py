@@ -229,19 +229,20 @@ class World:
         self.captured_bias = tuple(b + self.rng.gauss(0.0, 1e-5) for b in self.gyro_bias)  # type: ignore[assignment]
         return self.captured_bias
 
-    def aid(self, kind: str, t: float, values: Sequence[float]) -> None:
-        """An accepted aiding measurement at simulated time t: the filter uses it, and its outputs
-        move halfway toward it (the offset of the measurement from the truth, weighted)."""
+    def aid(self, kind: str, t: float, values: Sequence[float], measured: Optional[float] = None) -> None:
+        """An accepted aiding measurement arriving at simulated time t, taken at `measured` (its
+        internal reference timestamp; default its arrival): the filter uses it, and its outputs
+        move halfway toward it (the offset of the measurement from the truth then, weighted)."""
         self.filter.accept(kind, t)
-        pos, vel, _, euler, _ = self.scenario.truth(t)
+        pos, vel, _, euler, _ = self.scenario.truth(t if measured is None else measured)
         if kind == "heading" and len(values) == 1:
             self.filter.offsets["heading"] = (0.5 * _wrap(values[0] - euler[2]),)
         elif kind == "position" and len(values) == 3:
             lat0 = math.radians(ORIGIN[0])
             north = math.radians(values[0] - ORIGIN[0]) * EARTH_RADIUS
             east = math.radians(values[1] - ORIGIN[1]) * EARTH_RADIUS * math.cos(lat0)
-            measured = (north, east, ORIGIN[2] - values[2])
-            self.filter.offsets["position"] = tuple(0.5 * (measured[k] - pos[k]) for k in range(3))
+            ned = (north, east, ORIGIN[2] - values[2])
+            self.filter.offsets["position"] = tuple(0.5 * (ned[k] - pos[k]) for k in range(3))
         elif kind == "velocity" and len(values) == 3:
             self.filter.offsets["velocity"] = tuple(0.5 * (values[k] - vel[k]) for k in range(3))
 
