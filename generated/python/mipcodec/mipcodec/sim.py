@@ -133,6 +133,7 @@ class Simulator:
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
         self.idle = False  # set to idle: no streams until resume
+        self._world_at: Optional[Tuple[float, Dict[str, Any]]] = None
         self.follow_baud = baud  # a write of the port's baud rate changes the pty's line rate
         self.baud_changes: List[Tuple[float, int]] = []  # (after the reply sent at, new baud rate)
         self._replan()
@@ -163,6 +164,7 @@ class Simulator:
             if descriptor is None:
                 continue
             self.commands += 1
+            self._world_at = None  # a command may change the world
             try:
                 name, code, replies, extra = self._answer(set_id, entry, now)
             except Exception as e:  # a simulator bug must not end the session: report, NACK
@@ -529,7 +531,9 @@ class Simulator:
                 setattr(value, attr, _plausible(attr, units, 0, 1, elapsed, self.rng, current))
         shows = _sim.WORLD.get(cls)
         if shows:
-            world = self.world.quantities(elapsed)
+            if self._world_at is None or self._world_at[0] != elapsed:  # one world per sample
+                self._world_at = (elapsed, self.world.quantities(elapsed))
+            world = self._world_at[1]
             units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
             for attr, quantity in shows:
                 _show(value, attr, quantity, units.get(attr), world, _sim.FILTER.get(self.device, {}))
