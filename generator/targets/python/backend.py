@@ -56,6 +56,7 @@ RUNTIME_FILES = [
     "session.py",
     "session_tool.py",
     "sim.py",
+    "sim_world.py",
     "transport.py",
     "tools.py",
     "_speedups.c",
@@ -1094,6 +1095,11 @@ STREAMING: dict[str, dict] = {
         },
         "decimation": None,
         "all_settings": ["device_startup_settings"],
+        # Streams the model's stream control cannot address stream whenever their format is set:
+        # the GX5-45's selector lists IMU and filter only (line 1049, Gx5StreamSelector's note).
+        "unaddressed": {"gx5_45": [0x81]},
+        # Commands that change the baud rate of the port (write): class name -> rate parameter
+        "baud": {"comm_port_speed": "baud", "uart_baudrate": "baud"},
     },
     "mscip": {
         "formats": {
@@ -1106,7 +1112,156 @@ STREAMING: dict[str, dict] = {
         "base_rates": {"ms_imu3020": {0xA2: 1000}},
         "decimation": ("sample_rate", "decimation"),
         "all_settings": ["config_all"],
+        "baud": {"uart_baud_rate": "baud_rate"},
     },
+}
+
+
+# The simulated world (runtime sim_world.py, issue 29): which world quantity each data parameter
+# shows, by (group of its set, field name, parameter name); `q[i]` a component, `valid:KIND` a valid
+# flags parameter set whole when the output of KIND (gnss, attitude, navigation, always) is valid,
+# `enum:Q` an enum parameter taking the member named by quantity Q, `flags:Q` a bitfield's value.
+# The runtime converts from the quantity's unit (sim_world.UNITS) to the parameter's (its spec
+# units). A parameter the table does not name keeps the plausible fallback (sim.py _plausible).
+WORLD_GROUPS = {
+    "sensor": "sensor",
+    "gnss_data": "gnss",
+    "gnss_receiver_1": "gnss",
+    "gnss_receiver_2": "gnss",
+    "filter_data": "filter",
+}
+_GNSS_TIME = {"tow": "gps_tow", "week_number": "gps_week", "valid_flags": "valid:gnss"}
+_FILTER_VEC = {"north": "velocity_ned[0]", "east": "velocity_ned[1]", "down": "velocity_ned[2]"}
+WORLD: dict[str, dict[str, dict[str, str]]] = {
+    "sensor": {
+        "scaled_accel": {"scaled_accel": "specific_force"},
+        "scaled_gyro": {"scaled_gyro": "angular_rate"},
+        "scaled_mag": {"scaled_mag": "magnetic_field"},
+        "cf_euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "yaw"},
+        "cf_quaternion": {"q": "quaternion"},
+        "cf_orientation_matrix": {"m": "dcm"},
+        "scaled_pressure": {"scaled_pressure": "pressure"},
+        "gps_timestamp": _GNSS_TIME,
+        "temperature_statistics": {"min_temp": "temperature", "max_temp": "temperature", "mean_temp": "temperature"},
+    },
+    "gnss": {
+        "llh_position": {
+            "latitude": "gnss_latitude",
+            "longitude": "gnss_longitude",
+            "ellipsoid_height": "gnss_height",
+            "msl_height": "gnss_height",
+            "horizontal_accuracy": "horizontal_accuracy",
+            "vertical_accuracy": "vertical_accuracy",
+            "valid_flags": "valid:gnss",
+        },
+        "ned_velocity": {
+            "velocity": "gnss_velocity_ned",
+            "speed": "speed",
+            "ground_speed": "speed",
+            "heading": "course",
+            "valid_flags": "valid:gnss",
+        },
+        "ecef_position": {"position": "ecef_position", "valid_flags": "valid:gnss"},
+        "gps_time": _GNSS_TIME,
+        "utc_time": {
+            "year": "utc[0]",
+            "month": "utc[1]",
+            "day": "utc[2]",
+            "hour": "utc[3]",
+            "minute": "utc[4]",
+            "second": "utc[5]",
+            "millisecond": "utc[6]",
+            "valid_flags": "valid:gnss",
+        },
+        "fix_info": {"fix_type": "enum:fix_type", "num_sv": "num_sv", "valid_flags": "valid:always"},
+    },
+    "filter": {
+        "filter_status": {"filter_state": "enum:filter_state", "status_flags": "flags:filter_flags"},
+        "gps_timestamp": _GNSS_TIME,
+        "llh_position": {
+            "latitude": "latitude",
+            "longitude": "longitude",
+            "ellipsoid_height": "height",
+            "valid_flags": "valid:navigation",
+        },
+        "ned_velocity": {**_FILTER_VEC, "valid_flags": "valid:navigation"},
+        "euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "nav_yaw", "valid_flags": "valid:attitude"},
+        "attitude_quaternion": {"q": "quaternion", "valid_flags": "valid:attitude"},
+        "attitude_dcm": {"dcm": "dcm", "valid_flags": "valid:attitude"},
+        "gyro_bias": {"bias": "gyro_bias", "valid_flags": "valid:attitude"},
+        "comp_angular_rate": {"gyro": "true_angular_rate", "valid_flags": "valid:attitude"},
+        "linear_accel": {"accel": "linear_accel", "valid_flags": "valid:attitude"},
+        "gravity_vector": {"gravity": "gravity_body", "valid_flags": "valid:attitude"},
+        "wgs84_gravity_magnitude": {"gravity_magnitude": "gravity", "valid_flags": "valid:navigation"},
+        "llh_position_uncertainty": {
+            "north": "position_uncertainty",
+            "east": "position_uncertainty",
+            "down": "position_uncertainty",
+            "valid_flags": "valid:navigation",
+        },
+        "ned_velocity_uncertainty": {
+            "north": "velocity_uncertainty",
+            "east": "velocity_uncertainty",
+            "down": "velocity_uncertainty",
+            "valid_flags": "valid:navigation",
+        },
+        "euler_angles_uncertainty": {
+            "roll": "attitude_uncertainty",
+            "pitch": "attitude_uncertainty",
+            "yaw": "attitude_uncertainty",
+            "valid_flags": "valid:attitude",
+        },
+        "ecef_position": {"position": "ecef_position", "valid_flags": "valid:navigation"},
+    },
+}
+# The navigation filter per device (sim_world.NavFilter): the members of its filter state enum in
+# order (GX5-45 0x82,0x10 line 2359: startup, init, run valid, run error; CV7-INS Filter States
+# lines 630-634: init, vertical gyro, AHRS, full navigation), what aids it (the GX5-45's internal
+# GNSS, line 433; the CV7's external measurements accepted per aiding measurement control
+# 0x0D,0x50), its GNSS fix type member names (fix, no fix).
+FILTER = {
+    "gx5_45": {
+        "aiding": "gnss",
+        "states": ["startup", "init", "run_solution_valid", "run_solution_error"],
+        "fix": ["fix_3d", "fix_none"],
+    },
+    "cv7_ins": {
+        "aiding": "external",
+        "states": ["init", "vert_gyro", "ahrs", "full_nav"],
+        "fix": ["fix_3d", "fix_none"],
+    },
+}
+
+# What commands do to the world (sim.py _act): command name -> (action, arguments). capture: reply
+# after the duration in the named parameter (ms) with the captured bias; reset: the filter restarts
+# (0x0D,0x01); attitude: an initial attitude or heading is given (GX5-45 line 1411); auto_init: the
+# setting's parameter turns auto-initialization on (0x0D,0x19, line 1645); aid: a measurement of a
+# kind (heading, position, velocity, body_velocity) from an aiding frame (aiding frame
+# configuration 0x13,0x01 must define it) accepted when aiding measurement control enables one of
+# the sources (AidingMeasurementSource values; 0xFFFF all), its values (the parameters named, in
+# the world's units: heading rad, latitude/longitude deg, height m, NED velocity m/s) pulling the
+# filter's outputs toward them; frame: the frame configuration setting.
+WORLD_ACTIONS = {
+    "capture_gyro_bias": ("capture", "averaging_time_ms"),
+    "reset_filter": ("reset",),
+    "set_initial_attitude": ("attitude",),
+    "set_initial_heading": ("attitude",),
+    "auto_init_control": ("auto_init", "enable"),
+    "true_heading": ("aid", "heading", (5, 0xFFFF), ("heading",)),
+    "llh_position": ("aid", "position", (0, 0xFFFF), ("latitude", "longitude", "height")),
+    "ecef_position": ("aid", "position", (0, 0xFFFF), ()),
+    "ned_velocity": ("aid", "velocity", (0, 0xFFFF), ("velocity",)),
+    "ecef_velocity": ("aid", "velocity", (0, 0xFFFF), ()),
+    "body_frame_velocity": ("aid", "body_velocity", (8, 0xFFFF), ()),
+    "aiding_measurement_control": ("enable", "source", "enable"),
+    "frame_config": ("frame", "frame_id"),
+    # CV7 "Wait for Run" (line 504; Run Navigation Filter 0x0D,0x05, line 8268): the filter stays
+    # in initialization until run when the initialization configuration asks to wait.
+    "initialization_configuration": ("wait_run", "wait_for_run_command"),
+    "run_filter": ("run",),
+    # Set to idle stops the data streams until resume (GX5-45 line 363 and 834; CV7 lines 8045, 8101).
+    "set_to_idle": ("idle",),
+    "resume": ("resume",),
 }
 
 
@@ -1127,6 +1282,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
     }
     commands = []
     data = []
+    world: list[dict] = []
     defaults = []
     by_name: dict[str, list[str]] = {}
     for sm in sets:
@@ -1162,6 +1318,10 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
                         if q["type"]["kind"] == "primitive"
                     )
                     data.append({"cls": cls, "units": pyrepr(units)})
+                    shows = WORLD.get(WORLD_GROUPS.get(s["name"], ""), {}).get(f["name"], {})
+                    mapped = tuple((py_attr(q["name"]), shows[q["name"]]) for q in v["params"] if q["name"] in shows)
+                    if mapped:
+                        world.append({"cls": cls, "value": pyrepr(mapped)})
     streaming = STREAMING.get(proto["name"], {})
 
     def classes(table: dict) -> list[dict]:
@@ -1172,6 +1332,8 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         "sim_commands": commands,
         "factory": defaults,
         "sim_data": data,
+        "sim_world": world,
+        "sim_filter": pyrepr({d["id"]: FILTER[d["id"]] for d in proto["devices"] if d["id"] in FILTER}),
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),
         "rates": classes(streaming.get("rates", {})),
@@ -1182,6 +1344,9 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
             for c in by_name.get((streaming.get("decimation") or ("",))[0], [])
         ],
         "all_settings": [c for n in streaming.get("all_settings", []) for c in by_name.get(n, [])],
+        "unaddressed": pyrepr(streaming.get("unaddressed", {})),
+        "baud": classes(streaming.get("baud", {})),
+        "actions": [{"cls": c, "value": pyrepr(a)} for n, a in WORLD_ACTIONS.items() for c in by_name.get(n, [])],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
     }

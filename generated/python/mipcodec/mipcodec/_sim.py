@@ -851,6 +851,192 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.ExternalTimeDelta: (("dt_nanos", "ns", None),),
 }
 
+# The simulated world (sim_world.py; backend.py WORLD): class -> ((parameter, world quantity), ...)
+WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
+    sensor.ScaledAccel: (("scaled_accel", "specific_force"),),
+    sensor.ScaledGyro: (("scaled_gyro", "angular_rate"),),
+    sensor.ScaledMag: (("scaled_mag", "magnetic_field"),),
+    sensor.CfOrientationMatrix: (("m", "dcm"),),
+    sensor.CfQuaternion: (("q", "quaternion"),),
+    sensor.CfEulerAngles: (("roll", "roll"), ("pitch", "pitch"), ("yaw", "yaw")),
+    sensor.GpsTimestamp: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
+    sensor.TemperatureStatistics: (
+        ("min_temp", "temperature"),
+        ("max_temp", "temperature"),
+        ("mean_temp", "temperature"),
+    ),
+    sensor.ScaledPressure: (("scaled_pressure", "pressure"),),
+    gnss_data.LlhPosition: (
+        ("latitude", "gnss_latitude"),
+        ("longitude", "gnss_longitude"),
+        ("ellipsoid_height", "gnss_height"),
+        ("msl_height", "gnss_height"),
+        ("horizontal_accuracy", "horizontal_accuracy"),
+        ("vertical_accuracy", "vertical_accuracy"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_data.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:gnss")),
+    gnss_data.NedVelocity: (
+        ("velocity", "gnss_velocity_ned"),
+        ("speed", "speed"),
+        ("ground_speed", "speed"),
+        ("heading", "course"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_data.UtcTime: (
+        ("year", "utc[0]"),
+        ("month", "utc[1]"),
+        ("day", "utc[2]"),
+        ("hour", "utc[3]"),
+        ("minute", "utc[4]"),
+        ("second", "utc[5]"),
+        ("millisecond", "utc[6]"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_data.GpsTime: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
+    gnss_data.FixInfo: (("fix_type", "enum:fix_type"), ("num_sv", "num_sv"), ("valid_flags", "valid:always")),
+    filter_data.LlhPosition: (
+        ("latitude", "latitude"),
+        ("longitude", "longitude"),
+        ("ellipsoid_height", "height"),
+        ("valid_flags", "valid:navigation"),
+    ),
+    filter_data.NedVelocity: (
+        ("north", "velocity_ned[0]"),
+        ("east", "velocity_ned[1]"),
+        ("down", "velocity_ned[2]"),
+        ("valid_flags", "valid:navigation"),
+    ),
+    filter_data.AttitudeQuaternion: (("q", "quaternion"), ("valid_flags", "valid:attitude")),
+    filter_data.AttitudeDcm: (("dcm", "dcm"), ("valid_flags", "valid:attitude")),
+    filter_data.EulerAngles: (
+        ("roll", "roll"),
+        ("pitch", "pitch"),
+        ("yaw", "nav_yaw"),
+        ("valid_flags", "valid:attitude"),
+    ),
+    filter_data.GyroBias: (("bias", "gyro_bias"), ("valid_flags", "valid:attitude")),
+    filter_data.LlhPositionUncertainty: (
+        ("north", "position_uncertainty"),
+        ("east", "position_uncertainty"),
+        ("down", "position_uncertainty"),
+        ("valid_flags", "valid:navigation"),
+    ),
+    filter_data.NedVelocityUncertainty: (
+        ("north", "velocity_uncertainty"),
+        ("east", "velocity_uncertainty"),
+        ("down", "velocity_uncertainty"),
+        ("valid_flags", "valid:navigation"),
+    ),
+    filter_data.EulerAnglesUncertainty: (
+        ("roll", "attitude_uncertainty"),
+        ("pitch", "attitude_uncertainty"),
+        ("yaw", "attitude_uncertainty"),
+        ("valid_flags", "valid:attitude"),
+    ),
+    filter_data.LinearAccel: (("accel", "linear_accel"), ("valid_flags", "valid:attitude")),
+    filter_data.CompAngularRate: (("gyro", "true_angular_rate"), ("valid_flags", "valid:attitude")),
+    filter_data.Wgs84GravityMagnitude: (("gravity_magnitude", "gravity"), ("valid_flags", "valid:navigation")),
+    filter_data.FilterStatus_gx5_45: (("filter_state", "enum:filter_state"), ("status_flags", "flags:filter_flags")),
+    filter_data.FilterStatus_cv7_ins: (("filter_state", "enum:filter_state"), ("status_flags", "flags:filter_flags")),
+    filter_data.GpsTimestamp: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
+    filter_data.GravityVector: (("gravity", "gravity_body"), ("valid_flags", "valid:attitude")),
+    filter_data.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:navigation")),
+    gnss_receiver_1.LlhPosition: (
+        ("latitude", "gnss_latitude"),
+        ("longitude", "gnss_longitude"),
+        ("ellipsoid_height", "gnss_height"),
+        ("msl_height", "gnss_height"),
+        ("horizontal_accuracy", "horizontal_accuracy"),
+        ("vertical_accuracy", "vertical_accuracy"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_1.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:gnss")),
+    gnss_receiver_1.NedVelocity: (
+        ("velocity", "gnss_velocity_ned"),
+        ("speed", "speed"),
+        ("ground_speed", "speed"),
+        ("heading", "course"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_1.UtcTime: (
+        ("year", "utc[0]"),
+        ("month", "utc[1]"),
+        ("day", "utc[2]"),
+        ("hour", "utc[3]"),
+        ("minute", "utc[4]"),
+        ("second", "utc[5]"),
+        ("millisecond", "utc[6]"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_1.GpsTime: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
+    gnss_receiver_1.FixInfo: (("fix_type", "enum:fix_type"), ("num_sv", "num_sv"), ("valid_flags", "valid:always")),
+    gnss_receiver_2.LlhPosition: (
+        ("latitude", "gnss_latitude"),
+        ("longitude", "gnss_longitude"),
+        ("ellipsoid_height", "gnss_height"),
+        ("msl_height", "gnss_height"),
+        ("horizontal_accuracy", "horizontal_accuracy"),
+        ("vertical_accuracy", "vertical_accuracy"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_2.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:gnss")),
+    gnss_receiver_2.NedVelocity: (
+        ("velocity", "gnss_velocity_ned"),
+        ("speed", "speed"),
+        ("ground_speed", "speed"),
+        ("heading", "course"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_2.UtcTime: (
+        ("year", "utc[0]"),
+        ("month", "utc[1]"),
+        ("day", "utc[2]"),
+        ("hour", "utc[3]"),
+        ("minute", "utc[4]"),
+        ("second", "utc[5]"),
+        ("millisecond", "utc[6]"),
+        ("valid_flags", "valid:gnss"),
+    ),
+    gnss_receiver_2.GpsTime: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
+    gnss_receiver_2.FixInfo: (("fix_type", "enum:fix_type"), ("num_sv", "num_sv"), ("valid_flags", "valid:always")),
+}
+
+# The navigation filter of each device (backend.py FILTER): states, aiding, fix type members
+FILTER: Dict[str, Dict[str, Any]] = {
+    "gx5_45": {
+        "aiding": "gnss",
+        "states": ["startup", "init", "run_solution_valid", "run_solution_error"],
+        "fix": ["fix_3d", "fix_none"],
+    },
+    "cv7_ins": {
+        "aiding": "external",
+        "states": ["init", "vert_gyro", "ahrs", "full_nav"],
+        "fix": ["fix_3d", "fix_none"],
+    },
+}
+
+# What commands do to the world (backend.py WORLD_ACTIONS): class -> (action, arguments...)
+ACTIONS: Dict[Any, Tuple[Any, ...]] = {
+    threedm.CaptureGyroBias: ("capture", "averaging_time_ms"),
+    filter.ResetFilter: ("reset",),
+    filter.SetInitialAttitude: ("attitude",),
+    filter.SetInitialHeading: ("attitude",),
+    filter.AutoInitControl: ("auto_init", "enable"),
+    aiding.TrueHeading: ("aid", "heading", (5, 65535), ("heading",)),
+    aiding.LlhPosition: ("aid", "position", (0, 65535), ("latitude", "longitude", "height")),
+    aiding.EcefPosition: ("aid", "position", (0, 65535), ()),
+    aiding.NedVelocity: ("aid", "velocity", (0, 65535), ("velocity",)),
+    aiding.EcefVelocity: ("aid", "velocity", (0, 65535), ()),
+    aiding.BodyFrameVelocity: ("aid", "body_velocity", (8, 65535), ()),
+    filter.AidingMeasurementControl: ("enable", "source", "enable"),
+    aiding.FrameConfig: ("frame", "frame_id"),
+    filter.InitializationConfiguration: ("wait_run", "wait_for_run_command"),
+    filter.RunFilter: ("run",),
+    base.SetToIdle: ("idle",),
+    base.Resume: ("resume",),
+}
+
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
 FORMATS: Dict[Any, Any] = {
     threedm.MessageFormat: ("desc_set", "descriptors", "descriptor", "decimation"),
@@ -888,6 +1074,15 @@ BASE_RATES: Dict[str, Dict[int, int]] = {
     "gx5_45": {128: 500, 129: 4, 130: 500},
     "cv7_ins": {128: 1000, 130: 1000, 145: 5, 146: 5, 160: 1000},
 }
+
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {
+    base.CommPortSpeed: "baud",
+    threedm.UartBaudrate: "baud",
+}
+
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {"gx5_45": [129]}
 
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = (

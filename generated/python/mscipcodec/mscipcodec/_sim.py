@@ -56,6 +56,15 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     imu_data.ScaledAuxAccel: (("accel", "g", 3),),
 }
 
+# The simulated world (sim_world.py; backend.py WORLD): class -> ((parameter, world quantity), ...)
+WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {}
+
+# The navigation filter of each device (backend.py FILTER): states, aiding, fix type members
+FILTER: Dict[str, Dict[str, Any]] = {}
+
+# What commands do to the world (backend.py WORLD_ACTIONS): class -> (action, arguments...)
+ACTIONS: Dict[Any, Tuple[Any, ...]] = {}
+
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
 FORMATS: Dict[Any, Any] = {
     imu_config.SelectSensors: (162, "sensors", None, None),
@@ -81,6 +90,14 @@ DECIMATION: Dict[Any, str] = {
 }
 
 BASE_RATES: Dict[str, Dict[int, int]] = {"ms_imu3020": {162: 1000}}
+
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {
+    imu_config.UartBaudRate: "baud_rate",
+}
+
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {}
 
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)

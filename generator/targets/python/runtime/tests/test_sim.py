@@ -78,3 +78,16 @@ def test_a_sample_larger_than_a_packet_repeats_its_shared_fields():
         assert all(f.descriptor == 0x02 for f in fields[1:])
         assert all(abs(f.value.xyz[2] + 1.0) < 0.05 for f in fields[1:])  # gravity, in g
     assert sum(len(decode_packet(p).fields) - 1 for p in packets) == 12
+
+
+def test_world_quantities_through_the_table_and_the_clock_speed():
+    sim = Simulator("alpha", seed=1, scenario="circle", speed=4.0)
+    sim.start_time = 0.0
+    (packet,) = sim._sample_packets(0x80, [0x02], 0.5)  # 2 s of simulated time at speed 4
+    vector = decode_packet(packet).fields[0].value
+    assert abs(vector.xyz[1] - 0.5 / 9.80665) < 0.005  # centripetal 5^2/50 m/s^2, in g (the table: specific force)
+    assert abs(vector.xyz[2] + 1.0) < 0.005
+    assert vector.time == pytest.approx(345602.0)  # GPS time of week at 2 s
+    assert vector.ticks == 2_000_000_000  # the fallback: the clock, in simulated ns
+    with pytest.raises(ValueError, match="unknown scenario"):
+        Simulator("alpha", scenario="nowhere")

@@ -28,3 +28,9 @@ BASE_RATES: Dict[str, Dict[int, int]] = {"alpha": {0x80: 100}}
 ALL_SETTINGS: Tuple[Any, ...] = ()
 DEVICE_TITLES: Dict[str, str] = {"alpha": "Alpha", "beta": "Beta"}
 FACTORY: Dict[Any, Dict[str, Any]] = {}
+# The world (sim_world.py): the vector shows the specific force, its time the GPS time of week
+WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {sensor.Vector: (("xyz", "specific_force"), ("time", "gps_tow"))}
+FILTER: Dict[str, Dict[str, Any]] = {}
+ACTIONS: Dict[Any, Tuple[Any, ...]] = {}
+UNADDRESSED: Dict[str, Any] = {}
+BAUD: Dict[Any, str] = {}

@@ -35,6 +35,15 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.Timestamp: (("nanoseconds", None, None),),
 }
 
+# The simulated world (sim_world.py; backend.py WORLD): class -> ((parameter, world quantity), ...)
+WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {}
+
+# The navigation filter of each device (backend.py FILTER): states, aiding, fix type members
+FILTER: Dict[str, Dict[str, Any]] = {}
+
+# What commands do to the world (backend.py WORLD_ACTIONS): class -> (action, arguments...)
+ACTIONS: Dict[Any, Tuple[Any, ...]] = {}
+
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
 FORMATS: Dict[Any, Any] = {}
 
@@ -51,6 +60,12 @@ POLLS: Dict[Any, Any] = {}
 DECIMATION: Dict[Any, str] = {}
 
 BASE_RATES: Dict[str, Dict[int, int]] = {}
+
+# Commands that change the port's baud rate (write): class -> rate parameter
+BAUD: Dict[Any, str] = {}
+
+# Data sets the stream control of a model cannot address: they stream whenever their format is set
+UNADDRESSED: Dict[str, Any] = {}
 
 # Commands whose save, load and default apply to every setting at once
 ALL_SETTINGS: Tuple[Any, ...] = ()

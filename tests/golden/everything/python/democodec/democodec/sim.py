@@ -34,6 +34,7 @@ from .codec import Choice, Enum, Field
 from .framing import PacketBuilder, Parser, RawPacket
 from .packets import DecodedField, RawField, decode_packet
 from .session import support_error
+from .sim_world import GRAVITY, RADIANS, World
 
 Chunk = Tuple[float, bytes]
 FAULT_KINDS = ("drop", "delay", "corrupt", "split", "garbage", "nack")
@@ -102,7 +103,17 @@ def _set_of(source: Any, command: Any) -> Optional[int]:
 class Simulator:
     """The simulated device: settings (current, startup, factory), replies, streams, faults."""
 
-    def __init__(self, device: Optional[str] = None, seed: int = 0, faults: Sequence[Fault] = ()) -> None:
+    def __init__(
+        self,
+        device: Optional[str] = None,
+        seed: int = 0,
+        faults: Sequence[Fault] = (),
+        scenario: str = "static",
+        speed: float = 1.0,
+        baud: bool = False,
+    ) -> None:
+        if not speed > 0:
+            raise ValueError(f"bad speed {speed!r} (expected a factor above 0)")
         if device is None:
             device = registry.DEVICES[0]
         if device not in registry.DEVICES:
@@ -118,7 +129,20 @@ class Simulator:
         self.ticks: Dict[int, int] = {}  # data set -> last tick sent
         self.plan: Dict[int, List[Tuple[int, int]]] = {}  # data set -> [(descriptor, decimation)]
         self.commands = 0
+        self.speed = float(speed)
+        self.world = World(scenario, seed, _sim.FILTER.get(device))
+        self.delay = 0.0  # seconds of simulated time the reply being built comes late
+        self.idle = False  # set to idle: no streams until resume
+        self._world_at: Optional[Tuple[float, Dict[str, Any]]] = None
+        self.follow_baud = baud  # a write of the port's baud rate changes the pty's line rate
+        self.baud_changes: List[Tuple[float, int]] = []  # (after the reply sent at, new baud rate)
         self._replan()
+
+    def sim_time(self, now: float) -> float:
+        """The simulated clock: seconds since the device started, times --speed."""
+        if self.start_time is None:
+            self.start_time = now
+        return (now - self.start_time) * self.speed
 
     # ------------------------------------------------------------------ commands
     def feed(self, data: bytes, now: float) -> List[Chunk]:
@@ -140,6 +164,7 @@ class Simulator:
             if descriptor is None:
                 continue
             self.commands += 1
+            self._world_at = None  # a command may change the world
             try:
                 name, code, replies, extra = self._answer(set_id, entry, now)
             except Exception as e:  # a simulator bug must not end the session: report, NACK
@@ -152,7 +177,10 @@ class Simulator:
                 reply = self._reply(set_id, descriptor, code, replies)
             except ValueError:  # the reply does not fit one packet: the device cannot report it
                 reply = self._reply(set_id, descriptor, _sim.NACK["invalid_parameter"], [])
-            out.extend(self._faulted(name, reply, now))
+            late, self.delay = now + self.delay / self.speed, 0.0
+            out.extend(self._faulted(name, reply, late))
+            if self.baud_changes and self.baud_changes[-1][0] < 0:  # acked at the old rate first
+                self.baud_changes[-1] = (late, self.baud_changes[-1][1])
             out.extend(extra)
         return out
 
@@ -185,6 +213,9 @@ class Simulator:
             not isinstance(getattr(command, a, None), Enum) and getattr(command, a, None) is not None for a in info[1]
         ):
             return name, nack["invalid_parameter"], [], []
+        refused = self._act(command, now)
+        if refused is not None:
+            return name, refused, [], []
         replies, extra = self._execute(command, now)
         if _suppressed(command):
             return name, None, [], extra
@@ -216,6 +247,16 @@ class Simulator:
                     self.current.pop(k, None)
         self._replan()
         replies = [r for r in (self._response(command, key, fn),) if r is not None]
+        baud = _sim.BAUD.get(type(command))
+        if baud is not None and kind == "write" and self.follow_baud:
+            self.baud_changes.append((-1.0, int(getattr(command, baud, 0) or 0)))
+        action = _sim.ACTIONS.get(type(command), ("",))
+        if action[0] == "capture":
+            self.delay = float(getattr(command, action[1], 0) or 0) / 1000.0
+            bias = self.world.capture_gyro_bias()
+            for r in replies:
+                if hasattr(r, "bias"):
+                    r.bias = list(bias)
         extra: List[Chunk] = []
         poll = _sim.POLLS.get(type(command))
         if poll is not None:
@@ -225,6 +266,50 @@ class Simulator:
                 fields = wanted or [d for d, _ in self.plan.get(set_id, [])]
                 extra = [(now + 0.001, p) for p in self._sample_packets(set_id, fields, now)]
         return replies, extra
+
+    def _setting_on(self, cls: Any, attr: str, **match: Any) -> bool:
+        """Whether a setting's current value (factory: the spec's default, else off) turns `attr`
+        on, for the keys whose parameters take the values in `match` (any of a tuple)."""
+        factory = bool(_sim.FACTORY.get(cls, {}).get(attr))
+        found = None
+        for value in self.current.values():
+            if type(value) is cls and all(
+                int(getattr(value, k, -1) or 0) in (v if isinstance(v, tuple) else (v,)) for k, v in match.items()
+            ):
+                found = found or bool(getattr(value, attr, False))
+        return factory if found is None else found
+
+    def _act(self, command: Field, now: float) -> Optional[int]:
+        """What a command does to the world (_sim.ACTIONS): None, or the NACK code refusing it."""
+        action = _sim.ACTIONS.get(type(command))
+        if action is None:
+            return None
+        t = self.sim_time(now)
+        nav = self.world.filter
+        if action[0] == "reset":
+            nav.reset(t)
+        elif action[0] == "attitude":
+            nav.attitude_set = True
+        elif action[0] == "run":
+            nav.run_command = True
+        elif action[0] in ("idle", "resume"):
+            self.idle = action[0] == "idle"
+        elif action[0] == "aid":
+            frame = int(getattr(command, "frame_id", 0) or 0)
+            frames = [c for c, a in _sim.ACTIONS.items() if a[0] == "frame"]
+            if not any(type(v) in frames and int(getattr(v, "frame_id", -1)) == frame for v in self.current.values()):
+                return int(_sim.NACK["invalid_parameter"])
+            enables = [(c, a) for c, a in _sim.ACTIONS.items() if a[0] == "enable"]
+            enabled = any(self._setting_on(c, a[2], **{a[1]: action[2]}) for c, a in enables)
+            if enabled and int(getattr(command, "valid_flags", 0) or 0):
+                values = [getattr(command, a) for a in action[3]]
+                flat = [float(x) for v in values for x in (v if isinstance(v, list) else [v])]
+                stamp = getattr(command, "time", None)  # internal reference time: when it was measured
+                measured = t
+                if stamp is not None and int(getattr(stamp, "timebase", 0) or 0) == 1:
+                    measured = min(t, int(getattr(stamp, "nanoseconds", 0) or 0) / 1e9)
+                self.world.aid(action[1], t, flat, measured)
+        return None
 
     def _all(self, kind: str) -> None:
         """Save, load or default every setting (_sim.ALL_SETTINGS: device startup settings)."""
@@ -362,22 +447,27 @@ class Simulator:
                 enabled.add(set_id)
             else:
                 enabled.discard(set_id)
+        enabled |= set(_sim.UNADDRESSED.get(self.device, ()))
+        for cls, action in _sim.ACTIONS.items():  # settings the filter follows
+            if action[0] == "auto_init" and getattr(cls, "DEVICE", None) in (None, self.device):
+                self.world.filter.auto_init = self._setting_on(cls, action[1])
+            if action[0] == "wait_run" and getattr(cls, "DEVICE", None) in (None, self.device):
+                self.world.filter.wait_for_run = self._setting_on(cls, action[1])
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
 
     def poll(self, now: float) -> List[Chunk]:
         """The data packets due by `now` (each at its tick's time)."""
-        if self.start_time is None:
-            self.start_time = now
+        sim_now = self.sim_time(now)
         out: List[Chunk] = []
         for set_id, entries in self.plan.items():
             rate = self.base_rates[set_id]
-            tick_now = int((now - self.start_time) * rate)
+            tick_now = int(sim_now * rate)
             last = self.ticks.get(set_id, tick_now - 1)
             for tick in range(max(last + 1, tick_now - rate), tick_now + 1):
                 due = [d for d, dec in entries if tick % dec == 0]
-                if due:
-                    t = self.start_time + tick / rate
+                if due and not self.idle:
+                    t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
                     out.extend((t, p) for p in self._sample_packets(set_id, due, t))
             self.ticks[set_id] = tick_now
         return out
@@ -386,7 +476,7 @@ class Simulator:
         """When the next data packet is due (None: no stream)."""
         if not self.plan or self.start_time is None:
             return None
-        return min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] for s in self.plan)
+        return min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan)
 
     def _sample_packets(self, set_id: int, descriptors: List[int], t: float) -> List[bytes]:
         """One sample of `descriptors` as a packet and continuation packets (docs/conformance.md
@@ -424,7 +514,7 @@ class Simulator:
         if cls is None:
             return None
         value = cls()
-        elapsed = t - (t if self.start_time is None else self.start_time)
+        elapsed = (t - (t if self.start_time is None else self.start_time)) * self.speed
         for attr, units, count in _sim.DATA.get(cls, ()):
             current = getattr(value, attr, None)
             if isinstance(current, list):
@@ -439,6 +529,14 @@ class Simulator:
                 )
             elif current is not None:
                 setattr(value, attr, _plausible(attr, units, 0, 1, elapsed, self.rng, current))
+        shows = _sim.WORLD.get(cls)
+        if shows:
+            if self._world_at is None or self._world_at[0] != elapsed:  # one world per sample
+                self._world_at = (elapsed, self.world.quantities(elapsed))
+            world = self._world_at[1]
+            units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
+            for attr, quantity in shows:
+                _show(value, attr, quantity, units.get(attr), world, _sim.FILTER.get(self.device, {}))
         return value
 
 
@@ -495,7 +593,61 @@ def _identify(value: Any, device: str) -> None:
             _identify(v, device)
 
 
-GRAVITY = 9.80665
+def _show(
+    value: Any, attr: str, quantity: str, units: Optional[str], world: Dict[str, Any], nav: Dict[str, Any]
+) -> None:
+    """Sets one parameter from the world (_sim.WORLD): a quantity (or its component `q[i]`) in
+    the parameter's units, a valid flags parameter, an enum member or a bitfield."""
+    current = getattr(value, attr, None)
+    kind, _, name = quantity.partition(":")
+    if kind == "valid":
+        ok = {"always": True, "gnss": world["gnss_fix"]}.get(name, world.get(f"filter_valid_{name}"))
+        if current is not None:
+            setattr(value, attr, type(current)(_all_bits(type(current)) if ok else 0))
+        return
+    if kind == "enum":
+        member = (
+            world["filter_state"] if name == "filter_state" else nav.get("fix", ["", ""])[0 if world["gnss_fix"] else 1]
+        )
+        if isinstance(current, Enum) and str(member).upper() in type(current).__members__:
+            setattr(value, attr, type(current)[str(member).upper()])
+        return
+    if kind == "flags":
+        setattr(value, attr, type(current)(int(world[name])) if current is not None else int(world[name]))
+        return
+    index = None
+    if quantity.endswith("]"):
+        quantity, _, rest = quantity.partition("[")
+        index = int(rest[:-1])
+    q = world[quantity]
+    if index is not None:
+        q = q[index]
+    if isinstance(current, list):
+        setattr(value, attr, [_convert(float(x), units, quantity) for x in q])
+    elif isinstance(current, int) and not isinstance(current, bool):
+        setattr(value, attr, type(current)(int(round(float(q)))))
+    elif current is not None:
+        setattr(value, attr, _convert(float(q), units, quantity))
+
+
+def _all_bits(cls: Any) -> int:
+    """The single-bit, not reserved members of a bitfield type (every bit of a valid flags)."""
+    mask = 0
+    for name, _attr, _const, first, width in getattr(cls, "_MEMBERS", ()):
+        if width == 1 and not name.startswith("reserved"):
+            mask |= 1 << first
+    return mask or 1
+
+
+def _convert(x: float, units: Optional[str], quantity: str) -> float:
+    """A world value (SI; latitude and longitude in deg) in a parameter's units."""
+    if units == "g":
+        return x / GRAVITY
+    if units == "deg" and quantity in RADIANS:
+        return math.degrees(x)
+    if units == "ms":
+        return x * 1000.0
+    return x
 
 
 def _plausible(attr: str, units: Any, i: int, n: int, elapsed: float, rng: random.Random, default: Any) -> Any:
@@ -581,13 +733,30 @@ class _Link:
 
     BACKLOG = 1 << 18
 
-    def __init__(self, fd: int, sock: Optional[socket.socket] = None) -> None:
+    def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
         self.fd = fd
         self.sock = sock
+        self.slave = slave  # a pty's slave side: the host's line settings (its baud rate)
+        self.baud: Optional[int] = None  # the device's rate once a command changed it
         self.backlog = bytearray()
         os.set_blocking(fd, False)
 
+    def mismatched(self) -> bool:
+        """Whether the host's line runs at another rate than the device's (after a baud change on
+        a pty; before one, any rate works): bytes then arrive as garbage on both sides."""
+        if self.baud is None or self.slave is None:
+            return False
+        import termios
+
+        try:
+            speed = termios.tcgetattr(self.slave)[5]
+        except termios.error:
+            return False
+        return _BAUD_CODES.get(speed) != self.baud
+
     def write(self, data: bytes) -> None:
+        if self.mismatched():
+            data = bytes((b ^ 0x5A) for b in data)
         if len(self.backlog) + len(data) <= self.BACKLOG:
             self.backlog += data
         self.flush()
@@ -616,6 +785,8 @@ class _Link:
             return None
         if not data and self.sock is not None:
             return None
+        if data and self.mismatched():
+            return bytes((b ^ 0x5A) for b in data)
         return data
 
     def close(self) -> None:
@@ -636,7 +807,7 @@ def serve(
         master, slave = os.openpty()
         tty.setraw(slave)
         print(os.ttyname(slave), file=out, flush=True)
-        _loop(_Link(master), None, sim, replay)
+        _loop(_Link(master, slave=slave), None, sim, replay)
         return
     if not listen.startswith("tcp:"):
         raise ValueError(f"bad --listen {listen!r} (expected pty or tcp:HOST:PORT)")
@@ -652,6 +823,17 @@ def serve(
     shown = f"[{host}]" if family == socket.AF_INET6 else host
     print(f"tcp:{shown}:{server.getsockname()[1]}", file=out, flush=True)
     _loop(None, server, sim, replay)
+
+
+def _baud_codes() -> Dict[int, int]:
+    try:
+        import termios
+    except ImportError:
+        return {}
+    return {getattr(termios, n): int(n[1:]) for n in dir(termios) if n[:1] == "B" and n[1:].isdigit()}
+
+
+_BAUD_CODES = _baud_codes()
 
 
 def _loop(
@@ -674,7 +856,10 @@ def _loop(
                 pending.append((now, queue.pop(0)[1]))
             pending.sort(key=lambda c: c[0])
             while pending and pending[0][0] <= now:
-                link.write(pending.pop(0)[1])
+                when, chunk = pending.pop(0)
+                link.write(chunk)
+                while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
+                    link.baud = sim.baud_changes.pop(0)[1]
         wake = [c[0] for c in pending[:1]]
         if sim is not None and link is not None:
             w = sim.next_wakeup(now)
@@ -720,6 +905,24 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--listen", required=True, help="pty, or tcp:HOST:PORT (port 0: a free port)")
     p.add_argument("--device", help=f"device model: {', '.join(registry.DEVICES)} (default {registry.DEVICES[0]})")
     p.add_argument("--seed", type=int, default=0, help="seed of the simulated values (default 0)")
+    p.add_argument(
+        "--scenario",
+        default="static",
+        help="the simulated world: static (on a bench), circle (driving a 50 m circle), file:PATH (a trajectory)",
+    )
+    p.add_argument(
+        "--baud",
+        action="store_true",
+        help="a baud rate change (written) is acknowledged at the old rate, then the pty serves at the new one only",
+    )
+    p.add_argument(
+        "--gnss-outage",
+        action="append",
+        default=[],
+        metavar="START:END",
+        help="no GNSS fix from START to END seconds of simulated time (repeatable)",
+    )
+    p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
     p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
     p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
     for kind, what in (
@@ -740,6 +943,17 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
+def _outage(text: str) -> Tuple[float, float]:
+    start, _, end = text.partition(":")
+    try:
+        a, b = float(start), float(end)
+    except ValueError:
+        raise ValueError(f"--gnss-outage {text}: expected START:END in seconds") from None
+    if not 0 <= a < b:
+        raise ValueError(f"--gnss-outage {text}: expected 0 <= START < END")
+    return a, b
+
+
 def main(argv: Optional[List[str]] = None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
@@ -754,7 +968,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             except OSError as e:
                 raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
         else:
-            sim = Simulator(args.device, args.seed, faults)
+            sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed, baud=args.baud)
+            sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
         serve(args.listen, sim, replay)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)
