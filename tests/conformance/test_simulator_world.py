@@ -14,11 +14,13 @@ from __future__ import annotations
 import importlib
 import json
 import math
+import subprocess
 import time
 
 import pytest
 
 from tests.conformance.test_simulator import (
+    ROOT,
     SESSION_LANGUAGES,
     TRANSPORTS,
     Sim,
@@ -454,3 +456,75 @@ def test_aiding_is_compared_with_the_truth_at_its_timestamp() -> None:
     assert all(abs(o) < 0.01 for o in world.filter.offsets["position"])
     world.aid("position", 3.0, [lat, lon, 372.0])  # time of arrival: 2 s old at 5 m/s
     assert math.hypot(*world.filter.offsets["position"][:2]) > 3.0
+
+
+# ------------------------------------------------------------------------------- application programs
+# The CV7-INS flow as a real application in every language: tests/apps/<lang>/cv7_external_aiding.<ext>,
+# run by `tests/lang/<lang>.sh app cv7_external_aiding ARGS...` (its contract: tests/apps/README.md).
+# Its aiding sensors are a feed file (what an application reads from its own GNSS receiver and
+# heading sensor): one row per 0.1 s of the circle scenario's truth.
+APP_LANGS = SESSION_LANGUAGES
+FEED_STEP = 0.1
+FEED_SECONDS = 600.0
+
+
+def write_aiding_feed(path) -> None:
+    """Rows `tow ns lat lon height vn ve vd heading bx by bz` (GPS time of week in s, the same time as
+    nanoseconds since the device's internal reference epoch, degrees, metres, m/s, radians, m/s)."""
+    lat0 = math.radians(world_mod.ORIGIN[0])
+    rows = ["# tow ns lat lon height vn ve vd heading bx by bz"]
+    for i in range(int(FEED_SECONDS / FEED_STEP) + 1):
+        tow = world_mod.GPS_TOW0 + i * FEED_STEP
+        pos, vel, _, euler, _ = _truth(tow)
+        lat = world_mod.ORIGIN[0] + math.degrees(pos[0] / world_mod.EARTH_RADIUS)
+        lon = world_mod.ORIGIN[1] + math.degrees(pos[1] / (world_mod.EARTH_RADIUS * math.cos(lat0)))
+        yaw = euler[2]
+        body = (
+            vel[0] * math.cos(yaw) + vel[1] * math.sin(yaw),
+            -vel[0] * math.sin(yaw) + vel[1] * math.cos(yaw),
+            vel[2],
+        )
+        numbers = (tow, round(i * FEED_STEP * 1e9), lat, lon, world_mod.ORIGIN[2] - pos[2], *vel, yaw, *body)
+        rows.append(" ".join(repr(float(x)) if not isinstance(x, int) else str(x) for x in numbers))
+    path.write_text("\n".join(rows) + "\n")
+
+
+def run_app(lang: str, name: str, *args: str, timeout: float = 120) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [str(ROOT / "tests/lang" / f"{lang}.sh"), "app", name, *args], capture_output=True, text=True, timeout=timeout
+    )
+
+
+@pytest.mark.parametrize("transport", TRANSPORTS)
+@pytest.mark.parametrize("lang", APP_LANGS)
+def test_cv7_application_program_reaches_full_navigation(lang: str, transport: str, tmp_path) -> None:
+    feed = tmp_path / "aiding.txt"
+    write_aiding_feed(feed)
+    built = run_app(lang, "cv7_external_aiding", timeout=1800)  # builds the program first (usage: exit 2)
+    assert built.returncode == 2 and "usage" in built.stderr, built.stderr
+    period = str(round(500 / SPEED))  # every 500 ms of simulated time
+    args = ("--scenario", "circle", "--speed", str(SPEED), "--seed", "5")
+    with Sim("mip", "cv7_ins", listen_for(transport), *args) as sim:
+        r = run_app(lang, "cv7_external_aiding", sim.address, str(feed), "--period-ms", period, "--samples", "30")
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    modes = [int(x.split()[1]) for x in lines if x.startswith("mode ")]
+    full = int(t.FilterModeCv7.FULL_NAV)
+    assert modes and modes[-1] == full and len(set(modes)) >= 2, modes  # through an intermediate mode
+    samples = [json.loads(x) for x in lines if x.startswith("{")]
+    assert len(samples) == 30, r.stdout
+    assert lines.index(f"mode {full}") < lines.index(next(x for x in lines if x.startswith("{")))
+    lat0 = math.radians(world_mod.ORIGIN[0])
+    for s in samples:
+        pos, vel, _, euler, _ = _truth(s["tow"])
+        north = math.radians(s["lat"] - world_mod.ORIGIN[0]) * world_mod.EARTH_RADIUS
+        east = math.radians(s["lon"] - world_mod.ORIGIN[1]) * world_mod.EARTH_RADIUS * math.cos(lat0)
+        assert abs(north - pos[0]) < 1.0 and abs(east - pos[1]) < 1.0, (s, pos)
+        assert abs(math.hypot(north, east - 50.0) - 50.0) < 1.0  # on the circle
+        assert abs(s["vel"][0] - vel[0]) < 0.1 and abs(s["vel"][1] - vel[1]) < 0.1, (s, vel)
+        yaw_error = (s["euler"][2] - euler[2] + math.pi) % (2 * math.pi) - math.pi
+        assert abs(yaw_error) < 0.02, (s, euler)
+        assert s["llh_valid"] == 1 and s["euler_valid"] == 1
+    tows = [s["tow"] for s in samples]
+    assert all(b > a for a, b in zip(tows, tows[1:]))
+    assert tows[-1] - tows[0] >= 2.5  # 30 samples at 10 Hz of simulated time
