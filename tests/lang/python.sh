@@ -18,6 +18,7 @@
 #   tests/lang/python.sh session --connect ADDRESS ...  python -m <package>.session_tool (docs/conformance.md section 7)
 #   tests/lang/python.sh example FILE                 the package's examples/getting_started.py FILE
 #   tests/lang/python.sh configure ADDRESS [COUNT]    the package's examples/configure_and_stream.py
+#   tests/lang/python.sh app NAME [ARGS...]          an application program, tests/apps/python/NAME.py (tests/apps/README.md)
 # The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
 # decode/encode run the pure-Python code straight from generated/python/<package>; bytecode
 # is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/. The optional
@@ -41,7 +42,7 @@ packages() {
 }
 
 usage() {
-    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT]" >&2
+    echo "usage: tests/lang/python.sh build | ext | test | consumer | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
     exit 2
 }
 
@@ -147,6 +148,16 @@ example)
     ;;
 configure)
     run_py "$ROOT/generated/python/$PACKAGE/examples/configure_and_stream.py" "$@"
+    ;;
+app)
+    [ $# -ge 1 ] || usage
+    name="$1"
+    shift
+    if [ ! -f "$ROOT/tests/apps/python/$name.py" ]; then
+        echo "tests/lang/python.sh: no application tests/apps/python/$name.py" >&2
+        exit 2
+    fi
+    run_py "$ROOT/tests/apps/python/$name.py" "$@"
     ;;
 *)
     usage
