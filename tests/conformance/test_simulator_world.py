@@ -199,7 +199,7 @@ def cv7_external_aiding_python(address: str) -> list:
         dev.filter.initialization_configuration.write(
             wait_for_run_command=0, initial_cond_src=t.FilterInitialConditionSource.AUTO_POS_VEL_ATT,
             auto_heading_alignment_selector=t.HeadingAlignmentMethods(0x08), initial_heading=0.0, initial_pitch=0.0,
-            initial_roll=0.0, initial_position=[0.0] * 3, initial_velocity=[0.0] * 3, reference_frame_selector=1,
+            initial_roll=0.0, initial_position=[0.0] * 3, initial_velocity=[0.0] * 3, reference_frame_selector=t.FilterReferenceFrame.LLH,
         )  # fmt: skip
         dev.filter.reset_filter()
         dev.base.resume()

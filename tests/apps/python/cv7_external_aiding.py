@@ -77,7 +77,7 @@ def configure(device: Device) -> None:
         initial_roll=0.0,
         initial_position=[0.0] * 3,
         initial_velocity=[0.0] * 3,
-        reference_frame_selector=1,  # LLH
+        reference_frame_selector=types.FilterReferenceFrame.LLH,
     )
     device.filter.reset_filter()
     device.base.resume()
