@@ -120,10 +120,14 @@ app() {
         echo "c.sh: no application tests/apps/c/$name.c" >&2
         exit 2
     fi
-    if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
+    # Quiet unless it fails (warnings are errors): the program's own stderr stays clean.
+    mkdir -p "$out"
+    if ! { [ -f "$out/build.ninja" ] || cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug; } >"$out/app-build.log" 2>&1 ||
+        ! cmake --build "$out" --target "$name" >>"$out/app-build.log" 2>&1; then
+        cat "$out/app-build.log" >&2
+        echo "c.sh: building tests/apps/c/$name.c failed" >&2
+        exit 1
     fi
-    cmake --build "$out" --target "$name" >&2
 }
 
 usage() {
