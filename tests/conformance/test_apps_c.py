@@ -58,13 +58,13 @@ def test_wrong_arguments_exit_2(feed, args, message) -> None:
 
 def test_bad_feed_and_address_exit_1(feed, tmp_path) -> None:
     bad = tmp_path / "bad.txt"
-    bad.write_text("# tow ns ...\n1.0 2 3 4\n")
+    bad.write_text("# tow ns ...\n1 2 3 4 5 6 7 8 9 10 11 12\n1.0 2 3 4")  # the last row short, no newline
     empty = tmp_path / "empty.txt"
     empty.write_text("# only a comment\n")
     cases = [
         (("tcp:127.0.0.1:9", str(tmp_path / "missing.txt")), "error: cannot read the feed"),
         (("tcp:127.0.0.1:9", str(tmp_path)), "error: cannot read the feed"),  # a directory
-        (("tcp:127.0.0.1:9", str(bad)), f"error: {bad}:2: expected 12 numbers"),
+        (("tcp:127.0.0.1:9", str(bad)), f"error: {bad}:3: expected 12 numbers"),
         (("tcp:127.0.0.1:9", str(empty)), "error: the feed"),
         ((f"tcp:127.0.0.1:{closed_port()}", str(feed)), "error: cannot connect to 127.0.0.1"),
         ((str(tmp_path / "no-such-tty"), str(feed)), "error: cannot open"),

@@ -188,6 +188,7 @@ static bool parse_row(char *line, feed_row_t *row, const char **why) {
 static bool load_feed(const char *path, feed_t *feed) {
     char line[1024];
     size_t cap = 0, number = 0;
+    bool bad = false; /* a row was refused (reported) */
     FILE *f = fopen(path, "r");
     feed->rows = NULL;
     feed->count = 0;
@@ -202,6 +203,7 @@ static bool load_feed(const char *path, feed_t *feed) {
         number++;
         if (strchr(line, '\n') == NULL && !feof(f)) {
             fprintf(stderr, "error: %s:%lu: line too long\n", path, (unsigned long)number);
+            bad = true;
             break;
         }
         while (*p == ' ' || *p == '\t') {
@@ -215,6 +217,7 @@ static bool load_feed(const char *path, feed_t *feed) {
             feed_row_t *rows = realloc(feed->rows, grown * sizeof *rows);
             if (rows == NULL) {
                 fprintf(stderr, "error: %s: out of memory\n", path);
+                bad = true;
                 break;
             }
             feed->rows = rows;
@@ -222,15 +225,18 @@ static bool load_feed(const char *path, feed_t *feed) {
         }
         if (!parse_row(p, &feed->rows[feed->count], &why)) {
             fprintf(stderr, "error: %s:%lu: %s\n", path, (unsigned long)number, why);
+            bad = true;
             break;
         }
         feed->count++;
     }
-    if (ferror(f)) {
+    if (bad) {
+        /* reported */
+    } else if (ferror(f)) {
         fprintf(stderr, "error: cannot read the feed %s: %s\n", path, strerror(errno));
-    } else if (feof(f) && feed->count == 0) {
+    } else if (feed->count == 0) {
         fprintf(stderr, "error: the feed %s has no rows\n", path);
-    } else if (feof(f)) {
+    } else {
         fclose(f);
         return true;
     }
