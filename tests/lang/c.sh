@@ -9,6 +9,8 @@
 #   tests/lang/c.sh session --connect ADDRESS ...  run <package>-session (docs/conformance.md section 8)
 #   tests/lang/c.sh configure ADDRESS [COUNT]     run <package>-configure-and-stream (examples/configure_and_stream.c,
 #                                                 built with the package's posix module when missing or out of date)
+#   tests/lang/c.sh app NAME [ARGS...]            build tests/apps/c/NAME.c against the package (tests/apps/c/CMakeLists.txt,
+#                                                 build/c-apps/) and run it with ARGS (tests/apps/README.md)
 # decode/encode/example/configure use the package $C_PACKAGE (default: mipcodec). Works from any directory; build
 # output goes to stderr so that decode/encode keep stdout clean.
 set -euo pipefail
@@ -110,8 +112,26 @@ build_target() {
     cmake --build "$out" --target "$2" >&2
 }
 
+# An application program of tests/apps/c/ (tests/apps/README.md): its own small CMake project over the
+# package (add_subdirectory), only the program's target built.
+app() {
+    local name="$1" src="$ROOT/tests/apps/c" out="$ROOT/build/c-apps"
+    if [[ ! "$name" =~ ^[A-Za-z0-9_]+$ ]] || [ ! -f "$src/$name.c" ]; then
+        echo "c.sh: no application tests/apps/c/$name.c" >&2
+        exit 2
+    fi
+    # Quiet unless it fails (warnings are errors): the program's own stderr stays clean.
+    mkdir -p "$out"
+    if ! { [ -f "$out/build.ninja" ] || cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug; } >"$out/app-build.log" 2>&1 ||
+        ! cmake --build "$out" --target "$name" >>"$out/app-build.log" 2>&1; then
+        cat "$out/app-build.log" >&2
+        echo "c.sh: building tests/apps/c/$name.c failed" >&2
+        exit 1
+    fi
+}
+
 usage() {
-    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ... | configure ADDRESS [COUNT]" >&2
+    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ... | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
     exit 2
 }
 
@@ -154,6 +174,11 @@ session)
 configure)
     build_target "$PACKAGE" "${PACKAGE}_c_configure_and_stream"
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-configure-and-stream" "$@"
+    ;;
+app)
+    [ $# -ge 1 ] || usage
+    app "$1"
+    exec "$ROOT/build/c-apps/$1" "${@:2}"
     ;;
 example)
     ensure_example
