@@ -26,6 +26,9 @@
 #   tests/lang/rust.sh configure ADDRESS [COUNT]  cargo run --features serial --example configure_and_stream -- ADDRESS [COUNT]
 #   tests/lang/rust.sh session --connect ADDRESS ...  run <package>-session, the session tool
 #                                                 (docs/conformance.md section 8)
+#   tests/lang/rust.sh app NAME [ARGS...]         build and run the application program NAME of
+#                                                 tests/apps/rust/ (tests/apps/README.md; no ARGS:
+#                                                 its usage, exit 2)
 # The crate for decode/encode/example/configure is $RUST_PACKAGE (default: mipcodec). Works from any directory.
 # Target directories live under build/rust/ (never in generated/); cargo output goes to stderr.
 set -euo pipefail
@@ -47,9 +50,11 @@ CONSUMER_DIR="$ROOT/build/rust/consumer"
 EMBEDDED_TARGET=thumbv7em-none-eabihf
 EMBEDDED_TARGET_DIR="$ROOT/build/rust/target-embedded"
 MSRV_TARGET_DIR="$ROOT/build/rust/target-msrv"
+# The application programs (a cargo project with a path dependency on mipcodec, `serial`).
+APPS="$ROOT/tests/apps/rust"
 
 usage() {
-    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT]" >&2
+    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
     exit 2
 }
 
@@ -296,6 +301,15 @@ session)
 configure)
     # With the `serial` feature: ADDRESS may be a serial port or a pseudo-terminal (the simulator's).
     exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --features serial --example configure_and_stream -- "$@"
+    ;;
+app)
+    [ $# -ge 1 ] || usage
+    name="$1"
+    shift
+    # Built in the tools' target directory, so mipcodec and serialport are not compiled again;
+    # --locked: the dependencies of the committed Cargo.lock.
+    cargo build --release --quiet --locked --manifest-path "$APPS/Cargo.toml" --bin "$name" >&2
+    exec "$CARGO_TARGET_DIR/release/$name" "$@"
     ;;
 example)
     # cargo run (not the binary under target/): both crates' examples are named getting_started.
