@@ -4,7 +4,8 @@
 #   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
 #                                                 -D warnings, cargo test, a core-only
 #                                                 (--no-default-features) build, `package` and
-#                                                 `consumer`, for every crate
+#                                                 `consumer`, for every crate; the application
+#                                                 programs formatted and lint-free
 #   tests/lang/rust.sh package                    cargo package of every crate: the .crate holds
 #                                                 exactly the crate's files, the manifest's metadata
 #                                                 is complete; the smallest crate is verified (built
@@ -169,6 +170,14 @@ test_consumer() {
     done
 }
 
+# The application programs of tests/apps/rust/ (run by the conformance tests): formatted and
+# lint-free like the crate.
+test_apps() {
+    echo "== apps: rustfmt --check, clippy" >&2
+    find "$APPS" -name '*.rs' -print0 | xargs -0 rustfmt --check --edition 2021
+    cargo clippy --quiet --locked --manifest-path "$APPS/Cargo.toml" --all-targets -- -D warnings
+}
+
 # The minimum supported Rust version (rust-version of Cargo.toml, generator/targets/rust/facts.py):
 # the smallest crate with exactly that toolchain, core only and with std, and its tests.
 test_msrv() {
@@ -282,6 +291,7 @@ test)
     done
     test_package
     test_consumer
+    test_apps
     ;;
 decode)
     [ $# -ge 1 ] || usage
@@ -306,8 +316,13 @@ app)
     [ $# -ge 1 ] || usage
     name="$1"
     shift
-    # Built in the tools' target directory, so mipcodec and serialport are not compiled again;
-    # --locked: the dependencies of the committed Cargo.lock.
+    if [ ! -f "$APPS/$name.rs" ]; then
+        echo "rust.sh app: no application program $name in tests/apps/rust/" >&2
+        exit 2
+    fi
+    # Built in the tools' target directory, so serialport is not compiled again (mipcodec is, once:
+    # cargo hashes a path dependency relative to the workspace root); --locked: the committed
+    # Cargo.lock (lockfile version 3, as the crate's rust-version reads it).
     cargo build --release --quiet --locked --manifest-path "$APPS/Cargo.toml" --bin "$name" >&2
     exec "$CARGO_TARGET_DIR/release/$name" "$@"
     ;;
