@@ -424,10 +424,9 @@ def gx5_internal_gnss_tool(lang: str, address: str) -> list:
 
 
 # The flows every session language runs through its tool (command lines): the CV7-INS flow needs
-# aiding sent every 500 ms while waiting, which the tools' line-by-line input does not do yet.
-# Rust's tool was not run against this flow yet (not built on the helper's busy machine): add it
-# once checked, making this SESSION_LANGUAGES.
-TOOL_FLOWS = {"gx5_45": [lang for lang in SESSION_LANGUAGES if lang != "rust"]}
+# aiding sent every 500 ms while waiting, which the tools' line-by-line input does not do yet
+# (the application programs below run it).
+TOOL_FLOWS = {"gx5_45": SESSION_LANGUAGES}
 
 
 @pytest.mark.parametrize("transport", TRANSPORTS)

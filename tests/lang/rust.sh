@@ -4,7 +4,8 @@
 #   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
 #                                                 -D warnings, cargo test, a core-only
 #                                                 (--no-default-features) build, `package` and
-#                                                 `consumer`, for every crate
+#                                                 `consumer`, for every crate; the application
+#                                                 programs formatted and lint-free
 #   tests/lang/rust.sh package                    cargo package of every crate: the .crate holds
 #                                                 exactly the crate's files, the manifest's metadata
 #                                                 is complete; the smallest crate is verified (built
@@ -26,6 +27,9 @@
 #   tests/lang/rust.sh configure ADDRESS [COUNT]  cargo run --features serial --example configure_and_stream -- ADDRESS [COUNT]
 #   tests/lang/rust.sh session --connect ADDRESS ...  run <package>-session, the session tool
 #                                                 (docs/conformance.md section 8)
+#   tests/lang/rust.sh app NAME [ARGS...]         build and run the application program NAME of
+#                                                 tests/apps/rust/ (tests/apps/README.md; no ARGS:
+#                                                 its usage, exit 2)
 # The crate for decode/encode/example/configure is $RUST_PACKAGE (default: mipcodec). Works from any directory.
 # Target directories live under build/rust/ (never in generated/); cargo output goes to stderr.
 set -euo pipefail
@@ -47,9 +51,11 @@ CONSUMER_DIR="$ROOT/build/rust/consumer"
 EMBEDDED_TARGET=thumbv7em-none-eabihf
 EMBEDDED_TARGET_DIR="$ROOT/build/rust/target-embedded"
 MSRV_TARGET_DIR="$ROOT/build/rust/target-msrv"
+# The application programs (a cargo project with a path dependency on mipcodec, `serial`).
+APPS="$ROOT/tests/apps/rust"
 
 usage() {
-    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT]" >&2
+    echo "usage: tests/lang/rust.sh build | test | runtime | package | consumer | msrv | embedded | decode FILE [--device ID] | encode | session --connect ADDRESS ... | example FILE | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
     exit 2
 }
 
@@ -162,6 +168,14 @@ test_consumer() {
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$dst/core/Cargo.toml"
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" >&2
     done
+}
+
+# The application programs of tests/apps/rust/ (run by the conformance tests): formatted and
+# lint-free like the crate.
+test_apps() {
+    echo "== apps: rustfmt --check, clippy" >&2
+    find "$APPS" -name '*.rs' -print0 | xargs -0 rustfmt --check --edition 2021
+    cargo clippy --quiet --locked --manifest-path "$APPS/Cargo.toml" --all-targets -- -D warnings
 }
 
 # The minimum supported Rust version (rust-version of Cargo.toml, generator/targets/rust/facts.py):
@@ -277,6 +291,7 @@ test)
     done
     test_package
     test_consumer
+    test_apps
     ;;
 decode)
     [ $# -ge 1 ] || usage
@@ -296,6 +311,20 @@ session)
 configure)
     # With the `serial` feature: ADDRESS may be a serial port or a pseudo-terminal (the simulator's).
     exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --features serial --example configure_and_stream -- "$@"
+    ;;
+app)
+    [ $# -ge 1 ] || usage
+    name="$1"
+    shift
+    if [ ! -f "$APPS/$name.rs" ]; then
+        echo "rust.sh app: no application program $name in tests/apps/rust/" >&2
+        exit 2
+    fi
+    # Built in the tools' target directory, so serialport is not compiled again (mipcodec is, once:
+    # cargo hashes a path dependency relative to the workspace root); --locked: the committed
+    # Cargo.lock (lockfile version 3, as the crate's rust-version reads it).
+    cargo build --release --quiet --locked --manifest-path "$APPS/Cargo.toml" --bin "$name" >&2
+    exec "$CARGO_TARGET_DIR/release/$name" "$@"
     ;;
 example)
     # cargo run (not the binary under target/): both crates' examples are named getting_started.
