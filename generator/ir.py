@@ -27,6 +27,7 @@ from .passes import (
     sample_rule,
     session_rule,
     sets,
+    simulation,
     size_limits,
     value_paths,
     variants,
@@ -47,6 +48,7 @@ PASSES = (
     size_limits,  # every layout's largest encoding fits one field (framing max_field_data)
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
+    simulation,  # the simulated device's streaming commands, base rates, filters, checked
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

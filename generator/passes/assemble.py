@@ -28,6 +28,7 @@ def run(ctx: Context) -> None:
         "shared_data": p.get("shared_data"),
         "samples": ctx.samples,
         "session": ctx.session,
+        "simulation": ctx.simulation,
         "function_selector": p.get("function_selector"),
         "reserved_fields": ctx.reserved,
         "types": [ctx.types[n] for n in sorted(ctx.types)],

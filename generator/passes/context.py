@@ -51,6 +51,7 @@ class Context:
         self.sets: list[dict] = []
         self.samples: dict = {}
         self.session: dict | None = None  # session_rule: how replies are matched
+        self.simulation: dict | None = None  # simulation: what the simulated device needs
         self.layouts: list[dict] = []  # field_layouts in IR form
         self.lookup: dict = {}
         self.value_paths: dict = {}

@@ -1053,68 +1053,50 @@ def _session_example(api_sets: list[dict]) -> dict | None:
 
 # -------------------------------------------------------------------------------------- simulator
 # The simulated device (runtime sim.py, issue 21) answers from the IR: which parameters a function
-# sends, which are enums, the reply fields and their `when`. What the IR does not say, decided
-# here and printed into _sim.py:
-# - the meaning of the NACK codes (by the code enum's value names; a role the enum does not name
-#   falls back to the first non-ok code);
-NACK_ROLES = {
-    "unknown_descriptor": ("unknown_command", "invalid_message_code"),
-    "unknown_set": ("unknown_descriptor_set", "invalid_message_type"),
-    "invalid_parameter": ("invalid_parameter",),
-    "failed": ("command_failed", "invalid_parameter"),
-}
-# - the commands that configure streaming, per protocol (a set is a number, or the parameter that
-#   carries it, or a list of alternatives, each a parameter or (parameter, {selector value: set})). Base rates in Hz per device and data set,
-#   from the manuals: GX5-45 dcp lines 375, 387 (IMU and filter 500 Hz) and 973 (GNSS 4 Hz); CV7
-#   docs line 2688 (sensor, filter, system 1 kHz; GNSS receivers 5 Hz); MS-IMU3020: internal
-#   sample rate, Table 35 (1000 Hz assumed, see docs/conformance.md section 9).
-STREAMING: dict[str, dict] = {
-    "mip": {
+# sends, which are enums, the reply fields and their `when`, and the protocol's `simulation` entry
+# (spec protocol file, generator/passes/simulation.py: the ack code of each refusal, the streaming
+# commands, base rates, the navigation filter per device). Here they are only put in the shapes
+# the runtime's tables take (_sim.py): a set is a number, or the parameter that carries it, or a
+# list of alternatives, each a parameter or (parameter, {selector value: set}).
+def _streaming(sim: dict | None) -> dict:
+    if sim is None:
+        return {}
+
+    def where(e: dict):
+        return e["set"] if "set" in e else e["set_param"]
+
+    def enable_sets(e: dict):
+        if "selector" not in e:
+            return where(e)
+        alternatives: list = [(e["selector"]["param"], {p["value"]: p["set"] for p in e["selector"]["sets"]})]
+        return alternatives + ([e["set_param"]] if "set_param" in e else [])
+
+    return {
         "formats": {
-            "message_format": ("desc_set", "descriptors", "descriptor", "decimation"),
-            "imu_message_format": (0x80, "descriptors", "descriptor", "decimation"),
-            "gnss_message_format": (0x81, "descriptors", "descriptor", "decimation"),
-            "filter_message_format": (0x82, "descriptors", "descriptor", "decimation"),
+            e["command"]: (where(e), e["list"], e.get("descriptor"), e.get("decimation")) for e in sim["formats"]
         },
-        "enables": {"data_stream_control": ([("device_selector", {1: 0x80, 2: 0x81, 3: 0x82}), "desc_set"], "enable")},
-        "rates": {
-            "get_base_rate": "desc_set",
-            "get_imu_base_rate": 0x80,
-            "get_gnss_base_rate": 0x81,
-            "get_filter_base_rate": 0x82,
-        },
-        "polls": {
-            "poll_imu_data": (0x80, "descriptors"),
-            "poll_gnss_data": (0x81, "descriptors"),
-            "poll_filter_data": (0x82, "descriptors"),
-            "poll_data": ("desc_set", "descriptors"),
-        },
-        "base_rates": {
-            "gx5_45": {0x80: 500, 0x81: 4, 0x82: 500},
-            "cv7_ins": {0x80: 1000, 0x82: 1000, 0x91: 5, 0x92: 5, 0xA0: 1000},
-        },
-        "decimation": None,
-        "all_settings": ["device_startup_settings"],
-        # Streams the model's stream control cannot address stream whenever their format is set:
-        # the GX5-45's selector lists IMU and filter only (line 1049, Gx5StreamSelector's note).
-        "unaddressed": {"gx5_45": [0x81]},
-        # Commands that change the baud rate of the port (write): class name -> rate parameter
-        "baud": {"comm_port_speed": "baud", "uart_baudrate": "baud"},
-    },
-    "mscip": {
-        "formats": {
-            "select_sensors": (0xA2, "sensors", None, None),
-            "select_sensors_rev_b": (0xA2, "sensors", None, None),
-        },
-        "enables": {"data_on_off": (0xA2, "control")},
-        "rates": {"get_internal_sample_rate": 0xA2},
-        "polls": {},
-        "base_rates": {"ms_imu3020": {0xA2: 1000}},
-        "decimation": ("sample_rate", "decimation"),
-        "all_settings": ["config_all"],
-        "baud": {"uart_baud_rate": "baud_rate"},
-    },
-}
+        "enables": {e["command"]: (enable_sets(e), e["flag"]) for e in sim["enables"]},
+        "rates": {e["command"]: where(e) for e in sim["rates"]},
+        "polls": {e["command"]: (where(e), e["list"]) for e in sim["polls"]},
+        "base_rates": {e["device"]: {r["set"]: r["hz"] for r in e["rates"]} for e in sim["base_rates"]},
+        "decimation": (sim["decimation"]["command"], sim["decimation"]["param"]) if sim["decimation"] else None,
+        "all_settings": list(sim["all_settings"]),
+        "unaddressed": {e["device"]: list(e["sets"]) for e in sim["unaddressed"]},
+        "baud": {e["command"]: e["param"] for e in sim["baud"]},
+    }
+
+
+def _filters(sim: dict | None) -> dict:
+    """The navigation filter per device (sim_world.NavFilter): its state enum's members in order,
+    what aids it, its GNSS fix type members (fix, no fix)."""
+    return {
+        e["device"]: {
+            "aiding": e["aiding"],
+            "states": list(e["states"]["members"]),
+            "fix": [e["fix"]["fix"], e["fix"]["none"]],
+        }
+        for e in (sim or {}).get("filters", [])
+    }
 
 
 # The simulated world (runtime sim_world.py, issue 29): which world quantity each data parameter
@@ -1214,24 +1196,6 @@ WORLD: dict[str, dict[str, dict[str, str]]] = {
         "ecef_position": {"position": "ecef_position", "valid_flags": "valid:navigation"},
     },
 }
-# The navigation filter per device (sim_world.NavFilter): the members of its filter state enum in
-# order (GX5-45 0x82,0x10 line 2359: startup, init, run valid, run error; CV7-INS Filter States
-# lines 630-634: init, vertical gyro, AHRS, full navigation), what aids it (the GX5-45's internal
-# GNSS, line 433; the CV7's external measurements accepted per aiding measurement control
-# 0x0D,0x50), its GNSS fix type member names (fix, no fix).
-FILTER = {
-    "gx5_45": {
-        "aiding": "gnss",
-        "states": ["startup", "init", "run_solution_valid", "run_solution_error"],
-        "fix": ["fix_3d", "fix_none"],
-    },
-    "cv7_ins": {
-        "aiding": "external",
-        "states": ["init", "vert_gyro", "ahrs", "full_nav"],
-        "fix": ["fix_3d", "fix_none"],
-    },
-}
-
 # What commands do to the world (sim.py _act): command name -> (action, arguments). capture: reply
 # after the duration in the named parameter (ms) with the captured bias; reset: the filter restarts
 # (0x0D,0x01); attitude: an initial attitude or heading is given (GX5-45 line 1411); auto_init: the
@@ -1277,9 +1241,9 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         code_values = {v["name"]: v["value"] for v in m.types[proto["session"]["code_enum"]]["values"]}
     ok = proto["session"]["ok"] if proto["session"] else 0
     fallback = next((v for v in code_values.values() if v != ok), 1)
-    nack = {
-        role: next((code_values[n] for n in names if n in code_values), fallback) for role, names in NACK_ROLES.items()
-    }
+    roles = ("unknown_descriptor", "unknown_set", "invalid_parameter", "failed")
+    named = (proto["simulation"] or {}).get("nack", {})
+    nack = {role: code_values.get(named.get(role, ""), fallback) for role in roles}
     commands = []
     data = []
     world: list[dict] = []
@@ -1322,7 +1286,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
                     mapped = tuple((py_attr(q["name"]), shows[q["name"]]) for q in v["params"] if q["name"] in shows)
                     if mapped:
                         world.append({"cls": cls, "value": pyrepr(mapped)})
-    streaming = STREAMING.get(proto["name"], {})
+    streaming = _streaming(proto["simulation"])
 
     def classes(table: dict) -> list[dict]:
         return [{"cls": c, "value": pyrepr(value)} for name, value in table.items() for c in by_name.get(name, [])]
@@ -1333,7 +1297,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         "factory": defaults,
         "sim_data": data,
         "sim_world": world,
-        "sim_filter": pyrepr({d["id"]: FILTER[d["id"]] for d in proto["devices"] if d["id"] in FILTER}),
+        "sim_filter": pyrepr(_filters(proto["simulation"])),
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),
         "rates": classes(streaming.get("rates", {})),

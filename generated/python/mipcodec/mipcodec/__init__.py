@@ -70,7 +70,7 @@ from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
 __version__ = "0.1.0"
-SPEC_HASH = "33726d00b314c9d1"
+SPEC_HASH = "eba4a6fa36162aa9"
 
 __all__ = [
     "SPEC_HASH",

@@ -52,7 +52,7 @@ from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
 __version__ = "0.1.0"
-SPEC_HASH = "0c5f957ceebee19d"
+SPEC_HASH = "fd7b6df18f3af1c4"
 
 __all__ = [
     "SPEC_HASH",

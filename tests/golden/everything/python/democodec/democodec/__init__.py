@@ -52,7 +52,7 @@ from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .session import Device, Result, Session, connect
 
 __version__ = "2.10.3"
-SPEC_HASH = "fc66d12ce9b4981b"
+SPEC_HASH = "fc9cece64d82da7e"
 
 __all__ = [
     "SPEC_HASH",

@@ -1,0 +1,131 @@
+"""Pass: the protocol file's `simulation` section, what the simulated device needs beyond the
+layouts (docs/spec-format.md "Simulation"; docs/conformance.md section 9), checked against the rest
+of the spec and exported as the protocol's `simulation` entry (null without the section).
+
+Checked: every command named is a command of the protocol; every parameter named is a parameter of
+one of its layouts (a list's `descriptor`/`decimation` members of the list's struct); every set
+number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
+members are members of the ack code enum; the filter's enums exist and name their members. The
+entry keeps the section's shape with sources resolved (each gains its `title` from the manual).
+"""
+
+from __future__ import annotations
+
+from .context import Context, SpecFile
+
+_COMMAND_LISTS = ("formats", "enables", "rates", "polls", "baud")
+
+
+def run(ctx: Context) -> None:
+    spec = ctx.pf.data.get("simulation")
+    ctx.simulation = None
+    if spec is None:
+        return
+    check = _Checker(ctx, ctx.pf)
+    sim = dict(spec)
+    check.nack(spec["nack"])
+    for key in _COMMAND_LISTS:
+        for i, entry in enumerate(spec.get(key, [])):
+            check.command_entry(key, (key, i), entry)
+    if spec.get("decimation"):
+        check.command_entry("decimation", ("decimation",), spec["decimation"])
+    for i, name in enumerate(spec.get("all_settings", [])):
+        check.command(("all_settings", i), name)
+    for key in ("base_rates", "unaddressed", "filters"):
+        resolved = []
+        for i, entry in enumerate(spec.get(key, [])):
+            path = (key, i)
+            check.device(path + ("device",), entry["device"])
+            for j, r in enumerate(entry.get("rates", [])):
+                check.data_set(path + ("rates", j, "set"), r["set"])
+            for j, s in enumerate(entry.get("sets", [])):
+                check.data_set(path + ("sets", j), s)
+            if key == "filters":
+                check.members(path + ("states",), entry["states"]["enum"], entry["states"]["members"])
+                check.members(path + ("fix",), entry["fix"]["enum"], [entry["fix"]["fix"], entry["fix"]["none"]])
+            resolved.append(
+                {**entry, "sources": ctx.check_sources(ctx.pf, ("simulation",) + path + ("sources",), entry["sources"])}
+            )
+        sim[key] = resolved
+    for key in _COMMAND_LISTS + ("all_settings", "base_rates", "unaddressed", "filters"):
+        sim.setdefault(key, [])
+    sim.setdefault("decimation", None)
+    ctx.simulation = sim
+
+
+class _Checker:
+    def __init__(self, ctx: Context, sf: SpecFile) -> None:
+        self.ctx = ctx
+        self.sf = sf
+        self.commands: dict[str, list[dict]] = {}
+        for s in ctx.sets:
+            for f in s["fields"]:
+                if f["role"] == "command":
+                    self.commands.setdefault(f["name"], []).extend(f["variants"])
+        self.data_sets = {s["id"] for s in ctx.sets if s["kind"] == "data"}
+
+    def err(self, path: tuple, message: str, expected: str) -> None:
+        self.ctx.err(self.sf, ("simulation",) + path, message, expected)
+
+    def nack(self, nack: dict) -> None:
+        session = self.ctx.session or {}
+        enum = session.get("code_enum")
+        members = {v["name"] for v in self.ctx.types[enum]["values"]} if enum in self.ctx.types else set()
+        for role, name in nack.items():
+            if name not in members:
+                self.err(
+                    ("nack", role), f"simulation nack '{role}': '{name}' is not a member of the ack code enum {enum}",
+                    "a member of the ack code enum",
+                )  # fmt: skip
+
+    def command(self, path: tuple, name: str) -> list[dict]:
+        variants = self.commands.get(name)
+        if variants is None:
+            self.err(path, f"simulation: '{name}' is not a command of the protocol", "the name of a command field")
+            return []
+        return variants
+
+    def command_entry(self, key: str, path: tuple, entry: dict) -> None:
+        variants = self.command(path + ("command",), entry["command"])
+        if not variants:
+            return
+        params = {q["name"]: q for v in variants for q in v["params"]}
+        named = [(k, entry[k]) for k in ("set_param", "list", "flag", "param") if k in entry]
+        if "selector" in entry:
+            named.append(("selector", entry["selector"]["param"]))
+        for k, name in named:
+            if name not in params:
+                self.err(
+                    path + (k,), f"simulation {key}: '{name}' is not a parameter of {entry['command']}",
+                    f"a parameter of {entry['command']}",
+                )  # fmt: skip
+        if "set" in entry:
+            self.data_set(path + ("set",), entry["set"])
+        for j, pair in enumerate((entry.get("selector") or {}).get("sets", [])):
+            self.data_set(path + ("selector", "sets", j, "set"), pair["set"])
+        item = params.get(entry.get("list", ""), {}).get("type", {})
+        members = {q["name"] for q in self.ctx.types.get(item.get("name", ""), {}).get("params", [])}
+        for k in ("descriptor", "decimation"):
+            if k in entry and entry[k] not in members:
+                self.err(
+                    path + (k,), f"simulation {key}: '{entry[k]}' is not a member of the entries of {entry['list']}",
+                    "a member of the list's struct",
+                )  # fmt: skip
+
+    def data_set(self, path: tuple, number: int) -> None:
+        if number not in self.data_sets:
+            self.err(path, f"simulation: 0x{number:02X} is not a data set of the protocol", "a data set number")
+
+    def device(self, path: tuple, device: str) -> None:
+        if device not in self.ctx.device_ids:
+            self.err(path, f"simulation: '{device}' is not a device of the protocol", "a device id")
+
+    def members(self, path: tuple, enum: str, names: list[str]) -> None:
+        t = self.ctx.types.get(enum)
+        if t is None or t["kind"] != "enum":
+            self.err(path + ("enum",), f"simulation: '{enum}' is not an enum of the protocol", "an enum name")
+            return
+        values = {v["name"] for v in t["values"]}
+        for name in names:
+            if name not in values:
+                self.err(path, f"simulation: '{name}' is not a member of {enum}", f"a member of {enum}")

@@ -1,0 +1,113 @@
+"""simulation: the protocol file's `simulation` section, checked against the spec's commands,
+parameters, data sets, devices and enums, and exported with its sources resolved."""
+
+from test_session_rule import ACK
+from tiny_spec import PROTOCOL, build, command_set, data_set, errors
+
+COMMANDS = """\
+  - id: 0x01
+    name: message_format
+    role: command
+    title: Message format
+    functions: [write]
+    sources: [{manual: a.txt, line: 4}]
+    params:
+      - {name: desc_set, type: u8, functions: [write]}
+      - {name: count, type: u8, functions: [write]}
+      - {name: entries, type: Rate, count: count, functions: [write]}
+  - id: 0x02
+    name: stream_control
+    role: command
+    title: Stream control
+    functions: [write]
+    sources: [{manual: a.txt, line: 5}]
+    params:
+      - {name: selector, type: u8, functions: [write]}
+      - {name: enable, type: bool, functions: [write]}
+"""
+TYPES = """\
+structs:
+  - name: Rate
+    params:
+      - {name: descriptor, type: u8}
+      - {name: decimation, type: u16}
+  - name: Unused
+    params: [{name: x, type: u8}]
+"""
+STATES = """\
+  - name: FilterState
+    type: u8
+    values:
+      - {name: init, value: 1}
+      - {name: navigating, value: 2}
+"""
+SIMULATION = """\
+simulation:
+  nack: {unknown_descriptor: failed, unknown_set: failed, invalid_parameter: failed, failed: failed}
+  formats:
+    - {command: message_format, set_param: desc_set, list: entries, descriptor: descriptor, decimation: decimation}
+  enables:
+    - command: stream_control
+      selector: {param: selector, sets: [{value: 1, set: 0x80}]}
+      flag: enable
+  base_rates:
+    - {device: dev_a, rates: [{set: 0x80, hz: 100}], sources: [{manual: a.txt, line: 6}]}
+  filters:
+    - device: dev_b
+      aiding: external
+      states: {enum: FilterState, members: [init, navigating]}
+      fix: {enum: FilterState, fix: navigating, none: init}
+      sources: [{manual: b.txt, line: 7}]
+"""
+
+
+def _files(simulation: str) -> dict[str, str]:
+    ack = ACK.replace("enums:\n", "enums:\n" + STATES, 1)
+    return {
+        "protocol.yaml": PROTOCOL + ack + TYPES + simulation,
+        "base.yaml": command_set(COMMANDS),
+        "sensor.yaml": data_set(
+            "  - {id: 0x04, name: accel, role: data, title: Accel, sources: [{manual: a.txt, line: 8}], params: []}\n"
+        ),
+    }
+
+
+def test_the_section_is_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _files(SIMULATION), "simulation")
+    assert errors(ctx) == []
+    sim = ctx.simulation
+    assert sim["nack"]["failed"] == "failed"
+    assert sim["formats"][0]["list"] == "entries" and sim["rates"] == [] and sim["decimation"] is None
+    assert sim["base_rates"][0]["rates"] == [{"set": 0x80, "hz": 100}]
+    assert sim["filters"][0]["states"]["members"] == ["init", "navigating"]
+
+
+def test_no_section_no_simulation(tmp_path):
+    ctx = build(tmp_path, _files(""), "simulation")
+    assert errors(ctx) == [] and ctx.simulation is None
+
+
+def test_every_name_is_checked(tmp_path):
+    bad = (
+        SIMULATION.replace("failed: failed}", "failed: broken}")
+        .replace("command: stream_control", "command: stream_ctl")
+        .replace("list: entries", "list: entry")
+        .replace("decimation: decimation}", "decimation: rate}")
+        .replace("set: 0x80, hz", "set: 0x81, hz")
+        .replace("device: dev_b", "device: dev_c")
+        .replace("members: [init, navigating]", "members: [init, full]")
+        .replace("fix: {enum: FilterState", "fix: {enum: FixType")
+    )
+    got = errors(build(tmp_path, _files(bad), "simulation"))
+    expected = [
+        "'broken' is not a member of the ack code enum AckCode",
+        "'stream_ctl' is not a command of the protocol",
+        "'entry' is not a parameter of message_format",
+        "0x81 is not a data set of the protocol",
+        "'dev_c' is not a device of the protocol",
+        "'full' is not a member of FilterState",
+        "'FixType' is not an enum of the protocol",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    assert any("simulation" in e and "protocol.yaml" in e for e in got), got  # located in the protocol file
