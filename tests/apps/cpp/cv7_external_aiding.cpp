@@ -14,6 +14,7 @@
 // Exit status: 0 done; 1 a command not acknowledged, the connection failed, FEED unreadable or the
 // deadline passed (`error: ...` on stderr); 2 wrong arguments (`usage: ...` on stderr).
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,7 +45,7 @@ constexpr const char *kUsage =
     "  FEED     aiding rows: tow ns lat lon height vn ve vd heading bx by bz ('#' comments)\n"
     "  --period-ms N   how often aiding is sent (default 500)\n"
     "  --samples N     full-navigation samples to print (default 30)\n"
-    "  --deadline-s N  give up waiting after N seconds (default 60)\n";
+    "  --deadline-s N  give up waiting for them after N seconds (default 60)\n";
 
 constexpr std::uint8_t kFilterSet = 0x82;
 constexpr std::uint16_t kGyroCaptureMs = 2000;
@@ -405,6 +407,8 @@ int configure(mipcodec::Connection &device) {
     }
     types::HeadingAlignmentMethods alignment;
     alignment.set_external(true); // heading alignment by external heading (0x08)
+    // The reference frame of the (unused, automatic) initial position and velocity: LLH, value 2
+    // in the manual's Reference Frame Selector table.
     call = api::filter::initialization_configuration::write(
         device, 0, types::FilterInitialConditionSource::auto_pos_vel_att, alignment, 0.0f, 0.0f, 0.0f,
         {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, types::FilterReferenceFrame::llh);
