@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
-# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]
+# tests/lang/cpp.sh build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]|app NAME [ARGS...]
 # Builds the generated C++ package(s) into build/cpp/<package>/, runs their googletest suites (after
 # the runtime's own tests, in place: generator/targets/cpp/runtime/tests/ into build/cpp-runtime/), or
 # runs the decode/encode/session tools or the getting-started example (<package>-getting-started FILE),
-# building them first when needed; `runtime` runs only the runtime's in-place checks. Works from any
-# directory.
-# CPP_PACKAGE selects the package for decode/encode/example/configure (default: mipcodec).
+# building them first when needed; `runtime` runs only the runtime's in-place checks; `app NAME` builds
+# the application program tests/apps/cpp/NAME.cpp against the package (tests/apps/README.md; build dir
+# build/apps/cpp/<package>) and runs it with ARGS. Works from any directory.
+# CPP_PACKAGE selects the package for decode/encode/example/configure/app (default: mipcodec).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
 
-usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]" >&2; exit 2; }
+usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]|app NAME [ARGS...]" >&2; exit 2; }
 
 packages() {
   local d
@@ -113,6 +114,20 @@ case "$cmd" in
     mkdir -p "$ROOT/build/cpp"
     exe="$(tool configure-and-stream)"
     exec "$exe" "$@"
+    ;;
+  app)
+    # An application program of tests/apps/cpp/ (its own CMake project using the package as a
+    # vendored subdirectory), rebuilt when needed, then run with ARGS.
+    [ $# -ge 1 ] || usage
+    name="$1"; shift
+    [ -f "$ROOT/tests/apps/cpp/$name.cpp" ] || { echo "cpp.sh: no program tests/apps/cpp/$name.cpp" >&2; exit 2; }
+    out="$ROOT/build/apps/cpp/$PKG"
+    mkdir -p "$out"
+    {
+      [ -f "$out/build.ninja" ] || cmake -G Ninja -S "$ROOT/tests/apps/cpp" -B "$out" -DAPP_PACKAGE="$PKG"
+      cmake --build "$out" --target "$name"
+    } >"$out/.$name.log" 2>&1 || { cat "$out/.$name.log" >&2; exit 2; }
+    exec "$out/$name" "$@"
     ;;
   example)
     mkdir -p "$ROOT/build/cpp"
