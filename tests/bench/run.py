@@ -1,6 +1,7 @@
 """Builds and runs the benchmarks of every language (issues 8 and 30) and prints one table.
 
     python tests/bench/run.py [--langs c,cpp,rust,python] [--scale 1.0] [--passes 5] [--processes 5]
+                              [--python-processes N]
                               [--instructions | --instructions-only] [--no-cli] [--json PATH]
 
 `make bench` runs it (BENCH_ARGS="..." passes arguments); `make bench-instructions` runs
@@ -666,6 +667,11 @@ def main() -> int:
     ap.add_argument("--scale", type=float, default=1.0, help="stream size factor (streams.py --scale)")
     ap.add_argument("--passes", type=int, default=5, help="passes per measurement in each process, best kept")
     ap.add_argument("--processes", type=int, default=5, help="processes per benchmark (figure: their median)")
+    ap.add_argument(
+        "--python-processes",
+        type=int,
+        help="processes of the Python benchmark (default: --processes; at scale 1 each takes minutes)",
+    )
     ap.add_argument("--out", default=str(ROOT / "build" / "bench"), help="stream and binary directory")
     ap.add_argument("--json", help="where the rows go (default: OUT/results.json)")
     ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs")
@@ -683,8 +689,8 @@ def main() -> int:
     unknown = [x for x in langs if x not in LANGS]
     if unknown or not langs:
         ap.error(f"unknown language(s) {','.join(unknown)}: choose from {','.join(LANGS)}")
-    if args.passes < 1 or args.processes < 1:
-        ap.error("--passes and --processes must be at least 1")
+    if args.passes < 1 or args.processes < 1 or (args.python_processes is not None and args.python_processes < 1):
+        ap.error("--passes, --processes and --python-processes must be at least 1")
     count_streams = tuple(x for x in args.instruction_streams.split(",") if x)
     if any(x not in STREAMS for x in count_streams):
         ap.error(f"--instruction-streams: choose from {','.join(STREAMS)}")
@@ -709,9 +715,12 @@ def main() -> int:
         if isinstance(prog, str):
             log(f"{name}: skipped ({prog}; its benchmark has not landed)")
             skipped.append(name)
-    for process in range(args.processes if timing else 0):
+    python_processes = args.processes if args.python_processes is None else args.python_processes
+    for process in range(max(args.processes, python_processes) if timing else 0):
         for name, prog in progs.items():
             if isinstance(prog, str) or name in failed:
+                continue
+            if process >= (python_processes if name == "python" else args.processes):
                 continue
             cmd = timed_command(name, prog, out, args.passes, process == 0)
             try:
@@ -750,7 +759,8 @@ def main() -> int:
     if timing:
         print(
             f"Benchmarks (issues 8 and 30): {machine()}; each figure the median of {args.processes}"
-            f" processes, each the best of {args.passes} passes; scale {args.scale}; load average"
+            f" processes ({python_processes} for Python), each the best of {args.passes} passes;"
+            f" scale {args.scale}; load average"
             f" {' '.join(f'{x:.1f}' for x in os.getloadavg())}"
         )
         print()
