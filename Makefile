@@ -12,7 +12,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams tests/sessions -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
 
 all: generate
 
@@ -142,11 +142,16 @@ test-fuzz-regressions: generate
 	$(PY) -m tests.fuzz.fuzz replay
 
 # Benchmarks of the four languages (tests/bench/run.py, docs/benchmarks.md): builds them into
-# build/bench/, runs them on the streams of tests/bench/streams.py and prints one table.
-# BENCH_ARGS passes options, e.g. BENCH_ARGS="--langs c,cpp --scale 0.1".
+# build/bench/, runs each in 5 processes (best of 5 passes each) on the streams of
+# tests/bench/streams.py, prints one table (Mpkt/s, GB/s, spread, fraction of bulk, decode/frame)
+# and writes build/bench/results.json. BENCH_ARGS passes options, e.g.
+# BENCH_ARGS="--langs c,cpp --scale 0.1 --processes 2 --passes 2 --instructions".
+# bench-instructions: instructions per packet of C, C++ and Rust frame and decode (callgrind).
 BENCH_ARGS ?=
 bench: generate
 	$(PY) tests/bench/run.py $(BENCH_ARGS)
+bench-instructions: generate
+	$(PY) tests/bench/run.py --instructions-only --langs c,cpp,rust $(BENCH_ARGS)
 
 # Fails when generated/ (or docs/errata.md) is not what the spec and templates produce.
 check: $(VENV)/.stamp

@@ -1,24 +1,41 @@
-"""Builds and runs the benchmarks of every language (issue 8) and prints one table.
+"""Builds and runs the benchmarks of every language (issues 8 and 30) and prints one table.
 
-    python tests/bench/run.py [--langs c,cpp,rust,python] [--scale 1.0] [--passes 5]
+    python tests/bench/run.py [--langs c,cpp,rust,python] [--scale 1.0] [--passes 5] [--processes 5]
+                              [--python-processes N]
+                              [--instructions | --instructions-only] [--no-cli] [--json PATH]
 
-`make bench` runs it (BENCH_ARGS="..." passes arguments). Steps:
+`make bench` runs it (BENCH_ARGS="..." passes arguments); `make bench-instructions` runs
+--instructions-only. Steps:
   1. the streams of tests/bench/streams.py in build/bench/ (written again only when missing, when
      --scale changed or when streams.py changed);
   2. each language's benchmark, built with release flags into build/bench/bin/ (C: gcc -O2,
      C++: g++ -O2; Rust: cargo --release; Python: the package as installed in this interpreter);
-  3. their `BENCH lang=.. stream=.. mode=.. packets=N bytes=B seconds=S` lines, collected into a
-     table: language, stream, mode, Mpkt/s, MB/s and the ratio to the baseline (a memchr+memcpy
-     pass in C over the same bytes, measured in the same run) so figures from a noisy machine
-     can be compared; the last column gives, for mode session-ingest, its ratio to the same
-     language's decode of the same stream, and for session-roundtrip (stream loopback-tcp,
-     packets = round trips) the round trips per second and microseconds per round trip.
-  4. each language's decode CLI (lang=<lang>-cli mode=decode-cli, issue 22), built with release
+  3. each benchmark run in --processes processes (the languages interleaved: round 1 of every
+     language, then round 2, ...), each process printing the best of --passes passes per row as
+     `BENCH lang=.. stream=.. mode=.. packets=N bytes=B seconds=S` lines. Every process also
+     measures mode `bulk`, one memcpy of the whole stream into another buffer; each row's figure is
+     the median over the processes of its best time, its spread the half range of the processes'
+     figures over that median (±%), and its fraction of bulk the median over the processes of
+     bulk's time over the row's time in the same process (the same bytes: bytes/s over bulk's
+     bytes/s). Columns: language, stream, mode, Mpkt/s, GB/s, ±%, x bulk (and its spread),
+     decode/frame (decode rows: the same language's frame time over decode time, per process),
+     the session column (session-ingest: its rate as a fraction of the same language's decode;
+     session-roundtrip, stream loopback-tcp, packets = round trips: round trips per second and
+     microseconds per round trip) and, with --instructions, instructions per packet. The rows go
+     to build/bench/results.json (--json): a list of {lang, stream, mode, packets, bytes, seconds,
+     processes (each process's seconds), spread_pct, bulk_fraction, bulk_fraction_spread_pct,
+     decode_over_frame, instructions_per_packet, ...}, a key present only where it applies.
+  4. --instructions / --instructions-only: instructions per packet of C, C++ and Rust frame and
+     decode, counted by valgrind --tool=callgrind on 1%-scale streams (10,000 packets of
+     accel_gyro, 2,000 of mixed) in build/bench/small/: one pass of `--stream S --mode M`, minus
+     the same program with `--mode none` (loading the stream, its fixed cost), over the packets;
+     --instructions-only adds them to the rows of an existing results.json (replacing older counts).
+  5. each language's decode CLI (lang=<lang>-cli mode=decode-cli, issue 22), built with release
      flags into build/bench/cli/ (C and C++: CMake Release; Rust: cargo --release in build/rust/target,
      shared with tests/lang/rust.sh; Python: the package with its C accelerator, build/python/ext/),
-     run on accel_gyro.bin and on the device capture (../shared/captures/mip_data.bin, when there)
-     repeated 200 x --scale times, output to a file: wall time and maximum resident memory of each
-     process (wait4), and the outputs must be byte-identical across languages (--no-cli skips it).
+     run once on accel_gyro.bin and on the device capture (../shared/captures/mip_data.bin, when
+     there) repeated 200 x --scale times, output to a file: wall time and maximum resident memory of
+     each process (wait4), and the outputs must be byte-identical across languages (--no-cli skips it).
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -28,9 +45,13 @@ from __future__ import annotations
 
 import argparse
 import hashlib
+import json
 import os
 import platform
+import re
 import shlex
+import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -40,7 +61,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BENCH = ROOT / "tests" / "bench"
 STREAMS = ("accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage")
 LANGS = ("c", "cpp", "rust", "python")
-# Row order of the table: the baseline first, then the languages in --langs order.
+# Row order of the table: the languages in --langs order.
 LANG_ROWS = {
     "c": ("c",),
     "cpp": ("cpp",),
@@ -123,33 +144,56 @@ def build_cpp(bindir: Path) -> Path:
     return exe
 
 
-def commands(langs: list[str], out: Path, passes: int) -> list[tuple[str, list[str] | None, str]]:
-    """(name, command or None when skipped, skip reason) per benchmark to run."""
+def build_rust() -> Path | None:
+    """The Rust benchmark's binary (cargo build --release, out of the source tree), or None when
+    its crate has not landed."""
+    manifest = BENCH / "rust" / "Cargo.toml"
+    if not manifest.is_file():
+        return None
+    target = ROOT / "build" / "bench" / "rust"
+    log("building the Rust benchmark (cargo --release)")
+    subprocess.run(
+        ["cargo", "build", "--quiet", "--release", "--manifest-path", str(manifest)],
+        check=True,
+        env=dict(os.environ, CARGO_TARGET_DIR=str(target)),
+    )
+    return target / "release" / "mipcodec-bench"
+
+
+def commands(langs: list[str], out: Path) -> dict[str, list[str] | str]:
+    """The benchmark program of each language in langs (without its per-run options), or the
+    reason it is skipped."""
     bindir = out / "bin"
     bindir.mkdir(parents=True, exist_ok=True)
-    runs: list[tuple[str, list[str] | None, str]] = []
-    c_args = [str(out), "--passes", str(passes)]
-    # The C benchmark also measures the baseline; without C in --langs it measures only that.
-    runs.append(("c" if "c" in langs else "baseline", [str(build_c(bindir)), *c_args], ""))
-    if "c" not in langs:
-        runs[-1][1].append("--baseline-only")
+    progs: dict[str, list[str] | str] = {}
+    if "c" in langs:
+        progs["c"] = [str(build_c(bindir))]
     if "cpp" in langs:
-        runs.append(("cpp", [str(build_cpp(bindir)), *c_args], ""))
+        progs["cpp"] = [str(build_cpp(bindir))]
     if "rust" in langs:
-        manifest = BENCH / "rust" / "Cargo.toml"
-        if manifest.is_file():
-            # the build stays out of the source tree (CARGO_TARGET_DIR, set in run())
-            cmd = ["cargo", "run", "--quiet", "--release", "--manifest-path", str(manifest), "--", str(out)]
-            runs.append(("rust", cmd, ""))
-        else:
-            runs.append(("rust", None, f"{manifest.relative_to(ROOT)} not found"))
+        exe = build_rust()
+        progs["rust"] = [str(exe)] if exe else f"{(BENCH / 'rust' / 'Cargo.toml').relative_to(ROOT)} not found"
     if "python" in langs:
         script = BENCH / "python" / "bench.py"
-        if script.is_file():
-            runs.append(("python", [sys.executable, str(script), str(out)], ""))
-        else:
-            runs.append(("python", None, f"{script.relative_to(ROOT)} not found"))
-    return runs
+        progs["python"] = [sys.executable, str(script)] if script.is_file() else f"{script.relative_to(ROOT)} not found"
+    return progs
+
+
+def timed_command(lang: str, prog: list[str], out: Path, passes: int, first: bool) -> list[str]:
+    """The command of one timed process: every stream and mode, best of `passes` passes. Python's
+    pure-Python fallback (about a minute per stream at scale 1) runs in the first process only."""
+    if lang == "rust":
+        return [*prog, str(out), str(passes)]
+    if lang == "python":
+        return [*prog, str(out), "--passes", str(passes), "--pure-passes", "1" if first else "0"]
+    return [*prog, str(out), "--passes", str(passes)]
+
+
+def counting_command(lang: str, prog: list[str], small: Path, stream: str, mode: str) -> list[str]:
+    """One pass of one stream and mode (`none`: the program's fixed cost), for callgrind."""
+    if lang == "rust":
+        return [*prog, str(small), "1", stream, "--mode", mode]
+    return [*prog, str(small), "--passes", "1", "--stream", stream, "--mode", mode]
 
 
 CAPTURE = ROOT.parent / "shared" / "captures" / "mip_data.bin"
@@ -286,20 +330,23 @@ def parse(line: str) -> dict[str, str] | None:
     return fields if all(k in fields for k in need) else None
 
 
-def run(name: str, cmd: list[str]) -> tuple[list[dict[str, str]], bool]:
-    log(f"running {name}: {shlex.join(cmd)}")
-    env = dict(os.environ, CARGO_TARGET_DIR=str(ROOT / "build" / "bench" / "rust"))
-    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, text=True, env=env)
+def run(name: str, cmd: list[str], process: int) -> tuple[list[dict[str, str]], bool]:
+    """The BENCH rows of one process, each tagged process=N, and False when it failed."""
+    log(f"running {name} (process {process + 1}): {shlex.join(cmd)}")
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, text=True)
     rows = []
     assert proc.stdout is not None
     for line in proc.stdout:
         row = parse(line.strip())
         if row:
+            row["process"] = str(process)
             rows.append(row)
             print(line.rstrip(), file=sys.stderr, flush=True)
         elif line.strip():
             print(f"  {name}: {line.rstrip()}", file=sys.stderr, flush=True)
     ok = proc.wait() == 0
+    log(f"{name} (process {process + 1}) took {time.perf_counter() - t0:.1f} s")
     if not ok:
         log(f"{name}: exit status {proc.returncode}")
     if not rows:
@@ -308,60 +355,298 @@ def run(name: str, cmd: list[str]) -> tuple[list[dict[str, str]], bool]:
     return rows, ok
 
 
-def table(rows: list[dict[str, str]], langs: list[str]) -> str:
-    base: dict[str, float] = {}
+# The modes of a stream in table order; other modes (CLIs, round trips) after them.
+MODE_RANK = {
+    "bulk": 0,
+    "frame": 1,
+    "decode": 2,
+    "session-ingest": 3,
+    "copy-per-packet": 4,
+    "csv": 5,
+    "parquet": 6,
+}
+
+
+def bulk_lang(lang: str) -> str:
+    """The language whose process measured bulk for a row of `lang`: python-columns and
+    python-export rows come from the `python` process (python-pure has its own)."""
+    return "python" if lang in ("python-columns", "python-export") else lang
+
+
+def spread_pct(values: list[float]) -> float | None:
+    """Half the range of `values` over their median, in percent (None for fewer than two)."""
+    if len(values) < 2:
+        return None
+    mid = statistics.median(values)
+    return (max(values) - min(values)) / 2 / mid * 100 if mid > 0 else None
+
+
+def aggregate(rows: list[dict[str, str]]) -> list[dict]:
+    """One record per (lang, stream, mode) from the BENCH rows of every process (key `process`,
+    "0" when absent): seconds = the median of the processes' figures (each the best of its passes),
+    processes = those figures in process order, spread_pct; bulk_fraction = the median over the
+    processes of bulk's seconds over the row's seconds in the same process and stream (and its
+    spread); decode_over_frame (decode rows) = the same for the language's frame row. Other keys of
+    the BENCH line (rss_kb, cpu, ...) are kept from the first process."""
+    groups: dict[tuple[str, str, str], list[dict[str, str]]] = {}
     for r in rows:
-        if r["lang"] == "baseline" and r["mode"] == "copy":
-            base[r["stream"]] = int(r["bytes"]) / float(r["seconds"])
-    order = ["baseline"] + [row for lang in langs for row in LANG_ROWS[lang]]
-    lang_rank = {name: i for i, name in enumerate(order)}
-    mode_rank = {"copy": 0, "frame": 1, "decode": 2, "session-ingest": 3, "csv": 4, "parquet": 5}
+        groups.setdefault((r["lang"], r["stream"], r["mode"]), []).append(r)
+    per_process = {
+        (lang, stream, mode, r.get("process", "0")): float(r["seconds"])
+        for (lang, stream, mode), rs in groups.items()
+        for r in rs
+    }
+
+    def ratios(base: tuple[str, str, str], rs: list[dict[str, str]]) -> list[float]:
+        out = []
+        for r in rs:
+            b = per_process.get((*base, r.get("process", "0")))
+            s = float(r["seconds"])
+            if b is not None and b > 0 and s > 0:
+                out.append(b / s)
+        return out
+
+    records = []
+    for (lang, stream, mode), rs in groups.items():
+        rs = sorted(rs, key=lambda r: int(r.get("process", "0")))
+        secs = [float(r["seconds"]) for r in rs]
+        rec: dict = {k: v for k, v in rs[0].items() if k != "process"}
+        rec.update(
+            lang=lang,
+            stream=stream,
+            mode=mode,
+            packets=int(rs[0]["packets"]),
+            bytes=int(rs[0]["bytes"]),
+            seconds=statistics.median(secs),
+        )
+        for key in ("rss_kb",):
+            if key in rec:
+                rec[key] = int(rec[key])
+        if "cpu" in rec:
+            rec["cpu"] = float(rec["cpu"])
+        rec["processes"] = secs
+        spread = spread_pct(secs)
+        if spread is not None:
+            rec["spread_pct"] = spread
+        fractions = ratios((bulk_lang(lang), stream, "bulk"), rs)
+        if fractions:
+            rec["bulk_fraction"] = statistics.median(fractions)
+            s = spread_pct(fractions)
+            if s is not None:
+                rec["bulk_fraction_spread_pct"] = s
+        if mode == "decode":
+            over = ratios((lang, stream, "frame"), rs)
+            if over:
+                rec["decode_over_frame"] = statistics.median(over)
+        records.append(rec)
+    return records
+
+
+def order(records: list[dict], langs: list[str]) -> list[dict]:
+    """Records in table order: language (--langs order), stream, mode."""
+    names = [row for lang in langs for row in LANG_ROWS.get(lang, (lang,))]
+    lang_rank = {name: i for i, name in enumerate(names)}
     stream_rank = {s: i for i, s in enumerate(STREAMS + ("loopback-tcp",))}
-    decode = {(r["lang"], r["stream"]): float(r["seconds"]) for r in rows if r["mode"] == "decode"}
 
-    def key(r: dict[str, str]):
+    def key(r: dict):
         return (
-            lang_rank.get(r["lang"], len(order)),
+            lang_rank.get(r["lang"], len(names)),
             r["lang"],
-            stream_rank.get(r["stream"], len(STREAMS)),
+            stream_rank.get(r["stream"], len(STREAMS) + 1),
             r["stream"],
-            mode_rank.get(r["mode"], 9),
+            MODE_RANK.get(r["mode"], 9),
+            r["mode"],
         )
 
-    head = ("language", "stream", "mode", "Mpkt/s", "MB/s", "x baseline", "session")
-    lines = [head]
-    for r in sorted(rows, key=key):
-        seconds = float(r["seconds"])
-        pps = int(r["packets"]) / seconds / 1e6 if seconds > 0 else 0.0
-        bps = int(r["bytes"]) / seconds if seconds > 0 else 0.0
-        ratio = f"{bps / base[r['stream']]:.2f}" if r["stream"] in base and base[r["stream"]] > 0 else "-"
-        lines.append(
-            (r["lang"], r["stream"], r["mode"], f"{pps:.2f}", f"{bps / 1e6:.0f}", ratio, session_note(r, decode))
-        )
-    widths = [max(len(line[i]) for line in lines) for i in range(len(head))]
+    return sorted(records, key=key)
+
+
+def pct(value: float | None) -> str:
+    return "-" if value is None else f"±{value:.0f}%" if value >= 1 else f"±{value:.1f}%"
+
+
+def table(records: list[dict], langs: list[str]) -> str:
+    """The main table (records of aggregate(); rows without seconds, such as instruction counts
+    alone, are left out)."""
+    seconds_of = {(r["lang"], r["stream"], r["mode"]): r["seconds"] for r in records if r.get("seconds")}
+    with_instr = any("instructions_per_packet" in r for r in records)
+    head = ["language", "stream", "mode", "Mpkt/s", "GB/s", "±", "x bulk", "±", "decode/frame", "session"]
+    if with_instr:
+        head.append("instr/pkt")
+    lines = [tuple(head)]
+    for r in order(records, langs):
+        seconds = r.get("seconds")
+        if not seconds:
+            continue
+        pps = r["packets"] / seconds / 1e6 if seconds > 0 else 0.0
+        gbs = r["bytes"] / seconds / 1e9 if seconds > 0 else 0.0
+        frac = r.get("bulk_fraction")
+        dof = r.get("decode_over_frame")
+        cells = [
+            r["lang"],
+            r["stream"],
+            r["mode"],
+            f"{pps:.2f}",
+            f"{gbs:.3f}" if gbs < 1 else f"{gbs:.2f}",
+            pct(r.get("spread_pct")),
+            "-" if frac is None else f"{frac:.2f}" if frac >= 0.1 else f"{frac:.2g}",
+            pct(r.get("bulk_fraction_spread_pct")) if frac is not None else "",
+            "" if dof is None else f"{dof:.2f}",
+            session_note(r, seconds_of),
+        ]
+        if with_instr:
+            ipp = r.get("instructions_per_packet")
+            cells.append("" if ipp is None else f"{ipp:.0f}")
+        lines.append(tuple(cells))
+    return markdown(lines, left=3)
+
+
+def markdown(lines: list[tuple[str, ...]], left: int) -> str:
+    """A markdown table: the first `left` columns left-aligned, the others right-aligned."""
+    widths = [max(len(line[i]) for line in lines) for i in range(len(lines[0]))]
     out = []
     for n, line in enumerate(lines):
-        cells = [c.ljust(w) if i < 3 else c.rjust(w) for i, (c, w) in enumerate(zip(line, widths))]
+        cells = [c.ljust(w) if i < left else c.rjust(w) for i, (c, w) in enumerate(zip(line, widths))]
         out.append("| " + " | ".join(cells) + " |")
         if n == 0:
             out.append(
-                "|" + "|".join("-" * (w + 2) if i < 3 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|"
+                "|" + "|".join("-" * (w + 2) if i < left else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|"
             )
     return "\n".join(out)
 
 
-def session_note(r: dict[str, str], decode: dict[tuple[str, str], float]) -> str:
+def session_note(r: dict, seconds_of: dict[tuple[str, str, str], float]) -> str:
     """The session column: session-ingest as a fraction of the same language's decode rate on the
     same stream (same packets: the ratio of the times), session-roundtrip as round trips per
     second and microseconds per round trip."""
     seconds = float(r["seconds"])
     if r["mode"] == "session-ingest":
-        d = decode.get((r["lang"], r["stream"]))
+        d = seconds_of.get((r["lang"], r["stream"], "decode"))
         return f"{d / seconds:.2f} x decode" if d and seconds > 0 else "-"
     if r["mode"] == "session-roundtrip" and seconds > 0 and int(r["packets"]) > 0:
         n = int(r["packets"])
         return f"{n / seconds:,.0f}/s, {seconds / n * 1e6:.1f} us each"
     return ""
+
+
+# ---- instructions per packet (callgrind) ----
+
+COUNT_LANGS = ("c", "cpp", "rust")
+COUNT_STREAMS = ("accel_gyro", "mixed")
+COUNT_MODES = ("frame", "decode")
+COUNT_SCALE = 0.01
+
+
+def callgrind_total(stderr: str) -> int:
+    """The instruction count of a `valgrind --tool=callgrind` run from its summary on stderr
+    (`==PID== Collected : N`)."""
+    m = re.search(r"^==\d+== Collected\s*:\s*(\d+)\s*$", stderr, re.MULTILINE)
+    if not m:
+        raise ValueError("no 'Collected :' line in callgrind's output")
+    return int(m.group(1))
+
+
+def per_packet(total: int, fixed: int, packets: int) -> float:
+    """Instructions per packet: the run's count minus the program's fixed cost, over the packets."""
+    if packets <= 0:
+        raise ValueError("no packets")
+    return (total - fixed) / packets
+
+
+def count_instructions(cmd: list[str]) -> int:
+    proc = subprocess.run(
+        ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", *cmd],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+    )
+    if proc.returncode != 0:
+        raise RuntimeError(f"{shlex.join(cmd)} under callgrind: exit status {proc.returncode}\n{proc.stderr[-2000:]}")
+    return callgrind_total(proc.stderr)
+
+
+def instructions(progs: dict[str, list[str] | str], out: Path, streams_: tuple[str, ...]) -> list[dict]:
+    """Instructions per packet of frame and decode for C, C++ and Rust on the 1%-scale streams."""
+    small = out / "small"
+    small.mkdir(parents=True, exist_ok=True)
+    streams(small, COUNT_SCALE)
+    records = []
+    for lang in COUNT_LANGS:
+        prog = progs.get(lang)
+        if not isinstance(prog, list):
+            continue
+        for stream in streams_:
+            side = json.loads((small / f"{stream}.json").read_text())
+            fixed = count_instructions(counting_command(lang, prog, small, stream, "none"))
+            for mode in COUNT_MODES:
+                total = count_instructions(counting_command(lang, prog, small, stream, mode))
+                ipp = per_packet(total, fixed, side["packets"])
+                log(
+                    f"{lang} {stream} {mode}: {total} - {fixed} instructions over {side['packets']} packets = {ipp:.1f}"
+                )
+                records.append(
+                    {
+                        "lang": lang,
+                        "stream": stream,
+                        "mode": mode,
+                        "instructions": total,
+                        "instructions_fixed": fixed,
+                        "instructions_packets": side["packets"],
+                        "instructions_per_packet": ipp,
+                    }
+                )
+    return records
+
+
+def merge_instructions(records: list[dict], counts: list[dict]) -> list[dict]:
+    """The instruction counts added to the timed records of the same lang, stream and mode; a count
+    without a timed record becomes a record of its own (packets and bytes of the counted stream,
+    seconds None)."""
+    by_key = {(r["lang"], r["stream"], r["mode"]): r for r in records}
+    out = list(records)
+    for c in counts:
+        r = by_key.get((c["lang"], c["stream"], c["mode"]))
+        if r is None:
+            r = {"lang": c["lang"], "stream": c["stream"], "mode": c["mode"], "seconds": None}
+            r["packets"] = c["instructions_packets"]
+            r["bytes"] = None
+            out.append(r)
+        r.update({k: v for k, v in c.items() if k.startswith("instructions")})
+    return out
+
+
+def previous(results: Path) -> list[dict]:
+    """The rows of an earlier results.json without their instruction counts (rows that held only
+    counts dropped), or nothing when it cannot be read."""
+    try:
+        rows = json.loads(results.read_text())
+    except (OSError, ValueError):
+        return []
+    if not isinstance(rows, list):
+        return []
+    kept = []
+    for r in rows:
+        if not isinstance(r, dict) or not {"lang", "stream", "mode"} <= set(r) or r.get("seconds") is None:
+            continue
+        kept.append({k: v for k, v in r.items() if not k.startswith("instructions")})
+    return kept
+
+
+def instructions_table(counts: list[dict]) -> str:
+    lines = [("language", "stream", "mode", "instructions/packet", "packets", "total", "fixed")]
+    for c in counts:
+        lines.append(
+            (
+                c["lang"],
+                c["stream"],
+                c["mode"],
+                f"{c['instructions_per_packet']:.0f}",
+                f"{c['instructions_packets']:,}",
+                f"{c['instructions']:,}",
+                f"{c['instructions_fixed']:,}",
+            )
+        )
+    return markdown(lines, left=3)
 
 
 def machine() -> str:
@@ -380,40 +665,85 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--langs", default=",".join(LANGS), help="comma-separated subset of c,cpp,rust,python")
     ap.add_argument("--scale", type=float, default=1.0, help="stream size factor (streams.py --scale)")
-    ap.add_argument("--passes", type=int, default=5, help="passes per measurement, best kept (C and C++)")
+    ap.add_argument("--passes", type=int, default=5, help="passes per measurement in each process, best kept")
+    ap.add_argument("--processes", type=int, default=5, help="processes per benchmark (figure: their median)")
+    ap.add_argument(
+        "--python-processes",
+        type=int,
+        help="processes of the Python benchmark (default: --processes; at scale 1 each takes minutes)",
+    )
     ap.add_argument("--out", default=str(ROOT / "build" / "bench"), help="stream and binary directory")
-    ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs (step 4)")
+    ap.add_argument("--json", help="where the rows go (default: OUT/results.json)")
+    ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs")
+    ap.add_argument(
+        "--instructions", action="store_true", help="also count instructions per packet (valgrind --tool=callgrind)"
+    )
+    ap.add_argument("--instructions-only", action="store_true", help="only count instructions per packet")
+    ap.add_argument(
+        "--instruction-streams",
+        default=",".join(COUNT_STREAMS),
+        help="streams whose instructions are counted (default accel_gyro,mixed)",
+    )
     args = ap.parse_args()
     langs = [x for x in (s.strip() for s in args.langs.split(",")) if x]
     unknown = [x for x in langs if x not in LANGS]
     if unknown or not langs:
         ap.error(f"unknown language(s) {','.join(unknown)}: choose from {','.join(LANGS)}")
+    if args.passes < 1 or args.processes < 1 or (args.python_processes is not None and args.python_processes < 1):
+        ap.error("--passes, --processes and --python-processes must be at least 1")
+    count_streams = tuple(x for x in args.instruction_streams.split(",") if x)
+    if any(x not in STREAMS for x in count_streams):
+        ap.error(f"--instruction-streams: choose from {','.join(STREAMS)}")
+    counting = args.instructions or args.instructions_only
+    if counting and not shutil.which("valgrind"):
+        ap.error("--instructions needs valgrind (tools/bootstrap --ci installs it)")
     out = Path(args.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
-    streams(out, args.scale)
+    results = Path(args.json) if args.json else out / "results.json"
+    timing = not args.instructions_only
+    if timing:
+        streams(out, args.scale)
     failed: list[str] = []
     skipped: list[str] = []
     rows: list[dict[str, str]] = []
     try:
-        runs = commands(langs, out, args.passes)
+        progs = commands(langs, out)
     except subprocess.CalledProcessError as e:
         log(f"build failed: {e}")
         return 1
-    for name, cmd, why in runs:
-        if cmd is None:
-            log(f"{name}: skipped ({why}; its benchmark has not landed)")
+    for name, prog in progs.items():
+        if isinstance(prog, str):
+            log(f"{name}: skipped ({prog}; its benchmark has not landed)")
             skipped.append(name)
-            continue
+    python_processes = args.processes if args.python_processes is None else args.python_processes
+    for process in range(max(args.processes, python_processes) if timing else 0):
+        for name, prog in progs.items():
+            if isinstance(prog, str) or name in failed:
+                continue
+            if process >= (python_processes if name == "python" else args.processes):
+                continue
+            cmd = timed_command(name, prog, out, args.passes, process == 0)
+            try:
+                got, ok = run(name, cmd, process)
+            except OSError as e:
+                got, ok = [], False
+                log(f"{name}: cannot run: {e}")
+            rows += got
+            if not ok:
+                failed.append(name)
+    records = aggregate(rows)
+    counts: list[dict] = []
+    if counting:
         try:
-            got, ok = run(name, cmd)
-        except OSError as e:
-            got, ok = [], False
-            log(f"{name}: cannot run: {e}")
-        rows += got
-        if not ok:
-            failed.append(name)
+            t0 = time.perf_counter()
+            counts = instructions(progs, out, count_streams)
+            log(f"instruction counts took {time.perf_counter() - t0:.1f} s")
+        except (RuntimeError, ValueError, OSError, subprocess.CalledProcessError) as e:
+            log(f"instruction counts: {e}")
+            failed.append("instructions")
+        records = merge_instructions(records, counts)
     cli_rows: list[dict[str, str]] = []
-    if not args.no_cli:
+    if timing and not args.no_cli:
         try:
             cli_rows, ok = cli_bench(langs, out, args.scale)
         except (subprocess.CalledProcessError, OSError) as e:
@@ -421,12 +751,30 @@ def main() -> int:
             ok = False
         if not ok:
             failed.append("decode-cli")
-    print(f"Benchmarks (issue 8): {machine()}; best of {args.passes} passes; scale {args.scale}")
-    print()
-    print(table(rows, langs))
+    if args.instructions_only and results.is_file() and not failed:
+        # the timed rows of the last `make bench` keep their place; the counts replace the old ones
+        records = merge_instructions(previous(results), counts)
+    results.parent.mkdir(parents=True, exist_ok=True)
+    results.write_text(json.dumps(order(records, langs) + aggregate(cli_rows), indent=1) + "\n")
+    if timing:
+        print(
+            f"Benchmarks (issues 8 and 30): {machine()}; each figure the median of {args.processes}"
+            f" processes ({python_processes} for Python), each the best of {args.passes} passes;"
+            f" scale {args.scale}; load average"
+            f" {' '.join(f'{x:.1f}' for x in os.getloadavg())}"
+        )
+        print()
+        print(table(records, langs))
+    if counts:
+        print(
+            f"\nInstructions per packet (valgrind --tool=callgrind, one pass minus --mode none,"
+            f" {COUNT_SCALE:g}-scale streams):\n"
+        )
+        print(instructions_table(counts))
     if cli_rows:
         print("\nDecode CLIs (one run each, output to a file):\n")
         print(cli_table(cli_rows))
+    print(f"\nrows written to {shown(results)}")
     if skipped:
         print(f"\nskipped: {', '.join(skipped)}")
     if failed:

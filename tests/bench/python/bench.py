@@ -11,6 +11,9 @@ Two flavours, each in its own process (the choice is made when the package is im
                     into build/python/ext/mipcodec (the package's own setup.py, nothing installed)
   lang=python-pure  the same package with MIPCODEC_PURE=1 (the pure-Python fallback)
 Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed in 64 KiB chunks:
+  bulk    (each flavour, in its own process) one memcpy of the whole stream into a bytearray of
+          the same size (`memoryview(into)[:] = data`, written once before timing): the limit that
+          tests/bench/run.py divides the rows of the same process by (best of at least 3 passes)
   frame   mipcodec.Parser: every RawPacket (offset, bytes) and Skip run, packets counted
   decode  mipcodec.Decoder: every packet decoded into Packet / DecodedField / typed dataclass
           values (the objects decode_packet(raw.data, raw.offset) returns), packets and fields
@@ -186,6 +189,20 @@ def timed(fn, mipcodec, data, passes: int, use_gc: bool):
     return best, counts
 
 
+def bulk_pass(data: bytes, passes: int) -> float:
+    """Best wall time of copying `data` into a bytearray of the same size (one memcpy)."""
+    into = bytearray(len(data))
+    view = memoryview(into)  # `into[:] = data` would first copy bytes into a new bytearray
+    best = math.inf
+    for _ in range(passes):
+        t0 = time.perf_counter()
+        view[:] = data
+        best = min(best, time.perf_counter() - t0)
+    if into != data:
+        raise SystemExit("bench.py: bulk: the copy differs from the stream")
+    return best
+
+
 def check_values(mipcodec, data, lang, name, side) -> int:
     """Untimed: every field of every packet is a typed value; prints a checksum of their numbers."""
     fields = bad = 0
@@ -246,6 +263,10 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
             print(f"bench.py: {name}.bin has {len(data)} bytes, the sidecar says {side['bytes']}", file=sys.stderr)
             return 1
         status |= check_values(mipcodec, data, lang, name, side)
+        seconds = bulk_pass(data, max(3, passes))
+        print(
+            f"BENCH lang={lang} stream={name} mode=bulk packets={side['packets']} bytes={len(data)} seconds={seconds:.9f}"
+        )
         runs = [("frame", frame_pass), ("decode", decode_pass)]
         if lang == "python":
             runs += [("session-ingest", session_ingest_pass)]

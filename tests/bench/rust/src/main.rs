@@ -1,11 +1,15 @@
-//! Plain benchmark runner: `mipcodec-bench DIR [PASSES [STREAM...]]` loads the streams of DIR
-//! (written by `tests/bench/streams.py`; all four unless STREAMs are named), checks the counts
-//! of every pass against the sidecars and prints one line per stream and mode for
+//! Plain benchmark runner: `mipcodec-bench DIR [PASSES [STREAM...]] [--mode MODE]` loads the
+//! streams of DIR (written by `tests/bench/streams.py`; all four unless STREAMs are named), checks
+//! the counts of every pass against the sidecars and prints one line per stream and mode for
 //! `tests/bench/run.py`:
-//!   BENCH lang=rust stream=NAME mode=frame|decode|session-ingest packets=N bytes=B seconds=BEST
-//! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream, then
+//!   BENCH lang=rust stream=NAME mode=bulk|frame|decode|session-ingest packets=N bytes=B seconds=BEST
+//! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream (mode bulk:
+//! one memcpy of the whole stream into another buffer, written once before timing: the limit
+//! the parsers' rows are divided by), then
 //!   BENCH lang=rust stream=loopback-tcp mode=session-roundtrip packets=N bytes=B seconds=BEST
 //! for N ping round trips through the blocking session API over loopback TCP.
+//! `--mode MODE` runs that mode only (`none`: nothing, no line; with a STREAM named, the program's
+//! fixed cost that instruction counts subtract, `tests/bench/run.py --instructions`).
 //! Exits non-zero if a stream is missing or a count does not match.
 
 use std::hint::black_box;
@@ -37,11 +41,52 @@ fn best_of(
     Ok((best, last))
 }
 
+/// Best time of `passes` copies of the whole stream into `into` (one memcpy each).
+fn bulk(passes: u32, stream: &Stream, into: &mut [u8]) -> Result<f64, String> {
+    let mut best = f64::INFINITY;
+    for _ in 0..passes {
+        let start = Instant::now();
+        black_box(&mut *into).copy_from_slice(black_box(&stream.data));
+        black_box(&*into);
+        best = best.min(start.elapsed().as_secs_f64());
+    }
+    if into != stream.data.as_slice() {
+        return Err(format!(
+            "{}: bulk: the copy differs from the stream",
+            stream.name
+        ));
+    }
+    Ok(best)
+}
+
+const MODES: [&str; 6] = [
+    "bulk",
+    "frame",
+    "decode",
+    "session-ingest",
+    "session-roundtrip",
+    "none",
+];
+
 fn run() -> Result<(), String> {
-    let mut args = std::env::args().skip(1);
+    let mut all: Vec<String> = std::env::args().skip(1).collect();
+    let mut mode_only: Option<String> = None;
+    if let Some(at) = all.iter().position(|a| a == "--mode") {
+        if at + 1 >= all.len() {
+            return Err("--mode needs a value".into());
+        }
+        let m = all.remove(at + 1);
+        all.remove(at);
+        if !MODES.contains(&m.as_str()) {
+            return Err(format!("unknown mode {m} (modes: {})", MODES.join(", ")));
+        }
+        mode_only = Some(m);
+    }
+    let wants = |m: &str| mode_only.as_deref().is_none_or(|o| o == m);
+    let mut args = all.into_iter();
     let dir = PathBuf::from(
         args.next()
-            .ok_or("usage: mipcodec-bench DIR [PASSES [STREAM...]]")?,
+            .ok_or("usage: mipcodec-bench DIR [PASSES [STREAM...]] [--mode MODE]")?,
     );
     let passes: u32 = match args.next() {
         Some(p) => p
@@ -67,14 +112,26 @@ fn run() -> Result<(), String> {
             continue;
         }
         let stream = Stream::load(&dir, name)?;
+        if wants("bulk") {
+            let mut into = vec![0u8; stream.data.len()];
+            let secs = bulk(passes, &stream, &mut into)?;
+            println!(
+                "BENCH lang=rust stream={name} mode=bulk packets={} bytes={} seconds={secs:.9}",
+                stream.packets,
+                stream.data.len()
+            );
+        }
         for (mode, work, is_decode) in [
             ("frame", frame as fn(&[u8]) -> Tally, false),
             ("decode", decode, true),
             ("session-ingest", session_ingest, true),
         ] {
+            if !wants(mode) {
+                continue;
+            }
             let (secs, t) = best_of(passes, &stream, work, is_decode)?;
             println!(
-                "BENCH lang=rust stream={name} mode={mode} packets={} bytes={} seconds={secs:.6}",
+                "BENCH lang=rust stream={name} mode={mode} packets={} bytes={} seconds={secs:.9}",
                 t.packets,
                 stream.data.len()
             );
@@ -86,7 +143,7 @@ fn run() -> Result<(), String> {
             );
         }
     }
-    if only.is_empty() || only.iter().any(|n| n == "loopback-tcp") {
+    if wants("session-roundtrip") && (only.is_empty() || only.iter().any(|n| n == "loopback-tcp")) {
         let mut best = f64::INFINITY;
         let mut bytes = 0;
         for _ in 0..passes {
