@@ -14,12 +14,13 @@ typedef struct {
 } sums_t;
 
 /* The byte-serial definition, for what is left after the wider steps. */
-static void sums_bytes(sums_t *s, const uint8_t *bytes, size_t len) {
+static sums_t sums_bytes(sums_t s, const uint8_t *bytes, size_t len) {
     size_t i;
     for (i = 0; i < len; i++) {
-        s->s1 += bytes[i];
-        s->s2 += s->s1;
+        s.s1 += bytes[i];
+        s.s2 += s.s1;
     }
+    return s;
 }
 
 /* Eight bytes as a little-endian word, whatever the host's byte order (compilers make this one
@@ -46,7 +47,7 @@ static uint64_t load_le64(const uint8_t *b) {
  * lane constants adds the lanes into the top one (at most 255 * 20) and the run's sums are folded
  * into sum1 and sum2 with the recurrence above.
  */
-static void sums_scalar(sums_t *s, const uint8_t *bytes, size_t len) {
+static sums_t sums_scalar(sums_t s, const uint8_t *bytes, size_t len) {
     const uint64_t lanes = 0x00FF00FF00FF00FFu;
     const uint64_t ones = 0x0001000100010001u;
     size_t i = 0;
@@ -70,11 +71,11 @@ static void sums_scalar(sums_t *s, const uint8_t *bytes, size_t len) {
         e &= lanes;
         o &= lanes;
         r1 = ((e + o) * ones) >> 48;
-        s->s2 += 8 * words * s->s1 + 8 * (((q * ones) >> 48) - r1) + ((e * 0x0008000600040002u) >> 48) +
-                 ((o * 0x0007000500030001u) >> 48);
-        s->s1 += r1;
+        s.s2 += 8 * words * s.s1 + 8 * (((q * ones) >> 48) - r1) + ((e * 0x0008000600040002u) >> 48) +
+                ((o * 0x0007000500030001u) >> 48);
+        s.s1 += r1;
     }
-    sums_bytes(s, bytes + i, len - i);
+    return sums_bytes(s, bytes + i, len - i);
 }
 
 /*
@@ -117,7 +118,7 @@ static const uint8_t k_tail_mask[32] = {0,    0,    0,    0,    0,    0,    0,  
 
 /* bytes[0 .. len) where bytes - before .. bytes may be read too: before >= 16 - len % 16 when
  * len % 16 != 0 (the tail block reaches back), so len + before >= 16. */
-static void sums_sse2(sums_t *s, const uint8_t *bytes, size_t len) {
+static sums_t sums_sse2(sums_t s, const uint8_t *bytes, size_t len) {
     const __m128i zero = _mm_setzero_si128();
     const __m128i w_lo = _mm_set_epi16(9, 10, 11, 12, 13, 14, 15, 16);
     const __m128i w_hi = _mm_set_epi16(1, 2, 3, 4, 5, 6, 7, 8);
@@ -134,20 +135,21 @@ static void sums_sse2(sums_t *s, const uint8_t *bytes, size_t len) {
         v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo));
         v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi));
     }
-    s->s2 += 16 * blocks * s->s1 + 16 * (uint64_t)hsum_epi32(v_p) + hsum_epi32(v_w);
-    s->s1 += hsum_epi32(v_s);
+    s.s2 += 16 * blocks * s.s1 + 16 * (uint64_t)hsum_epi32(v_p) + hsum_epi32(v_w);
+    s.s1 += hsum_epi32(v_s);
     if (tail != 0) {
         __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(bytes + len - 16));
         v = _mm_and_si128(v, _mm_loadu_si128((const __m128i *)(const void *)(k_tail_mask + tail)));
-        s->s2 += tail * s->s1 + hsum_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo),
-                                                         _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi)));
-        s->s1 += hsum_epi32(_mm_sad_epu8(v, zero));
+        s.s2 += tail * s.s1 + hsum_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo),
+                                                       _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi)));
+        s.s1 += hsum_epi32(_mm_sad_epu8(v, zero));
     }
+    return s;
 }
 #endif
 
 #if CHECKSUM_AVX2
-CHECKSUM_AVX2_TARGET static void sums_avx2(sums_t *s, const uint8_t *bytes, size_t len) {
+CHECKSUM_AVX2_TARGET static sums_t sums_avx2(sums_t s, const uint8_t *bytes, size_t len) {
     const __m256i zero = _mm256_setzero_si256();
     const __m256i weights = _mm256_set_epi8(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
                                             20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32);
@@ -164,21 +166,21 @@ CHECKSUM_AVX2_TARGET static void sums_avx2(sums_t *s, const uint8_t *bytes, size
         /* 255 * (32 + 31) fits a signed 16-bit lane: pmaddubsw never saturates here */
         v_w = _mm256_add_epi32(v_w, _mm256_madd_epi16(_mm256_maddubs_epi16(v, weights), ones));
     }
-    s->s2 += 32 * blocks * s->s1 +
-             32 * (uint64_t)hsum_epi32(
-                      _mm_add_epi32(_mm256_castsi256_si128(v_p), _mm256_extracti128_si256(v_p, 1))) +
-             hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_w), _mm256_extracti128_si256(v_w, 1)));
-    s->s1 += hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_s), _mm256_extracti128_si256(v_s, 1)));
+    s.s2 += 32 * blocks * s.s1 +
+            32 * (uint64_t)hsum_epi32(
+                     _mm_add_epi32(_mm256_castsi256_si128(v_p), _mm256_extracti128_si256(v_p, 1))) +
+            hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_w), _mm256_extracti128_si256(v_w, 1)));
+    s.s1 += hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_s), _mm256_extracti128_si256(v_s, 1)));
     /* the compiler does not always clear the upper halves when leaving a target("avx2")
      * function; SSE code after dirty upper halves runs at half speed or worse */
     _mm256_zeroupper();
-    sums_sse2(s, bytes + 32 * blocks, len - 32 * blocks); /* 32 * blocks >= 16 bytes lie before */
+    return sums_sse2(s, bytes + 32 * blocks, len - 32 * blocks); /* 32 * blocks >= 16 bytes lie before */
 }
 #endif
 
-static uint16_t sums_word(const sums_t *s) {
-    unsigned sum1 = (unsigned)(s->s1 & 0xFFu);
-    unsigned sum2 = (unsigned)(s->s2 & 0xFFu);
+static uint16_t sums_word(sums_t s) {
+    unsigned sum1 = (unsigned)(s.s1 & 0xFFu);
+    unsigned sum2 = (unsigned)(s.s2 & 0xFFu);
 #if MIPC_CHECKSUM_SUM1_FIRST
     return (uint16_t)(sum1 << 8 | sum2);
 #else
@@ -192,15 +194,11 @@ bool mipc_checksum_word_impl(mipc_checksum_impl_t impl, const uint8_t *bytes, si
     assert(word != NULL);
     switch (impl) {
     case MIPC_CHECKSUM_IMPL_SCALAR:
-        sums_scalar(&s, bytes, len);
+        s = sums_scalar(s, bytes, len);
         break;
 #if CHECKSUM_SSE2
     case MIPC_CHECKSUM_IMPL_SSE2:
-        if (len < 16) {
-            sums_scalar(&s, bytes, len);
-        } else {
-            sums_sse2(&s, bytes, len);
-        }
+        s = len < 16 ? sums_scalar(s, bytes, len) : sums_sse2(s, bytes, len);
         break;
 #endif
 #if CHECKSUM_AVX2
@@ -208,40 +206,37 @@ bool mipc_checksum_word_impl(mipc_checksum_impl_t impl, const uint8_t *bytes, si
         if (!CHECKSUM_HAVE_AVX2()) {
             return false;
         }
-        if (len < 32) {
-            sums_scalar(&s, bytes, len);
-        } else {
-            sums_avx2(&s, bytes, len);
-        }
+        s = len < 32 ? sums_scalar(s, bytes, len) : sums_avx2(s, bytes, len);
         break;
 #endif
     default:
         return false;
     }
-    *word = sums_word(&s);
+    *word = sums_word(s);
     return true;
 }
 
 /* The fastest implementation the build and the CPU have for the length: under 16 bytes the
  * scalar steps, under 64 SSE2 (AVX2's wider reduction and the vzeroupper cost more than they
  * save there), then AVX2. */
-uint16_t mipc_checksum_word(const uint8_t *bytes, size_t len) {
+static uint16_t checksum_word(const uint8_t *bytes, size_t len) {
     sums_t s = {0, 0};
-    assert(bytes != NULL || len == 0);
 #if CHECKSUM_AVX2
     if (len >= 64 && CHECKSUM_HAVE_AVX2()) {
-        sums_avx2(&s, bytes, len);
-        return sums_word(&s);
+        return sums_word(sums_avx2(s, bytes, len));
     }
 #endif
 #if CHECKSUM_SSE2
     if (len >= 16) {
-        sums_sse2(&s, bytes, len);
-        return sums_word(&s);
+        return sums_word(sums_sse2(s, bytes, len));
     }
 #endif
-    sums_scalar(&s, bytes, len);
-    return sums_word(&s);
+    return sums_word(sums_scalar(s, bytes, len));
+}
+
+uint16_t mipc_checksum_word(const uint8_t *bytes, size_t len) {
+    assert(bytes != NULL || len == 0);
+    return checksum_word(bytes, len);
 }
 
 void mipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIPC_CHECKSUM_SIZE]) {
@@ -256,7 +251,7 @@ void mipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIPC_CHECKSUM_S
  * one wider word stalls on store forwarding, which cost the parser more than the checksum. */
 bool mipc_checksum_matches(const uint8_t *bytes, size_t len) {
     assert(bytes != NULL);
-    return mipc_checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
+    return checksum_word(bytes, len) == (unsigned)((unsigned)bytes[len] << 8 | bytes[len + 1]);
 }
 
 bool mipc_packet_valid(const uint8_t *packet, size_t len) {
