@@ -72,7 +72,7 @@ static sums_t sums_scalar(sums_t s, const uint8_t *bytes, size_t len) {
         o &= lanes;
         r1 = ((e + o) * ones) >> 48;
         s.s2 += 8 * words * s.s1 + 8 * (((q * ones) >> 48) - r1) + ((e * 0x0008000600040002u) >> 48) +
-                 ((o * 0x0007000500030001u) >> 48);
+                ((o * 0x0007000500030001u) >> 48);
         s.s1 += r1;
     }
     return sums_bytes(s, bytes + i, len - i);
@@ -141,7 +141,7 @@ static sums_t sums_sse2(sums_t s, const uint8_t *bytes, size_t len) {
         __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(bytes + len - 16));
         v = _mm_and_si128(v, _mm_loadu_si128((const __m128i *)(const void *)(k_tail_mask + tail)));
         s.s2 += tail * s.s1 + hsum_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo),
-                                                          _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi)));
+                                                       _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi)));
         s.s1 += hsum_epi32(_mm_sad_epu8(v, zero));
     }
     return s;
@@ -151,8 +151,8 @@ static sums_t sums_sse2(sums_t s, const uint8_t *bytes, size_t len) {
 #if CHECKSUM_AVX2
 CHECKSUM_AVX2_TARGET static sums_t sums_avx2(sums_t s, const uint8_t *bytes, size_t len) {
     const __m256i zero = _mm256_setzero_si256();
-    const __m256i weights = _mm256_set_epi8(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
-                                            21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32);
+    const __m256i weights = _mm256_set_epi8(1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19,
+                                            20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32);
     const __m256i ones = _mm256_set1_epi16(1);
     __m256i v_s = zero;
     __m256i v_p = zero;
@@ -167,8 +167,9 @@ CHECKSUM_AVX2_TARGET static sums_t sums_avx2(sums_t s, const uint8_t *bytes, siz
         v_w = _mm256_add_epi32(v_w, _mm256_madd_epi16(_mm256_maddubs_epi16(v, weights), ones));
     }
     s.s2 += 32 * blocks * s.s1 +
-             32 * (uint64_t)hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_p), _mm256_extracti128_si256(v_p, 1))) +
-             hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_w), _mm256_extracti128_si256(v_w, 1)));
+            32 * (uint64_t)hsum_epi32(
+                     _mm_add_epi32(_mm256_castsi256_si128(v_p), _mm256_extracti128_si256(v_p, 1))) +
+            hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_w), _mm256_extracti128_si256(v_w, 1)));
     s.s1 += hsum_epi32(_mm_add_epi32(_mm256_castsi256_si128(v_s), _mm256_extracti128_si256(v_s, 1)));
     /* the compiler does not always clear the upper halves when leaving a target("avx2")
      * function; SSE code after dirty upper halves runs at half speed or worse */

@@ -238,7 +238,8 @@ TEST(Checksum, EveryImplementationMatchesTheByteSerialDefinition) {
             continue;
         }
         available++;
-        for (const uint8_t *buf : {static_cast<const uint8_t *>(random_bytes), static_cast<const uint8_t *>(all_ff)}) {
+        for (const uint8_t *buf :
+             {static_cast<const uint8_t *>(random_bytes), static_cast<const uint8_t *>(all_ff)}) {
             for (size_t align = 0; align < 64; align++) {
                 for (size_t len = 0; len <= 300; len++) {
                     const uint8_t *bytes = buf + align;
@@ -249,8 +250,10 @@ TEST(Checksum, EveryImplementationMatchesTheByteSerialDefinition) {
                     }
                     const unsigned want = CODEC_CHECKSUM_SUM1_FIRST ? (sum1 << 8 | sum2) : (sum2 << 8 | sum1);
                     ASSERT_TRUE(codec_checksum_word_impl((codec_checksum_impl_t)impl, bytes, len, &word));
-                    ASSERT_EQ(word, want) << "implementation " << impl << ", alignment " << align << ", length " << len;
-                    ASSERT_EQ(codec_checksum_word(bytes, len), want) << "alignment " << align << ", length " << len;
+                    ASSERT_EQ(word, want)
+                        << "implementation " << impl << ", alignment " << align << ", length " << len;
+                    ASSERT_EQ(codec_checksum_word(bytes, len), want)
+                        << "alignment " << align << ", length " << len;
                 }
             }
         }
