@@ -26,6 +26,18 @@ extern const uint8_t mipc_sync[MIPC_SYNC_SIZE];
 void mipc_checksum(const uint8_t *bytes, size_t len, uint8_t out[MIPC_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */
 uint16_t mipc_checksum_word(const uint8_t *bytes, size_t len);
+/** The checksum's implementations: the portable one, and the vector ones of x86-64 (SSE2 in
+ * every x86-64 build, AVX2 where the compiler can target it, used when the CPU has it).
+ * mipc_checksum_word() picks the fastest available; all give the same checksum. */
+typedef enum {
+    MIPC_CHECKSUM_IMPL_SCALAR = 0,
+    MIPC_CHECKSUM_IMPL_SSE2 = 1,
+    MIPC_CHECKSUM_IMPL_AVX2 = 2,
+    MIPC_CHECKSUM_IMPL_COUNT = 3
+} mipc_checksum_impl_t;
+/** mipc_checksum_word() with one implementation (for tests and benchmarks): false when this
+ * build or this CPU does not have it (*word unchanged). */
+bool mipc_checksum_word_impl(mipc_checksum_impl_t impl, const uint8_t *bytes, size_t len, uint16_t *word);
 /** True when the MIPC_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
 bool mipc_checksum_matches(const uint8_t *bytes, size_t len);
 

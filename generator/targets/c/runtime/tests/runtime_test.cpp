@@ -219,6 +219,66 @@ TEST(Checksum, WideStepsMatchTheByteSerialDefinition) {
     EXPECT_EQ(std::vector<uint8_t>(ck, ck + CODEC_CHECKSUM_SIZE), wire_checksum(0xFB, 0x71));
 }
 
+// Every implementation this build and CPU have (scalar always; SSE2 and AVX2 on x86-64) equals
+// the byte-serial definition at every length 0..300 and every alignment 0..63, on random bytes
+// and on all 0xFF (the largest lane sums), and codec_checksum_word() equals them all.
+TEST(Checksum, EveryImplementationMatchesTheByteSerialDefinition) {
+    alignas(64) static uint8_t random_bytes[64 + 2100];
+    alignas(64) static uint8_t all_ff[64 + 2100];
+    uint32_t state = 777;
+    for (uint8_t &b : random_bytes) {
+        state = state * 1103515245u + 12345u;
+        b = (uint8_t)(state >> 16);
+    }
+    memset(all_ff, 0xFF, sizeof all_ff);
+    int available = 0;
+    for (int impl = 0; impl < CODEC_CHECKSUM_IMPL_COUNT; impl++) {
+        uint16_t word = 0;
+        if (!codec_checksum_word_impl((codec_checksum_impl_t)impl, random_bytes, 0, &word)) {
+            continue;
+        }
+        available++;
+        for (const uint8_t *buf :
+             {static_cast<const uint8_t *>(random_bytes), static_cast<const uint8_t *>(all_ff)}) {
+            for (size_t align = 0; align < 64; align++) {
+                for (size_t len = 0; len <= 300; len++) {
+                    const uint8_t *bytes = buf + align;
+                    unsigned sum1 = 0, sum2 = 0;
+                    for (size_t i = 0; i < len; i++) {
+                        sum1 = (sum1 + bytes[i]) & 0xFFu;
+                        sum2 = (sum2 + sum1) & 0xFFu;
+                    }
+                    const unsigned want = CODEC_CHECKSUM_SUM1_FIRST ? (sum1 << 8 | sum2) : (sum2 << 8 | sum1);
+                    ASSERT_TRUE(codec_checksum_word_impl((codec_checksum_impl_t)impl, bytes, len, &word));
+                    ASSERT_EQ(word, want)
+                        << "implementation " << impl << ", alignment " << align << ", length " << len;
+                    ASSERT_EQ(codec_checksum_word(bytes, len), want)
+                        << "alignment " << align << ", length " << len;
+                }
+            }
+        }
+        for (size_t len : {1023u, 1024u, 1025u, 2047u, 2048u, 2100u}) {
+            unsigned sum1 = 0, sum2 = 0;
+            for (size_t i = 0; i < len; i++) {
+                sum1 = (sum1 + random_bytes[5 + i]) & 0xFFu;
+                sum2 = (sum2 + sum1) & 0xFFu;
+            }
+            ASSERT_TRUE(codec_checksum_word_impl((codec_checksum_impl_t)impl, random_bytes + 5, len, &word));
+            EXPECT_EQ(word, CODEC_CHECKSUM_SUM1_FIRST ? (sum1 << 8 | sum2) : (sum2 << 8 | sum1))
+                << "implementation " << impl << ", length " << len;
+        }
+    }
+    EXPECT_GE(available, 1); // the scalar one, at least
+#if defined(__x86_64__) || defined(_M_X64)
+    uint16_t word = 0;
+    EXPECT_TRUE(codec_checksum_word_impl(CODEC_CHECKSUM_IMPL_SSE2, random_bytes, 20, &word))
+        << "every x86-64 build has the SSE2 checksum";
+#endif
+    uint16_t untouched = 0x1234;
+    EXPECT_FALSE(codec_checksum_word_impl(CODEC_CHECKSUM_IMPL_COUNT, random_bytes, 4, &untouched));
+    EXPECT_EQ(untouched, 0x1234);
+}
+
 TEST(Builder, BuildsAValidPacket) {
     std::vector<uint8_t> pkt = packet(0x01, {{0x10, {1, 2, 3}}, {0x11, {}}});
     ASSERT_EQ(pkt.size(), CODEC_HEADER_SIZE + 2u * CODEC_FIELD_HEADER_SIZE + 3u + CODEC_CHECKSUM_SIZE);

@@ -26,6 +26,18 @@ extern const uint8_t codec_sync[CODEC_SYNC_SIZE];
 void codec_checksum(const uint8_t *bytes, size_t len, uint8_t out[CODEC_CHECKSUM_SIZE]);
 /** The same checksum as one number: the first byte in wire order in the high 8 bits. */
 uint16_t codec_checksum_word(const uint8_t *bytes, size_t len);
+/** The checksum's implementations: the portable one, and the vector ones of x86-64 (SSE2 in
+ * every x86-64 build, AVX2 where the compiler can target it, used when the CPU has it).
+ * codec_checksum_word() picks the fastest available; all give the same checksum. */
+typedef enum {
+    CODEC_CHECKSUM_IMPL_SCALAR = 0,
+    CODEC_CHECKSUM_IMPL_SSE2 = 1,
+    CODEC_CHECKSUM_IMPL_AVX2 = 2,
+    CODEC_CHECKSUM_IMPL_COUNT = 3
+} codec_checksum_impl_t;
+/** codec_checksum_word() with one implementation (for tests and benchmarks): false when this
+ * build or this CPU does not have it (*word unchanged). */
+bool codec_checksum_word_impl(codec_checksum_impl_t impl, const uint8_t *bytes, size_t len, uint16_t *word);
 /** True when the CODEC_CHECKSUM_SIZE bytes at bytes + len are the checksum of bytes[0..len). */
 bool codec_checksum_matches(const uint8_t *bytes, size_t len);
 
