@@ -18,6 +18,7 @@
 // subtract) and prints `BENCH lang=cpp stream=<name> mode=<mode> packets=N bytes=B seconds=S` lines. The
 // packet and field counts are checked against the sidecar (exit 1 on mismatch); a checksum of
 // the decoded values is printed to stderr so the work cannot be optimised away.
+#include <time.h>
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -41,6 +42,14 @@
 #include "mipcodec/transport_posix.hpp"
 
 namespace {
+
+// The CPU time of this thread: what a pass costs, without the scheduler ticks other tasks take on
+// a shared machine (docs/benchmarks.md). Round trips over TCP stay on the wall clock.
+double cpu_now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
 
 const char *const kStreams[] = {"accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"};
 
@@ -319,11 +328,11 @@ int main(int argc, char **argv) {
             double best = 1e30;
             Counts c;
             for (int k = 0; k < passes; ++k) {
-                const auto t0 = std::chrono::steady_clock::now();
+                const double t0 = cpu_now();
                 run_pass(s, into, m, c);
-                const std::chrono::duration<double> dt = std::chrono::steady_clock::now() - t0;
-                if (dt.count() < best) {
-                    best = dt.count();
+                const double dt = cpu_now() - t0;
+                if (dt < best) {
+                    best = dt;
                 }
             }
             if (c.packets != s.packets) {
