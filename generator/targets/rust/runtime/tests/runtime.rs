@@ -285,6 +285,39 @@ fn garbage_then_resync() {
     );
 }
 
+/// The sync search looks at sixteen positions at a time: packets behind garbage runs of every
+/// length 0..40 made of sync prefixes (the first byte, all but the last byte) and other bytes are
+/// each found at their offset, whole and in every chunking (`events`), and every other byte is
+/// skipped.
+#[test]
+fn packets_behind_garbage_full_of_sync_prefixes_are_found() {
+    let p = sample();
+    let prefix = &SYNC[..SYNC.len() - 1];
+    let mut input = Vec::new();
+    let mut offsets = Vec::new();
+    let mut x: u32 = 4242;
+    for n in 0..40 {
+        for i in 0..n {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            match (x >> 16) % 4 {
+                0 => input.push(SYNC[0]),
+                1 if i + prefix.len() <= n => input.extend_from_slice(prefix),
+                _ => input.push(filler()),
+            }
+        }
+        offsets.push(input.len() as u64);
+        input.extend_from_slice(&p);
+    }
+    let found: Vec<u64> = events(&input)
+        .iter()
+        .filter_map(|e| match e {
+            Ev::Packet(offset, _) => Some(*offset),
+            Ev::Skip(..) => None,
+        })
+        .collect();
+    assert_eq!(found, offsets);
+}
+
 #[test]
 fn packet_inside_a_false_one_is_found() {
     let p = sample();
