@@ -73,6 +73,27 @@ fn find_byte(hay: &[u8], byte: u8) -> Option<usize> {
 fn find_sync_from(data: &[u8], from: usize) -> Option<usize> {
     let end = data.len();
     let mut at = from;
+    // Sixteen candidate positions at a time while the full sync fits after all of them: byte k
+    // of the sync compared in one 128-bit word loaded at `at + k`, a position matches where
+    // every comparison gave a zero byte. One branch per sixteen bytes of garbage, none per
+    // false first byte.
+    const LOW: u128 = u128::from_le_bytes([1; 16]);
+    const HIGH: u128 = LOW << 7;
+    while at + 16 + SYNC.len() - 1 <= end {
+        let mut diff = 0u128;
+        for (k, &byte) in SYNC.iter().enumerate() {
+            let mut bytes = [0u8; 16];
+            bytes.copy_from_slice(&data[at + k..at + k + 16]);
+            diff |= u128::from_le_bytes(bytes) ^ (LOW * u128::from(byte));
+        }
+        // Zero bytes of `diff` are the matches; the lowest flagged byte is the first match (a
+        // flag can be wrong only above a zero byte).
+        let zero = diff.wrapping_sub(LOW) & !diff & HIGH;
+        if zero != 0 {
+            return Some(at + (zero.trailing_zeros() / 8) as usize);
+        }
+        at += 16;
+    }
     loop {
         at += find_byte(&data[at..], SYNC[0])?;
         // The rest of the sync, or as much of it as `data` holds (byte by byte: no call to a

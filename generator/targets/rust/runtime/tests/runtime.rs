@@ -8,9 +8,10 @@ use protocodec::dispatch::{COUNTER, DATA_SET};
 use protocodec::error::EncodeErrorKind;
 use protocodec::fields::{FieldItem, Fields, FramingError, Packet};
 use protocodec::framing::{
-    checksum_bytes, fletcher16, CHECKSUM_SIZE, CHECKSUM_SUM1_FIRST, FIELD_DESCRIPTOR_OFFSET,
-    FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST, FIELD_LENGTH_COUNTS_HEADER, FIELD_LENGTH_OFFSET,
-    HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA, MAX_PACKET, MAX_PAYLOAD, SET_OFFSET, SYNC,
+    checksum_bytes, fletcher16, fletcher16_lanes, fletcher16_portable, CHECKSUM_SIZE,
+    CHECKSUM_SUM1_FIRST, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST,
+    FIELD_LENGTH_COUNTS_HEADER, FIELD_LENGTH_OFFSET, HEADER_SIZE, LENGTH_OFFSET, MAX_FIELD_DATA,
+    MAX_PACKET, MAX_PAYLOAD, SET_OFFSET, SYNC,
 };
 use protocodec::parser::{Event, Parser};
 use protocodec::samples::{SampleGrouper, SampleTracker, DATA_SETS, TIMESTAMPS};
@@ -106,7 +107,7 @@ fn fletcher16_matches_the_definition() {
     );
 }
 
-/// The block-wise checksum against the byte-serial definition at every length up to a maximum
+/// The block-wise (portable) checksum against the byte-serial definition at every length up to a maximum
 /// packet and far past it (every block/remainder split, and past three groups of 64 blocks,
 /// after which the lane sums are reduced), on bytes that fill the 16-bit lanes (all 0xFF) and
 /// on varied bytes.
@@ -128,7 +129,52 @@ fn fletcher16_matches_the_definition_at_every_length() {
                 s1 = (s1 + u32::from(b)) % 256;
                 s2 = (s2 + s1) % 256;
             }
-            assert_eq!(fletcher16(&data[..n]), (s1 as u8, s2 as u8), "length {n}");
+            let want = (s1 as u8, s2 as u8);
+            assert_eq!(
+                fletcher16_portable(&data[..n]),
+                want,
+                "portable, length {n}"
+            );
+            assert_eq!(fletcher16(&data[..n]), want, "length {n}");
+        }
+    }
+}
+
+/// The vector form, the portable form and the one `fletcher16` picks, against the byte-serial
+/// definition at every length 0..300 and every alignment 0..63 of the first byte (varied bytes
+/// and all 0xFF, which overflow every narrow lane).
+#[test]
+fn fletcher16_forms_match_the_definition_at_every_length_and_alignment() {
+    let mut x: u32 = 987_654_321;
+    let varied: Vec<u8> = (0..300 + 64)
+        .map(|_| {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            (x >> 16) as u8
+        })
+        .collect();
+    let ones = vec![0xFFu8; 300 + 64];
+    for data in [&varied, &ones] {
+        for align in 0..64 {
+            for n in 0..300 {
+                let bytes = &data[align..align + n];
+                let (mut s1, mut s2) = (0u8, 0u8);
+                for &b in bytes {
+                    s1 = s1.wrapping_add(b);
+                    s2 = s2.wrapping_add(s1);
+                }
+                let want = (s1, s2);
+                assert_eq!(
+                    fletcher16_lanes(bytes),
+                    want,
+                    "lanes, length {n}, alignment {align}"
+                );
+                assert_eq!(
+                    fletcher16_portable(bytes),
+                    want,
+                    "portable, length {n}, alignment {align}"
+                );
+                assert_eq!(fletcher16(bytes), want, "length {n}, alignment {align}");
+            }
         }
     }
 }
@@ -237,6 +283,39 @@ fn garbage_then_resync() {
             Ev::Skip(start + p.len() as u64, 4)
         ]
     );
+}
+
+/// The sync search looks at sixteen positions at a time: packets behind garbage runs of every
+/// length 0..40 made of sync prefixes (the first byte, all but the last byte) and other bytes are
+/// each found at their offset, whole and in every chunking (`events`), and every other byte is
+/// skipped.
+#[test]
+fn packets_behind_garbage_full_of_sync_prefixes_are_found() {
+    let p = sample();
+    let prefix = &SYNC[..SYNC.len() - 1];
+    let mut input = Vec::new();
+    let mut offsets = Vec::new();
+    let mut x: u32 = 4242;
+    for n in 0..40 {
+        for i in 0..n {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            match (x >> 16) % 4 {
+                0 => input.push(SYNC[0]),
+                1 if i + prefix.len() <= n => input.extend_from_slice(prefix),
+                _ => input.push(filler()),
+            }
+        }
+        offsets.push(input.len() as u64);
+        input.extend_from_slice(&p);
+    }
+    let found: Vec<u64> = events(&input)
+        .iter()
+        .filter_map(|e| match e {
+            Ev::Packet(offset, _) => Some(*offset),
+            Ev::Skip(..) => None,
+        })
+        .collect();
+    assert_eq!(found, offsets);
 }
 
 #[test]
