@@ -60,6 +60,18 @@ static void slots_dealloc(Slots3 *self) {
     tp->tp_free((PyObject *)self);
 }
 
+/* The dealloc of the package's Python subclasses (setup() installs it in place of CPython's generic
+ * subtype_dealloc when the class adds nothing to the instance: no __dict__, no weak references,
+ * no finalizer): the three slots released, the memory freed and the class's reference dropped.
+ * Their instances nest at most packet > fields list > entry, so no trashcan is needed. */
+static void heap_slots_dealloc(Slots3 *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    slots_clear(self);
+    tp->tp_free((PyObject *)self);
+    Py_DECREF(tp);
+}
+
 static PyMemberDef event_members[] = {
     {"offset", T_OBJECT_EX, offsetof(Slots3, a), 0, "stream offset"},
     {"data", T_OBJECT_EX, offsetof(Slots3, b), 0, "bytes"},
@@ -1774,6 +1786,14 @@ static PyObject *setup(PyObject *self, PyObject *args) {
             PyErr_Format(PyExc_TypeError, "%s must derive from %s with empty __slots__",
                          ((PyTypeObject *)t[k])->tp_name, bases[k]->tp_name);
             return NULL;
+        }
+    }
+    for (int k = 0; k < 4; k++) {
+        PyTypeObject *tp = (PyTypeObject *)t[k];
+        if ((tp->tp_flags & Py_TPFLAGS_HEAPTYPE) && tp->tp_base == bases[k] && tp->tp_dictoffset == 0 &&
+            tp->tp_weaklistoffset == 0 && tp->tp_finalize == NULL && tp->tp_del == NULL &&
+            tp->tp_free == PyObject_GC_Del) {
+            tp->tp_dealloc = (destructor)heap_slots_dealloc;
         }
     }
     raw_packet_type = (PyTypeObject *)Py_NewRef(t[0]);
