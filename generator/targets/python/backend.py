@@ -533,7 +533,10 @@ class _Proto:
                 by_field.setdefault(c["field_name"], []).append(f"{sm['module']}.{c['cls']}")
             for f in s["fields"]:
                 entries.append(
-                    {"key": f"(0x{s['id']:02X}, 0x{f['id']:02X})", "classes": tuple_literal(by_field[f["name"]])}
+                    {
+                        "key": f"(0x{s['id']:02X}, 0x{f['id']:02X})",
+                        "names": tuple_literal([f'"{c}"' for c in by_field[f["name"]]]),
+                    }
                 )
         res: dict[str, list[dict]] = {}
         by_field = {}
@@ -541,7 +544,7 @@ class _Proto:
             by_field.setdefault(c["field_name"], []).append(f"reserved.{c['cls']}")
         for r in self.p["reserved_fields"]:
             res.setdefault(r["applies_to"], []).append(
-                {"key": f"0x{r['id']:02X}", "classes": tuple_literal(by_field[r["name"]])}
+                {"key": f"0x{r['id']:02X}", "names": tuple_literal([f'"{c}"' for c in by_field[r["name"]]])}
             )
         shared = self.p.get("shared_data")
         return {
@@ -650,6 +653,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "registry": m.registry(sets, reserved),
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
             "exports": facts.EXPORTS,
+            "lazy_exports": facts.LAZY_EXPORTS,
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
             **release.stamp(proto),

@@ -201,3 +201,7 @@ EXPORTS = {
     "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
     "session": ["Device", "Result", "Session", "connect"],
 }
+
+# Modules of EXPORTS whose names the package's __init__ imports on first use (they import the
+# command sets' modules): `import <package>` stays cheap for the decode tools.
+LAZY_EXPORTS = ("session",)

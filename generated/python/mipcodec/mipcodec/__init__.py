@@ -15,25 +15,9 @@ and `SPEC_HASH` the first 16 hex digits of the SHA-256 of the mip protocol's can
 IR: two packages with the same hash were generated from the same spec.
 """
 
-from . import (
-    aiding,
-    base,
-    filter,
-    filter_data,
-    gnss,
-    gnss_corrections,
-    gnss_data,
-    gnss_external,
-    gnss_receiver_1,
-    gnss_receiver_2,
-    reserved,
-    sensor,
-    shared,
-    system,
-    system_data,
-    threedm,
-    types,
-)
+import importlib
+from typing import TYPE_CHECKING, Any, List
+
 from .canonical import NaN
 from .codec import DecodeError, EncodeError, Field, Layout, Struct
 from .framing import (
@@ -67,7 +51,75 @@ from .packets import (
 )
 from .registry import DEVICES, lookup
 from .samples import Sample, SampleGrouper, SampleTracker, sample_key
-from .session import Device, Result, Session, connect
+
+if TYPE_CHECKING:
+    from . import (
+        aiding,
+        base,
+        filter,
+        filter_data,
+        gnss,
+        gnss_corrections,
+        gnss_data,
+        gnss_external,
+        gnss_receiver_1,
+        gnss_receiver_2,
+        reserved,
+        sensor,
+        shared,
+        system,
+        system_data,
+        threedm,
+        types,
+    )
+    from .session import Device, Result, Session, connect
+
+# The modules of the sets, types, reserved fields and the session are imported on first use
+# (PEP 562): a tool that decodes a log loads only the sets the log holds (the registry imports
+# them as their fields are looked up).
+_LAZY_MODULES = frozenset(
+    (
+        "aiding",
+        "base",
+        "filter",
+        "filter_data",
+        "gnss",
+        "gnss_corrections",
+        "gnss_data",
+        "gnss_external",
+        "gnss_receiver_1",
+        "gnss_receiver_2",
+        "reserved",
+        "sensor",
+        "shared",
+        "system",
+        "system_data",
+        "threedm",
+        "types",
+    )
+)
+_LAZY_NAMES = {
+    "Device": "session",
+    "Result": "session",
+    "Session": "session",
+    "connect": "session",
+}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY_MODULES:
+        return importlib.import_module(f"{__name__}.{name}")
+    module = _LAZY_NAMES.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> List[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __version__ = "0.1.0"
 SPEC_HASH = "eba4a6fa36162aa9"

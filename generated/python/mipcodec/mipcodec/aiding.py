@@ -14,6 +14,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class FrameConfig(_c.Field):
     """Frame configuration (set 0x13, descriptor 0x01, command).
@@ -52,6 +53,7 @@ class FrameConfig(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FrameConfigResponse(_c.Field):
     """Frame configuration (response) (set 0x13, descriptor 0x81, response).
@@ -84,6 +86,7 @@ class FrameConfigResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EchoControl(_c.Field):
     """Echo control (set 0x13, descriptor 0x1F, command).
@@ -110,6 +113,7 @@ class EchoControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EchoControlResponse(_c.Field):
     """Echo control (response) (set 0x13, descriptor 0x9F, response).
@@ -129,6 +133,7 @@ class EchoControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("mode", _c.enum(_t.AidingEchoMode, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefPosition(_c.Field):
     """ECEF position (set 0x13, descriptor 0x21, command).
@@ -161,6 +166,7 @@ class EcefPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """LLH position (set 0x13, descriptor 0x22, command).
@@ -199,6 +205,7 @@ class LlhPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HeightAboveEllipsoid(_c.Field):
     """Height above ellipsoid (set 0x13, descriptor 0x23, command).
@@ -227,6 +234,7 @@ class HeightAboveEllipsoid(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefVelocity(_c.Field):
     """ECEF velocity (set 0x13, descriptor 0x28, command).
@@ -260,6 +268,7 @@ class EcefVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocity(_c.Field):
     """NED velocity (set 0x13, descriptor 0x29, command).
@@ -294,6 +303,7 @@ class NedVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class BodyFrameVelocity(_c.Field):
     """Body frame velocity (set 0x13, descriptor 0x2A, command).
@@ -329,6 +339,7 @@ class BodyFrameVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class TrueHeading(_c.Field):
     """True heading (set 0x13, descriptor 0x31, command).
@@ -357,6 +368,7 @@ class TrueHeading(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagneticField(_c.Field):
     """Magnetic field (set 0x13, descriptor 0x32, command).
@@ -390,6 +402,7 @@ class MagneticField(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class Pressure(_c.Field):
     """Pressure (set 0x13, descriptor 0x33, command).

@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class Ping(_c.Field):
     """Ping (set 0x01, descriptor 0x01, command).
@@ -30,6 +31,7 @@ class Ping(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class SetToIdle(_c.Field):
     """Set to idle (set 0x01, descriptor 0x02, command).
@@ -48,6 +50,7 @@ class SetToIdle(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceInfo(_c.Field):
     """Get device information (set 0x01, descriptor 0x03, command).
@@ -66,6 +69,7 @@ class GetDeviceInfo(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceInfo(_c.Field):
     """Device information (set 0x01, descriptor 0x81, response).
@@ -85,6 +89,7 @@ class DeviceInfo(_c.Field):
     _OPS = (_c.Nested("info", _t.DeviceInfo),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceDescriptors(_c.Field):
     """Get device descriptor sets (set 0x01, descriptor 0x04, command).
@@ -103,6 +108,7 @@ class GetDeviceDescriptors(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceDescriptors(_c.Field):
     """Device descriptors (set 0x01, descriptor 0x82, response).
@@ -124,6 +130,7 @@ class DeviceDescriptors(_c.Field):
     _OPS = (_c.Remaining("descriptors", _c.U16, maximum=126),)
 
 
+@_c.slotted
 @_dc.dataclass
 class BuiltInTest(_c.Field):
     """Built-in test (set 0x01, descriptor 0x05, command).
@@ -142,6 +149,7 @@ class BuiltInTest(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class BuiltInTestResult_gx5_45(_c.Field):
     """Built-in test result (set 0x01, descriptor 0x83, response), device gx5_45.
@@ -162,6 +170,7 @@ class BuiltInTestResult_gx5_45(_c.Field):
     _OPS = (_c.Run(_c.P("flags", _c.flags(_t.Gx5BitFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class BuiltInTestResult_cv7_ins(_c.Field):
     """Built-in test result (set 0x01, descriptor 0x83, response), device cv7_ins.
@@ -182,6 +191,7 @@ class BuiltInTestResult_cv7_ins(_c.Field):
     _OPS = (_c.Run(_c.P("flags", _c.flags(_t.Cv7BitFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class Resume(_c.Field):
     """Resume (set 0x01, descriptor 0x06, command).
@@ -199,6 +209,7 @@ class Resume(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class GetExtendedDescriptors(_c.Field):
     """Get extended device descriptor sets (set 0x01, descriptor 0x07, command).
@@ -217,6 +228,7 @@ class GetExtendedDescriptors(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class ExtendedDescriptors(_c.Field):
     """Extended device descriptors (set 0x01, descriptor 0x86, response).
@@ -237,6 +249,7 @@ class ExtendedDescriptors(_c.Field):
     _OPS = (_c.Remaining("descriptors", _c.U16, maximum=126),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ContinuousBit(_c.Field):
     """Continuous built-in test (set 0x01, descriptor 0x08, command).
@@ -255,6 +268,7 @@ class ContinuousBit(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class ContinuousBitResult(_c.Field):
     """Continuous built-in test result (set 0x01, descriptor 0x88, response).
@@ -276,6 +290,7 @@ class ContinuousBitResult(_c.Field):
     _OPS = (_c.Nested("result", _t.Cv7ContinuousBit),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CommPortSpeed(_c.Field):
     """Comm port speed (set 0x01, descriptor 0x09, command).
@@ -303,6 +318,7 @@ class CommPortSpeed(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class CommPortSpeedResponse(_c.Field):
     """Comm port speed (response) (set 0x01, descriptor 0x89, response).
@@ -323,6 +339,7 @@ class CommPortSpeedResponse(_c.Field):
     _OPS = (_c.Run(_c.P("port", _c.U8), _c.P("baud", _c.U32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTimeUpdate_gx5_45(_c.Field):
     """GPS time update (set 0x01, descriptor 0x72, command), device gx5_45.
@@ -353,6 +370,7 @@ class GpsTimeUpdate_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTimeUpdate_cv7_ins(_c.Field):
     """GPS time update (set 0x01, descriptor 0x72, command), device cv7_ins.
@@ -382,6 +400,7 @@ class GpsTimeUpdate_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsWeek(_c.Field):
     """Current GPS week (set 0x01, descriptor 0x84, response).
@@ -401,6 +420,7 @@ class GpsWeek(_c.Field):
     _OPS = (_c.Run(_c.P("week", _c.U32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsSeconds(_c.Field):
     """Current GPS seconds (set 0x01, descriptor 0x85, response).
@@ -420,6 +440,7 @@ class GpsSeconds(_c.Field):
     _OPS = (_c.Run(_c.P("seconds", _c.U32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceReset(_c.Field):
     """Device reset (set 0x01, descriptor 0x7E, command).

@@ -14,6 +14,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class ResetFilter(_c.Field):
     """Reset filter (set 0x0D, descriptor 0x01, command).
@@ -32,6 +33,7 @@ class ResetFilter(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class SetInitialAttitude(_c.Field):
     """Set initial attitude (set 0x0D, descriptor 0x02, command).
@@ -54,6 +56,7 @@ class SetInitialAttitude(_c.Field):
     _OPS = (_c.Run(_c.P("roll", _c.F32), _c.P("pitch", _c.F32), _c.P("heading", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SetInitialHeading(_c.Field):
     """Set initial heading (set 0x0D, descriptor 0x03, command).
@@ -75,6 +78,7 @@ class SetInitialHeading(_c.Field):
     _OPS = (_c.Run(_c.P("heading", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class RunFilter(_c.Field):
     """Run navigation filter (set 0x0D, descriptor 0x05, command).
@@ -93,6 +97,7 @@ class RunFilter(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class VehicleDynamicsMode(_c.Field):
     """Vehicle dynamics mode (set 0x0D, descriptor 0x10, command).
@@ -118,6 +123,7 @@ class VehicleDynamicsMode(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class VehicleDynamicsModeResponse(_c.Field):
     """Vehicle dynamics mode (response) (set 0x0D, descriptor 0x80, response).
@@ -137,6 +143,7 @@ class VehicleDynamicsModeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("mode", _c.enum(_t.VehicleDynamicsMode, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleTransform(_c.Field):
     """Sensor to vehicle frame transformation (set 0x0D, descriptor 0x11, command).
@@ -169,6 +176,7 @@ class SensorToVehicleTransform(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleTransformResponse(_c.Field):
     """Sensor to vehicle frame transformation (response) (set 0x0D, descriptor 0x81, response).
@@ -190,6 +198,7 @@ class SensorToVehicleTransformResponse(_c.Field):
     _OPS = (_c.Run(_c.P("roll", _c.F32), _c.P("pitch", _c.F32), _c.P("yaw", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleOffset(_c.Field):
     """Sensor to vehicle frame offset (set 0x0D, descriptor 0x12, command).
@@ -216,6 +225,7 @@ class SensorToVehicleOffset(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleOffsetResponse(_c.Field):
     """Sensor to vehicle frame offset (response) (set 0x0D, descriptor 0x82, response).
@@ -236,6 +246,7 @@ class SensorToVehicleOffsetResponse(_c.Field):
     _OPS = (_c.Run(_c.P("offset", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AntennaOffset(_c.Field):
     """GNSS antenna offset (set 0x0D, descriptor 0x13, command).
@@ -264,6 +275,7 @@ class AntennaOffset(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AntennaOffsetResponse(_c.Field):
     """GNSS antenna offset (response) (set 0x0D, descriptor 0x83, response).
@@ -283,6 +295,7 @@ class AntennaOffsetResponse(_c.Field):
     _OPS = (_c.Run(_c.P("offset", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EstimationControl(_c.Field):
     """Estimation control flags (set 0x0D, descriptor 0x14, command).
@@ -308,6 +321,7 @@ class EstimationControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EstimationControlResponse(_c.Field):
     """Estimation control flags (response) (set 0x0D, descriptor 0x84, response).
@@ -327,6 +341,7 @@ class EstimationControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("flags", _c.flags(_t.EstimationControlFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssSourceControl(_c.Field):
     """GNSS source control (set 0x0D, descriptor 0x15, command).
@@ -353,6 +368,7 @@ class GnssSourceControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssSourceControlResponse(_c.Field):
     """GNSS source control (response) (set 0x0D, descriptor 0x86, response).
@@ -372,6 +388,7 @@ class GnssSourceControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.FilterGnssSource, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ExternalGnssUpdate(_c.Field):
     """External GNSS update (set 0x0D, descriptor 0x16, command).
@@ -421,6 +438,7 @@ class ExternalGnssUpdate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ExternalHeadingUpdate(_c.Field):
     """External heading update (set 0x0D, descriptor 0x17, command).
@@ -451,6 +469,7 @@ class ExternalHeadingUpdate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HeadingUpdateControl(_c.Field):
     """Heading update control (set 0x0D, descriptor 0x18, command).
@@ -477,6 +496,7 @@ class HeadingUpdateControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HeadingUpdateControlResponse(_c.Field):
     """Heading update control (response) (set 0x0D, descriptor 0x87, response).
@@ -496,6 +516,7 @@ class HeadingUpdateControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.HeadingUpdateSource, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AutoInitControl(_c.Field):
     """Auto-initialization control (set 0x0D, descriptor 0x19, command).
@@ -522,6 +543,7 @@ class AutoInitControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AutoInitControlResponse(_c.Field):
     """Auto-initialization control (response) (set 0x0D, descriptor 0x88, response).
@@ -541,6 +563,7 @@ class AutoInitControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelNoise(_c.Field):
     """Accelerometer noise standard deviation (set 0x0D, descriptor 0x1A, command).
@@ -567,6 +590,7 @@ class AccelNoise(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelNoiseResponse(_c.Field):
     """Accelerometer noise standard deviation (response) (set 0x0D, descriptor 0x89, response).
@@ -587,6 +611,7 @@ class AccelNoiseResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroNoise(_c.Field):
     """Gyroscope noise standard deviation (set 0x0D, descriptor 0x1B, command).
@@ -613,6 +638,7 @@ class GyroNoise(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroNoiseResponse(_c.Field):
     """Gyroscope noise standard deviation (response) (set 0x0D, descriptor 0x8A, response).
@@ -632,6 +658,7 @@ class GyroNoiseResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBiasModel(_c.Field):
     """Accelerometer bias model parameters (set 0x0D, descriptor 0x1C, command).
@@ -660,6 +687,7 @@ class AccelBiasModel(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBiasModelResponse(_c.Field):
     """Accelerometer bias model parameters (response) (set 0x0D, descriptor 0x8B, response).
@@ -681,6 +709,7 @@ class AccelBiasModelResponse(_c.Field):
     _OPS = (_c.Run(_c.P("beta", _c.F32, 3), _c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBiasModel(_c.Field):
     """Gyroscope bias model parameters (set 0x0D, descriptor 0x1D, command).
@@ -709,6 +738,7 @@ class GyroBiasModel(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBiasModelResponse(_c.Field):
     """Gyroscope bias model parameters (response) (set 0x0D, descriptor 0x8C, response).
@@ -729,6 +759,7 @@ class GyroBiasModelResponse(_c.Field):
     _OPS = (_c.Run(_c.P("beta", _c.F32, 3), _c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ZuptControl(_c.Field):
     """Zero velocity update (ZUPT) control (set 0x0D, descriptor 0x1E, command).
@@ -758,6 +789,7 @@ class ZuptControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ZuptControlResponse(_c.Field):
     """Zero velocity update control (response) (set 0x0D, descriptor 0x8D, response).
@@ -778,6 +810,7 @@ class ZuptControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.U8), _c.P("threshold", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ExternalHeadingUpdateWithTime(_c.Field):
     """External heading update with timestamp (set 0x0D, descriptor 0x1F, command).
@@ -810,6 +843,7 @@ class ExternalHeadingUpdateWithTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ZeroAngularRateUpdateControl(_c.Field):
     """Zero angular rate update control (set 0x0D, descriptor 0x20, command).
@@ -841,6 +875,7 @@ class ZeroAngularRateUpdateControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ZeroAngularRateUpdateControlResponse(_c.Field):
     """Zero angular rate update control (response) (set 0x0D, descriptor 0x8E, response).
@@ -861,6 +896,7 @@ class ZeroAngularRateUpdateControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.U8), _c.P("threshold", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class TareOrientation(_c.Field):
     """Tare orientation (set 0x0D, descriptor 0x21, command).
@@ -888,6 +924,7 @@ class TareOrientation(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class CommandedZupt(_c.Field):
     """Commanded zero velocity update (set 0x0D, descriptor 0x22, command).
@@ -905,6 +942,7 @@ class CommandedZupt(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class CommandedZeroAngularRateUpdate(_c.Field):
     """Commanded zero angular rate update (set 0x0D, descriptor 0x23, command).
@@ -922,6 +960,7 @@ class CommandedZeroAngularRateUpdate(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class MagCaptureAutoCalibration(_c.Field):
     """Magnetometer capture auto calibration (set 0x0D, descriptor 0x27, command).
@@ -943,6 +982,7 @@ class MagCaptureAutoCalibration(_c.Field):
     _OPS = (_c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GravityNoiseStdDev(_c.Field):
     """Gravity noise standard deviation (set 0x0D, descriptor 0x28, command).
@@ -969,6 +1009,7 @@ class GravityNoiseStdDev(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GravityNoiseStdDevResponse(_c.Field):
     """Gravity noise standard deviation (response) (set 0x0D, descriptor 0x93, response).
@@ -988,6 +1029,7 @@ class GravityNoiseStdDevResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class PressureAltitudeNoiseStdDev(_c.Field):
     """Pressure altitude noise standard deviation (set 0x0D, descriptor 0x29, command).
@@ -1015,6 +1057,7 @@ class PressureAltitudeNoiseStdDev(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PressureAltitudeNoiseStdDevResponse(_c.Field):
     """Pressure altitude noise standard deviation (response) (set 0x0D, descriptor 0x94, response).
@@ -1034,6 +1077,7 @@ class PressureAltitudeNoiseStdDevResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class HardIronOffsetNoise(_c.Field):
     """Hard iron offset process noise (set 0x0D, descriptor 0x2B, command).
@@ -1060,6 +1104,7 @@ class HardIronOffsetNoise(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HardIronOffsetNoiseResponse(_c.Field):
     """Hard iron offset process noise (response) (set 0x0D, descriptor 0x96, response).
@@ -1080,6 +1125,7 @@ class HardIronOffsetNoiseResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SoftIronMatrixNoise(_c.Field):
     """Soft iron matrix process noise (set 0x0D, descriptor 0x2C, command).
@@ -1106,6 +1152,7 @@ class SoftIronMatrixNoise(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SoftIronMatrixNoiseResponse(_c.Field):
     """Soft iron matrix process noise (response) (set 0x0D, descriptor 0x97, response).
@@ -1126,6 +1173,7 @@ class SoftIronMatrixNoiseResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 9)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagNoiseStdDev(_c.Field):
     """Magnetometer noise standard deviation (set 0x0D, descriptor 0x42, command).
@@ -1152,6 +1200,7 @@ class MagNoiseStdDev(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagNoiseStdDevResponse(_c.Field):
     """Magnetometer noise standard deviation (response) (set 0x0D, descriptor 0xB1, response).
@@ -1172,6 +1221,7 @@ class MagNoiseStdDevResponse(_c.Field):
     _OPS = (_c.Run(_c.P("noise", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeclinationSource(_c.Field):
     """Declination source (set 0x0D, descriptor 0x43, command).
@@ -1201,6 +1251,7 @@ class DeclinationSource(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DeclinationSourceResponse(_c.Field):
     """Declination source (response) (set 0x0D, descriptor 0xB2, response).
@@ -1221,6 +1272,7 @@ class DeclinationSourceResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.MagneticParamSource, "u8")), _c.P("declination", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GravityMagnitudeAdaptiveMeasurement(_c.Field):
     """Gravity magnitude error adaptive measurement (set 0x0D, descriptor 0x44, command).
@@ -1272,6 +1324,7 @@ class GravityMagnitudeAdaptiveMeasurement(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GravityMagnitudeAdaptiveMeasurementResponse(_c.Field):
     """Gravity magnitude error adaptive measurement (response) (set 0x0D, descriptor 0xB3, response).
@@ -1316,6 +1369,7 @@ class GravityMagnitudeAdaptiveMeasurementResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagMagnitudeAdaptiveMeasurement(_c.Field):
     """Magnetometer magnitude error adaptive measurement (set 0x0D, descriptor 0x45, command).
@@ -1367,6 +1421,7 @@ class MagMagnitudeAdaptiveMeasurement(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagMagnitudeAdaptiveMeasurementResponse(_c.Field):
     """Magnetometer magnitude error adaptive measurement (response) (set 0x0D, descriptor 0xB4,
@@ -1412,6 +1467,7 @@ class MagMagnitudeAdaptiveMeasurementResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagDipAngleAdaptiveMeasurement(_c.Field):
     """Magnetometer dip angle error adaptive measurement (set 0x0D, descriptor 0x46, command).
@@ -1449,6 +1505,7 @@ class MagDipAngleAdaptiveMeasurement(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagDipAngleAdaptiveMeasurementResponse(_c.Field):
     """Magnetometer dip angle error adaptive measurement (response) (set 0x0D, descriptor 0xB5,
@@ -1481,6 +1538,7 @@ class MagDipAngleAdaptiveMeasurementResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AltitudeAidingControl(_c.Field):
     """Altitude aiding control (set 0x0D, descriptor 0x47, command).
@@ -1509,6 +1567,7 @@ class AltitudeAidingControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AltitudeAidingControlResponse(_c.Field):
     """Altitude aiding control (response) (set 0x0D, descriptor 0xB7, response).
@@ -1528,6 +1587,7 @@ class AltitudeAidingControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.AltitudeAidingSource, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class PitchRollAidingControl(_c.Field):
     """Pitch/roll aiding control (set 0x0D, descriptor 0x4B, command).
@@ -1555,6 +1615,7 @@ class PitchRollAidingControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PitchRollAidingControlResponse(_c.Field):
     """Pitch/roll aiding control (response) (set 0x0D, descriptor 0xBB, response).
@@ -1574,6 +1635,7 @@ class PitchRollAidingControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.PitchRollAidingSource, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class InclinationSource(_c.Field):
     """Inclination source (set 0x0D, descriptor 0x4C, command).
@@ -1603,6 +1665,7 @@ class InclinationSource(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class InclinationSourceResponse(_c.Field):
     """Inclination source (response) (set 0x0D, descriptor 0xBC, response).
@@ -1623,6 +1686,7 @@ class InclinationSourceResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.MagneticParamSource, "u8")), _c.P("inclination", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagneticFieldMagnitudeSource(_c.Field):
     """Magnetic field magnitude source (set 0x0D, descriptor 0x4D, command).
@@ -1653,6 +1717,7 @@ class MagneticFieldMagnitudeSource(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagneticFieldMagnitudeSourceResponse(_c.Field):
     """Magnetic field magnitude source (response) (set 0x0D, descriptor 0xBD, response).
@@ -1673,6 +1738,7 @@ class MagneticFieldMagnitudeSourceResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.MagneticParamSource, "u8")), _c.P("magnitude", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AidingMeasurementControl(_c.Field):
     """Aiding measurement control (set 0x0D, descriptor 0x50, command).
@@ -1705,6 +1771,7 @@ class AidingMeasurementControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AidingMeasurementControlResponse(_c.Field):
     """Aiding measurement control (response) (set 0x0D, descriptor 0xD0, response).
@@ -1726,6 +1793,7 @@ class AidingMeasurementControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.AidingMeasurementSource, "u16")), _c.P("enable", _c.BOOL)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class InitializationConfiguration(_c.Field):
     """Navigation filter initialization (set 0x0D, descriptor 0x52, command).
@@ -1788,6 +1856,7 @@ class InitializationConfiguration(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class InitializationConfigurationResponse(_c.Field):
     """Navigation filter initialization (response) (set 0x0D, descriptor 0xD2, response).
@@ -1842,6 +1911,7 @@ class InitializationConfigurationResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AdaptiveFilterControl(_c.Field):
     """Adaptive filter control (set 0x0D, descriptor 0x53, command).
@@ -1871,6 +1941,7 @@ class AdaptiveFilterControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AdaptiveFilterControlResponse(_c.Field):
     """Adaptive filter control (response) (set 0x0D, descriptor 0xD3, response).
@@ -1891,6 +1962,7 @@ class AdaptiveFilterControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("level", _c.enum(_t.AdaptiveFilterLevel, "u8")), _c.P("time_limit", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MultiAntennaOffset(_c.Field):
     """GNSS multi-antenna offset (set 0x0D, descriptor 0x54, command).
@@ -1919,6 +1991,7 @@ class MultiAntennaOffset(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MultiAntennaOffsetResponse(_c.Field):
     """GNSS multi-antenna offset (response) (set 0x0D, descriptor 0xD4, response).
@@ -1940,6 +2013,7 @@ class MultiAntennaOffsetResponse(_c.Field):
     _OPS = (_c.Run(_c.P("receiver_id", _c.U8), _c.P("antenna_offset", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class RelativePositionConfiguration(_c.Field):
     """Relative position configuration (set 0x0D, descriptor 0x55, command).
@@ -1973,6 +2047,7 @@ class RelativePositionConfiguration(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class RelativePositionConfigurationResponse(_c.Field):
     """Relative position configuration (response) (set 0x0D, descriptor 0xD5, response).
@@ -2003,6 +2078,7 @@ class RelativePositionConfigurationResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ReferencePointLeverArm(_c.Field):
     """Reference point lever arm (set 0x0D, descriptor 0x56, command).
@@ -2033,6 +2109,7 @@ class ReferencePointLeverArm(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ReferencePointLeverArmResponse(_c.Field):
     """Reference point lever arm (response) (set 0x0D, descriptor 0xD6, response).
@@ -2056,6 +2133,7 @@ class ReferencePointLeverArmResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SpeedLeverArm(_c.Field):
     """Measurement speed lever arm (set 0x0D, descriptor 0x61, command).
@@ -2083,6 +2161,7 @@ class SpeedLeverArm(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SpeedLeverArmResponse(_c.Field):
     """Measurement speed lever arm (response) (set 0x0D, descriptor 0xE1, response).
@@ -2104,6 +2183,7 @@ class SpeedLeverArmResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.U8), _c.P("lever_arm_offset", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class WheeledVehicleConstraintControl(_c.Field):
     """Wheeled vehicle constraint control (set 0x0D, descriptor 0x63, command).
@@ -2131,6 +2211,7 @@ class WheeledVehicleConstraintControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class WheeledVehicleConstraintControlResponse(_c.Field):
     """Wheeled vehicle constraint control (response) (set 0x0D, descriptor 0xE3, response).
@@ -2150,6 +2231,7 @@ class WheeledVehicleConstraintControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAntennaCalibrationControl(_c.Field):
     """GNSS antenna offset calibration control (set 0x0D, descriptor 0x64, command).
@@ -2180,6 +2262,7 @@ class GnssAntennaCalibrationControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAntennaCalibrationControlResponse(_c.Field):
     """GNSS antenna offset calibration control (response) (set 0x0D, descriptor 0xE4, response).

@@ -14,6 +14,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """LLH position (set 0x82, descriptor 0x01, data).
@@ -44,6 +45,7 @@ class LlhPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocity(_c.Field):
     """NED velocity (set 0x82, descriptor 0x02, data).
@@ -73,6 +75,7 @@ class NedVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AttitudeQuaternion(_c.Field):
     """Attitude quaternion (set 0x82, descriptor 0x03, data).
@@ -95,6 +98,7 @@ class AttitudeQuaternion(_c.Field):
     _OPS = (_c.Run(_c.P("q", _c.F32, 4), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AttitudeDcm(_c.Field):
     """Attitude direction cosine matrix (set 0x82, descriptor 0x04, data).
@@ -118,6 +122,7 @@ class AttitudeDcm(_c.Field):
     _OPS = (_c.Run(_c.P("dcm", _c.F32, 9), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EulerAngles(_c.Field):
     """Euler angles (set 0x82, descriptor 0x05, data).
@@ -148,6 +153,7 @@ class EulerAngles(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBias(_c.Field):
     """Gyro bias (set 0x82, descriptor 0x06, data).
@@ -168,6 +174,7 @@ class GyroBias(_c.Field):
     _OPS = (_c.Run(_c.P("bias", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBias(_c.Field):
     """Accel bias (set 0x82, descriptor 0x07, data).
@@ -188,6 +195,7 @@ class AccelBias(_c.Field):
     _OPS = (_c.Run(_c.P("bias", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPositionUncertainty(_c.Field):
     """LLH position uncertainty (set 0x82, descriptor 0x08, data).
@@ -217,6 +225,7 @@ class LlhPositionUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocityUncertainty(_c.Field):
     """NED velocity uncertainty (set 0x82, descriptor 0x09, data).
@@ -246,6 +255,7 @@ class NedVelocityUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EulerAnglesUncertainty(_c.Field):
     """Euler angles uncertainty (set 0x82, descriptor 0x0A, data).
@@ -276,6 +286,7 @@ class EulerAnglesUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBiasUncertainty(_c.Field):
     """Gyro bias uncertainty (set 0x82, descriptor 0x0B, data).
@@ -297,6 +308,7 @@ class GyroBiasUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("bias_uncertainty", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBiasUncertainty(_c.Field):
     """Accel bias uncertainty (set 0x82, descriptor 0x0C, data).
@@ -318,6 +330,7 @@ class AccelBiasUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("bias_uncertainty", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class LinearAccel(_c.Field):
     """Linear acceleration (set 0x82, descriptor 0x0D, data).
@@ -339,6 +352,7 @@ class LinearAccel(_c.Field):
     _OPS = (_c.Run(_c.P("accel", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CompAngularRate(_c.Field):
     """Compensated angular rate (set 0x82, descriptor 0x0E, data).
@@ -360,6 +374,7 @@ class CompAngularRate(_c.Field):
     _OPS = (_c.Run(_c.P("gyro", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class Wgs84GravityMagnitude(_c.Field):
     """WGS84 local gravity magnitude (set 0x82, descriptor 0x0F, data).
@@ -381,6 +396,7 @@ class Wgs84GravityMagnitude(_c.Field):
     _OPS = (_c.Run(_c.P("gravity_magnitude", _c.F32), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterStatus_gx5_45(_c.Field):
     """Filter status (set 0x82, descriptor 0x10, data), device gx5_45.
@@ -412,6 +428,7 @@ class FilterStatus_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterStatus_cv7_ins(_c.Field):
     """Filter status (set 0x82, descriptor 0x10, data), device cv7_ins.
@@ -441,6 +458,7 @@ class FilterStatus_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTimestamp(_c.Field):
     """GPS timestamp (set 0x82, descriptor 0x11, data).
@@ -467,6 +485,7 @@ class GpsTimestamp(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class QuaternionAttitudeUncertainty(_c.Field):
     """Quaternion attitude uncertainty (set 0x82, descriptor 0x12, data).
@@ -488,6 +507,7 @@ class QuaternionAttitudeUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("q", _c.F32, 4), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GravityVector(_c.Field):
     """Gravity vector (set 0x82, descriptor 0x13, data).
@@ -509,6 +529,7 @@ class GravityVector(_c.Field):
     _OPS = (_c.Run(_c.P("gravity", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class HeadingUpdateState(_c.Field):
     """Heading update source state (set 0x82, descriptor 0x14, data).
@@ -541,6 +562,7 @@ class HeadingUpdateState(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagneticModel(_c.Field):
     """Magnetic model solution (set 0x82, descriptor 0x15, data).
@@ -576,6 +598,7 @@ class MagneticModel(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroScaleFactor(_c.Field):
     """Gyro scale factor (set 0x82, descriptor 0x16, data).
@@ -597,6 +620,7 @@ class GyroScaleFactor(_c.Field):
     _OPS = (_c.Run(_c.P("scale_factor", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelScaleFactor(_c.Field):
     """Accelerometer scale factor (set 0x82, descriptor 0x17, data).
@@ -618,6 +642,7 @@ class AccelScaleFactor(_c.Field):
     _OPS = (_c.Run(_c.P("scale_factor", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroScaleFactorUncertainty(_c.Field):
     """Gyro scale factor uncertainty (set 0x82, descriptor 0x18, data).
@@ -641,6 +666,7 @@ class GyroScaleFactorUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelScaleFactorUncertainty(_c.Field):
     """Accelerometer scale factor uncertainty (set 0x82, descriptor 0x19, data).
@@ -664,6 +690,7 @@ class AccelScaleFactorUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class CompensatedAccel(_c.Field):
     """Compensated acceleration (set 0x82, descriptor 0x1C, data).
@@ -686,6 +713,7 @@ class CompensatedAccel(_c.Field):
     _OPS = (_c.Run(_c.P("accel", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class StandardAtmosphere(_c.Field):
     """Standard atmosphere model (set 0x82, descriptor 0x20, data).
@@ -720,6 +748,7 @@ class StandardAtmosphere(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PressureAltitude(_c.Field):
     """Pressure altitude (set 0x82, descriptor 0x21, data).
@@ -741,6 +770,7 @@ class PressureAltitude(_c.Field):
     _OPS = (_c.Run(_c.P("pressure_altitude", _c.F32), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagAutoHardIronOffset(_c.Field):
     """Magnetometer auto hard iron offset (set 0x82, descriptor 0x25, data).
@@ -762,6 +792,7 @@ class MagAutoHardIronOffset(_c.Field):
     _OPS = (_c.Run(_c.P("hard_iron_offset", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagAutoSoftIronMatrix(_c.Field):
     """Magnetometer auto soft iron matrix (set 0x82, descriptor 0x26, data).
@@ -784,6 +815,7 @@ class MagAutoSoftIronMatrix(_c.Field):
     _OPS = (_c.Run(_c.P("soft_iron_matrix", _c.F32, 9), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagAutoHardIronOffsetUncertainty(_c.Field):
     """Magnetometer auto hard iron offset uncertainty (set 0x82, descriptor 0x28, data).
@@ -809,6 +841,7 @@ class MagAutoHardIronOffsetUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagAutoSoftIronMatrixUncertainty(_c.Field):
     """Magnetometer auto soft iron matrix uncertainty (set 0x82, descriptor 0x29, data).
@@ -834,6 +867,7 @@ class MagAutoSoftIronMatrixUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAntennaOffsetCorrection(_c.Field):
     """GNSS antenna offset correction (set 0x82, descriptor 0x30, data).
@@ -855,6 +889,7 @@ class GnssAntennaOffsetCorrection(_c.Field):
     _OPS = (_c.Run(_c.P("offset", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAntennaOffsetCorrectionUncertainty(_c.Field):
     """GNSS antenna offset correction uncertainty (set 0x82, descriptor 0x31, data).
@@ -876,6 +911,7 @@ class GnssAntennaOffsetCorrectionUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("offset_uncertainty", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MultiAntennaOffsetCorrection(_c.Field):
     """Multi-antenna offset correction (set 0x82, descriptor 0x34, data).
@@ -904,6 +940,7 @@ class MultiAntennaOffsetCorrection(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MultiAntennaOffsetCorrectionUncertainty(_c.Field):
     """Multi-antenna offset correction uncertainty (set 0x82, descriptor 0x35, data).
@@ -932,6 +969,7 @@ class MultiAntennaOffsetCorrectionUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefPositionUncertainty(_c.Field):
     """ECEF position uncertainty (set 0x82, descriptor 0x36, data).
@@ -953,6 +991,7 @@ class EcefPositionUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("position_uncertainty", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefVelocityUncertainty(_c.Field):
     """ECEF velocity uncertainty (set 0x82, descriptor 0x37, data).
@@ -974,6 +1013,7 @@ class EcefVelocityUncertainty(_c.Field):
     _OPS = (_c.Run(_c.P("velocity_uncertainty", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefPosition(_c.Field):
     """ECEF position (set 0x82, descriptor 0x40, data).
@@ -994,6 +1034,7 @@ class EcefPosition(_c.Field):
     _OPS = (_c.Run(_c.P("position", _c.F64, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefVelocity(_c.Field):
     """ECEF velocity (set 0x82, descriptor 0x41, data).
@@ -1014,6 +1055,7 @@ class EcefVelocity(_c.Field):
     _OPS = (_c.Run(_c.P("velocity", _c.F32, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class NedRelativePosition(_c.Field):
     """NED relative position (set 0x82, descriptor 0x42, data).
@@ -1036,6 +1078,7 @@ class NedRelativePosition(_c.Field):
     _OPS = (_c.Run(_c.P("relative_position", _c.F64, 3), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssPositionAidingStatus(_c.Field):
     """GNSS position aiding status (set 0x82, descriptor 0x43, data).
@@ -1065,6 +1108,7 @@ class GnssPositionAidingStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AidingMeasurementSummary(_c.Field):
     """Aiding measurement summary (set 0x82, descriptor 0x46, data).
@@ -1097,6 +1141,7 @@ class AidingMeasurementSummary(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class OdometerScaleFactorError(_c.Field):
     """Odometer scale factor error (set 0x82, descriptor 0x47, data).
@@ -1118,6 +1163,7 @@ class OdometerScaleFactorError(_c.Field):
     _OPS = (_c.Run(_c.P("scale_factor_error", _c.F32), _c.P("valid_flags", _c.flags(_t.FilterOutputValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class OdometerScaleFactorErrorUncertainty(_c.Field):
     """Odometer scale factor error uncertainty (set 0x82, descriptor 0x48, data).
@@ -1142,6 +1188,7 @@ class OdometerScaleFactorErrorUncertainty(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssDualAntennaStatus(_c.Field):
     """GNSS dual antenna status (set 0x82, descriptor 0x49, data).
@@ -1176,6 +1223,7 @@ class GnssDualAntennaStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AidingFrameConfigError(_c.Field):
     """Aiding frame configuration error (set 0x82, descriptor 0x50, data).
@@ -1198,6 +1246,7 @@ class AidingFrameConfigError(_c.Field):
     _OPS = (_c.Run(_c.P("frame_id", _c.U8), _c.P("translation", _c.F32, 3), _c.P("attitude", _c.F32, 4)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AidingFrameConfigErrorUncertainty(_c.Field):
     """Aiding frame configuration error uncertainty (set 0x82, descriptor 0x51, data).

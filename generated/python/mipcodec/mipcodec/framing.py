@@ -6,6 +6,7 @@ the same for every protocol and follows docs/conformance.md sections 1 and 2.
 
 from __future__ import annotations
 
+import importlib
 import os
 from operator import mul
 from typing import TYPE_CHECKING, Any, Iterator, List, Tuple, Union
@@ -40,7 +41,7 @@ if TYPE_CHECKING:
 _speedups: Any = None
 if os.environ.get(PACKAGE.upper() + "_PURE", "") in ("", "0"):
     try:
-        from . import _speedups  # type: ignore[attr-defined, no-redef]
+        _speedups = importlib.import_module("._speedups", __package__)
     except ImportError:
         _speedups = None
 ACCELERATED = _speedups is not None

@@ -12,6 +12,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class ReceiverInfo(_c.Field):
     """Receiver info (set 0x0E, descriptor 0x01, command).
@@ -30,6 +31,7 @@ class ReceiverInfo(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class ReceiverInfoResponse(_c.Field):
     """Receiver info (response) (set 0x0E, descriptor 0x81, response).
@@ -54,6 +56,7 @@ class ReceiverInfoResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SignalConfiguration(_c.Field):
     """Signal configuration (set 0x0E, descriptor 0x02, command).
@@ -90,6 +93,7 @@ class SignalConfiguration(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SignalConfigurationResponse(_c.Field):
     """Signal configuration (response) (set 0x0E, descriptor 0x82, response).
@@ -121,6 +125,7 @@ class SignalConfigurationResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SpartnConfiguration(_c.Field):
     """SPARTN configuration (set 0x0E, descriptor 0x20, command).
@@ -177,6 +182,7 @@ class SpartnConfiguration(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SpartnConfigurationResponse(_c.Field):
     """SPARTN configuration (response) (set 0x0E, descriptor 0xA0, response).

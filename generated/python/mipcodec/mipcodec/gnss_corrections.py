@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class BaseStationInfo(_c.Field):
     """Base station information (set 0x93, descriptor 0x30, data).
@@ -50,6 +51,7 @@ class BaseStationInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class RtkCorrectionsStatus(_c.Field):
     """RTK corrections status (set 0x93, descriptor 0x31, data).

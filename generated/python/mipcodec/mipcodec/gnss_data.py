@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """LLH position (set 0x81, descriptor 0x03, data).
@@ -56,6 +57,7 @@ class LlhPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefPosition(_c.Field):
     """ECEF position (set 0x81, descriptor 0x04, data).
@@ -83,6 +85,7 @@ class EcefPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocity(_c.Field):
     """NED velocity (set 0x81, descriptor 0x05, data).
@@ -119,6 +122,7 @@ class NedVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefVelocity(_c.Field):
     """ECEF velocity (set 0x81, descriptor 0x06, data).
@@ -146,6 +150,7 @@ class EcefVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class Dop(_c.Field):
     """DOP data (set 0x81, descriptor 0x07, data).
@@ -183,6 +188,7 @@ class Dop(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class UtcTime(_c.Field):
     """UTC time (set 0x81, descriptor 0x08, data).
@@ -220,6 +226,7 @@ class UtcTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTime(_c.Field):
     """GPS time (set 0x81, descriptor 0x09, data).
@@ -245,6 +252,7 @@ class GpsTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ClockInfo(_c.Field):
     """Clock information (set 0x81, descriptor 0x0A, data).
@@ -274,6 +282,7 @@ class ClockInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FixInfo(_c.Field):
     """GNSS fix information (set 0x81, descriptor 0x0B, data).
@@ -303,6 +312,7 @@ class FixInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SvInfo(_c.Field):
     """Space vehicle information (set 0x81, descriptor 0x0C, data).
@@ -340,6 +350,7 @@ class SvInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HardwareStatus(_c.Field):
     """Hardware status (set 0x81, descriptor 0x0D, data).
@@ -371,6 +382,7 @@ class HardwareStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DgnssInfo(_c.Field):
     """DGNSS information (set 0x81, descriptor 0x0E, data).
@@ -404,6 +416,7 @@ class DgnssInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DgnssChannelStatus(_c.Field):
     """DGNSS channel status (set 0x81, descriptor 0x0F, data).

@@ -14,6 +14,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """GNSS LLH position (set 0x94, descriptor 0x03, data).
@@ -58,6 +59,7 @@ class LlhPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocity(_c.Field):
     """GNSS NED velocity (set 0x94, descriptor 0x05, data).
@@ -94,6 +96,7 @@ class NedVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class UtcTime(_c.Field):
     """GNSS UTC time (set 0x94, descriptor 0x08, data).
@@ -133,6 +136,7 @@ class UtcTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FixInfo(_c.Field):
     """GNSS fix information (set 0x94, descriptor 0x0B, data).
@@ -162,6 +166,7 @@ class FixInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SatelliteStatus(_c.Field):
     """Satellite status (set 0x94, descriptor 0x20, data).

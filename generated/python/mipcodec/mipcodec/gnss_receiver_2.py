@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """GNSS LLH position (set 0x92, descriptor 0x03, data).
@@ -57,6 +58,7 @@ class LlhPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefPosition(_c.Field):
     """GNSS ECEF position (set 0x92, descriptor 0x04, data).
@@ -84,6 +86,7 @@ class EcefPosition(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NedVelocity(_c.Field):
     """GNSS NED velocity (set 0x92, descriptor 0x05, data).
@@ -120,6 +123,7 @@ class NedVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EcefVelocity(_c.Field):
     """GNSS ECEF velocity (set 0x92, descriptor 0x06, data).
@@ -147,6 +151,7 @@ class EcefVelocity(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class Dop(_c.Field):
     """GNSS dilution of precision (set 0x92, descriptor 0x07, data).
@@ -185,6 +190,7 @@ class Dop(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class UtcTime(_c.Field):
     """GNSS UTC time (set 0x92, descriptor 0x08, data).
@@ -223,6 +229,7 @@ class UtcTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTime(_c.Field):
     """GNSS GPS time (set 0x92, descriptor 0x09, data).
@@ -248,6 +255,7 @@ class GpsTime(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FixInfo(_c.Field):
     """GNSS fix information (set 0x92, descriptor 0x0B, data).
@@ -278,6 +286,7 @@ class FixInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class HardwareStatus(_c.Field):
     """GNSS hardware status (set 0x92, descriptor 0x0D, data).
@@ -308,6 +317,7 @@ class HardwareStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ClockInfo2(_c.Field):
     """GNSS clock information 2 (set 0x92, descriptor 0x10, data).
@@ -339,6 +349,7 @@ class ClockInfo2(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsLeapSeconds(_c.Field):
     """GPS leap seconds (set 0x92, descriptor 0x11, data).
@@ -359,6 +370,7 @@ class GpsLeapSeconds(_c.Field):
     _OPS = (_c.Run(_c.P("leap_seconds", _c.U8), _c.P("valid_flags", _c.flags(_t.GnssLeapSecondsValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SbasInfo(_c.Field):
     """SBAS information (set 0x92, descriptor 0x12, data).
@@ -395,6 +407,7 @@ class SbasInfo(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SatelliteStatus(_c.Field):
     """Satellite status (set 0x92, descriptor 0x20, data).
@@ -447,6 +460,7 @@ class SatelliteStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class Raw(_c.Field):
     """Raw observation (set 0x92, descriptor 0x22, data).
@@ -529,6 +543,7 @@ class Raw(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsEphemeris(_c.Field):
     """GPS ephemeris (set 0x92, descriptor 0x61, data).
@@ -654,6 +669,7 @@ class GpsEphemeris(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GlonassEphemeris(_c.Field):
     """GLONASS ephemeris (set 0x92, descriptor 0x62, data).
@@ -752,6 +768,7 @@ class GlonassEphemeris(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GalileoEphemeris(_c.Field):
     """Galileo ephemeris (set 0x92, descriptor 0x63, data).
@@ -877,6 +894,7 @@ class GalileoEphemeris(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class BeidouEphemeris(_c.Field):
     """BeiDou ephemeris (set 0x92, descriptor 0x64, data).

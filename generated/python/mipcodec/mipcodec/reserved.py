@@ -9,6 +9,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class AckNack(_c.Field):
     """Ack/Nack (descriptor 0xF1 in every command set, ack).

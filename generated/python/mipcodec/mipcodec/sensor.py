@@ -12,6 +12,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledAccel(_c.Field):
     """Scaled accelerometer vector (set 0x80, descriptor 0x04, data).
@@ -32,6 +33,7 @@ class ScaledAccel(_c.Field):
     _OPS = (_c.Run(_c.P("scaled_accel", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledGyro(_c.Field):
     """Scaled gyro vector (set 0x80, descriptor 0x05, data).
@@ -51,6 +53,7 @@ class ScaledGyro(_c.Field):
     _OPS = (_c.Run(_c.P("scaled_gyro", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledMag(_c.Field):
     """Scaled magnetometer vector (set 0x80, descriptor 0x06, data).
@@ -70,6 +73,7 @@ class ScaledMag(_c.Field):
     _OPS = (_c.Run(_c.P("scaled_mag", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeltaTheta(_c.Field):
     """Delta theta vector (set 0x80, descriptor 0x07, data).
@@ -91,6 +95,7 @@ class DeltaTheta(_c.Field):
     _OPS = (_c.Run(_c.P("delta_theta", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeltaVelocity(_c.Field):
     """Delta velocity vector (set 0x80, descriptor 0x08, data).
@@ -113,6 +118,7 @@ class DeltaVelocity(_c.Field):
     _OPS = (_c.Run(_c.P("delta_velocity", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CfOrientationMatrix(_c.Field):
     """Complementary filter orientation matrix (set 0x80, descriptor 0x09, data).
@@ -134,6 +140,7 @@ class CfOrientationMatrix(_c.Field):
     _OPS = (_c.Run(_c.P("m", _c.F32, 9)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CfQuaternion(_c.Field):
     """Complementary filter quaternion (set 0x80, descriptor 0x0A, data).
@@ -155,6 +162,7 @@ class CfQuaternion(_c.Field):
     _OPS = (_c.Run(_c.P("q", _c.F32, 4)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CfEulerAngles(_c.Field):
     """Complementary filter Euler angles (set 0x80, descriptor 0x0C, data).
@@ -177,6 +185,7 @@ class CfEulerAngles(_c.Field):
     _OPS = (_c.Run(_c.P("roll", _c.F32), _c.P("pitch", _c.F32), _c.P("yaw", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CfStabilizedNorth(_c.Field):
     """Complementary filter stabilized north vector (set 0x80, descriptor 0x10, data).
@@ -199,6 +208,7 @@ class CfStabilizedNorth(_c.Field):
     _OPS = (_c.Run(_c.P("stabilized_north", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CfStabilizedUp(_c.Field):
     """Complementary filter stabilized up vector (set 0x80, descriptor 0x11, data).
@@ -221,6 +231,7 @@ class CfStabilizedUp(_c.Field):
     _OPS = (_c.Run(_c.P("stabilized_up", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTimestamp(_c.Field):
     """GPS timestamp of sensor data (GX5-45 GPS correlation timestamp) (set 0x80, descriptor 0x12,
@@ -251,6 +262,7 @@ class GpsTimestamp(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class TemperatureStatistics(_c.Field):
     """Temperature statistics (set 0x80, descriptor 0x14, data).
@@ -273,6 +285,7 @@ class TemperatureStatistics(_c.Field):
     _OPS = (_c.Run(_c.P("min_temp", _c.F32), _c.P("max_temp", _c.F32), _c.P("mean_temp", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledPressure(_c.Field):
     """Scaled ambient pressure (set 0x80, descriptor 0x17, data).
@@ -292,6 +305,7 @@ class ScaledPressure(_c.Field):
     _OPS = (_c.Run(_c.P("scaled_pressure", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class OverrangeStatus(_c.Field):
     """Over-range status (set 0x80, descriptor 0x18, data).
@@ -312,6 +326,7 @@ class OverrangeStatus(_c.Field):
     _OPS = (_c.Run(_c.P("status", _c.flags(_t.OverrangeStatusFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class OdometerData(_c.Field):
     """Odometer data (set 0x80, descriptor 0x40, data).

@@ -14,6 +14,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class EventSource(_c.Field):
     """Event source (set 0xFF, descriptor 0xD0, data).
@@ -35,6 +36,7 @@ class EventSource(_c.Field):
     _OPS = (_c.Run(_c.P("trigger_id", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsTimestamp(_c.Field):
     """GPS timestamp (set 0xFF, descriptor 0xD3, data).
@@ -65,6 +67,7 @@ class GpsTimestamp(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DeltaTime(_c.Field):
     """Delta time (set 0xFF, descriptor 0xD4, data).
@@ -86,6 +89,7 @@ class DeltaTime(_c.Field):
     _OPS = (_c.Run(_c.P("seconds", _c.F64)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ReferenceTimestamp(_c.Field):
     """Reference timestamp (set 0xFF, descriptor 0xD5, data).
@@ -106,6 +110,7 @@ class ReferenceTimestamp(_c.Field):
     _OPS = (_c.Run(_c.P("nanoseconds", _c.U64)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ReferenceTimeDelta(_c.Field):
     """Reference time delta (set 0xFF, descriptor 0xD6, data).
@@ -126,6 +131,7 @@ class ReferenceTimeDelta(_c.Field):
     _OPS = (_c.Run(_c.P("dt_nanos", _c.U64)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ExternalTimestamp(_c.Field):
     """External timestamp (set 0xFF, descriptor 0xD7, data).
@@ -148,6 +154,7 @@ class ExternalTimestamp(_c.Field):
     _OPS = (_c.Run(_c.P("nanoseconds", _c.U64), _c.P("valid_flags", _c.flags(_t.ExternalTimestampValidFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ExternalTimeDelta(_c.Field):
     """External time delta (set 0xFF, descriptor 0xD8, data).

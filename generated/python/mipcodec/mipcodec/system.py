@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class CommunicationMode(_c.Field):
     """Communication mode (set 0x7F, descriptor 0x10, command).
@@ -42,6 +43,7 @@ class CommunicationMode(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class CommunicationModeResponse(_c.Field):
     """Communication mode (response) (set 0x7F, descriptor 0x90, response).

@@ -11,6 +11,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class BuiltInTest(_c.Field):
     """Built-in test (streaming continuous BIT) (set 0xA0, descriptor 0x01, data).
@@ -33,6 +34,7 @@ class BuiltInTest(_c.Field):
     _OPS = (_c.Nested("result", _t.Cv7ContinuousBit),)
 
 
+@_c.slotted
 @_dc.dataclass
 class TimeSyncStatus(_c.Field):
     """Time sync status (set 0xA0, descriptor 0x02, data).
@@ -53,6 +55,7 @@ class TimeSyncStatus(_c.Field):
     _OPS = (_c.Run(_c.P("time_sync", _c.BOOL), _c.P("last_pps_rcvd", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpioState(_c.Field):
     """GPIO state (set 0xA0, descriptor 0x03, data).

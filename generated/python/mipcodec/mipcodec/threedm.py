@@ -12,6 +12,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class EventControl(_c.Field):
     """Event control (set 0x0C, descriptor 0x2B, command).
@@ -38,6 +39,7 @@ class EventControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventControlResponse(_c.Field):
     """Event control (response) (set 0x0C, descriptor 0xB5, response).
@@ -58,6 +60,7 @@ class EventControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("instance", _c.U8), _c.P("mode", _c.enum(_t.EventControlMode, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetEventTriggerStatus(_c.Field):
     """Get event trigger status (set 0x0C, descriptor 0x2C, command).
@@ -83,6 +86,7 @@ class GetEventTriggerStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventTriggerStatus(_c.Field):
     """Event trigger status (set 0x0C, descriptor 0xB6, response).
@@ -107,6 +111,7 @@ class EventTriggerStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GetEventActionStatus(_c.Field):
     """Get event action status (set 0x0C, descriptor 0x2D, command).
@@ -132,6 +137,7 @@ class GetEventActionStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventActionStatus(_c.Field):
     """Event action status (set 0x0C, descriptor 0xB7, response).
@@ -155,6 +161,7 @@ class EventActionStatus(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventTriggerConfig(_c.Field):
     """Event trigger configuration (set 0x0C, descriptor 0x2E, command).
@@ -184,6 +191,7 @@ class EventTriggerConfig(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventTriggerConfigResponse(_c.Field):
     """Event trigger configuration (response) (set 0x0C, descriptor 0xB8, response).
@@ -209,6 +217,7 @@ class EventTriggerConfigResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventActionConfig(_c.Field):
     """Event action configuration (set 0x0C, descriptor 0x2F, command).
@@ -240,6 +249,7 @@ class EventActionConfig(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class EventActionConfigResponse(_c.Field):
     """Event action configuration (response) (set 0x0C, descriptor 0xB9, response).
@@ -265,6 +275,7 @@ class EventActionConfigResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceStartupSettings_gx5_45(_c.Field):
     """Device startup settings (set 0x0C, descriptor 0x30, command), device gx5_45.
@@ -289,6 +300,7 @@ class DeviceStartupSettings_gx5_45(_c.Field):
     _OPS = (_c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceStartupSettings_cv7_ins(_c.Field):
     """Device startup settings (set 0x0C, descriptor 0x30, command), device cv7_ins.
@@ -312,6 +324,7 @@ class DeviceStartupSettings_cv7_ins(_c.Field):
     _OPS = (_c.Run(_c.P("function", _c.enum(_t.FunctionSelector, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleEuler(_c.Field):
     """Sensor-to-vehicle frame transformation (Euler) (set 0x0C, descriptor 0x31, command).
@@ -345,6 +358,7 @@ class SensorToVehicleEuler(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleEulerResponse(_c.Field):
     """Sensor-to-vehicle frame transformation (Euler) (response) (set 0x0C, descriptor 0xB1, response).
@@ -366,6 +380,7 @@ class SensorToVehicleEulerResponse(_c.Field):
     _OPS = (_c.Run(_c.P("roll", _c.F32), _c.P("pitch", _c.F32), _c.P("yaw", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleQuaternion(_c.Field):
     """Sensor-to-vehicle frame transformation (quaternion) (set 0x0C, descriptor 0x32, command).
@@ -393,6 +408,7 @@ class SensorToVehicleQuaternion(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleQuaternionResponse(_c.Field):
     """Sensor-to-vehicle frame transformation (quaternion) (response) (set 0x0C, descriptor 0xB2,
@@ -414,6 +430,7 @@ class SensorToVehicleQuaternionResponse(_c.Field):
     _OPS = (_c.Run(_c.P("q", _c.F32, 4)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleDcm(_c.Field):
     """Sensor-to-vehicle frame transformation (direction cosine matrix) (set 0x0C, descriptor 0x33,
@@ -442,6 +459,7 @@ class SensorToVehicleDcm(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorToVehicleDcmResponse(_c.Field):
     """Sensor-to-vehicle frame transformation (DCM) (response) (set 0x0C, descriptor 0xB3, response).
@@ -461,6 +479,7 @@ class SensorToVehicleDcmResponse(_c.Field):
     _OPS = (_c.Run(_c.P("dcm", _c.F32, 9)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBias_gx5_45(_c.Field):
     """Accelerometer bias (set 0x0C, descriptor 0x37, command), device gx5_45.
@@ -488,6 +507,7 @@ class AccelBias_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBias_cv7_ins(_c.Field):
     """Accelerometer bias (set 0x0C, descriptor 0x37, command), device cv7_ins.
@@ -515,6 +535,7 @@ class AccelBias_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelBiasResponse(_c.Field):
     """Accelerometer bias (response) (set 0x0C, descriptor 0x9A, response).
@@ -535,6 +556,7 @@ class AccelBiasResponse(_c.Field):
     _OPS = (_c.Run(_c.P("bias", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBias_gx5_45(_c.Field):
     """Gyro bias (set 0x0C, descriptor 0x38, command), device gx5_45.
@@ -561,6 +583,7 @@ class GyroBias_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBias_cv7_ins(_c.Field):
     """Gyro bias (set 0x0C, descriptor 0x38, command), device cv7_ins.
@@ -587,6 +610,7 @@ class GyroBias_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroBiasResponse(_c.Field):
     """Gyro bias (response) (set 0x0C, descriptor 0x9B, response).
@@ -609,6 +633,7 @@ class GyroBiasResponse(_c.Field):
     _OPS = (_c.Run(_c.P("bias", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CaptureGyroBias(_c.Field):
     """Capture gyro bias (set 0x0C, descriptor 0x39, command).
@@ -631,6 +656,7 @@ class CaptureGyroBias(_c.Field):
     _OPS = (_c.Run(_c.P("averaging_time_ms", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagHardIronOffset_gx5_45(_c.Field):
     """Magnetometer hard iron offset (set 0x0C, descriptor 0x3A, command), device gx5_45.
@@ -659,6 +685,7 @@ class MagHardIronOffset_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagHardIronOffset_cv7_ins(_c.Field):
     """Magnetometer hard iron offset (set 0x0C, descriptor 0x3A, command), device cv7_ins.
@@ -688,6 +715,7 @@ class MagHardIronOffset_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagHardIronOffsetResponse(_c.Field):
     """Magnetometer hard iron offset (response) (set 0x0C, descriptor 0x9C, response).
@@ -708,6 +736,7 @@ class MagHardIronOffsetResponse(_c.Field):
     _OPS = (_c.Run(_c.P("offset", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class MagSoftIronMatrix_gx5_45(_c.Field):
     """Magnetometer soft iron matrix (set 0x0C, descriptor 0x3B, command), device gx5_45.
@@ -736,6 +765,7 @@ class MagSoftIronMatrix_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagSoftIronMatrix_cv7_ins(_c.Field):
     """Magnetometer soft iron matrix (set 0x0C, descriptor 0x3B, command), device cv7_ins.
@@ -763,6 +793,7 @@ class MagSoftIronMatrix_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MagSoftIronMatrixResponse(_c.Field):
     """Magnetometer soft iron matrix (response) (set 0x0C, descriptor 0x9D, response).
@@ -783,6 +814,7 @@ class MagSoftIronMatrixResponse(_c.Field):
     _OPS = (_c.Run(_c.P("matrix", _c.F32, 9)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ConingScullingEnable(_c.Field):
     """Coning and sculling enable (set 0x0C, descriptor 0x3E, command).
@@ -809,6 +841,7 @@ class ConingScullingEnable(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ConingScullingEnableResponse(_c.Field):
     """Coning and sculling enable (response) (set 0x0C, descriptor 0x9E, response).
@@ -828,6 +861,7 @@ class ConingScullingEnableResponse(_c.Field):
     _OPS = (_c.Run(_c.P("enable", _c.BOOL)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class UartBaudrate(_c.Field):
     """UART baud rate (set 0x0C, descriptor 0x40, command).
@@ -855,6 +889,7 @@ class UartBaudrate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class UartBaudrateResponse(_c.Field):
     """UART baud rate (response) (set 0x0C, descriptor 0x87, response).
@@ -874,6 +909,7 @@ class UartBaudrateResponse(_c.Field):
     _OPS = (_c.Run(_c.P("baud", _c.U32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpioConfig(_c.Field):
     """GPIO configuration (set 0x0C, descriptor 0x41, command).
@@ -917,6 +953,7 @@ class GpioConfig(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpioConfigResponse(_c.Field):
     """GPIO configuration (response) (set 0x0C, descriptor 0xC1, response).
@@ -953,6 +990,7 @@ class GpioConfigResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpioState(_c.Field):
     """GPIO state (set 0x0C, descriptor 0x42, command).
@@ -980,6 +1018,7 @@ class GpioState(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GpioStateResponse(_c.Field):
     """GPIO state (response) (set 0x0C, descriptor 0xC2, response).
@@ -1000,6 +1039,7 @@ class GpioStateResponse(_c.Field):
     _OPS = (_c.Run(_c.P("pin", _c.U8), _c.P("state", _c.BOOL)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class OdometerConfig(_c.Field):
     """Odometer configuration (set 0x0C, descriptor 0x43, command).
@@ -1033,6 +1073,7 @@ class OdometerConfig(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class OdometerConfigResponse(_c.Field):
     """Odometer configuration (response) (set 0x0C, descriptor 0xC3, response).
@@ -1054,6 +1095,7 @@ class OdometerConfigResponse(_c.Field):
     _OPS = (_c.Run(_c.P("mode", _c.enum(_t.OdometerMode, "u8")), _c.P("scaling", _c.F32), _c.P("uncertainty", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AdvancedLowpassFilter(_c.Field):
     """Advanced low-pass filter settings (set 0x0C, descriptor 0x50, command).
@@ -1091,6 +1133,7 @@ class AdvancedLowpassFilter(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AdvancedLowpassFilterResponse(_c.Field):
     """Advanced low-pass filter settings (response) (set 0x0C, descriptor 0x8B, response).
@@ -1122,6 +1165,7 @@ class AdvancedLowpassFilterResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ComplementaryFilter(_c.Field):
     """Complementary filter settings (set 0x0C, descriptor 0x51, command).
@@ -1158,6 +1202,7 @@ class ComplementaryFilter(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ComplementaryFilterResponse(_c.Field):
     """Complementary filter settings (response) (set 0x0C, descriptor 0x97, response).
@@ -1187,6 +1232,7 @@ class ComplementaryFilterResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorRange(_c.Field):
     """Sensor range (set 0x0C, descriptor 0x52, command).
@@ -1215,6 +1261,7 @@ class SensorRange(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SensorRangeResponse(_c.Field):
     """Sensor range (response) (set 0x0C, descriptor 0xD2, response).
@@ -1235,6 +1282,7 @@ class SensorRangeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("sensor", _c.enum(_t.SensorRangeType, "u8")), _c.P("setting", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetCalibratedSensorRanges(_c.Field):
     """Get calibrated sensor ranges (set 0x0C, descriptor 0x53, command).
@@ -1255,6 +1303,7 @@ class GetCalibratedSensorRanges(_c.Field):
     _OPS = (_c.Run(_c.P("sensor", _c.enum(_t.SensorRangeType, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CalibratedSensorRanges(_c.Field):
     """Calibrated sensor ranges (set 0x0C, descriptor 0xD3, response).
@@ -1280,6 +1329,7 @@ class CalibratedSensorRanges(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class LowpassFilter(_c.Field):
     """Low-pass anti-aliasing filter (set 0x0C, descriptor 0x54, command).
@@ -1318,6 +1368,7 @@ class LowpassFilter(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class LowpassFilterResponse(_c.Field):
     """Low-pass anti-aliasing filter (response) (set 0x0C, descriptor 0xD4, response).
@@ -1349,6 +1400,7 @@ class LowpassFilterResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PollImuData(_c.Field):
     """Poll IMU data (set 0x0C, descriptor 0x01, command).
@@ -1374,6 +1426,7 @@ class PollImuData(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PollGnssData(_c.Field):
     """Poll GNSS data (set 0x0C, descriptor 0x02, command).
@@ -1399,6 +1452,7 @@ class PollGnssData(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PollFilterData(_c.Field):
     """Poll estimation filter data (set 0x0C, descriptor 0x03, command).
@@ -1424,6 +1478,7 @@ class PollFilterData(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PollNmeaData(_c.Field):
     """Poll NMEA data (set 0x0C, descriptor 0x04, command).
@@ -1449,6 +1504,7 @@ class PollNmeaData(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PollData(_c.Field):
     """Poll data (set 0x0C, descriptor 0x0D, command).
@@ -1476,6 +1532,7 @@ class PollData(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GetImuBaseRate(_c.Field):
     """Get IMU data base rate (set 0x0C, descriptor 0x06, command).
@@ -1493,6 +1550,7 @@ class GetImuBaseRate(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class ImuBaseRate(_c.Field):
     """IMU data base rate (set 0x0C, descriptor 0x83, response).
@@ -1512,6 +1570,7 @@ class ImuBaseRate(_c.Field):
     _OPS = (_c.Run(_c.P("rate", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetGnssBaseRate(_c.Field):
     """Get GNSS data base rate (set 0x0C, descriptor 0x07, command).
@@ -1529,6 +1588,7 @@ class GetGnssBaseRate(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssBaseRate(_c.Field):
     """GNSS data base rate (set 0x0C, descriptor 0x84, response).
@@ -1548,6 +1608,7 @@ class GnssBaseRate(_c.Field):
     _OPS = (_c.Run(_c.P("rate", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetFilterBaseRate(_c.Field):
     """Get estimation filter data base rate (set 0x0C, descriptor 0x0B, command).
@@ -1565,6 +1626,7 @@ class GetFilterBaseRate(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterBaseRate(_c.Field):
     """Estimation filter data base rate (set 0x0C, descriptor 0x8A, response).
@@ -1584,6 +1646,7 @@ class FilterBaseRate(_c.Field):
     _OPS = (_c.Run(_c.P("rate", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetBaseRate(_c.Field):
     """Get data base rate (set 0x0C, descriptor 0x0E, command).
@@ -1604,6 +1667,7 @@ class GetBaseRate(_c.Field):
     _OPS = (_c.Run(_c.P("desc_set", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class BaseRate(_c.Field):
     """Data base rate (set 0x0C, descriptor 0x8E, response).
@@ -1624,6 +1688,7 @@ class BaseRate(_c.Field):
     _OPS = (_c.Run(_c.P("desc_set", _c.U8), _c.P("rate", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ImuMessageFormat(_c.Field):
     """IMU message format (set 0x0C, descriptor 0x08, command).
@@ -1655,6 +1720,7 @@ class ImuMessageFormat(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class ImuMessageFormatResponse(_c.Field):
     """Current IMU message format (set 0x0C, descriptor 0x80, response).
@@ -1679,6 +1745,7 @@ class ImuMessageFormatResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssMessageFormat(_c.Field):
     """GNSS message format (set 0x0C, descriptor 0x09, command).
@@ -1710,6 +1777,7 @@ class GnssMessageFormat(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssMessageFormatResponse(_c.Field):
     """Current GNSS message format (set 0x0C, descriptor 0x81, response).
@@ -1734,6 +1802,7 @@ class GnssMessageFormatResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterMessageFormat(_c.Field):
     """Estimation filter message format (set 0x0C, descriptor 0x0A, command).
@@ -1765,6 +1834,7 @@ class FilterMessageFormat(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterMessageFormatResponse(_c.Field):
     """Current estimation filter message format (set 0x0C, descriptor 0x82, response).
@@ -1789,6 +1859,7 @@ class FilterMessageFormatResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NmeaMessageFormat(_c.Field):
     """NMEA message format (set 0x0C, descriptor 0x0C, command).
@@ -1818,6 +1889,7 @@ class NmeaMessageFormat(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class NmeaMessageFormatResponse(_c.Field):
     """Current NMEA message format (set 0x0C, descriptor 0x8C, response).
@@ -1842,6 +1914,7 @@ class NmeaMessageFormatResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MessageFormat(_c.Field):
     """Message format (set 0x0C, descriptor 0x0F, command).
@@ -1872,6 +1945,7 @@ class MessageFormat(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class MessageFormatResponse(_c.Field):
     """Current message format (set 0x0C, descriptor 0x8F, response).
@@ -1897,6 +1971,7 @@ class MessageFormatResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FactoryStreaming(_c.Field):
     """Factory streaming (set 0x0C, descriptor 0x10, command).
@@ -1918,6 +1993,7 @@ class FactoryStreaming(_c.Field):
     _OPS = (_c.Run(_c.P("action", _c.enum(_t.FactoryStreamingAction, "u8")), _c.P("reserved", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DataStreamControl_gx5_45(_c.Field):
     """Data stream control (set 0x0C, descriptor 0x11, command), device gx5_45.
@@ -1951,6 +2027,7 @@ class DataStreamControl_gx5_45(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DataStreamControl_cv7_ins(_c.Field):
     """Data stream control (set 0x0C, descriptor 0x11, command), device cv7_ins.
@@ -1979,6 +2056,7 @@ class DataStreamControl_cv7_ins(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DataStreamControlResponse_gx5_45(_c.Field):
     """Data stream control (response) (set 0x0C, descriptor 0x85, response), device gx5_45.
@@ -2000,6 +2078,7 @@ class DataStreamControlResponse_gx5_45(_c.Field):
     _OPS = (_c.Run(_c.P("device_selector", _c.enum(_t.Gx5StreamSelector, "u8")), _c.P("enabled", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DataStreamControlResponse_cv7_ins(_c.Field):
     """Data stream control (response) (set 0x0C, descriptor 0x85, response), device cv7_ins.
@@ -2021,6 +2100,7 @@ class DataStreamControlResponse_cv7_ins(_c.Field):
     _OPS = (_c.Run(_c.P("desc_set", _c.U8), _c.P("enabled", _c.BOOL)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class RawRtcmMessage(_c.Field):
     """Raw RTCM 2.3 message (set 0x0C, descriptor 0x20, command).
@@ -2042,6 +2122,7 @@ class RawRtcmMessage(_c.Field):
     _OPS = (_c.Remaining("data", _c.U8, maximum=253),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssConstellationSettings(_c.Field):
     """GNSS constellation settings (set 0x0C, descriptor 0x21, command).
@@ -2077,6 +2158,7 @@ class GnssConstellationSettings(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssConstellationSettingsResponse(_c.Field):
     """GNSS constellation settings (response) (set 0x0C, descriptor 0xA0, response).
@@ -2103,6 +2185,7 @@ class GnssConstellationSettingsResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssSbasSettings(_c.Field):
     """GNSS SBAS settings (set 0x0C, descriptor 0x22, command).
@@ -2136,6 +2219,7 @@ class GnssSbasSettings(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssSbasSettingsResponse(_c.Field):
     """GNSS SBAS settings (response) (set 0x0C, descriptor 0xA1, response).
@@ -2163,6 +2247,7 @@ class GnssSbasSettingsResponse(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAssistedFixControl(_c.Field):
     """GNSS assisted fix control (set 0x0C, descriptor 0x23, command).
@@ -2192,6 +2277,7 @@ class GnssAssistedFixControl(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAssistedFixControlResponse(_c.Field):
     """GNSS assisted fix control (response) (set 0x0C, descriptor 0xA2, response).
@@ -2212,6 +2298,7 @@ class GnssAssistedFixControlResponse(_c.Field):
     _OPS = (_c.Run(_c.P("option", _c.enum(_t.AssistedFixOption, "u8")), _c.P("flags", _c.U8)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAssistTimeUpdate(_c.Field):
     """GNSS assist time update (set 0x0C, descriptor 0x24, command).
@@ -2241,6 +2328,7 @@ class GnssAssistTimeUpdate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GnssAssistTimeUpdateResponse(_c.Field):
     """GNSS assist time update (response) (set 0x0C, descriptor 0xA3, response).
@@ -2262,6 +2350,7 @@ class GnssAssistTimeUpdateResponse(_c.Field):
     _OPS = (_c.Run(_c.P("tow", _c.F64), _c.P("week_number", _c.U16), _c.P("accuracy", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class PpsSource(_c.Field):
     """PPS source control (set 0x0C, descriptor 0x28, command).
@@ -2287,6 +2376,7 @@ class PpsSource(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PpsSourceResponse(_c.Field):
     """PPS source (response) (set 0x0C, descriptor 0xA8, response).
@@ -2306,6 +2396,7 @@ class PpsSourceResponse(_c.Field):
     _OPS = (_c.Run(_c.P("source", _c.enum(_t.PpsSource, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetSupportedEvents(_c.Field):
     """Get supported events (set 0x0C, descriptor 0x2A, command).
@@ -2326,6 +2417,7 @@ class GetSupportedEvents(_c.Field):
     _OPS = (_c.Run(_c.P("query", _c.enum(_t.SupportedEventsQuery, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SupportedEvents(_c.Field):
     """Supported events (set 0x0C, descriptor 0xB4, response).
@@ -2349,6 +2441,7 @@ class SupportedEvents(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceStatus(_c.Field):
     """Device status (set 0x0C, descriptor 0x64, command).
@@ -2372,6 +2465,7 @@ class DeviceStatus(_c.Field):
     _OPS = (_c.Run(_c.P("model_number", _c.U16), _c.P("status_selector", _c.enum(_t.DeviceStatusSelector, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceStatusResponse(_c.Field):
     """Device status (response) (set 0x0C, descriptor 0x90, response).

@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class Ping(_c.Field):
     """Ping (set 0x01, descriptor 0x02, command).
@@ -31,6 +32,7 @@ class Ping(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceMessages(_c.Field):
     """Get device messages (set 0x01, descriptor 0x03, command).
@@ -49,6 +51,7 @@ class GetDeviceMessages(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceMessages(_c.Field):
     """Device messages (set 0x01, descriptor 0x83, response).
@@ -69,6 +72,7 @@ class DeviceMessages(_c.Field):
     _OPS = (_c.Remaining("messages", _t.MessageId, maximum=126),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceReset(_c.Field):
     """Device reset (set 0x01, descriptor 0x04, command).
@@ -87,6 +91,7 @@ class DeviceReset(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceModel(_c.Field):
     """Get device model (set 0x01, descriptor 0x05, command).
@@ -105,6 +110,7 @@ class GetDeviceModel(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceModel(_c.Field):
     """Device model (set 0x01, descriptor 0x85, response).
@@ -124,6 +130,7 @@ class DeviceModel(_c.Field):
     _OPS = (_c.Run(_c.P("model", _c.string(16))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceSn(_c.Field):
     """Get device serial number (set 0x01, descriptor 0x06, command).
@@ -142,6 +149,7 @@ class GetDeviceSn(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceSn(_c.Field):
     """Device serial number (set 0x01, descriptor 0x86, response).
@@ -161,6 +169,7 @@ class DeviceSn(_c.Field):
     _OPS = (_c.Run(_c.P("serial_number", _c.string(16))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceFw(_c.Field):
     """Get device firmware (set 0x01, descriptor 0x07, command).
@@ -179,6 +188,7 @@ class GetDeviceFw(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceFw(_c.Field):
     """Device firmware revision (set 0x01, descriptor 0x87, response).
@@ -198,6 +208,7 @@ class DeviceFw(_c.Field):
     _OPS = (_c.Run(_c.P("firmware", _c.string(16))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetDeviceCal(_c.Field):
     """Get device calibration date (set 0x01, descriptor 0x08, command).
@@ -216,6 +227,7 @@ class GetDeviceCal(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class DeviceCal(_c.Field):
     """Device calibration date (set 0x01, descriptor 0x88, response).
@@ -235,6 +247,7 @@ class DeviceCal(_c.Field):
     _OPS = (_c.Run(_c.P("date", _c.string(16))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class CorrelateGpsTime(_c.Field):
     """Correlate GPS time (set 0x01, descriptor 0x09, command).

@@ -982,6 +982,8 @@ def _getter(attrs: Tuple[str, ...]) -> Callable[[Any], Tuple[Any, ...]]:
 class Layout:
     """Base of generated dataclasses: decode/encode per the `_OPS`, canonical JSON in and out."""
 
+    __slots__ = ()  # subclasses keep a __dict__ unless they declare slots (see `slotted`)
+
     _OPS: Tuple[Any, ...] = ()
     _ATTRS: Tuple[str, ...] = ()
     _NAMES: Tuple[str, ...] = ()
@@ -1083,12 +1085,32 @@ class Struct(Layout):
 class Field(Layout):
     """Base of generated commands, responses, data fields and reserved fields."""
 
+    __slots__ = ()
+
     SET: Optional[int] = None
     DESCRIPTOR = 0
     NAME = ""
     ROLE = ""
     DEVICE: Optional[str] = None
     APPLIES_TO: Optional[str] = None
+
+
+def slotted(cls: Type[_L]) -> Type[_L]:
+    """The dataclass `cls` made again with a slot per field and no instance __dict__, as
+    dataclass(slots=True) of Python 3.10 makes it (here for every supported version): smaller
+    instances, faster attribute access, and values the C accelerator stores without a lookup.
+    Fields, equality, repr, pickling and copying are those of the dataclass."""
+    import dataclasses
+
+    klass: Any = cls
+    names = tuple(f.name for f in dataclasses.fields(klass))
+    namespace = dict(klass.__dict__)
+    for name in names + ("__dict__", "__weakref__"):
+        namespace.pop(name, None)
+    namespace["__slots__"] = names
+    new: Type[_L] = type(klass)(klass.__name__, klass.__bases__, namespace)
+    new.__qualname__ = klass.__qualname__
+    return new
 
 
 def fast_items(cls: Type[Layout]) -> Optional[Tuple[Tuple[str, str, int, int, Any], ...]]:

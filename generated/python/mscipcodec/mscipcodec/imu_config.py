@@ -13,6 +13,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class UartBaudRate(_c.Field):
     """UART baud rate configure (set 0x02, descriptor 0x01, command).
@@ -39,6 +40,7 @@ class UartBaudRate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class UartBaudRateResponse(_c.Field):
     """UART baud rate (read reply, inferred) (set 0x02, descriptor 0x81, response).
@@ -58,6 +60,7 @@ class UartBaudRateResponse(_c.Field):
     _OPS = (_c.Run(_c.P("baud_rate", _c.enum(_t.BaudRate, "u32"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class Filter(_c.Field):
     """Configure filter (set 0x02, descriptor 0x03, command).
@@ -84,6 +87,7 @@ class Filter(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class FilterResponse(_c.Field):
     """Filter (read reply, inferred) (set 0x02, descriptor 0x83, response).
@@ -103,6 +107,7 @@ class FilterResponse(_c.Field):
     _OPS = (_c.Run(_c.P("bandwidth", _c.enum(_t.FilterBandwidth, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SampleRate(_c.Field):
     """IMU sample rate configure (set 0x02, descriptor 0x04, command).
@@ -129,6 +134,7 @@ class SampleRate(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SampleRateResponse(_c.Field):
     """IMU sample rate (read reply, inferred) (set 0x02, descriptor 0x84, response).
@@ -148,6 +154,7 @@ class SampleRateResponse(_c.Field):
     _OPS = (_c.Run(_c.P("decimation", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SelectSensors(_c.Field):
     """Select sensors (Rev A) (set 0x02, descriptor 0x05, command).
@@ -179,6 +186,7 @@ class SelectSensors(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SelectSensorsResponse(_c.Field):
     """Select sensors (read reply, inferred) (set 0x02, descriptor 0x85, response).
@@ -199,6 +207,7 @@ class SelectSensorsResponse(_c.Field):
     _OPS = (_c.Remaining("sensors", _c.enum(_t.SensorCode, "u8"), maximum=253),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GetInternalSampleRate(_c.Field):
     """Get IMU internal sample rate (set 0x02, descriptor 0x06, command).
@@ -217,6 +226,7 @@ class GetInternalSampleRate(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class InternalSampleRate(_c.Field):
     """IMU internal sample rate (set 0x02, descriptor 0x86, response).
@@ -236,6 +246,7 @@ class InternalSampleRate(_c.Field):
     _OPS = (_c.Run(_c.P("rate", _c.U16)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelRange(_c.Field):
     """Config accel range (set 0x02, descriptor 0x07, command).
@@ -261,6 +272,7 @@ class AccelRange(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AccelRangeResponse(_c.Field):
     """Accel range (read reply, inferred) (set 0x02, descriptor 0x87, response).
@@ -280,6 +292,7 @@ class AccelRangeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("range", _c.enum(_t.AccelRange, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroRange(_c.Field):
     """Configure gyro range (set 0x02, descriptor 0x08, command).
@@ -305,6 +318,7 @@ class GyroRange(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class GyroRangeResponse(_c.Field):
     """Gyro range (read reply, inferred) (set 0x02, descriptor 0x88, response).
@@ -324,6 +338,7 @@ class GyroRangeResponse(_c.Field):
     _OPS = (_c.Run(_c.P("range", _c.enum(_t.GyroRange, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ConfigAll(_c.Field):
     """Configure all (set 0x02, descriptor 0x09, command).
@@ -344,6 +359,7 @@ class ConfigAll(_c.Field):
     _OPS = (_c.Run(_c.P("function", _c.enum(_t.FunctionCode, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DataOnOff(_c.Field):
     """Data on/off (set 0x02, descriptor 0x0A, command).
@@ -369,6 +385,7 @@ class DataOnOff(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class DataOnOffResponse(_c.Field):
     """Data on/off (read reply, inferred) (set 0x02, descriptor 0x8A, response).
@@ -388,6 +405,7 @@ class DataOnOffResponse(_c.Field):
     _OPS = (_c.Run(_c.P("control", _c.enum(_t.OnOff, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class XtrigOnOff(_c.Field):
     """XTRIG on/off (set 0x02, descriptor 0x0B, command).
@@ -413,6 +431,7 @@ class XtrigOnOff(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class XtrigOnOffResponse(_c.Field):
     """XTRIG on/off (read reply, inferred) (set 0x02, descriptor 0x8B, response).
@@ -432,6 +451,7 @@ class XtrigOnOffResponse(_c.Field):
     _OPS = (_c.Run(_c.P("control", _c.enum(_t.OnOff, "u8"))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class SelectSensorsRevB(_c.Field):
     """Select sensors (Rev B) (set 0x02, descriptor 0x0C, command).
@@ -460,6 +480,7 @@ class SelectSensorsRevB(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class SelectSensorsRevBResponse(_c.Field):
     """Select sensors Rev B (read reply, inferred) (set 0x02, descriptor 0x8C, response).
@@ -480,6 +501,7 @@ class SelectSensorsRevBResponse(_c.Field):
     _OPS = (_c.Remaining("sensors", _c.enum(_t.SensorCode, "u8"), maximum=253),)
 
 
+@_c.slotted
 @_dc.dataclass
 class AuxAccelRange(_c.Field):
     """Config aux accel range (set 0x02, descriptor 0x0D, command).
@@ -505,6 +527,7 @@ class AuxAccelRange(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class AuxAccelRangeResponse(_c.Field):
     """Aux accel range (read reply, inferred) (set 0x02, descriptor 0x8D, response).

@@ -12,6 +12,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledAccel(_c.Field):
     """Scaled acceleration vector (set 0xA2, descriptor 0x81, data).
@@ -32,6 +33,7 @@ class ScaledAccel(_c.Field):
     _OPS = (_c.Run(_c.P("accel", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledGyro(_c.Field):
     """Scaled angular rate vector (set 0xA2, descriptor 0x82, data).
@@ -52,6 +54,7 @@ class ScaledGyro(_c.Field):
     _OPS = (_c.Run(_c.P("gyro", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledMag(_c.Field):
     """Scaled magnetic field vector (set 0xA2, descriptor 0x83, data).
@@ -72,6 +75,7 @@ class ScaledMag(_c.Field):
     _OPS = (_c.Run(_c.P("mag", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeltaTheta(_c.Field):
     """Scaled delta theta vector (set 0xA2, descriptor 0x84, data).
@@ -92,6 +96,7 @@ class DeltaTheta(_c.Field):
     _OPS = (_c.Run(_c.P("delta_theta", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class DeltaVelocity(_c.Field):
     """Scaled delta velocity vector (set 0xA2, descriptor 0x85, data).
@@ -113,6 +118,7 @@ class DeltaVelocity(_c.Field):
     _OPS = (_c.Run(_c.P("delta_velocity", _c.F32, 3)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledPressure(_c.Field):
     """Scaled pressure (set 0xA2, descriptor 0x86, data).
@@ -133,6 +139,7 @@ class ScaledPressure(_c.Field):
     _OPS = (_c.Run(_c.P("pressure", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledTemperature(_c.Field):
     """Scaled temperature (set 0xA2, descriptor 0x87, data).
@@ -153,6 +160,7 @@ class ScaledTemperature(_c.Field):
     _OPS = (_c.Run(_c.P("temperature", _c.F32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class GpsCorrelatedTime(_c.Field):
     """GPS correlated time (set 0xA2, descriptor 0x88, data).
@@ -176,6 +184,7 @@ class GpsCorrelatedTime(_c.Field):
     _OPS = (_c.Run(_c.P("seconds", _c.F64), _c.P("week", _c.U16), _c.P("flags", _c.flags(_t.GpsTimeFlags))),)
 
 
+@_c.slotted
 @_dc.dataclass
 class ScaledAuxAccel(_c.Field):
     """Scaled aux accel vector (set 0xA2, descriptor 0x89, data).

@@ -9,6 +9,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class Ack(_c.Field):
     """Ack (descriptor 0x80 in every command set, ack).

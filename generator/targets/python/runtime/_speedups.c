@@ -16,6 +16,7 @@
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include <structmember.h>
+#include <math.h>
 #include <string.h>
 
 #if PY_VERSION_HEX < 0x030A0000
@@ -57,6 +58,18 @@ static void slots_dealloc(Slots3 *self) {
     PyObject_GC_UnTrack(self);
     slots_clear(self);
     tp->tp_free((PyObject *)self);
+}
+
+/* The dealloc of the package's Python subclasses (setup() installs it in place of CPython's generic
+ * subtype_dealloc when the class adds nothing to the instance: no __dict__, no weak references,
+ * no finalizer): the three slots released, the memory freed and the class's reference dropped.
+ * Their instances nest at most packet > fields list > entry, so no trashcan is needed. */
+static void heap_slots_dealloc(Slots3 *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    slots_clear(self);
+    tp->tp_free((PyObject *)self);
+    Py_DECREF(tp);
 }
 
 static PyMemberDef event_members[] = {
@@ -422,6 +435,7 @@ typedef struct {
     PyObject *aux;  /* owned */
     PyObject *attr; /* owned, interned attribute name */
     PyObject *key;  /* owned bytes: '"name":' of the canonical JSON */
+    Py_ssize_t slot; /* offset of the attribute's slot in the instance (slotted classes), else 0 */
 } Item;
 
 typedef enum { ENTRY_SLOW = 1, ENTRY_FAST = 2 } EntryKind;
@@ -431,6 +445,8 @@ typedef struct {
     PyObject *cls;   /* owned */
     PyObject *head;  /* owned bytes: '{"descriptor":D,"name":"N",["device":"X",]"values":{' */
     Py_ssize_t size; /* data bytes */
+    int slotted;     /* every item has a slot and instances no __dict__: values stored by offset */
+    int columnable;  /* no char or string item: decode_columns reads it (see columnable()) */
     int nitems;
     Item items[];
 } Entry;
@@ -534,7 +550,8 @@ static PyObject *empty_tuple;
 
 /* The typed value of a fast entry; NULL with an exception, or NOT_FAST. */
 static PyObject *fast_value(const Entry *e, const unsigned char *p) {
-    PyObject *obj = PyBaseObject_Type.tp_new((PyTypeObject *)e->cls, empty_tuple, NULL);
+    PyTypeObject *tp = (PyTypeObject *)e->cls;
+    PyObject *obj = e->slotted ? tp->tp_alloc(tp, 0) : PyBaseObject_Type.tp_new(tp, empty_tuple, NULL);
     if (obj == NULL) {
         return NULL;
     }
@@ -561,6 +578,10 @@ static PyObject *fast_value(const Entry *e, const unsigned char *p) {
             Py_DECREF(obj);
             return v;
         }
+        if (e->slotted) {
+            *(PyObject **)((char *)obj + it->slot) = v; /* a fresh object: the slot is empty */
+            continue;
+        }
         int rc = PyObject_GenericSetAttr(obj, it->attr, v);
         Py_DECREF(v);
         if (rc < 0) {
@@ -569,6 +590,38 @@ static PyObject *fast_value(const Entry *e, const unsigned char *p) {
         }
     }
     return obj;
+}
+
+static int columnable(const Entry *e);
+
+/* 1 when the instances of e->cls hold every item in a slot of their own and have no __dict__
+ * (codec.slotted): the item's slot offsets are set; 0 otherwise (values set as attributes); -1
+ * with an exception. */
+static int slots_of(Entry *e) {
+    PyTypeObject *tp = (PyTypeObject *)e->cls;
+    if (!PyType_Check(e->cls) || tp->tp_dictoffset != 0 || tp->tp_new != PyBaseObject_Type.tp_new ||
+        tp->tp_init == NULL) {
+        return 0;
+    }
+    for (int k = 0; k < e->nitems; k++) {
+        Item *it = &e->items[k];
+        PyObject *d = PyObject_GetAttr(e->cls, it->attr);
+        if (d == NULL) {
+            PyErr_Clear();
+            return 0;
+        }
+        int ok = Py_IS_TYPE(d, &PyMemberDescr_Type) && ((PyMemberDescrObject *)d)->d_member->type == T_OBJECT_EX &&
+                 !(((PyMemberDescrObject *)d)->d_member->flags & READONLY) &&
+                 PyType_IsSubtype(tp, ((PyDescrObject *)d)->d_type);
+        if (ok) {
+            it->slot = ((PyMemberDescrObject *)d)->d_member->offset;
+        }
+        Py_DECREF(d);
+        if (!ok || it->slot <= 0 || it->slot + (Py_ssize_t)sizeof(PyObject *) > tp->tp_basicsize) {
+            return 0;
+        }
+    }
+    return 1;
 }
 
 /* The entry of (set, descriptor), asking the Python side on first use. */
@@ -641,6 +694,12 @@ static Entry *entry_for(int set_id, int descriptor) {
             PyUnicode_InternInPlace(&it->attr);
             it->aux = Py_NewRef(aux);
             e->size += (Py_ssize_t)it->size * (it->count < 0 ? 1 : it->count);
+        }
+        e->columnable = columnable(e);
+        e->slotted = slots_of(e);
+        if (e->slotted < 0) {
+            Py_DECREF(prog);
+            return NULL;
         }
     }
     Py_DECREF(prog);
@@ -854,31 +913,6 @@ static int column_width(char kind) {
     return kind == '?' ? 1 : 8;
 }
 
-/* True when every element reads as the pure decoder reads it (no NaN, no invalid bool). */
-static int row_ok(const Entry *e, const unsigned char *p) {
-    for (int k = 0; k < e->nitems; k++) {
-        const Item *it = &e->items[k];
-        int n = it->count < 0 ? 1 : it->count;
-        for (int j = 0; j < n; j++, p += it->size) {
-            if (it->kind == 'f') {
-                unsigned int bits = load32(p);
-                if ((bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu)) {
-                    return 0;
-                }
-            } else if (it->kind == 'd') {
-                unsigned long long bits = load(p, 8);
-                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull &&
-                    (bits & 0x000FFFFFFFFFFFFFull)) {
-                    return 0;
-                }
-            } else if (it->kind == '?' && p[0] > 1) {
-                return 0;
-            }
-        }
-    }
-    return 1;
-}
-
 static Table *table_for(Columns *c, const Entry *e, int set_id, int descriptor) {
     Table **slot = &c->by_key[set_id << 8 | descriptor];
     if (*slot != NULL) {
@@ -908,61 +942,78 @@ static Table *table_for(Columns *c, const Entry *e, int set_id, int descriptor) 
     return t;
 }
 
+/* Appends the row of field data p to t: 0; 1 (nothing appended) when an element does not read as
+ * the pure decoder reads it (a NaN, an invalid bool); -1 with an exception. */
 static int put_row(Table *t, const unsigned char *p, long long offset, long long index) {
     const Entry *e = t->e;
     if (buf_reserve(&t->offsets, 8) < 0 || buf_reserve(&t->index, 8) < 0) {
         return -1;
     }
-    memcpy(t->offsets.p + t->offsets.len, &offset, 8);
-    t->offsets.len += 8;
-    memcpy(t->index.p + t->index.len, &index, 8);
-    t->index.len += 8;
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        if (buf_reserve(&t->cols[k], (Py_ssize_t)(it->count < 0 ? 1 : it->count) * column_width(it->kind)) < 0) {
+            return -1;
+        }
+    }
+    /* Written past the lengths first, which move only when the whole row reads. */
     for (int k = 0; k < e->nitems; k++) {
         const Item *it = &e->items[k];
         int n = it->count < 0 ? 1 : it->count;
-        Buf *b = &t->cols[k];
-        if (buf_reserve(b, (Py_ssize_t)n * column_width(it->kind)) < 0) {
-            return -1;
-        }
-        char *out = b->p + b->len;
-        for (int j = 0; j < n; j++, p += it->size) {
-            switch (it->kind) {
-            case 'f': {
+        char *out = t->cols[k].p + t->cols[k].len;
+        switch (it->kind) {
+        case 'f':
+            for (int j = 0; j < n; j++, p += 4, out += 8) {
                 unsigned int bits = load32(p);
+                if ((bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu)) {
+                    return 1;
+                }
                 float f;
                 memcpy(&f, &bits, 4);
                 double d = f;
                 memcpy(out, &d, 8);
-                out += 8;
-                break;
             }
-            case 'd': {
+            break;
+        case 'd':
+            for (int j = 0; j < n; j++, p += 8, out += 8) {
                 unsigned long long bits = load(p, 8);
+                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull && (bits & 0x000FFFFFFFFFFFFFull)) {
+                    return 1;
+                }
                 memcpy(out, &bits, 8);
-                out += 8;
-                break;
             }
-            case 'i': {
+            break;
+        case 'i':
+            for (int j = 0; j < n; j++, p += it->size, out += 8) {
                 unsigned long long v = load(p, it->size);
                 int shift = 64 - 8 * it->size;
                 long long x = shift ? (long long)(v << shift) >> shift : (long long)v;
                 memcpy(out, &x, 8);
-                out += 8;
-                break;
             }
-            case '?':
+            break;
+        case '?':
+            for (int j = 0; j < n; j++, p++) {
+                if (p[0] > 1) {
+                    return 1;
+                }
                 *out++ = (char)p[0];
-                break;
-            default: { /* u, e, F */
+            }
+            break;
+        default: /* u, e, F */
+            for (int j = 0; j < n; j++, p += it->size, out += 8) {
                 unsigned long long v = load(p, it->size);
                 memcpy(out, &v, 8);
-                out += 8;
-                break;
             }
-            }
+            break;
         }
-        b->len = out - b->p;
     }
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        t->cols[k].len += (Py_ssize_t)(it->count < 0 ? 1 : it->count) * column_width(it->kind);
+    }
+    memcpy(t->offsets.p + t->offsets.len, &offset, 8);
+    t->offsets.len += 8;
+    memcpy(t->index.p + t->index.len, &index, 8);
+    t->index.len += 8;
     t->rows++;
     return 0;
 }
@@ -1014,12 +1065,26 @@ static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ss
         if (e == NULL) {
             return -1;
         }
-        if (e->kind == ENTRY_FAST && e->size == data_length && columnable(e) && row_ok(e, data)) {
+        int rc = 1;
+        if (e->kind == ENTRY_FAST && e->size == data_length && e->columnable) {
             Table *t = table_for(c, e, set_id, descriptor);
-            if (t == NULL || put_row(t, data, offset, index) < 0) {
+            rc = t == NULL ? -1 : put_row(t, data, offset, index);
+            if (rc < 0) {
                 return -1;
             }
-        } else if (add_other(c, offset, index, slow_field(set_id, descriptor, data, data_length)) < 0) {
+            if (rc == 1 && t->rows == 0) {
+                /* Made for this row, which does not read: dropped, as if never made (table order). */
+                c->by_key[set_id << 8 | descriptor] = NULL;
+                c->ntables--;
+                for (int k = 0; k < e->nitems; k++) {
+                    PyMem_Free(t->cols[k].p);
+                }
+                PyMem_Free(t->offsets.p);
+                PyMem_Free(t->index.p);
+                PyMem_Free(t);
+            }
+        }
+        if (rc == 1 && add_other(c, offset, index, slow_field(set_id, descriptor, data, data_length)) < 0) {
             return -1;
         }
     }
@@ -1162,6 +1227,311 @@ static void text_i64(Text *t, long long v) {
     }
 }
 
+/* ------------------------------------------------------------------------------ float text */
+/* Shortest round-trip digits of a double by Grisu3 (Florian Loitsch, "Printing Floating-Point
+ * Numbers Quickly and Accurately with Integers", PLDI 2010): 64-bit integer arithmetic with a
+ * cached power of ten, which either yields the shortest digits closest to the value, provably, or
+ * gives up (about 0.5% of doubles); then PyOS_double_to_string (Python's own repr, exact big
+ * integer arithmetic) prints it. Either way the text is repr(float): float_text() gives both to
+ * the tests (tests/test_speedups_float.py), which compare them on random doubles, float32 values
+ * and boundary cases. */
+typedef struct {
+    unsigned long long f;
+    int e;
+} DiyFp;
+
+/* 10^k = f x 2^e (f rounded to 64 bits, top bit set) for k = -348, -340, ..., 340. */
+static const struct {
+    unsigned long long f;
+    short e, k;
+} cached_powers[] = {
+    {0xfa8fd5a0081c0288ull, -1220, -348},
+    {0xbaaee17fa23ebf76ull, -1193, -340},
+    {0x8b16fb203055ac76ull, -1166, -332},
+    {0xcf42894a5dce35eaull, -1140, -324},
+    {0x9a6bb0aa55653b2dull, -1113, -316},
+    {0xe61acf033d1a45dfull, -1087, -308},
+    {0xab70fe17c79ac6caull, -1060, -300},
+    {0xff77b1fcbebcdc4full, -1034, -292},
+    {0xbe5691ef416bd60cull, -1007, -284},
+    {0x8dd01fad907ffc3cull, -980, -276},
+    {0xd3515c2831559a83ull, -954, -268},
+    {0x9d71ac8fada6c9b5ull, -927, -260},
+    {0xea9c227723ee8bcbull, -901, -252},
+    {0xaecc49914078536dull, -874, -244},
+    {0x823c12795db6ce57ull, -847, -236},
+    {0xc21094364dfb5637ull, -821, -228},
+    {0x9096ea6f3848984full, -794, -220},
+    {0xd77485cb25823ac7ull, -768, -212},
+    {0xa086cfcd97bf97f4ull, -741, -204},
+    {0xef340a98172aace5ull, -715, -196},
+    {0xb23867fb2a35b28eull, -688, -188},
+    {0x84c8d4dfd2c63f3bull, -661, -180},
+    {0xc5dd44271ad3cdbaull, -635, -172},
+    {0x936b9fcebb25c996ull, -608, -164},
+    {0xdbac6c247d62a584ull, -582, -156},
+    {0xa3ab66580d5fdaf6ull, -555, -148},
+    {0xf3e2f893dec3f126ull, -529, -140},
+    {0xb5b5ada8aaff80b8ull, -502, -132},
+    {0x87625f056c7c4a8bull, -475, -124},
+    {0xc9bcff6034c13053ull, -449, -116},
+    {0x964e858c91ba2655ull, -422, -108},
+    {0xdff9772470297ebdull, -396, -100},
+    {0xa6dfbd9fb8e5b88full, -369, -92},
+    {0xf8a95fcf88747d94ull, -343, -84},
+    {0xb94470938fa89bcfull, -316, -76},
+    {0x8a08f0f8bf0f156bull, -289, -68},
+    {0xcdb02555653131b6ull, -263, -60},
+    {0x993fe2c6d07b7facull, -236, -52},
+    {0xe45c10c42a2b3b06ull, -210, -44},
+    {0xaa242499697392d3ull, -183, -36},
+    {0xfd87b5f28300ca0eull, -157, -28},
+    {0xbce5086492111aebull, -130, -20},
+    {0x8cbccc096f5088ccull, -103, -12},
+    {0xd1b71758e219652cull, -77, -4},
+    {0x9c40000000000000ull, -50, 4},
+    {0xe8d4a51000000000ull, -24, 12},
+    {0xad78ebc5ac620000ull, 3, 20},
+    {0x813f3978f8940984ull, 30, 28},
+    {0xc097ce7bc90715b3ull, 56, 36},
+    {0x8f7e32ce7bea5c70ull, 83, 44},
+    {0xd5d238a4abe98068ull, 109, 52},
+    {0x9f4f2726179a2245ull, 136, 60},
+    {0xed63a231d4c4fb27ull, 162, 68},
+    {0xb0de65388cc8ada8ull, 189, 76},
+    {0x83c7088e1aab65dbull, 216, 84},
+    {0xc45d1df942711d9aull, 242, 92},
+    {0x924d692ca61be758ull, 269, 100},
+    {0xda01ee641a708deaull, 295, 108},
+    {0xa26da3999aef774aull, 322, 116},
+    {0xf209787bb47d6b85ull, 348, 124},
+    {0xb454e4a179dd1877ull, 375, 132},
+    {0x865b86925b9bc5c2ull, 402, 140},
+    {0xc83553c5c8965d3dull, 428, 148},
+    {0x952ab45cfa97a0b3ull, 455, 156},
+    {0xde469fbd99a05fe3ull, 481, 164},
+    {0xa59bc234db398c25ull, 508, 172},
+    {0xf6c69a72a3989f5cull, 534, 180},
+    {0xb7dcbf5354e9beceull, 561, 188},
+    {0x88fcf317f22241e2ull, 588, 196},
+    {0xcc20ce9bd35c78a5ull, 614, 204},
+    {0x98165af37b2153dfull, 641, 212},
+    {0xe2a0b5dc971f303aull, 667, 220},
+    {0xa8d9d1535ce3b396ull, 694, 228},
+    {0xfb9b7cd9a4a7443cull, 720, 236},
+    {0xbb764c4ca7a44410ull, 747, 244},
+    {0x8bab8eefb6409c1aull, 774, 252},
+    {0xd01fef10a657842cull, 800, 260},
+    {0x9b10a4e5e9913129ull, 827, 268},
+    {0xe7109bfba19c0c9dull, 853, 276},
+    {0xac2820d9623bf429ull, 880, 284},
+    {0x80444b5e7aa7cf85ull, 907, 292},
+    {0xbf21e44003acdd2dull, 933, 300},
+    {0x8e679c2f5e44ff8full, 960, 308},
+    {0xd433179d9c8cb841ull, 986, 316},
+    {0x9e19db92b4e31ba9ull, 1013, 324},
+    {0xeb96bf6ebadf77d9ull, 1039, 332},
+    {0xaf87023b9bf0ee6bull, 1066, 340},
+};
+
+static DiyFp diy_times(DiyFp a, DiyFp b) {
+    unsigned long long a1 = a.f >> 32, a0 = a.f & 0xFFFFFFFFu, b1 = b.f >> 32, b0 = b.f & 0xFFFFFFFFu;
+    unsigned long long ac = a1 * b1, bc = a0 * b1, ad = a1 * b0, bd = a0 * b0;
+    unsigned long long mid = (bd >> 32) + (ad & 0xFFFFFFFFu) + (bc & 0xFFFFFFFFu) + (1ull << 31); /* rounded */
+    DiyFp r = {ac + (ad >> 32) + (bc >> 32) + (mid >> 32), a.e + b.e + 64};
+    return r;
+}
+
+static int round_weed(char *buf, int len, unsigned long long dist_high_w, unsigned long long unsafe,
+                      unsigned long long rest, unsigned long long ten_kappa, unsigned long long unit) {
+    unsigned long long small = dist_high_w - unit, big = dist_high_w + unit;
+    while (rest < small && unsafe - rest >= ten_kappa &&
+           (rest + ten_kappa < small || small - rest >= rest + ten_kappa - small)) {
+        buf[len - 1]--;
+        rest += ten_kappa;
+    }
+    if (rest < big && unsafe - rest >= ten_kappa && (rest + ten_kappa < big || big - rest > rest + ten_kappa - big)) {
+        return 0;
+    }
+    return 2 * unit <= rest && rest <= unsafe - 4 * unit;
+}
+
+/* Digits of a finite positive double into buf (17 chars), their count in *len and the decimal
+ * exponent of the last in *exp10; 0 when Grisu3 cannot tell. */
+static int grisu3(double v, char *buf, int *len, int *exp10) {
+    unsigned long long bits;
+    memcpy(&bits, &v, 8);
+    unsigned long long frac = bits & 0x000FFFFFFFFFFFFFull;
+    int bexp = (int)((bits >> 52) & 0x7FF);
+    DiyFp w;
+    if (bexp) {
+        w.f = frac | 0x0010000000000000ull;
+        w.e = bexp - 1075;
+    } else {
+        w.f = frac;
+        w.e = -1074;
+    }
+    /* Boundaries: halfway to the neighbours (the lower one closer at a power of two). */
+    DiyFp plus = {(w.f << 1) + 1, w.e - 1};
+    while (!(plus.f & 0xFFC0000000000000ull)) { /* normalize: the top bit at 63 */
+        plus.f <<= 10;
+        plus.e -= 10;
+    }
+    while (!(plus.f & 0x8000000000000000ull)) {
+        plus.f <<= 1;
+        plus.e--;
+    }
+    DiyFp minus;
+    if (frac == 0 && bexp > 1) {
+        minus.f = (w.f << 2) - 1;
+        minus.e = w.e - 2;
+    } else {
+        minus.f = (w.f << 1) - 1;
+        minus.e = w.e - 1;
+    }
+    minus.f <<= minus.e - plus.e;
+    minus.e = plus.e;
+    /* w normalized */
+    while (!(w.f & 0xFFC0000000000000ull)) {
+        w.f <<= 10;
+        w.e -= 10;
+    }
+    while (!(w.f & 0x8000000000000000ull)) {
+        w.f <<= 1;
+        w.e--;
+    }
+    /* A cached power c with -60 <= w.e + c.e + 64 <= -32. */
+    int min_exp = -60 - (w.e + 64);
+    int k = (int)ceil((min_exp + 63) * 0.30102999566398114);
+    int index = (348 + k - 1) / 8 + 1;
+    if (index < 0 || index >= (int)(sizeof cached_powers / sizeof cached_powers[0])) {
+        return 0;
+    }
+    DiyFp c = {cached_powers[index].f, cached_powers[index].e};
+    int mk = cached_powers[index].k;
+    int scaled_e = w.e + c.e + 64;
+    if (scaled_e < -60 || scaled_e > -32) {
+        return 0;
+    }
+    DiyFp sw = diy_times(w, c), low = diy_times(minus, c), high = diy_times(plus, c);
+    /* Digit generation (DigitGen): too_low/too_high widened by the unit of imprecision. */
+    unsigned long long unit = 1;
+    DiyFp too_low = {low.f - unit, low.e}, too_high = {high.f + unit, high.e};
+    unsigned long long unsafe = too_high.f - too_low.f;
+    int shift = -sw.e;
+    unsigned long long one = 1ull << shift;
+    unsigned int integrals = (unsigned int)(too_high.f >> shift);
+    unsigned long long fractionals = too_high.f & (one - 1);
+    unsigned int divisor = 1;
+    int kappa = 1; /* the number of decimal digits of integrals (at least one) */
+    while (kappa < 10 && integrals >= divisor * 10u) {
+        divisor *= 10u;
+        kappa++;
+    }
+    if (integrals >= 1000000000u) {
+        divisor = 1000000000u;
+        kappa = 10;
+    }
+    int n = 0;
+    while (kappa > 0) {
+        buf[n++] = (char)('0' + integrals / divisor);
+        integrals %= divisor;
+        kappa--;
+        unsigned long long rest = ((unsigned long long)integrals << shift) + fractionals;
+        if (rest < unsafe) {
+            if (n > 17 || !round_weed(buf, n, too_high.f - sw.f, unsafe, rest, (unsigned long long)divisor << shift, unit)) {
+                return 0;
+            }
+            *len = n;
+            *exp10 = kappa - mk;
+            return 1;
+        }
+        divisor /= 10u;
+    }
+    for (;;) {
+        fractionals *= 10;
+        unit *= 10;
+        unsafe *= 10;
+        buf[n++] = (char)('0' + (int)(fractionals >> shift));
+        fractionals &= one - 1;
+        kappa--;
+        if (fractionals < unsafe) {
+            if (n > 17 || !round_weed(buf, n, (too_high.f - sw.f) * unit, unsafe, fractionals, one, unit)) {
+                return 0;
+            }
+            *len = n;
+            *exp10 = kappa - mk;
+            return 1;
+        }
+        if (n >= 17) {
+            return 0;
+        }
+    }
+}
+
+/* repr(float) of a finite double into out (at least 32 bytes): its length, or -1 when Grisu3 gave
+ * up. The layout is format_float_short's for repr: exponent form when the decimal point falls
+ * before -4 or after 16 digits ("1e+16", "1.5e-05"), else fixed with at least one digit after the
+ * point ("100.0", "0.001"). */
+static int repr_double(double v, char *out) {
+    char *o = out;
+    if (signbit(v)) {
+        *o++ = '-';
+        v = -v;
+    }
+    if (v == 0.0) {
+        memcpy(o, "0.0", 3);
+        return (int)(o + 3 - out);
+    }
+    char d[20];
+    int n, e;
+    if (!grisu3(v, d, &n, &e)) {
+        return -1;
+    }
+    int decpt = n + e; /* value = 0.d1d2... x 10^decpt */
+    if (decpt <= -4 || decpt > 16) {
+        *o++ = d[0];
+        if (n > 1) {
+            *o++ = '.';
+            memcpy(o, d + 1, (size_t)(n - 1));
+            o += n - 1;
+        }
+        int x = decpt - 1;
+        *o++ = 'e';
+        *o++ = x < 0 ? '-' : '+';
+        if (x < 0) {
+            x = -x;
+        }
+        if (x >= 100) {
+            *o++ = (char)('0' + x / 100);
+            x %= 100;
+        }
+        *o++ = (char)('0' + x / 10);
+        *o++ = (char)('0' + x % 10);
+    } else if (decpt <= 0) {
+        *o++ = '0';
+        *o++ = '.';
+        memset(o, '0', (size_t)-decpt);
+        o += -decpt;
+        memcpy(o, d, (size_t)n);
+        o += n;
+    } else if (decpt < n) {
+        memcpy(o, d, (size_t)decpt);
+        o += decpt;
+        *o++ = '.';
+        memcpy(o, d + decpt, (size_t)(n - decpt));
+        o += n - decpt;
+    } else {
+        memcpy(o, d, (size_t)n);
+        o += n;
+        memset(o, '0', (size_t)(decpt - n));
+        o += decpt - n;
+        *o++ = '.';
+        *o++ = '0';
+    }
+    return (int)(o - out);
+}
+
 /* A finite double as repr(float) prints it; the infinities as the canonical strings. */
 static int text_double(Text *t, double d) {
     if (d == Py_HUGE_VAL) {
@@ -1169,6 +1539,14 @@ static int text_double(Text *t, double d) {
     }
     if (d == -Py_HUGE_VAL) {
         return text_put(t, "\"-inf\"", 6);
+    }
+    if (text_reserve(t, 32) < 0) {
+        return -1;
+    }
+    int n = repr_double(d, t->p + t->len);
+    if (n >= 0) {
+        t->len += n;
+        return 0;
     }
     char *s = PyOS_double_to_string(d, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
     if (s == NULL) {
@@ -1447,6 +1825,14 @@ static PyObject *setup(PyObject *self, PyObject *args) {
             return NULL;
         }
     }
+    for (int k = 0; k < 4; k++) {
+        PyTypeObject *tp = (PyTypeObject *)t[k];
+        if ((tp->tp_flags & Py_TPFLAGS_HEAPTYPE) && tp->tp_base == bases[k] && tp->tp_dictoffset == 0 &&
+            tp->tp_weaklistoffset == 0 && tp->tp_finalize == NULL && tp->tp_del == NULL &&
+            tp->tp_free == PyObject_GC_Del) {
+            tp->tp_dealloc = (destructor)heap_slots_dealloc;
+        }
+    }
     raw_packet_type = (PyTypeObject *)Py_NewRef(t[0]);
     skip_type = (PyTypeObject *)Py_NewRef(t[1]);
     packet_type = (PyTypeObject *)Py_NewRef(t[2]);
@@ -1457,6 +1843,26 @@ static PyObject *setup(PyObject *self, PyObject *args) {
     py_field_line = Py_NewRef(f[3]);
     py_packet_line = Py_NewRef(f[4]);
     Py_RETURN_NONE;
+}
+
+/* float_text(x: float) -> str | None: repr(x) as the fast path prints it, None when it gives up
+ * (for the tests: the text must be repr's). */
+static PyObject *float_text(PyObject *self, PyObject *arg) {
+    (void)self;
+    double d = PyFloat_AsDouble(arg);
+    if (d == -1.0 && PyErr_Occurred()) {
+        return NULL;
+    }
+    if (!isfinite(d)) {
+        PyErr_SetString(PyExc_ValueError, "float_text: a finite float expected");
+        return NULL;
+    }
+    char out[32];
+    int n = repr_double(d, out);
+    if (n < 0) {
+        Py_RETURN_NONE;
+    }
+    return PyUnicode_FromStringAndSize(out, n);
 }
 
 static PyMethodDef methods[] = {
@@ -1470,6 +1876,7 @@ static PyMethodDef methods[] = {
      "decode_columns(data): a complete stream as per-field tables."},
     {"scan_text", scan_text, METH_VARARGS,
      "scan_text(buf, base, skip, skip_at, final): the parser loop printing canonical JSON lines."},
+    {"float_text", float_text, METH_O, "float_text(x): repr(x) by the fast path, or None where it gives up."},
     {NULL, NULL, 0, NULL},
 };
 

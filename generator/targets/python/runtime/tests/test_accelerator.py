@@ -7,6 +7,7 @@ import gc
 import os
 import pickle
 import random
+import struct
 
 import testproto
 from testproto import codec as c
@@ -153,3 +154,114 @@ def test_decoding_leaves_the_garbage_collector_as_it_was():
             assert gc.isenabled() == enabled
     finally:
         gc.enable() if was else gc.disable()
+
+
+def test_slotted_fields_keep_the_dataclass_semantics():
+    # codec.slotted (generated fields, Vector here; Reading keeps its __dict__): no __dict__, and
+    # the fields, equality, repr, pickling, copying and replace() of the dataclass.
+    import dataclasses
+
+    from testproto import sensor
+
+    v = sensor.Vector([1.0, 2.0, 3.0], 0.5, 7, -1)
+    assert not hasattr(v, "__dict__") and type(v).__slots__ == ("xyz", "time", "ticks", "delta")
+    assert [f.name for f in dataclasses.fields(v)] == ["xyz", "time", "ticks", "delta"]
+    assert repr(v) == "Vector(xyz=[1.0, 2.0, 3.0], time=0.5, ticks=7, delta=-1)"
+    assert v == sensor.Vector([1.0, 2.0, 3.0], 0.5, 7, -1) and v != sensor.Vector()
+    assert sensor.Vector() == sensor.Vector([0.0, 0.0, 0.0], 0.0, 0, 0)
+    assert pickle.loads(pickle.dumps(v)) == v and copy.deepcopy(v) == v and copy.copy(v) == v
+    assert dataclasses.replace(v, ticks=8).ticks == 8
+    assert sensor.Vector.decode(v.encode()) == v
+    assert hasattr(sensor.Reading(), "__dict__")  # not slotted: the accelerator sets attributes
+    # Decoded in C (slots stored by offset) and in Python: equal values of the same class.
+    packet = (
+        PacketBuilder(0x80).add_field(0x02, v.encode()).add_field(0x01, sensor.Reading(5, -2, True).encode()).build()
+    )
+    got, want = packets.decode_packet(packet), packets._decode_packet_pure(packet, 0)
+    assert repr(got) == repr(want) and got.values() == want.values()
+    assert [type(x) for x in got.values()] == [sensor.Vector, sensor.Reading]
+    assert got.values()[0] == v and pickle.loads(pickle.dumps(got)).values() == got.values()
+
+
+def _float_cases():
+    rng = random.Random(22)
+    cases = [
+        0.0,
+        -0.0,
+        1.0,
+        0.1,
+        0.3,
+        2 / 3,
+        100.0,
+        1e16,
+        1e17,
+        1e22,
+        1e23,
+        1e-4,
+        1e-5,
+        1.5e-5,
+        5e-324,
+        2.2250738585072014e-308,
+        2.225073858507201e-308,
+        1.7976931348623157e308,
+        9007199254740993.0,
+        123456789012345678.0,
+        1234567.0,
+        0.001,
+        12345678901234567890.0,
+    ]
+    cases += [float(2.0**e) for e in range(-1074, 1024, 7)]
+    cases += [float(10.0**e) for e in range(-323, 309)]
+    for _ in range(60000):
+        bits = rng.getrandbits(64)
+        cases.append(struct.unpack("<d", bits.to_bytes(8, "little"))[0])
+        cases.append(struct.unpack("<f", (bits & 0xFFFFFFFF).to_bytes(4, "little"))[0])  # float32
+        cases.append(rng.randrange(-(10**17), 10**17) / 10 ** rng.randrange(0, 25))  # short decimals
+    return [x for x in cases if x == x and abs(x) != float("inf")]
+
+
+def test_float_text_is_repr():
+    # The JSON line writer's float printer (Grisu3, falling back to Python's own repr where it
+    # cannot tell): the text of every value it prints is repr's, and it gives up rarely.
+    if not testproto.ACCELERATED:
+        return  # the pure run: no C printer to check (the accelerated run checks it)
+    from testproto import _speedups
+
+    cases = _float_cases()
+    given_up = 0
+    for x in cases:
+        text = _speedups.float_text(x)
+        if text is None:
+            given_up += 1
+        else:
+            assert text == repr(x), (x.hex(), text)
+    assert given_up < len(cases) // 20, given_up
+
+
+def test_event_objects_and_their_subclasses_are_freed():
+    # The accelerator frees Packet, DecodedField, RawPacket and Skip itself (not through
+    # CPython's generic dealloc): each instance gives back its class's reference, also for a
+    # subclass with a __dict__ of its own.
+    import sys
+
+    class Tagged(Packet):
+        pass
+
+    packet = PacketBuilder(0x80).add_field(0x02, bytes(28)).build()
+    stream = (b"\x00" + packet) * 200
+    classes = (Packet, packets.DecodedField, RawPacket, Skip, Tagged)
+
+    def run() -> None:
+        events = decode_all(stream) + Parser().feed(stream)
+        assert len(events) == 800
+        tagged = [Tagged(7, 0x80, []) for _ in range(100)]
+        for t in tagged:
+            t.note = "kept in the instance __dict__"
+
+    run()  # warm-up: the interpreter's caches take their references to the classes
+    gc.collect()
+    before = [sys.getrefcount(k) for k in classes]
+    for _ in range(3):
+        run()
+    gc.collect()
+    assert [sys.getrefcount(k) for k in classes] == before

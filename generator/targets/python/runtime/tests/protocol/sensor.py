@@ -25,6 +25,7 @@ class Reading(_c.Field):
     _OPS = (_c.Run(_c.P("count", _c.U16), _c.P("offset", _c.S8), _c.P("valid", _c.BOOL)),)
 
 
+@_c.slotted  # as generated fields are (Reading keeps a __dict__: both ways tested)
 @_dc.dataclass
 class Vector(_c.Field):
     """Vector (set 0x80, descriptor 0x02, data): float arrays and wide integers."""
@@ -42,6 +43,7 @@ class Vector(_c.Field):
     _OPS = (_c.Run(_c.P("xyz", _c.F32, 3), _c.P("time", _c.F64), _c.P("ticks", _c.U64), _c.P("delta", _c.S32)),)
 
 
+@_c.slotted  # as generated fields are (Reading keeps a __dict__: both ways tested)
 @_dc.dataclass
 class State(_c.Field):
     """State (set 0x80, descriptor 0x03, data): enum, bitfield, string and char."""

@@ -9,6 +9,7 @@ from . import codec as _c
 from . import types as _t
 
 
+@_c.slotted
 @_dc.dataclass
 class Ping(_c.Field):
     """Ping (set 0x01, descriptor 0x01, command).
@@ -24,6 +25,7 @@ class Ping(_c.Field):
     _OPS = ()
 
 
+@_c.slotted
 @_dc.dataclass
 class Configure(_c.Field):
     """Configure (set 0x01, descriptor 0x02, command).
@@ -51,6 +53,7 @@ class Configure(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class Configuration(_c.Field):
     """Configuration (set 0x01, descriptor 0x82, response).
@@ -89,6 +92,7 @@ class Configuration(_c.Field):
     )
 
 
+@_c.slotted
 @_dc.dataclass
 class PerDevice_dev_a(_c.Field):
     """Per-device command (set 0x01, descriptor 0x03, command), device dev_a.
@@ -107,6 +111,7 @@ class PerDevice_dev_a(_c.Field):
     _OPS = (_c.Run(_c.P("a", _c.U32)),)
 
 
+@_c.slotted
 @_dc.dataclass
 class PerDevice_dev_b(_c.Field):
     """Per-device command (set 0x01, descriptor 0x03, command), device dev_b.

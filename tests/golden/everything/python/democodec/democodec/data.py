@@ -8,6 +8,7 @@ import typing as _ty
 from . import codec as _c
 
 
+@_c.slotted
 @_dc.dataclass
 class Sample(_c.Field):
     """Sample (set 0x90, descriptor 0x01, data).

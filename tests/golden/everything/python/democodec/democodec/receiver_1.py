@@ -7,6 +7,7 @@ import dataclasses as _dc
 from . import codec as _c
 
 
+@_c.slotted
 @_dc.dataclass
 class LlhPosition(_c.Field):
     """LLH position (set 0x91, descriptor 0x03, data).

@@ -7,6 +7,7 @@ import dataclasses as _dc
 from . import codec as _c
 
 
+@_c.slotted
 @_dc.dataclass
 class Ack(_c.Field):
     """Ack (descriptor 0x80 in every command set, ack).

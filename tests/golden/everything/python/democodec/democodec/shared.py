@@ -7,6 +7,7 @@ import dataclasses as _dc
 from . import codec as _c
 
 
+@_c.slotted
 @_dc.dataclass
 class Timestamp(_c.Field):
     """Timestamp (set 0xFF, descriptor 0xD3, data).
