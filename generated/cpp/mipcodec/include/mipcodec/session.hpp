@@ -488,7 +488,9 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         }
     }
 
-    template <class Handler> void route(const StreamEvent &e, Handler &on_event) {
+    /// Inlined into the parser's loop (one call less per packet): the per-field handlers, rarer
+    /// and bigger, stay out of line.
+    template <class Handler> MIPCODEC_INLINE void route(const StreamEvent &e, Handler &on_event) {
         SessionEvent ev;
         if (e.kind == StreamEvent::Kind::skip) {
             ev.kind = SessionEvent::Kind::skip;
@@ -508,16 +510,20 @@ template <std::size_t N = kDefaultMaxPending> class Session {
             packet_[i](e.packet, e.offset);
         }
         if (field_handlers_ > 0) {
-            FieldIterator it(e.packet);
-            FieldEntry f;
-            while (it.next(f)) {
-                if (f.kind != FieldEntry::Kind::field) {
-                    continue;
-                }
-                for (std::size_t i = 0; i < field_handlers_; ++i) {
-                    if (field_[i].set == e.packet.set() && field_[i].descriptor == f.descriptor) {
-                        field_[i].call(f.data, f.size, e.packet);
-                    }
+            route_fields(e.packet);
+        }
+    }
+
+    MIPCODEC_NOINLINE void route_fields(const PacketView &packet) {
+        FieldIterator it(packet);
+        FieldEntry f;
+        while (it.next(f)) {
+            if (f.kind != FieldEntry::Kind::field) {
+                continue;
+            }
+            for (std::size_t i = 0; i < field_handlers_; ++i) {
+                if (field_[i].set == packet.set() && field_[i].descriptor == f.descriptor) {
+                    field_[i].call(f.data, f.size, packet);
                 }
             }
         }

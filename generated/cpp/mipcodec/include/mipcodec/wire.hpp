@@ -26,12 +26,14 @@
 #endif
 /// Inlines the straight loads of plain layouts (Plain<V>::load) into their caller: they are a
 /// few loads and byte swaps, but a big caller (the switch of visit_case) would not inline them.
+#if !defined(MIPCODEC_INLINE)
 #if defined(__GNUC__) || defined(__clang__)
 #define MIPCODEC_INLINE inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
 #define MIPCODEC_INLINE __forceinline
 #else
 #define MIPCODEC_INLINE inline
+#endif
 #endif
 
 namespace mipcodec {

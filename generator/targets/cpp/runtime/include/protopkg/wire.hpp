@@ -25,12 +25,14 @@
 #endif
 /// Inlines the straight loads of plain layouts (Plain<V>::load) into their caller: they are a
 /// few loads and byte swaps, but a big caller (the switch of visit_case) would not inline them.
+#if !defined(PROTOPKG_INLINE)
 #if defined(__GNUC__) || defined(__clang__)
 #define PROTOPKG_INLINE inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
 #define PROTOPKG_INLINE __forceinline
 #else
 #define PROTOPKG_INLINE inline
+#endif
 #endif
 
 namespace protopkg {

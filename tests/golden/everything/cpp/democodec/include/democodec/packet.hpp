@@ -236,28 +236,37 @@ class FieldIterator {
         if (pos_ >= size_) {
             return false;
         }
+        const std::size_t left = size_ - pos_;
+        if (left >= kFieldHeaderSize) {
+            // The common case, a whole field: only the members a field uses are written.
+            const std::uint8_t length = p_[pos_ + kFieldLengthOffset];
+            const std::uint8_t descriptor = p_[pos_ + kFieldDescriptorOffset];
+            const int data_length = static_cast<int>(length) - field_length_adjust(set_, descriptor);
+            if (data_length >= 0 && kFieldHeaderSize + static_cast<std::size_t>(data_length) <= left) {
+                out.kind = FieldEntry::Kind::field;
+                out.descriptor = descriptor;
+                out.data = p_ + pos_ + kFieldHeaderSize;
+                out.size = static_cast<std::size_t>(data_length);
+                out.payload_offset = pos_;
+                out.problem = FieldEntry::Problem::none;
+                out.length = 0;
+                out.left = 0;
+                pos_ += kFieldHeaderSize + static_cast<std::size_t>(data_length);
+                return true;
+            }
+        }
+        // A framing problem: the rest of the payload is one trailing entry.
         out = FieldEntry{};
         out.payload_offset = pos_;
-        const std::size_t left = size_ - pos_;
         if (left < kFieldHeaderSize) {
             return trailing(out, FieldEntry::Problem::short_header, 0, left);
         }
         const std::uint8_t length = p_[pos_ + kFieldLengthOffset];
         const std::uint8_t descriptor = p_[pos_ + kFieldDescriptorOffset];
-        const int data_length = static_cast<int>(length) - field_length_adjust(set_, descriptor);
-        if (data_length < 0) {
+        if (static_cast<int>(length) - field_length_adjust(set_, descriptor) < 0) {
             return trailing(out, FieldEntry::Problem::length_below_header, length, left);
         }
-        const auto data_size = static_cast<std::size_t>(data_length);
-        if (kFieldHeaderSize + data_size > left) {
-            return trailing(out, FieldEntry::Problem::overruns, length, left);
-        }
-        out.kind = FieldEntry::Kind::field;
-        out.descriptor = p_[pos_ + kFieldDescriptorOffset];
-        out.data = p_ + pos_ + kFieldHeaderSize;
-        out.size = data_size;
-        pos_ += kFieldHeaderSize + data_size;
-        return true;
+        return trailing(out, FieldEntry::Problem::overruns, length, left);
     }
 
   private:

@@ -108,50 +108,84 @@ class StreamParser {
     }
 
     /// The decisions of process() made in place on the caller's bytes (nothing is buffered).
-    /// Returns the bytes consumed; base_ follows them.
+    /// Returns the bytes consumed; base_ follows them. The pending skip run lives in locals
+    /// here (the handler's stores could otherwise alias the members and force them to memory
+    /// on every packet).
     template <class Handler> std::size_t scan(const std::uint8_t *data, std::size_t size, Handler &on_event) {
         const std::uint64_t base = base_;
+        std::uint64_t skip_offset = skip_offset_;
+        std::uint64_t skip_count = skip_count_;
         std::size_t pos = 0;
         while (pos < size) {
             const std::uint8_t *p = data + pos;
             const std::size_t left = size - pos;
+            std::size_t skipped = 1; // a false sync: resynchronise at the next byte
             if (p[0] != kSync[0]) {
-                const void *q = std::memchr(p, kSync[0], left);
-                const std::size_t n =
-                    q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(q) - p) : left;
-                skip_at(base + pos, n);
-                pos += n;
-                continue;
-            }
-            if (left < kHeaderSize) {
+                skipped = find_sync_byte(p, left);
+            } else if (left >= kHeaderSize) {
+                const std::size_t length = p[kLengthOffset];
+                if (std::memcmp(p + 1, kSync.data() + 1, kSyncSize - 1) == 0 && length <= kMaxPayload) {
+                    const std::size_t body = kHeaderSize + length;
+                    if (left < body + kChecksumSize) {
+                        break; // incomplete packet: buffered
+                    }
+                    if (fletcher16_matches(p, body, p + body)) {
+                        if (skip_count > 0) {
+                            emit_skip_run(on_event, skip_offset, skip_count);
+                            skip_count = 0;
+                        }
+                        StreamEvent e;
+                        e.kind = StreamEvent::Kind::packet;
+                        e.offset = base + pos;
+                        e.packet = PacketView{p, body + kChecksumSize};
+                        on_event(static_cast<const StreamEvent &>(e));
+                        pos += body + kChecksumSize;
+                        continue;
+                    }
+                }
+            } else if (std::memcmp(p, kSync.data(), left < kSyncSize ? left : kSyncSize) == 0) {
                 // A partial sync or header at the end waits in the buffer (unless it already
                 // differs from the sync sequence).
-                if (std::memcmp(p, kSync.data(), left < kSyncSize ? left : kSyncSize) == 0) {
-                    break;
-                }
-            } else if (std::memcmp(p, kSync.data(), kSyncSize) == 0 && p[kLengthOffset] <= kMaxPayload) {
-                const std::size_t length = p[kLengthOffset];
-                const std::size_t total = kHeaderSize + length + kChecksumSize;
-                if (left < total) {
-                    break; // incomplete packet: buffered
-                }
-                const auto sums = fletcher16(p, kHeaderSize + length).bytes();
-                if (p[kHeaderSize + length] == sums[0] && p[kHeaderSize + length + 1] == sums[1]) {
-                    emit_skip(on_event);
-                    StreamEvent e;
-                    e.kind = StreamEvent::Kind::packet;
-                    e.offset = base + pos;
-                    e.packet = PacketView{p, total};
-                    on_event(static_cast<const StreamEvent &>(e));
-                    pos += total;
-                    continue;
-                }
+                break;
             }
-            skip_at(base + pos, 1); // false sync: resynchronise at the next byte
-            ++pos;
+            if (skip_count == 0) {
+                skip_offset = base + pos;
+            }
+            skip_count += skipped;
+            pos += skipped;
         }
+        skip_offset_ = skip_offset;
+        skip_count_ = skip_count;
         base_ = base + pos;
         return pos;
+    }
+
+    /// Index of the first byte equal to kSync[0] in p[0..n), else n. The bytes after a packet
+    /// are mostly the next packet's sync or a few bytes of garbage: one 16-byte compare finds it
+    /// without a library call where the vector path exists.
+    static std::size_t find_sync_byte(const std::uint8_t *p, std::size_t n) {
+#if defined(DEMOCODEC_FLETCHER_SSE2)
+        if (n >= 16) {
+            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i *>(p));
+            const int hits = _mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(kSync[0]))));
+            if (hits != 0) {
+                return static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(hits)));
+            }
+            const void *q = std::memchr(p + 16, kSync[0], n - 16);
+            return q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(q) - p) : n;
+        }
+#endif
+        const void *q = std::memchr(p, kSync[0], n);
+        return q != nullptr ? static_cast<std::size_t>(static_cast<const std::uint8_t *>(q) - p) : n;
+    }
+
+    template <class Handler>
+    static void emit_skip_run(Handler &on_event, std::uint64_t offset, std::uint64_t count) {
+        StreamEvent e;
+        e.kind = StreamEvent::Kind::skip;
+        e.offset = offset;
+        e.count = count;
+        on_event(static_cast<const StreamEvent &>(e));
     }
 
     void skip_at(std::uint64_t offset, std::size_t n) {
@@ -201,8 +235,7 @@ class StreamParser {
                 }
                 return;
             }
-            const auto sums = fletcher16(p, kHeaderSize + length).bytes();
-            if (p[kHeaderSize + length] != sums[0] || p[kHeaderSize + length + 1] != sums[1]) {
+            if (!fletcher16_matches(p, kHeaderSize + length, p + kHeaderSize + length)) {
                 skip(1);
                 continue;
             }
@@ -246,12 +279,9 @@ class StreamParser {
         if (skip_count_ == 0) {
             return;
         }
-        StreamEvent e;
-        e.kind = StreamEvent::Kind::skip;
-        e.offset = skip_offset_;
-        e.count = skip_count_;
+        const std::uint64_t count = skip_count_;
         skip_count_ = 0;
-        on_event(static_cast<const StreamEvent &>(e));
+        emit_skip_run(on_event, skip_offset_, count);
     }
 
     std::array<std::uint8_t, kMaxPacket> buf_{};
