@@ -13,10 +13,15 @@ from setuptools import Extension, setup
 
 extensions = []
 if os.environ.get("MIPCODEC_NO_EXTENSION", "") in ("", "0"):
-    # _protocol.h (the protocol's constants, generated) is #included by _speedups.c: listed so that
-    # a change rebuilds the extension and the sdist carries it.
+    # _protocol.h (the protocol's constants, generated) and grisu3.h (the float digits) are
+    # #included by _speedups.c: listed so that a change rebuilds the extension and the sdist carries them.
     extensions.append(
-        Extension("mipcodec._speedups", ["mipcodec/_speedups.c"], depends=["mipcodec/_protocol.h"], optional=True)
+        Extension(
+            "mipcodec._speedups",
+            ["mipcodec/_speedups.c"],
+            depends=["mipcodec/_protocol.h", "mipcodec/grisu3.h"],
+            optional=True,
+        )
     )
 
 setup(ext_modules=extensions)

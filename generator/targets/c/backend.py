@@ -41,6 +41,7 @@ _RUNTIME_FILES = {
     "src/samples.c": "src/samples.c",
     "src/wire.h": "src/wire.h",
     "src/wire.c": "src/wire.c",
+    "src/grisu3.h": "src/grisu3.h",
     "src/json_writer.h": "src/json_writer.h",
     "src/json_writer.c": "src/json_writer.c",
     "src/json_reader.h": "src/json_reader.h",

@@ -747,7 +747,10 @@ def _runtime(proto: dict, dest: str) -> dict[str, str]:
     ]
     mapping = {name: f"{dest}/{proto['package']}/{name}" for name in RUNTIME_FILES}
     mapping.update({f"package_tests/{name}": f"{dest}/tests/{name}" for name in PACKAGE_TEST_FILES})
-    return copy_runtime("python", mapping, placeholders)
+    # grisu3.h, #included by _speedups.c: the C runtime's file (one source for the C JSON printer
+    # and the accelerator's), copied verbatim.
+    grisu = copy_runtime("c", {"src/grisu3.h": f"{dest}/{proto['package']}/grisu3.h"})
+    return {**copy_runtime("python", mapping, placeholders), **grisu}
 
 
 def _example(proto: dict) -> dict:

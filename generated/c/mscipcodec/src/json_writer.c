@@ -2,6 +2,7 @@
  * hex. Generated: do not edit. */
 #include "json_writer.h"
 #include "mscipcodec/json.h"
+#include "grisu3.h"
 
 #include <assert.h>
 #include <stdio.h>
@@ -567,7 +568,15 @@ static size_t format_finite(double v, char *buf, size_t cap) {
         len = put(buf, cap, len, '-');
         v = -v;
     }
-    shortest(v, digits, &n, &x);
+    {
+        int last; /* Grisu3 first: value = digits x 10^last; the exact search when it cannot tell */
+        if (grisu3(v, digits, &n, &last)) {
+            digits[n] = '\0';
+            x = n - 1 + last;
+        } else {
+            shortest(v, digits, &n, &x);
+        }
+    }
     while (n > 1 && digits[n - 1] == '0') {
         digits[--n] = '\0';
     }

@@ -24,6 +24,8 @@ RUNTIME = Path(__file__).resolve().parent.parent
 ROOT = RUNTIME.parents[3]
 PACKAGE = "testproto"
 PROTOCOL = RUNTIME / "tests" / "protocol"
+# grisu3.h: the C runtime's (one source for both), copied beside _speedups.c as the package has it.
+GRISU3 = RUNTIME.parents[1] / "c" / "runtime" / "src" / "grisu3.h"
 FRAMING = os.environ.get(PACKAGE.upper() + "_FRAMING", "a")
 if FRAMING not in ("a", "b"):
     raise pytest.UsageError(f"TESTPROTO_FRAMING={FRAMING!r}: expected a or b")
@@ -34,7 +36,7 @@ OUT = ROOT / "build" / "python" / "runtime" / FRAMING
 SETUP = (
     "from setuptools import Extension, setup\n"
     f"setup(name={PACKAGE!r}, ext_modules=[Extension({PACKAGE + '._speedups'!r}, [{PACKAGE + '/_speedups.c'!r}],"
-    f" depends=[{PACKAGE + '/_protocol.h'!r}])])\n"
+    f" depends=[{PACKAGE + '/_protocol.h'!r}, {PACKAGE + '/grisu3.h'!r}])])\n"
 )
 
 
@@ -43,7 +45,7 @@ def _assemble() -> Path:
     pkg.mkdir(parents=True, exist_ok=True)
     for old in pkg.glob("*.py"):
         old.unlink()
-    sources = [*RUNTIME.glob("*.py"), RUNTIME / "_speedups.c", *PROTOCOL.iterdir()]
+    sources = [*RUNTIME.glob("*.py"), RUNTIME / "_speedups.c", GRISU3, *PROTOCOL.iterdir()]
     if FRAMING == "b":
         sources += (PROTOCOL / "framing_b").iterdir()  # copied last: replaces framing a's constants
     for src in sources:
