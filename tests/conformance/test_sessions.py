@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import socket
 import subprocess
+import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -248,3 +249,20 @@ def test_typed_api_over_tcp():
             device.threedm.sensor_to_vehicle_euler.read()
         assert e.value.code == pkg.types.AckCode.INVALID_PARAMETER
     dev.join(10)
+
+
+@pytest.mark.parametrize("package", ["mipcodec", "mscipcodec"])
+def test_the_session_module_is_an_attribute_of_a_fresh_package(package: str) -> None:
+    """`import <package>; <package>.session.Session` in a new interpreter: the package imports its
+    set modules and the session lazily (first use), and `session` stays reachable as before."""
+    from tests.helpers.generated import GENERATED_PYTHON
+
+    code = f"import {package} as p; print(p.session.Session.__name__, p.Device.__module__)"
+    run = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        env={"PYTHONPATH": str(GENERATED_PYTHON / package)},
+    )
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == ["Session", f"{package}.session"]

@@ -654,6 +654,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "modules": sorted([sm["module"] for sm in sets] + ["reserved", "types"]),
             "exports": facts.EXPORTS,
             "lazy_exports": facts.LAZY_EXPORTS,
+            # submodules the package's __getattr__ imports on first use: the sets, types, reserved
+            # and the modules whose names it re-exports lazily (`pkg.session` keeps working)
+            "lazy_modules": sorted([sm["module"] for sm in sets] + ["reserved", "types", *facts.LAZY_EXPORTS]),
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
             **release.stamp(proto),

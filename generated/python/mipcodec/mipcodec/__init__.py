@@ -76,7 +76,8 @@ if TYPE_CHECKING:
 
 # The modules of the sets, types, reserved fields and the session are imported on first use
 # (PEP 562): a tool that decodes a log loads only the sets the log holds (the registry imports
-# them as their fields are looked up).
+# them as their fields are looked up). `mipcodec.session` stays an attribute of the package, as
+# when it was imported eagerly.
 _LAZY_MODULES = frozenset(
     (
         "aiding",
@@ -91,6 +92,7 @@ _LAZY_MODULES = frozenset(
         "gnss_receiver_2",
         "reserved",
         "sensor",
+        "session",
         "shared",
         "system",
         "system_data",

@@ -58,13 +58,15 @@ if TYPE_CHECKING:
 
 # The modules of the sets, types, reserved fields and the session are imported on first use
 # (PEP 562): a tool that decodes a log loads only the sets the log holds (the registry imports
-# them as their fields are looked up).
+# them as their fields are looked up). `mscipcodec.session` stays an attribute of the package, as
+# when it was imported eagerly.
 _LAZY_MODULES = frozenset(
     (
         "base",
         "imu_config",
         "imu_data",
         "reserved",
+        "session",
         "types",
     )
 )

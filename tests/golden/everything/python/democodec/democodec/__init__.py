@@ -58,7 +58,8 @@ if TYPE_CHECKING:
 
 # The modules of the sets, types, reserved fields and the session are imported on first use
 # (PEP 562): a tool that decodes a log loads only the sets the log holds (the registry imports
-# them as their fields are looked up).
+# them as their fields are looked up). `democodec.session` stays an attribute of the package, as
+# when it was imported eagerly.
 _LAZY_MODULES = frozenset(
     (
         "commands",
@@ -66,6 +67,7 @@ _LAZY_MODULES = frozenset(
         "receiver_1",
         "receiver_2",
         "reserved",
+        "session",
         "shared",
         "types",
     )
