@@ -222,7 +222,19 @@ def build_clis(langs: list[str], out: Path) -> dict[str, list[str]]:
         manifest = ROOT / "generated" / "rust" / "mipcodec" / "Cargo.toml"
         log("building the Rust decode CLI (cargo --release)")
         subprocess.run(
-            ["cargo", "build", "--quiet", "--release", "--manifest-path", str(manifest), "--bins"],
+            # --features serial as tests/lang/rust.sh builds them: the same target directory, so the
+            # session tool it would otherwise replace keeps opening serial ports (pseudo-terminals)
+            [
+                "cargo",
+                "build",
+                "--quiet",
+                "--release",
+                "--manifest-path",
+                str(manifest),
+                "--bins",
+                "--features",
+                "serial",
+            ],
             check=True,
             env=dict(os.environ, CARGO_TARGET_DIR=str(target)),
         )
