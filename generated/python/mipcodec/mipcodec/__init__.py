@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "9db3ec27f2ac61ce"
+SPEC_HASH = "f659d4ee93bc405a"
 
 __all__ = [
     "SPEC_HASH",
