@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "f659d4ee93bc405a"
+SPEC_HASH = "81763cb40c73d262"
 
 __all__ = [
     "SPEC_HASH",
