@@ -551,7 +551,8 @@ class Docs:
 
     def _notes(self, pg: Page, notes: list[dict], label: str) -> None:
         for n in notes:
-            pg.p(f"**{KIND_TITLES[n['kind']]}** ({esc(label)}): {esc(n['text'])}")
+            lines = ", ".join(code(f"{r['manual']}:{r['line']}") for r in n.get("lines", []))
+            pg.p(f"**{KIND_TITLES[n['kind']]}** ({esc(label)}): {esc(n['text'])}" + (f" (on {lines})" if lines else ""))
 
     # ------------------------------------------------------------------ one descriptor
     def _frame_segments(self, p: dict, s: dict | None, f: dict | None, data: list[svg.Segment]) -> list[svg.Segment]:
