@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "7ac1f26831f047be"
+SPEC_HASH = "fad6db682047011d"
 
 __all__ = [
     "SPEC_HASH",
