@@ -109,6 +109,8 @@ def test_factory_values_hold_on_their_device_and_start_a_message_format(monkeypa
     monkeypatch.setattr(_sim, "FACTORY", {})
     alpha._replan()
     assert alpha.plan == {}  # no default, no format written: nothing streams
+
+
 def test_identity_flags_are_checked_against_what_the_model_reports():
     # the test protocol reports no identity (its _sim.IDENTITY is empty): every flag is refused
     # with one line naming the device and the item
