@@ -9,7 +9,9 @@ branch of each framing choice: its protocol.yaml over framing a's sets and field
     python -m tests.runtime_specs.render LANG FRAMING      (FRAMING: a or b; from the project root)
 
 renders the LANG package into build/runtime_specs/<FRAMING>/ and prints that directory (the package
-is <dir>/<lang>/testproto/). Only changed files are written, so builds there stay incremental.
+is <dir>/<lang>/testproto/); with --tests (C) it also copies the runtime's tests beside it, into
+<dir>/<lang>/runtime-tests/, with the package's names. Only changed files are written, so builds
+there stay incremental.
 Exit status: 0 rendered, 1 the generator failed (its located message on stderr), 2 bad arguments.
 """
 
@@ -63,12 +65,42 @@ def render(lang: str, framing: str) -> Path:
     return out
 
 
+def copy_tests(lang: str, out: Path) -> Path:
+    """The runtime's own tests of a language whose runtime is written with neutral names (C:
+    codec_/CODEC_, codec/; C++: protopkg), the top-level files of generator/targets/<lang>/runtime/
+    tests/, copied into <out>/<lang>/runtime-tests/ with the test package's names, as the back end
+    copies the runtime into a package (its runtime_replacements). Returns that directory."""
+    if lang == "c":
+        from generator.targets.c.backend import c_prefix, runtime_replacements
+
+        replacements = runtime_replacements(c_prefix(PROTOCOL), PROTOCOL)
+    else:
+        raise ValueError(f"copy_tests({lang!r}): only c")
+    src = ROOT / "generator" / "targets" / lang / "runtime" / "tests"
+    dst = out / lang / "runtime-tests"
+    dst.mkdir(parents=True, exist_ok=True)
+    for f in sorted(src.iterdir()):
+        if not f.is_file():
+            continue
+        text = f.read_text(encoding="utf-8")
+        for old, new in replacements:
+            text = text.replace(old, new)
+        target = dst / f.name
+        if not target.exists() or target.read_text(encoding="utf-8") != text:
+            target.write_text(text, encoding="utf-8")
+    return dst
+
+
 def main(argv: list[str]) -> int:
+    tests = argv[:1] == ["--tests"]
+    argv = argv[1:] if tests else argv
     if len(argv) != 2 or argv[0] not in LANGS or argv[1] not in FRAMINGS:
-        print(f"usage: python -m tests.runtime_specs.render {{{','.join(LANGS)}}} {{a,b}}", file=sys.stderr)
+        print(f"usage: python -m tests.runtime_specs.render [--tests] {{{','.join(LANGS)}}} {{a,b}}", file=sys.stderr)
         return 2
     try:
         out = render(argv[0], argv[1])
+        if tests:
+            copy_tests(argv[0], out)
     except RuntimeError as e:
         print(f"tests/runtime_specs/render.py: {e}", file=sys.stderr)
         return 1

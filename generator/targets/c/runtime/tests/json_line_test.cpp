@@ -1,4 +1,5 @@
-// The JSON line codec (json_codec.c) over the test protocol of stubs/codec/dispatch.h: decoded
+// The JSON line codec (json_codec.c) over the rendered test protocol (tests/runtime_specs/: command
+// set 0x01 with ping 0x01 and rate 0x04, {"hz": u16} on device alpha, {"hz": u32} on beta): decoded
 // fields, per-device variants, decode errors as raw fields, and JSON lines back to the same bytes.
 #include <gtest/gtest.h>
 
@@ -29,16 +30,16 @@ std::vector<uint8_t> wire(uint64_t v, size_t n) {
 
 TEST(JsonCodec, DecodedFieldsAndDeviceVariantsRoundTrip) {
     const std::vector<uint8_t> ping = packet(0x01, {{0x01, {}}});
-    const std::vector<uint8_t> alpha = packet(0x01, {{0x02, wire(500, 2)}});
-    const std::vector<uint8_t> beta = packet(0x01, {{0x02, wire(70000, 4)}});
+    const std::vector<uint8_t> alpha = packet(0x01, {{0x04, wire(500, 2)}});
+    const std::vector<uint8_t> beta = packet(0x01, {{0x04, wire(70000, 4)}});
     EXPECT_EQ(line_of(ping),
               "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
     EXPECT_EQ(line_of(alpha),
-              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"device\":"
               "\"alpha\",\"values\":{\"hz\":500}}]}\n");
     // the first variant that decodes wins; a device chooses its own variant
     EXPECT_EQ(line_of(beta),
-              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":"
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"device\":"
               "\"beta\",\"values\":{\"hz\":70000}}]}\n");
     EXPECT_NE(line_of(alpha, CODEC_DEVICE_BETA).find("\"error\":\"hz: needs 4 bytes at offset 0, 2 left\""),
               std::string::npos);
@@ -51,9 +52,9 @@ TEST(JsonCodec, DecodedFieldsAndDeviceVariantsRoundTrip) {
 }
 
 TEST(JsonCodec, UndecodableDataIsARawFieldWithTheFirstVariantsError) {
-    const std::vector<uint8_t> pkt = packet(0x01, {{0x02, {1, 2, 3}}});
+    const std::vector<uint8_t> pkt = packet(0x01, {{0x04, {1, 2, 3}}});
     EXPECT_EQ(line_of(pkt),
-              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"010203\",\"error\":"
+              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"data\":\"010203\",\"error\":"
               "\"1 unexpected bytes at offset 2\"}]}\n");
     std::vector<uint8_t> back;
     std::string error;
@@ -63,14 +64,14 @@ TEST(JsonCodec, UndecodableDataIsARawFieldWithTheFirstVariantsError) {
 
 TEST(JsonCodec, EncodeErrorsNameTheProblem) {
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"values\":{\"hz\":1}}]}",
+        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"values\":{\"hz\":1}}]}",
          "\"device\" is required"},
-        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":\"gamma\","
+        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"device\":\"gamma\","
          "\"values\":{\"hz\":1}}]}",
          "not a device with a variant of \"rate\""},
         {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"pong\",\"values\":{}}]}",
          "descriptor 1 in set 1 is \"ping\""},
-        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"rate\",\"device\":\"alpha\","
+        {"{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"device\":\"alpha\","
          "\"values\":{\"hz\":70000}}]}",
          "hz"},
     };
