@@ -3,13 +3,14 @@ render from tests/runtime_specs/, not hand-written stand-ins of generated module
 runtime takes from generated code is what the page lists and what the templates render.
 
 - No file under generator/targets/<lang>/runtime/ is named as a file a template renders (a
-  stand-in of a generated module), except the C and C++ stand-ins not yet moved off (KNOWN).
+  stand-in of a generated module).
 - Python: every symbol the runtime imports from a generated module is listed on the page, and
   every listed symbol is defined by the module the back end renders for the test protocol.
 - C: every symbol the runtime uses that only generated code defines is listed, every listed
   symbol is in the rendered file the page names and is stated in runtime/tests/contract.c (which
   tests/lang/c.sh runtime compiles and links against the rendered package).
-- C++: every listed symbol is in the rendered header the page names.
+- C++: every listed symbol is in the rendered header the page names and is checked in
+  runtime/tests/contract.cpp (built by tests/lang/cpp.sh runtime against the rendered package).
 - Rust: every listed item is bound in runtime/tests/contract.rs (which tests/lang/rust.sh runtime
   compiles against the rendered crate, so that the crate provides each with its type).
 """
@@ -38,25 +39,6 @@ LANGS = ("c", "cpp", "python", "rust")
 GENERIC = {"CMakeLists.txt", "README.md", "Cargo.toml", "setup.py", "pyproject.toml", "MANIFEST.in"}
 # Template outputs whose file name is not the template's: the package's own header.
 EXTRA_OUTPUTS = {"c": {"codec.h"}, "cpp": {"protopkg.hpp"}, "python": set(), "rust": set()}
-# Hand-written stand-ins still in use (docs/runtime-contract.md "Not yet moved off stand-ins"):
-# remove an entry with its file; nothing may be added.
-KNOWN = {
-    "c": set(),
-    "cpp": {
-        "tests/package/canonical_cases.hpp",
-        "tests/package/protopkg/devices.hpp",
-        "tests/package/protopkg/fields.hpp",
-        "tests/package/protopkg/layouts_json.hpp",
-        "tests/package/protopkg/lookup_tables.hpp",
-        "tests/package/protopkg/protopkg.hpp",
-        "tests/package/protopkg/session_facts.hpp",
-        "tests/package/protopkg/types_json.hpp",
-        "tests/protocols/alpha/protopkg/framing.hpp",
-        "tests/protocols/beta/protopkg/framing.hpp",
-    },
-    "python": set(),
-    "rust": set(),
-}
 SECTIONS = {"python": "Python", "rust": "Rust", "c": "C", "cpp": "C++"}
 
 
@@ -70,7 +52,7 @@ def contract(lang: str) -> dict[str, set[str]]:
     """The page's table of a language: module/file (first code span of the first column) -> the
     identifiers of the code spans of the last column."""
     text = PAGE.read_text(encoding="utf-8")
-    m = re.search(rf"^## {re.escape(SECTIONS[lang])}\n(.*?)(?=^## )", text, re.M | re.S)
+    m = re.search(rf"^## {re.escape(SECTIONS[lang])}\n(.*?)(?=^## |\Z)", text, re.M | re.S)
     assert m, f"docs/runtime-contract.md: no section ## {SECTIONS[lang]}"
     table: dict[str, set[str]] = {}
     for line in m.group(1).splitlines():
@@ -89,11 +71,10 @@ def test_no_hand_written_stand_ins_of_generated_modules(lang: str) -> None:
     rt = runtime_dir(lang)
     outputs = template_outputs(lang)
     found = {p.relative_to(rt).as_posix() for p in rt.rglob("*") if p.is_file() and p.name in outputs}
-    assert found - KNOWN[lang] == set(), (
-        f"{lang} runtime: files named as generated ones (a stand-in?); the runtime tests run against "
-        f"the package rendered from tests/runtime_specs/ (docs/runtime-contract.md)"
+    assert not found, (
+        f"{lang} runtime: {sorted(found)} named as generated files (a stand-in?); the runtime tests run "
+        f"against the package rendered from tests/runtime_specs/ (docs/runtime-contract.md)"
     )
-    assert KNOWN[lang] - found == set(), "a known stand-in is gone: remove it from KNOWN and the page"
 
 
 @pytest.fixture(scope="module")
@@ -194,12 +175,15 @@ def test_c_runtime_uses_only_the_listed_symbols_and_the_package_has_them() -> No
     assert not unstated, f"runtime/tests/contract.c does not state {sorted(unstated)}"
 
 
-def test_cpp_package_has_the_listed_symbols() -> None:
+def test_cpp_package_has_the_listed_symbols_and_contract_cpp_checks_them() -> None:
     pkg = render.render("cpp", "a") / "cpp" / "testproto" / "include" / "testproto"
     for header, names in contract("cpp").items():
         text = (pkg / header.replace("<pkg>", "testproto")).read_text(encoding="utf-8")
         missing = {n for n in names if not re.search(rf"\b{n}\b", text)}
         assert not missing, f"rendered {header} lacks {sorted(missing)}"
+    stated = (runtime_dir("cpp") / "tests" / "contract.cpp").read_text(encoding="utf-8")
+    unstated = {n for names in contract("cpp").values() for n in names if not re.search(rf"\b{n}\b", stated)}
+    assert not unstated, f"runtime/tests/contract.cpp does not state {sorted(unstated)}"
 
 
 def test_rust_contract_binds_every_listed_item() -> None:

@@ -62,7 +62,7 @@ runtime_tests() {
         xargs "$format" --style="file:$ROOT/.clang-format" --dry-run -Werror
     for framing in a b; do
         out="$(cd "$ROOT" && "$py" -m tests.runtime_specs.render --tests c "$framing")"
-        tests="$out/c/runtime-tests"
+        tests="$out/tests-c"
         build="$ROOT/build/c-runtime/$framing"
         if [ ! -f "$build/build.ninja" ]; then
             cmake -G Ninja -S "$tests" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DPACKAGE_DIR="$out/c/testproto" >&2

@@ -79,7 +79,7 @@ packages() {
 # a and b; docs/runtime-contract.md) into build/runtime_specs/<framing>/rust/testproto/: that crate
 # (the runtime's files copied in) lint-free with and without std and documented, and the runtime's
 # unit tests (runtime/tests/, manifest runtime/Cargo.toml copied to build/runtime_specs/<framing>/
-# rust/runtime-tests/) run against it. No hand-written stand-ins of generated modules.
+# tests-rust/) run against it. No hand-written stand-ins of generated modules.
 test_runtime() {
     local framing out crate tests target
     echo "== runtime: rustfmt --check" >&2
@@ -87,7 +87,7 @@ test_runtime() {
     for framing in a b; do
         out="$(cd "$ROOT" && "$PY" -m tests.runtime_specs.render rust "$framing")"
         crate="$out/rust/testproto/Cargo.toml"
-        tests="$out/rust/runtime-tests"
+        tests="$out/tests-rust"
         target="$RUNTIME_TARGET_DIR-$framing"
         mkdir -p "$tests"
         cmp -s "$RUNTIME/Cargo.toml" "$tests/Cargo.toml" || cp "$RUNTIME/Cargo.toml" "$tests/Cargo.toml"

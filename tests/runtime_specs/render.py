@@ -9,8 +9,8 @@ branch of each framing choice: its protocol.yaml over framing a's sets and field
     python -m tests.runtime_specs.render LANG FRAMING      (FRAMING: a or b; from the project root)
 
 renders the LANG package into build/runtime_specs/<FRAMING>/ and prints that directory (the package
-is <dir>/<lang>/testproto/); with --tests (C) it also copies the runtime's tests beside it, into
-<dir>/<lang>/runtime-tests/, with the package's names. Only changed files are written, so builds
+is <dir>/<lang>/testproto/); with --tests (C, C++) it also copies the runtime's tests beside it, into
+<dir>/tests-<lang>/, with the package's names. Only changed files are written, so builds
 there stay incremental.
 Exit status: 0 rendered, 1 the generator failed (its located message on stderr), 2 bad arguments.
 """
@@ -68,16 +68,21 @@ def render(lang: str, framing: str) -> Path:
 def copy_tests(lang: str, out: Path) -> Path:
     """The runtime's own tests of a language whose runtime is written with neutral names (C:
     codec_/CODEC_, codec/; C++: protopkg), the top-level files of generator/targets/<lang>/runtime/
-    tests/, copied into <out>/<lang>/runtime-tests/ with the test package's names, as the back end
+    tests/, copied into <out>/tests-<lang>/ (beside the package's <out>/<lang>/, which the generator
+    owns and clears of files it did not render) with the test package's names, as the back end
     copies the runtime into a package (its runtime_replacements). Returns that directory."""
     if lang == "c":
         from generator.targets.c.backend import c_prefix, runtime_replacements
 
         replacements = runtime_replacements(c_prefix(PROTOCOL), PROTOCOL)
+    elif lang == "cpp":
+        from generator.targets.cpp.backend import ident, runtime_names
+
+        replacements = runtime_names(PROTOCOL, ident(PROTOCOL))
     else:
-        raise ValueError(f"copy_tests({lang!r}): only c")
+        raise ValueError(f"copy_tests({lang!r}): only c and cpp")
     src = ROOT / "generator" / "targets" / lang / "runtime" / "tests"
-    dst = out / lang / "runtime-tests"
+    dst = out / f"tests-{lang}"
     dst.mkdir(parents=True, exist_ok=True)
     for f in sorted(src.iterdir()):
         if not f.is_file():
