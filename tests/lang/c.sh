@@ -3,6 +3,8 @@
 #   tests/lang/c.sh build                         configure and build every package
 #   tests/lang/c.sh test                          the runtime's own tests in place, then build every
 #                                                 package and run its googletest binary
+#   tests/lang/c.sh runtime                       the runtime's own tests only, against the test protocol
+#                                                 rendered from tests/runtime_specs/ (both framings)
 #   tests/lang/c.sh decode FILE|- [--device ID]   run <package>-decode (builds first if needed)
 #   tests/lang/c.sh encode                        run <package>-encode: JSON lines on stdin -> bytes
 #   tests/lang/c.sh example FILE                  run <package>-getting-started FILE (builds first if needed)
@@ -47,20 +49,27 @@ ensure_built() {
     build_one "$PACKAGE"
 }
 
-# The runtime's own tests, built in place from generator/targets/c/runtime/ (no regeneration):
-# its formatting checked, then one googletest binary per hand-written test protocol (big- and
-# little-endian).
+# The runtime's own tests (generator/targets/c/runtime/tests/; no regeneration of generated/):
+# its formatting checked, then for each framing of the test protocol rendered by the C back end
+# from tests/runtime_specs/ (docs/runtime-contract.md) into build/runtime_specs/<framing>/c/
+# testproto/, the tests copied beside it with the package's names and one googletest binary built
+# against that package (build dir build/c-runtime/<framing>/). No hand-written stand-ins.
 runtime_tests() {
-    local runtime="$ROOT/generator/targets/c/runtime" out="$ROOT/build/c-runtime" variant
-    local src="$runtime/tests" format="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
+    local runtime="$ROOT/generator/targets/c/runtime" framing out tests build
+    local format="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}" py="$ROOT/.venv/bin/python"
+    [ -x "$py" ] || py="$(command -v python3)"
     find "$runtime" -name '*.[ch]' -o -name '*.[ch]pp' | sort |
         xargs "$format" --style="file:$ROOT/.clang-format" --dry-run -Werror
-    if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug >&2
-    fi
-    cmake --build "$out" >&2
-    for variant in big_endian little_endian; do
-        "$out/runtime_tests_$variant" --gtest_brief=1
+    for framing in a b; do
+        out="$(cd "$ROOT" && "$py" -m tests.runtime_specs.render --tests c "$framing")"
+        tests="$out/tests-c"
+        build="$ROOT/build/c-runtime/$framing"
+        if [ ! -f "$build/build.ninja" ]; then
+            cmake -G Ninja -S "$tests" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DPACKAGE_DIR="$out/c/testproto" >&2
+        fi
+        cmake --build "$build" >&2
+        echo "== runtime, framing $framing" >&2
+        "$build/runtime_tests" --gtest_brief=1
     done
 }
 
@@ -131,7 +140,7 @@ app() {
 }
 
 usage() {
-    echo "usage: tests/lang/c.sh build | test | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ... | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
+    echo "usage: tests/lang/c.sh build | test | runtime | decode FILE [--device ID] | encode | example FILE | session --connect ADDRESS ... | configure ADDRESS [COUNT] | app NAME [ARGS...]" >&2
     exit 2
 }
 
@@ -139,6 +148,9 @@ usage() {
 cmd="$1"
 shift
 case "$cmd" in
+runtime)
+    runtime_tests
+    ;;
 build)
     for pkg in $(packages); do build_one "$pkg"; done
     ;;

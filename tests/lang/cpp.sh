@@ -33,24 +33,32 @@ configure() { # package
 }
 
 # The hand-written runtime (generator/targets/cpp/runtime/), checked where it is edited, without
-# regenerating: clang-format clean, and its googletest suite built (strict warnings, under
-# AddressSanitizer and UndefinedBehaviorSanitizer) and run once per test protocol.
+# regenerating generated/: clang-format clean, then for each framing of the test protocol rendered
+# by the C++ back end from tests/runtime_specs/ (docs/runtime-contract.md) into
+# build/runtime_specs/<framing>/cpp/testproto/, the runtime's tests copied beside it with the
+# package's names, built against it (strict warnings, AddressSanitizer and
+# UndefinedBehaviorSanitizer; build/cpp-runtime/<framing>/) and run. No hand-written stand-ins.
 runtime_tests() {
-  local rt="$ROOT/generator/targets/cpp/runtime" out="$ROOT/build/cpp-runtime" fmt
+  local rt="$ROOT/generator/targets/cpp/runtime" fmt py framing out build t
   fmt="${CLANG_FORMAT:-$ROOT/.venv/bin/clang-format}"
   [ -x "$fmt" ] || fmt="$(command -v clang-format)"
+  py="$ROOT/.venv/bin/python"
+  [ -x "$py" ] || py="$(command -v python3)"
   (cd "$ROOT" && "$fmt" --style=file --dry-run --Werror "$rt"/include/protopkg/*.hpp "$rt"/tools/*.cpp \
-    "$rt"/package_tests/* "$rt"/tests/*.cpp "$rt"/tests/*.hpp "$rt"/tests/*/*/protopkg/*.hpp \
-    "$rt"/tests/package/*.hpp "$rt"/tests/package/protopkg/*.hpp)
-  if [ ! -f "$out/build.ninja" ]; then
-    cmake -G Ninja -S "$rt/tests" -B "$out" \
-      -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
-  fi
-  cmake --build "$out" >&2
-  local t
-  for t in "$out"/runtime-tests-*; do
-    "$t" --gtest_brief=1
+    "$rt"/package_tests/* "$rt"/tests/*.cpp "$rt"/tests/*.hpp)
+  for framing in a b; do
+    out="$(cd "$ROOT" && "$py" -m tests.runtime_specs.render --tests cpp "$framing")"
+    build="$ROOT/build/cpp-runtime/$framing"
+    if [ ! -f "$build/build.ninja" ]; then
+      cmake -G Ninja -S "$out/tests-cpp" -B "$build" -DPACKAGE_DIR="$out/cpp/testproto" \
+        -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+        -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
+    fi
+    cmake --build "$build" >&2
+    for t in "$build"/runtime-tests*; do
+      echo "== runtime, framing $framing: $(basename "$t")" >&2
+      "$t" --gtest_brief=1
+    done
   done
 }
 

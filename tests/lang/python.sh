@@ -108,9 +108,10 @@ test)
         echo "== $(basename "$dir"): mypy --strict"
         (cd "$dir" && "$PY" -m mypy --strict --explicit-package-bases --no-error-summary --cache-dir "$MYPY_CACHE" "$(basename "$dir")" examples/*.py)
     done
-    # The runtime's unit tests, in place (generator/targets/python/runtime/tests/: a test protocol,
-    # no regeneration), before the generated packages' tests: with each of the test protocol's two
-    # framings (TESTPROTO_FRAMING), pure and with the C accelerator (built in build/python/runtime/).
+    # The runtime's unit tests (generator/targets/python/runtime/tests/), before the generated
+    # packages' tests, on the test protocol rendered by the Python back end from tests/runtime_specs/
+    # into build/runtime_specs/<framing>/python/testproto/ (docs/runtime-contract.md): with each of
+    # its two framings (TESTPROTO_FRAMING), pure and with the C accelerator (built there).
     for framing in a b; do
         echo "== runtime, framing $framing: pure Python (TESTPROTO_PURE=1)"
         (cd "$ROOT" && env TESTPROTO_FRAMING="$framing" TESTPROTO_PURE=1 "$PY" -m pytest -q -p no:cacheprovider generator/targets/python/runtime/tests)

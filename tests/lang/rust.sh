@@ -19,8 +19,10 @@
 #                                                 firmware image for thumbv7em-none-eabihf (the
 #                                                 no_std consumer, no allocator); prints its size
 #   tests/lang/rust.sh runtime                    the runtime where it is edited, generator/targets/rust/
-#                                                 runtime/ (no regeneration needed): rustfmt --check,
-#                                                 clippy, rustdoc and cargo test
+#                                                 runtime/ (no regeneration of generated/ needed):
+#                                                 rustfmt --check, then for each framing of the test
+#                                                 protocol rendered from tests/runtime_specs/: clippy,
+#                                                 rustdoc and the runtime's tests (runtime/tests/)
 #   tests/lang/rust.sh decode FILE [--device ID]  run <package>-decode (FILE may be -)
 #   tests/lang/rust.sh encode                     run <package>-encode (stdin -> stdout)
 #   tests/lang/rust.sh example FILE               cargo run --example getting_started -- FILE
@@ -39,9 +41,11 @@ PACKAGE="${RUST_PACKAGE:-mipcodec}"
 export CARGO_TARGET_DIR="$ROOT/build/rust/target"
 # A separate target dir for the core-only build, so feature changes do not force rebuilds.
 CORE_TARGET_DIR="$ROOT/build/rust/target-core"
-# The runtime crate (hand-written, tested in place without a regeneration) and its target dir.
+# The runtime (src/, copied into every crate) and its unit tests (tests/, with the manifest
+# Cargo.toml that runs them against the rendered test protocol); a target dir per framing.
 RUNTIME="$ROOT/generator/targets/rust/runtime"
 RUNTIME_TARGET_DIR="$ROOT/build/rust/target-runtime"
+if [ -x "$ROOT/.venv/bin/python" ]; then PY="$ROOT/.venv/bin/python"; else PY="$(command -v python3)"; fi
 
 # cargo package's output and the out-of-tree consumers (copied from CONSUMER_SRC).
 PACKAGE_TARGET_DIR="$ROOT/build/rust/target-package"
@@ -70,20 +74,33 @@ packages() {
     done
 }
 
-# The runtime where it is edited, against the tiny protocol of runtime/harness/: formatted as
-# the generator formats what it copies, lint-free with and without std, and its unit tests.
+# The runtime where it is edited, formatted as the generator formats what it copies, then against
+# the test protocol `testproto` rendered by the Rust back end from tests/runtime_specs/ (framings
+# a and b; docs/runtime-contract.md) into build/runtime_specs/<framing>/rust/testproto/: that crate
+# (the runtime's files copied in) lint-free with and without std and documented, and the runtime's
+# unit tests (runtime/tests/, manifest runtime/Cargo.toml copied to build/runtime_specs/<framing>/
+# tests-rust/) run against it. No hand-written stand-ins of generated modules.
 test_runtime() {
-    local m="$RUNTIME/Cargo.toml"
+    local framing out crate tests target
     echo "== runtime: rustfmt --check" >&2
     find "$RUNTIME" -name '*.rs' -print0 | xargs -0 rustfmt --check --edition 2021
-    echo "== runtime: clippy" >&2
-    CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo clippy --quiet --manifest-path "$m" --all-targets -- -D warnings
-    echo "== runtime: clippy (core only)" >&2
-    CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo clippy --quiet --manifest-path "$m" --lib --no-default-features -- -D warnings
-    echo "== runtime: doc (warnings are errors)" >&2
-    CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps --manifest-path "$m"
-    echo "== runtime: test" >&2
-    CARGO_TARGET_DIR="$RUNTIME_TARGET_DIR" cargo test --quiet --manifest-path "$m"
+    for framing in a b; do
+        out="$(cd "$ROOT" && "$PY" -m tests.runtime_specs.render rust "$framing")"
+        crate="$out/rust/testproto/Cargo.toml"
+        tests="$out/tests-rust"
+        target="$RUNTIME_TARGET_DIR-$framing"
+        mkdir -p "$tests"
+        cmp -s "$RUNTIME/Cargo.toml" "$tests/Cargo.toml" || cp "$RUNTIME/Cargo.toml" "$tests/Cargo.toml"
+        echo "== runtime, framing $framing: clippy" >&2
+        CARGO_TARGET_DIR="$target" cargo clippy --quiet --manifest-path "$crate" --all-targets -- -D warnings
+        echo "== runtime, framing $framing: clippy (core only)" >&2
+        CARGO_TARGET_DIR="$target" cargo clippy --quiet --manifest-path "$crate" --lib --no-default-features -- -D warnings
+        echo "== runtime, framing $framing: doc (warnings are errors)" >&2
+        CARGO_TARGET_DIR="$target" RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps --manifest-path "$crate"
+        echo "== runtime, framing $framing: the runtime's tests (clippy, test)" >&2
+        CARGO_TARGET_DIR="$target" cargo clippy --quiet --manifest-path "$tests/Cargo.toml" --all-targets -- -D warnings
+        CARGO_TARGET_DIR="$target" cargo test --quiet --manifest-path "$tests/Cargo.toml"
+    done
 }
 
 # The crate with the fewest source bytes (verified by `package`, built by `msrv`: one is enough,

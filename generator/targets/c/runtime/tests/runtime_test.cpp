@@ -1,8 +1,8 @@
 // Tests of the C runtime in place: checksum, packet builder, stream parser (chunking, garbage,
 // resynchronisation, end of stream), field iterator, decode error messages, the wire reader and
 // writer in the protocol's byte order, canonical JSON numbers and strings, the JSON reader, samples.
-// Built once per test protocol (big_endian/, little_endian/): everything that differs between
-// protocols is read from codec/protocol.h, as the runtime itself does.
+// Built once per framing of the rendered test protocol (tests/runtime_specs/): everything that
+// differs between protocols is read from codec/protocol.h, as the runtime itself does.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -426,24 +426,24 @@ TEST(FieldIterator, TrailingEntries) {
 #endif
 }
 
-// Field (set 0x02, descriptor 0x05) is irregular in the little-endian test protocol (its length
-// byte is one less than the data length) and regular in the other: the builder and the iterator
-// agree on it either way, and only in its own set.
+// Field (set 0x80, descriptor 0x06: odd) is irregular in the test protocol (its length byte is one
+// less than the data length) and descriptor 0x06 of set 0x01 is regular: the builder and the
+// iterator agree on it either way, and only in its own set.
 TEST(FieldIterator, IrregularLengthsRoundTrip) {
-    for (uint8_t set : {0x01, 0x02}) {
-        std::vector<uint8_t> pkt = packet(set, {{0x05, {1, 2, 3}}, {0x06, {4}}});
+    for (uint8_t set : {0x01, 0x80}) {
+        std::vector<uint8_t> pkt = packet(set, {{0x06, {1, 2, 3}}, {0x07, {4}}});
         ASSERT_FALSE(pkt.empty());
         const uint8_t *payload = codec_packet_payload(pkt.data());
-        EXPECT_EQ(payload[CODEC_FIELD_LENGTH_OFFSET], 3 + codec_field_length_adjust(set, 0x05));
+        EXPECT_EQ(payload[CODEC_FIELD_LENGTH_OFFSET], 3 + codec_field_length_adjust(set, 0x06));
         codec_field_iter_t it;
         codec_field_entry_t e;
         codec_field_iter_init(&it, set, payload, codec_packet_payload_length(pkt.data()));
         ASSERT_TRUE(codec_field_iter_next(&it, &e));
         EXPECT_EQ(e.kind, CODEC_ENTRY_FIELD);
-        EXPECT_EQ(e.descriptor, 0x05);
+        EXPECT_EQ(e.descriptor, 0x06);
         EXPECT_EQ(e.length, 3u);
         ASSERT_TRUE(codec_field_iter_next(&it, &e));
-        EXPECT_EQ(e.descriptor, 0x06);
+        EXPECT_EQ(e.descriptor, 0x07);
         EXPECT_EQ(e.length, 1u);
         EXPECT_FALSE(codec_field_iter_next(&it, &e));
     }

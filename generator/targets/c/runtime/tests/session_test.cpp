@@ -1,6 +1,8 @@
-// The session core (src/session.c) and the blocking link (src/link.c) in place, on the stub
-// protocol (stubs/session_facts.c): matching, timeouts, the timed inter-packet rule, refusals,
-// ack suppression, the pending queue. The corpus (tests/sessions/) runs in every package's suite.
+// The session core (src/session.c) and the blocking link (src/link.c), on the rendered test
+// protocol (tests/runtime_specs/: ping on every device; rate per device, alpha's reply allowed hz
+// ms more, beta's answered with the reply field 0x84 unless hz is 0, which suppresses its ack):
+// matching, timeouts, the timed inter-packet rule, refusals, ack suppression, the pending queue. The corpus
+// (tests/sessions/) runs in every package's suite.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -78,7 +80,7 @@ struct Fixture {
 codec_field_value_t ping() {
     codec_field_value_t v;
     memset(&v, 0, sizeof v);
-    v.id = CODEC_FIELD_PING;
+    v.id = CODEC_FIELD_CONTROL_PING;
     return v;
 }
 
@@ -126,7 +128,7 @@ TEST(Session, RefusalsSuppressionAndFullQueue) {
     Fixture f(CODEC_DEVICE_BETA, 1);
     codec_field_value_t alpha;
     memset(&alpha, 0, sizeof alpha);
-    alpha.id = CODEC_FIELD_RATE_ALPHA;
+    alpha.id = CODEC_FIELD_CONTROL_RATE_ALPHA;
     codec_started_t st = f.start(alpha, 0, 1);
     EXPECT_TRUE(st.done);
     EXPECT_EQ(st.packet_len, 0u);
@@ -134,20 +136,20 @@ TEST(Session, RefusalsSuppressionAndFullQueue) {
     EXPECT_STREQ(st.result.error, "rate: this layout is for alpha, not beta");
     codec_field_value_t beta;
     memset(&beta, 0, sizeof beta);
-    beta.id = CODEC_FIELD_RATE_BETA;
+    beta.id = CODEC_FIELD_CONTROL_RATE_BETA;
     st = f.start(beta, 0, 2);
     EXPECT_TRUE(st.done);
     EXPECT_GT(st.packet_len, 0u);
     EXPECT_EQ(st.result.kind, CODEC_RESULT_SENT);
-    beta.u.rate_beta_hz = 10;
+    beta.u.control_rate_beta.hz = 10;
     st = f.start(beta, 0, 3);
     EXPECT_FALSE(st.done);
     st = f.start(ping(), 0, 4);
     EXPECT_EQ(st.result.kind, CODEC_RESULT_REFUSED);
     EXPECT_STREQ(st.result.error, "1 commands already pending");
-    // The ack comes without the expected reply field 0x82: invalid.
-    f.feed(packet({{0xF1, {0x02, 0x00}}}), 5);
-    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"invalid 3 code 0 missing reply field 130"}));
+    // The ack comes without the expected reply field 0x84: invalid.
+    f.feed(packet({{0xF1, {0x04, 0x00}}}), 5);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"invalid 3 code 0 missing reply field 132"}));
 }
 
 // A transport over two byte queues and a fake clock: the device answers each ping at once.

@@ -1,6 +1,7 @@
-// Runtime tests of dispatch.hpp and json_lines.hpp on the stub package (package/protopkg/, with the
-// alpha framing): the canonical line of each kind of field, per-device variants, and the errors
-// of encode_json_line.
+// Runtime tests of dispatch.hpp and json_lines.hpp on the test protocol rendered from
+// tests/runtime_specs/ (sensor reading: u16 count, s8 offset, bool valid; control rate per device,
+// a u16 on alpha, a u32 on beta): the canonical line of each kind of field, per-device variants,
+// and the errors of encode_json_line.
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -22,15 +23,25 @@ Bytes one_packet(pkg::PacketBuilder &b) {
     return Bytes(p.data, p.data + p.size);
 }
 
+std::string hex(const std::uint8_t *data, std::size_t n) {
+    static const char digits[] = "0123456789abcdef";
+    std::string out;
+    for (std::size_t i = 0; i < n; ++i) {
+        out += digits[data[i] >> 4];
+        out += digits[data[i] & 0x0F];
+    }
+    return out;
+}
+
 // Issue 28: a typed field of another descriptor set would be another command on the wire.
 TEST(Builder, TypedAddRefusesALayoutOfAnotherSet) {
     pkg::PacketBuilder other(0x0C);
-    EXPECT_EQ(other.add(pkg::stub::Ping{}), pkg::EncodeError::wrong_set);
+    EXPECT_EQ(other.add(pkg::control::Ping{}), pkg::EncodeError::wrong_set);
     EXPECT_EQ(other.error(), pkg::EncodeError::wrong_set);
     EXPECT_EQ(other.payload_size(), 0u);
     EXPECT_STREQ(pkg::to_string(other.error()), "the field belongs to another descriptor set");
-    pkg::PacketBuilder same(pkg::stub::Ping::kSet);
-    EXPECT_EQ(same.add(pkg::stub::Ping{}), pkg::EncodeError::none);
+    pkg::PacketBuilder same(pkg::control::Ping::kSet);
+    EXPECT_EQ(same.add(pkg::control::Ping{}), pkg::EncodeError::none);
     EXPECT_GT(same.payload_size(), 0u);
 }
 
@@ -48,40 +59,48 @@ std::string encode_error(const std::string &line) {
 }
 
 TEST(JsonLines, DecodedRawAndTrailingFields) {
-    pkg::PacketBuilder b(0x01);
-    ASSERT_EQ(b.add(pkg::stub::Ping{0x1234, 7}), pkg::EncodeError::none);
+    pkg::PacketBuilder b(pkg::sensor::Reading::kSet);
+    pkg::sensor::Reading reading;
+    reading.count = 0x1234;
+    reading.offset = 7;
+    reading.valid = true;
+    ASSERT_EQ(b.add(reading), pkg::EncodeError::none);
     const std::uint8_t junk[] = {0xAB};
     ASSERT_EQ(b.add_raw_field(0x7F, junk, 1), pkg::EncodeError::none); // unknown descriptor
-    const std::uint8_t bad_bool[] = {2};
-    ASSERT_EQ(b.add_raw_field(0x03, bad_bool, 1), pkg::EncodeError::none); // Switch: not a bool
+    const std::uint8_t bad_bool[] = {0, 0, 0, 2};
+    ASSERT_EQ(b.add_raw_field(0x01, bad_bool, 4), pkg::EncodeError::none); // reading: valid not a bool
     const std::uint8_t trailing[] = {0x09};
     ASSERT_EQ(b.append(trailing, 1), pkg::EncodeError::none);
     const Bytes bytes = one_packet(b);
+    const std::size_t at = 3 * pkg::kFieldHeaderSize + 4 + 1 + 4; // where the trailing byte is
     EXPECT_EQ(
         line_of(bytes),
-        "{\"offset\":0,\"set\":1,\"fields\":["
-        "{\"descriptor\":1,\"name\":\"ping\",\"values\":{\"value\":4660,\"flags\":7}},"
+        "{\"offset\":0,\"set\":128,\"fields\":["
+        "{\"descriptor\":1,\"name\":\"reading\",\"values\":{\"count\":4660,\"offset\":7,\"valid\":true}},"
         "{\"descriptor\":127,\"data\":\"ab\",\"error\":\"unknown descriptor\"},"
-        "{\"descriptor\":3,\"data\":\"02\",\"error\":\"on: invalid bool value 2 at offset 0\"},"
-        "{\"trailing\":\"09\",\"error\":\"field header at payload offset 11 needs 2 bytes, 1 left\"}]}");
+        "{\"descriptor\":1,\"data\":\"00000002\",\"error\":\"valid: invalid bool value 2 at offset 3\"},"
+        "{\"trailing\":\"09\",\"error\":\"field header at payload offset " +
+            std::to_string(at) + " needs 2 bytes, 1 left\"}]}");
     EXPECT_EQ(protopkg_test::encode_lines({line_of(bytes)}), bytes);
 }
 
 TEST(JsonLines, PerDeviceLayouts) {
     pkg::PacketBuilder b(0x01);
-    ASSERT_EQ(b.add(pkg::stub::InfoCv{300, -2}), pkg::EncodeError::none);
+    pkg::control::RateBeta rate;
+    rate.hz = 70000;
+    ASSERT_EQ(b.add(rate), pkg::EncodeError::none);
     const Bytes bytes = one_packet(b);
-    // The first layout that decodes the data wins (gx needs 1 byte: cv's 4 bytes are too many),
-    // unless a device is chosen.
-    const std::string cv =
-        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"info\",\"device\":\"cv\","
-        "\"values\":{\"level\":300,\"offset\":-2}}]}";
-    EXPECT_EQ(line_of(bytes), cv);
-    EXPECT_EQ(line_of(bytes, "cv"), cv);
-    EXPECT_EQ(line_of(bytes, "gx"),
-              "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"data\":\"012cfffe\","
-              "\"error\":\"3 unexpected bytes at offset 1\"}]}");
-    EXPECT_EQ(protopkg_test::encode_lines({cv}), bytes);
+    // The first layout that decodes the data wins (alpha needs 2 bytes: beta's 4 bytes are too
+    // many), unless a device is chosen.
+    const std::string beta =
+        "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\",\"device\":\"beta\","
+        "\"values\":{\"hz\":70000}}]}";
+    EXPECT_EQ(line_of(bytes), beta);
+    EXPECT_EQ(line_of(bytes, "beta"), beta);
+    EXPECT_EQ(line_of(bytes, "alpha"), "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"data\":\"" +
+                                           hex(bytes.data() + pkg::kHeaderSize + pkg::kFieldHeaderSize, 4) +
+                                           "\",\"error\":\"2 unexpected bytes at offset 2\"}]}");
+    EXPECT_EQ(protopkg_test::encode_lines({beta}), bytes);
 }
 
 TEST(JsonLines, SkipRunsAndUnknownSets) {
@@ -133,15 +152,15 @@ TEST(JsonLines, EncodeErrors) {
     EXPECT_EQ(encode_error("[]"), "expected a JSON object");
     EXPECT_EQ(encode_error("{\"offset\":0}"), "expected a packet (set, fields) or a skip run (skipped)");
     EXPECT_EQ(encode_error("{\"offset\":0,\"set\":256,\"fields\":[]}"), "set: expected an integer in 0..255");
-    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\","
-                           "\"values\":{\"value\":70000,\"flags\":0}}]}")
-                  .rfind("fields[0].values.value: ", 0),
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":128,\"fields\":[{\"descriptor\":1,\"name\":\"reading\","
+                           "\"values\":{\"count\":70000,\"offset\":0,\"valid\":false}}]}")
+                  .rfind("fields[0].values.count: ", 0),
               0u);
-    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":2,\"name\":\"info\","
-                           "\"values\":{\"level\":1}}]}"),
-              "fields[0].device: field 'info' has per-device layouts; name the device");
+    EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":4,\"name\":\"rate\","
+                           "\"values\":{\"hz\":1}}]}"),
+              "fields[0].device: field 'rate' has per-device layouts; name the device");
     EXPECT_EQ(encode_error("{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"pong\","
-                           "\"values\":{\"value\":1,\"flags\":0}}]}"),
+                           "\"values\":{}}]}"),
               "fields[0].name: descriptor 1 is 'ping', not 'pong'");
     EXPECT_EQ(encode_error(
                   "{\"offset\":0,\"set\":2,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}"),

@@ -1,16 +1,21 @@
-// In-place tests of session.hpp (docs/conformance.md section 8) on the stub package (alpha
-// framing) with the hand-written package/protopkg/session_facts.hpp: matching, nack, timeout,
-// invalid replies, refusal, ack suppression, a full queue, several acks in one packet, routing,
-// and the timed inter-packet rule. The generated packages run the whole session corpus.
+// Tests of session.hpp (docs/conformance.md section 8) on the test protocol rendered from
+// tests/runtime_specs/ (ping on every device; set_mode on alpha only, its ack suppressed by mode
+// auto, 500 ms allowance; rate per device, beta's answered with the reply field rate_reply 0x84
+// unless hz is 0): matching, nack, timeout, invalid replies, refusal, ack suppression, a full
+// queue, several acks in one packet, routing, and the timed inter-packet rule. The generated packages run the
+// whole session corpus.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "protopkg/protopkg.hpp"
 #include "protopkg/session.hpp"
 
 namespace {
+
+namespace control = protopkg::control;
 
 using protopkg::PacketBuilder;
 using protopkg::PacketView;
@@ -59,13 +64,12 @@ protopkg::StartOptions tag(std::uint64_t t) {
 
 TEST(Session, AckNackAndSeveralAcksInOnePacket) {
     Session<> s;
-    protopkg::stub::Ping ping;
+    control::Ping ping;
     EXPECT_FALSE(s.start(ping, 0, tag(1)).complete);
-    protopkg::stub::InfoCv info;
-    EXPECT_FALSE(s.start(info, 0, tag(2)).complete);
+    control::SetMode mode;
+    EXPECT_FALSE(s.start(mode, 0, tag(2)).complete);
     EXPECT_EQ(s.pending(), 2u);
-    // A packet of another set's data first (not a reply), then both acks in one packet: a nack
-    // for info, an ack for ping.
+    // Both acks in one packet: a nack for set_mode, an ack for ping.
     Log log;
     const Bytes both = packet({{0xF1, {0x02, 0x03}}, {0xF1, {0x01, 0x00}}});
     s.feed(both.data(), both.size(), 5, log);
@@ -75,24 +79,24 @@ TEST(Session, AckNackAndSeveralAcksInOnePacket) {
 
 TEST(Session, ReplyFieldsExpectedMissingAndTimeout) {
     Session<> s;
-    protopkg::stub::Ping ping;
-    ping.flags = 1; // expects reply field 0x02
-    s.start(ping, 0, tag(1));
+    control::RateBeta rate;
+    rate.hz = 1; // expects reply field 0x84
+    s.start(rate, 0, tag(1));
     Log log;
-    const Bytes bare = packet({{0xF1, {0x01, 0x00}}});
+    const Bytes bare = packet({{0xF1, {0x04, 0x00}}});
     s.feed(bare.data(), bare.size(), 1, log);
     ASSERT_EQ(log.lines.size(), 1u);
-    EXPECT_EQ(log.lines[0], "result:invalid:1:0:missing reply field 2");
-    // With the reply field (InfoGx data: one byte), the ack carries it.
-    s.start(ping, 10, tag(2));
-    const Bytes full = packet({{0xF1, {0x01, 0x00}}, {0x02, {0x07}}});
+    EXPECT_EQ(log.lines[0], "result:invalid:1:0:missing reply field 132");
+    // With the reply field (rate_reply: a u32), the ack carries it.
+    s.start(rate, 10, tag(2));
+    const Bytes full = packet({{0xF1, {0x04, 0x00}}, {0x84, {0x07, 0x07, 0x07, 0x07}}});
     protopkg::Result got;
     s.feed(full.data(), full.size(), 11, [&](const SessionEvent &e) { got = *e.result; });
     EXPECT_EQ(got.status, Status::ack);
-    ASSERT_TRUE(got.reply<protopkg::stub::InfoGx>().has_value());
-    EXPECT_EQ(got.reply<protopkg::stub::InfoGx>()->level, 7);
+    ASSERT_TRUE(got.reply<control::RateReply>().has_value());
+    EXPECT_EQ(got.reply<control::RateReply>()->hz, 0x07070707u);
     // No reply: a timeout at the deadline, reported first; the late ack is then a plain packet.
-    s.start(ping, 100, tag(3));
+    s.start(rate, 100, tag(3));
     EXPECT_EQ(s.next_deadline(), std::optional<std::int64_t>(1100));
     Log late;
     s.feed(bare.data(), bare.size(), 1100, late);
@@ -103,28 +107,28 @@ TEST(Session, ReplyFieldsExpectedMissingAndTimeout) {
 
 TEST(Session, RefusalSuppressionAndFullQueue) {
     Session<2>::Options o;
-    o.device = protopkg::Device::cv;
+    o.device = protopkg::Device::beta;
     Session<2> s(o);
-    protopkg::stub::InfoGx gx;
-    protopkg::Started r = s.start(gx, 0);
+    control::RateAlpha alpha;
+    protopkg::Started r = s.start(alpha, 0);
     EXPECT_TRUE(r.complete);
     EXPECT_EQ(r.packet.size, 0u);
     EXPECT_EQ(r.result.status, Status::refused);
-    EXPECT_STREQ(r.result.error.c_str(), "info: this layout is for gx, not cv");
-    protopkg::stub::Switch sw;
+    EXPECT_STREQ(r.result.error.c_str(), "rate: this layout is for alpha, not beta");
+    control::SetMode sw;
     r = s.start(sw, 0);
-    EXPECT_STREQ(r.result.error.c_str(), "switch is not supported by CV (cv.txt)");
+    EXPECT_STREQ(r.result.error.c_str(), "set_mode is not supported by Beta (beta.txt)");
     protopkg::StartOptions unchecked;
     unchecked.check_device = false;
-    sw.on = true; // suppresses the ack: sent at once
+    sw.mode = protopkg::types::Mode::auto_; // suppresses the ack: sent at once
     r = s.start(sw, 0, unchecked);
     EXPECT_EQ(r.result.status, Status::sent);
     EXPECT_GT(r.packet.size, 0u);
-    sw.on = false; // waits, with the 500 ms allowance
+    sw.mode = protopkg::types::Mode::on; // waits, with the 500 ms allowance
     r = s.start(sw, 0, unchecked);
     EXPECT_FALSE(r.complete);
     EXPECT_EQ(r.deadline, 1500);
-    protopkg::stub::Ping ping;
+    control::Ping ping;
     EXPECT_FALSE(s.start(ping, 0).complete);
     r = s.start(ping, 0);
     EXPECT_EQ(r.result.status, Status::refused);
@@ -136,16 +140,19 @@ TEST(Session, HandlersAndTheTimedRule) {
     int packets = 0;
     int levels = 0;
     s.on_packet([&](const PacketView &, std::uint64_t) { ++packets; });
-    s.on_field<protopkg::stub::Switch>(
-        [&](const protopkg::stub::Switch &v, const PacketView &) { levels += v.on; });
-    const Bytes data = packet({{0x03, {0x01}}});
-    // A false sync (sync bytes, a length byte, nothing more) then nothing for longer than P.
-    const Bytes false_sync = {data[0], data[1], 0x01, 0x20};
+    s.on_field<control::SetMode>([&](const control::SetMode &v, const PacketView &) {
+        levels += v.mode == protopkg::types::Mode::on;
+    });
+    const Bytes data = packet({{0x02, {0x01}}});
+    // A false sync (sync bytes, set, a length byte, nothing more) then nothing for longer than P.
+    Bytes false_sync(data.begin(), data.begin() + protopkg::kHeaderSize);
+    false_sync[protopkg::kLengthOffset] = 0x20;
     Log log;
     s.feed(false_sync.data(), false_sync.size(), 0, log);
     EXPECT_EQ(s.next_deadline(), std::optional<std::int64_t>(101));
     s.feed(data.data(), data.size(), 200, log); // too late to complete it: the false sync is dropped first
-    EXPECT_EQ(log.lines, (std::vector<std::string>{"skip:0+4", "packet:4"}));
+    const std::string header = std::to_string(protopkg::kHeaderSize);
+    EXPECT_EQ(log.lines, (std::vector<std::string>{"skip:0+" + header, "packet:" + header}));
     EXPECT_EQ(packets, 1);
     EXPECT_EQ(levels, 1);
     s.close(300, log);

@@ -1,19 +1,19 @@
-"""Assembles the package the runtime's unit tests import, without running the generator.
+"""Renders the package the runtime's unit tests import with the real back end.
 
-The runtime files (generator/targets/python/runtime/*.py and _speedups.c) and the hand-written test
-protocol (protocol/: what the generator would render from a spec) are copied into one package,
-build/python/runtime/<framing>/testproto/, which is put first on sys.path. TESTPROTO_FRAMING=b
-takes the constants of protocol/framing_b/ instead of protocol/ (framing a): between them, each
-branch of the runtime's framing choices. Unless TESTPROTO_PURE=1 asks for the pure-Python code,
-the C accelerator is compiled there as the generated packages' setup.py does it (an unchanged
-_speedups.c is not recompiled); it must build. tests/lang/python.sh test runs these tests with
-both framings, pure and accelerated.
+The test protocol `testproto` (tests/runtime_specs/, docs/runtime-contract.md) is rendered by the
+Python back end into build/runtime_specs/<framing>/python/testproto/ (tests/runtime_specs/render.py:
+the runtime files of this folder's parent copied in, beside the modules the templates render), and
+that package is put first on sys.path: the tests run against what the generator produces, not
+against hand-written stand-ins. TESTPROTO_FRAMING=b takes the spec's framing b instead of framing a:
+between them, each branch of the runtime's framing choices. Unless TESTPROTO_PURE=1 asks for the
+pure-Python code, the C accelerator is compiled there by the package's own setup.py (an unchanged
+_speedups.c is not recompiled); it must build. tests/lang/python.sh test runs these tests with both
+framings, pure and accelerated.
 """
 
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -23,42 +23,25 @@ import pytest
 RUNTIME = Path(__file__).resolve().parent.parent
 ROOT = RUNTIME.parents[3]
 PACKAGE = "testproto"
-PROTOCOL = RUNTIME / "tests" / "protocol"
-# grisu3.h: the C runtime's (one source for both), copied beside _speedups.c as the package has it.
-GRISU3 = RUNTIME.parents[1] / "c" / "runtime" / "src" / "grisu3.h"
 FRAMING = os.environ.get(PACKAGE.upper() + "_FRAMING", "a")
 if FRAMING not in ("a", "b"):
     raise pytest.UsageError(f"TESTPROTO_FRAMING={FRAMING!r}: expected a or b")
-# One directory per framing: build_ext's timestamp check must not mix the two _protocol.h.
-OUT = ROOT / "build" / "python" / "runtime" / FRAMING
 
-# The Extension of the generated setup.py (templates/python/setup.py.j2) for this package.
-SETUP = (
-    "from setuptools import Extension, setup\n"
-    f"setup(name={PACKAGE!r}, ext_modules=[Extension({PACKAGE + '._speedups'!r}, [{PACKAGE + '/_speedups.c'!r}],"
-    f" depends=[{PACKAGE + '/_protocol.h'!r}, {PACKAGE + '/grisu3.h'!r}])])\n"
-)
+sys.path.insert(0, str(ROOT))
+from tests.runtime_specs.render import render  # noqa: E402
 
-
-def _assemble() -> Path:
-    pkg = OUT / PACKAGE
-    pkg.mkdir(parents=True, exist_ok=True)
-    for old in pkg.glob("*.py"):
-        old.unlink()
-    sources = [*RUNTIME.glob("*.py"), RUNTIME / "_speedups.c", GRISU3, *PROTOCOL.iterdir()]
-    if FRAMING == "b":
-        sources += (PROTOCOL / "framing_b").iterdir()  # copied last: replaces framing a's constants
-    for src in sources:
-        if src.is_file():
-            shutil.copy2(src, pkg / src.name)  # timestamps kept: build_ext rebuilds only what changed
-    return pkg
+try:
+    OUT = render("python", FRAMING) / "python" / PACKAGE
+except RuntimeError as e:
+    raise pytest.UsageError(str(e)) from None
 
 
-def _build_accelerator(pkg: Path) -> None:
-    (OUT / "setup.py").write_text(SETUP, encoding="utf-8")
-    cmd = [sys.executable, "setup.py", "-q", "build_ext", "--inplace", "--build-temp", str(OUT / "build-temp")]
+def _build_accelerator(out: Path) -> None:
+    pkg = out / PACKAGE
+    cmd = [sys.executable, "setup.py", "-q", "build_ext", "--inplace", "--build-temp", str(out.parent / "build-temp")]
     env = dict(os.environ, PYTHONPYCACHEPREFIX="")
-    run = subprocess.run(cmd, cwd=OUT, env=env, capture_output=True, text=True)
+    env.pop(PACKAGE.upper() + "_NO_EXTENSION", None)
+    run = subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True)
     if run.returncode != 0 or not list(pkg.glob("_speedups*.so")) + list(pkg.glob("_speedups*.pyd")):
         pytest.exit(
             f"building the C accelerator (runtime/_speedups.c) failed (TESTPROTO_PURE=1 runs the pure-Python code):\n"
@@ -68,7 +51,6 @@ def _build_accelerator(pkg: Path) -> None:
 
 
 PURE = os.environ.get(PACKAGE.upper() + "_PURE", "") not in ("", "0")
-_pkg = _assemble()
 if not PURE:
-    _build_accelerator(_pkg)
+    _build_accelerator(OUT)
 sys.path.insert(0, str(OUT))

@@ -3,6 +3,7 @@ packets, values and errors. tests/lang/python.sh runs these tests with the accel
 with TESTPROTO_PURE=1, where both sides are the pure-Python code."""
 
 import copy
+import dataclasses as _dc
 import gc
 import os
 import pickle
@@ -11,7 +12,7 @@ import struct
 
 import testproto
 from testproto import codec as c
-from testproto import packets, registry
+from testproto import packets, registry, sensor
 from testproto.framing import SYNC, PacketBuilder, Parser, RawPacket, Skip, parse
 from testproto.packets import Packet, decode_all, decode_columns
 
@@ -58,7 +59,7 @@ def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
                     checked.add(cls.__name__)
     # Every kind of fixed-size item the C side reads: u16/s8/bool, f32 array/f64/u64/s32, enum,
     # bitfield, string, char, per-device variants, an irregular length byte.
-    assert {"Reading", "Vector", "State", "Temperature_alpha", "Temperature_beta", "Odd"} <= checked
+    assert {"Reading", "ScaledAccel", "State", "Temperature_alpha", "Temperature_beta", "Odd"} <= checked
 
 
 def _stream(seed):
@@ -156,30 +157,41 @@ def test_decoding_leaves_the_garbage_collector_as_it_was():
         gc.enable() if was else gc.disable()
 
 
-def test_slotted_fields_keep_the_dataclass_semantics():
-    # codec.slotted (generated fields, Vector here; Reading keeps its __dict__): no __dict__, and
-    # the fields, equality, repr, pickling, copying and replace() of the dataclass.
+@_dc.dataclass
+class PlainReading(c.Field):
+    """sensor.Reading's layout in a class that is not slotted: the accelerator sets attributes."""
+
+    count: int = 0
+    offset: int = 0
+    valid: bool = False
+
+    SET, DESCRIPTOR, NAME, ROLE = 0x80, 0x3E, "plain_reading", "data"  # a descriptor no other test decodes
+    _ATTRS, _OPS = sensor.Reading._ATTRS, sensor.Reading._OPS
+
+
+def test_slotted_fields_keep_the_dataclass_semantics(monkeypatch):
+    # codec.slotted (generated fields, ScaledAccel here; PlainReading above keeps its __dict__): no
+    # __dict__, and the fields, equality, repr, pickling, copying and replace() of the dataclass.
     import dataclasses
 
-    from testproto import sensor
-
-    v = sensor.Vector([1.0, 2.0, 3.0], 0.5, 7, -1)
-    assert not hasattr(v, "__dict__") and type(v).__slots__ == ("xyz", "time", "ticks", "delta")
-    assert [f.name for f in dataclasses.fields(v)] == ["xyz", "time", "ticks", "delta"]
-    assert repr(v) == "Vector(xyz=[1.0, 2.0, 3.0], time=0.5, ticks=7, delta=-1)"
-    assert v == sensor.Vector([1.0, 2.0, 3.0], 0.5, 7, -1) and v != sensor.Vector()
-    assert sensor.Vector() == sensor.Vector([0.0, 0.0, 0.0], 0.0, 0, 0)
+    v = sensor.ScaledAccel([1.0, 2.0, 3.0], 0.5, 7, -1)
+    assert not hasattr(v, "__dict__") and type(v).__slots__ == ("scaled_accel", "time", "ticks", "delta")
+    assert [f.name for f in dataclasses.fields(v)] == ["scaled_accel", "time", "ticks", "delta"]
+    assert repr(v) == "ScaledAccel(scaled_accel=[1.0, 2.0, 3.0], time=0.5, ticks=7, delta=-1)"
+    assert v == sensor.ScaledAccel([1.0, 2.0, 3.0], 0.5, 7, -1) and v != sensor.ScaledAccel()
+    assert sensor.ScaledAccel() == sensor.ScaledAccel([0.0, 0.0, 0.0], 0.0, 0, 0)
     assert pickle.loads(pickle.dumps(v)) == v and copy.deepcopy(v) == v and copy.copy(v) == v
     assert dataclasses.replace(v, ticks=8).ticks == 8
-    assert sensor.Vector.decode(v.encode()) == v
-    assert hasattr(sensor.Reading(), "__dict__")  # not slotted: the accelerator sets attributes
+    assert sensor.ScaledAccel.decode(v.encode()) == v
+
+    assert hasattr(PlainReading(), "__dict__") and not hasattr(sensor.Reading(), "__dict__")
+    real = registry.lookup
+    monkeypatch.setattr(registry, "lookup", lambda s, d: (PlainReading,) if (s, d) == (0x80, 0x3E) else real(s, d))
     # Decoded in C (slots stored by offset) and in Python: equal values of the same class.
-    packet = (
-        PacketBuilder(0x80).add_field(0x02, v.encode()).add_field(0x01, sensor.Reading(5, -2, True).encode()).build()
-    )
+    packet = PacketBuilder(0x80).add_field(0x02, v.encode()).add_field(0x3E, PlainReading(5, -2, True).encode()).build()
     got, want = packets.decode_packet(packet), packets._decode_packet_pure(packet, 0)
     assert repr(got) == repr(want) and got.values() == want.values()
-    assert [type(x) for x in got.values()] == [sensor.Vector, sensor.Reading]
+    assert [type(x) for x in got.values()] == [sensor.ScaledAccel, PlainReading]
     assert got.values()[0] == v and pickle.loads(pickle.dumps(got)).values() == got.values()
 
 

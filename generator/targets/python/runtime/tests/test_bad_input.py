@@ -6,15 +6,15 @@ the package) naming what is wrong; the pure and the accelerated code take the sa
 import array
 
 import pytest
-from testproto import command, registry, reserved, sensor, shared
+from testproto import control, registry, reserved, sensor, shared
 from testproto.framing import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, SYNC, FramingError, PacketBuilder, parse
 from testproto.packets import Decoder, decode_all, decode_field, decode_packet, event_line
 
-SET_ID = command.Ping.SET
+SET_ID = control.Ping.SET
 
 
 def _packet():
-    return PacketBuilder(SET_ID).add(command.Ping()).build()
+    return PacketBuilder(SET_ID).add(control.Ping()).build()
 
 
 def test_a_good_packet_decodes_from_every_bytes_like_type():
@@ -69,7 +69,7 @@ def test_an_unknown_device_is_an_error(device):
     with pytest.raises(FramingError, match=message):
         event_line(parse(good)[0], device=device)
     with pytest.raises(FramingError, match=message):
-        decode_field(SET_ID, command.Ping.DESCRIPTOR, b"", device=device)
+        decode_field(SET_ID, control.Ping.DESCRIPTOR, b"", device=device)
     for known in registry.DEVICES:
         assert decode_packet(good, device=known).set == SET_ID
 
@@ -80,7 +80,7 @@ def test_a_typed_field_of_another_set_is_refused():
     with pytest.raises(
         FramingError, match=r"ping \(descriptor 0x01\) is not a field of descriptor set 0x%02x" % data_set
     ):
-        PacketBuilder(data_set).add(command.Ping())
+        PacketBuilder(data_set).add(control.Ping())
     with pytest.raises(FramingError, match="reading .* is not a field of descriptor set 0x%02x" % SET_ID):
         PacketBuilder(SET_ID).add(sensor.Reading())
     # A reserved field only in a set of its kind; a shared data field only in a data set.
@@ -89,7 +89,7 @@ def test_a_typed_field_of_another_set_is_refused():
     with pytest.raises(FramingError, match="timestamp .* is not a field of descriptor set 0x%02x" % SET_ID):
         PacketBuilder(SET_ID).add(shared.Timestamp())
     # Its own set, the reserved fields of the set's kind and shared data in a data set are fine.
-    assert PacketBuilder(SET_ID).add(command.Ping()).build() == _packet()
+    assert PacketBuilder(SET_ID).add(control.Ping()).build() == _packet()
     assert decode_packet(PacketBuilder(SET_ID).add(reserved.AckNack()).build()).values() == [reserved.AckNack()]
     built = PacketBuilder(data_set).add(sensor.Reading()).add(shared.Timestamp(ticks=7)).build()
     assert decode_packet(built).values()[1] == shared.Timestamp(ticks=7)

@@ -1,9 +1,10 @@
-"""package_tests/test_canonical.py (copied into every package's tests/) run in place on the test
-package, with canonical_cases.py of this folder."""
+"""The rendered test package's own tests/test_canonical.py (package_tests/test_canonical.py with the
+generated tests/canonical_cases.py beside it) run in place on the test package."""
 
 import sys
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "package_tests"))
+from conftest import OUT
+
+sys.path.insert(0, str(OUT / "tests"))
 
 from test_canonical import *  # noqa: E402, F403

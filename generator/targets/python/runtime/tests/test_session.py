@@ -8,7 +8,7 @@ import socket
 import threading
 
 import pytest
-from testproto import command, reserved, sensor
+from testproto import control, reserved, sensor
 from testproto import types as t
 from testproto.framing import PacketBuilder, Skip
 from testproto.packets import Packet
@@ -44,8 +44,8 @@ def test_ack_matches_the_pending_command_whatever_the_split():
     reply = ack(0x01)
     for cut in range(len(reply) + 1):
         s = Session()
-        p = s.start(command.Ping(), 0)
-        assert p.packet == PacketBuilder(0x01).add(command.Ping()).build()
+        p = s.start(control.Ping(), 0)
+        assert p.packet == PacketBuilder(0x01).add(control.Ping()).build()
         events = s.feed(reply[:cut], 1) + s.feed(reply[cut:], 1)
         assert [r.status for r in results(events)] == ["ack"]
         assert p.result.status == "ack" and p.result.code == 0 and p.result.reply == []
@@ -54,7 +54,7 @@ def test_ack_matches_the_pending_command_whatever_the_split():
 
 def test_nack_carries_the_typed_code():
     s = Session()
-    p = s.start(command.Ping(), 0)
+    p = s.start(control.Ping(), 0)
     s.feed(ack(0x01, 1), 5)
     assert p.result.status == "nack" and p.result.code == t.AckCode.UNKNOWN_COMMAND
     with pytest.raises(Nack) as e:
@@ -66,7 +66,7 @@ def test_a_reply_for_another_command_or_set_is_a_packet():
     s = Session()
     seen = []
     s.on_packet(seen.append)
-    p = s.start(command.Ping(), 0)
+    p = s.start(control.Ping(), 0)
     events = s.feed(ack(0x02) + ack(0x01, set_id=0x02), 1)
     assert p.result is None and [type(e) for e in events] == [Packet, Packet] and len(seen) == 2
     s.feed(ack(0x01), 2)
@@ -78,7 +78,7 @@ def test_data_is_routed_while_a_command_is_pending():
     packets, fields = [], []
     s.on_packet(packets.append)
     s.on_field(0x80, 0x01, lambda value, packet: fields.append((value, packet.set)))
-    p = s.start(command.Ping(), 0)
+    p = s.start(control.Ping(), 0)
     s.feed(b"\x00" + data_packet() + ack(0x01), 3)
     assert p.result.status == "ack"
     assert [pk.set for pk in packets] == [0x80] and len(fields) == 1 and fields[0][1] == 0x80
@@ -145,7 +145,7 @@ def test_routing_with_a_pending_command_does_not_depend_on_chunks_or_handlers(ha
             s.on_packet(record("q"))
         if handlers in ("field", "both"):
             s.on_field(0x80, 0x01, record("f"))
-        p = s.start(command.Ping(), 0)
+        p = s.start(control.Ping(), 0)
         events = []
         for i in range(0, len(stream), size):
             events += s.feed(stream[i : i + size], 1)
@@ -171,7 +171,7 @@ def test_routing_with_a_pending_command_does_not_depend_on_chunks_or_handlers(ha
 
 def test_timeout_then_late_reply_is_a_packet():
     s = Session(timeout_ms=100)
-    p = s.start(command.Ping(), 0)
+    p = s.start(control.Ping(), 0)
     assert s.next_deadline() == 100
     assert s.poll(99) == [] and p.result is None
     assert [r.status for r in results(s.poll(100))] == ["timeout"]
@@ -181,8 +181,8 @@ def test_timeout_then_late_reply_is_a_packet():
 
 def test_same_command_twice_first_in_first_out_and_queue_limit():
     s = Session(max_pending=2)
-    a, b = s.start(command.Ping(), 0, tag="a"), s.start(command.Ping(), 0, tag="b")
-    c = s.start(command.Ping(), 0)
+    a, b = s.start(control.Ping(), 0, tag="a"), s.start(control.Ping(), 0, tag="b")
+    c = s.start(control.Ping(), 0)
     assert c.result.status == "refused" and not c.packet and "2 commands already pending" in c.result.error
     out = results(s.feed(ack(0x01, 1), 1))
     assert [r.tag for r in out] == ["a"] and a.result.status == "nack" and b.result is None
@@ -190,7 +190,7 @@ def test_same_command_twice_first_in_first_out_and_queue_limit():
 
 def test_two_acks_in_one_packet_answer_two_commands():
     s = Session()
-    a, b = s.start(command.Ping(), 0), s.start(command.SetMode(mode=t.Mode.ON), 0)
+    a, b = s.start(control.Ping(), 0), s.start(control.SetMode(mode=t.Mode.ON), 0)
     b2 = PacketBuilder(0x01)
     for d in (0x02, 0x01):
         b2.add(reserved.AckNack(command_descriptor=d, ack_code=t.AckCode.OK))
@@ -200,7 +200,7 @@ def test_two_acks_in_one_packet_answer_two_commands():
 
 def test_reply_fields_after_the_ack_and_raw_fields_make_it_invalid():
     s = Session()
-    p = s.start(command.Ping(), 0)
+    p = s.start(control.Ping(), 0)
     packet = PacketBuilder(0x01).add(reserved.AckNack(command_descriptor=1)).add_field(0x33, b"\x01").build()
     s.feed(packet, 1)
     assert p.result.status == "invalid" and p.result.error == "unknown descriptor"
@@ -209,7 +209,7 @@ def test_reply_fields_after_the_ack_and_raw_fields_make_it_invalid():
 
 def test_ack_suppression_allowance_and_device_support():
     s = Session(device="beta", timeout_ms=100)
-    p = s.start(command.SetMode(mode=t.Mode.ON), 0)
+    p = s.start(control.SetMode(mode=t.Mode.ON), 0)
     assert (
         p.result.status == "refused"
         and p.result.error == "set_mode is not supported by Beta (beta.txt)"
@@ -217,9 +217,9 @@ def test_ack_suppression_allowance_and_device_support():
     )
     with pytest.raises(CommandRefused):
         p.result.raise_for_status()
-    p = s.start(command.SetMode(mode=t.Mode.ON), 0, check_device=False)
+    p = s.start(control.SetMode(mode=t.Mode.ON), 0, check_device=False)
     assert p.result is None and p.deadline == 600  # 100 + the spec's 500
-    q = s.start(command.SetMode(mode=t.Mode.AUTO), 0, check_device=False)
+    q = s.start(control.SetMode(mode=t.Mode.AUTO), 0, check_device=False)
     assert (
         q.result.status == "sent"
         and q.packet
@@ -248,7 +248,7 @@ def test_timed_rule_drops_a_stale_candidate_before_new_bytes():
 
 def test_command_from_line():
     assert isinstance(
-        command_from_line('{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'), command.Ping
+        command_from_line('{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}'), control.Ping
     )
     for bad in ("[]", '{"offset":0,"set":1,"fields":[]}', '{"offset":0,"skipped":"00"}'):
         with pytest.raises(ValueError):
@@ -287,15 +287,15 @@ def test_device_blocking_calls_and_typed_api():
     seen = []
     with Device(tr, device="alpha", timeout_ms=50, clock=tick) as dev:
         dev.on_packet(seen.append)
-        dev.command.ping()
+        dev.control.ping()
         with pytest.raises(Nack):
-            dev.command.set_mode(t.Mode.ON)
+            dev.control.set_mode(t.Mode.ON)
         with pytest.raises(CommandTimeout):
-            dev.command.ping()
+            dev.control.ping()
     assert tr.closed and [p.set for p in seen] == [0x80] and len(tr.written) == 3
     dev = Device(FakeTransport([]), device="beta")
     with pytest.raises(CommandRefused):
-        dev.command.set_mode(t.Mode.ON)
+        dev.control.set_mode(t.Mode.ON)
 
 
 def test_parse_address_and_tcp_transport():

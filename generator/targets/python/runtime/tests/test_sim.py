@@ -6,7 +6,7 @@ tests/conformance/test_simulator.py."""
 from __future__ import annotations
 
 import pytest
-from testproto import command, sensor, shared
+from testproto import control, sensor, shared
 from testproto import types as t
 from testproto.framing import PacketBuilder, Parser, RawPacket
 from testproto.packets import decode_packet
@@ -31,13 +31,13 @@ def acks(chunks):
 
 def test_answers_as_the_model_does():
     sim = Simulator("alpha")
-    assert acks(ask(sim, command.Ping())) == [(0x01, 0)]
-    assert acks(ask(sim, command.Ping(), command.SetMode(mode=t.Mode.ON))) == [(0x01, 0), (0x02, 0)]
+    assert acks(ask(sim, control.Ping())) == [(0x01, 0)]
+    assert acks(ask(sim, control.Ping(), control.SetMode(mode=t.Mode.ON))) == [(0x01, 0), (0x02, 0)]
     assert acks(ask(sim, (0x55, b""))) == [(0x55, 1)]  # unknown descriptor
     assert acks(ask(sim, (0x02, b"\x07"))) == [(0x02, 1)]  # mode 7: not a value of the enum
     assert acks(ask(sim, (0x02, b""))) == [(0x02, 1)]  # does not decode
-    assert ask(sim, command.SetMode(mode=t.Mode.AUTO)) == []  # the spec suppresses its ack
-    assert acks(ask(Simulator("beta"), command.SetMode(mode=t.Mode.ON))) == [(0x02, 1)]  # alpha only
+    assert ask(sim, control.SetMode(mode=t.Mode.AUTO)) == []  # the spec suppresses its ack
+    assert acks(ask(Simulator("beta"), control.SetMode(mode=t.Mode.ON))) == [(0x02, 1)]  # alpha only
     assert acks(ask(Simulator("beta"), (0x02, b""))) == [(0x02, 1)]  # alpha only, even undecodable
     assert ask(sim, sensor.Reading(), set_id=0x80) == []  # data sent to the device: ignored
 
@@ -46,17 +46,17 @@ def test_faults():
     faults = [Fault.parse(k, v) for k, v in (("drop", "ping@1"), ("delay", "ping:250@1"), ("split", "ping@1"))]
     faults += [Fault.parse("corrupt", "ping@1"), Fault.parse("garbage", "ping:3@1"), Fault.parse("nack", "ping:9@1")]
     sim = Simulator("alpha", faults=faults)
-    assert acks(ask(sim, command.Ping())) == [(0x01, 9)]  # nack first, then the others in order
-    assert ask(sim, command.Ping()) == []  # dropped
-    [(at, data)] = ask(sim, command.Ping(), now=1.0)
+    assert acks(ask(sim, control.Ping())) == [(0x01, 9)]  # nack first, then the others in order
+    assert ask(sim, control.Ping()) == []  # dropped
+    [(at, data)] = ask(sim, control.Ping(), now=1.0)
     assert at == pytest.approx(1.25) and acks([(at, data)]) == [(0x01, 0)]
-    (a, first), (b, second) = ask(sim, command.Ping(), now=2.0)
+    (a, first), (b, second) = ask(sim, control.Ping(), now=2.0)
     assert b - a == pytest.approx(0.02) and acks([(0, first + second)]) == [(0x01, 0)]
-    [(_, corrupt)] = ask(sim, command.Ping())
+    [(_, corrupt)] = ask(sim, control.Ping())
     assert acks([(0, corrupt)]) == [] and acks([(0, corrupt[:-1] + bytes([corrupt[-1] ^ 0xFF]))]) == [(0x01, 0)]
-    [(_, noisy)] = ask(sim, command.Ping())
+    [(_, noisy)] = ask(sim, control.Ping())
     assert len(noisy) == 3 + len(first + second) and acks([(0, noisy)]) == [(0x01, 0)]
-    assert acks(ask(sim, command.Ping())) == [(0x01, 0)]  # every fault used up
+    assert acks(ask(sim, control.Ping())) == [(0x01, 0)]  # every fault used up
 
 
 def test_fault_options_are_checked():
@@ -76,18 +76,20 @@ def test_a_sample_larger_than_a_packet_repeats_its_shared_fields():
         fields = decode_packet(p).fields
         assert fields[0].value == shared.Timestamp(ticks=500_000_000)  # the clock, in every packet
         assert all(f.descriptor == 0x02 for f in fields[1:])
-        assert all(abs(f.value.xyz[2] + 1.0) < 0.05 for f in fields[1:])  # gravity, in g
+        assert all(abs(f.value.scaled_accel[2] + 1.0) < 0.05 for f in fields[1:])  # gravity, in g
     assert sum(len(decode_packet(p).fields) - 1 for p in packets) == 12
 
 
 def test_world_quantities_through_the_table_and_the_clock_speed():
     sim = Simulator("alpha", seed=1, scenario="circle", speed=4.0)
     sim.start_time = 0.0
-    (packet,) = sim._sample_packets(0x80, [0x02], 0.5)  # 2 s of simulated time at speed 4
-    vector = decode_packet(packet).fields[0].value
-    assert abs(vector.xyz[1] - 0.5 / 9.80665) < 0.005  # centripetal 5^2/50 m/s^2, in g (the table: specific force)
-    assert abs(vector.xyz[2] + 1.0) < 0.005
-    assert vector.time == pytest.approx(345602.0)  # GPS time of week at 2 s
+    (packet,) = sim._sample_packets(0x80, [0x02, 0x07], 0.5)  # 2 s of simulated time at speed 4
+    vector, gps = (f.value for f in decode_packet(packet).fields)
+    assert (
+        abs(vector.scaled_accel[1] - 0.5 / 9.80665) < 0.005
+    )  # centripetal 5^2/50 m/s^2, in g (the table: specific force)
+    assert abs(vector.scaled_accel[2] + 1.0) < 0.005
+    assert gps.tow == pytest.approx(345602.0)  # GPS time of week at 2 s (the table: gps_tow)
     assert vector.ticks == 2_000_000_000  # the fallback: the clock, in simulated ns
     with pytest.raises(ValueError, match="unknown scenario"):
         Simulator("alpha", scenario="nowhere")

@@ -1,12 +1,13 @@
-//! Unit tests of the runtime (src/), against the tiny protocol of harness/: checksum, builder,
+//! Unit tests of the runtime (src/), against the test protocol rendered by the back end from
+//! tests/runtime_specs/ (framing a or b; ../Cargo.toml): checksum, builder,
 //! stream parser (resync, truncated packets, chunk independence), field iterator errors,
 //! samples, and the text round trip of skip runs, raw fields and trailing bytes. They hold for
 //! any protocol; the tests that need a spec's own types are generated (templates/rust/test_*.rs.j2).
 
 use protocodec::builder::PacketBuilder;
-use protocodec::dispatch::{COUNTER, DATA_SET};
 use protocodec::error::EncodeErrorKind;
 use protocodec::fields::{FieldItem, Fields, FramingError, Packet};
+use protocodec::framing::BIG_ENDIAN;
 use protocodec::framing::{
     checksum_bytes, fletcher16, fletcher16_lanes, fletcher16_portable, CHECKSUM_SIZE,
     CHECKSUM_SUM1_FIRST, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_ADJUST,
@@ -16,8 +17,14 @@ use protocodec::framing::{
 use protocodec::parser::{Event, Parser};
 use protocodec::samples::{SampleGrouper, SampleTracker, DATA_SETS, TIMESTAMPS};
 use protocodec::text::{decode_bytes, encode_line, encode_text};
+use protocodec::wire::Layout;
+use protocodec::{control, sensor};
 
-const SET: u8 = 0x01;
+/// The command set (`control`): descriptor 0x7A is not defined in it.
+const SET: u8 = control::SET;
+/// The data set (`sensor`) and its field `reading` (`count` u16, `offset` s8, `valid` bool).
+const DATA_SET: u8 = sensor::SET;
+const READING: u8 = <sensor::Reading as Layout>::DESCRIPTOR;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 enum Ev {
@@ -583,18 +590,19 @@ fn sample_grouper_merges_continuation_packets() {
 }
 
 /// A decoded field goes to JSON and back, a short one stays raw with its error; values are in
-/// the protocol's byte order (little-endian here).
+/// the protocol's byte order (little-endian in framing a, big-endian in framing b).
 #[test]
 fn decoded_fields_round_trip_through_json() {
     let mut b = PacketBuilder::new(DATA_SET);
-    b.add_raw_field(COUNTER, &[0x34, 0x12]).unwrap();
-    b.add_raw_field(COUNTER, &[0x34]).unwrap();
+    b.add_raw_field(READING, &[0x34, 0x12, 0xFF, 0x01]).unwrap();
+    b.add_raw_field(READING, &[0x34]).unwrap();
     let p = b.finish().to_vec();
     let text = decode_bytes(&p, None, 1);
-    assert!(
-        text.contains("{\"descriptor\":1,\"name\":\"counter\",\"values\":{\"count\":4660}}"),
-        "{text}"
+    let count = if BIG_ENDIAN { 0x3412 } else { 0x1234 };
+    let want = format!(
+        "{{\"descriptor\":1,\"name\":\"reading\",\"values\":{{\"count\":{count},\"offset\":-1,\"valid\":true}}}}"
     );
+    assert!(text.contains(&want), "{text}");
     assert!(
         text.contains("\"data\":\"34\",\"error\":\"count: needs 2 bytes at offset 0, 1 left\""),
         "{text}"
@@ -606,8 +614,10 @@ fn decoded_fields_round_trip_through_json() {
 /// back with it.
 #[test]
 fn irregular_field_lengths_are_honoured() {
-    let mut b = PacketBuilder::new(0x01);
-    b.add_raw_field(0x05, &[7, 8, 9]).unwrap();
+    // sensor `odd` (0x80, 0x06): length_byte_adjust -1 in the spec.
+    let odd = <sensor::Odd as Layout>::DESCRIPTOR;
+    let mut b = PacketBuilder::new(DATA_SET);
+    b.add_raw_field(odd, &[7, 8, 9]).unwrap();
     let p = b.finish().to_vec();
     assert_eq!(
         usize::from(p[HEADER_SIZE + FIELD_LENGTH_OFFSET]),
@@ -618,75 +628,26 @@ fn irregular_field_lengths_are_honoured() {
     assert_eq!(
         items,
         vec![FieldItem::Field {
-            descriptor: 0x05,
+            descriptor: odd,
             data: &[7, 8, 9]
         }]
     );
 }
 
-/// A typed layout of the data set (the harness has no generated ones): `counter`, one u16.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Counter(u16);
-
-impl protocodec::wire::Wire for Counter {
-    const ZERO: Self = Counter(0);
-    const FIXED_SIZE: Option<usize> = Some(2);
-    fn decode(
-        r: &mut protocodec::wire::Reader<'_>,
-    ) -> Result<Self, protocodec::error::DecodeError> {
-        Ok(Counter(u16::decode(r)?))
-    }
-    fn encode(
-        &self,
-        w: &mut protocodec::wire::Writer<'_>,
-    ) -> Result<(), protocodec::error::EncodeError> {
-        self.0.encode(w)
-    }
-    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
-        write!(w, "{{\"count\":{}}}", self.0)
-    }
-}
-
-impl protocodec::wire::Layout for Counter {
-    const DESCRIPTOR: u8 = COUNTER;
-    const DESCRIPTOR_SET: Option<u8> = Some(DATA_SET);
-    const NAME: &'static str = "counter";
-}
-
-/// A reserved-style layout: no descriptor set of its own.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Anywhere(Counter);
-
-impl protocodec::wire::Wire for Anywhere {
-    const ZERO: Self = Anywhere(Counter(0));
-    const FIXED_SIZE: Option<usize> = Some(2);
-    fn decode(
-        r: &mut protocodec::wire::Reader<'_>,
-    ) -> Result<Self, protocodec::error::DecodeError> {
-        Ok(Anywhere(Counter::decode(r)?))
-    }
-    fn encode(
-        &self,
-        w: &mut protocodec::wire::Writer<'_>,
-    ) -> Result<(), protocodec::error::EncodeError> {
-        self.0.encode(w)
-    }
-    fn write_json(&self, w: &mut dyn core::fmt::Write) -> core::fmt::Result {
-        self.0.write_json(w)
-    }
-}
-
-impl protocodec::wire::Layout for Anywhere {
-    const DESCRIPTOR: u8 = 0x7F;
-    const NAME: &'static str = "anywhere";
-}
-
 // Issue 28: a typed field added to a packet of another set would be another field on the wire.
 #[test]
 fn typed_add_refuses_a_layout_of_another_set() {
+    // A layout of the data set (`reading`, 4 bytes) and a reserved one (the ack, 2 bytes: no
+    // descriptor set of its own), as the back end renders them.
+    use protocodec::reserved::AckNack;
     use protocodec::wire::Wire;
+    assert_eq!(<AckNack as Layout>::DESCRIPTOR_SET, None);
+    let reading = sensor::Reading {
+        count: 7,
+        ..sensor::Reading::ZERO
+    };
     let mut other = PacketBuilder::new(SET);
-    let err = other.add(&Counter(7)).unwrap_err();
+    let err = other.add(&reading).unwrap_err();
     assert_eq!(
         err.kind,
         EncodeErrorKind::WrongSet {
@@ -700,9 +661,9 @@ fn typed_add_refuses_a_layout_of_another_set() {
     );
     assert_eq!(other.payload_len(), 0);
     let mut own = PacketBuilder::new(DATA_SET);
-    own.add(&Counter(7)).unwrap();
-    assert_eq!(own.payload_len(), FIELD_HEADER_SIZE + 2);
+    own.add(&reading).unwrap();
+    assert_eq!(own.payload_len(), FIELD_HEADER_SIZE + 4);
     let mut any = PacketBuilder::new(SET);
-    any.add(&Anywhere(Counter::ZERO)).unwrap();
+    any.add(&AckNack::ZERO).unwrap();
     assert_eq!(any.payload_len(), FIELD_HEADER_SIZE + 2);
 }

@@ -1,13 +1,25 @@
-//! Unit tests of the session core (src/session.rs) against the tiny protocol of harness/ (one
-//! command, `ping`, answered by the reserved `ack` field): matching, nack, timeouts, routing of
+//! Unit tests of the session core (src/session.rs) against the test protocol rendered by the back
+//! end from tests/runtime_specs/ (../Cargo.toml: `ping` on every device, `set_mode` on alpha only,
+//! answered by the reserved ack field 0xF1): matching, nack, timeouts, routing of
 //! data while a command waits, the timed inter-packet rule, the bounded queue, several acks in
 //! one packet, invalid replies, chunking independence and hostile input. The spec-driven cases
 //! (tests/sessions/) run in every generated crate (templates/rust/test_sessions.rs.j2).
 
 use protocodec::builder::PacketBuilder;
-use protocodec::dispatch::{FieldValue, ACK, COMMAND_SET, COUNTER, DATA_SET, PING};
+use protocodec::commands::ACK_DESCRIPTOR as ACK;
+use protocodec::framing::{HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET, SYNC};
 use protocodec::session::{Session, SessionEvent, StartOptions, Status};
-use protocodec::Device;
+use protocodec::wire::{Layout, Wire};
+use protocodec::{control, sensor, Device, FieldValue};
+
+const COMMAND_SET: u8 = control::SET;
+const PING: u8 = <control::Ping as Layout>::DESCRIPTOR;
+const DATA_SET: u8 = sensor::SET;
+const READING: u8 = <sensor::Reading as Layout>::DESCRIPTOR;
+
+fn ping() -> FieldValue {
+    FieldValue::Control(control::SetField::Ping(control::Ping::ZERO))
+}
 
 fn packet(set: u8, fields: &[(u8, &[u8])]) -> Vec<u8> {
     let mut b = PacketBuilder::new(set);
@@ -22,7 +34,10 @@ fn ack(code: u8) -> Vec<u8> {
 }
 
 fn data(count: u16) -> Vec<u8> {
-    packet(DATA_SET, &[(COUNTER, &count.to_le_bytes())])
+    packet(
+        DATA_SET,
+        &[(READING, &[count as u8, (count >> 8) as u8, 0, 1])],
+    )
 }
 
 /// Events as text: results as the tool's lines (line = command id), packets and skips.
@@ -39,9 +54,7 @@ fn text(e: SessionEvent<'_>) -> String {
 }
 
 fn start<const N: usize>(s: &mut Session<N>, now: u64) -> (u32, Vec<u8>, Option<String>) {
-    let st = s
-        .start(&FieldValue::Ping, now, StartOptions::default())
-        .unwrap();
+    let st = s.start(&ping(), now, StartOptions::default()).unwrap();
     let line = st.result.map(|r| text(SessionEvent::Result(r)));
     (st.id, st.packet.to_vec(), line)
 }
@@ -95,7 +108,10 @@ fn nack_timeout_and_late_reply() {
         [r#"{"line":2,"result":"timeout","code":null,"reply":[]}"#]
     );
     // The reply after the timeout answers nothing: a packet.
-    assert_eq!(feed(&mut s, &ack(0), 160), ["packet 11 set 1"]);
+    assert_eq!(
+        feed(&mut s, &ack(0), 160),
+        [format!("packet {} set {COMMAND_SET}", ack(0).len())]
+    );
 }
 
 #[test]
@@ -113,7 +129,7 @@ fn several_acks_in_one_packet_answer_the_oldest_first() {
     );
     let two = packet(
         COMMAND_SET,
-        &[(ACK, &[PING, 0]), (COUNTER, &[1]), (ACK, &[PING, 4])],
+        &[(ACK, &[PING, 0]), (PING, &[1]), (ACK, &[PING, 4])],
     );
     assert_eq!(
         feed(&mut s, &two, 1),
@@ -129,7 +145,10 @@ fn timed_rule_drops_a_false_sync_and_resumes_at_the_next_byte() {
     let mut s: Session = Session::new(None);
     start(&mut s, 0);
     // A sync and a header claiming 80 payload bytes that never come, with the ack behind it.
-    let mut garbage = vec![0xAA, 0x55, 0x01, 0x01, 80];
+    let mut garbage = vec![0u8; HEADER_SIZE];
+    garbage[..SYNC.len()].copy_from_slice(&SYNC);
+    garbage[SET_OFFSET] = COMMAND_SET;
+    garbage[LENGTH_OFFSET] = 80;
     garbage.extend(ack(0));
     assert!(feed(&mut s, &garbage, 10).is_empty());
     assert_eq!(s.next_deadline(), Some(111));
@@ -140,7 +159,7 @@ fn timed_rule_drops_a_false_sync_and_resumes_at_the_next_byte() {
     assert_eq!(
         out,
         [
-            "skip 0 5",
+            &format!("skip 0 {HEADER_SIZE}"),
             r#"{"line":1,"result":"ack","code":0,"reply":[]}"#
         ]
     );
@@ -149,16 +168,30 @@ fn timed_rule_drops_a_false_sync_and_resumes_at_the_next_byte() {
 
 #[test]
 fn refusal_by_device_and_close_flushes() {
-    let mut s: Session = Session::new(Some(Device::Tiny));
+    let mut s: Session = Session::new(Some(Device::Beta));
     let (_, _, done) = start(&mut s, 0);
-    assert!(done.is_none(), "tiny supports ping");
-    assert!(s
-        .start(&FieldValue::Counter(1), 0, StartOptions::default())
-        .is_err());
+    assert!(done.is_none(), "beta supports ping");
+    let set_mode = FieldValue::Control(control::SetField::SetMode(control::SetMode::ZERO));
+    let refused = s.start(&set_mode, 0, StartOptions::default()).unwrap();
+    assert!(
+        refused.packet.is_empty(),
+        "set_mode is alpha's only: not sent"
+    );
+    assert_eq!(
+        refused
+            .result
+            .map(|r| text(SessionEvent::Result(r)))
+            .as_deref(),
+        Some(
+            r#"{"line":2,"result":"refused","code":null,"reply":[],"error":"set_mode is not supported by Beta (beta.txt)"}"#
+        )
+    );
+    let reading = FieldValue::Sensor(sensor::SetField::Reading(sensor::Reading::ZERO));
+    assert!(s.start(&reading, 0, StartOptions::default()).is_err());
     let mut out = Vec::new();
-    s.feed(&[0xAA, 0x55], 1, |e| out.push(text(e)));
+    s.feed(&SYNC, 1, |e| out.push(text(e)));
     s.close(2, |e| out.push(text(e)));
-    assert_eq!(out, ["skip 0 2"]);
+    assert_eq!(out, [format!("skip 0 {}", SYNC.len())]);
     assert_eq!(s.pending(), 1, "close leaves commands pending");
 }
 
@@ -169,7 +202,7 @@ fn hostile_bytes_never_panic_and_memory_stays_bounded() {
     let mut now = 0;
     for round in 0..2000 {
         if round % 7 == 0 {
-            let _ = s.start(&FieldValue::Ping, now, StartOptions::default());
+            let _ = s.start(&ping(), now, StartOptions::default());
         }
         let mut chunk = Vec::new();
         for _ in 0..(x % 40) {
@@ -177,9 +210,9 @@ fn hostile_bytes_never_panic_and_memory_stays_bounded() {
             x ^= x >> 17;
             x ^= x << 5;
             chunk.push(match x % 5 {
-                0 => 0xAA,
-                1 => 0x55,
-                2 => 0x01,
+                0 => SYNC[0],
+                1 => SYNC[1],
+                2 => COMMAND_SET,
                 3 => ACK,
                 _ => x as u8,
             });
