@@ -36,6 +36,9 @@ static inline int codec_field_length_adjust(uint8_t set, uint8_t descriptor);
 /* include/codec/dispatch.h (defined in dispatch.c, dispatch_json.c) */
 const char *codec_device_id(codec_device_t device);
 bool codec_device_from_id(const char *id, codec_device_t *out);
+const char *codec_device_title(codec_device_t device);
+const char *codec_device_manual(codec_device_t device);
+bool codec_device_supports(codec_device_t device, uint8_t set, uint8_t descriptor);
 const codec_layout_info_t *codec_layout_info(codec_field_id_t id);
 const codec_field_info_t *codec_find_field(uint8_t set, uint8_t descriptor, codec_status_t *why);
 codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
@@ -57,6 +60,9 @@ int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec
 struct codec_contract {
     const char *(*device_id)(codec_device_t);
     bool (*device_from_id)(const char *, codec_device_t *);
+    const char *(*device_title)(codec_device_t);
+    const char *(*device_manual)(codec_device_t);
+    bool (*device_supports)(codec_device_t, uint8_t, uint8_t);
     const codec_layout_info_t *(*layout_info)(codec_field_id_t);
     const codec_field_info_t *(*find_field)(uint8_t, uint8_t, codec_status_t *);
     codec_status_t (*decode_field)(uint8_t, uint8_t, const uint8_t *, size_t, codec_device_t,
@@ -73,8 +79,8 @@ struct codec_contract {
 
 extern const struct codec_contract codec_contract;
 const struct codec_contract codec_contract = {
-    codec_device_id,     codec_device_from_id, codec_layout_info,        codec_find_field,
-    codec_decode_field,  codec_encode_field,   codec_value_to_json,      codec_value_from_json,
-    codec_command_facts, codec_function_name,  codec_session_ack_decode, codec_field_length_adjust,
-    CODEC_DEVICE_ANY,
+    codec_device_id,       codec_device_from_id,     codec_device_title,        codec_device_manual,
+    codec_device_supports, codec_layout_info,        codec_find_field,          codec_decode_field,
+    codec_encode_field,    codec_value_to_json,      codec_value_from_json,     codec_command_facts,
+    codec_function_name,   codec_session_ack_decode, codec_field_length_adjust, CODEC_DEVICE_ANY,
 };

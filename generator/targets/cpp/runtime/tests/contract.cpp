@@ -50,6 +50,9 @@ static_assert(std::is_enum_v<pkg::Device>);
 static_assert(is<decltype(pkg::kDevices[0]), pkg::Device>);
 static_assert(is<decltype(pkg::device_name(pkg::Device{})), const char *>);
 static_assert(is<decltype(pkg::device_from_name("")), std::optional<pkg::Device>>);
+static_assert(is<decltype(pkg::device_title(pkg::Device{})), const char *>);
+static_assert(is<decltype(pkg::device_manual(pkg::Device{})), const char *>);
+static_assert(is<decltype(pkg::device_supports(pkg::Device{}, std::uint8_t{}, std::uint8_t{})), bool>);
 
 // lookup_tables.hpp (namespace detail: read by the runtime's lookup.hpp)
 static_assert(is<std::remove_all_extents_t<decltype(pkg::detail::kSetRow)>, std::uint8_t> &&

@@ -100,12 +100,12 @@ def test_factory_values_hold_on_their_device_and_start_a_message_format(monkeypa
     # state them); a format list's default streams before any format command (MS-CIP's message).
     from testproto import _sim
 
-    monkeypatch.setattr(_sim, "FACTORY", {"alpha": {command.SetMode: {"mode": [0x02]}}})
-    monkeypatch.setattr(_sim, "FORMATS", {command.SetMode: (0x80, "mode", None, None)})
+    monkeypatch.setattr(_sim, "FACTORY", {"alpha": {control.SetMode: {"mode": [0x02]}}})
+    monkeypatch.setattr(_sim, "FORMATS", {control.SetMode: (0x80, "mode", None, None)})
     monkeypatch.setattr(_sim, "UNADDRESSED", {"alpha": (0x80,)})
     alpha, beta = Simulator("alpha"), Simulator("beta")
-    assert alpha._factory(command.SetMode) == {"mode": [0x02]}
-    assert beta._factory(command.SetMode) == {}
+    assert alpha._factory(control.SetMode) == {"mode": [0x02]}
+    assert beta._factory(control.SetMode) == {}
     alpha._replan()
     assert alpha.plan == {0x80: [(0x02, 1)]}
     monkeypatch.setattr(_sim, "FACTORY", {})

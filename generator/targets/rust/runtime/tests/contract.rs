@@ -77,8 +77,13 @@ fn dispatch_provides_devices_values_and_the_json_writers() {
     let all: &[Device] = &Device::ALL;
     let id: fn(Device) -> &'static str = Device::id;
     let from_id: fn(&str) -> Option<Device> = Device::from_id;
+    let title: fn(Device) -> &'static str = Device::title;
+    let manual: fn(Device) -> &'static str = Device::manual;
+    let supports: fn(Device, u8, u8) -> bool = Device::supports;
     for &d in all {
         assert_eq!(from_id(id(d)), Some(d));
+        assert!(!title(d).is_empty() && !manual(d).is_empty());
+        let _ = supports(d, 0, 0);
     }
     let decode: DecodeFn = dispatch::decode_field;
     let descriptor: fn(&FieldValue) -> u8 = FieldValue::descriptor;
