@@ -20,6 +20,7 @@ import importlib
 import json
 import select
 import socket
+import struct
 import subprocess
 import time
 from pathlib import Path
@@ -118,10 +119,14 @@ def _perturbed(value):
 
 def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
     """The factory values of the read reply's plain parameters (by name): the spec's default of the
-    command parameter of that name where the manual states one, else zero (an enum without a zero
+    command parameter of that name where the device's manual states one, else zero (an enum without a zero
     value: its first value)."""
     types = {t["name"]: t for t in protocol["types"]}
-    defaults = {q["name"]: q["default"]["value"] for q in variant["params"] if q.get("default")}
+    defaults = {
+        q["name"]: q["default"]["value"]
+        for q in variant["params"]
+        if q.get("default") and device in q["default"]["devices"]
+    }
     rid = next(r["id"] for r in variant["responses"] if (r["when"] or {}).get("function") == "read")
     reply = next(f for f in set_["fields"] if f["id"] == rid)
     params = next(v for v in reply["variants"] if v["device"] in (None, device))["params"]
@@ -134,7 +139,10 @@ def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
         if q["count"] is not None or kind not in ("primitive", "enum", "bitfield"):
             continue
         if q["name"] in defaults:
-            out[q["name"]] = defaults[q["name"]]
+            value = defaults[q["name"]]
+            if q["type"].get("name") == "float":  # as a 32-bit float on the wire (0.1 -> 0.10000000149...)
+                value = struct.unpack("<f", struct.pack("<f", value))[0]
+            out[q["name"]] = value
         elif kind == "enum":
             values = [v["value"] for v in types[q["type"]["name"]]["values"]]
             out[q["name"]] = 0 if 0 in values else values[0]

@@ -105,5 +105,5 @@ ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: class -> {parameter: value}
-FACTORY: Dict[Any, Dict[str, Any]] = {}
+# parameter's factory value is zero: device -> class -> {parameter: value}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}
