@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "fd3f427a0bc2d310"
+SPEC_HASH = "9c9885f1db354078"
 
 __all__ = [
     "SPEC_HASH",
