@@ -3,10 +3,12 @@
 A 3DM-GX5-45 application reading continuous data the way the manual's example setup sequence does
 (3dm-gx5-45-dcp.txt section 2.4.1), written against the generated `mipcodec` package (contract:
 tests/apps/README.md): idle, device information, the IMU and estimation filter message formats,
-resume. It does NOT send Enable/Disable Continuous Data Stream (0x0C,0x11): the manual says the
-streams "may have already been enabled by default", and a factory-default device streams after
-resume. Then it prints the filter state on each change and, once the solution is valid, the
-navigation samples. Run it with the package importable (PYTHONPATH=generated/python/mipcodec).
+resume, then Initialize the Filter as step 7 does (poll the complementary filter's Euler angles, Set
+Initial Attitude with them). It does NOT send Enable/Disable Continuous Data Stream (0x0C,0x11): the
+manual says the streams "may have already been enabled by default", and a factory-default device
+streams after resume. Then it prints the filter state on each change and, once the solution is
+valid, the navigation samples. Run it with the package importable
+(PYTHONPATH=generated/python/mipcodec).
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from typing import Dict, List, Optional
+from typing import Any, Dict, List, Optional
 
 from mipcodec import Device, Packet, connect, types
 from mipcodec.session import SessionError
@@ -22,7 +24,7 @@ from mipcodec.session import SessionError
 PROG = "gx5_continuous"
 USAGE = f"usage: {PROG} ADDRESS [--samples N>0] [--deadline-s N>0]"
 IMU_SET, FILTER_SET = 0x80, 0x82
-SCALED_ACCEL, SCALED_GYRO = 0x04, 0x05
+SCALED_ACCEL, SCALED_GYRO, CF_EULER = 0x04, 0x05, 0x0C
 GPS_TIMESTAMP, FILTER_STATUS, LLH, EULER = 0x11, 0x10, 0x01, 0x05
 IMU_RATE_HZ, FILTER_RATE_HZ = 100, 10
 RUN_SOLUTION_VALID = types.FilterStateGx5.RUN_SOLUTION_VALID
@@ -50,6 +52,25 @@ def configure(device: Device) -> None:
     nav = [types.DescriptorRate(descriptor=d, decimation=filter_base // FILTER_RATE_HZ) for d in fields]
     device.threedm.filter_message_format.write(descriptors=nav)
     device.base.resume()  # no stream enable: the streams are on by default
+    initialize_filter(device)
+
+
+def initialize_filter(device: Device) -> None:
+    """The manual's step 7, Initialize the Filter (3dm-gx5-45-dcp.txt line 431): poll the
+    complementary filter's Euler angles (0x80,0x0C), then Set Initial Attitude (0x0D,0x02) with
+    them. (A device with auto-initialization enabled does not need it; its factory setting is not
+    documented, so the program does not rely on it.)"""
+    angles: List[Any] = []
+    device.on_field(IMU_SET, CF_EULER, lambda value, packet: angles.append(value))
+    device.threedm.poll_imu_data(
+        option=types.Gx5PollOption.NORMAL, descriptors=[types.Gx5PollDescriptor(descriptor=CF_EULER)]
+    )
+    end = device.now_ms() + 1000  # the data packet follows the ACK
+    while not angles and device.now_ms() < end:
+        device.pump(10)
+    if not angles:
+        raise TimeoutError("no complementary filter Euler angles (0x80,0x0C) after the poll")
+    device.filter.set_initial_attitude(roll=angles[0].roll, pitch=angles[0].pitch, heading=angles[0].yaw)
 
 
 def read_data(device: Device, samples: int, deadline_ms: int) -> int:

@@ -3,13 +3,14 @@
 //! tests/apps/README.md).
 //!
 //! It configures the device through the crate's typed command API (idle, device information, the
-//! IMU and estimation filter message formats) and leaves it idle: no resume, no stream. Then every
-//! 100 ms it sends Poll IMU Data (0x0C,0x01) and Poll Estimation Filter Data (0x0C,0x03), the
-//! ACK/NACK not suppressed, each answered by its ACK and one data packet. It prints `imu ok` once
-//! the IMU data has accelerometer and gyro, `state N` whenever the filter state changes and, once
-//! the solution is valid, one JSON line per polled filter packet until `--samples` were printed
-//! (exit 0). Wrong arguments: exit 2; a command that is not acknowledged, a connection that fails
-//! or the deadline passing: exit 1.
+//! IMU and estimation filter message formats) and leaves it idle: no resume, no stream; it
+//! initializes the filter as the manual's step 7 does (poll the complementary filter's Euler
+//! angles, Set Initial Attitude with them). Then every 100 ms it sends Poll IMU Data (0x0C,0x01)
+//! and Poll Estimation Filter Data (0x0C,0x03), the ACK/NACK not suppressed, each answered by its
+//! ACK and one data packet. It prints `imu ok` once the IMU data has accelerometer and gyro, `state
+//! N` whenever the filter state changes and, once the solution is valid, one JSON line per polled
+//! filter packet until `--samples` were printed (exit 0). Wrong arguments: exit 2; a command that
+//! is not acknowledged, a connection that fails or the deadline passing: exit 1.
 
 use std::cell::RefCell;
 use std::error::Error;
@@ -35,6 +36,7 @@ const IMU_SET: u8 = 0x80;
 const FILTER_SET: u8 = 0x82;
 const SCALED_ACCEL: u8 = 0x04;
 const SCALED_GYRO: u8 = 0x05;
+const CF_EULER: u8 = 0x0C;
 const GPS_TIMESTAMP: u8 = 0x11;
 const FILTER_STATUS: u8 = 0x10;
 const LLH_POSITION: u8 = 0x01;
@@ -88,6 +90,8 @@ fn parse_args(args: &[String]) -> Option<Options> {
 struct Reader {
     /// `imu ok` was printed.
     imu_seen: bool,
+    /// The complementary filter's Euler angles (0x80,0x0C), once polled.
+    cf_euler: Option<[f32; 3]>,
     /// The filter state last printed.
     state: Option<u16>,
     /// Valid-solution samples printed, and how many to print.
@@ -113,6 +117,9 @@ impl Reader {
         for_each_field(packet, Some(Model::Gx5_45), |_, value| match value {
             FieldValue::Sensor(ImuData::ScaledAccel(_)) => accel = true,
             FieldValue::Sensor(ImuData::ScaledGyro(_)) => gyro = true,
+            FieldValue::Sensor(ImuData::CfEulerAngles(v)) => {
+                self.cf_euler = Some([v.roll, v.pitch, v.yaw]);
+            }
             _ => {}
         });
         if accel && gyro && !self.imu_seen {
@@ -205,6 +212,7 @@ fn run(options: &Options) -> Result<(), Box<dyn Error>> {
     // Every data packet goes to one handler, also while a command waits for its reply.
     let reader = Rc::new(RefCell::new(Reader {
         imu_seen: false,
+        cf_euler: None,
         state: None,
         printed: 0,
         wanted: options.samples,
@@ -262,7 +270,35 @@ fn configure(device: &mut Device, reader: &RefCell<Reader>) -> Result<(), Box<dy
         .filter_message_format()
         .write(BoundedVec::from_slice(&filter).ok_or("too many descriptors")?)?;
     // No resume: the device stays idle and answers polls only.
-    Ok(())
+    initialize_filter(device, reader)
+}
+
+/// The manual's step 7, Initialize the Filter (3dm-gx5-45-dcp.txt line 431): poll the
+/// complementary filter's Euler angles (0x80,0x0C), then Set Initial Attitude (0x0D,0x02) with
+/// them. (A device with auto-initialization enabled does not need it; its factory setting is not
+/// documented, so the program does not rely on it.)
+fn initialize_filter(device: &mut Device, reader: &RefCell<Reader>) -> Result<(), Box<dyn Error>> {
+    let entry = Gx5PollDescriptor {
+        descriptor: CF_EULER,
+        reserved: 0,
+    };
+    device.threedm().poll_imu_data(
+        Gx5PollOption::NORMAL,
+        BoundedVec::from_slice(&[entry]).ok_or("too many descriptors")?,
+    )?;
+    // The data packet follows the ACK.
+    let end = Instant::now() + Duration::from_secs(1);
+    loop {
+        let angles = reader.borrow().cf_euler;
+        if let Some([roll, pitch, yaw]) = angles {
+            device.filter().set_initial_attitude(roll, pitch, yaw)?;
+            return Ok(());
+        }
+        if Instant::now() >= end {
+            return Err("no complementary filter Euler angles (0x80,0x0C) after the poll".into());
+        }
+        device.listen(10)?;
+    }
 }
 
 /// One Poll IMU Data and one Poll Estimation Filter Data, each acknowledged (its data packet
