@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import json
 import math
+import socket
 import time
 
 import pytest
@@ -171,3 +172,43 @@ def test_flow_reaches_the_manuals_state(flow: str, lang: str, transport: str) ->
     check_output(flow, r.stdout)
     # "Exit 0 after N samples": at once, not at the deadline (a flow takes a few seconds).
     assert took < DEADLINE_S / 2, f"{lang} {program} exited {took:.1f} s after its start"
+
+
+# ------------------------------------------------------------------------------- bad input
+def failed(r, *words: str) -> None:
+    """Exit 1, the last stderr line `error: ...` naming `words`, no traceback, no sample."""
+    assert r.returncode == 1, (r.returncode, r.stdout, r.stderr)
+    last = r.stderr.strip().splitlines()[-1]
+    assert last.startswith("error: ") and all(w.lower() in last.lower() for w in words), r.stderr
+    assert "Traceback" not in r.stderr and "{" not in r.stdout, (r.stdout, r.stderr)
+
+
+BAD_ARGUMENTS = [
+    ["tcp:127.0.0.1:1", "extra"],
+    ["tcp:127.0.0.1:1", "--samples", "0"],
+    ["tcp:127.0.0.1:1", "--deadline-s"],
+    ["tcp:127.0.0.1:1", "--rate", "5"],
+]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("program", PROGRAMS)
+def test_wrong_arguments_print_the_usage(program: str, lang: str) -> None:
+    cases = BAD_ARGUMENTS + ([["tcp:127.0.0.1:1", "--antennas", "3"]] if program == "cv7_gnss_ins" else [])
+    for args in cases:
+        r = run_app(lang, program, *args)
+        assert r.returncode == 2 and f"usage: {program}" in r.stderr, (args, r.returncode, r.stderr)
+        assert "Traceback" not in r.stderr and r.stdout == "", (args, r.stdout, r.stderr)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("program", PROGRAMS)
+def test_unreachable_address_and_nack_exit_1(program: str, lang: str) -> None:
+    with socket.socket() as s:  # a port nobody listens on
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    failed(run_app(lang, program, f"tcp:127.0.0.1:{port}"), str(port))
+    device = FLOWS[program if program in FLOWS else "cv7_gnss_ins_1"][1]
+    with Sim("mip", device, listen_for("tcp"), "--speed", str(SPEED), "--nack", "set_to_idle") as sim:
+        r = run_app(lang, program, sim.address, "--deadline-s", "20")
+    failed(r, "set_to_idle")
