@@ -17,9 +17,9 @@ Every flow runs in every language over TCP, and over a pseudo-terminal in one la
 (PTY_LANG, rotating so each language's serial path runs at least once): 4 x 5 + 5 runs at
 --speed 10 on the circle scenario. A language whose program is missing fails
 (test_every_program_builds_and_prints_its_usage), it is never skipped. Each run must end with exit
-0 as soon as its samples are printed (well before its deadline), with the device information lines
-(all but gx5_polling), the state lines ending in the manual's state before the first sample, and
-the samples checked against the truth.
+0 as soon as its samples are printed (well before its deadline), with the device information lines,
+the state lines ending in the manual's state before the first sample, and the samples checked
+against the truth.
 
 Tolerances, from the simulated world (docs/simulator-world.md "Quantities"): the filter outputs
 are the truth plus 5 cm / 1 cm/s / 1-2 mrad, moved halfway toward each accepted measurement; the
@@ -115,15 +115,13 @@ def check_velocity(s: dict) -> None:
 def check_output(flow: str, stdout: str) -> None:
     lines = stdout.splitlines()
     _, device, extra = FLOWS[flow]
+    # Device information first, from the Get Device Info reply (padding stripped).
     identity = [x for x in lines if x.split(" ", 1)[0] in ("model", "serial", "firmware")]
-    if flow == "gx5_polling":  # the contract's polling flow reads no device information
-        assert identity == [], lines[:6]
-    else:  # from the Get Device Info reply, padding stripped
-        assert [x.split(" ", 1)[0] for x in identity] == ["model", "serial", "firmware"], lines[:6]
-        family = "GX5-45" if device == "gx5_45" else "CV7"
-        assert family in identity[0] and identity[0] == identity[0].strip(), identity
-        assert identity[1].split(" ", 1)[1].strip() == identity[1].split(" ", 1)[1] != "", identity
-        assert identity[2].split(" ", 1)[1].isdigit(), identity
+    assert [x.split(" ", 1)[0] for x in identity] == ["model", "serial", "firmware"], lines[:6]
+    family = "GX5-45" if device == "gx5_45" else "CV7"
+    assert family in identity[0] and identity[0] == identity[0].strip(), identity
+    assert identity[1].split(" ", 1)[1].strip() == identity[1].split(" ", 1)[1] != "", identity
+    assert identity[2].split(" ", 1)[1].isdigit(), identity
     samples = [json.loads(x) for x in lines if x.startswith("{")]
     assert len(samples) == SAMPLES, stdout
     first_sample = next(i for i, x in enumerate(lines) if x.startswith("{"))

@@ -2,12 +2,13 @@
 
 A 3DM-GX5-45 application polling for data the way the manual's polling example does
 (3dm-gx5-45-dcp.txt section 2.4.2), written against the generated `mipcodec` package (contract:
-tests/apps/README.md): idle, the IMU and estimation filter message formats (written, the streams not
-resumed: the device stays idle), Initialize the Filter as step 7 does (poll the complementary
-filter's Euler angles, Set Initial Attitude with them); then every 100 ms a Poll IMU Data and a Poll
-Estimation Filter Data command (ACK/NACK not suppressed), each answered by its ACK and one data
-packet. It prints the filter state on each change and, once the solution is valid, the navigation
-samples. Run it with the package importable (PYTHONPATH=generated/python/mipcodec).
+tests/apps/README.md): idle, device information, the IMU and estimation filter message formats
+(written, the streams not resumed: the device stays idle), Initialize the Filter as step 7 does
+(poll the complementary filter's Euler angles, Set Initial Attitude with them); then every 100 ms a
+Poll IMU Data and a Poll Estimation Filter Data command (ACK/NACK not suppressed), each answered by
+its ACK and one data packet. It prints the filter state on each change and, once the solution is
+valid, the navigation samples. Run it with the package importable
+(PYTHONPATH=generated/python/mipcodec).
 """
 
 from __future__ import annotations
@@ -32,9 +33,18 @@ FILTER_FIELDS = (GPS_TIMESTAMP, FILTER_STATUS, LLH, EULER)
 RUN_SOLUTION_VALID = types.FilterStateGx5.RUN_SOLUTION_VALID
 
 
+def text(raw: bytes) -> str:
+    """A device information string without its padding."""
+    return raw.decode("ascii", "replace").strip(" \0")
+
+
 def configure(device: Device) -> None:
     device.base.ping()
     device.base.set_to_idle()
+    info = device.base.get_device_info().info
+    print(f"model {text(info.model_name)}", flush=True)
+    print(f"serial {text(info.serial_number)}", flush=True)
+    print(f"firmware {info.firmware_version}", flush=True)
     imu_base = device.threedm.get_imu_base_rate().rate
     filter_base = device.threedm.get_filter_base_rate().rate
     if imu_base < IMU_RATE_HZ or filter_base < FILTER_RATE_HZ:

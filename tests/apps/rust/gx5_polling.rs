@@ -2,15 +2,15 @@
 //! data as the manual's polling example does (3dm-gx5-45-dcp.txt section 2.4.2; contract:
 //! tests/apps/README.md).
 //!
-//! It configures the device through the crate's typed command API (idle, the IMU and estimation
-//! filter message formats) and leaves it idle: no resume, no stream; it initializes the filter as
-//! the manual's step 7 does (poll the complementary filter's Euler angles, Set Initial Attitude
-//! with them). Then every 100 ms it sends Poll IMU Data (0x0C,0x01) and Poll Estimation Filter Data
-//! (0x0C,0x03), the ACK/NACK not suppressed, each answered by its ACK and one data packet. It
-//! prints `imu ok` once the IMU data has accelerometer and gyro, `state N` whenever the filter
-//! state changes and, once the solution is valid, one JSON line per polled filter packet until
-//! `--samples` were printed (exit 0). Wrong arguments: exit 2; a command that is not acknowledged,
-//! a connection that fails or the deadline passing: exit 1.
+//! It configures the device through the crate's typed command API (idle, device information, the
+//! IMU and estimation filter message formats) and leaves it idle: no resume, no stream; it
+//! initializes the filter as the manual's step 7 does (poll the complementary filter's Euler
+//! angles, Set Initial Attitude with them). Then every 100 ms it sends Poll IMU Data (0x0C,0x01)
+//! and Poll Estimation Filter Data (0x0C,0x03), the ACK/NACK not suppressed, each answered by its
+//! ACK and one data packet. It prints `imu ok` once the IMU data has accelerometer and gyro, `state
+//! N` whenever the filter state changes and, once the solution is valid, one JSON line per polled
+//! filter packet until `--samples` were printed (exit 0). Wrong arguments: exit 2; a command that
+//! is not acknowledged, a connection that fails or the deadline passing: exit 1.
 
 use std::cell::RefCell;
 use std::error::Error;
@@ -232,6 +232,19 @@ fn run(options: &Options) -> Result<(), Box<dyn Error>> {
 fn configure(device: &mut Device, reader: &RefCell<Reader>) -> Result<(), Box<dyn Error>> {
     device.base().ping()?;
     device.base().set_to_idle()?;
+    let info = device.base().get_device_info()?.info;
+    {
+        let mut r = reader.borrow_mut();
+        r.emit(&format!(
+            "model {}",
+            String::from_utf8_lossy(info.model_name.trimmed())
+        ));
+        r.emit(&format!(
+            "serial {}",
+            String::from_utf8_lossy(info.serial_number.trimmed())
+        ));
+        r.emit(&format!("firmware {}", info.firmware_version));
+    }
     let imu_base = device.threedm().get_imu_base_rate()?.rate;
     let filter_base = device.threedm().get_filter_base_rate()?.rate;
     if imu_base < IMU_RATE_HZ || filter_base < FILTER_RATE_HZ {
