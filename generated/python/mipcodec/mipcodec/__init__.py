@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "9c9885f1db354078"
+SPEC_HASH = "73af8b646141b464"
 
 __all__ = [
     "SPEC_HASH",
