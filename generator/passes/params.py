@@ -349,10 +349,14 @@ def _default(
     manual = d["source"]["manual"]
     value = d["value"]
     n = None
-    if count is not None:
-        if count["kind"] != "fixed":
-            ctx.err(sf, where, f"{owner}: default of {p['name']}: not supported for a counted array", "no default")
+    if count is not None and count["kind"] != "fixed":
+        # A counted array (a message format's list): any number of items, its count implied.
+        if not isinstance(value, list):
+            ctx.err(sf, where + ("value",), f"{owner}: default of {p['name']} is not a list", "a list of values")
             return None
+        n = len(value)
+        items = value
+    elif count is not None:
         n = count["value"]
         if not isinstance(value, list) or len(value) != n:
             ctx.err(

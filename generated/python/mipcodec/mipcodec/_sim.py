@@ -1222,6 +1222,7 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
         threedm.EventControl: {"mode": 0},
         threedm.EventTriggerConfig: {"type": 0},
         threedm.EventActionConfig: {"type": 0},
+        threedm.GpioConfig: {"feature": 0},
         threedm.AdvancedLowpassFilter: {"enable": True, "manual": False},
         threedm.ComplementaryFilter: {"pitch_roll_time_constant": 10.0, "heading_time_constant": 10.0},
         threedm.DataStreamControl_cv7_ins: {"enable": True},

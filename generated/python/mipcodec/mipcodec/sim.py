@@ -460,6 +460,10 @@ class Simulator:
             attr = _sim.DECIMATION.get(type(value))
             if attr is not None:
                 decimation = max(1, int(getattr(value, attr, 1) or 1))
+        for cls, fmt in _sim.FORMATS.items():  # a format list never written: the spec's default
+            items = self._factory(cls).get(fmt[1])
+            if items and isinstance(fmt[0], int) and not fmt[2]:
+                plan[fmt[0]] = [(int(d), decimation) for d in items]
         for value in self.current.values():
             fmt = _sim.FORMATS.get(type(value))
             if fmt is None:

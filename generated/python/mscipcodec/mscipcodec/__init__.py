@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "b92301fd8e2d651b"
+SPEC_HASH = "2ea79d162a456b00"
 
 __all__ = [
     "SPEC_HASH",

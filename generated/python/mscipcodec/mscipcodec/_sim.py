@@ -141,4 +141,9 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
 # parameter's factory value is zero: device -> class -> {parameter: value}
-FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
+    "ms_imu3020": {
+        imu_config.SelectSensors: {"sensors": [129, 130]},
+        imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
+    },
+}

@@ -91,3 +91,21 @@ def test_world_quantities_through_the_table_and_the_clock_speed():
     assert vector.ticks == 2_000_000_000  # the fallback: the clock, in simulated ns
     with pytest.raises(ValueError, match="unknown scenario"):
         Simulator("alpha", scenario="nowhere")
+
+
+def test_factory_values_hold_on_their_device_and_start_a_message_format(monkeypatch):
+    # _sim.FACTORY: device -> class -> values (the spec's defaults, on the devices whose manuals
+    # state them); a format list's default streams before any format command (MS-CIP's message).
+    from testproto import _sim
+
+    monkeypatch.setattr(_sim, "FACTORY", {"alpha": {command.SetMode: {"mode": [0x02]}}})
+    monkeypatch.setattr(_sim, "FORMATS", {command.SetMode: (0x80, "mode", None, None)})
+    monkeypatch.setattr(_sim, "UNADDRESSED", {"alpha": (0x80,)})
+    alpha, beta = Simulator("alpha"), Simulator("beta")
+    assert alpha._factory(command.SetMode) == {"mode": [0x02]}
+    assert beta._factory(command.SetMode) == {}
+    alpha._replan()
+    assert alpha.plan == {0x80: [(0x02, 1)]}
+    monkeypatch.setattr(_sim, "FACTORY", {})
+    alpha._replan()
+    assert alpha.plan == {}  # no default, no format written: nothing streams

@@ -73,5 +73,5 @@ ALL_SETTINGS: Tuple[Any, ...] = ()
 DEVICE_TITLES: Dict[str, str] = {"dev_a": "Device A", "dev_b": "Device B"}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: class -> {parameter: value}
-FACTORY: Dict[Any, Dict[str, Any]] = {}
+# parameter's factory value is zero: device -> class -> {parameter: value}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}
