@@ -5,7 +5,9 @@ of the spec and exported as the protocol's `simulation` entry (null without the 
 Checked: every command named is a command of the protocol; every parameter named is a parameter of
 one of its layouts (a list's `descriptor`/`decimation` members of the list's struct); every set
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
-members are members of the ack code enum; the filter's enums exist and name their members. The
+members are members of the ack code enum; the filter's enums exist and name their members, and its internal
+aiding (the status flag roles, heading update sources, aiding measurement control sources, antenna
+offsets, dual-antenna status) names commands, their parameters, enum and bitfield members. The
 entry keeps the section's shape with sources resolved (each gains its `title` from the manual).
 """
 
@@ -43,6 +45,7 @@ def run(ctx: Context) -> None:
             if key == "filters":
                 check.members(path + ("states",), entry["states"]["enum"], entry["states"]["members"])
                 check.members(path + ("fix",), entry["fix"]["enum"], [entry["fix"]["fix"], entry["fix"]["none"]])
+                check.filter_aiding(path, entry)
             resolved.append(
                 {**entry, "sources": ctx.check_sources(ctx.pf, ("simulation",) + path + ("sources",), entry["sources"])}
             )
@@ -129,3 +132,46 @@ class _Checker:
         for name in names:
             if name not in values:
                 self.err(path, f"simulation: '{name}' is not a member of {enum}", f"a member of {enum}")
+
+    def bits(self, path: tuple, bitfield: str, names: list[str]) -> None:
+        t = self.ctx.types.get(bitfield)
+        if t is None or t["kind"] != "bitfield":
+            self.err(path + ("type",), f"simulation: '{bitfield}' is not a bitfield of the protocol", "a bitfield name")
+            return
+        members = {m["name"] for m in t["members"]}
+        for name in names:
+            if name not in members:
+                self.err(path, f"simulation: '{name}' is not a member of {bitfield}", f"a member of {bitfield}")
+
+    def params(self, path: tuple, command: str, names: list[str]) -> None:
+        variants = self.command(path + ("command",), command)
+        params = {q["name"] for v in variants for q in v["params"]}
+        for name in names:
+            if variants and name not in params:
+                self.err(path, f"simulation: '{name}' is not a parameter of {command}", f"a parameter of {command}")
+
+    def filter_aiding(self, path: tuple, entry: dict) -> None:
+        """The internal aiding of one filter (docs/simulator-world.md "Internal aiding")."""
+        if "flags" in entry:
+            self.bits(path + ("flags",), entry["flags"]["type"], list(entry["flags"]["members"].values()))
+        heading = entry.get("heading")
+        if heading:
+            self.params(path + ("heading",), heading["command"], [heading["param"]])
+            self.members(path + ("heading",), heading["enum"], list(heading["members"]))
+            if "in_use" in heading:
+                used = sorted({s for sources in heading["members"].values() for s in sources})
+                self.bits(path + ("heading", "in_use"), heading["in_use"], used)
+            for i, name in enumerate(heading.get("external", [])):
+                self.params(path + ("heading", "external", i), name, ["heading"])
+        internal = entry.get("internal")
+        if internal:
+            self.params(path + ("internal",), internal["command"], [internal["param"], internal["enable"]])
+            named = list(internal["members"]) + ([internal["all"]] if "all" in internal else [])
+            self.members(path + ("internal",), internal["enum"], named)
+        antennas = entry.get("antennas")
+        if antennas:
+            self.params(path + ("antennas",), antennas["command"], [antennas["receiver"], antennas["offset"]])
+        dual = entry.get("dual_antenna")
+        if dual:
+            self.members(path + ("dual_antenna", "fix"), dual["fix"]["enum"], [dual["fix"]["fix"], dual["fix"]["none"]])
+            self.bits(path + ("dual_antenna", "flags"), dual["flags"]["type"], list(dual["flags"]["members"].values()))

@@ -113,6 +113,10 @@ def test_gx5_filter_states_follow_gnss_and_auto_init() -> None:
     status = sample(sim, 0x82, 0x10, 3.0)
     assert status.filter_state == state.INIT and int(status.status_flags) & 0x1000  # attitude not initialized
     assert command(sim, pkg.filter.AutoInitControl(function=1, enable=1), 0.0)[0][1] == 0
+    # GX5-45 line 1646: auto-initialization needs a heading source (heading update control: none)
+    assert sample(sim, 0x82, 0x10, 3.0).filter_state == state.INIT
+    source = t.HeadingUpdateSource.MAGNETOMETER
+    assert command(sim, pkg.filter.HeadingUpdateControl(function=1, source=source), 0.0)[0][1] == 0
     assert sample(sim, 0x82, 0x10, 1.0).filter_state == state.INIT  # no fix yet
     assert sample(sim, 0x82, 0x10, 3.0).filter_state == state.RUN_SOLUTION_VALID
     assert int(sample(sim, 0x82, 0x01, 3.0).valid_flags) == 1
@@ -132,6 +136,7 @@ def aiding_time():
 
 def test_cv7_filter_modes_follow_accepted_aiding() -> None:
     sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    sim.world.gnss_outages.append((0.0, 1e9))  # no sky: GNSS_POS_VEL takes the external measurements only
     mode = t.FilterModeCv7
     heading = pkg.aiding.TrueHeading(time=aiding_time(), frame_id=1, heading=0.5, uncertainty=0.01, valid_flags=1)
     assert command(sim, heading, 0.0)[0][1] == sim_mod._sim.NACK["invalid_parameter"]  # frame 1 not configured

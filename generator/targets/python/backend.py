@@ -1096,17 +1096,60 @@ def _streaming(sim: dict | None) -> dict:
     }
 
 
-def _filters(sim: dict | None) -> dict:
+def _filters(sim: dict | None, types: dict | None = None) -> dict:
     """The navigation filter per device (sim_world.NavFilter): its state enum's members in order,
-    what aids it, its GNSS fix type members (fix, no fix)."""
-    return {
-        e["device"]: {
+    what aids it, its GNSS fix type members (fix, no fix) and its internal aiding (the spec's
+    names resolved: status flag roles to masks, enum members to values)."""
+    types = types or {}
+
+    def value(enum: str, name: str) -> int:
+        return int(next(v["value"] for v in types[enum]["values"] if v["name"] == name))
+
+    def masks(flags: dict) -> dict:
+        bits = {m["name"]: m["mask"] for m in types[flags["type"]]["members"]}
+        return {role: bits[name] for role, name in flags["members"].items()}
+
+    out = {}
+    for e in (sim or {}).get("filters", []):
+        f: dict = {
             "aiding": e["aiding"],
             "states": list(e["states"]["members"]),
             "fix": [e["fix"]["fix"], e["fix"]["none"]],
         }
-        for e in (sim or {}).get("filters", [])
-    }
+        if "flags" in e:
+            f["flags"] = masks(e["flags"])
+        if "heading" in e:
+            h = e["heading"]
+            f["heading"] = {
+                "command": h["command"],
+                "param": py_attr(h["param"]),
+                "sources": {value(h["enum"], n): list(s) for n, s in h["members"].items()},
+                "in_use": masks({"type": h["in_use"], "members": {s: s for v in h["members"].values() for s in v}})
+                if "in_use" in h
+                else {},
+                "external": list(h.get("external", [])),
+            }
+        if "internal" in e:
+            i = e["internal"]
+            f["internal"] = {
+                "command": i["command"],
+                "param": py_attr(i["param"]),
+                "enable": py_attr(i["enable"]),
+                "all": value(i["enum"], i["all"]) if "all" in i else None,
+                "sources": {value(i["enum"], n): s for n, s in i["members"].items()},
+            }
+        if "antennas" in e:
+            a = e["antennas"]
+            f["antennas"] = {
+                "command": a["command"],
+                "receiver": py_attr(a["receiver"]),
+                "offset": py_attr(a["offset"]),
+            }
+        if "dual_antenna" in e:
+            d = e["dual_antenna"]
+            f["dual_antenna"] = {"fix": [d["fix"]["fix"], d["fix"]["none"]], "flags": masks(d["flags"])}
+        out[e["device"]] = f
+    return out
 
 
 # The simulated world (runtime sim_world.py, issue 29): which world quantity each data parameter
@@ -1204,6 +1247,20 @@ WORLD: dict[str, dict[str, dict[str, str]]] = {
             "valid_flags": "valid:attitude",
         },
         "ecef_position": {"position": "ecef_position", "valid_flags": "valid:navigation"},
+        "heading_update_state": {
+            "heading": "nav_yaw",
+            "heading_uncertainty": "attitude_uncertainty",
+            "source": "flags:heading_sources",
+            "valid_flags": "valid:heading_update",
+        },
+        "gnss_dual_antenna_status": {
+            "time_of_week": "gps_tow",
+            "heading": "dual_heading",
+            "heading_uncertainty": "dual_heading_uncertainty",
+            "fix_type": "enum:dual_fix",
+            "status_flags": "flags:dual_flags",
+            "valid_flags": "valid:dual_antenna",
+        },
     },
 }
 # What commands do to the world (sim.py _act): command name -> (action, arguments). capture: reply
@@ -1307,7 +1364,7 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         "factory": defaults,
         "sim_data": data,
         "sim_world": world,
-        "sim_filter": pyrepr(_filters(proto["simulation"])),
+        "sim_filter": pyrepr(_filters(proto["simulation"], m.types)),
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),
         "rates": classes(streaming.get("rates", {})),

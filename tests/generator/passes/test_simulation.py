@@ -111,3 +111,74 @@ def test_every_name_is_checked(tmp_path):
     for message in expected:
         assert any(message in e for e in got), (message, got)
     assert any("simulation" in e and "protocol.yaml" in e for e in got), got  # located in the protocol file
+
+
+AIDING = """\
+      flags: {type: Flags, members: {heading_warning: heading}}
+      internal:
+        command: stream_control
+        param: selector
+        enable: enable
+        enum: FilterState
+        members: {navigating: magnetometer}
+      antennas: {command: stream_control, receiver: selector, offset: enable}
+      dual_antenna:
+        fix: {enum: FilterState, fix: navigating, none: init}
+        flags: {type: Flags, members: {offsets: offsets}}
+      heading:
+        command: stream_control
+        param: selector
+        enum: FilterState
+        members: {init: [], navigating: [magnetometer]}
+        in_use: Flags
+"""
+FLAGS = """\
+bitfields:
+  - name: Flags
+    type: u8
+    members:
+      - {name: heading, bits: 0}
+      - {name: offsets, bits: 1}
+      - {name: magnetometer, bits: 2}
+"""
+
+
+def _aiding(text: str) -> dict[str, str]:
+    files = _files(
+        SIMULATION.replace(
+            "      sources: [{manual: b.txt, line: 7}]\n", text + "      sources: [{manual: b.txt, line: 7}]\n"
+        )
+    )
+    files["protocol.yaml"] = files["protocol.yaml"].replace("structs:\n", FLAGS + "structs:\n", 1)
+    return files
+
+
+def test_internal_aiding_is_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _aiding(AIDING), "simulation")
+    assert errors(ctx) == []
+    f = ctx.simulation["filters"][0]
+    assert f["internal"]["members"] == {"navigating": "magnetometer"} and f["flags"]["type"] == "Flags"
+
+
+def test_internal_aiding_names_are_checked(tmp_path):
+    bad = (
+        AIDING.replace("members: {heading_warning: heading}", "members: {heading_warning: heading_bit}")
+        .replace("enable: enable", "enable: switch")
+        .replace("members: {navigating: magnetometer}", "members: {full: magnetometer}")
+        .replace("receiver: selector", "receiver: receiver_id")
+        .replace("fix: navigating, none: init}", "fix: fixed, none: init}")
+        .replace("in_use: Flags", "in_use: Missing\n        external: [no_such_command, message_format]")
+    )
+    got = errors(build(tmp_path, _aiding(bad), "simulation"))
+    expected = [
+        "'heading_bit' is not a member of Flags",
+        "'switch' is not a parameter of stream_control",
+        "'full' is not a member of FilterState",
+        "'receiver_id' is not a parameter of stream_control",
+        "'fixed' is not a member of FilterState",
+        "'Missing' is not a bitfield of the protocol",
+        "'no_such_command' is not a command of the protocol",
+        "'heading' is not a parameter of message_format",  # an external heading command sends a heading
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)

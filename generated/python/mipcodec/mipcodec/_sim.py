@@ -941,7 +941,21 @@ WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
     filter_data.FilterStatus_cv7_ins: (("filter_state", "enum:filter_state"), ("status_flags", "flags:filter_flags")),
     filter_data.GpsTimestamp: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
     filter_data.GravityVector: (("gravity", "gravity_body"), ("valid_flags", "valid:attitude")),
+    filter_data.HeadingUpdateState: (
+        ("heading", "nav_yaw"),
+        ("heading_uncertainty", "attitude_uncertainty"),
+        ("source", "flags:heading_sources"),
+        ("valid_flags", "valid:heading_update"),
+    ),
     filter_data.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:navigation")),
+    filter_data.GnssDualAntennaStatus: (
+        ("time_of_week", "gps_tow"),
+        ("heading", "dual_heading"),
+        ("heading_uncertainty", "dual_heading_uncertainty"),
+        ("fix_type", "enum:dual_fix"),
+        ("status_flags", "flags:dual_flags"),
+        ("valid_flags", "valid:dual_antenna"),
+    ),
     gnss_receiver_1.LlhPosition: (
         ("latitude", "gnss_latitude"),
         ("longitude", "gnss_longitude"),
@@ -1008,11 +1022,41 @@ FILTER: Dict[str, Dict[str, Any]] = {
         "aiding": "gnss",
         "states": ["startup", "init", "run_solution_valid", "run_solution_error"],
         "fix": ["fix_3d", "fix_none"],
+        "flags": {"no_attitude": 4096, "no_position_velocity": 8192, "gnss_unavailable": 2, "magnetic_anomaly": 4096},
+        "heading": {
+            "command": "heading_update_control",
+            "param": "source",
+            "sources": {
+                0: [],
+                1: ["magnetometer"],
+                2: ["gnss_velocity"],
+                3: ["external"],
+                4: ["gnss_velocity", "magnetometer"],
+                5: ["gnss_velocity", "external"],
+                6: ["magnetometer", "external"],
+                7: ["gnss_velocity", "magnetometer", "external"],
+            },
+            "in_use": {"magnetometer": 1, "gnss_velocity": 2, "external": 4},
+            "external": ["external_heading_update", "external_heading_update_with_time"],
+        },
     },
     "cv7_ins": {
         "aiding": "external",
         "states": ["init", "vert_gyro", "ahrs", "full_nav"],
         "fix": ["fix_3d", "fix_none"],
+        "flags": {"condition": 3, "heading_warning": 8, "position_warning": 16, "velocity_warning": 32},
+        "internal": {
+            "command": "aiding_measurement_control",
+            "param": "source",
+            "enable": "enable",
+            "all": 65535,
+            "sources": {0: "gnss", 1: "dual_antenna", 2: "pressure", 4: "magnetometer"},
+        },
+        "antennas": {"command": "multi_antenna_offset", "receiver": "receiver_id", "offset": "antenna_offset"},
+        "dual_antenna": {
+            "fix": ["fix_da_fixed", "fix_none"],
+            "flags": {"receiver_1": 1, "receiver_2": 2, "offsets": 4},
+        },
     },
 }
 

@@ -281,6 +281,14 @@ class Simulator:
 
     def _act(self, command: Field, now: float) -> Optional[int]:
         """What a command does to the world (_sim.ACTIONS): None, or the NACK code refusing it."""
+        heading = _sim.FILTER.get(self.device, {}).get("heading") or {}
+        if command.NAME in heading.get("external", ()):  # an external heading update (0x0D,0x17)
+            if "external" not in self.world.filter.heading_sources:
+                return int(_sim.NACK["invalid_parameter"])  # only used when enabled, otherwise NACKed
+            t = self.sim_time(now)
+            self.world.aid("heading", t, [float(getattr(command, "heading", 0.0) or 0.0)])
+            self.world.filter.accept("external", t)
+            return None
         action = _sim.ACTIONS.get(type(command))
         if action is None:
             return None
@@ -453,8 +461,50 @@ class Simulator:
                 self.world.filter.auto_init = self._setting_on(cls, action[1])
             if action[0] == "wait_run" and getattr(cls, "DEVICE", None) in (None, self.device):
                 self.world.filter.wait_for_run = self._setting_on(cls, action[1])
+        self._filter_settings()
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
+
+    def _named(self, name: str) -> List[Any]:
+        """The command classes of a command name for this device."""
+        return [c for c in _sim.COMMANDS if c.NAME == name and getattr(c, "DEVICE", None) in (None, self.device)]
+
+    def _filter_settings(self) -> None:
+        """The internal aiding the settings give the filter (_sim.FILTER, docs/simulator-world.md):
+        the aiding measurement control sources enabled, the heading update control's sources, and
+        whether both receivers' antenna offsets are configured and apart."""
+        profile = _sim.FILTER.get(self.device, {})
+        nav = self.world.filter
+        internal = profile.get("internal")
+        if internal:
+            every = () if internal["all"] is None else (internal["all"],)
+            nav.internal = [
+                source
+                for value, source in internal["sources"].items()
+                if any(
+                    self._setting_on(c, internal["enable"], **{internal["param"]: (value,) + every})
+                    for c in self._named(internal["command"])
+                )
+            ]
+        heading = profile.get("heading")
+        if heading:
+            chosen = None
+            for c in self._named(heading["command"]):
+                for value in self.current.values():
+                    if type(value) is c:
+                        chosen = int(getattr(value, heading["param"], 0) or 0)
+                if chosen is None:
+                    chosen = int(_sim.FACTORY.get(c, {}).get(heading["param"], 0) or 0)
+            nav.heading_sources = list(heading["sources"].get(chosen or 0, []))
+        antennas = profile.get("antennas")
+        if antennas:
+            offsets: Dict[int, Tuple[float, ...]] = {}
+            for value in self.current.values():
+                if any(type(value) is c for c in self._named(antennas["command"])):
+                    receiver = int(getattr(value, antennas["receiver"], 0) or 0)
+                    offsets[receiver] = tuple(float(x) for x in getattr(value, antennas["offset"], None) or ())
+            a, b = offsets.get(1), offsets.get(2)
+            nav.antennas_ok = bool(a and b and len(a) == len(b) and math.dist(a, b) > 0.0)
 
     def poll(self, now: float) -> List[Chunk]:
         """The data packets due by `now` (each at its tick's time)."""
@@ -607,7 +657,7 @@ def _show(
         return
     if kind == "enum":
         member = (
-            world["filter_state"] if name == "filter_state" else nav.get("fix", ["", ""])[0 if world["gnss_fix"] else 1]
+            world[name] if isinstance(world.get(name), str) else nav.get("fix", ["", ""])[0 if world["gnss_fix"] else 1]
         )
         if isinstance(current, Enum) and str(member).upper() in type(current).__members__:
             setattr(value, attr, type(current)[str(member).upper()])
@@ -922,6 +972,14 @@ def _parser() -> argparse.ArgumentParser:
         metavar="START:END",
         help="no GNSS fix from START to END seconds of simulated time (repeatable)",
     )
+    p.add_argument(
+        "--mag-disturbance",
+        action="append",
+        default=[],
+        metavar="START:END",
+        help="a magnetic disturbance near the device from START to END seconds of simulated time (repeatable): "
+        "the magnetometer reads it, a filter using the magnetometer for heading rejects it and flags it",
+    )
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
     p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
     p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
@@ -943,14 +1001,14 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def _outage(text: str) -> Tuple[float, float]:
+def _outage(text: str, option: str = "--gnss-outage") -> Tuple[float, float]:
     start, _, end = text.partition(":")
     try:
         a, b = float(start), float(end)
     except ValueError:
-        raise ValueError(f"--gnss-outage {text}: expected START:END in seconds") from None
+        raise ValueError(f"{option} {text}: expected START:END in seconds") from None
     if not 0 <= a < b:
-        raise ValueError(f"--gnss-outage {text}: expected 0 <= START < END")
+        raise ValueError(f"{option} {text}: expected 0 <= START < END")
     return a, b
 
 
@@ -970,6 +1028,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         else:
             sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed, baud=args.baud)
             sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
+            sim.world.mag_disturbances.extend(_outage(text, "--mag-disturbance") for text in args.mag_disturbance)
         serve(args.listen, sim, replay)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)

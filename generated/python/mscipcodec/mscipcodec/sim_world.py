@@ -24,11 +24,27 @@ GPS_TOW0 = 345600.0  # Wednesday 00:00 of week 2400
 GPS_EPOCH_DAYS = 3657  # days from 1970-01-01 to the GPS epoch 1980-01-06
 LEAP_SECONDS = 18
 GNSS_FIX_AFTER = 2.0  # seconds of simulated time a receiver takes to a 3D fix
+KINEMATIC_SPEED = 2.0  # m/s: GNSS velocity gives a heading from this speed on (CV7 manual line 533)
+MAG_DISTURBANCE = (0.15, 0.10, 0.30)  # gauss, body frame: a magnetic disturbance (--mag-disturbance)
+INTERNAL_GAIN = 0.1  # how far each sample of an internal sensor pulls the filter's output toward it
+MAG_ANOMALY = 0.10  # a field magnitude this far (relative) from the model's is rejected as disturbed
 
 Vec = Tuple[float, float, float]
 # Quantities in radians (every other angle, latitude and longitude, is in degrees)
 RADIANS = frozenset(
-    ("roll", "pitch", "yaw", "course", "angular_rate", "true_angular_rate", "gyro_bias", "attitude_uncertainty")
+    (
+        "roll",
+        "pitch",
+        "yaw",
+        "nav_yaw",
+        "course",
+        "angular_rate",
+        "true_angular_rate",
+        "gyro_bias",
+        "attitude_uncertainty",
+        "dual_heading",
+        "dual_heading_uncertainty",
+    )
 )
 
 
@@ -138,18 +154,33 @@ def _read_track(path: str) -> List[Tuple[float, ...]]:
 
 class NavFilter:
     """The navigation filter's state machine. `profile` (generated `_sim.FILTER`) names the
-    device's states and what aids it: "gnss" (internal receiver: init until a fix and an attitude,
-    then running; back to error when the fix is lost) or "external" (CV7: init, vertical gyro
-    after the IMU settles, AHRS with an accepted heading, full navigation with heading, position
-    and velocity; back a mode when an aiding stream stops)."""
+    device's states, what aids it, its status flag masks and its internal aiding:
+
+    - "gnss" (GX5-45: its internal receiver): startup, then initialization until the attitude is
+      known (set by a command, or auto-initialization from an available heading source of the
+      heading update control) and the receiver has a fix, then running; running with a solution
+      error while the fix is lost.
+    - "external" (CV7: aiding measurement control): initialization, vertical gyro after the IMU
+      settles, AHRS with an absolute heading (external heading, the internal magnetometer or the
+      dual-antenna heading), full navigation with heading, position and velocity (external, or
+      the internal receivers); back a mode when a source has been silent for TIMEOUT.
+
+    The World feeds the internal sources (`internal`, `heading_sources`) each sample, and sets
+    `anomaly` (the magnetometer in use reads a field the model does not explain) and `in_use`."""
 
     TIMEOUT = 2.0  # seconds without a measurement before the filter stops using it
     SETTLE = 1.0  # seconds of IMU data before the first mode
 
     def __init__(self, profile: Dict[str, Any]) -> None:
         self.profile = profile
+        self.flags: Dict[str, int] = dict(profile.get("flags") or {})
         self.auto_init = bool(profile.get("auto_init", True))
         self.wait_for_run = False
+        self.internal: List[str] = []  # enabled internal aiding sources (CV7 aiding measurement control)
+        self.heading_sources: List[str] = []  # enabled heading update sources (GX5-45 heading update control)
+        self.antennas_ok = False  # both receivers' antenna offsets configured, apart (dual-antenna heading)
+        self.anomaly = False
+        self.in_use: List[str] = []
         self.reset(0.0)
 
     def reset(self, t: float) -> None:
@@ -172,15 +203,20 @@ class NavFilter:
     def state(self, t: float, gnss_fix: bool) -> Tuple[str, int]:
         """(state name of the device's enum, status flags) at simulated time t."""
         names: List[str] = list(self.profile["states"])
+        bit = self.flags.get
         if self.profile.get("aiding") == "gnss":
-            attitude = self.auto_init or self.attitude_set
+            heading = bool(self.in_use) or not self.profile.get("heading")  # no heading control: any
+            attitude = self.attitude_set or (self.auto_init and heading)
             if t - self.started < 0.5:
-                name, flags = names[0], 0x3000
+                name, flags = names[0], bit("no_attitude", 0) | bit("no_position_velocity", 0)
             elif not self.running and not (attitude and gnss_fix):
-                name, flags = names[1], (0 if attitude else 0x1000) | (0 if gnss_fix else 0x2000)
+                flags = (0 if attitude else bit("no_attitude", 0)) | (0 if gnss_fix else bit("no_position_velocity", 0))
+                name = names[1]
             else:
                 self.running = True
-                name, flags = (names[2], 0) if gnss_fix else (names[3], 0x0002)  # 0x0002: GNSS unavailable
+                name, flags = (names[2], 0) if gnss_fix else (names[3], bit("gnss_unavailable", 0))
+                if self.anomaly:
+                    flags |= bit("magnetic_anomaly", 0)
         else:
             heading = self._fresh("heading", t)
             posvel = self._fresh("position", t) and self._fresh("velocity", t)
@@ -193,11 +229,18 @@ class NavFilter:
             else:
                 name = names[1]
             flags = 0
+            if name != names[0]:
+                if self.anomaly:
+                    flags |= bit("heading_warning", 0)
+                if name == names[3] and "gnss" in self.internal and not gnss_fix:  # coasting on the IMU
+                    flags |= bit("position_warning", 0) | bit("velocity_warning", 0)
         if name != self.last_state:
             self.mode_since = t
             self.last_state = name
         if self.profile.get("aiding") != "gnss" and name != names[0]:
-            flags |= 1 if t - self.mode_since > 1.0 else 2  # bits 0-1: stable / converging
+            mask = bit("condition", 3)
+            shift = (mask & -mask).bit_length() - 1
+            flags |= (1 if t - self.mode_since > 1.0 else 2) << shift  # stable / converging
         return name, flags
 
     def valid(self, name: str, kind: str) -> bool:
@@ -222,6 +265,7 @@ class World:
             profile or {"aiding": "gnss", "states": ["startup", "init", "run_solution_valid", "run_solution_error"]}
         )
         self.gnss_outages: List[Tuple[float, float]] = []
+        self.mag_disturbances: List[Tuple[float, float]] = []
 
     def capture_gyro_bias(self) -> Vec:
         """The bias a capture measures (the true bias plus a little noise); the gyro output is
@@ -249,22 +293,82 @@ class World:
     def gnss_fix(self, t: float) -> bool:
         return t >= GNSS_FIX_AFTER and not any(a <= t < b for a, b in self.gnss_outages)
 
+    def mag_disturbed(self, t: float) -> bool:
+        return any(a <= t < b for a, b in self.mag_disturbances)
+
+    def _aid_internal(
+        self, t: float, fix: bool, pos: Vec, vel: Vec, yaw: float, mag: Vec, euler: Vec, gnss: Tuple[Vec, Vec]
+    ) -> Dict[str, Any]:
+        """The device's own sensors aiding the filter at t (the sources its settings enable): the
+        magnetometer heading (rejected while the field's magnitude is off the model's), the
+        dual-antenna heading (both receivers fixed, antenna offsets configured), the GNSS
+        velocity vector as heading (moving at KINEMATIC_SPEED or more), the receivers' position
+        and velocity. Each sample pulls the filter's outputs INTERNAL_GAIN of the way toward the
+        measurement (a low-pass: the receivers' noise is smoothed). Returns the dual-antenna
+        quantities."""
+        nav = self.filter
+        speed = math.hypot(vel[0], vel[1])
+        mag_heading = _mag_heading(mag, euler[0], euler[1])
+        anomaly = abs(math.sqrt(sum(m * m for m in mag)) / _MAG_NORM - 1.0) > MAG_ANOMALY
+        dual = fix and nav.antennas_ok
+        dual_heading = _wrap(yaw + self.rng.gauss(0.0, 0.003))
+        available = {
+            "magnetometer": not anomaly,
+            "dual_antenna": dual,
+            "gnss_velocity": fix and speed >= KINEMATIC_SPEED,
+            "gnss": fix,
+            "pressure": True,
+            "external": nav._fresh("external", t),
+        }
+        headings = {
+            "magnetometer": mag_heading,
+            "dual_antenna": dual_heading,
+            "gnss_velocity": math.atan2(vel[1], vel[0]),
+        }
+        enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
+        nav.in_use = [s for s in enabled if available.get(s)]
+        g = INTERNAL_GAIN
+
+        def blend(kind: str, error: Sequence[float]) -> None:
+            old = nav.offsets.get(kind, (0.0,) * len(error))
+            nav.offsets[kind] = tuple((1.0 - g) * old[k] + g * error[k] for k in range(len(error)))
+
+        for source in nav.in_use:
+            if source in headings:
+                nav.accept("heading", t)
+                blend("heading", (_wrap(headings[source] - yaw),))
+            elif source == "gnss":
+                nav.accept("position", t)
+                nav.accept("velocity", t)
+                blend("position", [gnss[0][k] - pos[k] for k in range(3)])
+                blend("velocity", [gnss[1][k] - vel[k] for k in range(3)])
+        nav.anomaly = anomaly and "magnetometer" in enabled
+        return {"dual": dual, "dual_heading": dual_heading, "dual_valid": dual and "dual_antenna" in nav.internal}
+
     def quantities(self, t: float) -> Dict[str, Any]:
         """Every quantity at simulated time t, in SI units (rad, m, m/s, m/s^2, gauss, mbar, s)."""
         n = self.rng.gauss
         pos, vel, acc, euler, rate = self.scenario.truth(t)
         roll, pitch, yaw = euler
+        c = _rot(roll, pitch, yaw)
+        mag = _to_body(c, MAG_NED)
+        if self.mag_disturbed(t):
+            mag = tuple(mag[k] + MAG_DISTURBANCE[k] for k in range(3))  # type: ignore[assignment]
+        mag = tuple(m + n(0.0, 1e-4) for m in mag)  # type: ignore[assignment]
+        fix = self.gnss_fix(t)
+        gnss_err = (n(0.0, 0.5), n(0.0, 0.5), n(0.0, 0.8))
+        gnss_pos = tuple(pos[k] + gnss_err[k] for k in range(3))
+        gnss_vel = tuple(v + n(0.0, 0.05) for v in vel)
+        dual = self._aid_internal(t, fix, pos, vel, yaw, mag, euler, (gnss_pos, gnss_vel))  # type: ignore[arg-type]
         offsets = self.filter.offsets
         out_pos = [pos[k] + offsets.get("position", (0.0, 0.0, 0.0))[k] for k in range(3)]
         out_vel = [vel[k] + offsets.get("velocity", (0.0, 0.0, 0.0))[k] for k in range(3)]
         out_yaw = yaw + offsets.get("heading", (0.0,))[0]
-        c = _rot(roll, pitch, yaw)
         lat0 = math.radians(ORIGIN[0])
         lat = ORIGIN[0] + math.degrees(pos[0] / EARTH_RADIUS)
         lon = ORIGIN[1] + math.degrees(pos[1] / (EARTH_RADIUS * math.cos(lat0)))
         height = ORIGIN[2] - pos[2]
         force = _to_body(c, (acc[0], acc[1], acc[2] - GRAVITY))
-        mag = _to_body(c, MAG_NED)
         gyro = tuple(rate[k] + self.gyro_bias[k] - self.captured_bias[k] for k in range(3))
         cy, sy, cp, sp, cr, sr = (
             math.cos(yaw / 2),
@@ -280,7 +384,6 @@ class World:
             cr * sp * cy + sr * cp * sy,
             cr * cp * sy - sr * sp * cy,
         )
-        fix = self.gnss_fix(t)
         state, flags = self.filter.state(t, fix)
         tow = GPS_TOW0 + t
         unix = (GPS_EPOCH_DAYS * 86400.0) + GPS_WEEK * 604800.0 + tow - LEAP_SECONDS
@@ -289,14 +392,20 @@ class World:
         rlat, rlon = math.radians(lat), math.radians(lon)
         r = EARTH_RADIUS + height
         ecef = (r * math.cos(rlat) * math.cos(rlon), r * math.cos(rlat) * math.sin(rlon), r * math.sin(rlat))
-        gnss_err = (n(0.0, 0.5), n(0.0, 0.5), n(0.0, 0.8))
         nav_err = 0.05
+        nav = self.filter
+        dual_roles = (nav.profile.get("dual_antenna") or {}).get("flags", {})
+        dual_flags = (dual_roles.get("receiver_1", 0) | dual_roles.get("receiver_2", 0) if fix else 0) | (
+            dual_roles.get("offsets", 0) if nav.antennas_ok else 0
+        )
+        dual_fix = (nav.profile.get("dual_antenna") or {}).get("fix", ["", ""])[0 if dual["dual"] else 1]
+        in_use = (nav.profile.get("heading") or {}).get("in_use", {})
         speed = math.hypot(vel[0], vel[1])
         return {
             "specific_force": tuple(f + n(0.0, 0.002) for f in force),
             "angular_rate": tuple(g + n(0.0, 1e-4) for g in gyro),
             "true_angular_rate": rate,
-            "magnetic_field": tuple(m + n(0.0, 1e-4) for m in mag),
+            "magnetic_field": mag,
             "pressure": pressure_mbar(height) + n(0.0, 0.01),
             "temperature": 25.0 + n(0.0, 0.05),
             "gravity": GRAVITY,
@@ -315,7 +424,7 @@ class World:
             "gnss_latitude": lat + math.degrees(gnss_err[0] / EARTH_RADIUS),
             "gnss_longitude": lon + math.degrees(gnss_err[1] / EARTH_RADIUS),
             "gnss_height": height + gnss_err[2],
-            "gnss_velocity_ned": tuple(v + n(0.0, 0.05) for v in vel),
+            "gnss_velocity_ned": gnss_vel,
             "speed": speed,
             "course": math.atan2(vel[1], vel[0]) if speed > 0.1 else yaw,
             "ecef_position": ecef,
@@ -334,7 +443,26 @@ class World:
             "filter_valid_attitude": self.filter.valid(state, "attitude"),
             "filter_valid_navigation": self.filter.valid(state, "navigation"),
             "gyro_bias": self.captured_bias,
+            "dual_heading": dual["dual_heading"],
+            "dual_heading_uncertainty": 0.003 if dual["dual"] else 0.0,
+            "dual_fix": dual_fix,
+            "dual_flags": dual_flags,
+            "filter_valid_dual_antenna": dual["dual_valid"],
+            "heading_sources": sum(in_use.get(s, 0) for s in nav.in_use),
+            "filter_valid_heading_update": any(s in in_use for s in nav.in_use),
         }
+
+
+_MAG_NORM = math.sqrt(sum(m * m for m in MAG_NED))
+
+
+def _mag_heading(mag: Sequence[float], roll: float, pitch: float) -> float:
+    """The true heading a body-frame field reading gives at a known roll and pitch: levelled, its
+    horizontal direction from magnetic north, plus the model's declination."""
+    c = _rot(roll, pitch, 0.0)  # body to the levelled (heading) frame
+    x = c[0][0] * mag[0] + c[0][1] * mag[1] + c[0][2] * mag[2]
+    y = c[1][0] * mag[0] + c[1][1] * mag[1] + c[1][2] * mag[2]
+    return _wrap(math.atan2(-y, x) + math.atan2(MAG_NED[1], MAG_NED[0]))
 
 
 def _wrap(a: float) -> float:
