@@ -161,8 +161,14 @@ check: $(VENV)/.stamp
 lint: $(VENV)/.stamp
 	$(PY) -m generator lint
 
+# Does the spec cover the manuals (MANUALS=dir): headings, quoted packets, example tables
+# (generator/audit.py) and every factory default they state, transcribed or decided
+# (generator/defaults_audit.py).
 audit: $(VENV)/.stamp
-	$(PY) -m generator.audit --manuals $(MANUALS) $(if $(KINDS),--kinds $(KINDS))
+	@status=0; \
+	$(PY) -m generator.audit --manuals $(MANUALS) $(if $(KINDS),--kinds $(KINDS)) || status=$$?; \
+	$(PY) -m generator.defaults_audit --manuals $(MANUALS) || { s=$$?; [ $$s -gt $$status ] && status=$$s; }; \
+	exit $$status
 
 clean:
 	rm -rf build

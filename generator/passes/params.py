@@ -335,20 +335,28 @@ def _default(
             "no default",
         )
         return None
+    cited = [("source",), *(("also", i) for i in range(len(d.get("also", []))))]
+    refs = [d["source"], *d.get("also", [])]
+    for at, ref in zip(cited, refs):
+        if ref["manual"] not in ctx.manual_devices:
+            ctx.err(
+                sf,
+                where + at + ("manual",),
+                f"unknown manual '{ref['manual']}'",
+                "one of the manuals listed under devices in the protocol file: "
+                + ", ".join(sorted(ctx.manual_devices)),
+            )
     manual = d["source"]["manual"]
-    if manual not in ctx.manual_devices:
-        ctx.err(
-            sf,
-            where + ("source", "manual"),
-            f"unknown manual '{manual}'",
-            "one of the manuals listed under devices in the protocol file: " + ", ".join(sorted(ctx.manual_devices)),
-        )
     value = d["value"]
     n = None
-    if count is not None:
-        if count["kind"] != "fixed":
-            ctx.err(sf, where, f"{owner}: default of {p['name']}: not supported for a counted array", "no default")
+    if count is not None and count["kind"] != "fixed":
+        # A counted array (a message format's list): any number of items, its count implied.
+        if not isinstance(value, list):
+            ctx.err(sf, where + ("value",), f"{owner}: default of {p['name']} is not a list", "a list of values")
             return None
+        n = len(value)
+        items = value
+    elif count is not None:
         n = count["value"]
         if not isinstance(value, list) or len(value) != n:
             ctx.err(
@@ -367,7 +375,13 @@ def _default(
         if v is None:
             return None
         out.append(v)
-    return {"value": out if n is not None else out[0], "source": {"manual": manual, "line": d["source"]["line"]}}
+    return {
+        "value": out if n is not None else out[0],
+        "source": {"manual": manual, "line": d["source"]["line"]},
+        "also": [{"manual": r["manual"], "line": r["line"]} for r in d.get("also", [])],
+        # The devices whose manuals state it: the simulated device's factory value on those only.
+        "devices": sorted({ctx.manual_devices[r["manual"]] for r in refs if r["manual"] in ctx.manual_devices}),
+    }
 
 
 def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: str, tref: dict, item):

@@ -20,6 +20,7 @@ import importlib
 import json
 import select
 import socket
+import struct
 import subprocess
 import time
 from pathlib import Path
@@ -118,10 +119,14 @@ def _perturbed(value):
 
 def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
     """The factory values of the read reply's plain parameters (by name): the spec's default of the
-    command parameter of that name where the manual states one, else zero (an enum without a zero
+    command parameter of that name where the device's manual states one, else zero (an enum without a zero
     value: its first value)."""
     types = {t["name"]: t for t in protocol["types"]}
-    defaults = {q["name"]: q["default"]["value"] for q in variant["params"] if q.get("default")}
+    defaults = {
+        q["name"]: q["default"]["value"]
+        for q in variant["params"]
+        if q.get("default") and device in q["default"]["devices"]
+    }
     rid = next(r["id"] for r in variant["responses"] if (r["when"] or {}).get("function") == "read")
     reply = next(f for f in set_["fields"] if f["id"] == rid)
     params = next(v for v in reply["variants"] if v["device"] in (None, device))["params"]
@@ -134,7 +139,10 @@ def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
         if q["count"] is not None or kind not in ("primitive", "enum", "bitfield"):
             continue
         if q["name"] in defaults:
-            out[q["name"]] = defaults[q["name"]]
+            value = defaults[q["name"]]
+            if q["type"].get("name") == "float":  # as a 32-bit float on the wire (0.1 -> 0.10000000149...)
+                value = struct.unpack("<f", struct.pack("<f", value))[0]
+            out[q["name"]] = value
         elif kind == "enum":
             values = [v["value"] for v in types[q["type"]["name"]]["values"]]
             out[q["name"]] = 0 if 0 in values else values[0]
@@ -417,6 +425,92 @@ def test_mscip_streams_the_selected_sensors() -> None:
             data = [p for p in packets if p.set == 0xA2]
             assert 7 <= len(data) <= 13, len(data)  # 1000 Hz / 50 for 0.5 s
             assert all(f.descriptor == 0x81 for p in data for f in p.fields)
+        finally:
+            dev.transport.close()
+
+
+def test_gx5_streams_are_enabled_from_the_factory() -> None:
+    """A GX5-45 program that relies on the factory defaults: "The default for the device is all
+    streams enabled" (3dm-gx5-45-dcp.txt:1049; getting started step 5, line 411: "may have already
+    been enabled by default"). Ping, set to idle, set the IMU and filter message formats, resume,
+    and never send Enable/Disable Continuous Data Stream (0x0C,0x11): IMU and filter data arrive."""
+    pkg = python_package("mipcodec")
+    t = pkg.types
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "gx5_45")
+        try:
+            packets = []
+            dev.on_packet(packets.append)
+            dev.base.ping()
+            dev.base.set_to_idle()
+            # the manual's copy-paste example rates (line 1043): decimation 4 of the 500 Hz base rate
+            dev.threedm.imu_message_format.write(
+                descriptors=[t.DescriptorRate(descriptor=d, decimation=4) for d in (4, 5)]
+            )
+            dev.threedm.filter_message_format.write(
+                descriptors=[t.DescriptorRate(descriptor=d, decimation=4) for d in (3, 5)]
+            )
+            pump_for(dev, 0.2)
+            assert [p for p in packets if p.set in (0x80, 0x82)] == [], "idle: no data"
+            dev.base.resume()
+            pump_for(dev, 0.5)
+            imu = [p for p in packets if p.set == 0x80]
+            nav = [p for p in packets if p.set == 0x82]
+            assert 40 <= len(imu) <= 80 and 40 <= len(nav) <= 80, (len(imu), len(nav))  # 125 Hz for 0.5 s
+            assert [f.descriptor for f in imu[0].fields] == [4, 5]
+            assert [f.descriptor for f in nav[0].fields] == [3, 5]
+            # reads answer the factory values the manual states
+            stream = dev.threedm.data_stream_control
+            for selector in (t.Gx5StreamSelector.IMU, t.Gx5StreamSelector.ESTIMATION_FILTER):
+                assert stream.read_gx5_45(device_selector=selector).enabled == 1
+            assert dev.threedm.uart_baudrate.read().baud == 115200  # line 1296
+            assert dev.threedm.coning_sculling_enable.read().enable is True  # line 1282
+            sbas = dev.threedm.gnss_sbas_settings.read()
+            assert (sbas.enable_sbas, int(sbas.sbas_options)) == (1, 0x0003)  # line 1145
+            assert dev.threedm.mag_soft_iron_matrix.read().matrix == [1, 0, 0, 0, 1, 0, 0, 0, 1]  # line 1265
+            assert dev.filter.declination_source.read().source == t.MagneticParamSource.WMM  # line 1878
+        finally:
+            dev.transport.close()
+
+
+def test_cv7_holds_the_defaults_of_its_own_manual_only() -> None:
+    """A default one manual states holds on that manual's device: the GX5-45's baud rate (line
+    1296) is no CV7 default, its PPS source is (3dm-cv7-ins-docs.txt:217)."""
+    pkg = python_package("mipcodec")
+    t = pkg.types
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "cv7_ins")
+        try:
+            assert dev.threedm.uart_baudrate.read().baud == 0  # no stated default: zero (an assumption)
+            assert dev.threedm.pps_source.read().source == t.PpsSource.RECEIVER_1
+            cal = dev.filter.gnss_antenna_calibration_control.read()
+            assert abs(cal.max_offset - 0.1) < 1e-6  # line 271
+        finally:
+            dev.transport.close()
+
+
+def test_mscip_streams_its_default_message_without_select_sensors() -> None:
+    """ "The IMU Data Message ... is the default output configuration on device startup" (Table 63:
+    scaled accelerations and angular rates; ms-cip-doc00419-revM.txt:1229): data on, and nothing
+    else, streams them."""
+    pkg = python_package("mscipcodec")
+    t = pkg.types
+    with Sim("mscip", "ms_imu3020", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "ms_imu3020")
+        try:
+            packets = []
+            dev.on_packet(packets.append)
+            assert list(dev.imu_config.select_sensors.read().sensors) == [
+                t.SensorCode.SCALED_ACCEL,
+                t.SensorCode.SCALED_GYRO,
+            ]
+            dev.imu_config.sample_rate.write(decimation=50)
+            dev.imu_config.data_on_off.write(control=t.OnOff.ON)
+            pump_for(dev, 0.3)
+            dev.imu_config.data_on_off.write(control=t.OnOff.OFF)
+            data = [p for p in packets if p.set == 0xA2]
+            assert data
+            assert all([f.descriptor for f in p.fields] == [0x81, 0x82] for p in data)
         finally:
             dev.transport.close()
 

@@ -1339,9 +1339,14 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
                         py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None
                     )
                     commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
-                    factory = {py_attr(q["name"]): q["default"]["value"] for q in params if q.get("default")}
-                    if factory:
-                        defaults.append({"cls": cls, "value": pyrepr(factory)})
+                    for dev in v["devices"]:  # a default holds on the devices whose manuals state it
+                        factory = {
+                            py_attr(q["name"]): q["default"]["value"]
+                            for q in params
+                            if q.get("default") and dev in q["default"]["devices"]
+                        }
+                        if factory:
+                            defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
                 elif s["kind"] == "data" or f["role"] == "data":
                     units = tuple(
                         (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1361,7 +1366,11 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
     return {
         "nack": nack,
         "sim_commands": commands,
-        "factory": defaults,
+        "factory": {
+            d["id"]: [c for c in defaults if c["device"] == d["id"]]
+            for d in proto["devices"]
+            if any(c["device"] == d["id"] for c in defaults)
+        },
         "sim_data": data,
         "sim_world": world,
         "sim_filter": pyrepr(_filters(proto["simulation"], m.types)),

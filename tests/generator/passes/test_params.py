@@ -105,11 +105,43 @@ def test_default_values_are_checked_against_the_type_and_exported(tmp_path):
         "    functions: [write, read]\n",
     )
     assert errors(ctx) == []
+    src9 = {"source": {"manual": "a.txt", "line": 9}, "also": [], "devices": ["dev_a"]}
     assert [q["default"] for q in v["params"]] == [
-        {"value": True, "source": {"manual": "a.txt", "line": 9}},
-        {"value": 400, "source": {"manual": "a.txt", "line": 9}},
-        {"value": [0.0, 0.0, 1.0], "source": {"manual": "a.txt", "line": 9}},
+        {"value": True, **src9},
+        {"value": 400, **src9},
+        {"value": [0.0, 0.0, 1.0], **src9},
     ]
+
+
+def test_a_default_holds_on_the_devices_of_the_manuals_citing_it(tmp_path):
+    # a.txt is dev_a's manual, b.txt dev_b's (tiny_spec): `also` cites a further line stating it.
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: flag, type: bool, functions: [write], default: {value: true, source: {manual: b.txt, line: 7}}}\n"
+        "      - {name: rate, type: u16, functions: [write], default: {value: 400, source: {manual: b.txt, line: 7},"
+        " also: [{manual: a.txt, line: 12}, {manual: b.txt, line: 30}]}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == []
+    flag, rate = (q["default"] for q in v["params"])
+    assert flag["devices"] == ["dev_b"]
+    assert rate["devices"] == ["dev_a", "dev_b"]
+    assert rate["also"] == [{"manual": "a.txt", "line": 12}, {"manual": "b.txt", "line": 30}]
+
+
+def test_a_counted_list_default_is_a_list_of_any_length(tmp_path):
+    # A message format's list (MS-CIP select sensors): the count follows from the list.
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: n, type: u8, functions: [write]}\n"
+        "      - {name: codes, type: u8, count: n, functions: [write], default: {value: [0x81, 0x82], source: {manual: a.txt, line: 9}}}\n"
+        "      - {name: rest, type: u16, count: remaining, functions: [write], default: {value: 5, source: {manual: a.txt, line: 9}}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert errors(ctx) == [
+        "base.yaml:16:88: error: base.cmd: default of rest is not a list (expected a list of values)",
+    ]
+    assert v["params"][1]["default"]["value"] == [0x81, 0x82]
 
 
 def test_default_values_that_do_not_fit_are_located_errors(tmp_path):
@@ -118,14 +150,15 @@ def test_default_values_that_do_not_fit_are_located_errors(tmp_path):
         tmp_path,
         f"      - {{name: rate, type: u8, functions: [write], default: {{value: 300, {src}}}}}\n"
         f"      - {{name: axes, type: vector3f, functions: [write], default: {{value: [1, 2], {src}}}}}\n"
-        "      - {name: flag, type: bool, functions: [write], default: {value: true, source: {manual: z.txt, line: 1}}}\n"
+        "      - {name: flag, type: bool, functions: [write], default: {value: true, source: {manual: a.txt, line: 1},"
+        " also: [{manual: z.txt, line: 1}]}}\n"
         f"      - {{name: key, type: u8, functions: [read], default: {{value: 1, {src}}}}}\n",
         "    functions: [write, read]\n",
     )
     assert errors(ctx) == [
         "base.yaml:14:69: error: base.cmd: default of rate: 300 is not a value of u8 (expected a u8 value)",
         "base.yaml:15:75: error: base.cmd: default of axes is not a list of 3 values (expected 3 values)",
-        "base.yaml:16:94: error: unknown manual 'z.txt' (expected one of the manuals listed under devices in the"
+        "base.yaml:16:127: error: unknown manual 'z.txt' (expected one of the manuals listed under devices in the"
         " protocol file: a.txt, b.txt)",
         "base.yaml:17:59: error: base.cmd: default of key: only a setting's parameters sent for write have one"
         " (expected no default)",

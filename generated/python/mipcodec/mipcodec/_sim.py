@@ -1137,11 +1137,39 @@ ALL_SETTINGS: Tuple[Any, ...] = (
 DEVICE_TITLES: Dict[str, str] = {"gx5_45": "3DM-GX5-45", "cv7_ins": "3DM-CV7-GNSS/INS"}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: class -> {parameter: value}
-FACTORY: Dict[Any, Dict[str, Any]] = {
-    threedm.DataStreamControl_cv7_ins: {"enable": True},
-    filter.VehicleDynamicsMode: {"mode": 1},
-    filter.MagneticFieldMagnitudeSource: {"source": 2},
-    filter.AdaptiveFilterControl: {"level": 2},
-    system.CommunicationMode: {"mode": 1},
+# parameter's factory value is zero: device -> class -> {parameter: value}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
+    "gx5_45": {
+        threedm.MagHardIronOffset_gx5_45: {"offset": [0.0, 0.0, 0.0]},
+        threedm.MagSoftIronMatrix_gx5_45: {"matrix": [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]},
+        threedm.ConingScullingEnable: {"enable": True},
+        threedm.UartBaudrate: {"baud": 115200},
+        threedm.AdvancedLowpassFilter: {"enable": True, "manual": False},
+        threedm.ComplementaryFilter: {
+            "pitch_roll_enable": True,
+            "heading_enable": True,
+            "pitch_roll_time_constant": 10.0,
+            "heading_time_constant": 10.0,
+        },
+        threedm.DataStreamControl_gx5_45: {"enable": 1},
+        threedm.GnssSbasSettings: {"enable_sbas": 1, "sbas_options": 3},
+        threedm.GnssAssistedFixControl: {"option": 0, "flags": 255},
+        filter.VehicleDynamicsMode: {"mode": 1},
+        filter.DeclinationSource: {"source": 2},
+        filter.InclinationSource: {"source": 2},
+        filter.MagneticFieldMagnitudeSource: {"source": 2},
+        system.CommunicationMode: {"mode": 1},
+    },
+    "cv7_ins": {
+        threedm.EventControl: {"mode": 0},
+        threedm.EventTriggerConfig: {"type": 0},
+        threedm.EventActionConfig: {"type": 0},
+        threedm.GpioConfig: {"feature": 0},
+        threedm.AdvancedLowpassFilter: {"enable": True, "manual": False},
+        threedm.ComplementaryFilter: {"pitch_roll_time_constant": 10.0, "heading_time_constant": 10.0},
+        threedm.DataStreamControl_cv7_ins: {"enable": True},
+        threedm.PpsSource: {"source": 1},
+        filter.AdaptiveFilterControl: {"level": 2},
+        filter.GnssAntennaCalibrationControl: {"max_offset": 0.1},
+    },
 }

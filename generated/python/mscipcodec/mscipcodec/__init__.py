@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "fd7b6df18f3af1c4"
+SPEC_HASH = "19e1abf72abfcc85"
 
 __all__ = [
     "SPEC_HASH",

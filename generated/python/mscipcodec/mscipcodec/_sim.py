@@ -105,5 +105,10 @@ ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: class -> {parameter: value}
-FACTORY: Dict[Any, Dict[str, Any]] = {}
+# parameter's factory value is zero: device -> class -> {parameter: value}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
+    "ms_imu3020": {
+        imu_config.SelectSensors: {"sensors": [129, 130]},
+        imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
+    },
+}

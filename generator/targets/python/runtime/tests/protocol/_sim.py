@@ -27,7 +27,7 @@ DECIMATION: Dict[Any, str] = {}
 BASE_RATES: Dict[str, Dict[int, int]] = {"alpha": {0x80: 100}}
 ALL_SETTINGS: Tuple[Any, ...] = ()
 DEVICE_TITLES: Dict[str, str] = {"alpha": "Alpha", "beta": "Beta"}
-FACTORY: Dict[Any, Dict[str, Any]] = {}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}
 # The world (sim_world.py): the vector shows the specific force, its time the GPS time of week
 WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {sensor.Vector: (("xyz", "specific_force"), ("time", "gps_tow"))}
 FILTER: Dict[str, Dict[str, Any]] = {}
