@@ -16,6 +16,7 @@ from __future__ import annotations
 from .diagnostics import SpecError
 from .passes import (
     assemble,
+    capabilities,
     collect_types,
     field_layouts,
     irregular_lengths,
@@ -49,6 +50,7 @@ PASSES = (
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
+    capabilities,  # per device, the commands and data it supports (the descriptor lists)
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

@@ -7,8 +7,12 @@ one of its layouts (a list's `descriptor`/`decimation` members of the list's str
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
 members are members of the ack code enum; the filter's enums exist and name their members, and its internal
 aiding (the status flag roles, heading update sources, aiding measurement control sources, antenna
-offsets, dual-antenna status) names commands, their parameters, enum and bitfield members. The
-entry keeps the section's shape with sources resolved (each gains its `title` from the manual).
+offsets, dual-antenna status) names commands, their parameters, enum and bitfield members; the descriptor
+lists' commands, replies and list parameters exist (a reply of that command whose list runs to the
+end of the field, of u16 items or of a struct of two u8: set, descriptor), each gaining its
+`capacity`, the most entries that fit beside the ack in one packet; the identity's reply
+parameters exist (an unsigned integer or a string) and every device gives a fitting value for
+every item. The entry keeps the section's shape with sources resolved (each gains its `title` from the manual).
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ from __future__ import annotations
 from .context import Context, SpecFile
 
 _COMMAND_LISTS = ("formats", "enables", "rates", "polls", "baud")
+_UNSIGNED = {"u8", "u16", "u32", "u64"}
 
 
 def run(ctx: Context) -> None:
@@ -53,6 +58,8 @@ def run(ctx: Context) -> None:
     for key in _COMMAND_LISTS + ("all_settings", "base_rates", "unaddressed", "filters"):
         sim.setdefault(key, [])
     sim.setdefault("decimation", None)
+    sim["descriptor_lists"] = check.descriptor_lists(spec.get("descriptor_lists"))
+    sim["identity"] = check.identity(spec.get("identity"))
     ctx.simulation = sim
 
 
@@ -66,6 +73,129 @@ class _Checker:
                 if f["role"] == "command":
                     self.commands.setdefault(f["name"], []).extend(f["variants"])
         self.data_sets = {s["id"] for s in ctx.sets if s["kind"] == "data"}
+        self.fields: dict[str, list[tuple[dict, dict]]] = {}
+        for s in ctx.sets:
+            for f in s["fields"]:
+                self.fields.setdefault(f["name"], []).append((s, f))
+
+    def descriptor_lists(self, spec: dict | None) -> dict | None:
+        if spec is None:
+            return None
+        path = ("descriptor_lists",)
+        ack = next((r for r in self.ctx.reserved if r["role"] == "ack"), None)
+        header = self.ctx.framing.get("field_header_size", 2)
+        room = self.ctx.framing.get("max_payload", 255) - header
+        if ack is not None:
+            room -= header + ack["size"]["max"]
+        lists = []
+        for i, entry in enumerate(spec["lists"]):
+            p = path + ("lists", i)
+            out = dict(entry)
+            self.command(p + ("command",), entry["command"])
+            command = next((f for _, f in self.fields.get(entry["command"], []) if f["role"] == "command"), None)
+            reply = next(((s, f) for s, f in self.fields.get(entry["reply"], []) if f["role"] == "response"), None)
+            if command is not None and (reply is None or reply[1]["id"] not in command["responses"]):
+                self.err(
+                    p + ("reply",), f"simulation descriptor_lists: '{entry['reply']}' is not a reply of {entry['command']}",
+                    f"the name of a response of {entry['command']}",
+                )  # fmt: skip
+                reply = None
+            item_size = 0
+            if reply is not None:
+                param = next((q for q in reply[1]["params"] if q["name"] == entry["param"]), None)
+                t = (param or {}).get("type", {})
+                two_bytes = t.get("kind") == "primitive" and t.get("name") == "u16"
+                if t.get("kind") == "struct":
+                    members = self.ctx.types[t["name"]]["params"]
+                    two_bytes = [q["type"].get("name") for q in members] == ["u8", "u8"]
+                if param is None or (param["count"] or {}).get("kind") != "remaining" or not two_bytes:
+                    self.err(
+                        p + ("param",),
+                        f"simulation descriptor_lists: '{entry['param']}' is not a list of {entry['reply']} running to the end of the field, of u16 or of a struct of two u8",
+                        "a remaining-count parameter of u16 or {set: u8, descriptor: u8}",
+                    )  # fmt: skip
+                else:
+                    item_size = 2
+                out["set"] = reply[0]["id"]
+                out["command_descriptor"] = command["id"]
+                out["reply_descriptor"] = reply[1]["id"]
+                out["item"] = "u16" if t.get("kind") == "primitive" else t.get("name")
+            out["capacity"] = room // item_size if item_size else 0
+            lists.append(out)
+        return {
+            **spec,
+            "lists": lists,
+            "sources": self.ctx.check_sources(self.sf, ("simulation",) + path + ("sources",), spec["sources"]),
+            "notes": spec.get("notes", []),
+        }
+
+    def identity(self, spec: dict | None) -> dict | None:
+        if spec is None:
+            return None
+        items: dict[str, dict] = {}
+        reports = []
+        for i, r in enumerate(spec["reports"]):
+            p = ("identity", "reports", i)
+            reply = next((f for _, f in self.fields.get(r["reply"], []) if f["role"] == "response"), None)
+            if reply is None:
+                self.err(
+                    p + ("reply",), f"simulation identity: '{r['reply']}' is not a response", "the name of a response"
+                )
+                continue
+            params, param = reply["params"], None
+            for name in r["param"].split("."):
+                param = next((q for q in params if q["name"] == name), None)
+                if param is None:
+                    break
+                t = param["type"]
+                params = self.ctx.types[t["name"]]["params"] if t["kind"] == "struct" else []
+            t = (param or {}).get("type", {})
+            kind = "string" if t.get("kind") == "string" else "integer" if t.get("name") in _UNSIGNED else None
+            if param is None or kind is None or param["count"] is not None:
+                self.err(
+                    p + ("param",), f"simulation identity: '{r['param']}' is not a string or unsigned integer parameter of {r['reply']}",
+                    "a path of parameter names (a.b) ending at a string or an unsigned integer",
+                )  # fmt: skip
+                continue
+            limit = {"kind": kind, "max": t["length"] if kind == "string" else 256 ** t["size"]["max"] - 1}
+            if items.setdefault(r["item"], limit) != limit:
+                self.err(
+                    p + ("item",),
+                    f"simulation identity: item '{r['item']}' is reported by parameters of different types",
+                    "one type per item",
+                )
+            reports.append(
+                {**r, "set": next(s["id"] for s, f in self.fields[r["reply"]] if f is reply), "descriptor": reply["id"]}
+            )
+        devices = []
+        for i, d in enumerate(spec["devices"]):
+            p = ("identity", "devices", i)
+            self.device(p + ("device",), d["device"])
+            for item, limit in items.items():
+                v = d["values"].get(item)
+                ok = (
+                    isinstance(v, str) and len(v) <= limit["max"] and v.isascii()
+                    if limit["kind"] == "string"
+                    else isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= limit["max"]
+                )
+                if not ok:
+                    what = (
+                        f"an ASCII string of at most {limit['max']} characters"
+                        if limit["kind"] == "string"
+                        else f"an integer 0..{limit['max']}"
+                    )
+                    self.err(p + ("values",), f"simulation identity: {d['device']} gives no fitting '{item}'", what)
+            for item in d["values"]:
+                if item not in items:
+                    self.err(
+                        p + ("values", item),
+                        f"simulation identity: '{item}' is reported by no reply",
+                        "an item of reports",
+                    )
+            devices.append(
+                {**d, "sources": self.ctx.check_sources(self.sf, ("simulation",) + p + ("sources",), d["sources"])}
+            )
+        return {"reports": reports, "items": items, "devices": devices, "notes": spec.get("notes", [])}
 
     def err(self, path: tuple, message: str, expected: str) -> None:
         self.ctx.err(self.sf, ("simulation",) + path, message, expected)

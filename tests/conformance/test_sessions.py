@@ -237,7 +237,7 @@ def test_typed_api_over_tcp():
     case = next(c for c in CASES if c["protocol"] == "mip" and c["name"] == "refused_command_for_the_device")
     dev = FakeDevice(case, PROTOCOLS["mip"]["framing"]).start()
     with pkg.connect(f"tcp:127.0.0.1:{dev.port}", device="gx5_45") as device:
-        with pytest.raises(pkg.session.CommandRefused, match="not supported by gx5_45"):
+        with pytest.raises(pkg.session.CommandRefused, match=r"not supported by 3DM-GX5-45 \(3dm-gx5-45-dcp\.txt\)"):
             device.threedm.sensor_to_vehicle_euler.read()
         device.base.ping()
     dev.join(10)

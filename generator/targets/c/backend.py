@@ -194,8 +194,17 @@ class _Package:
         self.globals: dict[str, str] = {}  # C identifier -> what it names (collision check)
         self._check_framing()
         self.type_views = [self._type_view(self.types[n]) for n in self._type_order()]
+        caps = {c["device"]: c for c in proto.get("capabilities", {}).get("devices", [])}
         self.devices = [
-            {"id": d["id"], "c": f"{self.P}_DEVICE_{d['id'].upper()}", "title": d.get("title", d["id"])}
+            {
+                "id": d["id"],
+                "c": f"{self.P}_DEVICE_{d['id'].upper()}",
+                "title": d.get("title", d["id"]),
+                "manual": d.get("manual", ""),
+                # the capabilities table: (set << 8) | descriptor, ascending
+                "commands": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("commands", [])],
+                "data": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("data", [])],
+            }
             for d in proto["devices"]
         ]
         self.layouts: list[dict] = []

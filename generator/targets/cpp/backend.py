@@ -646,6 +646,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         root = f"cpp/{pkg}"
         inc = f"{root}/include/{pkg}"
         sets = P.set_models()
+        caps = {c["device"]: c for c in proto.get("capabilities", {}).get("devices", [])}
         ctx = {
             "ns": P.ns,
             "pkg": pkg,
@@ -654,7 +655,17 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
             "title": proto["title"],
             "framing": P.framing(),
             "limits": P.limits(),
-            "devices": [{"id": d["id"], "cpp": ident(d["id"]), "title": d["title"]} for d in proto["devices"]],
+            "devices": [
+                {
+                    "id": d["id"],
+                    "cpp": ident(d["id"]),
+                    "title": d["title"],
+                    "manual": d["manual"],
+                    "commands": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("commands", [])],
+                    "data": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("data", [])],
+                }
+                for d in proto["devices"]
+            ],
             "types": [P.type_model(t) for t in P.ordered_types()],
             "sets": sets,
             "lookup": P.lookup(),

@@ -81,6 +81,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "_session",
     "_sim",
     "command_api",
+    "capabilities",
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
@@ -676,6 +677,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         session = _session_context(m, sets)
         for name in SESSION_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
+        files[f"{root}/{pkg}/capabilities.py"] = env.get_template("python/package/capabilities.py.j2").render(
+            **ctx, capabilities=_capabilities(proto)
+        )
         files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
             **ctx, **_sim_context(m, sets)
         )
@@ -703,6 +707,12 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def _capabilities(proto: dict) -> list[dict]:
+    """The IR's per-device capabilities with each device's title and manual (capabilities.py)."""
+    devices = {d["id"]: d for d in proto["devices"]}
+    return [{**devices[c["device"]], **c, "id": c["device"]} for c in proto["capabilities"]["devices"]]
 
 
 def _columns_context(proto: dict) -> dict:
@@ -1389,4 +1399,45 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         "actions": [{"cls": c, "value": pyrepr(a)} for n, a in WORLD_ACTIONS.items() for c in by_name.get(n, [])],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
+        **_sim_identity(proto, sets),
+    }
+
+
+def _sim_identity(proto: dict, sets: list[dict]) -> dict:
+    """The descriptor lists and the identity of the spec's simulation section, by reply class."""
+    sim = proto["simulation"] or {}
+    classes: dict[tuple[int, int], str] = {}
+    for sm in sets:
+        names = _layout_classes(sm["set"]["fields"])
+        for f in sm["set"]["fields"]:
+            if len(f["variants"]) == 1:
+                classes[(sm["set"]["id"], f["id"])] = f"{sm['module']}.{names[(f['name'], None)]}"
+    struct_types = {t["name"]: t for t in proto["types"]}
+    lists = []
+    dl = sim.get("descriptor_lists")
+    for i, entry in enumerate((dl or {}).get("lists", [])):
+        item = None if entry["item"] == "u16" else f"types.{camel(entry['item'])}"
+        if item is not None and entry["item"] not in struct_types:
+            item = None
+        cls = classes[(entry["set"], entry["reply_descriptor"])]
+        lists.append({"cls": cls, "value": pyrepr((i, entry["capacity"], py_attr(entry["param"]))), "item": item})
+    reports: dict[str, list] = {}
+    ident = sim.get("identity") or {"reports": [], "devices": [], "items": {}}
+    for r in ident["reports"]:
+        fields = next(s["fields"] for s in proto["sets"] if s["id"] == r["set"])
+        field = next(f for f in fields if f["id"] == r["descriptor"])
+        params, t = field["params"], {}
+        for name in r["param"].split("."):
+            q = next(q for q in params if q["name"] == name)
+            t = q["type"]
+            params = struct_types[t["name"]]["params"] if t["kind"] == "struct" else []
+        fmt = (t["length"], " " if t["padding"] == "space" else "\x00", t["justify"]) if t["kind"] == "string" else None
+        path = tuple(py_attr(n) for n in r["param"].split("."))
+        reports.setdefault(classes[(r["set"], r["descriptor"])], []).append((path, r["item"], fmt))
+    return {
+        "descriptor_lists": lists,
+        "descriptor_contents": pyrepr(tuple((dl or {}).get("contents", []))),
+        "identity_reports": [{"cls": c, "value": pyrepr(tuple(v))} for c, v in reports.items()],
+        "identity": pyrepr({d["device"]: d["values"] for d in ident["devices"]}),
+        "identity_items": pyrepr({k: (v["kind"], v["max"]) for k, v in ident["items"].items()}),
     }

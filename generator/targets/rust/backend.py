@@ -447,12 +447,16 @@ class _Protocol:
             {"variant": camel(k), "name": k, "first": _hex(r["first"]), "last": _hex(r["last"])}
             for k, r in proto["set_kinds"].items()
         ]
+        caps = {c["device"]: c for c in proto.get("capabilities", {}).get("devices", [])}
         devices = [
             {
                 "id": d["id"],
                 "variant": self.device_variant(d["id"]),
                 "title": d["title"],
                 "title_lit": rust_str(d["title"]),
+                "manual_lit": rust_str(d["manual"]),
+                "commands": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("commands", [])],
+                "data": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("data", [])],
             }
             for d in proto["devices"]
         ]

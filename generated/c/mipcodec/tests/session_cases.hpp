@@ -206,7 +206,8 @@ inline const std::vector<Case> &cases() {
              {5, nullptr, nullptr, "7565010404f10100d56a"},
          },
          "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"sensor_to_vehicle_euler "
-         "is not supported by gx5_45\"}\n{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}\n"},
+         "is not supported by 3DM-GX5-45 "
+         "(3dm-gx5-45-dcp.txt)\"}\n{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}\n"},
         {"refused_function_for_the_device",
          MIPC_DEVICE_CV7_INS,
          1000,
@@ -223,8 +224,8 @@ inline const std::vector<Case> &cases() {
              {20, nullptr, nullptr, "75650c0404f130000f0a"},
          },
          "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"function read of "
-         "device_startup_settings is not supported by "
-         "cv7_ins\"}\n{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}\n"},
+         "device_startup_settings is not supported by 3DM-CV7-GNSS/INS "
+         "(3dm-cv7-ins-docs.txt)\"}\n{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}\n"},
         {"reply_field_that_does_not_decode",
          MIPC_DEVICE_CV7_INS,
          1000,

@@ -27,6 +27,82 @@ bool mscipc_device_from_id(const char *id, mscipc_device_t *out) {
     return false;
 }
 
+const char *mscipc_device_title(mscipc_device_t device) {
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        return "MS-IMU3020";
+    case MSCIPC_DEVICE_ANY:
+    default:
+        return NULL;
+    }
+}
+
+const char *mscipc_device_manual(mscipc_device_t device) {
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        return "ms-cip-doc00419-revM.txt";
+    case MSCIPC_DEVICE_ANY:
+    default:
+        return NULL;
+    }
+}
+
+/* The capabilities tables: (set << 8) | descriptor, ascending (a leading 0 keeps an empty one legal). */
+static const uint16_t k_ms_imu3020_commands[] = {0,      0x0102, 0x0103, 0x0104, 0x0105, 0x0106, 0x0107,
+                                                 0x0108, 0x0109, 0x0201, 0x0203, 0x0204, 0x0205, 0x0206,
+                                                 0x0207, 0x0208, 0x0209, 0x020A, 0x020B, 0x020C, 0x020D};
+static const uint16_t k_ms_imu3020_data[] = {0,      0xA281, 0xA282, 0xA283, 0xA284,
+                                             0xA285, 0xA286, 0xA287, 0xA288, 0xA289};
+
+static const uint16_t *device_table(mscipc_device_t device, bool data, size_t *count) {
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        *count = data ? 9u : 20u;
+        return (data ? k_ms_imu3020_data : k_ms_imu3020_commands) + 1;
+    case MSCIPC_DEVICE_ANY:
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+const uint16_t *mscipc_device_commands(mscipc_device_t device, size_t *count) {
+    assert(count != NULL);
+    return device_table(device, false, count);
+}
+
+const uint16_t *mscipc_device_data(mscipc_device_t device, size_t *count) {
+    assert(count != NULL);
+    return device_table(device, true, count);
+}
+
+static bool table_has(const uint16_t *table, size_t n, uint16_t key) {
+    size_t lo = 0;
+    while (lo < n) {
+        size_t mid = lo + (n - lo) / 2u;
+        if (table[mid] == key) {
+            return true;
+        }
+        if (table[mid] < key) {
+            lo = mid + 1u;
+        } else {
+            n = mid;
+        }
+    }
+    return false;
+}
+
+bool mscipc_device_supports(mscipc_device_t device, uint8_t set, uint8_t descriptor) {
+    size_t n;
+    uint16_t key = (uint16_t)(((unsigned)set << 8) | descriptor);
+    const uint16_t *t = device_table(device, false, &n);
+    if (t != NULL && table_has(t, n, key)) {
+        return true;
+    }
+    t = device_table(device, true, &n);
+    return t != NULL && table_has(t, n, key);
+}
+
 mscipc_set_kind_t mscipc_set_kind(uint8_t set) {
     if (set >= 0x01 && set <= 0x7F) {
         return MSCIPC_SET_KIND_COMMAND;

@@ -248,7 +248,7 @@ TEST(Sessions, refused_command_for_the_device) {
         },
         {
             "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"sensor_to_vehicle_"
-            "euler is not supported by gx5_45\"}",
+            "euler is not supported by 3DM-GX5-45 (3dm-gx5-45-dcp.txt)\"}",
             "{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
         });
 }
@@ -270,7 +270,7 @@ TEST(Sessions, refused_function_for_the_device) {
         },
         {
             "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"function read of "
-            "device_startup_settings is not supported by cv7_ins\"}",
+            "device_startup_settings is not supported by 3DM-CV7-GNSS/INS (3dm-cv7-ins-docs.txt)\"}",
             "{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
         });
 }

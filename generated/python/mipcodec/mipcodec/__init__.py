@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "ba0b3fc9130f19c5"
+SPEC_HASH = "7ac1f26831f047be"
 
 __all__ = [
     "SPEC_HASH",

@@ -1136,6 +1136,59 @@ ALL_SETTINGS: Tuple[Any, ...] = (
 
 DEVICE_TITLES: Dict[str, str] = {"gx5_45": "3DM-GX5-45", "cv7_ins": "3DM-CV7-GNSS/INS"}
 
+# The replies that list what the device supports (spec simulation descriptor_lists): reply class ->
+# (which reply: 0 the first, 1 the extended; its capacity; the list attribute), and the item class
+# (None: a u16, (set << 8) | descriptor); which capabilities lists they hold, in that order
+DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {
+    base.DeviceDescriptors: (0, 124, "descriptors"),
+    base.ExtendedDescriptors: (1, 124, "descriptors"),
+}
+DESCRIPTOR_ITEMS: Dict[Any, Any] = {
+    base.DeviceDescriptors: None,
+    base.ExtendedDescriptors: None,
+}
+DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command", "data")
+
+# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
+# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
+# item its kind and limit (the largest integer, or the most characters)
+IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {
+    base.DeviceInfo: (
+        (("info", "firmware_version"), "firmware", None),
+        (("info", "model_name"), "model_name", (16, " ", "left")),
+        (("info", "model_number"), "model_number", (16, " ", "left")),
+        (("info", "serial_number"), "serial_number", (16, " ", "left")),
+        (("info", "lot_number"), "lot_number", (16, " ", "left")),
+        (("info", "device_options"), "options", (16, " ", "left")),
+    ),
+}
+IDENTITY: Dict[str, Dict[str, Any]] = {
+    "gx5_45": {
+        "firmware": 1534,
+        "model_name": "3DM-GX5-45",
+        "model_number": "6232-4270",
+        "serial_number": "6232-00122",
+        "lot_number": "",
+        "options": "5g, 150d/s",
+    },
+    "cv7_ins": {
+        "firmware": 1202,
+        "model_name": "3DM-CV7-GNSS/INS",
+        "model_number": "6284-4220",
+        "serial_number": "6284.170342",
+        "lot_number": "2407-118",
+        "options": "8g, 300d/s",
+    },
+}
+IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
+    "firmware": ("integer", 65535),
+    "model_name": ("string", 16),
+    "model_number": ("string", 16),
+    "serial_number": ("string", 16),
+    "lot_number": ("string", 16),
+    "options": ("string", 16),
+}
+
 # Factory values the manuals state (the spec's `default`, with its source line); every other
 # parameter's factory value is zero: device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {

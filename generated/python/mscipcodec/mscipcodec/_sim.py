@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
-from . import base, imu_config, imu_data
+from . import base, imu_config, imu_data, types
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.
@@ -103,6 +103,41 @@ UNADDRESSED: Dict[str, Any] = {}
 ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 
 DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
+
+# The replies that list what the device supports (spec simulation descriptor_lists): reply class ->
+# (which reply: 0 the first, 1 the extended; its capacity; the list attribute), and the item class
+# (None: a u16, (set << 8) | descriptor); which capabilities lists they hold, in that order
+DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {
+    base.DeviceMessages: (0, 124, "messages"),
+}
+DESCRIPTOR_ITEMS: Dict[Any, Any] = {
+    base.DeviceMessages: types.MessageId,
+}
+DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command",)
+
+# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
+# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
+# item its kind and limit (the largest integer, or the most characters)
+IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {
+    base.DeviceModel: ((("model",), "model_name", (16, " ", "right")),),
+    base.DeviceSn: ((("serial_number",), "serial_number", (16, " ", "right")),),
+    base.DeviceFw: ((("firmware",), "firmware", (16, " ", "right")),),
+    base.DeviceCal: ((("date",), "calibration_date", (16, " ", "right")),),
+}
+IDENTITY: Dict[str, Dict[str, Any]] = {
+    "ms_imu3020": {
+        "model_name": "MS_IMU3020",
+        "serial_number": "20268",
+        "firmware": "R_1_2_3",
+        "calibration_date": "05-08-2015",
+    }
+}
+IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
+    "model_name": ("string", 16),
+    "serial_number": ("string", 16),
+    "firmware": ("string", 16),
+    "calibration_date": ("string", 16),
+}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
 # parameter's factory value is zero: device -> class -> {parameter: value}

@@ -377,7 +377,7 @@ fn session_refused_command_for_the_device() {
             Step::Receive { at: 5, hex: "7565010404f10100d56a" },
         ],
         &[
-            "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"sensor_to_vehicle_euler is not supported by gx5_45\"}",
+            "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"sensor_to_vehicle_euler is not supported by 3DM-GX5-45 (3dm-gx5-45-dcp.txt)\"}",
             "{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
         ],
     );
@@ -396,7 +396,7 @@ fn session_refused_function_for_the_device() {
             Step::Receive { at: 20, hex: "75650c0404f130000f0a" },
         ],
         &[
-            "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"function read of device_startup_settings is not supported by cv7_ins\"}",
+            "{\"line\":1,\"result\":\"refused\",\"code\":null,\"reply\":[],\"error\":\"function read of device_startup_settings is not supported by 3DM-CV7-GNSS/INS (3dm-cv7-ins-docs.txt)\"}",
             "{\"line\":2,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
         ],
     );

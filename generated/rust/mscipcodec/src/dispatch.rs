@@ -33,6 +33,40 @@ impl Device {
         }
     }
 
+    /// File name of the manual that documents the device.
+    pub fn manual(self) -> &'static str {
+        match self {
+            Device::MsImu3020 => "ms-cip-doc00419-revM.txt",
+        }
+    }
+
+    /// Every command the device's manual documents: `(set << 8) | descriptor`, ascending (the
+    /// IR's `capabilities`).
+    pub fn commands(self) -> &'static [u16] {
+        match self {
+            Device::MsImu3020 => &[
+                0x0102, 0x0103, 0x0104, 0x0105, 0x0106, 0x0107, 0x0108, 0x0109, 0x0201, 0x0203,
+                0x0204, 0x0205, 0x0206, 0x0207, 0x0208, 0x0209, 0x020A, 0x020B, 0x020C, 0x020D,
+            ],
+        }
+    }
+
+    /// Every data quantity the device's manual documents: `(set << 8) | descriptor`, ascending.
+    pub fn data(self) -> &'static [u16] {
+        match self {
+            Device::MsImu3020 => &[
+                0xA281, 0xA282, 0xA283, 0xA284, 0xA285, 0xA286, 0xA287, 0xA288, 0xA289,
+            ],
+        }
+    }
+
+    /// True when the device's manual documents the command or data quantity (set, descriptor);
+    /// the sessions refuse a command for which this is false, before sending it.
+    pub fn supports(self, set: u8, descriptor: u8) -> bool {
+        let key = (u16::from(set) << 8) | u16::from(descriptor);
+        self.commands().binary_search(&key).is_ok() || self.data().binary_search(&key).is_ok()
+    }
+
     /// The device with identifier `id`.
     pub fn from_id(id: &str) -> Option<Self> {
         match id {

@@ -35,6 +35,18 @@ typedef enum {
 const char *mipc_device_id(mipc_device_t device);
 /** Looks up a device by id; false if there is none. */
 bool mipc_device_from_id(const char *id, mipc_device_t *out);
+/** The device's title ("3DM-GX5-45") and the file name of its manual, or NULL for
+ * MIPC_DEVICE_ANY. */
+const char *mipc_device_title(mipc_device_t device);
+const char *mipc_device_manual(mipc_device_t device);
+/** What the device supports, as its manual documents it (the IR's `capabilities`): the
+ * (set << 8) | descriptor of every command, or of every data quantity, ascending, in a constant
+ * table; *count is set to its length (0 and NULL for MIPC_DEVICE_ANY). No allocation. */
+const uint16_t *mipc_device_commands(mipc_device_t device, size_t *count);
+const uint16_t *mipc_device_data(mipc_device_t device, size_t *count);
+/** True when the device's manual documents the command or data quantity (set, descriptor); the
+ * sessions refuse a command for which this is false, before sending it. */
+bool mipc_device_supports(mipc_device_t device, uint8_t set, uint8_t descriptor);
 
 /** Kind of a descriptor set, from the set_kinds ranges. */
 typedef enum {

@@ -22,6 +22,18 @@ typedef enum {
 const char *mscipc_device_id(mscipc_device_t device);
 /** Looks up a device by id; false if there is none. */
 bool mscipc_device_from_id(const char *id, mscipc_device_t *out);
+/** The device's title ("MS-IMU3020") and the file name of its manual, or NULL for
+ * MSCIPC_DEVICE_ANY. */
+const char *mscipc_device_title(mscipc_device_t device);
+const char *mscipc_device_manual(mscipc_device_t device);
+/** What the device supports, as its manual documents it (the IR's `capabilities`): the
+ * (set << 8) | descriptor of every command, or of every data quantity, ascending, in a constant
+ * table; *count is set to its length (0 and NULL for MSCIPC_DEVICE_ANY). No allocation. */
+const uint16_t *mscipc_device_commands(mscipc_device_t device, size_t *count);
+const uint16_t *mscipc_device_data(mscipc_device_t device, size_t *count);
+/** True when the device's manual documents the command or data quantity (set, descriptor); the
+ * sessions refuse a command for which this is false, before sending it. */
+bool mscipc_device_supports(mscipc_device_t device, uint8_t set, uint8_t descriptor);
 
 /** Kind of a descriptor set, from the set_kinds ranges. */
 typedef enum {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -23,6 +24,86 @@ inline const char *device_name(Device d) {
         return "ms_imu3020";
     }
     return "";
+}
+
+/// The device's title ("MS-IMU3020").
+inline constexpr const char *device_title(Device d) {
+    switch (d) {
+    case Device::ms_imu3020:
+        return "MS-IMU3020";
+    }
+    return "";
+}
+
+/// The file name of the manual that documents the device ("ms-cip-doc00419-revM.txt").
+inline constexpr const char *device_manual(Device d) {
+    switch (d) {
+    case Device::ms_imu3020:
+        return "ms-cip-doc00419-revM.txt";
+    }
+    return "";
+}
+
+/// A constant table of (set << 8) | descriptor entries, ascending.
+struct DescriptorTable {
+    const std::uint16_t *entries;
+    std::size_t size;
+    constexpr const std::uint16_t *begin() const {
+        return entries;
+    }
+    constexpr const std::uint16_t *end() const {
+        return entries + size;
+    }
+    constexpr bool contains(std::uint16_t key) const {
+        std::size_t lo = 0;
+        std::size_t hi = size;
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (entries[mid] == key) {
+                return true;
+            }
+            if (entries[mid] < key) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return false;
+    }
+};
+
+namespace detail {
+// The capabilities tables (the IR's `capabilities`; a leading 0 keeps an empty one legal).
+inline constexpr std::uint16_t kCommands_ms_imu3020[] = {
+    0,      0x0102, 0x0103, 0x0104, 0x0105, 0x0106, 0x0107, 0x0108, 0x0109, 0x0201, 0x0203,
+    0x0204, 0x0205, 0x0206, 0x0207, 0x0208, 0x0209, 0x020A, 0x020B, 0x020C, 0x020D};
+inline constexpr std::uint16_t kData_ms_imu3020[] = {0,      0xA281, 0xA282, 0xA283, 0xA284,
+                                                     0xA285, 0xA286, 0xA287, 0xA288, 0xA289};
+} // namespace detail
+
+/// Every command the device's manual documents: (set << 8) | descriptor, ascending.
+inline constexpr DescriptorTable device_commands(Device d) {
+    switch (d) {
+    case Device::ms_imu3020:
+        return {detail::kCommands_ms_imu3020 + 1, 20};
+    }
+    return {nullptr, 0};
+}
+
+/// Every data quantity the device's manual documents: (set << 8) | descriptor, ascending.
+inline constexpr DescriptorTable device_data(Device d) {
+    switch (d) {
+    case Device::ms_imu3020:
+        return {detail::kData_ms_imu3020 + 1, 9};
+    }
+    return {nullptr, 0};
+}
+
+/// True when the device's manual documents the command or data quantity (set, descriptor); the
+/// sessions refuse a command for which this is false, before sending it.
+inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {
+    const auto key = static_cast<std::uint16_t>((set << 8) | descriptor);
+    return device_commands(d).contains(key) || device_data(d).contains(key);
 }
 
 inline std::optional<Device> device_from_name(const char *name) {

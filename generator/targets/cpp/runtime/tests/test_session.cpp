@@ -113,7 +113,7 @@ TEST(Session, RefusalSuppressionAndFullQueue) {
     EXPECT_STREQ(r.result.error.c_str(), "info: this layout is for gx, not cv");
     protopkg::stub::Switch sw;
     r = s.start(sw, 0);
-    EXPECT_STREQ(r.result.error.c_str(), "switch is not supported by cv");
+    EXPECT_STREQ(r.result.error.c_str(), "switch is not supported by CV (cv.txt)");
     protopkg::StartOptions unchecked;
     unchecked.check_device = false;
     sw.on = true; // suppresses the ack: sent at once

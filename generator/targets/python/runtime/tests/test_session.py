@@ -210,7 +210,11 @@ def test_reply_fields_after_the_ack_and_raw_fields_make_it_invalid():
 def test_ack_suppression_allowance_and_device_support():
     s = Session(device="beta", timeout_ms=100)
     p = s.start(command.SetMode(mode=t.Mode.ON), 0)
-    assert p.result.status == "refused" and p.result.error == "set_mode is not supported by beta" and not p.packet
+    assert (
+        p.result.status == "refused"
+        and p.result.error == "set_mode is not supported by Beta (beta.txt)"
+        and not p.packet
+    )
     with pytest.raises(CommandRefused):
         p.result.raise_for_status()
     p = s.start(command.SetMode(mode=t.Mode.ON), 0, check_device=False)

@@ -91,3 +91,16 @@ def test_world_quantities_through_the_table_and_the_clock_speed():
     assert vector.ticks == 2_000_000_000  # the fallback: the clock, in simulated ns
     with pytest.raises(ValueError, match="unknown scenario"):
         Simulator("alpha", scenario="nowhere")
+
+
+def test_identity_flags_are_checked_against_what_the_model_reports():
+    # the test protocol reports no identity (its _sim.IDENTITY is empty): every flag is refused
+    # with one line naming the device and the item
+    from testproto.sim import parse_identity
+
+    with pytest.raises(ValueError, match="^--serial 12: alpha reports no serial number$"):
+        parse_identity("alpha", "serial", "12")
+    with pytest.raises(ValueError, match="^--firmware 1: beta reports no firmware$"):
+        parse_identity("beta", "firmware", "1")
+    assert Simulator("alpha", identity={"serial_number": "x"}).identity == {"serial_number": "x"}
+    assert Simulator("alpha").descriptor_lists() == []  # no descriptor-list command in the spec

@@ -41,6 +41,25 @@ impl Device {
         }
     }
 
+    /// Product name.
+    pub fn title(self) -> &'static str {
+        match self {
+            Device::Tiny => "Tiny",
+        }
+    }
+
+    /// File name of the manual that documents the device.
+    pub fn manual(self) -> &'static str {
+        match self {
+            Device::Tiny => "tiny.txt",
+        }
+    }
+
+    /// True when the device supports (set, descriptor): ping only.
+    pub fn supports(self, set: u8, descriptor: u8) -> bool {
+        set == COMMAND_SET && descriptor == PING
+    }
+
     /// The device with identifier `id`.
     pub fn from_id(id: &str) -> Option<Self> {
         Device::ALL.into_iter().find(|d| d.id() == id)

@@ -26,6 +26,39 @@ bool codec_device_from_id(const char *id, codec_device_t *out) {
     return false;
 }
 
+const char *codec_device_title(codec_device_t device) {
+    return device == CODEC_DEVICE_ALPHA ? "Alpha" : device == CODEC_DEVICE_BETA ? "Beta" : NULL;
+}
+
+const char *codec_device_manual(codec_device_t device) {
+    return device == CODEC_DEVICE_ALPHA ? "alpha.txt" : device == CODEC_DEVICE_BETA ? "beta.txt" : NULL;
+}
+
+static const uint16_t k_commands[] = {0x0101, 0x0102};
+
+const uint16_t *codec_device_commands(codec_device_t device, size_t *count) {
+    bool known = device == CODEC_DEVICE_ALPHA || device == CODEC_DEVICE_BETA;
+    *count = known ? 2u : 0u;
+    return known ? k_commands : NULL;
+}
+
+const uint16_t *codec_device_data(codec_device_t device, size_t *count) {
+    (void)device;
+    *count = 0;
+    return NULL;
+}
+
+bool codec_device_supports(codec_device_t device, uint8_t set, uint8_t descriptor) {
+    size_t n, i;
+    const uint16_t *t = codec_device_commands(device, &n);
+    for (i = 0; i < n; i++) {
+        if (t[i] == (uint16_t)((set << 8) | descriptor)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 static const codec_layout_info_t k_layouts[] = {
     {CODEC_FIELD_NONE, "", NULL, CODEC_DEVICE_ANY, 0x00},
     {CODEC_FIELD_PING, "ping", NULL, CODEC_DEVICE_ANY, 0x01},

@@ -34,3 +34,10 @@ FILTER: Dict[str, Dict[str, Any]] = {}
 ACTIONS: Dict[Any, Tuple[Any, ...]] = {}
 UNADDRESSED: Dict[str, Any] = {}
 BAUD: Dict[Any, str] = {}
+# Descriptor lists and identity (cf. the spec's simulation descriptor_lists and identity): none
+DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {}
+DESCRIPTOR_ITEMS: Dict[Any, Any] = {}
+DESCRIPTOR_CONTENTS: Tuple[str, ...] = ()
+IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {}
+IDENTITY: Dict[str, Dict[str, Any]] = {}
+IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}

@@ -3,6 +3,7 @@
  * tests compile and run in place. Descriptor set 0x01 has two fields:
  *   0x01 "ping": no values;
  *   0x02 "rate": per-device variants, {"hz": u16} on device "alpha", {"hz": u32} on "beta".
+ * Both devices ("Alpha", alpha.txt; "Beta", beta.txt) support both; no data quantities.
  * Hand-written (the generator writes the real one from the spec). */
 #ifndef CODEC_DISPATCH_H
 #define CODEC_DISPATCH_H
@@ -17,6 +18,11 @@ typedef enum { CODEC_DEVICE_ANY = 0, CODEC_DEVICE_ALPHA = 1, CODEC_DEVICE_BETA =
 
 const char *codec_device_id(codec_device_t device);
 bool codec_device_from_id(const char *id, codec_device_t *out);
+const char *codec_device_title(codec_device_t device);
+const char *codec_device_manual(codec_device_t device);
+const uint16_t *codec_device_commands(codec_device_t device, size_t *count);
+const uint16_t *codec_device_data(codec_device_t device, size_t *count);
+bool codec_device_supports(codec_device_t device, uint8_t set, uint8_t descriptor);
 
 typedef enum {
     CODEC_FIELD_NONE = 0,

@@ -26,6 +26,19 @@ inline const char *device_name(Device d) {
     return "";
 }
 
+inline constexpr const char *device_title(Device d) {
+    return d == Device::gx ? "GX" : "CV";
+}
+
+inline constexpr const char *device_manual(Device d) {
+    return d == Device::gx ? "gx.txt" : "cv.txt";
+}
+
+// Both devices support ping (0x01,0x01) and info (0x01,0x02); switch (0x01,0x03) is gx's only.
+inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {
+    return set == 0x01 && (descriptor == 0x01 || descriptor == 0x02 || (descriptor == 0x03 && d == Device::gx));
+}
+
 inline std::optional<Device> device_from_name(const char *name) {
     if (std::strcmp(name, "gx") == 0) {
         return Device::gx;
