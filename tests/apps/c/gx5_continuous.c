@@ -255,9 +255,6 @@ static void on_imu(nav_t *nav, const mipc_event_t *event) {
     }
     if (have == 3u && !nav->imu_ok) {
         nav->imu_ok = true;
-        fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", (double)accel.scaled_accel[0],
-                (double)accel.scaled_accel[1], (double)accel.scaled_accel[2], (double)gyro.scaled_gyro[0],
-                (double)gyro.scaled_gyro[1], (double)gyro.scaled_gyro[2]);
         puts("imu ok");
         fflush(stdout);
     }
