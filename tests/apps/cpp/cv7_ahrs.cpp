@@ -47,7 +47,8 @@ constexpr const char *kUsageHelp =
     "  --deadline-s N  give up waiting for them after N seconds (default 60)\n";
 
 constexpr std::uint8_t kFilterSet = 0x82;
-constexpr unsigned kFilterHz = 10; // filter data rate: decimation = filter base rate / 10
+constexpr unsigned kFilterHz = 10;          // filter data rate: decimation = filter base rate / 10
+constexpr std::int64_t kListenSliceMs = 20; // how long one listen() receives
 
 struct Options {
     std::string address;
@@ -318,7 +319,8 @@ int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt,
             return error("deadline passed", why);
         }
         mipcodec::ErrorText io;
-        if (!device.listen(deadline - now, &io)) {
+        // listen() receives for the whole duration: a short slice, then the samples are counted.
+        if (!device.listen(std::min(kListenSliceMs, deadline - now), &io)) {
             return error("connection", io.c_str());
         }
     }

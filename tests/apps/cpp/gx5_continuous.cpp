@@ -51,6 +51,7 @@ constexpr std::uint8_t kImuSet = 0x80;
 constexpr std::uint8_t kFilterSet = 0x82;
 constexpr unsigned kImuHz = 100;              // IMU data rate: decimation = IMU base rate / 100
 constexpr unsigned kFilterHz = 10;            // filter data rate: decimation = filter base rate / 10
+constexpr std::int64_t kListenSliceMs = 20;   // how long one listen() receives
 constexpr std::int64_t kCfEulerWaitMs = 1000; // how long the polled complementary filter angles are awaited
 
 struct Options {
@@ -200,9 +201,6 @@ class Navigation {
         }
         if (accel && gyro && !imu_ok_) {
             imu_ok_ = true;
-            std::fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", accel->scaled_accel[0],
-                         accel->scaled_accel[1], accel->scaled_accel[2], gyro->scaled_gyro[0],
-                         gyro->scaled_gyro[1], gyro->scaled_gyro[2]);
             std::printf("imu ok\n");
             std::fflush(stdout);
         }
@@ -377,8 +375,9 @@ int initialize_filter(mipcodec::Connection &device, const Navigation &nav) {
         }
     }
     if (!nav.cf_euler()) {
-        return error("threedm.poll_imu_data",
-                     "no complementary filter Euler angles (0x80,0x0C) within 1000 ms");
+        return error("threedm.poll_imu_data", ("no complementary filter Euler angles (0x80,0x0C) within " +
+                                               std::to_string(kCfEulerWaitMs) + " ms")
+                                                  .c_str());
     }
     const sensor::CfEulerAngles &angles = *nav.cf_euler();
     const mipcodec::Call set =
@@ -403,7 +402,8 @@ int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt,
             return error("deadline passed", why);
         }
         mipcodec::ErrorText io;
-        if (!device.listen(deadline - now, &io)) {
+        // listen() receives for the whole duration: a short slice, then the samples are counted.
+        if (!device.listen(std::min(kListenSliceMs, deadline - now), &io)) {
             return error("connection", io.c_str());
         }
     }

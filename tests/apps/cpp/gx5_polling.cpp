@@ -201,9 +201,6 @@ class Navigation {
         }
         if (accel && gyro && !imu_ok_) {
             imu_ok_ = true;
-            std::fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", accel->scaled_accel[0],
-                         accel->scaled_accel[1], accel->scaled_accel[2], gyro->scaled_gyro[0],
-                         gyro->scaled_gyro[1], gyro->scaled_gyro[2]);
             std::printf("imu ok\n");
             std::fflush(stdout);
         }
@@ -380,8 +377,9 @@ int initialize_filter(mipcodec::Connection &device, const Navigation &nav) {
         }
     }
     if (!nav.cf_euler()) {
-        return error("threedm.poll_imu_data",
-                     "no complementary filter Euler angles (0x80,0x0C) within 1000 ms");
+        return error("threedm.poll_imu_data", ("no complementary filter Euler angles (0x80,0x0C) within " +
+                                               std::to_string(kCfEulerWaitMs) + " ms")
+                                                  .c_str());
     }
     const sensor::CfEulerAngles &angles = *nav.cf_euler();
     const mipcodec::Call set =
