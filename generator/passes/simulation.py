@@ -6,13 +6,14 @@ Checked: every command named is a command of the protocol; every parameter named
 one of its layouts (a list's `descriptor`/`decimation` members of the list's struct); every set
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
 members are members of the ack code enum; the filter's enums exist and name their members, and its internal
-aiding (the status flag roles, heading update sources, aiding measurement control sources, antenna
-offsets, dual-antenna status) names commands, their parameters, enum and bitfield members; the descriptor
-lists' commands, replies and list parameters exist (a reply of that command whose list runs to the
-end of the field, of u16 items or of a struct of two u8: set, descriptor), each gaining its
-`capacity`, the most entries that fit beside the ack in one packet; the identity's reply
-parameters exist (an unsigned integer or a string) and every device gives a fitting value for
-every item. The entry keeps the section's shape with sources resolved (each gains its `title` from the manual).
+aiding (the status flag roles, heading update sources, aiding measurement control sources, heading
+alignment methods, antenna offsets, dual-antenna status) names commands, their parameters, enum and
+bitfield members; the descriptor lists' commands, replies and list parameters exist (a reply of that
+command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
+descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
+the identity's reply parameters exist (an unsigned integer or a string) and every device gives a
+fitting value for every item. The entry keeps the section's shape with sources resolved (each gains
+its `title` from the manual).
 """
 
 from __future__ import annotations
@@ -298,6 +299,10 @@ class _Checker:
             self.params(path + ("internal",), internal["command"], [internal["param"], internal["enable"]])
             named = list(internal["members"]) + ([internal["all"]] if "all" in internal else [])
             self.members(path + ("internal",), internal["enum"], named)
+        alignment = entry.get("alignment")
+        if alignment:
+            self.params(path + ("alignment",), alignment["command"], [alignment["param"]])
+            self.bits(path + ("alignment",), alignment["type"], list(alignment["members"]))
         antennas = entry.get("antennas")
         if antennas:
             self.params(path + ("antennas",), antennas["command"], [antennas["receiver"], antennas["offset"]])

@@ -7,7 +7,8 @@ static scenario's heading is 30 deg and the circle's vehicle drives a 50 m circl
 -> full navigation (heading, position, velocity) (CV7 manual lines 630-654); AHRS heading may come
 from the magnetometer (line 650); the status flags are bits 0-1 condition, 3 heading warning,
 4 position warning, 5 velocity warning (lines 660-672); aiding sources are the members of
-0x0D,0x50 (line 8500); the dual antenna status (0x82,0x49) reports receiver 1/2 data valid and
+0x0D,0x50 (line 8500); kinematic alignment takes the heading from the GNSS velocity from 2 m/s on
+(line 533); the dual antenna status (0x82,0x49) reports receiver 1/2 data valid and
 antenna offsets valid in bits 0-2 and FIX_DA_FIXED = 2 (lines 4679-4700). GX5-45: auto-init needs
 a heading source (line 1646), the heading update control's values (line 1564), running with
 0x0002 GNSS unavailable, 0x1000 mag bias warning (line 2359), the heading update source state
@@ -162,6 +163,32 @@ def test_cv7_aiding_source_all_and_disable() -> None:
     off = pkg.filter.AidingMeasurementControl(function=1, source=SOURCE.ALL, enable=False)
     assert command(sim, off, 0.0)[0][1] == 0
     assert sample(sim, 0x82, 0x10, 4.0).filter_state == MODE.VERT_GYRO  # 2 s after the last heading
+
+
+def _alignment(sim, bits: int) -> None:
+    config = pkg.filter.InitializationConfiguration(
+        function=1, wait_for_run_command=0, initial_cond_src=0, auto_heading_alignment_selector=bits,
+        initial_heading=0.0, initial_pitch=0.0, initial_roll=0.0, initial_position=[0.0] * 3,
+        initial_velocity=[0.0] * 3, reference_frame_selector=2,
+    )  # fmt: skip
+    assert command(sim, config, 0.0)[0][1] == 0
+
+
+def test_cv7_kinematic_alignment_heading_from_the_gnss_velocity() -> None:
+    kinematic = 1 << 1  # HeadingAlignmentMethods bit 1 (CV7 line 8550)
+    moving = sim_mod.Simulator("cv7_ins", scenario="circle")
+    _enable(moving, SOURCE.GNSS_POS_VEL)
+    assert sample(moving, 0x82, 0x10, 3.0).filter_state == MODE.VERT_GYRO  # position, velocity, no heading
+    _alignment(moving, kinematic)
+    assert sample(moving, 0x82, 0x10, 3.5).filter_state == MODE.FULL_NAV  # 5 m/s: above 2 m/s (line 533)
+    assert abs(_yaw_error(sample(moving, 0x82, 0x05, 3.6).yaw, _circle(3.6)[2])) < 0.03
+    still = sim_mod.Simulator("cv7_ins", scenario="static")
+    _enable(still, SOURCE.GNSS_POS_VEL)
+    _alignment(still, kinematic)
+    assert sample(still, 0x82, 0x10, 3.5).filter_state == MODE.VERT_GYRO  # not moving: no heading
+    without = sim_mod.Simulator("cv7_ins", scenario="circle")
+    _alignment(without, kinematic)  # GNSS_POS_VEL not enabled: the filter takes no GNSS
+    assert sample(without, 0x82, 0x10, 3.5).filter_state == MODE.VERT_GYRO
 
 
 # ------------------------------------------------------------------------------- GX5-45 in process

@@ -1148,6 +1148,13 @@ def _filters(sim: dict | None, types: dict | None = None) -> dict:
                 "all": value(i["enum"], i["all"]) if "all" in i else None,
                 "sources": {value(i["enum"], n): s for n, s in i["members"].items()},
             }
+        if "alignment" in e:
+            a = e["alignment"]
+            f["alignment"] = {
+                "command": a["command"],
+                "param": py_attr(a["param"]),
+                "sources": masks({"type": a["type"], "members": {s: n for n, s in a["members"].items()}}),
+            }
         if "antennas" in e:
             a = e["antennas"]
             f["antennas"] = {

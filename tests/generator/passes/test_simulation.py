@@ -122,6 +122,7 @@ AIDING = """\
         enum: FilterState
         members: {navigating: magnetometer}
       antennas: {command: stream_control, receiver: selector, offset: enable}
+      alignment: {command: stream_control, param: selector, type: Flags, members: {magnetometer: gnss_velocity}}
       dual_antenna:
         fix: {enum: FilterState, fix: navigating, none: init}
         flags: {type: Flags, members: {offsets: offsets}}
@@ -166,6 +167,7 @@ def test_internal_aiding_names_are_checked(tmp_path):
         .replace("enable: enable", "enable: switch")
         .replace("members: {navigating: magnetometer}", "members: {full: magnetometer}")
         .replace("receiver: selector", "receiver: receiver_id")
+        .replace("members: {magnetometer: gnss_velocity}", "members: {kinematic: gnss_velocity}")
         .replace("fix: navigating, none: init}", "fix: fixed, none: init}")
         .replace("in_use: Flags", "in_use: Missing\n        external: [no_such_command, message_format]")
     )
@@ -175,6 +177,7 @@ def test_internal_aiding_names_are_checked(tmp_path):
         "'switch' is not a parameter of stream_control",
         "'full' is not a member of FilterState",
         "'receiver_id' is not a parameter of stream_control",
+        "'kinematic' is not a member of Flags",
         "'fixed' is not a member of FilterState",
         "'Missing' is not a bitfield of the protocol",
         "'no_such_command' is not a command of the protocol",

@@ -1052,6 +1052,11 @@ FILTER: Dict[str, Dict[str, Any]] = {
             "all": 65535,
             "sources": {0: "gnss", 1: "dual_antenna", 2: "pressure", 4: "magnetometer"},
         },
+        "alignment": {
+            "command": "initialization_configuration",
+            "param": "auto_heading_alignment_selector",
+            "sources": {"gnss_velocity": 2},
+        },
         "antennas": {"command": "multi_antenna_offset", "receiver": "receiver_id", "offset": "antenna_offset"},
         "dual_antenna": {
             "fix": ["fix_da_fixed", "fix_none"],

@@ -512,8 +512,9 @@ class Simulator:
 
     def _filter_settings(self) -> None:
         """The internal aiding the settings give the filter (_sim.FILTER, docs/simulator-world.md):
-        the aiding measurement control sources enabled, the heading update control's sources, and
-        whether both receivers' antenna offsets are configured and apart."""
+        the aiding measurement control sources enabled, the heading update control's sources (or the
+        initialization configuration's heading alignment methods that keep aiding), and whether
+        both receivers' antenna offsets are configured and apart."""
         profile = _sim.FILTER.get(self.device, {})
         nav = self.world.filter
         internal = profile.get("internal")
@@ -537,6 +538,14 @@ class Simulator:
                 if chosen is None:
                     chosen = int(_sim.FACTORY.get(c, {}).get(heading["param"], 0) or 0)
             nav.heading_sources = list(heading["sources"].get(chosen or 0, []))
+        alignment = profile.get("alignment")
+        if alignment and "gnss" in nav.internal:
+            bits = 0
+            for c in self._named(alignment["command"]):
+                for value in self.current.values():
+                    if type(value) is c:
+                        bits = int(getattr(value, alignment["param"], 0) or 0)
+            nav.heading_sources = [s for s, mask in alignment["sources"].items() if bits & mask]
         antennas = profile.get("antennas")
         if antennas:
             offsets: Dict[int, Tuple[float, ...]] = {}
