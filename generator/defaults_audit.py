@@ -80,7 +80,8 @@ def _value_text(q: dict, types: dict) -> str:
 
 
 def coverage(ir: dict) -> dict[tuple[str, int], list[tuple[str, str]]]:
-    """(manual, line) -> [(how, where)]: how is "transcribed" or "decided"."""
+    """(manual, line) -> [(how, where)]: how is "transcribed", "decided", or "not a decision" (a
+    note of another kind listing lines, which decides nothing)."""
     cover: dict[tuple[str, int], list[tuple[str, str]]] = {}
     for p in ir["protocols"]:
         types = {t["name"]: t for t in p["types"]}
@@ -92,12 +93,11 @@ def coverage(ir: dict) -> dict[tuple[str, int], list[tuple[str, str]]]:
                 where = f"{label} = {_value_text(q, types)}"
                 cover.setdefault((ref["manual"], ref["line"]), []).append(("transcribed", where))
     for proto, label, _sources, note in _spec_notes(ir):
-        if note["kind"] != "decision":
-            continue
+        how = "decided" if note["kind"] == "decision" else "not a decision"
         for ref in note.get("lines", []):
             text = " ".join(note["text"].split())
             cover.setdefault((ref["manual"], ref["line"]), []).append(
-                ("decided", f"{proto}: {label}: {text[:70]}{'…' if len(text) > 70 else ''}")
+                (how, f"{proto}: {label}: {text[:70]}{'…' if len(text) > 70 else ''}")
             )
     return cover
 
@@ -116,7 +116,7 @@ def audit(ir: dict, texts: dict[str, str]) -> tuple[list[dict], list[str], dict[
         c["selector"] = selector
         at = {n for n, _ in stated}
         for lineno, line in stated:
-            how = cover.get((manual, lineno), [])
+            how = [h for h in cover.get((manual, lineno), []) if h[0] != "not a decision"]
             kinds = {h for h, _ in how}
             status = "transcribed" if "transcribed" in kinds else "decided" if kinds else "uncovered"
             c[status] += 1
@@ -141,6 +141,12 @@ def audit(ir: dict, texts: dict[str, str]) -> tuple[list[dict], list[str], dict[
                 what = "beyond the end of the manual" if n > lines else "a line stating no default"
                 for h, w in how:
                     problems.append(f"{manual}:{n}: {w} ({h}) cites {what}")
+    for (m, n), how in sorted(cover.items()):
+        for h, w in how:
+            if m not in texts:
+                problems.append(f"{m}:{n}: {w} ({h}) cites a manual that is not audited")
+            elif h == "not a decision":
+                problems.append(f"{m}:{n}: {w}: only a decision note may list lines it decides")
     return rows, problems, counts
 
 

@@ -74,7 +74,10 @@ def render_errata(ir: dict, vectors: list[dict]) -> str:
         )
     out += ["", "## Spec entries", "", "| protocol | entry | source | kind | note |", "|---|---|---|---|---|"]
     for proto, label, sources, n in _spec_notes(ir):
-        out.append(f"| {proto} | {label} | {_src(sources)} | {KIND_TITLES[n['kind']]} | {_cell(n['text'])} |")
+        # a decision on stated defaults cites the lines it decides (generator/defaults_audit.py)
+        out.append(
+            f"| {proto} | {label} | {_src(n.get('lines') or sources)} | {KIND_TITLES[n['kind']]} | {_cell(n['text'])} |"
+        )
     out += [
         "",
         "## Stated field lengths that disagree with the computed ones",

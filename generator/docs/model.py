@@ -95,6 +95,37 @@ def source_text(s: dict) -> str:
     return out
 
 
+def held_params(v: dict) -> list[dict]:
+    """The values a setting command's variant holds: the parameters sent for write that do not
+    select which setting (a key is sent, and required, for read too), less the counts of lists."""
+    if "write" not in (v.get("functions") or []):
+        return []
+    counts = {(q.get("count") or {}).get("param") for q in v["params"]}  # follow their list's length
+    return [
+        q
+        for q in v["params"]
+        if "write" in (q.get("functions") or [])
+        and not ("read" in q["functions"] and "read" not in (q.get("optional_for") or []))
+        and q["name"] not in counts
+    ]
+
+
+def default_value_text(q: dict, types: dict) -> str:
+    """A parameter's default as the spec writes it (enum values by name)."""
+    value = q["default"]["value"]
+    t = types.get(q["type"].get("name", ""))
+    if t and t["kind"] == "enum":
+        names = {v["value"]: v["name"] for v in t["values"]}
+        value = [names.get(x, x) for x in value] if isinstance(value, list) else names.get(value, value)
+    if isinstance(value, list):
+        return "[" + ", ".join(str(x) for x in value) + "]"
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+def default_sources_text(d: dict) -> str:
+    return ", ".join(code(f"{r['manual']}:{r['line']}") for r in [d["source"], *d.get("also", [])])
+
+
 # The anchor of the "Configure the device and stream data" section of the getting-started pages.
 CONFIGURE_ANCHOR = "configure-and-stream"
 
@@ -338,6 +369,54 @@ class Docs:
             for d in devices
         ]
         pg.table(head, rows + [totals], "matrix")
+        self._device_defaults(pg, p)
+
+    def _device_defaults(self, pg: Page, p: dict) -> None:
+        """The factory values the manuals state, per device, and the settings the simulated device
+        holds without one (its assumptions; docs/conformance.md section 9)."""
+        devices = p["devices"]
+        types = {t["name"]: t for t in p["types"]}
+        stated_rows, assumed = [], {d["id"]: [] for d in devices}
+        for s in p["sets"]:
+            for f in s["fields"]:
+                for v in f["variants"]:
+                    link = f"[{esc(f['title'])}]({pg.link_to(self.field_path(p, s, f))})"
+                    for q in held_params(v):
+                        d = q.get("default")
+                        cells = []
+                        for dev in devices:
+                            if dev["id"] not in v["devices"]:
+                                cells.append("–")
+                            elif d and dev["id"] in d["devices"]:
+                                cells.append(code(default_value_text(q, types)))
+                            else:
+                                cells.append("assumed 0")
+                                assumed[dev["id"]].append(f"{link} {code(q['name'])}")
+                        if d:
+                            stated_rows.append(
+                                [hx(s["id"]), hx(f["id"]), link, code(q["name"])] + cells + [default_sources_text(d)]
+                            )
+        pg.h(2, "Factory defaults")
+        pg.p(
+            "The factory value of each setting parameter a manual states (the spec's `default`, with the lines "
+            "stating it; `make audit` checks that every default the manuals state is here or decided in a note). "
+            "The simulated device starts from these values on the devices whose manuals state them."
+        )
+        head = ["set", "descriptor", "name", "parameter"] + [esc(d["title"]) for d in devices] + ["stated at"]
+        if stated_rows:
+            pg.table(head, stated_rows, "defaults")
+        else:
+            pg.p("No manual of this protocol states a factory value.")
+        pg.h(2, "Settings without a stated default")
+        pg.p(
+            "Every value a setting command holds whose factory value no manual states: the simulated device "
+            "assumes zero for it (0, false, an empty list; an enum without a zero value: its first value) until a "
+            "write changes it (docs/conformance.md section 9). These are "
+            "assumptions, not facts; a real device may start elsewhere."
+        )
+        for dev in devices:
+            pg.h(3, f"{esc(dev['title'])}: {len(assumed[dev['id']])} assumed values")
+            pg.items(assumed[dev["id"]] or ["none"])
 
     def _crumbs(self, p: dict) -> list[tuple[str, str]]:
         return [("Reference", "README.md"), (p["title"], p["name"] + "/README.md")]
@@ -473,7 +552,8 @@ class Docs:
 
     def _notes(self, pg: Page, notes: list[dict], label: str) -> None:
         for n in notes:
-            pg.p(f"**{KIND_TITLES[n['kind']]}** ({esc(label)}): {esc(n['text'])}")
+            lines = ", ".join(code(f"{r['manual']}:{r['line']}") for r in n.get("lines", []))
+            pg.p(f"**{KIND_TITLES[n['kind']]}** ({esc(label)}): {esc(n['text'])}" + (f" (on {lines})" if lines else ""))
 
     # ------------------------------------------------------------------ one descriptor
     def _frame_segments(self, p: dict, s: dict | None, f: dict | None, data: list[svg.Segment]) -> list[svg.Segment]:
@@ -616,6 +696,7 @@ class Docs:
                 pg.p("No field data: the field is its header alone.")
             pg.table(head, rows or [["—", "0", "", "", "", "no data"]], "layout")
             pg.p("Offsets count from the first byte of field data (after the field header).")
+            self._defaults_section(pg, p, types, v, suffix, devs)
             if v["functions"]:
                 pg.h(3, "Function selectors" + suffix, slug("functions " + (v["device"] or "")))
                 fvals = {x["name"]: x["value"] for x in fsel["values"]} if fsel else {}
@@ -647,6 +728,48 @@ class Docs:
             self._notes(pg, notes, f["name"])
             for qn, n in params_notes:
                 self._notes(pg, [n], f"parameter {qn}")
+
+    def _defaults_section(self, pg: Page, p: dict, types: dict, v: dict, suffix: str, devs: dict) -> None:
+        """A setting's factory values: those the manuals state (with the line) and the values the
+        simulated device assumes (docs/conformance.md section 9)."""
+        held = held_params(v)
+        if not held:
+            return
+        pg.h(3, "Factory defaults" + suffix, slug("defaults " + (v["device"] or "")))
+        stated = [q for q in held if q.get("default")]
+        if stated:
+            pg.table(
+                ["parameter", "factory value", "on", "stated at"],
+                [
+                    [
+                        code(q["name"]),
+                        code(default_value_text(q, types)),
+                        ", ".join(esc(devs[d]) for d in q["default"]["devices"] if d in v["devices"]),
+                        default_sources_text(q["default"]),
+                    ]
+                    for q in stated
+                ],
+                "defaults",
+            )
+        unstated = [
+            q["name"]
+            + (
+                f" (on {', '.join(devs[d] for d in v['devices'] if d not in q['default']['devices'])})"
+                if q.get("default")
+                else ""
+            )
+            for q in held
+            if not q.get("default") or set(v["devices"]) - set(q["default"]["devices"])
+        ]
+        if unstated:
+            pg.p(
+                "No manual states the factory value of "
+                + ", ".join(
+                    code(n.split(" ", 1)[0]) + (" " + esc(n.split(" ", 1)[1]) if " " in n else "") for n in unstated
+                )
+                + ": the simulated device assumes zero ("
+                + f"[assumptions]({pg.link_to(p['name'] + '/devices.md')}#{slug('settings without a stated default')}))."
+            )
 
     def _reply_of(self, p: dict, s: dict | None, f: dict) -> list[str]:
         if not s or f["role"] != "response":

@@ -96,8 +96,25 @@ def test_index_device_matrix_errata_and_getting_started_exist():
         for d in p["devices"]:
             assert d["title"] in matrix.splitlines()[4] or d["title"] in matrix
         total = sum(1 for s in p["sets"] for _ in s["fields"]) + len(p["reserved_fields"])
-        rows = [ln for ln in matrix.splitlines() if ln.startswith("| 0x") or ln.startswith("| any")]
+        support, _, defaults = matrix.partition("\n## Factory defaults\n")
+        rows = [ln for ln in support.splitlines() if ln.startswith("| 0x") or ln.startswith("| any")]
         assert len(rows) == total, f"{p['name']} matrix has {len(rows)} rows for {total} descriptors"
+        # one row per parameter default, citing the manual lines stating it; then the assumptions
+        stated, _, assumed = defaults.partition("\n## Settings without a stated default\n")
+        cited = [
+            (q["name"], q["default"])
+            for s in p["sets"]
+            for f in s["fields"]
+            for v in f["variants"]
+            for q in v["params"]
+            if q.get("default")
+        ]
+        rows = [ln for ln in stated.splitlines() if ln.startswith("| 0x")]
+        assert len(rows) == len(cited), (p["name"], len(rows), len(cited))
+        for (name, d), row in zip(cited, rows):
+            assert f"`{name}`" in row and f"`{d['source']['manual']}:{d['source']['line']}`" in row, row
+        for d in p["devices"]:
+            assert f"### {d['title']}: " in assumed
     errata = (DOCS / "errata.md").read_text(encoding="utf-8")
     # Every published example recorded as wrong in tests/vectors appears on the errata page.
     for name in re.findall(r"^\| `([a-z0-9_]+)` \|", (ROOT / "docs" / "errata.md").read_text(encoding="utf-8"), re.M):

@@ -21,14 +21,14 @@ MANUAL = "\n".join(
 )
 
 
-def _ir(notes_lines: list[int], default: dict | None) -> dict:
+def _ir(notes_lines: list[int], default: dict | None, kind: str = "decision", manual: str = "a.txt") -> dict:
     """A one-command protocol: a parameter with `default` (IR shape) and a decision note listing
     `notes_lines` of manual a.txt."""
     param = {"name": "enable", "type": {"kind": "primitive", "name": "bool"}, "notes": [], "default": default}
     note = {
-        "kind": "decision",
+        "kind": kind,
         "text": "Not a parameter's value.",
-        "lines": [{"manual": "a.txt", "line": n} for n in notes_lines],
+        "lines": [{"manual": manual, "line": n} for n in notes_lines],
     }
     field = {
         "id": 0x11,
@@ -96,3 +96,17 @@ def test_citing_a_line_that_states_no_default_is_reported():
 def test_a_missing_manuals_directory_is_exit_status_2(tmp_path, capsys):
     assert defaults_audit.main(["--manuals", str(tmp_path / "nowhere")]) == 2
     assert "no manuals directory" in capsys.readouterr().err
+
+
+def test_lines_on_a_note_other_than_a_decision_or_of_another_manual_are_reported():
+    _, problems, counts = audit(_ir([5, 6], _default(4, also=(8,)), kind="gap"), {"a.txt": MANUAL})
+    assert counts["a.txt"]["uncovered"] == 2
+    assert (
+        "a.txt:5: p: cmd.stream (0x0C,0x11): Not a parameter's value.: only a decision note may list lines it decides"
+        in problems
+    )
+    _, problems, _ = audit(_ir([5], _default(4, also=(8,)), manual="z.txt"), {"a.txt": MANUAL})
+    assert (
+        "z.txt:5: p: cmd.stream (0x0C,0x11): Not a parameter's value. (decided) cites a manual that is not audited"
+        in problems
+    )

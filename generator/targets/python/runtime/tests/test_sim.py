@@ -93,14 +93,19 @@ def test_world_quantities_through_the_table_and_the_clock_speed():
         Simulator("alpha", scenario="nowhere")
 
 
-def test_identity_flags_are_checked_against_what_the_model_reports():
-    # the test protocol reports no identity (its _sim.IDENTITY is empty): every flag is refused
-    # with one line naming the device and the item
-    from testproto.sim import parse_identity
+def test_factory_values_hold_on_their_device_and_start_a_message_format(monkeypatch):
+    # _sim.FACTORY: device -> class -> values (the spec's defaults, on the devices whose manuals
+    # state them); a format list's default streams before any format command (MS-CIP's message).
+    from testproto import _sim
 
-    with pytest.raises(ValueError, match="^--serial 12: alpha reports no serial number$"):
-        parse_identity("alpha", "serial", "12")
-    with pytest.raises(ValueError, match="^--firmware 1: beta reports no firmware$"):
-        parse_identity("beta", "firmware", "1")
-    assert Simulator("alpha", identity={"serial_number": "x"}).identity == {"serial_number": "x"}
-    assert Simulator("alpha").descriptor_lists() == []  # no descriptor-list command in the spec
+    monkeypatch.setattr(_sim, "FACTORY", {"alpha": {command.SetMode: {"mode": [0x02]}}})
+    monkeypatch.setattr(_sim, "FORMATS", {command.SetMode: (0x80, "mode", None, None)})
+    monkeypatch.setattr(_sim, "UNADDRESSED", {"alpha": (0x80,)})
+    alpha, beta = Simulator("alpha"), Simulator("beta")
+    assert alpha._factory(command.SetMode) == {"mode": [0x02]}
+    assert beta._factory(command.SetMode) == {}
+    alpha._replan()
+    assert alpha.plan == {0x80: [(0x02, 1)]}
+    monkeypatch.setattr(_sim, "FACTORY", {})
+    alpha._replan()
+    assert alpha.plan == {}  # no default, no format written: nothing streams

@@ -87,5 +87,5 @@ IDENTITY: Dict[str, Dict[str, Any]] = {}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
 
 # Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: class -> {parameter: value}
-FACTORY: Dict[Any, Dict[str, Any]] = {}
+# parameter's factory value is zero: device -> class -> {parameter: value}
+FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}

@@ -270,10 +270,14 @@ class Simulator:
                 extra = [(now + 0.001, p) for p in self._sample_packets(set_id, fields, now)]
         return replies, extra
 
+    def _factory(self, cls: Any) -> Dict[str, Any]:
+        """A command's factory values on this device (the spec's defaults its manual states)."""
+        return _sim.FACTORY.get(self.device, {}).get(cls, {})
+
     def _setting_on(self, cls: Any, attr: str, **match: Any) -> bool:
         """Whether a setting's current value (factory: the spec's default, else off) turns `attr`
         on, for the keys whose parameters take the values in `match` (any of a tuple)."""
-        factory = bool(_sim.FACTORY.get(cls, {}).get(attr))
+        factory = bool(self._factory(cls).get(attr))
         found = None
         for value in self.current.values():
             if type(value) is cls and all(
@@ -366,7 +370,7 @@ class Simulator:
         if cls is None:
             return None
         stored = self.current.get(key)
-        values: Dict[str, Any] = {} if stored is not None else dict(_sim.FACTORY.get(type(command), {}))
+        values: Dict[str, Any] = {} if stored is not None else dict(self._factory(type(command)))
         for source in (stored, command):
             if source is None:
                 continue
@@ -456,6 +460,10 @@ class Simulator:
             attr = _sim.DECIMATION.get(type(value))
             if attr is not None:
                 decimation = max(1, int(getattr(value, attr, 1) or 1))
+        for cls, fmt in _sim.FORMATS.items():  # a format list never written: the spec's default
+            items = self._factory(cls).get(fmt[1])
+            if items and isinstance(fmt[0], int) and not fmt[2]:
+                plan[fmt[0]] = [(int(d), decimation) for d in items]
         for value in self.current.values():
             fmt = _sim.FORMATS.get(type(value))
             if fmt is None:
@@ -472,7 +480,7 @@ class Simulator:
             plan[set_id] = entries
         # A stream without a stored control has its factory value: the spec's default, else off.
         factory = any(
-            bool(_sim.FACTORY.get(cls, {}).get(en[1]))
+            bool(self._factory(cls).get(en[1]))
             for cls, en in _sim.ENABLES.items()
             if getattr(cls, "DEVICE", None) in (None, self.device)
         )
