@@ -410,7 +410,8 @@ class Docs:
         pg.h(2, "Settings without a stated default")
         pg.p(
             "Every value a setting command holds whose factory value no manual states: the simulated device "
-            "assumes zero for it (an enum: its value 0; a list: empty) until a write changes it. These are "
+            "assumes zero for it (0, false, an empty list; an enum without a zero value: its first value) until a "
+            "write changes it (docs/conformance.md section 9). These are "
             "assumptions, not facts; a real device may start elsewhere."
         )
         for dev in devices:

@@ -606,3 +606,160 @@ def test_streaming_through_the_session_tool(lang: str, transport: str) -> None:
     assert all([f["descriptor"] for f in p["fields"]] == [0xD5, 0x04] for p in data)
     stamps = [p["fields"][0]["values"]["nanoseconds"] for p in data]
     assert all(b - a == 10_000_000 for a, b in zip(stamps, stamps[1:]))  # every 10 ms of device time
+
+
+# ------------------------------------------------------------------------------- capabilities and identity
+def supported(protocol: dict, device: str) -> list[int]:
+    """Written from the IR here, not from the simulator: every command and every data quantity
+    (outside the shared data set) whose manual documents it for `device`, (set << 8) | descriptor,
+    ascending (the decision of spec/mip/protocol.yaml simulation descriptor_lists)."""
+    out = []
+    for s in protocol["sets"]:
+        for f in s["fields"]:
+            if device in f["devices"] and (f["role"] == "command" or (f["role"] == "data" and not s["shared"])):
+                out.append(s["id"] << 8 | f["id"])
+    return sorted(out)
+
+
+# One reply holds the ack field (2 + 2 bytes) and the list field (2 header bytes + 2 per entry) in
+# at most 255 payload bytes (max_payload of spec/mip/protocol.yaml): (255 - 4 - 2) // 2 entries.
+FIRST_LIST = (255 - 4 - 2) // 2
+
+
+@pytest.mark.parametrize("device", ["gx5_45", "cv7_ins"])
+def test_descriptor_lists_are_the_device_capabilities(device: str) -> None:
+    pkg = python_package("mipcodec")
+    expected = supported(MIP, device)
+    assert len(expected) > FIRST_LIST  # both models need the extended list
+    with Sim("mip", device, "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, device)
+        try:
+            first = list(dev.base.get_device_descriptors().descriptors)
+            extended = list(dev.base.get_extended_descriptors().descriptors)
+        finally:
+            dev.transport.close()
+        # the manual's format: reply field 0x82 of length 2 x <number of descriptors> + 2, u16 MSB set
+        raw = raw_exchange(sim.address, pkg.PacketBuilder(0x01).add_field(0x04, b"").build())
+    assert first == expected[:FIRST_LIST] and extended == expected[FIRST_LIST:]
+    assert 0x0107 in first  # "search for the 0x0107 descriptor in the list" (GX5-45 line 847)
+    assert 0x8006 in first + extended  # does this device have a magnetometer? scaled mag 0x80,0x06
+    assert raw[:4] == bytes([0x75, 0x65, 0x01, 4 + 2 + 2 * FIRST_LIST])
+    assert raw[4:8] == bytes([0x04, 0xF1, 0x04, 0x00])  # the ack echoes 0x04
+    assert raw[8:10] == bytes([2 + 2 * FIRST_LIST, 0x82])
+    assert raw[10:14] == bytes([0x01, 0x01, 0x01, 0x02])  # ping 0x0101, set to idle 0x0102, big-endian
+
+
+def test_mscip_device_messages_list_the_commands() -> None:
+    pkg = python_package("mscipcodec")
+    proto = PROTOCOLS["mscip"]
+    commands = sorted(s["id"] << 8 | f["id"] for s in proto["sets"] for f in s["fields"] if f["role"] == "command")
+    with Sim("mscip", "ms_imu3020", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(pkg, sim.address, "ms_imu3020")
+        try:
+            got = dev.base.get_device_messages().messages
+        finally:
+            dev.transport.close()
+    assert [m.message_type << 8 | m.message_code for m in got] == commands
+
+
+def test_identity_defaults_and_flags() -> None:
+    mip, mscip = python_package("mipcodec"), python_package("mscipcodec")
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+        dev = open_device(mip, sim.address, "gx5_45")
+        try:
+            info = dev.base.get_device_info().info
+        finally:
+            dev.transport.close()
+    # the GX5-45 manual's example reply (3dm-gx5-45-dcp.txt line 785)
+    assert info.firmware_version == 0x05FE and info.serial_number.strip() == b"6232-00122"
+    assert (info.model_name.strip(), info.model_number.strip(), info.device_options.strip()) == (
+        b"3DM-GX5-45",
+        b"6232-4270",
+        b"5g, 150d/s",
+    )
+    flags = ["--serial", "SN-42", "--lot", "L7", "--options", "2g, 75d/s", "--firmware", "1209"]
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0", *flags) as sim:
+        dev = open_device(mip, sim.address, "cv7_ins")
+        try:
+            info = dev.base.get_device_info().info
+        finally:
+            dev.transport.close()
+    assert info.firmware_version == 1209 and info.model_name == b"3DM-CV7-GNSS/INS"
+    assert (info.serial_number, info.lot_number, info.device_options) == (
+        b"SN-42".ljust(16),
+        b"L7".ljust(16),
+        b"2g, 75d/s".ljust(16),
+    )
+    with Sim("mscip", "ms_imu3020", "tcp:127.0.0.1:0", "--serial", "31337", "--firmware", "R_2_0_1") as sim:
+        dev = open_device(mscip, sim.address, "ms_imu3020")
+        try:
+            sn = dev.base.get_device_sn().serial_number
+            fw = dev.base.get_device_fw().firmware
+            model = dev.base.get_device_model().model
+        finally:
+            dev.transport.close()
+    # right-justified, space-padded (ms-cip-doc00419-revM.txt lines 330, 382)
+    assert (sn, fw, model) == (b"31337".rjust(16), b"R_2_0_1".rjust(16), b"MS_IMU3020".rjust(16))
+
+
+def test_identity_flag_errors() -> None:
+    for args, message in (
+        (
+            ["--protocol", "mip", "--device", "cv7_ins", "--firmware", "1.2.3"],
+            "--firmware 1.2.3: expected an integer 0..65535",
+        ),
+        (["--protocol", "mip", "--firmware", "65536"], "--firmware 65536: expected an integer 0..65535"),
+        (["--protocol", "mip", "--serial", "x" * 17], "expected at most 16 printable ASCII characters"),
+        (["--protocol", "mscip", "--lot", "7"], "--lot 7: ms_imu3020 reports no lot number"),
+    ):
+        run = subprocess.run([str(SIMULATE), "--listen", "pty", *args], capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2, (args, run.stdout, run.stderr)
+        lines = run.stderr.strip().splitlines()
+        assert len(lines) == 1 and message in lines[0] and "Traceback" not in run.stderr, run.stderr
+
+
+def refusal_lines(protocol: dict, device: str, documented: bool = False) -> tuple[list[str], list[str]]:
+    """One command line for every command of the protocol the manual of `device` does not document
+    (from the IR's fields, as `supported` derives it), and the refusal each session must give; with
+    `documented`, the lines of the commands it documents (in the device's own layout)."""
+    model = next(d for d in protocol["devices"] if d["id"] == device)
+    first: dict[tuple[int, int], object] = {}
+    for x in field_samples(protocol):
+        if not documented or x.device in (None, device):
+            first.setdefault((x.set_id, x.descriptor), x)
+    lines, errors = [], []
+    for s in protocol["sets"]:
+        for f in s["fields"]:
+            if f["role"] != "command" or (device in f["devices"]) != documented:
+                continue
+            if documented and any(v["timeout"] for v in f["variants"]):
+                continue  # the simulator takes the allowance (capture gyro bias: up to a minute)
+            x = first[(s["id"], f["id"])]
+            entry = {"descriptor": f["id"], "name": f["name"], "values": x.values}
+            if x.print_device:
+                entry["device"] = x.device
+            lines.append(json.dumps({"offset": 0, "set": s["id"], "fields": [entry]}, separators=(",", ":")))
+            errors.append(f"{f['name']} is not supported by {model['title']} ({model['manual']})")
+    return lines, errors
+
+
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+@pytest.mark.parametrize("device", ["gx5_45", "cv7_ins"])
+def test_every_language_refuses_what_the_model_does_not_support(lang: str, device: str) -> None:
+    # Each language's capabilities table, asked through its session: every command the model's
+    # manual does not document is refused before sending, naming the model and its manual; ping
+    # and the descriptor lists (documented for both) go out and are answered.
+    lines, errors = refusal_lines(MIP, device)
+    assert len(lines) >= 8, lines
+    # every documented command goes out (whatever the simulator answers), then the list
+    documented = refusal_lines(MIP, device, documented=True)[0]
+    asked = [*documented, PING, command_line(MIP, 1, 4, "get_device_descriptors", {})]
+    with Sim("mip", device, "tcp:127.0.0.1:0") as sim:
+        out = session_tool(lang, "mip", sim.address, [*lines, *asked], "--device", device)
+    res = results(out)
+    assert [(r["result"], r.get("error")) for r in res[: len(lines)]] == [("refused", e) for e in errors]
+    sent = res[len(lines) :]
+    assert len(sent) == len(asked) and not [r for r in sent if r["result"] == "refused"], sent
+    assert [r["result"] for r in sent[-2:]] == ["ack", "ack"], sent[-2:]
+    listed = res[-1]["reply"][0]["values"]["descriptors"]
+    assert listed == supported(MIP, device)[:FIRST_LIST]

@@ -285,9 +285,8 @@ static void on_packet(void *ctx, const mipc_event_t *event) {
 }
 
 /* Reads the filter data until the samples are printed or the deadline passes. */
-static int read_data(mipc_link_t *link, nav_t *nav, const options_t *options) {
+static int read_data(mipc_link_t *link, nav_t *nav, const options_t *options, uint64_t deadline) {
     uint64_t now = link->transport.now_ms(link->transport.ctx);
-    const uint64_t deadline = now + (uint64_t)options->deadline_s * 1000u;
     while (nav->printed < nav->wanted) {
         if (now >= deadline) {
             fprintf(
@@ -328,13 +327,15 @@ int main(int argc, char **argv) {
         fprintf(stderr, "error: cannot start the session\n");
         status = 1;
     } else {
+        /* The deadline counts from the start. */
+        const uint64_t deadline = transport.now_ms(transport.ctx) + (uint64_t)options.deadline_s * 1000u;
         memset(&nav, 0, sizeof nav);
         nav.wanted = options.samples;
         status = configure(&link);
         if (status == 0) {
             /* Data packets reach the handler from here on (the filter data runs after resume). */
             mipc_session_on_packet(&link.session, on_packet, &nav);
-            status = read_data(&link, &nav, &options);
+            status = read_data(&link, &nav, &options, deadline);
         }
         mipc_link_close(&link);
     }

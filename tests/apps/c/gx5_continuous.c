@@ -29,6 +29,7 @@
 #define BAUD 115200ul
 #define IMU_HZ_OUT 100u             /* the IMU data rate asked for: decimation imu base rate / 100 */
 #define FILTER_HZ_OUT 10u           /* the filter data rate asked for: filter base rate / 10 */
+#define CF_EULER_WAIT_MS 1000u      /* how long the polled complementary filter angles are awaited */
 #define MAX_MILLISECONDS 86400000ul /* upper bound of --deadline-s (in ms) */
 
 #define USAGE_LINE "usage: gx5_continuous ADDRESS [--samples N] [--deadline-s N]\n"
@@ -197,7 +198,9 @@ static int configure(mipc_link_t *link) {
 
 /* ------------------------------------------------------------------------------- data */
 typedef struct {
-    bool imu_ok; /* "imu ok" printed */
+    bool imu_ok;                            /* "imu ok" printed */
+    bool have_cf_euler;                     /* complementary filter Euler angles received */
+    mipc_sensor_cf_euler_angles_t cf_euler; /* the first ones */
     bool have_state;
     unsigned state;        /* the last filter state printed */
     unsigned long printed; /* samples printed in "run solution valid" */
@@ -221,7 +224,8 @@ static void decode_warning(nav_t *nav, uint8_t set, uint8_t descriptor, mipc_sta
     }
 }
 
-/* An IMU packet (0x80): "imu ok" once both vectors decoded. */
+/* An IMU packet (0x80): "imu ok" once both vectors decoded; the complementary filter Euler
+ * angles of the filter initialization. */
 static void on_imu(nav_t *nav, const mipc_event_t *event) {
     mipc_sensor_scaled_accel_t accel;
     mipc_sensor_scaled_gyro_t gyro;
@@ -241,6 +245,9 @@ static void on_imu(nav_t *nav, const mipc_event_t *event) {
         } else if (entry.descriptor == MIPC_SENSOR_SCALED_GYRO_DESCRIPTOR) {
             st = mipc_sensor_scaled_gyro_decode(entry.data, entry.length, &gyro, NULL);
             have |= st == MIPC_OK ? 2u : 0u;
+        } else if (entry.descriptor == MIPC_SENSOR_CF_EULER_ANGLES_DESCRIPTOR && !nav->have_cf_euler) {
+            st = mipc_sensor_cf_euler_angles_decode(entry.data, entry.length, &nav->cf_euler, NULL);
+            nav->have_cf_euler = st == MIPC_OK;
         } else {
             st = MIPC_OK; /* another field: not ours */
         }
@@ -248,9 +255,6 @@ static void on_imu(nav_t *nav, const mipc_event_t *event) {
     }
     if (have == 3u && !nav->imu_ok) {
         nav->imu_ok = true;
-        fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", (double)accel.scaled_accel[0],
-                (double)accel.scaled_accel[1], (double)accel.scaled_accel[2], (double)gyro.scaled_gyro[0],
-                (double)gyro.scaled_gyro[1], (double)gyro.scaled_gyro[2]);
         puts("imu ok");
         fflush(stdout);
     }
@@ -338,10 +342,40 @@ static void on_packet(void *ctx, const mipc_event_t *event) {
     }
 }
 
-/* Reads the data streams until the samples are printed or the deadline passes. */
-static int read_data(mipc_link_t *link, nav_t *nav, const options_t *options) {
+/* The manual's step 7, Initialize the Filter (3dm-gx5-45-dcp.txt line 431): poll the
+ * complementary filter's Euler angles (0x80,0x0C), then Set Initial Attitude (0x0D,0x02) with them.
+ * A device with auto-initialization enabled does not need it, but neither manual states that
+ * option's factory setting, so the program does not rely on it. The handler is installed. */
+static int initialize_filter(mipc_link_t *link, const nav_t *nav) {
+    mipc_gx5_poll_descriptor_t cf_euler;
     uint64_t now = link->transport.now_ms(link->transport.ctx);
-    const uint64_t deadline = now + (uint64_t)options->deadline_s * 1000u;
+    const uint64_t end = now + CF_EULER_WAIT_MS; /* the data packet follows the ACK */
+    memset(&cf_euler, 0, sizeof cf_euler);
+    cf_euler.descriptor = MIPC_SENSOR_CF_EULER_ANGLES_DESCRIPTOR;
+    RUN("threedm.poll_imu_data (complementary filter Euler angles)",
+        mipc_threedm_poll_imu_data(link, MIPC_GX5_POLL_OPTION_NORMAL, &cf_euler, 1));
+    while (!nav->have_cf_euler && now < end) {
+        if (mipc_link_pump(link, (uint32_t)(end - now)) < 0) {
+            fprintf(stderr, "error: the connection failed\n");
+            return 1;
+        }
+        now = link->transport.now_ms(link->transport.ctx);
+    }
+    if (!nav->have_cf_euler) {
+        fprintf(
+            stderr,
+            "error: threedm.poll_imu_data: no complementary filter Euler angles (0x80,0x0C) within %u ms\n",
+            CF_EULER_WAIT_MS);
+        return 1;
+    }
+    RUN("filter.set_initial_attitude",
+        mipc_filter_set_initial_attitude(link, nav->cf_euler.roll, nav->cf_euler.pitch, nav->cf_euler.yaw));
+    return 0;
+}
+
+/* Reads the data streams until the samples are printed or the deadline passes. */
+static int read_data(mipc_link_t *link, nav_t *nav, const options_t *options, uint64_t deadline) {
+    uint64_t now = link->transport.now_ms(link->transport.ctx);
     while (nav->printed < nav->wanted) {
         if (now >= deadline) {
             fprintf(
@@ -383,13 +417,18 @@ int main(int argc, char **argv) {
         fprintf(stderr, "error: cannot start the session\n");
         status = 1;
     } else {
+        /* The deadline counts from the start. */
+        const uint64_t deadline = transport.now_ms(transport.ctx) + (uint64_t)options.deadline_s * 1000u;
         memset(&nav, 0, sizeof nav);
         nav.wanted = options.samples;
         status = configure(&link);
         if (status == 0) {
-            /* Data packets reach the handler from here on (the streams run after resume). */
+            /* Data packets reach the handler from here on: the streams run after resume. */
             mipc_session_on_packet(&link.session, on_packet, &nav);
-            status = read_data(&link, &nav, &options);
+            status = initialize_filter(&link, &nav);
+        }
+        if (status == 0) {
+            status = read_data(&link, &nav, &options, deadline);
         }
         mipc_link_close(&link);
     }

@@ -50,7 +50,8 @@ constexpr const char *kUsageHelp =
     "  --deadline-s N  give up waiting for them after N seconds (default 60)\n";
 
 constexpr std::uint8_t kFilterSet = 0x82;
-constexpr unsigned kFilterHz = 10; // filter data rate: decimation = filter base rate / 10
+constexpr unsigned kFilterHz = 10;          // filter data rate: decimation = filter base rate / 10
+constexpr std::int64_t kListenSliceMs = 20; // how long one listen() receives
 
 struct Options {
     std::string address;
@@ -349,8 +350,7 @@ int configure(mipcodec::Connection &device, long antennas) {
 }
 
 /// Reads the filter data until the samples were printed or the deadline passed.
-int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt) {
-    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000;
+int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt, std::int64_t deadline) {
     while (!nav.done()) {
         const std::int64_t now = device.now_ms();
         if (now >= deadline) {
@@ -361,7 +361,8 @@ int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt)
             return error("deadline passed", why);
         }
         mipcodec::ErrorText io;
-        if (!device.listen(deadline - now, &io)) {
+        // listen() receives for the whole duration: a short slice, then the samples are counted.
+        if (!device.listen(std::min(kListenSliceMs, deadline - now), &io)) {
             return error("connection", io.c_str());
         }
     }
@@ -388,13 +389,14 @@ int main(int argc, char **argv) {
     mipcodec::Session<1>::Options options;
     options.device = mipcodec::Device::cv7_ins; // what the CV7-INS does not support is refused unsent
     mipcodec::Connection device(*transport, options);
+    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000; // counted from the start
     Navigation nav(opt.samples);
     int status = configure(device, opt.antennas);
     if (status == 0) {
         // Every packet that is not a reply reaches the handler from here on.
         device.session().on_packet(
             [&nav](const mipcodec::PacketView &packet, std::uint64_t) { nav.on_packet(packet); });
-        status = read_data(device, nav, opt);
+        status = read_data(device, nav, opt, deadline);
     }
     device.close();
     return status;

@@ -49,8 +49,10 @@ constexpr const char *kUsageHelp =
 
 constexpr std::uint8_t kImuSet = 0x80;
 constexpr std::uint8_t kFilterSet = 0x82;
-constexpr unsigned kImuHz = 100;   // IMU data rate: decimation = IMU base rate / 100
-constexpr unsigned kFilterHz = 10; // filter data rate: decimation = filter base rate / 10
+constexpr unsigned kImuHz = 100;              // IMU data rate: decimation = IMU base rate / 100
+constexpr unsigned kFilterHz = 10;            // filter data rate: decimation = filter base rate / 10
+constexpr std::int64_t kListenSliceMs = 20;   // how long one listen() receives
+constexpr std::int64_t kCfEulerWaitMs = 1000; // how long the polled complementary filter angles are awaited
 
 struct Options {
     std::string address;
@@ -166,6 +168,10 @@ class Navigation {
     long printed() const {
         return printed_;
     }
+    /// The complementary filter Euler angles of the first IMU packet holding them.
+    const std::optional<sensor::CfEulerAngles> &cf_euler() const {
+        return cf_euler_;
+    }
     bool imu_ok() const {
         return imu_ok_;
     }
@@ -174,7 +180,8 @@ class Navigation {
     }
 
   private:
-    /// An IMU packet: `imu ok` once both vectors decoded.
+    /// An IMU packet: `imu ok` once both vectors decoded; the complementary filter Euler angles of
+    /// the filter initialization.
     void on_imu(const mipcodec::PacketView &packet) {
         std::optional<sensor::ScaledAccel> accel;
         std::optional<sensor::ScaledGyro> gyro;
@@ -188,13 +195,12 @@ class Navigation {
                 decode_into(e, accel);
             } else if (e.descriptor == sensor::ScaledGyro::kDescriptor) {
                 decode_into(e, gyro);
+            } else if (e.descriptor == sensor::CfEulerAngles::kDescriptor && !cf_euler_) {
+                decode_into(e, cf_euler_);
             }
         }
         if (accel && gyro && !imu_ok_) {
             imu_ok_ = true;
-            std::fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", accel->scaled_accel[0],
-                         accel->scaled_accel[1], accel->scaled_accel[2], gyro->scaled_gyro[0],
-                         gyro->scaled_gyro[1], gyro->scaled_gyro[2]);
             std::printf("imu ok\n");
             std::fflush(stdout);
         }
@@ -274,6 +280,7 @@ class Navigation {
     long wanted_;
     long printed_ = 0;
     bool imu_ok_ = false;
+    std::optional<sensor::CfEulerAngles> cf_euler_;
     std::optional<unsigned> state_;
 };
 
@@ -348,9 +355,41 @@ int configure(mipcodec::Connection &device) {
     return 0;
 }
 
+/// The manual's step 7, Initialize the Filter (3dm-gx5-45-dcp.txt line 431): poll the complementary
+/// filter's Euler angles (0x80,0x0C), then Set Initial Attitude (0x0D,0x02) with them. A device
+/// with auto-initialization enabled does not need it, but neither manual states that option's
+/// factory setting, so the program does not rely on it. The packet handler is installed.
+int initialize_filter(mipcodec::Connection &device, const Navigation &nav) {
+    decltype(mipcodec::threedm::PollImuData::descriptors) cf_euler;
+    cf_euler.push_back(types::Gx5PollDescriptor{sensor::CfEulerAngles::kDescriptor, 0});
+    const mipcodec::Call call =
+        api::threedm::poll_imu_data::call(device, types::Gx5PollOption::normal, cf_euler);
+    if (!call.ok()) {
+        return failed("threedm.poll_imu_data (complementary filter Euler angles)", call);
+    }
+    const std::int64_t end = device.now_ms() + kCfEulerWaitMs; // the data packet follows the ACK
+    while (!nav.cf_euler() && device.now_ms() < end) {
+        mipcodec::ErrorText io;
+        if (!device.listen(std::min<std::int64_t>(10, end - device.now_ms()), &io)) {
+            return error("connection", io.c_str());
+        }
+    }
+    if (!nav.cf_euler()) {
+        return error("threedm.poll_imu_data", ("no complementary filter Euler angles (0x80,0x0C) within " +
+                                               std::to_string(kCfEulerWaitMs) + " ms")
+                                                  .c_str());
+    }
+    const sensor::CfEulerAngles &angles = *nav.cf_euler();
+    const mipcodec::Call set =
+        api::filter::set_initial_attitude::call(device, angles.roll, angles.pitch, angles.yaw);
+    if (!set.ok()) {
+        return failed("filter.set_initial_attitude", set);
+    }
+    return 0;
+}
+
 /// Reads the data streams until the samples were printed or the deadline passed.
-int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt) {
-    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000;
+int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt, std::int64_t deadline) {
     while (!nav.done()) {
         const std::int64_t now = device.now_ms();
         if (now >= deadline) {
@@ -363,7 +402,8 @@ int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt)
             return error("deadline passed", why);
         }
         mipcodec::ErrorText io;
-        if (!device.listen(deadline - now, &io)) {
+        // listen() receives for the whole duration: a short slice, then the samples are counted.
+        if (!device.listen(std::min(kListenSliceMs, deadline - now), &io)) {
             return error("connection", io.c_str());
         }
     }
@@ -390,13 +430,17 @@ int main(int argc, char **argv) {
     mipcodec::Session<1>::Options options;
     options.device = mipcodec::Device::gx5_45; // what the GX5-45 does not support is refused unsent
     mipcodec::Connection device(*transport, options);
+    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000; // counted from the start
     Navigation nav(opt.samples);
     int status = configure(device);
     if (status == 0) {
         // Every packet that is not a reply reaches the handler from here on.
         device.session().on_packet(
             [&nav](const mipcodec::PacketView &packet, std::uint64_t) { nav.on_packet(packet); });
-        status = read_data(device, nav, opt);
+        status = initialize_filter(device, nav);
+    }
+    if (status == 0) {
+        status = read_data(device, nav, opt, deadline);
     }
     device.close();
     return status;

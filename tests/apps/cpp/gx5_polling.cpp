@@ -49,9 +49,10 @@ constexpr const char *kUsageHelp =
 
 constexpr std::uint8_t kImuSet = 0x80;
 constexpr std::uint8_t kFilterSet = 0x82;
-constexpr unsigned kImuHz = 100;            // IMU data rate: decimation = IMU base rate / 100
-constexpr unsigned kFilterHz = 10;          // filter data rate: decimation = filter base rate / 10
-constexpr std::int64_t kPollPeriodMs = 100; // how often the data is polled
+constexpr unsigned kImuHz = 100;              // IMU data rate: decimation = IMU base rate / 100
+constexpr unsigned kFilterHz = 10;            // filter data rate: decimation = filter base rate / 10
+constexpr std::int64_t kCfEulerWaitMs = 1000; // how long the polled complementary filter angles are awaited
+constexpr std::int64_t kPollPeriodMs = 100;   // how often the data is polled
 
 struct Options {
     std::string address;
@@ -138,6 +139,15 @@ void put_number(std::string &out, double v) {
     out += buf;
 }
 
+/// A device information string without its padding (spaces, NULs).
+std::string unpadded(const std::array<char, 16> &text) {
+    std::string s(text.begin(), text.end());
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\0')) {
+        s.pop_back();
+    }
+    return s;
+}
+
 /// The IMU and filter data read from the packets, and the output lines.
 class Navigation {
   public:
@@ -158,6 +168,10 @@ class Navigation {
     long printed() const {
         return printed_;
     }
+    /// The complementary filter Euler angles of the first IMU packet holding them.
+    const std::optional<sensor::CfEulerAngles> &cf_euler() const {
+        return cf_euler_;
+    }
     bool imu_ok() const {
         return imu_ok_;
     }
@@ -166,7 +180,8 @@ class Navigation {
     }
 
   private:
-    /// An IMU packet: `imu ok` once both vectors decoded.
+    /// An IMU packet: `imu ok` once both vectors decoded; the complementary filter Euler angles of
+    /// the filter initialization.
     void on_imu(const mipcodec::PacketView &packet) {
         std::optional<sensor::ScaledAccel> accel;
         std::optional<sensor::ScaledGyro> gyro;
@@ -180,13 +195,12 @@ class Navigation {
                 decode_into(e, accel);
             } else if (e.descriptor == sensor::ScaledGyro::kDescriptor) {
                 decode_into(e, gyro);
+            } else if (e.descriptor == sensor::CfEulerAngles::kDescriptor && !cf_euler_) {
+                decode_into(e, cf_euler_);
             }
         }
         if (accel && gyro && !imu_ok_) {
             imu_ok_ = true;
-            std::fprintf(stderr, "accel %g %g %g g, gyro %g %g %g rad/s\n", accel->scaled_accel[0],
-                         accel->scaled_accel[1], accel->scaled_accel[2], gyro->scaled_gyro[0],
-                         gyro->scaled_gyro[1], gyro->scaled_gyro[2]);
             std::printf("imu ok\n");
             std::fflush(stdout);
         }
@@ -266,6 +280,7 @@ class Navigation {
     long wanted_;
     long printed_ = 0;
     bool imu_ok_ = false;
+    std::optional<sensor::CfEulerAngles> cf_euler_;
     std::optional<unsigned> state_;
 };
 
@@ -294,6 +309,14 @@ int configure(mipcodec::Connection &device) {
     if (!call.ok()) {
         return failed("base.set_to_idle", call);
     }
+    const auto info = api::base::get_device_info::call(device);
+    if (!info.value) {
+        return failed("base.get_device_info", info.call);
+    }
+    std::printf("model %s\nserial %s\nfirmware %u\n", unpadded(info.value->info.model_name).c_str(),
+                unpadded(info.value->info.serial_number).c_str(),
+                static_cast<unsigned>(info.value->info.firmware_version));
+    std::fflush(stdout);
     const auto imu_base = api::threedm::get_imu_base_rate::call(device);
     if (!imu_base.value) {
         return failed("threedm.get_imu_base_rate", imu_base.call);
@@ -334,6 +357,39 @@ int configure(mipcodec::Connection &device) {
     return 0;
 }
 
+/// The manual's step 7, Initialize the Filter (3dm-gx5-45-dcp.txt line 431): poll the complementary
+/// filter's Euler angles (0x80,0x0C), then Set Initial Attitude (0x0D,0x02) with them. A device
+/// with auto-initialization enabled does not need it, but neither manual states that option's
+/// factory setting, so the program does not rely on it. The packet handler is installed.
+int initialize_filter(mipcodec::Connection &device, const Navigation &nav) {
+    decltype(mipcodec::threedm::PollImuData::descriptors) cf_euler;
+    cf_euler.push_back(types::Gx5PollDescriptor{sensor::CfEulerAngles::kDescriptor, 0});
+    const mipcodec::Call call =
+        api::threedm::poll_imu_data::call(device, types::Gx5PollOption::normal, cf_euler);
+    if (!call.ok()) {
+        return failed("threedm.poll_imu_data (complementary filter Euler angles)", call);
+    }
+    const std::int64_t end = device.now_ms() + kCfEulerWaitMs; // the data packet follows the ACK
+    while (!nav.cf_euler() && device.now_ms() < end) {
+        mipcodec::ErrorText io;
+        if (!device.listen(std::min<std::int64_t>(10, end - device.now_ms()), &io)) {
+            return error("connection", io.c_str());
+        }
+    }
+    if (!nav.cf_euler()) {
+        return error("threedm.poll_imu_data", ("no complementary filter Euler angles (0x80,0x0C) within " +
+                                               std::to_string(kCfEulerWaitMs) + " ms")
+                                                  .c_str());
+    }
+    const sensor::CfEulerAngles &angles = *nav.cf_euler();
+    const mipcodec::Call set =
+        api::filter::set_initial_attitude::call(device, angles.roll, angles.pitch, angles.yaw);
+    if (!set.ok()) {
+        return failed("filter.set_initial_attitude", set);
+    }
+    return 0;
+}
+
 /// Polls the IMU and the filter data (normal option: an ACK, then the data packet).
 int poll_once(mipcodec::Connection &device) {
     decltype(mipcodec::threedm::PollImuData::descriptors) imu;
@@ -356,8 +412,7 @@ int poll_once(mipcodec::Connection &device) {
 }
 
 /// Polls every period until the samples were printed or the deadline passed.
-int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt) {
-    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000;
+int read_data(mipcodec::Connection &device, Navigation &nav, const Options &opt, std::int64_t deadline) {
     std::int64_t next_poll = device.now_ms();
     while (!nav.done()) {
         const std::int64_t now = device.now_ms();
@@ -405,13 +460,17 @@ int main(int argc, char **argv) {
     mipcodec::Session<1>::Options options;
     options.device = mipcodec::Device::gx5_45; // what the GX5-45 does not support is refused unsent
     mipcodec::Connection device(*transport, options);
+    const std::int64_t deadline = device.now_ms() + opt.deadline_s * 1000; // counted from the start
     Navigation nav(opt.samples);
     int status = configure(device);
     if (status == 0) {
         // Every packet that is not a reply (the polled data) reaches the handler.
         device.session().on_packet(
             [&nav](const mipcodec::PacketView &packet, std::uint64_t) { nav.on_packet(packet); });
-        status = read_data(device, nav, opt);
+        status = initialize_filter(device, nav);
+    }
+    if (status == 0) {
+        status = read_data(device, nav, opt, deadline);
     }
     device.close();
     return status;

@@ -109,3 +109,16 @@ def test_factory_values_hold_on_their_device_and_start_a_message_format(monkeypa
     monkeypatch.setattr(_sim, "FACTORY", {})
     alpha._replan()
     assert alpha.plan == {}  # no default, no format written: nothing streams
+
+
+def test_identity_flags_are_checked_against_what_the_model_reports():
+    # the test protocol reports no identity (its _sim.IDENTITY is empty): every flag is refused
+    # with one line naming the device and the item
+    from testproto.sim import parse_identity
+
+    with pytest.raises(ValueError, match="^--serial 12: alpha reports no serial number$"):
+        parse_identity("alpha", "serial", "12")
+    with pytest.raises(ValueError, match="^--firmware 1: beta reports no firmware$"):
+        parse_identity("beta", "firmware", "1")
+    assert Simulator("alpha", identity={"serial_number": "x"}).identity == {"serial_number": "x"}
+    assert Simulator("alpha").descriptor_lists() == []  # no descriptor-list command in the spec

@@ -194,11 +194,13 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
         if (!in_layout || (limited != 0 && (limited & bit) == 0)) {
             const char *fname = function_name(*fn);
             if (fname != nullptr) {
-                std::snprintf(out.text.data(), out.text.size(), "function %s of %s is not supported by %s (%s)",
-                              fname, row.name, device_title(*device), device_manual(*device));
+                std::snprintf(out.text.data(), out.text.size(),
+                              "function %s of %s is not supported by %s (%s)", fname, row.name,
+                              device_title(*device), device_manual(*device));
             } else {
-                std::snprintf(out.text.data(), out.text.size(), "function %lld of %s is not supported by %s (%s)",
-                              static_cast<long long>(*fn), row.name, device_title(*device), device_manual(*device));
+                std::snprintf(out.text.data(), out.text.size(),
+                              "function %lld of %s is not supported by %s (%s)", static_cast<long long>(*fn),
+                              row.name, device_title(*device), device_manual(*device));
             }
             return true;
         }

@@ -33,6 +33,88 @@ bool democ_device_from_id(const char *id, democ_device_t *out) {
     return false;
 }
 
+const char *democ_device_title(democ_device_t device) {
+    switch (device) {
+    case DEMOC_DEVICE_DEV_A:
+        return "Device A";
+    case DEMOC_DEVICE_DEV_B:
+        return "Device B";
+    case DEMOC_DEVICE_ANY:
+    default:
+        return NULL;
+    }
+}
+
+const char *democ_device_manual(democ_device_t device) {
+    switch (device) {
+    case DEMOC_DEVICE_DEV_A:
+        return "demo.txt";
+    case DEMOC_DEVICE_DEV_B:
+        return "demo-b.txt";
+    case DEMOC_DEVICE_ANY:
+    default:
+        return NULL;
+    }
+}
+
+/* The capabilities tables: (set << 8) | descriptor, ascending (a leading 0 keeps an empty one legal). */
+static const uint16_t k_dev_a_commands[] = {0, 0x0101, 0x0102, 0x0103};
+static const uint16_t k_dev_a_data[] = {0, 0x9001, 0x9103, 0x9203};
+static const uint16_t k_dev_b_commands[] = {0, 0x0103};
+static const uint16_t k_dev_b_data[] = {0};
+
+static const uint16_t *device_table(democ_device_t device, bool data, size_t *count) {
+    switch (device) {
+    case DEMOC_DEVICE_DEV_A:
+        *count = data ? 3u : 3u;
+        return (data ? k_dev_a_data : k_dev_a_commands) + 1;
+    case DEMOC_DEVICE_DEV_B:
+        *count = data ? 0u : 1u;
+        return (data ? k_dev_b_data : k_dev_b_commands) + 1;
+    case DEMOC_DEVICE_ANY:
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+const uint16_t *democ_device_commands(democ_device_t device, size_t *count) {
+    assert(count != NULL);
+    return device_table(device, false, count);
+}
+
+const uint16_t *democ_device_data(democ_device_t device, size_t *count) {
+    assert(count != NULL);
+    return device_table(device, true, count);
+}
+
+static bool table_has(const uint16_t *table, size_t n, uint16_t key) {
+    size_t lo = 0;
+    while (lo < n) {
+        size_t mid = lo + (n - lo) / 2u;
+        if (table[mid] == key) {
+            return true;
+        }
+        if (table[mid] < key) {
+            lo = mid + 1u;
+        } else {
+            n = mid;
+        }
+    }
+    return false;
+}
+
+bool democ_device_supports(democ_device_t device, uint8_t set, uint8_t descriptor) {
+    size_t n;
+    uint16_t key = (uint16_t)(((unsigned)set << 8) | descriptor);
+    const uint16_t *t = device_table(device, false, &n);
+    if (t != NULL && table_has(t, n, key)) {
+        return true;
+    }
+    t = device_table(device, true, &n);
+    return t != NULL && table_has(t, n, key);
+}
+
 democ_set_kind_t democ_set_kind(uint8_t set) {
     if (set >= 0x01 && set <= 0x7F) {
         return DEMOC_SET_KIND_COMMAND;

@@ -181,6 +181,14 @@ static uint32_t device_bit(democ_device_t device) {
     return d < 32u ? (uint32_t)1u << d : 0u;
 }
 
+/* The model as refusals name it: its title and manual, "3DM-GX5-45 (3dm-gx5-45-dcp.txt)". */
+static void add_model(text_t *t, democ_device_t device) {
+    text_add(t, democ_device_title(device));
+    text_add(t, " (");
+    text_add(t, democ_device_manual(device));
+    text_add(t, ")");
+}
+
 /* Why the session's device does not support the command (section 8, start step 1): writes the
  * message and returns true, or returns false. */
 static bool support_error(const democ_command_facts_t *f, democ_device_t device, char *buf, size_t cap) {
@@ -188,10 +196,10 @@ static bool support_error(const democ_command_facts_t *f, democ_device_t device,
     const char *dev = democ_device_id(device);
     text_t t;
     text_init(&t, buf, cap);
-    if ((f->field_devices & device_bit(device)) == 0) {
+    if (!democ_device_supports(device, f->set, f->descriptor)) {
         text_add(&t, name);
         text_add(&t, " is not supported by ");
-        text_add(&t, dev);
+        add_model(&t, device);
         return true;
     }
     if (f->layout_device != DEMOC_DEVICE_ANY && f->layout_device != device) {
@@ -213,7 +221,7 @@ static bool support_error(const democ_command_facts_t *f, democ_device_t device,
         text_add(&t, " of ");
         text_add(&t, name);
         text_add(&t, " is not supported by ");
-        text_add(&t, dev);
+        add_model(&t, device);
         return true;
     }
     return false;

@@ -72,6 +72,20 @@ ALL_SETTINGS: Tuple[Any, ...] = ()
 
 DEVICE_TITLES: Dict[str, str] = {"dev_a": "Device A", "dev_b": "Device B"}
 
+# The replies that list what the device supports (spec simulation descriptor_lists): reply class ->
+# (which reply: 0 the first, 1 the extended; its capacity; the list attribute), and the item class
+# (None: a u16, (set << 8) | descriptor); which capabilities lists they hold, in that order
+DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {}
+DESCRIPTOR_ITEMS: Dict[Any, Any] = {}
+DESCRIPTOR_CONTENTS: Tuple[str, ...] = ()
+
+# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
+# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
+# item its kind and limit (the largest integer, or the most characters)
+IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {}
+IDENTITY: Dict[str, Dict[str, Any]] = {}
+IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
+
 # Factory values the manuals state (the spec's `default`, with its source line); every other
 # parameter's factory value is zero: device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}

@@ -24,7 +24,7 @@ from collections import deque
 from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Union
 
 from . import _session as _meta
-from . import registry
+from . import capabilities, registry
 from .canonical import error_text, loads
 from .codec import Field
 from .framing import PacketBuilder, Parser, RawPacket, Skip, _speedups
@@ -227,16 +227,15 @@ def support_error(command: Field, device: str) -> Optional[str]:
     """Why `device` does not support the command as given (None when it does)."""
     info = command_info(command)
     name = command.NAME
-    layouts = _meta.COMMANDS.get((command.SET, command.DESCRIPTOR), ()) if command.SET is not None else ()
-    if not any(device in row[2] for row in layouts):
-        return f"{name} is not supported by {device}"
+    if command.SET is None or not capabilities.supports(device, command.SET, command.DESCRIPTOR):
+        return f"{name} is not supported by {capabilities.describe(device)}"
     if info is not None and info.device is not None and info.device != device:
         return f"{name}: this layout is for {info.device}, not {device}"
     fn = _function(command)
     if info is not None and info.functions is not None and fn is not None:
         limited = _meta.FUNCTION_DEVICES.get(fn)
         if fn not in info.functions or (limited is not None and device not in limited):
-            return f"function {_meta.function_name(fn)} of {name} is not supported by {device}"
+            return f"function {_meta.function_name(fn)} of {name} is not supported by {capabilities.describe(device)}"
     return None
 
 

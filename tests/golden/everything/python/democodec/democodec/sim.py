@@ -28,7 +28,7 @@ import time
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _session as _meta
-from . import _sim, registry
+from . import _sim, capabilities, registry
 from ._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
 from .codec import Choice, Enum, Field
 from .framing import PacketBuilder, Parser, RawPacket
@@ -111,6 +111,7 @@ class Simulator:
         scenario: str = "static",
         speed: float = 1.0,
         baud: bool = False,
+        identity: Optional[Dict[str, Any]] = None,
     ) -> None:
         if not speed > 0:
             raise ValueError(f"bad speed {speed!r} (expected a factor above 0)")
@@ -119,6 +120,8 @@ class Simulator:
         if device not in registry.DEVICES:
             raise ValueError(f"unknown device {device!r} (expected one of {', '.join(registry.DEVICES)})")
         self.device = device
+        # what the device reports as its identity (spec simulation identity; --serial, ...)
+        self.identity: Dict[str, Any] = {**_sim.IDENTITY.get(device, {}), **(identity or {})}
         self.rng = random.Random(seed)
         self.faults = list(faults)
         self.parser = Parser()
@@ -206,7 +209,7 @@ class Simulator:
                 return "", nack["invalid_parameter"] if fault.arg is None else fault.arg, [], []  # "": no other fault
         error = support_error(command, self.device)
         if error is not None:
-            unknown = error == f"{name} is not supported by {self.device}"
+            unknown = not capabilities.supports(self.device, int(command.SET or 0), command.DESCRIPTOR)
             return name, nack["unknown_descriptor" if unknown else "invalid_parameter"], [], []
         info = _sim.COMMANDS.get(type(command))
         if info is not None and any(
@@ -391,9 +394,39 @@ class Simulator:
             value.encode()
         except (TypeError, ValueError):
             value = _complete(cls())
-        if stored is None:
-            _identify(value, _sim.DEVICE_TITLES.get(self.device, self.device))
+        self._report(value)
         return value  # type: ignore[no-any-return]
+
+    def descriptor_lists(self) -> List[List[Tuple[int, int]]]:
+        """What the descriptor-list replies carry, in order (the first reply, the extended one):
+        the model's capabilities lists named by the spec, ascending, cut at each reply's capacity."""
+        model = capabilities.MODELS[self.device]
+        lists = {"command": model.commands, "data": model.data}
+        entries = sorted(e for kind in _sim.DESCRIPTOR_CONTENTS for e in lists[kind])
+        out: List[List[Tuple[int, int]]] = []
+        for _, capacity, _ in sorted(_sim.DESCRIPTOR_LISTS.values()):
+            out.append(entries[:capacity])
+            entries = entries[capacity:]
+        return out
+
+    def _report(self, value: Any) -> None:
+        """Writes the device's identity and its descriptor lists into a reply that carries them."""
+        for path, item, fmt in _sim.IDENTITY_REPORTS.get(type(value), ()):
+            target = value
+            for name in path[:-1]:
+                target = getattr(target, name)
+            v = self.identity.get(item)
+            if fmt is not None:
+                length, pad, justify = fmt
+                text = str(v or "")
+                v = (text.rjust(length, pad) if justify == "right" else text.ljust(length, pad)).encode("ascii")
+            setattr(target, path[-1], v if v is not None else 0)
+        spec = _sim.DESCRIPTOR_LISTS.get(type(value))
+        if spec is not None:
+            index, _, attr = spec
+            item = _sim.DESCRIPTOR_ITEMS.get(type(value))
+            listed = self.descriptor_lists()[index]
+            setattr(value, attr, [item(s, d) if item is not None else (s << 8) | d for s, d in listed])
 
     def _reply(self, set_id: int, descriptor: int, code: int, replies: List[Field]) -> bytes:
         ack_cls = registry.RESERVED["command"][_meta.ACK_DESCRIPTOR][0]
@@ -647,17 +680,27 @@ def _descriptor_of(item: Any) -> int:
     return int(getattr(item, "descriptor", item))
 
 
-def _identify(value: Any, device: str) -> None:
-    """Fills the identification strings of a reply (all blank by default) with the device name."""
-    if not dataclasses.is_dataclass(value):
-        return
-    for f in dataclasses.fields(value):
-        v = getattr(value, f.name)
-        if isinstance(v, bytes) and v.strip(b" \x00") == b"" and v:
-            text = device.encode("ascii", "replace")[: len(v)]
-            setattr(value, f.name, text + b" " * (len(v) - len(text)))
-        elif dataclasses.is_dataclass(v):
-            _identify(v, device)
+IDENTITY_FLAGS = {"serial": "serial_number", "lot": "lot_number", "options": "options", "firmware": "firmware"}
+
+
+def parse_identity(device: str, flag: str, text: str) -> Tuple[str, Any]:
+    """The identity item and value of a --serial/--lot/--options/--firmware flag, checked against
+    what the device's replies can carry (spec simulation identity); ValueError says why not."""
+    item = IDENTITY_FLAGS[flag]
+    if item not in _sim.IDENTITY_ITEMS or item not in _sim.IDENTITY.get(device, {}):
+        raise ValueError(f"--{flag} {text}: {device} reports no {item.replace('_', ' ')}")
+    kind, limit = _sim.IDENTITY_ITEMS[item]
+    if kind == "integer":
+        try:
+            value = int(text, 0)
+        except ValueError:
+            value = -1
+        if not 0 <= value <= limit:
+            raise ValueError(f"--{flag} {text}: expected an integer 0..{limit}")
+        return item, value
+    if len(text) > limit or not all(" " <= c <= "~" for c in text):
+        raise ValueError(f"--{flag} {text}: expected at most {limit} printable ASCII characters")
+    return item, text
 
 
 def _show(
@@ -998,6 +1041,10 @@ def _parser() -> argparse.ArgumentParser:
         "the magnetometer reads it, a filter using the magnetometer for heading rejects it and flags it",
     )
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
+    for flag, item in IDENTITY_FLAGS.items():
+        p.add_argument(
+            f"--{flag}", metavar="VALUE", help=f"the {item.replace('_', ' ')} the device reports (default: the spec's)"
+        )
     p.add_argument("--replay", metavar="FILE", help="send the packets of a capture instead of simulating")
     p.add_argument("--fast", action="store_true", help="with --replay: as fast as possible, not at the recorded pace")
     for kind, what in (
@@ -1043,7 +1090,21 @@ def main(argv: Optional[List[str]] = None) -> int:
             except OSError as e:
                 raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
         else:
-            sim = Simulator(args.device, args.seed, faults, scenario=args.scenario, speed=args.speed, baud=args.baud)
+            device = args.device or registry.DEVICES[0]
+            identity = dict(
+                parse_identity(device, flag, getattr(args, flag))
+                for flag in IDENTITY_FLAGS
+                if getattr(args, flag) is not None and device in registry.DEVICES
+            )
+            sim = Simulator(
+                args.device,
+                args.seed,
+                faults,
+                scenario=args.scenario,
+                speed=args.speed,
+                baud=args.baud,
+                identity=identity,
+            )
             sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
             sim.world.mag_disturbances.extend(_outage(text, "--mag-disturbance") for text in args.mag_disturbance)
         serve(args.listen, sim, replay)

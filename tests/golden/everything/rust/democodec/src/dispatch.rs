@@ -37,6 +37,38 @@ impl Device {
         }
     }
 
+    /// File name of the manual that documents the device.
+    pub fn manual(self) -> &'static str {
+        match self {
+            Device::DevA => "demo.txt",
+            Device::DevB => "demo-b.txt",
+        }
+    }
+
+    /// Every command the device's manual documents: `(set << 8) | descriptor`, ascending (the
+    /// IR's `capabilities`).
+    pub fn commands(self) -> &'static [u16] {
+        match self {
+            Device::DevA => &[0x0101, 0x0102, 0x0103],
+            Device::DevB => &[0x0103],
+        }
+    }
+
+    /// Every data quantity the device's manual documents: `(set << 8) | descriptor`, ascending.
+    pub fn data(self) -> &'static [u16] {
+        match self {
+            Device::DevA => &[0x9001, 0x9103, 0x9203],
+            Device::DevB => &[],
+        }
+    }
+
+    /// True when the device's manual documents the command or data quantity (set, descriptor);
+    /// the sessions refuse a command for which this is false, before sending it.
+    pub fn supports(self, set: u8, descriptor: u8) -> bool {
+        let key = (u16::from(set) << 8) | u16::from(descriptor);
+        self.commands().binary_search(&key).is_ok() || self.data().binary_search(&key).is_ok()
+    }
+
     /// The device with identifier `id`.
     pub fn from_id(id: &str) -> Option<Self> {
         match id {

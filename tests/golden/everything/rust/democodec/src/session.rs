@@ -114,10 +114,7 @@ fn param_holds(command: &FieldValue, param: &str, value: Option<i64>) -> bool {
 pub fn support_error(command: &FieldValue, device: Device) -> Option<Refusal> {
     let facts = commands::command_facts(command)?;
     let name = facts.name;
-    let mut rows = commands::COMMANDS
-        .iter()
-        .filter(|r| r.set == facts.set && r.descriptor == facts.descriptor);
-    if !rows.any(|r| r.devices.contains(&device)) {
+    if !device.supports(facts.set, facts.descriptor) {
         return Some(Refusal::NotSupported { name, device });
     }
     if let Some(layout) = facts.device {
@@ -285,7 +282,12 @@ impl fmt::Display for Refusal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Refusal::NotSupported { name, device } => {
-                write!(f, "{name} is not supported by {}", device.id())
+                write!(
+                    f,
+                    "{name} is not supported by {} ({})",
+                    device.title(),
+                    device.manual()
+                )
             }
             Refusal::OtherLayout {
                 name,
@@ -307,7 +309,12 @@ impl fmt::Display for Refusal {
                     Some(n) => f.write_str(n)?,
                     None => write!(f, "{function}")?,
                 }
-                write!(f, " of {name} is not supported by {}", device.id())
+                write!(
+                    f,
+                    " of {name} is not supported by {} ({})",
+                    device.title(),
+                    device.manual()
+                )
             }
             Refusal::QueueFull { pending } => write!(f, "{pending} commands already pending"),
         }

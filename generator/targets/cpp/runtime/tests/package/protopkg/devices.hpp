@@ -36,7 +36,8 @@ inline constexpr const char *device_manual(Device d) {
 
 // Both devices support ping (0x01,0x01) and info (0x01,0x02); switch (0x01,0x03) is gx's only.
 inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {
-    return set == 0x01 && (descriptor == 0x01 || descriptor == 0x02 || (descriptor == 0x03 && d == Device::gx));
+    return set == 0x01 &&
+           (descriptor == 0x01 || descriptor == 0x02 || (descriptor == 0x03 && d == Device::gx));
 }
 
 inline std::optional<Device> device_from_name(const char *name) {

@@ -25,6 +25,18 @@ typedef enum {
 const char *democ_device_id(democ_device_t device);
 /** Looks up a device by id; false if there is none. */
 bool democ_device_from_id(const char *id, democ_device_t *out);
+/** The device's title ("Device A") and the file name of its manual, or NULL for
+ * DEMOC_DEVICE_ANY. */
+const char *democ_device_title(democ_device_t device);
+const char *democ_device_manual(democ_device_t device);
+/** What the device supports, as its manual documents it (the IR's `capabilities`): the
+ * (set << 8) | descriptor of every command, or of every data quantity, ascending, in a constant
+ * table; *count is set to its length (0 and NULL for DEMOC_DEVICE_ANY). No allocation. */
+const uint16_t *democ_device_commands(democ_device_t device, size_t *count);
+const uint16_t *democ_device_data(democ_device_t device, size_t *count);
+/** True when the device's manual documents the command or data quantity (set, descriptor); the
+ * sessions refuse a command for which this is false, before sending it. */
+bool democ_device_supports(democ_device_t device, uint8_t set, uint8_t descriptor);
 
 /** Kind of a descriptor set, from the set_kinds ranges. */
 typedef enum {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -26,6 +27,93 @@ inline const char *device_name(Device d) {
         return "dev_b";
     }
     return "";
+}
+
+/// The device's title ("Device A").
+inline constexpr const char *device_title(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return "Device A";
+    case Device::dev_b:
+        return "Device B";
+    }
+    return "";
+}
+
+/// The file name of the manual that documents the device ("demo.txt").
+inline constexpr const char *device_manual(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return "demo.txt";
+    case Device::dev_b:
+        return "demo-b.txt";
+    }
+    return "";
+}
+
+/// A constant table of (set << 8) | descriptor entries, ascending.
+struct DescriptorTable {
+    const std::uint16_t *entries;
+    std::size_t size;
+    constexpr const std::uint16_t *begin() const {
+        return entries;
+    }
+    constexpr const std::uint16_t *end() const {
+        return entries + size;
+    }
+    constexpr bool contains(std::uint16_t key) const {
+        std::size_t lo = 0;
+        std::size_t hi = size;
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (entries[mid] == key) {
+                return true;
+            }
+            if (entries[mid] < key) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return false;
+    }
+};
+
+namespace detail {
+// The capabilities tables (the IR's `capabilities`; a leading 0 keeps an empty one legal).
+inline constexpr std::uint16_t kCommands_dev_a[] = {0, 0x0101, 0x0102, 0x0103};
+inline constexpr std::uint16_t kData_dev_a[] = {0, 0x9001, 0x9103, 0x9203};
+inline constexpr std::uint16_t kCommands_dev_b[] = {0, 0x0103};
+inline constexpr std::uint16_t kData_dev_b[] = {0};
+} // namespace detail
+
+/// Every command the device's manual documents: (set << 8) | descriptor, ascending.
+inline constexpr DescriptorTable device_commands(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return {detail::kCommands_dev_a + 1, 3};
+    case Device::dev_b:
+        return {detail::kCommands_dev_b + 1, 1};
+    }
+    return {nullptr, 0};
+}
+
+/// Every data quantity the device's manual documents: (set << 8) | descriptor, ascending.
+inline constexpr DescriptorTable device_data(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return {detail::kData_dev_a + 1, 3};
+    case Device::dev_b:
+        return {detail::kData_dev_b + 1, 0};
+    }
+    return {nullptr, 0};
+}
+
+/// True when the device's manual documents the command or data quantity (set, descriptor); the
+/// sessions refuse a command for which this is false, before sending it.
+inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {
+    const auto key = static_cast<std::uint16_t>((set << 8) | descriptor);
+    return device_commands(d).contains(key) || device_data(d).contains(key);
 }
 
 inline std::optional<Device> device_from_name(const char *name) {

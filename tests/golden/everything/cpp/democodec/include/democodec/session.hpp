@@ -178,15 +178,9 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
     }
     const auto index = static_cast<std::size_t>(*device);
     const std::uint32_t bit = std::uint32_t{1} << index;
-    bool listed = false;
-    for (const CommandRow &r : kCommandRows) {
-        if (r.set == row.set && r.descriptor == row.descriptor && (r.devices & bit) != 0) {
-            listed = true;
-        }
-    }
-    if (!listed) {
-        std::snprintf(out.text.data(), out.text.size(), "%s is not supported by %s", row.name,
-                      device_name(*device));
+    if (!device_supports(*device, row.set, row.descriptor)) {
+        std::snprintf(out.text.data(), out.text.size(), "%s is not supported by %s (%s)", row.name,
+                      device_title(*device), device_manual(*device));
         return true;
     }
     if (row.device >= 0 && static_cast<std::size_t>(row.device) != index) {
@@ -201,11 +195,13 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
         if (!in_layout || (limited != 0 && (limited & bit) == 0)) {
             const char *fname = function_name(*fn);
             if (fname != nullptr) {
-                std::snprintf(out.text.data(), out.text.size(), "function %s of %s is not supported by %s",
-                              fname, row.name, device_name(*device));
+                std::snprintf(out.text.data(), out.text.size(),
+                              "function %s of %s is not supported by %s (%s)", fname, row.name,
+                              device_title(*device), device_manual(*device));
             } else {
-                std::snprintf(out.text.data(), out.text.size(), "function %lld of %s is not supported by %s",
-                              static_cast<long long>(*fn), row.name, device_name(*device));
+                std::snprintf(out.text.data(), out.text.size(),
+                              "function %lld of %s is not supported by %s (%s)", static_cast<long long>(*fn),
+                              row.name, device_title(*device), device_manual(*device));
             }
             return true;
         }
