@@ -7,13 +7,13 @@ one of its layouts (a list's `descriptor`/`decimation` members of the list's str
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
 members are members of the ack code enum; the filter's enums exist and name their members, and its internal
 aiding (the status flag roles, heading update sources, aiding measurement control sources, heading
-alignment methods, antenna offsets, dual-antenna status) names commands, their parameters, enum and bitfield members; the
-descriptor lists' commands, replies and list parameters exist (a reply of that command whose list
-runs to the end of the field, of u16 items or of a struct of two u8: set, descriptor), each gaining
-its `capacity`, the most entries that fit beside the ack in one packet; the identity's reply
-parameters exist (an unsigned integer or a string) and every device gives a fitting value for
-every item. The entry keeps the section's shape with sources resolved (each gains its `title` from
-the manual).
+alignment methods, antenna offsets, dual-antenna status) names commands, their parameters, enum and
+bitfield members; the descriptor lists' commands, replies and list parameters exist (a reply of that
+command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
+descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
+the identity's reply parameters exist (an unsigned integer or a string) and every device gives a
+fitting value for every item. The entry keeps the section's shape with sources resolved (each gains
+its `title` from the manual).
 """
 
 from __future__ import annotations

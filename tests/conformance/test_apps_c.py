@@ -1,7 +1,12 @@
 """The C application program tests/apps/c/cv7_external_aiding.c with bad input (tests/apps/README.md):
 wrong arguments exit 2 with `usage: ...`; an unreadable or malformed feed, an unreachable address,
 a command the device does not acknowledge and a passed deadline exit 1 with `error: ...`, never a
-crash. Its run to full navigation is test_simulator_world.py::test_cv7_application_program_*."""
+crash. Its run to full navigation is test_simulator_world.py::test_cv7_application_program_*.
+
+The issue-35 programs (gx5_continuous, gx5_polling, cv7_ahrs, cv7_gnss_ins; tests/apps/README.md)
+with the same bad input: wrong arguments, an unreachable address, a NACK (of the first command
+they share, and of one of their own flow), a passed deadline. Their runs to the manuals' states are
+test_apps_flows.py."""
 
 from __future__ import annotations
 
@@ -105,3 +110,93 @@ def test_lost_connection_exits_1(feed, transport: str) -> None:
             if app.poll() is None:
                 app.kill()
     assert app.returncode == 1 and "error: " in err, err
+
+
+# ------------------------------------------------------------------------------- the issue-35 programs
+# program -> (device, a command of its own flow to refuse, the error line's command name)
+FLOW_APPS = {
+    "gx5_continuous": ("gx5_45", "filter_message_format", "threedm.filter_message_format write"),
+    "gx5_polling": ("gx5_45", "poll_filter_data", "threedm.poll_filter_data"),
+    "cv7_ahrs": ("cv7_ins", "aiding_measurement_control", "filter.aiding_measurement_control write (magnetometer)"),
+    "cv7_gnss_ins": ("cv7_ins", "multi_antenna_offset", "filter.multi_antenna_offset write"),
+}
+
+
+@pytest.fixture(scope="module")
+def flow_apps() -> None:
+    for name in FLOW_APPS:
+        built = run_app("c", name, timeout=1800)  # builds the program: no argument is a usage error
+        assert built.returncode == 2 and built.stderr.startswith(f"usage: {name} ADDRESS"), built.stderr
+        assert built.stdout == ""
+
+
+@pytest.mark.parametrize("name", sorted(FLOW_APPS))
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("a", "b"), "usage: unexpected argument b"),
+        (("a", "--samples", "0"), "usage: --samples 0: not a number from 1"),
+        (("a", "--samples", "-3"), "usage: --samples -3: not a number from 1"),
+        (("a", "--deadline-s", "x"), "usage: --deadline-s x: not a number from 1"),
+        (("a", "--deadline-s"), "usage: --deadline-s needs a value"),
+        (("a", "--speed", "2"), "usage: unknown option --speed"),
+        (("--samples", "5"), "usage: "),  # no address
+    ],
+)
+def test_flow_app_wrong_arguments_exit_2(flow_apps, name, args, message) -> None:
+    r = run_app("c", name, *args)
+    assert r.returncode == 2 and r.stderr.startswith(message), r.stderr
+    assert f"usage: {name} ADDRESS" in r.stderr and r.stdout == ""
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("a", "--antennas", "3"), "usage: --antennas 3: not a number from 1 to 2"),
+        (("a", "--antennas", "0"), "usage: --antennas 0: not a number from 1 to 2"),
+        (("a", "--antennas"), "usage: --antennas needs a value"),
+    ],
+)
+def test_gnss_ins_antennas_are_1_or_2(flow_apps, args, message) -> None:
+    r = run_app("c", "cv7_gnss_ins", *args)
+    assert r.returncode == 2 and r.stderr.startswith(message), r.stderr
+
+
+@pytest.mark.parametrize("name", sorted(FLOW_APPS))
+def test_flow_app_help_on_stdout(flow_apps, name) -> None:
+    r = run_app("c", name, "--help")
+    assert r.returncode == 0 and r.stdout.startswith(f"usage: {name} ADDRESS") and r.stderr == ""
+
+
+@pytest.mark.parametrize("name", sorted(FLOW_APPS))
+def test_flow_app_unreachable_address_exits_1(flow_apps, name, tmp_path) -> None:
+    cases = [
+        ((f"tcp:127.0.0.1:{closed_port()}",), "error: cannot connect to 127.0.0.1"),
+        ((str(tmp_path / "no-such-tty"),), "error: cannot open"),
+        (("tcp:localhost",), "error: bad TCP address"),
+    ]
+    for args, message in cases:
+        r = run_app("c", name, *args)
+        assert r.returncode == 1 and r.stderr.startswith(message), (args, r.stderr)
+        assert r.stdout == ""
+
+
+@pytest.mark.parametrize("name", sorted(FLOW_APPS))
+def test_flow_app_command_not_acknowledged_exits_1(flow_apps, name) -> None:
+    device, own, label = FLOW_APPS[name]
+    with Sim("mip", device, "tcp:127.0.0.1:0", "--speed", str(SPEED), "--nack", "set_to_idle") as sim:
+        r = run_app("c", name, sim.address)
+    assert r.returncode == 1 and r.stderr.startswith("error: base.set_to_idle: nack (code"), r.stderr
+    with Sim("mip", device, "tcp:127.0.0.1:0", "--speed", str(SPEED), "--nack", own) as sim:
+        r = run_app("c", name, sim.address)
+    assert r.returncode == 1 and f"error: {label}: nack (code" in r.stderr, r.stderr
+    assert r.stdout.startswith("model "), r.stdout  # the device information came first
+
+
+@pytest.mark.parametrize("name", sorted(FLOW_APPS))
+def test_flow_app_deadline_exits_1(flow_apps, name) -> None:
+    device = FLOW_APPS[name][0]
+    with Sim("mip", device, "tcp:127.0.0.1:0", "--scenario", "circle", "--speed", str(SPEED)) as sim:
+        r = run_app("c", name, sim.address, "--samples", "100000", "--deadline-s", "2")
+    assert r.returncode == 1 and "error: deadline of 2 s passed" in r.stderr, r.stderr
+    assert r.stdout.count("{") > 0  # it printed samples, then gave up

@@ -31,3 +31,6 @@ def test_the_page_names_programs_that_exist() -> None:
     for lang, ext in (("python", "py"), ("c", "c"), ("cpp", "cpp")):
         assert (ROOT / "tests/apps" / lang / f"cv7_external_aiding.{ext}").is_file(), lang
     assert (ROOT / "tests/apps/rust/Cargo.toml").is_file()
+    ext = {"python": "py", "c": "c", "cpp": "cpp", "rust": "rs"}
+    for lang, name in re.findall(r"tests/lang/(\w+)\.sh app (\w+)", text):
+        assert (ROOT / "tests/apps" / lang / f"{name}.{ext[lang]}").is_file(), (lang, name)
