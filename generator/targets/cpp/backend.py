@@ -635,11 +635,11 @@ def canonical_context() -> dict:
     }
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     files: dict[str, str] = {}
-    sessions = _load_sessions(ir)
+    sessions = list(sessions)
     for proto in ir["protocols"]:
         P = _Proto(proto)
         pkg = proto["package"]
@@ -831,21 +831,6 @@ def session_context(P: _Proto) -> dict:
                     }
                 )
     return {"session_ack": ack, "session_functions": functions, "session_rows": rows}
-
-
-def _load_sessions(ir: dict) -> list[dict]:
-    """The project's session corpus (tests/sessions/), or none when the IR is not the project's
-    (a spec given with --spec: its protocols do not match the corpus)."""
-    from generator.diagnostics import SpecErrors
-    from generator.sessions import load_sessions
-
-    try:
-        from generator.resources import sessions_dir
-
-        root = sessions_dir()
-        return load_sessions(ir, root) if root else []
-    except (SpecErrors, KeyError, TypeError, ValueError):
-        return []
 
 
 def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:

@@ -629,7 +629,8 @@ def _vector_cases(vectors: list[dict], proto: dict) -> list[dict]:
     ]
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
+    """sessions: the session corpus, which the Python back end does not render into its package."""
     release = release or load_release()
     env = environment()
     env.filters["pyrepr"] = pyrepr

@@ -1134,9 +1134,7 @@ def _runtime_files(package: str) -> dict[str, str]:
     return files
 
 
-def render(
-    ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] | None = None
-) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
@@ -1151,7 +1149,7 @@ def render(
         ctx["sample_rule"] = proto["samples"]
         ctx["example"] = _example(proto)
         ctx.update(_Session(model).context())
-        ctx["session_cases"] = _session_cases(proto, sessions or [])
+        ctx["session_cases"] = _session_cases(proto, list(sessions))
         ctx["session_example"] = _session_example(model, ctx["api_sets"])
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
