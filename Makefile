@@ -5,7 +5,12 @@ SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
-LANGS := c cpp python rust
+# The language targets: the registry generator/targets/__init__.py (standard library only, so
+# the bare $(PYTHON) reads it before .venv exists).
+LANGS := $(shell $(PYTHON) -m generator.targets)
+ifeq ($(strip $(LANGS)),)
+$(error cannot read the language targets: '$(PYTHON) -m generator.targets' failed)
+endif
 MANUALS ?= ../shared/manuals
 CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)

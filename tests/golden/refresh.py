@@ -14,12 +14,13 @@ import sys
 from pathlib import Path
 
 from generator import pipeline
+from generator.targets import NAMES
 
 ROOT = Path(__file__).resolve().parents[2]
 FIXTURE = ROOT / "tests" / "generator" / "fixtures" / "everything"
 VECTORS = ROOT / "tests" / "golden" / "vectors"
 GOLDEN = ROOT / "tests" / "golden" / "everything"
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = list(NAMES)  # every target of the registry
 
 
 def render(out: Path) -> None:

@@ -1,5 +1,5 @@
 """The c target: back end (names and type mapping) in backend.py; see docs/design.md."""
 
-from .backend import OUTPUT_DIRS, api_names, render
+from .backend import OUTPUT_DIRS, api_names, public_name, render
 
-__all__ = ["OUTPUT_DIRS", "api_names", "render"]
+__all__ = ["OUTPUT_DIRS", "api_names", "public_name", "render"]

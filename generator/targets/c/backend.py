@@ -1142,3 +1142,17 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         names = [c["name"] for c in _command_api_of(protocol) if c["field"] == (set_["id"], field["name"])]
         out["session"] = ", ".join(f"{n}(link, ...)" for n in names)
     return out
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The C name(s) of a spec element, for `mipgen diff` (generator/wirediff.py): kind "set"
+    (set), "field" (set or None, field: its type per device when it has variants), "value" (enum
+    type, value), "member" (owner name, member name: a parameter, struct or bitfield member)."""
+    p = prefix_of(protocol)
+    if kind == "set":
+        return f"{p}_{path[0]['name']}_*"
+    if kind == "field":
+        return api_names(protocol, path[0], path[1])["type"]
+    if kind == "value":
+        return f"{p.upper()}_{snake(path[0]['name']).upper()}_{path[1]['name'].upper()}"
+    return f"{path[0]}.{path[1]}"

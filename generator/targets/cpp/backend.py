@@ -1080,3 +1080,17 @@ def configure_example(P: _Proto) -> dict | None:
         "data_set_title": data_set["title"],
         "data_fields": fields,
     }
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The C++ name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
+    generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}::{_set_ns(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["type"])
+    if kind == "value":
+        return f"{pkg}::{path[0]['name']}::{ident(path[1]['name'])}"
+    return f"{path[0]}.{path[1]}"

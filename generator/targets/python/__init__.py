@@ -2,6 +2,6 @@
 facts.py, the hand-written runtime (plain files, unit-tested in place) in runtime/; see
 docs/design.md."""
 
-from .backend import OUTPUT_DIRS, api_names, render
+from .backend import OUTPUT_DIRS, api_names, public_name, render
 
-__all__ = ["OUTPUT_DIRS", "api_names", "render"]
+__all__ = ["OUTPUT_DIRS", "api_names", "public_name", "render"]

@@ -1325,3 +1325,17 @@ def _sim_context(m: _Proto, sets: list[dict]) -> dict:
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
     }
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The Python name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds
+    of generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}.{set_module(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["class"])
+    if kind == "value":
+        return f"{pkg}.{path[0]['name']}.{const_name(path[1]['name'])}"
+    return f"{path[0]}.{path[1]}"

@@ -1209,3 +1209,17 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         else:
             out["session"] = f"{call}.{ident(field['name'])}(...)"
     return out
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The Rust name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
+    generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}::{_Protocol(protocol, []).set_module(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["type"])
+    if kind == "value":
+        return f"{pkg}::{path[0]['name']}::{path[1]['name'].upper()}"
+    return f"{path[0]}.{path[1]}"
