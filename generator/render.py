@@ -162,14 +162,52 @@ def format_files(files: dict[str, str]) -> dict[str, str]:
     return out
 
 
-def copy_runtime(lang: str, mapping: dict[str, str], replace: list[tuple[str, str]] | None = None) -> dict[str, str]:
+# The mark of a generated copy. The runtime sources (generator/targets/<lang>/runtime/) are
+# hand-written and do not carry it; the copy step adds it to each copy (copy_runtime).
+GENERATED_BANNER = "Generated: do not edit."
+BANNER_WIDTH = 100  # the runtime's hand-wrapped comment width
+
+
+def add_banner(text: str, banner: str = GENERATED_BANNER, width: int = BANNER_WIDTH) -> str:
+    """text with banner closing its first comment (a C or C++ source that opens with `/* ... */`
+    or a block of `//` lines): on the comment's last line when that stays within width columns,
+    else on a line of its own. A file that opens otherwise is an error (ToolError): its copies
+    would not say that they are generated."""
+    if text.startswith("/*"):
+        end = text.index("*/")
+        start = text.rfind("\n", 0, end) + 1
+        line = text[start:end].rstrip()
+        if len(line) + len(banner) + 4 <= width:
+            return f"{text[:start]}{line} {banner} {text[end:]}"
+        return f"{text[:start]}{line}\n * {banner} {text[end:]}"
+    if text.startswith("//"):
+        lines = text.split("\n")
+        k = next(i for i, x in enumerate(lines) if not x.startswith("//"))
+        if len(lines[k - 1]) + len(banner) + 1 <= width:
+            lines[k - 1] += f" {banner}"
+        else:
+            lines.insert(k, f"// {banner}")
+        return "\n".join(lines)
+    raise ToolError(f"a runtime source opens without a comment for the banner: {text[:40]!r}")
+
+
+def copy_runtime(
+    lang: str,
+    mapping: dict[str, str],
+    replace: list[tuple[str, str]] | None = None,
+    banner: str | None = None,
+    vendored: frozenset[str] | set[str] = frozenset(),
+) -> dict[str, str]:
     """The runtime files of a target for one package: {source path under runtime/: destination
     path under generated/}. The text is copied verbatim, except for the plain-text replacements
-    `replace` (old, new), applied in order (e.g. a C package's symbol prefix)."""
+    `replace` (old, new), applied in order (e.g. a C package's symbol prefix), and the `banner`
+    closing the first comment of every file but the `vendored` ones (add_banner)."""
     out: dict[str, str] = {}
     for src, dest in mapping.items():
         text = (runtime_dir(lang) / src).read_text(encoding="utf-8")
         for old, new in replace or []:
             text = text.replace(old, new)
+        if banner and src not in vendored:
+            text = add_banner(text, banner)
         out[dest] = text
     return out

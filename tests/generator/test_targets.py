@@ -155,3 +155,30 @@ def test_mipgen_diff_asks_each_target_for_its_names_of_a_field_with_per_device_v
         assert len(types) == len(f["variants"]), (lang, line)
         for t in types:
             assert re.search(rf"\b{re.escape(t)}\b", sources[lang]), (lang, t)
+
+
+def test_runtime_sources_carry_no_generated_banner_and_their_copies_do():
+    """The runtimes are hand-written: no source under generator/targets/<lang>/runtime/ says it is
+    generated. The copy step closes the first comment of each C copy with the banner
+    (generator/render.py add_banner), the vendored grisu3.h excepted."""
+    from generator.render import GENERATED_BANNER, add_banner
+    from generator.targets.c import backend as c
+
+    banners = [
+        p.relative_to(ROOT).as_posix()
+        for name in NAMES
+        for p in runtime_dir(name).rglob("*")
+        if p.is_file() and "target" not in p.parts and "do not edit" in p.read_text(encoding="utf-8", errors="replace")
+    ]
+    assert banners == []
+    package = ROOT / "generated" / "c" / "mipcodec"
+    for src, dest in c._RUNTIME_FILES.items():
+        text = (package / dest.replace("codec/", "mipcodec/")).read_text(encoding="utf-8")
+        first_comment = text[: text.index("*/") + 2] if text.startswith("/*") else text.split("\n#")[0]
+        want = 0 if src in c._RUNTIME_VENDORED else 1
+        assert first_comment.count(GENERATED_BANNER) == want and text.count(GENERATED_BANNER) == want, dest
+    # the banner's two places: the comment's last line when it fits in 100 columns, else its own line
+    assert add_banner("/* Short. */\nx") == "/* Short. Generated: do not edit. */\nx"
+    long = "/* " + "w" * 80 + " */\nx"
+    assert add_banner(long) == "/* " + "w" * 80 + "\n * Generated: do not edit. */\nx"
+    assert add_banner("// a\n// b\n#include <x>") == "// a\n// b Generated: do not edit.\n#include <x>"

@@ -15,7 +15,7 @@ from generator.examples import ExampleError, device_variant, example_context, se
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
-from generator.render import copy_runtime, environment
+from generator.render import GENERATED_BANNER, copy_runtime, environment
 from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
 from .facts import KEYWORDS as _KEYWORDS
@@ -26,6 +26,8 @@ OUTPUT_DIRS = ["c"]
 # The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_,
 # package name codec and include directory codec/ (so that it compiles and is tested in place)
 # -> generated file, where "codec/" becomes the package's include directory.
+# The copies carry the generated banner (render.add_banner), but for the vendored grisu3.h.
+_RUNTIME_VENDORED = frozenset({"src/grisu3.h"})
 _RUNTIME_FILES = {
     "include/codec/status.h": "include/codec/status.h",
     "src/status.c": "src/status.c",
@@ -1078,7 +1080,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         root = f"c/{pkg.pkg}/"
         out[root + "LICENSE"] = release.license
         runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
-        out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
+        out.update(
+            copy_runtime(
+                "c", runtime, runtime_replacements(pkg.p, pkg.pkg), banner=GENERATED_BANNER, vendored=_RUNTIME_VENDORED
+            )
+        )
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         if ctx["stream_example"]:
