@@ -8,6 +8,8 @@ import subprocess
 import sys
 import sysconfig
 import tempfile
+from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 
 import jinja2
@@ -197,17 +199,58 @@ def copy_runtime(
     replace: list[tuple[str, str]] | None = None,
     banner: str | None = None,
     vendored: frozenset[str] | set[str] = frozenset(),
+    first_line: str = "",
 ) -> dict[str, str]:
     """The runtime files of a target for one package: {source path under runtime/: destination
     path under generated/}. The text is copied verbatim, except for the plain-text replacements
     `replace` (old, new), applied in order (e.g. a C package's symbol prefix), and the `banner`
-    closing the first comment of every file but the `vendored` ones (add_banner)."""
+    closing the first comment of every file but the `vendored` ones (add_banner), or a
+    `first_line` put before each (the C++ packages' generated line)."""
     out: dict[str, str] = {}
     for src, dest in mapping.items():
         text = (runtime_dir(lang) / src).read_text(encoding="utf-8")
         for old, new in replace or []:
             text = text.replace(old, new)
-        if banner and src not in vendored:
+        stamped = bool(banner) and src not in vendored
+        if stamped:
             text = add_banner(text, banner)
+        text = first_line + text
         out[dest] = text
+        if _COPIES is not None:
+            _COPIES.append(RuntimeCopy(lang, src, tuple(replace or ()), banner if stamped else None, first_line, text))
     return out
+
+
+@dataclass(frozen=True)
+class RuntimeCopy:
+    """One runtime file as copy_runtime copied it: the source (generator/targets/<lang>/runtime/
+    <src>), the name replacements and banner applied, and the text they gave."""
+
+    lang: str
+    src: str
+    replace: tuple[tuple[str, str], ...]
+    banner: str | None
+    first_line: str
+    text: str
+
+    def expected(self) -> str:
+        """The copy made again from the runtime source as it is now."""
+        text = (runtime_dir(self.lang) / self.src).read_text(encoding="utf-8")
+        for old, new in self.replace:
+            text = text.replace(old, new)
+        return self.first_line + (add_banner(text, self.banner) if self.banner else text)
+
+
+_COPIES: list[RuntimeCopy] | None = None
+
+
+@contextmanager
+def recording_copies():
+    """Inside the block, every copy_runtime call records its copies into the yielded list (the
+    golden tree stores generated files only and checks the runtime copies by their source)."""
+    global _COPIES
+    saved, _COPIES = _COPIES, []
+    try:
+        yield _COPIES
+    finally:
+        _COPIES = saved

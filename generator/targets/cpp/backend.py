@@ -667,8 +667,10 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         }
         files[f"{root}/LICENSE"] = release.license
         # The hand-written runtime, with the package's names put in for the placeholder.
-        for rel, text in copy_runtime("cpp", runtime_files(pkg), runtime_names(pkg, P.ns)).items():
-            files[f"{root}/{rel}"] = GENERATED_LINE + text
+        for rel, text in copy_runtime(
+            "cpp", runtime_files(pkg), runtime_names(pkg, P.ns), first_line=GENERATED_LINE
+        ).items():
+            files[f"{root}/{rel}"] = text
         spec = {
             "framing.hpp": "framing.hpp.j2",
             "devices.hpp": "devices.hpp.j2",
