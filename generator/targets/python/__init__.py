@@ -4,4 +4,7 @@ docs/design.md."""
 
 from .backend import OUTPUT_DIRS, api_names, public_name, render
 
-__all__ = ["OUTPUT_DIRS", "api_names", "public_name", "render"]
+TITLE = "Python"  # the language's name in the documentation
+EXTENSION = "py"  # of its source files (the getting-started programs)
+
+__all__ = ["EXTENSION", "OUTPUT_DIRS", "TITLE", "api_names", "public_name", "render"]
