@@ -217,7 +217,9 @@ def copy_runtime(
         text = first_line + text
         out[dest] = text
         if _COPIES is not None:
-            _COPIES.append(RuntimeCopy(lang, src, tuple(replace or ()), banner if stamped else None, first_line, text))
+            _COPIES.append(
+                RuntimeCopy(lang, src, dest, tuple(replace or ()), banner if stamped else None, first_line, text)
+            )
     return out
 
 
@@ -228,6 +230,7 @@ class RuntimeCopy:
 
     lang: str
     src: str
+    dest: str  # as the back end named it: the end of the copy's path under generated/
     replace: tuple[tuple[str, str], ...]
     banner: str | None
     first_line: str

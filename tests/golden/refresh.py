@@ -39,14 +39,17 @@ def render(out: Path) -> dict[str, RuntimeCopy]:
     with the copy it is (its text is exactly the copy's)."""
     with recording_copies() as copies:
         pipeline.run(spec_dir=FIXTURE, out_dir=out, only=LANGS, validate_only=False, lint=False, vectors_dir=VECTORS)
-    by_text: dict[str, RuntimeCopy] = {}
+    by_text: dict[str, list[RuntimeCopy]] = {}
     for c in copies:
-        by_text.setdefault(c.text, c)
+        by_text.setdefault(c.text, []).append(c)
     found = {}
     for rel, data in files(out).items():
-        copy = by_text.get(data.decode("utf-8", "replace"))
-        if copy is not None:
-            found[rel] = copy
+        # a copy: the file whose path ends in the copy's destination and whose bytes are the copy's
+        same = [
+            c for c in by_text.get(data.decode("utf-8", "replace"), []) if rel == c.dest or rel.endswith("/" + c.dest)
+        ]
+        if same:
+            found[rel] = same[0]
     return found
 
 
