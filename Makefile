@@ -5,7 +5,12 @@ SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
-LANGS := c cpp python rust
+# The language targets: the registry generator/targets/__init__.py (standard library only, so
+# the bare $(PYTHON) reads it before .venv exists).
+LANGS := $(shell $(PYTHON) -m generator.targets)
+ifeq ($(strip $(LANGS)),)
+$(error cannot read the language targets: '$(PYTHON) -m generator.targets' failed)
+endif
 MANUALS ?= ../shared/manuals
 CAPTURE ?= ../shared/captures/mip_data.bin
 export RUFF := $(abspath $(VENV)/bin/ruff)
@@ -60,9 +65,10 @@ test-export: generate
 test-bench: generate
 	$(PY) -m pytest -q tests/bench
 
-# The golden tree tests/golden/everything/ (the every-feature fixture rendered by the four back
-# ends) equals a fresh rendering byte for byte, and its packages build and pass their own tests
-# (build dirs under build/golden/, reused). `make golden` refreshes the tree after a wanted change.
+# The golden tree tests/golden/everything/ (the every-feature fixture rendered by every back end:
+# the generated files; the runtime copies listed in its RUNTIME_COPIES) equals a fresh rendering
+# (build/golden/tree/) byte for byte, and those packages build and pass their own tests (build dirs
+# under build/golden/, reused). `make golden` refreshes the tree after a wanted change.
 test-golden: $(VENV)/.stamp
 	$(PY) -m pytest -q tests/golden
 

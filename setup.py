@@ -20,9 +20,12 @@ sys.path.insert(0, str(HERE / "generator"))
 from resources import SHIPPED  # noqa: E402  (generator/resources.py, without importing the package)
 
 sys.path.pop(0)
+sys.path.insert(0, str(HERE))
+from generator.targets import NAMES as LANGS  # noqa: E402  (the target registry; imports no back end)
+
+sys.path.pop(0)
 # Build products and caches that may lie in a checkout's runtime directories.
 _IGNORE = shutil.ignore_patterns("target", "Cargo.lock", "__pycache__", "*.pyc", "build", "*.egg-info", ".*cache")
-LANGS = ("c", "cpp", "python", "rust")
 
 
 class BuildWithResources(build_py):

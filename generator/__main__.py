@@ -1,6 +1,6 @@
 """Command line: python -m generator [--spec DIR [--vectors DIR]] [--out DIR] [--only LANG,...] [--lint]
 
-`python -m generator generate|diff|lint ...` is the `mipgen` command (generator/cli.py).
+`python -m generator generate|diff|lint|targets ...` is the `mipgen` command (generator/cli.py).
 
 Loads and validates spec/, builds the IR, and renders every back end into generated/.
 Exit status: 0 ok, 1 spec errors (printed as file:line:column: error: ...), 2 usage/tool errors.
@@ -17,7 +17,7 @@ from .diagnostics import SpecError, SpecErrors
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    if argv and argv[0] in ("generate", "diff", "lint"):
+    if argv and argv[0] in ("generate", "diff", "lint", "targets"):
         from .cli import main as cli_main
 
         return cli_main(argv, prog="python -m generator")

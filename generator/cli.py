@@ -4,6 +4,7 @@
     mipgen generate [--spec DIR [OVERLAY ...]] [--vectors DIR] [--out DIR] [--langs c,cpp,python,rust,docs]
     mipgen diff OLD NEW [--json] [--changelog]
     mipgen lint [--spec DIR [OVERLAY ...]]
+    mipgen targets          (the registered language targets, generator/targets/__init__.py)
 
 Exit status: 0 ok (diff: nothing breaks the wire), 1 spec errors (diff: wire-breaking changes),
 2 usage or tool errors.
@@ -16,8 +17,9 @@ import sys
 from pathlib import Path
 
 from .diagnostics import SpecError, SpecErrors
+from .targets import NAMES
 
-LANGS = ("c", "cpp", "python", "rust", "docs")
+LANGS = (*NAMES, "docs")  # the language targets of the registry, then the reference documentation
 
 
 class _Parser(argparse.ArgumentParser):
@@ -127,6 +129,11 @@ def cmd_lint(ap, args) -> int:
     return _run_spec_errors(lambda: lint.run(spec_dir, overlays))
 
 
+def cmd_targets(ap, args) -> int:
+    print(" ".join(NAMES))
+    return 0
+
+
 def main(argv: list[str] | None = None, prog: str = "mipgen") -> int:
     ap = _Parser(prog=prog, description="The protocol code generator: generate, diff and lint specs.")
     sub = ap.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
@@ -145,11 +152,12 @@ def main(argv: list[str] | None = None, prog: str = "mipgen") -> int:
     d.add_argument("--version", default=None, help="the version being released (default: VERSION)")
     li = sub.add_parser("lint", help="descriptors without golden vectors, YAML traps, stated lengths")
     _spec_args(li)
+    sub.add_parser("targets", help="the registered language targets, in render order, one line")
     args = ap.parse_args(argv)
     if args.command is None:
         ap.print_help(sys.stderr)
         return 2
-    handler = {"generate": cmd_generate, "diff": cmd_diff, "lint": cmd_lint}[args.command]
+    handler = {"generate": cmd_generate, "diff": cmd_diff, "lint": cmd_lint, "targets": cmd_targets}[args.command]
     return handler(sub.choices[args.command], args)
 
 

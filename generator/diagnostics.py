@@ -36,3 +36,15 @@ class SpecErrors(Exception):
     def __init__(self, errors: list[SpecError]):
         self.errors = errors
         super().__init__("\n".join(str(e) for e in errors))
+
+
+class BackendError(SpecError):
+    """A spec that one back end cannot express (two spec names that become one identifier in its
+    language, a framing it does not implement). It is a spec error (exit 1, one line): the
+    pipeline locates it at the spec element it names, `where` being the names leading to it
+    (("GPSMode",), ("GpsMode", "a"), ("commands", "ping")) in the protocol `protocol`."""
+
+    def __init__(self, message: str, protocol: str | None = None, where: tuple[str, ...] = ()):
+        self.protocol = protocol
+        self.where = tuple(where)
+        super().__init__(None, message)

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
-import inspect
+import os
 from pathlib import Path
 
+from .diagnostics import BackendError, Location, SpecError
 from .errata import render_errata
 from .export import ir_to_json
 from .output import write_file, write_tree
@@ -12,7 +13,7 @@ from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
 from .resources import CHECKOUT
 from .sessions import load_sessions
-from .spec import ROOT, load_spec
+from .spec import ROOT, load_spec, locate_names
 from .stated_lengths import lint_stated_lengths
 from .targets import TARGETS
 from .vectors import load_corpus, load_vectors
@@ -30,7 +31,8 @@ def run(
 ) -> int:
     if spec_dir is None and CHECKOUT is None:
         raise ToolError("no spec directory given, and an installed generator has no project spec: pass --spec DIR")
-    ir = load_spec(spec_dir, root=spec_dir.parent if spec_dir else ROOT, overlays=list(overlays))
+    root = spec_dir.parent if spec_dir else ROOT
+    ir = load_spec(spec_dir, root=root, overlays=list(overlays))
     if lint:
         for item in lint_stated_lengths(ir):
             print(
@@ -42,7 +44,7 @@ def run(
     # --spec has the vectors of vectors_dir (<dir>/<protocol>/*.yaml), if any.
     if spec_dir is None:
         vectors = load_corpus(ir, ROOT)
-        # The session corpus (docs/conformance.md section 7) is checked here; its runners load it.
+        # The session corpus (docs/conformance.md section 7), checked here, reaches every back end.
         sessions = load_sessions(ir, ROOT / "tests" / "sessions")
     else:
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
@@ -53,13 +55,16 @@ def run(
     out_dir = out_dir or ROOT / "generated"
     files: dict[str, str] = {"ir.json": ir_to_json(ir)}
     owned: list[str] = []
-    for name, mod in TARGETS.items():
+    for name in TARGETS:
         if only and name not in only:
             continue
+        mod = TARGETS[name]  # imported here: a run for one language imports one back end
         owned.extend(mod.OUTPUT_DIRS)
-        # Back ends that render the session corpus into their tests take it as `sessions`.
-        extra = {"sessions": sessions} if "sessions" in inspect.signature(mod.render).parameters else {}
-        rendered = mod.render(ir, vectors, release, **extra)
+        # Every back end takes the same arguments (generator/targets/__init__.py).
+        try:
+            rendered = mod.render(ir, vectors, release, sessions)
+        except BackendError as e:
+            raise _located(e, spec_dir, root, overlays) from None
         for rel in rendered:
             if not any(rel == d or rel.startswith(d.rstrip("/") + "/") for d in mod.OUTPUT_DIRS):
                 raise ToolError(f"back end {name} wrote {rel}, outside its directories {mod.OUTPUT_DIRS}")
@@ -78,6 +83,17 @@ def run(
         docs_dir = docs_dir or ROOT / "docs"
         write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0
+
+
+def _located(e: BackendError, spec_dir: Path | None, root: Path, overlays) -> SpecError:
+    """A back end's error at the spec element it names (else at the protocol's protocol.yaml)."""
+    loc = e.loc
+    if loc is None and e.protocol:
+        protocol_file = Path(spec_dir or root / "spec", e.protocol, "protocol.yaml")
+        loc = locate_names(e.protocol, e.where, spec_dir, root, list(overlays)) or Location(
+            os.path.relpath(protocol_file, root), 1, 1
+        )
+    return SpecError(loc, e.message, e.expected)
 
 
 def _project_root(path: Path) -> Path | None:

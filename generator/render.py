@@ -8,6 +8,8 @@ import subprocess
 import sys
 import sysconfig
 import tempfile
+from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 
 import jinja2
@@ -162,14 +164,96 @@ def format_files(files: dict[str, str]) -> dict[str, str]:
     return out
 
 
-def copy_runtime(lang: str, mapping: dict[str, str], replace: list[tuple[str, str]] | None = None) -> dict[str, str]:
+# The mark of a generated copy. The runtime sources (generator/targets/<lang>/runtime/) are
+# hand-written and do not carry it; the copy step adds it to each copy (copy_runtime).
+GENERATED_BANNER = "Generated: do not edit."
+BANNER_WIDTH = 100  # the runtime's hand-wrapped comment width
+
+
+def add_banner(text: str, banner: str = GENERATED_BANNER, width: int = BANNER_WIDTH) -> str:
+    """text with banner closing its first comment (a C or C++ source that opens with `/* ... */`
+    or a block of `//` lines): on the comment's last line when that stays within width columns,
+    else on a line of its own. A file that opens otherwise is an error (ToolError): its copies
+    would not say that they are generated."""
+    if text.startswith("/*"):
+        end = text.index("*/")
+        start = text.rfind("\n", 0, end) + 1
+        line = text[start:end].rstrip()
+        if len(line) + len(banner) + 4 <= width:
+            return f"{text[:start]}{line} {banner} {text[end:]}"
+        return f"{text[:start]}{line}\n * {banner} {text[end:]}"
+    if text.startswith("//"):
+        lines = text.split("\n")
+        k = next(i for i, x in enumerate(lines) if not x.startswith("//"))
+        if len(lines[k - 1]) + len(banner) + 1 <= width:
+            lines[k - 1] += f" {banner}"
+        else:
+            lines.insert(k, f"// {banner}")
+        return "\n".join(lines)
+    raise ToolError(f"a runtime source opens without a comment for the banner: {text[:40]!r}")
+
+
+def copy_runtime(
+    lang: str,
+    mapping: dict[str, str],
+    replace: list[tuple[str, str]] | None = None,
+    banner: str | None = None,
+    vendored: frozenset[str] | set[str] = frozenset(),
+    first_line: str = "",
+) -> dict[str, str]:
     """The runtime files of a target for one package: {source path under runtime/: destination
     path under generated/}. The text is copied verbatim, except for the plain-text replacements
-    `replace` (old, new), applied in order (e.g. a C package's symbol prefix)."""
+    `replace` (old, new), applied in order (e.g. a C package's symbol prefix), and the `banner`
+    closing the first comment of every file but the `vendored` ones (add_banner), or a
+    `first_line` put before each (the C++ packages' generated line)."""
     out: dict[str, str] = {}
     for src, dest in mapping.items():
         text = (runtime_dir(lang) / src).read_text(encoding="utf-8")
         for old, new in replace or []:
             text = text.replace(old, new)
+        stamped = bool(banner) and src not in vendored
+        if stamped:
+            text = add_banner(text, banner)
+        text = first_line + text
         out[dest] = text
+        if _COPIES is not None:
+            _COPIES.append(
+                RuntimeCopy(lang, src, dest, tuple(replace or ()), banner if stamped else None, first_line, text)
+            )
     return out
+
+
+@dataclass(frozen=True)
+class RuntimeCopy:
+    """One runtime file as copy_runtime copied it: the source (generator/targets/<lang>/runtime/
+    <src>), the name replacements and banner applied, and the text they gave."""
+
+    lang: str
+    src: str
+    dest: str  # as the back end named it: the end of the copy's path under generated/
+    replace: tuple[tuple[str, str], ...]
+    banner: str | None
+    first_line: str
+    text: str
+
+    def expected(self) -> str:
+        """The copy made again from the runtime source as it is now."""
+        text = (runtime_dir(self.lang) / self.src).read_text(encoding="utf-8")
+        for old, new in self.replace:
+            text = text.replace(old, new)
+        return self.first_line + (add_banner(text, self.banner) if self.banner else text)
+
+
+_COPIES: list[RuntimeCopy] | None = None
+
+
+@contextmanager
+def recording_copies():
+    """Inside the block, every copy_runtime call records its copies into the yielded list (the
+    golden tree stores generated files only and checks the runtime copies by their source)."""
+    global _COPIES
+    saved, _COPIES = _COPIES, []
+    try:
+        yield _COPIES
+    finally:
+        _COPIES = saved

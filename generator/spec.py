@@ -8,7 +8,7 @@ from pathlib import Path
 
 import jsonschema
 
-from .diagnostics import SpecError, SpecErrors
+from .diagnostics import Location, SpecError, SpecErrors
 from .ir import IR_VERSION, build_protocol
 from .overlay import apply_extensions
 from .passes.context import SpecFile
@@ -188,3 +188,47 @@ def load_spec(spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Pa
     if errors:
         raise SpecErrors(errors)
     return {"ir_version": IR_VERSION, "protocols": protocols}
+
+
+def locate_names(
+    protocol: str, names: tuple[str, ...], spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Path] = ()
+) -> Location | None:
+    """Where the spec element reached by `names` is defined: the `name:` of the mapping named
+    names[-1] inside the mappings named by the names before it (("GpsMode", "a") is value a of
+    enum GpsMode; ("commands", "ping") field ping of set commands), searched in the protocol's
+    files of the spec and its overlays. None when no file has it (for a back end's error)."""
+    spec_dir = spec_dir or root / "spec"
+    dirs = [(Path(spec_dir) / protocol, root)]
+    dirs += [(Path(o) / protocol, Path(o).resolve().parent) for o in overlays]
+
+    def find(node, path: tuple, want: tuple[str, ...]):
+        if isinstance(node, dict):
+            if node.get("name") == want[0]:
+                if len(want) == 1:
+                    return path + ("name",)
+                want = want[1:]
+            items = node.items()
+        elif isinstance(node, list):
+            items = enumerate(node)
+        else:
+            return None
+        for key, child in items:
+            hit = find(child, path + (key,), want)
+            if hit:
+                return hit
+        return None
+
+    if not names:
+        return None
+    for directory, base in dirs:
+        if not directory.is_dir():
+            continue
+        for path in sorted(p for p in directory.iterdir() if p.suffix in (".yaml", ".yml")):
+            try:
+                data, locate = load(str(path), os.path.relpath(path, base))
+            except SpecError:
+                continue
+            hit = find(data, (), tuple(names))
+            if hit:
+                return locate(hit)
+    return None

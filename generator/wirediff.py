@@ -29,9 +29,9 @@ from dataclasses import dataclass, field
 from io import BytesIO
 from pathlib import Path
 
-from .naming import camel, snake
 from .resources import CHECKOUT
 from .spec import load_spec
+from .targets import TARGETS
 
 BREAKING, COMPATIBLE, API, DOC = "wire-breaking", "wire-compatible", "api-only", "documentation"
 ORDER = (BREAKING, API, COMPATIBLE, DOC)
@@ -109,35 +109,11 @@ def _load(spec_dir: Path, label: str) -> dict:
 
 
 # ------------------------------------------------------------------------------ names
-def _c_prefix(package: str) -> str:
-    from .targets.c.backend import c_prefix
-
-    return c_prefix(package)
-
-
-def field_names(p: dict, set_name: str, name: str) -> dict[str, str]:
-    pkg, cp = p["package"], _c_prefix(p["package"])
-    return {
-        "c": f"{cp}_{set_name}_{name}_t",
-        "cpp": f"{pkg}::{set_name}::{camel(name)}",
-        "python": f"{pkg}.{set_name}.{camel(name)}",
-        "rust": f"{pkg}::{set_name}::{camel(name, digit_break='_', leading_digit='T')}",
-    }
-
-
-def value_names(p: dict, enum: str, value: str) -> dict[str, str]:
-    pkg, cp = p["package"], _c_prefix(p["package"])
-    return {
-        "c": f"{cp.upper()}_{snake(enum).upper()}_{value.upper()}",
-        "cpp": f"{pkg}::{enum}::{value}",
-        "python": f"{pkg}.{enum}.{value.upper()}",
-        "rust": f"{pkg}::{enum}::{value.upper()}",
-    }
-
-
-def member_names(p: dict, owner: str, name: str) -> dict[str, str]:
-    """A parameter, struct member or bitfield member: the same spelling in every language."""
-    return {lang: f"{owner}.{name}" for lang in ("c", "cpp", "python", "rust")}
+def public_names(p: dict, kind: str, *path) -> dict[str, str]:
+    """The public name(s) of a spec element in every target language, as each target names it
+    (generator/targets/<lang>/backend.py public_name): kind "set" (set), "field" (set or None,
+    field), "value" (enum type, value), "member" (owner name, member name)."""
+    return {lang: mod.public_name(p, kind, *path) for lang, mod in TARGETS.items()}
 
 
 def _renamed(old: dict[str, str], new: dict[str, str]) -> dict[str, list[str]]:
@@ -245,7 +221,8 @@ class Differ:
             elif na != nb:
                 names: dict[str, list[str]] = {}
                 for o, w in zip(na, nb):
-                    for lang, r in _renamed(value_names(p, name, o), value_names(p, name, w)).items():
+                    old = public_names(p, "value", x, {"name": o})
+                    for lang, r in _renamed(old, public_names(p, "value", y, {"name": w})).items():
                         names.setdefault(lang, []).extend(r)
                 self.add(API, p, where, f"value {n} renamed {', '.join(na)} -> {', '.join(nb)}", names, value=n)
             else:
@@ -263,7 +240,7 @@ class Differ:
             elif m is None:
                 self.add(COMPATIBLE, p, where, f"{bits} ({n['name']}) added", mask=n["mask"])
             elif m["name"] != n["name"]:
-                names = _renamed(member_names(p, name, m["name"]), member_names(p, name, n["name"]))
+                names = _renamed(public_names(p, "member", name, m["name"]), public_names(p, "member", name, n["name"]))
                 self.add(API, p, where, f"{bits} renamed {m['name']} -> {n['name']}", names, mask=n["mask"])
 
     # -- sets and fields
@@ -284,15 +261,7 @@ class Differ:
                 )
                 continue
             if x["name"] != y["name"]:
-                names = {
-                    lang: [f"{o} -> {n}"]
-                    for lang, o, n in (
-                        ("c", f"{_c_prefix(b['package'])}_{x['name']}_*", f"{_c_prefix(b['package'])}_{y['name']}_*"),
-                        ("cpp", f"{b['package']}::{x['name']}", f"{b['package']}::{y['name']}"),
-                        ("python", f"{b['package']}.{x['name']}", f"{b['package']}.{y['name']}"),
-                        ("rust", f"{b['package']}::{x['name']}", f"{b['package']}::{y['name']}"),
-                    )
-                }
+                names = _renamed(public_names(a, "set", x), public_names(b, "set", y))
                 self.add(API, b, f"set 0x{sid:02X} {y['name']}", f"set renamed {x['name']} -> {y['name']}", names)
             fa = {f["id"]: f for f in x["fields"]}
             fb = {f["id"]: f for f in y["fields"]}
@@ -304,11 +273,13 @@ class Differ:
                 elif f is None:
                     self.add(COMPATIBLE, b, where, f"{g['role']} descriptor added", devices=g["devices"])
                 else:
-                    self.field(b, where, y["name"], f, g)
+                    self.field(b, where, y["name"], f, g, (a, x))
 
-    def field(self, p: dict, where: str, set_name: str, f: dict, g: dict) -> None:
+    def field(self, p: dict, where: str, set_name: str, f: dict, g: dict, old: tuple[dict, dict]) -> None:
+        """Field f of the old protocol and set `old` against field g of set set_name of p."""
         if f["name"] != g["name"]:
-            names = _renamed(field_names(p, set_name, f["name"]), field_names(p, set_name, g["name"]))
+            new_set = next(s for s in p["sets"] if s["name"] == set_name)
+            names = _renamed(public_names(old[0], "field", old[1], f), public_names(p, "field", new_set, g))
             self.add(API, p, where, f"descriptor renamed {f['name']} -> {g['name']}", names)
         if f["role"] != g["role"]:
             self.add(BREAKING, p, where, f"role changed {f['role']} -> {g['role']}")
@@ -414,7 +385,7 @@ class Differ:
                 new_offset=orr,
             )
         if q["name"] != r["name"]:
-            names = _renamed(member_names(p, owner, q["name"]), member_names(p, owner, r["name"]))
+            names = _renamed(public_names(p, "member", owner, q["name"]), public_names(p, "member", owner, r["name"]))
             self.add(API, p, where, f"parameter renamed {q['name']} -> {r['name']}", names, parameter=r["name"])
         if bool(q.get("optional")) != bool(r.get("optional")):
             kind = COMPATIBLE if r.get("optional") else BREAKING

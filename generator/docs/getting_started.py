@@ -13,9 +13,10 @@ import json
 import re
 
 from ..examples import END, PARTS, PROGRAM, SESSION_PARTS, SESSION_PROGRAM, example_command, session_example
+from ..targets import TARGETS
 from .model import CONFIGURE_ANCHOR, LANG_TITLES, Docs, Page, code, hx
 
-EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
+EXTENSIONS = {name: TARGETS[name].EXTENSION for name in TARGETS}  # the target registry's languages
 EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 SESSION_EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{SESSION_PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}

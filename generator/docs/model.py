@@ -22,11 +22,12 @@ import re
 from dataclasses import dataclass, field
 
 from ..errata import KIND_TITLES
+from ..targets import TARGETS
 from ..vectors import resolve_field
 from . import svg
 
 MAX_VECTORS = 24  # golden vectors shown per descriptor page (every erratum is always shown)
-LANG_TITLES = {"c": "C", "cpp": "C++", "python": "Python", "rust": "Rust"}
+LANG_TITLES = {name: TARGETS[name].TITLE for name in TARGETS}  # the target registry's languages
 
 
 @dataclass

@@ -1,21 +1,50 @@
-"""The language targets, one wing each (generator/targets/<lang>/), in render order.
+"""The language targets, one wing each (generator/targets/<lang>/), in render order: the one list
+of languages of the project. The CLI (`mipgen generate --langs`, `mipgen targets`), setup.py, the
+Makefile (LANGS), `mipgen diff`, the docs, the golden tree and every cross-language test read it
+from here; docs/design.md "One wing per language" says how to add one.
+
+Importing this module imports no back end (setup.py and the Makefile read NAMES with a bare
+Python); TARGETS["c"] imports generator/targets/c/ when first asked for.
 
 Each target module exposes:
   OUTPUT_DIRS: directories under generated/ that it owns entirely
-  render(ir: dict, vectors: list[dict], release: generator.release.Release | None)
-      -> dict[path relative to generated/, file text]; release (the version, the license; the
-      project's when None) is stamped into every package with its protocol's spec hash
+  render(ir: dict, vectors: list[dict], release: generator.release.Release | None,
+         sessions: list[dict]) -> dict[path relative to generated/, file text]
+      release (the version, the license; the project's when None) is stamped into every package
+      with its protocol's spec hash; sessions is the session corpus (generator/sessions.py: the
+      project's tests/sessions/, none for another spec), the same for every target
   api_names(protocol, set, field) -> the names a field has in that language (for the docs)
+  public_names(protocol, kind, *names) -> the public name(s) of a spec element (for `mipgen diff`)
 
-The registry is explicit (no import by name), so readers and tools can follow the calls.
+Each target also has a runner, tests/lang/<lang>.sh (build, test, decode, encode, session), which
+the conformance tools (tests/conformance/decode, encode, session) and the cross-language tests
+call; a registered target without one fails those tests by name (tests/helpers/langs.py).
 """
 
 from __future__ import annotations
 
+import importlib
+from collections.abc import Iterator, Mapping
 from types import ModuleType
 
-from . import c, cpp, python, rust
+NAMES: tuple[str, ...] = ("c", "cpp", "python", "rust")
 
-TARGETS: dict[str, ModuleType] = {"c": c, "cpp": cpp, "python": python, "rust": rust}
 
-__all__ = ["TARGETS"]
+class _Registry(Mapping):
+    """NAMES -> the target modules, imported on first use (explicitly: generator/targets/<name>/)."""
+
+    def __getitem__(self, name: str) -> ModuleType:
+        if name not in NAMES:
+            raise KeyError(name)
+        return importlib.import_module(f"{__name__}.{name}")
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(NAMES)
+
+    def __len__(self) -> int:
+        return len(NAMES)
+
+
+TARGETS: Mapping[str, ModuleType] = _Registry()
+
+__all__ = ["NAMES", "TARGETS"]

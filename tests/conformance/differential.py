@@ -47,11 +47,12 @@ from generator.canonical import string_text
 from generator.primitives import PRIMITIVES, int_range
 from tests.conformance.reference import Reference, float_bits_text
 from tests.conformance.respell import invalidate, respell
+from tests.helpers.langs import langs
 from tests.helpers.packets import packet
 
 ROOT = Path(__file__).resolve().parents[2]
 
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 INTS = ("u8", "u16", "u32", "u64", "s8", "s16", "s32", "s64")
 WORK = ROOT / "build" / "differential"
 MAX_SAMPLES_PER_LAYOUT = 160

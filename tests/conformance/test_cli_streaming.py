@@ -13,8 +13,10 @@ from pathlib import Path
 
 import pytest
 
+from tests.helpers.langs import langs
+
 ROOT = Path(__file__).resolve().parents[2]
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 DECODE = ROOT / "tests/conformance/decode"
 ENCODE = ROOT / "tests/conformance/encode"
 

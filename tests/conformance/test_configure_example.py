@@ -26,13 +26,14 @@ import pytest
 
 from generator.examples import SESSION_PARTS, device_variant, session_example
 from generator.spec import load_spec
+from generator.targets import TARGETS
 from tests.conformance.fake_device import FakeDevice
 from tests.helpers.generated import python_package
 
 ROOT = Path(__file__).resolve().parents[2]
 IR = load_spec()
 PROTOCOLS = {p["name"]: p for p in IR["protocols"] if session_example(p) is not None}
-EXTENSIONS = {"c": "c", "cpp": "cpp", "python": "py", "rust": "rs"}
+EXTENSIONS = {name: TARGETS[name].EXTENSION for name in TARGETS}  # the target registry
 COUNT = 3
 
 

@@ -16,9 +16,10 @@ import pytest
 
 from generator.spec import load_spec
 from generator.vectors import load_corpus
+from tests.helpers.langs import langs
 
 ROOT = Path(__file__).resolve().parents[2]
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 IR = load_spec()
 VECTORS = load_corpus(IR, ROOT)
 PROTOCOLS = [p["name"] for p in IR["protocols"]]

@@ -18,8 +18,10 @@ from pathlib import Path
 
 import pytest
 
+from tests.helpers.langs import langs
+
 ROOT = Path(__file__).resolve().parents[2]
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 TOOL = {"decode": ROOT / "tests/conformance/decode", "encode": ROOT / "tests/conformance/encode"}
 
 # Ping (0x01,0x01), the Ping of docs/conformance.md's examples, and a skip run: many times over,

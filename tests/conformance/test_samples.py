@@ -14,9 +14,10 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import packets
+from tests.helpers.langs import langs
 
 ROOT = Path(__file__).resolve().parents[2]
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 
 
 # The MIP framing, written down here (docs/conformance.md §1): sync 75 65, set byte, payload

@@ -30,12 +30,13 @@ import pytest
 from generator.spec import load_spec
 from tests.conformance.samples import field_samples
 from tests.helpers.generated import python_package
+from tests.helpers.langs import langs
 
 ROOT = Path(__file__).resolve().parents[2]
 SIMULATE = ROOT / "tests" / "conformance" / "simulate"
 SESSION = ROOT / "tests" / "conformance" / "session"
 # The session languages the end-to-end tests run (tests/conformance/session LANG): one place.
-SESSION_LANGUAGES = ["python", "c", "cpp", "rust"]
+SESSION_LANGUAGES = langs()  # the target registry (generator/targets/__init__.py)
 TRANSPORTS = ["pty", "tcp"]
 IR = load_spec()
 PROTOCOLS = {p["name"]: p for p in IR["protocols"]}

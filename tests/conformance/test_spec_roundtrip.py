@@ -18,9 +18,10 @@ import pytest
 
 from generator.spec import load_spec
 from tests.conformance.samples import field_samples
+from tests.helpers.langs import langs
 
 ROOT = Path(__file__).resolve().parents[2]
-LANGS = ["c", "cpp", "python", "rust"]
+LANGS = langs()  # the target registry (generator/targets/__init__.py)
 PROTOCOLS = {p["name"]: p for p in load_spec()["protocols"]}
 SAMPLES = {name: field_samples(p) for name, p in PROTOCOLS.items()}
 # (protocol, device group): the samples of one protocol for one device ("" = any device).

@@ -12,6 +12,8 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+from generator.targets import NAMES
+
 ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "generated" / "docs"
 LINK = re.compile(r"!?\[(?:\\.|[^\]\\])*\]\(([^)\s]+)\)")
@@ -119,5 +121,5 @@ def test_index_device_matrix_errata_and_getting_started_exist():
     # Every published example recorded as wrong in tests/vectors appears on the errata page.
     for name in re.findall(r"^\| `([a-z0-9_]+)` \|", (ROOT / "docs" / "errata.md").read_text(encoding="utf-8"), re.M):
         assert f"`{name}`" in errata, name
-    for lang in ("c", "cpp", "python", "rust"):
+    for lang in NAMES:
         assert (DOCS / "getting-started" / f"{lang}.md").exists()

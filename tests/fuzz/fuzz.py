@@ -41,12 +41,13 @@ import sys
 import time
 from pathlib import Path
 
+from generator.targets import NAMES
 from generator.targets.c.backend import c_prefix
 
 ROOT = Path(__file__).resolve().parents[2]
 HERE = ROOT / "tests" / "fuzz"
 BUILD = ROOT / "build" / "fuzz"
-LANGS = ("c", "cpp", "rust", "python")
+LANGS = NAMES  # the target registry (generator/targets/__init__.py); each needs its harnesses here
 TARGETS = ("parser", "decode", "json")
 # Inputs larger than this are not tried (a few maximum packets; a long JSON line). `decode` is the
 # lean target for execution count: two maximum MIP packets or a few MS-CIP ones.

@@ -18,6 +18,7 @@ import pytest
 
 from generator.diagnostics import SpecError
 from generator.release import parse_version, spec_hash
+from generator.targets import NAMES
 from tests.helpers.generated import python_package
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -156,7 +157,7 @@ def test_every_package_carries_the_version_and_its_spec_hash(tree_name: str) -> 
 def test_every_package_has_the_license(tree_name: str) -> None:
     tree, _ = TREES[tree_name]
     assert LICENSE.startswith(b"MIT License\n") and b"Permission is hereby granted" in LICENSE
-    packages = [p for lang in ("c", "cpp", "python", "rust") for p in sorted((tree / lang).iterdir()) if p.is_dir()]
+    packages = [p for lang in NAMES for p in sorted((tree / lang).iterdir()) if p.is_dir()]
     assert len(packages) >= 4
     for package in packages:
         assert (package / "LICENSE").read_bytes() == LICENSE, f"{package.relative_to(ROOT)}/LICENSE"

@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from generator.resources import CHECKOUT, SHIPPED, runtime_dir
+from generator.targets import NAMES
 
 FIXTURE = Path(__file__).parent / "fixtures" / "everything"
 VECTORS = Path(__file__).parents[1] / "golden" / "vectors"
@@ -74,7 +75,7 @@ def test_wheel_carries_every_resource_and_declares_the_pinned_formatters(install
         files = [p for p in src.rglob("*") if p.is_file() and "__pycache__" not in p.parts] if src.is_dir() else [src]
         for f in files:
             assert f"generator/_data/{f.relative_to(CHECKOUT).as_posix()}" in names
-    for lang in ("c", "cpp", "python", "rust"):
+    for lang in NAMES:
         root = runtime_dir(lang)
         tracked = _run(["git", "ls-files", "--", "."], cwd=root).stdout.split()
         shipped = {f"generator/targets/{lang}/runtime/{t}" for t in tracked if not t.startswith("target/")}

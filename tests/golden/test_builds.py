@@ -1,13 +1,15 @@
-"""The golden packages (tests/golden/everything/) build and pass their own generated tests, the
-fixture's hand-derived vectors (tests/golden/vectors/demo/) among them, in every language:
+"""The golden packages build and pass their own generated tests, the fixture's hand-derived vectors
+(tests/golden/vectors/demo/) among them, in every language. They are built from the complete
+rendering in build/golden/tree/ (tests/golden/refresh.py: the golden tree tests/golden/everything/
+plus the runtime copies it lists), rendered afresh once per run:
 
   c, cpp   CMake + Ninja (Debug, the packages' own -Werror flags), then the googletest binary
   rust     cargo test (every test target of the crate)
   python   pytest of the package, pure Python (DEMOCODEC_PURE=1) and with its C accelerator
-           built by its own setup.py in a copy
+           built by its own setup.py in a copy; mypy --strict of the package, as its consumers run it
 
 Build directories live under build/golden/ and are reused, so a run after the first one only
-rebuilds what the golden tree changed. Nothing is written into the golden tree.
+rebuilds what the rendering changed. Nothing is written into the golden tree.
 """
 
 from __future__ import annotations
@@ -18,10 +20,24 @@ import subprocess
 import sys
 from pathlib import Path
 
-from tests.golden.refresh import GOLDEN, ROOT
+import pytest
+
+from generator.targets import NAMES
+from tests.golden.refresh import ROOT, TREE, fresh
 
 PACKAGE = "democodec"
 BUILD = ROOT / "build" / "golden"
+
+
+@pytest.fixture(scope="module", autouse=True)
+def rendered() -> None:
+    fresh()  # build/golden/tree/ is what the back ends render now
+
+
+def test_every_target_is_built_here() -> None:
+    # a target added to the registry needs its build and test step in this module
+    built = {"c", "cpp", "rust", "python"}
+    assert sorted(NAMES) == sorted(built), f"no golden build for {sorted(set(NAMES) - built)}"
 
 
 def run(cmd: list[str], **kw) -> None:
@@ -33,7 +49,7 @@ def run(cmd: list[str], **kw) -> None:
 
 
 def cmake_build_and_test(lang: str) -> None:
-    src, out = GOLDEN / lang / PACKAGE, BUILD / lang / PACKAGE
+    src, out = TREE / lang / PACKAGE, BUILD / lang / PACKAGE
     if not (out / "build.ninja").is_file():
         # the packages' own -Werror option (OFF for consumers), as the project's CI builds them
         run(
@@ -52,12 +68,12 @@ def test_cpp_package_builds_and_passes_its_tests() -> None:
 
 
 def copy_of(lang: str) -> Path:
-    """A fresh copy of the golden package under build/golden/<lang>/src/ (timestamps kept, so
+    """A fresh copy of the rendered package under build/golden/<lang>/src/ (timestamps kept, so
     incremental builds stay incremental), for the tools that write beside their sources."""
     out = BUILD / lang / "src" / PACKAGE
     if out.exists():
         shutil.rmtree(out)
-    shutil.copytree(GOLDEN / lang / PACKAGE, out)
+    shutil.copytree(TREE / lang / PACKAGE, out)
     return out
 
 
@@ -75,7 +91,7 @@ def _pytest(package_dir: Path, **extra: str) -> None:
 
 
 def test_python_package_passes_its_tests_pure() -> None:
-    _pytest(GOLDEN / "python" / PACKAGE, DEMOCODEC_PURE="1")
+    _pytest(TREE / "python" / PACKAGE, DEMOCODEC_PURE="1")
 
 
 def test_python_package_passes_its_tests_with_the_c_accelerator() -> None:
@@ -89,3 +105,23 @@ def test_python_package_passes_its_tests_with_the_c_accelerator() -> None:
     )
     assert list((out / PACKAGE).glob("_speedups*.so")), "the C accelerator did not build"
     _pytest(out, DEMOCODEC_EXPECT_ACCELERATED="1")
+
+
+def test_python_package_passes_mypy_strict() -> None:
+    # as tests/lang/python.sh checks the project's packages: typed (py.typed), strict
+    package = TREE / "python" / PACKAGE
+    run(
+        [
+            sys.executable,
+            "-m",
+            "mypy",
+            "--strict",
+            "--explicit-package-bases",
+            "--no-error-summary",
+            "--cache-dir",
+            BUILD / "python" / "mypy-cache",
+            PACKAGE,
+            *sorted(p.relative_to(package) for p in (package / "examples").glob("*.py")),
+        ],
+        cwd=package,
+    )

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Build, test and run the generated Python packages.
 #   tests/lang/python.sh build                        byte-compile every package under generated/python/ into build/python/
-#   tests/lang/python.sh test                         ruff check, mypy --strict of every package (and of the
-#                                                     golden tree's), the runtime's unit tests in place
+#   tests/lang/python.sh test                         ruff check, mypy --strict of every package (the golden
+#                                                     tree's: tests/golden), the runtime's unit tests in place
 #                                                     (generator/targets/python/runtime/tests/), then pytest of
 #                                                     every package; each twice: with the C accelerator (built
 #                                                     by `ext`) and forced pure (<PKG>_PURE=1); then `consumer`
@@ -102,8 +102,9 @@ ext)
 test)
     [ -n "$RUFF" ] || { echo "tests/lang/python.sh: ruff not found (run make)" >&2; exit 2; }
     (cd "$ROOT" && "$RUFF" check --config ruff.toml generated/python generator/targets/python/runtime)
-    # The packages are typed (py.typed): each passes mypy --strict as its consumers run it.
-    for dir in "$ROOT"/generated/python/*/ "$ROOT"/tests/golden/everything/python/*/; do
+    # The packages are typed (py.typed): each passes mypy --strict as its consumers run it (the
+    # golden tree's package: tests/golden/test_builds.py).
+    for dir in "$ROOT"/generated/python/*/; do
         [ -f "$dir/pyproject.toml" ] || continue
         echo "== $(basename "$dir"): mypy --strict"
         (cd "$dir" && "$PY" -m mypy --strict --explicit-package-bases --no-error-summary --cache-dir "$MYPY_CACHE" "$(basename "$dir")" examples/*.py)

@@ -9,15 +9,13 @@ from __future__ import annotations
 
 import re
 
-from generator import model
+from generator import diagnostics, model
 from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import ExampleError, device_variant, example_context, session_example
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
-from generator.render import copy_runtime, environment
-from generator.resources import sessions_dir
-from generator.sessions import load_sessions
+from generator.render import GENERATED_BANNER, copy_runtime, environment
 from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
 
 from .facts import KEYWORDS as _KEYWORDS
@@ -28,6 +26,8 @@ OUTPUT_DIRS = ["c"]
 # The runtime: plain C in generator/targets/c/runtime/, written with the neutral prefix codec_/CODEC_,
 # package name codec and include directory codec/ (so that it compiles and is tested in place)
 # -> generated file, where "codec/" becomes the package's include directory.
+# The copies carry the generated banner (render.add_banner), but for the vendored grisu3.h.
+_RUNTIME_VENDORED = frozenset({"src/grisu3.h"})
 _RUNTIME_FILES = {
     "include/codec/status.h": "include/codec/status.h",
     "src/status.c": "src/status.c",
@@ -110,8 +110,8 @@ def _fast_loads(views: list[dict]) -> dict | None:
     return {"size": off, "loads": loads}
 
 
-class BackendError(Exception):
-    pass
+# A spec the C back end cannot express: a spec error located at the element it names (pipeline.py).
+BackendError = diagnostics.BackendError
 
 
 # ---------------------------------------------------------------------------- naming helpers
@@ -226,9 +226,14 @@ class _Package:
         self.vectors = [self._vector_view(c) for c in vector_cases(vectors, proto)]
 
     # -------------------------------------------------------------- checks
-    def _claim(self, ident: str, what: str) -> str:
+    def _claim(self, ident: str, what: str, where: tuple[str, ...] = ()) -> str:
+        """ident for what, unless another spec element already has it; where locates what."""
         if ident in self.globals and self.globals[ident] != what:
-            raise BackendError(f"C back end: the name {ident} would be used for both {self.globals[ident]} and {what}")
+            raise BackendError(
+                f"C back end: the name {ident} would be used for both {self.globals[ident]} and {what}",
+                self.proto["name"],
+                where,
+            )
         self.globals[ident] = what
         return ident
 
@@ -287,7 +292,7 @@ class _Package:
         view = {
             "kind": kind,
             "name": t["name"],
-            "c": self._claim(self.type_c(t["name"]), f"type {t['name']}"),
+            "c": self._claim(self.type_c(t["name"]), f"type {t['name']}", (t["name"],)),
             "fn": self.type_fn(t["name"]),
             "doc": _comment(t.get("title")),
             "description": _comment(t.get("description")),
@@ -299,7 +304,9 @@ class _Package:
             if kind == "enum":
                 view["values"] = [
                     {
-                        "macro": self._claim(f"{macro}_{v['name'].upper()}", f"value {v['name']} of {t['name']}"),
+                        "macro": self._claim(
+                            f"{macro}_{v['name'].upper()}", f"value {v['name']} of {t['name']}", (t["name"], v["name"])
+                        ),
                         "literal": _int_literal(v["value"], ctype, t["base"]),
                         "doc": _comment(v.get("description"))
                         + (f" (devices: {', '.join(v['devices'])})" if v.get("devices") else ""),
@@ -435,10 +442,11 @@ class _Package:
         base = f"{self.p}_{set_['name']}_{f['name']}" if set_ else f"{self.p}_{f['name']}"
         multi = len(f["variants"]) > 1
         what = f"field {set_['name']}.{f['name']}" if set_ else f"reserved field {f['name']}"
+        where = (set_["name"], f["name"]) if set_ else (f["name"],)
         fv = {
             "name": f["name"],
             "descriptor": f["id"],
-            "macro": self._claim(f"{base.upper()}_DESCRIPTOR", what),
+            "macro": self._claim(f"{base.upper()}_DESCRIPTOR", what, where),
             "first": len(self.layouts),
             "count": len(f["variants"]),
             "has_variants": multi,
@@ -452,9 +460,9 @@ class _Package:
         for v in f["variants"]:
             lbase = base + (f"_{v['device']}" if v["device"] else "")
             lv = {
-                "c": self._claim(f"{lbase}_t", what),
+                "c": self._claim(f"{lbase}_t", what, where),
                 "fn": lbase,
-                "id": self._claim(f"{self.P}_FIELD_{lbase[len(self.p) + 1 :].upper()}", what),
+                "id": self._claim(f"{self.P}_FIELD_{lbase[len(self.p) + 1 :].upper()}", what, where),
                 "member": lbase[len(self.p) + 1 :],
                 "name": f["name"],
                 "device": v["device"] if multi else None,
@@ -467,7 +475,7 @@ class _Package:
                 "role": f["role"],
             }
             for suffix in ("encode", "decode"):
-                self._claim(f"{lbase}_{suffix}", what)
+                self._claim(f"{lbase}_{suffix}", what, where)
             lv.update(
                 self._params_view(v["params"], v["functions"], f"{what} ({v['device']})" if v["device"] else what)
             )
@@ -1039,16 +1047,12 @@ def runtime_replacements(prefix: str, package: str) -> list[tuple[str, str]]:
     ]
 
 
-def _session_cases(ir: dict) -> dict[str, list[dict]]:
-    """The session corpus of the project (tests/sessions/<protocol>/) per protocol, as C literals;
-    empty for another spec (a test fixture) whose protocols the corpus does not name."""
-    root = sessions_dir()
-    names = {p["name"] for p in ir["protocols"]}
-    if root is None or not root.is_dir() or not {d.name for d in root.iterdir() if d.is_dir()} <= names:
-        return {}
+def _session_cases(ir: dict, sessions: list[dict]) -> dict[str, list[dict]]:
+    """The session corpus (generator/sessions.py; the project's tests/sessions/, none for another
+    spec) per protocol, as C literals."""
     out: dict[str, list[dict]] = {}
     prefixes = {p["name"]: prefix_of(p).upper() for p in ir["protocols"]}
-    for c in load_sessions(ir, root):
+    for c in sessions:
         P = prefixes[c["protocol"]]
         steps = []
         for s in c["steps"]:
@@ -1074,18 +1078,22 @@ def _session_cases(ir: dict) -> dict[str, list[dict]]:
     return out
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     out: dict[str, str] = {}
-    sessions = _session_cases(ir)
+    sessions = _session_cases(ir, list(sessions))
     for proto in ir["protocols"]:
         pkg = _Package(proto, vectors)
         ctx = {**pkg.context(), **release.stamp(proto), "session_cases": sessions.get(proto["name"], [])}
         root = f"c/{pkg.pkg}/"
         out[root + "LICENSE"] = release.license
         runtime = {src: root + dest.replace("codec/", f"{pkg.pkg}/") for src, dest in _RUNTIME_FILES.items()}
-        out.update(copy_runtime("c", runtime, runtime_replacements(pkg.p, pkg.pkg)))
+        out.update(
+            copy_runtime(
+                "c", runtime, runtime_replacements(pkg.p, pkg.pkg), banner=GENERATED_BANNER, vendored=_RUNTIME_VENDORED
+            )
+        )
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         if ctx["stream_example"]:
@@ -1149,3 +1157,17 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         names = [c["name"] for c in _command_api_of(protocol) if c["field"] == (set_["id"], field["name"])]
         out["session"] = ", ".join(f"{n}(link, ...)" for n in names)
     return out
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The C name(s) of a spec element, for `mipgen diff` (generator/wirediff.py): kind "set"
+    (set), "field" (set or None, field: its type per device when it has variants), "value" (enum
+    type, value), "member" (owner name, member name: a parameter, struct or bitfield member)."""
+    p = prefix_of(protocol)
+    if kind == "set":
+        return f"{p}_{path[0]['name']}_*"
+    if kind == "field":
+        return api_names(protocol, path[0], path[1])["type"]
+    if kind == "value":
+        return f"{p.upper()}_{snake(path[0]['name']).upper()}_{path[1]['name'].upper()}"
+    return f"{path[0]}.{path[1]}"

@@ -635,11 +635,11 @@ def canonical_context() -> dict:
     }
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     files: dict[str, str] = {}
-    sessions = _load_sessions(ir)
+    sessions = list(sessions)
     for proto in ir["protocols"]:
         P = _Proto(proto)
         pkg = proto["package"]
@@ -678,8 +678,10 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
         }
         files[f"{root}/LICENSE"] = release.license
         # The hand-written runtime, with the package's names put in for the placeholder.
-        for rel, text in copy_runtime("cpp", runtime_files(pkg), runtime_names(pkg, P.ns)).items():
-            files[f"{root}/{rel}"] = GENERATED_LINE + text
+        for rel, text in copy_runtime(
+            "cpp", runtime_files(pkg), runtime_names(pkg, P.ns), first_line=GENERATED_LINE
+        ).items():
+            files[f"{root}/{rel}"] = text
         spec = {
             "framing.hpp": "framing.hpp.j2",
             "devices.hpp": "devices.hpp.j2",
@@ -842,21 +844,6 @@ def session_context(P: _Proto) -> dict:
                     }
                 )
     return {"session_ack": ack, "session_functions": functions, "session_rows": rows}
-
-
-def _load_sessions(ir: dict) -> list[dict]:
-    """The project's session corpus (tests/sessions/), or none when the IR is not the project's
-    (a spec given with --spec: its protocols do not match the corpus)."""
-    from generator.diagnostics import SpecErrors
-    from generator.sessions import load_sessions
-
-    try:
-        from generator.resources import sessions_dir
-
-        root = sessions_dir()
-        return load_sessions(ir, root) if root else []
-    except (SpecErrors, KeyError, TypeError, ValueError):
-        return []
 
 
 def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
@@ -1106,3 +1093,17 @@ def configure_example(P: _Proto) -> dict | None:
         "data_set_title": data_set["title"],
         "data_fields": fields,
     }
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The C++ name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
+    generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}::{_set_ns(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["type"])
+    if kind == "value":
+        return f"{pkg}::{path[0]['name']}::{ident(path[1]['name'])}"
+    return f"{path[0]}.{path[1]}"

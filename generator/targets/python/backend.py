@@ -630,7 +630,8 @@ def _vector_cases(vectors: list[dict], proto: dict) -> list[dict]:
     ]
 
 
-def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
+    """sessions: the session corpus, which the Python back end does not render into its package."""
     release = release or load_release()
     env = environment()
     env.filters["pyrepr"] = pyrepr
@@ -1448,3 +1449,17 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
         "identity": pyrepr({d["device"]: d["values"] for d in ident["devices"]}),
         "identity_items": pyrepr({k: (v["kind"], v["max"]) for k, v in ident["items"].items()}),
     }
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The Python name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds
+    of generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}.{set_module(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["class"])
+    if kind == "value":
+        return f"{pkg}.{path[0]['name']}.{const_name(path[1]['name'])}"
+    return f"{path[0]}.{path[1]}"

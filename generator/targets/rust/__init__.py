@@ -1,5 +1,8 @@
 """The rust target: back end (names and type mapping) in backend.py; see docs/design.md."""
 
-from .backend import OUTPUT_DIRS, api_names, render
+from .backend import OUTPUT_DIRS, api_names, public_name, render
 
-__all__ = ["OUTPUT_DIRS", "api_names", "render"]
+TITLE = "Rust"  # the language's name in the documentation
+EXTENSION = "rs"  # of its source files (the getting-started programs)
+
+__all__ = ["EXTENSION", "OUTPUT_DIRS", "TITLE", "api_names", "public_name", "render"]

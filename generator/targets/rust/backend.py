@@ -1138,9 +1138,7 @@ def _runtime_files(package: str) -> dict[str, str]:
     return files
 
 
-def render(
-    ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] | None = None
-) -> dict[str, str]:
+def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
@@ -1155,7 +1153,7 @@ def render(
         ctx["sample_rule"] = proto["samples"]
         ctx["example"] = _example(proto)
         ctx.update(_Session(model).context())
-        ctx["session_cases"] = _session_cases(proto, sessions or [])
+        ctx["session_cases"] = _session_cases(proto, list(sessions))
         ctx["session_example"] = _session_example(model, ctx["api_sets"])
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
@@ -1215,3 +1213,17 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         else:
             out["session"] = f"{call}.{ident(field['name'])}(...)"
     return out
+
+
+def public_name(protocol: dict, kind: str, *path) -> str:
+    """The Rust name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
+    generator/targets/c/backend.py public_name."""
+    pkg = protocol["package"]
+    if kind == "set":
+        return f"{pkg}::{_Protocol(protocol, []).set_module(path[0])}"
+    if kind == "field":
+        names = api_names(protocol, path[0], path[1])
+        return names.get("variants", names["type"])
+    if kind == "value":
+        return f"{pkg}::{path[0]['name']}::{path[1]['name'].upper()}"
+    return f"{path[0]}.{path[1]}"

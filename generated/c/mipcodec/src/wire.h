@@ -1,6 +1,5 @@
 /* Private: bounds-checked reader and writer used by the generated layouts, in the protocol's
- * byte order (MIPC_LITTLE_ENDIAN in protocol.h).
- * Generated: do not edit. */
+ * byte order (MIPC_LITTLE_ENDIAN in protocol.h). Generated: do not edit. */
 #ifndef MIPC_WIRE_H
 #define MIPC_WIRE_H
 

@@ -1,6 +1,5 @@
 /* Private: bounds-checked reader and writer used by the generated layouts, in the protocol's
- * byte order (MSCIPC_LITTLE_ENDIAN in protocol.h).
- * Generated: do not edit. */
+ * byte order (MSCIPC_LITTLE_ENDIAN in protocol.h). Generated: do not edit. */
 #ifndef MSCIPC_WIRE_H
 #define MSCIPC_WIRE_H
 

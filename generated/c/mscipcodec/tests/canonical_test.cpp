@@ -2,8 +2,7 @@
 // canonical_cases.hpp (generated from generator/testcases.py into every package's tests/) that the
 // C, C++, Python and Rust packages all check, printed by the JSON number and string formatters.
 // Copied into every package (tests/canonical_test.cpp); in place, run on the few cases of
-// generator/targets/c/runtime/tests/package/canonical_cases.hpp.
-// Generated: do not edit.
+// generator/targets/c/runtime/tests/package/canonical_cases.hpp. Generated: do not edit.
 #include <gtest/gtest.h>
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-/* Splits a packet payload into fields. Generated: do not edit. */
+/* Splits a packet payload into fields. */
 #include "codec/field_iter.h"
 
 #include <assert.h>

@@ -1,4 +1,4 @@
-/* Checksum and packet builder. Generated: do not edit. */
+/* Checksum and packet builder. */
 #include "codec/framing.h"
 
 #include <assert.h>

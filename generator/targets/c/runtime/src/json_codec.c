@@ -1,4 +1,4 @@
-/* Packet <-> canonical JSON line. Generated: do not edit. */
+/* Packet <-> canonical JSON line. */
 #include "codec/json.h"
 #include "codec/field_iter.h"
 #include "layouts_internal.h"

@@ -1,4 +1,4 @@
-/* Reader of canonical JSON lines (no allocation). Generated: do not edit. */
+/* Reader of canonical JSON lines (no allocation). */
 #include "json_reader.h"
 
 #include <float.h>

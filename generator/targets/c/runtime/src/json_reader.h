@@ -1,7 +1,7 @@
 /* Private: reader of the JSON lines the decoder prints (no allocation). Values are addressed
  * by their position in the line; objects are looked up by key, so key order does not matter.
  * Functions return 0 (or 1 = found) on success and -1 after recording a message that names the
- * JSON path of the bad value. Generated: do not edit. */
+ * JSON path of the bad value. */
 #ifndef CODEC_JSON_READER_H
 #define CODEC_JSON_READER_H
 

@@ -1,5 +1,5 @@
 /* Canonical JSON writer: integers, floats (shortest round-trip, Python repr layout), strings,
- * hex. Generated: do not edit. */
+ * hex. */
 #include "json_writer.h"
 #include "codec/json.h"
 #include "grisu3.h"

@@ -1,5 +1,4 @@
-/* Private: bounded writer of canonical JSON text (docs/conformance.md section 4).
- * Generated: do not edit. */
+/* Private: bounded writer of canonical JSON text (docs/conformance.md section 4). */
 #ifndef CODEC_JSON_WRITER_H
 #define CODEC_JSON_WRITER_H
 

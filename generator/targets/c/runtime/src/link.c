@@ -1,5 +1,5 @@
 /* The blocking session API over a transport (docs/conformance.md section 8). No OS calls, no
- * heap. Generated: do not edit. */
+ * heap. */
 #include "codec/link.h"
 
 #include <assert.h>

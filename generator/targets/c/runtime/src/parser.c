@@ -1,4 +1,4 @@
-/* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
+/* Stream parser of docs/conformance.md section 1. */
 #include "codec/parser.h"
 
 #include <assert.h>

@@ -1,4 +1,4 @@
-/* POSIX transports: TCP sockets and termios serial ports. Generated: do not edit. */
+/* POSIX transports: TCP sockets and termios serial ports. */
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
 #undef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L

@@ -1,5 +1,4 @@
-/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6).
- * Generated: do not edit. */
+/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6). */
 #include "codec/samples.h"
 
 #include <assert.h>

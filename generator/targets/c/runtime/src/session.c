@@ -1,5 +1,4 @@
-/* Command sessions of docs/conformance.md section 8 (the sans-I/O core). No stdio, no heap.
- * Generated: do not edit. */
+/* Command sessions of docs/conformance.md section 8 (the sans-I/O core). No stdio, no heap. */
 #include "codec/session.h"
 
 #include <assert.h>

@@ -1,6 +1,6 @@
 /* Status texts and the exact messages of docs/conformance.md section 3 (decode errors, trailing
  * bytes of a payload), written without stdio so that the core builds freestanding (no printf on a
- * Cortex-M image). Generated: do not edit. */
+ * Cortex-M image). */
 #include "codec/status.h"
 
 #include <assert.h>

@@ -1,5 +1,4 @@
-/* Bounds-checked reader and writer in the protocol's byte order (CODEC_LITTLE_ENDIAN).
- * Generated: do not edit. */
+/* Bounds-checked reader and writer in the protocol's byte order (CODEC_LITTLE_ENDIAN). */
 #include "wire.h"
 
 #include <string.h>

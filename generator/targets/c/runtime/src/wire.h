@@ -1,6 +1,5 @@
 /* Private: bounds-checked reader and writer used by the generated layouts, in the protocol's
- * byte order (CODEC_LITTLE_ENDIAN in protocol.h).
- * Generated: do not edit. */
+ * byte order (CODEC_LITTLE_ENDIAN in protocol.h). */
 #ifndef CODEC_WIRE_H
 #define CODEC_WIRE_H
 

@@ -3,7 +3,7 @@
  * bounded memory: only the bytes the parser has not decided on are kept (a candidate packet, or
  * the bytes of a pending skip run; a skip run longer than k_skip_spill is printed as it grows).
  * When stdout is not a regular file, the lines of every block are flushed as soon as they are
- * printed, so a live stream shows each packet when it arrives. Generated: do not edit. */
+ * printed, so a live stream shows each packet when it arrives. */
 #if defined(__unix__) || defined(__APPLE__)
 #define _POSIX_C_SOURCE 200809L
 #endif

@@ -2,8 +2,7 @@
  * section 5). A bad line is reported on stderr with its number and nothing is written for it;
  * the other lines are still encoded and the exit status is 1. Input is read in blocks and
  * encoded line by line (memory grows only with the longest line); when stdout is not a regular
- * file, what a block gave is flushed at once. I/O faults as in tool_io.h.
- * Generated: do not edit. */
+ * file, what a block gave is flushed at once. I/O faults as in tool_io.h. */
 #if defined(__unix__) || defined(__APPLE__)
 #define _POSIX_C_SOURCE 200809L
 #endif

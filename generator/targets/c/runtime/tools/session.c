@@ -3,7 +3,7 @@
  * on stdin, runs them in order over the connection and prints one result line per command; every
  * other packet received (and every skip run) is printed as its canonical line, in arrival order.
  * Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
- * skipped), 2 for usage or connection errors. Generated: do not edit. */
+ * skipped), 2 for usage or connection errors. */
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
 #undef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L

@@ -2,7 +2,7 @@
  * input read in blocks as it arrives, output written through stdio and checked, and the one rule
  * for I/O faults: a closed pipe on stdout ends the tool by SIGPIPE, quietly (the Unix convention,
  * as `cat` does); any other read or write error is one line on stderr and exit status 2. The
- * tools may allocate; the library does not. Generated: do not edit. */
+ * tools may allocate; the library does not. */
 #ifndef CODEC_TOOLS_TOOL_IO_H
 #define CODEC_TOOLS_TOOL_IO_H
 

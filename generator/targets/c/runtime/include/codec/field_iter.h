@@ -1,4 +1,4 @@
-/* Splits a packet payload into fields (docs/conformance.md section 2). Generated: do not edit. */
+/* Splits a packet payload into fields (docs/conformance.md section 2). */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

@@ -1,5 +1,5 @@
 /* Framing: checksum, packet header accessors and the packet builder; the framing constants are
- * in protocol.h. Generated: do not edit. */
+ * in protocol.h. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

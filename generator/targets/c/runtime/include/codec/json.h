@@ -1,6 +1,5 @@
 /* Canonical JSON lines of docs/conformance.md section 4: packet and skip lines, number
- * formatting, and the reverse (JSON line -> bytes) used by the encode tool.
- * Generated: do not edit. */
+ * formatting, and the reverse (JSON line -> bytes) used by the encode tool. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

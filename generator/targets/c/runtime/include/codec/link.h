@@ -1,7 +1,6 @@
 /* The blocking session API of docs/conformance.md section 8: a session over a transport given as
  * three callbacks (read with a timeout, write, clock). Freestanding: no OS calls, no heap; the
- * POSIX transports (TCP, serial) are in the optional codec/posix_transport.h.
- * Generated: do not edit. */
+ * POSIX transports (TCP, serial) are in the optional codec/posix_transport.h. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

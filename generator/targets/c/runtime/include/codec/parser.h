@@ -1,4 +1,4 @@
-/* Stream parser of docs/conformance.md section 1. Generated: do not edit. */
+/* Stream parser of docs/conformance.md section 1. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

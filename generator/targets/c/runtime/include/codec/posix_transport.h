@@ -1,6 +1,6 @@
 /* POSIX transports for the blocking session API (codec/link.h): TCP (IPv4, IPv6 in brackets,
  * host names) and serial ports (termios, 8N1, raw, the baud rate as a number of bit/s). Not part of
- * the freestanding core: a separate library (CMake option CODEC_POSIX). Generated: do not edit. */
+ * the freestanding core: a separate library (CMake option CODEC_POSIX). */
 #ifndef CODEC_POSIX_TRANSPORT_H
 #define CODEC_POSIX_TRANSPORT_H
 

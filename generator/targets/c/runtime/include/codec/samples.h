@@ -1,5 +1,4 @@
-/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6).
- * Generated: do not edit. */
+/* Samples: continuation packets grouped by their shared timestamp (docs/conformance.md section 6). */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

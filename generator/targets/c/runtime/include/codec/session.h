@@ -1,7 +1,7 @@
 /* Command sessions of docs/conformance.md section 8: send commands, match their replies, route
  * data. The core is sans-I/O and allocates nothing: the caller gives it the current time in
  * milliseconds with every call, sends the packet bytes it builds and feeds it the bytes it
- * receives. Generated: do not edit. */
+ * receives. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

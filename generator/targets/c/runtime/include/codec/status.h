@@ -1,4 +1,4 @@
-/* Status codes and decode errors of the library. Generated: do not edit. */
+/* Status codes and decode errors of the library. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer

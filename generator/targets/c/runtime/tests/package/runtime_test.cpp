@@ -3,7 +3,6 @@
 // They hold for any protocol: copied into every package (tests/runtime_test.cpp) and run in place
 // against the test protocol of generator/targets/c/runtime/tests/stubs/. The rest of the runtime
 // is tested in place only (generator/targets/c/runtime/tests/runtime_test.cpp).
-// Generated: do not edit.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // step's time; start each command (a refused or sent result is reported at once) or feed the
 // bytes; at the end, poll while commands are pending, then close. Each receive is also fed split
 // at every position (two feeds at the same time): the lines must not change. The table is
-// generated per package (session_cases.hpp). Generated: do not edit.
+// generated per package (session_cases.hpp).
 #include <gtest/gtest.h>
 
 #include <string>

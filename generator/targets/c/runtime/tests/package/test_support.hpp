@@ -1,5 +1,4 @@
 // Helpers shared by the tests: hex, whole-stream decode to JSON text, JSON text to bytes.
-// Generated: do not edit.
 #pragma once
 
 #include <cstdint>
