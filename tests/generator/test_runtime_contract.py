@@ -27,6 +27,7 @@ from pathlib import Path
 
 import pytest
 
+import generator.targets
 from generator.render import runtime_dir
 from generator.targets.c.backend import c_prefix
 from tests.runtime_specs import render
@@ -34,7 +35,7 @@ from tests.runtime_specs import render
 ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "runtime-contract.md"
 TEMPLATES = ROOT / "templates"
-LANGS = ("c", "cpp", "python", "rust")
+LANGS = tuple(generator.targets.NAMES)  # the target registry, never a list of its own
 # Names a template renders that a runtime folder legitimately has too (build files, docs).
 GENERIC = {"CMakeLists.txt", "README.md", "Cargo.toml", "setup.py", "pyproject.toml", "MANIFEST.in"}
 # Template outputs whose file name is not the template's: the package's own header.

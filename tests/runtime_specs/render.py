@@ -21,10 +21,12 @@ import shutil
 import sys
 from pathlib import Path
 
+import generator.targets
+
 ROOT = Path(__file__).resolve().parents[2]
 SPECS = Path(__file__).resolve().parent
 FRAMINGS = ("a", "b")
-LANGS = ("c", "cpp", "python", "rust")
+LANGS = tuple(generator.targets.NAMES)  # the target registry, never a list of its own
 PROTOCOL = "testproto"
 OUT = ROOT / "build" / "runtime_specs"
 
