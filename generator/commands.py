@@ -281,8 +281,9 @@ def _signature(proto: dict, v: dict, fn: str | None) -> tuple[tuple[Argument, ..
 
 def _key(args: tuple[Argument, ...]) -> tuple:
     """What makes two layouts' calls the same call: the same arguments, each with the same name,
-    required-ness, optionality, type and count."""
-    return tuple((a.name, a.required, a.optional, repr(a.param.ir["type"]), repr(a.param.ir["count"])) for a in args)
+    required-ness, type and count (whether the layout may leave a required argument's parameter
+    out does not change what the caller gives)."""
+    return tuple((a.name, a.required, repr(a.param.ir["type"]), repr(a.param.ir["count"])) for a in args)
 
 
 def _reply(s: dict, variants: list[dict], fn: str | None) -> tuple[str, ReplyField | None]:

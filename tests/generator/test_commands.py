@@ -234,6 +234,12 @@ def test_real_ir_mip():
     # 3dm-gx5-45-dcp.txt:867 GPS Time Update (0x01,0x72): 0x06 applies with no ACK/NACK reply.
     gx5 = next(x for x in m.layouts_of(0x01, "gps_time_update") if x.device == "gx5_45")
     assert gx5.ack_suppressed_by == Condition("write_no_ack", 6, None, None)
+    # Both devices write a field selector and its value (3dm-gx5-45-dcp.txt:865,
+    # 3dm-cv7-ins-docs.txt:8160): one write call for both, although the GX5-45's layout may leave
+    # the value out (its read sends only the selector).
+    (write,) = [c for c in m.calls_of(0x01, "gps_time_update") if c.function == "write"]
+    assert (write.device, write.variants) == (None, (0, 1))
+    assert [(a.name, a.required) for a in write.arguments] == [("field_id", True), ("value", True)]
     # 3dm-cv7-ins-docs.txt:6858 Message Format (0x0C,0x0F): the descriptor count is set from the list.
     write = m.call(0x0C, "message_format", "write", "cv7_ins")
     assert [(c.param, c.array) for c in write.counts] == [("num_descriptors", "descriptors")]
