@@ -183,3 +183,30 @@ def session_example(protocol: dict) -> dict | None:
     fields = [_find(protocol, data_set, n) for n in data_names]
     out["data"] = {"set": fields[0][0], "fields": [f for _s, f in fields]}
     return out
+
+
+def session_example_context(ex: dict, call: Callable[[str, str | None], dict]) -> dict:
+    """What every language's configure-and-stream template prints besides its own names: the
+    program, the count, the titles, the data set, and per step the back end's `call(step,
+    function)` for each function the step calls (session_example's `calls`)."""
+
+    def fns(step: str) -> list[str | None]:
+        return list(ex[step]["calls"])
+
+    data_set = ex["data"]["set"]
+    return {
+        "program": ex["program"],
+        "count": ex["count"],
+        "ping": call("ping", fns("ping")[0]),
+        "info": call("info", fns("info")[0]),
+        "info_title": ex["info"]["field"]["title"],
+        "setting_title": ex["setting"]["field"]["title"],
+        "setting_write": call("setting", fns("setting")[0]),
+        "setting_read": call("setting", fns("setting")[-1]),
+        "format_title": ex["format"]["field"]["title"],
+        "format": call("format", fns("format")[0]),
+        "enable_title": ex["enable"]["field"]["title"],
+        "enable": call("enable", fns("enable")[0]),
+        "data_set": data_set["id"],
+        "data_set_title": data_set["title"],
+    }

@@ -22,7 +22,7 @@ from __future__ import annotations
 import textwrap
 
 from generator import columns, commands, model
-from generator.examples import example_context, session_example
+from generator.examples import example_context, session_example, session_example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -800,26 +800,9 @@ def _configure_example(proto: dict, session: dict) -> dict | None:
             "args": [{"attr": py_attr(k), "value": value(params[k]["type"], v)} for k, v in given.items()],
         }
 
-    def only(step: str) -> str | None:
-        return next(iter(ex[step]["calls"]))
-
-    data_set = ex["data"]["set"]
     return {
-        "program": ex["program"],
-        "count": ex["count"],
+        **session_example_context(ex, call),
         "device": ex["device"],
-        "ping": call("ping", None),
-        "info": call("info", None),
-        "info_title": ex["info"]["field"]["title"],
-        "setting_title": ex["setting"]["field"]["title"],
-        "setting_write": call("setting", "write"),
-        "setting_read": call("setting", "read"),
-        "format_title": ex["format"]["field"]["title"],
-        "format_write": call("format", only("format")),
-        "enable_title": ex["enable"]["field"]["title"],
-        "enable_write": call("enable", only("enable")),
-        "data_set": data_set["id"],
-        "data_set_title": data_set["title"],
         "data_fields": [
             {"descriptor": f["id"], "name": f["name"], "handler": f"on_{py_attr(f['name'])}"}
             for f in ex["data"]["fields"]
