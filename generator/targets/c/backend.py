@@ -181,7 +181,7 @@ def _comment(text: str | None) -> str:
 
 
 # ---------------------------------------------------------------------------- the package model
-class _Package:
+class _Protocol:
     """Everything the templates print for one protocol."""
 
     def __init__(self, proto: dict, vectors: list[dict]):
@@ -936,7 +936,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     out: dict[str, str] = {}
     sessions = _session_cases(ir)
     for proto in ir["protocols"]:
-        pkg = _Package(proto, vectors)
+        pkg = _Protocol(proto, vectors)
         ctx = {**pkg.context(), **release.stamp(proto), "session_cases": sessions.get(proto["name"], [])}
         root = f"c/{pkg.pkg}/"
         out[root + "LICENSE"] = release.license
@@ -981,7 +981,7 @@ def _command_api_of(protocol: dict) -> list[dict]:
     """The typed command API of a protocol (cached per protocol object for the docs back end)."""
     key = id(protocol)
     if key not in _COMMAND_API or _COMMAND_API[key][0] is not protocol:
-        _COMMAND_API[key] = (protocol, _Package(protocol, []).command_api())
+        _COMMAND_API[key] = (protocol, _Protocol(protocol, []).command_api())
     return _COMMAND_API[key][1]
 
 
@@ -1001,7 +1001,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     }
     if set_ is not None and field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (commands.h.j2): one function per function the command supports,
-        # per device when the layouts' parameters differ (_Package.command_api).
+        # per device when the layouts' parameters differ (_Protocol.command_api).
         names = [
             c["name"]
             for c in _command_api_of(protocol)

@@ -256,7 +256,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     return out
 
 
-class _Proto:
+class _Protocol:
     def __init__(self, proto: dict):
         self.p = proto
         self.ns = ident(proto["package"])
@@ -644,7 +644,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     files: dict[str, str] = {}
     sessions = _load_sessions(ir)
     for proto in ir["protocols"]:
-        P = _Proto(proto)
+        P = _Protocol(proto)
         pkg = proto["package"]
         root = f"cpp/{pkg}"
         inc = f"{root}/include/{pkg}"
@@ -713,7 +713,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
 
 
 # ----------------------------------------------------------------------------- session layer
-def session_context(P: _Proto) -> dict:
+def session_context(P: _Protocol) -> dict:
     """What session_facts.hpp.j2 (the ack rule, the function names and their device limits, one
     CommandRow per command layout and a CommandTraits<T> per layout struct) and commands.hpp.j2
     (the typed command API) print: the command model of generator/commands.py with C++'s names;
@@ -784,13 +784,13 @@ def _cpp_fn(fn: str | None) -> str:
     return "call" if fn is None else ident(fn)
 
 
-def _layout_type(P: _Proto, s: dict, f: dict, device: str | None) -> str:
+def _layout_type(P: _Protocol, s: dict, f: dict, device: str | None) -> str:
     """The struct of field f's layout for device (None: its only layout)."""
     multi = len(f["variants"]) > 1
     return f"::{P.ns}::{_set_ns(s)}::{_layout_names(s['fields'])[(f['name'], device if multi else None)]}"
 
 
-def _call(P: _Proto, cm: commands.Commands, s: dict, f: dict, c: commands.Call) -> dict:
+def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Call) -> dict:
     """One function of the typed API: its name, arguments (typed after the first layout's members),
     the members each layout sets (the other devices' layouts first, each when its device is
     selected; the first layout last, for any other device or none) and the reply struct."""
@@ -874,7 +874,7 @@ def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
     return out
 
 
-def configure_example(P: _Proto, session: dict) -> dict | None:
+def configure_example(P: _Protocol, session: dict) -> dict | None:
     """The configure-and-stream example (generator/examples.py session_example): per step the call
     of the typed command API (commands.hpp) with its arguments as values session_macros.j2 spells
     (and the bounded vectors they fill), the data-field structs it prints as canonical JSON; None

@@ -203,7 +203,7 @@ def pyrepr(value) -> str:
 
 
 # ------------------------------------------------------------------------------------------ model
-class _Proto:
+class _Protocol:
     """Everything the templates need for one protocol, with names and types mapped to Python."""
 
     def __init__(self, proto: dict):
@@ -635,7 +635,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None) -> dic
     env.filters["pyrepr"] = pyrepr
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
-        m = _Proto(proto)
+        m = _Protocol(proto)
         pkg = m.package
         root = f"python/{pkg}"
         sets = [m.set_model(s) for s in proto["sets"]]
@@ -820,7 +820,7 @@ def _canonical_context() -> dict:
     }
 
 
-def _typed_context(m: _Proto, sets: list[dict]) -> dict:
+def _typed_context(m: _Protocol, sets: list[dict]) -> dict:
     samples = m.samples(sets)
     bitfields = m.bitfield_cases()
     used = {s["cls"].split(".")[0] for s in samples} | ({"types"} if bitfields else set())
@@ -835,7 +835,7 @@ DEVICE_ATTRIBUTES = {"transport", "session", "device", "run", "call", "pump", "l
 DEVICE_ATTRIBUTES |= {"on_packet", "on_field", "on_sample", "on_event"}
 
 
-def session_context(m: _Proto, sets: list[dict]) -> dict:
+def session_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _session.py.j2 (the spec facts of every command layout) and command_api.py.j2 (the typed
     command API) print: the command model of generator/commands.py with Python's names (classes,
     attributes, methods, annotations); the templates spell the rows and calls."""
@@ -897,7 +897,7 @@ def session_context(m: _Proto, sets: list[dict]) -> dict:
     }
 
 
-def _method(m: _Proto, f: dict, c: commands.Call, cls) -> dict:
+def _method(m: _Protocol, f: dict, c: commands.Call, cls) -> dict:
     """One method of the typed API (a call of generator/commands.py): its name, argument
     annotations, the classes it builds and what it returns."""
     name = "__call__" if c.function is None else py_attr(c.function)
@@ -1123,7 +1123,7 @@ WORLD_ACTIONS = {
 }
 
 
-def _sim_context(m: _Proto, sets: list[dict]) -> dict:
+def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _sim.py.j2 prints: per command layout class the parameters each function sends and the
     enum parameters; per data layout class the units of its parameters; the streaming table."""
     proto = m.p
