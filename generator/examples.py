@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from .commands import Call, commands
 from .render import ToolError
 
 # The source file of the example in each package, without its extension, and the block size the
@@ -133,10 +134,23 @@ def device_variant(protocol: dict, field: dict, device: str) -> dict:
     raise ExampleError(f"protocol {protocol['name']}: {field['name']} has no layout for {device}")
 
 
+# The functions each step calls (None: the plain command, or "write" when the field has a function
+# selector); values are given to the calls that send them (None and "write").
+SESSION_CALLS = {
+    "ping": (None,),
+    "info": (None,),
+    "setting": ("write", "read"),
+    "format": ("write",),
+    "enable": ("write",),
+}
+
+
 def session_example(protocol: dict) -> dict | None:
     """The configure-and-stream example of a protocol, resolved against the IR (None when the
     protocol has none): device, and per step (ping, info, setting, format, enable) the set, field,
-    layout variant for the device and the values written; data: the set and its fields."""
+    layout variant for the device, the values written and `calls`: per function the step calls
+    (SESSION_CALLS; None for a command without function selector) the generator/commands.py
+    Call the program makes for the device; data: the set and its fields."""
     table = SESSION_EXAMPLES.get(protocol["name"])
     if table is None or not protocol.get("session"):
         return None
@@ -144,6 +158,7 @@ def session_example(protocol: dict) -> dict | None:
     if device not in [d["id"] if isinstance(d, dict) else d for d in protocol["devices"]]:
         raise ExampleError(f"protocol {protocol['name']}: the example's device {device} is not in the spec")
     out: dict = {"program": SESSION_PROGRAM, "count": SESSION_COUNT, "device": device}
+    model = commands(protocol)
     for step in ("ping", "info", "setting", "format", "enable"):
         set_name, field_name, *rest = table[step]
         s, f = _find(protocol, set_name, field_name)
@@ -153,8 +168,45 @@ def session_example(protocol: dict) -> dict | None:
         unknown = sorted(set(values) - names)
         if unknown:
             raise ExampleError(f"protocol {protocol['name']}: {field_name} has no parameter {', '.join(unknown)}")
-        out[step] = {"set": s, "field": f, "variant": v, "values": values}
+        calls: dict[str | None, Call] = {}
+        for fn in SESSION_CALLS[step]:
+            fn = fn if f["functions"] else None
+            call = model.call(s["id"], f["name"], fn, device)
+            if call is None:
+                raise ExampleError(
+                    f"protocol {protocol['name']}: {field_name} has no {fn or 'plain'} call for {device}"
+                    " (generator/examples.py SESSION_EXAMPLES)"
+                )
+            calls[fn] = call
+        out[step] = {"set": s, "field": f, "variant": v, "values": values, "calls": calls}
     data_set, data_names = table["data"]
     fields = [_find(protocol, data_set, n) for n in data_names]
     out["data"] = {"set": fields[0][0], "fields": [f for _s, f in fields]}
     return out
+
+
+def session_example_context(ex: dict, call: Callable[[str, str | None], dict]) -> dict:
+    """What every language's configure-and-stream template prints besides its own names: the
+    program, the count, the titles, the data set, and per step the back end's `call(step,
+    function)` for each function the step calls (session_example's `calls`)."""
+
+    def fns(step: str) -> list[str | None]:
+        return list(ex[step]["calls"])
+
+    data_set = ex["data"]["set"]
+    return {
+        "program": ex["program"],
+        "count": ex["count"],
+        "ping": call("ping", fns("ping")[0]),
+        "info": call("info", fns("info")[0]),
+        "info_title": ex["info"]["field"]["title"],
+        "setting_title": ex["setting"]["field"]["title"],
+        "setting_write": call("setting", fns("setting")[0]),
+        "setting_read": call("setting", fns("setting")[-1]),
+        "format_title": ex["format"]["field"]["title"],
+        "format": call("format", fns("format")[0]),
+        "enable_title": ex["enable"]["field"]["title"],
+        "enable": call("enable", fns("enable")[0]),
+        "data_set": data_set["id"],
+        "data_set_title": data_set["title"],
+    }

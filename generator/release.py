@@ -6,7 +6,7 @@ protocol's IR, and the license (docs/versioning.md).
   `--spec DIR` uses DIR/VERSION when it has one (the every-feature fixture of the golden tree
   does, so that a release does not change that tree), else the project's.
 - The spec hash of a protocol is the first 16 hex digits of the SHA-256 of its entry of
-  `protocols` in generated/ir.json, written canonically: JSON with sorted keys, no whitespace
+  `protocols` in generated/ir.json without `commands` (derived from the rest), written canonically: JSON with sorted keys, no whitespace
   (separators "," and ":"), non-ASCII escaped, UTF-8. It covers everything the IR says about that
   protocol (framing, devices, types, sets, fields, names, documentation strings, manual
   citations) and nothing else: not the version, the other protocol, the generator or the
@@ -43,6 +43,7 @@ def spec_hash(protocol: dict) -> str:
     # Through the exported JSON first, so that the hash is that of ir.json's entry whatever Python
     # types the in-memory IR holds (tuples, integer keys).
     exported = json.loads(json.dumps(protocol, ensure_ascii=True))
+    exported.pop("commands", None)  # the command model is derived from the rest (generator/commands.py)
     return hashlib.sha256(canonical_json(exported)).hexdigest()[:SPEC_HASH_DIGITS]
 
 

@@ -1,7 +1,7 @@
 """Every generated package carries the one version of VERSION, the spec hash of its protocol and
 the license (docs/versioning.md). The spec hash is computed here from the tree's ir.json, without
 the generator's code: SHA-256 of the protocol's entry written as canonical JSON (sorted keys, no
-whitespace, ASCII), first 16 hex digits. Checked for generated/ (the project's VERSION) and for
+whitespace, ASCII) without its derived `commands`, first 16 hex digits. Checked for generated/ (the project's VERSION) and for
 the golden tree (the every-feature fixture, which has its own VERSION)."""
 
 from __future__ import annotations
@@ -31,6 +31,8 @@ TREES = {
 
 
 def _independent_hash(protocol: dict) -> str:
+    # Without `commands`, the command model derived from the rest of the entry (docs/versioning.md).
+    protocol = {k: v for k, v in protocol.items() if k != "commands"}
     text = json.dumps(protocol, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
 

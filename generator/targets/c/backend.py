@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import re
 
-from generator import diagnostics, model
+from generator import commands, diagnostics, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import ExampleError, device_variant, example_context, session_example
+from generator.examples import ExampleError, device_variant, example_context, session_example, session_example_context
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -181,7 +181,7 @@ def _comment(text: str | None) -> str:
 
 
 # ---------------------------------------------------------------------------- the package model
-class _Package:
+class _Protocol:
     """Everything the templates print for one protocol."""
 
     def __init__(self, proto: dict, vectors: list[dict]):
@@ -211,6 +211,7 @@ class _Package:
         self.fields: list[dict] = []
         self.reserved = [self._field_view(None, r) for r in proto["reserved_fields"]]
         self.sets = [self._set_view(s) for s in proto["sets"]]
+        self.commands = commands.commands(proto)
         self.set_kinds = [
             {"name": k, "c": f"{self.P}_SET_KIND_{k.upper()}", "first": r["first"], "last": r["last"]}
             for k, r in proto["set_kinds"].items()
@@ -577,100 +578,36 @@ class _Package:
         return example
 
     # -------------------------------------------------------------- session (docs/conformance.md section 8)
-    def _int_value(self, tref: dict, value) -> int | None:
-        """An enum value name (or integer) of a parameter's type as an integer."""
-        if value is None or isinstance(value, int):
-            return value
-        t = self.types[tref["name"]]
-        return next(v["value"] for v in t["values"] if v["name"] == value)
+    def _layout_view(self, set_id: int, field: str, variant: int) -> dict:
+        """The C layout view of a field's layout (by index in its variants)."""
+        sv = next(x for x in self.sets if x["id"] == set_id)
+        return next(x for x in sv["fields"] if x["name"] == field)["layouts"][variant]
 
-    def _param_ref(self, v: dict, name: str) -> dict:
-        """How the facts code reads a parameter of a command struct: its member, presence flag."""
-        lay = model.params(self.proto, v["params"], v["functions"])
-        optional = any(q.name == name and q.optional for q in lay.params)
-        return {"c": member(name), "has": f"has_{name}" if optional else None}
-
-    def session(self) -> dict:
-        """The ack rule and the facts of every command layout that session_facts.c.j2 prints: per
-        layout its devices, functions, expected replies with their conditions, ack suppression and
-        timeout allowance (docs/design.md "Session layer")."""
-        rule = self.proto["session"]
-        fs = self.proto.get("function_selector") or {}
-        fvalues: dict[str, int] = {}
-        fdevices: dict[int, list[str]] = {}
-        if fs.get("enum"):
-            for v in self.types[fs["enum"]]["values"]:
-                fvalues[v["name"]] = v["value"]
-                if v.get("devices"):
-                    fdevices[v["value"]] = v["devices"]
+    def session_context(self) -> dict:
+        """The ack rule and the facts of every command layout (generator/commands.py) that
+        session_facts.c.j2 prints with C's names: per layout its struct, id and member, the device
+        masks, and how the facts code reads the parameters its conditions name."""
+        cm = self.commands
         dev_bit = {d["id"]: i + 1 for i, d in enumerate(self.proto["devices"])}
 
         def mask(devices) -> str:
             return f"0x{sum(1 << dev_bit[d] for d in devices):X}u"
 
         rows = []
-        max_expect = 1
-        for s, sv in zip(self.proto["sets"], self.sets):
-            if s["kind"] != "command":
-                continue
-            for f, fv in zip(s["fields"], sv["fields"]):
-                if f["role"] != "command":
-                    continue
-                field_devices = mask(sorted({d for v in f["variants"] for d in v["devices"]}))
-                for v, lv in zip(f["variants"], fv["layouts"]):
-                    responses = []
-                    for r in v["responses"]:
-                        w = r["when"] or {}
-                        param = w.get("param")
-                        q = next((q for q in v["params"] if q["name"] == param), None) if param else None
-                        responses.append(
-                            {
-                                "id": f"0x{r['id']:02X}",
-                                "function": fvalues[w["function"]] if "function" in w else None,
-                                "param": self._param_ref(v, param) if param else None,
-                                "value": self._int_value(q["type"], w.get("value")) if q else None,
-                            }
-                        )
-                    max_expect = max(max_expect, len(responses))
-                    ack = v["ack_suppressed_by"]
-                    suppress = None
-                    if ack is not None and "function" in ack:
-                        suppress = {"function": fvalues[ack["function"]]}
-                    elif ack is not None:
-                        q = next(q for q in v["params"] if q["name"] == ack["param"])
-                        suppress = {
-                            "param": self._param_ref(v, ack["param"]),
-                            "value": self._int_value(q["type"], ack.get("value")),
-                        }
-                    t = v.get("timeout")
-                    timeout = None
-                    if t is not None:
-                        timeout = {
-                            "ms": t["ms"],
-                            "param": self._param_ref(v, t["param"]) if t["param"] else None,
-                            "functions": [fvalues[x] for x in t["functions"]] if t["functions"] else None,
-                        }
-                    rows.append(
-                        {
-                            "id": lv["id"],
-                            "member": lv["member"],
-                            "ctype": lv["c"],
-                            "set": f"0x{s['id']:02X}",
-                            "descriptor": f"0x{f['id']:02X}",
-                            "functions": [fvalues[x] for x in v["functions"]] if v["functions"] is not None else None,
-                            "field_devices": field_devices,
-                            "layout_device": lv["device_c"] if lv["device"] else f"{self.P}_DEVICE_ANY",
-                            "responses": responses,
-                            "suppress": suppress,
-                            "timeout": timeout,
-                            "uses_c": bool(
-                                v["functions"] is not None
-                                or any(x["param"] for x in responses)
-                                or (suppress or {}).get("param")
-                                or (timeout or {}).get("param")
-                            ),
-                        }
-                    )
+        for lay in cm.layouts:
+            lv = self._layout_view(lay.set, lay.field, lay.variant)
+            views = {q["name"]: q for q in lv["params"]}
+            rows.append(
+                {
+                    "layout": lay,
+                    "view": lv,
+                    "field_devices": mask(lay.field_devices),
+                    "layout_device": lv["device_c"] if lv["device"] else f"{self.P}_DEVICE_ANY",
+                    "param": {q: {"c": views[q]["c"], "has": views[q]["has"]} for q in lay.reads},
+                    "uses_c": lay.functions is not None or bool(lay.reads),
+                }
+            )
+        rule = self.proto["session"]
         ack_layout = None
         if rule:
             r = next(r for r in self.reserved if r["descriptor"] == rule["ack"] and r["role"] == "ack")
@@ -678,135 +615,88 @@ class _Package:
         return {
             "rule": rule,
             "ack_layout": ack_layout,
-            "max_expect": max_expect,
+            "max_expect": max([len(x.replies) for x in cm.layouts] + [1]),
             "command_rows": rows,
-            "function_names": [{"value": v, "name": n} for n, v in fvalues.items()],
-            "function_devices": [{"value": k, "mask": mask(d)} for k, d in fdevices.items()],
+            "functions": [
+                {"value": f.value, "name": f.name, "mask": mask(f.devices) if f.devices else None} for f in cm.functions
+            ],
             "all_devices": mask([d["id"] for d in self.proto["devices"]]),
         }
 
     def command_api(self) -> list[dict]:
-        """The typed command API (commands.h.j2, commands.c.j2): one C function per command and
-        function it supports (the plain command name without a function selector), typed
-        parameters in, the typed reply out. Layouts whose parameters differ per device get one
-        function per device (suffix _<device>); otherwise the link's device picks the layout."""
+        """The typed command API (commands.h.j2, commands.c.j2): one C function per call of
+        generator/commands.py (the plain command name without a function selector, suffix
+        _<device> for a call split per device), its arguments in layout order, the layouts it
+        fills (the link's device picks one) and the reply it decodes."""
         fs = self.proto.get("function_selector") or {}
         fmacro = self.type_macro(fs["enum"]) if fs.get("enum") else None
         out = []
-        for s, sv in zip(self.proto["sets"], self.sets):
-            if s["kind"] != "command":
-                continue
-            by_id = {f["id"]: (f, fv) for f, fv in zip(s["fields"], sv["fields"])}
-            for f, fv in zip(s["fields"], sv["fields"]):
-                if f["role"] != "command":
-                    continue
-                base = f"{self.p}_{s['name']}_{f['name']}"
-                pairs = list(zip(f["variants"], fv["layouts"]))
-                plain = f["variants"][0]["functions"] is None
-                functions: list[str] = []
-                for v, _ in pairs:
-                    for fn in v["functions"] or []:
-                        if fn not in functions:
-                            functions.append(fn)
-                for fn in [None] if plain else functions:
-                    groups: dict[tuple, list] = {}
-                    for v, lv in pairs:
-                        if fn is not None and fn not in (v["functions"] or []):
-                            continue
-                        args = self._api_args(v, lv, fn)
-                        key = tuple(a["decl"] for a in args)
-                        groups.setdefault(key, []).append((v, lv, args))
-                    split = len(groups) > 1
-                    for group in groups.values():
-                        name = base if fn is None else f"{base}_{fn}"
-                        if split:
-                            name += f"_{group[0][1]['device']}"
-                        self._claim(name, f"command function {name}")
-                        reply = self._api_reply(s, group, fn, by_id)
-                        out.append(
-                            {
-                                "name": name,
-                                "field": (s["id"], f["name"]),
-                                "title": _comment(f.get("title")),
-                                "fn": fn,
-                                "fn_macro": f"{fmacro}_{fn.upper()}" if fn else None,
-                                "args": group[0][2],
-                                "layouts": [
-                                    {
-                                        "id": lv["id"],
-                                        "member": lv["member"],
-                                        "ctype": lv["c"],
-                                        "device_c": lv["device_c"],
-                                        "args": largs,
-                                    }
-                                    for _, lv, largs in group
-                                ],
-                                "choose": len(group) > 1,
-                                "reply": reply,
-                            }
-                        )
+        for c in self.commands.calls:
+            name = f"{self.p}_{c.set_name}_{c.field}" + (f"_{c.function}" if c.function else "")
+            if c.device is not None:
+                name += f"_{c.device}"
+            self._claim(name, f"command function {name}")
+            layouts = [self._layout_view(c.set, c.field, i) for i in c.variants]
+            out.append(
+                {
+                    "name": name,
+                    "call": c,
+                    "title": _comment(
+                        next(
+                            f
+                            for s in self.proto["sets"]
+                            if s["id"] == c.set
+                            for f in s["fields"]
+                            if f["name"] == c.field
+                        ).get("title")
+                    ),
+                    "fn": c.function,
+                    "fn_macro": f"{fmacro}_{c.function.upper()}" if c.function else None,
+                    "args": self._api_args(layouts[0], c),
+                    "layouts": [{**lv, "args": self._api_args(lv, c)} for lv in layouts],
+                    "choose": len(layouts) > 1,
+                    "reply": self._api_reply(c),
+                }
+            )
         return out
 
-    def _api_args(self, v: dict, lv: dict, fn: str | None) -> list[dict]:
-        """The arguments of one typed command function: the parameters sent for fn (the function
-        selector and the counts of counted arrays are set by the function)."""
+    def _api_args(self, lv: dict, c) -> list[dict]:
+        """The arguments of one typed command function, in layout order: the parameters sent for
+        the call's function (the function selector and the counts of counted arrays are set by
+        the function); commands.h.j2 `decl` writes their C declarations."""
         views = {q["name"]: q for q in lv["params"]}
-        lay = model.params(self.proto, v["params"], v["functions"])
-        counts = {q.count_param for q in lay.params if q.kind == model.COUNTED}
+        sent = {a.name for a in c.arguments}
         args = []
-        for q in lay.params:
-            if q.function or q.name in counts:
+        for q in lv["params"]:
+            if q["name"] not in sent:
                 continue
-            if q.functions is not None and fn not in q.functions:
-                continue
-            view = views[q.name]
-            ctype = view["e"]["ctype"]
-            c = view["c"]
-            arg = c + "_" if c in ("link", "reply") else c
-            a = {"name": q.name, "c": c, "arg": arg, "has": view["has"], "kind": q.kind}
-            if q.kind == model.SCALAR and q.elem.kind in ("struct", "union") or q.kind == model.UNION:
-                a["decl"] = f"const {ctype} *{arg}"
+            a = {"name": q["name"], "c": q["c"], "arg": q["c"] + "_" if q["c"] in ("link", "reply") else q["c"]}
+            a.update(has=q["has"], kind=q["kind"], ctype=q["e"]["ctype"], n=q["n"])
+            if q["kind"] == model.UNION or q["kind"] == model.SCALAR and "ld" not in q["e"]:  # struct, union
                 a["how"] = "struct"
-            elif q.kind == model.SCALAR:
-                a["decl"] = f"{ctype} {arg}"
+            elif q["kind"] == model.SCALAR:
                 a["how"] = "value"
-            elif q.kind == model.FIXED:
-                a["decl"] = f"const {ctype} {arg}[{view['n']}]"
-                a["how"] = "array"
-            elif q.kind == model.STRING:
-                a["decl"] = f"const char {arg}[{view['n']}]"
+            elif q["kind"] in (model.FIXED, model.STRING):
                 a["how"] = "array"
             else:
-                a["decl"] = f"const {ctype} *{arg}, size_t {q.name}_count"
-                a["how"] = "counted" if q.kind == model.COUNTED else "remaining"
-                a["count_arg"] = f"{q.name}_count"
-                a["max"] = view["max"]
-                a["count_c"] = view["count_c"]
-                if q.kind == model.COUNTED:
-                    cq = next(x for x in lay.params if x.name == q.count_param)
-                    a["count_ctype"] = views[cq.name]["e"]["ctype"]
-                    a["count_has"] = views[cq.name]["has"]  # an optional count is present when sent
+                a["how"] = q["kind"]
+                a.update(count_arg=f"{q['name']}_count", max=q["max"], count_c=q["count_c"])
+                if q["kind"] == model.COUNTED:
+                    k = next(k for k in c.counts if k.array == q["name"])
+                    a["count_ctype"] = views[k.param]["e"]["ctype"]
+                    a["count_has"] = views[k.param]["has"]  # an optional count is present when sent
             args.append(a)
         return args
 
-    def _api_reply(self, s: dict, group: list, fn: str | None, by_id: dict) -> dict | None:
+    def _api_reply(self, c) -> dict | None:
         """The reply a typed command function returns: one layout of the command's set (its
         struct), any field (a field value), or None."""
-        ids: list[int] = []
-        for v, _, _ in group:
-            for r in v["responses"]:
-                w = r["when"] or {}
-                if "function" in w and w["function"] != fn:
-                    continue
-                if r["id"] not in ids:
-                    ids.append(r["id"])
-        if not ids:
+        if c.reply_kind == "none":
             return None
-        target = by_id.get(ids[0])
-        if len(ids) > 1 or target is None or len(target[0]["variants"]) > 1:
+        if c.reply_kind == "any" or c.reply.per_device:
             return {"value": True, "ctype": f"{self.p}_field_value_t"}
-        lv = target[1]["layouts"][0]
-        return {"value": False, "ctype": lv["c"], "fn": lv["fn"], "descriptor": f"0x{ids[0]:02X}"}
+        lv = self._layout_view(c.set, c.reply.name, 0)
+        return {"value": False, "ctype": lv["c"], "fn": lv["fn"], "descriptor": f"0x{c.reply.descriptor:02X}"}
 
     def stream_example(self) -> dict | None:
         """The configure-and-stream example (generator/examples.py session_example) as C: for
@@ -819,24 +709,11 @@ class _Package:
             return None
         P = self.P
         device = ex["device"]
-        device_c = f"{P}_DEVICE_{device.upper()}"
         api = self.command_api()
 
         def function(step: str, fn: str | None) -> dict:
-            st = ex[step]
-            rows = [
-                r
-                for r in api
-                if r["field"] == (st["set"]["id"], st["field"]["name"])
-                and r["fn"] == fn
-                and any(lay["device_c"] in (device_c, f"{P}_DEVICE_ANY") for lay in r["layouts"])
-            ]
-            if not rows:
-                raise ExampleError(
-                    f"C back end: the configure-and-stream example needs {st['field']['name']}"
-                    f"{' ' + fn if fn else ''} for {device}, which the command API does not have"
-                )
-            return rows[0]
+            c = ex[step]["calls"][fn]
+            return next(r for r in api if r["call"] == c)
 
         def call(step: str, fn: str | None) -> dict:
             """The call of one step: function, arguments (after the link), constants they use."""
@@ -869,9 +746,6 @@ class _Package:
             what = f"{st['set']['name']}.{st['field']['name']}" + (f" {fn}" if fn else "")
             return {"fn": row["name"], "args": "".join(", " + x for x in args), "consts": consts, "what": what}
 
-        def fn_of(step: str) -> str | None:
-            return "write" if ex[step]["field"]["functions"] else None
-
         def reply(step: str, fn: str | None, var: str) -> dict:
             r = function(step, fn)["reply"]
             if r is None or r["value"]:
@@ -896,23 +770,13 @@ class _Package:
                     **printed,
                 }
             )
+        out = session_example_context(ex, call)
+        out["info"].update(reply("info", None, "info"))
+        out["setting_read"].update(reply("setting", list(ex["setting"]["calls"])[-1], "setting"))
         return {
-            "program": ex["program"],
-            "count": ex["count"],
+            **out,
             "device": device,
-            "device_c": device_c,
-            "ping": call("ping", None),
-            "info": {**call("info", None), **reply("info", None, "info")},
-            "info_title": ex["info"]["field"]["title"],
-            "setting_title": ex["setting"]["field"]["title"],
-            "setting_write": call("setting", "write"),
-            "setting_read": {**call("setting", "read"), **reply("setting", "read", "setting")},
-            "format_title": ex["format"]["field"]["title"],
-            "format": call("format", fn_of("format")),
-            "enable_title": ex["enable"]["field"]["title"],
-            "enable": call("enable", fn_of("enable")),
-            "data_set": f"0x{data_set['id']:02X}",
-            "data_set_title": data_set["title"],
+            "device_c": f"{P}_DEVICE_{device.upper()}",
             "data_fields": fields,
         }
 
@@ -943,7 +807,8 @@ class _Package:
             qs = {q["name"]: q["type"] for q in t["params"]}
             return "{" + ", ".join(f".{member(k)} = {self._literal(qs[k], x, False)}" for k, x in value.items()) + "}"
         if kind == "enum":
-            number = self._int_value(tref, value)
+            values = self.types[tref["name"]]["values"]
+            number = value if isinstance(value, int) else next(x["value"] for x in values if x["name"] == value)
             view = next(t for t in self.type_views if t["name"] == tref["name"])
             t = self.types[tref["name"]]
             for tv, vv in zip(t["values"], view["values"]):
@@ -1003,7 +868,7 @@ class _Package:
         return {
             "stream_example": self.stream_example(),
             "commands": self.command_api(),
-            "session": self.session(),
+            "session": self.session_context(),
             "p": self.p,
             "P": self.P,
             "pkg": self.pkg,
@@ -1084,7 +949,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
     out: dict[str, str] = {}
     sessions = _session_cases(ir, list(sessions))
     for proto in ir["protocols"]:
-        pkg = _Package(proto, vectors)
+        pkg = _Protocol(proto, vectors)
         ctx = {**pkg.context(), **release.stamp(proto), "session_cases": sessions.get(proto["name"], [])}
         root = f"c/{pkg.pkg}/"
         out[root + "LICENSE"] = release.license
@@ -1133,7 +998,7 @@ def _command_api_of(protocol: dict) -> list[dict]:
     """The typed command API of a protocol (cached per protocol object for the docs back end)."""
     key = id(protocol)
     if key not in _COMMAND_API or _COMMAND_API[key][0] is not protocol:
-        _COMMAND_API[key] = (protocol, _Package(protocol, []).command_api())
+        _COMMAND_API[key] = (protocol, _Protocol(protocol, []).command_api())
     return _COMMAND_API[key][1]
 
 
@@ -1153,8 +1018,12 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     }
     if set_ is not None and field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (commands.h.j2): one function per function the command supports,
-        # per device when the layouts' parameters differ (_Package.command_api).
-        names = [c["name"] for c in _command_api_of(protocol) if c["field"] == (set_["id"], field["name"])]
+        # per device when the layouts' parameters differ (_Protocol.command_api).
+        names = [
+            c["name"]
+            for c in _command_api_of(protocol)
+            if (c["call"].set, c["call"].field) == (set_["id"], field["name"])
+        ]
         out["session"] = ", ".join(f"{n}(link, ...)" for n in names)
     return out
 

@@ -28,9 +28,9 @@ from __future__ import annotations
 
 import re
 
-from generator import model
+from generator import commands, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import ExampleError, example_context, session_example
+from generator.examples import ExampleError, example_context, session_example, session_example_context
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -256,7 +256,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     return out
 
 
-class _Proto:
+class _Protocol:
     def __init__(self, proto: dict):
         self.p = proto
         self.ns = ident(proto["package"])
@@ -638,10 +638,13 @@ def canonical_context() -> dict:
 def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
+    env.filters["cpp_string"] = cpp_string
+    env.filters["cpp_int"] = int_literal
+    env.filters["pow2"] = lambda v: 1 << v
     files: dict[str, str] = {}
     sessions = list(sessions)
     for proto in ir["protocols"]:
-        P = _Proto(proto)
+        P = _Protocol(proto)
         pkg = proto["package"]
         root = f"cpp/{pkg}"
         inc = f"{root}/include/{pkg}"
@@ -694,12 +697,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         }
         for out, tpl in spec.items():
             files[f"{inc}/{out}"] = env.get_template(f"cpp/include/{tpl}").render(ctx)
-        files[f"{inc}/session_facts.hpp"] = env.get_template("cpp/include/session_facts.hpp.j2").render(
-            ctx, **session_context(P)
-        )
-        files[f"{inc}/commands.hpp"] = env.get_template("cpp/include/commands.hpp.j2").render(
-            ctx, **command_api_context(P)
-        )
+        session = session_context(P)
+        files[f"{inc}/session_facts.hpp"] = env.get_template("cpp/include/session_facts.hpp.j2").render(ctx, **session)
+        files[f"{inc}/commands.hpp"] = env.get_template("cpp/include/commands.hpp.j2").render(ctx, **session)
         for s in sets:
             files[f"{inc}/fields/{s['file']}.hpp"] = env.get_template("cpp/include/fields.hpp.j2").render(ctx, set=s)
             files[f"{inc}/fields/{s['file']}_json.hpp"] = env.get_template("cpp/include/fields_json.hpp.j2").render(
@@ -709,7 +709,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             ctx
         )
         files[f"{root}/tests/test_vectors.cpp"] = env.get_template("cpp/tests/test_vectors.cpp.j2").render(ctx)
-        example = configure_example(P)
+        example = configure_example(P, session)
         if example is not None:
             files[f"{root}/examples/configure_and_stream.cpp"] = env.get_template(
                 "cpp/examples/configure_and_stream.cpp.j2"
@@ -726,124 +726,118 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
 
 
 # ----------------------------------------------------------------------------- session layer
-def _int_value(P: _Proto, tref: dict, value) -> int | None:
-    """An enum value name (or integer) of a parameter's type as an integer."""
-    if value is None or isinstance(value, int):
-        return value
-    t = P.types[tref["name"]]
-    return next(v["value"] for v in t["values"] if v["name"] == value)
-
-
-def _param_expr(P: _Proto, q: dict) -> str:
-    """The value of parameter q of `v` as std::optional<std::int64_t> (nullopt when absent)."""
-    member = f"v.{ident(q['name'])}"
-    if q["optional"]:
-        return f"{member} ? std::optional<std::int64_t>(static_cast<std::int64_t>(*{member})) : std::nullopt"
-    return f"std::optional<std::int64_t>(static_cast<std::int64_t>({member}))"
-
-
-def session_context(P: _Proto) -> dict:
-    """What session_facts.hpp.j2 prints: the ack rule, the function names and their device limits,
-    and one CommandRow per command layout (with its reply rules) plus a CommandTraits<T> per layout
-    (its row, its function selector value, the parameters its rules read by slot)."""
+def session_context(P: _Protocol) -> dict:
+    """What session_facts.hpp.j2 (the ack rule, the function names and their device limits, one
+    CommandRow per command layout and a CommandTraits<T> per layout struct) and commands.hpp.j2
+    (the typed command API) print: the command model of generator/commands.py with C++'s names;
+    session_macros.j2 spells the rows and the calls."""
     proto = P.p
     devices = [d["id"] for d in proto["devices"]]
     if len(devices) > 32:
         raise ValueError("the C++ session's device masks hold at most 32 devices")
-    fenum = (proto.get("function_selector") or {}).get("enum")
-    fvalues: dict[str, int] = {}
-    functions = []
-    if fenum:
-        for v in P.types[fenum]["values"]:
-            if not 0 <= v["value"] < 64:
-                raise ValueError(f"function selector value {v['value']} does not fit the C++ session's masks")
-            fvalues[v["name"]] = v["value"]
-            mask = sum(1 << devices.index(d) for d in v.get("devices") or [])
-            functions.append({"value": v["value"], "name": cpp_string(v["name"]), "devices": f"0x{mask:X}u"})
-
-    def fmask(names) -> str:
-        return f"0x{sum(1 << fvalues[n] for n in names):X}ULL"
-
+    cm = commands.commands(proto)
+    for f in cm.functions:
+        if not 0 <= f.value < 64:
+            raise ValueError(f"function selector value {f.value} does not fit the C++ session's masks")
     rule = proto.get("session")
     ack = None
     if rule:
         rf = next(f for f in proto["reserved_fields"] if f["id"] == rule["ack"] and f.get("role") == "ack")
-        names = _layout_names(proto["reserved_fields"])
         ack = {
-            "descriptor": f"0x{rule['ack']:02X}",
+            "descriptor": rule["ack"],
             "ok": rule["ok"],
-            "type": f"::{P.ns}::{P.reserved_ns}::{names[(rf['name'], None)]}",
+            "type": f"::{P.ns}::{P.reserved_ns}::{_layout_names(proto['reserved_fields'])[(rf['name'], None)]}",
             "echo": ident(rule["echo"]),
             "code": ident(rule["code"]),
         }
+    sets = {s["id"]: s for s in proto["sets"]}
+    fields = {(s["id"], f["name"]): f for s in proto["sets"] for f in s["fields"]}
     rows = []
-    for s in proto["sets"]:
-        if s["kind"] != "command":
-            continue
-        names = _layout_names(s["fields"])
-        for f in s["fields"]:
-            if f["role"] != "command":
-                continue
-            multi = len(f["variants"]) > 1
-            for v in f["variants"]:
-                params = {q["name"]: q for q in v["params"]}
-                slots: list[str] = []
+    for lay in cm.layouts:
+        v = fields[(lay.set, lay.field)]["variants"][lay.variant]
+        params = {q["name"]: q for q in v["params"]}
+        rows.append(
+            {
+                "index": len(rows),
+                "layout": lay,
+                "type": _layout_type(P, sets[lay.set], fields[(lay.set, lay.field)], lay.device),
+                "device": devices.index(lay.device) if lay.device else -1,
+                "devices": sum(1 << devices.index(d) for d in lay.devices),
+                "slot": {q: i for i, q in enumerate(lay.reads)},
+                "reads": [{"field": ident(q), "optional": params[q]["optional"]} for q in lay.reads],
+            }
+        )
+    api_sets: list[dict] = []
+    calls: dict[commands.Call, dict] = {}
+    for c in cm.calls:
+        s, f = sets[c.set], fields[(c.set, c.field)]
+        if not api_sets or api_sets[-1]["id"] != c.set:
+            api_sets.append({"id": c.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
+        commands_ = api_sets[-1]["commands"]
+        if not commands_ or commands_[-1]["id"] != c.descriptor:
+            commands_.append(
+                {"id": c.descriptor, "ns": ident(f["name"]), "title": " ".join(f["title"].split()), "calls": []}
+            )
+        call = _call(P, cm, s, f, c)
+        commands_[-1]["calls"].append(call)
+        calls[c] = {"set": api_sets[-1]["ns"], "command": commands_[-1]["ns"], "call": call}
+    return {
+        "session_ack": ack,
+        "session_functions": [
+            {"value": f.value, "name": f.name, "devices": sum(1 << devices.index(d) for d in f.devices)}
+            for f in cm.functions
+        ],
+        "session_rows": rows,
+        "api_sets": api_sets,
+        "calls": calls,
+    }
 
-                def slot(name: str, slots: list[str] = slots) -> int:
-                    if name not in slots:
-                        slots.append(name)
-                    return slots.index(name)
 
-                replies = []
-                for r in v["responses"]:
-                    w = r["when"] or {}
-                    fn = fvalues[w["function"]] if "function" in w else -1
-                    param = w.get("param")
-                    value = _int_value(P, params[param]["type"], w.get("value")) if param else None
-                    replies.append(
-                        f"{{0x{r['id']:02X}, {fn}, {slot(param) if param else -1}, "
-                        f"{'true' if value is not None else 'false'}, {int_literal(value or 0)}}}"
-                    )
-                a = v["ack_suppressed_by"]
-                if a is None:
-                    ack_row = "0, -1, false, 0"
-                elif "function" in a:
-                    ack_row = f"1, -1, false, {fvalues[a['function']]}"
-                else:
-                    val = _int_value(P, params[a["param"]]["type"], a.get("value"))
-                    ack_row = (
-                        f"2, {slot(a['param'])}, {'true' if val is not None else 'false'}, {int_literal(val or 0)}"
-                    )
-                t = v.get("timeout")
-                if t is None:
-                    timeout_row = "false, 0, -1, true, 0"
-                else:
-                    tp = slot(t["param"]) if t["param"] else -1
-                    all_fn = not t["functions"]
-                    timeout_row = f"true, {t['ms']}u, {tp}, {'true' if all_fn else 'false'}, " + (
-                        "0" if all_fn else fmask(t["functions"])
-                    )
-                has_fn = v["functions"] is not None
-                dev_mask = sum(1 << devices.index(d) for d in v["devices"])
-                rows.append(
-                    {
-                        "type": f"::{P.ns}::{_set_ns(s)}::{names[(f['name'], v['device'] if multi else None)]}",
-                        "index": len(rows),
-                        "replies": replies,
-                        "row": (
-                            f"0x{s['id']:02X}, 0x{f['id']:02X}, {cpp_string(f['name'])}, "
-                            f"{devices.index(v['device']) if v['device'] else -1}, 0x{dev_mask:X}u, "
-                            f"{'true' if has_fn else 'false'}, {fmask(v['functions']) if has_fn else '0'}, "
-                        ),
-                        "row_tail": f"{len(replies)}, {ack_row}, {timeout_row}",
-                        # The function selector member (generator/model.py function_param).
-                        "function": (
-                            "std::optional<std::int64_t>(static_cast<std::int64_t>(v.function))" if has_fn else None
-                        ),
-                        "slots": [_param_expr(P, params[n]) for n in slots],
-                    }
-                )
-    return {"session_ack": ack, "session_functions": functions, "session_rows": rows}
+def _cpp_fn(fn: str | None) -> str:
+    return "call" if fn is None else ident(fn)
+
+
+def _layout_type(P: _Protocol, s: dict, f: dict, device: str | None) -> str:
+    """The struct of field f's layout for device (None: its only layout)."""
+    multi = len(f["variants"]) > 1
+    return f"::{P.ns}::{_set_ns(s)}::{_layout_names(s['fields'])[(f['name'], device if multi else None)]}"
+
+
+def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Call) -> dict:
+    """One function of the typed API: its name, arguments (typed after the first layout's members),
+    the members each layout sets (the other devices' layouts first, each when its device is
+    selected; the first layout last, for any other device or none) and the reply struct."""
+    name = _cpp_fn(c.function) + (f"_{c.device}" if c.device is not None else "")
+    first = _layout_type(P, s, f, f["variants"][c.variants[0]]["device"] if len(f["variants"]) > 1 else None)
+    args = [{"name": ident(a.name), "required": a.required, "optional": a.optional} for a in c.arguments]
+    sent = {a.name for a in c.arguments}
+    layouts = []
+    for i in c.variants:
+        v = f["variants"][i]
+        params = {q["name"]: q for q in v["params"]}
+        layouts.append(
+            {
+                "type": _layout_type(P, s, f, v["device"] if len(f["variants"]) > 1 else None),
+                "device": ident(v["device"]) if v["device"] else None,
+                "members": [ident(q["name"]) for q in v["params"] if q["name"] in sent],
+                "counts": [
+                    {"field": ident(k.param), "array": ident(k.array), "optional": params[k.array]["optional"]}
+                    for k in c.counts
+                ],
+            }
+        )
+    reply = None
+    if c.reply_kind == commands.FIELD and not c.reply.per_device:
+        reply = _layout_type(P, s, next(x for x in s["fields"] if x["id"] == c.reply.descriptor), None)
+    return {
+        "name": ident(name),
+        "function": ident(c.function) if c.function is not None else None,
+        "function_enum": cm.function_enum,
+        "first": first,
+        "args": args,
+        "reply": reply,
+        "layouts": layouts[1:] + [{**layouts[0], "device": None}],
+    }
 
 
 def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
@@ -878,219 +872,89 @@ def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
     return out
 
 
-def _cpp_fn(fn: str | None) -> str:
-    return "call" if fn is None else ident(fn)
-
-
-def command_api_context(P: _Proto) -> dict:
-    """What commands.hpp.j2 prints: the typed command API, one function per command and function
-    (`api::<set>::<command>::<function>(connection, args...)`, `call` without a selector), with
-    the parameters sent for that function as arguments (the selector and count parameters set by
-    the call) and the reply field's struct as Reply<R> (else Call). A function whose layouts need
-    different arguments per device gets one call per device (`write_gx5_45`)."""
-    proto = P.p
-    fenum = (proto.get("function_selector") or {}).get("enum")
-    sets = []
-    for s in proto["sets"]:
-        if s["kind"] != "command":
-            continue
-        names = _layout_names(s["fields"])
-        by_id = {f["id"]: f for f in s["fields"]}
-        commands = []
-        for f in s["fields"]:
-            if f["role"] != "command":
-                continue
-            multi = len(f["variants"]) > 1
-            layouts = [
-                {
-                    "v": v,
-                    "type": f"::{P.ns}::{_set_ns(s)}::{names[(f['name'], v['device'] if multi else None)]}",
-                    "device": v["device"],
-                }
-                for v in f["variants"]
-            ]
-            plain = f["variants"][0]["functions"] is None
-            functions: list[str] = []
-            for lay in layouts:
-                for fn in lay["v"]["functions"] or []:
-                    if fn not in functions:
-                        functions.append(fn)
-            calls = []
-            for fn in [None] if plain else functions:
-                groups: dict[tuple, list[dict]] = {}
-                for lay in layouts:
-                    v = lay["v"]
-                    if fn is not None and fn not in (v["functions"] or []):
-                        continue
-                    sig = _cpp_signature(v, fn, fenum, lay["type"])
-                    groups.setdefault(tuple(a["key"] for a in sig["args"]), []).append({**lay, "sig": sig})
-                split = len(groups) > 1
-                for group in groups.values():
-                    name = _cpp_fn(fn) + (f"_{group[0]['device']}" if split else "")
-                    reply = _cpp_reply(P, s, group, fn, by_id, names)
-                    calls.append(
-                        {
-                            "name": ident(name),
-                            "fn": fn,
-                            "args": group[0]["sig"]["args"],
-                            "reply": reply,
-                            # The other devices' layouts first, each when its device is selected;
-                            # the first layout last, for any other device or none.
-                            "layouts": [
-                                {"type": g["type"], "device": ident(g["device"]), "sets": g["sig"]["sets"]}
-                                for g in group[1:]
-                            ]
-                            + [{"type": group[0]["type"], "device": None, "sets": group[0]["sig"]["sets"]}],
-                        }
-                    )
-            commands.append({"ns": ident(f["name"]), "title": " ".join(f["title"].split()), "calls": calls})
-        if commands:
-            sets.append({"ns": _set_ns(s), "title": s["title"], "commands": commands})
-    return {"api_sets": sets, "function_enum": f"::{P.ns}::types::{fenum}" if fenum else None}
-
-
-def _cpp_signature(v: dict, fn: str | None, fenum: str | None, type_: str) -> dict:
-    """Arguments (required first, as declared) and member assignments of one call."""
-    counted = {q["count"]["param"]: q for q in v["params"] if q["count"] and q["count"]["kind"] == "param"}
-    args = []
-    sets = []
-    counts: list[str] = []
-    if fn is not None:  # the function selector (generator/model.py function_param), sent first
-        sets.append(f"v.function = ::{type_.split('::')[1]}::types::{fenum}::{ident(fn)};")
-    for q in v["params"]:
-        m = ident(q["name"])
-        if q["functions"] is not None and fn not in q["functions"]:
-            continue
-        if q["name"] in counted:
-            arr = ident(counted[q["name"]]["name"])
-            size = f"v.{arr} ? v.{arr}->size() : 0" if counted[q["name"]]["optional"] else f"v.{arr}.size()"
-            # set after the array itself (below), which it counts
-            counts.append(f"v.{m} = static_cast<std::remove_reference_t<decltype(v.{m})>>({size});")
-            continue
-        required = (q["functions"] is not None and fn not in (q["optional_for"] or [])) or not q["optional"]
-        member = f"decltype({type_}::{m})"
-        if required and q["optional"]:
-            decl = f"const typename {member}::value_type &"
-        else:
-            decl = f"const {member} &"
-        key = (m, required, q["optional"], repr(q["type"]), repr(q["count"]))
-        args.append({"name": m, "decl": decl, "required": required, "key": key})
-        sets.append(f"v.{m} = {m};")
-    args = [a for a in args if a["required"]] + [a for a in args if not a["required"]]
-    return {"args": args, "sets": [x for x in sets + counts if x]}
-
-
-def _cpp_reply(P: _Proto, s: dict, group: list[dict], fn: str | None, by_id: dict, names: dict) -> str | None:
-    """The struct of the reply field the call returns, or None (the call returns Call)."""
-    ids = []
-    for g in group:
-        for r in g["v"]["responses"]:
-            w = r["when"] or {}
-            if "function" in w and w["function"] != fn:
-                continue
-            if r["id"] not in ids:
-                ids.append(r["id"])
-    if len(ids) != 1 or ids[0] not in by_id or len(by_id[ids[0]]["variants"]) != 1:
-        return None
-    return f"::{P.ns}::{_set_ns(s)}::{names[(by_id[ids[0]]['name'], None)]}"
-
-
-def configure_example(P: _Proto) -> dict | None:
-    """The configure-and-stream example (generator/examples.py session_example) as calls of the
-    typed command API (commands.hpp) with literal arguments (and the bounded vectors they fill),
-    the reply and data-field structs it prints as canonical JSON; None for a protocol without
-    the example."""
+def configure_example(P: _Protocol, session: dict) -> dict | None:
+    """The configure-and-stream example (generator/examples.py session_example): per step the call
+    of the typed command API (commands.hpp) with its arguments as values session_macros.j2 spells
+    (and the bounded vectors they fill), the data-field structs it prints as canonical JSON; None
+    for a protocol without the example."""
     ex = session_example(P.p)
     if ex is None:
         return None
-    ns = P.ns
-    device = ex["device"]
-    api = command_api_context(P)["api_sets"]
+    types = {t["name"]: t for t in P.p["types"]}
 
-    def literal(tref: dict, value, top: bool = True) -> str:
+    def literal(tref: dict, value, top: bool = True) -> dict:
         kind = tref["kind"]
         if kind == "struct":
-            t = next(x for x in P.p["types"] if x["name"] == tref["name"])
+            t = types[tref["name"]]
             if set(value) != {q["name"] for q in t["params"]}:
                 raise ExampleError(f"C++ back end: the example must give every member of {tref['name']}")
-            inner = ", ".join(literal(q["type"], value[q["name"]], False) for q in t["params"])
-            return f"::{ns}::types::{camel(tref['name'])}{{{inner}}}"
+            return {
+                "kind": "struct",
+                "type": camel(tref["name"]),
+                "elems": [literal(q["type"], value[q["name"]], False) for q in t["params"]],
+            }
         if kind == "enum":
-            t = next(x for x in P.p["types"] if x["name"] == tref["name"])
+            t = types[tref["name"]]
             number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
             name = next((x["name"] for x in t["values"] if x["value"] == number), None)
-            enum = f"::{ns}::types::{camel(tref['name'])}"
-            return f"{enum}::{ident(name)}" if name is not None else f"static_cast<{enum}>({number})"
+            return {
+                "kind": "enum",
+                "type": camel(tref["name"]),
+                "member": ident(name) if name else None,
+                "number": number,
+            }
         if kind == "primitive" and tref["name"] == "bool":
-            return "true" if value else "false"
+            return {"kind": "bool", "value": bool(value)}
         if kind == "primitive" and tref["name"] in ("float", "double"):
-            return repr(float(value)) + ("f" if tref["name"] == "float" else "")
+            return {"kind": "text", "text": repr(float(value)) + ("f" if tref["name"] == "float" else "")}
         if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
-            return f"0x{value:02X}" if value >= 0x10 and top else str(value)
+            return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
         raise ExampleError(f"C++ back end: the configure-and-stream example cannot write a {kind} value {value!r}")
 
     def call(step: str, fn: str | None) -> dict:
-        """`api::<set>::<command>::<function>(device, args)` and the vectors it fills first."""
+        """The call, its arguments and the vectors it fills first."""
         st = ex[step]
-        aset = next(a for a in api if a["ns"] == _set_ns(st["set"]))
-        command = next(c for c in aset["commands"] if c["ns"] == ident(st["field"]["name"]))
-        calls = {c["name"]: c for c in command["calls"]}
-        base = _cpp_fn(fn)
-        c = calls.get(f"{base}_{device}") or calls.get(base)
-        if c is None:
-            raise ExampleError(f"C++ back end: {st['field']['name']} has no call {base} for {device}")
-        params = {ident(q["name"]): q for q in st["variant"]["params"]}
-        values = {ident(k): v for k, v in st["values"].items()} if fn in (None, "write") else {}
+        c = st["calls"][fn]
+        at = session["calls"][c]
+        params = {q["name"]: q for q in st["variant"]["params"]}
+        values = st["values"] if fn in (None, "write") else {}
         args, fills = [], []
-        for a in c["args"]:
-            q = params[a["name"]]
-            if a["name"] not in values:
-                if not a["required"]:
+        for a in c.arguments:
+            q = params[a.name]
+            if a.name not in values:
+                if not a.required:
                     continue  # optional arguments come last: left at their default
                 raise ExampleError(
                     f"C++ back end: the configure-and-stream example gives no value for {q['name']} of"
                     f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
                 )
-            value, tref, count = values[a["name"]], q["type"], q["count"]
+            value, tref, count = values[a.name], q["type"], q["count"]
             if count and count["kind"] == "fixed":
-                args.append("{" + ", ".join(literal(tref, v) for v in value) + "}")
+                args.append({"kind": "array", "elems": [literal(tref, v) for v in value]})
             elif count:
-                local = a["decl"].removeprefix("const ").removesuffix(" &").removeprefix("typename ")
-                fills.append(f"{local} {a['name']};")
-                fills += [f"{a['name']}.push_back({literal(tref, v)});" for v in value]
-                args.append(a["name"])
+                fills.append(
+                    {
+                        "name": ident(a.name),
+                        "required": a.required,
+                        "optional": a.optional,
+                        "elems": [literal(tref, v) for v in value],
+                    }
+                )
+                args.append({"kind": "local", "name": ident(a.name)})
             else:
                 args.append(literal(tref, value))
-        target = f"api::{aset['ns']}::{command['ns']}::{c['name']}"
         what = f"{st['set']['name']}.{st['field']['name']}" + (f" {fn}" if fn else "")
-        return {"call": f"{target}({', '.join(['device', *args])})", "fills": fills, "what": what}
-
-    def fn_of(step: str) -> str | None:
-        return "write" if ex[step]["field"]["functions"] else None
+        return {**at, "args": args, "fills": fills, "what": what}
 
     data_set = ex["data"]["set"]
-    names = _layout_names(data_set["fields"])
     fields = []
     for f in ex["data"]["fields"]:
         if len(f["variants"]) > 1:
             raise ExampleError(f"C++ back end: the example's data field {f['name']} has per-device layouts")
-        fields.append({"name": f["name"], "type": f"::{ns}::{_set_ns(data_set)}::{names[(f['name'], None)]}"})
+        fields.append({"name": f["name"], "type": _layout_type(P, data_set, f, None)})
     return {
-        "program": ex["program"],
-        "count": ex["count"],
-        "device": ident(device),
-        "ping": call("ping", None),
-        "info": call("info", None),
-        "info_title": ex["info"]["field"]["title"],
-        "setting_title": ex["setting"]["field"]["title"],
-        "setting_write": call("setting", "write"),
-        "setting_read": call("setting", "read"),
-        "format_title": ex["format"]["field"]["title"],
-        "format": call("format", fn_of("format")),
-        "enable_title": ex["enable"]["field"]["title"],
-        "enable": call("enable", fn_of("enable")),
-        "data_set": f"0x{data_set['id']:02X}",
-        "data_set_title": data_set["title"],
+        **session_example_context(ex, call),
+        "device": ident(ex["device"]),
         "data_fields": fields,
     }
 

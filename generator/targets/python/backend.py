@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import textwrap
 
-from generator import columns, model
-from generator.examples import ExampleError, example_context, session_example
+from generator import columns, commands, model
+from generator.examples import example_context, session_example, session_example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -204,7 +204,7 @@ def pyrepr(value) -> str:
 
 
 # ------------------------------------------------------------------------------------------ model
-class _Proto:
+class _Protocol:
     """Everything the templates need for one protocol, with names and types mapped to Python."""
 
     def __init__(self, proto: dict):
@@ -637,7 +637,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
     env.filters["pyrepr"] = pyrepr
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
-        m = _Proto(proto)
+        m = _Protocol(proto)
         pkg = m.package
         root = f"python/{pkg}"
         sets = [m.set_model(s) for s in proto["sets"]]
@@ -675,7 +675,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             files[f"{root}/{pkg}/{sm['module']}.py"] = tmpl.render(**ctx, mod=sm)
         files[f"{root}/{pkg}/reserved.py"] = tmpl.render(**ctx, mod=reserved)
         files[f"{root}/{pkg}/registry.py"] = env.get_template("python/package/registry.py.j2").render(**ctx)
-        session = _session_context(m, sets)
+        session = session_context(m, sets)
         for name in SESSION_TEMPLATES:
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
         files[f"{root}/{pkg}/capabilities.py"] = env.get_template("python/package/capabilities.py.j2").render(
@@ -694,7 +694,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/examples/getting_started.py"] = env.get_template("python/examples/getting_started.py.j2").render(
             **ctx, example=_example(proto)
         )
-        configure = _configure_example(proto, session["api_sets"])
+        configure = _configure_example(proto, session)
         if configure is not None:
             files[f"{root}/examples/{configure['program']}.py"] = env.get_template(
                 "python/examples/configure_and_stream.py.j2"
@@ -774,69 +774,48 @@ def _example(proto: dict) -> dict:
     return example
 
 
-def _configure_example(proto: dict, api_sets: list[dict]) -> dict | None:
-    """The configure-and-stream example (generator/examples.py session_example) as Python calls
-    of the typed command API (command_api.py) with literal arguments."""
+def _configure_example(proto: dict, session: dict) -> dict | None:
+    """The configure-and-stream example (generator/examples.py session_example): per step the
+    call of the typed command API (command_api.py) and its literal arguments as values the
+    template spells (configure_and_stream.py.j2 `literal`)."""
     ex = session_example(proto)
     if ex is None:
         return None
     types = {t["name"]: t for t in proto["types"]}
-    device = ex["device"]
+    methods = session["methods"]
 
-    def literal(tref: dict, value) -> str:
-        if isinstance(value, list):
-            return "[" + ", ".join(literal(tref, v) for v in value) + "]"
+    def value(tref: dict, v) -> dict:
+        if isinstance(v, list):
+            return {"kind": "list", "elems": [value(tref, x) for x in v]}
         if tref["kind"] == "struct":
-            return f"types.{tref['name']}(" + ", ".join(f"{py_attr(k)}={pyrepr(v)}" for k, v in value.items()) + ")"
+            return {
+                "kind": "struct",
+                "type": tref["name"],
+                "fields": [{"attr": py_attr(k), "value": x} for k, x in v.items()],
+            }
         if tref["kind"] == "enum":
-            member = next((m["name"] for m in types[tref["name"]]["values"] if m["value"] == value), None)
+            member = next((m["name"] for m in types[tref["name"]]["values"] if m["value"] == v), None)
             if member is not None:
-                return f"types.{tref['name']}.{const_name(member)}"
-        if isinstance(value, int) and not isinstance(value, bool) and value >= 0x10:
-            return f"0x{value:02X}"
-        return pyrepr(value)
+                return {"kind": "enum", "type": tref["name"], "member": const_name(member)}
+        if isinstance(v, int) and not isinstance(v, bool) and v >= 0x10:
+            return {"kind": "hex", "value": v}
+        return {"kind": "plain", "value": v}
 
-    def call(step: str, fn: str | None) -> str:
+    def call(step: str, fn: str | None) -> dict:
         st = ex[step]
-        s_attr = set_module(st["set"])
-        s_attr = s_attr + "_set" if s_attr in DEVICE_ATTRIBUTES else s_attr
-        api_set = next(a for a in api_sets if a["attr"] == s_attr)
-        command = next(c for c in api_set["commands"] if c["attr"] == py_attr(st["field"]["name"]))
-        names = {m["name"] for m in command["methods"]}
-        name = "__call__" if fn is None else (f"{fn}_{device}" if f"{fn}_{device}" in names else fn)
-        if name not in names:
-            raise ExampleError(f"{st['field']['name']} has no {name} method for {device}")
+        c = st["calls"][fn]
         params = {q["name"]: q for q in st["variant"]["params"]}
-        args = (
-            ", ".join(f"{py_attr(k)}={literal(params[k]['type'], v)}" for k, v in st["values"].items())
-            if fn in (None, "write")
-            else ""
-        )
-        head = f"device.{s_attr}.{command['attr']}"
-        return f"{head}({args})" if name == "__call__" else f"{head}.{name}({args})"
+        given = st["values"] if fn in (None, "write") else {}
+        return {
+            **methods[c],
+            "args": [{"attr": py_attr(k), "value": value(params[k]["type"], v)} for k, v in given.items()],
+        }
 
-    def fn_of(step: str) -> str | None:
-        return "write" if ex[step]["field"]["functions"] else None
-
-    data_set = ex["data"]["set"]
     return {
-        "program": ex["program"],
-        "count": ex["count"],
-        "device": device,
-        "ping": call("ping", None),
-        "info": call("info", None),
-        "info_title": ex["info"]["field"]["title"],
-        "setting_title": ex["setting"]["field"]["title"],
-        "setting_write": call("setting", "write"),
-        "setting_read": call("setting", "read"),
-        "format_title": ex["format"]["field"]["title"],
-        "format_write": call("format", fn_of("format")),
-        "enable_title": ex["enable"]["field"]["title"],
-        "enable_write": call("enable", fn_of("enable")),
-        "data_set": f"0x{data_set['id']:02X}",
-        "data_set_title": data_set["title"],
+        **session_example_context(ex, call),
+        "device": ex["device"],
         "data_fields": [
-            {"descriptor": f"0x{f['id']:02X}", "name": f["name"], "handler": f"on_{py_attr(f['name'])}"}
+            {"descriptor": f["id"], "name": f["name"], "handler": f"on_{py_attr(f['name'])}"}
             for f in ex["data"]["fields"]
         ],
     }
@@ -852,7 +831,7 @@ def _canonical_context() -> dict:
     }
 
 
-def _typed_context(m: _Proto, sets: list[dict]) -> dict:
+def _typed_context(m: _Protocol, sets: list[dict]) -> dict:
     samples = m.samples(sets)
     bitfields = m.bitfield_cases()
     used = {s["cls"].split(".")[0] for s in samples} | ({"types"} if bitfields else set())
@@ -867,209 +846,114 @@ DEVICE_ATTRIBUTES = {"transport", "session", "device", "run", "call", "pump", "l
 DEVICE_ATTRIBUTES |= {"on_packet", "on_field", "on_sample", "on_event"}
 
 
-def _int_value(types: dict, tref: dict, value) -> int | None:
-    """An enum value name (or integer) of a parameter's type as an integer."""
-    if value is None or isinstance(value, int):
-        return value
-    t = types[tref["name"]]
-    return next(v["value"] for v in t["values"] if v["name"] == value)
+def session_context(m: _Protocol, sets: list[dict]) -> dict:
+    """What _session.py.j2 (the spec facts of every command layout) and command_api.py.j2 (the typed
+    command API) print: the command model of generator/commands.py with Python's names (classes,
+    attributes, methods, annotations); the templates spell the rows and calls."""
+    cm = commands.commands(m.p)
+    module = {sm["set"]["id"]: sm["module"] for sm in sets}
+    sets_by_id = {s["id"]: s for s in m.p["sets"]}
+    classes = {s["id"]: _layout_classes(s["fields"]) for s in m.p["sets"] if s["kind"] == "command"}
+    fields = {(s["id"], f["name"]): f for s in m.p["sets"] for f in s["fields"]}
 
+    def cls(set_id: int, field: str, device: str | None) -> str:
+        multi = len(fields[(set_id, field)]["variants"]) > 1
+        return f"{module[set_id]}.{classes[set_id][(field, device if multi else None)]}"
 
-def _session_context(m: _Proto, sets: list[dict]) -> dict:
-    """What _session.py.j2 (the spec facts of every command) and command_api.py.j2 (the typed command
-    API) print: per command layout its class, devices, functions, replies, ack suppression and
-    timeout allowance; per command set a class with one method per function."""
-    proto = m.p
-    fvalues: dict[str, int] = {}
-    fdevices: dict[int, list[str]] = {}
-    if m.function_enum:
-        for v in m.types[m.function_enum]["values"]:
-            fvalues[v["name"]] = v["value"]
-            if v.get("devices"):
-                fdevices[v["value"]] = v["devices"]
-    rows = []
-    api_sets = []
-    for sm in sets:
-        s = sm["set"]
-        if s["kind"] != "command":
-            continue
-        names = _layout_classes(s["fields"])
-        by_id = {f["id"]: f for f in s["fields"]}
-        commands = []
-        for f in s["fields"]:
-            if f["role"] != "command":
-                continue
-            multi = len(f["variants"]) > 1
-            layouts = []
-            for v in f["variants"]:
-                cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
-                params = {q["name"]: q for q in v["params"]}
-                responses = []
-                for r in v["responses"]:
-                    w = r["when"] or {}
-                    fn = fvalues.get(w["function"]) if "function" in w else None
-                    param = w.get("param")
-                    value = _int_value(m.types, params[param]["type"], w.get("value")) if param else None
-                    responses.append(f"(0x{r['id']:02X}, {fn!r}, {py_attr(param) if param else None!r}, {value!r})")
-                ack = v["ack_suppressed_by"]
-                if ack is None:
-                    ack_text = "None"
-                elif "function" in ack:
-                    ack_text = f'("function", {fvalues[ack["function"]]})'
-                else:
-                    ack_text = f'("param", {py_attr(ack["param"])!r}, {ack.get("value")!r})'
-                t = v.get("timeout")
-                if t is None:
-                    timeout = "None"
-                else:
-                    fns = tuple(fvalues[x] for x in t["functions"]) if t["functions"] else None
-                    timeout = f"({t['ms']}, {py_attr(t['param']) if t['param'] else None!r}, {fns!r})"
-                functions = tuple(fvalues[x] for x in v["functions"]) if v["functions"] is not None else None
-                rows_text = (
-                    f"({cls}, {v['device']!r}, {tuple(v['devices'])!r}, {functions!r}, "
-                    f"{tuple_literal(responses) if responses else '()'}, {ack_text}, {timeout})"
-                )
-                layouts.append({"cls": cls, "device": v["device"], "variant": v, "row": rows_text})
-            rows.append({"key": f"(0x{s['id']:02X}, 0x{f['id']:02X})", "layouts": layouts})
-            commands.append(_command_api(m, s, f, layouts, by_id, sets))
-        if commands:
+    rows: list[dict] = []
+    for lay in cm.layouts:
+        entry = {"layout": lay, "cls": cls(lay.set, lay.field, lay.device), "attr": {q: py_attr(q) for q in lay.reads}}
+        if rows and (rows[-1]["set"], rows[-1]["descriptor"]) == (lay.set, lay.descriptor):
+            rows[-1]["layouts"].append(entry)
+        else:
+            rows.append({"set": lay.set, "descriptor": lay.descriptor, "layouts": [entry]})
+    methods: dict[commands.Call, dict] = {}
+    api_sets: list[dict] = []
+    for c in cm.calls:
+        s, f = sets_by_id[c.set], fields[(c.set, c.field)]
+        if not api_sets or api_sets[-1]["set"] != c.set:
             attr = set_module(s)
-            if attr in DEVICE_ATTRIBUTES:
-                attr += "_set"
             api_sets.append(
                 {
-                    "attr": attr,
+                    "set": c.set,
+                    "attr": attr + "_set" if attr in DEVICE_ATTRIBUTES else attr,
                     "cls": camel(s["name"]) + "Commands",
                     "title": s["title"],
-                    "set_hex": f"0x{s['id']:02X}",
-                    "commands": commands,
+                    "commands": [],
                 }
             )
+        commands_ = api_sets[-1]["commands"]
+        if not commands_ or commands_[-1]["descriptor"] != c.descriptor:
+            commands_.append(
+                {
+                    "descriptor": c.descriptor,
+                    "attr": py_attr(c.field),
+                    "cls": camel(c.field),
+                    "title": f["title"],
+                    "methods": [],
+                }
+            )
+        method = _method(m, f, c, cls)
+        commands_[-1]["methods"].append(method)
+        methods[c] = {"set_attr": api_sets[-1]["attr"], "command_attr": commands_[-1]["attr"], "method": method["name"]}
     return {
         "session_example": _session_example(api_sets),
-        "session_rule": proto["session"],
-        "code_enum": proto["session"]["code_enum"] if proto["session"] else None,
-        "function_names": [{"value": v, "name": n} for n, v in fvalues.items()],
-        "function_devices": [{"value": k, "devices": tuple_literal([repr(d) for d in v])} for k, v in fdevices.items()],
+        "session_rule": m.p["session"],
+        "code_enum": m.p["session"]["code_enum"] if m.p["session"] else None,
+        "functions": cm.functions,
         "command_rows": rows,
         "api_sets": api_sets,
+        "methods": methods,
         "set_modules": sorted({sm["module"] for sm in sets if sm["set"]["kind"] == "command" and sm["classes"]}),
     }
 
 
-def _command_api(m: _Proto, s: dict, f: dict, layouts: list[dict], by_id: dict, sets: list[dict]) -> dict:
-    """One command of the typed API: its methods (one per function, or `__call__`)."""
-    fn_enum = m.function_enum
-    methods = []
-    plain = layouts[0]["variant"]["functions"] is None
-    functions: list[str] = []
-    for lay in layouts:
-        for fn in lay["variant"]["functions"] or []:
-            if fn not in functions:
-                functions.append(fn)
-    for fn in [None] if plain else functions:
-        groups: dict[tuple, list[dict]] = {}
-        for lay in layouts:
-            v = lay["variant"]
-            if fn is not None and fn not in (v["functions"] or []):
-                continue
-            sig = _signature(m, v, fn)
-            groups.setdefault(tuple((a["attr"], a["annotation"]) for a in sig["args"]), []).append({**lay, "sig": sig})
-        split = len(groups) > 1
-        for group in groups.values():
-            for_devices = [g for g in group]
-            sig = for_devices[0]["sig"]
-            name = "__call__" if fn is None else py_attr(fn)
-            if split:
-                name = f"{name}_{for_devices[0]['device']}" if fn is not None else f"call_{for_devices[0]['device']}"
-            reply = _reply_type(s, f, [g["variant"] for g in for_devices], fn, by_id, sets)
-            choose = (
-                "{" + ", ".join(f"{g['device']!r}: {g['cls']}" for g in for_devices) + "}" if len(layouts) > 1 else None
-            )
-            methods.append(
-                {
-                    "name": name,
-                    "fn": fn,
-                    "fn_const": f"_t.{fn_enum}.{const_name(fn)}" if fn is not None else None,
-                    "cls": for_devices[0]["cls"],
-                    "choose": choose,
-                    "args": sig["args"],
-                    "counts": sig["counts"],
-                    "returns": reply,
-                    "doc": (f"Function {fn}" if fn else "Send the command")
-                    + (f" (layout for {', '.join(g['device'] for g in for_devices)})" if split else "")
-                    + (": returns the reply field." if reply != "None" else "; raises on a NACK, timeout or refusal."),
-                }
-            )
+def _method(m: _Protocol, f: dict, c: commands.Call, cls) -> dict:
+    """One method of the typed API (a call of generator/commands.py): its name, argument
+    annotations, the classes it builds and what it returns."""
+    name = "__call__" if c.function is None else py_attr(c.function)
+    if c.device is not None:
+        name = f"{name}_{c.device}" if c.function is not None else f"call_{c.device}"
+    v = f["variants"][c.variants[0]]
+    decls = {d["name"]: d for d in m.layout(v["params"], "_t.", v["functions"])["fields"]}
+    args = []
+    for a in c.arguments:
+        ann = decls[a.name]["annotation"]
+        if a.required and ann.startswith("_ty.Optional[") and ann.endswith("]"):
+            ann = ann[len("_ty.Optional[") : -1]
+        args.append({"attr": decls[a.name]["attr"], "annotation": ann, "required": a.required})
+    if c.reply_kind == commands.NO_REPLY:
+        returns = "None"
+    elif c.reply_kind == commands.ANY or c.reply.per_device:
+        returns = "_ty.Any"
+    else:
+        returns = cls(c.set, c.reply.name, None)
+    devices = [d for d in c.devices if d is not None]
     return {
-        "attr": py_attr(f["name"]),
-        "cls": camel(f["name"]),
-        "title": f["title"],
-        "descriptor": f"0x{f['id']:02X}",
-        "methods": methods,
+        "name": name,
+        "fn_const": f"_t.{m.function_enum}.{const_name(c.function)}" if c.function is not None else None,
+        "cls": cls(c.set, c.field, c.devices[0]),
+        "choose": [{"device": d, "cls": cls(c.set, c.field, d)} for d in devices] if len(f["variants"]) > 1 else None,
+        "args": args,
+        "counts": [{"attr": py_attr(k.param), "array": py_attr(k.array)} for k in c.counts],
+        "returns": returns,
+        "doc": (f"Function {c.function}" if c.function else "Send the command")
+        + (f" (layout for {', '.join(devices)})" if c.device is not None else "")
+        + (": returns the reply field." if returns != "None" else "; raises on a NACK, timeout or refusal."),
     }
 
 
-def _signature(m: _Proto, v: dict, fn: str | None) -> dict:
-    """The arguments of the method for function fn of layout v: the parameters sent for fn (the
-    function selector and count parameters left out: the method sets them)."""
-    lay = m.layout(v["params"], "_t.", v["functions"])
-    decls = {d["name"]: d for d in lay["fields"]}
-    counted = {q["count"]["param"]: q for q in v["params"] if q["count"] and q["count"]["kind"] == "param"}
-    args, counts = [], []
-    for q in v["params"]:
-        if q["functions"] is not None and fn not in q["functions"]:
-            continue
-        if q["name"] in counted:
-            counts.append({"attr": py_attr(q["name"]), "array": py_attr(counted[q["name"]]["name"])})
-            continue
-        d = decls[q["name"]]
-        required = (q["functions"] is not None and fn not in (q["optional_for"] or [])) or not q["optional"]
-        ann = d["annotation"]
-        if required and ann.startswith("_ty.Optional[") and ann.endswith("]"):
-            ann = ann[len("_ty.Optional[") : -1]
-        args.append({"attr": d["attr"], "annotation": ann, "required": required})
-    # Required arguments first (Python's rule); the order among each kind follows the layout.
-    args = [a for a in args if a["required"]] + [a for a in args if not a["required"]]
-    return {"args": args, "counts": counts}
-
-
-def _reply_type(s: dict, f: dict, variants: list[dict], fn: str | None, by_id: dict, sets: list[dict]) -> str:
-    """The annotation of what a method returns: the reply field's class, or None."""
-    ids = []
-    for v in variants:
-        for r in v["responses"]:
-            w = r["when"] or {}
-            if "function" in w and w["function"] != fn:
-                continue
-            if r["id"] not in ids:
-                ids.append(r["id"])
-    if not ids:
-        return "None"
-    if len(ids) > 1:
-        return "_ty.Any"
-    target = by_id.get(ids[0])
-    if target is None or len(target["variants"]) > 1:
-        return "_ty.Any"
-    module = next(sm["module"] for sm in sets if sm["set"]["id"] == s["id"])
-    return f"{module}.{_layout_classes(s['fields'])[(target['name'], None)]}"
-
-
 def _session_example(api_sets: list[dict]) -> dict | None:
-    """The command the README's session snippet calls: the first read that returns a reply field,
-    else the first plain command that does, else the first command."""
-    calls = [(s, c, m) for s in api_sets for c in s["commands"] for m in c["methods"] if not m["args"]]
-    for s, c, m in calls:
-        if m["returns"] != "None":
-            call = f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()")
-            return {"call": call, "returns": True}
-    if calls:
-        s, c, m = calls[0]
-        return {
-            "call": f"{s['attr']}.{c['attr']}" + ("()" if m["name"] == "__call__" else f".{m['name']}()"),
-            "returns": False,
-        }
-    return None
+    """The call the README's session snippet makes: the first without arguments that returns a
+    reply field, else the first without arguments."""
+    calls = [
+        {"set_attr": s["attr"], "command_attr": c["attr"], "method": m["name"], "returns": m["returns"] != "None"}
+        for s in api_sets
+        for c in s["commands"]
+        for m in c["methods"]
+        if not m["args"]
+    ]
+    return next((c for c in calls if c["returns"]), calls[0] if calls else None)
 
 
 # -------------------------------------------------------------------------------------- simulator
@@ -1314,7 +1198,7 @@ WORLD_ACTIONS = {
 }
 
 
-def _sim_context(m: _Proto, sets: list[dict]) -> dict:
+def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _sim.py.j2 prints: per command layout class the parameters each function sends and the
     enum parameters; per data layout class the units of its parameters; the streaming table."""
     proto = m.p

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 
-from generator import model, naming
-from generator.examples import ExampleError, example_context, session_example
+from generator import commands, model, naming
+from generator.examples import ExampleError, example_context, session_example, session_example_context
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -590,347 +590,185 @@ class _Protocol:
 _MAX_EXPECT = 4
 
 
-class _Session:
+def session_context(m: _Protocol) -> dict:
     """What commands.rs.j2 (the spec facts of every command layout, docs/conformance.md section 8)
-    and command_api.rs.j2 (the typed command API) print, computed from the IR."""
-
-    def __init__(self, m: _Protocol):
-        self.m = m
-        self.proto = m.proto
-        fs = self.proto.get("function_selector") or {}
-        self.function_enum = fs.get("enum")
-        self.fvalues: dict[str, int] = {}
-        if self.function_enum:
-            for v in m.types[self.function_enum]["values"]:
-                self.fvalues[v["name"]] = v["value"]
-
-    def _int_value(self, tref: dict, value) -> int | None:
-        if value is None or isinstance(value, int):
-            return value
-        if isinstance(value, bool):
-            return int(value)
-        t = self.m.types[tref["name"]]
-        return next(v["value"] for v in t["values"] if v["name"] == value)
-
-    def _pattern(self, s: dict, f: dict, v: dict, bind: str) -> str:
-        """The match pattern of a FieldValue holding layout v of field f (binding it to `bind`)."""
-        module = self.m.set_module(s)
-        variant = camel(module)
-        rust = camel(f["name"])
-        if len(f["variants"]) > 1:
-            inner = f"crate::{module}::{rust}::{self.m.device_variant(v['device'])}({bind})"
-        else:
-            inner = bind
-        return f"FieldValue::{variant}(crate::{module}::SetField::{rust}({inner}))"
-
-    def _constructor(self, s: dict, f: dict, v: dict, value: str) -> tuple[str, str]:
-        """(struct path of layout v, the FieldValue expression wrapping `value`)."""
-        module = self.m.set_module(s)
-        rust = camel(f["name"])
-        if len(f["variants"]) > 1:
-            dv = self.m.device_variant(v["device"])
-            struct = f"crate::{module}::{rust}{camel(v['device'])}"
-            inner = f"crate::{module}::{rust}::{dv}({value})"
-        else:
-            struct = f"crate::{module}::{rust}"
-            inner = value
-        return struct, f"FieldValue::{camel(module)}(crate::{module}::SetField::{rust}({inner}))"
-
-    def _to_int(self, q: model.Param, x: str) -> str:
-        """A Rust expression of type i64 for the value `x` of a scalar parameter (bool, integer, enum)."""
-        e = q.elem
-        if e.kind == "primitive" and e.name == "bool":
-            return f"i64::from({x})"
-        if e.kind == "primitive":
-            return f"{x} as i64"
-        return f"{x}.0 as i64"
-
-    def context(self) -> dict:
-        proto = self.proto
-        rule = proto.get("session")
-        if rule is None:
-            raise ToolError(f"{proto['name']}: the Rust session layer needs the protocol's ack rule (session)")
-        ack_rust = camel(rule["ack_name"])
-        code_t = self.m.types.get(rule["code_enum"]) if rule.get("code_enum") else None
-        code_expr = "a.{}.0".format(ident(rule["code"])) if code_t else "a.{}".format(ident(rule["code"]))
-        rows = []
-        facts_match = []
-        function_match = []
-        param_match = []
-        for s in proto["sets"]:
-            if s["kind"] != "command":
-                continue
-            for f in s["fields"]:
-                if f["role"] != "command":
-                    continue
-                for v in f["variants"]:
-                    index = len(rows)
-                    pm = model.layout(proto, v)
-                    by_name = {q.name: q for q in pm.params}
-                    used: list[str] = []
-                    replies = []
-                    for r in v["responses"]:
-                        w = r["when"] or {}
-                        fn = self.fvalues.get(w["function"]) if "function" in w else None
-                        param = w.get("param")
-                        value = self._int_value(by_name[param].ir["type"], w.get("value")) if param else None
-                        if param:
-                            used.append(param)
-                        replies.append(
-                            "ReplyFacts { descriptor: %s, function: %s, param: %s, value: %s }"
-                            % (
-                                _hex(r["id"]),
-                                _opt(fn),
-                                _opt(rust_str(param) if param else None),
-                                _opt(value),
-                            )
-                        )
-                    if len(replies) > _MAX_EXPECT:
-                        raise ToolError(f"{f['name']}: more than {_MAX_EXPECT} reply fields")
-                    ack = v["ack_suppressed_by"]
-                    if ack is None:
-                        ack_text = "AckSuppression::Never"
-                    elif "function" in ack:
-                        ack_text = f"AckSuppression::Function({self.fvalues[ack['function']]})"
-                    else:
-                        used.append(ack["param"])
-                        val = self._int_value(by_name[ack["param"]].ir["type"], ack.get("value"))
-                        ack_text = "AckSuppression::Param { param: %s, value: %s }" % (
-                            rust_str(ack["param"]),
-                            _opt(val),
-                        )
-                    t = v.get("timeout")
-                    if t is None:
-                        timeout = "None"
-                    else:
-                        fns = [str(self.fvalues[x]) for x in t["functions"]] if t["functions"] else None
-                        if t["param"]:
-                            used.append(t["param"])
-                        timeout = "Some(Allowance { ms: %d, param: %s, functions: %s })" % (
-                            t["ms"],
-                            _opt(rust_str(t["param"]) if t["param"] else None),
-                            "Some(&[%s])" % ", ".join(fns) if fns else "None",
-                        )
-                    functions = (
-                        "Some(&[%s])" % ", ".join(str(self.fvalues[x]) for x in v["functions"])
-                        if v["functions"] is not None
-                        else "None"
-                    )
-                    devices = ", ".join(f"Device::{self.m.device_variant(d)}" for d in v["devices"])
-                    device = f"Some(Device::{self.m.device_variant(v['device'])})" if v["device"] else "None"
-                    rows.append(
-                        {
-                            "set": _hex(s["id"]),
-                            "descriptor": _hex(f["id"]),
-                            "name": rust_str(f["name"]),
-                            "device": device,
-                            "devices": devices,
-                            "functions": functions,
-                            "replies": replies,
-                            "ack": ack_text,
-                            "timeout": timeout,
-                        }
-                    )
-                    facts_match.append({"pattern": self._pattern(s, f, v, "_"), "index": index})
-                    fq = next((q for q in pm.params if q.function), None)
-                    if fq is not None:
-                        function_match.append({"pattern": self._pattern(s, f, v, "v"), "expr": f"v.{ident(fq.name)}.0"})
-                    for name in dict.fromkeys(used):
-                        q = by_name[name]
-                        x = ident(q.name)
-                        if q.optional:
-                            expr = f"v.{x}.map(|x| {self._to_int(q, 'x')})"
-                        else:
-                            expr = f"Some({self._to_int(q, 'v.' + x)})"
-                        param_match.append(
-                            {"pattern": self._pattern(s, f, v, "v"), "name": rust_str(name), "expr": expr}
-                        )
-        fdevices = []
-        if self.function_enum:
-            for v in self.m.types[self.function_enum]["values"]:
-                if v.get("devices"):
-                    fdevices.append(
-                        {
-                            "value": v["value"],
-                            "devices": ", ".join(f"Device::{self.m.device_variant(d)}" for d in v["devices"]),
-                        }
-                    )
-        uses = ["CommandFacts"] + [
-            name
-            for name, used in (
-                ("AckSuppression", rows),
-                ("Allowance", any(r["timeout"] != "None" for r in rows)),
-                ("ReplyFacts", any(r["replies"] for r in rows)),
+    and command_api.rs.j2 (the typed command API) print: the command model of generator/commands.py
+    with Rust's names and types; session_macros.j2 spells the rows, patterns and calls."""
+    proto = m.proto
+    rule = proto.get("session")
+    if rule is None:
+        raise ToolError(f"{proto['name']}: the Rust session layer needs the protocol's ack rule (session)")
+    cm = commands.commands(proto)
+    sets = {s["id"]: s for s in proto["sets"]}
+    fields = {(s["id"], f["name"]): f for s in proto["sets"] for f in s["fields"]}
+    rows = []
+    for lay in cm.layouts:
+        if len(lay.replies) > _MAX_EXPECT:
+            raise ToolError(f"{lay.field}: more than {_MAX_EXPECT} reply fields")
+        pm = {q.name: q for q in model.layout(proto, fields[(lay.set, lay.field)]["variants"][lay.variant]).params}
+        rows.append(
+            {
+                "layout": lay,
+                "names": _names(m, sets[lay.set], fields[(lay.set, lay.field)], lay.device),
+                "device": m.device_variant(lay.device) if lay.device else None,
+                "devices": [m.device_variant(d) for d in lay.devices],
+                "reads": [
+                    {"name": q, "field": ident(q), "optional": pm[q].optional, "to_int": _to_int(pm[q].elem)}
+                    for q in lay.reads
+                ],
+            }
+        )
+    uses = ["CommandFacts"] + [
+        name
+        for name, used in (
+            ("AckSuppression", rows),
+            ("Allowance", any(r["layout"].timeout for r in rows)),
+            ("ReplyFacts", any(r["layout"].replies for r in rows)),
+        )
+        if used
+    ]
+    code_enum = rule.get("code_enum")
+    methods: dict[commands.Call, dict] = {}
+    api_sets: list[dict] = []
+    for c in cm.calls:
+        s, f = sets[c.set], fields[(c.set, c.field)]
+        if not api_sets or api_sets[-1]["id"] != c.set:
+            module = m.set_module(s)
+            api_sets.append(
+                {
+                    "id": c.set,
+                    "method": _set_method(module),
+                    "struct": camel(module) + "Commands",
+                    "title": s["title"],
+                    "set": _hex(s["id"]),
+                    "commands": [],
+                }
             )
-            if used
-        ]
-        return {
-            "session_imports": ", ".join(sorted(uses)),
-            "session_rule": {
-                "ack": _hex(rule["ack"]),
-                "ok": rule["ok"],
-                "pattern": f"FieldValue::Reserved(crate::reserved::ReservedField::{ack_rust}(a))",
-                "echo": f"a.{ident(rule['echo'])}",
-                "code": f"u32::from({code_expr})",
-            },
-            "function_names": [{"value": v, "name": rust_str(n)} for n, v in self.fvalues.items()],
-            "function_devices": fdevices,
-            "command_rows": rows,
-            "facts_match": facts_match,
-            "function_match": function_match,
-            "param_match": param_match,
-            "api_sets": self.api_sets(),
-        }
+        commands_ = api_sets[-1]["commands"]
+        if not commands_ or commands_[-1]["id"] != c.descriptor:
+            commands_.append(
+                {
+                    "id": c.descriptor,
+                    "method": ident(f["name"]),
+                    "struct": camel(f["name"]) + "Command",
+                    "title": f["title"],
+                    "plain": f["variants"][0]["functions"] is None,
+                    "methods": [],
+                    "descriptor": _hex(f["id"]),
+                }
+            )
+        method = _method(m, cm, s, f, c)
+        commands_[-1]["methods"].append(method)
+        methods[c] = {"set": api_sets[-1], "command": commands_[-1], "method": method}
+    return {
+        "session_imports": sorted(uses),
+        "session_rule": {
+            "ack": rule["ack"],
+            "ok": rule["ok"],
+            "ack_type": camel(rule["ack_name"]),
+            "echo": ident(rule["echo"]),
+            "code": ident(rule["code"]),
+            "code_newtype": bool(code_enum and code_enum in m.types),
+        },
+        "functions": [
+            {"value": x.value, "name": x.name, "devices": [m.device_variant(d) for d in x.devices]}
+            for x in cm.functions
+        ],
+        "command_rows": rows,
+        "api_sets": api_sets,
+        "methods": methods,
+    }
 
-    # ------------------------------------------------------------ typed API
-    def api_sets(self) -> list[dict]:
-        out = []
-        for s in self.proto["sets"]:
-            if s["kind"] != "command":
-                continue
-            by_id = {f["id"]: f for f in s["fields"]}
-            commands = [self._command(s, f, by_id) for f in s["fields"] if f["role"] == "command"]
-            if commands:
-                module = self.m.set_module(s)
-                out.append(
-                    {
-                        "method": _set_method(module),
-                        "struct": camel(module) + "Commands",
-                        "title": s["title"],
-                        "set": _hex(s["id"]),
-                        "commands": commands,
-                    }
-                )
-        return out
 
-    def _command(self, s: dict, f: dict, by_id: dict) -> dict:
-        variants = f["variants"]
-        plain = variants[0]["functions"] is None
-        functions: list[str] = []
-        for v in variants:
-            for fn in v["functions"] or []:
-                if fn not in functions:
-                    functions.append(fn)
-        methods = []
-        for fn in [None] if plain else functions:
-            groups: dict[tuple, list[dict]] = {}
-            for v in variants:
-                if fn is not None and fn not in (v["functions"] or []):
-                    continue
-                sig = self._signature(v, fn)
-                groups.setdefault(tuple((a["name"], a["type"]) for a in sig["args"]), []).append({"v": v, "sig": sig})
-            split = len(groups) > 1
-            for group in groups.values():
-                base = ident(f["name"]) if fn is None else ident(fn)
-                name = f"{base}_{group[0]['v']['device']}" if split else base
-                builds = []
-                for g in group:
-                    v = g["v"]
-                    struct, wrap = self._constructor(s, f, v, "command")
-                    assign = list(g["sig"]["assign"])
-                    if len(assign) < len(model.layout(self.proto, v).params):
-                        assign.append(f"..<{struct} as crate::wire::Wire>::ZERO")
-                    builds.append(
-                        {
-                            "device": f"Model::{self.m.device_variant(v['device'])}" if v["device"] else None,
-                            "struct": struct,
-                            "wrap": wrap,
-                            "assign": assign,
-                        }
-                    )
-                reply = self._reply(s, f, [g["v"] for g in group], fn, by_id)
-                methods.append(
-                    {
-                        "name": name,
-                        "args": group[0]["sig"]["args"],
-                        "builds": builds,
-                        "returns": reply["type"],
-                        "extract": reply["extract"],
-                        "doc": (f"Function `{fn}`" if fn else f"Sends `{f['name']}`")
-                        + (f" (layout for {', '.join(g['v']['device'] for g in group)})" if split else "")
-                        + (": returns the reply field." if reply["type"] != "()" else "."),
-                    }
-                )
-        return {
-            "method": ident(f["name"]),
-            "struct": camel(f["name"]) + "Command",
-            "title": f["title"],
-            "plain": plain,
-            "methods": methods,
-            "descriptor": _hex(f["id"]),
-        }
+def _names(m: _Protocol, s: dict, f: dict, device: str | None) -> dict:
+    """The Rust names of field f's layout for device (None: its only layout): module, the set's
+    FieldValue variant, the field's SetField variant, its per-device variant and struct."""
+    module = m.set_module(s)
+    rust = camel(f["name"])
+    per_device = len(f["variants"]) > 1 and device is not None
+    return {
+        "module": module,
+        "set_variant": camel(module),
+        "type": rust,
+        "device_variant": m.device_variant(device) if per_device else None,
+        "struct": f"{rust}{camel(device)}" if per_device else rust,
+    }
 
-    def _signature(self, v: dict, fn: str | None) -> dict:
-        """The arguments of function fn of layout v, and the struct fields they set (count
-        parameters of counted arrays are set from the array)."""
-        pm = model.layout(self.proto, v)
-        counted = {q.count_param: q for q in pm.params if q.count_param}
-        args, assign = [], []
-        arg_optional: dict[str, bool] = {}
-        counts = []
+
+def _to_int(e: model.Elem) -> str:
+    """How a scalar parameter's value becomes an i64 (session_macros.j2 `to_int`)."""
+    if e.kind == "primitive":
+        return "bool" if e.name == "bool" else "primitive"
+    return "newtype"
+
+
+def _method(m: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Call) -> dict:
+    """One call of the typed API: its name, arguments (types through layout_macros.j2 `inner`),
+    the layout it builds per device and what it returns."""
+    base = ident(f["name"]) if c.function is None else ident(c.function)
+    name = f"{base}_{c.device}" if c.device is not None else base
+    required = {a.name: a.required for a in c.arguments}
+    builds = []
+    for i in c.variants:
+        v = f["variants"][i]
+        pm = model.layout(m.proto, v)
+        assign: list[dict] = []
         for q in pm.params:
-            x = ident(q.name)
             if q.function:
-                assign.append(f"{x}: crate::types::{camel(self.function_enum)}({self.fvalues[fn]})")
-                continue
-            qfns = q.ir.get("functions")
-            if qfns is not None and fn not in qfns:
-                continue
-            if q.name in counted:
-                counts.append(q)
-                continue
-            inner = self._inner(q)
-            required = (qfns is not None and fn not in (q.ir.get("optional_for") or [])) or not q.ir.get("optional")
-            arg_optional[q.name] = not required
-            if required:
-                args.append({"name": x, "type": inner})
-                assign.append(f"{x}: Some({x})" if q.optional else x)
-            else:
-                args.append({"name": x, "type": f"Option<{inner}>"})
-                assign.append(x)
-        for q in counts:
-            arr = counted[q.name]
-            a = ident(arr.name)
-            length = f"{a}.as_ref().map_or(0, |a| a.len())" if arg_optional.get(arr.name) else f"{a}.len()"
-            cast = f"{length} as {self.m.elem_type(q.elem)}"
-            assign.append(f"{ident(q.name)}: Some({cast})" if q.optional else f"{ident(q.name)}: {cast}")
-        args = [a for a in args if not a["type"].startswith("Option<")] + [
-            a for a in args if a["type"].startswith("Option<")
-        ]
-        return {"args": args, "assign": assign}
-
-    def _inner(self, q: model.Param) -> str:
-        elem = self.m.elem_type(q.elem)
-        if q.kind == "fixed":
-            return f"[{elem}; {q.count}]"
-        if q.kind in ("counted", "remaining"):
-            return f"crate::bounded::BoundedVec<{elem}, {q.max_count}>"
-        return elem
-
-    def _reply(self, s: dict, f: dict, variants: list[dict], fn: str | None, by_id: dict) -> dict:
-        ids: list[int] = []
-        for v in variants:
-            for r in v["responses"]:
-                w = r["when"] or {}
-                if "function" in w and w["function"] != fn:
-                    continue
-                if r["id"] not in ids:
-                    ids.append(r["id"])
-        if not ids:
-            return {"type": "()", "extract": None}
-        if len(ids) > 1:
-            return {"type": "Option<FieldValue>", "extract": "any"}
-        rf = by_id[ids[0]]
-        module = self.m.set_module(s)
-        rust = camel(rf["name"])
-        return {
-            "type": f"crate::{module}::{rust}",
-            "extract": f"FieldValue::{camel(module)}(crate::{module}::SetField::{rust}(r))",
-        }
+                assign.append(
+                    {
+                        "kind": "function",
+                        "field": ident(q.name),
+                        "enum": camel(cm.function_enum),
+                        "value": c.function_value,
+                    }
+                )
+            elif q.name in required:
+                some = required[q.name] and q.optional
+                assign.append({"kind": "some" if some else "plain", "field": ident(q.name)})
+        for k in c.counts:
+            q = next(x for x in pm.params if x.name == k.param)
+            assign.append(
+                {
+                    "kind": "count",
+                    "field": ident(k.param),
+                    "array": ident(k.array),
+                    "array_optional": not k.array_required,
+                    "type": m.elem_type(q.elem),
+                    "optional": q.optional,
+                }
+            )
+        names = _names(m, s, f, v["device"] if len(f["variants"]) > 1 else None)
+        builds.append(
+            {
+                "device": m.device_variant(v["device"]) if v["device"] else None,
+                "names": names,
+                "assign": assign,
+                "zero": len(assign) < len(pm.params),
+            }
+        )
+    v0 = model.layout(m.proto, f["variants"][c.variants[0]])
+    params = {q.name: q for q in v0.params}
+    args = [{"name": ident(a.name), "required": a.required, "p": m.param(params[a.name])} for a in c.arguments]
+    reply = None
+    if c.reply_kind == commands.FIELD:
+        reply = _names(m, s, next(x for x in s["fields"] if x["id"] == c.reply.descriptor), None)
+    returns = c.reply_kind != commands.NO_REPLY
+    return {
+        "name": name,
+        "args": args,
+        "builds": builds,
+        "reply_kind": c.reply_kind,
+        "reply": reply,
+        "doc": (f"Function `{c.function}`" if c.function else f"Sends `{f['name']}`")
+        + (f" (layout for {', '.join(d for d in c.devices if d)})" if c.device is not None else "")
+        + (": returns the reply field." if returns else "."),
+    }
 
 
 def _session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
-    """The session corpus cases of the protocol (generator/sessions.py) as Rust literals."""
+    """The session corpus cases of the protocol (generator/sessions.py) with their test names;
+    test_sessions.rs.j2 spells the steps."""
     out = []
     used: set[str] = set()
     for c in sessions:
@@ -940,153 +778,102 @@ def _session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
         while fn in used:
             fn += "_"
         used.add(fn)
-        steps = []
-        for st in c["steps"]:
-            if "send" in st:
-                steps.append(
-                    "Step::Send { at: %d, line: %s, bytes: %s }"
-                    % (st["at"], rust_str(st["send"]), _opt(rust_str(st["bytes"]) if st["bytes"] else None))
-                )
-            else:
-                steps.append("Step::Receive { at: %d, hex: %s }" % (st["at"], rust_str(st["receive"])))
-        out.append(
-            {
-                "fn": fn,
-                "name": c["name"],
-                "device": _opt(rust_str(c["device"]) if c["device"] else None),
-                "timeout_ms": c["timeout_ms"],
-                "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
-                "steps": steps,
-                "expect": [rust_str(line) for line in c["expect"]],
-            }
-        )
+        out.append({**c, "fn": fn})
     return out
 
 
-def _session_example(m: _Protocol, api_sets: list[dict]) -> dict | None:
-    """The context of examples/configure_and_stream.rs (generator/examples.py session_example) as
-    calls of the typed command API (command_api.rs.j2) with literal arguments, or None for a
-    protocol without the example."""
+def _session_example(m: _Protocol, session: dict) -> dict | None:
+    """The context of examples/configure_and_stream.rs (generator/examples.py session_example): per
+    step the call of the typed command API (command_api.rs.j2) and its arguments as values that
+    session_macros.j2 spells, or None for a protocol without the example."""
     ex = session_example(m.proto)
     if ex is None:
         return None
-    pkg = m.package
     device = ex["device"]
 
-    def literal(tref: dict, value, top: bool = True) -> str:
+    def literal(tref: dict, value, top: bool = True) -> dict:
         kind = tref["kind"]
         if kind == "struct":
             t = m.types[tref["name"]]
             qs = {q["name"]: q["type"] for q in t["params"]}
             if set(value) != set(qs):
                 raise ExampleError(f"Rust back end: the example gives {sorted(value)} of {tref['name']} ({sorted(qs)})")
-            inner = ", ".join(f"{ident(k)}: {literal(qs[k], v, False)}" for k, v in value.items())
-            return f"{pkg}::types::{camel(tref['name'])} {{ {inner} }}"
+            fields = [{"field": ident(k), "value": literal(qs[k], v, False)} for k, v in value.items()]
+            return {"kind": "struct", "type": camel(tref["name"]), "fields": fields}
         if kind == "enum":
             t = m.types[tref["name"]]
             number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
             name = next((x["name"] for x in t["values"] if x["value"] == number), None)
-            enum = f"{pkg}::types::{camel(tref['name'])}"
-            return f"{enum}::{upper(name)}" if name is not None else f"{enum}({number})"
+            return {
+                "kind": "enum",
+                "type": camel(tref["name"]),
+                "member": upper(name) if name else None,
+                "number": number,
+            }
         if kind == "primitive" and tref["name"] == "bool":
-            return "true" if value else "false"
+            return {"kind": "bool", "value": bool(value)}
         if kind == "primitive" and tref["name"] in ("float", "double"):
-            return repr(float(value))
+            return {"kind": "text", "text": repr(float(value))}
         if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
-            return f"0x{value:02X}" if value >= 0x10 and top else str(value)
+            return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
         raise ExampleError(f"Rust back end: the configure-and-stream example cannot write a {kind} value {value!r}")
 
     def call(step: str, fn: str | None) -> dict:
-        """`device.<set>().<command>()[.<function>](args)` and the `let`s of its bounded arrays."""
+        """The call, its arguments and the `let`s of its bounded arrays."""
         st = ex[step]
-        api = next(a for a in api_sets if a["method"] == _set_method(m.set_module(st["set"])))
-        command = next(c for c in api["commands"] if c["method"] == ident(st["field"]["name"]))
-        names = {x["name"]: x for x in command["methods"]}
-        base = ident(st["field"]["name"]) if fn is None else ident(fn)
-        method = names.get(f"{base}_{device}") or names.get(base)
-        if method is None:
-            raise ExampleError(f"Rust back end: {st['field']['name']} has no method {base} for {device}")
-        params = {ident(q.name): q for q in model.layout(m.proto, st["variant"]).params}
-        values = {ident(k): v for k, v in st["values"].items()} if fn in (None, "write") else {}
+        c = st["calls"][fn]
+        at = session["methods"][c]
+        params = {q.name: q for q in model.layout(m.proto, st["variant"]).params}
+        values = st["values"] if fn in (None, "write") else {}
         args, lets = [], []
-        for a in method["args"]:
-            q = params[a["name"]]
-            if a["name"] not in values:
-                if a["type"].startswith("Option<"):
-                    args.append("None")
+        for a in c.arguments:
+            q = params[a.name]
+            if a.name not in values:
+                if not a.required:
+                    args.append({"kind": "none"})
                     continue
                 raise ExampleError(
                     f"Rust back end: the configure-and-stream example gives no value for {q.name} of"
                     f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
                 )
-            value, tref = values[a["name"]], q.ir["type"]
+            value, tref = values[a.name], q.ir["type"]
             if q.kind == "fixed":
-                text = "[" + ", ".join(literal(tref, v) for v in value) + "]"
+                arg = {"kind": "array", "elems": [literal(tref, v) for v in value]}
             elif q.kind in ("counted", "remaining"):
-                items = ", ".join(literal(tref, v) for v in value)
-                lets.append(
-                    f'let {a["name"]} = {pkg}::bounded::BoundedVec::from_slice(&[{items}]).ok_or("too many {q.name}")?;'
-                )
-                text = a["name"]
+                lets.append({"name": ident(a.name), "param": q.name, "elems": [literal(tref, v) for v in value]})
+                arg = {"kind": "local", "name": ident(a.name)}
             else:
-                text = literal(tref, value)
-            args.append(f"Some({text})" if a["type"].startswith("Option<") else text)
-        head = f"device.{api['method']}()"
-        target = f"{head}.{method['name']}" if command["plain"] else f"{head}.{command['method']}().{method['name']}"
-        returns = method["returns"].rsplit("::", 1)[-1]
-        return {"call": f"{target}({', '.join(args)})", "lets": lets, "returns": returns}
-
-    def fn_of(step: str) -> str | None:
-        return "write" if ex[step]["field"]["functions"] else None
+                arg = literal(tref, value)
+            args.append({"kind": "some", "value": arg} if not a.required else arg)
+        reply = at["method"]["reply"]
+        return {
+            "set": at["set"]["method"],
+            "command": None if at["command"]["plain"] else at["command"]["method"],
+            "method": at["method"]["name"],
+            "args": args,
+            "lets": lets,
+            "returns": reply["type"] if reply else None,
+            "reply_kind": at["method"]["reply_kind"],
+        }
 
     data_set = ex["data"]["set"]
-    module = m.set_module(data_set)
     fields = []
     for f in ex["data"]["fields"]:
         if len(f["variants"]) > 1:
             raise ExampleError(f"Rust back end: the example's data field {f['name']} has per-device layouts")
-        fields.append(
-            {
-                "name": f["name"],
-                "descriptor": _hex(f["id"]),
-                "pattern": f"FieldValue::{camel(module)}({pkg}::{module}::SetField::{camel(f['name'])}(v))",
-            }
-        )
-    setting_write, setting_read = call("setting", "write"), call("setting", "read")
+        fields.append({"name": f["name"], "descriptor": f["id"], "names": _names(m, data_set, f, None)})
     titles = {d["id"]: d["title"] for d in m.proto["devices"]}
     return {
-        "program": ex["program"],
-        "count": ex["count"],
+        **session_example_context(ex, call),
         "title": titles.get(device, device),
         "model": m.device_variant(device),
-        "ping": call("ping", None),
-        "info": call("info", None),
-        "info_title": ex["info"]["field"]["title"],
-        "setting_title": ex["setting"]["field"]["title"],
-        "setting_write": setting_write,
-        "setting_read": setting_read,
-        "format_title": ex["format"]["field"]["title"],
-        "format": call("format", fn_of("format")),
-        "enable_title": ex["enable"]["field"]["title"],
-        "enable": call("enable", fn_of("enable")),
-        "data_set": _hex(data_set["id"]),
-        "data_set_title": data_set["title"],
         "data_fields": fields,
-        "readme": [
-            *setting_write["lets"],
-            setting_write["call"] + "?;",
-            f"let setting = {setting_read['call']}?; // {setting_read['returns']}",
-        ],
     }
 
 
 def _set_method(module: str) -> str:
     """The method of `device::Device` that gives a set's typed commands (`device.threedm()`)."""
     return ident(module + "_set" if module in DEVICE_METHODS else module)
-
-
-def _opt(v) -> str:
-    return "None" if v is None else f"Some({v})"
 
 
 # ---------------------------------------------------------------------------------------- entry points
@@ -1141,6 +928,7 @@ def _runtime_files(package: str) -> dict[str, str]:
 def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
+    env.filters["rust_str"] = rust_str
     checksum = copy_runtime("rust", {_RUNTIME_CHECKSUM: "src/framing.rs"})["src/framing.rs"]
     files: dict[str, str] = {}
     for proto in ir["protocols"]:
@@ -1152,9 +940,10 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
         ctx["example"] = _example(proto)
-        ctx.update(_Session(model).context())
+        session = session_context(model)
+        ctx.update(session)
         ctx["session_cases"] = _session_cases(proto, list(sessions))
-        ctx["session_example"] = _session_example(model, ctx["api_sets"])
+        ctx["session_example"] = _session_example(model, session)
         root = f"rust/{model.package}/"
         files[root + "LICENSE"] = release.license
         for tpl, out in _TEMPLATES:

@@ -165,24 +165,19 @@ inline Call default_(Connection &connection, const decltype(::mipcodec::base::Co
 
 /// GPS time update
 namespace gps_time_update {
-inline Call
-write_gx5_45(Connection &connection, const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
-             const typename decltype(::mipcodec::base::GpsTimeUpdateGx545::value)::value_type &value,
-             const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GpsTimeUpdateGx545 v{};
+inline Call write(Connection &connection,
+                  const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
+                  const typename decltype(::mipcodec::base::GpsTimeUpdateGx545::value)::value_type &value,
+                  const StartOptions &options = {}) {
+    if (connection.session().device() == Device::cv7_ins) {
+        ::mipcodec::base::GpsTimeUpdateCv7Ins v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
         v.field_id = field_id;
         v.value = value;
         return connection.run(v, options);
     }
-}
-inline Call write_cv7_ins(Connection &connection,
-                          const decltype(::mipcodec::base::GpsTimeUpdateCv7Ins::field_id) &field_id,
-                          const decltype(::mipcodec::base::GpsTimeUpdateCv7Ins::value) &value,
-                          const StartOptions &options = {}) {
     {
-        ::mipcodec::base::GpsTimeUpdateCv7Ins v{};
+        ::mipcodec::base::GpsTimeUpdateGx545 v{};
         v.function = ::mipcodec::types::FunctionSelector::write;
         v.field_id = field_id;
         v.value = value;
