@@ -227,6 +227,7 @@ def test_cv7_rtk_fix_moves_with_corrections_and_outages() -> None:
             assert low <= sample(sim, 0x91, 0x03, at).horizontal_accuracy <= high, at
             uncertainty = sample(sim, 0x82, 0x08, at)
             assert low <= uncertainty.north <= high and int(uncertainty.valid_flags) == 1, at
+    assert sample(sim, 0x82, 0x08, 20.5).north > RANGES[FIX.FIX_3D][1]  # coasting: worse than single point
 
 
 def test_cv7_rtk_flags_only_while_the_filter_takes_gnss() -> None:

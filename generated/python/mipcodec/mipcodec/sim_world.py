@@ -430,6 +430,7 @@ class World:
             else 0
         )
         horizontal = sigma if solution else (rtk["uncertainty"]["single"] if rtk else 1.2)
+        coasting = horizontal if gnss_aiding else 2.0 * (rtk or {}).get("uncertainty", {}).get("single", 0.0)
         fixes = nav.profile.get("fix")
         fix_type = {"fix_type": rtk["fix"][0 if solution == "float" else 1]} if solution else {}
         if fixes and not fix_type:
@@ -464,7 +465,7 @@ class World:
             "ecef_position": ecef,
             "horizontal_accuracy": horizontal,
             "vertical_accuracy": 1.6 * horizontal if rtk else 2.0,
-            "position_uncertainty": horizontal if rtk and gnss_aiding else 0.3,
+            "position_uncertainty": coasting if rtk and "gnss" in nav.internal else 0.3,
             "velocity_uncertainty": 0.05,
             "attitude_uncertainty": 0.005,
             "gps_tow": tow,
@@ -472,7 +473,6 @@ class World:
             "utc": (y, mo, d, int(secs // 3600), int(secs % 3600 // 60), int(secs % 60), int(secs * 1000 % 1000)),
             "gnss_fix": fix,
             **fix_type,
-            "rtk": solution,
             "gnss_aiding_status": gnss_status,
             "num_sv": 14 if fix else 0,
             "filter_state": state,
