@@ -7,7 +7,8 @@ one of its layouts (a list's `descriptor`/`decimation` members of the list's str
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
 members are members of the ack code enum; the filter's enums exist and name their members, and its internal
 aiding (the status flag roles, heading update sources, aiding measurement control sources, heading
-alignment methods, antenna offsets, dual-antenna status) names commands, their parameters, enum and
+alignment methods, antenna offsets, dual-antenna status, RTK fix members, aiding status flags and
+uncertainties) names commands, their parameters, enum and
 bitfield members; the descriptor lists' commands, replies and list parameters exist (a reply of that
 command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
 descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
@@ -310,3 +311,21 @@ class _Checker:
         if dual:
             self.members(path + ("dual_antenna", "fix"), dual["fix"]["enum"], [dual["fix"]["fix"], dual["fix"]["none"]])
             self.bits(path + ("dual_antenna", "flags"), dual["flags"]["type"], list(dual["flags"]["members"].values()))
+        rtk = entry.get("rtk")
+        if rtk:
+            self.members(path + ("rtk", "fix"), rtk["fix"]["enum"], [rtk["fix"]["float"], rtk["fix"]["fixed"]])
+            if rtk["fix"]["enum"] != entry["fix"]["enum"]:
+                self.err(
+                    path + ("rtk", "fix", "enum"),
+                    f"simulation: the RTK fix enum '{rtk['fix']['enum']}' is not the filter's fix enum '{entry['fix']['enum']}'",
+                    "the enum of the filter's `fix`",
+                )
+            status = rtk["aiding_status"]
+            self.bits(path + ("rtk", "aiding_status"), status["type"], list(status["members"].values()))
+            u = rtk["uncertainty"]
+            if not u["single"] > u["float"] > u["fixed"]:
+                self.err(
+                    path + ("rtk", "uncertainty"),
+                    "simulation: the position uncertainties must shrink from single point to RTK float to RTK fixed",
+                    "single > float > fixed",
+                )

@@ -165,6 +165,85 @@ def test_cv7_aiding_source_all_and_disable() -> None:
     assert sample(sim, 0x82, 0x10, 4.0).filter_state == MODE.VERT_GYRO  # 2 s after the last heading
 
 
+def _read_source(sim, source) -> bool:
+    ack = command(sim, pkg.filter.AidingMeasurementControl(function=2, source=source), 0.0)
+    assert ack[0][1] == 0
+    return bool(ack[0][2][0].enable)
+
+
+def test_cv7_aiding_settings_follow_the_order_of_writes() -> None:
+    sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    _enable(sim, SOURCE.ALL)
+    off = pkg.filter.AidingMeasurementControl(function=1, source=SOURCE.MAGNETOMETER, enable=False)
+    assert command(sim, off, 0.0)[0][1] == 0
+    # ALL, then the magnetometer off: every source but the magnetometer, as read back one by one
+    assert not _read_source(sim, SOURCE.MAGNETOMETER)
+    for source in (SOURCE.GNSS_POS_VEL, SOURCE.GNSS_HEADING, SOURCE.ALTIMETER):
+        assert _read_source(sim, source), source
+    assert sample(sim, 0x82, 0x10, 3.0).filter_state == MODE.VERT_GYRO  # static, no antennas: no heading left
+    _enable(sim, SOURCE.ALL)  # ALL written last wins again
+    assert _read_source(sim, SOURCE.MAGNETOMETER)
+    assert sample(sim, 0x82, 0x10, 3.0).filter_state == MODE.FULL_NAV  # magnetometer heading, GNSS position
+    assert command(sim, off, 0.0)[0][1] == 0
+    _enable(sim, SOURCE.MAGNETOMETER)  # and the single source written after ALL
+    assert _read_source(sim, SOURCE.MAGNETOMETER) and _read_source(sim, SOURCE.GNSS_POS_VEL)
+
+
+# RTK (CV7 fix types FIX_3D 0, FIX_RTK_FLOAT 5, FIX_RTK_FIXED 6, line 5163; GNSS position aiding
+# status 0x82,0x43 bits 1 differential, 2 integer fix, 14 no fix, line 4594; typical 1 sigma
+# position uncertainty single point 1.25-2.5 m, RTK float 0.1-0.8 m, RTK fixed 0.01-0.06 m, line
+# 2857; an RTK fix is lost with the corrections, line 2801). The times are the simulator's stated
+# choice (docs/simulator-world.md "RTK"): RTK float 3 s, RTK fixed 10 s after corrections and a fix.
+FIX = t.GnssFixTypeCv7
+DIFFERENTIAL, INTEGER_FIX, NO_FIX = 1 << 1, 1 << 2, 1 << 14
+RANGES = {FIX.FIX_3D: (1.25, 2.5), FIX.FIX_RTK_FLOAT: (0.1, 0.8), FIX.FIX_RTK_FIXED: (0.01, 0.06)}
+
+
+def test_cv7_rtk_fix_moves_with_corrections_and_outages() -> None:
+    assert (world_mod.RTK_FLOAT_AFTER, world_mod.RTK_FIXED_AFTER) == (3.0, 10.0)
+    sim = sim_mod.Simulator("cv7_ins", scenario="circle")
+    sim.world.rtk_corrections.append((4.0, 30.0))
+    sim.world.gnss_outages.append((20.0, 22.0))
+    _enable(sim, SOURCE.GNSS_POS_VEL, SOURCE.GNSS_HEADING)
+    _antennas(sim, 1, 2)
+    expected = [
+        (3.5, FIX.FIX_3D, 0),  # a fix, no corrections yet
+        (6.5, FIX.FIX_3D, 0),  # corrections for 2.5 s
+        (7.5, FIX.FIX_RTK_FLOAT, DIFFERENTIAL),
+        (13.5, FIX.FIX_RTK_FLOAT, DIFFERENTIAL),
+        (14.5, FIX.FIX_RTK_FIXED, DIFFERENTIAL | INTEGER_FIX),
+        (21.0, FIX.FIX_NONE, NO_FIX),  # the outage: no fix, nothing RTK
+        (22.5, FIX.FIX_3D, 0),  # the fix is back, the RTK solution starts over
+        (25.5, FIX.FIX_RTK_FLOAT, DIFFERENTIAL),
+        (29.5, FIX.FIX_RTK_FLOAT, DIFFERENTIAL),
+        (30.5, FIX.FIX_3D, 0),  # corrections stopped
+    ]
+    for at, fix, status in expected:
+        for receiver in (0x91, 0x92):
+            assert sample(sim, receiver, 0x0B, at).fix_type == fix, (at, receiver)
+        assert int(sample(sim, 0x82, 0x43, at).status) == status, at
+        if fix in RANGES:
+            low, high = RANGES[fix]
+            assert low <= sample(sim, 0x91, 0x03, at).horizontal_accuracy <= high, at
+            uncertainty = sample(sim, 0x82, 0x08, at)
+            assert low <= uncertainty.north <= high and int(uncertainty.valid_flags) == 1, at
+    assert sample(sim, 0x82, 0x08, 20.5).north > RANGES[FIX.FIX_3D][1]  # coasting: worse than single point
+
+
+def test_cv7_rtk_flags_only_while_the_filter_takes_gnss() -> None:
+    sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    sim.world.rtk_corrections.append((0.0, 60.0))
+    assert sample(sim, 0x91, 0x0B, 13.0).fix_type == FIX.FIX_RTK_FIXED  # the receiver resolves on its own
+    assert int(sample(sim, 0x82, 0x43, 13.0).status) == 0  # the filter processes no GNSS
+
+
+def test_rtk_corrections_option_is_checked() -> None:
+    for bad in (["--rtk-corrections", "5"], ["--rtk-corrections", "9:3"]):
+        run = subprocess.run([str(SIMULATE), "--listen", "pty", *bad], capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2 and "--rtk-corrections" in run.stderr and "Traceback" not in run.stderr, run.stderr
+        assert len(run.stderr.strip().splitlines()) == 1
+
+
 def _alignment(sim, bits: int) -> None:
     config = pkg.filter.InitializationConfiguration(
         function=1, wait_for_run_command=0, initial_cond_src=0, auto_heading_alignment_selector=bits,
@@ -322,3 +401,45 @@ def test_cv7_gnss_ins_program_reaches_full_navigation(transport: str) -> None:
         assert abs(_yaw_error(s["euler_angles"].yaw, yaw)) < 0.03
         dual = s["gnss_dual_antenna_status"]
         assert dual.fix_type == t.FilterDualAntennaFixType.FIX_DA_FIXED and int(dual.status_flags) == 0b111
+
+
+def cv7_rtk_program(address: str) -> dict:
+    """Every source but the magnetometer (ALL, then the magnetometer off), both antennas, the
+    receiver's fix info and the filter's RTK fields streamed until RTK fixed."""
+    dev = open_device(pkg, address, "cv7_ins")
+    seen: dict = {"fix": [], "status": [], "uncertainty": [], "state": []}
+    try:
+        _setup(dev, (0x10, 0x08, 0x43), (SOURCE.ALL,))
+        dev.filter.aiding_measurement_control.write(source=SOURCE.MAGNETOMETER, enable=False)
+        seen["magnetometer"] = dev.filter.aiding_measurement_control.read(source=SOURCE.MAGNETOMETER).enable
+        seen["gnss"] = dev.filter.aiding_measurement_control.read(source=SOURCE.GNSS_POS_VEL).enable
+        dev.threedm.message_format.write(desc_set=0x91, descriptors=[t.DescriptorRate(descriptor=0x0B, decimation=1)])
+        dev.filter.multi_antenna_offset.write(receiver_id=1, antenna_offset=[0.5, 0.0, -0.2])
+        dev.filter.multi_antenna_offset.write(receiver_id=2, antenna_offset=[-0.5, 0.0, -0.2])
+        dev.on_field(0x91, 0x0B, lambda v, p: seen["fix"].append(v.fix_type))
+        dev.on_field(0x82, 0x43, lambda v, p: seen["status"].append(int(v.status)))
+        dev.on_field(0x82, 0x08, lambda v, p: seen["uncertainty"].append(v.north))
+        dev.on_field(0x82, 0x10, lambda v, p: seen["state"].append(v.filter_state))
+        dev.filter.reset_filter()
+        dev.base.resume()
+        deadline = time.monotonic() + 30.0 / SPEED + 10.0
+        while time.monotonic() < deadline and FIX.FIX_RTK_FIXED not in seen["fix"][-1:]:
+            pump_for(dev, 0.2)
+        pump_for(dev, 0.3)
+        return seen
+    finally:
+        dev.transport.close()
+
+
+def test_cv7_rtk_program_over_tcp() -> None:
+    args = ("--scenario", "circle", "--speed", str(SPEED), "--rtk-corrections", "0:1000")
+    with Sim("mip", "cv7_ins", listen_for("tcp"), *args) as sim:
+        seen = cv7_rtk_program(sim.address)
+    assert not seen["magnetometer"]
+    assert seen["gnss"]
+    fixes = [f for i, f in enumerate(seen["fix"]) if i == 0 or seen["fix"][i - 1] != f]
+    rtk = [f for f in fixes if f != FIX.FIX_NONE]
+    assert rtk == [FIX.FIX_3D, FIX.FIX_RTK_FLOAT, FIX.FIX_RTK_FIXED], fixes  # in that order, none skipped
+    assert seen["status"][-1] == DIFFERENTIAL | INTEGER_FIX
+    assert 0.01 <= seen["uncertainty"][-1] <= 0.06
+    assert seen["state"][-1] == MODE.FULL_NAV  # dual-antenna heading, GNSS position: no magnetometer needed

@@ -1050,6 +1050,13 @@ def _filters(sim: dict | None, types: dict | None = None) -> dict:
         if "dual_antenna" in e:
             d = e["dual_antenna"]
             f["dual_antenna"] = {"fix": [d["fix"]["fix"], d["fix"]["none"]], "flags": masks(d["flags"])}
+        if "rtk" in e:
+            r = e["rtk"]
+            f["rtk"] = {
+                "fix": [r["fix"]["float"], r["fix"]["fixed"]],
+                "aiding_status": masks(r["aiding_status"]),
+                "uncertainty": dict(r["uncertainty"]),
+            }
         out[e["device"]] = f
     return out
 
@@ -1155,6 +1162,7 @@ WORLD: dict[str, dict[str, dict[str, str]]] = {
             "source": "flags:heading_sources",
             "valid_flags": "valid:heading_update",
         },
+        "gnss_position_aiding_status": {"time_of_week": "gps_tow", "status": "flags:gnss_aiding_status"},
         "gnss_dual_antenna_status": {
             "time_of_week": "gps_tow",
             "heading": "dual_heading",

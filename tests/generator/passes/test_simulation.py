@@ -185,3 +185,38 @@ def test_internal_aiding_names_are_checked(tmp_path):
     ]
     for message in expected:
         assert any(message in e for e in got), (message, got)
+
+
+RTK = """\
+      rtk:
+        fix: {enum: FilterState, float: init, fixed: navigating}
+        aiding_status: {type: Flags, members: {corrections: heading, integer_fix: offsets, no_fix: magnetometer}}
+        uncertainty: {single: 1.5, float: 0.5, fixed: 0.02}
+"""
+
+
+def test_rtk_is_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _aiding(AIDING + RTK), "simulation")
+    assert errors(ctx) == []
+    rtk = ctx.simulation["filters"][0]["rtk"]
+    assert rtk["fix"] == {"enum": "FilterState", "float": "init", "fixed": "navigating"}
+    assert rtk["uncertainty"]["fixed"] == 0.02
+
+
+def test_rtk_names_and_uncertainties_are_checked(tmp_path):
+    bad = (
+        RTK.replace("float: init", "float: rtk_float")
+        .replace("integer_fix: offsets", "integer_fix: integer")
+        .replace("float: 0.5, fixed: 0.02", "float: 0.01, fixed: 0.02")
+    )
+    got = errors(build(tmp_path, _aiding(AIDING + bad), "simulation"))
+    expected = [
+        "'rtk_float' is not a member of FilterState",
+        "'integer' is not a member of Flags",
+        "the position uncertainties must shrink from single point to RTK float to RTK fixed",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    other = RTK.replace("enum: FilterState, float", "enum: AckCode, float")
+    got = errors(build(tmp_path, _aiding(AIDING + other), "simulation"))
+    assert any("is not the filter's fix enum 'FilterState'" in e for e in got), got

@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "175f2b28eeeef7ea"
+SPEC_HASH = "20aba106ded5439c"
 
 __all__ = [
     "SPEC_HASH",

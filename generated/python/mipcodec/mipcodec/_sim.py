@@ -948,6 +948,7 @@ WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
         ("valid_flags", "valid:heading_update"),
     ),
     filter_data.EcefPosition: (("position", "ecef_position"), ("valid_flags", "valid:navigation")),
+    filter_data.GnssPositionAidingStatus: (("time_of_week", "gps_tow"), ("status", "flags:gnss_aiding_status")),
     filter_data.GnssDualAntennaStatus: (
         ("time_of_week", "gps_tow"),
         ("heading", "dual_heading"),
@@ -1061,6 +1062,11 @@ FILTER: Dict[str, Dict[str, Any]] = {
         "dual_antenna": {
             "fix": ["fix_da_fixed", "fix_none"],
             "flags": {"receiver_1": 1, "receiver_2": 2, "offsets": 4},
+        },
+        "rtk": {
+            "fix": ["fix_rtk_float", "fix_rtk_fixed"],
+            "aiding_status": {"corrections": 2, "integer_fix": 4, "no_fix": 16384},
+            "uncertainty": {"single": 1.5, "float": 0.5, "fixed": 0.02},
         },
     },
 }

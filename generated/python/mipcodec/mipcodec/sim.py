@@ -238,6 +238,7 @@ class Simulator:
         if type(command) in _sim.ALL_SETTINGS and kind in ("save", "load", "default"):
             self._all(kind)
         elif kind in ("write", "write_no_ack"):
+            self.current.pop(key, None)  # in the order of the writes: the latest last
             self.current[key] = command
         elif kind in ("save", "load", "default"):
             for k in self._matching(key):
@@ -315,7 +316,11 @@ class Simulator:
             if not any(type(v) in frames and int(getattr(v, "frame_id", -1)) == frame for v in self.current.values()):
                 return int(_sim.NACK["invalid_parameter"])
             enables = [(c, a) for c, a in _sim.ACTIONS.items() if a[0] == "enable"]
-            enabled = any(self._setting_on(c, a[2], **{a[1]: action[2]}) for c, a in enables)
+            internal = _sim.FILTER.get(self.device, {}).get("internal")
+            if internal:  # the aiding measurement control, in the order of its writes
+                enabled = any(self._aiding_enabled(internal, v) for v in action[2] if v != internal["all"])
+            else:
+                enabled = any(self._setting_on(c, a[2], **{a[1]: action[2]}) for c, a in enables)
             if enabled and int(getattr(command, "valid_flags", 0) or 0):
                 values = [getattr(command, a) for a in action[3]]
                 flat = [float(x) for v in values for x in (v if isinstance(v, list) else [v])]
@@ -378,6 +383,11 @@ class Simulator:
                 v = getattr(source, a)
                 if a != "function" and v is not None:
                     values[a] = v
+        internal = _sim.FILTER.get(self.device, {}).get("internal")
+        if internal and command.NAME == internal["command"]:  # a source's effective state (ALL included)
+            source = int(values.get(internal["param"], -1) or 0)
+            if source != internal["all"]:
+                values[internal["enable"]] = self._aiding_enabled(internal, source)
         # A reply parameter named otherwise than the command's (enable -> enabled) takes the value
         # of the command parameter at its position, when both have as many.
         sent = [a for a in type(command)._ATTRS if a != "function"]
@@ -519,14 +529,8 @@ class Simulator:
         nav = self.world.filter
         internal = profile.get("internal")
         if internal:
-            every = () if internal["all"] is None else (internal["all"],)
             nav.internal = [
-                source
-                for value, source in internal["sources"].items()
-                if any(
-                    self._setting_on(c, internal["enable"], **{internal["param"]: (value,) + every})
-                    for c in self._named(internal["command"])
-                )
+                source for value, source in internal["sources"].items() if self._aiding_enabled(internal, value)
             ]
         heading = profile.get("heading")
         if heading:
@@ -555,6 +559,19 @@ class Simulator:
                     offsets[receiver] = tuple(float(x) for x in getattr(value, antennas["offset"], None) or ())
             a, b = offsets.get(1), offsets.get(2)
             nav.antennas_ok = bool(a and b and len(a) == len(b) and math.dist(a, b) > 0.0)
+
+    def _aiding_enabled(self, internal: Dict[str, Any], value: int) -> bool:
+        """Whether the aiding measurement control enables a source: its factory value (the spec's
+        default), then every write of that source or of ALL in the order written, the latest
+        winning (ALL then one source off: every source but that one)."""
+        classes = self._named(internal["command"])
+        on = any(bool(self._factory(c).get(internal["enable"])) for c in classes)
+        for setting in self.current.values():
+            if any(type(setting) is c for c in classes):
+                source = int(getattr(setting, internal["param"], -1) or 0)
+                if source == value or (internal["all"] is not None and source == internal["all"]):
+                    on = bool(getattr(setting, internal["enable"], False))
+        return on
 
     def poll(self, now: float) -> List[Chunk]:
         """The data packets due by `now` (each at its tick's time)."""
@@ -1040,6 +1057,14 @@ def _parser() -> argparse.ArgumentParser:
         help="a magnetic disturbance near the device from START to END seconds of simulated time (repeatable): "
         "the magnetometer reads it, a filter using the magnetometer for heading rejects it and flags it",
     )
+    p.add_argument(
+        "--rtk-corrections",
+        action="append",
+        default=[],
+        metavar="START:END",
+        help="RTK corrections reach the receivers from START to END seconds of simulated time (repeatable): "
+        "with a fix their solution goes to RTK float, then RTK fixed (devices whose spec describes RTK)",
+    )
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
     for flag, item in IDENTITY_FLAGS.items():
         p.add_argument(
@@ -1107,6 +1132,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             )
             sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
             sim.world.mag_disturbances.extend(_outage(text, "--mag-disturbance") for text in args.mag_disturbance)
+            sim.world.rtk_corrections.extend(_outage(text, "--rtk-corrections") for text in args.rtk_corrections)
         serve(args.listen, sim, replay)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)

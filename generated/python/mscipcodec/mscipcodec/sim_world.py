@@ -28,6 +28,11 @@ KINEMATIC_SPEED = 2.0  # m/s: GNSS velocity gives a heading from this speed on (
 MAG_DISTURBANCE = (0.15, 0.10, 0.30)  # gauss, body frame: a magnetic disturbance (--mag-disturbance)
 INTERNAL_GAIN = 0.1  # how far each sample of an internal sensor pulls the filter's output toward it
 MAG_ANOMALY = 0.10  # a field magnitude this far (relative) from the model's is rejected as disturbed
+# RTK (--rtk-corrections): seconds of corrections and a fix without a break before the receivers
+# report RTK float, then RTK fixed (the manuals state no times: the simulator's choice, in the
+# order of an RTK receiver's ambiguity resolution)
+RTK_FLOAT_AFTER = 3.0
+RTK_FIXED_AFTER = 10.0
 
 Vec = Tuple[float, float, float]
 # Quantities in radians (every other angle, latitude and longitude, is in degrees)
@@ -266,6 +271,7 @@ class World:
         )
         self.gnss_outages: List[Tuple[float, float]] = []
         self.mag_disturbances: List[Tuple[float, float]] = []
+        self.rtk_corrections: List[Tuple[float, float]] = []  # when RTK corrections reach the receivers
 
     def capture_gyro_bias(self) -> Vec:
         """The bias a capture measures (the true bias plus a little noise); the gyro output is
@@ -292,6 +298,18 @@ class World:
 
     def gnss_fix(self, t: float) -> bool:
         return t >= GNSS_FIX_AFTER and not any(a <= t < b for a, b in self.gnss_outages)
+
+    def rtk(self, t: float) -> str:
+        """The receivers' RTK solution at t: "" (none: no fix, or no corrections), "float" or
+        "fixed", by how long corrections and a fix have both lasted without a break."""
+        if not self.gnss_fix(t):
+            return ""
+        flowing = [a for a, b in self.rtk_corrections if a <= t < b]
+        if not flowing:
+            return ""
+        since = max([GNSS_FIX_AFTER, min(flowing)] + [b for _, b in self.gnss_outages if b <= t])
+        held = t - since
+        return "fixed" if held >= RTK_FIXED_AFTER else "float" if held >= RTK_FLOAT_AFTER else ""
 
     def mag_disturbed(self, t: float) -> bool:
         return any(a <= t < b for a, b in self.mag_disturbances)
@@ -356,7 +374,10 @@ class World:
             mag = tuple(mag[k] + MAG_DISTURBANCE[k] for k in range(3))  # type: ignore[assignment]
         mag = tuple(m + n(0.0, 1e-4) for m in mag)  # type: ignore[assignment]
         fix = self.gnss_fix(t)
-        gnss_err = (n(0.0, 0.5), n(0.0, 0.5), n(0.0, 0.8))
+        rtk = self.filter.profile.get("rtk") or {}
+        solution = self.rtk(t) if rtk else ""
+        sigma = rtk["uncertainty"][solution] if solution else 0.5  # the receivers' horizontal 1 sigma (m)
+        gnss_err = (n(0.0, sigma), n(0.0, sigma), n(0.0, 1.6 * sigma))
         gnss_pos = tuple(pos[k] + gnss_err[k] for k in range(3))
         gnss_vel = tuple(v + n(0.0, 0.05) for v in vel)
         dual = self._aid_internal(t, fix, pos, vel, yaw, mag, euler, (gnss_pos, gnss_vel))  # type: ignore[arg-type]
@@ -400,6 +421,20 @@ class World:
         )
         dual_fix = (nav.profile.get("dual_antenna") or {}).get("fix", ["", ""])[0 if dual["dual"] else 1]
         in_use = (nav.profile.get("heading") or {}).get("in_use", {})
+        gnss_aiding = "gnss" in nav.in_use
+        status_roles = rtk.get("aiding_status", {})
+        gnss_status = (0 if fix else status_roles.get("no_fix", 0)) | (
+            (status_roles.get("corrections", 0) if solution else 0)
+            | (status_roles.get("integer_fix", 0) if solution == "fixed" else 0)
+            if gnss_aiding
+            else 0
+        )
+        horizontal = sigma if solution else (rtk["uncertainty"]["single"] if rtk else 1.2)
+        coasting = horizontal if gnss_aiding else 2.0 * (rtk or {}).get("uncertainty", {}).get("single", 0.0)
+        fixes = nav.profile.get("fix")
+        fix_type = {"fix_type": rtk["fix"][0 if solution == "float" else 1]} if solution else {}
+        if fixes and not fix_type:
+            fix_type = {"fix_type": fixes[0 if fix else 1]}
         speed = math.hypot(vel[0], vel[1])
         return {
             "specific_force": tuple(f + n(0.0, 0.002) for f in force),
@@ -428,15 +463,17 @@ class World:
             "speed": speed,
             "course": math.atan2(vel[1], vel[0]) if speed > 0.1 else yaw,
             "ecef_position": ecef,
-            "horizontal_accuracy": 1.2,
-            "vertical_accuracy": 2.0,
-            "position_uncertainty": 0.3,
+            "horizontal_accuracy": horizontal,
+            "vertical_accuracy": 1.6 * horizontal if rtk else 2.0,
+            "position_uncertainty": coasting if rtk and "gnss" in nav.internal else 0.3,
             "velocity_uncertainty": 0.05,
             "attitude_uncertainty": 0.005,
             "gps_tow": tow,
             "gps_week": GPS_WEEK,
             "utc": (y, mo, d, int(secs // 3600), int(secs % 3600 // 60), int(secs % 60), int(secs * 1000 % 1000)),
             "gnss_fix": fix,
+            **fix_type,
+            "gnss_aiding_status": gnss_status,
             "num_sv": 14 if fix else 0,
             "filter_state": state,
             "filter_flags": flags,
