@@ -15,7 +15,7 @@ import hashlib
 import random
 import struct
 from dataclasses import dataclass
-from typing import Iterator, Union
+from typing import Callable, Iterator, Union
 
 from generator.canonical import float_text, string_text
 from generator.primitives import PRIMITIVES, int_range
@@ -125,6 +125,17 @@ def canonical_cases() -> CanonicalCases:
         FloatCase(b, float_text(struct.unpack(">f", struct.pack(">I", b))[0], b, single=True)) for b in fbits
     )
     return CanonicalCases(doubles, floats, string_text(bytes(range(256))))
+
+
+def canonical_literals(string: Callable[[str], str], u64: str = "", u32: str = "") -> dict:
+    """The canonical table as one language's literals, for its tests/canonical_cases template:
+    `string` spells a string literal, `u64` and `u32` end the hex bit patterns (a suffix)."""
+    cases = canonical_cases()
+    return {
+        "doubles": [{"bits": f"0x{c.bits:016X}{u64}", "text": string(c.text)} for c in cases.doubles],
+        "floats": [{"bits": f"0x{c.bits:08X}{u32}", "text": string(c.text)} for c in cases.floats],
+        "all_bytes": string(cases.all_bytes),
+    }
 
 
 # ------------------------------------------------------------------------------ bitfields

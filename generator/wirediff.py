@@ -112,7 +112,13 @@ def _load(spec_dir: Path, label: str) -> dict:
 def public_names(p: dict, kind: str, *path) -> dict[str, str]:
     """The public name(s) of a spec element in every target language, as each target names it
     (generator/targets/<lang>/backend.py public_name): kind "set" (set), "field" (set or None,
-    field), "value" (enum type, value), "member" (owner name, member name)."""
+    field: its type per device when it has per-device layouts, from each back end's `api_names`),
+    "value" (enum type, value), "member" (owner name, member name: `owner.member` in every language)."""
+    if kind == "member":
+        return {lang: f"{path[0]}.{path[1]}" for lang in TARGETS}
+    if kind == "field":
+        names = {lang: mod.api_names(p, path[0], path[1]) for lang, mod in TARGETS.items()}
+        return {lang: n.get("variants") or n.get("type") or n["class"] for lang, n in names.items()}
     return {lang: mod.public_name(p, kind, *path) for lang, mod in TARGETS.items()}
 
 

@@ -16,7 +16,8 @@ from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import GENERATED_BANNER, copy_runtime, environment
-from generator.testcases import VectorCase, bitfield_cases, canonical_cases, vector_cases
+from generator.targets.cfamily import c_string, session_steps
+from generator.testcases import VectorCase, bitfield_cases, canonical_literals, vector_cases
 
 from .facts import KEYWORDS as _KEYWORDS
 from .facts import PRIMITIVE_TYPES as _PRIM
@@ -155,24 +156,6 @@ def _mask_literal(mask: int, ctype: str, base: str) -> str:
     if PRIMITIVES[base][0] == 8:
         return f"(({ctype})UINT64_C(0x{mask:X}))"
     return f"(({ctype})0x{mask:X}u)"
-
-
-def _c_string(text: str) -> str:
-    out = ['"']
-    for ch in text:
-        o = ord(ch)
-        if ch == "\\":
-            out.append("\\\\")
-        elif ch == '"':
-            out.append('\\"')
-        elif ch == "\n":
-            out.append("\\n")
-        elif 0x20 <= o < 0x7F:
-            out.append(ch)
-        else:
-            out.append("\\%03o" % o)
-    out.append('"')
-    return "".join(out)
 
 
 def _comment(text: str | None) -> str:
@@ -538,17 +521,8 @@ class _Protocol:
             "suite": case.corpus.capitalize(),
             "hex": case.hex,
             "device_c": f"{self.P}_DEVICE_{dev.upper()}" if dev else f"{self.P}_DEVICE_ANY",
-            "expect": _c_string("".join(line + "\n" for line in case.expect)),
+            "expect": c_string("".join(line + "\n" for line in case.expect)),
             "rejected": case.rejected,
-        }
-
-    def canonical(self) -> dict:
-        """The canonical float/string table of generator/testcases.py as C literals."""
-        cases = canonical_cases()
-        return {
-            "doubles": [{"bits": f"0x{c.bits:016X}ull", "text": _c_string(c.text)} for c in cases.doubles],
-            "floats": [{"bits": f"0x{c.bits:08X}u", "text": _c_string(c.text)} for c in cases.floats],
-            "all_bytes": _c_string(cases.all_bytes),
         }
 
     def bitfield_cases(self) -> list[dict]:
@@ -737,7 +711,7 @@ class _Protocol:
                     continue
                 items = ", ".join(self._literal(tref, v) for v in value)
                 if tref["kind"] == "primitive" and tref["name"] == "char":
-                    args.append(_c_string(value))
+                    args.append(c_string(value))
                     continue
                 consts.append(f"static const {self._c_type(tref)} {a['arg']}[] = {{{items}}};")
                 args.append(a["arg"])
@@ -890,7 +864,7 @@ class _Protocol:
             "sample_rule": self.proto["samples"],
             "data_kind": self.data_kind,
             "vectors": self.vectors,
-            "canonical": self.canonical(),
+            "canonical": canonical_literals(c_string, "ull", "u"),
             "bitfield_cases": self.bitfield_cases(),
             "example": self.example(),
             "name_max": max([len(f["name"]) for f in self.fields] + [len(d["id"]) for d in self.devices] + [1]) + 1,
@@ -919,25 +893,14 @@ def _session_cases(ir: dict, sessions: list[dict]) -> dict[str, list[dict]]:
     prefixes = {p["name"]: prefix_of(p).upper() for p in ir["protocols"]}
     for c in sessions:
         P = prefixes[c["protocol"]]
-        steps = []
-        for s in c["steps"]:
-            send = s.get("send")
-            steps.append(
-                {
-                    "at": s["at"],
-                    "send": _c_string(send) if send is not None else "nullptr",
-                    "bytes": _c_string(s["bytes"]) if send is not None and s.get("bytes") else "nullptr",
-                    "receive": _c_string(s["receive"]) if "receive" in s else "nullptr",
-                }
-            )
         out.setdefault(c["protocol"], []).append(
             {
                 "name": c["name"],
                 "device_c": f"{P}_DEVICE_{c['device'].upper()}" if c["device"] else f"{P}_DEVICE_ANY",
                 "timeout_ms": c["timeout_ms"],
                 "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
-                "steps": steps,
-                "expect": _c_string("".join(line + "\n" for line in c["expect"])),
+                "steps": session_steps(c, c_string),
+                "expect": c_string("".join(line + "\n" for line in c["expect"])),
             }
         )
     return out
@@ -1029,14 +992,9 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
 
 
 def public_name(protocol: dict, kind: str, *path) -> str:
-    """The C name(s) of a spec element, for `mipgen diff` (generator/wirediff.py): kind "set"
-    (set), "field" (set or None, field: its type per device when it has variants), "value" (enum
-    type, value), "member" (owner name, member name: a parameter, struct or bitfield member)."""
+    """The C name of a set (`kind` "set") or enum value (kind "value": enum type, value), for
+    `mipgen diff` (generator/wirediff.py public_names, which names fields and members itself)."""
     p = prefix_of(protocol)
     if kind == "set":
         return f"{p}_{path[0]['name']}_*"
-    if kind == "field":
-        return api_names(protocol, path[0], path[1])["type"]
-    if kind == "value":
-        return f"{p.upper()}_{snake(path[0]['name']).upper()}_{path[1]['name'].upper()}"
-    return f"{path[0]}.{path[1]}"
+    return f"{p.upper()}_{snake(path[0]['name']).upper()}_{path[1]['name'].upper()}"

@@ -36,9 +36,10 @@ from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
 from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
+from generator.targets.cfamily import c_string, session_steps
 from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
 from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
-from generator.testcases import bitfield_cases, canonical_cases, vector_cases
+from generator.testcases import bitfield_cases, canonical_literals, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
 
@@ -176,24 +177,7 @@ def int_literal(v: int) -> str:
 
 
 def cpp_string(s: str) -> str:
-    """A C++ string literal for ASCII-ish text (octal escapes for anything unusual)."""
-    out = ['"']
-    for ch in s:
-        o = ord(ch)
-        if ch == '"':
-            out.append('\\"')
-        elif ch == "\\":
-            out.append("\\\\")
-        elif ch == "?":
-            out.append("\\?")  # no trigraphs
-        elif 0x20 <= o < 0x7F:
-            out.append(ch)
-        elif o < 0x100:
-            out.append("\\%03o" % o)
-        else:
-            raise ValueError(f"non-Latin-1 character in {s!r}")
-    out.append('"')
-    return "".join(out)
+    return c_string(s, cpp=True)
 
 
 def _reserved_ns(proto: dict) -> str:
@@ -625,16 +609,6 @@ class _Protocol:
         return out
 
 
-def canonical_context() -> dict:
-    """The canonical float/string table of generator/testcases.py as C++ literals."""
-    cases = canonical_cases()
-    return {
-        "doubles": [{"bits": f"0x{c.bits:016X}ULL", "text": cpp_string(c.text)} for c in cases.doubles],
-        "floats": [{"bits": f"0x{c.bits:08X}u", "text": cpp_string(c.text)} for c in cases.floats],
-        "all_bytes": cpp_string(cases.all_bytes),
-    }
-
-
 def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
@@ -674,7 +648,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
             "bitfield_test": P.bitfield_test(),
-            "canonical": canonical_context(),
+            "canonical": canonical_literals(cpp_string, "ULL", "u"),
             "sample_rule": proto["samples"],
             "example": example_context(proto, api_names),
             **release.stamp(proto),
@@ -846,17 +820,6 @@ def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
     for c in sessions:
         if c["protocol"] != proto["name"]:
             continue
-        steps = []
-        for st in c["steps"]:
-            send = st.get("send")
-            steps.append(
-                {
-                    "at": st["at"],
-                    "send": cpp_string(send) if send is not None else "nullptr",
-                    "bytes": cpp_string(st["bytes"]) if send is not None and st.get("bytes") else "nullptr",
-                    "receive": cpp_string(st["receive"]) if "receive" in st else "nullptr",
-                }
-            )
         out.append(
             {
                 "name": re.sub(r"[^A-Za-z0-9]", "_", c["name"]),
@@ -865,7 +828,7 @@ def session_cases(proto: dict, sessions: list[dict]) -> list[dict]:
                 "device": cpp_string(c["device"]) if c["device"] else "nullptr",
                 "timeout_ms": c["timeout_ms"],
                 "inter_packet_timeout_ms": c["inter_packet_timeout_ms"],
-                "steps": steps,
+                "steps": session_steps(c, cpp_string),
                 "expect": [cpp_string(line) for line in c["expect"]],
             }
         )
@@ -960,14 +923,8 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
 
 
 def public_name(protocol: dict, kind: str, *path) -> str:
-    """The C++ name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
-    generator/targets/c/backend.py public_name."""
-    pkg = protocol["package"]
+    """The C++ name of a set (`kind` "set") or enum value (kind "value": enum type, value), for
+    `mipgen diff` (generator/wirediff.py public_names, which names fields and members itself)."""
     if kind == "set":
-        return f"{pkg}::{_set_ns(path[0])}"
-    if kind == "field":
-        names = api_names(protocol, path[0], path[1])
-        return names.get("variants", names["type"])
-    if kind == "value":
-        return f"{pkg}::{path[0]['name']}::{ident(path[1]['name'])}"
-    return f"{path[0]}.{path[1]}"
+        return f"{protocol['package']}::{_set_ns(path[0])}"
+    return f"{protocol['package']}::{path[0]['name']}::{ident(path[1]['name'])}"

@@ -34,7 +34,7 @@ from generator.testcases import (
     Sample,
     StructValue,
     bitfield_cases,
-    canonical_cases,
+    canonical_literals,
     layout_sample,
     struct_sample,
     vector_cases,
@@ -702,7 +702,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         tests = {
             "vector_cases.py": {"cases": _vector_cases(vectors, proto)},
             "typed_cases.py": _typed_context(m, sets),
-            "canonical_cases.py": {"canonical": _canonical_context()},
+            "canonical_cases.py": {"canonical": canonical_literals(repr)},
             "test_runtime.py": {},
         }
         for name, extra in tests.items():
@@ -818,16 +818,6 @@ def _configure_example(proto: dict, session: dict) -> dict | None:
             {"descriptor": f["id"], "name": f["name"], "handler": f"on_{py_attr(f['name'])}"}
             for f in ex["data"]["fields"]
         ],
-    }
-
-
-def _canonical_context() -> dict:
-    """The canonical float/string table of generator/testcases.py as Python literals."""
-    cases = canonical_cases()
-    return {
-        "doubles": [{"bits": f"0x{c.bits:016X}", "text": repr(c.text)} for c in cases.doubles],
-        "floats": [{"bits": f"0x{c.bits:08X}", "text": repr(c.text)} for c in cases.floats],
-        "all_bytes": repr(cases.all_bytes),
     }
 
 
@@ -1344,14 +1334,8 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
 
 
 def public_name(protocol: dict, kind: str, *path) -> str:
-    """The Python name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds
-    of generator/targets/c/backend.py public_name."""
-    pkg = protocol["package"]
+    """The Python name of a set (`kind` "set") or enum value (kind "value": enum type, value), for
+    `mipgen diff` (generator/wirediff.py public_names, which names fields and members itself)."""
     if kind == "set":
-        return f"{pkg}.{set_module(path[0])}"
-    if kind == "field":
-        names = api_names(protocol, path[0], path[1])
-        return names.get("variants", names["class"])
-    if kind == "value":
-        return f"{pkg}.{path[0]['name']}.{const_name(path[1]['name'])}"
-    return f"{path[0]}.{path[1]}"
+        return f"{protocol['package']}.{set_module(path[0])}"
+    return f"{protocol['package']}.{path[0]['name']}.{const_name(path[1]['name'])}"

@@ -17,7 +17,7 @@ from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import ToolError, copy_runtime, environment
-from generator.testcases import bitfield_cases, canonical_cases, layout_error_cases, vector_cases
+from generator.testcases import bitfield_cases, canonical_literals, layout_error_cases, vector_cases
 
 from .facts import (
     CATEGORIES,
@@ -527,14 +527,6 @@ class _Protocol:
             )
         return out
 
-    def float_cases(self) -> dict:
-        cases = canonical_cases()
-        return {
-            "doubles": [{"bits": "0x%016X" % c.bits, "text": rust_str(c.text)} for c in cases.doubles],
-            "floats": [{"bits": "0x%08X" % c.bits, "text": rust_str(c.text)} for c in cases.floats],
-            "all_bytes": rust_str(cases.all_bytes),
-        }
-
     def bitfield_cases(self) -> list[dict]:
         out = []
         for b in bitfield_cases(self.proto):
@@ -935,7 +927,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         model = _Protocol(proto, vectors)
         ctx = {**model.context(), **release.stamp(proto)}
         ctx["cases"] = model.vector_cases()
-        ctx["floats"] = model.float_cases()
+        ctx["floats"] = canonical_literals(rust_str)
         ctx["bitfields"] = model.bitfield_cases()
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
@@ -1005,14 +997,8 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
 
 
 def public_name(protocol: dict, kind: str, *path) -> str:
-    """The Rust name(s) of a spec element, for `mipgen diff` (generator/wirediff.py); the kinds of
-    generator/targets/c/backend.py public_name."""
-    pkg = protocol["package"]
+    """The Rust name of a set (`kind` "set") or enum value (kind "value": enum type, value), for
+    `mipgen diff` (generator/wirediff.py public_names, which names fields and members itself)."""
     if kind == "set":
-        return f"{pkg}::{_Protocol(protocol, []).set_module(path[0])}"
-    if kind == "field":
-        names = api_names(protocol, path[0], path[1])
-        return names.get("variants", names["type"])
-    if kind == "value":
-        return f"{pkg}::{path[0]['name']}::{path[1]['name'].upper()}"
-    return f"{path[0]}.{path[1]}"
+        return f"{protocol['package']}::{_Protocol(protocol, []).set_module(path[0])}"
+    return f"{protocol['package']}::{path[0]['name']}::{path[1]['name'].upper()}"
