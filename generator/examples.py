@@ -210,3 +210,45 @@ def session_example_context(ex: dict, call: Callable[[str, str | None], dict]) -
         "data_set": data_set["id"],
         "data_set_title": data_set["title"],
     }
+
+
+def example_literal(
+    types: dict[str, dict],
+    tref: dict,
+    value,
+    lang: str,
+    names: Callable[[str, str], str],
+    float_suffix: str = "",
+    top: bool = True,
+) -> dict:
+    """One value of the configure-and-stream example as a record a back end's session_macros.j2
+    `literal` spells: a struct (`type`; `fields`, each `field` and `value`, in the spec's member
+    order), an enum (`type`; `member`, None for a number the spec does not name; `number`), a
+    bool, a float (`text`: its shortest repr, `float_suffix` after a single), an int (`hex` for a
+    top-level value of 0x10 or more). `names(kind, spec_name)` spells a "type", "field" or
+    "member" (enum value) in the language `lang` (named in the error a value it cannot write
+    gives)."""
+    kind = tref["kind"]
+    if kind == "struct":
+        t = types[tref["name"]]
+        qs = {q["name"]: q["type"] for q in t["params"]}
+        if set(value) != set(qs):
+            raise ExampleError(f"{lang} back end: the example gives {sorted(value)} of {tref['name']} ({sorted(qs)})")
+        fields = [
+            {"field": names("field", k), "value": example_literal(types, q, value[k], lang, names, float_suffix, False)}
+            for k, q in qs.items()
+        ]
+        return {"kind": "struct", "type": names("type", tref["name"]), "fields": fields}
+    if kind == "enum":
+        values = types[tref["name"]]["values"]
+        number = value if isinstance(value, int) else next(x["value"] for x in values if x["name"] == value)
+        name = next((x["name"] for x in values if x["value"] == number), None)
+        member = names("member", name) if name else None
+        return {"kind": "enum", "type": names("type", tref["name"]), "member": member, "number": number}
+    if kind == "primitive" and tref["name"] == "bool":
+        return {"kind": "bool", "value": bool(value)}
+    if kind == "primitive" and tref["name"] in ("float", "double"):
+        return {"kind": "text", "text": repr(float(value)) + (float_suffix if tref["name"] == "float" else "")}
+    if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
+        return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
+    raise ExampleError(f"{lang} back end: the configure-and-stream example cannot write a {kind} value {value!r}")

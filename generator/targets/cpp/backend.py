@@ -30,7 +30,7 @@ import re
 
 from generator import commands, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import ExampleError, example_context, session_example, session_example_context
+from generator.examples import ExampleError, example_context, example_literal, session_example, session_example_context
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -845,34 +845,8 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
         return None
     types = {t["name"]: t for t in P.p["types"]}
 
-    def literal(tref: dict, value, top: bool = True) -> dict:
-        kind = tref["kind"]
-        if kind == "struct":
-            t = types[tref["name"]]
-            if set(value) != {q["name"] for q in t["params"]}:
-                raise ExampleError(f"C++ back end: the example must give every member of {tref['name']}")
-            return {
-                "kind": "struct",
-                "type": camel(tref["name"]),
-                "elems": [literal(q["type"], value[q["name"]], False) for q in t["params"]],
-            }
-        if kind == "enum":
-            t = types[tref["name"]]
-            number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
-            name = next((x["name"] for x in t["values"] if x["value"] == number), None)
-            return {
-                "kind": "enum",
-                "type": camel(tref["name"]),
-                "member": ident(name) if name else None,
-                "number": number,
-            }
-        if kind == "primitive" and tref["name"] == "bool":
-            return {"kind": "bool", "value": bool(value)}
-        if kind == "primitive" and tref["name"] in ("float", "double"):
-            return {"kind": "text", "text": repr(float(value)) + ("f" if tref["name"] == "float" else "")}
-        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
-            return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
-        raise ExampleError(f"C++ back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+    def literal(tref: dict, value) -> dict:
+        return example_literal(types, tref, value, "C++", lambda k, n: camel(n) if k == "type" else ident(n), "f")
 
     def call(step: str, fn: str | None) -> dict:
         """The call, its arguments and the vectors it fills first."""

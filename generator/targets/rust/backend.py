@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 
 from generator import commands, model, naming
-from generator.examples import ExampleError, example_context, session_example, session_example_context
+from generator.examples import ExampleError, example_context, example_literal, session_example, session_example_context
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -783,32 +783,10 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
         return None
     device = ex["device"]
 
-    def literal(tref: dict, value, top: bool = True) -> dict:
-        kind = tref["kind"]
-        if kind == "struct":
-            t = m.types[tref["name"]]
-            qs = {q["name"]: q["type"] for q in t["params"]}
-            if set(value) != set(qs):
-                raise ExampleError(f"Rust back end: the example gives {sorted(value)} of {tref['name']} ({sorted(qs)})")
-            fields = [{"field": ident(k), "value": literal(qs[k], v, False)} for k, v in value.items()]
-            return {"kind": "struct", "type": camel(tref["name"]), "fields": fields}
-        if kind == "enum":
-            t = m.types[tref["name"]]
-            number = value if isinstance(value, int) else next(x["value"] for x in t["values"] if x["name"] == value)
-            name = next((x["name"] for x in t["values"] if x["value"] == number), None)
-            return {
-                "kind": "enum",
-                "type": camel(tref["name"]),
-                "member": upper(name) if name else None,
-                "number": number,
-            }
-        if kind == "primitive" and tref["name"] == "bool":
-            return {"kind": "bool", "value": bool(value)}
-        if kind == "primitive" and tref["name"] in ("float", "double"):
-            return {"kind": "text", "text": repr(float(value))}
-        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
-            return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
-        raise ExampleError(f"Rust back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+    def literal(tref: dict, value) -> dict:
+        return example_literal(
+            m.types, tref, value, "Rust", lambda k, n: {"type": camel, "member": upper}.get(k, ident)(n)
+        )
 
     def call(step: str, fn: str | None) -> dict:
         """The call, its arguments and the `let`s of its bounded arrays."""
