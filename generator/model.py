@@ -264,6 +264,16 @@ def layout(proto: dict, variant: dict) -> ParamList:
     return params(proto, variant["params"], variant["functions"])
 
 
+def layouts_of(fields: list[dict]):
+    """Every layout of `fields`: (field, variant, device), where device is the variant's device
+    when the field has per-device layouts and None when it has one (the key back ends name a
+    layout by)."""
+    for f in fields:
+        multi = len(f["variants"]) > 1
+        for v in f["variants"]:
+            yield f, v, (v["device"] if multi else None)
+
+
 def struct(proto: dict, struct_type: dict) -> ParamList:
     """The model of the parameters of a struct type of protocol `proto`."""
     return params(proto, struct_type["params"], None)

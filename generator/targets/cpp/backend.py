@@ -385,25 +385,23 @@ class _Protocol:
     def layouts(self, fields: list[dict], set_: dict | None) -> list[dict]:
         names = _layout_names(fields)
         out = []
-        for f in fields:
-            multi = len(f["variants"]) > 1
-            for v in f["variants"]:
-                params = self.params(v["params"], v["functions"])
-                out.append(
-                    {
-                        "cpp": names[(f["name"], v["device"] if multi else None)],
-                        "name": f["name"],
-                        "title": " ".join(f["title"].split()),
-                        "set": set_["id"] if set_ else None,
-                        "descriptor": f["id"],
-                        "device": v["device"] if multi else None,
-                        "device_cpp": ident(v["device"]) if multi else None,
-                        "params": params,
-                        "has_optional": any(q["optional"] for q in v["params"]),
-                        "plain": all(q["plain"] for q in params),
-                        "role": f["role"],
-                    }
-                )
+        for f, v, dev in model.layouts_of(fields):
+            params = self.params(v["params"], v["functions"])
+            out.append(
+                {
+                    "cpp": names[(f["name"], dev)],
+                    "name": f["name"],
+                    "title": " ".join(f["title"].split()),
+                    "set": set_["id"] if set_ else None,
+                    "descriptor": f["id"],
+                    "device": dev,
+                    "device_cpp": ident(dev) if dev else None,
+                    "params": params,
+                    "has_optional": any(q["optional"] for q in v["params"]),
+                    "plain": all(q["plain"] for q in params),
+                    "role": f["role"],
+                }
+            )
         return out
 
     def set_models(self) -> list[dict]:

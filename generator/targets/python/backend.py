@@ -113,16 +113,13 @@ def _layout_classes(fields: list[dict]) -> dict[tuple[str, str | None], str]:
     """Class name of every layout of the given fields: (field name, device or None) -> class name."""
     out: dict[tuple[str, str | None], str] = {}
     used: set[str] = set()
-    for f in fields:
-        multi = len(f["variants"]) > 1
-        for v in f["variants"]:
-            dev = v["device"] if multi else None
-            base = camel(f["name"]) + (f"_{dev}" if dev else "")
-            name = base
-            if name in used:
-                name = f"{base}_0x{f['id']:02X}"
-            used.add(name)
-            out[(f["name"], dev)] = name
+    for f, _v, dev in model.layouts_of(fields):
+        base = camel(f["name"]) + (f"_{dev}" if dev else "")
+        name = base
+        if name in used:
+            name = f"{base}_0x{f['id']:02X}"
+        used.add(name)
+        out[(f["name"], dev)] = name
     return out
 
 
@@ -438,51 +435,48 @@ class _Protocol:
     def field_models(self, fields: list[dict], set_: dict | None) -> list[dict]:
         names = _layout_classes(fields)
         out = []
-        for f in fields:
-            multi = len(f["variants"]) > 1
-            for v in f["variants"]:
-                dev = v["device"] if multi else None
-                cls = names[(f["name"], dev)]
-                lay = self.layout(v["params"], "_t.", v["functions"])
-                if set_ is not None:
-                    where = f"set 0x{set_['id']:02X}, descriptor 0x{f['id']:02X}"
-                else:
-                    where = f"descriptor 0x{f['id']:02X} in every {f['applies_to']} set"
-                head = f"{f['title']} ({where}, {f['role']})" + (f", device {dev}." if dev else ".")
-                extra = []
-                if v["functions"]:
-                    extra.append("Functions: " + ", ".join(v["functions"]) + ".")
-                if v.get("responses"):
-                    extra.append(
-                        "Responses: "
-                        + ", ".join(f"0x{r['id']:02X} {r.get('name', '')}".strip() for r in v["responses"])
-                        + "."
-                    )
-                srcs = v.get("sources") or f.get("sources") or []
-                if srcs:
-                    extra.append(
-                        "Sources: "
-                        + "; ".join(f"{s['manual']}" + (f" line {s['line']}" if s.get("line") else "") for s in srcs)
-                        + "."
-                    )
-                size = v["size"]
-                size_text = f"{size['min']}" if size["fixed"] else f"{size['min']}..{size['max']}"
-                extra.append(f"Field data: {size_text} bytes.")
-                out.append(
-                    {
-                        "cls": cls,
-                        "doc": docstring(head, f.get("description", ""), " ".join(extra)),
-                        "set": f"0x{set_['id']:02X}" if set_ is not None else "None",
-                        "applies_to": repr(f.get("applies_to")) if set_ is None else "None",
-                        "descriptor": f"0x{f['id']:02X}",
-                        "name": f["name"],
-                        "role": f["role"],
-                        "device": repr(dev),
-                        "field_name": f["name"],
-                        "variant": dev,
-                        **lay,
-                    }
+        for f, v, dev in model.layouts_of(fields):
+            cls = names[(f["name"], dev)]
+            lay = self.layout(v["params"], "_t.", v["functions"])
+            if set_ is not None:
+                where = f"set 0x{set_['id']:02X}, descriptor 0x{f['id']:02X}"
+            else:
+                where = f"descriptor 0x{f['id']:02X} in every {f['applies_to']} set"
+            head = f"{f['title']} ({where}, {f['role']})" + (f", device {dev}." if dev else ".")
+            extra = []
+            if v["functions"]:
+                extra.append("Functions: " + ", ".join(v["functions"]) + ".")
+            if v.get("responses"):
+                extra.append(
+                    "Responses: "
+                    + ", ".join(f"0x{r['id']:02X} {r.get('name', '')}".strip() for r in v["responses"])
+                    + "."
                 )
+            srcs = v.get("sources") or f.get("sources") or []
+            if srcs:
+                extra.append(
+                    "Sources: "
+                    + "; ".join(f"{s['manual']}" + (f" line {s['line']}" if s.get("line") else "") for s in srcs)
+                    + "."
+                )
+            size = v["size"]
+            size_text = f"{size['min']}" if size["fixed"] else f"{size['min']}..{size['max']}"
+            extra.append(f"Field data: {size_text} bytes.")
+            out.append(
+                {
+                    "cls": cls,
+                    "doc": docstring(head, f.get("description", ""), " ".join(extra)),
+                    "set": f"0x{set_['id']:02X}" if set_ is not None else "None",
+                    "applies_to": repr(f.get("applies_to")) if set_ is None else "None",
+                    "descriptor": f"0x{f['id']:02X}",
+                    "name": f["name"],
+                    "role": f["role"],
+                    "device": repr(dev),
+                    "field_name": f["name"],
+                    "variant": dev,
+                    **lay,
+                }
+            )
         return out
 
     def module_uses(self, classes: list[dict]) -> dict:
@@ -582,12 +576,10 @@ class _Protocol:
         for sm in sets:
             s = sm["set"]
             names = _layout_classes(s["fields"])
-            for f in s["fields"]:
-                multi = len(f["variants"]) > 1
-                for v in f["variants"]:
-                    cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
-                    args = layout_sample(self.p, s, f, v)
-                    out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
+            for f, v, dev in model.layouts_of(s["fields"]):
+                cls = f"{sm['module']}.{names[(f['name'], dev)]}"
+                args = layout_sample(self.p, s, f, v)
+                out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
         names = _layout_classes(self.p["reserved_fields"])
         for f in self.p["reserved_fields"]:
             cls = f"reserved.{names[(f['name'], None)]}"
@@ -1219,45 +1211,39 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     for sm in sets:
         s = sm["set"]
         names = _layout_classes(s["fields"])
-        for f in s["fields"]:
-            multi = len(f["variants"]) > 1
-            for v in f["variants"]:
-                cls = f"{sm['module']}.{names[(f['name'], v['device'] if multi else None)]}"
-                if f["role"] == "command":
-                    by_name.setdefault(f["name"], []).append(cls)
-                    params = [
-                        q for q in v["params"] if not (m.function_enum and q["type"].get("name") == m.function_enum)
-                    ]
-                    keys = {}
-                    for fn in v["functions"] or []:
-                        keys[fvalues[fn]] = tuple(
-                            py_attr(q["name"])
-                            for q in params
-                            if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
-                        )
-                    enums = tuple(
-                        py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None
+        for f, v, dev in model.layouts_of(s["fields"]):
+            cls = f"{sm['module']}.{names[(f['name'], dev)]}"
+            if f["role"] == "command":
+                by_name.setdefault(f["name"], []).append(cls)
+                params = [q for q in v["params"] if not (m.function_enum and q["type"].get("name") == m.function_enum)]
+                keys = {}
+                for fn in v["functions"] or []:
+                    keys[fvalues[fn]] = tuple(
+                        py_attr(q["name"])
+                        for q in params
+                        if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
                     )
-                    commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
-                    for dev in v["devices"]:  # a default holds on the devices whose manuals state it
-                        factory = {
-                            py_attr(q["name"]): q["default"]["value"]
-                            for q in params
-                            if q.get("default") and dev in q["default"]["devices"]
-                        }
-                        if factory:
-                            defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
-                elif s["kind"] == "data" or f["role"] == "data":
-                    units = tuple(
-                        (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
-                        for q in v["params"]
-                        if q["type"]["kind"] == "primitive"
-                    )
-                    data.append({"cls": cls, "units": pyrepr(units)})
-                    shows = WORLD.get(WORLD_GROUPS.get(s["name"], ""), {}).get(f["name"], {})
-                    mapped = tuple((py_attr(q["name"]), shows[q["name"]]) for q in v["params"] if q["name"] in shows)
-                    if mapped:
-                        world.append({"cls": cls, "value": pyrepr(mapped)})
+                enums = tuple(py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None)
+                commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
+                for dev in v["devices"]:  # a default holds on the devices whose manuals state it
+                    factory = {
+                        py_attr(q["name"]): q["default"]["value"]
+                        for q in params
+                        if q.get("default") and dev in q["default"]["devices"]
+                    }
+                    if factory:
+                        defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
+            elif s["kind"] == "data" or f["role"] == "data":
+                units = tuple(
+                    (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
+                    for q in v["params"]
+                    if q["type"]["kind"] == "primitive"
+                )
+                data.append({"cls": cls, "units": pyrepr(units)})
+                shows = WORLD.get(WORLD_GROUPS.get(s["name"], ""), {}).get(f["name"], {})
+                mapped = tuple((py_attr(q["name"]), shows[q["name"]]) for q in v["params"] if q["name"] in shows)
+                if mapped:
+                    world.append({"cls": cls, "value": pyrepr(mapped)})
     streaming = _streaming(proto["simulation"])
 
     def classes(table: dict) -> list[dict]:
