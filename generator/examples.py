@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from . import model
 from .commands import Call, commands
 from .render import ToolError
 
@@ -252,3 +253,22 @@ def example_literal(
     if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
         return {"kind": "int", "value": value, "hex": value >= 0x10 and top}
     raise ExampleError(f"{lang} back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+
+
+def example_arguments(protocol: dict, ex: dict, step: str, fn: str | None, lang: str) -> list[tuple]:
+    """The arguments of one call of session_example `ex` (its step `step`, function `fn`), in the
+    call's order: (argument, its layout-model parameter, the example's value or None for an
+    optional argument the example leaves out). A required argument without a value is an
+    ExampleError of the back end `lang`."""
+    st = ex[step]
+    values = st["values"] if fn in (None, "write") else {}
+    params = {q.name: q for q in model.layout(protocol, st["variant"]).params}
+    out = []
+    for a in st["calls"][fn].arguments:
+        if a.name not in values and a.required:
+            raise ExampleError(
+                f"{lang} back end: the configure-and-stream example gives no value for {a.name} of"
+                f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
+            )
+        out.append((a, params[a.name], values.get(a.name)))
+    return out

@@ -30,7 +30,14 @@ import re
 
 from generator import commands, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import ExampleError, example_context, example_literal, session_example, session_example_context
+from generator.examples import (
+    ExampleError,
+    example_arguments,
+    example_context,
+    example_literal,
+    session_example,
+    session_example_context,
+)
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -849,24 +856,15 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
     def call(step: str, fn: str | None) -> dict:
         """The call, its arguments and the vectors it fills first."""
         st = ex[step]
-        c = st["calls"][fn]
-        at = session["calls"][c]
-        params = {q["name"]: q for q in st["variant"]["params"]}
-        values = st["values"] if fn in (None, "write") else {}
+        at = session["calls"][st["calls"][fn]]
         args, fills = [], []
-        for a in c.arguments:
-            q = params[a.name]
-            if a.name not in values:
-                if not a.required:
-                    continue  # optional arguments come last: left at their default
-                raise ExampleError(
-                    f"C++ back end: the configure-and-stream example gives no value for {q['name']} of"
-                    f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
-                )
-            value, tref, count = values[a.name], q["type"], q["count"]
-            if count and count["kind"] == "fixed":
+        for a, q, value in example_arguments(P.p, ex, step, fn, "C++"):
+            if value is None:
+                continue  # optional arguments come last: left at their default
+            tref = q.ir["type"]
+            if q.kind == "fixed":
                 args.append({"kind": "array", "elems": [literal(tref, v) for v in value]})
-            elif count:
+            elif q.kind in ("counted", "remaining"):
                 fills.append(
                     {
                         "name": ident(a.name),

@@ -12,7 +12,14 @@ from __future__ import annotations
 import re
 
 from generator import commands, model, naming
-from generator.examples import ExampleError, example_context, example_literal, session_example, session_example_context
+from generator.examples import (
+    ExampleError,
+    example_arguments,
+    example_context,
+    example_literal,
+    session_example,
+    session_example_context,
+)
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -790,23 +797,13 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
 
     def call(step: str, fn: str | None) -> dict:
         """The call, its arguments and the `let`s of its bounded arrays."""
-        st = ex[step]
-        c = st["calls"][fn]
-        at = session["methods"][c]
-        params = {q.name: q for q in model.layout(m.proto, st["variant"]).params}
-        values = st["values"] if fn in (None, "write") else {}
+        at = session["methods"][ex[step]["calls"][fn]]
         args, lets = [], []
-        for a in c.arguments:
-            q = params[a.name]
-            if a.name not in values:
-                if not a.required:
-                    args.append({"kind": "none"})
-                    continue
-                raise ExampleError(
-                    f"Rust back end: the configure-and-stream example gives no value for {q.name} of"
-                    f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
-                )
-            value, tref = values[a.name], q.ir["type"]
+        for a, q, value in example_arguments(m.proto, ex, step, fn, "Rust"):
+            if value is None:
+                args.append({"kind": "none"})
+                continue
+            tref = q.ir["type"]
             if q.kind == "fixed":
                 arg = {"kind": "array", "elems": [literal(tref, v) for v in value]}
             elif q.kind in ("counted", "remaining"):
