@@ -28,16 +28,9 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, model
+from generator import commands, examples, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import (
-    ExampleError,
-    example_arguments,
-    example_context,
-    example_literal,
-    session_example,
-    session_example_context,
-)
+from generator.examples import ExampleError
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -655,7 +648,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             "bitfield_test": P.bitfield_test(),
             "canonical": canonical_literals(cpp_string, "ULL", "u"),
             "sample_rule": proto["samples"],
-            "example": example_context(proto, api_names),
+            "example": examples.example_context(proto, api_names),
             **release.stamp(proto),
         }
         files[f"{root}/LICENSE"] = release.license
@@ -845,20 +838,22 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
     of the typed command API (commands.hpp) with its arguments as values session_macros.j2 spells
     (and the bounded vectors they fill), the data-field structs it prints as canonical JSON; None
     for a protocol without the example."""
-    ex = session_example(P.p)
+    ex = examples.session_example(P.p)
     if ex is None:
         return None
     types = {t["name"]: t for t in P.p["types"]}
 
     def literal(tref: dict, value) -> dict:
-        return example_literal(types, tref, value, "C++", lambda k, n: camel(n) if k == "type" else ident(n), "f")
+        return examples.example_literal(
+            types, tref, value, "C++", lambda k, n: camel(n) if k == "type" else ident(n), "f"
+        )
 
     def call(step: str, fn: str | None) -> dict:
         """The call, its arguments and the vectors it fills first."""
         st = ex[step]
         at = session["calls"][st["calls"][fn]]
         args, fills = [], []
-        for a, q, value in example_arguments(P.p, ex, step, fn, "C++"):
+        for a, q, value in examples.example_arguments(P.p, ex, step, fn, "C++"):
             if value is None:
                 continue  # optional arguments come last: left at their default
             tref = q.ir["type"]
@@ -886,7 +881,7 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
             raise ExampleError(f"C++ back end: the example's data field {f['name']} has per-device layouts")
         fields.append({"name": f["name"], "type": _layout_type(P, data_set, f, None)})
     return {
-        **session_example_context(ex, call),
+        **examples.session_example_context(ex, call),
         "device": ident(ex["device"]),
         "data_fields": fields,
     }

@@ -11,15 +11,8 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, model, naming
-from generator.examples import (
-    ExampleError,
-    example_arguments,
-    example_context,
-    example_literal,
-    session_example,
-    session_example_context,
-)
+from generator import commands, examples, model, naming
+from generator.examples import ExampleError
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -785,13 +778,13 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
     """The context of examples/configure_and_stream.rs (generator/examples.py session_example): per
     step the call of the typed command API (command_api.rs.j2) and its arguments as values that
     session_macros.j2 spells, or None for a protocol without the example."""
-    ex = session_example(m.proto)
+    ex = examples.session_example(m.proto)
     if ex is None:
         return None
     device = ex["device"]
 
     def literal(tref: dict, value) -> dict:
-        return example_literal(
+        return examples.example_literal(
             m.types, tref, value, "Rust", lambda k, n: {"type": camel, "member": upper}.get(k, ident)(n)
         )
 
@@ -799,7 +792,7 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
         """The call, its arguments and the `let`s of its bounded arrays."""
         at = session["methods"][ex[step]["calls"][fn]]
         args, lets = [], []
-        for a, q, value in example_arguments(m.proto, ex, step, fn, "Rust"):
+        for a, q, value in examples.example_arguments(m.proto, ex, step, fn, "Rust"):
             if value is None:
                 args.append({"kind": "none"})
                 continue
@@ -831,7 +824,7 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
         fields.append({"name": f["name"], "descriptor": f["id"], "names": _names(m, data_set, f, None)})
     titles = {d["id"]: d["title"] for d in m.proto["devices"]}
     return {
-        **session_example_context(ex, call),
+        **examples.session_example_context(ex, call),
         "title": titles.get(device, device),
         "model": m.device_variant(device),
         "data_fields": fields,
@@ -930,7 +923,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
 
 def _example(proto: dict) -> dict:
     """The getting-started example (generator/examples.py), with the type's name after its `use`."""
-    example = example_context(proto, api_names)
+    example = examples.example_context(proto, api_names)
     example["type_name"] = example["api"]["type"].rsplit("::", 1)[1]
     return example
 
