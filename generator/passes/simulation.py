@@ -13,7 +13,10 @@ bitfield members; the descriptor lists' commands, replies and list parameters ex
 command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
 descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
 the identity's reply parameters exist (an unsigned integer or a string) and every device gives a
-fitting value for every item. The entry keeps the section's shape with sources resolved (each gains
+fitting value for every item; the world table's sets are data sets and its fields and parameters
+exist; every world action's command, parameters and flag exist, it has the keys its action needs,
+and an aid's `enabled_by` are members of the enum of the `enable` action's parameter (each aid
+gains `enabled_by_values`). The entry keeps the section's shape with sources resolved (each gains
 its `title` from the manual).
 """
 
@@ -23,6 +26,15 @@ from .context import Context, SpecFile
 
 _COMMAND_LISTS = ("formats", "enables", "rates", "polls", "baud")
 _UNSIGNED = {"u8", "u16", "u32", "u64"}
+# The keys each world action needs besides `command` (the others need none).
+_ACTION_KEYS = {
+    "capture": ("param",),
+    "auto_init": ("param",),
+    "frame": ("param",),
+    "wait_run": ("param",),
+    "enable": ("param", "flag"),
+    "aid": ("kind", "enabled_by", "values"),
+}
 
 
 def run(ctx: Context) -> None:
@@ -60,6 +72,10 @@ def run(ctx: Context) -> None:
     for key in _COMMAND_LISTS + ("all_settings", "base_rates", "unaddressed", "filters"):
         sim.setdefault(key, [])
     sim.setdefault("decimation", None)
+    sim["actions"] = check.actions(spec.get("actions", []))
+    for i, group in enumerate(spec.get("world", [])):
+        check.world(("world", i), group)
+    sim.setdefault("world", [])
     sim["descriptor_lists"] = check.descriptor_lists(spec.get("descriptor_lists"))
     sim["identity"] = check.identity(spec.get("identity"))
     ctx.simulation = sim
@@ -281,6 +297,65 @@ class _Checker:
         for name in names:
             if variants and name not in params:
                 self.err(path, f"simulation: '{name}' is not a parameter of {command}", f"a parameter of {command}")
+
+    def world(self, path: tuple, group: dict) -> None:
+        """One group of the world table: its sets are data sets of the protocol, and every field
+        and parameter it names is a field of one of them and a parameter of one of its layouts."""
+        fields: dict[str, set[str]] = {}
+        for j, name in enumerate(group["sets"]):
+            found = [s for s in self.ctx.sets if s["name"] == name and s["kind"] == "data"]
+            if not found:
+                self.err(
+                    path + ("sets", j),
+                    f"simulation world: '{name}' is not a data set of the protocol",
+                    "a data set name",
+                )
+            for f in (f for s in found for f in s["fields"]):
+                fields.setdefault(f["name"], set()).update(q["name"] for v in f["variants"] for q in v["params"])
+        for field, shows in group["fields"].items():
+            if field not in fields:
+                self.err(
+                    path + ("fields", field),
+                    f"simulation world: '{field}' is not a field of {group['sets']}",
+                    "a field name",
+                )
+                continue
+            for param in shows:
+                if param not in fields[field]:
+                    self.err(
+                        path + ("fields", field, param),
+                        f"simulation world: '{param}' is not a parameter of {field}",
+                        f"a parameter of {field}",
+                    )
+
+    def actions(self, actions: list[dict]) -> list[dict]:
+        """What commands do to the world: every command, parameter and flag named exists, each
+        action has the keys it needs, and an aid's `enabled_by` are members of the enum of the
+        `enable` action's parameter (each aid gains their numbers, `enabled_by_values`)."""
+        enable = next((a for a in actions if a["action"] == "enable"), {})
+        variants = self.commands.get(enable.get("command"), [])
+        enum = next(
+            (q["type"].get("name") for v in variants for q in v["params"] if q["name"] == enable.get("param")), None
+        )
+        out = []
+        for i, a in enumerate(actions):
+            path, entry = ("actions", i), dict(a)
+            for k in _ACTION_KEYS.get(a["action"], ()):
+                if k not in a:
+                    self.err(path, f"simulation: the {a['action']} action of {a['command']} needs `{k}`", k)
+            self.params(path, a["command"], [a[k] for k in ("param", "flag") if k in a] + a.get("values", []))
+            if "enabled_by" in a:
+                if enum not in self.ctx.types or self.ctx.types[enum]["kind"] != "enum":
+                    self.err(
+                        path + ("enabled_by",), "simulation: `enabled_by` needs an enable action whose `param` is an enum",
+                        "an enable action on an enum parameter",
+                    )  # fmt: skip
+                    continue
+                self.members(path + ("enabled_by",), enum, a["enabled_by"])
+                numbers = {v["name"]: v["value"] for v in self.ctx.types[enum]["values"]}
+                entry["enabled_by_values"] = [numbers.get(n) for n in a["enabled_by"]]
+            out.append(entry)
+        return out
 
     def filter_aiding(self, path: tuple, entry: dict) -> None:
         """The internal aiding of one filter (docs/simulator-world.md "Internal aiding")."""

@@ -1043,149 +1043,11 @@ def _filters(sim: dict | None, types: dict | None = None) -> dict:
     return out
 
 
-# The simulated world (runtime sim_world.py, issue 29): which world quantity each data parameter
-# shows, by (group of its set, field name, parameter name); `q[i]` a component, `valid:KIND` a valid
-# flags parameter set whole when the output of KIND (gnss, attitude, navigation, always) is valid,
-# `enum:Q` an enum parameter taking the member named by quantity Q, `flags:Q` a bitfield's value.
-# The runtime converts from the quantity's unit (sim_world.UNITS) to the parameter's (its spec
-# units). A parameter the table does not name keeps the plausible fallback (sim.py _plausible).
-WORLD_GROUPS = {
-    "sensor": "sensor",
-    "gnss_data": "gnss",
-    "gnss_receiver_1": "gnss",
-    "gnss_receiver_2": "gnss",
-    "filter_data": "filter",
-}
-_GNSS_TIME = {"tow": "gps_tow", "week_number": "gps_week", "valid_flags": "valid:gnss"}
-_FILTER_VEC = {"north": "velocity_ned[0]", "east": "velocity_ned[1]", "down": "velocity_ned[2]"}
-WORLD: dict[str, dict[str, dict[str, str]]] = {
-    "sensor": {
-        "scaled_accel": {"scaled_accel": "specific_force"},
-        "scaled_gyro": {"scaled_gyro": "angular_rate"},
-        "scaled_mag": {"scaled_mag": "magnetic_field"},
-        "cf_euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "yaw"},
-        "cf_quaternion": {"q": "quaternion"},
-        "cf_orientation_matrix": {"m": "dcm"},
-        "scaled_pressure": {"scaled_pressure": "pressure"},
-        "gps_timestamp": _GNSS_TIME,
-        "temperature_statistics": {"min_temp": "temperature", "max_temp": "temperature", "mean_temp": "temperature"},
-    },
-    "gnss": {
-        "llh_position": {
-            "latitude": "gnss_latitude",
-            "longitude": "gnss_longitude",
-            "ellipsoid_height": "gnss_height",
-            "msl_height": "gnss_height",
-            "horizontal_accuracy": "horizontal_accuracy",
-            "vertical_accuracy": "vertical_accuracy",
-            "valid_flags": "valid:gnss",
-        },
-        "ned_velocity": {
-            "velocity": "gnss_velocity_ned",
-            "speed": "speed",
-            "ground_speed": "speed",
-            "heading": "course",
-            "valid_flags": "valid:gnss",
-        },
-        "ecef_position": {"position": "ecef_position", "valid_flags": "valid:gnss"},
-        "gps_time": _GNSS_TIME,
-        "utc_time": {
-            "year": "utc[0]",
-            "month": "utc[1]",
-            "day": "utc[2]",
-            "hour": "utc[3]",
-            "minute": "utc[4]",
-            "second": "utc[5]",
-            "millisecond": "utc[6]",
-            "valid_flags": "valid:gnss",
-        },
-        "fix_info": {"fix_type": "enum:fix_type", "num_sv": "num_sv", "valid_flags": "valid:always"},
-    },
-    "filter": {
-        "filter_status": {"filter_state": "enum:filter_state", "status_flags": "flags:filter_flags"},
-        "gps_timestamp": _GNSS_TIME,
-        "llh_position": {
-            "latitude": "latitude",
-            "longitude": "longitude",
-            "ellipsoid_height": "height",
-            "valid_flags": "valid:navigation",
-        },
-        "ned_velocity": {**_FILTER_VEC, "valid_flags": "valid:navigation"},
-        "euler_angles": {"roll": "roll", "pitch": "pitch", "yaw": "nav_yaw", "valid_flags": "valid:attitude"},
-        "attitude_quaternion": {"q": "quaternion", "valid_flags": "valid:attitude"},
-        "attitude_dcm": {"dcm": "dcm", "valid_flags": "valid:attitude"},
-        "gyro_bias": {"bias": "gyro_bias", "valid_flags": "valid:attitude"},
-        "comp_angular_rate": {"gyro": "true_angular_rate", "valid_flags": "valid:attitude"},
-        "linear_accel": {"accel": "linear_accel", "valid_flags": "valid:attitude"},
-        "gravity_vector": {"gravity": "gravity_body", "valid_flags": "valid:attitude"},
-        "wgs84_gravity_magnitude": {"gravity_magnitude": "gravity", "valid_flags": "valid:navigation"},
-        "llh_position_uncertainty": {
-            "north": "position_uncertainty",
-            "east": "position_uncertainty",
-            "down": "position_uncertainty",
-            "valid_flags": "valid:navigation",
-        },
-        "ned_velocity_uncertainty": {
-            "north": "velocity_uncertainty",
-            "east": "velocity_uncertainty",
-            "down": "velocity_uncertainty",
-            "valid_flags": "valid:navigation",
-        },
-        "euler_angles_uncertainty": {
-            "roll": "attitude_uncertainty",
-            "pitch": "attitude_uncertainty",
-            "yaw": "attitude_uncertainty",
-            "valid_flags": "valid:attitude",
-        },
-        "ecef_position": {"position": "ecef_position", "valid_flags": "valid:navigation"},
-        "heading_update_state": {
-            "heading": "nav_yaw",
-            "heading_uncertainty": "attitude_uncertainty",
-            "source": "flags:heading_sources",
-            "valid_flags": "valid:heading_update",
-        },
-        "gnss_position_aiding_status": {"time_of_week": "gps_tow", "status": "flags:gnss_aiding_status"},
-        "gnss_dual_antenna_status": {
-            "time_of_week": "gps_tow",
-            "heading": "dual_heading",
-            "heading_uncertainty": "dual_heading_uncertainty",
-            "fix_type": "enum:dual_fix",
-            "status_flags": "flags:dual_flags",
-            "valid_flags": "valid:dual_antenna",
-        },
-    },
-}
-# What commands do to the world (sim.py _act): command name -> (action, arguments). capture: reply
-# after the duration in the named parameter (ms) with the captured bias; reset: the filter restarts
-# (0x0D,0x01); attitude: an initial attitude or heading is given (GX5-45 line 1411); auto_init: the
-# setting's parameter turns auto-initialization on (0x0D,0x19, line 1645); aid: a measurement of a
-# kind (heading, position, velocity, body_velocity) from an aiding frame (aiding frame
-# configuration 0x13,0x01 must define it) accepted when aiding measurement control enables one of
-# the sources (AidingMeasurementSource values; 0xFFFF all), its values (the parameters named, in
-# the world's units: heading rad, latitude/longitude deg, height m, NED velocity m/s) pulling the
-# filter's outputs toward them; frame: the frame configuration setting.
-WORLD_ACTIONS = {
-    "capture_gyro_bias": ("capture", "averaging_time_ms"),
-    "reset_filter": ("reset",),
-    "set_initial_attitude": ("attitude",),
-    "set_initial_heading": ("attitude",),
-    "auto_init_control": ("auto_init", "enable"),
-    "true_heading": ("aid", "heading", (5, 0xFFFF), ("heading",)),
-    "llh_position": ("aid", "position", (0, 0xFFFF), ("latitude", "longitude", "height")),
-    "ecef_position": ("aid", "position", (0, 0xFFFF), ()),
-    "ned_velocity": ("aid", "velocity", (0, 0xFFFF), ("velocity",)),
-    "ecef_velocity": ("aid", "velocity", (0, 0xFFFF), ()),
-    "body_frame_velocity": ("aid", "body_velocity", (8, 0xFFFF), ()),
-    "aiding_measurement_control": ("enable", "source", "enable"),
-    "frame_config": ("frame", "frame_id"),
-    # CV7 "Wait for Run" (line 504; Run Navigation Filter 0x0D,0x05, line 8268): the filter stays
-    # in initialization until run when the initialization configuration asks to wait.
-    "initialization_configuration": ("wait_run", "wait_for_run_command"),
-    "run_filter": ("run",),
-    # Set to idle stops the data streams until resume (GX5-45 line 363 and 834; CV7 lines 8045, 8101).
-    "set_to_idle": ("idle",),
-    "resume": ("resume",),
-}
+def _action(a: dict) -> tuple:
+    """The _sim.ACTIONS entry of one world action of the spec (simulation.actions; sim.py _act)."""
+    if a["action"] == "aid":
+        return ("aid", a["kind"], tuple(a["enabled_by_values"]), tuple(a["values"]))
+    return (a["action"],) + tuple(a[k] for k in ("param", "flag") if k in a)
 
 
 def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
@@ -1208,6 +1070,8 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     world: list[dict] = []
     defaults = []
     by_name: dict[str, list[str]] = {}
+    groups = (proto["simulation"] or {}).get("world", [])
+    shown = {(s, f): shows for g in groups for s in g["sets"] for f, shows in g["fields"].items()}
     for sm in sets:
         s = sm["set"]
         names = _layout_classes(s["fields"])
@@ -1240,7 +1104,7 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
                     if q["type"]["kind"] == "primitive"
                 )
                 data.append({"cls": cls, "units": pyrepr(units)})
-                shows = WORLD.get(WORLD_GROUPS.get(s["name"], ""), {}).get(f["name"], {})
+                shows = shown.get((s["name"], f["name"]), {})
                 mapped = tuple((py_attr(q["name"]), shows[q["name"]]) for q in v["params"] if q["name"] in shows)
                 if mapped:
                     world.append({"cls": cls, "value": pyrepr(mapped)})
@@ -1272,7 +1136,11 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         "all_settings": [c for n in streaming.get("all_settings", []) for c in by_name.get(n, [])],
         "unaddressed": pyrepr(streaming.get("unaddressed", {})),
         "baud": classes(streaming.get("baud", {})),
-        "actions": [{"cls": c, "value": pyrepr(a)} for n, a in WORLD_ACTIONS.items() for c in by_name.get(n, [])],
+        "actions": [
+            {"cls": c, "value": pyrepr(_action(a))}
+            for a in (proto["simulation"] or {}).get("actions", [])
+            for c in by_name.get(a["command"], [])
+        ],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
         **_sim_identity(proto, sets),

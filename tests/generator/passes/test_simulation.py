@@ -220,3 +220,93 @@ def test_rtk_names_and_uncertainties_are_checked(tmp_path):
     other = RTK.replace("enum: FilterState, float", "enum: AckCode, float")
     got = errors(build(tmp_path, _aiding(AIDING + other), "simulation"))
     assert any("is not the filter's fix enum 'FilterState'" in e for e in got), got
+
+
+AIDING_COMMAND = """\
+  - id: 0x03
+    name: aiding_control
+    role: command
+    title: Aiding control
+    functions: [write]
+    sources: [{manual: a.txt, line: 9}]
+    params:
+      - {name: source, type: FilterState, functions: [write]}
+      - {name: enable, type: bool, functions: [write]}
+"""
+ACTIONS = """\
+  actions:
+    - {command: aiding_control, action: enable, param: source, flag: enable}
+    - {command: message_format, action: aid, kind: heading, enabled_by: [navigating, init], values: [desc_set]}
+    - {command: stream_control, action: reset}
+"""
+
+
+def _actions(text: str) -> dict[str, str]:
+    files = _files(SIMULATION + text)
+    files["base.yaml"] = command_set(COMMANDS + AIDING_COMMAND)
+    return files
+
+
+def test_actions_are_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _actions(ACTIONS), "simulation")
+    assert errors(ctx) == []
+    enable, aid, reset = ctx.simulation["actions"]
+    assert enable == {"command": "aiding_control", "action": "enable", "param": "source", "flag": "enable"}
+    # FilterState: init = 1, navigating = 2 (STATES above), in the order the action names them
+    assert aid["enabled_by_values"] == [2, 1] and aid["values"] == ["desc_set"]
+    assert reset == {"command": "stream_control", "action": "reset"}
+    (tmp_path / "none").mkdir()
+    assert build(tmp_path / "none", _files(SIMULATION), "simulation").simulation["actions"] == []
+
+
+def test_action_names_are_checked(tmp_path):
+    bad = (
+        ACTIONS.replace("[navigating, init]", "[navigating, full]")
+        .replace("values: [desc_set]", "values: [nope]")
+        .replace("command: stream_control, action: reset", "command: stream_ctl, action: reset")
+        + "    - {command: stream_control, action: capture}\n"
+    )
+    got = errors(build(tmp_path, _actions(bad), "simulation"))
+    expected = [
+        "'full' is not a member of FilterState",
+        "'nope' is not a parameter of message_format",
+        "'stream_ctl' is not a command of the protocol",
+        "the capture action of stream_control needs `param`",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    # enabled_by needs the enable action's parameter to be an enum (stream_control's selector is a u8)
+    on_u8 = ACTIONS.replace(
+        "command: aiding_control, action: enable, param: source",
+        "command: stream_control, action: enable, param: selector",
+    )
+    (tmp_path / "u8").mkdir()
+    got = errors(build(tmp_path / "u8", _actions(on_u8), "simulation"))
+    assert any("`enabled_by` needs an enable action whose `param` is an enum" in e for e in got), got
+
+
+WORLD = """\
+  world:
+    - sets: [sensor]
+      fields:
+        accel: {}
+"""
+
+
+def test_world_names_are_checked(tmp_path):
+    ctx = build(tmp_path, _files(SIMULATION + WORLD), "simulation")
+    assert errors(ctx) == [] and ctx.simulation["world"][0]["sets"] == ["sensor"]
+    bad = WORLD.replace("sets: [sensor]", "sets: [sensor, base, nowhere]") + "        gyro: {}\n"
+    (tmp_path / "bad").mkdir()
+    got = errors(build(tmp_path / "bad", _files(SIMULATION + bad), "simulation"))
+    expected = [
+        "'base' is not a data set of the protocol",  # a command set
+        "'nowhere' is not a data set of the protocol",
+        "'gyro' is not a field of",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    (tmp_path / "param").mkdir()
+    param = WORLD.replace("accel: {}", "accel: {x: specific_force}")
+    got = errors(build(tmp_path / "param", _files(SIMULATION + param), "simulation"))
+    assert any("'x' is not a parameter of accel" in e for e in got), got

@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "20aba106ded5439c"
+SPEC_HASH = "c2b5c570d97e2a73"
 
 __all__ = [
     "SPEC_HASH",

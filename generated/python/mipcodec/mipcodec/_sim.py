@@ -851,7 +851,7 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.ExternalTimeDelta: (("dt_nanos", "ns", None),),
 }
 
-# The simulated world (sim_world.py; backend.py WORLD): class -> ((parameter, world quantity), ...)
+# The simulated world (sim_world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
 WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
     sensor.ScaledAccel: (("scaled_accel", "specific_force"),),
     sensor.ScaledGyro: (("scaled_gyro", "angular_rate"),),
@@ -1071,7 +1071,7 @@ FILTER: Dict[str, Dict[str, Any]] = {
     },
 }
 
-# What commands do to the world (backend.py WORLD_ACTIONS): class -> (action, arguments...)
+# What commands do to the world (the spec's simulation.actions): class -> (action, arguments...)
 ACTIONS: Dict[Any, Tuple[Any, ...]] = {
     threedm.CaptureGyroBias: ("capture", "averaging_time_ms"),
     filter.ResetFilter: ("reset",),

@@ -35,13 +35,13 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.Timestamp: (("nanoseconds", None, None),),
 }
 
-# The simulated world (sim_world.py; backend.py WORLD): class -> ((parameter, world quantity), ...)
+# The simulated world (sim_world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
 WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {}
 
 # The navigation filter of each device (backend.py FILTER): states, aiding, fix type members
 FILTER: Dict[str, Dict[str, Any]] = {}
 
-# What commands do to the world (backend.py WORLD_ACTIONS): class -> (action, arguments...)
+# What commands do to the world (the spec's simulation.actions): class -> (action, arguments...)
 ACTIONS: Dict[Any, Tuple[Any, ...]] = {}
 
 # Message format commands: class -> (set, list parameter, descriptor member or None, decimation member or None)
