@@ -11,7 +11,14 @@ import re
 
 from generator import commands, diagnostics, model
 from generator.cmake import cmake_package_files, pkg_config
-from generator.examples import ExampleError, device_variant, example_context, session_example, session_example_context
+from generator.examples import (
+    ExampleError,
+    device_variant,
+    example_context,
+    example_literal,
+    session_example,
+    session_example_context,
+)
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -772,30 +779,24 @@ class _Protocol:
     def _c_type(self, tref: dict) -> str:
         return _PRIM[tref["name"]][0] if tref["kind"] == "primitive" else self.type_c(tref["name"])
 
-    def _literal(self, tref: dict, value, hex_ok: bool = True) -> str:
-        """A value of the example table as a C initializer of type tref (integers from 0x10 in
-        hex, as the Python example writes them, except the members of a struct)."""
-        kind = tref["kind"]
-        if kind == "struct":
-            t = self.types[tref["name"]]
-            qs = {q["name"]: q["type"] for q in t["params"]}
-            return "{" + ", ".join(f".{member(k)} = {self._literal(qs[k], x, False)}" for k, x in value.items()) + "}"
-        if kind == "enum":
-            values = self.types[tref["name"]]["values"]
-            number = value if isinstance(value, int) else next(x["value"] for x in values if x["name"] == value)
-            view = next(t for t in self.type_views if t["name"] == tref["name"])
-            t = self.types[tref["name"]]
-            for tv, vv in zip(t["values"], view["values"]):
-                if tv["value"] == number:
-                    return vv["macro"]
-            return f"({view['c']}){number}"
-        if kind == "primitive" and tref["name"] == "bool":
-            return "true" if value else "false"
-        if kind == "primitive" and tref["name"] in ("float", "double"):
-            return repr(float(value)) + ("f" if tref["name"] == "float" else "")
-        if kind in ("primitive", "bitfield") and isinstance(value, int) and not isinstance(value, bool):
-            return f"0x{value:02X}" if value >= 0x10 and hex_ok else str(value)
-        raise ExampleError(f"C back end: the configure-and-stream example cannot write a {kind} value {value!r}")
+    def _literal(self, tref: dict, value) -> str:
+        """A value of the example as a C initializer, from its examples.example_literal record."""
+        return self._spell(
+            example_literal(self.types, tref, value, "C", lambda k, n: member(n) if k == "field" else n, "f")
+        )
+
+    def _spell(self, r: dict) -> str:
+        if r["kind"] == "struct":
+            return "{" + ", ".join(f".{x['field']} = {self._spell(x['value'])}" for x in r["fields"]) + "}"
+        if r["kind"] == "enum":  # the member's macro, a cast number for one the spec does not name
+            view = next(t for t in self.type_views if t["name"] == r["type"])
+            values = zip(self.types[r["type"]]["values"], view["values"])
+            return next((vv["macro"] for tv, vv in values if tv["value"] == r["number"]), f"({view['c']}){r['number']}")
+        if r["kind"] == "bool":
+            return "true" if r["value"] else "false"
+        if r["kind"] == "text":
+            return r["text"]
+        return f"0x{r['value']:02X}" if r["hex"] else str(r["value"])
 
     def _printf(self, params, prefix: str) -> dict:
         """printf format and arguments printing parameters as `name=value` pairs (arrays in
