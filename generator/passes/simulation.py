@@ -182,9 +182,8 @@ class _Checker:
                     f"simulation identity: item '{r['item']}' is reported by parameters of different types",
                     "one type per item",
                 )
-            reports.append(
-                {**r, "set": next(s["id"] for s, f in self.fields[r["reply"]] if f is reply), "descriptor": reply["id"]}
-            )
+            set_id = next(s["id"] for s, f in self.fields[r["reply"]] if f is reply)
+            reports.append({**r, "set": set_id, "descriptor": reply["id"], "type": t})
         devices = []
         for i, d in enumerate(spec["devices"]):
             p = ("identity", "devices", i)

@@ -1168,13 +1168,7 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
     reports: dict[str, list] = {}
     ident = sim.get("identity") or {"reports": [], "devices": [], "items": {}}
     for r in ident["reports"]:
-        fields = next(s["fields"] for s in proto["sets"] if s["id"] == r["set"])
-        field = next(f for f in fields if f["id"] == r["descriptor"])
-        params, t = field["params"], {}
-        for name in r["param"].split("."):
-            q = next(q for q in params if q["name"] == name)
-            t = q["type"]
-            params = struct_types[t["name"]]["params"] if t["kind"] == "struct" else []
+        t = r["type"]  # the reported parameter's type (the simulation pass)
         fmt = (t["length"], " " if t["padding"] == "space" else "\x00", t["justify"]) if t["kind"] == "string" else None
         path = tuple(py_attr(n) for n in r["param"].split("."))
         reports.setdefault(classes[(r["set"], r["descriptor"])], []).append((path, r["item"], fmt))

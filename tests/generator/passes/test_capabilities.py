@@ -109,9 +109,13 @@ def test_descriptor_lists_get_their_capacity_and_the_identity_its_items(tmp_path
         "firmware": {"kind": "integer", "max": 65535},
         "serial_number": {"kind": "string", "max": 4},
     }
-    assert sim["identity"]["reports"][1] == {
+    report = dict(sim["identity"]["reports"][1])
+    t = report.pop("type")  # the reported parameter's type: info.serial is `string, length: 4` (TYPES)
+    assert report == {
         "reply": "info", "param": "info.serial", "item": "serial_number", "set": 1, "descriptor": 0x81,
     }  # fmt: skip
+    assert (t["kind"], t["length"]) == ("string", 4)
+    assert sim["identity"]["reports"][0]["type"]["name"] == "u16"  # info.firmware
 
 
 def test_a_list_longer_than_the_first_reply_needs_the_extended_command(tmp_path):

@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "c2b5c570d97e2a73"
+SPEC_HASH = "a2fd522e9cd2b70f"
 
 __all__ = [
     "SPEC_HASH",
