@@ -385,9 +385,9 @@ class Simulator:
                     values[a] = v
         internal = _sim.FILTER.get(self.device, {}).get("internal")
         if internal and command.NAME == internal["command"]:  # a source's effective state (ALL included)
-            source = int(values.get(internal["param"], -1) or 0)
-            if source != internal["all"]:
-                values[internal["enable"]] = self._aiding_enabled(internal, source)
+            asked = int(values.get(internal["param"], -1) or 0)
+            if asked != internal["all"]:
+                values[internal["enable"]] = self._aiding_enabled(internal, asked)
         # A reply parameter named otherwise than the command's (enable -> enabled) takes the value
         # of the command parameter at its position, when both have as many.
         sent = [a for a in type(command)._ATTRS if a != "function"]
@@ -540,7 +540,7 @@ class Simulator:
                     if type(value) is c:
                         chosen = int(getattr(value, heading["param"], 0) or 0)
                 if chosen is None:
-                    chosen = int(_sim.FACTORY.get(c, {}).get(heading["param"], 0) or 0)
+                    chosen = int(self._factory(c).get(heading["param"], 0) or 0)
             nav.heading_sources = list(heading["sources"].get(chosen or 0, []))
         alignment = profile.get("alignment")
         if alignment and "gnss" in nav.internal:
