@@ -697,11 +697,12 @@ class _Protocol:
             return next(r for r in api if r["call"] == c)
 
         def call(step: str, fn: str | None) -> dict:
-            """The call of one step: function, arguments (after the link), constants they use."""
+            """The call of one step: function, arguments (after the link) as records that
+            session_macros.j2 spells (`arg_list`, `consts`)."""
             st = ex[step]
             row = function(step, fn)
             types = {q["name"]: q["type"] for q in st["variant"]["params"]}
-            args, consts = [], []
+            args = []
             for a in row["args"]:
                 if fn not in (None, "write") or a["name"] not in st["values"]:
                     raise ExampleError(
@@ -709,23 +710,16 @@ class _Protocol:
                         f" {row['name']} (generator/examples.py SESSION_EXAMPLES)"
                     )
                 value, tref = st["values"][a["name"]], types[a["name"]]
-                if a["how"] == "value":
-                    args.append(self._literal(tref, value))
-                    continue
-                if a["how"] == "struct":
-                    consts.append(f"static const {self._c_type(tref)} {a['arg']} = {self._literal(tref, value)};")
-                    args.append(f"&{a['arg']}")
-                    continue
-                items = ", ".join(self._literal(tref, v) for v in value)
-                if tref["kind"] == "primitive" and tref["name"] == "char":
-                    args.append(c_string(value))
-                    continue
-                consts.append(f"static const {self._c_type(tref)} {a['arg']}[] = {{{items}}};")
-                args.append(a["arg"])
-                if a["how"] in ("counted", "remaining"):
-                    args.append(f"{len(value)}u")
+                arg = {"how": a["how"], "arg": a["arg"], "ctype": self._c_type(tref)}
+                if a["how"] in ("value", "struct"):
+                    arg["literal"] = self._literal(tref, value)
+                elif tref["kind"] == "primitive" and tref["name"] == "char":
+                    arg.update(how="string", text=c_string(value))
+                else:
+                    arg.update(items=[self._literal(tref, v) for v in value], count=len(value))
+                args.append(arg)
             what = f"{st['set']['name']}.{st['field']['name']}" + (f" {fn}" if fn else "")
-            return {"fn": row["name"], "args": "".join(", " + x for x in args), "consts": consts, "what": what}
+            return {"fn": row["name"], "arg_list": args, "what": what}
 
         def reply(step: str, fn: str | None, var: str) -> dict:
             r = function(step, fn)["reply"]
@@ -779,65 +773,59 @@ class _Protocol:
     def _c_type(self, tref: dict) -> str:
         return _PRIM[tref["name"]][0] if tref["kind"] == "primitive" else self.type_c(tref["name"])
 
-    def _literal(self, tref: dict, value) -> str:
-        """A value of the example as a C initializer, from its examples.example_literal record."""
-        return self._spell(
+    def _literal(self, tref: dict, value) -> dict:
+        """A value of the example as an examples.example_literal record with its C names (an
+        enum's member macro, or its type for a number the spec does not name); session_macros.j2
+        `literal` spells it."""
+        return self._named(
             example_literal(self.types, tref, value, "C", lambda k, n: member(n) if k == "field" else n, "f")
         )
 
-    def _spell(self, r: dict) -> str:
+    def _named(self, r: dict) -> dict:
         if r["kind"] == "struct":
-            return "{" + ", ".join(f".{x['field']} = {self._spell(x['value'])}" for x in r["fields"]) + "}"
-        if r["kind"] == "enum":  # the member's macro, a cast number for one the spec does not name
+            return {**r, "fields": [{**x, "value": self._named(x["value"])} for x in r["fields"]]}
+        if r["kind"] == "enum":
             view = next(t for t in self.type_views if t["name"] == r["type"])
             values = zip(self.types[r["type"]]["values"], view["values"])
-            return next((vv["macro"] for tv, vv in values if tv["value"] == r["number"]), f"({view['c']}){r['number']}")
-        if r["kind"] == "bool":
-            return "true" if r["value"] else "false"
-        if r["kind"] == "text":
-            return r["text"]
-        return f"0x{r['value']:02X}" if r["hex"] else str(r["value"])
+            macro = next((vv["macro"] for tv, vv in values if tv["value"] == r["number"]), None)
+            return {**r, "macro": macro, "ctype": view["c"]}
+        return r
 
     def _printf(self, params, prefix: str) -> dict:
-        """printf format and arguments printing parameters as `name=value` pairs (arrays in
-        brackets, strings in quotes), reading them from the C expression prefix + member."""
-        fmt: list[str] = []
-        args: list[str] = []
+        """What session_macros.j2 `printf` prints of parameters as `name=value` pairs (arrays in
+        brackets, strings in quotes), read from the C expression prefix + member: per parameter
+        its label, kind (string, fixed, scalar) and C expression, per scalar its printf class
+        (bool, float, signed, unsigned)."""
+        items: list[dict] = []
 
-        def scalar(e: model.Elem, expr: str) -> str:
+        def scalar(e: model.Elem, expr: str) -> dict:
             if e.kind in ("struct", "union") or e.primitive is None:
                 raise ExampleError(f"C back end: the configure-and-stream example cannot print {expr}")
-            if e.primitive == "bool":
-                args.append(f'{expr} ? "true" : "false"')
-                return "%s"
-            if e.primitive in ("float", "double"):
-                args.append(f"(double){expr}")
-                return "%g"
-            if PRIMITIVES[e.primitive][2]:
-                args.append(f"(long long){expr}")
-                return "%lld"
-            args.append(f"(unsigned long long){expr}")
-            return "%llu"
+            if e.primitive in ("bool", "float", "double"):
+                cls = "bool" if e.primitive == "bool" else "float"
+            else:
+                cls = "signed" if PRIMITIVES[e.primitive][2] else "unsigned"
+            return {"cls": cls, "expr": expr}
 
         def walk(qs, pre: str, label: str) -> None:
             for q in qs:
                 if q.optional or q.kind not in (model.SCALAR, model.FIXED, model.STRING) or q.function:
                     raise ExampleError(f"C back end: the configure-and-stream example cannot print {q.name}")
-                expr = pre + member(q.name)
-                name = label + q.name
+                expr, name = pre + member(q.name), label + q.name
                 if q.kind == model.STRING:
-                    fmt.append(f'{name}=\\"%.*s\\"')
-                    args.extend([f"(int)sizeof {expr}", expr])
+                    items.append({"kind": "string", "label": name, "expr": expr})
                 elif q.kind == model.FIXED:
-                    fmt.append(f"{name}=[" + ", ".join(scalar(q.elem, f"{expr}[{i}]") for i in range(q.count)) + "]")
+                    elems = [scalar(q.elem, f"{expr}[{i}]") for i in range(q.count)]
+                    items.append({"kind": "fixed", "label": name, "elems": elems})
                 elif q.elem.kind == "struct":
-                    t = self.types[q.elem.name]
-                    walk(model.params(self.proto, t["params"], None).params, expr + ".", name + ".")
+                    walk(
+                        model.params(self.proto, self.types[q.elem.name]["params"], None).params, expr + ".", name + "."
+                    )
                 else:
-                    fmt.append(f"{name}={scalar(q.elem, expr)}")
+                    items.append({"kind": "scalar", "label": name, "elems": [scalar(q.elem, expr)]})
 
         walk(params, prefix, "")
-        return {"format": " ".join(fmt), "printf_args": "".join(", " + a for a in args)}
+        return {"prints": items}
 
     def context(self) -> dict:
         return {
