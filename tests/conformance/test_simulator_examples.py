@@ -45,7 +45,11 @@ def test_configure_example_against_simulator(lang, protocol, transport):
         r = run_example(lang, protocol, sim.address, str(COUNT), timeout=60)
     assert r.returncode == 0, r.stderr
     lines = r.stdout.splitlines()
-    title = next(d["title"] for d in proto["devices"] if d["id"] == ex["device"])
+    # The model name the simulated device reports: the spec's identity for the model (the MS-CIP
+    # manual's example reply, "MS_IMU3020", line 294), else the device's title.
+    identity = (proto["simulation"] or {}).get("identity") or {}
+    named = [e["values"].get("model_name") for e in identity.get("devices", []) if e["device"] == ex["device"]]
+    title = named[0] if named and named[0] else next(d["title"] for d in proto["devices"] if d["id"] == ex["device"])
     assert lines[0].startswith("device ") and title in lines[0], lines[0]
     assert lines[1].startswith("setting "), r.stdout
     written = ex["setting"]["values"]
