@@ -106,8 +106,8 @@ def cmd_diff(ap, args) -> int:
     from .release import VERSION_FILE
 
     try:
-        old, old_label = wirediff.load_side(args.old)
-        new, new_label = wirediff.load_side(args.new)
+        old, old_label = wirediff.load_side(args.old, overlays=[Path(d) for d in args.old_overlay])
+        new, new_label = wirediff.load_side(args.new, overlays=[Path(d) for d in args.new_overlay])
     except wirediff.DiffError as e:
         print(f"mipgen diff: error: {e}", file=sys.stderr)
         return 2
@@ -126,7 +126,12 @@ def cmd_lint(ap, args) -> int:
     from . import lint
 
     spec_dir, overlays = _split_spec(ap, args.spec)
-    return _run_spec_errors(lambda: lint.run(spec_dir, overlays))
+    if args.vectors and spec_dir is None:
+        ap.error("--vectors goes with a --spec of your own (the project's spec uses tests/vectors and tests/streams)")
+    vectors = Path(args.vectors) if args.vectors else None
+    if vectors is not None and not vectors.is_dir():
+        ap.error(f"--vectors {vectors}: no such directory")
+    return _run_spec_errors(lambda: lint.run(spec_dir, overlays, vectors))
 
 
 def cmd_targets(ap, args) -> int:
@@ -150,8 +155,17 @@ def main(argv: list[str] | None = None, prog: str = "mipgen") -> int:
     out.add_argument("--json", action="store_true", help="the report as JSON")
     out.add_argument("--changelog", action="store_true", help="a Markdown changelog section")
     d.add_argument("--version", default=None, help="the version being released (default: VERSION)")
+    for side in ("old", "new"):
+        d.add_argument(
+            f"--{side}-overlay",
+            action="append",
+            default=[],
+            metavar="DIR",
+            help=f"an overlay directory laid over the {side} spec (repeatable, in order), as generate --spec DIR DIR...",
+        )
     li = sub.add_parser("lint", help="descriptors without golden vectors, YAML traps, stated lengths")
     _spec_args(li)
+    li.add_argument("--vectors", default=None, help="golden vectors of your spec: DIR/<protocol>/*.yaml")
     sub.add_parser("targets", help="the registered language targets, in render order, one line")
     args = ap.parse_args(argv)
     if args.command is None:

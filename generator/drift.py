@@ -35,7 +35,9 @@ def main() -> int:
     with tempfile.TemporaryDirectory(prefix="drift-") as tmp:
         gen, docs = Path(tmp, "generated"), Path(tmp, "docs")
         try:
-            pipeline.run(spec_dir=None, out_dir=gen, only=None, validate_only=False, lint=False, docs_dir=docs)
+            pipeline.run(
+                spec_dir=None, out_dir=gen, only=None, validate_only=False, lint=False, docs_dir=docs, quiet=True
+            )
         except SpecErrors as e:
             print("\n".join(str(x) for x in e.errors), file=sys.stderr)
             return 1

@@ -19,6 +19,7 @@ import ctypes.util
 import os
 import shutil
 import tempfile
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from .render import ToolError
@@ -81,8 +82,36 @@ def _clean_leftovers(out_dir: Path) -> None:
             shutil.rmtree(p, ignore_errors=True)
 
 
-def write_tree(out_dir: Path, files: dict[str, str], owned: list[str]) -> None:
-    """Makes out_dir hold `files` (paths relative to it); stale files in the `owned` directories go."""
+@dataclass(frozen=True)
+class TreeChanges:
+    """What a `write_tree` changed, paths relative to the tree (sorted)."""
+
+    added: list[str] = field(default_factory=list)
+    modified: list[str] = field(default_factory=list)
+    removed: list[str] = field(default_factory=list)
+    total: int = 0
+
+    def summary(self, name: str, limit: int = 20) -> list[str]:
+        """One line for the tree, then one per changed path (A, M, D as git prints them), at most limit."""
+        if not (self.added or self.modified or self.removed):
+            return [f"{name}: up to date ({self.total} files)"]
+        lines = [
+            f"{name}: {len(self.modified)} changed, {len(self.added)} added, {len(self.removed)} removed "
+            f"({self.total} files)"
+        ]
+        marked = sorted(
+            [("A", r) for r in self.added] + [("M", r) for r in self.modified] + [("D", r) for r in self.removed],
+            key=lambda x: x[1],
+        )
+        lines += [f"  {mark} {rel}" for mark, rel in marked[:limit]]
+        if len(marked) > limit:
+            lines.append(f"  ... and {len(marked) - limit} more")
+        return lines
+
+
+def write_tree(out_dir: Path, files: dict[str, str], owned: list[str]) -> TreeChanges:
+    """Makes out_dir hold `files` (paths relative to it); stale files in the `owned` directories go.
+    Returns what changed."""
     out_dir = Path(out_dir).resolve()
     try:
         _clean_leftovers(out_dir)
@@ -91,8 +120,14 @@ def write_tree(out_dir: Path, files: dict[str, str], owned: list[str]) -> None:
         kept = {rel: p for rel, p in existing.items() if rel not in data and not _owned(rel, owned)}
         stale = [rel for rel in existing if rel not in data and rel not in kept]
         changed = [rel for rel, b in data.items() if rel not in existing or not _same(existing[rel], b)]
+        changes = TreeChanges(
+            added=sorted(rel for rel in changed if rel not in existing),
+            modified=sorted(rel for rel in changed if rel in existing),
+            removed=sorted(stale),
+            total=len(data) + len(kept),
+        )
         if not changed and not stale and out_dir.is_dir():
-            return
+            return changes
         out_dir.parent.mkdir(parents=True, exist_ok=True)
         new = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}{_NEW}", dir=out_dir.parent))
         os.chmod(new, 0o777 & ~_umask())  # mkdtemp makes it private; the tree is not
@@ -127,6 +162,7 @@ def write_tree(out_dir: Path, files: dict[str, str], owned: list[str]) -> None:
     except BaseException:
         shutil.rmtree(new, ignore_errors=True)
         raise
+    return changes
 
 
 def write_file(path: Path, text: str) -> None:

@@ -28,6 +28,7 @@ def run(
     docs_dir: Path | None = None,
     vectors_dir: Path | None = None,
     overlays: list[Path] = (),
+    quiet: bool = False,
 ) -> int:
     if spec_dir is None and CHECKOUT is None:
         raise ToolError("no spec directory given, and an installed generator has no project spec: pass --spec DIR")
@@ -76,13 +77,24 @@ def run(
 
         owned.extend(docs.OUTPUT_DIRS)
         files.update(docs.render(ir, vectors, files))
-    write_tree(out_dir, files, owned)
+    changes = write_tree(out_dir, files, owned)
+    if not quiet:
+        # What a regeneration changed, in git's letters (issue 39: `make` said nothing).
+        print("\n".join(changes.summary(_display(out_dir))))
     # docs/errata.md is the project's page about its own spec: a spec given with --spec (a test
     # fixture, the golden tree) or with overlays never rewrites it, unless a docs directory is named.
     if (spec_dir is None and not overlays) or docs_dir is not None:
         docs_dir = docs_dir or ROOT / "docs"
         write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0
+
+
+def _display(path: Path) -> str:
+    """path as the user would type it: relative to the current directory when inside it."""
+    try:
+        return os.path.relpath(path)
+    except ValueError:
+        return str(path)
 
 
 def _located(e: BackendError, spec_dir: Path | None, root: Path, overlays) -> SpecError:

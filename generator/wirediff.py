@@ -60,15 +60,21 @@ class Change:
 
 
 # ------------------------------------------------------------------------------ loading
-def load_side(arg: str, root: Path | None = None) -> tuple[dict, str]:
-    """The IR of a spec directory or of a git revision's spec/, and how to call it. Revisions are
-    those of the git repository of the current directory (as for `git diff`), else of this
+def load_side(arg: str, root: Path | None = None, overlays: list[Path] = ()) -> tuple[dict, str]:
+    """The IR of a spec directory or of a git revision's spec/, with overlay directories laid over
+    it in order (as `mipgen generate --spec DIR OVERLAY...` does), and how to call it. Revisions
+    are those of the git repository of the current directory (as for `git diff`), else of this
     checkout; root names another repository."""
     root = root or _repository()
+    overlays = list(overlays)
+    for d in overlays:
+        if not Path(d).is_dir():
+            raise DiffError(f"overlay {d}: no such directory")
+    suffix = "".join(f" + {d}" for d in overlays)
     path = Path(arg)
     if path.is_dir():
         spec_dir = path / "spec" if (path / "spec").is_dir() and not _has_protocol(path) else path
-        return _load(spec_dir, str(arg)), str(arg)
+        return _load(spec_dir, str(arg) + suffix, overlays), str(arg) + suffix
     rev = subprocess.run(
         ["git", "-C", str(root), "rev-parse", "--verify", "--quiet", f"{arg}^{{commit}}"],
         capture_output=True,
@@ -82,7 +88,8 @@ def load_side(arg: str, root: Path | None = None) -> tuple[dict, str]:
     with tempfile.TemporaryDirectory(prefix="mipgen-diff-") as tmp:
         with tarfile.open(fileobj=BytesIO(archive.stdout)) as tar:
             tar.extractall(tmp, filter="data")
-        return _load(Path(tmp) / "spec", f"{arg}:spec"), f"{arg} ({rev.stdout.strip()[:12]})"
+        label = f"{arg} ({rev.stdout.strip()[:12]}){suffix}"
+        return _load(Path(tmp) / "spec", f"{arg}:spec{suffix}", overlays), label
 
 
 def _repository() -> Path:
@@ -97,11 +104,11 @@ def _has_protocol(path: Path) -> bool:
     return any(p.is_dir() and any(p.glob("*.yaml")) for p in path.iterdir() if p.name != "schema")
 
 
-def _load(spec_dir: Path, label: str) -> dict:
+def _load(spec_dir: Path, label: str, overlays: list[Path] = ()) -> dict:
     from .diagnostics import SpecError, SpecErrors
 
     try:
-        return load_spec(spec_dir, root=spec_dir.parent)
+        return load_spec(spec_dir, root=spec_dir.parent, overlays=list(overlays))
     except SpecErrors as e:
         raise DiffError(f"{label} does not load:\n" + "\n".join(str(x) for x in e.errors[:10])) from None
     except SpecError as e:

@@ -359,3 +359,57 @@ def test_python_m_generator_subcommands_are_mipgen():
         [sys.executable, "-m", "generator", "diff", "--help"], cwd=ROOT, capture_output=True, text=True
     )
     assert proc.returncode == 0 and "OLD" in proc.stdout.upper()
+
+
+# ------------------------------------------------------------------------------ issue 39: tool gaps
+def test_diff_of_the_spec_with_the_spec_plus_an_overlay(capsys):
+    """A user's overlay compared with the spec it extends, without merging a copy by hand."""
+    spec = str(ROOT / "spec")
+    assert mipgen(["diff", spec, spec, "--new-overlay", str(OVERLAY), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    got = {(c["kind"], c["where"]) for c in doc["changes"]}
+    assert ("wire-compatible", "device gq9_test") in got
+    assert ("wire-compatible", "0x80,0x50 sensor.board_temperature") in got
+    assert ("wire-compatible", "0x80,0x51 sensor.vibration") in got
+    assert doc["verdict"] == "wire-compatible"
+    # The other way round, the overlay's additions are removals: wire-breaking.
+    assert mipgen(["diff", spec, spec, "--old-overlay", str(OVERLAY)]) == 1
+    out = capsys.readouterr().out
+    assert f"+ {OVERLAY}" in out and "data descriptor removed" in out
+    assert mipgen(["diff", spec, spec, "--new-overlay", str(ROOT / "no-such-overlay")]) == 2
+    assert "overlay " in capsys.readouterr().err
+
+
+def test_lint_of_a_users_spec_without_vectors_says_they_were_not_checked(capsys):
+    """An installed mipgen with a user's spec has no vectors: one line, not every descriptor."""
+    fixture = ROOT / "tests" / "generator" / "fixtures" / "everything"
+    assert mipgen(["lint", "--spec", str(fixture)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[-2].startswith("golden vectors: not checked (") and "--vectors DIR" in out[-2]
+    assert out[-1] == "lint: 0 YAML trap(s), golden vectors not checked"
+    assert not any(line.startswith("  ") for line in out)
+    # With its vectors, the descriptors they do not cover are listed (fewer than all of them).
+    assert mipgen(["lint", "--spec", str(fixture), "--vectors", str(ROOT / "tests" / "golden" / "vectors")]) == 0
+    out = capsys.readouterr().out.splitlines()
+    header = next(line for line in out if line.startswith("descriptors without a golden vector ("))
+    listed, total = re.match(r"descriptors without a golden vector \((\d+) of (\d+);", header).groups()
+    assert int(listed) < int(total)
+    assert out[-1] == f"lint: 0 YAML trap(s), {listed} descriptor(s) without a golden vector"
+
+
+def test_generate_prints_what_changed(tmp_path, capsys):
+    out = tmp_path / "out"
+    argv = ["generate", "--spec", str(ROOT / "spec"), str(OVERLAY), "--out", str(out), "--langs", "python"]
+    assert mipgen(argv) == 0
+    first = capsys.readouterr().out.splitlines()
+    assert re.fullmatch(r".*out: 0 changed, (\d+) added, 0 removed \(\1 files\)", first[0]), first[0]
+    assert any(line.startswith("  A python/") for line in first[1:])
+    assert mipgen(argv) == 0
+    assert re.fullmatch(r".*out: up to date \(\d+ files\)", capsys.readouterr().out.strip())
+    sensor = out / "python" / "mipcodec" / "mipcodec" / "sensor.py"
+    sensor.write_text("stale\n")
+    (out / "python" / "left-over.py").write_text("x = 1\n")
+    assert mipgen(argv) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert re.fullmatch(r".*out: 1 changed, 0 added, 1 removed \(\d+ files\)", lines[0]), lines[0]
+    assert lines[1:] == ["  D python/left-over.py", "  M python/mipcodec/mipcodec/sensor.py"]

@@ -38,7 +38,9 @@ def render(out: Path) -> dict[str, RuntimeCopy]:
     ends no longer produce are removed). Returns the files of out that are runtime copies, each
     with the copy it is (its text is exactly the copy's)."""
     with recording_copies() as copies:
-        pipeline.run(spec_dir=FIXTURE, out_dir=out, only=LANGS, validate_only=False, lint=False, vectors_dir=VECTORS)
+        pipeline.run(
+            spec_dir=FIXTURE, out_dir=out, only=LANGS, validate_only=False, lint=False, vectors_dir=VECTORS, quiet=True
+        )
     by_text: dict[str, list[RuntimeCopy]] = {}
     for c in copies:
         by_text.setdefault(c.text, []).append(c)
