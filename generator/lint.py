@@ -4,7 +4,7 @@
   loader as a boolean; each is listed with its place and the quoted spelling to use. This runs on
   the text, so it also explains a spec that does not load.
 - Descriptors without a golden vector (the project's spec: tests/vectors and tests/streams; a
-  spec of your own has none, so every descriptor is listed once as a count).
+  spec of your own: those of --vectors DIR, and without it one line saying they were not checked).
 - Stated lengths of the manuals that disagree with the computed ones (generator/stated_lengths.py).
 
 Exit status 0 (the findings are advice), 1 when the spec does not load.
