@@ -59,6 +59,20 @@ def example_command(protocol: dict) -> tuple[dict, dict]:
     )
 
 
+def typed_field_example(protocol: dict) -> tuple[dict, dict] | None:
+    """(set, field) of the typed one-field example (decode a received field's data, put it in a
+    packet): in the data set with the lowest id, the first field (in spec order) with role "data",
+    one variant (no per-device layouts) and a fixed, non-zero size; None when there is none (the
+    example is then left out)."""
+    for s in sorted((s for s in protocol["sets"] if s["kind"] == "data"), key=lambda s: s["id"]):
+        for field in s["fields"]:
+            if field["role"] == "data" and len(field["variants"]) == 1:
+                size = field["variants"][0]["size"]
+                if size["fixed"] and size["min"] > 0:
+                    return s, field
+    return None
+
+
 def example_context(protocol: dict, api_names: Callable[[dict, dict, dict], dict]) -> dict:
     """What an example template prints besides the back end's own context: the chosen command
     (set and field of the IR, and the back end's names for it) and the block size."""

@@ -334,6 +334,21 @@ class _Protocol:
             m["members"] = members
         return m
 
+    def typed_example(self) -> dict | None:
+        """Names of the crate documentation's one-field example (examples.typed_field_example)."""
+        found = examples.typed_field_example(self.proto)
+        if found is None:
+            return None
+        s, f = found
+        size = f["variants"][0]["size"]["min"]
+        return {
+            "module": self.set_module(s),
+            "type": camel(f["name"]),
+            "set": _hex(s["id"]),
+            "descriptor": _hex(f["id"]),
+            "size": size,
+        }
+
     # ---------------------------------------------------------------- fields
     def layout_model(self, name: str, rust: str, layout: dict, descriptor: int, set_id: int | None, doc: str) -> dict:
         params = self.params_model(layout["params"], layout["functions"])
@@ -500,6 +515,7 @@ class _Protocol:
             "shared": shared,
             "shared_rule": bool(shared) and "data" in proto["set_kinds"],
             "first_set": sets[0]["id"] if sets else "0x00",
+            "typed_example": self.typed_example(),
             "cargo": cargo_metadata(proto),
             "rust_version": RUST_VERSION,
         }

@@ -10,6 +10,7 @@ use protocodec::builder::PacketBuilder;
 use protocodec::dispatch::{set_defined, write_packet_json};
 use protocodec::fields::{FieldItem, Packet};
 use protocodec::parser::{Event, Parser};
+use protocodec::prelude::Layout;
 use protocodec::wire::Writer;
 use protocodec::{decode_field, FieldValue};
 
@@ -195,6 +196,12 @@ pub fn count_fields(input: &[u8]) -> (usize, usize) {
     parser.feed(input, &mut on_event);
     parser.flush(&mut on_event);
     (packets, decoded)
+}
+
+/// A field's typed value from its data, for any field type (the crate documentation's "One
+/// field, typed" in a `no_std` build): the prelude brings the `Layout` trait into scope.
+pub fn decode_typed<L: Layout>(data: &[u8]) -> Option<L> {
+    L::decode_data(data).ok()
 }
 
 #[cfg(test)]

@@ -39,8 +39,45 @@
 //!     }
 //! }
 //! ```
+//!
+//! # One field, typed (firmware too)
+//!
+//! Every field type implements [`wire::Layout`] (its descriptor and set, `decode_data`,
+//! `encode_data`), so the trait must be in scope: `use democodec::prelude::*;` brings it and
+//! the parser, packet and builder types. With `default-features = false` this needs neither `std`
+//! nor an allocator (`tests/lang/rust_consumer/core` uses the prelude in a `no_std` build for a
+//! Cortex-M4F).
+//!
+//! ```
+//! use democodec::prelude::*;
+//! use democodec::data::Sample;
+//!
+//! // The data of a received 0x90,0x01 field (after its header), e.g. from
+//! // `FieldItem::Field { descriptor, data }` of `Packet::fields`.
+//! let data = [0u8; 29];
+//! let value = Sample::decode_data(&data).unwrap();
+//! assert_eq!((Sample::DESCRIPTOR_SET, Sample::DESCRIPTOR), (Some(0x90), 0x01));
+//!
+//! // And back into a packet of its set.
+//! let mut builder = PacketBuilder::new(0x90);
+//! builder.add(&value).unwrap();
+//! let packet = Packet::new(builder.finish()).unwrap();
+//! assert!(matches!(packet.fields().next(), Some(FieldItem::Field { descriptor: 0x01, .. })));
+//! ```
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
+
+/// What typed decoding needs in scope, `use democodec::prelude::*;`: the
+/// [`crate::wire::Layout`] and [`crate::wire::Wire`] traits, the stream parser, the packet view,
+/// the builder, the errors.
+pub mod prelude {
+    pub use crate::builder::PacketBuilder;
+    pub use crate::error::{DecodeError, EncodeError};
+    pub use crate::fields::{FieldItem, Packet};
+    pub use crate::parser::{Event, Parser};
+    pub use crate::wire::{Layout, Reader, Wire, Writer};
+    pub use crate::{decode_field, FieldValue};
+}
 
 pub mod bounded;
 pub mod builder;
