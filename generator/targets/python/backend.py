@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import textwrap
 
-from generator import columns, commands, model
+from generator import columns, commands, model, simulation
 from generator.examples import example_context, session_example, session_example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
@@ -942,9 +942,10 @@ def _session_example(api_sets: list[dict]) -> dict | None:
 # The simulated device (runtime sim.py, issue 21) answers from the IR: which parameters a function
 # sends, which are enums, the reply fields and their `when`, and the protocol's `simulation` entry
 # (spec protocol file, generator/passes/simulation.py: the ack code of each refusal, the streaming
-# commands, base rates, the navigation filter per device). Here they are only put in the shapes
-# the runtime's tables take (_sim.py): a set is a number, or the parameter that carries it, or a
-# list of alternatives, each a parameter or (parameter, {selector value: set}).
+# commands, base rates, the navigation filter per device), with names resolved to values by
+# generator/simulation.py. Here they are only named and put in the shapes the runtime's tables
+# take (_sim.py): a set is a number, or the parameter that carries it, or a list of alternatives,
+# each a parameter or (parameter, {selector value: set}).
 def _streaming(sim: dict | None) -> dict:
     if sim is None:
         return {}
@@ -973,76 +974,6 @@ def _streaming(sim: dict | None) -> dict:
     }
 
 
-def _filters(sim: dict | None, types: dict | None = None) -> dict:
-    """The navigation filter per device (sim_world.NavFilter): its state enum's members in order,
-    what aids it, its GNSS fix type members (fix, no fix) and its internal aiding (the spec's
-    names resolved: status flag roles to masks, enum members to values)."""
-    types = types or {}
-
-    def value(enum: str, name: str) -> int:
-        return int(next(v["value"] for v in types[enum]["values"] if v["name"] == name))
-
-    def masks(flags: dict) -> dict:
-        bits = {m["name"]: m["mask"] for m in types[flags["type"]]["members"]}
-        return {role: bits[name] for role, name in flags["members"].items()}
-
-    out = {}
-    for e in (sim or {}).get("filters", []):
-        f: dict = {
-            "aiding": e["aiding"],
-            "states": list(e["states"]["members"]),
-            "fix": [e["fix"]["fix"], e["fix"]["none"]],
-        }
-        if "flags" in e:
-            f["flags"] = masks(e["flags"])
-        if "heading" in e:
-            h = e["heading"]
-            f["heading"] = {
-                "command": h["command"],
-                "param": py_attr(h["param"]),
-                "sources": {value(h["enum"], n): list(s) for n, s in h["members"].items()},
-                "in_use": masks({"type": h["in_use"], "members": {s: s for v in h["members"].values() for s in v}})
-                if "in_use" in h
-                else {},
-                "external": list(h.get("external", [])),
-            }
-        if "internal" in e:
-            i = e["internal"]
-            f["internal"] = {
-                "command": i["command"],
-                "param": py_attr(i["param"]),
-                "enable": py_attr(i["enable"]),
-                "all": value(i["enum"], i["all"]) if "all" in i else None,
-                "sources": {value(i["enum"], n): s for n, s in i["members"].items()},
-            }
-        if "alignment" in e:
-            a = e["alignment"]
-            f["alignment"] = {
-                "command": a["command"],
-                "param": py_attr(a["param"]),
-                "sources": masks({"type": a["type"], "members": {s: n for n, s in a["members"].items()}}),
-            }
-        if "antennas" in e:
-            a = e["antennas"]
-            f["antennas"] = {
-                "command": a["command"],
-                "receiver": py_attr(a["receiver"]),
-                "offset": py_attr(a["offset"]),
-            }
-        if "dual_antenna" in e:
-            d = e["dual_antenna"]
-            f["dual_antenna"] = {"fix": [d["fix"]["fix"], d["fix"]["none"]], "flags": masks(d["flags"])}
-        if "rtk" in e:
-            r = e["rtk"]
-            f["rtk"] = {
-                "fix": [r["fix"]["float"], r["fix"]["fixed"]],
-                "aiding_status": masks(r["aiding_status"]),
-                "uncertainty": dict(r["uncertainty"]),
-            }
-        out[e["device"]] = f
-    return out
-
-
 def _action(a: dict) -> tuple:
     """The _sim.ACTIONS entry of one world action of the spec (simulation.actions; sim.py _act)."""
     if a["action"] == "aid":
@@ -1054,17 +985,6 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _sim.py.j2 prints: per command layout class the parameters each function sends and the
     enum parameters; per data layout class the units of its parameters; the streaming table."""
     proto = m.p
-    fvalues = {}
-    if m.function_enum:
-        fvalues = {v["name"]: v["value"] for v in m.types[m.function_enum]["values"]}
-    code_values = {}
-    if proto["session"] and proto["session"]["code_enum"]:
-        code_values = {v["name"]: v["value"] for v in m.types[proto["session"]["code_enum"]]["values"]}
-    ok = proto["session"]["ok"] if proto["session"] else 0
-    fallback = next((v for v in code_values.values() if v != ok), 1)
-    roles = ("unknown_descriptor", "unknown_set", "invalid_parameter", "failed")
-    named = (proto["simulation"] or {}).get("nack", {})
-    nack = {role: code_values.get(named.get(role, ""), fallback) for role in roles}
     commands = []
     data = []
     world: list[dict] = []
@@ -1079,24 +999,10 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             cls = f"{sm['module']}.{names[(f['name'], dev)]}"
             if f["role"] == "command":
                 by_name.setdefault(f["name"], []).append(cls)
-                params = [q for q in v["params"] if not (m.function_enum and q["type"].get("name") == m.function_enum)]
-                keys = {}
-                for fn in v["functions"] or []:
-                    keys[fvalues[fn]] = tuple(
-                        py_attr(q["name"])
-                        for q in params
-                        if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
-                    )
-                enums = tuple(py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None)
-                commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
-                for dev in v["devices"]:  # a default holds on the devices whose manuals state it
-                    factory = {
-                        py_attr(q["name"]): q["default"]["value"]
-                        for q in params
-                        if q.get("default") and dev in q["default"]["devices"]
-                    }
-                    if factory:
-                        defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
+                facts_ = simulation.command_facts(proto, v, py_attr)
+                commands.append({"cls": cls, "sends": pyrepr(facts_["sends"]), "enums": pyrepr(facts_["enums"])})
+                for dev, factory in facts_["factory"].items():  # as its manual states them
+                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
             elif s["kind"] == "data" or f["role"] == "data":
                 units = tuple(
                     (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1114,7 +1020,7 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         return [{"cls": c, "value": pyrepr(value)} for name, value in table.items() for c in by_name.get(name, [])]
 
     return {
-        "nack": nack,
+        "nack": simulation.nack_codes(proto),
         "sim_commands": commands,
         "factory": {
             d["id"]: [c for c in defaults if c["device"] == d["id"]]
@@ -1123,7 +1029,7 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         },
         "sim_data": data,
         "sim_world": world,
-        "sim_filter": pyrepr(_filters(proto["simulation"], m.types)),
+        "sim_filter": pyrepr(simulation.filters(proto, py_attr)),
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),
         "rates": classes(streaming.get("rates", {})),
