@@ -22,7 +22,7 @@ from __future__ import annotations
 import textwrap
 
 from generator import columns, commands, model, simulation
-from generator.examples import example_context, session_example, session_example_context
+from generator.examples import example_context, example_literal, session_example, session_example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -768,30 +768,21 @@ def _example(proto: dict) -> dict:
 
 def _configure_example(proto: dict, session: dict) -> dict | None:
     """The configure-and-stream example (generator/examples.py session_example): per step the
-    call of the typed command API (command_api.py) and its literal arguments as values the
-    template spells (configure_and_stream.py.j2 `literal`)."""
+    call of the typed command API (command_api.py) and its literal arguments as
+    examples.example_literal records (lists of them for arrays) with Python's names, which
+    configure_and_stream.py.j2 `literal` spells."""
     ex = session_example(proto)
     if ex is None:
         return None
     types = {t["name"]: t for t in proto["types"]}
     methods = session["methods"]
 
-    def value(tref: dict, v) -> dict:
+    def literal(tref: dict, v) -> dict:
         if isinstance(v, list):
-            return {"kind": "list", "elems": [value(tref, x) for x in v]}
-        if tref["kind"] == "struct":
-            return {
-                "kind": "struct",
-                "type": tref["name"],
-                "fields": [{"attr": py_attr(k), "value": x} for k, x in v.items()],
-            }
-        if tref["kind"] == "enum":
-            member = next((m["name"] for m in types[tref["name"]]["values"] if m["value"] == v), None)
-            if member is not None:
-                return {"kind": "enum", "type": tref["name"], "member": const_name(member)}
-        if isinstance(v, int) and not isinstance(v, bool) and v >= 0x10:
-            return {"kind": "hex", "value": v}
-        return {"kind": "plain", "value": v}
+            return {"kind": "list", "elems": [literal(tref, x) for x in v]}
+        return example_literal(
+            types, tref, v, "Python", lambda k, n: {"field": py_attr, "member": const_name}.get(k, str)(n)
+        )
 
     def call(step: str, fn: str | None) -> dict:
         st = ex[step]
@@ -800,7 +791,7 @@ def _configure_example(proto: dict, session: dict) -> dict | None:
         given = st["values"] if fn in (None, "write") else {}
         return {
             **methods[c],
-            "args": [{"attr": py_attr(k), "value": value(params[k]["type"], v)} for k, v in given.items()],
+            "args": [{"attr": py_attr(k), "value": literal(params[k]["type"], v)} for k, v in given.items()],
         }
 
     return {
