@@ -741,18 +741,16 @@ def session_context(P: _Protocol) -> dict:
         )
     api_sets: list[dict] = []
     calls: dict[commands.Call, dict] = {}
-    for c in cm.calls:
-        s, f = sets[c.set], fields[(c.set, c.field)]
-        if not api_sets or api_sets[-1]["id"] != c.set:
-            api_sets.append({"id": c.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
-        commands_ = api_sets[-1]["commands"]
-        if not commands_ or commands_[-1]["id"] != c.descriptor:
-            commands_.append(
-                {"id": c.descriptor, "ns": ident(f["name"]), "title": " ".join(f["title"].split()), "calls": []}
+    for g in cm.api_sets():
+        s = sets[g.set]
+        api_sets.append({"id": g.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
+        for cmd in g.commands:
+            f = fields[(g.set, cmd.field)]
+            ns, cs = ident(f["name"]), [_call(P, cm, s, f, c) for c in cmd.calls]
+            api_sets[-1]["commands"].append(
+                {"id": cmd.descriptor, "ns": ns, "title": " ".join(f["title"].split()), "calls": cs}
             )
-        call = _call(P, cm, s, f, c)
-        commands_[-1]["calls"].append(call)
-        calls[c] = {"set": api_sets[-1]["ns"], "command": commands_[-1]["ns"], "call": call}
+            calls.update({c: {"set": api_sets[-1]["ns"], "command": ns, "call": x} for c, x in zip(cmd.calls, cs)})
     return {
         "session_ack": ack,
         "session_functions": [

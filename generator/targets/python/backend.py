@@ -842,33 +842,29 @@ def session_context(m: _Protocol, sets: list[dict]) -> dict:
             rows.append({"set": lay.set, "descriptor": lay.descriptor, "layouts": [entry]})
     methods: dict[commands.Call, dict] = {}
     api_sets: list[dict] = []
-    for c in cm.calls:
-        s, f = sets_by_id[c.set], fields[(c.set, c.field)]
-        if not api_sets or api_sets[-1]["set"] != c.set:
-            attr = set_module(s)
-            api_sets.append(
+    for g in cm.api_sets():
+        s = sets_by_id[g.set]
+        attr = set_module(s)
+        attr += "_set" if attr in DEVICE_ATTRIBUTES else ""
+        api_sets.append(
+            {"set": g.set, "attr": attr, "cls": camel(s["name"]) + "Commands", "title": s["title"], "commands": []}
+        )
+        for cmd in g.commands:
+            f = fields[(g.set, cmd.field)]
+            cattr = py_attr(cmd.field)
+            ms = [_method(m, f, c, cls) for c in cmd.calls]
+            api_sets[-1]["commands"].append(
                 {
-                    "set": c.set,
-                    "attr": attr + "_set" if attr in DEVICE_ATTRIBUTES else attr,
-                    "cls": camel(s["name"]) + "Commands",
-                    "title": s["title"],
-                    "commands": [],
-                }
-            )
-        commands_ = api_sets[-1]["commands"]
-        if not commands_ or commands_[-1]["descriptor"] != c.descriptor:
-            commands_.append(
-                {
-                    "descriptor": c.descriptor,
-                    "attr": py_attr(c.field),
-                    "cls": camel(c.field),
+                    "descriptor": cmd.descriptor,
+                    "attr": cattr,
+                    "cls": camel(cmd.field),
                     "title": f["title"],
-                    "methods": [],
+                    "methods": ms,
                 }
             )
-        method = _method(m, f, c, cls)
-        commands_[-1]["methods"].append(method)
-        methods[c] = {"set_attr": api_sets[-1]["attr"], "command_attr": commands_[-1]["attr"], "method": method["name"]}
+            methods.update(
+                {c: {"set_attr": attr, "command_attr": cattr, "method": x["name"]} for c, x in zip(cmd.calls, ms)}
+            )
     return {
         "session_example": _session_example(api_sets),
         "session_rule": m.p["session"],
