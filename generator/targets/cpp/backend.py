@@ -290,35 +290,6 @@ class _Protocol:
         return [self.param(p) for p in model.params(self.p, params, functions)]
 
     # ------------------------------------------------------------ types
-    def ordered_types(self) -> list[dict]:
-        """Enums and bitfields first, then structs and unions after what they contain."""
-        done: set[str] = set()
-        order: list[dict] = []
-
-        def deps(t: dict) -> list[str]:
-            if t["kind"] == "struct":
-                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
-            if t["kind"] == "union":
-                return [m["type"] for m in t["members"] if m["type"]]
-            return []
-
-        def visit(name: str) -> None:
-            if name in done:
-                return
-            done.add(name)
-            t = self.types[name]
-            for d in deps(t):
-                visit(d)
-            order.append(t)
-
-        for t in self.p["types"]:
-            if t["kind"] in ("enum", "bitfield"):
-                done.add(t["name"])
-                order.append(t)
-        for t in self.p["types"]:
-            visit(t["name"])
-        return order
-
     def type_model(self, t: dict) -> dict:
         m = {
             "kind": t["kind"],
@@ -641,7 +612,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
                 }
                 for d in proto["devices"]
             ],
-            "types": [P.type_model(t) for t in P.ordered_types()],
+            "types": [P.type_model(t) for t in model.type_order(P.p)],
             "sets": sets,
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),

@@ -301,30 +301,6 @@ class _Protocol:
         }
 
     # -------------------------------------------------------------- types module
-    def type_order(self) -> list[dict]:
-        """Enums and bitfields (by name), then structs and unions in dependency order."""
-        simple = [t for t in self.p["types"] if t["kind"] in ("enum", "bitfield")]
-        order: list[dict] = []
-        done: set[str] = set()
-
-        def deps(t: dict) -> list[str]:
-            if t["kind"] == "struct":
-                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
-            return [m["type"] for m in t["members"] if m["type"]]
-
-        def visit(t: dict) -> None:
-            if t["name"] in done:
-                return
-            done.add(t["name"])
-            for d in deps(t):
-                visit(self.types[d])
-            order.append(t)
-
-        for t in self.p["types"]:
-            if t["kind"] in ("struct", "union"):
-                visit(t)
-        return simple + order
-
     def enum_model(self, t: dict) -> dict:
         values = []
         for v in t["values"]:
@@ -421,7 +397,7 @@ class _Protocol:
 
     def types_module(self) -> dict:
         models = []
-        for t in self.type_order():
+        for t in model.type_order(self.p):
             models.append(getattr(self, f"{t['kind']}_model")(t))
         uses = {"typing": False, "dataclasses": False}
         for m in models:
@@ -585,7 +561,7 @@ class _Protocol:
             cls = f"reserved.{names[(f['name'], None)]}"
             args = layout_sample(self.p, None, f, f["variants"][0])
             out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
-        for t in self.type_order():
+        for t in model.type_order(self.p):
             if t["kind"] == "struct":
                 out.append(
                     {"cls": f"types.{t['name']}", "expr": self.sample_literal(struct_sample(self.p, t), "types.")}
