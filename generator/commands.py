@@ -153,6 +153,24 @@ class Call:
 
 
 @dataclass(frozen=True)
+class ApiCommand:
+    """The calls of one command (a field of a command set), as a typed API groups them."""
+
+    descriptor: int
+    field: str
+    calls: tuple[Call, ...]
+
+
+@dataclass(frozen=True)
+class ApiSet:
+    """The commands of one command set that have calls, as a typed API groups them."""
+
+    set: int
+    set_name: str
+    commands: tuple[ApiCommand, ...]
+
+
+@dataclass(frozen=True)
 class Commands:
     """A protocol's command model: its function selector values, every command layout and every
     call, in spec order (sets, then fields, then layouts or functions)."""
@@ -162,6 +180,17 @@ class Commands:
     functions: tuple[Function, ...]
     layouts: tuple[Layout, ...]
     calls: tuple[Call, ...]
+
+    def api_sets(self) -> tuple[ApiSet, ...]:
+        """The calls grouped as every typed API presents them: per set, per command, spec order."""
+        groups: dict[int, dict[int, list[Call]]] = {}
+        for c in self.calls:
+            groups.setdefault(c.set, {}).setdefault(c.descriptor, []).append(c)
+        out = []
+        for by_descriptor in groups.values():
+            cmds = tuple(ApiCommand(cs[0].descriptor, cs[0].field, tuple(cs)) for cs in by_descriptor.values())
+            out.append(ApiSet(cmds[0].calls[0].set, cmds[0].calls[0].set_name, cmds))
+        return tuple(out)
 
     def calls_of(self, set_id: int, field: str) -> tuple[Call, ...]:
         return tuple(c for c in self.calls if c.set == set_id and c.field == field)

@@ -277,3 +277,29 @@ def layouts_of(fields: list[dict]):
 def struct(proto: dict, struct_type: dict) -> ParamList:
     """The model of the parameters of a struct type of protocol `proto`."""
     return params(proto, struct_type["params"], None)
+
+
+def type_order(proto: dict) -> list[dict]:
+    """The protocol's types in declaration order: the enums and bitfields (in IR order, by name),
+    then every struct and union after the structs and unions it contains (depth first, IR order),
+    so that a language that declares before use can print them in this order."""
+    types = {t["name"]: t for t in proto["types"]}
+    order = [t for t in proto["types"] if t["kind"] in ("enum", "bitfield")]
+    done: set[str] = set()
+
+    def visit(t: dict) -> None:
+        if t["name"] in done:
+            return
+        done.add(t["name"])
+        if t["kind"] == "struct":
+            inner = [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
+        else:
+            inner = [m["type"] for m in t["members"] if m["type"] and types[m["type"]]["kind"] in ("struct", "union")]
+        for name in inner:
+            visit(types[name])
+        order.append(t)
+
+    for t in proto["types"]:
+        if t["kind"] in ("struct", "union"):
+            visit(t)
+    return order

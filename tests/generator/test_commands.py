@@ -193,6 +193,27 @@ def test_a_call_splits_per_device_only_when_the_arguments_differ():
     assert [x.device for x in m.layouts_of(1, "differ")] == ["a", "b"]
 
 
+def test_api_sets_group_the_calls_per_set_then_per_command():
+    # The rule: one group per command set that has calls, in it one per command field that has
+    # calls (a reply field has none), each holding that field's calls; spec order throughout.
+    differ = [
+        _variant([_q("x", U8)], device="a", devices=["a"]),
+        _variant([_q("y", U8)], device="b", devices=["b"]),
+    ]
+    proto = _proto([_field("ping", 0x01, "command", [_variant([])]), REPLY, _field("differ", 0x05, "command", differ)])
+    proto["sets"].append(
+        {"id": 2, "name": "other", "kind": "command", "fields": [_field("reset", 0x7E, "command", [_variant([])])]}
+    )
+    m = commands.commands(proto)
+    groups = m.api_sets()
+    assert [(g.set, g.set_name, [(c.descriptor, c.field) for c in g.commands]) for g in groups] == [
+        (1, "cmd", [(0x01, "ping"), (0x05, "differ")]),
+        (2, "other", [(0x7E, "reset")]),
+    ]
+    assert [c.device for c in groups[0].commands[1].calls] == ["a", "b"]
+    assert [c for g in groups for cmd in g.commands for c in cmd.calls] == list(m.calls)
+
+
 def test_everything_fixture():
     proto = load_spec(FIXTURE, root=FIXTURE)["protocols"][0]
     m = commands.commands(proto)

@@ -185,3 +185,25 @@ def test_real_ir_every_parameter_is_classified():
 def test_everything_fixture_is_classified():
     proto = load_spec(FIXTURE, root=FIXTURE)["protocols"][0]
     assert _check_against_ir(proto) == set(model.KINDS)
+
+
+def test_type_order_declares_what_a_type_contains_before_it():
+    # The rule: enums and bitfields first (IR order), then each struct or union after the structs
+    # and unions it contains, depth first in IR order; primitives and enums are no dependency.
+    def ref(kind, name):
+        return {"type": {"kind": kind, "name": name}}
+
+    types = [
+        {
+            "kind": "struct",
+            "name": "Alpha",
+            "params": [ref("primitive", "u8"), ref("union", "Choice"), ref("enum", "Mode")],
+        },
+        {"kind": "struct", "name": "Beta", "params": [ref("struct", "Gamma")]},
+        {"kind": "union", "name": "Choice", "members": [{"type": "Gamma"}, {"type": None}]},
+        {"kind": "struct", "name": "Gamma", "params": [ref("bitfield", "Flags")]},
+        {"kind": "bitfield", "name": "Flags"},
+        {"kind": "enum", "name": "Mode"},
+    ]
+    order = [t["name"] for t in model.type_order({"types": types})]
+    assert order == ["Flags", "Mode", "Gamma", "Choice", "Alpha", "Beta"]

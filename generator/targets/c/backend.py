@@ -183,7 +183,7 @@ class _Protocol:
         self.types = {t["name"]: t for t in proto["types"]}
         self.globals: dict[str, str] = {}  # C identifier -> what it names (collision check)
         self._check_framing()
-        self.type_views = [self._type_view(self.types[n]) for n in self._type_order()]
+        self.type_views = [self._type_view(t) for t in model.type_order(proto)]
         caps = {c["device"]: c for c in proto.get("capabilities", {}).get("devices", [])}
         self.devices = [
             {
@@ -249,34 +249,6 @@ class _Protocol:
 
     def type_macro(self, name: str) -> str:
         return f"{self.P}_{snake(name).upper()}"
-
-    def _type_order(self) -> list[str]:
-        """Enums and bitfields first, then structs and unions after everything they contain."""
-        order: list[str] = [n for n, t in sorted(self.types.items()) if t["kind"] in ("enum", "bitfield")]
-        done = set(order)
-
-        def deps(t: dict) -> list[str]:
-            if t["kind"] == "struct":
-                return [
-                    q["type"]["name"]
-                    for q in t["params"]
-                    if q["type"]["kind"] in ("struct", "union", "enum", "bitfield")
-                ]
-            if t["kind"] == "union":
-                return [m["type"] for m in t["members"] if m["type"]] + [t["selector_enum"]]
-            return []
-
-        def visit(name: str) -> None:
-            if name in done or name not in self.types:
-                return
-            done.add(name)
-            for d in deps(self.types[name]):
-                visit(d)
-            order.append(name)
-
-        for n in sorted(self.types):
-            visit(n)
-        return order
 
     def _type_view(self, t: dict) -> dict:
         kind = t["kind"]

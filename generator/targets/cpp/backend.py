@@ -290,35 +290,6 @@ class _Protocol:
         return [self.param(p) for p in model.params(self.p, params, functions)]
 
     # ------------------------------------------------------------ types
-    def ordered_types(self) -> list[dict]:
-        """Enums and bitfields first, then structs and unions after what they contain."""
-        done: set[str] = set()
-        order: list[dict] = []
-
-        def deps(t: dict) -> list[str]:
-            if t["kind"] == "struct":
-                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
-            if t["kind"] == "union":
-                return [m["type"] for m in t["members"] if m["type"]]
-            return []
-
-        def visit(name: str) -> None:
-            if name in done:
-                return
-            done.add(name)
-            t = self.types[name]
-            for d in deps(t):
-                visit(d)
-            order.append(t)
-
-        for t in self.p["types"]:
-            if t["kind"] in ("enum", "bitfield"):
-                done.add(t["name"])
-                order.append(t)
-        for t in self.p["types"]:
-            visit(t["name"])
-        return order
-
     def type_model(self, t: dict) -> dict:
         m = {
             "kind": t["kind"],
@@ -641,7 +612,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
                 }
                 for d in proto["devices"]
             ],
-            "types": [P.type_model(t) for t in P.ordered_types()],
+            "types": [P.type_model(t) for t in model.type_order(P.p)],
             "sets": sets,
             "lookup": P.lookup(),
             "vectors": P.vector_cases(vectors),
@@ -741,18 +712,16 @@ def session_context(P: _Protocol) -> dict:
         )
     api_sets: list[dict] = []
     calls: dict[commands.Call, dict] = {}
-    for c in cm.calls:
-        s, f = sets[c.set], fields[(c.set, c.field)]
-        if not api_sets or api_sets[-1]["id"] != c.set:
-            api_sets.append({"id": c.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
-        commands_ = api_sets[-1]["commands"]
-        if not commands_ or commands_[-1]["id"] != c.descriptor:
-            commands_.append(
-                {"id": c.descriptor, "ns": ident(f["name"]), "title": " ".join(f["title"].split()), "calls": []}
+    for g in cm.api_sets():
+        s = sets[g.set]
+        api_sets.append({"id": g.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
+        for cmd in g.commands:
+            f = fields[(g.set, cmd.field)]
+            ns, cs = ident(f["name"]), [_call(P, cm, s, f, c) for c in cmd.calls]
+            api_sets[-1]["commands"].append(
+                {"id": cmd.descriptor, "ns": ns, "title": " ".join(f["title"].split()), "calls": cs}
             )
-        call = _call(P, cm, s, f, c)
-        commands_[-1]["calls"].append(call)
-        calls[c] = {"set": api_sets[-1]["ns"], "command": commands_[-1]["ns"], "call": call}
+            calls.update({c: {"set": api_sets[-1]["ns"], "command": ns, "call": x} for c, x in zip(cmd.calls, cs)})
     return {
         "session_ack": ack,
         "session_functions": [

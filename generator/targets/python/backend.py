@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import textwrap
 
-from generator import columns, commands, model
-from generator.examples import example_context, session_example, session_example_context
+from generator import columns, commands, model, simulation
+from generator.examples import example_context, example_literal, session_example, session_example_context
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -301,30 +301,6 @@ class _Protocol:
         }
 
     # -------------------------------------------------------------- types module
-    def type_order(self) -> list[dict]:
-        """Enums and bitfields (by name), then structs and unions in dependency order."""
-        simple = [t for t in self.p["types"] if t["kind"] in ("enum", "bitfield")]
-        order: list[dict] = []
-        done: set[str] = set()
-
-        def deps(t: dict) -> list[str]:
-            if t["kind"] == "struct":
-                return [q["type"]["name"] for q in t["params"] if q["type"]["kind"] in ("struct", "union")]
-            return [m["type"] for m in t["members"] if m["type"]]
-
-        def visit(t: dict) -> None:
-            if t["name"] in done:
-                return
-            done.add(t["name"])
-            for d in deps(t):
-                visit(self.types[d])
-            order.append(t)
-
-        for t in self.p["types"]:
-            if t["kind"] in ("struct", "union"):
-                visit(t)
-        return simple + order
-
     def enum_model(self, t: dict) -> dict:
         values = []
         for v in t["values"]:
@@ -421,7 +397,7 @@ class _Protocol:
 
     def types_module(self) -> dict:
         models = []
-        for t in self.type_order():
+        for t in model.type_order(self.p):
             models.append(getattr(self, f"{t['kind']}_model")(t))
         uses = {"typing": False, "dataclasses": False}
         for m in models:
@@ -585,7 +561,7 @@ class _Protocol:
             cls = f"reserved.{names[(f['name'], None)]}"
             args = layout_sample(self.p, None, f, f["variants"][0])
             out.append({"cls": cls, "expr": f"{cls}(" + self.sample_args(args, "types.") + ")"})
-        for t in self.type_order():
+        for t in model.type_order(self.p):
             if t["kind"] == "struct":
                 out.append(
                     {"cls": f"types.{t['name']}", "expr": self.sample_literal(struct_sample(self.p, t), "types.")}
@@ -768,30 +744,21 @@ def _example(proto: dict) -> dict:
 
 def _configure_example(proto: dict, session: dict) -> dict | None:
     """The configure-and-stream example (generator/examples.py session_example): per step the
-    call of the typed command API (command_api.py) and its literal arguments as values the
-    template spells (configure_and_stream.py.j2 `literal`)."""
+    call of the typed command API (command_api.py) and its literal arguments as
+    examples.example_literal records (lists of them for arrays) with Python's names, which
+    configure_and_stream.py.j2 `literal` spells."""
     ex = session_example(proto)
     if ex is None:
         return None
     types = {t["name"]: t for t in proto["types"]}
     methods = session["methods"]
 
-    def value(tref: dict, v) -> dict:
+    def literal(tref: dict, v) -> dict:
         if isinstance(v, list):
-            return {"kind": "list", "elems": [value(tref, x) for x in v]}
-        if tref["kind"] == "struct":
-            return {
-                "kind": "struct",
-                "type": tref["name"],
-                "fields": [{"attr": py_attr(k), "value": x} for k, x in v.items()],
-            }
-        if tref["kind"] == "enum":
-            member = next((m["name"] for m in types[tref["name"]]["values"] if m["value"] == v), None)
-            if member is not None:
-                return {"kind": "enum", "type": tref["name"], "member": const_name(member)}
-        if isinstance(v, int) and not isinstance(v, bool) and v >= 0x10:
-            return {"kind": "hex", "value": v}
-        return {"kind": "plain", "value": v}
+            return {"kind": "list", "elems": [literal(tref, x) for x in v]}
+        return example_literal(
+            types, tref, v, "Python", lambda k, n: {"field": py_attr, "member": const_name}.get(k, str)(n)
+        )
 
     def call(step: str, fn: str | None) -> dict:
         st = ex[step]
@@ -800,7 +767,7 @@ def _configure_example(proto: dict, session: dict) -> dict | None:
         given = st["values"] if fn in (None, "write") else {}
         return {
             **methods[c],
-            "args": [{"attr": py_attr(k), "value": value(params[k]["type"], v)} for k, v in given.items()],
+            "args": [{"attr": py_attr(k), "value": literal(params[k]["type"], v)} for k, v in given.items()],
         }
 
     return {
@@ -851,33 +818,29 @@ def session_context(m: _Protocol, sets: list[dict]) -> dict:
             rows.append({"set": lay.set, "descriptor": lay.descriptor, "layouts": [entry]})
     methods: dict[commands.Call, dict] = {}
     api_sets: list[dict] = []
-    for c in cm.calls:
-        s, f = sets_by_id[c.set], fields[(c.set, c.field)]
-        if not api_sets or api_sets[-1]["set"] != c.set:
-            attr = set_module(s)
-            api_sets.append(
+    for g in cm.api_sets():
+        s = sets_by_id[g.set]
+        attr = set_module(s)
+        attr += "_set" if attr in DEVICE_ATTRIBUTES else ""
+        api_sets.append(
+            {"set": g.set, "attr": attr, "cls": camel(s["name"]) + "Commands", "title": s["title"], "commands": []}
+        )
+        for cmd in g.commands:
+            f = fields[(g.set, cmd.field)]
+            cattr = py_attr(cmd.field)
+            ms = [_method(m, f, c, cls) for c in cmd.calls]
+            api_sets[-1]["commands"].append(
                 {
-                    "set": c.set,
-                    "attr": attr + "_set" if attr in DEVICE_ATTRIBUTES else attr,
-                    "cls": camel(s["name"]) + "Commands",
-                    "title": s["title"],
-                    "commands": [],
-                }
-            )
-        commands_ = api_sets[-1]["commands"]
-        if not commands_ or commands_[-1]["descriptor"] != c.descriptor:
-            commands_.append(
-                {
-                    "descriptor": c.descriptor,
-                    "attr": py_attr(c.field),
-                    "cls": camel(c.field),
+                    "descriptor": cmd.descriptor,
+                    "attr": cattr,
+                    "cls": camel(cmd.field),
                     "title": f["title"],
-                    "methods": [],
+                    "methods": ms,
                 }
             )
-        method = _method(m, f, c, cls)
-        commands_[-1]["methods"].append(method)
-        methods[c] = {"set_attr": api_sets[-1]["attr"], "command_attr": commands_[-1]["attr"], "method": method["name"]}
+            methods.update(
+                {c: {"set_attr": attr, "command_attr": cattr, "method": x["name"]} for c, x in zip(cmd.calls, ms)}
+            )
     return {
         "session_example": _session_example(api_sets),
         "session_rule": m.p["session"],
@@ -942,9 +905,10 @@ def _session_example(api_sets: list[dict]) -> dict | None:
 # The simulated device (runtime sim.py, issue 21) answers from the IR: which parameters a function
 # sends, which are enums, the reply fields and their `when`, and the protocol's `simulation` entry
 # (spec protocol file, generator/passes/simulation.py: the ack code of each refusal, the streaming
-# commands, base rates, the navigation filter per device). Here they are only put in the shapes
-# the runtime's tables take (_sim.py): a set is a number, or the parameter that carries it, or a
-# list of alternatives, each a parameter or (parameter, {selector value: set}).
+# commands, base rates, the navigation filter per device), with names resolved to values by
+# generator/simulation.py. Here they are only named and put in the shapes the runtime's tables
+# take (_sim.py): a set is a number, or the parameter that carries it, or a list of alternatives,
+# each a parameter or (parameter, {selector value: set}).
 def _streaming(sim: dict | None) -> dict:
     if sim is None:
         return {}
@@ -973,76 +937,6 @@ def _streaming(sim: dict | None) -> dict:
     }
 
 
-def _filters(sim: dict | None, types: dict | None = None) -> dict:
-    """The navigation filter per device (sim_world.NavFilter): its state enum's members in order,
-    what aids it, its GNSS fix type members (fix, no fix) and its internal aiding (the spec's
-    names resolved: status flag roles to masks, enum members to values)."""
-    types = types or {}
-
-    def value(enum: str, name: str) -> int:
-        return int(next(v["value"] for v in types[enum]["values"] if v["name"] == name))
-
-    def masks(flags: dict) -> dict:
-        bits = {m["name"]: m["mask"] for m in types[flags["type"]]["members"]}
-        return {role: bits[name] for role, name in flags["members"].items()}
-
-    out = {}
-    for e in (sim or {}).get("filters", []):
-        f: dict = {
-            "aiding": e["aiding"],
-            "states": list(e["states"]["members"]),
-            "fix": [e["fix"]["fix"], e["fix"]["none"]],
-        }
-        if "flags" in e:
-            f["flags"] = masks(e["flags"])
-        if "heading" in e:
-            h = e["heading"]
-            f["heading"] = {
-                "command": h["command"],
-                "param": py_attr(h["param"]),
-                "sources": {value(h["enum"], n): list(s) for n, s in h["members"].items()},
-                "in_use": masks({"type": h["in_use"], "members": {s: s for v in h["members"].values() for s in v}})
-                if "in_use" in h
-                else {},
-                "external": list(h.get("external", [])),
-            }
-        if "internal" in e:
-            i = e["internal"]
-            f["internal"] = {
-                "command": i["command"],
-                "param": py_attr(i["param"]),
-                "enable": py_attr(i["enable"]),
-                "all": value(i["enum"], i["all"]) if "all" in i else None,
-                "sources": {value(i["enum"], n): s for n, s in i["members"].items()},
-            }
-        if "alignment" in e:
-            a = e["alignment"]
-            f["alignment"] = {
-                "command": a["command"],
-                "param": py_attr(a["param"]),
-                "sources": masks({"type": a["type"], "members": {s: n for n, s in a["members"].items()}}),
-            }
-        if "antennas" in e:
-            a = e["antennas"]
-            f["antennas"] = {
-                "command": a["command"],
-                "receiver": py_attr(a["receiver"]),
-                "offset": py_attr(a["offset"]),
-            }
-        if "dual_antenna" in e:
-            d = e["dual_antenna"]
-            f["dual_antenna"] = {"fix": [d["fix"]["fix"], d["fix"]["none"]], "flags": masks(d["flags"])}
-        if "rtk" in e:
-            r = e["rtk"]
-            f["rtk"] = {
-                "fix": [r["fix"]["float"], r["fix"]["fixed"]],
-                "aiding_status": masks(r["aiding_status"]),
-                "uncertainty": dict(r["uncertainty"]),
-            }
-        out[e["device"]] = f
-    return out
-
-
 def _action(a: dict) -> tuple:
     """The _sim.ACTIONS entry of one world action of the spec (simulation.actions; sim.py _act)."""
     if a["action"] == "aid":
@@ -1054,17 +948,6 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _sim.py.j2 prints: per command layout class the parameters each function sends and the
     enum parameters; per data layout class the units of its parameters; the streaming table."""
     proto = m.p
-    fvalues = {}
-    if m.function_enum:
-        fvalues = {v["name"]: v["value"] for v in m.types[m.function_enum]["values"]}
-    code_values = {}
-    if proto["session"] and proto["session"]["code_enum"]:
-        code_values = {v["name"]: v["value"] for v in m.types[proto["session"]["code_enum"]]["values"]}
-    ok = proto["session"]["ok"] if proto["session"] else 0
-    fallback = next((v for v in code_values.values() if v != ok), 1)
-    roles = ("unknown_descriptor", "unknown_set", "invalid_parameter", "failed")
-    named = (proto["simulation"] or {}).get("nack", {})
-    nack = {role: code_values.get(named.get(role, ""), fallback) for role in roles}
     commands = []
     data = []
     world: list[dict] = []
@@ -1079,24 +962,10 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             cls = f"{sm['module']}.{names[(f['name'], dev)]}"
             if f["role"] == "command":
                 by_name.setdefault(f["name"], []).append(cls)
-                params = [q for q in v["params"] if not (m.function_enum and q["type"].get("name") == m.function_enum)]
-                keys = {}
-                for fn in v["functions"] or []:
-                    keys[fvalues[fn]] = tuple(
-                        py_attr(q["name"])
-                        for q in params
-                        if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
-                    )
-                enums = tuple(py_attr(q["name"]) for q in params if q["type"]["kind"] == "enum" and q["count"] is None)
-                commands.append({"cls": cls, "sends": pyrepr(keys), "enums": pyrepr(enums)})
-                for dev in v["devices"]:  # a default holds on the devices whose manuals state it
-                    factory = {
-                        py_attr(q["name"]): q["default"]["value"]
-                        for q in params
-                        if q.get("default") and dev in q["default"]["devices"]
-                    }
-                    if factory:
-                        defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
+                facts_ = simulation.command_facts(proto, v, py_attr)
+                commands.append({"cls": cls, "sends": pyrepr(facts_["sends"]), "enums": pyrepr(facts_["enums"])})
+                for dev, factory in facts_["factory"].items():  # as its manual states them
+                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
             elif s["kind"] == "data" or f["role"] == "data":
                 units = tuple(
                     (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1114,7 +983,7 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         return [{"cls": c, "value": pyrepr(value)} for name, value in table.items() for c in by_name.get(name, [])]
 
     return {
-        "nack": nack,
+        "nack": simulation.nack_codes(proto),
         "sim_commands": commands,
         "factory": {
             d["id"]: [c for c in defaults if c["device"] == d["id"]]
@@ -1123,7 +992,7 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         },
         "sim_data": data,
         "sim_world": world,
-        "sim_filter": pyrepr(_filters(proto["simulation"], m.types)),
+        "sim_filter": pyrepr(simulation.filters(proto, py_attr)),
         "formats": classes(streaming.get("formats", {})),
         "enables": classes(streaming.get("enables", {})),
         "rates": classes(streaming.get("rates", {})),

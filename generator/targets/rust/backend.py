@@ -638,36 +638,31 @@ def session_context(m: _Protocol) -> dict:
     code_enum = rule.get("code_enum")
     methods: dict[commands.Call, dict] = {}
     api_sets: list[dict] = []
-    for c in cm.calls:
-        s, f = sets[c.set], fields[(c.set, c.field)]
-        if not api_sets or api_sets[-1]["id"] != c.set:
-            module = m.set_module(s)
-            api_sets.append(
-                {
-                    "id": c.set,
-                    "method": _set_method(module),
-                    "struct": camel(module) + "Commands",
-                    "title": s["title"],
-                    "set": _hex(s["id"]),
-                    "commands": [],
-                }
-            )
-        commands_ = api_sets[-1]["commands"]
-        if not commands_ or commands_[-1]["id"] != c.descriptor:
-            commands_.append(
-                {
-                    "id": c.descriptor,
-                    "method": ident(f["name"]),
-                    "struct": camel(f["name"]) + "Command",
-                    "title": f["title"],
-                    "plain": f["variants"][0]["functions"] is None,
-                    "methods": [],
-                    "descriptor": _hex(f["id"]),
-                }
-            )
-        method = _method(m, cm, s, f, c)
-        commands_[-1]["methods"].append(method)
-        methods[c] = {"set": api_sets[-1], "command": commands_[-1], "method": method}
+    for g in cm.api_sets():
+        s, module = sets[g.set], m.set_module(sets[g.set])
+        api_set = {
+            "id": g.set,
+            "method": _set_method(module),
+            "struct": camel(module) + "Commands",
+            "title": s["title"],
+            "set": _hex(s["id"]),
+            "commands": [],
+        }
+        api_sets.append(api_set)
+        for cmd in g.commands:
+            f = fields[(g.set, cmd.field)]
+            command = {
+                "id": cmd.descriptor,
+                "method": ident(f["name"]),
+                "struct": camel(f["name"]) + "Command",
+                "title": f["title"],
+                "plain": f["variants"][0]["functions"] is None,
+                "methods": [_method(m, cm, s, f, c) for c in cmd.calls],
+                "descriptor": _hex(f["id"]),
+            }
+            api_set["commands"].append(command)
+            for c, method in zip(cmd.calls, command["methods"]):
+                methods[c] = {"set": api_set, "command": command, "method": method}
     return {
         "session_imports": sorted(uses),
         "session_rule": {

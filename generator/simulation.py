@@ -1,0 +1,122 @@
+"""The simulated device's protocol tables with the spec's names resolved, decided once.
+
+The IR's `simulation` entry (generator/passes/simulation.py, checked against the rest of the spec)
+names what the manuals name: the ack code of each refusal as a member of the code enum, the
+navigation filter's status flags, heading sources and alignment methods as enum and bitfield
+members. A simulator needs numbers: this module resolves the names to values and masks, with no
+target syntax; the only naming it leaves to the back end is a parameter's attribute (`param`,
+the language's name of a layout parameter). The Python back end prints the result into `_sim.py`
+(templates/python/package/_sim.py.j2).
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+# The refusals of the simulated device (runtime sim.py), each answered with an ack code.
+NACK_ROLES = ("unknown_descriptor", "unknown_set", "invalid_parameter", "failed")
+
+
+def nack_codes(proto: dict) -> dict[str, int]:
+    """The ack code of each refusal role: the code enum's member the simulation section names,
+    else the first code that is not the OK code (1 without a code enum)."""
+    rule = proto["session"]
+    types = {t["name"]: t for t in proto["types"]}
+    codes = {v["name"]: v["value"] for v in types[rule["code_enum"]]["values"]} if rule and rule["code_enum"] else {}
+    ok = rule["ok"] if rule else 0
+    fallback = next((v for v in codes.values() if v != ok), 1)
+    named = (proto["simulation"] or {}).get("nack", {})
+    return {role: codes.get(named.get(role, ""), fallback) for role in NACK_ROLES}
+
+
+def filters(proto: dict, param: Callable[[str], str]) -> dict[str, dict]:
+    """The navigation filter per device (sim_world.NavFilter): its state enum's members in order,
+    what aids it, its GNSS fix type members (fix, no fix) and its internal aiding, with status flag
+    roles resolved to masks, enum members to values and parameters named by `param`."""
+    types = {t["name"]: t for t in proto["types"]}
+
+    def value(enum: str, name: str) -> int:
+        return int(next(v["value"] for v in types[enum]["values"] if v["name"] == name))
+
+    def masks(flags: dict) -> dict:
+        bits = {m["name"]: m["mask"] for m in types[flags["type"]]["members"]}
+        return {role: bits[name] for role, name in flags["members"].items()}
+
+    out = {}
+    for e in (proto["simulation"] or {}).get("filters", []):
+        f: dict = {
+            "aiding": e["aiding"],
+            "states": list(e["states"]["members"]),
+            "fix": [e["fix"]["fix"], e["fix"]["none"]],
+        }
+        if "flags" in e:
+            f["flags"] = masks(e["flags"])
+        if "heading" in e:
+            h = e["heading"]
+            used = {"type": h["in_use"], "members": {s: s for v in h["members"].values() for s in v}}
+            f["heading"] = {
+                "command": h["command"],
+                "param": param(h["param"]),
+                "sources": {value(h["enum"], n): list(s) for n, s in h["members"].items()},
+                "in_use": masks(used) if "in_use" in h else {},
+                "external": list(h.get("external", [])),
+            }
+        if "internal" in e:
+            i = e["internal"]
+            f["internal"] = {
+                "command": i["command"],
+                "param": param(i["param"]),
+                "enable": param(i["enable"]),
+                "all": value(i["enum"], i["all"]) if "all" in i else None,
+                "sources": {value(i["enum"], n): s for n, s in i["members"].items()},
+            }
+        if "alignment" in e:
+            a = e["alignment"]
+            f["alignment"] = {
+                "command": a["command"],
+                "param": param(a["param"]),
+                "sources": masks({"type": a["type"], "members": {s: n for n, s in a["members"].items()}}),
+            }
+        if "antennas" in e:
+            a = e["antennas"]
+            f["antennas"] = {"command": a["command"], "receiver": param(a["receiver"]), "offset": param(a["offset"])}
+        if "dual_antenna" in e:
+            d = e["dual_antenna"]
+            f["dual_antenna"] = {"fix": [d["fix"]["fix"], d["fix"]["none"]], "flags": masks(d["flags"])}
+        if "rtk" in e:
+            r = e["rtk"]
+            f["rtk"] = {
+                "fix": [r["fix"]["float"], r["fix"]["fixed"]],
+                "aiding_status": masks(r["aiding_status"]),
+                "uncertainty": dict(r["uncertainty"]),
+            }
+        out[e["device"]] = f
+    return out
+
+
+def command_facts(proto: dict, v: dict, param: Callable[[str], str]) -> dict:
+    """What the simulated device reads of command layout v (runtime sim.py): per function value
+    the parameters a request must carry (`sends`: not optional; the function selector left out),
+    the scalar enum parameters it checks (`enums`) and per device the factory defaults its
+    manual states (`factory`), parameters named by `param`."""
+    fenum = (proto.get("function_selector") or {}).get("enum")
+    types = {t["name"]: t for t in proto["types"]}
+    fvalues = {x["name"]: x["value"] for x in types[fenum]["values"]} if fenum else {}
+    qs = [q for q in v["params"] if not (fenum and q["type"].get("name") == fenum)]
+    sends = {
+        fvalues[fn]: tuple(
+            param(q["name"]) for q in qs if (q["functions"] is None or fn in q["functions"]) and not q["optional"]
+        )
+        for fn in v["functions"] or []
+    }
+    factory = {
+        dev: {
+            param(q["name"]): q["default"]["value"] for q in qs if q.get("default") and dev in q["default"]["devices"]
+        }
+        for dev in v["devices"]
+    }
+    return {
+        "sends": sends,
+        "enums": tuple(param(q["name"]) for q in qs if q["type"]["kind"] == "enum" and q["count"] is None),
+        "factory": {dev: values for dev, values in factory.items() if values},
+    }
