@@ -2,13 +2,15 @@
 # package of the MicroStrain MIP protocol, so that both fit one install tree. Generated: do not edit.
 #
 #   find_package(mipcodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(mipcodec 0.1 CONFIG REQUIRED)              # a compatible version (mipcodecConfigVersion.cmake)
 #   find_package(mipcodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
 #   target_link_libraries(app PRIVATE mipcodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE mipcodec::c_json)     # C canonical JSON (links mipcodec::c)
+#   target_link_libraries(app PRIVATE mipcodec::c_posix)    # C POSIX transports of the session API
 #   target_link_libraries(app PRIVATE mipcodec::cpp)        # C++17 header-only library
 #
-# Components: c and c_json (the C package: mipcodec-c-targets.cmake), cpp (the C++ package:
-# mipcodec-cpp-targets.cmake).
+# Components: c, c_json and c_posix (the C package: mipcodec-c-targets.cmake; c_posix when built
+# with MIPCODEC_POSIX), cpp (the C++ package: mipcodec-cpp-targets.cmake).
 foreach(_mipcodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
         include("${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
@@ -30,7 +32,7 @@ foreach(_mipcodec_comp ${mipcodec_FIND_COMPONENTS})
         if(mipcodec_FIND_REQUIRED_${_mipcodec_comp})
             set(mipcodec_FOUND FALSE)
             set(mipcodec_NOT_FOUND_MESSAGE
-                "component ${_mipcodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+                "component ${_mipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)")
         endif()
     endif()
 endforeach()
