@@ -2,13 +2,15 @@
 # package of the Demo protocol with every spec feature protocol, so that both fit one install tree. Generated: do not edit.
 #
 #   find_package(democodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(democodec 2.10 CONFIG REQUIRED)              # a compatible version (democodecConfigVersion.cmake)
 #   find_package(democodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
 #   target_link_libraries(app PRIVATE democodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE democodec::c_json)     # C canonical JSON (links democodec::c)
+#   target_link_libraries(app PRIVATE democodec::c_posix)    # C POSIX transports of the session API
 #   target_link_libraries(app PRIVATE democodec::cpp)        # C++17 header-only library
 #
-# Components: c and c_json (the C package: democodec-c-targets.cmake), cpp (the C++ package:
-# democodec-cpp-targets.cmake).
+# Components: c, c_json and c_posix (the C package: democodec-c-targets.cmake; c_posix when built
+# with DEMOCODEC_POSIX), cpp (the C++ package: democodec-cpp-targets.cmake).
 foreach(_democodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-targets.cmake")
         include("${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-targets.cmake")
@@ -30,7 +32,7 @@ foreach(_democodec_comp ${democodec_FIND_COMPONENTS})
         if(democodec_FIND_REQUIRED_${_democodec_comp})
             set(democodec_FOUND FALSE)
             set(democodec_NOT_FOUND_MESSAGE
-                "component ${_democodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+                "component ${_democodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)")
         endif()
     endif()
 endforeach()
