@@ -28,6 +28,7 @@ import json
 import os
 import shutil
 import socket
+import struct
 import subprocess
 import threading
 from collections.abc import Iterator
@@ -218,6 +219,7 @@ def test_install_tree(prefix):
         f"{libdir}/cmake/{PKG}/{PKG}Config.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}ConfigVersion.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-c-targets.cmake",
+        f"{libdir}/cmake/{PKG}/{PKG}-c-abi.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-cpp-targets.cmake",
         f"{libdir}/pkgconfig/{PKG}.pc",
         f"{libdir}/pkgconfig/{PKG}-json.pc",
@@ -310,6 +312,33 @@ def test_find_package_reports_a_missing_component(prefix, tmp_path):
     assert "component nosuch is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)" in " ".join(
         r.stderr.split()
     )
+
+
+def test_find_package_refuses_c_of_another_pointer_size(prefix, tmp_path):
+    """The version file is the same for both packages (ARCH_INDEPENDENT), so the config file itself
+    keeps the C libraries (built for this host's pointers) from a project of another pointer size
+    (a 32-bit or Cortex-M project finding a 64-bit host's install), with the reason; the header-only
+    C++ package is still found."""
+    host = struct.calcsize("P")
+    other = 4 if host == 8 else 8
+    src = tmp_path / "p"
+    src.mkdir()
+    (src / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.16)\nproject(p LANGUAGES NONE)\n"
+        f"set(CMAKE_SIZEOF_VOID_P {other})\n"
+        "find_package(mipcodec CONFIG REQUIRED COMPONENTS ${WANT})\n"
+    )
+
+    def configure(want: str) -> subprocess.CompletedProcess:
+        build = tmp_path / f"b-{want}"
+        cmd = ["cmake", "-S", src, "-B", build, f"-DCMAKE_PREFIX_PATH={prefix}", f"-DWANT={want}"]
+        return subprocess.run(cmd, capture_output=True, text=True)
+
+    r = configure("c")
+    assert r.returncode != 0
+    assert "component c is not installed" in r.stderr
+    assert f"was built for {host}-byte pointers, this project has {other}" in " ".join(r.stderr.split())
+    assert configure("cpp").returncode == 0
 
 
 def test_pkg_config(prefix, stream):

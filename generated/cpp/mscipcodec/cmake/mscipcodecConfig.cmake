@@ -11,16 +11,32 @@
 #
 # Components: c, c_json and c_posix (the C package: mscipcodec-c-targets.cmake; c_posix when built
 # with MSCIPCODEC_POSIX), cpp (the C++ package: mscipcodec-cpp-targets.cmake).
+#
+# The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
+# not, so mscipcodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
+# or firmware build finding a 64-bit host install) does not get the C targets: its c components
+# are reported missing with the reason.
+set(_mscipcodec_c_why "")
 foreach(_mscipcodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/mscipcodec-${_mscipcodec_part}-targets.cmake")
+        if(_mscipcodec_part STREQUAL "c" AND EXISTS "${CMAKE_CURRENT_LIST_DIR}/mscipcodec-c-abi.cmake")
+            include("${CMAKE_CURRENT_LIST_DIR}/mscipcodec-c-abi.cmake")
+            if(CMAKE_SIZEOF_VOID_P AND _mscipcodec_c_sizeof_void_p
+               AND NOT CMAKE_SIZEOF_VOID_P EQUAL _mscipcodec_c_sizeof_void_p)
+                set(_mscipcodec_c_why "; the C package in ${CMAKE_CURRENT_LIST_DIR} was built for ${_mscipcodec_c_sizeof_void_p}-byte pointers, this project has ${CMAKE_SIZEOF_VOID_P}")
+                continue()
+            endif()
+        endif()
         include("${CMAKE_CURRENT_LIST_DIR}/mscipcodec-${_mscipcodec_part}-targets.cmake")
     endif()
 endforeach()
 unset(_mscipcodec_part)
+unset(_mscipcodec_c_sizeof_void_p)
 
 if(NOT TARGET mscipcodec::c AND NOT TARGET mscipcodec::cpp)
     set(mscipcodec_FOUND FALSE)
-    set(mscipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mscipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}")
+    set(mscipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mscipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}${_mscipcodec_c_why}")
+    unset(_mscipcodec_c_why)
     return()
 endif()
 
@@ -32,8 +48,9 @@ foreach(_mscipcodec_comp ${mscipcodec_FIND_COMPONENTS})
         if(mscipcodec_FIND_REQUIRED_${_mscipcodec_comp})
             set(mscipcodec_FOUND FALSE)
             set(mscipcodec_NOT_FOUND_MESSAGE
-                "component ${_mscipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)")
+                "component ${_mscipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_mscipcodec_c_why}")
         endif()
     endif()
 endforeach()
 unset(_mscipcodec_comp)
+unset(_mscipcodec_c_why)
