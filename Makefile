@@ -113,13 +113,16 @@ test-bigendian: generate
 	$(PY) -m pytest -q tests/bigendian
 
 # The C and C++ packages consumed from outside the repository as docs/packaging.md says
-# (tests/consumer/): Release -O3 with -Werror under gcc (and clang where installed), cmake --install
-# of both into one prefix + find_package, pkg-config, add_subdirectory into a C-only project.
+# (tests/consumer/): Release -O3 with -Werror under gcc (and clang where installed), the READMEs'
+# install recipes where googletest cannot be found (and, for C, no C++ compiler exists) into one
+# prefix, then a versioned find_package, pkg-config (the session API through <pkg>-posix), and
+# add_subdirectory into a C-only project (only the linked libraries built).
 test-consumer: generate
 	$(PY) -m pytest -q tests/consumer/test_consumers.py
 
 # The C core built freestanding for a Cortex-M4F (arm-none-eabi-gcc + newlib, -Os) into a minimal
-# image whose code size it prints. Not part of `make test`: needs gcc-arm-none-eabi and
+# image whose code size it prints, and the C package built top-level with only its shipped toolchain
+# file (cmake/arm-none-eabi.cmake). Not part of `make test`: needs gcc-arm-none-eabi and
 # libnewlib-arm-none-eabi (tools/bootstrap --ci; .ci/run runs it).
 test-cortexm: generate
 	$(PY) -m pytest -q -s tests/consumer/test_cortexm.py

@@ -210,7 +210,9 @@ def build_clis(langs: list[str], out: Path) -> dict[str, list[str]]:
         if not (build / "build.ninja").is_file():
             log(f"configuring the {lang} decode CLI (CMake Release) in {shown(build)}/")
             src = ROOT / "generated" / lang / "mipcodec"
+            # The tools are OFF unless asked for (docs/packaging.md).
             cfg = ["cmake", "-G", "Ninja", "-S", str(src), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"]
+            cfg.append("-DMIPCODEC_BUILD_TOOLS=ON")
             subprocess.run(cfg, check=True, stdout=subprocess.DEVNULL)
         subprocess.run(
             ["cmake", "--build", str(build), "--target", f"mipcodec_{lang}_decode"],

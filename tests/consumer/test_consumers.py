@@ -3,12 +3,20 @@ documents (`make test-consumer`, part of `make test`; the Cortex-M build is `mak
 run by .ci/run):
 
 - Release (-O3) builds of both packages with -Werror (the packages' <PKG>_WERROR option) under gcc,
-  and under clang where it is installed (CI installs clang-14);
-- `cmake --install` of both packages into one temporary prefix, then a consumer project with C and
-  C++ programs that finds them with find_package(mipcodec CONFIG);
-- the same programs built with pkg-config alone (no CMake);
-- add_subdirectory of the C package into a C-only project with no C++ compiler;
-- (test_cortexm) a minimal Cortex-M4 image on the C core, with its code size printed.
+  and under clang where it is installed (CI installs clang-14), tools and examples asked for;
+- the READMEs' install recipes as they stand (`cmake -S . -B build && cmake --build build &&
+  cmake --install build --prefix DIR`, nothing asked for) where googletest cannot be found (any
+  find_package(GTest) fails the configure) and, for the C package, no C++ compiler exists; both
+  packages installed into one temporary prefix;
+- a consumer project with C and C++ programs that finds them with find_package(mipcodec X.Y
+  CONFIG) (the version of VERSION), and the versions mipcodecConfigVersion.cmake accepts and
+  refuses (docs/versioning.md);
+- the same programs built with pkg-config alone (no CMake), with a session program on the POSIX
+  transport (mipcodec-posix) pinging a fake device on 127.0.0.1;
+- add_subdirectory of the C package into a C-only project with no C++ compiler: only the linked
+  libraries are built;
+- (test_cortexm) a minimal Cortex-M4 image on the C core, with its code size printed, and the C
+  package built top-level for Cortex-M with only the shipped toolchain file.
 
 Every program decodes the same stream (golden vectors) and must print the vectors' expected lines.
 Build directories live under build/consumer/ (kept, so a rerun only rebuilds what changed).
@@ -19,11 +27,17 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import socket
+import struct
 import subprocess
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
 
+from generator.release import parse_version
 from generator.vectors import load_vectors
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -33,6 +47,9 @@ PKG = "mipcodec"
 C_SRC = ROOT / "generated" / "c" / PKG
 CPP_SRC = ROOT / "generated" / "cpp" / PKG
 CLANG = shutil.which(os.environ.get("CLANG", "clang-14")) or shutil.which("clang")
+VERSION = parse_version((ROOT / "VERSION").read_text(encoding="utf-8"), "VERSION")
+# Tests, tools and examples: asked for in the project's own builds (they are OFF by default).
+ASKED = ["-DMIPCODEC_BUILD_TESTS=OFF", "-DMIPCODEC_BUILD_TOOLS=ON", "-DMIPCODEC_BUILD_EXAMPLES=ON"]
 
 
 def run(cmd: list, **kw) -> subprocess.CompletedProcess:
@@ -78,6 +95,46 @@ def check_cpp(exe: Path, stream, with_c: bool) -> None:
     assert run([exe, path]).stdout.splitlines() == [*lines, *([f"command {command}"] if with_c else [])]
 
 
+@contextmanager
+def fake_device(stream) -> Iterator[str]:
+    """A device on 127.0.0.1 for the session programs: answers each connection's ping command (the
+    ping_command vector's bytes) with the ping_reply vector's bytes. Yields its address."""
+    ir = json.loads((ROOT / "generated" / "ir.json").read_text(encoding="utf-8"))
+    cases = {c["name"]: c for c in load_vectors(ir, ROOT / "tests" / "vectors") if c["protocol"] == "mip"}
+    command, reply = bytes.fromhex(stream[2]), bytes.fromhex(cases["ping_reply"]["hex"])
+    server = socket.create_server(("127.0.0.1", 0))
+    server.settimeout(30)
+
+    def serve() -> None:
+        while True:
+            try:
+                conn, _ = server.accept()
+            except OSError:
+                return
+            with conn:
+                conn.settimeout(10)
+                got = b""
+                while command not in got:
+                    chunk = conn.recv(256)
+                    if not chunk:
+                        break
+                    got += chunk
+                if command in got:
+                    conn.sendall(reply)
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    try:
+        yield f"tcp:127.0.0.1:{server.getsockname()[1]}"
+    finally:
+        server.close()
+        thread.join(timeout=5)
+
+
+def check_session(exe: Path, address: str) -> None:
+    assert run([exe, address]).stdout.splitlines() == ["ping: ack"]
+
+
 def compilers() -> list[tuple[str, str, str]]:
     found = [("gcc", "gcc", "g++")]
     if CLANG:
@@ -88,11 +145,11 @@ def compilers() -> list[tuple[str, str, str]]:
 @pytest.mark.parametrize("name,cc,cxx", compilers(), ids=[c[0] for c in compilers()])
 def test_release_build_is_warning_free(name, cc, cxx):
     """Release (-O3) builds of both packages, -Werror through MIPCODEC_WERROR (never forced on a
-    consumer): libraries, tools and examples compile without a warning under gcc and clang. The gcc
-    build is also the one installed by the next test."""
+    consumer): libraries, tools and examples (asked for: they are OFF by default) compile without a
+    warning under gcc and clang."""
     if name == "clang" and not shutil.which(cxx):
         cxx = CLANG
-    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", "-DMIPCODEC_BUILD_TESTS=OFF"]
+    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", *ASKED]
     c_log = cmake_build(C_SRC, BUILD / f"release-{name}" / "c", f"-DCMAKE_C_COMPILER={cc}", *common)
     # One translation unit that includes every C++ header (the example includes the umbrella
     # header): the C++ tools would only add minutes of compile time.
@@ -107,57 +164,136 @@ def test_release_build_is_warning_free(name, cc, cxx):
     assert "CMAKE_BUILD_TYPE:STRING=Release" in cache
 
 
+# A module directory and a prefix where googletest's CMake files would be looked for first, each of
+# which fails the configure: the README's recipe must not look for GTest at all (a machine without
+# libgtest-dev), which CMAKE_DISABLE_FIND_PACKAGE_GTest would not show.
+NO_GTEST = BUILD / "no-gtest"
+
+
+def no_gtest() -> list[str]:
+    for path in (NO_GTEST / "modules" / "FindGTest.cmake", NO_GTEST / "prefix" / "lib/cmake/GTest/GTestConfig.cmake"):
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text('message(FATAL_ERROR "find_package(GTest) was called")\n')
+    return [f"-DCMAKE_MODULE_PATH={NO_GTEST / 'modules'}", f"-DCMAKE_PREFIX_PATH={NO_GTEST / 'prefix'}"]
+
+
+def recipe(lang: str) -> Path:
+    """The package's README install recipe, as it stands: `cmake -S . -B build && cmake --build
+    build` (nothing asked for, the default generator and build type) where googletest cannot be
+    found and, for the C package, with a C++ compiler that does not exist. Configured once (the
+    build directory is reused, the GTest traps stay in its cache). Returns the build directory."""
+    src, out = (C_SRC if lang == "c" else CPP_SRC), BUILD / "recipe" / lang
+    cxx = ["-DCMAKE_CXX_COMPILER=/nonexistent/c++"] if lang == "c" else []
+    if not (out / "CMakeCache.txt").is_file():
+        log = run(["cmake", "-S", src, "-B", out, *no_gtest(), *cxx])
+        assert "gtest" not in (log.stdout + log.stderr).lower()
+        if lang == "c":  # the C project never enables C++
+            assert "CMAKE_CXX_COMPILER" in log.stderr and "not used by the project" in log.stderr
+    run(["cmake", "--build", out])
+    cache = (out / "CMakeCache.txt").read_text()
+    assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest was looked for"
+    if lang == "c":
+        assert not list(out.glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
+    return out
+
+
 @pytest.fixture(scope="module")
 def prefix() -> Path:
-    """Both packages installed into one fresh prefix (the gcc Release builds)."""
+    """Both packages installed into one fresh prefix by their README recipes."""
     out = BUILD / "prefix"
     shutil.rmtree(out, ignore_errors=True)
     for lang in ("c", "cpp"):
-        build = BUILD / "release-gcc" / lang
-        if not (build / "build.ninja").is_file():
-            cmake_build(
-                C_SRC if lang == "c" else CPP_SRC, build, "-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_BUILD_TESTS=OFF"
-            )
-        run(["cmake", "--install", build, "--prefix", out])
+        run(["cmake", "--install", recipe(lang), "--prefix", out])
     return out
 
 
 def test_install_tree(prefix):
-    """What `cmake --install` puts where (docs/packaging.md lists the same tree)."""
+    """What the README recipes install where (docs/packaging.md lists the same tree): no tools,
+    tests or examples unless asked for."""
     files = sorted(p.relative_to(prefix).as_posix() for p in prefix.rglob("*") if p.is_file())
     libdir = next(p.parents[2].relative_to(prefix).as_posix() for p in prefix.rglob(f"{PKG}Config.cmake"))
     expected = {
         f"{libdir}/lib{PKG}.a",
         f"{libdir}/lib{PKG}_json.a",
+        f"{libdir}/lib{PKG}_posix.a",
         f"{libdir}/cmake/{PKG}/{PKG}Config.cmake",
+        f"{libdir}/cmake/{PKG}/{PKG}ConfigVersion.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-c-targets.cmake",
+        f"{libdir}/cmake/{PKG}/{PKG}-c-abi.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-cpp-targets.cmake",
         f"{libdir}/pkgconfig/{PKG}.pc",
         f"{libdir}/pkgconfig/{PKG}-json.pc",
+        f"{libdir}/pkgconfig/{PKG}-posix.pc",
         f"{libdir}/pkgconfig/{PKG}-cpp.pc",
         f"include/{PKG}/{PKG}.h",
+        f"include/{PKG}/posix_transport.h",
         f"include/{PKG}/{PKG}.hpp",
-        f"bin/{PKG}-decode",
-        f"bin/{PKG}-encode",
+        f"share/{PKG}/arm-none-eabi.cmake",
     }
     assert expected <= set(files), sorted(expected - set(files))
-    # no test, source or internal header is installed
-    assert not [f for f in files if f.endswith((".c", ".cpp")) or "/src/" in f or "test" in f]
+    # no test, source or internal header is installed, and no program unless asked for
+    assert not [f for f in files if f.endswith((".c", ".cpp")) or "/src/" in f or "test" in f or f.startswith("bin/")]
+    # the C and the C++ package write the same version file (either may be installed last)
+    versions = [(BUILD / "recipe" / lang / f"{PKG}ConfigVersion.cmake").read_bytes() for lang in ("c", "cpp")]
+    assert versions[0] == versions[1]
     # every linker symbol the C libraries define starts with the package's prefix (mipc_), so a
     # program links them beside the vendor SDK (mip_)
-    syms = run(["nm", "-g", "--defined-only", prefix / libdir / f"lib{PKG}.a", prefix / libdir / f"lib{PKG}_json.a"])
+    libs = [prefix / libdir / f"lib{PKG}{suffix}.a" for suffix in ("", "_json", "_posix")]
+    syms = run(["nm", "-g", "--defined-only", *libs])
     defined = [ln.split()[-1] for ln in syms.stdout.splitlines() if len(ln.split()) == 3]
     assert defined and [s for s in defined if not s.startswith("mipc_")] == []
 
 
 def test_find_package_c_and_cpp_in_one_project(prefix, stream):
-    """find_package(mipcodec CONFIG COMPONENTS c c_json cpp) after cmake --install: a C program on
-    mipcodec::c_json and a C++ program on mipcodec::cpp and mipcodec::c together."""
+    """find_package(mipcodec X.Y CONFIG COMPONENTS c c_json c_posix cpp) after cmake --install, X.Y
+    the project's VERSION: a C program on mipcodec::c_json, a session program on mipcodec::c_posix
+    and a C++ program on mipcodec::cpp and mipcodec::c together."""
     out = BUILD / "installed"
     shutil.rmtree(out, ignore_errors=True)
-    cmake_build(HERE / "installed", out, f"-DCMAKE_PREFIX_PATH={prefix}")
+    want = f"-DMIPCODEC_WANT={VERSION[0]}.{VERSION[1]}"
+    cmake_build(HERE / "installed", out, f"-DCMAKE_PREFIX_PATH={prefix}", want)
     check_c(out / "consumer_c", stream)
     check_cpp(out / "consumer_cpp", stream, with_c=True)
+    with fake_device(stream) as address:
+        check_session(out / "consumer_session", address)
+
+
+def compatible(want: str, prefix: Path, tmp_path: Path) -> subprocess.CompletedProcess:
+    """Configures a project that asks for find_package(mipcodec WANT CONFIG REQUIRED)."""
+    src = tmp_path / want
+    src.mkdir()
+    (src / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.16)\nproject(p LANGUAGES NONE)\n"
+        f"find_package(mipcodec {want} CONFIG REQUIRED)\n"
+        'message(STATUS "found mipcodec ${mipcodec_VERSION}")\n'
+    )
+    return subprocess.run(
+        ["cmake", "-S", src, "-B", src / "b", f"-DCMAKE_PREFIX_PATH={prefix}"], capture_output=True, text=True
+    )
+
+
+def test_find_package_version(prefix, tmp_path):
+    """mipcodecConfigVersion.cmake accepts what docs/versioning.md calls compatible: while the major
+    version is 0 a MINOR bump may break a consumer, so 0.Y asks for 0.Y.z exactly (SameMinorVersion);
+    from 1.0.0 on X.Y accepts X.y.z with y >= Y (SameMajorVersion). Another major is refused."""
+    major, minor, patch = VERSION
+    installed = f"{major}.{minor}.{patch}"
+    accepted = [f"{major}.{minor}", installed]
+    refused = [f"{major + 1}.0", f"{major}.{minor + 1}"]
+    if major == 0:
+        refused += [f"0.{minor - 1}"] if minor > 0 else []
+    else:
+        accepted += [f"{major}.0"]
+    for want in accepted:
+        r = compatible(want, prefix, tmp_path)
+        assert r.returncode == 0 and f"found mipcodec {installed}" in r.stdout, (want, r.stdout, r.stderr)
+    for want in refused:
+        r = compatible(want, prefix, tmp_path)
+        assert r.returncode != 0, want
+        assert f'compatible with requested version "{want}"' in r.stderr and f"version: {installed}" in r.stderr, (
+            want,
+            r.stderr,
+        )
 
 
 def test_find_package_reports_a_missing_component(prefix, tmp_path):
@@ -172,7 +308,37 @@ def test_find_package_reports_a_missing_component(prefix, tmp_path):
         text=True,
     )
     assert r.returncode != 0
-    assert "component nosuch is not installed" in r.stderr
+    # the message names every component and its package
+    assert "component nosuch is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)" in " ".join(
+        r.stderr.split()
+    )
+
+
+def test_find_package_refuses_c_of_another_pointer_size(prefix, tmp_path):
+    """The version file is the same for both packages (ARCH_INDEPENDENT), so the config file itself
+    keeps the C libraries (built for this host's pointers) from a project of another pointer size
+    (a 32-bit or Cortex-M project finding a 64-bit host's install), with the reason; the header-only
+    C++ package is still found."""
+    host = struct.calcsize("P")
+    other = 4 if host == 8 else 8
+    src = tmp_path / "p"
+    src.mkdir()
+    (src / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.16)\nproject(p LANGUAGES NONE)\n"
+        f"set(CMAKE_SIZEOF_VOID_P {other})\n"
+        "find_package(mipcodec CONFIG REQUIRED COMPONENTS ${WANT})\n"
+    )
+
+    def configure(want: str) -> subprocess.CompletedProcess:
+        build = tmp_path / f"b-{want}"
+        cmd = ["cmake", "-S", src, "-B", build, f"-DCMAKE_PREFIX_PATH={prefix}", f"-DWANT={want}"]
+        return subprocess.run(cmd, capture_output=True, text=True)
+
+    r = configure("c")
+    assert r.returncode != 0
+    assert "component c is not installed" in r.stderr
+    assert f"was built for {host}-byte pointers, this project has {other}" in " ".join(r.stderr.split())
+    assert configure("cpp").returncode == 0
 
 
 def test_pkg_config(prefix, stream):
@@ -212,15 +378,43 @@ def test_pkg_config(prefix, stream):
         ]
     )
     check_cpp(out / "consumer_cpp", stream, with_c=False)
+    # the session API over the POSIX transport: mipcodec-posix (requires the core)
+    posix_flags = run(["pkg-config", "--cflags", "--libs", f"{PKG}-posix"], env=env).stdout.split()
+    run(
+        [
+            "gcc",
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-pedantic",
+            "-Werror",
+            HERE / "session.c",
+            *posix_flags,
+            "-o",
+            out / "session",
+        ]
+    )
+    with fake_device(stream) as address:
+        check_session(out / "session", address)
 
 
 def test_add_subdirectory_c_only(stream):
     """add_subdirectory of the C package into a C-only project whose C++ compiler does not exist:
-    the package must not enable C++, and builds no tests, tools or examples as a subproject."""
+    the package must not enable C++, builds no tests, tools or examples as a subproject (even when
+    the including project sets its options), and builds only the libraries the project links
+    (mipcodec::c_json and the core, not mipcodec::c_posix)."""
     out = BUILD / "subdir"
     shutil.rmtree(out, ignore_errors=True)
-    cmake_build(HERE / "subdir", out, f"-DMIPCODEC_C_DIR={C_SRC}", "-DCMAKE_CXX_COMPILER=/nonexistent/c++")
+    cmake_build(
+        HERE / "subdir",
+        out,
+        f"-DMIPCODEC_C_DIR={C_SRC}",
+        "-DCMAKE_CXX_COMPILER=/nonexistent/c++",
+        "-DMIPCODEC_BUILD_TESTS=ON",
+        "-DMIPCODEC_BUILD_TOOLS=ON",
+        *no_gtest(),
+    )
     check_c(out / "consumer", stream)
     built = {p.name for p in (out / "mipcodec").iterdir()}
     assert {f"lib{PKG}.a", f"lib{PKG}_json.a"} <= built
-    assert not built & {f"{PKG}-tests", f"{PKG}-decode", f"{PKG}-encode", f"{PKG}-getting-started"}
+    assert not built & {f"lib{PKG}_posix.a", f"{PKG}-tests", f"{PKG}-decode", f"{PKG}-encode", f"{PKG}-getting-started"}

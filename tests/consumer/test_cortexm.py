@@ -1,8 +1,12 @@
 """The C core of mipcodec built freestanding for a Cortex-M4F with Debian's gcc-arm-none-eabi and
-newlib (`make test-cortexm`, run by .ci/run; tools/bootstrap --ci installs the toolchain): the
-consumer project tests/consumer/cortexm/ vendors the package with add_subdirectory and links a
-minimal image (ping + stream parser + scaled-accel decode) at -Os. Prints the image's code size
-(arm-none-eabi-size) and checks that nothing of stdio, the heap or JSON is in it."""
+newlib (`make test-cortexm`, run by .ci/run; tools/bootstrap --ci installs the toolchain), with the
+toolchain file the C package ships (cmake/arm-none-eabi.cmake, docs/packaging.md "Firmware"):
+
+- the consumer project tests/consumer/cortexm/ vendors the package with add_subdirectory and links
+  a minimal image (ping + stream parser + scaled-accel decode) at -Os. Prints the image's code size
+  (arm-none-eabi-size) and checks that nothing of stdio, the heap or JSON is in it;
+- the package itself configured top-level with only the toolchain file (no option: its tests need
+  no googletest unless asked for), built and installed: ARM static libraries, no POSIX library."""
 
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 HERE = ROOT / "tests" / "consumer" / "cortexm"
 OUT = ROOT / "build" / "consumer" / "cortexm"
 C_SRC = ROOT / "generated" / "c" / "mipcodec"
+TOOLCHAIN = C_SRC / "cmake" / "arm-none-eabi.cmake"
 
 
 def run(cmd: list) -> str:
@@ -22,9 +27,13 @@ def run(cmd: list) -> str:
     return r.stdout + r.stderr
 
 
-def test_cortex_m4_image():
+def need_toolchain() -> None:
     missing = [t for t in ("arm-none-eabi-gcc", "arm-none-eabi-size", "arm-none-eabi-nm") if not shutil.which(t)]
     assert not missing, f"missing {missing}: apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi"
+
+
+def test_cortex_m4_image():
+    need_toolchain()
     shutil.rmtree(OUT, ignore_errors=True)
     run(
         [
@@ -35,7 +44,7 @@ def test_cortex_m4_image():
             HERE,
             "-B",
             OUT,
-            f"-DCMAKE_TOOLCHAIN_FILE={HERE / 'arm-none-eabi.cmake'}",
+            f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}",
             "-DCMAKE_BUILD_TYPE=MinSizeRel",
             f"-DMIPCODEC_C_DIR={C_SRC}",
             "-DMIPCODEC_WERROR=ON",
@@ -60,3 +69,22 @@ def test_cortex_m4_image():
     ]
     assert unwanted == []
     assert 0 < text < 16384 and bss < 4096, size
+
+
+def test_top_level_cortex_m_build():
+    """The README's recipe for a firmware team: the C package configured as the top-level project
+    with the shipped toolchain file and nothing else, built and installed. No googletest, C++ or
+    POSIX is needed; the libraries are ARM objects."""
+    need_toolchain()
+    top = OUT.parent / "cortexm-top"
+    out, prefix = top / "build", top / "prefix"
+    shutil.rmtree(top, ignore_errors=True)
+    log = run(["cmake", "-S", C_SRC, "-B", out, f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}"])
+    assert "gtest" not in log.lower()
+    run(["cmake", "--build", out])
+    run(["cmake", "--install", out, "--prefix", prefix])
+    libs = sorted(p.name for p in prefix.rglob("*.a"))
+    assert libs == ["libmipcodec.a", "libmipcodec_json.a"], libs
+    objdump = run(["arm-none-eabi-objdump", "-f", next(prefix.rglob("libmipcodec.a"))])
+    assert "file format elf32-littlearm" in objdump
+    assert (prefix / "share" / "mipcodec" / "arm-none-eabi.cmake").read_bytes() == TOOLCHAIN.read_bytes()

@@ -50,11 +50,13 @@ def run(cmd: list[str], **kw) -> None:
 
 def cmake_build_and_test(lang: str) -> None:
     src, out = TREE / lang / PACKAGE, BUILD / lang / PACKAGE
-    if not (out / "build.ninja").is_file():
-        # the packages' own -Werror option (OFF for consumers), as the project's CI builds them
-        run(
-            ["cmake", "-G", "Ninja", "-S", src, "-B", out, "-DCMAKE_BUILD_TYPE=Debug", f"-D{PACKAGE.upper()}_WERROR=ON"]
-        )
+    P = PACKAGE.upper()
+    cache = out / "CMakeCache.txt"
+    if not (out / "build.ninja").is_file() or f"{P}_BUILD_TESTS:BOOL=ON" not in cache.read_text():
+        # the packages' own -Werror option (OFF for consumers), as the project's CI builds them, and
+        # their tests, tools and examples, which are OFF unless asked for
+        asked = [f"-D{P}_BUILD_{what}=ON" for what in ("TESTS", "TOOLS", "EXAMPLES")]
+        run(["cmake", "-G", "Ninja", "-S", src, "-B", out, "-DCMAKE_BUILD_TYPE=Debug", f"-D{P}_WERROR=ON", *asked])
     run(["cmake", "--build", out])
     run([out / f"{PACKAGE}-tests", "--gtest_brief=1"])
 

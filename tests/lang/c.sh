@@ -32,10 +32,20 @@ werror() {
     echo "$(tr '[:lower:]' '[:upper:]' <<<"$1")_WERROR=ON"
 }
 
+# The package's tests, tools and examples: OFF unless asked for (docs/packaging.md); the project's
+# own builds ask. asked PACKAGE WHAT... prints -D<PKG>_BUILD_<WHAT>=ON, one per line.
+asked() {
+    local P w
+    P="$(tr '[:lower:]' '[:upper:]' <<<"$1")"
+    shift
+    for w in "$@"; do echo "-D${P}_BUILD_${w}=ON"; done
+}
+
 build_one() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
     if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" >&2
+        # shellcheck disable=SC2046 # one argument per line of asked
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" $(asked "$1" TESTS TOOLS EXAMPLES) >&2
     fi
     cmake --build "$out" >&2
 }
@@ -79,7 +89,8 @@ sanitized() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c-sanitize/$1"
     local san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
     if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" -DCMAKE_C_FLAGS="$san" \
+        # shellcheck disable=SC2046 # one argument per line of asked
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" $(asked "$1" TESTS TOOLS) -DCMAKE_C_FLAGS="$san" \
             -DCMAKE_CXX_FLAGS="$san" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
     fi
     cmake --build "$out" >&2
@@ -116,7 +127,8 @@ ensure_example() {
 build_target() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
     if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" >&2
+        # shellcheck disable=SC2046 # one argument per line of asked
+        cmake -G Ninja -S "$src" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$1")" $(asked "$1" TESTS TOOLS EXAMPLES) >&2
     fi
     cmake --build "$out" --target "$2" >&2
 }

@@ -24,11 +24,20 @@ packages() {
 # The package's <PKG>_WERROR option (OFF for consumers), ON in the project's own builds.
 werror() { echo "$(tr '[:lower:]' '[:upper:]' <<<"$1")_WERROR=ON"; }
 
+# The package's tests, tools and examples: OFF unless asked for (docs/packaging.md); the project's
+# own builds ask. asked PACKAGE WHAT... prints -D<PKG>_BUILD_<WHAT>=ON, one per line.
+asked() {
+  local P w
+  P="$(tr '[:lower:]' '[:upper:]' <<<"$1")"; shift
+  for w in "$@"; do echo "-D${P}_BUILD_${w}=ON"; done
+}
+
 configure() { # package
   local src="$GEN/$1" out="$ROOT/build/cpp/$1"
   [ -f "$src/CMakeLists.txt" ] || { echo "cpp.sh: $src is missing; run 'python -m generator --only cpp'" >&2; exit 2; }
   if [ ! -f "$out/build.ninja" ]; then
-    cmake -G Ninja -S "$src" -B "$out" -D"$(werror "$1")" >&2
+    # shellcheck disable=SC2046 # one argument per line of asked
+    cmake -G Ninja -S "$src" -B "$out" -D"$(werror "$1")" $(asked "$1" TESTS TOOLS EXAMPLES) >&2
   fi
 }
 
@@ -90,7 +99,9 @@ case "$cmd" in
       san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
       out="$ROOT/build/cpp-sanitize/$p"
       if [ ! -f "$out/build.ninja" ]; then
-        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$p")" -DCMAKE_CXX_FLAGS="$san" \
+        # Only the suite: the tools and examples are built (unsanitized) above.
+        # shellcheck disable=SC2046 # one argument per line of asked
+        cmake -G Ninja -S "$GEN/$p" -B "$out" -DCMAKE_BUILD_TYPE=Debug -D"$(werror "$p")" $(asked "$p" TESTS) -DCMAKE_CXX_FLAGS="$san" \
           -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
       fi
       cmake --build "$out" >&2

@@ -889,7 +889,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             out[root + "examples/configure_and_stream.c"] = env.get_template(
                 "c/examples/configure_and_stream.c.j2"
             ).render(ctx, ex=ctx["stream_example"])
-        out.update(cmake_package_files(root, ctx, pkg_config(pkg.pkg, proto["title"], "c")))
+        out.update(cmake_package_files(root, ctx, pkg_config(pkg.pkg, proto["title"], "c"), toolchains=True))
         # The core library holds the binary encoders and decoders, the JSON library (<pkg>_json)
         # their canonical JSON: one source file of each per set, for the types and the reserved
         # fields, so that a firmware build compiles and links no JSON code.

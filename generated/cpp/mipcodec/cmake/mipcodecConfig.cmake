@@ -2,23 +2,41 @@
 # package of the MicroStrain MIP protocol, so that both fit one install tree. Generated: do not edit.
 #
 #   find_package(mipcodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(mipcodec 0.1 CONFIG REQUIRED)              # a compatible version (mipcodecConfigVersion.cmake)
 #   find_package(mipcodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
 #   target_link_libraries(app PRIVATE mipcodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE mipcodec::c_json)     # C canonical JSON (links mipcodec::c)
+#   target_link_libraries(app PRIVATE mipcodec::c_posix)    # C POSIX transports of the session API
 #   target_link_libraries(app PRIVATE mipcodec::cpp)        # C++17 header-only library
 #
-# Components: c and c_json (the C package: mipcodec-c-targets.cmake), cpp (the C++ package:
-# mipcodec-cpp-targets.cmake).
+# Components: c, c_json and c_posix (the C package: mipcodec-c-targets.cmake; c_posix when built
+# with MIPCODEC_POSIX), cpp (the C++ package: mipcodec-cpp-targets.cmake).
+#
+# The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
+# not, so mipcodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
+# or firmware build finding a 64-bit host install) does not get the C targets: its c components
+# are reported missing with the reason.
+set(_mipcodec_c_why "")
 foreach(_mipcodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
+        if(_mipcodec_part STREQUAL "c" AND EXISTS "${CMAKE_CURRENT_LIST_DIR}/mipcodec-c-abi.cmake")
+            include("${CMAKE_CURRENT_LIST_DIR}/mipcodec-c-abi.cmake")
+            if(CMAKE_SIZEOF_VOID_P AND _mipcodec_c_sizeof_void_p
+               AND NOT CMAKE_SIZEOF_VOID_P EQUAL _mipcodec_c_sizeof_void_p)
+                set(_mipcodec_c_why "; the C package in ${CMAKE_CURRENT_LIST_DIR} was built for ${_mipcodec_c_sizeof_void_p}-byte pointers, this project has ${CMAKE_SIZEOF_VOID_P}")
+                continue()
+            endif()
+        endif()
         include("${CMAKE_CURRENT_LIST_DIR}/mipcodec-${_mipcodec_part}-targets.cmake")
     endif()
 endforeach()
 unset(_mipcodec_part)
+unset(_mipcodec_c_sizeof_void_p)
 
 if(NOT TARGET mipcodec::c AND NOT TARGET mipcodec::cpp)
     set(mipcodec_FOUND FALSE)
-    set(mipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}")
+    set(mipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}${_mipcodec_c_why}")
+    unset(_mipcodec_c_why)
     return()
 endif()
 
@@ -30,8 +48,9 @@ foreach(_mipcodec_comp ${mipcodec_FIND_COMPONENTS})
         if(mipcodec_FIND_REQUIRED_${_mipcodec_comp})
             set(mipcodec_FOUND FALSE)
             set(mipcodec_NOT_FOUND_MESSAGE
-                "component ${_mipcodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+                "component ${_mipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_mipcodec_c_why}")
         endif()
     endif()
 endforeach()
 unset(_mipcodec_comp)
+unset(_mipcodec_c_why)

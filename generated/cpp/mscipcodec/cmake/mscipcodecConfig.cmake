@@ -2,23 +2,41 @@
 # package of the Memsense MS-CIP protocol, so that both fit one install tree. Generated: do not edit.
 #
 #   find_package(mscipcodec CONFIG REQUIRED)                  # whatever is installed
+#   find_package(mscipcodec 0.1 CONFIG REQUIRED)              # a compatible version (mscipcodecConfigVersion.cmake)
 #   find_package(mscipcodec CONFIG REQUIRED COMPONENTS c)     # fail unless the C package is
 #   target_link_libraries(app PRIVATE mscipcodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE mscipcodec::c_json)     # C canonical JSON (links mscipcodec::c)
+#   target_link_libraries(app PRIVATE mscipcodec::c_posix)    # C POSIX transports of the session API
 #   target_link_libraries(app PRIVATE mscipcodec::cpp)        # C++17 header-only library
 #
-# Components: c and c_json (the C package: mscipcodec-c-targets.cmake), cpp (the C++ package:
-# mscipcodec-cpp-targets.cmake).
+# Components: c, c_json and c_posix (the C package: mscipcodec-c-targets.cmake; c_posix when built
+# with MSCIPCODEC_POSIX), cpp (the C++ package: mscipcodec-cpp-targets.cmake).
+#
+# The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
+# not, so mscipcodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
+# or firmware build finding a 64-bit host install) does not get the C targets: its c components
+# are reported missing with the reason.
+set(_mscipcodec_c_why "")
 foreach(_mscipcodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/mscipcodec-${_mscipcodec_part}-targets.cmake")
+        if(_mscipcodec_part STREQUAL "c" AND EXISTS "${CMAKE_CURRENT_LIST_DIR}/mscipcodec-c-abi.cmake")
+            include("${CMAKE_CURRENT_LIST_DIR}/mscipcodec-c-abi.cmake")
+            if(CMAKE_SIZEOF_VOID_P AND _mscipcodec_c_sizeof_void_p
+               AND NOT CMAKE_SIZEOF_VOID_P EQUAL _mscipcodec_c_sizeof_void_p)
+                set(_mscipcodec_c_why "; the C package in ${CMAKE_CURRENT_LIST_DIR} was built for ${_mscipcodec_c_sizeof_void_p}-byte pointers, this project has ${CMAKE_SIZEOF_VOID_P}")
+                continue()
+            endif()
+        endif()
         include("${CMAKE_CURRENT_LIST_DIR}/mscipcodec-${_mscipcodec_part}-targets.cmake")
     endif()
 endforeach()
 unset(_mscipcodec_part)
+unset(_mscipcodec_c_sizeof_void_p)
 
 if(NOT TARGET mscipcodec::c AND NOT TARGET mscipcodec::cpp)
     set(mscipcodec_FOUND FALSE)
-    set(mscipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mscipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}")
+    set(mscipcodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of mscipcodec is installed in ${CMAKE_CURRENT_LIST_DIR}${_mscipcodec_c_why}")
+    unset(_mscipcodec_c_why)
     return()
 endif()
 
@@ -30,8 +48,9 @@ foreach(_mscipcodec_comp ${mscipcodec_FIND_COMPONENTS})
         if(mscipcodec_FIND_REQUIRED_${_mscipcodec_comp})
             set(mscipcodec_FOUND FALSE)
             set(mscipcodec_NOT_FOUND_MESSAGE
-                "component ${_mscipcodec_comp} is not installed (c, c_json: the C package; cpp: the C++ package)")
+                "component ${_mscipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_mscipcodec_c_why}")
         endif()
     endif()
 endforeach()
 unset(_mscipcodec_comp)
+unset(_mscipcodec_c_why)
