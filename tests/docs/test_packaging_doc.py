@@ -30,7 +30,7 @@ def _documented() -> set[str]:
 
 def _core_sources(package: Path) -> list[str]:
     text = (package / "CMakeLists.txt").read_text()
-    m = re.search(r"add_library\(\w+_c STATIC\n(.*?)\)", text, re.S)
+    m = re.search(r"add_library\(\w+_c STATIC[^\n]*\n(.*?)\)", text, re.S)
     assert m, f"{package}: no core library in CMakeLists.txt"
     return m.group(1).split()
 
