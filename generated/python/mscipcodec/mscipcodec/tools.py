@@ -166,8 +166,8 @@ def packet_time(packet: Packet) -> Optional[float]:
         if isinstance(f, DecodedField):
             cls = type(f.value)
             for s, d, attr, per_second in _columns.TIMES:
-                if cls.SET == s and cls.DESCRIPTOR == d:
-                    found[(s, d)] = getattr(f.value, attr) / per_second
+                if cls.SET == s and cls.DESCRIPTOR == d:  # the first occurrence (as section 6's key)
+                    found.setdefault((s, d), getattr(f.value, attr) / per_second)
     for s, d, _attr, _per_second in _columns.TIMES:
         if (s, d) in found:
             return found[(s, d)]
@@ -810,19 +810,22 @@ class FastExporter:
     def block(self, cols: Any, data: Any, base: int) -> None:
         """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
         np = self.np
-        times: Dict[int, Tuple[Any, Any]] = {}  # set -> (packet offsets, seconds), sorted by offset
+        # The time of a packet as `packet_time` picks it: the first TIMES source it carries, its
+        # first occurrence in the packet. set -> [(offsets, preference, field index, seconds)]
+        sources: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
         pieces: Dict[Any, List[Any]] = {}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in _DATA_SETS or t.rows == 0:
                 continue
             arrays = t.arrays()
-            for s, d, attr, per_second in reversed(_columns.TIMES):
+            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
                 if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
-                    prev = times.get(set_id)
+                    offs = np.frombuffer(t.offsets, dtype=np.int64)
                     sec = arrays[attr].astype(np.float64) / per_second
-                    times[set_id] = _merge_times(np, prev, (np.frombuffer(t.offsets, dtype=np.int64), sec))
+                    idx = np.frombuffer(t.index, dtype=np.int64)
+                    sources.setdefault(set_id, []).append((offs, np.full(len(offs), pref), idx, sec))
         other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
-        other_times: Dict[int, Dict[int, float]] = {}
+        other_times: Dict[int, List[Tuple[int, int, int, float]]] = {}
         for off, k, entry in cols.others:
             if k < 0 or not isinstance(entry, DecodedField):
                 continue
@@ -830,16 +833,20 @@ class FastExporter:
             if packet_set not in _DATA_SETS:
                 continue
             cls = type(entry.value)
-            for s, d, attr, per_second in _columns.TIMES:
+            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
                 if cls.SET == s and cls.DESCRIPTOR == d:
-                    other_times.setdefault(packet_set, {}).setdefault(off, getattr(entry.value, attr) / per_second)
+                    other_times.setdefault(packet_set, []).append(
+                        (off, pref, k, getattr(entry.value, attr) / per_second)
+                    )
             chosen = self._layout(cls)
             if chosen is not None:
                 other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
         for set_id, extra in other_times.items():
-            o = np.fromiter(extra.keys(), dtype=np.int64, count=len(extra))
-            v = np.fromiter(extra.values(), dtype=np.float64, count=len(extra))
-            times[set_id] = _merge_times(np, times.get(set_id), (o, v))
+            cols4 = list(zip(*extra))
+            sources.setdefault(set_id, []).append(
+                tuple(np.array(c, dtype=np.float64 if j == 3 else np.int64) for j, c in enumerate(cols4))
+            )
+        times = {set_id: _pick_times(np, parts) for set_id, parts in sources.items()}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in _DATA_SETS or t.rows == 0:
                 continue
@@ -1045,14 +1052,14 @@ def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
     return [a if a.type == target else a.cast(target) for a in arrs]
 
 
-def _merge_times(np: Any, prev: Any, new: Tuple[Any, Any]) -> Tuple[Any, Any]:
-    """Packet offsets -> seconds, sorted; an earlier source (higher preference) wins on a tie."""
-    if prev is None:
-        order = np.argsort(new[0], kind="stable")
-        return new[0][order], new[1][order]
-    offs = np.concatenate([new[0], prev[0]])
-    secs = np.concatenate([new[1], prev[1]])
-    order = np.argsort(offs, kind="stable")
+def _pick_times(np: Any, parts: List[Tuple[Any, Any, Any, Any]]) -> Tuple[Any, Any]:
+    """Packet offsets -> seconds, sorted by offset, from (offsets, preference, field index,
+    seconds) sources: per packet, the most preferred source, its first occurrence."""
+    offs = np.concatenate([p[0] for p in parts])
+    prefs = np.concatenate([p[1] for p in parts])
+    idx = np.concatenate([p[2] for p in parts])
+    secs = np.concatenate([p[3] for p in parts])
+    order = np.lexsort((idx, prefs, offs))
     offs, secs = offs[order], secs[order]
     keep = np.ones(len(offs), dtype=bool)
     keep[1:] = offs[1:] != offs[:-1]
@@ -1448,8 +1455,15 @@ def plot(args: argparse.Namespace) -> int:
 
 
 # ---------------------------------------------------------------------------------------- CLI
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line on stderr (`python -m PKG export: argument --idle: ...`), exit 2."""
+
+    def error(self, message: str) -> Any:
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = _Parser(
         prog=f"python -m {PROG}",
         description="Recorded logs to tables and plots (export, info, plot); decode/encode are the canonical "
         "JSON-line tools (python -m %s decode --help)." % PROG,
