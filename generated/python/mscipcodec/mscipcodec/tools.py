@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import csv
 import importlib
+import io
 import json
 import math
 import os
@@ -971,49 +972,85 @@ class FastExporter:
 
 class ArrowCsvText:
     """CSV of arrow tables with the cell text of `CsvWriter` (so both paths write the same bytes):
-    floats as `_cell_text` prints them (float32 as `f32_text`), bools true/false, null empty,
-    strings quoted only when they need it, headers quoted."""
+    floats as `_cell_text` prints them (float32 as `f32_text`: `_float_texts`), bools true/false,
+    null empty, strings quoted only when they need it, headers quoted. pyarrow writes the rows."""
 
     def __init__(self, np: Any, pa: Any, path: str, headers: List[str]) -> None:
         self.np, self.pa = np, pa
-        self.file = open(path, "w", newline="", encoding="utf-8")
-        csv.writer(self.file, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
+        self.pacsv = importlib.import_module("pyarrow.csv")
+        self.headers = headers
+        self.file = open(path, "wb")
+        head = io.StringIO()
+        csv.writer(head, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
+        self.file.write(head.getvalue().encode("utf-8"))
 
     def write_table(self, table: Any) -> None:
+        np, pa = self.np, self.pa
         if table.num_rows == 0:
             return
-        columns = [self._texts(table.column(j)) for j in range(table.num_columns)]
-        self.file.write("\n".join(map(",".join, zip(*columns))) + "\n")
-
-    def _texts(self, col: Any) -> List[str]:
-        np, pa = self.np, self.pa
-        col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
-        t = col.type
-        if pa.types.is_null(t):
-            return [""] * len(col)
-        valid = None if col.null_count == 0 else col.is_valid().to_numpy(zero_copy_only=False)
-        if pa.types.is_floating(t):
-            a = col.fill_null(0).to_numpy(zero_copy_only=False)
-            text = _f32_texts(np, a) if t == pa.float32() else a.astype(np.float64).astype(str)
-        elif pa.types.is_integer(t):
-            text = col.fill_null(0).to_numpy(zero_copy_only=False).astype(str)
-        elif pa.types.is_boolean(t):
-            text = np.where(col.fill_null(False).to_numpy(zero_copy_only=False), "true", "false")
-        else:
-            return ["" if v is None else _csv_quote(str(v)) for v in col.to_pylist()]
-        if valid is not None:
-            text = np.where(valid, text, "")
-        out: List[str] = text.tolist()
-        return out
+        columns, plain = [], True
+        for j in range(table.num_columns):
+            col = table.column(j)
+            col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
+            t = col.type
+            if pa.types.is_floating(t):
+                col = _float_texts(np, pa, col)
+            elif pa.types.is_string(t) or pa.types.is_large_string(t):
+                texts = col.to_pylist()
+                if any(v is not None and any(c in v for c in ',"\n\r') for v in texts):
+                    plain = False
+                    col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
+            columns.append(col)
+        if plain:  # nothing to quote: pyarrow writes the cells as they are
+            names = [f"c{j}" for j in range(len(columns))]
+            options = self.pacsv.WriteOptions(include_header=False, quoting_style="none")
+            self.pacsv.write_csv(pa.Table.from_arrays(columns, names=names), self.file, write_options=options)
+            return
+        texts = [["" if v is None else str(v) for v in _text_cells(pa, c)] for c in columns]
+        self.file.write(("\n".join(map(",".join, zip(*texts))) + "\n").encode("utf-8"))
 
     def close(self) -> None:
         self.file.close()
 
 
+def _text_cells(pa: Any, col: Any) -> List[Any]:
+    """Cells of an arrow column as CsvWriter prints them (strings already final)."""
+    if pa.types.is_boolean(col.type):
+        return [None if v is None else ("true" if v else "false") for v in col.to_pylist()]
+    out: List[Any] = col.to_pylist()
+    return out
+
+
+def _float_texts(np: Any, pa: Any, col: Any) -> Any:
+    """The text of each value of a float32 / float64 arrow array as the packet path prints it
+    (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
+    positional without a trailing `.0` from 1e-7 to 1e20: so from 2e-4 to 1e15 (where repr is
+    positional too) its text plus `.0` when integral is repr's; the values outside (and zeros)
+    are printed one by one."""
+    pc = importlib.import_module("pyarrow.compute")
+    single = col.type == pa.float32()
+    text = pc.cast(col, pa.string())
+    integral = pc.match_substring_regex(text, "^-?[0-9]+$")
+    text = pc.if_else(integral, pc.binary_join_element_wise(text, pa.scalar(".0"), ""), text)
+    values = col.fill_null(0).to_numpy(zero_copy_only=False)
+    size = np.abs(values.astype(np.float64))
+    with np.errstate(invalid="ignore"):
+        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
+    where = np.flatnonzero(odd)
+    if len(where) == 0:
+        return text
+    fmt = f32_text if single else (lambda v: repr(float(v)))
+    fixed = pa.array([fmt(float(v)) for v in values[where]], type=pa.string())
+    mask = np.zeros(len(values), dtype=bool)
+    mask[where] = True
+    return pc.replace_with_mask(text, pa.array(mask), fixed)
+
+
 def _f32_texts(np: Any, a: Any) -> Any:
-    """`f32_text` of each value of a float32 array, vectorised: numpy's shortest float32 digits
-    (correctly rounded), read as a double and printed as repr(float) lays it out."""
-    return a.astype(np.float32).astype(str).astype(np.float64).astype(str)
+    """`f32_text` of each value of a float32 numpy array, as the columnar path prints them."""
+    pa = importlib.import_module("pyarrow")
+    texts: List[str] = _float_texts(np, pa, pa.array(a.astype(np.float32), type=pa.float32())).to_pylist()
+    return np.array(texts, dtype=object)
 
 
 def _csv_quote(text: str) -> str:
@@ -1430,8 +1467,6 @@ def plot(args: argparse.Namespace) -> int:
     try:
         tmp = outputs.claim(args.out)
         if ext == ".html":
-            import io
-
             buf = io.StringIO()
             fig.savefig(buf, format="svg")
             title = os.path.basename(args.log)
