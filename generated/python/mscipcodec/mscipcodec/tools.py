@@ -1024,9 +1024,9 @@ def _text_cells(pa: Any, col: Any) -> List[Any]:
 def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     """The text of each value of a float32 / float64 arrow array as the packet path prints it
     (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
-    positional without a trailing `.0` from 1e-7 to 1e20: so from 2e-4 to 1e15 (where repr is
-    positional too) its text plus `.0` when integral is repr's; the values outside (and zeros)
-    are printed one by one."""
+    positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
+    float32 values (where repr is positional too): there, its text plus `.0` when integral is
+    repr's; the values outside that range or in pyarrow's exponent form are printed one by one."""
     pc = importlib.import_module("pyarrow.compute")
     single = col.type == pa.float32()
     text = pc.cast(col, pa.string())
@@ -1036,6 +1036,9 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     size = np.abs(values.astype(np.float64))
     with np.errstate(invalid="ignore"):
         odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
+    odd |= pc.match_substring(text, "e").fill_null(False).to_numpy(zero_copy_only=False)  # pyarrow's exponent form
+    if col.null_count:
+        odd &= col.is_valid().to_numpy(zero_copy_only=False)
     where = np.flatnonzero(odd)
     if len(where) == 0:
         return text
