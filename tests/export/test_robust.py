@@ -105,6 +105,31 @@ def test_follow_stopped_by_ctrl_c_writes_what_was_read(tmp_path, join):
     assert not [n for n in leftovers(out) if n.startswith(".")]
 
 
+@pytest.mark.parametrize("delay", [0.8, 1.6, 2.4])
+def test_ctrl_c_without_follow_leaves_whole_tables_or_none(tmp_path, delay):
+    """Ctrl-C while a (non-follow) export writes: exit 130 and no table, or, when it came too late,
+    exit 0 and whole tables; never a table cut short, never a temporary file left."""
+    log = tmp_path / "log.bin"
+    log.write_bytes(accel_stream(150_000))
+    out = tmp_path / "o"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "mipcodec", "export", str(log), "--out", str(out), "--format", "jsonl"],
+        env=dict(os.environ, PYTHONPATH=GENERATED),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    time.sleep(delay)
+    proc.send_signal(signal.SIGINT)
+    _out, err = proc.communicate(timeout=300)
+    assert proc.returncode in (0, 130), err
+    names = leftovers(out)
+    if proc.returncode == 130:
+        assert names == [], names
+    else:
+        assert names == ["sensor.scaled_accel.jsonl", "sensor.shared.reference_timestamp.jsonl"]
+        assert len((out / names[0]).read_text().splitlines()) == 150_000
+
+
 # ---------------------------------------------------------------- whole outputs or nothing
 def fsize_limit(limit: int):
     """A process whose files cannot grow past `limit` bytes (RLIMIT_FSIZE: writes fail with EFBIG,
