@@ -1,15 +1,24 @@
 """User commands for recorded logs: export to tables, summarise, plot (`python -m mscipcodec export|info|plot`).
 
     python -m mscipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
-                                  [--enum-numbers] [--device ID] [--follow [--idle S]]
+                                  [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
     python -m mscipcodec info LOG [--device ID]
-    python -m mscipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID]
+    python -m mscipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 
 Column names, units and enum names come from the spec through the generated `_columns` table.
 The core package needs nothing beyond Python; Parquet needs pyarrow, plots matplotlib, the
 progress bar tqdm (the package's `[export]`, `[plot]` extras), and the commands name the extra to
-install when one is missing. Exit status: 0, 1 on a failed write, 2 on a usage error or unreadable
-input; messages are one line on stderr.
+install when one is missing.
+
+Outputs are written whole or not at all: each under a temporary name in its directory, renamed
+when every output of the command is complete (`Outputs`); an existing output is refused unless
+`--force`. Memory does not grow with the log: skipped bytes are counted in pieces, `info` keeps a
+bounded summary per (set, field), `--join` spools its rows to a temporary file.
+
+Exit status: 0; 1 when `plot` finds no values to plot; 2 on a usage error, an unreadable input or
+a failed write (as the decode tool, docs/conformance.md section 5); 130 on Ctrl-C (except with
+`export --follow`, where Ctrl-C is the way to stop: the tables are written, exit 0). Messages are
+one line on stderr.
 """
 
 from __future__ import annotations
@@ -17,18 +26,22 @@ from __future__ import annotations
 import argparse
 import csv
 import importlib
+import io
 import json
 import math
 import os
+import pickle
+import signal
 import struct
 import sys
+import tempfile
 import time
 from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, Type
 
 from . import _columns, registry
-from ._protocol import FIRST_SHARED, SET_OFFSET, SYNC, TIMESTAMPS
+from ._protocol import FIRST_SHARED, MAX_PACKET, SET_OFFSET, SYNC, TIMESTAMPS
 from ._protocol import PACKAGE as PROG
-from .framing import fletcher16
+from .framing import Skip, fletcher16
 from .packets import DecodedField, Decoder, Packet
 
 CHUNK = 1 << 16
@@ -57,13 +70,28 @@ def need(module: str) -> Any:
 
 # ------------------------------------------------------------------------------ values to cells
 def f32_text(v: float) -> str:
-    """Shortest text that reads back as the same float32 (the value as the device sent it)."""
+    """The text of a float32 value in every output: the fewest significant digits that read back
+    as the same float32 (the value as the device sent it), correctly rounded, laid out as Python's
+    repr(float) (docs/conformance.md section 4): positional from 1e-4 to below 1e16, else
+    `d.ddde-XX`. The columnar path gets the same text from numpy (`_f32_texts`)."""
     if v != v or v in (math.inf, -math.inf):
         return repr(float(v))
+
+    def exact(digits: int) -> Optional[float]:
+        x = float(f"{v:.{digits}g}")
+        return x if _F32.unpack(_F32.pack(x))[0] == v else None
+
+    # Reading back is monotonic in the digits (more digits are closer): the first of 6..9 that
+    # works, or fewer when 6 already do.
     for digits in range(6, 10):
-        text = f"{v:.{digits}g}"
-        if _F32.unpack(_F32.pack(float(text)))[0] == v:
-            return repr(float(text)) if "e" not in text else text
+        x = exact(digits)
+        if x is not None:
+            while digits > 1:
+                y = exact(digits - 1)
+                if y is None:
+                    break
+                x, digits = y, digits - 1
+            return repr(x)
     return repr(float(v))
 
 
@@ -139,8 +167,8 @@ def packet_time(packet: Packet) -> Optional[float]:
         if isinstance(f, DecodedField):
             cls = type(f.value)
             for s, d, attr, per_second in _columns.TIMES:
-                if cls.SET == s and cls.DESCRIPTOR == d:
-                    found[(s, d)] = getattr(f.value, attr) / per_second
+                if cls.SET == s and cls.DESCRIPTOR == d:  # the first occurrence (as section 6's key)
+                    found.setdefault((s, d), getattr(f.value, attr) / per_second)
     for s, d, _attr, _per_second in _columns.TIMES:
         if (s, d) in found:
             return found[(s, d)]
@@ -168,13 +196,21 @@ def select(headers: List[str], fields: Optional[List[str]]) -> List[int]:
 
 
 # ------------------------------------------------------------------------------------ sources
+class _Stop(Exception):
+    """Ctrl-C while `export --follow` waits in a read: stop reading (raised by the SIGINT handler)."""
+
+
 class Source:
-    """The bytes of a log: a file (optionally followed as it grows) or stdin, in chunks."""
+    """The bytes of a log: a file (optionally followed as it grows) or stdin, in chunks.
+
+    `stop()` (the SIGINT handler of `export --follow`) ends `chunks()` after the chunk in hand."""
 
     def __init__(self, path: str, follow: bool = False, idle: Optional[float] = None, progress: bool = True) -> None:
         self.path = path
         self.follow = follow
         self.idle = idle
+        self.stopped = False
+        self.reading = False
         if path == "-":
             self.file = sys.stdin.buffer
             self.size = None
@@ -186,13 +222,24 @@ class Source:
             self.size = None if follow else os.fstat(self.file.fileno()).st_size
         self.bar = _progress(self.size) if progress and sys.stderr.isatty() and self.size else None
 
+    def stop(self) -> None:
+        self.stopped = True
+        if self.reading:  # a read that waits for data (stdin): interrupt it
+            raise _Stop()
+
     def chunks(self) -> Iterator[bytes]:
         read = getattr(self.file, "read1", self.file.read)
         quiet_since = time.monotonic()
         try:
-            while True:
+            while not self.stopped:
                 try:
-                    chunk = read(CHUNK)
+                    self.reading = True
+                    try:
+                        chunk = read(CHUNK)
+                    finally:
+                        self.reading = False
+                except _Stop:
+                    return
                 except OSError as e:
                     raise ToolError(f"cannot read {self.path}: {e.strerror or e}") from None
                 if chunk:
@@ -225,12 +272,111 @@ def _progress(total: int) -> Any:
     return tqdm(total=total, unit="B", unit_scale=True, unit_divisor=1024, file=sys.stderr, leave=False)
 
 
+SKIP_WINDOW = 1 << 20  # skipped bytes the tools let the parser hold before counting them
+
+
+class SkipPart(Skip):
+    """The first bytes of a skip run that is still going on (the run's `Skip` follows with the
+    rest): the tools hand long runs on in pieces so that noise without a packet start (/dev/zero)
+    is skipped in bounded memory. `after` is what follows in the run (up to MAX_PACKET bytes),
+    to check the packets that start in this piece (`bad_checksums`)."""
+
+    __slots__ = ("after",)
+
+    def __init__(self, offset: int, data: bytes, after: bytes) -> None:
+        super().__init__(offset, data)
+        self.after = after
+
+
+class Events:
+    """Decoded events of a stream, fed chunk by chunk, in bounded memory: a skip run beyond
+    SKIP_WINDOW bytes is handed on as `SkipPart`s (all but its last MAX_PACKET bytes, so the
+    parser's events are otherwise those of `Decoder`)."""
+
+    def __init__(self, device: Optional[str]) -> None:
+        self.decoder = Decoder(device)
+
+    def feed(self, chunk: bytes) -> List[Any]:
+        out: List[Any] = self.decoder.feed(chunk)
+        held = getattr(self.decoder, "_skip", None)  # the run the parser holds (framing.Parser)
+        if isinstance(held, bytearray) and len(held) > SKIP_WINDOW:
+            n = len(held) - MAX_PACKET
+            part = SkipPart(self.decoder._skip_at, bytes(held[:n]), bytes(held[n:]))
+            del held[:n]
+            self.decoder._skip_at += n
+            out.append(part)
+        return out
+
+    def flush(self) -> List[Any]:
+        return list(self.decoder.flush())
+
+
 def events(source: Source, device: Optional[str]) -> Iterator[Any]:
-    """Decoded events (Packet, Skip) of the source, chunk by chunk."""
-    decoder = Decoder(device)
+    """Decoded events (Packet, Skip, SkipPart) of the source, chunk by chunk."""
+    ev = Events(device)
     for chunk in source.chunks():
-        yield from decoder.feed(chunk)
-    yield from decoder.flush()
+        yield from ev.feed(chunk)
+    yield from ev.flush()
+
+
+# ------------------------------------------------------------------------------------ outputs
+class Outputs:
+    """The files one command writes, whole or not at all: each is written under a temporary name
+    in its directory (`.NAME.part-PID`) and renamed when every one is complete (`commit`);
+    `abort` removes them. So a failed write (a full disk), a crash or Ctrl-C leaves the previous
+    files or complete new ones, never a partial one. An existing output is refused unless
+    `force`."""
+
+    def __init__(self, force: bool) -> None:
+        self.force = force
+        self.files: List[Tuple[str, str]] = []  # (temporary, final)
+        self.extra: List[Any] = []  # temporary files of their own (join spools), closed on abort
+
+    def refuse_existing(self, path: str) -> None:
+        if not self.force and os.path.lexists(path):
+            raise ToolError(f"{path} exists: not overwritten (--force overwrites it)")
+
+    def claim(self, path: str) -> str:
+        """The temporary name to write `path` under."""
+        self.refuse_existing(path)
+        tmp = os.path.join(os.path.dirname(path) or ".", f".{os.path.basename(path)}.part-{os.getpid()}")
+        self.files.append((tmp, path))
+        return tmp
+
+    def spool(self, directory: str) -> Any:
+        """An anonymous temporary file (in `directory`, removed when closed)."""
+        f = tempfile.TemporaryFile(dir=directory, prefix=".spool-")
+        self.extra.append(f)
+        return f
+
+    def commit(self) -> None:
+        for _tmp, path in self.files:
+            self.refuse_existing(path)  # created meanwhile by someone else
+        for tmp, path in self.files:
+            os.replace(tmp, path)
+        self.files = []
+        self._close_extra()
+
+    def abort(self) -> None:
+        for tmp, _path in self.files:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+        self.files = []
+        self._close_extra()
+
+    def _close_extra(self) -> None:
+        for f in self.extra:
+            try:
+                f.close()
+            except OSError:
+                pass
+        self.extra = []
+
+
+def _write_error(where: str, e: OSError) -> ToolError:
+    return ToolError(f"cannot write {where!r}: {e.strerror or e}")
 
 
 # --------------------------------------------------------------------------------- table model
@@ -412,18 +558,26 @@ def _typed(layout: Layout, value: Any) -> List[Any]:
 class Exporter:
     """Writes the tables of a stream of decoded packets (one per (set, layout), or per set with join)."""
 
-    def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool, join: bool) -> None:
+    def __init__(
+        self,
+        out: str,
+        fmt: str,
+        fields: Optional[List[str]],
+        enum_numbers: bool,
+        join: bool,
+        outputs: Optional[Outputs] = None,
+    ) -> None:
         self.out = out
         self.writer = WRITERS[fmt]
         self.fields = fields
         self.enum_numbers = enum_numbers
         self.join = join
+        self.outputs = outputs if outputs is not None else Outputs(force=True)
         # (set, layout class) -> its table, or None when --fields keeps none of its columns
         self.tables: Dict[Any, Optional[Tuple[Rows, Writer, Layout]]] = {}
         self.pending: Dict[Any, List[List[Any]]] = {}
         self.layouts: Dict[Any, Layout] = {}
-        self.joined: Dict[int, Dict[str, Any]] = {}  # join: set -> {"rows": [...], "headers": {...}}
-        self.open_sample: Dict[int, Tuple[Any, Dict[str, Any]]] = {}
+        self.joined: Dict[int, JoinTable] = {}  # join: set -> its table (rows spooled)
 
     def layout(self, cls: Any) -> Layout:
         lay = self.layouts.get(cls)
@@ -452,7 +606,7 @@ class Exporter:
                     self.tables[key] = entry = None
                 else:
                     rows = Rows(table_name(p.set, cls), lay.headers, keep)
-                    path = os.path.join(self.out, rows.name + self.writer.suffix)
+                    path = self.outputs.claim(os.path.join(self.out, rows.name + self.writer.suffix))
                     self.tables[key] = entry = (rows, self.writer(path, rows.headers), lay)
                     self.pending[key] = []
             if entry is None:
@@ -477,45 +631,38 @@ class Exporter:
             self.pending[key] = []
 
     def _join(self, p: Packet, t: Optional[float]) -> None:
-        key = sample_key(p)
-        table = self.joined.setdefault(p.set, {"rows": [], "headers": {}})
-        current = self.open_sample.get(p.set)
-        if current is None or key is None or current[0] != key:
-            row: Dict[str, Any] = {TIME_HEADER: t, "offset": p.offset}
-            table["rows"].append(row)
-            self.open_sample[p.set] = (key, row)
-        else:
-            row = current[1]
-            if row.get(TIME_HEADER) is None:
-                row[TIME_HEADER] = t
+        table = self.joined.get(p.set)
+        if table is None:
+            name = registry.SET_NAMES.get(p.set, f"set_{p.set:02x}") + self.writer.suffix
+            path = os.path.join(self.out, name)
+            self.outputs.refuse_existing(path)  # before an hour of --follow, not after
+            table = self.joined[p.set] = JoinTable(name, path, self.outputs.spool(self.out))
+        cells: List[Tuple[str, Any]] = []
         for f in p.fields:
             if not isinstance(f, DecodedField):
                 continue
             lay = self.layout(type(f.value))
             keep = select(lay.headers, self.fields)
-            cells = _typed(lay, f.value)
-            for i in keep:
-                h = lay.headers[i]
-                table["headers"].setdefault(h, None)
-                row.setdefault(h, cells[i])
+            if keep:
+                typed = _typed(lay, f.value)
+                cells.extend((lay.headers[i], typed[i]) for i in keep)
+        table.packet(sample_key(p), t, p.offset, cells)
 
     def flush(self) -> None:
         for key in list(self.pending):
             self._drain(key)
             self._writer(key).flush()
+        for table in self.joined.values():
+            table.spill()
 
     def close(self) -> List[Tuple[str, int]]:
         written: List[Tuple[str, int]] = []
         if self.join:
-            for set_id, table in sorted(self.joined.items()):
-                headers = [TIME_HEADER, "offset"] + list(table["headers"])
-                if len(headers) == 2 and self.fields:
+            for _set_id, table in sorted(self.joined.items()):
+                if not table.columns and self.fields:
                     continue
-                name = registry.SET_NAMES.get(set_id, f"set_{set_id:02x}")
-                w = self.writer(os.path.join(self.out, name + self.writer.suffix), headers)
-                w.write([[r.get(h) for h in headers] for r in table["rows"]])
-                w.close()
-                written.append((name + self.writer.suffix, len(table["rows"])))
+                table.write(self.writer, self.outputs.claim(table.path))
+                written.append((table.name, table.rows))
             return written
         for key, entry in self.tables.items():
             if entry is None:
@@ -525,6 +672,69 @@ class Exporter:
             w.close()
             written.append((rows.name + self.writer.suffix, rows.count))
         return sorted(written)
+
+
+class JoinTable:
+    """The `--join` table of one data set: one row per sample (docs/conformance.md section 6: the
+    packets of a set that share a key, i.e. continuation packets, make one row, the first value
+    of a column wins, so the shared copies of a continuation add nothing). Rows go to a spool
+    file as they complete (memory bounded by the table's width); the table is written at the
+    end, when its columns (the union of those seen, in order of appearance) are known."""
+
+    BATCH = 4096
+
+    def __init__(self, name: str, path: str, spool: Any) -> None:
+        self.name, self.path, self.spool = name, path, spool
+        self.columns: Dict[str, int] = {}  # header -> index among the value columns
+        self.batch: List[Tuple[Optional[float], int, Dict[int, Any]]] = []
+        self.rows = 0
+        self.key: Any = None
+        self.row: Optional[Tuple[Optional[float], int, Dict[int, Any]]] = None
+
+    def packet(self, key: Any, t: Optional[float], offset: int, cells: List[Tuple[str, Any]]) -> None:
+        if self.row is None or key is None or key != self.key:
+            self._end_row()
+            self.row = (t, offset, {})
+            self.key = key
+        elif self.row[0] is None and t is not None:
+            self.row = (t, self.row[1], self.row[2])
+        values = self.row[2]
+        for h, c in cells:
+            i = self.columns.setdefault(h, len(self.columns))
+            values.setdefault(i, c)
+
+    def _end_row(self) -> None:
+        if self.row is not None:
+            self.batch.append(self.row)
+            self.rows += 1
+            self.row = None
+            if len(self.batch) >= self.BATCH:
+                self.spill()
+
+    def spill(self) -> None:
+        if self.batch:
+            pickle.dump(self.batch, self.spool, protocol=pickle.HIGHEST_PROTOCOL)
+            self.batch = []
+
+    def write(self, writer: Type[Writer], path: str) -> None:
+        self._end_row()
+        self.spill()
+        width = len(self.columns)
+        w = writer(path, [TIME_HEADER, "offset"] + list(self.columns))
+        self.spool.seek(0)
+        while True:
+            try:
+                batch = pickle.load(self.spool)
+            except EOFError:
+                break
+            out = []
+            for t, offset, values in batch:
+                row: List[Any] = [t, offset] + [None] * width
+                for i, c in values.items():
+                    row[2 + i] = c
+                out.append(row)
+            w.write(out)
+        w.close()
 
 
 _DATA_SETS = frozenset(s for s, _d, _dev in _columns.COLUMNS)
@@ -567,11 +777,14 @@ class FastExporter:
     numpy columns, every other entry (NaN, optional, nested, ...) through `Layout`, merged in
     stream order; written by pyarrow (CSV or Parquet) block by block."""
 
-    def __init__(self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool) -> None:
+    def __init__(
+        self, out: str, fmt: str, fields: Optional[List[str]], enum_numbers: bool, outputs: Optional[Outputs] = None
+    ) -> None:
         # numpy and pyarrow are optional (pyarrow has no type stubs): both used untyped here.
         self.np: Any = importlib.import_module("numpy")
         self.pa: Any = importlib.import_module("pyarrow")
         self.out, self.fmt, self.fields, self.enum_numbers = out, fmt, fields, enum_numbers
+        self.outputs = outputs if outputs is not None else Outputs(force=True)
         self.writers: Dict[Any, Any] = {}
         self.counts: Dict[Any, int] = {}
         self.schemas: Dict[Any, Any] = {}
@@ -598,19 +811,22 @@ class FastExporter:
     def block(self, cols: Any, data: Any, base: int) -> None:
         """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
         np = self.np
-        times: Dict[int, Tuple[Any, Any]] = {}  # set -> (packet offsets, seconds), sorted by offset
+        # The time of a packet as `packet_time` picks it: the first TIMES source it carries, its
+        # first occurrence in the packet. set -> [(offsets, preference, field index, seconds)]
+        sources: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
         pieces: Dict[Any, List[Any]] = {}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in _DATA_SETS or t.rows == 0:
                 continue
             arrays = t.arrays()
-            for s, d, attr, per_second in reversed(_columns.TIMES):
+            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
                 if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
-                    prev = times.get(set_id)
+                    offs = np.frombuffer(t.offsets, dtype=np.int64)
                     sec = arrays[attr].astype(np.float64) / per_second
-                    times[set_id] = _merge_times(np, prev, (np.frombuffer(t.offsets, dtype=np.int64), sec))
+                    idx = np.frombuffer(t.index, dtype=np.int64)
+                    sources.setdefault(set_id, []).append((offs, np.full(len(offs), pref), idx, sec))
         other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
-        other_times: Dict[int, Dict[int, float]] = {}
+        other_times: Dict[int, List[Tuple[int, int, int, float]]] = {}
         for off, k, entry in cols.others:
             if k < 0 or not isinstance(entry, DecodedField):
                 continue
@@ -618,16 +834,20 @@ class FastExporter:
             if packet_set not in _DATA_SETS:
                 continue
             cls = type(entry.value)
-            for s, d, attr, per_second in _columns.TIMES:
+            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
                 if cls.SET == s and cls.DESCRIPTOR == d:
-                    other_times.setdefault(packet_set, {}).setdefault(off, getattr(entry.value, attr) / per_second)
+                    other_times.setdefault(packet_set, []).append(
+                        (off, pref, k, getattr(entry.value, attr) / per_second)
+                    )
             chosen = self._layout(cls)
             if chosen is not None:
                 other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
         for set_id, extra in other_times.items():
-            o = np.fromiter(extra.keys(), dtype=np.int64, count=len(extra))
-            v = np.fromiter(extra.values(), dtype=np.float64, count=len(extra))
-            times[set_id] = _merge_times(np, times.get(set_id), (o, v))
+            cols4 = list(zip(*extra))
+            sources.setdefault(set_id, []).append(
+                tuple(np.array(c, dtype=np.float64 if j == 3 else np.int64) for j, c in enumerate(cols4))
+            )
+        times = {set_id: _pick_times(np, parts) for set_id, parts in sources.items()}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in _DATA_SETS or t.rows == 0:
                 continue
@@ -726,10 +946,9 @@ class FastExporter:
         set_id, cls = key
         w = self.writers.get(key)
         if w is None:
-            path = os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt)
+            path = self.outputs.claim(os.path.join(self.out, table_name(set_id, cls) + "." + self.fmt))
             if self.fmt == "csv":
-                pacsv = importlib.import_module("pyarrow.csv")
-                w = pacsv.CSVWriter(path, table.schema, write_options=pacsv.WriteOptions(quoting_style="needed"))
+                w = ArrowCsvText(self.np, self.pa, path, table.column_names)
             else:
                 w = importlib.import_module("pyarrow.parquet").ParquetWriter(path, table.schema)
             self.writers[key] = w
@@ -737,17 +956,111 @@ class FastExporter:
             self.counts[key] = 0
         return w
 
+    def shutdown(self) -> None:
+        if self.pool is not None:
+            self.pool.shutdown()
+            self.pool = None
+
     def close(self) -> List[Tuple[str, int]]:
-        try:
-            self.wait()
-        finally:
-            if self.pool is not None:
-                self.pool.shutdown()
+        self.wait()
         out = []
         for (set_id, cls), w in self.writers.items():
             w.close()
             out.append((table_name(set_id, cls) + "." + self.fmt, self.counts[(set_id, cls)]))
         return sorted(out)
+
+
+class ArrowCsvText:
+    """CSV of arrow tables with the cell text of `CsvWriter` (so both paths write the same bytes):
+    floats as `_cell_text` prints them (float32 as `f32_text`: `_float_texts`), bools true/false,
+    null empty, strings quoted only when they need it, headers quoted. pyarrow writes the rows."""
+
+    def __init__(self, np: Any, pa: Any, path: str, headers: List[str]) -> None:
+        self.np, self.pa = np, pa
+        self.pacsv = importlib.import_module("pyarrow.csv")
+        self.headers = headers
+        self.file = open(path, "wb")
+        head = io.StringIO()
+        csv.writer(head, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
+        self.file.write(head.getvalue().encode("utf-8"))
+
+    def write_table(self, table: Any) -> None:
+        np, pa = self.np, self.pa
+        if table.num_rows == 0:
+            return
+        columns, plain = [], True
+        for j in range(table.num_columns):
+            col = table.column(j)
+            col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
+            t = col.type
+            if pa.types.is_floating(t):
+                col = _float_texts(np, pa, col)
+            elif pa.types.is_string(t) or pa.types.is_large_string(t):
+                texts = col.to_pylist()
+                if any(v is not None and any(c in v for c in ',"\n\r') for v in texts):
+                    plain = False
+                    col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
+            columns.append(col)
+        if plain:  # nothing to quote: pyarrow writes the cells as they are
+            names = [f"c{j}" for j in range(len(columns))]
+            options = self.pacsv.WriteOptions(include_header=False, quoting_style="none")
+            self.pacsv.write_csv(pa.Table.from_arrays(columns, names=names), self.file, write_options=options)
+            return
+        texts = [["" if v is None else str(v) for v in _text_cells(pa, c)] for c in columns]
+        self.file.write(("\n".join(map(",".join, zip(*texts))) + "\n").encode("utf-8"))
+
+    def close(self) -> None:
+        self.file.close()
+
+
+def _text_cells(pa: Any, col: Any) -> List[Any]:
+    """Cells of an arrow column as CsvWriter prints them (strings already final)."""
+    if pa.types.is_boolean(col.type):
+        return [None if v is None else ("true" if v else "false") for v in col.to_pylist()]
+    out: List[Any] = col.to_pylist()
+    return out
+
+
+def _float_texts(np: Any, pa: Any, col: Any) -> Any:
+    """The text of each value of a float32 / float64 arrow array as the packet path prints it
+    (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
+    positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
+    float32 values (where repr is positional too): there, its text plus `.0` when integral is
+    repr's; the values outside that range or in pyarrow's exponent form are printed one by one."""
+    pc = importlib.import_module("pyarrow.compute")
+    single = col.type == pa.float32()
+    text = pc.cast(col, pa.string())
+    integral = pc.match_substring_regex(text, "^-?[0-9]+$")
+    text = pc.if_else(integral, pc.binary_join_element_wise(text, pa.scalar(".0"), ""), text)
+    values = col.fill_null(0).to_numpy(zero_copy_only=False)
+    size = np.abs(values.astype(np.float64))
+    with np.errstate(invalid="ignore"):
+        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
+    odd |= pc.match_substring(text, "e").fill_null(False).to_numpy(zero_copy_only=False)  # pyarrow's exponent form
+    if col.null_count:
+        odd &= col.is_valid().to_numpy(zero_copy_only=False)
+    where = np.flatnonzero(odd)
+    if len(where) == 0:
+        return text
+    fmt = f32_text if single else (lambda v: repr(float(v)))
+    fixed = pa.array([fmt(float(v)) for v in values[where]], type=pa.string())
+    mask = np.zeros(len(values), dtype=bool)
+    mask[where] = True
+    return pc.replace_with_mask(text, pa.array(mask), fixed)
+
+
+def _f32_texts(np: Any, a: Any) -> Any:
+    """`f32_text` of each value of a float32 numpy array, as the columnar path prints them."""
+    pa = importlib.import_module("pyarrow")
+    texts: List[str] = _float_texts(np, pa, pa.array(a.astype(np.float32), type=pa.float32())).to_pylist()
+    return np.array(texts, dtype=object)
+
+
+def _csv_quote(text: str) -> str:
+    """A string cell as the csv module writes it (QUOTE_MINIMAL, lineterminator \\n)."""
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
 
 
 def _as_arrow(pa: Any, c: Any) -> Any:
@@ -779,14 +1092,14 @@ def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
     return [a if a.type == target else a.cast(target) for a in arrs]
 
 
-def _merge_times(np: Any, prev: Any, new: Tuple[Any, Any]) -> Tuple[Any, Any]:
-    """Packet offsets -> seconds, sorted; an earlier source (higher preference) wins on a tie."""
-    if prev is None:
-        order = np.argsort(new[0], kind="stable")
-        return new[0][order], new[1][order]
-    offs = np.concatenate([new[0], prev[0]])
-    secs = np.concatenate([new[1], prev[1]])
-    order = np.argsort(offs, kind="stable")
+def _pick_times(np: Any, parts: List[Tuple[Any, Any, Any, Any]]) -> Tuple[Any, Any]:
+    """Packet offsets -> seconds, sorted by offset, from (offsets, preference, field index,
+    seconds) sources: per packet, the most preferred source, its first occurrence."""
+    offs = np.concatenate([p[0] for p in parts])
+    prefs = np.concatenate([p[1] for p in parts])
+    idx = np.concatenate([p[2] for p in parts])
+    secs = np.concatenate([p[3] for p in parts])
+    order = np.lexsort((idx, prefs, offs))
     offs, secs = offs[order], secs[order]
     keep = np.ones(len(offs), dtype=bool)
     keep[1:] = offs[1:] != offs[:-1]
@@ -813,41 +1126,73 @@ def export(args: argparse.Namespace) -> int:
         os.makedirs(args.out, exist_ok=True)
     except OSError as e:
         raise ToolError(f"cannot create {args.out!r}: {e.strerror or e}") from None
-    if _fast_path(args):
-        return _export_fast(args, fields)
-    source = Source(args.log, follow=args.follow, idle=args.idle)
-    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join)
-    packets = skipped = 0
+    outputs = Outputs(args.force)
     try:
-        for chunk_events in _batched(source, args.device):
-            for ev in chunk_events:
-                if isinstance(ev, Packet):
-                    packets += 1
-                    ex.packet(ev)
-                else:
-                    skipped += len(ev.data)
-            if args.follow:
-                ex.flush()
-        written = ex.close()
+        if _fast_path(args):
+            written, tally = _export_fast(args, fields, outputs)
+        else:
+            written, tally = _export_packets(args, fields, outputs)
+        outputs.commit()
     except OSError as e:
-        raise ToolError(f"cannot write to {args.out!r}: {e.strerror or e}", 1) from None
+        outputs.abort()
+        raise _write_error(args.out, e) from None
+    except BaseException:
+        outputs.abort()
+        raise
     for name, n in written:
         print(f"{os.path.join(args.out, name)}: {n} rows")
-    print(f"{packets} packets, {skipped} bytes skipped", file=sys.stderr)
+    print(tally, file=sys.stderr)
     return 0
 
 
-def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
+def _export_packets(
+    args: argparse.Namespace, fields: Optional[List[str]], outputs: Outputs
+) -> Tuple[List[Tuple[str, int]], str]:
+    """The packet-by-packet export; with --follow, Ctrl-C ends the reading and the tables of what
+    was read are written (the documented way to stop it)."""
+    source = Source(args.log, follow=args.follow, idle=args.idle)
+    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join, outputs)
+    stream = Events(args.device)
+    tally = [0, 0]  # packets, skipped bytes
+
+    def take(evs: List[Any]) -> None:
+        for ev in evs:
+            if isinstance(ev, Packet):
+                tally[0] += 1
+                ex.packet(ev)
+            else:
+                tally[1] += len(ev.data)
+
+    previous = None
+    if args.follow:
+        previous = signal.signal(signal.SIGINT, lambda _n, _f: source.stop())
+    try:
+        for chunk in source.chunks():
+            take(stream.feed(chunk))
+            if args.follow:
+                ex.flush()
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+    take(stream.flush())
+    written = ex.close()
+    stopped = " (stopped by Ctrl-C)" if source.stopped else ""
+    return written, f"{tally[0]} packets, {tally[1]} bytes skipped{stopped}"
+
+
+def _export_fast(
+    args: argparse.Namespace, fields: Optional[List[str]], outputs: Outputs
+) -> Tuple[List[Tuple[str, int]], str]:
     """The columnar export: blocks of BLOCK bytes through decode_columns; bytes that end a block
-    in a skipped run (possibly a packet cut by the block's end) start the next block."""
+    in a skipped run (possibly a packet cut by the block's end) start the next block, at most
+    MAX_PACKET - 1 of them (a packet cut by the end starts there; bytes before are skipped)."""
     from .packets import Columns, decode_columns
 
     source = Source(args.log)
-    ex = FastExporter(args.out, args.format, fields, args.enum_numbers)
+    ex = FastExporter(args.out, args.format, fields, args.enum_numbers, outputs)
     packets = skipped = 0
     carry = b""
     base = 0
-    size = source.size or 0
     pending = bytearray()
     try:
         for chunk in source.chunks():
@@ -860,7 +1205,7 @@ def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
             cut = len(data)
             block: Optional[Columns] = cols
             if cols.skips and cols.skips[-1].offset + len(cols.skips[-1].data) == len(data):
-                cut = cols.skips[-1].offset
+                cut = max(cols.skips[-1].offset, len(data) - (MAX_PACKET - 1))
                 block = decode_columns(data[:cut]) if cut else None
             if block is not None:
                 ex.block(block, data, base)
@@ -875,20 +1220,9 @@ def _export_fast(args: argparse.Namespace, fields: Optional[List[str]]) -> int:
             packets += cols.packets
             skipped += sum(len(k.data) for k in cols.skips)
         written = ex.close()
-    except OSError as e:
-        raise ToolError(f"cannot write to {args.out!r}: {e.strerror or e}", 1) from None
-    del size
-    for name, n in written:
-        print(f"{os.path.join(args.out, name)}: {n} rows")
-    print(f"{packets} packets, {skipped} bytes skipped (columnar path)", file=sys.stderr)
-    return 0
-
-
-def _batched(source: Source, device: Optional[str]) -> Iterator[List[Any]]:
-    decoder = Decoder(device)
-    for chunk in source.chunks():
-        yield decoder.feed(chunk)
-    yield decoder.flush()
+    finally:
+        ex.shutdown()
+    return written, f"{packets} packets, {skipped} bytes skipped (columnar path)"
 
 
 def _field_list(text: Optional[str]) -> Optional[List[str]]:
@@ -905,12 +1239,81 @@ def _field_list(text: Optional[str]) -> Optional[List[str]]:
 
 
 # --------------------------------------------------------------------------------------- info
+class Intervals:
+    """The intervals between one field's timestamps, as a histogram of at most MAX_BINS bins:
+    exact (one bin per distinct interval) while there are that few, then geometric bins of
+    relative width `scale` (doubled whenever the bins would exceed MAX_BINS), each counted at its
+    centre. So `info` holds the same small state per (set, field) whatever the log's length."""
+
+    MAX_BINS = 2048
+
+    def __init__(self) -> None:
+        self.bins: Dict[float, int] = {}
+        self.scale = 0.0  # 0: exact
+
+    def _key(self, dt: float) -> float:
+        if self.scale == 0.0:
+            return dt
+        return math.exp((math.floor(math.log(dt) / self.scale) + 0.5) * self.scale)
+
+    def add(self, dt: float, n: int = 1) -> None:
+        key = self._key(dt)
+        self.bins[key] = self.bins.get(key, 0) + n
+        while len(self.bins) > self.MAX_BINS:
+            old, self.bins = self.bins, {}
+            self.scale = 1e-4 if self.scale == 0.0 else 2 * self.scale
+            for k, m in old.items():
+                k2 = self._key(k)
+                self.bins[k2] = self.bins.get(k2, 0) + m
+
+    def rate(self) -> Tuple[Optional[float], int, int]:
+        """(rate in Hz from the median interval, gaps over 1.5 times it, samples they dropped)."""
+        total = sum(self.bins.values())
+        if not total:
+            return None, 0, 0
+        ordered = sorted(self.bins.items())
+        seen, step = 0, ordered[-1][0]
+        for dt, n in ordered:  # the interval at index total // 2 of the sorted intervals
+            seen += n
+            if seen > total // 2:
+                step = dt
+                break
+        gaps = dropped = 0
+        for dt, n in ordered:
+            if dt > 1.5 * step:
+                gaps += n
+                dropped += n * (round(dt / step) - 1)
+        return 1.0 / step, gaps, dropped
+
+
+class FieldSummary:
+    """What `info` keeps of one (set, descriptor, name): counts, the last time, its intervals."""
+
+    __slots__ = ("count", "untimed", "last", "intervals")
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.untimed = 0
+        self.last: Optional[float] = None
+        self.intervals = Intervals()
+
+    def add(self, t: Optional[float]) -> None:
+        self.count += 1
+        if t is None:
+            self.untimed += 1
+            return
+        if self.last is not None and t > self.last:
+            self.intervals.add(t - self.last)
+        self.last = t
+
+
 class Summary:
-    """What `info` prints, computed from a stream of events."""
+    """What `info` prints, computed from a stream of events in bounded memory (a `FieldSummary`
+    per (set, field), not a list per entry)."""
 
     def __init__(self) -> None:
         self.packets: Dict[int, int] = {}
-        self.fields: Dict[Tuple[int, int, str], List[Optional[float]]] = {}
+        self.fields: Dict[Tuple[int, int, str], FieldSummary] = {}
         self.skipped = 0
         self.skip_runs = 0
         self.bad_checksums = 0
@@ -930,25 +1333,18 @@ class Summary:
                 if d is None:
                     continue
                 name = f.name if isinstance(f, DecodedField) else "(undecoded)"
-                self.fields.setdefault((e.set, d, name), []).append(t)
+                key = (e.set, d, name)
+                summary = self.fields.get(key)
+                if summary is None:
+                    summary = self.fields[key] = FieldSummary()
+                summary.add(t)
+        elif isinstance(e, SkipPart):  # the start of a run still going on
+            self.skipped += len(e.data)
+            self.bad_checksums += bad_checksums(bytes(e.data) + bytes(e.after), len(e.data))
         else:
             self.skipped += len(e.data)
             self.skip_runs += 1
             self.bad_checksums += bad_checksums(bytes(e.data))
-
-    def rate(self, times: List[Optional[float]]) -> Tuple[Optional[float], int, int]:
-        """(rate in Hz from the median interval, gaps, dropped samples) of one field's times."""
-        ts = [t for t in times if t is not None]
-        dts = [b - a for a, b in zip(ts, ts[1:]) if b > a]
-        if not dts:
-            return None, 0, 0
-        step = sorted(dts)[len(dts) // 2]
-        gaps = dropped = 0
-        for dt in dts:
-            if dt > 1.5 * step:
-                gaps += 1
-                dropped += round(dt / step) - 1
-        return 1.0 / step, gaps, dropped
 
     def lines(self) -> List[str]:
         out = []
@@ -962,46 +1358,45 @@ class Summary:
             out.append("time: no timestamps")
         for s in sorted(self.packets):
             out.append(f"set 0x{s:02X} {registry.SET_NAMES.get(s, '?')}: {self.packets[s]} packets")
-            for (fs, d, name), times in sorted(self.fields.items()):
+            for (fs, d, name), summary in sorted(self.fields.items()):
                 if fs != s:
                     continue
-                hz, gaps, dropped = self.rate(times)
+                hz, gaps, dropped = summary.intervals.rate()
                 rate = f"{hz:10.3f} Hz" if hz is not None else "         - Hz"
-                untimed = sum(1 for t in times if t is None)
                 # Rates, gaps and drops come from the entries whose packet carries a timestamp.
-                note = f"  ({untimed} without timestamp)" if untimed else ""
-                out.append(f"  0x{d:02X} {name:32} {len(times):8} {rate}  gaps {gaps}  dropped {dropped}{note}")
+                note = f"  ({summary.untimed} without timestamp)" if summary.untimed else ""
+                out.append(f"  0x{d:02X} {name:32} {summary.count:8} {rate}  gaps {gaps}  dropped {dropped}{note}")
         return out
 
 
-def bad_checksums(data: bytes) -> int:
-    """Complete packets with a wrong checksum inside a skipped run (same header, wrong sum)."""
+def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
+    """Complete packets with a wrong checksum inside a skipped run (same header, wrong sum),
+    among those that start before `starts` (default: anywhere)."""
     from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET
+    from .framing import checksum_bytes
 
+    limit = len(data) if starts is None else starts
     n = 0
-    i = data.find(SYNC)
-    while i >= 0:
+    i = data.find(SYNC, 0, limit + len(SYNC) - 1)
+    while 0 <= i < limit:
         if i + HEADER_SIZE <= len(data):
             end = i + HEADER_SIZE + data[i + LENGTH_OFFSET] + CHECKSUM_SIZE
             if end <= len(data):
-                body = data[i : end - CHECKSUM_SIZE]
-                from .framing import checksum_bytes
-
-                if checksum_bytes(body) != data[end - CHECKSUM_SIZE : end]:
+                if checksum_bytes(data[i : end - CHECKSUM_SIZE]) != data[end - CHECKSUM_SIZE : end]:
                     n += 1
-        i = data.find(SYNC, i + 1)
+        i = data.find(SYNC, i + 1, limit + len(SYNC) - 1)
     return n
 
 
 def info(args: argparse.Namespace) -> int:
     source = Source(args.log)
     summary = Summary()
-    decoder = Decoder(args.device)
+    stream = Events(args.device)
     for chunk in source.chunks():
         summary.bytes += len(chunk)
-        for e in decoder.feed(chunk):
+        for e in stream.feed(chunk):
             summary.add(e)
-    for e in decoder.flush():
+    for e in stream.flush():
         summary.add(e)
     print("\n".join(summary.lines()))
     return 0
@@ -1069,30 +1464,44 @@ def plot(args: argparse.Namespace) -> int:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    outputs = Outputs(args.force)
+    outputs.refuse_existing(args.out)  # before reading the log
     fig = figure(args.log, fields, args.device)
     try:
+        tmp = outputs.claim(args.out)
         if ext == ".html":
-            import io
-
             buf = io.StringIO()
             fig.savefig(buf, format="svg")
             title = os.path.basename(args.log)
-            with open(args.out, "w", encoding="utf-8") as fh:
+            with open(tmp, "w", encoding="utf-8") as fh:
                 fh.write(f"<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>{title}</title></head><body>\n")
                 fh.write(buf.getvalue()[buf.getvalue().find("<svg") :])
                 fh.write("</body></html>\n")
         else:
-            fig.savefig(args.out, dpi=110)
+            with open(tmp, "wb") as fh:
+                fig.savefig(fh, dpi=110, format=ext[1:])
+        outputs.commit()
     except OSError as e:
-        raise ToolError(f"cannot write {args.out!r}: {e.strerror or e}", 1) from None
+        outputs.abort()
+        raise _write_error(args.out, e) from None
+    except BaseException:
+        outputs.abort()
+        raise
     plt.close(fig)
     print(f"{args.out}: {sum(len(ax.lines) for ax in fig.axes)} series")
     return 0
 
 
 # ---------------------------------------------------------------------------------------- CLI
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line on stderr (`python -m PKG export: argument --idle: ...`), exit 2."""
+
+    def error(self, message: str) -> Any:
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = _Parser(
         prog=f"python -m {PROG}",
         description="Recorded logs to tables and plots (export, info, plot); decode/encode are the canonical "
         "JSON-line tools (python -m %s decode --help)." % PROG,
@@ -1120,7 +1529,10 @@ def parser() -> argparse.ArgumentParser:
     )
     e.add_argument("--enum-numbers", action="store_true", help="write enums as numbers (default: names from the spec)")
     e.add_argument("--follow", action="store_true", help="keep reading a growing file (stop with Ctrl-C or --idle)")
-    e.add_argument("--idle", type=float, metavar="S", help="with --follow: stop after S seconds without new data")
+    e.add_argument(
+        "--idle", type=_seconds, metavar="S", help="with --follow: stop after S seconds without new data (S >= 0)"
+    )
+    e.add_argument("--force", action="store_true", help="overwrite tables that exist (default: refuse)")
     device(e)
     e.set_defaults(run=export)
 
@@ -1146,9 +1558,21 @@ def parser() -> argparse.ArgumentParser:
         help="columns to plot (names or prefixes, e.g. scaled_accel,scaled_gyro.z)",
     )
     q.add_argument("--out", required=True, metavar="FILE", help="image file: .png, .svg or .html")
+    q.add_argument("--force", action="store_true", help="overwrite the image if it exists (default: refuse)")
     device(q)
     q.set_defaults(run=plot)
     return p
+
+
+def _seconds(text: str) -> float:
+    """A finite number of seconds >= 0 (argparse type: a bad value is one usage line, exit 2)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"needs a finite number of seconds >= 0, not {text!r}")
+    return value
 
 
 def main(argv: List[str]) -> int:
