@@ -784,6 +784,7 @@ class Device(_CommandSets):
         self.settings: OrderedDict[Tuple[Any, ...], Field] = OrderedDict()
         self._app_idle = False  # the application's last idle/resume command was an idle
         self._quiet = False  # inside to_idle: data is counted and dropped, not delivered
+        self._muted: Optional[Tuple[Any, Any, Any]] = None  # the handlers while muted
         self._dropped = 0
         self._linking = False  # inside a reconnect: no nested one
         from . import command_api  # the generated typed API (imports this module)
@@ -921,6 +922,19 @@ class Device(_CommandSets):
         elapsed = self._clock() - lost_at
         self.log(f"link: reconnected after {elapsed:.1f} s, re-applied {len(self.settings)} settings")
 
+    def _mute(self, on: bool) -> None:
+        """Inside to_idle and the baud search: no handler and no event consumer sees what arrives
+        (it is counted and dropped); the handlers come back after."""
+        s = self.session
+        if on:
+            self._quiet, self._dropped = True, 0
+            self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
+            s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
+        elif self._muted is not None:
+            self._quiet = False
+            s._packet_handlers, s._field_handlers, s._grouper = self._muted
+            self._muted = None
+
     def _flush(self) -> None:
         flush = getattr(self.transport, "flush_input", None)
         if flush is not None:
@@ -940,7 +954,7 @@ class Device(_CommandSets):
         command = _command_of(_link.IDLE)
         result: Optional[Result] = None
         for attempt in range(1, attempts + 1):
-            self._quiet, self._dropped = True, 0
+            self._mute(True)
             try:
                 p = self.start(command, wait)
                 while p.result is None:
@@ -954,7 +968,7 @@ class Device(_CommandSets):
                         self.pump(max(0, end - self.now_ms()))
                     self._flush()
             finally:
-                self._quiet = False
+                self._mute(False)
             if result.status == TIMEOUT:
                 if attempt < attempts:
                     streaming = f" while streaming ({dropped} bytes dropped)" if dropped else ""
@@ -991,11 +1005,11 @@ class Device(_CommandSets):
             if rate != int(self.transport.baudrate):
                 self.transport.baudrate = rate
             self._flush()
-            self._quiet = True
+            self._mute(True)
             try:
                 result = self.run(command, timeout_ms)
             finally:
-                self._quiet = False
+                self._mute(False)
             if result.status != TIMEOUT:
                 if rate != configured:
                     self.log(f"link: baud: device answers at {rate}")
