@@ -1040,14 +1040,20 @@ class Device(_CommandSets):
         self.close()
 
 
-def connect(address: str, device: Optional[str] = None, baudrate: int = 115200, **options: Any) -> Device:
+def connect(
+    address: str, device: Optional[str] = None, baudrate: int = 115200, auto_baud: bool = False, **options: Any
+) -> Device:
     """A Device on `address`: "tcp:HOST:PORT" or a serial port path ("/dev/ttyUSB0", "COM3").
-    Options of Device; with `reconnect_ms`, a lost port is reopened at the same address."""
+    Options of Device (`reconnect_ms`: a lost port is reopened at the same address, `log`);
+    `auto_baud`: find the rate the device answers at when `baudrate` gets no answer (a serial port)."""
     from .transport import open_transport
 
     options.setdefault("reopen", lambda: open_transport(address, baudrate))
     options.setdefault("address", address)
-    return Device(open_transport(address, baudrate), device, **options)
+    result = Device(open_transport(address, baudrate), device, **options)
+    if auto_baud:
+        result.find_baud()  # a reopened port is set to the rate found (Device._reconnect)
+    return result
 
 
 def baud_search_order(device: Optional[str], configured: int) -> Tuple[int, ...]:
