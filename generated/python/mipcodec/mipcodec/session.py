@@ -785,6 +785,7 @@ class Device(_CommandSets):
         self._app_idle = False  # the application's last idle/resume command was an idle
         self._quiet = False  # inside to_idle: data is counted and dropped, not delivered
         self._muted: Optional[Tuple[Any, Any, Any]] = None  # the handlers while muted
+        self._mute_depth = 0
         self._dropped = 0
         self._linking = False  # inside a reconnect: no nested one
         from . import command_api  # the generated typed API (imports this module)
@@ -927,10 +928,15 @@ class Device(_CommandSets):
         (it is counted and dropped); the handlers come back after."""
         s = self.session
         if on:
-            self._quiet, self._dropped = True, 0
-            self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
-            s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
-        elif self._muted is not None:
+            self._dropped = 0
+            self._mute_depth += 1
+            if self._mute_depth == 1:  # (a reconnect inside to_idle mutes again: nested)
+                self._quiet = True
+                self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
+                s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
+            return
+        self._mute_depth -= 1
+        if self._mute_depth == 0 and self._muted is not None:
             self._quiet = False
             s._packet_handlers, s._field_handlers, s._grouper = self._muted
             self._muted = None
