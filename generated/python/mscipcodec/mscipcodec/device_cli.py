@@ -22,6 +22,7 @@ import json
 import math
 import sys
 import time
+import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple
 
 from . import _session as _meta
@@ -276,7 +277,7 @@ def check_budget(
 ) -> List[str]:
     """The budget lines of the formats; raises Trouble when over budget (unless force: warns)."""
     if not budget.available():
-        return ["link budget: the spec gives no UART bandwidth calculation"]
+        return ["the spec gives no UART bandwidth calculation"]
     try:
         streams = budget.streams_for(conn.model, formats, base or read_base_rates(conn))
     except budget.BudgetError as e:
@@ -368,7 +369,7 @@ def cmd_info(conn: Connection, args: argparse.Namespace) -> int:
 
 def _parse_value(text: str) -> Any:
     try:
-        import yaml
+        import yaml  # type: ignore[import-untyped, unused-ignore]
 
         return yaml.safe_load(text)
     except ImportError:
@@ -614,33 +615,38 @@ def cmd_stream(conn: Connection, args: argparse.Namespace) -> int:
     count = 0
     first: Optional[float] = None
     last = 0.0
+    closed = False
 
     def on_packet(packet: Any) -> None:
-        nonlocal count, first, last
+        nonlocal count, first, last, closed
         if packet.set != set_id:
             return
         now = time.monotonic()
         first = now if first is None else first
         last = now
         count += 1
-        if args.count and count > args.count:
+        if (args.count and count > args.count) or closed:
             return
-        if args.json:
-            _say(packet.line())
-        else:
-            values = [
-                f"{e.name} {e.value.to_json()}"
-                for e in packet.fields
-                if hasattr(e, "value") and isinstance(e.value, Field)
-            ]
-            _say(" ".join(values))
+        try:
+            if args.json:
+                _say(packet.line())
+            else:
+                values = [
+                    f"{e.name} {e.value.to_json()}"
+                    for e in packet.fields
+                    if hasattr(e, "value") and isinstance(e.value, Field)
+                ]
+                _say(" ".join(values))
+        except BrokenPipeError:  # the reader went away (`stream ... | head`): stop quietly
+            _quiet_stdout()
+            closed = True
 
     conn.device.on_packet(on_packet)
     try:
         conn.device.call(command)
         _enable(conn, set_id)
         end = time.monotonic() + args.duration if args.duration else math.inf
-        while time.monotonic() < end and not (args.count and count >= args.count):
+        while time.monotonic() < end and not (args.count and count >= args.count) and not closed:
             conn.device.pump(int(min(200.0, max(0.0, end - time.monotonic()) * 1000)))
     except KeyboardInterrupt:
         pass
@@ -658,9 +664,19 @@ def cmd_stream(conn: Connection, args: argparse.Namespace) -> int:
     return 0 if count else 1
 
 
-def _list_item_class(s: st.Setting) -> Any:
-    import typing
+def _quiet_stdout() -> None:
+    """After a closed pipe on stdout: further output goes nowhere (as `cli` does)."""
+    import os
 
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
+
+
+def _list_item_class(s: st.Setting) -> Any:
     hints = typing.get_type_hints(s.cls)
     spec = _sim.FORMATS[s.cls]
     hint = hints[spec[1]]
@@ -680,7 +696,9 @@ def _enable(conn: Connection, set_id: int) -> None:
             continue
         if not capabilities.supports(conn.model, cls.SET, cls.DESCRIPTOR):
             continue
-        values: Dict[str, Any] = {"function": _function_value("write"), flag: 1}
+        hint = typing.get_type_hints(cls).get(flag)
+        boolean = hint is bool or bool in getattr(hint, "__args__", ())
+        values: Dict[str, Any] = {"function": _function_value("write"), flag: True if boolean else 1}
         for alt in selector:
             name, mapping = (alt, None) if isinstance(alt, str) else alt
             if name in cls._ATTRS:

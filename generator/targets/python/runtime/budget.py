@@ -13,7 +13,7 @@ generated `_settings.BANDWIDTH`, with its manual lines), the field sizes from th
 
 from __future__ import annotations
 
-from typing import Dict, List, NamedTuple, Optional, Sequence, Tuple
+from typing import List, Mapping, NamedTuple, Optional, Sequence, Tuple
 
 from . import _settings, _sim, registry
 from .codec import Field
@@ -119,7 +119,7 @@ def describe(streams: Sequence[Stream], baud: Optional[int], where: str = "") ->
     return lines
 
 
-def streams_for(device: str, formats: Dict[int, Entries], base_rates: Dict[int, float]) -> List[Stream]:
+def streams_for(device: str, formats: Mapping[int, Entries], base_rates: Mapping[int, float]) -> List[Stream]:
     """The streams of a set -> message format table (empty formats stream nothing)."""
     out = []
     for set_id in sorted(formats):

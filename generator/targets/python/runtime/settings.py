@@ -196,7 +196,7 @@ def read_all(device: Any, model: str, warn: Any = None) -> Dict[str, Any]:
 
 # ------------------------------------------------------------------------------------ YAML
 def _flow(value: Any) -> str:
-    import yaml
+    import yaml  # type: ignore[import-untyped, unused-ignore]
 
     text: str = yaml.safe_dump(value, default_flow_style=True, width=1 << 30, sort_keys=False).strip()
     if text.endswith("\n..."):
@@ -246,11 +246,11 @@ class LineList(list, _Lines):  # type: ignore[type-arg]
 def load_text(text: str, filename: str) -> Any:
     """The YAML document with line numbers (LineDict, LineList); raises FileError."""
     try:
-        import yaml
+        import yaml  # type: ignore[import-untyped, unused-ignore]
     except ImportError:
         raise FileError([f"{filename}: reading settings files needs PyYAML: pip install pyyaml"]) from None
 
-    class Loader(yaml.SafeLoader):
+    class Loader(yaml.SafeLoader):  # type: ignore[misc, unused-ignore]
         pass
 
     def mapping(loader: Any, node: Any) -> LineDict:
@@ -333,7 +333,9 @@ def validate(doc: Any, model: str, filename: str) -> List[Planned]:
         if s.keyed and not isinstance(value, list):
             errors.append(f"{where}: {name} is read per {', '.join(s.key_attrs)}: expected a list of entries")
             continue
-        entries, lines, seen = [], [], {}
+        entries: List[Dict[str, Any]] = []
+        lines: List[int] = []
+        seen: Dict[Tuple[Any, ...], int] = {}
         for i, entry in enumerate(items):
             eline = value.lines.get(i, line) if isinstance(value, LineList) else line
             if not isinstance(entry, dict):
