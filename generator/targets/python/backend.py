@@ -1230,7 +1230,7 @@ def _json_schema_type(m: _Protocol, q: dict) -> dict:
             "properties": {p["name"]: _json_schema_type(m, p) for p in members},
         }
     else:  # a union: its canonical JSON form (docs/conformance.md section 5)
-        one = {"type": "object"}
+        one = {"type": ["object", "null"]}
     count = q.get("count")
     if count is not None:
         arr: dict = {"type": "array", "items": one}

@@ -379,11 +379,11 @@ def validate(doc: Any, model: str, filename: str) -> List[Planned]:
 def _line_of(entry: Any, message: str, default: int) -> int:
     """The line of the parameter an encoder message names (`name.attr...: ...`)."""
     if isinstance(entry, LineDict):
-        head = message.split(":", 1)[0]
-        parts = head.replace("[", ".").split(".")
-        for p in parts[1:2]:
-            if p in entry.lines:
-                return entry.lines[p]
+        for token in message.replace(":", " ").split():
+            parts = token.replace("[", ".").split(".")
+            for p in parts[:2]:
+                if p in entry.lines:
+                    return entry.lines[p]
     return default
 
 
