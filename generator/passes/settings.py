@@ -7,8 +7,9 @@ A setting is a command layout with the write and read functions whose command is
 every key parameter is a parameter that the command's read sends (a layout has it, not optional,
 `read` among its functions); every key value is an integer that fits the parameter's type or, for
 an enum parameter, one of its members' names; `base_rates` is the model's data sets with a base
-rate (the `simulation` section's `base_rates`); every keyed setting (a read that sends a parameter
-besides the function selector) has its `keys` entry. Exported: `not_settings` as written and
+rate (the `simulation` section's `base_rates`). A keyed setting (a read that sends a parameter
+besides the function selector) without a `keys` entry is not read by `dump` (a file may still
+write it: its entries carry their keys). Exported: `not_settings` as written and
 `keys` with, per entry, `resolved`: device -> the list of key combinations (parameter -> integer),
 for each device whose layout has the key parameters.
 """
@@ -33,7 +34,6 @@ def run(ctx: Context) -> None:
         for f in s["fields"]:
             if f["role"] == "command":
                 commands[f["name"]] = f
-    fsel = (ctx.pf.data.get("function_selector") or {}).get("enum")
 
     def err(path: tuple, message: str, expected: str) -> None:
         ctx.err(sf, ("settings",) + path, message, expected)
@@ -53,7 +53,6 @@ def run(ctx: Context) -> None:
         excluded.add(entry["command"])
     rates = {r["device"]: [x["set"] for x in r["rates"]] for r in ((ctx.simulation or {}).get("base_rates") or [])}
     keys = []
-    covered: set[tuple[str, tuple[str, ...]]] = set()
     for i, entry in enumerate(spec.get("keys", [])):
         path = ("keys", i)
         variants = readable(entry["command"])
@@ -97,7 +96,6 @@ def run(ctx: Context) -> None:
                         )
                     )
                 resolved[dev] = [dict(zip(names, combo)) for combo in itertools.product(*lists)]
-            covered.add((entry["command"], names))
         if not resolved:
             err(
                 path + ("values",),
@@ -113,25 +111,6 @@ def run(ctx: Context) -> None:
                 "resolved": resolved,
             }
         )
-    # every keyed setting has its keys
-    for name, f in commands.items():
-        if name in excluded:
-            continue
-        for v in f["variants"]:
-            fns = v["functions"] or []
-            if "read" not in fns or "write" not in fns:
-                continue
-            sent = tuple(
-                q["name"]
-                for q in v["params"]
-                if q["type"].get("name") != fsel and not q["optional"] and "read" in (q["functions"] or [])
-            )
-            if sent and (name, sent) not in covered:
-                err(
-                    ("keys",),
-                    f"settings: {name} sends {', '.join(sent)} with read but has no keys entry",
-                    f"a keys entry for {name}",
-                )
     ctx.settings = {"not_settings": list(spec.get("not_settings", [])), "keys": keys}
 
 
