@@ -20,6 +20,7 @@ from .passes import (
     collect_types,
     field_layouts,
     irregular_lengths,
+    link,
     link_responses,
     lookup_order,
     protocol_file,
@@ -53,6 +54,7 @@ PASSES = (
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
     settings,  # the settings files' keyed reads and non-settings (device command line), checked
     capabilities,  # per device, the commands and data it supports (the descriptor lists)
+    link,  # getting through: idle/ping/resume commands, baud rates, settle time, bandwidth
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

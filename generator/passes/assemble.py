@@ -31,6 +31,7 @@ def run(ctx: Context) -> None:
         "simulation": ctx.simulation,
         "settings": ctx.settings,
         "capabilities": ctx.capabilities,
+        "link": ctx.link,
         "function_selector": p.get("function_selector"),
         "reserved_fields": ctx.reserved,
         "types": [ctx.types[n] for n in sorted(ctx.types)],

@@ -24,6 +24,7 @@ import textwrap
 
 from generator import columns, commands, model
 from generator.examples import example_context, session_example, session_example_context
+from generator.linkfacts import link_facts
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -87,6 +88,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "_settings",
     "command_api",
     "capabilities",
+    "_link",
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
@@ -677,6 +679,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
         files[f"{root}/{pkg}/capabilities.py"] = env.get_template("python/package/capabilities.py.j2").render(
             **ctx, capabilities=_capabilities(proto)
+        )
+        files[f"{root}/{pkg}/_link.py"] = env.get_template("python/package/_link.py.j2").render(
+            **ctx, link_facts=link_facts(proto)
         )
         files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
             **ctx, **_sim_context(m, sets)
@@ -1343,22 +1348,16 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
         },
     }
     return {
-        "settings_modules": sorted(modules) + (["types"] if False else []),
+        "settings_modules": sorted(modules),
         "settings_rows": rows,
         "data_sizes": {d: pyrepr(dict(sorted(v.items()))) for d, v in sizes.items()},
-        # the manuals' UART bandwidth calculation (the spec's link section): None without it
-        "bandwidth": pyrepr(_bandwidth(proto)),
-        # the main port's baud rates per model (the spec's link section; `auto` tries them)
-        "baud_rates": pyrepr({r["device"]: tuple(r["rates"]) for r in (proto.get("link") or {}).get("baud_rates", [])}),
+        # the manual lines of the UART bandwidth calculation (the spec's link section), for messages
+        "bandwidth_sources": pyrepr(_bandwidth_sources(proto)),
         "schema": json.dumps(schema, indent=2) + "\n",
     }
 
 
-def _bandwidth(proto: dict) -> tuple | None:
-    """(bits per UART word, bytes of packet overhead, bytes of field header, sources) of the spec's
-    `link: bandwidth` (the manuals' UART bandwidth calculation), or None when it gives none."""
-    bw = (proto.get("link") or {}).get("bandwidth")
-    if not bw:
-        return None
-    where = "; ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x)
-    return (bw["uart_word_bits"], bw["packet_overhead"], bw["field_overhead"], where)
+def _bandwidth_sources(proto: dict) -> str:
+    """The manual lines of the spec's `link: bandwidth` (its numbers are in `_link.py`)."""
+    bw = (proto.get("link") or {}).get("bandwidth") or {}
+    return ", ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x)

@@ -11,7 +11,7 @@ holds, ((count attribute, list attribute), ...) set from the lists, the key comb
 
 from __future__ import annotations
 
-from typing import Any, Dict, Optional, Tuple
+from typing import Any, Dict, Tuple
 
 from . import aiding, base, filter, gnss, threedm
 
@@ -1119,9 +1119,5 @@ DATA_SIZES: Dict[str, Dict[Tuple[int, int], int]] = {
     },
 }
 
-# The manuals' UART bandwidth calculation (spec `link: bandwidth`): (bits per UART word, bytes of
-# packet overhead, bytes of field header, the manual lines), or None when the spec gives none.
-BANDWIDTH: Optional[Tuple[int, int, int, str]] = None
-
-# The baud rates of each model's main port (spec `link: baud_rates`): device -> rates
-BAUD_RATES: Dict[str, Tuple[int, ...]] = {}
+# The manual lines of the UART bandwidth calculation (spec `link: bandwidth`; its numbers: _link.py)
+BANDWIDTH_SOURCES = "3dm-gx5-45-dcp.txt line 536, 3dm-cv7-ins-docs.txt line 4099"

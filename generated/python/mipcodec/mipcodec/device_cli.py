@@ -26,7 +26,7 @@ import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple
 
 from . import _session as _meta
-from . import _settings, _sim, budget, capabilities, registry
+from . import _link, _sim, budget, capabilities, registry
 from . import settings as st
 from ._protocol import PACKAGE
 from .codec import Field
@@ -532,7 +532,7 @@ def _follow_baud(conn: Connection, baud: Any) -> None:
     port = getattr(conn.device.transport, "_port", None)
     if port is None or not isinstance(baud, int):
         return
-    time.sleep(0.25)
+    time.sleep((_link.BAUD_SETTLE_MS or 0) / 1000.0)
     port.baudrate = baud
     conn.baud = baud
 
@@ -744,7 +744,7 @@ def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) 
 def _baud_rates() -> List[int]:
     """The rates to try: the default first, then the spec's rates of every model, highest first."""
     rates: List[int] = [DEFAULT_BAUD]
-    for values in _settings.BAUD_RATES.values():
+    for values in _link.BAUD_RATES.values():
         for r in sorted(values, reverse=True):
             if r not in rates:
                 rates.append(r)

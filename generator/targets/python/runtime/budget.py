@@ -7,15 +7,16 @@ bandwidth calculation, against the port's baud rate.
 per data set (one packet per sample): n bits per UART word, k bytes of packet overhead, S_f each
 field's size with its header, f_dr each field's rate (the set's base rate / its decimation) and
 f_mr the highest of them. n, k and the header size come from the spec's `link: bandwidth` (the
-generated `_settings.BANDWIDTH`, with its manual lines), the field sizes from the spec's layouts
-(`_settings.DATA_SIZES`: the largest size of a variable-length field).
+generated `_link.UART_WORD_BITS`, `PACKET_OVERHEAD`, `FIELD_OVERHEAD`; the manual lines in
+`_settings.BANDWIDTH_SOURCES`), the field sizes from the spec's layouts (`_settings.DATA_SIZES`:
+the largest size of a variable-length field).
 """
 
 from __future__ import annotations
 
 from typing import List, Mapping, NamedTuple, Optional, Sequence, Tuple
 
-from . import _settings, _sim, registry
+from . import _link, _settings, _sim, registry
 from .codec import Field
 
 Entries = Sequence[Tuple[int, int]]  # (descriptor, decimation)
@@ -32,8 +33,7 @@ class Stream(NamedTuple):
 
     @property
     def bytes_per_s(self) -> float:
-        bits = _settings.BANDWIDTH[0] if _settings.BANDWIDTH else 10
-        return self.bits_per_s / bits
+        return self.bits_per_s / (_link.UART_WORD_BITS or 1)
 
 
 class BudgetError(ValueError):
@@ -42,12 +42,12 @@ class BudgetError(ValueError):
 
 def available() -> bool:
     """Whether the spec gives the bandwidth calculation (the spec's link section)."""
-    return _settings.BANDWIDTH is not None
+    return None not in (_link.UART_WORD_BITS, _link.PACKET_OVERHEAD, _link.FIELD_OVERHEAD)
 
 
 def source() -> str:
     """The manual lines of the calculation, for messages."""
-    return _settings.BANDWIDTH[3] if _settings.BANDWIDTH else "no manual (the spec has no link bandwidth)"
+    return _settings.BANDWIDTH_SOURCES or "no manual (the spec has no link bandwidth)"
 
 
 def field_size(device: str, set_id: int, descriptor: int) -> Optional[int]:
@@ -56,16 +56,16 @@ def field_size(device: str, set_id: int, descriptor: int) -> Optional[int]:
     size = sizes.get((set_id, descriptor))
     if size is None and registry.SHARED_SET is not None:  # a shared field, valid in every data set
         size = sizes.get((int(registry.SHARED_SET), descriptor))
-    if size is None or _settings.BANDWIDTH is None:
+    if size is None or _link.FIELD_OVERHEAD is None:
         return None
-    return size + _settings.BANDWIDTH[2]
+    return size + _link.FIELD_OVERHEAD
 
 
 def stream(device: str, set_id: int, entries: Entries, base_hz: float) -> Stream:
     """What one data set's message format needs at the given base rate."""
-    if _settings.BANDWIDTH is None:
+    n, k = _link.UART_WORD_BITS, _link.PACKET_OVERHEAD
+    if n is None or k is None:
         raise BudgetError("the spec gives no UART bandwidth calculation (link: bandwidth)")
-    n, k, _, _ = _settings.BANDWIDTH
     fields = []
     for descriptor, decimation in entries:
         size = field_size(device, set_id, descriptor)
