@@ -25,8 +25,8 @@ import time
 import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple
 
-from . import _session as _meta
 from . import _link, _sim, budget, capabilities, registry
+from . import _session as _meta
 from . import settings as st
 from ._protocol import PACKAGE
 from .codec import Field
