@@ -115,7 +115,7 @@ def describe(streams: Sequence[Stream], baud: Optional[int], where: str = "") ->
         share = 100.0 * total / baud
         lines.append(f"total {total:.0f} bit/s of {baud} baud{where} ({share:.0f}%)")
     else:
-        lines.append(f"total {total:.0f} bit/s (no baud rate known{where})")
+        lines.append(f"total {total:.0f} bit/s (no baud rate known: --baud gives one)")
     return lines
 
 

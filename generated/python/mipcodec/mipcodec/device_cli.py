@@ -262,7 +262,7 @@ def link_baud(conn: Connection, option: Optional[int]) -> Tuple[Optional[int], s
             entry = st.read_entry(conn.device, s, {})
         except SessionError:
             continue
-        if isinstance(entry.get(param), int):
+        if isinstance(entry.get(param), int) and entry[param] > 0:  # 0: not set
             return int(entry[param]), f" (the device's {s.name})"
     return None, ""
 
