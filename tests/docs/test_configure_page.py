@@ -59,7 +59,7 @@ def _normal(text: str) -> str:
 def replay(page: str) -> tuple[str, list[tuple[str, str]]]:
     """The page with its console blocks as a run prints them, and (shown, got) of every excerpt."""
     sim = subprocess.Popen(
-        [sys.executable, "-m", "mipcodec.sim", "--listen", "tcp:127.0.0.1:0", "--device", "cv7_ins", "--speed", "10"],
+        [sys.executable, "-m", "mipcodec.sim", "--listen", "tcp:127.0.0.1:0", "--device", "cv7_ins"],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
