@@ -1287,15 +1287,28 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
             params = [q for q in v["params"] if q["type"].get("name") != fsel]
             written = [q for q in params if "write" in (q["functions"] or [])]
             counts = {q["count"]["param"]: q["name"] for q in written if (q.get("count") or {}).get("kind") == "param"}
-            held = [q for q in written if q["name"] not in counts]
             rparams = [q["name"] for q in rvariant["params"]]
             attrs = []
+            held_names: set[str] = set()
             for i, q in enumerate(written):
                 if q["name"] in counts:
                     continue
-                r = q["name"] if q["name"] in rparams else (rparams[i] if i < len(rparams) else q["name"])
+                # the reply's parameter of that name, else of that place when the lists match in length
+                # (data_stream_control: enable -> enabled); else none: not read back, not in a file
+                same = len(rparams) == len(written)
+                r = q["name"] if q["name"] in rparams else (rparams[i] if same else None)
+                if r is None:
+                    continue
                 attrs.append((py_attr(q["name"]), py_attr(r), q.get("units")))
+                held_names.add(q["name"])
             keyed = [q["name"] for q in params if not q["optional"] and "read" in (q["functions"] or [])]
+            held = [q for q in written if q["name"] in held_names]
+            # written but not read back (a reserved byte): sent as zero (an empty list)
+            fill = tuple(
+                (py_attr(q["name"]), [] if q.get("count") else 0)
+                for q in written
+                if q["name"] not in held_names and q["name"] not in counts
+            )
             cls = f"{sm['module']}.{names[(f['name'], dev)]}"
             rcls = f"{sm['module']}.{names[(rf['name'], rdev)]}"
             modules.add(sm["module"])
@@ -1320,6 +1333,7 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
                     tuple(attrs),
                     tuple((py_attr(c), py_attr(lst)) for c, lst in counts.items()),
                     tuple(tuple(sorted(k.items())) for k in keys),
+                    fill,
                 )
                 rows[d].append(f"({cls}, {rcls}, {pyrepr(row)})")
             obj = {

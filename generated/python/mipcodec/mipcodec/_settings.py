@@ -6,7 +6,7 @@ device the largest data size of every data field (without its header). Generated
 A setting row: (command class, read reply class, (command name, (set, descriptor), key attributes
 sent with read, ((attribute, reply attribute, units or None), ...) the attributes a file entry
 holds, ((count attribute, list attribute), ...) set from the lists, the key combinations read:
-((attribute, value), ...) each)).
+((attribute, value), ...) each, ((attribute, value), ...) written but not read back: sent as zero)).
 """
 
 from __future__ import annotations
@@ -20,32 +20,32 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
         (
             threedm.AccelBias_gx5_45,
             threedm.AccelBiasResponse,
-            ("accel_bias", (12, 55), (), (("bias", "bias", "g"),), (), ((),)),
+            ("accel_bias", (12, 55), (), (("bias", "bias", "g"),), (), ((),), ()),
         ),
         (
             threedm.GyroBias_gx5_45,
             threedm.GyroBiasResponse,
-            ("gyro_bias", (12, 56), (), (("bias", "bias", "rad/s"),), (), ((),)),
+            ("gyro_bias", (12, 56), (), (("bias", "bias", "rad/s"),), (), ((),), ()),
         ),
         (
             threedm.MagHardIronOffset_gx5_45,
             threedm.MagHardIronOffsetResponse,
-            ("mag_hard_iron_offset", (12, 58), (), (("offset", "offset", "gauss"),), (), ((),)),
+            ("mag_hard_iron_offset", (12, 58), (), (("offset", "offset", "gauss"),), (), ((),), ()),
         ),
         (
             threedm.MagSoftIronMatrix_gx5_45,
             threedm.MagSoftIronMatrixResponse,
-            ("mag_soft_iron_matrix", (12, 59), (), (("matrix", "matrix", None),), (), ((),)),
+            ("mag_soft_iron_matrix", (12, 59), (), (("matrix", "matrix", None),), (), ((),), ()),
         ),
         (
             threedm.ConingScullingEnable,
             threedm.ConingScullingEnableResponse,
-            ("coning_sculling_enable", (12, 62), (), (("enable", "enable", None),), (), ((),)),
+            ("coning_sculling_enable", (12, 62), (), (("enable", "enable", None),), (), ((),), ()),
         ),
         (
             threedm.UartBaudrate,
             threedm.UartBaudrateResponse,
-            ("uart_baudrate", (12, 64), (), (("baud", "baud", "bit/s"),), (), ((),)),
+            ("uart_baudrate", (12, 64), (), (("baud", "baud", "bit/s"),), (), ((),), ()),
         ),
         (
             threedm.AdvancedLowpassFilter,
@@ -68,6 +68,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("target_descriptor", 6),),
                     (("target_descriptor", 23),),
                 ),
+                (),
             ),
         ),
         (
@@ -85,6 +86,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -97,6 +99,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("descriptors", "descriptors", None),),
                 (("num_descriptors", "descriptors"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -109,6 +112,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("descriptors", "descriptors", None),),
                 (("num_descriptors", "descriptors"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -121,6 +125,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("descriptors", "descriptors", None),),
                 (("num_descriptors", "descriptors"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -133,6 +138,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("device_selector", "device_selector", None), ("enable", "enabled", None)),
                 (),
                 ((("device_selector", 1),), (("device_selector", 3),)),
+                (),
             ),
         ),
         (
@@ -145,6 +151,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("max_channels", "max_channels", None), ("settings", "settings", None)),
                 (("config_count", "settings"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -161,6 +168,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (("num_included_prns", "included_prns"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -173,12 +181,13 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("option", "option", None), ("flags", "flags", None)),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             filter.VehicleDynamicsMode,
             filter.VehicleDynamicsModeResponse,
-            ("vehicle_dynamics_mode", (13, 16), (), (("mode", "mode", None),), (), ((),)),
+            ("vehicle_dynamics_mode", (13, 16), (), (("mode", "mode", None),), (), ((),), ()),
         ),
         (
             filter.SensorToVehicleTransform,
@@ -190,62 +199,71 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("roll", "roll", "rad"), ("pitch", "pitch", "rad"), ("yaw", "yaw", "rad")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             filter.SensorToVehicleOffset,
             filter.SensorToVehicleOffsetResponse,
-            ("sensor_to_vehicle_offset", (13, 18), (), (("offset", "offset", "m"),), (), ((),)),
+            ("sensor_to_vehicle_offset", (13, 18), (), (("offset", "offset", "m"),), (), ((),), ()),
         ),
         (
             filter.AntennaOffset,
             filter.AntennaOffsetResponse,
-            ("antenna_offset", (13, 19), (), (("offset", "offset", "m"),), (), ((),)),
+            ("antenna_offset", (13, 19), (), (("offset", "offset", "m"),), (), ((),), ()),
         ),
         (
             filter.EstimationControl,
             filter.EstimationControlResponse,
-            ("estimation_control", (13, 20), (), (("flags", "flags", None),), (), ((),)),
+            ("estimation_control", (13, 20), (), (("flags", "flags", None),), (), ((),), ()),
         ),
         (
             filter.GnssSourceControl,
             filter.GnssSourceControlResponse,
-            ("gnss_source_control", (13, 21), (), (("source", "source", None),), (), ((),)),
+            ("gnss_source_control", (13, 21), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.HeadingUpdateControl,
             filter.HeadingUpdateControlResponse,
-            ("heading_update_control", (13, 24), (), (("source", "source", None),), (), ((),)),
+            ("heading_update_control", (13, 24), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.AutoInitControl,
             filter.AutoInitControlResponse,
-            ("auto_init_control", (13, 25), (), (("enable", "enable", None),), (), ((),)),
+            ("auto_init_control", (13, 25), (), (("enable", "enable", None),), (), ((),), ()),
         ),
         (
             filter.AccelNoise,
             filter.AccelNoiseResponse,
-            ("accel_noise", (13, 26), (), (("noise", "noise", "m/s^2"),), (), ((),)),
+            ("accel_noise", (13, 26), (), (("noise", "noise", "m/s^2"),), (), ((),), ()),
         ),
         (
             filter.GyroNoise,
             filter.GyroNoiseResponse,
-            ("gyro_noise", (13, 27), (), (("noise", "noise", "rad/s"),), (), ((),)),
+            ("gyro_noise", (13, 27), (), (("noise", "noise", "rad/s"),), (), ((),), ()),
         ),
         (
             filter.AccelBiasModel,
             filter.AccelBiasModelResponse,
-            ("accel_bias_model", (13, 28), (), (("beta", "beta", "1/s"), ("noise", "noise", "m/s^2")), (), ((),)),
+            ("accel_bias_model", (13, 28), (), (("beta", "beta", "1/s"), ("noise", "noise", "m/s^2")), (), ((),), ()),
         ),
         (
             filter.GyroBiasModel,
             filter.GyroBiasModelResponse,
-            ("gyro_bias_model", (13, 29), (), (("beta", "beta", "1/s"), ("noise", "noise", "rad/s")), (), ((),)),
+            ("gyro_bias_model", (13, 29), (), (("beta", "beta", "1/s"), ("noise", "noise", "rad/s")), (), ((),), ()),
         ),
         (
             filter.ZuptControl,
             filter.ZuptControlResponse,
-            ("zupt_control", (13, 30), (), (("enable", "enable", None), ("threshold", "threshold", "m/s")), (), ((),)),
+            (
+                "zupt_control",
+                (13, 30),
+                (),
+                (("enable", "enable", None), ("threshold", "threshold", "m/s")),
+                (),
+                ((),),
+                (),
+            ),
         ),
         (
             filter.ZeroAngularRateUpdateControl,
@@ -257,32 +275,33 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("enable", "enable", None), ("threshold", "threshold", "rad/s")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             filter.GravityNoiseStdDev,
             filter.GravityNoiseStdDevResponse,
-            ("gravity_noise_std_dev", (13, 40), (), (("noise", "noise", "g"),), (), ((),)),
+            ("gravity_noise_std_dev", (13, 40), (), (("noise", "noise", "g"),), (), ((),), ()),
         ),
         (
             filter.PressureAltitudeNoiseStdDev,
             filter.PressureAltitudeNoiseStdDevResponse,
-            ("pressure_altitude_noise_std_dev", (13, 41), (), (("noise", "noise", "m"),), (), ((),)),
+            ("pressure_altitude_noise_std_dev", (13, 41), (), (("noise", "noise", "m"),), (), ((),), ()),
         ),
         (
             filter.HardIronOffsetNoise,
             filter.HardIronOffsetNoiseResponse,
-            ("hard_iron_offset_noise", (13, 43), (), (("noise", "noise", "gauss"),), (), ((),)),
+            ("hard_iron_offset_noise", (13, 43), (), (("noise", "noise", "gauss"),), (), ((),), ()),
         ),
         (
             filter.SoftIronMatrixNoise,
             filter.SoftIronMatrixNoiseResponse,
-            ("soft_iron_matrix_noise", (13, 44), (), (("noise", "noise", None),), (), ((),)),
+            ("soft_iron_matrix_noise", (13, 44), (), (("noise", "noise", None),), (), ((),), ()),
         ),
         (
             filter.MagNoiseStdDev,
             filter.MagNoiseStdDevResponse,
-            ("mag_noise_std_dev", (13, 66), (), (("noise", "noise", "gauss"),), (), ((),)),
+            ("mag_noise_std_dev", (13, 66), (), (("noise", "noise", "gauss"),), (), ((),), ()),
         ),
         (
             filter.DeclinationSource,
@@ -294,6 +313,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("source", "source", None), ("declination", "declination", "rad")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -314,6 +334,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -334,6 +355,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -352,17 +374,18 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             filter.AltitudeAidingControl,
             filter.AltitudeAidingControlResponse,
-            ("altitude_aiding_control", (13, 71), (), (("source", "source", None),), (), ((),)),
+            ("altitude_aiding_control", (13, 71), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.PitchRollAidingControl,
             filter.PitchRollAidingControlResponse,
-            ("pitch_roll_aiding_control", (13, 75), (), (("source", "source", None),), (), ((),)),
+            ("pitch_roll_aiding_control", (13, 75), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.InclinationSource,
@@ -374,6 +397,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("source", "source", None), ("inclination", "inclination", "rad")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -386,6 +410,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("source", "source", None), ("magnitude", "magnitude", "gauss")),
                 (),
                 ((),),
+                (),
             ),
         ),
     ),
@@ -400,6 +425,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("port", "port", None), ("baud", "baud", "bit/s")),
                 (),
                 ((("port", 17),), (("port", 18),), (("port", 19),)),
+                (),
             ),
         ),
         (
@@ -425,6 +451,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("instance", 11),),
                     (("instance", 12),),
                 ),
+                (),
             ),
         ),
         (
@@ -450,6 +477,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("instance", 11),),
                     (("instance", 12),),
                 ),
+                (),
             ),
         ),
         (
@@ -480,6 +508,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("instance", 11),),
                     (("instance", 12),),
                 ),
+                (),
             ),
         ),
         (
@@ -492,42 +521,43 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("roll", "roll", "rad"), ("pitch", "pitch", "rad"), ("yaw", "yaw", "rad")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             threedm.SensorToVehicleQuaternion,
             threedm.SensorToVehicleQuaternionResponse,
-            ("sensor_to_vehicle_quaternion", (12, 50), (), (("q", "q", None),), (), ((),)),
+            ("sensor_to_vehicle_quaternion", (12, 50), (), (("q", "q", None),), (), ((),), ()),
         ),
         (
             threedm.SensorToVehicleDcm,
             threedm.SensorToVehicleDcmResponse,
-            ("sensor_to_vehicle_dcm", (12, 51), (), (("dcm", "dcm", None),), (), ((),)),
+            ("sensor_to_vehicle_dcm", (12, 51), (), (("dcm", "dcm", None),), (), ((),), ()),
         ),
         (
             threedm.AccelBias_cv7_ins,
             threedm.AccelBiasResponse,
-            ("accel_bias", (12, 55), (), (("bias", "bias", "g"),), (), ((),)),
+            ("accel_bias", (12, 55), (), (("bias", "bias", "g"),), (), ((),), ()),
         ),
         (
             threedm.GyroBias_cv7_ins,
             threedm.GyroBiasResponse,
-            ("gyro_bias", (12, 56), (), (("bias", "bias", "rad/s"),), (), ((),)),
+            ("gyro_bias", (12, 56), (), (("bias", "bias", "rad/s"),), (), ((),), ()),
         ),
         (
             threedm.MagHardIronOffset_cv7_ins,
             threedm.MagHardIronOffsetResponse,
-            ("mag_hard_iron_offset", (12, 58), (), (("offset", "offset", "gauss"),), (), ((),)),
+            ("mag_hard_iron_offset", (12, 58), (), (("offset", "offset", "gauss"),), (), ((),), ()),
         ),
         (
             threedm.MagSoftIronMatrix_cv7_ins,
             threedm.MagSoftIronMatrixResponse,
-            ("mag_soft_iron_matrix", (12, 59), (), (("matrix", "matrix", None),), (), ((),)),
+            ("mag_soft_iron_matrix", (12, 59), (), (("matrix", "matrix", None),), (), ((),), ()),
         ),
         (
             threedm.UartBaudrate,
             threedm.UartBaudrateResponse,
-            ("uart_baudrate", (12, 64), (), (("baud", "baud", "bit/s"),), (), ((),)),
+            ("uart_baudrate", (12, 64), (), (("baud", "baud", "bit/s"),), (), ((),), ()),
         ),
         (
             threedm.GpioConfig,
@@ -544,6 +574,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((("pin", 1),), (("pin", 2),), (("pin", 3),), (("pin", 4),)),
+                (),
             ),
         ),
         (
@@ -556,6 +587,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("mode", "mode", None), ("scaling", "scaling", "pulses/m"), ("uncertainty", "uncertainty", "m/m")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -579,6 +611,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("target_descriptor", 6),),
                     (("target_descriptor", 23),),
                 ),
+                (),
             ),
         ),
         (
@@ -596,6 +629,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -608,6 +642,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("sensor", "sensor", None), ("setting", "setting", None)),
                 (),
                 ((("sensor", 1),), (("sensor", 2),), (("sensor", 3),), (("sensor", 4),)),
+                (),
             ),
         ),
         (
@@ -631,6 +666,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("desc_set", 128), ("field_desc", 6)),
                     (("desc_set", 128), ("field_desc", 23)),
                 ),
+                (),
             ),
         ),
         (
@@ -643,6 +679,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("format_entries", "format_entries", None),),
                 (("count", "format_entries"),),
                 ((),),
+                (),
             ),
         ),
         (
@@ -661,6 +698,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("desc_set", 146),),
                     (("desc_set", 160),),
                 ),
+                (),
             ),
         ),
         (
@@ -679,6 +717,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("desc_set", 146),),
                     (("desc_set", 160),),
                 ),
+                (),
             ),
         ),
         (
@@ -695,42 +734,43 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (("num_included_prns", "included_prns"),),
                 ((),),
+                (),
             ),
         ),
         (
             threedm.PpsSource,
             threedm.PpsSourceResponse,
-            ("pps_source", (12, 40), (), (("source", "source", None),), (), ((),)),
+            ("pps_source", (12, 40), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.AntennaOffset,
             filter.AntennaOffsetResponse,
-            ("antenna_offset", (13, 19), (), (("offset", "offset", "m"),), (), ((),)),
+            ("antenna_offset", (13, 19), (), (("offset", "offset", "m"),), (), ((),), ()),
         ),
         (
             filter.GnssSourceControl,
             filter.GnssSourceControlResponse,
-            ("gnss_source_control", (13, 21), (), (("source", "source", None),), (), ((),)),
+            ("gnss_source_control", (13, 21), (), (("source", "source", None),), (), ((),), ()),
         ),
         (
             filter.AccelNoise,
             filter.AccelNoiseResponse,
-            ("accel_noise", (13, 26), (), (("noise", "noise", "m/s^2"),), (), ((),)),
+            ("accel_noise", (13, 26), (), (("noise", "noise", "m/s^2"),), (), ((),), ()),
         ),
         (
             filter.GyroNoise,
             filter.GyroNoiseResponse,
-            ("gyro_noise", (13, 27), (), (("noise", "noise", "rad/s"),), (), ((),)),
+            ("gyro_noise", (13, 27), (), (("noise", "noise", "rad/s"),), (), ((),), ()),
         ),
         (
             filter.AccelBiasModel,
             filter.AccelBiasModelResponse,
-            ("accel_bias_model", (13, 28), (), (("beta", "beta", "1/s"), ("noise", "noise", "m/s^2")), (), ((),)),
+            ("accel_bias_model", (13, 28), (), (("beta", "beta", "1/s"), ("noise", "noise", "m/s^2")), (), ((),), ()),
         ),
         (
             filter.GyroBiasModel,
             filter.GyroBiasModelResponse,
-            ("gyro_bias_model", (13, 29), (), (("beta", "beta", "1/s"), ("noise", "noise", "rad/s")), (), ((),)),
+            ("gyro_bias_model", (13, 29), (), (("beta", "beta", "1/s"), ("noise", "noise", "rad/s")), (), ((),), ()),
         ),
         (
             filter.ZeroAngularRateUpdateControl,
@@ -742,12 +782,13 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("enable", "enable", None), ("threshold", "threshold", "rad/s")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
             filter.GravityNoiseStdDev,
             filter.GravityNoiseStdDevResponse,
-            ("gravity_noise_std_dev", (13, 40), (), (("noise", "noise", "g"),), (), ((),)),
+            ("gravity_noise_std_dev", (13, 40), (), (("noise", "noise", "g"),), (), ((),), ()),
         ),
         (
             filter.DeclinationSource,
@@ -759,6 +800,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("source", "source", None), ("declination", "declination", "rad")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -781,6 +823,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                     (("source", 7),),
                     (("source", 8),),
                 ),
+                (),
             ),
         ),
         (
@@ -803,6 +846,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -815,6 +859,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("level", "level", None), ("time_limit", "time_limit", "ms")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -827,6 +872,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("receiver_id", "receiver_id", None), ("antenna_offset", "antenna_offset", "m")),
                 (),
                 ((("receiver_id", 1),), (("receiver_id", 2),)),
+                (),
             ),
         ),
         (
@@ -843,6 +889,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -855,6 +902,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("ref_point_sel", "ref_point_sel", None), ("lever_arm_offset", "lever_arm_offset", "m")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -867,12 +915,13 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("source", "source", None), ("lever_arm_offset", "lever_arm_offset", "m")),
                 (),
                 ((("source", 1),),),
+                (),
             ),
         ),
         (
             filter.WheeledVehicleConstraintControl,
             filter.WheeledVehicleConstraintControlResponse,
-            ("wheeled_vehicle_constraint_control", (13, 99), (), (("enable", "enable", None),), (), ((),)),
+            ("wheeled_vehicle_constraint_control", (13, 99), (), (("enable", "enable", None),), (), ((),), ()),
         ),
         (
             filter.GnssAntennaCalibrationControl,
@@ -884,6 +933,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 (("enable", "enable", None), ("max_offset", "max_offset", "m")),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -902,6 +952,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -923,6 +974,7 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((),),
+                (),
             ),
         ),
         (
@@ -941,12 +993,13 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 ),
                 (),
                 ((("frame_id", 1),), (("frame_id", 2),), (("frame_id", 3),), (("frame_id", 4),)),
+                (),
             ),
         ),
         (
             aiding.EchoControl,
             aiding.EchoControlResponse,
-            ("echo_control", (19, 31), (), (("mode", "mode", None),), (), ((),)),
+            ("echo_control", (19, 31), (), (("mode", "mode", None),), (), ((),), ()),
         ),
     ),
 }

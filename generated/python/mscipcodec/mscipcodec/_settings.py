@@ -6,7 +6,7 @@ device the largest data size of every data field (without its header). Generated
 A setting row: (command class, read reply class, (command name, (set, descriptor), key attributes
 sent with read, ((attribute, reply attribute, units or None), ...) the attributes a file entry
 holds, ((count attribute, list attribute), ...) set from the lists, the key combinations read:
-((attribute, value), ...) each)).
+((attribute, value), ...) each, ((attribute, value), ...) written but not read back: sent as zero)).
 """
 
 from __future__ import annotations
@@ -20,52 +20,52 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
         (
             imu_config.UartBaudRate,
             imu_config.UartBaudRateResponse,
-            ("uart_baud_rate", (2, 1), (), (("baud_rate", "baud_rate", "baud"),), (), ((),)),
+            ("uart_baud_rate", (2, 1), (), (("baud_rate", "baud_rate", "baud"),), (), ((),), ()),
         ),
         (
             imu_config.Filter,
             imu_config.FilterResponse,
-            ("filter", (2, 3), (), (("bandwidth", "bandwidth", None),), (), ((),)),
+            ("filter", (2, 3), (), (("bandwidth", "bandwidth", None),), (), ((),), ()),
         ),
         (
             imu_config.SampleRate,
             imu_config.SampleRateResponse,
-            ("sample_rate", (2, 4), (), (("decimation", "decimation", None),), (), ((),)),
+            ("sample_rate", (2, 4), (), (("decimation", "decimation", None),), (), ((),), ()),
         ),
         (
             imu_config.SelectSensors,
             imu_config.SelectSensorsResponse,
-            ("select_sensors", (2, 5), (), (("reserved", "sensors", None), ("sensors", "sensors", None)), (), ((),)),
+            ("select_sensors", (2, 5), (), (("sensors", "sensors", None),), (), ((),), (("reserved", 0),)),
         ),
         (
             imu_config.AccelRange,
             imu_config.AccelRangeResponse,
-            ("accel_range", (2, 7), (), (("range", "range", None),), (), ((),)),
+            ("accel_range", (2, 7), (), (("range", "range", None),), (), ((),), ()),
         ),
         (
             imu_config.GyroRange,
             imu_config.GyroRangeResponse,
-            ("gyro_range", (2, 8), (), (("range", "range", None),), (), ((),)),
+            ("gyro_range", (2, 8), (), (("range", "range", None),), (), ((),), ()),
         ),
         (
             imu_config.DataOnOff,
             imu_config.DataOnOffResponse,
-            ("data_on_off", (2, 10), (), (("control", "control", None),), (), ((),)),
+            ("data_on_off", (2, 10), (), (("control", "control", None),), (), ((),), ()),
         ),
         (
             imu_config.XtrigOnOff,
             imu_config.XtrigOnOffResponse,
-            ("xtrig_on_off", (2, 11), (), (("control", "control", None),), (), ((),)),
+            ("xtrig_on_off", (2, 11), (), (("control", "control", None),), (), ((),), ()),
         ),
         (
             imu_config.SelectSensorsRevB,
             imu_config.SelectSensorsRevBResponse,
-            ("select_sensors_rev_b", (2, 12), (), (("sensors", "sensors", None),), (), ((),)),
+            ("select_sensors_rev_b", (2, 12), (), (("sensors", "sensors", None),), (), ((),), ()),
         ),
         (
             imu_config.AuxAccelRange,
             imu_config.AuxAccelRangeResponse,
-            ("aux_accel_range", (2, 13), (), (("range", "range", None),), (), ((),)),
+            ("aux_accel_range", (2, 13), (), (("range", "range", None),), (), ((),), ()),
         ),
     ),
 }

@@ -92,7 +92,10 @@ def format_entries(command: Field) -> Optional[Tuple[int, List[Tuple[int, int]]]
     items = getattr(command, list_attr, None) or []
     if set_id is None:
         return None
-    return int(set_id), [(int(getattr(x, desc_attr)), int(getattr(x, dec_attr))) for x in items]
+    # a list of bare descriptors (no member names): decimation 1 (a protocol-wide rate, MS-CIP)
+    return int(set_id), [
+        (int(getattr(x, desc_attr) if desc_attr else x), int(getattr(x, dec_attr)) if dec_attr else 1) for x in items
+    ]
 
 
 def check(streams: Sequence[Stream], baud: int) -> Tuple[float, bool]:

@@ -35,6 +35,7 @@ class Setting(NamedTuple):
     attrs: Tuple[Tuple[str, str, Optional[str]], ...]  # (attribute, reply attribute, units)
     counts: Tuple[Tuple[str, str], ...]  # (count attribute, list attribute)
     keys: Tuple[Tuple[Tuple[str, int], ...], ...]  # the key combinations read by dump
+    fill: Tuple[Tuple[str, Any], ...]  # written but not read back (a reserved byte): these values
 
     @property
     def keyed(self) -> bool:
@@ -124,6 +125,8 @@ def command_of(setting: Setting, entry: Dict[str, Any], function: int = WRITE) -
                 raise ValueError(f"{setting.name}.{attr}: {e}") from None
         values[attr] = v
     if function == WRITE:
+        for attr, v in setting.fill:
+            values[attr] = v
         for count, lst in setting.counts:
             items = values.get(lst)
             values[count] = len(items) if isinstance(items, list) else 0
