@@ -742,13 +742,10 @@ def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) 
 
 
 def _baud_rates() -> List[int]:
-    """The rates to try: the default first, then the spec's rates of every model, highest first."""
-    rates: List[int] = [DEFAULT_BAUD]
-    for values in _link.BAUD_RATES.values():
-        for r in sorted(values, reverse=True):
-            if r not in rates:
-                rates.append(r)
-    return rates
+    """The rates to try: the default first, then every rate the spec lists for a model's main
+    port (`_link.BAUD_RATES`), highest first."""
+    others = {r for values in _link.BAUD_RATES.values() for r in values} - {DEFAULT_BAUD}
+    return [DEFAULT_BAUD, *sorted(others, reverse=True)]
 
 
 # ------------------------------------------------------------------------------------ main
