@@ -459,3 +459,12 @@ def test_the_console_script_is_declared() -> None:
     text = (PACKAGE_DIR / "pyproject.toml").read_text()
     assert 'mipcodec-device = "mipcodec.device_cli:main"' in text
     assert '"settings.schema.json"' in text
+
+
+def test_diff_exits_2_when_the_device_does_not_answer(tmp_path: Path) -> None:
+    path = tmp_path / "bias.yaml"
+    path.write_text("accel_bias:\n  bias: [0.0, 0.0, 0.0]\n")
+    with Sim("gx5_45", "pty", "--drop", "accel_bias") as sim:
+        run = cli(sim.address, "settings", "diff", str(path), "--timeout-ms", "300")
+        assert run.returncode == 2, run.stderr
+        assert "cannot read the device: accel_bias: no reply before the timeout" in run.stderr

@@ -539,7 +539,10 @@ def _follow_baud(conn: Connection, baud: Any) -> None:
 
 def cmd_diff(conn: Connection, args: argparse.Namespace) -> int:
     planned = _load(args.file, conn.model)
-    changes = st.differences(conn.device, planned)
+    try:
+        changes = st.differences(conn.device, planned)
+    except SessionError as e:  # trouble, not a difference (exit 2, as diff(1))
+        raise Trouble(f"cannot read the device: {e}") from None
     for c in changes:
         what = f"{c.setting.name}" + (f" ({c.key})" if c.key else "")
         for attr, v in c.file.items():
