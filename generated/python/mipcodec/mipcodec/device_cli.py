@@ -529,11 +529,16 @@ def cmd_apply(conn: Connection, args: argparse.Namespace) -> int:
 
 def _follow_baud(conn: Connection, baud: Any) -> None:
     """After a baud rate write on a serial port: wait the settle time, then use the new rate."""
-    port = getattr(conn.device.transport, "_port", None)
-    if port is None or not isinstance(baud, int):
+    transport = conn.device.transport
+    if not isinstance(baud, int):
         return
     time.sleep((_link.BAUD_SETTLE_MS or 0) / 1000.0)
-    port.baudrate = baud
+    if isinstance(getattr(type(transport), "baudrate", None), property):
+        transport.baudrate = baud  # the transport's own setter
+    elif getattr(transport, "_port", None) is not None:
+        transport._port.baudrate = baud  # pyserial's port
+    else:
+        return
     conn.baud = baud
 
 
