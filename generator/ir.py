@@ -29,6 +29,7 @@ from .passes import (
     sample_rule,
     session_rule,
     sets,
+    settings,
     simulation,
     size_limits,
     value_paths,
@@ -51,6 +52,7 @@ PASSES = (
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
+    settings,  # the settings files' keyed reads and non-settings (device command line), checked
     capabilities,  # per device, the commands and data it supports (the descriptor lists)
     link,  # getting through: idle/ping/resume commands, baud rates, settle time, bandwidth
     field_layouts,  # each shared field layout once, with its users

@@ -29,6 +29,7 @@ def run(ctx: Context) -> None:
         "samples": ctx.samples,
         "session": ctx.session,
         "simulation": ctx.simulation,
+        "settings": ctx.settings,
         "capabilities": ctx.capabilities,
         "link": ctx.link,
         "function_selector": p.get("function_selector"),

@@ -342,6 +342,7 @@ def test_adding_one_descriptor_changes_only_its_files_and_indexes(tmp_path):
         "typed_cases",
         "spec.rs",
         "_sim",
+        "_settings",  # the device command line's tables: the data fields' sizes (Python)
         "capabilities",  # the per-device tables of what each model supports (Python)
         "devices.hpp",  # the same tables in C++ (C and Rust hold them in dispatch)
     )

@@ -19,6 +19,7 @@ templates/python/layout_macros.j2.
 
 from __future__ import annotations
 
+import json
 import textwrap
 
 from generator import columns, commands, model, simulation
@@ -60,6 +61,9 @@ RUNTIME_FILES = [
     "sim_world.py",
     "transport.py",
     "tools.py",
+    "budget.py",
+    "settings.py",
+    "device_cli.py",
     "_speedups.c",
     "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]
@@ -81,6 +85,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "tests",
     "_session",
     "_sim",
+    "_settings",
     "command_api",
     "capabilities",
     "_link",
@@ -657,6 +662,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
             **ctx, **_sim_context(m, sets)
         )
+        settings = _settings_context(m, sets)
+        files[f"{root}/{pkg}/_settings.py"] = env.get_template("python/package/_settings.py.j2").render(
+            **ctx, **settings
+        )
+        files[f"{root}/{pkg}/settings.schema.json"] = settings["schema"]
         files[f"{root}/{pkg}/_columns.py"] = env.get_template("python/package/_columns.py.j2").render(
             **ctx, **_columns_context(proto)
         )
@@ -1061,3 +1071,176 @@ def public_name(protocol: dict, kind: str, *path) -> str:
     if kind == "set":
         return f"{protocol['package']}.{set_module(path[0])}"
     return f"{protocol['package']}.{path[0]['name']}.{const_name(path[1]['name'])}"
+
+
+# --------------------------------------------------------------------------- settings files
+def _json_schema_type(m: _Protocol, q: dict) -> dict:
+    """The JSON Schema of one parameter's value in a settings file (runtime settings.py)."""
+    t = q["type"]
+    kind = t["kind"]
+    if kind == "primitive":
+        size, k, signed = PRIMITIVES[t["name"]]
+        if k == "int":
+            lo, hi = (-(1 << (size * 8 - 1)), (1 << (size * 8 - 1)) - 1) if signed else (0, (1 << (size * 8)) - 1)
+            one: dict = {"type": "integer", "minimum": lo, "maximum": hi}
+        elif k == "float":
+            one = {"type": "number"}
+        elif k == "bool":
+            one = {"type": "boolean"}
+        else:
+            one = {"type": "string", "maxLength": 1}
+    elif kind == "enum":
+        names = [v["name"] for v in m.types[t["name"]]["values"]]
+        one = {"anyOf": [{"enum": names}, {"type": "integer", "minimum": 0}]}
+    elif kind == "bitfield":
+        one = {"type": "integer", "minimum": 0}
+    elif kind == "string":
+        one = {"type": "string", "maxLength": t.get("length", 0)}
+    elif kind == "struct":
+        members = [p for p in m.types[t["name"]]["params"]]
+        one = {
+            "type": "object",
+            "additionalProperties": False,
+            "properties": {p["name"]: _json_schema_type(m, p) for p in members},
+        }
+    else:  # a union: its canonical JSON form (docs/conformance.md section 5)
+        one = {"type": ["object", "null"]}
+    count = q.get("count")
+    if count is not None:
+        arr: dict = {"type": "array", "items": one}
+        if count.get("kind") == "fixed":
+            arr["minItems"] = arr["maxItems"] = count["value"]
+        elif q.get("max_count"):
+            arr["maxItems"] = q["max_count"]
+        one = arr
+    desc = q.get("description") or ""
+    if q.get("units"):
+        desc = f"{desc} [{q['units']}]".strip()
+    return {**one, "description": desc} if desc else one
+
+
+def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
+    """What _settings.py.j2 and settings.schema.json hold: per device its settings (command name,
+    class, response class, the attributes a file entry holds with their units, the count
+    attributes set from lists, the key combinations read), per device the largest size of every
+    data field with its header (the link budget, runtime budget.py), and the file's JSON Schema."""
+    proto = m.p
+    spec = proto.get("settings") or {"not_settings": [], "keys": []}
+    excluded = {e["command"] for e in spec["not_settings"]}
+    fsel = m.function_enum
+    rows: dict[str, list[str]] = {d["id"]: [] for d in proto["devices"]}
+    sizes: dict[str, dict] = {d["id"]: {} for d in proto["devices"]}
+    props: dict[str, list[dict]] = {}
+    modules = set()
+    for sm in sets:
+        s = sm["set"]
+        names = _layout_classes(s["fields"])
+        by_id = {f["id"]: f for f in s["fields"]}
+        for f, v, dev in model.layouts_of(s["fields"]):
+            if s["kind"] == "data" and f["role"] == "data":
+                for d in v["devices"]:
+                    sizes[d][(s["id"], f["id"])] = v["size"]["max"]
+                continue
+            fns = v["functions"] or []
+            if f["role"] != "command" or f["name"] in excluded or "read" not in fns or "write" not in fns:
+                continue
+            reply = next((r for r in v["responses"] if (r.get("when") or {}).get("function") == "read"), None)
+            if reply is None:
+                continue
+            rf = by_id[reply["id"]]
+            rvariant, rdev = next(
+                (rv, (rv["device"] if len(rf["variants"]) > 1 else None))
+                for rv in rf["variants"]
+                if set(rv["devices"]) & set(v["devices"])
+            )
+            params = [q for q in v["params"] if q["type"].get("name") != fsel]
+            written = [q for q in params if "write" in (q["functions"] or [])]
+            counts = {q["count"]["param"]: q["name"] for q in written if (q.get("count") or {}).get("kind") == "param"}
+            rparams = [q["name"] for q in rvariant["params"]]
+            attrs = []
+            held_names: set[str] = set()
+            for i, q in enumerate(written):
+                if q["name"] in counts:
+                    continue
+                # the reply's parameter of that name, else of that place when the lists match in length
+                # (data_stream_control: enable -> enabled); else none: not read back, not in a file
+                same = len(rparams) == len(written)
+                r = q["name"] if q["name"] in rparams else (rparams[i] if same else None)
+                if r is None:
+                    continue
+                attrs.append((py_attr(q["name"]), py_attr(r), q.get("units")))
+                held_names.add(q["name"])
+            keyed = [q["name"] for q in params if not q["optional"] and "read" in (q["functions"] or [])]
+            held = [q for q in written if q["name"] in held_names]
+            # written but not read back (a reserved byte): sent as zero (an empty list)
+            fill = tuple(
+                (py_attr(q["name"]), [] if q.get("count") else 0)
+                for q in written
+                if q["name"] not in held_names and q["name"] not in counts
+            )
+            cls = f"{sm['module']}.{names[(f['name'], dev)]}"
+            rcls = f"{sm['module']}.{names[(rf['name'], rdev)]}"
+            modules.add(sm["module"])
+            for d in v["devices"]:
+                keys: list[dict] = [{}]
+                if keyed:
+                    entry = next(
+                        (
+                            k
+                            for k in spec["keys"]
+                            if k["command"] == f["name"] and set(k["values"]) == set(keyed) and d in k["resolved"]
+                        ),
+                        None,
+                    )
+                    keys = (
+                        [{py_attr(n): x for n, x in combo.items()} for combo in entry["resolved"][d]] if entry else []
+                    )
+                row = (
+                    f["name"],
+                    (s["id"], f["id"]),
+                    tuple(py_attr(n) for n in keyed),
+                    tuple(attrs),
+                    tuple((py_attr(c), py_attr(lst)) for c, lst in counts.items()),
+                    tuple(tuple(sorted(k.items())) for k in keys),
+                    fill,
+                )
+                rows[d].append(f"({cls}, {rcls}, {pyrepr(row)})")
+            obj = {
+                "type": "object",
+                "additionalProperties": False,
+                "properties": {q["name"]: _json_schema_type(m, q) for q in held},
+                "required": [q["name"] for q in held if q["name"] in keyed],
+            }
+            if not obj["required"]:
+                del obj["required"]
+            one = {"type": "array", "items": obj} if keyed else obj
+            title = f"{f['title']} (0x{s['id']:02X},0x{f['id']:02X}); {', '.join(v['devices'])}"
+            props.setdefault(f["name"], []).append({**one, "description": title})
+    schema = {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": f"{m.package}-settings.schema.json",
+        "title": f"{proto['title']} settings file ({m.package}-device settings dump|apply|diff)",
+        "description": "Keyed by command name; each value the parameters of its write (enum members by name, "
+        "numbers in the units of the description); a setting read per key parameter is a list of entries. "
+        "Generated from the spec: do not edit.",
+        "type": "object",
+        "additionalProperties": False,
+        "properties": {
+            "device": {"type": "string", "description": "The model the file was dumped from (informative)."},
+            **{name: (alts[0] if len(alts) == 1 else {"anyOf": alts}) for name, alts in sorted(props.items())},
+        },
+    }
+    return {
+        "settings_modules": sorted(modules),
+        "settings_rows": rows,
+        "data_sizes": {d: pyrepr(dict(sorted(v.items()))) for d, v in sizes.items()},
+        # the manual lines of the UART bandwidth calculation (the spec's link section), for messages
+        "bandwidth_sources": pyrepr(_bandwidth_sources(proto)),
+        "schema": json.dumps(schema, indent=2) + "\n",
+    }
+
+
+def _bandwidth_sources(proto: dict) -> str:
+    """The manual lines of the spec's `link: bandwidth` (its numbers are in `_link.py`)."""
+    bw = (proto.get("link") or {}).get("bandwidth") or {}
+    return ", ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x)

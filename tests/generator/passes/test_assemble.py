@@ -35,6 +35,7 @@ def test_the_protocol_entry_has_the_documented_keys_and_no_notes(tmp_path):
         "samples",
         "session",
         "simulation",
+        "settings",
         "capabilities",
         "link",
         "function_selector",

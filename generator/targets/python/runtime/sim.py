@@ -916,6 +916,9 @@ class _Link:
             except OSError as e:
                 if e.errno == errno.EIO:  # a pty whose host closed it: keep the bytes for the next
                     return
+                if self.sock is not None and e.errno in (errno.EPIPE, errno.ECONNRESET):
+                    self.backlog.clear()  # a TCP host that has gone (read() reports it): serve the next
+                    return
                 raise
             del self.backlog[:n]
 
