@@ -162,6 +162,12 @@ size_t mipc_session_pending(const mipc_session_t *session) {
     return session->count;
 }
 
+void mipc_session_forget(mipc_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
+}
+
 /* ------------------------------------------------------------------ start */
 static void result_init(mipc_result_t *r, mipc_result_kind_t kind, const mipc_command_facts_t *facts,
                         uintptr_t tag) {

@@ -162,6 +162,12 @@ size_t mscipc_session_pending(const mscipc_session_t *session) {
     return session->count;
 }
 
+void mscipc_session_forget(mscipc_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
+}
+
 /* ------------------------------------------------------------------ start */
 static void result_init(mscipc_result_t *r, mscipc_result_kind_t kind, const mscipc_command_facts_t *facts,
                         uintptr_t tag) {

@@ -189,6 +189,9 @@ void mipc_session_close(mipc_session_t *session, uint64_t now);
 bool mipc_session_next_deadline(const mipc_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t mipc_session_pending(const mipc_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void mipc_session_forget(mipc_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */

@@ -190,6 +190,9 @@ void mscipc_session_close(mscipc_session_t *session, uint64_t now);
 bool mscipc_session_next_deadline(const mscipc_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t mscipc_session_pending(const mscipc_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void mscipc_session_forget(mscipc_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */

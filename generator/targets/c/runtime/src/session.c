@@ -161,6 +161,12 @@ size_t codec_session_pending(const codec_session_t *session) {
     return session->count;
 }
 
+void codec_session_forget(codec_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
+}
+
 /* ------------------------------------------------------------------ start */
 static void result_init(codec_result_t *r, codec_result_kind_t kind, const codec_command_facts_t *facts,
                         uintptr_t tag) {

@@ -190,6 +190,9 @@ void codec_session_close(codec_session_t *session, uint64_t now);
 bool codec_session_next_deadline(const codec_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t codec_session_pending(const codec_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void codec_session_forget(codec_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */
