@@ -381,18 +381,20 @@ class Connection {
     }
 
     /// The command (set, descriptor) without parameters, as its layout value: f(const T&).
-    template <class F> void with_bare(const LinkCommand &c, bool &have, F &&f) {
-        struct Pick {
-            F &f;
-            bool &have;
-            template <class T> void field(const T &v) {
-                if constexpr (CommandTraits<T>::kCommand) {
-                    have = true;
-                    f(v);
-                }
+    /// Runs f(const T&) with a decoded command value (the other layouts are not commands).
+    template <class F> struct CommandPick {
+        F &f;
+        bool &have;
+        template <class T> void field(const T &v) {
+            if constexpr (CommandTraits<T>::kCommand) {
+                have = true;
+                f(v);
             }
-            void raw(const DecodeError &) {}
-        } pick{f, have};
+        }
+        void raw(const DecodeError &) {}
+    };
+    template <class F> void with_bare(const LinkCommand &c, bool &have, F &&f) {
+        CommandPick<F> pick{f, have};
         have = false;
         decode_field(c.set, c.descriptor, nullptr, 0, session_.options().device, pick);
     }
@@ -506,19 +508,14 @@ class Connection {
         std::size_t done = 0;
         for (std::size_t i = 0; i < setting_count_; ++i) {
             const Setting s = settings_[i];
-            struct Resend {
-                Connection &c;
-                std::size_t &done;
-                template <class T> void field(const T &v) {
-                    if constexpr (CommandTraits<T>::kCommand) {
-                        if (c.run_internal(v).ok()) {
-                            ++done;
-                        }
-                    }
+            bool have = false;
+            auto resend = [&](const auto &v) {
+                if (run_internal(v).ok()) {
+                    ++done;
                 }
-                void raw(const DecodeError &) {}
-            } resend{*this, done};
-            decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, resend);
+            };
+            CommandPick<decltype(resend)> pick{resend, have};
+            decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, pick);
         }
         return done;
     }
