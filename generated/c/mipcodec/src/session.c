@@ -23,6 +23,8 @@ const char *mipc_result_kind_name(mipc_result_kind_t kind) {
         return "refused";
     case MIPC_RESULT_TRANSPORT:
         return "transport";
+    case MIPC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }

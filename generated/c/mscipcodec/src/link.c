@@ -139,37 +139,58 @@ static void log_line(mscipc_link_t *link, const line_t *l) {
 }
 
 /* ------------------------------------------------------------------ the recorded configuration */
-/* Records a configuration command that succeeded: a write (function 1) of a command with a
- * function selector, or the resume command. The latest per (set, descriptor, key) replaces the
- * earlier one and moves to the end (the order of the writes); when every slot is taken by other
- * commands the oldest record is dropped. */
+/* The key of a setting: how many data bytes after the function selector its read sends. The
+ * shortest prefix of the written data that decodes as that command's read (function 2) is the
+ * read as the device would get it; without one (no read) every byte is key. */
+static uint8_t key_length(const mscipc_link_t *link, uint8_t set, uint8_t descriptor, const uint8_t *data,
+                          size_t n) {
+    uint8_t read[MSCIPC_MAX_FIELD_DATA];
+    size_t k;
+    memcpy(read, data, n);
+    read[0] = 2;
+    for (k = 1; k <= n; k++) {
+        mscipc_field_value_t value;
+        if (mscipc_decode_field(set, descriptor, read, k, link->session.config.device, &value, NULL) ==
+            MSCIPC_OK) {
+            return (uint8_t)(k - 1);
+        }
+    }
+    return (uint8_t)(n - 1);
+}
+
+/* Records a setting the application wrote (function write or write_no_ack of a command with a
+ * function selector, acknowledged or sent): the latest per key replaces the earlier one and moves
+ * to the end (the order of the writes); one more than MSCIPC_LINK_MAX_SETTINGS keys forgets the
+ * oldest. Also notes whether the last idle or resume command was an idle. */
 static void record(mscipc_link_t *link, const mscipc_field_value_t *command) {
     mscipc_command_facts_t facts;
-    mscipc_link_setting_t *slot = NULL;
+    mscipc_link_setting_t *slot;
     uint8_t data[MSCIPC_MAX_FIELD_DATA];
     size_t n = 0;
     size_t i;
-    uint8_t key;
+    uint8_t key_len;
     if (!mscipc_command_facts(command, &facts)) {
         return;
     }
-#if MSCIPC_LINK_HAS_RESUME
-    if (facts.function != 1 &&
-        !(facts.set == MSCIPC_LINK_RESUME_SET && facts.descriptor == MSCIPC_LINK_RESUME_DESCRIPTOR)) {
-        return;
-    }
-#else
-    if (facts.function != 1) {
-        return;
+#if MSCIPC_LINK_HAS_IDLE
+    if (facts.set == MSCIPC_LINK_IDLE_SET && facts.descriptor == MSCIPC_LINK_IDLE_DESCRIPTOR) {
+        link->idled = true;
     }
 #endif
-    if (mscipc_encode_field(command, data, sizeof data, &n) != MSCIPC_OK) {
+#if MSCIPC_LINK_HAS_RESUME
+    if (facts.set == MSCIPC_LINK_RESUME_SET && facts.descriptor == MSCIPC_LINK_RESUME_DESCRIPTOR) {
+        link->idled = false;
+    }
+#endif
+    if ((facts.function != 1 && facts.function != 6) ||
+        mscipc_encode_field(command, data, sizeof data, &n) != MSCIPC_OK || n == 0) {
         return;
     }
-    key = facts.function >= 0 && n > 1 ? data[1] : 0u;
+    key_len = key_length(link, facts.set, facts.descriptor, data, n);
     for (i = 0; i < link->setting_count; i++) {
         const mscipc_link_setting_t *r = &link->settings[i];
-        if (r->set == facts.set && r->descriptor == facts.descriptor && r->key == key) {
+        if (r->set == facts.set && r->descriptor == facts.descriptor && r->key_len == key_len &&
+            memcmp(r->data + 1, data + 1, key_len) == 0) {
             break;
         }
     }
@@ -184,7 +205,7 @@ static void record(mscipc_link_t *link, const mscipc_field_value_t *command) {
     slot = &link->settings[link->setting_count++];
     slot->set = facts.set;
     slot->descriptor = facts.descriptor;
-    slot->key = key;
+    slot->key_len = key_len;
     slot->len = (uint8_t)n;
     memcpy(slot->data, data, n);
 }
@@ -201,9 +222,12 @@ static mscipc_result_kind_t link_lost(mscipc_link_t *link, const char *what, msc
     why[0] = '\0';
     line_add(&l, "link lost: ");
     line_add(&l, reason != NULL && reason[0] != '\0' ? reason : what);
-    if (!link->internal) {
+    if (!link->internal && link->port.reopen != NULL && link->options.reconnect_ms > 0) {
         (void)lost(link);
+        memset(&link->result, 0, sizeof link->result);
+        return failed(link, MSCIPC_RESULT_LOST, why, result);
     }
+    link->connected = link->internal && link->connected;
     memset(&link->result, 0, sizeof link->result);
     return failed(link, MSCIPC_RESULT_TRANSPORT, why, result);
 }
@@ -400,17 +424,35 @@ mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
     mscipc_result_kind_t kind = MSCIPC_RESULT_TIMEOUT;
     unsigned attempt;
     uint64_t timeout;
+    line_t l;
     assert(link != NULL);
     if (!bare_command(link, MSCIPC_LINK_IDLE_SET, MSCIPC_LINK_IDLE_DESCRIPTOR, &idle)) {
         return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the idle command does not decode");
     }
     timeout = command_timeout(link, &idle);
     for (attempt = 1; attempt <= MSCIPC_LINK_IDLE_ATTEMPTS; attempt++) {
-        line_t l;
         link->dropped = 0;
         kind = run_internal(link, &idle, NULL);
+        if (kind == MSCIPC_RESULT_ACK) {
+            line_init(&l, link);
+            line_add(&l, "link: idle: ACK on attempt ");
+            line_uint(&l, attempt);
+            line_add(&l, " of ");
+            line_uint(&l, MSCIPC_LINK_IDLE_ATTEMPTS);
+            line_add(&l, " (");
+            line_uint(&l, link->dropped);
+            line_add(&l, " bytes dropped)");
+            log_line(link, &l);
+            if (!link->internal) {
+                link->idled = true;
+            }
+            return kind;
+        }
         if (kind != MSCIPC_RESULT_TIMEOUT) {
             return kind;
+        }
+        if (attempt == MSCIPC_LINK_IDLE_ATTEMPTS) {
+            break;
         }
         line_init(&l, link);
         line_add(&l, "link: idle: no ACK in ");
@@ -420,13 +462,6 @@ mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
             line_add(&l, " while streaming (");
             line_uint(&l, link->dropped);
             line_add(&l, " bytes dropped)");
-        }
-        if (attempt == MSCIPC_LINK_IDLE_ATTEMPTS) {
-            line_add(&l, ", giving up after ");
-            line_uint(&l, attempt);
-            line_add(&l, " attempts");
-            log_line(link, &l);
-            break;
         }
         line_add(&l, ", flushing, attempt ");
         line_uint(&l, attempt + 1u);
@@ -439,9 +474,18 @@ mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
         }
         flush_input(link);
     }
+    line_init(&l, link);
+    line_add(&l, "link: idle: no ACK after ");
+    line_uint(&l, MSCIPC_LINK_IDLE_ATTEMPTS);
+    line_add(&l, " attempts, giving up");
+    log_line(link, &l);
     return kind;
 #else
+    line_t l;
     assert(link != NULL);
+    line_init(&l, link);
+    line_add(&l, "link: idle: the protocol has no idle command");
+    log_line(link, &l);
     return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no idle command");
 #endif
 }
@@ -482,6 +526,10 @@ static size_t candidate_rates(const mscipc_link_t *link, uint32_t *out, size_t c
     unsigned d;
     mscipc_device_t device = link->session.config.device;
     add_rate(out, cap, &n, link->port.baud);
+    for (d = 1u; device == MSCIPC_DEVICE_ANY && d < 32u && mscipc_device_id((mscipc_device_t)d) != NULL;
+         d++) {
+        add_rate(out, cap, &n, mscipc_device_default_baud((mscipc_device_t)d));
+    }
     for (d = device == MSCIPC_DEVICE_ANY ? 1u : (unsigned)device; d < 32u; d++) {
         size_t k = 0;
         const uint32_t *rates;
@@ -555,7 +603,6 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
             continue;
         }
         link->port.baud = rates[i];
-        sleep_ms(link, MSCIPC_LINK_BAUD_SETTLE_MS > 0 ? (uint32_t)MSCIPC_LINK_BAUD_SETTLE_MS : 0u);
         flush_input(link);
         kind = run_internal(link, &ping, NULL);
         if (kind == MSCIPC_RESULT_ACK) {
@@ -575,7 +622,7 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
 #endif
 }
 
-/* Re-sends the recorded configuration in order; returns how many were acknowledged (or sent). */
+/* Re-sends the recorded settings in order; returns how many were acknowledged (or sent). */
 static size_t reapply(mscipc_link_t *link) {
     size_t i;
     size_t done = 0;
@@ -592,6 +639,15 @@ static size_t reapply(mscipc_link_t *link) {
             done++;
         }
     }
+#if MSCIPC_LINK_HAS_RESUME
+    if (!link->idled) {
+        mscipc_field_value_t resume;
+        if (mscipc_decode_field(MSCIPC_LINK_RESUME_SET, MSCIPC_LINK_RESUME_DESCRIPTOR, NULL, 0,
+                                link->session.config.device, &resume, NULL) == MSCIPC_OK) {
+            (void)run_internal(link, &resume, NULL);
+        }
+    }
+#endif
     return done;
 }
 
@@ -600,20 +656,22 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
     line_t l;
     const char *reason;
     const char *address;
-    bool was = link->internal;
+    bool was;
     size_t applied;
     assert(link != NULL);
+    was = link->internal;
     if (link->port.reopen == NULL || link->options.reconnect_ms == 0) {
         link->connected = false;
         return -1;
     }
     reason = link->port.reason ? link->port.reason(link->port.ctx) : NULL;
     address = link->port.address ? link->port.address(link->port.ctx) : NULL;
+    address = address != NULL ? address : "the port";
     line_init(&l, link);
     line_add(&l, "link: port lost (");
     line_add(&l, reason != NULL && reason[0] != '\0' ? reason : "unknown error");
     line_add(&l, "), reopening ");
-    line_add(&l, address != NULL ? address : "the port");
+    line_add(&l, address);
     line_add(&l, " every ");
     line_uint(&l, link->options.reopen_interval_ms);
     line_add(&l, " ms");
@@ -624,21 +682,18 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
     mscipc_session_close(&link->session, now_ms(link));
     start = now_ms(link);
     for (;;) {
-        uint64_t elapsed;
         if (link->port.reopen(link->port.ctx) == 0) {
-            if (link->port.set_baud != NULL && link->port.baud != 0) {
-                (void)link->port.set_baud(link->port.ctx, link->port.baud);
-            }
             break;
         }
-        elapsed = now_ms(link) - start;
-        if (elapsed >= link->options.reconnect_ms) {
+        if (now_ms(link) - start >= link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
-            line_add(&l, "link: port not back after ");
-            line_seconds(&l, elapsed);
-            line_add(&l, " s, giving up");
+            line_add(&l, "link: gave up reopening ");
+            line_add(&l, address);
+            line_add(&l, " after ");
+            line_uint(&l, link->options.reconnect_ms);
+            line_add(&l, " ms");
             log_line(link, &l);
             return -1;
         }
@@ -655,7 +710,7 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
     line_seconds(&l, now_ms(link) - start);
     line_add(&l, " s, re-applied ");
     line_uint(&l, applied);
-    line_add(&l, applied == 1 ? " setting" : " settings");
+    line_add(&l, " settings");
     log_line(link, &l);
     return 0;
 }

@@ -247,7 +247,7 @@ static int posix_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) 
         if (!t->socket && (p.revents & POLLHUP) == 0) {
             return 0;
         }
-        return lost(t, "receive failed", t->socket ? "connection closed by the device" : "end of file");
+        return lost(t, "receive failed", "end of file");
     }
     return (int)n;
 }

@@ -23,6 +23,8 @@ const char *mscipc_result_kind_name(mscipc_result_kind_t kind) {
         return "refused";
     case MSCIPC_RESULT_TRANSPORT:
         return "transport";
+    case MSCIPC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }

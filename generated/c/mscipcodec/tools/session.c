@@ -1,6 +1,7 @@
 /* mscipcodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud]
  * [--reconnect-ms N]: the session conformance tool of docs/conformance.md section 8. Reads command
- * packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle), runs them
+ * packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle; {"link":
+ * "listen", "ms": M}: receive for M ms), runs them
  * in order over the connection and prints one result line per command; every other packet received
  * (and every skip run) is printed as its canonical line, in arrival order. The steps of getting
  * through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
@@ -102,9 +103,8 @@ static void log_line(void *ctx, const char *line) {
     fflush(stderr);
 }
 
-/* {"link": "idle"} (any white space between the tokens). */
-static bool link_idle_line(const char *s, size_t n) {
-    static const char want[] = "{\"link\":\"idle\"}";
+/* The line without white space into out (cap bytes); false when it does not fit. */
+static bool compact(const char *s, size_t n, char *out, size_t cap) {
     size_t i;
     size_t k = 0;
     for (i = 0; i < n; i++) {
@@ -112,12 +112,48 @@ static bool link_idle_line(const char *s, size_t n) {
         if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
             continue;
         }
-        if (k >= sizeof want - 1 || want[k] != c) {
+        if (k + 1 >= cap) {
             return false;
         }
-        k++;
+        out[k++] = c;
     }
-    return k == sizeof want - 1;
+    out[k] = '\0';
+    return true;
+}
+
+/* {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first): 2 with *ms; else 0. */
+static int link_line(const char *s, size_t n, unsigned long *ms) {
+    char c[64];
+    const char *digits = NULL;
+    size_t len;
+    if (!compact(s, n, c, sizeof c)) {
+        return 0;
+    }
+    if (strcmp(c, "{\"link\":\"idle\"}") == 0) {
+        return 1;
+    }
+    if (strncmp(c, "{\"link\":\"listen\",\"ms\":", 22) == 0) {
+        digits = c + 22;
+        len = strlen(digits);
+        if (len < 2 || digits[len - 1] != '}') {
+            return 0;
+        }
+        c[strlen(c) - 1] = '\0';
+    } else if (strncmp(c, "{\"ms\":", 6) == 0) {
+        char *end = strchr(c + 6, ',');
+        if (end == NULL || strcmp(end, ",\"link\":\"listen\"}") != 0) {
+            return 0;
+        }
+        *end = '\0';
+        digits = c + 6;
+    } else {
+        return 0;
+    }
+    if (digits[0] == '\0' || strspn(digits, "0123456789") != strlen(digits) || strlen(digits) > 9) {
+        return 0;
+    }
+    *ms = strtoul(digits, NULL, 10);
+    return 2;
 }
 
 static int usage_error(const char *fmt, const char *arg) {
@@ -219,6 +255,8 @@ int main(int argc, char **argv) {
     unsigned long timeout_ms = MSCIPC_SESSION_DEFAULT_TIMEOUT_MS;
     unsigned long baud = 115200;
     unsigned long reconnect_ms = 0;
+    unsigned long listen_ms = 0;
+    mscipc_result_kind_t kind;
     bool auto_baud = false;
     mscipc_port_t port;
     mscipc_link_options_t link_options;
@@ -316,7 +354,7 @@ int main(int argc, char **argv) {
     link_options.auto_baud = auto_baud;
     mscipc_link_attach(&link, &port, &link_options);
     if (auto_baud && port.set_baud != NULL) {
-        mscipc_result_kind_t kind = mscipc_link_find_baud(&link);
+        kind = mscipc_link_find_baud(&link);
         if (kind != MSCIPC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == MSCIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
             mscipc_posix_close(&posix);
@@ -337,15 +375,26 @@ int main(int argc, char **argv) {
         if (line == NULL || blank(line, len)) {
             continue;
         }
-        if (link_idle_line(line, len)) {
-            mscipc_link_to_idle(&link);
+        switch (link_line(line, len, &listen_ms)) {
+        case 1:
+            if (mscipc_link_to_idle(&link) == MSCIPC_RESULT_REFUSED || !link.connected) {
+                fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
+                mscipc_posix_close(&posix);
+                return 2;
+            }
             print_line(mscipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
-            if (link.result.kind == MSCIPC_RESULT_TRANSPORT && !link.connected) {
+            continue;
+        case 2:
+            if (mscipc_link_listen(&link, (uint32_t)listen_ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
                 mscipc_posix_close(&posix);
                 return 2;
             }
+            printf("{\"line\":%lu,\"listened\":%lu}\n", number, listen_ms);
+            fflush(stdout);
             continue;
+        default:
+            break;
         }
         if (mscipc_json_command_line(line, len, &command, msg, sizeof msg) != MSCIPC_OK) {
             fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
@@ -361,11 +410,12 @@ int main(int argc, char **argv) {
         }
         mscipc_start_options_init(&opt);
         opt.tag = number;
-        if (mscipc_link_run(&link, &command, &opt, NULL) == MSCIPC_RESULT_TRANSPORT) {
-            if (link.connected) { /* reconnected: the command failed with "link lost" */
-                print_line(mscipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
-                continue;
-            }
+        kind = mscipc_link_run(&link, &command, &opt, NULL);
+        if (kind == MSCIPC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
+            print_line(mscipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            continue;
+        }
+        if (kind == MSCIPC_RESULT_TRANSPORT || kind == MSCIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
             mscipc_posix_close(&posix);
             return 2;

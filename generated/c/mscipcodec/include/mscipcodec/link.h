@@ -67,19 +67,20 @@ typedef struct {
 #define MSCIPC_LINK_DEFAULT_RECONNECT_MS 10000u
 #define MSCIPC_LINK_REOPEN_INTERVAL_MS 500u
 #define MSCIPC_LINK_QUIET_MS 50u
-/** Configuration commands recorded for a reconnect (the latest per command and key wins). */
+/** Settings recorded for a reconnect (the latest per key wins; one more forgets the oldest). */
 #ifndef MSCIPC_LINK_MAX_SETTINGS
-#define MSCIPC_LINK_MAX_SETTINGS 16
+#define MSCIPC_LINK_MAX_SETTINGS 64
 #endif
 #define MSCIPC_LINK_LOG_MAX 320
 /** The most baud rates a search tries (every device's supported rates). */
 #define MSCIPC_LINK_MAX_BAUD_RATES 16
 
-/** A configuration command as sent: its field data (re-sent after a reconnect). */
+/** A setting as written: its field data (re-sent after a reconnect). Its key: set, descriptor and
+ * the first key_len data bytes after the function selector (the parameters its read sends). */
 typedef struct {
     uint8_t set;
     uint8_t descriptor;
-    uint8_t key; /* the first parameter byte after the function selector (0: none) */
+    uint8_t key_len;
     uint8_t len;
     uint8_t data[MSCIPC_MAX_FIELD_DATA];
 } mscipc_link_setting_t;
@@ -104,6 +105,7 @@ typedef struct {
     uint64_t dropped; /* bytes of packets and skip runs dropped while internal */
     mscipc_link_setting_t settings[MSCIPC_LINK_MAX_SETTINGS];
     size_t setting_count;
+    bool idled; /* the application's last idle or resume command was an idle (no resume after a reconnect) */
     char line[MSCIPC_LINK_LOG_MAX];
 } mscipc_link_t;
 
@@ -148,23 +150,25 @@ void mscipc_link_attach(mscipc_link_t *link, const mscipc_port_t *port, const ms
  * Gets the device to idle (the protocol's idle command), also while it streams at full rate: the
  * packets that arrive meanwhile are counted and dropped; on no ACK the input is flushed (port and
  * parser), drained for the quiet time and the command sent again, MSCIPC_LINK_IDLE_ATTEMPTS times in
- * all, each with the command's timeout. Returns ACK, or the last attempt's result (the error in
- * link->result.error). REFUSED when the protocol has no idle command.
+ * all, each with the command's timeout; a NACK is not retried. Returns ACK, or the last attempt's
+ * result (the error in link->result.error). REFUSED when the protocol has no idle command.
  */
 mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link);
 
 /**
  * Pings the device; with a port that has a baud rate and no answer, tries the device's supported
- * rates (the configured one, the default, then from the highest down), each after a flush and the
- * settle time, and stays at the first that answers (port.baud). Returns ACK, or the failure.
+ * rates (the configured one, the default, then from the highest down; with no device selected the
+ * defaults of every device, then every device's rates), each after switching and a flush, and
+ * stays at the first that answers (port.baud). Returns ACK, or the failure.
  */
 mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link);
 
 /**
- * Reopens a lost port every reopen_interval_ms until reconnect_ms have passed, then gets to idle
- * and re-sends the recorded configuration commands in order. mscipc_link_run and the pumps call
- * it when the transport fails (the command in flight fails with "link lost: REASON"). Returns 0
- * when reconnected, < 0 when not.
+ * Reopens a lost port every reopen_interval_ms until reconnect_ms have passed since the loss, then
+ * gets to idle, re-sends the recorded settings in order and the resume command (unless the
+ * application's last idle or resume command was an idle). mscipc_link_run and the pumps call it
+ * when the transport fails (the command in flight fails with MSCIPC_RESULT_LOST, "link lost:
+ * REASON"). Returns 0 when reconnected, < 0 when not (link->connected false).
  */
 int mscipc_link_reconnect(mscipc_link_t *link);
 

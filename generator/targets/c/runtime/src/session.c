@@ -22,6 +22,8 @@ const char *codec_result_kind_name(codec_result_kind_t kind) {
         return "refused";
     case CODEC_RESULT_TRANSPORT:
         return "transport";
+    case CODEC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }
