@@ -268,29 +268,31 @@ int main(int argc, char **argv) {
         if (blank(line)) {
             continue;
         }
-        if (link_idle_line(line)) {
+        long listen_ms = 0;
+        const int link_kind = link_line(line, listen_ms);
+        if (link_kind == 1) {
             const mscipcodec::Call idle = dev.to_idle();
-            if (idle.io_error) {
-                if (!dev.connected()) {
-                    std::fprintf(stderr, "%s: %s\n", kProg, idle.io.c_str());
-                    return 2;
-                }
-                const std::string text = lost_line(number, idle.io.str());
-                std::fwrite(text.data(), 1, text.size(), stdout);
-                std::fputc('\n', stdout);
-                std::fflush(stdout);
-                continue;
+            if (idle.io_error || idle.result.status == mscipcodec::Status::refused) {
+                std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number,
+                             idle.io_error ? idle.io.c_str() : idle.result.error.c_str());
+                return 2;
             }
             mscipcodec::Result r = idle.result;
             r.tag = number;
             mscipcodec::SessionEvent e;
             e.kind = mscipcodec::SessionEvent::Kind::result;
             e.result = &r;
-            const std::string text = mscipcodec::session_event_line(
-                e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); });
-            std::fwrite(text.data(), 1, text.size(), stdout);
-            std::fputc('\n', stdout);
-            std::fflush(stdout);
+            print(mscipcodec::session_event_line(
+                e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); }));
+            continue;
+        }
+        if (link_kind == 2) {
+            mscipcodec::ErrorText err;
+            if (!dev.listen(listen_ms, &err)) {
+                std::fprintf(stderr, "%s: %s\n", kProg, err.c_str());
+                return 2;
+            }
+            print("{\"line\":" + std::to_string(number) + ",\"listened\":" + std::to_string(listen_ms) + "}");
             continue;
         }
         mscipcodec::Call call;
@@ -307,11 +309,8 @@ int main(int argc, char **argv) {
             continue;
         }
         if (call.io_error) {
-            if (dev.connected() && reconnect_ms > 0) { // reconnected: the command failed with "link lost"
-                const std::string text = lost_line(number, call.io.str());
-                std::fwrite(text.data(), 1, text.size(), stdout);
-                std::fputc('\n', stdout);
-                std::fflush(stdout);
+            if (call.lost && dev.connected()) { // reconnected: the command was lost with the port
+                print(lost_line(number, call.io.str()));
                 continue;
             }
             std::fprintf(stderr, "%s: %s\n", kProg, call.io.c_str());

@@ -76,6 +76,8 @@ struct LinkOptions {
 struct Call {
     Result result;
     bool io_error = false;
+    bool lost = false; ///< the port was lost under the command and the connection reopened it (io: "link
+                       ///< lost: REASON")
     ErrorText io{};
     /// The command succeeded (ack or sent) and the transport did not fail.
     bool ok() const {
@@ -184,6 +186,7 @@ class Connection {
     Call to_idle() {
         Call call;
         if (!kLinkIdle.present) {
+            log("link: idle: the protocol has no idle command");
             return refused(call, "the protocol has no idle command");
         }
         bool have = false;
@@ -197,16 +200,23 @@ class Connection {
             if (!have) {
                 return refused(call, "the idle command does not decode");
             }
+            if (!call.io_error && call.result.status == Status::ack) {
+                log("link: idle: ACK on attempt " + std::to_string(attempt) + " of " +
+                    std::to_string(kLinkIdleAttempts) + " (" + std::to_string(dropped_) + " bytes dropped)");
+                if (!internal_) {
+                    idled_ = true;
+                }
+                return call;
+            }
             if (call.io_error || call.result.status != Status::timeout) {
                 return call;
+            }
+            if (attempt == kLinkIdleAttempts) {
+                break;
             }
             std::string line = "link: idle: no ACK in " + std::to_string(timeout) + " ms";
             if (dropped_ > 0) {
                 line += " while streaming (" + std::to_string(dropped_) + " bytes dropped)";
-            }
-            if (attempt == kLinkIdleAttempts) {
-                log(line + ", giving up after " + std::to_string(attempt) + " attempts");
-                break;
             }
             log(line + ", flushing, attempt " + std::to_string(attempt + 1) + " of " +
                 std::to_string(kLinkIdleAttempts));
@@ -218,6 +228,7 @@ class Connection {
             }
             flush_input();
         }
+        log("link: idle: no ACK after " + std::to_string(kLinkIdleAttempts) + " attempts, giving up");
         return call;
     }
 
@@ -254,7 +265,6 @@ class Connection {
             if (!transport_.set_baud(rates[i])) {
                 continue;
             }
-            sleep(kLinkBaudSettleMs > 0 ? kLinkBaudSettleMs : 0);
             flush_input();
             with_bare(kLinkPing, have, [&](const auto &ping) { call = run_internal(ping); });
             if (call.io_error) {
@@ -286,11 +296,11 @@ class Connection {
         session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
         const std::int64_t start = now_ms();
         while (!transport_.reopen()) {
-            const std::int64_t elapsed = now_ms() - start;
-            if (elapsed >= link_.reconnect_ms) {
+            if (now_ms() - start >= link_.reconnect_ms) {
                 internal_ = was;
                 connected_ = false;
-                log("link: port not back after " + seconds(elapsed) + " s, giving up");
+                log("link: gave up reopening " + (address.empty() ? std::string("the port") : address) +
+                    " after " + std::to_string(link_.reconnect_ms) + " ms");
                 return false;
             }
             sleep(link_.reopen_interval_ms);
@@ -336,8 +346,8 @@ class Connection {
         session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
     }
 
-    /// The configuration commands recorded for a reconnect (the latest per command and key).
-    static constexpr std::size_t kMaxSettings = 16;
+    /// The settings recorded for a reconnect (the latest per key; one more forgets the oldest).
+    static constexpr std::size_t kMaxSettings = 64;
     std::size_t settings() const {
         return setting_count_;
     }
@@ -346,7 +356,7 @@ class Connection {
     struct Setting {
         std::uint8_t set = 0;
         std::uint8_t descriptor = 0;
-        std::uint8_t key = 0; ///< the first parameter byte after the function selector (0: none)
+        std::size_t key_size = 0; ///< key: the data bytes after the function selector its read sends
         std::size_t size = 0;
         std::array<std::uint8_t, kMaxPacket> data{}; ///< the field data
     };
@@ -374,10 +384,13 @@ class Connection {
         call.io_error = true;
         const std::string reason = transport_.reason();
         const std::string io = call.io.str();
-        if (!internal_) {
+        if (!internal_ && link_.reconnect_ms > 0) {
+            call.lost = true;
             reconnect();
+            set_text(call.io, "link lost: " + (reason.empty() ? io : reason));
+        } else if (!internal_) {
+            connected_ = false;
         }
-        set_text(call.io, "link lost: " + (reason.empty() ? io : reason));
         return call;
     }
 
@@ -446,6 +459,11 @@ class Connection {
         add(out, transport_.baud());
         const std::optional<Device> device = session_.options().device;
         for (const Device d : kDevices) {
+            if (!device) {
+                add(out, device_default_baud(d));
+            }
+        }
+        for (const Device d : kDevices) {
             if (device && *device != d) {
                 continue;
             }
@@ -463,28 +481,53 @@ class Connection {
         return out;
     }
 
-    /// Records a configuration command that succeeded: a write (function 1) of a command with a
-    /// function selector, or the resume command. The latest per (set, descriptor, key) replaces
-    /// the earlier one and moves to the end; when every slot is taken the oldest goes.
+    /// How many data bytes after the function selector a setting's read sends: the shortest prefix
+    /// of the written data that decodes as that command's read (function 2); without one, all.
+    std::size_t key_size(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data,
+                         std::size_t size) {
+        std::array<std::uint8_t, kMaxPacket> read{};
+        std::memcpy(read.data(), data, size);
+        read[0] = 2;
+        for (std::size_t k = 1; k <= size; ++k) {
+            bool have = false;
+            auto ignore = [](const auto &) {};
+            CommandPick<decltype(ignore)> pick{ignore, have};
+            decode_field(set, descriptor, read.data(), k, session_.options().device, pick);
+            if (have) {
+                return k - 1;
+            }
+        }
+        return size - 1;
+    }
+
+    /// Records a setting the application wrote (function write or write_no_ack of a command with a
+    /// function selector, acknowledged or sent): the latest per key replaces the earlier one and
+    /// moves to the end; one more than kMaxSettings keys forgets the oldest. Also notes whether the
+    /// last idle or resume command was an idle.
     template <class T> void record(const T &command, const std::uint8_t *packet, std::size_t size) {
         const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
         const std::optional<std::int64_t> fn = CommandTraits<T>::function(command);
-        const bool resume =
-            kLinkResume.present && row.set == kLinkResume.set && row.descriptor == kLinkResume.descriptor;
-        if (!(fn && *fn == 1) && !resume) {
+        if (kLinkIdle.present && row.set == kLinkIdle.set && row.descriptor == kLinkIdle.descriptor) {
+            idled_ = true;
+        }
+        if (kLinkResume.present && row.set == kLinkResume.set && row.descriptor == kLinkResume.descriptor) {
+            idled_ = false;
+        }
+        if (!fn || (*fn != 1 && *fn != 6)) {
             return;
         }
         const PacketView view{packet, size};
         FieldIterator it(view);
         FieldEntry e;
-        if (!it.next(e) || e.kind != FieldEntry::Kind::field) {
+        if (!it.next(e) || e.kind != FieldEntry::Kind::field || e.size == 0) {
             return;
         }
-        const std::uint8_t key = fn && e.size > 1 ? e.data[1] : 0;
+        const std::size_t key = key_size(row.set, row.descriptor, e.data, e.size);
         std::size_t i = 0;
         while (i < setting_count_ &&
                !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
-                 settings_[i].key == key)) {
+                 settings_[i].key_size == key &&
+                 std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
             ++i;
         }
         if (i == setting_count_ && setting_count_ == kMaxSettings) {
@@ -499,7 +542,7 @@ class Connection {
         Setting &slot = settings_[setting_count_++];
         slot.set = row.set;
         slot.descriptor = row.descriptor;
-        slot.key = key;
+        slot.key_size = key;
         slot.size = e.size;
         std::memcpy(slot.data.data(), e.data, e.size);
     }
@@ -517,6 +560,10 @@ class Connection {
             };
             CommandPick<decltype(resend)> pick{resend, have};
             decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, pick);
+        }
+        if (kLinkResume.present && !idled_) {
+            bool have = false;
+            with_bare(kLinkResume, have, [&](const auto &resume) { run_internal(resume); });
         }
         return done;
     }
@@ -564,6 +611,7 @@ class Connection {
     LinkOptions link_{{}, 0, 500, 50};
     bool internal_ = false;
     bool connected_ = true;
+    bool idled_ = false; // the application's last idle or resume command was an idle
     std::uint64_t dropped_ = 0;
     std::array<Setting, kMaxSettings> settings_{};
     std::size_t setting_count_ = 0;

@@ -99,7 +99,7 @@ class FdTransport : public Transport {
             return -1;
         }
         if (n == 0) {
-            reason_ = baud_ == 0 ? "connection closed by the device" : "end of file";
+            reason_ = "end of file";
             std::snprintf(error.text.data(), error.text.size(), "%s: connection closed by the device", what_);
             return -1;
         }
