@@ -39,21 +39,45 @@ bool int_option(const std::string &text, long low, long &out) {
     return out >= low;
 }
 
-/// {"link": "idle"} (any white space between the tokens).
-bool link_idle_line(const std::string &line) {
-    std::string compact;
-    for (const char c : line) {
-        if (c != ' ' && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
-            compact += c;
+/// {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first, any white space): 2 with ms; else 0.
+int link_line(const std::string &line, long &ms) {
+    std::string c;
+    for (const char ch : line) {
+        if (ch != ' ' && ch != '\t' && ch != '\r' && ch != '\f' && ch != '\v') {
+            c += ch;
         }
     }
-    return compact == "{\"link\":\"idle\"}";
+    if (c == "{\"link\":\"idle\"}") {
+        return 1;
+    }
+    std::string digits;
+    const std::string a = "{\"link\":\"listen\",\"ms\":";
+    const std::string b = ",\"link\":\"listen\"}";
+    if (c.rfind(a, 0) == 0 && c.size() > a.size() + 1 && c.back() == '}') {
+        digits = c.substr(a.size(), c.size() - a.size() - 1);
+    } else if (c.rfind("{\"ms\":", 0) == 0 && c.size() > 6 + b.size() &&
+               c.compare(c.size() - b.size(), b.size(), b) == 0) {
+        digits = c.substr(6, c.size() - 6 - b.size());
+    } else {
+        return 0;
+    }
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) {
+        return 0;
+    }
+    ms = std::atol(digits.c_str());
+    return 2;
 }
 
-/// The result line of a command that failed with the port lost (the C tool's "transport" result).
+void print(const std::string &text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+/// The result line of a command lost with the port.
 std::string lost_line(unsigned long number, const std::string &error) {
-    std::string line = "{\"line\":" + std::to_string(number) +
-                       ",\"result\":\"transport\",\"code\":null,\"reply\":[],\"error\":";
+    std::string line =
+        "{\"line\":" + std::to_string(number) + ",\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":";
     protopkg::JsonWriter w(protopkg::string_sink, &line);
     w.string(error.c_str(), error.size());
     return line + "}";
