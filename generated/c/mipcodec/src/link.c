@@ -670,7 +670,7 @@ int mipc_link_reconnect(mipc_link_t *link) {
         if (link->port.reopen(link->port.ctx) == 0) {
             break;
         }
-        if (now_ms(link) - start >= link->options.reconnect_ms) {
+        if (now_ms(link) - start + link->options.reopen_interval_ms > link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
@@ -687,7 +687,8 @@ int mipc_link_reconnect(mipc_link_t *link) {
     link->connected = true;
     applied = 0;
     if (mipc_link_to_idle(link) == MIPC_RESULT_ACK) {
-        applied = reapply(link);
+        (void)reapply(link);
+        applied = link->setting_count;
     }
     link->internal = was;
     line_init(&l, link);

@@ -674,7 +674,7 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
         if (link->port.reopen(link->port.ctx) == 0) {
             break;
         }
-        if (now_ms(link) - start >= link->options.reconnect_ms) {
+        if (now_ms(link) - start + link->options.reopen_interval_ms > link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
@@ -691,7 +691,8 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
     link->connected = true;
     applied = 0;
     if (mscipc_link_to_idle(link) == MSCIPC_RESULT_ACK) {
-        applied = reapply(link);
+        (void)reapply(link);
+        applied = link->setting_count;
     }
     link->internal = was;
     line_init(&l, link);

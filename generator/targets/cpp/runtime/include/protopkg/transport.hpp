@@ -298,7 +298,7 @@ class Connection {
         session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
         const std::int64_t start = now_ms();
         while (!transport_.reopen()) {
-            if (now_ms() - start >= link_.reconnect_ms) {
+            if (now_ms() - start + link_.reopen_interval_ms > link_.reconnect_ms) {
                 internal_ = was;
                 connected_ = false;
                 log("link: gave up reopening " + (address.empty() ? std::string("the port") : address) +
@@ -311,11 +311,12 @@ class Connection {
         std::size_t applied = 0;
         const Call idle = to_idle();
         if (idle.ok()) {
-            applied = reapply();
+            reapply();
+            applied = setting_count_;
         }
         internal_ = was;
         log("link: reconnected after " + seconds(now_ms() - start) + " s, re-applied " +
-            std::to_string(applied) + (applied == 1 ? " setting" : " settings"));
+            std::to_string(applied) + " settings");
         return true;
     }
 
