@@ -2,9 +2,9 @@
 same cases for every session language, through its session tool (`tests/conformance/session
 LANG`) against the simulator (section 9) over a pty and TCP:
 
-- get to idle while the device streams at its highest rates (`--stream-full`), its first reply
-  to the idle command dropped and the next ones after garbage, so that the flush-and-retry path
-  runs every time: the result is an ACK and no data follows it;
+- get to idle while the device streams at its highest rates (`--stream-full`), its replies to the
+  idle command dropped (so that the flush-and-retry path runs every time), late, split and after
+  garbage: every result is an ACK and no data follows;
 - a wrong configured baud rate (`--start-baud 921600`, the tool at 115200 with `--auto-baud`)
   found while the device streams garbage at the host;
 - the port closed and reopened under the session (`--replug`): the command lines' settings
@@ -101,19 +101,23 @@ def _data(out: list[dict]) -> list[dict]:
 @pytest.mark.parametrize("lang", _langs())
 def test_idle_while_streaming_at_full_rate(lang: str, transport: str) -> None:
     listen = "pty" if transport == "pty" else "tcp:127.0.0.1:0"
-    faults = ("--drop", "set_to_idle@1", "--garbage", "set_to_idle:23")
+    # the idle replies in order: dropped (a retry), 150 ms late, split in two writes, after garbage
+    faults = (
+        *("--drop", "set_to_idle@1", "--delay", "set_to_idle:150@1", "--split", "set_to_idle@1"),
+        *("--garbage", "set_to_idle:23"),
+    )
     with Sim("mip", "cv7_ins", listen, "--stream-full", *faults) as sim:
-        out, err = _tool(lang, sim.address, [IDLE, _listen(300)], "--device", "cv7_ins")
+        out, err = _tool(lang, sim.address, [IDLE, IDLE, IDLE, _listen(300)], "--device", "cv7_ins")
     kinds = _kinds(err)
     # the first reply dropped: at least one retry, said while the data flooded in
-    assert kinds[0] == "idle_retry" and kinds[-1] == "idle_ok", err
-    assert set(kinds[1:-1]) <= {"idle_retry"}, err
+    assert kinds[0] == "idle_retry" and kinds.count("idle_ok") == 3, err
+    assert set(kinds) == {"idle_retry", "idle_ok"}, err
     first = err.splitlines()[0]
     dropped = int(re.search(r"\((\d+) bytes dropped\)", first).group(1))
     assert dropped > 10000, f"the device was not streaming at full rate: {first}"
     results = [x for x in out if "result" in x]
-    assert results == [{"line": 1, "result": "ack", "code": 0, "reply": []}], out
-    assert out[-1] == {"line": 2, "listened": 300}
+    assert results == [{"line": n, "result": "ack", "code": 0, "reply": []} for n in (1, 2, 3)], out
+    assert out[-1] == {"line": 4, "listened": 300}
     # nothing of the flood was printed, and the device is idle: no data after the ACK
     assert _data(out) == [], _data(out)[:3]
 
