@@ -31,8 +31,6 @@ from tests.helpers.langs import LANGS
 
 # The languages still to land, and who lands them (remove an entry when its language passes).
 LINK_PENDING = {
-    "c": "link-cc: C session core (session.c, posix transport, tools/session.c)",
-    "cpp": "link-cc: C++ session core (session.hpp, transport, tools/session.cpp)",
     "rust": "link-rust: Rust session core (session.rs, device.rs, protocodec-session)",
 }
 

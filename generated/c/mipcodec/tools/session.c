@@ -1,7 +1,10 @@
-/* mipcodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]: the session
- * conformance tool of docs/conformance.md section 8. Reads command packets as canonical JSON lines
- * on stdin, runs them in order over the connection and prints one result line per command; every
- * other packet received (and every skip run) is printed as its canonical line, in arrival order.
+/* mipcodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud]
+ * [--reconnect-ms N]: the session conformance tool of docs/conformance.md section 8. Reads command
+ * packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle; {"link":
+ * "listen", "ms": M}: receive for M ms), runs them
+ * in order over the connection and prints one result line per command; every other packet received
+ * (and every skip run) is printed as its canonical line, in arrival order. The steps of getting
+ * through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
  * Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
  * skipped), 2 for usage or connection errors. Generated: do not edit. */
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
@@ -17,13 +20,18 @@
 #include "mipcodec/posix_transport.h"
 
 #define PROG "mipcodec-session"
-#define USAGE "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]"
+#define USAGE                                                                                                \
+    "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] "              \
+    "[--reconnect-ms N]"
 
 typedef struct {
     mipc_device_t device;
-    uint8_t *received; /* every byte received (skip lines print theirs) */
+    uint8_t *received; /* the bytes received from stream offset received_base on that the parser has
+                          not decided on yet (skip lines print theirs) */
     size_t received_len;
     size_t received_cap;
+    uint64_t received_base;
+    const mipc_parser_t *parser;
     int failed;
 } tool_t;
 
@@ -49,7 +57,10 @@ static void on_event(void *ctx, const mipc_session_event_t *ev) {
     } else {
         uint64_t off = ev->stream->offset;
         uint64_t len = ev->stream->length;
-        const uint8_t *bytes = off + len <= tool->received_len ? tool->received + off : NULL;
+        const uint8_t *bytes =
+            off >= tool->received_base && off - tool->received_base + len <= tool->received_len
+                ? tool->received + (off - tool->received_base)
+                : NULL;
         n = mipc_json_skip_line(off, bytes, bytes ? (size_t)len : 0, g_line, sizeof g_line);
     }
     print_line(n);
@@ -64,7 +75,18 @@ typedef struct {
 static int rec_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
     recorder_t *r = (recorder_t *)ctx;
     tool_t *t = r->tool;
-    int n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
+    int n;
+    /* the bytes before the parser's pending skip run and buffered candidate are printed already:
+     * dropped, so that the recording stays bounded while data streams */
+    uint64_t keep = t->parser->skip_count > 0 ? t->parser->skip_offset : t->parser->base;
+    if (keep > t->received_base) {
+        size_t drop = (size_t)(keep - t->received_base);
+        drop = drop < t->received_len ? drop : t->received_len;
+        memmove(t->received, t->received + drop, t->received_len - drop);
+        t->received_len -= drop;
+        t->received_base += drop;
+    }
+    n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
     if (n > 0) {
         if (t->received_len + (size_t)n > t->received_cap) {
             size_t cap2 = (t->received_cap + (size_t)n) * 2;
@@ -90,6 +112,65 @@ static int rec_write(void *ctx, const uint8_t *data, size_t len) {
 static uint64_t rec_now(void *ctx) {
     recorder_t *r = (recorder_t *)ctx;
     return r->inner.now_ms(r->inner.ctx);
+}
+
+static void log_line(void *ctx, const char *line) {
+    (void)ctx;
+    fprintf(stderr, "%s\n", line);
+    fflush(stderr);
+}
+
+/* The line without white space into out (cap bytes); false when it does not fit. */
+static bool compact(const char *s, size_t n, char *out, size_t cap) {
+    size_t i;
+    size_t k = 0;
+    for (i = 0; i < n; i++) {
+        char c = s[i];
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+            continue;
+        }
+        if (k + 1 >= cap) {
+            return false;
+        }
+        out[k++] = c;
+    }
+    out[k] = '\0';
+    return true;
+}
+
+/* {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first): 2 with *ms; else 0. */
+static int link_line(const char *s, size_t n, unsigned long *ms) {
+    char c[64];
+    const char *digits = NULL;
+    size_t len;
+    if (!compact(s, n, c, sizeof c)) {
+        return 0;
+    }
+    if (strcmp(c, "{\"link\":\"idle\"}") == 0) {
+        return 1;
+    }
+    if (strncmp(c, "{\"link\":\"listen\",\"ms\":", 22) == 0) {
+        digits = c + 22;
+        len = strlen(digits);
+        if (len < 2 || digits[len - 1] != '}') {
+            return 0;
+        }
+        c[strlen(c) - 1] = '\0';
+    } else if (strncmp(c, "{\"ms\":", 6) == 0) {
+        char *end = strchr(c + 6, ',');
+        if (end == NULL || strcmp(end, ",\"link\":\"listen\"}") != 0) {
+            return 0;
+        }
+        *end = '\0';
+        digits = c + 6;
+    } else {
+        return 0;
+    }
+    if (digits[0] == '\0' || strspn(digits, "0123456789") != strlen(digits) || strlen(digits) > 9) {
+        return 0;
+    }
+    *ms = strtoul(digits, NULL, 10);
+    return 2;
 }
 
 static int usage_error(const char *fmt, const char *arg) {
@@ -190,6 +271,12 @@ int main(int argc, char **argv) {
     const char *connect = NULL;
     unsigned long timeout_ms = MIPC_SESSION_DEFAULT_TIMEOUT_MS;
     unsigned long baud = 115200;
+    unsigned long reconnect_ms = 0;
+    unsigned long listen_ms = 0;
+    mipc_result_kind_t kind;
+    bool auto_baud = false;
+    mipc_port_t port;
+    mipc_link_options_t link_options;
     mipc_device_t device = MIPC_DEVICE_ANY;
     mipc_posix_t posix;
     recorder_t rec;
@@ -215,13 +302,18 @@ int main(int argc, char **argv) {
         char name[32];
         const char *value;
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
+        if (strcmp(a, "--auto-baud") == 0) {
+            auto_baud = true;
+            continue;
+        }
         if (n >= sizeof name) {
             return usage_error("unknown argument '%s'", a);
         }
         memcpy(name, a, n);
         name[n] = '\0';
         if (strcmp(name, "--connect") != 0 && strcmp(name, "--timeout-ms") != 0 &&
-            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0) {
+            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
+            strcmp(name, "--reconnect-ms") != 0) {
             return usage_error("unknown argument '%s'", a);
         }
         if (eq) {
@@ -239,6 +331,10 @@ int main(int argc, char **argv) {
             }
         } else if (strcmp(name, "--baud") == 0) {
             if (int_option(name, value, 1, &baud)) {
+                return 2;
+            }
+        } else if (strcmp(name, "--reconnect-ms") == 0) {
+            if (int_option(name, value, 0, &reconnect_ms)) {
                 return 2;
             }
         } else if (!mipc_device_from_id(value, &device) || device == MIPC_DEVICE_ANY) {
@@ -268,6 +364,21 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
+    mipc_posix_port(&posix, &port);
+    mipc_link_options_init(&link_options);
+    link_options.log = log_line;
+    link_options.reconnect_ms = (uint32_t)reconnect_ms;
+    link_options.auto_baud = auto_baud;
+    mipc_link_attach(&link, &port, &link_options);
+    tool.parser = &link.session.parser;
+    if (auto_baud && port.set_baud != NULL) {
+        kind = mipc_link_find_baud(&link);
+        if (kind != MIPC_RESULT_ACK) {
+            fprintf(stderr, PROG ": %s\n", kind == MIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
+            mipc_posix_close(&posix);
+            return 2;
+        }
+    }
     while (read_line(&line, &cap, &len)) {
         mipc_field_value_t command;
         mipc_command_facts_t facts;
@@ -281,6 +392,27 @@ int main(int argc, char **argv) {
         }
         if (line == NULL || blank(line, len)) {
             continue;
+        }
+        switch (link_line(line, len, &listen_ms)) {
+        case 1:
+            if (mipc_link_to_idle(&link) == MIPC_RESULT_REFUSED || !link.connected) {
+                fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
+                mipc_posix_close(&posix);
+                return 2;
+            }
+            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            continue;
+        case 2:
+            if (mipc_link_listen(&link, (uint32_t)listen_ms) < 0) {
+                fprintf(stderr, PROG ": %s\n", posix.error);
+                mipc_posix_close(&posix);
+                return 2;
+            }
+            printf("{\"line\":%lu,\"listened\":%lu}\n", number, listen_ms);
+            fflush(stdout);
+            continue;
+        default:
+            break;
         }
         if (mipc_json_command_line(line, len, &command, msg, sizeof msg) != MIPC_OK) {
             fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
@@ -296,7 +428,12 @@ int main(int argc, char **argv) {
         }
         mipc_start_options_init(&opt);
         opt.tag = number;
-        if (mipc_link_run(&link, &command, &opt, NULL) == MIPC_RESULT_TRANSPORT) {
+        kind = mipc_link_run(&link, &command, &opt, NULL);
+        if (kind == MIPC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
+            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            continue;
+        }
+        if (kind == MIPC_RESULT_TRANSPORT || kind == MIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
             mipc_posix_close(&posix);
             return 2;
