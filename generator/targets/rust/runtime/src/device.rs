@@ -27,6 +27,23 @@ pub trait Transport {
     /// Waits up to `timeout` for bytes and reads what arrived into `buf`: 0 when nothing came in
     /// time. The end of the connection is an error (`UnexpectedEof`).
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize>;
+    /// Discards what was received but not read yet (a serial port's input buffer); nothing
+    /// where there is no such buffer.
+    fn clear_input(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+    /// The line rate of a serial port; `None` where there is none (TCP).
+    fn baud(&self) -> Option<u32> {
+        None
+    }
+    /// Changes the line rate of a serial port (`Unsupported` where there is none).
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        let _ = baud;
+        Err(io::Error::new(
+            io::ErrorKind::Unsupported,
+            "this connection has no baud rate",
+        ))
+    }
 }
 
 impl<T: Transport + ?Sized> Transport for Box<T> {
@@ -35,6 +52,15 @@ impl<T: Transport + ?Sized> Transport for Box<T> {
     }
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
         (**self).receive(buf, timeout)
+    }
+    fn clear_input(&mut self) -> io::Result<()> {
+        (**self).clear_input()
+    }
+    fn baud(&self) -> Option<u32> {
+        (**self).baud()
+    }
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        (**self).set_baud(baud)
     }
 }
 
@@ -96,19 +122,63 @@ impl Transport for TcpTransport {
 /// A serial port (the `serialport` crate; 8 data bits, no parity, one stop bit).
 #[cfg(feature = "serial")]
 pub struct SerialTransport {
+    #[cfg(unix)]
+    port: serialport::TTYPort,
+    #[cfg(not(unix))]
     port: Box<dyn serialport::SerialPort>,
+    baud: u32,
 }
 
 #[cfg(feature = "serial")]
 impl SerialTransport {
     /// Opens the port `path` (`/dev/ttyUSB0`, `COM3`) at `baud`.
     pub fn open(path: &str, baud: u32) -> io::Result<Self> {
-        let port = serialport::new(path, baud)
-            .timeout(Duration::from_millis(10))
-            .open()
-            .map_err(io::Error::from)?;
-        Ok(Self { port })
+        let builder = serialport::new(path, baud).timeout(Duration::from_millis(10));
+        #[cfg(unix)]
+        let port = builder.open_native().map_err(io::Error::from)?;
+        #[cfg(not(unix))]
+        let port = builder.open().map_err(io::Error::from)?;
+        let mut t = Self { port, baud };
+        // A standard rate as its termios speed code (what a device driver, or a simulator
+        // reading the line settings, understands).
+        t.set_baud(baud)?;
+        Ok(t)
     }
+}
+
+/// Sets a standard rate with its termios code (`cfsetspeed`, as C programs and pyserial do;
+/// `serialport` sets every rate as an arbitrary one, `BOTHER`), another rate through `serialport`.
+#[cfg(all(feature = "serial", unix))]
+fn set_line_rate(port: &mut serialport::TTYPort, baud: u32) -> io::Result<()> {
+    use nix::sys::termios::{cfsetspeed, tcgetattr, tcsetattr, BaudRate, SetArg};
+    use std::os::unix::io::AsRawFd;
+    let code = match baud {
+        9600 => BaudRate::B9600,
+        19200 => BaudRate::B19200,
+        38400 => BaudRate::B38400,
+        57600 => BaudRate::B57600,
+        115_200 => BaudRate::B115200,
+        230_400 => BaudRate::B230400,
+        #[cfg(any(target_os = "linux", target_os = "android", target_os = "freebsd"))]
+        460_800 => BaudRate::B460800,
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        921_600 => BaudRate::B921600,
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        3_000_000 => BaudRate::B3000000,
+        _ => {
+            use serialport::SerialPort;
+            return port.set_baud_rate(baud).map_err(io::Error::from);
+        }
+    };
+    let fd = port.as_raw_fd();
+    let mut t = tcgetattr(fd).map_err(io::Error::from)?;
+    cfsetspeed(&mut t, code).map_err(io::Error::from)?;
+    tcsetattr(fd, SetArg::TCSANOW, &t).map_err(io::Error::from)
+}
+
+#[cfg(all(feature = "serial", not(unix)))]
+fn set_line_rate(port: &mut Box<dyn serialport::SerialPort>, baud: u32) -> io::Result<()> {
+    port.set_baud_rate(baud).map_err(io::Error::from)
 }
 
 #[cfg(feature = "serial")]
@@ -118,7 +188,25 @@ impl Transport for SerialTransport {
         self.port.flush()
     }
 
+    fn clear_input(&mut self) -> io::Result<()> {
+        use serialport::SerialPort;
+        self.port
+            .clear(serialport::ClearBuffer::Input)
+            .map_err(io::Error::from)
+    }
+
+    fn baud(&self) -> Option<u32> {
+        Some(self.baud)
+    }
+
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        set_line_rate(&mut self.port, baud)?;
+        self.baud = baud;
+        Ok(())
+    }
+
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        use serialport::SerialPort;
         self.port
             .set_timeout(timeout.max(Duration::from_millis(1)))
             .map_err(io::Error::from)?;
@@ -310,6 +398,17 @@ pub enum SessionError {
     Connect(String),
     /// Reading or writing the connection failed.
     Io(io::Error),
+    /// The port went away while the command waited for its reply (it is not retried; with
+    /// reconnection on, the link was recovered before this was returned, when it could be).
+    LinkLost {
+        /// Command name.
+        name: &'static str,
+        /// The error that ended the port.
+        reason: String,
+    },
+    /// Getting through failed: no answer to the idle command or at any baud rate, or the port
+    /// did not come back before the reconnection deadline (the text says which).
+    Link(String),
 }
 
 impl fmt::Display for SessionError {
@@ -327,6 +426,8 @@ impl fmt::Display for SessionError {
             SessionError::Start(e) => write!(f, "cannot start the command: {e}"),
             SessionError::Address(m) | SessionError::Connect(m) => f.write_str(m),
             SessionError::Io(e) => write!(f, "connection: {}", io_message(e)),
+            SessionError::LinkLost { name, reason } => write!(f, "{name}: link lost ({reason})"),
+            SessionError::Link(m) => write!(f, "link: {m}"),
         }
     }
 }
@@ -342,10 +443,39 @@ impl From<io::Error> for SessionError {
 type PacketHandler = Box<dyn FnMut(u64, &Packet<'_>)>;
 type FieldHandler = Box<dyn FnMut(&FieldValue, &Packet<'_>)>;
 type EventHandler = Box<dyn FnMut(&SessionEvent<'_>)>;
+type BytesHandler = Box<dyn FnMut(&[u8])>;
+type LinkHandler = Box<dyn FnMut(&str)>;
+type Opener<T> = Box<dyn FnMut(u32) -> Result<T, SessionError>>;
+
+/// How often a lost port is reopened, in milliseconds.
+pub const RECONNECT_INTERVAL_MS: u64 = 500;
+/// How long a lost port is reopened when the application asks for reconnection without a
+/// deadline of its own, in milliseconds.
+pub const DEFAULT_RECONNECT_MS: u64 = 10_000;
+/// How long the input is left to drain after a flush before an idle attempt is repeated.
+pub const QUIET_MS: u64 = 50;
+/// The most settings a device remembers to re-apply after a reconnection (the latest per
+/// command and first parameter wins; beyond this the oldest is forgotten).
+pub const MAX_SETTINGS: usize = 64;
+
+/// What [`Device::to_idle`] did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Idle {
+    /// The attempt that was acknowledged (1 to the spec's attempts), counted over every baud
+    /// rate tried.
+    pub attempts: u32,
+    /// Bytes received meanwhile and dropped (data packets and skipped bytes).
+    pub dropped: u64,
+    /// The baud rate the device answered at, when it had to be found.
+    pub baud: Option<u32>,
+}
 
 /// A session over a transport, blocking: [`Device::run`] sends a command and waits for its
 /// result, feeding every received byte to the session, so data packets reach the handlers
-/// meanwhile.
+/// meanwhile. It gets a streaming device to idle ([`Device::to_idle`]), finds the baud rate of
+/// a serial port ([`Device::find_baud`]) and, when asked ([`Device::with_reconnect_ms`]),
+/// reopens a lost port and re-applies the settings sent since it connected, reporting each step
+/// in one line ([`Device::on_link`]).
 pub struct Device<T: Transport = Box<dyn Transport>> {
     transport: T,
     session: Session<1>,
@@ -354,21 +484,41 @@ pub struct Device<T: Transport = Box<dyn Transport>> {
     on_packet: Vec<PacketHandler>,
     on_field: Vec<(u8, u8, FieldHandler)>,
     on_event: Option<EventHandler>,
+    on_bytes: Option<BytesHandler>,
+    on_link: Option<LinkHandler>,
+    opener: Option<Opener<T>>,
+    address: String,
+    baud: u32,
+    timeout_ms: u64,
+    auto_baud: bool,
+    reconnect_ms: Option<u64>,
+    recovering: bool,
+    // Bytes dropped since `Some(0)`: while getting through, nothing reaches the handlers.
+    dropping: Option<u64>,
+    settings: Vec<(String, FieldValue)>,
 }
 
 /// Connects to `address` (`tcp:HOST:PORT` or a serial port path at `baud`) for `model` (its
-/// layouts decode, and commands it does not support are refused before sending).
+/// layouts decode, and commands it does not support are refused before sending). The device
+/// can reopen the address ([`Device::with_reconnect_ms`]).
 pub fn connect(
     address: &str,
     model: Option<Model>,
     baud: u32,
 ) -> Result<Device<Box<dyn Transport>>, SessionError> {
-    Ok(Device::new(open_transport(address, baud)?, model))
+    let transport = open_transport(address, baud)?;
+    let again = address.to_string();
+    let mut device = Device::new(transport, model);
+    device.opener = Some(Box::new(move |b| open_transport(&again, b)));
+    device.address = address.to_string();
+    device.baud = baud;
+    Ok(device)
 }
 
 impl<T: Transport> Device<T> {
     /// A device on `transport`, for `model`.
     pub fn new(transport: T, model: Option<Model>) -> Self {
+        let baud = transport.baud().unwrap_or(DEFAULT_BAUD);
         Self {
             transport,
             session: Session::new(model),
@@ -377,12 +527,24 @@ impl<T: Transport> Device<T> {
             on_packet: Vec::new(),
             on_field: Vec::new(),
             on_event: None,
+            on_bytes: None,
+            on_link: None,
+            opener: None,
+            address: String::new(),
+            baud,
+            timeout_ms: crate::session::DEFAULT_TIMEOUT_MS,
+            auto_baud: false,
+            reconnect_ms: None,
+            recovering: false,
+            dropping: None,
+            settings: Vec::new(),
         }
     }
 
     /// Sets the reply timeout of every command (default 1000 ms, plus the spec's allowance).
     pub fn with_timeout_ms(mut self, ms: u64) -> Self {
         self.session = core::mem::take(&mut self.session).with_timeout_ms(ms);
+        self.timeout_ms = ms;
         self
     }
 
@@ -392,9 +554,46 @@ impl<T: Transport> Device<T> {
         self
     }
 
+    /// On a serial port, when the idle command gets no answer at the configured rate, tries the
+    /// model's supported rates ([`Device::find_baud`]).
+    pub fn with_auto_baud(mut self, on: bool) -> Self {
+        self.auto_baud = on;
+        self
+    }
+
+    /// When the port goes away, reopens it every [`RECONNECT_INTERVAL_MS`] for up to `ms`
+    /// milliseconds ([`DEFAULT_RECONNECT_MS`] is the usual choice), then gets to idle, re-sends
+    /// the settings sent since connecting, in order, and resumes. Needs a device made by
+    /// [`connect`] or given a way to reopen ([`Device::with_opener`]).
+    pub fn with_reconnect_ms(mut self, ms: u64) -> Self {
+        self.reconnect_ms = Some(ms);
+        self
+    }
+
+    /// How to reopen the connection (`open(baud)`), named `address` in the link's reports.
+    pub fn with_opener(
+        mut self,
+        address: &str,
+        open: impl FnMut(u32) -> Result<T, SessionError> + 'static,
+    ) -> Self {
+        self.opener = Some(Box::new(open));
+        self.address = address.to_string();
+        self
+    }
+
     /// The selected device model.
     pub fn model(&self) -> Option<Model> {
         self.session.device()
+    }
+
+    /// The baud rate the device is used at (the configured one, or the one found).
+    pub fn baud(&self) -> u32 {
+        self.baud
+    }
+
+    /// The settings that a reconnection re-applies, in the order they are sent.
+    pub fn settings(&self) -> impl Iterator<Item = &FieldValue> {
+        self.settings.iter().map(|(_, v)| v)
     }
 
     /// Milliseconds since the device was opened (the session's clock).
@@ -423,9 +622,42 @@ impl<T: Transport> Device<T> {
         self.on_event = Some(Box::new(handler));
     }
 
+    /// Calls `handler` with the bytes received, before they are parsed (not while getting
+    /// through: see [`Device::to_idle`]).
+    pub fn on_bytes(&mut self, handler: impl FnMut(&[u8]) + 'static) {
+        self.on_bytes = Some(Box::new(handler));
+    }
+
+    /// Calls `handler` with one line for each step of getting through (`link: idle: no ACK in
+    /// 300 ms while streaming (4212 bytes dropped), flushing, attempt 2 of 3`, `link: baud: ...`,
+    /// `link: port lost ...`, `link: reconnected ...`).
+    pub fn on_link(&mut self, handler: impl FnMut(&str) + 'static) {
+        self.on_link = Some(Box::new(handler));
+    }
+
+    fn log(&mut self, text: &str) {
+        if let Some(h) = self.on_link.as_mut() {
+            h(&format!("link: {text}"));
+        }
+    }
+
     /// Sends the command and waits for its result (never an error for nack, timeout or
-    /// refusal: see [`Completed::status`]; errors are I/O and commands that do not encode).
+    /// refusal: see [`Completed::status`]; errors are I/O, commands that do not encode and a
+    /// lost link). A setting that is acknowledged (function 1 of a command with a function
+    /// selector, and the resume command) is remembered for reconnections.
     pub fn run(
+        &mut self,
+        command: &FieldValue,
+        options: StartOptions,
+    ) -> Result<Completed, SessionError> {
+        let done = self.exchange(command, options)?;
+        if done.is_ok() {
+            self.remember(command);
+        }
+        Ok(done)
+    }
+
+    fn exchange(
         &mut self,
         command: &FieldValue,
         options: StartOptions,
@@ -436,26 +668,38 @@ impl<T: Transport> Device<T> {
             .session
             .start(command, now, options)
             .map_err(SessionError::Start)?;
-        if let Some(r) = &started.result {
+        let (id, deadline, result) = (started.id, started.deadline, started.result);
+        let packet = started.packet.to_vec();
+        let name = crate::commands::command_facts(command).map_or("", |f| f.name);
+        if let Some(r) = &result {
             let done = Completed::from_result(r, model);
-            if !started.packet.is_empty() {
-                let packet = started.packet.to_vec();
-                self.transport.send(&packet)?;
+            if self.dropping.is_none() {
+                if let Some(h) = self.on_event.as_mut() {
+                    h(&SessionEvent::Result(*r));
+                }
+            }
+            if !packet.is_empty() {
+                if let Err(e) = self.transport.send(&packet) {
+                    return Err(self.lost(e, name));
+                }
             }
             return Ok(done);
         }
-        let (id, deadline) = (started.id, started.deadline);
-        let packet = started.packet.to_vec();
-        self.transport.send(&packet)?;
+        if let Err(e) = self.transport.send(&packet) {
+            return Err(self.lost(e, name));
+        }
         loop {
             let mut done = None;
             let wake = self.session.next_deadline().unwrap_or(deadline);
             let wait = wake.saturating_sub(self.now_ms());
-            self.pump(wait, &mut |r| {
+            let pumped = self.pump(wait, &mut |r| {
                 if r.id == id {
                     done = Some(Completed::from_result(r, model));
                 }
-            })?;
+            });
+            if let Err(e) = pumped {
+                return Err(self.lost(e, name));
+            }
             if let Some(done) = done {
                 return Ok(done);
             }
@@ -467,7 +711,8 @@ impl<T: Transport> Device<T> {
         self.run(command, StartOptions::default())?.into_result()
     }
 
-    /// Receives for `duration_ms`, routing every packet to the handlers.
+    /// Receives for `duration_ms`, routing every packet to the handlers (with reconnection on,
+    /// a lost port is reopened meanwhile).
     pub fn listen(&mut self, duration_ms: u64) -> Result<(), SessionError> {
         let end = self.now_ms().saturating_add(duration_ms);
         loop {
@@ -475,8 +720,263 @@ impl<T: Transport> Device<T> {
             if now >= end {
                 return Ok(());
             }
+            if let Err(e) = self.pump(end - now, &mut |_| {}) {
+                self.session.abandon();
+                self.recover(e)?;
+            }
+        }
+    }
+
+    /// The port failed under a command: it is forgotten (not retried), the link recovered when
+    /// reconnection is on; the error to return for the command.
+    fn lost(&mut self, e: io::Error, name: &'static str) -> SessionError {
+        self.session.abandon();
+        let reason = io_message(&e);
+        if self.reconnect_ms.is_none() || self.opener.is_none() || self.recovering {
+            return SessionError::Io(e);
+        }
+        match self.recover(e) {
+            Ok(()) => SessionError::LinkLost { name, reason },
+            Err(err) => err,
+        }
+    }
+
+    /// Reopens the lost port every [`RECONNECT_INTERVAL_MS`] until the deadline, then gets to
+    /// idle, re-applies the settings and resumes.
+    fn recover(&mut self, e: io::Error) -> Result<(), SessionError> {
+        let (Some(limit), false) = (self.reconnect_ms, self.recovering) else {
+            return Err(SessionError::Io(e));
+        };
+        if self.opener.is_none() {
+            return Err(SessionError::Io(e));
+        }
+        let reason = io_message(&e);
+        let address = self.address.clone();
+        self.log(&format!(
+            "port lost ({reason}), reopening {address} every {RECONNECT_INTERVAL_MS} ms"
+        ));
+        let began = Instant::now();
+        let limit = Duration::from_millis(limit);
+        let interval = Duration::from_millis(RECONNECT_INTERVAL_MS);
+        loop {
+            let opened = match self.opener.as_mut() {
+                Some(open) => open(self.baud),
+                None => return Err(SessionError::Io(e)),
+            };
+            match opened {
+                Ok(t) => {
+                    self.transport = t;
+                    break;
+                }
+                Err(_) if began.elapsed() + interval <= limit => std::thread::sleep(interval),
+                Err(_) => {
+                    return Err(SessionError::Link(format!(
+                        "port lost ({reason}), {address} not back after {} ms",
+                        limit.as_millis()
+                    )))
+                }
+            }
+        }
+        // What the old port left half-parsed is dropped.
+        let now = self.now_ms();
+        self.session.close(now, |_| {});
+        self.recovering = true;
+        let outer = self.dropping.replace(0);
+        let applied = self.reapply();
+        self.dropping = outer;
+        self.recovering = false;
+        let applied = applied?;
+        self.log(&format!(
+            "reconnected after {:.1} s, re-applied {applied} settings",
+            began.elapsed().as_secs_f64()
+        ));
+        Ok(())
+    }
+
+    /// After a reconnection: to idle, then the remembered settings, in order.
+    fn reapply(&mut self) -> Result<usize, SessionError> {
+        if link_command(link_facts().idle, self.session.device()).is_some() {
+            self.idle_through()?;
+        }
+        let settings: Vec<FieldValue> = self.settings().copied().collect();
+        let mut applied = 0;
+        for command in &settings {
+            if self.exchange(command, StartOptions::default())?.is_ok() {
+                applied += 1;
+            }
+        }
+        Ok(applied)
+    }
+
+    /// Remembers an acknowledged setting (the latest per command and first parameter wins).
+    fn remember(&mut self, command: &FieldValue) {
+        let Some(facts) = crate::commands::command_facts(command) else {
+            return;
+        };
+        let link = link_facts();
+        let key = (facts.set, facts.descriptor);
+        if Some(key) == link.idle {
+            // To idle: the streams stay off after a reconnection until resumed again.
+            self.settings.retain(|(_, v)| {
+                crate::commands::command_facts(v).map(|f| (f.set, f.descriptor)) != link.resume
+            });
+            return;
+        }
+        if crate::commands::command_function(command) != Some(1) && Some(key) != link.resume {
+            return;
+        }
+        let key = setting_key(command, facts);
+        self.settings.retain(|(k, _)| *k != key);
+        if self.settings.len() >= MAX_SETTINGS {
+            self.settings.remove(0);
+        }
+        self.settings.push((key, *command));
+    }
+
+    /// Gets the device to idle while it may be streaming at full rate: sends the idle command
+    /// and waits for its ACK, dropping (and counting) what arrives meanwhile; without an
+    /// answer, flushes the input, waits a quiet time and tries again, up to the spec's
+    /// attempts (each with the command's timeout). On a serial port with auto-baud on
+    /// ([`Device::with_auto_baud`]), then finds the baud rate and tries again at it.
+    pub fn to_idle(&mut self) -> Result<Idle, SessionError> {
+        let outer = self.dropping.replace(0);
+        let r = self.idle_through();
+        self.dropping = outer;
+        r
+    }
+
+    fn idle_through(&mut self) -> Result<Idle, SessionError> {
+        let facts = link_facts();
+        let idle = link_command(facts.idle, self.session.device())
+            .ok_or_else(|| SessionError::Link("idle: the protocol has no idle command".into()))?;
+        let mut idle_report = self.idle_attempts(&idle, facts.attempts)?;
+        let mut baud = None;
+        if idle_report.is_none() && self.auto_baud && self.transport.baud().is_some() {
+            baud = self.find_baud()?;
+            if baud.is_some() {
+                idle_report = self.idle_attempts(&idle, facts.attempts)?;
+            }
+        }
+        match idle_report {
+            Some((attempts, dropped)) => Ok(Idle {
+                attempts,
+                dropped,
+                baud,
+            }),
+            None => Err(SessionError::Link(format!(
+                "idle: no ACK after {} attempts",
+                facts.attempts
+            ))),
+        }
+    }
+
+    /// The idle attempts at the current rate: `(attempt, bytes dropped)` of the one that was
+    /// acknowledged, `None` when none was.
+    fn idle_attempts(
+        &mut self,
+        idle: &FieldValue,
+        attempts: u32,
+    ) -> Result<Option<(u32, u64)>, SessionError> {
+        let mut total = 0;
+        for attempt in 1..=attempts {
+            self.dropping = Some(0);
+            let done = self.exchange(idle, StartOptions::default())?;
+            let dropped = self.dropping.unwrap_or(0);
+            total += dropped;
+            match done.status {
+                Status::Ack | Status::Sent => return Ok(Some((attempt, total))),
+                Status::Timeout => {}
+                _ => {
+                    return Err(done
+                        .into_result()
+                        .err()
+                        .unwrap_or(SessionError::Link("idle: no ACK".into())))
+                }
+            }
+            if attempt == attempts {
+                break;
+            }
+            self.log(&format!(
+                "idle: no ACK in {} ms while streaming ({dropped} bytes dropped), flushing, attempt {} of {attempts}",
+                self.timeout_ms,
+                attempt + 1
+            ));
+            self.flush_input()?;
+        }
+        Ok(None)
+    }
+
+    /// Flushes the input: the transport's buffer, what arrives during a quiet time, and the
+    /// parser's partial packet (all counted as dropped).
+    fn flush_input(&mut self) -> Result<(), SessionError> {
+        self.transport.clear_input()?;
+        let end = self.now_ms().saturating_add(QUIET_MS);
+        loop {
+            let now = self.now_ms();
+            if now >= end {
+                break;
+            }
             self.pump(end - now, &mut |_| {})?;
         }
+        self.transport.clear_input()?;
+        let now = self.now_ms();
+        let mut dropped = 0;
+        self.session.close(now, |e| {
+            dropped += match e {
+                SessionEvent::Packet { packet, .. } => packet.bytes().len() as u64,
+                SessionEvent::Skip { count, .. } => count,
+                SessionEvent::Result(_) => 0,
+            }
+        });
+        if let Some(d) = self.dropping.as_mut() {
+            *d += dropped;
+        }
+        Ok(())
+    }
+
+    /// On a serial port whose device does not answer at the current rate: tries the model's
+    /// supported rates (the default first, then descending), each with a ping after a flush,
+    /// and stays at the first that answers (`Some(rate)`); `None` when none does (the port is
+    /// left at the rate it had). Over TCP there is no rate: `None`.
+    pub fn find_baud(&mut self) -> Result<Option<u32>, SessionError> {
+        let Some(current) = self.transport.baud() else {
+            return Ok(None);
+        };
+        let facts = link_facts();
+        let model = self.session.device();
+        let ping = link_command(facts.ping, model)
+            .ok_or_else(|| SessionError::Link("baud: the protocol has no ping command".into()))?;
+        let mut rates = vec![current, facts.default_baud];
+        let mut supported = facts.bauds.to_vec();
+        supported.sort_unstable_by(|a, b| b.cmp(a));
+        rates.extend(supported);
+        let mut seen = Vec::new();
+        rates.retain(|r| {
+            let fresh = !seen.contains(r);
+            seen.push(*r);
+            fresh
+        });
+        let outer = self.dropping.replace(self.dropping.unwrap_or(0));
+        let mut previous = current;
+        let mut found = None;
+        for &rate in &rates[1..] {
+            self.log(&format!("baud: no answer at {previous}, trying {rate}"));
+            self.transport.set_baud(rate)?;
+            self.flush_input()?;
+            let done = self.exchange(&ping, StartOptions::default())?;
+            if matches!(done.status, Status::Ack | Status::Nack) {
+                self.log(&format!("baud: device answers at {rate}"));
+                found = Some(rate);
+                break;
+            }
+            previous = rate;
+        }
+        self.dropping = outer;
+        match found {
+            Some(rate) => self.baud = rate,
+            None => self.transport.set_baud(current)?,
+        }
+        Ok(found)
     }
 
     /// Waits up to `wait_ms` for bytes and feeds them (or runs the timeouts).
@@ -484,7 +984,7 @@ impl<T: Transport> Device<T> {
         &mut self,
         wait_ms: u64,
         on_result: &mut dyn FnMut(&CommandResult<'_>),
-    ) -> Result<(), SessionError> {
+    ) -> io::Result<()> {
         let n = self
             .transport
             .receive(&mut self.buf, Duration::from_millis(wait_ms))?;
@@ -495,8 +995,21 @@ impl<T: Transport> Device<T> {
             on_packet,
             on_field,
             on_event,
+            on_bytes,
+            dropping,
             ..
         } = self;
+        if let Some(dropped) = dropping.as_mut() {
+            session.feed(&buf[..n], now, |e| match e {
+                SessionEvent::Result(r) => on_result(&r),
+                SessionEvent::Packet { packet, .. } => *dropped += packet.bytes().len() as u64,
+                SessionEvent::Skip { count, .. } => *dropped += count,
+            });
+            return Ok(());
+        }
+        if let Some(h) = on_bytes.as_mut() {
+            h(&buf[..n]);
+        }
         let model = session.device();
         session.feed(&buf[..n], now, |e| {
             if let Some(h) = on_event.as_mut() {
@@ -534,6 +1047,63 @@ impl<T: Transport> Device<T> {
             }
         });
         self.transport
+    }
+}
+
+/// The key of a remembered setting: the command and, when it has more than one parameter after
+/// the function selector, the first of them (a message format per descriptor set, a port's rate
+/// per port: a write of the same command for another of these is another setting).
+fn setting_key(command: &FieldValue, facts: &CommandFacts) -> String {
+    let mut values = String::new();
+    let _ = command.write_values_json(&mut values);
+    let first = match crate::json_read::parse(&values) {
+        Ok(crate::json_read::Json::Object(members)) => {
+            let params: Vec<_> = members
+                .into_iter()
+                .filter(|(k, _)| k != "function")
+                .collect();
+            // With one parameter, that is the setting's value, not a key.
+            match params.len() {
+                0 | 1 => None,
+                _ => params.into_iter().next().map(|(k, v)| format!("{k}={v:?}")),
+            }
+        }
+        _ => None,
+    };
+    format!(
+        "{}/{}/{}",
+        facts.set,
+        facts.descriptor,
+        first.unwrap_or_default()
+    )
+}
+
+/// The command (set, descriptor) as a value, when it takes no parameters.
+fn link_command(which: Option<(u8, u8)>, model: Option<Model>) -> Option<FieldValue> {
+    let (set, descriptor) = which?;
+    decode_field(set, descriptor, &[], model).ok()
+}
+
+/// The spec's facts about getting through (`link` of the protocol file).
+#[derive(Clone, Copy, Debug)]
+struct LinkFacts {
+    idle: Option<(u8, u8)>,
+    ping: Option<(u8, u8)>,
+    resume: Option<(u8, u8)>,
+    attempts: u32,
+    bauds: &'static [u32],
+    default_baud: u32,
+}
+
+// TEMPORARY until the generated link facts land (helper/link-py "spec: link facts").
+fn link_facts() -> LinkFacts {
+    LinkFacts {
+        idle: Some((0x01, 0x02)),
+        ping: Some((0x01, 0x01)),
+        resume: Some((0x01, 0x06)),
+        attempts: 3,
+        bauds: &[9600, 19200, 115_200, 230_400, 460_800, 921_600],
+        default_baud: 115_200,
     }
 }
 

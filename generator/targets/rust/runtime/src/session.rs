@@ -901,6 +901,17 @@ impl<const N: usize> Session<N> {
         self.wait_at = None;
     }
 
+    /// The link was lost: every pending command is forgotten (no result is reported; the
+    /// caller reports them as lost, they are not retried). Returns how many there were.
+    pub fn abandon(&mut self) -> usize {
+        let n = self.queue.len;
+        for slot in self.queue.slots.iter_mut() {
+            *slot = None;
+        }
+        self.queue.len = 0;
+        n
+    }
+
     fn expire<F: FnMut(SessionEvent<'_>)>(&mut self, now: u64, on: &mut F) {
         let mut i = 0;
         while i < self.queue.len {

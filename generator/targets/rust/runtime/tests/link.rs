@@ -1,0 +1,264 @@
+//! Unit tests of getting through (src/device.rs: reconnection, the settings re-applied, the link
+//! lines; src/session.rs: `Session::abandon`) against the test protocol rendered from
+//! tests/runtime_specs/ (`ping`, `gain` with a function selector; no idle command), over a
+//! scripted transport whose port can go away and come back. Getting a streaming device to idle
+//! and finding its baud rate are tested against the simulator (tests/conformance/test_link.py),
+//! with the MIP facts.
+
+use std::cell::RefCell;
+use std::collections::VecDeque;
+use std::io;
+use std::rc::Rc;
+use std::time::{Duration, Instant};
+
+use protocodec::builder::PacketBuilder;
+use protocodec::commands::ACK_DESCRIPTOR as ACK;
+use protocodec::device::{Device as Link, SessionError, Transport};
+use protocodec::fields::{FieldItem, Packet};
+use protocodec::parser::{Event, Parser};
+use protocodec::session::{Session, SessionEvent, StartOptions, Status};
+use protocodec::types::Function;
+use protocodec::wire::{Layout, Wire};
+use protocodec::{control, Device, FieldValue};
+
+const EIO: i32 = 5;
+
+/// The device's end of the line: answers every command with an ack while the port is up.
+struct Line {
+    up: bool,
+    parser: Parser,
+    inbox: VecDeque<u8>,
+    commands: Vec<(u8, u8, Vec<u8>)>,
+    opens: u32,
+}
+
+impl Line {
+    fn new() -> Rc<RefCell<Line>> {
+        Rc::new(RefCell::new(Line {
+            up: true,
+            parser: Parser::new(),
+            inbox: VecDeque::new(),
+            commands: Vec::new(),
+            opens: 0,
+        }))
+    }
+}
+
+struct Port(Rc<RefCell<Line>>);
+
+fn lost() -> io::Error {
+    io::Error::from_raw_os_error(EIO)
+}
+
+impl Transport for Port {
+    fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
+        let mut line = self.0.borrow_mut();
+        if !line.up {
+            return Err(lost());
+        }
+        let Line {
+            parser,
+            inbox,
+            commands,
+            ..
+        } = &mut *line;
+        parser.feed(bytes, |e| {
+            if let Event::Packet { bytes, .. } = e {
+                let packet = Packet::new(bytes).unwrap();
+                for item in packet.fields() {
+                    if let FieldItem::Field { descriptor, data } = item {
+                        commands.push((packet.set(), descriptor, data.to_vec()));
+                        let mut b = PacketBuilder::new(packet.set());
+                        b.add_raw_field(ACK, &[descriptor, 0]).unwrap();
+                        inbox.extend(b.finish());
+                    }
+                }
+            }
+        });
+        Ok(())
+    }
+
+    fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        let mut line = self.0.borrow_mut();
+        if !line.up {
+            return Err(lost());
+        }
+        if line.inbox.is_empty() {
+            drop(line);
+            std::thread::sleep(timeout.min(Duration::from_millis(5)));
+            return Ok(0);
+        }
+        let n = buf.len().min(line.inbox.len());
+        for (slot, b) in buf.iter_mut().zip(line.inbox.drain(..n)) {
+            *slot = b;
+        }
+        Ok(n)
+    }
+}
+
+fn ping() -> FieldValue {
+    FieldValue::Control(control::SetField::Ping(control::Ping::ZERO))
+}
+
+fn gain(function: Function, value: Option<u16>) -> FieldValue {
+    FieldValue::Control(control::SetField::Gain(control::Gain {
+        function,
+        gain: value,
+    }))
+}
+
+const GAIN: u8 = <control::Gain as Layout>::DESCRIPTOR;
+
+/// A device on `line` that reopens it (the `fails` first reopens fail) and logs its link lines.
+fn device(
+    line: &Rc<RefCell<Line>>,
+    fails: u32,
+    reconnect_ms: Option<u64>,
+) -> (Link<Port>, Rc<RefCell<Vec<String>>>) {
+    let again = Rc::clone(line);
+    let mut dev = Link::new(Port(Rc::clone(line)), Some(Device::Alpha))
+        .with_timeout_ms(200)
+        .with_opener("test-port", move |_baud| {
+            let mut l = again.borrow_mut();
+            l.opens += 1;
+            if l.opens <= fails {
+                return Err(SessionError::Connect("cannot open test-port".into()));
+            }
+            l.up = true;
+            l.parser = Parser::new();
+            Ok(Port(Rc::clone(&again)))
+        });
+    if let Some(ms) = reconnect_ms {
+        dev = dev.with_reconnect_ms(ms);
+    }
+    let logs = Rc::new(RefCell::new(Vec::new()));
+    let sink = Rc::clone(&logs);
+    dev.on_link(move |text| sink.borrow_mut().push(text.to_string()));
+    (dev, logs)
+}
+
+#[test]
+fn a_lost_port_fails_the_command_in_flight_then_the_settings_are_reapplied() {
+    let line = Line::new();
+    let (mut dev, logs) = device(&line, 1, Some(3000));
+    dev.call(&gain(Function::WRITE, Some(5))).unwrap();
+    dev.call(&gain(Function::WRITE, Some(7))).unwrap();
+    dev.call(&gain(Function::READ, None)).unwrap_err(); // no gain_value reply: not a setting
+    dev.call(&ping()).unwrap();
+    // The latest write of a one-parameter command wins; reads and pings are not settings.
+    assert_eq!(
+        dev.settings().copied().collect::<Vec<_>>(),
+        [gain(Function::WRITE, Some(7))]
+    );
+
+    line.borrow_mut().up = false;
+    line.borrow_mut().commands.clear();
+    let began = Instant::now();
+    match dev.call(&ping()) {
+        Err(SessionError::LinkLost { name, reason }) => {
+            assert_eq!((name, reason.as_str()), ("ping", "Input/output error"));
+        }
+        other => panic!("expected link lost, got {other:?}"),
+    }
+    // One failed reopen, then one 500 ms later.
+    let took = began.elapsed();
+    assert!(took >= Duration::from_millis(500), "{took:?}");
+    assert!(took < Duration::from_millis(1500), "{took:?}");
+    assert_eq!(line.borrow().opens, 2);
+    // Re-applied in order, the command in flight not retried (the protocol has no idle command).
+    let sent = line.borrow().commands.clone();
+    assert_eq!(sent, [(control::SET, GAIN, vec![1, 7, 0])]);
+    let logs = logs.borrow().clone();
+    assert_eq!(logs.len(), 2, "{logs:?}");
+    assert_eq!(
+        logs[0],
+        "link: port lost (Input/output error), reopening test-port every 500 ms"
+    );
+    assert!(
+        logs[1].starts_with("link: reconnected after 0.")
+            && logs[1].ends_with(" s, re-applied 1 settings"),
+        "{}",
+        logs[1]
+    );
+    // The link works again.
+    assert_eq!(
+        dev.run(&ping(), StartOptions::default()).unwrap().status,
+        Status::Ack
+    );
+}
+
+#[test]
+fn reconnection_gives_up_at_its_deadline_with_one_error() {
+    let line = Line::new();
+    let (mut dev, logs) = device(&line, u32::MAX, Some(1200));
+    line.borrow_mut().up = false;
+    let began = Instant::now();
+    let err = dev.call(&ping()).unwrap_err();
+    let took = began.elapsed();
+    assert_eq!(
+        err.to_string(),
+        "link: port lost (Input/output error), test-port not back after 1200 ms"
+    );
+    // Reopened at 0, 500 and 1000 ms; the next would be past the deadline.
+    assert_eq!(line.borrow().opens, 3);
+    assert!(took >= Duration::from_millis(1000) && took < Duration::from_millis(1500));
+    assert_eq!(logs.borrow().len(), 1);
+}
+
+#[test]
+fn without_reconnection_a_lost_port_is_an_io_error() {
+    let line = Line::new();
+    let (mut dev, logs) = device(&line, 0, None);
+    line.borrow_mut().up = false;
+    match dev.call(&ping()) {
+        Err(SessionError::Io(e)) => assert_eq!(e.raw_os_error(), Some(EIO)),
+        other => panic!("expected an I/O error, got {other:?}"),
+    }
+    assert_eq!(line.borrow().opens, 0);
+    assert!(logs.borrow().is_empty());
+}
+
+#[test]
+fn listening_rides_through_a_lost_port() {
+    let line = Line::new();
+    let (mut dev, logs) = device(&line, 0, Some(2000));
+    dev.call(&gain(Function::WRITE, Some(3))).unwrap();
+    line.borrow_mut().up = false;
+    line.borrow_mut().commands.clear();
+    dev.listen(100).unwrap();
+    assert_eq!(
+        line.borrow().commands,
+        [(control::SET, GAIN, vec![1, 3, 0])]
+    );
+    assert_eq!(logs.borrow().len(), 2);
+}
+
+#[test]
+fn without_an_idle_command_to_idle_says_so() {
+    let line = Line::new();
+    let (mut dev, _) = device(&line, 0, None);
+    let err = dev.to_idle().unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "link: idle: the protocol has no idle command"
+    );
+    assert!(line.borrow().commands.is_empty());
+    // Over a transport without a baud rate there is none to find.
+    assert_eq!(dev.find_baud().unwrap(), None);
+}
+
+#[test]
+fn abandon_forgets_the_pending_commands_and_their_late_replies_are_packets() {
+    let mut s: Session<2> = Session::new(None);
+    let id = s.start(&ping(), 0, StartOptions::default()).unwrap().id;
+    assert_eq!(s.abandon(), 1);
+    assert!(!s.is_pending(id) && s.pending() == 0 && s.next_deadline().is_none());
+    let mut b = PacketBuilder::new(control::SET);
+    b.add_raw_field(ACK, &[<control::Ping as Layout>::DESCRIPTOR, 0])
+        .unwrap();
+    let mut events = Vec::new();
+    s.feed(b.finish(), 5000, |e| {
+        events.push(matches!(e, SessionEvent::Packet { .. }))
+    });
+    assert_eq!(events, [true]); // no timeout result, the ack routed as a packet
+}
