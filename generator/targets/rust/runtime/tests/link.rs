@@ -109,6 +109,16 @@ fn gain(function: Function, value: Option<u16>) -> FieldValue {
 
 const GAIN: u8 = <control::Gain as Layout>::DESCRIPTOR;
 
+/// The data of a gain write as the framing's byte order puts it.
+fn gain_data(value: u16) -> Vec<u8> {
+    let bytes = if protocodec::framing::BIG_ENDIAN {
+        value.to_be_bytes()
+    } else {
+        value.to_le_bytes()
+    };
+    vec![Function::WRITE.0, bytes[0], bytes[1]]
+}
+
 /// A device on `line` that reopens it (the `fails` first reopens fail) and logs its link lines.
 fn device(
     line: &Rc<RefCell<Line>>,
@@ -167,7 +177,7 @@ fn a_lost_port_fails_the_command_in_flight_then_the_settings_are_reapplied() {
     assert_eq!(line.borrow().opens, 2);
     // Re-applied in order, the command in flight not retried (the protocol has no idle command).
     let sent = line.borrow().commands.clone();
-    assert_eq!(sent, [(control::SET, GAIN, vec![1, 7, 0])]);
+    assert_eq!(sent, [(control::SET, GAIN, gain_data(7))]);
     let logs = logs.borrow().clone();
     assert_eq!(logs.len(), 2, "{logs:?}");
     assert_eq!(
@@ -226,10 +236,7 @@ fn listening_rides_through_a_lost_port() {
     line.borrow_mut().up = false;
     line.borrow_mut().commands.clear();
     dev.listen(100).unwrap();
-    assert_eq!(
-        line.borrow().commands,
-        [(control::SET, GAIN, vec![1, 3, 0])]
-    );
+    assert_eq!(line.borrow().commands, [(control::SET, GAIN, gain_data(3))]);
     assert_eq!(logs.borrow().len(), 2);
 }
 
