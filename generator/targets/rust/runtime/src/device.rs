@@ -591,6 +591,12 @@ impl<T: Transport> Device<T> {
         self.baud
     }
 
+    /// The earliest stream offset whose byte may still be reported to the handlers: a caller
+    /// that keeps the input ([`Device::on_bytes`]) can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        self.session.retain_from()
+    }
+
     /// The settings that a reconnection re-applies, in the order they are sent.
     pub fn settings(&self) -> impl Iterator<Item = &FieldValue> {
         self.settings.iter().map(|(_, v)| v)
@@ -622,8 +628,8 @@ impl<T: Transport> Device<T> {
         self.on_event = Some(Box::new(handler));
     }
 
-    /// Calls `handler` with the bytes received, before they are parsed (not while getting
-    /// through: see [`Device::to_idle`]).
+    /// Calls `handler` with every byte received, before it is parsed (those dropped while
+    /// getting through too: see [`Device::retain_from`]).
     pub fn on_bytes(&mut self, handler: impl FnMut(&[u8]) + 'static) {
         self.on_bytes = Some(Box::new(handler));
     }
@@ -999,6 +1005,9 @@ impl<T: Transport> Device<T> {
             dropping,
             ..
         } = self;
+        if let Some(h) = on_bytes.as_mut() {
+            h(&buf[..n]);
+        }
         if let Some(dropped) = dropping.as_mut() {
             session.feed(&buf[..n], now, |e| match e {
                 SessionEvent::Result(r) => on_result(&r),
@@ -1006,9 +1015,6 @@ impl<T: Transport> Device<T> {
                 SessionEvent::Skip { count, .. } => *dropped += count,
             });
             return Ok(());
-        }
-        if let Some(h) = on_bytes.as_mut() {
-            h(&buf[..n]);
         }
         let model = session.device();
         session.feed(&buf[..n], now, |e| {
