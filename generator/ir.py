@@ -20,6 +20,7 @@ from .passes import (
     collect_types,
     field_layouts,
     irregular_lengths,
+    link,
     link_responses,
     lookup_order,
     protocol_file,
@@ -51,6 +52,7 @@ PASSES = (
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
     capabilities,  # per device, the commands and data it supports (the descriptor lists)
+    link,  # getting through: idle/ping/resume commands, baud rates, settle time, bandwidth
     field_layouts,  # each shared field layout once, with its users
     lookup_order,  # the (set, descriptor) search order resolved for every set
     value_paths,  # how deep and how long a value path can get

@@ -30,6 +30,7 @@ def run(ctx: Context) -> None:
         "session": ctx.session,
         "simulation": ctx.simulation,
         "capabilities": ctx.capabilities,
+        "link": ctx.link,
         "function_selector": p.get("function_selector"),
         "reserved_fields": ctx.reserved,
         "types": [ctx.types[n] for n in sorted(ctx.types)],

@@ -53,6 +53,7 @@ class Context:
         self.session: dict | None = None  # session_rule: how replies are matched
         self.simulation: dict | None = None  # simulation: what the simulated device needs
         self.capabilities: dict = {}  # capabilities: per device, the commands and data it supports
+        self.link: dict = {}  # link: idle/ping/resume commands, baud rates, bandwidth calculation
         self.layouts: list[dict] = []  # field_layouts in IR form
         self.lookup: dict = {}
         self.value_paths: dict = {}

@@ -19,6 +19,7 @@ from generator.examples import (
     session_example,
     session_example_context,
 )
+from generator.linkfacts import link_facts
 from generator.naming import snake
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -197,6 +198,10 @@ class _Protocol:
             }
             for d in proto["devices"]
         ]
+        self.link = link_facts(proto)
+        for d, facts_of in zip(self.devices, self.link["devices"]):
+            d["baud_rates"] = [f"{r}u" for r in facts_of["rates"]]
+            d["default_baud"] = facts_of["default"] or 0
         self.layouts: list[dict] = []
         self.fields: list[dict] = []
         self.reserved = [self._field_view(None, r) for r in proto["reserved_fields"]]
@@ -844,6 +849,7 @@ class _Protocol:
             "error_message_max": self.error_message_max,
             "types": self.type_views,
             "devices": self.devices,
+            "link_facts": self.link,
             "layouts": self.layouts,
             "fields": self.fields,
             "reserved": self.reserved,

@@ -31,6 +31,7 @@ import re
 from generator import commands, examples, model
 from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import ExampleError
+from generator.linkfacts import link_facts
 from generator.naming import camel
 from generator.passes.lookup_order import entries as lookup_entries
 from generator.passes.lookup_order import set_kind
@@ -622,6 +623,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         inc = f"{root}/include/{pkg}"
         sets = P.set_models()
         caps = {c["device"]: c for c in proto.get("capabilities", {}).get("devices", [])}
+        link = link_facts(proto)
         ctx = {
             "ns": P.ns,
             "pkg": pkg,
@@ -638,9 +640,12 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
                     "manual": d["manual"],
                     "commands": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("commands", [])],
                     "data": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("data", [])],
+                    "baud_rates": [f"{r}u" for r in lf["rates"]],
+                    "default_baud": lf["default"] or 0,
                 }
-                for d in proto["devices"]
+                for d, lf in zip(proto["devices"], link["devices"])
             ],
+            "link_facts": link,
             "types": [P.type_model(t) for t in P.ordered_types()],
             "sets": sets,
             "lookup": P.lookup(),

@@ -23,6 +23,7 @@ import textwrap
 
 from generator import columns, commands, model
 from generator.examples import example_context, session_example, session_example_context
+from generator.linkfacts import link_facts
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -82,6 +83,7 @@ RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLA
     "_sim",
     "command_api",
     "capabilities",
+    "_link",
 }
 
 SCALARS = {name: f"_c.{p.scalar}" for name, p in facts.PRIMITIVES.items()}
@@ -672,6 +674,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx, **session)
         files[f"{root}/{pkg}/capabilities.py"] = env.get_template("python/package/capabilities.py.j2").render(
             **ctx, capabilities=_capabilities(proto)
+        )
+        files[f"{root}/{pkg}/_link.py"] = env.get_template("python/package/_link.py.j2").render(
+            **ctx, link_facts=link_facts(proto)
         )
         files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
             **ctx, **_sim_context(m, sets)

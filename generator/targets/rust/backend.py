@@ -13,6 +13,7 @@ import re
 
 from generator import commands, examples, model, naming
 from generator.examples import ExampleError
+from generator.linkfacts import link_facts
 from generator.naming import upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
@@ -457,8 +458,10 @@ class _Protocol:
                 "manual_lit": rust_str(d["manual"]),
                 "commands": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("commands", [])],
                 "data": [f"0x{s:02X}{x:02X}" for s, x in caps.get(d["id"], {}).get("data", [])],
+                "baud_rates": [str(r) for r in lf["rates"]],
+                "default_baud": lf["default"],
             }
-            for d in proto["devices"]
+            for d, lf in zip(proto["devices"], link_facts(proto)["devices"])
         ]
         reserved = self.reserved_model()
         groups = [s["variant"] for s in sets] + (["Reserved"] if reserved else [])
@@ -899,6 +902,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         ctx["bitfields"] = model.bitfield_cases()
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
+        ctx["link_facts"] = link_facts(proto)
         ctx["example"] = _example(proto)
         session = session_context(model)
         ctx.update(session)

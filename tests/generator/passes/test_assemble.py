@@ -36,6 +36,7 @@ def test_the_protocol_entry_has_the_documented_keys_and_no_notes(tmp_path):
         "session",
         "simulation",
         "capabilities",
+        "link",
         "function_selector",
         "reserved_fields",
         "types",

@@ -114,6 +114,38 @@ const uint16_t *mipc_device_data(mipc_device_t device, size_t *count) {
     return device_table(device, true, count);
 }
 
+/* The baud rates of each device's main port (the IR's `link`), ascending. */
+static const uint32_t k_gx5_45_baud_rates[] = {9600u, 19200u, 115200u, 230400u, 460800u, 921600u};
+static const uint32_t k_cv7_ins_baud_rates[] = {115200u, 230400u, 460800u, 921600u, 3000000u};
+
+const uint32_t *mipc_device_baud_rates(mipc_device_t device, size_t *count) {
+    assert(count != NULL);
+    switch (device) {
+    case MIPC_DEVICE_GX5_45:
+        *count = 6u;
+        return k_gx5_45_baud_rates;
+    case MIPC_DEVICE_CV7_INS:
+        *count = 5u;
+        return k_cv7_ins_baud_rates;
+    case MIPC_DEVICE_ANY:
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+uint32_t mipc_device_default_baud(mipc_device_t device) {
+    switch (device) {
+    case MIPC_DEVICE_GX5_45:
+        return 115200u;
+    case MIPC_DEVICE_CV7_INS:
+        return 0u;
+    case MIPC_DEVICE_ANY:
+    default:
+        return 0u;
+    }
+}
+
 static bool table_has(const uint16_t *table, size_t n, uint16_t key) {
     size_t lo = 0;
     while (lo < n) {

@@ -76,6 +76,32 @@ const uint16_t *mscipc_device_data(mscipc_device_t device, size_t *count) {
     return device_table(device, true, count);
 }
 
+/* The baud rates of each device's main port (the IR's `link`), ascending. */
+static const uint32_t k_ms_imu3020_baud_rates[] = {9600u, 19200u, 115200u, 230400u, 460800u, 921600u};
+
+const uint32_t *mscipc_device_baud_rates(mscipc_device_t device, size_t *count) {
+    assert(count != NULL);
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        *count = 6u;
+        return k_ms_imu3020_baud_rates;
+    case MSCIPC_DEVICE_ANY:
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+uint32_t mscipc_device_default_baud(mscipc_device_t device) {
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        return 0u;
+    case MSCIPC_DEVICE_ANY:
+    default:
+        return 0u;
+    }
+}
+
 static bool table_has(const uint16_t *table, size_t n, uint16_t key) {
     size_t lo = 0;
     while (lo < n) {

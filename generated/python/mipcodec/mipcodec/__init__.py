@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "a2fd522e9cd2b70f"
+SPEC_HASH = "08d79aee1d56e257"
 
 __all__ = [
     "SPEC_HASH",

@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "047d873309e7aee3"
+SPEC_HASH = "ccfd976fb610ed37"
 
 __all__ = [
     "SPEC_HASH",

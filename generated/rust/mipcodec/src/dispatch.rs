@@ -99,6 +99,23 @@ impl Device {
         }
     }
 
+    /// The baud rates of the device's main port as its manual lists them, ascending (the IR's
+    /// `link`; empty: none listed).
+    pub fn baud_rates(self) -> &'static [u32] {
+        match self {
+            Device::Gx5_45 => &[9600, 19200, 115200, 230400, 460800, 921600],
+            Device::Cv7Ins => &[115200, 230400, 460800, 921600, 3000000],
+        }
+    }
+
+    /// The default baud rate of the device's main port (`None`: its manual states none).
+    pub fn default_baud(self) -> Option<u32> {
+        match self {
+            Device::Gx5_45 => Some(115200),
+            Device::Cv7Ins => None,
+        }
+    }
+
     /// True when the device's manual documents the command or data quantity (set, descriptor);
     /// the sessions refuse a command for which this is false, before sending it.
     pub fn supports(self, set: u8, descriptor: u8) -> bool {

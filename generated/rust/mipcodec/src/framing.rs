@@ -56,6 +56,30 @@ pub const TIMESTAMPS: [(u8, usize); 3] = [(0xD3, 12), (0xD5, 8), (0xD7, 10)];
 /// Bytes of the largest sample key.
 pub const MAX_KEY: usize = 36;
 
+// Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through";
+// per device: `Device::baud_rates`, `Device::default_baud`).
+/// (set, descriptor) of set_to_idle, sent as it is: 3dm-gx5-45-dcp.txt:363, 3dm-gx5-45-dcp.txt:759, 3dm-cv7-ins-docs.txt:8043.
+pub const LINK_IDLE: Option<(u8, u8)> = Some((0x01, 0x02));
+/// (set, descriptor) of ping, sent as it is: 3dm-gx5-45-dcp.txt:748, 3dm-cv7-ins-docs.txt:8032.
+pub const LINK_PING: Option<(u8, u8)> = Some((0x01, 0x01));
+/// (set, descriptor) of resume, sent as it is: 3dm-gx5-45-dcp.txt:832, 3dm-cv7-ins-docs.txt:8099.
+pub const LINK_RESUME: Option<(u8, u8)> = Some((0x01, 0x06));
+/// Times the idle command is sent (each with the command's reply timeout) before giving up.
+pub const LINK_IDLE_ATTEMPTS: u32 = 3;
+/// Milliseconds after a baud-rate change before the device answers at the new rate (`None`: the
+/// manual states none): 3dm-gx5-45-dcp.txt:1297, 3dm-cv7-ins-docs.txt:7417, 3dm-cv7-ins-docs.txt:8144.
+pub const LINK_BAUD_SETTLE_MS: Option<u32> = Some(250);
+/// Whether the manual gives the UART bandwidth calculation (3dm-gx5-45-dcp.txt:536, 3dm-cv7-ins-docs.txt:4099):
+/// bits/s = LINK_UART_WORD_BITS * (LINK_PACKET_OVERHEAD * packets/s + sum of (field data size +
+/// LINK_FIELD_OVERHEAD) * field rate).
+pub const LINK_HAS_BANDWIDTH: bool = true;
+/// Bits per UART word (0 without the calculation).
+pub const LINK_UART_WORD_BITS: u32 = 10;
+/// Bytes of packet overhead per packet: sync, header, checksum (0 without the calculation).
+pub const LINK_PACKET_OVERHEAD: u32 = 6;
+/// Bytes of field header per field (0 without the calculation).
+pub const LINK_FIELD_OVERHEAD: u32 = 2;
+
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
 ///
 /// [`fletcher16_lanes`] where the target has vector registers the compiler can use for it (every

@@ -96,7 +96,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "a2fd522e9cd2b70f";
+pub const SPEC_HASH: &str = "08d79aee1d56e257";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

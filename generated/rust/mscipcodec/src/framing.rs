@@ -58,6 +58,30 @@ pub const TIMESTAMPS: [(u8, usize); 0] = [];
 /// Bytes of the largest sample key.
 pub const MAX_KEY: usize = 1;
 
+// Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through";
+// per device: `Device::baud_rates`, `Device::default_baud`).
+/// The manual names no idle command.
+pub const LINK_IDLE: Option<(u8, u8)> = None;
+/// (set, descriptor) of ping, sent as it is: ms-cip-doc00419-revM.txt:166.
+pub const LINK_PING: Option<(u8, u8)> = Some((0x01, 0x02));
+/// The manual names no resume command.
+pub const LINK_RESUME: Option<(u8, u8)> = None;
+/// Times the idle command is sent (each with the command's reply timeout) before giving up.
+pub const LINK_IDLE_ATTEMPTS: u32 = 3;
+/// Milliseconds after a baud-rate change before the device answers at the new rate (`None`: the
+/// manual states none): ms-cip-doc00419-revM.txt:528.
+pub const LINK_BAUD_SETTLE_MS: Option<u32> = Some(0);
+/// Whether the manual gives the UART bandwidth calculation:
+/// bits/s = LINK_UART_WORD_BITS * (LINK_PACKET_OVERHEAD * packets/s + sum of (field data size +
+/// LINK_FIELD_OVERHEAD) * field rate).
+pub const LINK_HAS_BANDWIDTH: bool = false;
+/// Bits per UART word (0 without the calculation).
+pub const LINK_UART_WORD_BITS: u32 = 0;
+/// Bytes of packet overhead per packet: sync, header, checksum (0 without the calculation).
+pub const LINK_PACKET_OVERHEAD: u32 = 0;
+/// Bytes of field header per field (0 without the calculation).
+pub const LINK_FIELD_OVERHEAD: u32 = 0;
+
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
 ///
 /// [`fletcher16_lanes`] where the target has vector registers the compiler can use for it (every

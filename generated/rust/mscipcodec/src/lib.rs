@@ -84,7 +84,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "047d873309e7aee3";
+pub const SPEC_HASH: &str = "ccfd976fb610ed37";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

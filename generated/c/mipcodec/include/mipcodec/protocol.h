@@ -63,6 +63,33 @@ static inline int mipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define MIPC_SESSION_ACK_OK 0u
 #define MIPC_SESSION_MAX_EXPECT 2
 
+/* Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through"):
+ * the idle, ping and resume commands (HAS 0: the manual names none), how many times the idle
+ * command is sent before giving up, the milliseconds after a baud-rate change before the device
+ * answers at the new rate (-1: the manual states none) and the manuals' UART bandwidth calculation
+ * (HAS 0: none): bits/s = UART_WORD_BITS * (PACKET_OVERHEAD * packets/s + sum of
+ * (field data size + FIELD_OVERHEAD) * field rate). Per device: mipc_device_baud_rates(). */
+/* set_to_idle: 3dm-gx5-45-dcp.txt:363, 3dm-gx5-45-dcp.txt:759, 3dm-cv7-ins-docs.txt:8043 */
+#define MIPC_LINK_HAS_IDLE 1
+#define MIPC_LINK_IDLE_SET 0x01
+#define MIPC_LINK_IDLE_DESCRIPTOR 0x02
+/* ping: 3dm-gx5-45-dcp.txt:748, 3dm-cv7-ins-docs.txt:8032 */
+#define MIPC_LINK_HAS_PING 1
+#define MIPC_LINK_PING_SET 0x01
+#define MIPC_LINK_PING_DESCRIPTOR 0x01
+/* resume: 3dm-gx5-45-dcp.txt:832, 3dm-cv7-ins-docs.txt:8099 */
+#define MIPC_LINK_HAS_RESUME 1
+#define MIPC_LINK_RESUME_SET 0x01
+#define MIPC_LINK_RESUME_DESCRIPTOR 0x06
+#define MIPC_LINK_IDLE_ATTEMPTS 3
+/* 3dm-gx5-45-dcp.txt:1297, 3dm-cv7-ins-docs.txt:7417, 3dm-cv7-ins-docs.txt:8144 */
+#define MIPC_LINK_BAUD_SETTLE_MS 250
+/* 3dm-gx5-45-dcp.txt:536, 3dm-cv7-ins-docs.txt:4099 */
+#define MIPC_LINK_HAS_BANDWIDTH 1
+#define MIPC_LINK_UART_WORD_BITS 10
+#define MIPC_LINK_PACKET_OVERHEAD 6
+#define MIPC_LINK_FIELD_OVERHEAD 2
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MIPC_PATH_MAX_DEPTH 3
 /** Enough room for any message mipc_decode_error_format() can produce. */

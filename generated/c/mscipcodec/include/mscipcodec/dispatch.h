@@ -31,6 +31,12 @@ const char *mscipc_device_manual(mscipc_device_t device);
  * table; *count is set to its length (0 and NULL for MSCIPC_DEVICE_ANY). No allocation. */
 const uint16_t *mscipc_device_commands(mscipc_device_t device, size_t *count);
 const uint16_t *mscipc_device_data(mscipc_device_t device, size_t *count);
+/** The baud rates of the device's main port as its manual lists them (the IR's `link`), ascending,
+ * in a constant table; *count is set to its length (0 and NULL for MSCIPC_DEVICE_ANY or a model
+ * whose manual lists none). */
+const uint32_t *mscipc_device_baud_rates(mscipc_device_t device, size_t *count);
+/** The default baud rate of the device's main port; 0 when its manual states none. */
+uint32_t mscipc_device_default_baud(mscipc_device_t device);
 /** True when the device's manual documents the command or data quantity (set, descriptor); the
  * sessions refuse a command for which this is false, before sending it. */
 bool mscipc_device_supports(mscipc_device_t device, uint8_t set, uint8_t descriptor);

@@ -64,6 +64,30 @@ static inline int mscipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define MSCIPC_SESSION_ACK_OK 0u
 #define MSCIPC_SESSION_MAX_EXPECT 1
 
+/* Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through"):
+ * the idle, ping and resume commands (HAS 0: the manual names none), how many times the idle
+ * command is sent before giving up, the milliseconds after a baud-rate change before the device
+ * answers at the new rate (-1: the manual states none) and the manuals' UART bandwidth calculation
+ * (HAS 0: none): bits/s = UART_WORD_BITS * (PACKET_OVERHEAD * packets/s + sum of
+ * (field data size + FIELD_OVERHEAD) * field rate). Per device: mscipc_device_baud_rates(). */
+#define MSCIPC_LINK_HAS_IDLE 0
+#define MSCIPC_LINK_IDLE_SET 0x00
+#define MSCIPC_LINK_IDLE_DESCRIPTOR 0x00
+/* ping: ms-cip-doc00419-revM.txt:166 */
+#define MSCIPC_LINK_HAS_PING 1
+#define MSCIPC_LINK_PING_SET 0x01
+#define MSCIPC_LINK_PING_DESCRIPTOR 0x02
+#define MSCIPC_LINK_HAS_RESUME 0
+#define MSCIPC_LINK_RESUME_SET 0x00
+#define MSCIPC_LINK_RESUME_DESCRIPTOR 0x00
+#define MSCIPC_LINK_IDLE_ATTEMPTS 3
+/* ms-cip-doc00419-revM.txt:528 */
+#define MSCIPC_LINK_BAUD_SETTLE_MS 0
+#define MSCIPC_LINK_HAS_BANDWIDTH 0
+#define MSCIPC_LINK_UART_WORD_BITS 0
+#define MSCIPC_LINK_PACKET_OVERHEAD 0
+#define MSCIPC_LINK_FIELD_OVERHEAD 0
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MSCIPC_PATH_MAX_DEPTH 2
 /** Enough room for any message mscipc_decode_error_format() can produce. */

@@ -135,6 +135,73 @@ inline constexpr DescriptorTable device_data(Device d) {
     return {nullptr, 0};
 }
 
+// Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through").
+
+/// A command a session sends as it is (no parameters); `present` false: the manual names none.
+struct LinkCommand {
+    bool present;
+    std::uint8_t set;
+    std::uint8_t descriptor;
+};
+/// set_to_idle: 3dm-gx5-45-dcp.txt:363, 3dm-gx5-45-dcp.txt:759, 3dm-cv7-ins-docs.txt:8043
+inline constexpr LinkCommand kLinkIdle{true, 0x01, 0x02};
+/// ping: 3dm-gx5-45-dcp.txt:748, 3dm-cv7-ins-docs.txt:8032
+inline constexpr LinkCommand kLinkPing{true, 0x01, 0x01};
+/// resume: 3dm-gx5-45-dcp.txt:832, 3dm-cv7-ins-docs.txt:8099
+inline constexpr LinkCommand kLinkResume{true, 0x01, 0x06};
+/// Times the idle command is sent (each with the command's reply timeout) before giving up.
+inline constexpr unsigned kLinkIdleAttempts = 3;
+/// Milliseconds after a baud-rate change before the device answers at the new rate (-1: the
+/// manual states none): 3dm-gx5-45-dcp.txt:1297, 3dm-cv7-ins-docs.txt:7417, 3dm-cv7-ins-docs.txt:8144.
+inline constexpr int kLinkBaudSettleMs = 250;
+/// The manuals' UART bandwidth calculation (3dm-gx5-45-dcp.txt:536, 3dm-cv7-ins-docs.txt:4099): bits/s =
+/// kLinkUartWordBits * (kLinkPacketOverhead * packets/s + sum of (field data size +
+/// kLinkFieldOverhead) * field rate); kLinkHasBandwidth false: the manual gives none.
+inline constexpr bool kLinkHasBandwidth = true;
+inline constexpr unsigned kLinkUartWordBits = 10;
+inline constexpr unsigned kLinkPacketOverhead = 6;
+inline constexpr unsigned kLinkFieldOverhead = 2;
+
+/// A constant table of baud rates, ascending.
+struct BaudTable {
+    const std::uint32_t *entries;
+    std::size_t size;
+    constexpr const std::uint32_t *begin() const {
+        return entries;
+    }
+    constexpr const std::uint32_t *end() const {
+        return entries + size;
+    }
+};
+
+namespace detail {
+// The baud rates of each device's main port (a leading 0 keeps an empty one legal).
+inline constexpr std::uint32_t kBaud_gx5_45[] = {0u, 9600u, 19200u, 115200u, 230400u, 460800u, 921600u};
+inline constexpr std::uint32_t kBaud_cv7_ins[] = {0u, 115200u, 230400u, 460800u, 921600u, 3000000u};
+} // namespace detail
+
+/// The baud rates of the device's main port as its manual lists them (empty: none listed).
+inline constexpr BaudTable device_baud_rates(Device d) {
+    switch (d) {
+    case Device::gx5_45:
+        return {detail::kBaud_gx5_45 + 1, 6};
+    case Device::cv7_ins:
+        return {detail::kBaud_cv7_ins + 1, 5};
+    }
+    return {nullptr, 0};
+}
+
+/// The default baud rate of the device's main port; 0 when its manual states none.
+inline constexpr std::uint32_t device_default_baud(Device d) {
+    switch (d) {
+    case Device::gx5_45:
+        return 115200u;
+    case Device::cv7_ins:
+        return 0u;
+    }
+    return 0u;
+}
+
 /// True when the device's manual documents the command or data quantity (set, descriptor); the
 /// sessions refuse a command for which this is false, before sending it.
 inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {

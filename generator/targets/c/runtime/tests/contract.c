@@ -28,6 +28,16 @@
     !defined(CODEC_ERROR_MESSAGE_MAX) || !defined(CODEC_NAME_MAX)
 #error "codec/protocol.h lacks a session or limit constant of the runtime contract"
 #endif
+#if !defined(CODEC_LINK_HAS_IDLE) || !defined(CODEC_LINK_IDLE_SET) ||                                        \
+    !defined(CODEC_LINK_IDLE_DESCRIPTOR) || !defined(CODEC_LINK_HAS_PING) ||                                 \
+    !defined(CODEC_LINK_PING_SET) || !defined(CODEC_LINK_PING_DESCRIPTOR) ||                                 \
+    !defined(CODEC_LINK_HAS_RESUME) || !defined(CODEC_LINK_RESUME_SET) ||                                    \
+    !defined(CODEC_LINK_RESUME_DESCRIPTOR) || !defined(CODEC_LINK_IDLE_ATTEMPTS) ||                          \
+    !defined(CODEC_LINK_BAUD_SETTLE_MS) || !defined(CODEC_LINK_HAS_BANDWIDTH) ||                             \
+    !defined(CODEC_LINK_UART_WORD_BITS) || !defined(CODEC_LINK_PACKET_OVERHEAD) ||                           \
+    !defined(CODEC_LINK_FIELD_OVERHEAD)
+#error "codec/protocol.h lacks a link constant of the runtime contract"
+#endif
 #if CODEC_MAX_PACKET != CODEC_HEADER_SIZE + CODEC_MAX_PAYLOAD + CODEC_CHECKSUM_SIZE
 #error "CODEC_MAX_PACKET is not header + maximum payload + checksum"
 #endif
@@ -39,6 +49,8 @@ bool codec_device_from_id(const char *id, codec_device_t *out);
 const char *codec_device_title(codec_device_t device);
 const char *codec_device_manual(codec_device_t device);
 bool codec_device_supports(codec_device_t device, uint8_t set, uint8_t descriptor);
+const uint32_t *codec_device_baud_rates(codec_device_t device, size_t *count);
+uint32_t codec_device_default_baud(codec_device_t device);
 const codec_layout_info_t *codec_layout_info(codec_field_id_t id);
 const codec_field_info_t *codec_find_field(uint8_t set, uint8_t descriptor, codec_status_t *why);
 codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
@@ -74,13 +86,16 @@ struct codec_contract {
     const char *(*function_name)(int);
     int (*session_ack_decode)(uint8_t, const uint8_t *, size_t, codec_device_t, uint8_t *, uint32_t *);
     int (*field_length_adjust)(uint8_t, uint8_t);
+    const uint32_t *(*device_baud_rates)(codec_device_t, size_t *);
+    uint32_t (*device_default_baud)(codec_device_t);
     codec_device_t any;
 };
 
 extern const struct codec_contract codec_contract;
 const struct codec_contract codec_contract = {
-    codec_device_id,       codec_device_from_id,     codec_device_title,        codec_device_manual,
-    codec_device_supports, codec_layout_info,        codec_find_field,          codec_decode_field,
-    codec_encode_field,    codec_value_to_json,      codec_value_from_json,     codec_command_facts,
-    codec_function_name,   codec_session_ack_decode, codec_field_length_adjust, CODEC_DEVICE_ANY,
+    codec_device_id,           codec_device_from_id,     codec_device_title,        codec_device_manual,
+    codec_device_supports,     codec_layout_info,        codec_find_field,          codec_decode_field,
+    codec_encode_field,        codec_value_to_json,      codec_value_from_json,     codec_command_facts,
+    codec_function_name,       codec_session_ack_decode, codec_field_length_adjust, codec_device_baud_rates,
+    codec_device_default_baud, CODEC_DEVICE_ANY,
 };

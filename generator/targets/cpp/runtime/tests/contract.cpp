@@ -53,6 +53,18 @@ static_assert(is<decltype(pkg::device_from_name("")), std::optional<pkg::Device>
 static_assert(is<decltype(pkg::device_title(pkg::Device{})), const char *>);
 static_assert(is<decltype(pkg::device_manual(pkg::Device{})), const char *>);
 static_assert(is<decltype(pkg::device_supports(pkg::Device{}, std::uint8_t{}, std::uint8_t{})), bool>);
+static_assert(is<decltype(pkg::kLinkIdle), pkg::LinkCommand> &&
+              is<decltype(pkg::kLinkPing), pkg::LinkCommand> &&
+              is<decltype(pkg::kLinkResume), pkg::LinkCommand> &&
+              is<decltype(pkg::kLinkIdle.present), bool> && is<decltype(pkg::kLinkIdle.set), std::uint8_t> &&
+              is<decltype(pkg::kLinkIdle.descriptor), std::uint8_t>);
+static_assert(is<decltype(pkg::kLinkIdleAttempts), unsigned> && is<decltype(pkg::kLinkBaudSettleMs), int> &&
+              is<decltype(pkg::kLinkHasBandwidth), bool> && is<decltype(pkg::kLinkUartWordBits), unsigned> &&
+              is<decltype(pkg::kLinkPacketOverhead), unsigned> &&
+              is<decltype(pkg::kLinkFieldOverhead), unsigned>);
+static_assert(is<decltype(pkg::device_baud_rates(pkg::Device{})), pkg::BaudTable> &&
+              is<decltype(*pkg::device_baud_rates(pkg::Device{}).begin()), std::uint32_t> &&
+              is<decltype(pkg::device_default_baud(pkg::Device{})), std::uint32_t>);
 
 // lookup_tables.hpp (namespace detail: read by the runtime's lookup.hpp)
 static_assert(is<std::remove_all_extents_t<decltype(pkg::detail::kSetRow)>, std::uint8_t> &&

@@ -73,6 +73,22 @@ fn framing_provides_the_constants_the_runtime_reads() {
 }
 
 #[test]
+fn framing_provides_the_link_facts() {
+    let commands: [Option<(u8, u8)>; 3] =
+        [framing::LINK_IDLE, framing::LINK_PING, framing::LINK_RESUME];
+    let attempts: u32 = framing::LINK_IDLE_ATTEMPTS;
+    let settle: Option<u32> = framing::LINK_BAUD_SETTLE_MS;
+    let has_bandwidth: bool = framing::LINK_HAS_BANDWIDTH;
+    let bandwidth: [u32; 3] = [
+        framing::LINK_UART_WORD_BITS,
+        framing::LINK_PACKET_OVERHEAD,
+        framing::LINK_FIELD_OVERHEAD,
+    ];
+    assert!(attempts >= 1, "{commands:?} {settle:?}");
+    assert_eq!(has_bandwidth, bandwidth[0] != 0);
+}
+
+#[test]
 fn dispatch_provides_devices_values_and_the_json_writers() {
     let all: &[Device] = &Device::ALL;
     let id: fn(Device) -> &'static str = Device::id;
@@ -80,7 +96,13 @@ fn dispatch_provides_devices_values_and_the_json_writers() {
     let title: fn(Device) -> &'static str = Device::title;
     let manual: fn(Device) -> &'static str = Device::manual;
     let supports: fn(Device, u8, u8) -> bool = Device::supports;
+    let baud_rates: fn(Device) -> &'static [u32] = Device::baud_rates;
+    let default_baud: fn(Device) -> Option<u32> = Device::default_baud;
     for &d in all {
+        assert!(baud_rates(d).windows(2).all(|w| w[0] < w[1]));
+        if let Some(b) = default_baud(d) {
+            assert!(baud_rates(d).contains(&b));
+        }
         assert_eq!(from_id(id(d)), Some(d));
         assert!(!title(d).is_empty() && !manual(d).is_empty());
         let _ = supports(d, 0, 0);

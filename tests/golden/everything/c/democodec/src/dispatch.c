@@ -88,6 +88,36 @@ const uint16_t *democ_device_data(democ_device_t device, size_t *count) {
     return device_table(device, true, count);
 }
 
+/* The baud rates of each device's main port (the IR's `link`), ascending. */
+
+const uint32_t *democ_device_baud_rates(democ_device_t device, size_t *count) {
+    assert(count != NULL);
+    switch (device) {
+    case DEMOC_DEVICE_DEV_A:
+        *count = 0u;
+        return NULL;
+    case DEMOC_DEVICE_DEV_B:
+        *count = 0u;
+        return NULL;
+    case DEMOC_DEVICE_ANY:
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+uint32_t democ_device_default_baud(democ_device_t device) {
+    switch (device) {
+    case DEMOC_DEVICE_DEV_A:
+        return 0u;
+    case DEMOC_DEVICE_DEV_B:
+        return 0u;
+    case DEMOC_DEVICE_ANY:
+    default:
+        return 0u;
+    }
+}
+
 static bool table_has(const uint16_t *table, size_t n, uint16_t key) {
     size_t lo = 0;
     while (lo < n) {

@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "a1ac2f9182e448b0"
+SPEC_HASH = "cbf3715992c107ee"
 
 __all__ = [
     "SPEC_HASH",

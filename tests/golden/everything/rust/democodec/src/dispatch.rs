@@ -62,6 +62,23 @@ impl Device {
         }
     }
 
+    /// The baud rates of the device's main port as its manual lists them, ascending (the IR's
+    /// `link`; empty: none listed).
+    pub fn baud_rates(self) -> &'static [u32] {
+        match self {
+            Device::DevA => &[],
+            Device::DevB => &[],
+        }
+    }
+
+    /// The default baud rate of the device's main port (`None`: its manual states none).
+    pub fn default_baud(self) -> Option<u32> {
+        match self {
+            Device::DevA => None,
+            Device::DevB => None,
+        }
+    }
+
     /// True when the device's manual documents the command or data quantity (set, descriptor);
     /// the sessions refuse a command for which this is false, before sending it.
     pub fn supports(self, set: u8, descriptor: u8) -> bool {

@@ -86,7 +86,7 @@ pub const VERSION_MINOR: u32 = 10;
 pub const VERSION_PATCH: u32 = 3;
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "a1ac2f9182e448b0";
+pub const SPEC_HASH: &str = "cbf3715992c107ee";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

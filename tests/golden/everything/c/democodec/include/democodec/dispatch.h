@@ -34,6 +34,12 @@ const char *democ_device_manual(democ_device_t device);
  * table; *count is set to its length (0 and NULL for DEMOC_DEVICE_ANY). No allocation. */
 const uint16_t *democ_device_commands(democ_device_t device, size_t *count);
 const uint16_t *democ_device_data(democ_device_t device, size_t *count);
+/** The baud rates of the device's main port as its manual lists them (the IR's `link`), ascending,
+ * in a constant table; *count is set to its length (0 and NULL for DEMOC_DEVICE_ANY or a model
+ * whose manual lists none). */
+const uint32_t *democ_device_baud_rates(democ_device_t device, size_t *count);
+/** The default baud rate of the device's main port; 0 when its manual states none. */
+uint32_t democ_device_default_baud(democ_device_t device);
 /** True when the device's manual documents the command or data quantity (set, descriptor); the
  * sessions refuse a command for which this is false, before sending it. */
 bool democ_device_supports(democ_device_t device, uint8_t set, uint8_t descriptor);

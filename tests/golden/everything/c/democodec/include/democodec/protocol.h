@@ -63,6 +63,28 @@ static inline int democ_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define DEMOC_SESSION_ACK_OK 0u
 #define DEMOC_SESSION_MAX_EXPECT 1
 
+/* Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through"):
+ * the idle, ping and resume commands (HAS 0: the manual names none), how many times the idle
+ * command is sent before giving up, the milliseconds after a baud-rate change before the device
+ * answers at the new rate (-1: the manual states none) and the manuals' UART bandwidth calculation
+ * (HAS 0: none): bits/s = UART_WORD_BITS * (PACKET_OVERHEAD * packets/s + sum of
+ * (field data size + FIELD_OVERHEAD) * field rate). Per device: democ_device_baud_rates(). */
+#define DEMOC_LINK_HAS_IDLE 0
+#define DEMOC_LINK_IDLE_SET 0x00
+#define DEMOC_LINK_IDLE_DESCRIPTOR 0x00
+#define DEMOC_LINK_HAS_PING 0
+#define DEMOC_LINK_PING_SET 0x00
+#define DEMOC_LINK_PING_DESCRIPTOR 0x00
+#define DEMOC_LINK_HAS_RESUME 0
+#define DEMOC_LINK_RESUME_SET 0x00
+#define DEMOC_LINK_RESUME_DESCRIPTOR 0x00
+#define DEMOC_LINK_IDLE_ATTEMPTS 3
+#define DEMOC_LINK_BAUD_SETTLE_MS -1
+#define DEMOC_LINK_HAS_BANDWIDTH 0
+#define DEMOC_LINK_UART_WORD_BITS 0
+#define DEMOC_LINK_PACKET_OVERHEAD 0
+#define DEMOC_LINK_FIELD_OVERHEAD 0
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define DEMOC_PATH_MAX_DEPTH 2
 /** Enough room for any message democ_decode_error_format() can produce. */

@@ -109,6 +109,73 @@ inline constexpr DescriptorTable device_data(Device d) {
     return {nullptr, 0};
 }
 
+// Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through").
+
+/// A command a session sends as it is (no parameters); `present` false: the manual names none.
+struct LinkCommand {
+    bool present;
+    std::uint8_t set;
+    std::uint8_t descriptor;
+};
+/// The manual names no idle command.
+inline constexpr LinkCommand kLinkIdle{false, 0x00, 0x00};
+/// The manual names no ping command.
+inline constexpr LinkCommand kLinkPing{false, 0x00, 0x00};
+/// The manual names no resume command.
+inline constexpr LinkCommand kLinkResume{false, 0x00, 0x00};
+/// Times the idle command is sent (each with the command's reply timeout) before giving up.
+inline constexpr unsigned kLinkIdleAttempts = 3;
+/// Milliseconds after a baud-rate change before the device answers at the new rate (-1: the
+/// manual states none).
+inline constexpr int kLinkBaudSettleMs = -1;
+/// The manuals' UART bandwidth calculation: bits/s =
+/// kLinkUartWordBits * (kLinkPacketOverhead * packets/s + sum of (field data size +
+/// kLinkFieldOverhead) * field rate); kLinkHasBandwidth false: the manual gives none.
+inline constexpr bool kLinkHasBandwidth = false;
+inline constexpr unsigned kLinkUartWordBits = 0;
+inline constexpr unsigned kLinkPacketOverhead = 0;
+inline constexpr unsigned kLinkFieldOverhead = 0;
+
+/// A constant table of baud rates, ascending.
+struct BaudTable {
+    const std::uint32_t *entries;
+    std::size_t size;
+    constexpr const std::uint32_t *begin() const {
+        return entries;
+    }
+    constexpr const std::uint32_t *end() const {
+        return entries + size;
+    }
+};
+
+namespace detail {
+// The baud rates of each device's main port (a leading 0 keeps an empty one legal).
+inline constexpr std::uint32_t kBaud_dev_a[] = {0u};
+inline constexpr std::uint32_t kBaud_dev_b[] = {0u};
+} // namespace detail
+
+/// The baud rates of the device's main port as its manual lists them (empty: none listed).
+inline constexpr BaudTable device_baud_rates(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return {detail::kBaud_dev_a + 1, 0};
+    case Device::dev_b:
+        return {detail::kBaud_dev_b + 1, 0};
+    }
+    return {nullptr, 0};
+}
+
+/// The default baud rate of the device's main port; 0 when its manual states none.
+inline constexpr std::uint32_t device_default_baud(Device d) {
+    switch (d) {
+    case Device::dev_a:
+        return 0u;
+    case Device::dev_b:
+        return 0u;
+    }
+    return 0u;
+}
+
 /// True when the device's manual documents the command or data quantity (set, descriptor); the
 /// sessions refuse a command for which this is false, before sending it.
 inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t descriptor) {
