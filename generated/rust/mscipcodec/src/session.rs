@@ -776,6 +776,12 @@ impl<const N: usize> Session<N> {
         self.queue.len
     }
 
+    /// The earliest stream offset whose byte may still be reported (in a skip run or a packet):
+    /// a caller that keeps the input to print skipped bytes can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        self.parser.retain_from()
+    }
+
     /// Whether the command with this id still waits for its reply.
     pub fn is_pending(&self, id: u32) -> bool {
         self.queue.slots[..self.queue.len]

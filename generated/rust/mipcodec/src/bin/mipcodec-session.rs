@@ -245,6 +245,8 @@ fn run(o: Options) -> Result<ExitCode, String> {
                     }
                 };
                 let mut p = p.borrow_mut();
+                // What was dropped meanwhile is never printed.
+                p.trim(dev.retain_from());
                 p.text.push_str(&line);
                 p.text.push('\n');
                 p.flush().map_err(io_err)?;

@@ -801,7 +801,7 @@ impl<T: Transport> Device<T> {
 
     /// After a reconnection: to idle, then the remembered settings, in order.
     fn reapply(&mut self) -> Result<usize, SessionError> {
-        if link_command(link_facts().idle, self.session.device()).is_some() {
+        if link_command(crate::framing::LINK_IDLE, self.session.device()).is_some() {
             self.idle_through()?;
         }
         let settings: Vec<FieldValue> = self.settings().copied().collect();
@@ -819,7 +819,7 @@ impl<T: Transport> Device<T> {
         let Some(facts) = crate::commands::command_facts(command) else {
             return;
         };
-        let link = link_facts();
+        let link = link_facts(self.session.device());
         let key = (facts.set, facts.descriptor);
         if Some(key) == link.idle {
             // To idle: the streams stay off after a reconnection until resumed again.
@@ -852,7 +852,7 @@ impl<T: Transport> Device<T> {
     }
 
     fn idle_through(&mut self) -> Result<Idle, SessionError> {
-        let facts = link_facts();
+        let facts = link_facts(self.session.device());
         let idle = link_command(facts.idle, self.session.device())
             .ok_or_else(|| SessionError::Link("idle: the protocol has no idle command".into()))?;
         let mut idle_report = self.idle_attempts(&idle, facts.attempts)?;
@@ -948,12 +948,13 @@ impl<T: Transport> Device<T> {
         let Some(current) = self.transport.baud() else {
             return Ok(None);
         };
-        let facts = link_facts();
         let model = self.session.device();
+        let facts = link_facts(model);
         let ping = link_command(facts.ping, model)
             .ok_or_else(|| SessionError::Link("baud: the protocol has no ping command".into()))?;
-        let mut rates = vec![current, facts.default_baud];
-        let mut supported = facts.bauds.to_vec();
+        let mut rates = vec![current];
+        rates.extend(facts.default_baud);
+        let mut supported = facts.bauds.clone();
         supported.sort_unstable_by(|a, b| b.cmp(a));
         rates.extend(supported);
         let mut seen = Vec::new();
@@ -1090,26 +1091,36 @@ fn link_command(which: Option<(u8, u8)>, model: Option<Model>) -> Option<FieldVa
     decode_field(set, descriptor, &[], model).ok()
 }
 
-/// The spec's facts about getting through (`link` of the protocol file).
-#[derive(Clone, Copy, Debug)]
+/// The spec's facts about getting through (the IR's `link`, printed into `crate::framing` and
+/// `Device::baud_rates`, `Device::default_baud`).
+#[derive(Clone, Debug)]
 struct LinkFacts {
     idle: Option<(u8, u8)>,
     ping: Option<(u8, u8)>,
     resume: Option<(u8, u8)>,
     attempts: u32,
-    bauds: &'static [u32],
-    default_baud: u32,
+    /// The model's rates, or every model's when none is selected; ascending.
+    bauds: Vec<u32>,
+    default_baud: Option<u32>,
 }
 
-// TEMPORARY until the generated link facts land (helper/link-py "spec: link facts").
-fn link_facts() -> LinkFacts {
+fn link_facts(model: Option<Model>) -> LinkFacts {
+    let mut bauds: Vec<u32> = match model {
+        Some(m) => m.baud_rates().to_vec(),
+        None => Model::ALL
+            .iter()
+            .flat_map(|m| m.baud_rates().iter().copied())
+            .collect(),
+    };
+    bauds.sort_unstable();
+    bauds.dedup();
     LinkFacts {
-        idle: Some((0x01, 0x02)),
-        ping: Some((0x01, 0x01)),
-        resume: Some((0x01, 0x06)),
-        attempts: 3,
-        bauds: &[9600, 19200, 115_200, 230_400, 460_800, 921_600],
-        default_baud: 115_200,
+        idle: crate::framing::LINK_IDLE,
+        ping: crate::framing::LINK_PING,
+        resume: crate::framing::LINK_RESUME,
+        attempts: crate::framing::LINK_IDLE_ATTEMPTS.max(1),
+        bauds,
+        default_baud: model.and_then(|m| m.default_baud()),
     }
 }
 
