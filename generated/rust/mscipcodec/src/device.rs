@@ -184,7 +184,16 @@ fn set_line_rate(port: &mut Box<dyn serialport::SerialPort>, baud: u32) -> io::R
 #[cfg(feature = "serial")]
 impl Transport for SerialTransport {
     fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
-        self.port.write_all(bytes)?;
+        match self.port.write_all(bytes) {
+            // A hang-up (see receive): writing tells the OS's error.
+            #[cfg(unix)]
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                use std::os::unix::io::AsRawFd;
+                nix::unistd::write(self.port.as_raw_fd(), bytes).map_err(io::Error::from)?;
+                Err(e)
+            }
+            r => r,
+        }?;
         self.port.flush()
     }
 
@@ -219,6 +228,20 @@ impl Transport for SerialTransport {
                 ) =>
             {
                 Ok(0)
+            }
+            // serialport reports a hang-up (the poll's POLLHUP) as a broken pipe of its own:
+            // reading tells the OS's error (a pty whose other side closed: EIO).
+            #[cfg(unix)]
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                use std::os::unix::io::AsRawFd;
+                match nix::unistd::read(self.port.as_raw_fd(), buf) {
+                    Ok(0) => Err(io::Error::new(
+                        io::ErrorKind::UnexpectedEof,
+                        "the port was closed",
+                    )),
+                    Ok(n) => Ok(n),
+                    Err(errno) => Err(io::Error::from(errno)),
+                }
             }
             Err(e) => Err(e),
         }
