@@ -340,6 +340,22 @@ impl Completed {
         matches!(self.status, Status::Ack | Status::Sent)
     }
 
+    /// Writes the session tool's line for input line `line` (as [`CommandResult::write_line`]).
+    pub fn write_line(&self, w: &mut dyn fmt::Write, line: u64) -> fmt::Result {
+        CommandResult {
+            id: 0,
+            facts: self.facts,
+            status: self.status,
+            code: self.code,
+            error: self.error,
+            expect: self.expect,
+            device: self.device,
+            reply: &self.reply,
+            start: self.start,
+        }
+        .write_line(w, line)
+    }
+
     /// The field entries of the reply.
     pub fn reply(&self) -> Fields<'_> {
         Fields::at(self.facts.set, &self.reply, self.start)
@@ -421,16 +437,19 @@ pub enum SessionError {
     Connect(String),
     /// Reading or writing the connection failed.
     Io(io::Error),
-    /// The port went away while the command waited for its reply (it is not retried; with
-    /// reconnection on, the link was recovered before this was returned, when it could be).
+    /// The port went away while the command waited for its reply: the command's result is
+    /// **lost**, it is not retried. With reconnection on, the link was recovered before this was
+    /// returned, unless `gave_up` says why not.
     LinkLost {
         /// Command name.
         name: &'static str,
-        /// The error that ended the port.
+        /// The system's error text of the failing call, or `end of file`.
         reason: String,
+        /// `gave up reopening ADDRESS after D ms` when the port did not come back in time.
+        gave_up: Option<String>,
     },
-    /// Getting through failed: no answer to the idle command or at any baud rate, or the port
-    /// did not come back before the reconnection deadline (the text says which).
+    /// Getting through failed (`idle: the protocol has no idle command`, `baud: no answer at any
+    /// rate`, `gave up reopening ADDRESS after D ms`).
     Link(String),
 }
 
@@ -449,7 +468,10 @@ impl fmt::Display for SessionError {
             SessionError::Start(e) => write!(f, "cannot start the command: {e}"),
             SessionError::Address(m) | SessionError::Connect(m) => f.write_str(m),
             SessionError::Io(e) => write!(f, "connection: {}", io_message(e)),
-            SessionError::LinkLost { name, reason } => write!(f, "{name}: link lost ({reason})"),
+            SessionError::LinkLost {
+                gave_up: Some(m), ..
+            } => write!(f, "link: {m}"),
+            SessionError::LinkLost { name, reason, .. } => write!(f, "{name}: link lost: {reason}"),
             SessionError::Link(m) => write!(f, "link: {m}"),
         }
     }
@@ -481,24 +503,12 @@ pub const QUIET_MS: u64 = 50;
 /// command and first parameter wins; beyond this the oldest is forgotten).
 pub const MAX_SETTINGS: usize = 64;
 
-/// What [`Device::to_idle`] did.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Idle {
-    /// The attempt that was acknowledged (1 to the spec's attempts), counted over every baud
-    /// rate tried.
-    pub attempts: u32,
-    /// Bytes received meanwhile and dropped (data packets and skipped bytes).
-    pub dropped: u64,
-    /// The baud rate the device answered at, when it had to be found.
-    pub baud: Option<u32>,
-}
-
 /// A session over a transport, blocking: [`Device::run`] sends a command and waits for its
 /// result, feeding every received byte to the session, so data packets reach the handlers
 /// meanwhile. It gets a streaming device to idle ([`Device::to_idle`]), finds the baud rate of
 /// a serial port ([`Device::find_baud`]) and, when asked ([`Device::with_reconnect_ms`]),
-/// reopens a lost port and re-applies the settings sent since it connected, reporting each step
-/// in one line ([`Device::on_link`]).
+/// reopens a lost port and re-applies the settings written since it connected, reporting each
+/// step in one line ([`Device::on_link`]; `docs/conformance.md` §8, "Getting through").
 pub struct Device<T: Transport = Box<dyn Transport>> {
     transport: T,
     session: Session<1>,
@@ -513,12 +523,13 @@ pub struct Device<T: Transport = Box<dyn Transport>> {
     address: String,
     baud: u32,
     timeout_ms: u64,
-    auto_baud: bool,
     reconnect_ms: Option<u64>,
     recovering: bool,
     // Bytes dropped since `Some(0)`: while getting through, nothing reaches the handlers.
     dropping: Option<u64>,
     settings: Vec<(String, FieldValue)>,
+    // The application's last idle or resume command was an idle (no resume after reconnecting).
+    idle: bool,
 }
 
 /// Connects to `address` (`tcp:HOST:PORT` or a serial port path at `baud`) for `model` (its
@@ -556,11 +567,11 @@ impl<T: Transport> Device<T> {
             address: String::new(),
             baud,
             timeout_ms: crate::session::DEFAULT_TIMEOUT_MS,
-            auto_baud: false,
             reconnect_ms: None,
             recovering: false,
             dropping: None,
             settings: Vec::new(),
+            idle: false,
         }
     }
 
@@ -577,16 +588,10 @@ impl<T: Transport> Device<T> {
         self
     }
 
-    /// On a serial port, when the idle command gets no answer at the configured rate, tries the
-    /// model's supported rates ([`Device::find_baud`]).
-    pub fn with_auto_baud(mut self, on: bool) -> Self {
-        self.auto_baud = on;
-        self
-    }
-
-    /// When the port goes away, reopens it every [`RECONNECT_INTERVAL_MS`] for up to `ms`
-    /// milliseconds ([`DEFAULT_RECONNECT_MS`] is the usual choice), then gets to idle, re-sends
-    /// the settings sent since connecting, in order, and resumes. Needs a device made by
+    /// When the port goes away, reopens it every [`RECONNECT_INTERVAL_MS`] until `ms`
+    /// milliseconds have passed since the loss ([`DEFAULT_RECONNECT_MS`] is the usual choice),
+    /// then gets to idle, re-sends the settings written since connecting, in order, and resumes
+    /// (unless the application's last idle or resume command was an idle). Needs a device made by
     /// [`connect`] or given a way to reopen ([`Device::with_opener`]).
     pub fn with_reconnect_ms(mut self, ms: u64) -> Self {
         self.reconnect_ms = Some(ms);
@@ -620,7 +625,10 @@ impl<T: Transport> Device<T> {
         self.session.retain_from()
     }
 
-    /// The settings that a reconnection re-applies, in the order they are sent.
+    /// The settings that a reconnection re-applies, in the order they are sent: every command
+    /// written (function `write` or `write_no_ack`) and acknowledged (or sent), the latest per
+    /// key winning and moving to the end; the key is the command and the values of the
+    /// parameters its `read` sends (`desc_set` of a message format, `port` of a port's rate).
     pub fn settings(&self) -> impl Iterator<Item = &FieldValue> {
         self.settings.iter().map(|(_, v)| v)
     }
@@ -672,8 +680,8 @@ impl<T: Transport> Device<T> {
 
     /// Sends the command and waits for its result (never an error for nack, timeout or
     /// refusal: see [`Completed::status`]; errors are I/O, commands that do not encode and a
-    /// lost link). A setting that is acknowledged (function 1 of a command with a function
-    /// selector, and the resume command) is remembered for reconnections.
+    /// lost link: [`SessionError::LinkLost`]). An acknowledged write is remembered for
+    /// reconnections ([`Device::settings`]).
     pub fn run(
         &mut self,
         command: &FieldValue,
@@ -760,12 +768,21 @@ impl<T: Transport> Device<T> {
     /// reconnection is on; the error to return for the command.
     fn lost(&mut self, e: io::Error, name: &'static str) -> SessionError {
         self.session.abandon();
-        let reason = io_message(&e);
         if self.reconnect_ms.is_none() || self.opener.is_none() || self.recovering {
             return SessionError::Io(e);
         }
+        let reason = lost_reason(&e);
         match self.recover(e) {
-            Ok(()) => SessionError::LinkLost { name, reason },
+            Ok(()) => SessionError::LinkLost {
+                name,
+                reason,
+                gave_up: None,
+            },
+            Err(SessionError::Link(m)) => SessionError::LinkLost {
+                name,
+                reason,
+                gave_up: Some(m),
+            },
             Err(err) => err,
         }
     }
@@ -773,21 +790,21 @@ impl<T: Transport> Device<T> {
     /// Reopens the lost port every [`RECONNECT_INTERVAL_MS`] until the deadline, then gets to
     /// idle, re-applies the settings and resumes.
     fn recover(&mut self, e: io::Error) -> Result<(), SessionError> {
-        let (Some(limit), false) = (self.reconnect_ms, self.recovering) else {
+        let (Some(limit), false, true) =
+            (self.reconnect_ms, self.recovering, self.opener.is_some())
+        else {
             return Err(SessionError::Io(e));
         };
-        if self.opener.is_none() {
-            return Err(SessionError::Io(e));
-        }
-        let reason = io_message(&e);
         let address = self.address.clone();
         self.log(&format!(
-            "port lost ({reason}), reopening {address} every {RECONNECT_INTERVAL_MS} ms"
+            "port lost ({}), reopening {address} every {RECONNECT_INTERVAL_MS} ms",
+            lost_reason(&e)
         ));
         let began = Instant::now();
-        let limit = Duration::from_millis(limit);
+        let deadline = Duration::from_millis(limit);
         let interval = Duration::from_millis(RECONNECT_INTERVAL_MS);
         loop {
+            std::thread::sleep(interval.min(deadline.saturating_sub(began.elapsed())));
             let opened = match self.opener.as_mut() {
                 Some(open) => open(self.baud),
                 None => return Err(SessionError::Io(e)),
@@ -797,12 +814,11 @@ impl<T: Transport> Device<T> {
                     self.transport = t;
                     break;
                 }
-                Err(_) if began.elapsed() + interval <= limit => std::thread::sleep(interval),
+                Err(_) if began.elapsed() < deadline => {}
                 Err(_) => {
-                    return Err(SessionError::Link(format!(
-                        "port lost ({reason}), {address} not back after {} ms",
-                        limit.as_millis()
-                    )))
+                    let m = format!("gave up reopening {address} after {limit} ms");
+                    self.log(&m);
+                    return Err(SessionError::Link(m));
                 }
             }
         }
@@ -822,10 +838,12 @@ impl<T: Transport> Device<T> {
         Ok(())
     }
 
-    /// After a reconnection: to idle, then the remembered settings, in order.
+    /// After a reconnection: to idle, the remembered settings in order, then resume unless the
+    /// application had the device idle.
     fn reapply(&mut self) -> Result<usize, SessionError> {
-        if link_command(crate::framing::LINK_IDLE, self.session.device()).is_some() {
-            self.idle_through()?;
+        let model = self.session.device();
+        if link_command(crate::framing::LINK_IDLE, model).is_some() {
+            self.to_idle()?;
         }
         let settings: Vec<FieldValue> = self.settings().copied().collect();
         let mut applied = 0;
@@ -834,24 +852,32 @@ impl<T: Transport> Device<T> {
                 applied += 1;
             }
         }
+        if !self.idle {
+            if let Some(resume) = link_command(crate::framing::LINK_RESUME, model) {
+                self.exchange(&resume, StartOptions::default())?;
+            }
+        }
         Ok(applied)
     }
 
-    /// Remembers an acknowledged setting (the latest per command and first parameter wins).
+    /// Remembers an acknowledged (or sent) write, and whether the device was last sent to idle
+    /// or resumed.
     fn remember(&mut self, command: &FieldValue) {
         let Some(facts) = crate::commands::command_facts(command) else {
             return;
         };
-        let link = link_facts(self.session.device());
-        let key = (facts.set, facts.descriptor);
-        if Some(key) == link.idle {
-            // To idle: the streams stay off after a reconnection until resumed again.
-            self.settings.retain(|(_, v)| {
-                crate::commands::command_facts(v).map(|f| (f.set, f.descriptor)) != link.resume
-            });
+        let key = Some((facts.set, facts.descriptor));
+        if key == crate::framing::LINK_IDLE {
+            self.idle = true;
             return;
         }
-        if crate::commands::command_function(command) != Some(1) && Some(key) != link.resume {
+        if key == crate::framing::LINK_RESUME {
+            self.idle = false;
+            return;
+        }
+        let function =
+            crate::commands::command_function(command).and_then(crate::commands::function_name);
+        if !matches!(function, Some("write" | "write_no_ack")) {
             return;
         }
         let key = setting_key(command, facts);
@@ -863,76 +889,54 @@ impl<T: Transport> Device<T> {
     }
 
     /// Gets the device to idle while it may be streaming at full rate: sends the idle command
-    /// and waits for its ACK, dropping (and counting) what arrives meanwhile; without an
-    /// answer, flushes the input, waits a quiet time and tries again, up to the spec's
-    /// attempts (each with the command's timeout). On a serial port with auto-baud on
-    /// ([`Device::with_auto_baud`]), then finds the baud rate and tries again at it.
-    pub fn to_idle(&mut self) -> Result<Idle, SessionError> {
-        let outer = self.dropping.replace(0);
-        let r = self.idle_through();
-        self.dropping = outer;
-        r
-    }
-
-    fn idle_through(&mut self) -> Result<Idle, SessionError> {
-        let facts = link_facts(self.session.device());
-        let idle = link_command(facts.idle, self.session.device())
+    /// and waits for its result with the reply timeout, dropping (and counting) the data and
+    /// skipped bytes that arrive meanwhile; after a timeout, flushes the input, reads and
+    /// discards for [`QUIET_MS`], flushes again and sends it again, up to the spec's attempts.
+    /// Returns the last attempt's result (ack, nack, or timeout after the last attempt).
+    pub fn to_idle(&mut self) -> Result<Completed, SessionError> {
+        let model = self.session.device();
+        let idle = link_command(crate::framing::LINK_IDLE, model)
             .ok_or_else(|| SessionError::Link("idle: the protocol has no idle command".into()))?;
-        let mut idle_report = self.idle_attempts(&idle, facts.attempts)?;
-        let mut baud = None;
-        if idle_report.is_none() && self.auto_baud && self.transport.baud().is_some() {
-            baud = self.find_baud()?;
-            if baud.is_some() {
-                idle_report = self.idle_attempts(&idle, facts.attempts)?;
-            }
-        }
-        match idle_report {
-            Some((attempts, dropped)) => Ok(Idle {
-                attempts,
-                dropped,
-                baud,
-            }),
-            None => Err(SessionError::Link(format!(
-                "idle: no ACK after {} attempts",
-                facts.attempts
-            ))),
-        }
-    }
-
-    /// The idle attempts at the current rate: `(attempt, bytes dropped)` of the one that was
-    /// acknowledged, `None` when none was.
-    fn idle_attempts(
-        &mut self,
-        idle: &FieldValue,
-        attempts: u32,
-    ) -> Result<Option<(u32, u64)>, SessionError> {
-        let mut total = 0;
-        for attempt in 1..=attempts {
+        let attempts = crate::framing::LINK_IDLE_ATTEMPTS.max(1);
+        let outer = self.dropping;
+        let mut attempt = 1;
+        let done = loop {
             self.dropping = Some(0);
-            let done = self.exchange(idle, StartOptions::default())?;
+            let done = self.exchange(&idle, StartOptions::default());
             let dropped = self.dropping.unwrap_or(0);
-            total += dropped;
-            match done.status {
-                Status::Ack | Status::Sent => return Ok(Some((attempt, total))),
-                Status::Timeout => {}
-                _ => {
-                    return Err(done
-                        .into_result()
-                        .err()
-                        .unwrap_or(SessionError::Link("idle: no ACK".into())))
+            self.dropping = outer;
+            let done = done?;
+            if done.status != Status::Timeout {
+                if done.is_ok() {
+                    self.idle = true;
+                    self.log(&format!(
+                        "idle: ACK on attempt {attempt} of {attempts} ({dropped} bytes dropped)"
+                    ));
                 }
+                break done;
             }
             if attempt == attempts {
-                break;
+                self.log(&format!(
+                    "idle: no ACK after {attempts} attempts, giving up"
+                ));
+                break done;
             }
+            let streaming = if dropped > 0 {
+                format!(" while streaming ({dropped} bytes dropped)")
+            } else {
+                String::new()
+            };
+            attempt += 1;
             self.log(&format!(
-                "idle: no ACK in {} ms while streaming ({dropped} bytes dropped), flushing, attempt {} of {attempts}",
-                self.timeout_ms,
-                attempt + 1
+                "idle: no ACK in {} ms{streaming}, flushing, attempt {attempt} of {attempts}",
+                self.timeout_ms
             ));
-            self.flush_input()?;
-        }
-        Ok(None)
+            self.dropping = Some(0);
+            let flushed = self.flush_input();
+            self.dropping = outer;
+            flushed?;
+        };
+        Ok(done)
     }
 
     /// Flushes the input: the transport's buffer, what arrives during a quiet time, and the
@@ -963,50 +967,75 @@ impl<T: Transport> Device<T> {
         Ok(())
     }
 
-    /// On a serial port whose device does not answer at the current rate: tries the model's
-    /// supported rates (the default first, then descending), each with a ping after a flush,
-    /// and stays at the first that answers (`Some(rate)`); `None` when none does (the port is
-    /// left at the rate it had). Over TCP there is no rate: `None`.
+    /// Finds the baud rate of a serial port: a ping at the current rate; without an answer,
+    /// the model's default rate, then its other rates from the highest down (without a model:
+    /// every model's defaults, then all their rates), each after switching the port and
+    /// flushing, with one ping each; stays at the first that answers and returns it. Over TCP
+    /// there is no rate: `Ok(None)`. No answer at any rate is an error (the port is left at the
+    /// rate it had).
     pub fn find_baud(&mut self) -> Result<Option<u32>, SessionError> {
         let Some(current) = self.transport.baud() else {
             return Ok(None);
         };
         let model = self.session.device();
-        let facts = link_facts(model);
-        let ping = link_command(facts.ping, model)
+        let ping = link_command(crate::framing::LINK_PING, model)
             .ok_or_else(|| SessionError::Link("baud: the protocol has no ping command".into()))?;
         let mut rates = vec![current];
-        rates.extend(facts.default_baud);
-        let mut supported = facts.bauds.clone();
-        supported.sort_unstable_by(|a, b| b.cmp(a));
-        rates.extend(supported);
+        let models: Vec<Model> = match model {
+            Some(m) => vec![m],
+            None => Model::ALL.to_vec(),
+        };
+        rates.extend(models.iter().filter_map(|m| m.default_baud()));
+        let mut others: Vec<u32> = models
+            .iter()
+            .flat_map(|m| m.baud_rates().iter().copied())
+            .collect();
+        others.sort_unstable_by(|a, b| b.cmp(a));
+        rates.extend(others);
         let mut seen = Vec::new();
         rates.retain(|r| {
             let fresh = !seen.contains(r);
             seen.push(*r);
             fresh
         });
-        let outer = self.dropping.replace(self.dropping.unwrap_or(0));
-        let mut previous = current;
-        let mut found = None;
-        for &rate in &rates[1..] {
-            self.log(&format!("baud: no answer at {previous}, trying {rate}"));
-            self.transport.set_baud(rate)?;
-            self.flush_input()?;
-            let done = self.exchange(&ping, StartOptions::default())?;
-            if matches!(done.status, Status::Ack | Status::Nack) {
-                self.log(&format!("baud: device answers at {rate}"));
-                found = Some(rate);
-                break;
-            }
-            previous = rate;
-        }
+        let outer = self.dropping;
+        self.dropping = Some(0);
+        let found = self.try_rates(&ping, &rates);
         self.dropping = outer;
         match found {
-            Some(rate) => self.baud = rate,
-            None => self.transport.set_baud(current)?,
+            Ok(Some(rate)) => {
+                self.baud = rate;
+                if rate != current {
+                    self.log(&format!("baud: device answers at {rate}"));
+                }
+                Ok(Some(rate))
+            }
+            Ok(None) => {
+                self.log("baud: no answer at any rate");
+                self.transport.set_baud(current)?;
+                Err(SessionError::Link("baud: no answer at any rate".into()))
+            }
+            Err(e) => Err(e),
         }
-        Ok(found)
+    }
+
+    /// One ping at each rate in turn (the first is the current one): the first that answers.
+    fn try_rates(&mut self, ping: &FieldValue, rates: &[u32]) -> Result<Option<u32>, SessionError> {
+        for (i, &rate) in rates.iter().enumerate() {
+            if i > 0 {
+                self.log(&format!(
+                    "baud: no answer at {}, trying {rate}",
+                    rates[i - 1]
+                ));
+                self.transport.set_baud(rate)?;
+                self.flush_input()?;
+            }
+            let done = self.exchange(ping, StartOptions::default())?;
+            if matches!(done.status, Status::Ack | Status::Nack | Status::Invalid) {
+                return Ok(Some(rate));
+            }
+        }
+        Ok(None)
     }
 
     /// Waits up to `wait_ms` for bytes and feeds them (or runs the timeouts).
@@ -1080,71 +1109,55 @@ impl<T: Transport> Device<T> {
     }
 }
 
-/// The key of a remembered setting: the command and, when it has more than one parameter after
-/// the function selector, the first of them (a message format per descriptor set, a port's rate
-/// per port: a write of the same command for another of these is another setting).
+/// The key of a remembered setting: the command and the values of the parameters its `read`
+/// sends (those a read without them would miss: `desc_set` of a message format, `port` of a
+/// port's rate).
 fn setting_key(command: &FieldValue, facts: &CommandFacts) -> String {
-    let mut values = String::new();
-    let _ = command.write_values_json(&mut values);
-    let first = match crate::json_read::parse(&values) {
-        Ok(crate::json_read::Json::Object(members)) => {
-            let params: Vec<_> = members
-                .into_iter()
-                .filter(|(k, _)| k != "function")
-                .collect();
-            // With one parameter, that is the setting's value, not a key.
-            match params.len() {
-                0 | 1 => None,
-                _ => params.into_iter().next().map(|(k, v)| format!("{k}={v:?}")),
-            }
-        }
-        _ => None,
+    use crate::json_read::{parse, Json};
+    let mut key = format!("{}/{}", facts.set, facts.descriptor);
+    let mut text = String::new();
+    let _ = command.write_values_json(&mut text);
+    let (Ok(Json::Object(members)), Some(read)) = (
+        parse(&text),
+        (1..=u8::MAX).find(|&f| crate::commands::function_name(f) == Some("read")),
+    ) else {
+        return key;
     };
-    format!(
-        "{}/{}/{}",
-        facts.set,
-        facts.descriptor,
-        first.unwrap_or_default()
-    )
+    let params: Vec<&(String, Json)> = members.iter().filter(|(k, _)| k != "function").collect();
+    let function = ("function".to_string(), Json::Number(read.to_string()));
+    for (name, value) in &params {
+        let without = Json::Object(
+            core::iter::once(function.clone())
+                .chain(
+                    params
+                        .iter()
+                        .filter(|(k, _)| k != name)
+                        .map(|p| (*p).clone()),
+                )
+                .collect(),
+        );
+        let missed =
+            FieldValue::from_json(facts.set, facts.descriptor, command.device(), &without).is_err();
+        if missed {
+            key.push_str(&format!("/{name}={value:?}"));
+        }
+    }
+    key
+}
+
+/// The reason a port is lost: the system's error text, `end of file` for a read at the end.
+fn lost_reason(e: &io::Error) -> String {
+    if e.kind() == io::ErrorKind::UnexpectedEof {
+        "end of file".to_string()
+    } else {
+        io_message(e)
+    }
 }
 
 /// The command (set, descriptor) as a value, when it takes no parameters.
 fn link_command(which: Option<(u8, u8)>, model: Option<Model>) -> Option<FieldValue> {
     let (set, descriptor) = which?;
     decode_field(set, descriptor, &[], model).ok()
-}
-
-/// The spec's facts about getting through (the IR's `link`, printed into `crate::framing` and
-/// `Device::baud_rates`, `Device::default_baud`).
-#[derive(Clone, Debug)]
-struct LinkFacts {
-    idle: Option<(u8, u8)>,
-    ping: Option<(u8, u8)>,
-    resume: Option<(u8, u8)>,
-    attempts: u32,
-    /// The model's rates, or every model's when none is selected; ascending.
-    bauds: Vec<u32>,
-    default_baud: Option<u32>,
-}
-
-fn link_facts(model: Option<Model>) -> LinkFacts {
-    let mut bauds: Vec<u32> = match model {
-        Some(m) => m.baud_rates().to_vec(),
-        None => Model::ALL
-            .iter()
-            .flat_map(|m| m.baud_rates().iter().copied())
-            .collect(),
-    };
-    bauds.sort_unstable();
-    bauds.dedup();
-    LinkFacts {
-        idle: crate::framing::LINK_IDLE,
-        ping: crate::framing::LINK_PING,
-        resume: crate::framing::LINK_RESUME,
-        attempts: crate::framing::LINK_IDLE_ATTEMPTS.max(1),
-        bauds,
-        default_baud: model.and_then(|m| m.default_baud()),
-    }
 }
 
 impl<T: Transport> fmt::Debug for Device<T> {

@@ -375,10 +375,10 @@ pub struct CommandResult<'a> {
     pub error: Option<ResultError>,
     /// The reply fields the command expected.
     pub expect: Expect,
-    device: Option<Device>,
+    pub(crate) device: Option<Device>,
     // The reply: the payload entries after the ack, from payload offset `start`.
-    reply: &'a [u8],
-    start: usize,
+    pub(crate) reply: &'a [u8],
+    pub(crate) start: usize,
 }
 
 impl<'a> CommandResult<'a> {

@@ -3,13 +3,13 @@
 //! packets as canonical JSON lines on stdin, runs them in order over the connection
 //! (`tcp:HOST:PORT`, an IPv6 host in brackets, or a serial port path with the `serial` feature)
 //! and prints one result line per command; every other packet received and every skip run is
-//! printed as its canonical line, in arrival order. A line `{"link": "idle"}` gets the device to
-//! idle while it streams (one result line). `--auto-baud` finds the baud rate of a serial port
-//! when the device does not answer the idle command at `--baud`; `--reconnect-ms N` reopens a
-//! lost port for up to N ms and re-applies the settings sent; each step of getting through is
-//! one `link: ...` line on stderr.
+//! printed as its canonical line, in arrival order. Getting through (§8): `--auto-baud` finds the
+//! baud rate of a serial port at connect, `--reconnect-ms N` reopens a lost port for up to N ms
+//! and re-applies the settings written (a command lost with the port: result `lost`), the lines
+//! `{"link":"idle"}` (the last attempt's result line) and `{"link":"listen","ms":M}` (receive
+//! for M ms, then `{"line":N,"listened":M}`); each step is one `link: ...` line on stderr.
 //! Exit status: 0 when every line ran, 1 when a line was bad (reported on stderr with its number
-//! and skipped) or failed to get through, 2 for usage and connection errors.
+//! and skipped), 2 for usage and connection errors and when getting through failed.
 
 use std::cell::RefCell;
 use std::io::{self, BufRead, Write};
@@ -163,26 +163,38 @@ impl Printer {
     }
 }
 
-/// The link operation of an input line `{"link": "idle"}`: `Ok(None)` when the line is not
-/// one, an error text when it is a link line that asks for something else.
-fn link_line(text: &str) -> Result<Option<String>, String> {
+/// What a link line asks for.
+enum LinkLine {
+    Idle,
+    Listen(u64),
+}
+
+/// The link operation of an input line: `Ok(None)` when the line is not one, an error text when
+/// it is a malformed link line.
+fn link_line(text: &str) -> Result<Option<LinkLine>, String> {
     let Ok(Json::Object(members)) = parse(text) else {
         return Ok(None);
     };
     let Some((_, op)) = members.iter().find(|(k, _)| k == "link") else {
         return Ok(None);
     };
-    match op {
-        Json::String(op) if op == "idle" && members.len() == 1 => Ok(Some(op.clone())),
-        _ => Err("expected {\"link\": \"idle\"}".to_string()),
+    let ms = members.iter().find(|(k, _)| k == "ms").map(|(_, v)| v);
+    match (op, ms, members.len()) {
+        (Json::String(op), None, 1) if op == "idle" => Ok(Some(LinkLine::Idle)),
+        (Json::String(op), Some(Json::Number(n)), 2) if op == "listen" => match n.parse::<u64>() {
+            Ok(ms) => Ok(Some(LinkLine::Listen(ms))),
+            Err(_) => Err(BAD_LINK.to_string()),
+        },
+        _ => Err(BAD_LINK.to_string()),
     }
 }
+
+const BAD_LINK: &str = "expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}";
 
 fn run(o: Options) -> Result<ExitCode, String> {
     let mut dev = connect(&o.connect, o.device, o.baud)
         .map_err(|e| e.to_string())?
-        .with_timeout_ms(o.timeout_ms)
-        .with_auto_baud(o.auto_baud);
+        .with_timeout_ms(o.timeout_ms);
     if let Some(ms) = o.reconnect_ms {
         dev = dev.with_reconnect_ms(ms);
     }
@@ -203,6 +215,9 @@ fn run(o: Options) -> Result<ExitCode, String> {
         let _ = p.flush();
     });
     dev.on_link(|line| eprintln!("{line}"));
+    if o.auto_baud {
+        dev.find_baud().map_err(|e| e.to_string())?;
+    }
     let mut status = ExitCode::SUCCESS;
     let stdin = io::stdin();
     let mut input = stdin.lock();
@@ -229,26 +244,21 @@ fn run(o: Options) -> Result<ExitCode, String> {
         }
         match link_line(text) {
             Ok(None) => {}
-            Ok(Some(_)) => {
-                let line = match dev.to_idle() {
-                    Ok(idle) => format!(
-                        "{{\"line\":{number},\"link\":\"idle\",\"result\":\"ok\",\"attempts\":{},\"dropped\":{}}}",
-                        idle.attempts, idle.dropped
-                    ),
-                    Err(SessionError::Io(e)) => return Err(SessionError::Io(e).to_string()),
-                    Err(e) => {
-                        eprintln!("{PROG}: line {number}: {e}");
-                        status = ExitCode::from(1);
-                        let mut t = String::new();
-                        let _ = mipcodec::json::write_display(&mut t, &e);
-                        format!("{{\"line\":{number},\"link\":\"idle\",\"result\":\"error\",\"error\":{t}}}")
-                    }
-                };
+            Ok(Some(LinkLine::Idle)) => {
+                let done = dev.to_idle().map_err(|e| e.to_string())?;
                 let mut p = p.borrow_mut();
                 // What was dropped meanwhile is never printed.
                 p.trim(dev.retain_from());
-                p.text.push_str(&line);
+                let _ = done.write_line(&mut p.text, number);
                 p.text.push('\n');
+                p.flush().map_err(io_err)?;
+                continue;
+            }
+            Ok(Some(LinkLine::Listen(ms))) => {
+                dev.listen(ms).map_err(|e| e.to_string())?;
+                let mut p = p.borrow_mut();
+                p.text
+                    .push_str(&format!("{{\"line\":{number},\"listened\":{ms}}}\n"));
                 p.flush().map_err(io_err)?;
                 continue;
             }
@@ -269,12 +279,18 @@ fn run(o: Options) -> Result<ExitCode, String> {
         match dev.run(&command, StartOptions::default()) {
             Ok(_) => {}
             Err(SessionError::Start(e)) => return Err(format!("line {number}: {e}")),
-            Err(e @ (SessionError::LinkLost { .. } | SessionError::Link(_))) => {
-                eprintln!("{PROG}: line {number}: {e}");
-                status = ExitCode::from(1);
-                if matches!(e, SessionError::Link(_)) {
-                    // The port did not come back: nothing more can run.
-                    return Ok(status);
+            Err(SessionError::LinkLost {
+                reason, gave_up, ..
+            }) => {
+                let mut error = String::new();
+                let _ = mipcodec::json::write_display(&mut error, &format!("link lost: {reason}"));
+                let mut pr = p.borrow_mut();
+                pr.text.push_str(&format!(
+                    "{{\"line\":{number},\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":{error}}}\n"
+                ));
+                pr.flush().map_err(io_err)?;
+                if let Some(m) = gave_up {
+                    return Err(format!("link: {m}"));
                 }
             }
             Err(e) => return Err(e.to_string()),
