@@ -843,7 +843,11 @@ impl<T: Transport> Device<T> {
     fn reapply(&mut self) -> Result<usize, SessionError> {
         let model = self.session.device();
         if link_command(crate::framing::LINK_IDLE, model).is_some() {
-            self.to_idle()?;
+            // The session's own idle: what the application left stays (resumed or idle).
+            let idle = self.idle;
+            let done = self.to_idle();
+            self.idle = idle;
+            done?;
         }
         let settings: Vec<FieldValue> = self.settings().copied().collect();
         let mut applied = 0;
