@@ -33,7 +33,6 @@ from tests.helpers.langs import LANGS
 LINK_PENDING = {
     "c": "link-cc: C session core (session.c, posix transport, tools/session.c)",
     "cpp": "link-cc: C++ session core (session.hpp, transport, tools/session.cpp)",
-    "rust": "link-rust: Rust session core (session.rs, device.rs, protocodec-session)",
 }
 
 
