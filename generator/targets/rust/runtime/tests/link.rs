@@ -30,6 +30,9 @@ struct Line {
     inbox: VecDeque<u8>,
     commands: Vec<(u8, u8, Vec<u8>)>,
     opens: u32,
+    // A serial port's rate and the device's: (host, device); commands are answered only when
+    // they are the same.
+    rates: Option<(u32, u32)>,
 }
 
 impl Line {
@@ -40,6 +43,7 @@ impl Line {
             inbox: VecDeque::new(),
             commands: Vec::new(),
             opens: 0,
+            rates: None,
         }))
     }
 }
@@ -56,6 +60,7 @@ impl Transport for Port {
         if !line.up {
             return Err(lost());
         }
+        let understood = line.rates.map_or(true, |(host, device)| host == device);
         let Line {
             parser,
             inbox,
@@ -68,6 +73,9 @@ impl Transport for Port {
                 for item in packet.fields() {
                     if let FieldItem::Field { descriptor, data } = item {
                         commands.push((packet.set(), descriptor, data.to_vec()));
+                        if !understood {
+                            continue;
+                        }
                         let mut b = PacketBuilder::new(packet.set());
                         b.add_raw_field(ACK, &[descriptor, 0]).unwrap();
                         inbox.extend(b.finish());
@@ -93,6 +101,17 @@ impl Transport for Port {
             *slot = b;
         }
         Ok(n)
+    }
+
+    fn baud(&self) -> Option<u32> {
+        self.0.borrow().rates.map(|(host, _)| host)
+    }
+
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        let mut line = self.0.borrow_mut();
+        let device = line.rates.map_or(baud, |(_, device)| device);
+        line.rates = Some((baud, device));
+        Ok(())
     }
 }
 
@@ -279,4 +298,67 @@ fn abandon_forgets_the_pending_commands_and_their_late_replies_are_packets() {
         events.push(matches!(e, SessionEvent::Packet { .. }))
     });
     assert_eq!(events, [true]); // no timeout result, the ack routed as a packet
+}
+
+/// The baud-rate search: the configured rate, the model's default, then its rates from the
+/// highest down (tests/runtime_specs: alpha 9600, 115200 (default), 921600; beta 115200,
+/// 230400), one ping each.
+fn search(
+    model: Option<Device>,
+    host: u32,
+    device: u32,
+) -> (Result<Option<u32>, String>, Vec<String>, u32) {
+    let line = Line::new();
+    line.borrow_mut().rates = Some((host, device));
+    let logs = Rc::new(RefCell::new(Vec::new()));
+    let sink = Rc::clone(&logs);
+    let mut dev = Link::new(Port(Rc::clone(&line)), model).with_timeout_ms(100);
+    dev.on_link(move |text| sink.borrow_mut().push(text.to_string()));
+    let found = dev.find_baud().map_err(|e| e.to_string());
+    let logs = logs.borrow().clone();
+    let rate = line.borrow().rates.unwrap().0;
+    (found, logs, rate)
+}
+
+#[test]
+fn the_baud_rate_search_tries_the_default_then_the_highest_first() {
+    let (found, logs, rate) = search(Some(Device::Alpha), 9600, 921_600);
+    assert_eq!(found, Ok(Some(921_600)));
+    assert_eq!(
+        logs,
+        [
+            "link: baud: no answer at 9600, trying 115200",
+            "link: baud: no answer at 115200, trying 921600",
+            "link: baud: device answers at 921600",
+        ]
+    );
+    assert_eq!(rate, 921_600);
+    // At the configured rate: one ping, nothing said.
+    let (found, logs, _) = search(Some(Device::Alpha), 115_200, 115_200);
+    assert_eq!((found, logs.len()), (Ok(Some(115_200)), 0));
+    // Without a model: every model's default, then all their rates from the highest down.
+    let (found, logs, _) = search(None, 9600, 230_400);
+    assert_eq!(found, Ok(Some(230_400)));
+    assert_eq!(
+        logs[..3],
+        [
+            "link: baud: no answer at 9600, trying 115200",
+            "link: baud: no answer at 115200, trying 921600",
+            "link: baud: no answer at 921600, trying 230400",
+        ]
+    );
+}
+
+#[test]
+fn no_answer_at_any_rate_fails_and_leaves_the_configured_rate() {
+    let (found, logs, rate) = search(Some(Device::Beta), 230_400, 57_600);
+    assert_eq!(found, Err("link: baud: no answer at any rate".to_string()));
+    assert_eq!(
+        logs,
+        [
+            "link: baud: no answer at 230400, trying 115200",
+            "link: baud: no answer at any rate",
+        ]
+    );
+    assert_eq!(rate, 230_400);
 }
