@@ -257,8 +257,10 @@ fn run(o: Options) -> Result<ExitCode, String> {
             Ok(Some(LinkLine::Listen(ms))) => {
                 dev.listen(ms).map_err(|e| e.to_string())?;
                 let mut p = p.borrow_mut();
-                p.text
-                    .push_str(&format!("{{\"line\":{number},\"listened\":{ms}}}\n"));
+                let line = format!("\"line\":{number},\"listened\":{ms}");
+                p.text.push('{');
+                p.text.push_str(&line);
+                p.text.push_str("}\n");
                 p.flush().map_err(io_err)?;
                 continue;
             }
@@ -283,12 +285,15 @@ fn run(o: Options) -> Result<ExitCode, String> {
                 reason, gave_up, ..
             }) => {
                 let mut error = String::new();
-                let _ =
-                    mscipcodec::json::write_display(&mut error, &format!("link lost: {reason}"));
+                let lost = format!("link lost: {reason}");
+                let _ = mscipcodec::json::write_display(&mut error, &lost);
                 let mut pr = p.borrow_mut();
-                pr.text.push_str(&format!(
-                    "{{\"line\":{number},\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":{error}}}\n"
-                ));
+                let line = format!(
+                    "\"line\":{number},\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":{error}"
+                );
+                pr.text.push('{');
+                pr.text.push_str(&line);
+                pr.text.push_str("}\n");
                 pr.flush().map_err(io_err)?;
                 if let Some(m) = gave_up {
                     return Err(format!("link: {m}"));
