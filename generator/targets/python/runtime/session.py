@@ -785,6 +785,7 @@ class Device(_CommandSets):
         self._app_idle = False  # the application's last idle/resume command was an idle
         self._quiet = False  # inside to_idle: data is counted and dropped, not delivered
         self._muted: Optional[Tuple[Any, Any, Any]] = None  # the handlers while muted
+        self._mute_depth = 0
         self._dropped = 0
         self._linking = False  # inside a reconnect: no nested one
         from . import command_api  # the generated typed API (imports this module)
@@ -927,10 +928,15 @@ class Device(_CommandSets):
         (it is counted and dropped); the handlers come back after."""
         s = self.session
         if on:
-            self._quiet, self._dropped = True, 0
-            self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
-            s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
-        elif self._muted is not None:
+            self._dropped = 0
+            self._mute_depth += 1
+            if self._mute_depth == 1:  # (a reconnect inside to_idle mutes again: nested)
+                self._quiet = True
+                self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
+                s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
+            return
+        self._mute_depth -= 1
+        if self._mute_depth == 0 and self._muted is not None:
             self._quiet = False
             s._packet_handlers, s._field_handlers, s._grouper = self._muted
             self._muted = None
@@ -1040,14 +1046,20 @@ class Device(_CommandSets):
         self.close()
 
 
-def connect(address: str, device: Optional[str] = None, baudrate: int = 115200, **options: Any) -> Device:
+def connect(
+    address: str, device: Optional[str] = None, baudrate: int = 115200, auto_baud: bool = False, **options: Any
+) -> Device:
     """A Device on `address`: "tcp:HOST:PORT" or a serial port path ("/dev/ttyUSB0", "COM3").
-    Options of Device; with `reconnect_ms`, a lost port is reopened at the same address."""
+    Options of Device (`reconnect_ms`: a lost port is reopened at the same address, `log`);
+    `auto_baud`: find the rate the device answers at when `baudrate` gets no answer (a serial port)."""
     from .transport import open_transport
 
     options.setdefault("reopen", lambda: open_transport(address, baudrate))
     options.setdefault("address", address)
-    return Device(open_transport(address, baudrate), device, **options)
+    result = Device(open_transport(address, baudrate), device, **options)
+    if auto_baud:
+        result.find_baud()  # a reopened port is set to the rate found (Device._reconnect)
+    return result
 
 
 def baud_search_order(device: Optional[str], configured: int) -> Tuple[int, ...]:

@@ -263,3 +263,23 @@ def test_the_recorded_settings_are_bounded_and_keyed() -> None:
     dev.run(control.Gain(function=1, gain=4))
     assert len(dev.settings) == MAX_SETTINGS
     assert list(dev.settings)[-1] == (0x01, 0x03)
+
+
+def test_a_port_lost_during_to_idle_reconnects_and_keeps_the_handlers(ping_is_idle, monkeypatch) -> None:
+    clock, lines, seen = Clock(), [], []
+    sim = Simulator("alpha", stream_full=True)
+    first = SimPort(sim, clock)
+    dev = Device(
+        first, "alpha", timeout_ms=300, clock=clock, log=lines.append,
+        reopen=lambda: SimPort(sim, clock), address="/x/dev", reconnect_ms=2000,
+    )  # fmt: skip
+    dev.on_packet(seen.append)
+    first.lost = "Input/output error"
+    with pytest.raises(LinkLost):
+        dev.to_idle()  # its idle command was in flight: lost, not retried
+    assert lines[0] == "link: port lost (Input/output error), reopening /x/dev every 500 ms"
+    assert lines[1].startswith("link: idle: ACK on attempt 1 of 3")  # the reconnect's own idle
+    assert lines[2] == "link: reconnected after 0.0 s, re-applied 0 settings"
+    assert seen == []
+    dev.run(control.Ping())  # the device is idle: nothing streams, but the handler is back
+    assert dev.session._packet_handlers == [seen.append]
