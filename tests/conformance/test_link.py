@@ -22,6 +22,7 @@ from __future__ import annotations
 import json
 import re
 import subprocess
+import time
 from pathlib import Path
 
 import pytest
@@ -74,12 +75,19 @@ def _kinds(stderr: str) -> list[str]:
 
 
 def _tool(
-    lang: str, address: str, lines: list[str], *extra: str, timeout_ms: str = TIMEOUT_MS
+    lang: str, address: str, lines: list[str], *extra: str, timeout_ms: str = TIMEOUT_MS, settle: float = 0.0
 ) -> tuple[list[dict], str]:
+    """Runs the session tool; its stdin lines are written `settle` seconds after it started (the
+    device streams at the tool meanwhile: a native tool connects and sends at once, before a TCP
+    simulator, which streams from the connection on, has built up a flood)."""
     cmd = [str(SESSION), lang, "--connect", address, "--protocol", "mip", "--timeout-ms", timeout_ms, *extra]
-    run = subprocess.run(cmd, input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=120)
-    assert run.returncode == 0, run.stderr
-    return [json.loads(x) for x in run.stdout.splitlines()], run.stderr
+    proc = subprocess.Popen(
+        cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )  # fmt: skip
+    time.sleep(settle)
+    stdout, stderr = proc.communicate("\n".join(lines) + "\n", timeout=120)
+    assert proc.returncode == 0, stderr
+    return [json.loads(x) for x in stdout.splitlines()], stderr
 
 
 def _line(set_id: int, descriptor: int, name: str, values: dict, device: str | None = None) -> str:
@@ -108,7 +116,7 @@ def test_idle_while_streaming_at_full_rate(lang: str, transport: str) -> None:
         *("--garbage", "set_to_idle:23"),
     )
     with Sim("mip", "cv7_ins", listen, "--stream-full", *faults) as sim:
-        out, err = _tool(lang, sim.address, [IDLE, IDLE, IDLE, _listen(300)], "--device", "cv7_ins")
+        out, err = _tool(lang, sim.address, [IDLE, IDLE, IDLE, _listen(300)], "--device", "cv7_ins", settle=0.5)
     kinds = _kinds(err)
     # the first reply dropped: at least one retry, said while the data flooded in
     assert kinds[0] == "idle_retry" and kinds.count("idle_ok") == 3, err
