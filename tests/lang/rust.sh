@@ -208,14 +208,15 @@ test_msrv() {
     fi
     # Cargo before 1.68 reads the crates.io index only through git (github.com), even for an
     # optional dependency that no build uses: the crate is built from a copy whose manifest has
-    # the `serial` feature (serialport, std only) taken out. (serialport =4.2.2 with the `serial`
+    # the `serial` feature (serialport and nix, std only) taken out. (serialport =4.2.2 with the `serial`
     # feature builds with Rust 1.65 too; checked by hand, see README.md of the crate.)
     local copy="$ROOT/build/rust/msrv-crate/$pkg"
     rm -rf "$copy"
     mkdir -p "$(dirname "$copy")"
     cp -R "$ROOT/generated/rust/$pkg" "$copy"
     rm -f "$copy/Cargo.lock"
-    sed -i -e '/^serial = /d' -e '/^serialport = /d' -e '/^\[dependencies\]$/d' "$copy/Cargo.toml"
+    sed -i -e '/^serial = /d' -e '/^serialport = /d' -e '/^nix = /d' -e '/^\[dependencies\]$/d' \
+        -e "/^\[target.'cfg(unix)'.dependencies\]$/d" "$copy/Cargo.toml"
     m="$copy/Cargo.toml"
     echo "== $pkg: Rust $version (rust-version): build --no-default-features, build, test" >&2
     CARGO_TARGET_DIR="$MSRV_TARGET_DIR" cargo "+$version" build --quiet --manifest-path "$m" --lib --no-default-features

@@ -375,10 +375,10 @@ pub struct CommandResult<'a> {
     pub error: Option<ResultError>,
     /// The reply fields the command expected.
     pub expect: Expect,
-    device: Option<Device>,
+    pub(crate) device: Option<Device>,
     // The reply: the payload entries after the ack, from payload offset `start`.
-    reply: &'a [u8],
-    start: usize,
+    pub(crate) reply: &'a [u8],
+    pub(crate) start: usize,
 }
 
 impl<'a> CommandResult<'a> {
@@ -776,6 +776,12 @@ impl<const N: usize> Session<N> {
         self.queue.len
     }
 
+    /// The earliest stream offset whose byte may still be reported (in a skip run or a packet):
+    /// a caller that keeps the input to print skipped bytes can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        self.parser.retain_from()
+    }
+
     /// Whether the command with this id still waits for its reply.
     pub fn is_pending(&self, id: u32) -> bool {
         self.queue.slots[..self.queue.len]
@@ -899,6 +905,17 @@ impl<const N: usize> Session<N> {
         let queue = &mut self.queue;
         self.parser.flush(|e| queue.route(e, &mut on));
         self.wait_at = None;
+    }
+
+    /// The link was lost: every pending command is forgotten (no result is reported; the
+    /// caller reports them as lost, they are not retried). Returns how many there were.
+    pub fn abandon(&mut self) -> usize {
+        let n = self.queue.len;
+        for slot in self.queue.slots.iter_mut() {
+            *slot = None;
+        }
+        self.queue.len = 0;
+        n
     }
 
     fn expire<F: FnMut(SessionEvent<'_>)>(&mut self, now: u64, on: &mut F) {

@@ -27,6 +27,23 @@ pub trait Transport {
     /// Waits up to `timeout` for bytes and reads what arrived into `buf`: 0 when nothing came in
     /// time. The end of the connection is an error (`UnexpectedEof`).
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize>;
+    /// Discards what was received but not read yet (a serial port's input buffer); nothing
+    /// where there is no such buffer.
+    fn clear_input(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+    /// The line rate of a serial port; `None` where there is none (TCP).
+    fn baud(&self) -> Option<u32> {
+        None
+    }
+    /// Changes the line rate of a serial port (`Unsupported` where there is none).
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        let _ = baud;
+        Err(io::Error::new(
+            io::ErrorKind::Unsupported,
+            "this connection has no baud rate",
+        ))
+    }
 }
 
 impl<T: Transport + ?Sized> Transport for Box<T> {
@@ -35,6 +52,15 @@ impl<T: Transport + ?Sized> Transport for Box<T> {
     }
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
         (**self).receive(buf, timeout)
+    }
+    fn clear_input(&mut self) -> io::Result<()> {
+        (**self).clear_input()
+    }
+    fn baud(&self) -> Option<u32> {
+        (**self).baud()
+    }
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        (**self).set_baud(baud)
     }
 }
 
@@ -96,29 +122,100 @@ impl Transport for TcpTransport {
 /// A serial port (the `serialport` crate; 8 data bits, no parity, one stop bit).
 #[cfg(feature = "serial")]
 pub struct SerialTransport {
+    #[cfg(unix)]
+    port: serialport::TTYPort,
+    #[cfg(not(unix))]
     port: Box<dyn serialport::SerialPort>,
+    baud: u32,
 }
 
 #[cfg(feature = "serial")]
 impl SerialTransport {
     /// Opens the port `path` (`/dev/ttyUSB0`, `COM3`) at `baud`.
     pub fn open(path: &str, baud: u32) -> io::Result<Self> {
-        let port = serialport::new(path, baud)
-            .timeout(Duration::from_millis(10))
-            .open()
-            .map_err(io::Error::from)?;
-        Ok(Self { port })
+        let builder = serialport::new(path, baud).timeout(Duration::from_millis(10));
+        #[cfg(unix)]
+        let port = builder.open_native().map_err(io::Error::from)?;
+        #[cfg(not(unix))]
+        let port = builder.open().map_err(io::Error::from)?;
+        let mut t = Self { port, baud };
+        // A standard rate as its termios speed code (what a device driver, or a simulator
+        // reading the line settings, understands).
+        t.set_baud(baud)?;
+        Ok(t)
     }
+}
+
+/// Sets a standard rate with its termios code (`cfsetspeed`, as C programs and pyserial do;
+/// `serialport` sets every rate as an arbitrary one, `BOTHER`), another rate through `serialport`.
+#[cfg(all(feature = "serial", unix))]
+fn set_line_rate(port: &mut serialport::TTYPort, baud: u32) -> io::Result<()> {
+    use nix::sys::termios::{cfsetspeed, tcgetattr, tcsetattr, BaudRate, SetArg};
+    use std::os::unix::io::AsRawFd;
+    let code = match baud {
+        9600 => BaudRate::B9600,
+        19200 => BaudRate::B19200,
+        38400 => BaudRate::B38400,
+        57600 => BaudRate::B57600,
+        115_200 => BaudRate::B115200,
+        230_400 => BaudRate::B230400,
+        #[cfg(any(target_os = "linux", target_os = "android", target_os = "freebsd"))]
+        460_800 => BaudRate::B460800,
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        921_600 => BaudRate::B921600,
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        3_000_000 => BaudRate::B3000000,
+        _ => {
+            use serialport::SerialPort;
+            return port.set_baud_rate(baud).map_err(io::Error::from);
+        }
+    };
+    let fd = port.as_raw_fd();
+    let mut t = tcgetattr(fd).map_err(io::Error::from)?;
+    cfsetspeed(&mut t, code).map_err(io::Error::from)?;
+    tcsetattr(fd, SetArg::TCSANOW, &t).map_err(io::Error::from)
+}
+
+#[cfg(all(feature = "serial", not(unix)))]
+fn set_line_rate(port: &mut Box<dyn serialport::SerialPort>, baud: u32) -> io::Result<()> {
+    port.set_baud_rate(baud).map_err(io::Error::from)
 }
 
 #[cfg(feature = "serial")]
 impl Transport for SerialTransport {
     fn send(&mut self, bytes: &[u8]) -> io::Result<()> {
-        self.port.write_all(bytes)?;
+        match self.port.write_all(bytes) {
+            // A hang-up (see receive): writing tells the OS's error.
+            #[cfg(unix)]
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                use std::os::unix::io::AsRawFd;
+                nix::unistd::write(self.port.as_raw_fd(), bytes).map_err(io::Error::from)?;
+                Err(e)
+            }
+            r => r,
+        }?;
         self.port.flush()
     }
 
+    fn clear_input(&mut self) -> io::Result<()> {
+        use serialport::SerialPort;
+        self.port
+            .clear(serialport::ClearBuffer::Input)
+            .map_err(io::Error::from)
+    }
+
+    fn baud(&self) -> Option<u32> {
+        Some(self.baud)
+    }
+
+    fn set_baud(&mut self, baud: u32) -> io::Result<()> {
+        set_line_rate(&mut self.port, baud)?;
+        self.baud = baud;
+        Ok(())
+    }
+
     fn receive(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        use serialport::SerialPort;
         self.port
             .set_timeout(timeout.max(Duration::from_millis(1)))
             .map_err(io::Error::from)?;
@@ -131,6 +228,20 @@ impl Transport for SerialTransport {
                 ) =>
             {
                 Ok(0)
+            }
+            // serialport reports a hang-up (the poll's POLLHUP) as a broken pipe of its own:
+            // reading tells the OS's error (a pty whose other side closed: EIO).
+            #[cfg(unix)]
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+                use std::os::unix::io::AsRawFd;
+                match nix::unistd::read(self.port.as_raw_fd(), buf) {
+                    Ok(0) => Err(io::Error::new(
+                        io::ErrorKind::UnexpectedEof,
+                        "the port was closed",
+                    )),
+                    Ok(n) => Ok(n),
+                    Err(errno) => Err(io::Error::from(errno)),
+                }
             }
             Err(e) => Err(e),
         }
@@ -229,6 +340,22 @@ impl Completed {
         matches!(self.status, Status::Ack | Status::Sent)
     }
 
+    /// Writes the session tool's line for input line `line` (as [`CommandResult::write_line`]).
+    pub fn write_line(&self, w: &mut dyn fmt::Write, line: u64) -> fmt::Result {
+        CommandResult {
+            id: 0,
+            facts: self.facts,
+            status: self.status,
+            code: self.code,
+            error: self.error,
+            expect: self.expect,
+            device: self.device,
+            reply: &self.reply,
+            start: self.start,
+        }
+        .write_line(w, line)
+    }
+
     /// The field entries of the reply.
     pub fn reply(&self) -> Fields<'_> {
         Fields::at(self.facts.set, &self.reply, self.start)
@@ -310,6 +437,20 @@ pub enum SessionError {
     Connect(String),
     /// Reading or writing the connection failed.
     Io(io::Error),
+    /// The port went away while the command waited for its reply: the command's result is
+    /// **lost**, it is not retried. With reconnection on, the link was recovered before this was
+    /// returned, unless `gave_up` says why not.
+    LinkLost {
+        /// Command name.
+        name: &'static str,
+        /// The system's error text of the failing call, or `end of file`.
+        reason: String,
+        /// `gave up reopening ADDRESS after D ms` when the port did not come back in time.
+        gave_up: Option<String>,
+    },
+    /// Getting through failed (`idle: the protocol has no idle command`, `baud: no answer at any
+    /// rate`, `gave up reopening ADDRESS after D ms`).
+    Link(String),
 }
 
 impl fmt::Display for SessionError {
@@ -327,6 +468,11 @@ impl fmt::Display for SessionError {
             SessionError::Start(e) => write!(f, "cannot start the command: {e}"),
             SessionError::Address(m) | SessionError::Connect(m) => f.write_str(m),
             SessionError::Io(e) => write!(f, "connection: {}", io_message(e)),
+            SessionError::LinkLost {
+                gave_up: Some(m), ..
+            } => write!(f, "link: {m}"),
+            SessionError::LinkLost { name, reason, .. } => write!(f, "{name}: link lost: {reason}"),
+            SessionError::Link(m) => write!(f, "link: {m}"),
         }
     }
 }
@@ -342,10 +488,27 @@ impl From<io::Error> for SessionError {
 type PacketHandler = Box<dyn FnMut(u64, &Packet<'_>)>;
 type FieldHandler = Box<dyn FnMut(&FieldValue, &Packet<'_>)>;
 type EventHandler = Box<dyn FnMut(&SessionEvent<'_>)>;
+type BytesHandler = Box<dyn FnMut(&[u8])>;
+type LinkHandler = Box<dyn FnMut(&str)>;
+type Opener<T> = Box<dyn FnMut(u32) -> Result<T, SessionError>>;
+
+/// How often a lost port is reopened, in milliseconds.
+pub const RECONNECT_INTERVAL_MS: u64 = 500;
+/// How long a lost port is reopened when the application asks for reconnection without a
+/// deadline of its own, in milliseconds.
+pub const DEFAULT_RECONNECT_MS: u64 = 10_000;
+/// How long the input is left to drain after a flush before an idle attempt is repeated.
+pub const QUIET_MS: u64 = 50;
+/// The most settings a device remembers to re-apply after a reconnection (the latest per
+/// command and first parameter wins; beyond this the oldest is forgotten).
+pub const MAX_SETTINGS: usize = 64;
 
 /// A session over a transport, blocking: [`Device::run`] sends a command and waits for its
 /// result, feeding every received byte to the session, so data packets reach the handlers
-/// meanwhile.
+/// meanwhile. It gets a streaming device to idle ([`Device::to_idle`]), finds the baud rate of
+/// a serial port ([`Device::find_baud`]) and, when asked ([`Device::with_reconnect_ms`]),
+/// reopens a lost port and re-applies the settings written since it connected, reporting each
+/// step in one line ([`Device::on_link`]; `docs/conformance.md` §8, "Getting through").
 pub struct Device<T: Transport = Box<dyn Transport>> {
     transport: T,
     session: Session<1>,
@@ -354,21 +517,42 @@ pub struct Device<T: Transport = Box<dyn Transport>> {
     on_packet: Vec<PacketHandler>,
     on_field: Vec<(u8, u8, FieldHandler)>,
     on_event: Option<EventHandler>,
+    on_bytes: Option<BytesHandler>,
+    on_link: Option<LinkHandler>,
+    opener: Option<Opener<T>>,
+    address: String,
+    baud: u32,
+    timeout_ms: u64,
+    reconnect_ms: Option<u64>,
+    recovering: bool,
+    // Bytes dropped since `Some(0)`: while getting through, nothing reaches the handlers.
+    dropping: Option<u64>,
+    settings: Vec<(String, FieldValue)>,
+    // The application's last idle or resume command was an idle (no resume after reconnecting).
+    idle: bool,
 }
 
 /// Connects to `address` (`tcp:HOST:PORT` or a serial port path at `baud`) for `model` (its
-/// layouts decode, and commands it does not support are refused before sending).
+/// layouts decode, and commands it does not support are refused before sending). The device
+/// can reopen the address ([`Device::with_reconnect_ms`]).
 pub fn connect(
     address: &str,
     model: Option<Model>,
     baud: u32,
 ) -> Result<Device<Box<dyn Transport>>, SessionError> {
-    Ok(Device::new(open_transport(address, baud)?, model))
+    let transport = open_transport(address, baud)?;
+    let again = address.to_string();
+    let mut device = Device::new(transport, model);
+    device.opener = Some(Box::new(move |b| open_transport(&again, b)));
+    device.address = address.to_string();
+    device.baud = baud;
+    Ok(device)
 }
 
 impl<T: Transport> Device<T> {
     /// A device on `transport`, for `model`.
     pub fn new(transport: T, model: Option<Model>) -> Self {
+        let baud = transport.baud().unwrap_or(DEFAULT_BAUD);
         Self {
             transport,
             session: Session::new(model),
@@ -377,12 +561,24 @@ impl<T: Transport> Device<T> {
             on_packet: Vec::new(),
             on_field: Vec::new(),
             on_event: None,
+            on_bytes: None,
+            on_link: None,
+            opener: None,
+            address: String::new(),
+            baud,
+            timeout_ms: crate::session::DEFAULT_TIMEOUT_MS,
+            reconnect_ms: None,
+            recovering: false,
+            dropping: None,
+            settings: Vec::new(),
+            idle: false,
         }
     }
 
     /// Sets the reply timeout of every command (default 1000 ms, plus the spec's allowance).
     pub fn with_timeout_ms(mut self, ms: u64) -> Self {
         self.session = core::mem::take(&mut self.session).with_timeout_ms(ms);
+        self.timeout_ms = ms;
         self
     }
 
@@ -392,9 +588,49 @@ impl<T: Transport> Device<T> {
         self
     }
 
+    /// When the port goes away, reopens it every [`RECONNECT_INTERVAL_MS`] until `ms`
+    /// milliseconds have passed since the loss ([`DEFAULT_RECONNECT_MS`] is the usual choice),
+    /// then gets to idle, re-sends the settings written since connecting, in order, and resumes
+    /// (unless the application's last idle or resume command was an idle). Needs a device made by
+    /// [`connect`] or given a way to reopen ([`Device::with_opener`]).
+    pub fn with_reconnect_ms(mut self, ms: u64) -> Self {
+        self.reconnect_ms = Some(ms);
+        self
+    }
+
+    /// How to reopen the connection (`open(baud)`), named `address` in the link's reports.
+    pub fn with_opener(
+        mut self,
+        address: &str,
+        open: impl FnMut(u32) -> Result<T, SessionError> + 'static,
+    ) -> Self {
+        self.opener = Some(Box::new(open));
+        self.address = address.to_string();
+        self
+    }
+
     /// The selected device model.
     pub fn model(&self) -> Option<Model> {
         self.session.device()
+    }
+
+    /// The baud rate the device is used at (the configured one, or the one found).
+    pub fn baud(&self) -> u32 {
+        self.baud
+    }
+
+    /// The earliest stream offset whose byte may still be reported to the handlers: a caller
+    /// that keeps the input ([`Device::on_bytes`]) can drop everything before it.
+    pub fn retain_from(&self) -> u64 {
+        self.session.retain_from()
+    }
+
+    /// The settings that a reconnection re-applies, in the order they are sent: every command
+    /// written (function `write` or `write_no_ack`) and acknowledged (or sent), the latest per
+    /// key winning and moving to the end; the key is the command and the values of the
+    /// parameters its `read` sends (`desc_set` of a message format, `port` of a port's rate).
+    pub fn settings(&self) -> impl Iterator<Item = &FieldValue> {
+        self.settings.iter().map(|(_, v)| v)
     }
 
     /// Milliseconds since the device was opened (the session's clock).
@@ -423,9 +659,42 @@ impl<T: Transport> Device<T> {
         self.on_event = Some(Box::new(handler));
     }
 
+    /// Calls `handler` with every byte received, before it is parsed (those dropped while
+    /// getting through too: see [`Device::retain_from`]).
+    pub fn on_bytes(&mut self, handler: impl FnMut(&[u8]) + 'static) {
+        self.on_bytes = Some(Box::new(handler));
+    }
+
+    /// Calls `handler` with one line for each step of getting through (`link: idle: no ACK in
+    /// 300 ms while streaming (4212 bytes dropped), flushing, attempt 2 of 3`, `link: baud: ...`,
+    /// `link: port lost ...`, `link: reconnected ...`).
+    pub fn on_link(&mut self, handler: impl FnMut(&str) + 'static) {
+        self.on_link = Some(Box::new(handler));
+    }
+
+    fn log(&mut self, text: &str) {
+        if let Some(h) = self.on_link.as_mut() {
+            h(&format!("link: {text}"));
+        }
+    }
+
     /// Sends the command and waits for its result (never an error for nack, timeout or
-    /// refusal: see [`Completed::status`]; errors are I/O and commands that do not encode).
+    /// refusal: see [`Completed::status`]; errors are I/O, commands that do not encode and a
+    /// lost link: [`SessionError::LinkLost`]). An acknowledged write is remembered for
+    /// reconnections ([`Device::settings`]).
     pub fn run(
+        &mut self,
+        command: &FieldValue,
+        options: StartOptions,
+    ) -> Result<Completed, SessionError> {
+        let done = self.exchange(command, options)?;
+        if done.is_ok() {
+            self.remember(command);
+        }
+        Ok(done)
+    }
+
+    fn exchange(
         &mut self,
         command: &FieldValue,
         options: StartOptions,
@@ -436,26 +705,38 @@ impl<T: Transport> Device<T> {
             .session
             .start(command, now, options)
             .map_err(SessionError::Start)?;
-        if let Some(r) = &started.result {
+        let (id, deadline, result) = (started.id, started.deadline, started.result);
+        let packet = started.packet.to_vec();
+        let name = crate::commands::command_facts(command).map_or("", |f| f.name);
+        if let Some(r) = &result {
             let done = Completed::from_result(r, model);
-            if !started.packet.is_empty() {
-                let packet = started.packet.to_vec();
-                self.transport.send(&packet)?;
+            if self.dropping.is_none() {
+                if let Some(h) = self.on_event.as_mut() {
+                    h(&SessionEvent::Result(*r));
+                }
+            }
+            if !packet.is_empty() {
+                if let Err(e) = self.transport.send(&packet) {
+                    return Err(self.lost(e, name));
+                }
             }
             return Ok(done);
         }
-        let (id, deadline) = (started.id, started.deadline);
-        let packet = started.packet.to_vec();
-        self.transport.send(&packet)?;
+        if let Err(e) = self.transport.send(&packet) {
+            return Err(self.lost(e, name));
+        }
         loop {
             let mut done = None;
             let wake = self.session.next_deadline().unwrap_or(deadline);
             let wait = wake.saturating_sub(self.now_ms());
-            self.pump(wait, &mut |r| {
+            let pumped = self.pump(wait, &mut |r| {
                 if r.id == id {
                     done = Some(Completed::from_result(r, model));
                 }
-            })?;
+            });
+            if let Err(e) = pumped {
+                return Err(self.lost(e, name));
+            }
             if let Some(done) = done {
                 return Ok(done);
             }
@@ -467,7 +748,8 @@ impl<T: Transport> Device<T> {
         self.run(command, StartOptions::default())?.into_result()
     }
 
-    /// Receives for `duration_ms`, routing every packet to the handlers.
+    /// Receives for `duration_ms`, routing every packet to the handlers (with reconnection on,
+    /// a lost port is reopened meanwhile).
     pub fn listen(&mut self, duration_ms: u64) -> Result<(), SessionError> {
         let end = self.now_ms().saturating_add(duration_ms);
         loop {
@@ -475,8 +757,289 @@ impl<T: Transport> Device<T> {
             if now >= end {
                 return Ok(());
             }
+            if let Err(e) = self.pump(end - now, &mut |_| {}) {
+                self.session.abandon();
+                self.recover(e)?;
+            }
+        }
+    }
+
+    /// The port failed under a command: it is forgotten (not retried), the link recovered when
+    /// reconnection is on; the error to return for the command.
+    fn lost(&mut self, e: io::Error, name: &'static str) -> SessionError {
+        self.session.abandon();
+        if self.reconnect_ms.is_none() || self.opener.is_none() || self.recovering {
+            return SessionError::Io(e);
+        }
+        let reason = lost_reason(&e);
+        match self.recover(e) {
+            Ok(()) => SessionError::LinkLost {
+                name,
+                reason,
+                gave_up: None,
+            },
+            Err(SessionError::Link(m)) => SessionError::LinkLost {
+                name,
+                reason,
+                gave_up: Some(m),
+            },
+            Err(err) => err,
+        }
+    }
+
+    /// Reopens the lost port every [`RECONNECT_INTERVAL_MS`] until the deadline, then gets to
+    /// idle, re-applies the settings and resumes.
+    fn recover(&mut self, e: io::Error) -> Result<(), SessionError> {
+        let (Some(limit), false, true) =
+            (self.reconnect_ms, self.recovering, self.opener.is_some())
+        else {
+            return Err(SessionError::Io(e));
+        };
+        let address = self.address.clone();
+        self.log(&format!(
+            "port lost ({}), reopening {address} every {RECONNECT_INTERVAL_MS} ms",
+            lost_reason(&e)
+        ));
+        let began = Instant::now();
+        let deadline = Duration::from_millis(limit);
+        let interval = Duration::from_millis(RECONNECT_INTERVAL_MS);
+        loop {
+            std::thread::sleep(interval.min(deadline.saturating_sub(began.elapsed())));
+            let opened = match self.opener.as_mut() {
+                Some(open) => open(self.baud),
+                None => return Err(SessionError::Io(e)),
+            };
+            match opened {
+                Ok(t) => {
+                    self.transport = t;
+                    break;
+                }
+                Err(_) if began.elapsed() < deadline => {}
+                Err(_) => {
+                    let m = format!("gave up reopening {address} after {limit} ms");
+                    self.log(&m);
+                    return Err(SessionError::Link(m));
+                }
+            }
+        }
+        // What the old port left half-parsed is dropped.
+        let now = self.now_ms();
+        self.session.close(now, |_| {});
+        self.recovering = true;
+        let outer = self.dropping.replace(0);
+        let applied = self.reapply();
+        self.dropping = outer;
+        self.recovering = false;
+        let applied = applied?;
+        self.log(&format!(
+            "reconnected after {:.1} s, re-applied {applied} settings",
+            began.elapsed().as_secs_f64()
+        ));
+        Ok(())
+    }
+
+    /// After a reconnection: to idle, the remembered settings in order, then resume unless the
+    /// application had the device idle.
+    fn reapply(&mut self) -> Result<usize, SessionError> {
+        let model = self.session.device();
+        if link_command(crate::framing::LINK_IDLE, model).is_some() {
+            // The session's own idle: what the application left stays (resumed or idle).
+            let idle = self.idle;
+            let done = self.to_idle();
+            self.idle = idle;
+            done?;
+        }
+        let settings: Vec<FieldValue> = self.settings().copied().collect();
+        let mut applied = 0;
+        for command in &settings {
+            if self.exchange(command, StartOptions::default())?.is_ok() {
+                applied += 1;
+            }
+        }
+        if !self.idle {
+            if let Some(resume) = link_command(crate::framing::LINK_RESUME, model) {
+                self.exchange(&resume, StartOptions::default())?;
+            }
+        }
+        Ok(applied)
+    }
+
+    /// Remembers an acknowledged (or sent) write, and whether the device was last sent to idle
+    /// or resumed.
+    fn remember(&mut self, command: &FieldValue) {
+        let Some(facts) = crate::commands::command_facts(command) else {
+            return;
+        };
+        let key = Some((facts.set, facts.descriptor));
+        if key == crate::framing::LINK_IDLE {
+            self.idle = true;
+            return;
+        }
+        if key == crate::framing::LINK_RESUME {
+            self.idle = false;
+            return;
+        }
+        let function =
+            crate::commands::command_function(command).and_then(crate::commands::function_name);
+        if !matches!(function, Some("write" | "write_no_ack")) {
+            return;
+        }
+        let key = setting_key(command, facts);
+        self.settings.retain(|(k, _)| *k != key);
+        if self.settings.len() >= MAX_SETTINGS {
+            self.settings.remove(0);
+        }
+        self.settings.push((key, *command));
+    }
+
+    /// Gets the device to idle while it may be streaming at full rate: sends the idle command
+    /// and waits for its result with the reply timeout, dropping (and counting) the data and
+    /// skipped bytes that arrive meanwhile; after a timeout, flushes the input, reads and
+    /// discards for [`QUIET_MS`], flushes again and sends it again, up to the spec's attempts.
+    /// Returns the last attempt's result (ack, nack, or timeout after the last attempt).
+    pub fn to_idle(&mut self) -> Result<Completed, SessionError> {
+        let model = self.session.device();
+        let idle = link_command(crate::framing::LINK_IDLE, model)
+            .ok_or_else(|| SessionError::Link("idle: the protocol has no idle command".into()))?;
+        let attempts = crate::framing::LINK_IDLE_ATTEMPTS.max(1);
+        let outer = self.dropping;
+        let mut attempt = 1;
+        let done = loop {
+            self.dropping = Some(0);
+            let done = self.exchange(&idle, StartOptions::default());
+            let dropped = self.dropping.unwrap_or(0);
+            self.dropping = outer;
+            let done = done?;
+            if done.status != Status::Timeout {
+                if done.is_ok() {
+                    self.idle = true;
+                    self.log(&format!(
+                        "idle: ACK on attempt {attempt} of {attempts} ({dropped} bytes dropped)"
+                    ));
+                }
+                break done;
+            }
+            if attempt == attempts {
+                self.log(&format!(
+                    "idle: no ACK after {attempts} attempts, giving up"
+                ));
+                break done;
+            }
+            let streaming = if dropped > 0 {
+                format!(" while streaming ({dropped} bytes dropped)")
+            } else {
+                String::new()
+            };
+            attempt += 1;
+            self.log(&format!(
+                "idle: no ACK in {} ms{streaming}, flushing, attempt {attempt} of {attempts}",
+                self.timeout_ms
+            ));
+            self.dropping = Some(0);
+            let flushed = self.flush_input();
+            self.dropping = outer;
+            flushed?;
+        };
+        Ok(done)
+    }
+
+    /// Flushes the input: the transport's buffer, what arrives during a quiet time, and the
+    /// parser's partial packet (all counted as dropped).
+    fn flush_input(&mut self) -> Result<(), SessionError> {
+        self.transport.clear_input()?;
+        let end = self.now_ms().saturating_add(QUIET_MS);
+        loop {
+            let now = self.now_ms();
+            if now >= end {
+                break;
+            }
             self.pump(end - now, &mut |_| {})?;
         }
+        self.transport.clear_input()?;
+        let now = self.now_ms();
+        let mut dropped = 0;
+        self.session.close(now, |e| {
+            dropped += match e {
+                SessionEvent::Packet { packet, .. } => packet.bytes().len() as u64,
+                SessionEvent::Skip { count, .. } => count,
+                SessionEvent::Result(_) => 0,
+            }
+        });
+        if let Some(d) = self.dropping.as_mut() {
+            *d += dropped;
+        }
+        Ok(())
+    }
+
+    /// Finds the baud rate of a serial port: a ping at the current rate; without an answer,
+    /// the model's default rate, then its other rates from the highest down (without a model:
+    /// every model's defaults, then all their rates), each after switching the port and
+    /// flushing, with one ping each; stays at the first that answers and returns it. Over TCP
+    /// there is no rate: `Ok(None)`. No answer at any rate is an error (the port is left at the
+    /// rate it had).
+    pub fn find_baud(&mut self) -> Result<Option<u32>, SessionError> {
+        let Some(current) = self.transport.baud() else {
+            return Ok(None);
+        };
+        let model = self.session.device();
+        let ping = link_command(crate::framing::LINK_PING, model)
+            .ok_or_else(|| SessionError::Link("baud: the protocol has no ping command".into()))?;
+        let mut rates = vec![current];
+        let models: Vec<Model> = match model {
+            Some(m) => vec![m],
+            None => Model::ALL.to_vec(),
+        };
+        rates.extend(models.iter().filter_map(|m| m.default_baud()));
+        let mut others: Vec<u32> = models
+            .iter()
+            .flat_map(|m| m.baud_rates().iter().copied())
+            .collect();
+        others.sort_unstable_by(|a, b| b.cmp(a));
+        rates.extend(others);
+        let mut seen = Vec::new();
+        rates.retain(|r| {
+            let fresh = !seen.contains(r);
+            seen.push(*r);
+            fresh
+        });
+        let outer = self.dropping;
+        self.dropping = Some(0);
+        let found = self.try_rates(&ping, &rates);
+        self.dropping = outer;
+        match found {
+            Ok(Some(rate)) => {
+                self.baud = rate;
+                if rate != current {
+                    self.log(&format!("baud: device answers at {rate}"));
+                }
+                Ok(Some(rate))
+            }
+            Ok(None) => {
+                self.log("baud: no answer at any rate");
+                self.transport.set_baud(current)?;
+                Err(SessionError::Link("baud: no answer at any rate".into()))
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// One ping at each rate in turn (the first is the current one): the first that answers.
+    fn try_rates(&mut self, ping: &FieldValue, rates: &[u32]) -> Result<Option<u32>, SessionError> {
+        for (i, &rate) in rates.iter().enumerate() {
+            if i > 0 {
+                self.log(&format!(
+                    "baud: no answer at {}, trying {rate}",
+                    rates[i - 1]
+                ));
+                self.transport.set_baud(rate)?;
+                self.flush_input()?;
+            }
+            let done = self.exchange(ping, StartOptions::default())?;
+            if matches!(done.status, Status::Ack | Status::Nack | Status::Invalid) {
+                return Ok(Some(rate));
+            }
+        }
+        Ok(None)
     }
 
     /// Waits up to `wait_ms` for bytes and feeds them (or runs the timeouts).
@@ -484,7 +1047,7 @@ impl<T: Transport> Device<T> {
         &mut self,
         wait_ms: u64,
         on_result: &mut dyn FnMut(&CommandResult<'_>),
-    ) -> Result<(), SessionError> {
+    ) -> io::Result<()> {
         let n = self
             .transport
             .receive(&mut self.buf, Duration::from_millis(wait_ms))?;
@@ -495,8 +1058,21 @@ impl<T: Transport> Device<T> {
             on_packet,
             on_field,
             on_event,
+            on_bytes,
+            dropping,
             ..
         } = self;
+        if let Some(h) = on_bytes.as_mut() {
+            h(&buf[..n]);
+        }
+        if let Some(dropped) = dropping.as_mut() {
+            session.feed(&buf[..n], now, |e| match e {
+                SessionEvent::Result(r) => on_result(&r),
+                SessionEvent::Packet { packet, .. } => *dropped += packet.bytes().len() as u64,
+                SessionEvent::Skip { count, .. } => *dropped += count,
+            });
+            return Ok(());
+        }
         let model = session.device();
         session.feed(&buf[..n], now, |e| {
             if let Some(h) = on_event.as_mut() {
@@ -535,6 +1111,57 @@ impl<T: Transport> Device<T> {
         });
         self.transport
     }
+}
+
+/// The key of a remembered setting: the command and the values of the parameters its `read`
+/// sends (those a read without them would miss: `desc_set` of a message format, `port` of a
+/// port's rate).
+fn setting_key(command: &FieldValue, facts: &CommandFacts) -> String {
+    use crate::json_read::{parse, Json};
+    let mut key = format!("{}/{}", facts.set, facts.descriptor);
+    let mut text = String::new();
+    let _ = command.write_values_json(&mut text);
+    let (Ok(Json::Object(members)), Some(read)) = (
+        parse(&text),
+        (1..=u8::MAX).find(|&f| crate::commands::function_name(f) == Some("read")),
+    ) else {
+        return key;
+    };
+    let params: Vec<&(String, Json)> = members.iter().filter(|(k, _)| k != "function").collect();
+    let function = ("function".to_string(), Json::Number(read.to_string()));
+    for (name, value) in &params {
+        let without = Json::Object(
+            core::iter::once(function.clone())
+                .chain(
+                    params
+                        .iter()
+                        .filter(|(k, _)| k != name)
+                        .map(|p| (*p).clone()),
+                )
+                .collect(),
+        );
+        let missed =
+            FieldValue::from_json(facts.set, facts.descriptor, command.device(), &without).is_err();
+        if missed {
+            key.push_str(&format!("/{name}={value:?}"));
+        }
+    }
+    key
+}
+
+/// The reason a port is lost: the system's error text, `end of file` for a read at the end.
+fn lost_reason(e: &io::Error) -> String {
+    if e.kind() == io::ErrorKind::UnexpectedEof {
+        "end of file".to_string()
+    } else {
+        io_message(e)
+    }
+}
+
+/// The command (set, descriptor) as a value, when it takes no parameters.
+fn link_command(which: Option<(u8, u8)>, model: Option<Model>) -> Option<FieldValue> {
+    let (set, descriptor) = which?;
+    decode_field(set, descriptor, &[], model).ok()
 }
 
 impl<T: Transport> fmt::Debug for Device<T> {

@@ -1,22 +1,29 @@
-//! `protocodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]`: the session
-//! conformance tool (`docs/conformance.md` §8). Reads command packets as canonical JSON lines on
-//! stdin, runs them in order over the connection (`tcp:HOST:PORT`, an IPv6 host in brackets, or a
-//! serial port path with the `serial` feature) and prints one result line per command; every
-//! other packet received and every skip run is printed as its canonical line, in arrival order.
+//! `protocodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud]
+//! [--reconnect-ms N]`: the session conformance tool (`docs/conformance.md` §8). Reads command
+//! packets as canonical JSON lines on stdin, runs them in order over the connection
+//! (`tcp:HOST:PORT`, an IPv6 host in brackets, or a serial port path with the `serial` feature)
+//! and prints one result line per command; every other packet received and every skip run is
+//! printed as its canonical line, in arrival order. Getting through (§8): `--auto-baud` finds the
+//! baud rate of a serial port at connect, `--reconnect-ms N` reopens a lost port for up to N ms
+//! and re-applies the settings written (a command lost with the port: result `lost`), the lines
+//! `{"link":"idle"}` (the last attempt's result line) and `{"link":"listen","ms":M}` (receive
+//! for M ms, then `{"line":N,"listened":M}`); each step is one `link: ...` line on stderr.
 //! Exit status: 0 when every line ran, 1 when a line was bad (reported on stderr with its number
-//! and skipped), 2 for usage and connection errors.
+//! and skipped), 2 for usage and connection errors and when getting through failed.
 
+use std::cell::RefCell;
 use std::io::{self, BufRead, Write};
 use std::process::ExitCode;
-use std::time::{Duration, Instant};
+use std::rc::Rc;
 
-use protocodec::device::{command_from_line, open_transport, Transport, DEFAULT_BAUD};
+use protocodec::device::{command_from_line, connect, SessionError, DEFAULT_BAUD};
 use protocodec::dispatch::{write_packet_json, write_skip_json};
-use protocodec::session::{Session, SessionEvent, StartOptions, DEFAULT_TIMEOUT_MS};
+use protocodec::json_read::{parse, Json};
+use protocodec::session::{SessionEvent, StartOptions, DEFAULT_TIMEOUT_MS};
 use protocodec::Device;
 
 const PROG: &str = "protocodec-session";
-const USAGE: &str = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]";
+const USAGE: &str = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] [--reconnect-ms N]";
 
 fn usage_error(message: &str) -> ExitCode {
     eprintln!("{PROG}: {message} ({USAGE})");
@@ -43,6 +50,8 @@ struct Options {
     timeout_ms: u64,
     device: Option<Device>,
     baud: u32,
+    auto_baud: bool,
+    reconnect_ms: Option<u64>,
 }
 
 fn options(args: &[String]) -> Result<Options, String> {
@@ -50,14 +59,24 @@ fn options(args: &[String]) -> Result<Options, String> {
     let mut timeout_ms = DEFAULT_TIMEOUT_MS;
     let mut device = None;
     let mut baud = DEFAULT_BAUD;
+    let mut auto_baud = false;
+    let mut reconnect_ms = None;
     let mut i = 0;
     while i < args.len() {
         let a = args[i].as_str();
+        if a == "--auto-baud" {
+            auto_baud = true;
+            i += 1;
+            continue;
+        }
         let (name, inline) = match a.split_once('=') {
             Some((n, v)) => (n, Some(v.to_string())),
             None => (a, None),
         };
-        if !matches!(name, "--connect" | "--timeout-ms" | "--device" | "--baud") {
+        if !matches!(
+            name,
+            "--connect" | "--timeout-ms" | "--device" | "--baud" | "--reconnect-ms"
+        ) {
             return Err(format!("unknown argument '{a}'"));
         }
         let value = match inline {
@@ -73,6 +92,7 @@ fn options(args: &[String]) -> Result<Options, String> {
         match name {
             "--connect" => connect = Some(value),
             "--timeout-ms" => timeout_ms = int_option(name, &value, 0)?,
+            "--reconnect-ms" => reconnect_ms = Some(int_option(name, &value, 0)?),
             "--baud" => {
                 baud = u32::try_from(int_option(name, &value, 1)?)
                     .map_err(|_| format!("{name} needs an integer >= 1, not '{value}'"))?
@@ -90,6 +110,8 @@ fn options(args: &[String]) -> Result<Options, String> {
         timeout_ms,
         device,
         baud,
+        auto_baud,
+        reconnect_ms,
     })
 }
 
@@ -141,24 +163,67 @@ impl Printer {
     }
 }
 
+/// What a link line asks for.
+enum LinkLine {
+    Idle,
+    Listen(u64),
+}
+
+/// The link operation of an input line: `Ok(None)` when the line is not one, an error text when
+/// it is a malformed link line.
+fn link_line(text: &str) -> Result<Option<LinkLine>, String> {
+    let Ok(Json::Object(members)) = parse(text) else {
+        return Ok(None);
+    };
+    let Some((_, op)) = members.iter().find(|(k, _)| k == "link") else {
+        return Ok(None);
+    };
+    let ms = members.iter().find(|(k, _)| k == "ms").map(|(_, v)| v);
+    match (op, ms, members.len()) {
+        (Json::String(op), None, 1) if op == "idle" => Ok(Some(LinkLine::Idle)),
+        (Json::String(op), Some(Json::Number(n)), 2) if op == "listen" => match n.parse::<u64>() {
+            Ok(ms) => Ok(Some(LinkLine::Listen(ms))),
+            Err(_) => Err(BAD_LINK.to_string()),
+        },
+        _ => Err(BAD_LINK.to_string()),
+    }
+}
+
+const BAD_LINK: &str = "expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}";
+
 fn run(o: Options) -> Result<ExitCode, String> {
-    let mut transport = open_transport(&o.connect, o.baud).map_err(|e| e.to_string())?;
-    let mut session: Session<1> = Session::new(o.device).with_timeout_ms(o.timeout_ms);
-    let t0 = Instant::now();
-    let now = || u64::try_from(t0.elapsed().as_millis()).unwrap_or(u64::MAX);
-    let mut p = Printer {
+    let mut dev = connect(&o.connect, o.device, o.baud)
+        .map_err(|e| e.to_string())?
+        .with_timeout_ms(o.timeout_ms);
+    if let Some(ms) = o.reconnect_ms {
+        dev = dev.with_reconnect_ms(ms);
+    }
+    let p = Rc::new(RefCell::new(Printer {
         device: o.device,
         line: 0,
         hist: Vec::new(),
         hist_base: 0,
         text: String::new(),
-    };
-    let mut buf = vec![0u8; 4096];
+    }));
+    let printer = Rc::clone(&p);
+    dev.on_bytes(move |bytes| printer.borrow_mut().hist.extend_from_slice(bytes));
+    let printer = Rc::clone(&p);
+    dev.on_event(move |e| {
+        let mut p = printer.borrow_mut();
+        p.event(*e);
+        // A closed standard output ends the run at the next line read.
+        let _ = p.flush();
+    });
+    dev.on_link(|line| eprintln!("{line}"));
+    if o.auto_baud {
+        dev.find_baud().map_err(|e| e.to_string())?;
+    }
     let mut status = ExitCode::SUCCESS;
     let stdin = io::stdin();
     let mut input = stdin.lock();
     let mut raw = Vec::new();
     let io_err = |e: io::Error| protocodec::device::io_message(&e);
+    let mut number = 0;
     loop {
         raw.clear();
         match input.read_until(b'\n', &mut raw) {
@@ -166,47 +231,80 @@ fn run(o: Options) -> Result<ExitCode, String> {
             Ok(_) => {}
             Err(e) => return Err(format!("cannot read standard input: {}", io_err(e))),
         }
-        p.line += 1;
+        number += 1;
+        p.borrow_mut().line = number;
         let Ok(text) = std::str::from_utf8(&raw) else {
-            eprintln!("{PROG}: line {}: not UTF-8", p.line);
+            eprintln!("{PROG}: line {number}: not UTF-8");
             status = ExitCode::from(1);
             continue;
         };
+        let text = text.trim_end_matches(['\n', '\r']);
         if text.trim().is_empty() {
             continue;
         }
-        let command = match command_from_line(text.trim_end_matches(['\n', '\r'])) {
+        match link_line(text) {
+            Ok(None) => {}
+            Ok(Some(LinkLine::Idle)) => {
+                let done = dev.to_idle().map_err(|e| e.to_string())?;
+                let mut p = p.borrow_mut();
+                // What was dropped meanwhile is never printed.
+                p.trim(dev.retain_from());
+                let _ = done.write_line(&mut p.text, number);
+                p.text.push('\n');
+                p.flush().map_err(io_err)?;
+                continue;
+            }
+            Ok(Some(LinkLine::Listen(ms))) => {
+                dev.listen(ms).map_err(|e| e.to_string())?;
+                let mut p = p.borrow_mut();
+                let line = format!("\"line\":{number},\"listened\":{ms}");
+                p.text.push('{');
+                p.text.push_str(&line);
+                p.text.push_str("}\n");
+                p.flush().map_err(io_err)?;
+                continue;
+            }
+            Err(e) => {
+                eprintln!("{PROG}: line {number}: {e}");
+                status = ExitCode::from(1);
+                continue;
+            }
+        }
+        let command = match command_from_line(text) {
             Ok(c) => c,
             Err(e) => {
-                eprintln!("{PROG}: line {}: {e}", p.line);
+                eprintln!("{PROG}: line {number}: {e}");
                 status = ExitCode::from(1);
                 continue;
             }
         };
-        let started = session
-            .start(&command, now(), StartOptions::default())
-            .map_err(|e| format!("line {}: {e}", p.line))?;
-        if !started.packet.is_empty() {
-            transport.send(started.packet).map_err(io_err)?;
+        match dev.run(&command, StartOptions::default()) {
+            Ok(_) => {}
+            Err(SessionError::Start(e)) => return Err(format!("line {number}: {e}")),
+            Err(SessionError::LinkLost {
+                reason, gave_up, ..
+            }) => {
+                let mut error = String::new();
+                let lost = format!("link lost: {reason}");
+                let _ = protocodec::json::write_display(&mut error, &lost);
+                let mut pr = p.borrow_mut();
+                let line = format!(
+                    "\"line\":{number},\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":{error}"
+                );
+                pr.text.push('{');
+                pr.text.push_str(&line);
+                pr.text.push_str("}\n");
+                pr.flush().map_err(io_err)?;
+                if let Some(m) = gave_up {
+                    return Err(format!("link: {m}"));
+                }
+            }
+            Err(e) => return Err(e.to_string()),
         }
-        if let Some(r) = started.result {
-            p.event(SessionEvent::Result(r));
-            p.flush().map_err(io_err)?;
-            continue;
-        }
-        let (id, deadline) = (started.id, started.deadline);
-        while session.is_pending(id) {
-            let wake = session.next_deadline().unwrap_or(deadline);
-            let n = transport
-                .receive(&mut buf, Duration::from_millis(wake.saturating_sub(now())))
-                .map_err(io_err)?;
-            p.hist.extend_from_slice(&buf[..n]);
-            session.feed(&buf[..n], now(), |e| p.event(e));
-            p.flush().map_err(io_err)?;
-        }
+        p.borrow_mut().flush().map_err(io_err)?;
     }
-    session.close(now(), |e| p.event(e));
-    p.flush().map_err(io_err)?;
+    dev.close();
+    p.borrow_mut().flush().map_err(io_err)?;
     Ok(status)
 }
 
