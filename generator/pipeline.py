@@ -5,9 +5,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .diagnostics import BackendError, Location, SpecError
+from .diagnostics import BackendError, Location, SpecError, SpecErrors
 from .errata import render_errata
 from .export import ir_to_json
+from .name_check import check as check_names
 from .output import write_file, write_tree
 from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
@@ -50,6 +51,8 @@ def run(
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
         sessions = []
     release = load_release(spec_dir)  # VERSION and LICENSE: checked by --validate-only too
+    # Every identifier of every target to render, before any renders (generator/name_check.py).
+    _check_names(ir, [n for n in TARGETS if not only or n in only], spec_dir, root, overlays)
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"
@@ -83,6 +86,33 @@ def run(
         docs_dir = docs_dir or ROOT / "docs"
         write_file(docs_dir / "errata.md", render_errata(ir, vectors))
     return 0
+
+
+def _check_names(ir: dict, langs: list[str], spec_dir: Path | None, root: Path, overlays) -> None:
+    """Raises SpecErrors with every name collision and reserved identifier of the targets langs."""
+    errors: list[SpecError] = []
+    for proto in ir["protocols"]:
+        locate = _locator(proto["name"], spec_dir, root, overlays)
+        for lang in langs:
+            mod = TARGETS[lang]
+            errors += check_names(mod.TITLE, mod.names(proto), mod.reserved, locate)
+    if errors:
+        raise SpecErrors(errors)
+
+
+def _locator(protocol: str, spec_dir: Path | None, root: Path, overlays):
+    """where -> the Location of that spec element of protocol (locate_names, each asked once), or
+    the protocol's protocol.yaml when no file has it."""
+    cache: dict[tuple, Location] = {}
+
+    def locate(where: tuple[str, ...]) -> Location:
+        if where not in cache:
+            cache[where] = locate_names(protocol, where, spec_dir, root, list(overlays)) or Location(
+                os.path.relpath(Path(spec_dir or root / "spec", protocol, "protocol.yaml"), root), 1, 1
+            )
+        return cache[where]
+
+    return locate
 
 
 def _located(e: BackendError, spec_dir: Path | None, root: Path, overlays) -> SpecError:

@@ -39,6 +39,7 @@ from generator.render import copy_runtime, environment
 from generator.targets.cfamily import c_string, session_steps
 from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
 from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
+from generator.targets.cpp.facts import RESERVED as CPP_RESERVED
 from generator.testcases import bitfield_cases, canonical_literals, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
@@ -165,7 +166,7 @@ RUNTIME_NAMESPACES = {
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
-    return name + "_" if name in CPP_KEYWORDS or name in extra else name
+    return name + "_" if name in CPP_KEYWORDS or name in CPP_RESERVED or name in extra else name
 
 
 def int_literal(v: int) -> str:

@@ -1,0 +1,87 @@
+"""The identifiers the Rust back end gives to spec elements, for the shared name check
+(generator/name_check.py), spelled with the back end's own functions (backend.py)."""
+
+from __future__ import annotations
+
+from generator import model
+from generator.name_check import Name, layouts, param_element, taken
+from generator.naming import upper
+
+from .backend import camel, ident
+from .facts import KEYWORDS, NOT_RAW, RESERVED_MODULES
+
+
+def reserved(name: str) -> str | None:
+    """Why name is still reserved in Rust (after ident()'s escaping: `r#type`, `self_`), or None."""
+    if name in NOT_RAW:
+        return "is a Rust keyword that cannot be a raw identifier"
+    if name in KEYWORDS:
+        return "is a Rust keyword"
+    return None
+
+
+def set_modules(proto: dict) -> dict[int, str]:
+    """Set id -> module, as backend._Protocol._check_names names them (a `_set` suffix for a set
+    whose name is taken or a keyword)."""
+    used = set(RESERVED_MODULES) | {proto["package"]}
+    out = {}
+    for s in proto["sets"]:
+        m = s["name"]
+        if m in used or m in KEYWORDS or m in NOT_RAW:
+            m = m + "_set"
+        used.add(m)
+        out[s["id"]] = m
+    return out
+
+
+def names(proto: dict) -> list[Name]:
+    pkg = proto["package"]
+    out: list[Name] = []
+    top = f"crate {pkg}"
+    out.extend(taken(top, RESERVED_MODULES | {pkg}, "a module of the crate,"))
+    modules = set_modules(proto)
+    variants = f"enum {pkg}::FieldValue"
+    if proto["reserved_fields"]:
+        out.append(Name(variants, "Reserved", "the variant of the reserved fields", (), False))
+    for s in proto["sets"]:
+        out.append(Name(top, modules[s["id"]], f"the module of set {s['name']}", (s["name"],)))
+        out.append(Name(variants, camel(modules[s["id"]]), f"the FieldValue variant of set {s['name']}", (s["name"],)))
+    types = f"module {pkg}::types"
+    for t in proto["types"]:
+        tw = (t["name"],)
+        out.append(Name(types, camel(t["name"]), f"type {t['name']}", tw))
+        scope = f"{t['kind']} {pkg}::types::{camel(t['name'])}"
+        owner = f"{t['kind']} {t['name']}"
+        if t["kind"] == "enum":
+            for v in t["values"]:
+                out.append(
+                    Name(scope, upper(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
+                )
+        elif t["kind"] == "bitfield":
+            for b in t["members"]:
+                bw = tw + (b["name"],)
+                element = f"member {b['name']} of {owner}"
+                out.append(Name(scope, ident(b["name"]), element, bw, owner=owner))
+                out.append(Name(scope, f"set_{b['name']}", f"the setter of {element}", bw, False, owner))
+                out.append(Name(scope + " (constants)", upper(b["name"]), f"the mask of {element}", bw, False, owner))
+        elif t["kind"] == "struct":
+            for q in model.struct(proto, t):
+                out.append(Name(scope, ident(q.name), param_element(q, owner), tw + (q.name,), owner=owner))
+        else:
+            for m in t["members"]:
+                out.append(Name(scope, camel(m["when"]), f"member {m['when']} of {owner}", tw, owner=owner))
+    for lay in layouts(proto):
+        module = "reserved" if lay.set is None else modules[lay.set["id"]]
+        scope = f"module {pkg}::{module}"
+        out.extend(taken(scope, ["ReservedField" if lay.set is None else "SetField"], "the field enum,"))
+        base = camel(lay.field["name"])
+        struct = base + (camel(lay.device) if lay.device else "")
+        out.append(Name(scope, struct, lay.what, lay.where))
+        if lay.device:  # a field with per-device layouts: an enum of them, named as the field
+            out.append(Name(scope, base, lay.what.split(" (device")[0], lay.where))
+        for q in model.layout(proto, lay.variant):
+            pw = lay.where if q.function else lay.params_where + (q.name,)
+            out.append(
+                Name(f"struct {pkg}::{module}::{struct}", ident(q.name), param_element(q, lay.what), pw, owner=lay.what)
+            )
+    return out
