@@ -89,13 +89,16 @@ def run(
 
 
 def _check_names(ir: dict, langs: list[str], spec_dir: Path | None, root: Path, overlays) -> None:
-    """Raises SpecErrors with every name collision and reserved identifier of the targets langs."""
+    """Raises every name collision and reserved identifier of the targets langs (SpecErrors, or
+    the SpecError when there is one)."""
     errors: list[SpecError] = []
     for proto in ir["protocols"]:
         locate = _locator(proto["name"], spec_dir, root, overlays)
         for lang in langs:
             mod = TARGETS[lang]
             errors += check_names(mod.TITLE, mod.names(proto), mod.reserved, locate)
+    if len(errors) == 1:
+        raise errors[0]  # one line, as a back end's own error (diagnostics.BackendError)
     if errors:
         raise SpecErrors(errors)
 
