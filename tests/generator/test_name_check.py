@@ -305,3 +305,31 @@ def test_mipgen_generate_exits_1_and_writes_nothing(tmp_path, lang):
         assert len(lines) == expected + 1 and lines[-1] == f"{expected} error(s) in the spec; nothing was generated."
     assert all(re.match(r"spec/demo/data\.yaml:\d+:\d+: error: ", x) for x in lines[:expected]), lines
     assert not out.exists()
+
+
+@pytest.mark.skipif(not (shutil.which("gcc") and shutil.which("g++")), reason="needs gcc and g++")
+def test_a_program_using_errno_and_linux_members_compiles_in_gnu_modes(tmp_path):
+    # A user's program includes <errno.h> and the package's header and is compiled in the
+    # compilers' default GNU modes, where `linux` and `unix` are predefined macros: the members
+    # must not be spelled errno, linux or unix (on today's main the C struct has `uint8_t errno;`
+    # and the C++ one `std::uint8_t linux{};`, and neither compiles).
+    spec = _spec(tmp_path, _field(0x31, "libc", "errno", "linux", "unix"))
+    out = tmp_path / "out"
+    r = _generate(spec, out, "c,cpp")
+    assert r.returncode == 0, r.stderr
+    c_src = tmp_path / "use.c"
+    c_src.write_text(
+        "#include <errno.h>\n#include <stdio.h>\n#include <democodec/democodec.h>\n"
+        "int main(void) { democ_data_libc_t v = {0}; return v.errno_ + v.linux_ + v.unix_ + errno; }\n"
+    )
+    cpp_src = tmp_path / "use.cpp"
+    cpp_src.write_text(
+        "#include <cerrno>\n#include <democodec/democodec.hpp>\n"
+        "int main() { democodec::data::Libc v{}; return v.errno_ + v.linux_ + v.unix_ + errno; }\n"
+    )
+    for cmd in (
+        ["gcc", "-std=gnu11", "-fsyntax-only", "-I", str(out / "c" / "democodec" / "include"), str(c_src)],
+        ["g++", "-std=gnu++17", "-fsyntax-only", "-I", str(out / "cpp" / "democodec" / "include"), str(cpp_src)],
+    ):
+        done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr[-3000:]
