@@ -22,6 +22,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
+from .commands import commands
 from .diagnostics import Location, SpecError
 
 
@@ -152,9 +153,25 @@ def layouts(proto: dict) -> Iterator[Layout]:
                 what = f"reserved field {f['name']}" if s is None else f"field {s['name']}.{f['name']}"
                 if dev:
                     what += f" (device {dev})"
-                yield Layout(s, f, v, dev, what, where, (v["layout"],) if v.get("layout") else where)
+                yield Layout(s, f, v, dev, what, where, params_where(s, f, v))
+
+
+def params_where(s: dict | None, f: dict, v: dict) -> tuple[str, ...]:
+    """What the names of variant v's parameters are under in the spec: its shared layout's name
+    (`layout:`), else its field."""
+    if v.get("layout"):
+        return (v["layout"],)
+    return (f["name"],) if s is None else (s["name"], f["name"])
 
 
 def param_element(p, owner: str) -> str:
     """The element a parameter of the layout model is, in messages."""
     return f"the function selector of {owner}" if p.function else f"parameter {p.name} of {owner}"
+
+
+def calls(proto: dict) -> Iterator[tuple[dict, dict, object]]:
+    """Every call of the typed command API (generator/commands.py) with its set and field."""
+    sets = {s["id"]: s for s in proto["sets"]}
+    for c in commands(proto).calls:
+        s = sets[c.set]
+        yield s, next(f for f in s["fields"] if f["name"] == c.field), c

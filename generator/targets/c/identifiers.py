@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, layouts, param_element, taken
+from generator.name_check import Name, calls, layouts, param_element, params_where, taken
 from generator.naming import snake
 
 from .backend import member, prefix_of
@@ -81,6 +81,29 @@ def names(proto: dict) -> list[Name]:
             glob(ident, what, lay.where)
         plist = model.layout(proto, lay.variant)
         members(f"struct {lbase}_t", plist, lay.what, lay.params_where, lay.where)
+    # The typed command API (backend.command_api, commands.h.j2): one function per call, whose
+    # parameters are the link, the arguments (`link` and `reply` get a "_"), an array's count and
+    # the reply.
+    for s, f, c in calls(proto):
+        name = (
+            f"{p}_{s['name']}_{f['name']}"
+            + (f"_{c.function}" if c.function else "")
+            + (f"_{c.device}" if c.device else "")
+        )
+        what = f"the command function of field {s['name']}.{f['name']}"
+        glob(name, what, (s["name"], f["name"]))
+        scope, owner = f"the parameters of {name}", f"{what} {c.function} {c.device}"
+        out.extend(taken(scope, ["link", "reply"], "the function's parameter", owner))
+        v = f["variants"][c.variants[0]]
+        kinds = {q.name: q.kind for q in model.layout(proto, v)}
+        for a in c.arguments:
+            arg = member(a.name)
+            arg = arg + "_" if arg in ("link", "reply") else arg
+            element = f"parameter {a.name} of {what}"
+            w = params_where(s, f, v) + (a.name,)
+            out.append(Name(scope, arg, element, w, owner=owner))
+            if kinds[a.name] in (model.COUNTED, model.REMAINING):
+                out.append(Name(scope, f"{a.name}_count", f"the element count of {element}", w, False, owner))
     for d in proto["devices"]:
         glob(f"{P}_DEVICE_{d['id'].upper()}", f"device {d['id']}", (d["id"],))
     return out

@@ -4,9 +4,9 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, layouts, param_element, taken
+from generator.name_check import Name, calls, layouts, param_element, params_where, taken
 
-from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, ident
+from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, call_name, ident
 from .facts import KEYWORDS, RESERVED
 
 # What the bitfield classes of templates/cpp/include/types.hpp.j2 define besides their members.
@@ -68,4 +68,41 @@ def names(proto: dict) -> list[Name]:
             for q in model.layout(proto, lay.variant):
                 pw = lay.where if q.function else lay.params_where + (q.name,)
                 out.append(Name(members, ident(q.name), param_element(q, lay.what), pw, owner=lay.what))
+    out += _command_api(proto, ns)
+    return out
+
+
+# A typed command function's own parameters and local (templates/cpp/include/commands.hpp.j2).
+FUNCTION_OWN = ("connection", "options", "v")
+
+
+def _command_api(proto: dict, ns: str) -> list[Name]:
+    """The typed command API (backend.session_context, commands.hpp.j2):
+    <ns>::api::<set>::<command>::<function>(connection, arguments..., options)."""
+    out: list[Name] = []
+    for s, f, c in calls(proto):
+        set_ns = f"namespace {ns}::api::{_set_ns(s)}"
+        what = f"the command namespace of field {s['name']}.{f['name']}"
+        fw = (s["name"], f["name"])
+        out.append(Name(set_ns, ident(f["name"]), what, fw, owner=s["name"]))
+        name = call_name(c)
+        cmd_ns = f"{set_ns[len('namespace ') :]}::{ident(f['name'])}"
+        out.append(
+            Name(
+                f"namespace {cmd_ns}", name, f"the function of {what} for {c.function or 'the command'}", fw, owner=what
+            )
+        )
+        scope, owner = f"function {cmd_ns}::{name}", f"{what} {name}"
+        out.extend(taken(scope, FUNCTION_OWN, "a parameter or variable of the function,", owner))
+        v = f["variants"][c.variants[0]]
+        for a in c.arguments:
+            out.append(
+                Name(
+                    scope,
+                    ident(a.name),
+                    f"parameter {a.name} of {what}",
+                    params_where(s, f, v) + (a.name,),
+                    owner=owner,
+                )
+            )
     return out

@@ -4,11 +4,11 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, layouts, param_element, taken
+from generator.name_check import Name, calls, layouts, param_element, params_where, taken
 from generator.naming import upper
 
-from .backend import camel, ident
-from .facts import KEYWORDS, NOT_RAW, RESERVED_MODULES
+from .backend import _set_method, camel, ident
+from .facts import DEVICE_METHODS, KEYWORDS, NOT_RAW, RESERVED_MODULES
 
 
 def reserved(name: str) -> str | None:
@@ -17,6 +17,8 @@ def reserved(name: str) -> str | None:
         return "is a Rust keyword that cannot be a raw identifier"
     if name in KEYWORDS:
         return "is a Rust keyword"
+    if "#" in name[2 if name.startswith("r#") else 0 :]:
+        return "is no Rust identifier (a raw identifier `r#...` inside a longer name)"
     return None
 
 
@@ -83,5 +85,48 @@ def names(proto: dict) -> list[Name]:
             pw = lay.where if q.function else lay.params_where + (q.name,)
             out.append(
                 Name(f"struct {pkg}::{module}::{struct}", ident(q.name), param_element(q, lay.what), pw, owner=lay.what)
+            )
+    out += _command_api(proto, modules)
+    return out
+
+
+def _command_api(proto: dict, modules: dict[int, str]) -> list[Name]:
+    """The typed command API (backend.session_context, command_api.rs.j2): device.<set>()
+    .<command>().<function>(arguments) (a plain command: device.<set>().<command>(arguments)), and
+    one `send_<command>_<call>` function per call, all in one module."""
+    pkg = proto["package"]
+    module = f"module {pkg}::command_api"
+    device = f"impl {pkg}::device::Device"
+    out = taken(module, ["reply"], "a function of the module,") + taken(device, DEVICE_METHODS, "a method of Device,")
+    for s, f, c in calls(proto):
+        sw, fw = (s["name"],), (s["name"], f["name"])
+        set_struct = camel(modules[s["id"]]) + "Commands"
+        out.append(Name(device, _set_method(modules[s["id"]]), f"the command set {s['name']}", sw))
+        out.append(Name(module, set_struct, f"the command struct of set {s['name']}", sw))
+        what = f"the command {s['name']}.{f['name']}"
+        base = ident(f["name"]) if c.function is None else ident(c.function)
+        method = f"{base}_{c.device}" if c.device is not None else base
+        call = f"the method of {what} for {c.function or 'the command'}" + (f" on {c.device}" if c.device else "")
+        if f["variants"][0]["functions"] is None:  # plain: the call is a method of the set's struct
+            out.append(Name(f"struct {set_struct}", method, call, fw, owner=s["name"]))
+        else:
+            cmd_struct = camel(f["name"]) + "Command"
+            out.append(Name(f"struct {set_struct}", ident(f["name"]), what, fw, owner=s["name"]))
+            out.append(Name(module, cmd_struct, f"the command struct of {what}", fw))
+            out.append(Name(f"struct {cmd_struct}", method, call, fw, owner=what))
+        send = f"send_{ident(f['name'])}_{method}"
+        out.append(Name(module, send, f"the function sending {what} for {c.function or 'the command'}", fw))
+        scope, owner = f"fn {send}", f"{what} {method}"
+        out.extend(taken(scope, ["device"], "the function's parameter", owner))
+        v = f["variants"][c.variants[0]]
+        for a in c.arguments:
+            out.append(
+                Name(
+                    scope,
+                    ident(a.name),
+                    f"parameter {a.name} of {what}",
+                    params_where(s, f, v) + (a.name,),
+                    owner=owner,
+                )
             )
     return out
