@@ -31,12 +31,12 @@ DATA = FIXTURE / "demo" / "data.yaml"
 DATA_LINES = len(DATA.read_text(encoding="utf-8").splitlines())
 
 
-def _field(descriptor: int, name: str, *params: str) -> str:
-    """A data field's YAML; its `name:` value is on its 2nd line, parameter i's on line 7 + i."""
+def _field(descriptor: int, name: str, *params: str, role: str = "data") -> str:
+    """A field's YAML; its `name:` value is on its 2nd line, parameter i's on line 7 + i."""
     lines = [
         f"  - id: 0x{descriptor:02X}",
         f"    name: {name}",
-        "    role: data",
+        f"    role: {role}",
         f"    title: {name}",
         "    sources: [{manual: demo.txt, line: 50}]",
         "    params:",
@@ -45,10 +45,10 @@ def _field(descriptor: int, name: str, *params: str) -> str:
     return "".join(line + "\n" for line in lines)
 
 
-def _spec(tmp_path: Path, *fields: str) -> Path:
+def _spec(tmp_path: Path, *fields: str, file: str = "data.yaml") -> Path:
     spec = tmp_path / "spec"
     shutil.copytree(FIXTURE, spec)
-    with open(spec / "demo" / "data.yaml", "a", encoding="utf-8") as fh:
+    with open(spec / "demo" / file, "a", encoding="utf-8") as fh:
         fh.write("".join(fields))
     return spec
 
@@ -260,6 +260,44 @@ def test_cpp_refuses_a_double_underscore_member(tmp_path):
     assert "contains a double underscore" in err
     for lang in ("c", "python", "rust"):
         assert _errors(spec, lang) == []
+
+
+# A typed command function's own parameter names (the link, the connection, the options, the
+# device) or an escaped argument beside the same spelling: the command API's generated signatures.
+COMMAND_ARGS = {
+    "c": (("link", "link_"), "link_", "the parameters of democ_commands_poke", None),
+    "cpp": (
+        ("options", "x"),
+        "options",
+        "function democodec::api::commands::poke::call",
+        "a parameter or variable of the function, options",
+    ),
+    "python": (
+        ("timeout_ms", "x"),
+        "timeout_ms",
+        "method Poke.__call__",
+        "a parameter or variable of the method, timeout_ms",
+    ),
+    "rust": (("device", "x"), "device", "fn send_poke_poke", "the function's parameter device"),
+}
+
+
+@pytest.mark.parametrize("lang", NAMES)
+def test_command_arguments_that_the_typed_api_cannot_declare(tmp_path, lang):
+    params, ident, scope, generated = COMMAND_ARGS[lang]
+    spec = _spec(tmp_path, _field(0x10, "poke", *params, role="command"), file="commands.yaml")
+    start = len((FIXTURE / "demo" / "commands.yaml").read_text(encoding="utf-8").splitlines()) + 1
+    (err,) = _errors(spec, lang)
+    title = TARGETS[lang].TITLE
+    if generated is None:  # two arguments: one names the other's place
+        assert err.startswith(
+            f"spec/demo/commands.yaml:{start + 7}:16: error: {title}: parameter link_ of the command function of"
+            f" field commands.poke and parameter link of the command function of field commands.poke would both be"
+            f" named link_ in {scope} (the first at spec/demo/commands.yaml:{start + 6}:16)"
+        ), err
+    else:
+        assert err.startswith(f"spec/demo/commands.yaml:{start + 6}:16: error: {title}: parameter {params[0]} of"), err
+        assert f"would be named {ident} in {scope}, which is {generated} (expected" in err, err
 
 
 # ---------------------------------------------------------------------- the project's spec, the tool
