@@ -66,12 +66,16 @@ def check(
     names: Iterable[Name],
     reserved: Callable[[str], str | None],
     locate: Callable[[tuple[str, ...]], Location],
+    rank: Callable[[Location], int] = lambda loc: 0,
 ) -> list[SpecError]:
     """The errors of one target's names (label: the target's name in messages, "C++").
 
     reserved(ident): why ident is still reserved in the language ("is a C++ keyword"), or None.
     locate(where): the location of a spec element (never None: the caller falls back to the
-    protocol file)."""
+    protocol file).
+    rank(location): the order in which the spec's directories are read (the spec 0, its overlays
+    1, 2, ...): of two colliding entries, the first read is "the first", and the error is at the
+    other (an overlay's entry, or the later one in a file)."""
     errors: list[SpecError] = []
     seen_messages: set[str] = set()
     groups: dict[tuple[str, str, str], list[Name]] = {}
@@ -108,7 +112,9 @@ def check(
                 )
         if len(spec) < 2:
             continue
-        located = sorted(((locate(n.where), n) for n in spec), key=lambda p: _order(p[0]))
+        located = sorted(
+            ((locate(n.where), n) for n in spec), key=lambda p: (rank(p[0]), p[0].file, p[0].line, p[0].column)
+        )
         first_loc, first = located[0]
         for loc, n in located[1:]:
             add(
@@ -118,10 +124,6 @@ def check(
                 f"names that stay distinct in {label} after case conversion and escaping",
             )
     return errors
-
-
-def _order(loc: Location) -> tuple:
-    return (loc.file, loc.line, loc.column)
 
 
 # ---------------------------------------------------------------------------- shared walks

@@ -93,10 +93,10 @@ def _check_names(ir: dict, langs: list[str], spec_dir: Path | None, root: Path, 
     the SpecError when there is one)."""
     errors: list[SpecError] = []
     for proto in ir["protocols"]:
-        locate = _locator(proto["name"], spec_dir, root, overlays)
+        locate, rank = _locator(proto["name"], spec_dir, root, overlays)
         for lang in langs:
             mod = TARGETS[lang]
-            errors += check_names(mod.TITLE, mod.names(proto), mod.reserved, locate)
+            errors += check_names(mod.TITLE, mod.names(proto), mod.reserved, locate, rank)
     if len(errors) == 1:
         raise errors[0]  # one line, as a back end's own error (diagnostics.BackendError)
     if errors:
@@ -104,9 +104,15 @@ def _check_names(ir: dict, langs: list[str], spec_dir: Path | None, root: Path, 
 
 
 def _locator(protocol: str, spec_dir: Path | None, root: Path, overlays):
-    """where -> the Location of that spec element of protocol (locate_names, each asked once), or
-    the protocol's protocol.yaml when no file has it."""
+    """locate: where -> the Location of that spec element of protocol (locate_names, each asked
+    once), or the protocol's protocol.yaml when no file has it; rank: a Location -> 0 in the spec,
+    i in its i-th overlay (the order they are read)."""
     cache: dict[tuple, Location] = {}
+    # The file names locate_names gives: relative to root for the spec, to an overlay's parent.
+    prefixes = [os.path.relpath(Path(o) / protocol, Path(o).resolve().parent) + os.sep for o in overlays]
+
+    def rank(loc: Location) -> int:
+        return next((i + 1 for i, p in enumerate(prefixes) if loc.file.startswith(p)), 0)
 
     def locate(where: tuple[str, ...]) -> Location:
         if where not in cache:
@@ -115,7 +121,7 @@ def _locator(protocol: str, spec_dir: Path | None, root: Path, overlays):
             )
         return cache[where]
 
-    return locate
+    return locate, rank
 
 
 def _located(e: BackendError, spec_dir: Path | None, root: Path, overlays) -> SpecError:

@@ -59,7 +59,7 @@ def _errors(spec: Path, lang: str) -> list[str]:
     mod = TARGETS[lang]
     out: list[str] = []
     for proto in ir["protocols"]:
-        locate = _locator(proto["name"], spec, spec.parent, [])
+        locate, _rank = _locator(proto["name"], spec, spec.parent, [])
         out += [str(e) for e in check(mod.TITLE, mod.names(proto), mod.reserved, locate)]
     return out
 
@@ -371,3 +371,32 @@ def test_a_program_using_errno_and_linux_members_compiles_in_gnu_modes(tmp_path)
     ):
         done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
         assert done.returncode == 0, done.stderr[-3000:]
+
+
+def test_an_overlay_entry_colliding_with_the_spec_is_the_error_naming_the_spec_entry(tmp_path):
+    # An overlay (docs/spec-format.md "Overlays") adds sensor field scaled__accel beside the
+    # spec's scaled_accel: C++, Python and Rust name both ScaledAccel. The error is at the
+    # overlay's entry, the spec's is "the first" (the spec is read before its overlays).
+    overlay = tmp_path / "overlay"
+    shutil.copytree(ROOT / "tests" / "generator" / "fixtures" / "overlay", overlay)
+    f = overlay / "mip" / "sensor_gq9.yaml"
+    text = f.read_text(encoding="utf-8")
+    f.write_text(text.replace("    name: board_temperature\n", "    name: scaled__accel\n"), encoding="utf-8")
+    line = text.splitlines().index("    name: board_temperature") + 1
+    spec_line = (ROOT / "spec" / "mip" / "sensor.yaml").read_text(encoding="utf-8").splitlines().index(
+        "    name: scaled_accel"
+    ) + 1
+    ir = load_spec(overlays=[overlay])
+    mip = next(p for p in ir["protocols"] if p["name"] == "mip")
+    locate, rank = _locator("mip", None, ROOT, [overlay])
+    for lang in NAMES:
+        mod = TARGETS[lang]
+        errors = [str(e) for e in check(mod.TITLE, mod.names(mip), mod.reserved, locate, rank)]
+        if lang == "c":
+            assert errors == []  # mipc_sensor_scaled__accel_t
+            continue
+        assert errors[0].startswith(
+            f"overlay/mip/sensor_gq9.yaml:{line}:11: error: {mod.TITLE}: field sensor.scaled__accel and field"
+            f" sensor.scaled_accel would both be named ScaledAccel in "
+        ), errors
+        assert f"(the first at spec/mip/sensor.yaml:{spec_line}:11)" in errors[0]
