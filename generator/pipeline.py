@@ -5,9 +5,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .diagnostics import BackendError, Location, SpecError
+from .diagnostics import BackendError, Location, SpecError, SpecErrors
 from .errata import render_errata
 from .export import ir_to_json
+from .name_check import check as check_names
 from .output import write_file, write_tree
 from .release import load_release
 from .render import ToolError, format_files  # noqa: F401  (ToolError re-exported for __main__)
@@ -51,6 +52,8 @@ def run(
         vectors = load_vectors(ir, vectors_dir.resolve(), _project_root(vectors_dir)) if vectors_dir else []
         sessions = []
     release = load_release(spec_dir)  # VERSION and LICENSE: checked by --validate-only too
+    # Every identifier of every target to render, before any renders (generator/name_check.py).
+    _check_names(ir, [n for n in TARGETS if not only or n in only], spec_dir, root, overlays)
     if validate_only:
         return 0
     out_dir = out_dir or ROOT / "generated"
@@ -95,6 +98,42 @@ def _display(path: Path) -> str:
         return os.path.relpath(path)
     except ValueError:
         return str(path)
+
+
+def _check_names(ir: dict, langs: list[str], spec_dir: Path | None, root: Path, overlays) -> None:
+    """Raises every name collision and reserved identifier of the targets langs (SpecErrors, or
+    the SpecError when there is one)."""
+    errors: list[SpecError] = []
+    for proto in ir["protocols"]:
+        locate, rank = _locator(proto["name"], spec_dir, root, overlays)
+        for lang in langs:
+            mod = TARGETS[lang]
+            errors += check_names(mod.TITLE, mod.names(proto), mod.reserved, locate, rank)
+    if len(errors) == 1:
+        raise errors[0]  # one line, as a back end's own error (diagnostics.BackendError)
+    if errors:
+        raise SpecErrors(errors)
+
+
+def _locator(protocol: str, spec_dir: Path | None, root: Path, overlays):
+    """locate: where -> the Location of that spec element of protocol (locate_names, each asked
+    once), or the protocol's protocol.yaml when no file has it; rank: a Location -> 0 in the spec,
+    i in its i-th overlay (the order they are read)."""
+    cache: dict[tuple, Location] = {}
+    # The file names locate_names gives: relative to root for the spec, to an overlay's parent.
+    prefixes = [os.path.relpath(Path(o) / protocol, Path(o).resolve().parent) + os.sep for o in overlays]
+
+    def rank(loc: Location) -> int:
+        return next((i + 1 for i, p in enumerate(prefixes) if loc.file.startswith(p)), 0)
+
+    def locate(where: tuple[str, ...]) -> Location:
+        if where not in cache:
+            cache[where] = locate_names(protocol, where, spec_dir, root, list(overlays)) or Location(
+                os.path.relpath(Path(spec_dir or root / "spec", protocol, "protocol.yaml"), root), 1, 1
+            )
+        return cache[where]
+
+    return locate, rank
 
 
 def _located(e: BackendError, spec_dir: Path | None, root: Path, overlays) -> SpecError:

@@ -15,6 +15,9 @@ Each target module exposes:
       project's tests/sessions/, none for another spec), the same for every target
   api_names(protocol, set, field) -> the names a field has in that language (for the docs)
   public_names(protocol, kind, *names) -> the public name(s) of a spec element (for `mipgen diff`)
+  names(protocol) -> [generator.name_check.Name]: every identifier its code gives a spec element,
+      and reserved(identifier) -> why it is still reserved in the language, or None (the name
+      check the pipeline runs before rendering; targets/<lang>/identifiers.py)
 
 Each target also has a runner, tests/lang/<lang>.sh (build, test, decode, encode, session), which
 the conformance tools (tests/conformance/decode, encode, session) and the cross-language tests

@@ -3,7 +3,8 @@ line `file:line:column: error: ...` and exit status 1, never a traceback.
 
 Two enums GpsMode and GPSMode are two names in the spec and in C++, Python and Rust, but both
 become the one C type <prefix>_gps_mode_t (C names types in snake case, docs/design.md), so the
-C back end refuses them at the second one's `name:`."""
+C target's name check (generator/name_check.py, issue 37) refuses them at the second one's `name:`,
+naming the first's, before the back end renders anything."""
 
 from __future__ import annotations
 
@@ -47,12 +48,13 @@ def test_c_name_clash_is_one_located_line_and_exit_1(tmp_path: Path) -> None:
     lines = r.stderr.splitlines()
     assert len(lines) == 1, r.stderr
     assert "Traceback" not in r.stderr
-    # The enums are the file's first two (lines 7 and 10 after `enums:` at line 6); types are
-    # named in sorted order (GPSMode before GpsMode), so GpsMode's `name:` value is the clash.
-    m = re.fullmatch(r"spec/demo/commands\.yaml:(\d+):(\d+): error: C back end: (.*)", lines[0])
+    # The enums are the file's first two (lines 7 and 10 after `enums:` at line 6): the error is
+    # at the second one's `name:` value and names the first's.
+    m = re.fullmatch(r"spec/demo/commands\.yaml:(\d+):(\d+): error: C: (.*)", lines[0])
     assert m, lines[0]
-    assert (int(m[1]), int(m[2])) == (7, 11), lines[0]
-    assert "democ_gps_mode_t" in m[3] and "GpsMode" in m[3] and "GPSMode" in m[3]
+    assert (int(m[1]), int(m[2])) == (10, 11), lines[0]
+    assert "democ_gps_mode_t" in m[3] and "type GpsMode" in m[3] and "type GPSMode" in m[3]
+    assert "(the first at spec/demo/commands.yaml:7:11)" in m[3]
     assert not (tmp_path / "out" / "c").exists()  # nothing was written
 
 

@@ -28,6 +28,7 @@ def test_the_registry_is_one_ordered_list_and_every_target_has_its_wing():
         params = list(inspect.signature(mod.render).parameters)
         assert params == ["ir", "vectors", "release", "sessions"], (name, params)
         assert callable(mod.api_names) and callable(mod.public_name), name
+        assert callable(mod.names) and callable(mod.reserved), name  # the name check (issue 37)
         assert mod.TITLE and mod.EXTENSION, name  # the docs and the getting-started programs
         assert runtime_dir(name).is_dir(), name
         assert (ROOT / "templates" / name).is_dir(), name

@@ -29,6 +29,7 @@ from generator.testcases import VectorCase, bitfield_cases, canonical_literals, 
 
 from .facts import KEYWORDS as _KEYWORDS
 from .facts import PRIMITIVE_TYPES as _PRIM
+from .facts import RESERVED as _RESERVED
 
 OUTPUT_DIRS = ["c"]
 
@@ -125,8 +126,9 @@ BackendError = diagnostics.BackendError
 
 # ---------------------------------------------------------------------------- naming helpers
 def member(name: str) -> str:
-    """A spec identifier as a C struct member (keywords get a trailing underscore)."""
-    return name + "_" if name in _KEYWORDS else name
+    """A spec identifier as a C struct member (keywords and the library's and compilers' macros,
+    facts.py, get a trailing underscore)."""
+    return name + "_" if name in _KEYWORDS or name in _RESERVED else name
 
 
 def c_prefix(package: str) -> str:

@@ -32,3 +32,25 @@ PRIMITIVE_TYPES = {
     "float": ("float", "f32"),
     "double": ("double", "f64"),
 }
+
+# Identifiers that are not keywords but that a C program including the standard headers, or
+# compiled by gcc or clang in their default GNU modes, cannot use as a struct member: a spec
+# identifier among them gets a trailing underscore too (backend.member), and the name check
+# (generator/name_check.py, targets/c/identifiers.py) refuses any generated identifier left equal to one.
+# - The C library's macros with lower-case names (ISO C17, clause 7): `assert` and
+#   `static_assert` (7.2 <assert.h>), `complex`, `imaginary` (7.3 <complex.h>), `errno` (7.5
+#   <errno.h>), `math_errhandling` (7.12 <math.h>), `setjmp` (7.13 <setjmp.h>), `va_arg`,
+#   `va_copy`, `va_end`, `va_start` (7.16 <stdarg.h>), `offsetof` (7.19 <stddef.h>), `stdin`,
+#   `stdout`, `stderr` (7.21 <stdio.h>), `noreturn` (7.23 <stdnoreturn.h>); and `NULL`, `EOF`.
+#   The function-like ones (`assert`, `setjmp`, `va_*`, `offsetof`) only expand before a `(`;
+#   they are listed too, so that no generated name depends on how it happens to be used.
+# - The compilers' system-specific predefined macros (GCC manual, "System-specific Predefined
+#   Macros": the non-reserved spellings in GNU modes): `linux` and `unix` (`gcc -dM -E` on
+#   Linux), `i386` (`gcc -m32 -dM -E`, 32-bit x86).
+RESERVED = frozenset(
+    """
+assert static_assert complex imaginary errno math_errhandling setjmp va_arg va_copy va_end va_start
+offsetof stdin stdout stderr noreturn NULL EOF
+linux unix i386
+""".split()
+)

@@ -40,6 +40,7 @@ from generator.render import copy_runtime, environment
 from generator.targets.cfamily import c_string, session_steps
 from generator.targets.cpp.facts import KEYWORDS as CPP_KEYWORDS
 from generator.targets.cpp.facts import PRIMITIVE_TYPES as PRIM_CPP
+from generator.targets.cpp.facts import RESERVED as CPP_RESERVED
 from generator.testcases import bitfield_cases, canonical_literals, vector_cases
 
 OUTPUT_DIRS = ["cpp"]
@@ -166,7 +167,7 @@ RUNTIME_NAMESPACES = {
 
 
 def ident(name: str, extra: set[str] | frozenset = frozenset()) -> str:
-    return name + "_" if name in CPP_KEYWORDS or name in extra else name
+    return name + "_" if name in CPP_KEYWORDS or name in CPP_RESERVED or name in extra else name
 
 
 def int_literal(v: int) -> str:
@@ -743,6 +744,13 @@ def _cpp_fn(fn: str | None) -> str:
     return "call" if fn is None else ident(fn)
 
 
+def call_name(c: commands.Call) -> str:
+    """The function of a typed command call: its function (`call` without one), `_<device>` for a
+    call per device, escaped as a whole (`default_`, but `default_gx5_45`, never `default__gx5_45`,
+    which C++ reserves: issue 37)."""
+    return ident(("call" if c.function is None else c.function) + (f"_{c.device}" if c.device is not None else ""))
+
+
 def _layout_type(P: _Protocol, s: dict, f: dict, device: str | None) -> str:
     """The struct of field f's layout for device (None: its only layout)."""
     multi = len(f["variants"]) > 1
@@ -753,7 +761,7 @@ def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Cal
     """One function of the typed API: its name, arguments (typed after the first layout's members),
     the members each layout sets (the other devices' layouts first, each when its device is
     selected; the first layout last, for any other device or none) and the reply struct."""
-    name = _cpp_fn(c.function) + (f"_{c.device}" if c.device is not None else "")
+    name = call_name(c)
     first = _layout_type(P, s, f, f["variants"][c.variants[0]]["device"] if len(f["variants"]) > 1 else None)
     args = [{"name": ident(a.name), "required": a.required, "optional": a.optional} for a in c.arguments]
     sent = {a.name for a in c.arguments}
@@ -776,7 +784,7 @@ def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Cal
     if c.reply_kind == commands.FIELD and not c.reply.per_device:
         reply = _layout_type(P, s, next(x for x in s["fields"] if x["id"] == c.reply.descriptor), None)
     return {
-        "name": ident(name),
+        "name": name,
         "function": ident(c.function) if c.function is not None else None,
         "function_enum": cm.function_enum,
         "first": first,

@@ -18,6 +18,23 @@ KEYWORDS = frozenset(
     """.split()
 )
 
+# Identifiers besides KEYWORDS that a C++ program cannot use as a member or namespace name: an IR
+# name among them gets a "_" suffix too (backend.ident), and the name check (generator/name_check.py,
+# targets/cpp/identifiers.py) refuses any generated identifier left equal to one.
+# - The C++ library's macros with lower-case names ([headers], the C headers' macros C++ keeps:
+#   `assert` <cassert>, `errno` <cerrno>, `stdin`/`stdout`/`stderr` <cstdio>, `offsetof` <cstddef>,
+#   `setjmp` <csetjmp>, `va_arg`/`va_copy`/`va_end`/`va_start` <cstdarg>, `math_errhandling`
+#   <cmath>), some already in KEYWORDS above.
+# - g++'s and clang++'s system-specific predefined macros in their default GNU modes (GCC manual,
+#   "System-specific Predefined Macros"): `linux` and `unix` (`g++ -dM -E -x c++ /dev/null` on
+#   Linux), `i386` (with `-m32`).
+RESERVED = frozenset(
+    """
+    assert errno stdin stdout stderr offsetof setjmp va_arg va_copy va_end va_start math_errhandling
+    linux unix i386
+    """.split()
+)
+
 # The C++ type of each IR primitive (generator/primitives.py names): fixed-width integers from
 # <cstdint>, IEEE-754 float and double, one-byte char and bool.
 PRIMITIVE_TYPES = {

@@ -1957,10 +1957,10 @@ inline Call load_cv7_ins(Connection &connection,
     }
 }
 inline Call
-default__gx5_45(Connection &connection,
-                const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-                const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
-                const StartOptions &options = {}) {
+default_gx5_45(Connection &connection,
+               const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+               const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
+               const StartOptions &options = {}) {
     {
         ::mipcodec::threedm::DataStreamControlGx545 v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;
@@ -1969,9 +1969,9 @@ default__gx5_45(Connection &connection,
         return connection.run(v, options);
     }
 }
-inline Call default__cv7_ins(Connection &connection,
-                             const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
-                             const StartOptions &options = {}) {
+inline Call default_cv7_ins(Connection &connection,
+                            const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
+                            const StartOptions &options = {}) {
     {
         ::mipcodec::threedm::DataStreamControlCv7Ins v{};
         v.function = ::mipcodec::types::FunctionSelector::default_;

@@ -1,0 +1,108 @@
+"""The identifiers the C++ back end gives to spec elements, for the shared name check
+(generator/name_check.py), spelled with the back end's own functions (backend.py)."""
+
+from __future__ import annotations
+
+from generator import model
+from generator.name_check import Name, calls, layouts, param_element, params_where, taken
+
+from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, call_name, ident
+from .facts import KEYWORDS, RESERVED
+
+# What the bitfield classes of templates/cpp/include/types.hpp.j2 define besides their members.
+BITFIELD_OWN = ("Raw", "raw", "set_raw", "raw_")
+
+
+def reserved(ident: str) -> str | None:
+    """Why ident is still reserved in C++ (after ident()'s escaping), or None."""
+    if ident in KEYWORDS:
+        return "is a C++ keyword or a name of the standard library (facts.KEYWORDS)"
+    if ident in RESERVED:
+        return "is a macro of the C++ library or of the compiler (facts.RESERVED)"
+    if "__" in ident:
+        return "contains a double underscore (reserved to the implementation: C++ [lex.name])"
+    return None
+
+
+def names(proto: dict) -> list[Name]:
+    ns = ident(proto["package"])
+    out: list[Name] = []
+    top = f"namespace {ns}"
+    out.extend(taken(top, RUNTIME_NAMESPACES, "a name of the runtime,"))
+    for s in proto["sets"]:
+        out.append(Name(top, _set_ns(s), f"the namespace of set {s['name']}", (s["name"],)))
+    if proto["reserved_fields"]:
+        out.append(Name(top, _reserved_ns(proto), "the namespace of the reserved fields", (), False))
+    types_ns = f"namespace {ns}::types"
+    for t in proto["types"]:
+        tw = (t["name"],)
+        out.append(Name(types_ns, t["name"], f"type {t['name']}", tw))
+        scope = f"{t['kind']} {ns}::types::{t['name']}"
+        owner = f"{t['kind']} {t['name']}"
+        if t["kind"] == "enum":
+            for v in t["values"]:
+                out.append(
+                    Name(scope, ident(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
+                )
+        elif t["kind"] == "bitfield":
+            out.extend(taken(scope, BITFIELD_OWN, "a member every bitfield class has,", owner))
+            for b in t["members"]:
+                bw = tw + (b["name"],)
+                element = f"member {b['name']} of {owner}"
+                getter = ident(b["name"], frozenset({"raw", "set_raw", "Raw"}))
+                out.append(Name(scope, getter, element, bw, owner=owner))
+                out.append(Name(scope, "set_" + b["name"], f"the setter of {element}", bw, False, owner))
+                out.append(Name(scope, b["name"] + "_mask", f"the mask of {element}", bw, False, owner))
+        elif t["kind"] == "struct":
+            for q in model.struct(proto, t):
+                out.append(Name(scope, ident(q.name), param_element(q, owner), tw + (q.name,), owner=owner))
+    for s in [None, *proto["sets"]]:
+        fields = proto["reserved_fields"] if s is None else s["fields"]
+        set_ns = _reserved_ns(proto) if s is None else _set_ns(s)
+        structs = _layout_names(fields)
+        for lay in (x for x in layouts(proto) if x.set is s):
+            scope = f"namespace {ns}::{set_ns}"
+            struct = structs[(lay.field["name"], lay.device)]
+            out.append(Name(scope, struct, lay.what, lay.where))
+            members = f"struct {ns}::{set_ns}::{struct}"
+            for q in model.layout(proto, lay.variant):
+                pw = lay.where if q.function else lay.params_where + (q.name,)
+                out.append(Name(members, ident(q.name), param_element(q, lay.what), pw, owner=lay.what))
+    out += _command_api(proto, ns)
+    return out
+
+
+# A typed command function's own parameters and local (templates/cpp/include/commands.hpp.j2).
+FUNCTION_OWN = ("connection", "options", "v")
+
+
+def _command_api(proto: dict, ns: str) -> list[Name]:
+    """The typed command API (backend.session_context, commands.hpp.j2):
+    <ns>::api::<set>::<command>::<function>(connection, arguments..., options)."""
+    out: list[Name] = []
+    for s, f, c in calls(proto):
+        set_ns = f"namespace {ns}::api::{_set_ns(s)}"
+        what = f"the command namespace of field {s['name']}.{f['name']}"
+        fw = (s["name"], f["name"])
+        out.append(Name(set_ns, ident(f["name"]), what, fw, owner=s["name"]))
+        name = call_name(c)
+        cmd_ns = f"{set_ns[len('namespace ') :]}::{ident(f['name'])}"
+        out.append(
+            Name(
+                f"namespace {cmd_ns}", name, f"the function of {what} for {c.function or 'the command'}", fw, owner=what
+            )
+        )
+        scope, owner = f"function {cmd_ns}::{name}", f"{what} {name}"
+        out.extend(taken(scope, FUNCTION_OWN, "a parameter or variable of the function,", owner))
+        v = f["variants"][c.variants[0]]
+        for a in c.arguments:
+            out.append(
+                Name(
+                    scope,
+                    ident(a.name),
+                    f"parameter {a.name} of {what}",
+                    params_where(s, f, v) + (a.name,),
+                    owner=owner,
+                )
+            )
+    return out
