@@ -381,7 +381,7 @@ size_t mipc_json_result_line(const mipc_result_t *result, uint64_t line, mipc_de
     }
     mipc_jw_lit(&w, "]");
     if (result->kind == MIPC_RESULT_INVALID || result->kind == MIPC_RESULT_REFUSED ||
-        result->kind == MIPC_RESULT_TRANSPORT) {
+        result->kind == MIPC_RESULT_TRANSPORT || result->kind == MIPC_RESULT_LOST) {
         mipc_jw_lit(&w, ",\"error\":");
         mipc_jw_string(&w, result->error, strlen(result->error));
     }

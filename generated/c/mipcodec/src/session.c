@@ -23,6 +23,8 @@ const char *mipc_result_kind_name(mipc_result_kind_t kind) {
         return "refused";
     case MIPC_RESULT_TRANSPORT:
         return "transport";
+    case MIPC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }
@@ -160,6 +162,12 @@ void mipc_start_options_init(mipc_start_options_t *options) {
 size_t mipc_session_pending(const mipc_session_t *session) {
     assert(session != NULL);
     return session->count;
+}
+
+void mipc_session_forget(mipc_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
 }
 
 /* ------------------------------------------------------------------ start */

@@ -1,7 +1,10 @@
-/* mipcodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]: the session
- * conformance tool of docs/conformance.md section 8. Reads command packets as canonical JSON lines
- * on stdin, runs them in order over the connection and prints one result line per command; every
- * other packet received (and every skip run) is printed as its canonical line, in arrival order.
+/* mipcodec-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud]
+ * [--reconnect-ms N]: the session conformance tool of docs/conformance.md section 8. Reads command
+ * packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle; {"link":
+ * "listen", "ms": M}: receive for M ms), runs them
+ * in order over the connection and prints one result line per command; every other packet received
+ * (and every skip run) is printed as its canonical line, in arrival order. The steps of getting
+ * through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
  * Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
  * skipped), 2 for usage or connection errors. Generated: do not edit. */
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
@@ -17,7 +20,9 @@
 #include "mipcodec/posix_transport.h"
 
 #define PROG "mipcodec-session"
-#define USAGE "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]"
+#define USAGE                                                                                                \
+    "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] "              \
+    "[--reconnect-ms N]"
 
 typedef struct {
     mipc_device_t device;
@@ -90,6 +95,65 @@ static int rec_write(void *ctx, const uint8_t *data, size_t len) {
 static uint64_t rec_now(void *ctx) {
     recorder_t *r = (recorder_t *)ctx;
     return r->inner.now_ms(r->inner.ctx);
+}
+
+static void log_line(void *ctx, const char *line) {
+    (void)ctx;
+    fprintf(stderr, "%s\n", line);
+    fflush(stderr);
+}
+
+/* The line without white space into out (cap bytes); false when it does not fit. */
+static bool compact(const char *s, size_t n, char *out, size_t cap) {
+    size_t i;
+    size_t k = 0;
+    for (i = 0; i < n; i++) {
+        char c = s[i];
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+            continue;
+        }
+        if (k + 1 >= cap) {
+            return false;
+        }
+        out[k++] = c;
+    }
+    out[k] = '\0';
+    return true;
+}
+
+/* {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first): 2 with *ms; else 0. */
+static int link_line(const char *s, size_t n, unsigned long *ms) {
+    char c[64];
+    const char *digits = NULL;
+    size_t len;
+    if (!compact(s, n, c, sizeof c)) {
+        return 0;
+    }
+    if (strcmp(c, "{\"link\":\"idle\"}") == 0) {
+        return 1;
+    }
+    if (strncmp(c, "{\"link\":\"listen\",\"ms\":", 22) == 0) {
+        digits = c + 22;
+        len = strlen(digits);
+        if (len < 2 || digits[len - 1] != '}') {
+            return 0;
+        }
+        c[strlen(c) - 1] = '\0';
+    } else if (strncmp(c, "{\"ms\":", 6) == 0) {
+        char *end = strchr(c + 6, ',');
+        if (end == NULL || strcmp(end, ",\"link\":\"listen\"}") != 0) {
+            return 0;
+        }
+        *end = '\0';
+        digits = c + 6;
+    } else {
+        return 0;
+    }
+    if (digits[0] == '\0' || strspn(digits, "0123456789") != strlen(digits) || strlen(digits) > 9) {
+        return 0;
+    }
+    *ms = strtoul(digits, NULL, 10);
+    return 2;
 }
 
 static int usage_error(const char *fmt, const char *arg) {
@@ -190,6 +254,12 @@ int main(int argc, char **argv) {
     const char *connect = NULL;
     unsigned long timeout_ms = MIPC_SESSION_DEFAULT_TIMEOUT_MS;
     unsigned long baud = 115200;
+    unsigned long reconnect_ms = 0;
+    unsigned long listen_ms = 0;
+    mipc_result_kind_t kind;
+    bool auto_baud = false;
+    mipc_port_t port;
+    mipc_link_options_t link_options;
     mipc_device_t device = MIPC_DEVICE_ANY;
     mipc_posix_t posix;
     recorder_t rec;
@@ -215,13 +285,18 @@ int main(int argc, char **argv) {
         char name[32];
         const char *value;
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
+        if (strcmp(a, "--auto-baud") == 0) {
+            auto_baud = true;
+            continue;
+        }
         if (n >= sizeof name) {
             return usage_error("unknown argument '%s'", a);
         }
         memcpy(name, a, n);
         name[n] = '\0';
         if (strcmp(name, "--connect") != 0 && strcmp(name, "--timeout-ms") != 0 &&
-            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0) {
+            strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
+            strcmp(name, "--reconnect-ms") != 0) {
             return usage_error("unknown argument '%s'", a);
         }
         if (eq) {
@@ -239,6 +314,10 @@ int main(int argc, char **argv) {
             }
         } else if (strcmp(name, "--baud") == 0) {
             if (int_option(name, value, 1, &baud)) {
+                return 2;
+            }
+        } else if (strcmp(name, "--reconnect-ms") == 0) {
+            if (int_option(name, value, 0, &reconnect_ms)) {
                 return 2;
             }
         } else if (!mipc_device_from_id(value, &device) || device == MIPC_DEVICE_ANY) {
@@ -268,6 +347,20 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
+    mipc_posix_port(&posix, &port);
+    mipc_link_options_init(&link_options);
+    link_options.log = log_line;
+    link_options.reconnect_ms = (uint32_t)reconnect_ms;
+    link_options.auto_baud = auto_baud;
+    mipc_link_attach(&link, &port, &link_options);
+    if (auto_baud && port.set_baud != NULL) {
+        kind = mipc_link_find_baud(&link);
+        if (kind != MIPC_RESULT_ACK) {
+            fprintf(stderr, PROG ": %s\n", kind == MIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
+            mipc_posix_close(&posix);
+            return 2;
+        }
+    }
     while (read_line(&line, &cap, &len)) {
         mipc_field_value_t command;
         mipc_command_facts_t facts;
@@ -281,6 +374,27 @@ int main(int argc, char **argv) {
         }
         if (line == NULL || blank(line, len)) {
             continue;
+        }
+        switch (link_line(line, len, &listen_ms)) {
+        case 1:
+            if (mipc_link_to_idle(&link) == MIPC_RESULT_REFUSED || !link.connected) {
+                fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
+                mipc_posix_close(&posix);
+                return 2;
+            }
+            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            continue;
+        case 2:
+            if (mipc_link_listen(&link, (uint32_t)listen_ms) < 0) {
+                fprintf(stderr, PROG ": %s\n", posix.error);
+                mipc_posix_close(&posix);
+                return 2;
+            }
+            printf("{\"line\":%lu,\"listened\":%lu}\n", number, listen_ms);
+            fflush(stdout);
+            continue;
+        default:
+            break;
         }
         if (mipc_json_command_line(line, len, &command, msg, sizeof msg) != MIPC_OK) {
             fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
@@ -296,7 +410,12 @@ int main(int argc, char **argv) {
         }
         mipc_start_options_init(&opt);
         opt.tag = number;
-        if (mipc_link_run(&link, &command, &opt, NULL) == MIPC_RESULT_TRANSPORT) {
+        kind = mipc_link_run(&link, &command, &opt, NULL);
+        if (kind == MIPC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
+            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            continue;
+        }
+        if (kind == MIPC_RESULT_TRANSPORT || kind == MIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
             mipc_posix_close(&posix);
             return 2;

@@ -381,7 +381,7 @@ size_t mscipc_json_result_line(const mscipc_result_t *result, uint64_t line, msc
     }
     mscipc_jw_lit(&w, "]");
     if (result->kind == MSCIPC_RESULT_INVALID || result->kind == MSCIPC_RESULT_REFUSED ||
-        result->kind == MSCIPC_RESULT_TRANSPORT) {
+        result->kind == MSCIPC_RESULT_TRANSPORT || result->kind == MSCIPC_RESULT_LOST) {
         mscipc_jw_lit(&w, ",\"error\":");
         mscipc_jw_string(&w, result->error, strlen(result->error));
     }

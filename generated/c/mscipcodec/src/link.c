@@ -23,6 +23,12 @@ static void on_event(void *ctx, const mscipc_session_event_t *event) {
         link->result.error = link->error;
         link->done = true;
     }
+    if (link->internal) { /* the link's own operation: counted and dropped */
+        if (event->kind != MSCIPC_SESSION_RESULT) {
+            link->dropped += event->stream->length;
+        }
+        return;
+    }
     if (link->on_event) {
         link->on_event(link->ctx, event);
     }
@@ -48,8 +54,13 @@ mscipc_status_t mscipc_link_init(mscipc_link_t *link, const mscipc_transport_t *
     c.ctx = link;
     st = mscipc_session_init(&link->session, &c);
     link->next_tag = 1;
+    link->connected = true;
+    mscipc_link_options_init(&link->options);
+    link->options.reconnect_ms = 0;
     return st;
 }
+
+static int lost(mscipc_link_t *link);
 
 int mscipc_link_pump(mscipc_link_t *link, uint32_t wait_ms) {
     uint8_t buf[512];
@@ -57,6 +68,9 @@ int mscipc_link_pump(mscipc_link_t *link, uint32_t wait_ms) {
     assert(link != NULL);
     n = link->transport.read(link->transport.ctx, buf, sizeof buf, wait_ms);
     if (n < 0) {
+        if (!link->internal && lost(link) == 0) {
+            return 0; /* reconnected: the caller goes on receiving */
+        }
         return n;
     }
     mscipc_session_feed(&link->session, buf, (size_t)n, link->transport.now_ms(link->transport.ctx));
@@ -75,11 +89,155 @@ static mscipc_result_kind_t failed(mscipc_link_t *link, mscipc_result_kind_t kin
     return kind;
 }
 
+/* ------------------------------------------------------------------ log lines without stdio */
+typedef struct {
+    char *buf;
+    size_t cap;
+    size_t len;
+} line_t;
+
+static void line_init(line_t *l, mscipc_link_t *link) {
+    l->buf = link->line;
+    l->cap = sizeof link->line;
+    l->len = 0;
+    l->buf[0] = '\0';
+}
+
+static void line_add(line_t *l, const char *s) {
+    while (*s != '\0' && l->len + 1 < l->cap) {
+        l->buf[l->len++] = *s++;
+    }
+    l->buf[l->len] = '\0';
+}
+
+static void line_uint(line_t *l, uint64_t v) {
+    char digits[21];
+    size_t i = sizeof digits - 1;
+    digits[i] = '\0';
+    do {
+        digits[--i] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    line_add(l, digits + i);
+}
+
+/* Milliseconds as seconds with one decimal ("1.4"), rounded to the nearest tenth. */
+static void line_seconds(line_t *l, uint64_t ms) {
+    char tenth[2];
+    uint64_t tenths = (ms + 50u) / 100u;
+    line_uint(l, tenths / 10u);
+    tenth[0] = (char)('0' + (int)(tenths % 10u));
+    tenth[1] = '\0';
+    line_add(l, ".");
+    line_add(l, tenth);
+}
+
+static void log_line(mscipc_link_t *link, const line_t *l) {
+    if (link->options.log) {
+        link->options.log(link->options.log_ctx, l->buf);
+    }
+}
+
+/* ------------------------------------------------------------------ the recorded configuration */
+/* The key of a setting: how many data bytes after the function selector its read sends. The
+ * shortest prefix of the written data that decodes as that command's read (function 2) is the
+ * read as the device would get it; without one (no read) every byte is key. */
+static uint8_t key_length(const mscipc_link_t *link, uint8_t set, uint8_t descriptor, const uint8_t *data,
+                          size_t n) {
+    uint8_t read[MSCIPC_MAX_FIELD_DATA];
+    size_t k;
+    memcpy(read, data, n);
+    read[0] = 2;
+    for (k = 1; k <= n; k++) {
+        mscipc_field_value_t value;
+        if (mscipc_decode_field(set, descriptor, read, k, link->session.config.device, &value, NULL) ==
+            MSCIPC_OK) {
+            return (uint8_t)(k - 1);
+        }
+    }
+    return (uint8_t)(n - 1);
+}
+
+/* Records a setting the application wrote (function write or write_no_ack of a command with a
+ * function selector, acknowledged or sent): the latest per key replaces the earlier one and moves
+ * to the end (the order of the writes); one more than MSCIPC_LINK_MAX_SETTINGS keys forgets the
+ * oldest. Also notes whether the last idle or resume command was an idle. */
+static void record(mscipc_link_t *link, const mscipc_field_value_t *command) {
+    mscipc_command_facts_t facts;
+    mscipc_link_setting_t *slot;
+    uint8_t data[MSCIPC_MAX_FIELD_DATA];
+    size_t n = 0;
+    size_t i;
+    uint8_t key_len;
+    if (!mscipc_command_facts(command, &facts)) {
+        return;
+    }
+#if MSCIPC_LINK_HAS_IDLE
+    if (facts.set == MSCIPC_LINK_IDLE_SET && facts.descriptor == MSCIPC_LINK_IDLE_DESCRIPTOR) {
+        link->idled = true;
+    }
+#endif
+#if MSCIPC_LINK_HAS_RESUME
+    if (facts.set == MSCIPC_LINK_RESUME_SET && facts.descriptor == MSCIPC_LINK_RESUME_DESCRIPTOR) {
+        link->idled = false;
+    }
+#endif
+    if ((facts.function != 1 && facts.function != 6) ||
+        mscipc_encode_field(command, data, sizeof data, &n) != MSCIPC_OK || n == 0) {
+        return;
+    }
+    key_len = key_length(link, facts.set, facts.descriptor, data, n);
+    for (i = 0; i < link->setting_count; i++) {
+        const mscipc_link_setting_t *r = &link->settings[i];
+        if (r->set == facts.set && r->descriptor == facts.descriptor && r->key_len == key_len &&
+            memcmp(r->data + 1, data + 1, key_len) == 0) {
+            break;
+        }
+    }
+    if (i == link->setting_count && link->setting_count == MSCIPC_LINK_MAX_SETTINGS) {
+        i = 0; /* full: the oldest goes */
+    }
+    if (i < link->setting_count) {
+        memmove(&link->settings[i], &link->settings[i + 1],
+                (link->setting_count - i - 1) * sizeof link->settings[0]);
+        link->setting_count--;
+    }
+    slot = &link->settings[link->setting_count++];
+    slot->set = facts.set;
+    slot->descriptor = facts.descriptor;
+    slot->key_len = key_len;
+    slot->len = (uint8_t)n;
+    memcpy(slot->data, data, n);
+}
+
+/* The transport failed under a command: the port is reopened (when the link may reconnect) and
+ * the command fails with "link lost: REASON" either way; it is not sent again. */
+static mscipc_result_kind_t link_lost(mscipc_link_t *link, const char *what, mscipc_result_t *result) {
+    char why[MSCIPC_SESSION_ERROR_MAX];
+    line_t l;
+    const char *reason = link->port.reason ? link->port.reason(link->port.ctx) : what;
+    l.buf = why;
+    l.cap = sizeof why;
+    l.len = 0;
+    why[0] = '\0';
+    line_add(&l, "link lost: ");
+    line_add(&l, reason != NULL && reason[0] != '\0' ? reason : what);
+    if (!link->internal && link->port.reopen != NULL && link->options.reconnect_ms > 0) {
+        (void)lost(link);
+        memset(&link->result, 0, sizeof link->result);
+        return failed(link, MSCIPC_RESULT_LOST, why, result);
+    }
+    link->connected = link->internal && link->connected;
+    memset(&link->result, 0, sizeof link->result);
+    return failed(link, MSCIPC_RESULT_TRANSPORT, why, result);
+}
+
 mscipc_result_kind_t mscipc_link_run(mscipc_link_t *link, const mscipc_field_value_t *command,
                                      const mscipc_start_options_t *options, mscipc_result_t *result) {
     mscipc_start_options_t opt;
     mscipc_started_t started;
     uint8_t packet[MSCIPC_MAX_PACKET];
+    uint8_t buf[512];
     mscipc_status_t st;
     assert(link != NULL);
     assert(command != NULL);
@@ -105,7 +263,7 @@ mscipc_result_kind_t mscipc_link_run(mscipc_link_t *link, const mscipc_field_val
     }
     if (started.packet_len > 0 &&
         link->transport.write(link->transport.ctx, packet, started.packet_len) < 0) {
-        return failed(link, MSCIPC_RESULT_TRANSPORT, "write failed", result);
+        return link_lost(link, "write failed", result);
     }
     if (started.done) {
         mscipc_session_event_t ev;
@@ -120,9 +278,16 @@ mscipc_result_kind_t mscipc_link_run(mscipc_link_t *link, const mscipc_field_val
         uint64_t wait;
         mscipc_session_next_deadline(&link->session, &deadline);
         wait = deadline > now ? deadline - now : 0;
-        if (mscipc_link_pump(link, wait > UINT32_MAX ? UINT32_MAX : (uint32_t)wait) < 0) {
-            return failed(link, MSCIPC_RESULT_TRANSPORT, "the transport failed", result);
+        int n = link->transport.read(link->transport.ctx, buf, sizeof buf,
+                                     wait > UINT32_MAX ? UINT32_MAX : (uint32_t)wait);
+        if (n < 0) {
+            return link_lost(link, "the transport failed", result);
         }
+        mscipc_session_feed(&link->session, buf, (size_t)n, link->transport.now_ms(link->transport.ctx));
+    }
+    if (!link->internal &&
+        (link->result.kind == MSCIPC_RESULT_ACK || link->result.kind == MSCIPC_RESULT_SENT)) {
+        record(link, command);
     }
     if (result) {
         *result = link->result;
@@ -157,6 +322,401 @@ int mscipc_link_listen(mscipc_link_t *link, uint32_t duration_ms) {
 void mscipc_link_close(mscipc_link_t *link) {
     assert(link != NULL);
     mscipc_session_close(&link->session, link->transport.now_ms(link->transport.ctx));
+}
+
+/* ------------------------------------------------------------------ getting through */
+void mscipc_link_options_init(mscipc_link_options_t *options) {
+    assert(options != NULL);
+    memset(options, 0, sizeof *options);
+    options->reconnect_ms = MSCIPC_LINK_DEFAULT_RECONNECT_MS;
+    options->reopen_interval_ms = MSCIPC_LINK_REOPEN_INTERVAL_MS;
+    options->quiet_ms = MSCIPC_LINK_QUIET_MS;
+}
+
+void mscipc_link_attach(mscipc_link_t *link, const mscipc_port_t *port,
+                        const mscipc_link_options_t *options) {
+    assert(link != NULL);
+    if (port) {
+        link->port = *port;
+    } else {
+        memset(&link->port, 0, sizeof link->port);
+    }
+    if (options) {
+        link->options = *options;
+    } else {
+        mscipc_link_options_init(&link->options);
+    }
+}
+
+static uint64_t now_ms(const mscipc_link_t *link) {
+    return link->transport.now_ms(link->transport.ctx);
+}
+
+/* Runs a command of the link itself: its events counted and dropped, the data handlers paused, the
+ * command not recorded. */
+static mscipc_result_kind_t run_internal(mscipc_link_t *link, const mscipc_field_value_t *command,
+                                         const mscipc_start_options_t *options) {
+    bool was = link->internal;
+    mscipc_packet_handler_fn packet_fn = link->session.packet_fn;
+    size_t field_count = link->session.field_count;
+    mscipc_result_kind_t kind;
+    link->internal = true;
+    link->session.packet_fn = NULL;
+    link->session.field_count = 0;
+    kind = mscipc_link_run(link, command, options, NULL);
+    link->session.packet_fn = packet_fn;
+    link->session.field_count = field_count;
+    link->internal = was;
+    return kind;
+}
+
+/* Receives for ms milliseconds with the events counted and dropped; < 0: the transport failed. */
+static int drain(mscipc_link_t *link, uint32_t ms) {
+    bool was = link->internal;
+    mscipc_packet_handler_fn packet_fn = link->session.packet_fn;
+    size_t field_count = link->session.field_count;
+    int rc;
+    link->internal = true;
+    link->session.packet_fn = NULL;
+    link->session.field_count = 0;
+    rc = mscipc_link_listen(link, ms);
+    link->session.packet_fn = packet_fn;
+    link->session.field_count = field_count;
+    link->internal = was;
+    return rc;
+}
+
+#if MSCIPC_LINK_HAS_PING || MSCIPC_LINK_HAS_IDLE
+/* Flushes the input: the port's, then the parser's buffered bytes (skipped; stream offsets go on). */
+static void flush_input(mscipc_link_t *link) {
+    bool was = link->internal;
+    if (link->port.flush) {
+        (void)link->port.flush(link->port.ctx);
+    }
+    link->internal = true;
+    mscipc_session_close(&link->session, now_ms(link));
+    link->internal = was;
+}
+
+/* A command without parameters, (set, descriptor), as a value. */
+static bool bare_command(const mscipc_link_t *link, uint8_t set, uint8_t descriptor,
+                         mscipc_field_value_t *value) {
+    return mscipc_decode_field(set, descriptor, NULL, 0, link->session.config.device, value, NULL) ==
+           MSCIPC_OK;
+}
+#endif
+
+#if MSCIPC_LINK_HAS_IDLE
+/* The reply timeout of a command as the session gives it (T + the spec's allowance). */
+static uint64_t command_timeout(const mscipc_link_t *link, const mscipc_field_value_t *command) {
+    mscipc_command_facts_t facts;
+    uint64_t t = link->session.config.timeout_ms;
+    if (mscipc_command_facts(command, &facts)) {
+        t += facts.allowance_ms;
+    }
+    return t;
+}
+#endif
+
+mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
+#if MSCIPC_LINK_HAS_IDLE
+    mscipc_field_value_t idle;
+    mscipc_result_kind_t kind = MSCIPC_RESULT_TIMEOUT;
+    unsigned attempt;
+    uint64_t timeout;
+    line_t l;
+    assert(link != NULL);
+    if (!bare_command(link, MSCIPC_LINK_IDLE_SET, MSCIPC_LINK_IDLE_DESCRIPTOR, &idle)) {
+        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the idle command does not decode");
+    }
+    timeout = command_timeout(link, &idle);
+    for (attempt = 1; attempt <= MSCIPC_LINK_IDLE_ATTEMPTS; attempt++) {
+        link->dropped = 0;
+        kind = run_internal(link, &idle, NULL);
+        if (kind == MSCIPC_RESULT_ACK) {
+            line_init(&l, link);
+            line_add(&l, "link: idle: ACK on attempt ");
+            line_uint(&l, attempt);
+            line_add(&l, " of ");
+            line_uint(&l, MSCIPC_LINK_IDLE_ATTEMPTS);
+            line_add(&l, " (");
+            line_uint(&l, link->dropped);
+            line_add(&l, " bytes dropped)");
+            log_line(link, &l);
+            if (!link->internal) {
+                link->idled = true;
+            }
+            return kind;
+        }
+        if (kind != MSCIPC_RESULT_TIMEOUT) {
+            return kind;
+        }
+        if (attempt == MSCIPC_LINK_IDLE_ATTEMPTS) {
+            break;
+        }
+        line_init(&l, link);
+        line_add(&l, "link: idle: no ACK in ");
+        line_uint(&l, timeout);
+        line_add(&l, " ms");
+        if (link->dropped > 0) {
+            line_add(&l, " while streaming (");
+            line_uint(&l, link->dropped);
+            line_add(&l, " bytes dropped)");
+        }
+        line_add(&l, ", flushing, attempt ");
+        line_uint(&l, attempt + 1u);
+        line_add(&l, " of ");
+        line_uint(&l, MSCIPC_LINK_IDLE_ATTEMPTS);
+        log_line(link, &l);
+        flush_input(link);
+        if (drain(link, link->options.quiet_ms) < 0) {
+            return mscipc_link_fail(link, MSCIPC_RESULT_TRANSPORT, "link lost while getting to idle");
+        }
+        flush_input(link);
+    }
+    line_init(&l, link);
+    line_add(&l, "link: idle: no ACK after ");
+    line_uint(&l, MSCIPC_LINK_IDLE_ATTEMPTS);
+    line_add(&l, " attempts, giving up");
+    log_line(link, &l);
+    return kind;
+#else
+    line_t l;
+    assert(link != NULL);
+    line_init(&l, link);
+    line_add(&l, "link: idle: the protocol has no idle command");
+    log_line(link, &l);
+    return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no idle command");
+#endif
+}
+
+static void sleep_ms(mscipc_link_t *link, uint32_t ms) {
+    if (ms == 0) {
+        return;
+    }
+    if (link->port.sleep_ms) {
+        link->port.sleep_ms(link->port.ctx, ms);
+    } else {
+        (void)drain(link, ms);
+    }
+}
+
+#if MSCIPC_LINK_HAS_PING
+/* Adds rate v to out[0..*n) unless it is 0 or there already. */
+static void add_rate(uint32_t *out, size_t cap, size_t *n, uint32_t v) {
+    size_t j;
+    for (j = 0; j < *n; j++) {
+        if (out[j] == v) {
+            return;
+        }
+    }
+    if (v != 0 && *n < cap) {
+        out[(*n)++] = v;
+    }
+}
+
+/* The rates to try, most likely first: the configured one, the default, then the supported rates
+ * from the highest down (with no device selected, every device's), each once. Returns how many. */
+static size_t candidate_rates(const mscipc_link_t *link, uint32_t *out, size_t cap) {
+    uint32_t all[MSCIPC_LINK_MAX_BAUD_RATES];
+    size_t count = 0;
+    size_t n = 0;
+    size_t i;
+    size_t j;
+    unsigned d;
+    mscipc_device_t device = link->session.config.device;
+    add_rate(out, cap, &n, link->port.baud);
+    for (d = 1u; device == MSCIPC_DEVICE_ANY && d < 32u && mscipc_device_id((mscipc_device_t)d) != NULL;
+         d++) {
+        add_rate(out, cap, &n, mscipc_device_default_baud((mscipc_device_t)d));
+    }
+    for (d = device == MSCIPC_DEVICE_ANY ? 1u : (unsigned)device; d < 32u; d++) {
+        size_t k = 0;
+        const uint32_t *rates;
+        if (mscipc_device_id((mscipc_device_t)d) == NULL) {
+            break;
+        }
+        rates = mscipc_device_baud_rates((mscipc_device_t)d, &k);
+        if (device != MSCIPC_DEVICE_ANY) {
+            add_rate(out, cap, &n, mscipc_device_default_baud((mscipc_device_t)d));
+        }
+        for (i = 0; i < k; i++) { /* kept in descending order */
+            uint32_t v = rates[i];
+            bool seen = false;
+            for (j = 0; j < count && !seen; j++) {
+                seen = all[j] == v;
+            }
+            if (seen || count == MSCIPC_LINK_MAX_BAUD_RATES) {
+                continue;
+            }
+            for (j = count++; j > 0 && all[j - 1] < v; j--) {
+                all[j] = all[j - 1];
+            }
+            all[j] = v;
+        }
+        if (device != MSCIPC_DEVICE_ANY) {
+            break;
+        }
+    }
+    for (i = 0; i < count; i++) {
+        add_rate(out, cap, &n, all[i]);
+    }
+    return n;
+}
+#endif
+
+mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
+#if MSCIPC_LINK_HAS_PING
+    mscipc_field_value_t ping;
+    uint32_t rates[MSCIPC_LINK_MAX_BAUD_RATES + 2];
+    size_t n;
+    size_t i;
+    mscipc_result_kind_t kind;
+    assert(link != NULL);
+    if (!bare_command(link, MSCIPC_LINK_PING_SET, MSCIPC_LINK_PING_DESCRIPTOR, &ping)) {
+        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the ping command does not decode");
+    }
+    kind = run_internal(link, &ping, NULL);
+    if (kind != MSCIPC_RESULT_TIMEOUT || link->port.set_baud == NULL) {
+        return kind; /* an answer, or no baud rate to change (TCP) */
+    }
+    n = candidate_rates(link, rates, sizeof rates / sizeof rates[0]);
+    i = n > 0 && rates[0] == link->port.baud ? 0 : (size_t)-1;
+    for (;;) {
+        line_t l;
+        size_t next = i + 1;
+        uint32_t current = link->port.baud;
+        if (next >= n) {
+            line_init(&l, link);
+            line_add(&l, "link: baud: no answer at any rate");
+            log_line(link, &l);
+            return mscipc_link_fail(link, MSCIPC_RESULT_TIMEOUT, "no answer at any baud rate");
+        }
+        line_init(&l, link);
+        line_add(&l, "link: baud: no answer at ");
+        line_uint(&l, current);
+        line_add(&l, ", trying ");
+        line_uint(&l, rates[next]);
+        log_line(link, &l);
+        i = next;
+        if (link->port.set_baud(link->port.ctx, rates[i]) < 0) {
+            continue;
+        }
+        link->port.baud = rates[i];
+        flush_input(link);
+        kind = run_internal(link, &ping, NULL);
+        if (kind == MSCIPC_RESULT_ACK) {
+            line_init(&l, link);
+            line_add(&l, "link: baud: device answers at ");
+            line_uint(&l, rates[i]);
+            log_line(link, &l);
+            return kind;
+        }
+        if (kind == MSCIPC_RESULT_TRANSPORT) {
+            return kind;
+        }
+    }
+#else
+    assert(link != NULL);
+    return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no ping command");
+#endif
+}
+
+/* Re-sends the recorded settings in order; returns how many were acknowledged (or sent). */
+static size_t reapply(mscipc_link_t *link) {
+    size_t i;
+    size_t done = 0;
+    for (i = 0; i < link->setting_count; i++) {
+        const mscipc_link_setting_t *r = &link->settings[i];
+        mscipc_field_value_t value;
+        mscipc_result_kind_t kind;
+        if (mscipc_decode_field(r->set, r->descriptor, r->data, r->len, link->session.config.device, &value,
+                                NULL) != MSCIPC_OK) {
+            continue;
+        }
+        kind = run_internal(link, &value, NULL);
+        if (kind == MSCIPC_RESULT_ACK || kind == MSCIPC_RESULT_SENT) {
+            done++;
+        }
+    }
+#if MSCIPC_LINK_HAS_RESUME
+    if (!link->idled) {
+        mscipc_field_value_t resume;
+        if (mscipc_decode_field(MSCIPC_LINK_RESUME_SET, MSCIPC_LINK_RESUME_DESCRIPTOR, NULL, 0,
+                                link->session.config.device, &resume, NULL) == MSCIPC_OK) {
+            (void)run_internal(link, &resume, NULL);
+        }
+    }
+#endif
+    return done;
+}
+
+int mscipc_link_reconnect(mscipc_link_t *link) {
+    uint64_t start;
+    line_t l;
+    const char *reason;
+    const char *address;
+    bool was;
+    size_t applied;
+    assert(link != NULL);
+    was = link->internal;
+    if (link->port.reopen == NULL || link->options.reconnect_ms == 0) {
+        link->connected = false;
+        return -1;
+    }
+    reason = link->port.reason ? link->port.reason(link->port.ctx) : NULL;
+    address = link->port.address ? link->port.address(link->port.ctx) : NULL;
+    address = address != NULL ? address : "the port";
+    line_init(&l, link);
+    line_add(&l, "link: port lost (");
+    line_add(&l, reason != NULL && reason[0] != '\0' ? reason : "unknown error");
+    line_add(&l, "), reopening ");
+    line_add(&l, address);
+    line_add(&l, " every ");
+    line_uint(&l, link->options.reopen_interval_ms);
+    line_add(&l, " ms");
+    log_line(link, &l);
+    /* the command in flight is not answered any more; the partial packet of the old port goes */
+    mscipc_session_forget(&link->session);
+    link->internal = true;
+    mscipc_session_close(&link->session, now_ms(link));
+    start = now_ms(link);
+    for (;;) {
+        if (link->port.reopen(link->port.ctx) == 0) {
+            break;
+        }
+        if (now_ms(link) - start >= link->options.reconnect_ms) {
+            link->internal = was;
+            link->connected = false;
+            line_init(&l, link);
+            line_add(&l, "link: gave up reopening ");
+            line_add(&l, address);
+            line_add(&l, " after ");
+            line_uint(&l, link->options.reconnect_ms);
+            line_add(&l, " ms");
+            log_line(link, &l);
+            return -1;
+        }
+        sleep_ms(link, link->options.reopen_interval_ms);
+    }
+    link->connected = true;
+    applied = 0;
+    if (mscipc_link_to_idle(link) == MSCIPC_RESULT_ACK) {
+        applied = reapply(link);
+    }
+    link->internal = was;
+    line_init(&l, link);
+    line_add(&l, "link: reconnected after ");
+    line_seconds(&l, now_ms(link) - start);
+    line_add(&l, " s, re-applied ");
+    line_uint(&l, applied);
+    line_add(&l, " settings");
+    log_line(link, &l);
+    return 0;
+}
+
+static int lost(mscipc_link_t *link) {
+    return mscipc_link_reconnect(link);
 }
 
 mscipc_status_t mscipc_link_reply(const mscipc_link_t *link, const mscipc_result_t *result,

@@ -23,6 +23,8 @@ const char *mscipc_result_kind_name(mscipc_result_kind_t kind) {
         return "refused";
     case MSCIPC_RESULT_TRANSPORT:
         return "transport";
+    case MSCIPC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }
@@ -160,6 +162,12 @@ void mscipc_start_options_init(mscipc_start_options_t *options) {
 size_t mscipc_session_pending(const mscipc_session_t *session) {
     assert(session != NULL);
     return session->count;
+}
+
+void mscipc_session_forget(mscipc_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
 }
 
 /* ------------------------------------------------------------------ start */

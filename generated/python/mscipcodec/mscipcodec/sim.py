@@ -1,7 +1,7 @@
 """A simulated Memsense MS-CIP device (docs/conformance.md section 9): test an application without
 the hardware, over a pseudo-terminal or TCP.
 
-    python -m mscipcodec.sim --listen pty|tcp:HOST:PORT [--device ID] [--seed N] [fault options]
+    python -m mscipcodec.sim --listen pty[:PATH]|tcp:HOST:PORT [--device ID] [--seed N] [fault options]
 
 prints the address it listens on as its first line and serves until terminated. The behaviour
 comes from the spec: `_session.py` (functions, reply fields and their `when`, device support, ack
@@ -112,6 +112,7 @@ class Simulator:
         speed: float = 1.0,
         baud: bool = False,
         identity: Optional[Dict[str, Any]] = None,
+        stream_full: bool = False,
     ) -> None:
         if not speed > 0:
             raise ValueError(f"bad speed {speed!r} (expected a factor above 0)")
@@ -139,6 +140,16 @@ class Simulator:
         self._world_at: Optional[Tuple[float, Dict[str, Any]]] = None
         self.follow_baud = baud  # a write of the port's baud rate changes the pty's line rate
         self.baud_changes: List[Tuple[float, int]] = []  # (after the reply sent at, new baud rate)
+        # --stream-full: the model's highest data rates from power-up, as if saved as its startup
+        # settings: every data set with a base rate streams every data quantity the model documents
+        # in it (capabilities), at decimation 1, until the host changes the format or the stream
+        self.full: Dict[int, List[Tuple[int, int]]] = {}
+        if stream_full:
+            model = capabilities.MODELS.get(device)
+            for set_id in self.base_rates:
+                entries = [(d, 1) for s, d in (model.data if model else ()) if s == set_id]
+                if entries:
+                    self.full[set_id] = entries
         self._replan()
 
     def sim_time(self, now: float) -> float:
@@ -474,6 +485,7 @@ class Simulator:
             items = self._factory(cls).get(fmt[1])
             if items and isinstance(fmt[0], int) and not fmt[2]:
                 plan[fmt[0]] = [(int(d), decimation) for d in items]
+        plan.update(self.full)  # --stream-full: the power-up format, until the host writes one
         for value in self.current.values():
             fmt = _sim.FORMATS.get(type(value))
             if fmt is None:
@@ -495,6 +507,7 @@ class Simulator:
             if getattr(cls, "DEVICE", None) in (None, self.device)
         )
         enabled = set(plan) if factory else set()
+        enabled |= set(self.full)
         for value in self.current.values():
             en = _sim.ENABLES.get(type(value))
             if en is None:
@@ -922,37 +935,86 @@ class _Link:
     def close(self) -> None:
         if self.sock is not None:
             self.sock.close()
+            return
+        for fd in (self.fd, self.slave):
+            if fd is not None:
+                try:
+                    os.close(fd)
+                except OSError:
+                    pass
 
 
 def serve(
-    listen: str, sim: Optional[Simulator], replay: Optional[List[Tuple[float, bytes]]] = None, out: Any = None
+    listen: str,
+    sim: Optional[Simulator],
+    replay: Optional[List[Tuple[float, bytes]]] = None,
+    out: Any = None,
+    replug: Sequence[Tuple[float, float]] = (),
+    start_baud: Optional[int] = None,
 ) -> None:
-    """Serves `sim` (or a replay) on `listen` ("pty" or "tcp:HOST:PORT") until terminated; the
-    first line written to `out` (stdout) is the address to connect to. A pty's slave side stays
-    open here too, so its master never reads end-of-file between two hosts."""
-    out = out or sys.stdout
-    if listen == "pty":
-        import tty
+    """Serves `sim` (or a replay) on `listen` ("pty", "pty:PATH" or "tcp:HOST:PORT") until
+    terminated; the first line written to `out` (stdout) is the address to connect to (with
+    pty:PATH, PATH: a symbolic link to the pty's slave side, replaced when the pty is reopened). A
+    pty's slave side stays open here too, so its master never reads end-of-file between two hosts.
 
-        master, slave = os.openpty()
-        tty.setraw(slave)
-        print(os.ttyname(slave), file=out, flush=True)
-        _loop(_Link(master, slave=slave), None, sim, replay)
+    `replug`: (START, END) pairs in seconds of real time since the first bytes a host sent: at
+    START the port goes away (the pty is closed and PATH removed; TCP: the connection and the
+    listening socket are closed), at END a fresh one comes back (a new pty, PATH pointing to it,
+    with plain pty its path printed as a further line; TCP: listening on the same port again). The
+    device keeps its settings and streams on meanwhile, as a device whose USB cable is re-plugged.
+    `start_baud`: the pty serves at that rate only from the start (the device's port was set to it).
+    """
+    out = out or sys.stdout
+    if listen == "pty" or listen.startswith("pty:"):
+        path = listen[4:] or None
+        if path is not None and os.path.lexists(path) and not os.path.islink(path):
+            raise ValueError(f"bad --listen {listen!r}: {path} exists and is not a symbolic link")
+
+        def open_pty(previous: Optional[_Link]) -> _Link:
+            import tty
+
+            master, slave = os.openpty()
+            tty.setraw(slave)
+            name = os.ttyname(slave)
+            if path is not None:
+                tmp = f"{path}.{os.getpid()}.tmp"
+                if os.path.lexists(tmp):
+                    os.unlink(tmp)
+                os.symlink(name, tmp)
+                os.replace(tmp, path)
+            if previous is None or path is None:
+                print(path or name, file=out, flush=True)
+            link = _Link(master, slave=slave)
+            link.baud = previous.baud if previous is not None else start_baud
+            return link
+
+        def close_pty(link: _Link) -> None:
+            if path is not None and os.path.islink(path):
+                os.unlink(path)
+            link.close()
+
+        _loop(open_pty(None), None, sim, replay, replug, reopen=open_pty, unplug=close_pty)
         return
     if not listen.startswith("tcp:"):
-        raise ValueError(f"bad --listen {listen!r} (expected pty or tcp:HOST:PORT)")
+        raise ValueError(f"bad --listen {listen!r} (expected pty, pty:PATH or tcp:HOST:PORT)")
     host, _, port = listen[4:].rpartition(":")
     host = host.strip("[]") or "127.0.0.1"
     if not port.isdigit() or int(port) > 65535:
         raise ValueError(f"bad --listen {listen!r} (expected tcp:HOST:PORT; port 0 picks a free one)")
     family = socket.AF_INET6 if ":" in host else socket.AF_INET
-    server = socket.socket(family, socket.SOCK_STREAM)
-    server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-    server.bind((host, int(port)))
-    server.listen(1)
+
+    def listen_on(number: int) -> socket.socket:
+        server = socket.socket(family, socket.SOCK_STREAM)
+        server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        server.bind((host, number))
+        server.listen(1)
+        return server
+
+    server = listen_on(int(port))
+    bound = server.getsockname()[1]
     shown = f"[{host}]" if family == socket.AF_INET6 else host
-    print(f"tcp:{shown}:{server.getsockname()[1]}", file=out, flush=True)
-    _loop(None, server, sim, replay)
+    print(f"tcp:{shown}:{bound}", file=out, flush=True)
+    _loop(None, server, sim, replay, replug, relisten=lambda: listen_on(bound))
 
 
 def _baud_codes() -> Dict[int, int]:
@@ -971,14 +1033,48 @@ def _loop(
     server: Optional[socket.socket],
     sim: Optional[Simulator],
     replay: Optional[List[Tuple[float, bytes]]],
+    replug: Sequence[Tuple[float, float]] = (),
+    reopen: Any = None,
+    unplug: Any = None,
+    relisten: Any = None,
 ) -> None:
     """Serves one host at a time (TCP: the next connection after the last one closed); the
-    simulated settings persist across connections, as a device's do."""
+    simulated settings persist across connections, as a device's do. `replug` (see serve): the
+    pty is closed with `unplug(link)` and reopened with `reopen(link)`; TCP: the connection and
+    `server` are closed and `relisten()` listens again."""
     pending: List[Chunk] = []
     started = time.monotonic()
     queue = list(replay or [])
+    plugs = sorted(replug)
+    first_bytes: Optional[float] = None  # when a host first sent something: replug times count from it
+    unplugged: Optional[Tuple[float, Optional[_Link]]] = None  # (back at, the closed pty's link)
     while True:
         now = time.monotonic()
+        if plugs and first_bytes is not None and unplugged is None and now >= first_bytes + plugs[0][0]:
+            begin, end = plugs.pop(0)
+            pending.clear()
+            closed = link
+            if server is not None:  # first: no host connects between the two
+                server.close()
+                server = None
+            if link is not None:
+                if unplug is not None:
+                    unplug(link)
+                else:
+                    link.close()
+                link = None
+            unplugged = (first_bytes + end, closed)
+        if unplugged is not None and now >= unplugged[0]:
+            if reopen is not None:
+                link = reopen(unplugged[1])
+            elif relisten is not None:
+                server = relisten()
+            unplugged = None
+        if unplugged is not None:
+            if sim is not None:
+                sim.poll(now)  # the device streams on into a port nobody reads
+            time.sleep(min(0.01, max(0.0, unplugged[0] - now)))
+            continue
         if link is not None:
             if sim is not None:
                 pending.extend(sim.poll(now))
@@ -997,6 +1093,8 @@ def _loop(
                 wake.append(w)
         if queue and link is not None:
             wake.append(started + queue[0][0])
+        if plugs and first_bytes is not None:
+            wake.append(first_bytes + plugs[0][0])
         timeout = min(0.5, max(0.0, min(wake) - now)) if wake else 0.5
         readers = [link.fd] if link is not None else []
         if server is not None and link is None:
@@ -1019,6 +1117,8 @@ def _loop(
                 link = None
                 pending.clear()
                 continue
+            if data and first_bytes is None:
+                first_bytes = time.monotonic()
             if data and sim is not None:
                 pending.extend(sim.feed(data, time.monotonic()))
             elif not data and link.sock is None:
@@ -1032,7 +1132,12 @@ def _parser() -> argparse.ArgumentParser:
         description="A simulated device answering commands and streaming data as the spec says "
         "(docs/conformance.md section 9). Prints the address it listens on, then serves until terminated.",
     )
-    p.add_argument("--listen", required=True, help="pty, or tcp:HOST:PORT (port 0: a free port)")
+    p.add_argument(
+        "--listen",
+        required=True,
+        help="pty, pty:PATH (PATH: a symbolic link to the pty, replaced when it is reopened), "
+        "or tcp:HOST:PORT (port 0: a free port)",
+    )
     p.add_argument("--device", help=f"device model: {', '.join(registry.DEVICES)} (default {registry.DEVICES[0]})")
     p.add_argument("--seed", type=int, default=0, help="seed of the simulated values (default 0)")
     p.add_argument(
@@ -1044,6 +1149,28 @@ def _parser() -> argparse.ArgumentParser:
         "--baud",
         action="store_true",
         help="a baud rate change (written) is acknowledged at the old rate, then the pty serves at the new one only",
+    )
+    p.add_argument(
+        "--start-baud",
+        type=int,
+        metavar="RATE",
+        help="the pty serves at RATE only from the start, as a device whose port was set to it "
+        "(a host at another rate reads garbage)",
+    )
+    p.add_argument(
+        "--stream-full",
+        action="store_true",
+        help="stream at the highest data rates from the start: every data set with a base rate, every data "
+        "quantity the model documents in it, at decimation 1 (until the host changes the format or stream)",
+    )
+    p.add_argument(
+        "--replug",
+        action="append",
+        default=[],
+        metavar="START:END",
+        help="the port goes away at START and a fresh one comes back at END, seconds of real time since the first "
+        "bytes a host sent (pty: closed and reopened, pty:PATH re-pointed; TCP: connection and listener closed, "
+        "listening again on the same port); the device keeps its settings (repeatable)",
     )
     p.add_argument(
         "--gnss-outage",
@@ -1130,13 +1257,19 @@ def main(argv: Optional[List[str]] = None) -> int:
                 faults,
                 scenario=args.scenario,
                 speed=args.speed,
-                baud=args.baud,
+                baud=args.baud or args.start_baud is not None,
                 identity=identity,
+                stream_full=args.stream_full,
             )
             sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
             sim.world.mag_disturbances.extend(_outage(text, "--mag-disturbance") for text in args.mag_disturbance)
             sim.world.rtk_corrections.extend(_outage(text, "--rtk-corrections") for text in args.rtk_corrections)
-        serve(args.listen, sim, replay)
+        replug = [_outage(text, "--replug") for text in args.replug]
+        if args.start_baud is not None and args.start_baud not in _BAUD_CODES.values():
+            raise ValueError(f"--start-baud {args.start_baud}: not a baud rate of this system's serial lines")
+        if args.start_baud is not None and not args.listen.startswith("pty"):
+            raise ValueError("--start-baud needs --listen pty (TCP has no baud rate)")
+        serve(args.listen, sim, replay, replug=replug, start_baud=args.start_baud)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)
         return 2

@@ -29,6 +29,62 @@ typedef struct {
     uint64_t (*now_ms)(void *ctx);
 } mipc_transport_t;
 
+/* ------------------------------------------------------------------ getting through
+ * (docs/conformance.md section 8, "Getting through"): the optional port operations, the options and
+ * the settings recorded for a reconnect. */
+
+/** What a port can do beyond reading and writing (each may be NULL: not available). */
+typedef struct {
+    void *ctx;
+    /** Discards the input received and not yet read: 0, or < 0. */
+    int (*flush)(void *ctx);
+    /** Changes the host side's baud rate: 0, or < 0. NULL: the port has no baud rate (TCP). */
+    int (*set_baud)(void *ctx, uint32_t baud);
+    /** Closes and opens the same address again: 0 when it is open, < 0 when not (yet). */
+    int (*reopen)(void *ctx);
+    /** The address, for the log ("/tmp/x/dev"). */
+    const char *(*address)(void *ctx);
+    /** Why the port failed last ("Input/output error"), for the log. */
+    const char *(*reason)(void *ctx);
+    /** Sleeps ms milliseconds (between reopen attempts, the settle time of a baud change). */
+    void (*sleep_ms)(void *ctx, uint32_t ms);
+    uint32_t baud; /* the rate it is open at (0: none) */
+} mipc_port_t;
+
+/** Receives each step of getting through as one line ("link: baud: device answers at 921600"),
+ * without a newline; valid during the call. */
+typedef void (*mipc_link_log_fn)(void *ctx, const char *line);
+
+typedef struct {
+    mipc_link_log_fn log; /* may be NULL */
+    void *log_ctx;
+    uint32_t reconnect_ms;       /* reopen a lost port for up to this long (0: no reconnect) */
+    uint32_t reopen_interval_ms; /* between reopen attempts */
+    uint32_t quiet_ms;           /* the input drained after a flush, before the next attempt */
+    bool auto_baud;              /* mipc_link_connect searches the baud rate when the ping fails */
+} mipc_link_options_t;
+
+#define MIPC_LINK_DEFAULT_RECONNECT_MS 10000u
+#define MIPC_LINK_REOPEN_INTERVAL_MS 500u
+#define MIPC_LINK_QUIET_MS 50u
+/** Settings recorded for a reconnect (the latest per key wins; one more forgets the oldest). */
+#ifndef MIPC_LINK_MAX_SETTINGS
+#define MIPC_LINK_MAX_SETTINGS 64
+#endif
+#define MIPC_LINK_LOG_MAX 320
+/** The most baud rates a search tries (every device's supported rates). */
+#define MIPC_LINK_MAX_BAUD_RATES 16
+
+/** A setting as written: its field data (re-sent after a reconnect). Its key: set, descriptor and
+ * the first key_len data bytes after the function selector (the parameters its read sends). */
+typedef struct {
+    uint8_t set;
+    uint8_t descriptor;
+    uint8_t key_len;
+    uint8_t len;
+    uint8_t data[MIPC_MAX_FIELD_DATA];
+} mipc_link_setting_t;
+
 /** A session over a transport. */
 typedef struct {
     mipc_session_t session;
@@ -41,6 +97,16 @@ typedef struct {
     uint8_t reply[MIPC_MAX_PACKET];
     char error[MIPC_SESSION_ERROR_MAX];
     uintptr_t next_tag;
+    /* getting through (mipc_link_attach) */
+    mipc_port_t port;
+    mipc_link_options_t options;
+    bool internal;    /* an operation of the link itself: events counted and dropped, not recorded */
+    bool connected;   /* false after a loss that was not repaired */
+    uint64_t dropped; /* bytes of packets and skip runs dropped while internal */
+    mipc_link_setting_t settings[MIPC_LINK_MAX_SETTINGS];
+    size_t setting_count;
+    bool idled; /* the application's last idle or resume command was an idle (no resume after a reconnect) */
+    char line[MIPC_LINK_LOG_MAX];
 } mipc_link_t;
 
 /**
@@ -71,6 +137,40 @@ int mipc_link_pump(mipc_link_t *link, uint32_t wait_ms);
 int mipc_link_listen(mipc_link_t *link, uint32_t duration_ms);
 /** Closes the session (a trailing skip run is reported); the transport is the caller's. */
 void mipc_link_close(mipc_link_t *link);
+
+/** Defaults: no log, reconnect for MIPC_LINK_DEFAULT_RECONNECT_MS every
+ * MIPC_LINK_REOPEN_INTERVAL_MS, quiet time MIPC_LINK_QUIET_MS, no baud search. */
+void mipc_link_options_init(mipc_link_options_t *options);
+
+/** Gives the link its port operations and options (either may be NULL: none, the defaults).
+ * Without it a link neither flushes, nor changes baud rates, nor reconnects. */
+void mipc_link_attach(mipc_link_t *link, const mipc_port_t *port, const mipc_link_options_t *options);
+
+/**
+ * Gets the device to idle (the protocol's idle command), also while it streams at full rate: the
+ * packets that arrive meanwhile are counted and dropped; on no ACK the input is flushed (port and
+ * parser), drained for the quiet time and the command sent again, MIPC_LINK_IDLE_ATTEMPTS times in
+ * all, each with the command's timeout; a NACK is not retried. Returns ACK, or the last attempt's
+ * result (the error in link->result.error). REFUSED when the protocol has no idle command.
+ */
+mipc_result_kind_t mipc_link_to_idle(mipc_link_t *link);
+
+/**
+ * Pings the device; with a port that has a baud rate and no answer, tries the device's supported
+ * rates (the configured one, the default, then from the highest down; with no device selected the
+ * defaults of every device, then every device's rates), each after switching and a flush, and
+ * stays at the first that answers (port.baud). Returns ACK, or the failure.
+ */
+mipc_result_kind_t mipc_link_find_baud(mipc_link_t *link);
+
+/**
+ * Reopens a lost port every reopen_interval_ms until reconnect_ms have passed since the loss, then
+ * gets to idle, re-sends the recorded settings in order and the resume command (unless the
+ * application's last idle or resume command was an idle). mipc_link_run and the pumps call it
+ * when the transport fails (the command in flight fails with MIPC_RESULT_LOST, "link lost:
+ * REASON"). Returns 0 when reconnected, < 0 when not (link->connected false).
+ */
+int mipc_link_reconnect(mipc_link_t *link);
 
 /**
  * Decodes the typed reply of an acknowledged result (mipc_result_reply_entry) into *value for

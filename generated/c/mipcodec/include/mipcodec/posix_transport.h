@@ -13,7 +13,10 @@ extern "C" {
 typedef struct {
     int fd;
     bool socket;
-    char error[400]; /* the last failure */
+    char error[400];   /* the last failure */
+    char reason[128];  /* its cause alone ("Input/output error"; the link's "port lost (...)") */
+    char address[256]; /* the address opened (reopened after a loss) */
+    unsigned long baud;
 } mipc_posix_t;
 
 /**
@@ -26,6 +29,10 @@ mipc_status_t mipc_posix_open(mipc_posix_t *posix, const char *address, unsigned
 /** The transport callbacks over an open posix transport. */
 void mipc_posix_transport(mipc_posix_t *posix, mipc_transport_t *out);
 void mipc_posix_close(mipc_posix_t *posix);
+/** The port operations of getting through (mipc_link_attach): input flush (tcflush, or a socket
+ * drained), the baud rate (termios; none over TCP), reopening the same address, the pause between
+ * attempts. */
+void mipc_posix_port(mipc_posix_t *posix, mipc_port_t *out);
 
 #ifdef __cplusplus
 }

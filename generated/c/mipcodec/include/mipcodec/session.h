@@ -36,16 +36,17 @@ extern "C" {
 
 /** The one result every started command gets. */
 typedef enum {
-    MIPC_RESULT_ACK = 1,      /* acknowledged; the reply fields are valid */
-    MIPC_RESULT_NACK = 2,     /* the device answered with an error code */
-    MIPC_RESULT_TIMEOUT = 3,  /* no reply before the deadline */
-    MIPC_RESULT_INVALID = 4,  /* acknowledged, but a reply field does not decode or is missing (error) */
-    MIPC_RESULT_SENT = 5,     /* the command suppresses its ack: complete once sent */
-    MIPC_RESULT_REFUSED = 6,  /* not sent (device support, full queue; error) */
-    MIPC_RESULT_TRANSPORT = 7 /* blocking API only: the transport failed (error) */
+    MIPC_RESULT_ACK = 1,       /* acknowledged; the reply fields are valid */
+    MIPC_RESULT_NACK = 2,      /* the device answered with an error code */
+    MIPC_RESULT_TIMEOUT = 3,   /* no reply before the deadline */
+    MIPC_RESULT_INVALID = 4,   /* acknowledged, but a reply field does not decode or is missing (error) */
+    MIPC_RESULT_SENT = 5,      /* the command suppresses its ack: complete once sent */
+    MIPC_RESULT_REFUSED = 6,   /* not sent (device support, full queue; error) */
+    MIPC_RESULT_TRANSPORT = 7, /* blocking API only: the transport failed (error) */
+    MIPC_RESULT_LOST = 8       /* blocking API, reconnecting: the port was lost under the command (error) */
 } mipc_result_kind_t;
 
-/** "ack", "nack", "timeout", "invalid", "sent", "refused" or "transport". */
+/** "ack", "nack", "timeout", "invalid", "sent", "refused", "transport" or "lost". */
 const char *mipc_result_kind_name(mipc_result_kind_t kind);
 
 /** A command's result. Pointers are valid during the callback that delivers it (until the next
@@ -189,6 +190,9 @@ void mipc_session_close(mipc_session_t *session, uint64_t now);
 bool mipc_session_next_deadline(const mipc_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t mipc_session_pending(const mipc_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void mipc_session_forget(mipc_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */

@@ -13,7 +13,10 @@ extern "C" {
 typedef struct {
     int fd;
     bool socket;
-    char error[400]; /* the last failure */
+    char error[400];   /* the last failure */
+    char reason[128];  /* its cause alone ("Input/output error"; the link's "port lost (...)") */
+    char address[256]; /* the address opened (reopened after a loss) */
+    unsigned long baud;
 } mscipc_posix_t;
 
 /**
@@ -26,6 +29,10 @@ mscipc_status_t mscipc_posix_open(mscipc_posix_t *posix, const char *address, un
 /** The transport callbacks over an open posix transport. */
 void mscipc_posix_transport(mscipc_posix_t *posix, mscipc_transport_t *out);
 void mscipc_posix_close(mscipc_posix_t *posix);
+/** The port operations of getting through (mscipc_link_attach): input flush (tcflush, or a socket
+ * drained), the baud rate (termios; none over TCP), reopening the same address, the pause between
+ * attempts. */
+void mscipc_posix_port(mscipc_posix_t *posix, mscipc_port_t *out);
 
 #ifdef __cplusplus
 }

@@ -36,16 +36,17 @@ extern "C" {
 
 /** The one result every started command gets. */
 typedef enum {
-    MSCIPC_RESULT_ACK = 1,      /* acknowledged; the reply fields are valid */
-    MSCIPC_RESULT_NACK = 2,     /* the device answered with an error code */
-    MSCIPC_RESULT_TIMEOUT = 3,  /* no reply before the deadline */
-    MSCIPC_RESULT_INVALID = 4,  /* acknowledged, but a reply field does not decode or is missing (error) */
-    MSCIPC_RESULT_SENT = 5,     /* the command suppresses its ack: complete once sent */
-    MSCIPC_RESULT_REFUSED = 6,  /* not sent (device support, full queue; error) */
-    MSCIPC_RESULT_TRANSPORT = 7 /* blocking API only: the transport failed (error) */
+    MSCIPC_RESULT_ACK = 1,       /* acknowledged; the reply fields are valid */
+    MSCIPC_RESULT_NACK = 2,      /* the device answered with an error code */
+    MSCIPC_RESULT_TIMEOUT = 3,   /* no reply before the deadline */
+    MSCIPC_RESULT_INVALID = 4,   /* acknowledged, but a reply field does not decode or is missing (error) */
+    MSCIPC_RESULT_SENT = 5,      /* the command suppresses its ack: complete once sent */
+    MSCIPC_RESULT_REFUSED = 6,   /* not sent (device support, full queue; error) */
+    MSCIPC_RESULT_TRANSPORT = 7, /* blocking API only: the transport failed (error) */
+    MSCIPC_RESULT_LOST = 8       /* blocking API, reconnecting: the port was lost under the command (error) */
 } mscipc_result_kind_t;
 
-/** "ack", "nack", "timeout", "invalid", "sent", "refused" or "transport". */
+/** "ack", "nack", "timeout", "invalid", "sent", "refused", "transport" or "lost". */
 const char *mscipc_result_kind_name(mscipc_result_kind_t kind);
 
 /** A command's result. Pointers are valid during the callback that delivers it (until the next
@@ -190,6 +191,9 @@ void mscipc_session_close(mscipc_session_t *session, uint64_t now);
 bool mscipc_session_next_deadline(const mscipc_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t mscipc_session_pending(const mscipc_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void mscipc_session_forget(mscipc_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */

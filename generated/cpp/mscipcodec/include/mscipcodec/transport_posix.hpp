@@ -8,8 +8,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <fcntl.h>
 #include <netdb.h>
@@ -28,7 +30,8 @@ namespace mscipcodec {
 /// A file descriptor transport (a connected socket or an open serial port); closes it.
 class FdTransport : public Transport {
   public:
-    explicit FdTransport(int fd, const char *what) : fd_(fd), what_(what) {}
+    explicit FdTransport(int fd, const char *what, std::string address = {}, long baud = 0)
+        : fd_(fd), what_(what), address_(std::move(address)), baud_(baud) {}
     ~FdTransport() override {
         if (fd_ >= 0) {
             ::close(fd_);
@@ -38,14 +41,21 @@ class FdTransport : public Transport {
     FdTransport &operator=(const FdTransport &) = delete;
 
     bool write(const std::uint8_t *data, std::size_t size, ErrorText &error) override {
+        if (fd_ < 0) {
+            reason_ = "the port is closed";
+            std::snprintf(error.text.data(), error.text.size(), "%s: write failed: %s", what_,
+                          reason_.c_str());
+            return false;
+        }
         while (size > 0) {
             const ssize_t n = send_or_write(fd_, data, size);
             if (n < 0) {
                 if (errno == EINTR) {
                     continue;
                 }
+                reason_ = std::strerror(errno);
                 std::snprintf(error.text.data(), error.text.size(), "%s: write failed: %s", what_,
-                              std::strerror(errno));
+                              reason_.c_str());
                 return false;
             }
             data += n;
@@ -56,6 +66,12 @@ class FdTransport : public Transport {
 
     long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
               ErrorText &error) override {
+        if (fd_ < 0) {
+            reason_ = "the port is closed";
+            std::snprintf(error.text.data(), error.text.size(), "%s: read failed: %s", what_,
+                          reason_.c_str());
+            return -1;
+        }
         pollfd p{fd_, POLLIN, 0};
         const int timeout =
             timeout_ms > 2000000000 ? 2000000000 : static_cast<int>(timeout_ms < 0 ? 0 : timeout_ms);
@@ -64,8 +80,9 @@ class FdTransport : public Transport {
             if (errno == EINTR) {
                 return 0;
             }
+            reason_ = std::strerror(errno);
             std::snprintf(error.text.data(), error.text.size(), "%s: poll failed: %s", what_,
-                          std::strerror(errno));
+                          reason_.c_str());
             return -1;
         }
         if (r == 0) {
@@ -76,15 +93,50 @@ class FdTransport : public Transport {
             if (errno == EINTR || errno == EAGAIN) {
                 return 0;
             }
+            reason_ = std::strerror(errno);
             std::snprintf(error.text.data(), error.text.size(), "%s: read failed: %s", what_,
-                          std::strerror(errno));
+                          reason_.c_str());
             return -1;
         }
         if (n == 0) {
+            reason_ = "end of file";
             std::snprintf(error.text.data(), error.text.size(), "%s: connection closed by the device", what_);
             return -1;
         }
         return static_cast<long>(n);
+    }
+
+    bool flush() override {
+        if (fd_ < 0) {
+            return false;
+        }
+        if (baud_ != 0) {
+            return ::tcflush(fd_, TCIFLUSH) == 0;
+        }
+        std::uint8_t buf[512];
+        for (;;) { // a socket: read what is there without waiting
+            const ssize_t n = ::recv(fd_, buf, sizeof buf, MSG_DONTWAIT);
+            if (n <= 0) {
+                return n < 0;
+            }
+        }
+    }
+    std::uint32_t baud() const override {
+        return static_cast<std::uint32_t>(baud_);
+    }
+    bool set_baud(std::uint32_t baud) override;
+    bool reopen() override;
+    std::string address() const override {
+        return address_;
+    }
+    std::string reason() const override {
+        return reason_;
+    }
+    bool sleep_ms(std::int64_t ms) override {
+        timespec ts{static_cast<time_t>(ms / 1000), static_cast<long>(ms % 1000) * 1000000L};
+        while (::nanosleep(&ts, &ts) != 0 && errno == EINTR) {
+        }
+        return true;
     }
 
   private:
@@ -99,6 +151,9 @@ class FdTransport : public Transport {
     }
     int fd_;
     const char *what_;
+    std::string address_; ///< what reopen() opens
+    long baud_;           ///< 0: a socket
+    std::string reason_;
 };
 
 /// Splits "tcp:HOST:PORT" ("tcp:[::1]:5000" for IPv6); false when it is not one.
@@ -131,13 +186,14 @@ inline bool parse_tcp_address(const std::string &address, std::string &host, std
     return true;
 }
 
-/// Connects to "tcp:HOST:PORT"; nullptr with `error` on failure.
-inline std::unique_ptr<Transport> open_tcp(const std::string &address, std::string &error) {
+/// Connects to "tcp:HOST:PORT": the socket, or -1 with `error` (and `reason`: the cause alone).
+inline int open_tcp_fd(const std::string &address, std::string &error, std::string &reason) {
     std::string host;
     std::string port;
     if (!parse_tcp_address(address, host, port)) {
         error = "bad TCP address '" + address + "' (expected tcp:HOST:PORT, an IPv6 host in brackets)";
-        return nullptr;
+        reason = error;
+        return -1;
     }
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
@@ -145,8 +201,9 @@ inline std::unique_ptr<Transport> open_tcp(const std::string &address, std::stri
     addrinfo *list = nullptr;
     const int g = ::getaddrinfo(host.c_str(), port.c_str(), &hints, &list);
     if (g != 0) {
-        error = "cannot connect to " + address + ": " + ::gai_strerror(g);
-        return nullptr;
+        reason = ::gai_strerror(g);
+        error = "cannot connect to " + address + ": " + reason;
+        return -1;
     }
     int fd = -1;
     int last = 0;
@@ -165,12 +222,23 @@ inline std::unique_ptr<Transport> open_tcp(const std::string &address, std::stri
     }
     ::freeaddrinfo(list);
     if (fd < 0) {
-        error = "cannot connect to " + address + ": " + std::strerror(last);
-        return nullptr;
+        reason = std::strerror(last);
+        error = "cannot connect to " + address + ": " + reason;
+        return -1;
     }
     int one = 1;
     ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-    return std::make_unique<FdTransport>(fd, "tcp");
+    return fd;
+}
+
+/// Connects to "tcp:HOST:PORT"; nullptr with `error` on failure.
+inline std::unique_ptr<Transport> open_tcp(const std::string &address, std::string &error) {
+    std::string reason;
+    const int fd = open_tcp_fd(address, error, reason);
+    if (fd < 0) {
+        return nullptr;
+    }
+    return std::make_unique<FdTransport>(fd, "tcp", address, 0);
 }
 
 /// The termios speed of a baud rate as typed (115200), or false when the system has none.
@@ -204,28 +272,46 @@ inline bool baud_speed(long baud, speed_t &out) {
         out = B921600;
         return true;
 #endif
+#ifdef B1000000
+    case 1000000:
+        out = B1000000;
+        return true;
+#endif
+#ifdef B2000000
+    case 2000000:
+        out = B2000000;
+        return true;
+#endif
+#ifdef B3000000
+    case 3000000:
+        out = B3000000;
+        return true;
+#endif
     default:
         return false;
     }
 }
 
-/// Opens a serial port raw, 8N1, at `baud`; nullptr with `error` on failure.
-inline std::unique_ptr<Transport> open_serial(const std::string &path, long baud, std::string &error) {
+/// Opens a serial port raw, 8N1, at `baud`: the descriptor, or -1 with `error` (and `reason`).
+inline int open_serial_fd(const std::string &path, long baud, std::string &error, std::string &reason) {
     speed_t speed{};
     if (!baud_speed(baud, speed)) {
         error = "unsupported baud rate " + std::to_string(baud);
-        return nullptr;
+        reason = error;
+        return -1;
     }
     const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) {
-        error = "cannot open " + path + ": " + std::strerror(errno);
-        return nullptr;
+        reason = std::strerror(errno);
+        error = "cannot open " + path + ": " + reason;
+        return -1;
     }
     termios t{};
     if (::tcgetattr(fd, &t) != 0) {
-        error = "cannot open " + path + ": not a serial port (" + std::strerror(errno) + ")";
+        reason = std::strerror(errno);
+        error = "cannot open " + path + ": not a serial port (" + reason + ")";
         ::close(fd);
-        return nullptr;
+        return -1;
     }
     ::cfmakeraw(&t);
     t.c_cflag |= CLOCAL | CREAD;
@@ -235,11 +321,45 @@ inline std::unique_ptr<Transport> open_serial(const std::string &path, long baud
     ::cfsetispeed(&t, speed);
     ::cfsetospeed(&t, speed);
     if (::tcsetattr(fd, TCSANOW, &t) != 0) {
-        error = "cannot configure " + path + ": " + std::strerror(errno);
+        reason = std::strerror(errno);
+        error = "cannot configure " + path + ": " + reason;
         ::close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+/// Opens a serial port raw, 8N1, at `baud`; nullptr with `error` on failure.
+inline std::unique_ptr<Transport> open_serial(const std::string &path, long baud, std::string &error) {
+    std::string reason;
+    const int fd = open_serial_fd(path, baud, error, reason);
+    if (fd < 0) {
         return nullptr;
     }
-    return std::make_unique<FdTransport>(fd, "serial");
+    return std::make_unique<FdTransport>(fd, "serial", path, baud);
+}
+
+inline bool FdTransport::set_baud(std::uint32_t baud) {
+    speed_t speed{};
+    termios t{};
+    if (baud_ == 0 || fd_ < 0 || !baud_speed(static_cast<long>(baud), speed) || ::tcgetattr(fd_, &t) != 0 ||
+        ::cfsetispeed(&t, speed) != 0 || ::cfsetospeed(&t, speed) != 0 ||
+        ::tcsetattr(fd_, TCSANOW, &t) != 0) {
+        return false;
+    }
+    baud_ = static_cast<long>(baud);
+    return true;
+}
+
+inline bool FdTransport::reopen() {
+    if (fd_ >= 0) {
+        ::close(fd_);
+        fd_ = -1;
+    }
+    std::string error;
+    fd_ =
+        baud_ == 0 ? open_tcp_fd(address_, error, reason_) : open_serial_fd(address_, baud_, error, reason_);
+    return fd_ >= 0;
 }
 
 /// "tcp:HOST:PORT" or a serial port path.

@@ -381,7 +381,7 @@ size_t codec_json_result_line(const codec_result_t *result, uint64_t line, codec
     }
     codec_jw_lit(&w, "]");
     if (result->kind == CODEC_RESULT_INVALID || result->kind == CODEC_RESULT_REFUSED ||
-        result->kind == CODEC_RESULT_TRANSPORT) {
+        result->kind == CODEC_RESULT_TRANSPORT || result->kind == CODEC_RESULT_LOST) {
         codec_jw_lit(&w, ",\"error\":");
         codec_jw_string(&w, result->error, strlen(result->error));
     }

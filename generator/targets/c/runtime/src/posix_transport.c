@@ -30,6 +30,7 @@
 
 static codec_status_t fail(codec_posix_t *t, const char *what, const char *detail) {
     snprintf(t->error, sizeof t->error, "%s%s%s", what, detail ? ": " : "", detail ? detail : "");
+    snprintf(t->reason, sizeof t->reason, "%s", detail ? detail : what);
     if (t->fd >= 0) {
         close(t->fd);
         t->fd = -1;
@@ -132,6 +133,22 @@ static speed_t baud_constant(unsigned long baud, bool *ok) {
     case 921600:
         return B921600;
 #endif
+#ifdef B1000000
+    case 1000000:
+        return B1000000;
+#endif
+#ifdef B1500000
+    case 1500000:
+        return B1500000;
+#endif
+#ifdef B2000000
+    case 2000000:
+        return B2000000;
+#endif
+#ifdef B3000000
+    case 3000000:
+        return B3000000;
+#endif
     default:
         *ok = false;
         return B0;
@@ -177,6 +194,11 @@ codec_status_t codec_posix_open(codec_posix_t *posix, const char *address, unsig
     assert(address != NULL);
     memset(posix, 0, sizeof *posix);
     posix->fd = -1;
+    posix->baud = baud;
+    if (strlen(address) >= sizeof posix->address) {
+        return fail(posix, "address too long", NULL);
+    }
+    memcpy(posix->address, address, strlen(address) + 1);
     if (address[0] == '\0') {
         return fail(posix, "empty address (expected tcp:HOST:PORT or a serial port path)", NULL);
     }
@@ -186,11 +208,21 @@ codec_status_t codec_posix_open(codec_posix_t *posix, const char *address, unsig
     return open_serial(posix, address, baud);
 }
 
+/* A failed read or write: the message and the bare reason (the link's "port lost (REASON)"). */
+static int lost(codec_posix_t *t, const char *what, const char *reason) {
+    snprintf(t->error, sizeof t->error, "%s: %s", what, reason);
+    snprintf(t->reason, sizeof t->reason, "%s", reason);
+    return -1;
+}
+
 static int posix_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
     codec_posix_t *t = (codec_posix_t *)ctx;
     struct pollfd p;
     ssize_t n;
     int rc;
+    if (t->fd < 0) {
+        return lost(t, "receive failed", "the port is closed");
+    }
     p.fd = t->fd;
     p.events = POLLIN;
     p.revents = 0;
@@ -199,8 +231,7 @@ static int posix_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) 
         if (errno == EINTR) {
             return 0;
         }
-        snprintf(t->error, sizeof t->error, "receive failed: %s", strerror(errno));
-        return -1;
+        return lost(t, "receive failed", strerror(errno));
     }
     if (rc == 0) {
         return 0;
@@ -210,29 +241,29 @@ static int posix_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) 
         if (errno == EINTR || errno == EAGAIN) {
             return 0;
         }
-        snprintf(t->error, sizeof t->error, "receive failed: %s", strerror(errno));
-        return -1;
+        return lost(t, "receive failed", strerror(errno));
     }
     if (n == 0) {
-        if (!t->socket) {
+        if (!t->socket && (p.revents & POLLHUP) == 0) {
             return 0;
         }
-        snprintf(t->error, sizeof t->error, "connection closed by the device");
-        return -1;
+        return lost(t, "receive failed", "end of file");
     }
     return (int)n;
 }
 
 static int posix_write(void *ctx, const uint8_t *data, size_t len) {
     codec_posix_t *t = (codec_posix_t *)ctx;
+    if (t->fd < 0) {
+        return lost(t, "send failed", "the port is closed");
+    }
     while (len > 0) {
         ssize_t n = t->socket ? send(t->fd, data, len, MSG_NOSIGNAL) : write(t->fd, data, len);
         if (n < 0) {
             if (errno == EINTR) {
                 continue;
             }
-            snprintf(t->error, sizeof t->error, "send failed: %s", strerror(errno));
-            return -1;
+            return lost(t, "send failed", strerror(errno));
         }
         data += n;
         len -= (size_t)n;
@@ -262,4 +293,87 @@ void codec_posix_close(codec_posix_t *posix) {
         close(posix->fd);
         posix->fd = -1;
     }
+}
+
+/* ------------------------------------------------------------------ getting through (link.h) */
+static int posix_flush(void *ctx) {
+    codec_posix_t *t = (codec_posix_t *)ctx;
+    if (t->fd < 0) {
+        return -1;
+    }
+    if (!t->socket) {
+        return tcflush(t->fd, TCIFLUSH) == 0 ? 0 : -1;
+    }
+    for (;;) { /* a socket: read what is there without waiting */
+        uint8_t buf[512];
+        ssize_t n = recv(t->fd, buf, sizeof buf, MSG_DONTWAIT);
+        if (n <= 0) {
+            return n == 0 ? -1 : 0;
+        }
+    }
+}
+
+static int posix_set_baud(void *ctx, uint32_t baud) {
+    codec_posix_t *t = (codec_posix_t *)ctx;
+    struct termios tio;
+    bool ok;
+    speed_t speed = baud_constant(baud, &ok);
+    if (!ok) {
+        snprintf(t->reason, sizeof t->reason, "unsupported baud rate %lu", (unsigned long)baud);
+        return -1;
+    }
+    if (t->fd < 0 || tcgetattr(t->fd, &tio) != 0 || cfsetispeed(&tio, speed) != 0 ||
+        cfsetospeed(&tio, speed) != 0 || tcsetattr(t->fd, TCSANOW, &tio) != 0) {
+        snprintf(t->reason, sizeof t->reason, "%s", t->fd < 0 ? "the port is closed" : strerror(errno));
+        return -1;
+    }
+    t->baud = baud;
+    return 0;
+}
+
+static int posix_reopen(void *ctx) {
+    codec_posix_t *t = (codec_posix_t *)ctx;
+    codec_posix_t fresh;
+    if (t->fd >= 0) {
+        close(t->fd);
+        t->fd = -1;
+    }
+    if (codec_posix_open(&fresh, t->address, t->baud) != CODEC_OK) {
+        memcpy(t->error, fresh.error, sizeof t->error);
+        memcpy(t->reason, fresh.reason, sizeof t->reason);
+        return -1;
+    }
+    *t = fresh;
+    return 0;
+}
+
+static const char *posix_address(void *ctx) {
+    return ((const codec_posix_t *)ctx)->address;
+}
+
+static const char *posix_reason(void *ctx) {
+    return ((const codec_posix_t *)ctx)->reason;
+}
+
+static void posix_sleep(void *ctx, uint32_t ms) {
+    struct timespec ts;
+    (void)ctx;
+    ts.tv_sec = (time_t)(ms / 1000u);
+    ts.tv_nsec = (long)(ms % 1000u) * 1000000L;
+    while (nanosleep(&ts, &ts) != 0 && errno == EINTR) {
+    }
+}
+
+void codec_posix_port(codec_posix_t *posix, codec_port_t *out) {
+    assert(posix != NULL);
+    assert(out != NULL);
+    memset(out, 0, sizeof *out);
+    out->ctx = posix;
+    out->flush = posix_flush;
+    out->set_baud = posix->socket ? NULL : posix_set_baud;
+    out->reopen = posix_reopen;
+    out->address = posix_address;
+    out->reason = posix_reason;
+    out->sleep_ms = posix_sleep;
+    out->baud = posix->socket ? 0u : (uint32_t)posix->baud;
 }

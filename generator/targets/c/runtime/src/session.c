@@ -22,6 +22,8 @@ const char *codec_result_kind_name(codec_result_kind_t kind) {
         return "refused";
     case CODEC_RESULT_TRANSPORT:
         return "transport";
+    case CODEC_RESULT_LOST:
+        return "lost";
     }
     return "unknown";
 }
@@ -159,6 +161,12 @@ void codec_start_options_init(codec_start_options_t *options) {
 size_t codec_session_pending(const codec_session_t *session) {
     assert(session != NULL);
     return session->count;
+}
+
+void codec_session_forget(codec_session_t *session) {
+    assert(session != NULL);
+    memset(session->pending, 0, sizeof session->pending);
+    session->count = 0;
 }
 
 /* ------------------------------------------------------------------ start */

@@ -1,7 +1,9 @@
-// protopkg-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]: the session
-// conformance tool (docs/conformance.md section 8). Reads command packets as canonical JSON lines
-// on stdin, runs them in order over the connection and prints one result line per command; every
-// other packet received (and every skip run) is printed as its canonical line, in arrival order.
+// protopkg-session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud]
+// [--reconnect-ms N]: the session conformance tool (docs/conformance.md section 8). Reads command
+// packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle), runs them
+// in order over the connection and prints one result line per command; every other packet received
+// (and every skip run) is printed as its canonical line, in arrival order. The steps of getting
+// through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
 // Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
 // skipped), 2 for usage or connection errors.
 #include <csignal>
@@ -20,7 +22,9 @@
 namespace {
 
 const char *const kProg = "protopkg-session";
-const char *const kUsage = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]";
+const char *const kUsage =
+    "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] "
+    "[--reconnect-ms N]";
 
 int usage_error(const std::string &message) {
     std::fprintf(stderr, "%s: %s (%s)\n", kProg, message.c_str(), kUsage);
@@ -33,6 +37,50 @@ bool int_option(const std::string &text, long low, long &out) {
     }
     out = std::atol(text.c_str());
     return out >= low;
+}
+
+/// {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first, any white space): 2 with ms; else 0.
+int link_line(const std::string &line, long &ms) {
+    std::string c;
+    for (const char ch : line) {
+        if (ch != ' ' && ch != '\t' && ch != '\r' && ch != '\f' && ch != '\v') {
+            c += ch;
+        }
+    }
+    if (c == "{\"link\":\"idle\"}") {
+        return 1;
+    }
+    std::string digits;
+    const std::string a = "{\"link\":\"listen\",\"ms\":";
+    const std::string b = ",\"link\":\"listen\"}";
+    if (c.rfind(a, 0) == 0 && c.size() > a.size() + 1 && c.back() == '}') {
+        digits = c.substr(a.size(), c.size() - a.size() - 1);
+    } else if (c.rfind("{\"ms\":", 0) == 0 && c.size() > 6 + b.size() &&
+               c.compare(c.size() - b.size(), b.size(), b) == 0) {
+        digits = c.substr(6, c.size() - 6 - b.size());
+    } else {
+        return 0;
+    }
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) {
+        return 0;
+    }
+    ms = std::atol(digits.c_str());
+    return 2;
+}
+
+void print(const std::string &text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+/// The result line of a command lost with the port.
+std::string lost_line(unsigned long number, const std::string &error) {
+    std::string line =
+        "{\"line\":" + std::to_string(number) + ",\"result\":\"lost\",\"code\":null,\"reply\":[],\"error\":";
+    protopkg::JsonWriter w(protopkg::string_sink, &line);
+    w.string(error.c_str(), error.size());
+    return line + "}";
 }
 
 bool blank(const std::string &line) {
@@ -84,6 +132,8 @@ int main(int argc, char **argv) {
     std::string connect;
     long timeout_ms = protopkg::kDefaultTimeoutMs;
     long baud = 115200;
+    long reconnect_ms = 0;
+    bool auto_baud = false;
     std::optional<protopkg::Device> device_id;
     std::vector<std::string> args(argv + 1, argv + argc);
     for (const std::string &a : args) {
@@ -97,7 +147,13 @@ int main(int argc, char **argv) {
         const std::size_t eq = a.find('=');
         const std::string name = a.substr(0, eq);
         std::string value;
-        if (name != "--connect" && name != "--timeout-ms" && name != "--device" && name != "--baud") {
+        if (a == "--auto-baud") {
+            auto_baud = true;
+            ++i;
+            continue;
+        }
+        if (name != "--connect" && name != "--timeout-ms" && name != "--device" && name != "--baud" &&
+            name != "--reconnect-ms") {
             return usage_error("unknown argument '" + a + "'");
         }
         if (eq == std::string::npos) {
@@ -119,6 +175,10 @@ int main(int argc, char **argv) {
         } else if (name == "--baud") {
             if (!int_option(value, 1, baud)) {
                 return usage_error(name + " needs an integer >= 1, not '" + value + "'");
+            }
+        } else if (name == "--reconnect-ms") {
+            if (!int_option(value, 0, reconnect_ms)) {
+                return usage_error(name + " needs an integer >= 0, not '" + value + "'");
             }
         } else {
             device_id = protopkg::device_from_name(value.c_str());
@@ -171,6 +231,27 @@ int main(int argc, char **argv) {
             }
             return n;
         }
+        bool flush() override {
+            return inner.flush();
+        }
+        std::uint32_t baud() const override {
+            return inner.baud();
+        }
+        bool set_baud(std::uint32_t rate) override {
+            return inner.set_baud(rate);
+        }
+        bool reopen() override {
+            return inner.reopen();
+        }
+        std::string address() const override {
+            return inner.address();
+        }
+        std::string reason() const override {
+            return inner.reason();
+        }
+        bool sleep_ms(std::int64_t ms) override {
+            return inner.sleep_ms(ms);
+        }
     };
     Recording recording(*transport, hist, hist_base);
     protopkg::Connection dev(recording, options);
@@ -182,6 +263,21 @@ int main(int argc, char **argv) {
         std::fputc('\n', stdout);
         std::fflush(stdout);
     });
+    protopkg::LinkOptions link;
+    link.log = [](const std::string &text) {
+        std::fprintf(stderr, "%s\n", text.c_str());
+        std::fflush(stderr);
+    };
+    link.reconnect_ms = reconnect_ms;
+    dev.link_options(link);
+    if (auto_baud && recording.baud() != 0) {
+        const protopkg::Call found = dev.find_baud();
+        if (!found.ok()) {
+            std::fprintf(stderr, "%s: %s\n", kProg,
+                         found.io_error ? found.io.c_str() : "no answer at any baud rate");
+            return 2;
+        }
+    }
     int status = 0;
     unsigned long number = 0;
     std::string line;
@@ -193,6 +289,33 @@ int main(int argc, char **argv) {
             continue;
         }
         if (blank(line)) {
+            continue;
+        }
+        long listen_ms = 0;
+        const int link_kind = link_line(line, listen_ms);
+        if (link_kind == 1) {
+            const protopkg::Call idle = dev.to_idle();
+            if (idle.io_error || idle.result.status == protopkg::Status::refused) {
+                std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number,
+                             idle.io_error ? idle.io.c_str() : idle.result.error.c_str());
+                return 2;
+            }
+            protopkg::Result r = idle.result;
+            r.tag = number;
+            protopkg::SessionEvent e;
+            e.kind = protopkg::SessionEvent::Kind::result;
+            e.result = &r;
+            print(protopkg::session_event_line(
+                e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); }));
+            continue;
+        }
+        if (link_kind == 2) {
+            protopkg::ErrorText err;
+            if (!dev.listen(listen_ms, &err)) {
+                std::fprintf(stderr, "%s: %s\n", kProg, err.c_str());
+                return 2;
+            }
+            print("{\"line\":" + std::to_string(number) + ",\"listened\":" + std::to_string(listen_ms) + "}");
             continue;
         }
         protopkg::Call call;
@@ -209,6 +332,10 @@ int main(int argc, char **argv) {
             continue;
         }
         if (call.io_error) {
+            if (call.lost && dev.connected()) { // reconnected: the command was lost with the port
+                print(lost_line(number, call.io.str()));
+                continue;
+            }
             std::fprintf(stderr, "%s: %s\n", kProg, call.io.c_str());
             return 2;
         }

@@ -13,7 +13,10 @@ extern "C" {
 typedef struct {
     int fd;
     bool socket;
-    char error[400]; /* the last failure */
+    char error[400];   /* the last failure */
+    char reason[128];  /* its cause alone ("Input/output error"; the link's "port lost (...)") */
+    char address[256]; /* the address opened (reopened after a loss) */
+    unsigned long baud;
 } codec_posix_t;
 
 /**
@@ -26,6 +29,10 @@ codec_status_t codec_posix_open(codec_posix_t *posix, const char *address, unsig
 /** The transport callbacks over an open posix transport. */
 void codec_posix_transport(codec_posix_t *posix, codec_transport_t *out);
 void codec_posix_close(codec_posix_t *posix);
+/** The port operations of getting through (codec_link_attach): input flush (tcflush, or a socket
+ * drained), the baud rate (termios; none over TCP), reopening the same address, the pause between
+ * attempts. */
+void codec_posix_port(codec_posix_t *posix, codec_port_t *out);
 
 #ifdef __cplusplus
 }

@@ -36,16 +36,17 @@ extern "C" {
 
 /** The one result every started command gets. */
 typedef enum {
-    CODEC_RESULT_ACK = 1,      /* acknowledged; the reply fields are valid */
-    CODEC_RESULT_NACK = 2,     /* the device answered with an error code */
-    CODEC_RESULT_TIMEOUT = 3,  /* no reply before the deadline */
-    CODEC_RESULT_INVALID = 4,  /* acknowledged, but a reply field does not decode or is missing (error) */
-    CODEC_RESULT_SENT = 5,     /* the command suppresses its ack: complete once sent */
-    CODEC_RESULT_REFUSED = 6,  /* not sent (device support, full queue; error) */
-    CODEC_RESULT_TRANSPORT = 7 /* blocking API only: the transport failed (error) */
+    CODEC_RESULT_ACK = 1,       /* acknowledged; the reply fields are valid */
+    CODEC_RESULT_NACK = 2,      /* the device answered with an error code */
+    CODEC_RESULT_TIMEOUT = 3,   /* no reply before the deadline */
+    CODEC_RESULT_INVALID = 4,   /* acknowledged, but a reply field does not decode or is missing (error) */
+    CODEC_RESULT_SENT = 5,      /* the command suppresses its ack: complete once sent */
+    CODEC_RESULT_REFUSED = 6,   /* not sent (device support, full queue; error) */
+    CODEC_RESULT_TRANSPORT = 7, /* blocking API only: the transport failed (error) */
+    CODEC_RESULT_LOST = 8       /* blocking API, reconnecting: the port was lost under the command (error) */
 } codec_result_kind_t;
 
-/** "ack", "nack", "timeout", "invalid", "sent", "refused" or "transport". */
+/** "ack", "nack", "timeout", "invalid", "sent", "refused", "transport" or "lost". */
 const char *codec_result_kind_name(codec_result_kind_t kind);
 
 /** A command's result. Pointers are valid during the callback that delivers it (until the next
@@ -190,6 +191,9 @@ void codec_session_close(codec_session_t *session, uint64_t now);
 bool codec_session_next_deadline(const codec_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t codec_session_pending(const codec_session_t *session);
+/** Drops the commands waiting for their replies without a result (the link to the device was lost:
+ * the caller reports them; their replies, should they come, are data). */
+void codec_session_forget(codec_session_t *session);
 
 /* ------------------------------------------------------------------ generated per package
  * (src/session_facts.c, templates/c/session_facts.c.j2): what the spec says about commands. */

@@ -284,6 +284,9 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     const std::optional<Device> &device() const {
         return opt_.device;
     }
+    const Options &options() const {
+        return opt_;
+    }
     std::size_t pending() const {
         return count_;
     }
@@ -421,6 +424,16 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         waiting_ = false;
     }
 
+    /// Drops the commands waiting for their replies without a result (the link to the device was
+    /// lost: the caller reports them; their replies, should they come, are data).
+    void forget() {
+        count_ = 0;
+    }
+    /// Pauses (true) or resumes the packet and field handlers (the link's own operations).
+    void mute_handlers(bool muted) {
+        muted_ = muted;
+    }
+
     /// Stream offset from which a caller that prints skipped bytes must keep its input.
     std::uint64_t retain_from() const {
         return parser_.retain_from();
@@ -501,6 +514,9 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         ev.offset = e.offset;
         ev.packet = e.packet;
         on_event(static_cast<const SessionEvent &>(ev));
+        if (muted_) {
+            return;
+        }
         for (std::size_t i = 0; i < packet_handlers_; ++i) {
             packet_[i](e.packet, e.offset);
         }
@@ -656,6 +672,7 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     std::size_t packet_handlers_ = 0;
     std::array<FieldHandler, kMaxHandlers> field_{};
     std::size_t field_handlers_ = 0;
+    bool muted_ = false;
 };
 
 } // namespace protopkg

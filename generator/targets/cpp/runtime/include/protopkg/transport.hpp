@@ -4,11 +4,16 @@
 // has TCP and serial ones (outside the freestanding core).
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
+#include <algorithm>
 
 #include "protopkg/session.hpp"
 
@@ -24,12 +29,54 @@ class Transport {
     /// when the connection failed or closed.
     virtual long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
                       ErrorText &error) = 0;
+
+    // Getting through (docs/conformance.md section 8): what a port can do beyond reading and
+    // writing. The defaults: none of it.
+    /// Discards the input received and not yet read; false when it cannot.
+    virtual bool flush() {
+        return false;
+    }
+    /// The baud rate the port is open at; 0: it has none (TCP).
+    virtual std::uint32_t baud() const {
+        return 0;
+    }
+    /// Changes the host side's baud rate; false when it cannot.
+    virtual bool set_baud(std::uint32_t) {
+        return false;
+    }
+    /// Closes and opens the same address again; false when it is not back (yet).
+    virtual bool reopen() {
+        return false;
+    }
+    /// The address, for the log ("/tmp/x/dev").
+    virtual std::string address() const {
+        return {};
+    }
+    /// Why the port failed last ("Input/output error"), for the log.
+    virtual std::string reason() const {
+        return {};
+    }
+    /// Sleeps ms milliseconds; false when it cannot (the connection then waits by reading).
+    virtual bool sleep_ms(std::int64_t) {
+        return false;
+    }
+};
+
+/// How a Connection gets through (Connection::link_options).
+struct LinkOptions {
+    /// Receives each step as one line ("link: baud: device answers at 921600"); may be empty.
+    std::function<void(const std::string &)> log;
+    std::int64_t reconnect_ms = 10000;     ///< reopen a lost port for up to this long (0: never)
+    std::int64_t reopen_interval_ms = 500; ///< between reopen attempts
+    std::int64_t quiet_ms = 50;            ///< the input drained after a flush, before a retry
 };
 
 /// What Connection::run returns: the command's result, or an I/O failure of the transport.
 struct Call {
     Result result;
     bool io_error = false;
+    bool lost = false; ///< the port was lost under the command and the connection reopened it (io: "link
+                       ///< lost: REASON")
     ErrorText io{};
     /// The command succeeded (ack or sent) and the transport did not fail.
     bool ok() const {
@@ -89,27 +136,184 @@ class Connection {
     }
 
     /// Sends the command and waits for its result (nack, timeout and refusal are results).
+    /// A transport failure ends the command with an I/O error "link lost: REASON" (it is not sent
+    /// again); with link options that allow it, the port is reopened first (reconnect()).
     template <class T> Call run(const T &command, const StartOptions &options = {}) {
         Call call;
         Started s = session_.start(command, now_ms(), options);
+        std::array<std::uint8_t, kMaxPacket> sent{};
+        const std::size_t sent_size = s.packet.size <= sent.size() ? s.packet.size : 0;
+        if (sent_size > 0) {
+            std::memcpy(sent.data(), s.packet.data, sent_size);
+        }
         if (s.packet.size > 0 && !transport_.write(s.packet.data, s.packet.size, call.io)) {
-            call.io_error = true;
             call.result = s.result;
-            return call;
+            return lost_call(call);
         }
         if (s.complete) {
             call.result = s.result;
             deliver_result(call.result);
+        } else {
+            bool done = false;
+            while (!done) {
+                const std::int64_t wait = session_.next_deadline().value_or(s.deadline) - now_ms();
+                if (!pump(wait > 0 ? wait : 0, call, done)) {
+                    return lost_call(call);
+                }
+            }
+        }
+        if (!internal_ && call.result.ok()) {
+            record(command, sent.data(), sent_size);
+        }
+        return call;
+    }
+
+    /// Gives the connection its getting-through options (the transport's port operations are
+    /// used as it has them). Without it, a connection does not reconnect.
+    void link_options(const LinkOptions &options) {
+        link_ = options;
+    }
+    /// False after a lost port that was not reopened.
+    bool connected() const {
+        return connected_;
+    }
+
+    /// Gets the device to idle (the protocol's idle command), also while it streams at full rate:
+    /// the packets that arrive meanwhile are counted and dropped; on no ACK the input is flushed
+    /// (transport and parser), drained for the quiet time and the command sent again,
+    /// kLinkIdleAttempts times in all, each with the command's timeout.
+    Call to_idle() {
+        Call call;
+        if (!kLinkIdle.present) {
+            log("link: idle: the protocol has no idle command");
+            return refused(call, "the protocol has no idle command");
+        }
+        bool have = false;
+        std::int64_t timeout = session_.options().timeout_ms;
+        for (unsigned attempt = 1; attempt <= kLinkIdleAttempts; ++attempt) {
+            dropped_ = 0;
+            with_bare(kLinkIdle, have, [&](const auto &idle) {
+                timeout = session_.options().timeout_ms + allowance_ms(idle);
+                call = run_internal(idle);
+            });
+            if (!have) {
+                return refused(call, "the idle command does not decode");
+            }
+            if (!call.io_error && call.result.status == Status::ack) {
+                log("link: idle: ACK on attempt " + std::to_string(attempt) + " of " +
+                    std::to_string(kLinkIdleAttempts) + " (" + std::to_string(dropped_) + " bytes dropped)");
+                if (!internal_) {
+                    idled_ = true;
+                }
+                return call;
+            }
+            if (call.io_error || call.result.status != Status::timeout) {
+                return call;
+            }
+            if (attempt == kLinkIdleAttempts) {
+                break;
+            }
+            std::string line = "link: idle: no ACK in " + std::to_string(timeout) + " ms";
+            if (dropped_ > 0) {
+                line += " while streaming (" + std::to_string(dropped_) + " bytes dropped)";
+            }
+            log(line + ", flushing, attempt " + std::to_string(attempt + 1) + " of " +
+                std::to_string(kLinkIdleAttempts));
+            flush_input();
+            if (!drain(link_.quiet_ms)) {
+                call.io_error = true;
+                set_text(call.io, "link lost while getting to idle");
+                return call;
+            }
+            flush_input();
+        }
+        log("link: idle: no ACK after " + std::to_string(kLinkIdleAttempts) + " attempts, giving up");
+        return call;
+    }
+
+    /// Pings the device; on a port with a baud rate and no answer, tries the device's supported
+    /// rates (the configured one, the default, then from the highest down), each after the settle
+    /// time and a flush, and stays at the first that answers.
+    Call find_baud() {
+        Call call;
+        if (!kLinkPing.present) {
+            return refused(call, "the protocol has no ping command");
+        }
+        bool have = false;
+        with_bare(kLinkPing, have, [&](const auto &ping) { call = run_internal(ping); });
+        if (!have) {
+            return refused(call, "the ping command does not decode");
+        }
+        if (call.io_error || call.result.status != Status::timeout || transport_.baud() == 0) {
             return call;
         }
-        bool done = false;
-        while (!done) {
-            const std::int64_t wait = session_.next_deadline().value_or(s.deadline) - now_ms();
-            if (!pump(wait > 0 ? wait : 0, call, done)) {
+        const std::vector<std::uint32_t> rates = candidate_rates();
+        std::size_t i = 0;
+        for (;;) {
+            const std::uint32_t current = transport_.baud();
+            const std::size_t next = i + 1;
+            if (next >= rates.size()) {
+                log("link: baud: no answer at any rate");
+                call.io_error = false;
+                call.result.status = Status::timeout;
+                return call;
+            }
+            log("link: baud: no answer at " + std::to_string(current) + ", trying " +
+                std::to_string(rates[next]));
+            i = next;
+            if (!transport_.set_baud(rates[i])) {
+                continue;
+            }
+            flush_input();
+            with_bare(kLinkPing, have, [&](const auto &ping) { call = run_internal(ping); });
+            if (call.io_error) {
+                return call;
+            }
+            if (call.result.status == Status::ack) {
+                log("link: baud: device answers at " + std::to_string(rates[i]));
                 return call;
             }
         }
-        return call;
+    }
+
+    /// Reopens a lost port every reopen_interval_ms until reconnect_ms have passed, then gets to
+    /// idle and re-sends the recorded configuration commands in order. run() and listen() call it
+    /// when the transport fails. True when reconnected.
+    bool reconnect() {
+        if (link_.reconnect_ms <= 0) {
+            connected_ = false;
+            return false;
+        }
+        const std::string reason = transport_.reason();
+        const std::string address = transport_.address();
+        log("link: port lost (" + (reason.empty() ? std::string("unknown error") : reason) + "), reopening " +
+            (address.empty() ? std::string("the port") : address) + " every " +
+            std::to_string(link_.reopen_interval_ms) + " ms");
+        session_.forget();
+        const bool was = internal_;
+        internal_ = true;
+        session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
+        const std::int64_t start = now_ms();
+        while (!transport_.reopen()) {
+            if (now_ms() - start >= link_.reconnect_ms) {
+                internal_ = was;
+                connected_ = false;
+                log("link: gave up reopening " + (address.empty() ? std::string("the port") : address) +
+                    " after " + std::to_string(link_.reconnect_ms) + " ms");
+                return false;
+            }
+            sleep(link_.reopen_interval_ms);
+        }
+        connected_ = true;
+        std::size_t applied = 0;
+        const Call idle = to_idle();
+        if (idle.ok()) {
+            applied = reapply();
+        }
+        internal_ = was;
+        log("link: reconnected after " + seconds(now_ms() - start) + " s, re-applied " +
+            std::to_string(applied) + (applied == 1 ? " setting" : " settings"));
+        return true;
     }
 
     /// Receives for duration_ms, routing every packet to the handlers; false on an I/O failure.
@@ -124,6 +328,10 @@ class Connection {
             }
             const std::int64_t next = session_.next_deadline().value_or(end) - now_ms();
             if (!pump(next > 0 && next < left ? next : left, ignored, done)) {
+                if (!internal_ && reconnect()) {
+                    ignored = Call{};
+                    continue;
+                }
                 if (error != nullptr) {
                     *error = ignored.io;
                 }
@@ -137,7 +345,228 @@ class Connection {
         session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
     }
 
+    /// The settings recorded for a reconnect (the latest per key; one more forgets the oldest).
+    static constexpr std::size_t kMaxSettings = 64;
+    std::size_t settings() const {
+        return setting_count_;
+    }
+
   private:
+    struct Setting {
+        std::uint8_t set = 0;
+        std::uint8_t descriptor = 0;
+        std::size_t key_size = 0; ///< key: the data bytes after the function selector its read sends
+        std::size_t size = 0;
+        std::array<std::uint8_t, kMaxPacket> data{}; ///< the field data
+    };
+
+    void log(const std::string &line) {
+        if (link_.log) {
+            link_.log(line);
+        }
+    }
+    static void set_text(ErrorText &out, const std::string &text) {
+        std::snprintf(out.text.data(), out.text.size(), "%s", text.c_str());
+    }
+    /// Milliseconds as seconds with one decimal ("1.4"), rounded to the nearest tenth.
+    static std::string seconds(std::int64_t ms) {
+        const std::int64_t tenths = (ms + 50) / 100;
+        return std::to_string(tenths / 10) + "." + std::to_string(tenths % 10);
+    }
+    Call &refused(Call &call, const char *why) {
+        call.result.status = Status::refused;
+        call.result.has_error = true;
+        set_text(call.result.error, why);
+        return call;
+    }
+    Call &lost_call(Call &call) {
+        call.io_error = true;
+        const std::string reason = transport_.reason();
+        const std::string io = call.io.str();
+        if (!internal_ && link_.reconnect_ms > 0) {
+            call.lost = true;
+            reconnect();
+            set_text(call.io, "link lost: " + (reason.empty() ? io : reason));
+        } else if (!internal_) {
+            connected_ = false;
+        }
+        return call;
+    }
+
+    /// The command (set, descriptor) without parameters, as its layout value: f(const T&).
+    /// Runs f(const T&) with a decoded command value (the other layouts are not commands).
+    template <class F> struct CommandPick {
+        F &f;
+        bool &have;
+        template <class T> void field(const T &v) {
+            if constexpr (CommandTraits<T>::kCommand) {
+                have = true;
+                f(v);
+            }
+        }
+        void raw(const DecodeError &) {}
+    };
+    template <class F> void with_bare(const LinkCommand &c, bool &have, F &&f) {
+        CommandPick<F> pick{f, have};
+        have = false;
+        decode_field(c.set, c.descriptor, nullptr, 0, session_.options().device, pick);
+    }
+
+    /// A command of the connection itself: events counted and dropped, handlers paused, not recorded.
+    template <class T> Call run_internal(const T &command) {
+        const bool was = internal_;
+        internal_ = true;
+        session_.mute_handlers(true);
+        Call call = run(command);
+        session_.mute_handlers(was);
+        internal_ = was;
+        return call;
+    }
+    bool drain(std::int64_t ms) {
+        const bool was = internal_;
+        internal_ = true;
+        session_.mute_handlers(true);
+        const bool ok = listen(ms);
+        session_.mute_handlers(was);
+        internal_ = was;
+        return ok;
+    }
+    void sleep(std::int64_t ms) {
+        if (ms > 0 && !transport_.sleep_ms(ms)) {
+            drain(ms);
+        }
+    }
+    /// Flushes the input: the transport's, then the parser's buffered bytes (skipped).
+    void flush_input() {
+        transport_.flush();
+        const bool was = internal_;
+        internal_ = true;
+        session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
+        internal_ = was;
+    }
+
+    /// The rates to try, most likely first: the configured one, the default, then the supported
+    /// rates from the highest down (with no device selected, every device's), each once.
+    std::vector<std::uint32_t> candidate_rates() const {
+        std::vector<std::uint32_t> out;
+        std::vector<std::uint32_t> all;
+        auto add = [](std::vector<std::uint32_t> &v, std::uint32_t r) {
+            if (r != 0 && std::find(v.begin(), v.end(), r) == v.end()) {
+                v.push_back(r);
+            }
+        };
+        add(out, transport_.baud());
+        const std::optional<Device> device = session_.options().device;
+        for (const Device d : kDevices) {
+            if (!device) {
+                add(out, device_default_baud(d));
+            }
+        }
+        for (const Device d : kDevices) {
+            if (device && *device != d) {
+                continue;
+            }
+            if (device) {
+                add(out, device_default_baud(d));
+            }
+            for (const std::uint32_t r : device_baud_rates(d)) {
+                add(all, r);
+            }
+        }
+        std::sort(all.begin(), all.end(), [](std::uint32_t a, std::uint32_t b) { return a > b; });
+        for (const std::uint32_t r : all) {
+            add(out, r);
+        }
+        return out;
+    }
+
+    /// How many data bytes after the function selector a setting's read sends: the shortest prefix
+    /// of the written data that decodes as that command's read (function 2); without one, all.
+    std::size_t key_size(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data,
+                         std::size_t size) {
+        std::array<std::uint8_t, kMaxPacket> read{};
+        std::memcpy(read.data(), data, size);
+        read[0] = 2;
+        for (std::size_t k = 1; k <= size; ++k) {
+            bool have = false;
+            auto ignore = [](const auto &) {};
+            CommandPick<decltype(ignore)> pick{ignore, have};
+            decode_field(set, descriptor, read.data(), k, session_.options().device, pick);
+            if (have) {
+                return k - 1;
+            }
+        }
+        return size - 1;
+    }
+
+    /// Records a setting the application wrote (function write or write_no_ack of a command with a
+    /// function selector, acknowledged or sent): the latest per key replaces the earlier one and
+    /// moves to the end; one more than kMaxSettings keys forgets the oldest. Also notes whether the
+    /// last idle or resume command was an idle.
+    template <class T> void record(const T &command, const std::uint8_t *packet, std::size_t size) {
+        const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
+        const std::optional<std::int64_t> fn = CommandTraits<T>::function(command);
+        if (kLinkIdle.present && row.set == kLinkIdle.set && row.descriptor == kLinkIdle.descriptor) {
+            idled_ = true;
+        }
+        if (kLinkResume.present && row.set == kLinkResume.set && row.descriptor == kLinkResume.descriptor) {
+            idled_ = false;
+        }
+        if (!fn || (*fn != 1 && *fn != 6)) {
+            return;
+        }
+        const PacketView view{packet, size};
+        FieldIterator it(view);
+        FieldEntry e;
+        if (!it.next(e) || e.kind != FieldEntry::Kind::field || e.size == 0) {
+            return;
+        }
+        const std::size_t key = key_size(row.set, row.descriptor, e.data, e.size);
+        std::size_t i = 0;
+        while (i < setting_count_ &&
+               !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
+                 settings_[i].key_size == key &&
+                 std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
+            ++i;
+        }
+        if (i == setting_count_ && setting_count_ == kMaxSettings) {
+            i = 0;
+        }
+        if (i < setting_count_) {
+            for (std::size_t j = i; j + 1 < setting_count_; ++j) {
+                settings_[j] = settings_[j + 1];
+            }
+            --setting_count_;
+        }
+        Setting &slot = settings_[setting_count_++];
+        slot.set = row.set;
+        slot.descriptor = row.descriptor;
+        slot.key_size = key;
+        slot.size = e.size;
+        std::memcpy(slot.data.data(), e.data, e.size);
+    }
+
+    /// Re-sends the recorded configuration in order; how many were acknowledged (or sent).
+    std::size_t reapply() {
+        std::size_t done = 0;
+        for (std::size_t i = 0; i < setting_count_; ++i) {
+            const Setting s = settings_[i];
+            bool have = false;
+            auto resend = [&](const auto &v) {
+                if (run_internal(v).ok()) {
+                    ++done;
+                }
+            };
+            CommandPick<decltype(resend)> pick{resend, have};
+            decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, pick);
+        }
+        if (kLinkResume.present && !idled_) {
+            bool have = false;
+            with_bare(kLinkResume, have, [&](const auto &resume) { run_internal(resume); });
+        }
+        return done;
+    }
+
     bool pump(std::int64_t wait_ms, Call &call, bool &done) {
         const long n = transport_.read(buf_.data(), buf_.size(), wait_ms, call.io);
         if (n < 0) {
@@ -154,6 +583,14 @@ class Connection {
         return true;
     }
     void deliver(const SessionEvent &e) {
+        if (internal_) { // the connection's own operation: counted and dropped
+            if (e.kind == SessionEvent::Kind::packet) {
+                dropped_ += e.packet.size;
+            } else if (e.kind == SessionEvent::Kind::skip) {
+                dropped_ += e.count;
+            }
+            return;
+        }
         if (on_event_) {
             on_event_(e);
         }
@@ -170,6 +607,13 @@ class Connection {
     Clock clock_;
     std::function<void(const SessionEvent &)> on_event_;
     std::array<std::uint8_t, 4096> buf_{};
+    LinkOptions link_{{}, 0, 500, 50};
+    bool internal_ = false;
+    bool connected_ = true;
+    bool idled_ = false; // the application's last idle or resume command was an idle
+    std::uint64_t dropped_ = 0;
+    std::array<Setting, kMaxSettings> settings_{};
+    std::size_t setting_count_ = 0;
 };
 
 } // namespace protopkg
