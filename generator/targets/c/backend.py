@@ -1063,11 +1063,22 @@ def _device_context(proto: dict) -> dict:
         return by_name.get(name, [])
 
     formats = [
-        {"set": e.get("set", -1), "param": e.get("set_param"), "list": e["list"], "descriptor": e.get("descriptor"),
-         "decimation": e.get("decimation"), "at": at}
-        for e in sim.get("formats", []) for at in cmd(e["command"])
+        {
+            "set": e.get("set", -1),
+            "param": e.get("set_param"),
+            "list": e["list"],
+            "descriptor": e.get("descriptor"),
+            "decimation": e.get("decimation"),
+            "at": at,
+        }
+        for e in sim.get("formats", [])
+        for at in cmd(e["command"])
     ]
-    rates = [{"set": e.get("set", -1), "param": e.get("set_param"), "at": at} for e in sim.get("rates", []) for at in cmd(e["command"])]
+    rates = [
+        {"set": e.get("set", -1), "param": e.get("set_param"), "at": at}
+        for e in sim.get("rates", [])
+        for at in cmd(e["command"])
+    ]
     enables = []
     for e in sim.get("enables", []):
         for at in cmd(e["command"]):
@@ -1086,11 +1097,18 @@ def _device_context(proto: dict) -> dict:
     base_rates = {e["device"]: [(r["set"], r["hz"]) for r in e["rates"]] for e in sim.get("base_rates", [])}
     unaddressed = {e["device"]: list(e["sets"]) for e in sim.get("unaddressed", [])}
     lists = [
-        {"at": (e["set"], e["command_descriptor"]), "reply": e["reply_descriptor"], "param": e["param"], "u16": e["item"] == "u16"}
+        {
+            "at": (e["set"], e["command_descriptor"]),
+            "reply": e["reply_descriptor"],
+            "param": e["param"],
+            "u16": e["item"] == "u16",
+        }
         for e in (sim.get("descriptor_lists") or {}).get("lists", [])
     ]
     ident = sim.get("identity") or {"reports": [], "devices": []}
-    reports = [{"at": (r["set"], r["descriptor"]), "path": r["param"].split("."), "item": r["item"]} for r in ident["reports"]]
+    reports = [
+        {"at": (r["set"], r["descriptor"]), "path": r["param"].split("."), "item": r["item"]} for r in ident["reports"]
+    ]
     models = {d["device"]: d["values"].get("model_name", "") for d in ident["devices"]}
     fs = proto.get("function_selector") or {}
     functions = []
@@ -1113,7 +1131,9 @@ def _device_context(proto: dict) -> dict:
         "dev_reports": reports,
         "dev_models": models,
         "dev_functions": functions,
-        "dev_bandwidth_sources": ", ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x),
+        "dev_bandwidth_sources": ", ".join(
+            f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x
+        ),
         "dev_shared_set": (proto.get("shared_data") or {}).get("set"),
         "dev_set_names": [(s["id"], s["name"]) for s in proto["sets"]],
         "dev_devices": proto["devices"],
@@ -1124,7 +1144,8 @@ def _device_context(proto: dict) -> dict:
                 for s in proto["sets"]
                 if s["id"] == r["set"]
                 for f in s["fields"]
-                if f["role"] == "command" and any(x["id"] == r["descriptor"] for v in f["variants"] for x in v["responses"])
+                if f["role"] == "command"
+                and any(x["id"] == r["descriptor"] for v in f["variants"] for x in v["responses"])
             ),
             None,
         ),
