@@ -2137,7 +2137,11 @@ static val_t *normalized(conn_t *c, const dev_setting_t *s, const val_t *entry, 
     if (mipc_json_command_line(buf_text(&line), line.n, &command, msg, sizeof msg) != MIPC_OK ||
         mipc_json_encode_line(buf_text(&line), line.n, packet, sizeof packet, &len, msg, sizeof msg) !=
             MIPC_OK) {
-        if (strncmp(msg, s->name, strlen(s->name)) == 0) {
+        /* the reader names the parameter by its place in the line: fields[0].values.NAME */
+        const char *at = strstr(msg, "fields[0].values.");
+        if (at != NULL) {
+            snprintf(err, cap, "%s.%s", s->name, at + strlen("fields[0].values."));
+        } else if (strncmp(msg, s->name, strlen(s->name)) == 0) {
             snprintf(err, cap, "%s", msg);
         } else {
             snprintf(err, cap, "%s: %s", s->name, msg);

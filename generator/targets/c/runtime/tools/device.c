@@ -155,9 +155,9 @@ struct val {
     bool b;
     size_t n;
     size_t cap;
-    val_t **items;   /* V_LIST: items; V_MAP: values */
-    char **keys;     /* V_MAP: keys */
-    int *key_lines;  /* V_MAP: the line of each key */
+    val_t **items;  /* V_LIST: items; V_MAP: values */
+    char **keys;    /* V_MAP: keys */
+    int *key_lines; /* V_MAP: the line of each key */
 };
 
 static val_t *val_new(vkind_t kind, int line) {
@@ -335,7 +335,8 @@ typedef struct {
 } jp_t;
 
 static void jp_ws(jp_t *p) {
-    while (p->i < p->n && (p->s[p->i] == ' ' || p->s[p->i] == '\t' || p->s[p->i] == '\r' || p->s[p->i] == '\n')) {
+    while (p->i < p->n &&
+           (p->s[p->i] == ' ' || p->s[p->i] == '\t' || p->s[p->i] == '\r' || p->s[p->i] == '\n')) {
         p->i++;
     }
 }
@@ -521,9 +522,10 @@ static val_t *json_parse(const char *s, size_t n) {
 /* ------------------------------------------------------------------------------ YAML out */
 /* What PyYAML's resolver would read back as something else than a string. */
 static bool yaml_resolves(const char *s) {
-    static const char *const words[] = {"null", "Null", "NULL", "~", "true", "True", "TRUE", "false", "False",
-                                        "FALSE", "yes", "Yes", "YES", "no", "No", "NO", "on", "On", "ON",
-                                        "off", "Off", "OFF", "y", "Y", "n", "N", "=", "<<", NULL};
+    static const char *const words[] = {"null",  "Null",  "NULL", "~",   "true", "True", "TRUE", "false",
+                                        "False", "FALSE", "yes",  "Yes", "YES",  "no",   "No",   "NO",
+                                        "on",    "On",    "ON",   "off", "Off",  "OFF",  "y",    "Y",
+                                        "n",     "N",     "=",    "<<",  NULL};
     size_t i;
     char *end;
     for (i = 0; words[i]; i++) {
@@ -541,8 +543,8 @@ static bool yaml_resolves(const char *s) {
     }
     if (s[0] == '.' || (s[0] && s[1] == '.')) {
         const char *t = s[0] == '.' ? s : s + 1;
-        if (strcmp(t, ".inf") == 0 || strcmp(t, ".Inf") == 0 || strcmp(t, ".INF") == 0 || strcmp(t, ".nan") == 0 ||
-            strcmp(t, ".NaN") == 0 || strcmp(t, ".NAN") == 0) {
+        if (strcmp(t, ".inf") == 0 || strcmp(t, ".Inf") == 0 || strcmp(t, ".INF") == 0 ||
+            strcmp(t, ".nan") == 0 || strcmp(t, ".NaN") == 0 || strcmp(t, ".NAN") == 0) {
             return true;
         }
     }
@@ -794,13 +796,16 @@ static bool yp_split(yp_t *p, const char *text, size_t n) {
         if (indent == 0 && end - k >= 3 && strncmp(text + k, "---", 3) == 0 &&
             (end - k == 3 || text[k + 3] == ' ')) {
             if (started || end - k > 3) {
-                yp_fail(p, number, "several documents, or content after ---, are not in the YAML subset the C tool reads");
+                yp_fail(
+                    p, number,
+                    "several documents, or content after ---, are not in the YAML subset the C tool reads");
                 return false;
             }
             started = true;
             continue;
         }
-        if (indent == 0 && end - k >= 3 && strncmp(text + k, "...", 3) == 0 && (end - k == 3 || text[k + 3] == ' ')) {
+        if (indent == 0 && end - k >= 3 && strncmp(text + k, "...", 3) == 0 &&
+            (end - k == 3 || text[k + 3] == ' ')) {
             yp_fail(p, number, "a document end marker (...) is not in the YAML subset the C tool reads");
             return false;
         }
@@ -831,7 +836,8 @@ static bool all_of(const char *s, size_t n, const char *set) {
 static val_t *yp_resolve(yp_t *p, const char *s, size_t n, int line) {
     static const char *const nulls[] = {"~", "null", "Null", "NULL", NULL};
     static const char *const trues[] = {"yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON", NULL};
-    static const char *const falses[] = {"no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF", NULL};
+    static const char *const falses[] = {"no",    "No",  "NO",  "false", "False",
+                                         "FALSE", "off", "Off", "OFF",   NULL};
     char digits[80];
     size_t i;
     size_t k = 0;
@@ -901,12 +907,14 @@ static val_t *yp_resolve(yp_t *p, const char *s, size_t n, int line) {
                 u = u * (unsigned)base + dv;
             }
             if (overflow) {
-                yp_fail(p, line, "the integer %.*s is out of any parameter's range", (int)(n > 60 ? 60 : n), s);
+                yp_fail(p, line, "the integer %.*s is out of any parameter's range", (int)(n > 60 ? 60 : n),
+                        s);
                 return NULL;
             }
             if (neg && u != 0) {
                 if (u > 9223372036854775808ULL) {
-                    yp_fail(p, line, "the integer %.*s is out of any parameter's range", (int)(n > 60 ? 60 : n), s);
+                    yp_fail(p, line, "the integer %.*s is out of any parameter's range",
+                            (int)(n > 60 ? 60 : n), s);
                     return NULL;
                 }
                 snprintf(digits, sizeof digits, "-%llu", u);
@@ -928,8 +936,8 @@ static val_t *yp_resolve(yp_t *p, const char *s, size_t n, int line) {
                     j++;
                 }
                 ok = j == m;
-                if (!ok && (d[j] == 'e' || d[j] == 'E') && j + 2 < m && (d[j + 1] == '-' || d[j + 1] == '+') &&
-                    all_of(d + j + 2, m - j - 2, "0123456789")) {
+                if (!ok && (d[j] == 'e' || d[j] == 'E') && j + 2 < m &&
+                    (d[j + 1] == '-' || d[j + 1] == '+') && all_of(d + j + 2, m - j - 2, "0123456789")) {
                     ok = true;
                 }
             }
@@ -969,7 +977,9 @@ static val_t *yp_quoted(yp_t *p, const char *s, size_t n, size_t *i, int line) {
     for (;;) {
         char c;
         if (k >= n) {
-            yp_fail(p, line, "a quoted scalar that does not end on its line (not in the YAML subset the C tool reads)");
+            yp_fail(
+                p, line,
+                "a quoted scalar that does not end on its line (not in the YAML subset the C tool reads)");
             free(b.s);
             return NULL;
         }
@@ -1034,9 +1044,16 @@ static val_t *yp_quoted(yp_t *p, const char *s, size_t n, size_t *i, int line) {
 }
 
 static bool refused_start(yp_t *p, char c, int line) {
-    static const char *const what[] = {"&anchors", "*aliases", "!tags", "|block scalars", ">block scalars",
-                                       "%directives", "@reserved indicators", "`reserved indicators",
-                                       "?complex keys", NULL};
+    static const char *const what[] = {"&anchors",
+                                       "*aliases",
+                                       "!tags",
+                                       "|block scalars",
+                                       ">block scalars",
+                                       "%directives",
+                                       "@reserved indicators",
+                                       "`reserved indicators",
+                                       "?complex keys",
+                                       NULL};
     size_t i;
     for (i = 0; what[i]; i++) {
         if (what[i][0] == c) {
@@ -1062,7 +1079,9 @@ static val_t *yp_flow(yp_t *p, const char *s, size_t n, size_t *i, int line, int
     }
     if (*i >= n) {
         if (flow) {
-            yp_fail(p, line, "a flow collection that does not end on its line (not in the YAML subset the C tool reads)");
+            yp_fail(
+                p, line,
+                "a flow collection that does not end on its line (not in the YAML subset the C tool reads)");
             return NULL;
         }
         return val_new(V_NULL, line);
@@ -1166,7 +1185,8 @@ static val_t *yp_flow(yp_t *p, const char *s, size_t n, size_t *i, int line, int
             }
             if (*i >= n) {
                 yp_fail(p, line,
-                        "a flow collection that does not end on its line (not in the YAML subset the C tool reads)");
+                        "a flow collection that does not end on its line (not in the YAML subset the C tool "
+                        "reads)");
             } else {
                 yp_fail(p, line, "expected ',' or '%c' in a flow collection, found '%c'", close, s[*i]);
             }
@@ -1196,7 +1216,8 @@ static val_t *yp_flow(yp_t *p, const char *s, size_t n, size_t *i, int line, int
             size_t k;
             for (k = start; k < n; k++) {
                 if (s[k] == ':' && (k + 1 == n || s[k + 1] == ' ')) {
-                    yp_fail(p, line, "a mapping is not allowed here (mapping values are not allowed in this context)");
+                    yp_fail(p, line,
+                            "a mapping is not allowed here (mapping values are not allowed in this context)");
                     return NULL;
                 }
             }
@@ -1416,7 +1437,8 @@ static val_t *yp_block(yp_t *p, int indent, int depth) {
         p->at++;
         v = yp_flow(p, l->text, n, &i, l->number, depth, false);
         if (v != NULL && p->at < p->count && p->lines[p->at].indent >= indent) {
-            yp_fail(p, p->lines[p->at].number, "a multi-line scalar or flow collection is not in the YAML subset the C tool reads");
+            yp_fail(p, p->lines[p->at].number,
+                    "a multi-line scalar or flow collection is not in the YAML subset the C tool reads");
             val_free(v);
             return NULL;
         }
@@ -1541,7 +1563,7 @@ typedef struct {
     codec_link_t link;
     codec_device_t device;
     const dev_model_t *model;
-    val_t *identity; /* item -> value */
+    val_t *identity;    /* item -> value */
     unsigned long baud; /* the serial port's rate (0: TCP) */
     const char *address;
     bool open;
@@ -1601,8 +1623,8 @@ static void on_event(void *ctx, const codec_session_event_t *ev) {
     if (c->stream_limit && c->stream_count > c->stream_limit) {
         return;
     }
-    n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset, c->device, g_line,
-                               sizeof g_line);
+    n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset, c->device,
+                               g_line, sizeof g_line);
     if (n >= sizeof g_line) {
         n = sizeof g_line - 1;
     }
@@ -1619,7 +1641,7 @@ typedef enum { R_OK = 0, R_FAILED = 1, R_VALUE = 2, R_LOST = 3 } run_t;
 
 typedef struct {
     codec_result_kind_t kind;
-    val_t *line;  /* the result line, parsed */
+    val_t *line; /* the result line, parsed */
     char describe[CODEC_SESSION_ERROR_MAX + 200];
     char json[8192]; /* the result line */
 } result_t;
@@ -1634,7 +1656,8 @@ static void describe_result(result_t *r, const char *name, const codec_result_t 
     if (res->kind == CODEC_RESULT_NACK) {
         const char *code = enum_member(DEV_ACK_ENUM, (int64_t)res->code);
         if (code) {
-            snprintf(r->describe, sizeof r->describe, "%s: NACK, code %u (%s)", name, (unsigned)res->code, code);
+            snprintf(r->describe, sizeof r->describe, "%s: NACK, code %u (%s)", name, (unsigned)res->code,
+                     code);
         } else {
             snprintf(r->describe, sizeof r->describe, "%s: NACK, code %u", name, (unsigned)res->code);
         }
@@ -1664,7 +1687,8 @@ static run_t run_values(conn_t *c, uint8_t set, uint8_t descriptor, const char *
     memset(r, 0, sizeof *r);
     f = codec_find_field(set, descriptor, &why);
     if (f == NULL) {
-        snprintf(g_value_error, sizeof g_value_error, "0x%02X,0x%02X is not a field of the spec", set, descriptor);
+        snprintf(g_value_error, sizeof g_value_error, "0x%02X,0x%02X is not a field of the spec", set,
+                 descriptor);
         return R_VALUE;
     }
     buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set, descriptor);
@@ -1690,7 +1714,8 @@ static run_t run_values(conn_t *c, uint8_t set, uint8_t descriptor, const char *
     r->line = json_parse(r->json, n);
     describe_result(r, f->name, &c->link.result);
     if (r->kind == CODEC_RESULT_TRANSPORT || r->kind == CODEC_RESULT_LOST) {
-        snprintf(r->describe, sizeof r->describe, "%s", c->posix.error[0] ? c->posix.error : c->link.result.error);
+        snprintf(r->describe, sizeof r->describe, "%s",
+                 c->posix.error[0] ? c->posix.error : c->link.result.error);
         return R_LOST;
     }
     return r->kind == CODEC_RESULT_ACK || r->kind == CODEC_RESULT_SENT ? R_OK : R_FAILED;
@@ -1980,8 +2005,8 @@ static bool strcasecmp_ascii_eq(const char *a, const char *b) {
 
 /* The JSON values of the command that writes an entry (function write) or reads it (read: its key
  * parameters only). false with the reason in err. */
-static bool command_values(const dev_setting_t *s, const val_t *entry, int64_t function, buf_t *out, char *err,
-                           size_t cap) {
+static bool command_values(const dev_setting_t *s, const val_t *entry, int64_t function, buf_t *out,
+                           char *err, size_t cap) {
     size_t i;
     bool write = function == function_value("write");
     buf_reset(out);
@@ -2002,7 +2027,8 @@ static bool command_values(const dev_setting_t *s, const val_t *entry, int64_t f
             size_t k;
             bool found = false;
             for (k = 0; k < e->count; k++) {
-                if (strcmp(e->members[k].name, v->text) == 0 || strcasecmp_ascii_eq(e->members[k].name, v->text)) {
+                if (strcmp(e->members[k].name, v->text) == 0 ||
+                    strcasecmp_ascii_eq(e->members[k].name, v->text)) {
                     buf_fmt(out, "%lld", (long long)e->members[k].value);
                     found = true;
                     break;
@@ -2013,8 +2039,8 @@ static bool command_values(const dev_setting_t *s, const val_t *entry, int64_t f
                 for (k = 0; k < e->count; k++) {
                     buf_fmt(&names, "%s%s", k ? ", " : "", e->members[k].name);
                 }
-                snprintf(err, cap, "%s.%s: '%s' is not a member of %s (one of: %s)", s->name, attr, v->text, e->name,
-                         buf_text(&names));
+                snprintf(err, cap, "%s.%s: '%s' is not a member of %s (one of: %s)", s->name, attr, v->text,
+                         e->name, buf_text(&names));
                 free(names.s);
                 return false;
             }
@@ -2041,8 +2067,8 @@ static bool command_values(const dev_setting_t *s, const val_t *entry, int64_t f
 
 /* Reads one setting for one key (a map of its key parameters): R_OK with *entry, R_FAILED with
  * the result's description in msg (a NACK: *nack), R_VALUE, R_LOST. */
-static run_t read_entry(conn_t *c, const dev_setting_t *s, const val_t *key, val_t **entry, bool *nack, char *msg,
-                        size_t cap) {
+static run_t read_entry(conn_t *c, const dev_setting_t *s, const val_t *key, val_t **entry, bool *nack,
+                        char *msg, size_t cap) {
     buf_t values = {0};
     result_t r;
     run_t run;
@@ -2098,7 +2124,8 @@ static val_t *normalized(conn_t *c, const dev_setting_t *s, const val_t *entry, 
         return NULL;
     }
     f = codec_find_field(s->set, s->descriptor, &why);
-    buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", s->set, s->descriptor);
+    buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", s->set,
+            s->descriptor);
     json_string(&line, s->name, strlen(s->name));
     if (f != NULL && f->layout_count > 1) {
         const char *dev = s->device ? s->device : codec_device_id(c->device);
@@ -2108,7 +2135,8 @@ static val_t *normalized(conn_t *c, const dev_setting_t *s, const val_t *entry, 
     buf_fmt(&line, ",\"values\":%s}]}", buf_text(&values));
     free(values.s);
     if (codec_json_command_line(buf_text(&line), line.n, &command, msg, sizeof msg) != CODEC_OK ||
-        codec_json_encode_line(buf_text(&line), line.n, packet, sizeof packet, &len, msg, sizeof msg) != CODEC_OK) {
+        codec_json_encode_line(buf_text(&line), line.n, packet, sizeof packet, &len, msg, sizeof msg) !=
+            CODEC_OK) {
         /* the reader names the parameter by its place in the line: fields[0].values.NAME */
         const char *at = strstr(msg, "fields[0].values.");
         if (at != NULL) {
@@ -2369,7 +2397,8 @@ static bool budget_lines(const conn_t *c, const formats_t *formats, const double
         free(fields.s);
     }
     if (baud) {
-        buf_fmt(lines, "total %.0f bit/s of %lu baud%s (%.0f%%)\n", *total, baud, where, 100.0 * *total / (double)baud);
+        buf_fmt(lines, "total %.0f bit/s of %lu baud%s (%.0f%%)\n", *total, baud, where,
+                100.0 * *total / (double)baud);
     } else {
         buf_fmt(lines, "total %.0f bit/s (no baud rate known: --baud gives one)\n", *total);
     }
@@ -2403,10 +2432,11 @@ static int check_budget(const conn_t *c, const formats_t *formats, const double 
     }
     if (baud && total > (double)baud) {
         char text[600];
-        snprintf(text, sizeof text,
-                 "link budget exceeded: the message formats need %.0f bit/s, the port carries %lu baud%s (the "
-                 "manuals' UART bandwidth calculation, %s)",
-                 total, baud, where, DEV_BANDWIDTH_SOURCES);
+        snprintf(
+            text, sizeof text,
+            "link budget exceeded: the message formats need %.0f bit/s, the port carries %lu baud%s (the "
+            "manuals' UART bandwidth calculation, %s)",
+            total, baud, where, DEV_BANDWIDTH_SOURCES);
         if (!force) {
             print_lines(stderr, PROG ": ", buf_text(lines));
             note("%s; nothing was written (--force writes anyway)", text);
@@ -2759,7 +2789,8 @@ static int cmd_send(conn_t *c, const opts_t *o) {
                 }
             }
             if (!found) {
-                note("%s.%.*s: '%s' is not a member of %s", f->name, (int)(eq - arg), arg, v->text, DEV_ENUMS[e].name);
+                note("%s.%.*s: '%s' is not a member of %s", f->name, (int)(eq - arg), arg, v->text,
+                     DEV_ENUMS[e].name);
                 val_free(v);
                 free(values.s);
                 return EXIT_TROUBLE;
@@ -2877,7 +2908,8 @@ static int cmd_dump(conn_t *c, const opts_t *o) {
     size_t written = 0;
     const char *file = o->npos ? o->pos[0] : NULL;
     package_name(package, sizeof package);
-    buf_fmt(&text, "# %s settings of a %s (%s), serial ", package, codec_device_title(c->device), c->model->id);
+    buf_fmt(&text, "# %s settings of a %s (%s), serial ", package, codec_device_title(c->device),
+            c->model->id);
     buf_str(&text, identity_text(c, "serial_number", &b) ? buf_text(&b) : "?");
     buf_str(&text, ", firmware ");
     buf_str(&text, identity_text(c, "firmware", &b) ? buf_text(&b) : "?");
@@ -3028,8 +3060,8 @@ static int line_of(const val_t *entry, const char *message, int def) {
             char before = at == message ? ' ' : at[-1];
             char after = at[strlen(k)];
             if ((before == '.' || before == ' ' || before == '\'' || before == '"') &&
-                (after == ':' || after == '.' || after == '[' || after == ' ' || after == '\'' || after == '"' ||
-                 after == '\0')) {
+                (after == ':' || after == '.' || after == '[' || after == ' ' || after == '\'' ||
+                 after == '"' || after == '\0')) {
                 return entry->key_lines[i];
             }
             at = strstr(at + 1, k);
@@ -3071,11 +3103,11 @@ static void validate(conn_t *c, const val_t *doc, const char *filename, plan_t *
                 }
             }
             if (others.n) {
-                problem(plan, "%s:%d: %s is not supported by %s (a setting of %s)", filename, line, name, manual_copy,
-                        buf_text(&others));
+                problem(plan, "%s:%d: %s is not supported by %s (a setting of %s)", filename, line, name,
+                        manual_copy, buf_text(&others));
             } else {
-                problem(plan, "%s:%d: unknown setting '%s' (not a setting of the spec's commands)", filename, line,
-                        name);
+                problem(plan, "%s:%d: unknown setting '%s' (not a setting of the spec's commands)", filename,
+                        line, name);
             }
             free(others.s);
             continue;
@@ -3109,7 +3141,8 @@ static void validate(conn_t *c, const val_t *doc, const char *filename, plan_t *
             char err[1000];
             size_t j;
             if (entry->kind != V_MAP) {
-                problem(plan, "%s:%d: %s: expected a mapping of parameter names to values", filename, eline, name);
+                problem(plan, "%s:%d: %s: expected a mapping of parameter names to values", filename, eline,
+                        name);
                 continue;
             }
             for (a = 0; a < entry->n; a++) {
@@ -3119,8 +3152,8 @@ static void validate(conn_t *c, const val_t *doc, const char *filename, plan_t *
                     for (m = 0; m < s->attr_count; m++) {
                         buf_fmt(&allowed, "%s%s", m ? ", " : "", s->attrs[m].name);
                     }
-                    problem(plan, "%s:%d: %s: unknown parameter '%s' (expected: %s)", filename, entry->key_lines[a],
-                            name, entry->keys[a], buf_text(&allowed));
+                    problem(plan, "%s:%d: %s: unknown parameter '%s' (expected: %s)", filename,
+                            entry->key_lines[a], name, entry->keys[a], buf_text(&allowed));
                     free(allowed.s);
                     bad = true;
                 }
@@ -3149,13 +3182,14 @@ static void validate(conn_t *c, const val_t *doc, const char *filename, plan_t *
                     size_t m;
                     bool same = true;
                     for (m = 0; m < s->keyed_count; m++) {
-                        same = same && val_equal(val_get(planned.entries[j], s->keyed[m]), val_get(norm, s->keyed[m]));
+                        same = same && val_equal(val_get(planned.entries[j], s->keyed[m]),
+                                                 val_get(norm, s->keyed[m]));
                     }
                     if (same) {
                         buf_t t = {0};
                         key_text(&t, s, norm);
-                        problem(plan, "%s:%d: %s: the entry for %s is given twice (first on line %d)", filename, eline,
-                                name, buf_text(&t), planned.lines[j]);
+                        problem(plan, "%s:%d: %s: the entry for %s is given twice (first on line %d)",
+                                filename, eline, name, buf_text(&t), planned.lines[j]);
                         free(t.s);
                         twice = true;
                         break;
@@ -3275,7 +3309,7 @@ static int differences(conn_t *c, const plan_t *plan, change_t **out, size_t *co
             {
                 buf_t t = {0};
                 key_text(&t, p->setting, entry);
-                snprintf((*out)[*count].key, sizeof (*out)[*count].key, "%s", buf_text(&t));
+                snprintf((*out)[*count].key, sizeof(*out)[*count].key, "%s", buf_text(&t));
                 free(t.s);
             }
             (*out)[*count].device = norm;
@@ -3481,8 +3515,8 @@ static int cmd_apply(conn_t *c, const opts_t *o) {
                 if (!val_equal(back_norm, ch->file)) {
                     buf_t t = {0};
                     val_json(&t, back_norm);
-                    note("%s: written, but it reads back as %s (%zu of %zu written)", what, buf_text(&t), written,
-                         count);
+                    note("%s: written, but it reads back as %s (%zu of %zu written)", what, buf_text(&t),
+                         written, count);
                     free(t.s);
                     status = EXIT_REFUSED;
                 } else {
@@ -3544,8 +3578,8 @@ static int data_field(const conn_t *c, const char *text, int *set, int *descript
         char *a = xstrndup(text, (size_t)(colon - text));
         long x = strtol(a, &end1, 0);
         long y = strtol(colon + 1, &end2, 0);
-        bool bad = *a == '\0' || *end1 != '\0' || colon[1] == '\0' || *end2 != '\0' || x < 0 || x > 255 || y < 0 ||
-                   y > 255;
+        bool bad = *a == '\0' || *end1 != '\0' || colon[1] == '\0' || *end2 != '\0' || x < 0 || x > 255 ||
+                   y < 0 || y > 255;
         codec_status_t why;
         const codec_field_info_t *f;
         free(a);
@@ -3569,7 +3603,8 @@ static int data_field(const conn_t *c, const char *text, int *set, int *descript
         for (d = 0; d < 256; d++) {
             codec_status_t why;
             const codec_field_info_t *f = codec_find_field((uint8_t)s, (uint8_t)d, &why);
-            if (f != NULL && strcmp(f->name, text) == 0 && codec_device_supports(c->device, (uint8_t)s, (uint8_t)d)) {
+            if (f != NULL && strcmp(f->name, text) == 0 &&
+                codec_device_supports(c->device, (uint8_t)s, (uint8_t)d)) {
                 *set = (int)s;
                 *descriptor = (int)d;
                 buf_fmt(&where, "%s0x%02X:0x%02X", found ? ", " : "", s, d);
@@ -3827,8 +3862,8 @@ static int cmd_stream(conn_t *c, const opts_t *o) {
     observed = c->stream_count > 1 && c->stream_last > c->stream_first
                    ? (double)(c->stream_count - 1) / (c->stream_last - c->stream_first)
                    : 0.0;
-    note("%lu packets of set 0x%02X; observed %.1f Hz (configured %g Hz: base %g Hz / decimation %lu)", shown, set,
-         observed, hz / (double)decimation, hz, decimation);
+    note("%lu packets of set 0x%02X; observed %.1f Hz (configured %g Hz: base %g Hz / decimation %lu)", shown,
+         set, observed, hz / (double)decimation, hz, decimation);
     val_free(key);
     val_free(previous);
     val_free(entry);
@@ -3840,10 +3875,10 @@ static int cmd_stream(conn_t *c, const opts_t *o) {
 
 /* ------------------------------------------------------------------------------ main */
 #define USAGE                                                                                                \
-    "usage: " PROG " ADDRESS SUBCOMMAND [OPTIONS]\n"                                                        \
+    "usage: " PROG " ADDRESS SUBCOMMAND [OPTIONS]\n"                                                         \
     "  ADDRESS: tcp:HOST:PORT or a serial port path\n"                                                       \
     "  ping | info | send NAME [FUNCTION] [PARAM=VALUE ...] [--json] | save-startup | factory-reset\n"       \
-    "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"               \
+    "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
@@ -3925,8 +3960,9 @@ int main(int argc, char **argv) {
             o.save = o.save || strcmp(name, "--save") == 0;
             continue;
         }
-        if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 && strcmp(name, "--timeout-ms") != 0 &&
-            strcmp(name, "--rate") != 0 && strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0) {
+        if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
+            strcmp(name, "--timeout-ms") != 0 && strcmp(name, "--rate") != 0 &&
+            strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0) {
             free(pos);
             return usage("unknown option '%s'", a);
         }
@@ -3967,7 +4003,8 @@ int main(int argc, char **argv) {
         if (strcmp(action, "dump") != 0 && strcmp(action, "diff") != 0 && strcmp(action, "apply") != 0) {
             free(pos);
             if (strcmp(action, "schema") == 0) {
-                return usage("%s", "settings schema: the JSON Schema is the Python package's (settings.schema.json)");
+                return usage(
+                    "%s", "settings schema: the JSON Schema is the Python package's (settings.schema.json)");
             }
             return usage("settings: unknown action '%s' (dump, diff, apply)", action);
         }
