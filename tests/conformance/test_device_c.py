@@ -16,6 +16,7 @@ simulator and recording proxy this reuses):
 
 from __future__ import annotations
 
+import os
 import random
 import re
 import shutil
@@ -29,7 +30,11 @@ from tests.conformance.test_device_cli import MODELS, TRANSPORTS, Recorder, Sim,
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = "mipcodec"
-BUILD = ROOT / "build" / "c-device" / PACKAGE
+# C_DEVICE_SANITIZE=1: the tool built with AddressSanitizer and UndefinedBehaviorSanitizer (any
+# report ends it with a non-zero status the tests see), in its own build directory
+SANITIZE = os.environ.get("C_DEVICE_SANITIZE") == "1"
+SAN_FLAGS = "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+BUILD = ROOT / "build" / ("c-device-sanitize" if SANITIZE else "c-device") / PACKAGE
 TOOL = BUILD / f"{PACKAGE}-device"
 
 
@@ -51,6 +56,7 @@ def tool() -> Path:
                 f"-D{PACKAGE.upper()}_BUILD_TOOLS=ON",
                 f"-D{PACKAGE.upper()}_BUILD_TESTS=OFF",
                 f"-D{PACKAGE.upper()}_BUILD_EXAMPLES=OFF",
+                *([f"-DCMAKE_C_FLAGS={SAN_FLAGS}", f"-DCMAKE_EXE_LINKER_FLAGS={SAN_FLAGS}"] if SANITIZE else []),
             ],
             check=True,
             capture_output=True,
@@ -293,6 +299,7 @@ def test_mutated_dumps_never_crash(tool: Path, tmp_path: Path) -> None:
             run = subprocess.run([str(tool), sim.address, "settings", "diff", str(f)], capture_output=True, timeout=60)
             err = run.stderr.decode("latin-1")
             assert run.returncode in (0, 1, 2), (i, mutated, run.returncode, err)
+            assert "Sanitizer" not in err and "runtime error" not in err, (mutated, err)
             if run.returncode == 2:
                 for line in err.splitlines():
                     assert line.startswith((f"{f}:", "mipcodec-device: ")), (mutated, err)

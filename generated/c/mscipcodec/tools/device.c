@@ -2325,6 +2325,11 @@ static int read_base_rates(conn_t *c, double *rates) {
     return 0;
 }
 
+/* Objects, not macros: a protocol without shared data or a bandwidth calculation compares and
+ * divides without a constant warning. */
+static const int g_shared_set = DEV_SHARED_SET;
+static const double g_word_bits = MSCIPC_LINK_UART_WORD_BITS;
+
 static int field_size(const conn_t *c, int set, int descriptor) {
     size_t i;
     int shared = -1;
@@ -2332,7 +2337,7 @@ static int field_size(const conn_t *c, int set, int descriptor) {
         if (c->model->sizes[i].set == set && c->model->sizes[i].descriptor == descriptor) {
             return c->model->sizes[i].size + MSCIPC_LINK_FIELD_OVERHEAD;
         }
-        if (DEV_SHARED_SET >= 0 && c->model->sizes[i].set == DEV_SHARED_SET &&
+        if (g_shared_set >= 0 && c->model->sizes[i].set == g_shared_set &&
             c->model->sizes[i].descriptor == descriptor) {
             shared = c->model->sizes[i].size + MSCIPC_LINK_FIELD_OVERHEAD;
         }
@@ -2393,7 +2398,8 @@ static bool budget_lines(const conn_t *c, const formats_t *formats, const double
         bits = MSCIPC_LINK_UART_WORD_BITS * (MSCIPC_LINK_PACKET_OVERHEAD * packet_hz + sum);
         *total += bits;
         buf_fmt(lines, "set 0x%02X: %.0f bit/s (%.0f bytes/s, %g packets/s): %s\n", set, bits,
-                bits / MSCIPC_LINK_UART_WORD_BITS, packet_hz, fields.n ? buf_text(&fields) : "no fields");
+                g_word_bits > 0 ? bits / g_word_bits : 0.0, packet_hz,
+                fields.n ? buf_text(&fields) : "no fields");
         free(fields.s);
     }
     if (baud) {
