@@ -128,7 +128,7 @@ typedef struct {
 
 static const dev_function_t DEV_FUNCTIONS[] = {{"write", 1},   {"read", 2},         {"save", 3}, {"load", 4},
                                                {"default", 5}, {"write_no_ack", 6}, {NULL, 0}};
-#define DEV_FUNCTION_COUNT 6u
+static const size_t DEV_FUNCTION_COUNT = 6u;
 
 static const dev_member_t DEV_ENUM_0[] = {
     {"disabled", 0}, {"enabled", 1}, {"test", 2}, {"test_pulse", 3}, {NULL, 0}};
@@ -1165,7 +1165,7 @@ static const dev_model_t DEV_MODELS[] = {{"gx5_45", "3DM-GX5-45", DEV_SETTINGS_g
                                           DEV_SIZES_cv7_ins, 101u, DEV_BASE_RATES_cv7_ins, 5u,
                                           DEV_UNADDRESSED_cv7_ins, 0u},
                                          {NULL, NULL, NULL, 0, NULL, 0, NULL, 0, NULL, 0}};
-#define DEV_MODEL_COUNT 2u
+static const size_t DEV_MODEL_COUNT = 2u;
 
 static const dev_format_t DEV_FORMATS[] = {
     {12, 15, -1, "desc_set", "descriptors", "descriptor", "decimation"},
@@ -1173,27 +1173,27 @@ static const dev_format_t DEV_FORMATS[] = {
     {12, 9, 129, NULL, "descriptors", "descriptor", "decimation"},
     {12, 10, 130, NULL, "descriptors", "descriptor", "decimation"},
     {0, 0, -1, NULL, NULL, NULL, NULL}};
-#define DEV_FORMAT_COUNT 4u
+static const size_t DEV_FORMAT_COUNT = 4u;
 
 static const dev_rate_query_t DEV_RATE_QUERIES[] = {
     {12, 14, -1, "desc_set"}, {12, 6, 128, NULL}, {12, 7, 129, NULL}, {12, 11, 130, NULL}, {0, 0, -1, NULL}};
-#define DEV_RATE_QUERY_COUNT 4u
+static const size_t DEV_RATE_QUERY_COUNT = 4u;
 static const int64_t DEV_ENABLE_MAP_0[] = {1, 128, 2, 129, 3, 130, 0};
 static const dev_enable_t DEV_ENABLES[] = {
     {12, 17, "enable", "device_selector", DEV_ENABLE_MAP_0, 3u, "desc_set"},
     {0, 0, NULL, NULL, NULL, 0, NULL}};
-#define DEV_ENABLE_COUNT 1u
+static const size_t DEV_ENABLE_COUNT = 1u;
 
 static const dev_baud_t DEV_BAUD[] = {{1, 9, "baud"}, {12, 64, "baud"}, {0, 0, NULL}};
-#define DEV_BAUD_COUNT 2u
+static const size_t DEV_BAUD_COUNT = 2u;
 
 /* the commands whose save and default apply to every setting */
 static const uint8_t DEV_ALL_SETTINGS[][2] = {{12, 48}, {0, 0}};
-#define DEV_ALL_SETTINGS_COUNT 1u
+static const size_t DEV_ALL_SETTINGS_COUNT = 1u;
 
 static const dev_list_t DEV_LISTS[] = {
     {1, 4, 130, "descriptors", 1}, {1, 7, 134, "descriptors", 1}, {0, 0, 0, NULL, 0}};
-#define DEV_LIST_COUNT 2u
+static const size_t DEV_LIST_COUNT = 2u;
 
 static const dev_report_t DEV_REPORTS[] = {{1, 129, {"info", "firmware_version", NULL}, "firmware"},
                                            {1, 129, {"info", "model_name", NULL}, "model_name"},
@@ -1202,7 +1202,7 @@ static const dev_report_t DEV_REPORTS[] = {{1, 129, {"info", "firmware_version",
                                            {1, 129, {"info", "lot_number", NULL}, "lot_number"},
                                            {1, 129, {"info", "device_options", NULL}, "options"},
                                            {0, 0, {NULL}, NULL}};
-#define DEV_REPORT_COUNT 6u
+static const size_t DEV_REPORT_COUNT = 6u;
 
 typedef struct {
     uint8_t id;

@@ -128,7 +128,7 @@ typedef struct {
 
 static const dev_function_t DEV_FUNCTIONS[] = {{"write", 1}, {"read", 2},    {"save", 3},
                                                {"load", 4},  {"default", 5}, {NULL, 0}};
-#define DEV_FUNCTION_COUNT 5u
+static const size_t DEV_FUNCTION_COUNT = 5u;
 
 static const dev_member_t DEV_ENUM_0[] = {{"baud_9600", 9600},
                                           {"baud_19200", 19200},
@@ -267,36 +267,36 @@ static const dev_model_t DEV_MODELS[] = {{"ms_imu3020", "MS_IMU3020", DEV_SETTIN
                                           DEV_SIZES_ms_imu3020, 9u, DEV_BASE_RATES_ms_imu3020, 1u,
                                           DEV_UNADDRESSED_ms_imu3020, 0u},
                                          {NULL, NULL, NULL, 0, NULL, 0, NULL, 0, NULL, 0}};
-#define DEV_MODEL_COUNT 1u
+static const size_t DEV_MODEL_COUNT = 1u;
 
 static const dev_format_t DEV_FORMATS[] = {{2, 5, 162, NULL, "sensors", NULL, NULL},
                                            {2, 12, 162, NULL, "sensors", NULL, NULL},
                                            {0, 0, -1, NULL, NULL, NULL, NULL}};
-#define DEV_FORMAT_COUNT 2u
+static const size_t DEV_FORMAT_COUNT = 2u;
 
 static const dev_rate_query_t DEV_RATE_QUERIES[] = {{2, 6, 162, NULL}, {0, 0, -1, NULL}};
-#define DEV_RATE_QUERY_COUNT 1u
+static const size_t DEV_RATE_QUERY_COUNT = 1u;
 static const int64_t DEV_ENABLE_MAP_0[] = {0};
 static const dev_enable_t DEV_ENABLES[] = {{2, 10, "control", NULL, DEV_ENABLE_MAP_0, 0u, NULL},
                                            {0, 0, NULL, NULL, NULL, 0, NULL}};
-#define DEV_ENABLE_COUNT 1u
+static const size_t DEV_ENABLE_COUNT = 1u;
 
 static const dev_baud_t DEV_BAUD[] = {{2, 1, "baud_rate"}, {0, 0, NULL}};
-#define DEV_BAUD_COUNT 1u
+static const size_t DEV_BAUD_COUNT = 1u;
 
 /* the commands whose save and default apply to every setting */
 static const uint8_t DEV_ALL_SETTINGS[][2] = {{2, 9}, {0, 0}};
-#define DEV_ALL_SETTINGS_COUNT 1u
+static const size_t DEV_ALL_SETTINGS_COUNT = 1u;
 
 static const dev_list_t DEV_LISTS[] = {{1, 3, 131, "messages", 0}, {0, 0, 0, NULL, 0}};
-#define DEV_LIST_COUNT 1u
+static const size_t DEV_LIST_COUNT = 1u;
 
 static const dev_report_t DEV_REPORTS[] = {{1, 133, {"model", NULL}, "model_name"},
                                            {1, 134, {"serial_number", NULL}, "serial_number"},
                                            {1, 135, {"firmware", NULL}, "firmware"},
                                            {1, 136, {"date", NULL}, "calibration_date"},
                                            {0, 0, {NULL}, NULL}};
-#define DEV_REPORT_COUNT 4u
+static const size_t DEV_REPORT_COUNT = 4u;
 
 typedef struct {
     uint8_t id;

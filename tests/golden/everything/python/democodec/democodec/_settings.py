@@ -6,7 +6,7 @@ device the largest data size of every data field (without its header). Generated
 A setting row: (command class, read reply class, (command name, (set, descriptor), key attributes
 sent with read, ((attribute, reply attribute, units or None), ...) the attributes a file entry
 holds, ((count attribute, list attribute), ...) set from the lists, the key combinations read:
-((attribute, value), ...) each)).
+((attribute, value), ...) each, ((attribute, value), ...) written but not read back: sent as zero)).
 """
 
 from __future__ import annotations
@@ -24,14 +24,10 @@ SETTINGS: Dict[str, Tuple[Tuple[Any, Any, Tuple[Any, ...]], ...]] = {
                 "configure",
                 (1, 2),
                 ("instance",),
-                (
-                    ("instance", "instance", None),
-                    ("mode", "count", None),
-                    ("params", "rates", None),
-                    ("suppress_ack", "name", None),
-                ),
+                (("instance", "instance", None),),
                 (),
                 (),
+                (("mode", 0), ("params", 0), ("suppress_ack", 0)),
             ),
         ),
     ),
