@@ -529,17 +529,25 @@ def cmd_apply(conn: Connection, args: argparse.Namespace) -> int:
 
 def _follow_baud(conn: Connection, baud: Any) -> None:
     """After a baud rate write on a serial port: wait the settle time, then use the new rate."""
-    port = getattr(conn.device.transport, "_port", None)
-    if port is None or not isinstance(baud, int):
+    transport = conn.device.transport
+    if not isinstance(baud, int):
         return
     time.sleep((_link.BAUD_SETTLE_MS or 0) / 1000.0)
-    port.baudrate = baud
+    if isinstance(getattr(type(transport), "baudrate", None), property):
+        transport.baudrate = baud  # the transport's own setter
+    elif getattr(transport, "_port", None) is not None:
+        transport._port.baudrate = baud  # pyserial's port
+    else:
+        return
     conn.baud = baud
 
 
 def cmd_diff(conn: Connection, args: argparse.Namespace) -> int:
     planned = _load(args.file, conn.model)
-    changes = st.differences(conn.device, planned)
+    try:
+        changes = st.differences(conn.device, planned)
+    except SessionError as e:  # trouble, not a difference (exit 2, as diff(1))
+        raise Trouble(f"cannot read the device: {e}") from None
     for c in changes:
         what = f"{c.setting.name}" + (f" ({c.key})" if c.key else "")
         for attr, v in c.file.items():
@@ -742,13 +750,10 @@ def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) 
 
 
 def _baud_rates() -> List[int]:
-    """The rates to try: the default first, then the spec's rates of every model, highest first."""
-    rates: List[int] = [DEFAULT_BAUD]
-    for values in _link.BAUD_RATES.values():
-        for r in sorted(values, reverse=True):
-            if r not in rates:
-                rates.append(r)
-    return rates
+    """The rates to try: the default first, then every rate the spec lists for a model's main
+    port (`_link.BAUD_RATES`), highest first."""
+    others = {r for values in _link.BAUD_RATES.values() for r in values} - {DEFAULT_BAUD}
+    return [DEFAULT_BAUD, *sorted(others, reverse=True)]
 
 
 # ------------------------------------------------------------------------------------ main
