@@ -49,7 +49,9 @@ def _descriptors(packet: bytes) -> list[int]:
 def test_stream_full_streams_every_documented_quantity_at_the_base_rate() -> None:
     sim = sim_mod.Simulator("gx5_45", stream_full=True)
     sim.poll(0.0)
-    chunks = sim.poll(0.2)  # ticks 1 .. 100 of the 500 Hz sets: 0.2 s of samples
+    # ticks 1 .. 100 of the 500 Hz sets: 0.2 s of samples, polled every 10 ms as the serving loop
+    # does (a poll late by more than 20 ms drops the older ticks, as an overrun output buffer)
+    chunks = [c for k in range(1, 21) for c in sim.poll(k / 100)]
     seen: dict[int, list[int]] = {}
     for p in _packets(chunks):
         seen.setdefault(p[2], []).extend(_descriptors(p))
@@ -61,8 +63,9 @@ def test_stream_full_streams_every_documented_quantity_at_the_base_rate() -> Non
     # idle stops every stream, resume restarts it (GX5-45 lines 363, 834)
     chunks = sim.feed(_command(pkg.base.SetToIdle()), 0.2) + sim.poll(0.4)
     assert [p for p in _packets(chunks) if p[2] >= 0x80] == []
-    chunks = sim.feed(_command(pkg.base.Resume()), 0.4) + sim.poll(0.5)
+    chunks = sim.feed(_command(pkg.base.Resume()), 0.4) + [c for k in range(41, 51) for c in sim.poll(k / 100)]
     assert len([p for p in _packets(chunks) if p[2] == 0x80]) >= 40
+    assert sum(len(d) for _, d in sim.poll(1.5)) < 20 * 1024  # 1 s late: only the last 20 ms
 
 
 def _command(field) -> bytes:

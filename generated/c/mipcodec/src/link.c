@@ -158,6 +158,10 @@ static uint8_t key_length(const mipc_link_t *link, uint8_t set, uint8_t descript
     return (uint8_t)(n - 1);
 }
 
+static bool is_command(const mipc_link_command_t *c, const mipc_command_facts_t *facts) {
+    return c->present && c->set == facts->set && c->descriptor == facts->descriptor;
+}
+
 /* Records a setting the application wrote (function write or write_no_ack of a command with a
  * function selector, acknowledged or sent): the latest per key replaces the earlier one and moves
  * to the end (the order of the writes); one more than MIPC_LINK_MAX_SETTINGS keys forgets the
@@ -172,16 +176,12 @@ static void record(mipc_link_t *link, const mipc_field_value_t *command) {
     if (!mipc_command_facts(command, &facts)) {
         return;
     }
-#if MIPC_LINK_HAS_IDLE
-    if (facts.set == MIPC_LINK_IDLE_SET && facts.descriptor == MIPC_LINK_IDLE_DESCRIPTOR) {
+    if (is_command(&link->options.idle, &facts)) {
         link->idled = true;
     }
-#endif
-#if MIPC_LINK_HAS_RESUME
-    if (facts.set == MIPC_LINK_RESUME_SET && facts.descriptor == MIPC_LINK_RESUME_DESCRIPTOR) {
+    if (is_command(&link->options.resume, &facts)) {
         link->idled = false;
     }
-#endif
     if ((facts.function != 1 && facts.function != 6) ||
         mipc_encode_field(command, data, sizeof data, &n) != MIPC_OK || n == 0) {
         return;
@@ -330,6 +330,15 @@ void mipc_link_options_init(mipc_link_options_t *options) {
     options->reconnect_ms = MIPC_LINK_DEFAULT_RECONNECT_MS;
     options->reopen_interval_ms = MIPC_LINK_REOPEN_INTERVAL_MS;
     options->quiet_ms = MIPC_LINK_QUIET_MS;
+    options->idle.present = MIPC_LINK_HAS_IDLE != 0;
+    options->idle.set = MIPC_LINK_IDLE_SET;
+    options->idle.descriptor = MIPC_LINK_IDLE_DESCRIPTOR;
+    options->ping.present = MIPC_LINK_HAS_PING != 0;
+    options->ping.set = MIPC_LINK_PING_SET;
+    options->ping.descriptor = MIPC_LINK_PING_DESCRIPTOR;
+    options->resume.present = MIPC_LINK_HAS_RESUME != 0;
+    options->resume.set = MIPC_LINK_RESUME_SET;
+    options->resume.descriptor = MIPC_LINK_RESUME_DESCRIPTOR;
 }
 
 void mipc_link_attach(mipc_link_t *link, const mipc_port_t *port, const mipc_link_options_t *options) {
@@ -384,7 +393,6 @@ static int drain(mipc_link_t *link, uint32_t ms) {
     return rc;
 }
 
-#if MIPC_LINK_HAS_PING || MIPC_LINK_HAS_IDLE
 /* Flushes the input: the port's, then the parser's buffered bytes (skipped; stream offsets go on). */
 static void flush_input(mipc_link_t *link) {
     bool was = link->internal;
@@ -396,14 +404,12 @@ static void flush_input(mipc_link_t *link) {
     link->internal = was;
 }
 
-/* A command without parameters, (set, descriptor), as a value. */
-static bool bare_command(const mipc_link_t *link, uint8_t set, uint8_t descriptor,
-                         mipc_field_value_t *value) {
-    return mipc_decode_field(set, descriptor, NULL, 0, link->session.config.device, value, NULL) == MIPC_OK;
+/* A command without parameters as a value; false when there is none or it does not decode. */
+static bool bare_command(const mipc_link_t *link, const mipc_link_command_t *c, mipc_field_value_t *value) {
+    return c->present && mipc_decode_field(c->set, c->descriptor, NULL, 0, link->session.config.device, value,
+                                           NULL) == MIPC_OK;
 }
-#endif
 
-#if MIPC_LINK_HAS_IDLE
 /* The reply timeout of a command as the session gives it (T + the spec's allowance). */
 static uint64_t command_timeout(const mipc_link_t *link, const mipc_field_value_t *command) {
     mipc_command_facts_t facts;
@@ -413,18 +419,19 @@ static uint64_t command_timeout(const mipc_link_t *link, const mipc_field_value_
     }
     return t;
 }
-#endif
 
 mipc_result_kind_t mipc_link_to_idle(mipc_link_t *link) {
-#if MIPC_LINK_HAS_IDLE
     mipc_field_value_t idle;
     mipc_result_kind_t kind = MIPC_RESULT_TIMEOUT;
     unsigned attempt;
     uint64_t timeout;
     line_t l;
     assert(link != NULL);
-    if (!bare_command(link, MIPC_LINK_IDLE_SET, MIPC_LINK_IDLE_DESCRIPTOR, &idle)) {
-        return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the idle command does not decode");
+    if (!bare_command(link, &link->options.idle, &idle)) {
+        line_init(&l, link);
+        line_add(&l, "link: idle: the protocol has no idle command");
+        log_line(link, &l);
+        return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the protocol has no idle command");
     }
     timeout = command_timeout(link, &idle);
     for (attempt = 1; attempt <= MIPC_LINK_IDLE_ATTEMPTS; attempt++) {
@@ -477,14 +484,6 @@ mipc_result_kind_t mipc_link_to_idle(mipc_link_t *link) {
     line_add(&l, " attempts, giving up");
     log_line(link, &l);
     return kind;
-#else
-    line_t l;
-    assert(link != NULL);
-    line_init(&l, link);
-    line_add(&l, "link: idle: the protocol has no idle command");
-    log_line(link, &l);
-    return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the protocol has no idle command");
-#endif
 }
 
 static void sleep_ms(mipc_link_t *link, uint32_t ms) {
@@ -498,7 +497,6 @@ static void sleep_ms(mipc_link_t *link, uint32_t ms) {
     }
 }
 
-#if MIPC_LINK_HAS_PING
 /* Adds rate v to out[0..*n) unless it is 0 or there already. */
 static void add_rate(uint32_t *out, size_t cap, size_t *n, uint32_t v) {
     size_t j;
@@ -559,18 +557,16 @@ static size_t candidate_rates(const mipc_link_t *link, uint32_t *out, size_t cap
     }
     return n;
 }
-#endif
 
 mipc_result_kind_t mipc_link_find_baud(mipc_link_t *link) {
-#if MIPC_LINK_HAS_PING
     mipc_field_value_t ping;
     uint32_t rates[MIPC_LINK_MAX_BAUD_RATES + 2];
     size_t n;
     size_t i;
     mipc_result_kind_t kind;
     assert(link != NULL);
-    if (!bare_command(link, MIPC_LINK_PING_SET, MIPC_LINK_PING_DESCRIPTOR, &ping)) {
-        return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the ping command does not decode");
+    if (!bare_command(link, &link->options.ping, &ping)) {
+        return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the protocol has no ping command");
     }
     kind = run_internal(link, &ping, NULL);
     if (kind != MIPC_RESULT_TIMEOUT || link->port.set_baud == NULL) {
@@ -612,10 +608,6 @@ mipc_result_kind_t mipc_link_find_baud(mipc_link_t *link) {
             return kind;
         }
     }
-#else
-    assert(link != NULL);
-    return mipc_link_fail(link, MIPC_RESULT_REFUSED, "the protocol has no ping command");
-#endif
 }
 
 /* Re-sends the recorded settings in order; returns how many were acknowledged (or sent). */
@@ -635,15 +627,12 @@ static size_t reapply(mipc_link_t *link) {
             done++;
         }
     }
-#if MIPC_LINK_HAS_RESUME
     if (!link->idled) {
         mipc_field_value_t resume;
-        if (mipc_decode_field(MIPC_LINK_RESUME_SET, MIPC_LINK_RESUME_DESCRIPTOR, NULL, 0,
-                              link->session.config.device, &resume, NULL) == MIPC_OK) {
+        if (bare_command(link, &link->options.resume, &resume)) {
             (void)run_internal(link, &resume, NULL);
         }
     }
-#endif
     return done;
 }
 
@@ -681,7 +670,7 @@ int mipc_link_reconnect(mipc_link_t *link) {
         if (link->port.reopen(link->port.ctx) == 0) {
             break;
         }
-        if (now_ms(link) - start >= link->options.reconnect_ms) {
+        if (now_ms(link) - start + link->options.reopen_interval_ms > link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
@@ -698,7 +687,8 @@ int mipc_link_reconnect(mipc_link_t *link) {
     link->connected = true;
     applied = 0;
     if (mipc_link_to_idle(link) == MIPC_RESULT_ACK) {
-        applied = reapply(link);
+        (void)reapply(link);
+        applied = link->setting_count;
     }
     link->internal = was;
     line_init(&l, link);

@@ -158,6 +158,10 @@ static uint8_t key_length(const mscipc_link_t *link, uint8_t set, uint8_t descri
     return (uint8_t)(n - 1);
 }
 
+static bool is_command(const mscipc_link_command_t *c, const mscipc_command_facts_t *facts) {
+    return c->present && c->set == facts->set && c->descriptor == facts->descriptor;
+}
+
 /* Records a setting the application wrote (function write or write_no_ack of a command with a
  * function selector, acknowledged or sent): the latest per key replaces the earlier one and moves
  * to the end (the order of the writes); one more than MSCIPC_LINK_MAX_SETTINGS keys forgets the
@@ -172,16 +176,12 @@ static void record(mscipc_link_t *link, const mscipc_field_value_t *command) {
     if (!mscipc_command_facts(command, &facts)) {
         return;
     }
-#if MSCIPC_LINK_HAS_IDLE
-    if (facts.set == MSCIPC_LINK_IDLE_SET && facts.descriptor == MSCIPC_LINK_IDLE_DESCRIPTOR) {
+    if (is_command(&link->options.idle, &facts)) {
         link->idled = true;
     }
-#endif
-#if MSCIPC_LINK_HAS_RESUME
-    if (facts.set == MSCIPC_LINK_RESUME_SET && facts.descriptor == MSCIPC_LINK_RESUME_DESCRIPTOR) {
+    if (is_command(&link->options.resume, &facts)) {
         link->idled = false;
     }
-#endif
     if ((facts.function != 1 && facts.function != 6) ||
         mscipc_encode_field(command, data, sizeof data, &n) != MSCIPC_OK || n == 0) {
         return;
@@ -331,6 +331,15 @@ void mscipc_link_options_init(mscipc_link_options_t *options) {
     options->reconnect_ms = MSCIPC_LINK_DEFAULT_RECONNECT_MS;
     options->reopen_interval_ms = MSCIPC_LINK_REOPEN_INTERVAL_MS;
     options->quiet_ms = MSCIPC_LINK_QUIET_MS;
+    options->idle.present = MSCIPC_LINK_HAS_IDLE != 0;
+    options->idle.set = MSCIPC_LINK_IDLE_SET;
+    options->idle.descriptor = MSCIPC_LINK_IDLE_DESCRIPTOR;
+    options->ping.present = MSCIPC_LINK_HAS_PING != 0;
+    options->ping.set = MSCIPC_LINK_PING_SET;
+    options->ping.descriptor = MSCIPC_LINK_PING_DESCRIPTOR;
+    options->resume.present = MSCIPC_LINK_HAS_RESUME != 0;
+    options->resume.set = MSCIPC_LINK_RESUME_SET;
+    options->resume.descriptor = MSCIPC_LINK_RESUME_DESCRIPTOR;
 }
 
 void mscipc_link_attach(mscipc_link_t *link, const mscipc_port_t *port,
@@ -386,7 +395,6 @@ static int drain(mscipc_link_t *link, uint32_t ms) {
     return rc;
 }
 
-#if MSCIPC_LINK_HAS_PING || MSCIPC_LINK_HAS_IDLE
 /* Flushes the input: the port's, then the parser's buffered bytes (skipped; stream offsets go on). */
 static void flush_input(mscipc_link_t *link) {
     bool was = link->internal;
@@ -398,15 +406,13 @@ static void flush_input(mscipc_link_t *link) {
     link->internal = was;
 }
 
-/* A command without parameters, (set, descriptor), as a value. */
-static bool bare_command(const mscipc_link_t *link, uint8_t set, uint8_t descriptor,
+/* A command without parameters as a value; false when there is none or it does not decode. */
+static bool bare_command(const mscipc_link_t *link, const mscipc_link_command_t *c,
                          mscipc_field_value_t *value) {
-    return mscipc_decode_field(set, descriptor, NULL, 0, link->session.config.device, value, NULL) ==
-           MSCIPC_OK;
+    return c->present && mscipc_decode_field(c->set, c->descriptor, NULL, 0, link->session.config.device,
+                                             value, NULL) == MSCIPC_OK;
 }
-#endif
 
-#if MSCIPC_LINK_HAS_IDLE
 /* The reply timeout of a command as the session gives it (T + the spec's allowance). */
 static uint64_t command_timeout(const mscipc_link_t *link, const mscipc_field_value_t *command) {
     mscipc_command_facts_t facts;
@@ -416,18 +422,19 @@ static uint64_t command_timeout(const mscipc_link_t *link, const mscipc_field_va
     }
     return t;
 }
-#endif
 
 mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
-#if MSCIPC_LINK_HAS_IDLE
     mscipc_field_value_t idle;
     mscipc_result_kind_t kind = MSCIPC_RESULT_TIMEOUT;
     unsigned attempt;
     uint64_t timeout;
     line_t l;
     assert(link != NULL);
-    if (!bare_command(link, MSCIPC_LINK_IDLE_SET, MSCIPC_LINK_IDLE_DESCRIPTOR, &idle)) {
-        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the idle command does not decode");
+    if (!bare_command(link, &link->options.idle, &idle)) {
+        line_init(&l, link);
+        line_add(&l, "link: idle: the protocol has no idle command");
+        log_line(link, &l);
+        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no idle command");
     }
     timeout = command_timeout(link, &idle);
     for (attempt = 1; attempt <= MSCIPC_LINK_IDLE_ATTEMPTS; attempt++) {
@@ -480,14 +487,6 @@ mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
     line_add(&l, " attempts, giving up");
     log_line(link, &l);
     return kind;
-#else
-    line_t l;
-    assert(link != NULL);
-    line_init(&l, link);
-    line_add(&l, "link: idle: the protocol has no idle command");
-    log_line(link, &l);
-    return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no idle command");
-#endif
 }
 
 static void sleep_ms(mscipc_link_t *link, uint32_t ms) {
@@ -501,7 +500,6 @@ static void sleep_ms(mscipc_link_t *link, uint32_t ms) {
     }
 }
 
-#if MSCIPC_LINK_HAS_PING
 /* Adds rate v to out[0..*n) unless it is 0 or there already. */
 static void add_rate(uint32_t *out, size_t cap, size_t *n, uint32_t v) {
     size_t j;
@@ -563,18 +561,16 @@ static size_t candidate_rates(const mscipc_link_t *link, uint32_t *out, size_t c
     }
     return n;
 }
-#endif
 
 mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
-#if MSCIPC_LINK_HAS_PING
     mscipc_field_value_t ping;
     uint32_t rates[MSCIPC_LINK_MAX_BAUD_RATES + 2];
     size_t n;
     size_t i;
     mscipc_result_kind_t kind;
     assert(link != NULL);
-    if (!bare_command(link, MSCIPC_LINK_PING_SET, MSCIPC_LINK_PING_DESCRIPTOR, &ping)) {
-        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the ping command does not decode");
+    if (!bare_command(link, &link->options.ping, &ping)) {
+        return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no ping command");
     }
     kind = run_internal(link, &ping, NULL);
     if (kind != MSCIPC_RESULT_TIMEOUT || link->port.set_baud == NULL) {
@@ -616,10 +612,6 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
             return kind;
         }
     }
-#else
-    assert(link != NULL);
-    return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no ping command");
-#endif
 }
 
 /* Re-sends the recorded settings in order; returns how many were acknowledged (or sent). */
@@ -639,15 +631,12 @@ static size_t reapply(mscipc_link_t *link) {
             done++;
         }
     }
-#if MSCIPC_LINK_HAS_RESUME
     if (!link->idled) {
         mscipc_field_value_t resume;
-        if (mscipc_decode_field(MSCIPC_LINK_RESUME_SET, MSCIPC_LINK_RESUME_DESCRIPTOR, NULL, 0,
-                                link->session.config.device, &resume, NULL) == MSCIPC_OK) {
+        if (bare_command(link, &link->options.resume, &resume)) {
             (void)run_internal(link, &resume, NULL);
         }
     }
-#endif
     return done;
 }
 
@@ -685,7 +674,7 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
         if (link->port.reopen(link->port.ctx) == 0) {
             break;
         }
-        if (now_ms(link) - start >= link->options.reconnect_ms) {
+        if (now_ms(link) - start + link->options.reopen_interval_ms > link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
@@ -702,7 +691,8 @@ int mscipc_link_reconnect(mscipc_link_t *link) {
     link->connected = true;
     applied = 0;
     if (mscipc_link_to_idle(link) == MSCIPC_RESULT_ACK) {
-        applied = reapply(link);
+        (void)reapply(link);
+        applied = link->setting_count;
     }
     link->internal = was;
     line_init(&l, link);

@@ -594,7 +594,11 @@ class Simulator:
             rate = self.base_rates[set_id]
             tick_now = int(sim_now * rate)
             last = self.ticks.get(set_id, tick_now - 1)
-            for tick in range(max(last + 1, tick_now - rate), tick_now + 1):
+            # at most 1 s of missed ticks; with --stream-full 20 ms, so that a simulator slower than
+            # the flood it builds still reads the host's commands (the rest is dropped, as a
+            # device's overrun output buffer drops packets)
+            window = max(1, rate // 50) if self.full else rate
+            for tick in range(max(last + 1, tick_now - window), tick_now + 1):
                 due = [d for d, dec in entries if tick % dec == 0]
                 if due and not self.idle:
                     t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
@@ -872,6 +876,7 @@ class _Link:
     device's output buffer overruns)."""
 
     BACKLOG = 1 << 18
+    FULL_BACKLOG = 1 << 15  # with --stream-full: a device's output buffer, not a pipe's
 
     def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
         self.fd = fd
@@ -895,16 +900,17 @@ class _Link:
         return _BAUD_CODES.get(speed) != self.baud
 
     def write(self, data: bytes) -> None:
-        if self.mismatched():
-            data = bytes((b ^ 0x5A) for b in data)
         if len(self.backlog) + len(data) <= self.BACKLOG:
             self.backlog += data
         self.flush()
 
     def flush(self) -> None:
         while self.backlog:
+            chunk = bytes(self.backlog)
+            if self.mismatched():  # read at the host's rate when it leaves, not when it was queued
+                chunk = bytes((b ^ 0x5A) for b in chunk)
             try:
-                n = os.write(self.fd, self.backlog)
+                n = os.write(self.fd, chunk)
             except BlockingIOError:
                 return
             except OSError as e:
@@ -985,6 +991,8 @@ def serve(
             if previous is None or path is None:
                 print(path or name, file=out, flush=True)
             link = _Link(master, slave=slave)
+            if sim is not None and sim.full:
+                link.BACKLOG = _Link.FULL_BACKLOG
             link.baud = previous.baud if previous is not None else start_baud
             return link
 
@@ -1107,6 +1115,8 @@ def _loop(
             conn, _ = server.accept()
             conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
             link = _Link(conn.fileno(), conn)
+            if sim is not None and sim.full:
+                link.BACKLOG = _Link.FULL_BACKLOG
             started = time.monotonic()
             queue = list(replay or [])
             continue

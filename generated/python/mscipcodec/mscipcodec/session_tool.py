@@ -1,26 +1,31 @@
 """python -m mscipcodec.session_tool --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]
+    [--auto-baud] [--reconnect-ms N]
 
 The session conformance tool (docs/conformance.md section 8): reads command packets as canonical
 JSON lines on stdin, runs them in order over the connection and prints one result line per
 command; every other packet received (and every skip run) is printed as its canonical line, in
 arrival order. Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its
-number and skipped), 2 for usage or connection errors.
+number and skipped), 2 for usage or connection errors. Getting through (section 8): `--auto-baud`
+finds the baud rate at connect, `--reconnect-ms N` reopens a lost port, the lines
+`{"link":"idle"}` and `{"link":"listen","ms":M}` get to idle and receive for a while; every
+`link: ...` step goes to stderr.
 """
 
 from __future__ import annotations
 
+import json
 import os
 import sys
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Tuple
 
 from . import registry
 from .framing import Skip
 from .packets import Packet
-from .session import DEFAULT_TIMEOUT_MS, Device, Result, command_from_line
+from .session import DEFAULT_TIMEOUT_MS, Device, LinkError, Result, SessionError, command_from_line
 from .transport import TransportError, open_transport
 
 PROG = f"{__package__}.session_tool"
-USAGE = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N]"
+USAGE = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] [--reconnect-ms N]"
 
 
 class UsageError(Exception):
@@ -34,12 +39,23 @@ def _int_option(name: str, text: str, low: int) -> int:
 
 
 def _options(argv: List[str]) -> Dict[str, Any]:
-    opts: Dict[str, Any] = {"connect": None, "timeout_ms": DEFAULT_TIMEOUT_MS, "device": None, "baud": 115200}
+    opts: Dict[str, Any] = {
+        "connect": None,
+        "timeout_ms": DEFAULT_TIMEOUT_MS,
+        "device": None,
+        "baud": 115200,
+        "auto_baud": False,
+        "reconnect_ms": None,
+    }
     i = 0
     while i < len(argv):
         a = argv[i]
+        if a == "--auto-baud":
+            opts["auto_baud"] = True
+            i += 1
+            continue
         name, eq, value = a.partition("=")
-        if name not in ("--connect", "--timeout-ms", "--device", "--baud"):
+        if name not in ("--connect", "--timeout-ms", "--device", "--baud", "--reconnect-ms"):
             raise UsageError(f"unknown argument {a!r}")
         if not eq:
             if i + 1 >= len(argv):
@@ -53,6 +69,8 @@ def _options(argv: List[str]) -> Dict[str, Any]:
             opts["timeout_ms"] = _int_option(name, value, 0)
         elif name == "--baud":
             opts["baud"] = _int_option(name, value, 1)
+        elif name == "--reconnect-ms":
+            opts["reconnect_ms"] = _int_option(name, value, 0)
         else:
             if value not in registry.DEVICES:
                 raise UsageError(f"unknown device {value!r} (one of: {', '.join(registry.DEVICES)})")
@@ -78,9 +96,21 @@ def run(argv: List[str]) -> int:
     except (TransportError, ValueError) as e:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
-    device = Device(transport, opts["device"], opts["timeout_ms"], on_event=_print_event)
+    address, baud = opts["connect"], opts["baud"]
+    device = Device(
+        transport,
+        opts["device"],
+        opts["timeout_ms"],
+        on_event=_print_event,
+        log=_log,
+        reopen=lambda: open_transport(address, baud),
+        address=address,
+        reconnect_ms=opts["reconnect_ms"],
+    )
     status = 0
     try:
+        if opts["auto_baud"]:
+            device.find_baud()
         for number, raw in enumerate(sys.stdin.buffer, 1):
             try:
                 text = raw.decode("utf-8")
@@ -90,24 +120,66 @@ def run(argv: List[str]) -> int:
                 continue
             if not text.strip():
                 continue
+            link = _link_line(text)
+            if link is not None:
+                if link[0] == "idle":
+                    try:
+                        result = device.to_idle()
+                    except LinkError as e:
+                        last = getattr(e, "result", None)
+                        if last is None:
+                            raise
+                        result = last
+                    except SessionError as e:  # a NACK
+                        result = e.result  # type: ignore[attr-defined]
+                    print(result.line(number), flush=True)
+                elif link[0] == "listen":
+                    device.listen(link[1])
+                    print('{"line":' + str(number) + ',"listened":' + str(link[1]) + "}", flush=True)
+                else:
+                    print(f"{PROG}: line {number}: {link[1]}", file=sys.stderr)
+                    status = 1
+                continue
             try:
                 command = command_from_line(text)
             except ValueError as e:
                 print(f"{PROG}: line {number}: {e}", file=sys.stderr)
                 status = 1
                 continue
-            p = device.session.start(command, device.now_ms(), tag=number)
-            if p.packet:
-                transport.write(p.packet)
-            if p.result is not None:
-                _print_event(p.result)
+            p = device.start(command, tag=number)
+            if p.result is not None and p.result.status in ("refused", "sent"):
+                _print_event(p.result)  # complete at once (a lost one was printed as an event)
             while p.result is None:
                 device.pump(max(0, (device.session.next_deadline() or p.deadline) - device.now_ms()))
+            device.record(p.command, p.result)
         device.close()
-    except TransportError as e:
+    except (TransportError, LinkError) as e:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     return status
+
+
+def _log(line: str) -> None:
+    print(line, file=sys.stderr, flush=True)
+
+
+def _link_line(text: str) -> Optional[Tuple[str, Any]]:
+    """("idle", None) or ("listen", ms) for a link line, ("bad", why) for a malformed one, None
+    for anything else (a command line)."""
+    if '"link"' not in text:
+        return None
+    try:
+        value = json.loads(text)
+    except ValueError:
+        return None
+    if not isinstance(value, dict) or "link" not in value:
+        return None
+    if value == {"link": "idle"}:
+        return ("idle", None)
+    ms = value.get("ms")
+    if value.get("link") == "listen" and set(value) == {"link", "ms"} and type(ms) is int and ms >= 0:
+        return ("listen", ms)
+    return ("bad", 'expected {"link":"idle"} or {"link":"listen","ms":M}')
 
 
 def main(argv: Optional[List[str]] = None) -> int:

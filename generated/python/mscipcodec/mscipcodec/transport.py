@@ -3,17 +3,40 @@
 
 A transport has `write(data)`, `read(timeout_s) -> bytes` (the bytes available within
 `timeout_s` seconds, b"" when none came) and `close()`; a closed connection raises
-TransportError. Anything with these three methods works (a test's fake, a USB bridge).
+TransportError. Anything with these three methods works (a test's fake, a USB bridge). Optional,
+for getting through (docs/conformance.md section 8): `flush_input()` (drop what was received and
+not read yet) and, on a serial port, a settable `baudrate`.
 """
 
 from __future__ import annotations
 
+import errno as _errno
+import os
 import socket
 from typing import Any, Optional, Tuple
 
 
 class TransportError(OSError):
-    """The connection could not be opened, or it was closed or broke."""
+    """The connection could not be opened, or it was closed or broke. `reason`: the system's error
+    text of the failing call, or "end of file" (the link lines of docs/conformance.md section 8)."""
+
+    def __init__(self, message: str, reason: Optional[str] = None) -> None:
+        super().__init__(message)
+        self.reason = reason or message
+
+
+def _reason(e: BaseException) -> str:
+    """The system's error text of an OSError (or of pyserial's exception carrying one)."""
+    code = getattr(e, "errno", None)
+    if isinstance(code, int) and code:
+        return os.strerror(code)
+    text = str(e)
+    if "returned no data" in text:  # pyserial: readable, but the read gave nothing: end of file
+        return "end of file"
+    for code in (_errno.EIO, _errno.ENXIO, _errno.ENODEV, _errno.EBADF):
+        if f"[Errno {code}]" in text:
+            return os.strerror(code)
+    return text
 
 
 def parse_address(address: str) -> Tuple[str, Any]:
@@ -45,7 +68,7 @@ class TcpTransport:
         try:
             self._sock.sendall(data)
         except OSError as e:
-            raise TransportError(f"send failed: {e.strerror or e}") from None
+            raise TransportError(f"send failed: {e.strerror or e}", _reason(e)) from None
 
     def read(self, timeout_s: float) -> bytes:
         self._sock.settimeout(max(timeout_s, 0.0) or 0.000001)
@@ -56,10 +79,15 @@ class TcpTransport:
         except BlockingIOError:
             return b""
         except OSError as e:
-            raise TransportError(f"receive failed: {e.strerror or e}") from None
+            raise TransportError(f"receive failed: {e.strerror or e}", _reason(e)) from None
         if not data:
-            raise TransportError("connection closed by the device")
+            raise TransportError("connection closed by the device", "end of file")
         return data
+
+    def flush_input(self) -> None:
+        """Drop what arrived and was not read yet."""
+        while self.read(0.0):
+            pass
 
     def close(self) -> None:
         self._sock.close()
@@ -78,14 +106,33 @@ class SerialTransport:
         try:
             self._port = serial.Serial(path, baudrate=baudrate, timeout=0)
         except (OSError, ValueError, serial.SerialException) as e:
-            raise TransportError(f"cannot open {path} at {baudrate} baud: {e}") from None
+            raise TransportError(f"cannot open {path} at {baudrate} baud: {e}", _reason(e)) from None
         self._serial = serial
+
+    @property
+    def baudrate(self) -> int:
+        """The port's baud rate; setting it changes the rate of the open port."""
+        return int(self._port.baudrate)
+
+    @baudrate.setter
+    def baudrate(self, value: int) -> None:
+        try:
+            self._port.baudrate = value
+        except (OSError, ValueError, self._serial.SerialException) as e:
+            raise TransportError(f"cannot set {value} baud: {e}", _reason(e)) from None
+
+    def flush_input(self) -> None:
+        """Drop what arrived and was not read yet."""
+        try:
+            self._port.reset_input_buffer()
+        except (OSError, self._serial.SerialException) as e:
+            raise TransportError(f"flush failed: {e}", _reason(e)) from None
 
     def write(self, data: bytes) -> None:
         try:
             self._port.write(data)
-        except self._serial.SerialException as e:
-            raise TransportError(f"write failed: {e}") from None
+        except (OSError, self._serial.SerialException) as e:
+            raise TransportError(f"write failed: {e}", _reason(e)) from None
 
     def read(self, timeout_s: float) -> bytes:
         try:
@@ -96,11 +143,14 @@ class SerialTransport:
             waiting = self._port.in_waiting
             data: bytes = first + (self._port.read(waiting) if waiting else b"")
             return data
-        except self._serial.SerialException as e:
-            raise TransportError(f"read failed: {e}") from None
+        except (OSError, self._serial.SerialException) as e:
+            raise TransportError(f"read failed: {e}", _reason(e)) from None
 
     def close(self) -> None:
-        self._port.close()
+        try:
+            self._port.close()
+        except (OSError, self._serial.SerialException):
+            pass  # a port that went away
 
 
 def open_transport(address: str, baudrate: int = 115200, connect_timeout_s: Optional[float] = None) -> Any:

@@ -15,21 +15,30 @@ Result, `device.call(command)` raises on anything but success, and the typed com
 (`device.threedm.sensor_to_vehicle_euler.read()`, generated into command_api.py) calls it.
 Every packet that is not a reply goes to the handlers registered with `on_packet`, `on_field`
 and `on_sample`, also while a command is pending.
+
+Getting through (docs/conformance.md section 8, "Getting through"; the facts from `_link`, the
+IR's `link`): `device.to_idle()` gets a streaming device to idle (data dropped and counted,
+flush and retry), `device.find_baud()` finds the rate a serial device answers at, and a Device
+made with `reconnect_ms` reopens a lost port, gets to idle, re-applies the settings written
+since connect and resumes. Each step is reported as one `link: ...` line to `log` (default: the
+logger "<package>.link" at INFO).
 """
 
 from __future__ import annotations
 
+import logging
 import time
-from collections import deque
+from collections import OrderedDict, deque
 from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Union
 
+from . import _link, _sim, capabilities, registry
 from . import _session as _meta
-from . import capabilities, registry
 from .canonical import error_text, loads
 from .codec import Field
 from .framing import PacketBuilder, Parser, RawPacket, Skip, _speedups
 from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from .samples import Sample, SampleGrouper
+from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
 DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a partial packet waiting longer is a false sync
@@ -41,6 +50,12 @@ TIMEOUT = "timeout"
 INVALID = "invalid"
 SENT = "sent"
 REFUSED = "refused"
+LOST = "lost"  # the port went away while the command waited for its reply
+
+IDLE_QUIET_MS = 50  # after a flush, received bytes are read and dropped this long before a retry
+RECONNECT_EVERY_MS = 500  # a lost port is reopened this often
+DEFAULT_RECONNECT_MS = 10000  # ... until this long after the loss
+MAX_SETTINGS = 64  # settings recorded for re-applying after a reconnect (the oldest forgotten)
 
 
 class SessionError(Exception):
@@ -77,6 +92,15 @@ class CommandTimeout(CommandFailed):
 
 class InvalidReply(CommandFailed):
     """The device acknowledged, but the reply fields do not decode (or the expected one is missing)."""
+
+
+class LinkLost(CommandFailed):
+    """The port went away while the command waited for its reply; it is not retried."""
+
+
+class LinkError(SessionError):
+    """Getting through failed: no ACK to the idle command, no baud rate answers, or the lost port
+    did not come back in time."""
 
 
 class Result:
@@ -132,7 +156,7 @@ class Result:
             return f"{name}: NACK, code {int(self.code)}{text}"
         if self.status == TIMEOUT:
             return f"{name}: no reply before the timeout"
-        if self.status in (INVALID, REFUSED):
+        if self.status in (INVALID, REFUSED, LOST):
             return f"{name}: {self.error}"
         return f"{name}: {self.status}"
 
@@ -146,6 +170,8 @@ class Result:
             raise CommandTimeout(self)
         if self.status == INVALID:
             raise InvalidReply(self)
+        if self.status == LOST:
+            raise LinkLost(self)
         return self
 
     def line(self, number: int) -> str:
@@ -562,6 +588,21 @@ class Session:
                     h(s)
         return events
 
+    def reset_input(self) -> int:
+        """Drop every buffered byte that is not a complete packet (a flush: nothing is reported,
+        the stream offsets go on); returns how many."""
+        return sum(len(e.data) for e in self._parser.flush() if isinstance(e, Skip))
+
+    def lose_pending(self, reason: str) -> List[Event]:
+        """The port went away: every pending command completes with "lost"."""
+        out: List[Event] = []
+        for p in self._pending:
+            p.result = _tagged(Result(p.command, LOST, error=f"link lost: {reason}", expect=p.expect), p.tag)
+            out.append(p.result)
+        self._pending = []
+        self._pending_changed()
+        return out
+
     def _expire(self, now_ms: int) -> List[Event]:
         out: List[Event] = []
         keep = []
@@ -721,12 +762,32 @@ class Device(_CommandSets):
         check_device: bool = True,
         clock: Callable[[], float] = time.monotonic,
         on_event: Optional[Callable[[Event], Any]] = None,
+        log: Optional[Callable[[str], Any]] = None,
+        reopen: Optional[Callable[[], Any]] = None,
+        address: Optional[str] = None,
+        reconnect_ms: Optional[int] = None,
     ) -> None:
+        """`log`: called with each `link: ...` line (default: the logger "<package>.link", INFO).
+        `reconnect_ms`: reopen a lost port with `reopen()` (a new transport for `address`) for up
+        to that long, then get to idle, re-apply the settings and resume (None: a lost port
+        raises TransportError, as before)."""
         self.transport = transport
         self.session = Session(device, timeout_ms, inter_packet_timeout_ms, 1, check_device)
         self._clock = clock
         self._t0 = clock()
         self.on_event = on_event
+        self.log: Callable[[str], Any] = log or logging.getLogger(f"{__package__}.link").info
+        self.reopen = reopen
+        self.address = address or "the port"
+        self.reconnect_ms = reconnect_ms
+        # the settings written since connect, in order, the latest per key (re-applied after a reconnect)
+        self.settings: OrderedDict[Tuple[Any, ...], Field] = OrderedDict()
+        self._app_idle = False  # the application's last idle/resume command was an idle
+        self._quiet = False  # inside to_idle: data is counted and dropped, not delivered
+        self._muted: Optional[Tuple[Any, Any, Any]] = None  # the handlers while muted
+        self._mute_depth = 0
+        self._dropped = 0
+        self._linking = False  # inside a reconnect: no nested one
         from . import command_api  # the generated typed API (imports this module)
 
         command_api.bind(self)
@@ -749,17 +810,55 @@ class Device(_CommandSets):
 
     def _deliver(self, events: List[Event]) -> None:
         if self.on_event is not None:
+            if self._quiet:
+                return  # inside to_idle or the baud search: counted and dropped
             for e in events:
+                if self._linking and isinstance(e, Result):
+                    continue  # the results of a reconnect's own commands
                 self.on_event(e)
 
     def run(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
-        """Send the command and wait for its Result (never raises for nack, timeout or refusal)."""
-        p = self.session.start(command, self.now_ms(), timeout_ms, check_device)
-        if p.packet:
-            self.transport.write(p.packet)
+        """Send the command and wait for its Result (never raises for nack, timeout or refusal;
+        with reconnecting, a command in flight when the port goes away gets "lost")."""
+        p = self.start(command, timeout_ms, check_device)
         while p.result is None:
             self.pump(max(0, (self.session.next_deadline() or p.deadline) - self.now_ms()))
+        self.record(p.command, p.result)
         return p.result
+
+    def start(
+        self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None, tag: Any = None
+    ) -> Pending:
+        """Start the command and send its packet (the result comes with later pumps)."""
+        p = self.session.start(command, self.now_ms(), timeout_ms, check_device, tag)
+        if p.packet:
+            try:
+                self.transport.write(p.packet)
+            except TransportError as e:
+                self._lost(e)
+        return p
+
+    def record(self, command: Field, result: Result) -> None:
+        """Notes a completed command: a setting the application wrote (re-applied after a
+        reconnect) or its idle/resume (`run` calls it; a caller of `start` calls it itself)."""
+        if not result.ok or self._linking:
+            return
+        key = (command.SET, command.DESCRIPTOR)
+        if _link.IDLE == key:
+            self._app_idle = True
+        elif _link.RESUME == key:
+            self._app_idle = False
+        function = getattr(command, "function", None)
+        if function is None or _meta.FUNCTION_NAMES.get(int(function)) not in ("write", "write_no_ack"):
+            return
+        attrs = _sim.COMMANDS.get(type(command), ({}, ()))[0]
+        read = next((v for v, n in _meta.FUNCTION_NAMES.items() if n == "read"), None)
+        names = attrs.get(read, ()) if read is not None else ()
+        key = key + tuple(_plain_value(getattr(command, a, None)) for a in names)
+        self.settings.pop(key, None)
+        self.settings[key] = command
+        while len(self.settings) > MAX_SETTINGS:
+            self.settings.popitem(last=False)
 
     def call(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
         """As `run`, but raises CommandRefused, Nack, CommandTimeout or InvalidReply unless it succeeded."""
@@ -767,10 +866,165 @@ class Device(_CommandSets):
 
     def pump(self, wait_ms: int) -> List[Event]:
         """Wait up to `wait_ms` for bytes, feed them (or run the timeouts) and deliver the events."""
-        data = self.transport.read(wait_ms / 1000.0)
+        try:
+            data = self.transport.read(wait_ms / 1000.0)
+        except TransportError as e:
+            return self._lost(e)
+        if self._quiet:
+            self._dropped += len(data)
         events = self.session.feed(data, self.now_ms())
         self._deliver(events)
         return events
+
+    # -------------------------------------------------------------- getting through
+    def _lost(self, error: TransportError) -> List[Event]:
+        """The port went away: the pending commands are lost; reconnect (or raise without it)."""
+        if self.reconnect_ms is None or self.reopen is None or self._linking:
+            raise error
+        reason = getattr(error, "reason", None) or str(error)
+        events = self.session.lose_pending(reason)
+        self._deliver(events)
+        self._reconnect(reason)
+        return events
+
+    def _reconnect(self, reason: str) -> None:
+        lost_at = self._clock()
+        assert self.reconnect_ms is not None and self.reopen is not None
+        self.log(f"link: port lost ({reason}), reopening {self.address} every {RECONNECT_EVERY_MS} ms")
+        try:
+            self.transport.close()
+        except OSError:
+            pass
+        deadline = lost_at + self.reconnect_ms / 1000.0
+        baud = getattr(self.transport, "baudrate", None)
+        while True:
+            try:
+                transport = self.reopen()
+                break
+            except (TransportError, OSError):
+                if self._clock() + RECONNECT_EVERY_MS / 1000.0 > deadline:
+                    self.log(f"link: gave up reopening {self.address} after {self.reconnect_ms} ms")
+                    raise LinkError(f"{self.address} did not come back within {self.reconnect_ms} ms") from None
+                time.sleep(RECONNECT_EVERY_MS / 1000.0)
+        if baud is not None and getattr(transport, "baudrate", None) not in (None, baud):
+            transport.baudrate = baud
+        self.transport = transport
+        self.session.reset_input()
+        self._linking = True
+        try:
+            if _link.IDLE is not None:
+                self.to_idle()
+            for command in list(self.settings.values()):
+                self.run(command)
+            if _link.RESUME is not None and not self._app_idle:
+                self.run(_command_of(_link.RESUME))
+        finally:
+            self._linking = False
+        elapsed = self._clock() - lost_at
+        self.log(f"link: reconnected after {elapsed:.1f} s, re-applied {len(self.settings)} settings")
+
+    def _mute(self, on: bool) -> None:
+        """Inside to_idle and the baud search: no handler and no event consumer sees what arrives
+        (it is counted and dropped); the handlers come back after."""
+        s = self.session
+        if on:
+            self._dropped = 0
+            self._mute_depth += 1
+            if self._mute_depth == 1:  # (a reconnect inside to_idle mutes again: nested)
+                self._quiet = True
+                self._muted = (s._packet_handlers, s._field_handlers, s._grouper)
+                s._packet_handlers, s._field_handlers, s._grouper = [], {}, None
+            return
+        self._mute_depth -= 1
+        if self._mute_depth == 0 and self._muted is not None:
+            self._quiet = False
+            s._packet_handlers, s._field_handlers, s._grouper = self._muted
+            self._muted = None
+
+    def _flush(self) -> None:
+        flush = getattr(self.transport, "flush_input", None)
+        if flush is not None:
+            flush()
+        self.session.reset_input()
+
+    def to_idle(self, timeout_ms: Optional[int] = None) -> Result:
+        """Get the device to idle while it may stream at full rate (docs/conformance.md section 8):
+        the idle command, data counted and dropped meanwhile, on a timeout a flush, a quiet time and
+        a retry, up to the spec's attempts. Returns the ACK's Result; raises LinkError after the
+        last attempt (its result in `.result`) or CommandFailed for a NACK."""
+        if _link.IDLE is None:
+            self.log("link: idle: the protocol has no idle command")
+            raise LinkError("the protocol has no idle command")
+        wait = self.session.timeout_ms if timeout_ms is None else timeout_ms
+        attempts = _link.IDLE_ATTEMPTS
+        command = _command_of(_link.IDLE)
+        result: Optional[Result] = None
+        for attempt in range(1, attempts + 1):
+            self._mute(True)
+            try:
+                p = self.start(command, wait)
+                while p.result is None:
+                    self.pump(max(0, (self.session.next_deadline() or p.deadline) - self.now_ms()))
+                result = p.result
+                dropped = self._dropped
+                if result.status == TIMEOUT and attempt < attempts:
+                    self._flush()
+                    end = self.now_ms() + IDLE_QUIET_MS
+                    while self.now_ms() < end:
+                        self.pump(max(0, end - self.now_ms()))
+                    self._flush()
+            finally:
+                self._mute(False)
+            if result.status == TIMEOUT:
+                if attempt < attempts:
+                    streaming = f" while streaming ({dropped} bytes dropped)" if dropped else ""
+                    self.log(
+                        f"link: idle: no ACK in {wait} ms{streaming}, flushing, attempt {attempt + 1} of {attempts}"
+                    )
+                    continue
+                self.log(f"link: idle: no ACK after {attempts} attempts, giving up")
+                error = LinkError(f"no ACK to {command.NAME} after {attempts} attempts")
+                error.result = result  # type: ignore[attr-defined]
+                raise error
+            if result.ok:
+                self.log(f"link: idle: ACK on attempt {attempt} of {attempts} ({dropped} bytes dropped)")
+                if not self._linking:
+                    self._app_idle = True
+                return result
+            return result.raise_for_status()
+        raise AssertionError("unreachable")  # pragma: no cover
+
+    def find_baud(self, timeout_ms: Optional[int] = None) -> Optional[int]:
+        """On a serial port (a transport with `baudrate`): ping at the configured rate, and without
+        an answer at the spec's rates of the model, most likely first; stays at the first that
+        answers and returns it. None over a transport without a baud rate (TCP). Raises LinkError
+        when no rate answers."""
+        if getattr(self.transport, "baudrate", None) is None:
+            return None
+        probe = _link.PING or _link.IDLE
+        if probe is None:
+            raise LinkError("the protocol has no ping command")
+        configured = int(self.transport.baudrate)
+        order = baud_search_order(self.device, configured)
+        command = _command_of(probe)
+        for i, rate in enumerate(order):
+            if rate != int(self.transport.baudrate):
+                self.transport.baudrate = rate
+            self._flush()
+            self._mute(True)
+            try:
+                result = self.run(command, timeout_ms)
+            finally:
+                self._mute(False)
+            if result.status != TIMEOUT:
+                if rate != configured:
+                    self.log(f"link: baud: device answers at {rate}")
+                return rate
+            if i + 1 < len(order):
+                self.log(f"link: baud: no answer at {rate}, trying {order[i + 1]}")
+        self.log("link: baud: no answer at any rate")
+        self.transport.baudrate = configured
+        raise LinkError(f"no answer at any baud rate ({', '.join(map(str, order))})")
 
     def listen(self, duration_ms: int) -> None:
         """Receive for `duration_ms`, routing every packet to the handlers."""
@@ -792,11 +1046,51 @@ class Device(_CommandSets):
         self.close()
 
 
-def connect(address: str, device: Optional[str] = None, baudrate: int = 115200, **options: Any) -> Device:
-    """A Device on `address`: "tcp:HOST:PORT" or a serial port path ("/dev/ttyUSB0", "COM3")."""
+def connect(
+    address: str, device: Optional[str] = None, baudrate: int = 115200, auto_baud: bool = False, **options: Any
+) -> Device:
+    """A Device on `address`: "tcp:HOST:PORT" or a serial port path ("/dev/ttyUSB0", "COM3").
+    Options of Device (`reconnect_ms`: a lost port is reopened at the same address, `log`);
+    `auto_baud`: find the rate the device answers at when `baudrate` gets no answer (a serial port)."""
     from .transport import open_transport
 
-    return Device(open_transport(address, baudrate), device, **options)
+    options.setdefault("reopen", lambda: open_transport(address, baudrate))
+    options.setdefault("address", address)
+    result = Device(open_transport(address, baudrate), device, **options)
+    if auto_baud:
+        result.find_baud()  # a reopened port is set to the rate found (Device._reconnect)
+    return result
+
+
+def baud_search_order(device: Optional[str], configured: int) -> Tuple[int, ...]:
+    """The baud rates to try when `configured` gets no answer, most likely first: the configured
+    rate, the model's default, then the model's rates from the highest down (without a model: the
+    defaults of every model that states one, then every model's rates), each once."""
+    devices = [device] if device is not None else list(registry.DEVICES)
+    order = [configured]
+    for d in devices:
+        default = _link.DEFAULT_BAUD.get(d)
+        if default is not None and default not in order:
+            order.append(default)
+    rates = sorted({r for d in devices for r in _link.BAUD_RATES.get(d, ())}, reverse=True)
+    order.extend(r for r in rates if r not in order)
+    return tuple(order)
+
+
+def _command_of(key: Tuple[int, int]) -> Field:
+    """The command (set, descriptor) of the link facts, as sent: no parameters."""
+    cls: Any = _meta.COMMANDS[key][0][0]
+    value: Field = cls()
+    return value
+
+
+def _plain_value(value: Any) -> Any:
+    """A parameter's value as a key (lists and structs as tuples)."""
+    if isinstance(value, list):
+        return tuple(_plain_value(v) for v in value)
+    if hasattr(value, "__slots__") and not isinstance(value, int):
+        return tuple(_plain_value(getattr(value, s, None)) for s in value.__slots__)
+    return value
 
 
 __all__ = [
@@ -813,6 +1107,9 @@ __all__ = [
     "CommandTimeout",
     "InvalidReply",
     "connect",
+    "baud_search_order",
+    "LinkLost",
+    "LinkError",
     "command_from_line",
     "command_info",
     "support_error",

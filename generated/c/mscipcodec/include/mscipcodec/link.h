@@ -55,13 +55,23 @@ typedef struct {
  * without a newline; valid during the call. */
 typedef void (*mscipc_link_log_fn)(void *ctx, const char *line);
 
+/** A command the link sends without parameters (idle, ping, resume); present false: none. */
+typedef struct {
+    bool present;
+    uint8_t set;
+    uint8_t descriptor;
+} mscipc_link_command_t;
+
 typedef struct {
     mscipc_link_log_fn log; /* may be NULL */
     void *log_ctx;
     uint32_t reconnect_ms;       /* reopen a lost port for up to this long (0: no reconnect) */
     uint32_t reopen_interval_ms; /* between reopen attempts */
     uint32_t quiet_ms;           /* the input drained after a flush, before the next attempt */
-    bool auto_baud;              /* mscipc_link_connect searches the baud rate when the ping fails */
+    bool auto_baud; /* the application searches the baud rate at connect (mscipc_link_find_baud) */
+    mscipc_link_command_t idle;   /* the spec's (MSCIPC_LINK_IDLE_*) */
+    mscipc_link_command_t ping;   /* the spec's (MSCIPC_LINK_PING_*) */
+    mscipc_link_command_t resume; /* the spec's (MSCIPC_LINK_RESUME_*) */
 } mscipc_link_options_t;
 
 #define MSCIPC_LINK_DEFAULT_RECONNECT_MS 10000u
@@ -139,7 +149,8 @@ int mscipc_link_listen(mscipc_link_t *link, uint32_t duration_ms);
 void mscipc_link_close(mscipc_link_t *link);
 
 /** Defaults: no log, reconnect for MSCIPC_LINK_DEFAULT_RECONNECT_MS every
- * MSCIPC_LINK_REOPEN_INTERVAL_MS, quiet time MSCIPC_LINK_QUIET_MS, no baud search. */
+ * MSCIPC_LINK_REOPEN_INTERVAL_MS, quiet time MSCIPC_LINK_QUIET_MS, no baud search, the idle, ping and
+ * resume commands of the spec's link section. */
 void mscipc_link_options_init(mscipc_link_options_t *options);
 
 /** Gives the link its port operations and options (either may be NULL: none, the defaults).

@@ -70,6 +70,9 @@ struct LinkOptions {
     std::int64_t reconnect_ms = 10000;     ///< reopen a lost port for up to this long (0: never)
     std::int64_t reopen_interval_ms = 500; ///< between reopen attempts
     std::int64_t quiet_ms = 50;            ///< the input drained after a flush, before a retry
+    LinkCommand idle = kLinkIdle;          ///< the spec's commands (link section)
+    LinkCommand ping = kLinkPing;
+    LinkCommand resume = kLinkResume;
 };
 
 /// What Connection::run returns: the command's result, or an I/O failure of the transport.
@@ -185,7 +188,7 @@ class Connection {
     /// kLinkIdleAttempts times in all, each with the command's timeout.
     Call to_idle() {
         Call call;
-        if (!kLinkIdle.present) {
+        if (!link_.idle.present) {
             log("link: idle: the protocol has no idle command");
             return refused(call, "the protocol has no idle command");
         }
@@ -193,7 +196,7 @@ class Connection {
         std::int64_t timeout = session_.options().timeout_ms;
         for (unsigned attempt = 1; attempt <= kLinkIdleAttempts; ++attempt) {
             dropped_ = 0;
-            with_bare(kLinkIdle, have, [&](const auto &idle) {
+            with_bare(link_.idle, have, [&](const auto &idle) {
                 timeout = session_.options().timeout_ms + allowance_ms(idle);
                 call = run_internal(idle);
             });
@@ -237,11 +240,11 @@ class Connection {
     /// time and a flush, and stays at the first that answers.
     Call find_baud() {
         Call call;
-        if (!kLinkPing.present) {
+        if (!link_.ping.present) {
             return refused(call, "the protocol has no ping command");
         }
         bool have = false;
-        with_bare(kLinkPing, have, [&](const auto &ping) { call = run_internal(ping); });
+        with_bare(link_.ping, have, [&](const auto &ping) { call = run_internal(ping); });
         if (!have) {
             return refused(call, "the ping command does not decode");
         }
@@ -266,7 +269,7 @@ class Connection {
                 continue;
             }
             flush_input();
-            with_bare(kLinkPing, have, [&](const auto &ping) { call = run_internal(ping); });
+            with_bare(link_.ping, have, [&](const auto &ping) { call = run_internal(ping); });
             if (call.io_error) {
                 return call;
             }
@@ -296,7 +299,7 @@ class Connection {
         session_.close(now_ms(), [&](const SessionEvent &e) { deliver(e); });
         const std::int64_t start = now_ms();
         while (!transport_.reopen()) {
-            if (now_ms() - start >= link_.reconnect_ms) {
+            if (now_ms() - start + link_.reopen_interval_ms > link_.reconnect_ms) {
                 internal_ = was;
                 connected_ = false;
                 log("link: gave up reopening " + (address.empty() ? std::string("the port") : address) +
@@ -309,11 +312,12 @@ class Connection {
         std::size_t applied = 0;
         const Call idle = to_idle();
         if (idle.ok()) {
-            applied = reapply();
+            reapply();
+            applied = setting_count_;
         }
         internal_ = was;
         log("link: reconnected after " + seconds(now_ms() - start) + " s, re-applied " +
-            std::to_string(applied) + (applied == 1 ? " setting" : " settings"));
+            std::to_string(applied) + " settings");
         return true;
     }
 
@@ -361,6 +365,11 @@ class Connection {
         std::array<std::uint8_t, kMaxPacket> data{}; ///< the field data
     };
 
+    static LinkOptions no_reconnect() {
+        LinkOptions o;
+        o.reconnect_ms = 0;
+        return o;
+    }
     void log(const std::string &line) {
         if (link_.log) {
             link_.log(line);
@@ -507,10 +516,11 @@ class Connection {
     template <class T> void record(const T &command, const std::uint8_t *packet, std::size_t size) {
         const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
         const std::optional<std::int64_t> fn = CommandTraits<T>::function(command);
-        if (kLinkIdle.present && row.set == kLinkIdle.set && row.descriptor == kLinkIdle.descriptor) {
+        if (link_.idle.present && row.set == link_.idle.set && row.descriptor == link_.idle.descriptor) {
             idled_ = true;
         }
-        if (kLinkResume.present && row.set == kLinkResume.set && row.descriptor == kLinkResume.descriptor) {
+        if (link_.resume.present && row.set == link_.resume.set &&
+            row.descriptor == link_.resume.descriptor) {
             idled_ = false;
         }
         if (!fn || (*fn != 1 && *fn != 6)) {
@@ -561,9 +571,9 @@ class Connection {
             CommandPick<decltype(resend)> pick{resend, have};
             decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, pick);
         }
-        if (kLinkResume.present && !idled_) {
+        if (link_.resume.present && !idled_) {
             bool have = false;
-            with_bare(kLinkResume, have, [&](const auto &resume) { run_internal(resume); });
+            with_bare(link_.resume, have, [&](const auto &resume) { run_internal(resume); });
         }
         return done;
     }
@@ -608,7 +618,7 @@ class Connection {
     Clock clock_;
     std::function<void(const SessionEvent &)> on_event_;
     std::array<std::uint8_t, 4096> buf_{};
-    LinkOptions link_{{}, 0, 500, 50};
+    LinkOptions link_ = no_reconnect();
     bool internal_ = false;
     bool connected_ = true;
     bool idled_ = false; // the application's last idle or resume command was an idle

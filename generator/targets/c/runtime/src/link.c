@@ -158,6 +158,10 @@ static uint8_t key_length(const codec_link_t *link, uint8_t set, uint8_t descrip
     return (uint8_t)(n - 1);
 }
 
+static bool is_command(const codec_link_command_t *c, const codec_command_facts_t *facts) {
+    return c->present && c->set == facts->set && c->descriptor == facts->descriptor;
+}
+
 /* Records a setting the application wrote (function write or write_no_ack of a command with a
  * function selector, acknowledged or sent): the latest per key replaces the earlier one and moves
  * to the end (the order of the writes); one more than CODEC_LINK_MAX_SETTINGS keys forgets the
@@ -172,16 +176,12 @@ static void record(codec_link_t *link, const codec_field_value_t *command) {
     if (!codec_command_facts(command, &facts)) {
         return;
     }
-#if CODEC_LINK_HAS_IDLE
-    if (facts.set == CODEC_LINK_IDLE_SET && facts.descriptor == CODEC_LINK_IDLE_DESCRIPTOR) {
+    if (is_command(&link->options.idle, &facts)) {
         link->idled = true;
     }
-#endif
-#if CODEC_LINK_HAS_RESUME
-    if (facts.set == CODEC_LINK_RESUME_SET && facts.descriptor == CODEC_LINK_RESUME_DESCRIPTOR) {
+    if (is_command(&link->options.resume, &facts)) {
         link->idled = false;
     }
-#endif
     if ((facts.function != 1 && facts.function != 6) ||
         codec_encode_field(command, data, sizeof data, &n) != CODEC_OK || n == 0) {
         return;
@@ -331,6 +331,15 @@ void codec_link_options_init(codec_link_options_t *options) {
     options->reconnect_ms = CODEC_LINK_DEFAULT_RECONNECT_MS;
     options->reopen_interval_ms = CODEC_LINK_REOPEN_INTERVAL_MS;
     options->quiet_ms = CODEC_LINK_QUIET_MS;
+    options->idle.present = CODEC_LINK_HAS_IDLE != 0;
+    options->idle.set = CODEC_LINK_IDLE_SET;
+    options->idle.descriptor = CODEC_LINK_IDLE_DESCRIPTOR;
+    options->ping.present = CODEC_LINK_HAS_PING != 0;
+    options->ping.set = CODEC_LINK_PING_SET;
+    options->ping.descriptor = CODEC_LINK_PING_DESCRIPTOR;
+    options->resume.present = CODEC_LINK_HAS_RESUME != 0;
+    options->resume.set = CODEC_LINK_RESUME_SET;
+    options->resume.descriptor = CODEC_LINK_RESUME_DESCRIPTOR;
 }
 
 void codec_link_attach(codec_link_t *link, const codec_port_t *port, const codec_link_options_t *options) {
@@ -385,7 +394,6 @@ static int drain(codec_link_t *link, uint32_t ms) {
     return rc;
 }
 
-#if CODEC_LINK_HAS_PING || CODEC_LINK_HAS_IDLE
 /* Flushes the input: the port's, then the parser's buffered bytes (skipped; stream offsets go on). */
 static void flush_input(codec_link_t *link) {
     bool was = link->internal;
@@ -397,14 +405,13 @@ static void flush_input(codec_link_t *link) {
     link->internal = was;
 }
 
-/* A command without parameters, (set, descriptor), as a value. */
-static bool bare_command(const codec_link_t *link, uint8_t set, uint8_t descriptor,
+/* A command without parameters as a value; false when there is none or it does not decode. */
+static bool bare_command(const codec_link_t *link, const codec_link_command_t *c,
                          codec_field_value_t *value) {
-    return codec_decode_field(set, descriptor, NULL, 0, link->session.config.device, value, NULL) == CODEC_OK;
+    return c->present && codec_decode_field(c->set, c->descriptor, NULL, 0, link->session.config.device,
+                                            value, NULL) == CODEC_OK;
 }
-#endif
 
-#if CODEC_LINK_HAS_IDLE
 /* The reply timeout of a command as the session gives it (T + the spec's allowance). */
 static uint64_t command_timeout(const codec_link_t *link, const codec_field_value_t *command) {
     codec_command_facts_t facts;
@@ -414,18 +421,19 @@ static uint64_t command_timeout(const codec_link_t *link, const codec_field_valu
     }
     return t;
 }
-#endif
 
 codec_result_kind_t codec_link_to_idle(codec_link_t *link) {
-#if CODEC_LINK_HAS_IDLE
     codec_field_value_t idle;
     codec_result_kind_t kind = CODEC_RESULT_TIMEOUT;
     unsigned attempt;
     uint64_t timeout;
     line_t l;
     assert(link != NULL);
-    if (!bare_command(link, CODEC_LINK_IDLE_SET, CODEC_LINK_IDLE_DESCRIPTOR, &idle)) {
-        return codec_link_fail(link, CODEC_RESULT_REFUSED, "the idle command does not decode");
+    if (!bare_command(link, &link->options.idle, &idle)) {
+        line_init(&l, link);
+        line_add(&l, "link: idle: the protocol has no idle command");
+        log_line(link, &l);
+        return codec_link_fail(link, CODEC_RESULT_REFUSED, "the protocol has no idle command");
     }
     timeout = command_timeout(link, &idle);
     for (attempt = 1; attempt <= CODEC_LINK_IDLE_ATTEMPTS; attempt++) {
@@ -478,14 +486,6 @@ codec_result_kind_t codec_link_to_idle(codec_link_t *link) {
     line_add(&l, " attempts, giving up");
     log_line(link, &l);
     return kind;
-#else
-    line_t l;
-    assert(link != NULL);
-    line_init(&l, link);
-    line_add(&l, "link: idle: the protocol has no idle command");
-    log_line(link, &l);
-    return codec_link_fail(link, CODEC_RESULT_REFUSED, "the protocol has no idle command");
-#endif
 }
 
 static void sleep_ms(codec_link_t *link, uint32_t ms) {
@@ -499,7 +499,6 @@ static void sleep_ms(codec_link_t *link, uint32_t ms) {
     }
 }
 
-#if CODEC_LINK_HAS_PING
 /* Adds rate v to out[0..*n) unless it is 0 or there already. */
 static void add_rate(uint32_t *out, size_t cap, size_t *n, uint32_t v) {
     size_t j;
@@ -560,18 +559,16 @@ static size_t candidate_rates(const codec_link_t *link, uint32_t *out, size_t ca
     }
     return n;
 }
-#endif
 
 codec_result_kind_t codec_link_find_baud(codec_link_t *link) {
-#if CODEC_LINK_HAS_PING
     codec_field_value_t ping;
     uint32_t rates[CODEC_LINK_MAX_BAUD_RATES + 2];
     size_t n;
     size_t i;
     codec_result_kind_t kind;
     assert(link != NULL);
-    if (!bare_command(link, CODEC_LINK_PING_SET, CODEC_LINK_PING_DESCRIPTOR, &ping)) {
-        return codec_link_fail(link, CODEC_RESULT_REFUSED, "the ping command does not decode");
+    if (!bare_command(link, &link->options.ping, &ping)) {
+        return codec_link_fail(link, CODEC_RESULT_REFUSED, "the protocol has no ping command");
     }
     kind = run_internal(link, &ping, NULL);
     if (kind != CODEC_RESULT_TIMEOUT || link->port.set_baud == NULL) {
@@ -613,10 +610,6 @@ codec_result_kind_t codec_link_find_baud(codec_link_t *link) {
             return kind;
         }
     }
-#else
-    assert(link != NULL);
-    return codec_link_fail(link, CODEC_RESULT_REFUSED, "the protocol has no ping command");
-#endif
 }
 
 /* Re-sends the recorded settings in order; returns how many were acknowledged (or sent). */
@@ -636,15 +629,12 @@ static size_t reapply(codec_link_t *link) {
             done++;
         }
     }
-#if CODEC_LINK_HAS_RESUME
     if (!link->idled) {
         codec_field_value_t resume;
-        if (codec_decode_field(CODEC_LINK_RESUME_SET, CODEC_LINK_RESUME_DESCRIPTOR, NULL, 0,
-                               link->session.config.device, &resume, NULL) == CODEC_OK) {
+        if (bare_command(link, &link->options.resume, &resume)) {
             (void)run_internal(link, &resume, NULL);
         }
     }
-#endif
     return done;
 }
 
@@ -682,7 +672,7 @@ int codec_link_reconnect(codec_link_t *link) {
         if (link->port.reopen(link->port.ctx) == 0) {
             break;
         }
-        if (now_ms(link) - start >= link->options.reconnect_ms) {
+        if (now_ms(link) - start + link->options.reopen_interval_ms > link->options.reconnect_ms) {
             link->internal = was;
             link->connected = false;
             line_init(&l, link);
@@ -699,7 +689,8 @@ int codec_link_reconnect(codec_link_t *link) {
     link->connected = true;
     applied = 0;
     if (codec_link_to_idle(link) == CODEC_RESULT_ACK) {
-        applied = reapply(link);
+        (void)reapply(link);
+        applied = link->setting_count;
     }
     link->internal = was;
     line_init(&l, link);

@@ -1,9 +1,9 @@
 // Getting through (src/link.c, docs/conformance.md section 8 "Getting through") on the rendered
-// test protocol (tests/runtime_specs/: its link section makes ping the idle and the ping command,
-// alpha's main port 9600, 115200 (default), 921600 baud, 250 ms settle time, 3 idle attempts by
-// default): to idle while the device streams, the baud rate found, a lost port reopened with the
-// configuration re-sent, and the log lines. A fake device over a fake clock: every read of a
-// streaming device returns one data packet 10 ms later.
+// test protocol (tests/runtime_specs/: its link section names ping, alpha's main port 9600, 115200
+// (default), 921600 baud, 3 idle attempts by default; it has no idle command: these tests give the
+// ping its place through the options): to idle while the device streams, the baud rate found, a
+// lost port reopened with the configuration re-sent, and the log lines. A fake device over a fake clock:
+// every read of a streaming device returns one data packet 10 ms later.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -78,7 +78,7 @@ int dev_write(void *ctx, const uint8_t *data, size_t len) {
         return 0;
     }
     const uint8_t descriptor = data[CODEC_HEADER_SIZE + CODEC_FIELD_DESCRIPTOR_OFFSET];
-    if (descriptor == CODEC_LINK_IDLE_DESCRIPTOR) {
+    if (descriptor == CODEC_LINK_PING_DESCRIPTOR) { /* the idle command of these tests */
         d->streaming = false;
     }
     std::vector<uint8_t> ack = build(0x01, 0xF1, {descriptor, 0x00});
@@ -163,6 +163,7 @@ struct Fixture {
         o.log = dev_log;
         o.log_ctx = &dev;
         o.reconnect_ms = reconnect_ms;
+        o.idle = o.ping; // the ping in the idle command's place
         codec_link_attach(&link, &port, &o);
     }
 };
@@ -265,7 +266,7 @@ TEST(LinkGettingThrough, ReconnectsAndReappliesTheConfiguration) {
                              "link: reconnected after 1.0 s, re-applied 1 settings"}));
     ASSERT_EQ(f.dev.commands.size(), 2u);
     EXPECT_EQ(f.dev.commands[0][CODEC_HEADER_SIZE + CODEC_FIELD_DESCRIPTOR_OFFSET],
-              CODEC_LINK_IDLE_DESCRIPTOR);
+              CODEC_LINK_PING_DESCRIPTOR);
     EXPECT_EQ(f.dev.commands[1], written);
     EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, NULL), CODEC_RESULT_ACK); // and on it goes
 }
@@ -290,11 +291,25 @@ TEST(LinkGettingThrough, GivesUpWhenThePortStaysAway) {
     codec_field_value_t ping = command(0x01, {});
     EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, NULL), CODEC_RESULT_LOST);
     EXPECT_FALSE(f.link.connected);
-    // Reopened at 0, 500, 1000 and 1500 ms: 1500 is past the 1200 ms.
+    // Reopened at 0, 500 and 1000 ms: another 500 ms would be past the 1200 ms.
     ASSERT_EQ(f.dev.log.size(), 2u);
     EXPECT_EQ(f.dev.log[1], "link: gave up reopening /tmp/x/dev after 1200 ms");
-    EXPECT_EQ(f.dev.sleeps, (std::vector<uint32_t>{500, 500, 500}));
+    EXPECT_EQ(f.dev.sleeps, (std::vector<uint32_t>{500, 500}));
     EXPECT_EQ(codec_link_listen(&f.link, 10), -1);
+}
+
+TEST(LinkGettingThrough, WithoutAnIdleCommandToIdleIsRefused) {
+    static Fixture f;
+    codec_link_options_t o;
+    codec_link_options_init(&o);
+    EXPECT_FALSE(o.idle.present); // the test protocol names none
+    o.log = dev_log;
+    o.log_ctx = &f.dev;
+    codec_link_attach(&f.link, &f.port, &o);
+    EXPECT_EQ(codec_link_to_idle(&f.link), CODEC_RESULT_REFUSED);
+    EXPECT_STREQ(f.link.result.error, "the protocol has no idle command");
+    EXPECT_EQ(f.dev.log, (std::vector<std::string>{"link: idle: the protocol has no idle command"}));
+    EXPECT_TRUE(f.dev.commands.empty());
 }
 
 TEST(LinkGettingThrough, NoReconnectWithoutTheOption) {

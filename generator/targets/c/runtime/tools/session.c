@@ -26,9 +26,12 @@
 
 typedef struct {
     codec_device_t device;
-    uint8_t *received; /* every byte received (skip lines print theirs) */
+    uint8_t *received; /* the bytes received from stream offset received_base on that the parser has
+                          not decided on yet (skip lines print theirs) */
     size_t received_len;
     size_t received_cap;
+    uint64_t received_base;
+    const codec_parser_t *parser;
     int failed;
 } tool_t;
 
@@ -54,7 +57,10 @@ static void on_event(void *ctx, const codec_session_event_t *ev) {
     } else {
         uint64_t off = ev->stream->offset;
         uint64_t len = ev->stream->length;
-        const uint8_t *bytes = off + len <= tool->received_len ? tool->received + off : NULL;
+        const uint8_t *bytes =
+            off >= tool->received_base && off - tool->received_base + len <= tool->received_len
+                ? tool->received + (off - tool->received_base)
+                : NULL;
         n = codec_json_skip_line(off, bytes, bytes ? (size_t)len : 0, g_line, sizeof g_line);
     }
     print_line(n);
@@ -69,7 +75,18 @@ typedef struct {
 static int rec_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
     recorder_t *r = (recorder_t *)ctx;
     tool_t *t = r->tool;
-    int n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
+    int n;
+    /* the bytes before the parser's pending skip run and buffered candidate are printed already:
+     * dropped, so that the recording stays bounded while data streams */
+    uint64_t keep = t->parser->skip_count > 0 ? t->parser->skip_offset : t->parser->base;
+    if (keep > t->received_base) {
+        size_t drop = (size_t)(keep - t->received_base);
+        drop = drop < t->received_len ? drop : t->received_len;
+        memmove(t->received, t->received + drop, t->received_len - drop);
+        t->received_len -= drop;
+        t->received_base += drop;
+    }
+    n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
     if (n > 0) {
         if (t->received_len + (size_t)n > t->received_cap) {
             size_t cap2 = (t->received_cap + (size_t)n) * 2;
@@ -353,6 +370,7 @@ int main(int argc, char **argv) {
     link_options.reconnect_ms = (uint32_t)reconnect_ms;
     link_options.auto_baud = auto_baud;
     codec_link_attach(&link, &port, &link_options);
+    tool.parser = &link.session.parser;
     if (auto_baud && port.set_baud != NULL) {
         kind = codec_link_find_baud(&link);
         if (kind != CODEC_RESULT_ACK) {

@@ -54,13 +54,23 @@ typedef struct {
  * without a newline; valid during the call. */
 typedef void (*codec_link_log_fn)(void *ctx, const char *line);
 
+/** A command the link sends without parameters (idle, ping, resume); present false: none. */
+typedef struct {
+    bool present;
+    uint8_t set;
+    uint8_t descriptor;
+} codec_link_command_t;
+
 typedef struct {
     codec_link_log_fn log; /* may be NULL */
     void *log_ctx;
     uint32_t reconnect_ms;       /* reopen a lost port for up to this long (0: no reconnect) */
     uint32_t reopen_interval_ms; /* between reopen attempts */
     uint32_t quiet_ms;           /* the input drained after a flush, before the next attempt */
-    bool auto_baud;              /* codec_link_connect searches the baud rate when the ping fails */
+    bool auto_baud;            /* the application searches the baud rate at connect (codec_link_find_baud) */
+    codec_link_command_t idle; /* the spec's (CODEC_LINK_IDLE_*) */
+    codec_link_command_t ping; /* the spec's (CODEC_LINK_PING_*) */
+    codec_link_command_t resume; /* the spec's (CODEC_LINK_RESUME_*) */
 } codec_link_options_t;
 
 #define CODEC_LINK_DEFAULT_RECONNECT_MS 10000u
@@ -138,7 +148,8 @@ int codec_link_listen(codec_link_t *link, uint32_t duration_ms);
 void codec_link_close(codec_link_t *link);
 
 /** Defaults: no log, reconnect for CODEC_LINK_DEFAULT_RECONNECT_MS every
- * CODEC_LINK_REOPEN_INTERVAL_MS, quiet time CODEC_LINK_QUIET_MS, no baud search. */
+ * CODEC_LINK_REOPEN_INTERVAL_MS, quiet time CODEC_LINK_QUIET_MS, no baud search, the idle, ping and
+ * resume commands of the spec's link section. */
 void codec_link_options_init(codec_link_options_t *options);
 
 /** Gives the link its port operations and options (either may be NULL: none, the defaults).
