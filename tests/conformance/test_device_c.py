@@ -303,3 +303,27 @@ def test_mutated_dumps_never_crash(tool: Path, tmp_path: Path) -> None:
             if run.returncode == 2:
                 for line in err.splitlines():
                     assert line.startswith((f"{f}:", "mipcodec-device: ")), (mutated, err)
+
+
+def test_diff_of_a_device_that_does_not_answer_is_trouble(tool: Path, tmp_path: Path) -> None:
+    path = tmp_path / "bias.yaml"
+    path.write_text("accel_bias:\n  bias: [0.0, 0.0, 0.0]\n")
+    with Sim("gx5_45", "pty", "--drop", "accel_bias") as sim:
+        run = ctool(tool, sim.address, "settings", "diff", str(path), "--timeout-ms", "300")
+        assert run.returncode == 2, run.stderr
+        assert "cannot read the device: accel_bias: no reply before the timeout" in run.stderr
+
+
+def test_apply_follows_a_baud_rate_change_on_a_serial_port(tool: Path, tmp_path: Path) -> None:
+    # the simulator's --baud: the change is acknowledged at the old rate, then the pty serves the
+    # new rate only; apply writes it last, waits the settle time (spec link) and reads it back there
+    path = tmp_path / "baud.yaml"
+    path.write_text("uart_baudrate:\n  baud: 921600\naccel_bias:\n  bias: [0.5, 0.0, 0.0]\n")
+    with Sim("gx5_45", "pty", "--baud") as sim:
+        run = ctool(tool, sim.address, "settings", "apply", str(path))
+        assert run.returncode == 0, run.stderr
+        assert run.stdout.splitlines()[-2:] == [
+            "uart_baudrate: baud: 115200 -> 921600",
+            "2 settings written and read back",
+        ]
+        assert ctool(tool, sim.address, "ping", "--baud", "921600").returncode == 0

@@ -3272,7 +3272,7 @@ typedef struct {
 } change_t;
 
 /* The file's entries that differ from what the device reads now: 0, or the exit status. */
-static int differences(conn_t *c, const plan_t *plan, change_t **out, size_t *count) {
+static int differences(conn_t *c, const plan_t *plan, change_t **out, size_t *count, bool diff) {
     size_t i;
     size_t k;
     *out = NULL;
@@ -3295,6 +3295,10 @@ static int differences(conn_t *c, const plan_t *plan, change_t **out, size_t *co
             }
             run = read_entry(c, p->setting, key, &current, &nack, msg, sizeof msg);
             val_free(key);
+            if (run != R_OK && diff) { /* trouble, not a difference (exit 2, as diff(1)) */
+                note("cannot read the device: %s", msg);
+                return EXIT_TROUBLE;
+            }
             if (run != R_OK) {
                 note("%s", msg);
                 return run == R_FAILED ? EXIT_REFUSED : EXIT_TROUBLE;
@@ -3359,7 +3363,7 @@ static int cmd_diff(conn_t *c, const opts_t *o) {
     if (status) {
         return status;
     }
-    status = differences(c, &plan, &changes, &count);
+    status = differences(c, &plan, &changes, &count, true);
     if (status == 0) {
         for (i = 0; i < count; i++) {
             char what[400];
@@ -3452,7 +3456,7 @@ static int cmd_apply(conn_t *c, const opts_t *o) {
     }
     free(formats);
     if (status == 0) {
-        status = differences(c, &plan, &changes, &count);
+        status = differences(c, &plan, &changes, &count, false);
     }
     if (status == 0) {
         /* a baud rate change goes last: the link follows it (a stable order otherwise) */
