@@ -29,6 +29,7 @@ from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
+from generator.settings_rows import setting_rows
 from generator.targets.python import facts
 from generator.testcases import (
     EnumValue,
@@ -1125,97 +1126,45 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
     attributes set from lists, the key combinations read), per device the largest size of every
     data field with its header (the link budget, runtime budget.py), and the file's JSON Schema."""
     proto = m.p
-    spec = proto.get("settings") or {"not_settings": [], "keys": []}
-    excluded = {e["command"] for e in spec["not_settings"]}
-    fsel = m.function_enum
     rows: dict[str, list[str]] = {d["id"]: [] for d in proto["devices"]}
-    sizes: dict[str, dict] = {d["id"]: {} for d in proto["devices"]}
     props: dict[str, list[dict]] = {}
     modules = set()
-    for sm in sets:
-        s = sm["set"]
-        names = _layout_classes(s["fields"])
-        by_id = {f["id"]: f for f in s["fields"]}
-        for f, v, dev in model.layouts_of(s["fields"]):
-            if s["kind"] == "data" and f["role"] == "data":
-                for d in v["devices"]:
-                    sizes[d][(s["id"], f["id"])] = v["size"]["max"]
-                continue
-            fns = v["functions"] or []
-            if f["role"] != "command" or f["name"] in excluded or "read" not in fns or "write" not in fns:
-                continue
-            reply = next((r for r in v["responses"] if (r.get("when") or {}).get("function") == "read"), None)
-            if reply is None:
-                continue
-            rf = by_id[reply["id"]]
-            rvariant, rdev = next(
-                (rv, (rv["device"] if len(rf["variants"]) > 1 else None))
-                for rv in rf["variants"]
-                if set(rv["devices"]) & set(v["devices"])
+    by_set = {sm["set"]["id"]: sm for sm in sets}
+    found, sizes = setting_rows(proto, [sm["set"] for sm in sets])
+    for r in found:
+        sm = by_set[r["set"]["id"]]
+        f, v, rf = r["field"], r["variant"], r["reply_field"]
+        names = _layout_classes(sm["set"]["fields"])
+        keyed = r["keyed"]
+        attrs = tuple((py_attr(q), py_attr(rq), units) for q, rq, units, _ in r["attrs"])
+        fill = tuple((py_attr(q), [] if is_list else 0) for q, is_list in r["fill"])
+        held = r["held"]
+        cls = f"{sm['module']}.{names[(f['name'], r['dev'])]}"
+        rcls = f"{sm['module']}.{names[(rf['name'], r['reply_dev'])]}"
+        modules.add(sm["module"])
+        for d in v["devices"]:
+            keys = [{py_attr(n): x for n, x in combo.items()} for combo in r["keys"][d]]
+            row = (
+                f["name"],
+                (sm["set"]["id"], f["id"]),
+                tuple(py_attr(n) for n in keyed),
+                attrs,
+                tuple((py_attr(c), py_attr(lst)) for c, lst in r["counts"].items()),
+                tuple(tuple(sorted(k.items())) for k in keys),
+                fill,
             )
-            params = [q for q in v["params"] if q["type"].get("name") != fsel]
-            written = [q for q in params if "write" in (q["functions"] or [])]
-            counts = {q["count"]["param"]: q["name"] for q in written if (q.get("count") or {}).get("kind") == "param"}
-            rparams = [q["name"] for q in rvariant["params"]]
-            attrs = []
-            held_names: set[str] = set()
-            for i, q in enumerate(written):
-                if q["name"] in counts:
-                    continue
-                # the reply's parameter of that name, else of that place when the lists match in length
-                # (data_stream_control: enable -> enabled); else none: not read back, not in a file
-                same = len(rparams) == len(written)
-                r = q["name"] if q["name"] in rparams else (rparams[i] if same else None)
-                if r is None:
-                    continue
-                attrs.append((py_attr(q["name"]), py_attr(r), q.get("units")))
-                held_names.add(q["name"])
-            keyed = [q["name"] for q in params if not q["optional"] and "read" in (q["functions"] or [])]
-            held = [q for q in written if q["name"] in held_names]
-            # written but not read back (a reserved byte): sent as zero (an empty list)
-            fill = tuple(
-                (py_attr(q["name"]), [] if q.get("count") else 0)
-                for q in written
-                if q["name"] not in held_names and q["name"] not in counts
-            )
-            cls = f"{sm['module']}.{names[(f['name'], dev)]}"
-            rcls = f"{sm['module']}.{names[(rf['name'], rdev)]}"
-            modules.add(sm["module"])
-            for d in v["devices"]:
-                keys: list[dict] = [{}]
-                if keyed:
-                    entry = next(
-                        (
-                            k
-                            for k in spec["keys"]
-                            if k["command"] == f["name"] and set(k["values"]) == set(keyed) and d in k["resolved"]
-                        ),
-                        None,
-                    )
-                    keys = (
-                        [{py_attr(n): x for n, x in combo.items()} for combo in entry["resolved"][d]] if entry else []
-                    )
-                row = (
-                    f["name"],
-                    (s["id"], f["id"]),
-                    tuple(py_attr(n) for n in keyed),
-                    tuple(attrs),
-                    tuple((py_attr(c), py_attr(lst)) for c, lst in counts.items()),
-                    tuple(tuple(sorted(k.items())) for k in keys),
-                    fill,
-                )
-                rows[d].append(f"({cls}, {rcls}, {pyrepr(row)})")
-            obj = {
-                "type": "object",
-                "additionalProperties": False,
-                "properties": {q["name"]: _json_schema_type(m, q) for q in held},
-                "required": [q["name"] for q in held if q["name"] in keyed],
-            }
-            if not obj["required"]:
-                del obj["required"]
-            one = {"type": "array", "items": obj} if keyed else obj
-            title = f"{f['title']} (0x{s['id']:02X},0x{f['id']:02X}); {', '.join(v['devices'])}"
-            props.setdefault(f["name"], []).append({**one, "description": title})
+            rows[d].append(f"({cls}, {rcls}, {pyrepr(row)})")
+        obj = {
+            "type": "object",
+            "additionalProperties": False,
+            "properties": {q["name"]: _json_schema_type(m, q) for q in held},
+            "required": [q["name"] for q in held if q["name"] in keyed],
+        }
+        if not obj["required"]:
+            del obj["required"]
+        one = {"type": "array", "items": obj} if keyed else obj
+        title = f"{f['title']} (0x{sm['set']['id']:02X},0x{f['id']:02X}); {', '.join(v['devices'])}"
+        props.setdefault(f["name"], []).append({**one, "description": title})
     schema = {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": f"{m.package}-settings.schema.json",

@@ -51,6 +51,7 @@ const char *codec_device_manual(codec_device_t device);
 bool codec_device_supports(codec_device_t device, uint8_t set, uint8_t descriptor);
 const uint32_t *codec_device_baud_rates(codec_device_t device, size_t *count);
 uint32_t codec_device_default_baud(codec_device_t device);
+codec_set_kind_t codec_set_kind(uint8_t set);
 const codec_layout_info_t *codec_layout_info(codec_field_id_t id);
 const codec_field_info_t *codec_find_field(uint8_t set, uint8_t descriptor, codec_status_t *why);
 codec_status_t codec_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
@@ -89,13 +90,30 @@ struct codec_contract {
     const uint32_t *(*device_baud_rates)(codec_device_t, size_t *);
     uint32_t (*device_default_baud)(codec_device_t);
     codec_device_t any;
+    codec_set_kind_t (*set_kind)(uint8_t);
+    codec_set_kind_t kinds[2];
 };
 
 extern const struct codec_contract codec_contract;
 const struct codec_contract codec_contract = {
-    codec_device_id,           codec_device_from_id,     codec_device_title,        codec_device_manual,
-    codec_device_supports,     codec_layout_info,        codec_find_field,          codec_decode_field,
-    codec_encode_field,        codec_value_to_json,      codec_value_from_json,     codec_command_facts,
-    codec_function_name,       codec_session_ack_decode, codec_field_length_adjust, codec_device_baud_rates,
-    codec_device_default_baud, CODEC_DEVICE_ANY,
+    codec_device_id,
+    codec_device_from_id,
+    codec_device_title,
+    codec_device_manual,
+    codec_device_supports,
+    codec_layout_info,
+    codec_find_field,
+    codec_decode_field,
+    codec_encode_field,
+    codec_value_to_json,
+    codec_value_from_json,
+    codec_command_facts,
+    codec_function_name,
+    codec_session_ack_decode,
+    codec_field_length_adjust,
+    codec_device_baud_rates,
+    codec_device_default_baud,
+    CODEC_DEVICE_ANY,
+    codec_set_kind,
+    {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
 };

@@ -1,0 +1,200 @@
+/* The tables of the device tool (democodec-device, tools/device.c; docs/configure-a-device.md): every
+ * setting of every model (a command with the write and read functions that the spec's `settings`
+ * section does not exclude; the same derivation as the Python package's _settings.py,
+ * generator/settings_rows.py), the enums their parameters name, the largest data size of every data
+ * field (the link budget), and the facts of the spec's simulation section the tool uses.
+ * Generated from the spec: do not edit. */
+#ifndef DEMOC_TOOLS_DEVICE_FACTS_H
+#define DEMOC_TOOLS_DEVICE_FACTS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    const char *name; /* lower case, as in a settings file */
+    int64_t value;
+} dev_member_t;
+
+typedef struct {
+    const char *name; /* the type's name in messages */
+    const dev_member_t *members;
+    size_t count;
+} dev_enum_t;
+
+typedef struct {
+    const char *name;  /* the write's parameter (the file's key) */
+    const char *reply; /* the read reply's parameter */
+    const char *units; /* NULL: none */
+    int enum_index;    /* into DEV_ENUMS, -1: not an enum */
+} dev_attr_t;
+
+typedef struct {
+    const char *name; /* the command */
+    uint8_t set;
+    uint8_t descriptor;
+    const char *device;       /* the layout's device when the field has per-device layouts, else NULL */
+    const char *reply;        /* the read reply field */
+    const char *const *keyed; /* the parameters the read sends */
+    size_t keyed_count;
+    const dev_attr_t *attrs; /* what a file entry holds, in order */
+    size_t attr_count;
+    const char *const *counts; /* pairs: count parameter, list parameter */
+    size_t count_count;
+    const char *const *fill; /* written but not read back: sent as zero (or an empty list) */
+    const unsigned char *fill_list;
+    size_t fill_count;
+    const int64_t *keys; /* key_count rows of keyed_count values: the key combinations dump reads */
+    size_t key_count;
+} dev_setting_t;
+
+typedef struct {
+    uint8_t set;
+    uint8_t descriptor;
+    uint16_t size; /* the largest data size, without the field header */
+} dev_size_t;
+
+typedef struct {
+    uint8_t set;
+    double hz;
+} dev_rate_t;
+
+typedef struct {
+    const char *id;
+    const char *model_name; /* the identity's model name (the spec's simulation) */
+    const dev_setting_t *settings;
+    size_t setting_count;
+    const dev_size_t *sizes;
+    size_t size_count;
+    const dev_rate_t *base_rates;
+    size_t base_rate_count;
+    const uint8_t *unaddressed; /* data sets the stream control cannot address */
+    size_t unaddressed_count;
+} dev_model_t;
+
+/* message formats: (set, descriptor) of the command; its data set (set >= 0) or the parameter that
+ * names it; the list parameter and its items' descriptor and decimation members (NULL: none) */
+typedef struct {
+    uint8_t cmd_set;
+    uint8_t cmd_descriptor;
+    int set;
+    const char *set_param;
+    const char *list;
+    const char *descriptor;
+    const char *decimation;
+} dev_format_t;
+
+typedef struct {
+    uint8_t cmd_set;
+    uint8_t cmd_descriptor;
+    int set;
+    const char *set_param;
+} dev_rate_query_t;
+
+typedef struct {
+    uint8_t cmd_set;
+    uint8_t cmd_descriptor;
+    const char *flag;
+    const char *selector;        /* NULL: none */
+    const int64_t *selector_map; /* pairs: selector value, data set */
+    size_t selector_count;
+    const char *set_param; /* NULL: none */
+} dev_enable_t;
+
+typedef struct {
+    uint8_t cmd_set;
+    uint8_t cmd_descriptor;
+    const char *param;
+} dev_baud_t;
+
+typedef struct {
+    uint8_t cmd_set;
+    uint8_t cmd_descriptor;
+    uint8_t reply_descriptor;
+    const char *param;
+    unsigned char u16; /* items are u16: (set << 8) | descriptor; else structs of two members */
+} dev_list_t;
+
+typedef struct {
+    uint8_t set; /* of the reply */
+    uint8_t descriptor;
+    const char *path[4]; /* the parameter path in the reply, NULL-terminated */
+    const char *item;
+} dev_report_t;
+
+typedef struct {
+    const char *name;
+    int64_t value;
+} dev_function_t;
+
+static const dev_function_t DEV_FUNCTIONS[] = {{"write", 1}, {"read", 2}, {"save", 3}, {NULL, 0}};
+static const size_t DEV_FUNCTION_COUNT = 3u;
+
+static const dev_enum_t DEV_ENUMS[] = {{NULL, NULL, 0}};
+/* the ack code's enum (NACK messages), -1: none */
+#define DEV_ACK_ENUM (-1)
+
+static const char *const DEV_KEYED_dev_a_0[] = {"instance", NULL};
+static const dev_attr_t DEV_ATTRS_dev_a_0[] = {{"instance", "instance", NULL, -1}, {NULL, NULL, NULL, -1}};
+static const char *const DEV_COUNTS_dev_a_0[] = {NULL};
+static const char *const DEV_FILL_dev_a_0[] = {"mode", "params", "suppress_ack", NULL};
+static const unsigned char DEV_FILL_LIST_dev_a_0[] = {0, 0, 0, 0};
+static const int64_t DEV_KEYS_dev_a_0[] = {0};
+static const dev_setting_t DEV_SETTINGS_dev_a[] = {
+    {"configure", 1, 2, NULL, "configuration", DEV_KEYED_dev_a_0, 1u, DEV_ATTRS_dev_a_0, 1u,
+     DEV_COUNTS_dev_a_0, 0u, DEV_FILL_dev_a_0, DEV_FILL_LIST_dev_a_0, 3u, DEV_KEYS_dev_a_0, 0u},
+    {NULL, 0, 0, NULL, NULL, NULL, 0, NULL, 0, NULL, 0, NULL, NULL, 0, NULL, 0}};
+static const dev_size_t DEV_SIZES_dev_a[] = {
+    {144, 1, 29}, {145, 3, 18}, {146, 3, 18}, {255, 211, 8}, {0, 0, 0}};
+static const dev_rate_t DEV_BASE_RATES_dev_a[] = {{0, 0}};
+static const uint8_t DEV_UNADDRESSED_dev_a[] = {0};
+static const dev_setting_t DEV_SETTINGS_dev_b[] = {
+    {NULL, 0, 0, NULL, NULL, NULL, 0, NULL, 0, NULL, 0, NULL, NULL, 0, NULL, 0}};
+static const dev_size_t DEV_SIZES_dev_b[] = {{0, 0, 0}};
+static const dev_rate_t DEV_BASE_RATES_dev_b[] = {{0, 0}};
+static const uint8_t DEV_UNADDRESSED_dev_b[] = {0};
+static const dev_model_t DEV_MODELS[] = {{"dev_a", "", DEV_SETTINGS_dev_a, 1u, DEV_SIZES_dev_a, 4u,
+                                          DEV_BASE_RATES_dev_a, 0u, DEV_UNADDRESSED_dev_a, 0u},
+                                         {"dev_b", "", DEV_SETTINGS_dev_b, 0u, DEV_SIZES_dev_b, 0u,
+                                          DEV_BASE_RATES_dev_b, 0u, DEV_UNADDRESSED_dev_b, 0u},
+                                         {NULL, NULL, NULL, 0, NULL, 0, NULL, 0, NULL, 0}};
+static const size_t DEV_MODEL_COUNT = 2u;
+
+static const dev_format_t DEV_FORMATS[] = {{0, 0, -1, NULL, NULL, NULL, NULL}};
+static const size_t DEV_FORMAT_COUNT = 0u;
+
+static const dev_rate_query_t DEV_RATE_QUERIES[] = {{0, 0, -1, NULL}};
+static const size_t DEV_RATE_QUERY_COUNT = 0u;
+static const dev_enable_t DEV_ENABLES[] = {{0, 0, NULL, NULL, NULL, 0, NULL}};
+static const size_t DEV_ENABLE_COUNT = 0u;
+
+static const dev_baud_t DEV_BAUD[] = {{0, 0, NULL}};
+static const size_t DEV_BAUD_COUNT = 0u;
+
+/* the commands whose save and default apply to every setting */
+static const uint8_t DEV_ALL_SETTINGS[][2] = {{0, 0}};
+static const size_t DEV_ALL_SETTINGS_COUNT = 0u;
+
+static const dev_list_t DEV_LISTS[] = {{0, 0, 0, NULL, 0}};
+static const size_t DEV_LIST_COUNT = 0u;
+
+static const dev_report_t DEV_REPORTS[] = {{0, 0, {NULL}, NULL}};
+static const size_t DEV_REPORT_COUNT = 0u;
+
+typedef struct {
+    uint8_t id;
+    const char *name;
+} dev_set_name_t;
+
+static const dev_set_name_t DEV_SET_NAMES[] = {{1, "commands"},     {144, "data"},   {145, "receiver_1"},
+                                               {146, "receiver_2"}, {255, "shared"}, {0, NULL}};
+
+/* the command whose reply reports the identity: set, descriptor (0, 0: none) */
+#define DEV_IDENTITY_SET 0u
+#define DEV_IDENTITY_DESCRIPTOR 0u
+
+/* the manuals' lines of the UART bandwidth calculation (the spec's link: bandwidth) */
+#define DEV_BANDWIDTH_SOURCES "no manual (the spec has no link bandwidth)"
+/* the data set of the shared fields (valid in every data set), -1: none */
+#define DEV_SHARED_SET (255)
+
+#endif
