@@ -327,3 +327,20 @@ def test_apply_follows_a_baud_rate_change_on_a_serial_port(tool: Path, tmp_path:
             "2 settings written and read back",
         ]
         assert ctool(tool, sim.address, "ping", "--baud", "921600").returncode == 0
+
+
+# ------------------------------------------------------------------------------ auto
+def test_auto_scans_the_given_ports_as_the_python_cli(tool: Path, tmp_path: Path) -> None:
+    with Sim("gx5_45", "pty") as a, Sim("cv7_ins", "pty") as b:
+        absent = str(tmp_path / "no-such-port")
+        args = ["auto", "ping", "--ports", a.address, absent, b.address]
+        c, p = ctool(tool, *args), cli(*args)
+        same(c, p, "auto ping")
+        assert c.returncode == 0 and len(c.stdout.splitlines()) == 2
+        assert f"{absent}: no answer at 115200, " in c.stderr
+    c, p = ctool(tool, "auto", "ping", "--ports", absent), cli("auto", "ping", "--ports", absent)
+    same(c, p, "auto ping, nothing answers")
+    assert c.returncode == 1
+    for args in (["auto", "info"], ["auto", "ping", "--ports"], ["tcp:127.0.0.1:1", "ping", "--ports", absent]):
+        run = ctool(tool, *args)
+        assert run.returncode == 2 and run.stdout == "" and len(run.stderr.splitlines()) == 1, (args, run.stderr)

@@ -26,12 +26,14 @@
 #define _POSIX_C_SOURCE 200809L
 #endif
 #include <errno.h>
+#include <glob.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "mscipcodec/json.h"
@@ -45,8 +47,14 @@
 
 /* ------------------------------------------------------------------------------ errors */
 
+/* Set while `auto` tries a port: a failed attempt is not an error of the run. */
+static bool quiet_notes;
+
 static void note(const char *fmt, ...) {
     va_list ap;
+    if (quiet_notes) {
+        return;
+    }
     fprintf(stderr, PROG ": ");
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -2508,6 +2516,8 @@ typedef struct {
     bool save;
     const char **pos; /* the positional arguments after the subcommand (and its action) */
     size_t npos;
+    const char **ports; /* auto: --ports PATH ... (NULL: the system's serial ports) */
+    size_t nports;
 } opts_t;
 
 /* ------------------------------------------------------------------------------ subcommands */
@@ -3883,10 +3893,118 @@ static int cmd_stream(conn_t *c, const opts_t *o) {
     return c->stream_count ? 0 : EXIT_REFUSED;
 }
 
+/* ------------------------------------------------------------------------------ auto */
+static int cmp_rate_desc(const void *a, const void *b) {
+    unsigned long x = *(const unsigned long *)a, y = *(const unsigned long *)b;
+    return x < y ? 1 : x > y ? -1 : 0;
+}
+
+/* The rates `auto` tries: the default first, then every rate the spec lists for a model's main
+ * port (link: baud_rates), highest first (the Python CLI's order). Returns how many. */
+static size_t auto_rates(unsigned long *out, size_t cap) {
+    size_t n = 0, m, k, i, count;
+    out[n++] = DEFAULT_BAUD;
+    for (m = 0; m < DEV_MODEL_COUNT; m++) {
+        mscipc_device_t d;
+        const uint32_t *rates;
+        if (!mscipc_device_from_id(DEV_MODELS[m].id, &d)) {
+            continue;
+        }
+        rates = mscipc_device_baud_rates(d, &count);
+        for (k = 0; rates != NULL && k < count && n < cap; k++) {
+            for (i = 0; i < n && out[i] != rates[k]; i++) {
+            }
+            if (i == n) {
+                out[n++] = rates[k];
+            }
+        }
+    }
+    qsort(out + 1, n - 1, sizeof *out, cmp_rate_desc);
+    return n;
+}
+
+/* The system's serial ports when --ports is not given: the device nodes of the kinds pyserial's
+ * list_ports shows on Linux (USB serial, ACM, on-board UARTs, Bluetooth RFCOMM) that the kernel
+ * backs with a device (/sys/class/tty/NAME/device). */
+static glob_t system_ports(void) {
+    static const char *const patterns[] = {"/dev/ttyS*", "/dev/ttyUSB*", "/dev/ttyACM*", "/dev/ttyAMA*",
+                                           "/dev/rfcomm*"};
+    glob_t g;
+    size_t i;
+    memset(&g, 0, sizeof g);
+    for (i = 0; i < sizeof patterns / sizeof patterns[0]; i++) {
+        (void)glob(patterns[i], i ? GLOB_APPEND : 0, NULL, &g);
+    }
+    return g;
+}
+
+static bool backed_by_a_device(const char *path) {
+    char sys[512];
+    struct stat st;
+    const char *name = strrchr(path, '/');
+    snprintf(sys, sizeof sys, "/sys/class/tty/%s/device", name ? name + 1 : path);
+    return stat(sys, &st) == 0;
+}
+
+/* `auto ping`: pings every serial port at the rates above, one line per device that answers
+ * (port, rate, model, serial number); a port that answers at no rate is one note. Exit 0 when a
+ * device answered, 1 when none did. */
+static int cmd_auto(const opts_t *o) {
+    static conn_t conn;
+    unsigned long rates[64];
+    size_t nrates = auto_rates(rates, sizeof rates / sizeof rates[0]);
+    glob_t g;
+    const char **ports = o->ports;
+    size_t nports = o->nports, p, r;
+    int found = 0;
+    memset(&g, 0, sizeof g);
+    if (ports == NULL) {
+        g = system_ports();
+        ports = (const char **)g.gl_pathv;
+        nports = g.gl_pathc;
+    }
+    for (p = 0; p < nports; p++) {
+        bool answered = false;
+        if (o->ports == NULL && !backed_by_a_device(ports[p])) {
+            continue;
+        }
+        for (r = 0; r < nrates && !answered; r++) {
+            unsigned long timeout = o->timeout_ms < 300 ? o->timeout_ms : 300;
+            int status;
+            memset(&conn, 0, sizeof conn);
+            quiet_notes = true;
+            status = connect_device(&conn, ports[p], o->model, rates[r], timeout);
+            quiet_notes = false;
+            if (status == 0) {
+                buf_t serial = {0};
+                const char *sn = identity_text(&conn, "serial_number", &serial);
+                say("%s %lu %s (%s) serial %s", ports[p], rates[r], mscipc_device_title(conn.device),
+                    conn.model->id, sn && sn[0] ? sn : "?");
+                free(serial.s);
+                answered = true;
+                found++;
+            }
+            disconnect(&conn);
+        }
+        if (!answered) {
+            buf_t list = {0};
+            for (r = 0; r < nrates; r++) {
+                buf_fmt(&list, "%s%lu", r ? ", " : "", rates[r]);
+            }
+            note("%s: no answer at %s baud", ports[p], buf_text(&list));
+            free(list.s);
+        }
+    }
+    if (o->ports == NULL) {
+        globfree(&g);
+    }
+    return found ? 0 : EXIT_REFUSED;
+}
+
 /* ------------------------------------------------------------------------------ main */
 #define USAGE                                                                                                \
     "usage: " PROG " ADDRESS SUBCOMMAND [OPTIONS]\n"                                                         \
-    "  ADDRESS: tcp:HOST:PORT or a serial port path\n"                                                       \
+    "  ADDRESS: tcp:HOST:PORT, a serial port path, or auto (auto ping [--ports PATH ...])\n"                 \
     "  ping | info | send NAME [FUNCTION] [PARAM=VALUE ...] [--json] | save-startup | factory-reset\n"       \
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
@@ -3970,6 +4088,27 @@ int main(int argc, char **argv) {
             o.save = o.save || strcmp(name, "--save") == 0;
             continue;
         }
+        if (strcmp(name, "--ports") == 0) {
+            /* auto: the paths up to the next option */
+            if (eq) {
+                free(pos);
+                return usage("%s takes paths after it, not '='", name);
+            }
+            if (o.ports != NULL) {
+                free(pos);
+                return usage("%s is given once", name);
+            }
+            o.ports = (const char **)(argv + i + 1); /* the paths stay in argv */
+            while (i + 1 < argc && strncmp(argv[i + 1], "--", 2) != 0) {
+                o.nports++;
+                i++;
+            }
+            if (o.nports == 0) {
+                free(pos);
+                return usage("%s needs at least one path", name);
+            }
+            continue;
+        }
         if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
             strcmp(name, "--timeout-ms") != 0 && strcmp(name, "--rate") != 0 &&
             strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0) {
@@ -4037,7 +4176,14 @@ int main(int argc, char **argv) {
     }
     if (strcmp(pos[0], "auto") == 0) {
         free(pos);
-        return usage("%s", "auto: the C tool takes a serial port path or tcp:HOST:PORT");
+        if (strcmp(sub, "ping") != 0) {
+            return usage("%s", "auto lists the devices that answer: use `auto ping`");
+        }
+        return cmd_auto(&o);
+    }
+    if (o.ports != NULL) {
+        free(pos);
+        return usage("%s", "--ports goes with auto");
     }
     status = connect_device(&conn, pos[0], o.model, o.baud, o.timeout_ms);
     if (status == 0) {
