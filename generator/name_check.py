@@ -177,3 +177,15 @@ def calls(proto: dict) -> Iterator[tuple[dict, dict, object]]:
     for c in commands(proto).calls:
         s = sets[c.set]
         yield s, next(f for f in s["fields"] if f["name"] == c.field), c
+
+
+def call_arguments(
+    scope: str, owner: str, what: str, s: dict, f: dict, call, spell: Callable[[str], str]
+) -> list[Name]:
+    """The names of a typed call's arguments in one target's spelling (spell: the target's rule
+    for a parameter name), each located at its parameter in the spec."""
+    v = f["variants"][call.variants[0]]
+    return [
+        Name(scope, spell(a.name), f"parameter {a.name} of {what}", params_where(s, f, v) + (a.name,), owner=owner)
+        for a in call.arguments
+    ]

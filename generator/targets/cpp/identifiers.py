@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, calls, layouts, param_element, params_where, taken
+from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
 
 from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, call_name, ident
 from .facts import KEYWORDS, RESERVED
@@ -94,15 +94,5 @@ def _command_api(proto: dict, ns: str) -> list[Name]:
         )
         scope, owner = f"function {cmd_ns}::{name}", f"{what} {name}"
         out.extend(taken(scope, FUNCTION_OWN, "a parameter or variable of the function,", owner))
-        v = f["variants"][c.variants[0]]
-        for a in c.arguments:
-            out.append(
-                Name(
-                    scope,
-                    ident(a.name),
-                    f"parameter {a.name} of {what}",
-                    params_where(s, f, v) + (a.name,),
-                    owner=owner,
-                )
-            )
+        out.extend(call_arguments(scope, owner, what, s, f, c, ident))
     return out

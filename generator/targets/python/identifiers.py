@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, calls, layouts, param_element, params_where, taken
+from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
 from generator.naming import camel
 
 from . import facts
@@ -115,17 +115,7 @@ def _command_api(proto: dict) -> list[Name]:
         )
         scope, owner = f"method {cmd_cls}.{method}", f"{what} {method}"
         out.extend(taken(scope, METHOD_OWN, "a parameter or variable of the method,", owner))
-        v = f["variants"][c.variants[0]]
-        for a in c.arguments:
-            out.append(
-                Name(
-                    scope,
-                    py_attr(a.name),
-                    f"parameter {a.name} of {what}",
-                    params_where(s, f, v) + (a.name,),
-                    owner=owner,
-                )
-            )
+        out.extend(call_arguments(scope, owner, what, s, f, c, py_attr))
     return out
 
 

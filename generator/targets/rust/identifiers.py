@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, calls, layouts, param_element, params_where, taken
+from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
 from generator.naming import upper
 
 from .backend import _set_method, camel, ident
@@ -118,15 +118,5 @@ def _command_api(proto: dict, modules: dict[int, str]) -> list[Name]:
         out.append(Name(module, send, f"the function sending {what} for {c.function or 'the command'}", fw))
         scope, owner = f"fn {send}", f"{what} {method}"
         out.extend(taken(scope, ["device"], "the function's parameter", owner))
-        v = f["variants"][c.variants[0]]
-        for a in c.arguments:
-            out.append(
-                Name(
-                    scope,
-                    ident(a.name),
-                    f"parameter {a.name} of {what}",
-                    params_where(s, f, v) + (a.name,),
-                    owner=owner,
-                )
-            )
+        out.extend(call_arguments(scope, owner, what, s, f, c, ident))
     return out
