@@ -189,3 +189,36 @@ def call_arguments(
         Name(scope, spell(a.name), f"parameter {a.name} of {what}", params_where(s, f, v) + (a.name,), owner=owner)
         for a in call.arguments
     ]
+
+
+def enum_values(scope: str, owner: str, t: dict, spell: Callable[[str], str]) -> list[Name]:
+    """The names of enum t's values in one target's spelling, each located at its value."""
+    tw = (t["name"],)
+    return [
+        Name(scope, spell(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
+        for v in t["values"]
+    ]
+
+
+def types(out: list[Name], scope: str, proto: dict, spell: Callable[[str], str]) -> Iterator[tuple[dict, str]]:
+    """Adds the name of each type of proto to out (in scope, spelled by spell) and yields the type
+    and what messages call it ("enum GpsMode")."""
+    for t in proto["types"]:
+        out.append(Name(scope, spell(t["name"]), f"type {t['name']}", (t["name"],)))
+        yield t, f"{t['kind']} {t['name']}"
+
+
+def struct_members(scope: str, owner: str, proto: dict, t: dict, spell: Callable[[str], str]) -> list[Name]:
+    """The names of struct t's members in one target's spelling, each located at its member."""
+    from . import model
+
+    return [
+        Name(scope, spell(q.name), param_element(q, owner), (t["name"], q.name), owner=owner)
+        for q in model.struct(proto, t)
+    ]
+
+
+def each_member(t: dict, owner: str) -> Iterator[tuple[dict, tuple, str]]:
+    """Each member of bitfield or union t with its place in the spec and what messages call it."""
+    for b in t["members"]:
+        yield b, (t["name"], b["name"]), f"member {b['name']} of {owner}"

@@ -4,7 +4,8 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
+from generator import name_check as nc
+from generator.name_check import Name, calls, layouts, param_element, taken
 
 from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, call_name, ident
 from .facts import KEYWORDS, RESERVED
@@ -33,29 +34,19 @@ def names(proto: dict) -> list[Name]:
         out.append(Name(top, _set_ns(s), f"the namespace of set {s['name']}", (s["name"],)))
     if proto["reserved_fields"]:
         out.append(Name(top, _reserved_ns(proto), "the namespace of the reserved fields", (), False))
-    types_ns = f"namespace {ns}::types"
-    for t in proto["types"]:
-        tw = (t["name"],)
-        out.append(Name(types_ns, t["name"], f"type {t['name']}", tw))
+    for t, owner in nc.types(out, f"namespace {ns}::types", proto, str):
         scope = f"{t['kind']} {ns}::types::{t['name']}"
-        owner = f"{t['kind']} {t['name']}"
         if t["kind"] == "enum":
-            for v in t["values"]:
-                out.append(
-                    Name(scope, ident(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
-                )
+            out.extend(nc.enum_values(scope, owner, t, ident))
         elif t["kind"] == "bitfield":
             out.extend(taken(scope, BITFIELD_OWN, "a member every bitfield class has,", owner))
-            for b in t["members"]:
-                bw = tw + (b["name"],)
-                element = f"member {b['name']} of {owner}"
+            for b, bw, element in nc.each_member(t, owner):
                 getter = ident(b["name"], frozenset({"raw", "set_raw", "Raw"}))
                 out.append(Name(scope, getter, element, bw, owner=owner))
                 out.append(Name(scope, "set_" + b["name"], f"the setter of {element}", bw, False, owner))
                 out.append(Name(scope, b["name"] + "_mask", f"the mask of {element}", bw, False, owner))
         elif t["kind"] == "struct":
-            for q in model.struct(proto, t):
-                out.append(Name(scope, ident(q.name), param_element(q, owner), tw + (q.name,), owner=owner))
+            out.extend(nc.struct_members(scope, owner, proto, t, ident))
     for s in [None, *proto["sets"]]:
         fields = proto["reserved_fields"] if s is None else s["fields"]
         set_ns = _reserved_ns(proto) if s is None else _set_ns(s)
@@ -94,5 +85,5 @@ def _command_api(proto: dict, ns: str) -> list[Name]:
         )
         scope, owner = f"function {cmd_ns}::{name}", f"{what} {name}"
         out.extend(taken(scope, FUNCTION_OWN, "a parameter or variable of the function,", owner))
-        out.extend(call_arguments(scope, owner, what, s, f, c, ident))
+        out.extend(nc.call_arguments(scope, owner, what, s, f, c, ident))
     return out

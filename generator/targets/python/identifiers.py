@@ -4,7 +4,8 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
+from generator import name_check as nc
+from generator.name_check import Name, calls, layouts, param_element, taken
 from generator.naming import camel
 
 from . import facts
@@ -35,26 +36,16 @@ def names(proto: dict) -> list[Name]:
     out.extend(taken(top, RUNTIME_MODULES | EXPORTED, "a module or name of the package,"))
     for s in proto["sets"]:
         out.append(Name(top, set_module(s), f"the module of set {s['name']}", (s["name"],)))
-    types = f"module {pkg}.types"
-    for t in proto["types"]:
-        tw = (t["name"],)
-        out.append(Name(types, t["name"], f"type {t['name']}", tw))
+    for t, owner in nc.types(out, f"module {pkg}.types", proto, str):
         scope = f"class {pkg}.types.{t['name']}"
-        owner = f"{t['kind']} {t['name']}"
         if t["kind"] == "enum":
-            for v in t["values"]:
-                out.append(
-                    Name(scope, const_name(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
-                )
+            out.extend(nc.enum_values(scope, owner, t, const_name))
         elif t["kind"] == "bitfield":
-            for b in t["members"]:
-                bw = tw + (b["name"],)
-                element = f"member {b['name']} of {owner}"
+            for b, bw, element in nc.each_member(t, owner):
                 out.append(Name(scope, py_attr(b["name"], BITFIELD_RESERVED), element, bw, owner=owner))
                 out.append(Name(scope, const_name(b["name"]), f"the mask of {element}", bw, False, owner))
         elif t["kind"] == "struct":
-            for q in model.struct(proto, t):
-                out.append(Name(scope, py_attr(q.name), param_element(q, owner), tw + (q.name,), owner=owner))
+            out.extend(nc.struct_members(scope, owner, proto, t, py_attr))
     for lay in layouts(proto):
         module = f"{pkg}.reserved" if lay.set is None else f"{pkg}.{set_module(lay.set)}"
         cls = camel(lay.field["name"]) + (f"_{lay.device}" if lay.device else "")
@@ -115,7 +106,7 @@ def _command_api(proto: dict) -> list[Name]:
         )
         scope, owner = f"method {cmd_cls}.{method}", f"{what} {method}"
         out.extend(taken(scope, METHOD_OWN, "a parameter or variable of the method,", owner))
-        out.extend(call_arguments(scope, owner, what, s, f, c, py_attr))
+        out.extend(nc.call_arguments(scope, owner, what, s, f, c, py_attr))
     return out
 
 

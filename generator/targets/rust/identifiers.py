@@ -4,7 +4,8 @@
 from __future__ import annotations
 
 from generator import model
-from generator.name_check import Name, call_arguments, calls, layouts, param_element, taken
+from generator import name_check as nc
+from generator.name_check import Name, calls, layouts, param_element, taken
 from generator.naming import upper
 
 from .backend import _set_method, camel, ident
@@ -48,30 +49,20 @@ def names(proto: dict) -> list[Name]:
     for s in proto["sets"]:
         out.append(Name(top, modules[s["id"]], f"the module of set {s['name']}", (s["name"],)))
         out.append(Name(variants, camel(modules[s["id"]]), f"the FieldValue variant of set {s['name']}", (s["name"],)))
-    types = f"module {pkg}::types"
-    for t in proto["types"]:
-        tw = (t["name"],)
-        out.append(Name(types, camel(t["name"]), f"type {t['name']}", tw))
+    for t, owner in nc.types(out, f"module {pkg}::types", proto, camel):
         scope = f"{t['kind']} {pkg}::types::{camel(t['name'])}"
-        owner = f"{t['kind']} {t['name']}"
         if t["kind"] == "enum":
-            for v in t["values"]:
-                out.append(
-                    Name(scope, upper(v["name"]), f"value {v['name']} of {owner}", tw + (v["name"],), owner=owner)
-                )
+            out.extend(nc.enum_values(scope, owner, t, upper))
         elif t["kind"] == "bitfield":
-            for b in t["members"]:
-                bw = tw + (b["name"],)
-                element = f"member {b['name']} of {owner}"
+            for b, bw, element in nc.each_member(t, owner):
                 out.append(Name(scope, ident(b["name"]), element, bw, owner=owner))
                 out.append(Name(scope, f"set_{b['name']}", f"the setter of {element}", bw, False, owner))
                 out.append(Name(scope + " (constants)", upper(b["name"]), f"the mask of {element}", bw, False, owner))
         elif t["kind"] == "struct":
-            for q in model.struct(proto, t):
-                out.append(Name(scope, ident(q.name), param_element(q, owner), tw + (q.name,), owner=owner))
+            out.extend(nc.struct_members(scope, owner, proto, t, ident))
         else:
             for m in t["members"]:
-                out.append(Name(scope, camel(m["when"]), f"member {m['when']} of {owner}", tw, owner=owner))
+                out.append(Name(scope, camel(m["when"]), f"member {m['when']} of {owner}", (t["name"],), owner=owner))
     for lay in layouts(proto):
         module = "reserved" if lay.set is None else modules[lay.set["id"]]
         scope = f"module {pkg}::{module}"
@@ -118,5 +109,5 @@ def _command_api(proto: dict, modules: dict[int, str]) -> list[Name]:
         out.append(Name(module, send, f"the function sending {what} for {c.function or 'the command'}", fw))
         scope, owner = f"fn {send}", f"{what} {method}"
         out.extend(taken(scope, ["device"], "the function's parameter", owner))
-        out.extend(call_arguments(scope, owner, what, s, f, c, ident))
+        out.extend(nc.call_arguments(scope, owner, what, s, f, c, ident))
     return out
