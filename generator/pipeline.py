@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 
 from .diagnostics import BackendError, Location, SpecError, SpecErrors
@@ -83,7 +84,8 @@ def run(
     changes = write_tree(out_dir, files, owned)
     if not quiet:
         # What a regeneration changed, in git's letters (issue 39: `make` said nothing).
-        print("\n".join(changes.summary(_display(out_dir))))
+        # On stderr: scripts read stdout (tests/runtime_specs/render.py prints the tree it wrote).
+        print("\n".join(changes.summary(_display(out_dir))), file=sys.stderr)
     # docs/errata.md is the project's page about its own spec: a spec given with --spec (a test
     # fixture, the golden tree) or with overlays never rewrites it, unless a docs directory is named.
     if (spec_dir is None and not overlays) or docs_dir is not None:

@@ -404,15 +404,15 @@ def test_generate_prints_what_changed(tmp_path, capsys):
     out = tmp_path / "out"
     argv = ["generate", "--spec", str(ROOT / "spec"), str(OVERLAY), "--out", str(out), "--langs", "python"]
     assert mipgen(argv) == 0
-    first = capsys.readouterr().out.splitlines()
+    first = capsys.readouterr().err.splitlines()
     assert re.fullmatch(r".*out: 0 changed, (\d+) added, 0 removed \(\1 files\)", first[0]), first[0]
     assert any(line.startswith("  A python/") for line in first[1:])
     assert mipgen(argv) == 0
-    assert re.fullmatch(r".*out: up to date \(\d+ files\)", capsys.readouterr().out.strip())
+    assert re.fullmatch(r".*out: up to date \(\d+ files\)", capsys.readouterr().err.strip())
     sensor = out / "python" / "mipcodec" / "mipcodec" / "sensor.py"
     sensor.write_text("stale\n")
     (out / "python" / "left-over.py").write_text("x = 1\n")
     assert mipgen(argv) == 0
-    lines = capsys.readouterr().out.splitlines()
+    lines = capsys.readouterr().err.splitlines()
     assert re.fullmatch(r".*out: 1 changed, 0 added, 1 removed \(\d+ files\)", lines[0]), lines[0]
     assert lines[1:] == ["  D python/left-over.py", "  M python/mipcodec/mipcodec/sensor.py"]
