@@ -59,3 +59,10 @@ def link_facts(proto: dict) -> dict:
         ),
         "devices": devices,
     }
+
+
+def bandwidth_sources(proto: dict) -> str:
+    """The manual lines of the spec's `link: bandwidth` (the UART bandwidth calculation), for the
+    device command lines' messages."""
+    bw = (proto.get("link") or {}).get("bandwidth") or {}
+    return ", ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x)

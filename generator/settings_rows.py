@@ -10,7 +10,10 @@ does not exclude and whose read has a reply. Names are the spec's (each wing map
 
 from __future__ import annotations
 
+import json
+
 from generator import model
+from generator.primitives import PRIMITIVES
 
 
 def setting_rows(proto: dict, sets: list[dict]) -> tuple[list[dict], dict[str, dict]]:
@@ -101,3 +104,85 @@ def setting_rows(proto: dict, sets: list[dict]) -> tuple[list[dict], dict[str, d
                 }
             )
     return rows, sizes
+
+
+# ------------------------------------------------------------------------------ the file's schema
+def _value_schema(types: dict, q: dict) -> dict:
+    """The JSON Schema of one parameter's value in a settings file (runtime settings.py)."""
+    t = q["type"]
+    kind = t["kind"]
+    if kind == "primitive":
+        size, k, signed = PRIMITIVES[t["name"]]
+        if k == "int":
+            lo, hi = (-(1 << (size * 8 - 1)), (1 << (size * 8 - 1)) - 1) if signed else (0, (1 << (size * 8)) - 1)
+            one: dict = {"type": "integer", "minimum": lo, "maximum": hi}
+        elif k == "float":
+            one = {"type": "number"}
+        elif k == "bool":
+            one = {"type": "boolean"}
+        else:
+            one = {"type": "string", "maxLength": 1}
+    elif kind == "enum":
+        names = [v["name"] for v in types[t["name"]]["values"]]
+        one = {"anyOf": [{"enum": names}, {"type": "integer", "minimum": 0}]}
+    elif kind == "bitfield":
+        one = {"type": "integer", "minimum": 0}
+    elif kind == "string":
+        one = {"type": "string", "maxLength": t.get("length", 0)}
+    elif kind == "struct":
+        members = list(types[t["name"]]["params"])
+        one = {
+            "type": "object",
+            "additionalProperties": False,
+            "properties": {p["name"]: _value_schema(types, p) for p in members},
+        }
+    else:  # a union: its canonical JSON form (docs/conformance.md section 5)
+        one = {"type": ["object", "null"]}
+    count = q.get("count")
+    if count is not None:
+        arr: dict = {"type": "array", "items": one}
+        if count.get("kind") == "fixed":
+            arr["minItems"] = arr["maxItems"] = count["value"]
+        elif q.get("max_count"):
+            arr["maxItems"] = q["max_count"]
+        one = arr
+    desc = q.get("description") or ""
+    if q.get("units"):
+        desc = f"{desc} [{q['units']}]".strip()
+    return {**one, "description": desc} if desc else one
+
+
+def settings_schema(proto: dict, package: str, rows: list[dict]) -> str:
+    """The settings file format as a JSON Schema (settings.schema.json, docs/configure-a-device.md):
+    per setting of `rows` (setting_rows) an object of the parameters a file entry holds, a list of
+    them when the setting is read per key."""
+    types = {t["name"]: t for t in proto["types"]}
+    props: dict[str, list[dict]] = {}
+    for r in rows:
+        f, v, held, keyed = r["field"], r["variant"], r["held"], r["keyed"]
+        obj = {
+            "type": "object",
+            "additionalProperties": False,
+            "properties": {q["name"]: _value_schema(types, q) for q in held},
+            "required": [q["name"] for q in held if q["name"] in keyed],
+        }
+        if not obj["required"]:
+            del obj["required"]
+        one = {"type": "array", "items": obj} if keyed else obj
+        title = f"{f['title']} (0x{r['set']['id']:02X},0x{f['id']:02X}); {', '.join(v['devices'])}"
+        props.setdefault(f["name"], []).append({**one, "description": title})
+    schema = {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": f"{package}-settings.schema.json",
+        "title": f"{proto['title']} settings file ({package}-device settings dump|apply|diff)",
+        "description": "Keyed by command name; each value the parameters of its write (enum members by name, "
+        "numbers in the units of the description); a setting read per key parameter is a list of entries. "
+        "Generated from the spec: do not edit.",
+        "type": "object",
+        "additionalProperties": False,
+        "properties": {
+            "device": {"type": "string", "description": "The model the file was dumped from (informative)."},
+            **{name: (alts[0] if len(alts) == 1 else {"anyOf": alts}) for name, alts in sorted(props.items())},
+        },
+    }
+    return json.dumps(schema, indent=2) + "\n"

@@ -11,6 +11,7 @@ import re
 
 from generator import commands, diagnostics, model
 from generator.cmake import cmake_package_files, pkg_config
+from generator.device_tables import device_tables
 from generator.examples import (
     ExampleError,
     device_variant,
@@ -895,7 +896,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         out[root + "tools/device_facts.h"] = env.get_template("c/tools/device_facts.h.j2").render(
-            ctx, cs=lambda v: "NULL" if v is None else c_string(str(v)), **_device_context(proto)
+            ctx, cs=lambda v: "NULL" if v is None else c_string(str(v)), **device_tables(proto)
         )
         if ctx["stream_example"]:
             out[root + "examples/configure_and_stream.c"] = env.get_template(
@@ -971,156 +972,3 @@ def public_name(protocol: dict, kind: str, *path) -> str:
     if kind == "set":
         return f"{p}_{path[0]['name']}_*"
     return f"{p.upper()}_{snake(path[0]['name']).upper()}_{path[1]['name'].upper()}"
-
-
-# --------------------------------------------------------------------------- the device tool
-def _device_context(proto: dict) -> dict:
-    """The tables of the device tool (tools/device.c, docs/configure-a-device.md), as C literals:
-    every setting per device (generator/settings_rows.py, the same derivation as the Python
-    package's _settings.py), the enums their parameters name, the largest data size of every data
-    field, and the facts of the spec's simulation section the tool uses (identity, descriptor
-    lists, base rates, message formats, stream control, baud rate commands, save-all)."""
-    from generator.naming import camel, upper
-    from generator.settings_rows import setting_rows
-
-    types = {t["name"]: t for t in proto["types"]}
-    by_name: dict[str, list[tuple[int, int]]] = {}
-    for s in proto["sets"]:
-        for f in s["fields"]:
-            by_name.setdefault(f["name"], []).append((s["id"], f["id"]))
-    enums: list[dict] = []
-    enum_index: dict[str, int] = {}
-
-    def enum_of(type_name: str) -> int:
-        if type_name not in enum_index:
-            enum_index[type_name] = len(enums)
-            enums.append(
-                {
-                    "name": camel(type_name),
-                    "members": [(upper(v["name"]).lower(), int(v["value"])) for v in types[type_name]["values"]],
-                }
-            )
-        return enum_index[type_name]
-
-    rows, sizes = setting_rows(proto, proto["sets"])
-    settings: dict[str, list[dict]] = {d["id"]: [] for d in proto["devices"]}
-    for r in rows:
-        attrs = []
-        for q, rq, units, qd in r["attrs"]:
-            t = qd["type"]
-            e = enum_of(t["name"]) if t["kind"] == "enum" and qd.get("count") is None else -1
-            attrs.append({"name": q, "reply": rq, "units": units, "enum": e})
-        for d in r["variant"]["devices"]:
-            settings[d].append(
-                {
-                    "name": r["field"]["name"],
-                    "set": r["set"]["id"],
-                    "descriptor": r["field"]["id"],
-                    "device": r["dev"],
-                    "reply": r["reply_field"]["name"],
-                    "keyed": r["keyed"],
-                    "attrs": attrs,
-                    "counts": list(r["counts"].items()),
-                    "fill": r["fill"],
-                    "keys": [[combo[k] for k in r["keyed"]] for combo in r["keys"][d]],
-                }
-            )
-    ack = next((f for f in proto["reserved_fields"] if f["role"] == "ack"), None)
-    ack_enum = -1
-    if ack is not None:
-        for q in ack["variants"][0]["params"]:
-            if q["type"]["kind"] == "enum":
-                ack_enum = enum_of(q["type"]["name"])
-    sim = proto.get("simulation") or {}
-
-    def cmd(name: str) -> list[tuple[int, int]]:
-        return by_name.get(name, [])
-
-    formats = [
-        {
-            "set": e.get("set", -1),
-            "param": e.get("set_param"),
-            "list": e["list"],
-            "descriptor": e.get("descriptor"),
-            "decimation": e.get("decimation"),
-            "at": at,
-        }
-        for e in sim.get("formats", [])
-        for at in cmd(e["command"])
-    ]
-    rates = [
-        {"set": e.get("set", -1), "param": e.get("set_param"), "at": at}
-        for e in sim.get("rates", [])
-        for at in cmd(e["command"])
-    ]
-    enables = []
-    for e in sim.get("enables", []):
-        for at in cmd(e["command"]):
-            sel = e.get("selector")
-            enables.append(
-                {
-                    "at": at,
-                    "flag": e["flag"],
-                    "selector": sel["param"] if sel else None,
-                    "map": [(x["value"], x["set"]) for x in sel["sets"]] if sel else [],
-                    "set_param": e.get("set_param"),
-                }
-            )
-    baud = [{"at": at, "param": e["param"]} for e in sim.get("baud", []) for at in cmd(e["command"])]
-    all_settings = [at for n in sim.get("all_settings", []) for at in cmd(n)]
-    base_rates = {e["device"]: [(r["set"], r["hz"]) for r in e["rates"]] for e in sim.get("base_rates", [])}
-    unaddressed = {e["device"]: list(e["sets"]) for e in sim.get("unaddressed", [])}
-    lists = [
-        {
-            "at": (e["set"], e["command_descriptor"]),
-            "reply": e["reply_descriptor"],
-            "param": e["param"],
-            "u16": e["item"] == "u16",
-        }
-        for e in (sim.get("descriptor_lists") or {}).get("lists", [])
-    ]
-    ident = sim.get("identity") or {"reports": [], "devices": []}
-    reports = [
-        {"at": (r["set"], r["descriptor"]), "path": r["param"].split("."), "item": r["item"]} for r in ident["reports"]
-    ]
-    models = {d["device"]: d["values"].get("model_name", "") for d in ident["devices"]}
-    fs = proto.get("function_selector") or {}
-    functions = []
-    if fs.get("enum") in types:
-        functions = [(v["name"], int(v["value"])) for v in types[fs["enum"]]["values"]]
-    bw = (proto.get("link") or {}).get("bandwidth") or {}
-    return {
-        "dev_settings": settings,
-        "dev_enums": enums,
-        "dev_ack_enum": ack_enum,
-        "dev_sizes": {d: sorted(v.items()) for d, v in sizes.items()},
-        "dev_formats": formats,
-        "dev_rates": rates,
-        "dev_enables": enables,
-        "dev_baud": baud,
-        "dev_all_settings": all_settings,
-        "dev_base_rates": base_rates,
-        "dev_unaddressed": unaddressed,
-        "dev_lists": lists,
-        "dev_reports": reports,
-        "dev_models": models,
-        "dev_functions": functions,
-        "dev_bandwidth_sources": ", ".join(
-            f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x
-        ),
-        "dev_shared_set": (proto.get("shared_data") or {}).get("set"),
-        "dev_set_names": [(s["id"], s["name"]) for s in proto["sets"]],
-        "dev_devices": proto["devices"],
-        "dev_identity": next(
-            (
-                (s["id"], f["id"])
-                for r in ident["reports"][:1]
-                for s in proto["sets"]
-                if s["id"] == r["set"]
-                for f in s["fields"]
-                if f["role"] == "command"
-                and any(x["id"] == r["descriptor"] for v in f["variants"] for x in v["responses"])
-            ),
-            None,
-        ),
-    }

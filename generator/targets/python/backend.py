@@ -19,17 +19,16 @@ templates/python/layout_macros.j2.
 
 from __future__ import annotations
 
-import json
 import textwrap
 
 from generator import columns, commands, model, simulation
 from generator.examples import example_context, example_literal, session_example, session_example_context
-from generator.linkfacts import link_facts
+from generator.linkfacts import bandwidth_sources, link_facts
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
 from generator.render import copy_runtime, environment
-from generator.settings_rows import setting_rows
+from generator.settings_rows import setting_rows, settings_schema
 from generator.targets.python import facts
 from generator.testcases import (
     EnumValue,
@@ -1075,51 +1074,6 @@ def public_name(protocol: dict, kind: str, *path) -> str:
 
 
 # --------------------------------------------------------------------------- settings files
-def _json_schema_type(m: _Protocol, q: dict) -> dict:
-    """The JSON Schema of one parameter's value in a settings file (runtime settings.py)."""
-    t = q["type"]
-    kind = t["kind"]
-    if kind == "primitive":
-        size, k, signed = PRIMITIVES[t["name"]]
-        if k == "int":
-            lo, hi = (-(1 << (size * 8 - 1)), (1 << (size * 8 - 1)) - 1) if signed else (0, (1 << (size * 8)) - 1)
-            one: dict = {"type": "integer", "minimum": lo, "maximum": hi}
-        elif k == "float":
-            one = {"type": "number"}
-        elif k == "bool":
-            one = {"type": "boolean"}
-        else:
-            one = {"type": "string", "maxLength": 1}
-    elif kind == "enum":
-        names = [v["name"] for v in m.types[t["name"]]["values"]]
-        one = {"anyOf": [{"enum": names}, {"type": "integer", "minimum": 0}]}
-    elif kind == "bitfield":
-        one = {"type": "integer", "minimum": 0}
-    elif kind == "string":
-        one = {"type": "string", "maxLength": t.get("length", 0)}
-    elif kind == "struct":
-        members = [p for p in m.types[t["name"]]["params"]]
-        one = {
-            "type": "object",
-            "additionalProperties": False,
-            "properties": {p["name"]: _json_schema_type(m, p) for p in members},
-        }
-    else:  # a union: its canonical JSON form (docs/conformance.md section 5)
-        one = {"type": ["object", "null"]}
-    count = q.get("count")
-    if count is not None:
-        arr: dict = {"type": "array", "items": one}
-        if count.get("kind") == "fixed":
-            arr["minItems"] = arr["maxItems"] = count["value"]
-        elif q.get("max_count"):
-            arr["maxItems"] = q["max_count"]
-        one = arr
-    desc = q.get("description") or ""
-    if q.get("units"):
-        desc = f"{desc} [{q['units']}]".strip()
-    return {**one, "description": desc} if desc else one
-
-
 def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
     """What _settings.py.j2 and settings.schema.json hold: per device its settings (command name,
     class, response class, the attributes a file entry holds with their units, the count
@@ -1127,7 +1081,6 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
     data field with its header (the link budget, runtime budget.py), and the file's JSON Schema."""
     proto = m.p
     rows: dict[str, list[str]] = {d["id"]: [] for d in proto["devices"]}
-    props: dict[str, list[dict]] = {}
     modules = set()
     by_set = {sm["set"]["id"]: sm for sm in sets}
     found, sizes = setting_rows(proto, [sm["set"] for sm in sets])
@@ -1138,7 +1091,6 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
         keyed = r["keyed"]
         attrs = tuple((py_attr(q), py_attr(rq), units) for q, rq, units, _ in r["attrs"])
         fill = tuple((py_attr(q), [] if is_list else 0) for q, is_list in r["fill"])
-        held = r["held"]
         cls = f"{sm['module']}.{names[(f['name'], r['dev'])]}"
         rcls = f"{sm['module']}.{names[(rf['name'], r['reply_dev'])]}"
         modules.add(sm["module"])
@@ -1154,42 +1106,11 @@ def _settings_context(m: _Protocol, sets: list[dict]) -> dict:
                 fill,
             )
             rows[d].append(f"({cls}, {rcls}, {pyrepr(row)})")
-        obj = {
-            "type": "object",
-            "additionalProperties": False,
-            "properties": {q["name"]: _json_schema_type(m, q) for q in held},
-            "required": [q["name"] for q in held if q["name"] in keyed],
-        }
-        if not obj["required"]:
-            del obj["required"]
-        one = {"type": "array", "items": obj} if keyed else obj
-        title = f"{f['title']} (0x{sm['set']['id']:02X},0x{f['id']:02X}); {', '.join(v['devices'])}"
-        props.setdefault(f["name"], []).append({**one, "description": title})
-    schema = {
-        "$schema": "https://json-schema.org/draft/2020-12/schema",
-        "$id": f"{m.package}-settings.schema.json",
-        "title": f"{proto['title']} settings file ({m.package}-device settings dump|apply|diff)",
-        "description": "Keyed by command name; each value the parameters of its write (enum members by name, "
-        "numbers in the units of the description); a setting read per key parameter is a list of entries. "
-        "Generated from the spec: do not edit.",
-        "type": "object",
-        "additionalProperties": False,
-        "properties": {
-            "device": {"type": "string", "description": "The model the file was dumped from (informative)."},
-            **{name: (alts[0] if len(alts) == 1 else {"anyOf": alts}) for name, alts in sorted(props.items())},
-        },
-    }
     return {
         "settings_modules": sorted(modules),
         "settings_rows": rows,
         "data_sizes": {d: pyrepr(dict(sorted(v.items()))) for d, v in sizes.items()},
         # the manual lines of the UART bandwidth calculation (the spec's link section), for messages
-        "bandwidth_sources": pyrepr(_bandwidth_sources(proto)),
-        "schema": json.dumps(schema, indent=2) + "\n",
+        "bandwidth_sources": pyrepr(bandwidth_sources(proto)),
+        "schema": settings_schema(proto, m.package, found),
     }
-
-
-def _bandwidth_sources(proto: dict) -> str:
-    """The manual lines of the spec's `link: bandwidth` (its numbers are in `_link.py`)."""
-    bw = (proto.get("link") or {}).get("bandwidth") or {}
-    return ", ".join(f"{x['manual']} line {x['line']}" for x in bw.get("sources", []) if "line" in x)
