@@ -484,3 +484,33 @@ def test_apply_follows_a_baud_rate_change_on_a_serial_port(tmp_path: Path) -> No
         ]
         assert cli(sim.address, "ping", "--baud", "921600").returncode == 0
         assert cli(sim.address, "ping", "--timeout-ms", "300").returncode == 2  # no answer at 115200 now
+
+
+def test_with_the_model_given_a_file_is_refused_before_any_byte_is_sent(tmp_path: Path) -> None:
+    """`settings apply FILE --device MODEL` checks the file without a connection: an unsupported
+    setting, and message formats that alone exceed the link budget, are refused before the
+    command line even connects (a listener on 127.0.0.1 counts connections and bytes: none)."""
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen(4)
+    server.settimeout(0.2)
+    address = f"tcp:127.0.0.1:{server.getsockname()[1]}"
+    unsupported = tmp_path / "unsupported.yaml"  # a CV7 setting in a GX5-45 file
+    unsupported.write_text("sensor_to_vehicle_euler:\n  roll: 0.0\n  pitch: 0.0\n  yaw: 0.5\n")
+    fast = tmp_path / "fast.yaml"  # 3 x 14 B at 500 Hz: 60*500 + 10*(3*14*500) = 240000 bit/s
+    fast.write_text(
+        "imu_message_format:\n  descriptors:\n"
+        + "".join(f"    - {{descriptor: {d}, decimation: 1}}\n" for d in (4, 5, 6))
+    )
+    try:
+        run = cli(address, "settings", "apply", str(unsupported), "--device", "gx5_45")
+        assert run.returncode == 2, run.stderr
+        assert "unsupported.yaml:1: sensor_to_vehicle_euler is not supported by 3DM-GX5-45" in run.stderr
+        run = cli(address, "settings", "apply", str(fast), "--device", "gx5_45", "--baud", "115200")
+        assert run.returncode == 2, run.stderr
+        assert "the message formats need 240000 bit/s, the port carries 115200 baud (--baud)" in run.stderr
+        assert "Traceback" not in run.stderr
+        with pytest.raises(socket.timeout):
+            server.accept()  # nobody connected
+    finally:
+        server.close()

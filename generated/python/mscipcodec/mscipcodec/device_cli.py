@@ -23,7 +23,7 @@ import math
 import sys
 import time
 import typing
-from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple
+from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple, Union
 
 from . import _link, _sim, budget, capabilities, registry
 from . import _session as _meta
@@ -268,7 +268,7 @@ def link_baud(conn: Connection, option: Optional[int]) -> Tuple[Optional[int], s
 
 
 def check_budget(
-    conn: Connection,
+    conn: Union[Connection, _Offline],
     formats: Dict[int, List[Tuple[int, int]]],
     baud: Optional[int],
     where: str,
@@ -279,7 +279,10 @@ def check_budget(
     if not budget.available():
         return ["the spec gives no UART bandwidth calculation"]
     try:
-        streams = budget.streams_for(conn.model, formats, base or read_base_rates(conn))
+        if base is None:
+            assert isinstance(conn, Connection), "an offline check gives the base rates"
+            base = read_base_rates(conn)
+        streams = budget.streams_for(conn.model, formats, base)
     except budget.BudgetError as e:
         _fail(f"link budget: {e}")
     lines = budget.describe(streams, baud, where)
@@ -475,14 +478,9 @@ def _planned_formats(conn: Connection, planned: List[st.Planned]) -> Tuple[Dict[
     """The data sets' message formats after the file is applied (the device's now, the file's
     where it sets one), and whether the file sets any."""
     formats = read_formats(conn)
-    touched = False
-    for p in planned:
-        for entry in p.entries:
-            entries = budget.format_entries(st.command_of(p.setting, entry))
-            if entries is not None:
-                formats[entries[0]] = entries[1]
-                touched = True
-    return formats, touched
+    mine = _file_formats(planned)
+    formats.update(mine)
+    return formats, bool(mine)
 
 
 def _planned_baud(conn: Connection, planned: List[st.Planned], option: Optional[int]) -> Tuple[Optional[int], str]:
@@ -491,6 +489,51 @@ def _planned_baud(conn: Connection, planned: List[st.Planned], option: Optional[
         if param is not None and not p.setting.keyed and p.entries and isinstance(p.entries[0].get(param), int):
             return int(p.entries[0][param]), f" (the file's {p.setting.name})"
     return link_baud(conn, option)
+
+
+def _file_formats(planned: List[st.Planned]) -> Dict[int, List[Tuple[int, int]]]:
+    """The message formats the file sets, per data set."""
+    formats: Dict[int, List[Tuple[int, int]]] = {}
+    for p in planned:
+        for entry in p.entries:
+            entries = budget.format_entries(st.command_of(p.setting, entry))
+            if entries is not None:
+                formats[entries[0]] = entries[1]
+    return formats
+
+
+def precheck_apply(args: argparse.Namespace) -> None:
+    """`settings apply FILE --device MODEL`: the file is checked before anything is sent, without
+    a connection: its located problems and the settings MODEL does not support, then its own
+    message formats against the link budget (a lower bound of what the device will stream: the
+    sets the file does not touch only add to it) at the file's baud rate, else --baud, else the
+    default rate of a serial port (over TCP without --baud the check waits for the device)."""
+    if args.model is None or args.subcommand != "settings" or args.action != "apply":
+        return
+    planned = _load(args.file, args.model)
+    formats = _file_formats(planned)
+    if not formats or not budget.available():
+        return
+    baud: Optional[int] = None
+    where = ""
+    for p in planned:
+        param = _sim.BAUD.get(p.setting.cls)
+        if param is not None and not p.setting.keyed and p.entries and isinstance(p.entries[0].get(param), int):
+            baud, where = int(p.entries[0][param]), f" (the file's {p.setting.name})"
+    if baud is None and args.baud:
+        baud, where = args.baud, " (--baud)"
+    if baud is None and not args.address.startswith("tcp:"):
+        baud, where = DEFAULT_BAUD, f" ({args.address})"
+    if baud:
+        base = {k: float(v) for k, v in _sim.BASE_RATES.get(args.model, {}).items()}
+        check_budget(_Offline(args.model), formats, baud, where, args.force, base)
+
+
+class _Offline:
+    """What check_budget asks of a connection, before there is one: the model."""
+
+    def __init__(self, model: str) -> None:
+        self.model = model
 
 
 def cmd_apply(conn: Connection, args: argparse.Namespace) -> int:
@@ -837,6 +880,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             if args.subcommand != "ping":
                 raise Usage("auto lists the devices that answer: use `auto ping`")
             return scan(args.ports, args.model, min(args.timeout_ms, 300))
+        precheck_apply(args)  # with --device: refused before any byte is sent
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":
             return SETTINGS[args.action](conn, args)
