@@ -38,8 +38,11 @@ def _run(command: str, address: str, cwd: Path) -> str:
     if args[0] != "mipcodec-device":
         raise AssertionError(f"the page runs {args[0]!r}, not mipcodec-device")
     env = {**os.environ, "PYTHONPATH": str(PACKAGE_DIR)}
+    # A longer reply timeout than the default 1000 ms (not shown on the page): on a loaded machine
+    # the simulator streaming at 1000 Hz answered the command after the page's fast.yaml late.
+    patience = [] if "--timeout-ms" in args else ["--timeout-ms", "5000"]
     run = subprocess.run(
-        [sys.executable, "-m", "mipcodec", "device", *args[1:]],
+        [sys.executable, "-m", "mipcodec", "device", *args[1:], *patience],
         capture_output=True,
         text=True,
         cwd=cwd,
