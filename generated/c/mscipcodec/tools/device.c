@@ -47,6 +47,20 @@
 
 /* ------------------------------------------------------------------------------ errors */
 
+/* src into dst[cap], cut to fit. Not snprintf("%s"): gcc -O3 warns that it may truncate, which is
+ * the point here. */
+static void copy_text(char *dst, size_t cap, const char *src) {
+    size_t n = strlen(src);
+    if (cap == 0) {
+        return;
+    }
+    if (n >= cap) {
+        n = cap - 1;
+    }
+    memcpy(dst, src, n);
+    dst[n] = '\0';
+}
+
 /* Set while `auto` tries a port: a failed attempt is not an error of the run. */
 static bool quiet_notes;
 
@@ -1708,7 +1722,7 @@ static run_t run_values(conn_t *c, uint8_t set, uint8_t descriptor, const char *
     }
     buf_fmt(&line, ",\"values\":%s}]}", values);
     if (mscipc_json_command_line(buf_text(&line), line.n, &command, msg, sizeof msg) != MSCIPC_OK) {
-        snprintf(g_value_error, sizeof g_value_error, "%s", msg);
+        copy_text(g_value_error, sizeof g_value_error, msg);
         free(line.s);
         return R_VALUE;
     }
@@ -1722,8 +1736,7 @@ static run_t run_values(conn_t *c, uint8_t set, uint8_t descriptor, const char *
     r->line = json_parse(r->json, n);
     describe_result(r, f->name, &c->link.result);
     if (r->kind == MSCIPC_RESULT_TRANSPORT || r->kind == MSCIPC_RESULT_LOST) {
-        snprintf(r->describe, sizeof r->describe, "%s",
-                 c->posix.error[0] ? c->posix.error : c->link.result.error);
+        copy_text(r->describe, sizeof r->describe, c->posix.error[0] ? c->posix.error : c->link.result.error);
         return R_LOST;
     }
     return r->kind == MSCIPC_RESULT_ACK || r->kind == MSCIPC_RESULT_SENT ? R_OK : R_FAILED;
@@ -2090,12 +2103,12 @@ static run_t read_entry(conn_t *c, const dev_setting_t *s, const val_t *key, val
     run = run_values(c, s->set, s->descriptor, s->device, buf_text(&values), &r);
     free(values.s);
     if (run == R_VALUE) {
-        snprintf(msg, cap, "%s", g_value_error);
+        copy_text(msg, cap, g_value_error);
         return run;
     }
     if (run != R_OK) {
         *nack = r.kind == MSCIPC_RESULT_NACK;
-        snprintf(msg, cap, "%s", r.describe);
+        copy_text(msg, cap, r.describe);
         result_free(&r);
         return run;
     }
@@ -2150,7 +2163,7 @@ static val_t *normalized(conn_t *c, const dev_setting_t *s, const val_t *entry, 
         if (at != NULL) {
             snprintf(err, cap, "%s.%s", s->name, at + strlen("fields[0].values."));
         } else if (strncmp(msg, s->name, strlen(s->name)) == 0) {
-            snprintf(err, cap, "%s", msg);
+            copy_text(err, cap, msg);
         } else {
             snprintf(err, cap, "%s: %s", s->name, msg);
         }
@@ -3090,7 +3103,7 @@ static void validate(conn_t *c, const val_t *doc, const char *filename, plan_t *
     size_t i;
     const char *manual = describe_model(c->device);
     char manual_copy[200];
-    snprintf(manual_copy, sizeof manual_copy, "%s", manual);
+    copy_text(manual_copy, sizeof manual_copy, manual);
     for (i = 0; i < doc->n; i++) {
         const char *name = doc->keys[i];
         const val_t *value = doc->items[i];
@@ -3329,7 +3342,7 @@ static int differences(conn_t *c, const plan_t *plan, change_t **out, size_t *co
             {
                 buf_t t = {0};
                 key_text(&t, p->setting, entry);
-                snprintf((*out)[*count].key, sizeof(*out)[*count].key, "%s", buf_text(&t));
+                copy_text((*out)[*count].key, sizeof(*out)[*count].key, buf_text(&t));
                 free(t.s);
             }
             (*out)[*count].device = norm;
@@ -3352,7 +3365,7 @@ static void what_of(const change_t *ch, char *what, size_t cap) {
     if (ch->key[0]) {
         snprintf(what, cap, "%s (%s)", ch->setting->name, ch->key);
     } else {
-        snprintf(what, cap, "%s", ch->setting->name);
+        copy_text(what, cap, ch->setting->name);
     }
 }
 

@@ -28,9 +28,20 @@
 #define MSG_NOSIGNAL 0
 #endif
 
+/* src into dst[cap], cut to fit (a reason is a short cause; a longer one loses its tail). Not
+ * snprintf("%s"): gcc -O3 warns that it may truncate, which is the point here. */
+static void copy_text(char *dst, size_t cap, const char *src) {
+    size_t n = strlen(src);
+    if (n >= cap) {
+        n = cap - 1;
+    }
+    memcpy(dst, src, n);
+    dst[n] = '\0';
+}
+
 static codec_status_t fail(codec_posix_t *t, const char *what, const char *detail) {
     snprintf(t->error, sizeof t->error, "%s%s%s", what, detail ? ": " : "", detail ? detail : "");
-    snprintf(t->reason, sizeof t->reason, "%s", detail ? detail : what);
+    copy_text(t->reason, sizeof t->reason, detail ? detail : what);
     if (t->fd >= 0) {
         close(t->fd);
         t->fd = -1;
@@ -211,7 +222,7 @@ codec_status_t codec_posix_open(codec_posix_t *posix, const char *address, unsig
 /* A failed read or write: the message and the bare reason (the link's "port lost (REASON)"). */
 static int lost(codec_posix_t *t, const char *what, const char *reason) {
     snprintf(t->error, sizeof t->error, "%s: %s", what, reason);
-    snprintf(t->reason, sizeof t->reason, "%s", reason);
+    copy_text(t->reason, sizeof t->reason, reason);
     return -1;
 }
 
@@ -324,7 +335,7 @@ static int posix_set_baud(void *ctx, uint32_t baud) {
     }
     if (t->fd < 0 || tcgetattr(t->fd, &tio) != 0 || cfsetispeed(&tio, speed) != 0 ||
         cfsetospeed(&tio, speed) != 0 || tcsetattr(t->fd, TCSANOW, &tio) != 0) {
-        snprintf(t->reason, sizeof t->reason, "%s", t->fd < 0 ? "the port is closed" : strerror(errno));
+        copy_text(t->reason, sizeof t->reason, t->fd < 0 ? "the port is closed" : strerror(errno));
         return -1;
     }
     t->baud = baud;
