@@ -383,8 +383,8 @@ TEST(Sessions, false_sync_then_the_reply_later) {
         });
 }
 
-// tests/sessions/mip/commands.yaml: slow_packet_dropped_by_the_timed_rule
-TEST(Sessions, slow_packet_dropped_by_the_timed_rule) {
+// tests/sessions/mip/commands.yaml: slow_reply_kept_waiting
+TEST(Sessions, slow_reply_kept_waiting) {
     check_session_case(
         nullptr, 500, 100,
         {
@@ -395,8 +395,40 @@ TEST(Sessions, slow_packet_dropped_by_the_timed_rule) {
             SessionStep{300, nullptr, nullptr, "f10100d56a"},
         },
         {
+            "{\"line\":1,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
+        });
+}
+
+// tests/sessions/mip/commands.yaml: false_sync_then_the_reply_after_the_inter_packet_timeout
+TEST(Sessions, false_sync_then_the_reply_after_the_inter_packet_timeout) {
+    check_session_case(
+        nullptr, 500, 100,
+        {
+            SessionStep{
+                0, "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+                nullptr, nullptr},
+            SessionStep{5, nullptr, nullptr, "756501f0"},
+            SessionStep{300, nullptr, nullptr, "7565010404f10100d56a"},
+        },
+        {
+            "{\"offset\":0,\"skipped\":\"756501f0\"}",
+            "{\"line\":1,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
+        });
+}
+
+// tests/sessions/mip/commands.yaml: false_sync_with_nothing_after_it_waits_for_close
+TEST(Sessions, false_sync_with_nothing_after_it_waits_for_close) {
+    check_session_case(
+        nullptr, 300, 100,
+        {
+            SessionStep{
+                0, "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+                nullptr, nullptr},
+            SessionStep{5, nullptr, nullptr, "756501f0"},
+        },
+        {
             "{\"line\":1,\"result\":\"timeout\",\"code\":null,\"reply\":[]}",
-            "{\"offset\":0,\"skipped\":\"7565010404f10100d56a\"}",
+            "{\"offset\":0,\"skipped\":\"756501f0\"}",
         });
 }
 

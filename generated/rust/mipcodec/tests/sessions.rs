@@ -511,9 +511,9 @@ fn session_false_sync_then_the_reply_later() {
     );
 }
 
-/// `slow_packet_dropped_by_the_timed_rule`
+/// `slow_reply_kept_waiting`
 #[test]
-fn session_slow_packet_dropped_by_the_timed_rule() {
+fn session_slow_reply_kept_waiting() {
     check(
         None,
         500,
@@ -524,8 +524,44 @@ fn session_slow_packet_dropped_by_the_timed_rule() {
             Step::Receive { at: 300, hex: "f10100d56a" },
         ],
         &[
+            "{\"line\":1,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
+        ],
+    );
+}
+
+/// `false_sync_then_the_reply_after_the_inter_packet_timeout`
+#[test]
+fn session_false_sync_then_the_reply_after_the_inter_packet_timeout() {
+    check(
+        None,
+        500,
+        100,
+        &[
+            Step::Send { at: 0, line: "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}", bytes: None },
+            Step::Receive { at: 5, hex: "756501f0" },
+            Step::Receive { at: 300, hex: "7565010404f10100d56a" },
+        ],
+        &[
+            "{\"offset\":0,\"skipped\":\"756501f0\"}",
+            "{\"line\":1,\"result\":\"ack\",\"code\":0,\"reply\":[]}",
+        ],
+    );
+}
+
+/// `false_sync_with_nothing_after_it_waits_for_close`
+#[test]
+fn session_false_sync_with_nothing_after_it_waits_for_close() {
+    check(
+        None,
+        300,
+        100,
+        &[
+            Step::Send { at: 0, line: "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}", bytes: None },
+            Step::Receive { at: 5, hex: "756501f0" },
+        ],
+        &[
             "{\"line\":1,\"result\":\"timeout\",\"code\":null,\"reply\":[]}",
-            "{\"offset\":0,\"skipped\":\"7565010404f10100d56a\"}",
+            "{\"offset\":0,\"skipped\":\"756501f0\"}",
         ],
     );
 }
