@@ -127,6 +127,7 @@ mscipc_status_t mscipc_session_init(mscipc_session_t *session, const mscipc_sess
     }
     session->config = *config;
     mscipc_parser_init(&session->parser);
+    session->parser.skip_piece = MSCIPC_SESSION_SKIP_PIECE;
     return MSCIPC_OK;
 }
 
@@ -532,28 +533,44 @@ static void on_stream(void *ctx, const mscipc_event_t *event) {
     route(s, event);
 }
 
+/* Notes where the parser waits after a change: a new position starts its wait at `now`. */
+static void note_wait(mscipc_session_t *s, uint64_t now) {
+    const mscipc_parser_t *parser = &s->parser;
+    if (parser->used == 0) {
+        s->waiting = false;
+    } else if (!s->waiting || s->wait_at != parser->base) {
+        s->waiting = true;
+        s->wait_at = parser->base;
+        s->wait_since = now;
+    }
+}
+
+/* The look-ahead rule (section 8, feed step 2): while the parser has waited at one position for
+ * more than P, the first complete packet with a valid checksum buffered after it ends the wait
+ * (the bytes before it are skipped); with none, nothing is dropped. */
+static void look_ahead(mscipc_session_t *s, uint64_t now) {
+    while (s->waiting && s->parser.used > 0 && s->wait_at == s->parser.base &&
+           now - s->wait_since > s->config.inter_packet_timeout_ms) {
+        if (!mscipc_parser_look_ahead(&s->parser, on_stream, s)) {
+            return;
+        }
+        note_wait(s, now);
+    }
+}
+
 void mscipc_session_feed(mscipc_session_t *session, const uint8_t *data, size_t len, uint64_t now) {
-    mscipc_parser_t *parser;
     assert(session != NULL);
     assert(data != NULL || len == 0);
-    parser = &session->parser;
     session->now = now;
     expire(session, now);
-    /* The timed rule runs before the new bytes are added (section 8, feed step 2). */
-    while (parser->used > 0 && session->waiting && session->wait_at == parser->base &&
-           now - session->wait_since > session->config.inter_packet_timeout_ms) {
-        mscipc_parser_drop_first(parser, on_stream, session);
-    }
+    /* (a) on the buffer as it was, before the new bytes: the same whether the caller polled */
+    look_ahead(session, now);
     if (len > 0) {
-        mscipc_parser_feed(parser, data, len, on_stream, session);
+        mscipc_parser_feed(&session->parser, data, len, on_stream, session);
     }
-    if (parser->used == 0) {
-        session->waiting = false;
-    } else if (!session->waiting || session->wait_at != parser->base) {
-        session->waiting = true;
-        session->wait_at = parser->base;
-        session->wait_since = now;
-    }
+    note_wait(session, now);
+    /* (b) with the new bytes, when the wait at the same position had expired already */
+    look_ahead(session, now);
 }
 
 void mscipc_session_poll(mscipc_session_t *session, uint64_t now) {
@@ -579,7 +596,9 @@ bool mscipc_session_next_deadline(const mscipc_session_t *session, uint64_t *dea
             any = true;
         }
     }
-    if (session->parser.used > 0 && session->waiting) {
+    /* the look-ahead: once, when the wait expires (later a poll without bytes changes nothing) */
+    if (session->parser.used > 0 && session->waiting &&
+        session->now - session->wait_since <= session->config.inter_packet_timeout_ms) {
         uint64_t w = session->wait_since + session->config.inter_packet_timeout_ms + 1u;
         if (!any || w < best) {
             best = w;

@@ -1,7 +1,14 @@
 /* Command sessions of docs/conformance.md section 8: send commands, match their replies, route
  * data. The core is sans-I/O and allocates nothing: the caller gives it the current time in
  * milliseconds with every call, sends the packet bytes it builds and feeds it the bytes it
- * receives. Generated: do not edit. */
+ * receives.
+ *
+ * Bounded state, whatever arrives: the session holds at most MIPC_MAX_PACKET (the protocol's
+ * framing.max_packet) bytes of undecided input, the parser's candidate packet, plus the offset and
+ * length of the pending skip run, which is reported as soon as it reaches MIPC_SESSION_SKIP_PIECE
+ * bytes (so a caller that prints skipped bytes keeps fewer than that many). Replies are recognised
+ * by content: a packet that arrives slowly is never dropped by time (the look-ahead rule of
+ * mipc_session_feed). Generated: do not edit. */
 /*
  * Pointer arguments (every function of this header): a pointer must be valid for what the function
  * reads or writes, and not NULL, unless its documentation says "may be NULL". A buffer pointer
@@ -30,6 +37,10 @@ extern "C" {
 #endif
 /** Room for any error text of a result (refusal, undecodable reply). */
 #define MIPC_SESSION_ERROR_MAX (MIPC_ERROR_MESSAGE_MAX + 3 * MIPC_NAME_MAX + 64)
+
+/** A skip run is reported when it ends or as soon as its pending length reaches this many bytes
+ * (then a run of exactly this length; the bytes skipped after it start a new run). */
+#define MIPC_SESSION_SKIP_PIECE 65536u
 
 #define MIPC_SESSION_DEFAULT_TIMEOUT_MS 1000u
 #define MIPC_SESSION_DEFAULT_INTER_PACKET_TIMEOUT_MS 100u
@@ -180,13 +191,23 @@ mipc_status_t mipc_session_start(mipc_session_t *session, const mipc_field_value
                                  const mipc_start_options_t *options, uint8_t *packet, size_t cap,
                                  mipc_started_t *out);
 
-/** Bytes received at `now` (timeouts first, then the timed inter-packet rule, then the bytes). */
+/**
+ * Bytes received at `now`: the timeouts first, then the look-ahead rule, then the bytes are
+ * parsed, then the look-ahead rule again. The look-ahead rule: while the parser has waited at one
+ * stream position (a partial sync, header or packet) since `s` and now - s > P (the inter-packet
+ * timeout), the first complete packet with a valid checksum buffered after that position ends
+ * the wait (the bytes before it are skipped and it is parsed); without one nothing is dropped.
+ * It runs on the buffer as it was before the bytes (so polling in between changes nothing) and,
+ * when the same wait had expired, after them.
+ */
 void mipc_session_feed(mipc_session_t *session, const uint8_t *data, size_t len, uint64_t now);
-/** Nothing received: the timeouts and the timed rule at `now`. */
+/** Nothing received: the timeouts and the look-ahead rule at `now`. */
 void mipc_session_poll(mipc_session_t *session, uint64_t now);
 /** End of input: poll at `now`, then the buffered bytes that are not a packet are skipped. */
 void mipc_session_close(mipc_session_t *session, uint64_t now);
-/** The earliest time poll has something to do (a timeout, the timed rule); false if none. */
+/** The earliest time poll has something to do: a command's deadline, or s + P + 1 while the
+ * parser waits since s and that wait had not expired at the last call (once expired, only new
+ * bytes can change it); false if none. */
 bool mipc_session_next_deadline(const mipc_session_t *session, uint64_t *deadline);
 /** Commands waiting for their replies. */
 size_t mipc_session_pending(const mipc_session_t *session);

@@ -9,15 +9,34 @@ void codec_parser_init(codec_parser_t *parser) {
     memset(parser, 0, sizeof *parser);
 }
 
+static void emit_skip(codec_parser_t *parser, codec_event_fn fn, void *ctx);
+
+/* Adds the n bytes from stream offset `at` to the pending skip run; with skip_piece set, a run
+ * that reaches skip_piece bytes is reported at once. */
+static void add_skip(codec_parser_t *parser, uint64_t at, uint64_t n, codec_event_fn fn, void *ctx) {
+    while (n > 0) {
+        uint64_t take = n;
+        if (parser->skip_count == 0) {
+            parser->skip_offset = at;
+        }
+        if (parser->skip_piece != 0 && take > parser->skip_piece - parser->skip_count) {
+            take = parser->skip_piece - parser->skip_count;
+        }
+        parser->skip_count += take;
+        at += take;
+        n -= take;
+        if (parser->skip_piece != 0 && parser->skip_count >= parser->skip_piece) {
+            emit_skip(parser, fn, ctx);
+        }
+    }
+}
+
 /* Marks the first n buffered bytes as skipped and drops them. */
-static void skip(codec_parser_t *parser, size_t n) {
+static void skip(codec_parser_t *parser, size_t n, codec_event_fn fn, void *ctx) {
     if (n == 0) {
         return;
     }
-    if (parser->skip_count == 0) {
-        parser->skip_offset = parser->base;
-    }
-    parser->skip_count += n;
+    add_skip(parser, parser->base, n, fn, ctx);
     parser->used -= n;
     memmove(parser->buf, parser->buf + n, parser->used);
     parser->base += n;
@@ -59,7 +78,7 @@ static void process(codec_parser_t *parser, codec_event_fn fn, void *ctx, int fi
     for (;;) {
         size_t payload;
         size_t total;
-        skip(parser, find_sync(parser));
+        skip(parser, find_sync(parser), fn, ctx);
         if (parser->used == 0) {
             return;
         }
@@ -67,12 +86,12 @@ static void process(codec_parser_t *parser, codec_event_fn fn, void *ctx, int fi
             if (!final) {
                 return; /* a partial sync or an incomplete header: wait */
             }
-            skip(parser, 1);
+            skip(parser, 1, fn, ctx);
             continue;
         }
         payload = parser->buf[CODEC_LENGTH_OFFSET];
         if (payload > CODEC_MAX_PAYLOAD) {
-            skip(parser, 1); /* false sync */
+            skip(parser, 1, fn, ctx); /* false sync */
             continue;
         }
         total = CODEC_HEADER_SIZE + payload + CODEC_CHECKSUM_SIZE;
@@ -80,11 +99,11 @@ static void process(codec_parser_t *parser, codec_event_fn fn, void *ctx, int fi
             if (!final) {
                 return; /* incomplete packet: wait */
             }
-            skip(parser, 1);
+            skip(parser, 1, fn, ctx);
             continue;
         }
         if (!codec_checksum_matches(parser->buf, CODEC_HEADER_SIZE + payload)) {
-            skip(parser, 1); /* false sync: resynchronise at the next byte */
+            skip(parser, 1, fn, ctx); /* false sync: resynchronise at the next byte */
             continue;
         }
         emit_skip(parser, fn, ctx);
@@ -131,10 +150,7 @@ static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, code
         if (p[0] != codec_sync[0]) {
             const uint8_t *q = memchr(p, codec_sync[0], left);
             size_t n = q ? (size_t)(q - p) : left;
-            if (parser->skip_count == 0) {
-                parser->skip_offset = base + pos;
-            }
-            parser->skip_count += n;
+            add_skip(parser, base + pos, n, fn, ctx);
             pos += n;
             continue;
         }
@@ -166,10 +182,7 @@ static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, code
             }
         }
         /* false sync: skip one byte and resynchronise */
-        if (parser->skip_count == 0) {
-            parser->skip_offset = base + pos;
-        }
-        parser->skip_count++;
+        add_skip(parser, base + pos, 1, fn, ctx);
         pos++;
     }
     parser->base = base + pos;
@@ -213,12 +226,25 @@ void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
     emit_skip(parser, fn, ctx);
 }
 
-void codec_parser_drop_first(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
+bool codec_parser_look_ahead(codec_parser_t *parser, codec_event_fn fn, void *ctx) {
+    size_t j;
     assert(parser != NULL);
     assert(fn != NULL);
-    if (parser->used == 0) {
-        return;
+    for (j = 1; j + CODEC_HEADER_SIZE <= parser->used; j++) {
+        const uint8_t *p = parser->buf + j;
+        size_t payload;
+        if (memcmp(p, codec_sync, CODEC_SYNC_SIZE) != 0) {
+            continue;
+        }
+        payload = p[CODEC_LENGTH_OFFSET];
+        if (payload > CODEC_MAX_PAYLOAD ||
+            j + CODEC_HEADER_SIZE + payload + CODEC_CHECKSUM_SIZE > parser->used ||
+            !codec_checksum_matches(p, CODEC_HEADER_SIZE + payload)) {
+            continue;
+        }
+        skip(parser, j, fn, ctx);
+        process(parser, fn, ctx, 0);
+        return true;
     }
-    skip(parser, 1);
-    process(parser, fn, ctx, 0);
+    return false;
 }

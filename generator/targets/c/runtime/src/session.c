@@ -126,6 +126,7 @@ codec_status_t codec_session_init(codec_session_t *session, const codec_session_
     }
     session->config = *config;
     codec_parser_init(&session->parser);
+    session->parser.skip_piece = CODEC_SESSION_SKIP_PIECE;
     return CODEC_OK;
 }
 
@@ -531,28 +532,44 @@ static void on_stream(void *ctx, const codec_event_t *event) {
     route(s, event);
 }
 
+/* Notes where the parser waits after a change: a new position starts its wait at `now`. */
+static void note_wait(codec_session_t *s, uint64_t now) {
+    const codec_parser_t *parser = &s->parser;
+    if (parser->used == 0) {
+        s->waiting = false;
+    } else if (!s->waiting || s->wait_at != parser->base) {
+        s->waiting = true;
+        s->wait_at = parser->base;
+        s->wait_since = now;
+    }
+}
+
+/* The look-ahead rule (section 8, feed step 2): while the parser has waited at one position for
+ * more than P, the first complete packet with a valid checksum buffered after it ends the wait
+ * (the bytes before it are skipped); with none, nothing is dropped. */
+static void look_ahead(codec_session_t *s, uint64_t now) {
+    while (s->waiting && s->parser.used > 0 && s->wait_at == s->parser.base &&
+           now - s->wait_since > s->config.inter_packet_timeout_ms) {
+        if (!codec_parser_look_ahead(&s->parser, on_stream, s)) {
+            return;
+        }
+        note_wait(s, now);
+    }
+}
+
 void codec_session_feed(codec_session_t *session, const uint8_t *data, size_t len, uint64_t now) {
-    codec_parser_t *parser;
     assert(session != NULL);
     assert(data != NULL || len == 0);
-    parser = &session->parser;
     session->now = now;
     expire(session, now);
-    /* The timed rule runs before the new bytes are added (section 8, feed step 2). */
-    while (parser->used > 0 && session->waiting && session->wait_at == parser->base &&
-           now - session->wait_since > session->config.inter_packet_timeout_ms) {
-        codec_parser_drop_first(parser, on_stream, session);
-    }
+    /* (a) on the buffer as it was, before the new bytes: the same whether the caller polled */
+    look_ahead(session, now);
     if (len > 0) {
-        codec_parser_feed(parser, data, len, on_stream, session);
+        codec_parser_feed(&session->parser, data, len, on_stream, session);
     }
-    if (parser->used == 0) {
-        session->waiting = false;
-    } else if (!session->waiting || session->wait_at != parser->base) {
-        session->waiting = true;
-        session->wait_at = parser->base;
-        session->wait_since = now;
-    }
+    note_wait(session, now);
+    /* (b) with the new bytes, when the wait at the same position had expired already */
+    look_ahead(session, now);
 }
 
 void codec_session_poll(codec_session_t *session, uint64_t now) {
@@ -578,7 +595,9 @@ bool codec_session_next_deadline(const codec_session_t *session, uint64_t *deadl
             any = true;
         }
     }
-    if (session->parser.used > 0 && session->waiting) {
+    /* the look-ahead: once, when the wait expires (later a poll without bytes changes nothing) */
+    if (session->parser.used > 0 && session->waiting &&
+        session->now - session->wait_since <= session->config.inter_packet_timeout_ms) {
         uint64_t w = session->wait_since + session->config.inter_packet_timeout_ms + 1u;
         if (!any || w < best) {
             best = w;

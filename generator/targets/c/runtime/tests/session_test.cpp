@@ -1,10 +1,12 @@
 // The session core (src/session.c) and the blocking link (src/link.c), on the rendered test
 // protocol (tests/runtime_specs/: ping on every device; rate per device, alpha's reply allowed hz
 // ms more, beta's answered with the reply field 0x84 unless hz is 0, which suppresses its ack):
-// matching, timeouts, the timed inter-packet rule, refusals, ack suppression, the pending queue. The corpus
+// matching, timeouts, the look-ahead rule (replies recognised by content, issue 37), skip runs in
+// pieces of CODEC_SESSION_SKIP_PIECE, refusals, ack suppression, the pending queue. The corpus
 // (tests/sessions/) runs in every package's suite.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,18 @@ struct Fixture {
     }
 };
 
+// A header of a packet that claims 192 payload bytes and never comes: a false sync that waits.
+std::vector<uint8_t> false_sync() {
+    std::vector<uint8_t> h(CODEC_HEADER_SIZE, 0);
+    for (size_t i = 0; i < CODEC_SYNC_SIZE; ++i) {
+        h[i] = codec_sync[i];
+    }
+    h[CODEC_SET_OFFSET] = 0x01;
+    h[CODEC_LENGTH_OFFSET] = 0xC0;
+    return h;
+}
+const std::string H = std::to_string(CODEC_HEADER_SIZE);
+
 codec_field_value_t ping() {
     codec_field_value_t v;
     memset(&v, 0, sizeof v);
@@ -111,17 +125,179 @@ TEST(Session, TwoAcksInOnePacketAndTimeout) {
     EXPECT_EQ(f.log.lines, (std::vector<std::string>{"ack 1 code 0", "nack 2 code 5", "timeout 3"}));
 }
 
-TEST(Session, TimedRuleDropsAFalseSync) {
+// A false sync (a header claiming 240 payload bytes) with nothing complete after it is not dropped
+// by time: the wake-up at s + P + 1 finds nothing, and then there is no wake-up for it any more.
+TEST(Session, LookAheadKeepsAFalseSyncWithNothingAfterIt) {
     Fixture f;
     f.start(ping(), 0, 1);
-    std::vector<uint8_t> stale = {CODEC_SYNC_0};
-    f.feed(stale, 0);
+    f.feed(false_sync(), 5);
     uint64_t d = 0;
     ASSERT_TRUE(codec_session_next_deadline(&f.s, &d));
-    EXPECT_EQ(d, 101u);
-    codec_session_poll(&f.s, 101);
-    f.feed(packet({{0xF1, {0x01, 0x00}}}), 102);
-    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+1", "ack 1 code 0"}));
+    EXPECT_EQ(d, 106u); // s + P + 1
+    codec_session_poll(&f.s, 106);
+    EXPECT_TRUE(f.log.lines.empty());
+    ASSERT_TRUE(codec_session_next_deadline(&f.s, &d));
+    EXPECT_EQ(d, 1000u); // the expired wait wakes nobody: only the command's deadline
+    EXPECT_EQ(f.s.parser.used, (size_t)CODEC_HEADER_SIZE);
+    codec_session_poll(&f.s, 1000);
+    codec_session_close(&f.s, 1000);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"timeout 1", "skip 0+" + H}));
+}
+
+// The same false sync, and the ACK behind it in the same chunk: at s + P + 1 the look-ahead finds
+// the complete ACK at offset 4 and skips the four bytes before it.
+TEST(Session, LookAheadFindsACompletePacketAfterTheWait) {
+    Fixture f;
+    f.start(ping(), 0, 1);
+    std::vector<uint8_t> bytes = false_sync();
+    std::vector<uint8_t> ack = packet({{0xF1, {0x01, 0x00}}});
+    bytes.insert(bytes.end(), ack.begin(), ack.end());
+    f.feed(bytes, 5);
+    codec_session_poll(&f.s, 105); // not expired yet (105 - 5 = P)
+    EXPECT_TRUE(f.log.lines.empty());
+    codec_session_poll(&f.s, 106);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+" + H, "ack 1 code 0"}));
+    EXPECT_EQ(codec_session_pending(&f.s), 0u);
+    uint64_t d = 0;
+    EXPECT_FALSE(codec_session_next_deadline(&f.s, &d));
+}
+
+// Without a poll at the wake-up, the next feed runs the rule on the old buffer first (a): the same
+// events, and the new bytes are parsed after the ACK.
+TEST(Session, LookAheadBeforeTheNewBytesIsTheSameAsAPoll) {
+    Fixture f;
+    f.start(ping(), 0, 1);
+    std::vector<uint8_t> bytes = false_sync();
+    std::vector<uint8_t> ack = packet({{0xF1, {0x01, 0x00}}});
+    bytes.insert(bytes.end(), ack.begin(), ack.end());
+    f.feed(bytes, 5);
+    f.feed(packet({{0x02, {0x00, 0x01}}}), 300);
+    EXPECT_EQ(f.log.lines,
+              (std::vector<std::string>{"skip 0+" + H, "ack 1 code 0",
+                                        "packet " + std::to_string(CODEC_HEADER_SIZE + ack.size())}));
+}
+
+// A slow reply: half of it, then nothing for far longer than P, then the rest: kept waiting and
+// acknowledged (the old timed rule dropped it).
+TEST(Session, LookAheadKeepsASlowReply) {
+    Fixture f;
+    f.start(ping(), 0, 1);
+    std::vector<uint8_t> ack = packet({{0xF1, {0x01, 0x00}}});
+    f.feed(std::vector<uint8_t>(ack.begin(), ack.begin() + 5), 5);
+    uint64_t d = 0;
+    while (codec_session_next_deadline(&f.s, &d) && d <= 300) {
+        codec_session_poll(&f.s, d);
+    }
+    EXPECT_TRUE(f.log.lines.empty());
+    f.feed(std::vector<uint8_t>(ack.begin() + 5, ack.end()), 300);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"ack 1 code 0"}));
+}
+
+// (b): the wait at offset 0 expired long ago; the ACK arrives behind it at 300 ms and the
+// look-ahead after the new bytes finds it. A new wait (the packet cut at the end) starts at 300.
+TEST(Session, LookAheadAfterTheNewBytes) {
+    Fixture f;
+    f.start(ping(), 0, 1);
+    f.feed(false_sync(), 5);
+    codec_session_poll(&f.s, 106);
+    std::vector<uint8_t> ack = packet({{0xF1, {0x01, 0x00}}});
+    std::vector<uint8_t> more = ack;
+    more.push_back(CODEC_SYNC_0);
+    f.feed(more, 300);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+" + H, "ack 1 code 0"}));
+    uint64_t d = 0;
+    ASSERT_TRUE(codec_session_next_deadline(&f.s, &d));
+    EXPECT_EQ(d, 401u);
+    EXPECT_EQ(f.s.wait_at, CODEC_HEADER_SIZE + ack.size());
+}
+
+// A wake-up after an expired check: the look-ahead jumps to a packet whose successor is a new
+// partial packet; that new wait begins at the time of the jump, so the next wake-up is P + 1 later.
+TEST(Session, WakeUpAfterAnExpiredCheck) {
+    Fixture f;
+    std::vector<uint8_t> bytes = false_sync();
+    std::vector<uint8_t> data = packet({{0x02, {0x00, 0x01}}});
+    bytes.insert(bytes.end(), data.begin(), data.end());
+    std::vector<uint8_t> second = false_sync(); // a second false sync
+    bytes.insert(bytes.end(), second.begin(), second.end());
+    f.feed(bytes, 10);
+    uint64_t d = 0;
+    ASSERT_TRUE(codec_session_next_deadline(&f.s, &d));
+    EXPECT_EQ(d, 111u);
+    codec_session_poll(&f.s, 111);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+" + H, "packet " + H}));
+    ASSERT_TRUE(codec_session_next_deadline(&f.s, &d));
+    EXPECT_EQ(d, 212u); // the wait at the second false sync began at 111
+    codec_session_poll(&f.s, 212);
+    EXPECT_FALSE(codec_session_next_deadline(&f.s, &d)); // expired, nothing after it: no wake-up
+    codec_session_close(&f.s, 300);
+    EXPECT_EQ(f.log.lines, (std::vector<std::string>{
+                               "skip 0+" + H, "packet " + H,
+                               "skip " + std::to_string(CODEC_HEADER_SIZE + data.size()) + "+" + H}));
+}
+
+// Skip runs in pieces: noise is reported as runs of exactly CODEC_SESSION_SKIP_PIECE bytes as soon
+// as the pending run reaches that length, whatever the chunks; the rest at the next packet.
+TEST(Session, SkipRunsInPiecesOf65536) {
+    ASSERT_EQ(CODEC_SESSION_SKIP_PIECE, 65536u);
+    for (size_t chunk : {size_t(1000), size_t(65536), size_t(70000), size_t(200000)}) {
+        Fixture f;
+        std::vector<uint8_t> noise(2 * 65536 + 10, 0x00);
+        for (size_t pos = 0; pos < noise.size(); pos += chunk) {
+            size_t n = std::min(chunk, noise.size() - pos);
+            f.feed(std::vector<uint8_t>(noise.begin() + pos, noise.begin() + pos + n), 1);
+            if (pos + n >= 65536 && pos < 65536) {
+                // reported in the call where the run reached 65536 bytes
+                ASSERT_FALSE(f.log.lines.empty()) << chunk;
+                EXPECT_EQ(f.log.lines[0], "skip 0+65536") << chunk;
+            }
+        }
+        EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+65536", "skip 65536+65536"})) << chunk;
+        f.feed(packet({{0x02, {0x00, 0x01}}}), 2);
+        EXPECT_EQ(f.log.lines, (std::vector<std::string>{"skip 0+65536", "skip 65536+65536", "skip 131072+10",
+                                                         "packet 131082"}))
+            << chunk;
+    }
+}
+
+// False syncs (75 65 01 F0 repeated) are skipped one byte at a time by the buffered path: the
+// pieces are exactly 65536 bytes there too, and the parser never holds more than a packet.
+TEST(Session, SkipPiecesOfRepeatedFalseSyncs) {
+    Fixture f;
+    std::vector<uint8_t> chunk;
+    for (int i = 0; i < 1024; ++i) {
+        {
+            std::vector<uint8_t> fs = false_sync();
+            chunk.insert(chunk.end(), fs.begin(), fs.end());
+        }
+    }
+    uint64_t now = 0;
+    for (int i = 0; i < 40; ++i) { // 160 KiB
+        f.feed(chunk, now);
+        now += 1;
+        EXPECT_LE(f.s.parser.used, (size_t)CODEC_MAX_PACKET);
+        EXPECT_LT(f.s.parser.skip_count, 65536u);
+    }
+    std::vector<std::string> pieces;
+    for (size_t k = 0; k < 40 * chunk.size() / 65536; ++k) {
+        pieces.push_back("skip " + std::to_string(k * 65536) + "+65536");
+    }
+    EXPECT_EQ(f.log.lines, pieces);
+}
+
+// The decoder's parser (skip_piece 0) still reports one run.
+TEST(Parser, SkipRunWholeWithoutPieces) {
+    codec_parser_t p;
+    codec_parser_init(&p);
+    std::vector<std::string> got;
+    auto fn = [](void *ctx, const codec_event_t *ev) {
+        static_cast<std::vector<std::string> *>(ctx)->push_back(std::to_string(ev->offset) + "+" +
+                                                                std::to_string(ev->length));
+    };
+    std::vector<uint8_t> noise(200000, 0x00);
+    codec_parser_feed(&p, noise.data(), noise.size(), fn, &got);
+    codec_parser_flush(&p, fn, &got);
+    EXPECT_EQ(got, (std::vector<std::string>{"0+200000"}));
 }
 
 TEST(Session, RefusalsSuppressionAndFullQueue) {

@@ -30,7 +30,10 @@ typedef void (*codec_event_fn)(void *ctx, const codec_event_t *event);
 
 /**
  * Fixed-size state: at most one maximum packet is buffered. Events do not depend on how the
- * input is split into chunks; a skip run is reported just before the next packet or at flush.
+ * input is split into chunks; a skip run is reported just before the next packet or at flush,
+ * and, when skip_piece is not 0, as soon as its pending length reaches skip_piece: then a run of
+ * exactly skip_piece bytes is reported and the bytes skipped after it start a new run (sessions
+ * set it to CODEC_SESSION_SKIP_PIECE, docs/conformance.md section 8; decoding leaves it 0).
  */
 typedef struct {
     uint8_t buf[CODEC_MAX_PACKET];
@@ -38,6 +41,7 @@ typedef struct {
     uint64_t base;        /* stream offset of buf[0] */
     uint64_t skip_offset; /* pending skip run */
     uint64_t skip_count;
+    uint64_t skip_piece; /* 0: skip runs whole; else reported in pieces of at most this many bytes */
 } codec_parser_t;
 
 void codec_parser_init(codec_parser_t *parser);
@@ -46,10 +50,13 @@ void codec_parser_feed(codec_parser_t *parser, const uint8_t *data, size_t len, 
 /** End of stream: candidates that would wait for more input are false syncs (skipped one byte
  * at a time, so complete packets behind them are still found); the last skip run is reported. */
 void codec_parser_flush(codec_parser_t *parser, codec_event_fn fn, void *ctx);
-/** The timed rule of section 8: the first buffered byte (where the parser waits for more input)
- * is skipped as a false sync and parsing resumes at the next byte, with no new input. Does
- * nothing when nothing is buffered. */
-void codec_parser_drop_first(codec_parser_t *parser, codec_event_fn fn, void *ctx);
+/** The look-ahead rule of section 8: when the parser waits for more input at buf[0], finds the
+ * first position j > 0 of the buffered bytes where a sync sequence starts a complete packet with
+ * a valid checksum (length within the maximum payload, all its bytes buffered); if there is one,
+ * the bytes before it are skipped (one skip run with any pending one), parsing resumes at j (the
+ * packet is reported, then what follows it is parsed) and it returns true. Otherwise nothing
+ * changes and it returns false (a slow packet is never dropped by time). */
+bool codec_parser_look_ahead(codec_parser_t *parser, codec_event_fn fn, void *ctx);
 
 #ifdef __cplusplus
 }
