@@ -63,17 +63,16 @@ mipc_status_t mipc_link_init(mipc_link_t *link, const mipc_transport_t *transpor
 static int lost(mipc_link_t *link);
 
 int mipc_link_pump(mipc_link_t *link, uint32_t wait_ms) {
-    uint8_t buf[512];
     int n;
     assert(link != NULL);
-    n = link->transport.read(link->transport.ctx, buf, sizeof buf, wait_ms);
+    n = link->transport.read(link->transport.ctx, link->rx, sizeof link->rx, wait_ms);
     if (n < 0) {
         if (!link->internal && lost(link) == 0) {
             return 0; /* reconnected: the caller goes on receiving */
         }
         return n;
     }
-    mipc_session_feed(&link->session, buf, (size_t)n, link->transport.now_ms(link->transport.ctx));
+    mipc_session_feed(&link->session, link->rx, (size_t)n, link->transport.now_ms(link->transport.ctx));
     return n;
 }
 
@@ -237,7 +236,6 @@ mipc_result_kind_t mipc_link_run(mipc_link_t *link, const mipc_field_value_t *co
     mipc_start_options_t opt;
     mipc_started_t started;
     uint8_t packet[MIPC_MAX_PACKET];
-    uint8_t buf[512];
     mipc_status_t st;
     assert(link != NULL);
     assert(command != NULL);
@@ -278,12 +276,14 @@ mipc_result_kind_t mipc_link_run(mipc_link_t *link, const mipc_field_value_t *co
         uint64_t wait;
         mipc_session_next_deadline(&link->session, &deadline);
         wait = deadline > now ? deadline - now : 0;
-        int n = link->transport.read(link->transport.ctx, buf, sizeof buf,
+        /* one read of at most MIPC_LINK_READ_MAX bytes, no longer than the next wake-up, fed with
+           the time it returned: a deadline passes at the first feed at or after it, whatever arrives */
+        int n = link->transport.read(link->transport.ctx, link->rx, sizeof link->rx,
                                      wait > UINT32_MAX ? UINT32_MAX : (uint32_t)wait);
         if (n < 0) {
             return link_lost(link, "the transport failed", result);
         }
-        mipc_session_feed(&link->session, buf, (size_t)n, link->transport.now_ms(link->transport.ctx));
+        mipc_session_feed(&link->session, link->rx, (size_t)n, link->transport.now_ms(link->transport.ctx));
     }
     if (!link->internal && (link->result.kind == MIPC_RESULT_ACK || link->result.kind == MIPC_RESULT_SENT)) {
         record(link, command);

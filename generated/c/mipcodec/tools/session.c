@@ -3,10 +3,14 @@
  * packets as canonical JSON lines on stdin (or {"link": "idle"}: get the device to idle; {"link":
  * "listen", "ms": M}: receive for M ms), runs them
  * in order over the connection and prints one result line per command; every other packet received
- * (and every skip run) is printed as its canonical line, in arrival order. The steps of getting
- * through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
+ * (and every skip run, in pieces of at most MIPC_SESSION_SKIP_PIECE bytes) is printed as its
+ * canonical line, in arrival order. The steps of getting through (a baud rate searched, a lost port
+ * reopened) are "link: ..." lines on stderr.
  * Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
- * skipped), 2 for usage or connection errors. Generated: do not edit. */
+ * skipped), 2 for usage or connection errors.
+ * Bounded memory whatever arrives: the bytes the parser has not decided on (one packet at most)
+ * and the pending skip piece (fewer than MIPC_SESSION_SKIP_PIECE bytes) plus one read; input lines
+ * of at most TOOL_LINE_MAX bytes. Generated: do not edit. */
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
 #undef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -24,49 +28,106 @@
     "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] "              \
     "[--reconnect-ms N]"
 
+/* The longest input line (without its newline); a longer one is a bad line, read past. */
+#define TOOL_LINE_MAX 1048576u
+#define TOOL_TIMEOUT_MAX 600000ul
+#define TOOL_RECONNECT_MAX 3600000ul
+#define TOOL_LISTEN_MAX 3600000ul
+/* The received bytes the tool keeps: the pending skip piece, the parser's candidate, one read. */
+#define TOOL_KEEP (MIPC_SESSION_SKIP_PIECE + MIPC_MAX_PACKET + MIPC_LINK_READ_MAX)
+
 typedef struct {
     mipc_device_t device;
-    uint8_t *received; /* the bytes received from stream offset received_base on that the parser has
-                          not decided on yet (skip lines print theirs) */
-    size_t received_len;
-    size_t received_cap;
-    uint64_t received_base;
+    /* the bytes received from stream offset base on that the parser has not decided on yet (the
+       pending skip piece and the candidate: skip lines print theirs) and the last read */
+    size_t start; /* of the kept bytes in g_kept */
+    size_t len;
+    uint64_t base;
     const mipc_parser_t *parser;
-    int failed;
 } tool_t;
 
-static char g_line[64 * 1024];
+static uint8_t g_kept[TOOL_KEEP];
+/* A skip line of a whole piece: {"offset":N,"skipped":"<2 x 65536 hex digits>"}. */
+static char g_line[2u * MIPC_SESSION_SKIP_PIECE + 128u];
+static char g_input[TOOL_LINE_MAX + 1u];
 
-static void print_line(size_t n) {
-    if (n >= sizeof g_line) {
-        n = sizeof g_line - 1;
+/* Prints a line formatted by fmt (which returns the full length, like snprintf): whole, however
+ * long (a longer one than g_line is formatted again into a buffer of its size). */
+typedef size_t (*format_fn)(const void *arg, char *out, size_t cap);
+
+static void print_formatted(format_fn fmt, const void *arg) {
+    size_t n = fmt(arg, g_line, sizeof g_line);
+    if (n < sizeof g_line) {
+        fwrite(g_line, 1, n, stdout);
+    } else {
+        char *big = (char *)malloc(n + 1);
+        if (big == NULL) {
+            fprintf(stderr, PROG ": out of memory\n");
+            exit(2);
+        }
+        n = fmt(arg, big, n + 1);
+        fwrite(big, 1, n, stdout);
+        free(big);
     }
-    fwrite(g_line, 1, n, stdout);
     fputc('\n', stdout);
     fflush(stdout);
 }
 
-static void on_event(void *ctx, const mipc_session_event_t *ev) {
-    tool_t *tool = (tool_t *)ctx;
-    size_t n;
-    if (ev->kind == MIPC_SESSION_RESULT) {
-        n = mipc_json_result_line(ev->result, ev->result->tag, tool->device, g_line, sizeof g_line);
-    } else if (ev->kind == MIPC_SESSION_PACKET) {
-        n = mipc_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset,
-                                  tool->device, g_line, sizeof g_line);
-    } else {
-        uint64_t off = ev->stream->offset;
-        uint64_t len = ev->stream->length;
-        const uint8_t *bytes =
-            off >= tool->received_base && off - tool->received_base + len <= tool->received_len
-                ? tool->received + (off - tool->received_base)
-                : NULL;
-        n = mipc_json_skip_line(off, bytes, bytes ? (size_t)len : 0, g_line, sizeof g_line);
-    }
-    print_line(n);
+typedef struct {
+    const mipc_result_t *result;
+    uint64_t line;
+    mipc_device_t device;
+} result_arg_t;
+
+static size_t result_fmt(const void *arg, char *out, size_t cap) {
+    const result_arg_t *a = (const result_arg_t *)arg;
+    return mipc_json_result_line(a->result, a->line, a->device, out, cap);
 }
 
-/* The transport, recording what it reads (skip lines print the bytes). */
+static void print_result(const mipc_result_t *result, uint64_t line, mipc_device_t device) {
+    result_arg_t a;
+    a.result = result;
+    a.line = line;
+    a.device = device;
+    print_formatted(result_fmt, &a);
+}
+
+typedef struct {
+    const mipc_event_t *event;
+    const tool_t *tool;
+} stream_arg_t;
+
+static size_t stream_fmt(const void *arg, char *out, size_t cap) {
+    const stream_arg_t *a = (const stream_arg_t *)arg;
+    const mipc_event_t *ev = a->event;
+    const tool_t *t = a->tool;
+    if (ev->kind == MIPC_EVENT_PACKET) {
+        return mipc_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, t->device, out, cap);
+    }
+    if (ev->offset < t->base || ev->offset - t->base + ev->length > t->len) {
+        /* the tool keeps every byte a skip run can report: this does not happen */
+        fprintf(stderr, PROG ": internal error: skipped bytes at offset %llu not kept\n",
+                (unsigned long long)ev->offset);
+        exit(2);
+    }
+    return mipc_json_skip_line(ev->offset, g_kept + t->start + (size_t)(ev->offset - t->base),
+                               (size_t)ev->length, out, cap);
+}
+
+static void on_event(void *ctx, const mipc_session_event_t *ev) {
+    tool_t *tool = (tool_t *)ctx;
+    if (ev->kind == MIPC_SESSION_RESULT) {
+        print_result(ev->result, ev->result->tag, tool->device);
+    } else {
+        stream_arg_t a;
+        a.event = ev->stream;
+        a.tool = tool;
+        print_formatted(stream_fmt, &a);
+    }
+}
+
+/* The transport, keeping what it reads until the parser has decided on it (skip lines print the
+ * bytes). */
 typedef struct {
     mipc_transport_t inner;
     tool_t *tool;
@@ -76,30 +137,32 @@ static int rec_read(void *ctx, uint8_t *buf, size_t cap, uint32_t timeout_ms) {
     recorder_t *r = (recorder_t *)ctx;
     tool_t *t = r->tool;
     int n;
-    /* the bytes before the parser's pending skip run and buffered candidate are printed already:
-     * dropped, so that the recording stays bounded while data streams */
+    /* the bytes before the parser's pending skip run and buffered candidate are printed already */
     uint64_t keep = t->parser->skip_count > 0 ? t->parser->skip_offset : t->parser->base;
-    if (keep > t->received_base) {
-        size_t drop = (size_t)(keep - t->received_base);
-        drop = drop < t->received_len ? drop : t->received_len;
-        memmove(t->received, t->received + drop, t->received_len - drop);
-        t->received_len -= drop;
-        t->received_base += drop;
+    if (keep > t->base) {
+        size_t drop = keep - t->base < t->len ? (size_t)(keep - t->base) : t->len;
+        t->start += drop;
+        t->len -= drop;
+        t->base += drop;
+    }
+    if (t->len == 0) {
+        t->start = 0;
+    }
+    if (cap > MIPC_LINK_READ_MAX) {
+        cap = MIPC_LINK_READ_MAX;
     }
     n = r->inner.read(r->inner.ctx, buf, cap, timeout_ms);
     if (n > 0) {
-        if (t->received_len + (size_t)n > t->received_cap) {
-            size_t cap2 = (t->received_cap + (size_t)n) * 2;
-            uint8_t *p = (uint8_t *)realloc(t->received, cap2);
-            if (p == NULL) {
-                fprintf(stderr, PROG ": out of memory\n");
-                exit(2);
-            }
-            t->received = p;
-            t->received_cap = cap2;
+        if (t->start + t->len + (size_t)n > sizeof g_kept) {
+            memmove(g_kept, g_kept + t->start, t->len);
+            t->start = 0;
         }
-        memcpy(t->received + t->received_len, buf, (size_t)n);
-        t->received_len += (size_t)n;
+        if (t->len + (size_t)n > sizeof g_kept) {
+            fprintf(stderr, PROG ": internal error: more than %u undecided bytes\n", (unsigned)TOOL_KEEP);
+            exit(2);
+        }
+        memcpy(g_kept + t->start + t->len, buf, (size_t)n);
+        t->len += (size_t)n;
     }
     return n;
 }
@@ -120,57 +183,92 @@ static void log_line(void *ctx, const char *line) {
     fflush(stderr);
 }
 
-/* The line without white space into out (cap bytes); false when it does not fit. */
+/* RFC 8259 white space (a line holding only these is blank). */
+static bool json_space(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+/* The line without the white space outside strings into out (cap bytes); false when it does not
+ * fit. */
 static bool compact(const char *s, size_t n, char *out, size_t cap) {
     size_t i;
     size_t k = 0;
+    bool in_string = false;
+    bool escaped = false;
     for (i = 0; i < n; i++) {
         char c = s[i];
-        if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+        if (!in_string && json_space(c)) {
             continue;
         }
         if (k + 1 >= cap) {
             return false;
         }
         out[k++] = c;
+        if (in_string) {
+            if (escaped) {
+                escaped = false;
+            } else if (c == '\\') {
+                escaped = true;
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        }
     }
     out[k] = '\0';
     return true;
 }
 
-/* {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first): 2 with *ms; else 0. */
+/* The "ms" of a listen line: a JSON integer (no sign, fraction or exponent) from 0 to
+ * TOOL_LISTEN_MAX. */
+static bool listen_ms(const char *v, size_t n, unsigned long *ms) {
+    size_t i;
+    if (n == 0 || n > 7 || (n > 1 && v[0] == '0')) {
+        return false;
+    }
+    *ms = 0;
+    for (i = 0; i < n; i++) {
+        if (v[i] < '0' || v[i] > '9') {
+            return false;
+        }
+        *ms = *ms * 10u + (unsigned long)(v[i] - '0');
+    }
+    return *ms <= TOOL_LISTEN_MAX;
+}
+
+enum { LINK_NONE = 0, LINK_IDLE = 1, LINK_LISTEN = 2, LINK_BAD_MS = 3 };
+
+/* {"link":"idle"}: LINK_IDLE; {"link":"listen","ms":M} (either key first): LINK_LISTEN with *ms,
+ * LINK_BAD_MS when M is not an integer from 0 to TOOL_LISTEN_MAX; else LINK_NONE (a command). */
 static int link_line(const char *s, size_t n, unsigned long *ms) {
-    char c[64];
-    const char *digits = NULL;
+    static const char listen_first[] = "{\"link\":\"listen\",\"ms\":";
+    static const char ms_first[] = "{\"ms\":";
+    static const char listen_last[] = ",\"link\":\"listen\"}";
+    char c[256];
     size_t len;
+    const char *v;
+    size_t vn;
     if (!compact(s, n, c, sizeof c)) {
-        return 0;
+        return LINK_NONE;
     }
+    len = strlen(c);
     if (strcmp(c, "{\"link\":\"idle\"}") == 0) {
-        return 1;
+        return LINK_IDLE;
     }
-    if (strncmp(c, "{\"link\":\"listen\",\"ms\":", 22) == 0) {
-        digits = c + 22;
-        len = strlen(digits);
-        if (len < 2 || digits[len - 1] != '}') {
-            return 0;
-        }
-        c[strlen(c) - 1] = '\0';
-    } else if (strncmp(c, "{\"ms\":", 6) == 0) {
-        char *end = strchr(c + 6, ',');
-        if (end == NULL || strcmp(end, ",\"link\":\"listen\"}") != 0) {
-            return 0;
-        }
-        *end = '\0';
-        digits = c + 6;
+    if (len > sizeof listen_first && strncmp(c, listen_first, sizeof listen_first - 1) == 0 &&
+        c[len - 1] == '}') {
+        v = c + sizeof listen_first - 1;
+        vn = len - (sizeof listen_first - 1) - 1;
+    } else if (len > sizeof ms_first - 1 + sizeof listen_last - 1 &&
+               strncmp(c, ms_first, sizeof ms_first - 1) == 0 &&
+               strcmp(c + len - (sizeof listen_last - 1), listen_last) == 0) {
+        v = c + sizeof ms_first - 1;
+        vn = len - (sizeof ms_first - 1) - (sizeof listen_last - 1);
     } else {
-        return 0;
+        return LINK_NONE;
     }
-    if (digits[0] == '\0' || strspn(digits, "0123456789") != strlen(digits) || strlen(digits) > 9) {
-        return 0;
-    }
-    *ms = strtoul(digits, NULL, 10);
-    return 2;
+    return listen_ms(v, vn, ms) ? LINK_LISTEN : LINK_BAD_MS;
 }
 
 static int usage_error(const char *fmt, const char *arg) {
@@ -180,52 +278,100 @@ static int usage_error(const char *fmt, const char *arg) {
     return 2;
 }
 
-static int int_option(const char *name, const char *text, unsigned long low, unsigned long *out) {
-    char *end;
-    if (text[0] < '0' || text[0] > '9' || strspn(text, "0123456789") != strlen(text)) {
-        fprintf(stderr, PROG ": %s needs an integer >= %lu, not '%s' (" USAGE ")\n", name, low, text);
-        return -1;
-    }
-    *out = strtoul(text, &end, 10);
-    if (*out < low || *out > 0xffffffffUL) {
-        fprintf(stderr, PROG ": %s needs an integer >= %lu, not '%s' (" USAGE ")\n", name, low, text);
-        return -1;
-    }
-    return 0;
-}
-
-/* Reads one line of any length (without its newline) into *buf; false at the end of input. */
-static bool read_line(char **buf, size_t *cap, size_t *len) {
-    int c;
-    *len = 0;
-    c = getchar();
-    if (c == EOF) {
+/* A decimal integer of ASCII digits only (leading zeros allowed) from low to high. */
+static bool decimal(const char *text, unsigned long low, unsigned long high, unsigned long *out) {
+    const char *p = text;
+    unsigned long v = 0;
+    if (*p == '\0') {
         return false;
     }
-    while (c != EOF && c != '\n') {
-        if (*len + 1 >= *cap) {
-            size_t cap2 = *cap ? *cap * 2 : 4096;
-            char *p = (char *)realloc(*buf, cap2);
-            if (p == NULL) {
-                fprintf(stderr, PROG ": out of memory\n");
-                exit(2);
-            }
-            *buf = p;
-            *cap = cap2;
+    for (; *p != '\0'; p++) {
+        if (*p < '0' || *p > '9') {
+            return false;
         }
-        (*buf)[(*len)++] = (char)c;
+        if (v > high) {
+            continue; /* out of range already: only the digits are still checked */
+        }
+        v = v * 10u + (unsigned long)(*p - '0');
+    }
+    *out = v;
+    return v >= low && v <= high;
+}
+
+/* The baud rates of the protocol's devices (the IR's link.baud_rates, every model), ascending,
+ * each once. Returns how many. */
+static size_t baud_rates(uint32_t *out, size_t cap) {
+    size_t n = 0;
+    unsigned d;
+    for (d = 1u; d < 32u && mipc_device_id((mipc_device_t)d) != NULL; d++) {
+        size_t k = 0;
+        size_t i;
+        const uint32_t *rates = mipc_device_baud_rates((mipc_device_t)d, &k);
+        for (i = 0; i < k; i++) {
+            size_t j;
+            bool seen = false;
+            for (j = 0; j < n && !seen; j++) {
+                seen = out[j] == rates[i];
+            }
+            if (seen || n == cap) {
+                continue;
+            }
+            for (j = n++; j > 0 && out[j - 1] > rates[i]; j--) {
+                out[j] = out[j - 1];
+            }
+            out[j] = rates[i];
+        }
+    }
+    return n;
+}
+
+static bool baud_option(const char *text, unsigned long *baud) {
+    uint32_t rates[MIPC_LINK_MAX_BAUD_RATES * 4];
+    size_t n = baud_rates(rates, sizeof rates / sizeof rates[0]);
+    size_t i;
+    unsigned long v = 0;
+    if (decimal(text, 1, 0xffffffffUL, &v)) {
+        for (i = 0; i < n; i++) {
+            if (rates[i] == v) {
+                *baud = v;
+                return true;
+            }
+        }
+    }
+    fprintf(stderr, PROG ": --baud: %s is not a baud rate of %s devices (", text, MIPC_PROTOCOL_NAME);
+    for (i = 0; i < n; i++) {
+        fprintf(stderr, "%s%lu", i ? ", " : "", (unsigned long)rates[i]);
+    }
+    fprintf(stderr, ")\n");
+    return false;
+}
+
+/* One input line (without its newline) into g_input: 1 with *len, 0 at the end of input, -1 for
+ * a line longer than TOOL_LINE_MAX (read past, not kept). */
+static int read_line(size_t *len) {
+    int c = getchar();
+    size_t n = 0;
+    bool too_long = false;
+    if (c == EOF) {
+        return 0;
+    }
+    while (c != EOF && c != '\n') {
+        if (n < TOOL_LINE_MAX) {
+            g_input[n++] = (char)c;
+        } else {
+            too_long = true;
+        }
         c = getchar();
     }
-    if (*buf) {
-        (*buf)[*len] = '\0';
-    }
-    return true;
+    g_input[n] = '\0';
+    *len = n;
+    return too_long ? -1 : 1;
 }
 
 static bool blank(const char *s, size_t n) {
     size_t i;
     for (i = 0; i < n; i++) {
-        if (s[i] != ' ' && s[i] != '\t' && s[i] != '\r' && s[i] != '\f' && s[i] != '\v') {
+        if (!json_space(s[i])) {
             return false;
         }
     }
@@ -272,7 +418,7 @@ int main(int argc, char **argv) {
     unsigned long timeout_ms = MIPC_SESSION_DEFAULT_TIMEOUT_MS;
     unsigned long baud = 115200;
     unsigned long reconnect_ms = 0;
-    unsigned long listen_ms = 0;
+    unsigned long ms = 0;
     mipc_result_kind_t kind;
     bool auto_baud = false;
     mipc_port_t port;
@@ -284,9 +430,8 @@ int main(int argc, char **argv) {
     mipc_session_config_t config;
     static mipc_link_t link;
     static tool_t tool;
-    char *line = NULL;
-    size_t cap = 0;
-    size_t len;
+    size_t len = 0;
+    int got;
     unsigned long number = 0;
     int status = 0;
     int i;
@@ -296,6 +441,8 @@ int main(int argc, char **argv) {
             return 0;
         }
     }
+    /* every option checked before anything is opened or sent (docs/conformance.md section 8, the
+       option table: exit status 2 and one line) */
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *eq = strchr(a, '=');
@@ -326,15 +473,19 @@ int main(int argc, char **argv) {
         if (strcmp(name, "--connect") == 0) {
             connect = value;
         } else if (strcmp(name, "--timeout-ms") == 0) {
-            if (int_option(name, value, 0, &timeout_ms)) {
+            if (!decimal(value, 1, TOOL_TIMEOUT_MAX, &timeout_ms)) {
+                fprintf(stderr, PROG ": --timeout-ms: expected an integer from 1 to %lu, got %s\n",
+                        TOOL_TIMEOUT_MAX, value);
                 return 2;
             }
         } else if (strcmp(name, "--baud") == 0) {
-            if (int_option(name, value, 1, &baud)) {
+            if (!baud_option(value, &baud)) {
                 return 2;
             }
         } else if (strcmp(name, "--reconnect-ms") == 0) {
-            if (int_option(name, value, 0, &reconnect_ms)) {
+            if (!decimal(value, 1, TOOL_RECONNECT_MAX, &reconnect_ms)) {
+                fprintf(stderr, PROG ": --reconnect-ms: expected an integer from 1 to %lu, got %s\n",
+                        TOOL_RECONNECT_MAX, value);
                 return 2;
             }
         } else if (!mipc_device_from_id(value, &device) || device == MIPC_DEVICE_ANY) {
@@ -342,7 +493,8 @@ int main(int argc, char **argv) {
         }
     }
     if (connect == NULL) {
-        return usage_error("%s", "--connect ADDRESS is required");
+        fprintf(stderr, PROG ": --connect ADDRESS is required\n");
+        return 2;
     }
     if (mipc_posix_open(&posix, connect, baud) != MIPC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
@@ -379,37 +531,48 @@ int main(int argc, char **argv) {
             return 2;
         }
     }
-    while (read_line(&line, &cap, &len)) {
+    while ((got = read_line(&len)) != 0) {
+        const char *line = g_input;
         mipc_field_value_t command;
         mipc_command_facts_t facts;
         mipc_start_options_t opt;
         char msg[MIPC_ERROR_MESSAGE_MAX + 200];
         number++;
+        if (got < 0) {
+            fprintf(stderr, PROG ": line %lu: longer than %u bytes\n", number, (unsigned)TOOL_LINE_MAX);
+            status = 1;
+            continue;
+        }
         if (!utf8_ok((const unsigned char *)line, len)) {
             fprintf(stderr, PROG ": line %lu: not UTF-8\n", number);
             status = 1;
             continue;
         }
-        if (line == NULL || blank(line, len)) {
+        if (blank(line, len)) {
             continue;
         }
-        switch (link_line(line, len, &listen_ms)) {
-        case 1:
+        switch (link_line(line, len, &ms)) {
+        case LINK_IDLE:
             if (mipc_link_to_idle(&link) == MIPC_RESULT_REFUSED || !link.connected) {
                 fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
                 mipc_posix_close(&posix);
                 return 2;
             }
-            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            print_result(&link.result, number, device);
             continue;
-        case 2:
-            if (mipc_link_listen(&link, (uint32_t)listen_ms) < 0) {
+        case LINK_LISTEN:
+            if (mipc_link_listen(&link, (uint32_t)ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
                 mipc_posix_close(&posix);
                 return 2;
             }
-            printf("{\"line\":%lu,\"listened\":%lu}\n", number, listen_ms);
+            printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
             fflush(stdout);
+            continue;
+        case LINK_BAD_MS:
+            fprintf(stderr, PROG ": line %lu: \"ms\" must be an integer from 0 to %lu\n", number,
+                    TOOL_LISTEN_MAX);
+            status = 1;
             continue;
         default:
             break;
@@ -430,7 +593,7 @@ int main(int argc, char **argv) {
         opt.tag = number;
         kind = mipc_link_run(&link, &command, &opt, NULL);
         if (kind == MIPC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
-            print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
+            print_result(&link.result, number, device);
             continue;
         }
         if (kind == MIPC_RESULT_TRANSPORT || kind == MIPC_RESULT_LOST) {
@@ -441,7 +604,5 @@ int main(int argc, char **argv) {
     }
     mipc_link_close(&link);
     mipc_posix_close(&posix);
-    free(line);
-    free(tool.received);
     return status;
 }

@@ -315,13 +315,16 @@ static int posix_flush(void *ctx) {
     if (!t->socket) {
         return tcflush(t->fd, TCIFLUSH) == 0 ? 0 : -1;
     }
-    for (;;) { /* a socket: read what is there without waiting */
-        uint8_t buf[512];
+    /* a socket: read what is there without waiting, at most 1 MiB (under a flood there is always
+       more: the flush must end) */
+    for (int k = 0; k < 256; k++) {
+        uint8_t buf[4096];
         ssize_t n = recv(t->fd, buf, sizeof buf, MSG_DONTWAIT);
         if (n <= 0) {
             return n == 0 ? -1 : 0;
         }
     }
+    return 0;
 }
 
 static int posix_set_baud(void *ctx, uint32_t baud) {

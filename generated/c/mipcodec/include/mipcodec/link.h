@@ -82,6 +82,15 @@ typedef struct {
 #define MIPC_LINK_MAX_SETTINGS 64
 #endif
 #define MIPC_LINK_LOG_MAX 320
+/** The most bytes one read asks the transport for (at most 65536, docs/conformance.md section 8):
+ * after each read the bytes are fed with the current time and their events handled, so a deadline
+ * is kept under a continuous flood. */
+#ifndef MIPC_LINK_READ_MAX
+#define MIPC_LINK_READ_MAX 4096
+#endif
+#if MIPC_LINK_READ_MAX < 1 || MIPC_LINK_READ_MAX > 65536
+#error "MIPC_LINK_READ_MAX must be from 1 to 65536"
+#endif
 /** The most baud rates a search tries (every device's supported rates). */
 #define MIPC_LINK_MAX_BAUD_RATES 16
 
@@ -106,6 +115,7 @@ typedef struct {
     mipc_result_t result; /* its result, with packet and error copied below */
     uint8_t reply[MIPC_MAX_PACKET];
     char error[MIPC_SESSION_ERROR_MAX];
+    uint8_t rx[MIPC_LINK_READ_MAX]; /* one read */
     uintptr_t next_tag;
     /* getting through (mipc_link_attach) */
     mipc_port_t port;

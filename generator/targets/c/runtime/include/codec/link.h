@@ -81,6 +81,15 @@ typedef struct {
 #define CODEC_LINK_MAX_SETTINGS 64
 #endif
 #define CODEC_LINK_LOG_MAX 320
+/** The most bytes one read asks the transport for (at most 65536, docs/conformance.md section 8):
+ * after each read the bytes are fed with the current time and their events handled, so a deadline
+ * is kept under a continuous flood. */
+#ifndef CODEC_LINK_READ_MAX
+#define CODEC_LINK_READ_MAX 4096
+#endif
+#if CODEC_LINK_READ_MAX < 1 || CODEC_LINK_READ_MAX > 65536
+#error "CODEC_LINK_READ_MAX must be from 1 to 65536"
+#endif
 /** The most baud rates a search tries (every device's supported rates). */
 #define CODEC_LINK_MAX_BAUD_RATES 16
 
@@ -105,6 +114,7 @@ typedef struct {
     codec_result_t result; /* its result, with packet and error copied below */
     uint8_t reply[CODEC_MAX_PACKET];
     char error[CODEC_SESSION_ERROR_MAX];
+    uint8_t rx[CODEC_LINK_READ_MAX]; /* one read */
     uintptr_t next_tag;
     /* getting through (codec_link_attach) */
     codec_port_t port;
