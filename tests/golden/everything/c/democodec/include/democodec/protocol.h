@@ -6,6 +6,9 @@
 
 #include <stdint.h>
 
+/* The protocol's name in the IR (protocols[].name), as the tools name it in messages. */
+#define DEMOC_PROTOCOL_NAME "demo"
+
 /* Byte order of multi-byte values in field data (byte_order: big). */
 #define DEMOC_LITTLE_ENDIAN 0
 
