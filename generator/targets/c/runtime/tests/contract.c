@@ -25,7 +25,7 @@
 #endif
 #if !defined(CODEC_SESSION_ACK_DESCRIPTOR) || !defined(CODEC_SESSION_ACK_OK) ||                              \
     !defined(CODEC_SESSION_MAX_EXPECT) || !defined(CODEC_PATH_MAX_DEPTH) ||                                  \
-    !defined(CODEC_ERROR_MESSAGE_MAX) || !defined(CODEC_NAME_MAX)
+    !defined(CODEC_ERROR_MESSAGE_MAX) || !defined(CODEC_NAME_MAX) || !defined(CODEC_PROTOCOL_NAME)
 #error "codec/protocol.h lacks a session or limit constant of the runtime contract"
 #endif
 #if !defined(CODEC_LINK_HAS_IDLE) || !defined(CODEC_LINK_IDLE_SET) ||                                        \
