@@ -308,11 +308,17 @@ int codec_link_listen(codec_link_t *link, uint32_t duration_ms) {
     end = link->transport.now_ms(link->transport.ctx) + duration_ms;
     for (;;) {
         uint64_t now = link->transport.now_ms(link->transport.ctx);
+        uint64_t wake = end;
+        uint64_t next = 0;
         int n;
         if (now >= end) {
             return 0;
         }
-        n = codec_link_pump(link, (uint32_t)(end - now));
+        /* no longer than the session's next wake-up (a timeout, the look-ahead) */
+        if (codec_session_next_deadline(&link->session, &next) && next < end) {
+            wake = next;
+        }
+        n = codec_link_pump(link, wake > now ? (uint32_t)(wake - now) : 0u);
         if (n < 0) {
             return n;
         }

@@ -379,4 +379,32 @@ TEST(Link, RunsACommandOverATransport) {
     EXPECT_EQ(loop.now - before, 1000u);
 }
 
+// Listening wakes at the session's next wake-up: a false sync with a data packet behind it is
+// resolved by the look-ahead at s + P + 1, not at the end of the listening time.
+struct Timed {
+    Loop *loop;
+    std::vector<std::string> lines;
+};
+
+TEST(Link, ListenWakesForTheLookAhead) {
+    Loop loop;
+    codec_transport_t t{&loop, loop_read, loop_write, loop_now};
+    codec_session_config_t c;
+    codec_session_config_init(&c);
+    Timed timed{&loop, {}};
+    c.on_event = [](void *ctx, const codec_session_event_t *ev) {
+        Timed *tm = static_cast<Timed *>(ctx);
+        tm->lines.push_back((ev->kind == CODEC_SESSION_SKIP ? "skip at " : "packet at ") +
+                            std::to_string(tm->loop->now));
+    };
+    c.ctx = &timed;
+    static codec_link_t link;
+    ASSERT_EQ(codec_link_init(&link, &t, &c), CODEC_OK);
+    loop.to_host = false_sync();
+    std::vector<uint8_t> data = packet({{0x02, {0x00, 0x01}}});
+    loop.to_host.insert(loop.to_host.end(), data.begin(), data.end());
+    EXPECT_EQ(codec_link_listen(&link, 1000), 0);
+    EXPECT_EQ(timed.lines, (std::vector<std::string>{"skip at 101", "packet at 101"}));
+}
+
 } // namespace
