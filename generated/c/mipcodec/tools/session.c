@@ -188,38 +188,6 @@ static bool json_space(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
-/* The line without the white space outside strings into out (cap bytes); false when it does not
- * fit. */
-static bool compact(const char *s, size_t n, char *out, size_t cap) {
-    size_t i;
-    size_t k = 0;
-    bool in_string = false;
-    bool escaped = false;
-    for (i = 0; i < n; i++) {
-        char c = s[i];
-        if (!in_string && json_space(c)) {
-            continue;
-        }
-        if (k + 1 >= cap) {
-            return false;
-        }
-        out[k++] = c;
-        if (in_string) {
-            if (escaped) {
-                escaped = false;
-            } else if (c == '\\') {
-                escaped = true;
-            } else if (c == '"') {
-                in_string = false;
-            }
-        } else if (c == '"') {
-            in_string = true;
-        }
-    }
-    out[k] = '\0';
-    return true;
-}
-
 /* The "ms" of a listen line: a JSON integer (no sign, fraction or exponent) from 0 to
  * TOOL_LISTEN_MAX. */
 static bool listen_ms(const char *v, size_t n, unsigned long *ms) {
@@ -237,38 +205,144 @@ static bool listen_ms(const char *v, size_t n, unsigned long *ms) {
     return *ms <= TOOL_LISTEN_MAX;
 }
 
-enum { LINK_NONE = 0, LINK_IDLE = 1, LINK_LISTEN = 2, LINK_BAD_MS = 3 };
+/* A scanner of one JSON object's top level, for the link lines (the command lines have their
+ * own reader): keys and the text of their values. */
+typedef struct {
+    const char *s;
+    size_t n;
+    size_t pos;
+} scan_t;
 
-/* {"link":"idle"}: LINK_IDLE; {"link":"listen","ms":M} (either key first): LINK_LISTEN with *ms,
- * LINK_BAD_MS when M is not an integer from 0 to TOOL_LISTEN_MAX; else LINK_NONE (a command). */
+static void scan_ws(scan_t *sc) {
+    while (sc->pos < sc->n && json_space(sc->s[sc->pos])) {
+        sc->pos++;
+    }
+}
+
+/* A string at pos (its quotes included); false when there is none. */
+static bool scan_string(scan_t *sc) {
+    if (sc->pos >= sc->n || sc->s[sc->pos] != '"') {
+        return false;
+    }
+    for (sc->pos++; sc->pos < sc->n; sc->pos++) {
+        if (sc->s[sc->pos] == '\\') {
+            sc->pos++;
+        } else if (sc->s[sc->pos] == '"') {
+            sc->pos++;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Any value at pos (strings, nested objects and arrays matched, scalars up to a delimiter). */
+static bool scan_value(scan_t *sc) {
+    size_t depth = 0;
+    size_t begin = sc->pos;
+    while (sc->pos < sc->n) {
+        char c = sc->s[sc->pos];
+        if (c == '"') {
+            if (!scan_string(sc)) {
+                return false;
+            }
+            continue;
+        }
+        if (depth == 0 && (c == ',' || c == '}' || c == ']' || json_space(c))) {
+            break;
+        }
+        if (c == '{' || c == '[') {
+            depth++;
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            depth--;
+        }
+        sc->pos++;
+    }
+    return depth == 0 && sc->pos > begin;
+}
+
+enum { LINK_NONE = 0, LINK_IDLE = 1, LINK_LISTEN = 2, LINK_BAD_MS = 3, LINK_BAD = 4 };
+
+static bool token_is(const char *s, size_t begin, size_t end, const char *text) {
+    return end - begin == strlen(text) && memcmp(s + begin, text, end - begin) == 0;
+}
+
+/* A line that is one JSON object with a top-level "link" key: {"link":"idle"}: LINK_IDLE;
+ * {"link":"listen","ms":M} (either key first): LINK_LISTEN with *ms, LINK_BAD_MS when M is not an
+ * integer from 0 to TOOL_LISTEN_MAX; any other: LINK_BAD. LINK_NONE without a "link" key or when
+ * it is not such an object (a command line; its reader reports what is wrong). */
 static int link_line(const char *s, size_t n, unsigned long *ms) {
-    static const char listen_first[] = "{\"link\":\"listen\",\"ms\":";
-    static const char ms_first[] = "{\"ms\":";
-    static const char listen_last[] = ",\"link\":\"listen\"}";
-    char c[256];
-    size_t len;
-    const char *v;
-    size_t vn;
-    if (!compact(s, n, c, sizeof c)) {
+    scan_t sc;
+    size_t link_at = 0;
+    size_t link_end = 0;
+    size_t ms_at = 0;
+    size_t ms_end = 0;
+    size_t keys = 0;
+    bool have_link = false;
+    bool have_ms = false;
+    sc.s = s;
+    sc.n = n;
+    sc.pos = 0;
+    scan_ws(&sc);
+    if (sc.pos >= n || s[sc.pos] != '{') {
         return LINK_NONE;
     }
-    len = strlen(c);
-    if (strcmp(c, "{\"link\":\"idle\"}") == 0) {
+    sc.pos++;
+    scan_ws(&sc);
+    if (sc.pos < n && s[sc.pos] == '}') {
+        return LINK_NONE;
+    }
+    for (;;) {
+        size_t key;
+        size_t key_end;
+        size_t value;
+        scan_ws(&sc);
+        key = sc.pos;
+        if (!scan_string(&sc)) {
+            return LINK_NONE;
+        }
+        key_end = sc.pos;
+        scan_ws(&sc);
+        if (sc.pos >= n || s[sc.pos] != ':') {
+            return LINK_NONE;
+        }
+        sc.pos++;
+        scan_ws(&sc);
+        value = sc.pos;
+        if (!scan_value(&sc)) {
+            return LINK_NONE;
+        }
+        keys++;
+        if (token_is(s, key, key_end, "\"link\"")) {
+            have_link = true;
+            link_at = value;
+            link_end = sc.pos;
+        } else if (token_is(s, key, key_end, "\"ms\"")) {
+            have_ms = true;
+            ms_at = value;
+            ms_end = sc.pos;
+        }
+        scan_ws(&sc);
+        if (sc.pos < n && s[sc.pos] == ',') {
+            sc.pos++;
+            continue;
+        }
+        if (sc.pos < n && s[sc.pos] == '}') {
+            sc.pos++;
+            break;
+        }
+        return LINK_NONE;
+    }
+    scan_ws(&sc);
+    if (sc.pos != n || !have_link) {
+        return LINK_NONE;
+    }
+    if (keys == 1 && token_is(s, link_at, link_end, "\"idle\"")) {
         return LINK_IDLE;
     }
-    if (len > sizeof listen_first && strncmp(c, listen_first, sizeof listen_first - 1) == 0 &&
-        c[len - 1] == '}') {
-        v = c + sizeof listen_first - 1;
-        vn = len - (sizeof listen_first - 1) - 1;
-    } else if (len > sizeof ms_first - 1 + sizeof listen_last - 1 &&
-               strncmp(c, ms_first, sizeof ms_first - 1) == 0 &&
-               strcmp(c + len - (sizeof listen_last - 1), listen_last) == 0) {
-        v = c + sizeof ms_first - 1;
-        vn = len - (sizeof ms_first - 1) - (sizeof listen_last - 1);
-    } else {
-        return LINK_NONE;
+    if (keys == 2 && have_ms && token_is(s, link_at, link_end, "\"listen\"")) {
+        return listen_ms(s + ms_at, ms_end - ms_at, ms) ? LINK_LISTEN : LINK_BAD_MS;
     }
-    return listen_ms(v, vn, ms) ? LINK_LISTEN : LINK_BAD_MS;
+    return LINK_BAD;
 }
 
 static int usage_error(const char *fmt, const char *arg) {
@@ -572,6 +646,12 @@ int main(int argc, char **argv) {
         case LINK_BAD_MS:
             fprintf(stderr, PROG ": line %lu: \"ms\" must be an integer from 0 to %lu\n", number,
                     TOOL_LISTEN_MAX);
+            status = 1;
+            continue;
+        case LINK_BAD:
+            fprintf(stderr,
+                    PROG ": line %lu: expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}\n",
+                    number);
             status = 1;
             continue;
         default:
