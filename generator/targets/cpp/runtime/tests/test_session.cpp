@@ -13,6 +13,7 @@
 
 #include "protopkg/protopkg.hpp"
 #include "protopkg/session.hpp"
+#include "protopkg/transport.hpp"
 
 namespace {
 
@@ -291,6 +292,60 @@ TEST(Session, SkipRunsInPieces) {
     t.feed(big.data(), big.size(), 0, one);
     EXPECT_EQ(one.lines, (std::vector<std::string>{"skip:0+65536", "skip:65536+65536", "skip:131072+8928",
                                                    "packet:140000"}));
+}
+
+/// A device that floods: every read returns as many noise bytes as asked (zeros, or repeated false
+/// syncs: a sync and a length byte claiming more payload than ever comes) 1 ms later.
+struct FloodPort : protopkg::Transport {
+    bool false_syncs = false;
+    std::int64_t now = 0;
+    std::size_t largest_read = 0;
+    std::uint64_t sent = 0;
+    bool write(const std::uint8_t *, std::size_t, protopkg::ErrorText &) override {
+        return true;
+    }
+    long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t, protopkg::ErrorText &) override {
+        largest_read = capacity > largest_read ? capacity : largest_read;
+        const Bytes fs = false_sync(0xF0);
+        for (std::size_t i = 0; i < capacity; ++i) {
+            buffer[i] = false_syncs ? fs[(sent + i) % fs.size()] : 0;
+        }
+        sent += capacity;
+        now += 1;
+        return static_cast<long>(capacity);
+    }
+};
+
+// The blocking API under a flood (issue 37, docs/conformance.md section 8): reads of at most 65536
+// bytes, the command's timeout at the first read at or after its deadline, skip runs in pieces of at
+// most kSkipPiece bytes that tile the stream.
+TEST(Session, ConnectionKeepsItsDeadlineUnderAFlood) {
+    for (const bool false_syncs : {false, true}) {
+        FloodPort port;
+        port.false_syncs = false_syncs;
+        Session<1>::Options o;
+        o.timeout_ms = 500;
+        protopkg::Connection c(port, o, [&port]() { return port.now; });
+        std::uint64_t next = 0;
+        bool tiled = true;
+        std::uint64_t largest = 0;
+        c.on_event([&](const SessionEvent &e) {
+            if (e.kind == SessionEvent::Kind::skip) {
+                tiled = tiled && e.offset == next;
+                next = e.offset + e.count;
+                largest = e.count > largest ? e.count : largest;
+            }
+        });
+        control::Ping ping;
+        const protopkg::Call call = c.run(ping);
+        EXPECT_EQ(call.result.status, Status::timeout);
+        EXPECT_EQ(port.now, 500); // the read that reached the deadline
+        EXPECT_LE(port.largest_read, 65536u);
+        EXPECT_TRUE(tiled);
+        EXPECT_LE(largest, protopkg::kSkipPiece);
+        EXPECT_GT(next, 0u);
+        EXPECT_LE(port.sent - next, protopkg::kSkipPiece + protopkg::kMaxPacket); // the rest pending
+    }
 }
 
 } // namespace
