@@ -149,6 +149,8 @@ inline constexpr LinkCommand kLinkIdle{true, 0x01, 0x02};
 inline constexpr LinkCommand kLinkPing{true, 0x01, 0x01};
 /// resume: 3dm-gx5-45-dcp.txt:832, 3dm-cv7-ins-docs.txt:8099
 inline constexpr LinkCommand kLinkResume{true, 0x01, 0x06};
+/// The protocol's name in the spec ("mip"), for messages such as the session tool's.
+inline constexpr const char *kProtocolName = "mip";
 /// Times the idle command is sent (each with the command's reply timeout) before giving up.
 inline constexpr unsigned kLinkIdleAttempts = 3;
 /// Milliseconds after a baud-rate change before the device answers at the new rate (-1: the

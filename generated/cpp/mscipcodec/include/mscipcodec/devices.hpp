@@ -113,6 +113,8 @@ inline constexpr LinkCommand kLinkIdle{false, 0x00, 0x00};
 inline constexpr LinkCommand kLinkPing{true, 0x01, 0x02};
 /// The manual names no resume command.
 inline constexpr LinkCommand kLinkResume{false, 0x00, 0x00};
+/// The protocol's name in the spec ("mscip"), for messages such as the session tool's.
+inline constexpr const char *kProtocolName = "mscip";
 /// Times the idle command is sent (each with the command's reply timeout) before giving up.
 inline constexpr unsigned kLinkIdleAttempts = 3;
 /// Milliseconds after a baud-rate change before the device answers at the new rate (-1: the

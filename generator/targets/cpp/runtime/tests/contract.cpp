@@ -65,6 +65,7 @@ static_assert(is<decltype(pkg::kLinkIdleAttempts), unsigned> && is<decltype(pkg:
 static_assert(is<decltype(pkg::device_baud_rates(pkg::Device{})), pkg::BaudTable> &&
               is<decltype(*pkg::device_baud_rates(pkg::Device{}).begin()), std::uint32_t> &&
               is<decltype(pkg::device_default_baud(pkg::Device{})), std::uint32_t>);
+static_assert(is<decltype(pkg::kProtocolName), const char *>);
 
 // lookup_tables.hpp (namespace detail: read by the runtime's lookup.hpp)
 static_assert(is<std::remove_all_extents_t<decltype(pkg::detail::kSetRow)>, std::uint8_t> &&

@@ -6,16 +6,26 @@
 // through (a baud rate searched, a lost port reopened) are "link: ..." lines on stderr.
 // Exit 0 when every line ran, 1 when a line was bad (reported on stderr with its number and
 // skipped), 2 for usage or connection errors.
+//
+// Input lines and options follow the one table of docs/conformance.md section 8 (the same in every
+// language): a line longer than kMaxLine bytes, or not UTF-8, is a bad line (read past in bounded
+// memory); a blank line (only space, tab, CR, LF) is skipped; anything else is a command or link
+// line. Bounded whatever the device sends (issue 37): each read asks for at most 65536 bytes and
+// is fed and printed before the next; the received bytes are kept only from the session's
+// retain_from() on (the pending skip piece, under 65536 bytes, and the parser's candidate).
+#include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <iostream>
+#include <unistd.h>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "protopkg/json_reader.hpp"
 #include "protopkg/session_json.hpp"
 #include "protopkg/transport_posix.hpp"
 
@@ -31,42 +41,139 @@ int usage_error(const std::string &message) {
     return 2;
 }
 
-bool int_option(const std::string &text, long low, long &out) {
-    if (text.empty() || text.size() > 12 || text.find_first_not_of("0123456789") != std::string::npos) {
-        return false;
-    }
-    out = std::atol(text.c_str());
-    return out >= low;
-}
-
-/// {"link":"idle"}: 1; {"link":"listen","ms":M} (either key first, any white space): 2 with ms; else 0.
-int link_line(const std::string &line, long &ms) {
-    std::string c;
-    for (const char ch : line) {
-        if (ch != ' ' && ch != '\t' && ch != '\r' && ch != '\f' && ch != '\v') {
-            c += ch;
-        }
-    }
-    if (c == "{\"link\":\"idle\"}") {
-        return 1;
-    }
-    std::string digits;
-    const std::string a = "{\"link\":\"listen\",\"ms\":";
-    const std::string b = ",\"link\":\"listen\"}";
-    if (c.rfind(a, 0) == 0 && c.size() > a.size() + 1 && c.back() == '}') {
-        digits = c.substr(a.size(), c.size() - a.size() - 1);
-    } else if (c.rfind("{\"ms\":", 0) == 0 && c.size() > 6 + b.size() &&
-               c.compare(c.size() - b.size(), b.size(), b) == 0) {
-        digits = c.substr(6, c.size() - 6 - b.size());
-    } else {
-        return 0;
-    }
-    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) {
-        return 0;
-    }
-    ms = std::atol(digits.c_str());
+/// A violation of the option table: exactly one line "PROG: TEXT", exit status 2.
+int option_error(const std::string &text) {
+    std::fprintf(stderr, "%s: %s\n", kProg, text.c_str());
     return 2;
 }
+
+/// A decimal integer of ASCII digits only (leading zeros allowed; no sign, no spaces) from low to
+/// high.
+bool int_option(const std::string &text, long low, long high, long &out) {
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) {
+        return false;
+    }
+    const std::size_t first = text.find_first_not_of('0');
+    if (first != std::string::npos && text.size() - first > 12) {
+        return false;
+    }
+    out = first == std::string::npos ? 0 : std::atol(text.c_str() + first);
+    return out >= low && out <= high;
+}
+
+/// The protocol's link baud rates (every device's, from the spec's link.baud_rates as generated
+/// into devices.hpp), ascending, each once.
+std::vector<std::uint32_t> baud_rates() {
+    std::vector<std::uint32_t> out;
+    for (const protopkg::Device d : protopkg::kDevices) {
+        for (const std::uint32_t r : protopkg::device_baud_rates(d)) {
+            out.push_back(r);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+constexpr long kMaxListenMs = 3600000;
+
+/// A link line: 1 for {"link":"idle"}, 2 for {"link":"listen","ms":M} (with ms), -1 for a
+/// malformed one (why), 0 for anything else (a command line). A JSON object with a "link" member is
+/// a link line.
+int link_line(const std::string &line, long &ms, std::string &why) {
+    if (line.find("\"link\"") == std::string::npos) {
+        return 0;
+    }
+    protopkg::json::Value v;
+    std::string error;
+    if (!protopkg::json::parse(line, v, error) || v.type != protopkg::json::Value::Type::object) {
+        return 0;
+    }
+    const protopkg::json::Value *link = v.find("link");
+    if (link == nullptr) {
+        return 0;
+    }
+    const bool is_string = link->type == protopkg::json::Value::Type::string;
+    if (v.keys.size() == 1 && is_string && link->text == "idle") {
+        return 1;
+    }
+    const protopkg::json::Value *m = v.find("ms");
+    if (v.keys.size() == 2 && is_string && link->text == "listen" && m != nullptr) {
+        const std::string &t = m->text;
+        if (m->type == protopkg::json::Value::Type::number &&
+            (t == "-0" || int_option(t, 0, kMaxListenMs, ms))) {
+            if (t == "-0") {
+                ms = 0;
+            }
+            return 2;
+        }
+        why = "\"ms\" must be an integer from 0 to 3600000";
+        return -1;
+    }
+    why = "expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}";
+    return -1;
+}
+
+/// Standard input as lines, in bounded memory: a line longer than kMaxLine bytes (without its
+/// newline) is reported as too long, its bytes past the limit read and dropped.
+class LineReader {
+  public:
+    static constexpr std::size_t kMaxLine = 1048576;
+
+    /// The next line (without its newline); false at the end of input. too_long: the line was
+    /// longer than kMaxLine (line then holds its first kMaxLine bytes).
+    bool next(std::string &line, bool &too_long) {
+        line.clear();
+        too_long = false;
+        bool any = false;
+        for (;;) {
+            if (pos_ == len_) {
+                if (eof_) {
+                    return any;
+                }
+                const long n = read_some();
+                if (n <= 0) {
+                    eof_ = true;
+                    return any;
+                }
+                pos_ = 0;
+                len_ = static_cast<std::size_t>(n);
+            }
+            any = true;
+            const char *start = buf_.data() + pos_;
+            const void *nl = std::memchr(start, '\n', len_ - pos_);
+            const std::size_t n =
+                nl != nullptr ? static_cast<std::size_t>(static_cast<const char *>(nl) - start) : len_ - pos_;
+            if (!too_long) {
+                if (line.size() + n > kMaxLine) {
+                    line.append(start, kMaxLine - line.size());
+                    too_long = true;
+                } else {
+                    line.append(start, n);
+                }
+            }
+            pos_ += n;
+            if (nl != nullptr) {
+                ++pos_;
+                return true;
+            }
+        }
+    }
+
+  private:
+    long read_some() {
+        for (;;) {
+            const ssize_t n = ::read(0, buf_.data(), buf_.size());
+            if (n >= 0 || errno != EINTR) {
+                return static_cast<long>(n);
+            }
+        }
+    }
+    std::vector<char> buf_ = std::vector<char>(65536);
+    std::size_t pos_ = 0;
+    std::size_t len_ = 0;
+    bool eof_ = false;
+};
 
 void print(const std::string &text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
@@ -158,6 +265,9 @@ int main(int argc, char **argv) {
         }
         if (eq == std::string::npos) {
             if (i + 1 >= args.size()) {
+                if (name == "--connect") {
+                    return option_error("--connect ADDRESS is required");
+                }
                 return usage_error(name + " needs a value");
             }
             value = args[i + 1];
@@ -169,16 +279,23 @@ int main(int argc, char **argv) {
         if (name == "--connect") {
             connect = value;
         } else if (name == "--timeout-ms") {
-            if (!int_option(value, 0, timeout_ms)) {
-                return usage_error(name + " needs an integer >= 0, not '" + value + "'");
+            if (!int_option(value, 1, 600000, timeout_ms)) {
+                return option_error("--timeout-ms: expected an integer from 1 to 600000, got " + value);
             }
         } else if (name == "--baud") {
-            if (!int_option(value, 1, baud)) {
-                return usage_error(name + " needs an integer >= 1, not '" + value + "'");
+            const std::vector<std::uint32_t> rates = baud_rates();
+            if (!int_option(value, 1, 100000000, baud) ||
+                std::find(rates.begin(), rates.end(), static_cast<std::uint32_t>(baud)) == rates.end()) {
+                std::string all;
+                for (const std::uint32_t r : rates) {
+                    all += (all.empty() ? "" : ", ") + std::to_string(r);
+                }
+                return option_error("--baud: " + value + " is not a baud rate of " + protopkg::kProtocolName +
+                                    " devices (" + all + ")");
             }
         } else if (name == "--reconnect-ms") {
-            if (!int_option(value, 0, reconnect_ms)) {
-                return usage_error(name + " needs an integer >= 0, not '" + value + "'");
+            if (!int_option(value, 1, 3600000, reconnect_ms)) {
+                return option_error("--reconnect-ms: expected an integer from 1 to 3600000, got " + value);
             }
         } else {
             device_id = protopkg::device_from_name(value.c_str());
@@ -192,7 +309,7 @@ int main(int argc, char **argv) {
         }
     }
     if (connect.empty()) {
-        return usage_error("--connect ADDRESS is required");
+        return option_error("--connect ADDRESS is required");
     }
     std::signal(SIGPIPE, SIG_IGN);
     std::string error;
@@ -220,8 +337,11 @@ int main(int argc, char **argv) {
         }
         long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
                   protopkg::ErrorText &err) override {
+            // Bounded: the session keeps retain_from() within a skip piece and a candidate of
+            // the stream's end; the bytes before it are dropped once they are half of what is kept
+            // (each byte moved a bounded number of times).
             const std::uint64_t keep = device->session().retain_from();
-            if (keep > base) {
+            if (keep > base && (keep - base) * 2 >= hist.size()) {
                 hist.erase(hist.begin(), hist.begin() + static_cast<std::ptrdiff_t>(keep - base));
                 base = keep;
             }
@@ -281,8 +401,16 @@ int main(int argc, char **argv) {
     int status = 0;
     unsigned long number = 0;
     std::string line;
-    while (std::getline(std::cin, line)) {
+    LineReader input;
+    bool too_long = false;
+    while (input.next(line, too_long)) {
         ++number;
+        if (too_long) {
+            std::fprintf(stderr, "%s: line %lu: longer than %zu bytes\n", kProg, number,
+                         LineReader::kMaxLine);
+            status = 1;
+            continue;
+        }
         if (!utf8(line)) {
             std::fprintf(stderr, "%s: line %lu: not UTF-8\n", kProg, number);
             status = 1;
@@ -292,7 +420,13 @@ int main(int argc, char **argv) {
             continue;
         }
         long listen_ms = 0;
-        const int link_kind = link_line(line, listen_ms);
+        std::string why;
+        const int link_kind = link_line(line, listen_ms, why);
+        if (link_kind < 0) {
+            std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number, why.c_str());
+            status = 1;
+            continue;
+        }
         if (link_kind == 1) {
             const protopkg::Call idle = dev.to_idle();
             if (idle.io_error || idle.result.status == protopkg::Status::refused) {

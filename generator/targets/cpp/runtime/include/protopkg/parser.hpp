@@ -1,6 +1,7 @@
 // Stream parser of docs/conformance.md section 1: fed arbitrary chunks, it reports packets and
 // runs of skipped bytes exactly as if it had seen the whole stream at once. Its state is one
-// maximum packet (kMaxPacket bytes); skipped bytes are reported by offset and count only.
+// maximum packet (kMaxPacket bytes); skipped bytes are reported by offset and count only (a run
+// of any length costs two integers).
 #pragma once
 
 #include <array>
@@ -86,14 +87,45 @@ class StreamParser {
         return base_;
     }
 
-    /// The timed rule of docs/conformance.md section 8: the candidate it waits at is a false sync;
-    /// its first byte is skipped and parsing resumes at the next byte (no new input).
-    template <class Handler> void drop_one(Handler &&on_event) {
-        if (len_ == 0) {
-            return;
+    /// The look-ahead rule of docs/conformance.md section 8 (the session calls it once the wait at
+    /// the candidate has lasted longer than the inter-packet timeout): the first position j > 0 in
+    /// the buffered bytes where a sync sequence starts a complete packet with a valid checksum (the
+    /// checks of process(), on bytes already buffered only). When there is one, the bytes before
+    /// it join the pending skip run, and parsing resumes there (the run, the packet and what
+    /// follows are reported); true. When there is none nothing changes (a slow packet keeps
+    /// waiting); false.
+    template <class Handler> bool look_ahead(Handler &&on_event) {
+        const std::uint8_t *p = buf_.data() + start_;
+        for (std::size_t j = 1; j + kHeaderSize <= len_; ++j) {
+            if (p[j] != kSync[0] || std::memcmp(p + j, kSync.data(), kSyncSize) != 0) {
+                continue;
+            }
+            const std::size_t length = p[j + kLengthOffset];
+            if (length > kMaxPayload) {
+                continue;
+            }
+            const std::size_t body = kHeaderSize + length;
+            if (j + body + kChecksumSize > len_ || !fletcher16_matches(p + j, body, p + j + body)) {
+                continue;
+            }
+            skip(j);
+            process(on_event, false);
+            return true;
         }
-        skip(1);
-        process(on_event, false);
+        return false;
+    }
+
+    /// Bytes in the skip run not yet reported (it ends at the next packet, or at flush()).
+    std::uint64_t pending_skip() const {
+        return skip_count_;
+    }
+
+    /// Reports the first `piece` bytes of the pending skip run now (piece <= pending_skip()); the
+    /// rest stays pending, as a run starting right after it.
+    template <class Handler> void report_skip_piece(std::uint64_t piece, Handler &&on_event) {
+        emit_skip_run(on_event, skip_offset_, piece);
+        skip_offset_ += piece;
+        skip_count_ -= piece;
     }
 
   private:

@@ -6,6 +6,13 @@
 // Storage is fixed: the parser's one maximum packet, a queue of at most N pending commands and at
 // most kMaxHandlers registered handlers. Nothing is allocated while bytes are fed (registering a
 // handler may allocate, once, inside its std::function).
+//
+// Bounded whatever arrives (issue 37): the session holds at most kMaxPacket bytes of undecided
+// input (the parser's candidate) and the pending skip run as an offset and a count, under
+// kSkipPiece bytes after every call (a run is reported in pieces of kSkipPiece bytes as it grows,
+// so a caller that prints skipped bytes keeps fewer than kSkipPiece + kMaxPacket bytes plus one
+// read from retain_from() on). Replies are recognised by content, not by timing: the look-ahead
+// rule (feed()) drops a waiting candidate only for a complete valid packet buffered after it.
 #pragma once
 
 #include <array>
@@ -31,6 +38,9 @@ inline constexpr std::int64_t kDefaultInterPacketTimeoutMs = 100; ///< inter-pac
 inline constexpr std::size_t kDefaultMaxPending = 8;              ///< pending queue capacity
 inline constexpr std::size_t kMaxHandlers = 16;                   ///< per-packet and per-field handlers
 inline constexpr std::size_t kMaxExpected = 4;                    ///< expected reply descriptors per command
+/// SKIP_PIECE of docs/conformance.md section 8: a skip run is reported as soon as its pending
+/// length reaches this many bytes (a run of exactly kSkipPiece; the bytes after it start a new run).
+inline constexpr std::uint64_t kSkipPiece = 65536;
 
 /// The outcome of a command.
 enum class Status : std::uint8_t { ack, nack, timeout, invalid, sent, refused };
@@ -374,7 +384,10 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         return s;
     }
 
-    /// The earliest time at which poll() has something to do (a timeout or the timed rule).
+    /// The earliest time at which poll() has something to do: the earliest command deadline, and
+    /// for the look-ahead rule s + P + 1 while the parser waits at a candidate (since s) and the
+    /// wait had not expired at the last call (once expired, a poll without bytes changes nothing:
+    /// the next feed looks again by itself).
     std::optional<std::int64_t> next_deadline() const {
         std::optional<std::int64_t> t;
         for (std::size_t i = 0; i < count_; ++i) {
@@ -382,7 +395,7 @@ template <std::size_t N = kDefaultMaxPending> class Session {
                 t = queue_[i].deadline;
             }
         }
-        if (waiting_) {
+        if (waiting_ && last_now_ - wait_since_ <= opt_.inter_packet_timeout_ms) {
             const std::int64_t w = wait_since_ + opt_.inter_packet_timeout_ms + 1;
             if (!t || w < *t) {
                 t = w;
@@ -391,28 +404,28 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         return t;
     }
 
-    /// Bytes received at `now`; on_event(const SessionEvent&) for each event, in order.
+    /// Bytes received at `now`; on_event(const SessionEvent&) for each event, in order: the
+    /// timeouts due at `now`; the look-ahead rule on the bytes buffered before (when the wait at the
+    /// candidate began more than P ms ago); the new bytes parsed; the look-ahead rule again when the
+    /// parser still waits at a candidate whose wait has expired; then the pending skip run's full
+    /// pieces of kSkipPiece bytes.
     template <class Handler>
     void feed(const std::uint8_t *data, std::size_t size, std::int64_t now, Handler &&on_event) {
+        last_now_ = now;
         expire(now, on_event);
         auto parsed = [&](const StreamEvent &e) { route(e, on_event); };
-        while (waiting_ && parser_.buffered() && wait_at_ == parser_.buffered_at() &&
-               now - wait_since_ > opt_.inter_packet_timeout_ms) {
-            parser_.drop_one(parsed);
-        }
+        look_ahead(now, parsed);
         if (size > 0) {
             parser_.feed(data, size, parsed);
+            track(now);
+            look_ahead(now, parsed);
         }
-        if (!parser_.buffered()) {
-            waiting_ = false;
-        } else if (!waiting_ || wait_at_ != parser_.buffered_at()) {
-            waiting_ = true;
-            wait_at_ = parser_.buffered_at();
-            wait_since_ = now;
+        while (parser_.pending_skip() >= kSkipPiece) {
+            parser_.report_skip_piece(kSkipPiece, parsed);
         }
     }
 
-    /// Nothing received: the timeouts and the timed rule at `now`.
+    /// Nothing received: the timeouts and the look-ahead rule at `now`.
     template <class Handler> void poll(std::int64_t now, Handler &&on_event) {
         feed(nullptr, 0, now, on_event);
     }
@@ -452,6 +465,25 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         std::uint8_t descriptor = 0;
         std::function<void(const std::uint8_t *, std::size_t, const PacketView &)> call;
     };
+
+    /// The wait at the parser's candidate: it begins at `now` when the parser waits at a position it
+    /// was not waiting at before.
+    void track(std::int64_t now) {
+        if (!parser_.buffered()) {
+            waiting_ = false;
+        } else if (!waiting_ || wait_at_ != parser_.buffered_at()) {
+            waiting_ = true;
+            wait_at_ = parser_.buffered_at();
+            wait_since_ = now;
+        }
+    }
+
+    /// The look-ahead rule, repeated while it finds a packet (after a jump the wait begins anew).
+    template <class Parsed> void look_ahead(std::int64_t now, Parsed &parsed) {
+        while (waiting_ && now - wait_since_ > opt_.inter_packet_timeout_ms && parser_.look_ahead(parsed)) {
+            track(now);
+        }
+    }
 
     void remove(std::size_t i) {
         for (std::size_t j = i; j + 1 < count_; ++j) {
@@ -501,10 +533,16 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     template <class Handler> PROTOPKG_INLINE void route(const StreamEvent &e, Handler &on_event) {
         SessionEvent ev;
         if (e.kind == StreamEvent::Kind::skip) {
+            // A run that ends (at a packet or at close) longer than a piece: its full pieces first.
             ev.kind = SessionEvent::Kind::skip;
             ev.offset = e.offset;
-            ev.count = e.count;
-            on_event(static_cast<const SessionEvent &>(ev));
+            std::uint64_t left = e.count;
+            while (left > 0) {
+                ev.count = left < kSkipPiece ? left : kSkipPiece;
+                on_event(static_cast<const SessionEvent &>(ev));
+                ev.offset += ev.count;
+                left -= ev.count;
+            }
             return;
         }
         if (count_ > 0 && set_pending(e.packet.set()) && match(e.packet, on_event)) {
@@ -664,6 +702,7 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     bool waiting_ = false;
     std::uint64_t wait_at_ = 0;
     std::int64_t wait_since_ = 0;
+    std::int64_t last_now_ = 0; ///< `now` of the last feed/poll (for next_deadline)
     std::array<Slot, N> queue_{};
     std::size_t count_ = 0;
     Result result_{};

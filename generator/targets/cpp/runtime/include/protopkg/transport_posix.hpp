@@ -17,6 +17,7 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <sys/types.h>
 #include <termios.h>
@@ -112,13 +113,24 @@ class FdTransport : public Transport {
         if (baud_ != 0) {
             return ::tcflush(fd_, TCIFLUSH) == 0;
         }
-        std::uint8_t buf[512];
-        for (;;) { // a socket: read what is there without waiting
-            const ssize_t n = ::recv(fd_, buf, sizeof buf, MSG_DONTWAIT);
-            if (n <= 0) {
-                return n < 0;
-            }
+        // A socket: read what is there now without waiting, no more (a device that keeps
+        // sending must not hold the flush: issue 37).
+        int available = 0;
+        if (::ioctl(fd_, FIONREAD, &available) != 0) {
+            return false;
         }
+        std::uint8_t buf[4096];
+        while (available > 0) {
+            const std::size_t want = static_cast<std::size_t>(available) < sizeof buf
+                                         ? static_cast<std::size_t>(available)
+                                         : sizeof buf;
+            const ssize_t n = ::recv(fd_, buf, want, MSG_DONTWAIT);
+            if (n <= 0) {
+                return n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK);
+            }
+            available -= static_cast<int>(n);
+        }
+        return true;
     }
     std::uint32_t baud() const override {
         return static_cast<std::uint32_t>(baud_);
