@@ -57,6 +57,7 @@ DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a partial packet waiting longer is a fa
 MAX_PENDING = 8  # commands waiting for their reply at once (the C core's fixed queue)
 SKIP_PIECE = 65536  # a pending skip run is reported when it reaches this many bytes (section 8)
 READ_MAX = 65536  # every read from the transport asks for at most this many bytes (section 8)
+FEED_SLICE = 4096  # Device feeds a read in slices of this many bytes, each at the current time
 
 ACK = "ack"
 NACK = "nack"
@@ -975,8 +976,18 @@ class Device(_CommandSets):
             return self._lost(e)
         if self._quiet:
             self._dropped += len(data)
-        events = self.session.feed(data, self.now_ms())
-        self._deliver(events)
+        if len(data) <= FEED_SLICE:
+            events = self.session.feed(data, self.now_ms())
+            self._deliver(events)
+            return events
+        # A long read is fed in slices, each at the current time: a deadline that passes while
+        # the read is handled gives its result after one slice (the pure-Python parser takes
+        # about 7 us a byte on a flood of false syncs), not after the whole read.
+        events = []
+        for k in range(0, len(data), FEED_SLICE):
+            part = self.session.feed(data[k : k + FEED_SLICE], self.now_ms())
+            self._deliver(part)
+            events += part
         return events
 
     # -------------------------------------------------------------- getting through
