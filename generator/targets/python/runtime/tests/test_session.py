@@ -442,3 +442,46 @@ def test_serial_transport_without_pyserial_says_how_to_get_it():
     else:
         with pytest.raises(TransportError, match="cannot open"):
             open_transport("/nonexistent/tty")
+
+
+def test_session_tool_input_lines_are_read_in_bounded_pieces(monkeypatch):
+    """A line longer than MAX_LINE bytes (without its newline) is reported as None and read past
+    in pieces of at most MAX_LINE + 1 bytes; every line is counted; the last needs no newline."""
+    import io
+
+    from testproto import session_tool as st
+
+    assert st.MAX_LINE == 1048576
+    monkeypatch.setattr(st, "MAX_LINE", 8)
+    reads = []
+
+    class Stream(io.BytesIO):
+        def readline(self, size=-1):
+            reads.append(size)
+            return super().readline(size)
+
+    data = b"12345678\n123456789\n\n" + b"x" * 30 + b"\n \t\r\n12345678"
+    got = list(st._lines(Stream(data)))
+    assert got == [(1, b"12345678"), (2, None), (3, b""), (4, None), (5, b" \t\r"), (6, b"12345678")]
+    assert set(reads) == {9}  # never more than MAX_LINE + 1 bytes asked for
+
+
+def test_session_tool_option_ranges_and_baud_rates():
+    """Section 8's option table: decimal ASCII digits only, leading zeros accepted, the ranges,
+    and --baud one of the IR's rates of any model (testproto: alpha 9600, 115200, 921600; beta
+    115200, 230400), named by the protocol."""
+    from testproto import session_tool as st
+
+    assert st._ranged("--timeout-ms", "0100", 1, 600000) == 100
+    assert st._ranged("--timeout-ms", "600000", 1, 600000) == 600000
+    for bad in ("0", "600001", "+5", "-1", "1e3", "0x10", "", " 5", "\u0665", "9" * 5000):
+        with pytest.raises(st.UsageError) as e:
+            st._ranged("--timeout-ms", bad, 1, 600000)
+        assert str(e.value) == f"--timeout-ms: expected an integer from 1 to 600000, got {bad}"
+    assert st._baud("230400") == 230400 and st._baud("09600") == 9600
+    for bad in ("57600", "", "+9600", "9600.0"):
+        with pytest.raises(st.UsageError) as e:
+            st._baud(bad)
+        assert str(e.value) == f"--baud: {bad} is not a baud rate of testproto devices (9600, 115200, 230400, 921600)"
+    with pytest.raises(st.UsageError, match=r"^--connect ADDRESS is required$"):
+        st._options(["--timeout-ms", "5"])
