@@ -53,7 +53,7 @@ from .samples import Sample, SampleGrouper
 from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
-DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a partial packet waiting longer is a false sync
+DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a wait longer than this looks ahead for a complete packet (section 8)
 MAX_PENDING = 8  # commands waiting for their reply at once (the C core's fixed queue)
 SKIP_PIECE = 65536  # a pending skip run is reported when it reaches this many bytes (section 8)
 READ_MAX = 65536  # every read from the transport asks for at most this many bytes (section 8)
@@ -351,7 +351,7 @@ def command_from_line(text: str) -> Field:
     return classes[0].from_json(f["values"], "values.")
 
 
-# ----------------------------------------------------------------------------- timed parser
+# ----------------------------------------------------------------------------- session parser
 class TimedParser(Decoder):
     """The stream parser of section 1 with the session rules of section 8.
 
@@ -588,7 +588,7 @@ class Session:
         return list(self._pending)
 
     def next_deadline(self) -> Optional[int]:
-        """The earliest time at which `poll` has something to do (a timeout or the timed rule)."""
+        """The earliest time at which `poll` has something to do (a timeout or the look-ahead rule)."""
         times = [p.deadline for p in self._pending]
         w = self._parser.wait_deadline
         if w is not None:
@@ -675,7 +675,7 @@ class Session:
                 self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
-        """Nothing received: runs the timeouts and the timed rule at `now_ms`."""
+        """Nothing received: runs the timeouts and the look-ahead rule at `now_ms`."""
         return self.feed(b"", now_ms)
 
     def close(self, now_ms: int) -> List[Event]:
