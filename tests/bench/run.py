@@ -36,6 +36,10 @@
      run once on accel_gyro.bin and on the device capture (../shared/captures/mip_data.bin, when
      there) repeated 200 x --scale times, output to a file: wall time and maximum resident memory of
      each process (wait4), and the outputs must be byte-identical across languages (--no-cli skips it).
+  6. the session tools under a noise flood (issue 37; tests/bench/session_flood.py): per language
+     and flood kind (zeros, random, false syncs), one ping with --timeout-ms 500 against a loopback
+     device flooding it: peak resident memory and milliseconds past the deadline, one table
+     (--no-flood leaves it out; about 5 s a language).
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -690,6 +694,7 @@ def main() -> int:
     ap.add_argument("--out", default=str(ROOT / "build" / "bench"), help="stream and binary directory")
     ap.add_argument("--json", help="where the rows go (default: OUT/results.json)")
     ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs")
+    ap.add_argument("--no-flood", action="store_true", help="leave out the session tools under a noise flood")
     ap.add_argument(
         "--instructions", action="store_true", help="also count instructions per packet (valgrind --tool=callgrind)"
     )
@@ -790,6 +795,13 @@ def main() -> int:
         print("\nDecode CLIs (one run each, output to a file):\n")
         print(cli_table(cli_rows))
     print(f"\nrows written to {shown(results)}")
+    if timing and not args.no_flood:
+        print()
+        sys.stdout.flush()
+        flood = [sys.executable, "-m", "tests.bench.session_flood", "--langs", ",".join(langs)]
+        flood += ["--json", str(out / "session_flood.json")]
+        if subprocess.run(flood, cwd=ROOT).returncode != 0:
+            failed.append("session-flood")
     if skipped:
         print(f"\nskipped: {', '.join(skipped)}")
     if failed:

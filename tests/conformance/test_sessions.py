@@ -112,6 +112,13 @@ def test_corpus_covers_the_issue():
     for proto in ("mip", "mscip"):
         for want in ("ping_ack", "late_reply_after_a_timeout", "false_sync_dropped_by_the_timed_rule"):
             assert (proto, want) in names
+    # issue 37: replies recognised by content (the look-ahead rule); these fail with the old timed rule
+    for want in (
+        "slow_reply_kept_waiting",
+        "false_sync_then_the_reply_after_the_inter_packet_timeout",
+        "false_sync_with_nothing_after_it_waits_for_close",
+    ):
+        assert ("mip", want) in names
     results = {json.loads(line)["result"] for c in CASES for line in c["expect"] if '"result"' in line}
     assert results == {"ack", "nack", "timeout", "invalid", "sent", "refused"}
     for proto in ("mip", "mscip"):

@@ -9,6 +9,9 @@ from __future__ import annotations
 
 from typing import Dict, Optional, Tuple
 
+# The IR's protocol name (the session tool's --baud message names it)
+PROTOCOL = "mip"
+
 # set_to_idle: 3dm-gx5-45-dcp.txt:363, 3dm-gx5-45-dcp.txt:759, 3dm-cv7-ins-docs.txt:8043
 IDLE: Optional[Tuple[int, int]] = (0x01, 0x02)
 

@@ -16,9 +16,9 @@ from __future__ import annotations
 import json
 import os
 import sys
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
-from . import registry
+from . import _link, registry
 from .framing import Skip
 from .packets import Packet
 from .session import DEFAULT_TIMEOUT_MS, Device, LinkError, Result, SessionError, command_from_line
@@ -32,10 +32,27 @@ class UsageError(Exception):
     pass
 
 
-def _int_option(name: str, text: str, low: int) -> int:
-    if not text.isdigit() or int(text) < low:
-        raise UsageError(f"{name} needs an integer >= {low}, not {text!r}")
-    return int(text)
+MAX_LINE = 1048576  # an input line longer than this (without its newline) is a bad line
+_BLANK = " \t\r\n"  # RFC 8259 whitespace: a line of only these is blank
+_DIGITS = frozenset("0123456789")
+
+
+def _ranged(name: str, text: str, low: int, high: int) -> int:
+    """A decimal integer of ASCII digits only (leading zeros accepted) from low to high."""
+    digits = text.lstrip("0") or "0"
+    if not text or not set(text) <= _DIGITS or len(digits) > len(str(high)) or not low <= int(digits) <= high:
+        raise UsageError(f"{name}: expected an integer from {low} to {high}, got {text}")
+    return int(digits)
+
+
+def _baud(text: str) -> int:
+    """One of the protocol's baud rates (the IR's link.baud_rates of every model)."""
+    rates = sorted({r for rs in _link.BAUD_RATES.values() for r in rs})
+    digits = text.lstrip("0") or "0"
+    if not text or not set(text) <= _DIGITS or len(digits) > 10 or int(digits) not in rates:
+        listed = ", ".join(map(str, rates))
+        raise UsageError(f"--baud: {text} is not a baud rate of {_link.PROTOCOL} devices ({listed})")
+    return int(digits)
 
 
 def _options(argv: List[str]) -> Dict[str, Any]:
@@ -56,28 +73,52 @@ def _options(argv: List[str]) -> Dict[str, Any]:
             continue
         name, eq, value = a.partition("=")
         if name not in ("--connect", "--timeout-ms", "--device", "--baud", "--reconnect-ms"):
-            raise UsageError(f"unknown argument {a!r}")
+            raise UsageError(f"unknown argument {a!r} ({USAGE})")
         if not eq:
             if i + 1 >= len(argv):
-                raise UsageError(f"{name} needs a value")
+                if name == "--connect":
+                    raise UsageError("--connect ADDRESS is required")
+                raise UsageError(f"{name} needs a value ({USAGE})")
             value = argv[i + 1]
             i += 1
         i += 1
         if name == "--connect":
             opts["connect"] = value
         elif name == "--timeout-ms":
-            opts["timeout_ms"] = _int_option(name, value, 0)
+            opts["timeout_ms"] = _ranged(name, value, 1, 600000)
         elif name == "--baud":
-            opts["baud"] = _int_option(name, value, 1)
+            opts["baud"] = _baud(value)
         elif name == "--reconnect-ms":
-            opts["reconnect_ms"] = _int_option(name, value, 0)
+            opts["reconnect_ms"] = _ranged(name, value, 1, 3600000)
         else:
             if value not in registry.DEVICES:
-                raise UsageError(f"unknown device {value!r} (one of: {', '.join(registry.DEVICES)})")
+                raise UsageError(f"unknown device {value!r} (one of: {', '.join(registry.DEVICES)}) ({USAGE})")
             opts["device"] = value
     if opts["connect"] is None:
         raise UsageError("--connect ADDRESS is required")
     return opts
+
+
+def _lines(stream: Any) -> Iterator[Tuple[int, Optional[bytes]]]:
+    """(number, line without its newline) for each input line, 1-based; None for a line longer
+    than MAX_LINE bytes, read past in pieces (never more than MAX_LINE + 1 bytes held)."""
+    number = 0
+    while True:
+        raw = stream.readline(MAX_LINE + 1)
+        if not raw:
+            return
+        number += 1
+        if raw.endswith(b"\n"):
+            yield number, raw[:-1]
+            continue
+        if len(raw) <= MAX_LINE:
+            yield number, raw  # the last line, without a newline
+            continue
+        while True:  # too long: read past the rest of it
+            rest = stream.readline(MAX_LINE + 1)
+            if not rest or rest.endswith(b"\n"):
+                break
+        yield number, None
 
 
 def _print_event(e: Any) -> None:
@@ -111,14 +152,18 @@ def run(argv: List[str]) -> int:
     try:
         if opts["auto_baud"]:
             device.find_baud()
-        for number, raw in enumerate(sys.stdin.buffer, 1):
+        for number, raw in _lines(sys.stdin.buffer):
+            if raw is None:
+                print(f"{PROG}: line {number}: longer than {MAX_LINE} bytes", file=sys.stderr)
+                status = 1
+                continue
             try:
-                text = raw.decode("utf-8")
+                text = raw.decode("utf-8")  # strict: RFC 3629 (no surrogates, no overlong forms)
             except UnicodeDecodeError:
                 print(f"{PROG}: line {number}: not UTF-8", file=sys.stderr)
                 status = 1
                 continue
-            if not text.strip():
+            if not text.strip(_BLANK):
                 continue
             link = _link_line(text)
             if link is not None:
@@ -177,8 +222,10 @@ def _link_line(text: str) -> Optional[Tuple[str, Any]]:
     if value == {"link": "idle"}:
         return ("idle", None)
     ms = value.get("ms")
-    if value.get("link") == "listen" and set(value) == {"link", "ms"} and type(ms) is int and ms >= 0:
-        return ("listen", ms)
+    if value.get("link") == "listen" and set(value) == {"link", "ms"}:
+        if type(ms) is int and 0 <= ms <= 3600000:
+            return ("listen", ms)
+        return ("bad", '"ms" must be an integer from 0 to 3600000')
     return ("bad", 'expected {"link":"idle"} or {"link":"listen","ms":M}')
 
 
@@ -190,7 +237,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     try:
         return run(args)
     except UsageError as e:
-        print(f"{PROG}: {e} ({USAGE})", file=sys.stderr)
+        print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         try:

@@ -2,7 +2,7 @@
 (pyserial, the optional extra `mipcodec[serial]`).
 
 A transport has `write(data)`, `read(timeout_s) -> bytes` (the bytes available within
-`timeout_s` seconds, b"" when none came) and `close()`; a closed connection raises
+`timeout_s` seconds, at most READ_MAX, b"" when none came) and `close()`; a closed connection raises
 TransportError. Anything with these three methods works (a test's fake, a USB bridge). Optional,
 for getting through (docs/conformance.md section 8): `flush_input()` (drop what was received and
 not read yet) and, on a serial port, a settable `baudrate`.
@@ -14,6 +14,9 @@ import errno as _errno
 import os
 import socket
 from typing import Any, Optional, Tuple
+
+READ_MAX = 65536  # a read returns at most this many bytes (docs/conformance.md section 8)
+FLUSH_MAX_READS = 64  # flush_input reads at most this many times (a flood never ends)
 
 
 class TransportError(OSError):
@@ -73,7 +76,7 @@ class TcpTransport:
     def read(self, timeout_s: float) -> bytes:
         self._sock.settimeout(max(timeout_s, 0.0) or 0.000001)
         try:
-            data = self._sock.recv(65536)
+            data = self._sock.recv(READ_MAX)
         except socket.timeout:
             return b""
         except BlockingIOError:
@@ -85,9 +88,11 @@ class TcpTransport:
         return data
 
     def flush_input(self) -> None:
-        """Drop what arrived and was not read yet."""
-        while self.read(0.0):
-            pass
+        """Drop what arrived and was not read yet (at most FLUSH_MAX_READS reads: under a flood
+        there is always more)."""
+        for _ in range(FLUSH_MAX_READS):
+            if not self.read(0.0):
+                break
 
     def close(self) -> None:
         self._sock.close()
@@ -141,7 +146,7 @@ class SerialTransport:
             if not first:
                 return b""
             waiting = self._port.in_waiting
-            data: bytes = first + (self._port.read(waiting) if waiting else b"")
+            data: bytes = first + (self._port.read(min(waiting, READ_MAX - 1)) if waiting else b"")
             return data
         except (OSError, self._serial.SerialException) as e:
             raise TransportError(f"read failed: {e}", _reason(e)) from None

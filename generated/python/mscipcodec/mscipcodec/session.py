@@ -35,14 +35,29 @@ from . import _link, _sim, capabilities, registry
 from . import _session as _meta
 from .canonical import error_text, loads
 from .codec import Field
-from .framing import PacketBuilder, Parser, RawPacket, Skip, _speedups
+from .framing import (
+    CHECKSUM_SIZE,
+    HEADER_SIZE,
+    LENGTH_OFFSET,
+    MAX_PAYLOAD,
+    SYNC,
+    PacketBuilder,
+    Parser,
+    RawPacket,
+    Skip,
+    _checksum_ok,
+    _speedups,
+)
 from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from .samples import Sample, SampleGrouper
 from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
-DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a partial packet waiting longer is a false sync
+DEFAULT_INTER_PACKET_TIMEOUT_MS = 100  # a wait longer than this looks ahead for a complete packet (section 8)
 MAX_PENDING = 8  # commands waiting for their reply at once (the C core's fixed queue)
+SKIP_PIECE = 65536  # a pending skip run is reported when it reaches this many bytes (section 8)
+READ_MAX = 65536  # every read from the transport asks for at most this many bytes (section 8)
+FEED_SLICE = 4096  # Device feeds a read in slices of this many bytes, each at the current time
 
 ACK = "ack"
 NACK = "nack"
@@ -336,16 +351,26 @@ def command_from_line(text: str) -> Field:
     return classes[0].from_json(f["values"], "values.")
 
 
-# ----------------------------------------------------------------------------- timed parser
+# ----------------------------------------------------------------------------- session parser
 class TimedParser(Decoder):
-    """The stream parser of section 1 with the timed rule of section 8: when the parser has been
-    waiting at the same position (a partial sync, header or packet) for longer than
-    `inter_packet_timeout_ms`, the byte there is skipped and parsing resumes at the next byte.
+    """The stream parser of section 1 with the session rules of section 8.
 
-    `feed_at(data, now)` applies the rule at `now` to the bytes already buffered *before* it adds
-    `data` (bytes that arrive too late do not rescue a stale candidate), so the events do not
-    depend on whether the caller polled in between; the position it then waits at, if new, waits
-    from `now`."""
+    The look-ahead rule: while the parser has been waiting at the same position `i` (a partial
+    sync, header or packet) since `s`, and `now - s > inter_packet_timeout_ms`, the first position
+    `j > i` of the buffered bytes where a sync starts a complete packet with a valid checksum (the
+    section 1 check) ends the wait: the bytes `i..j-1` are skipped and parsing resumes at `j`.
+    Without such a `j` nothing is dropped (a slow packet is never thrown away by time). The rule
+    runs at every `feed_at(data, now)`: on the bytes already buffered *before* it adds `data`, and
+    again after, when the parser still waits where it waited since an expired `s` (so the events do
+    not depend on whether the caller polled in between). A position the parser starts waiting at
+    waits from `now`.
+
+    Skip pieces: a skip run is reported when it ends or as soon as its pending length reaches
+    SKIP_PIECE bytes (then a run of exactly SKIP_PIECE bytes; the next begins after it).
+
+    Bounded memory: between calls the parser holds at most framing.MAX_PACKET undecided bytes
+    (the candidate it waits at: a longer candidate is decided by section 1) plus the pending skip
+    run (< SKIP_PIECE bytes), whatever arrives; within a call, one feed's bytes on top."""
 
     def __init__(
         self, inter_packet_timeout_ms: int = DEFAULT_INTER_PACKET_TIMEOUT_MS, device: Optional[str] = None
@@ -355,6 +380,7 @@ class TimedParser(Decoder):
         self.inter_packet_timeout_ms = inter_packet_timeout_ms
         self._wait_at = -1
         self._wait_since = 0
+        self._last_now: Optional[int] = None
         self._mask_sets: FrozenSet[int] = frozenset()
         self._mask = bytes(256)
         self._hits: List[int] = []
@@ -362,7 +388,7 @@ class TimedParser(Decoder):
         self._watching: Optional[bytes] = None
 
     def feed_at(self, data: Any, now_ms: int) -> List[Any]:
-        """Consume bytes received at `now_ms` (may be empty: only the timed rule runs)."""
+        """Consume bytes received at `now_ms` (may be empty: only the look-ahead rule runs)."""
         return self.feed_watch(data, now_ms, frozenset())[0]
 
     def feed_watch(self, data: Any, now_ms: int, sets: FrozenSet[int]) -> Tuple[List[Any], List[int], bool]:
@@ -374,27 +400,86 @@ class TimedParser(Decoder):
         self._hits = []
         self._packets = 0
         self._watching = self._watch_mask(sets) if _speedups is not None and self.device is None else None
+        self._last_now = now_ms
         events: List[Any] = []
-        while buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
-            self._skipped(0, 1)
-            del buf[:1]
-            self._base += 1
-            events += self._scan_at(len(events))
+        events += self._look_ahead(now_ms, 0)  # (a): on the old buffer
         if data:
             buf += data
-            if events:
-                events += self._scan_at(len(events))
-            else:
-                events = self._scan_at(0)
-        if not buf:
-            self._wait_at = -1
-        elif self._wait_at != self._base:
-            self._wait_at, self._wait_since = self._base, now_ms
+            events += self._scan_at(len(events))
+            self._waiting(now_ms)
+            events += self._look_ahead(now_ms, len(events))  # (b): after the new bytes
+        self._waiting(now_ms)
+        events = self._pieces(events)
         if self._watching is None:
             if sets:
                 self._hits = [i for i, e in enumerate(events) if type(e) is not Skip and e.set in sets]
             return events, self._hits, False
         return events, self._hits, self._packets == len(events)
+
+    def _waiting(self, now_ms: int) -> None:
+        """The position the parser waits at (the start of the buffer), from `now` when new."""
+        if not self._buf:
+            self._wait_at = -1
+        elif self._wait_at != self._base:
+            self._wait_at, self._wait_since = self._base, now_ms
+
+    def _look_ahead(self, now_ms: int, first: int) -> List[Any]:
+        """The look-ahead rule at `now_ms`, repeated while it finds a packet (after a jump the
+        parser waits at a new position, from now: not expired in the same call)."""
+        events: List[Any] = []
+        while self._buf and self._wait_at == self._base and now_ms - self._wait_since > self.inter_packet_timeout_ms:
+            j = self._complete_packet_after_start()
+            if j is None:
+                break
+            self._skipped(0, j)
+            del self._buf[:j]
+            self._base += j
+            events += self._scan_at(first + len(events))
+            self._waiting(now_ms)
+        return events
+
+    def _complete_packet_after_start(self) -> Optional[int]:
+        """The first position j > 0 of the buffer where a complete packet with a valid checksum
+        starts (the section 1 check), or None. The buffer then holds less than one packet after
+        its start (a longer candidate is decided by the parser), so this looks at < MAX_PACKET bytes."""
+        buf = self._buf
+        n = len(buf)
+        j = buf.find(SYNC, 1)
+        while 0 < j <= n - HEADER_SIZE:
+            length = buf[j + LENGTH_OFFSET]
+            if length <= MAX_PAYLOAD:
+                body = HEADER_SIZE + length
+                if n - j >= body + CHECKSUM_SIZE and _checksum_ok(buf, j, body):
+                    return j
+            j = buf.find(SYNC, j + 1)
+        return None
+
+    def _pieces(self, events: List[Any]) -> List[Any]:
+        """The skip-piece rule: every Skip event longer than SKIP_PIECE bytes is reported as its
+        pieces, and a pending run that reached SKIP_PIECE bytes is reported in pieces now (the
+        rest stays pending). The indexes of the watched packets follow."""
+        if any(type(e) is Skip and len(e.data) > SKIP_PIECE for e in events):
+            out: List[Any] = []
+            moved: Dict[int, int] = {}
+            for i, e in enumerate(events):
+                if type(e) is Skip and len(e.data) > SKIP_PIECE:
+                    out += _split_skip(e.offset, e.data)
+                else:
+                    moved[i] = len(out)
+                    out.append(e)
+            self._hits = [moved[i] for i in self._hits]
+            events = out
+        skip = self._skip
+        if len(skip) >= SKIP_PIECE:
+            whole = len(skip) - len(skip) % SKIP_PIECE
+            events += _split_skip(self._skip_at, skip[:whole])
+            del skip[:whole]
+            self._skip_at += whole
+        return events
+
+    def flush(self) -> List[Any]:
+        """End of input (section 1), the skip run in pieces."""
+        return [p for e in super().flush() for p in (_split_skip(e.offset, e.data) if type(e) is Skip else (e,))]
 
     def _watch_mask(self, sets: FrozenSet[int]) -> bytes:
         if sets != self._mask_sets:
@@ -421,10 +506,19 @@ class TimedParser(Decoder):
 
     @property
     def wait_deadline(self) -> Optional[int]:
-        """When the timed rule next fires (the first time a poll drops a byte), or None."""
-        if not self._buf:
+        """When the look-ahead rule next has something to check (`s + P + 1`, while the parser
+        waits and the wait had not expired at the last call), or None."""
+        if not self._buf or self._wait_at != self._base:
             return None
-        return self._wait_since + self.inter_packet_timeout_ms + 1
+        due = self._wait_since + self.inter_packet_timeout_ms + 1
+        if self._last_now is not None and self._last_now >= due:
+            return None  # expired: only new bytes can change anything (the next feed checks)
+        return due
+
+
+def _split_skip(offset: int, data: Any) -> List[Skip]:
+    """A skip run as its pieces of SKIP_PIECE bytes (the last one shorter)."""
+    return [Skip(offset + k, bytes(data[k : k + SKIP_PIECE])) for k in range(0, len(data), SKIP_PIECE)]
 
 
 # ----------------------------------------------------------------------------- the core
@@ -438,6 +532,13 @@ class Session:
     whose support `start` checks (unless `check_device=False`). `timeout_ms`: the reply timeout
     of every command (plus the spec's allowance for long commands). At most `max_pending`
     commands wait for their replies at once.
+
+    Replies are recognised by content (the look-ahead rule of TimedParser), never dropped for
+    arriving slowly. Bounded memory, whatever the device sends: between calls the session holds
+    at most framing.MAX_PACKET bytes of undecided input plus the pending skip run (< SKIP_PIECE
+    bytes; longer runs are reported in pieces of SKIP_PIECE bytes as they arrive), and each call
+    returns the events of its own bytes only. A command's `timeout` comes from the first
+    `feed`/`poll` at or after its deadline.
     """
 
     def __init__(
@@ -487,7 +588,7 @@ class Session:
         return list(self._pending)
 
     def next_deadline(self) -> Optional[int]:
-        """The earliest time at which `poll` has something to do (a timeout or the timed rule)."""
+        """The earliest time at which `poll` has something to do (a timeout or the look-ahead rule)."""
         times = [p.deadline for p in self._pending]
         w = self._parser.wait_deadline
         if w is not None:
@@ -574,7 +675,7 @@ class Session:
                 self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
-        """Nothing received: runs the timeouts and the timed rule at `now_ms`."""
+        """Nothing received: runs the timeouts and the look-ahead rule at `now_ms`."""
         return self.feed(b"", now_ms)
 
     def close(self, now_ms: int) -> List[Event]:
@@ -865,15 +966,28 @@ class Device(_CommandSets):
         return self.run(command, timeout_ms, check_device).raise_for_status()
 
     def pump(self, wait_ms: int) -> List[Event]:
-        """Wait up to `wait_ms` for bytes, feed them (or run the timeouts) and deliver the events."""
+        """Wait up to `wait_ms` for bytes (one read of at most READ_MAX bytes: the transports
+        read no more), feed them with the current time (or run the timeouts) and deliver the
+        events. Callers pass a wait that ends at the session's next deadline at the latest, so a
+        flood cannot hold a command past its deadline by more than the handling of one read."""
         try:
             data = self.transport.read(wait_ms / 1000.0)
         except TransportError as e:
             return self._lost(e)
         if self._quiet:
             self._dropped += len(data)
-        events = self.session.feed(data, self.now_ms())
-        self._deliver(events)
+        if len(data) <= FEED_SLICE:
+            events = self.session.feed(data, self.now_ms())
+            self._deliver(events)
+            return events
+        # A long read is fed in slices, each at the current time: a deadline that passes while
+        # the read is handled gives its result after one slice (the pure-Python parser takes
+        # about 7 us a byte on a flood of false syncs), not after the whole read.
+        events = []
+        for k in range(0, len(data), FEED_SLICE):
+            part = self.session.feed(data[k : k + FEED_SLICE], self.now_ms())
+            self._deliver(part)
+            events += part
         return events
 
     # -------------------------------------------------------------- getting through
@@ -1119,4 +1233,6 @@ __all__ = [
     "DEFAULT_TIMEOUT_MS",
     "DEFAULT_INTER_PACKET_TIMEOUT_MS",
     "MAX_PENDING",
+    "SKIP_PIECE",
+    "READ_MAX",
 ]

@@ -231,7 +231,9 @@ def test_ack_suppression_allowance_and_device_support():
         s.start(sensor.FIELDS[0](), 0)
 
 
-def test_timed_rule_drops_a_stale_candidate_before_new_bytes():
+def test_look_ahead_drops_a_false_candidate_only_for_a_complete_packet_after_it():
+    """Section 8: past the inter-packet timeout the parser skips to the first complete packet with
+    a valid checksum after the position it waits at; without one it keeps waiting."""
     false = PacketBuilder(0x01).add_field(0x01, b"\x00" * 20).build()[:6]  # a header promising more
     p = TimedParser(100)
     assert p.feed_at(false + ack(0x01), 5) == []  # waits on the false candidate
@@ -239,11 +241,111 @@ def test_timed_rule_drops_a_stale_candidate_before_new_bytes():
     assert p.feed_at(b"", 105) == []
     events = p.feed_at(b"", 106)
     assert isinstance(events[0], Skip) and events[0].data == false and events[1].offset == len(false)
-    # a candidate stale when more bytes come is dropped first: those bytes do not complete it
-    whole = ack(0x01)
+    assert events[1].set == 0x01 and len(events) == 2 and p.wait_deadline is None
+    # a false candidate with nothing complete after it waits; the ACK arriving later (the wait
+    # expired long before) is found after the new bytes are added
     p = TimedParser(100)
-    p.feed_at(whole[:5], 0)
-    assert p.feed_at(whole[5:], 200) == [] and p.flush()[0].data == whole
+    assert p.feed_at(false, 5) == [] and p.wait_deadline == 106
+    assert p.feed_at(b"", 106) == [] and p.wait_deadline is None  # expired, nothing to find
+    events = p.feed_at(ack(0x01), 300)
+    assert [type(e) for e in events] == [Skip, Packet] and events[0].data == false
+    assert events[1].offset == len(false)
+
+
+def test_a_slow_packet_is_never_dropped_by_time():
+    whole = ack(0x01)
+    for cut in range(1, len(whole)):
+        p = TimedParser(100)
+        assert p.feed_at(whole[:cut], 0) == [] and p.wait_deadline == 101
+        assert p.feed_at(b"", 101) == [] and p.wait_deadline is None
+        events = p.feed_at(whole[cut:], 5000)
+        assert len(events) == 1 and events[0].offset == 0 and events[0].set == 0x01, cut
+    s = Session(timeout_ms=1000)
+    q = s.start(control.Ping(), 0)
+    s.feed(whole[:5], 5)
+    assert s.next_deadline() == 106
+    s.poll(106)
+    assert s.next_deadline() == 1000  # the wait expired: only the command's deadline is left
+    s.feed(whole[5:], 900)
+    assert q.result.status == "ack"
+
+
+def test_skip_runs_are_reported_in_pieces_of_65536_bytes_whatever_the_split():
+    """A pending skip run is reported as soon as it reaches SKIP_PIECE bytes; every piece is
+    exactly that long and the pieces tile the offsets, however the input is split."""
+    from testproto.session import SKIP_PIECE
+
+    assert SKIP_PIECE == 65536
+    noise = bytes(200000)  # no sync byte at all
+    for chunk in (200000, 65536, 65535, 1000, 77777):
+        p = TimedParser(100)
+        events = []
+        for k in range(0, len(noise), chunk):
+            events += p.feed_at(noise[k : k + chunk], 0)
+            assert len(p._skip) < SKIP_PIECE and len(p._buf) < 2
+        assert [(e.offset, len(e.data)) for e in events] == [(0, 65536), (65536, 65536), (131072, 65536)], chunk
+        rest = p.flush()
+        assert [(e.offset, len(e.data)) for e in rest] == [(196608, 3392)]
+    # a run longer than a piece ending at a packet in the same feed: the pieces, then the rest
+    p = TimedParser(100)
+    events = p.feed_at(bytes(70000) + ack(0x01), 0)
+    assert [(type(e), e.offset, len(e.data)) for e in events[:2]] == [(Skip, 0, 65536), (Skip, 65536, 4464)]
+    assert events[2].offset == 70000 and len(events) == 3
+    # the session matches the reply behind them (the indexes of the watched packets follow)
+    s = Session()
+    q = s.start(control.Ping(), 0)
+    events = s.feed(bytes(140000) + ack(0x01) + bytes(3), 1)
+    assert [len(e.data) for e in events if isinstance(e, Skip)] == [65536, 65536, 8928]
+    assert q.result.status == "ack" and events[3] is q.result
+
+
+def test_a_flood_of_false_syncs_holds_bounded_memory():
+    """Repeated false syncs (a length claiming 240 bytes): the parser holds at most one packet
+    of undecided bytes and a pending skip run shorter than a piece after every feed."""
+    from testproto.framing import MAX_PACKET, SYNC
+
+    flood = (SYNC + b"\x01\xf0") * 50000
+    p = TimedParser(100)
+    total = 0
+    for k, at in zip(range(0, len(flood), 65536), range(0, 10**6, 7)):
+        for e in p.feed_at(flood[k : k + 65536], at):
+            assert isinstance(e, Skip) and e.offset == total and len(e.data) == 65536
+            total += len(e.data)
+        assert len(p._buf) <= MAX_PACKET and len(p._skip) < 65536
+    assert total + len(p._skip) + len(p._buf) == len(flood)
+
+
+class FloodTransport:
+    """A transport whose reads always return a full read of zeros (a device sending noise)."""
+
+    def __init__(self) -> None:
+        self.asked = []
+
+    def write(self, data: bytes) -> None:
+        pass
+
+    def read(self, timeout_s: float) -> bytes:
+        self.asked.append(timeout_s)
+        return bytes(65536)
+
+    def close(self) -> None:
+        pass
+
+
+def test_device_keeps_its_deadline_under_a_flood():
+    import time as _time
+
+    seen = []
+    tr = FloodTransport()
+    dev = Device(tr, device="alpha", timeout_ms=200, on_event=seen.append)
+    t0 = _time.monotonic()
+    r = dev.run(control.Ping())
+    late = _time.monotonic() - t0 - 0.2
+    assert r.status == "timeout" and late < 2.0  # a functional bound: one read's handling past it
+    skips = [e for e in seen if isinstance(e, Skip)]
+    assert skips and all(len(e.data) == 65536 for e in skips)
+    assert [e.offset for e in skips] == [65536 * k for k in range(len(skips))]
+    assert all(t <= 0.2 for t in tr.asked)  # never waits past the deadline
 
 
 def test_command_from_line():
@@ -340,3 +442,46 @@ def test_serial_transport_without_pyserial_says_how_to_get_it():
     else:
         with pytest.raises(TransportError, match="cannot open"):
             open_transport("/nonexistent/tty")
+
+
+def test_session_tool_input_lines_are_read_in_bounded_pieces(monkeypatch):
+    """A line longer than MAX_LINE bytes (without its newline) is reported as None and read past
+    in pieces of at most MAX_LINE + 1 bytes; every line is counted; the last needs no newline."""
+    import io
+
+    from testproto import session_tool as st
+
+    assert st.MAX_LINE == 1048576
+    monkeypatch.setattr(st, "MAX_LINE", 8)
+    reads = []
+
+    class Stream(io.BytesIO):
+        def readline(self, size=-1):
+            reads.append(size)
+            return super().readline(size)
+
+    data = b"12345678\n123456789\n\n" + b"x" * 30 + b"\n \t\r\n12345678"
+    got = list(st._lines(Stream(data)))
+    assert got == [(1, b"12345678"), (2, None), (3, b""), (4, None), (5, b" \t\r"), (6, b"12345678")]
+    assert set(reads) == {9}  # never more than MAX_LINE + 1 bytes asked for
+
+
+def test_session_tool_option_ranges_and_baud_rates():
+    """Section 8's option table: decimal ASCII digits only, leading zeros accepted, the ranges,
+    and --baud one of the IR's rates of any model (testproto: alpha 9600, 115200, 921600; beta
+    115200, 230400), named by the protocol."""
+    from testproto import session_tool as st
+
+    assert st._ranged("--timeout-ms", "0100", 1, 600000) == 100
+    assert st._ranged("--timeout-ms", "600000", 1, 600000) == 600000
+    for bad in ("0", "600001", "+5", "-1", "1e3", "0x10", "", " 5", "\u0665", "9" * 5000):
+        with pytest.raises(st.UsageError) as e:
+            st._ranged("--timeout-ms", bad, 1, 600000)
+        assert str(e.value) == f"--timeout-ms: expected an integer from 1 to 600000, got {bad}"
+    assert st._baud("230400") == 230400 and st._baud("09600") == 9600
+    for bad in ("57600", "", "+9600", "9600.0"):
+        with pytest.raises(st.UsageError) as e:
+            st._baud(bad)
+        assert str(e.value) == f"--baud: {bad} is not a baud rate of testproto devices (9600, 115200, 230400, 921600)"
+    with pytest.raises(st.UsageError, match=r"^--connect ADDRESS is required$"):
+        st._options(["--timeout-ms", "5"])

@@ -9,6 +9,9 @@ from __future__ import annotations
 
 from typing import Dict, Optional, Tuple
 
+# The IR's protocol name (the session tool's --baud message names it)
+PROTOCOL = "demo"
+
 # the manual names no such command
 IDLE: Optional[Tuple[int, int]] = None
 
