@@ -123,6 +123,8 @@ inline constexpr LinkCommand kLinkIdle{false, 0x00, 0x00};
 inline constexpr LinkCommand kLinkPing{false, 0x00, 0x00};
 /// The manual names no resume command.
 inline constexpr LinkCommand kLinkResume{false, 0x00, 0x00};
+/// The protocol's name in the spec ("demo"), for messages such as the session tool's.
+inline constexpr const char *kProtocolName = "demo";
 /// Times the idle command is sent (each with the command's reply timeout) before giving up.
 inline constexpr unsigned kLinkIdleAttempts = 3;
 /// Milliseconds after a baud-rate change before the device answers at the new rate (-1: the
