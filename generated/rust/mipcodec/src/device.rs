@@ -766,7 +766,9 @@ impl<T: Transport> Device<T> {
             if now >= end {
                 return Ok(());
             }
-            if let Err(e) = self.pump(end - now, &mut |_| {}) {
+            // Until the end, or the session's next wake-up (the look-ahead rule) if sooner.
+            let wake = self.session.next_deadline().map_or(end, |d| d.min(end));
+            if let Err(e) = self.pump(wake.saturating_sub(now), &mut |_| {}) {
                 self.session.abandon();
                 self.recover(e)?;
             }
