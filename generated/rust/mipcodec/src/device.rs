@@ -19,6 +19,10 @@ use crate::session::{
 
 /// Baud rate of a serial port when none is given.
 pub const DEFAULT_BAUD: u32 = 115_200;
+/// The most bytes one read from the transport asks for: after each read the bytes are fed to
+/// the session with the current time and its events handled before the next read, so a
+/// command's deadline is kept whatever arrives (`docs/conformance.md` §8).
+pub const READ_MAX: usize = 65_536;
 
 /// A byte connection to a device.
 pub trait Transport {
@@ -258,7 +262,12 @@ pub fn open_transport(address: &str, baud: u32) -> Result<Box<dyn Transport>, Se
             ))
         };
         let (host, port) = rest.rsplit_once(':').ok_or_else(bad)?;
-        let port: u16 = port.parse().map_err(|_| bad())?;
+        // Port 1..65535, ASCII digits only.
+        let port: u16 = port
+            .parse()
+            .ok()
+            .filter(|p| *p > 0 && port.bytes().all(|b| b.is_ascii_digit()))
+            .ok_or_else(bad)?;
         let host = host
             .strip_prefix('[')
             .and_then(|h| h.strip_suffix(']'))
@@ -557,7 +566,7 @@ impl<T: Transport> Device<T> {
             transport,
             session: Session::new(model),
             t0: Instant::now(),
-            buf: vec![0; 4096],
+            buf: vec![0; READ_MAX],
             on_packet: Vec::new(),
             on_field: Vec::new(),
             on_event: None,
@@ -757,7 +766,9 @@ impl<T: Transport> Device<T> {
             if now >= end {
                 return Ok(());
             }
-            if let Err(e) = self.pump(end - now, &mut |_| {}) {
+            // Until the end, or the session's next wake-up (the look-ahead rule) if sooner.
+            let wake = self.session.next_deadline().map_or(end, |d| d.min(end));
+            if let Err(e) = self.pump(wake.saturating_sub(now), &mut |_| {}) {
                 self.session.abandon();
                 self.recover(e)?;
             }

@@ -134,6 +134,8 @@ pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
 pub const SPEC_HASH: &str = "cc88c3bc9655b686";
+/// The protocol's name in the spec (`spec/mip/`), as the tools print it.
+pub const PROTOCOL: &str = "mip";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};

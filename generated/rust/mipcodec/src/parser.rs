@@ -151,13 +151,53 @@ impl Parser {
         self.base
     }
 
-    /// The timed inter-packet rule (`docs/conformance.md` §8): the first buffered byte is skipped
-    /// as a false sync and the search resumes at the next byte, with no new input. Calls `on`
-    /// for every event that completes. Nothing happens when nothing is buffered.
-    pub fn drop_waiting<F: FnMut(Event<'_>)>(&mut self, mut on: F) {
-        if self.len > 0 {
-            self.skip(1);
-            self.process(&mut on, false);
+    /// The look-ahead rule of the sessions (`docs/conformance.md` §8): finds the first position
+    /// after the first buffered byte where a full sync starts a complete packet with a valid
+    /// checksum, all of its bytes buffered (the §1 check). If there is one, the bytes before it
+    /// are skipped (added to the pending skip run) and the search resumes there, with no new
+    /// input (the packet is reported); returns whether it found one. Nothing is dropped when
+    /// there is none: a slow packet is never thrown away.
+    pub fn skip_to_complete_packet<F: FnMut(Event<'_>)>(&mut self, mut on: F) -> bool {
+        let Some(j) = (1..self.len).find(|&j| self.complete_packet_at(j)) else {
+            return false;
+        };
+        self.skip(j);
+        self.process(&mut on, false);
+        true
+    }
+
+    /// Whether the buffered bytes from index `at` start a complete packet with a valid checksum.
+    fn complete_packet_at(&self, at: usize) -> bool {
+        let rest = &self.buf[at..self.len];
+        if rest.len() < HEADER_SIZE || (0..SYNC.len()).any(|k| rest[k] != SYNC[k]) {
+            return false;
+        }
+        let payload = usize::from(rest[LENGTH_OFFSET]);
+        let body = HEADER_SIZE + payload;
+        payload <= MAX_PAYLOAD
+            && rest.len() >= body + CHECKSUM_SIZE
+            && checksum_matches(&rest[..body], &rest[body..body + CHECKSUM_SIZE])
+    }
+
+    /// Length of the skip run not reported yet (it ends at the first buffered byte).
+    pub fn pending_skip(&self) -> u64 {
+        self.skip_count
+    }
+
+    /// Reports the pending skip run in pieces of `piece` bytes while it holds at least that
+    /// many (each piece is a skip run of its own; the rest stays pending, starting after the
+    /// last piece). The sessions bound their memory with it (`docs/conformance.md` §8).
+    pub fn report_skip_pieces<F: FnMut(Event<'_>)>(&mut self, piece: u64, mut on: F) {
+        if piece == 0 {
+            return;
+        }
+        while self.skip_count >= piece {
+            on(Event::Skip {
+                offset: self.skip_start,
+                count: piece,
+            });
+            self.skip_start += piece;
+            self.skip_count -= piece;
         }
     }
 

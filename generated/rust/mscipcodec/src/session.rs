@@ -15,7 +15,15 @@
 //!
 //! `no_std`, no allocation: the pending commands wait in a fixed queue of `N` slots (a const
 //! generic, [`MAX_PENDING`] by default), a result borrows its reply from the packet it came in
-//! (valid for the callback). Everything protocol-specific is the generated [`crate::commands`]
+//! (valid for the callback).
+//!
+//! Bounded window: whatever the device sends, a session holds at most
+//! [`crate::framing::MAX_PACKET`] bytes of undecided input (the parser's candidate packet) plus
+//! the offset and length of the pending skip run, which is reported in pieces of
+//! [`SKIP_PIECE`] bytes as soon as it reaches that length (a caller that prints skipped bytes
+//! keeps fewer than `SKIP_PIECE + MAX_PACKET` of them, see [`Session::retain_from`]).
+//! Replies are recognised by content, not by inter-byte timing (the look-ahead rule, see
+//! [`Session::feed`]): a slow packet is never dropped. Everything protocol-specific is the generated [`crate::commands`]
 //! module: the ack rule and one [`CommandFacts`] row per command layout.
 
 use core::fmt::{self, Write};
@@ -30,8 +38,13 @@ use crate::parser::{Event, Parser};
 
 /// The reply timeout of a command (plus the spec's allowance), in milliseconds.
 pub const DEFAULT_TIMEOUT_MS: u64 = 1000;
-/// A partial packet waiting longer than this (milliseconds) is a false sync.
+/// The inter-packet timeout (milliseconds): a partial packet waiting longer than this lets the
+/// look-ahead rule skip it when a complete packet is buffered after it.
 pub const DEFAULT_INTER_PACKET_TIMEOUT_MS: u64 = 100;
+/// A skip run is reported as soon as its pending length reaches this many bytes (a run of
+/// exactly this length; the bytes skipped after it start a new run), so a noise flood is
+/// reported as it arrives and no skip run of a session is longer.
+pub const SKIP_PIECE: u64 = 65_536;
 /// Commands waiting for their replies at once, by default.
 pub const MAX_PENDING: usize = 8;
 /// Most reply descriptors one command expects (the generator checks the spec against it).
@@ -608,7 +621,21 @@ impl<const N: usize> Queue<N> {
     #[inline(always)]
     fn route<F: FnMut(SessionEvent<'_>)>(&mut self, event: Event<'_>, on: &mut F) {
         match event {
-            Event::Skip { offset, count } => on(SessionEvent::Skip { offset, count }),
+            Event::Skip {
+                mut offset,
+                mut count,
+            } => {
+                // In pieces of at most SKIP_PIECE bytes.
+                while count > SKIP_PIECE {
+                    on(SessionEvent::Skip {
+                        offset,
+                        count: SKIP_PIECE,
+                    });
+                    offset += SKIP_PIECE;
+                    count -= SKIP_PIECE;
+                }
+                on(SessionEvent::Skip { offset, count })
+            }
             Event::Packet { offset, bytes } => {
                 let Some(packet) = Packet::new(bytes) else {
                     return;
@@ -710,9 +737,11 @@ fn complete<'a>(
 /// The sans-I/O session core (`docs/conformance.md` §8), with at most `N` pending commands.
 pub struct Session<const N: usize = MAX_PENDING> {
     parser: Parser,
-    // The timed rule: the stream position the parser waits at, and since when.
+    // The look-ahead rule: the stream position the parser waits at, and since when.
     wait_at: Option<u64>,
     wait_since: u64,
+    // The time of the last feed or poll.
+    last_now: u64,
     queue: Queue<N>,
     timeout_ms: u64,
     inter_packet_timeout_ms: u64,
@@ -735,6 +764,7 @@ impl<const N: usize> Session<N> {
             parser: Parser::new(),
             wait_at: None,
             wait_since: 0,
+            last_now: 0,
             queue: Queue {
                 slots: [None; N],
                 len: 0,
@@ -754,7 +784,7 @@ impl<const N: usize> Session<N> {
         self
     }
 
-    /// Sets the inter-packet timeout of the timed rule.
+    /// Sets the inter-packet timeout of the look-ahead rule.
     pub fn with_inter_packet_timeout_ms(mut self, ms: u64) -> Self {
         self.inter_packet_timeout_ms = ms;
         self
@@ -790,19 +820,27 @@ impl<const N: usize> Session<N> {
             .any(|s| s.id == id)
     }
 
-    /// The earliest time at which [`Session::poll`] has something to do (a timeout or the
-    /// timed rule), or `None`.
+    /// The earliest time at which [`Session::poll`] has something to do, or `None`: the
+    /// earliest command deadline, and while the parser waits at a position whose wait had not
+    /// expired at the last call, the time it expires (`since + inter-packet timeout + 1`). Once
+    /// the wait has expired a poll without new bytes can change nothing (the next feed checks
+    /// by itself), so it adds no wake-up.
     pub fn next_deadline(&self) -> Option<u64> {
         let deadlines = self.queue.slots[..self.queue.len]
             .iter()
             .flatten()
             .map(|s| s.deadline);
-        let wait = (self.parser.waiting() > 0).then(|| {
+        deadlines.chain(self.wait_wake()).min()
+    }
+
+    fn wait_wake(&self) -> Option<u64> {
+        let waiting = self.parser.waiting() > 0
+            && self.last_now.saturating_sub(self.wait_since) <= self.inter_packet_timeout_ms;
+        waiting.then(|| {
             self.wait_since
                 .saturating_add(self.inter_packet_timeout_ms)
                 .saturating_add(1)
-        });
-        deadlines.chain(wait).min()
+        })
     }
 
     /// Starts a command at `now`: returns the packet to send. A refused command (nothing to
@@ -873,18 +911,30 @@ impl<const N: usize> Session<N> {
 
     /// Bytes received at `now` (may be empty): calls `on` for every event, in stream order
     /// (timeouts first).
+    ///
+    /// The look-ahead rule (`docs/conformance.md` §8): when the parser has waited at the same
+    /// position (a partial sync, header or packet) for more than the inter-packet timeout, the
+    /// bytes buffered after it are searched for the first complete packet with a valid
+    /// checksum; if there is one, the bytes before it are skipped and parsing resumes there,
+    /// else nothing is dropped. It runs after the timeouts on the bytes buffered before this
+    /// call, and again after `data` is parsed. A skip run is reported in pieces of
+    /// [`SKIP_PIECE`] bytes as soon as it reaches that length.
     pub fn feed<F: FnMut(SessionEvent<'_>)>(&mut self, data: &[u8], now: u64, mut on: F) {
         self.expire(now, &mut on);
-        let queue = &mut self.queue;
-        if self.parser.waiting() > 0
-            && self.wait_at == Some(self.parser.waiting_at())
-            && now.saturating_sub(self.wait_since) > self.inter_packet_timeout_ms
-        {
-            self.parser.drop_waiting(|e| queue.route(e, &mut on));
-        }
+        self.look_ahead(now, &mut on);
         if !data.is_empty() {
+            let queue = &mut self.queue;
             self.parser.feed(data, |e| queue.route(e, &mut on));
+            self.look_ahead(now, &mut on);
         }
+        let queue = &mut self.queue;
+        self.parser
+            .report_skip_pieces(SKIP_PIECE, |e| queue.route(e, &mut on));
+        self.last_now = now;
+    }
+
+    /// Notes the position the parser waits at: a new one's wait begins at `now`.
+    fn note_wait(&mut self, now: u64) {
         if self.parser.waiting() == 0 {
             self.wait_at = None;
         } else if self.wait_at != Some(self.parser.waiting_at()) {
@@ -893,7 +943,25 @@ impl<const N: usize> Session<N> {
         }
     }
 
-    /// Nothing received: runs the timeouts and the timed rule at `now`.
+    /// The look-ahead rule at `now`, repeated while it finds a packet (after a jump the parser
+    /// waits at a new position whose wait begins at `now`, so in practice it runs once).
+    fn look_ahead<F: FnMut(SessionEvent<'_>)>(&mut self, now: u64, on: &mut F) {
+        self.note_wait(now);
+        while self.parser.waiting() > 0
+            && now.saturating_sub(self.wait_since) > self.inter_packet_timeout_ms
+        {
+            let queue = &mut self.queue;
+            if !self
+                .parser
+                .skip_to_complete_packet(|e| queue.route(e, &mut *on))
+            {
+                break;
+            }
+            self.note_wait(now);
+        }
+    }
+
+    /// Nothing received: runs the timeouts and the look-ahead rule at `now`.
     pub fn poll<F: FnMut(SessionEvent<'_>)>(&mut self, now: u64, on: F) {
         self.feed(&[], now, on);
     }

@@ -8,6 +8,12 @@
 //! and re-applies the settings written (a command lost with the port: result `lost`), the lines
 //! `{"link":"idle"}` (the last attempt's result line) and `{"link":"listen","ms":M}` (receive
 //! for M ms, then `{"line":N,"listened":M}`); each step is one `link: ...` line on stderr.
+//! Input lines: blank lines (empty or only JSON whitespace: space, tab, CR) are skipped; a line
+//! longer than 1048576 bytes or not UTF-8 is bad (read past in bounded memory). Options are
+//! checked before anything is opened (`--timeout-ms` 1..600000, `--reconnect-ms` 1..3600000,
+//! `--baud` one of the rates the protocol's devices list; the texts of the option table of
+//! `docs/conformance.md` §8). Bounded: the bytes kept for the skip lines are fewer than a skip
+//! piece and a packet, each read asks for at most 65536 bytes.
 //! Exit status: 0 when every line ran, 1 when a line was bad (reported on stderr with its number
 //! and skipped), 2 for usage and connection errors and when getting through failed.
 
@@ -18,15 +24,19 @@ use std::rc::Rc;
 
 use mscipcodec::device::{command_from_line, connect, SessionError, DEFAULT_BAUD};
 use mscipcodec::dispatch::{write_packet_json, write_skip_json};
+use mscipcodec::framing::MAX_PACKET;
 use mscipcodec::json_read::{parse, Json};
-use mscipcodec::session::{SessionEvent, StartOptions, DEFAULT_TIMEOUT_MS};
+use mscipcodec::session::{SessionEvent, StartOptions, DEFAULT_TIMEOUT_MS, SKIP_PIECE};
 use mscipcodec::Device;
 
 const PROG: &str = "mscipcodec-session";
 const USAGE: &str = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] [--reconnect-ms N]";
 
-fn usage_error(message: &str) -> ExitCode {
-    eprintln!("{PROG}: {message} ({USAGE})");
+fn usage_error(error: Usage) -> ExitCode {
+    match error {
+        Usage::Exact(text) => eprintln!("{PROG}: {text}"),
+        Usage::WithUsage(text) => eprintln!("{PROG}: {text} ({USAGE})"),
+    }
     ExitCode::from(2)
 }
 
@@ -38,11 +48,58 @@ fn device_ids() -> String {
         .join(", ")
 }
 
-fn int_option(name: &str, text: &str, low: u64) -> Result<u64, String> {
+/// An option's value: a decimal integer of ASCII digits only (no sign, no spaces; leading
+/// zeros allowed) from `low` to `high` (`docs/conformance.md` §8, the option table).
+fn int_option(name: &str, text: &str, low: u64, high: u64) -> Result<u64, Usage> {
+    let digits = !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit());
     match text.parse::<u64>() {
-        Ok(v) if v >= low && text.bytes().all(|b| b.is_ascii_digit()) => Ok(v),
-        _ => Err(format!("{name} needs an integer >= {low}, not '{text}'")),
+        Ok(v) if digits && (low..=high).contains(&v) => Ok(v),
+        _ => Err(Usage::Exact(format!(
+            "{name}: expected an integer from {low} to {high}, got {text}"
+        ))),
     }
+}
+
+/// Largest `--timeout-ms`.
+const MAX_TIMEOUT_MS: u64 = 600_000;
+/// Largest `--reconnect-ms` and `"ms"` of a listen line.
+const MAX_LINK_MS: u64 = 3_600_000;
+/// Longest input line (bytes, without its newline).
+const MAX_LINE: usize = 1 << 20;
+
+/// The baud rates the protocol's devices list (the IR's `link.baud_rates` of every model),
+/// ascending, each once.
+fn baud_rates() -> Vec<u32> {
+    let mut rates: Vec<u32> = Device::ALL
+        .iter()
+        .flat_map(|d| d.baud_rates().iter().copied())
+        .collect();
+    rates.sort_unstable();
+    rates.dedup();
+    rates
+}
+
+fn baud_option(text: &str) -> Result<u32, Usage> {
+    let rates = baud_rates();
+    let digits = !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit());
+    match text.parse::<u32>() {
+        Ok(v) if digits && rates.contains(&v) => Ok(v),
+        _ => Err(Usage::Exact(format!(
+            "--baud: {text} is not a baud rate of {} devices ({})",
+            mscipcodec::PROTOCOL,
+            rates
+                .iter()
+                .map(u32::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ))),
+    }
+}
+
+/// A usage error: the option table's exact text, or a text followed by the usage.
+enum Usage {
+    Exact(String),
+    WithUsage(String),
 }
 
 struct Options {
@@ -54,7 +111,7 @@ struct Options {
     reconnect_ms: Option<u64>,
 }
 
-fn options(args: &[String]) -> Result<Options, String> {
+fn options(args: &[String]) -> Result<Options, Usage> {
     let mut connect = None;
     let mut timeout_ms = DEFAULT_TIMEOUT_MS;
     let mut device = None;
@@ -77,7 +134,7 @@ fn options(args: &[String]) -> Result<Options, String> {
             name,
             "--connect" | "--timeout-ms" | "--device" | "--baud" | "--reconnect-ms"
         ) {
-            return Err(format!("unknown argument '{a}'"));
+            return Err(Usage::WithUsage(format!("unknown argument '{a}'")));
         }
         let value = match inline {
             Some(v) => v,
@@ -85,26 +142,26 @@ fn options(args: &[String]) -> Result<Options, String> {
                 i += 1;
                 args.get(i)
                     .cloned()
-                    .ok_or_else(|| format!("{name} needs a value"))?
+                    .ok_or_else(|| Usage::WithUsage(format!("{name} needs a value")))?
             }
         };
         i += 1;
         match name {
             "--connect" => connect = Some(value),
-            "--timeout-ms" => timeout_ms = int_option(name, &value, 0)?,
-            "--reconnect-ms" => reconnect_ms = Some(int_option(name, &value, 0)?),
-            "--baud" => {
-                baud = u32::try_from(int_option(name, &value, 1)?)
-                    .map_err(|_| format!("{name} needs an integer >= 1, not '{value}'"))?
-            }
+            "--timeout-ms" => timeout_ms = int_option(name, &value, 1, MAX_TIMEOUT_MS)?,
+            "--reconnect-ms" => reconnect_ms = Some(int_option(name, &value, 1, MAX_LINK_MS)?),
+            "--baud" => baud = baud_option(&value)?,
             _ => {
                 device = Some(Device::from_id(&value).ok_or_else(|| {
-                    format!("unknown device '{value}' (one of: {})", device_ids())
+                    Usage::WithUsage(format!(
+                        "unknown device '{value}' (one of: {})",
+                        device_ids()
+                    ))
                 })?)
             }
         }
     }
-    let connect = connect.ok_or_else(|| "--connect ADDRESS is required".to_string())?;
+    let connect = connect.ok_or_else(|| Usage::Exact("--connect ADDRESS is required".into()))?;
     Ok(Options {
         connect,
         timeout_ms,
@@ -181,15 +238,75 @@ fn link_line(text: &str) -> Result<Option<LinkLine>, String> {
     let ms = members.iter().find(|(k, _)| k == "ms").map(|(_, v)| v);
     match (op, ms, members.len()) {
         (Json::String(op), None, 1) if op == "idle" => Ok(Some(LinkLine::Idle)),
-        (Json::String(op), Some(Json::Number(n)), 2) if op == "listen" => match n.parse::<u64>() {
-            Ok(ms) => Ok(Some(LinkLine::Listen(ms))),
-            Err(_) => Err(BAD_LINK.to_string()),
+        (Json::String(op), Some(ms), 2) if op == "listen" => match ms {
+            Json::Number(n) => match n.parse::<u64>() {
+                Ok(ms) if ms <= MAX_LINK_MS => Ok(Some(LinkLine::Listen(ms))),
+                _ => Err(BAD_MS.to_string()),
+            },
+            _ => Err(BAD_MS.to_string()),
         },
         _ => Err(BAD_LINK.to_string()),
     }
 }
 
 const BAD_LINK: &str = "expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}";
+const BAD_MS: &str = "\"ms\" must be an integer from 0 to 3600000";
+
+/// One line of standard input, read in bounded memory.
+enum Line {
+    /// The end of the input.
+    End,
+    /// A line (in the buffer, without its newline).
+    Text,
+    /// A line longer than [`MAX_LINE`] bytes (read past, not kept).
+    TooLong,
+}
+
+/// Reads one line into `raw` (without its newline), never holding more than [`MAX_LINE`] bytes
+/// of it: a longer line is read to its end and reported as [`Line::TooLong`].
+fn read_line(input: &mut impl BufRead, raw: &mut Vec<u8>) -> io::Result<Line> {
+    raw.clear();
+    let mut any = false;
+    let mut too_long = false;
+    loop {
+        let chunk = match input.fill_buf() {
+            Ok(c) => c,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if chunk.is_empty() {
+            break;
+        }
+        any = true;
+        let newline = chunk.iter().position(|&b| b == b'\n');
+        let part = &chunk[..newline.unwrap_or(chunk.len())];
+        if !too_long {
+            if raw.len() + part.len() > MAX_LINE {
+                too_long = true;
+                raw.clear();
+                raw.shrink_to(MAX_LINE);
+            } else {
+                raw.extend_from_slice(part);
+            }
+        }
+        let used = newline.map_or(chunk.len(), |i| i + 1);
+        input.consume(used);
+        if newline.is_some() {
+            break;
+        }
+    }
+    Ok(match (any, too_long) {
+        (false, _) => Line::End,
+        (true, true) => Line::TooLong,
+        (true, false) => Line::Text,
+    })
+}
+
+/// Blank: empty or only JSON whitespace (space, tab, CR, LF; RFC 8259), nothing else.
+fn is_blank(raw: &[u8]) -> bool {
+    raw.iter()
+        .all(|b| matches!(b, b' ' | b'\t' | b'\r' | b'\n'))
+}
 
 fn run(o: Options) -> Result<ExitCode, String> {
     let mut dev = connect(&o.connect, o.device, o.baud)
@@ -206,7 +323,18 @@ fn run(o: Options) -> Result<ExitCode, String> {
         text: String::new(),
     }));
     let printer = Rc::clone(&p);
-    dev.on_bytes(move |bytes| printer.borrow_mut().hist.extend_from_slice(bytes));
+    dev.on_bytes(move |bytes| {
+        let mut p = printer.borrow_mut();
+        // Bounded: the session reports every byte before its pending skip run (shorter than
+        // SKIP_PIECE) and its undecided candidate (shorter than MAX_PACKET), so older bytes are
+        // never printed.
+        let keep = SKIP_PIECE as usize + MAX_PACKET;
+        if p.hist.len() > keep {
+            let upto = p.hist_base + (p.hist.len() - keep) as u64;
+            p.trim(upto);
+        }
+        p.hist.extend_from_slice(bytes)
+    });
     let printer = Rc::clone(&p);
     dev.on_event(move |e| {
         let mut p = printer.borrow_mut();
@@ -225,23 +353,27 @@ fn run(o: Options) -> Result<ExitCode, String> {
     let io_err = |e: io::Error| mscipcodec::device::io_message(&e);
     let mut number = 0;
     loop {
-        raw.clear();
-        match input.read_until(b'\n', &mut raw) {
-            Ok(0) => break,
-            Ok(_) => {}
-            Err(e) => return Err(format!("cannot read standard input: {}", io_err(e))),
+        let line = read_line(&mut input, &mut raw)
+            .map_err(|e| format!("cannot read standard input: {}", io_err(e)))?;
+        if matches!(line, Line::End) {
+            break;
         }
         number += 1;
         p.borrow_mut().line = number;
+        if matches!(line, Line::TooLong) {
+            eprintln!("{PROG}: line {number}: longer than {MAX_LINE} bytes");
+            status = ExitCode::from(1);
+            continue;
+        }
         let Ok(text) = std::str::from_utf8(&raw) else {
             eprintln!("{PROG}: line {number}: not UTF-8");
             status = ExitCode::from(1);
             continue;
         };
-        let text = text.trim_end_matches(['\n', '\r']);
-        if text.trim().is_empty() {
+        if is_blank(raw.as_slice()) {
             continue;
         }
+        let text = text.trim_end_matches('\r');
         match link_line(text) {
             Ok(None) => {}
             Ok(Some(LinkLine::Idle)) => {
@@ -316,7 +448,7 @@ fn main() -> ExitCode {
     }
     let o = match options(&args) {
         Ok(o) => o,
-        Err(e) => return usage_error(&e),
+        Err(e) => return usage_error(e),
     };
     match run(o) {
         Ok(code) => code,

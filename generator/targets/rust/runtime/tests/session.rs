@@ -1,14 +1,15 @@
 //! Unit tests of the session core (src/session.rs) against the test protocol rendered by the back
 //! end from tests/runtime_specs/ (../Cargo.toml: `ping` on every device, `set_mode` on alpha only,
 //! answered by the reserved ack field 0xF1): matching, nack, timeouts, routing of
-//! data while a command waits, the timed inter-packet rule, the bounded queue, several acks in
+//! data while a command waits, the look-ahead rule and its wake-up, skip runs in pieces of
+//! SKIP_PIECE bytes, the bounded queue, several acks in
 //! one packet, invalid replies, chunking independence and hostile input. The spec-driven cases
 //! (tests/sessions/) run in every generated crate (templates/rust/test_sessions.rs.j2).
 
 use protocodec::builder::PacketBuilder;
 use protocodec::commands::ACK_DESCRIPTOR as ACK;
 use protocodec::framing::{HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET, SYNC};
-use protocodec::session::{Session, SessionEvent, StartOptions, Status};
+use protocodec::session::{Session, SessionEvent, StartOptions, Status, SKIP_PIECE};
 use protocodec::wire::{Layout, Wire};
 use protocodec::{control, sensor, Device, FieldValue};
 
@@ -140,30 +141,179 @@ fn several_acks_in_one_packet_answer_the_oldest_first() {
     );
 }
 
-#[test]
-fn timed_rule_drops_a_false_sync_and_resumes_at_the_next_byte() {
-    let mut s: Session = Session::new(None);
-    start(&mut s, 0);
-    // A sync and a header claiming 80 payload bytes that never come, with the ack behind it.
+/// A sync and a header of the command set claiming `length` payload bytes that never come.
+fn false_sync(length: u8) -> Vec<u8> {
     let mut garbage = vec![0u8; HEADER_SIZE];
     garbage[..SYNC.len()].copy_from_slice(&SYNC);
     garbage[SET_OFFSET] = COMMAND_SET;
-    garbage[LENGTH_OFFSET] = 80;
-    garbage.extend(ack(0));
-    assert!(feed(&mut s, &garbage, 10).is_empty());
-    assert_eq!(s.next_deadline(), Some(111));
+    garbage[LENGTH_OFFSET] = length;
+    garbage
+}
+
+fn poll<const N: usize>(s: &mut Session<N>, now: u64) -> Vec<String> {
     let mut out = Vec::new();
-    s.poll(110, |e| out.push(text(e)));
-    assert!(out.is_empty(), "not yet: {out:?}");
-    s.poll(111, |e| out.push(text(e)));
+    s.poll(now, |e| out.push(text(e)));
+    out
+}
+
+const ACK_LINE: &str = r#"{"line":1,"result":"ack","code":0,"reply":[]}"#;
+
+#[test]
+fn look_ahead_skips_a_false_sync_for_the_complete_packet_after_it() {
+    let mut s: Session = Session::new(None);
+    start(&mut s, 0);
+    // The ack behind a false sync, in the same chunk: the parser waits for the false packet.
+    let mut bytes = false_sync(80);
+    bytes.extend(ack(0));
+    assert!(feed(&mut s, &bytes, 10).is_empty());
+    // The wait expires after the inter-packet timeout (100 ms): 10 + 100 + 1.
+    assert_eq!(s.next_deadline(), Some(111));
+    assert!(poll(&mut s, 110).is_empty(), "not expired at 110");
+    assert_eq!(
+        poll(&mut s, 111),
+        [&format!("skip 0 {HEADER_SIZE}"), ACK_LINE]
+    );
+    assert_eq!(s.next_deadline(), None);
+}
+
+#[test]
+fn look_ahead_takes_the_first_valid_packet_and_parsing_continues_after_it() {
+    let mut s: Session = Session::new(None);
+    start(&mut s, 0);
+    // False sync, then a packet with a broken checksum, then the ack and a data packet.
+    let mut broken = ack(0);
+    let last = broken.len() - 1;
+    broken[last] ^= 0xFF;
+    let mut bytes = false_sync(200);
+    bytes.extend(&broken);
+    let ack_at = bytes.len();
+    bytes.extend(ack(0));
+    let data_at = bytes.len();
+    bytes.extend(data(7));
+    assert!(feed(&mut s, &bytes, 0).is_empty());
+    assert_eq!(
+        poll(&mut s, 101),
+        [
+            format!("skip 0 {ack_at}"),
+            ACK_LINE.to_string(),
+            format!("packet {data_at} set {DATA_SET}")
+        ]
+    );
+}
+
+#[test]
+fn a_slow_packet_is_never_dropped() {
+    let mut s: Session = Session::new(None);
+    start(&mut s, 0);
+    let reply = ack(0);
+    let half = reply.len() / 2;
+    assert!(feed(&mut s, &reply[..half], 10).is_empty());
+    assert_eq!(s.next_deadline(), Some(111));
+    // Expired with nothing complete after it: nothing dropped, and no wake-up for the rule any
+    // more (a poll without new bytes could change nothing); the command's deadline remains.
+    assert!(poll(&mut s, 111).is_empty());
+    assert_eq!(s.next_deadline(), Some(1000));
+    assert!(poll(&mut s, 500).is_empty());
+    assert_eq!(feed(&mut s, &reply[half..], 600), [ACK_LINE]);
+    assert_eq!(s.next_deadline(), None);
+}
+
+#[test]
+fn wake_up_is_none_after_an_expired_check() {
+    let mut s: Session = Session::new(None);
+    assert!(feed(&mut s, &false_sync(80), 5).is_empty());
+    assert_eq!(s.next_deadline(), Some(106));
+    assert!(poll(&mut s, 106).is_empty());
+    assert_eq!(s.next_deadline(), None, "nothing pending, the wait expired");
+    // A later feed still checks by itself: the ack added behind the false sync is found.
+    let mut out = feed(&mut s, &data(1), 300);
     assert_eq!(
         out,
         [
-            &format!("skip 0 {HEADER_SIZE}"),
-            r#"{"line":1,"result":"ack","code":0,"reply":[]}"#
+            format!("skip 0 {HEADER_SIZE}"),
+            format!("packet {HEADER_SIZE} set {DATA_SET}")
         ]
     );
-    assert_eq!(s.next_deadline(), None);
+    // A new wait (a partial packet at 400) gets its own wake-up.
+    out = feed(&mut s, &SYNC, 400);
+    assert!(out.is_empty());
+    assert_eq!(s.next_deadline(), Some(501));
+}
+
+#[test]
+fn false_sync_with_nothing_after_it_waits_until_close() {
+    let mut s: Session = Session::new(None).with_timeout_ms(300);
+    start(&mut s, 0);
+    assert!(feed(&mut s, &false_sync(0xF0), 5).is_empty());
+    assert!(poll(&mut s, 106).is_empty());
+    assert_eq!(
+        poll(&mut s, 300),
+        [r#"{"line":1,"result":"timeout","code":null,"reply":[]}"#]
+    );
+    let mut out = Vec::new();
+    s.close(301, |e| out.push(text(e)));
+    assert_eq!(out, [format!("skip 0 {HEADER_SIZE}")]);
+}
+
+#[test]
+fn skip_runs_come_in_pieces_of_65536_bytes_as_they_arrive() {
+    assert_eq!(SKIP_PIECE, 65536);
+    // One feed of 200000 zeros: three pieces at once, the rest pending until close.
+    let mut s: Session = Session::new(None);
+    assert_eq!(
+        feed(&mut s, &vec![0u8; 200_000], 0),
+        ["skip 0 65536", "skip 65536 65536", "skip 131072 65536"]
+    );
+    assert_eq!(s.retain_from(), 196_608);
+    let mut out = Vec::new();
+    s.close(1, |e| out.push(text(e)));
+    assert_eq!(out, ["skip 196608 3392"]);
+
+    // Fed 1000 bytes at a time: the piece comes with the feed that makes it 65536 bytes long.
+    let mut s: Session = Session::new(None);
+    let mut fed = 0u64;
+    let mut pieces = Vec::new();
+    for _ in 0..140 {
+        let out = feed(&mut s, &[0u8; 1000], 0);
+        fed += 1000;
+        if !out.is_empty() {
+            pieces.push((fed, out));
+        }
+    }
+    assert_eq!(
+        pieces,
+        [
+            (66_000, vec!["skip 0 65536".to_string()]),
+            (132_000, vec!["skip 65536 65536".to_string()])
+        ]
+    );
+
+    // A run that a packet ends: pieces, then the rest, then the packet.
+    let mut s: Session = Session::new(None);
+    let mut bytes = vec![0u8; 70_000];
+    bytes.extend(data(3));
+    assert_eq!(
+        feed(&mut s, &bytes, 0),
+        [
+            "skip 0 65536".to_string(),
+            "skip 65536 4464".to_string(),
+            format!("packet 70000 set {DATA_SET}")
+        ]
+    );
+    // Exactly one piece before a packet, and a false sync's bytes continue the run.
+    let mut s: Session = Session::new(None);
+    let mut bytes = vec![0u8; 65_535];
+    bytes.extend(&SYNC[..1]);
+    bytes.push(0);
+    bytes.extend(data(4));
+    assert_eq!(
+        feed(&mut s, &bytes, 0),
+        [
+            "skip 0 65536".to_string(),
+            "skip 65536 1".to_string(),
+            format!("packet 65537 set {DATA_SET}")
+        ]
+    );
 }
 
 #[test]
