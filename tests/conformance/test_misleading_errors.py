@@ -8,7 +8,8 @@
    generator/targets/rust/runtime/tests/addresses.rs.
 2. A session told one model but connected to another: the first NACK for an unknown command asks
    the device what it is and says `connected device is 3DM-GX5-45, this session was told
-   cv7_ins` (the Python Device API and the Python session tool, against the simulated GX5-45).
+   cv7_ins` (the Python Device API and the Python session tool, against the simulated GX5-45;
+   the Python device command line, which reads the identity at connect, says it then).
 3. `connect()` with a mistyped device name refuses it before opening anything: no connection
    reaches the listener, no descriptor is left open.
 """
@@ -167,3 +168,15 @@ def test_python_connect_checks_the_device_name_before_opening(package: str) -> N
         assert _open_fds() == before  # no socket left open
         with pytest.raises(socket.timeout):
             listener.accept()  # and none was ever connected
+
+
+def test_python_device_command_line_names_the_connected_model() -> None:
+    # The device command line reads the identity at connect: told another model, it says so.
+    from tests.conformance.test_device_cli import cli
+
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+        run = cli(sim.address, "ping", "--device", "cv7_ins")
+        right = cli(sim.address, "ping", "--device", "gx5_45")
+    assert run.returncode == 0, run.stderr
+    assert f"mipcodec-device: {MISMATCH}" in run.stderr.splitlines(), run.stderr
+    assert right.returncode == 0 and "connected device is" not in right.stderr, right.stderr
