@@ -45,7 +45,7 @@ def test_session_tools_suggest_tcp_for_host_and_port(lang: str) -> None:
             input="",
             capture_output=True,
             text=True,
-            timeout=900,
+            timeout=1800,  # the first call builds the tool (C++: minutes on a loaded machine)
         )
         lines = [line for line in run.stderr.splitlines() if line.strip()]
         assert run.returncode == 2, (lang, address, run.stderr)
