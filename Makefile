@@ -17,7 +17,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams tests/sessions -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-release test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
 
 all: generate
 
@@ -119,6 +119,14 @@ test-bigendian: generate
 # add_subdirectory into a C-only project (only the linked libraries built).
 test-consumer: generate
 	$(PY) -m pytest -q tests/consumer/test_consumers.py
+
+# Release checks (docs/versioning.md "Releasing"): the Python packages' sdists and wheels pass
+# `twine check --strict` with PyPI's classifiers (tests/consumer/test_release.py), and `cargo publish
+# --dry-run` passes for every crate (tests/lang/rust.sh publish; reads the crates.io index). Not
+# part of `make test` (the network); .ci/run runs it. About a minute.
+test-release: generate
+	$(PY) -m pytest -q tests/consumer/test_release.py
+	tests/lang/rust.sh publish
 
 # The C core built freestanding for a Cortex-M4F (arm-none-eabi-gcc + newlib, -Os) into a minimal
 # image whose code size it prints, and the C package built top-level with only its shipped toolchain

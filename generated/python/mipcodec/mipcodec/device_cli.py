@@ -30,7 +30,7 @@ from . import _session as _meta
 from . import settings as st
 from ._protocol import PACKAGE
 from .codec import Field
-from .session import CommandRefused, Device, Nack, SessionError
+from .session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity
 from .transport import TransportError, open_transport, parse_address
 
 PROG = f"{PACKAGE}-device"
@@ -79,47 +79,6 @@ class Connection:
             pass
 
 
-def _identity_command() -> Optional[Tuple[Any, Any]]:
-    """(command class, reply class) of the command whose reply reports the device's identity."""
-    for reply in _sim.IDENTITY_REPORTS:
-        for (set_id, _), rows in _meta.COMMANDS.items():
-            for row in rows:
-                if set_id == reply.SET and any(r[0] == reply.DESCRIPTOR for r in row[4]):
-                    return row[0], reply
-    return None
-
-
-def read_identity(device: Device) -> Dict[str, Any]:
-    """The identity items the device reports (model_name, serial_number, firmware, ...)."""
-    found = _identity_command()
-    if found is None:
-        return {}
-    cls, reply_cls = found
-    result = device.call(cls())
-    reply = result.response
-    out: Dict[str, Any] = {}
-    if not isinstance(reply, reply_cls):
-        return out
-    for path, item, _fmt in _sim.IDENTITY_REPORTS[reply_cls]:
-        v: Any = reply
-        for name in path:
-            v = getattr(v, name)
-        if isinstance(v, (bytes, bytearray)):
-            v = bytes(v).decode("latin-1").strip(" \x00")
-        out[item] = v
-    return out
-
-
-def model_of(identity: Dict[str, Any]) -> Optional[str]:
-    """The device id whose model name (the spec's identity, or its title) the device reports."""
-    name = str(identity.get("model_name", "")).strip()
-    for d in registry.DEVICES:
-        known = {str(_sim.IDENTITY.get(d, {}).get("model_name", "")).strip(), capabilities.MODELS[d].title}
-        if name and name in known:
-            return d
-    return registry.DEVICES[0] if len(registry.DEVICES) == 1 else None
-
-
 def connect(address: str, model: Optional[str], baud: Optional[int], timeout_ms: int) -> Connection:
     """Open the address, identify the device and return the Connection (Trouble on failure)."""
     try:
@@ -138,6 +97,9 @@ def connect(address: str, model: Optional[str], baud: Optional[int], timeout_ms:
         transport.close()
         _fail(f"{address}: no answer to the device information command ({e})")
     found = model or model_of(identity)
+    name = identity.get("model_name")
+    if model is not None and name and not model_matches(str(name), model):
+        _note(f"connected device is {name}, this session was told {model}")
     if found is None:
         transport.close()
         _fail(f"{address}: unknown model {identity.get('model_name')!r}; give --device ({', '.join(registry.DEVICES)})")

@@ -129,7 +129,7 @@ class Result:
     RawField, Trailing).
     """
 
-    __slots__ = ("command", "status", "code", "reply", "error", "expect", "tag")
+    __slots__ = ("command", "status", "code", "reply", "error", "expect", "tag", "note")
 
     def __init__(
         self,
@@ -147,6 +147,8 @@ class Result:
         self.error = error
         self.expect = expect
         self.tag: Any = None  # the tag given to Session.start
+        # Why a NACK may have come (Device: the connected model is not the one the session was told)
+        self.note: Optional[str] = None
 
     @property
     def ok(self) -> bool:
@@ -168,7 +170,8 @@ class Result:
         if self.status == NACK:
             code = getattr(self.code, "name", None)
             text = f" ({code.lower()})" if code else ""
-            return f"{name}: NACK, code {int(self.code)}{text}"
+            note = f": {self.note}" if self.note else ""
+            return f"{name}: NACK, code {int(self.code)}{text}{note}"
         if self.status == TIMEOUT:
             return f"{name}: no reply before the timeout"
         if self.status in (INVALID, REFUSED, LOST):
@@ -525,6 +528,12 @@ def _split_skip(offset: int, data: Any) -> List[Skip]:
 Event = Union[Result, Packet, Skip]
 
 
+def check_device_name(device: Optional[str]) -> None:
+    """Raises ValueError unless `device` is None or one of registry.DEVICES."""
+    if device is not None and device not in registry.DEVICES:
+        raise ValueError(f"unknown device {device!r} (one of: {', '.join(registry.DEVICES)})")
+
+
 class Session:
     """The sans-I/O session core (docs/conformance.md section 8).
 
@@ -549,8 +558,7 @@ class Session:
         max_pending: int = MAX_PENDING,
         check_device: bool = True,
     ) -> None:
-        if device is not None and device not in registry.DEVICES:
-            raise ValueError(f"unknown device {device!r} (one of: {', '.join(registry.DEVICES)})")
+        check_device_name(device)
         if timeout_ms < 0 or inter_packet_timeout_ms < 0 or max_pending < 1:
             raise ValueError("timeouts must be >= 0 and max_pending >= 1")
         self.device = device
@@ -889,6 +897,8 @@ class Device(_CommandSets):
         self._mute_depth = 0
         self._dropped = 0
         self._linking = False  # inside a reconnect: no nested one
+        self._identified = device is None  # the model check after the first unknown-command NACK
+        self._identifying = False  # inside that check: its own result is no event
         from . import command_api  # the generated typed API (imports this module)
 
         command_api.bind(self)
@@ -914,7 +924,7 @@ class Device(_CommandSets):
             if self._quiet:
                 return  # inside to_idle or the baud search: counted and dropped
             for e in events:
-                if self._linking and isinstance(e, Result):
+                if (self._linking or self._identifying) and isinstance(e, Result):
                     continue  # the results of a reconnect's own commands
                 self.on_event(e)
 
@@ -941,7 +951,12 @@ class Device(_CommandSets):
 
     def record(self, command: Field, result: Result) -> None:
         """Notes a completed command: a setting the application wrote (re-applied after a
-        reconnect) or its idle/resume (`run` calls it; a caller of `start` calls it itself)."""
+        reconnect) or its idle/resume (`run` calls it; a caller of `start` calls it itself). The
+        first NACK for an unknown command asks the device what it is (once): when it is not the
+        model the session was told, `result.note` says so (and the NACK's message)."""
+        if result.status == NACK and not self._identified and int(result.code) in _UNKNOWN_CODES:
+            self._identified = True
+            result.note = self.model_mismatch()
         if not result.ok or self._linking:
             return
         key = (command.SET, command.DESCRIPTOR)
@@ -960,6 +975,23 @@ class Device(_CommandSets):
         self.settings[key] = command
         while len(self.settings) > MAX_SETTINGS:
             self.settings.popitem(last=False)
+
+    def model_mismatch(self) -> Optional[str]:
+        """Asks the device for its identity (the spec's identity command): "connected device is
+        NAME, this session was told ID" when the model name it reports is not the session's model;
+        None when it is, or when the device does not say."""
+        if self.device is None:
+            return None
+        self._identifying = True
+        try:
+            name = read_identity(self, quiet=True).get("model_name")
+        except SessionError:
+            name = None
+        finally:
+            self._identifying = False
+        if not name or model_matches(str(name), self.device):
+            return None
+        return f"connected device is {name}, this session was told {self.device}"
 
     def call(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
         """As `run`, but raises CommandRefused, Nack, CommandTimeout or InvalidReply unless it succeeded."""
@@ -1168,12 +1200,72 @@ def connect(
     `auto_baud`: find the rate the device answers at when `baudrate` gets no answer (a serial port)."""
     from .transport import open_transport
 
+    check_device_name(device)  # before anything is opened
     options.setdefault("reopen", lambda: open_transport(address, baudrate))
     options.setdefault("address", address)
     result = Device(open_transport(address, baudrate), device, **options)
     if auto_baud:
         result.find_baud()  # a reopened port is set to the rate found (Device._reconnect)
     return result
+
+
+# The NACK codes of a command the device does not know (spec simulation.nack: unknown_descriptor,
+# unknown_set): the first one makes a Device ask what the device is (Device.model_mismatch).
+_UNKNOWN_CODES = frozenset(_sim.NACK[k] for k in ("unknown_descriptor", "unknown_set") if k in _sim.NACK)
+
+
+def identity_command() -> Optional[Tuple[Any, Any]]:
+    """(command class, reply class) of the command whose reply reports the device's identity."""
+    for reply in _sim.IDENTITY_REPORTS:
+        for (set_id, _), rows in _meta.COMMANDS.items():
+            for row in rows:
+                if set_id == reply.SET and any(r[0] == reply.DESCRIPTOR for r in row[4]):
+                    return row[0], reply
+    return None
+
+
+def read_identity(device: Device, quiet: bool = False) -> Dict[str, Any]:
+    """The identity items the device reports (model_name, serial_number, firmware, ...); raises
+    CommandFailed when it does not answer (`quiet`: the command is sent whatever the model)."""
+    found = identity_command()
+    if found is None:
+        return {}
+    cls, reply_cls = found
+    result = device.call(cls(), check_device=False if quiet else None)
+    reply = result.response
+    out: Dict[str, Any] = {}
+    if not isinstance(reply, reply_cls):
+        return out
+    for path, item, _fmt in _sim.IDENTITY_REPORTS[reply_cls]:
+        v: Any = reply
+        for name in path:
+            v = getattr(v, name)
+        if isinstance(v, (bytes, bytearray)):
+            v = bytes(v).decode("latin-1")
+        if isinstance(v, str):
+            v = v.strip(" \x00")
+        out[item] = v
+    return out
+
+
+def _plain_name(text: str) -> str:
+    return "".join(c for c in text.upper() if c.isalnum())
+
+
+def model_matches(name: str, device: str) -> bool:
+    """True when a reported model name is the device's: its title or the spec's identity model
+    name, compared without case, spaces and punctuation (MS_IMU3020 is MS-IMU3020)."""
+    known = (capabilities.MODELS[device].title, str(_sim.IDENTITY.get(device, {}).get("model_name", "")))
+    return bool(_plain_name(name)) and _plain_name(name) in {_plain_name(k) for k in known if k}
+
+
+def model_of(identity: Dict[str, Any]) -> Optional[str]:
+    """The device id whose model name (the spec's identity, or its title) the device reports."""
+    name = str(identity.get("model_name", "")).strip()
+    for d in registry.DEVICES:
+        if name and model_matches(name, d):
+            return d
+    return registry.DEVICES[0] if len(registry.DEVICES) == 1 else None
 
 
 def baud_search_order(device: Optional[str], configured: int) -> Tuple[int, ...]:

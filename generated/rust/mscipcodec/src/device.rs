@@ -252,9 +252,24 @@ impl Transport for SerialTransport {
     }
 }
 
-/// Opens `address`: `tcp:HOST:PORT` (an IPv6 host in brackets) or a serial port path, opened
-/// at `baud` (needs the `serial` feature).
-pub fn open_transport(address: &str, baud: u32) -> Result<Box<dyn Transport>, SessionError> {
+/// What an address names: a TCP endpoint or a serial port path ([`parse_address`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Address {
+    /// `tcp:HOST:PORT`: the host (an IPv6 address without its brackets) and the port.
+    Tcp {
+        /// Host name or address.
+        host: String,
+        /// Port number.
+        port: u16,
+    },
+    /// A serial port path (`/dev/ttyUSB0`, `COM3`, `\\.\COM10`).
+    Serial(String),
+}
+
+/// What `address` names, without opening it: `tcp:HOST:PORT` (an IPv6 host in brackets) or a
+/// serial port path. HOST:PORT without `tcp:` (`127.0.0.1:5000`, `[::1]:5000`) that is not an
+/// existing path is refused with "did you mean tcp:HOST:PORT?" ([`looks_like_tcp`]).
+pub fn parse_address(address: &str) -> Result<Address, SessionError> {
     if let Some(rest) = address.strip_prefix("tcp:") {
         let bad = || {
             SessionError::Address(format!(
@@ -272,21 +287,66 @@ pub fn open_transport(address: &str, baud: u32) -> Result<Box<dyn Transport>, Se
             .strip_prefix('[')
             .and_then(|h| h.strip_suffix(']'))
             .unwrap_or(host);
-        if host.is_empty() {
+        if host.is_empty() || port == 0 {
             return Err(bad());
         }
-        let text = if host.contains(':') {
-            format!("[{host}]:{port}")
-        } else {
-            format!("{host}:{port}")
-        };
-        return TcpTransport::connect(&text)
-            .map(|t| Box::new(t) as Box<dyn Transport>)
-            .map_err(|e| {
-                SessionError::Connect(format!("cannot connect to {address}: {}", io_message(&e)))
-            });
+        return Ok(Address::Tcp {
+            host: host.to_string(),
+            port,
+        });
     }
-    open_serial(address, baud)
+    if address.is_empty() {
+        return Err(SessionError::Address(
+            "empty address (expected tcp:HOST:PORT or a serial port path)".to_string(),
+        ));
+    }
+    if looks_like_tcp(address) && !std::path::Path::new(address).exists() {
+        return Err(SessionError::Address(format!(
+            "'{address}' is not a serial port: did you mean tcp:{address}?"
+        )));
+    }
+    Ok(Address::Serial(address.to_string()))
+}
+
+/// True for HOST:PORT without `tcp:` (`127.0.0.1:5000`, `localhost:5000`, `[::1]:5000`): a
+/// numeric port, no `/` or `\` (a path), an IPv6 host in brackets. The four languages share
+/// the rule.
+pub fn looks_like_tcp(address: &str) -> bool {
+    let Some((host, port)) = address.rsplit_once(':') else {
+        return false;
+    };
+    if host.is_empty()
+        || port.is_empty()
+        || !port.bytes().all(|b| b.is_ascii_digit())
+        || address.contains('/')
+        || address.contains('\\')
+    {
+        return false;
+    }
+    !host.contains(':') || (host.starts_with('[') && host.ends_with(']'))
+}
+
+/// Opens `address`: `tcp:HOST:PORT` (an IPv6 host in brackets) or a serial port path, opened
+/// at `baud` (needs the `serial` feature).
+pub fn open_transport(address: &str, baud: u32) -> Result<Box<dyn Transport>, SessionError> {
+    match parse_address(address)? {
+        Address::Tcp { host, port } => {
+            let text = if host.contains(':') {
+                format!("[{host}]:{port}")
+            } else {
+                format!("{host}:{port}")
+            };
+            TcpTransport::connect(&text)
+                .map(|t| Box::new(t) as Box<dyn Transport>)
+                .map_err(|e| {
+                    SessionError::Connect(format!(
+                        "cannot connect to {address}: {}",
+                        io_message(&e)
+                    ))
+                })
+        }
+        Address::Serial(path) => open_serial(&path, baud),
+    }
 }
 
 #[cfg(feature = "serial")]

@@ -197,6 +197,8 @@ def run(argv: List[str]) -> int:
             while p.result is None:
                 device.pump(max(0, (device.session.next_deadline() or p.deadline) - device.now_ms()))
             device.record(p.command, p.result)
+            if p.result.note:  # the first unknown-command NACK: the connected model is another one
+                print(f"{PROG}: {p.result.note}", file=sys.stderr, flush=True)
         device.close()
     except (TransportError, LinkError) as e:
         print(f"{PROG}: {e}", file=sys.stderr)

@@ -54,7 +54,19 @@ def parse_address(address: str) -> Tuple[str, Any]:
         return "tcp", (host, int(port))
     if not address:
         raise ValueError("empty address (expected tcp:HOST:PORT or a serial port path)")
+    if looks_like_tcp(address) and not os.path.exists(address):
+        raise ValueError(f"'{address}' is not a serial port: did you mean tcp:{address}?")
     return "serial", address
+
+
+def looks_like_tcp(address: str) -> bool:
+    """True for HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric
+    port, no '/' or '\\' (a path), an IPv6 host in brackets. The four languages share the rule;
+    such an address that is not an existing path is refused with "did you mean tcp:...?"."""
+    host, sep, port = address.rpartition(":")
+    if not sep or not host or not port.isdigit() or "/" in address or "\\" in address:
+        return False
+    return ":" not in host or (host.startswith("[") and host.endswith("]"))
 
 
 class TcpTransport:
@@ -166,4 +178,4 @@ def open_transport(address: str, baudrate: int = 115200, connect_timeout_s: Opti
     return SerialTransport(where, baudrate)
 
 
-__all__ = ["TransportError", "TcpTransport", "SerialTransport", "open_transport", "parse_address"]
+__all__ = ["TransportError", "TcpTransport", "SerialTransport", "looks_like_tcp", "open_transport", "parse_address"]
