@@ -52,6 +52,7 @@ MAX_REPLAY_BYTES = 16 << 20  # --replay FILE: at most 16 MiB (read no further)
 LATE_WINDOW = 1.0
 STREAM_FULL_WINDOW = 0.02
 MAX_BURST = 4096
+LISTEN_BACKLOG = 16  # TCP hosts waiting to be served (more: the kernel makes them retry)
 
 
 class Fault:
@@ -160,6 +161,7 @@ class Simulator:
         self.ticks: Dict[int, int] = {}  # data set -> last tick sent
         self.plan: Dict[int, List[Tuple[int, int]]] = {}  # data set -> [(descriptor, decimation)]
         self.commands = 0
+        self._names: Dict[str, List[Any]] = {}  # command name -> its classes on this device
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
@@ -313,7 +315,8 @@ class Simulator:
                     self._restore(k, self.startup)
                 else:
                     self.current.pop(k, None)
-        self._replan()
+        if kind not in (None, "read"):  # the settings changed (a ping, a read: the plan stays)
+            self._replan()
         replies = [r for r in (self._response(command, key, fn),) if r is not None]
         baud = _sim.BAUD.get(type(command))
         if baud is not None and kind == "write" and self.follow_baud:
@@ -586,7 +589,11 @@ class Simulator:
 
     def _named(self, name: str) -> List[Any]:
         """The command classes of a command name for this device."""
-        return [c for c in _sim.COMMANDS if c.NAME == name and getattr(c, "DEVICE", None) in (None, self.device)]
+        found = self._names.get(name)
+        if found is None:
+            found = [c for c in _sim.COMMANDS if c.NAME == name and getattr(c, "DEVICE", None) in (None, self.device)]
+            self._names[name] = found
+        return found
 
     def _filter_settings(self) -> None:
         """The internal aiding the settings give the filter (_sim.FILTER, docs/simulator-world.md):
@@ -956,6 +963,8 @@ class _Link:
     BACKLOG = 1 << 18
     FULL_BACKLOG = 1 << 15  # with --stream-full: a device's output buffer, not a pipe's
     STALL = 5.0
+    DEAF = 1.0
+    SNDBUF = 1 << 16
 
     def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
         self.fd = fd
@@ -970,6 +979,12 @@ class _Link:
     def stalled(self, now: float) -> bool:
         """Whether a TCP host has read nothing for STALL seconds while output waits."""
         return self.sock is not None and bool(self.backlog) and now - self.progress > self.STALL
+
+    def deaf(self, now: float) -> bool:
+        """Whether a TCP host has read nothing for DEAF seconds while output waits: its commands
+        are not read meanwhile (their replies could not be sent; a host flooding commands without
+        reading gets no more of the simulator's time)."""
+        return self.sock is not None and bool(self.backlog) and now - self.progress > self.DEAF
 
     def mismatched(self) -> bool:
         """Whether the host's line runs at another rate than the device's (after a baud change on
@@ -1102,8 +1117,11 @@ def serve(
     def listen_on(number: int) -> socket.socket:
         server = socket.socket(family, socket.SOCK_STREAM)
         server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        # the connections' send buffer (inherited): a host that does not read holds at most this
+        # much in the kernel beside the simulator's own bounded backlog
+        server.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, _Link.SNDBUF)
         server.bind((host, number))
-        server.listen(1)
+        server.listen(LISTEN_BACKLOG)  # hosts that connect while one is served wait their turn
         return server
 
     server = listen_on(int(port))
@@ -1211,7 +1229,7 @@ def _loop(
         if link is not None and link.sock is not None and link.backlog:
             wake.append(link.progress + link.STALL + 0.01)
         timeout = min(0.5, max(0.0, min(wake) - now)) if wake else 0.5
-        readers = [link.fd] if link is not None else []
+        readers = [link.fd] if link is not None and not link.deaf(now) else []
         if server is not None and link is None:
             readers.append(server.fileno())
         writers = [link.fd] if link is not None and link.backlog else []
