@@ -158,6 +158,18 @@ def keys_of(line: str) -> set:
     return set(json.loads(line)["fields"][0]["values"])
 
 
+def _baud_param(protocol: dict, command: str) -> str | None:
+    """The rate parameter of a baud rate command (the protocol file's `simulation.baud`)."""
+    entries = (protocol.get("simulation") or {}).get("baud") or []
+    return next((e["param"] for e in entries if e["command"] == command), None)
+
+
+def _baud_rates(protocol: dict, device: str) -> list[int]:
+    """The rates of the model's port (`link.baud_rates`; empty: the manual lists none)."""
+    entries = (protocol.get("link") or {}).get("baud_rates") or []
+    return next((list(e["rates"]) for e in entries if e["device"] == device), [])
+
+
 def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], list]]:
     """Per command with write and read on `device`: (name, its lines, what each read must give
     back: "factory", or the values written)."""
@@ -198,6 +210,11 @@ def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], li
             keys = [q["name"] for q in v["params"] if q["functions"] and "read" in q["functions"] and not q["optional"]]
             other = full[1] if len(full) > 2 else _perturbed(a)
             b = {**other, **{k: a[k] for k in keys}}  # the same setting, other values
+            rate = _baud_param(protocol, f["name"])
+            rates = _baud_rates(protocol, device)
+            if rate is not None and rate in a and len(rates) >= 2 and isinstance(a[rate], int):
+                # a baud rate write: rates the model's port lists (another is NACKed, docs/conformance.md §9)
+                a, b = {**a, rate: rates[-1]}, {**b, rate: rates[-2]}
 
             def line(function: str, values: dict, set_id: int = s["id"], field: dict = f) -> str:
                 return _command(

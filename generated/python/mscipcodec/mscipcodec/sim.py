@@ -27,8 +27,8 @@ import sys
 import time
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
+from . import _link, _sim, capabilities, registry
 from . import _session as _meta
-from . import _sim, capabilities, registry
 from ._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
 from .codec import Choice, Enum, Field
 from .framing import PacketBuilder, Parser, RawPacket
@@ -38,6 +38,21 @@ from .sim_world import GRAVITY, RADIANS, World
 
 Chunk = Tuple[float, bytes]
 FAULT_KINDS = ("drop", "delay", "corrupt", "split", "garbage", "nack")
+
+# The accepted ranges of the options (docs/conformance.md section 9, "Validation"): every number
+# finite; what lies outside is a usage error (exit 2) naming the range.
+SPEED_RANGE = (0.001, 100000.0)  # --speed: simulated seconds per real second
+MAX_SECONDS = 1e9  # --gnss-outage, --mag-disturbance, --rtk-corrections, --replug: 0 <= START < END <= this
+MAX_DELAY_MS = 3_600_000  # --delay COMMAND:MS: at most an hour
+MAX_GARBAGE = 65536  # --garbage COMMAND:BYTES: at most 64 KiB before a reply
+MAX_CODE = 255  # --nack COMMAND:CODE: the ack field's code is one byte
+MAX_REPLAY_BYTES = 16 << 20  # --replay FILE: at most 16 MiB (read no further)
+# A serving loop late by more than this much real time drops the older ticks (with --stream-full:
+# STREAM_FULL_WINDOW), and builds at most MAX_BURST samples of a data set at once.
+LATE_WINDOW = 1.0
+STREAM_FULL_WINDOW = 0.02
+MAX_BURST = 4096
+LISTEN_BACKLOG = 16  # TCP hosts waiting to be served (more: the kernel makes them retry)
 
 
 class Fault:
@@ -69,6 +84,10 @@ class Fault:
             if not arg.isdigit():
                 raise ValueError(f"--{kind} {text}: {arg!r} is not a non-negative integer")
             value = int(arg)
+            limit = {"delay": MAX_DELAY_MS, "garbage": MAX_GARBAGE, "nack": MAX_CODE}.get(kind)
+            what = {"delay": "milliseconds", "garbage": "bytes", "nack": "a code"}.get(kind)
+            if limit is not None and value > limit:
+                raise ValueError(f"--{kind} {text}: expected {what} 0..{limit}")
         elif kind == "delay":
             raise ValueError(f"--delay {text}: expected COMMAND:MILLISECONDS")
         return cls(kind, command, value, times)
@@ -81,6 +100,16 @@ class Fault:
         if self.times is not None:
             self.times -= 1
         return True
+
+
+def check_speed(speed: float) -> float:
+    """--speed: a finite factor in SPEED_RANGE (ValueError names the range)."""
+    low, high = SPEED_RANGE
+    if not (isinstance(speed, (int, float)) and math.isfinite(speed) and low <= speed <= high):
+        raise ValueError(
+            f"--speed {speed}: expected a number of simulated seconds per real second, {low:g} to {high:g}"
+        )
+    return float(speed)
 
 
 def _set_of(source: Any, command: Any) -> Optional[int]:
@@ -114,8 +143,7 @@ class Simulator:
         identity: Optional[Dict[str, Any]] = None,
         stream_full: bool = False,
     ) -> None:
-        if not speed > 0:
-            raise ValueError(f"bad speed {speed!r} (expected a factor above 0)")
+        check_speed(speed)
         if device is None:
             device = registry.DEVICES[0]
         if device not in registry.DEVICES:
@@ -133,6 +161,7 @@ class Simulator:
         self.ticks: Dict[int, int] = {}  # data set -> last tick sent
         self.plan: Dict[int, List[Tuple[int, int]]] = {}  # data set -> [(descriptor, decimation)]
         self.commands = 0
+        self._names: Dict[str, List[Any]] = {}  # command name -> its classes on this device
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
@@ -159,12 +188,20 @@ class Simulator:
         return (now - self.start_time) * self.speed
 
     # ------------------------------------------------------------------ commands
+    def new_host(self) -> None:
+        """A new host (a TCP connection, a re-plugged port): what an earlier one left half-sent
+        (a partial header) is forgotten, so the new host's first bytes are read as its own."""
+        self.parser = Parser()
+
     def feed(self, data: bytes, now: float) -> List[Chunk]:
         """The replies to the commands in `data` (and the data due by `now`)."""
         out = self.poll(now)
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
+        # The device reports no skip run: the parser holds at most one partial packet (at most
+        # the maximum packet size), never the noise between packets.
+        del self.parser._skip[:]
         return out
 
     def _packet(self, raw: bytes, now: float) -> List[Chunk]:
@@ -227,6 +264,8 @@ class Simulator:
             not isinstance(getattr(command, a, None), Enum) and getattr(command, a, None) is not None for a in info[1]
         ):
             return name, nack["invalid_parameter"], [], []
+        if not self._baud_supported(command):
+            return name, nack["invalid_parameter"], [], []
         refused = self._act(command, now)
         if refused is not None:
             return name, refused, [], []
@@ -234,6 +273,22 @@ class Simulator:
         if _suppressed(command):
             return name, None, [], extra
         return name, _meta.ACK_OK, replies, extra
+
+    def _baud_supported(self, command: Field) -> bool:
+        """Whether a baud rate write (_sim.BAUD) asks a rate the model's port supports (_link.BAUD_RATES,
+        from the manuals; a model whose manual lists none takes any). Another rate is refused with
+        NACK invalid parameter, "a value outside the allowed range" (3dm-gx5-45-dcp.txt:2027,
+        3dm-cv7-ins-docs.txt:8878, ms-cip-doc00419-revM.txt:143): acknowledging it would leave the
+        device at a rate no host can reach."""
+        attr = _sim.BAUD.get(type(command))
+        rates = _link.BAUD_RATES.get(self.device, ())
+        if attr is None or not rates:
+            return True
+        fn = getattr(command, "function", None)
+        if fn is not None and _meta.function_name(int(fn)).lower() not in ("write", "write_no_ack"):
+            return True
+        rate = getattr(command, attr, None)
+        return rate is None or int(rate) in rates
 
     def _key(self, command: Field, function: Optional[int]) -> Tuple[Any, ...]:
         keys = _sim.COMMANDS.get(type(command), ({}, ()))[0]
@@ -260,7 +315,8 @@ class Simulator:
                     self._restore(k, self.startup)
                 else:
                     self.current.pop(k, None)
-        self._replan()
+        if kind not in (None, "read"):  # the settings changed (a ping, a read: the plan stays)
+            self._replan()
         replies = [r for r in (self._response(command, key, fn),) if r is not None]
         baud = _sim.BAUD.get(type(command))
         if baud is not None and kind == "write" and self.follow_baud:
@@ -528,10 +584,16 @@ class Simulator:
         self._filter_settings()
         plan = {s: e for s, e in plan.items() if s in enabled}
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
+        for set_id in [s for s in self.ticks if s not in self.plan]:
+            del self.ticks[set_id]  # a stream turned off: when it is on again it resumes from then
 
     def _named(self, name: str) -> List[Any]:
         """The command classes of a command name for this device."""
-        return [c for c in _sim.COMMANDS if c.NAME == name and getattr(c, "DEVICE", None) in (None, self.device)]
+        found = self._names.get(name)
+        if found is None:
+            found = [c for c in _sim.COMMANDS if c.NAME == name and getattr(c, "DEVICE", None) in (None, self.device)]
+            self._names[name] = found
+        return found
 
     def _filter_settings(self) -> None:
         """The internal aiding the settings give the filter (_sim.FILTER, docs/simulator-world.md):
@@ -587,24 +649,41 @@ class Simulator:
         return on
 
     def poll(self, now: float) -> List[Chunk]:
-        """The data packets due by `now` (each at its tick's time)."""
+        """The data packets due by `now` (each at its tick's time). A stream resumes from `now`
+        when it is turned on again (no samples dated in the time it was off); ticks older than
+        LATE_WINDOW seconds of real time (STREAM_FULL_WINDOW with --stream-full) or beyond the
+        newest MAX_BURST samples are dropped, as a device's overrun output buffer drops them."""
         sim_now = self.sim_time(now)
         out: List[Chunk] = []
+        window = STREAM_FULL_WINDOW if self.full else LATE_WINDOW
         for set_id, entries in self.plan.items():
             rate = self.base_rates[set_id]
             tick_now = int(sim_now * rate)
-            last = self.ticks.get(set_id, tick_now - 1)
-            # at most 1 s of missed ticks; with --stream-full 20 ms, so that a simulator slower than
-            # the flood it builds still reads the host's commands (the rest is dropped, as a
-            # device's overrun output buffer drops packets)
-            window = max(1, rate // 50) if self.full else rate
-            for tick in range(max(last + 1, tick_now - window), tick_now + 1):
-                due = [d for d, dec in entries if tick % dec == 0]
-                if due and not self.idle:
-                    t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
-                    out.extend((t, p) for p in self._sample_packets(set_id, due, t))
+            last = self.ticks.get(set_id, tick_now - 1)  # turned on: from the tick of now
             self.ticks[set_id] = tick_now
+            if self.idle or tick_now <= last:
+                continue
+            decimations = sorted({dec for _, dec in entries})
+            first = max(
+                last + 1,
+                tick_now - max(1, int(rate * self.speed * window)) + 1,
+                tick_now - MAX_BURST * decimations[0] + 1,
+            )
+            due = set()
+            for dec in decimations:
+                due.update(range(-(-first // dec) * dec, tick_now + 1, dec))
+            for tick in sorted(due)[-MAX_BURST:]:
+                fields = [d for d, dec in entries if tick % dec == 0]
+                t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
+                out.extend((t, p) for p in self._sample_packets(set_id, fields, t, tick / rate))
         return out
+
+    def skip(self, now: float) -> None:
+        """No host is there to read the data due by `now` (between two TCP hosts): the streams go
+        on without building it."""
+        sim_now = self.sim_time(now)
+        for set_id in self.plan:
+            self.ticks[set_id] = int(sim_now * self.base_rates[set_id])
 
     def next_wakeup(self, now: float) -> Optional[float]:
         """When the next data packet is due (None: no stream)."""
@@ -612,12 +691,15 @@ class Simulator:
             return None
         return min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan)
 
-    def _sample_packets(self, set_id: int, descriptors: List[int], t: float) -> List[bytes]:
+    def _sample_packets(
+        self, set_id: int, descriptors: List[int], t: float, elapsed: Optional[float] = None
+    ) -> List[bytes]:
         """One sample of `descriptors` as a packet and continuation packets (docs/conformance.md
-        section 6): split at field boundaries, the leading shared fields repeated in each."""
+        section 6): split at field boundaries, the leading shared fields repeated in each.
+        `elapsed`: its simulated time (default: from `t`, the real time it is sent at)."""
         fields: List[Tuple[int, bytes]] = []
         for d in descriptors:
-            value = self._data_value(set_id, d, t)
+            value = self._data_value(set_id, d, t, elapsed)
             if value is not None:
                 fields.append((d, value.encode()))
         if not fields:
@@ -642,13 +724,14 @@ class Simulator:
             packets.append(_build(set_id, shared + current))
         return packets
 
-    def _data_value(self, set_id: int, descriptor: int, t: float) -> Optional[Field]:
+    def _data_value(self, set_id: int, descriptor: int, t: float, elapsed: Optional[float] = None) -> Optional[Field]:
         classes = registry.lookup(set_id, descriptor) or ()
         cls = next((c for c in classes if c.DEVICE in (None, self.device)), None)
         if cls is None:
             return None
         value = cls()
-        elapsed = (t - (t if self.start_time is None else self.start_time)) * self.speed
+        if elapsed is None:
+            elapsed = (t - (t if self.start_time is None else self.start_time)) * self.speed
         for attr, units, count in _sim.DATA.get(cls, ()):
             current = getattr(value, attr, None)
             if isinstance(current, list):
@@ -873,10 +956,15 @@ def _shared_set() -> int:
 class _Link:
     """One byte pipe to the host (a pty master or an accepted TCP connection), non-blocking: what
     the host does not read yet waits in `backlog`, up to BACKLOG bytes (more is dropped, as a
-    device's output buffer overruns)."""
+    device's output buffer overruns). A TCP host that has read nothing for STALL seconds while
+    output waits, or whose connection fails a write, is `dead`: the serving loop closes it and
+    serves the next one."""
 
     BACKLOG = 1 << 18
     FULL_BACKLOG = 1 << 15  # with --stream-full: a device's output buffer, not a pipe's
+    STALL = 5.0
+    DEAF = 1.0
+    SNDBUF = 1 << 16
 
     def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
         self.fd = fd
@@ -884,7 +972,19 @@ class _Link:
         self.slave = slave  # a pty's slave side: the host's line settings (its baud rate)
         self.baud: Optional[int] = None  # the device's rate once a command changed it
         self.backlog = bytearray()
+        self.progress = time.monotonic()  # the last time the host took bytes (or had none waiting)
+        self.dead = False
         os.set_blocking(fd, False)
+
+    def stalled(self, now: float) -> bool:
+        """Whether a TCP host has read nothing for STALL seconds while output waits."""
+        return self.sock is not None and bool(self.backlog) and now - self.progress > self.STALL
+
+    def deaf(self, now: float) -> bool:
+        """Whether a TCP host has read nothing for DEAF seconds while output waits: its commands
+        are not read meanwhile (their replies could not be sent; a host flooding commands without
+        reading gets no more of the simulator's time)."""
+        return self.sock is not None and bool(self.backlog) and now - self.progress > self.DEAF
 
     def mismatched(self) -> bool:
         """Whether the host's line runs at another rate than the device's (after a baud change on
@@ -900,12 +1000,14 @@ class _Link:
         return _BAUD_CODES.get(speed) != self.baud
 
     def write(self, data: bytes) -> None:
+        if not self.backlog:
+            self.progress = time.monotonic()
         if len(self.backlog) + len(data) <= self.BACKLOG:
             self.backlog += data
         self.flush()
 
     def flush(self) -> None:
-        while self.backlog:
+        while self.backlog and not self.dead:
             chunk = bytes(self.backlog)
             if self.mismatched():  # read at the host's rate when it leaves, not when it was queued
                 chunk = bytes((b ^ 0x5A) for b in chunk)
@@ -914,12 +1016,13 @@ class _Link:
             except BlockingIOError:
                 return
             except OSError as e:
-                if e.errno == errno.EIO:  # a pty whose host closed it: keep the bytes for the next
+                if self.sock is None and e.errno == errno.EIO:  # a pty whose host closed it: keep the bytes
                     return
-                if self.sock is not None and e.errno in (errno.EPIPE, errno.ECONNRESET):
-                    self.backlog.clear()  # a TCP host that has gone (read() reports it): serve the next
-                    return
-                raise
+                self.backlog.clear()  # a host that has gone (EPIPE, ECONNRESET, ...): serve the next
+                self.dead = self.sock is not None
+                return
+            if n > 0:
+                self.progress = time.monotonic()
             del self.backlog[:n]
 
     def read(self) -> Optional[bytes]:
@@ -1014,8 +1117,11 @@ def serve(
     def listen_on(number: int) -> socket.socket:
         server = socket.socket(family, socket.SOCK_STREAM)
         server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        # the connections' send buffer (inherited): a host that does not read holds at most this
+        # much in the kernel beside the simulator's own bounded backlog
+        server.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, _Link.SNDBUF)
         server.bind((host, number))
-        server.listen(1)
+        server.listen(LISTEN_BACKLOG)  # hosts that connect while one is served wait their turn
         return server
 
     server = listen_on(int(port))
@@ -1046,10 +1152,11 @@ def _loop(
     unplug: Any = None,
     relisten: Any = None,
 ) -> None:
-    """Serves one host at a time (TCP: the next connection after the last one closed); the
-    simulated settings persist across connections, as a device's do. `replug` (see serve): the
-    pty is closed with `unplug(link)` and reopened with `reopen(link)`; TCP: the connection and
-    `server` are closed and `relisten()` listens again."""
+    """Serves one host at a time (TCP: the next connection after the last one closed, failed a
+    write or stalled); the simulated settings persist across connections, as a device's do, and
+    each host starts with a fresh command parser. `replug` (see serve): the pty is closed with
+    `unplug(link)` and reopened with `reopen(link)`; TCP: the connection and `server` are closed
+    and `relisten()` listens again."""
     pending: List[Chunk] = []
     started = time.monotonic()
     queue = list(replay or [])
@@ -1058,6 +1165,12 @@ def _loop(
     unplugged: Optional[Tuple[float, Optional[_Link]]] = None  # (back at, the closed pty's link)
     while True:
         now = time.monotonic()
+        if link is not None and link.sock is not None and (link.dead or link.stalled(now)):
+            if not link.dead:
+                print(f"{__package__}.sim: a host read nothing for {link.STALL:g} s: disconnected", file=sys.stderr)
+            link.close()  # a TCP host that has gone or stalled: the next one is served
+            link = None
+            pending.clear()
         if plugs and first_bytes is not None and unplugged is None and now >= first_bytes + plugs[0][0]:
             begin, end = plugs.pop(0)
             pending.clear()
@@ -1077,6 +1190,8 @@ def _loop(
                 link = reopen(unplugged[1])
             elif relisten is not None:
                 server = relisten()
+            if sim is not None:
+                sim.new_host()
             unplugged = None
         if unplugged is not None:
             if sim is not None:
@@ -1089,11 +1204,19 @@ def _loop(
             while queue and started + queue[0][0] <= now:
                 pending.append((now, queue.pop(0)[1]))
             pending.sort(key=lambda c: c[0])
-            while pending and pending[0][0] <= now:
-                when, chunk = pending.pop(0)
+            due = 0
+            while due < len(pending) and pending[due][0] <= now:
+                due += 1
+            for when, chunk in pending[:due]:
                 link.write(chunk)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
+            del pending[:due]
+            # replies scheduled later (--delay, --split) wait here: at most a backlog's worth
+            while sum(len(c) for _, c in pending) > link.BACKLOG:
+                pending.pop()
+        elif sim is not None:
+            sim.skip(now)  # no host connected: nobody reads what the device sends
         wake = [c[0] for c in pending[:1]]
         if sim is not None and link is not None:
             w = sim.next_wakeup(now)
@@ -1103,8 +1226,10 @@ def _loop(
             wake.append(started + queue[0][0])
         if plugs and first_bytes is not None:
             wake.append(first_bytes + plugs[0][0])
+        if link is not None and link.sock is not None and link.backlog:
+            wake.append(link.progress + link.STALL + 0.01)
         timeout = min(0.5, max(0.0, min(wake) - now)) if wake else 0.5
-        readers = [link.fd] if link is not None else []
+        readers = [link.fd] if link is not None and not link.deaf(now) else []
         if server is not None and link is None:
             readers.append(server.fileno())
         writers = [link.fd] if link is not None and link.backlog else []
@@ -1112,11 +1237,21 @@ def _loop(
         if link is not None and writable:
             link.flush()
         if server is not None and server.fileno() in ready:
-            conn, _ = server.accept()
-            conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+            try:
+                conn, _ = server.accept()
+            except OSError:  # the host left before it was served (ECONNABORTED, ...)
+                continue
+            try:
+                conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+            except OSError:  # ... or reset its connection already
+                conn.close()
+                continue
             link = _Link(conn.fileno(), conn)
-            if sim is not None and sim.full:
-                link.BACKLOG = _Link.FULL_BACKLOG
+            if sim is not None:
+                if sim.full:
+                    link.BACKLOG = _Link.FULL_BACKLOG
+                sim.skip(time.monotonic())
+                sim.new_host()
             started = time.monotonic()
             queue = list(replay or [])
             continue
@@ -1205,7 +1340,12 @@ def _parser() -> argparse.ArgumentParser:
         help="RTK corrections reach the receivers from START to END seconds of simulated time (repeatable): "
         "with a fix their solution goes to RTK float, then RTK fixed (devices whose spec describes RTK)",
     )
-    p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per real second (default 1)")
+    p.add_argument(
+        "--speed",
+        type=float,
+        default=1.0,
+        help=f"simulated seconds per real second, {SPEED_RANGE[0]:g} to {SPEED_RANGE[1]:g} (default 1)",
+    )
     for flag, item in IDENTITY_FLAGS.items():
         p.add_argument(
             f"--{flag}", metavar="VALUE", help=f"the {item.replace('_', ' ')} the device reports (default: the spec's)"
@@ -1236,33 +1376,66 @@ def _outage(text: str, option: str = "--gnss-outage") -> Tuple[float, float]:
         a, b = float(start), float(end)
     except ValueError:
         raise ValueError(f"{option} {text}: expected START:END in seconds") from None
-    if not 0 <= a < b:
-        raise ValueError(f"{option} {text}: expected 0 <= START < END")
+    if not (math.isfinite(a) and math.isfinite(b) and 0 <= a < b <= MAX_SECONDS):
+        raise ValueError(f"{option} {text}: expected 0 <= START < END <= {MAX_SECONDS:.0f} (seconds)")
     return a, b
+
+
+def _replay_file(path: str, fast: bool) -> List[Tuple[float, bytes]]:
+    """The packets of --replay FILE, read no further than MAX_REPLAY_BYTES (a larger file, or an
+    endless one such as /dev/zero, is refused)."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read(MAX_REPLAY_BYTES + 1)
+    except OSError as e:
+        raise ValueError(f"--replay {path}: cannot read it: {e.strerror or e}") from None
+    if len(data) > MAX_REPLAY_BYTES:
+        raise ValueError(f"--replay {path}: larger than {MAX_REPLAY_BYTES >> 20} MiB (the most a replay reads)")
+    return replay_chunks(data, fast=fast)
+
+
+def _start_baud(rate: int, device: str, listen: str) -> int:
+    """--start-baud: a rate of the model's port (_link.BAUD_RATES, from the manuals; a model whose
+    manual lists none: any rate of this system's serial lines), over a pty."""
+    if not listen.startswith("pty"):
+        raise ValueError("--start-baud needs --listen pty (TCP has no baud rate)")
+    rates = _link.BAUD_RATES.get(device, ())
+    if rates and rate not in rates:
+        raise ValueError(
+            f"--start-baud {rate}: not a baud rate of {device} (expected one of {', '.join(map(str, rates))})"
+        )
+    if rate not in _BAUD_CODES.values():
+        raise ValueError(f"--start-baud {rate}: not a baud rate of this system's serial lines")
+    return rate
 
 
 def main(argv: Optional[List[str]] = None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
     try:
+        check_speed(args.speed)
         faults = [Fault.parse(kind, text) for kind in FAULT_KINDS for text in getattr(args, kind)]
+        outages = [_outage(text) for text in args.gnss_outage]
+        disturbances = [_outage(text, "--mag-disturbance") for text in args.mag_disturbance]
+        corrections = [_outage(text, "--rtk-corrections") for text in args.rtk_corrections]
+        replug = [_outage(text, "--replug") for text in args.replug]
+        device = args.device or registry.DEVICES[0]
+        if device not in registry.DEVICES:
+            raise ValueError(f"--device {device}: unknown (expected one of {', '.join(registry.DEVICES)})")
+        if args.start_baud is not None:
+            _start_baud(args.start_baud, device, args.listen)
         replay = None
         sim = None
         if args.replay:
-            try:
-                with open(args.replay, "rb") as f:
-                    replay = replay_chunks(f.read(), fast=args.fast)
-            except OSError as e:
-                raise ValueError(f"cannot read {args.replay}: {e.strerror or e}") from None
+            replay = _replay_file(args.replay, args.fast)
         else:
-            device = args.device or registry.DEVICES[0]
             identity = dict(
                 parse_identity(device, flag, getattr(args, flag))
                 for flag in IDENTITY_FLAGS
-                if getattr(args, flag) is not None and device in registry.DEVICES
+                if getattr(args, flag) is not None
             )
             sim = Simulator(
-                args.device,
+                device,
                 args.seed,
                 faults,
                 scenario=args.scenario,
@@ -1271,14 +1444,9 @@ def main(argv: Optional[List[str]] = None) -> int:
                 identity=identity,
                 stream_full=args.stream_full,
             )
-            sim.world.gnss_outages.extend(_outage(text) for text in args.gnss_outage)
-            sim.world.mag_disturbances.extend(_outage(text, "--mag-disturbance") for text in args.mag_disturbance)
-            sim.world.rtk_corrections.extend(_outage(text, "--rtk-corrections") for text in args.rtk_corrections)
-        replug = [_outage(text, "--replug") for text in args.replug]
-        if args.start_baud is not None and args.start_baud not in _BAUD_CODES.values():
-            raise ValueError(f"--start-baud {args.start_baud}: not a baud rate of this system's serial lines")
-        if args.start_baud is not None and not args.listen.startswith("pty"):
-            raise ValueError("--start-baud needs --listen pty (TCP has no baud rate)")
+            sim.world.gnss_outages.extend(outages)
+            sim.world.mag_disturbances.extend(disturbances)
+            sim.world.rtk_corrections.extend(corrections)
         serve(args.listen, sim, replay, replug=replug, start_baud=args.start_baud)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)

@@ -11,6 +11,7 @@ velocity and rates from differences).
 
 from __future__ import annotations
 
+import bisect
 import math
 import random
 from typing import Any, Dict, List, Optional, Sequence, Tuple
@@ -90,8 +91,10 @@ class Scenario:
     def __init__(self, name: str = "static") -> None:
         self.name = name
         self.track: List[Tuple[float, ...]] = []
+        self.times: List[float] = []  # the track's times, for bisection
         if name.startswith("file:"):
             self.track = _read_track(name[5:])
+            self.times = [row[0] for row in self.track]
         elif name not in ("static", "circle"):
             raise ValueError(f"unknown scenario {name!r} (expected static, circle or file:PATH)")
 
@@ -113,7 +116,7 @@ class Scenario:
         def at(s: float) -> Tuple[Vec, Vec]:
             tr = self.track
             s = min(max(s, tr[0][0]), tr[-1][0])
-            i = max(0, min(len(tr) - 2, next((k for k in range(len(tr) - 1) if tr[k + 1][0] >= s), len(tr) - 2)))
+            i = max(0, min(len(tr) - 2, bisect.bisect_left(self.times, s, 1) - 1))
             a, b = tr[i], tr[min(i + 1, len(tr) - 1)]
             f = 0.0 if b[0] == a[0] else (s - a[0]) / (b[0] - a[0])
             row = [a[k] + f * (b[k] - a[k]) for k in range(7)]
@@ -130,28 +133,43 @@ class Scenario:
         return p1, vel, acc, e1, rate  # type: ignore[return-value]
 
 
+MAX_TRACK_BYTES = 16 << 20  # a trajectory file is read no further than 16 MiB
+
+
 def _read_track(path: str) -> List[Tuple[float, ...]]:
-    rows: List[Tuple[float, ...]] = []
+    """The rows of a trajectory file: finite numbers, times increasing, latitude -90..90 and
+    longitude -180..180 degrees, at most MAX_TRACK_BYTES (a larger or endless file, such as
+    /dev/zero, is refused without reading it whole); ValueError names the file and line."""
     try:
-        with open(path, encoding="utf-8") as f:
-            for n, line in enumerate(f, 1):
-                line = line.split("#")[0].replace(",", " ").strip()
-                if not line:
-                    continue
-                parts = line.split()
-                try:
-                    values = tuple(float(p) for p in parts)
-                except ValueError:
-                    raise ValueError(f"{path}:{n}: expected numbers t lat lon height roll pitch yaw") from None
-                if len(values) != 7:
-                    raise ValueError(
-                        f"{path}:{n}: expected 7 numbers (t lat lon height roll pitch yaw), got {len(values)}"
-                    )
-                if rows and values[0] <= rows[-1][0]:
-                    raise ValueError(f"{path}:{n}: times must increase")
-                rows.append(values)
+        with open(path, "rb") as f:
+            data = f.read(MAX_TRACK_BYTES + 1)
     except OSError as e:
         raise ValueError(f"cannot read scenario {path}: {e.strerror or e}") from None
+    if len(data) > MAX_TRACK_BYTES:
+        raise ValueError(f"{path}: larger than {MAX_TRACK_BYTES >> 20} MiB (the most a trajectory file holds)")
+    rows: List[Tuple[float, ...]] = []
+    for n, raw in enumerate(data.split(b"\n"), 1):
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            raise ValueError(f"{path}:{n}: not UTF-8 text") from None
+        line = text.split("#")[0].replace(",", " ").strip()
+        if not line:
+            continue
+        parts = line.split()
+        try:
+            values = tuple(float(p) for p in parts)
+        except ValueError:
+            raise ValueError(f"{path}:{n}: expected numbers t lat lon height roll pitch yaw") from None
+        if len(values) != 7:
+            raise ValueError(f"{path}:{n}: expected 7 numbers (t lat lon height roll pitch yaw), got {len(values)}")
+        if not all(math.isfinite(v) for v in values):
+            raise ValueError(f"{path}:{n}: expected finite numbers (no nan or inf)")
+        if not (-90.0 <= values[1] <= 90.0 and -180.0 <= values[2] <= 180.0):
+            raise ValueError(f"{path}:{n}: expected latitude -90..90 and longitude -180..180 degrees")
+        if rows and values[0] <= rows[-1][0]:
+            raise ValueError(f"{path}:{n}: times must increase")
+        rows.append(values)
     if len(rows) < 2:
         raise ValueError(f"{path}: a trajectory needs at least two lines")
     return rows
