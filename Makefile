@@ -161,7 +161,8 @@ test-fuzz-regressions: generate
 # Benchmarks of the four languages (tests/bench/run.py, docs/benchmarks.md): builds them into
 # build/bench/, runs each in 5 processes (best of 5 passes each) on the streams of
 # tests/bench/streams.py, prints one table (Mpkt/s, GB/s, spread, fraction of bulk, decode/frame)
-# and writes build/bench/results.json. BENCH_ARGS passes options, e.g.
+# and writes build/bench/results.json; then the decode CLIs and the compile cost of the C++
+# package per translation unit (--compile-only runs only that). BENCH_ARGS passes options, e.g.
 # BENCH_ARGS="--langs c,cpp --scale 0.1 --processes 2 --passes 2 --instructions".
 # bench-instructions: instructions per packet of C, C++ and Rust frame and decode (callgrind).
 BENCH_ARGS ?=

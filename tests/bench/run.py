@@ -40,6 +40,12 @@
      and flood kind (zeros, random, false syncs), one ping with --timeout-ms 500 against a loopback
      device flooding it: peak resident memory and milliseconds past the deadline, one table
      (--no-flood leaves it out; about 5 s a language).
+  7. compile cost (issue 39; --no-compile skips it, --compile-only runs only it): compile CPU
+     seconds (user + system) and peak memory (GNU time's maximum resident set) of a few translation
+     units, compiled one at a time with -O2 and the packages' strict warnings (-c, no link): the
+     C++ session tool and examples, tests/bench/compile/minimal.cpp (the umbrella header, one
+     command and the parser) and minimal.c (the same with the C package), whose figures are each
+     row's divisor (the "x C" columns); rows lang=compile in results.json.
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -338,6 +344,77 @@ def cli_table(rows: list[dict[str, str]]) -> str:
             lines.append(
                 f"| {r['lang']} | {stream} | {sec:.2f} | {mbs:.1f} | {rss:.1f} | {ratio:.2f} | {cpu:.2f} | {cpu_ratio} |"
             )
+    return "\n".join(lines)
+
+
+# The translation units of the compile-cost section: (name, language, source relative to ROOT).
+# minimal.c is the divisor of the "x C" columns.
+COMPILE_UNITS = (
+    ("minimal.c", "c", "tests/bench/compile/minimal.c"),
+    ("minimal.cpp", "cpp", "tests/bench/compile/minimal.cpp"),
+    ("getting_started.cpp", "cpp", "generated/cpp/mipcodec/examples/getting_started.cpp"),
+    ("configure_and_stream.cpp", "cpp", "generated/cpp/mipcodec/examples/configure_and_stream.cpp"),
+    ("session.cpp", "cpp", "generated/cpp/mipcodec/tools/session.cpp"),
+)
+
+
+def compile_command(lang: str, source: Path, obj: Path) -> list[str]:
+    """The -O2 compile (no link) of one translation unit, with the package's strict warnings."""
+    if lang == "c":
+        pkg = ROOT / "generated" / "c" / "mipcodec"
+        cc = os.environ.get("CC", "gcc")
+        flags = ["-O2", "-std=c99", "-Wall", "-Wextra", "-Werror"]
+        return [cc, *flags, "-I", str(pkg / "include"), "-c", str(source), "-o", str(obj)]
+    pkg = ROOT / "generated" / "cpp" / "mipcodec"
+    cxx = os.environ.get("CXX", "g++")
+    flags = ["-O2", "-std=c++17", "-pthread", "-Wall", "-Wextra", "-pedantic", "-Wshadow", "-Werror"]
+    return [cxx, *flags, "-I", str(pkg / "include"), "-c", str(source), "-o", str(obj)]
+
+
+def compile_bench(out: Path) -> tuple[list[dict], bool]:
+    """One row per translation unit of COMPILE_UNITS: CPU seconds and peak memory of its compile."""
+    if not os.access("/usr/bin/time", os.X_OK):
+        log("compile cost: needs GNU time (/usr/bin/time)")
+        return [], False
+    where = out / "compile"
+    where.mkdir(parents=True, exist_ok=True)
+    timed = where / "time.txt"
+    rows: list[dict] = []
+    ok = True
+    for name, lang, rel in COMPILE_UNITS:
+        source = ROOT / rel
+        obj = where / (name + ".o")
+        cmd = compile_command(lang, source, obj)
+        log(f"compiling {rel} (-O2, one at a time)")
+        proc = subprocess.run(["/usr/bin/time", "-f", "%U %S %M", "-o", str(timed), *cmd], cwd=ROOT)
+        if proc.returncode != 0:
+            log(f"compile cost: {rel} did not compile")
+            ok = False
+            continue
+        user, system, rss = timed.read_text().split()[-3:]
+        rows.append(
+            {
+                "lang": "compile",
+                "unit": name,
+                "source": rel,
+                "cpu_seconds": round(float(user) + float(system), 2),
+                "peak_rss_kb": int(rss),
+            }
+        )
+    timed.unlink(missing_ok=True)
+    return rows, ok
+
+
+def compile_table(rows: list[dict]) -> str:
+    """The compile-cost rows: CPU s, peak MB, and both as multiples of minimal.c's."""
+    base = next((r for r in rows if r["unit"] == COMPILE_UNITS[0][0]), None)
+    head = "| translation unit | CPU s | peak MB | x C CPU | x C memory |"
+    lines = [head, "|---|---:|---:|---:|---:|"]
+    for r in rows:
+        cpu, mb = r["cpu_seconds"], r["peak_rss_kb"] / 1024
+        x_cpu = f"{cpu / base['cpu_seconds']:.0f}" if base and base["cpu_seconds"] > 0 else "-"
+        x_mem = f"{r['peak_rss_kb'] / base['peak_rss_kb']:.1f}" if base and base["peak_rss_kb"] > 0 else "-"
+        lines.append(f"| {r['unit']} | {cpu:.2f} | {mb:.0f} | {x_cpu} | {x_mem} |")
     return "\n".join(lines)
 
 
@@ -695,6 +772,8 @@ def main() -> int:
     ap.add_argument("--json", help="where the rows go (default: OUT/results.json)")
     ap.add_argument("--no-cli", action="store_true", help="leave out the decode CLIs")
     ap.add_argument("--no-flood", action="store_true", help="leave out the session tools under a noise flood")
+    ap.add_argument("--no-compile", action="store_true", help="leave out the compile-cost section")
+    ap.add_argument("--compile-only", action="store_true", help="only measure the compile cost (issue 39)")
     ap.add_argument(
         "--instructions", action="store_true", help="also count instructions per packet (valgrind --tool=callgrind)"
     )
@@ -720,6 +799,13 @@ def main() -> int:
     out = Path(args.out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     results = Path(args.json) if args.json else out / "results.json"
+    if args.compile_only:
+        crows, ok = compile_bench(out)
+        (out / "compile.json").write_text(json.dumps(crows, indent=1) + "\n")
+        print(f"Compile cost (issue 39): {machine()}; load average {' '.join(f'{x:.1f}' for x in os.getloadavg())}\n")
+        print(compile_table(crows))
+        print(f"\nrows written to {shown(out / 'compile.json')}")
+        return 0 if ok else 1
     timing = not args.instructions_only
     if timing:
         streams(out, args.scale)
@@ -771,11 +857,17 @@ def main() -> int:
             ok = False
         if not ok:
             failed.append("decode-cli")
+    compile_rows: list[dict] = []
+    if timing and not args.no_compile:
+        compile_rows, ok = compile_bench(out)
+        (out / "compile.json").write_text(json.dumps(compile_rows, indent=1) + "\n")
+        if not ok:
+            failed.append("compile")
     if args.instructions_only and results.is_file() and not failed:
         # the timed rows of the last `make bench` keep their place; the counts replace the old ones
         records = merge_instructions(previous(results), counts)
     results.parent.mkdir(parents=True, exist_ok=True)
-    results.write_text(json.dumps(order(records, langs) + aggregate(cli_rows), indent=1) + "\n")
+    results.write_text(json.dumps(order(records, langs) + aggregate(cli_rows) + compile_rows, indent=1) + "\n")
     if timing:
         print(
             f"Benchmarks (issues 8 and 30): {machine()}; each figure the median of {args.processes}"
@@ -794,6 +886,9 @@ def main() -> int:
     if cli_rows:
         print("\nDecode CLIs (one run each, output to a file):\n")
         print(cli_table(cli_rows))
+    if compile_rows:
+        print("\nCompile cost (issue 39: -O2, one translation unit at a time, no link):\n")
+        print(compile_table(compile_rows))
     print(f"\nrows written to {shown(results)}")
     if timing and not args.no_flood:
         print()

@@ -1,6 +1,7 @@
 """tests/bench/run.py's pure functions on synthetic BENCH lines: the aggregation over processes
 (median, spread, the fraction of bulk paired by process, decode/frame), the table, the JSON rows,
-the session column and the instruction counts (callgrind's summary, the fixed cost)."""
+the session column, the instruction counts (callgrind's summary, the fixed cost) and the
+compile-cost table."""
 
 from __future__ import annotations
 
@@ -9,8 +10,12 @@ import json
 import pytest
 
 from tests.bench.run import (
+    COMPILE_UNITS,
+    ROOT,
     aggregate,
     callgrind_total,
+    compile_command,
+    compile_table,
     instructions_table,
     merge_instructions,
     order,
@@ -238,3 +243,27 @@ def test_previous_keeps_timed_rows_without_counts(tmp_path):
     path.write_text("{not json")
     assert previous(path) == []
     assert previous(tmp_path / "missing.json") == []
+
+
+def test_compile_table_ratios_to_the_c_unit():
+    """The compile-cost table divides each row by minimal.c's CPU seconds and peak memory (the
+    first unit of COMPILE_UNITS): 0.05 s and 32768 kB here, so 2.50 s is x50 and 327680 kB x10.0."""
+    assert COMPILE_UNITS[0][:2] == ("minimal.c", "c")
+    rows = [
+        {"lang": "compile", "unit": "minimal.c", "cpu_seconds": 0.05, "peak_rss_kb": 32768},
+        {"lang": "compile", "unit": "minimal.cpp", "cpu_seconds": 2.5, "peak_rss_kb": 327680},
+    ]
+    lines = compile_table(rows).splitlines()
+    assert lines[0] == "| translation unit | CPU s | peak MB | x C CPU | x C memory |"
+    assert lines[2] == "| minimal.c | 0.05 | 32 | 1 | 1.0 |"
+    assert lines[3] == "| minimal.cpp | 2.50 | 320 | 50 | 10.0 |"
+    # without the C row the ratios are not invented
+    assert compile_table(rows[1:]).splitlines()[2] == "| minimal.cpp | 2.50 | 320 | - | - |"
+
+
+def test_compile_units_exist_and_are_compiled_with_strict_flags(tmp_path):
+    """Every translation unit of the section exists, and each is compiled -O2 with -Werror."""
+    for _name, lang, rel in COMPILE_UNITS:
+        assert (ROOT / rel).is_file(), rel
+        cmd = compile_command(lang, ROOT / rel, tmp_path / "x.o")
+        assert "-O2" in cmd and "-Werror" in cmd and "-c" in cmd and cmd[-2:] == ["-o", str(tmp_path / "x.o")]

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mscipcodec/devices.hpp"
@@ -58,10 +59,22 @@ struct FieldJsonVisitor {
 
 } // namespace detail
 
+// Compile cost (issue 39): the functions below that reach the field dispatch (decode_field,
+// lookup_field over every layout of the package) are templates with a defaulted, unused parameter
+// `Defer`, their visitor's type depending on it. A non-template inline function would instantiate
+// the whole dispatch and JSON codec in every translation unit that includes this header, called or
+// not; as templates they are instantiated only where a program calls them. Callers write the call
+// as before (`write_packet_json(w, ...)`, `encode_json_line(line, out, error)`).
+namespace detail {
+template <class Defer>
+using FieldJsonVisitorOf = std::conditional_t<std::is_void_v<Defer>, FieldJsonVisitor, Defer>;
+} // namespace detail
+
 /// The canonical object of one payload entry of a packet of set `set`: a decoded field, a raw
 /// field or trailing bytes.
-inline void write_field_entry_json(JsonWriter &w, std::uint8_t set, const FieldEntry &e,
-                                   const std::optional<Device> &device) {
+template <class Defer = void>
+void write_field_entry_json(JsonWriter &w, std::uint8_t set, const FieldEntry &e,
+                            const std::optional<Device> &device) {
     if (e.kind == FieldEntry::Kind::trailing) {
         w.begin_object();
         w.key("trailing");
@@ -71,13 +84,14 @@ inline void write_field_entry_json(JsonWriter &w, std::uint8_t set, const FieldE
         w.end_object();
         return;
     }
-    detail::FieldJsonVisitor visitor{w, e.descriptor, e.data, e.size};
+    detail::FieldJsonVisitorOf<Defer> visitor{w, e.descriptor, e.data, e.size};
     decode_field(set, e.descriptor, e.data, e.size, device, visitor);
 }
 
 /// {"offset":O,"set":S,"fields":[...]} for one packet (no newline).
-inline void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
-                              const std::optional<Device> &device) {
+template <class Defer = void>
+void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
+                       const std::optional<Device> &device) {
     w.begin_object();
     w.key("offset");
     w.uinteger(offset);
@@ -88,7 +102,7 @@ inline void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketV
     FieldIterator it(packet);
     FieldEntry e;
     while (it.next(e)) {
-        write_field_entry_json(w, packet.set(), e, device);
+        write_field_entry_json<Defer>(w, packet.set(), e, device);
     }
     w.end_array();
     w.end_object();
@@ -313,7 +327,8 @@ inline bool fail(JsonError &err, const char *path, const std::string &message) {
     return false;
 }
 
-inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err) {
+/// (A template for the compile cost: see write_field_entry_json.)
+template <class Defer = void> bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err) {
     if (f.type != json::Value::Type::object) {
         return fail(err, "", "expected an object");
     }
@@ -362,7 +377,8 @@ inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err)
     if (!json_check_object(f, {"descriptor", "name", "device", "values"}, err)) {
         return false;
     }
-    EncodeLayouts enc{*values, name->text, f.find("device"), b, err};
+    std::conditional_t<std::is_void_v<Defer>, EncodeLayouts, Defer> enc{*values, name->text, f.find("device"),
+                                                                        b, err};
     switch (lookup_field(b.set(), descriptor, enc)) {
     case Lookup::found:
         return enc.ok;
@@ -381,7 +397,8 @@ inline bool encode_field(const json::Value &f, PacketBuilder &b, JsonError &err)
 
 /// Appends the bytes of one JSON line (a packet or a skip run) to `out`; false with `error`
 /// (and nothing appended) when the line is not valid.
-inline bool encode_json_line(const std::string &line, std::vector<std::uint8_t> &out, std::string &error) {
+template <class Defer = void>
+bool encode_json_line(const std::string &line, std::vector<std::uint8_t> &out, std::string &error) {
     json::Value v;
     error.clear();
     if (!json::parse(line, v, error)) {
@@ -434,7 +451,7 @@ inline bool encode_json_line(const std::string &line, std::vector<std::uint8_t> 
     PacketBuilder b(set_id);
     for (std::size_t i = 0; i < fields->items.size(); ++i) {
         JsonError err;
-        if (!detail::encode_field(fields->items[i], b, err)) {
+        if (!detail::encode_field<Defer>(fields->items[i], b, err)) {
             err.enter_index(i).enter("fields");
             error = err.text();
             return false;
