@@ -17,7 +17,7 @@
 
 #include "mipcodec/json.h"
 #include "mipcodec/link.h"
-#include "mipcodec/posix_transport.h"
+#include "mipcodec/native_transport.h"
 
 #define PROG "mipcodec-session"
 #define USAGE                                                                                                \
@@ -278,7 +278,7 @@ int main(int argc, char **argv) {
     mipc_port_t port;
     mipc_link_options_t link_options;
     mipc_device_t device = MIPC_DEVICE_ANY;
-    mipc_posix_t posix;
+    mipc_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
     recorder_t rec;
     mipc_transport_t transport;
     mipc_session_config_t config;
@@ -344,12 +344,12 @@ int main(int argc, char **argv) {
     if (connect == NULL) {
         return usage_error("%s", "--connect ADDRESS is required");
     }
-    if (mipc_posix_open(&posix, connect, baud) != MIPC_OK) {
+    if (mipc_native_open(&posix, connect, baud) != MIPC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
         return 2;
     }
     tool.device = device;
-    mipc_posix_transport(&posix, &rec.inner);
+    mipc_native_transport(&posix, &rec.inner);
     rec.tool = &tool;
     transport.ctx = &rec;
     transport.read = rec_read;
@@ -364,7 +364,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
-    mipc_posix_port(&posix, &port);
+    mipc_native_port(&posix, &port);
     mipc_link_options_init(&link_options);
     link_options.log = log_line;
     link_options.reconnect_ms = (uint32_t)reconnect_ms;
@@ -375,7 +375,7 @@ int main(int argc, char **argv) {
         kind = mipc_link_find_baud(&link);
         if (kind != MIPC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == MIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
-            mipc_posix_close(&posix);
+            mipc_native_close(&posix);
             return 2;
         }
     }
@@ -397,7 +397,7 @@ int main(int argc, char **argv) {
         case 1:
             if (mipc_link_to_idle(&link) == MIPC_RESULT_REFUSED || !link.connected) {
                 fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
-                mipc_posix_close(&posix);
+                mipc_native_close(&posix);
                 return 2;
             }
             print_line(mipc_json_result_line(&link.result, number, device, g_line, sizeof g_line));
@@ -405,7 +405,7 @@ int main(int argc, char **argv) {
         case 2:
             if (mipc_link_listen(&link, (uint32_t)listen_ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
-                mipc_posix_close(&posix);
+                mipc_native_close(&posix);
                 return 2;
             }
             printf("{\"line\":%lu,\"listened\":%lu}\n", number, listen_ms);
@@ -435,12 +435,12 @@ int main(int argc, char **argv) {
         }
         if (kind == MIPC_RESULT_TRANSPORT || kind == MIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
-            mipc_posix_close(&posix);
+            mipc_native_close(&posix);
             return 2;
         }
     }
     mipc_link_close(&link);
-    mipc_posix_close(&posix);
+    mipc_native_close(&posix);
     free(line);
     free(tool.received);
     return status;

@@ -18,7 +18,11 @@
 #include <vector>
 
 #include "mscipcodec/session_json.hpp"
+#ifdef _WIN32
+#include "mscipcodec/transport_win32.hpp"
+#else
 #include "mscipcodec/transport_posix.hpp"
+#endif
 
 namespace {
 
@@ -195,7 +199,9 @@ int main(int argc, char **argv) {
     if (connect.empty()) {
         return usage_error("--connect ADDRESS is required");
     }
+#ifdef SIGPIPE
     std::signal(SIGPIPE, SIG_IGN);
+#endif
     std::string error;
     std::unique_ptr<mscipcodec::Transport> transport = mscipcodec::open_transport(connect, baud, error);
     if (!transport) {

@@ -17,7 +17,11 @@
 #include <vector>
 
 #include "protopkg/session_json.hpp"
+#ifdef _WIN32
+#include "protopkg/transport_win32.hpp"
+#else
 #include "protopkg/transport_posix.hpp"
+#endif
 
 namespace {
 
@@ -194,7 +198,9 @@ int main(int argc, char **argv) {
     if (connect.empty()) {
         return usage_error("--connect ADDRESS is required");
     }
+#ifdef SIGPIPE
     std::signal(SIGPIPE, SIG_IGN);
+#endif
     std::string error;
     std::unique_ptr<protopkg::Transport> transport = protopkg::open_transport(connect, baud, error);
     if (!transport) {
