@@ -26,8 +26,10 @@ set(CMAKE_CXX_COMPILER ${MIPCODEC_MINGW_PREFIX}-g++)
 set(CMAKE_RC_COMPILER ${MIPCODEC_MINGW_PREFIX}-windres)
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static")
 
-# Programs (code generators, ...) come from the host; libraries and headers from the MinGW sysroot.
-set(CMAKE_FIND_ROOT_PATH /usr/${MIPCODEC_MINGW_PREFIX})
+# Programs (code generators, ...) come from the host; libraries, headers and packages from the MinGW
+# sysroot and the roots given with -DCMAKE_FIND_ROOT_PATH (a prefix the Windows build of a package
+# was installed to).
+list(APPEND CMAKE_FIND_ROOT_PATH /usr/${MIPCODEC_MINGW_PREFIX})
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
