@@ -10,17 +10,24 @@
 #ifdef _WIN32
 #include "mipcodec/win32_transport.h"
 typedef mipc_win32_t mipc_native_t;
-#define mipc_native_open mipc_win32_open
-#define mipc_native_transport mipc_win32_transport
-#define mipc_native_close mipc_win32_close
-#define mipc_native_port mipc_win32_port
+#define MIPC_NATIVE(name) mipc_win32_##name
 #else
 #include "mipcodec/posix_transport.h"
 typedef mipc_posix_t mipc_native_t;
-#define mipc_native_open mipc_posix_open
-#define mipc_native_transport mipc_posix_transport
-#define mipc_native_close mipc_posix_close
-#define mipc_native_port mipc_posix_port
+#define MIPC_NATIVE(name) mipc_posix_##name
 #endif
+
+static inline mipc_status_t mipc_native_open(mipc_native_t *t, const char *address, unsigned long baud) {
+    return MIPC_NATIVE(open)(t, address, baud);
+}
+static inline void mipc_native_transport(mipc_native_t *t, mipc_transport_t *out) {
+    MIPC_NATIVE(transport)(t, out);
+}
+static inline void mipc_native_close(mipc_native_t *t) {
+    MIPC_NATIVE(close)(t);
+}
+static inline void mipc_native_port(mipc_native_t *t, mipc_port_t *out) {
+    MIPC_NATIVE(port)(t, out);
+}
 
 #endif

@@ -10,17 +10,25 @@
 #ifdef _WIN32
 #include "mscipcodec/win32_transport.h"
 typedef mscipc_win32_t mscipc_native_t;
-#define mscipc_native_open mscipc_win32_open
-#define mscipc_native_transport mscipc_win32_transport
-#define mscipc_native_close mscipc_win32_close
-#define mscipc_native_port mscipc_win32_port
+#define MSCIPC_NATIVE(name) mscipc_win32_##name
 #else
 #include "mscipcodec/posix_transport.h"
 typedef mscipc_posix_t mscipc_native_t;
-#define mscipc_native_open mscipc_posix_open
-#define mscipc_native_transport mscipc_posix_transport
-#define mscipc_native_close mscipc_posix_close
-#define mscipc_native_port mscipc_posix_port
+#define MSCIPC_NATIVE(name) mscipc_posix_##name
 #endif
+
+static inline mscipc_status_t mscipc_native_open(mscipc_native_t *t, const char *address,
+                                                 unsigned long baud) {
+    return MSCIPC_NATIVE(open)(t, address, baud);
+}
+static inline void mscipc_native_transport(mscipc_native_t *t, mscipc_transport_t *out) {
+    MSCIPC_NATIVE(transport)(t, out);
+}
+static inline void mscipc_native_close(mscipc_native_t *t) {
+    MSCIPC_NATIVE(close)(t);
+}
+static inline void mscipc_native_port(mscipc_native_t *t, mscipc_port_t *out) {
+    MSCIPC_NATIVE(port)(t, out);
+}
 
 #endif

@@ -10,17 +10,24 @@
 #ifdef _WIN32
 #include "codec/win32_transport.h"
 typedef codec_win32_t codec_native_t;
-#define codec_native_open codec_win32_open
-#define codec_native_transport codec_win32_transport
-#define codec_native_close codec_win32_close
-#define codec_native_port codec_win32_port
+#define CODEC_NATIVE(name) codec_win32_##name
 #else
 #include "codec/posix_transport.h"
 typedef codec_posix_t codec_native_t;
-#define codec_native_open codec_posix_open
-#define codec_native_transport codec_posix_transport
-#define codec_native_close codec_posix_close
-#define codec_native_port codec_posix_port
+#define CODEC_NATIVE(name) codec_posix_##name
 #endif
+
+static inline codec_status_t codec_native_open(codec_native_t *t, const char *address, unsigned long baud) {
+    return CODEC_NATIVE(open)(t, address, baud);
+}
+static inline void codec_native_transport(codec_native_t *t, codec_transport_t *out) {
+    CODEC_NATIVE(transport)(t, out);
+}
+static inline void codec_native_close(codec_native_t *t) {
+    CODEC_NATIVE(close)(t);
+}
+static inline void codec_native_port(codec_native_t *t, codec_port_t *out) {
+    CODEC_NATIVE(port)(t, out);
+}
 
 #endif

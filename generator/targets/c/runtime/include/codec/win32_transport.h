@@ -16,13 +16,13 @@ extern "C" {
 #endif
 
 typedef struct {
-    void *handle;     /* the serial port's HANDLE; NULL when closed or a socket */
-    uintptr_t sock;   /* the socket (a Winsock SOCKET); 0 when none */
-    bool socket;      /* TCP (sock) rather than a serial port (handle) */
-    bool winsock;     /* WSAStartup succeeded (WSACleanup at close) */
-    uint32_t timeout; /* the read timeout the port's COMMTIMEOUTS hold now, in ms (+1; 0: not set) */
-    char error[400];  /* the last failure */
-    char reason[128]; /* its cause alone (the system's message; the link's "port lost (...)") */
+    void *handle;      /* the serial port's HANDLE; NULL when closed or a socket */
+    uintptr_t sock;    /* the socket (a Winsock SOCKET); 0 when none */
+    bool socket;       /* TCP (sock) rather than a serial port (handle) */
+    bool winsock;      /* WSAStartup succeeded (WSACleanup at close) */
+    uint32_t timeout;  /* the read timeout the port's COMMTIMEOUTS hold now, in ms (+1; 0: not set) */
+    char error[400];   /* the last failure */
+    char reason[128];  /* its cause alone (the system's message; the link's "port lost (...)") */
     char address[256]; /* the address opened (reopened after a loss) */
     unsigned long baud;
 } codec_win32_t;

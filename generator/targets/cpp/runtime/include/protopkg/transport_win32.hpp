@@ -37,15 +37,15 @@ inline std::string system_text(DWORD code) {
     DWORD n = ::FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, nullptr, code,
                                MAKELANGID(LANG_ENGLISH, SUBLANG_ENGLISH_US), buf, sizeof buf, nullptr);
     if (n == 0) {
-        n = ::FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, nullptr, code, 0, buf,
-                             sizeof buf, nullptr);
+        n = ::FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, nullptr, code, 0,
+                             buf, sizeof buf, nullptr);
     }
     if (n == 0) {
         return "error " + std::to_string(static_cast<unsigned long>(code));
     }
     std::string text(buf, n);
-    while (!text.empty() && (text.back() == '\r' || text.back() == '\n' || text.back() == ' ' ||
-                             text.back() == '.')) {
+    while (!text.empty() &&
+           (text.back() == '\r' || text.back() == '\n' || text.back() == ' ' || text.back() == '.')) {
         text.pop_back();
     }
     return text;
@@ -54,8 +54,9 @@ inline std::string system_text(DWORD code) {
 /// The device name a serial address opens: "COMn" (any case) becomes "\\.\COMn", the name every
 /// COM port answers to (COM10 and above only to it); anything else is used as given.
 inline std::string serial_device_name(const std::string &address) {
-    if (address.size() > 3 && (address[0] == 'C' || address[0] == 'c') && (address[1] == 'O' || address[1] == 'o') &&
-        (address[2] == 'M' || address[2] == 'm') && address.find_first_not_of("0123456789", 3) == std::string::npos) {
+    if (address.size() > 3 && (address[0] == 'C' || address[0] == 'c') &&
+        (address[1] == 'O' || address[1] == 'o') && (address[2] == 'M' || address[2] == 'm') &&
+        address.find_first_not_of("0123456789", 3) == std::string::npos) {
         return "\\\\.\\" + address;
     }
     return address;
@@ -158,7 +159,8 @@ class Win32Transport : public Transport {
             const std::size_t chunk = size > 0x10000u ? 0x10000u : size;
             std::size_t done = 0;
             if (socket_ != INVALID_SOCKET) {
-                const int n = ::send(socket_, reinterpret_cast<const char *>(data), static_cast<int>(chunk), 0);
+                const int n =
+                    ::send(socket_, reinterpret_cast<const char *>(data), static_cast<int>(chunk), 0);
                 if (n == SOCKET_ERROR) {
                     return fail(error, "write failed",
                                 win32_detail::system_text(static_cast<DWORD>(::WSAGetLastError())));
@@ -195,7 +197,8 @@ class Win32Transport : public Transport {
             timeval tv{static_cast<long>(wait / 1000), static_cast<long>(wait % 1000) * 1000L};
             const int r = ::select(0, &readable, nullptr, nullptr, &tv);
             if (r == SOCKET_ERROR) {
-                fail(error, "poll failed", win32_detail::system_text(static_cast<DWORD>(::WSAGetLastError())));
+                fail(error, "poll failed",
+                     win32_detail::system_text(static_cast<DWORD>(::WSAGetLastError())));
                 return -1;
             }
             if (r == 0) {
@@ -212,7 +215,8 @@ class Win32Transport : public Transport {
             }
             if (n == 0) {
                 reason_ = "end of file";
-                std::snprintf(error.text.data(), error.text.size(), "%s: connection closed by the device", what());
+                std::snprintf(error.text.data(), error.text.size(), "%s: connection closed by the device",
+                              what());
                 return -1;
             }
             return n;
