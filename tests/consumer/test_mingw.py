@@ -148,7 +148,12 @@ def wine() -> Iterator[list[str]]:
     )
     # One wineserver for the whole module (otherwise every program starts its own, ~0.5 s each).
     if server:
-        subprocess.run([server, "-p"], env=env, capture_output=True, timeout=60)
+        # (it goes to the background; no pipe of ours may stay open in it)
+        subprocess.run([server, "-p"], env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=60)
+    # Create and start the prefix first, with no pipe of ours: the services Wine starts with the first
+    # program (winedevice.exe) stay as long as the server and keep that program's output open.
+    quiet = {"stdin": subprocess.DEVNULL, "stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
+    subprocess.run([binary, "wineboot"], env=env, timeout=300, **quiet)
     yield [binary]
     if server:
         subprocess.run([server, "-k"], env=env, capture_output=True, timeout=60)
