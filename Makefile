@@ -17,7 +17,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams tests/sessions -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-release test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-release test-mingw test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
 
 all: generate
 
@@ -134,6 +134,13 @@ test-release: generate
 # libnewlib-arm-none-eabi (tools/bootstrap --ci; .ci/run runs it).
 test-cortexm: generate
 	$(PY) -m pytest -q -s tests/consumer/test_cortexm.py
+
+# The C and C++ packages built for Windows with MinGW-w64 and their shipped toolchain file
+# (cmake/x86_64-w64-mingw32.cmake; the Win32 transports), their tools run under Wine: every golden
+# vector, the session tool against the simulator over TCP on 127.0.0.1. Not part of `make test`:
+# needs gcc-mingw-w64-x86-64, g++-mingw-w64-x86-64 and wine64 (tools/bootstrap --ci; .ci/run runs it).
+test-mingw: generate
+	$(PY) -m pytest -q tests/consumer/test_mingw.py
 
 # Fuzzing (tests/fuzz/, docs/fuzzing.md): every harness of every language and package, one at a
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the

@@ -2,8 +2,8 @@
 package file {pkg}Config.cmake and its version file {pkg}ConfigVersion.cmake, which both back ends
 render from one template each to the same bytes so that the two packages of a protocol install
 into one tree (find_package({pkg}) then gives {pkg}::c, {pkg}::c_json, {pkg}::c_posix and
-{pkg}::cpp, whichever are installed), the pkg-config files, and the C package's Cortex-M toolchain
-file."""
+{pkg}::cpp, whichever are installed), the pkg-config files, the C package's Cortex-M toolchain
+file and both packages' MinGW-w64 (Windows) toolchain file."""
 
 from __future__ import annotations
 
@@ -33,6 +33,13 @@ def pkg_config(package: str, title: str, lang: str) -> list[dict]:
                 "lib": f"{package}_posix",
                 "requires": package,
             },
+            {
+                "name": f"{package}-win32",
+                "description": f"Win32 TCP and serial transports of the {title} session API (C)",
+                "lib": f"{package}_win32",
+                "requires": package,
+                "system_libs": "-lws2_32",
+            },
         ]
     return [
         {
@@ -47,8 +54,8 @@ def pkg_config(package: str, title: str, lang: str) -> list[dict]:
 def cmake_package_files(root: str, ctx: dict, pcs: list[dict], toolchains: bool = False) -> dict[str, str]:
     """The CMake config package file and the helper that writes its version file (the same bytes
     from the C and the C++ back end, so that both packages install into one tree), the pkg-config
-    helper and the .pc templates of a package; with `toolchains` (the C package) the Cortex-M
-    toolchain file."""
+    helper and the .pc templates of a package, the MinGW-w64 toolchain file; with `toolchains` (the C
+    package) the Cortex-M toolchain file."""
     env = environment()
     pkg = ctx["pkg"]
     out = {
@@ -58,6 +65,7 @@ def cmake_package_files(root: str, ctx: dict, pcs: list[dict], toolchains: bool 
     }
     for pc in pcs:
         out[root + f"cmake/{pc['name']}.pc.in"] = env.get_template("cmake/pc.in.j2").render(ctx, pc=pc)
+    out[root + "cmake/x86_64-w64-mingw32.cmake"] = env.get_template("cmake/x86_64-w64-mingw32.cmake.j2").render(ctx)
     if toolchains:
         out[root + "cmake/arm-none-eabi.cmake"] = env.get_template("cmake/arm-none-eabi.cmake.j2").render(ctx)
     return out

@@ -309,8 +309,9 @@ def test_find_package_reports_a_missing_component(prefix, tmp_path):
     )
     assert r.returncode != 0
     # the message names every component and its package
-    assert "component nosuch is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)" in " ".join(
-        r.stderr.split()
+    assert (
+        "component nosuch is not installed (c, c_json, c_posix, c_win32: the C package; cpp: the C++ package)"
+        in " ".join(r.stderr.split())
     )
 
 

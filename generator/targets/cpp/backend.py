@@ -76,6 +76,8 @@ def runtime_files(pkg: str) -> dict[str, str]:
     """{runtime file: path in the package} of the hand-written runtime."""
     return {
         **{f"include/protopkg/{h}": f"include/{pkg}/{h}" for h in RUNTIME_HEADERS},
+        # The Windows counterpart of transport_posix.hpp (compiles only on Windows, with MinGW-w64).
+        "include/protopkg/transport_win32.hpp": f"include/{pkg}/transport_win32.hpp",
         "tools/decode.cpp": "tools/decode.cpp",
         "tools/encode.cpp": "tools/encode.cpp",
         "tools/session.cpp": "tools/session.cpp",

@@ -69,6 +69,7 @@ int main(int argc, char **argv) {
                 argv[1]);
         return 2;
     }
+    tool_binary_stdio();
     setvbuf(stdout, NULL, _IOFBF, k_block);
     flush_blocks = !tool_stdout_is_file();
     while (!done) {

@@ -21,7 +21,7 @@
 
 #include "mipcodec/json.h"
 #include "mipcodec/link.h"
-#include "mipcodec/posix_transport.h"
+#include "mipcodec/native_transport.h"
 
 #define PROG "mipcodec-session"
 #define USAGE                                                                                                \
@@ -498,7 +498,7 @@ int main(int argc, char **argv) {
     mipc_port_t port;
     mipc_link_options_t link_options;
     mipc_device_t device = MIPC_DEVICE_ANY;
-    mipc_posix_t posix;
+    mipc_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
     recorder_t rec;
     mipc_transport_t transport;
     mipc_session_config_t config;
@@ -570,12 +570,12 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": --connect ADDRESS is required\n");
         return 2;
     }
-    if (mipc_posix_open(&posix, connect, baud) != MIPC_OK) {
+    if (mipc_native_open(&posix, connect, baud) != MIPC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
         return 2;
     }
     tool.device = device;
-    mipc_posix_transport(&posix, &rec.inner);
+    mipc_native_transport(&posix, &rec.inner);
     rec.tool = &tool;
     transport.ctx = &rec;
     transport.read = rec_read;
@@ -590,7 +590,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
-    mipc_posix_port(&posix, &port);
+    mipc_native_port(&posix, &port);
     mipc_link_options_init(&link_options);
     link_options.log = log_line;
     link_options.reconnect_ms = (uint32_t)reconnect_ms;
@@ -601,7 +601,7 @@ int main(int argc, char **argv) {
         kind = mipc_link_find_baud(&link);
         if (kind != MIPC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == MIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
-            mipc_posix_close(&posix);
+            mipc_native_close(&posix);
             return 2;
         }
     }
@@ -629,7 +629,7 @@ int main(int argc, char **argv) {
         case LINK_IDLE:
             if (mipc_link_to_idle(&link) == MIPC_RESULT_REFUSED || !link.connected) {
                 fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
-                mipc_posix_close(&posix);
+                mipc_native_close(&posix);
                 return 2;
             }
             print_result(&link.result, number, device);
@@ -637,7 +637,7 @@ int main(int argc, char **argv) {
         case LINK_LISTEN:
             if (mipc_link_listen(&link, (uint32_t)ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
-                mipc_posix_close(&posix);
+                mipc_native_close(&posix);
                 return 2;
             }
             printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
@@ -678,11 +678,11 @@ int main(int argc, char **argv) {
         }
         if (kind == MIPC_RESULT_TRANSPORT || kind == MIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
-            mipc_posix_close(&posix);
+            mipc_native_close(&posix);
             return 2;
         }
     }
     mipc_link_close(&link);
-    mipc_posix_close(&posix);
+    mipc_native_close(&posix);
     return status;
 }

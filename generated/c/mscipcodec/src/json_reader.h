@@ -23,7 +23,10 @@ typedef struct {
 void mscipc_jr_init(mscipc_jr_t *jr, const char *s, size_t len, char *msg, size_t msg_cap);
 /* Records "<path>: <message>" (only the first failure is kept); returns -1. */
 int mscipc_jr_fail(mscipc_jr_t *jr, const char *fmt, ...)
-#if defined(__GNUC__)
+#if defined(__MINGW32__)
+    /* MinGW-w64: the package builds with __USE_MINGW_ANSI_STDIO (C99 formats), not msvcrt's */
+    __attribute__((format(gnu_printf, 2, 3)))
+#elif defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;

@@ -21,7 +21,7 @@
 
 #include "mscipcodec/json.h"
 #include "mscipcodec/link.h"
-#include "mscipcodec/posix_transport.h"
+#include "mscipcodec/native_transport.h"
 
 #define PROG "mscipcodec-session"
 #define USAGE                                                                                                \
@@ -498,7 +498,7 @@ int main(int argc, char **argv) {
     mscipc_port_t port;
     mscipc_link_options_t link_options;
     mscipc_device_t device = MSCIPC_DEVICE_ANY;
-    mscipc_posix_t posix;
+    mscipc_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
     recorder_t rec;
     mscipc_transport_t transport;
     mscipc_session_config_t config;
@@ -570,12 +570,12 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": --connect ADDRESS is required\n");
         return 2;
     }
-    if (mscipc_posix_open(&posix, connect, baud) != MSCIPC_OK) {
+    if (mscipc_native_open(&posix, connect, baud) != MSCIPC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
         return 2;
     }
     tool.device = device;
-    mscipc_posix_transport(&posix, &rec.inner);
+    mscipc_native_transport(&posix, &rec.inner);
     rec.tool = &tool;
     transport.ctx = &rec;
     transport.read = rec_read;
@@ -590,7 +590,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
-    mscipc_posix_port(&posix, &port);
+    mscipc_native_port(&posix, &port);
     mscipc_link_options_init(&link_options);
     link_options.log = log_line;
     link_options.reconnect_ms = (uint32_t)reconnect_ms;
@@ -601,7 +601,7 @@ int main(int argc, char **argv) {
         kind = mscipc_link_find_baud(&link);
         if (kind != MSCIPC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == MSCIPC_RESULT_TRANSPORT ? posix.error : link.result.error);
-            mscipc_posix_close(&posix);
+            mscipc_native_close(&posix);
             return 2;
         }
     }
@@ -629,7 +629,7 @@ int main(int argc, char **argv) {
         case LINK_IDLE:
             if (mscipc_link_to_idle(&link) == MSCIPC_RESULT_REFUSED || !link.connected) {
                 fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
-                mscipc_posix_close(&posix);
+                mscipc_native_close(&posix);
                 return 2;
             }
             print_result(&link.result, number, device);
@@ -637,7 +637,7 @@ int main(int argc, char **argv) {
         case LINK_LISTEN:
             if (mscipc_link_listen(&link, (uint32_t)ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
-                mscipc_posix_close(&posix);
+                mscipc_native_close(&posix);
                 return 2;
             }
             printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
@@ -678,11 +678,11 @@ int main(int argc, char **argv) {
         }
         if (kind == MSCIPC_RESULT_TRANSPORT || kind == MSCIPC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
-            mscipc_posix_close(&posix);
+            mscipc_native_close(&posix);
             return 2;
         }
     }
     mscipc_link_close(&link);
-    mscipc_posix_close(&posix);
+    mscipc_native_close(&posix);
     return status;
 }

@@ -7,10 +7,11 @@
 #   target_link_libraries(app PRIVATE mipcodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE mipcodec::c_json)     # C canonical JSON (links mipcodec::c)
 #   target_link_libraries(app PRIVATE mipcodec::c_posix)    # C POSIX transports of the session API
+#   target_link_libraries(app PRIVATE mipcodec::c_win32)    # C Win32 transports (Windows; links ws2_32)
 #   target_link_libraries(app PRIVATE mipcodec::cpp)        # C++17 header-only library
 #
-# Components: c, c_json and c_posix (the C package: mipcodec-c-targets.cmake; c_posix when built
-# with MIPCODEC_POSIX), cpp (the C++ package: mipcodec-cpp-targets.cmake).
+# Components: c, c_json, c_posix and c_win32 (the C package: mipcodec-c-targets.cmake; c_posix when
+# built with MIPCODEC_POSIX, c_win32 with MIPCODEC_WIN32), cpp (the C++ package: mipcodec-cpp-targets.cmake).
 #
 # The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
 # not, so mipcodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
@@ -48,7 +49,7 @@ foreach(_mipcodec_comp ${mipcodec_FIND_COMPONENTS})
         if(mipcodec_FIND_REQUIRED_${_mipcodec_comp})
             set(mipcodec_FOUND FALSE)
             set(mipcodec_NOT_FOUND_MESSAGE
-                "component ${_mipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_mipcodec_c_why}")
+                "component ${_mipcodec_comp} is not installed (c, c_json, c_posix, c_win32: the C package; cpp: the C++ package)${_mipcodec_c_why}")
         endif()
     endif()
 endforeach()

@@ -7,10 +7,11 @@
 #   target_link_libraries(app PRIVATE mscipcodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE mscipcodec::c_json)     # C canonical JSON (links mscipcodec::c)
 #   target_link_libraries(app PRIVATE mscipcodec::c_posix)    # C POSIX transports of the session API
+#   target_link_libraries(app PRIVATE mscipcodec::c_win32)    # C Win32 transports (Windows; links ws2_32)
 #   target_link_libraries(app PRIVATE mscipcodec::cpp)        # C++17 header-only library
 #
-# Components: c, c_json and c_posix (the C package: mscipcodec-c-targets.cmake; c_posix when built
-# with MSCIPCODEC_POSIX), cpp (the C++ package: mscipcodec-cpp-targets.cmake).
+# Components: c, c_json, c_posix and c_win32 (the C package: mscipcodec-c-targets.cmake; c_posix when
+# built with MSCIPCODEC_POSIX, c_win32 with MSCIPCODEC_WIN32), cpp (the C++ package: mscipcodec-cpp-targets.cmake).
 #
 # The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
 # not, so mscipcodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
@@ -48,7 +49,7 @@ foreach(_mscipcodec_comp ${mscipcodec_FIND_COMPONENTS})
         if(mscipcodec_FIND_REQUIRED_${_mscipcodec_comp})
             set(mscipcodec_FOUND FALSE)
             set(mscipcodec_NOT_FOUND_MESSAGE
-                "component ${_mscipcodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_mscipcodec_c_why}")
+                "component ${_mscipcodec_comp} is not installed (c, c_json, c_posix, c_win32: the C package; cpp: the C++ package)${_mscipcodec_c_why}")
         endif()
     endif()
 endforeach()

@@ -43,6 +43,7 @@ std::string known_devices() {
 /// Decodes `in` to stdout; returns the exit status.
 int run(std::FILE *in, const std::string &name, const std::optional<mscipcodec::Device> &device,
         bool samples) {
+    mscipcodec::tool_io::binary_stdio();
     static char out_buf[1 << 16];
     std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
     const bool flush_blocks = !mscipcodec::tool_io::stdout_is_file();

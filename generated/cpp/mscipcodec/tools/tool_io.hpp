@@ -18,6 +18,10 @@
 #else
 #define MSCIPCODEC_TOOL_POSIX 0
 #endif
+#ifdef _WIN32
+#include <fcntl.h>
+#include <io.h>
+#endif
 
 namespace mscipcodec::tool_io {
 
@@ -43,6 +47,16 @@ inline long read_some(std::FILE *in, unsigned char *buf, std::size_t cap) {
         return -1;
     }
     return static_cast<long>(n);
+#endif
+}
+
+/// Standard input and output carry bytes as they are. On Windows they start in text mode (a CR
+/// before every LF written, input cut at a Ctrl-Z byte): switched to binary there, so that the
+/// tools read and write the same bytes as on POSIX systems; nothing to do elsewhere.
+inline void binary_stdio() {
+#ifdef _WIN32
+    (void)_setmode(_fileno(stdin), _O_BINARY);
+    (void)_setmode(_fileno(stdout), _O_BINARY);
 #endif
 }
 

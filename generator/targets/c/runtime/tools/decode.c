@@ -251,6 +251,7 @@ int main(int argc, char **argv) {
             return 2;
         }
     }
+    tool_binary_stdio();
     setvbuf(stdout, NULL, _IOFBF, k_block);
     ctx.line_cap = 65536;
     ctx.line = (char *)malloc(ctx.line_cap);

@@ -21,7 +21,7 @@
 
 #include "codec/json.h"
 #include "codec/link.h"
-#include "codec/posix_transport.h"
+#include "codec/native_transport.h"
 
 #define PROG "codec-session"
 #define USAGE                                                                                                \
@@ -498,7 +498,7 @@ int main(int argc, char **argv) {
     codec_port_t port;
     codec_link_options_t link_options;
     codec_device_t device = CODEC_DEVICE_ANY;
-    codec_posix_t posix;
+    codec_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
     recorder_t rec;
     codec_transport_t transport;
     codec_session_config_t config;
@@ -570,12 +570,12 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": --connect ADDRESS is required\n");
         return 2;
     }
-    if (codec_posix_open(&posix, connect, baud) != CODEC_OK) {
+    if (codec_native_open(&posix, connect, baud) != CODEC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
         return 2;
     }
     tool.device = device;
-    codec_posix_transport(&posix, &rec.inner);
+    codec_native_transport(&posix, &rec.inner);
     rec.tool = &tool;
     transport.ctx = &rec;
     transport.read = rec_read;
@@ -590,7 +590,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, PROG ": cannot start the session\n");
         return 2;
     }
-    codec_posix_port(&posix, &port);
+    codec_native_port(&posix, &port);
     codec_link_options_init(&link_options);
     link_options.log = log_line;
     link_options.reconnect_ms = (uint32_t)reconnect_ms;
@@ -601,7 +601,7 @@ int main(int argc, char **argv) {
         kind = codec_link_find_baud(&link);
         if (kind != CODEC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == CODEC_RESULT_TRANSPORT ? posix.error : link.result.error);
-            codec_posix_close(&posix);
+            codec_native_close(&posix);
             return 2;
         }
     }
@@ -629,7 +629,7 @@ int main(int argc, char **argv) {
         case LINK_IDLE:
             if (codec_link_to_idle(&link) == CODEC_RESULT_REFUSED || !link.connected) {
                 fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
-                codec_posix_close(&posix);
+                codec_native_close(&posix);
                 return 2;
             }
             print_result(&link.result, number, device);
@@ -637,7 +637,7 @@ int main(int argc, char **argv) {
         case LINK_LISTEN:
             if (codec_link_listen(&link, (uint32_t)ms) < 0) {
                 fprintf(stderr, PROG ": %s\n", posix.error);
-                codec_posix_close(&posix);
+                codec_native_close(&posix);
                 return 2;
             }
             printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
@@ -678,11 +678,11 @@ int main(int argc, char **argv) {
         }
         if (kind == CODEC_RESULT_TRANSPORT || kind == CODEC_RESULT_LOST) {
             fprintf(stderr, PROG ": %s\n", posix.error);
-            codec_posix_close(&posix);
+            codec_native_close(&posix);
             return 2;
         }
     }
     codec_link_close(&link);
-    codec_posix_close(&posix);
+    codec_native_close(&posix);
     return status;
 }

@@ -19,6 +19,20 @@
 #else
 #define CODEC_TOOL_POSIX 0
 #endif
+#ifdef _WIN32
+#include <fcntl.h>
+#include <io.h>
+#endif
+
+/* Standard input and output carry bytes as they are. On Windows they start in text mode (a CR
+ * before every LF written, input cut at a Ctrl-Z byte): switched to binary there, so that the tools
+ * read and write the same bytes as on POSIX systems; nothing to do elsewhere. */
+static void tool_binary_stdio(void) {
+#ifdef _WIN32
+    (void)_setmode(_fileno(stdin), _O_BINARY);
+    (void)_setmode(_fileno(stdout), _O_BINARY);
+#endif
+}
 
 /* Reads what is available, at most cap bytes (blocking only until some bytes arrive, so a live
  * stream is decoded as it comes). Returns the count, 0 at the end, or -1 with errno set. */

@@ -27,7 +27,11 @@
 
 #include "protopkg/json_reader.hpp"
 #include "protopkg/session_json.hpp"
+#ifdef _WIN32
+#include "protopkg/transport_win32.hpp"
+#else
 #include "protopkg/transport_posix.hpp"
+#endif
 
 namespace {
 
@@ -311,7 +315,9 @@ int main(int argc, char **argv) {
     if (connect.empty()) {
         return option_error("--connect ADDRESS is required");
     }
+#ifdef SIGPIPE
     std::signal(SIGPIPE, SIG_IGN);
+#endif
     std::string error;
     std::unique_ptr<protopkg::Transport> transport = protopkg::open_transport(connect, baud, error);
     if (!transport) {

@@ -7,10 +7,11 @@
 #   target_link_libraries(app PRIVATE democodec::c)          # C core (no stdio, no heap)
 #   target_link_libraries(app PRIVATE democodec::c_json)     # C canonical JSON (links democodec::c)
 #   target_link_libraries(app PRIVATE democodec::c_posix)    # C POSIX transports of the session API
+#   target_link_libraries(app PRIVATE democodec::c_win32)    # C Win32 transports (Windows; links ws2_32)
 #   target_link_libraries(app PRIVATE democodec::cpp)        # C++17 header-only library
 #
-# Components: c, c_json and c_posix (the C package: democodec-c-targets.cmake; c_posix when built
-# with DEMOCODEC_POSIX), cpp (the C++ package: democodec-cpp-targets.cmake).
+# Components: c, c_json, c_posix and c_win32 (the C package: democodec-c-targets.cmake; c_posix when
+# built with DEMOCODEC_POSIX, c_win32 with DEMOCODEC_WIN32), cpp (the C++ package: democodec-cpp-targets.cmake).
 #
 # The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
 # not, so democodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
@@ -48,7 +49,7 @@ foreach(_democodec_comp ${democodec_FIND_COMPONENTS})
         if(democodec_FIND_REQUIRED_${_democodec_comp})
             set(democodec_FOUND FALSE)
             set(democodec_NOT_FOUND_MESSAGE
-                "component ${_democodec_comp} is not installed (c, c_json, c_posix: the C package; cpp: the C++ package)${_democodec_c_why}")
+                "component ${_democodec_comp} is not installed (c, c_json, c_posix, c_win32: the C package; cpp: the C++ package)${_democodec_c_why}")
         endif()
     endif()
 endforeach()

@@ -36,6 +36,7 @@ int main(int argc, char **argv) {
                      argv[1]);
         return 2;
     }
+    democodec::tool_io::binary_stdio();
     static char out_buf[1 << 16];
     std::setvbuf(stdout, out_buf, _IOFBF, sizeof out_buf);
     const bool flush_blocks = !democodec::tool_io::stdout_is_file();

@@ -28,7 +28,11 @@
 
 #include "democodec/json_reader.hpp"
 #include "democodec/session_json.hpp"
+#ifdef _WIN32
+#include "democodec/transport_win32.hpp"
+#else
 #include "democodec/transport_posix.hpp"
+#endif
 
 namespace {
 
@@ -312,7 +316,9 @@ int main(int argc, char **argv) {
     if (connect.empty()) {
         return option_error("--connect ADDRESS is required");
     }
+#ifdef SIGPIPE
     std::signal(SIGPIPE, SIG_IGN);
+#endif
     std::string error;
     std::unique_ptr<democodec::Transport> transport = democodec::open_transport(connect, baud, error);
     if (!transport) {
