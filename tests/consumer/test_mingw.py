@@ -257,6 +257,24 @@ def test_session_tool_under_wine_reports_a_refused_connection(lang, c_prefixes, 
     assert len(lines) == 1 and "cannot connect to" in lines[0] and str(port) in lines[0], r.stderr
 
 
+@pytest.mark.parametrize("lang", ["c", "cpp"])
+def test_session_tool_under_wine_asks_for_tcp_before_a_host_and_port(lang, c_prefixes, cpp_prefixes, wine):
+    """HOST:PORT without "tcp:" is not taken for a COM port (issue 39 item 5): the same one line
+    as on POSIX and in Python and Rust, exit 2, before anything is opened."""
+    r = subprocess.run(
+        [*wine, exe(lang, "mipcodec", "session"), "--connect", "127.0.0.1:5000"],
+        input="",
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert r.returncode == 2, (r.returncode, r.stdout, r.stderr)
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].endswith(
+        "'127.0.0.1:5000' is not a serial port: did you mean tcp:127.0.0.1:5000?"
+    ), r.stderr
+
+
 def test_installed_c_package_links_a_windows_program(c_prefixes, wine, tmp_path):
     """A project of its own: find_package(mipcodec CONFIG REQUIRED COMPONENTS c c_win32) with the
     installed toolchain file, a program through mipcodec/native_transport.h (the Win32 transport
