@@ -323,6 +323,7 @@ def test_installed_c_package_links_a_windows_program(c_prefixes, wine, tmp_path)
     )
     assert r.returncode == 0, r.stderr
     bad_tcp, no_port = r.stdout.splitlines()
-    # an address without tcp: is a serial port name; COM250 is opened as \\.\COM250 and is not there
-    assert bad_tcp.startswith("cannot open 127.0.0.1:5000 at 115200 baud: "), bad_tcp
+    # HOST:PORT without tcp: is refused with a hint (issue 39 item 5, the rule of every language);
+    # COM250 is opened as \\.\COM250 and is not there
+    assert bad_tcp == "'127.0.0.1:5000' is not a serial port: did you mean tcp:127.0.0.1:5000?", bad_tcp
     assert no_port.startswith("cannot open COM250 at 115200 baud: "), no_port
