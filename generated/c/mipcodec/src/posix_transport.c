@@ -1,4 +1,7 @@
 /* POSIX transports: TCP sockets and termios serial ports. Generated: do not edit. */
+/* Built everywhere but Windows: there the file declares nothing else (win32_transport.c is the
+ * transport), so a build that compiles every file of src/ works on any platform. */
+#if !defined(_WIN32)
 #if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
 #undef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -414,3 +417,7 @@ void mipc_posix_port(mipc_posix_t *posix, mipc_port_t *out) {
     out->sleep_ms = posix_sleep;
     out->baud = posix->socket ? 0u : (uint32_t)posix->baud;
 }
+
+#else
+typedef int mipc_posix_transport_not_built; /* ISO C: a translation unit declares something */
+#endif

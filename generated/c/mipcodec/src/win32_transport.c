@@ -1,5 +1,9 @@
 /* Win32 transports: Winsock 2 TCP sockets and COM serial ports (mipcodec/win32_transport.h).
  * Generated: do not edit. */
+/* Built for Windows only: elsewhere the file declares nothing else, so a build that compiles every
+ * file of src/ (a vendored copy, the big-endian and fuzz builds) works on any platform; the POSIX
+ * transport (posix_transport.c) is the one there. */
+#if defined(_WIN32)
 #ifndef WIN32_LEAN_AND_MEAN
 #define WIN32_LEAN_AND_MEAN
 #endif
@@ -466,3 +470,7 @@ void mipc_win32_port(mipc_win32_t *win32, mipc_port_t *out) {
     out->sleep_ms = win32_sleep;
     out->baud = win32->socket ? 0u : (uint32_t)win32->baud;
 }
+
+#else
+typedef int mipc_win32_transport_not_built; /* ISO C: a translation unit declares something */
+#endif

@@ -25,7 +25,7 @@ import select
 import socket
 import sys
 import time
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 
 from . import _link, _sim, capabilities, registry
 from . import _session as _meta
@@ -669,7 +669,7 @@ class Simulator:
                 tick_now - max(1, int(rate * self.speed * window)) + 1,
                 tick_now - MAX_BURST * decimations[0] + 1,
             )
-            due = set()
+            due: Set[int] = set()
             for dec in decimations:
                 due.update(range(-(-first // dec) * dec, tick_now + 1, dec))
             for tick in sorted(due)[-MAX_BURST:]:

@@ -1,4 +1,8 @@
 /* Win32 transports: Winsock 2 TCP sockets and COM serial ports (codec/win32_transport.h). */
+/* Built for Windows only: elsewhere the file declares nothing else, so a build that compiles every
+ * file of src/ (a vendored copy, the big-endian and fuzz builds) works on any platform; the POSIX
+ * transport (posix_transport.c) is the one there. */
+#if defined(_WIN32)
 #ifndef WIN32_LEAN_AND_MEAN
 #define WIN32_LEAN_AND_MEAN
 #endif
@@ -465,3 +469,7 @@ void codec_win32_port(codec_win32_t *win32, codec_port_t *out) {
     out->sleep_ms = win32_sleep;
     out->baud = win32->socket ? 0u : (uint32_t)win32->baud;
 }
+
+#else
+typedef int codec_win32_transport_not_built; /* ISO C: a translation unit declares something */
+#endif
