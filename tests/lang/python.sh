@@ -131,7 +131,7 @@ test)
     ;;
 consumer)
     echo "== consumer: sdist and wheel of every package installed into clean virtualenvs (no index)"
-    (cd "$ROOT" && "$PY" -m pytest -q -p no:cacheprovider tests/consumer)
+    (cd "$ROOT" && "$PY" -m pytest -q -p no:cacheprovider tests/consumer/test_python_package.py)
     ;;
 decode)
     [ $# -ge 1 ] || usage
