@@ -153,24 +153,43 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
         simulator_section(pg, lang, p, ex)
 
 
+# How an outside user builds and runs the configure-and-stream example from the package's own
+# directory (no repository): {pkg} the package, ADDRESS the simulator's address. Checked by
+# tests/docs/test_outside_user.py (the Python and C commands run against the simulator there).
+OUTSIDE_RUN = {
+    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
+    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
+    "python": "python examples/configure_and_stream.py ADDRESS 5",
+    "rust": "cargo run --features serial --example configure_and_stream -- ADDRESS 5",
+}
+
+
 def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
-    """How to run the example against the simulated device, over TCP and a pseudo-terminal."""
+    """How to run the example against the simulated device: from the package (an outside user,
+    after `pip install` of the Python package that carries the simulator), then in this repository."""
     pg.h(4, "Run it against the simulator", f"{CONFIGURE_ANCHOR}-{p['name']}-simulator")
     pkg = p["package"]
     title = next((d["title"] for d in p["devices"] if d["id"] == ex["device"]), ex["device"])
     pg.p(
-        f"Without the hardware, run the program against the simulated {title} (`python -m {pkg}.sim`; in "
-        "this repository `tests/conformance/simulate`, docs/conformance.md section 9): it answers every "
-        "command as the device does, keeps the setting the program writes and streams the data it enables. "
-        f"Start it, then give the address it prints first to the program; `tests/lang/{lang}.sh configure "
-        "ADDRESS [COUNT]` builds and runs this example (`tests/conformance/test_simulator_examples.py` runs "
-        "both, over TCP and a pseudo-terminal)"
-        + (
-            ", with the crate's `serial` feature that serial ports and pseudo-terminals need"
-            " (`cargo run --features serial --example configure_and_stream -- ADDRESS`):"
-            if lang == "rust"
-            else ":"
-        )
+        f"Without the hardware, run the program against the simulated {title}: it answers every command as "
+        "the device does, keeps the setting the program writes and streams the data it enables "
+        "(docs/simulator.md). The simulator comes with the Python package; start it, then give the address "
+        "it prints first to the program. From the package's directory (`generated/"
+        f"{lang}/{pkg}`, or wherever you vendored it), with the Python package installed"
+        + (" (the crate's `serial` feature is what serial ports and pseudo-terminals need):" if lang == "rust" else ":")
+    )
+    sim = f"python -m {pkg}.sim --device {ex['device']}"
+    run = OUTSIDE_RUN[lang].format(pkg=pkg, PKG=pkg.upper())
+    pg.code(
+        f"pip install 'generated/python/{pkg}[serial]'   # the Python package's directory, sdist or wheel\n"
+        f"{sim} --listen tcp:127.0.0.1:0 &   # prints tcp:127.0.0.1:PORT\n"
+        + run.replace("ADDRESS", "tcp:127.0.0.1:PORT"),
+        "sh",
+    )
+    pg.p(
+        f"In this repository, `tests/lang/{lang}.sh configure ADDRESS [COUNT]` builds and runs this example and "
+        "`tests/conformance/simulate` starts the simulator (`tests/conformance/test_simulator_examples.py` runs "
+        "both, over TCP and a pseudo-terminal):"
     )
     select = "" if pkg == "mipcodec" else f"{RUN_PACKAGE_VARS[lang]}={pkg} "
     sim = f"tests/conformance/simulate --protocol {p['name']} --device {ex['device']}"
