@@ -64,6 +64,7 @@ _RUNTIME_FILES = {
     "include/codec/link.h": "include/codec/link.h",
     "src/link.c": "src/link.c",
     "include/codec/posix_transport.h": "include/codec/posix_transport.h",
+    "src/address.h": "src/address.h",
     "src/posix_transport.c": "src/posix_transport.c",
     "include/codec/win32_transport.h": "include/codec/win32_transport.h",
     "src/win32_transport.c": "src/win32_transport.c",

@@ -11,6 +11,8 @@
 #endif
 #include "mipcodec/posix_transport.h"
 
+#include "address.h"
+
 #include <assert.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -203,23 +205,6 @@ static mipc_status_t open_serial(mipc_posix_t *t, const char *path, unsigned lon
     return MIPC_OK;
 }
 
-/* HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric port, no '/'
- * or '\\' (a path), an IPv6 host in brackets. The four languages share the rule; such an address
- * that is not an existing path is refused with "did you mean tcp:...?". */
-static int looks_like_tcp(const char *address) {
-    const char *colon = strrchr(address, ':');
-    size_t host;
-    if (colon == NULL || colon == address || colon[1] == '\0' ||
-        strspn(colon + 1, "0123456789") != strlen(colon + 1) || strpbrk(address, "/\\") != NULL) {
-        return 0;
-    }
-    host = (size_t)(colon - address);
-    if (memchr(address, ':', host) == NULL) {
-        return 1;
-    }
-    return address[0] == '[' && address[host - 1] == ']';
-}
-
 mipc_status_t mipc_posix_open(mipc_posix_t *posix, const char *address, unsigned long baud) {
     assert(posix != NULL);
     assert(address != NULL);
@@ -236,7 +221,7 @@ mipc_status_t mipc_posix_open(mipc_posix_t *posix, const char *address, unsigned
     if (strncmp(address, "tcp:", 4) == 0) {
         return open_tcp(posix, address);
     }
-    if (looks_like_tcp(address) && access(address, F_OK) != 0) {
+    if (mipc_looks_like_tcp(address) && access(address, F_OK) != 0) {
         snprintf(posix->error, sizeof posix->error, "'%s' is not a serial port: did you mean tcp:%s?",
                  address, address);
         copy_text(posix->reason, sizeof posix->reason, "not a serial port");

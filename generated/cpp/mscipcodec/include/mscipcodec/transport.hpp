@@ -627,4 +627,21 @@ class Connection {
     std::size_t setting_count_ = 0;
 };
 
+/// True for HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric
+/// port, no '/' or '\\' (a path such as /dev/ttyUSB0 or \\.\COM10), an IPv6 host in brackets. The four
+/// languages share the rule; transport_posix.hpp and transport_win32.hpp refuse such an address with
+/// "did you mean tcp:HOST:PORT?" (POSIX: unless a file of that name exists).
+inline bool looks_like_tcp(const std::string &address) {
+    const std::size_t colon = address.rfind(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == address.size() ||
+        address.find_first_not_of("0123456789", colon + 1) != std::string::npos ||
+        address.find_first_of("/\\") != std::string::npos) {
+        return false;
+    }
+    if (address.find(':') == colon) {
+        return true;
+    }
+    return address[0] == '[' && address[colon - 1] == ']';
+}
+
 } // namespace mscipcodec

@@ -374,21 +374,6 @@ inline bool FdTransport::reopen() {
     return fd_ >= 0;
 }
 
-/// True for HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric
-/// port, no '/' or '\\' (a path), an IPv6 host in brackets. The four languages share the rule.
-inline bool looks_like_tcp(const std::string &address) {
-    const std::size_t colon = address.rfind(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == address.size() ||
-        address.find_first_not_of("0123456789", colon + 1) != std::string::npos ||
-        address.find_first_of("/\\") != std::string::npos) {
-        return false;
-    }
-    if (address.find(':') == colon) {
-        return true;
-    }
-    return address[0] == '[' && address[colon - 1] == ']';
-}
-
 /// "tcp:HOST:PORT" or a serial port path. HOST:PORT without "tcp:" that is not an existing path
 /// is refused with "did you mean tcp:HOST:PORT?".
 inline std::unique_ptr<Transport> open_transport(const std::string &address, long baud, std::string &error) {

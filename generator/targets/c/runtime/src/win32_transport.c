@@ -11,6 +11,8 @@
 #endif
 #include "codec/win32_transport.h"
 
+#include "address.h"
+
 #include <winsock2.h>
 #include <ws2tcpip.h>
 #include <windows.h>
@@ -224,23 +226,6 @@ static codec_status_t open_serial(codec_win32_t *t, const char *address, unsigne
     return CODEC_OK;
 }
 
-/* HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric port, no '/'
- * or '\\' (a path such as \\.\COM10), an IPv6 host in brackets. The same rule as the POSIX
- * transport and the other languages: refused with "did you mean tcp:...?". */
-static int looks_like_tcp(const char *address) {
-    const char *colon = strrchr(address, ':');
-    size_t host;
-    if (colon == NULL || colon == address || colon[1] == '\0' ||
-        strspn(colon + 1, "0123456789") != strlen(colon + 1) || strpbrk(address, "/\\") != NULL) {
-        return 0;
-    }
-    host = (size_t)(colon - address);
-    if (memchr(address, ':', host) == NULL) {
-        return 1;
-    }
-    return address[0] == '[' && address[host - 1] == ']';
-}
-
 codec_status_t codec_win32_open(codec_win32_t *win32, const char *address, unsigned long baud) {
     assert(win32 != NULL);
     assert(address != NULL);
@@ -256,7 +241,7 @@ codec_status_t codec_win32_open(codec_win32_t *win32, const char *address, unsig
     if (strncmp(address, "tcp:", 4) == 0) {
         return open_tcp(win32, address);
     }
-    if (looks_like_tcp(address)) {
+    if (codec_looks_like_tcp(address)) {
         snprintf(win32->error, sizeof win32->error, "'%s' is not a serial port: did you mean tcp:%s?",
                  address, address);
         copy_text(win32->reason, sizeof win32->reason, "not a serial port");

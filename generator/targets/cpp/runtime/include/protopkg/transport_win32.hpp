@@ -413,22 +413,6 @@ inline std::unique_ptr<Transport> open_serial(const std::string &path, long baud
     return t;
 }
 
-/// True for HOST:PORT without "tcp:" (127.0.0.1:5000, localhost:5000, [::1]:5000): a numeric
-/// port, no '/' or '\\' (a path such as \\.\COM10), an IPv6 host in brackets. The same rule as
-/// the POSIX transport and the other languages.
-inline bool looks_like_tcp(const std::string &address) {
-    const std::size_t colon = address.rfind(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == address.size() ||
-        address.find_first_not_of("0123456789", colon + 1) != std::string::npos ||
-        address.find_first_of("/\\") != std::string::npos) {
-        return false;
-    }
-    if (address.find(':') == colon) {
-        return true;
-    }
-    return address[0] == '[' && address[colon - 1] == ']';
-}
-
 /// "tcp:HOST:PORT" or a COM port. HOST:PORT without "tcp:" is refused with "did you mean
 /// tcp:HOST:PORT?".
 inline std::unique_ptr<Transport> open_transport(const std::string &address, long baud, std::string &error) {
