@@ -3,7 +3,8 @@
 #   tests/lang/rust.sh build                      cargo build --release of every crate under generated/rust/
 #   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
 #                                                 -D warnings, cargo test, a core-only
-#                                                 (--no-default-features) build, `package` and
+#                                                 (--no-default-features) build, clippy of the core
+#                                                 with one set (`set-*`), `package` and
 #                                                 `consumer`, for every crate; the application
 #                                                 programs formatted and lint-free
 #   tests/lang/rust.sh package                    cargo package of every crate: the .crate holds
@@ -228,6 +229,9 @@ test_consumer() {
         echo "== $pkg: consumer (path dependency, default-features = false, no_std)" >&2
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$dst/core/Cargo.toml"
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" >&2
+        echo "== $pkg: consumer (no_std, one set in the dispatch: feature $(one_set_feature "$pkg"))" >&2
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR-one-set" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" \
+            --features one-set >&2
     done
 }
 
@@ -405,6 +409,9 @@ test)
         cargo test --quiet --manifest-path "$m"
         echo "== $pkg: build (core only, --no-default-features)" >&2
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$m" --lib --no-default-features
+        echo "== $pkg: clippy (core only, one set in the dispatch: --features $(one_set_feature "$pkg"))" >&2
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR-one-set" cargo clippy --quiet --manifest-path "$m" --lib \
+            --no-default-features --features "$(one_set_feature "$pkg")" -- -D warnings
     done
     test_package
     test_consumer

@@ -537,6 +537,7 @@ class _Protocol:
             "shared_rule": bool(shared) and "data" in proto["set_kinds"],
             "selecting": selecting,
             "select_sets": SELECT_SETS,
+            "data_set": next((s for s in sets if s["kind"] == "data"), None),
             "first_set": sets[0]["id"] if sets else "0x00",
             "typed_example": self.typed_example(),
             "cargo": cargo_metadata(proto),
