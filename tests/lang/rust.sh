@@ -3,7 +3,8 @@
 #   tests/lang/rust.sh build                      cargo build --release of every crate under generated/rust/
 #   tests/lang/rust.sh test                       the runtime in place (as `runtime`), then clippy
 #                                                 -D warnings, cargo test, a core-only
-#                                                 (--no-default-features) build, `package` and
+#                                                 (--no-default-features) build, clippy of the core
+#                                                 with one set (`set-*`), `package` and
 #                                                 `consumer`, for every crate; the application
 #                                                 programs formatted and lint-free
 #   tests/lang/rust.sh package                    cargo package of every crate: the .crate holds
@@ -19,7 +20,9 @@
 #                                                 toolchain of its rust-version (rustup)
 #   tests/lang/rust.sh embedded                   (CI) every crate without default features in a
 #                                                 firmware image for thumbv7em-none-eabihf (the
-#                                                 no_std consumer, no allocator); prints its size
+#                                                 no_std consumer, no allocator); prints its size;
+#                                                 fails when the image that decodes one set (the
+#                                                 first data set's feature) is 32 kB or more
 #   tests/lang/rust.sh runtime                    the runtime where it is edited, generator/targets/rust/
 #                                                 runtime/ (no regeneration of generated/ needed):
 #                                                 rustfmt --check, then for each framing of the test
@@ -184,16 +187,27 @@ test_publish() {
     done
 }
 
+# The cargo feature of the crate's first data set (Cargo.toml: `set-NAME = [...]  # 0xNN, a data
+# set`): the set of the one-set firmware image.
+one_set_feature() {
+    sed -n 's/^\(set-[a-z0-9-]*\) = .*# 0x[0-9A-F]*, a data set$/\1/p' "$(manifest "$1")" | head -1
+}
+
 # Copies the consumer projects to build/rust/consumer/PACKAGE/ with the crate's path and name.
 setup_consumer() {
-    local pkg="$1" dst="$CONSUMER_DIR/$1" part
+    local pkg="$1" dst="$CONSUMER_DIR/$1" part one
+    one="$(one_set_feature "$pkg")"
+    if [ -z "$one" ]; then
+        echo "rust.sh: $(manifest "$pkg") has no feature of a data set (set-NAME = [...]  # 0xNN, a data set)" >&2
+        exit 1
+    fi
     mkdir -p "$dst"
     for part in app core firmware; do
         rm -rf "${dst:?}/$part"
         cp -R "$CONSUMER_SRC/$part" "$dst/$part"
     done
     find "$dst" -type f \( -name '*.rs' -o -name Cargo.toml \) -exec \
-        sed -i -e "s|@CRATE_DIR@|$ROOT/generated/rust/$pkg|" -e "s/\bprotocodec\b/$pkg/g" {} +
+        sed -i -e "s|@CRATE_DIR@|$ROOT/generated/rust/$pkg|" -e "s/@ONE_SET@/$one/" -e "s/\bprotocodec\b/$pkg/g" {} +
 }
 
 # Out-of-tree consumers: a std program with default features (run: it checks itself and prints
@@ -215,6 +229,9 @@ test_consumer() {
         echo "== $pkg: consumer (path dependency, default-features = false, no_std)" >&2
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$dst/core/Cargo.toml"
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" >&2
+        echo "== $pkg: consumer (no_std, one set in the dispatch: feature $(one_set_feature "$pkg"))" >&2
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR-one-set" cargo test --quiet --manifest-path "$dst/core/Cargo.toml" \
+            --features one-set >&2
     done
 }
 
@@ -266,9 +283,46 @@ image_size() {
     echo "(no size tool: install binutils or llvm)"
 }
 
-# Every crate without std for a Cortex-M4F, and the firmware consumer linked without an allocator.
+# The limit of the one-set firmware image (text + data, bytes; issue 38): the parser and one
+# set's decode_field.
+ONE_SET_LIMIT=32768
+
+# The bytes of flash an ELF image takes (text + data, as `size` counts them): the sizes of its
+# allocated sections that hold bytes in the file (SHF_ALLOC, not SHT_NOBITS), read from the
+# section headers with Python, so that the check needs no size tool.
+flash_bytes() {
+    "$PY" - "$1" <<'PYEOF'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+if data[:4] != b"\x7fELF":
+    sys.exit(f"rust.sh embedded: {sys.argv[1]}: not an ELF file")
+wide, order = data[4] == 2, "<" if data[5] == 1 else ">"
+if wide:
+    shoff, = struct.unpack_from(order + "Q", data, 0x28)
+    shentsize, shnum = struct.unpack_from(order + "HH", data, 0x3A)
+else:
+    shoff, = struct.unpack_from(order + "I", data, 0x20)
+    shentsize, shnum = struct.unpack_from(order + "HH", data, 0x2E)
+total = 0
+for i in range(shnum):
+    at = shoff + i * shentsize
+    if wide:
+        sh_type, sh_flags = struct.unpack_from(order + "IQ", data, at + 4)
+        sh_size, = struct.unpack_from(order + "Q", data, at + 0x20)
+    else:
+        sh_type, sh_flags = struct.unpack_from(order + "II", data, at + 4)
+        sh_size, = struct.unpack_from(order + "I", data, at + 0x14)
+    if sh_flags & 0x2 and sh_type != 8:  # SHF_ALLOC, not SHT_NOBITS
+        total += sh_size
+print(total)
+PYEOF
+}
+
+# Every crate without std for a Cortex-M4F, and the firmware consumer linked without an allocator:
+# the parser image, the decode image (every set in the dispatch) and the decode image with one
+# set (its cargo feature), whose size must stay under ONE_SET_LIMIT.
 test_embedded() {
-    local pkg dst image
+    local pkg dst image one one_image size
     if command -v rustup >/dev/null && ! rustup target list --installed | grep -qx "$EMBEDDED_TARGET"; then
         echo "rust.sh embedded: the $EMBEDDED_TARGET target is not installed; run: rustup target add $EMBEDDED_TARGET (or tools/bootstrap --ci)" >&2
         exit 1
@@ -283,7 +337,22 @@ test_embedded() {
         image="$EMBEDDED_TARGET_DIR/firmware-$pkg/$EMBEDDED_TARGET/release"
         echo "$pkg firmware images ($EMBEDDED_TARGET): parser = stream parser, field iterator, packet builder;"
         echo "  decode = the same and decode_field, which links the decoder of every field"
-        image_size "$image/parser" "$image/decode"
+        one="$(one_set_feature "$pkg")"
+        echo "== $pkg: the decode image with one set in the dispatch (feature $one)" >&2
+        CARGO_TARGET_DIR="$EMBEDDED_TARGET_DIR/firmware-$pkg-one-set" cargo build --quiet --release \
+            --manifest-path "$dst/firmware/Cargo.toml" --target "$EMBEDDED_TARGET" --features one-set --bin decode
+        one_image="$image/decode-$one"
+        cp "$EMBEDDED_TARGET_DIR/firmware-$pkg-one-set/$EMBEDDED_TARGET/release/decode" "$one_image"
+        echo "  decode-$one = decode with the feature $one: decode_field links that set's decoders only"
+        image_size "$image/parser" "$image/decode" "$one_image"
+        # text + data of the ELF (the flash the image takes): the sizes of its allocated sections
+        # that hold bytes in the file, from the section headers.
+        size="$(flash_bytes "$one_image")"
+        echo "  decode-$one: $size bytes of flash (limit $ONE_SET_LIMIT)"
+        if [ "$size" -ge "$ONE_SET_LIMIT" ]; then
+            echo "rust.sh embedded: $pkg: the one-set firmware image (feature $one) is $size bytes, not under $ONE_SET_LIMIT" >&2
+            exit 1
+        fi
     done
 }
 
@@ -340,6 +409,9 @@ test)
         cargo test --quiet --manifest-path "$m"
         echo "== $pkg: build (core only, --no-default-features)" >&2
         CARGO_TARGET_DIR="$CORE_TARGET_DIR" cargo build --quiet --manifest-path "$m" --lib --no-default-features
+        echo "== $pkg: clippy (core only, one set in the dispatch: --features $(one_set_feature "$pkg"))" >&2
+        CARGO_TARGET_DIR="$CORE_TARGET_DIR-one-set" cargo clippy --quiet --manifest-path "$m" --lib \
+            --no-default-features --features "$(one_set_feature "$pkg")" -- -D warnings
     done
     test_package
     test_consumer

@@ -122,6 +122,17 @@ def _int_rust(name: str) -> str:
     return PRIMITIVE_TYPES[name]
 
 
+# The cargo feature that every set feature turns on: with it, the dispatch holds only the
+# selected sets (without it, every set).
+SELECT_SETS = "select-sets"
+
+
+def set_feature(module: str) -> str:
+    """The cargo feature that selects a set for the dispatch: `set-` and the set's module name
+    with dashes (`filter_data` -> `set-filter-data`)."""
+    return "set-" + module.replace("_", "-")
+
+
 def _hex(v: int, width: int = 2) -> str:
     return "0x%0*X" % (width, v)
 
@@ -416,6 +427,7 @@ class _Protocol:
             "has_multi": any(f["multi"] for f in fields),
             "shared": s["shared"],
             "decoders": self.set_decoders(s),
+            "feature": set_feature(self.set_module(s)),
         }
 
     def set_decoders(self, s: dict) -> list[dict]:
@@ -480,6 +492,12 @@ class _Protocol:
         ]
         reserved = self.reserved_model()
         groups = [s["variant"] for s in sets] + (["Reserved"] if reserved else [])
+        # Cargo features that select the sets of the dispatch (firmware size, issue 38): a set is
+        # in decode_field's tables when its feature is on or when no set feature is on at all.
+        # Every set feature turns on SELECT_SETS.
+        selecting = f'feature = "{SELECT_SETS}"'
+        for s in sets:
+            s["cfg"] = f'any(feature = "{s["feature"]}", not({selecting}))'
         types = [self.type_model(t) for t in proto["types"]]
         return {
             "package": self.package,
@@ -517,6 +535,9 @@ class _Protocol:
             "groups": groups,
             "shared": shared,
             "shared_rule": bool(shared) and "data" in proto["set_kinds"],
+            "selecting": selecting,
+            "select_sets": SELECT_SETS,
+            "data_set": next((s for s in sets if s["kind"] == "data"), None),
             "first_set": sets[0]["id"] if sets else "0x00",
             "typed_example": self.typed_example(),
             "cargo": cargo_metadata(proto),

@@ -348,34 +348,49 @@ impl FieldValue {
         values: &crate::json_read::Json,
     ) -> Result<Self, crate::json_read::JsonError> {
         let found = match set {
+            #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
             0x01 => crate::base::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Base)),
+            #[cfg(any(feature = "set-threedm", not(feature = "select-sets")))]
             0x0C => crate::threedm::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Threedm)),
+            #[cfg(any(feature = "set-filter", not(feature = "select-sets")))]
             0x0D => crate::filter::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Filter)),
+            #[cfg(any(feature = "set-gnss", not(feature = "select-sets")))]
             0x0E => crate::gnss::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Gnss)),
+            #[cfg(any(feature = "set-aiding", not(feature = "select-sets")))]
             0x13 => crate::aiding::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Aiding)),
+            #[cfg(any(feature = "set-system", not(feature = "select-sets")))]
             0x7F => crate::system::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::System)),
+            #[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
             0x80 => crate::sensor::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Sensor)),
+            #[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
             0x81 => crate::gnss_data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::GnssData)),
+            #[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
             0x82 => crate::filter_data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::FilterData)),
+            #[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
             0x91 => crate::gnss_receiver_1::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::GnssReceiver1)),
+            #[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
             0x92 => crate::gnss_receiver_2::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::GnssReceiver2)),
+            #[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
             0x93 => crate::gnss_corrections::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::GnssCorrections)),
+            #[cfg(any(feature = "set-gnss-external", not(feature = "select-sets")))]
             0x94 => crate::gnss_external::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::GnssExternal)),
+            #[cfg(any(feature = "set-system-data", not(feature = "select-sets")))]
             0xA0 => crate::system_data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::SystemData)),
+            #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
             0xFF => crate::shared::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Shared)),
             _ => None,
@@ -389,6 +404,7 @@ impl FieldValue {
         {
             return result.map(FieldValue::Reserved);
         }
+        #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
         if kind == Some(SetKind::Data) {
             if let Some(result) = crate::shared::SetField::from_json(descriptor, device, values) {
                 return result.map(FieldValue::Shared);
@@ -404,6 +420,9 @@ impl FieldValue {
 /// Decodes the data of field `descriptor` in a packet of set `set`: the set's own field, else a
 /// reserved field of the set's kind, else (in a data set) a field of the shared data set. With
 /// `device`, fields that have per-device layouts use that device's layout.
+///
+/// With the cargo features `set-*` (Cargo.toml), only the selected sets' fields decode (the
+/// others as an unknown set's: reserved fields only), and only their decoders are linked.
 #[inline]
 pub fn decode_field(
     set: u8,
@@ -430,26 +449,74 @@ type DescriptorDecoders = [Option<Decoder>; 256];
 
 /// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
+    // Only the sets of the dispatch (the cargo features `set-*`).
+    #[allow(unused_mut)]
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
-    t[0x01] = Some(&BASE_DECODERS);
-    t[0x0C] = Some(&THREEDM_DECODERS);
-    t[0x0D] = Some(&FILTER_DECODERS);
-    t[0x0E] = Some(&GNSS_DECODERS);
-    t[0x13] = Some(&AIDING_DECODERS);
-    t[0x7F] = Some(&SYSTEM_DECODERS);
-    t[0x80] = Some(&SENSOR_DECODERS);
-    t[0x81] = Some(&GNSS_DATA_DECODERS);
-    t[0x82] = Some(&FILTER_DATA_DECODERS);
-    t[0x91] = Some(&GNSS_RECEIVER_1_DECODERS);
-    t[0x92] = Some(&GNSS_RECEIVER_2_DECODERS);
-    t[0x93] = Some(&GNSS_CORRECTIONS_DECODERS);
-    t[0x94] = Some(&GNSS_EXTERNAL_DECODERS);
-    t[0xA0] = Some(&SYSTEM_DATA_DECODERS);
-    t[0xFF] = Some(&SHARED_DECODERS);
+    #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
+    {
+        t[0x01] = Some(&BASE_DECODERS);
+    }
+    #[cfg(any(feature = "set-threedm", not(feature = "select-sets")))]
+    {
+        t[0x0C] = Some(&THREEDM_DECODERS);
+    }
+    #[cfg(any(feature = "set-filter", not(feature = "select-sets")))]
+    {
+        t[0x0D] = Some(&FILTER_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss", not(feature = "select-sets")))]
+    {
+        t[0x0E] = Some(&GNSS_DECODERS);
+    }
+    #[cfg(any(feature = "set-aiding", not(feature = "select-sets")))]
+    {
+        t[0x13] = Some(&AIDING_DECODERS);
+    }
+    #[cfg(any(feature = "set-system", not(feature = "select-sets")))]
+    {
+        t[0x7F] = Some(&SYSTEM_DECODERS);
+    }
+    #[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+    {
+        t[0x80] = Some(&SENSOR_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+    {
+        t[0x81] = Some(&GNSS_DATA_DECODERS);
+    }
+    #[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+    {
+        t[0x82] = Some(&FILTER_DATA_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+    {
+        t[0x91] = Some(&GNSS_RECEIVER_1_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+    {
+        t[0x92] = Some(&GNSS_RECEIVER_2_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+    {
+        t[0x93] = Some(&GNSS_CORRECTIONS_DECODERS);
+    }
+    #[cfg(any(feature = "set-gnss-external", not(feature = "select-sets")))]
+    {
+        t[0x94] = Some(&GNSS_EXTERNAL_DECODERS);
+    }
+    #[cfg(any(feature = "set-system-data", not(feature = "select-sets")))]
+    {
+        t[0xA0] = Some(&SYSTEM_DATA_DECODERS);
+    }
+    #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
+    {
+        t[0xFF] = Some(&SHARED_DECODERS);
+    }
     t
 };
 
 /// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-base", not(feature = "select-sets")))]
 static BASE_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::base_ping);
@@ -475,6 +542,7 @@ static BASE_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x0C (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-threedm", not(feature = "select-sets")))]
 static THREEDM_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::threedm_poll_imu_data);
@@ -568,6 +636,7 @@ static THREEDM_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x0D (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-filter", not(feature = "select-sets")))]
 static FILTER_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::filter_reset_filter);
@@ -657,6 +726,7 @@ static FILTER_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x0E (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss", not(feature = "select-sets")))]
 static GNSS_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::gnss_receiver_info);
@@ -669,6 +739,7 @@ static GNSS_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x13 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-aiding", not(feature = "select-sets")))]
 static AIDING_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::aiding_frame_config);
@@ -688,6 +759,7 @@ static AIDING_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x7F (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-system", not(feature = "select-sets")))]
 static SYSTEM_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x10] = Some(decoders::system_communication_mode);
@@ -696,6 +768,7 @@ static SYSTEM_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x80 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
 static SENSOR_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x04] = Some(decoders::sensor_scaled_accel);
@@ -724,6 +797,7 @@ static SENSOR_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x81 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
 static GNSS_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_data_llh_position);
@@ -750,6 +824,7 @@ static GNSS_DATA_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x82 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
 static FILTER_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::filter_data_llh_position);
@@ -811,6 +886,7 @@ static FILTER_DATA_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x91 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
 static GNSS_RECEIVER_1_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_receiver_1_llh_position);
@@ -842,6 +918,7 @@ static GNSS_RECEIVER_1_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x92 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
 static GNSS_RECEIVER_2_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_receiver_2_llh_position);
@@ -873,6 +950,7 @@ static GNSS_RECEIVER_2_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x93 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
 static GNSS_CORRECTIONS_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x30] = Some(decoders::gnss_corrections_base_station_info);
@@ -888,6 +966,7 @@ static GNSS_CORRECTIONS_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x94 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-gnss-external", not(feature = "select-sets")))]
 static GNSS_EXTERNAL_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::gnss_external_llh_position);
@@ -906,6 +985,7 @@ static GNSS_EXTERNAL_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0xA0 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-system-data", not(feature = "select-sets")))]
 static SYSTEM_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::system_data_built_in_test);
@@ -922,6 +1002,7 @@ static SYSTEM_DATA_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0xFF (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
 static SHARED_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0xD0] = Some(decoders::shared_event_source);
@@ -949,21 +1030,63 @@ fn decode_other_field(
     if let Some(result) = crate::reserved::ReservedField::decode(kind, descriptor, data) {
         return result.map(FieldValue::Reserved);
     }
+    #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
     if kind == Some(SetKind::Data) {
         if let Some(result) = crate::shared::SetField::decode(descriptor, data, device) {
             return result.map(FieldValue::Shared);
         }
     }
-    Err(DecodeError::new(if set_defined(set) {
+    Err(DecodeError::new(if set_in_dispatch(set) {
         DecodeErrorKind::UnknownDescriptor
     } else {
         DecodeErrorKind::UnknownSet
     }))
 }
 
+/// Whether set `set` is in the dispatch: defined by the spec and selected by the cargo features
+/// `set-*` (every defined set when none of them is on).
+fn set_in_dispatch(set: u8) -> bool {
+    match set {
+        #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
+        0x01 => true,
+        #[cfg(any(feature = "set-threedm", not(feature = "select-sets")))]
+        0x0C => true,
+        #[cfg(any(feature = "set-filter", not(feature = "select-sets")))]
+        0x0D => true,
+        #[cfg(any(feature = "set-gnss", not(feature = "select-sets")))]
+        0x0E => true,
+        #[cfg(any(feature = "set-aiding", not(feature = "select-sets")))]
+        0x13 => true,
+        #[cfg(any(feature = "set-system", not(feature = "select-sets")))]
+        0x7F => true,
+        #[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+        0x80 => true,
+        #[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+        0x81 => true,
+        #[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+        0x82 => true,
+        #[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+        0x91 => true,
+        #[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+        0x92 => true,
+        #[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+        0x93 => true,
+        #[cfg(any(feature = "set-gnss-external", not(feature = "select-sets")))]
+        0x94 => true,
+        #[cfg(any(feature = "set-system-data", not(feature = "select-sets")))]
+        0xA0 => true,
+        #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
+        0xFF => true,
+        _ => false,
+    }
+}
+
 /// One decoder per field of every set, for [`decode_field`] (through the tables above). Not
-/// inlined, so that each keeps its own stack frame, as large as its own layout only.
+/// inlined, so that each keeps its own stack frame, as large as its own layout only. With a
+/// selection of sets (the cargo features `set-*`) the others' decoders are not used.
 mod decoders {
+    #![cfg_attr(feature = "select-sets", allow(dead_code))]
+
     use super::{DecodeError, Device, FieldValue};
     use crate::wire::{Layout, Reader};
 

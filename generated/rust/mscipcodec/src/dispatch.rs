@@ -206,10 +206,13 @@ impl FieldValue {
         values: &crate::json_read::Json,
     ) -> Result<Self, crate::json_read::JsonError> {
         let found = match set {
+            #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
             0x01 => crate::base::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Base)),
+            #[cfg(any(feature = "set-imu-config", not(feature = "select-sets")))]
             0x02 => crate::imu_config::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::ImuConfig)),
+            #[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
             0xA2 => crate::imu_data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::ImuData)),
             _ => None,
@@ -233,6 +236,9 @@ impl FieldValue {
 /// Decodes the data of field `descriptor` in a packet of set `set`: the set's own field, else a
 /// reserved field of the set's kind, else (in a data set) a field of the shared data set. With
 /// `device`, fields that have per-device layouts use that device's layout.
+///
+/// With the cargo features `set-*` (Cargo.toml), only the selected sets' fields decode (the
+/// others as an unknown set's: reserved fields only), and only their decoders are linked.
 #[inline]
 pub fn decode_field(
     set: u8,
@@ -259,14 +265,26 @@ type DescriptorDecoders = [Option<Decoder>; 256];
 
 /// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
+    // Only the sets of the dispatch (the cargo features `set-*`).
+    #[allow(unused_mut)]
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
-    t[0x01] = Some(&BASE_DECODERS);
-    t[0x02] = Some(&IMU_CONFIG_DECODERS);
-    t[0xA2] = Some(&IMU_DATA_DECODERS);
+    #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
+    {
+        t[0x01] = Some(&BASE_DECODERS);
+    }
+    #[cfg(any(feature = "set-imu-config", not(feature = "select-sets")))]
+    {
+        t[0x02] = Some(&IMU_CONFIG_DECODERS);
+    }
+    #[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+    {
+        t[0xA2] = Some(&IMU_DATA_DECODERS);
+    }
     t
 };
 
 /// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-base", not(feature = "select-sets")))]
 static BASE_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x02] = Some(decoders::base_ping);
@@ -286,6 +304,7 @@ static BASE_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x02 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-imu-config", not(feature = "select-sets")))]
 static IMU_CONFIG_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::imu_config_uart_baud_rate);
@@ -315,6 +334,7 @@ static IMU_CONFIG_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0xA2 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
 static IMU_DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x81] = Some(decoders::imu_data_scaled_accel);
@@ -344,16 +364,33 @@ fn decode_other_field(
     if let Some(result) = crate::reserved::ReservedField::decode(kind, descriptor, data) {
         return result.map(FieldValue::Reserved);
     }
-    Err(DecodeError::new(if set_defined(set) {
+    Err(DecodeError::new(if set_in_dispatch(set) {
         DecodeErrorKind::UnknownDescriptor
     } else {
         DecodeErrorKind::UnknownSet
     }))
 }
 
+/// Whether set `set` is in the dispatch: defined by the spec and selected by the cargo features
+/// `set-*` (every defined set when none of them is on).
+fn set_in_dispatch(set: u8) -> bool {
+    match set {
+        #[cfg(any(feature = "set-base", not(feature = "select-sets")))]
+        0x01 => true,
+        #[cfg(any(feature = "set-imu-config", not(feature = "select-sets")))]
+        0x02 => true,
+        #[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+        0xA2 => true,
+        _ => false,
+    }
+}
+
 /// One decoder per field of every set, for [`decode_field`] (through the tables above). Not
-/// inlined, so that each keeps its own stack frame, as large as its own layout only.
+/// inlined, so that each keeps its own stack frame, as large as its own layout only. With a
+/// selection of sets (the cargo features `set-*`) the others' decoders are not used.
 mod decoders {
+    #![cfg_attr(feature = "select-sets", allow(dead_code))]
+
     use super::{DecodeError, Device, FieldValue};
     use crate::wire::{Layout, Reader};
 

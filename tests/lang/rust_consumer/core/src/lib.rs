@@ -8,6 +8,7 @@ use core::fmt::{self, Write};
 
 use protocodec::builder::PacketBuilder;
 use protocodec::dispatch::{set_defined, write_packet_json};
+use protocodec::error::DecodeErrorKind;
 use protocodec::fields::{FieldItem, Packet};
 use protocodec::parser::{Event, Parser};
 use protocodec::prelude::Layout;
@@ -19,6 +20,18 @@ use protocodec::{decode_field, FieldValue};
 pub fn first_empty_field() -> Option<(u8, u8, FieldValue)> {
     (0..=255u8).filter(|&set| set_defined(set)).find_map(|set| {
         (0..=255u8).find_map(|d| decode_field(set, d, &[], None).ok().map(|v| (set, d, v)))
+    })
+}
+
+/// Whether set `set` is in the crate's dispatch: some descriptor of it is unknown as a descriptor
+/// (an error `UnknownDescriptor`), not as a set (`UnknownSet`: the set is not defined, or not
+/// selected by the crate's cargo features `set-*`).
+pub fn in_dispatch(set: u8) -> bool {
+    (0..=255u8).any(|d| {
+        matches!(
+            decode_field(set, d, &[], None),
+            Err(e) if e.kind == DecodeErrorKind::UnknownDescriptor
+        )
     })
 }
 
@@ -208,6 +221,9 @@ pub fn decode_typed<L: Layout>(data: &[u8]) -> Option<L> {
 mod tests {
     use super::*;
 
+    // Needs a field that decodes from empty data (a command without parameters), which the
+    // one-set selection (a data set) need not have.
+    #[cfg(not(feature = "one-set"))]
     #[test]
     fn round_trip_without_std() {
         let mut line = Text::<512>::new();
@@ -221,6 +237,25 @@ mod tests {
             .contains(&format!("\"name\":\"{}\"", value.name())));
     }
 
+    /// Without the feature `one-set`, every set the spec defines is in the dispatch (the crate's
+    /// default: no `set-*` feature on); with it, exactly one of them (the crate's feature of its
+    /// first data set, tests/lang/rust.sh).
+    #[test]
+    fn sets_in_dispatch() {
+        let sets: Vec<u8> = (0..=255u8).filter(|&s| in_dispatch(s)).collect();
+        let defined: Vec<u8> = (0..=255u8).filter(|&s| set_defined(s)).collect();
+        assert!(defined.len() > 1, "{defined:?}");
+        if cfg!(feature = "one-set") {
+            assert_eq!(sets.len(), 1, "{sets:?}");
+            assert!(set_defined(sets[0]));
+        } else {
+            assert_eq!(sets, defined);
+        }
+    }
+
+    // Needs a field that decodes from empty data (a command without parameters), which the
+    // one-set selection (a data set) need not have.
+    #[cfg(not(feature = "one-set"))]
     #[test]
     fn counts_packets_and_fields() {
         let (set, descriptor, value) = first_empty_field().unwrap();

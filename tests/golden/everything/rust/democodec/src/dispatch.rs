@@ -225,14 +225,19 @@ impl FieldValue {
         values: &crate::json_read::Json,
     ) -> Result<Self, crate::json_read::JsonError> {
         let found = match set {
+            #[cfg(any(feature = "set-commands-set", not(feature = "select-sets")))]
             0x01 => crate::commands_set::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::CommandsSet)),
+            #[cfg(any(feature = "set-data", not(feature = "select-sets")))]
             0x90 => crate::data::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Data)),
+            #[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
             0x91 => crate::receiver_1::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Receiver1)),
+            #[cfg(any(feature = "set-receiver-2", not(feature = "select-sets")))]
             0x92 => crate::receiver_2::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Receiver2)),
+            #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
             0xFF => crate::shared::SetField::from_json(descriptor, device, values)
                 .map(|r| r.map(FieldValue::Shared)),
             _ => None,
@@ -246,6 +251,7 @@ impl FieldValue {
         {
             return result.map(FieldValue::Reserved);
         }
+        #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
         if kind == Some(SetKind::Data) {
             if let Some(result) = crate::shared::SetField::from_json(descriptor, device, values) {
                 return result.map(FieldValue::Shared);
@@ -261,6 +267,9 @@ impl FieldValue {
 /// Decodes the data of field `descriptor` in a packet of set `set`: the set's own field, else a
 /// reserved field of the set's kind, else (in a data set) a field of the shared data set. With
 /// `device`, fields that have per-device layouts use that device's layout.
+///
+/// With the cargo features `set-*` (Cargo.toml), only the selected sets' fields decode (the
+/// others as an unknown set's: reserved fields only), and only their decoders are linked.
 #[inline]
 pub fn decode_field(
     set: u8,
@@ -287,16 +296,34 @@ type DescriptorDecoders = [Option<Decoder>; 256];
 
 /// The decoder tables of every set that has any, by set (`None`: look further).
 static SET_DECODERS: [Option<&DescriptorDecoders>; 256] = {
+    // Only the sets of the dispatch (the cargo features `set-*`).
+    #[allow(unused_mut)]
     let mut t: [Option<&DescriptorDecoders>; 256] = [None; 256];
-    t[0x01] = Some(&COMMANDS_SET_DECODERS);
-    t[0x90] = Some(&DATA_DECODERS);
-    t[0x91] = Some(&RECEIVER_1_DECODERS);
-    t[0x92] = Some(&RECEIVER_2_DECODERS);
-    t[0xFF] = Some(&SHARED_DECODERS);
+    #[cfg(any(feature = "set-commands-set", not(feature = "select-sets")))]
+    {
+        t[0x01] = Some(&COMMANDS_SET_DECODERS);
+    }
+    #[cfg(any(feature = "set-data", not(feature = "select-sets")))]
+    {
+        t[0x90] = Some(&DATA_DECODERS);
+    }
+    #[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+    {
+        t[0x91] = Some(&RECEIVER_1_DECODERS);
+    }
+    #[cfg(any(feature = "set-receiver-2", not(feature = "select-sets")))]
+    {
+        t[0x92] = Some(&RECEIVER_2_DECODERS);
+    }
+    #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
+    {
+        t[0xFF] = Some(&SHARED_DECODERS);
+    }
     t
 };
 
 /// Decoders of the fields of set 0x01 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-commands-set", not(feature = "select-sets")))]
 static COMMANDS_SET_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::commands_set_ping);
@@ -307,6 +334,7 @@ static COMMANDS_SET_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x90 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-data", not(feature = "select-sets")))]
 static DATA_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x01] = Some(decoders::data_sample);
@@ -315,6 +343,7 @@ static DATA_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x91 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
 static RECEIVER_1_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::receiver_1_llh_position);
@@ -323,6 +352,7 @@ static RECEIVER_1_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0x92 (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-receiver-2", not(feature = "select-sets")))]
 static RECEIVER_2_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0x03] = Some(decoders::receiver_2_llh_position);
@@ -331,6 +361,7 @@ static RECEIVER_2_DECODERS: DescriptorDecoders = {
 };
 
 /// Decoders of the fields of set 0xFF (its own and the shared ones), by descriptor.
+#[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
 static SHARED_DECODERS: DescriptorDecoders = {
     let mut t: DescriptorDecoders = [None; 256];
     t[0xD3] = Some(decoders::shared_timestamp);
@@ -352,21 +383,43 @@ fn decode_other_field(
     if let Some(result) = crate::reserved::ReservedField::decode(kind, descriptor, data) {
         return result.map(FieldValue::Reserved);
     }
+    #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
     if kind == Some(SetKind::Data) {
         if let Some(result) = crate::shared::SetField::decode(descriptor, data, device) {
             return result.map(FieldValue::Shared);
         }
     }
-    Err(DecodeError::new(if set_defined(set) {
+    Err(DecodeError::new(if set_in_dispatch(set) {
         DecodeErrorKind::UnknownDescriptor
     } else {
         DecodeErrorKind::UnknownSet
     }))
 }
 
+/// Whether set `set` is in the dispatch: defined by the spec and selected by the cargo features
+/// `set-*` (every defined set when none of them is on).
+fn set_in_dispatch(set: u8) -> bool {
+    match set {
+        #[cfg(any(feature = "set-commands-set", not(feature = "select-sets")))]
+        0x01 => true,
+        #[cfg(any(feature = "set-data", not(feature = "select-sets")))]
+        0x90 => true,
+        #[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+        0x91 => true,
+        #[cfg(any(feature = "set-receiver-2", not(feature = "select-sets")))]
+        0x92 => true,
+        #[cfg(any(feature = "set-shared", not(feature = "select-sets")))]
+        0xFF => true,
+        _ => false,
+    }
+}
+
 /// One decoder per field of every set, for [`decode_field`] (through the tables above). Not
-/// inlined, so that each keeps its own stack frame, as large as its own layout only.
+/// inlined, so that each keeps its own stack frame, as large as its own layout only. With a
+/// selection of sets (the cargo features `set-*`) the others' decoders are not used.
 mod decoders {
+    #![cfg_attr(feature = "select-sets", allow(dead_code))]
+
     use super::{DecodeError, Device, FieldValue};
     use crate::wire::{Layout, Reader};
 

@@ -1,8 +1,9 @@
 //! A firmware image for a Cortex-M4F (`thumbv7em-none-eabihf`) around the `no_std` consumer
 //! (`consumer-core`): parses the bytes of a receive buffer and decodes every field (every decoder
-//! of the protocol is linked: the field comes from the data), and builds a packet. No global
-//! allocator is defined, so the image links only if nothing uses `alloc`. Built (never run) by
-//! tests/lang/rust.sh embedded, which prints its size.
+//! of the crate's dispatch is linked: the field comes from the data), and builds a packet. No
+//! global allocator is defined, so the image links only if nothing uses `alloc`. Built (never
+//! run) by tests/lang/rust.sh embedded, which prints its size: with every set in the dispatch, and
+//! with the feature `one-set` (one set's cargo feature `set-*`), which must stay under 32 kB.
 #![no_std]
 #![no_main]
 
