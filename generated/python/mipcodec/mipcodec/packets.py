@@ -46,7 +46,11 @@ else:
 
 
 class DecodedField(_DecodedBase):
-    """A field decoded into its typed value (value.NAME, value.DEVICE, ...)."""
+    """A field decoded into its typed value (value.NAME, value.DEVICE, ...).
+
+    With the C accelerator, the value of a field of a fixed layout is built when `value` is first
+    read (and kept): until then the field holds its data bytes, already checked to decode.
+    """
 
     __slots__ = _DECODED_SLOTS
 

@@ -4,8 +4,10 @@
  *   - scan(): the stream parser (framing.Parser._scan): sync search, length, Fletcher-16, skip runs;
  *   - decode_packet() / decode_all(): field splitting and dispatch by (set, descriptor), with the
  *     typed values of layouts made of fixed-size scalars (codec.Run of ints, floats, bools, chars,
- *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
- *     back to the pure-Python decoder, so messages and values are those of the pure path;
+ *     strings, enums, bitfields) built here, each when it is first read (a DecodedField holds the
+ *     field's bytes until then); every other layout, every error and every NaN goes back to the
+ *     pure-Python decoder, so messages and values are those of the pure path;
+ *   - decode_columns(): the same fixed layouts as rows of per-field tables of numbers;
  *   - scan_text(): the decode CLI's loop, parser + decode + canonical JSON lines written here for
  *     the same fixed layouts (floats by PyOS_double_to_string 'r', i.e. repr); every other field,
  *     NaN or invalid bool is printed by the pure-Python line writer, so the text is the same.
@@ -85,12 +87,6 @@ static PyMemberDef packet_members[] = {
     {"offset", T_OBJECT_EX, offsetof(Slots3, a), 0, "stream offset"},
     {"set", T_OBJECT_EX, offsetof(Slots3, b), 0, "descriptor set"},
     {"fields", T_OBJECT_EX, offsetof(Slots3, c), 0, "field entries"},
-    {NULL, 0, 0, 0, NULL},
-};
-
-static PyMemberDef decoded_members[] = {
-    {"descriptor", T_OBJECT_EX, offsetof(Slots3, a), 0, "field descriptor"},
-    {"value", T_OBJECT_EX, offsetof(Slots3, b), 0, "typed value"},
     {NULL, 0, 0, 0, NULL},
 };
 
@@ -738,6 +734,144 @@ static Entry *entry_for(int set_id, int descriptor) {
     return e;
 }
 
+/* ------------------------------------------------------------------------------ lazy fields */
+/* DecodedField's base: the descriptor and the typed value. A field of a fixed layout decoded here
+ * builds its value only when it is first read: until then the instance holds a copy of the field's
+ * data bytes (checked when decoded to read here as the pure-Python decoder reads them: no NaN, no
+ * invalid bool) and the layout that reads them; the value then built is cached. A field made from
+ * Python (DecodedField(descriptor, value)) holds its value from the start. */
+typedef struct {
+    PyObject_VAR_HEAD /* ob_size: bytes of data (0 unless made lazy) */
+        PyObject *descriptor;
+    PyObject *value;    /* NULL while lazy (or after `del field.value`) */
+    const Entry *entry; /* the layout that reads data; NULL once the value is set */
+    unsigned char data[1];
+} LazyField;
+
+#define LAZY_BASICSIZE ((Py_ssize_t)offsetof(LazyField, data))
+
+static int lazy_traverse(LazyField *self, visitproc visit, void *arg) {
+    Py_VISIT(self->descriptor);
+    Py_VISIT(self->value);
+    return 0;
+}
+
+static int lazy_clear(LazyField *self) {
+    Py_CLEAR(self->descriptor);
+    Py_CLEAR(self->value);
+    return 0;
+}
+
+static void lazy_dealloc(LazyField *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    lazy_clear(self);
+    tp->tp_free((PyObject *)self);
+}
+
+/* The dealloc of DecodedField (see heap_slots_dealloc). */
+static void heap_lazy_dealloc(LazyField *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    lazy_clear(self);
+    tp->tp_free((PyObject *)self);
+    Py_DECREF(tp);
+}
+
+static PyObject *lazy_get_value(LazyField *self, void *closure) {
+    (void)closure;
+    if (self->value == NULL) {
+        if (self->entry == NULL) {
+            PyErr_SetString(PyExc_AttributeError, "value");
+            return NULL;
+        }
+        PyObject *v = fast_value(self->entry, self->data);
+        if (v == NOT_FAST) { /* checked when decoded: cannot happen */
+            PyErr_SetString(PyExc_SystemError, "a lazily decoded field does not read");
+            return NULL;
+        }
+        if (v == NULL) {
+            return NULL;
+        }
+        self->value = v;
+        self->entry = NULL;
+    }
+    return Py_NewRef(self->value);
+}
+
+static int lazy_set_value(LazyField *self, PyObject *value, void *closure) {
+    (void)closure;
+    if (value == NULL && self->value == NULL && self->entry == NULL) {
+        PyErr_SetString(PyExc_AttributeError, "value");
+        return -1;
+    }
+    Py_XSETREF(self->value, Py_XNewRef(value));
+    self->entry = NULL;
+    return 0;
+}
+
+static PyMemberDef lazy_members[] = {
+    {"descriptor", T_OBJECT_EX, offsetof(LazyField, descriptor), 0, "field descriptor"},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyGetSetDef lazy_getset[] = {
+    {"value", (getter)lazy_get_value, (setter)lazy_set_value, "typed value (decoded on first read)", NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};
+
+/* 1 when every element of fast entry e's data p reads here as the pure decoder reads it (no NaN
+ * float, no bool other than 0 or 1), else 0. */
+static int fast_reads(const Entry *e, const unsigned char *p) {
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        switch (it->kind) {
+        case 'f':
+            for (int j = 0; j < n; j++, p += 4) {
+                if ((load32(p) << 1) > 0xFF000000u) {
+                    return 0;
+                }
+            }
+            break;
+        case 'd':
+            for (int j = 0; j < n; j++, p += 8) {
+                if ((load(p, 8) << 1) > 0xFFE0000000000000ull) {
+                    return 0;
+                }
+            }
+            break;
+        case '?':
+            for (int j = 0; j < n; j++, p++) {
+                if (p[0] > 1) {
+                    return 0;
+                }
+            }
+            break;
+        default:
+            p += (Py_ssize_t)it->size * n;
+            break;
+        }
+    }
+    return 1;
+}
+
+/* A DecodedField whose value is built on first read; NULL with an exception. */
+static PyObject *lazy_field(int descriptor, const Entry *e, const unsigned char *data) {
+    LazyField *o = (LazyField *)decoded_type->tp_alloc(decoded_type, e->size);
+    if (o == NULL) {
+        return NULL;
+    }
+    o->descriptor = PyLong_FromLong(descriptor);
+    if (o->descriptor == NULL) {
+        Py_DECREF(o);
+        return NULL;
+    }
+    o->entry = e;
+    memcpy(o->data, data, (size_t)e->size);
+    return (PyObject *)o;
+}
+
 static PyObject *slow_field(int set_id, int descriptor, const unsigned char *data, Py_ssize_t len) {
     return PyObject_CallFunction(py_decode_field, "iiy#", set_id, descriptor, (const char *)data, len);
 }
@@ -776,14 +910,11 @@ static PyObject *decode_fields(int set_id, const unsigned char *pl, Py_ssize_t n
             return NULL;
         }
         PyObject *entry = NULL;
-        if (e->kind == ENTRY_FAST && e->size == data_length) {
-            PyObject *v = fast_value(e, data);
-            if (v != NOT_FAST) {
-                entry = new3(decoded_type, PyLong_FromLong(descriptor), v, NULL);
-                if (entry == NULL) {
-                    Py_DECREF(fields);
-                    return NULL;
-                }
+        if (e->kind == ENTRY_FAST && e->size == data_length && fast_reads(e, data)) {
+            entry = lazy_field(descriptor, e, data);
+            if (entry == NULL) {
+                Py_DECREF(fields);
+                return NULL;
             }
         }
         if (entry == NULL) {
@@ -1748,6 +1879,20 @@ static PyObject *scan_text(PyObject *self, PyObject *args) {
     return result;
 }
 
+static int ready_lazy(PyTypeObject *tp, const char *name) {
+    tp->tp_name = name;
+    tp->tp_basicsize = LAZY_BASICSIZE;
+    tp->tp_itemsize = 1;
+    tp->tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE | Py_TPFLAGS_HAVE_GC;
+    tp->tp_traverse = (traverseproc)lazy_traverse;
+    tp->tp_clear = (inquiry)lazy_clear;
+    tp->tp_dealloc = (destructor)lazy_dealloc;
+    tp->tp_members = lazy_members;
+    tp->tp_getset = lazy_getset;
+    tp->tp_new = PyType_GenericNew;
+    return PyType_Ready(tp);
+}
+
 /* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program, field_line,
  *       packet_line) */
 static PyObject *setup(PyObject *self, PyObject *args) {
@@ -1760,7 +1905,7 @@ static PyObject *setup(PyObject *self, PyObject *args) {
     PyTypeObject *bases[4] = {&EventBase, &EventBase, &PacketBase, &DecodedFieldBase};
     for (int k = 0; k < 4; k++) {
         if (!PyType_IsSubtype((PyTypeObject *)t[k], bases[k]) ||
-            ((PyTypeObject *)t[k])->tp_basicsize != (Py_ssize_t)sizeof(Slots3)) {
+            ((PyTypeObject *)t[k])->tp_basicsize != (k == 3 ? LAZY_BASICSIZE : (Py_ssize_t)sizeof(Slots3))) {
             PyErr_Format(PyExc_TypeError, "%s must derive from %s with empty __slots__",
                          ((PyTypeObject *)t[k])->tp_name, bases[k]->tp_name);
             return NULL;
@@ -1771,7 +1916,7 @@ static PyObject *setup(PyObject *self, PyObject *args) {
         if ((tp->tp_flags & Py_TPFLAGS_HEAPTYPE) && tp->tp_base == bases[k] && tp->tp_dictoffset == 0 &&
             tp->tp_weaklistoffset == 0 && tp->tp_finalize == NULL && tp->tp_del == NULL &&
             tp->tp_free == PyObject_GC_Del) {
-            tp->tp_dealloc = (destructor)heap_slots_dealloc;
+            tp->tp_dealloc = k == 3 ? (destructor)heap_lazy_dealloc : (destructor)heap_slots_dealloc;
         }
     }
     raw_packet_type = (PyTypeObject *)Py_NewRef(t[0]);
@@ -1837,7 +1982,7 @@ PyMODINIT_FUNC PyInit__speedups(void) {
     PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
     if (ready_base(&EventBase, PROTOCOL_PACKAGE "._speedups.EventBase", event_members) < 0 ||
         ready_base(&PacketBase, PROTOCOL_PACKAGE "._speedups.PacketBase", packet_members) < 0 ||
-        ready_base(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase", decoded_members) < 0) {
+        ready_lazy(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase") < 0) {
         return NULL;
     }
     empty_tuple = PyTuple_New(0);
