@@ -1,7 +1,9 @@
 """Python benchmark (issue 8): frame and decode the benchmark streams with the generated mipcodec.
 
     python tests/bench/python/bench.py DIR [--passes 5] [--pure-passes 1] [--only python|python-pure]
-                                           [--streams accel_gyro,...] [--gc]
+                                           [--streams accel_gyro,...] [--gc] [--count MODE]
+(--count MODE: only MODE's passes over the first stream, no output: for the instruction counts of
+tests/bench/python/instructions.py.)
 (--passes 0 or --pure-passes 0 leaves that flavour out; the pure-Python passes take about a
 minute per stream.)
 
@@ -23,8 +25,9 @@ Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed i
   session-roundtrip  (lang=python, stream=loopback-tcp) --roundtrips pings through the blocking API
           (mipcodec.connect over a loopback TCP socket) to a responder thread that acks each one;
           bytes = bytes sent + received
-lang=python also prints a `# extra:` line for mipcodec.decode_all(data) (whole stream, every
-object kept until the end of the pass), and lang=python-columns mode=decode lines for
+lang=python also prints `# extra:` lines for mode decode-values (decode, and every field's typed
+value read: with the accelerator a DecodedField builds its value when `value` is first read) and
+for mipcodec.decode_all(data) (whole stream, every object kept until the end of the pass), and lang=python-columns mode=decode lines for
 mipcodec.decode_columns(data): the columnar fast API (per-field tables of numbers built in C, no
 Python object per packet for the fields it reads; every other field entry as an object). Each pass runs over the whole file (read once, not
 timed); the best of the passes is printed. As in timeit, the garbage collector is off during a

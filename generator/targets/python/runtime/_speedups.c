@@ -791,8 +791,12 @@ static PyObject *lazy_get_value(LazyField *self, void *closure) {
         if (v == NULL) {
             return NULL;
         }
-        self->value = v;
-        self->entry = NULL;
+        if (self->value != NULL) { /* set meanwhile (a bitfield class runs Python code) */
+            Py_DECREF(v);
+        } else {
+            self->value = v;
+            self->entry = NULL;
+        }
     }
     return Py_NewRef(self->value);
 }
@@ -1049,6 +1053,8 @@ typedef struct {
     int data_len;
 } LField;
 
+#define LAYOUTS_KEPT 16 /* per set and payload length, most recently seen first */
+
 typedef struct Layout {
     struct Layout *next;
     int nfields;
@@ -1263,9 +1269,10 @@ static int add_other(Columns *c, long long offset, long long index, PyObject *en
  * with no exception when the payload does not split into fields, NULL with one on error. */
 static Layout *layout_for(Columns *c, int set_id, const unsigned char *pl, Py_ssize_t len) {
     Layout **chains = c->layouts[set_id];
+    int known = 0;
     if (chains != NULL) {
         Layout **at = &chains[len];
-        for (Layout *l = *at, *prev = NULL; l != NULL; prev = l, l = l->next) {
+        for (Layout *l = *at, *prev = NULL; l != NULL; prev = l, l = l->next, known++) {
             int k = 0;
             for (; k < l->nfields; k++) {
                 const LField *f = &l->f[k];
@@ -1336,6 +1343,14 @@ static Layout *layout_for(Columns *c, int set_id, const unsigned char *pl, Py_ss
             }
             f->slot = &row[f->descriptor];
         }
+    }
+    if (known >= LAYOUTS_KEPT) { /* the least recently seen layout of this length makes room */
+        Layout **last = &chains[len];
+        while ((*last)->next != NULL) {
+            last = &(*last)->next;
+        }
+        PyMem_Free(*last);
+        *last = NULL;
     }
     l->next = chains[len];
     chains[len] = l;
