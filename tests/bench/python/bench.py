@@ -1,7 +1,9 @@
 """Python benchmark (issue 8): frame and decode the benchmark streams with the generated mipcodec.
 
     python tests/bench/python/bench.py DIR [--passes 5] [--pure-passes 1] [--only python|python-pure]
-                                           [--streams accel_gyro,...] [--gc]
+                                           [--streams accel_gyro,...] [--gc] [--count MODE]
+(--count MODE: only MODE's passes over the first stream, no output: for the instruction counts of
+tests/bench/python/instructions.py.)
 (--passes 0 or --pure-passes 0 leaves that flavour out; the pure-Python passes take about a
 minute per stream.)
 
@@ -23,8 +25,9 @@ Modes (one BENCH line each, see tests/bench/run.py); the in-memory file is fed i
   session-roundtrip  (lang=python, stream=loopback-tcp) --roundtrips pings through the blocking API
           (mipcodec.connect over a loopback TCP socket) to a responder thread that acks each one;
           bytes = bytes sent + received
-lang=python also prints a `# extra:` line for mipcodec.decode_all(data) (whole stream, every
-object kept until the end of the pass), and lang=python-columns mode=decode lines for
+lang=python also prints `# extra:` lines for mode decode-values (decode, and every field's typed
+value read: with the accelerator a DecodedField builds its value when `value` is first read) and
+for mipcodec.decode_all(data) (whole stream, every object kept until the end of the pass), and lang=python-columns mode=decode lines for
 mipcodec.decode_columns(data): the columnar fast API (per-field tables of numbers built in C, no
 Python object per packet for the fields it reads; every other field entry as an object). Each pass runs over the whole file (read once, not
 timed); the best of the passes is printed. As in timeit, the garbage collector is off during a
@@ -160,6 +163,23 @@ def roundtrip(mipcodec, count: int) -> tuple[float, int]:
     return seconds, (count + 1) * (len(ack) + len(mipcodec.build_packet(0x01, mipcodec.base.Ping())))
 
 
+def decode_values_pass(mipcodec, data):
+    """decode_pass that also reads every field's typed value (`value`: with the accelerator, built
+    when first read): (packets, fields)."""
+    packet = mipcodec.Packet
+    decoded = mipcodec.DecodedField
+    decoder = mipcodec.Decoder()
+    packets = fields = 0
+    for i in range(0, len(data) + CHUNK, CHUNK):
+        events = decoder.feed(data[i : i + CHUNK]) if i < len(data) else decoder.flush()
+        for e in events:
+            if type(e) is packet:
+                packets += 1
+                for f in e.fields:
+                    fields += type(f) is not decoded or f.value is not None
+    return packets, fields
+
+
 def decode_all_pass(mipcodec, data):
     """decode_all over the whole stream, every object kept until the end of the pass."""
     events = mipcodec.decode_all(data)
@@ -172,6 +192,15 @@ def columns_pass(mipcodec, data):
     cols = mipcodec.decode_columns(data)
     fields = sum(len(t) for t in cols.tables.values()) + sum(1 for _o, k, _e in cols.others if k >= 0)
     return cols.packets, fields
+
+
+PASSES = [
+    ("frame", frame_pass),
+    ("decode", decode_pass),
+    ("decode-values", decode_values_pass),
+    ("decode_all", decode_all_pass),
+    ("columns", columns_pass),
+]
 
 
 def timed(fn, mipcodec, data, passes: int, use_gc: bool):
@@ -270,13 +299,13 @@ def run_flavour(lang: str, directory: Path, streams: list[str], passes: int, use
         runs = [("frame", frame_pass), ("decode", decode_pass)]
         if lang == "python":
             runs += [("session-ingest", session_ingest_pass)]
-            runs += [("decode_all", decode_all_pass), ("columns", columns_pass)]
+            runs += [("decode-values", decode_values_pass), ("decode_all", decode_all_pass), ("columns", columns_pass)]
         for mode, fn in runs:
             seconds, (packets, fields) = timed(fn, mipcodec, data, passes, use_gc)
             if mode == "columns":
                 head = f"BENCH lang=python-columns stream={name} mode=decode"
-            elif mode == "decode_all":
-                head = f"# extra: lang={lang} stream={name} mode=decode_all"
+            elif mode in ("decode_all", "decode-values"):
+                head = f"# extra: lang={lang} stream={name} mode={mode}"
             else:
                 head = f"BENCH lang={lang} stream={name} mode={mode}"
             print(f"{head} packets={packets} bytes={len(data)} seconds={seconds:.6f}")
@@ -315,8 +344,24 @@ def main() -> int:
     ap.add_argument("--streams", default=",".join(STREAMS), help="comma-separated stream names")
     ap.add_argument("--gc", action="store_true", help="leave the garbage collector on during the timed passes")
     ap.add_argument("--roundtrips", type=int, default=2000, help="ping round trips of mode session-roundtrip (0: none)")
+    ap.add_argument(
+        "--count",
+        metavar="MODE",
+        help="for instruction counts (instructions.py): run MODE (frame, decode, decode-values, decode_all,"
+        " columns) --passes times over the one stream of --streams in this process, print nothing",
+    )
     args = ap.parse_args()
     streams = [s for s in args.streams.split(",") if s]
+
+    if args.count:
+        import mipcodec
+
+        fn = dict(PASSES)[args.count]
+        data = (args.dir / f"{streams[0]}.bin").read_bytes()
+        gc.disable()
+        for _ in range(args.passes):
+            fn(mipcodec, data)
+        return 0
 
     if args.only:
         passes = args.passes if args.only == "python" else args.pure_passes

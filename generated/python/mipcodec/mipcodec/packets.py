@@ -46,7 +46,11 @@ else:
 
 
 class DecodedField(_DecodedBase):
-    """A field decoded into its typed value (value.NAME, value.DEVICE, ...)."""
+    """A field decoded into its typed value (value.NAME, value.DEVICE, ...).
+
+    With the C accelerator, the value of a field of a fixed layout is built when `value` is first
+    read (and kept): until then the field holds its data bytes, already checked to decode.
+    """
 
     __slots__ = _DECODED_SLOTS
 
@@ -375,21 +379,54 @@ class Table:
     parameter of n values has n numbers per row. `offsets[i]` is the stream offset of row i's
     packet and `index[i]` the position of the field in it. `row(i)` is the typed value (an instance
     of `cls`) equal to the one `decode_packet` gives.
+
+    The C accelerator writes the rows straight into one buffer per column; `arrays()` gives numpy
+    views of those buffers (no copy), and `columns`, `offsets` and `index` are `array` copies of
+    them, made on first use.
     """
 
     def __init__(
-        self, set_id: int, descriptor: int, cls: Type[Field], rows: int, offsets: bytes, index: bytes, cols: List[bytes]
+        self,
+        set_id: int,
+        descriptor: int,
+        cls: Type[Field],
+        rows: int,
+        offsets: BytesLike,
+        index: BytesLike,
+        cols: List[BytesLike],
     ) -> None:
         self.set = set_id
         self.descriptor = descriptor
         self.cls = cls
         self.rows = rows
-        self.offsets = array("q", offsets)
-        self.index = array("q", index)
         self._items = fast_items(cls) or ()
-        self.columns: Dict[str, array[Any]] = {}
-        for (attr, kind, _size, _count, _aux), data in zip(self._items, cols):
-            self.columns[attr] = array(_COLUMN_CODES[kind], data)
+        self._raw_offsets = offsets
+        self._raw_index = index
+        self._raw: Dict[str, BytesLike] = {item[0]: data for item, data in zip(self._items, cols)}
+        self._offsets: Optional[array[int]] = None
+        self._index: Optional[array[int]] = None
+        self._columns: Optional[Dict[str, array[Any]]] = None
+
+    @property
+    def offsets(self) -> array[int]:
+        """The stream offset of each row's packet ('q')."""
+        if self._offsets is None:
+            self._offsets = array("q", self._raw_offsets)
+        return self._offsets
+
+    @property
+    def index(self) -> array[int]:
+        """The position of each row's field in its packet ('q')."""
+        if self._index is None:
+            self._index = array("q", self._raw_index)
+        return self._index
+
+    @property
+    def columns(self) -> Dict[str, array[Any]]:
+        """attribute -> `array` of its numbers (see the class)."""
+        if self._columns is None:
+            self._columns = {attr: array(_COLUMN_CODES[kind], self._raw[attr]) for attr, kind, *_ in self._items}
+        return self._columns
 
     def __len__(self) -> int:
         return self.rows
@@ -432,7 +469,7 @@ class Table:
         shapes = _columns.SHAPES.get(key, {}) if key is not None else {}
         out: Dict[str, Any] = {}
         for attr, kind, _size, count, _aux in self._items:
-            a = np.frombuffer(self.columns[attr], dtype=_NUMPY_TYPES[kind])
+            a = np.frombuffer(self._raw[attr], dtype=_NUMPY_TYPES[kind])
             if kind == "?":
                 a = a.astype(bool)
             if count >= 0:
@@ -454,7 +491,7 @@ class Table:
         key = _columns_key(self.cls)
         specs = _columns.COLUMNS.get(key, ()) if key is not None else ()
         arrays = self.arrays()
-        data: Dict[str, Any] = {"offset": np.frombuffer(self.offsets, dtype=np.int64)}
+        data: Dict[str, Any] = {"offset": np.frombuffer(self._raw_offsets, dtype=np.int64)}
         for name, path, _units, _kind, _enum in specs:
             a = arrays[str(path[0])]  # the attribute; indices follow
             if len(path) > 1:

@@ -4,8 +4,10 @@
  *   - scan(): the stream parser (framing.Parser._scan): sync search, length, Fletcher-16, skip runs;
  *   - decode_packet() / decode_all(): field splitting and dispatch by (set, descriptor), with the
  *     typed values of layouts made of fixed-size scalars (codec.Run of ints, floats, bools, chars,
- *     strings, enums, bitfields) built here; every other layout, every error and every NaN goes
- *     back to the pure-Python decoder, so messages and values are those of the pure path;
+ *     strings, enums, bitfields) built here, each when it is first read (a DecodedField holds the
+ *     field's bytes until then); every other layout, every error and every NaN goes back to the
+ *     pure-Python decoder, so messages and values are those of the pure path;
+ *   - decode_columns(): the same fixed layouts as rows of per-field tables of numbers;
  *   - scan_text(): the decode CLI's loop, parser + decode + canonical JSON lines written here for
  *     the same fixed layouts (floats by PyOS_double_to_string 'r', i.e. repr); every other field,
  *     NaN or invalid bool is printed by the pure-Python line writer, so the text is the same.
@@ -18,6 +20,9 @@
 #include <structmember.h>
 #include <math.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #if PY_VERSION_HEX < 0x030A0000
 static inline PyObject *Py_NewRef(PyObject *o) {
@@ -85,12 +90,6 @@ static PyMemberDef packet_members[] = {
     {NULL, 0, 0, 0, NULL},
 };
 
-static PyMemberDef decoded_members[] = {
-    {"descriptor", T_OBJECT_EX, offsetof(Slots3, a), 0, "field descriptor"},
-    {"value", T_OBJECT_EX, offsetof(Slots3, b), 0, "typed value"},
-    {NULL, 0, 0, 0, NULL},
-};
-
 static PyTypeObject EventBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
 static PyTypeObject PacketBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
 static PyTypeObject DecodedFieldBase = {PyVarObject_HEAD_INIT(NULL, 0).tp_name = NULL};
@@ -140,6 +139,31 @@ static PyObject *new3(PyTypeObject *tp, PyObject *a, PyObject *b, PyObject *c) {
 static int checksum_ok(const unsigned char *p, Py_ssize_t body) {
     unsigned int sum1 = 0, sum2 = 0;
     Py_ssize_t i = 0;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    /* Eight bytes at a time, in groups of up to 15 blocks: the bytes of even and of odd positions
+     * summed in four 16-bit lanes each (`before`: the lanes' sums before each block, for sum2),
+     * folded into sum1 and sum2 at the end of the group by multiplications that sum the lanes into
+     * the top one, weighing them by position (8..1) where sum2 needs it. No lane overflows within
+     * a group (before: at most 510 * (1 + ... + 14) = 53550), and the top lane keeps the low 16 bits
+     * of its sum, enough for sums taken modulo 256. */
+    const unsigned long long lanes = 0x00FF00FF00FF00FFull;
+    while (i + 8 <= body) {
+        unsigned long long even = 0, odd = 0, before = 0;
+        unsigned int m = 0;
+        for (; m < 15 && i + 8 <= body; m++, i += 8) {
+            unsigned long long x;
+            memcpy(&x, p + i, 8);
+            before += even + odd;
+            even += x & lanes;
+            odd += (x >> 8) & lanes;
+        }
+        unsigned long long h = (before & 0x0000FFFF0000FFFFull) + ((before >> 16) & 0x0000FFFF0000FFFFull);
+        sum2 += 8 * m * sum1 + 8 * (unsigned int)(h + (h >> 32)) +
+                (unsigned int)((even * 0x0008000600040002ull) >> 48) +
+                (unsigned int)((odd * 0x0007000500030001ull) >> 48);
+        sum1 += (unsigned int)(((even + odd) * 0x0001000100010001ull) >> 48);
+    }
+#endif
     for (; i + 4 <= body; i += 4) {
         /* Four steps of sum1 += b; sum2 += sum1, folded. */
         unsigned int b0 = p[i], b1 = p[i + 1], b2 = p[i + 2], b3 = p[i + 3];
@@ -243,7 +267,8 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
                             void *ctx, SkipRun *skip, PyObject *events, Watch *watch) {
     Py_ssize_t pos = 0;
     while (pos < n) {
-        Py_ssize_t i = find_sync(p, pos, n);
+        /* Most packets start where the last one ended. */
+        Py_ssize_t i = n - pos >= SYNC_LEN && memcmp(p + pos, SYNC, SYNC_LEN) == 0 ? pos : find_sync(p, pos, n);
         if (i < 0) {
             /* Keep a partial sync sequence at the very end (unless this is the end of input). */
             Py_ssize_t keep = n;
@@ -281,7 +306,7 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
                         pos = i + total;
                         continue;
                     }
-                    if (flush_skip(skip, events) < 0) {
+                    if (PyByteArray_GET_SIZE(skip->bytes) != 0 && flush_skip(skip, events) < 0) {
                         return -1;
                     }
                     if (mode == SCAN_COLUMNS) {
@@ -707,6 +732,148 @@ static Entry *entry_for(int set_id, int descriptor) {
     return e;
 }
 
+/* ------------------------------------------------------------------------------ lazy fields */
+/* DecodedField's base: the descriptor and the typed value. A field of a fixed layout decoded here
+ * builds its value only when it is first read: until then the instance holds a copy of the field's
+ * data bytes (checked when decoded to read here as the pure-Python decoder reads them: no NaN, no
+ * invalid bool) and the layout that reads them; the value then built is cached. A field made from
+ * Python (DecodedField(descriptor, value)) holds its value from the start. */
+typedef struct {
+    PyObject_VAR_HEAD /* ob_size: bytes of data (0 unless made lazy) */
+    PyObject *descriptor;
+    PyObject *value;    /* NULL while lazy (or after `del field.value`) */
+    const Entry *entry; /* the layout that reads data; NULL once the value is set */
+    unsigned char data[1];
+} LazyField;
+
+#define LAZY_BASICSIZE ((Py_ssize_t)offsetof(LazyField, data))
+
+static int lazy_traverse(LazyField *self, visitproc visit, void *arg) {
+    Py_VISIT(self->descriptor);
+    Py_VISIT(self->value);
+    return 0;
+}
+
+static int lazy_clear(LazyField *self) {
+    Py_CLEAR(self->descriptor);
+    Py_CLEAR(self->value);
+    return 0;
+}
+
+static void lazy_dealloc(LazyField *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    lazy_clear(self);
+    tp->tp_free((PyObject *)self);
+}
+
+/* The dealloc of DecodedField (see heap_slots_dealloc). */
+static void heap_lazy_dealloc(LazyField *self) {
+    PyTypeObject *tp = Py_TYPE(self);
+    PyObject_GC_UnTrack(self);
+    lazy_clear(self);
+    tp->tp_free((PyObject *)self);
+    Py_DECREF(tp);
+}
+
+static PyObject *lazy_get_value(LazyField *self, void *closure) {
+    (void)closure;
+    if (self->value == NULL) {
+        if (self->entry == NULL) {
+            PyErr_SetString(PyExc_AttributeError, "value");
+            return NULL;
+        }
+        PyObject *v = fast_value(self->entry, self->data);
+        if (v == NOT_FAST) { /* checked when decoded: cannot happen */
+            PyErr_SetString(PyExc_SystemError, "a lazily decoded field does not read");
+            return NULL;
+        }
+        if (v == NULL) {
+            return NULL;
+        }
+        if (self->value != NULL) { /* set meanwhile (a bitfield class runs Python code) */
+            Py_DECREF(v);
+        } else {
+            self->value = v;
+            self->entry = NULL;
+        }
+    }
+    return Py_NewRef(self->value);
+}
+
+static int lazy_set_value(LazyField *self, PyObject *value, void *closure) {
+    (void)closure;
+    if (value == NULL && self->value == NULL && self->entry == NULL) {
+        PyErr_SetString(PyExc_AttributeError, "value");
+        return -1;
+    }
+    Py_XSETREF(self->value, Py_XNewRef(value));
+    self->entry = NULL;
+    return 0;
+}
+
+static PyMemberDef lazy_members[] = {
+    {"descriptor", T_OBJECT_EX, offsetof(LazyField, descriptor), 0, "field descriptor"},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyGetSetDef lazy_getset[] = {
+    {"value", (getter)lazy_get_value, (setter)lazy_set_value, "typed value (decoded on first read)", NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};
+
+/* 1 when every element of fast entry e's data p reads here as the pure decoder reads it (no NaN
+ * float, no bool other than 0 or 1), else 0. */
+static int fast_reads(const Entry *e, const unsigned char *p) {
+    for (int k = 0; k < e->nitems; k++) {
+        const Item *it = &e->items[k];
+        int n = it->count < 0 ? 1 : it->count;
+        switch (it->kind) {
+        case 'f':
+            for (int j = 0; j < n; j++, p += 4) {
+                if ((load32(p) << 1) > 0xFF000000u) {
+                    return 0;
+                }
+            }
+            break;
+        case 'd':
+            for (int j = 0; j < n; j++, p += 8) {
+                if ((load(p, 8) << 1) > 0xFFE0000000000000ull) {
+                    return 0;
+                }
+            }
+            break;
+        case '?':
+            for (int j = 0; j < n; j++, p++) {
+                if (p[0] > 1) {
+                    return 0;
+                }
+            }
+            break;
+        default:
+            p += (Py_ssize_t)it->size * n;
+            break;
+        }
+    }
+    return 1;
+}
+
+/* A DecodedField whose value is built on first read; NULL with an exception. */
+static PyObject *lazy_field(int descriptor, const Entry *e, const unsigned char *data) {
+    LazyField *o = (LazyField *)decoded_type->tp_alloc(decoded_type, e->size);
+    if (o == NULL) {
+        return NULL;
+    }
+    o->descriptor = PyLong_FromLong(descriptor);
+    if (o->descriptor == NULL) {
+        Py_DECREF(o);
+        return NULL;
+    }
+    o->entry = e;
+    memcpy(o->data, data, (size_t)e->size);
+    return (PyObject *)o;
+}
+
 static PyObject *slow_field(int set_id, int descriptor, const unsigned char *data, Py_ssize_t len) {
     return PyObject_CallFunction(py_decode_field, "iiy#", set_id, descriptor, (const char *)data, len);
 }
@@ -745,14 +912,11 @@ static PyObject *decode_fields(int set_id, const unsigned char *pl, Py_ssize_t n
             return NULL;
         }
         PyObject *entry = NULL;
-        if (e->kind == ENTRY_FAST && e->size == data_length) {
-            PyObject *v = fast_value(e, data);
-            if (v != NOT_FAST) {
-                entry = new3(decoded_type, PyLong_FromLong(descriptor), v, NULL);
-                if (entry == NULL) {
-                    Py_DECREF(fields);
-                    return NULL;
-                }
+        if (e->kind == ENTRY_FAST && e->size == data_length && fast_reads(e, data)) {
+            entry = lazy_field(descriptor, e, data);
+            if (entry == NULL) {
+                Py_DECREF(fields);
+                return NULL;
             }
         }
         if (entry == NULL) {
@@ -856,44 +1020,54 @@ static PyObject *decode_all(PyObject *self, PyObject *arg) {
 /* ------------------------------------------------------------------------------ columns */
 /* decode_columns: the fields the C side reads (fast entries without char or string items) become
  * rows of per-(set, descriptor) tables of native numbers; every other field entry (and every
- * packet that does not split into fields) goes to `others` as Python objects. */
+ * packet that does not split into fields) goes to `others` as Python objects.
+ *
+ * Rows are written straight into their final buffers: one bytearray per column, sized when the
+ * table is made from the input still to read (as if the rest of the stream were packets like the
+ * one that made it; grown by doubling when that falls short) and cut to the rows at the end, so
+ * nothing is copied on the way to Python. A packet is matched against the layouts already seen
+ * (set, payload length, the field headers at their offsets): a known layout gives its fields'
+ * tables, offsets and entries without splitting and dispatching again. */
 typedef struct {
+    PyObject *ba; /* bytearray; its size is the capacity until the end */
     char *p;
-    Py_ssize_t len, cap;
-} Buf;
-
-static int buf_reserve(Buf *b, Py_ssize_t more) {
-    if (b->len + more <= b->cap) {
-        return 0;
-    }
-    Py_ssize_t cap = b->cap ? b->cap : 4096;
-    while (cap < b->len + more) {
-        cap *= 2;
-    }
-    char *q = PyMem_Realloc(b->p, (size_t)cap);
-    if (q == NULL) {
-        PyErr_NoMemory();
-        return -1;
-    }
-    b->p = q;
-    b->cap = cap;
-    return 0;
-}
+    Py_ssize_t width; /* bytes per row */
+} Col;
 
 typedef struct {
     const Entry *e;
     int set_id, descriptor;
-    Py_ssize_t rows;
-    Buf offsets; /* long long per row: packet offset */
-    Buf index;   /* long long per row: position of the field in its packet */
-    Buf cols[];  /* per item: double (f, d), long long (i), unsigned long long (u, e, F), unsigned char (?) */
+    Py_ssize_t rows, cap;
+    int ncols;  /* 2 + items: offsets (long long per row: packet offset), index (long long per row:
+                   position of the field in its packet), then per item: double (f, d), long long
+                   (i), unsigned long long (u, e, F), unsigned char (?), count values per row */
+    Col cols[];
 } Table;
 
+/* One field of a known layout. */
+typedef struct {
+    Table **slot;     /* the table's place in Columns.by_set (NULL: an `others` entry) */
+    const Entry *e;
+    int hdr;          /* offset of the field header in the payload */
+    unsigned char length_byte, descriptor;
+    int data_len;
+} LField;
+
+#define LAYOUTS_KEPT 16 /* per set and payload length, most recently seen first */
+
+typedef struct Layout {
+    struct Layout *next;
+    int nfields;
+    LField f[];
+} Layout;
+
 struct Columns {
-    Table **by_key; /* [set << 8 | descriptor] */
+    Table **by_set[256]; /* [set][descriptor], rows allocated on first use */
+    Layout **layouts[256]; /* [set][payload length]: chains of known layouts */
     Table **list;
     Py_ssize_t ntables, cap;
     Py_ssize_t packets;
+    Py_ssize_t size; /* bytes of the input */
     PyObject *others; /* [(offset, index, entry) | (offset, -1, Packet)] */
 };
 
@@ -909,62 +1083,125 @@ static int columnable(const Entry *e) {
     return 1;
 }
 
-static int column_width(char kind) {
-    return kind == '?' ? 1 : 8;
+static Py_ssize_t column_width(const Item *it) {
+    return (Py_ssize_t)(it->count < 0 ? 1 : it->count) * (it->kind == '?' ? 1 : 8);
 }
 
-static Table *table_for(Columns *c, const Entry *e, int set_id, int descriptor) {
-    Table **slot = &c->by_key[set_id << 8 | descriptor];
+static void table_free(Table *t) {
+    for (int k = 0; k < t->ncols; k++) {
+        Py_XDECREF(t->cols[k].ba);
+    }
+    PyMem_Free(t);
+}
+
+/* Large column buffers are asked for in huge pages where the kernel gives them on request (Linux
+ * transparent huge pages in "madvise" mode): writing the rows of a large input otherwise spends
+ * about as long in page faults (one per 4 KiB) as in decoding. A hint: nothing changes if refused. */
+static void huge_pages(char *p, Py_ssize_t n) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const uintptr_t huge = (uintptr_t)2 << 20;
+    if (n < (Py_ssize_t)huge) {
+        return;
+    }
+    uintptr_t a = ((uintptr_t)p + huge - 1) & ~(huge - 1), b = ((uintptr_t)p + (uintptr_t)n) & ~(huge - 1);
+    if (b > a) {
+        (void)madvise((void *)a, b - a, MADV_HUGEPAGE);
+    }
+#else
+    (void)p;
+    (void)n;
+#endif
+}
+
+/* Every column of t holds room for `cap` rows: 0, or -1 with an exception. */
+static int table_reserve(Table *t, Py_ssize_t cap) {
+    for (int k = 0; k < t->ncols; k++) {
+        Col *c = &t->cols[k];
+        if (c->ba == NULL) {
+            c->ba = PyByteArray_FromStringAndSize(NULL, cap * c->width);
+            if (c->ba == NULL) {
+                return -1;
+            }
+        } else if (PyByteArray_Resize(c->ba, cap * c->width) < 0) {
+            return -1;
+        }
+        c->p = PyByteArray_AS_STRING(c->ba);
+        huge_pages(c->p, cap * c->width);
+    }
+    t->cap = cap;
+    return 0;
+}
+
+/* The table of (set, descriptor), made on first use with room for the rows the rest of the input
+ * (from byte `at`, in packets of `total` bytes) could hold. */
+static Table *table_for(Columns *c, Table **slot, const Entry *e, int set_id, int descriptor, Py_ssize_t at,
+                        Py_ssize_t total) {
     if (*slot != NULL) {
         return *slot;
     }
-    Table *t = PyMem_Calloc(1, sizeof(Table) + (size_t)e->nitems * sizeof(Buf));
+    Table *t = PyMem_Calloc(1, sizeof(Table) + (size_t)(e->nitems + 2) * sizeof(Col));
     if (t == NULL) {
         PyErr_NoMemory();
         return NULL;
     }
+    t->e = e;
+    t->set_id = set_id;
+    t->descriptor = descriptor;
+    t->ncols = e->nitems + 2;
+    t->cols[0].width = t->cols[1].width = 8;
+    Py_ssize_t row_bytes = 16;
+    for (int k = 0; k < e->nitems; k++) {
+        t->cols[k + 2].width = column_width(&e->items[k]);
+        row_bytes += t->cols[k + 2].width;
+    }
+    Py_ssize_t rest = c->size - at;
+    Py_ssize_t cap = rest / (total > 0 ? total : 1) + 16;
+    /* At most 256 MiB reserved up front per table; beyond, the rows grow by doubling. */
+    if (cap > ((Py_ssize_t)256 << 20) / row_bytes) {
+        cap = ((Py_ssize_t)256 << 20) / row_bytes;
+    }
+    if (table_reserve(t, cap) < 0) {
+        PyErr_Clear();
+        if (table_reserve(t, 16) < 0) {
+            table_free(t);
+            return NULL;
+        }
+    }
     if (c->ntables == c->cap) {
-        Py_ssize_t cap = c->cap ? 2 * c->cap : 16;
-        Table **q = PyMem_Realloc(c->list, (size_t)cap * sizeof(Table *));
+        Py_ssize_t n = c->cap ? 2 * c->cap : 16;
+        Table **q = PyMem_Realloc(c->list, (size_t)n * sizeof(Table *));
         if (q == NULL) {
-            PyMem_Free(t);
+            table_free(t);
             PyErr_NoMemory();
             return NULL;
         }
         c->list = q;
-        c->cap = cap;
+        c->cap = n;
     }
-    t->e = e;
-    t->set_id = set_id;
-    t->descriptor = descriptor;
     c->list[c->ntables++] = t;
     *slot = t;
     return t;
 }
 
-/* Appends the row of field data p to t: 0; 1 (nothing appended) when an element does not read as
+/* Writes the row of field data p into t: 0; 1 (nothing written) when an element does not read as
  * the pure decoder reads it (a NaN, an invalid bool); -1 with an exception. */
 static int put_row(Table *t, const unsigned char *p, long long offset, long long index) {
-    const Entry *e = t->e;
-    if (buf_reserve(&t->offsets, 8) < 0 || buf_reserve(&t->index, 8) < 0) {
+    if (t->rows == t->cap && table_reserve(t, 2 * t->cap) < 0) {
         return -1;
     }
-    for (int k = 0; k < e->nitems; k++) {
+    const Entry *e = t->e;
+    Py_ssize_t r = t->rows;
+    const Col *c = &t->cols[2];
+    /* Written past the row count first, which moves only when the whole row reads. */
+    for (int k = 0; k < e->nitems; k++, c++) {
         const Item *it = &e->items[k];
-        if (buf_reserve(&t->cols[k], (Py_ssize_t)(it->count < 0 ? 1 : it->count) * column_width(it->kind)) < 0) {
-            return -1;
-        }
-    }
-    /* Written past the lengths first, which move only when the whole row reads. */
-    for (int k = 0; k < e->nitems; k++) {
-        const Item *it = &e->items[k];
-        int n = it->count < 0 ? 1 : it->count;
-        char *out = t->cols[k].p + t->cols[k].len;
+        Py_ssize_t n = c->width; /* elements: width / 8, or width for bools */
+        char *out = c->p + r * n;
         switch (it->kind) {
         case 'f':
-            for (int j = 0; j < n; j++, p += 4, out += 8) {
+            for (char *end = out + n; out < end; p += 4, out += 8) {
                 unsigned int bits = load32(p);
-                if ((bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu)) {
+                if ((bits << 1) > 0xFF000000u) { /* a NaN */
                     return 1;
                 }
                 float f;
@@ -974,47 +1211,44 @@ static int put_row(Table *t, const unsigned char *p, long long offset, long long
             }
             break;
         case 'd':
-            for (int j = 0; j < n; j++, p += 8, out += 8) {
+            for (char *end = out + n; out < end; p += 8, out += 8) {
                 unsigned long long bits = load(p, 8);
-                if ((bits & 0x7FF0000000000000ull) == 0x7FF0000000000000ull && (bits & 0x000FFFFFFFFFFFFFull)) {
+                if ((bits << 1) > 0xFFE0000000000000ull) { /* a NaN */
                     return 1;
                 }
                 memcpy(out, &bits, 8);
             }
             break;
-        case 'i':
-            for (int j = 0; j < n; j++, p += it->size, out += 8) {
-                unsigned long long v = load(p, it->size);
-                int shift = 64 - 8 * it->size;
+        case 'i': {
+            int size = it->size, shift = 64 - 8 * size;
+            for (char *end = out + n; out < end; p += size, out += 8) {
+                unsigned long long v = load(p, size);
                 long long x = shift ? (long long)(v << shift) >> shift : (long long)v;
                 memcpy(out, &x, 8);
             }
             break;
+        }
         case '?':
-            for (int j = 0; j < n; j++, p++) {
+            for (Py_ssize_t j = 0; j < n; j++, p++) {
                 if (p[0] > 1) {
                     return 1;
                 }
-                *out++ = (char)p[0];
+                out[j] = (char)p[0];
             }
             break;
-        default: /* u, e, F */
-            for (int j = 0; j < n; j++, p += it->size, out += 8) {
-                unsigned long long v = load(p, it->size);
+        default: { /* u, e, F */
+            int size = it->size;
+            for (char *end = out + n; out < end; p += size, out += 8) {
+                unsigned long long v = load(p, size);
                 memcpy(out, &v, 8);
             }
             break;
         }
+        }
     }
-    for (int k = 0; k < e->nitems; k++) {
-        const Item *it = &e->items[k];
-        t->cols[k].len += (Py_ssize_t)(it->count < 0 ? 1 : it->count) * column_width(it->kind);
-    }
-    memcpy(t->offsets.p + t->offsets.len, &offset, 8);
-    t->offsets.len += 8;
-    memcpy(t->index.p + t->index.len, &index, 8);
-    t->index.len += 8;
-    t->rows++;
+    memcpy(t->cols[0].p + r * 8, &offset, 8);
+    memcpy(t->cols[1].p + r * 8, &index, 8);
+    t->rows = r + 1;
     return 0;
 }
 
@@ -1031,68 +1265,145 @@ static int add_other(Columns *c, long long offset, long long index, PyObject *en
     return 0;
 }
 
+/* The layout of payload pl[0:len] of set `set_id`, from the known ones or made (and kept); NULL
+ * with no exception when the payload does not split into fields, NULL with one on error. */
+static Layout *layout_for(Columns *c, int set_id, const unsigned char *pl, Py_ssize_t len) {
+    Layout **chains = c->layouts[set_id];
+    int known = 0;
+    if (chains != NULL) {
+        Layout **at = &chains[len];
+        for (Layout *l = *at, *prev = NULL; l != NULL; prev = l, l = l->next, known++) {
+            int k = 0;
+            for (; k < l->nfields; k++) {
+                const LField *f = &l->f[k];
+                if (pl[f->hdr + FIELD_LENGTH_OFFSET] != f->length_byte ||
+                    pl[f->hdr + FIELD_DESCRIPTOR_OFFSET] != f->descriptor) {
+                    break;
+                }
+            }
+            if (k == l->nfields) {
+                if (prev != NULL) { /* to the front: the next packet is likely alike */
+                    prev->next = l->next;
+                    l->next = *at;
+                    *at = l;
+                }
+                return l;
+            }
+        }
+    }
+    int count = 0;
+    for (Py_ssize_t o = 0; o < len; count++) {
+        if (len - o < FIELD_HEADER_SIZE) {
+            return NULL;
+        }
+        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
+        if (data_length < 0 || FIELD_HEADER_SIZE + data_length > len - o) {
+            return NULL;
+        }
+        o += FIELD_HEADER_SIZE + data_length;
+    }
+    if (chains == NULL) {
+        chains = PyMem_Calloc(MAX_PAYLOAD + 1, sizeof(Layout *));
+        if (chains == NULL) {
+            PyErr_NoMemory();
+            return NULL;
+        }
+        c->layouts[set_id] = chains;
+    }
+    Layout *l = PyMem_Calloc(1, sizeof(Layout) + (size_t)count * sizeof(LField));
+    if (l == NULL) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+    l->nfields = count;
+    Py_ssize_t o = 0;
+    for (int k = 0; k < count; k++) {
+        LField *f = &l->f[k];
+        f->hdr = (int)o;
+        f->length_byte = pl[o + FIELD_LENGTH_OFFSET];
+        f->descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
+        f->data_len = f->length_byte - field_length_adjust(set_id, f->descriptor);
+        o += FIELD_HEADER_SIZE + f->data_len;
+        Entry *e = entry_for(set_id, f->descriptor);
+        if (e == NULL) {
+            PyMem_Free(l);
+            return NULL;
+        }
+        f->e = e;
+        if (e->kind == ENTRY_FAST && e->size == f->data_len && e->columnable) {
+            Table **row = c->by_set[set_id];
+            if (row == NULL) {
+                row = c->by_set[set_id] = PyMem_Calloc(256, sizeof(Table *));
+                if (row == NULL) {
+                    PyMem_Free(l);
+                    PyErr_NoMemory();
+                    return NULL;
+                }
+            }
+            f->slot = &row[f->descriptor];
+        }
+    }
+    if (known >= LAYOUTS_KEPT) { /* the least recently seen layout of this length makes room */
+        Layout **last = &chains[len];
+        while ((*last)->next != NULL) {
+            last = &(*last)->next;
+        }
+        PyMem_Free(*last);
+        *last = NULL;
+    }
+    l->next = chains[len];
+    chains[len] = l;
+    return l;
+}
+
 static int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset) {
     int set_id = p[SET_OFFSET];
     const unsigned char *pl = p + HEADER_SIZE;
     Py_ssize_t len = n - HEADER_SIZE - CHECKSUM_SIZE;
     c->packets++;
-    /* A payload that does not split into fields: the whole packet, decoded in Python. */
-    for (Py_ssize_t o = 0; o < len;) {
-        int bad = len - o < FIELD_HEADER_SIZE;
-        if (!bad) {
-            int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
-            int data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
-            bad = data_length < 0 || FIELD_HEADER_SIZE + data_length > len - o;
-            o += FIELD_HEADER_SIZE + (data_length < 0 ? 0 : data_length);
-        }
-        if (bad) {
-            PyObject *off = PyLong_FromSsize_t(offset);
-            if (off == NULL) {
-                return -1;
-            }
-            PyObject *pkt = PyObject_CallFunction(py_decode_packet, "y#OO", (const char *)p, n, off, Py_None);
-            Py_DECREF(off);
-            return add_other(c, offset, -1, pkt);
-        }
-    }
-    long long index = 0;
-    for (Py_ssize_t o = 0; o < len; index++) {
-        int descriptor = pl[o + FIELD_DESCRIPTOR_OFFSET];
-        Py_ssize_t data_length = pl[o + FIELD_LENGTH_OFFSET] - field_length_adjust(set_id, descriptor);
-        const unsigned char *data = pl + o + FIELD_HEADER_SIZE;
-        o += FIELD_HEADER_SIZE + data_length;
-        Entry *e = entry_for(set_id, descriptor);
-        if (e == NULL) {
+    Layout *l = layout_for(c, set_id, pl, len);
+    if (l == NULL) {
+        if (PyErr_Occurred()) {
             return -1;
         }
+        /* A payload that does not split into fields: the whole packet, decoded in Python. */
+        PyObject *off = PyLong_FromSsize_t(offset);
+        if (off == NULL) {
+            return -1;
+        }
+        PyObject *pkt = PyObject_CallFunction(py_decode_packet, "y#OO", (const char *)p, n, off, Py_None);
+        Py_DECREF(off);
+        return add_other(c, offset, -1, pkt);
+    }
+    for (int k = 0; k < l->nfields; k++) {
+        const LField *f = &l->f[k];
+        const unsigned char *data = pl + f->hdr + FIELD_HEADER_SIZE;
         int rc = 1;
-        if (e->kind == ENTRY_FAST && e->size == data_length && e->columnable) {
-            Table *t = table_for(c, e, set_id, descriptor);
-            rc = t == NULL ? -1 : put_row(t, data, offset, index);
+        if (f->slot != NULL) {
+            Table *t = *f->slot;
+            if (t == NULL) {
+                t = table_for(c, f->slot, f->e, set_id, f->descriptor, offset, n);
+                if (t == NULL) {
+                    return -1;
+                }
+            }
+            rc = put_row(t, data, offset, k);
             if (rc < 0) {
                 return -1;
             }
             if (rc == 1 && t->rows == 0) {
                 /* Made for this row, which does not read: dropped, as if never made (table order). */
-                c->by_key[set_id << 8 | descriptor] = NULL;
+                *f->slot = NULL;
                 c->ntables--;
-                for (int k = 0; k < e->nitems; k++) {
-                    PyMem_Free(t->cols[k].p);
-                }
-                PyMem_Free(t->offsets.p);
-                PyMem_Free(t->index.p);
-                PyMem_Free(t);
+                table_free(t);
             }
         }
-        if (rc == 1 && add_other(c, offset, index, slow_field(set_id, descriptor, data, data_length)) < 0) {
+        if (rc == 1 && add_other(c, offset, k, slow_field(set_id, f->descriptor, data, f->data_len)) < 0) {
             return -1;
         }
     }
     return 0;
-}
-
-static PyObject *buf_bytes(const Buf *b) {
-    return PyBytes_FromStringAndSize(b->p ? b->p : "", b->len);
 }
 
 static PyObject *tables_out(Columns *c) {
@@ -1100,17 +1411,19 @@ static PyObject *tables_out(Columns *c) {
     for (Py_ssize_t k = 0; out != NULL && k < c->ntables; k++) {
         Table *t = c->list[k];
         PyObject *cols = PyList_New(t->e->nitems);
-        for (int j = 0; cols != NULL && j < t->e->nitems; j++) {
-            PyObject *b = buf_bytes(&t->cols[j]);
-            if (b == NULL) {
+        for (int j = 0; cols != NULL && j < t->ncols; j++) {
+            /* Cut to the rows (a large cut gives the rest back to the allocator). */
+            if (PyByteArray_Resize(t->cols[j].ba, t->rows * t->cols[j].width) < 0) {
                 Py_CLEAR(cols);
                 break;
             }
-            PyList_SET_ITEM(cols, j, b);
+            if (j >= 2) {
+                PyList_SET_ITEM(cols, j - 2, Py_NewRef(t->cols[j].ba));
+            }
         }
         PyObject *row = cols == NULL ? NULL
-                                     : Py_BuildValue("iiOnNNN", t->set_id, t->descriptor, t->e->cls, t->rows,
-                                                     buf_bytes(&t->offsets), buf_bytes(&t->index), cols);
+                                     : Py_BuildValue("iiOnOON", t->set_id, t->descriptor, t->e->cls, t->rows,
+                                                     t->cols[0].ba, t->cols[1].ba, cols);
         if (row == NULL) {
             Py_CLEAR(out);
             break;
@@ -1122,21 +1435,27 @@ static PyObject *tables_out(Columns *c) {
 
 static void columns_free(Columns *c) {
     for (Py_ssize_t k = 0; k < c->ntables; k++) {
-        Table *t = c->list[k];
-        for (int j = 0; j < t->e->nitems; j++) {
-            PyMem_Free(t->cols[j].p);
+        table_free(c->list[k]);
+    }
+    for (int s = 0; s < 256; s++) {
+        PyMem_Free(c->by_set[s]);
+        if (c->layouts[s] != NULL) {
+            for (int n = 0; n <= MAX_PAYLOAD; n++) {
+                for (Layout *l = c->layouts[s][n]; l != NULL;) {
+                    Layout *next = l->next;
+                    PyMem_Free(l);
+                    l = next;
+                }
+            }
+            PyMem_Free(c->layouts[s]);
         }
-        PyMem_Free(t->offsets.p);
-        PyMem_Free(t->index.p);
-        PyMem_Free(t);
     }
     PyMem_Free(c->list);
-    PyMem_Free(c->by_key);
     Py_XDECREF(c->others);
 }
 
 /* decode_columns(data) -> (packets, skips, tables, others); tables: [(set, descriptor, class, rows,
- * offsets, index, [column bytes per item])] in native byte order. */
+ * offsets, index, [column per item])], each column a bytearray of numbers in native byte order. */
 static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
@@ -1147,29 +1466,32 @@ static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     if (copy == NULL) {
         return NULL;
     }
-    Columns c = {PyMem_Calloc(65536, sizeof(Table *)), NULL, 0, 0, 0, PyList_New(0)};
+    Columns *c = PyMem_Calloc(1, sizeof(Columns));
+    if (c == NULL) {
+        Py_DECREF(copy);
+        return PyErr_NoMemory();
+    }
+    c->size = PyBytes_GET_SIZE(copy);
+    c->others = PyList_New(0);
     SkipRun skip = {PyByteArray_FromStringAndSize(NULL, 0), 0};
     PyObject *skips = PyList_New(0), *result = NULL;
-    if (c.by_key == NULL || c.others == NULL || skip.bytes == NULL || skips == NULL) {
-        if (c.by_key == NULL) {
-            PyErr_NoMemory();
-        }
-    } else {
+    if (c->others != NULL && skip.bytes != NULL && skips != NULL) {
         int gc = gc_pause();
         Py_ssize_t pos = scan_core((const unsigned char *)PyBytes_AS_STRING(copy), PyBytes_GET_SIZE(copy), 0,
-                                   1, SCAN_COLUMNS, &c, &skip, skips, NULL);
+                                   1, SCAN_COLUMNS, c, &skip, skips, NULL);
         gc_resume(gc);
         if (pos >= 0 && flush_skip(&skip, skips) >= 0) {
-            PyObject *tables = tables_out(&c);
+            PyObject *tables = tables_out(c);
             if (tables != NULL) {
-                result = Py_BuildValue("nONO", c.packets, skips, tables, c.others);
+                result = Py_BuildValue("nONO", c->packets, skips, tables, c->others);
             }
         }
     }
     Py_DECREF(copy);
     Py_XDECREF(skip.bytes);
     Py_XDECREF(skips);
-    columns_free(&c);
+    columns_free(c);
+    PyMem_Free(c);
     return result;
 }
 
@@ -1570,6 +1892,20 @@ static PyObject *scan_text(PyObject *self, PyObject *args) {
     return result;
 }
 
+static int ready_lazy(PyTypeObject *tp, const char *name) {
+    tp->tp_name = name;
+    tp->tp_basicsize = LAZY_BASICSIZE;
+    tp->tp_itemsize = 1;
+    tp->tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE | Py_TPFLAGS_HAVE_GC;
+    tp->tp_traverse = (traverseproc)lazy_traverse;
+    tp->tp_clear = (inquiry)lazy_clear;
+    tp->tp_dealloc = (destructor)lazy_dealloc;
+    tp->tp_members = lazy_members;
+    tp->tp_getset = lazy_getset;
+    tp->tp_new = PyType_GenericNew;
+    return PyType_Ready(tp);
+}
+
 /* setup(RawPacket, Skip, Packet, DecodedField, decode_packet, decode_field, program, field_line,
  *       packet_line) */
 static PyObject *setup(PyObject *self, PyObject *args) {
@@ -1582,7 +1918,7 @@ static PyObject *setup(PyObject *self, PyObject *args) {
     PyTypeObject *bases[4] = {&EventBase, &EventBase, &PacketBase, &DecodedFieldBase};
     for (int k = 0; k < 4; k++) {
         if (!PyType_IsSubtype((PyTypeObject *)t[k], bases[k]) ||
-            ((PyTypeObject *)t[k])->tp_basicsize != (Py_ssize_t)sizeof(Slots3)) {
+            ((PyTypeObject *)t[k])->tp_basicsize != (k == 3 ? LAZY_BASICSIZE : (Py_ssize_t)sizeof(Slots3))) {
             PyErr_Format(PyExc_TypeError, "%s must derive from %s with empty __slots__",
                          ((PyTypeObject *)t[k])->tp_name, bases[k]->tp_name);
             return NULL;
@@ -1593,7 +1929,7 @@ static PyObject *setup(PyObject *self, PyObject *args) {
         if ((tp->tp_flags & Py_TPFLAGS_HEAPTYPE) && tp->tp_base == bases[k] && tp->tp_dictoffset == 0 &&
             tp->tp_weaklistoffset == 0 && tp->tp_finalize == NULL && tp->tp_del == NULL &&
             tp->tp_free == PyObject_GC_Del) {
-            tp->tp_dealloc = (destructor)heap_slots_dealloc;
+            tp->tp_dealloc = k == 3 ? (destructor)heap_lazy_dealloc : (destructor)heap_slots_dealloc;
         }
     }
     raw_packet_type = (PyTypeObject *)Py_NewRef(t[0]);
@@ -1659,7 +1995,7 @@ PyMODINIT_FUNC PyInit__speedups(void) {
     PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
     if (ready_base(&EventBase, PROTOCOL_PACKAGE "._speedups.EventBase", event_members) < 0 ||
         ready_base(&PacketBase, PROTOCOL_PACKAGE "._speedups.PacketBase", packet_members) < 0 ||
-        ready_base(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase", decoded_members) < 0) {
+        ready_lazy(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase") < 0) {
         return NULL;
     }
     empty_tuple = PyTuple_New(0);

@@ -277,3 +277,51 @@ def test_event_objects_and_their_subclasses_are_freed():
         run()
     gc.collect()
     assert [sys.getrefcount(k) for k in classes] == before
+
+
+def test_decoded_values_are_built_on_first_read_once():
+    # With the accelerator a DecodedField of a fixed layout builds its value when `value` is first
+    # read (then keeps it); either way the values equal the pure decoder's, and a field made in
+    # Python, or whose value is set or deleted, behaves as a plain attribute.
+    packet = PacketBuilder(0x80).add_field(0x02, sensor.ScaledAccel([1.0, 2.0, 3.0], 0.5, 7, -1).encode()).build()
+    data = packet * 3
+    got = [f for e in decode_all(data) for f in e.fields]
+    want = [f for e in parse(data) for f in packets._decode_packet_pure(e.data, e.offset).fields]
+    assert len(got) == 3 and all(type(f) is packets.DecodedField for f in got)
+    for g, w in zip(got, want):
+        first = g.value
+        assert g.value is first and first == w.value and type(first) is type(w.value)
+    field = got[0]
+    field.value = sensor.ScaledAccel()
+    assert field.value == sensor.ScaledAccel()
+    del field.value
+    assert not hasattr(field, "value")
+    made = packets.DecodedField(0x02, want[0].value)
+    assert made.value is want[0].value and made.descriptor == 0x02
+
+
+def test_column_tables_read_the_same_in_every_form():
+    # decode_columns hands its column buffers over without a copy: `columns`, `offsets` and `index`
+    # (arrays made on first use) and `arrays()` (numpy views, when numpy is there) hold the same
+    # numbers, row for row, as the entries.
+    values = [sensor.ScaledAccel([float(k), -1.5, 2.0**k], k / 4, k, -k) for k in range(50)]
+    data = b"".join(
+        b"\x00" * (k % 3) + PacketBuilder(0x80).add_field(0x02, v.encode()).build() for k, v in enumerate(values)
+    )
+    cols = decode_columns(data)
+    if not testproto.ACCELERATED:
+        assert not cols.tables and len(cols.others) == len(values)
+        return
+    table = cols.tables[(0x80, 0x02)]
+    assert len(table) == len(values) and [table.row(i) for i in range(len(values))] == values
+    offsets = [e.offset for e in parse(data) if isinstance(e, RawPacket)]
+    assert list(table.offsets) == offsets and list(table.index) == [0] * len(values)
+    assert list(table.columns["ticks"]) == list(range(50))
+    try:
+        import numpy as np
+    except ImportError:
+        return
+    arrays = table.arrays()
+    assert arrays["scaled_accel"].shape == (50, 3)
+    assert arrays["scaled_accel"].tolist() == [v.scaled_accel for v in values]
+    assert np.array_equal(arrays["time"], np.asarray(table.columns["time"]))
