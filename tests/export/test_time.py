@@ -11,6 +11,7 @@ from __future__ import annotations
 import importlib
 import random
 from datetime import datetime, timezone
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -333,3 +334,68 @@ def test_block_path_equals_packet_path():
     assert [int(v) if ok else None for v, ok in zip(look["device_ns"], look["device_valid"])] == [
         t.device_ns for t in whole
     ]
+
+
+# ---------------------------------------------------------------------------- info
+
+
+def iso(t_ns: int) -> str:
+    sec, ns = divmod(t_ns, NS)
+    return datetime.fromtimestamp(sec, tz=timezone.utc).strftime("%Y-%m-%dT%H:%M:%S") + f".{ns // 1000:06d}Z"
+
+
+def test_info_reports_gaps_jumps_resets_and_invalid_stretches(tmp_path, capsys):
+    cli = importlib.import_module("mipcodec.cli")
+    fd = M["filter_data"]
+
+    def filt(tow, valid=1):
+        return build_packet(0x82, fd.GpsTimestamp(float(tow), W, T.FilterOutputValidFlags(valid)))
+
+    log = [
+        packet(dev=1 * NS),  # 0: before the first anchor: TOW 99
+        packet(dev=2 * NS, gps=100.0),  # 1: anchor, TOW 100
+        filt(100.5),  # 2: own GPS time (set 0x82)
+        packet(dev=3 * NS),  # 3: TOW 101
+        packet(dev=8 * NS),  # 4: TOW 106: a gap of 5 s after TOW 101
+        filt(90.0),  # 5: set 0x82 goes back from 100.5 to 90: a backward jump
+        filt(91.0, valid=0),  # 6: invalid GPS time: an invalid-time stretch of 1 packet
+        packet(dev=9 * NS),  # 7: TOW 107
+        packet(dev=int(0.5 * NS)),  # 8: a reset (9 s -> 0.5 s): epoch 1 has no anchor
+        packet(dev=int(0.6 * NS)),  # 9: no time
+        packet(dev=int(0.7 * NS)),  # 10: no time (stretch 8-10, 3 packets)
+    ]
+    data = b"".join(log)
+    offs = [sum(len(p) for p in log[:i]) for i in range(len(log))]
+    path = tmp_path / "t.bin"
+    path.write_bytes(data)
+    assert cli.main(["info", str(path)]) == 0
+    text = capsys.readouterr().out.splitlines()
+    start = next(i for i, line in enumerate(text) if line.startswith("UTC:"))
+    at = lambda tow: WEEK0 + round(tow * NS)  # noqa: E731
+    assert text[start:] == [
+        # 11 data packets, 7 timed: 3 by their own GPS time (1, 2, 5), 4 by the device clock (0, 3, 4, 7)
+        f"UTC: first {iso(at(90))}  last {iso(at(107))}  span 17.000000 s"
+        "  (7 of 11 data packets: 3 by their own GPS time, 4 by the device clock)",
+        "time gaps over 1 s: 1",
+        f"  offset {offs[4]}: {iso(at(101))} -> {iso(at(106))} (+5.000 s)",
+        "backward jumps: 1",
+        f"  set 0x82 offset {offs[5]}: {iso(at(100.5))} -> {iso(at(90))} (-10.500 s)",
+        "device clock resets: 1",
+        f"  offset {offs[8]}: device clock 9.000000 s -> 0.500000 s",
+        "invalid-time stretches: 2",
+        f"  offset {offs[6]}: 1 packet (GPS time not valid)",
+        f"  offsets {offs[8]}-{offs[10]}: 3 packets (no GPS anchor for the device clock)",
+    ]
+    # From stdin (read once), the rows before the first anchor have no time.
+    import subprocess
+    import sys
+
+    env = {"PYTHONPATH": str(Path(M["timebase"].__file__).parents[1])}
+    out = subprocess.run(
+        [sys.executable, "-m", "mipcodec", "info", "-"], input=data, capture_output=True, env=env, check=True
+    )
+    lines = out.stdout.decode().splitlines()
+    assert (
+        lines[lines.index("invalid-time stretches: 3") + 1]
+        == f"  offset {offs[0]}: 1 packet (no GPS anchor for the device clock)"
+    )

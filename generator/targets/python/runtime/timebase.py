@@ -675,3 +675,127 @@ def columns_times(cols: Any, base: int) -> List[PacketTime]:
 def log_clock(packets: Iterable[Packet]) -> ClockMap:
     """The clock map of a whole log given as decoded packets (one split)."""
     return ClockMap.from_splits([summarize(packet_time(p) for p in packets)])
+
+
+def iso(t_ns: int) -> str:
+    """UTC ns since the Unix epoch as ISO 8601 text with microseconds (2017-01-01T00:00:00.000000Z)."""
+    import datetime
+
+    sec, ns = divmod(t_ns, NS)
+    d = datetime.datetime.fromtimestamp(sec, tz=datetime.timezone.utc)
+    return d.strftime("%Y-%m-%dT%H:%M:%S") + f".{ns // 1000:06d}Z"
+
+
+class TimeReport:
+    """`info`'s time report, fed every packet in log order (`add(packet, times)`), in memory that
+    does not grow with the log (the first `SHOW` events of each kind are kept, the rest counted).
+    `lines()` gives the text.
+
+    - time span: first and last UTC time of the data packets, and how many had one (from their
+      own GPS time or through the device clock);
+    - time gaps: more than `GAP_NS` without a timed data packet (UTC, against the latest time so far);
+    - backward jumps: a data set's UTC time going back from that set's previous timed packet;
+    - device clock resets: the device clock going back by more than `RESET_NS` (a new epoch);
+    - invalid-time stretches: runs of consecutive data packets without a UTC time, with why
+      (GPS time not valid / device clock with no GPS anchor in its epoch / no time field)."""
+
+    GAP_NS = NS
+    SHOW = 10
+
+    def __init__(self, data_sets: Iterable[int]) -> None:
+        self.data_sets = frozenset(data_sets)
+        self.packets = 0
+        self.own = 0
+        self.mapped = 0
+        self.first: Optional[int] = None
+        self.last: Optional[int] = None
+        self.latest: Optional[int] = None
+        self.per_set: Dict[int, int] = {}
+        self.prev_device: Optional[int] = None
+        self.events: Dict[str, List[str]] = {"gaps": [], "backward": [], "resets": [], "invalid": []}
+        self.counts: Dict[str, int] = {k: 0 for k in self.events}
+        self.run: Optional[List[Any]] = None  # [first offset, last offset, packets, reasons]
+
+    def _event(self, kind: str, text: str) -> None:
+        self.counts[kind] += 1
+        if len(self.events[kind]) < self.SHOW:
+            self.events[kind].append(text)
+
+    def _end_run(self) -> None:
+        if self.run is not None:
+            first, last, n, reasons = self.run
+            why = ", ".join(sorted(reasons))
+            where = f"offset {first}" if first == last else f"offsets {first}-{last}"
+            self._event("invalid", f"{where}: {n} packet{'' if n == 1 else 's'} ({why})")
+            self.run = None
+
+    def add(self, packet: Packet, pt: PacketTime, times: Times) -> None:
+        """One packet (any set; only data sets count), its `PacketTime` and its `Times`."""
+        d = times.device_ns
+        if d is not None:
+            if self.prev_device is not None and d < self.prev_device - RESET_NS:
+                self._event(
+                    "resets",
+                    f"offset {packet.offset}: device clock {self.prev_device / NS:.6f} s -> {d / NS:.6f} s",
+                )
+            self.prev_device = d
+        if packet.set not in self.data_sets:
+            return
+        self.packets += 1
+        t = times.t_ns
+        if t is None:
+            if pt.gps_week is not None and d is None:
+                reason = "GPS time not valid"
+            elif d is not None:
+                reason = "no GPS anchor for the device clock"
+            else:
+                reason = "no time field"
+            if self.run is None:
+                self.run = [packet.offset, packet.offset, 0, set()]
+            self.run[1] = packet.offset
+            self.run[2] += 1
+            self.run[3].add(reason)
+            return
+        self._end_run()
+        if pt.gps_ns is not None:
+            self.own += 1
+        else:
+            self.mapped += 1
+        self.first = t if self.first is None else min(self.first, t)
+        self.last = t if self.last is None else max(self.last, t)
+        if self.latest is not None and t - self.latest > self.GAP_NS:
+            self._event(
+                "gaps", f"offset {packet.offset}: {iso(self.latest)} -> {iso(t)} (+{(t - self.latest) / NS:.3f} s)"
+            )
+        self.latest = t if self.latest is None else max(self.latest, t)
+        prev = self.per_set.get(packet.set)
+        if prev is not None and t < prev:
+            self._event(
+                "backward",
+                f"set 0x{packet.set:02X} offset {packet.offset}: {iso(prev)} -> {iso(t)} ({(t - prev) / NS:.3f} s)",
+            )
+        self.per_set[packet.set] = t
+
+    def lines(self) -> List[str]:
+        """The report's text lines (docs/log-to-csv.md, "Time")."""
+        self._end_run()
+        timed = self.own + self.mapped
+        if self.first is None or self.last is None:
+            out = [f"UTC: none of {self.packets} data packets has a UTC time"]
+        else:
+            out = [
+                f"UTC: first {iso(self.first)}  last {iso(self.last)}  span {(self.last - self.first) / NS:.6f} s"
+                f"  ({timed} of {self.packets} data packets: {self.own} by their own GPS time, {self.mapped} by the device clock)"
+            ]
+        titles = {
+            "gaps": f"time gaps over {self.GAP_NS / NS:g} s",
+            "backward": "backward jumps",
+            "resets": "device clock resets",
+            "invalid": "invalid-time stretches",
+        }
+        for kind, title in titles.items():
+            out.append(f"{title}: {self.counts[kind]}")
+            out.extend("  " + e for e in self.events[kind])
+            if self.counts[kind] > len(self.events[kind]):
+                out.append(f"  ... and {self.counts[kind] - len(self.events[kind])} more")
+        return out
