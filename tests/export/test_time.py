@@ -399,3 +399,53 @@ def test_info_reports_gaps_jumps_resets_and_invalid_stretches(tmp_path, capsys):
         lines[lines.index("invalid-time stretches: 3") + 1]
         == f"  offset {offs[0]}: 1 packet (no GPS anchor for the device clock)"
     )
+
+
+# ---------------------------------------------------------------------------- session
+
+
+def test_the_session_times_data_packets_live():
+    session_mod = importlib.import_module("mipcodec.session")
+    log = [
+        packet(dev=1 * NS),  # live: no anchor seen yet, no time (the log rule would give TOW 99)
+        packet(dev=2 * NS, gps=100.0),  # anchor: TOW 100
+        packet(dev=3 * NS),  # TOW 101
+        leap_packet(17),  # the device's leap seconds from here on: 17 s
+        packet(dev=4 * NS),  # TOW 102, UTC with 17 s
+        packet(dev=int(0.5 * NS)),  # a reset: no anchor in the new epoch
+    ]
+    u = WEEK0 + 18 * NS  # week W TOW 0 as UTC with no leap seconds
+    want = [
+        (None, 1 * NS),
+        (u + 100 * NS - 18 * NS, 2 * NS),
+        (u + 101 * NS - 18 * NS, 3 * NS),
+        (None, None),  # the leap second packet has no time of its own
+        (u + 102 * NS - 17 * NS, 4 * NS),
+        (None, NS // 2),
+    ]
+    data = b"".join(log)
+    # A packet handler asking each packet's time (the session's fast path for one handler), the
+    # same with a field handler too, and the time model started before any handler.
+    for setup in ("handler", "handlers", "started"):
+        session = session_mod.Session("cv7_ins")
+        seen = []
+        if setup == "started":
+            assert session.time.latest is None
+            events = session.feed(data, 0)
+            packets = [e for e in events if hasattr(e, "fields")]
+            seen = [(session.utc_ns(p), session.times(p).device_ns) for p in packets]
+        else:
+            session.on_packet(lambda p, s=session, out=seen: out.append((s.utc_ns(p), s.times(p).device_ns)))
+            if setup == "handlers":
+                session.on_field(0x80, 0x04, lambda v, p: None)
+            # in two pieces (the second packet split), so the model keeps its state across feeds
+            session.feed(data[:40], 0)
+            session.feed(data[40:], 1)
+        session.close(2)
+        assert seen == want, setup
+        # Another packet, asked about later: against the current state (epoch 1, no anchor).
+        assert session.utc_ns(decoded(packet(dev=5 * NS))[0]) is None
+        assert session.time.epoch == 1 and session.time.leap_latest == 17
+        # An earlier packet again: the same answer as it had (its state is not changed by asking).
+        first = decoded(data)[2]
+        assert session.utc_ns(first) is None  # (now: epoch 1 has no anchor)

@@ -315,6 +315,12 @@ class SplitClock:
         """The times of the next decoded packet, advancing the state."""
         return self.step(packet_time(packet))
 
+    def peek(self, packet: Packet) -> Times:
+        """The times `times(packet)` would give now, without advancing the state."""
+        other = SplitClock(self.prev_device_ns, self.latest, self.epoch, None, self.leap_latest, self.leap_first)
+        other.firsts = self.firsts  # (read only by step)
+        return other.step(packet_time(packet))
+
     def block(self, cols: Any, base: int, start: Optional[int] = None, end: Optional[int] = None) -> BlockTimes:
         """The times of every packet of a `decode_columns` block (`cols`, decoded from the bytes
         at log offset `base`) with a time fact, restricted to packets whose first byte is in
