@@ -1,9 +1,9 @@
-"""User commands for recorded logs: export to tables, summarise, plot (`python -m <package> export|info|plot`).
+"""User commands for recorded logs: export to tables, summarise, plot (`python -m mipcodec export|info|plot`).
 
-    python -m <package> export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
+    python -m mipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
                                   [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
-    python -m <package> info LOG [--device ID]
-    python -m <package> plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
+    python -m mipcodec info LOG [--device ID]
+    python -m mipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 
 Column names, units and enum names come from the spec through the generated `_columns` table.
 The core package needs nothing beyond Python; Parquet needs pyarrow, plots matplotlib, the

@@ -21,7 +21,7 @@ IR's `link`): `device.to_idle()` gets a streaming device to idle (data dropped a
 flush and retry), `device.find_baud()` finds the rate a serial device answers at, and a Device
 made with `reconnect_ms` reopens a lost port, gets to idle, re-applies the settings written
 since connect and resumes. Each step is reported as one `link: ...` line to `log` (default: the
-logger "<package>.link" at INFO).
+logger "mscipcodec.link" at INFO).
 """
 
 from __future__ import annotations
@@ -926,7 +926,7 @@ class Device(_CommandSets):
         address: Optional[str] = None,
         reconnect_ms: Optional[int] = None,
     ) -> None:
-        """`log`: called with each `link: ...` line (default: the logger "<package>.link", INFO).
+        """`log`: called with each `link: ...` line (default: the logger "mscipcodec.link", INFO).
         `reconnect_ms`: reopen a lost port with `reopen()` (a new transport for `address`) for up
         to that long, then get to idle, re-apply the settings and resume (None: a lost port
         raises TransportError, as before)."""

@@ -1,9 +1,9 @@
-"""User commands for recorded logs: export to tables, summarise, plot (`python -m <package> export|info|plot`).
+"""User commands for recorded logs: export to tables, summarise, plot (`python -m mscipcodec export|info|plot`).
 
-    python -m <package> export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
+    python -m mscipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
                                   [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
-    python -m <package> info LOG [--device ID]
-    python -m <package> plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
+    python -m mscipcodec info LOG [--device ID]
+    python -m mscipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 
 Column names, units and enum names come from the spec through the generated `_columns` table.
 The core package needs nothing beyond Python; Parquet needs pyarrow, plots matplotlib, the
