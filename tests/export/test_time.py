@@ -326,7 +326,10 @@ def test_per_split_equals_whole_log(seed):
 def test_block_path_equals_packet_path():
     data = random_log(7)
     P = M["packets"]
-    clock_map = tb.ClockMap.from_splits([tb.split_anchors(data, 0, 0, len(data))])
+    anchors = tb.split_anchors(data, 0, 0, len(data))  # (vectorised)
+    assert anchors == tb.summarize(tb.packet_time(p) for p in decoded(data))
+    assert len(anchors.segments) >= 3 and anchors.first_leap is not None
+    clock_map = tb.ClockMap.from_splits([anchors])
     bt = clock_map.split(0).block(P.decode_columns(data), 0)
     look = bt.lookup(np.array([o for o, _t in whole_times(data)]))
     whole = [t for _o, t in whole_times(data)]

@@ -260,8 +260,38 @@ def split_anchors(data: Any, base: int, start: int, end: int) -> SplitAnchors:
     starting before `start` are read only to resynchronise)."""
     from .packets import decode_columns
 
-    cols = decode_columns(data)
-    return summarize(t for t in columns_times(cols, base) if start <= t.offset < end)
+    np = importlib.import_module("numpy")
+    p = _columns_arrays(np, decode_columns(data), base)
+    keep = (p["offset"] >= start) & (p["offset"] < end)
+    return _summarize_arrays(np, {k: v[keep] for k, v in p.items()})
+
+
+def _summarize_arrays(np: Any, p: Dict[str, Any]) -> SplitAnchors:
+    """`summarize` of the per-packet arrays of `_columns_arrays` (vectorised)."""
+    leaps = p["leap"][p["leap_ok"]]
+    first_leap = int(leaps[0]) if len(leaps) else None
+    last_leap = int(leaps[-1]) if len(leaps) else None
+    di = np.flatnonzero(p["has_device"])
+    if not len(di):
+        return SplitAnchors(None, None, (Segment(None, None),), first_leap, last_leap)
+    dv = p["device_ns"][di]
+    seg = np.zeros(len(dv), dtype=np.int64)
+    seg[1:] = np.cumsum(dv[1:] < dv[:-1] - RESET_NS)
+    anchors = np.flatnonzero(p["gps_ok"][di])
+    gps = p["gps_ns"][di]
+    firsts: Dict[int, Anchor] = {}
+    lasts: Dict[int, Anchor] = {}
+    if len(anchors):
+        a_seg = seg[anchors]
+        _u, first_i = np.unique(a_seg, return_index=True)
+        for i in anchors[first_i]:
+            firsts[int(seg[i])] = Anchor(int(dv[i]), int(gps[i]))
+        rev = a_seg[::-1]
+        _u, last_r = np.unique(rev, return_index=True)
+        for i in anchors[::-1][last_r]:
+            lasts[int(seg[i])] = Anchor(int(dv[i]), int(gps[i]))
+    segments = tuple(Segment(firsts.get(k), lasts.get(k)) for k in range(int(seg[-1]) + 1))
+    return SplitAnchors(int(dv[0]), int(dv[-1]), segments, first_leap, last_leap)
 
 
 class SplitClock:
