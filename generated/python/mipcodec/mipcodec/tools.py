@@ -1398,8 +1398,8 @@ def info(args: argparse.Namespace) -> int:
     if regular:
         try:
             clock = timebase.file_clock(args.log).split(0)
-        except OSError as e:
-            raise ToolError(f"cannot read {args.log}: {e.strerror or e}") from None
+        except OSError as err:
+            raise ToolError(f"cannot read {args.log}: {err.strerror or err}") from None
     else:
         clock = timebase.SplitClock()
     report = timebase.TimeReport(_DATA_SETS)
