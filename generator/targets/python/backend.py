@@ -61,6 +61,7 @@ RUNTIME_FILES = [
     "sim_world.py",
     "transport.py",
     "tools.py",
+    "timebase.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
@@ -729,6 +730,7 @@ def _columns_context(proto: dict) -> dict:
             {"set": f"0x{t[0]:02X}", "descriptor": f"0x{t[1]:02X}", "attr": py_attr(t[2]), "per_second": t[3]}
             for t in columns.time_sources(proto)
         ],
+        "time_facts": columns.time_facts(proto, py_attr),
     }
 
 
