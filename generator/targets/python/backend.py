@@ -59,6 +59,7 @@ RUNTIME_FILES = [
     "session_tool.py",
     "sim.py",
     "sim_world.py",
+    "fleet.py",
     "transport.py",
     "tools.py",
     "budget.py",
