@@ -60,6 +60,7 @@ RUNTIME_FILES = [
     "sim.py",
     "sim_world.py",
     "fleet.py",
+    "query.py",
     "transport.py",
     "tools.py",
     "budget.py",
