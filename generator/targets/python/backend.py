@@ -61,6 +61,7 @@ RUNTIME_FILES = [
     "sim_world.py",
     "transport.py",
     "tools.py",
+    "dataset.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
