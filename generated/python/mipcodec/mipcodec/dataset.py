@@ -436,7 +436,6 @@ def decode_split(
     maker = FastExporter("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
     times = _PacketTimes(np, cols, data, base, clock)
-    offsets_seen: List[Any] = []
     per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
     for (set_id, cls), parts in pieces.items():
         offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
@@ -457,40 +456,29 @@ def decode_split(
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
-        offsets_seen.append(offs)
         per_set.setdefault(set_id, []).append((key, offs, idx, table))
     for set_id, tables in per_set.items():
         result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log)
-    if offsets_seen:
-        packets = np.unique(np.concatenate(offsets_seen))
-        result.packets = int(len(packets))
+    packets = _packet_offsets(np, cols, base)
+    packets = packets[(packets >= start) & (packets < end)]
+    result.packets = int(len(packets))
+    if len(packets):
         t = times.t_ns_of(packets)
-        if t is not None:
-            valid = ~np.isnan(t) if t.dtype.kind == "f" else None
-            vals = t[valid] if valid is not None else t
-            if len(vals):
-                result.first_t_ns, result.last_t_ns = int(vals.min()), int(vals.max())
-    # packets of other sets (command replies, sets without tables) count too
-    result.packets += _other_packets(np, cols, base, start, end, set(per_set))
+        if len(t):
+            result.first_t_ns, result.last_t_ns = int(t.min()), int(t.max())
     return result
 
 
-def _other_packets(np: Any, cols: Any, base: int, start: int, end: int, counted: Set[int]) -> int:
-    """Packets in [start, end) of sets without data tables (replies, ...): distinct offsets."""
-    from .tools import _DATA_SETS
-
-    offs: List[int] = []
-    for off, _k, entry in cols.others:
-        set_id = getattr(entry, "set", None)
-        o = off + base
-        if start <= o < end and set_id is not None and set_id not in _DATA_SETS:
-            offs.append(o)
-    for (set_id, _d), t in cols.tables.items():
-        if set_id in _DATA_SETS or t.rows == 0:
-            continue
-        a = np.frombuffer(t.offsets, dtype=np.int64) + base
-        offs.extend(int(x) for x in a[(a >= start) & (a < end)])
-    return len(set(offs))
+def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
+    """The sorted log offsets of the packets of a decoded window: those of its field entries (in
+    a table or among the others; a packet with an empty payload has none and is not counted)."""
+    parts = [np.frombuffer(t.offsets, dtype=np.int64) for t in cols.tables.values() if t.rows]
+    if cols.others:
+        parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
+    if not parts:
+        return np.zeros(0, dtype=np.int64)
+    out: Any = np.unique(np.concatenate(parts)) + base
+    return out
 
 
 def _table(np: Any, pa: Any, schema: Any, times: Any, offs: Any, log: str, values: List[Any]) -> Any:
@@ -523,7 +511,7 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
     new = np.ones(n, dtype=bool)
     keyed = np.zeros(n, dtype=bool)
     same = np.ones(max(n - 1, 0), dtype=bool)
-    for key, offs, idx, table in tables:
+    for key, offs, _idx, table in tables:
         if key[1] not in TIMESTAMPS or key[0] == set_id:
             continue
         first = np.ones(len(offs), dtype=bool)
