@@ -28,7 +28,7 @@ import importlib
 import os
 import re
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Set, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
 from . import _columns, registry
 from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
