@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import csv
+import datetime
 import importlib
 import os
 import random
@@ -65,11 +66,14 @@ def messy_log() -> bytes:
 
 
 def union_of_splits(dsm, data: bytes, split_bytes: int):
+    """Every split decoded with its clock from the log's clock map (the two phases)."""
     size = len(data)
+    read_at = lambda o, n: data[o : o + n]  # noqa: E731
+    clocks = dsm.clock_maps(read_at, size, split_bytes)
     results = []
-    for start, end in dsm.splits(size, split_bytes):
-        window, base = dsm.read_split(lambda o, n: data[o : o + n], size, start, end)
-        results.append(dsm.decode_split(window, base, start, end, None, None, "L", size))
+    for k, (start, end) in enumerate(dsm.splits(size, split_bytes)):
+        window, base = dsm.read_split(read_at, size, start, end)
+        results.append(dsm.decode_split(window, base, start, end, clocks[k], None, "L", size))
     return results
 
 
@@ -108,6 +112,75 @@ def test_splits_decode_every_packet_exactly_once(monkeypatch, split_bytes):
     assert sum(r.skipped_bytes for r in parts) == whole.skipped_bytes
     assert sum(r.bad_checksums for r in parts) == whole.bad_checksums
     assert [r.truncated for r in parts] == [False] * (len(parts) - 1) + [True]
+
+
+# UTC 2026-11-27 23:59:59.5 as GPS week and time of week, worked out with datetime (not the
+# dataset's or timebase's code): GPS = UTC + 18 leap seconds (IERS Bulletin C, since 2017).
+UTC0 = datetime.datetime(2026, 11, 27, 23, 59, 59, 500000, tzinfo=datetime.timezone.utc)
+UTC0_NS = (
+    (UTC0 - datetime.datetime(1970, 1, 1, tzinfo=datetime.timezone.utc)) // datetime.timedelta(microseconds=1) * 1000
+)
+GPS0 = UTC0 + datetime.timedelta(seconds=18) - datetime.datetime(1980, 1, 6, tzinfo=datetime.timezone.utc)
+WEEK0, TOW0 = divmod(GPS0.total_seconds(), 604800)
+DEV0 = 5_000_000_000
+
+
+def timed_log(n: int = 30) -> bytes:
+    """A filter packet with the device clock and a valid GPS time (the anchor), then sensor
+    packets every 100 ms with the device clock only, across UTC midnight."""
+    mod = pkg()
+    shared, sensor, filter_data = (
+        importlib.import_module(f"mipcodec.{m}") for m in ("shared", "sensor", "filter_data")
+    )
+    out = mod.framing.build_packet(
+        0x82,
+        shared.ReferenceTimestamp(nanoseconds=DEV0),
+        filter_data.GpsTimestamp(tow=TOW0, week_number=int(WEEK0), valid_flags=1),
+    )
+    for i in range(n):
+        out += mod.framing.build_packet(
+            0x80,
+            shared.ReferenceTimestamp(nanoseconds=DEV0 + i * 100_000_000),
+            sensor.ScaledAccel(scaled_accel=[0.0, 0.0, float(i)]),
+        )
+    return out
+
+
+def test_time_columns_and_date_partitions(tmp_path):
+    """t_ns / time from the GPS anchor through the device clock (UTC0 + i * 100 ms), the device
+    clock kept raw, GPS week and time of week where the packet carries them, and rows partitioned
+    by UTC date: the same over splits as over the whole log."""
+    dsm = ds()
+    data = timed_log()
+    want = [UTC0_NS + i * 100_000_000 for i in range(30)]
+    for split in (len(data), 97, 31):
+        rows = rows_by_table(union_of_splits(dsm, data, split))
+        accel = rows["sensor.scaled_accel"]
+        assert [r["t_ns"] for r in accel] == want, split
+        assert [r["device_ns"] for r in accel] == [DEV0 + i * 100_000_000 for i in range(30)]
+        assert {r["gps_week"] for r in accel} == {None}
+        gps = rows["filter_data.gps_timestamp"]
+        assert [(r["gps_week"], r["gps_tow"], r["t_ns"]) for r in gps] == [
+            (int(WEEK0), ("f", struct.pack(">d", TOW0)), UTC0_NS)
+        ]
+    log = tmp_path / "t.bin"
+    log.write_bytes(data)
+    run = export_dataset_cli(tmp_path / "ds", str(log), extra=("--model", "3DM-GX5-45", "--serial", "SN1"))
+    assert run.returncode == 0, run.stderr
+    t = read_dataset(tmp_path / "ds", "sensor.scaled_accel")
+    by_date = {}
+    for r in t.to_pylist():
+        by_date.setdefault(r["date"], []).append(r["time"])
+    assert sorted(by_date) == ["2026-11-27", "2026-11-28"]
+    assert len(by_date["2026-11-27"]) == 5  # 23:59:59.5 .. 23:59:59.9
+    assert all(x.date() == datetime.date(2026, 11, 28) for x in by_date["2026-11-28"])
+    assert set(t.column("model").to_pylist()) == {"3DM-GX5-45"} and set(t.column("serial").to_pylist()) == {"SN1"}
+    files = read_dataset(tmp_path / "ds", "_files").to_pylist()
+    assert files[0]["first_t_ns"] == UTC0_NS and files[0]["last_t_ns"] == want[-1]
+    assert files[0]["status"] == "ok" and files[0]["packets"] == 31
+    part = next((tmp_path / "ds" / "sensor.scaled_accel").rglob("*.parquet"))
+    times = pq.read_table(part).column("t_ns").to_pylist()
+    assert times == sorted(times)
 
 
 def test_whole_log_counts_match_info(tmp_path):
