@@ -63,6 +63,8 @@ RUNTIME_FILES = [
     "query.py",
     "transport.py",
     "tools.py",
+    "dataset.py",
+    "timebase.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
@@ -717,7 +719,16 @@ def _columns_context(proto: dict) -> dict:
             if q.get("alias") in columns.SHAPES and q["count"] and q["count"].get("value") == columns.SIZES[q["alias"]]
         }
         key = f"(0x{s['id']:02X}, 0x{f['id']:02X}, {pyrepr(v['device'])})"
-        layouts.append({"key": key, "columns": cols, "shapes": pyrepr(shapes), "title": f["title"]})
+        descriptions = tuple(c.description for c in columns.layout_columns(proto, f, v))
+        layouts.append(
+            {
+                "key": key,
+                "columns": cols,
+                "shapes": pyrepr(shapes),
+                "title": f["title"],
+                "descriptions": pyrepr(descriptions),
+            }
+        )
     used = {c["enum"] for lay in layouts for c in lay["columns"] if c["kind"] == "enum"}
     enums = [
         {"name": name, "values": sorted(values.items())}
@@ -731,6 +742,7 @@ def _columns_context(proto: dict) -> dict:
             {"set": f"0x{t[0]:02X}", "descriptor": f"0x{t[1]:02X}", "attr": py_attr(t[2]), "per_second": t[3]}
             for t in columns.time_sources(proto)
         ],
+        "time_facts": columns.time_facts(proto, py_attr),
     }
 
 

@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "4187b8988a13606c"
+SPEC_HASH = "a521f0b378e9769c"
 
 __all__ = [
     "SPEC_HASH",
