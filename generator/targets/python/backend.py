@@ -62,6 +62,7 @@ RUNTIME_FILES = [
     "transport.py",
     "tools.py",
     "dataset.py",
+    "spark.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
