@@ -13,7 +13,8 @@ list of `Column`s, one per value a row holds:
 - what has no fixed shape (counted and remaining arrays, unions, strings) is one `json` column;
 - units come from the parameter (`[g]` in the header), enum value names from the enum type.
 
-`time_sources(proto)` says which shared field and parameter give a packet its time in seconds.
+`time_sources(proto)` says which shared field and parameter give a packet its time in seconds;
+`time_facts(proto)` gives the time model's tables (the IR's `time` entry, the spec's `time` section).
 """
 
 from __future__ import annotations
@@ -145,3 +146,26 @@ def time_sources(proto: dict) -> list[tuple[int, int, str, int]]:
                     break
     found.sort(key=lambda t: (t[3] == 1, t[1]))
     return found
+
+
+def time_facts(proto: dict, attr=lambda name: name) -> dict:
+    """The IR's `time` entry as the time model's tables: per kind (`gps_time`, `device_clock`,
+    `leap_seconds`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
+    parameter names through `attr` (a back end's attribute naming)."""
+    t = proto.get("time") or {}
+    out: dict = {}
+    for kind in ("gps_time", "device_clock", "leap_seconds"):
+        rows = []
+        for e in t.get(kind, []):
+            row = {"set": f"0x{e['set']:02X}", "descriptor": f"0x{e['descriptor']:02X}"}
+            for key in ("tow", "week", "valid_flags", "param"):
+                if key in e:
+                    row[key] = attr(e[key])
+            for key in ("mask", "inverted"):
+                if key in e:
+                    row[key] = f"0x{e[key]:04X}"
+            if "per_second" in e:
+                row["per_second"] = e["per_second"]
+            rows.append(row)
+        out[kind] = rows
+    return out

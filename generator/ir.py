@@ -32,6 +32,7 @@ from .passes import (
     settings,
     simulation,
     size_limits,
+    time_facts,
     value_paths,
     variants,
 )
@@ -51,6 +52,7 @@ PASSES = (
     size_limits,  # every layout's largest encoding fits one field (framing max_field_data)
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
+    time_facts,  # the fields giving a packet its GPS time, device clock and leap seconds
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
     settings,  # the settings files' keyed reads and non-settings (device command line), checked
     capabilities,  # per device, the commands and data it supports (the descriptor lists)

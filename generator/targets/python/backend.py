@@ -62,6 +62,7 @@ RUNTIME_FILES = [
     "transport.py",
     "tools.py",
     "dataset.py",
+    "timebase.py",
     "spark.py",
     "budget.py",
     "settings.py",
@@ -731,6 +732,7 @@ def _columns_context(proto: dict) -> dict:
             {"set": f"0x{t[0]:02X}", "descriptor": f"0x{t[1]:02X}", "attr": py_attr(t[2]), "per_second": t[3]}
             for t in columns.time_sources(proto)
         ],
+        "time_facts": columns.time_facts(proto, py_attr),
     }
 
 

@@ -11,7 +11,13 @@ know about the data fields, taken from the spec rather than written by hand:
 - `ENUMS[type name]`: value -> name of every enum a column uses;
 - `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
   packet its time (value / counts seconds), in order of preference;
-- `TITLES[(set, descriptor, device)]`: the field's title.
+- `TITLES[(set, descriptor, device)]`: the field's title;
+- the time model's facts (the spec's `time` section; `mipcodec.timebase`): `GPS_TIMES`
+  (set, descriptor, time-of-week attribute, week attribute, valid-flags attribute, bits that must
+  be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
+  of the protocol's shared data placeholder: that field in any data set); `DEVICE_CLOCKS` (set, descriptor,
+  attribute, counts per second) of the device clock; `LEAP_SECONDS` (set, descriptor, attribute,
+  valid-flags attribute, bits that must be set) of the GPS - UTC leap second reports.
 """
 
 from __future__ import annotations
@@ -1730,4 +1736,20 @@ TIMES: Tuple[Tuple[int, int, str, int], ...] = (
     (0xFF, 0xD5, "nanoseconds", 1000000000),
     (0xFF, 0xD7, "nanoseconds", 1000000000),
     (0xFF, 0xD3, "tow", 1),
+)
+
+GPS_TIMES: Tuple[Tuple[int, int, str, str, str, int, int], ...] = (
+    (0xFF, 0xD3, "tow", "week_number", "valid_flags", 0x0003, 0x0000),
+    (0x80, 0x12, "tow", "week_number", "valid_flags", 0x0004, 0x0000),
+    (0x82, 0x11, "tow", "week_number", "valid_flags", 0x0001, 0x0000),
+    (0x81, 0x09, "tow", "week_number", "valid_flags", 0x0003, 0x0000),
+    (0x91, 0x09, "tow", "week_number", "valid_flags", 0x0003, 0x0000),
+    (0x92, 0x09, "tow", "week_number", "valid_flags", 0x0003, 0x0000),
+)
+
+DEVICE_CLOCKS: Tuple[Tuple[int, int, str, int], ...] = ((0xFF, 0xD5, "nanoseconds", 1000000000),)
+
+LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = (
+    (0x91, 0x11, "leap_seconds", "valid_flags", 0x0002),
+    (0x92, 0x11, "leap_seconds", "valid_flags", 0x0002),
 )

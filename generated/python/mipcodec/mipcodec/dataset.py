@@ -28,7 +28,7 @@ import importlib
 import os
 import re
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Set, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
 from . import _columns, registry
 from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
@@ -413,8 +413,8 @@ def decode_split(
     """Decode the packets whose first byte is in [start, end) from `data` (the bytes of the log
     from offset `base`, as `read_split` gives them) into the dataset's tables.
 
-    `clock` is the split's clock map (timebase) for the UTC time of packets that carry only the
-    device clock; `identity` the log's (`log_identity`); `log` its id; `size` the log's size (the
+    `clock` is the split's clock (`clock_maps(...)[k]`, a timebase.SplitClock; None: the split
+    is taken as a whole log, `whole_clock`) for the UTC time of packets with only the device clock; `identity` the log's (`log_identity`); `log` its id; `size` the log's size (the
     split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
     np = _need("numpy")
     pa = _need("pyarrow")
@@ -435,8 +435,9 @@ def decode_split(
             result.truncated = _ends_in_packet(bytes(skip.data))
     maker = FastExporter("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
-    times = _PacketTimes(np, cols, data, base, clock)
-    offsets_seen: List[Any] = []
+    times = _PacketTimes(
+        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
+    )
     per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
     for (set_id, cls), parts in pieces.items():
         offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
@@ -457,40 +458,29 @@ def decode_split(
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
-        offsets_seen.append(offs)
         per_set.setdefault(set_id, []).append((key, offs, idx, table))
     for set_id, tables in per_set.items():
         result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log)
-    if offsets_seen:
-        packets = np.unique(np.concatenate(offsets_seen))
-        result.packets = int(len(packets))
+    packets = _packet_offsets(np, cols, base)
+    packets = packets[(packets >= start) & (packets < end)]
+    result.packets = int(len(packets))
+    if len(packets):
         t = times.t_ns_of(packets)
-        if t is not None:
-            valid = ~np.isnan(t) if t.dtype.kind == "f" else None
-            vals = t[valid] if valid is not None else t
-            if len(vals):
-                result.first_t_ns, result.last_t_ns = int(vals.min()), int(vals.max())
-    # packets of other sets (command replies, sets without tables) count too
-    result.packets += _other_packets(np, cols, base, start, end, set(per_set))
+        if len(t):
+            result.first_t_ns, result.last_t_ns = int(t.min()), int(t.max())
     return result
 
 
-def _other_packets(np: Any, cols: Any, base: int, start: int, end: int, counted: Set[int]) -> int:
-    """Packets in [start, end) of sets without data tables (replies, ...): distinct offsets."""
-    from .tools import _DATA_SETS
-
-    offs: List[int] = []
-    for off, _k, entry in cols.others:
-        set_id = getattr(entry, "set", None)
-        o = off + base
-        if start <= o < end and set_id is not None and set_id not in _DATA_SETS:
-            offs.append(o)
-    for (set_id, _d), t in cols.tables.items():
-        if set_id in _DATA_SETS or t.rows == 0:
-            continue
-        a = np.frombuffer(t.offsets, dtype=np.int64) + base
-        offs.extend(int(x) for x in a[(a >= start) & (a < end)])
-    return len(set(offs))
+def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
+    """The sorted log offsets of the packets of a decoded window: those of its field entries (in
+    a table or among the others; a packet with an empty payload has none and is not counted)."""
+    parts = [np.frombuffer(t.offsets, dtype=np.int64) for t in cols.tables.values() if t.rows]
+    if cols.others:
+        parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
+    if not parts:
+        return np.zeros(0, dtype=np.int64)
+    out: Any = np.unique(np.concatenate(parts)) + base
+    return out
 
 
 def _table(np: Any, pa: Any, schema: Any, times: Any, offs: Any, log: str, values: List[Any]) -> Any:
@@ -523,7 +513,7 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
     new = np.ones(n, dtype=bool)
     keyed = np.zeros(n, dtype=bool)
     same = np.ones(max(n - 1, 0), dtype=bool)
-    for key, offs, idx, table in tables:
+    for key, offs, _idx, table in tables:
         if key[1] not in TIMESTAMPS or key[0] == set_id:
             continue
         first = np.ones(len(offs), dtype=bool)
@@ -593,54 +583,26 @@ def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
 
 
 class _PacketTimes:
-    """The time columns of the packets of a decoded window: the device clock (reference
-    timestamp, ns) and GPS week / time of week the packet carries, as sent, and t_ns (UTC)."""
+    """The time columns of the packets of a decoded window (timebase: the split's clock map):
+    t_ns (UTC), the device clock and the GPS week / time of week the packet carries, as sent."""
 
-    def __init__(self, np: Any, cols: Any, data: Any, base: int, clock: Any) -> None:
+    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any) -> None:
         self.np = np
-        self.clock = clock
-        self.device = _first_values(np, cols, base, _device_source())
-        gps = _gps_source()
-        self.tow = _first_values(np, cols, base, (gps[0], gps[1], gps[2]) if gps else None)
-        self.week = _first_values(np, cols, base, (gps[0], gps[1], gps[3]) if gps else None)
-        self.flags = _first_values(np, cols, base, (gps[0], gps[1], gps[4]) if gps and gps[4] else None)
-        self.timebase = _timebase()
-
-    def _lookup(self, source: Any, offs: Any, dtype: Any) -> Tuple[Any, Any]:
-        np = self.np
-        vals = np.zeros(len(offs), dtype=dtype)
-        hit = np.zeros(len(offs), dtype=bool)
-        if source is None or len(source[0]) == 0 or len(offs) == 0:
-            return vals, hit
-        pos = np.searchsorted(source[0], offs)
-        pos[pos >= len(source[0])] = 0
-        hit = source[0][pos] == offs
-        vals = np.where(hit, source[1][pos], 0).astype(dtype)
-        return vals, hit
+        self.block = clock.block(cols, base, start, end)
 
     def columns(self, offs: Any) -> Dict[str, Tuple[Any, Any]]:
-        """name -> (values, valid) of device_ns, gps_week, gps_tow, t_ns for packet offsets."""
-        np = self.np
-        dev = self._lookup(self.device, offs, np.int64)
-        week = self._lookup(self.week, offs, np.int32)
-        tow = self._lookup(self.tow, offs, np.float64)
-        t_ns = self._utc(offs, dev, week, tow)
-        return {"device_ns": dev, "gps_week": week, "gps_tow": tow, "t_ns": t_ns}
-
-    def _utc(self, offs: Any, dev: Any, week: Any, tow: Any) -> Tuple[Any, Any]:
-        """UTC ns of each packet: the time model (timebase) when the package has it."""
-        np = self.np
-        tb = self.timebase
-        if tb is not None and hasattr(tb, "utc_ns_columns"):
-            flags = self._lookup(self.flags, offs, np.int64)
-            out: Tuple[Any, Any] = tb.utc_ns_columns(offs, dev, week, tow, flags, self.clock)
-            return out
-        return np.zeros(len(offs), dtype=np.int64), np.zeros(len(offs), dtype=bool)
+        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets."""
+        got = self.block.lookup(offs)
+        return {
+            "t_ns": (got["t_ns"], got["t_valid"]),
+            "device_ns": (got["device_ns"], got["device_valid"]),
+            "gps_week": (got["gps_week"], got["gps_valid"]),
+            "gps_tow": (got["gps_tow"], got["gps_valid"]),
+        }
 
     def t_ns_of(self, offs: Any) -> Any:
-        np = self.np
         vals, valid = self.columns(offs)["t_ns"]
-        return vals[valid] if valid.any() else np.zeros(0, dtype=np.int64)
+        return vals[valid]
 
     def row_times(self, packets: Any, group: Any, rows: int) -> Dict[str, Tuple[Any, Any]]:
         """Per joined row: each time column from the row's first packet that has it."""
@@ -650,7 +612,7 @@ class _PacketTimes:
         for name, (vals, valid) in cols.items():
             rv = np.zeros(rows, dtype=vals.dtype)
             rk = np.zeros(rows, dtype=bool)
-            # the last write wins: write in reverse so the first valid packet of a group stays
+            # the last write wins: written in reverse, the first valid packet of a group stays
             idx = np.flatnonzero(valid)[::-1]
             rv[group[idx]] = vals[idx]
             rk[group[idx]] = True
@@ -665,86 +627,24 @@ class _PacketTimes:
 
         cols = given if given is not None else self.columns(offs)
         t_ns, t_ok = cols["t_ns"]
+        t_ns = np.asarray(t_ns, dtype=np.int64)
         out = [
-            _arrow(np, pa, t_ns.astype(np.int64), t_ok),
-            _arrow(np, pa, (t_ns // 1000).astype(np.int64), t_ok).cast(pa.timestamp("us", tz="UTC")),
+            _arrow(np, pa, t_ns, t_ok),
+            _arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
             _arrow(np, pa, np.asarray(offs, dtype=np.int64)),
-            pa.array([log] * len(offs), type=pa.string()) if len(offs) else pa.array([], type=pa.string()),
+            pa.array([log] * len(offs), type=pa.string()),
         ]
         for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
             vals, ok = cols[name]
-            out.append(_arrow(np, pa, vals.astype(dtype), ok))
+            out.append(_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
         return out
 
 
-def _timebase() -> Any:
-    try:
-        return importlib.import_module(".timebase", __package__)
-    except ImportError:
-        return None
+def whole_clock(data: bytes, base: int, start: int, end: int) -> Any:
+    """The clock of a split decoded on its own as a whole log (no split before it)."""
+    from . import timebase
 
-
-def _device_source() -> Optional[Tuple[int, int, str]]:
-    """(set, descriptor, attribute) of the device clock in ns: the reference timestamp (the first
-    time source of the sample rule counted in ns)."""
-    for s, d, attr, per_second in _columns.TIMES:
-        if per_second == 1_000_000_000:
-            return s, d, attr
-    return None
-
-
-def _gps_source() -> Optional[Tuple[int, int, str, str, Optional[str]]]:
-    """(set, descriptor, tow attribute, week attribute, valid flags attribute) of the shared GPS
-    timestamp (the time source of the sample rule in seconds whose field has a week number)."""
-    for s, d, attr, per_second in _columns.TIMES:
-        if per_second != 1:
-            continue
-        specs = _columns.COLUMNS.get((s, d, None), ())
-        paths = [str(spec[1][0]) for spec in specs]
-        week = next((p for p in paths if "week" in p), None)
-        flags = next((p for p in paths if "valid" in p), None)
-        if week is not None:
-            return s, d, attr, week, flags
-    return None
-
-
-def _first_values(np: Any, cols: Any, base: int, source: Optional[Tuple[int, int, str]]) -> Any:
-    """(sorted packet offsets, values) of one parameter of one field in the window (its first
-    occurrence in a packet); None when the protocol has no such source."""
-    if source is None:
-        return None
-    s, d, attr = source
-    offs: List[Any] = []
-    vals: List[Any] = []
-    for (_set, _d), t in cols.tables.items():
-        if t.cls.SET == s and t.cls.DESCRIPTOR == d and t.rows:
-            arrays = t.arrays()
-            if attr in arrays:
-                offs.append(np.frombuffer(t.offsets, dtype=np.int64) + base)
-                vals.append(np.asarray(arrays[attr]).astype(np.float64 if arrays[attr].dtype.kind == "f" else np.int64))
-    from .packets import DecodedField
-
-    extra_o, extra_v = [], []
-    for off, k, entry in cols.others:
-        if k >= 0 and isinstance(entry, DecodedField):
-            cls = type(entry.value)
-            if cls.SET == s and cls.DESCRIPTOR == d:
-                v = getattr(entry.value, attr, None)
-                if v is not None:
-                    extra_o.append(off + base)
-                    extra_v.append(v)
-    if extra_o:
-        offs.append(np.array(extra_o, dtype=np.int64))
-        vals.append(np.array(extra_v))
-    if not offs:
-        return (np.zeros(0, dtype=np.int64), np.zeros(0))
-    o = np.concatenate(offs)
-    v = np.concatenate([np.asarray(x, dtype=np.float64) if any(y.dtype.kind == "f" for y in vals) else x for x in vals])
-    order = np.argsort(o, kind="stable")
-    o, v = o[order], v[order]
-    first = np.ones(len(o), dtype=bool)
-    first[1:] = o[1:] != o[:-1]
-    return o[first], v[first]
+    return timebase.ClockMap.from_splits([timebase.split_anchors(data, base, start, end)]).split(0)
 
 
 def _bad_checksums(run: bytes, starts: int) -> int:
@@ -954,10 +854,10 @@ def export_log(
     parts: List[str] = []
     rows: Dict[str, int] = {}
     try:
-        clock = _clock_maps(read_at, size, split_bytes)
+        clock = clock_maps(read_at, size, split_bytes)
         for k, (start, end) in enumerate(splits(size, split_bytes)):
             data, base = read_split(read_at, size, start, end)
-            r = decode_split(data, base, start, end, clock[k] if clock else None, identity, log, size)
+            r = decode_split(data, base, start, end, clock[k], identity, log, size)
             parts += write_split(out_dir, r)
             for name, t in r.tables.items():
                 rows[name] = rows.get(name, 0) + t.num_rows
@@ -973,18 +873,17 @@ def export_log(
     return row, parts, rows
 
 
-def _clock_maps(read_at: ReadAt, size: int, split_bytes: int) -> Optional[List[Any]]:
-    """Each split's clock map (timebase's two phases: the anchors of every split, then each
-    split's starting anchor), or None when the package has no time model."""
-    tb = _timebase()
-    if tb is None or not hasattr(tb, "split_anchors") or not hasattr(tb, "ClockMap"):
-        return None
+def clock_maps(read_at: ReadAt, size: int, split_bytes: int = SPLIT_BYTES) -> List[Any]:
+    """Each split's clock (timebase's two phases: the anchors of every split, `split_anchors`,
+    then `ClockMap.from_splits` gives each split its starting state): `decode_split`'s `clock`."""
+    from . import timebase
+
     anchors = []
     for start, end in splits(size, split_bytes):
         data, base = read_split(read_at, size, start, end)
-        anchors.append(tb.split_anchors(data, base, start, end))
-    maps: List[Any] = tb.ClockMap.from_splits(anchors)
-    return maps
+        anchors.append(timebase.split_anchors(data, base, start, end))
+    cmap = timebase.ClockMap.from_splits(anchors)
+    return [cmap.split(k) for k in range(len(anchors))]
 
 
 def export_dataset(
@@ -1027,6 +926,8 @@ __all__ = [
     "read_split",
     "log_identity",
     "decode_split",
+    "clock_maps",
+    "whole_clock",
     "write_split",
     "remove_parts",
     "files_row",

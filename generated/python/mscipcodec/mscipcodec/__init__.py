@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "5b6e387d174154c6"
+SPEC_HASH = "400a8b0d6e1457be"
 
 __all__ = [
     "SPEC_HASH",

@@ -1433,16 +1433,39 @@ def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
 
 
 def info(args: argparse.Namespace) -> int:
+    from . import timebase
+
+    # The time report's clock map: a regular file is read twice (first its anchors, so rows before
+    # an epoch's first anchor are timed as export times them); stdin or a device file once, where
+    # such rows have no time (docs/log-to-csv.md, "Time").
+    regular = args.log != "-" and os.path.isfile(args.log)
+    if regular:
+        found = (
+            timebase.packet_time(e)
+            for e in events(Source(args.log, progress=False), args.device)
+            if isinstance(e, Packet)
+        )
+        clock = timebase.ClockMap.from_splits([timebase.summarize(found)]).split(0)
+    else:
+        clock = timebase.SplitClock()
+    report = timebase.TimeReport(_DATA_SETS)
     source = Source(args.log)
     summary = Summary()
     stream = Events(args.device)
+
+    def add(e: Any) -> None:
+        summary.add(e)
+        if isinstance(e, Packet):
+            pt = timebase.packet_time(e)
+            report.add(e, pt, clock.step(pt))
+
     for chunk in source.chunks():
         summary.bytes += len(chunk)
         for e in stream.feed(chunk):
-            summary.add(e)
+            add(e)
     for e in stream.flush():
-        summary.add(e)
-    print("\n".join(summary.lines()))
+        add(e)
+    print("\n".join(summary.lines() + report.lines()))
     return 0
 
 

@@ -1,0 +1,163 @@
+"""Pass: the protocol file's `time` section, which fields give a packet its time (the time model
+of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-csv.md "Time").
+
+- `gps_time`: fields carrying a GPS time of their own, in order of preference: `field`
+  (`set.field`), the parameters `tow` (a double in s), `week` (an unsigned integer in weeks) and
+  `valid_flags` (a bitfield), `valid` (members that must all be set for the time to be valid) and
+  optionally `invalid` (members that must all be clear);
+- `device_clock`: fields carrying the device's own monotonic clock: `field`, `param` (an unsigned
+  integer in ns, us, ms or s);
+- `leap_seconds`: fields reporting GPS - UTC: `field`, `param` (an unsigned integer in s),
+  `valid_flags` and `valid` as above.
+
+Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
+per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
+be set, `inverted`: bits that must be clear); without the section it is empty lists.
+"""
+
+from __future__ import annotations
+
+from .context import Context
+
+_UNSIGNED = {"u8", "u16", "u32", "u64"}
+_CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
+
+
+def run(ctx: Context) -> None:
+    spec = ctx.pf.data.get("time")
+    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": []}
+    if spec is None:
+        return
+    check = _Check(ctx)
+    for kind in ("gps_time", "device_clock", "leap_seconds"):
+        for i, entry in enumerate(spec.get(kind) or []):
+            out = check.entry(kind, ("time", kind, i), entry)
+            if out is not None:
+                ctx.time[kind].append(out)
+
+
+class _Check:
+    def __init__(self, ctx: Context) -> None:
+        self.ctx = ctx
+        self.sf = ctx.pf
+
+    def err(self, path: tuple, message: str, expected: str) -> None:
+        self.ctx.err(self.sf, path, message, expected)
+
+    def entry(self, kind: str, path: tuple, e: dict) -> dict | None:
+        found = self.field(path + ("field",), e["field"])
+        sources = self.ctx.check_sources(self.sf, path + ("sources",), e["sources"])
+        if found is None:
+            return None
+        s, f = found
+        out = {"field": e["field"], "set": s["id"], "descriptor": f["id"], "sources": sources}
+        ok = True
+        if kind == "gps_time":
+            ok &= self.param(
+                path + ("tow",),
+                f,
+                e["tow"],
+                lambda q: _prim(q) in ("double", "f64") and q["units"] == "s",
+                "a double parameter in s",
+            )
+            ok &= self.param(
+                path + ("week",),
+                f,
+                e["week"],
+                lambda q: _prim(q) in _UNSIGNED and q["units"] == "weeks",
+                "an unsigned integer parameter in weeks",
+            )
+            masks = self.flags(path, f, e)
+            if masks is None:
+                return None
+            out.update(tow=e["tow"], week=e["week"], valid_flags=e["valid_flags"], mask=masks[0], inverted=masks[1])
+        elif kind == "device_clock":
+            ok &= self.param(
+                path + ("param",),
+                f,
+                e["param"],
+                lambda q: _prim(q) in _UNSIGNED and q["units"] in _CLOCK_UNITS,
+                "an unsigned integer parameter in ns, us, ms or s",
+            )
+            if ok:
+                q = _params(f, e["param"])[0]
+                out.update(param=e["param"], per_second=_CLOCK_UNITS[q["units"]])
+        else:
+            ok &= self.param(
+                path + ("param",),
+                f,
+                e["param"],
+                lambda q: _prim(q) in _UNSIGNED and q["units"] == "s",
+                "an unsigned integer parameter in s",
+            )
+            masks = self.flags(path, f, e)
+            if masks is None or masks[1]:
+                if masks is not None:
+                    self.err(
+                        path + ("invalid",), "time leap_seconds: 'invalid' is not supported here", "valid members only"
+                    )
+                return None
+            out.update(param=e["param"], valid_flags=e["valid_flags"], mask=masks[0])
+        return out if ok else None
+
+    def field(self, path: tuple, ref: str) -> tuple[dict, dict] | None:
+        set_name, _, field_name = ref.partition(".")
+        for s in self.ctx.sets:
+            if s["name"] != set_name or s["kind"] != "data":
+                continue
+            for f in s["fields"]:
+                if f["name"] == field_name and f["role"] == "data":
+                    return s, f
+        self.err(path, f"time: '{ref}' is not a data field", "set.field of a data set")
+        return None
+
+    def param(self, path: tuple, f: dict, name: str, fits, what: str) -> bool:
+        qs = _params(f, name)
+        if not qs or any(q is None or q["count"] is not None or q["optional"] or not fits(q) for q in qs):
+            self.err(path, f"time: '{name}' of {f['name']} is not {what} (in every layout)", what)
+            return False
+        return True
+
+    def flags(self, path: tuple, f: dict, e: dict) -> tuple[int, int] | None:
+        name = e["valid_flags"]
+        qs = _params(f, name)
+        if not qs or any(q is None or q["type"]["kind"] != "bitfield" for q in qs):
+            self.err(
+                path + ("valid_flags",),
+                f"time: '{name}' of {f['name']} is not a bitfield parameter",
+                "a bitfield parameter",
+            )
+            return None
+        types = {q["type"]["name"] for q in qs}
+        if len(types) != 1:
+            self.err(
+                path + ("valid_flags",),
+                f"time: '{name}' of {f['name']} has different types in its layouts",
+                "one bitfield type",
+            )
+            return None
+        members = {m["name"]: m for m in self.ctx.types[types.pop()]["members"]}
+        masks = []
+        for key in ("valid", "invalid"):
+            mask = 0
+            for j, m in enumerate(e.get(key) or []):
+                if m not in members or members[m]["reserved"]:
+                    self.err(
+                        path + (key, j), f"time: '{m}' is not a member of {name}", "a named member of the bitfield"
+                    )
+                    return None
+                mask |= members[m]["mask"]
+            masks.append(mask)
+        if not masks[0] and not masks[1]:
+            self.err(path + ("valid",), "time: no valid flag member given", "the members that say the value is valid")
+            return None
+        return masks[0], masks[1]
+
+
+def _params(f: dict, name: str) -> list[dict | None]:
+    """The parameter `name` in each layout of the field (None where a layout lacks it)."""
+    return [next((q for q in v["params"] if q["name"] == name), None) for v in f["variants"]]
+
+
+def _prim(q: dict) -> str | None:
+    return q["type"]["name"] if q["type"]["kind"] == "primitive" else None

@@ -1,0 +1,122 @@
+"""time_facts: the protocol file's `time` section (which fields give a packet its GPS time, its
+device clock and the GPS - UTC leap seconds), checked against the fields, parameters and flags."""
+
+from tiny_spec import PROTOCOL, build, data_set, errors
+
+FLAGS = """\
+bitfields:
+  - name: TimeFlags
+    type: u16
+    title: F
+    sources: [{manual: a.txt, line: 3}]
+    members:
+      - {name: tow_ok, bits: 0, description: d}
+      - {name: week_ok, bits: 1, description: d}
+      - {name: not_set, bits: 2, description: d}
+      - {name: reserved, bits: [3, 15], reserved: true, description: d}
+"""
+
+FIELDS = (
+    "  - {id: 0x12, name: gps_time, role: data, title: G, sources: [{manual: a.txt, line: 5}], params: ["
+    "{name: tow, type: double, units: s}, {name: week, type: u16, units: weeks}, {name: flags, type: TimeFlags},"
+    " {name: plain, type: u16}]}\n"
+    "  - {id: 0x13, name: clock, role: data, title: C, sources: [{manual: a.txt, line: 6}], params: ["
+    "{name: us, type: u64, units: us}, {name: secs, type: double, units: s}]}\n"
+    "  - {id: 0x14, name: leap, role: data, title: L, sources: [{manual: a.txt, line: 7}], params: ["
+    "{name: seconds, type: u8, units: s}, {name: flags, type: TimeFlags}]}\n"
+)
+
+GOOD = """\
+time:
+  gps_time:
+    - {field: sensor.gps_time, tow: tow, week: week, valid_flags: flags, valid: [tow_ok, week_ok], sources: [{manual: a.txt, line: 5}]}
+    - {field: sensor.gps_time, tow: tow, week: week, valid_flags: flags, invalid: [not_set], sources: [{manual: b.txt, line: 9}]}
+  device_clock:
+    - {field: sensor.clock, param: us, sources: [{manual: a.txt, line: 6}]}
+  leap_seconds:
+    - {field: sensor.leap, param: seconds, valid_flags: flags, valid: [week_ok], sources: [{manual: a.txt, line: 7}]}
+"""
+
+
+def _build(tmp_path, time: str):
+    return build(tmp_path, {"protocol.yaml": PROTOCOL + time, "sensor.yaml": data_set(FIELDS, FLAGS)}, "time_facts")
+
+
+def test_the_tables(tmp_path):
+    ctx = _build(tmp_path, GOOD)
+    assert errors(ctx) == []
+    gps = ctx.time["gps_time"]
+    # valid members tow_ok (bit 0) and week_ok (bit 1): mask 0b11; the second entry needs bit 2 clear
+    assert [
+        (g["set"], g["descriptor"], g["tow"], g["week"], g["valid_flags"], g["mask"], g["inverted"]) for g in gps
+    ] == [
+        (0x80, 0x12, "tow", "week", "flags", 0b011, 0),
+        (0x80, 0x12, "tow", "week", "flags", 0, 0b100),
+    ]
+    assert [(c["set"], c["descriptor"], c["param"], c["per_second"]) for c in ctx.time["device_clock"]] == [
+        (0x80, 0x13, "us", 1_000_000)
+    ]
+    assert [(e["descriptor"], e["param"], e["mask"]) for e in ctx.time["leap_seconds"]] == [(0x14, "seconds", 0b010)]
+    assert gps[1]["sources"] == [{"manual": "b.txt", "line": 9}]
+
+
+def test_without_the_section_the_tables_are_empty(tmp_path):
+    ctx = _build(tmp_path, "")
+    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": []}
+
+
+def _at(text: str, line_text: str, value: str) -> str:
+    """'protocol.yaml:LINE:COL' of `value` on the line of the time section holding `line_text`
+    (1-based; the section starts after PROTOCOL's lines)."""
+    lines = (PROTOCOL + text).splitlines()
+    n = next(i for i, line in enumerate(lines) if line_text in line)
+    return f"protocol.yaml:{n + 1}:{lines[n].index(value, lines[n].index(line_text)) + 1}"
+
+
+def test_an_unknown_field(tmp_path):
+    text = "time:\n  device_clock:\n    - {field: sensor.nothing, param: us, sources: [{manual: a.txt, line: 6}]}\n"
+    ctx = _build(tmp_path, text)
+    assert errors(ctx) == [
+        f"{_at(text, 'field:', 'sensor.nothing')}: error: time: 'sensor.nothing' is not a data field"
+        " (expected set.field of a data set)"
+    ]
+    assert ctx.time["device_clock"] == []
+
+
+def test_wrong_parameters(tmp_path):
+    text = (
+        "time:\n"
+        "  gps_time:\n"
+        "    - {field: sensor.gps_time, tow: week, week: tow, valid_flags: plain, valid: [tow_ok], sources: [{manual: a.txt, line: 5}]}\n"
+        "  device_clock:\n"
+        "    - {field: sensor.clock, param: secs, sources: [{manual: a.txt, line: 6}]}\n"
+        "  leap_seconds:\n"
+        "    - {field: sensor.leap, param: seconds, valid_flags: flags, valid: [reserved], sources: [{manual: c.txt, line: 7}]}\n"
+    )
+    ctx = _build(tmp_path, text)
+    assert errors(ctx) == [
+        f"{_at(text, 'tow: week', 'week')}: error: time: 'week' of gps_time is not a double parameter in s"
+        " (in every layout) (expected a double parameter in s)",
+        f"{_at(text, 'week: tow', 'tow')}: error: time: 'tow' of gps_time is not an unsigned integer parameter in"
+        " weeks (in every layout) (expected an unsigned integer parameter in weeks)",
+        f"{_at(text, 'valid_flags: plain', 'plain')}: error: time: 'plain' of gps_time is not a bitfield parameter"
+        " (expected a bitfield parameter)",
+        f"{_at(text, 'param: secs', 'secs')}: error: time: 'secs' of clock is not an unsigned integer parameter in"
+        " ns, us, ms or s (in every layout) (expected an unsigned integer parameter in ns, us, ms or s)",
+        f"{_at(text, 'manual: c.txt', 'c.txt')}: error: unknown manual 'c.txt' (expected one of the manuals listed"
+        " under devices in the protocol file: a.txt, b.txt)",
+        f"{_at(text, 'valid: [reserved]', 'reserved')}: error: time: 'reserved' is not a member of flags"
+        " (expected a named member of the bitfield)",
+    ]
+    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": []}
+
+
+def test_a_flag_rule_is_needed(tmp_path):
+    ctx = _build(
+        tmp_path,
+        "time:\n  gps_time:\n"
+        "    - {field: sensor.gps_time, tow: tow, week: week, valid_flags: flags, sources: [{manual: a.txt, line: 5}]}\n",
+    )
+    assert [e.split(": error: ")[1] for e in errors(ctx)] == [
+        "time: no valid flag member given (expected the members that say the value is valid)"
+    ]
