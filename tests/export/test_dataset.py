@@ -370,7 +370,7 @@ def test_metadata_from_the_spec(tmp_path):
     md = {k.decode(): v.decode() for k, v in f.metadata.items()}
     assert md["units"] == "g" and md["set"] == "0x80" and md["descriptor"] == "0x04"
     assert md["title"] == mod._columns.TITLES[(0x80, 0x04, None)]
-    assert md["description"]
+    assert md["description"] == "(x, y, z) acceleration."  # the parameter's description, spec/mip/sensor.yaml
     assert schema.names[:7] == ["t_ns", "time", "offset", "log", "device_ns", "gps_week", "gps_tow"]
     assert schema.field("time").type == pa.timestamp("us", tz="UTC")
     data = capture_bytes()[:3000]

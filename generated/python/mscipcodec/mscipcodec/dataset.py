@@ -479,8 +479,16 @@ def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
         parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
     if not parts:
         return np.zeros(0, dtype=np.int64)
-    out: Any = np.unique(np.concatenate(parts)) + base
+    out: Any = _sorted_unique(np, np.concatenate(parts)) + base
     return out
+
+
+def _sorted_unique(np: Any, a: Any) -> Any:
+    """The distinct values of an int64 array, sorted (np.unique without its hashing path)."""
+    a = np.sort(a, kind="stable")
+    keep = np.ones(len(a), dtype=bool)
+    keep[1:] = a[1:] != a[:-1]
+    return a[keep]
 
 
 def _table(np: Any, pa: Any, schema: Any, times: Any, offs: Any, log: str, values: List[Any]) -> Any:
@@ -507,7 +515,7 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
     consecutive packets of the set with the same sample key (the timestamp fields of the sample
     rule, equal values) make one row; no key, one row per packet; a column's first value wins."""
     schema = samples_schema(set_id)
-    packets = np.unique(np.concatenate([t[1] for t in tables]))
+    packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
     n = len(packets)
     # the sample key per packet: (present, values) of each TIMESTAMPS field
     new = np.ones(n, dtype=bool)
@@ -683,8 +691,8 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
             continue
         table = table.sort_by([("t_ns", "ascending"), ("offset", "ascending")])  # nulls last
         day = pc.strftime(table.column("time"), format="%Y-%m-%d")
-        dates = day.to_pylist()
-        for date in sorted({d for d in dates if d is not None}) + ([None] if None in dates else []):
+        dates = pc.unique(day).to_pylist()
+        for date in sorted(d for d in dates if d is not None) + ([None] if None in dates else []):
             mask = pc.is_null(day) if date is None else pc.equal(day, date)
             part = table.filter(mask).replace_schema_metadata({**(table.schema.metadata or {}), **meta})
             rel = os.path.join(

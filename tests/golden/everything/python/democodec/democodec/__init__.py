@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "c4b608c7ba308690"
+SPEC_HASH = "3e40d67251016611"
 
 __all__ = [
     "SPEC_HASH",

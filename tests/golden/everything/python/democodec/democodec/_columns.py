@@ -11,7 +11,13 @@ know about the data fields, taken from the spec rather than written by hand:
 - `ENUMS[type name]`: value -> name of every enum a column uses;
 - `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
   packet its time (value / counts seconds), in order of preference;
-- `TITLES[(set, descriptor, device)]`: the field's title.
+- `TITLES[(set, descriptor, device)]`: the field's title;
+- the time model's facts (the spec's `time` section; `democodec.timebase`): `GPS_TIMES`
+  (set, descriptor, time-of-week attribute, week attribute, valid-flags attribute, bits that must
+  be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
+  of the protocol's shared data placeholder: that field in any data set); `DEVICE_CLOCKS` (set, descriptor,
+  attribute, counts per second) of the device clock; `LEAP_SECONDS` (set, descriptor, attribute,
+  valid-flags attribute, bits that must be set) of the GPS - UTC leap second reports.
 """
 
 from __future__ import annotations
@@ -56,6 +62,19 @@ TITLES: Dict[Key, str] = {
     (0xFF, 0xD3, None): "Timestamp",
 }
 
+DESCRIPTIONS: Dict[Key, Tuple[str, ...]] = {
+    (0x90, 0x01, None): ("", "", "", "", "", "", ""),
+    (0x91, 0x03, None): ("", "", ""),
+    (0x92, 0x03, None): ("", "", ""),
+    (0xFF, 0xD3, None): ("",),
+}
+
 ENUMS: Dict[str, Dict[int, str]] = {}
 
 TIMES: Tuple[Tuple[int, int, str, int], ...] = ()
+
+GPS_TIMES: Tuple[Tuple[int, int, str, str, str, int, int], ...] = ()
+
+DEVICE_CLOCKS: Tuple[Tuple[int, int, str, int], ...] = ()
+
+LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = ()
