@@ -28,8 +28,6 @@ CAPTURE = Path(os.environ.get("CAPTURE", ROOT.parent / "shared" / "captures" / "
 PKG_DIR = ROOT / "generated" / "python" / "mipcodec"
 SPLIT = 50_000  # bytes per split: a packet is at most 261 bytes, so boundaries cut packets
 
-pyspark = pytest.importorskip("pyspark", reason="pyspark is installed by tools/bootstrap (requirements-spark.txt)")
-
 
 def mip():
     mod = python_package("mipcodec")
@@ -78,6 +76,10 @@ def logs(tmp_path_factory) -> list:
 
 @pytest.fixture(scope="module")
 def spark():
+    try:
+        import pyspark  # noqa: F401
+    except ImportError:
+        pytest.fail("pyspark is not installed: run tools/bootstrap (it installs requirements-spark.txt into .venv)")
     mip()
     # the Python workers import the generated package from the source tree
     os.environ["PYTHONPATH"] = os.pathsep.join([str(PKG_DIR), str(ROOT), os.environ.get("PYTHONPATH", "")])
@@ -210,21 +212,34 @@ def test_cli_errors_are_one_line(tmp_path):
     ]
 
 
-@pytest.mark.skipif(not CAPTURE.exists(), reason="the device capture is not there")
-def test_cli_replaces_a_logs_parts(tmp_path):
-    """`python -m mipcodec.spark` on the capture: exit 0, its line on stdout, and a stale part of
-    the same log (an earlier run's) removed: re-running replaces, never duplicates."""
+def test_cli_without_pyspark(tmp_path):
+    """Without pyspark: the one line naming the extra that installs it."""
+    code = (
+        "import runpy, sys; sys.modules['pyspark'] = None; "
+        f"sys.argv = ['spark', 'x.bin', '--out', {str(tmp_path / 'd')!r}]; "
+        "runpy.run_module('mipcodec.spark', run_name='__main__')"
+    )
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines() == [
+        "mipcodec.spark: pyspark is not installed: pip install 'mipcodec[spark]' (or pip install pyspark)"
+    ]
+
+
+def test_cli_replaces_a_logs_parts(tmp_path, logs):
+    """`python -m mipcodec.spark` on a log: exit 0, its line on stdout, its part files, and a stale
+    part of the same log (an earlier run's) removed: re-running replaces, never duplicates."""
     m = mip()
     out = tmp_path / "ds"
-    log = m.dataset.log_id(str(CAPTURE))
-    stale = (
-        out / "sensor.scaled_accel" / "model=unknown" / "serial=unknown" / "date=x" / f"part-{log}-ffffffffffff.parquet"
-    )
+    path = next(p for p in logs if p.endswith("gx5.bin"))
+    log = m.dataset.log_id(path)
+    stale = out / "sensor.scaled_accel" / "model=x" / "serial=y" / "date=z" / f"part-{log}-ffffffffffff.parquet"
     stale.parent.mkdir(parents=True)
     stale.write_bytes(b"old")
     env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
     r = subprocess.run(
-        [sys.executable, "-m", "mipcodec.spark", str(CAPTURE), "--out", str(out), "--master", "local[1]"],
+        [sys.executable, "-m", "mipcodec.spark", path, "--out", str(out), "--master", "local[1]"],
         capture_output=True,
         text=True,
         env=env,
@@ -232,6 +247,7 @@ def test_cli_replaces_a_logs_parts(tmp_path):
     )
     assert r.returncode == 0, r.stderr
     assert "Traceback" not in r.stderr
-    assert r.stdout.startswith(f"{CAPTURE}: ok, ") and r.stdout.rstrip().endswith(f"-> log {log}")
+    assert r.stdout.startswith(f"{path}: ok, ") and r.stdout.rstrip().endswith(f"-> log {log}")
     assert not stale.exists()
     assert (out / "_files" / f"part-{log}.parquet").exists()
+    assert len(list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-00777/date=*/*.parquet"))) == 1

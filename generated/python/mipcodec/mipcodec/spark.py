@@ -427,6 +427,7 @@ def main(argv: Optional[List[str]] = None) -> int:
             conf[key] = value
         if "-" in args.logs:
             raise ToolError("reads log files only (not - for stdin)")
+        need_pyspark()
         dataset._need("pyarrow")
         dataset._need("numpy")
         try:
