@@ -59,6 +59,8 @@ RUNTIME_FILES = [
     "session_tool.py",
     "sim.py",
     "sim_world.py",
+    "fleet.py",
+    "query.py",
     "transport.py",
     "tools.py",
     "dataset.py",

@@ -1636,6 +1636,9 @@ def parser() -> argparse.ArgumentParser:
     q.add_argument("--force", action="store_true", help="overwrite the image if it exists (default: refuse)")
     device(q)
     q.set_defaults(run=plot)
+    from . import query  # python -m PKG query DATASET SQL (runtime query.py)
+
+    query.add_parser(sub)
     return p
 
 
