@@ -12,6 +12,7 @@ module (starting one takes 5-30 s). pyspark and Java come from tools/bootstrap.
 
 from __future__ import annotations
 
+import json
 import os
 import random
 import subprocess
@@ -31,43 +32,28 @@ SPLIT = 50_000  # bytes per split: a packet is at most 261 bytes, so boundaries 
 
 def mip():
     mod = python_package("mipcodec")
-    for sub in ("dataset", "spark", "sim", "base", "framing", "packets", "_protocol"):
+    for sub in ("dataset", "spark", "fleet", "packets", "_protocol"):
         __import__(f"mipcodec.{sub}")
     return mod
 
 
-def sim_log(device: str, seed: int, serial: str, seconds: float) -> bytes:
-    """A simulated device's log: its Get Device Information reply (model, serial), then every data
-    quantity it documents at full rate for `seconds`."""
-    m = mip()
-    sim = m.sim.Simulator(device, seed=seed, scenario="circle", stream_full=True, identity={"serial_number": serial})
-    out = [c for _, c in sim.feed(m.framing.build_packet(0x01, m.base.GetDeviceInfo()), 0.0)]
-    for i in range(1, int(seconds * 100) + 1):
-        out += [c for _, c in sim.poll(i * 0.01)]
-    return b"".join(out)
-
-
 @pytest.fixture(scope="module")
 def logs(tmp_path_factory) -> list:
-    """The logs, as paths (one of them missing)."""
+    """The logs, as paths: a simulated fleet (`mipcodec.fleet`: two GX5-45 and two CV7-INS, one log
+    across UTC midnight, GNSS outages, garbage between packets, the last one truncated), one of
+    its logs with two 300-byte runs of garbage inserted, an empty file, the device capture when
+    it is there, and a missing path."""
+    m = mip()
     d = tmp_path_factory.mktemp("logs")
-    cv7 = sim_log("cv7_ins", 1, "6284-00042", 0.15)
-    gx5 = sim_log("gx5_45", 2, "6232-00777", 0.3)
+    manifest = m.fleet.generate(str(d / "fleet"), devices=4, seed=0, size=1)  # the shortest logs (10 s)
+    paths = [str(d / "fleet" / e["log"]) for e in manifest["devices"]]
     rng = random.Random(7)
-    corrupt = bytearray(cv7)
-    for at in (len(cv7) // 3, 2 * len(cv7) // 3):
-        corrupt[at:at] = bytes(rng.randrange(256) for _ in range(300))  # garbage between packets (or inside one)
-    files = {
-        "cv7.bin": cv7,
-        "gx5.bin": gx5,
-        "corrupt.bin": bytes(corrupt),
-        "truncated.bin": gx5[: len(gx5) // 2 + 5],
-        "empty.bin": b"",
-    }
-    paths = []
-    for name, data in files.items():
-        (d / name).write_bytes(data)
-        paths.append(str(d / name))
+    corrupt = bytearray(Path(paths[1]).read_bytes())
+    for at in (len(corrupt) // 3, 2 * len(corrupt) // 3):
+        corrupt[at:at] = bytes(rng.randrange(256) for _ in range(300))
+    (d / "corrupt.bin").write_bytes(bytes(corrupt))
+    (d / "empty.bin").write_bytes(b"")
+    paths += [str(d / "corrupt.bin"), str(d / "empty.bin")]
     if CAPTURE.exists():
         paths.append(str(CAPTURE))
     paths.append(str(d / "missing.bin"))
@@ -166,10 +152,16 @@ def test_files_table(datasets, logs):
     by_name = {os.path.basename(r[0]): r for r in rows}
     assert len(rows) == len(logs)
     assert by_name["missing.bin"][1] == "unreadable" and by_name["missing.bin"][5]
-    assert by_name["truncated.bin"][1] == "truncated"
-    assert by_name["corrupt.bin"][1] == "corrupt" and by_name["corrupt.bin"][3] > 0
-    assert by_name["cv7.bin"][1] == "ok" and by_name["gx5.bin"][1] == "ok"
+    assert by_name["corrupt.bin"][1] == "corrupt" and by_name["corrupt.bin"][3] >= 600
     assert by_name["empty.bin"][1:3] == ("ok", 0)
+    manifest = json.loads((Path(logs[0]).parent / "fleet.json").read_text())
+    for e in manifest["devices"]:
+        path, status, _packets, skipped, size, _error = by_name[e["log"]]
+        assert size == e["bytes"]
+        if e["truncated"]:
+            assert status == "truncated"
+        else:  # the fleet's garbage never holds a sync byte: skipped exactly
+            assert (status, skipped) == ("corrupt" if e["garbage_bytes"] else "ok", e["garbage_bytes"])
     cut = 0
     for path in logs:
         if not os.path.exists(path):
@@ -232,7 +224,7 @@ def test_cli_replaces_a_logs_parts(tmp_path, logs):
     part of the same log (an earlier run's) removed: re-running replaces, never duplicates."""
     m = mip()
     out = tmp_path / "ds"
-    path = next(p for p in logs if p.endswith("gx5.bin"))
+    path = logs[0]  # the fleet's first GX5-45
     log = m.dataset.log_id(path)
     stale = out / "sensor.scaled_accel" / "model=x" / "serial=y" / "date=z" / f"part-{log}-ffffffffffff.parquet"
     stale.parent.mkdir(parents=True)
@@ -250,4 +242,4 @@ def test_cli_replaces_a_logs_parts(tmp_path, logs):
     assert r.stdout.startswith(f"{path}: ok, ") and r.stdout.rstrip().endswith(f"-> log {log}")
     assert not stale.exists()
     assert (out / "_files" / f"part-{log}.parquet").exists()
-    assert len(list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-00777/date=*/*.parquet"))) == 1
+    assert len(list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-10100/date=*/*.parquet"))) == 1
