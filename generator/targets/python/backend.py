@@ -65,6 +65,7 @@ RUNTIME_FILES = [
     "tools.py",
     "dataset.py",
     "timebase.py",
+    "spark.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
