@@ -92,7 +92,7 @@ def connect(dataset: str) -> Any:
         source = f"read_parquet({_literal(pattern)}, union_by_name = true"
         if keys:
             types = ", ".join(f"{_literal(k)}: 'VARCHAR'" for k in keys)
-            source += f", hive_partitioning = true, hive_types = {{{types}}}"
+            source += ", hive_partitioning = true, hive_types = {" + types + "}"
         else:
             source += ", hive_partitioning = false"
         source += ")"
