@@ -170,3 +170,21 @@ def test_command_line(tmp_path: Path) -> None:
         r = subprocess.run(run + ["--out", str(tmp_path / "g")] + bad, capture_output=True, text=True, env=env)
         assert r.returncode == 2, (bad, r.stderr)
         assert why in r.stderr and "Traceback" not in r.stderr, r.stderr
+
+
+def test_start_utc(capsys) -> None:
+    """The simulator's --start-utc: GPS week 2400 starts on Sunday 2026-01-04 (1980-01-06 + 16,800
+    days), so 345,600 s into it is 2026-01-08 00:00:00 GPS time, 2026-01-07 23:59:42 UTC (18 leap
+    seconds): the world's default start. A time near a week's end rolls the week over."""
+    world = importlib.import_module("mipcodec.sim_world")
+    sim = importlib.import_module("mipcodec.sim")
+    assert world.gps_start_of_utc("2026-01-07T23:59:42Z") == (world.GPS_WEEK, world.GPS_TOW0) == (2400, 345600.0)
+    assert world.gps_start_of_utc("2026-01-10T23:59:42") == (2401, 0.0)
+    w = world.World()
+    w.gps_start = (2400, 604799.5)
+    q = w.quantities(1.0)
+    assert (q["gps_week"], q["gps_tow"]) == (2401, 0.5)
+    for bad in ("yesterday", "2026-01-07T23:59:42+02:00", "1979-12-31T00:00:00"):
+        assert sim.main(["--listen", "tcp:127.0.0.1:0", "--start-utc", bad]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith("python -m mipcodec.sim: --start-utc ") and err.count("\n") == 1, err
