@@ -493,3 +493,65 @@ def test_dataset_options_need_dataset(capsys):
     assert mod.cli.main(["export", str(ROOT / "README.md"), "--out", "/tmp/x", "--split-bytes", "10"]) == 2
     assert "--split-bytes needs --dataset" in capsys.readouterr().err
     assert mod.cli.main(["export", "a", "b", "--out", "/tmp/x"]) == 2
+
+
+def test_samples_tables_equal_the_join_export(tmp_path):
+    """`<set>.samples` of the capture holds the rows and values of `export --join --format csv`."""
+    import re
+
+    data = capture_bytes()
+    log = tmp_path / "cap.bin"
+    log.write_bytes(data)
+    assert export_dataset_cli(tmp_path / "ds", str(log)).returncode == 0
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "mipcodec",
+            "export",
+            str(log),
+            "--join",
+            "--format",
+            "csv",
+            "--out",
+            str(tmp_path / "j"),
+        ],
+        env=dict(os.environ, PYTHONPATH=ext_build("mipcodec")),
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    for set_name, n in (("sensor", 7157), ("filter_data", 714), ("system_data", 512)):  # info: packets per set
+        with (tmp_path / "j" / f"{set_name}.csv").open(newline="") as fh:
+            head, *body = list(csv.reader(fh))
+        t = read_dataset(tmp_path / "ds", f"{set_name}.samples").sort_by([("offset", "ascending")])
+        assert t.num_rows == len(body) == n
+        assert t.column("offset").to_pylist() == [int(r[1]) for r in body]
+        for j, h in enumerate(head[2:], start=2):
+            col = t.column(re.sub(r"[.\[\]]+", "_", h.split(" [")[0]).strip("_")).to_pylist()
+            for r, v in zip(body, col):
+                if r[j] == "":
+                    assert v is None
+                else:
+                    assert v == struct.unpack("<f", struct.pack("<f", float(r[j])))[0] or v == float(r[j]), (h, r[j], v)
+
+
+def test_continuation_packets_make_one_sample_row():
+    """Packets of a set with the same shared timestamp are one row of `<set>.samples` (the first
+    value of a column wins); another timestamp starts a new row."""
+    dsm = ds()
+    mod = pkg()
+    shared, sensor = (importlib.import_module(f"mipcodec.{m}") for m in ("shared", "sensor"))
+    ts = lambda ns: shared.ReferenceTimestamp(nanoseconds=ns)  # noqa: E731
+    data = (
+        mod.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[1.0, 2.0, 3.0]))
+        + mod.framing.build_packet(0x80, ts(1000), sensor.ScaledGyro(scaled_gyro=[4.0, 5.0, 6.0]))
+        + mod.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[9.0, 9.0, 9.0]))
+        + mod.framing.build_packet(0x80, ts(2000), sensor.ScaledAccel(scaled_accel=[7.0, 8.0, 9.0]))
+    )
+    r = dsm.decode_split(data, 0, 0, len(data), None, None, "L", len(data))
+    rows = r.tables["sensor.samples"].to_pylist()
+    assert [(x["offset"], x["device_ns"]) for x in rows] == [(0, 1000), (len(data) - 30, 2000)]
+    assert [x["scaled_accel_x"] for x in rows] == [1.0, 7.0]
+    assert [x["scaled_gyro_z"] for x in rows] == [6.0, None]
+    assert r.tables["sensor.scaled_accel"].num_rows == 3

@@ -271,7 +271,7 @@ def _value_fields(set_id: int, key: Tuple[int, int, Optional[str]]) -> List[Any]
     """The value columns of one field layout (key of `_columns.COLUMNS`) with their metadata."""
     pa = _need("pyarrow")
     title = _columns.TITLES.get(key, "")
-    descriptions: Dict[Any, Tuple[str, ...]] = getattr(_columns, "DESCRIPTIONS", {})
+    descriptions = _columns.DESCRIPTIONS
     frames: Dict[Any, Tuple[Optional[str], ...]] = getattr(_columns, "FRAMES", {})
     out = []
     for j, (name, _path, units, kind, _enum) in enumerate(_columns.COLUMNS.get(key, ())):

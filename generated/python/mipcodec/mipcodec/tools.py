@@ -2,6 +2,7 @@
 
     python -m mipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
                                   [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
+    python -m mipcodec export --dataset DIR LOG... [--split-bytes N] [--model NAME] [--serial SN]
     python -m mipcodec info LOG [--device ID]
     python -m mipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 

@@ -2,6 +2,7 @@
 
     python -m mscipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
                                   [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
+    python -m mscipcodec export --dataset DIR LOG... [--split-bytes N] [--model NAME] [--serial SN]
     python -m mscipcodec info LOG [--device ID]
     python -m mscipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 
