@@ -87,6 +87,7 @@ def connect(dataset: str) -> Any:
     duckdb = _duckdb()
     found = tables(dataset)
     con = duckdb.connect()
+    con.execute("SET TimeZone = 'UTC'")  # timestamps print in UTC whatever the machine's zone
     for name, (pattern, keys) in found.items():
         source = f"read_parquet({_literal(pattern)}, union_by_name = true"
         if keys:
