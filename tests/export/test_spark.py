@@ -15,6 +15,7 @@ from __future__ import annotations
 import json
 import os
 import random
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -239,7 +240,10 @@ def test_cli_replaces_a_logs_parts(tmp_path, logs):
     )
     assert r.returncode == 0, r.stderr
     assert "Traceback" not in r.stderr
-    assert r.stdout.startswith(f"{path}: ok, ") and r.stdout.rstrip().endswith(f"-> log {log}")
+    garbage = json.loads((Path(path).parent / "fleet.json").read_text())["devices"][0]["garbage_bytes"]
+    status = f"corrupt, {{}} packets, {garbage} bytes skipped" if garbage else "ok, {} packets, 0 bytes skipped"
+    assert re.fullmatch(f"{re.escape(path)}: {status.format('[0-9]+')}, 0 bad checksums -> log {log}\n", r.stdout)
     assert not stale.exists()
     assert (out / "_files" / f"part-{log}.parquet").exists()
-    assert len(list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-10100/date=*/*.parquet"))) == 1
+    parts = list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-10100/date=*/*.parquet"))
+    assert parts and {p.name for p in parts} == {f"part-{log}-000000000000.parquet"}  # one split (< 64 MiB)

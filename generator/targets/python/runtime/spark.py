@@ -246,11 +246,25 @@ def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List
     if not tasks:
         return []
 
+    def one(task: Any) -> bytes:
+        try:
+            result = work(task)
+        except Exception as e:  # a bug, not a bad log: the job fails naming the log and split
+            where = (
+                f"{task[1]}"
+                if task[0] == "log"
+                else f"{task[1]} split at {task[3]}"
+                if task[0] == "split"
+                else f"{task[0]} split at {task[2]}"
+            )
+            result = _Failed(f"{where}: {type(e).__name__}: {e}")
+        return pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL)
+
     def run(batches: Iterator[Any]) -> Iterator[Any]:
         pa = importlib.import_module("pyarrow")
         for batch in batches:
             ids = batch.column(0).to_pylist()
-            out = [pickle.dumps(work(tasks[i]), protocol=pickle.HIGHEST_PROTOCOL) for i in ids]
+            out = [one(tasks[i]) for i in ids]
             yield pa.RecordBatch.from_arrays([pa.array(ids, pa.int64()), pa.array(out, pa.binary())], ["id", "result"])
 
     n = len(tasks)
@@ -258,7 +272,17 @@ def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List
     results: List[Any] = [None] * n
     for row in df.collect():
         results[int(row["id"])] = pickle.loads(bytes(row["result"]))
+    failed = next((r for r in results if isinstance(r, _Failed)), None)
+    if failed is not None:
+        raise RuntimeError(failed.error)
     return results
+
+
+class _Failed:
+    """A task's unexpected exception (its log and the error), raised on the driver."""
+
+    def __init__(self, error: str) -> None:
+        self.error = error
 
 
 def _identify(task: Tuple[str, str, int, Optional[str], Optional[str]]) -> Any:
