@@ -41,7 +41,8 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 
 # What the tests need beyond `make` (cmake, googletest, Chromium, clippy, ...): tools/bootstrap
 # installs what is missing (as root) or prints the command that does.
-bootstrap:
+# It runs after .venv exists: it installs requirements-spark.txt (pyspark) there.
+bootstrap: $(VENV)/.stamp
 	@tools/bootstrap
 
 test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden test-consumer

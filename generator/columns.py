@@ -48,6 +48,7 @@ class Column:
     units: str | None
     kind: str
     enum: str | None = None
+    description: str = ""  # the parameter's description in the spec (whitespace runs as one space)
 
 
 def _leaf_kind(e: model.Elem) -> tuple[str, str | None]:
@@ -68,7 +69,7 @@ def _leaf_kind(e: model.Elem) -> tuple[str, str | None]:
 
 def _param_columns(proto: dict, p: model.Param, name: str, path: tuple, depth: int = 0) -> list[Column]:
     if p.kind in (model.COUNTED, model.REMAINING, model.UNION, model.STRING) or depth > 4:
-        return [Column(name, path, p.units, "json")]
+        return [Column(name, path, p.units, "json", None, _text(p.description))]
     if p.kind == model.FIXED:
         alias = p.ir.get("alias")
         names = COMPONENTS.get(alias) if alias in COMPONENTS and len(COMPONENTS[alias]) == p.count else None
@@ -89,7 +90,11 @@ def _elem_columns(proto: dict, p: model.Param, name: str, path: tuple, depth: in
             out += _param_columns(proto, q, f"{name}.{q.name}", path + (q.name,), depth + 1)
         return out
     kind, enum = _leaf_kind(e)
-    return [Column(name, path, p.units, kind, enum)]
+    return [Column(name, path, p.units, kind, enum, _text(p.description))]
+
+
+def _text(description: str) -> str:
+    return " ".join(description.split())
 
 
 def layout_columns(proto: dict, field: dict, variant: dict) -> list[Column]:

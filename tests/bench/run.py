@@ -46,6 +46,12 @@
      C++ session tool and examples, tests/bench/compile/minimal.cpp (the umbrella header, one
      command and the parser) and minimal.c (the same with the C package), whose figures are each
      row's divisor (the "x C" columns); rows lang=compile in results.json.
+  8. the dataset (issue 41; --no-dataset leaves it out, --dataset-size BYTES sets the fleet's
+     size, default 48 MiB): the simulated fleet of tests/bench/spark_bench.py (mipcodec.fleet,
+     build/bench/spark-fleet/), exported with `export --dataset`'s function in this process (one
+     core): MB/s of raw log (10^6 bytes per second of wall time) and the dataset's size over the
+     raw logs'; then the Spark job with local[1] and local[2] and the scaling ratio
+     (spark_bench.measure; needs pyspark and Java, else reported as skipped). build/bench/dataset.json.
 A language whose benchmark directory does not exist is skipped with a message. The exit status
 is non-zero when a benchmark failed to build or run, or reported counts that do not match the
 stream's sidecar (each benchmark checks them and exits non-zero).
@@ -418,6 +424,61 @@ def compile_table(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
+def dataset_bench(out: Path, size: int) -> tuple[str, bool]:
+    """Section 8 (issue 41): the dataset export's throughput on one core, the dataset's size
+    over the raw logs', and Spark's throughput with 1 and 2 local workers (scaling ratio)."""
+    import importlib
+    import tempfile
+
+    if str(ROOT) not in sys.path:  # run as a script: the tests package from the repository's root
+        sys.path.insert(0, str(ROOT))
+    from tests.bench import spark_bench
+
+    paths = spark_bench.fleet_logs(size)
+    dataset = importlib.import_module("mipcodec.dataset")
+    raw = sum(os.path.getsize(p) for p in paths)
+    with tempfile.TemporaryDirectory(prefix="dataset-bench-", dir=out) as tmp:
+        t0, c0 = time.perf_counter(), time.process_time()
+        dataset.export_dataset(paths, tmp)
+        seconds, cpu = time.perf_counter() - t0, time.process_time() - c0
+        stored = sum(f.stat().st_size for f in Path(tmp).rglob("*") if f.is_file())
+    record: dict = {
+        "logs": len(paths),
+        "raw_bytes": raw,
+        "export_seconds": seconds,
+        "export_cpu_seconds": cpu,
+        "export_mb_s": raw / seconds / 1e6,
+        "export_mb_per_cpu_s": raw / cpu / 1e6,
+        "dataset_bytes": stored,
+        "dataset_over_raw": stored / raw,
+    }
+    lines = [
+        ("what", "figure"),
+        ("raw logs", f"{len(paths)} logs, {raw / 1e6:.1f} MB"),
+        ("export --dataset, 1 core", f"{record['export_mb_s']:.2f} MB/s ({seconds:.1f} s)"),
+        ("export --dataset, per CPU second", f"{record['export_mb_per_cpu_s']:.2f} MB ({cpu:.1f} s CPU)"),
+        ("dataset / raw logs", f"{stored / 1e6:.1f} MB, {record['dataset_over_raw']:.2f}"),
+    ]
+    ok = True
+    try:
+        importlib.import_module("pyspark")
+    except ImportError:
+        lines.append(("Spark", "skipped: pyspark not installed (tools/bootstrap installs requirements-spark.txt)"))
+    else:
+        try:
+            spark = spark_bench.measure(paths, (1, 2))
+        except Exception as e:  # a Spark failure is a failed section, reported on one line
+            lines.append(("Spark", f"failed: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}"))
+            ok = False
+        else:
+            record["spark"] = spark
+            for r in spark["runs"]:
+                lines.append((f"Spark local[{r['workers']}]", f"{r['mb_s']:.2f} MB/s ({r['seconds']:.1f} s)"))
+            lines.append(("Spark scaling local[2] / local[1]", f"{spark['scaling']:.2f}"))
+    (out / "dataset.json").write_text(json.dumps(record, indent=1) + "\n")
+    return markdown(lines, 1), ok
+
+
 def parse(line: str) -> dict[str, str] | None:
     if not line.startswith("BENCH "):
         return None
@@ -774,6 +835,8 @@ def main() -> int:
     ap.add_argument("--no-flood", action="store_true", help="leave out the session tools under a noise flood")
     ap.add_argument("--no-compile", action="store_true", help="leave out the compile-cost section")
     ap.add_argument("--compile-only", action="store_true", help="only measure the compile cost (issue 39)")
+    ap.add_argument("--no-dataset", action="store_true", help="leave out the dataset and Spark section (issue 41)")
+    ap.add_argument("--dataset-size", type=int, default=48 << 20, help="bytes of simulated fleet logs (section 8)")
     ap.add_argument(
         "--instructions", action="store_true", help="also count instructions per packet (valgrind --tool=callgrind)"
     )
@@ -897,6 +960,13 @@ def main() -> int:
         flood += ["--json", str(out / "session_flood.json")]
         if subprocess.run(flood, cwd=ROOT).returncode != 0:
             failed.append("session-flood")
+    if timing and not args.no_dataset:
+        print(f"\nDataset export and Spark (issue 41; simulated fleet, {machine()}):\n")
+        sys.stdout.flush()
+        text, ok = dataset_bench(out, args.dataset_size)
+        print(text)
+        if not ok:
+            failed.append("dataset")
     if skipped:
         print(f"\nskipped: {', '.join(skipped)}")
     if failed:

@@ -59,9 +59,13 @@ RUNTIME_FILES = [
     "session_tool.py",
     "sim.py",
     "sim_world.py",
+    "fleet.py",
+    "query.py",
     "transport.py",
     "tools.py",
+    "dataset.py",
     "timebase.py",
+    "spark.py",
     "budget.py",
     "settings.py",
     "device_cli.py",
@@ -716,7 +720,16 @@ def _columns_context(proto: dict) -> dict:
             if q.get("alias") in columns.SHAPES and q["count"] and q["count"].get("value") == columns.SIZES[q["alias"]]
         }
         key = f"(0x{s['id']:02X}, 0x{f['id']:02X}, {pyrepr(v['device'])})"
-        layouts.append({"key": key, "columns": cols, "shapes": pyrepr(shapes), "title": f["title"]})
+        descriptions = tuple(c.description for c in columns.layout_columns(proto, f, v))
+        layouts.append(
+            {
+                "key": key,
+                "columns": cols,
+                "shapes": pyrepr(shapes),
+                "title": f["title"],
+                "descriptions": pyrepr(descriptions),
+            }
+        )
     used = {c["enum"] for lay in layouts for c in lay["columns"] if c["kind"] == "enum"}
     enums = [
         {"name": name, "values": sorted(values.items())}

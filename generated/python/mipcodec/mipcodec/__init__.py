@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "e1ccfcd0da6d3bb4"
+SPEC_HASH = "a521f0b378e9769c"
 
 __all__ = [
     "SPEC_HASH",

@@ -1015,6 +1015,7 @@ WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
     ),
     gnss_receiver_2.GpsTime: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
     gnss_receiver_2.FixInfo: (("fix_type", "enum:fix_type"), ("num_sv", "num_sv"), ("valid_flags", "valid:always")),
+    shared.GpsTimestamp: (("tow", "gps_tow"), ("week_number", "gps_week"), ("valid_flags", "valid:gnss")),
 }
 
 # The navigation filter of each device (backend.py FILTER): states, aiding, fix type members

@@ -258,14 +258,16 @@ def main(argv: Optional[List[str]] = None) -> int:
         command, rest = args[0], args[1:]
         if command in ("-h", "--help", "help"):
             print(USAGE)
-            print(f"python -m {PROG} export|info|plot --help: recorded logs to tables, summaries and plots")
+            print(
+                f"python -m {PROG} export|info|plot|query --help: recorded logs to tables, summaries and plots; SQL on datasets"
+            )
             print(f"python -m {PROG} device ADDRESS SUBCOMMAND (--help): look at, stream from and configure a device")
             return 0
         if command == "device":
             from .device_cli import main as device_main  # the device command line (docs/configure-a-device.md)
 
             return device_main(rest)
-        if command in ("export", "info", "plot"):
+        if command in ("export", "info", "plot", "query"):
             from .tools import main as tools_main  # the user commands (optional libraries, see tools)
 
             return tools_main(args)

@@ -2,6 +2,7 @@
 
     python -m mipcodec export LOG --format csv|jsonl|parquet --out DIR [--join] [--fields F,..]
                                   [--enum-numbers] [--device ID] [--follow [--idle S]] [--force]
+    python -m mipcodec export --dataset DIR LOG... [--split-bytes N] [--model NAME] [--serial SN]
     python -m mipcodec info LOG [--device ID]
     python -m mipcodec plot LOG --fields F,.. --out FILE.png|svg|html [--device ID] [--force]
 
@@ -810,6 +811,26 @@ class FastExporter:
 
     def block(self, cols: Any, data: Any, base: int) -> None:
         """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
+        pieces = self.pieces(cols, data, base)
+        # pyarrow formats and writes without the GIL: one table per thread, while the caller
+        # decodes the next block; a block's writes start when the previous block's are done.
+        self.wait()
+        if (os.cpu_count() or 1) > 1:
+            if self.pool is None:
+                from concurrent.futures import ThreadPoolExecutor
+
+                self.pool = ThreadPoolExecutor(max_workers=os.cpu_count() or 1)
+            self.pending = [self.pool.submit(self._write, key, parts) for key, parts in pieces.items()]
+        else:
+            for key, parts in pieces.items():
+                self._write(key, parts)
+
+    def pieces(self, cols: Any, data: Any, base: int) -> Dict[Any, List[Any]]:
+        """The rows of one decode_columns block (`data`, at stream offset `base`) per (set,
+        layout class): a list of (packet offsets in the block, field index, columns), the columns
+        being the time in seconds, the stream offset and the kept value columns (numpy or arrow
+        arrays, or lists); rows of one piece in stream order, pieces to be merged by (offset,
+        index). Shared by the dataset export (dataset.py)."""
         np = self.np
         # The time of a packet as `packet_time` picks it: the first TIMES source it carries, its
         # first occurrence in the packet. set -> [(offsets, preference, field index, seconds)]
@@ -873,18 +894,7 @@ class FastExporter:
             for i in keep:
                 cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
             pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
-        # pyarrow formats and writes without the GIL: one table per thread, while the caller
-        # decodes the next block; a block's writes start when the previous block's are done.
-        self.wait()
-        if (os.cpu_count() or 1) > 1:
-            if self.pool is None:
-                from concurrent.futures import ThreadPoolExecutor
-
-                self.pool = ThreadPoolExecutor(max_workers=os.cpu_count() or 1)
-            self.pending = [self.pool.submit(self._write, key, parts) for key, parts in pieces.items()]
-        else:
-            for key, parts in pieces.items():
-                self._write(key, parts)
+        return pieces
 
     def wait(self) -> None:
         """Until the writes of the last block are done (their first error raised here)."""
@@ -1119,6 +1129,16 @@ def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
 
 
 def export(args: argparse.Namespace) -> int:
+    if args.dataset is not None:
+        return _export_dataset(args)
+    if args.out is None:
+        raise ToolError("needs --out DIR (or --dataset DIR)")
+    if len(args.logs) != 1:
+        raise ToolError("takes one LOG (several only with --dataset)")
+    for option in ("split_bytes", "model", "serial"):
+        if getattr(args, option) is not None:
+            raise ToolError(f"--{option.replace('_', '-')} needs --dataset")
+    args.log = args.logs[0]
     if args.format == "parquet":
         need("pyarrow")
     fields = _field_list(args.fields)
@@ -1142,6 +1162,31 @@ def export(args: argparse.Namespace) -> int:
     for name, n in written:
         print(f"{os.path.join(args.out, name)}: {n} rows")
     print(tally, file=sys.stderr)
+    return 0
+
+
+def _export_dataset(args: argparse.Namespace) -> int:
+    """`export --dataset DIR LOGS...` (dataset.py): one line per log on stdout, exit 0 even when a
+    log is unreadable (it is a `_files` row); 2 when the dataset cannot be written."""
+    need("pyarrow")
+    need("numpy")
+    if args.out is not None or args.join or args.follow or args.fields or args.enum_numbers or "-" in args.logs:
+        raise ToolError("--dataset takes log files only, without --out, --join, --follow, --fields, --enum-numbers")
+    from . import dataset
+
+    try:
+        summary = dataset.export_dataset(
+            args.logs, args.dataset, args.split_bytes or dataset.SPLIT_BYTES, args.model, args.serial
+        )
+    except OSError as e:
+        raise _write_error(args.dataset, e) from None
+    for row in summary.logs:
+        error = f" ({row['error']})" if row["error"] else ""
+        print(
+            f"{row['path']}: {row['status']}{error}, {row['packets']} packets, {row['skipped_bytes']} bytes skipped, "
+            f"{row['bad_checksums']} bad checksums -> log {row['log']}"
+        )
+    print(f"{args.dataset}: {len(summary.parts)} part files, {sum(summary.rows.values())} rows", file=sys.stderr)
     return 0
 
 
@@ -1537,11 +1582,19 @@ def parser() -> argparse.ArgumentParser:
         help="decode a log into tables (CSV, JSON lines, Parquet)",
         description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after a 'time [s]' column from the shared timestamps and the packet's 'offset' in the log.",
     )
-    e.add_argument("log", metavar="LOG", help="binary log file, or - for stdin")
+    e.add_argument("logs", nargs="+", metavar="LOG", help="binary log file, or - for stdin (--dataset: several logs)")
     e.add_argument(
         "--format", choices=sorted(WRITERS), default="csv", help="table format (default csv; parquet needs pyarrow)"
     )
-    e.add_argument("--out", required=True, metavar="DIR", help="directory for the tables (created if missing)")
+    e.add_argument("--out", metavar="DIR", help="directory for the tables (created if missing)")
+    e.add_argument(
+        "--dataset",
+        metavar="DIR",
+        help="write the logs into a partitioned Parquet dataset instead (docs/dataset.md; needs pyarrow)",
+    )
+    e.add_argument("--split-bytes", type=_positive, metavar="N", help="--dataset: bytes per split (default 64 MiB)")
+    e.add_argument("--model", metavar="NAME", help="--dataset: the model of logs without a device information reply")
+    e.add_argument("--serial", metavar="SN", help="--dataset: the serial of logs without a device information reply")
     e.add_argument(
         "--join", action="store_true", help="one table per data set, one row per sample (packets sharing a timestamp)"
     )
@@ -1582,7 +1635,21 @@ def parser() -> argparse.ArgumentParser:
     q.add_argument("--force", action="store_true", help="overwrite the image if it exists (default: refuse)")
     device(q)
     q.set_defaults(run=plot)
+    from . import query  # python -m PKG query DATASET SQL (runtime query.py)
+
+    query.add_parser(sub)
     return p
+
+
+def _positive(text: str) -> int:
+    """An integer > 0 (argparse type)."""
+    try:
+        value = int(text, 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"needs an integer > 0, not {text!r}")
+    return value
 
 
 def _seconds(text: str) -> float:

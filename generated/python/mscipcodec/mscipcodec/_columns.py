@@ -89,6 +89,26 @@ TITLES: Dict[Key, str] = {
     (0xA2, 0x89, None): "Scaled aux accel vector",
 }
 
+DESCRIPTIONS: Dict[Key, Tuple[str, ...]] = {
+    (0xA2, 0x81, None): ("Acceleration [x, y, z].", "Acceleration [x, y, z].", "Acceleration [x, y, z]."),
+    (0xA2, 0x82, None): ("Angular rate [x, y, z].", "Angular rate [x, y, z].", "Angular rate [x, y, z]."),
+    (0xA2, 0x83, None): ("Magnetic field [x, y, z].", "Magnetic field [x, y, z].", "Magnetic field [x, y, z]."),
+    (0xA2, 0x84, None): ("Change in angle [x, y, z].", "Change in angle [x, y, z].", "Change in angle [x, y, z]."),
+    (0xA2, 0x85, None): (
+        "Change in velocity [x, y, z].",
+        "Change in velocity [x, y, z].",
+        "Change in velocity [x, y, z].",
+    ),
+    (0xA2, 0x86, None): ("Pressure.",),
+    (0xA2, 0x87, None): ("Temperature.",),
+    (0xA2, 0x88, None): ("GPS seconds of the week.", "GPS week number.", "GPS correlated time flags."),
+    (0xA2, 0x89, None): (
+        "Auxiliary acceleration [x, y, z].",
+        "Auxiliary acceleration [x, y, z].",
+        "Auxiliary acceleration [x, y, z].",
+    ),
+}
+
 ENUMS: Dict[str, Dict[int, str]] = {}
 
 TIMES: Tuple[Tuple[int, int, str, int], ...] = ()

@@ -34,7 +34,7 @@ from .codec import Choice, Enum, Field
 from .framing import PacketBuilder, Parser, RawPacket
 from .packets import DecodedField, RawField, decode_packet
 from .session import support_error
-from .sim_world import GRAVITY, RADIANS, World
+from .sim_world import GRAVITY, RADIANS, World, gps_start_of_utc
 
 Chunk = Tuple[float, bytes]
 FAULT_KINDS = ("drop", "delay", "corrupt", "split", "garbage", "nack")
@@ -1341,6 +1341,11 @@ def _parser() -> argparse.ArgumentParser:
         "with a fix their solution goes to RTK float, then RTK fixed (devices whose spec describes RTK)",
     )
     p.add_argument(
+        "--start-utc",
+        metavar="TIME",
+        help="the UTC time (YYYY-MM-DDTHH:MM:SS[Z]) of the device's start: its GPS time (default 2026-01-07T23:59:42Z)",
+    )
+    p.add_argument(
         "--speed",
         type=float,
         default=1.0,
@@ -1447,6 +1452,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             sim.world.gnss_outages.extend(outages)
             sim.world.mag_disturbances.extend(disturbances)
             sim.world.rtk_corrections.extend(corrections)
+            if args.start_utc is not None:
+                sim.world.gps_start = gps_start_of_utc(args.start_utc)
         serve(args.listen, sim, replay, replug=replug, start_baud=args.start_baud)
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)

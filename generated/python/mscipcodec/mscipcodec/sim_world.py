@@ -290,6 +290,7 @@ class World:
         self.gnss_outages: List[Tuple[float, float]] = []
         self.mag_disturbances: List[Tuple[float, float]] = []
         self.rtk_corrections: List[Tuple[float, float]] = []  # when RTK corrections reach the receivers
+        self.gps_start: Tuple[int, float] = (GPS_WEEK, GPS_TOW0)  # GPS week and time of week at t = 0 (--start-utc)
 
     def capture_gyro_bias(self) -> Vec:
         """The bias a capture measures (the true bias plus a little noise); the gyro output is
@@ -424,8 +425,10 @@ class World:
             cr * cp * sy - sr * sp * cy,
         )
         state, flags = self.filter.state(t, fix)
-        tow = GPS_TOW0 + t
-        unix = (GPS_EPOCH_DAYS * 86400.0) + GPS_WEEK * 604800.0 + tow - LEAP_SECONDS
+        week, tow = self.gps_start[0], self.gps_start[1] + t
+        if tow >= 604800.0:  # a later week (a start near the week's end, a long run)
+            week, tow = week + int(tow // 604800.0), tow % 604800.0
+        unix = (GPS_EPOCH_DAYS * 86400.0) + week * 604800.0 + tow - LEAP_SECONDS
         days, secs = divmod(unix, 86400.0)
         y, mo, d = _civil(int(days))
         rlat, rlon = math.radians(lat), math.radians(lon)
@@ -487,7 +490,7 @@ class World:
             "velocity_uncertainty": 0.05,
             "attitude_uncertainty": 0.005,
             "gps_tow": tow,
-            "gps_week": GPS_WEEK,
+            "gps_week": week,
             "utc": (y, mo, d, int(secs // 3600), int(secs % 3600 // 60), int(secs % 60), int(secs * 1000 % 1000)),
             "gnss_fix": fix,
             **fix_type,
@@ -509,6 +512,26 @@ class World:
 
 
 _MAG_NORM = math.sqrt(sum(m * m for m in MAG_NED))
+
+
+def gps_start_of_utc(text: str) -> Tuple[int, float]:
+    """The GPS week and time of week of a UTC time `YYYY-MM-DDTHH:MM:SS[.fff][Z]` (--start-utc),
+    LEAP_SECONDS after it; ValueError says what is wrong."""
+    import datetime
+
+    try:
+        when = datetime.datetime.fromisoformat(text.strip().removesuffix("Z").removesuffix("z"))
+    except ValueError:
+        raise ValueError(f"--start-utc {text}: expected a UTC time YYYY-MM-DDTHH:MM:SS[Z]") from None
+    if when.tzinfo is not None:
+        raise ValueError(f"--start-utc {text}: give the time in UTC (with Z or no offset)")
+    epoch = datetime.datetime(1970, 1, 1)
+    unix = (when - epoch) / datetime.timedelta(seconds=1)
+    gps = unix - GPS_EPOCH_DAYS * 86400.0 + LEAP_SECONDS
+    if gps < 0:
+        raise ValueError(f"--start-utc {text}: before the GPS epoch (1980-01-06)")
+    week = int(gps // 604800.0)
+    return week, gps - week * 604800.0
 
 
 def _mag_heading(mag: Sequence[float], roll: float, pitch: float) -> float:

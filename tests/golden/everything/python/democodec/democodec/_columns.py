@@ -62,6 +62,13 @@ TITLES: Dict[Key, str] = {
     (0xFF, 0xD3, None): "Timestamp",
 }
 
+DESCRIPTIONS: Dict[Key, Tuple[str, ...]] = {
+    (0x90, 0x01, None): ("", "", "", "", "", "", ""),
+    (0x91, 0x03, None): ("", "", ""),
+    (0x92, 0x03, None): ("", "", ""),
+    (0xFF, 0xD3, None): ("",),
+}
+
 ENUMS: Dict[str, Dict[int, str]] = {}
 
 TIMES: Tuple[Tuple[int, int, str, int], ...] = ()

@@ -1,0 +1,493 @@
+"""Raw logs to the partitioned Parquet dataset on Apache Spark (`python -m <package>.spark`).
+
+    python -m <package>.spark LOGS... --out DIR [--master URL] [--split-bytes N]
+                                [--model NAME] [--serial SN]
+
+The same dataset as `python -m <package> export --dataset DIR LOGS...` (docs/dataset.md), the
+same file names and rows, written by the same functions of `<package>.dataset`: this module is a
+second driver of them, not a second decoder. From a Spark application of your own:
+
+    from <package> import spark as mip_spark
+    summary = mip_spark.export_dataset(spark_session, ["/data/logs/"], "/data/dataset")
+
+The job, in two Spark stages after a listing:
+
+1. The logs are listed as Spark binary files (`spark.read.format("binaryFile")`, path and length
+   only: a log's content never travels as one row). A LOG may be a file, a directory (every file
+   under it) or a glob, on any filesystem Spark lists and every executor reads: a local or shared
+   path, or a URI pyarrow's filesystems open (s3://, gs://, hdfs://; s3a:// is read as s3://).
+2. A cheap pass, one task per log and one per split: the log's id (SHA-256 of its content) and
+   identity (`dataset.log_id`, `dataset.log_identity`), and each split's time anchors
+   (`timebase.split_anchors`). The driver builds each log's clock map from them
+   (`timebase.ClockMap.from_splits`), so split k is decoded with what the splits before it imply.
+3. One task per split of the fixed grid (`dataset.splits`, `--split-bytes`, 64 MiB by default):
+   `dataset.read_split`, `dataset.decode_split`, `dataset.write_split` (atomic part files in the
+   output directory); then the driver removes the log's stale parts (`dataset.remove_parts`) and
+   writes its `_files` row (`dataset.files_row`, `dataset.write_files_row`). A log that cannot be
+   listed or read is an `unreadable` row there, never a failed run.
+
+The tasks run as `DataFrame.mapInArrow` over a range of task numbers, one task per partition:
+the decoder is columnar and produces Arrow tables, mapInArrow hands a task Arrow batches with no
+pandas conversion, and (unlike RDD.mapPartitions) it works on Spark Connect sessions too.
+
+The output directory must be a path the driver and every executor see (local mode: any path; on
+a cluster: a shared filesystem such as NFS, or a mounted bucket). Nothing but the master URL
+changes between local mode and a cluster; the executors need this package and its `[spark]`
+extra installed.
+
+Exit status: 0 (also when some logs are unreadable: they are `_files` rows); 2 on a usage error,
+a missing pyspark or Java, a dataset that cannot be written or a failed Spark job (one line on
+stderr); 130 on Ctrl-C.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import importlib
+import os
+import pickle
+import shutil
+import sys
+from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
+from urllib.parse import unquote, urlparse
+
+from . import dataset, timebase
+from ._protocol import PACKAGE as PROG
+from .tools import ToolError
+
+DEFAULT_MASTER = "local[*]"
+GLOB_CHARS = "*?[{"
+# Spark settings of the session the command starts: no web UI, no progress bar; in local mode the
+# driver binds to the loopback interface only (nothing listens on the network).
+SESSION_CONF = {
+    "spark.ui.enabled": "false",
+    "spark.ui.showConsoleProgress": "false",
+    "spark.sql.execution.arrow.pyspark.enabled": "true",
+}
+LOCAL_CONF = {"spark.driver.host": "127.0.0.1", "spark.driver.bindAddress": "127.0.0.1"}
+
+ReadAt = Callable[[int, int], bytes]
+
+
+# ------------------------------------------------------------------------------------ libraries
+def need_pyspark() -> Any:
+    """The pyspark module, or the one-line error that names the extra installing it."""
+    try:
+        return importlib.import_module("pyspark.sql")
+    except ImportError:
+        raise ToolError(f"pyspark is not installed: pip install '{PROG}[spark]' (or pip install pyspark)") from None
+
+
+def java_missing() -> Optional[str]:
+    """Why a local Spark cannot start for want of Java (None when a java is found)."""
+    home = os.environ.get("JAVA_HOME")
+    if home:
+        if os.access(os.path.join(home, "bin", "java"), os.X_OK):
+            return None
+        return f"JAVA_HOME={home} has no bin/java"
+    if shutil.which("java"):
+        return None
+    return "no java on PATH and JAVA_HOME is not set"
+
+
+def session(master: str = DEFAULT_MASTER, conf: Optional[Dict[str, str]] = None) -> Any:
+    """A SparkSession for the command: `master` (local[*] by default), the settings above plus
+    `conf`. In local mode the Python workers run this interpreter (PYSPARK_PYTHON unless set),
+    and a missing Java is one ToolError line rather than Spark's gateway error."""
+    sql = need_pyspark()
+    local = master.startswith("local")
+    if local:
+        missing = java_missing()
+        if missing:
+            raise ToolError(
+                f"Spark needs a Java 17 or 21 runtime: {missing} (Debian: apt-get install openjdk-17-jre-headless)"
+            )
+        os.environ.setdefault("PYSPARK_PYTHON", sys.executable)
+        os.environ.setdefault("SPARK_LOCAL_IP", "127.0.0.1")  # every service on the loopback interface
+    builder = sql.SparkSession.builder.master(master).appName(f"{PROG}.spark")
+    for key, value in {**SESSION_CONF, **(LOCAL_CONF if local else {}), **(conf or {})}.items():
+        builder = builder.config(key, value)
+    try:
+        spark = builder.getOrCreate()
+    except Exception as e:  # the JVM did not start (a bad master URL, a broken Java)
+        raise ToolError(f"cannot start Spark (master {master}): {_first_line(e)}") from None
+    spark.sparkContext.setLogLevel("ERROR")
+    return spark
+
+
+def _first_line(e: BaseException) -> str:
+    text = str(e).strip()
+    return text.splitlines()[0] if text else type(e).__name__
+
+
+# ----------------------------------------------------------------------------------- the files
+def _local_path(uri: str) -> Optional[str]:
+    """The local path of a `file:` URI or of a plain path, else None."""
+    parsed = urlparse(uri)
+    if parsed.scheme == "file":
+        return unquote(parsed.path)
+    if parsed.scheme == "" or (len(parsed.scheme) == 1 and os.name == "nt"):
+        return uri
+    return None
+
+
+def open_log(uri: str) -> Tuple[ReadAt, int]:
+    """(read_at, size) of a listed log: a local file through `dataset.file_reader`, anything else
+    through pyarrow's filesystems (s3://, gs://, hdfs://, ...). dataset.ReadError when unreadable."""
+    local = _local_path(uri)
+    if local is not None:
+        return dataset.file_reader(local)
+    fs_mod = dataset._need("pyarrow.fs")
+    parsed = urlparse(uri)
+    if parsed.scheme in ("s3a", "s3n"):
+        uri = "s3" + uri[len(parsed.scheme) :]
+    try:
+        fs, path = fs_mod.FileSystem.from_uri(uri)
+        info = fs.get_file_info(path)
+        size = int(info.size)
+    except (OSError, ValueError) as e:
+        raise dataset.ReadError(_first_line(e)) from None
+
+    def read_at(offset: int, length: int) -> bytes:
+        try:
+            with fs.open_input_file(path) as f:
+                return bytes(f.read_at(length, offset))
+        except OSError as e:
+            raise dataset.ReadError(_first_line(e)) from None
+
+    return read_at, size
+
+
+def log_id_of(uri: str, read_at: ReadAt, size: int) -> str:
+    """`dataset.log_id` of a listed log (the same digest, read through `read_at` when remote)."""
+    local = _local_path(uri)
+    if local is not None:
+        return dataset.log_id(local)
+    h = hashlib.sha256()
+    for pos in range(0, size, 1 << 22):
+        h.update(read_at(pos, min(1 << 22, size - pos)))
+    return h.hexdigest()[:16]
+
+
+class Listed:
+    """A log the listing found: the path `_files` records (as given when it was given as a file),
+    the URI executors read and its size."""
+
+    def __init__(self, path: str, uri: str, size: int) -> None:
+        self.path = path
+        self.uri = uri
+        self.size = size
+
+
+def list_logs(spark: Any, paths: Sequence[str]) -> Tuple[List[Listed], List[Tuple[str, str]]]:
+    """The logs under `paths` as Spark lists them (binary files: path and length only), and the
+    (path, error) of the paths that cannot be listed."""
+    reader = spark.read.format("binaryFile").option("recursiveFileLookup", "true")
+
+    def load(ps: Sequence[str]) -> List[Any]:
+        return list(reader.load(list(ps)).select("path", "length").collect())
+
+    rows: List[Any] = []
+    bad: List[Tuple[str, str]] = []
+    try:
+        rows = load(paths) if paths else []
+    except Exception:  # some path cannot be listed: find which, one by one
+        for p in paths:
+            try:
+                rows += load([p])
+            except Exception as e:
+                bad.append((p, _unlisted_error(p, e)))
+    given: Dict[str, str] = {}
+    for p in paths:
+        local = _local_path(p)
+        if local is not None and not any(c in p for c in GLOB_CHARS):
+            given.setdefault(os.path.abspath(local), p)
+        given.setdefault(p, p)
+    logs: List[Listed] = []
+    seen = set()
+    for row in sorted(rows, key=lambda r: str(r["path"])):
+        uri = str(row["path"])
+        if uri in seen:
+            continue
+        seen.add(uri)
+        local = _local_path(uri)
+        key = os.path.abspath(local) if local is not None else uri
+        logs.append(Listed(given.get(key, local if local is not None else uri), uri, int(row["length"])))
+    # Spark's file index leaves out empty files: a local log given by name is still recorded
+    listed = {os.path.abspath(x) for x in (_local_path(log.uri) for log in logs) if x is not None}
+    for p in paths:
+        local = _local_path(p)
+        if local is None or any(c in p for c in GLOB_CHARS) or os.path.abspath(local) in listed:
+            continue
+        if os.path.isfile(local) and p not in {b[0] for b in bad}:
+            listed.add(os.path.abspath(local))
+            logs.append(Listed(p, "file://" + os.path.abspath(local), os.path.getsize(local)))
+    return logs, bad
+
+
+def _unlisted_error(path: str, e: BaseException) -> str:
+    """The error of a path Spark cannot list: the operating system's, as `export --dataset` gives
+    it, for a local path; Spark's first line otherwise."""
+    local = _local_path(path)
+    if local is not None and not any(c in path for c in GLOB_CHARS):
+        try:
+            dataset.file_reader(local)
+        except dataset.ReadError as r:
+            return str(r)
+    msg = _first_line(e)
+    return msg.split("] ", 1)[1] if msg.startswith("[") and "] " in msg else msg
+
+
+# ------------------------------------------------------------------------------------ the tasks
+def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List[Any]:
+    """`work(task)` for every task in Spark, one task per partition (mapInArrow over the task
+    numbers); the results (pickled by the tasks) in task order."""
+    if not tasks:
+        return []
+
+    def one(task: Any) -> bytes:
+        try:
+            result = work(task)
+        except Exception as e:  # a bug, not a bad log: the job fails naming the log and split
+            where = (
+                f"{task[1]}"
+                if task[0] == "log"
+                else f"{task[1]} split at {task[3]}"
+                if task[0] == "split"
+                else f"{task[0]} split at {task[2]}"
+            )
+            result = _Failed(f"{where}: {type(e).__name__}: {e}")
+        return pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL)
+
+    def run(batches: Iterator[Any]) -> Iterator[Any]:
+        pa = importlib.import_module("pyarrow")
+        for batch in batches:
+            ids = batch.column(0).to_pylist()
+            out = [one(tasks[i]) for i in ids]
+            yield pa.RecordBatch.from_arrays([pa.array(ids, pa.int64()), pa.array(out, pa.binary())], ["id", "result"])
+
+    n = len(tasks)
+    df = spark.range(0, n, 1, n).mapInArrow(run, "id long, result binary")
+    results: List[Any] = [None] * n
+    for row in df.collect():
+        results[int(row["id"])] = pickle.loads(bytes(row["result"]))
+    failed = next((r for r in results if isinstance(r, _Failed)), None)
+    if failed is not None:
+        raise RuntimeError(failed.error)
+    return results
+
+
+class _Failed:
+    """A task's unexpected exception (its log and the error), raised on the driver."""
+
+    def __init__(self, error: str) -> None:
+        self.error = error
+
+
+def _identify(task: Tuple[str, str, int, Optional[str], Optional[str]]) -> Any:
+    """Phase 1, per log: ("ok", log id, identity) or ("unreadable", error)."""
+    _kind, uri, _size, model, serial = task
+    try:
+        read_at, size = open_log(uri)
+        return ("ok", log_id_of(uri, read_at, size), dataset.log_identity(read_at, size, model, serial), size)
+    except dataset.ReadError as e:
+        return ("unreadable", str(e))
+
+
+def _anchors(task: Tuple[str, str, int, int, int]) -> Any:
+    """Phase 1, per split: the split's time anchors (`timebase.split_anchors`), or
+    ("unreadable", error)."""
+    _kind, uri, size, start, end = task
+    try:
+        read_at, _ = open_log(uri)
+        data, base = dataset.read_split(read_at, size, start, end)
+    except dataset.ReadError as e:
+        return ("unreadable", str(e))
+    return timebase.split_anchors(data, base, start, end)
+
+
+def _phase1(task: Tuple[Any, ...]) -> Any:
+    return _identify(task) if task[0] == "log" else _anchors(task)
+
+
+def _decode(out_dir: str, task: Tuple[str, int, int, int, str, Any, Any]) -> Any:
+    """Phase 2, per split: decode and write it. ("ok", the split's result without its tables,
+    the parts written, rows per table), ("unreadable", error) or ("write", error)."""
+    uri, size, start, end, log, identity, clock = task
+    try:
+        read_at, _ = open_log(uri)
+        data, base = dataset.read_split(read_at, size, start, end)
+    except dataset.ReadError as e:
+        return ("unreadable", str(e))
+    result = dataset.decode_split(data, base, start, end, clock, identity, log, size)
+    try:
+        parts = dataset.write_split(out_dir, result)
+    except OSError as e:
+        return ("write", e.strerror or str(e))
+    rows = {name: int(t.num_rows) for name, t in result.tables.items() if t.num_rows}
+    result.tables = {}
+    return ("ok", result, parts, rows)
+
+
+# --------------------------------------------------------------------------------------- the job
+def export_dataset(
+    spark: Any,
+    paths: Sequence[str],
+    out_dir: str,
+    split_bytes: int = dataset.SPLIT_BYTES,
+    model: Optional[str] = None,
+    serial: Optional[str] = None,
+) -> dataset.Summary:
+    """Decode the logs at `paths` (files, directories or globs Spark can list) into the dataset at
+    `out_dir` on the SparkSession `spark`: the same files and rows as the single-machine
+    `dataset.export_dataset`. `out_dir` must be a path the driver and every executor see.
+    Returns the `_files` rows, the part files written and the rows per table. A log that cannot
+    be read is an `unreadable` row in `_files`; a dataset that cannot be written raises OSError."""
+    if split_bytes <= 0:
+        raise ValueError("split_bytes must be positive")
+    out_dir = os.path.abspath(out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    fallback = dataset.Identity(
+        dataset.partition_value(model) if model else dataset.UNKNOWN,
+        dataset.partition_value(serial) if serial else dataset.UNKNOWN,
+    )
+    summary = dataset.Summary()
+    logs, bad = list_logs(spark, paths)
+    unreadable: List[Tuple[str, str]] = list(bad)
+
+    # phase 1: ids and identities per log, time anchors per split
+    grids = [dataset.splits(log.size, split_bytes) for log in logs]
+    tasks1: List[Tuple[Any, ...]] = [("log", log.uri, log.size, model, serial) for log in logs]
+    for log, grid in zip(logs, grids):
+        tasks1 += [("split", log.uri, log.size, start, end) for start, end in grid]
+    results1 = _run_tasks(spark, tasks1, _phase1)
+    pos = len(logs)
+    ready: List[Tuple[Listed, str, dataset.Identity, int, List[Tuple[int, int]], Any]] = []
+    for i, (log, grid) in enumerate(zip(logs, grids)):
+        ident = results1[i]
+        anchors = results1[pos : pos + len(grid)]
+        pos += len(grid)
+        if ident[0] != "ok":
+            unreadable.append((log.path, ident[1]))
+            continue
+        _ok, log_hash, identity, size = ident
+        failed = next((a for a in anchors if not isinstance(a, timebase.SplitAnchors)), None)
+        if failed is not None:
+            unreadable.append((log.path, failed[1]))
+            continue
+        if size != log.size:  # changed since the listing
+            unreadable.append((log.path, f"changed while read ({log.size} bytes listed, {size} read)"))
+            continue
+        ready.append((log, log_hash, identity, size, grid, timebase.ClockMap.from_splits(anchors)))
+
+    # phase 2: every split decoded and written
+    tasks2: List[Tuple[str, int, int, int, str, Any, Any]] = []
+    for log, log_hash, identity, size, grid, maps in ready:
+        tasks2 += [(log.uri, size, s, e, log_hash, identity, maps.split(k)) for k, (s, e) in enumerate(grid)]
+    results2 = _run_tasks(spark, tasks2, lambda task: _decode(out_dir, task))
+    pos = 0
+    for log, log_hash, identity, size, grid, _maps in ready:
+        mine = results2[pos : pos + len(grid)]
+        pos += len(grid)
+        for r in mine:
+            if r[0] == "write":
+                raise OSError(f"{out_dir}: {r[1]}")
+        split_results = [r[1] for r in mine if r[0] == "ok"]
+        parts = [p for r in mine if r[0] == "ok" for p in r[2]]
+        for r in mine:
+            if r[0] == "ok":
+                for name, n in r[3].items():
+                    summary.rows[name] = summary.rows.get(name, 0) + n
+        error = next((r[1] for r in mine if r[0] == "unreadable"), None)
+        if error is None:
+            dataset.remove_parts(out_dir, log_hash, keep=parts)
+        row = dataset.files_row(log_hash, log.path, size, identity, split_results, error=error)
+        dataset.write_files_row(out_dir, row)
+        summary.logs.append(row)
+        summary.parts += parts
+    for path, error in unreadable:
+        row = dataset.files_row(dataset.unreadable_id(path), path, 0, fallback, [], error=error)
+        dataset.write_files_row(out_dir, row)
+        summary.logs.append(row)
+    return summary
+
+
+# ----------------------------------------------------------------------------------- the command
+def _positive(text: str) -> int:
+    try:
+        value = int(text, 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"needs an integer > 0, not {text!r}")
+    return value
+
+
+def parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog=f"python -m {PROG}.spark",
+        description="Decode raw logs into the partitioned Parquet dataset on Apache Spark "
+        f"(the same dataset as `{PROG} export --dataset`; docs/dataset.md).",
+    )
+    p.add_argument("logs", nargs="+", metavar="LOG", help="log files, directories or globs (any path Spark lists)")
+    p.add_argument("--out", required=True, metavar="DIR", help="the dataset directory (seen by every executor)")
+    p.add_argument("--master", default=DEFAULT_MASTER, metavar="URL", help=f"Spark master (default {DEFAULT_MASTER})")
+    p.add_argument("--split-bytes", type=_positive, metavar="N", help="bytes of log per task (default 64 MiB)")
+    p.add_argument("--model", metavar="NAME", help="the model of logs without a device information reply")
+    p.add_argument("--serial", metavar="SN", help="the serial of logs without a device information reply")
+    p.add_argument("--conf", action="append", default=[], metavar="KEY=VALUE", help="a Spark setting (repeatable)")
+    return p
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    args = parser().parse_args(sys.argv[1:] if argv is None else argv)
+    try:
+        conf: Dict[str, str] = {}
+        for item in args.conf:
+            key, sep, value = item.partition("=")
+            if not sep or not key:
+                raise ToolError(f"--conf needs KEY=VALUE, not {item!r}")
+            conf[key] = value
+        if "-" in args.logs:
+            raise ToolError("reads log files only (not - for stdin)")
+        need_pyspark()
+        dataset._need("pyarrow")
+        dataset._need("numpy")
+        try:
+            os.makedirs(args.out, exist_ok=True)
+        except OSError as e:
+            raise ToolError(f"cannot create {args.out!r}: {e.strerror or e}") from None
+        spark = session(args.master, conf)
+        try:
+            summary = export_dataset(
+                spark, args.logs, args.out, args.split_bytes or dataset.SPLIT_BYTES, args.model, args.serial
+            )
+        except OSError as e:
+            raise ToolError(f"cannot write {args.out!r}: {e.strerror or e}") from None
+        except ToolError:
+            raise
+        except Exception as e:  # a failed Spark job (lost executors, ...)
+            raise ToolError(f"the Spark job failed: {_first_line(e)}") from None
+        finally:
+            spark.stop()
+    except ToolError as e:
+        print(f"{PROG}.spark: {e}", file=sys.stderr)
+        return e.status
+    except KeyboardInterrupt:
+        return 130
+    for row in summary.logs:
+        error = f" ({row['error']})" if row["error"] else ""
+        print(
+            f"{row['path']}: {row['status']}{error}, {row['packets']} packets, {row['skipped_bytes']} bytes skipped, "
+            f"{row['bad_checksums']} bad checksums -> log {row['log']}"
+        )
+    print(f"{args.out}: {len(summary.parts)} part files, {sum(summary.rows.values())} rows", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
+
+
+__all__ = ["export_dataset", "session", "list_logs", "open_log", "main", "DEFAULT_MASTER"]

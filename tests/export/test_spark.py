@@ -1,0 +1,249 @@
+"""The Spark job (`python -m mipcodec.spark`, generator/targets/python/runtime/spark.py) against the
+single-machine `export --dataset`: on simulated logs (two devices, a corrupt one, a truncated one,
+an empty one, a missing path) and the device capture, split small enough that split boundaries cut
+packets, both write the same part files with the same rows and values, compared through DuckDB
+(every table, EXCEPT ALL both ways, and the files' key-value metadata).
+
+Exactly once across split boundaries is checked against the whole-log decode, not against the
+other engine: the packets `_files` counts for a log are the packets `decode_all` finds in it
+unsplit. Spark runs in local mode (`local[2]`, loopback only, no UI); one session serves the
+module (starting one takes 5-30 s). pyspark and Java come from tools/bootstrap.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import duckdb
+import pytest
+
+from tests.helpers.generated import python_package
+
+ROOT = Path(__file__).resolve().parents[2]
+CAPTURE = Path(os.environ.get("CAPTURE", ROOT.parent / "shared" / "captures" / "mip_data.bin"))
+PKG_DIR = ROOT / "generated" / "python" / "mipcodec"
+SPLIT = 50_000  # bytes per split: a packet is at most 261 bytes, so boundaries cut packets
+
+
+def mip():
+    mod = python_package("mipcodec")
+    for sub in ("dataset", "spark", "fleet", "packets", "_protocol"):
+        __import__(f"mipcodec.{sub}")
+    return mod
+
+
+@pytest.fixture(scope="module")
+def logs(tmp_path_factory) -> list:
+    """The logs, as paths: a simulated fleet (`mipcodec.fleet`: two GX5-45 and two CV7-INS, one log
+    across UTC midnight, GNSS outages, garbage between packets, the last one truncated), one of
+    its logs with two 300-byte runs of garbage inserted, an empty file, the device capture when
+    it is there, and a missing path."""
+    m = mip()
+    d = tmp_path_factory.mktemp("logs")
+    manifest = m.fleet.generate(str(d / "fleet"), devices=4, seed=0, size=1)  # the shortest logs (10 s)
+    paths = [str(d / "fleet" / e["log"]) for e in manifest["devices"]]
+    rng = random.Random(7)
+    corrupt = bytearray(Path(paths[1]).read_bytes())
+    for at in (len(corrupt) // 3, 2 * len(corrupt) // 3):
+        corrupt[at:at] = bytes(rng.randrange(256) for _ in range(300))
+    (d / "corrupt.bin").write_bytes(bytes(corrupt))
+    (d / "empty.bin").write_bytes(b"")
+    paths += [str(d / "corrupt.bin"), str(d / "empty.bin")]
+    if CAPTURE.exists():
+        paths.append(str(CAPTURE))
+    paths.append(str(d / "missing.bin"))
+    return paths
+
+
+@pytest.fixture(scope="module")
+def spark():
+    try:
+        import pyspark  # noqa: F401
+    except ImportError:
+        pytest.fail("pyspark is not installed: run tools/bootstrap (it installs requirements-spark.txt into .venv)")
+    mip()
+    # the Python workers import the generated package from the source tree
+    os.environ["PYTHONPATH"] = os.pathsep.join([str(PKG_DIR), str(ROOT), os.environ.get("PYTHONPATH", "")])
+    conf = {
+        "spark.driver.memory": "512m",
+        "spark.sql.shuffle.partitions": "2",
+        "spark.python.worker.memory": "256m",
+    }
+    session = sys.modules["mipcodec.spark"].session("local[2]", conf)
+    yield session
+    session.stop()
+
+
+@pytest.fixture(scope="module")
+def datasets(tmp_path_factory, logs, spark):
+    """(the Spark job's dataset, export --dataset's dataset) of the logs, and the Spark summary."""
+    m = mip()
+    out = tmp_path_factory.mktemp("out")
+    spark_dir, local_dir = out / "spark", out / "local"
+    summary = m.spark.export_dataset(spark, logs, str(spark_dir), split_bytes=SPLIT)
+    m.dataset.export_dataset(logs, str(local_dir), split_bytes=SPLIT)
+    return spark_dir, local_dir, summary
+
+
+def files(root: Path) -> list:
+    """The dataset's visible files (what Spark, DuckDB and pyarrow read), relative."""
+    out = []
+    for dirpath, dirs, names in os.walk(root):
+        dirs[:] = [x for x in dirs if not x.startswith((".", "_")) or x == "_files"]
+        out += [os.path.relpath(os.path.join(dirpath, n), root) for n in names if not n.startswith((".", "_"))]
+    return sorted(out)
+
+
+def tables(root: Path) -> list:
+    return sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith("."))
+
+
+def test_same_file_names(datasets):
+    spark_dir, local_dir, _ = datasets
+    assert tables(spark_dir) == tables(local_dir)
+    assert files(spark_dir) == files(local_dir)
+    assert len(files(spark_dir)) > 100
+    assert not [f for f in os.listdir(spark_dir) if f.startswith(".")]  # no temporary file left
+
+
+def test_same_rows_and_values_through_duckdb(datasets):
+    """Every table, rows as multisets: A EXCEPT ALL B and B EXCEPT ALL A are empty, with the
+    partition columns (model, serial, date) read from the paths as a reader sees them."""
+    spark_dir, local_dir, _ = datasets
+    con = duckdb.connect()
+    total = 0
+    for table in tables(local_dir):
+
+        def scan(root: Path, table: str = table) -> str:
+            glob = str(root / table / "**" / "*.parquet")
+            return f"read_parquet('{glob}', hive_partitioning = true, union_by_name = true)"
+
+        con.execute(f"CREATE OR REPLACE TEMP TABLE a AS SELECT * FROM {scan(spark_dir)}")
+        con.execute(f"CREATE OR REPLACE TEMP TABLE b AS SELECT * FROM {scan(local_dir)}")
+        a, b = "a", "b"
+        n_a = con.execute("SELECT count(*) FROM a").fetchone()[0]
+        assert n_a == con.execute("SELECT count(*) FROM b").fetchone()[0], table
+        for x, y in ((a, b), (b, a)):
+            diff = con.execute(f"SELECT count(*) FROM (SELECT * FROM {x} EXCEPT ALL SELECT * FROM {y})").fetchone()[0]
+            assert diff == 0, f"{table}: {diff} rows of one dataset are not in the other"
+        total += n_a
+    assert total > 10_000
+    # the files' key-value metadata (spec hash, model, serial, firmware, log, split, Arrow schema)
+    meta = "SELECT replace(file_name, '{root}', '') AS f, key, value FROM parquet_kv_metadata('{root}/**/*.parquet')"
+    for x, y in ((spark_dir, local_dir), (local_dir, spark_dir)):
+        q = f"SELECT count(*) FROM ({meta.format(root=x)} EXCEPT ALL {meta.format(root=y)})"
+        assert con.execute(q).fetchone()[0] == 0
+
+
+def test_files_table(datasets, logs):
+    """_files: one row per log with the statuses the logs were made to have; packets counted
+    exactly once across split boundaries (the whole-log decode's packets)."""
+    m = mip()
+    spark_dir, _, summary = datasets
+    con = duckdb.connect()
+    rows = con.execute(
+        f"SELECT path, status, packets, skipped_bytes, bytes, error FROM read_parquet('{spark_dir}/_files/*.parquet')"
+    ).fetchall()
+    by_name = {os.path.basename(r[0]): r for r in rows}
+    assert len(rows) == len(logs)
+    assert by_name["missing.bin"][1] == "unreadable" and by_name["missing.bin"][5]
+    assert by_name["corrupt.bin"][1] == "corrupt" and by_name["corrupt.bin"][3] >= 600
+    assert by_name["empty.bin"][1:3] == ("ok", 0)
+    manifest = json.loads((Path(logs[0]).parent / "fleet.json").read_text())
+    for e in manifest["devices"]:
+        path, status, _packets, skipped, size, _error = by_name[e["log"]]
+        assert size == e["bytes"]
+        if e["truncated"]:
+            assert status == "truncated"
+        else:  # the fleet's garbage never holds a sync byte: skipped exactly
+            assert (status, skipped) == ("corrupt" if e["garbage_bytes"] else "ok", e["garbage_bytes"])
+    cut = 0
+    for path in logs:
+        if not os.path.exists(path):
+            continue
+        data = Path(path).read_bytes()
+        packets = [e for e in m.packets.decode_all(data) if isinstance(e, m.packets.Packet)]
+        assert by_name[os.path.basename(path)][2] == len(packets), path
+        proto = m._protocol
+        for p in packets:
+            last = p.offset + proto.HEADER_SIZE + data[p.offset + proto.LENGTH_OFFSET] + proto.CHECKSUM_SIZE - 1
+            cut += p.offset // SPLIT != last // SPLIT
+    assert cut >= 10  # split boundaries did cut packets
+    assert {r["path"] for r in summary.logs} == set(logs)  # paths as given
+
+
+def test_cli_errors_are_one_line(tmp_path):
+    """Bad options and a missing Java are one line on stderr (no traceback), exit status 2."""
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+
+    def run(*args, **extra):
+        return subprocess.run(
+            [sys.executable, "-m", "mipcodec.spark", *args],
+            capture_output=True,
+            text=True,
+            env={**env, **extra},
+            timeout=120,
+        )
+
+    r = run(str(CAPTURE), "--out", str(tmp_path / "d"), "--split-bytes", "0")
+    assert r.returncode == 2 and "needs an integer > 0" in r.stderr and "Traceback" not in r.stderr
+    r = run(str(CAPTURE))
+    assert r.returncode == 2 and "--out" in r.stderr and "Traceback" not in r.stderr
+    r = run(str(CAPTURE), "--out", str(tmp_path / "d"), "--conf", "novalue")
+    assert r.returncode == 2 and r.stderr.strip() == "mipcodec.spark: --conf needs KEY=VALUE, not 'novalue'"
+    r = run(str(CAPTURE), "--out", str(tmp_path / "d"), JAVA_HOME=str(tmp_path / "nojava"))
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines() == [
+        f"mipcodec.spark: Spark needs a Java 17 or 21 runtime: JAVA_HOME={tmp_path / 'nojava'} has no bin/java "
+        "(Debian: apt-get install openjdk-17-jre-headless)"
+    ]
+
+
+def test_cli_without_pyspark(tmp_path):
+    """Without pyspark: the one line naming the extra that installs it."""
+    code = (
+        "import runpy, sys; sys.modules['pyspark'] = None; "
+        f"sys.argv = ['spark', 'x.bin', '--out', {str(tmp_path / 'd')!r}]; "
+        "runpy.run_module('mipcodec.spark', run_name='__main__')"
+    )
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines() == [
+        "mipcodec.spark: pyspark is not installed: pip install 'mipcodec[spark]' (or pip install pyspark)"
+    ]
+
+
+def test_cli_replaces_a_logs_parts(tmp_path, logs):
+    """`python -m mipcodec.spark` on a log: exit 0, its line on stdout, its part files, and a stale
+    part of the same log (an earlier run's) removed: re-running replaces, never duplicates."""
+    m = mip()
+    out = tmp_path / "ds"
+    path = logs[0]  # the fleet's first GX5-45
+    log = m.dataset.log_id(path)
+    stale = out / "sensor.scaled_accel" / "model=x" / "serial=y" / "date=z" / f"part-{log}-ffffffffffff.parquet"
+    stale.parent.mkdir(parents=True)
+    stale.write_bytes(b"old")
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+    r = subprocess.run(
+        [sys.executable, "-m", "mipcodec.spark", path, "--out", str(out), "--master", "local[1]"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
+    assert r.returncode == 0, r.stderr
+    assert "Traceback" not in r.stderr
+    garbage = json.loads((Path(path).parent / "fleet.json").read_text())["devices"][0]["garbage_bytes"]
+    status = f"corrupt, {{}} packets, {garbage} bytes skipped" if garbage else "ok, {} packets, 0 bytes skipped"
+    assert re.fullmatch(f"{re.escape(path)}: {status.format('[0-9]+')}, 0 bad checksums -> log {log}\n", r.stdout)
+    assert not stale.exists()
+    assert (out / "_files" / f"part-{log}.parquet").exists()
+    parts = list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-10100/date=*/*.parquet"))
+    assert parts and {p.name for p in parts} == {f"part-{log}-000000000000.parquet"}  # one split (< 64 MiB)
