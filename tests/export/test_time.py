@@ -254,7 +254,7 @@ def random_log(seed: int, n: int = 400) -> bytes:
         elif r < 0.01:
             dev = rng.randrange(0, 2 * NS)  # a reset
         elif r < 0.03:
-            dev -= rng.randrange(0, NS)  # a small step back (not a reset)
+            dev = max(0, dev - rng.randrange(0, NS))  # a small step back (not a reset)
         else:
             dev += rng.randrange(1, 50_000_000)
         tow += rng.random() * 0.05
@@ -326,7 +326,10 @@ def test_per_split_equals_whole_log(seed):
 def test_block_path_equals_packet_path():
     data = random_log(7)
     P = M["packets"]
-    clock_map = tb.ClockMap.from_splits([tb.split_anchors(data, 0, 0, len(data))])
+    anchors = tb.split_anchors(data, 0, 0, len(data))  # (vectorised)
+    assert anchors == tb.summarize(tb.packet_time(p) for p in decoded(data))
+    assert len(anchors.segments) >= 2 and anchors.first_leap is not None
+    clock_map = tb.ClockMap.from_splits([anchors])
     bt = clock_map.split(0).block(P.decode_columns(data), 0)
     look = bt.lookup(np.array([o for o, _t in whole_times(data)]))
     whole = [t for _o, t in whole_times(data)]
@@ -399,3 +402,76 @@ def test_info_reports_gaps_jumps_resets_and_invalid_stretches(tmp_path, capsys):
         lines[lines.index("invalid-time stretches: 3") + 1]
         == f"  offset {offs[0]}: 1 packet (no GPS anchor for the device clock)"
     )
+
+
+# ---------------------------------------------------------------------------- session
+
+
+def test_the_session_times_data_packets_live():
+    session_mod = importlib.import_module("mipcodec.session")
+    log = [
+        packet(dev=1 * NS),  # live: no anchor seen yet, no time (the log rule would give TOW 99)
+        packet(dev=2 * NS, gps=100.0),  # anchor: TOW 100
+        packet(dev=3 * NS),  # TOW 101
+        leap_packet(17),  # the device's leap seconds from here on: 17 s
+        packet(dev=4 * NS),  # TOW 102, UTC with 17 s
+        packet(dev=int(0.5 * NS)),  # a reset: no anchor in the new epoch
+    ]
+    u = WEEK0 + 18 * NS  # week W TOW 0 as UTC with no leap seconds
+    want = [
+        (None, 1 * NS),
+        (u + 100 * NS - 18 * NS, 2 * NS),
+        (u + 101 * NS - 18 * NS, 3 * NS),
+        (None, None),  # the leap second packet has no time of its own
+        (u + 102 * NS - 17 * NS, 4 * NS),
+        (None, NS // 2),
+    ]
+    data = b"".join(log)
+    # A packet handler asking each packet's time (the session's fast path for one handler), the
+    # same with a field handler too, and the time model started before any handler.
+    for setup in ("handler", "handlers", "started"):
+        session = session_mod.Session("cv7_ins")
+        seen = []
+        if setup == "started":
+            assert session.time.latest is None
+            events = session.feed(data, 0)
+            packets = [e for e in events if hasattr(e, "fields")]
+            seen = [(session.utc_ns(p), session.times(p).device_ns) for p in packets]
+        else:
+            session.on_packet(lambda p, s=session, out=seen: out.append((s.utc_ns(p), s.times(p).device_ns)))
+            if setup == "handlers":
+                session.on_field(0x80, 0x04, lambda v, p: None)
+            # in two pieces (the second packet split), so the model keeps its state across feeds
+            session.feed(data[:40], 0)
+            session.feed(data[40:], 1)
+        session.close(2)
+        assert seen == want, setup
+        # Another packet, asked about later: against the current state (epoch 1, no anchor).
+        assert session.utc_ns(decoded(packet(dev=5 * NS))[0]) is None
+        assert session.time.epoch == 1 and session.time.leap_latest == 17
+        # An earlier packet again: the same answer as it had (its state is not changed by asking).
+        first = decoded(data)[2]
+        assert session.utc_ns(first) is None  # (now: epoch 1 has no anchor)
+
+
+def test_file_clock_in_splits_equals_the_whole_log(tmp_path, monkeypatch):
+    # The clock map of a file read in small splits (and, without numpy, packet by packet in parts
+    # of 4096 packets) equals the one of the whole log's packets.
+    data = random_log(11, n=6000)
+    path = tmp_path / "log.bin"
+    path.write_bytes(data)
+    whole = tb.summarize(tb.packet_time(p) for p in decoded(data))
+    want = tb.ClockMap.from_splits([whole]).split(0)
+    state = lambda c: (c.prev_device_ns, c.latest, c.epoch, c.firsts, c.leap_latest, c.leap_first)  # noqa: E731
+    assert len(whole.segments) >= 2
+    for size in (1000, 4096, len(data)):
+        assert state(tb.file_clock(str(path), size).split(0)) == state(want), size
+    real = importlib.import_module
+
+    def no_numpy(name, *a):
+        if name == "numpy":
+            raise ImportError(name)
+        return real(name, *a)
+
+    monkeypatch.setattr(tb.importlib, "import_module", no_numpy)
+    assert state(tb.file_clock(str(path)).split(0)) == state(want)

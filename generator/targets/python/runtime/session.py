@@ -50,6 +50,7 @@ from .framing import (
 )
 from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from .samples import Sample, SampleGrouper
+from .timebase import SplitClock, Times
 from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
@@ -572,6 +573,11 @@ class Session:
         self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
         self._sample_handlers: List[Callable[[Sample], Any]] = []
         self._grouper: Optional[SampleGrouper] = None
+        # The time model (timebase; docs/log-to-csv.md "Time"), from its first use on fed every
+        # packet that is not a reply: the live clock map (anchors so far, resets, leap seconds).
+        self._clock: Optional[SplitClock] = None
+        self._timed: Dict[int, Times] = {}  # offset -> times of the packets of the last feed
+        self._timed_to = -1  # the offset of the last packet fed to the time model
 
     # -------------------------------------------------------------- handlers
     def on_packet(self, handler: Callable[[Packet], Any]) -> None:
@@ -588,6 +594,41 @@ class Session:
             self._grouper = SampleGrouper(self.device)
             self._parser.raw = True  # the grouper reads the packets' bytes
         self._sample_handlers.append(handler)
+
+    # -------------------------------------------------------------- time
+    @property
+    def time(self) -> SplitClock:
+        """The live time model (`timebase.SplitClock`: the latest anchor, the device clock's epoch,
+        the device's leap seconds). Its first use starts it: from then on every packet that is not
+        a reply feeds it."""
+        if self._clock is None:
+            self._clock = SplitClock()
+        return self._clock
+
+    def _step(self, packet: Packet) -> Times:
+        t = self.time.times(packet)
+        self._timed[packet.offset] = t
+        self._timed_to = packet.offset
+        return t
+
+    def times(self, packet: Packet) -> Times:
+        """The times of a data packet (`timebase.Times`: UTC `t_ns`, and the device's own
+        `device_ns`, `gps_week`, `gps_tow`) by the log's rule with what the session has seen so
+        far: a packet after the last one fed to the time model feeds it (as every packet does once
+        the model has started, `time`); a packet of the last `feed`/`poll`/`close` gets the times
+        it got then; an earlier one is timed against the current state without changing it. Live, nothing comes from later packets: until the device has sent a packet
+        with both a valid GPS time and the reference timestamp (an anchor), and after a reset
+        until the next anchor, packets with only the device clock have no UTC time."""
+        t = self._timed.get(packet.offset)
+        if t is not None:
+            return t
+        if packet.offset > self._timed_to:
+            return self._step(packet)
+        return self.time.peek(packet)
+
+    def utc_ns(self, packet: Packet) -> Optional[int]:
+        """UTC ns since the Unix epoch of a data packet (None when unknown); see `times`."""
+        return self.times(packet).t_ns
 
     # -------------------------------------------------------------- commands
     @property
@@ -650,6 +691,8 @@ class Session:
         """Bytes received at `now_ms`: returns the events in order (Results of commands that
         completed, Packets that are not replies, Skip runs) after calling the handlers."""
         events: List[Event] = self._expire(now_ms) if self._pending else []
+        if self._timed:
+            self._timed = {}  # (the times of the last call's packets only: bounded memory)
         parsed, hits, clean = self._parser.feed_watch(data, now_ms, self._sets)
         if not parsed:
             return events
@@ -663,7 +706,7 @@ class Session:
                 events += parsed
             else:
                 events = parsed
-            if self._packet_handlers or self._field_handlers:
+            if self._packet_handlers or self._field_handlers or self._clock is not None:
                 self._deliver(parsed, clean)
             return events
         at = 0
@@ -679,7 +722,7 @@ class Session:
         if a < b:
             run = parsed[a:b]
             events += run
-            if self._packet_handlers or self._field_handlers or self._grouper is not None:
+            if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
                 self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
@@ -730,13 +773,18 @@ class Session:
         """Calls the handlers for events none of which is a reply (packet by packet, each packet's
         handlers in the order of section 8; one packet handler alone: a loop in C). `clean`: no
         Skip is among them."""
-        if len(self._packet_handlers) == 1 and not self._field_handlers and self._grouper is None:
+        if (
+            len(self._packet_handlers) == 1
+            and not self._field_handlers
+            and self._grouper is None
+            and self._clock is None
+        ):
             if not clean:
                 packet_type = Packet
                 parsed = [e for e in parsed if type(e) is packet_type]
             deque(map(self._packet_handlers[0], parsed), 0)
             return
-        if self._grouper is None and not self._packet_handlers:
+        if self._grouper is None and not self._packet_handlers and self._clock is None:
             # Field handlers only: a look at the packets of the sets they are for.
             handlers = self._field_handlers
             sets = {k[0] for k in handlers}
@@ -754,7 +802,7 @@ class Session:
                 self._data(e)
 
     def _route(self, parsed: List[Any], events: List[Event]) -> None:
-        if self._packet_handlers or self._field_handlers or self._grouper is not None:
+        if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
             for e in parsed:
                 self._event(e, events)
             return
@@ -790,6 +838,8 @@ class Session:
         if type(packet) is RawPacket:
             raw = packet
             packet = decode_packet(raw.data, raw.offset, self.device)
+        if self._clock is not None:
+            self._step(packet)
         for on_packet in self._packet_handlers:
             on_packet(packet)
         if self._field_handlers:
@@ -918,6 +968,19 @@ class Device(_CommandSets):
 
     def on_sample(self, handler: Callable[[Sample], Any]) -> None:
         self.session.on_sample(handler)
+
+    @property
+    def time(self) -> SplitClock:
+        """The session's live time model (`Session.time`)."""
+        return self.session.time
+
+    def times(self, packet: Packet) -> Times:
+        """`Session.times`: the times of a data packet."""
+        return self.session.times(packet)
+
+    def utc_ns(self, packet: Packet) -> Optional[int]:
+        """`Session.utc_ns`: UTC ns since the Unix epoch of a data packet, or None."""
+        return self.session.utc_ns(packet)
 
     def _deliver(self, events: List[Event]) -> None:
         if self.on_event is not None:

@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import importlib
 import math
+import os
 from typing import Any, Dict, Iterable, List, NamedTuple, Optional, Sequence, Tuple
 
 from . import _columns
@@ -260,8 +261,38 @@ def split_anchors(data: Any, base: int, start: int, end: int) -> SplitAnchors:
     starting before `start` are read only to resynchronise)."""
     from .packets import decode_columns
 
-    cols = decode_columns(data)
-    return summarize(t for t in columns_times(cols, base) if start <= t.offset < end)
+    np = importlib.import_module("numpy")
+    p = _columns_arrays(np, decode_columns(data), base)
+    keep = (p["offset"] >= start) & (p["offset"] < end)
+    return _summarize_arrays(np, {k: v[keep] for k, v in p.items()})
+
+
+def _summarize_arrays(np: Any, p: Dict[str, Any]) -> SplitAnchors:
+    """`summarize` of the per-packet arrays of `_columns_arrays` (vectorised)."""
+    leaps = p["leap"][p["leap_ok"]]
+    first_leap = int(leaps[0]) if len(leaps) else None
+    last_leap = int(leaps[-1]) if len(leaps) else None
+    di = np.flatnonzero(p["has_device"])
+    if not len(di):
+        return SplitAnchors(None, None, (Segment(None, None),), first_leap, last_leap)
+    dv = p["device_ns"][di]
+    seg = np.zeros(len(dv), dtype=np.int64)
+    seg[1:] = np.cumsum(dv[1:] < dv[:-1] - RESET_NS)
+    anchors = np.flatnonzero(p["gps_ok"][di])
+    gps = p["gps_ns"][di]
+    firsts: Dict[int, Anchor] = {}
+    lasts: Dict[int, Anchor] = {}
+    if len(anchors):
+        a_seg = seg[anchors]
+        _u, first_i = np.unique(a_seg, return_index=True)
+        for i in anchors[first_i]:
+            firsts[int(seg[i])] = Anchor(int(dv[i]), int(gps[i]))
+        rev = a_seg[::-1]
+        _u, last_r = np.unique(rev, return_index=True)
+        for i in anchors[::-1][last_r]:
+            lasts[int(seg[i])] = Anchor(int(dv[i]), int(gps[i]))
+    segments = tuple(Segment(firsts.get(k), lasts.get(k)) for k in range(int(seg[-1]) + 1))
+    return SplitAnchors(int(dv[0]), int(dv[-1]), segments, first_leap, last_leap)
 
 
 class SplitClock:
@@ -314,6 +345,12 @@ class SplitClock:
     def times(self, packet: Packet) -> Times:
         """The times of the next decoded packet, advancing the state."""
         return self.step(packet_time(packet))
+
+    def peek(self, packet: Packet) -> Times:
+        """The times `times(packet)` would give now, without advancing the state."""
+        other = SplitClock(self.prev_device_ns, self.latest, self.epoch, None, self.leap_latest, self.leap_first)
+        other.firsts = self.firsts  # (read only by step)
+        return other.step(packet_time(packet))
 
     def block(self, cols: Any, base: int, start: Optional[int] = None, end: Optional[int] = None) -> BlockTimes:
         """The times of every packet of a `decode_columns` block (`cols`, decoded from the bytes
@@ -670,6 +707,75 @@ def columns_times(cols: Any, base: int) -> List[PacketTime]:
             )
         )
     return out
+
+
+# A log file is read in splits of this many bytes by `file_clock` (small, so that `info`'s memory
+# does not grow with the log: one split's columns at a time), each from FILE_LOOKBACK bytes before
+# its start, to resynchronise as the dataset's splits do.
+FILE_SPLIT = 4 << 20
+FILE_LOOKBACK = 64 << 10
+
+
+def file_clock(path: str, split_bytes: int = FILE_SPLIT) -> ClockMap:
+    """The clock map of a log file in memory that does not grow with the log: `split_anchors` of
+    each split of `split_bytes` (with numpy; decoded by `decode_columns`), or, without numpy, the
+    file's packets decoded one by one (one split). `.split(0)` is then the state to time the whole
+    file from its start, packet by packet."""
+    from ._protocol import MAX_PACKET
+
+    try:
+        importlib.import_module("numpy")
+    except ImportError:
+        from .packets import Decoder
+
+        dec = Decoder()
+        found: List[PacketTime] = []
+        anchors: List[SplitAnchors] = []
+        with open(path, "rb") as fh:
+            for chunk in iter(lambda: fh.read(1 << 16), b""):
+                found.extend(packet_time(e) for e in dec.feed(chunk) if isinstance(e, Packet))
+                if len(found) > 4096:  # summarise as it goes: one split per 4096 packets
+                    anchors.append(summarize(found))
+                    found = []
+            found.extend(packet_time(e) for e in dec.flush() if isinstance(e, Packet))
+        anchors.append(summarize(found))
+        return ClockMap.from_splits([_merged(anchors)])
+    size = os.path.getsize(path)
+    out = []
+    with open(path, "rb") as fh:
+        for start in range(0, max(size, 1), split_bytes):
+            end = min(size, start + split_bytes)
+            base = max(0, start - FILE_LOOKBACK)
+            fh.seek(base)
+            data = fh.read(min(size, end + MAX_PACKET) - base)
+            out.append(split_anchors(data, base, start, end))
+    return ClockMap.from_splits(out)
+
+
+def _merged(parts: List[SplitAnchors]) -> SplitAnchors:
+    """One `SplitAnchors` of consecutive parts (what `summarize` of all their packets gives)."""
+    first_dev: Optional[int] = None
+    prev: Optional[int] = None
+    segments: List[Segment] = []
+    first_leap: Optional[int] = None
+    last_leap: Optional[int] = None
+    for p in parts:
+        for j, seg in enumerate(p.segments):
+            new = j > 0 or (p.first_device_ns is not None and prev is not None and p.first_device_ns < prev - RESET_NS)
+            if segments and not new:
+                a, b = segments[-1]
+                segments[-1] = Segment(a if a is not None else seg.first, seg.last if seg.last is not None else b)
+            else:
+                segments.append(seg)
+        if first_dev is None:
+            first_dev = p.first_device_ns
+        if p.last_device_ns is not None:
+            prev = p.last_device_ns
+        if first_leap is None:
+            first_leap = p.first_leap
+        if p.last_leap is not None:
+            last_leap = p.last_leap
+    return SplitAnchors(first_dev, prev, tuple(segments) or (Segment(None, None),), first_leap, last_leap)
 
 
 def log_clock(packets: Iterable[Packet]) -> ClockMap:
