@@ -160,8 +160,8 @@ static uint32_t first_word(const void *value) {
 static void on_other(void *ctx, const mipc_field_entry_t *e) {
     counts_t *c = ctx;
     mipc_field_value_t value;
-    if (e->kind != MIPC_ENTRY_FIELD ||
-        mipc_decode_field(c->set, e->descriptor, e->data, e->length, MIPC_DEVICE_ANY, &value, NULL) != MIPC_OK) {
+    if (e->kind != MIPC_ENTRY_FIELD || mipc_decode_field(c->set, e->descriptor, e->data, e->length,
+                                                         MIPC_DEVICE_ANY, &value, NULL) != MIPC_OK) {
         c->errors++;
         return;
     }

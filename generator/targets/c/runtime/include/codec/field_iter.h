@@ -106,8 +106,8 @@ typedef void (*codec_field_entry_fn)(void *ctx, const codec_field_entry_t *entry
 
 /* Private (the straight-line packet decoders): passes the entry at payload offset pos, and for
  * trailing bytes the one entry they make, to fn (out of line: rare). */
-void codec_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos, codec_field_entry_fn fn,
-                           void *ctx);
+void codec_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos,
+                           codec_field_entry_fn fn, void *ctx);
 
 /** Most fields a packet can hold (each has at least a field header). */
 #define CODEC_PACKET_FIELDS_MAX (CODEC_MAX_PAYLOAD / CODEC_FIELD_HEADER_SIZE)
