@@ -497,6 +497,9 @@ class _Protocol:
         a field with per-device variants is left to the general dispatch, as the device chooses
         among them. `includes`: the headers of the members' types other than the set's own."""
         headers = {s["id"]: s["header"] for s in self.sets}
+        # dispatch.h: the union of every set's packet struct and the decoder that picks by set
+        self._claim(f"{self.p}_packet_t", "the packet of any data set")
+        self._claim(f"{self.p}_decode_packet", "the straight-line decoder of any data set")
         for s in self.sets:
             if self.data_kind is None or s["kind"] != self.data_kind["name"]:
                 s["packet"] = None

@@ -8,7 +8,7 @@
  *                before timing): every byte read and written once, the limit the parsers' rows
  *                are divided by (tests/bench/run.py)
  *   mode=frame   mipc_parser_feed + flush: every packet reported, garbage skipped
- *   mode=decode  the same, plus the typed decode of every field: mipc_decode_data_packet, the
+ *   mode=decode  the same, plus the typed decode of every field: mipc_decode_packet, the
  *                straight-line decoder of the packet's set (issue 38; a field it leaves goes to
  *                mipc_decode_field)
  *   mode=copy-per-packet  diagnostic only: memchr(sync byte) + memcpy of each packet into a
@@ -170,7 +170,7 @@ static void on_other(void *ctx, const mipc_field_entry_t *e) {
 }
 
 static void on_decode(void *ctx, const mipc_event_t *ev) {
-    static mipc_data_packet_t packet;
+    static mipc_packet_t packet;
     counts_t *c = ctx;
     const mipc_packet_index_t *index;
     size_t i;
@@ -179,7 +179,7 @@ static void on_decode(void *ctx, const mipc_event_t *ev) {
     }
     c->packets++;
     c->set = mipc_packet_set(ev->packet);
-    index = mipc_decode_data_packet(ev->packet, &packet, on_other, c);
+    index = mipc_decode_packet(ev->packet, &packet, on_other, c);
     if (index == NULL) {
         return;
     }

@@ -2457,7 +2457,7 @@ mipc_status_t mipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
-/* Every entry of a payload to fn (out of line: mipc_decode_data_packet stays a switch). */
+/* Every entry of a payload to fn (out of line: mipc_decode_packet stays a switch). */
 static MIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len, mipc_field_entry_fn fn,
                                     void *ctx) {
     mipc_field_iter_t it;
@@ -2468,8 +2468,8 @@ static MIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t 
     }
 }
 
-const mipc_packet_index_t *mipc_decode_data_packet(const uint8_t *packet, mipc_data_packet_t *out,
-                                                   mipc_field_entry_fn other, void *ctx) {
+const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet_t *out,
+                                              mipc_field_entry_fn other, void *ctx) {
     const uint8_t set = mipc_packet_set(packet);
     const uint8_t *payload = mipc_packet_payload(packet);
     const size_t len = mipc_packet_payload_length(packet);

@@ -112,7 +112,7 @@ inline std::vector<uint8_t> encoded(const mipc_field_value_t &value) {
     return out;
 }
 
-// The straight-line decoder (mipc_decode_data_packet, issue 38) against the general dispatch on
+// The straight-line decoder (mipc_decode_packet, issue 38) against the general dispatch on
 // every packet of a stream: each field the general path decodes with a field's only layout (the
 // first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
 // encodes to the same bytes; every other entry goes to the callback, in order. Returns "" when
@@ -130,11 +130,11 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
     };
     mipc_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
     mipc_parser_flush(&parser, keep, &packets);
-    static mipc_data_packet_t decoded;
+    static mipc_packet_t decoded;
     for (const std::vector<uint8_t> &pk : packets.list) {
         const uint8_t set = mipc_packet_set(pk.data());
         StraightLine sl;
-        const mipc_packet_index_t *index = mipc_decode_data_packet(pk.data(), &decoded, note_other, &sl);
+        const mipc_packet_index_t *index = mipc_decode_packet(pk.data(), &decoded, note_other, &sl);
         mipc_field_iter_t it;
         mipc_field_entry_t e;
         std::vector<size_t> other;

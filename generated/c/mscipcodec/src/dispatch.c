@@ -537,7 +537,7 @@ mscipc_status_t mscipc_decode_field(uint8_t set, uint8_t descriptor, const uint8
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
-/* Every entry of a payload to fn (out of line: mscipc_decode_data_packet stays a switch). */
+/* Every entry of a payload to fn (out of line: mscipc_decode_packet stays a switch). */
 static MSCIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len,
                                       mscipc_field_entry_fn fn, void *ctx) {
     mscipc_field_iter_t it;
@@ -548,8 +548,8 @@ static MSCIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_
     }
 }
 
-const mscipc_packet_index_t *mscipc_decode_data_packet(const uint8_t *packet, mscipc_data_packet_t *out,
-                                                       mscipc_field_entry_fn other, void *ctx) {
+const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_packet_t *out,
+                                                  mscipc_field_entry_fn other, void *ctx) {
     const uint8_t set = mscipc_packet_set(packet);
     const uint8_t *payload = mscipc_packet_payload(packet);
     const size_t len = mscipc_packet_payload_length(packet);

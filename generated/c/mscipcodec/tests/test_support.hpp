@@ -112,7 +112,7 @@ inline std::vector<uint8_t> encoded(const mscipc_field_value_t &value) {
     return out;
 }
 
-// The straight-line decoder (mscipc_decode_data_packet, issue 38) against the general dispatch on
+// The straight-line decoder (mscipc_decode_packet, issue 38) against the general dispatch on
 // every packet of a stream: each field the general path decodes with a field's only layout (the
 // first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
 // encodes to the same bytes; every other entry goes to the callback, in order. Returns "" when
@@ -130,11 +130,11 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
     };
     mscipc_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
     mscipc_parser_flush(&parser, keep, &packets);
-    static mscipc_data_packet_t decoded;
+    static mscipc_packet_t decoded;
     for (const std::vector<uint8_t> &pk : packets.list) {
         const uint8_t set = mscipc_packet_set(pk.data());
         StraightLine sl;
-        const mscipc_packet_index_t *index = mscipc_decode_data_packet(pk.data(), &decoded, note_other, &sl);
+        const mscipc_packet_index_t *index = mscipc_decode_packet(pk.data(), &decoded, note_other, &sl);
         mscipc_field_iter_t it;
         mscipc_field_entry_t e;
         std::vector<size_t> other;

@@ -826,7 +826,7 @@ const mipc_field_info_t *mipc_find_field(uint8_t set, uint8_t descriptor, mipc_s
 mipc_status_t mipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                 mipc_device_t device, mipc_field_value_t *out, mipc_decode_error_t *err);
 
-/** A packet of any data set decoded by its set's straight-line decoder (mipc_decode_data_packet). */
+/** A packet of any data set decoded by its set's straight-line decoder (mipc_decode_packet). */
 typedef struct {
     uint8_t set;
     union {
@@ -841,7 +841,7 @@ typedef struct {
         mipc_shared_packet_t shared;
         uint8_t none_; /* no data set */
     } u;
-} mipc_data_packet_t;
+} mipc_packet_t;
 
 /**
  * Decodes a packet (sync, header and payload; its checksum is the parser's business) of a data set
@@ -850,8 +850,8 @@ typedef struct {
  * decoded, in packet order). For a set without one (not a data set, or not defined) every entry
  * goes to other and it returns NULL.
  */
-const mipc_packet_index_t *mipc_decode_data_packet(const uint8_t *packet, mipc_data_packet_t *out,
-                                                   mipc_field_entry_fn other, void *ctx);
+const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet_t *out,
+                                              mipc_field_entry_fn other, void *ctx);
 
 /** Encodes the data of a decoded field (no field header). */
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out);

@@ -191,14 +191,14 @@ mscipc_status_t mscipc_decode_field(uint8_t set, uint8_t descriptor, const uint8
                                     mscipc_device_t device, mscipc_field_value_t *out,
                                     mscipc_decode_error_t *err);
 
-/** A packet of any data set decoded by its set's straight-line decoder (mscipc_decode_data_packet). */
+/** A packet of any data set decoded by its set's straight-line decoder (mscipc_decode_packet). */
 typedef struct {
     uint8_t set;
     union {
         mscipc_imu_data_packet_t imu_data;
         uint8_t none_; /* no data set */
     } u;
-} mscipc_data_packet_t;
+} mscipc_packet_t;
 
 /**
  * Decodes a packet (sync, header and payload; its checksum is the parser's business) of a data set
@@ -207,8 +207,8 @@ typedef struct {
  * decoded, in packet order). For a set without one (not a data set, or not defined) every entry
  * goes to other and it returns NULL.
  */
-const mscipc_packet_index_t *mscipc_decode_data_packet(const uint8_t *packet, mscipc_data_packet_t *out,
-                                                       mscipc_field_entry_fn other, void *ctx);
+const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_packet_t *out,
+                                                  mscipc_field_entry_fn other, void *ctx);
 
 /** Encodes the data of a decoded field (no field header). */
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,

@@ -111,7 +111,7 @@ inline std::vector<uint8_t> encoded(const codec_field_value_t &value) {
     return out;
 }
 
-// The straight-line decoder (codec_decode_data_packet, issue 38) against the general dispatch on
+// The straight-line decoder (codec_decode_packet, issue 38) against the general dispatch on
 // every packet of a stream: each field the general path decodes with a field's only layout (the
 // first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
 // encodes to the same bytes; every other entry goes to the callback, in order. Returns "" when
@@ -129,11 +129,11 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
     };
     codec_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
     codec_parser_flush(&parser, keep, &packets);
-    static codec_data_packet_t decoded;
+    static codec_packet_t decoded;
     for (const std::vector<uint8_t> &pk : packets.list) {
         const uint8_t set = codec_packet_set(pk.data());
         StraightLine sl;
-        const codec_packet_index_t *index = codec_decode_data_packet(pk.data(), &decoded, note_other, &sl);
+        const codec_packet_index_t *index = codec_decode_packet(pk.data(), &decoded, note_other, &sl);
         codec_field_iter_t it;
         codec_field_entry_t e;
         std::vector<size_t> other;

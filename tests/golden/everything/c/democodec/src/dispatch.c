@@ -366,7 +366,7 @@ democ_status_t democ_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
-/* Every entry of a payload to fn (out of line: democ_decode_data_packet stays a switch). */
+/* Every entry of a payload to fn (out of line: democ_decode_packet stays a switch). */
 static DEMOC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len, democ_field_entry_fn fn,
                                      void *ctx) {
     democ_field_iter_t it;
@@ -377,8 +377,8 @@ static DEMOC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t
     }
 }
 
-const democ_packet_index_t *democ_decode_data_packet(const uint8_t *packet, democ_data_packet_t *out,
-                                                     democ_field_entry_fn other, void *ctx) {
+const democ_packet_index_t *democ_decode_packet(const uint8_t *packet, democ_packet_t *out,
+                                                democ_field_entry_fn other, void *ctx) {
     const uint8_t set = democ_packet_set(packet);
     const uint8_t *payload = democ_packet_payload(packet);
     const size_t len = democ_packet_payload_length(packet);
