@@ -134,14 +134,27 @@ static inline sums_t sums_sse2(sums_t s, const uint8_t *bytes, size_t len) {
         v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo));
         v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi));
     }
-    s.s2 += 16 * blocks * s.s1 + 16 * (uint64_t)hsum_epi32(v_p) + hsum_epi32(v_w);
-    s.s1 += hsum_epi32(v_s);
+    /* sum2 += len sum1 + T with T = 16 P + W (+ the tail's t S + W below); 32-bit lanes wrap */
+    v_w = _mm_add_epi32(_mm_slli_epi32(v_p, 4), v_w);
     if (tail != 0) {
         __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(bytes + len - 16));
         v = _mm_and_si128(v, _mm_loadu_si128((const __m128i *)(const void *)(k_tail_mask + tail)));
-        s.s2 += tail * s.s1 + hsum_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo),
-                                                       _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi)));
-        s.s1 += hsum_epi32(_mm_sad_epu8(v, zero));
+        /* t times the blocks' S: a 16-bit multiply keeps each half lane's low 16 bits, which
+         * loses only multiples of 65536 (nothing modulo 256) */
+        v_w = _mm_add_epi32(v_w, _mm_mullo_epi16(v_s, _mm_set1_epi16((short)tail)));
+        v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpacklo_epi8(v, zero), w_lo));
+        v_w = _mm_add_epi32(v_w, _mm_madd_epi16(_mm_unpackhi_epi8(v, zero), w_hi));
+        v_s = _mm_add_epi32(v_s, _mm_sad_epu8(v, zero));
+    }
+    /* both reductions at once: S is in lanes 0 and 2 of v_s (psadbw; lanes 1 and 3 are zero),
+     * T in the four lanes of v_w */
+    {
+        const __m128i a = _mm_add_epi32(_mm_unpacklo_epi64(v_s, v_w), _mm_unpackhi_epi64(v_s, v_w));
+        const __m128i b = _mm_add_epi32(a, _mm_shuffle_epi32(a, 0xB1));
+        const uint32_t total_s = (uint32_t)_mm_cvtsi128_si32(b);
+        const uint32_t total_t = (uint32_t)_mm_cvtsi128_si32(_mm_unpackhi_epi64(b, b));
+        s.s2 += len * s.s1 + total_t;
+        s.s1 += total_s;
     }
     return s;
 }
