@@ -44,6 +44,7 @@ _RUNTIME_FILES = {
     "src/status.c": "src/status.c",
     "include/codec/framing.h": "include/codec/framing.h",
     "src/framing.c": "src/framing.c",
+    "src/checksum_impl.h": "src/checksum_impl.h",
     "include/codec/parser.h": "include/codec/parser.h",
     "src/parser.c": "src/parser.c",
     "include/codec/field_iter.h": "include/codec/field_iter.h",
@@ -223,6 +224,7 @@ class _Protocol:
         self.shared_set = shared["set"] if shared and any(s["id"] == shared["set"] for s in proto["sets"]) else None
         self.data_kind = next((k for k in self.set_kinds if k["name"] == "data"), None)
         self._add_lookup_tables()
+        self._add_packet_decoders()
         # Path elements are names; an index rides on its array's element (IR value_paths).
         self.path_depth = proto["value_paths"]["names"]
         longest = max([len(n) for n in self._all_param_names()] + [8])
@@ -488,6 +490,50 @@ class _Protocol:
                 key = (("reserved", s["kind"]) if e["source"] == "reserved" else e["set"], e["descriptor"])
                 lookup.append(dict(views[key], source=e["source"]))
             s["lookup"] = lookup
+
+    def _add_packet_decoders(self) -> None:
+        """Each data set view's `packet`: its straight-line packet decoder (set.h.j2, set.c.j2;
+        issue 38), None for the other sets. One member per entry of the set's lookup (its own
+        fields, the reserved fields of its kind, the shared data fields) whose field has one layout;
+        a field with per-device variants is left to the general dispatch, as the device chooses
+        among them. `includes`: the headers of the members' types other than the set's own."""
+        headers = {s["id"]: s["header"] for s in self.sets}
+        # dispatch.h: the union of every set's packet struct and the decoder that picks by set
+        self._claim(f"{self.p}_packet_t", "the packet of any data set")
+        self._claim(f"{self.p}_decode_packet", "the straight-line decoder of any data set")
+        for s in self.sets:
+            if self.data_kind is None or s["kind"] != self.data_kind["name"]:
+                s["packet"] = None
+                continue
+            what = f"set {s['name']}"
+            members = []
+            includes = set()
+            for f in s["lookup"]:
+                if f["count"] != 1:
+                    continue
+                layout = f["layouts"][0]
+                header = headers[f["set"]] if f["set"] is not None else f"{self.pkg}/reserved.h"
+                if header != s["header"]:
+                    includes.add(header)
+                fast = layout["fast"]
+                members.append(
+                    {
+                        "descriptor": f["descriptor"],
+                        "member": layout["member"],
+                        "c": layout["c"],
+                        "fn": layout["fn"],
+                        "size": fast["size"] if fast else None,
+                        "loads": fast["loads"] if fast else [],
+                        "bools": [x["off"] for x in fast["loads"] if x["ld"] == "bool"] if fast else [],
+                        "source": f["source"],
+                    }
+                )
+            s["packet"] = {
+                "c": self._claim(f"{self.p}_{s['name']}_packet_t", what, (s["name"],)),
+                "fn": self._claim(f"{self.p}_{s['name']}_decode_packet", what, (s["name"],)),
+                "members": members,
+                "includes": sorted(includes),
+            }
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:
@@ -923,6 +969,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             "header": f"{pkg.pkg}/reserved.h",
             "guard": f"{pkg.P}_RESERVED_H",
             "macro": None,
+            "packet": None,
             "fields": pkg.reserved,
             "doc": "Reserved fields (valid in every set of their kind)",
         }

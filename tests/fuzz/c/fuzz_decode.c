@@ -54,7 +54,25 @@ static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, siz
     }
 }
 
+/* The straight-line decoder's entries left to the general path: they follow each other in
+ * payload order. */
+typedef struct {
+    size_t count;
+    size_t last; /* payload offset of the last one + 1 (0: none yet) */
+} fz_other_t;
+
+static void count_other(void *arg, const FZ(field_entry_t) * e) {
+    fz_other_t *o = (fz_other_t *)arg;
+    FZ_CHECK(e->offset + 1 > o->last, "entries to other out of order (%zu after %zu)", e->offset, o->last);
+    o->last = e->offset + 1;
+    o->count++;
+}
+
 static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
+    static FZ(packet_t) straight;
+    fz_other_t other = {0, 0};
+    const FZ(packet_index_t) * index;
+    size_t entries = 0;
     FZ(field_iter_t) it;
     FZ(field_entry_t) e;
     const uint8_t *payload = FZ(packet_payload)(packet);
@@ -77,6 +95,14 @@ static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
         }
     }
     FZ_CHECK(pos == plen, "the entries cover %zu of %zu payload bytes", pos, plen);
+    /* the straight-line decoder (issue 38): every entry either decoded into a member or passed on */
+    FZ(field_iter_init)(&it, set, payload, plen);
+    while (FZ(field_iter_next)(&it, &e)) {
+        entries++;
+    }
+    index = FZ(decode_packet)(packet, &straight, count_other, &other);
+    FZ_CHECK((index ? index->count : 0) + other.count == entries, "straight-line decode: %zu + %zu of %zu entries",
+             index ? index->count : (size_t)0, other.count, entries);
 }
 
 static void on_event(void *arg, const FZ(event_t) * ev) {

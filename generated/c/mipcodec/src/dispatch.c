@@ -2457,6 +2457,62 @@ mipc_status_t mipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
+/* Every entry of a payload to fn (out of line: mipc_decode_packet stays a switch). */
+static MIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len, mipc_field_entry_fn fn,
+                                    void *ctx) {
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    mipc_field_iter_init(&it, set, payload, len);
+    while (mipc_field_iter_next(&it, &e)) {
+        fn(ctx, &e);
+    }
+}
+
+const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet_t *out,
+                                              mipc_field_entry_fn other, void *ctx) {
+    const uint8_t set = mipc_packet_set(packet);
+    const uint8_t *payload = mipc_packet_payload(packet);
+    const size_t len = mipc_packet_payload_length(packet);
+    assert(packet != NULL);
+    assert(out != NULL);
+    out->set = set;
+    switch (set) {
+    case 0x80:
+        (void)mipc_sensor_decode_packet(payload, len, &out->u.sensor, other, ctx);
+        return &out->u.sensor.index;
+    case 0x81:
+        (void)mipc_gnss_data_decode_packet(payload, len, &out->u.gnss_data, other, ctx);
+        return &out->u.gnss_data.index;
+    case 0x82:
+        (void)mipc_filter_data_decode_packet(payload, len, &out->u.filter_data, other, ctx);
+        return &out->u.filter_data.index;
+    case 0x91:
+        (void)mipc_gnss_receiver_1_decode_packet(payload, len, &out->u.gnss_receiver_1, other, ctx);
+        return &out->u.gnss_receiver_1.index;
+    case 0x92:
+        (void)mipc_gnss_receiver_2_decode_packet(payload, len, &out->u.gnss_receiver_2, other, ctx);
+        return &out->u.gnss_receiver_2.index;
+    case 0x93:
+        (void)mipc_gnss_corrections_decode_packet(payload, len, &out->u.gnss_corrections, other, ctx);
+        return &out->u.gnss_corrections.index;
+    case 0x94:
+        (void)mipc_gnss_external_decode_packet(payload, len, &out->u.gnss_external, other, ctx);
+        return &out->u.gnss_external.index;
+    case 0xA0:
+        (void)mipc_system_data_decode_packet(payload, len, &out->u.system_data, other, ctx);
+        return &out->u.system_data.index;
+    case 0xFF:
+        (void)mipc_shared_decode_packet(payload, len, &out->u.shared, other, ctx);
+        return &out->u.shared.index;
+    default:
+        break;
+    }
+    if (other) {
+        visit_all(set, payload, len, other, ctx);
+    }
+    return NULL;
+}
+
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     assert(value != NULL);
     assert(buf != NULL || cap == 0);

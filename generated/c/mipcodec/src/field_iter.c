@@ -16,4 +16,16 @@ bool mipc_field_iter_trailing_(mipc_field_iter_t *it, mipc_field_entry_t *entry,
     return true;
 }
 
+void mipc_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos, mipc_field_entry_fn fn,
+                          void *ctx) {
+    mipc_field_iter_t it;
+    mipc_field_entry_t entry;
+    assert(fn != NULL);
+    mipc_field_iter_init(&it, set, payload, len);
+    it.pos = pos;
+    if (mipc_field_iter_next(&it, &entry)) {
+        fn(ctx, &entry);
+    }
+}
+
 /* mipc_trailing_format is in status.c, with the other messages (no stdio). */

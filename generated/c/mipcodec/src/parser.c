@@ -4,6 +4,12 @@
 #include <assert.h>
 #include <string.h>
 
+#include "checksum_impl.h"
+
+/* The sync sequence as a constant of this unit (mipc_sync lives in framing.c, where the compiler
+ * could not fold its bytes into the comparisons). */
+static const uint8_t k_sync[MIPC_SYNC_SIZE] = MIPC_SYNC_BYTES;
+
 void mipc_parser_init(mipc_parser_t *parser) {
     assert(parser != NULL);
     memset(parser, 0, sizeof *parser);
@@ -135,56 +141,189 @@ static size_t wanted(const mipc_parser_t *parser) {
     return total > parser->used ? total - parser->used : 1;
 }
 
+/* Reports a skip run (out of line: rare on the packet path). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void report_run(uint64_t offset, uint64_t count, mipc_event_fn fn, void *ctx) {
+    mipc_event_t ev;
+    ev.kind = MIPC_EVENT_SKIP;
+    ev.offset = offset;
+    ev.length = count;
+    ev.packet = NULL;
+    if (fn) {
+        fn(ctx, &ev);
+    }
+}
+
+/* True when the MIPC_SYNC_SIZE bytes at p are the sync sequence (byte by byte: no library call). */
+static inline bool is_sync(const uint8_t *p) {
+    size_t k;
+    for (k = 0; k < MIPC_SYNC_SIZE; k++) {
+        if (p[k] != k_sync[k]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Index of the lowest set bit of a non-zero word. */
+static inline unsigned lowest_bit(uint64_t x) {
+#if defined(__GNUC__) || defined(__clang__)
+    return (unsigned)__builtin_ctzll(x);
+#else
+    unsigned n = 0;
+    while ((x & 1u) == 0) {
+        x >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* Index in p[0..n) of the first full sync sequence, or of a proper prefix of it that ends the
+ * bytes (a candidate that waits for more input), else n: every position before it is skipped
+ * by the decisions of section 1 (its first byte is not the sync's, or the sync breaks off).
+ * Sixteen positions at a time (eight where there is no SSE2) while the whole sync fits after
+ * all of them: byte k of the sync is compared with the bytes at position + k, and a position
+ * matches where every comparison does. One branch per sixteen bytes of garbage, none per byte
+ * that merely equals the sync's first. */
+static inline size_t next_sync(const uint8_t *p, size_t n) {
+    size_t at = 0;
+    size_t k;
+#if CHECKSUM_SSE2
+    while (n - at >= 16 + MIPC_SYNC_SIZE - 1) {
+        int hits = 0xFFFF;
+        for (k = 0; k < MIPC_SYNC_SIZE; k++) {
+            const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(p + at + k));
+            hits &= _mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8((char)k_sync[k])));
+        }
+        if (hits != 0) {
+            return at + lowest_bit((uint64_t)(unsigned)hits);
+        }
+        at += 16;
+    }
+#else
+    /* Zero bytes of diff are the matches; the lowest flagged byte is the first match (a flag can
+     * be wrong only above a zero byte). */
+    const uint64_t low = UINT64_C(0x0101010101010101);
+    const uint64_t high = UINT64_C(0x8080808080808080);
+    while (n - at >= 8 + MIPC_SYNC_SIZE - 1) {
+        uint64_t diff = 0;
+        uint64_t zero;
+        for (k = 0; k < MIPC_SYNC_SIZE; k++) {
+            diff |= load_le64(p + at + k) ^ (low * k_sync[k]);
+        }
+        zero = (diff - low) & ~diff & high;
+        if (zero != 0) {
+            return at + lowest_bit(zero) / 8;
+        }
+        at += 8;
+    }
+#endif
+    for (; at < n; at++) {
+        size_t m = n - at < MIPC_SYNC_SIZE ? n - at : MIPC_SYNC_SIZE;
+        k = 0;
+        while (k < m && p[at + k] == k_sync[k]) {
+            k++;
+        }
+        if (k == m) {
+            return at;
+        }
+    }
+    return n;
+}
+
+/* The checksum test of a candidate: inlined for the short packets of a data stream (the scalar
+ * steps under 16 bytes, SSE2 under 64), the library function (AVX2 where the CPU has it) for
+ * longer ones. */
+static inline bool checksum_ok(const uint8_t *p, size_t body) {
+    sums_t s = {0, 0};
+#if CHECKSUM_SSE2
+    if (body >= 64) {
+        return mipc_checksum_matches(p, body);
+    }
+    s = body >= 16 ? sums_sse2(s, p, body) : sums_scalar(s, p, body);
+#else
+    s = sums_scalar(s, p, body);
+#endif
+    return sums_word(s) == (unsigned)((unsigned)p[body] << 8 | p[body + 1]);
+}
+
+/* The skip run pending after n more bytes at stream offset `at`: with skip_piece set, every
+ * piece it completes is reported now (as add_skip does). */
+typedef struct {
+    uint64_t offset;
+    uint64_t count;
+} run_t;
+
+static run_t grow_run(run_t run, uint64_t at, uint64_t n, uint64_t piece, mipc_event_fn fn, void *ctx) {
+    if (run.count == 0) {
+        run.offset = at;
+    }
+    run.count += n;
+    while (piece != 0 && run.count >= piece) {
+        report_run(run.offset, piece, fn, ctx);
+        run.offset += piece;
+        run.count -= piece;
+    }
+    return run;
+}
+
 /* The fast path: the same decisions as process(), made in place on the caller's bytes (no copy).
  * Returns the number of bytes consumed; the rest (a candidate that needs more input, shorter
  * than a maximum packet) is left for the caller to buffer. parser->base is the stream offset
- * of data[0] on entry and of data[consumed] on return. */
+ * of data[0] on entry and of data[consumed] on return. The pending skip run lives in locals
+ * (the callback's stores could otherwise alias the parser and force it to memory on every
+ * packet); the parser's fields are up to date again on return. */
 static size_t scan(const uint8_t *data, size_t len, mipc_parser_t *parser, mipc_event_fn fn, void *ctx) {
     const uint64_t base = parser->base;
+    const uint64_t piece = parser->skip_piece;
+    run_t run;
     size_t pos = 0;
+    run.offset = parser->skip_offset;
+    run.count = parser->skip_count;
     while (pos < len) {
         const uint8_t *p = data + pos;
-        size_t left = len - pos;
-        size_t payload;
-        size_t total;
-        if (p[0] != mipc_sync[0]) {
-            const uint8_t *q = memchr(p, mipc_sync[0], left);
-            size_t n = q ? (size_t)(q - p) : left;
-            add_skip(parser, base + pos, n, fn, ctx);
-            pos += n;
-            continue;
-        }
-        if (left < MIPC_HEADER_SIZE) {
-            /* a partial sync or header at the end: the caller buffers it (unless it already
-             * differs from the sync sequence, then skip its first byte) */
-            if (memcmp(p, mipc_sync, left < MIPC_SYNC_SIZE ? left : MIPC_SYNC_SIZE) == 0) {
-                break;
+        const size_t left = len - pos;
+        size_t skipped = 1; /* a false sync: resynchronise at the next byte */
+        if (left < MIPC_SYNC_SIZE || !is_sync(p)) {
+            skipped = next_sync(p, left);
+            if (skipped == 0) {
+                break; /* a partial sync at the end: the caller buffers it */
             }
-        } else if (memcmp(p, mipc_sync, MIPC_SYNC_SIZE) == 0 &&
-                   (payload = p[MIPC_LENGTH_OFFSET]) <= MIPC_MAX_PAYLOAD) {
-            total = MIPC_HEADER_SIZE + payload + MIPC_CHECKSUM_SIZE;
-            if (left < total) {
-                break; /* incomplete packet: the caller buffers it */
-            }
-            if (mipc_checksum_matches(p, MIPC_HEADER_SIZE + payload)) {
-                parser->base = base + pos;
-                emit_skip(parser, fn, ctx);
-                if (fn) {
-                    mipc_event_t ev;
-                    ev.kind = MIPC_EVENT_PACKET;
-                    ev.offset = base + pos;
-                    ev.length = total;
-                    ev.packet = p;
-                    fn(ctx, &ev);
+        } else if (left < MIPC_HEADER_SIZE) {
+            break; /* a partial header at the end: the caller buffers it */
+        } else {
+            const size_t payload = p[MIPC_LENGTH_OFFSET];
+            if (payload <= MIPC_MAX_PAYLOAD) {
+                const size_t body = MIPC_HEADER_SIZE + payload;
+                if (left < body + MIPC_CHECKSUM_SIZE) {
+                    break; /* incomplete packet: the caller buffers it */
                 }
-                pos += total;
-                continue;
+                if (checksum_ok(p, body)) {
+                    if (run.count != 0) {
+                        report_run(run.offset, run.count, fn, ctx);
+                        run.count = 0;
+                    }
+                    if (fn) {
+                        mipc_event_t ev;
+                        ev.kind = MIPC_EVENT_PACKET;
+                        ev.offset = base + pos;
+                        ev.length = body + MIPC_CHECKSUM_SIZE;
+                        ev.packet = p;
+                        fn(ctx, &ev);
+                    }
+                    pos += body + MIPC_CHECKSUM_SIZE;
+                    continue;
+                }
             }
         }
-        /* false sync: skip one byte and resynchronise */
-        add_skip(parser, base + pos, 1, fn, ctx);
-        pos++;
+        run = grow_run(run, base + pos, skipped, piece, fn, ctx);
+        pos += skipped;
     }
+    parser->skip_offset = run.offset;
+    parser->skip_count = run.count;
     parser->base = base + pos;
     return pos;
 }

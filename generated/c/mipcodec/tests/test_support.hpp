@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
+#include "mipcodec/dispatch.h"
 #include "mipcodec/json.h"
 #include "mipcodec/parser.h"
 
@@ -90,6 +92,92 @@ inline Collector decode(const std::vector<uint8_t> &bytes, size_t chunk,
 inline std::string decode_text(const std::vector<uint8_t> &bytes, size_t chunk,
                                mipc_device_t device = MIPC_DEVICE_ANY) {
     return decode(bytes, chunk, device).text;
+}
+
+struct StraightLine {
+    std::vector<size_t> other; // payload offsets of the entries left to the general path
+};
+
+inline void note_other(void *arg, const mipc_field_entry_t *entry) {
+    static_cast<StraightLine *>(arg)->other.push_back(entry->offset);
+}
+
+inline std::vector<uint8_t> encoded(const mipc_field_value_t &value) {
+    std::vector<uint8_t> out(MIPC_MAX_PAYLOAD + 1);
+    size_t n = 0;
+    if (mipc_encode_field(&value, out.data(), out.size(), &n) != MIPC_OK) {
+        return {};
+    }
+    out.resize(n);
+    return out;
+}
+
+// The straight-line decoder (mipc_decode_packet, issue 38) against the general dispatch on
+// every packet of a stream: each field the general path decodes with a field's only layout (the
+// first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
+// encodes to the same bytes; every other entry goes to the callback, in order. Returns "" when
+// they agree, else what differs.
+inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
+    struct Packets {
+        std::vector<std::vector<uint8_t>> list;
+    } packets;
+    mipc_parser_t parser;
+    mipc_parser_init(&parser);
+    auto keep = [](void *arg, const mipc_event_t *ev) {
+        if (ev->kind == MIPC_EVENT_PACKET) {
+            static_cast<Packets *>(arg)->list.emplace_back(ev->packet, ev->packet + ev->length);
+        }
+    };
+    mipc_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
+    mipc_parser_flush(&parser, keep, &packets);
+    static mipc_packet_t decoded;
+    for (const std::vector<uint8_t> &pk : packets.list) {
+        const uint8_t set = mipc_packet_set(pk.data());
+        StraightLine sl;
+        const mipc_packet_index_t *index = mipc_decode_packet(pk.data(), &decoded, note_other, &sl);
+        mipc_field_iter_t it;
+        mipc_field_entry_t e;
+        std::vector<size_t> other;
+        size_t next = 0;
+        bool seen[256] = {};
+        mipc_field_iter_init(&it, set, mipc_packet_payload(pk.data()), mipc_packet_payload_length(pk.data()));
+        while (mipc_field_iter_next(&it, &e)) {
+            mipc_field_value_t general;
+            mipc_field_value_t straight;
+            const mipc_field_info_t *info = mipc_find_field(set, e.descriptor, nullptr);
+            const bool plain = index != nullptr && e.kind == MIPC_ENTRY_FIELD && info != nullptr &&
+                               info->layout_count == 1 && !seen[e.descriptor] &&
+                               mipc_decode_field(set, e.descriptor, e.data, e.length, MIPC_DEVICE_ANY,
+                                                 &general, nullptr) == MIPC_OK;
+            if (!plain) {
+                other.push_back(e.offset);
+                continue;
+            }
+            seen[e.descriptor] = true;
+            if (next >= index->count || index->fields[next].descriptor != e.descriptor) {
+                return "set " + std::to_string(set) + " descriptor " + std::to_string(e.descriptor) +
+                       ": not the next field decoded";
+            }
+            // the member, copied into a general value of the same layout (as far as the packet
+            // struct goes: the member lies inside it)
+            const uint8_t *member = static_cast<const uint8_t *>(mipc_packet_value(index, next));
+            const size_t room = static_cast<size_t>(reinterpret_cast<const uint8_t *>(&decoded + 1) - member);
+            straight.id = general.id;
+            std::memcpy(&straight.u, member, room < sizeof straight.u ? room : sizeof straight.u);
+            if (encoded(straight) != encoded(general) || encoded(general).empty()) {
+                return "set " + std::to_string(set) + " descriptor " + std::to_string(e.descriptor) +
+                       ": another value than the general dispatch";
+            }
+            next++;
+        }
+        if (index != nullptr && next != index->count) {
+            return "set " + std::to_string(set) + ": more fields decoded than the general dispatch";
+        }
+        if (other != sl.other) {
+            return "set " + std::to_string(set) + ": other entries differ";
+        }
+    }
+    return "";
 }
 
 // Encodes newline-separated JSON lines; false and a message on the first bad line.

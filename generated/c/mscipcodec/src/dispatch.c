@@ -537,6 +537,38 @@ mscipc_status_t mscipc_decode_field(uint8_t set, uint8_t descriptor, const uint8
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
+/* Every entry of a payload to fn (out of line: mscipc_decode_packet stays a switch). */
+static MSCIPC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len,
+                                      mscipc_field_entry_fn fn, void *ctx) {
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
+    mscipc_field_iter_init(&it, set, payload, len);
+    while (mscipc_field_iter_next(&it, &e)) {
+        fn(ctx, &e);
+    }
+}
+
+const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_packet_t *out,
+                                                  mscipc_field_entry_fn other, void *ctx) {
+    const uint8_t set = mscipc_packet_set(packet);
+    const uint8_t *payload = mscipc_packet_payload(packet);
+    const size_t len = mscipc_packet_payload_length(packet);
+    assert(packet != NULL);
+    assert(out != NULL);
+    out->set = set;
+    switch (set) {
+    case 0xA2:
+        (void)mscipc_imu_data_decode_packet(payload, len, &out->u.imu_data, other, ctx);
+        return &out->u.imu_data.index;
+    default:
+        break;
+    }
+    if (other) {
+        visit_all(set, payload, len, other, ctx);
+    }
+    return NULL;
+}
+
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,
                                     size_t *len_out) {
     assert(value != NULL);

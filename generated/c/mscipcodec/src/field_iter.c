@@ -16,4 +16,16 @@ bool mscipc_field_iter_trailing_(mscipc_field_iter_t *it, mscipc_field_entry_t *
     return true;
 }
 
+void mscipc_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos,
+                            mscipc_field_entry_fn fn, void *ctx) {
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t entry;
+    assert(fn != NULL);
+    mscipc_field_iter_init(&it, set, payload, len);
+    it.pos = pos;
+    if (mscipc_field_iter_next(&it, &entry)) {
+        fn(ctx, &entry);
+    }
+}
+
 /* mscipc_trailing_format is in status.c, with the other messages (no stdio). */

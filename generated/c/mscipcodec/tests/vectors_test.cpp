@@ -20,6 +20,7 @@ namespace {
             break;
         }
     }
+    EXPECT_EQ(straight_line_mismatch(bytes), "") << "the straight-line decoders (issue 38)";
     std::vector<uint8_t> encoded;
     std::string error;
     ASSERT_TRUE(encode_text(expect, &encoded, &error)) << error;

@@ -3,6 +3,7 @@
 #ifndef MIPC_DISPATCH_H
 #define MIPC_DISPATCH_H
 
+#include "mipcodec/field_iter.h"
 #include "mipcodec/reserved.h"
 #include "mipcodec/sets/base.h"
 #include "mipcodec/sets/threedm.h"
@@ -824,6 +825,33 @@ const mipc_field_info_t *mipc_find_field(uint8_t set, uint8_t descriptor, mipc_s
  */
 mipc_status_t mipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                 mipc_device_t device, mipc_field_value_t *out, mipc_decode_error_t *err);
+
+/** A packet of any data set decoded by its set's straight-line decoder (mipc_decode_packet). */
+typedef struct {
+    uint8_t set;
+    union {
+        mipc_sensor_packet_t sensor;
+        mipc_gnss_data_packet_t gnss_data;
+        mipc_filter_data_packet_t filter_data;
+        mipc_gnss_receiver_1_packet_t gnss_receiver_1;
+        mipc_gnss_receiver_2_packet_t gnss_receiver_2;
+        mipc_gnss_corrections_packet_t gnss_corrections;
+        mipc_gnss_external_packet_t gnss_external;
+        mipc_system_data_packet_t system_data;
+        mipc_shared_packet_t shared;
+        uint8_t none_; /* no data set */
+    } u;
+} mipc_packet_t;
+
+/**
+ * Decodes a packet (sync, header and payload; its checksum is the parser's business) of a data set
+ * with that set's straight-line decoder (<set>_decode_packet: entries it leaves go to other, which
+ * may be NULL, with ctx) into the set's member of out->u, and returns its index (the fields
+ * decoded, in packet order). For a set without one (not a data set, or not defined) every entry
+ * goes to other and it returns NULL.
+ */
+const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet_t *out,
+                                              mipc_field_entry_fn other, void *ctx);
 
 /** Encodes the data of a decoded field (no field header). */
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out);

@@ -4,6 +4,7 @@
 #include "types_internal.h"
 
 #include <assert.h>
+#include <stddef.h>
 #include <string.h>
 
 /* ---- mipc_sensor_scaled_accel_t */
@@ -1111,4 +1112,307 @@ mipc_status_t mipc_sensor_odometer_data_decode(const uint8_t *data, size_t len,
         return MIPC_OK;
     }
     return mipc_sensor_odometer_data_decode_read(data, len, out, err);
+}
+
+/* ---- the straight-line packet decoder */
+
+size_t mipc_sensor_decode_packet(const uint8_t *payload, size_t len, mipc_sensor_packet_t *out,
+                                 mipc_field_entry_fn other, void *ctx) {
+    size_t pos = 0;
+    size_t n = 0;
+    assert(payload != NULL || len == 0);
+    assert(out != NULL);
+    memset(out->index.present, 0, sizeof out->index.present);
+    if (payload == NULL) {
+        len = 0;
+    }
+    /* the field headers read in place (the iterator's entry is built only for what goes to other) */
+    while (len - pos >= MIPC_FIELD_HEADER_SIZE) {
+        const uint8_t *head = payload + pos;
+        const uint8_t descriptor = head[MIPC_FIELD_DESCRIPTOR_OFFSET];
+        const int data_len =
+            (int)head[MIPC_FIELD_LENGTH_OFFSET] - mipc_field_length_adjust(MIPC_SENSOR_SET, descriptor);
+        const uint8_t *d = head + MIPC_FIELD_HEADER_SIZE;
+        const uint32_t bit = (uint32_t)1u << (descriptor % 32u);
+        size_t length;
+        size_t offset = 0;
+        int ok = 0;
+        if (data_len < 0 || (size_t)data_len > len - pos - MIPC_FIELD_HEADER_SIZE) {
+            break; /* trailing bytes: the iterator reports them below */
+        }
+        length = (size_t)data_len;
+        if ((out->index.present[descriptor / 32u] & bit) == 0) {
+            switch (descriptor) {
+            case 0x04:
+                if (length == 12) {
+                    out->sensor_scaled_accel.scaled_accel[0] = mipc_ld_f32(d + 0);
+                    out->sensor_scaled_accel.scaled_accel[1] = mipc_ld_f32(d + 4);
+                    out->sensor_scaled_accel.scaled_accel[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_scaled_accel_decode(d, length, &out->sensor_scaled_accel, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_scaled_accel);
+                break;
+            case 0x05:
+                if (length == 12) {
+                    out->sensor_scaled_gyro.scaled_gyro[0] = mipc_ld_f32(d + 0);
+                    out->sensor_scaled_gyro.scaled_gyro[1] = mipc_ld_f32(d + 4);
+                    out->sensor_scaled_gyro.scaled_gyro[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_scaled_gyro_decode(d, length, &out->sensor_scaled_gyro, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_scaled_gyro);
+                break;
+            case 0x06:
+                if (length == 12) {
+                    out->sensor_scaled_mag.scaled_mag[0] = mipc_ld_f32(d + 0);
+                    out->sensor_scaled_mag.scaled_mag[1] = mipc_ld_f32(d + 4);
+                    out->sensor_scaled_mag.scaled_mag[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_scaled_mag_decode(d, length, &out->sensor_scaled_mag, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_scaled_mag);
+                break;
+            case 0x07:
+                if (length == 12) {
+                    out->sensor_delta_theta.delta_theta[0] = mipc_ld_f32(d + 0);
+                    out->sensor_delta_theta.delta_theta[1] = mipc_ld_f32(d + 4);
+                    out->sensor_delta_theta.delta_theta[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_delta_theta_decode(d, length, &out->sensor_delta_theta, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_delta_theta);
+                break;
+            case 0x08:
+                if (length == 12) {
+                    out->sensor_delta_velocity.delta_velocity[0] = mipc_ld_f32(d + 0);
+                    out->sensor_delta_velocity.delta_velocity[1] = mipc_ld_f32(d + 4);
+                    out->sensor_delta_velocity.delta_velocity[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_delta_velocity_decode(d, length, &out->sensor_delta_velocity, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_delta_velocity);
+                break;
+            case 0x09:
+                if (length == 36) {
+                    out->sensor_cf_orientation_matrix.m[0] = mipc_ld_f32(d + 0);
+                    out->sensor_cf_orientation_matrix.m[1] = mipc_ld_f32(d + 4);
+                    out->sensor_cf_orientation_matrix.m[2] = mipc_ld_f32(d + 8);
+                    out->sensor_cf_orientation_matrix.m[3] = mipc_ld_f32(d + 12);
+                    out->sensor_cf_orientation_matrix.m[4] = mipc_ld_f32(d + 16);
+                    out->sensor_cf_orientation_matrix.m[5] = mipc_ld_f32(d + 20);
+                    out->sensor_cf_orientation_matrix.m[6] = mipc_ld_f32(d + 24);
+                    out->sensor_cf_orientation_matrix.m[7] = mipc_ld_f32(d + 28);
+                    out->sensor_cf_orientation_matrix.m[8] = mipc_ld_f32(d + 32);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_cf_orientation_matrix_decode(
+                             d, length, &out->sensor_cf_orientation_matrix, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_cf_orientation_matrix);
+                break;
+            case 0x0A:
+                if (length == 16) {
+                    out->sensor_cf_quaternion.q[0] = mipc_ld_f32(d + 0);
+                    out->sensor_cf_quaternion.q[1] = mipc_ld_f32(d + 4);
+                    out->sensor_cf_quaternion.q[2] = mipc_ld_f32(d + 8);
+                    out->sensor_cf_quaternion.q[3] = mipc_ld_f32(d + 12);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_cf_quaternion_decode(d, length, &out->sensor_cf_quaternion, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_cf_quaternion);
+                break;
+            case 0x0C:
+                if (length == 12) {
+                    out->sensor_cf_euler_angles.roll = mipc_ld_f32(d + 0);
+                    out->sensor_cf_euler_angles.pitch = mipc_ld_f32(d + 4);
+                    out->sensor_cf_euler_angles.yaw = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_cf_euler_angles_decode(d, length, &out->sensor_cf_euler_angles, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_cf_euler_angles);
+                break;
+            case 0x10:
+                if (length == 12) {
+                    out->sensor_cf_stabilized_north.stabilized_north[0] = mipc_ld_f32(d + 0);
+                    out->sensor_cf_stabilized_north.stabilized_north[1] = mipc_ld_f32(d + 4);
+                    out->sensor_cf_stabilized_north.stabilized_north[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_cf_stabilized_north_decode(d, length, &out->sensor_cf_stabilized_north,
+                                                                NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_cf_stabilized_north);
+                break;
+            case 0x11:
+                if (length == 12) {
+                    out->sensor_cf_stabilized_up.stabilized_up[0] = mipc_ld_f32(d + 0);
+                    out->sensor_cf_stabilized_up.stabilized_up[1] = mipc_ld_f32(d + 4);
+                    out->sensor_cf_stabilized_up.stabilized_up[2] = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_cf_stabilized_up_decode(d, length, &out->sensor_cf_stabilized_up,
+                                                             NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_cf_stabilized_up);
+                break;
+            case 0x12:
+                if (length == 12) {
+                    out->sensor_gps_timestamp.tow = mipc_ld_f64(d + 0);
+                    out->sensor_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+                    out->sensor_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_gps_timestamp_decode(d, length, &out->sensor_gps_timestamp, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_gps_timestamp);
+                break;
+            case 0x14:
+                if (length == 12) {
+                    out->sensor_temperature_statistics.min_temp = mipc_ld_f32(d + 0);
+                    out->sensor_temperature_statistics.max_temp = mipc_ld_f32(d + 4);
+                    out->sensor_temperature_statistics.mean_temp = mipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_temperature_statistics_decode(
+                             d, length, &out->sensor_temperature_statistics, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_temperature_statistics);
+                break;
+            case 0x17:
+                if (length == 4) {
+                    out->sensor_scaled_pressure.scaled_pressure = mipc_ld_f32(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_scaled_pressure_decode(d, length, &out->sensor_scaled_pressure, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_scaled_pressure);
+                break;
+            case 0x18:
+                if (length == 2) {
+                    out->sensor_overrange_status.status = mipc_ld_u16(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_overrange_status_decode(d, length, &out->sensor_overrange_status,
+                                                             NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_overrange_status);
+                break;
+            case 0x40:
+                if (length == 10) {
+                    out->sensor_odometer_data.speed = mipc_ld_f32(d + 0);
+                    out->sensor_odometer_data.uncertainty = mipc_ld_f32(d + 4);
+                    out->sensor_odometer_data.valid_flags = mipc_ld_u16(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_sensor_odometer_data_decode(d, length, &out->sensor_odometer_data, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, sensor_odometer_data);
+                break;
+            case 0xD0:
+                if (length == 1) {
+                    out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_event_source);
+                break;
+            case 0xD3:
+                if (length == 12) {
+                    out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+                    out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+                    out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_gps_timestamp);
+                break;
+            case 0xD4:
+                if (length == 8) {
+                    out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_delta_time);
+                break;
+            case 0xD5:
+                if (length == 8) {
+                    out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp,
+                                                                NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_reference_timestamp);
+                break;
+            case 0xD6:
+                if (length == 8) {
+                    out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta,
+                                                                 NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_reference_time_delta);
+                break;
+            case 0xD7:
+                if (length == 10) {
+                    out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+                    out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp,
+                                                               NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_external_timestamp);
+                break;
+            case 0xD8:
+                if (length == 10) {
+                    out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+                    out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta,
+                                                                NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_sensor_packet_t, shared_external_time_delta);
+                break;
+            default:
+                break;
+            }
+        }
+        if (ok) {
+            out->index.present[descriptor / 32u] |= bit;
+            out->index.fields[n].descriptor = descriptor;
+            out->index.fields[n].offset = (uint32_t)offset;
+            n++;
+        } else if (other) {
+            mipc_field_visit_at_(MIPC_SENSOR_SET, payload, len, pos, other, ctx);
+        }
+        pos += MIPC_FIELD_HEADER_SIZE + length;
+    }
+    if (pos < len && other) {
+        mipc_field_visit_at_(MIPC_SENSOR_SET, payload, len, pos, other, ctx);
+    }
+    out->index.count = n;
+    return n;
 }

@@ -4,6 +4,7 @@
 #include "types_internal.h"
 
 #include <assert.h>
+#include <stddef.h>
 #include <string.h>
 
 /* ---- mipc_shared_event_source_t */
@@ -479,4 +480,127 @@ mipc_status_t mipc_shared_external_time_delta_decode(const uint8_t *data, size_t
         return MIPC_OK;
     }
     return mipc_shared_external_time_delta_decode_read(data, len, out, err);
+}
+
+/* ---- the straight-line packet decoder */
+
+size_t mipc_shared_decode_packet(const uint8_t *payload, size_t len, mipc_shared_packet_t *out,
+                                 mipc_field_entry_fn other, void *ctx) {
+    size_t pos = 0;
+    size_t n = 0;
+    assert(payload != NULL || len == 0);
+    assert(out != NULL);
+    memset(out->index.present, 0, sizeof out->index.present);
+    if (payload == NULL) {
+        len = 0;
+    }
+    /* the field headers read in place (the iterator's entry is built only for what goes to other) */
+    while (len - pos >= MIPC_FIELD_HEADER_SIZE) {
+        const uint8_t *head = payload + pos;
+        const uint8_t descriptor = head[MIPC_FIELD_DESCRIPTOR_OFFSET];
+        const int data_len =
+            (int)head[MIPC_FIELD_LENGTH_OFFSET] - mipc_field_length_adjust(MIPC_SHARED_SET, descriptor);
+        const uint8_t *d = head + MIPC_FIELD_HEADER_SIZE;
+        const uint32_t bit = (uint32_t)1u << (descriptor % 32u);
+        size_t length;
+        size_t offset = 0;
+        int ok = 0;
+        if (data_len < 0 || (size_t)data_len > len - pos - MIPC_FIELD_HEADER_SIZE) {
+            break; /* trailing bytes: the iterator reports them below */
+        }
+        length = (size_t)data_len;
+        if ((out->index.present[descriptor / 32u] & bit) == 0) {
+            switch (descriptor) {
+            case 0xD0:
+                if (length == 1) {
+                    out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_event_source);
+                break;
+            case 0xD3:
+                if (length == 12) {
+                    out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+                    out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+                    out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) ==
+                         MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_gps_timestamp);
+                break;
+            case 0xD4:
+                if (length == 8) {
+                    out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_delta_time);
+                break;
+            case 0xD5:
+                if (length == 8) {
+                    out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp,
+                                                                NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_reference_timestamp);
+                break;
+            case 0xD6:
+                if (length == 8) {
+                    out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta,
+                                                                 NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_reference_time_delta);
+                break;
+            case 0xD7:
+                if (length == 10) {
+                    out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+                    out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp,
+                                                               NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_external_timestamp);
+                break;
+            case 0xD8:
+                if (length == 10) {
+                    out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+                    out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta,
+                                                                NULL) == MIPC_OK;
+                }
+                offset = offsetof(mipc_shared_packet_t, shared_external_time_delta);
+                break;
+            default:
+                break;
+            }
+        }
+        if (ok) {
+            out->index.present[descriptor / 32u] |= bit;
+            out->index.fields[n].descriptor = descriptor;
+            out->index.fields[n].offset = (uint32_t)offset;
+            n++;
+        } else if (other) {
+            mipc_field_visit_at_(MIPC_SHARED_SET, payload, len, pos, other, ctx);
+        }
+        pos += MIPC_FIELD_HEADER_SIZE + length;
+    }
+    if (pos < len && other) {
+        mipc_field_visit_at_(MIPC_SHARED_SET, payload, len, pos, other, ctx);
+    }
+    out->index.count = n;
+    return n;
 }

@@ -3,6 +3,7 @@
 #ifndef MSCIPC_DISPATCH_H
 #define MSCIPC_DISPATCH_H
 
+#include "mscipcodec/field_iter.h"
 #include "mscipcodec/reserved.h"
 #include "mscipcodec/sets/base.h"
 #include "mscipcodec/sets/imu_config.h"
@@ -189,6 +190,25 @@ const mscipc_field_info_t *mscipc_find_field(uint8_t set, uint8_t descriptor, ms
 mscipc_status_t mscipc_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                     mscipc_device_t device, mscipc_field_value_t *out,
                                     mscipc_decode_error_t *err);
+
+/** A packet of any data set decoded by its set's straight-line decoder (mscipc_decode_packet). */
+typedef struct {
+    uint8_t set;
+    union {
+        mscipc_imu_data_packet_t imu_data;
+        uint8_t none_; /* no data set */
+    } u;
+} mscipc_packet_t;
+
+/**
+ * Decodes a packet (sync, header and payload; its checksum is the parser's business) of a data set
+ * with that set's straight-line decoder (<set>_decode_packet: entries it leaves go to other, which
+ * may be NULL, with ctx) into the set's member of out->u, and returns its index (the fields
+ * decoded, in packet order). For a set without one (not a data set, or not defined) every entry
+ * goes to other and it returns NULL.
+ */
+const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_packet_t *out,
+                                                  mscipc_field_entry_fn other, void *ctx);
 
 /** Encodes the data of a decoded field (no field header). */
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,

@@ -4,6 +4,7 @@
 #include "types_internal.h"
 
 #include <assert.h>
+#include <stddef.h>
 #include <string.h>
 
 /* ---- mscipc_imu_data_scaled_accel_t */
@@ -649,4 +650,158 @@ mscipc_status_t mscipc_imu_data_scaled_aux_accel_decode(const uint8_t *data, siz
         return MSCIPC_OK;
     }
     return mscipc_imu_data_scaled_aux_accel_decode_read(data, len, out, err);
+}
+
+/* ---- the straight-line packet decoder */
+
+size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_imu_data_packet_t *out,
+                                     mscipc_field_entry_fn other, void *ctx) {
+    size_t pos = 0;
+    size_t n = 0;
+    assert(payload != NULL || len == 0);
+    assert(out != NULL);
+    memset(out->index.present, 0, sizeof out->index.present);
+    if (payload == NULL) {
+        len = 0;
+    }
+    /* the field headers read in place (the iterator's entry is built only for what goes to other) */
+    while (len - pos >= MSCIPC_FIELD_HEADER_SIZE) {
+        const uint8_t *head = payload + pos;
+        const uint8_t descriptor = head[MSCIPC_FIELD_DESCRIPTOR_OFFSET];
+        const int data_len = (int)head[MSCIPC_FIELD_LENGTH_OFFSET] -
+                             mscipc_field_length_adjust(MSCIPC_IMU_DATA_SET, descriptor);
+        const uint8_t *d = head + MSCIPC_FIELD_HEADER_SIZE;
+        const uint32_t bit = (uint32_t)1u << (descriptor % 32u);
+        size_t length;
+        size_t offset = 0;
+        int ok = 0;
+        if (data_len < 0 || (size_t)data_len > len - pos - MSCIPC_FIELD_HEADER_SIZE) {
+            break; /* trailing bytes: the iterator reports them below */
+        }
+        length = (size_t)data_len;
+        if ((out->index.present[descriptor / 32u] & bit) == 0) {
+            switch (descriptor) {
+            case 0x81:
+                if (length == 12) {
+                    out->imu_data_scaled_accel.accel[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_scaled_accel.accel[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_scaled_accel.accel[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_accel_decode(d, length, &out->imu_data_scaled_accel, NULL) ==
+                         MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_accel);
+                break;
+            case 0x82:
+                if (length == 12) {
+                    out->imu_data_scaled_gyro.gyro[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_scaled_gyro.gyro[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_scaled_gyro.gyro[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_gyro_decode(d, length, &out->imu_data_scaled_gyro, NULL) ==
+                         MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_gyro);
+                break;
+            case 0x83:
+                if (length == 12) {
+                    out->imu_data_scaled_mag.mag[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_scaled_mag.mag[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_scaled_mag.mag[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_mag_decode(d, length, &out->imu_data_scaled_mag, NULL) ==
+                         MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_mag);
+                break;
+            case 0x84:
+                if (length == 12) {
+                    out->imu_data_delta_theta.delta_theta[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_delta_theta.delta_theta[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_delta_theta.delta_theta[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_delta_theta_decode(d, length, &out->imu_data_delta_theta, NULL) ==
+                         MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_delta_theta);
+                break;
+            case 0x85:
+                if (length == 12) {
+                    out->imu_data_delta_velocity.delta_velocity[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_delta_velocity.delta_velocity[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_delta_velocity.delta_velocity[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_delta_velocity_decode(d, length, &out->imu_data_delta_velocity,
+                                                               NULL) == MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_delta_velocity);
+                break;
+            case 0x86:
+                if (length == 4) {
+                    out->imu_data_scaled_pressure.pressure = mscipc_ld_f32(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_pressure_decode(d, length, &out->imu_data_scaled_pressure,
+                                                                NULL) == MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_pressure);
+                break;
+            case 0x87:
+                if (length == 4) {
+                    out->imu_data_scaled_temperature.temperature = mscipc_ld_f32(d + 0);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_temperature_decode(
+                             d, length, &out->imu_data_scaled_temperature, NULL) == MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_temperature);
+                break;
+            case 0x88:
+                if (length == 12) {
+                    out->imu_data_gps_correlated_time.seconds = mscipc_ld_f64(d + 0);
+                    out->imu_data_gps_correlated_time.week = mscipc_ld_u16(d + 8);
+                    out->imu_data_gps_correlated_time.flags = mscipc_ld_u16(d + 10);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_gps_correlated_time_decode(
+                             d, length, &out->imu_data_gps_correlated_time, NULL) == MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_gps_correlated_time);
+                break;
+            case 0x89:
+                if (length == 12) {
+                    out->imu_data_scaled_aux_accel.accel[0] = mscipc_ld_f32(d + 0);
+                    out->imu_data_scaled_aux_accel.accel[1] = mscipc_ld_f32(d + 4);
+                    out->imu_data_scaled_aux_accel.accel[2] = mscipc_ld_f32(d + 8);
+                    ok = 1;
+                } else {
+                    ok = mscipc_imu_data_scaled_aux_accel_decode(d, length, &out->imu_data_scaled_aux_accel,
+                                                                 NULL) == MSCIPC_OK;
+                }
+                offset = offsetof(mscipc_imu_data_packet_t, imu_data_scaled_aux_accel);
+                break;
+            default:
+                break;
+            }
+        }
+        if (ok) {
+            out->index.present[descriptor / 32u] |= bit;
+            out->index.fields[n].descriptor = descriptor;
+            out->index.fields[n].offset = (uint32_t)offset;
+            n++;
+        } else if (other) {
+            mscipc_field_visit_at_(MSCIPC_IMU_DATA_SET, payload, len, pos, other, ctx);
+        }
+        pos += MSCIPC_FIELD_HEADER_SIZE + length;
+    }
+    if (pos < len && other) {
+        mscipc_field_visit_at_(MSCIPC_IMU_DATA_SET, payload, len, pos, other, ctx);
+    }
+    out->index.count = n;
+    return n;
 }

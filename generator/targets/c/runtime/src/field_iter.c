@@ -16,4 +16,16 @@ bool codec_field_iter_trailing_(codec_field_iter_t *it, codec_field_entry_t *ent
     return true;
 }
 
+void codec_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos,
+                           codec_field_entry_fn fn, void *ctx) {
+    codec_field_iter_t it;
+    codec_field_entry_t entry;
+    assert(fn != NULL);
+    codec_field_iter_init(&it, set, payload, len);
+    it.pos = pos;
+    if (codec_field_iter_next(&it, &entry)) {
+        fn(ctx, &entry);
+    }
+}
+
 /* codec_trailing_format is in status.c, with the other messages (no stdio). */

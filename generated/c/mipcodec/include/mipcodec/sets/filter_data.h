@@ -4,6 +4,8 @@
 #define MIPC_SETS_FILTER_DATA_H
 
 #include "mipcodec/types.h"
+#include "mipcodec/field_iter.h"
+#include "mipcodec/sets/shared.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -1104,6 +1106,87 @@ mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_encode(
 mipc_status_t mipc_filter_data_aiding_frame_config_error_uncertainty_decode(
     const uint8_t *data, size_t len, mipc_filter_data_aiding_frame_config_error_uncertainty_t *out,
     mipc_decode_error_t *err);
+
+/**
+ * The fields of one packet of this set, decoded in place by mipc_filter_data_decode_packet: one member per
+ * field the set defines with a single layout (its own, the reserved fields of its kind and the
+ * shared data fields); `index` says which members hold a field of the packet, in packet order.
+ */
+typedef struct {
+    mipc_packet_index_t index;
+    mipc_filter_data_llh_position_t filter_data_llh_position;                                       /* 0x01 */
+    mipc_filter_data_ned_velocity_t filter_data_ned_velocity;                                       /* 0x02 */
+    mipc_filter_data_attitude_quaternion_t filter_data_attitude_quaternion;                         /* 0x03 */
+    mipc_filter_data_attitude_dcm_t filter_data_attitude_dcm;                                       /* 0x04 */
+    mipc_filter_data_euler_angles_t filter_data_euler_angles;                                       /* 0x05 */
+    mipc_filter_data_gyro_bias_t filter_data_gyro_bias;                                             /* 0x06 */
+    mipc_filter_data_accel_bias_t filter_data_accel_bias;                                           /* 0x07 */
+    mipc_filter_data_llh_position_uncertainty_t filter_data_llh_position_uncertainty;               /* 0x08 */
+    mipc_filter_data_ned_velocity_uncertainty_t filter_data_ned_velocity_uncertainty;               /* 0x09 */
+    mipc_filter_data_euler_angles_uncertainty_t filter_data_euler_angles_uncertainty;               /* 0x0A */
+    mipc_filter_data_gyro_bias_uncertainty_t filter_data_gyro_bias_uncertainty;                     /* 0x0B */
+    mipc_filter_data_accel_bias_uncertainty_t filter_data_accel_bias_uncertainty;                   /* 0x0C */
+    mipc_filter_data_linear_accel_t filter_data_linear_accel;                                       /* 0x0D */
+    mipc_filter_data_comp_angular_rate_t filter_data_comp_angular_rate;                             /* 0x0E */
+    mipc_filter_data_wgs84_gravity_magnitude_t filter_data_wgs84_gravity_magnitude;                 /* 0x0F */
+    mipc_filter_data_gps_timestamp_t filter_data_gps_timestamp;                                     /* 0x11 */
+    mipc_filter_data_quaternion_attitude_uncertainty_t filter_data_quaternion_attitude_uncertainty; /* 0x12 */
+    mipc_filter_data_gravity_vector_t filter_data_gravity_vector;                                   /* 0x13 */
+    mipc_filter_data_heading_update_state_t filter_data_heading_update_state;                       /* 0x14 */
+    mipc_filter_data_magnetic_model_t filter_data_magnetic_model;                                   /* 0x15 */
+    mipc_filter_data_gyro_scale_factor_t filter_data_gyro_scale_factor;                             /* 0x16 */
+    mipc_filter_data_accel_scale_factor_t filter_data_accel_scale_factor;                           /* 0x17 */
+    mipc_filter_data_gyro_scale_factor_uncertainty_t filter_data_gyro_scale_factor_uncertainty;     /* 0x18 */
+    mipc_filter_data_accel_scale_factor_uncertainty_t filter_data_accel_scale_factor_uncertainty;   /* 0x19 */
+    mipc_filter_data_compensated_accel_t filter_data_compensated_accel;                             /* 0x1C */
+    mipc_filter_data_standard_atmosphere_t filter_data_standard_atmosphere;                         /* 0x20 */
+    mipc_filter_data_pressure_altitude_t filter_data_pressure_altitude;                             /* 0x21 */
+    mipc_filter_data_mag_auto_hard_iron_offset_t filter_data_mag_auto_hard_iron_offset;             /* 0x25 */
+    mipc_filter_data_mag_auto_soft_iron_matrix_t filter_data_mag_auto_soft_iron_matrix;             /* 0x26 */
+    mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_t
+        filter_data_mag_auto_hard_iron_offset_uncertainty; /* 0x28 */
+    mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_t
+        filter_data_mag_auto_soft_iron_matrix_uncertainty;                                        /* 0x29 */
+    mipc_filter_data_gnss_antenna_offset_correction_t filter_data_gnss_antenna_offset_correction; /* 0x30 */
+    mipc_filter_data_gnss_antenna_offset_correction_uncertainty_t
+        filter_data_gnss_antenna_offset_correction_uncertainty;                                     /* 0x31 */
+    mipc_filter_data_multi_antenna_offset_correction_t filter_data_multi_antenna_offset_correction; /* 0x34 */
+    mipc_filter_data_multi_antenna_offset_correction_uncertainty_t
+        filter_data_multi_antenna_offset_correction_uncertainty;                            /* 0x35 */
+    mipc_filter_data_ecef_position_uncertainty_t filter_data_ecef_position_uncertainty;     /* 0x36 */
+    mipc_filter_data_ecef_velocity_uncertainty_t filter_data_ecef_velocity_uncertainty;     /* 0x37 */
+    mipc_filter_data_ecef_position_t filter_data_ecef_position;                             /* 0x40 */
+    mipc_filter_data_ecef_velocity_t filter_data_ecef_velocity;                             /* 0x41 */
+    mipc_filter_data_ned_relative_position_t filter_data_ned_relative_position;             /* 0x42 */
+    mipc_filter_data_gnss_position_aiding_status_t filter_data_gnss_position_aiding_status; /* 0x43 */
+    mipc_filter_data_aiding_measurement_summary_t filter_data_aiding_measurement_summary;   /* 0x46 */
+    mipc_filter_data_odometer_scale_factor_error_t filter_data_odometer_scale_factor_error; /* 0x47 */
+    mipc_filter_data_odometer_scale_factor_error_uncertainty_t
+        filter_data_odometer_scale_factor_error_uncertainty;                            /* 0x48 */
+    mipc_filter_data_gnss_dual_antenna_status_t filter_data_gnss_dual_antenna_status;   /* 0x49 */
+    mipc_filter_data_aiding_frame_config_error_t filter_data_aiding_frame_config_error; /* 0x50 */
+    mipc_filter_data_aiding_frame_config_error_uncertainty_t
+        filter_data_aiding_frame_config_error_uncertainty;          /* 0x51 */
+    mipc_shared_event_source_t shared_event_source;                 /* 0xD0 (shared) */
+    mipc_shared_gps_timestamp_t shared_gps_timestamp;               /* 0xD3 (shared) */
+    mipc_shared_delta_time_t shared_delta_time;                     /* 0xD4 (shared) */
+    mipc_shared_reference_timestamp_t shared_reference_timestamp;   /* 0xD5 (shared) */
+    mipc_shared_reference_time_delta_t shared_reference_time_delta; /* 0xD6 (shared) */
+    mipc_shared_external_timestamp_t shared_external_timestamp;     /* 0xD7 (shared) */
+    mipc_shared_external_time_delta_t shared_external_time_delta;   /* 0xD8 (shared) */
+} mipc_filter_data_packet_t;
+
+/**
+ * The straight-line decoder of a packet of this set (issue 38): walks the fields of the payload
+ * (len bytes at payload) with a switch on the descriptor and decodes each field's layout into its
+ * member of *out, giving the value mipc_decode_field gives; no general value, no indirect call. Every
+ * other entry goes to other (may be NULL: they are dropped) with ctx, in packet order with the
+ * fields: a descriptor without a member (undefined, or a field with per-device variants), a field
+ * that does not decode (its member is then unspecified), a second field with a descriptor already
+ * decoded, trailing bytes. Returns out->index.count, the number of fields decoded into members.
+ */
+size_t mipc_filter_data_decode_packet(const uint8_t *payload, size_t len, mipc_filter_data_packet_t *out,
+                                      mipc_field_entry_fn other, void *ctx);
 
 #ifdef __cplusplus
 }

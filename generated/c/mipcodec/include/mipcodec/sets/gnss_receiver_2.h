@@ -4,6 +4,8 @@
 #define MIPC_SETS_GNSS_RECEIVER_2_H
 
 #include "mipcodec/types.h"
+#include "mipcodec/field_iter.h"
+#include "mipcodec/sets/shared.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -569,6 +571,53 @@ mipc_gnss_receiver_2_beidou_ephemeris_encode(const mipc_gnss_receiver_2_beidou_e
 mipc_status_t mipc_gnss_receiver_2_beidou_ephemeris_decode(const uint8_t *data, size_t len,
                                                            mipc_gnss_receiver_2_beidou_ephemeris_t *out,
                                                            mipc_decode_error_t *err);
+
+/**
+ * The fields of one packet of this set, decoded in place by mipc_gnss_receiver_2_decode_packet: one member
+ * per field the set defines with a single layout (its own, the reserved fields of its kind and the shared
+ * data fields); `index` says which members hold a field of the packet, in packet order.
+ */
+typedef struct {
+    mipc_packet_index_t index;
+    mipc_gnss_receiver_2_llh_position_t gnss_receiver_2_llh_position;           /* 0x03 */
+    mipc_gnss_receiver_2_ecef_position_t gnss_receiver_2_ecef_position;         /* 0x04 */
+    mipc_gnss_receiver_2_ned_velocity_t gnss_receiver_2_ned_velocity;           /* 0x05 */
+    mipc_gnss_receiver_2_ecef_velocity_t gnss_receiver_2_ecef_velocity;         /* 0x06 */
+    mipc_gnss_receiver_2_dop_t gnss_receiver_2_dop;                             /* 0x07 */
+    mipc_gnss_receiver_2_utc_time_t gnss_receiver_2_utc_time;                   /* 0x08 */
+    mipc_gnss_receiver_2_gps_time_t gnss_receiver_2_gps_time;                   /* 0x09 */
+    mipc_gnss_receiver_2_fix_info_t gnss_receiver_2_fix_info;                   /* 0x0B */
+    mipc_gnss_receiver_2_hardware_status_t gnss_receiver_2_hardware_status;     /* 0x0D */
+    mipc_gnss_receiver_2_clock_info_2_t gnss_receiver_2_clock_info_2;           /* 0x10 */
+    mipc_gnss_receiver_2_gps_leap_seconds_t gnss_receiver_2_gps_leap_seconds;   /* 0x11 */
+    mipc_gnss_receiver_2_sbas_info_t gnss_receiver_2_sbas_info;                 /* 0x12 */
+    mipc_gnss_receiver_2_satellite_status_t gnss_receiver_2_satellite_status;   /* 0x20 */
+    mipc_gnss_receiver_2_raw_t gnss_receiver_2_raw;                             /* 0x22 */
+    mipc_gnss_receiver_2_gps_ephemeris_t gnss_receiver_2_gps_ephemeris;         /* 0x61 */
+    mipc_gnss_receiver_2_glonass_ephemeris_t gnss_receiver_2_glonass_ephemeris; /* 0x62 */
+    mipc_gnss_receiver_2_galileo_ephemeris_t gnss_receiver_2_galileo_ephemeris; /* 0x63 */
+    mipc_gnss_receiver_2_beidou_ephemeris_t gnss_receiver_2_beidou_ephemeris;   /* 0x64 */
+    mipc_shared_event_source_t shared_event_source;                             /* 0xD0 (shared) */
+    mipc_shared_gps_timestamp_t shared_gps_timestamp;                           /* 0xD3 (shared) */
+    mipc_shared_delta_time_t shared_delta_time;                                 /* 0xD4 (shared) */
+    mipc_shared_reference_timestamp_t shared_reference_timestamp;               /* 0xD5 (shared) */
+    mipc_shared_reference_time_delta_t shared_reference_time_delta;             /* 0xD6 (shared) */
+    mipc_shared_external_timestamp_t shared_external_timestamp;                 /* 0xD7 (shared) */
+    mipc_shared_external_time_delta_t shared_external_time_delta;               /* 0xD8 (shared) */
+} mipc_gnss_receiver_2_packet_t;
+
+/**
+ * The straight-line decoder of a packet of this set (issue 38): walks the fields of the payload
+ * (len bytes at payload) with a switch on the descriptor and decodes each field's layout into its
+ * member of *out, giving the value mipc_decode_field gives; no general value, no indirect call. Every
+ * other entry goes to other (may be NULL: they are dropped) with ctx, in packet order with the
+ * fields: a descriptor without a member (undefined, or a field with per-device variants), a field
+ * that does not decode (its member is then unspecified), a second field with a descriptor already
+ * decoded, trailing bytes. Returns out->index.count, the number of fields decoded into members.
+ */
+size_t mipc_gnss_receiver_2_decode_packet(const uint8_t *payload, size_t len,
+                                          mipc_gnss_receiver_2_packet_t *out, mipc_field_entry_fn other,
+                                          void *ctx);
 
 #ifdef __cplusplus
 }

@@ -4,6 +4,8 @@
 #define MIPC_SETS_SENSOR_H
 
 #include "mipcodec/types.h"
+#include "mipcodec/field_iter.h"
+#include "mipcodec/sets/shared.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -313,6 +315,49 @@ mipc_status_t mipc_sensor_odometer_data_encode(const mipc_sensor_odometer_data_t
 /** Decodes field data; on MIPC_ERR_DECODE, *err (if not NULL) tells what is wrong. */
 mipc_status_t mipc_sensor_odometer_data_decode(const uint8_t *data, size_t len,
                                                mipc_sensor_odometer_data_t *out, mipc_decode_error_t *err);
+
+/**
+ * The fields of one packet of this set, decoded in place by mipc_sensor_decode_packet: one member per
+ * field the set defines with a single layout (its own, the reserved fields of its kind and the
+ * shared data fields); `index` says which members hold a field of the packet, in packet order.
+ */
+typedef struct {
+    mipc_packet_index_t index;
+    mipc_sensor_scaled_accel_t sensor_scaled_accel;                     /* 0x04 */
+    mipc_sensor_scaled_gyro_t sensor_scaled_gyro;                       /* 0x05 */
+    mipc_sensor_scaled_mag_t sensor_scaled_mag;                         /* 0x06 */
+    mipc_sensor_delta_theta_t sensor_delta_theta;                       /* 0x07 */
+    mipc_sensor_delta_velocity_t sensor_delta_velocity;                 /* 0x08 */
+    mipc_sensor_cf_orientation_matrix_t sensor_cf_orientation_matrix;   /* 0x09 */
+    mipc_sensor_cf_quaternion_t sensor_cf_quaternion;                   /* 0x0A */
+    mipc_sensor_cf_euler_angles_t sensor_cf_euler_angles;               /* 0x0C */
+    mipc_sensor_cf_stabilized_north_t sensor_cf_stabilized_north;       /* 0x10 */
+    mipc_sensor_cf_stabilized_up_t sensor_cf_stabilized_up;             /* 0x11 */
+    mipc_sensor_gps_timestamp_t sensor_gps_timestamp;                   /* 0x12 */
+    mipc_sensor_temperature_statistics_t sensor_temperature_statistics; /* 0x14 */
+    mipc_sensor_scaled_pressure_t sensor_scaled_pressure;               /* 0x17 */
+    mipc_sensor_overrange_status_t sensor_overrange_status;             /* 0x18 */
+    mipc_sensor_odometer_data_t sensor_odometer_data;                   /* 0x40 */
+    mipc_shared_event_source_t shared_event_source;                     /* 0xD0 (shared) */
+    mipc_shared_gps_timestamp_t shared_gps_timestamp;                   /* 0xD3 (shared) */
+    mipc_shared_delta_time_t shared_delta_time;                         /* 0xD4 (shared) */
+    mipc_shared_reference_timestamp_t shared_reference_timestamp;       /* 0xD5 (shared) */
+    mipc_shared_reference_time_delta_t shared_reference_time_delta;     /* 0xD6 (shared) */
+    mipc_shared_external_timestamp_t shared_external_timestamp;         /* 0xD7 (shared) */
+    mipc_shared_external_time_delta_t shared_external_time_delta;       /* 0xD8 (shared) */
+} mipc_sensor_packet_t;
+
+/**
+ * The straight-line decoder of a packet of this set (issue 38): walks the fields of the payload
+ * (len bytes at payload) with a switch on the descriptor and decodes each field's layout into its
+ * member of *out, giving the value mipc_decode_field gives; no general value, no indirect call. Every
+ * other entry goes to other (may be NULL: they are dropped) with ctx, in packet order with the
+ * fields: a descriptor without a member (undefined, or a field with per-device variants), a field
+ * that does not decode (its member is then unspecified), a second field with a descriptor already
+ * decoded, trailing bytes. Returns out->index.count, the number of fields decoded into members.
+ */
+size_t mipc_sensor_decode_packet(const uint8_t *payload, size_t len, mipc_sensor_packet_t *out,
+                                 mipc_field_entry_fn other, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -4,6 +4,7 @@
 #define MIPC_SETS_SHARED_H
 
 #include "mipcodec/types.h"
+#include "mipcodec/field_iter.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -156,6 +157,34 @@ mipc_status_t mipc_shared_external_time_delta_encode(const mipc_shared_external_
 mipc_status_t mipc_shared_external_time_delta_decode(const uint8_t *data, size_t len,
                                                      mipc_shared_external_time_delta_t *out,
                                                      mipc_decode_error_t *err);
+
+/**
+ * The fields of one packet of this set, decoded in place by mipc_shared_decode_packet: one member per
+ * field the set defines with a single layout (its own, the reserved fields of its kind and the
+ * shared data fields); `index` says which members hold a field of the packet, in packet order.
+ */
+typedef struct {
+    mipc_packet_index_t index;
+    mipc_shared_event_source_t shared_event_source;                 /* 0xD0 */
+    mipc_shared_gps_timestamp_t shared_gps_timestamp;               /* 0xD3 */
+    mipc_shared_delta_time_t shared_delta_time;                     /* 0xD4 */
+    mipc_shared_reference_timestamp_t shared_reference_timestamp;   /* 0xD5 */
+    mipc_shared_reference_time_delta_t shared_reference_time_delta; /* 0xD6 */
+    mipc_shared_external_timestamp_t shared_external_timestamp;     /* 0xD7 */
+    mipc_shared_external_time_delta_t shared_external_time_delta;   /* 0xD8 */
+} mipc_shared_packet_t;
+
+/**
+ * The straight-line decoder of a packet of this set (issue 38): walks the fields of the payload
+ * (len bytes at payload) with a switch on the descriptor and decodes each field's layout into its
+ * member of *out, giving the value mipc_decode_field gives; no general value, no indirect call. Every
+ * other entry goes to other (may be NULL: they are dropped) with ctx, in packet order with the
+ * fields: a descriptor without a member (undefined, or a field with per-device variants), a field
+ * that does not decode (its member is then unspecified), a second field with a descriptor already
+ * decoded, trailing bytes. Returns out->index.count, the number of fields decoded into members.
+ */
+size_t mipc_shared_decode_packet(const uint8_t *payload, size_t len, mipc_shared_packet_t *out,
+                                 mipc_field_entry_fn other, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -4,6 +4,7 @@
 #define MSCIPC_SETS_IMU_DATA_H
 
 #include "mscipcodec/types.h"
+#include "mscipcodec/field_iter.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -184,6 +185,36 @@ mscipc_status_t mscipc_imu_data_scaled_aux_accel_encode(const mscipc_imu_data_sc
 mscipc_status_t mscipc_imu_data_scaled_aux_accel_decode(const uint8_t *data, size_t len,
                                                         mscipc_imu_data_scaled_aux_accel_t *out,
                                                         mscipc_decode_error_t *err);
+
+/**
+ * The fields of one packet of this set, decoded in place by mscipc_imu_data_decode_packet: one member per
+ * field the set defines with a single layout (its own, the reserved fields of its kind and the
+ * shared data fields); `index` says which members hold a field of the packet, in packet order.
+ */
+typedef struct {
+    mscipc_packet_index_t index;
+    mscipc_imu_data_scaled_accel_t imu_data_scaled_accel;               /* 0x81 */
+    mscipc_imu_data_scaled_gyro_t imu_data_scaled_gyro;                 /* 0x82 */
+    mscipc_imu_data_scaled_mag_t imu_data_scaled_mag;                   /* 0x83 */
+    mscipc_imu_data_delta_theta_t imu_data_delta_theta;                 /* 0x84 */
+    mscipc_imu_data_delta_velocity_t imu_data_delta_velocity;           /* 0x85 */
+    mscipc_imu_data_scaled_pressure_t imu_data_scaled_pressure;         /* 0x86 */
+    mscipc_imu_data_scaled_temperature_t imu_data_scaled_temperature;   /* 0x87 */
+    mscipc_imu_data_gps_correlated_time_t imu_data_gps_correlated_time; /* 0x88 */
+    mscipc_imu_data_scaled_aux_accel_t imu_data_scaled_aux_accel;       /* 0x89 */
+} mscipc_imu_data_packet_t;
+
+/**
+ * The straight-line decoder of a packet of this set (issue 38): walks the fields of the payload
+ * (len bytes at payload) with a switch on the descriptor and decodes each field's layout into its
+ * member of *out, giving the value mscipc_decode_field gives; no general value, no indirect call. Every
+ * other entry goes to other (may be NULL: they are dropped) with ctx, in packet order with the
+ * fields: a descriptor without a member (undefined, or a field with per-device variants), a field
+ * that does not decode (its member is then unspecified), a second field with a descriptor already
+ * decoded, trailing bytes. Returns out->index.count, the number of fields decoded into members.
+ */
+size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_imu_data_packet_t *out,
+                                     mscipc_field_entry_fn other, void *ctx);
 
 #ifdef __cplusplus
 }

@@ -100,6 +100,47 @@ static inline bool codec_field_iter_next(codec_field_iter_t *it, codec_field_ent
     return true;
 }
 
+/** An entry a straight-line packet decoder (<set>_decode_packet, issue 38) leaves to the general
+ * path: called with ctx (may be NULL) and the entry, valid during the call. */
+typedef void (*codec_field_entry_fn)(void *ctx, const codec_field_entry_t *entry);
+
+/* Private (the straight-line packet decoders): passes the entry at payload offset pos, and for
+ * trailing bytes the one entry they make, to fn (out of line: rare). */
+void codec_field_visit_at_(uint8_t set, const uint8_t *payload, size_t len, size_t pos,
+                           codec_field_entry_fn fn, void *ctx);
+
+/** Most fields a packet can hold (each has at least a field header). */
+#define CODEC_PACKET_FIELDS_MAX (CODEC_MAX_PAYLOAD / CODEC_FIELD_HEADER_SIZE)
+
+/** A field a straight-line packet decoder decoded: its descriptor and where its typed struct is
+ * (the member's offset from the start of the packet struct, whose first member is the index). */
+typedef struct {
+    uint8_t descriptor;
+    uint32_t offset;
+} codec_decoded_field_t;
+
+/** What a straight-line packet decoder decoded, the first member of every <set>_packet_t: the
+ * fields decoded into their members, in packet order, and a bit per descriptor. */
+typedef struct {
+    uint32_t present[8]; /* bit d % 32 of present[d / 32]: descriptor d is in its member */
+    size_t count;        /* entries of fields */
+    codec_decoded_field_t fields[CODEC_PACKET_FIELDS_MAX];
+} codec_packet_index_t;
+
+/** True when the packet's field with this descriptor was decoded into its member. */
+static inline bool codec_packet_has(const codec_packet_index_t *index, uint8_t descriptor) {
+    assert(index != NULL);
+    return (index->present[descriptor / 32u] >> (descriptor % 32u) & 1u) != 0;
+}
+
+/** The typed struct of the i-th decoded field (i < index->count): the member of the packet
+ * struct that starts with *index, of the type of the set's field index->fields[i].descriptor. */
+static inline const void *codec_packet_value(const codec_packet_index_t *index, size_t i) {
+    assert(index != NULL);
+    assert(i < index->count);
+    return (const uint8_t *)index + index->fields[i].offset;
+}
+
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t codec_trailing_format(const codec_field_entry_t *entry, char *buf, size_t cap);
 

@@ -366,6 +366,47 @@ democ_status_t democ_decode_field(uint8_t set, uint8_t descriptor, const uint8_t
     return decode_field_general(set, descriptor, data, len, device, out, err);
 }
 
+/* Every entry of a payload to fn (out of line: democ_decode_packet stays a switch). */
+static DEMOC_NOINLINE void visit_all(uint8_t set, const uint8_t *payload, size_t len, democ_field_entry_fn fn,
+                                     void *ctx) {
+    democ_field_iter_t it;
+    democ_field_entry_t e;
+    democ_field_iter_init(&it, set, payload, len);
+    while (democ_field_iter_next(&it, &e)) {
+        fn(ctx, &e);
+    }
+}
+
+const democ_packet_index_t *democ_decode_packet(const uint8_t *packet, democ_packet_t *out,
+                                                democ_field_entry_fn other, void *ctx) {
+    const uint8_t set = democ_packet_set(packet);
+    const uint8_t *payload = democ_packet_payload(packet);
+    const size_t len = democ_packet_payload_length(packet);
+    assert(packet != NULL);
+    assert(out != NULL);
+    out->set = set;
+    switch (set) {
+    case 0x90:
+        (void)democ_data_decode_packet(payload, len, &out->u.data, other, ctx);
+        return &out->u.data.index;
+    case 0x91:
+        (void)democ_receiver_1_decode_packet(payload, len, &out->u.receiver_1, other, ctx);
+        return &out->u.receiver_1.index;
+    case 0x92:
+        (void)democ_receiver_2_decode_packet(payload, len, &out->u.receiver_2, other, ctx);
+        return &out->u.receiver_2.index;
+    case 0xFF:
+        (void)democ_shared_decode_packet(payload, len, &out->u.shared, other, ctx);
+        return &out->u.shared.index;
+    default:
+        break;
+    }
+    if (other) {
+        visit_all(set, payload, len, other, ctx);
+    }
+    return NULL;
+}
+
 democ_status_t democ_encode_field(const democ_field_value_t *value, uint8_t *buf, size_t cap,
                                   size_t *len_out) {
     assert(value != NULL);

@@ -3,6 +3,7 @@
 #ifndef DEMOC_DISPATCH_H
 #define DEMOC_DISPATCH_H
 
+#include "democodec/field_iter.h"
 #include "democodec/reserved.h"
 #include "democodec/sets/commands.h"
 #include "democodec/sets/data.h"
@@ -119,6 +120,28 @@ const democ_field_info_t *democ_find_field(uint8_t set, uint8_t descriptor, demo
  */
 democ_status_t democ_decode_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
                                   democ_device_t device, democ_field_value_t *out, democ_decode_error_t *err);
+
+/** A packet of any data set decoded by its set's straight-line decoder (democ_decode_packet). */
+typedef struct {
+    uint8_t set;
+    union {
+        democ_data_packet_t data;
+        democ_receiver_1_packet_t receiver_1;
+        democ_receiver_2_packet_t receiver_2;
+        democ_shared_packet_t shared;
+        uint8_t none_; /* no data set */
+    } u;
+} democ_packet_t;
+
+/**
+ * Decodes a packet (sync, header and payload; its checksum is the parser's business) of a data set
+ * with that set's straight-line decoder (<set>_decode_packet: entries it leaves go to other, which
+ * may be NULL, with ctx) into the set's member of out->u, and returns its index (the fields
+ * decoded, in packet order). For a set without one (not a data set, or not defined) every entry
+ * goes to other and it returns NULL.
+ */
+const democ_packet_index_t *democ_decode_packet(const uint8_t *packet, democ_packet_t *out,
+                                                democ_field_entry_fn other, void *ctx);
 
 /** Encodes the data of a decoded field (no field header). */
 democ_status_t democ_encode_field(const democ_field_value_t *value, uint8_t *buf, size_t cap,

@@ -4,6 +4,7 @@
 #include "types_internal.h"
 
 #include <assert.h>
+#include <stddef.h>
 #include <string.h>
 
 /* ---- democ_data_sample_t */
@@ -103,4 +104,78 @@ democ_status_t democ_data_sample_decode(const uint8_t *data, size_t len, democ_d
         return DEMOC_OK;
     }
     return democ_data_sample_decode_read(data, len, out, err);
+}
+
+/* ---- the straight-line packet decoder */
+
+size_t democ_data_decode_packet(const uint8_t *payload, size_t len, democ_data_packet_t *out,
+                                democ_field_entry_fn other, void *ctx) {
+    size_t pos = 0;
+    size_t n = 0;
+    assert(payload != NULL || len == 0);
+    assert(out != NULL);
+    memset(out->index.present, 0, sizeof out->index.present);
+    if (payload == NULL) {
+        len = 0;
+    }
+    /* the field headers read in place (the iterator's entry is built only for what goes to other) */
+    while (len - pos >= DEMOC_FIELD_HEADER_SIZE) {
+        const uint8_t *head = payload + pos;
+        const uint8_t descriptor = head[DEMOC_FIELD_DESCRIPTOR_OFFSET];
+        const int data_len =
+            (int)head[DEMOC_FIELD_LENGTH_OFFSET] - democ_field_length_adjust(DEMOC_DATA_SET, descriptor);
+        const uint8_t *d = head + DEMOC_FIELD_HEADER_SIZE;
+        const uint32_t bit = (uint32_t)1u << (descriptor % 32u);
+        size_t length;
+        size_t offset = 0;
+        int ok = 0;
+        if (data_len < 0 || (size_t)data_len > len - pos - DEMOC_FIELD_HEADER_SIZE) {
+            break; /* trailing bytes: the iterator reports them below */
+        }
+        length = (size_t)data_len;
+        if ((out->index.present[descriptor / 32u] & bit) == 0) {
+            switch (descriptor) {
+            case 0x01:
+                if (length == 29) {
+                    out->data_sample.quat[0] = democ_ld_f32(d + 0);
+                    out->data_sample.quat[1] = democ_ld_f32(d + 4);
+                    out->data_sample.quat[2] = democ_ld_f32(d + 8);
+                    out->data_sample.quat[3] = democ_ld_f32(d + 12);
+                    out->data_sample.big = democ_ld_u64(d + 16);
+                    out->data_sample.small = democ_ld_s8(d + 24);
+                    out->data_sample.f = democ_ld_f32(d + 25);
+                    ok = 1;
+                } else {
+                    ok = democ_data_sample_decode(d, length, &out->data_sample, NULL) == DEMOC_OK;
+                }
+                offset = offsetof(democ_data_packet_t, data_sample);
+                break;
+            case 0xD3:
+                if (length == 8) {
+                    out->shared_timestamp.nanoseconds = democ_ld_u64(d + 0);
+                    ok = 1;
+                } else {
+                    ok = democ_shared_timestamp_decode(d, length, &out->shared_timestamp, NULL) == DEMOC_OK;
+                }
+                offset = offsetof(democ_data_packet_t, shared_timestamp);
+                break;
+            default:
+                break;
+            }
+        }
+        if (ok) {
+            out->index.present[descriptor / 32u] |= bit;
+            out->index.fields[n].descriptor = descriptor;
+            out->index.fields[n].offset = (uint32_t)offset;
+            n++;
+        } else if (other) {
+            democ_field_visit_at_(DEMOC_DATA_SET, payload, len, pos, other, ctx);
+        }
+        pos += DEMOC_FIELD_HEADER_SIZE + length;
+    }
+    if (pos < len && other) {
+        democ_field_visit_at_(DEMOC_DATA_SET, payload, len, pos, other, ctx);
+    }
+    out->index.count = n;
+    return n;
 }
