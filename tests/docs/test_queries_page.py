@@ -181,11 +181,6 @@ def test_time_in_each_filter_mode_cv7_seconds(replay: tuple) -> None:
         assert d["filter_modes"]["ahrs"]["seconds"] == out
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the dataset decodes the per-device filter status with the first device's layout (GX5-45 enum names "
-    "on CV7 rows): dataset.decode_split does not pick the layouts of the log's device",
-)
 def test_time_in_each_filter_mode_cv7_names(replay: tuple) -> None:
     devices = _by_serial(_manifest(replay))
     got = _modes(replay)

@@ -400,6 +400,45 @@ class SplitResult:
     last_t_ns: Optional[int] = None
 
 
+def device_of(model: str) -> Optional[str]:
+    """The registry device id of a log's model partition value: a device id as given (`--model
+    cv7_ins`), or the device whose model name the reported one is (`3dm-cv7-gnss-ins` is the
+    3DM-CV7-GNSS/INS: compared without case and punctuation, as the session compares them); None
+    when it is none of them (`unknown`)."""
+    from .session import model_matches
+
+    if model in registry.DEVICES:
+        return model
+    return next((d for d in registry.DEVICES if model != UNKNOWN and model_matches(model, d)), None)
+
+
+def _for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
+    """Decode the fields that have per-device layouts with the log's device: decode_columns
+    decodes them with the first device's layout (it has no device argument); their rows move to
+    `cols.others` as the packet decoder gives them for `device`. Nothing changes for device None."""
+    if device is None:
+        return
+    from .packets import DecodedField, decode_packet
+
+    def redo(off: int, k: int) -> Any:
+        n = HEADER_SIZE + data[off + LENGTH_OFFSET] + CHECKSUM_SIZE
+        return decode_packet(bytes(data[off : off + n]), off, device, check=False).fields[k]
+
+    moved: List[Tuple[int, int, Any]] = []
+    for key, t in list(cols.tables.items()):
+        dev = getattr(t.cls, "DEVICE", None)
+        if dev is None or dev == device or t.rows == 0:
+            continue
+        moved.extend((int(o), int(k), redo(int(o), int(k))) for o, k in zip(t.offsets, t.index))
+        del cols.tables[key]
+    others: List[Tuple[int, int, Any]] = []
+    for off, k, entry in cols.others:
+        dev = getattr(getattr(entry, "value", None), "DEVICE", None) if isinstance(entry, DecodedField) else None
+        others.append((off, k, redo(off, k)) if dev is not None and dev != device else (off, k, entry))
+    if moved or others != cols.others:
+        cols.others = sorted(others + moved, key=lambda x: (x[0], x[1]))
+
+
 def decode_split(
     data: bytes,
     base: int,
@@ -424,6 +463,7 @@ def decode_split(
     ident = identity if identity is not None else Identity()
     result = SplitResult(log, start, end, ident)
     cols = decode_columns(data)
+    _for_device(cols, data, device_of(ident.model))
     # skipped bytes and bad checksums inside [start, end)
     for skip in cols.skips:
         a, b = skip.offset + base, skip.offset + base + len(skip.data)
