@@ -49,6 +49,7 @@ class Column:
     kind: str
     enum: str | None = None
     description: str = ""  # the parameter's description in the spec (whitespace runs as one space)
+    frame: str | None = None  # the parameter's coordinate frame (`frame_text`), None when the spec states none
 
 
 def _leaf_kind(e: model.Elem) -> tuple[str, str | None]:
@@ -69,7 +70,7 @@ def _leaf_kind(e: model.Elem) -> tuple[str, str | None]:
 
 def _param_columns(proto: dict, p: model.Param, name: str, path: tuple, depth: int = 0) -> list[Column]:
     if p.kind in (model.COUNTED, model.REMAINING, model.UNION, model.STRING) or depth > 4:
-        return [Column(name, path, p.units, "json", None, _text(p.description))]
+        return [Column(name, path, p.units, "json", None, _text(p.description), frame_text(p))]
     if p.kind == model.FIXED:
         alias = p.ir.get("alias")
         names = COMPONENTS.get(alias) if alias in COMPONENTS and len(COMPONENTS[alias]) == p.count else None
@@ -90,7 +91,16 @@ def _elem_columns(proto: dict, p: model.Param, name: str, path: tuple, depth: in
             out += _param_columns(proto, q, f"{name}.{q.name}", path + (q.name,), depth + 1)
         return out
     kind, enum = _leaf_kind(e)
-    return [Column(name, path, p.units, kind, enum, _text(p.description))]
+    return [Column(name, path, p.units, kind, enum, _text(p.description), frame_text(p))]
+
+
+def frame_text(p: model.Param) -> str | None:
+    """The parameter's `frame` as one text: the frame name, or `device: name` per device joined
+    by `; ` when the manuals state a different frame per device (`gx5_45: sensor; cv7_ins: vehicle`)."""
+    frame = p.ir.get("frame")
+    if isinstance(frame, dict):
+        return "; ".join(f"{d}: {f}" for d, f in frame.items())
+    return frame
 
 
 def _text(description: str) -> str:

@@ -135,6 +135,7 @@ def build_params(
             "name": name,
             "description": p.get("description", ""),
             "units": p.get("units"),
+            "frame": _frame(ctx, sf, pp, p, owner),
             "manual_name": p.get("manual_name"),
             "type": tref,
             "alias": alias,
@@ -412,3 +413,21 @@ def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: st
         ctx.err(sf, where, bad, f"a {base} value")
         return None
     return float(item) if pkind == "float" else item
+
+
+def _frame(ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str) -> str | dict | None:
+    """The parameter's coordinate frame (`frame:`): one frame name, or {device id: frame name}
+    with device ids of the protocol (each a device whose manual the protocol lists)."""
+    frame = p.get("frame")
+    if not isinstance(frame, dict):
+        return frame
+    devices = set(ctx.manual_devices.values())
+    for device in frame:
+        if device not in devices:
+            ctx.err(
+                sf,
+                pp + ("frame", device),
+                f"{owner}: parameter {p['name']}: frame for unknown device {device!r}",
+                "one of the protocol's devices: " + ", ".join(sorted(devices)),
+            )
+    return {d: frame[d] for d in sorted(frame)}

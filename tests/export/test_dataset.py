@@ -362,7 +362,7 @@ def test_full_disk_leaves_no_visible_partial_file(tmp_path):
 
 
 def test_metadata_from_the_spec(tmp_path):
-    """Arrow field metadata (units, description, set, descriptor, title) and file metadata."""
+    """Arrow field metadata (units, description, frame, set, descriptor, title) and file metadata."""
     dsm = ds()
     mod = pkg()
     schema = dsm.table_schema(0x80, (0x80, 0x04, None))
@@ -371,6 +371,12 @@ def test_metadata_from_the_spec(tmp_path):
     assert md["units"] == "g" and md["set"] == "0x80" and md["descriptor"] == "0x04"
     assert md["title"] == mod._columns.TITLES[(0x80, 0x04, None)]
     assert md["description"] == "(x, y, z) acceleration."  # the parameter's description, spec/mip/sensor.yaml
+    # the frame spec/mip/sensor.yaml states per device: the GX5-45's "local coordinate system"
+    # (3dm-gx5-45-dcp.txt line 2037), the CV7's vehicle frame (3dm-cv7-ins-docs.txt line 6393)
+    assert md["frame"] == "cv7_ins: vehicle; gx5_45: sensor"
+    vel = dsm.table_schema(0x82, (0x82, 0x02, None))
+    assert {vel.field(f"ned_velocity_{n}").metadata[b"frame"] for n in ("north", "east", "down")} == {b"ned"}
+    assert b"frame" not in vel.field("ned_velocity_valid_flags").metadata  # no frame stated for the flags
     assert schema.names[:7] == ["t_ns", "time", "offset", "log", "device_ns", "gps_week", "gps_tow"]
     assert schema.field("time").type == pa.timestamp("us", tz="UTC")
     data = capture_bytes()[:3000]

@@ -721,6 +721,7 @@ def _columns_context(proto: dict) -> dict:
         }
         key = f"(0x{s['id']:02X}, 0x{f['id']:02X}, {pyrepr(v['device'])})"
         descriptions = tuple(c.description for c in columns.layout_columns(proto, f, v))
+        frames = tuple(c.frame for c in columns.layout_columns(proto, f, v))
         layouts.append(
             {
                 "key": key,
@@ -728,6 +729,7 @@ def _columns_context(proto: dict) -> dict:
                 "shapes": pyrepr(shapes),
                 "title": f["title"],
                 "descriptions": pyrepr(descriptions),
+                "frames": pyrepr(frames) if any(frames) else None,
             }
         )
     used = {c["enum"] for lay in layouts for c in lay["columns"] if c["kind"] == "enum"}

@@ -164,3 +164,20 @@ def test_default_values_that_do_not_fit_are_located_errors(tmp_path):
         " (expected no default)",
     ]
     assert v["params"][0]["default"] is None
+
+
+def test_frame_one_name_or_one_per_device_of_the_protocol(tmp_path):
+    """`frame:` is kept as the IR's `frame` (a name, or {device: name} in device order); a device
+    that is not the protocol's is a located error (the schema already refuses unknown names)."""
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: a, type: vector3f, frame: ned}\n"
+        "      - {name: b, type: vector3f, frame: {dev_b: vehicle, dev_a: sensor}}\n"
+        "      - {name: c, type: float}\n",
+    )
+    assert errors(ctx) == []
+    assert [q["frame"] for q in v["params"]] == ["ned", {"dev_a": "sensor", "dev_b": "vehicle"}, None]
+    assert list(v["params"][1]["frame"]) == ["dev_a", "dev_b"]
+    ctx, _ = _layout(tmp_path, "      - {name: a, type: vector3f, frame: {dev_c: sensor}}\n")
+    (err,) = errors(ctx)
+    assert "parameter a: frame for unknown device 'dev_c'" in err and "dev_a, dev_b" in err, err

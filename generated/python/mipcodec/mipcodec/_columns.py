@@ -12,6 +12,9 @@ know about the data fields, taken from the spec rather than written by hand:
 - `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
   packet its time (value / counts seconds), in order of preference;
 - `TITLES[(set, descriptor, device)]`: the field's title;
+- `FRAMES[(set, descriptor, device)]`: per column, the coordinate frame the spec states for its
+  parameter (`sensor`, `vehicle`, `sensor_or_vehicle`, `ned`, `ecef`, `wgs84`, or `device: frame`
+  per device joined by `; `), None where it states none; layouts without any frame are left out;
 - the time model's facts (the spec's `time` section; `mipcodec.timebase`): `GPS_TIMES`
   (set, descriptor, time-of-week attribute, week attribute, valid-flags attribute, bits that must
   be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
@@ -2608,6 +2611,94 @@ DESCRIPTIONS: Dict[Key, Tuple[str, ...]] = {
     (0xFF, 0xD6, None): ("Nanoseconds since the last occurrence of this field.",),
     (0xFF, 0xD7, None): ("External time in nanoseconds.", "Bit 0: nanoseconds valid."),
     (0xFF, 0xD8, None): ("Nanoseconds since the last occurrence of this field.", "Bit 0: delta valid."),
+}
+
+FRAMES: Dict[Key, Tuple[Optional[str], ...]] = {
+    (0x80, 0x04, None): (
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+    ),
+    (0x80, 0x05, None): (
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+    ),
+    (0x80, 0x06, None): (
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+    ),
+    (0x80, 0x07, None): (
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+    ),
+    (0x80, 0x08, None): (
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+        "cv7_ins: vehicle; gx5_45: sensor",
+    ),
+    (0x80, 0x10, None): ("sensor", "sensor", "sensor"),
+    (0x80, 0x11, None): ("sensor", "sensor", "sensor"),
+    (0x81, 0x03, None): ("wgs84", "wgs84", "wgs84", None, None, None, None),
+    (0x81, 0x04, None): ("ecef", "ecef", "ecef", None, None),
+    (0x81, 0x05, None): ("ned", "ned", "ned", None, None, None, None, None, None),
+    (0x81, 0x06, None): ("ecef", "ecef", "ecef", None, None),
+    (0x82, 0x01, None): ("wgs84", "wgs84", "wgs84", None),
+    (0x82, 0x02, None): ("ned", "ned", "ned", None),
+    (0x82, 0x06, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x07, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x09, None): ("ned", "ned", "ned", None),
+    (0x82, 0x0B, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x0C, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x0D, None): (
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        None,
+    ),
+    (0x82, 0x0E, None): (
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        None,
+    ),
+    (0x82, 0x13, None): (
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        None,
+    ),
+    (0x82, 0x15, None): ("ned", "ned", "ned", None, None, None),
+    (0x82, 0x16, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x17, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x18, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x19, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x1C, None): (
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        "cv7_ins: vehicle; gx5_45: sensor_or_vehicle",
+        None,
+    ),
+    (0x82, 0x30, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x31, None): ("sensor", "sensor", "sensor", None),
+    (0x82, 0x34, None): (None, "vehicle", "vehicle", "vehicle", None),
+    (0x82, 0x35, None): (None, "vehicle", "vehicle", "vehicle", None),
+    (0x82, 0x36, None): ("ecef", "ecef", "ecef", None),
+    (0x82, 0x37, None): ("ecef", "ecef", "ecef", None),
+    (0x82, 0x40, None): ("ecef", "ecef", "ecef", None),
+    (0x82, 0x41, None): ("ecef", "ecef", "ecef", None),
+    (0x91, 0x03, None): ("wgs84", "wgs84", "wgs84", None, None, None, None),
+    (0x91, 0x04, None): ("ecef", "ecef", "ecef", None, None),
+    (0x91, 0x05, None): ("ned", "ned", "ned", None, None, None, None, None, None),
+    (0x91, 0x06, None): ("ecef", "ecef", "ecef", None, None),
+    (0x92, 0x03, None): ("wgs84", "wgs84", "wgs84", None, None, None, None),
+    (0x92, 0x04, None): ("ecef", "ecef", "ecef", None, None),
+    (0x92, 0x05, None): ("ned", "ned", "ned", None, None, None, None, None, None),
+    (0x92, 0x06, None): ("ecef", "ecef", "ecef", None, None),
+    (0x94, 0x03, None): ("wgs84", "wgs84", "wgs84", None, None, None, None),
+    (0x94, 0x05, None): ("ned", "ned", "ned", None, None, None, None, None, None),
 }
 
 ENUMS: Dict[str, Dict[int, str]] = {

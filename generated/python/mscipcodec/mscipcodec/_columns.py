@@ -12,6 +12,9 @@ know about the data fields, taken from the spec rather than written by hand:
 - `TIMES`: (set, descriptor, attribute, counts per second) of the shared fields giving a
   packet its time (value / counts seconds), in order of preference;
 - `TITLES[(set, descriptor, device)]`: the field's title;
+- `FRAMES[(set, descriptor, device)]`: per column, the coordinate frame the spec states for its
+  parameter (`sensor`, `vehicle`, `sensor_or_vehicle`, `ned`, `ecef`, `wgs84`, or `device: frame`
+  per device joined by `; `), None where it states none; layouts without any frame are left out;
 - the time model's facts (the spec's `time` section; `mscipcodec.timebase`): `GPS_TIMES`
   (set, descriptor, time-of-week attribute, week attribute, valid-flags attribute, bits that must
   be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
@@ -108,6 +111,8 @@ DESCRIPTIONS: Dict[Key, Tuple[str, ...]] = {
         "Auxiliary acceleration [x, y, z].",
     ),
 }
+
+FRAMES: Dict[Key, Tuple[Optional[str], ...]] = {}
 
 ENUMS: Dict[str, Dict[int, str]] = {}
 
