@@ -8,7 +8,9 @@ The fleet is `mipcodec.fleet`'s (seed 0, --devices logs of about --size bytes in
 into build/bench/spark-fleet/ (again only when the size, device count or fleet.py changed); --logs
 takes an existing directory of logs instead. For each worker count N, a Spark session `local[N]`
 (loopback only, no UI) is started and warmed up (not timed), then the whole export is timed: the
-listing, both stages and the `_files` rows, into an empty directory. Prints one line per run,
+listing, both stages and the `_files` rows, into an empty directory. The workers run the package
+with its C accelerator (`tests/lang/python.sh ext`), as an installed package does. Prints one
+line per run,
 
     BENCH spark workers=N bytes=B seconds=S MB/s=X
 
@@ -24,6 +26,7 @@ import hashlib
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import time
@@ -34,6 +37,8 @@ from tests.helpers.generated import python_package
 
 ROOT = Path(__file__).resolve().parents[2]
 PKG_DIR = ROOT / "generated" / "python" / "mipcodec"
+# The package with its C accelerator, as users run it (`tests/lang/python.sh ext` builds it in place).
+ACCEL_DIR = ROOT / "build" / "python" / "ext" / "mipcodec"
 FLEET_DIR = ROOT / "build" / "bench" / "spark-fleet"
 DEFAULT_SIZE = 48 << 20
 DEFAULT_SPLIT = 8 << 20  # several splits per log, so that 2 workers have work to share
@@ -60,11 +65,22 @@ def fleet_logs(size: int = DEFAULT_SIZE, devices: int = 4, out: Path = FLEET_DIR
     return sorted(str(p) for p in out.iterdir() if p.is_file() and not p.name.startswith(".") and p.suffix != ".json")
 
 
+def package_dir() -> Path:
+    """The directory to put on PYTHONPATH for a timed run: the mipcodec package with its C
+    accelerator (built by `tests/lang/python.sh ext`, again only when its sources changed). A
+    build that fails raises: the figures of the pure-Python decoder are not the export's."""
+    subprocess.run([str(ROOT / "tests" / "lang" / "python.sh"), "ext"], check=True, capture_output=True, text=True)
+    if not list((ACCEL_DIR / "mipcodec").glob("_speedups*.so")):
+        raise RuntimeError(f"no C accelerator in {ACCEL_DIR} after tests/lang/python.sh ext")
+    return ACCEL_DIR
+
+
 def measure(paths: Sequence[str], workers: Sequence[int] = (1, 2), split_bytes: int = DEFAULT_SPLIT) -> Dict[str, Any]:
     """Time the Spark export of `paths` with local[N] for each N in `workers`: {"bytes", "runs":
     [{"workers", "seconds", "mb_s"}], "scaling"} (scaling: first run's seconds / last run's)."""
     m = _pkg()
-    os.environ["PYTHONPATH"] = os.pathsep.join([str(PKG_DIR), str(ROOT), os.environ.get("PYTHONPATH", "")])
+    # The executors' Python workers import the accelerated package (the driver only plans and lists).
+    os.environ["PYTHONPATH"] = os.pathsep.join([str(package_dir()), str(ROOT), os.environ.get("PYTHONPATH", "")])
     total = sum(os.path.getsize(p) for p in paths)
     runs: List[Dict[str, Any]] = []
     for n in workers:
