@@ -54,7 +54,7 @@ from urllib.parse import unquote, urlparse
 
 from . import dataset, timebase
 from ._protocol import PACKAGE as PROG
-from .tools import ToolError
+from .tools import ToolError, _positive  # _positive: the option type of export --split-bytes
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"
@@ -414,16 +414,6 @@ def export_dataset(
 
 
 # ----------------------------------------------------------------------------------- the command
-def _positive(text: str) -> int:
-    try:
-        value = int(text, 0)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"needs an integer > 0, not {text!r}")
-    return value
-
-
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=f"python -m {PROG}.spark",
