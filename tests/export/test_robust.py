@@ -216,6 +216,10 @@ def test_existing_outputs_are_refused_unless_force(tmp_path, capsys):
         assert mod.cli.main(["export", str(log), "--out", str(out)] + extra) == 2
         line = one_line(capsys.readouterr().err)
         assert str(out) in line and " exists: not overwritten (--force overwrites it)" in line, line
+        # the prefix docs/log-to-csv.md quotes ("mipcodec export: DIR/NAME exists: ...")
+        assert line.startswith(f"mipcodec export: {out}"), line
+        page = (ROOT / "docs" / "log-to-csv.md").read_text()
+        assert "`mipcodec export: DIR/NAME exists: not overwritten (--force overwrites it)`" in page
         assert table.read_bytes() == before
         assert not [n for n in leftovers(out) if n.startswith(".")]
     assert mod.cli.main(["export", str(log), "--out", str(out), "--force"]) == 0
