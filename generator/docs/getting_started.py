@@ -185,6 +185,7 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         f"{sim} --listen tcp:127.0.0.1:0 &   # prints tcp:127.0.0.1:PORT\n"
         + run.replace("ADDRESS", "tcp:127.0.0.1:PORT"),
         "sh",
+        outside=f"cd generated/{lang}/{pkg}",
     )
     pg.p(
         f"In this repository, `tests/lang/{lang}.sh configure ADDRESS [COUNT]` builds and runs this example and "
@@ -200,6 +201,7 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         f"{sim} --listen pty &               # prints the pty's path, e.g. /dev/pts/3\n"
         f"{run} /dev/pts/3 5",
         "sh",
+        outside="not run: repository commands (tests/conformance/test_simulator_examples.py runs them)",
     )
 
 
@@ -221,7 +223,12 @@ def add_pages(docs: Docs) -> None:
             pg.h(2, f"{p['title']} ({pkg})", p["name"])
             text, setup = _setup(lang, pkg, docs.examples)
             pg.p(text)
-            pg.code(setup, "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"))
+            # capture.bin: the page's placeholder for a device log (the outside-user test supplies one)
+            pg.code(
+                setup,
+                "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"),
+                outside="files capture.bin" if lang == "python" else "",
+            )
             include = _include(lang, pkg, source or "")
             if include:
                 pg.p("and include the package's umbrella header:" if lang in ("c", "cpp") else "and import it:")
