@@ -232,12 +232,15 @@ def machine(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
 
 @pytest.fixture(scope="module")
 def logs(machine: dict[str, str]) -> Path:
-    """Simulated device logs for the pages' placeholders (`python -m mipcodec.fleet`, the installed package)."""
+    """Simulated device logs for the pages' placeholders (`python -m mipcodec.fleet` of the generated
+    package: test data, made before the pages install anything into the virtualenv)."""
     out = BUILD / "logs"
     shutil.rmtree(out, ignore_errors=True)
     start = time.monotonic()
-    cmd = ["python", "-m", "mipcodec.fleet", "--out", str(out), "--devices", "2", "--size", "400k"]
-    subprocess.run(cmd, check=True, env=machine, capture_output=True, cwd=machine["OUTSIDE_HOME"])
+    cmd = [sys.executable, "-m", "mipcodec.fleet", "--out", str(out), "--devices", "2", "--size", "400k"]
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python" / "mipcodec")}
+    proc = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
     TIMINGS["outside user: python -m mipcodec.fleet (placeholder logs)"] = time.monotonic() - start
     return out
 
@@ -376,6 +379,9 @@ def test_page(page: str, machine: dict[str, str], logs: Path) -> None:
     work.mkdir(parents=True, exist_ok=True)
     runner = Runner(page, machine, logs, work)
     start = time.monotonic()
+    # each page installs what it uses: nothing an earlier page installed stays
+    uninstall = ["python", "-m", "pip", "uninstall", "--yes", "--quiet", *PYTHON_PACKAGES]
+    subprocess.run(uninstall, env=machine, capture_output=True, check=True)
     try:
         for b in blocks(page):
             if b.marker.startswith("not run:"):
