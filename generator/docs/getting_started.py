@@ -157,8 +157,11 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
 # directory (no repository): {pkg} the package, ADDRESS the simulator's address. Checked by
 # tests/docs/test_outside_user.py (the Python and C commands run against the simulator there).
 OUTSIDE_RUN = {
-    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
-    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
+    # only the example run (--target): the package's other examples are not needed for it
+    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
+    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
     "python": "python examples/configure_and_stream.py ADDRESS 5",
     "rust": "cargo run --features serial --example configure_and_stream -- ADDRESS 5",
 }

@@ -341,6 +341,12 @@ class Runner:
         assert ok, (
             f"{where}: `{command}` (in {cwd}) exit {proc.returncode}\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}"
         )
+        if re.search(r"configure[-_]and[-_]stream\S* \S+ (\d+)$", command):
+            # the getting-started pages' example against the simulator: the device line, the setting
+            # read back, then COUNT samples per field (at least one field)
+            count = int(command.rsplit(" ", 1)[1])
+            lines = proc.stdout.splitlines()
+            assert lines and lines[0].startswith("device ") and len(lines) >= 2 + count, f"{where}: {proc.stdout}"
 
     def block(self, b: Block) -> None:
         cwd = self.work
