@@ -12,7 +12,7 @@ Block kinds:
   {"kind": "table", "role": str, "head": [str], "rows": [[str]]}   (role: a CSS class, e.g. "layout")
   {"kind": "image", "src": relative path, "alt": str, "role": "diagram" | "bits"}
   {"kind": "code", "lang": str, "text": str, "outside": str}   (outside: the block's marker for the
-      outside-user test, written before the fence as `<!-- outside-user: ... -->`; docs/conformance.md §12)
+      outside-user test, written before the fence as `<!-- outside-user: ... -->`; docs/conformance.md §11)
 """
 
 from __future__ import annotations
