@@ -226,11 +226,12 @@ def add_pages(docs: Docs) -> None:
             pg.h(2, f"{p['title']} ({pkg})", p["name"])
             text, setup = _setup(lang, pkg, docs.examples)
             pg.p(text)
-            # capture.bin: the page's placeholder for a device log (the outside-user test supplies one)
+            # for the outside-user test (docs/conformance.md §11): capture.bin is the page's placeholder for
+            # a device log; a CMake or Cargo snippet is built as a project around the package's example
             pg.code(
                 setup,
                 "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"),
-                outside="files capture.bin" if lang == "python" else "",
+                outside="files capture.bin" if lang == "python" else "project",
             )
             include = _include(lang, pkg, source or "")
             if include:

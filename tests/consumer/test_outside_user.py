@@ -155,7 +155,7 @@ def test_every_page_is_linked_and_every_marker_is_known():
         assert (ROOT / page).is_file(), page
         for b in blocks(page):
             if b.marker:
-                assert re.fullmatch(r"not run: .{10,}|run|files [\w./ -]+|cd generated/\w+/\w+", b.marker), (
+                assert re.fullmatch(r"not run: .{10,}|run|project|files [\w./ -]+|cd generated/\w+/\w+", b.marker), (
                     b.where,
                     b.marker,
                 )
@@ -348,6 +348,46 @@ class Runner:
             lines = proc.stdout.splitlines()
             assert lines and lines[0].startswith("device ") and len(lines) >= 2 + count, f"{where}: {proc.stdout}"
 
+    def project(self, b: Block) -> None:
+        """A getting-started page's CMake or Cargo snippet as a user's project: the package copied to
+        third_party/PKG (a path dependency, add_subdirectory), the snippet in the project's build
+        file around the package's getting-started example as the user's program, built and run on
+        a device log."""
+        (package,) = set(re.findall(r"third_party/(\w+)", b.body))
+        lang = Path(b.page).stem
+        app = self.work / f"project-{package}"
+        shutil.copytree(ROOT / "generated" / lang / package, app / "third_party" / package, ignore=LEFTOVERS)
+        self.files(["capture.bin"], app)
+        example = (
+            ROOT / "generated" / lang / package / "examples" / f"getting_started.{'rs' if lang == 'rust' else lang}"
+        )
+        if lang == "rust":
+            (app / "src").mkdir()
+            shutil.copy2(example, app / "src" / "main.rs")
+            head = '[package]\nname = "your_app"\nversion = "0.1.0"\nedition = "2021"\npublish = false\n\n'
+            (app / "Cargo.toml").write_text(head + b.body, encoding="utf-8")
+            commands = ["cargo run --quiet -- capture.bin"]
+        else:
+            main = f"main.{lang}"
+            shutil.copy2(example, app / main)
+            language = "C" if lang == "c" else "CXX"
+            head = f"cmake_minimum_required(VERSION 3.16)\nproject(your_app LANGUAGES {language})\n"
+            if lang == "cpp":
+                head += "set(CMAKE_CXX_STANDARD 17)\n"
+            head += f"add_executable(your_app {main})\n"
+            (app / "CMakeLists.txt").write_text(head + b.body, encoding="utf-8")
+            commands = ["cmake -S . -B build && cmake --build build", "build/your_app capture.bin"]
+        self.count += 1
+        for command in commands:
+            start = time.monotonic()
+            proc = subprocess.run(
+                ["bash", "-c", command], capture_output=True, text=True, env=self.env, cwd=app, timeout=900
+            )
+            TIMINGS[f"outside user: {b.where}: project: {command}"] = time.monotonic() - start
+            assert proc.returncode == 0, (
+                f"{b.where}: the snippet's project: `{command}` exit {proc.returncode}\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}"
+            )
+
     def block(self, b: Block) -> None:
         cwd = self.work
         package = ""
@@ -359,6 +399,9 @@ class Runner:
             package = cwd.name
         if b.marker.startswith("files "):
             self.files(b.marker[len("files ") :].split(), cwd)
+        if b.marker == "project":
+            self.project(b)
+            return
         if b.lang == "yaml":
             first = b.body.splitlines()[0] if b.body else ""
             if re.fullmatch(r"# [\w.-]+\.yaml", first):
