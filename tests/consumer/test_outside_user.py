@@ -29,7 +29,9 @@ are not run; a block is marked by an HTML comment on the line before its fence:
 `<!-- outside-user: files NAME... -->` (placeholders the test supplies: `NAME.bin` a simulated
 device log, `NAME/` a directory of them, from `python -m mipcodec.fleet`),
 `<!-- outside-user: cd generated/LANG/PKG -->` (run in a copy of that package directory, made
-outside the repository, as a user who vendored it).
+outside the repository, as a user who vendored it), `<!-- outside-user: project -->` (a
+getting-started page's CMake or Cargo snippet built as the user's project: the package in
+third_party/ by add_subdirectory or path dependency, its getting-started example the program).
 """
 
 from __future__ import annotations
