@@ -17,7 +17,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams tests/sessions -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-cortexm test-release test-mingw test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-outside test-cortexm test-release test-mingw test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
 
 all: generate
 
@@ -45,7 +45,7 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap: $(VENV)/.stamp
 	@tools/bootstrap
 
-test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden test-consumer
+test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden test-consumer test-outside
 
 # Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
 # from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
@@ -120,6 +120,15 @@ test-bigendian: generate
 # add_subdirectory into a C-only project (only the linked libraries built).
 test-consumer: generate
 	$(PY) -m pytest -q tests/consumer/test_consumers.py
+
+# The outside user (issue 39; docs/conformance.md §11): every command of every user-facing page
+# (README's documentation table, the getting-started pages), taken from the pages' blocks and run
+# in a temporary directory outside the repository, with a fresh virtualenv holding the wheels of
+# tests/lang/python.sh consumer (reused), the C path with no googletest and no C++ compiler, the
+# packages copied out as a user vendors them, cargo offline. A few minutes (the C++ example build
+# most of it).
+test-outside: generate
+	$(PY) -m pytest -q tests/consumer/test_outside_user.py
 
 # Release checks (docs/versioning.md "Releasing"): the Python packages' sdists and wheels pass
 # `twine check --strict` with PyPI's classifiers (tests/consumer/test_release.py), and `cargo publish

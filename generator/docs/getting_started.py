@@ -157,8 +157,11 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
 # directory (no repository): {pkg} the package, ADDRESS the simulator's address. Checked by
 # tests/docs/test_outside_user.py (the Python and C commands run against the simulator there).
 OUTSIDE_RUN = {
-    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
-    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build\nbuild/{pkg}-configure-and-stream ADDRESS 5",
+    # only the example run (--target): the package's other examples are not needed for it
+    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
+    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
     "python": "python examples/configure_and_stream.py ADDRESS 5",
     "rust": "cargo run --features serial --example configure_and_stream -- ADDRESS 5",
 }
@@ -185,6 +188,7 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         f"{sim} --listen tcp:127.0.0.1:0 &   # prints tcp:127.0.0.1:PORT\n"
         + run.replace("ADDRESS", "tcp:127.0.0.1:PORT"),
         "sh",
+        outside=f"cd generated/{lang}/{pkg}",
     )
     pg.p(
         f"In this repository, `tests/lang/{lang}.sh configure ADDRESS [COUNT]` builds and runs this example and "
@@ -200,6 +204,7 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         f"{sim} --listen pty &               # prints the pty's path, e.g. /dev/pts/3\n"
         f"{run} /dev/pts/3 5",
         "sh",
+        outside="not run: repository commands (tests/conformance/test_simulator_examples.py runs them)",
     )
 
 
@@ -221,7 +226,13 @@ def add_pages(docs: Docs) -> None:
             pg.h(2, f"{p['title']} ({pkg})", p["name"])
             text, setup = _setup(lang, pkg, docs.examples)
             pg.p(text)
-            pg.code(setup, "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"))
+            # for the outside-user test (docs/conformance.md §11): capture.bin is the page's placeholder for
+            # a device log; a CMake or Cargo snippet is built as a project around the package's example
+            pg.code(
+                setup,
+                "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"),
+                outside="files capture.bin" if lang == "python" else "project",
+            )
             include = _include(lang, pkg, source or "")
             if include:
                 pg.p("and include the package's umbrella header:" if lang in ("c", "cpp") else "and import it:")

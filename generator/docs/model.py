@@ -11,7 +11,8 @@ Block kinds:
   {"kind": "list", "items": [str]}
   {"kind": "table", "role": str, "head": [str], "rows": [[str]]}   (role: a CSS class, e.g. "layout")
   {"kind": "image", "src": relative path, "alt": str, "role": "diagram" | "bits"}
-  {"kind": "code", "lang": str, "text": str}
+  {"kind": "code", "lang": str, "text": str, "outside": str}   (outside: the block's marker for the
+      outside-user test, written before the fence as `<!-- outside-user: ... -->`; docs/conformance.md §11)
 """
 
 from __future__ import annotations
@@ -55,8 +56,8 @@ class Page:
     def image(self, src: str, alt: str, role: str) -> None:
         self.blocks.append({"kind": "image", "src": src, "alt": alt, "role": role})
 
-    def code(self, text: str, lang: str = "") -> None:
-        self.blocks.append({"kind": "code", "lang": lang, "text": text.rstrip("\n")})
+    def code(self, text: str, lang: str = "", outside: str = "") -> None:
+        self.blocks.append({"kind": "code", "lang": lang, "text": text.rstrip("\n"), "outside": outside})
 
     def link_to(self, target: str, anchor: str = "") -> str:
         """Relative link from this page to target (a page path), with an optional #anchor."""

@@ -257,47 +257,5 @@ def test_mypy_strict_rejects_wrong_types() -> None:
     assert proc.returncode == 1 and reported == expected, proc.stdout + proc.stderr
 
 
-def page_commands(lang: str, package: str) -> list[str]:
-    """The outside user's commands of the getting-started page's "Run it against the simulator"
-    section for `package` (generated/docs/getting-started/<lang>.md, the first ```sh block)."""
-    text = (ROOT / "generated" / "docs" / "getting-started" / f"{lang}.md").read_text(encoding="utf-8")
-    proto = json.loads((ROOT / "generated" / "ir.json").read_text(encoding="utf-8"))["protocols"]
-    name = next(p["name"] for p in proto if p["package"] == package)
-    section = text.split(f'<a id="configure-and-stream-{name}-simulator"></a>', 1)[1]
-    block = section.split("```sh\n", 1)[1].split("```", 1)[0]
-    return [ln.split("   #")[0].rstrip(" &") for ln in block.splitlines() if ln.strip()]
-
-
-@pytest.mark.parametrize("lang", ["python", "c"])
-def test_simulator_page_commands_work_from_the_installed_package(built: Built, lang: str, tmp_path: Path) -> None:
-    """The getting-started pages' outside-user path (issue 39): with only the installed wheel (its
-    virtualenv's `python`) and the package's own directory, the page's commands start the simulator
-    and build and run the configure-and-stream example against it. pip is the one command not run
-    (the virtualenv already holds the installed wheel; it has no network)."""
-    cmds = page_commands(lang, built.package)
-    assert cmds[0].startswith("pip install ") and cmds[1].startswith(f"python -m {built.package}.sim "), cmds
-    bindir = built.venv / "bin"
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
-    env["PATH"] = f"{bindir}{os.pathsep}{env.get('PATH', '')}"  # `python` is the virtualenv's, as after activate
-    sim = subprocess.Popen(
-        cmds[1].split(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp_path
-    )
-    try:
-        assert sim.stdout is not None
-        address = sim.stdout.readline().strip()
-        assert address.startswith("tcp:127.0.0.1:"), address + (sim.stderr.read() if sim.poll() is not None else "")
-        pkgdir = tmp_path / "pkg"
-        src = GENERATED / built.package if lang == "python" else ROOT / "generated" / lang / built.package
-        shutil.copytree(src, pkgdir, ignore=LEFTOVERS)
-        out = ""
-        for cmd in cmds[2:]:
-            cmd = cmd.replace("tcp:127.0.0.1:PORT", address)
-            proc = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, env=env, cwd=pkgdir, timeout=600)
-            assert proc.returncode == 0, f"{cmd}: exit {proc.returncode}\n{proc.stdout}\n{proc.stderr}"
-            out = proc.stdout
-        lines = out.splitlines()
-        assert lines and lines[0].startswith("device "), out
-        assert len(lines) >= 2 + 5, out  # the device line, the setting read back, 5 samples per field
-    finally:
-        sim.terminate()
-        sim.wait(timeout=10)
+# The getting-started pages' "Run it against the simulator" commands (every language, both packages)
+# run from the installed wheels in tests/consumer/test_outside_user.py.
