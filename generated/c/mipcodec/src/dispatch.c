@@ -2513,6 +2513,105 @@ const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet
     return NULL;
 }
 
+/* The other of a cached decode's fallback: passes each entry on and counts them (a packet that
+ * left one is not recorded). */
+typedef struct {
+    mipc_field_entry_fn other;
+    void *ctx;
+    size_t left;
+} counted_other_t;
+
+static void count_other(void *ctx, const mipc_field_entry_t *entry) {
+    counted_other_t *c = ctx;
+    c->left++;
+    if (c->other) {
+        c->other(c->ctx, entry);
+    }
+}
+
+const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache, const uint8_t *packet,
+                                                     mipc_packet_t *out, mipc_field_entry_fn other,
+                                                     void *ctx) {
+    const uint8_t set = mipc_packet_set(packet);
+    const uint8_t *payload = mipc_packet_payload(packet);
+    const size_t len = mipc_packet_payload_length(packet);
+    const mipc_layout_shape_t *shape;
+    const mipc_packet_index_t *index;
+    counted_other_t counted;
+    assert(cache != NULL);
+    assert(packet != NULL);
+    assert(out != NULL);
+    shape = mipc_layout_cache_find_(cache, set, payload, len);
+    if (shape != NULL) {
+        switch (set) {
+        case 0x80:
+            if (mipc_sensor_decode_shape_(payload, shape, &out->u.sensor)) {
+                out->set = set;
+                return &out->u.sensor.index;
+            }
+            break;
+        case 0x81:
+            if (mipc_gnss_data_decode_shape_(payload, shape, &out->u.gnss_data)) {
+                out->set = set;
+                return &out->u.gnss_data.index;
+            }
+            break;
+        case 0x82:
+            if (mipc_filter_data_decode_shape_(payload, shape, &out->u.filter_data)) {
+                out->set = set;
+                return &out->u.filter_data.index;
+            }
+            break;
+        case 0x91:
+            if (mipc_gnss_receiver_1_decode_shape_(payload, shape, &out->u.gnss_receiver_1)) {
+                out->set = set;
+                return &out->u.gnss_receiver_1.index;
+            }
+            break;
+        case 0x92:
+            if (mipc_gnss_receiver_2_decode_shape_(payload, shape, &out->u.gnss_receiver_2)) {
+                out->set = set;
+                return &out->u.gnss_receiver_2.index;
+            }
+            break;
+        case 0x93:
+            if (mipc_gnss_corrections_decode_shape_(payload, shape, &out->u.gnss_corrections)) {
+                out->set = set;
+                return &out->u.gnss_corrections.index;
+            }
+            break;
+        case 0x94:
+            if (mipc_gnss_external_decode_shape_(payload, shape, &out->u.gnss_external)) {
+                out->set = set;
+                return &out->u.gnss_external.index;
+            }
+            break;
+        case 0xA0:
+            if (mipc_system_data_decode_shape_(payload, shape, &out->u.system_data)) {
+                out->set = set;
+                return &out->u.system_data.index;
+            }
+            break;
+        case 0xFF:
+            if (mipc_shared_decode_shape_(payload, shape, &out->u.shared)) {
+                out->set = set;
+                return &out->u.shared.index;
+            }
+            break;
+        default:
+            break;
+        }
+    }
+    counted.other = other;
+    counted.ctx = ctx;
+    counted.left = 0;
+    index = mipc_decode_packet(packet, out, count_other, &counted);
+    if (index != NULL && counted.left == 0 && shape == NULL) {
+        mipc_layout_cache_record_(cache, set, payload, len, index);
+    }
+    return index;
+}
+
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     assert(value != NULL);
     assert(buf != NULL || cap == 0);

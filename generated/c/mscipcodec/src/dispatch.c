@@ -569,6 +569,57 @@ const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_
     return NULL;
 }
 
+/* The other of a cached decode's fallback: passes each entry on and counts them (a packet that
+ * left one is not recorded). */
+typedef struct {
+    mscipc_field_entry_fn other;
+    void *ctx;
+    size_t left;
+} counted_other_t;
+
+static void count_other(void *ctx, const mscipc_field_entry_t *entry) {
+    counted_other_t *c = ctx;
+    c->left++;
+    if (c->other) {
+        c->other(c->ctx, entry);
+    }
+}
+
+const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *cache, const uint8_t *packet,
+                                                         mscipc_packet_t *out, mscipc_field_entry_fn other,
+                                                         void *ctx) {
+    const uint8_t set = mscipc_packet_set(packet);
+    const uint8_t *payload = mscipc_packet_payload(packet);
+    const size_t len = mscipc_packet_payload_length(packet);
+    const mscipc_layout_shape_t *shape;
+    const mscipc_packet_index_t *index;
+    counted_other_t counted;
+    assert(cache != NULL);
+    assert(packet != NULL);
+    assert(out != NULL);
+    shape = mscipc_layout_cache_find_(cache, set, payload, len);
+    if (shape != NULL) {
+        switch (set) {
+        case 0xA2:
+            if (mscipc_imu_data_decode_shape_(payload, shape, &out->u.imu_data)) {
+                out->set = set;
+                return &out->u.imu_data.index;
+            }
+            break;
+        default:
+            break;
+        }
+    }
+    counted.other = other;
+    counted.ctx = ctx;
+    counted.left = 0;
+    index = mscipc_decode_packet(packet, out, count_other, &counted);
+    if (index != NULL && counted.left == 0 && shape == NULL) {
+        mscipc_layout_cache_record_(cache, set, payload, len, index);
+    }
+    return index;
+}
+
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,
                                     size_t *len_out) {
     assert(value != NULL);

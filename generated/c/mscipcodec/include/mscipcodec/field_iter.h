@@ -142,6 +142,72 @@ static inline const void *mscipc_packet_value(const mscipc_packet_index_t *index
     return (const uint8_t *)index + index->fields[i].offset;
 }
 
+/* ---- the layout cache (issue 38): packet shapes seen before, decoded without the header walk */
+
+/** Shapes a layout cache holds (replaced round-robin) and most fields a cached shape has (a
+ * packet with more is decoded by the straight-line decoder every time). */
+#define MSCIPC_LAYOUT_CACHE_SHAPES 4
+#define MSCIPC_LAYOUT_SHAPE_FIELDS 16
+
+/** A packet shape: (set, payload length, every field header at its offset), recorded from a
+ * packet whose fields the straight-line decoder all decoded into members (nothing to `other`, no
+ * trailing bytes), with the index it made. Private: read by the generated <set>_decode_shape_. */
+typedef struct {
+    uint8_t used;                                              /* 0: an empty slot */
+    uint8_t set;                                               /* descriptor set */
+    uint8_t length;                                            /* payload length */
+    uint8_t count;                                             /* fields */
+    uint8_t pos[MSCIPC_LAYOUT_SHAPE_FIELDS];                   /* payload offset of each field header */
+    uint8_t data_len[MSCIPC_LAYOUT_SHAPE_FIELDS];              /* its data length */
+    uint16_t head[MSCIPC_LAYOUT_SHAPE_FIELDS];                 /* its two header bytes, first | second << 8 */
+    uint32_t present[8];                                       /* the index's present bits */
+    mscipc_decoded_field_t fields[MSCIPC_LAYOUT_SHAPE_FIELDS]; /* the index's entries */
+} mscipc_layout_shape_t;
+
+/** The layout cache of mscipc_decode_packet_cached: fixed arrays (no allocation), one per stream
+ * (not shared between threads without a lock). Initialise with mscipc_layout_cache_init. */
+typedef struct {
+    mscipc_layout_shape_t shapes[MSCIPC_LAYOUT_CACHE_SHAPES];
+    uint8_t next; /* the slot the next recorded shape replaces */
+    uint8_t last; /* the slot of the last hit, tried first */
+} mscipc_layout_cache_t;
+
+/** Empties a layout cache. */
+void mscipc_layout_cache_init(mscipc_layout_cache_t *cache);
+
+/* Private (mscipc_decode_packet_cached): the cached shape of this packet (set, payload of len
+ * bytes), or NULL. Compares the set, the length and each field header; reads only bytes below
+ * len (a shape's headers lie inside its length). */
+static inline const mscipc_layout_shape_t *
+mscipc_layout_cache_find_(mscipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len) {
+    unsigned k;
+    for (k = 0; k < MSCIPC_LAYOUT_CACHE_SHAPES; k++) {
+        const unsigned slot = (cache->last + k) % MSCIPC_LAYOUT_CACHE_SHAPES;
+        const mscipc_layout_shape_t *shape = &cache->shapes[slot];
+        unsigned i;
+        if (!shape->used || shape->set != set || shape->length != len) {
+            continue;
+        }
+        for (i = 0; i < shape->count; i++) {
+            const uint8_t *head = payload + shape->pos[i];
+            if ((uint16_t)(head[0] | (unsigned)head[1] << 8) != shape->head[i]) {
+                break;
+            }
+        }
+        if (i == shape->count) {
+            cache->last = (uint8_t)slot;
+            return shape;
+        }
+    }
+    return NULL;
+}
+
+/* Private (mscipc_decode_packet_cached): records the shape of a packet (set, payload of len bytes)
+ * that the straight-line decoder decoded whole into index (every entry a field in its member);
+ * does nothing when it does not fit a shape. */
+void mscipc_layout_cache_record_(mscipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload,
+                                 size_t len, const mscipc_packet_index_t *index);
+
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t mscipc_trailing_format(const mscipc_field_entry_t *entry, char *buf, size_t cap);
 
