@@ -2529,87 +2529,77 @@ static void count_other(void *ctx, const mipc_field_entry_t *entry) {
     }
 }
 
-const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache, const uint8_t *packet,
-                                                     mipc_packet_t *out, mipc_field_entry_fn other,
-                                                     void *ctx) {
+/* The decoder of a set's shapes (NULL: none). */
+static mipc_layout_decode_fn shape_decoder(uint8_t set) {
+    switch (set) {
+    case 0x80:
+        return mipc_sensor_decode_shape_;
+    case 0x81:
+        return mipc_gnss_data_decode_shape_;
+    case 0x82:
+        return mipc_filter_data_decode_shape_;
+    case 0x91:
+        return mipc_gnss_receiver_1_decode_shape_;
+    case 0x92:
+        return mipc_gnss_receiver_2_decode_shape_;
+    case 0x93:
+        return mipc_gnss_corrections_decode_shape_;
+    case 0x94:
+        return mipc_gnss_external_decode_shape_;
+    case 0xA0:
+        return mipc_system_data_decode_shape_;
+    case 0xFF:
+        return mipc_shared_decode_shape_;
+    default:
+        return NULL;
+    }
+}
+
+/* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
+ * decoder (and its shape recorded when every entry was decoded into a member). */
+static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cache_t *cache,
+                                                                const uint8_t *packet, mipc_packet_t *out,
+                                                                mipc_field_entry_fn other, void *ctx) {
     const uint8_t set = mipc_packet_set(packet);
     const uint8_t *payload = mipc_packet_payload(packet);
     const size_t len = mipc_packet_payload_length(packet);
-    const mipc_layout_shape_t *shape;
+    const mipc_layout_shape_t *shape = mipc_layout_cache_find_(cache, set, payload, len);
     const mipc_packet_index_t *index;
     counted_other_t counted;
-    assert(cache != NULL);
-    assert(packet != NULL);
-    assert(out != NULL);
-    shape = mipc_layout_cache_find_(cache, set, payload, len);
-    if (shape != NULL) {
-        switch (set) {
-        case 0x80:
-            if (mipc_sensor_decode_shape_(payload, shape, &out->u.sensor)) {
-                out->set = set;
-                return &out->u.sensor.index;
-            }
-            break;
-        case 0x81:
-            if (mipc_gnss_data_decode_shape_(payload, shape, &out->u.gnss_data)) {
-                out->set = set;
-                return &out->u.gnss_data.index;
-            }
-            break;
-        case 0x82:
-            if (mipc_filter_data_decode_shape_(payload, shape, &out->u.filter_data)) {
-                out->set = set;
-                return &out->u.filter_data.index;
-            }
-            break;
-        case 0x91:
-            if (mipc_gnss_receiver_1_decode_shape_(payload, shape, &out->u.gnss_receiver_1)) {
-                out->set = set;
-                return &out->u.gnss_receiver_1.index;
-            }
-            break;
-        case 0x92:
-            if (mipc_gnss_receiver_2_decode_shape_(payload, shape, &out->u.gnss_receiver_2)) {
-                out->set = set;
-                return &out->u.gnss_receiver_2.index;
-            }
-            break;
-        case 0x93:
-            if (mipc_gnss_corrections_decode_shape_(payload, shape, &out->u.gnss_corrections)) {
-                out->set = set;
-                return &out->u.gnss_corrections.index;
-            }
-            break;
-        case 0x94:
-            if (mipc_gnss_external_decode_shape_(payload, shape, &out->u.gnss_external)) {
-                out->set = set;
-                return &out->u.gnss_external.index;
-            }
-            break;
-        case 0xA0:
-            if (mipc_system_data_decode_shape_(payload, shape, &out->u.system_data)) {
-                out->set = set;
-                return &out->u.system_data.index;
-            }
-            break;
-        case 0xFF:
-            if (mipc_shared_decode_shape_(payload, shape, &out->u.shared)) {
-                out->set = set;
-                return &out->u.shared.index;
-            }
-            break;
-        default:
-            break;
-        }
+    if (shape != NULL && shape->decode(payload, shape, &out->u)) {
+        out->set = set;
+        return (const mipc_packet_index_t *)(const void *)&out->u;
     }
     counted.other = other;
     counted.ctx = ctx;
     counted.left = 0;
     index = mipc_decode_packet(packet, out, count_other, &counted);
     if (index != NULL && counted.left == 0 && shape == NULL) {
-        mipc_layout_cache_record_(cache, set, payload, len, index);
+        const mipc_layout_decode_fn decode = shape_decoder(set);
+        if (decode != NULL) {
+            mipc_layout_cache_record_(cache, set, payload, len, index, decode);
+        }
     }
     return index;
+}
+
+/* Every packet struct of out->u starts with its index: a pointer to the union converts to one to
+ * each member, and that to one to its first member (C99 6.7.2.1). */
+const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache, const uint8_t *packet,
+                                                     mipc_packet_t *out, mipc_field_entry_fn other,
+                                                     void *ctx) {
+    const uint8_t set = mipc_packet_set(packet);
+    const uint8_t *payload = mipc_packet_payload(packet);
+    const mipc_layout_shape_t *shape;
+    assert(cache != NULL);
+    assert(out != NULL);
+    shape = &cache->shapes[cache->last % MIPC_LAYOUT_CACHE_SHAPES];
+    if (mipc_layout_shape_matches_(shape, set, payload, mipc_packet_payload_length(packet)) &&
+        shape->decode(payload, shape, &out->u)) {
+        out->set = set;
+        return (const mipc_packet_index_t *)(const void *)&out->u;
+    }
+    return decode_uncached(cache, packet, out, other, ctx);
 }
 
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {

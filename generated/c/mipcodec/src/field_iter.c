@@ -35,12 +35,13 @@ void mipc_layout_cache_init(mipc_layout_cache_t *cache) {
 }
 
 void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
-                               const mipc_packet_index_t *index) {
+                               const mipc_packet_index_t *index, mipc_layout_decode_fn decode) {
     mipc_layout_shape_t *shape;
     size_t pos = 0;
     size_t i;
     assert(cache != NULL);
     assert(index != NULL);
+    assert(decode != NULL);
     if (index->count == 0 || index->count > MIPC_LAYOUT_SHAPE_FIELDS || len > UINT8_MAX || payload == NULL) {
         return;
     }
@@ -69,6 +70,7 @@ void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const ui
         return;
     }
     memcpy(shape->present, index->present, sizeof shape->present);
+    shape->decode = decode;
     shape->set = set;
     shape->length = (uint8_t)len;
     shape->count = (uint8_t)index->count;

@@ -585,39 +585,62 @@ static void count_other(void *ctx, const mscipc_field_entry_t *entry) {
     }
 }
 
-const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *cache, const uint8_t *packet,
-                                                         mscipc_packet_t *out, mscipc_field_entry_fn other,
-                                                         void *ctx) {
+/* The decoder of a set's shapes (NULL: none). */
+static mscipc_layout_decode_fn shape_decoder(uint8_t set) {
+    switch (set) {
+    case 0xA2:
+        return mscipc_imu_data_decode_shape_;
+    default:
+        return NULL;
+    }
+}
+
+/* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
+ * decoder (and its shape recorded when every entry was decoded into a member). */
+static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layout_cache_t *cache,
+                                                                    const uint8_t *packet,
+                                                                    mscipc_packet_t *out,
+                                                                    mscipc_field_entry_fn other, void *ctx) {
     const uint8_t set = mscipc_packet_set(packet);
     const uint8_t *payload = mscipc_packet_payload(packet);
     const size_t len = mscipc_packet_payload_length(packet);
-    const mscipc_layout_shape_t *shape;
+    const mscipc_layout_shape_t *shape = mscipc_layout_cache_find_(cache, set, payload, len);
     const mscipc_packet_index_t *index;
     counted_other_t counted;
-    assert(cache != NULL);
-    assert(packet != NULL);
-    assert(out != NULL);
-    shape = mscipc_layout_cache_find_(cache, set, payload, len);
-    if (shape != NULL) {
-        switch (set) {
-        case 0xA2:
-            if (mscipc_imu_data_decode_shape_(payload, shape, &out->u.imu_data)) {
-                out->set = set;
-                return &out->u.imu_data.index;
-            }
-            break;
-        default:
-            break;
-        }
+    if (shape != NULL && shape->decode(payload, shape, &out->u)) {
+        out->set = set;
+        return (const mscipc_packet_index_t *)(const void *)&out->u;
     }
     counted.other = other;
     counted.ctx = ctx;
     counted.left = 0;
     index = mscipc_decode_packet(packet, out, count_other, &counted);
     if (index != NULL && counted.left == 0 && shape == NULL) {
-        mscipc_layout_cache_record_(cache, set, payload, len, index);
+        const mscipc_layout_decode_fn decode = shape_decoder(set);
+        if (decode != NULL) {
+            mscipc_layout_cache_record_(cache, set, payload, len, index, decode);
+        }
     }
     return index;
+}
+
+/* Every packet struct of out->u starts with its index: a pointer to the union converts to one to
+ * each member, and that to one to its first member (C99 6.7.2.1). */
+const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *cache, const uint8_t *packet,
+                                                         mscipc_packet_t *out, mscipc_field_entry_fn other,
+                                                         void *ctx) {
+    const uint8_t set = mscipc_packet_set(packet);
+    const uint8_t *payload = mscipc_packet_payload(packet);
+    const mscipc_layout_shape_t *shape;
+    assert(cache != NULL);
+    assert(out != NULL);
+    shape = &cache->shapes[cache->last % MSCIPC_LAYOUT_CACHE_SHAPES];
+    if (mscipc_layout_shape_matches_(shape, set, payload, mscipc_packet_payload_length(packet)) &&
+        shape->decode(payload, shape, &out->u)) {
+        out->set = set;
+        return (const mscipc_packet_index_t *)(const void *)&out->u;
+    }
+    return decode_uncached(cache, packet, out, other, ctx);
 }
 
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,

@@ -35,12 +35,14 @@ void mscipc_layout_cache_init(mscipc_layout_cache_t *cache) {
 }
 
 void mscipc_layout_cache_record_(mscipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload,
-                                 size_t len, const mscipc_packet_index_t *index) {
+                                 size_t len, const mscipc_packet_index_t *index,
+                                 mscipc_layout_decode_fn decode) {
     mscipc_layout_shape_t *shape;
     size_t pos = 0;
     size_t i;
     assert(cache != NULL);
     assert(index != NULL);
+    assert(decode != NULL);
     if (index->count == 0 || index->count > MSCIPC_LAYOUT_SHAPE_FIELDS || len > UINT8_MAX ||
         payload == NULL) {
         return;
@@ -70,6 +72,7 @@ void mscipc_layout_cache_record_(mscipc_layout_cache_t *cache, uint8_t set, cons
         return;
     }
     memcpy(shape->present, index->present, sizeof shape->present);
+    shape->decode = decode;
     shape->set = set;
     shape->length = (uint8_t)len;
     shape->count = (uint8_t)index->count;

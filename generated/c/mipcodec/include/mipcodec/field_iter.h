@@ -148,10 +148,17 @@ static inline const void *mipc_packet_value(const mipc_packet_index_t *index, si
 #define MIPC_LAYOUT_CACHE_SHAPES 4
 #define MIPC_LAYOUT_SHAPE_FIELDS 16
 
+typedef struct mipc_layout_shape mipc_layout_shape_t;
+
+/* Private: decodes the payload of a packet of a shape's set at the shape's offsets into the set's
+ * packet struct (packet: a <set>_packet_t); 0 when a field does not decode. */
+typedef int (*mipc_layout_decode_fn)(const uint8_t *payload, const mipc_layout_shape_t *shape, void *packet);
+
 /** A packet shape: (set, payload length, every field header at its offset), recorded from a
  * packet whose fields the straight-line decoder all decoded into members (nothing to `other`, no
  * trailing bytes), with the index it made. Private: read by the generated <set>_decode_shape_. */
-typedef struct {
+struct mipc_layout_shape {
+    mipc_layout_decode_fn decode;                          /* the set's <set>_decode_shape_ */
     uint8_t used;                                          /* 0: an empty slot */
     uint8_t set;                                           /* descriptor set */
     uint8_t length;                                        /* payload length */
@@ -161,7 +168,7 @@ typedef struct {
     uint16_t head[MIPC_LAYOUT_SHAPE_FIELDS];               /* its two header bytes, first | second << 8 */
     uint32_t present[8];                                   /* the index's present bits */
     mipc_decoded_field_t fields[MIPC_LAYOUT_SHAPE_FIELDS]; /* the index's entries */
-} mipc_layout_shape_t;
+};
 
 /** The layout cache of mipc_decode_packet_cached: fixed arrays (no allocation), one per stream
  * (not shared between threads without a lock). Initialise with mipc_layout_cache_init. */
@@ -174,38 +181,43 @@ typedef struct {
 /** Empties a layout cache. */
 void mipc_layout_cache_init(mipc_layout_cache_t *cache);
 
-/* Private (mipc_decode_packet_cached): the cached shape of this packet (set, payload of len
- * bytes), or NULL. Compares the set, the length and each field header; reads only bytes below
- * len (a shape's headers lie inside its length). */
+/* Private (mipc_decode_packet_cached): true when the packet (set, payload of len bytes) has this
+ * shape. Compares the set, the length and each field header; reads only bytes below len (a
+ * shape's headers lie inside its length). */
+static inline bool mipc_layout_shape_matches_(const mipc_layout_shape_t *shape, uint8_t set,
+                                              const uint8_t *payload, size_t len) {
+    unsigned i;
+    if (!shape->used || shape->set != set || shape->length != len) {
+        return false;
+    }
+    for (i = 0; i < shape->count; i++) {
+        const uint8_t *head = payload + shape->pos[i];
+        if ((uint16_t)(head[0] | (unsigned)head[1] << 8) != shape->head[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Private: the cached shape of this packet, or NULL (the slot found becomes the one tried first). */
 static inline const mipc_layout_shape_t *mipc_layout_cache_find_(mipc_layout_cache_t *cache, uint8_t set,
                                                                  const uint8_t *payload, size_t len) {
     unsigned k;
     for (k = 0; k < MIPC_LAYOUT_CACHE_SHAPES; k++) {
         const unsigned slot = (cache->last + k) % MIPC_LAYOUT_CACHE_SHAPES;
-        const mipc_layout_shape_t *shape = &cache->shapes[slot];
-        unsigned i;
-        if (!shape->used || shape->set != set || shape->length != len) {
-            continue;
-        }
-        for (i = 0; i < shape->count; i++) {
-            const uint8_t *head = payload + shape->pos[i];
-            if ((uint16_t)(head[0] | (unsigned)head[1] << 8) != shape->head[i]) {
-                break;
-            }
-        }
-        if (i == shape->count) {
+        if (mipc_layout_shape_matches_(&cache->shapes[slot], set, payload, len)) {
             cache->last = (uint8_t)slot;
-            return shape;
+            return &cache->shapes[slot];
         }
     }
     return NULL;
 }
 
 /* Private (mipc_decode_packet_cached): records the shape of a packet (set, payload of len bytes)
- * that the straight-line decoder decoded whole into index (every entry a field in its member);
- * does nothing when it does not fit a shape. */
+ * that the straight-line decoder decoded whole into index (every entry a field in its member),
+ * decoded by decode when it comes again; does nothing when it does not fit a shape. */
 void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
-                               const mipc_packet_index_t *index);
+                               const mipc_packet_index_t *index, mipc_layout_decode_fn decode);
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t mipc_trailing_format(const mipc_field_entry_t *entry, char *buf, size_t cap);

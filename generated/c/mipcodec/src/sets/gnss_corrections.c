@@ -471,11 +471,9 @@ size_t mipc_gnss_corrections_decode_packet(const uint8_t *payload, size_t len,
  * the straight-line decoder, which gives it to other) */
 
 int mipc_gnss_corrections_decode_shape_(const uint8_t *payload, const mipc_layout_shape_t *shape,
-                                        mipc_gnss_corrections_packet_t *out) {
+                                        void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
     size_t i;
-    assert(payload != NULL);
-    assert(shape != NULL);
-    assert(out != NULL);
     for (i = 0; i < shape->count; i++) {
         const uint8_t *d = payload + shape->pos[i] + MIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];

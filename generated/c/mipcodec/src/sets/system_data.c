@@ -346,12 +346,9 @@ size_t mipc_system_data_decode_packet(const uint8_t *payload, size_t len, mipc_s
  * each decoded as mipc_system_data_decode_packet decodes it; 0 when one does not (that packet then takes the
  * straight-line decoder, which gives it to other) */
 
-int mipc_system_data_decode_shape_(const uint8_t *payload, const mipc_layout_shape_t *shape,
-                                   mipc_system_data_packet_t *out) {
+int mipc_system_data_decode_shape_(const uint8_t *payload, const mipc_layout_shape_t *shape, void *packet) {
+    mipc_system_data_packet_t *out = packet;
     size_t i;
-    assert(payload != NULL);
-    assert(shape != NULL);
-    assert(out != NULL);
     for (i = 0; i < shape->count; i++) {
         const uint8_t *d = payload + shape->pos[i] + MIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];

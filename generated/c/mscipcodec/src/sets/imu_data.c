@@ -810,12 +810,9 @@ size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_
  * each decoded as mscipc_imu_data_decode_packet decodes it; 0 when one does not (that packet then takes the
  * straight-line decoder, which gives it to other) */
 
-int mscipc_imu_data_decode_shape_(const uint8_t *payload, const mscipc_layout_shape_t *shape,
-                                  mscipc_imu_data_packet_t *out) {
+int mscipc_imu_data_decode_shape_(const uint8_t *payload, const mscipc_layout_shape_t *shape, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
     size_t i;
-    assert(payload != NULL);
-    assert(shape != NULL);
-    assert(out != NULL);
     for (i = 0; i < shape->count; i++) {
         const uint8_t *d = payload + shape->pos[i] + MSCIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];

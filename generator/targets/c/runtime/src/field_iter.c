@@ -35,12 +35,13 @@ void codec_layout_cache_init(codec_layout_cache_t *cache) {
 }
 
 void codec_layout_cache_record_(codec_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
-                                const codec_packet_index_t *index) {
+                                const codec_packet_index_t *index, codec_layout_decode_fn decode) {
     codec_layout_shape_t *shape;
     size_t pos = 0;
     size_t i;
     assert(cache != NULL);
     assert(index != NULL);
+    assert(decode != NULL);
     if (index->count == 0 || index->count > CODEC_LAYOUT_SHAPE_FIELDS || len > UINT8_MAX || payload == NULL) {
         return;
     }
@@ -69,6 +70,7 @@ void codec_layout_cache_record_(codec_layout_cache_t *cache, uint8_t set, const 
         return;
     }
     memcpy(shape->present, index->present, sizeof shape->present);
+    shape->decode = decode;
     shape->set = set;
     shape->length = (uint8_t)len;
     shape->count = (uint8_t)index->count;
