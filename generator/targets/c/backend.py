@@ -546,6 +546,10 @@ class _Protocol:
                 s["packet"]["shape_fn"] = self._claim(
                     f"{self.p}_{s['name']}_decode_shape_", f"set {s['name']}", (s["name"],)
                 )
+                bits = [0] * 8
+                for m in s["packet"]["members"]:
+                    bits[m["descriptor"] // 32] |= 1 << (m["descriptor"] % 32)
+                s["packet"]["member_bits"] = bits
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:

@@ -2513,50 +2513,89 @@ const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet
     return NULL;
 }
 
-/* The other of a cached decode's fallback: passes each entry on and counts them (a packet that
- * left one is not recorded). */
+/* The other of a cached decode's fallback: passes each entry on and notes the payload offsets of
+ * the fields (a trailing entry, or more fields than a shape holds, and the packet is not recorded). */
 typedef struct {
     mipc_field_entry_fn other;
     void *ctx;
-    size_t left;
-} counted_other_t;
+    size_t count;
+    int whole; /* every entry a field, at most MIPC_LAYOUT_SHAPE_FIELDS */
+    size_t pos[MIPC_LAYOUT_SHAPE_FIELDS];
+} noted_other_t;
 
-static void count_other(void *ctx, const mipc_field_entry_t *entry) {
-    counted_other_t *c = ctx;
-    c->left++;
+static void note_other(void *ctx, const mipc_field_entry_t *entry) {
+    noted_other_t *c = ctx;
+    if (entry->kind != MIPC_ENTRY_FIELD || c->count == MIPC_LAYOUT_SHAPE_FIELDS) {
+        c->whole = 0;
+    } else {
+        c->pos[c->count++] = entry->offset;
+    }
     if (c->other) {
         c->other(c->ctx, entry);
     }
 }
 
-/* The decoder of a set's shapes (NULL: none). */
-static mipc_layout_decode_fn shape_decoder(uint8_t set) {
+/* A set's packet decoder for a cached shape and its members (bit d % 32 of [d / 32]: descriptor d
+ * has a member in the set's packet struct); decode NULL: none. */
+typedef struct {
+    mipc_layout_decode_fn decode;
+    uint32_t members[8];
+} shape_set_t;
+
+static const shape_set_t *shape_set(uint8_t set) {
+    static const shape_set_t sensor = {mipc_sensor_decode_shape_,
+                                       {0x019717F0u, 0x00000000u, 0x00000001u, 0x00000000u, 0x00000000u,
+                                        0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t gnss_data = {mipc_gnss_data_decode_shape_,
+                                          {0x0000FFF8u, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
+                                           0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t filter_data = {mipc_filter_data_decode_shape_,
+                                            {0x13FEFFFEu, 0x00F30363u, 0x000303CFu, 0x00000000u, 0x00000000u,
+                                             0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t gnss_receiver_1 = {mipc_gnss_receiver_1_decode_shape_,
+                                                {0x00072BF8u, 0x00000005u, 0x00000000u, 0x0000001Eu,
+                                                 0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t gnss_receiver_2 = {mipc_gnss_receiver_2_decode_shape_,
+                                                {0x00072BF8u, 0x00000005u, 0x00000000u, 0x0000001Eu,
+                                                 0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t gnss_corrections = {mipc_gnss_corrections_decode_shape_,
+                                                 {0x00000000u, 0x00030000u, 0x00000000u, 0x00000000u,
+                                                  0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t gnss_external = {mipc_gnss_external_decode_shape_,
+                                              {0x00000928u, 0x00000001u, 0x00000000u, 0x00000000u,
+                                               0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t system_data = {mipc_system_data_decode_shape_,
+                                            {0x0000000Eu, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
+                                             0x00000000u, 0x01F90000u, 0x00000000u}};
+    static const shape_set_t shared = {mipc_shared_decode_shape_,
+                                       {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
+                                        0x00000000u, 0x01F90000u, 0x00000000u}};
     switch (set) {
     case 0x80:
-        return mipc_sensor_decode_shape_;
+        return &sensor;
     case 0x81:
-        return mipc_gnss_data_decode_shape_;
+        return &gnss_data;
     case 0x82:
-        return mipc_filter_data_decode_shape_;
+        return &filter_data;
     case 0x91:
-        return mipc_gnss_receiver_1_decode_shape_;
+        return &gnss_receiver_1;
     case 0x92:
-        return mipc_gnss_receiver_2_decode_shape_;
+        return &gnss_receiver_2;
     case 0x93:
-        return mipc_gnss_corrections_decode_shape_;
+        return &gnss_corrections;
     case 0x94:
-        return mipc_gnss_external_decode_shape_;
+        return &gnss_external;
     case 0xA0:
-        return mipc_system_data_decode_shape_;
+        return &system_data;
     case 0xFF:
-        return mipc_shared_decode_shape_;
+        return &shared;
     default:
         return NULL;
     }
 }
 
 /* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
- * decoder (and its shape recorded when every entry was decoded into a member). */
+ * decoder (and its shape recorded). */
 static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cache_t *cache,
                                                                 const uint8_t *packet, mipc_packet_t *out,
                                                                 mipc_field_entry_fn other, void *ctx) {
@@ -2565,19 +2604,24 @@ static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cach
     const size_t len = mipc_packet_payload_length(packet);
     const mipc_layout_shape_t *shape = mipc_layout_cache_find_(cache, set, payload, len);
     const mipc_packet_index_t *index;
-    counted_other_t counted;
+    noted_other_t noted;
     if (shape != NULL && shape->decode(payload, shape, &out->u)) {
         out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mipc_layout_shape_others_(shape, payload, other, ctx);
+        }
         return (const mipc_packet_index_t *)(const void *)&out->u;
     }
-    counted.other = other;
-    counted.ctx = ctx;
-    counted.left = 0;
-    index = mipc_decode_packet(packet, out, count_other, &counted);
-    if (index != NULL && counted.left == 0 && shape == NULL) {
-        const mipc_layout_decode_fn decode = shape_decoder(set);
-        if (decode != NULL) {
-            mipc_layout_cache_record_(cache, set, payload, len, index, decode);
+    noted.other = other;
+    noted.ctx = ctx;
+    noted.count = 0;
+    noted.whole = 1;
+    index = mipc_decode_packet(packet, out, note_other, &noted);
+    if (index != NULL && noted.whole && shape == NULL) {
+        const shape_set_t *known = shape_set(set);
+        if (known != NULL) {
+            mipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, known->members,
+                                      known->decode);
         }
     }
     return index;
@@ -2597,6 +2641,9 @@ const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache,
     if (mipc_layout_shape_matches_(shape, set, payload, mipc_packet_payload_length(packet)) &&
         shape->decode(payload, shape, &out->u)) {
         out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mipc_layout_shape_others_(shape, payload, other, ctx);
+        }
         return (const mipc_packet_index_t *)(const void *)&out->u;
     }
     return decode_uncached(cache, packet, out, other, ctx);

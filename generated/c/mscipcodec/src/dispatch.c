@@ -569,34 +569,49 @@ const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_
     return NULL;
 }
 
-/* The other of a cached decode's fallback: passes each entry on and counts them (a packet that
- * left one is not recorded). */
+/* The other of a cached decode's fallback: passes each entry on and notes the payload offsets of
+ * the fields (a trailing entry, or more fields than a shape holds, and the packet is not recorded). */
 typedef struct {
     mscipc_field_entry_fn other;
     void *ctx;
-    size_t left;
-} counted_other_t;
+    size_t count;
+    int whole; /* every entry a field, at most MSCIPC_LAYOUT_SHAPE_FIELDS */
+    size_t pos[MSCIPC_LAYOUT_SHAPE_FIELDS];
+} noted_other_t;
 
-static void count_other(void *ctx, const mscipc_field_entry_t *entry) {
-    counted_other_t *c = ctx;
-    c->left++;
+static void note_other(void *ctx, const mscipc_field_entry_t *entry) {
+    noted_other_t *c = ctx;
+    if (entry->kind != MSCIPC_ENTRY_FIELD || c->count == MSCIPC_LAYOUT_SHAPE_FIELDS) {
+        c->whole = 0;
+    } else {
+        c->pos[c->count++] = entry->offset;
+    }
     if (c->other) {
         c->other(c->ctx, entry);
     }
 }
 
-/* The decoder of a set's shapes (NULL: none). */
-static mscipc_layout_decode_fn shape_decoder(uint8_t set) {
+/* A set's packet decoder for a cached shape and its members (bit d % 32 of [d / 32]: descriptor d
+ * has a member in the set's packet struct); decode NULL: none. */
+typedef struct {
+    mscipc_layout_decode_fn decode;
+    uint32_t members[8];
+} shape_set_t;
+
+static const shape_set_t *shape_set(uint8_t set) {
+    static const shape_set_t imu_data = {mscipc_imu_data_decode_shape_,
+                                         {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u, 0x000003FEu,
+                                          0x00000000u, 0x00000000u, 0x00000000u}};
     switch (set) {
     case 0xA2:
-        return mscipc_imu_data_decode_shape_;
+        return &imu_data;
     default:
         return NULL;
     }
 }
 
 /* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
- * decoder (and its shape recorded when every entry was decoded into a member). */
+ * decoder (and its shape recorded). */
 static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layout_cache_t *cache,
                                                                     const uint8_t *packet,
                                                                     mscipc_packet_t *out,
@@ -606,19 +621,24 @@ static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layou
     const size_t len = mscipc_packet_payload_length(packet);
     const mscipc_layout_shape_t *shape = mscipc_layout_cache_find_(cache, set, payload, len);
     const mscipc_packet_index_t *index;
-    counted_other_t counted;
+    noted_other_t noted;
     if (shape != NULL && shape->decode(payload, shape, &out->u)) {
         out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mscipc_layout_shape_others_(shape, payload, other, ctx);
+        }
         return (const mscipc_packet_index_t *)(const void *)&out->u;
     }
-    counted.other = other;
-    counted.ctx = ctx;
-    counted.left = 0;
-    index = mscipc_decode_packet(packet, out, count_other, &counted);
-    if (index != NULL && counted.left == 0 && shape == NULL) {
-        const mscipc_layout_decode_fn decode = shape_decoder(set);
-        if (decode != NULL) {
-            mscipc_layout_cache_record_(cache, set, payload, len, index, decode);
+    noted.other = other;
+    noted.ctx = ctx;
+    noted.count = 0;
+    noted.whole = 1;
+    index = mscipc_decode_packet(packet, out, note_other, &noted);
+    if (index != NULL && noted.whole && shape == NULL) {
+        const shape_set_t *known = shape_set(set);
+        if (known != NULL) {
+            mscipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count,
+                                        known->members, known->decode);
         }
     }
     return index;
@@ -638,6 +658,9 @@ const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *
     if (mscipc_layout_shape_matches_(shape, set, payload, mscipc_packet_payload_length(packet)) &&
         shape->decode(payload, shape, &out->u)) {
         out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mscipc_layout_shape_others_(shape, payload, other, ctx);
+        }
         return (const mscipc_packet_index_t *)(const void *)&out->u;
     }
     return decode_uncached(cache, packet, out, other, ctx);

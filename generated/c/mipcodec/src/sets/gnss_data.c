@@ -1663,8 +1663,8 @@ size_t mipc_gnss_data_decode_packet(const uint8_t *payload, size_t len, mipc_gns
 int mipc_gnss_data_decode_shape_(const uint8_t *payload, const mipc_layout_shape_t *shape, void *packet) {
     mipc_gnss_data_packet_t *out = packet;
     size_t i;
-    for (i = 0; i < shape->count; i++) {
-        const uint8_t *d = payload + shape->pos[i] + MIPC_FIELD_HEADER_SIZE;
+    for (i = 0; i < shape->members; i++) {
+        const uint8_t *d = payload + shape->member_pos[i] + MIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];
         int ok = 0;
         (void)d;
@@ -1914,6 +1914,6 @@ int mipc_gnss_data_decode_shape_(const uint8_t *payload, const mipc_layout_shape
         out->index.fields[i] = shape->fields[i];
     }
     memcpy(out->index.present, shape->present, sizeof out->index.present);
-    out->index.count = shape->count;
+    out->index.count = shape->members;
     return 1;
 }

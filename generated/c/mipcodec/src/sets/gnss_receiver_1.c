@@ -3543,8 +3543,8 @@ int mipc_gnss_receiver_1_decode_shape_(const uint8_t *payload, const mipc_layout
                                        void *packet) {
     mipc_gnss_receiver_1_packet_t *out = packet;
     size_t i;
-    for (i = 0; i < shape->count; i++) {
-        const uint8_t *d = payload + shape->pos[i] + MIPC_FIELD_HEADER_SIZE;
+    for (i = 0; i < shape->members; i++) {
+        const uint8_t *d = payload + shape->member_pos[i] + MIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];
         int ok = 0;
         (void)d;
@@ -3994,6 +3994,6 @@ int mipc_gnss_receiver_1_decode_shape_(const uint8_t *payload, const mipc_layout
         out->index.fields[i] = shape->fields[i];
     }
     memcpy(out->index.present, shape->present, sizeof out->index.present);
-    out->index.count = shape->count;
+    out->index.count = shape->members;
     return 1;
 }

@@ -813,8 +813,8 @@ size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_
 int mscipc_imu_data_decode_shape_(const uint8_t *payload, const mscipc_layout_shape_t *shape, void *packet) {
     mscipc_imu_data_packet_t *out = packet;
     size_t i;
-    for (i = 0; i < shape->count; i++) {
-        const uint8_t *d = payload + shape->pos[i] + MSCIPC_FIELD_HEADER_SIZE;
+    for (i = 0; i < shape->members; i++) {
+        const uint8_t *d = payload + shape->member_pos[i] + MSCIPC_FIELD_HEADER_SIZE;
         const size_t length = shape->data_len[i];
         int ok = 0;
         (void)d;
@@ -924,6 +924,6 @@ int mscipc_imu_data_decode_shape_(const uint8_t *payload, const mscipc_layout_sh
         out->index.fields[i] = shape->fields[i];
     }
     memcpy(out->index.present, shape->present, sizeof out->index.present);
-    out->index.count = shape->count;
+    out->index.count = shape->members;
     return 1;
 }

@@ -156,19 +156,24 @@ typedef int (*codec_layout_decode_fn)(const uint8_t *payload, const codec_layout
                                       void *packet);
 
 /** A packet shape: (set, payload length, every field header at its offset), recorded from a
- * packet whose fields the straight-line decoder all decoded into members (nothing to `other`, no
- * trailing bytes), with the index it made. Private: read by the generated <set>_decode_shape_. */
+ * packet the straight-line decoder decoded without trailing bytes, with the index it made and the
+ * fields it passed to `other` because of their place in the shape (a descriptor without a member,
+ * a repeated descriptor). Private: read by the generated <set>_decode_shape_. */
 struct codec_layout_shape {
     codec_layout_decode_fn decode;                           /* the set's <set>_decode_shape_ */
     uint8_t used;                                            /* 0: an empty slot */
     uint8_t set;                                             /* descriptor set */
     uint8_t length;                                          /* payload length */
-    uint8_t count;                                           /* fields */
+    uint8_t count;                                           /* fields (headers compared) */
+    uint8_t members;                                         /* of them decoded into members */
+    uint8_t others;                                          /* of them passed to other */
     uint8_t pos[CODEC_LAYOUT_SHAPE_FIELDS];                  /* payload offset of each field header */
-    uint8_t data_len[CODEC_LAYOUT_SHAPE_FIELDS];             /* its data length */
     uint16_t head[CODEC_LAYOUT_SHAPE_FIELDS];                /* its two header bytes, first | second << 8 */
+    uint8_t member_pos[CODEC_LAYOUT_SHAPE_FIELDS];           /* payload offset of each decoded field */
+    uint8_t data_len[CODEC_LAYOUT_SHAPE_FIELDS];             /* its data length */
+    codec_decoded_field_t fields[CODEC_LAYOUT_SHAPE_FIELDS]; /* its index entry */
+    uint8_t other_pos[CODEC_LAYOUT_SHAPE_FIELDS];            /* payload offset of each field passed on */
     uint32_t present[8];                                     /* the index's present bits */
-    codec_decoded_field_t fields[CODEC_LAYOUT_SHAPE_FIELDS]; /* the index's entries */
 };
 
 /** The layout cache of codec_decode_packet_cached: fixed arrays (no allocation), one per stream
@@ -215,10 +220,18 @@ static inline const codec_layout_shape_t *codec_layout_cache_find_(codec_layout_
 }
 
 /* Private (codec_decode_packet_cached): records the shape of a packet (set, payload of len bytes)
- * that the straight-line decoder decoded whole into index (every entry a field in its member),
- * decoded by decode when it comes again; does nothing when it does not fit a shape. */
+ * that the straight-line decoder decoded into index, passing the fields at payload offsets
+ * other_pos[0..others) to other (no trailing bytes); members: a bit per descriptor the set's packet
+ * struct has a member for (bit d % 32 of members[d / 32]); decode: the set's <set>_decode_shape_.
+ * Does nothing when the packet does not fit a shape, or when a field passed on could be decoded
+ * into a member by another packet of the same shape (its data did not decode). */
 void codec_layout_cache_record_(codec_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
-                                const codec_packet_index_t *index, codec_layout_decode_fn decode);
+                                const codec_packet_index_t *index, const size_t *other_pos, size_t others,
+                                const uint32_t *members, codec_layout_decode_fn decode);
+
+/* Private (codec_decode_packet_cached): passes the fields a shape passes on to fn, in order. */
+void codec_layout_shape_others_(const codec_layout_shape_t *shape, const uint8_t *payload,
+                                codec_field_entry_fn fn, void *ctx);
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t codec_trailing_format(const codec_field_entry_t *entry, char *buf, size_t cap);

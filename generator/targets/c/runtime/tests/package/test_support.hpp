@@ -246,6 +246,23 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
         if (!cached.empty()) {
             return "set " + std::to_string(set) + ": layout cache: " + cached;
         }
+        // The same shape with other data (every data byte 0xFF: a bool, enum or count that no
+        // longer decodes): the cache, which now holds the shape, must give what the straight-line
+        // decoder gives.
+        std::vector<uint8_t> mutant = pk;
+        codec_field_iter_init(&it, set, codec_packet_payload(pk.data()),
+                              codec_packet_payload_length(pk.data()));
+        while (codec_field_iter_next(&it, &e)) {
+            if (e.kind == CODEC_ENTRY_FIELD && e.length > 0) {
+                std::memset(&mutant[static_cast<size_t>(e.data - pk.data())], 0xFF, e.length);
+            }
+        }
+        StraightLine ms;
+        const codec_packet_index_t *mi = codec_decode_packet(mutant.data(), &decoded, note_other, &ms);
+        const std::string other_data = cached_mismatch(&cache, mutant, mi, decoded, ms);
+        if (!other_data.empty()) {
+            return "set " + std::to_string(set) + ": layout cache, the shape with other data: " + other_data;
+        }
     }
     return "";
 }
