@@ -538,18 +538,15 @@ class _Protocol:
 
     def _add_layout_cache(self) -> None:
         """The layout cache (issue 38; the cache itself is the runtime's, field_iter.h): each data
-        set's `packet.shape_fn`, which decodes a packet of a cached shape into the set's packet
-        struct (set.c.j2), and the set-dispatching <p>_decode_packet_cached (dispatch.c.j2)."""
+        set's `packet.shape_members`, the table of its packet struct's members (descriptor, offset,
+        loader: set.c.j2) that a cached shape decodes with, and the set-dispatching
+        <p>_decode_packet_cached (dispatch.c.j2)."""
         self._claim(f"{self.p}_decode_packet_cached", "the layout-cached decoder of any data set")
         for s in self.sets:
             if s["packet"] is not None:
-                s["packet"]["shape_fn"] = self._claim(
-                    f"{self.p}_{s['name']}_decode_shape_", f"set {s['name']}", (s["name"],)
+                s["packet"]["shape_members"] = self._claim(
+                    f"{self.p}_{s['name']}_layout_members_", f"set {s['name']}", (s["name"],)
                 )
-                bits = [0] * 8
-                for m in s["packet"]["members"]:
-                    bits[m["descriptor"] // 32] |= 1 << (m["descriptor"] % 32)
-                s["packet"]["member_bits"] = bits
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:

@@ -2535,61 +2535,38 @@ static void note_other(void *ctx, const mipc_field_entry_t *entry) {
     }
 }
 
-/* A set's packet decoder for a cached shape and its members (bit d % 32 of [d / 32]: descriptor d
- * has a member in the set's packet struct); decode NULL: none. */
-typedef struct {
-    mipc_layout_decode_fn decode;
-    uint32_t members[8];
-} shape_set_t;
-
-static const shape_set_t *shape_set(uint8_t set) {
-    static const shape_set_t sensor = {mipc_sensor_decode_shape_,
-                                       {0x019717F0u, 0x00000000u, 0x00000001u, 0x00000000u, 0x00000000u,
-                                        0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t gnss_data = {mipc_gnss_data_decode_shape_,
-                                          {0x0000FFF8u, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
-                                           0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t filter_data = {mipc_filter_data_decode_shape_,
-                                            {0x13FEFFFEu, 0x00F30363u, 0x000303CFu, 0x00000000u, 0x00000000u,
-                                             0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t gnss_receiver_1 = {mipc_gnss_receiver_1_decode_shape_,
-                                                {0x00072BF8u, 0x00000005u, 0x00000000u, 0x0000001Eu,
-                                                 0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t gnss_receiver_2 = {mipc_gnss_receiver_2_decode_shape_,
-                                                {0x00072BF8u, 0x00000005u, 0x00000000u, 0x0000001Eu,
-                                                 0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t gnss_corrections = {mipc_gnss_corrections_decode_shape_,
-                                                 {0x00000000u, 0x00030000u, 0x00000000u, 0x00000000u,
-                                                  0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t gnss_external = {mipc_gnss_external_decode_shape_,
-                                              {0x00000928u, 0x00000001u, 0x00000000u, 0x00000000u,
-                                               0x00000000u, 0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t system_data = {mipc_system_data_decode_shape_,
-                                            {0x0000000Eu, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
-                                             0x00000000u, 0x01F90000u, 0x00000000u}};
-    static const shape_set_t shared = {mipc_shared_decode_shape_,
-                                       {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u,
-                                        0x00000000u, 0x01F90000u, 0x00000000u}};
+/* The members of a set's packet struct (mipc_layout_cache_record_); count 0: none. */
+static const mipc_layout_member_t *shape_members(uint8_t set, size_t *count) {
     switch (set) {
     case 0x80:
-        return &sensor;
+        *count = 22;
+        return mipc_sensor_layout_members_;
     case 0x81:
-        return &gnss_data;
+        *count = 20;
+        return mipc_gnss_data_layout_members_;
     case 0x82:
-        return &filter_data;
+        *count = 54;
+        return mipc_filter_data_layout_members_;
     case 0x91:
-        return &gnss_receiver_1;
+        *count = 25;
+        return mipc_gnss_receiver_1_layout_members_;
     case 0x92:
-        return &gnss_receiver_2;
+        *count = 25;
+        return mipc_gnss_receiver_2_layout_members_;
     case 0x93:
-        return &gnss_corrections;
+        *count = 9;
+        return mipc_gnss_corrections_layout_members_;
     case 0x94:
-        return &gnss_external;
+        *count = 12;
+        return mipc_gnss_external_layout_members_;
     case 0xA0:
-        return &system_data;
+        *count = 10;
+        return mipc_system_data_layout_members_;
     case 0xFF:
-        return &shared;
+        *count = 7;
+        return mipc_shared_layout_members_;
     default:
+        *count = 0;
         return NULL;
     }
 }
@@ -2605,7 +2582,7 @@ static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cach
     const mipc_layout_shape_t *shape = mipc_layout_cache_find_(cache, set, payload, len);
     const mipc_packet_index_t *index;
     noted_other_t noted;
-    if (shape != NULL && shape->decode(payload, shape, &out->u)) {
+    if (shape != NULL && mipc_layout_shape_decode_(shape, payload, (mipc_packet_index_t *)(void *)&out->u)) {
         out->set = set;
         if (shape->others != 0 && other != NULL) {
             mipc_layout_shape_others_(shape, payload, other, ctx);
@@ -2618,10 +2595,11 @@ static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cach
     noted.whole = 1;
     index = mipc_decode_packet(packet, out, note_other, &noted);
     if (index != NULL && noted.whole && shape == NULL) {
-        const shape_set_t *known = shape_set(set);
-        if (known != NULL) {
-            mipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, known->members,
-                                      known->decode);
+        size_t count;
+        const mipc_layout_member_t *members = shape_members(set, &count);
+        if (count != 0) {
+            mipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, members,
+                                      count);
         }
     }
     return index;
@@ -2639,7 +2617,7 @@ const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache,
     assert(out != NULL);
     shape = &cache->shapes[cache->last % MIPC_LAYOUT_CACHE_SHAPES];
     if (mipc_layout_shape_matches_(shape, set, payload, mipc_packet_payload_length(packet)) &&
-        shape->decode(payload, shape, &out->u)) {
+        mipc_layout_shape_decode_(shape, payload, (mipc_packet_index_t *)(void *)&out->u)) {
         out->set = set;
         if (shape->others != 0 && other != NULL) {
             mipc_layout_shape_others_(shape, payload, other, ctx);

@@ -36,18 +36,18 @@ void mipc_layout_cache_init(mipc_layout_cache_t *cache) {
 
 void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
                                const mipc_packet_index_t *index, const size_t *other_pos, size_t others,
-                               const uint32_t *members, mipc_layout_decode_fn decode) {
+                               const mipc_layout_member_t *members, size_t member_count) {
     mipc_layout_shape_t *shape;
     uint32_t decoded[8] = {0};
     size_t pos = 0;
     size_t n = 0; /* fields */
     size_t m = 0; /* index entries */
     size_t o = 0; /* fields passed on */
+    size_t k;
     assert(cache != NULL);
     assert(index != NULL);
     assert(other_pos != NULL || others == 0);
-    assert(members != NULL);
-    assert(decode != NULL);
+    assert(members != NULL || member_count == 0);
     if (index->count > MIPC_LAYOUT_SHAPE_FIELDS || others > MIPC_LAYOUT_SHAPE_FIELDS || len > UINT8_MAX ||
         payload == NULL || index->count + others == 0) {
         return;
@@ -69,18 +69,21 @@ void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const ui
         }
         shape->pos[n] = (uint8_t)pos;
         shape->head[n] = (uint16_t)(head[0] | (unsigned)head[1] << 8);
+        for (k = 0; k < member_count && members[k].descriptor != descriptor; k++) {
+        }
         if (o < others && other_pos[o] == pos) {
             /* passed on: only when no packet of this shape could have it decoded (no member, or a
              * repeated descriptor: decoded before in this packet) */
-            if ((members[descriptor / 32u] >> (descriptor % 32u) & 1u) != 0 &&
-                (decoded[descriptor / 32u] >> (descriptor % 32u) & 1u) == 0) {
+            if (k < member_count && (decoded[descriptor / 32u] >> (descriptor % 32u) & 1u) == 0) {
                 return;
             }
             shape->other_pos[o++] = (uint8_t)pos;
         } else {
-            if (m == index->count || index->fields[m].descriptor != descriptor) {
+            if (m == index->count || index->fields[m].descriptor != descriptor || k == member_count ||
+                index->fields[m].offset != members[k].offset) {
                 return; /* not the packet the index was made from */
             }
+            shape->load[m] = members[k].load;
             decoded[descriptor / 32u] |= (uint32_t)1u << (descriptor % 32u);
             shape->member_pos[m] = (uint8_t)pos;
             shape->data_len[m] = (uint8_t)data_len;
@@ -94,7 +97,6 @@ void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const ui
         return;
     }
     memcpy(shape->present, index->present, sizeof shape->present);
-    shape->decode = decode;
     shape->set = set;
     shape->length = (uint8_t)len;
     shape->count = (uint8_t)n;

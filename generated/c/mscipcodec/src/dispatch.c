@@ -591,21 +591,14 @@ static void note_other(void *ctx, const mscipc_field_entry_t *entry) {
     }
 }
 
-/* A set's packet decoder for a cached shape and its members (bit d % 32 of [d / 32]: descriptor d
- * has a member in the set's packet struct); decode NULL: none. */
-typedef struct {
-    mscipc_layout_decode_fn decode;
-    uint32_t members[8];
-} shape_set_t;
-
-static const shape_set_t *shape_set(uint8_t set) {
-    static const shape_set_t imu_data = {mscipc_imu_data_decode_shape_,
-                                         {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u, 0x000003FEu,
-                                          0x00000000u, 0x00000000u, 0x00000000u}};
+/* The members of a set's packet struct (mscipc_layout_cache_record_); count 0: none. */
+static const mscipc_layout_member_t *shape_members(uint8_t set, size_t *count) {
     switch (set) {
     case 0xA2:
-        return &imu_data;
+        *count = 9;
+        return mscipc_imu_data_layout_members_;
     default:
+        *count = 0;
         return NULL;
     }
 }
@@ -622,7 +615,8 @@ static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layou
     const mscipc_layout_shape_t *shape = mscipc_layout_cache_find_(cache, set, payload, len);
     const mscipc_packet_index_t *index;
     noted_other_t noted;
-    if (shape != NULL && shape->decode(payload, shape, &out->u)) {
+    if (shape != NULL &&
+        mscipc_layout_shape_decode_(shape, payload, (mscipc_packet_index_t *)(void *)&out->u)) {
         out->set = set;
         if (shape->others != 0 && other != NULL) {
             mscipc_layout_shape_others_(shape, payload, other, ctx);
@@ -635,10 +629,11 @@ static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layou
     noted.whole = 1;
     index = mscipc_decode_packet(packet, out, note_other, &noted);
     if (index != NULL && noted.whole && shape == NULL) {
-        const shape_set_t *known = shape_set(set);
-        if (known != NULL) {
-            mscipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count,
-                                        known->members, known->decode);
+        size_t count;
+        const mscipc_layout_member_t *members = shape_members(set, &count);
+        if (count != 0) {
+            mscipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, members,
+                                        count);
         }
     }
     return index;
@@ -656,7 +651,7 @@ const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *
     assert(out != NULL);
     shape = &cache->shapes[cache->last % MSCIPC_LAYOUT_CACHE_SHAPES];
     if (mscipc_layout_shape_matches_(shape, set, payload, mscipc_packet_payload_length(packet)) &&
-        shape->decode(payload, shape, &out->u)) {
+        mscipc_layout_shape_decode_(shape, payload, (mscipc_packet_index_t *)(void *)&out->u)) {
         out->set = set;
         if (shape->others != 0 && other != NULL) {
             mscipc_layout_shape_others_(shape, payload, other, ctx);

@@ -106,11 +106,9 @@ typedef struct {
 size_t mipc_system_data_decode_packet(const uint8_t *payload, size_t len, mipc_system_data_packet_t *out,
                                       mipc_field_entry_fn other, void *ctx);
 
-/* Private (mipc_decode_packet_cached, a mipc_layout_decode_fn): decodes the payload of a packet
- * of this set whose shape is the cached one (its set, length and field headers compared) into the
- * mipc_system_data_packet_t at packet, as mipc_system_data_decode_packet would; 0 when a field does not
- * decode (the straight-line decoder then takes the packet). */
-int mipc_system_data_decode_shape_(const uint8_t *payload, const mipc_layout_shape_t *shape, void *packet);
+/* Private (mipc_decode_packet_cached): the members of mipc_system_data_packet_t: descriptor, offset,
+ * loader. */
+extern const mipc_layout_member_t mipc_system_data_layout_members_[10];
 
 #ifdef __cplusplus
 }

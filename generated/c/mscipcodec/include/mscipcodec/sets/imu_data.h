@@ -216,11 +216,9 @@ typedef struct {
 size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_imu_data_packet_t *out,
                                      mscipc_field_entry_fn other, void *ctx);
 
-/* Private (mscipc_decode_packet_cached, a mscipc_layout_decode_fn): decodes the payload of a packet
- * of this set whose shape is the cached one (its set, length and field headers compared) into the
- * mscipc_imu_data_packet_t at packet, as mscipc_imu_data_decode_packet would; 0 when a field does not decode
- * (the straight-line decoder then takes the packet). */
-int mscipc_imu_data_decode_shape_(const uint8_t *payload, const mscipc_layout_shape_t *shape, void *packet);
+/* Private (mscipc_decode_packet_cached): the members of mscipc_imu_data_packet_t: descriptor, offset,
+ * loader. */
+extern const mscipc_layout_member_t mscipc_imu_data_layout_members_[9];
 
 #ifdef __cplusplus
 }
