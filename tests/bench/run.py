@@ -18,7 +18,7 @@
      figures over that median (±%), and its fraction of bulk the median over the processes of
      bulk's time over the row's time in the same process (the same bytes: bytes/s over bulk's
      bytes/s). Columns: language, stream, mode, Mpkt/s, GB/s, ±%, x bulk (and its spread),
-     decode/frame (decode rows: the same language's frame time over decode time, per process),
+     decode/frame (decode and decode-uncached rows: the same language's frame time over decode time, per process),
      the session column (session-ingest: its rate as a fraction of the same language's decode;
      session-roundtrip, stream loopback-tcp, packets = round trips: round trips per second and
      microseconds per round trip) and, with --instructions, instructions per packet. The rows go
@@ -529,6 +529,7 @@ MODE_RANK = {
     "bulk": 0,
     "frame": 1,
     "decode": 2,
+    "decode-uncached": 2.5,
     "session-ingest": 3,
     "copy-per-packet": 4,
     "csv": 5,
@@ -603,7 +604,7 @@ def aggregate(rows: list[dict[str, str]]) -> list[dict]:
             s = spread_pct(fractions)
             if s is not None:
                 rec["bulk_fraction_spread_pct"] = s
-        if mode == "decode":
+        if mode in ("decode", "decode-uncached"):
             over = ratios((lang, stream, "frame"), rs)
             if over:
                 rec["decode_over_frame"] = statistics.median(over)
@@ -703,6 +704,8 @@ def session_note(r: dict, seconds_of: dict[tuple[str, str, str], float]) -> str:
 COUNT_LANGS = ("c", "cpp", "rust")
 COUNT_STREAMS = ("accel_gyro", "mixed")
 COUNT_MODES = ("frame", "decode")
+# Modes counted for one language only: C's decode without its layout cache (issue 38).
+COUNT_EXTRA_MODES = {"c": ("decode-uncached",)}
 COUNT_SCALE = 0.01
 
 
@@ -747,7 +750,7 @@ def instructions(progs: dict[str, list[str] | str], out: Path, streams_: tuple[s
         for stream in streams_:
             side = json.loads((small / f"{stream}.json").read_text())
             fixed = count_instructions(counting_command(lang, prog, small, stream, "none"))
-            for mode in COUNT_MODES:
+            for mode in COUNT_MODES + COUNT_EXTRA_MODES.get(lang, ()):
                 total = count_instructions(counting_command(lang, prog, small, stream, mode))
                 ipp = per_packet(total, fixed, side["packets"])
                 log(

@@ -225,6 +225,7 @@ class _Protocol:
         self.data_kind = next((k for k in self.set_kinds if k["name"] == "data"), None)
         self._add_lookup_tables()
         self._add_packet_decoders()
+        self._add_layout_cache()
         # Path elements are names; an index rides on its array's element (IR value_paths).
         self.path_depth = proto["value_paths"]["names"]
         longest = max([len(n) for n in self._all_param_names()] + [8])
@@ -534,6 +535,18 @@ class _Protocol:
                 "members": members,
                 "includes": sorted(includes),
             }
+
+    def _add_layout_cache(self) -> None:
+        """The layout cache (issue 38; the cache itself is the runtime's, field_iter.h): each data
+        set's `packet.shape_members`, the table of its packet struct's members (descriptor, offset,
+        loader: set.c.j2) that a cached shape decodes with, and the set-dispatching
+        <p>_decode_packet_cached (dispatch.c.j2)."""
+        self._claim(f"{self.p}_decode_packet_cached", "the layout-cached decoder of any data set")
+        for s in self.sets:
+            if s["packet"] is not None:
+                s["packet"]["shape_members"] = self._claim(
+                    f"{self.p}_{s['name']}_layout_members_", f"set {s['name']}", (s["name"],)
+                )
 
     def _all_ir_layouts(self):
         for r in self.proto["reserved_fields"]:

@@ -8,9 +8,11 @@
  *                before timing): every byte read and written once, the limit the parsers' rows
  *                are divided by (tests/bench/run.py)
  *   mode=frame   mipc_parser_feed + flush: every packet reported, garbage skipped
- *   mode=decode  the same, plus the typed decode of every field: mipc_decode_packet, the
+ *   mode=decode  the same, plus the typed decode of every field: mipc_decode_packet_cached, the
+ *                layout cache (one per pass, as a program has one per stream) in front of the
  *                straight-line decoder of the packet's set (issue 38; a field it leaves goes to
  *                mipc_decode_field)
+ *   mode=decode-uncached  the same without the cache: mipc_decode_packet for every packet
  *   mode=copy-per-packet  diagnostic only: memchr(sync byte) + memcpy of each packet into a
  *                buffer (trusts every 75 65 pair and length byte, so it does not do the parsers'
  *                work on the garbage streams; never the base of a ratio)
@@ -58,8 +60,9 @@ typedef struct {
     uint64_t packets;
     uint64_t fields;
     uint64_t errors;
-    uint64_t check; /* consumes the decoded values */
-    uint8_t set;    /* decode: the set of the packet being decoded */
+    uint64_t check;             /* consumes the decoded values */
+    uint8_t set;                /* decode: the set of the packet being decoded */
+    mipc_layout_cache_t *cache; /* decode: the layout cache (NULL: decode-uncached) */
 } counts_t;
 
 static double now(void) {
@@ -179,7 +182,8 @@ static void on_decode(void *ctx, const mipc_event_t *ev) {
     }
     c->packets++;
     c->set = mipc_packet_set(ev->packet);
-    index = mipc_decode_packet(ev->packet, &packet, on_other, c);
+    index = c->cache ? mipc_decode_packet_cached(c->cache, ev->packet, &packet, on_other, c)
+                     : mipc_decode_packet(ev->packet, &packet, on_other, c);
     if (index == NULL) {
         return;
     }
@@ -327,11 +331,24 @@ static int roundtrip(int count, double *seconds, uint64_t *bytes) {
     return ok ? 0 : -1;
 }
 
-typedef enum { MODE_BULK, MODE_FRAME, MODE_DECODE, MODE_COPY, MODE_SESSION, MODE_COUNT } mode_t_;
+typedef enum {
+    MODE_BULK,
+    MODE_FRAME,
+    MODE_DECODE,
+    MODE_COPY,
+    MODE_SESSION,
+    MODE_UNCACHED,
+    MODE_COUNT
+} mode_t_;
 
 static void run_pass(const stream_t *s, uint8_t *into, mode_t_ mode, counts_t *c) {
+    static mipc_layout_cache_t cache;
     mipc_parser_t parser;
     memset(c, 0, sizeof *c);
+    if (mode == MODE_DECODE || mode == MODE_SESSION) {
+        mipc_layout_cache_init(&cache);
+        c->cache = &cache;
+    }
     if (mode == MODE_BULK) {
         bulk_pass(s, into, c);
         return;
@@ -350,7 +367,8 @@ static void run_pass(const stream_t *s, uint8_t *into, mode_t_ mode, counts_t *c
 }
 
 int main(int argc, char **argv) {
-    static const char *const mode_names[] = {"bulk", "frame", "decode", "copy-per-packet", "session-ingest"};
+    static const char *const mode_names[] = {"bulk",           "frame",          "decode", "copy-per-packet",
+                                             "session-ingest", "decode-uncached"};
     const char *dir = NULL;
     int passes = 5;
     const char *only = NULL;
@@ -373,8 +391,10 @@ int main(int argc, char **argv) {
         }
     }
     if (!dir || passes < 1) {
-        fprintf(stderr, "usage: bench DIR [--passes N] [--stream NAME] "
-                        "[--mode bulk|frame|decode|copy-per-packet|session-ingest|session-roundtrip|none]\n");
+        fprintf(stderr,
+                "usage: bench DIR [--passes N] [--stream NAME] "
+                "[--mode bulk|frame|decode|decode-uncached|copy-per-packet|session-ingest|session-roundtrip|"
+                "none]\n");
         return 2;
     }
     for (si = 0; si < sizeof k_streams / sizeof k_streams[0]; si++) {
@@ -415,7 +435,8 @@ int main(int argc, char **argv) {
                         mode_names[m], (unsigned long long)c.packets, (unsigned long long)s.packets);
                 failed = 1;
             }
-            if ((m == MODE_DECODE || m == MODE_SESSION) && (c.fields != s.fields || c.errors != 0)) {
+            if ((m == MODE_DECODE || m == MODE_SESSION || m == MODE_UNCACHED) &&
+                (c.fields != s.fields || c.errors != 0)) {
                 fprintf(stderr, "bench: %s %s: %llu fields (%llu errors), the sidecar says %llu\n",
                         k_streams[si], mode_names[m], (unsigned long long)c.fields,
                         (unsigned long long)c.errors, (unsigned long long)s.fields);

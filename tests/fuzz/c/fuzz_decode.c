@@ -22,13 +22,14 @@
 typedef struct {
     const uint8_t *stream;
     size_t size;
-    uint64_t end;    /* where the next event must start */
-    int last_skip;   /* the previous event was a skip run */
+    uint64_t end;  /* where the next event must start */
+    int last_skip; /* the previous event was a skip run */
     size_t packets;
     FZ(device_t) device;
 } fz_lean_t;
 
-static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len, FZ(device_t) device) {
+static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                       FZ(device_t) device) {
     FZ(field_value_t) value;
     FZ(decode_error_t) err;
     uint8_t buf[MAX_PAYLOAD];
@@ -39,8 +40,8 @@ static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, siz
     if (st == FZU(OK)) {
         st = FZ(encode_field)(&value, buf, len, &n);
         FZ_CHECK(st == FZU(OK) && n == len && memcmp(buf, data, len) == 0,
-                 "set %u descriptor %u: re-encode gives status %d, %zu bytes for data %s", set, descriptor, (int)st,
-                 n, fz_hex(data, len));
+                 "set %u descriptor %u: re-encode gives status %d, %zu bytes for data %s", set, descriptor,
+                 (int)st, n, fz_hex(data, len));
         if (len > 0) {
             FZ_CHECK(FZ(encode_field)(&value, buf, len - 1, &n) != FZU(OK), "encoded %zu bytes into %zu", len,
                      len - 1);
@@ -50,7 +51,8 @@ static void decode_one(uint8_t set, uint8_t descriptor, const uint8_t *data, siz
         size_t full = FZ(decode_error_format)(&err, msg, sizeof msg);
         FZ_CHECK(full > 0 && full < sizeof msg && strlen(msg) == full, "error message length %zu", full);
     } else {
-        FZ_CHECK(st == FZU(ERR_UNKNOWN_SET) || st == FZU(ERR_UNKNOWN_DESCRIPTOR), "decode status %d", (int)st);
+        FZ_CHECK(st == FZU(ERR_UNKNOWN_SET) || st == FZU(ERR_UNKNOWN_DESCRIPTOR), "decode status %d",
+                 (int)st);
     }
 }
 
@@ -66,6 +68,58 @@ static void count_other(void *arg, const FZ(field_entry_t) * e) {
     FZ_CHECK(e->offset + 1 > o->last, "entries to other out of order (%zu after %zu)", e->offset, o->last);
     o->last = e->offset + 1;
     o->count++;
+}
+
+/* The layout cache of one input (emptied by LLVMFuzzerTestOneInput: an input replays alone). */
+static FZ(layout_cache_t) g_cache;
+
+/* The encoding of the i-th member of a packet index (the field's only layout); 0 if none. */
+static size_t member_encoding(uint8_t set, const FZ(packet_index_t) * index, size_t i,
+                              const FZ(packet_t) * whole, uint8_t *buf) {
+    static FZ(field_value_t) value;
+    const FZ(field_info_t) *info = FZ(find_field)(set, index->fields[i].descriptor, NULL);
+    const uint8_t *member = (const uint8_t *)FZ(packet_value)(index, i);
+    size_t room = (size_t)((const uint8_t *)(whole + 1) - member);
+    size_t n = 0;
+    if (info == NULL || info->layout_count != 1) {
+        return 0;
+    }
+    memset(&value, 0, sizeof value);
+    value.id = info->first_layout;
+    memcpy(&value.u, member, room < sizeof value.u ? room : sizeof value.u);
+    return FZ(encode_field)(&value, buf, MAX_PAYLOAD, &n) == FZU(OK) ? n : 0;
+}
+
+/* The layout cache (issue 38) against the straight-line decoder, twice through the cache (the
+ * second by the packet's shape when the first recorded it): the same index and other entries,
+ * members that encode to the same bytes. */
+static void check_cached(const uint8_t *packet, const FZ(packet_index_t) * index,
+                         const FZ(packet_t) * straight, const fz_other_t *other) {
+    static FZ(packet_t) via;
+    uint8_t want[MAX_PAYLOAD];
+    uint8_t got[MAX_PAYLOAD];
+    const uint8_t set = FZ(packet_set)(packet);
+    int pass;
+    for (pass = 0; pass < 2; pass++) {
+        fz_other_t left = {0, 0};
+        const FZ(packet_index_t) *ci = FZ(decode_packet_cached)(&g_cache, packet, &via, count_other, &left);
+        size_t i;
+        FZ_CHECK((ci == NULL) == (index == NULL) && left.count == other->count && left.last == other->last,
+                 "cached decode %d: %zu entries to other, straight-line %zu", pass, left.count, other->count);
+        if (index == NULL) {
+            continue;
+        }
+        FZ_CHECK(ci->count == index->count && memcmp(ci->present, index->present, sizeof ci->present) == 0,
+                 "cached decode %d: %zu fields, straight-line %zu", pass, ci->count, index->count);
+        for (i = 0; i < index->count; i++) {
+            size_t n = member_encoding(set, index, i, straight, want);
+            FZ_CHECK(ci->fields[i].descriptor == index->fields[i].descriptor &&
+                         ci->fields[i].offset == index->fields[i].offset &&
+                         member_encoding(set, ci, i, &via, got) == n && memcmp(got, want, n) == 0,
+                     "cached decode %d: set %u descriptor %u differs", pass, set,
+                     index->fields[i].descriptor);
+        }
+    }
 }
 
 static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
@@ -90,7 +144,8 @@ static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
             FZ_CHECK(pos <= plen, "field runs past the payload");
             decode_one(set, e.descriptor, e.data, e.length, device);
         } else {
-            FZ_CHECK(e.kind == FZU(ENTRY_TRAILING) && e.length == plen - pos && e.length > 0, "trailing entry");
+            FZ_CHECK(e.kind == FZU(ENTRY_TRAILING) && e.length == plen - pos && e.length > 0,
+                     "trailing entry");
             pos = plen;
         }
     }
@@ -101,8 +156,10 @@ static void walk(const uint8_t *packet, size_t len, FZ(device_t) device) {
         entries++;
     }
     index = FZ(decode_packet)(packet, &straight, count_other, &other);
-    FZ_CHECK((index ? index->count : 0) + other.count == entries, "straight-line decode: %zu + %zu of %zu entries",
-             index ? index->count : (size_t)0, other.count, entries);
+    FZ_CHECK((index ? index->count : 0) + other.count == entries,
+             "straight-line decode: %zu + %zu of %zu entries", index ? index->count : (size_t)0, other.count,
+             entries);
+    check_cached(packet, index, &straight, &other);
 }
 
 static void on_event(void *arg, const FZ(event_t) * ev) {
@@ -131,7 +188,8 @@ static void parse(fz_lean_t *run) {
     FZ(parser_init)(&parser);
     FZ(parser_feed)(&parser, run->stream, run->size, on_event, run);
     FZ(parser_flush)(&parser, on_event, run);
-    FZ_CHECK(run->end == run->size, "events cover %llu of %zu bytes", (unsigned long long)run->end, run->size);
+    FZ_CHECK(run->end == run->size, "events cover %llu of %zu bytes", (unsigned long long)run->end,
+             run->size);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -152,6 +210,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         devices = (FZ(device_t))(devices + 1);
     }
     dev = data[0] >> 6;
+    FZ(layout_cache_init)(&g_cache);
     memset(&run, 0, sizeof run);
     run.stream = data + 1;
     run.size = size - 1;
@@ -163,7 +222,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     plen = run.size - 1 < MAX_PAYLOAD ? run.size - 1 : MAX_PAYLOAD;
     FZ(packet_begin)(&b, buf, sizeof buf, run.stream[0]);
     FZ_CHECK(FZ(packet_add_raw)(&b, run.stream + 1, plen) == FZU(OK), "add_raw of %zu bytes", plen);
-    FZ_CHECK(FZ(packet_finish)(&b, &len) == FZU(OK) && len == HEADER + plen + CHECKSUM, "finish: %zu bytes", len);
+    FZ_CHECK(FZ(packet_finish)(&b, &len) == FZU(OK) && len == HEADER + plen + CHECKSUM, "finish: %zu bytes",
+             len);
     memset(&one, 0, sizeof one);
     one.stream = buf;
     one.size = len;

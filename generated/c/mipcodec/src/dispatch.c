@@ -2513,6 +2513,120 @@ const mipc_packet_index_t *mipc_decode_packet(const uint8_t *packet, mipc_packet
     return NULL;
 }
 
+/* The other of a cached decode's fallback: passes each entry on and notes the payload offsets of
+ * the fields (a trailing entry, or more fields than a shape holds, and the packet is not recorded). */
+typedef struct {
+    mipc_field_entry_fn other;
+    void *ctx;
+    size_t count;
+    int whole; /* every entry a field, at most MIPC_LAYOUT_SHAPE_FIELDS */
+    size_t pos[MIPC_LAYOUT_SHAPE_FIELDS];
+} noted_other_t;
+
+static void note_other(void *ctx, const mipc_field_entry_t *entry) {
+    noted_other_t *c = ctx;
+    if (entry->kind != MIPC_ENTRY_FIELD || c->count == MIPC_LAYOUT_SHAPE_FIELDS) {
+        c->whole = 0;
+    } else {
+        c->pos[c->count++] = entry->offset;
+    }
+    if (c->other) {
+        c->other(c->ctx, entry);
+    }
+}
+
+/* The members of a set's packet struct (mipc_layout_cache_record_); count 0: none. */
+static const mipc_layout_member_t *shape_members(uint8_t set, size_t *count) {
+    switch (set) {
+    case 0x80:
+        *count = 22;
+        return mipc_sensor_layout_members_;
+    case 0x81:
+        *count = 20;
+        return mipc_gnss_data_layout_members_;
+    case 0x82:
+        *count = 54;
+        return mipc_filter_data_layout_members_;
+    case 0x91:
+        *count = 25;
+        return mipc_gnss_receiver_1_layout_members_;
+    case 0x92:
+        *count = 25;
+        return mipc_gnss_receiver_2_layout_members_;
+    case 0x93:
+        *count = 9;
+        return mipc_gnss_corrections_layout_members_;
+    case 0x94:
+        *count = 12;
+        return mipc_gnss_external_layout_members_;
+    case 0xA0:
+        *count = 10;
+        return mipc_system_data_layout_members_;
+    case 0xFF:
+        *count = 7;
+        return mipc_shared_layout_members_;
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+/* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
+ * decoder (and its shape recorded). */
+static MIPC_NOINLINE const mipc_packet_index_t *decode_uncached(mipc_layout_cache_t *cache,
+                                                                const uint8_t *packet, mipc_packet_t *out,
+                                                                mipc_field_entry_fn other, void *ctx) {
+    const uint8_t set = mipc_packet_set(packet);
+    const uint8_t *payload = mipc_packet_payload(packet);
+    const size_t len = mipc_packet_payload_length(packet);
+    const mipc_layout_shape_t *shape = mipc_layout_cache_find_(cache, set, payload, len);
+    const mipc_packet_index_t *index;
+    noted_other_t noted;
+    if (shape != NULL && mipc_layout_shape_decode_(shape, payload, (mipc_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mipc_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const mipc_packet_index_t *)(const void *)&out->u;
+    }
+    noted.other = other;
+    noted.ctx = ctx;
+    noted.count = 0;
+    noted.whole = 1;
+    index = mipc_decode_packet(packet, out, note_other, &noted);
+    if (index != NULL && noted.whole && shape == NULL) {
+        size_t count;
+        const mipc_layout_member_t *members = shape_members(set, &count);
+        if (count != 0) {
+            mipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, members,
+                                      count);
+        }
+    }
+    return index;
+}
+
+/* Every packet struct of out->u starts with its index: a pointer to the union converts to one to
+ * each member, and that to one to its first member (C99 6.7.2.1). */
+const mipc_packet_index_t *mipc_decode_packet_cached(mipc_layout_cache_t *cache, const uint8_t *packet,
+                                                     mipc_packet_t *out, mipc_field_entry_fn other,
+                                                     void *ctx) {
+    const uint8_t set = mipc_packet_set(packet);
+    const uint8_t *payload = mipc_packet_payload(packet);
+    const mipc_layout_shape_t *shape;
+    assert(cache != NULL);
+    assert(out != NULL);
+    shape = &cache->shapes[cache->last % MIPC_LAYOUT_CACHE_SHAPES];
+    if (mipc_layout_shape_matches_(shape, set, payload, mipc_packet_payload_length(packet)) &&
+        mipc_layout_shape_decode_(shape, payload, (mipc_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mipc_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const mipc_packet_index_t *)(const void *)&out->u;
+    }
+    return decode_uncached(cache, packet, out, other, ctx);
+}
+
 mipc_status_t mipc_encode_field(const mipc_field_value_t *value, uint8_t *buf, size_t cap, size_t *len_out) {
     assert(value != NULL);
     assert(buf != NULL || cap == 0);

@@ -569,6 +569,98 @@ const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_
     return NULL;
 }
 
+/* The other of a cached decode's fallback: passes each entry on and notes the payload offsets of
+ * the fields (a trailing entry, or more fields than a shape holds, and the packet is not recorded). */
+typedef struct {
+    mscipc_field_entry_fn other;
+    void *ctx;
+    size_t count;
+    int whole; /* every entry a field, at most MSCIPC_LAYOUT_SHAPE_FIELDS */
+    size_t pos[MSCIPC_LAYOUT_SHAPE_FIELDS];
+} noted_other_t;
+
+static void note_other(void *ctx, const mscipc_field_entry_t *entry) {
+    noted_other_t *c = ctx;
+    if (entry->kind != MSCIPC_ENTRY_FIELD || c->count == MSCIPC_LAYOUT_SHAPE_FIELDS) {
+        c->whole = 0;
+    } else {
+        c->pos[c->count++] = entry->offset;
+    }
+    if (c->other) {
+        c->other(c->ctx, entry);
+    }
+}
+
+/* The members of a set's packet struct (mscipc_layout_cache_record_); count 0: none. */
+static const mscipc_layout_member_t *shape_members(uint8_t set, size_t *count) {
+    switch (set) {
+    case 0xA2:
+        *count = 9;
+        return mscipc_imu_data_layout_members_;
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+/* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
+ * decoder (and its shape recorded). */
+static MSCIPC_NOINLINE const mscipc_packet_index_t *decode_uncached(mscipc_layout_cache_t *cache,
+                                                                    const uint8_t *packet,
+                                                                    mscipc_packet_t *out,
+                                                                    mscipc_field_entry_fn other, void *ctx) {
+    const uint8_t set = mscipc_packet_set(packet);
+    const uint8_t *payload = mscipc_packet_payload(packet);
+    const size_t len = mscipc_packet_payload_length(packet);
+    const mscipc_layout_shape_t *shape = mscipc_layout_cache_find_(cache, set, payload, len);
+    const mscipc_packet_index_t *index;
+    noted_other_t noted;
+    if (shape != NULL &&
+        mscipc_layout_shape_decode_(shape, payload, (mscipc_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mscipc_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const mscipc_packet_index_t *)(const void *)&out->u;
+    }
+    noted.other = other;
+    noted.ctx = ctx;
+    noted.count = 0;
+    noted.whole = 1;
+    index = mscipc_decode_packet(packet, out, note_other, &noted);
+    if (index != NULL && noted.whole && shape == NULL) {
+        size_t count;
+        const mscipc_layout_member_t *members = shape_members(set, &count);
+        if (count != 0) {
+            mscipc_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, members,
+                                        count);
+        }
+    }
+    return index;
+}
+
+/* Every packet struct of out->u starts with its index: a pointer to the union converts to one to
+ * each member, and that to one to its first member (C99 6.7.2.1). */
+const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *cache, const uint8_t *packet,
+                                                         mscipc_packet_t *out, mscipc_field_entry_fn other,
+                                                         void *ctx) {
+    const uint8_t set = mscipc_packet_set(packet);
+    const uint8_t *payload = mscipc_packet_payload(packet);
+    const mscipc_layout_shape_t *shape;
+    assert(cache != NULL);
+    assert(out != NULL);
+    shape = &cache->shapes[cache->last % MSCIPC_LAYOUT_CACHE_SHAPES];
+    if (mscipc_layout_shape_matches_(shape, set, payload, mscipc_packet_payload_length(packet)) &&
+        mscipc_layout_shape_decode_(shape, payload, (mscipc_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            mscipc_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const mscipc_packet_index_t *)(const void *)&out->u;
+    }
+    return decode_uncached(cache, packet, out, other, ctx);
+}
+
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,
                                     size_t *len_out) {
     assert(value != NULL);

@@ -112,6 +112,72 @@ inline std::vector<uint8_t> encoded(const mscipc_field_value_t &value) {
     return out;
 }
 
+// The encoding of the i-th member a packet index holds (the member copied into a general value of
+// the field's only layout, as far as the packet struct `whole` goes); empty if it does not encode.
+inline std::vector<uint8_t> member_encoding(uint8_t set, const mscipc_packet_index_t *index, size_t i,
+                                            const mscipc_packet_t &whole) {
+    const mscipc_field_info_t *info = mscipc_find_field(set, index->fields[i].descriptor, nullptr);
+    if (info == nullptr || info->layout_count != 1) {
+        return {};
+    }
+    static mscipc_field_value_t value;
+    const uint8_t *member = static_cast<const uint8_t *>(mscipc_packet_value(index, i));
+    const size_t room = static_cast<size_t>(reinterpret_cast<const uint8_t *>(&whole + 1) - member);
+    std::memset(&value, 0, sizeof value);
+    value.id = info->first_layout;
+    std::memcpy(&value.u, member, room < sizeof value.u ? room : sizeof value.u);
+    return encoded(value);
+}
+
+// The layout cache (mscipc_decode_packet_cached, issue 38) against the straight-line decoder on one
+// packet (its index and other entries given), twice through the same cache (the second time by
+// the packet's shape, when its first decode recorded one, which every packet decoded whole into
+// 1..MSCIPC_LAYOUT_SHAPE_FIELDS members must have): the same index, members that encode to the
+// same bytes, the same other entries. Returns "" when they agree, else what differs.
+inline std::string cached_mismatch(mscipc_layout_cache_t *cache, const std::vector<uint8_t> &pk,
+                                   const mscipc_packet_index_t *index, const mscipc_packet_t &decoded,
+                                   const StraightLine &sl) {
+    static mscipc_packet_t via;
+    const uint8_t set = mscipc_packet_set(pk.data());
+    for (int pass = 0; pass < 2; pass++) {
+        StraightLine cl;
+        const mscipc_packet_index_t *ci =
+            mscipc_decode_packet_cached(cache, pk.data(), &via, note_other, &cl);
+        const std::string when = pass == 0 ? "first decode: " : "second decode: ";
+        if ((ci == nullptr) != (index == nullptr)) {
+            return when + "an index where the straight-line decoder has none, or none where it has one";
+        }
+        if (cl.other != sl.other) {
+            return when + "other entries differ";
+        }
+        if (index == nullptr) {
+            continue;
+        }
+        if (via.set != decoded.set || ci->count != index->count ||
+            std::memcmp(ci->present, index->present, sizeof ci->present) != 0) {
+            return when + "another index (set, count or present bits)";
+        }
+        for (size_t i = 0; i < index->count; i++) {
+            if (ci->fields[i].descriptor != index->fields[i].descriptor ||
+                ci->fields[i].offset != index->fields[i].offset) {
+                return when + "index entry " + std::to_string(i) + " differs";
+            }
+            const std::vector<uint8_t> want = member_encoding(set, index, i, decoded);
+            if (want.empty() || member_encoding(set, ci, i, via) != want) {
+                return when + "descriptor " + std::to_string(index->fields[i].descriptor) + ": another value";
+            }
+        }
+        const bool whole =
+            sl.other.empty() && index->count >= 1 && index->count <= MSCIPC_LAYOUT_SHAPE_FIELDS;
+        if (pass == 0 && whole &&
+            mscipc_layout_cache_find_(cache, set, mscipc_packet_payload(pk.data()),
+                                      mscipc_packet_payload_length(pk.data())) == nullptr) {
+            return "a packet decoded whole into its members has no cached shape";
+        }
+    }
+    return "";
+}
+
 // The straight-line decoder (mscipc_decode_packet, issue 38) against the general dispatch on
 // every packet of a stream: each field the general path decodes with a field's only layout (the
 // first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
@@ -131,6 +197,8 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
     mscipc_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
     mscipc_parser_flush(&parser, keep, &packets);
     static mscipc_packet_t decoded;
+    static mscipc_layout_cache_t cache; // one per stream, as a program has
+    mscipc_layout_cache_init(&cache);
     for (const std::vector<uint8_t> &pk : packets.list) {
         const uint8_t set = mscipc_packet_set(pk.data());
         StraightLine sl;
@@ -176,6 +244,27 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
         }
         if (other != sl.other) {
             return "set " + std::to_string(set) + ": other entries differ";
+        }
+        const std::string cached = cached_mismatch(&cache, pk, index, decoded, sl);
+        if (!cached.empty()) {
+            return "set " + std::to_string(set) + ": layout cache: " + cached;
+        }
+        // The same shape with other data (every data byte 0xFF: a bool, enum or count that no
+        // longer decodes): the cache, which now holds the shape, must give what the straight-line
+        // decoder gives.
+        std::vector<uint8_t> mutant = pk;
+        mscipc_field_iter_init(&it, set, mscipc_packet_payload(pk.data()),
+                               mscipc_packet_payload_length(pk.data()));
+        while (mscipc_field_iter_next(&it, &e)) {
+            if (e.kind == MSCIPC_ENTRY_FIELD && e.length > 0) {
+                std::memset(&mutant[static_cast<size_t>(e.data - pk.data())], 0xFF, e.length);
+            }
+        }
+        StraightLine ms;
+        const mscipc_packet_index_t *mi = mscipc_decode_packet(mutant.data(), &decoded, note_other, &ms);
+        const std::string other_data = cached_mismatch(&cache, mutant, mi, decoded, ms);
+        if (!other_data.empty()) {
+            return "set " + std::to_string(set) + ": layout cache, the shape with other data: " + other_data;
         }
     }
     return "";

@@ -11,6 +11,7 @@
 #include "mipcodec/framing.h"
 
 #include <assert.h>
+#include <string.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -140,6 +141,120 @@ static inline const void *mipc_packet_value(const mipc_packet_index_t *index, si
     assert(i < index->count);
     return (const uint8_t *)index + index->fields[i].offset;
 }
+
+/* ---- the layout cache (issue 38): packet shapes seen before, decoded without the header walk */
+
+/** Shapes a layout cache holds (replaced round-robin) and most fields a cached shape has (a
+ * packet with more is decoded by the straight-line decoder every time). */
+#define MIPC_LAYOUT_CACHE_SHAPES 4
+#define MIPC_LAYOUT_SHAPE_FIELDS 16
+
+/* Private: decodes a field's data (length bytes at d) into its member of a set's packet struct
+ * (packet: a <set>_packet_t) as the set's straight-line decoder does; 0 when it does not decode. */
+typedef int (*mipc_layout_load_fn)(const uint8_t *d, size_t length, void *packet);
+
+/* Private: a member of a set's packet struct (generated tables <set>_layout_members_). */
+typedef struct {
+    uint8_t descriptor;
+    uint32_t offset; /* offsetof the packet struct */
+    mipc_layout_load_fn load;
+} mipc_layout_member_t;
+
+/** A packet shape: (set, payload length, every field header at its offset), recorded from a
+ * packet the straight-line decoder decoded without trailing bytes, with the index it made and the
+ * fields it passed to `other` because of their place in the shape (a descriptor without a member,
+ * a repeated descriptor). Private. */
+typedef struct {
+    uint8_t used;                                          /* 0: an empty slot */
+    uint8_t set;                                           /* descriptor set */
+    uint8_t length;                                        /* payload length */
+    uint8_t count;                                         /* fields (headers compared) */
+    uint8_t members;                                       /* of them decoded into members */
+    uint8_t others;                                        /* of them passed to other */
+    uint8_t pos[MIPC_LAYOUT_SHAPE_FIELDS];                 /* payload offset of each field header */
+    uint16_t head[MIPC_LAYOUT_SHAPE_FIELDS];               /* its two header bytes, first | second << 8 */
+    mipc_layout_load_fn load[MIPC_LAYOUT_SHAPE_FIELDS];    /* each decoded field's loader */
+    uint8_t member_pos[MIPC_LAYOUT_SHAPE_FIELDS];          /* its payload offset */
+    uint8_t data_len[MIPC_LAYOUT_SHAPE_FIELDS];            /* its data length */
+    mipc_decoded_field_t fields[MIPC_LAYOUT_SHAPE_FIELDS]; /* its index entry */
+    uint8_t other_pos[MIPC_LAYOUT_SHAPE_FIELDS];           /* payload offset of each field passed on */
+    uint32_t present[8];                                   /* the index's present bits */
+} mipc_layout_shape_t;
+
+/** The layout cache of mipc_decode_packet_cached: fixed arrays (no allocation), one per stream
+ * (not shared between threads without a lock). Initialise with mipc_layout_cache_init. */
+typedef struct {
+    mipc_layout_shape_t shapes[MIPC_LAYOUT_CACHE_SHAPES];
+    uint8_t next; /* the slot the next recorded shape replaces */
+    uint8_t last; /* the slot of the last hit, tried first */
+} mipc_layout_cache_t;
+
+/** Empties a layout cache. */
+void mipc_layout_cache_init(mipc_layout_cache_t *cache);
+
+/* Private (mipc_decode_packet_cached): true when the packet (set, payload of len bytes) has this
+ * shape. Compares the set, the length and each field header; reads only bytes below len (a
+ * shape's headers lie inside its length). */
+static inline bool mipc_layout_shape_matches_(const mipc_layout_shape_t *shape, uint8_t set,
+                                              const uint8_t *payload, size_t len) {
+    unsigned i;
+    if (!shape->used || shape->set != set || shape->length != len) {
+        return false;
+    }
+    for (i = 0; i < shape->count; i++) {
+        const uint8_t *head = payload + shape->pos[i];
+        if ((uint16_t)(head[0] | (unsigned)head[1] << 8) != shape->head[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Private (mipc_decode_packet_cached): decodes the payload of a packet of the shape into its set's
+ * packet struct (packet: the <set>_packet_t, which starts with its index) with the members'
+ * loaders; 0 when a field does not decode (the straight-line decoder then takes the packet). */
+static inline int mipc_layout_shape_decode_(const mipc_layout_shape_t *shape, const uint8_t *payload,
+                                            mipc_packet_index_t *packet) {
+    unsigned i;
+    for (i = 0; i < shape->members; i++) {
+        if (!shape->load[i](payload + shape->member_pos[i] + MIPC_FIELD_HEADER_SIZE, shape->data_len[i],
+                            packet)) {
+            return 0;
+        }
+        packet->fields[i] = shape->fields[i];
+    }
+    memcpy(packet->present, shape->present, sizeof packet->present);
+    packet->count = shape->members;
+    return 1;
+}
+
+/* Private: the cached shape of this packet, or NULL (the slot found becomes the one tried first). */
+static inline const mipc_layout_shape_t *mipc_layout_cache_find_(mipc_layout_cache_t *cache, uint8_t set,
+                                                                 const uint8_t *payload, size_t len) {
+    unsigned k;
+    for (k = 0; k < MIPC_LAYOUT_CACHE_SHAPES; k++) {
+        const unsigned slot = (cache->last + k) % MIPC_LAYOUT_CACHE_SHAPES;
+        if (mipc_layout_shape_matches_(&cache->shapes[slot], set, payload, len)) {
+            cache->last = (uint8_t)slot;
+            return &cache->shapes[slot];
+        }
+    }
+    return NULL;
+}
+
+/* Private (mipc_decode_packet_cached): records the shape of a packet (set, payload of len bytes)
+ * that the straight-line decoder decoded into index, passing the fields at payload offsets
+ * other_pos[0..others) to other (no trailing bytes); members: the member_count members of the set's
+ * packet struct (the generated <set>_layout_members_).
+ * Does nothing when the packet does not fit a shape, or when a field passed on could be decoded
+ * into a member by another packet of the same shape (its data did not decode). */
+void mipc_layout_cache_record_(mipc_layout_cache_t *cache, uint8_t set, const uint8_t *payload, size_t len,
+                               const mipc_packet_index_t *index, const size_t *other_pos, size_t others,
+                               const mipc_layout_member_t *members, size_t member_count);
+
+/* Private (mipc_decode_packet_cached): passes the fields a shape passes on to fn, in order. */
+void mipc_layout_shape_others_(const mipc_layout_shape_t *shape, const uint8_t *payload,
+                               mipc_field_entry_fn fn, void *ctx);
 
 /** Message of a trailing entry (NUL-terminated when cap > 0); returns its full length. */
 size_t mipc_trailing_format(const mipc_field_entry_t *entry, char *buf, size_t cap);

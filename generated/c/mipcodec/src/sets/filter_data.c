@@ -5190,3 +5190,794 @@ size_t mipc_filter_data_decode_packet(const uint8_t *payload, size_t len, mipc_f
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_filter_data_packet_t at packet as mipc_filter_data_decode_packet does; 0
+ * when it does not decode (the packet then takes the straight-line decoder, which gives the field to other)
+ */
+
+static int load_0x01(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 26) {
+        out->filter_data_llh_position.latitude = mipc_ld_f64(d + 0);
+        out->filter_data_llh_position.longitude = mipc_ld_f64(d + 8);
+        out->filter_data_llh_position.ellipsoid_height = mipc_ld_f64(d + 16);
+        out->filter_data_llh_position.valid_flags = mipc_ld_u16(d + 24);
+        return 1;
+    }
+    return mipc_filter_data_llh_position_decode(d, length, &out->filter_data_llh_position, NULL) == MIPC_OK;
+}
+
+static int load_0x02(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_ned_velocity.north = mipc_ld_f32(d + 0);
+        out->filter_data_ned_velocity.east = mipc_ld_f32(d + 4);
+        out->filter_data_ned_velocity.down = mipc_ld_f32(d + 8);
+        out->filter_data_ned_velocity.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_ned_velocity_decode(d, length, &out->filter_data_ned_velocity, NULL) == MIPC_OK;
+}
+
+static int load_0x03(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 18) {
+        out->filter_data_attitude_quaternion.q[0] = mipc_ld_f32(d + 0);
+        out->filter_data_attitude_quaternion.q[1] = mipc_ld_f32(d + 4);
+        out->filter_data_attitude_quaternion.q[2] = mipc_ld_f32(d + 8);
+        out->filter_data_attitude_quaternion.q[3] = mipc_ld_f32(d + 12);
+        out->filter_data_attitude_quaternion.valid_flags = mipc_ld_u16(d + 16);
+        return 1;
+    }
+    return mipc_filter_data_attitude_quaternion_decode(d, length, &out->filter_data_attitude_quaternion,
+                                                       NULL) == MIPC_OK;
+}
+
+static int load_0x04(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 38) {
+        out->filter_data_attitude_dcm.dcm[0] = mipc_ld_f32(d + 0);
+        out->filter_data_attitude_dcm.dcm[1] = mipc_ld_f32(d + 4);
+        out->filter_data_attitude_dcm.dcm[2] = mipc_ld_f32(d + 8);
+        out->filter_data_attitude_dcm.dcm[3] = mipc_ld_f32(d + 12);
+        out->filter_data_attitude_dcm.dcm[4] = mipc_ld_f32(d + 16);
+        out->filter_data_attitude_dcm.dcm[5] = mipc_ld_f32(d + 20);
+        out->filter_data_attitude_dcm.dcm[6] = mipc_ld_f32(d + 24);
+        out->filter_data_attitude_dcm.dcm[7] = mipc_ld_f32(d + 28);
+        out->filter_data_attitude_dcm.dcm[8] = mipc_ld_f32(d + 32);
+        out->filter_data_attitude_dcm.valid_flags = mipc_ld_u16(d + 36);
+        return 1;
+    }
+    return mipc_filter_data_attitude_dcm_decode(d, length, &out->filter_data_attitude_dcm, NULL) == MIPC_OK;
+}
+
+static int load_0x05(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_euler_angles.roll = mipc_ld_f32(d + 0);
+        out->filter_data_euler_angles.pitch = mipc_ld_f32(d + 4);
+        out->filter_data_euler_angles.yaw = mipc_ld_f32(d + 8);
+        out->filter_data_euler_angles.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_euler_angles_decode(d, length, &out->filter_data_euler_angles, NULL) == MIPC_OK;
+}
+
+static int load_0x06(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gyro_bias.bias[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gyro_bias.bias[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gyro_bias.bias[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gyro_bias.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gyro_bias_decode(d, length, &out->filter_data_gyro_bias, NULL) == MIPC_OK;
+}
+
+static int load_0x07(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_accel_bias.bias[0] = mipc_ld_f32(d + 0);
+        out->filter_data_accel_bias.bias[1] = mipc_ld_f32(d + 4);
+        out->filter_data_accel_bias.bias[2] = mipc_ld_f32(d + 8);
+        out->filter_data_accel_bias.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_accel_bias_decode(d, length, &out->filter_data_accel_bias, NULL) == MIPC_OK;
+}
+
+static int load_0x08(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_llh_position_uncertainty.north = mipc_ld_f32(d + 0);
+        out->filter_data_llh_position_uncertainty.east = mipc_ld_f32(d + 4);
+        out->filter_data_llh_position_uncertainty.down = mipc_ld_f32(d + 8);
+        out->filter_data_llh_position_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_llh_position_uncertainty_decode(
+               d, length, &out->filter_data_llh_position_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x09(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_ned_velocity_uncertainty.north = mipc_ld_f32(d + 0);
+        out->filter_data_ned_velocity_uncertainty.east = mipc_ld_f32(d + 4);
+        out->filter_data_ned_velocity_uncertainty.down = mipc_ld_f32(d + 8);
+        out->filter_data_ned_velocity_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_ned_velocity_uncertainty_decode(
+               d, length, &out->filter_data_ned_velocity_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x0a(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_euler_angles_uncertainty.roll = mipc_ld_f32(d + 0);
+        out->filter_data_euler_angles_uncertainty.pitch = mipc_ld_f32(d + 4);
+        out->filter_data_euler_angles_uncertainty.yaw = mipc_ld_f32(d + 8);
+        out->filter_data_euler_angles_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_euler_angles_uncertainty_decode(
+               d, length, &out->filter_data_euler_angles_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x0b(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gyro_bias_uncertainty.bias_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gyro_bias_uncertainty.bias_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gyro_bias_uncertainty.bias_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gyro_bias_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gyro_bias_uncertainty_decode(d, length, &out->filter_data_gyro_bias_uncertainty,
+                                                         NULL) == MIPC_OK;
+}
+
+static int load_0x0c(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_accel_bias_uncertainty.bias_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_accel_bias_uncertainty.bias_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_accel_bias_uncertainty.bias_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_accel_bias_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_accel_bias_uncertainty_decode(d, length, &out->filter_data_accel_bias_uncertainty,
+                                                          NULL) == MIPC_OK;
+}
+
+static int load_0x0d(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_linear_accel.accel[0] = mipc_ld_f32(d + 0);
+        out->filter_data_linear_accel.accel[1] = mipc_ld_f32(d + 4);
+        out->filter_data_linear_accel.accel[2] = mipc_ld_f32(d + 8);
+        out->filter_data_linear_accel.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_linear_accel_decode(d, length, &out->filter_data_linear_accel, NULL) == MIPC_OK;
+}
+
+static int load_0x0e(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_comp_angular_rate.gyro[0] = mipc_ld_f32(d + 0);
+        out->filter_data_comp_angular_rate.gyro[1] = mipc_ld_f32(d + 4);
+        out->filter_data_comp_angular_rate.gyro[2] = mipc_ld_f32(d + 8);
+        out->filter_data_comp_angular_rate.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_comp_angular_rate_decode(d, length, &out->filter_data_comp_angular_rate, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x0f(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 6) {
+        out->filter_data_wgs84_gravity_magnitude.gravity_magnitude = mipc_ld_f32(d + 0);
+        out->filter_data_wgs84_gravity_magnitude.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_filter_data_wgs84_gravity_magnitude_decode(
+               d, length, &out->filter_data_wgs84_gravity_magnitude, NULL) == MIPC_OK;
+}
+
+static int load_0x11(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 12) {
+        out->filter_data_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->filter_data_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->filter_data_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_filter_data_gps_timestamp_decode(d, length, &out->filter_data_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0x12(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 18) {
+        out->filter_data_quaternion_attitude_uncertainty.q[0] = mipc_ld_f32(d + 0);
+        out->filter_data_quaternion_attitude_uncertainty.q[1] = mipc_ld_f32(d + 4);
+        out->filter_data_quaternion_attitude_uncertainty.q[2] = mipc_ld_f32(d + 8);
+        out->filter_data_quaternion_attitude_uncertainty.q[3] = mipc_ld_f32(d + 12);
+        out->filter_data_quaternion_attitude_uncertainty.valid_flags = mipc_ld_u16(d + 16);
+        return 1;
+    }
+    return mipc_filter_data_quaternion_attitude_uncertainty_decode(
+               d, length, &out->filter_data_quaternion_attitude_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x13(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gravity_vector.gravity[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gravity_vector.gravity[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gravity_vector.gravity[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gravity_vector.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gravity_vector_decode(d, length, &out->filter_data_gravity_vector, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x14(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 12) {
+        out->filter_data_heading_update_state.heading = mipc_ld_f32(d + 0);
+        out->filter_data_heading_update_state.heading_uncertainty = mipc_ld_f32(d + 4);
+        out->filter_data_heading_update_state.source = mipc_ld_u16(d + 8);
+        out->filter_data_heading_update_state.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_filter_data_heading_update_state_decode(d, length, &out->filter_data_heading_update_state,
+                                                        NULL) == MIPC_OK;
+}
+
+static int load_0x15(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 22) {
+        out->filter_data_magnetic_model.intensity_north = mipc_ld_f32(d + 0);
+        out->filter_data_magnetic_model.intensity_east = mipc_ld_f32(d + 4);
+        out->filter_data_magnetic_model.intensity_down = mipc_ld_f32(d + 8);
+        out->filter_data_magnetic_model.inclination = mipc_ld_f32(d + 12);
+        out->filter_data_magnetic_model.declination = mipc_ld_f32(d + 16);
+        out->filter_data_magnetic_model.valid_flags = mipc_ld_u16(d + 20);
+        return 1;
+    }
+    return mipc_filter_data_magnetic_model_decode(d, length, &out->filter_data_magnetic_model, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x16(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gyro_scale_factor.scale_factor[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gyro_scale_factor.scale_factor[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gyro_scale_factor.scale_factor[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gyro_scale_factor.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gyro_scale_factor_decode(d, length, &out->filter_data_gyro_scale_factor, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x17(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_accel_scale_factor.scale_factor[0] = mipc_ld_f32(d + 0);
+        out->filter_data_accel_scale_factor.scale_factor[1] = mipc_ld_f32(d + 4);
+        out->filter_data_accel_scale_factor.scale_factor[2] = mipc_ld_f32(d + 8);
+        out->filter_data_accel_scale_factor.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_accel_scale_factor_decode(d, length, &out->filter_data_accel_scale_factor,
+                                                      NULL) == MIPC_OK;
+}
+
+static int load_0x18(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gyro_scale_factor_uncertainty.scale_factor_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gyro_scale_factor_uncertainty.scale_factor_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gyro_scale_factor_uncertainty.scale_factor_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gyro_scale_factor_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gyro_scale_factor_uncertainty_decode(
+               d, length, &out->filter_data_gyro_scale_factor_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x19(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_accel_scale_factor_uncertainty.scale_factor_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_accel_scale_factor_uncertainty.scale_factor_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_accel_scale_factor_uncertainty.scale_factor_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_accel_scale_factor_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_accel_scale_factor_uncertainty_decode(
+               d, length, &out->filter_data_accel_scale_factor_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x1c(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_compensated_accel.accel[0] = mipc_ld_f32(d + 0);
+        out->filter_data_compensated_accel.accel[1] = mipc_ld_f32(d + 4);
+        out->filter_data_compensated_accel.accel[2] = mipc_ld_f32(d + 8);
+        out->filter_data_compensated_accel.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_compensated_accel_decode(d, length, &out->filter_data_compensated_accel, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x20(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 22) {
+        out->filter_data_standard_atmosphere.geometric_altitude = mipc_ld_f32(d + 0);
+        out->filter_data_standard_atmosphere.geopotential_altitude = mipc_ld_f32(d + 4);
+        out->filter_data_standard_atmosphere.temperature = mipc_ld_f32(d + 8);
+        out->filter_data_standard_atmosphere.pressure = mipc_ld_f32(d + 12);
+        out->filter_data_standard_atmosphere.density = mipc_ld_f32(d + 16);
+        out->filter_data_standard_atmosphere.valid_flags = mipc_ld_u16(d + 20);
+        return 1;
+    }
+    return mipc_filter_data_standard_atmosphere_decode(d, length, &out->filter_data_standard_atmosphere,
+                                                       NULL) == MIPC_OK;
+}
+
+static int load_0x21(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 6) {
+        out->filter_data_pressure_altitude.pressure_altitude = mipc_ld_f32(d + 0);
+        out->filter_data_pressure_altitude.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_filter_data_pressure_altitude_decode(d, length, &out->filter_data_pressure_altitude, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x25(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_mag_auto_hard_iron_offset.hard_iron_offset[0] = mipc_ld_f32(d + 0);
+        out->filter_data_mag_auto_hard_iron_offset.hard_iron_offset[1] = mipc_ld_f32(d + 4);
+        out->filter_data_mag_auto_hard_iron_offset.hard_iron_offset[2] = mipc_ld_f32(d + 8);
+        out->filter_data_mag_auto_hard_iron_offset.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_mag_auto_hard_iron_offset_decode(
+               d, length, &out->filter_data_mag_auto_hard_iron_offset, NULL) == MIPC_OK;
+}
+
+static int load_0x26(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 38) {
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[0] = mipc_ld_f32(d + 0);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[1] = mipc_ld_f32(d + 4);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[2] = mipc_ld_f32(d + 8);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[3] = mipc_ld_f32(d + 12);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[4] = mipc_ld_f32(d + 16);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[5] = mipc_ld_f32(d + 20);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[6] = mipc_ld_f32(d + 24);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[7] = mipc_ld_f32(d + 28);
+        out->filter_data_mag_auto_soft_iron_matrix.soft_iron_matrix[8] = mipc_ld_f32(d + 32);
+        out->filter_data_mag_auto_soft_iron_matrix.valid_flags = mipc_ld_u16(d + 36);
+        return 1;
+    }
+    return mipc_filter_data_mag_auto_soft_iron_matrix_decode(
+               d, length, &out->filter_data_mag_auto_soft_iron_matrix, NULL) == MIPC_OK;
+}
+
+static int load_0x28(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_mag_auto_hard_iron_offset_uncertainty.hard_iron_offset_uncertainty[0] =
+            mipc_ld_f32(d + 0);
+        out->filter_data_mag_auto_hard_iron_offset_uncertainty.hard_iron_offset_uncertainty[1] =
+            mipc_ld_f32(d + 4);
+        out->filter_data_mag_auto_hard_iron_offset_uncertainty.hard_iron_offset_uncertainty[2] =
+            mipc_ld_f32(d + 8);
+        out->filter_data_mag_auto_hard_iron_offset_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_mag_auto_hard_iron_offset_uncertainty_decode(
+               d, length, &out->filter_data_mag_auto_hard_iron_offset_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x29(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 38) {
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[0] =
+            mipc_ld_f32(d + 0);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[1] =
+            mipc_ld_f32(d + 4);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[2] =
+            mipc_ld_f32(d + 8);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[3] =
+            mipc_ld_f32(d + 12);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[4] =
+            mipc_ld_f32(d + 16);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[5] =
+            mipc_ld_f32(d + 20);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[6] =
+            mipc_ld_f32(d + 24);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[7] =
+            mipc_ld_f32(d + 28);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.soft_iron_matrix_uncertainty[8] =
+            mipc_ld_f32(d + 32);
+        out->filter_data_mag_auto_soft_iron_matrix_uncertainty.valid_flags = mipc_ld_u16(d + 36);
+        return 1;
+    }
+    return mipc_filter_data_mag_auto_soft_iron_matrix_uncertainty_decode(
+               d, length, &out->filter_data_mag_auto_soft_iron_matrix_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x30(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gnss_antenna_offset_correction.offset[0] = mipc_ld_f32(d + 0);
+        out->filter_data_gnss_antenna_offset_correction.offset[1] = mipc_ld_f32(d + 4);
+        out->filter_data_gnss_antenna_offset_correction.offset[2] = mipc_ld_f32(d + 8);
+        out->filter_data_gnss_antenna_offset_correction.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gnss_antenna_offset_correction_decode(
+               d, length, &out->filter_data_gnss_antenna_offset_correction, NULL) == MIPC_OK;
+}
+
+static int load_0x31(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_gnss_antenna_offset_correction_uncertainty.offset_uncertainty[0] =
+            mipc_ld_f32(d + 0);
+        out->filter_data_gnss_antenna_offset_correction_uncertainty.offset_uncertainty[1] =
+            mipc_ld_f32(d + 4);
+        out->filter_data_gnss_antenna_offset_correction_uncertainty.offset_uncertainty[2] =
+            mipc_ld_f32(d + 8);
+        out->filter_data_gnss_antenna_offset_correction_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_gnss_antenna_offset_correction_uncertainty_decode(
+               d, length, &out->filter_data_gnss_antenna_offset_correction_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x34(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 15) {
+        out->filter_data_multi_antenna_offset_correction.receiver_id = mipc_ld_u8(d + 0);
+        out->filter_data_multi_antenna_offset_correction.offset[0] = mipc_ld_f32(d + 1);
+        out->filter_data_multi_antenna_offset_correction.offset[1] = mipc_ld_f32(d + 5);
+        out->filter_data_multi_antenna_offset_correction.offset[2] = mipc_ld_f32(d + 9);
+        out->filter_data_multi_antenna_offset_correction.valid_flags = mipc_ld_u16(d + 13);
+        return 1;
+    }
+    return mipc_filter_data_multi_antenna_offset_correction_decode(
+               d, length, &out->filter_data_multi_antenna_offset_correction, NULL) == MIPC_OK;
+}
+
+static int load_0x35(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 15) {
+        out->filter_data_multi_antenna_offset_correction_uncertainty.receiver_id = mipc_ld_u8(d + 0);
+        out->filter_data_multi_antenna_offset_correction_uncertainty.offset_uncertainty[0] =
+            mipc_ld_f32(d + 1);
+        out->filter_data_multi_antenna_offset_correction_uncertainty.offset_uncertainty[1] =
+            mipc_ld_f32(d + 5);
+        out->filter_data_multi_antenna_offset_correction_uncertainty.offset_uncertainty[2] =
+            mipc_ld_f32(d + 9);
+        out->filter_data_multi_antenna_offset_correction_uncertainty.valid_flags = mipc_ld_u16(d + 13);
+        return 1;
+    }
+    return mipc_filter_data_multi_antenna_offset_correction_uncertainty_decode(
+               d, length, &out->filter_data_multi_antenna_offset_correction_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x36(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_ecef_position_uncertainty.position_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_ecef_position_uncertainty.position_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_ecef_position_uncertainty.position_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_ecef_position_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_ecef_position_uncertainty_decode(
+               d, length, &out->filter_data_ecef_position_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x37(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_ecef_velocity_uncertainty.velocity_uncertainty[0] = mipc_ld_f32(d + 0);
+        out->filter_data_ecef_velocity_uncertainty.velocity_uncertainty[1] = mipc_ld_f32(d + 4);
+        out->filter_data_ecef_velocity_uncertainty.velocity_uncertainty[2] = mipc_ld_f32(d + 8);
+        out->filter_data_ecef_velocity_uncertainty.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_ecef_velocity_uncertainty_decode(
+               d, length, &out->filter_data_ecef_velocity_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x40(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 26) {
+        out->filter_data_ecef_position.position[0] = mipc_ld_f64(d + 0);
+        out->filter_data_ecef_position.position[1] = mipc_ld_f64(d + 8);
+        out->filter_data_ecef_position.position[2] = mipc_ld_f64(d + 16);
+        out->filter_data_ecef_position.valid_flags = mipc_ld_u16(d + 24);
+        return 1;
+    }
+    return mipc_filter_data_ecef_position_decode(d, length, &out->filter_data_ecef_position, NULL) == MIPC_OK;
+}
+
+static int load_0x41(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 14) {
+        out->filter_data_ecef_velocity.velocity[0] = mipc_ld_f32(d + 0);
+        out->filter_data_ecef_velocity.velocity[1] = mipc_ld_f32(d + 4);
+        out->filter_data_ecef_velocity.velocity[2] = mipc_ld_f32(d + 8);
+        out->filter_data_ecef_velocity.valid_flags = mipc_ld_u16(d + 12);
+        return 1;
+    }
+    return mipc_filter_data_ecef_velocity_decode(d, length, &out->filter_data_ecef_velocity, NULL) == MIPC_OK;
+}
+
+static int load_0x42(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 26) {
+        out->filter_data_ned_relative_position.relative_position[0] = mipc_ld_f64(d + 0);
+        out->filter_data_ned_relative_position.relative_position[1] = mipc_ld_f64(d + 8);
+        out->filter_data_ned_relative_position.relative_position[2] = mipc_ld_f64(d + 16);
+        out->filter_data_ned_relative_position.valid_flags = mipc_ld_u16(d + 24);
+        return 1;
+    }
+    return mipc_filter_data_ned_relative_position_decode(d, length, &out->filter_data_ned_relative_position,
+                                                         NULL) == MIPC_OK;
+}
+
+static int load_0x43(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 15) {
+        out->filter_data_gnss_position_aiding_status.receiver_id = mipc_ld_u8(d + 0);
+        out->filter_data_gnss_position_aiding_status.time_of_week = mipc_ld_f32(d + 1);
+        out->filter_data_gnss_position_aiding_status.status = mipc_ld_u16(d + 5);
+        out->filter_data_gnss_position_aiding_status.reserved[0] = mipc_ld_u8(d + 7);
+        out->filter_data_gnss_position_aiding_status.reserved[1] = mipc_ld_u8(d + 8);
+        out->filter_data_gnss_position_aiding_status.reserved[2] = mipc_ld_u8(d + 9);
+        out->filter_data_gnss_position_aiding_status.reserved[3] = mipc_ld_u8(d + 10);
+        out->filter_data_gnss_position_aiding_status.reserved[4] = mipc_ld_u8(d + 11);
+        out->filter_data_gnss_position_aiding_status.reserved[5] = mipc_ld_u8(d + 12);
+        out->filter_data_gnss_position_aiding_status.reserved[6] = mipc_ld_u8(d + 13);
+        out->filter_data_gnss_position_aiding_status.reserved[7] = mipc_ld_u8(d + 14);
+        return 1;
+    }
+    return mipc_filter_data_gnss_position_aiding_status_decode(
+               d, length, &out->filter_data_gnss_position_aiding_status, NULL) == MIPC_OK;
+}
+
+static int load_0x46(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 7) {
+        out->filter_data_aiding_measurement_summary.time_of_week = mipc_ld_f32(d + 0);
+        out->filter_data_aiding_measurement_summary.source = mipc_ld_u8(d + 4);
+        out->filter_data_aiding_measurement_summary.type = mipc_ld_u8(d + 5);
+        out->filter_data_aiding_measurement_summary.indicator = mipc_ld_u8(d + 6);
+        return 1;
+    }
+    return mipc_filter_data_aiding_measurement_summary_decode(
+               d, length, &out->filter_data_aiding_measurement_summary, NULL) == MIPC_OK;
+}
+
+static int load_0x47(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 6) {
+        out->filter_data_odometer_scale_factor_error.scale_factor_error = mipc_ld_f32(d + 0);
+        out->filter_data_odometer_scale_factor_error.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_filter_data_odometer_scale_factor_error_decode(
+               d, length, &out->filter_data_odometer_scale_factor_error, NULL) == MIPC_OK;
+}
+
+static int load_0x48(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 6) {
+        out->filter_data_odometer_scale_factor_error_uncertainty.scale_factor_error_uncertainty =
+            mipc_ld_f32(d + 0);
+        out->filter_data_odometer_scale_factor_error_uncertainty.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_filter_data_odometer_scale_factor_error_uncertainty_decode(
+               d, length, &out->filter_data_odometer_scale_factor_error_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0x49(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 17) {
+        out->filter_data_gnss_dual_antenna_status.time_of_week = mipc_ld_f32(d + 0);
+        out->filter_data_gnss_dual_antenna_status.heading = mipc_ld_f32(d + 4);
+        out->filter_data_gnss_dual_antenna_status.heading_uncertainty = mipc_ld_f32(d + 8);
+        out->filter_data_gnss_dual_antenna_status.fix_type = mipc_ld_u8(d + 12);
+        out->filter_data_gnss_dual_antenna_status.status_flags = mipc_ld_u16(d + 13);
+        out->filter_data_gnss_dual_antenna_status.valid_flags = mipc_ld_u16(d + 15);
+        return 1;
+    }
+    return mipc_filter_data_gnss_dual_antenna_status_decode(
+               d, length, &out->filter_data_gnss_dual_antenna_status, NULL) == MIPC_OK;
+}
+
+static int load_0x50(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 29) {
+        out->filter_data_aiding_frame_config_error.frame_id = mipc_ld_u8(d + 0);
+        out->filter_data_aiding_frame_config_error.translation[0] = mipc_ld_f32(d + 1);
+        out->filter_data_aiding_frame_config_error.translation[1] = mipc_ld_f32(d + 5);
+        out->filter_data_aiding_frame_config_error.translation[2] = mipc_ld_f32(d + 9);
+        out->filter_data_aiding_frame_config_error.attitude[0] = mipc_ld_f32(d + 13);
+        out->filter_data_aiding_frame_config_error.attitude[1] = mipc_ld_f32(d + 17);
+        out->filter_data_aiding_frame_config_error.attitude[2] = mipc_ld_f32(d + 21);
+        out->filter_data_aiding_frame_config_error.attitude[3] = mipc_ld_f32(d + 25);
+        return 1;
+    }
+    return mipc_filter_data_aiding_frame_config_error_decode(
+               d, length, &out->filter_data_aiding_frame_config_error, NULL) == MIPC_OK;
+}
+
+static int load_0x51(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 25) {
+        out->filter_data_aiding_frame_config_error_uncertainty.frame_id = mipc_ld_u8(d + 0);
+        out->filter_data_aiding_frame_config_error_uncertainty.translation_uncertainty[0] =
+            mipc_ld_f32(d + 1);
+        out->filter_data_aiding_frame_config_error_uncertainty.translation_uncertainty[1] =
+            mipc_ld_f32(d + 5);
+        out->filter_data_aiding_frame_config_error_uncertainty.translation_uncertainty[2] =
+            mipc_ld_f32(d + 9);
+        out->filter_data_aiding_frame_config_error_uncertainty.attitude_uncertainty[0] = mipc_ld_f32(d + 13);
+        out->filter_data_aiding_frame_config_error_uncertainty.attitude_uncertainty[1] = mipc_ld_f32(d + 17);
+        out->filter_data_aiding_frame_config_error_uncertainty.attitude_uncertainty[2] = mipc_ld_f32(d + 21);
+        return 1;
+    }
+    return mipc_filter_data_aiding_frame_config_error_uncertainty_decode(
+               d, length, &out->filter_data_aiding_frame_config_error_uncertainty, NULL) == MIPC_OK;
+}
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_filter_data_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_filter_data_layout_members_[54] = {
+    {0x01, offsetof(mipc_filter_data_packet_t, filter_data_llh_position), load_0x01},
+    {0x02, offsetof(mipc_filter_data_packet_t, filter_data_ned_velocity), load_0x02},
+    {0x03, offsetof(mipc_filter_data_packet_t, filter_data_attitude_quaternion), load_0x03},
+    {0x04, offsetof(mipc_filter_data_packet_t, filter_data_attitude_dcm), load_0x04},
+    {0x05, offsetof(mipc_filter_data_packet_t, filter_data_euler_angles), load_0x05},
+    {0x06, offsetof(mipc_filter_data_packet_t, filter_data_gyro_bias), load_0x06},
+    {0x07, offsetof(mipc_filter_data_packet_t, filter_data_accel_bias), load_0x07},
+    {0x08, offsetof(mipc_filter_data_packet_t, filter_data_llh_position_uncertainty), load_0x08},
+    {0x09, offsetof(mipc_filter_data_packet_t, filter_data_ned_velocity_uncertainty), load_0x09},
+    {0x0A, offsetof(mipc_filter_data_packet_t, filter_data_euler_angles_uncertainty), load_0x0a},
+    {0x0B, offsetof(mipc_filter_data_packet_t, filter_data_gyro_bias_uncertainty), load_0x0b},
+    {0x0C, offsetof(mipc_filter_data_packet_t, filter_data_accel_bias_uncertainty), load_0x0c},
+    {0x0D, offsetof(mipc_filter_data_packet_t, filter_data_linear_accel), load_0x0d},
+    {0x0E, offsetof(mipc_filter_data_packet_t, filter_data_comp_angular_rate), load_0x0e},
+    {0x0F, offsetof(mipc_filter_data_packet_t, filter_data_wgs84_gravity_magnitude), load_0x0f},
+    {0x11, offsetof(mipc_filter_data_packet_t, filter_data_gps_timestamp), load_0x11},
+    {0x12, offsetof(mipc_filter_data_packet_t, filter_data_quaternion_attitude_uncertainty), load_0x12},
+    {0x13, offsetof(mipc_filter_data_packet_t, filter_data_gravity_vector), load_0x13},
+    {0x14, offsetof(mipc_filter_data_packet_t, filter_data_heading_update_state), load_0x14},
+    {0x15, offsetof(mipc_filter_data_packet_t, filter_data_magnetic_model), load_0x15},
+    {0x16, offsetof(mipc_filter_data_packet_t, filter_data_gyro_scale_factor), load_0x16},
+    {0x17, offsetof(mipc_filter_data_packet_t, filter_data_accel_scale_factor), load_0x17},
+    {0x18, offsetof(mipc_filter_data_packet_t, filter_data_gyro_scale_factor_uncertainty), load_0x18},
+    {0x19, offsetof(mipc_filter_data_packet_t, filter_data_accel_scale_factor_uncertainty), load_0x19},
+    {0x1C, offsetof(mipc_filter_data_packet_t, filter_data_compensated_accel), load_0x1c},
+    {0x20, offsetof(mipc_filter_data_packet_t, filter_data_standard_atmosphere), load_0x20},
+    {0x21, offsetof(mipc_filter_data_packet_t, filter_data_pressure_altitude), load_0x21},
+    {0x25, offsetof(mipc_filter_data_packet_t, filter_data_mag_auto_hard_iron_offset), load_0x25},
+    {0x26, offsetof(mipc_filter_data_packet_t, filter_data_mag_auto_soft_iron_matrix), load_0x26},
+    {0x28, offsetof(mipc_filter_data_packet_t, filter_data_mag_auto_hard_iron_offset_uncertainty), load_0x28},
+    {0x29, offsetof(mipc_filter_data_packet_t, filter_data_mag_auto_soft_iron_matrix_uncertainty), load_0x29},
+    {0x30, offsetof(mipc_filter_data_packet_t, filter_data_gnss_antenna_offset_correction), load_0x30},
+    {0x31, offsetof(mipc_filter_data_packet_t, filter_data_gnss_antenna_offset_correction_uncertainty),
+     load_0x31},
+    {0x34, offsetof(mipc_filter_data_packet_t, filter_data_multi_antenna_offset_correction), load_0x34},
+    {0x35, offsetof(mipc_filter_data_packet_t, filter_data_multi_antenna_offset_correction_uncertainty),
+     load_0x35},
+    {0x36, offsetof(mipc_filter_data_packet_t, filter_data_ecef_position_uncertainty), load_0x36},
+    {0x37, offsetof(mipc_filter_data_packet_t, filter_data_ecef_velocity_uncertainty), load_0x37},
+    {0x40, offsetof(mipc_filter_data_packet_t, filter_data_ecef_position), load_0x40},
+    {0x41, offsetof(mipc_filter_data_packet_t, filter_data_ecef_velocity), load_0x41},
+    {0x42, offsetof(mipc_filter_data_packet_t, filter_data_ned_relative_position), load_0x42},
+    {0x43, offsetof(mipc_filter_data_packet_t, filter_data_gnss_position_aiding_status), load_0x43},
+    {0x46, offsetof(mipc_filter_data_packet_t, filter_data_aiding_measurement_summary), load_0x46},
+    {0x47, offsetof(mipc_filter_data_packet_t, filter_data_odometer_scale_factor_error), load_0x47},
+    {0x48, offsetof(mipc_filter_data_packet_t, filter_data_odometer_scale_factor_error_uncertainty),
+     load_0x48},
+    {0x49, offsetof(mipc_filter_data_packet_t, filter_data_gnss_dual_antenna_status), load_0x49},
+    {0x50, offsetof(mipc_filter_data_packet_t, filter_data_aiding_frame_config_error), load_0x50},
+    {0x51, offsetof(mipc_filter_data_packet_t, filter_data_aiding_frame_config_error_uncertainty), load_0x51},
+    {0xD0, offsetof(mipc_filter_data_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_filter_data_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_filter_data_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_filter_data_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_filter_data_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_filter_data_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_filter_data_packet_t, shared_external_time_delta), load_0xd8},
+};

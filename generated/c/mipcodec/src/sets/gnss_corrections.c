@@ -465,3 +465,130 @@ size_t mipc_gnss_corrections_decode_packet(const uint8_t *payload, size_t len,
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_gnss_corrections_packet_t at packet as mipc_gnss_corrections_decode_packet
+ * does; 0 when it does not decode (the packet then takes the straight-line decoder, which gives the field to
+ * other) */
+
+static int load_0x30(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 44) {
+        out->gnss_corrections_base_station_info.tow = mipc_ld_f64(d + 0);
+        out->gnss_corrections_base_station_info.week_number = mipc_ld_u16(d + 8);
+        out->gnss_corrections_base_station_info.ecef_position[0] = mipc_ld_f64(d + 10);
+        out->gnss_corrections_base_station_info.ecef_position[1] = mipc_ld_f64(d + 18);
+        out->gnss_corrections_base_station_info.ecef_position[2] = mipc_ld_f64(d + 26);
+        out->gnss_corrections_base_station_info.height = mipc_ld_f32(d + 34);
+        out->gnss_corrections_base_station_info.station_id = mipc_ld_u16(d + 38);
+        out->gnss_corrections_base_station_info.indicators = mipc_ld_u16(d + 40);
+        out->gnss_corrections_base_station_info.valid_flags = mipc_ld_u16(d + 42);
+        return 1;
+    }
+    return mipc_gnss_corrections_base_station_info_decode(d, length, &out->gnss_corrections_base_station_info,
+                                                          NULL) == MIPC_OK;
+}
+
+static int load_0x31(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 50) {
+        out->gnss_corrections_rtk_corrections_status.tow = mipc_ld_f64(d + 0);
+        out->gnss_corrections_rtk_corrections_status.week_number = mipc_ld_u16(d + 8);
+        out->gnss_corrections_rtk_corrections_status.epoch_status = mipc_ld_u16(d + 10);
+        out->gnss_corrections_rtk_corrections_status.dongle_status = mipc_ld_u32(d + 12);
+        out->gnss_corrections_rtk_corrections_status.gps_correction_latency = mipc_ld_f32(d + 16);
+        out->gnss_corrections_rtk_corrections_status.glonass_correction_latency = mipc_ld_f32(d + 20);
+        out->gnss_corrections_rtk_corrections_status.galileo_correction_latency = mipc_ld_f32(d + 24);
+        out->gnss_corrections_rtk_corrections_status.beidou_correction_latency = mipc_ld_f32(d + 28);
+        out->gnss_corrections_rtk_corrections_status.reserved[0] = mipc_ld_u32(d + 32);
+        out->gnss_corrections_rtk_corrections_status.reserved[1] = mipc_ld_u32(d + 36);
+        out->gnss_corrections_rtk_corrections_status.reserved[2] = mipc_ld_u32(d + 40);
+        out->gnss_corrections_rtk_corrections_status.reserved[3] = mipc_ld_u32(d + 44);
+        out->gnss_corrections_rtk_corrections_status.valid_flags = mipc_ld_u16(d + 48);
+        return 1;
+    }
+    return mipc_gnss_corrections_rtk_corrections_status_decode(
+               d, length, &out->gnss_corrections_rtk_corrections_status, NULL) == MIPC_OK;
+}
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_corrections_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_gnss_corrections_layout_members_[9] = {
+    {0x30, offsetof(mipc_gnss_corrections_packet_t, gnss_corrections_base_station_info), load_0x30},
+    {0x31, offsetof(mipc_gnss_corrections_packet_t, gnss_corrections_rtk_corrections_status), load_0x31},
+    {0xD0, offsetof(mipc_gnss_corrections_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_gnss_corrections_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_gnss_corrections_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_gnss_corrections_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_gnss_corrections_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_gnss_corrections_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_gnss_corrections_packet_t, shared_external_time_delta), load_0xd8},
+};

@@ -1655,3 +1655,279 @@ size_t mipc_gnss_data_decode_packet(const uint8_t *payload, size_t len, mipc_gns
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_gnss_data_packet_t at packet as mipc_gnss_data_decode_packet does; 0 when
+ * it does not decode (the packet then takes the straight-line decoder, which gives the field to other) */
+
+static int load_0x03(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 42) {
+        out->gnss_data_llh_position.latitude = mipc_ld_f64(d + 0);
+        out->gnss_data_llh_position.longitude = mipc_ld_f64(d + 8);
+        out->gnss_data_llh_position.ellipsoid_height = mipc_ld_f64(d + 16);
+        out->gnss_data_llh_position.msl_height = mipc_ld_f64(d + 24);
+        out->gnss_data_llh_position.horizontal_accuracy = mipc_ld_f32(d + 32);
+        out->gnss_data_llh_position.vertical_accuracy = mipc_ld_f32(d + 36);
+        out->gnss_data_llh_position.valid_flags = mipc_ld_u16(d + 40);
+        return 1;
+    }
+    return mipc_gnss_data_llh_position_decode(d, length, &out->gnss_data_llh_position, NULL) == MIPC_OK;
+}
+
+static int load_0x04(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 30) {
+        out->gnss_data_ecef_position.position[0] = mipc_ld_f64(d + 0);
+        out->gnss_data_ecef_position.position[1] = mipc_ld_f64(d + 8);
+        out->gnss_data_ecef_position.position[2] = mipc_ld_f64(d + 16);
+        out->gnss_data_ecef_position.position_accuracy = mipc_ld_f32(d + 24);
+        out->gnss_data_ecef_position.valid_flags = mipc_ld_u16(d + 28);
+        return 1;
+    }
+    return mipc_gnss_data_ecef_position_decode(d, length, &out->gnss_data_ecef_position, NULL) == MIPC_OK;
+}
+
+static int load_0x05(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 34) {
+        out->gnss_data_ned_velocity.velocity[0] = mipc_ld_f32(d + 0);
+        out->gnss_data_ned_velocity.velocity[1] = mipc_ld_f32(d + 4);
+        out->gnss_data_ned_velocity.velocity[2] = mipc_ld_f32(d + 8);
+        out->gnss_data_ned_velocity.speed = mipc_ld_f32(d + 12);
+        out->gnss_data_ned_velocity.ground_speed = mipc_ld_f32(d + 16);
+        out->gnss_data_ned_velocity.heading = mipc_ld_f32(d + 20);
+        out->gnss_data_ned_velocity.speed_accuracy = mipc_ld_f32(d + 24);
+        out->gnss_data_ned_velocity.heading_accuracy = mipc_ld_f32(d + 28);
+        out->gnss_data_ned_velocity.valid_flags = mipc_ld_u16(d + 32);
+        return 1;
+    }
+    return mipc_gnss_data_ned_velocity_decode(d, length, &out->gnss_data_ned_velocity, NULL) == MIPC_OK;
+}
+
+static int load_0x06(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 18) {
+        out->gnss_data_ecef_velocity.velocity[0] = mipc_ld_f32(d + 0);
+        out->gnss_data_ecef_velocity.velocity[1] = mipc_ld_f32(d + 4);
+        out->gnss_data_ecef_velocity.velocity[2] = mipc_ld_f32(d + 8);
+        out->gnss_data_ecef_velocity.velocity_accuracy = mipc_ld_f32(d + 12);
+        out->gnss_data_ecef_velocity.valid_flags = mipc_ld_u16(d + 16);
+        return 1;
+    }
+    return mipc_gnss_data_ecef_velocity_decode(d, length, &out->gnss_data_ecef_velocity, NULL) == MIPC_OK;
+}
+
+static int load_0x07(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 30) {
+        out->gnss_data_dop.gdop = mipc_ld_f32(d + 0);
+        out->gnss_data_dop.pdop = mipc_ld_f32(d + 4);
+        out->gnss_data_dop.hdop = mipc_ld_f32(d + 8);
+        out->gnss_data_dop.vdop = mipc_ld_f32(d + 12);
+        out->gnss_data_dop.tdop = mipc_ld_f32(d + 16);
+        out->gnss_data_dop.ndop = mipc_ld_f32(d + 20);
+        out->gnss_data_dop.edop = mipc_ld_f32(d + 24);
+        out->gnss_data_dop.valid_flags = mipc_ld_u16(d + 28);
+        return 1;
+    }
+    return mipc_gnss_data_dop_decode(d, length, &out->gnss_data_dop, NULL) == MIPC_OK;
+}
+
+static int load_0x08(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 13) {
+        out->gnss_data_utc_time.year = mipc_ld_u16(d + 0);
+        out->gnss_data_utc_time.month = mipc_ld_u8(d + 2);
+        out->gnss_data_utc_time.day = mipc_ld_u8(d + 3);
+        out->gnss_data_utc_time.hour = mipc_ld_u8(d + 4);
+        out->gnss_data_utc_time.minute = mipc_ld_u8(d + 5);
+        out->gnss_data_utc_time.second = mipc_ld_u8(d + 6);
+        out->gnss_data_utc_time.millisecond = mipc_ld_u32(d + 7);
+        out->gnss_data_utc_time.valid_flags = mipc_ld_u16(d + 11);
+        return 1;
+    }
+    return mipc_gnss_data_utc_time_decode(d, length, &out->gnss_data_utc_time, NULL) == MIPC_OK;
+}
+
+static int load_0x09(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 12) {
+        out->gnss_data_gps_time.tow = mipc_ld_f64(d + 0);
+        out->gnss_data_gps_time.week_number = mipc_ld_u16(d + 8);
+        out->gnss_data_gps_time.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_gnss_data_gps_time_decode(d, length, &out->gnss_data_gps_time, NULL) == MIPC_OK;
+}
+
+static int load_0x0a(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 26) {
+        out->gnss_data_clock_info.bias = mipc_ld_f64(d + 0);
+        out->gnss_data_clock_info.drift = mipc_ld_f64(d + 8);
+        out->gnss_data_clock_info.accuracy_estimate = mipc_ld_f64(d + 16);
+        out->gnss_data_clock_info.valid_flags = mipc_ld_u16(d + 24);
+        return 1;
+    }
+    return mipc_gnss_data_clock_info_decode(d, length, &out->gnss_data_clock_info, NULL) == MIPC_OK;
+}
+
+static int load_0x0b(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 6) {
+        out->gnss_data_fix_info.fix_type = mipc_ld_u8(d + 0);
+        out->gnss_data_fix_info.num_sv = mipc_ld_u8(d + 1);
+        out->gnss_data_fix_info.fix_flags = mipc_ld_u16(d + 2);
+        out->gnss_data_fix_info.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_gnss_data_fix_info_decode(d, length, &out->gnss_data_fix_info, NULL) == MIPC_OK;
+}
+
+static int load_0x0c(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 12) {
+        out->gnss_data_sv_info.channel = mipc_ld_u8(d + 0);
+        out->gnss_data_sv_info.sv_id = mipc_ld_u8(d + 1);
+        out->gnss_data_sv_info.carrier_to_noise_ratio = mipc_ld_u16(d + 2);
+        out->gnss_data_sv_info.azimuth = mipc_ld_s16(d + 4);
+        out->gnss_data_sv_info.elevation = mipc_ld_s16(d + 6);
+        out->gnss_data_sv_info.sv_flags = mipc_ld_u16(d + 8);
+        out->gnss_data_sv_info.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_gnss_data_sv_info_decode(d, length, &out->gnss_data_sv_info, NULL) == MIPC_OK;
+}
+
+static int load_0x0d(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 5) {
+        out->gnss_data_hardware_status.receiver_state = mipc_ld_u8(d + 0);
+        out->gnss_data_hardware_status.antenna_state = mipc_ld_u8(d + 1);
+        out->gnss_data_hardware_status.antenna_power = mipc_ld_u8(d + 2);
+        out->gnss_data_hardware_status.valid_flags = mipc_ld_u16(d + 3);
+        return 1;
+    }
+    return mipc_gnss_data_hardware_status_decode(d, length, &out->gnss_data_hardware_status, NULL) == MIPC_OK;
+}
+
+static int load_0x0e(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 12) {
+        out->gnss_data_dgnss_info.newest_age = mipc_ld_f32(d + 0);
+        out->gnss_data_dgnss_info.base_station_id = mipc_ld_s16(d + 4);
+        out->gnss_data_dgnss_info.base_station_status = mipc_ld_s16(d + 6);
+        out->gnss_data_dgnss_info.num_channels = mipc_ld_u16(d + 8);
+        out->gnss_data_dgnss_info.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_gnss_data_dgnss_info_decode(d, length, &out->gnss_data_dgnss_info, NULL) == MIPC_OK;
+}
+
+static int load_0x0f(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 15) {
+        out->gnss_data_dgnss_channel_status.sv_id = mipc_ld_u8(d + 0);
+        out->gnss_data_dgnss_channel_status.age = mipc_ld_f32(d + 1);
+        out->gnss_data_dgnss_channel_status.pseudorange_correction = mipc_ld_f32(d + 5);
+        out->gnss_data_dgnss_channel_status.pseudorange_rate_correction = mipc_ld_f32(d + 9);
+        out->gnss_data_dgnss_channel_status.valid_flags = mipc_ld_u16(d + 13);
+        return 1;
+    }
+    return mipc_gnss_data_dgnss_channel_status_decode(d, length, &out->gnss_data_dgnss_channel_status,
+                                                      NULL) == MIPC_OK;
+}
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_data_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_gnss_data_layout_members_[20] = {
+    {0x03, offsetof(mipc_gnss_data_packet_t, gnss_data_llh_position), load_0x03},
+    {0x04, offsetof(mipc_gnss_data_packet_t, gnss_data_ecef_position), load_0x04},
+    {0x05, offsetof(mipc_gnss_data_packet_t, gnss_data_ned_velocity), load_0x05},
+    {0x06, offsetof(mipc_gnss_data_packet_t, gnss_data_ecef_velocity), load_0x06},
+    {0x07, offsetof(mipc_gnss_data_packet_t, gnss_data_dop), load_0x07},
+    {0x08, offsetof(mipc_gnss_data_packet_t, gnss_data_utc_time), load_0x08},
+    {0x09, offsetof(mipc_gnss_data_packet_t, gnss_data_gps_time), load_0x09},
+    {0x0A, offsetof(mipc_gnss_data_packet_t, gnss_data_clock_info), load_0x0a},
+    {0x0B, offsetof(mipc_gnss_data_packet_t, gnss_data_fix_info), load_0x0b},
+    {0x0C, offsetof(mipc_gnss_data_packet_t, gnss_data_sv_info), load_0x0c},
+    {0x0D, offsetof(mipc_gnss_data_packet_t, gnss_data_hardware_status), load_0x0d},
+    {0x0E, offsetof(mipc_gnss_data_packet_t, gnss_data_dgnss_info), load_0x0e},
+    {0x0F, offsetof(mipc_gnss_data_packet_t, gnss_data_dgnss_channel_status), load_0x0f},
+    {0xD0, offsetof(mipc_gnss_data_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_gnss_data_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_gnss_data_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_gnss_data_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_gnss_data_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_gnss_data_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_gnss_data_packet_t, shared_external_time_delta), load_0xd8},
+};

@@ -3534,3 +3534,491 @@ size_t mipc_gnss_receiver_2_decode_packet(const uint8_t *payload, size_t len,
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_gnss_receiver_2_packet_t at packet as mipc_gnss_receiver_2_decode_packet
+ * does; 0 when it does not decode (the packet then takes the straight-line decoder, which gives the field to
+ * other) */
+
+static int load_0x03(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 42) {
+        out->gnss_receiver_2_llh_position.latitude = mipc_ld_f64(d + 0);
+        out->gnss_receiver_2_llh_position.longitude = mipc_ld_f64(d + 8);
+        out->gnss_receiver_2_llh_position.ellipsoid_height = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_llh_position.msl_height = mipc_ld_f64(d + 24);
+        out->gnss_receiver_2_llh_position.horizontal_accuracy = mipc_ld_f32(d + 32);
+        out->gnss_receiver_2_llh_position.vertical_accuracy = mipc_ld_f32(d + 36);
+        out->gnss_receiver_2_llh_position.valid_flags = mipc_ld_u16(d + 40);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_llh_position_decode(d, length, &out->gnss_receiver_2_llh_position, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x04(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 30) {
+        out->gnss_receiver_2_ecef_position.position[0] = mipc_ld_f64(d + 0);
+        out->gnss_receiver_2_ecef_position.position[1] = mipc_ld_f64(d + 8);
+        out->gnss_receiver_2_ecef_position.position[2] = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_ecef_position.position_accuracy = mipc_ld_f32(d + 24);
+        out->gnss_receiver_2_ecef_position.valid_flags = mipc_ld_u16(d + 28);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_ecef_position_decode(d, length, &out->gnss_receiver_2_ecef_position, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x05(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 34) {
+        out->gnss_receiver_2_ned_velocity.velocity[0] = mipc_ld_f32(d + 0);
+        out->gnss_receiver_2_ned_velocity.velocity[1] = mipc_ld_f32(d + 4);
+        out->gnss_receiver_2_ned_velocity.velocity[2] = mipc_ld_f32(d + 8);
+        out->gnss_receiver_2_ned_velocity.speed = mipc_ld_f32(d + 12);
+        out->gnss_receiver_2_ned_velocity.ground_speed = mipc_ld_f32(d + 16);
+        out->gnss_receiver_2_ned_velocity.heading = mipc_ld_f32(d + 20);
+        out->gnss_receiver_2_ned_velocity.speed_accuracy = mipc_ld_f32(d + 24);
+        out->gnss_receiver_2_ned_velocity.heading_accuracy = mipc_ld_f32(d + 28);
+        out->gnss_receiver_2_ned_velocity.valid_flags = mipc_ld_u16(d + 32);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_ned_velocity_decode(d, length, &out->gnss_receiver_2_ned_velocity, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x06(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 18) {
+        out->gnss_receiver_2_ecef_velocity.velocity[0] = mipc_ld_f32(d + 0);
+        out->gnss_receiver_2_ecef_velocity.velocity[1] = mipc_ld_f32(d + 4);
+        out->gnss_receiver_2_ecef_velocity.velocity[2] = mipc_ld_f32(d + 8);
+        out->gnss_receiver_2_ecef_velocity.velocity_accuracy = mipc_ld_f32(d + 12);
+        out->gnss_receiver_2_ecef_velocity.valid_flags = mipc_ld_u16(d + 16);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_ecef_velocity_decode(d, length, &out->gnss_receiver_2_ecef_velocity, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x07(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 30) {
+        out->gnss_receiver_2_dop.gdop = mipc_ld_f32(d + 0);
+        out->gnss_receiver_2_dop.pdop = mipc_ld_f32(d + 4);
+        out->gnss_receiver_2_dop.hdop = mipc_ld_f32(d + 8);
+        out->gnss_receiver_2_dop.vdop = mipc_ld_f32(d + 12);
+        out->gnss_receiver_2_dop.tdop = mipc_ld_f32(d + 16);
+        out->gnss_receiver_2_dop.ndop = mipc_ld_f32(d + 20);
+        out->gnss_receiver_2_dop.edop = mipc_ld_f32(d + 24);
+        out->gnss_receiver_2_dop.valid_flags = mipc_ld_u16(d + 28);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_dop_decode(d, length, &out->gnss_receiver_2_dop, NULL) == MIPC_OK;
+}
+
+static int load_0x08(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 13) {
+        out->gnss_receiver_2_utc_time.year = mipc_ld_u16(d + 0);
+        out->gnss_receiver_2_utc_time.month = mipc_ld_u8(d + 2);
+        out->gnss_receiver_2_utc_time.day = mipc_ld_u8(d + 3);
+        out->gnss_receiver_2_utc_time.hour = mipc_ld_u8(d + 4);
+        out->gnss_receiver_2_utc_time.minute = mipc_ld_u8(d + 5);
+        out->gnss_receiver_2_utc_time.second = mipc_ld_u8(d + 6);
+        out->gnss_receiver_2_utc_time.millisecond = mipc_ld_u32(d + 7);
+        out->gnss_receiver_2_utc_time.valid_flags = mipc_ld_u16(d + 11);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_utc_time_decode(d, length, &out->gnss_receiver_2_utc_time, NULL) == MIPC_OK;
+}
+
+static int load_0x09(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 12) {
+        out->gnss_receiver_2_gps_time.tow = mipc_ld_f64(d + 0);
+        out->gnss_receiver_2_gps_time.week_number = mipc_ld_u16(d + 8);
+        out->gnss_receiver_2_gps_time.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_gps_time_decode(d, length, &out->gnss_receiver_2_gps_time, NULL) == MIPC_OK;
+}
+
+static int load_0x0b(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 6) {
+        out->gnss_receiver_2_fix_info.fix_type = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_fix_info.num_sv = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_fix_info.fix_flags = mipc_ld_u16(d + 2);
+        out->gnss_receiver_2_fix_info.valid_flags = mipc_ld_u16(d + 4);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_fix_info_decode(d, length, &out->gnss_receiver_2_fix_info, NULL) == MIPC_OK;
+}
+
+static int load_0x0d(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 5) {
+        out->gnss_receiver_2_hardware_status.receiver_state = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_hardware_status.antenna_state = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_hardware_status.antenna_power = mipc_ld_u8(d + 2);
+        out->gnss_receiver_2_hardware_status.valid_flags = mipc_ld_u16(d + 3);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_hardware_status_decode(d, length, &out->gnss_receiver_2_hardware_status,
+                                                       NULL) == MIPC_OK;
+}
+
+static int load_0x10(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 34) {
+        out->gnss_receiver_2_clock_info_2.bias = mipc_ld_f64(d + 0);
+        out->gnss_receiver_2_clock_info_2.drift = mipc_ld_f64(d + 8);
+        out->gnss_receiver_2_clock_info_2.bias_accuracy_estimate = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_clock_info_2.drift_accuracy_estimate = mipc_ld_f64(d + 24);
+        out->gnss_receiver_2_clock_info_2.valid_flags = mipc_ld_u16(d + 32);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_clock_info_2_decode(d, length, &out->gnss_receiver_2_clock_info_2, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x11(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 3) {
+        out->gnss_receiver_2_gps_leap_seconds.leap_seconds = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_gps_leap_seconds.valid_flags = mipc_ld_u16(d + 1);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_gps_leap_seconds_decode(d, length, &out->gnss_receiver_2_gps_leap_seconds,
+                                                        NULL) == MIPC_OK;
+}
+
+static int load_0x12(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 16) {
+        out->gnss_receiver_2_sbas_info.tow = mipc_ld_f64(d + 0);
+        out->gnss_receiver_2_sbas_info.week_number = mipc_ld_u16(d + 8);
+        out->gnss_receiver_2_sbas_info.sbas_system = mipc_ld_u8(d + 10);
+        out->gnss_receiver_2_sbas_info.sbas_id = mipc_ld_u8(d + 11);
+        out->gnss_receiver_2_sbas_info.count = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_sbas_info.sbas_status = mipc_ld_u8(d + 13);
+        out->gnss_receiver_2_sbas_info.valid_flags = mipc_ld_u16(d + 14);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_sbas_info_decode(d, length, &out->gnss_receiver_2_sbas_info, NULL) == MIPC_OK;
+}
+
+static int load_0x20(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 25 && d[22] <= 1) {
+        out->gnss_receiver_2_satellite_status.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_satellite_status.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_satellite_status.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_satellite_status.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_satellite_status.gnss_id = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_satellite_status.satellite_id = mipc_ld_u8(d + 13);
+        out->gnss_receiver_2_satellite_status.elevation = mipc_ld_f32(d + 14);
+        out->gnss_receiver_2_satellite_status.azimuth = mipc_ld_f32(d + 18);
+        out->gnss_receiver_2_satellite_status.health = mipc_ld_bool(d + 22);
+        out->gnss_receiver_2_satellite_status.valid_flags = mipc_ld_u16(d + 23);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_satellite_status_decode(d, length, &out->gnss_receiver_2_satellite_status,
+                                                        NULL) == MIPC_OK;
+}
+
+static int load_0x22(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 61) {
+        out->gnss_receiver_2_raw.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_raw.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_raw.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_raw.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_raw.receiver_id = mipc_ld_u16(d + 12);
+        out->gnss_receiver_2_raw.tracking_channel = mipc_ld_u8(d + 14);
+        out->gnss_receiver_2_raw.gnss_id = mipc_ld_u8(d + 15);
+        out->gnss_receiver_2_raw.satellite_id = mipc_ld_u8(d + 16);
+        out->gnss_receiver_2_raw.signal_id = mipc_ld_u8(d + 17);
+        out->gnss_receiver_2_raw.signal_strength = mipc_ld_f32(d + 18);
+        out->gnss_receiver_2_raw.quality = mipc_ld_u8(d + 22);
+        out->gnss_receiver_2_raw.pseudorange = mipc_ld_f64(d + 23);
+        out->gnss_receiver_2_raw.carrier_phase = mipc_ld_f64(d + 31);
+        out->gnss_receiver_2_raw.doppler = mipc_ld_f32(d + 39);
+        out->gnss_receiver_2_raw.range_uncert = mipc_ld_f32(d + 43);
+        out->gnss_receiver_2_raw.phase_uncert = mipc_ld_f32(d + 47);
+        out->gnss_receiver_2_raw.doppler_uncert = mipc_ld_f32(d + 51);
+        out->gnss_receiver_2_raw.lock_time = mipc_ld_f32(d + 55);
+        out->gnss_receiver_2_raw.valid_flags = mipc_ld_u16(d + 59);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_raw_decode(d, length, &out->gnss_receiver_2_raw, NULL) == MIPC_OK;
+}
+
+static int load_0x61(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 218) {
+        out->gnss_receiver_2_gps_ephemeris.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_gps_ephemeris.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_gps_ephemeris.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_gps_ephemeris.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_gps_ephemeris.satellite_id = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_gps_ephemeris.health = mipc_ld_u8(d + 13);
+        out->gnss_receiver_2_gps_ephemeris.iodc = mipc_ld_u8(d + 14);
+        out->gnss_receiver_2_gps_ephemeris.iode = mipc_ld_u8(d + 15);
+        out->gnss_receiver_2_gps_ephemeris.t_oc = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_gps_ephemeris.af0 = mipc_ld_f64(d + 24);
+        out->gnss_receiver_2_gps_ephemeris.af1 = mipc_ld_f64(d + 32);
+        out->gnss_receiver_2_gps_ephemeris.af2 = mipc_ld_f64(d + 40);
+        out->gnss_receiver_2_gps_ephemeris.t_gd = mipc_ld_f64(d + 48);
+        out->gnss_receiver_2_gps_ephemeris.isc_l1ca = mipc_ld_f64(d + 56);
+        out->gnss_receiver_2_gps_ephemeris.isc_l2c = mipc_ld_f64(d + 64);
+        out->gnss_receiver_2_gps_ephemeris.t_oe = mipc_ld_f64(d + 72);
+        out->gnss_receiver_2_gps_ephemeris.a = mipc_ld_f64(d + 80);
+        out->gnss_receiver_2_gps_ephemeris.a_dot = mipc_ld_f64(d + 88);
+        out->gnss_receiver_2_gps_ephemeris.mean_anomaly = mipc_ld_f64(d + 96);
+        out->gnss_receiver_2_gps_ephemeris.delta_mean_motion = mipc_ld_f64(d + 104);
+        out->gnss_receiver_2_gps_ephemeris.delta_mean_motion_dot = mipc_ld_f64(d + 112);
+        out->gnss_receiver_2_gps_ephemeris.eccentricity = mipc_ld_f64(d + 120);
+        out->gnss_receiver_2_gps_ephemeris.argument_of_perigee = mipc_ld_f64(d + 128);
+        out->gnss_receiver_2_gps_ephemeris.omega = mipc_ld_f64(d + 136);
+        out->gnss_receiver_2_gps_ephemeris.omega_dot = mipc_ld_f64(d + 144);
+        out->gnss_receiver_2_gps_ephemeris.inclination = mipc_ld_f64(d + 152);
+        out->gnss_receiver_2_gps_ephemeris.inclination_dot = mipc_ld_f64(d + 160);
+        out->gnss_receiver_2_gps_ephemeris.c_ic = mipc_ld_f64(d + 168);
+        out->gnss_receiver_2_gps_ephemeris.c_is = mipc_ld_f64(d + 176);
+        out->gnss_receiver_2_gps_ephemeris.c_uc = mipc_ld_f64(d + 184);
+        out->gnss_receiver_2_gps_ephemeris.c_us = mipc_ld_f64(d + 192);
+        out->gnss_receiver_2_gps_ephemeris.c_rc = mipc_ld_f64(d + 200);
+        out->gnss_receiver_2_gps_ephemeris.c_rs = mipc_ld_f64(d + 208);
+        out->gnss_receiver_2_gps_ephemeris.valid_flags = mipc_ld_u16(d + 216);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_gps_ephemeris_decode(d, length, &out->gnss_receiver_2_gps_ephemeris, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x62(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 102) {
+        out->gnss_receiver_2_glonass_ephemeris.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_glonass_ephemeris.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_glonass_ephemeris.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_glonass_ephemeris.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_glonass_ephemeris.satellite_id = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_glonass_ephemeris.freq_number = mipc_ld_s8(d + 13);
+        out->gnss_receiver_2_glonass_ephemeris.tk = mipc_ld_u32(d + 14);
+        out->gnss_receiver_2_glonass_ephemeris.tb = mipc_ld_u32(d + 18);
+        out->gnss_receiver_2_glonass_ephemeris.sat_type = mipc_ld_u8(d + 22);
+        out->gnss_receiver_2_glonass_ephemeris.gamma = mipc_ld_f64(d + 23);
+        out->gnss_receiver_2_glonass_ephemeris.tau_n = mipc_ld_f64(d + 31);
+        out->gnss_receiver_2_glonass_ephemeris.x[0] = mipc_ld_f64(d + 39);
+        out->gnss_receiver_2_glonass_ephemeris.x[1] = mipc_ld_f64(d + 47);
+        out->gnss_receiver_2_glonass_ephemeris.x[2] = mipc_ld_f64(d + 55);
+        out->gnss_receiver_2_glonass_ephemeris.v[0] = mipc_ld_f32(d + 63);
+        out->gnss_receiver_2_glonass_ephemeris.v[1] = mipc_ld_f32(d + 67);
+        out->gnss_receiver_2_glonass_ephemeris.v[2] = mipc_ld_f32(d + 71);
+        out->gnss_receiver_2_glonass_ephemeris.a[0] = mipc_ld_f32(d + 75);
+        out->gnss_receiver_2_glonass_ephemeris.a[1] = mipc_ld_f32(d + 79);
+        out->gnss_receiver_2_glonass_ephemeris.a[2] = mipc_ld_f32(d + 83);
+        out->gnss_receiver_2_glonass_ephemeris.health = mipc_ld_u8(d + 87);
+        out->gnss_receiver_2_glonass_ephemeris.p = mipc_ld_u8(d + 88);
+        out->gnss_receiver_2_glonass_ephemeris.nt = mipc_ld_u8(d + 89);
+        out->gnss_receiver_2_glonass_ephemeris.delta_tau_n = mipc_ld_f32(d + 90);
+        out->gnss_receiver_2_glonass_ephemeris.ft = mipc_ld_u8(d + 94);
+        out->gnss_receiver_2_glonass_ephemeris.en = mipc_ld_u8(d + 95);
+        out->gnss_receiver_2_glonass_ephemeris.p1 = mipc_ld_u8(d + 96);
+        out->gnss_receiver_2_glonass_ephemeris.p2 = mipc_ld_u8(d + 97);
+        out->gnss_receiver_2_glonass_ephemeris.p3 = mipc_ld_u8(d + 98);
+        out->gnss_receiver_2_glonass_ephemeris.p4 = mipc_ld_u8(d + 99);
+        out->gnss_receiver_2_glonass_ephemeris.valid_flags = mipc_ld_u16(d + 100);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_glonass_ephemeris_decode(d, length, &out->gnss_receiver_2_glonass_ephemeris,
+                                                         NULL) == MIPC_OK;
+}
+
+static int load_0x63(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 218) {
+        out->gnss_receiver_2_galileo_ephemeris.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_galileo_ephemeris.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_galileo_ephemeris.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_galileo_ephemeris.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_galileo_ephemeris.satellite_id = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_galileo_ephemeris.health = mipc_ld_u8(d + 13);
+        out->gnss_receiver_2_galileo_ephemeris.iodc = mipc_ld_u8(d + 14);
+        out->gnss_receiver_2_galileo_ephemeris.iode = mipc_ld_u8(d + 15);
+        out->gnss_receiver_2_galileo_ephemeris.t_oc = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_galileo_ephemeris.af0 = mipc_ld_f64(d + 24);
+        out->gnss_receiver_2_galileo_ephemeris.af1 = mipc_ld_f64(d + 32);
+        out->gnss_receiver_2_galileo_ephemeris.af2 = mipc_ld_f64(d + 40);
+        out->gnss_receiver_2_galileo_ephemeris.t_gd = mipc_ld_f64(d + 48);
+        out->gnss_receiver_2_galileo_ephemeris.isc_l1ca = mipc_ld_f64(d + 56);
+        out->gnss_receiver_2_galileo_ephemeris.isc_l2c = mipc_ld_f64(d + 64);
+        out->gnss_receiver_2_galileo_ephemeris.t_oe = mipc_ld_f64(d + 72);
+        out->gnss_receiver_2_galileo_ephemeris.a = mipc_ld_f64(d + 80);
+        out->gnss_receiver_2_galileo_ephemeris.a_dot = mipc_ld_f64(d + 88);
+        out->gnss_receiver_2_galileo_ephemeris.mean_anomaly = mipc_ld_f64(d + 96);
+        out->gnss_receiver_2_galileo_ephemeris.delta_mean_motion = mipc_ld_f64(d + 104);
+        out->gnss_receiver_2_galileo_ephemeris.delta_mean_motion_dot = mipc_ld_f64(d + 112);
+        out->gnss_receiver_2_galileo_ephemeris.eccentricity = mipc_ld_f64(d + 120);
+        out->gnss_receiver_2_galileo_ephemeris.argument_of_perigee = mipc_ld_f64(d + 128);
+        out->gnss_receiver_2_galileo_ephemeris.omega = mipc_ld_f64(d + 136);
+        out->gnss_receiver_2_galileo_ephemeris.omega_dot = mipc_ld_f64(d + 144);
+        out->gnss_receiver_2_galileo_ephemeris.inclination = mipc_ld_f64(d + 152);
+        out->gnss_receiver_2_galileo_ephemeris.inclination_dot = mipc_ld_f64(d + 160);
+        out->gnss_receiver_2_galileo_ephemeris.c_ic = mipc_ld_f64(d + 168);
+        out->gnss_receiver_2_galileo_ephemeris.c_is = mipc_ld_f64(d + 176);
+        out->gnss_receiver_2_galileo_ephemeris.c_uc = mipc_ld_f64(d + 184);
+        out->gnss_receiver_2_galileo_ephemeris.c_us = mipc_ld_f64(d + 192);
+        out->gnss_receiver_2_galileo_ephemeris.c_rc = mipc_ld_f64(d + 200);
+        out->gnss_receiver_2_galileo_ephemeris.c_rs = mipc_ld_f64(d + 208);
+        out->gnss_receiver_2_galileo_ephemeris.valid_flags = mipc_ld_u16(d + 216);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_galileo_ephemeris_decode(d, length, &out->gnss_receiver_2_galileo_ephemeris,
+                                                         NULL) == MIPC_OK;
+}
+
+static int load_0x64(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 218) {
+        out->gnss_receiver_2_beidou_ephemeris.index = mipc_ld_u8(d + 0);
+        out->gnss_receiver_2_beidou_ephemeris.count = mipc_ld_u8(d + 1);
+        out->gnss_receiver_2_beidou_ephemeris.tow = mipc_ld_f64(d + 2);
+        out->gnss_receiver_2_beidou_ephemeris.week_number = mipc_ld_u16(d + 10);
+        out->gnss_receiver_2_beidou_ephemeris.satellite_id = mipc_ld_u8(d + 12);
+        out->gnss_receiver_2_beidou_ephemeris.health = mipc_ld_u8(d + 13);
+        out->gnss_receiver_2_beidou_ephemeris.iodc = mipc_ld_u8(d + 14);
+        out->gnss_receiver_2_beidou_ephemeris.iode = mipc_ld_u8(d + 15);
+        out->gnss_receiver_2_beidou_ephemeris.t_oc = mipc_ld_f64(d + 16);
+        out->gnss_receiver_2_beidou_ephemeris.af0 = mipc_ld_f64(d + 24);
+        out->gnss_receiver_2_beidou_ephemeris.af1 = mipc_ld_f64(d + 32);
+        out->gnss_receiver_2_beidou_ephemeris.af2 = mipc_ld_f64(d + 40);
+        out->gnss_receiver_2_beidou_ephemeris.t_gd = mipc_ld_f64(d + 48);
+        out->gnss_receiver_2_beidou_ephemeris.isc_l1ca = mipc_ld_f64(d + 56);
+        out->gnss_receiver_2_beidou_ephemeris.isc_l2c = mipc_ld_f64(d + 64);
+        out->gnss_receiver_2_beidou_ephemeris.t_oe = mipc_ld_f64(d + 72);
+        out->gnss_receiver_2_beidou_ephemeris.a = mipc_ld_f64(d + 80);
+        out->gnss_receiver_2_beidou_ephemeris.a_dot = mipc_ld_f64(d + 88);
+        out->gnss_receiver_2_beidou_ephemeris.mean_anomaly = mipc_ld_f64(d + 96);
+        out->gnss_receiver_2_beidou_ephemeris.delta_mean_motion = mipc_ld_f64(d + 104);
+        out->gnss_receiver_2_beidou_ephemeris.delta_mean_motion_dot = mipc_ld_f64(d + 112);
+        out->gnss_receiver_2_beidou_ephemeris.eccentricity = mipc_ld_f64(d + 120);
+        out->gnss_receiver_2_beidou_ephemeris.argument_of_perigee = mipc_ld_f64(d + 128);
+        out->gnss_receiver_2_beidou_ephemeris.omega = mipc_ld_f64(d + 136);
+        out->gnss_receiver_2_beidou_ephemeris.omega_dot = mipc_ld_f64(d + 144);
+        out->gnss_receiver_2_beidou_ephemeris.inclination = mipc_ld_f64(d + 152);
+        out->gnss_receiver_2_beidou_ephemeris.inclination_dot = mipc_ld_f64(d + 160);
+        out->gnss_receiver_2_beidou_ephemeris.c_ic = mipc_ld_f64(d + 168);
+        out->gnss_receiver_2_beidou_ephemeris.c_is = mipc_ld_f64(d + 176);
+        out->gnss_receiver_2_beidou_ephemeris.c_uc = mipc_ld_f64(d + 184);
+        out->gnss_receiver_2_beidou_ephemeris.c_us = mipc_ld_f64(d + 192);
+        out->gnss_receiver_2_beidou_ephemeris.c_rc = mipc_ld_f64(d + 200);
+        out->gnss_receiver_2_beidou_ephemeris.c_rs = mipc_ld_f64(d + 208);
+        out->gnss_receiver_2_beidou_ephemeris.valid_flags = mipc_ld_u16(d + 216);
+        return 1;
+    }
+    return mipc_gnss_receiver_2_beidou_ephemeris_decode(d, length, &out->gnss_receiver_2_beidou_ephemeris,
+                                                        NULL) == MIPC_OK;
+}
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_gnss_receiver_2_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_gnss_receiver_2_layout_members_[25] = {
+    {0x03, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_llh_position), load_0x03},
+    {0x04, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_ecef_position), load_0x04},
+    {0x05, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_ned_velocity), load_0x05},
+    {0x06, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_ecef_velocity), load_0x06},
+    {0x07, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_dop), load_0x07},
+    {0x08, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_utc_time), load_0x08},
+    {0x09, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_gps_time), load_0x09},
+    {0x0B, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_fix_info), load_0x0b},
+    {0x0D, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_hardware_status), load_0x0d},
+    {0x10, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_clock_info_2), load_0x10},
+    {0x11, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_gps_leap_seconds), load_0x11},
+    {0x12, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_sbas_info), load_0x12},
+    {0x20, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_satellite_status), load_0x20},
+    {0x22, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_raw), load_0x22},
+    {0x61, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_gps_ephemeris), load_0x61},
+    {0x62, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_glonass_ephemeris), load_0x62},
+    {0x63, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_galileo_ephemeris), load_0x63},
+    {0x64, offsetof(mipc_gnss_receiver_2_packet_t, gnss_receiver_2_beidou_ephemeris), load_0x64},
+    {0xD0, offsetof(mipc_gnss_receiver_2_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_gnss_receiver_2_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_gnss_receiver_2_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_gnss_receiver_2_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_gnss_receiver_2_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_gnss_receiver_2_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_gnss_receiver_2_packet_t, shared_external_time_delta), load_0xd8},
+};

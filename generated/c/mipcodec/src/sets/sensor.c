@@ -1416,3 +1416,273 @@ size_t mipc_sensor_decode_packet(const uint8_t *payload, size_t len, mipc_sensor
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_sensor_packet_t at packet as mipc_sensor_decode_packet does; 0 when it
+ * does not decode (the packet then takes the straight-line decoder, which gives the field to other) */
+
+static int load_0x04(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_scaled_accel.scaled_accel[0] = mipc_ld_f32(d + 0);
+        out->sensor_scaled_accel.scaled_accel[1] = mipc_ld_f32(d + 4);
+        out->sensor_scaled_accel.scaled_accel[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_scaled_accel_decode(d, length, &out->sensor_scaled_accel, NULL) == MIPC_OK;
+}
+
+static int load_0x05(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_scaled_gyro.scaled_gyro[0] = mipc_ld_f32(d + 0);
+        out->sensor_scaled_gyro.scaled_gyro[1] = mipc_ld_f32(d + 4);
+        out->sensor_scaled_gyro.scaled_gyro[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_scaled_gyro_decode(d, length, &out->sensor_scaled_gyro, NULL) == MIPC_OK;
+}
+
+static int load_0x06(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_scaled_mag.scaled_mag[0] = mipc_ld_f32(d + 0);
+        out->sensor_scaled_mag.scaled_mag[1] = mipc_ld_f32(d + 4);
+        out->sensor_scaled_mag.scaled_mag[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_scaled_mag_decode(d, length, &out->sensor_scaled_mag, NULL) == MIPC_OK;
+}
+
+static int load_0x07(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_delta_theta.delta_theta[0] = mipc_ld_f32(d + 0);
+        out->sensor_delta_theta.delta_theta[1] = mipc_ld_f32(d + 4);
+        out->sensor_delta_theta.delta_theta[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_delta_theta_decode(d, length, &out->sensor_delta_theta, NULL) == MIPC_OK;
+}
+
+static int load_0x08(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_delta_velocity.delta_velocity[0] = mipc_ld_f32(d + 0);
+        out->sensor_delta_velocity.delta_velocity[1] = mipc_ld_f32(d + 4);
+        out->sensor_delta_velocity.delta_velocity[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_delta_velocity_decode(d, length, &out->sensor_delta_velocity, NULL) == MIPC_OK;
+}
+
+static int load_0x09(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 36) {
+        out->sensor_cf_orientation_matrix.m[0] = mipc_ld_f32(d + 0);
+        out->sensor_cf_orientation_matrix.m[1] = mipc_ld_f32(d + 4);
+        out->sensor_cf_orientation_matrix.m[2] = mipc_ld_f32(d + 8);
+        out->sensor_cf_orientation_matrix.m[3] = mipc_ld_f32(d + 12);
+        out->sensor_cf_orientation_matrix.m[4] = mipc_ld_f32(d + 16);
+        out->sensor_cf_orientation_matrix.m[5] = mipc_ld_f32(d + 20);
+        out->sensor_cf_orientation_matrix.m[6] = mipc_ld_f32(d + 24);
+        out->sensor_cf_orientation_matrix.m[7] = mipc_ld_f32(d + 28);
+        out->sensor_cf_orientation_matrix.m[8] = mipc_ld_f32(d + 32);
+        return 1;
+    }
+    return mipc_sensor_cf_orientation_matrix_decode(d, length, &out->sensor_cf_orientation_matrix, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x0a(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 16) {
+        out->sensor_cf_quaternion.q[0] = mipc_ld_f32(d + 0);
+        out->sensor_cf_quaternion.q[1] = mipc_ld_f32(d + 4);
+        out->sensor_cf_quaternion.q[2] = mipc_ld_f32(d + 8);
+        out->sensor_cf_quaternion.q[3] = mipc_ld_f32(d + 12);
+        return 1;
+    }
+    return mipc_sensor_cf_quaternion_decode(d, length, &out->sensor_cf_quaternion, NULL) == MIPC_OK;
+}
+
+static int load_0x0c(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_cf_euler_angles.roll = mipc_ld_f32(d + 0);
+        out->sensor_cf_euler_angles.pitch = mipc_ld_f32(d + 4);
+        out->sensor_cf_euler_angles.yaw = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_cf_euler_angles_decode(d, length, &out->sensor_cf_euler_angles, NULL) == MIPC_OK;
+}
+
+static int load_0x10(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_cf_stabilized_north.stabilized_north[0] = mipc_ld_f32(d + 0);
+        out->sensor_cf_stabilized_north.stabilized_north[1] = mipc_ld_f32(d + 4);
+        out->sensor_cf_stabilized_north.stabilized_north[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_cf_stabilized_north_decode(d, length, &out->sensor_cf_stabilized_north, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x11(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_cf_stabilized_up.stabilized_up[0] = mipc_ld_f32(d + 0);
+        out->sensor_cf_stabilized_up.stabilized_up[1] = mipc_ld_f32(d + 4);
+        out->sensor_cf_stabilized_up.stabilized_up[2] = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_cf_stabilized_up_decode(d, length, &out->sensor_cf_stabilized_up, NULL) == MIPC_OK;
+}
+
+static int load_0x12(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->sensor_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->sensor_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_sensor_gps_timestamp_decode(d, length, &out->sensor_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0x14(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->sensor_temperature_statistics.min_temp = mipc_ld_f32(d + 0);
+        out->sensor_temperature_statistics.max_temp = mipc_ld_f32(d + 4);
+        out->sensor_temperature_statistics.mean_temp = mipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mipc_sensor_temperature_statistics_decode(d, length, &out->sensor_temperature_statistics, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0x17(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 4) {
+        out->sensor_scaled_pressure.scaled_pressure = mipc_ld_f32(d + 0);
+        return 1;
+    }
+    return mipc_sensor_scaled_pressure_decode(d, length, &out->sensor_scaled_pressure, NULL) == MIPC_OK;
+}
+
+static int load_0x18(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 2) {
+        out->sensor_overrange_status.status = mipc_ld_u16(d + 0);
+        return 1;
+    }
+    return mipc_sensor_overrange_status_decode(d, length, &out->sensor_overrange_status, NULL) == MIPC_OK;
+}
+
+static int load_0x40(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 10) {
+        out->sensor_odometer_data.speed = mipc_ld_f32(d + 0);
+        out->sensor_odometer_data.uncertainty = mipc_ld_f32(d + 4);
+        out->sensor_odometer_data.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_sensor_odometer_data_decode(d, length, &out->sensor_odometer_data, NULL) == MIPC_OK;
+}
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_sensor_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_sensor_layout_members_[22] = {
+    {0x04, offsetof(mipc_sensor_packet_t, sensor_scaled_accel), load_0x04},
+    {0x05, offsetof(mipc_sensor_packet_t, sensor_scaled_gyro), load_0x05},
+    {0x06, offsetof(mipc_sensor_packet_t, sensor_scaled_mag), load_0x06},
+    {0x07, offsetof(mipc_sensor_packet_t, sensor_delta_theta), load_0x07},
+    {0x08, offsetof(mipc_sensor_packet_t, sensor_delta_velocity), load_0x08},
+    {0x09, offsetof(mipc_sensor_packet_t, sensor_cf_orientation_matrix), load_0x09},
+    {0x0A, offsetof(mipc_sensor_packet_t, sensor_cf_quaternion), load_0x0a},
+    {0x0C, offsetof(mipc_sensor_packet_t, sensor_cf_euler_angles), load_0x0c},
+    {0x10, offsetof(mipc_sensor_packet_t, sensor_cf_stabilized_north), load_0x10},
+    {0x11, offsetof(mipc_sensor_packet_t, sensor_cf_stabilized_up), load_0x11},
+    {0x12, offsetof(mipc_sensor_packet_t, sensor_gps_timestamp), load_0x12},
+    {0x14, offsetof(mipc_sensor_packet_t, sensor_temperature_statistics), load_0x14},
+    {0x17, offsetof(mipc_sensor_packet_t, sensor_scaled_pressure), load_0x17},
+    {0x18, offsetof(mipc_sensor_packet_t, sensor_overrange_status), load_0x18},
+    {0x40, offsetof(mipc_sensor_packet_t, sensor_odometer_data), load_0x40},
+    {0xD0, offsetof(mipc_sensor_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_sensor_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_sensor_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_sensor_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_sensor_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_sensor_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_sensor_packet_t, shared_external_time_delta), load_0xd8},
+};

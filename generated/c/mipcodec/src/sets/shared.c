@@ -604,3 +604,87 @@ size_t mipc_shared_decode_packet(const uint8_t *payload, size_t len, mipc_shared
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mipc_shared_packet_t at packet as mipc_shared_decode_packet does; 0 when it
+ * does not decode (the packet then takes the straight-line decoder, which gives the field to other) */
+
+static int load_0xd0(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 1) {
+        out->shared_event_source.trigger_id = mipc_ld_u8(d + 0);
+        return 1;
+    }
+    return mipc_shared_event_source_decode(d, length, &out->shared_event_source, NULL) == MIPC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 12) {
+        out->shared_gps_timestamp.tow = mipc_ld_f64(d + 0);
+        out->shared_gps_timestamp.week_number = mipc_ld_u16(d + 8);
+        out->shared_gps_timestamp.valid_flags = mipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mipc_shared_gps_timestamp_decode(d, length, &out->shared_gps_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd4(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_delta_time.seconds = mipc_ld_f64(d + 0);
+        return 1;
+    }
+    return mipc_shared_delta_time_decode(d, length, &out->shared_delta_time, NULL) == MIPC_OK;
+}
+
+static int load_0xd5(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_timestamp_decode(d, length, &out->shared_reference_timestamp, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd6(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_reference_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        return 1;
+    }
+    return mipc_shared_reference_time_delta_decode(d, length, &out->shared_reference_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+static int load_0xd7(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_timestamp.nanoseconds = mipc_ld_u64(d + 0);
+        out->shared_external_timestamp.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_timestamp_decode(d, length, &out->shared_external_timestamp, NULL) == MIPC_OK;
+}
+
+static int load_0xd8(const uint8_t *d, size_t length, void *packet) {
+    mipc_shared_packet_t *out = packet;
+    if (length == 10) {
+        out->shared_external_time_delta.dt_nanos = mipc_ld_u64(d + 0);
+        out->shared_external_time_delta.valid_flags = mipc_ld_u16(d + 8);
+        return 1;
+    }
+    return mipc_shared_external_time_delta_decode(d, length, &out->shared_external_time_delta, NULL) ==
+           MIPC_OK;
+}
+
+const mipc_layout_member_t mipc_shared_layout_members_[7] = {
+    {0xD0, offsetof(mipc_shared_packet_t, shared_event_source), load_0xd0},
+    {0xD3, offsetof(mipc_shared_packet_t, shared_gps_timestamp), load_0xd3},
+    {0xD4, offsetof(mipc_shared_packet_t, shared_delta_time), load_0xd4},
+    {0xD5, offsetof(mipc_shared_packet_t, shared_reference_timestamp), load_0xd5},
+    {0xD6, offsetof(mipc_shared_packet_t, shared_reference_time_delta), load_0xd6},
+    {0xD7, offsetof(mipc_shared_packet_t, shared_external_timestamp), load_0xd7},
+    {0xD8, offsetof(mipc_shared_packet_t, shared_external_time_delta), load_0xd8},
+};

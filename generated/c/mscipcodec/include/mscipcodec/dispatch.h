@@ -210,6 +210,18 @@ typedef struct {
 const mscipc_packet_index_t *mscipc_decode_packet(const uint8_t *packet, mscipc_packet_t *out,
                                                   mscipc_field_entry_fn other, void *ctx);
 
+/**
+ * mscipc_decode_packet through a layout cache (issue 38), with the same contract and results: a
+ * packet whose shape (set, payload length, every field header) is in the cache is decoded at the
+ * shape's offsets, without the header walk and the dispatch per descriptor; any other packet
+ * takes mscipc_decode_packet, and its shape is recorded (round-robin over
+ * MSCIPC_LAYOUT_CACHE_SHAPES slots) when every entry was decoded into a member. cache: one per
+ * stream, initialised with mscipc_layout_cache_init; fixed size, no allocation.
+ */
+const mscipc_packet_index_t *mscipc_decode_packet_cached(mscipc_layout_cache_t *cache, const uint8_t *packet,
+                                                         mscipc_packet_t *out, mscipc_field_entry_fn other,
+                                                         void *ctx);
+
 /** Encodes the data of a decoded field (no field header). */
 mscipc_status_t mscipc_encode_field(const mscipc_field_value_t *value, uint8_t *buf, size_t cap,
                                     size_t *len_out);

@@ -805,3 +805,119 @@ size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (mscipc_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the mscipc_imu_data_packet_t at packet as mscipc_imu_data_decode_packet does; 0
+ * when it does not decode (the packet then takes the straight-line decoder, which gives the field to other)
+ */
+
+static int load_0x81(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_scaled_accel.accel[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_scaled_accel.accel[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_scaled_accel.accel[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_accel_decode(d, length, &out->imu_data_scaled_accel, NULL) == MSCIPC_OK;
+}
+
+static int load_0x82(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_scaled_gyro.gyro[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_scaled_gyro.gyro[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_scaled_gyro.gyro[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_gyro_decode(d, length, &out->imu_data_scaled_gyro, NULL) == MSCIPC_OK;
+}
+
+static int load_0x83(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_scaled_mag.mag[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_scaled_mag.mag[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_scaled_mag.mag[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_mag_decode(d, length, &out->imu_data_scaled_mag, NULL) == MSCIPC_OK;
+}
+
+static int load_0x84(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_delta_theta.delta_theta[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_delta_theta.delta_theta[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_delta_theta.delta_theta[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_delta_theta_decode(d, length, &out->imu_data_delta_theta, NULL) == MSCIPC_OK;
+}
+
+static int load_0x85(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_delta_velocity.delta_velocity[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_delta_velocity.delta_velocity[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_delta_velocity.delta_velocity[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_delta_velocity_decode(d, length, &out->imu_data_delta_velocity, NULL) == MSCIPC_OK;
+}
+
+static int load_0x86(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 4) {
+        out->imu_data_scaled_pressure.pressure = mscipc_ld_f32(d + 0);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_pressure_decode(d, length, &out->imu_data_scaled_pressure, NULL) ==
+           MSCIPC_OK;
+}
+
+static int load_0x87(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 4) {
+        out->imu_data_scaled_temperature.temperature = mscipc_ld_f32(d + 0);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_temperature_decode(d, length, &out->imu_data_scaled_temperature, NULL) ==
+           MSCIPC_OK;
+}
+
+static int load_0x88(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_gps_correlated_time.seconds = mscipc_ld_f64(d + 0);
+        out->imu_data_gps_correlated_time.week = mscipc_ld_u16(d + 8);
+        out->imu_data_gps_correlated_time.flags = mscipc_ld_u16(d + 10);
+        return 1;
+    }
+    return mscipc_imu_data_gps_correlated_time_decode(d, length, &out->imu_data_gps_correlated_time, NULL) ==
+           MSCIPC_OK;
+}
+
+static int load_0x89(const uint8_t *d, size_t length, void *packet) {
+    mscipc_imu_data_packet_t *out = packet;
+    if (length == 12) {
+        out->imu_data_scaled_aux_accel.accel[0] = mscipc_ld_f32(d + 0);
+        out->imu_data_scaled_aux_accel.accel[1] = mscipc_ld_f32(d + 4);
+        out->imu_data_scaled_aux_accel.accel[2] = mscipc_ld_f32(d + 8);
+        return 1;
+    }
+    return mscipc_imu_data_scaled_aux_accel_decode(d, length, &out->imu_data_scaled_aux_accel, NULL) ==
+           MSCIPC_OK;
+}
+
+const mscipc_layout_member_t mscipc_imu_data_layout_members_[9] = {
+    {0x81, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_accel), load_0x81},
+    {0x82, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_gyro), load_0x82},
+    {0x83, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_mag), load_0x83},
+    {0x84, offsetof(mscipc_imu_data_packet_t, imu_data_delta_theta), load_0x84},
+    {0x85, offsetof(mscipc_imu_data_packet_t, imu_data_delta_velocity), load_0x85},
+    {0x86, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_pressure), load_0x86},
+    {0x87, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_temperature), load_0x87},
+    {0x88, offsetof(mscipc_imu_data_packet_t, imu_data_gps_correlated_time), load_0x88},
+    {0x89, offsetof(mscipc_imu_data_packet_t, imu_data_scaled_aux_accel), load_0x89},
+};

@@ -177,6 +177,10 @@ typedef struct {
 size_t mipc_gnss_external_decode_packet(const uint8_t *payload, size_t len, mipc_gnss_external_packet_t *out,
                                         mipc_field_entry_fn other, void *ctx);
 
+/* Private (mipc_decode_packet_cached): the members of mipc_gnss_external_packet_t: descriptor, offset,
+ * loader. */
+extern const mipc_layout_member_t mipc_gnss_external_layout_members_[12];
+
 #ifdef __cplusplus
 }
 #endif

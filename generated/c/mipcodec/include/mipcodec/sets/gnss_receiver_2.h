@@ -619,6 +619,10 @@ size_t mipc_gnss_receiver_2_decode_packet(const uint8_t *payload, size_t len,
                                           mipc_gnss_receiver_2_packet_t *out, mipc_field_entry_fn other,
                                           void *ctx);
 
+/* Private (mipc_decode_packet_cached): the members of mipc_gnss_receiver_2_packet_t: descriptor, offset,
+ * loader. */
+extern const mipc_layout_member_t mipc_gnss_receiver_2_layout_members_[25];
+
 #ifdef __cplusplus
 }
 #endif

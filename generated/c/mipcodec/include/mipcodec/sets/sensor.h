@@ -359,6 +359,10 @@ typedef struct {
 size_t mipc_sensor_decode_packet(const uint8_t *payload, size_t len, mipc_sensor_packet_t *out,
                                  mipc_field_entry_fn other, void *ctx);
 
+/* Private (mipc_decode_packet_cached): the members of mipc_sensor_packet_t: descriptor, offset,
+ * loader. */
+extern const mipc_layout_member_t mipc_sensor_layout_members_[22];
+
 #ifdef __cplusplus
 }
 #endif

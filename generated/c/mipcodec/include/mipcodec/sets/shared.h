@@ -186,6 +186,10 @@ typedef struct {
 size_t mipc_shared_decode_packet(const uint8_t *payload, size_t len, mipc_shared_packet_t *out,
                                  mipc_field_entry_fn other, void *ctx);
 
+/* Private (mipc_decode_packet_cached): the members of mipc_shared_packet_t: descriptor, offset,
+ * loader. */
+extern const mipc_layout_member_t mipc_shared_layout_members_[7];
+
 #ifdef __cplusplus
 }
 #endif

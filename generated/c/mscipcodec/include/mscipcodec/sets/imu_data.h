@@ -216,6 +216,10 @@ typedef struct {
 size_t mscipc_imu_data_decode_packet(const uint8_t *payload, size_t len, mscipc_imu_data_packet_t *out,
                                      mscipc_field_entry_fn other, void *ctx);
 
+/* Private (mscipc_decode_packet_cached): the members of mscipc_imu_data_packet_t: descriptor, offset,
+ * loader. */
+extern const mscipc_layout_member_t mscipc_imu_data_layout_members_[9];
+
 #ifdef __cplusplus
 }
 #endif

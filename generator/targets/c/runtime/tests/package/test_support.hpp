@@ -111,6 +111,70 @@ inline std::vector<uint8_t> encoded(const codec_field_value_t &value) {
     return out;
 }
 
+// The encoding of the i-th member a packet index holds (the member copied into a general value of
+// the field's only layout, as far as the packet struct `whole` goes); empty if it does not encode.
+inline std::vector<uint8_t> member_encoding(uint8_t set, const codec_packet_index_t *index, size_t i,
+                                            const codec_packet_t &whole) {
+    const codec_field_info_t *info = codec_find_field(set, index->fields[i].descriptor, nullptr);
+    if (info == nullptr || info->layout_count != 1) {
+        return {};
+    }
+    static codec_field_value_t value;
+    const uint8_t *member = static_cast<const uint8_t *>(codec_packet_value(index, i));
+    const size_t room = static_cast<size_t>(reinterpret_cast<const uint8_t *>(&whole + 1) - member);
+    std::memset(&value, 0, sizeof value);
+    value.id = info->first_layout;
+    std::memcpy(&value.u, member, room < sizeof value.u ? room : sizeof value.u);
+    return encoded(value);
+}
+
+// The layout cache (codec_decode_packet_cached, issue 38) against the straight-line decoder on one
+// packet (its index and other entries given), twice through the same cache (the second time by
+// the packet's shape, when its first decode recorded one, which every packet decoded whole into
+// 1..CODEC_LAYOUT_SHAPE_FIELDS members must have): the same index, members that encode to the
+// same bytes, the same other entries. Returns "" when they agree, else what differs.
+inline std::string cached_mismatch(codec_layout_cache_t *cache, const std::vector<uint8_t> &pk,
+                                   const codec_packet_index_t *index, const codec_packet_t &decoded,
+                                   const StraightLine &sl) {
+    static codec_packet_t via;
+    const uint8_t set = codec_packet_set(pk.data());
+    for (int pass = 0; pass < 2; pass++) {
+        StraightLine cl;
+        const codec_packet_index_t *ci = codec_decode_packet_cached(cache, pk.data(), &via, note_other, &cl);
+        const std::string when = pass == 0 ? "first decode: " : "second decode: ";
+        if ((ci == nullptr) != (index == nullptr)) {
+            return when + "an index where the straight-line decoder has none, or none where it has one";
+        }
+        if (cl.other != sl.other) {
+            return when + "other entries differ";
+        }
+        if (index == nullptr) {
+            continue;
+        }
+        if (via.set != decoded.set || ci->count != index->count ||
+            std::memcmp(ci->present, index->present, sizeof ci->present) != 0) {
+            return when + "another index (set, count or present bits)";
+        }
+        for (size_t i = 0; i < index->count; i++) {
+            if (ci->fields[i].descriptor != index->fields[i].descriptor ||
+                ci->fields[i].offset != index->fields[i].offset) {
+                return when + "index entry " + std::to_string(i) + " differs";
+            }
+            const std::vector<uint8_t> want = member_encoding(set, index, i, decoded);
+            if (want.empty() || member_encoding(set, ci, i, via) != want) {
+                return when + "descriptor " + std::to_string(index->fields[i].descriptor) + ": another value";
+            }
+        }
+        const bool whole = sl.other.empty() && index->count >= 1 && index->count <= CODEC_LAYOUT_SHAPE_FIELDS;
+        if (pass == 0 && whole &&
+            codec_layout_cache_find_(cache, set, codec_packet_payload(pk.data()),
+                                     codec_packet_payload_length(pk.data())) == nullptr) {
+            return "a packet decoded whole into its members has no cached shape";
+        }
+    }
+    return "";
+}
+
 // The straight-line decoder (codec_decode_packet, issue 38) against the general dispatch on
 // every packet of a stream: each field the general path decodes with a field's only layout (the
 // first time its descriptor occurs in the packet) is decoded, in packet order, to a value that
@@ -130,6 +194,8 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
     codec_parser_feed(&parser, bytes.data(), bytes.size(), keep, &packets);
     codec_parser_flush(&parser, keep, &packets);
     static codec_packet_t decoded;
+    static codec_layout_cache_t cache; // one per stream, as a program has
+    codec_layout_cache_init(&cache);
     for (const std::vector<uint8_t> &pk : packets.list) {
         const uint8_t set = codec_packet_set(pk.data());
         StraightLine sl;
@@ -175,6 +241,27 @@ inline std::string straight_line_mismatch(const std::vector<uint8_t> &bytes) {
         }
         if (other != sl.other) {
             return "set " + std::to_string(set) + ": other entries differ";
+        }
+        const std::string cached = cached_mismatch(&cache, pk, index, decoded, sl);
+        if (!cached.empty()) {
+            return "set " + std::to_string(set) + ": layout cache: " + cached;
+        }
+        // The same shape with other data (every data byte 0xFF: a bool, enum or count that no
+        // longer decodes): the cache, which now holds the shape, must give what the straight-line
+        // decoder gives.
+        std::vector<uint8_t> mutant = pk;
+        codec_field_iter_init(&it, set, codec_packet_payload(pk.data()),
+                              codec_packet_payload_length(pk.data()));
+        while (codec_field_iter_next(&it, &e)) {
+            if (e.kind == CODEC_ENTRY_FIELD && e.length > 0) {
+                std::memset(&mutant[static_cast<size_t>(e.data - pk.data())], 0xFF, e.length);
+            }
+        }
+        StraightLine ms;
+        const codec_packet_index_t *mi = codec_decode_packet(mutant.data(), &decoded, note_other, &ms);
+        const std::string other_data = cached_mismatch(&cache, mutant, mi, decoded, ms);
+        if (!other_data.empty()) {
+            return "set " + std::to_string(set) + ": layout cache, the shape with other data: " + other_data;
         }
     }
     return "";

@@ -407,6 +407,106 @@ const democ_packet_index_t *democ_decode_packet(const uint8_t *packet, democ_pac
     return NULL;
 }
 
+/* The other of a cached decode's fallback: passes each entry on and notes the payload offsets of
+ * the fields (a trailing entry, or more fields than a shape holds, and the packet is not recorded). */
+typedef struct {
+    democ_field_entry_fn other;
+    void *ctx;
+    size_t count;
+    int whole; /* every entry a field, at most DEMOC_LAYOUT_SHAPE_FIELDS */
+    size_t pos[DEMOC_LAYOUT_SHAPE_FIELDS];
+} noted_other_t;
+
+static void note_other(void *ctx, const democ_field_entry_t *entry) {
+    noted_other_t *c = ctx;
+    if (entry->kind != DEMOC_ENTRY_FIELD || c->count == DEMOC_LAYOUT_SHAPE_FIELDS) {
+        c->whole = 0;
+    } else {
+        c->pos[c->count++] = entry->offset;
+    }
+    if (c->other) {
+        c->other(c->ctx, entry);
+    }
+}
+
+/* The members of a set's packet struct (democ_layout_cache_record_); count 0: none. */
+static const democ_layout_member_t *shape_members(uint8_t set, size_t *count) {
+    switch (set) {
+    case 0x90:
+        *count = 2;
+        return democ_data_layout_members_;
+    case 0x91:
+        *count = 2;
+        return democ_receiver_1_layout_members_;
+    case 0x92:
+        *count = 2;
+        return democ_receiver_2_layout_members_;
+    case 0xFF:
+        *count = 1;
+        return democ_shared_layout_members_;
+    default:
+        *count = 0;
+        return NULL;
+    }
+}
+
+/* A packet whose shape is not the last one hit: the other cached shapes, else the straight-line
+ * decoder (and its shape recorded). */
+static DEMOC_NOINLINE const democ_packet_index_t *decode_uncached(democ_layout_cache_t *cache,
+                                                                  const uint8_t *packet, democ_packet_t *out,
+                                                                  democ_field_entry_fn other, void *ctx) {
+    const uint8_t set = democ_packet_set(packet);
+    const uint8_t *payload = democ_packet_payload(packet);
+    const size_t len = democ_packet_payload_length(packet);
+    const democ_layout_shape_t *shape = democ_layout_cache_find_(cache, set, payload, len);
+    const democ_packet_index_t *index;
+    noted_other_t noted;
+    if (shape != NULL &&
+        democ_layout_shape_decode_(shape, payload, (democ_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            democ_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const democ_packet_index_t *)(const void *)&out->u;
+    }
+    noted.other = other;
+    noted.ctx = ctx;
+    noted.count = 0;
+    noted.whole = 1;
+    index = democ_decode_packet(packet, out, note_other, &noted);
+    if (index != NULL && noted.whole && shape == NULL) {
+        size_t count;
+        const democ_layout_member_t *members = shape_members(set, &count);
+        if (count != 0) {
+            democ_layout_cache_record_(cache, set, payload, len, index, noted.pos, noted.count, members,
+                                       count);
+        }
+    }
+    return index;
+}
+
+/* Every packet struct of out->u starts with its index: a pointer to the union converts to one to
+ * each member, and that to one to its first member (C99 6.7.2.1). */
+const democ_packet_index_t *democ_decode_packet_cached(democ_layout_cache_t *cache, const uint8_t *packet,
+                                                       democ_packet_t *out, democ_field_entry_fn other,
+                                                       void *ctx) {
+    const uint8_t set = democ_packet_set(packet);
+    const uint8_t *payload = democ_packet_payload(packet);
+    const democ_layout_shape_t *shape;
+    assert(cache != NULL);
+    assert(out != NULL);
+    shape = &cache->shapes[cache->last % DEMOC_LAYOUT_CACHE_SHAPES];
+    if (democ_layout_shape_matches_(shape, set, payload, democ_packet_payload_length(packet)) &&
+        democ_layout_shape_decode_(shape, payload, (democ_packet_index_t *)(void *)&out->u)) {
+        out->set = set;
+        if (shape->others != 0 && other != NULL) {
+            democ_layout_shape_others_(shape, payload, other, ctx);
+        }
+        return (const democ_packet_index_t *)(const void *)&out->u;
+    }
+    return decode_uncached(cache, packet, out, other, ctx);
+}
+
 democ_status_t democ_encode_field(const democ_field_value_t *value, uint8_t *buf, size_t cap,
                                   size_t *len_out) {
     assert(value != NULL);

@@ -143,6 +143,18 @@ typedef struct {
 const democ_packet_index_t *democ_decode_packet(const uint8_t *packet, democ_packet_t *out,
                                                 democ_field_entry_fn other, void *ctx);
 
+/**
+ * democ_decode_packet through a layout cache (issue 38), with the same contract and results: a
+ * packet whose shape (set, payload length, every field header) is in the cache is decoded at the
+ * shape's offsets, without the header walk and the dispatch per descriptor; any other packet
+ * takes democ_decode_packet, and its shape is recorded (round-robin over
+ * DEMOC_LAYOUT_CACHE_SHAPES slots) when every entry was decoded into a member. cache: one per
+ * stream, initialised with democ_layout_cache_init; fixed size, no allocation.
+ */
+const democ_packet_index_t *democ_decode_packet_cached(democ_layout_cache_t *cache, const uint8_t *packet,
+                                                       democ_packet_t *out, democ_field_entry_fn other,
+                                                       void *ctx);
+
 /** Encodes the data of a decoded field (no field header). */
 democ_status_t democ_encode_field(const democ_field_value_t *value, uint8_t *buf, size_t cap,
                                   size_t *len_out);

@@ -179,3 +179,36 @@ size_t democ_data_decode_packet(const uint8_t *payload, size_t len, democ_data_p
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (democ_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the democ_data_packet_t at packet as democ_data_decode_packet does; 0 when it does
+ * not decode (the packet then takes the straight-line decoder, which gives the field to other) */
+
+static int load_0x01(const uint8_t *d, size_t length, void *packet) {
+    democ_data_packet_t *out = packet;
+    if (length == 29) {
+        out->data_sample.quat[0] = democ_ld_f32(d + 0);
+        out->data_sample.quat[1] = democ_ld_f32(d + 4);
+        out->data_sample.quat[2] = democ_ld_f32(d + 8);
+        out->data_sample.quat[3] = democ_ld_f32(d + 12);
+        out->data_sample.big = democ_ld_u64(d + 16);
+        out->data_sample.small = democ_ld_s8(d + 24);
+        out->data_sample.f = democ_ld_f32(d + 25);
+        return 1;
+    }
+    return democ_data_sample_decode(d, length, &out->data_sample, NULL) == DEMOC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    democ_data_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_timestamp.nanoseconds = democ_ld_u64(d + 0);
+        return 1;
+    }
+    return democ_shared_timestamp_decode(d, length, &out->shared_timestamp, NULL) == DEMOC_OK;
+}
+
+const democ_layout_member_t democ_data_layout_members_[2] = {
+    {0x01, offsetof(democ_data_packet_t, data_sample), load_0x01},
+    {0xD3, offsetof(democ_data_packet_t, shared_timestamp), load_0xd3},
+};

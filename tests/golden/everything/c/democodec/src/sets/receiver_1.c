@@ -158,3 +158,33 @@ size_t democ_receiver_1_decode_packet(const uint8_t *payload, size_t len, democ_
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (democ_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the democ_receiver_1_packet_t at packet as democ_receiver_1_decode_packet does; 0
+ * when it does not decode (the packet then takes the straight-line decoder, which gives the field to other)
+ */
+
+static int load_0x03(const uint8_t *d, size_t length, void *packet) {
+    democ_receiver_1_packet_t *out = packet;
+    if (length == 18) {
+        out->receiver_1_llh_position.latitude = democ_ld_f64(d + 0);
+        out->receiver_1_llh_position.longitude = democ_ld_f64(d + 8);
+        out->receiver_1_llh_position.valid_flags = democ_ld_u16(d + 16);
+        return 1;
+    }
+    return democ_receiver_1_llh_position_decode(d, length, &out->receiver_1_llh_position, NULL) == DEMOC_OK;
+}
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    democ_receiver_1_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_timestamp.nanoseconds = democ_ld_u64(d + 0);
+        return 1;
+    }
+    return democ_shared_timestamp_decode(d, length, &out->shared_timestamp, NULL) == DEMOC_OK;
+}
+
+const democ_layout_member_t democ_receiver_1_layout_members_[2] = {
+    {0x03, offsetof(democ_receiver_1_packet_t, receiver_1_llh_position), load_0x03},
+    {0xD3, offsetof(democ_receiver_1_packet_t, shared_timestamp), load_0xd3},
+};

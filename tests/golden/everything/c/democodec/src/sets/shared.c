@@ -127,3 +127,20 @@ size_t democ_shared_decode_packet(const uint8_t *payload, size_t len, democ_shar
     out->index.count = n;
     return n;
 }
+
+/* ---- the members' loaders (democ_decode_packet_cached, issue 38): each decodes its field's
+ * data into its member of the democ_shared_packet_t at packet as democ_shared_decode_packet does; 0 when it
+ * does not decode (the packet then takes the straight-line decoder, which gives the field to other) */
+
+static int load_0xd3(const uint8_t *d, size_t length, void *packet) {
+    democ_shared_packet_t *out = packet;
+    if (length == 8) {
+        out->shared_timestamp.nanoseconds = democ_ld_u64(d + 0);
+        return 1;
+    }
+    return democ_shared_timestamp_decode(d, length, &out->shared_timestamp, NULL) == DEMOC_OK;
+}
+
+const democ_layout_member_t democ_shared_layout_members_[1] = {
+    {0xD3, offsetof(democ_shared_packet_t, shared_timestamp), load_0xd3},
+};

@@ -57,6 +57,10 @@ typedef struct {
 size_t democ_data_decode_packet(const uint8_t *payload, size_t len, democ_data_packet_t *out,
                                 democ_field_entry_fn other, void *ctx);
 
+/* Private (democ_decode_packet_cached): the members of democ_data_packet_t: descriptor, offset,
+ * loader. */
+extern const democ_layout_member_t democ_data_layout_members_[2];
+
 #ifdef __cplusplus
 }
 #endif

@@ -52,6 +52,10 @@ typedef struct {
 size_t democ_shared_decode_packet(const uint8_t *payload, size_t len, democ_shared_packet_t *out,
                                   democ_field_entry_fn other, void *ctx);
 
+/* Private (democ_decode_packet_cached): the members of democ_shared_packet_t: descriptor, offset,
+ * loader. */
+extern const democ_layout_member_t democ_shared_layout_members_[1];
+
 #ifdef __cplusplus
 }
 #endif
