@@ -137,6 +137,34 @@ def _hex(v: int, width: int = 2) -> str:
     return "0x%0*X" % (width, v)
 
 
+def _packet_plan(proto: dict, s: dict) -> dict | None:
+    """TEMPORARY until generator/packet_plan.py (helper cppdecode) is merged."""
+    if s["kind"] != "data":
+        return None
+    table = next(t["fields"] for t in proto["lookup"]["sets"] if t["set"] == s["id"])
+    sets = {x["id"]: x for x in proto["sets"]}
+    reserved = {(r["applies_to"], r["id"]): r for r in proto["reserved_fields"]}
+    members = []
+    for e in table:
+        if e["source"] == "reserved":
+            f = reserved[(s["kind"], e["descriptor"])]
+        else:
+            f = next(x for x in sets[e["set"]]["fields"] if x["id"] == e["descriptor"])
+        if len(f["variants"]) != 1:
+            continue
+        v = f["variants"][0]
+        members.append(
+            {
+                "descriptor": e["descriptor"],
+                "name": e["name"],
+                "set": None if e["source"] == "reserved" else e["set"],
+                "source": e["source"],
+                "size": v["size"]["min"] if v["size"]["fixed"] else None,
+            }
+        )
+    return {"members": members}
+
+
 # ---------------------------------------------------------------------------------------- model
 class _Protocol:
     """Everything the templates need for one protocol, computed from the IR."""
@@ -428,7 +456,40 @@ class _Protocol:
             "shared": s["shared"],
             "decoders": self.set_decoders(s),
             "feature": set_feature(self.set_module(s)),
+            "packet": self.packet_model(s),
         }
+
+    def packet_model(self, s: dict) -> dict | None:
+        """Set s's straight-line packet decoder (set.rs.j2 `Packet`, `decode_packet`; issue 38),
+        None for a set that is not a data set. The members are the packet plan's
+        (generator/packet_plan.py, shared with C and C++): one per entry of the set's lookup whose
+        field has one layout. Each member is a value of the field's struct, named after the field
+        (with the defining module's name before it when two entries would share a name)."""
+        plan = _packet_plan(self.proto, s)
+        if plan is None:
+            return None
+        sets = {x["id"]: x for x in self.proto["sets"]}
+        names = [m["name"] for m in plan["members"]]
+        members = []
+        for m in plan["members"]:
+            module = "reserved" if m["set"] is None else self.set_module(sets[m["set"]])
+            name = m["name"] if names.count(m["name"]) == 1 else f"{module}_{m['name']}"
+            typ = f"crate::{module}::{camel(m['name'])}"
+            if m["set"] is None:
+                value = f"crate::FieldValue::Reserved(crate::reserved::ReservedField::{camel(m['name'])}(self.{ident(name)}))"
+            else:
+                value = f"crate::FieldValue::{camel(module)}(crate::{module}::SetField::{camel(m['name'])}(self.{ident(name)}))"
+            members.append(
+                {
+                    "descriptor": _hex(m["descriptor"]),
+                    "member": ident(name),
+                    "type": typ,
+                    "value": value,
+                    "source": m["source"],
+                    "fixed_size": m["size"],
+                }
+            )
+        return {"members": members}
 
     def set_decoders(self, s: dict) -> list[dict]:
         """The entries of set s's decoder table: every descriptor that the IR's `lookup` resolves
@@ -879,6 +940,7 @@ _TEMPLATES = [
     ("types.rs.j2", "src/types.rs"),
     ("reserved.rs.j2", "src/reserved.rs"),
     ("dispatch.rs.j2", "src/dispatch.rs"),
+    ("packets.rs.j2", "src/packets.rs"),
     ("test_vectors.rs.j2", "tests/vectors.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
     ("example_getting_started.rs.j2", "examples/getting_started.rs"),

@@ -4621,3 +4621,281 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x03.
+    pub llh_position: crate::gnss_receiver_2::LlhPosition,
+    /// Field 0x04.
+    pub ecef_position: crate::gnss_receiver_2::EcefPosition,
+    /// Field 0x05.
+    pub ned_velocity: crate::gnss_receiver_2::NedVelocity,
+    /// Field 0x06.
+    pub ecef_velocity: crate::gnss_receiver_2::EcefVelocity,
+    /// Field 0x07.
+    pub dop: crate::gnss_receiver_2::Dop,
+    /// Field 0x08.
+    pub utc_time: crate::gnss_receiver_2::UtcTime,
+    /// Field 0x09.
+    pub gps_time: crate::gnss_receiver_2::GpsTime,
+    /// Field 0x0B.
+    pub fix_info: crate::gnss_receiver_2::FixInfo,
+    /// Field 0x0D.
+    pub hardware_status: crate::gnss_receiver_2::HardwareStatus,
+    /// Field 0x10.
+    pub clock_info_2: crate::gnss_receiver_2::ClockInfo2,
+    /// Field 0x11.
+    pub gps_leap_seconds: crate::gnss_receiver_2::GpsLeapSeconds,
+    /// Field 0x12.
+    pub sbas_info: crate::gnss_receiver_2::SbasInfo,
+    /// Field 0x20.
+    pub satellite_status: crate::gnss_receiver_2::SatelliteStatus,
+    /// Field 0x22.
+    pub raw: crate::gnss_receiver_2::Raw,
+    /// Field 0x61.
+    pub gps_ephemeris: crate::gnss_receiver_2::GpsEphemeris,
+    /// Field 0x62.
+    pub glonass_ephemeris: crate::gnss_receiver_2::GlonassEphemeris,
+    /// Field 0x63.
+    pub galileo_ephemeris: crate::gnss_receiver_2::GalileoEphemeris,
+    /// Field 0x64.
+    pub beidou_ephemeris: crate::gnss_receiver_2::BeidouEphemeris,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        llh_position: <crate::gnss_receiver_2::LlhPosition as crate::wire::Wire>::ZERO,
+        ecef_position: <crate::gnss_receiver_2::EcefPosition as crate::wire::Wire>::ZERO,
+        ned_velocity: <crate::gnss_receiver_2::NedVelocity as crate::wire::Wire>::ZERO,
+        ecef_velocity: <crate::gnss_receiver_2::EcefVelocity as crate::wire::Wire>::ZERO,
+        dop: <crate::gnss_receiver_2::Dop as crate::wire::Wire>::ZERO,
+        utc_time: <crate::gnss_receiver_2::UtcTime as crate::wire::Wire>::ZERO,
+        gps_time: <crate::gnss_receiver_2::GpsTime as crate::wire::Wire>::ZERO,
+        fix_info: <crate::gnss_receiver_2::FixInfo as crate::wire::Wire>::ZERO,
+        hardware_status: <crate::gnss_receiver_2::HardwareStatus as crate::wire::Wire>::ZERO,
+        clock_info_2: <crate::gnss_receiver_2::ClockInfo2 as crate::wire::Wire>::ZERO,
+        gps_leap_seconds: <crate::gnss_receiver_2::GpsLeapSeconds as crate::wire::Wire>::ZERO,
+        sbas_info: <crate::gnss_receiver_2::SbasInfo as crate::wire::Wire>::ZERO,
+        satellite_status: <crate::gnss_receiver_2::SatelliteStatus as crate::wire::Wire>::ZERO,
+        raw: <crate::gnss_receiver_2::Raw as crate::wire::Wire>::ZERO,
+        gps_ephemeris: <crate::gnss_receiver_2::GpsEphemeris as crate::wire::Wire>::ZERO,
+        glonass_ephemeris: <crate::gnss_receiver_2::GlonassEphemeris as crate::wire::Wire>::ZERO,
+        galileo_ephemeris: <crate::gnss_receiver_2::GalileoEphemeris as crate::wire::Wire>::ZERO,
+        beidou_ephemeris: <crate::gnss_receiver_2::BeidouEphemeris as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[inline(always)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[inline(always)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x03 | 0x04
+                | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0B
+                | 0x0D
+                | 0x10
+                | 0x11
+                | 0x12
+                | 0x20
+                | 0x22
+                | 0x61
+                | 0x62
+                | 0x63
+                | 0x64
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[inline(always)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x03 => crate::packets::decode_into(data, &mut self.llh_position),
+            0x04 => crate::packets::decode_into(data, &mut self.ecef_position),
+            0x05 => crate::packets::decode_into(data, &mut self.ned_velocity),
+            0x06 => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            0x07 => crate::packets::decode_into(data, &mut self.dop),
+            0x08 => crate::packets::decode_into(data, &mut self.utc_time),
+            0x09 => crate::packets::decode_into(data, &mut self.gps_time),
+            0x0B => crate::packets::decode_into(data, &mut self.fix_info),
+            0x0D => crate::packets::decode_into(data, &mut self.hardware_status),
+            0x10 => crate::packets::decode_into(data, &mut self.clock_info_2),
+            0x11 => crate::packets::decode_into(data, &mut self.gps_leap_seconds),
+            0x12 => crate::packets::decode_into(data, &mut self.sbas_info),
+            0x20 => crate::packets::decode_into(data, &mut self.satellite_status),
+            0x22 => crate::packets::decode_into(data, &mut self.raw),
+            0x61 => crate::packets::decode_into(data, &mut self.gps_ephemeris),
+            0x62 => crate::packets::decode_into(data, &mut self.glonass_ephemeris),
+            0x63 => crate::packets::decode_into(data, &mut self.galileo_ephemeris),
+            0x64 => crate::packets::decode_into(data, &mut self.beidou_ephemeris),
+            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
+            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
+            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
+            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x03 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::LlhPosition(self.llh_position),
+            )),
+            0x04 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::EcefPosition(self.ecef_position),
+            )),
+            0x05 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::NedVelocity(self.ned_velocity),
+            )),
+            0x06 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::EcefVelocity(self.ecef_velocity),
+            )),
+            0x07 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::Dop(self.dop),
+            )),
+            0x08 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::UtcTime(self.utc_time),
+            )),
+            0x09 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::GpsTime(self.gps_time),
+            )),
+            0x0B => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::FixInfo(self.fix_info),
+            )),
+            0x0D => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::HardwareStatus(self.hardware_status),
+            )),
+            0x10 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::ClockInfo2(self.clock_info_2),
+            )),
+            0x11 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::GpsLeapSeconds(self.gps_leap_seconds),
+            )),
+            0x12 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::SbasInfo(self.sbas_info),
+            )),
+            0x20 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::SatelliteStatus(self.satellite_status),
+            )),
+            0x22 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::Raw(self.raw),
+            )),
+            0x61 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::GpsEphemeris(self.gps_ephemeris),
+            )),
+            0x62 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::GlonassEphemeris(self.glonass_ephemeris),
+            )),
+            0x63 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::GalileoEphemeris(self.galileo_ephemeris),
+            )),
+            0x64 => Some(crate::FieldValue::GnssReceiver2(
+                crate::gnss_receiver_2::SetField::BeidouEphemeris(self.beidou_ephemeris),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-gnss-receiver-2", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

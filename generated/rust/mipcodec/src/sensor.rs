@@ -1502,3 +1502,257 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x04.
+    pub scaled_accel: crate::sensor::ScaledAccel,
+    /// Field 0x05.
+    pub scaled_gyro: crate::sensor::ScaledGyro,
+    /// Field 0x06.
+    pub scaled_mag: crate::sensor::ScaledMag,
+    /// Field 0x07.
+    pub delta_theta: crate::sensor::DeltaTheta,
+    /// Field 0x08.
+    pub delta_velocity: crate::sensor::DeltaVelocity,
+    /// Field 0x09.
+    pub cf_orientation_matrix: crate::sensor::CfOrientationMatrix,
+    /// Field 0x0A.
+    pub cf_quaternion: crate::sensor::CfQuaternion,
+    /// Field 0x0C.
+    pub cf_euler_angles: crate::sensor::CfEulerAngles,
+    /// Field 0x10.
+    pub cf_stabilized_north: crate::sensor::CfStabilizedNorth,
+    /// Field 0x11.
+    pub cf_stabilized_up: crate::sensor::CfStabilizedUp,
+    /// Field 0x12.
+    pub sensor_gps_timestamp: crate::sensor::GpsTimestamp,
+    /// Field 0x14.
+    pub temperature_statistics: crate::sensor::TemperatureStatistics,
+    /// Field 0x17.
+    pub scaled_pressure: crate::sensor::ScaledPressure,
+    /// Field 0x18.
+    pub overrange_status: crate::sensor::OverrangeStatus,
+    /// Field 0x40.
+    pub odometer_data: crate::sensor::OdometerData,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub shared_gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        scaled_accel: <crate::sensor::ScaledAccel as crate::wire::Wire>::ZERO,
+        scaled_gyro: <crate::sensor::ScaledGyro as crate::wire::Wire>::ZERO,
+        scaled_mag: <crate::sensor::ScaledMag as crate::wire::Wire>::ZERO,
+        delta_theta: <crate::sensor::DeltaTheta as crate::wire::Wire>::ZERO,
+        delta_velocity: <crate::sensor::DeltaVelocity as crate::wire::Wire>::ZERO,
+        cf_orientation_matrix: <crate::sensor::CfOrientationMatrix as crate::wire::Wire>::ZERO,
+        cf_quaternion: <crate::sensor::CfQuaternion as crate::wire::Wire>::ZERO,
+        cf_euler_angles: <crate::sensor::CfEulerAngles as crate::wire::Wire>::ZERO,
+        cf_stabilized_north: <crate::sensor::CfStabilizedNorth as crate::wire::Wire>::ZERO,
+        cf_stabilized_up: <crate::sensor::CfStabilizedUp as crate::wire::Wire>::ZERO,
+        sensor_gps_timestamp: <crate::sensor::GpsTimestamp as crate::wire::Wire>::ZERO,
+        temperature_statistics: <crate::sensor::TemperatureStatistics as crate::wire::Wire>::ZERO,
+        scaled_pressure: <crate::sensor::ScaledPressure as crate::wire::Wire>::ZERO,
+        overrange_status: <crate::sensor::OverrangeStatus as crate::wire::Wire>::ZERO,
+        odometer_data: <crate::sensor::OdometerData as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        shared_gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[inline(always)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[inline(always)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x04 | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0A
+                | 0x0C
+                | 0x10
+                | 0x11
+                | 0x12
+                | 0x14
+                | 0x17
+                | 0x18
+                | 0x40
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[inline(always)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x04 => crate::packets::decode_into(data, &mut self.scaled_accel),
+            0x05 => crate::packets::decode_into(data, &mut self.scaled_gyro),
+            0x06 => crate::packets::decode_into(data, &mut self.scaled_mag),
+            0x07 => crate::packets::decode_into(data, &mut self.delta_theta),
+            0x08 => crate::packets::decode_into(data, &mut self.delta_velocity),
+            0x09 => crate::packets::decode_into(data, &mut self.cf_orientation_matrix),
+            0x0A => crate::packets::decode_into(data, &mut self.cf_quaternion),
+            0x0C => crate::packets::decode_into(data, &mut self.cf_euler_angles),
+            0x10 => crate::packets::decode_into(data, &mut self.cf_stabilized_north),
+            0x11 => crate::packets::decode_into(data, &mut self.cf_stabilized_up),
+            0x12 => crate::packets::decode_into(data, &mut self.sensor_gps_timestamp),
+            0x14 => crate::packets::decode_into(data, &mut self.temperature_statistics),
+            0x17 => crate::packets::decode_into(data, &mut self.scaled_pressure),
+            0x18 => crate::packets::decode_into(data, &mut self.overrange_status),
+            0x40 => crate::packets::decode_into(data, &mut self.odometer_data),
+            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
+            0xD3 => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
+            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
+            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
+            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x04 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledAccel(self.scaled_accel),
+            )),
+            0x05 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledGyro(self.scaled_gyro),
+            )),
+            0x06 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledMag(self.scaled_mag),
+            )),
+            0x07 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::DeltaTheta(self.delta_theta),
+            )),
+            0x08 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::DeltaVelocity(self.delta_velocity),
+            )),
+            0x09 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfOrientationMatrix(self.cf_orientation_matrix),
+            )),
+            0x0A => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfQuaternion(self.cf_quaternion),
+            )),
+            0x0C => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfEulerAngles(self.cf_euler_angles),
+            )),
+            0x10 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfStabilizedNorth(self.cf_stabilized_north),
+            )),
+            0x11 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfStabilizedUp(self.cf_stabilized_up),
+            )),
+            0x12 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::GpsTimestamp(self.sensor_gps_timestamp),
+            )),
+            0x14 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::TemperatureStatistics(self.temperature_statistics),
+            )),
+            0x17 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledPressure(self.scaled_pressure),
+            )),
+            0x18 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::OverrangeStatus(self.overrange_status),
+            )),
+            0x40 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::OdometerData(self.odometer_data),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.shared_gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}
