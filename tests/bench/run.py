@@ -529,6 +529,8 @@ MODE_RANK = {
     "bulk": 0,
     "frame": 1,
     "decode": 2,
+    "decode-straight": 2,
+    "decode-field": 2,
     "session-ingest": 3,
     "copy-per-packet": 4,
     "csv": 5,

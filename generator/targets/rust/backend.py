@@ -159,10 +159,27 @@ def _packet_plan(proto: dict, s: dict) -> dict | None:
                 "name": e["name"],
                 "set": None if e["source"] == "reserved" else e["set"],
                 "source": e["source"],
-                "size": v["size"]["min"] if v["size"]["fixed"] else None,
+                "fast": _fast(proto, v),
             }
         )
     return {"members": members}
+
+
+def _fast(proto: dict, v: dict) -> dict | None:
+    """TEMPORARY (packet_plan.py): size and loads of a fixed sequence of plain values."""
+    loads = []
+    off = 0
+    params = model.params(proto, v["params"], v["functions"])
+    if not params:
+        return None
+    for p in params:
+        e = p.elem
+        if p.optional or p.kind not in ("scalar", "fixed") or e.kind not in ("primitive", "enum", "bitfield"):
+            return None
+        for i in [None] if p.kind == "scalar" else range(p.count):
+            loads.append({"param": p.name, "index": i, "off": off, "bool": e.name == "bool"})
+            off += e.size.min
+    return {"size": off, "loads": loads}
 
 
 # ---------------------------------------------------------------------------------------- model
@@ -486,7 +503,19 @@ class _Protocol:
                     "type": typ,
                     "value": value,
                     "source": m["source"],
-                    "fixed_size": m["size"],
+                    "fast": None
+                    if m["fast"] is None
+                    else {
+                        "size": m["fast"]["size"],
+                        "loads": [
+                            {
+                                "path": ident(x["param"]) + ("" if x["index"] is None else f"[{x['index']}]"),
+                                "off": x["off"],
+                            }
+                            for x in m["fast"]["loads"]
+                        ],
+                        "bools": [x["off"] for x in m["fast"]["loads"] if x["bool"]],
+                    },
                 }
             )
         return {"members": members}

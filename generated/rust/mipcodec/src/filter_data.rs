@@ -6108,74 +6108,688 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x01 => crate::packets::decode_into(data, &mut self.llh_position),
-            0x02 => crate::packets::decode_into(data, &mut self.ned_velocity),
-            0x03 => crate::packets::decode_into(data, &mut self.attitude_quaternion),
-            0x04 => crate::packets::decode_into(data, &mut self.attitude_dcm),
-            0x05 => crate::packets::decode_into(data, &mut self.euler_angles),
-            0x06 => crate::packets::decode_into(data, &mut self.gyro_bias),
-            0x07 => crate::packets::decode_into(data, &mut self.accel_bias),
-            0x08 => crate::packets::decode_into(data, &mut self.llh_position_uncertainty),
-            0x09 => crate::packets::decode_into(data, &mut self.ned_velocity_uncertainty),
-            0x0A => crate::packets::decode_into(data, &mut self.euler_angles_uncertainty),
-            0x0B => crate::packets::decode_into(data, &mut self.gyro_bias_uncertainty),
-            0x0C => crate::packets::decode_into(data, &mut self.accel_bias_uncertainty),
-            0x0D => crate::packets::decode_into(data, &mut self.linear_accel),
-            0x0E => crate::packets::decode_into(data, &mut self.comp_angular_rate),
-            0x0F => crate::packets::decode_into(data, &mut self.wgs84_gravity_magnitude),
-            0x11 => crate::packets::decode_into(data, &mut self.filter_data_gps_timestamp),
-            0x12 => crate::packets::decode_into(data, &mut self.quaternion_attitude_uncertainty),
-            0x13 => crate::packets::decode_into(data, &mut self.gravity_vector),
-            0x14 => crate::packets::decode_into(data, &mut self.heading_update_state),
-            0x15 => crate::packets::decode_into(data, &mut self.magnetic_model),
-            0x16 => crate::packets::decode_into(data, &mut self.gyro_scale_factor),
-            0x17 => crate::packets::decode_into(data, &mut self.accel_scale_factor),
-            0x18 => crate::packets::decode_into(data, &mut self.gyro_scale_factor_uncertainty),
-            0x19 => crate::packets::decode_into(data, &mut self.accel_scale_factor_uncertainty),
-            0x1C => crate::packets::decode_into(data, &mut self.compensated_accel),
-            0x20 => crate::packets::decode_into(data, &mut self.standard_atmosphere),
-            0x21 => crate::packets::decode_into(data, &mut self.pressure_altitude),
-            0x25 => crate::packets::decode_into(data, &mut self.mag_auto_hard_iron_offset),
-            0x26 => crate::packets::decode_into(data, &mut self.mag_auto_soft_iron_matrix),
-            0x28 => {
-                crate::packets::decode_into(data, &mut self.mag_auto_hard_iron_offset_uncertainty)
-            }
-            0x29 => {
-                crate::packets::decode_into(data, &mut self.mag_auto_soft_iron_matrix_uncertainty)
-            }
-            0x30 => crate::packets::decode_into(data, &mut self.gnss_antenna_offset_correction),
-            0x31 => crate::packets::decode_into(
-                data,
-                &mut self.gnss_antenna_offset_correction_uncertainty,
-            ),
-            0x34 => crate::packets::decode_into(data, &mut self.multi_antenna_offset_correction),
-            0x35 => crate::packets::decode_into(
-                data,
-                &mut self.multi_antenna_offset_correction_uncertainty,
-            ),
-            0x36 => crate::packets::decode_into(data, &mut self.ecef_position_uncertainty),
-            0x37 => crate::packets::decode_into(data, &mut self.ecef_velocity_uncertainty),
-            0x40 => crate::packets::decode_into(data, &mut self.ecef_position),
-            0x41 => crate::packets::decode_into(data, &mut self.ecef_velocity),
-            0x42 => crate::packets::decode_into(data, &mut self.ned_relative_position),
-            0x43 => crate::packets::decode_into(data, &mut self.gnss_position_aiding_status),
-            0x46 => crate::packets::decode_into(data, &mut self.aiding_measurement_summary),
-            0x47 => crate::packets::decode_into(data, &mut self.odometer_scale_factor_error),
-            0x48 => {
-                crate::packets::decode_into(data, &mut self.odometer_scale_factor_error_uncertainty)
-            }
-            0x49 => crate::packets::decode_into(data, &mut self.gnss_dual_antenna_status),
-            0x50 => crate::packets::decode_into(data, &mut self.aiding_frame_config_error),
-            0x51 => {
-                crate::packets::decode_into(data, &mut self.aiding_frame_config_error_uncertainty)
-            }
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x01 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x02 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x03 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.attitude_quaternion;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.attitude_quaternion),
+            },
+            0x04 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.attitude_dcm;
+                    s.dcm[0] = crate::packets::ld(d, 0);
+                    s.dcm[1] = crate::packets::ld(d, 4);
+                    s.dcm[2] = crate::packets::ld(d, 8);
+                    s.dcm[3] = crate::packets::ld(d, 12);
+                    s.dcm[4] = crate::packets::ld(d, 16);
+                    s.dcm[5] = crate::packets::ld(d, 20);
+                    s.dcm[6] = crate::packets::ld(d, 24);
+                    s.dcm[7] = crate::packets::ld(d, 28);
+                    s.dcm[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.attitude_dcm),
+            },
+            0x05 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.euler_angles;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.euler_angles),
+            },
+            0x06 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_bias;
+                    s.bias[0] = crate::packets::ld(d, 0);
+                    s.bias[1] = crate::packets::ld(d, 4);
+                    s.bias[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_bias),
+            },
+            0x07 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_bias;
+                    s.bias[0] = crate::packets::ld(d, 0);
+                    s.bias[1] = crate::packets::ld(d, 4);
+                    s.bias[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_bias),
+            },
+            0x08 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position_uncertainty;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position_uncertainty),
+            },
+            0x09 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity_uncertainty;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity_uncertainty),
+            },
+            0x0A => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.euler_angles_uncertainty;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.euler_angles_uncertainty),
+            },
+            0x0B => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_bias_uncertainty;
+                    s.bias_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.bias_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.bias_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_bias_uncertainty),
+            },
+            0x0C => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_bias_uncertainty;
+                    s.bias_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.bias_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.bias_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_bias_uncertainty),
+            },
+            0x0D => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.linear_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.linear_accel),
+            },
+            0x0E => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.comp_angular_rate;
+                    s.gyro[0] = crate::packets::ld(d, 0);
+                    s.gyro[1] = crate::packets::ld(d, 4);
+                    s.gyro[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.comp_angular_rate),
+            },
+            0x0F => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.wgs84_gravity_magnitude;
+                    s.gravity_magnitude = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.wgs84_gravity_magnitude),
+            },
+            0x11 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.filter_data_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.filter_data_gps_timestamp),
+            },
+            0x12 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.quaternion_attitude_uncertainty;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.quaternion_attitude_uncertainty),
+            },
+            0x13 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gravity_vector;
+                    s.gravity[0] = crate::packets::ld(d, 0);
+                    s.gravity[1] = crate::packets::ld(d, 4);
+                    s.gravity[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gravity_vector),
+            },
+            0x14 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.heading_update_state;
+                    s.heading = crate::packets::ld(d, 0);
+                    s.heading_uncertainty = crate::packets::ld(d, 4);
+                    s.source = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.heading_update_state),
+            },
+            0x15 => match <&[u8; 22]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.magnetic_model;
+                    s.intensity_north = crate::packets::ld(d, 0);
+                    s.intensity_east = crate::packets::ld(d, 4);
+                    s.intensity_down = crate::packets::ld(d, 8);
+                    s.inclination = crate::packets::ld(d, 12);
+                    s.declination = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 20);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.magnetic_model),
+            },
+            0x16 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_scale_factor;
+                    s.scale_factor[0] = crate::packets::ld(d, 0);
+                    s.scale_factor[1] = crate::packets::ld(d, 4);
+                    s.scale_factor[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_scale_factor),
+            },
+            0x17 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_scale_factor;
+                    s.scale_factor[0] = crate::packets::ld(d, 0);
+                    s.scale_factor[1] = crate::packets::ld(d, 4);
+                    s.scale_factor[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_scale_factor),
+            },
+            0x18 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_scale_factor_uncertainty;
+                    s.scale_factor_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.scale_factor_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.scale_factor_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_scale_factor_uncertainty),
+            },
+            0x19 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_scale_factor_uncertainty;
+                    s.scale_factor_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.scale_factor_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.scale_factor_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_scale_factor_uncertainty),
+            },
+            0x1C => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.compensated_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.compensated_accel),
+            },
+            0x20 => match <&[u8; 22]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.standard_atmosphere;
+                    s.geometric_altitude = crate::packets::ld(d, 0);
+                    s.geopotential_altitude = crate::packets::ld(d, 4);
+                    s.temperature = crate::packets::ld(d, 8);
+                    s.pressure = crate::packets::ld(d, 12);
+                    s.density = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 20);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.standard_atmosphere),
+            },
+            0x21 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.pressure_altitude;
+                    s.pressure_altitude = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.pressure_altitude),
+            },
+            0x25 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_hard_iron_offset;
+                    s.hard_iron_offset[0] = crate::packets::ld(d, 0);
+                    s.hard_iron_offset[1] = crate::packets::ld(d, 4);
+                    s.hard_iron_offset[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.mag_auto_hard_iron_offset),
+            },
+            0x26 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_soft_iron_matrix;
+                    s.soft_iron_matrix[0] = crate::packets::ld(d, 0);
+                    s.soft_iron_matrix[1] = crate::packets::ld(d, 4);
+                    s.soft_iron_matrix[2] = crate::packets::ld(d, 8);
+                    s.soft_iron_matrix[3] = crate::packets::ld(d, 12);
+                    s.soft_iron_matrix[4] = crate::packets::ld(d, 16);
+                    s.soft_iron_matrix[5] = crate::packets::ld(d, 20);
+                    s.soft_iron_matrix[6] = crate::packets::ld(d, 24);
+                    s.soft_iron_matrix[7] = crate::packets::ld(d, 28);
+                    s.soft_iron_matrix[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.mag_auto_soft_iron_matrix),
+            },
+            0x28 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_hard_iron_offset_uncertainty;
+                    s.hard_iron_offset_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.hard_iron_offset_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.hard_iron_offset_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.mag_auto_hard_iron_offset_uncertainty,
+                ),
+            },
+            0x29 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_soft_iron_matrix_uncertainty;
+                    s.soft_iron_matrix_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.soft_iron_matrix_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.soft_iron_matrix_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.soft_iron_matrix_uncertainty[3] = crate::packets::ld(d, 12);
+                    s.soft_iron_matrix_uncertainty[4] = crate::packets::ld(d, 16);
+                    s.soft_iron_matrix_uncertainty[5] = crate::packets::ld(d, 20);
+                    s.soft_iron_matrix_uncertainty[6] = crate::packets::ld(d, 24);
+                    s.soft_iron_matrix_uncertainty[7] = crate::packets::ld(d, 28);
+                    s.soft_iron_matrix_uncertainty[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.mag_auto_soft_iron_matrix_uncertainty,
+                ),
+            },
+            0x30 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_antenna_offset_correction;
+                    s.offset[0] = crate::packets::ld(d, 0);
+                    s.offset[1] = crate::packets::ld(d, 4);
+                    s.offset[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_antenna_offset_correction),
+            },
+            0x31 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_antenna_offset_correction_uncertainty;
+                    s.offset_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.offset_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.offset_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.gnss_antenna_offset_correction_uncertainty,
+                ),
+            },
+            0x34 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.multi_antenna_offset_correction;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.offset[0] = crate::packets::ld(d, 1);
+                    s.offset[1] = crate::packets::ld(d, 5);
+                    s.offset[2] = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.multi_antenna_offset_correction),
+            },
+            0x35 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.multi_antenna_offset_correction_uncertainty;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.offset_uncertainty[0] = crate::packets::ld(d, 1);
+                    s.offset_uncertainty[1] = crate::packets::ld(d, 5);
+                    s.offset_uncertainty[2] = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.multi_antenna_offset_correction_uncertainty,
+                ),
+            },
+            0x36 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position_uncertainty;
+                    s.position_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.position_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.position_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position_uncertainty),
+            },
+            0x37 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity_uncertainty;
+                    s.velocity_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.velocity_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.velocity_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity_uncertainty),
+            },
+            0x40 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x41 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x42 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_relative_position;
+                    s.relative_position[0] = crate::packets::ld(d, 0);
+                    s.relative_position[1] = crate::packets::ld(d, 8);
+                    s.relative_position[2] = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_relative_position),
+            },
+            0x43 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_position_aiding_status;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.time_of_week = crate::packets::ld(d, 1);
+                    s.status = crate::packets::ld(d, 5);
+                    s.reserved[0] = crate::packets::ld(d, 7);
+                    s.reserved[1] = crate::packets::ld(d, 8);
+                    s.reserved[2] = crate::packets::ld(d, 9);
+                    s.reserved[3] = crate::packets::ld(d, 10);
+                    s.reserved[4] = crate::packets::ld(d, 11);
+                    s.reserved[5] = crate::packets::ld(d, 12);
+                    s.reserved[6] = crate::packets::ld(d, 13);
+                    s.reserved[7] = crate::packets::ld(d, 14);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_position_aiding_status),
+            },
+            0x46 => match <&[u8; 7]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_measurement_summary;
+                    s.time_of_week = crate::packets::ld(d, 0);
+                    s.source = crate::packets::ld(d, 4);
+                    s.r#type = crate::packets::ld(d, 5);
+                    s.indicator = crate::packets::ld(d, 6);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.aiding_measurement_summary),
+            },
+            0x47 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_scale_factor_error;
+                    s.scale_factor_error = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.odometer_scale_factor_error),
+            },
+            0x48 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_scale_factor_error_uncertainty;
+                    s.scale_factor_error_uncertainty = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.odometer_scale_factor_error_uncertainty,
+                ),
+            },
+            0x49 => match <&[u8; 17]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_dual_antenna_status;
+                    s.time_of_week = crate::packets::ld(d, 0);
+                    s.heading = crate::packets::ld(d, 4);
+                    s.heading_uncertainty = crate::packets::ld(d, 8);
+                    s.fix_type = crate::packets::ld(d, 12);
+                    s.status_flags = crate::packets::ld(d, 13);
+                    s.valid_flags = crate::packets::ld(d, 15);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_dual_antenna_status),
+            },
+            0x50 => match <&[u8; 29]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_frame_config_error;
+                    s.frame_id = crate::packets::ld(d, 0);
+                    s.translation[0] = crate::packets::ld(d, 1);
+                    s.translation[1] = crate::packets::ld(d, 5);
+                    s.translation[2] = crate::packets::ld(d, 9);
+                    s.attitude[0] = crate::packets::ld(d, 13);
+                    s.attitude[1] = crate::packets::ld(d, 17);
+                    s.attitude[2] = crate::packets::ld(d, 21);
+                    s.attitude[3] = crate::packets::ld(d, 25);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.aiding_frame_config_error),
+            },
+            0x51 => match <&[u8; 25]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_frame_config_error_uncertainty;
+                    s.frame_id = crate::packets::ld(d, 0);
+                    s.translation_uncertainty[0] = crate::packets::ld(d, 1);
+                    s.translation_uncertainty[1] = crate::packets::ld(d, 5);
+                    s.translation_uncertainty[2] = crate::packets::ld(d, 9);
+                    s.attitude_uncertainty[0] = crate::packets::ld(d, 13);
+                    s.attitude_uncertainty[1] = crate::packets::ld(d, 17);
+                    s.attitude_uncertainty[2] = crate::packets::ld(d, 21);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.aiding_frame_config_error_uncertainty,
+                ),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.shared_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

@@ -584,15 +584,111 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x30 => crate::packets::decode_into(data, &mut self.base_station_info),
-            0x31 => crate::packets::decode_into(data, &mut self.rtk_corrections_status),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x30 => match <&[u8; 44]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.base_station_info;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.ecef_position[0] = crate::packets::ld(d, 10);
+                    s.ecef_position[1] = crate::packets::ld(d, 18);
+                    s.ecef_position[2] = crate::packets::ld(d, 26);
+                    s.height = crate::packets::ld(d, 34);
+                    s.station_id = crate::packets::ld(d, 38);
+                    s.indicators = crate::packets::ld(d, 40);
+                    s.valid_flags = crate::packets::ld(d, 42);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.base_station_info),
+            },
+            0x31 => match <&[u8; 50]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.rtk_corrections_status;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.epoch_status = crate::packets::ld(d, 10);
+                    s.dongle_status = crate::packets::ld(d, 12);
+                    s.gps_correction_latency = crate::packets::ld(d, 16);
+                    s.glonass_correction_latency = crate::packets::ld(d, 20);
+                    s.galileo_correction_latency = crate::packets::ld(d, 24);
+                    s.beidou_correction_latency = crate::packets::ld(d, 28);
+                    s.reserved[0] = crate::packets::ld(d, 32);
+                    s.reserved[1] = crate::packets::ld(d, 36);
+                    s.reserved[2] = crate::packets::ld(d, 40);
+                    s.reserved[3] = crate::packets::ld(d, 44);
+                    s.valid_flags = crate::packets::ld(d, 48);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.rtk_corrections_status),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

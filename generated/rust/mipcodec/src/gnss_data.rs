@@ -2214,26 +2214,251 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x03 => crate::packets::decode_into(data, &mut self.llh_position),
-            0x04 => crate::packets::decode_into(data, &mut self.ecef_position),
-            0x05 => crate::packets::decode_into(data, &mut self.ned_velocity),
-            0x06 => crate::packets::decode_into(data, &mut self.ecef_velocity),
-            0x07 => crate::packets::decode_into(data, &mut self.dop),
-            0x08 => crate::packets::decode_into(data, &mut self.utc_time),
-            0x09 => crate::packets::decode_into(data, &mut self.gps_time),
-            0x0A => crate::packets::decode_into(data, &mut self.clock_info),
-            0x0B => crate::packets::decode_into(data, &mut self.fix_info),
-            0x0C => crate::packets::decode_into(data, &mut self.sv_info),
-            0x0D => crate::packets::decode_into(data, &mut self.hardware_status),
-            0x0E => crate::packets::decode_into(data, &mut self.dgnss_info),
-            0x0F => crate::packets::decode_into(data, &mut self.dgnss_channel_status),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x03 => match <&[u8; 42]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.msl_height = crate::packets::ld(d, 24);
+                    s.horizontal_accuracy = crate::packets::ld(d, 32);
+                    s.vertical_accuracy = crate::packets::ld(d, 36);
+                    s.valid_flags = crate::packets::ld(d, 40);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x04 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.position_accuracy = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x05 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.speed = crate::packets::ld(d, 12);
+                    s.ground_speed = crate::packets::ld(d, 16);
+                    s.heading = crate::packets::ld(d, 20);
+                    s.speed_accuracy = crate::packets::ld(d, 24);
+                    s.heading_accuracy = crate::packets::ld(d, 28);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x06 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.velocity_accuracy = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x07 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dop;
+                    s.gdop = crate::packets::ld(d, 0);
+                    s.pdop = crate::packets::ld(d, 4);
+                    s.hdop = crate::packets::ld(d, 8);
+                    s.vdop = crate::packets::ld(d, 12);
+                    s.tdop = crate::packets::ld(d, 16);
+                    s.ndop = crate::packets::ld(d, 20);
+                    s.edop = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dop),
+            },
+            0x08 => match <&[u8; 13]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.utc_time;
+                    s.year = crate::packets::ld(d, 0);
+                    s.month = crate::packets::ld(d, 2);
+                    s.day = crate::packets::ld(d, 3);
+                    s.hour = crate::packets::ld(d, 4);
+                    s.minute = crate::packets::ld(d, 5);
+                    s.second = crate::packets::ld(d, 6);
+                    s.millisecond = crate::packets::ld(d, 7);
+                    s.valid_flags = crate::packets::ld(d, 11);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.utc_time),
+            },
+            0x09 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_time;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_time),
+            },
+            0x0A => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.clock_info;
+                    s.bias = crate::packets::ld(d, 0);
+                    s.drift = crate::packets::ld(d, 8);
+                    s.accuracy_estimate = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.clock_info),
+            },
+            0x0B => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.fix_info;
+                    s.fix_type = crate::packets::ld(d, 0);
+                    s.num_sv = crate::packets::ld(d, 1);
+                    s.fix_flags = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.fix_info),
+            },
+            0x0C => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sv_info;
+                    s.channel = crate::packets::ld(d, 0);
+                    s.sv_id = crate::packets::ld(d, 1);
+                    s.carrier_to_noise_ratio = crate::packets::ld(d, 2);
+                    s.azimuth = crate::packets::ld(d, 4);
+                    s.elevation = crate::packets::ld(d, 6);
+                    s.sv_flags = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sv_info),
+            },
+            0x0D => match <&[u8; 5]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.hardware_status;
+                    s.receiver_state = crate::packets::ld(d, 0);
+                    s.antenna_state = crate::packets::ld(d, 1);
+                    s.antenna_power = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 3);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.hardware_status),
+            },
+            0x0E => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dgnss_info;
+                    s.newest_age = crate::packets::ld(d, 0);
+                    s.base_station_id = crate::packets::ld(d, 4);
+                    s.base_station_status = crate::packets::ld(d, 6);
+                    s.num_channels = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dgnss_info),
+            },
+            0x0F => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dgnss_channel_status;
+                    s.sv_id = crate::packets::ld(d, 0);
+                    s.age = crate::packets::ld(d, 1);
+                    s.pseudorange_correction = crate::packets::ld(d, 5);
+                    s.pseudorange_rate_correction = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dgnss_channel_status),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

@@ -1080,18 +1080,151 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x03 => crate::packets::decode_into(data, &mut self.llh_position),
-            0x05 => crate::packets::decode_into(data, &mut self.ned_velocity),
-            0x08 => crate::packets::decode_into(data, &mut self.utc_time),
-            0x0B => crate::packets::decode_into(data, &mut self.fix_info),
-            0x20 => crate::packets::decode_into(data, &mut self.satellite_status),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x03 => match <&[u8; 42]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.msl_height = crate::packets::ld(d, 24);
+                    s.horizontal_accuracy = crate::packets::ld(d, 32);
+                    s.vertical_accuracy = crate::packets::ld(d, 36);
+                    s.valid_flags = crate::packets::ld(d, 40);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x05 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.speed = crate::packets::ld(d, 12);
+                    s.ground_speed = crate::packets::ld(d, 16);
+                    s.heading = crate::packets::ld(d, 20);
+                    s.speed_accuracy = crate::packets::ld(d, 24);
+                    s.heading_accuracy = crate::packets::ld(d, 28);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x08 => match <&[u8; 13]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.utc_time;
+                    s.year = crate::packets::ld(d, 0);
+                    s.month = crate::packets::ld(d, 2);
+                    s.day = crate::packets::ld(d, 3);
+                    s.hour = crate::packets::ld(d, 4);
+                    s.minute = crate::packets::ld(d, 5);
+                    s.second = crate::packets::ld(d, 6);
+                    s.millisecond = crate::packets::ld(d, 7);
+                    s.valid_flags = crate::packets::ld(d, 11);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.utc_time),
+            },
+            0x0B => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.fix_info;
+                    s.fix_type = crate::packets::ld(d, 0);
+                    s.num_sv = crate::packets::ld(d, 1);
+                    s.fix_flags = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.fix_info),
+            },
+            0x20 => match <&[u8; 25]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) if d[22] <= 1 => {
+                    let s = &mut self.satellite_status;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.gnss_id = crate::packets::ld(d, 12);
+                    s.satellite_id = crate::packets::ld(d, 13);
+                    s.elevation = crate::packets::ld(d, 14);
+                    s.azimuth = crate::packets::ld(d, 18);
+                    s.health = crate::packets::ld(d, 22);
+                    s.valid_flags = crate::packets::ld(d, 23);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.satellite_status),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

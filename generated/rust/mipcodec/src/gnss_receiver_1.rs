@@ -4770,31 +4770,446 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x03 => crate::packets::decode_into(data, &mut self.llh_position),
-            0x04 => crate::packets::decode_into(data, &mut self.ecef_position),
-            0x05 => crate::packets::decode_into(data, &mut self.ned_velocity),
-            0x06 => crate::packets::decode_into(data, &mut self.ecef_velocity),
-            0x07 => crate::packets::decode_into(data, &mut self.dop),
-            0x08 => crate::packets::decode_into(data, &mut self.utc_time),
-            0x09 => crate::packets::decode_into(data, &mut self.gps_time),
-            0x0B => crate::packets::decode_into(data, &mut self.fix_info),
-            0x0D => crate::packets::decode_into(data, &mut self.hardware_status),
-            0x10 => crate::packets::decode_into(data, &mut self.clock_info_2),
-            0x11 => crate::packets::decode_into(data, &mut self.gps_leap_seconds),
-            0x12 => crate::packets::decode_into(data, &mut self.sbas_info),
-            0x20 => crate::packets::decode_into(data, &mut self.satellite_status),
-            0x22 => crate::packets::decode_into(data, &mut self.raw),
-            0x61 => crate::packets::decode_into(data, &mut self.gps_ephemeris),
-            0x62 => crate::packets::decode_into(data, &mut self.glonass_ephemeris),
-            0x63 => crate::packets::decode_into(data, &mut self.galileo_ephemeris),
-            0x64 => crate::packets::decode_into(data, &mut self.beidou_ephemeris),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x03 => match <&[u8; 42]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.msl_height = crate::packets::ld(d, 24);
+                    s.horizontal_accuracy = crate::packets::ld(d, 32);
+                    s.vertical_accuracy = crate::packets::ld(d, 36);
+                    s.valid_flags = crate::packets::ld(d, 40);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x04 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.position_accuracy = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x05 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.speed = crate::packets::ld(d, 12);
+                    s.ground_speed = crate::packets::ld(d, 16);
+                    s.heading = crate::packets::ld(d, 20);
+                    s.speed_accuracy = crate::packets::ld(d, 24);
+                    s.heading_accuracy = crate::packets::ld(d, 28);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x06 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.velocity_accuracy = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x07 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dop;
+                    s.gdop = crate::packets::ld(d, 0);
+                    s.pdop = crate::packets::ld(d, 4);
+                    s.hdop = crate::packets::ld(d, 8);
+                    s.vdop = crate::packets::ld(d, 12);
+                    s.tdop = crate::packets::ld(d, 16);
+                    s.ndop = crate::packets::ld(d, 20);
+                    s.edop = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dop),
+            },
+            0x08 => match <&[u8; 13]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.utc_time;
+                    s.year = crate::packets::ld(d, 0);
+                    s.month = crate::packets::ld(d, 2);
+                    s.day = crate::packets::ld(d, 3);
+                    s.hour = crate::packets::ld(d, 4);
+                    s.minute = crate::packets::ld(d, 5);
+                    s.second = crate::packets::ld(d, 6);
+                    s.millisecond = crate::packets::ld(d, 7);
+                    s.valid_flags = crate::packets::ld(d, 11);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.utc_time),
+            },
+            0x09 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_time;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_time),
+            },
+            0x0B => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.fix_info;
+                    s.fix_type = crate::packets::ld(d, 0);
+                    s.num_sv = crate::packets::ld(d, 1);
+                    s.fix_flags = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.fix_info),
+            },
+            0x0D => match <&[u8; 5]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.hardware_status;
+                    s.receiver_state = crate::packets::ld(d, 0);
+                    s.antenna_state = crate::packets::ld(d, 1);
+                    s.antenna_power = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 3);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.hardware_status),
+            },
+            0x10 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.clock_info_2;
+                    s.bias = crate::packets::ld(d, 0);
+                    s.drift = crate::packets::ld(d, 8);
+                    s.bias_accuracy_estimate = crate::packets::ld(d, 16);
+                    s.drift_accuracy_estimate = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.clock_info_2),
+            },
+            0x11 => match <&[u8; 3]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_leap_seconds;
+                    s.leap_seconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 1);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_leap_seconds),
+            },
+            0x12 => match <&[u8; 16]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sbas_info;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.sbas_system = crate::packets::ld(d, 10);
+                    s.sbas_id = crate::packets::ld(d, 11);
+                    s.count = crate::packets::ld(d, 12);
+                    s.sbas_status = crate::packets::ld(d, 13);
+                    s.valid_flags = crate::packets::ld(d, 14);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sbas_info),
+            },
+            0x20 => match <&[u8; 25]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) if d[22] <= 1 => {
+                    let s = &mut self.satellite_status;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.gnss_id = crate::packets::ld(d, 12);
+                    s.satellite_id = crate::packets::ld(d, 13);
+                    s.elevation = crate::packets::ld(d, 14);
+                    s.azimuth = crate::packets::ld(d, 18);
+                    s.health = crate::packets::ld(d, 22);
+                    s.valid_flags = crate::packets::ld(d, 23);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.satellite_status),
+            },
+            0x22 => match <&[u8; 61]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.raw;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.receiver_id = crate::packets::ld(d, 12);
+                    s.tracking_channel = crate::packets::ld(d, 14);
+                    s.gnss_id = crate::packets::ld(d, 15);
+                    s.satellite_id = crate::packets::ld(d, 16);
+                    s.signal_id = crate::packets::ld(d, 17);
+                    s.signal_strength = crate::packets::ld(d, 18);
+                    s.quality = crate::packets::ld(d, 22);
+                    s.pseudorange = crate::packets::ld(d, 23);
+                    s.carrier_phase = crate::packets::ld(d, 31);
+                    s.doppler = crate::packets::ld(d, 39);
+                    s.range_uncert = crate::packets::ld(d, 43);
+                    s.phase_uncert = crate::packets::ld(d, 47);
+                    s.doppler_uncert = crate::packets::ld(d, 51);
+                    s.lock_time = crate::packets::ld(d, 55);
+                    s.valid_flags = crate::packets::ld(d, 59);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.raw),
+            },
+            0x61 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_ephemeris),
+            },
+            0x62 => match <&[u8; 102]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.glonass_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.freq_number = crate::packets::ld(d, 13);
+                    s.tk = crate::packets::ld(d, 14);
+                    s.tb = crate::packets::ld(d, 18);
+                    s.sat_type = crate::packets::ld(d, 22);
+                    s.gamma = crate::packets::ld(d, 23);
+                    s.tau_n = crate::packets::ld(d, 31);
+                    s.x[0] = crate::packets::ld(d, 39);
+                    s.x[1] = crate::packets::ld(d, 47);
+                    s.x[2] = crate::packets::ld(d, 55);
+                    s.v[0] = crate::packets::ld(d, 63);
+                    s.v[1] = crate::packets::ld(d, 67);
+                    s.v[2] = crate::packets::ld(d, 71);
+                    s.a[0] = crate::packets::ld(d, 75);
+                    s.a[1] = crate::packets::ld(d, 79);
+                    s.a[2] = crate::packets::ld(d, 83);
+                    s.health = crate::packets::ld(d, 87);
+                    s.p = crate::packets::ld(d, 88);
+                    s.nt = crate::packets::ld(d, 89);
+                    s.delta_tau_n = crate::packets::ld(d, 90);
+                    s.ft = crate::packets::ld(d, 94);
+                    s.en = crate::packets::ld(d, 95);
+                    s.p1 = crate::packets::ld(d, 96);
+                    s.p2 = crate::packets::ld(d, 97);
+                    s.p3 = crate::packets::ld(d, 98);
+                    s.p4 = crate::packets::ld(d, 99);
+                    s.valid_flags = crate::packets::ld(d, 100);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.glonass_ephemeris),
+            },
+            0x63 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.galileo_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.galileo_ephemeris),
+            },
+            0x64 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.beidou_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.beidou_ephemeris),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

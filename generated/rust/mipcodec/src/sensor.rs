@@ -1639,28 +1639,241 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x04 => crate::packets::decode_into(data, &mut self.scaled_accel),
-            0x05 => crate::packets::decode_into(data, &mut self.scaled_gyro),
-            0x06 => crate::packets::decode_into(data, &mut self.scaled_mag),
-            0x07 => crate::packets::decode_into(data, &mut self.delta_theta),
-            0x08 => crate::packets::decode_into(data, &mut self.delta_velocity),
-            0x09 => crate::packets::decode_into(data, &mut self.cf_orientation_matrix),
-            0x0A => crate::packets::decode_into(data, &mut self.cf_quaternion),
-            0x0C => crate::packets::decode_into(data, &mut self.cf_euler_angles),
-            0x10 => crate::packets::decode_into(data, &mut self.cf_stabilized_north),
-            0x11 => crate::packets::decode_into(data, &mut self.cf_stabilized_up),
-            0x12 => crate::packets::decode_into(data, &mut self.sensor_gps_timestamp),
-            0x14 => crate::packets::decode_into(data, &mut self.temperature_statistics),
-            0x17 => crate::packets::decode_into(data, &mut self.scaled_pressure),
-            0x18 => crate::packets::decode_into(data, &mut self.overrange_status),
-            0x40 => crate::packets::decode_into(data, &mut self.odometer_data),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x04 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_accel;
+                    s.scaled_accel[0] = crate::packets::ld(d, 0);
+                    s.scaled_accel[1] = crate::packets::ld(d, 4);
+                    s.scaled_accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_accel),
+            },
+            0x05 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_gyro;
+                    s.scaled_gyro[0] = crate::packets::ld(d, 0);
+                    s.scaled_gyro[1] = crate::packets::ld(d, 4);
+                    s.scaled_gyro[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_gyro),
+            },
+            0x06 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_mag;
+                    s.scaled_mag[0] = crate::packets::ld(d, 0);
+                    s.scaled_mag[1] = crate::packets::ld(d, 4);
+                    s.scaled_mag[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_mag),
+            },
+            0x07 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_theta;
+                    s.delta_theta[0] = crate::packets::ld(d, 0);
+                    s.delta_theta[1] = crate::packets::ld(d, 4);
+                    s.delta_theta[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_theta),
+            },
+            0x08 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_velocity;
+                    s.delta_velocity[0] = crate::packets::ld(d, 0);
+                    s.delta_velocity[1] = crate::packets::ld(d, 4);
+                    s.delta_velocity[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_velocity),
+            },
+            0x09 => match <&[u8; 36]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_orientation_matrix;
+                    s.m[0] = crate::packets::ld(d, 0);
+                    s.m[1] = crate::packets::ld(d, 4);
+                    s.m[2] = crate::packets::ld(d, 8);
+                    s.m[3] = crate::packets::ld(d, 12);
+                    s.m[4] = crate::packets::ld(d, 16);
+                    s.m[5] = crate::packets::ld(d, 20);
+                    s.m[6] = crate::packets::ld(d, 24);
+                    s.m[7] = crate::packets::ld(d, 28);
+                    s.m[8] = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_orientation_matrix),
+            },
+            0x0A => match <&[u8; 16]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_quaternion;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_quaternion),
+            },
+            0x0C => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_euler_angles;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_euler_angles),
+            },
+            0x10 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_stabilized_north;
+                    s.stabilized_north[0] = crate::packets::ld(d, 0);
+                    s.stabilized_north[1] = crate::packets::ld(d, 4);
+                    s.stabilized_north[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_stabilized_north),
+            },
+            0x11 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_stabilized_up;
+                    s.stabilized_up[0] = crate::packets::ld(d, 0);
+                    s.stabilized_up[1] = crate::packets::ld(d, 4);
+                    s.stabilized_up[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_stabilized_up),
+            },
+            0x12 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sensor_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sensor_gps_timestamp),
+            },
+            0x14 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.temperature_statistics;
+                    s.min_temp = crate::packets::ld(d, 0);
+                    s.max_temp = crate::packets::ld(d, 4);
+                    s.mean_temp = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.temperature_statistics),
+            },
+            0x17 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_pressure;
+                    s.scaled_pressure = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_pressure),
+            },
+            0x18 => match <&[u8; 2]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.overrange_status;
+                    s.status = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.overrange_status),
+            },
+            0x40 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_data;
+                    s.speed = crate::packets::ld(d, 0);
+                    s.uncertainty = crate::packets::ld(d, 4);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.odometer_data),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.shared_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

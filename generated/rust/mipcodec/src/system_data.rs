@@ -427,15 +427,92 @@ impl crate::packets::SetPacket for Packet {
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
             0x01 => crate::packets::decode_into(data, &mut self.built_in_test),
-            0x02 => crate::packets::decode_into(data, &mut self.time_sync_status),
-            0x03 => crate::packets::decode_into(data, &mut self.gpio_state),
-            0xD0 => crate::packets::decode_into(data, &mut self.event_source),
-            0xD3 => crate::packets::decode_into(data, &mut self.gps_timestamp),
-            0xD4 => crate::packets::decode_into(data, &mut self.delta_time),
-            0xD5 => crate::packets::decode_into(data, &mut self.reference_timestamp),
-            0xD6 => crate::packets::decode_into(data, &mut self.reference_time_delta),
-            0xD7 => crate::packets::decode_into(data, &mut self.external_timestamp),
-            0xD8 => crate::packets::decode_into(data, &mut self.external_time_delta),
+            0x02 => match <&[u8; 2]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) if d[0] <= 1 => {
+                    let s = &mut self.time_sync_status;
+                    s.time_sync = crate::packets::ld(d, 0);
+                    s.last_pps_rcvd = crate::packets::ld(d, 1);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.time_sync_status),
+            },
+            0x03 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gpio_state;
+                    s.states = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gpio_state),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
             _ => false,
         }
     }

@@ -950,15 +950,101 @@ impl crate::packets::SetPacket for Packet {
     #[inline(always)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
-            0x81 => crate::packets::decode_into(data, &mut self.scaled_accel),
-            0x82 => crate::packets::decode_into(data, &mut self.scaled_gyro),
-            0x83 => crate::packets::decode_into(data, &mut self.scaled_mag),
-            0x84 => crate::packets::decode_into(data, &mut self.delta_theta),
-            0x85 => crate::packets::decode_into(data, &mut self.delta_velocity),
-            0x86 => crate::packets::decode_into(data, &mut self.scaled_pressure),
-            0x87 => crate::packets::decode_into(data, &mut self.scaled_temperature),
-            0x88 => crate::packets::decode_into(data, &mut self.gps_correlated_time),
-            0x89 => crate::packets::decode_into(data, &mut self.scaled_aux_accel),
+            0x81 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_accel),
+            },
+            0x82 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_gyro;
+                    s.gyro[0] = crate::packets::ld(d, 0);
+                    s.gyro[1] = crate::packets::ld(d, 4);
+                    s.gyro[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_gyro),
+            },
+            0x83 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_mag;
+                    s.mag[0] = crate::packets::ld(d, 0);
+                    s.mag[1] = crate::packets::ld(d, 4);
+                    s.mag[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_mag),
+            },
+            0x84 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_theta;
+                    s.delta_theta[0] = crate::packets::ld(d, 0);
+                    s.delta_theta[1] = crate::packets::ld(d, 4);
+                    s.delta_theta[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_theta),
+            },
+            0x85 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_velocity;
+                    s.delta_velocity[0] = crate::packets::ld(d, 0);
+                    s.delta_velocity[1] = crate::packets::ld(d, 4);
+                    s.delta_velocity[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_velocity),
+            },
+            0x86 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_pressure;
+                    s.pressure = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_pressure),
+            },
+            0x87 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_temperature;
+                    s.temperature = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_temperature),
+            },
+            0x88 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_correlated_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    s.week = crate::packets::ld(d, 8);
+                    s.flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_correlated_time),
+            },
+            0x89 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_aux_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_aux_accel),
+            },
             _ => false,
         }
     }

@@ -23,7 +23,7 @@ use crate::framing::{
     field_length_adjust, FIELD_DESCRIPTOR_OFFSET, FIELD_HEADER_SIZE, FIELD_LENGTH_OFFSET,
     MAX_PAYLOAD,
 };
-use crate::wire::Layout;
+use crate::wire::{Layout, Reader, Wire};
 
 /// Most fields a packet can hold (each has at least a field header).
 pub const PACKET_FIELDS_MAX: usize = MAX_PAYLOAD / FIELD_HEADER_SIZE;
@@ -130,6 +130,16 @@ pub(crate) fn decode_into<L: Layout>(data: &[u8], slot: &mut L) -> bool {
             true
         }
         Err(_) => false,
+    }
+}
+
+/// One plain value (a number, enum, bitfield, bool) at offset `at` of a fixed layout's data, for
+/// the generated fast loads (the caller checked the length, and the bytes of bools).
+#[inline(always)]
+pub(crate) fn ld<T: Wire>(d: &[u8], at: usize) -> T {
+    match d.get(at..) {
+        Some(rest) => T::decode(&mut Reader::new(rest)).unwrap_or(T::ZERO),
+        None => T::ZERO,
     }
 }
 
