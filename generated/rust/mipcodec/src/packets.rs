@@ -419,21 +419,17 @@ impl Shape {
         index: PacketIndex::EMPTY,
     };
 
-    /// True when `payload` of set `set` has this shape: the same length and field headers.
+    /// True when `payload` of set `set` has this shape's set and length (its field headers are
+    /// compared by [`Shape::decode`]).
     #[inline(always)]
     fn matches(&self, set: u8, payload: &[u8]) -> bool {
-        if !self.valid || self.set != set || usize::from(self.len) != payload.len() {
-            return false;
-        }
-        self.fields[..self.count].iter().all(|f| {
-            let at = usize::from(f.offset);
-            payload.get(at..at + FIELD_HEADER_SIZE) == Some(&f.head[..])
-        })
+        self.valid && self.set == set && usize::from(self.len) == payload.len()
     }
 
-    /// Decodes `payload` (of this shape) into `out` with the shape's offsets; false, with
-    /// nothing given to `other`, when a member does not decode (the caller falls back to the
-    /// straight-line decoder).
+    /// Decodes `payload` (of this shape's set and length) into `out` with the shape's offsets,
+    /// comparing each field header with the shape's as it goes; false, with nothing given to
+    /// `other` and `out`'s index unspecified, when a header differs or a member does not decode
+    /// (the caller then decodes the packet with the straight-line decoder).
     #[inline(always)]
     fn decode<P: SetPacket>(
         &self,
@@ -443,20 +439,20 @@ impl Shape {
     ) -> bool {
         let fields = &self.fields[..self.count];
         for f in fields {
-            if f.member {
-                let at = usize::from(f.offset) + FIELD_HEADER_SIZE;
-                let Some(data) = payload.get(at..at + usize::from(f.data_len)) else {
-                    return false;
-                };
-                if !out.decode_member(f.descriptor, data) {
-                    return false;
-                }
+            let at = usize::from(f.offset);
+            let Some(field) = payload.get(at..at + FIELD_HEADER_SIZE + usize::from(f.data_len))
+            else {
+                return false;
+            };
+            let (head, data) = field.split_at(FIELD_HEADER_SIZE);
+            if head != f.head || (f.member && !out.decode_member(f.descriptor, data)) {
+                return false;
             }
         }
         let index = out.index_mut();
         index.present = self.index.present;
         index.count = self.index.count;
-        index.descriptors[..self.index.count].copy_from_slice(self.index.descriptors());
+        index.descriptors = self.index.descriptors;
         if self.has_other {
             for f in fields.iter().filter(|f| !f.member) {
                 let at = usize::from(f.offset) + FIELD_HEADER_SIZE;

@@ -166,32 +166,44 @@ pub fn first_float_bits(value: &FieldValue) -> u64 {
 pub fn packet_checksum(any: &AnyPacket) -> u64 {
     use mipcodec::wire::Layout;
     use mipcodec::{filter_data as fd, gnss_data as gd, sensor};
-    let Some(index) = any.index() else {
-        return 0;
+    const ACCEL: u8 = sensor::ScaledAccel::DESCRIPTOR;
+    const GYRO: u8 = sensor::ScaledGyro::DESCRIPTOR;
+    const FD_LLH: u8 = fd::LlhPosition::DESCRIPTOR;
+    const FD_VEL: u8 = fd::NedVelocity::DESCRIPTOR;
+    const GD_LLH: u8 = gd::LlhPosition::DESCRIPTOR;
+    let sum = |descriptors: &[u8], bits: &dyn Fn(u8) -> u64| {
+        descriptors
+            .iter()
+            .fold(0u64, |s, &d| s.wrapping_add(bits(d)))
     };
-    let mut sum = 0u64;
-    for &d in index.descriptors() {
-        let bits = match any.set() {
-            Some(sensor::SET) if d == sensor::ScaledAccel::DESCRIPTOR => {
-                u64::from(any.sensor.scaled_accel.scaled_accel[0].to_bits())
-            }
-            Some(sensor::SET) if d == sensor::ScaledGyro::DESCRIPTOR => {
-                u64::from(any.sensor.scaled_gyro.scaled_gyro[0].to_bits())
-            }
-            Some(fd::SET) if d == fd::LlhPosition::DESCRIPTOR => {
-                any.filter_data.llh_position.latitude.to_bits()
-            }
-            Some(fd::SET) if d == fd::NedVelocity::DESCRIPTOR => {
-                u64::from(any.filter_data.ned_velocity.north.to_bits())
-            }
-            Some(gd::SET) if d == gd::LlhPosition::DESCRIPTOR => {
-                any.gnss_data.llh_position.latitude.to_bits()
-            }
-            _ => u64::from(d),
-        };
-        sum = sum.wrapping_add(bits);
+    match any.set() {
+        Some(sensor::SET) => {
+            let p = &any.sensor;
+            sum(p.index.descriptors(), &|d| match d {
+                ACCEL => u64::from(p.scaled_accel.scaled_accel[0].to_bits()),
+                GYRO => u64::from(p.scaled_gyro.scaled_gyro[0].to_bits()),
+                _ => u64::from(d),
+            })
+        }
+        Some(fd::SET) => {
+            let p = &any.filter_data;
+            sum(p.index.descriptors(), &|d| match d {
+                FD_LLH => p.llh_position.latitude.to_bits(),
+                FD_VEL => u64::from(p.ned_velocity.north.to_bits()),
+                _ => u64::from(d),
+            })
+        }
+        Some(gd::SET) => {
+            let p = &any.gnss_data;
+            sum(p.index.descriptors(), &|d| match d {
+                GD_LLH => p.llh_position.latitude.to_bits(),
+                _ => u64::from(d),
+            })
+        }
+        _ => any
+            .index()
+            .map_or(0, |index| sum(index.descriptors(), &|d| u64::from(d))),
     }
-    sum
 }
 
 /// Decode: frame, then every packet through a layout cache into its set's typed packet; the
