@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, examples, model, naming
+from generator import commands, examples, model, naming, packet_plan
 from generator.examples import ExampleError
 from generator.linkfacts import link_facts
 from generator.naming import upper
@@ -137,51 +137,6 @@ def _hex(v: int, width: int = 2) -> str:
     return "0x%0*X" % (width, v)
 
 
-def _packet_plan(proto: dict, s: dict) -> dict | None:
-    """TEMPORARY until generator/packet_plan.py (helper cppdecode) is merged."""
-    if s["kind"] != "data":
-        return None
-    table = next(t["fields"] for t in proto["lookup"]["sets"] if t["set"] == s["id"])
-    sets = {x["id"]: x for x in proto["sets"]}
-    reserved = {(r["applies_to"], r["id"]): r for r in proto["reserved_fields"]}
-    members = []
-    for e in table:
-        if e["source"] == "reserved":
-            f = reserved[(s["kind"], e["descriptor"])]
-        else:
-            f = next(x for x in sets[e["set"]]["fields"] if x["id"] == e["descriptor"])
-        if len(f["variants"]) != 1:
-            continue
-        v = f["variants"][0]
-        members.append(
-            {
-                "descriptor": e["descriptor"],
-                "name": e["name"],
-                "set": None if e["source"] == "reserved" else e["set"],
-                "source": e["source"],
-                "fast": _fast(proto, v),
-            }
-        )
-    return {"members": members}
-
-
-def _fast(proto: dict, v: dict) -> dict | None:
-    """TEMPORARY (packet_plan.py): size and loads of a fixed sequence of plain values."""
-    loads = []
-    off = 0
-    params = model.params(proto, v["params"], v["functions"])
-    if not params:
-        return None
-    for p in params:
-        e = p.elem
-        if p.optional or p.kind not in ("scalar", "fixed") or e.kind not in ("primitive", "enum", "bitfield"):
-            return None
-        for i in [None] if p.kind == "scalar" else range(p.count):
-            loads.append({"param": p.name, "index": i, "off": off, "bool": e.name == "bool"})
-            off += e.size.min
-    return {"size": off, "loads": loads}
-
-
 # ---------------------------------------------------------------------------------------- model
 class _Protocol:
     """Everything the templates need for one protocol, computed from the IR."""
@@ -192,6 +147,7 @@ class _Protocol:
         self.types = {t["name"]: t for t in proto["types"]}
         self.vectors = vectors
         self._check_names()
+        self._plans = packet_plan.packet_plans(proto)
 
     # ---------------------------------------------------------------- names
     def set_module(self, s: dict) -> str:
@@ -482,40 +438,38 @@ class _Protocol:
         (generator/packet_plan.py, shared with C and C++): one per entry of the set's lookup whose
         field has one layout. Each member is a value of the field's struct, named after the field
         (with the defining module's name before it when two entries would share a name)."""
-        plan = _packet_plan(self.proto, s)
+        plan = self._plans[s["id"]]
         if plan is None:
             return None
         sets = {x["id"]: x for x in self.proto["sets"]}
-        names = [m["name"] for m in plan["members"]]
+        names = [m.field["name"] for m in plan.members]
         members = []
-        for m in plan["members"]:
-            module = "reserved" if m["set"] is None else self.set_module(sets[m["set"]])
-            name = m["name"] if names.count(m["name"]) == 1 else f"{module}_{m['name']}"
-            typ = f"crate::{module}::{camel(m['name'])}"
-            if m["set"] is None:
-                value = f"crate::FieldValue::Reserved(crate::reserved::ReservedField::{camel(m['name'])}(self.{ident(name)}))"
+        for m in plan.members:
+            fname = m.field["name"]
+            module = "reserved" if m.field_set is None else self.set_module(sets[m.field_set])
+            name = ident(fname if names.count(fname) == 1 else f"{module}_{fname}")
+            if m.field_set is None:
+                value = f"crate::FieldValue::Reserved(crate::reserved::ReservedField::{camel(fname)}(self.{name}))"
             else:
-                value = f"crate::FieldValue::{camel(module)}(crate::{module}::SetField::{camel(m['name'])}(self.{ident(name)}))"
+                value = f"crate::FieldValue::{camel(module)}(crate::{module}::SetField::{camel(fname)}(self.{name}))"
+            fast = None
+            if m.fast is not None:
+                fast = {
+                    "size": m.fast.size,
+                    "loads": [
+                        {"path": ident(x.param) + ("" if x.index is None else f"[{x.index}]"), "off": x.off}
+                        for x in m.fast.loads
+                    ],
+                    "bools": list(m.fast.bools),
+                }
             members.append(
                 {
-                    "descriptor": _hex(m["descriptor"]),
-                    "member": ident(name),
-                    "type": typ,
+                    "descriptor": _hex(m.descriptor),
+                    "member": name,
+                    "type": f"crate::{module}::{camel(fname)}",
                     "value": value,
-                    "source": m["source"],
-                    "fast": None
-                    if m["fast"] is None
-                    else {
-                        "size": m["fast"]["size"],
-                        "loads": [
-                            {
-                                "path": ident(x["param"]) + ("" if x["index"] is None else f"[{x['index']}]"),
-                                "off": x["off"],
-                            }
-                            for x in m["fast"]["loads"]
-                        ],
-                        "bools": [x["off"] for x in m["fast"]["loads"] if x["bool"]],
-                    },
+                    "source": m.source,
+                    "fast": fast,
                 }
             )
         return {"members": members}
