@@ -563,12 +563,14 @@ impl Default for Packet {
 impl crate::packets::SetPacket for Packet {
     const SET: u8 = SET;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index(&self) -> &crate::packets::PacketIndex {
         &self.index
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
         &mut self.index
     }
@@ -581,7 +583,8 @@ impl crate::packets::SetPacket for Packet {
         )
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
             0x30 => match <&[u8; 44]>::try_from(data) {

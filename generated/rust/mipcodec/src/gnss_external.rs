@@ -1059,12 +1059,14 @@ impl Default for Packet {
 impl crate::packets::SetPacket for Packet {
     const SET: u8 = SET;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index(&self) -> &crate::packets::PacketIndex {
         &self.index
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
         &mut self.index
     }
@@ -1077,7 +1079,8 @@ impl crate::packets::SetPacket for Packet {
         )
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
             0x03 => match <&[u8; 42]>::try_from(data) {

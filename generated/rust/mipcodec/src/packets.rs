@@ -70,13 +70,15 @@ impl PacketIndex {
         self.present[usize::from(descriptor >> 5)] & (1u32 << (descriptor & 31)) != 0
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn clear(&mut self) {
         self.present = [0; 8];
         self.count = 0;
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn push(&mut self, descriptor: u8) {
         self.present[usize::from(descriptor >> 5)] |= 1u32 << (descriptor & 31);
         // Each field has a header: a packet never holds more than PACKET_FIELDS_MAX.
@@ -122,7 +124,8 @@ pub trait SetPacket {
 /// Decodes `data` as layout `L` into `slot`; false (slot unchanged) when it does not decode.
 /// A fixed layout over exactly its size is a sequence of loads at constant offsets once this is
 /// inlined (the length test folds the reader's bounds checks).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn decode_into<L: Layout>(data: &[u8], slot: &mut L) -> bool {
     match L::decode_data(data) {
         Ok(value) => {
@@ -135,7 +138,8 @@ pub(crate) fn decode_into<L: Layout>(data: &[u8], slot: &mut L) -> bool {
 
 /// One plain value (a number, enum, bitfield, bool) at offset `at` of a fixed layout's data, for
 /// the generated fast loads (the caller checked the length, and the bytes of bools).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn ld<T: Wire>(d: &[u8], at: usize) -> T {
     match d.get(at..) {
         Some(rest) => T::decode(&mut Reader::new(rest)).unwrap_or(T::ZERO),
@@ -144,7 +148,8 @@ pub(crate) fn ld<T: Wire>(d: &[u8], at: usize) -> T {
 }
 
 /// The straight-line decoder of a packet of set `P::SET` (each set's `decode_packet`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn decode_set_packet<P: SetPacket>(
     payload: &[u8],
     out: &mut P,
@@ -421,7 +426,8 @@ impl Shape {
 
     /// True when `payload` of set `set` has this shape's set and length (its field headers are
     /// compared by [`Shape::decode`]).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn matches(&self, set: u8, payload: &[u8]) -> bool {
         self.valid && self.set == set && usize::from(self.len) == payload.len()
     }
@@ -430,7 +436,8 @@ impl Shape {
     /// comparing each field header with the shape's as it goes; false, with nothing given to
     /// `other` and `out`'s index unspecified, when a header differs or a member does not decode
     /// (the caller then decodes the packet with the straight-line decoder).
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode<P: SetPacket>(
         &self,
         payload: &[u8],
@@ -595,7 +602,8 @@ impl LayoutCache {
         }
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode_set<P: SetPacket>(
         &mut self,
         payload: &[u8],

@@ -798,12 +798,14 @@ impl Default for Packet {
 impl crate::packets::SetPacket for Packet {
     const SET: u8 = SET;
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index(&self) -> &crate::packets::PacketIndex {
         &self.index
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
         &mut self.index
     }
@@ -813,7 +815,8 @@ impl crate::packets::SetPacket for Packet {
         matches!(descriptor, 0xD0 | 0xD3 | 0xD4 | 0xD5 | 0xD6 | 0xD7 | 0xD8)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
         match descriptor {
             0xD0 => match <&[u8; 1]>::try_from(data) {

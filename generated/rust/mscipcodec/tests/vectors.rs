@@ -104,14 +104,13 @@ fn check_packets(bytes: &[u8]) {
             for item in packet.fields() {
                 match item {
                     FieldItem::Field { descriptor, data } => {
-                        let general = decode_field(set, descriptor, data, None);
-                        let first = !taken[usize::from(descriptor)];
-                        if first && any.has_member(descriptor) && general.is_ok() {
-                            taken[usize::from(descriptor)] = true;
-                            want.members
-                                .push((descriptor, json_of(general.as_ref().unwrap())));
-                        } else {
-                            want.other.push(format!("{item:?}"));
+                        let d = usize::from(descriptor);
+                        match decode_field(set, descriptor, data, None) {
+                            Ok(general) if !taken[d] && any.has_member(descriptor) => {
+                                taken[d] = true;
+                                want.members.push((descriptor, json_of(&general)));
+                            }
+                            _ => want.other.push(format!("{item:?}")),
                         }
                     }
                     FieldItem::Trailing { .. } => want.other.push(format!("{item:?}")),

@@ -17,7 +17,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use mipcodec_bench::{decode, decode_field_each, decode_straight, frame, session_ingest, session_roundtrip, Stream, Tally, STREAMS};
+use mipcodec_bench::{
+    decode, decode_field_each, decode_straight, frame, session_ingest, session_roundtrip, Stream,
+    Tally, STREAMS,
+};
 
 /// Ping round trips of one session-roundtrip pass.
 const ROUND_TRIPS: u64 = 2000;
