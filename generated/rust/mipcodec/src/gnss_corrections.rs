@@ -576,6 +576,7 @@ impl crate::packets::SetPacket for Packet {
     }
 
     #[inline]
+    #[allow(clippy::manual_range_patterns)]
     fn has_member(descriptor: u8) -> bool {
         matches!(
             descriptor,

@@ -811,6 +811,7 @@ impl crate::packets::SetPacket for Packet {
     }
 
     #[inline]
+    #[allow(clippy::manual_range_patterns)]
     fn has_member(descriptor: u8) -> bool {
         matches!(descriptor, 0xD0 | 0xD3 | 0xD4 | 0xD5 | 0xD6 | 0xD7 | 0xD8)
     }
