@@ -147,7 +147,7 @@ class _Protocol:
         self.types = {t["name"]: t for t in proto["types"]}
         self.vectors = vectors
         self._check_names()
-        self._plans = packet_plan.packet_plans(proto)
+        self._plans: dict | None = None  # packet_model: computed when rendering (api_names needs none)
 
     # ---------------------------------------------------------------- names
     def set_module(self, s: dict) -> str:
@@ -438,6 +438,8 @@ class _Protocol:
         (generator/packet_plan.py, shared with C and C++): one per entry of the set's lookup whose
         field has one layout. Each member is a value of the field's struct, named after the field
         (with the defining module's name before it when two entries would share a name)."""
+        if self._plans is None:
+            self._plans = packet_plan.packet_plans(self.proto)
         plan = self._plans[s["id"]]
         if plan is None:
             return None
