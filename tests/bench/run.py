@@ -530,6 +530,8 @@ MODE_RANK = {
     "frame": 1,
     "decode": 2,
     "decode-uncached": 2.5,
+    "decode-straight": 2.5,
+    "decode-field": 2.5,
     "session-ingest": 3,
     "copy-per-packet": 4,
     "csv": 5,

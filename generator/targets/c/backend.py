@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, diagnostics, model
+from generator import commands, diagnostics, model, packet_plan
 from generator.cmake import cmake_package_files, pkg_config
 from generator.device_tables import device_tables
 from generator.examples import (
@@ -105,26 +105,17 @@ _TEMPLATES = {
 }
 
 
-def _fast_loads(views: list[dict]) -> dict | None:
-    """The straight-line decode of a layout that is a fixed sequence of plain values (numbers,
-    enums, bitfields, bools, chars; scalars or fixed arrays): its size and one load per value at
-    a constant offset. None when the layout has anything else (the reader path handles it)."""
-    loads = []
-    off = 0
-    if not views:
+def _fast_loads(fast: packet_plan.FastLayout | None) -> dict | None:
+    """The C names of a layout's constant-offset decode (generator/packet_plan.py decides it):
+    its size and one load per value (member, array index, the runtime's load suffix, offset)."""
+    if fast is None:
         return None
-    for v in views:
-        if v["optional"] or v["kind"] not in ("scalar", "fixed") or "ld" not in v["e"]:
-            return None
-        size = v["e"]["size"]
-        if v["kind"] == "scalar":
-            loads.append({"c": v["c"], "index": None, "ld": v["e"]["ld"], "off": off})
-            off += size
-        else:
-            for i in range(v["n"]):
-                loads.append({"c": v["c"], "index": i, "ld": v["e"]["ld"], "off": off})
-                off += size
-    return {"size": off, "loads": loads}
+    return {
+        "size": fast.size,
+        "loads": [
+            {"c": member(x.param), "index": x.index, "ld": _PRIM[x.primitive][1], "off": x.off} for x in fast.loads
+        ],
+    }
 
 
 # A spec the C back end cannot express: a spec error located at the element it names (pipeline.py).
@@ -397,7 +388,8 @@ class _Protocol:
         return view
 
     def _params_view(self, params: list[dict], functions: list[str] | None, owner: str) -> dict:
-        views = [self._param_view(q) for q in model.params(self.proto, params, functions)]
+        plist = model.params(self.proto, params, functions)
+        views = [self._param_view(q) for q in plist]
         # The struct members (layout_code.j2 `members`): a presence flag before each optional
         # parameter, an element count before each array that runs to the end of the data.
         names = []
@@ -413,7 +405,7 @@ class _Protocol:
             "needs_i": any(v["kind"] in ("fixed", "counted", "remaining") for v in views),
             "needs_n": any(v["kind"] == "remaining" and v["e"]["size"] for v in views),
             "has_optional": any(v["optional"] for v in views),
-            "fast": _fast_loads(views),
+            "fast": _fast_loads(packet_plan.fast_layout(plist)),
         }
 
     # -------------------------------------------------------------- fields and layouts
@@ -494,39 +486,42 @@ class _Protocol:
 
     def _add_packet_decoders(self) -> None:
         """Each data set view's `packet`: its straight-line packet decoder (set.h.j2, set.c.j2;
-        issue 38), None for the other sets. One member per entry of the set's lookup (its own
-        fields, the reserved fields of its kind, the shared data fields) whose field has one layout;
-        a field with per-device variants is left to the general dispatch, as the device chooses
-        among them. `includes`: the headers of the members' types other than the set's own."""
+        issue 38), None for the other sets: the members and fast loads of generator/packet_plan.py
+        in C names. `includes`: the headers of the members' types other than the set's own."""
         headers = {s["id"]: s["header"] for s in self.sets}
+        fields = {(s["id"], f["descriptor"]): f for s in self.sets for f in s["fields"]}
+        reserved = {(r["applies_to"], r["descriptor"]): r for r in self.reserved}
+        plans = packet_plan.packet_plans(self.proto)
         # dispatch.h: the union of every set's packet struct and the decoder that picks by set
         self._claim(f"{self.p}_packet_t", "the packet of any data set")
         self._claim(f"{self.p}_decode_packet", "the straight-line decoder of any data set")
         for s in self.sets:
-            if self.data_kind is None or s["kind"] != self.data_kind["name"]:
+            plan = plans[s["id"]]
+            if plan is None:
                 s["packet"] = None
                 continue
             what = f"set {s['name']}"
             members = []
             includes = set()
-            for f in s["lookup"]:
-                if f["count"] != 1:
-                    continue
-                layout = f["layouts"][0]
-                header = headers[f["set"]] if f["set"] is not None else f"{self.pkg}/reserved.h"
+            for m in plan.members:
+                if m.field_set is None:
+                    f, header = reserved[(s["kind"], m.descriptor)], f"{self.pkg}/reserved.h"
+                else:
+                    f, header = fields[(m.field_set, m.descriptor)], headers[m.field_set]
                 if header != s["header"]:
                     includes.add(header)
-                fast = layout["fast"]
+                layout = f["layouts"][0]
+                fast = _fast_loads(m.fast)
                 members.append(
                     {
-                        "descriptor": f["descriptor"],
+                        "descriptor": m.descriptor,
                         "member": layout["member"],
                         "c": layout["c"],
                         "fn": layout["fn"],
                         "size": fast["size"] if fast else None,
                         "loads": fast["loads"] if fast else [],
-                        "bools": [x["off"] for x in fast["loads"] if x["ld"] == "bool"] if fast else [],
-                        "source": f["source"],
+                        "bools": list(m.fast.bools) if m.fast else [],
+                        "source": m.source,
                     }
                 )
             s["packet"] = {

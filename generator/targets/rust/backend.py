@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, examples, model, naming
+from generator import commands, examples, model, naming, packet_plan
 from generator.examples import ExampleError
 from generator.linkfacts import link_facts
 from generator.naming import upper
@@ -147,6 +147,7 @@ class _Protocol:
         self.types = {t["name"]: t for t in proto["types"]}
         self.vectors = vectors
         self._check_names()
+        self._plans: dict | None = None  # packet_model: computed when rendering (api_names needs none)
 
     # ---------------------------------------------------------------- names
     def set_module(self, s: dict) -> str:
@@ -428,7 +429,52 @@ class _Protocol:
             "shared": s["shared"],
             "decoders": self.set_decoders(s),
             "feature": set_feature(self.set_module(s)),
+            "packet": self.packet_model(s),
         }
+
+    def packet_model(self, s: dict) -> dict | None:
+        """Set s's straight-line packet decoder (set.rs.j2 `Packet`, `decode_packet`; issue 38),
+        None for a set that is not a data set. The members are the packet plan's
+        (generator/packet_plan.py, shared with C and C++): one per entry of the set's lookup whose
+        field has one layout. Each member is a value of the field's struct, named after the field
+        (with the defining module's name before it when two entries would share a name)."""
+        if self._plans is None:
+            self._plans = packet_plan.packet_plans(self.proto)
+        plan = self._plans[s["id"]]
+        if plan is None:
+            return None
+        sets = {x["id"]: x for x in self.proto["sets"]}
+        names = [m.field["name"] for m in plan.members]
+        members = []
+        for m in plan.members:
+            fname = m.field["name"]
+            module = "reserved" if m.field_set is None else self.set_module(sets[m.field_set])
+            name = ident(fname if names.count(fname) == 1 else f"{module}_{fname}")
+            if m.field_set is None:
+                value = f"crate::FieldValue::Reserved(crate::reserved::ReservedField::{camel(fname)}(self.{name}))"
+            else:
+                value = f"crate::FieldValue::{camel(module)}(crate::{module}::SetField::{camel(fname)}(self.{name}))"
+            fast = None
+            if m.fast is not None:
+                fast = {
+                    "size": m.fast.size,
+                    "loads": [
+                        {"path": ident(x.param) + ("" if x.index is None else f"[{x.index}]"), "off": x.off}
+                        for x in m.fast.loads
+                    ],
+                    "bools": list(m.fast.bools),
+                }
+            members.append(
+                {
+                    "descriptor": _hex(m.descriptor),
+                    "member": name,
+                    "type": f"crate::{module}::{camel(fname)}",
+                    "value": value,
+                    "source": m.source,
+                    "fast": fast,
+                }
+            )
+        return {"members": members}
 
     def set_decoders(self, s: dict) -> list[dict]:
         """The entries of set s's decoder table: every descriptor that the IR's `lookup` resolves
@@ -879,6 +925,7 @@ _TEMPLATES = [
     ("types.rs.j2", "src/types.rs"),
     ("reserved.rs.j2", "src/reserved.rs"),
     ("dispatch.rs.j2", "src/dispatch.rs"),
+    ("packets.rs.j2", "src/packets.rs"),
     ("test_vectors.rs.j2", "tests/vectors.rs"),
     ("test_spec.rs.j2", "tests/spec.rs"),
     ("example_getting_started.rs.j2", "examples/getting_started.rs"),

@@ -47,6 +47,7 @@ RESERVED_MODULES = frozenset(
         "framing",
         "json",
         "json_read",
+        "packets",
         "parser",
         "reserved",
         "samples",

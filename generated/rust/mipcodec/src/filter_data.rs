@@ -5814,3 +5814,1208 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x01.
+    pub llh_position: crate::filter_data::LlhPosition,
+    /// Field 0x02.
+    pub ned_velocity: crate::filter_data::NedVelocity,
+    /// Field 0x03.
+    pub attitude_quaternion: crate::filter_data::AttitudeQuaternion,
+    /// Field 0x04.
+    pub attitude_dcm: crate::filter_data::AttitudeDcm,
+    /// Field 0x05.
+    pub euler_angles: crate::filter_data::EulerAngles,
+    /// Field 0x06.
+    pub gyro_bias: crate::filter_data::GyroBias,
+    /// Field 0x07.
+    pub accel_bias: crate::filter_data::AccelBias,
+    /// Field 0x08.
+    pub llh_position_uncertainty: crate::filter_data::LlhPositionUncertainty,
+    /// Field 0x09.
+    pub ned_velocity_uncertainty: crate::filter_data::NedVelocityUncertainty,
+    /// Field 0x0A.
+    pub euler_angles_uncertainty: crate::filter_data::EulerAnglesUncertainty,
+    /// Field 0x0B.
+    pub gyro_bias_uncertainty: crate::filter_data::GyroBiasUncertainty,
+    /// Field 0x0C.
+    pub accel_bias_uncertainty: crate::filter_data::AccelBiasUncertainty,
+    /// Field 0x0D.
+    pub linear_accel: crate::filter_data::LinearAccel,
+    /// Field 0x0E.
+    pub comp_angular_rate: crate::filter_data::CompAngularRate,
+    /// Field 0x0F.
+    pub wgs84_gravity_magnitude: crate::filter_data::Wgs84GravityMagnitude,
+    /// Field 0x11.
+    pub filter_data_gps_timestamp: crate::filter_data::GpsTimestamp,
+    /// Field 0x12.
+    pub quaternion_attitude_uncertainty: crate::filter_data::QuaternionAttitudeUncertainty,
+    /// Field 0x13.
+    pub gravity_vector: crate::filter_data::GravityVector,
+    /// Field 0x14.
+    pub heading_update_state: crate::filter_data::HeadingUpdateState,
+    /// Field 0x15.
+    pub magnetic_model: crate::filter_data::MagneticModel,
+    /// Field 0x16.
+    pub gyro_scale_factor: crate::filter_data::GyroScaleFactor,
+    /// Field 0x17.
+    pub accel_scale_factor: crate::filter_data::AccelScaleFactor,
+    /// Field 0x18.
+    pub gyro_scale_factor_uncertainty: crate::filter_data::GyroScaleFactorUncertainty,
+    /// Field 0x19.
+    pub accel_scale_factor_uncertainty: crate::filter_data::AccelScaleFactorUncertainty,
+    /// Field 0x1C.
+    pub compensated_accel: crate::filter_data::CompensatedAccel,
+    /// Field 0x20.
+    pub standard_atmosphere: crate::filter_data::StandardAtmosphere,
+    /// Field 0x21.
+    pub pressure_altitude: crate::filter_data::PressureAltitude,
+    /// Field 0x25.
+    pub mag_auto_hard_iron_offset: crate::filter_data::MagAutoHardIronOffset,
+    /// Field 0x26.
+    pub mag_auto_soft_iron_matrix: crate::filter_data::MagAutoSoftIronMatrix,
+    /// Field 0x28.
+    pub mag_auto_hard_iron_offset_uncertainty: crate::filter_data::MagAutoHardIronOffsetUncertainty,
+    /// Field 0x29.
+    pub mag_auto_soft_iron_matrix_uncertainty: crate::filter_data::MagAutoSoftIronMatrixUncertainty,
+    /// Field 0x30.
+    pub gnss_antenna_offset_correction: crate::filter_data::GnssAntennaOffsetCorrection,
+    /// Field 0x31.
+    pub gnss_antenna_offset_correction_uncertainty:
+        crate::filter_data::GnssAntennaOffsetCorrectionUncertainty,
+    /// Field 0x34.
+    pub multi_antenna_offset_correction: crate::filter_data::MultiAntennaOffsetCorrection,
+    /// Field 0x35.
+    pub multi_antenna_offset_correction_uncertainty:
+        crate::filter_data::MultiAntennaOffsetCorrectionUncertainty,
+    /// Field 0x36.
+    pub ecef_position_uncertainty: crate::filter_data::EcefPositionUncertainty,
+    /// Field 0x37.
+    pub ecef_velocity_uncertainty: crate::filter_data::EcefVelocityUncertainty,
+    /// Field 0x40.
+    pub ecef_position: crate::filter_data::EcefPosition,
+    /// Field 0x41.
+    pub ecef_velocity: crate::filter_data::EcefVelocity,
+    /// Field 0x42.
+    pub ned_relative_position: crate::filter_data::NedRelativePosition,
+    /// Field 0x43.
+    pub gnss_position_aiding_status: crate::filter_data::GnssPositionAidingStatus,
+    /// Field 0x46.
+    pub aiding_measurement_summary: crate::filter_data::AidingMeasurementSummary,
+    /// Field 0x47.
+    pub odometer_scale_factor_error: crate::filter_data::OdometerScaleFactorError,
+    /// Field 0x48.
+    pub odometer_scale_factor_error_uncertainty:
+        crate::filter_data::OdometerScaleFactorErrorUncertainty,
+    /// Field 0x49.
+    pub gnss_dual_antenna_status: crate::filter_data::GnssDualAntennaStatus,
+    /// Field 0x50.
+    pub aiding_frame_config_error: crate::filter_data::AidingFrameConfigError,
+    /// Field 0x51.
+    pub aiding_frame_config_error_uncertainty:
+        crate::filter_data::AidingFrameConfigErrorUncertainty,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub shared_gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        llh_position: <crate::filter_data::LlhPosition as crate::wire::Wire>::ZERO,
+        ned_velocity: <crate::filter_data::NedVelocity as crate::wire::Wire>::ZERO,
+        attitude_quaternion: <crate::filter_data::AttitudeQuaternion as crate::wire::Wire>::ZERO,
+        attitude_dcm: <crate::filter_data::AttitudeDcm as crate::wire::Wire>::ZERO,
+        euler_angles: <crate::filter_data::EulerAngles as crate::wire::Wire>::ZERO,
+        gyro_bias: <crate::filter_data::GyroBias as crate::wire::Wire>::ZERO,
+        accel_bias: <crate::filter_data::AccelBias as crate::wire::Wire>::ZERO,
+        llh_position_uncertainty:
+            <crate::filter_data::LlhPositionUncertainty as crate::wire::Wire>::ZERO,
+        ned_velocity_uncertainty:
+            <crate::filter_data::NedVelocityUncertainty as crate::wire::Wire>::ZERO,
+        euler_angles_uncertainty:
+            <crate::filter_data::EulerAnglesUncertainty as crate::wire::Wire>::ZERO,
+        gyro_bias_uncertainty: <crate::filter_data::GyroBiasUncertainty as crate::wire::Wire>::ZERO,
+        accel_bias_uncertainty:
+            <crate::filter_data::AccelBiasUncertainty as crate::wire::Wire>::ZERO,
+        linear_accel: <crate::filter_data::LinearAccel as crate::wire::Wire>::ZERO,
+        comp_angular_rate: <crate::filter_data::CompAngularRate as crate::wire::Wire>::ZERO,
+        wgs84_gravity_magnitude:
+            <crate::filter_data::Wgs84GravityMagnitude as crate::wire::Wire>::ZERO,
+        filter_data_gps_timestamp: <crate::filter_data::GpsTimestamp as crate::wire::Wire>::ZERO,
+        quaternion_attitude_uncertainty:
+            <crate::filter_data::QuaternionAttitudeUncertainty as crate::wire::Wire>::ZERO,
+        gravity_vector: <crate::filter_data::GravityVector as crate::wire::Wire>::ZERO,
+        heading_update_state: <crate::filter_data::HeadingUpdateState as crate::wire::Wire>::ZERO,
+        magnetic_model: <crate::filter_data::MagneticModel as crate::wire::Wire>::ZERO,
+        gyro_scale_factor: <crate::filter_data::GyroScaleFactor as crate::wire::Wire>::ZERO,
+        accel_scale_factor: <crate::filter_data::AccelScaleFactor as crate::wire::Wire>::ZERO,
+        gyro_scale_factor_uncertainty:
+            <crate::filter_data::GyroScaleFactorUncertainty as crate::wire::Wire>::ZERO,
+        accel_scale_factor_uncertainty:
+            <crate::filter_data::AccelScaleFactorUncertainty as crate::wire::Wire>::ZERO,
+        compensated_accel: <crate::filter_data::CompensatedAccel as crate::wire::Wire>::ZERO,
+        standard_atmosphere: <crate::filter_data::StandardAtmosphere as crate::wire::Wire>::ZERO,
+        pressure_altitude: <crate::filter_data::PressureAltitude as crate::wire::Wire>::ZERO,
+        mag_auto_hard_iron_offset:
+            <crate::filter_data::MagAutoHardIronOffset as crate::wire::Wire>::ZERO,
+        mag_auto_soft_iron_matrix:
+            <crate::filter_data::MagAutoSoftIronMatrix as crate::wire::Wire>::ZERO,
+        mag_auto_hard_iron_offset_uncertainty:
+            <crate::filter_data::MagAutoHardIronOffsetUncertainty as crate::wire::Wire>::ZERO,
+        mag_auto_soft_iron_matrix_uncertainty:
+            <crate::filter_data::MagAutoSoftIronMatrixUncertainty as crate::wire::Wire>::ZERO,
+        gnss_antenna_offset_correction:
+            <crate::filter_data::GnssAntennaOffsetCorrection as crate::wire::Wire>::ZERO,
+        gnss_antenna_offset_correction_uncertainty:
+            <crate::filter_data::GnssAntennaOffsetCorrectionUncertainty as crate::wire::Wire>::ZERO,
+        multi_antenna_offset_correction:
+            <crate::filter_data::MultiAntennaOffsetCorrection as crate::wire::Wire>::ZERO,
+        multi_antenna_offset_correction_uncertainty:
+            <crate::filter_data::MultiAntennaOffsetCorrectionUncertainty as crate::wire::Wire>::ZERO,
+        ecef_position_uncertainty:
+            <crate::filter_data::EcefPositionUncertainty as crate::wire::Wire>::ZERO,
+        ecef_velocity_uncertainty:
+            <crate::filter_data::EcefVelocityUncertainty as crate::wire::Wire>::ZERO,
+        ecef_position: <crate::filter_data::EcefPosition as crate::wire::Wire>::ZERO,
+        ecef_velocity: <crate::filter_data::EcefVelocity as crate::wire::Wire>::ZERO,
+        ned_relative_position: <crate::filter_data::NedRelativePosition as crate::wire::Wire>::ZERO,
+        gnss_position_aiding_status:
+            <crate::filter_data::GnssPositionAidingStatus as crate::wire::Wire>::ZERO,
+        aiding_measurement_summary:
+            <crate::filter_data::AidingMeasurementSummary as crate::wire::Wire>::ZERO,
+        odometer_scale_factor_error:
+            <crate::filter_data::OdometerScaleFactorError as crate::wire::Wire>::ZERO,
+        odometer_scale_factor_error_uncertainty:
+            <crate::filter_data::OdometerScaleFactorErrorUncertainty as crate::wire::Wire>::ZERO,
+        gnss_dual_antenna_status:
+            <crate::filter_data::GnssDualAntennaStatus as crate::wire::Wire>::ZERO,
+        aiding_frame_config_error:
+            <crate::filter_data::AidingFrameConfigError as crate::wire::Wire>::ZERO,
+        aiding_frame_config_error_uncertainty:
+            <crate::filter_data::AidingFrameConfigErrorUncertainty as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        shared_gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x01 | 0x02
+                | 0x03
+                | 0x04
+                | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0A
+                | 0x0B
+                | 0x0C
+                | 0x0D
+                | 0x0E
+                | 0x0F
+                | 0x11
+                | 0x12
+                | 0x13
+                | 0x14
+                | 0x15
+                | 0x16
+                | 0x17
+                | 0x18
+                | 0x19
+                | 0x1C
+                | 0x20
+                | 0x21
+                | 0x25
+                | 0x26
+                | 0x28
+                | 0x29
+                | 0x30
+                | 0x31
+                | 0x34
+                | 0x35
+                | 0x36
+                | 0x37
+                | 0x40
+                | 0x41
+                | 0x42
+                | 0x43
+                | 0x46
+                | 0x47
+                | 0x48
+                | 0x49
+                | 0x50
+                | 0x51
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x01 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x02 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x03 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.attitude_quaternion;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.attitude_quaternion),
+            },
+            0x04 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.attitude_dcm;
+                    s.dcm[0] = crate::packets::ld(d, 0);
+                    s.dcm[1] = crate::packets::ld(d, 4);
+                    s.dcm[2] = crate::packets::ld(d, 8);
+                    s.dcm[3] = crate::packets::ld(d, 12);
+                    s.dcm[4] = crate::packets::ld(d, 16);
+                    s.dcm[5] = crate::packets::ld(d, 20);
+                    s.dcm[6] = crate::packets::ld(d, 24);
+                    s.dcm[7] = crate::packets::ld(d, 28);
+                    s.dcm[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.attitude_dcm),
+            },
+            0x05 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.euler_angles;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.euler_angles),
+            },
+            0x06 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_bias;
+                    s.bias[0] = crate::packets::ld(d, 0);
+                    s.bias[1] = crate::packets::ld(d, 4);
+                    s.bias[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_bias),
+            },
+            0x07 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_bias;
+                    s.bias[0] = crate::packets::ld(d, 0);
+                    s.bias[1] = crate::packets::ld(d, 4);
+                    s.bias[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_bias),
+            },
+            0x08 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position_uncertainty;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position_uncertainty),
+            },
+            0x09 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity_uncertainty;
+                    s.north = crate::packets::ld(d, 0);
+                    s.east = crate::packets::ld(d, 4);
+                    s.down = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity_uncertainty),
+            },
+            0x0A => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.euler_angles_uncertainty;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.euler_angles_uncertainty),
+            },
+            0x0B => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_bias_uncertainty;
+                    s.bias_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.bias_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.bias_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_bias_uncertainty),
+            },
+            0x0C => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_bias_uncertainty;
+                    s.bias_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.bias_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.bias_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_bias_uncertainty),
+            },
+            0x0D => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.linear_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.linear_accel),
+            },
+            0x0E => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.comp_angular_rate;
+                    s.gyro[0] = crate::packets::ld(d, 0);
+                    s.gyro[1] = crate::packets::ld(d, 4);
+                    s.gyro[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.comp_angular_rate),
+            },
+            0x0F => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.wgs84_gravity_magnitude;
+                    s.gravity_magnitude = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.wgs84_gravity_magnitude),
+            },
+            0x11 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.filter_data_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.filter_data_gps_timestamp),
+            },
+            0x12 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.quaternion_attitude_uncertainty;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.quaternion_attitude_uncertainty),
+            },
+            0x13 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gravity_vector;
+                    s.gravity[0] = crate::packets::ld(d, 0);
+                    s.gravity[1] = crate::packets::ld(d, 4);
+                    s.gravity[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gravity_vector),
+            },
+            0x14 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.heading_update_state;
+                    s.heading = crate::packets::ld(d, 0);
+                    s.heading_uncertainty = crate::packets::ld(d, 4);
+                    s.source = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.heading_update_state),
+            },
+            0x15 => match <&[u8; 22]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.magnetic_model;
+                    s.intensity_north = crate::packets::ld(d, 0);
+                    s.intensity_east = crate::packets::ld(d, 4);
+                    s.intensity_down = crate::packets::ld(d, 8);
+                    s.inclination = crate::packets::ld(d, 12);
+                    s.declination = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 20);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.magnetic_model),
+            },
+            0x16 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_scale_factor;
+                    s.scale_factor[0] = crate::packets::ld(d, 0);
+                    s.scale_factor[1] = crate::packets::ld(d, 4);
+                    s.scale_factor[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_scale_factor),
+            },
+            0x17 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_scale_factor;
+                    s.scale_factor[0] = crate::packets::ld(d, 0);
+                    s.scale_factor[1] = crate::packets::ld(d, 4);
+                    s.scale_factor[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_scale_factor),
+            },
+            0x18 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gyro_scale_factor_uncertainty;
+                    s.scale_factor_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.scale_factor_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.scale_factor_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gyro_scale_factor_uncertainty),
+            },
+            0x19 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.accel_scale_factor_uncertainty;
+                    s.scale_factor_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.scale_factor_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.scale_factor_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.accel_scale_factor_uncertainty),
+            },
+            0x1C => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.compensated_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.compensated_accel),
+            },
+            0x20 => match <&[u8; 22]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.standard_atmosphere;
+                    s.geometric_altitude = crate::packets::ld(d, 0);
+                    s.geopotential_altitude = crate::packets::ld(d, 4);
+                    s.temperature = crate::packets::ld(d, 8);
+                    s.pressure = crate::packets::ld(d, 12);
+                    s.density = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 20);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.standard_atmosphere),
+            },
+            0x21 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.pressure_altitude;
+                    s.pressure_altitude = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.pressure_altitude),
+            },
+            0x25 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_hard_iron_offset;
+                    s.hard_iron_offset[0] = crate::packets::ld(d, 0);
+                    s.hard_iron_offset[1] = crate::packets::ld(d, 4);
+                    s.hard_iron_offset[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.mag_auto_hard_iron_offset),
+            },
+            0x26 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_soft_iron_matrix;
+                    s.soft_iron_matrix[0] = crate::packets::ld(d, 0);
+                    s.soft_iron_matrix[1] = crate::packets::ld(d, 4);
+                    s.soft_iron_matrix[2] = crate::packets::ld(d, 8);
+                    s.soft_iron_matrix[3] = crate::packets::ld(d, 12);
+                    s.soft_iron_matrix[4] = crate::packets::ld(d, 16);
+                    s.soft_iron_matrix[5] = crate::packets::ld(d, 20);
+                    s.soft_iron_matrix[6] = crate::packets::ld(d, 24);
+                    s.soft_iron_matrix[7] = crate::packets::ld(d, 28);
+                    s.soft_iron_matrix[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.mag_auto_soft_iron_matrix),
+            },
+            0x28 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_hard_iron_offset_uncertainty;
+                    s.hard_iron_offset_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.hard_iron_offset_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.hard_iron_offset_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.mag_auto_hard_iron_offset_uncertainty,
+                ),
+            },
+            0x29 => match <&[u8; 38]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.mag_auto_soft_iron_matrix_uncertainty;
+                    s.soft_iron_matrix_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.soft_iron_matrix_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.soft_iron_matrix_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.soft_iron_matrix_uncertainty[3] = crate::packets::ld(d, 12);
+                    s.soft_iron_matrix_uncertainty[4] = crate::packets::ld(d, 16);
+                    s.soft_iron_matrix_uncertainty[5] = crate::packets::ld(d, 20);
+                    s.soft_iron_matrix_uncertainty[6] = crate::packets::ld(d, 24);
+                    s.soft_iron_matrix_uncertainty[7] = crate::packets::ld(d, 28);
+                    s.soft_iron_matrix_uncertainty[8] = crate::packets::ld(d, 32);
+                    s.valid_flags = crate::packets::ld(d, 36);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.mag_auto_soft_iron_matrix_uncertainty,
+                ),
+            },
+            0x30 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_antenna_offset_correction;
+                    s.offset[0] = crate::packets::ld(d, 0);
+                    s.offset[1] = crate::packets::ld(d, 4);
+                    s.offset[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_antenna_offset_correction),
+            },
+            0x31 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_antenna_offset_correction_uncertainty;
+                    s.offset_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.offset_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.offset_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.gnss_antenna_offset_correction_uncertainty,
+                ),
+            },
+            0x34 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.multi_antenna_offset_correction;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.offset[0] = crate::packets::ld(d, 1);
+                    s.offset[1] = crate::packets::ld(d, 5);
+                    s.offset[2] = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.multi_antenna_offset_correction),
+            },
+            0x35 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.multi_antenna_offset_correction_uncertainty;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.offset_uncertainty[0] = crate::packets::ld(d, 1);
+                    s.offset_uncertainty[1] = crate::packets::ld(d, 5);
+                    s.offset_uncertainty[2] = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.multi_antenna_offset_correction_uncertainty,
+                ),
+            },
+            0x36 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position_uncertainty;
+                    s.position_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.position_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.position_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position_uncertainty),
+            },
+            0x37 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity_uncertainty;
+                    s.velocity_uncertainty[0] = crate::packets::ld(d, 0);
+                    s.velocity_uncertainty[1] = crate::packets::ld(d, 4);
+                    s.velocity_uncertainty[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity_uncertainty),
+            },
+            0x40 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x41 => match <&[u8; 14]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x42 => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_relative_position;
+                    s.relative_position[0] = crate::packets::ld(d, 0);
+                    s.relative_position[1] = crate::packets::ld(d, 8);
+                    s.relative_position[2] = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_relative_position),
+            },
+            0x43 => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_position_aiding_status;
+                    s.receiver_id = crate::packets::ld(d, 0);
+                    s.time_of_week = crate::packets::ld(d, 1);
+                    s.status = crate::packets::ld(d, 5);
+                    s.reserved[0] = crate::packets::ld(d, 7);
+                    s.reserved[1] = crate::packets::ld(d, 8);
+                    s.reserved[2] = crate::packets::ld(d, 9);
+                    s.reserved[3] = crate::packets::ld(d, 10);
+                    s.reserved[4] = crate::packets::ld(d, 11);
+                    s.reserved[5] = crate::packets::ld(d, 12);
+                    s.reserved[6] = crate::packets::ld(d, 13);
+                    s.reserved[7] = crate::packets::ld(d, 14);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_position_aiding_status),
+            },
+            0x46 => match <&[u8; 7]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_measurement_summary;
+                    s.time_of_week = crate::packets::ld(d, 0);
+                    s.source = crate::packets::ld(d, 4);
+                    s.r#type = crate::packets::ld(d, 5);
+                    s.indicator = crate::packets::ld(d, 6);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.aiding_measurement_summary),
+            },
+            0x47 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_scale_factor_error;
+                    s.scale_factor_error = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.odometer_scale_factor_error),
+            },
+            0x48 => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_scale_factor_error_uncertainty;
+                    s.scale_factor_error_uncertainty = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.odometer_scale_factor_error_uncertainty,
+                ),
+            },
+            0x49 => match <&[u8; 17]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gnss_dual_antenna_status;
+                    s.time_of_week = crate::packets::ld(d, 0);
+                    s.heading = crate::packets::ld(d, 4);
+                    s.heading_uncertainty = crate::packets::ld(d, 8);
+                    s.fix_type = crate::packets::ld(d, 12);
+                    s.status_flags = crate::packets::ld(d, 13);
+                    s.valid_flags = crate::packets::ld(d, 15);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gnss_dual_antenna_status),
+            },
+            0x50 => match <&[u8; 29]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_frame_config_error;
+                    s.frame_id = crate::packets::ld(d, 0);
+                    s.translation[0] = crate::packets::ld(d, 1);
+                    s.translation[1] = crate::packets::ld(d, 5);
+                    s.translation[2] = crate::packets::ld(d, 9);
+                    s.attitude[0] = crate::packets::ld(d, 13);
+                    s.attitude[1] = crate::packets::ld(d, 17);
+                    s.attitude[2] = crate::packets::ld(d, 21);
+                    s.attitude[3] = crate::packets::ld(d, 25);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.aiding_frame_config_error),
+            },
+            0x51 => match <&[u8; 25]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.aiding_frame_config_error_uncertainty;
+                    s.frame_id = crate::packets::ld(d, 0);
+                    s.translation_uncertainty[0] = crate::packets::ld(d, 1);
+                    s.translation_uncertainty[1] = crate::packets::ld(d, 5);
+                    s.translation_uncertainty[2] = crate::packets::ld(d, 9);
+                    s.attitude_uncertainty[0] = crate::packets::ld(d, 13);
+                    s.attitude_uncertainty[1] = crate::packets::ld(d, 17);
+                    s.attitude_uncertainty[2] = crate::packets::ld(d, 21);
+                    true
+                }
+                _ => crate::packets::decode_into(
+                    data,
+                    &mut self.aiding_frame_config_error_uncertainty,
+                ),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.shared_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x01 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::LlhPosition(self.llh_position),
+            )),
+            0x02 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::NedVelocity(self.ned_velocity),
+            )),
+            0x03 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AttitudeQuaternion(self.attitude_quaternion),
+            )),
+            0x04 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AttitudeDcm(self.attitude_dcm),
+            )),
+            0x05 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EulerAngles(self.euler_angles),
+            )),
+            0x06 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GyroBias(self.gyro_bias),
+            )),
+            0x07 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AccelBias(self.accel_bias),
+            )),
+            0x08 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::LlhPositionUncertainty(self.llh_position_uncertainty),
+            )),
+            0x09 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::NedVelocityUncertainty(self.ned_velocity_uncertainty),
+            )),
+            0x0A => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EulerAnglesUncertainty(self.euler_angles_uncertainty),
+            )),
+            0x0B => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GyroBiasUncertainty(self.gyro_bias_uncertainty),
+            )),
+            0x0C => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AccelBiasUncertainty(self.accel_bias_uncertainty),
+            )),
+            0x0D => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::LinearAccel(self.linear_accel),
+            )),
+            0x0E => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::CompAngularRate(self.comp_angular_rate),
+            )),
+            0x0F => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::Wgs84GravityMagnitude(self.wgs84_gravity_magnitude),
+            )),
+            0x11 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GpsTimestamp(self.filter_data_gps_timestamp),
+            )),
+            0x12 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::QuaternionAttitudeUncertainty(
+                    self.quaternion_attitude_uncertainty,
+                ),
+            )),
+            0x13 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GravityVector(self.gravity_vector),
+            )),
+            0x14 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::HeadingUpdateState(self.heading_update_state),
+            )),
+            0x15 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MagneticModel(self.magnetic_model),
+            )),
+            0x16 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GyroScaleFactor(self.gyro_scale_factor),
+            )),
+            0x17 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AccelScaleFactor(self.accel_scale_factor),
+            )),
+            0x18 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GyroScaleFactorUncertainty(
+                    self.gyro_scale_factor_uncertainty,
+                ),
+            )),
+            0x19 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AccelScaleFactorUncertainty(
+                    self.accel_scale_factor_uncertainty,
+                ),
+            )),
+            0x1C => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::CompensatedAccel(self.compensated_accel),
+            )),
+            0x20 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::StandardAtmosphere(self.standard_atmosphere),
+            )),
+            0x21 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::PressureAltitude(self.pressure_altitude),
+            )),
+            0x25 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MagAutoHardIronOffset(self.mag_auto_hard_iron_offset),
+            )),
+            0x26 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MagAutoSoftIronMatrix(self.mag_auto_soft_iron_matrix),
+            )),
+            0x28 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MagAutoHardIronOffsetUncertainty(
+                    self.mag_auto_hard_iron_offset_uncertainty,
+                ),
+            )),
+            0x29 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MagAutoSoftIronMatrixUncertainty(
+                    self.mag_auto_soft_iron_matrix_uncertainty,
+                ),
+            )),
+            0x30 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GnssAntennaOffsetCorrection(
+                    self.gnss_antenna_offset_correction,
+                ),
+            )),
+            0x31 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GnssAntennaOffsetCorrectionUncertainty(
+                    self.gnss_antenna_offset_correction_uncertainty,
+                ),
+            )),
+            0x34 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MultiAntennaOffsetCorrection(
+                    self.multi_antenna_offset_correction,
+                ),
+            )),
+            0x35 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::MultiAntennaOffsetCorrectionUncertainty(
+                    self.multi_antenna_offset_correction_uncertainty,
+                ),
+            )),
+            0x36 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EcefPositionUncertainty(
+                    self.ecef_position_uncertainty,
+                ),
+            )),
+            0x37 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EcefVelocityUncertainty(
+                    self.ecef_velocity_uncertainty,
+                ),
+            )),
+            0x40 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EcefPosition(self.ecef_position),
+            )),
+            0x41 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::EcefVelocity(self.ecef_velocity),
+            )),
+            0x42 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::NedRelativePosition(self.ned_relative_position),
+            )),
+            0x43 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GnssPositionAidingStatus(
+                    self.gnss_position_aiding_status,
+                ),
+            )),
+            0x46 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AidingMeasurementSummary(
+                    self.aiding_measurement_summary,
+                ),
+            )),
+            0x47 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::OdometerScaleFactorError(
+                    self.odometer_scale_factor_error,
+                ),
+            )),
+            0x48 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::OdometerScaleFactorErrorUncertainty(
+                    self.odometer_scale_factor_error_uncertainty,
+                ),
+            )),
+            0x49 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::GnssDualAntennaStatus(self.gnss_dual_antenna_status),
+            )),
+            0x50 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AidingFrameConfigError(
+                    self.aiding_frame_config_error,
+                ),
+            )),
+            0x51 => Some(crate::FieldValue::FilterData(
+                crate::filter_data::SetField::AidingFrameConfigErrorUncertainty(
+                    self.aiding_frame_config_error_uncertainty,
+                ),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.shared_gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-filter-data", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

@@ -505,3 +505,249 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x30.
+    pub base_station_info: crate::gnss_corrections::BaseStationInfo,
+    /// Field 0x31.
+    pub rtk_corrections_status: crate::gnss_corrections::RtkCorrectionsStatus,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        base_station_info: <crate::gnss_corrections::BaseStationInfo as crate::wire::Wire>::ZERO,
+        rtk_corrections_status:
+            <crate::gnss_corrections::RtkCorrectionsStatus as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x30 | 0x31 | 0xD0 | 0xD3 | 0xD4 | 0xD5 | 0xD6 | 0xD7 | 0xD8
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x30 => match <&[u8; 44]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.base_station_info;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.ecef_position[0] = crate::packets::ld(d, 10);
+                    s.ecef_position[1] = crate::packets::ld(d, 18);
+                    s.ecef_position[2] = crate::packets::ld(d, 26);
+                    s.height = crate::packets::ld(d, 34);
+                    s.station_id = crate::packets::ld(d, 38);
+                    s.indicators = crate::packets::ld(d, 40);
+                    s.valid_flags = crate::packets::ld(d, 42);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.base_station_info),
+            },
+            0x31 => match <&[u8; 50]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.rtk_corrections_status;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.epoch_status = crate::packets::ld(d, 10);
+                    s.dongle_status = crate::packets::ld(d, 12);
+                    s.gps_correction_latency = crate::packets::ld(d, 16);
+                    s.glonass_correction_latency = crate::packets::ld(d, 20);
+                    s.galileo_correction_latency = crate::packets::ld(d, 24);
+                    s.beidou_correction_latency = crate::packets::ld(d, 28);
+                    s.reserved[0] = crate::packets::ld(d, 32);
+                    s.reserved[1] = crate::packets::ld(d, 36);
+                    s.reserved[2] = crate::packets::ld(d, 40);
+                    s.reserved[3] = crate::packets::ld(d, 44);
+                    s.valid_flags = crate::packets::ld(d, 48);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.rtk_corrections_status),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x30 => Some(crate::FieldValue::GnssCorrections(
+                crate::gnss_corrections::SetField::BaseStationInfo(self.base_station_info),
+            )),
+            0x31 => Some(crate::FieldValue::GnssCorrections(
+                crate::gnss_corrections::SetField::RtkCorrectionsStatus(
+                    self.rtk_corrections_status,
+                ),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-gnss-corrections", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

@@ -2085,3 +2085,470 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x03.
+    pub llh_position: crate::gnss_data::LlhPosition,
+    /// Field 0x04.
+    pub ecef_position: crate::gnss_data::EcefPosition,
+    /// Field 0x05.
+    pub ned_velocity: crate::gnss_data::NedVelocity,
+    /// Field 0x06.
+    pub ecef_velocity: crate::gnss_data::EcefVelocity,
+    /// Field 0x07.
+    pub dop: crate::gnss_data::Dop,
+    /// Field 0x08.
+    pub utc_time: crate::gnss_data::UtcTime,
+    /// Field 0x09.
+    pub gps_time: crate::gnss_data::GpsTime,
+    /// Field 0x0A.
+    pub clock_info: crate::gnss_data::ClockInfo,
+    /// Field 0x0B.
+    pub fix_info: crate::gnss_data::FixInfo,
+    /// Field 0x0C.
+    pub sv_info: crate::gnss_data::SvInfo,
+    /// Field 0x0D.
+    pub hardware_status: crate::gnss_data::HardwareStatus,
+    /// Field 0x0E.
+    pub dgnss_info: crate::gnss_data::DgnssInfo,
+    /// Field 0x0F.
+    pub dgnss_channel_status: crate::gnss_data::DgnssChannelStatus,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        llh_position: <crate::gnss_data::LlhPosition as crate::wire::Wire>::ZERO,
+        ecef_position: <crate::gnss_data::EcefPosition as crate::wire::Wire>::ZERO,
+        ned_velocity: <crate::gnss_data::NedVelocity as crate::wire::Wire>::ZERO,
+        ecef_velocity: <crate::gnss_data::EcefVelocity as crate::wire::Wire>::ZERO,
+        dop: <crate::gnss_data::Dop as crate::wire::Wire>::ZERO,
+        utc_time: <crate::gnss_data::UtcTime as crate::wire::Wire>::ZERO,
+        gps_time: <crate::gnss_data::GpsTime as crate::wire::Wire>::ZERO,
+        clock_info: <crate::gnss_data::ClockInfo as crate::wire::Wire>::ZERO,
+        fix_info: <crate::gnss_data::FixInfo as crate::wire::Wire>::ZERO,
+        sv_info: <crate::gnss_data::SvInfo as crate::wire::Wire>::ZERO,
+        hardware_status: <crate::gnss_data::HardwareStatus as crate::wire::Wire>::ZERO,
+        dgnss_info: <crate::gnss_data::DgnssInfo as crate::wire::Wire>::ZERO,
+        dgnss_channel_status: <crate::gnss_data::DgnssChannelStatus as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x03 | 0x04
+                | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0A
+                | 0x0B
+                | 0x0C
+                | 0x0D
+                | 0x0E
+                | 0x0F
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x03 => match <&[u8; 42]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.msl_height = crate::packets::ld(d, 24);
+                    s.horizontal_accuracy = crate::packets::ld(d, 32);
+                    s.vertical_accuracy = crate::packets::ld(d, 36);
+                    s.valid_flags = crate::packets::ld(d, 40);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x04 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.position_accuracy = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x05 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.speed = crate::packets::ld(d, 12);
+                    s.ground_speed = crate::packets::ld(d, 16);
+                    s.heading = crate::packets::ld(d, 20);
+                    s.speed_accuracy = crate::packets::ld(d, 24);
+                    s.heading_accuracy = crate::packets::ld(d, 28);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x06 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.velocity_accuracy = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x07 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dop;
+                    s.gdop = crate::packets::ld(d, 0);
+                    s.pdop = crate::packets::ld(d, 4);
+                    s.hdop = crate::packets::ld(d, 8);
+                    s.vdop = crate::packets::ld(d, 12);
+                    s.tdop = crate::packets::ld(d, 16);
+                    s.ndop = crate::packets::ld(d, 20);
+                    s.edop = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dop),
+            },
+            0x08 => match <&[u8; 13]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.utc_time;
+                    s.year = crate::packets::ld(d, 0);
+                    s.month = crate::packets::ld(d, 2);
+                    s.day = crate::packets::ld(d, 3);
+                    s.hour = crate::packets::ld(d, 4);
+                    s.minute = crate::packets::ld(d, 5);
+                    s.second = crate::packets::ld(d, 6);
+                    s.millisecond = crate::packets::ld(d, 7);
+                    s.valid_flags = crate::packets::ld(d, 11);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.utc_time),
+            },
+            0x09 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_time;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_time),
+            },
+            0x0A => match <&[u8; 26]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.clock_info;
+                    s.bias = crate::packets::ld(d, 0);
+                    s.drift = crate::packets::ld(d, 8);
+                    s.accuracy_estimate = crate::packets::ld(d, 16);
+                    s.valid_flags = crate::packets::ld(d, 24);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.clock_info),
+            },
+            0x0B => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.fix_info;
+                    s.fix_type = crate::packets::ld(d, 0);
+                    s.num_sv = crate::packets::ld(d, 1);
+                    s.fix_flags = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.fix_info),
+            },
+            0x0C => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sv_info;
+                    s.channel = crate::packets::ld(d, 0);
+                    s.sv_id = crate::packets::ld(d, 1);
+                    s.carrier_to_noise_ratio = crate::packets::ld(d, 2);
+                    s.azimuth = crate::packets::ld(d, 4);
+                    s.elevation = crate::packets::ld(d, 6);
+                    s.sv_flags = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sv_info),
+            },
+            0x0D => match <&[u8; 5]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.hardware_status;
+                    s.receiver_state = crate::packets::ld(d, 0);
+                    s.antenna_state = crate::packets::ld(d, 1);
+                    s.antenna_power = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 3);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.hardware_status),
+            },
+            0x0E => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dgnss_info;
+                    s.newest_age = crate::packets::ld(d, 0);
+                    s.base_station_id = crate::packets::ld(d, 4);
+                    s.base_station_status = crate::packets::ld(d, 6);
+                    s.num_channels = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dgnss_info),
+            },
+            0x0F => match <&[u8; 15]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dgnss_channel_status;
+                    s.sv_id = crate::packets::ld(d, 0);
+                    s.age = crate::packets::ld(d, 1);
+                    s.pseudorange_correction = crate::packets::ld(d, 5);
+                    s.pseudorange_rate_correction = crate::packets::ld(d, 9);
+                    s.valid_flags = crate::packets::ld(d, 13);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dgnss_channel_status),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x03 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::LlhPosition(self.llh_position),
+            )),
+            0x04 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::EcefPosition(self.ecef_position),
+            )),
+            0x05 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::NedVelocity(self.ned_velocity),
+            )),
+            0x06 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::EcefVelocity(self.ecef_velocity),
+            )),
+            0x07 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::Dop(self.dop),
+            )),
+            0x08 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::UtcTime(self.utc_time),
+            )),
+            0x09 => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::GpsTime(self.gps_time),
+            )),
+            0x0A => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::ClockInfo(self.clock_info),
+            )),
+            0x0B => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::FixInfo(self.fix_info),
+            )),
+            0x0C => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::SvInfo(self.sv_info),
+            )),
+            0x0D => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::HardwareStatus(self.hardware_status),
+            )),
+            0x0E => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::DgnssInfo(self.dgnss_info),
+            )),
+            0x0F => Some(crate::FieldValue::GnssData(
+                crate::gnss_data::SetField::DgnssChannelStatus(self.dgnss_channel_status),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-gnss-data", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

@@ -4621,3 +4621,700 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x03.
+    pub llh_position: crate::gnss_receiver_1::LlhPosition,
+    /// Field 0x04.
+    pub ecef_position: crate::gnss_receiver_1::EcefPosition,
+    /// Field 0x05.
+    pub ned_velocity: crate::gnss_receiver_1::NedVelocity,
+    /// Field 0x06.
+    pub ecef_velocity: crate::gnss_receiver_1::EcefVelocity,
+    /// Field 0x07.
+    pub dop: crate::gnss_receiver_1::Dop,
+    /// Field 0x08.
+    pub utc_time: crate::gnss_receiver_1::UtcTime,
+    /// Field 0x09.
+    pub gps_time: crate::gnss_receiver_1::GpsTime,
+    /// Field 0x0B.
+    pub fix_info: crate::gnss_receiver_1::FixInfo,
+    /// Field 0x0D.
+    pub hardware_status: crate::gnss_receiver_1::HardwareStatus,
+    /// Field 0x10.
+    pub clock_info_2: crate::gnss_receiver_1::ClockInfo2,
+    /// Field 0x11.
+    pub gps_leap_seconds: crate::gnss_receiver_1::GpsLeapSeconds,
+    /// Field 0x12.
+    pub sbas_info: crate::gnss_receiver_1::SbasInfo,
+    /// Field 0x20.
+    pub satellite_status: crate::gnss_receiver_1::SatelliteStatus,
+    /// Field 0x22.
+    pub raw: crate::gnss_receiver_1::Raw,
+    /// Field 0x61.
+    pub gps_ephemeris: crate::gnss_receiver_1::GpsEphemeris,
+    /// Field 0x62.
+    pub glonass_ephemeris: crate::gnss_receiver_1::GlonassEphemeris,
+    /// Field 0x63.
+    pub galileo_ephemeris: crate::gnss_receiver_1::GalileoEphemeris,
+    /// Field 0x64.
+    pub beidou_ephemeris: crate::gnss_receiver_1::BeidouEphemeris,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        llh_position: <crate::gnss_receiver_1::LlhPosition as crate::wire::Wire>::ZERO,
+        ecef_position: <crate::gnss_receiver_1::EcefPosition as crate::wire::Wire>::ZERO,
+        ned_velocity: <crate::gnss_receiver_1::NedVelocity as crate::wire::Wire>::ZERO,
+        ecef_velocity: <crate::gnss_receiver_1::EcefVelocity as crate::wire::Wire>::ZERO,
+        dop: <crate::gnss_receiver_1::Dop as crate::wire::Wire>::ZERO,
+        utc_time: <crate::gnss_receiver_1::UtcTime as crate::wire::Wire>::ZERO,
+        gps_time: <crate::gnss_receiver_1::GpsTime as crate::wire::Wire>::ZERO,
+        fix_info: <crate::gnss_receiver_1::FixInfo as crate::wire::Wire>::ZERO,
+        hardware_status: <crate::gnss_receiver_1::HardwareStatus as crate::wire::Wire>::ZERO,
+        clock_info_2: <crate::gnss_receiver_1::ClockInfo2 as crate::wire::Wire>::ZERO,
+        gps_leap_seconds: <crate::gnss_receiver_1::GpsLeapSeconds as crate::wire::Wire>::ZERO,
+        sbas_info: <crate::gnss_receiver_1::SbasInfo as crate::wire::Wire>::ZERO,
+        satellite_status: <crate::gnss_receiver_1::SatelliteStatus as crate::wire::Wire>::ZERO,
+        raw: <crate::gnss_receiver_1::Raw as crate::wire::Wire>::ZERO,
+        gps_ephemeris: <crate::gnss_receiver_1::GpsEphemeris as crate::wire::Wire>::ZERO,
+        glonass_ephemeris: <crate::gnss_receiver_1::GlonassEphemeris as crate::wire::Wire>::ZERO,
+        galileo_ephemeris: <crate::gnss_receiver_1::GalileoEphemeris as crate::wire::Wire>::ZERO,
+        beidou_ephemeris: <crate::gnss_receiver_1::BeidouEphemeris as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x03 | 0x04
+                | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0B
+                | 0x0D
+                | 0x10
+                | 0x11
+                | 0x12
+                | 0x20
+                | 0x22
+                | 0x61
+                | 0x62
+                | 0x63
+                | 0x64
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x03 => match <&[u8; 42]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.ellipsoid_height = crate::packets::ld(d, 16);
+                    s.msl_height = crate::packets::ld(d, 24);
+                    s.horizontal_accuracy = crate::packets::ld(d, 32);
+                    s.vertical_accuracy = crate::packets::ld(d, 36);
+                    s.valid_flags = crate::packets::ld(d, 40);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0x04 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_position;
+                    s.position[0] = crate::packets::ld(d, 0);
+                    s.position[1] = crate::packets::ld(d, 8);
+                    s.position[2] = crate::packets::ld(d, 16);
+                    s.position_accuracy = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_position),
+            },
+            0x05 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ned_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.speed = crate::packets::ld(d, 12);
+                    s.ground_speed = crate::packets::ld(d, 16);
+                    s.heading = crate::packets::ld(d, 20);
+                    s.speed_accuracy = crate::packets::ld(d, 24);
+                    s.heading_accuracy = crate::packets::ld(d, 28);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ned_velocity),
+            },
+            0x06 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.ecef_velocity;
+                    s.velocity[0] = crate::packets::ld(d, 0);
+                    s.velocity[1] = crate::packets::ld(d, 4);
+                    s.velocity[2] = crate::packets::ld(d, 8);
+                    s.velocity_accuracy = crate::packets::ld(d, 12);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.ecef_velocity),
+            },
+            0x07 => match <&[u8; 30]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.dop;
+                    s.gdop = crate::packets::ld(d, 0);
+                    s.pdop = crate::packets::ld(d, 4);
+                    s.hdop = crate::packets::ld(d, 8);
+                    s.vdop = crate::packets::ld(d, 12);
+                    s.tdop = crate::packets::ld(d, 16);
+                    s.ndop = crate::packets::ld(d, 20);
+                    s.edop = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 28);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.dop),
+            },
+            0x08 => match <&[u8; 13]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.utc_time;
+                    s.year = crate::packets::ld(d, 0);
+                    s.month = crate::packets::ld(d, 2);
+                    s.day = crate::packets::ld(d, 3);
+                    s.hour = crate::packets::ld(d, 4);
+                    s.minute = crate::packets::ld(d, 5);
+                    s.second = crate::packets::ld(d, 6);
+                    s.millisecond = crate::packets::ld(d, 7);
+                    s.valid_flags = crate::packets::ld(d, 11);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.utc_time),
+            },
+            0x09 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_time;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_time),
+            },
+            0x0B => match <&[u8; 6]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.fix_info;
+                    s.fix_type = crate::packets::ld(d, 0);
+                    s.num_sv = crate::packets::ld(d, 1);
+                    s.fix_flags = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 4);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.fix_info),
+            },
+            0x0D => match <&[u8; 5]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.hardware_status;
+                    s.receiver_state = crate::packets::ld(d, 0);
+                    s.antenna_state = crate::packets::ld(d, 1);
+                    s.antenna_power = crate::packets::ld(d, 2);
+                    s.valid_flags = crate::packets::ld(d, 3);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.hardware_status),
+            },
+            0x10 => match <&[u8; 34]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.clock_info_2;
+                    s.bias = crate::packets::ld(d, 0);
+                    s.drift = crate::packets::ld(d, 8);
+                    s.bias_accuracy_estimate = crate::packets::ld(d, 16);
+                    s.drift_accuracy_estimate = crate::packets::ld(d, 24);
+                    s.valid_flags = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.clock_info_2),
+            },
+            0x11 => match <&[u8; 3]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_leap_seconds;
+                    s.leap_seconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 1);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_leap_seconds),
+            },
+            0x12 => match <&[u8; 16]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sbas_info;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.sbas_system = crate::packets::ld(d, 10);
+                    s.sbas_id = crate::packets::ld(d, 11);
+                    s.count = crate::packets::ld(d, 12);
+                    s.sbas_status = crate::packets::ld(d, 13);
+                    s.valid_flags = crate::packets::ld(d, 14);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sbas_info),
+            },
+            0x20 => match <&[u8; 25]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) if d[22] <= 1 => {
+                    let s = &mut self.satellite_status;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.gnss_id = crate::packets::ld(d, 12);
+                    s.satellite_id = crate::packets::ld(d, 13);
+                    s.elevation = crate::packets::ld(d, 14);
+                    s.azimuth = crate::packets::ld(d, 18);
+                    s.health = crate::packets::ld(d, 22);
+                    s.valid_flags = crate::packets::ld(d, 23);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.satellite_status),
+            },
+            0x22 => match <&[u8; 61]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.raw;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.receiver_id = crate::packets::ld(d, 12);
+                    s.tracking_channel = crate::packets::ld(d, 14);
+                    s.gnss_id = crate::packets::ld(d, 15);
+                    s.satellite_id = crate::packets::ld(d, 16);
+                    s.signal_id = crate::packets::ld(d, 17);
+                    s.signal_strength = crate::packets::ld(d, 18);
+                    s.quality = crate::packets::ld(d, 22);
+                    s.pseudorange = crate::packets::ld(d, 23);
+                    s.carrier_phase = crate::packets::ld(d, 31);
+                    s.doppler = crate::packets::ld(d, 39);
+                    s.range_uncert = crate::packets::ld(d, 43);
+                    s.phase_uncert = crate::packets::ld(d, 47);
+                    s.doppler_uncert = crate::packets::ld(d, 51);
+                    s.lock_time = crate::packets::ld(d, 55);
+                    s.valid_flags = crate::packets::ld(d, 59);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.raw),
+            },
+            0x61 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_ephemeris),
+            },
+            0x62 => match <&[u8; 102]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.glonass_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.freq_number = crate::packets::ld(d, 13);
+                    s.tk = crate::packets::ld(d, 14);
+                    s.tb = crate::packets::ld(d, 18);
+                    s.sat_type = crate::packets::ld(d, 22);
+                    s.gamma = crate::packets::ld(d, 23);
+                    s.tau_n = crate::packets::ld(d, 31);
+                    s.x[0] = crate::packets::ld(d, 39);
+                    s.x[1] = crate::packets::ld(d, 47);
+                    s.x[2] = crate::packets::ld(d, 55);
+                    s.v[0] = crate::packets::ld(d, 63);
+                    s.v[1] = crate::packets::ld(d, 67);
+                    s.v[2] = crate::packets::ld(d, 71);
+                    s.a[0] = crate::packets::ld(d, 75);
+                    s.a[1] = crate::packets::ld(d, 79);
+                    s.a[2] = crate::packets::ld(d, 83);
+                    s.health = crate::packets::ld(d, 87);
+                    s.p = crate::packets::ld(d, 88);
+                    s.nt = crate::packets::ld(d, 89);
+                    s.delta_tau_n = crate::packets::ld(d, 90);
+                    s.ft = crate::packets::ld(d, 94);
+                    s.en = crate::packets::ld(d, 95);
+                    s.p1 = crate::packets::ld(d, 96);
+                    s.p2 = crate::packets::ld(d, 97);
+                    s.p3 = crate::packets::ld(d, 98);
+                    s.p4 = crate::packets::ld(d, 99);
+                    s.valid_flags = crate::packets::ld(d, 100);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.glonass_ephemeris),
+            },
+            0x63 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.galileo_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.galileo_ephemeris),
+            },
+            0x64 => match <&[u8; 218]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.beidou_ephemeris;
+                    s.index = crate::packets::ld(d, 0);
+                    s.count = crate::packets::ld(d, 1);
+                    s.tow = crate::packets::ld(d, 2);
+                    s.week_number = crate::packets::ld(d, 10);
+                    s.satellite_id = crate::packets::ld(d, 12);
+                    s.health = crate::packets::ld(d, 13);
+                    s.iodc = crate::packets::ld(d, 14);
+                    s.iode = crate::packets::ld(d, 15);
+                    s.t_oc = crate::packets::ld(d, 16);
+                    s.af0 = crate::packets::ld(d, 24);
+                    s.af1 = crate::packets::ld(d, 32);
+                    s.af2 = crate::packets::ld(d, 40);
+                    s.t_gd = crate::packets::ld(d, 48);
+                    s.isc_l1ca = crate::packets::ld(d, 56);
+                    s.isc_l2c = crate::packets::ld(d, 64);
+                    s.t_oe = crate::packets::ld(d, 72);
+                    s.a = crate::packets::ld(d, 80);
+                    s.a_dot = crate::packets::ld(d, 88);
+                    s.mean_anomaly = crate::packets::ld(d, 96);
+                    s.delta_mean_motion = crate::packets::ld(d, 104);
+                    s.delta_mean_motion_dot = crate::packets::ld(d, 112);
+                    s.eccentricity = crate::packets::ld(d, 120);
+                    s.argument_of_perigee = crate::packets::ld(d, 128);
+                    s.omega = crate::packets::ld(d, 136);
+                    s.omega_dot = crate::packets::ld(d, 144);
+                    s.inclination = crate::packets::ld(d, 152);
+                    s.inclination_dot = crate::packets::ld(d, 160);
+                    s.c_ic = crate::packets::ld(d, 168);
+                    s.c_is = crate::packets::ld(d, 176);
+                    s.c_uc = crate::packets::ld(d, 184);
+                    s.c_us = crate::packets::ld(d, 192);
+                    s.c_rc = crate::packets::ld(d, 200);
+                    s.c_rs = crate::packets::ld(d, 208);
+                    s.valid_flags = crate::packets::ld(d, 216);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.beidou_ephemeris),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x03 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::LlhPosition(self.llh_position),
+            )),
+            0x04 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::EcefPosition(self.ecef_position),
+            )),
+            0x05 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::NedVelocity(self.ned_velocity),
+            )),
+            0x06 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::EcefVelocity(self.ecef_velocity),
+            )),
+            0x07 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::Dop(self.dop),
+            )),
+            0x08 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::UtcTime(self.utc_time),
+            )),
+            0x09 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::GpsTime(self.gps_time),
+            )),
+            0x0B => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::FixInfo(self.fix_info),
+            )),
+            0x0D => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::HardwareStatus(self.hardware_status),
+            )),
+            0x10 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::ClockInfo2(self.clock_info_2),
+            )),
+            0x11 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::GpsLeapSeconds(self.gps_leap_seconds),
+            )),
+            0x12 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::SbasInfo(self.sbas_info),
+            )),
+            0x20 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::SatelliteStatus(self.satellite_status),
+            )),
+            0x22 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::Raw(self.raw),
+            )),
+            0x61 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::GpsEphemeris(self.gps_ephemeris),
+            )),
+            0x62 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::GlonassEphemeris(self.glonass_ephemeris),
+            )),
+            0x63 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::GalileoEphemeris(self.galileo_ephemeris),
+            )),
+            0x64 => Some(crate::FieldValue::GnssReceiver1(
+                crate::gnss_receiver_1::SetField::BeidouEphemeris(self.beidou_ephemeris),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-gnss-receiver-1", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

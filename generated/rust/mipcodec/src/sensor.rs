@@ -1502,3 +1502,474 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x04.
+    pub scaled_accel: crate::sensor::ScaledAccel,
+    /// Field 0x05.
+    pub scaled_gyro: crate::sensor::ScaledGyro,
+    /// Field 0x06.
+    pub scaled_mag: crate::sensor::ScaledMag,
+    /// Field 0x07.
+    pub delta_theta: crate::sensor::DeltaTheta,
+    /// Field 0x08.
+    pub delta_velocity: crate::sensor::DeltaVelocity,
+    /// Field 0x09.
+    pub cf_orientation_matrix: crate::sensor::CfOrientationMatrix,
+    /// Field 0x0A.
+    pub cf_quaternion: crate::sensor::CfQuaternion,
+    /// Field 0x0C.
+    pub cf_euler_angles: crate::sensor::CfEulerAngles,
+    /// Field 0x10.
+    pub cf_stabilized_north: crate::sensor::CfStabilizedNorth,
+    /// Field 0x11.
+    pub cf_stabilized_up: crate::sensor::CfStabilizedUp,
+    /// Field 0x12.
+    pub sensor_gps_timestamp: crate::sensor::GpsTimestamp,
+    /// Field 0x14.
+    pub temperature_statistics: crate::sensor::TemperatureStatistics,
+    /// Field 0x17.
+    pub scaled_pressure: crate::sensor::ScaledPressure,
+    /// Field 0x18.
+    pub overrange_status: crate::sensor::OverrangeStatus,
+    /// Field 0x40.
+    pub odometer_data: crate::sensor::OdometerData,
+    /// Field 0xD0 (shared).
+    pub event_source: crate::shared::EventSource,
+    /// Field 0xD3 (shared).
+    pub shared_gps_timestamp: crate::shared::GpsTimestamp,
+    /// Field 0xD4 (shared).
+    pub delta_time: crate::shared::DeltaTime,
+    /// Field 0xD5 (shared).
+    pub reference_timestamp: crate::shared::ReferenceTimestamp,
+    /// Field 0xD6 (shared).
+    pub reference_time_delta: crate::shared::ReferenceTimeDelta,
+    /// Field 0xD7 (shared).
+    pub external_timestamp: crate::shared::ExternalTimestamp,
+    /// Field 0xD8 (shared).
+    pub external_time_delta: crate::shared::ExternalTimeDelta,
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        scaled_accel: <crate::sensor::ScaledAccel as crate::wire::Wire>::ZERO,
+        scaled_gyro: <crate::sensor::ScaledGyro as crate::wire::Wire>::ZERO,
+        scaled_mag: <crate::sensor::ScaledMag as crate::wire::Wire>::ZERO,
+        delta_theta: <crate::sensor::DeltaTheta as crate::wire::Wire>::ZERO,
+        delta_velocity: <crate::sensor::DeltaVelocity as crate::wire::Wire>::ZERO,
+        cf_orientation_matrix: <crate::sensor::CfOrientationMatrix as crate::wire::Wire>::ZERO,
+        cf_quaternion: <crate::sensor::CfQuaternion as crate::wire::Wire>::ZERO,
+        cf_euler_angles: <crate::sensor::CfEulerAngles as crate::wire::Wire>::ZERO,
+        cf_stabilized_north: <crate::sensor::CfStabilizedNorth as crate::wire::Wire>::ZERO,
+        cf_stabilized_up: <crate::sensor::CfStabilizedUp as crate::wire::Wire>::ZERO,
+        sensor_gps_timestamp: <crate::sensor::GpsTimestamp as crate::wire::Wire>::ZERO,
+        temperature_statistics: <crate::sensor::TemperatureStatistics as crate::wire::Wire>::ZERO,
+        scaled_pressure: <crate::sensor::ScaledPressure as crate::wire::Wire>::ZERO,
+        overrange_status: <crate::sensor::OverrangeStatus as crate::wire::Wire>::ZERO,
+        odometer_data: <crate::sensor::OdometerData as crate::wire::Wire>::ZERO,
+        event_source: <crate::shared::EventSource as crate::wire::Wire>::ZERO,
+        shared_gps_timestamp: <crate::shared::GpsTimestamp as crate::wire::Wire>::ZERO,
+        delta_time: <crate::shared::DeltaTime as crate::wire::Wire>::ZERO,
+        reference_timestamp: <crate::shared::ReferenceTimestamp as crate::wire::Wire>::ZERO,
+        reference_time_delta: <crate::shared::ReferenceTimeDelta as crate::wire::Wire>::ZERO,
+        external_timestamp: <crate::shared::ExternalTimestamp as crate::wire::Wire>::ZERO,
+        external_time_delta: <crate::shared::ExternalTimeDelta as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x04 | 0x05
+                | 0x06
+                | 0x07
+                | 0x08
+                | 0x09
+                | 0x0A
+                | 0x0C
+                | 0x10
+                | 0x11
+                | 0x12
+                | 0x14
+                | 0x17
+                | 0x18
+                | 0x40
+                | 0xD0
+                | 0xD3
+                | 0xD4
+                | 0xD5
+                | 0xD6
+                | 0xD7
+                | 0xD8
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x04 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_accel;
+                    s.scaled_accel[0] = crate::packets::ld(d, 0);
+                    s.scaled_accel[1] = crate::packets::ld(d, 4);
+                    s.scaled_accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_accel),
+            },
+            0x05 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_gyro;
+                    s.scaled_gyro[0] = crate::packets::ld(d, 0);
+                    s.scaled_gyro[1] = crate::packets::ld(d, 4);
+                    s.scaled_gyro[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_gyro),
+            },
+            0x06 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_mag;
+                    s.scaled_mag[0] = crate::packets::ld(d, 0);
+                    s.scaled_mag[1] = crate::packets::ld(d, 4);
+                    s.scaled_mag[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_mag),
+            },
+            0x07 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_theta;
+                    s.delta_theta[0] = crate::packets::ld(d, 0);
+                    s.delta_theta[1] = crate::packets::ld(d, 4);
+                    s.delta_theta[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_theta),
+            },
+            0x08 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_velocity;
+                    s.delta_velocity[0] = crate::packets::ld(d, 0);
+                    s.delta_velocity[1] = crate::packets::ld(d, 4);
+                    s.delta_velocity[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_velocity),
+            },
+            0x09 => match <&[u8; 36]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_orientation_matrix;
+                    s.m[0] = crate::packets::ld(d, 0);
+                    s.m[1] = crate::packets::ld(d, 4);
+                    s.m[2] = crate::packets::ld(d, 8);
+                    s.m[3] = crate::packets::ld(d, 12);
+                    s.m[4] = crate::packets::ld(d, 16);
+                    s.m[5] = crate::packets::ld(d, 20);
+                    s.m[6] = crate::packets::ld(d, 24);
+                    s.m[7] = crate::packets::ld(d, 28);
+                    s.m[8] = crate::packets::ld(d, 32);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_orientation_matrix),
+            },
+            0x0A => match <&[u8; 16]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_quaternion;
+                    s.q[0] = crate::packets::ld(d, 0);
+                    s.q[1] = crate::packets::ld(d, 4);
+                    s.q[2] = crate::packets::ld(d, 8);
+                    s.q[3] = crate::packets::ld(d, 12);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_quaternion),
+            },
+            0x0C => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_euler_angles;
+                    s.roll = crate::packets::ld(d, 0);
+                    s.pitch = crate::packets::ld(d, 4);
+                    s.yaw = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_euler_angles),
+            },
+            0x10 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_stabilized_north;
+                    s.stabilized_north[0] = crate::packets::ld(d, 0);
+                    s.stabilized_north[1] = crate::packets::ld(d, 4);
+                    s.stabilized_north[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_stabilized_north),
+            },
+            0x11 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.cf_stabilized_up;
+                    s.stabilized_up[0] = crate::packets::ld(d, 0);
+                    s.stabilized_up[1] = crate::packets::ld(d, 4);
+                    s.stabilized_up[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.cf_stabilized_up),
+            },
+            0x12 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.sensor_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.sensor_gps_timestamp),
+            },
+            0x14 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.temperature_statistics;
+                    s.min_temp = crate::packets::ld(d, 0);
+                    s.max_temp = crate::packets::ld(d, 4);
+                    s.mean_temp = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.temperature_statistics),
+            },
+            0x17 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_pressure;
+                    s.scaled_pressure = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_pressure),
+            },
+            0x18 => match <&[u8; 2]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.overrange_status;
+                    s.status = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.overrange_status),
+            },
+            0x40 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.odometer_data;
+                    s.speed = crate::packets::ld(d, 0);
+                    s.uncertainty = crate::packets::ld(d, 4);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.odometer_data),
+            },
+            0xD0 => match <&[u8; 1]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.event_source;
+                    s.trigger_id = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.event_source),
+            },
+            0xD3 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.shared_gps_timestamp;
+                    s.tow = crate::packets::ld(d, 0);
+                    s.week_number = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.shared_gps_timestamp),
+            },
+            0xD4 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_time),
+            },
+            0xD5 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_timestamp),
+            },
+            0xD6 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.reference_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.reference_time_delta),
+            },
+            0xD7 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_timestamp),
+            },
+            0xD8 => match <&[u8; 10]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.external_time_delta;
+                    s.dt_nanos = crate::packets::ld(d, 0);
+                    s.valid_flags = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.external_time_delta),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x04 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledAccel(self.scaled_accel),
+            )),
+            0x05 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledGyro(self.scaled_gyro),
+            )),
+            0x06 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledMag(self.scaled_mag),
+            )),
+            0x07 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::DeltaTheta(self.delta_theta),
+            )),
+            0x08 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::DeltaVelocity(self.delta_velocity),
+            )),
+            0x09 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfOrientationMatrix(self.cf_orientation_matrix),
+            )),
+            0x0A => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfQuaternion(self.cf_quaternion),
+            )),
+            0x0C => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfEulerAngles(self.cf_euler_angles),
+            )),
+            0x10 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfStabilizedNorth(self.cf_stabilized_north),
+            )),
+            0x11 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::CfStabilizedUp(self.cf_stabilized_up),
+            )),
+            0x12 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::GpsTimestamp(self.sensor_gps_timestamp),
+            )),
+            0x14 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::TemperatureStatistics(self.temperature_statistics),
+            )),
+            0x17 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::ScaledPressure(self.scaled_pressure),
+            )),
+            0x18 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::OverrangeStatus(self.overrange_status),
+            )),
+            0x40 => Some(crate::FieldValue::Sensor(
+                crate::sensor::SetField::OdometerData(self.odometer_data),
+            )),
+            0xD0 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::EventSource(self.event_source),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::GpsTimestamp(self.shared_gps_timestamp),
+            )),
+            0xD4 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::DeltaTime(self.delta_time),
+            )),
+            0xD5 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimestamp(self.reference_timestamp),
+            )),
+            0xD6 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ReferenceTimeDelta(self.reference_time_delta),
+            )),
+            0xD7 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimestamp(self.external_timestamp),
+            )),
+            0xD8 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::ExternalTimeDelta(self.external_time_delta),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-sensor", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

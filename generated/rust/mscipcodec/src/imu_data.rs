@@ -872,3 +872,236 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x81.
+    pub scaled_accel: crate::imu_data::ScaledAccel,
+    /// Field 0x82.
+    pub scaled_gyro: crate::imu_data::ScaledGyro,
+    /// Field 0x83.
+    pub scaled_mag: crate::imu_data::ScaledMag,
+    /// Field 0x84.
+    pub delta_theta: crate::imu_data::DeltaTheta,
+    /// Field 0x85.
+    pub delta_velocity: crate::imu_data::DeltaVelocity,
+    /// Field 0x86.
+    pub scaled_pressure: crate::imu_data::ScaledPressure,
+    /// Field 0x87.
+    pub scaled_temperature: crate::imu_data::ScaledTemperature,
+    /// Field 0x88.
+    pub gps_correlated_time: crate::imu_data::GpsCorrelatedTime,
+    /// Field 0x89.
+    pub scaled_aux_accel: crate::imu_data::ScaledAuxAccel,
+}
+
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        scaled_accel: <crate::imu_data::ScaledAccel as crate::wire::Wire>::ZERO,
+        scaled_gyro: <crate::imu_data::ScaledGyro as crate::wire::Wire>::ZERO,
+        scaled_mag: <crate::imu_data::ScaledMag as crate::wire::Wire>::ZERO,
+        delta_theta: <crate::imu_data::DeltaTheta as crate::wire::Wire>::ZERO,
+        delta_velocity: <crate::imu_data::DeltaVelocity as crate::wire::Wire>::ZERO,
+        scaled_pressure: <crate::imu_data::ScaledPressure as crate::wire::Wire>::ZERO,
+        scaled_temperature: <crate::imu_data::ScaledTemperature as crate::wire::Wire>::ZERO,
+        gps_correlated_time: <crate::imu_data::GpsCorrelatedTime as crate::wire::Wire>::ZERO,
+        scaled_aux_accel: <crate::imu_data::ScaledAuxAccel as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(
+            descriptor,
+            0x81 | 0x82 | 0x83 | 0x84 | 0x85 | 0x86 | 0x87 | 0x88 | 0x89
+        )
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x81 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_accel),
+            },
+            0x82 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_gyro;
+                    s.gyro[0] = crate::packets::ld(d, 0);
+                    s.gyro[1] = crate::packets::ld(d, 4);
+                    s.gyro[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_gyro),
+            },
+            0x83 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_mag;
+                    s.mag[0] = crate::packets::ld(d, 0);
+                    s.mag[1] = crate::packets::ld(d, 4);
+                    s.mag[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_mag),
+            },
+            0x84 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_theta;
+                    s.delta_theta[0] = crate::packets::ld(d, 0);
+                    s.delta_theta[1] = crate::packets::ld(d, 4);
+                    s.delta_theta[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_theta),
+            },
+            0x85 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.delta_velocity;
+                    s.delta_velocity[0] = crate::packets::ld(d, 0);
+                    s.delta_velocity[1] = crate::packets::ld(d, 4);
+                    s.delta_velocity[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.delta_velocity),
+            },
+            0x86 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_pressure;
+                    s.pressure = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_pressure),
+            },
+            0x87 => match <&[u8; 4]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_temperature;
+                    s.temperature = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_temperature),
+            },
+            0x88 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.gps_correlated_time;
+                    s.seconds = crate::packets::ld(d, 0);
+                    s.week = crate::packets::ld(d, 8);
+                    s.flags = crate::packets::ld(d, 10);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.gps_correlated_time),
+            },
+            0x89 => match <&[u8; 12]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.scaled_aux_accel;
+                    s.accel[0] = crate::packets::ld(d, 0);
+                    s.accel[1] = crate::packets::ld(d, 4);
+                    s.accel[2] = crate::packets::ld(d, 8);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.scaled_aux_accel),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x81 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledAccel(self.scaled_accel),
+            )),
+            0x82 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledGyro(self.scaled_gyro),
+            )),
+            0x83 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledMag(self.scaled_mag),
+            )),
+            0x84 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::DeltaTheta(self.delta_theta),
+            )),
+            0x85 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::DeltaVelocity(self.delta_velocity),
+            )),
+            0x86 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledPressure(self.scaled_pressure),
+            )),
+            0x87 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledTemperature(self.scaled_temperature),
+            )),
+            0x88 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::GpsCorrelatedTime(self.gps_correlated_time),
+            )),
+            0x89 => Some(crate::FieldValue::ImuData(
+                crate::imu_data::SetField::ScaledAuxAccel(self.scaled_aux_accel),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-imu-data", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}

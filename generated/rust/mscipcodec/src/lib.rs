@@ -93,6 +93,7 @@ pub mod framing;
 pub mod json;
 #[cfg(feature = "std")]
 pub mod json_read;
+pub mod packets;
 pub mod parser;
 pub mod reserved;
 pub mod samples;
@@ -127,3 +128,4 @@ pub const PROTOCOL: &str = "mscip";
 
 pub use dispatch::{decode_field, set_kind, Device, FieldValue, SetKind};
 pub use error::{DecodeError, EncodeError};
+pub use packets::{decode_packet, AnyPacket, LayoutCache, PacketIndex};

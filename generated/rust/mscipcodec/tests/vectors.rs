@@ -2,8 +2,10 @@
 //! each case's bytes decode (whole, and fed in chunks of every size) to exactly the expected
 //! canonical JSON lines, and those lines encode back to the bytes.
 
+use mscipcodec::fields::{FieldItem, Packet};
+use mscipcodec::parser::{Event, Parser};
 use mscipcodec::text::{decode_bytes, encode_text};
-use mscipcodec::Device;
+use mscipcodec::{decode_field, decode_packet, AnyPacket, Device, LayoutCache};
 
 fn from_hex(hex: &str) -> Vec<u8> {
     (0..hex.len())
@@ -38,6 +40,93 @@ fn check(hex: &str, device: Option<&str>, expect: &[&str], rejected: bool) {
         encoded, bytes,
         "encoding the expected lines (rejected: {rejected})"
     );
+    check_packets(&bytes);
+}
+
+/// The JSON of a decoded field (compares floats as their canonical text, NaN included).
+fn json_of(value: &mscipcodec::FieldValue) -> String {
+    let mut s = String::new();
+    value.write_json(&mut s).expect("JSON of a field");
+    s
+}
+
+/// What a straight-line decode gave: the fields decoded into members (descriptor, JSON) and the
+/// entries that went to `other`, both in packet order.
+#[derive(Debug, PartialEq)]
+struct Straight {
+    members: Vec<(u8, String)>,
+    other: Vec<String>,
+}
+
+fn straight(any: &AnyPacket, other: Vec<String>, n: usize) -> Straight {
+    let members: Vec<(u8, String)> = match any.index() {
+        Some(index) => index
+            .descriptors()
+            .iter()
+            .map(|&d| (d, json_of(&any.field(d).expect("a decoded member"))))
+            .collect(),
+        None => Vec::new(),
+    };
+    assert_eq!(members.len(), n, "the count returned is the index's");
+    Straight { members, other }
+}
+
+/// Every packet of the case through the straight-line decoder (`decode_packet`) and the layout
+/// cache (twice: the second time every shape it recorded is in it), against the general dispatch
+/// (`decode_field` on each entry of the field iterator, device None): a field is decoded into its
+/// member when it is the first of its descriptor, its set has a member for it and it decodes,
+/// with decode_field's value; every other entry goes to `other`, in packet order.
+fn check_packets(bytes: &[u8]) {
+    let mut packets: Vec<Vec<u8>> = Vec::new();
+    let mut parser = Parser::new();
+    let mut on = |event: Event<'_>| {
+        if let Event::Packet { bytes, .. } = event {
+            packets.push(bytes.to_vec());
+        }
+    };
+    parser.feed(bytes, &mut on);
+    parser.flush(&mut on);
+    let mut any = Box::new(AnyPacket::default());
+    let mut cache = Box::new(LayoutCache::new());
+    for pass in 0..2 {
+        for bytes in &packets {
+            let packet = Packet::new(bytes).expect("a packet the parser reported");
+            let mut other = Vec::new();
+            let n = decode_packet(bytes, &mut any, |item| other.push(format!("{item:?}")));
+            let got = straight(&any, other, n);
+            // the general dispatch
+            let set = packet.set();
+            let mut want = Straight {
+                members: Vec::new(),
+                other: Vec::new(),
+            };
+            let mut taken = [false; 256];
+            for item in packet.fields() {
+                match item {
+                    FieldItem::Field { descriptor, data } => {
+                        let d = usize::from(descriptor);
+                        match decode_field(set, descriptor, data, None) {
+                            Ok(general) if !taken[d] && any.has_member(descriptor) => {
+                                taken[d] = true;
+                                want.members.push((descriptor, json_of(&general)));
+                            }
+                            _ => want.other.push(format!("{item:?}")),
+                        }
+                    }
+                    FieldItem::Trailing { .. } => want.other.push(format!("{item:?}")),
+                }
+            }
+            assert_eq!(got, want, "straight-line decode of packet {bytes:02x?}");
+            // the cache: the same result
+            let mut other = Vec::new();
+            let n = cache.decode(bytes, &mut any, |item| other.push(format!("{item:?}")));
+            assert_eq!(
+                straight(&any, other, n),
+                want,
+                "decode through the layout cache (pass {pass}) of packet {bytes:02x?}"
+            );
+        }
+    }
 }
 
 /// `mscip_ping_command` (tests/vectors/mscip/base.yaml:10)

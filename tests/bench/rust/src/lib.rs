@@ -3,8 +3,13 @@
 //!
 //! - frame:  the stream parser over the whole in-memory stream (find sync, length, Fletcher
 //!   checksum), every packet reported with its offset and bytes, garbage skipped.
-//! - decode: frame, then split every packet into fields and decode every field to its typed
-//!   value (dispatch by set and descriptor).
+//! - decode: frame, then decode every packet through a `LayoutCache` (issue 38): the set's
+//!   straight-line decoder fills the set's typed `Packet`, a packet of a shape seen before is
+//!   decoded with that shape's offsets; what it leaves (none on these streams) goes to
+//!   `decode_field`.
+//! - decode-field: frame, then split every packet into fields and decode every field to its
+//!   typed value through the general dispatch (`decode_field`: by set and descriptor, a
+//!   `FieldValue` per field), the decode row before issue 38.
 //!
 //! Both return counts that are checked against the stream's sidecar, and a checksum of what
 //! they saw so that nothing can be optimised away.
@@ -15,7 +20,7 @@ use std::path::Path;
 
 use mipcodec::fields::{FieldItem, Packet};
 use mipcodec::parser::{Event, Parser};
-use mipcodec::{decode_field, FieldValue};
+use mipcodec::{decode_field, AnyPacket, FieldValue, LayoutCache};
 
 /// The benchmark streams written by `tests/bench/streams.py`, in report order.
 pub const STREAMS: [&str; 4] = ["accel_gyro", "mixed", "accel_gyro_garbage", "mixed_garbage"];
@@ -155,8 +160,114 @@ pub fn first_float_bits(value: &FieldValue) -> u64 {
     }
 }
 
-/// Decode: frame, split every packet into fields and decode each one.
+/// The checksum of a packet decoded into `any`: per decoded field, the bits of its first float
+/// for the fields `first_float_bits` lists, else its descriptor (the same sum as decode-field's).
+#[inline]
+pub fn packet_checksum(any: &AnyPacket) -> u64 {
+    use mipcodec::wire::Layout;
+    use mipcodec::{filter_data as fd, gnss_data as gd, sensor};
+    const ACCEL: u8 = sensor::ScaledAccel::DESCRIPTOR;
+    const GYRO: u8 = sensor::ScaledGyro::DESCRIPTOR;
+    const FD_LLH: u8 = fd::LlhPosition::DESCRIPTOR;
+    const FD_VEL: u8 = fd::NedVelocity::DESCRIPTOR;
+    const GD_LLH: u8 = gd::LlhPosition::DESCRIPTOR;
+    let sum = |descriptors: &[u8], bits: &dyn Fn(u8) -> u64| {
+        descriptors
+            .iter()
+            .fold(0u64, |s, &d| s.wrapping_add(bits(d)))
+    };
+    match any.set() {
+        Some(sensor::SET) => {
+            let p = &any.sensor;
+            sum(p.index.descriptors(), &|d| match d {
+                ACCEL => u64::from(p.scaled_accel.scaled_accel[0].to_bits()),
+                GYRO => u64::from(p.scaled_gyro.scaled_gyro[0].to_bits()),
+                _ => u64::from(d),
+            })
+        }
+        Some(fd::SET) => {
+            let p = &any.filter_data;
+            sum(p.index.descriptors(), &|d| match d {
+                FD_LLH => p.llh_position.latitude.to_bits(),
+                FD_VEL => u64::from(p.ned_velocity.north.to_bits()),
+                _ => u64::from(d),
+            })
+        }
+        Some(gd::SET) => {
+            let p = &any.gnss_data;
+            sum(p.index.descriptors(), &|d| match d {
+                GD_LLH => p.llh_position.latitude.to_bits(),
+                _ => u64::from(d),
+            })
+        }
+        _ => any
+            .index()
+            .map_or(0, |index| sum(index.descriptors(), &|d| u64::from(d))),
+    }
+}
+
+/// Decode: frame, then every packet through a layout cache into its set's typed packet; the
+/// entries the straight-line decoders leave go to `decode_field`.
 pub fn decode(data: &[u8]) -> Tally {
+    decode_with(data, true)
+}
+
+/// Decode-straight: decode without the layout cache (`mipcodec::decode_packet`).
+pub fn decode_straight(data: &[u8]) -> Tally {
+    decode_with(data, false)
+}
+
+#[inline(always)]
+fn decode_with(data: &[u8], cached: bool) -> Tally {
+    let mut t = Tally::default();
+    let mut any = Box::new(AnyPacket::default());
+    let mut cache = Box::new(LayoutCache::new());
+    let mut on = |event: Event<'_>| match event {
+        Event::Packet { bytes, .. } => {
+            t.packets += 1;
+            t.packet_bytes += bytes.len() as u64;
+            let set = bytes[mipcodec::framing::SET_OFFSET];
+            let mut left = 0u64;
+            let mut errors = 0u64;
+            let mut sum = 0u64;
+            let other = |item: FieldItem<'_>| match item {
+                FieldItem::Field { descriptor, data } => {
+                    left += 1;
+                    match &decode_field(set, descriptor, data, None) {
+                        Ok(value) => {
+                            let value = black_box(value);
+                            sum = sum.wrapping_add(first_float_bits(value));
+                        }
+                        Err(_) => errors += 1,
+                    }
+                }
+                FieldItem::Trailing { .. } => errors += 1,
+            };
+            let n = if cached {
+                cache.decode(bytes, &mut any, other)
+            } else {
+                mipcodec::decode_packet(bytes, &mut any, other)
+            };
+            // The whole typed packet is produced, not only the floats summed.
+            let any = black_box(&*any);
+            t.fields += n as u64 + left;
+            t.errors += errors;
+            t.checksum = t
+                .checksum
+                .wrapping_add(packet_checksum(any))
+                .wrapping_add(sum);
+        }
+        Event::Skip { count, .. } => t.skipped_bytes += count,
+    };
+    let mut parser = Parser::new();
+    parser.feed(data, &mut on);
+    parser.flush(&mut on);
+    t
+}
+
+/// Decode-field: frame, split every packet into fields and decode each one through the general
+/// dispatch.
+pub fn decode_field_each(data: &[u8]) -> Tally {
     let mut t = Tally::default();
     let mut on = |event: Event<'_>| match event {
         Event::Packet { bytes, .. } => {

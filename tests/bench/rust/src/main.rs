@@ -2,7 +2,7 @@
 //! streams of DIR (written by `tests/bench/streams.py`; all four unless STREAMs are named), checks
 //! the counts of every pass against the sidecars and prints one line per stream and mode for
 //! `tests/bench/run.py`:
-//!   BENCH lang=rust stream=NAME mode=bulk|frame|decode|session-ingest packets=N bytes=B seconds=BEST
+//!   BENCH lang=rust stream=NAME mode=bulk|frame|decode|decode-straight|decode-field|session-ingest packets=N bytes=B seconds=BEST
 //! where BEST is the fastest of PASSES (default 5) passes over the in-memory stream (mode bulk:
 //! one memcpy of the whole stream into another buffer, written once before timing: the limit
 //! the parsers' rows are divided by), then
@@ -17,7 +17,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use mipcodec_bench::{decode, frame, session_ingest, session_roundtrip, Stream, Tally, STREAMS};
+use mipcodec_bench::{
+    decode, decode_field_each, decode_straight, frame, session_ingest, session_roundtrip, Stream,
+    Tally, STREAMS,
+};
 
 /// Ping round trips of one session-roundtrip pass.
 const ROUND_TRIPS: u64 = 2000;
@@ -89,10 +92,12 @@ fn bulk(passes: u32, stream: &Stream, into: &mut [u8]) -> Result<f64, String> {
     Ok(best)
 }
 
-const MODES: [&str; 6] = [
+const MODES: [&str; 8] = [
     "bulk",
     "frame",
     "decode",
+    "decode-straight",
+    "decode-field",
     "session-ingest",
     "session-roundtrip",
     "none",
@@ -154,6 +159,8 @@ fn run() -> Result<(), String> {
         for (mode, work, is_decode) in [
             ("frame", frame as fn(&[u8]) -> Tally, false),
             ("decode", decode, true),
+            ("decode-straight", decode_straight, true),
+            ("decode-field", decode_field_each, true),
             ("session-ingest", session_ingest, true),
         ] {
             if !wants(mode) {

@@ -14,7 +14,10 @@
 //! - `decode(data)`: the lean companion of `parser` (for execution count; the same input format):
 //!   one whole parse with the event checks, every field walked and decoded with the control
 //!   byte's device only and re-encoded, and the stream wrapped into a packet; no chunked
-//!   re-parse, no JSON lines, no sample tracker.
+//!   re-parse, no JSON lines, no sample tracker. Every packet also goes through the straight-line
+//!   decoder (`decode_packet`) and the layout cache (twice, so that the second is a hit when its
+//!   shape was recorded): each entry is decoded into its member with `decode_field`'s value (no
+//!   device) or passed on, in packet order, as the general dispatch says (issue 38).
 //! - `json(data)`: each line of the input (UTF-8; other input is not a line the encode tool
 //!   could read) goes through `text::encode_line`; when it is accepted, the bytes are parsed and
 //!   every event's line must encode back to that event's bytes.
@@ -83,7 +86,7 @@ macro_rules! harness {
             use ::$pkg::samples::SampleTracker;
             use ::$pkg::text::encode_line;
             use ::$pkg::wire::Writer;
-            use ::$pkg::{decode_field, Device};
+            use ::$pkg::{decode_field, decode_packet, AnyPacket, Device, LayoutCache};
 
             use super::{hex, Bounded, Chunks, SMALL_LINE};
 
@@ -283,6 +286,59 @@ macro_rules! harness {
                 assert_eq!(pos, payload.len(), "the entries do not cover the payload");
             }
 
+            /// What a straight-line decode gave: (descriptor, JSON) of the members in index order,
+            /// then the entries passed on.
+            fn straight(any: &AnyPacket, other: Vec<String>, n: usize) -> (Vec<(u8, String)>, Vec<String>) {
+                let members: Vec<(u8, String)> = any
+                    .index()
+                    .map(|index| {
+                        index
+                            .descriptors()
+                            .iter()
+                            .map(|&d| {
+                                let mut s = String::new();
+                                any.field(d).expect("a decoded member").write_json(&mut s).expect("JSON");
+                                (d, s)
+                            })
+                            .collect()
+                    })
+                    .unwrap_or_default();
+                assert_eq!(members.len(), n, "the count returned is the index's");
+                (members, other)
+            }
+
+            /// The straight-line decoder and the layout cache against the general dispatch.
+            fn check_straight(bytes: &[u8], any: &mut AnyPacket, cache: &mut LayoutCache) {
+                let packet = Packet::new(bytes).expect("a packet the parser reported");
+                let set = packet.set();
+                let mut other = Vec::new();
+                let n = decode_packet(bytes, any, |item| other.push(format!("{item:?}")));
+                let got = straight(any, other, n);
+                let mut want = (Vec::new(), Vec::new());
+                let mut taken = [false; 256];
+                for item in packet.fields() {
+                    if let FieldItem::Field { descriptor, data } = item {
+                        let d = usize::from(descriptor);
+                        if !taken[d] && any.has_member(descriptor) {
+                            if let Ok(value) = decode_field(set, descriptor, data, None) {
+                                taken[d] = true;
+                                let mut s = String::new();
+                                value.write_json(&mut s).expect("JSON");
+                                want.0.push((descriptor, s));
+                                continue;
+                            }
+                        }
+                    }
+                    want.1.push(format!("{item:?}"));
+                }
+                assert_eq!(got, want, "straight-line decode of {}", hex(bytes));
+                for pass in 0..2 {
+                    let mut other = Vec::new();
+                    let n = cache.decode(bytes, any, |item| other.push(format!("{item:?}")));
+                    assert_eq!(straight(any, other, n), want, "layout cache (pass {pass}) on {}", hex(bytes));
+                }
+            }
+
             /// The `decode` target.
             pub fn decode(data: &[u8]) {
                 let Some((&control, stream)) = data.split_first() else {
@@ -290,9 +346,12 @@ macro_rules! harness {
                 };
                 let dev = usize::from(control >> 6);
                 let device = if dev >= 1 && dev <= Device::ALL.len() { Some(Device::ALL[dev - 1]) } else { None };
+                let mut any = Box::new(AnyPacket::default());
+                let mut cache = Box::new(LayoutCache::new());
                 events(stream, None, |kind, _, bytes| {
                     if kind == Kind::Packet {
                         decode_fields(bytes, device);
+                        check_straight(bytes, &mut any, &mut cache);
                     }
                 });
                 if let Some((&set, rest)) = stream.split_first() {
@@ -300,7 +359,10 @@ macro_rules! harness {
                     let mut b = PacketBuilder::new(set);
                     b.add_bytes(payload).expect("a payload of at most the maximum");
                     let built = b.finish().to_vec();
-                    let one = events(&built, None, |_, _, bytes| decode_fields(bytes, device));
+                    let one = events(&built, None, |_, _, bytes| {
+                        decode_fields(bytes, device);
+                        check_straight(bytes, &mut any, &mut cache);
+                    });
                     assert_eq!(one, vec![(Kind::Packet, 0, built.len() as u64)], "a built packet");
                 }
             }

@@ -183,3 +183,116 @@ impl SetField {
         }
     }
 }
+
+/// The fields of one packet of this set, decoded in place by [`decode_packet`]: one member per
+/// field of the set with one layout (its own and the shared data fields); `index` says which members hold a field of the last packet, in packet order
+/// (the others hold whatever they held).
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+#[derive(Clone, Debug)]
+pub struct Packet {
+    /// The fields decoded into their members, in packet order.
+    pub index: crate::packets::PacketIndex,
+    /// Field 0x03.
+    pub llh_position: crate::receiver_1::LlhPosition,
+    /// Field 0xD3 (shared).
+    pub timestamp: crate::shared::Timestamp,
+}
+
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+impl Packet {
+    /// Nothing decoded, every member zero.
+    pub const ZERO: Self = Self {
+        index: crate::packets::PacketIndex::EMPTY,
+        llh_position: <crate::receiver_1::LlhPosition as crate::wire::Wire>::ZERO,
+        timestamp: <crate::shared::Timestamp as crate::wire::Wire>::ZERO,
+    };
+}
+
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+impl Default for Packet {
+    fn default() -> Self {
+        Self::ZERO
+    }
+}
+
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+impl crate::packets::SetPacket for Packet {
+    const SET: u8 = SET;
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index(&self) -> &crate::packets::PacketIndex {
+        &self.index
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn index_mut(&mut self) -> &mut crate::packets::PacketIndex {
+        &mut self.index
+    }
+
+    #[inline]
+    #[allow(clippy::manual_range_patterns)]
+    fn has_member(descriptor: u8) -> bool {
+        matches!(descriptor, 0x03 | 0xD3)
+    }
+
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
+    fn decode_member(&mut self, descriptor: u8, data: &[u8]) -> bool {
+        match descriptor {
+            0x03 => match <&[u8; 18]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.llh_position;
+                    s.latitude = crate::packets::ld(d, 0);
+                    s.longitude = crate::packets::ld(d, 8);
+                    s.valid_flags = crate::packets::ld(d, 16);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.llh_position),
+            },
+            0xD3 => match <&[u8; 8]>::try_from(data) {
+                // a fixed layout: one load per value at a constant offset, straight into the member
+                Ok(d) => {
+                    let s = &mut self.timestamp;
+                    s.nanoseconds = crate::packets::ld(d, 0);
+                    true
+                }
+                _ => crate::packets::decode_into(data, &mut self.timestamp),
+            },
+            _ => false,
+        }
+    }
+
+    fn field(&self, descriptor: u8) -> Option<crate::FieldValue> {
+        if !self.index.contains(descriptor) {
+            return None;
+        }
+        match descriptor {
+            0x03 => Some(crate::FieldValue::Receiver1(
+                crate::receiver_1::SetField::LlhPosition(self.llh_position),
+            )),
+            0xD3 => Some(crate::FieldValue::Shared(
+                crate::shared::SetField::Timestamp(self.timestamp),
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The straight-line decoder of a packet of this set (issue 38): walks the fields of `payload`
+/// (a packet's payload) matching the descriptor and decodes each field's layout into its member of
+/// `out`, the value [`decode_field`](crate::decode_field) gives, with no general value and no
+/// indirect call. Every other entry goes to `other`, in packet order: a descriptor without a
+/// member (undefined, or a field with per-device layouts), a field that does not decode (its
+/// member is then unspecified), a second field with a descriptor already decoded, trailing
+/// bytes. Returns the number of fields decoded into members (`out.index.len()`).
+#[cfg(any(feature = "set-receiver-1", not(feature = "select-sets")))]
+pub fn decode_packet(
+    payload: &[u8],
+    out: &mut Packet,
+    other: impl FnMut(crate::fields::FieldItem<'_>),
+) -> usize {
+    crate::packets::decode_set_packet(payload, out, other)
+}
