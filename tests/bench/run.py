@@ -603,7 +603,7 @@ def aggregate(rows: list[dict[str, str]]) -> list[dict]:
             s = spread_pct(fractions)
             if s is not None:
                 rec["bulk_fraction_spread_pct"] = s
-        if mode == "decode":
+        if mode == "decode" or mode.startswith("decode-"):
             over = ratios((lang, stream, "frame"), rs)
             if over:
                 rec["decode_over_frame"] = statistics.median(over)

@@ -59,7 +59,8 @@ MIPCODEC_NOINLINE void visit_all(std::uint8_t set, const std::uint8_t *payload, 
 /// offsets, recorded from a packet whose every field its set's decoder put into a member; with the
 /// index that packet gave.
 struct PacketShape {
-    static constexpr std::size_t kMaxFields = 16; ///< packets with more fields are not cached
+    /// Packets with more fields are not cached.
+    static constexpr std::size_t kMaxFields = PacketIndex::kMaxFields < 16 ? PacketIndex::kMaxFields : 16;
     bool used = false;
     std::uint8_t set = 0;
     std::uint8_t count = 0;
@@ -111,7 +112,7 @@ struct PacketShape {
     /// The index of a packet of this shape.
     void fill(PacketIndex &index) const {
         std::memcpy(index.present, present, sizeof present);
-        std::memcpy(index.fields, fields, count);
+        std::memcpy(index.fields, fields, sizeof fields); // a constant size: inline stores
         index.count = count;
     }
 };

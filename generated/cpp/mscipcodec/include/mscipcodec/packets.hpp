@@ -75,10 +75,14 @@ class LayoutCache {
         const std::uint8_t set = packet.set();
         const std::uint8_t *payload = packet.payload();
         const std::size_t len = packet.payload_size();
-        for (const detail::PacketShape &s : shapes_) {
+        // the shape of the last hit first (a stream repeats one format), then the others
+        for (std::size_t k = 0; k < kShapes; ++k) {
+            const std::size_t i = (last_ + k) % kShapes;
+            const detail::PacketShape &s = shapes_[i];
             if (s.used && s.set == set && s.len == len && s.matches(payload)) {
                 out.set = set;
                 if (hit(payload, s, out)) {
+                    last_ = i;
                     return out.index();
                 }
                 break;
@@ -113,6 +117,7 @@ class LayoutCache {
 
     detail::PacketShape shapes_[kShapes];
     std::size_t next_ = 0;
+    std::size_t last_ = 0;
 };
 
 } // namespace mscipcodec
