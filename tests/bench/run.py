@@ -606,7 +606,7 @@ def aggregate(rows: list[dict[str, str]]) -> list[dict]:
             s = spread_pct(fractions)
             if s is not None:
                 rec["bulk_fraction_spread_pct"] = s
-        if mode in ("decode", "decode-uncached"):
+        if mode == "decode" or mode.startswith("decode-"):
             over = ratios((lang, stream, "frame"), rs)
             if over:
                 rec["decode_over_frame"] = statistics.median(over)

@@ -152,6 +152,7 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
                 *WARN,
                 f"-I{inc}",
                 f'-DFZ_PACKAGE_HEADER="{package}/json_lines.hpp"',
+                f'-DFZ_PACKETS_HEADER="{package}/packets.hpp"',
                 f"-DFZ_NS={package}",
                 "-c",
                 str(HERE / "cpp" / "fuzz_targets.cpp"),

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import re
 
-from generator import commands, examples, model
+from generator import commands, examples, model, packet_plan
 from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import ExampleError
 from generator.linkfacts import link_facts
@@ -582,6 +582,59 @@ class _Protocol:
         return out
 
 
+def packet_models(P: _Protocol) -> list[dict]:
+    """The straight-line packet decoders (issue 38; templates packets.hpp.j2, packet_set.hpp.j2): the
+    members and fast loads of generator/packet_plan.py in C++ names, one model per data set.
+    A member is named after its field (a clash, or the name `index`, gets the owning set's suffix);
+    a fast load is one Plain<V>::load per parameter, or a byte per bool (checked <= 1)."""
+    proto = P.p
+    sets = {s["id"]: s for s in proto["sets"]}
+    out = []
+    for set_id, plan in packet_plan.packet_plans(proto).items():
+        if plan is None:
+            continue
+        s = sets[set_id]
+        names = [ident(m.field["name"]) for m in plan.members]
+        members = []
+        headers = set()
+        for m, name in zip(plan.members, names):
+            owner = sets[m.field_set] if m.field_set is not None else None
+            ns = _set_ns(owner) if owner else P.reserved_ns
+            if names.count(name) > 1 or name in ("index", "Packet"):
+                name = f"{name}_{ns}"
+            fields = owner["fields"] if owner else proto["reserved_fields"]
+            loads = []
+            if m.fast:
+                views = {q.name: P.param(q) for q in model.layout(proto, m.variant)}
+                first: dict[str, int] = {}
+                for x in m.fast.loads:
+                    v = views[x.param]
+                    if x.primitive == "bool":
+                        index = f"[{x.index}]" if x.index is not None else ""
+                        loads.append({"bool": True, "member": v["member"] + index, "off": x.off})
+                    elif x.param not in first:
+                        first[x.param] = x.off
+                        vt = f"std::array<{v['elem']}, {v['count']}>" if v["kind"] == "fixed" else v["elem"]
+                        loads.append({"bool": False, "member": v["member"], "type": vt, "off": x.off})
+            headers.add(f"{proto['package']}/fields/{ns}.hpp")
+            members.append(
+                {
+                    "descriptor": m.descriptor,
+                    "member": name,
+                    "type": f"::{P.ns}::{ns}::{_layout_names(fields)[(m.field['name'], None)]}",
+                    "source": m.source,
+                    "size": m.fast.size if m.fast else None,
+                    "bools": list(m.fast.bools) if m.fast else [],
+                    "loads": loads,
+                }
+            )
+        ns = _set_ns(s)
+        out.append(
+            {"ns": ns, "file": ns, "id": set_id, "name": s["name"], "members": members, "includes": sorted(headers)}
+        )
+    return out
+
+
 def render(ir: dict, vectors: list[dict], release: Release | None = None, sessions: list[dict] = ()) -> dict[str, str]:
     release = release or load_release()
     env = environment()
@@ -656,6 +709,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             files[f"{inc}/fields/{s['file']}_json.hpp"] = env.get_template("cpp/include/fields_json.hpp.j2").render(
                 ctx, set=s
             )
+        packets = packet_models(P)
+        for k in packets:
+            files[f"{inc}/packets/{k['file']}.hpp"] = env.get_template("cpp/include/packet_set.hpp.j2").render(ctx, k=k)
+        files[f"{inc}/packet_index.hpp"] = env.get_template("cpp/include/packet_index.hpp.j2").render(ctx)
+        files[f"{inc}/packets.hpp"] = env.get_template("cpp/include/packets.hpp.j2").render(ctx, packets=packets)
         files[f"{root}/examples/getting_started.cpp"] = env.get_template("cpp/examples/getting_started.cpp.j2").render(
             ctx
         )

@@ -1,13 +1,19 @@
 // Benchmark of the generated C++ package mipcodec (issue 8): a plain timed loop.
 //
-//   bench DIR [--passes N] [--stream NAME] [--mode bulk|frame|decode|session-ingest|session-roundtrip|none]
+//   bench DIR [--passes N] [--stream NAME]
+//         [--mode bulk|frame|decode|decode-straight|decode-general|session-ingest|session-roundtrip|none]
 //
 // For every stream DIR/<name>.bin (sidecar DIR/<name>.json) it times, best of N passes over the
 // whole file in memory (read once, not timed):
 //   lang=cpp mode=bulk    one memcpy of the whole stream into another buffer (allocated and written
 //                         once before timing): the limit the parsers' rows are divided by
 //   lang=cpp mode=frame   StreamParser::feed + flush: every packet reported, garbage skipped
-//   lang=cpp mode=decode  the same, plus FieldIterator and decode_field of every field
+//   lang=cpp mode=decode  the same, plus the typed decode of every field through a LayoutCache
+//                         (mipcodec/packets.hpp, issue 38): the packet's cached shape, else the
+//                         straight-line decoder of its set; an entry it leaves goes to decode_field
+//   lang=cpp mode=decode-straight  the same without the cache: mipcodec::decode_packet
+//   lang=cpp mode=decode-general   the decode before issue 38: FieldIterator and decode_field of
+//                         every field
 //   lang=cpp mode=session-ingest  the stream fed to a Session with one command pending whose reply
 //                         never comes (deadline far away): every packet routed to a per-packet
 //                         handler that decodes its fields as `decode` does
@@ -38,6 +44,7 @@
 
 #include "mipcodec/commands.hpp"
 #include "mipcodec/mipcodec.hpp"
+#include "mipcodec/packets.hpp"
 #include "mipcodec/session.hpp"
 #include "mipcodec/transport_posix.hpp"
 
@@ -125,7 +132,7 @@ struct Consume {
     }
 };
 
-enum class Mode { bulk, frame, decode, session_ingest };
+enum class Mode { bulk, frame, decode, decode_straight, decode_general, session_ingest };
 
 // Called through a volatile pointer so that the compiler cannot drop or split the copy.
 void *(*volatile bulk_copy)(void *, const void *, std::size_t) = std::memcpy;
@@ -176,6 +183,37 @@ void run_pass(const Stream &s, std::vector<std::uint8_t> &into, Mode mode, Count
         if (session.pending() != 1) {
             ++c.errors;
         }
+        return;
+    }
+    if (mode == Mode::decode || mode == Mode::decode_straight) {
+        // The straight-line decoders (through the layout cache for `decode`); what they leave (a
+        // field with per-device variants, anything they cannot decode) goes to the general
+        // dispatch, as a program that handles every field would.
+        static mipcodec::AnyPacket packet;
+        static mipcodec::LayoutCache cache;
+        cache.clear();
+        const bool cached = mode == Mode::decode;
+        auto on = [&c, &any, cached](const mipcodec::StreamEvent &e) {
+            if (e.kind != mipcodec::StreamEvent::Kind::packet) {
+                return;
+            }
+            ++c.packets;
+            const std::uint8_t set = e.packet.set();
+            auto other = [&c, &any, set](const mipcodec::FieldEntry &entry) {
+                if (entry.kind != mipcodec::FieldEntry::Kind::field) {
+                    ++c.errors;
+                    return;
+                }
+                mipcodec::decode_field(set, entry.descriptor, entry.data, entry.size, any, Consume{c});
+            };
+            const mipcodec::PacketIndex *index = cached ? cache.decode(e.packet, packet, other)
+                                                        : mipcodec::decode_packet(e.packet, packet, other);
+            if (index != nullptr) {
+                packet.visit([&c](const auto &value) { Consume{c}.field(value); });
+            }
+        };
+        parser.feed(s.data.data(), s.data.size(), on);
+        parser.flush(on);
         return;
     }
     auto on = [&c, &any](const mipcodec::StreamEvent &e) {
@@ -303,8 +341,11 @@ int main(int argc, char **argv) {
         }
     }
     if (dir == nullptr || passes < 1) {
-        std::fprintf(stderr, "usage: bench DIR [--passes N] [--stream NAME] "
-                             "[--mode bulk|frame|decode|session-ingest|session-roundtrip|none]\n");
+        std::fprintf(
+            stderr,
+            "usage: bench DIR [--passes N] [--stream NAME] "
+            "[--mode "
+            "bulk|frame|decode|decode-straight|decode-general|session-ingest|session-roundtrip|none]\n");
         return 2;
     }
     int failed = 0;
@@ -317,11 +358,14 @@ int main(int argc, char **argv) {
             return 1;
         }
         std::vector<std::uint8_t> into(s.data.size()); // bulk's destination, written once
-        for (Mode m : {Mode::bulk, Mode::frame, Mode::decode, Mode::session_ingest}) {
-            const char *mode_name = m == Mode::bulk     ? "bulk"
-                                    : m == Mode::frame  ? "frame"
-                                    : m == Mode::decode ? "decode"
-                                                        : "session-ingest";
+        for (Mode m : {Mode::bulk, Mode::frame, Mode::decode, Mode::decode_straight, Mode::decode_general,
+                       Mode::session_ingest}) {
+            const char *mode_name = m == Mode::bulk              ? "bulk"
+                                    : m == Mode::frame           ? "frame"
+                                    : m == Mode::decode          ? "decode"
+                                    : m == Mode::decode_straight ? "decode-straight"
+                                    : m == Mode::decode_general  ? "decode-general"
+                                                                 : "session-ingest";
             if (only_mode != nullptr && std::strcmp(only_mode, mode_name) != 0) {
                 continue;
             }

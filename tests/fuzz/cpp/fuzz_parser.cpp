@@ -49,11 +49,12 @@ struct FieldCheck {
         std::vector<std::uint8_t> buf(size);
         std::size_t written = 0;
         const pkg::EncodeError e = pkg::encode(value, buf.data(), buf.size(), written);
-        FZ_CHECK(e == pkg::EncodeError::none, "re-encode of %s (set %u descriptor %u) failed: %s, data %s", T::kName,
-                 unsigned(set), unsigned(descriptor), pkg::to_string(e), fz::hex(data, size).c_str());
+        FZ_CHECK(e == pkg::EncodeError::none, "re-encode of %s (set %u descriptor %u) failed: %s, data %s",
+                 T::kName, unsigned(set), unsigned(descriptor), pkg::to_string(e),
+                 fz::hex(data, size).c_str());
         FZ_CHECK(written == size && (size == 0 || std::memcmp(buf.data(), data, size) == 0),
-                 "%s (set %u descriptor %u) re-encodes to %s, data %s", T::kName, unsigned(set), unsigned(descriptor),
-                 fz::hex(buf.data(), written).c_str(), fz::hex(data, size).c_str());
+                 "%s (set %u descriptor %u) re-encodes to %s, data %s", T::kName, unsigned(set),
+                 unsigned(descriptor), fz::hex(buf.data(), written).c_str(), fz::hex(data, size).c_str());
         if (size > 0) {
             std::vector<std::uint8_t> shorter(size - 1);
             FZ_CHECK(pkg::encode(value, shorter.data(), shorter.size(), written) != pkg::EncodeError::none,
@@ -90,8 +91,8 @@ void check_line(const std::uint8_t *bytes, std::size_t len, std::uint64_t offset
     }
     std::vector<std::uint8_t> out;
     std::string error;
-    FZ_CHECK(pkg::encode_json_line(line, out, error), "the decoded line does not encode (%s): %s", error.c_str(),
-             line.c_str());
+    FZ_CHECK(pkg::encode_json_line(line, out, error), "the decoded line does not encode (%s): %s",
+             error.c_str(), line.c_str());
     FZ_CHECK(out.size() == len && std::memcmp(out.data(), bytes, len) == 0, "the line encodes to %s: %s",
              fz::hex(out.data(), out.size()).c_str(), line.c_str());
 }
@@ -101,7 +102,8 @@ void check_packet(const std::uint8_t *bytes, std::size_t len, std::uint64_t offs
     const pkg::PacketView packet{bytes, len};
     FZ_CHECK(len >= pkg::kHeaderSize + pkg::kChecksumSize, "packet of %zu bytes", len);
     const std::size_t plen = packet.payload_size();
-    FZ_CHECK(len == pkg::kHeaderSize + plen + pkg::kChecksumSize, "packet length %zu for payload %zu", len, plen);
+    FZ_CHECK(len == pkg::kHeaderSize + plen + pkg::kChecksumSize, "packet length %zu for payload %zu", len,
+             plen);
     const auto sums = pkg::fletcher16(bytes, pkg::kHeaderSize + plen).bytes();
     FZ_CHECK(bytes[pkg::kHeaderSize + plen] == sums[0] && bytes[pkg::kHeaderSize + plen + 1] == sums[1],
              "bad checksum %s", fz::hex(bytes, len).c_str());
@@ -118,10 +120,11 @@ void check_packet(const std::uint8_t *bytes, std::size_t len, std::uint64_t offs
         if (e.kind == pkg::FieldEntry::Kind::field) {
             const std::uint8_t *head = payload + pos;
             const int adjust = pkg::field_length_adjust(set, head[pkg::kFieldDescriptorOffset]);
-            FZ_CHECK(e.descriptor == head[pkg::kFieldDescriptorOffset] && e.data == head + pkg::kFieldHeaderSize,
+            FZ_CHECK(e.descriptor == head[pkg::kFieldDescriptorOffset] &&
+                         e.data == head + pkg::kFieldHeaderSize,
                      "field entry at %zu", pos);
-            FZ_CHECK(static_cast<int>(e.size) == int(head[pkg::kFieldLengthOffset]) - adjust, "field size %zu",
-                     e.size);
+            FZ_CHECK(static_cast<int>(e.size) == int(head[pkg::kFieldLengthOffset]) - adjust,
+                     "field size %zu", e.size);
             pos += pkg::kFieldHeaderSize + e.size;
             FZ_CHECK(pos <= plen, "field runs past the payload");
             FieldCheck check{set, e.descriptor, e.data, e.size};
@@ -184,7 +187,8 @@ std::vector<Ev> events(const std::uint8_t *stream, std::size_t size, fz::Chunks 
 
 // The stream (n > 0) wrapped as (set = first byte, payload = the rest, at most the maximum) into
 // a packet with a valid checksum; it must parse as exactly one packet (`each` sees it).
-template <class Each> std::vector<std::uint8_t> wrapped(const std::uint8_t *stream, std::size_t n, Each &&each) {
+template <class Each>
+std::vector<std::uint8_t> wrapped(const std::uint8_t *stream, std::size_t n, Each &&each) {
     const std::size_t plen = n - 1 < pkg::kMaxPayload ? n - 1 : pkg::kMaxPayload;
     pkg::PacketBuilder b(stream[0]);
     FZ_CHECK(b.append(stream + 1, plen) == pkg::EncodeError::none, "append of %zu bytes", plen);
@@ -211,16 +215,17 @@ extern "C" int fz_cpp_parser(const std::uint8_t *data, std::size_t size) {
     const std::optional<pkg::Device> device =
         dev >= 1 && dev <= all.size() ? std::optional<pkg::Device>(all[dev - 1]) : std::nullopt;
     pkg::SampleTracker tracker;
-    const auto whole = events(stream, n, nullptr, [&](bool packet, std::uint64_t offset, const std::uint8_t *b,
-                                                      std::size_t len) {
-        if (packet) {
-            check_packet(b, len, offset, device, tracker);
-        } else {
-            check_line(b, len, offset, false, device);
-        }
-    });
+    const auto whole = events(stream, n, nullptr,
+                              [&](bool packet, std::uint64_t offset, const std::uint8_t *b, std::size_t len) {
+                                  if (packet) {
+                                      check_packet(b, len, offset, device, tracker);
+                                  } else {
+                                      check_line(b, len, offset, false, device);
+                                  }
+                              });
     fz::Chunks plan(control);
-    const auto chunked = events(stream, n, &plan, [](bool, std::uint64_t, const std::uint8_t *, std::size_t) {});
+    const auto chunked =
+        events(stream, n, &plan, [](bool, std::uint64_t, const std::uint8_t *, std::size_t) {});
     FZ_CHECK(whole == chunked, "events differ when fed in chunks (%zu / %zu)", whole.size(), chunked.size());
     if (n > 0) {
         const std::vector<std::uint8_t> built =
@@ -234,12 +239,107 @@ extern "C" int fz_cpp_parser(const std::uint8_t *data, std::size_t size) {
 // Target `decode` (C++): the lean companion of `parser` (see tests/fuzz/c/fuzz_decode.c): one
 // whole parse with the event checks, every field decoded with the control byte's device and
 // re-encoded, and the stream wrapped into a packet; no chunking, JSON lines or other devices.
+// Every packet also goes through the straight-line decoder (decode_packet) and a LayoutCache
+// (twice: the second time its shape is known), which must give what decode_field gives.
+#ifdef FZ_PACKETS_HEADER
+#include FZ_PACKETS_HEADER
+#endif
 namespace fz_parser {
+
+#ifdef FZ_PACKETS_HEADER
+// One decoded field as compared: descriptor and encoded data.
+struct Decoded {
+    std::uint8_t descriptor = 0;
+    std::vector<std::uint8_t> data;
+    bool operator==(const Decoded &o) const {
+        return descriptor == o.descriptor && data == o.data;
+    }
+};
+
+template <class T> Decoded decoded_of(const T &value) {
+    std::vector<std::uint8_t> buf(pkg::kMaxPayload + 1);
+    std::size_t n = 0;
+    FZ_CHECK(pkg::encode(value, buf.data(), buf.size(), n) == pkg::EncodeError::none,
+             "a decoded %s does not encode", T::kName);
+    buf.resize(n);
+    return {T::kDescriptor, buf};
+}
+
+struct Straight {
+    bool has_index = false;
+    std::vector<Decoded> fields;
+    std::vector<std::size_t> other;
+    bool operator==(const Straight &o) const {
+        return has_index == o.has_index && fields == o.fields && other == o.other;
+    }
+};
+
+struct TakeSingleLayout {
+    Straight &out;
+    bool &taken;
+    template <class T> void field(const T &value) {
+        if constexpr (!T::kHasVariants) {
+            out.fields.push_back(decoded_of(value));
+            taken = true;
+        }
+    }
+    void raw(const pkg::DecodeError &) {}
+};
+
+template <class Decode>
+Straight straight_of(const pkg::PacketView &packet, pkg::AnyPacket &any, Decode &&decode) {
+    Straight out;
+    const pkg::PacketIndex *index =
+        decode(packet, any, [&out](const pkg::FieldEntry &e) { out.other.push_back(e.payload_offset); });
+    out.has_index = index != nullptr;
+    FZ_CHECK(index == any.index(), "the index is not the set's packet's");
+    any.visit([&out](const auto &value) { out.fields.push_back(decoded_of(value)); });
+    return out;
+}
+
+void check_straight_line(const pkg::PacketView &packet) {
+    static pkg::AnyPacket any;
+    static pkg::LayoutCache cache;
+    cache.clear();
+    const Straight straight =
+        straight_of(packet, any, [](const pkg::PacketView &p, pkg::AnyPacket &a, auto &&o) {
+            return pkg::decode_packet(p, a, o);
+        });
+    Straight general;
+    general.has_index = straight.has_index;
+    pkg::FieldIterator it(packet);
+    pkg::FieldEntry e;
+    bool seen[256] = {};
+    while (it.next(e)) {
+        bool taken = false;
+        if (general.has_index && e.kind == pkg::FieldEntry::Kind::field && !seen[e.descriptor]) {
+            pkg::decode_field(packet.set(), e.descriptor, e.data, e.size, std::nullopt,
+                              TakeSingleLayout{general, taken});
+        }
+        if (taken) {
+            seen[e.descriptor] = true;
+        } else {
+            general.other.push_back(e.payload_offset);
+        }
+    }
+    FZ_CHECK(straight == general, "set %u: the straight-line decoder differs from decode_field",
+             packet.set());
+    for (int round = 0; round < 2; ++round) {
+        const Straight cached =
+            straight_of(packet, any, [](const pkg::PacketView &p, pkg::AnyPacket &a, auto &&o) {
+                return cache.decode(p, a, o);
+            });
+        FZ_CHECK(cached == general, "set %u: the layout cache (round %d) differs from decode_field",
+                 packet.set(), round);
+    }
+}
+#endif
 
 void decode_fields(const std::uint8_t *bytes, std::size_t len, const std::optional<pkg::Device> &device) {
     const pkg::PacketView packet{bytes, len};
     const std::size_t plen = packet.payload_size();
-    FZ_CHECK(len == pkg::kHeaderSize + plen + pkg::kChecksumSize, "packet length %zu for payload %zu", len, plen);
+    FZ_CHECK(len == pkg::kHeaderSize + plen + pkg::kChecksumSize, "packet length %zu for payload %zu", len,
+             plen);
     const std::uint8_t set = packet.set();
     pkg::FieldIterator it(packet);
     pkg::FieldEntry e;
@@ -257,6 +357,9 @@ void decode_fields(const std::uint8_t *bytes, std::size_t len, const std::option
         }
     }
     FZ_CHECK(pos == plen, "the entries cover %zu of %zu payload bytes", pos, plen);
+#ifdef FZ_PACKETS_HEADER
+    check_straight_line(packet);
+#endif
 }
 
 } // namespace fz_parser
