@@ -532,6 +532,7 @@ MODE_RANK = {
     "decode-uncached": 2.5,
     "decode-straight": 2.5,
     "decode-field": 2.5,
+    "decode-general": 2.5,
     "session-ingest": 3,
     "copy-per-packet": 4,
     "csv": 5,
