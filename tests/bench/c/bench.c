@@ -12,7 +12,7 @@
  *                layout cache (one per pass, as a program has one per stream) in front of the
  *                straight-line decoder of the packet's set (issue 38; a field it leaves goes to
  *                mipc_decode_field)
- *   mode=decode-uncached  the same without the cache: mipc_decode_packet for every packet
+ *   mode=decode-straight  the same without the cache: mipc_decode_packet for every packet
  *   mode=copy-per-packet  diagnostic only: memchr(sync byte) + memcpy of each packet into a
  *                buffer (trusts every 75 65 pair and length byte, so it does not do the parsers'
  *                work on the garbage streams; never the base of a ratio)
@@ -62,7 +62,7 @@ typedef struct {
     uint64_t errors;
     uint64_t check;             /* consumes the decoded values */
     uint8_t set;                /* decode: the set of the packet being decoded */
-    mipc_layout_cache_t *cache; /* decode: the layout cache (NULL: decode-uncached) */
+    mipc_layout_cache_t *cache; /* decode: the layout cache (NULL: decode-straight) */
 } counts_t;
 
 static double now(void) {
@@ -368,7 +368,7 @@ static void run_pass(const stream_t *s, uint8_t *into, mode_t_ mode, counts_t *c
 
 int main(int argc, char **argv) {
     static const char *const mode_names[] = {"bulk",           "frame",          "decode", "copy-per-packet",
-                                             "session-ingest", "decode-uncached"};
+                                             "session-ingest", "decode-straight"};
     const char *dir = NULL;
     int passes = 5;
     const char *only = NULL;
@@ -393,7 +393,7 @@ int main(int argc, char **argv) {
     if (!dir || passes < 1) {
         fprintf(stderr,
                 "usage: bench DIR [--passes N] [--stream NAME] "
-                "[--mode bulk|frame|decode|decode-uncached|copy-per-packet|session-ingest|session-roundtrip|"
+                "[--mode bulk|frame|decode|decode-straight|copy-per-packet|session-ingest|session-roundtrip|"
                 "none]\n");
         return 2;
     }

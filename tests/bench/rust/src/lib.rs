@@ -3,13 +3,14 @@
 //!
 //! - frame:  the stream parser over the whole in-memory stream (find sync, length, Fletcher
 //!   checksum), every packet reported with its offset and bytes, garbage skipped.
-//! - decode: frame, then decode every packet through a `LayoutCache` (issue 38): the set's
+//! - decode: frame, then split every packet into fields and decode every field to its typed value
+//!   through the general dispatch (`decode_field`: by set and descriptor, a `FieldValue` per
+//!   field). The fastest of the three in Rust (issue 38, docs/benchmarks.md), so the `decode` row.
+//! - decode-cached: frame, then decode every packet through a `LayoutCache` (issue 38): the set's
 //!   straight-line decoder fills the set's typed `Packet`, a packet of a shape seen before is
 //!   decoded with that shape's offsets; what it leaves (none on these streams) goes to
 //!   `decode_field`.
-//! - decode-field: frame, then split every packet into fields and decode every field to its
-//!   typed value through the general dispatch (`decode_field`: by set and descriptor, a
-//!   `FieldValue` per field), the decode row before issue 38.
+//! - decode-straight: the straight-line decoder without the cache (`mipcodec::decode_packet`).
 //!
 //! Both return counts that are checked against the stream's sidecar, and a checksum of what
 //! they saw so that nothing can be optimised away.
