@@ -12,7 +12,7 @@ from generator.render import environment
 
 def pkg_config(package: str, title: str, lang: str) -> list[dict]:
     """The pkg-config files of a package (templates/cmake/pc.in.j2): the C core, JSON and POSIX
-    transport libraries, or the C++ header-only library; names as docs/packaging.md lists them."""
+    transport libraries, or the C++ library; names as docs/packaging.md lists them."""
     if lang == "c":
         return [
             {
@@ -44,8 +44,8 @@ def pkg_config(package: str, title: str, lang: str) -> list[dict]:
     return [
         {
             "name": f"{package}-cpp",
-            "description": f"C++17 header-only codec of the {title} protocol",
-            "lib": None,
+            "description": f"C++17 codec of the {title} protocol",
+            "lib": f"{package}_cpp",
             "requires": None,
         }
     ]

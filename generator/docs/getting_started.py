@@ -58,7 +58,7 @@ def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
         )
     if lang == "cpp":
         return (
-            f"Copy `generated/cpp/{pkg}/` into your tree (header-only C++17) and add it to your CMake build (or"
+            f"Copy `generated/cpp/{pkg}/` into your tree (a C++17 library: CMake builds it) and add it to your CMake build (or"
             f" install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see the package's README):",
             f"add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::cpp)",
         )

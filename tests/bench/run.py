@@ -138,9 +138,11 @@ def build_c(bindir: Path) -> Path:
 
 def build_cpp(bindir: Path) -> Path:
     inc = ROOT / "generated" / "cpp" / "mipcodec" / "include"
+    # The library's sources (the C++ package compiles like a library: docs/packaging.md).
+    sources = sorted((inc.parent / "src").rglob("*.cpp"))
     main = BENCH / "cpp" / "bench.cpp"
     exe = bindir / "bench-cpp"
-    if stale(exe, [main, *sorted(inc.rglob("*.hpp"))]):
+    if stale(exe, [main, *sources, *sorted(inc.rglob("*.hpp"))]):
         cxx = os.environ.get("CXX", "g++")
         cmd = [
             cxx,
@@ -153,6 +155,7 @@ def build_cpp(bindir: Path) -> Path:
             "-I",
             str(inc),
             str(main),
+            *map(str, sources),
             "-o",
             str(exe),
         ]

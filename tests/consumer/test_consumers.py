@@ -221,6 +221,8 @@ def test_install_tree(prefix):
         f"{libdir}/cmake/{PKG}/{PKG}-c-targets.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-c-abi.cmake",
         f"{libdir}/cmake/{PKG}/{PKG}-cpp-targets.cmake",
+        f"{libdir}/cmake/{PKG}/{PKG}-cpp-abi.cmake",
+        f"{libdir}/lib{PKG}_cpp.a",
         f"{libdir}/pkgconfig/{PKG}.pc",
         f"{libdir}/pkgconfig/{PKG}-json.pc",
         f"{libdir}/pkgconfig/{PKG}-posix.pc",
@@ -317,9 +319,8 @@ def test_find_package_reports_a_missing_component(prefix, tmp_path):
 
 def test_find_package_refuses_c_of_another_pointer_size(prefix, tmp_path):
     """The version file is the same for both packages (ARCH_INDEPENDENT), so the config file itself
-    keeps the C libraries (built for this host's pointers) from a project of another pointer size
-    (a 32-bit or Cortex-M project finding a 64-bit host's install), with the reason; the header-only
-    C++ package is still found."""
+    keeps the C and C++ libraries (built for this host's pointers) from a project of another
+    pointer size (a 32-bit or Cortex-M project finding a 64-bit host's install), with the reason."""
     host = struct.calcsize("P")
     other = 4 if host == 8 else 8
     src = tmp_path / "p"
@@ -339,7 +340,11 @@ def test_find_package_refuses_c_of_another_pointer_size(prefix, tmp_path):
     assert r.returncode != 0
     assert "component c is not installed" in r.stderr
     assert f"was built for {host}-byte pointers, this project has {other}" in " ".join(r.stderr.split())
-    assert configure("cpp").returncode == 0
+    r = configure("cpp")
+    assert r.returncode != 0
+    assert "component cpp is not installed" in r.stderr
+    assert "the C++ package in" in " ".join(r.stderr.split())
+    assert f"was built for {host}-byte pointers, this project has {other}" in " ".join(r.stderr.split())
 
 
 def test_pkg_config(prefix, stream):

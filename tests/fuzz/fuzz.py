@@ -160,7 +160,15 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
                 str(main_o),
             ]
         )
+    # The library's sources (src/: the codecs, the session facts, the typed API), instrumented like
+    # the harness, one object each.
     extra = []
+    for c in sorted((inc.parent / "src").rglob("*.cpp")):
+        o = out / "lib" / (c.relative_to(inc.parent / "src").as_posix().replace("/", "_") + ".o")
+        o.parent.mkdir(parents=True, exist_ok=True)
+        if stale(o, max(deps, c.stat().st_mtime)):
+            sh([cxx, "-std=c++17", *flags, *WARN, f"-I{inc}", "-c", str(c), "-o", str(o)])
+        extra.append(o)
     if not fuzz:
         replay_o = out / "replay_main.o"
         if stale(replay_o, deps):

@@ -350,8 +350,10 @@ def test_adding_one_descriptor_changes_only_its_files_and_indexes(tmp_path):
     assert all(any(w in rel for w in index_words) for rel in changed), [
         r for r in changed if not any(w in r for w in index_words)
     ]
-    # 26 before the capabilities tables (Python, C++ devices.hpp) and the C device tool's tables
-    assert len(changed) <= 29, changed
+    # 26 before the capabilities tables (Python, C++ devices.hpp) and the C device tool's tables;
+    # 31 since the C++ package compiles like a library (the set's src/fields/sensor.cpp and
+    # sensor_json.cpp beside its headers)
+    assert len(changed) <= 31, changed
     # Before issue 24 the C layout ids (`= 236`) and the k_fields index comments renumbered:
     # 455 lines removed after formatting. Now the index tables alone shift.
     assert removed <= 200, removed

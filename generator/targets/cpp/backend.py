@@ -72,10 +72,16 @@ RUNTIME_HEADERS = [
 ]
 
 
+# The hand-written runtime's sources (runtime/src/), compiled into the library with the generated
+# ones (library_sources): the members that instantiate the field dispatch once for every program.
+RUNTIME_SOURCES = ["dispatch.cpp", "json_lines.cpp", "transport.cpp"]
+
+
 def runtime_files(pkg: str) -> dict[str, str]:
     """{runtime file: path in the package} of the hand-written runtime."""
     return {
         **{f"include/protopkg/{h}": f"include/{pkg}/{h}" for h in RUNTIME_HEADERS},
+        **{f"src/{c}": f"src/{c}" for c in RUNTIME_SOURCES},
         # The Windows counterpart of transport_posix.hpp (compiles only on Windows, with MinGW-w64).
         "include/protopkg/transport_win32.hpp": f"include/{pkg}/transport_win32.hpp",
         "tools/decode.cpp": "tools/decode.cpp",
@@ -714,6 +720,11 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             files[f"{inc}/packets/{k['file']}.hpp"] = env.get_template("cpp/include/packet_set.hpp.j2").render(ctx, k=k)
         files[f"{inc}/packet_index.hpp"] = env.get_template("cpp/include/packet_index.hpp.j2").render(ctx)
         files[f"{inc}/packets.hpp"] = env.get_template("cpp/include/packets.hpp.j2").render(ctx, packets=packets)
+        # The library's sources (src/): the definitions the headers declare, compiled once.
+        sources = library_sources(sets, session)
+        for rel, (tpl, extra) in sources.items():
+            files[f"{root}/{rel}"] = env.get_template(f"cpp/src/{tpl}").render(ctx, **extra)
+        ctx["library_sources"] = sorted([*sources, *(f"src/{c}" for c in RUNTIME_SOURCES)])
         files[f"{root}/examples/getting_started.cpp"] = env.get_template("cpp/examples/getting_started.cpp.j2").render(
             ctx
         )
@@ -732,6 +743,23 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/README.md"] = env.get_template("cpp/README.md.j2").render(ctx)
         files.update(cmake_package_files(f"{root}/", ctx, pkg_config(pkg, proto["title"], "cpp")))
     return files
+
+
+def library_sources(sets: list[dict], session: dict) -> dict[str, tuple[str, dict]]:
+    """The generated sources of the library (package-relative path -> template under
+    templates/cpp/src/ and its extra context): the out-of-line definitions of the named types'
+    and the layouts' wire and JSON codecs, one file per descriptor set, the session facts and the
+    typed command API (session: session_context's)."""
+    out: dict[str, tuple[str, dict]] = {
+        "src/types.cpp": ("types.cpp.j2", {}),
+        "src/types_json.cpp": ("types_json.cpp.j2", {}),
+        "src/session_facts.cpp": ("session_facts.cpp.j2", session),
+        "src/commands.cpp": ("commands.cpp.j2", session),
+    }
+    for s in sets:
+        out[f"src/fields/{s['file']}.cpp"] = ("fields.cpp.j2", {"set": s})
+        out[f"src/fields/{s['file']}_json.cpp"] = ("fields_json.cpp.j2", {"set": s})
+    return out
 
 
 # ----------------------------------------------------------------------------- session layer

@@ -4,7 +4,9 @@
 // sends the command over a Connection (transport.hpp) and waits for its result. With a device
 // selected, a command or function that device does not support is refused before sending
 // (StartOptions::check_device = false overrides). Returns Reply<R> (the typed reply field in
-// `value`) when the command answers with one, else Call.
+// `value`) when the command answers with one, else Call. The functions are defined in
+// src/commands.cpp (compiled into the library): a program instantiates Connection::run only for
+// the commands it sends itself.
 #pragma once
 
 #include <optional>
@@ -30,192 +32,76 @@ namespace base {
 
 /// Ping
 namespace ping {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::Ping v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace ping
 
 /// Set to idle
 namespace set_to_idle {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::SetToIdle v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace set_to_idle
 
 /// Get device information
 namespace get_device_info {
-inline Reply<::mipcodec::base::DeviceInfo> call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GetDeviceInfo v{};
-        return reply_of<::mipcodec::base::DeviceInfo>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::base::DeviceInfo> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_info
 
 /// Get device descriptor sets
 namespace get_device_descriptors {
-inline Reply<::mipcodec::base::DeviceDescriptors> call(Connection &connection,
-                                                       const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GetDeviceDescriptors v{};
-        return reply_of<::mipcodec::base::DeviceDescriptors>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::base::DeviceDescriptors> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_descriptors
 
 /// Built-in test
 namespace built_in_test {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::BuiltInTest v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace built_in_test
 
 /// Resume
 namespace resume {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::Resume v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace resume
 
 /// Get extended device descriptor sets
 namespace get_extended_descriptors {
-inline Reply<::mipcodec::base::ExtendedDescriptors> call(Connection &connection,
-                                                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GetExtendedDescriptors v{};
-        return reply_of<::mipcodec::base::ExtendedDescriptors>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::base::ExtendedDescriptors> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_extended_descriptors
 
 /// Continuous built-in test
 namespace continuous_bit {
-inline Reply<::mipcodec::base::ContinuousBitResult> call(Connection &connection,
-                                                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::ContinuousBit v{};
-        return reply_of<::mipcodec::base::ContinuousBitResult>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::base::ContinuousBitResult> call(Connection &connection, const StartOptions &options = {});
 } // namespace continuous_bit
 
 /// Comm port speed
 namespace comm_port_speed {
-inline Call write(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
-                  const typename decltype(::mipcodec::base::CommPortSpeed::baud)::value_type &baud,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::CommPortSpeed v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.port = port;
-        v.baud = baud;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::base::CommPortSpeedResponse>
+Call write(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
+           const typename decltype(::mipcodec::base::CommPortSpeed::baud)::value_type &baud,
+           const StartOptions &options = {});
+Reply<::mipcodec::base::CommPortSpeedResponse>
 read(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::CommPortSpeed v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.port = port;
-        return reply_of<::mipcodec::base::CommPortSpeedResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::CommPortSpeed v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.port = port;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::CommPortSpeed v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.port = port;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::CommPortSpeed v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.port = port;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::base::CommPortSpeed::port) &port,
+              const StartOptions &options = {});
 } // namespace comm_port_speed
 
 /// GPS time update
 namespace gps_time_update {
-inline Call write(Connection &connection,
+Call write(Connection &connection, const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
+           const typename decltype(::mipcodec::base::GpsTimeUpdateGx545::value)::value_type &value,
+           const StartOptions &options = {});
+Call read(Connection &connection, const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
+          const StartOptions &options = {});
+Call write_no_ack(Connection &connection,
                   const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
                   const typename decltype(::mipcodec::base::GpsTimeUpdateGx545::value)::value_type &value,
-                  const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::base::GpsTimeUpdateCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.field_id = field_id;
-        v.value = value;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::base::GpsTimeUpdateGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.field_id = field_id;
-        v.value = value;
-        return connection.run(v, options);
-    }
-}
-inline Call read(Connection &connection,
-                 const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GpsTimeUpdateGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.field_id = field_id;
-        return connection.run(v, options);
-    }
-}
-inline Call
-write_no_ack(Connection &connection, const decltype(::mipcodec::base::GpsTimeUpdateGx545::field_id) &field_id,
-             const typename decltype(::mipcodec::base::GpsTimeUpdateGx545::value)::value_type &value,
-             const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::GpsTimeUpdateGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write_no_ack;
-        v.field_id = field_id;
-        v.value = value;
-        return connection.run(v, options);
-    }
-}
+                  const StartOptions &options = {});
 } // namespace gps_time_update
 
 /// Device reset
 namespace device_reset {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::base::DeviceReset v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace device_reset
 } // namespace base
 
@@ -224,2072 +110,661 @@ namespace threedm {
 
 /// Event control
 namespace event_control {
-inline Call write(Connection &connection,
-                  const decltype(::mipcodec::threedm::EventControl::instance) &instance,
-                  const typename decltype(::mipcodec::threedm::EventControl::mode)::value_type &mode,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.instance = instance;
-        v.mode = mode;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::EventControlResponse>
+Call write(Connection &connection, const decltype(::mipcodec::threedm::EventControl::instance) &instance,
+           const typename decltype(::mipcodec::threedm::EventControl::mode)::value_type &mode,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::EventControlResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::EventControl::instance) &instance,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.instance = instance;
-        return reply_of<::mipcodec::threedm::EventControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventControl::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventControl::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::EventControl::instance) &instance,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::EventControl::instance) &instance,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::EventControl::instance) &instance,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::threedm::EventControl::instance) &instance,
+              const StartOptions &options = {});
 } // namespace event_control
 
 /// Get event trigger status
 namespace get_event_trigger_status {
-inline Reply<::mipcodec::threedm::EventTriggerStatus>
+Reply<::mipcodec::threedm::EventTriggerStatus>
 call(Connection &connection,
      const decltype(::mipcodec::threedm::GetEventTriggerStatus::requested_instances) &requested_instances,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetEventTriggerStatus v{};
-        v.requested_instances = requested_instances;
-        v.requested_count =
-            static_cast<std::remove_reference_t<decltype(v.requested_count)>>(v.requested_instances.size());
-        return reply_of<::mipcodec::threedm::EventTriggerStatus>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace get_event_trigger_status
 
 /// Get event action status
 namespace get_event_action_status {
-inline Reply<::mipcodec::threedm::EventActionStatus>
+Reply<::mipcodec::threedm::EventActionStatus>
 call(Connection &connection,
      const decltype(::mipcodec::threedm::GetEventActionStatus::requested_instances) &requested_instances,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetEventActionStatus v{};
-        v.requested_instances = requested_instances;
-        v.requested_count =
-            static_cast<std::remove_reference_t<decltype(v.requested_count)>>(v.requested_instances.size());
-        return reply_of<::mipcodec::threedm::EventActionStatus>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace get_event_action_status
 
 /// Event trigger configuration
 namespace event_trigger_config {
-inline Call
-write(Connection &connection, const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
-      const typename decltype(::mipcodec::threedm::EventTriggerConfig::type)::value_type &type,
-      const typename decltype(::mipcodec::threedm::EventTriggerConfig::parameters)::value_type &parameters,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventTriggerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.instance = instance;
-        v.type = type;
-        v.parameters = parameters;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::EventTriggerConfigResponse>
+Call write(
+    Connection &connection, const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
+    const typename decltype(::mipcodec::threedm::EventTriggerConfig::type)::value_type &type,
+    const typename decltype(::mipcodec::threedm::EventTriggerConfig::parameters)::value_type &parameters,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::EventTriggerConfigResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventTriggerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.instance = instance;
-        return reply_of<::mipcodec::threedm::EventTriggerConfigResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventTriggerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventTriggerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventTriggerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::EventTriggerConfig::instance) &instance,
+              const StartOptions &options = {});
 } // namespace event_trigger_config
 
 /// Event action configuration
 namespace event_action_config {
-inline Call
-write(Connection &connection, const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
-      const typename decltype(::mipcodec::threedm::EventActionConfig::trigger)::value_type &trigger,
-      const typename decltype(::mipcodec::threedm::EventActionConfig::type)::value_type &type,
-      const typename decltype(::mipcodec::threedm::EventActionConfig::parameters)::value_type &parameters,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventActionConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.instance = instance;
-        v.trigger = trigger;
-        v.type = type;
-        v.parameters = parameters;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::EventActionConfigResponse>
+Call write(
+    Connection &connection, const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
+    const typename decltype(::mipcodec::threedm::EventActionConfig::trigger)::value_type &trigger,
+    const typename decltype(::mipcodec::threedm::EventActionConfig::type)::value_type &type,
+    const typename decltype(::mipcodec::threedm::EventActionConfig::parameters)::value_type &parameters,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::EventActionConfigResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventActionConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.instance = instance;
-        return reply_of<::mipcodec::threedm::EventActionConfigResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventActionConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventActionConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::EventActionConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::EventActionConfig::instance) &instance,
+              const StartOptions &options = {});
 } // namespace event_action_config
 
 /// Device startup settings
 namespace device_startup_settings {
-inline Call read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DeviceStartupSettingsGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return connection.run(v, options);
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::DeviceStartupSettingsCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::DeviceStartupSettingsGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::DeviceStartupSettingsCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::DeviceStartupSettingsGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::DeviceStartupSettingsCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::DeviceStartupSettingsGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace device_startup_settings
 
 /// Sensor-to-vehicle frame transformation (Euler)
 namespace sensor_to_vehicle_euler {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::roll)::value_type &roll,
-      const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::pitch)::value_type &pitch,
-      const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::yaw)::value_type &yaw,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleEuler v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.roll = roll;
-        v.pitch = pitch;
-        v.yaw = yaw;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::SensorToVehicleEulerResponse> read(Connection &connection,
-                                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleEuler v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::SensorToVehicleEulerResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleEuler v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleEuler v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleEuler v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::roll)::value_type &roll,
+           const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::pitch)::value_type &pitch,
+           const typename decltype(::mipcodec::threedm::SensorToVehicleEuler::yaw)::value_type &yaw,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::SensorToVehicleEulerResponse> read(Connection &connection,
+                                                              const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sensor_to_vehicle_euler
 
 /// Sensor-to-vehicle frame transformation (quaternion)
 namespace sensor_to_vehicle_quaternion {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::threedm::SensorToVehicleQuaternion::q)::value_type &q,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleQuaternion v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.q = q;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::SensorToVehicleQuaternionResponse> read(Connection &connection,
-                                                                          const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleQuaternion v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::SensorToVehicleQuaternionResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleQuaternion v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleQuaternion v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleQuaternion v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::SensorToVehicleQuaternion::q)::value_type &q,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::SensorToVehicleQuaternionResponse> read(Connection &connection,
+                                                                   const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sensor_to_vehicle_quaternion
 
 /// Sensor-to-vehicle frame transformation (direction cosine matrix)
 namespace sensor_to_vehicle_dcm {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::threedm::SensorToVehicleDcm::dcm)::value_type &dcm,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleDcm v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.dcm = dcm;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::SensorToVehicleDcmResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleDcm v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::SensorToVehicleDcmResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleDcm v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleDcm v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorToVehicleDcm v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::SensorToVehicleDcm::dcm)::value_type &dcm,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::SensorToVehicleDcmResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sensor_to_vehicle_dcm
 
 /// Accelerometer bias
 namespace accel_bias {
-inline Call write(Connection &connection,
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::AccelBiasGx545::bias)::value_type &bias,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::AccelBiasResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
+Call write_no_ack(Connection &connection,
                   const typename decltype(::mipcodec::threedm::AccelBiasGx545::bias)::value_type &bias,
-                  const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::AccelBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::AccelBiasResponse> read(Connection &connection,
-                                                          const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::AccelBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::AccelBiasResponse>(connection.run(v, options));
-    }
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::AccelBiasResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::AccelBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::AccelBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::AccelBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
-inline Call write_no_ack(Connection &connection,
-                         const typename decltype(::mipcodec::threedm::AccelBiasGx545::bias)::value_type &bias,
-                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AccelBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write_no_ack;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-}
+                  const StartOptions &options = {});
 } // namespace accel_bias
 
 /// Gyro bias
 namespace gyro_bias {
-inline Call write(Connection &connection,
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::GyroBiasGx545::bias)::value_type &bias,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::GyroBiasResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
+Call write_no_ack(Connection &connection,
                   const typename decltype(::mipcodec::threedm::GyroBiasGx545::bias)::value_type &bias,
-                  const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::GyroBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GyroBiasResponse> read(Connection &connection,
-                                                         const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::GyroBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::GyroBiasResponse>(connection.run(v, options));
-    }
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::GyroBiasResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::GyroBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::GyroBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::GyroBiasCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
-inline Call write_no_ack(Connection &connection,
-                         const typename decltype(::mipcodec::threedm::GyroBiasGx545::bias)::value_type &bias,
-                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GyroBiasGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write_no_ack;
-        v.bias = bias;
-        return connection.run(v, options);
-    }
-}
+                  const StartOptions &options = {});
 } // namespace gyro_bias
 
 /// Capture gyro bias
 namespace capture_gyro_bias {
-inline Reply<::mipcodec::threedm::GyroBiasResponse>
+Reply<::mipcodec::threedm::GyroBiasResponse>
 call(Connection &connection,
      const decltype(::mipcodec::threedm::CaptureGyroBias::averaging_time_ms) &averaging_time_ms,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::CaptureGyroBias v{};
-        v.averaging_time_ms = averaging_time_ms;
-        return reply_of<::mipcodec::threedm::GyroBiasResponse>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace capture_gyro_bias
 
 /// Magnetometer hard iron offset
 namespace mag_hard_iron_offset {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::MagHardIronOffsetGx545::offset)::value_type &offset,
-      const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagHardIronOffsetCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.offset = offset;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.offset = offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::MagHardIronOffsetResponse> read(Connection &connection,
-                                                                  const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagHardIronOffsetCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::MagHardIronOffsetResponse>(connection.run(v, options));
-    }
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::MagHardIronOffsetResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagHardIronOffsetCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagHardIronOffsetCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagHardIronOffsetCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
-inline Call
-write_no_ack(Connection &connection,
-             const typename decltype(::mipcodec::threedm::MagHardIronOffsetGx545::offset)::value_type &offset,
-             const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MagHardIronOffsetGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write_no_ack;
-        v.offset = offset;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::MagHardIronOffsetGx545::offset)::value_type &offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::MagHardIronOffsetResponse> read(Connection &connection,
+                                                           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
+Call write_no_ack(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::MagHardIronOffsetGx545::offset)::value_type &offset,
+    const StartOptions &options = {});
 } // namespace mag_hard_iron_offset
 
 /// Magnetometer soft iron matrix
 namespace mag_soft_iron_matrix {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::MagSoftIronMatrixGx545::matrix)::value_type &matrix,
-      const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagSoftIronMatrixCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.matrix = matrix;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.matrix = matrix;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::MagSoftIronMatrixResponse> read(Connection &connection,
-                                                                  const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagSoftIronMatrixCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::MagSoftIronMatrixResponse>(connection.run(v, options));
-    }
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::MagSoftIronMatrixResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagSoftIronMatrixCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagSoftIronMatrixCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    if (connection.session().device() == Device::cv7_ins) {
-        ::mipcodec::threedm::MagSoftIronMatrixCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
-inline Call
-write_no_ack(Connection &connection,
-             const typename decltype(::mipcodec::threedm::MagSoftIronMatrixGx545::matrix)::value_type &matrix,
-             const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MagSoftIronMatrixGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write_no_ack;
-        v.matrix = matrix;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::MagSoftIronMatrixGx545::matrix)::value_type &matrix,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::MagSoftIronMatrixResponse> read(Connection &connection,
+                                                           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
+Call write_no_ack(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::MagSoftIronMatrixGx545::matrix)::value_type &matrix,
+    const StartOptions &options = {});
 } // namespace mag_soft_iron_matrix
 
 /// Coning and sculling enable
 namespace coning_sculling_enable {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::ConingScullingEnable::enable)::value_type &enable,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ConingScullingEnable v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::ConingScullingEnableResponse> read(Connection &connection,
-                                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ConingScullingEnable v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::ConingScullingEnableResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ConingScullingEnable v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ConingScullingEnable v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ConingScullingEnable v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::ConingScullingEnable::enable)::value_type &enable,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::ConingScullingEnableResponse> read(Connection &connection,
+                                                              const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace coning_sculling_enable
 
 /// UART baud rate
 namespace uart_baudrate {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::threedm::UartBaudrate::baud)::value_type &baud,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::UartBaudrate v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.baud = baud;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::UartBaudrateResponse> read(Connection &connection,
-                                                             const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::UartBaudrate v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::UartBaudrateResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::UartBaudrate v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::UartBaudrate v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::UartBaudrate v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::UartBaudrate::baud)::value_type &baud,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::UartBaudrateResponse> read(Connection &connection,
+                                                      const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace uart_baudrate
 
 /// GPIO configuration
 namespace gpio_config {
-inline Call write(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
-                  const typename decltype(::mipcodec::threedm::GpioConfig::feature)::value_type &feature,
-                  const typename decltype(::mipcodec::threedm::GpioConfig::behavior)::value_type &behavior,
-                  const typename decltype(::mipcodec::threedm::GpioConfig::pin_mode)::value_type &pin_mode,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.pin = pin;
-        v.feature = feature;
-        v.behavior = behavior;
-        v.pin_mode = pin_mode;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GpioConfigResponse>
-read(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.pin = pin;
-        return reply_of<::mipcodec::threedm::GpioConfigResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.pin = pin;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.pin = pin;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.pin = pin;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
+           const typename decltype(::mipcodec::threedm::GpioConfig::feature)::value_type &feature,
+           const typename decltype(::mipcodec::threedm::GpioConfig::behavior)::value_type &behavior,
+           const typename decltype(::mipcodec::threedm::GpioConfig::pin_mode)::value_type &pin_mode,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::GpioConfigResponse> read(Connection &connection,
+                                                    const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
+                                                    const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::threedm::GpioConfig::pin) &pin,
+              const StartOptions &options = {});
 } // namespace gpio_config
 
 /// GPIO state
 namespace gpio_state {
-inline Call write(Connection &connection, const decltype(::mipcodec::threedm::GpioState::pin) &pin,
-                  const typename decltype(::mipcodec::threedm::GpioState::state)::value_type &state,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioState v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.pin = pin;
-        v.state = state;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GpioStateResponse>
-read(Connection &connection, const decltype(::mipcodec::threedm::GpioState::pin) &pin,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GpioState v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.pin = pin;
-        return reply_of<::mipcodec::threedm::GpioStateResponse>(connection.run(v, options));
-    }
-}
+Call write(Connection &connection, const decltype(::mipcodec::threedm::GpioState::pin) &pin,
+           const typename decltype(::mipcodec::threedm::GpioState::state)::value_type &state,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::GpioStateResponse> read(Connection &connection,
+                                                   const decltype(::mipcodec::threedm::GpioState::pin) &pin,
+                                                   const StartOptions &options = {});
 } // namespace gpio_state
 
 /// Odometer configuration
 namespace odometer_config {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::OdometerConfig::mode)::value_type &mode,
-      const typename decltype(::mipcodec::threedm::OdometerConfig::scaling)::value_type &scaling,
-      const typename decltype(::mipcodec::threedm::OdometerConfig::uncertainty)::value_type &uncertainty,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::OdometerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        v.scaling = scaling;
-        v.uncertainty = uncertainty;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::OdometerConfigResponse> read(Connection &connection,
-                                                               const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::OdometerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::OdometerConfigResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::OdometerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::OdometerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::OdometerConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::OdometerConfig::mode)::value_type &mode,
+           const typename decltype(::mipcodec::threedm::OdometerConfig::scaling)::value_type &scaling,
+           const typename decltype(::mipcodec::threedm::OdometerConfig::uncertainty)::value_type &uncertainty,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::OdometerConfigResponse> read(Connection &connection,
+                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace odometer_config
 
 /// Advanced low-pass filter settings
 namespace advanced_lowpass_filter {
-inline Call
-write(Connection &connection,
-      const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
-      const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::enable)::value_type &enable,
-      const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::manual)::value_type &manual,
-      const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::frequency)::value_type &frequency,
-      const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::reserved)::value_type &reserved,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AdvancedLowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.target_descriptor = target_descriptor;
-        v.enable = enable;
-        v.manual = manual;
-        v.frequency = frequency;
-        v.reserved = reserved;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::AdvancedLowpassFilterResponse>
+Call write(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
+    const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::enable)::value_type &enable,
+    const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::manual)::value_type &manual,
+    const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::frequency)::value_type &frequency,
+    const typename decltype(::mipcodec::threedm::AdvancedLowpassFilter::reserved)::value_type &reserved,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::AdvancedLowpassFilterResponse>
 read(Connection &connection,
      const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AdvancedLowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.target_descriptor = target_descriptor;
-        return reply_of<::mipcodec::threedm::AdvancedLowpassFilterResponse>(connection.run(v, options));
-    }
-}
-inline Call
-save(Connection &connection,
-     const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AdvancedLowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.target_descriptor = target_descriptor;
-        return connection.run(v, options);
-    }
-}
-inline Call
-load(Connection &connection,
-     const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AdvancedLowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.target_descriptor = target_descriptor;
-        return connection.run(v, options);
-    }
-}
-inline Call
-default_(Connection &connection,
-         const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
-         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::AdvancedLowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.target_descriptor = target_descriptor;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
+          const StartOptions &options = {});
+Call default_(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::AdvancedLowpassFilter::target_descriptor) &target_descriptor,
+    const StartOptions &options = {});
 } // namespace advanced_lowpass_filter
 
 /// Complementary filter settings
 namespace complementary_filter {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::ComplementaryFilter::pitch_roll_enable)::value_type
-          &pitch_roll_enable,
-      const typename decltype(::mipcodec::threedm::ComplementaryFilter::heading_enable)::value_type
-          &heading_enable,
-      const typename decltype(::mipcodec::threedm::ComplementaryFilter::pitch_roll_time_constant)::value_type
-          &pitch_roll_time_constant,
-      const typename decltype(::mipcodec::threedm::ComplementaryFilter::heading_time_constant)::value_type
-          &heading_time_constant,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ComplementaryFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.pitch_roll_enable = pitch_roll_enable;
-        v.heading_enable = heading_enable;
-        v.pitch_roll_time_constant = pitch_roll_time_constant;
-        v.heading_time_constant = heading_time_constant;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::ComplementaryFilterResponse> read(Connection &connection,
-                                                                    const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ComplementaryFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::ComplementaryFilterResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ComplementaryFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ComplementaryFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ComplementaryFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::ComplementaryFilter::pitch_roll_enable)::value_type
+        &pitch_roll_enable,
+    const typename decltype(::mipcodec::threedm::ComplementaryFilter::heading_enable)::value_type
+        &heading_enable,
+    const typename decltype(::mipcodec::threedm::ComplementaryFilter::pitch_roll_time_constant)::value_type
+        &pitch_roll_time_constant,
+    const typename decltype(::mipcodec::threedm::ComplementaryFilter::heading_time_constant)::value_type
+        &heading_time_constant,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::ComplementaryFilterResponse> read(Connection &connection,
+                                                             const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace complementary_filter
 
 /// Sensor range
 namespace sensor_range {
-inline Call write(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
-                  const typename decltype(::mipcodec::threedm::SensorRange::setting)::value_type &setting,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorRange v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.sensor = sensor;
-        v.setting = setting;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::SensorRangeResponse>
+Call write(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
+           const typename decltype(::mipcodec::threedm::SensorRange::setting)::value_type &setting,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::SensorRangeResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorRange v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.sensor = sensor;
-        return reply_of<::mipcodec::threedm::SensorRangeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorRange v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.sensor = sensor;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorRange v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.sensor = sensor;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::SensorRange v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.sensor = sensor;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::threedm::SensorRange::sensor) &sensor,
+              const StartOptions &options = {});
 } // namespace sensor_range
 
 /// Get calibrated sensor ranges
 namespace get_calibrated_sensor_ranges {
-inline Reply<::mipcodec::threedm::CalibratedSensorRanges>
+Reply<::mipcodec::threedm::CalibratedSensorRanges>
 call(Connection &connection, const decltype(::mipcodec::threedm::GetCalibratedSensorRanges::sensor) &sensor,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetCalibratedSensorRanges v{};
-        v.sensor = sensor;
-        return reply_of<::mipcodec::threedm::CalibratedSensorRanges>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace get_calibrated_sensor_ranges
 
 /// Low-pass anti-aliasing filter
 namespace lowpass_filter {
-inline Call
-write(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
-      const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
-      const typename decltype(::mipcodec::threedm::LowpassFilter::enable)::value_type &enable,
-      const typename decltype(::mipcodec::threedm::LowpassFilter::manual)::value_type &manual,
-      const typename decltype(::mipcodec::threedm::LowpassFilter::frequency)::value_type &frequency,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::LowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.desc_set = desc_set;
-        v.field_desc = field_desc;
-        v.enable = enable;
-        v.manual = manual;
-        v.frequency = frequency;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::LowpassFilterResponse>
+Call write(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
+           const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
+           const typename decltype(::mipcodec::threedm::LowpassFilter::enable)::value_type &enable,
+           const typename decltype(::mipcodec::threedm::LowpassFilter::manual)::value_type &manual,
+           const typename decltype(::mipcodec::threedm::LowpassFilter::frequency)::value_type &frequency,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::LowpassFilterResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
      const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::LowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.desc_set = desc_set;
-        v.field_desc = field_desc;
-        return reply_of<::mipcodec::threedm::LowpassFilterResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
-                 const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::LowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.desc_set = desc_set;
-        v.field_desc = field_desc;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
-                 const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::LowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.desc_set = desc_set;
-        v.field_desc = field_desc;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
-                     const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::LowpassFilter v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.desc_set = desc_set;
-        v.field_desc = field_desc;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
+          const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
+          const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::threedm::LowpassFilter::desc_set) &desc_set,
+              const decltype(::mipcodec::threedm::LowpassFilter::field_desc) &field_desc,
+              const StartOptions &options = {});
 } // namespace lowpass_filter
 
 /// Poll IMU data
 namespace poll_imu_data {
-inline Call call(Connection &connection, const decltype(::mipcodec::threedm::PollImuData::option) &option,
-                 const decltype(::mipcodec::threedm::PollImuData::descriptors) &descriptors,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PollImuData v{};
-        v.option = option;
-        v.descriptors = descriptors;
-        v.num_descriptors =
-            static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::PollImuData::option) &option,
+          const decltype(::mipcodec::threedm::PollImuData::descriptors) &descriptors,
+          const StartOptions &options = {});
 } // namespace poll_imu_data
 
 /// Poll GNSS data
 namespace poll_gnss_data {
-inline Call call(Connection &connection, const decltype(::mipcodec::threedm::PollGnssData::option) &option,
-                 const decltype(::mipcodec::threedm::PollGnssData::descriptors) &descriptors,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PollGnssData v{};
-        v.option = option;
-        v.descriptors = descriptors;
-        v.num_descriptors =
-            static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::PollGnssData::option) &option,
+          const decltype(::mipcodec::threedm::PollGnssData::descriptors) &descriptors,
+          const StartOptions &options = {});
 } // namespace poll_gnss_data
 
 /// Poll estimation filter data
 namespace poll_filter_data {
-inline Call call(Connection &connection, const decltype(::mipcodec::threedm::PollFilterData::option) &option,
-                 const decltype(::mipcodec::threedm::PollFilterData::descriptors) &descriptors,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PollFilterData v{};
-        v.option = option;
-        v.descriptors = descriptors;
-        v.num_descriptors =
-            static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::PollFilterData::option) &option,
+          const decltype(::mipcodec::threedm::PollFilterData::descriptors) &descriptors,
+          const StartOptions &options = {});
 } // namespace poll_filter_data
 
 /// Poll NMEA data
 namespace poll_nmea_data {
-inline Call call(Connection &connection,
-                 const decltype(::mipcodec::threedm::PollNmeaData::suppress_ack) &suppress_ack,
-                 const decltype(::mipcodec::threedm::PollNmeaData::format_entries) &format_entries,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PollNmeaData v{};
-        v.suppress_ack = suppress_ack;
-        v.format_entries = format_entries;
-        v.count = static_cast<std::remove_reference_t<decltype(v.count)>>(v.format_entries.size());
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection,
+          const decltype(::mipcodec::threedm::PollNmeaData::suppress_ack) &suppress_ack,
+          const decltype(::mipcodec::threedm::PollNmeaData::format_entries) &format_entries,
+          const StartOptions &options = {});
 } // namespace poll_nmea_data
 
 /// Poll data
 namespace poll_data {
-inline Call call(Connection &connection, const decltype(::mipcodec::threedm::PollData::desc_set) &desc_set,
-                 const decltype(::mipcodec::threedm::PollData::suppress_ack) &suppress_ack,
-                 const decltype(::mipcodec::threedm::PollData::descriptors) &descriptors,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PollData v{};
-        v.desc_set = desc_set;
-        v.suppress_ack = suppress_ack;
-        v.descriptors = descriptors;
-        v.num_descriptors =
-            static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(v.descriptors.size());
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::PollData::desc_set) &desc_set,
+          const decltype(::mipcodec::threedm::PollData::suppress_ack) &suppress_ack,
+          const decltype(::mipcodec::threedm::PollData::descriptors) &descriptors,
+          const StartOptions &options = {});
 } // namespace poll_data
 
 /// Get IMU data base rate
 namespace get_imu_base_rate {
-inline Reply<::mipcodec::threedm::ImuBaseRate> call(Connection &connection,
-                                                    const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetImuBaseRate v{};
-        return reply_of<::mipcodec::threedm::ImuBaseRate>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::threedm::ImuBaseRate> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_imu_base_rate
 
 /// Get GNSS data base rate
 namespace get_gnss_base_rate {
-inline Reply<::mipcodec::threedm::GnssBaseRate> call(Connection &connection,
-                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetGnssBaseRate v{};
-        return reply_of<::mipcodec::threedm::GnssBaseRate>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::threedm::GnssBaseRate> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_gnss_base_rate
 
 /// Get estimation filter data base rate
 namespace get_filter_base_rate {
-inline Reply<::mipcodec::threedm::FilterBaseRate> call(Connection &connection,
-                                                       const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetFilterBaseRate v{};
-        return reply_of<::mipcodec::threedm::FilterBaseRate>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::threedm::FilterBaseRate> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_filter_base_rate
 
 /// Get data base rate
 namespace get_base_rate {
-inline Reply<::mipcodec::threedm::BaseRate>
+Reply<::mipcodec::threedm::BaseRate>
 call(Connection &connection, const decltype(::mipcodec::threedm::GetBaseRate::desc_set) &desc_set,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetBaseRate v{};
-        v.desc_set = desc_set;
-        return reply_of<::mipcodec::threedm::BaseRate>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace get_base_rate
 
 /// IMU message format
 namespace imu_message_format {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::ImuMessageFormat::descriptors)::value_type &descriptors,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ImuMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::ImuMessageFormatResponse>
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::ImuMessageFormat::descriptors)::value_type &descriptors,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::ImuMessageFormatResponse>
 read(Connection &connection,
      const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ImuMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return reply_of<::mipcodec::threedm::ImuMessageFormatResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ImuMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ImuMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::ImuMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::ImuMessageFormat::descriptors) &descriptors = {},
+              const StartOptions &options = {});
 } // namespace imu_message_format
 
 /// GNSS message format
 namespace gnss_message_format {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::GnssMessageFormat::descriptors)::value_type &descriptors,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GnssMessageFormatResponse>
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::GnssMessageFormat::descriptors)::value_type &descriptors,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::GnssMessageFormatResponse>
 read(Connection &connection,
      const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return reply_of<::mipcodec::threedm::GnssMessageFormatResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::GnssMessageFormat::descriptors) &descriptors = {},
+              const StartOptions &options = {});
 } // namespace gnss_message_format
 
 /// Estimation filter message format
 namespace filter_message_format {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::FilterMessageFormat::descriptors)::value_type &descriptors,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FilterMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::FilterMessageFormatResponse>
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::FilterMessageFormat::descriptors)::value_type &descriptors,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::FilterMessageFormatResponse>
 read(Connection &connection,
      const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FilterMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return reply_of<::mipcodec::threedm::FilterMessageFormatResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FilterMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FilterMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FilterMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::FilterMessageFormat::descriptors) &descriptors = {},
+              const StartOptions &options = {});
 } // namespace filter_message_format
 
 /// NMEA message format
 namespace nmea_message_format {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::threedm::NmeaMessageFormat::format_entries)::value_type
-                      &format_entries,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::NmeaMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.format_entries = format_entries;
-        v.count = static_cast<std::remove_reference_t<decltype(v.count)>>(
-            v.format_entries ? v.format_entries->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::NmeaMessageFormatResponse> read(Connection &connection,
-                                                                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::NmeaMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::NmeaMessageFormatResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::NmeaMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::NmeaMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::NmeaMessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::NmeaMessageFormat::format_entries)::value_type
+               &format_entries,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::NmeaMessageFormatResponse> read(Connection &connection,
+                                                           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace nmea_message_format
 
 /// Message format
 namespace message_format {
-inline Call
-write(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
-      const typename decltype(::mipcodec::threedm::MessageFormat::descriptors)::value_type &descriptors,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.desc_set = desc_set;
-        v.descriptors = descriptors;
-        v.num_descriptors = static_cast<std::remove_reference_t<decltype(v.num_descriptors)>>(
-            v.descriptors ? v.descriptors->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::MessageFormatResponse>
+Call write(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
+           const typename decltype(::mipcodec::threedm::MessageFormat::descriptors)::value_type &descriptors,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::MessageFormatResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.desc_set = desc_set;
-        return reply_of<::mipcodec::threedm::MessageFormatResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::MessageFormat v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::threedm::MessageFormat::desc_set) &desc_set,
+              const StartOptions &options = {});
 } // namespace message_format
 
 /// Factory streaming
 namespace factory_streaming {
-inline Call call(Connection &connection,
-                 const decltype(::mipcodec::threedm::FactoryStreaming::action) &action,
-                 const decltype(::mipcodec::threedm::FactoryStreaming::reserved) &reserved,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::FactoryStreaming v{};
-        v.action = action;
-        v.reserved = reserved;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::FactoryStreaming::action) &action,
+          const decltype(::mipcodec::threedm::FactoryStreaming::reserved) &reserved,
+          const StartOptions &options = {});
 } // namespace factory_streaming
 
 /// Data stream control
 namespace data_stream_control {
-inline Call
-write_gx5_45(Connection &connection,
-             const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-             const typename decltype(::mipcodec::threedm::DataStreamControlGx545::enable)::value_type &enable,
-             const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.device_selector = device_selector;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call write_cv7_ins(
+Call write_gx5_45(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+    const typename decltype(::mipcodec::threedm::DataStreamControlGx545::enable)::value_type &enable,
+    const StartOptions &options = {});
+Call write_cv7_ins(
     Connection &connection, const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
     const typename decltype(::mipcodec::threedm::DataStreamControlCv7Ins::enable)::value_type &enable,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.desc_set = desc_set;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call
-read_gx5_45(Connection &connection,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
-            const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.device_selector = device_selector;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call read_cv7_ins(Connection &connection,
-                         const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
-                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
-inline Call
-save_gx5_45(Connection &connection,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
-            const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.device_selector = device_selector;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call save_cv7_ins(Connection &connection,
-                         const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
-                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
-inline Call
-load_gx5_45(Connection &connection,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-            const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
-            const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.device_selector = device_selector;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call load_cv7_ins(Connection &connection,
-                         const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
-                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
-inline Call
-default_gx5_45(Connection &connection,
-               const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
-               const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
-               const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlGx545 v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.device_selector = device_selector;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Call default_cv7_ins(Connection &connection,
-                            const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
-                            const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DataStreamControlCv7Ins v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.desc_set = desc_set;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Call read_gx5_45(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
+    const StartOptions &options = {});
+Call read_cv7_ins(Connection &connection,
+                  const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
+                  const StartOptions &options = {});
+Call save_gx5_45(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
+    const StartOptions &options = {});
+Call save_cv7_ins(Connection &connection,
+                  const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
+                  const StartOptions &options = {});
+Call load_gx5_45(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
+    const StartOptions &options = {});
+Call load_cv7_ins(Connection &connection,
+                  const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
+                  const StartOptions &options = {});
+Call default_gx5_45(
+    Connection &connection,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::device_selector) &device_selector,
+    const decltype(::mipcodec::threedm::DataStreamControlGx545::enable) &enable = {},
+    const StartOptions &options = {});
+Call default_cv7_ins(Connection &connection,
+                     const decltype(::mipcodec::threedm::DataStreamControlCv7Ins::desc_set) &desc_set,
+                     const StartOptions &options = {});
 } // namespace data_stream_control
 
 /// Raw RTCM 2.3 message
 namespace raw_rtcm_message {
-inline Call call(Connection &connection, const decltype(::mipcodec::threedm::RawRtcmMessage::data) &data,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::RawRtcmMessage v{};
-        v.data = data;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::threedm::RawRtcmMessage::data) &data,
+          const StartOptions &options = {});
 } // namespace raw_rtcm_message
 
 /// GNSS constellation settings
 namespace gnss_constellation_settings {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels)::value_type
-          &max_channels,
-      const typename decltype(::mipcodec::threedm::GnssConstellationSettings::settings)::value_type &settings,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssConstellationSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.max_channels = max_channels;
-        v.settings = settings;
-        v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
-            v.settings ? v.settings->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GnssConstellationSettingsResponse>
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels)::value_type
+        &max_channels,
+    const typename decltype(::mipcodec::threedm::GnssConstellationSettings::settings)::value_type &settings,
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::GnssConstellationSettingsResponse>
 read(Connection &connection,
      const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
      const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssConstellationSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.max_channels = max_channels;
-        v.settings = settings;
-        v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
-            v.settings ? v.settings->size() : 0);
-        return reply_of<::mipcodec::threedm::GnssConstellationSettingsResponse>(connection.run(v, options));
-    }
-}
-inline Call
-save(Connection &connection,
-     const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
-     const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssConstellationSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.max_channels = max_channels;
-        v.settings = settings;
-        v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
-            v.settings ? v.settings->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call
-load(Connection &connection,
-     const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
-     const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssConstellationSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.max_channels = max_channels;
-        v.settings = settings;
-        v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
-            v.settings ? v.settings->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Call
-default_(Connection &connection,
-         const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
-         const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
-         const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssConstellationSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.max_channels = max_channels;
-        v.settings = settings;
-        v.config_count = static_cast<std::remove_reference_t<decltype(v.config_count)>>(
-            v.settings ? v.settings->size() : 0);
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
+          const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
+          const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::GnssConstellationSettings::max_channels) &max_channels = {},
+              const decltype(::mipcodec::threedm::GnssConstellationSettings::settings) &settings = {},
+              const StartOptions &options = {});
 } // namespace gnss_constellation_settings
 
 /// GNSS SBAS settings
 namespace gnss_sbas_settings {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::threedm::GnssSbasSettings::enable_sbas)::value_type &enable_sbas,
     const typename decltype(::mipcodec::threedm::GnssSbasSettings::sbas_options)::value_type &sbas_options,
     const typename decltype(::mipcodec::threedm::GnssSbasSettings::included_prns)::value_type &included_prns,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssSbasSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable_sbas = enable_sbas;
-        v.sbas_options = sbas_options;
-        v.included_prns = included_prns;
-        v.num_included_prns = static_cast<std::remove_reference_t<decltype(v.num_included_prns)>>(
-            v.included_prns ? v.included_prns->size() : 0);
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GnssSbasSettingsResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssSbasSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::GnssSbasSettingsResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssSbasSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssSbasSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssSbasSettings v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::GnssSbasSettingsResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gnss_sbas_settings
 
 /// GNSS assisted fix control
 namespace gnss_assisted_fix_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::threedm::GnssAssistedFixControl::option)::value_type &option,
-      const typename decltype(::mipcodec::threedm::GnssAssistedFixControl::flags)::value_type &flags,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistedFixControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.option = option;
-        v.flags = flags;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GnssAssistedFixControlResponse>
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::GnssAssistedFixControl::option)::value_type &option,
+           const typename decltype(::mipcodec::threedm::GnssAssistedFixControl::flags)::value_type &flags,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::GnssAssistedFixControlResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
      const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistedFixControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.option = option;
-        v.flags = flags;
-        return reply_of<::mipcodec::threedm::GnssAssistedFixControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
-                 const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistedFixControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.option = option;
-        v.flags = flags;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
-                 const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistedFixControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.option = option;
-        v.flags = flags;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
-                     const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistedFixControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.option = option;
-        v.flags = flags;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
+          const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
+          const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::threedm::GnssAssistedFixControl::option) &option = {},
+              const decltype(::mipcodec::threedm::GnssAssistedFixControl::flags) &flags = {},
+              const StartOptions &options = {});
 } // namespace gnss_assisted_fix_control
 
 /// GNSS assist time update
 namespace gnss_assist_time_update {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::threedm::GnssAssistTimeUpdate::tow)::value_type &tow,
     const typename decltype(::mipcodec::threedm::GnssAssistTimeUpdate::week_number)::value_type &week_number,
     const typename decltype(::mipcodec::threedm::GnssAssistTimeUpdate::accuracy)::value_type &accuracy,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistTimeUpdate v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.tow = tow;
-        v.week_number = week_number;
-        v.accuracy = accuracy;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::GnssAssistTimeUpdateResponse>
+    const StartOptions &options = {});
+Reply<::mipcodec::threedm::GnssAssistTimeUpdateResponse>
 read(Connection &connection, const decltype(::mipcodec::threedm::GnssAssistTimeUpdate::tow) &tow = {},
      const decltype(::mipcodec::threedm::GnssAssistTimeUpdate::week_number) &week_number = {},
      const decltype(::mipcodec::threedm::GnssAssistTimeUpdate::accuracy) &accuracy = {},
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GnssAssistTimeUpdate v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.tow = tow;
-        v.week_number = week_number;
-        v.accuracy = accuracy;
-        return reply_of<::mipcodec::threedm::GnssAssistTimeUpdateResponse>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace gnss_assist_time_update
 
 /// PPS source control
 namespace pps_source {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::threedm::PpsSource::source)::value_type &source,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PpsSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::threedm::PpsSourceResponse> read(Connection &connection,
-                                                          const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PpsSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::threedm::PpsSourceResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PpsSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PpsSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::PpsSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::threedm::PpsSource::source)::value_type &source,
+           const StartOptions &options = {});
+Reply<::mipcodec::threedm::PpsSourceResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace pps_source
 
 /// Get supported events
 namespace get_supported_events {
-inline Reply<::mipcodec::threedm::SupportedEvents>
+Reply<::mipcodec::threedm::SupportedEvents>
 call(Connection &connection, const decltype(::mipcodec::threedm::GetSupportedEvents::query) &query,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::GetSupportedEvents v{};
-        v.query = query;
-        return reply_of<::mipcodec::threedm::SupportedEvents>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace get_supported_events
 
 /// Device status
 namespace device_status {
-inline Reply<::mipcodec::threedm::DeviceStatusResponse>
+Reply<::mipcodec::threedm::DeviceStatusResponse>
 call(Connection &connection, const decltype(::mipcodec::threedm::DeviceStatus::model_number) &model_number,
      const decltype(::mipcodec::threedm::DeviceStatus::status_selector) &status_selector,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::threedm::DeviceStatus v{};
-        v.model_number = model_number;
-        v.status_selector = status_selector;
-        return reply_of<::mipcodec::threedm::DeviceStatusResponse>(connection.run(v, options));
-    }
-}
+     const StartOptions &options = {});
 } // namespace device_status
 } // namespace threedm
 
@@ -2298,1076 +773,337 @@ namespace filter {
 
 /// Reset filter
 namespace reset_filter {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ResetFilter v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace reset_filter
 
 /// Set initial attitude
 namespace set_initial_attitude {
-inline Call call(Connection &connection, const decltype(::mipcodec::filter::SetInitialAttitude::roll) &roll,
-                 const decltype(::mipcodec::filter::SetInitialAttitude::pitch) &pitch,
-                 const decltype(::mipcodec::filter::SetInitialAttitude::heading) &heading,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SetInitialAttitude v{};
-        v.roll = roll;
-        v.pitch = pitch;
-        v.heading = heading;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::filter::SetInitialAttitude::roll) &roll,
+          const decltype(::mipcodec::filter::SetInitialAttitude::pitch) &pitch,
+          const decltype(::mipcodec::filter::SetInitialAttitude::heading) &heading,
+          const StartOptions &options = {});
 } // namespace set_initial_attitude
 
 /// Set initial heading
 namespace set_initial_heading {
-inline Call call(Connection &connection,
-                 const decltype(::mipcodec::filter::SetInitialHeading::heading) &heading,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SetInitialHeading v{};
-        v.heading = heading;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::filter::SetInitialHeading::heading) &heading,
+          const StartOptions &options = {});
 } // namespace set_initial_heading
 
 /// Run navigation filter
 namespace run_filter {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RunFilter v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace run_filter
 
 /// Vehicle dynamics mode
 namespace vehicle_dynamics_mode {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::VehicleDynamicsMode::mode)::value_type &mode,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::VehicleDynamicsMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::VehicleDynamicsModeResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::VehicleDynamicsMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::VehicleDynamicsModeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::VehicleDynamicsMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::VehicleDynamicsMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::VehicleDynamicsMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::VehicleDynamicsMode::mode)::value_type &mode,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::VehicleDynamicsModeResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace vehicle_dynamics_mode
 
 /// Sensor to vehicle frame transformation
 namespace sensor_to_vehicle_transform {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::SensorToVehicleTransform::roll)::value_type &roll,
-      const typename decltype(::mipcodec::filter::SensorToVehicleTransform::pitch)::value_type &pitch,
-      const typename decltype(::mipcodec::filter::SensorToVehicleTransform::yaw)::value_type &yaw,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleTransform v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.roll = roll;
-        v.pitch = pitch;
-        v.yaw = yaw;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::SensorToVehicleTransformResponse> read(Connection &connection,
-                                                                        const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleTransform v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::SensorToVehicleTransformResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleTransform v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleTransform v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleTransform v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::SensorToVehicleTransform::roll)::value_type &roll,
+           const typename decltype(::mipcodec::filter::SensorToVehicleTransform::pitch)::value_type &pitch,
+           const typename decltype(::mipcodec::filter::SensorToVehicleTransform::yaw)::value_type &yaw,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::SensorToVehicleTransformResponse> read(Connection &connection,
+                                                                 const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sensor_to_vehicle_transform
 
 /// Sensor to vehicle frame offset
 namespace sensor_to_vehicle_offset {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::SensorToVehicleOffset::offset)::value_type &offset,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.offset = offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::SensorToVehicleOffsetResponse> read(Connection &connection,
-                                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::SensorToVehicleOffsetResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SensorToVehicleOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::SensorToVehicleOffset::offset)::value_type &offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::SensorToVehicleOffsetResponse> read(Connection &connection,
+                                                              const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sensor_to_vehicle_offset
 
 /// GNSS antenna offset
 namespace antenna_offset {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::AntennaOffset::offset)::value_type &offset,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.offset = offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AntennaOffsetResponse> read(Connection &connection,
-                                                             const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AntennaOffsetResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::AntennaOffset::offset)::value_type &offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AntennaOffsetResponse> read(Connection &connection,
+                                                      const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace antenna_offset
 
 /// Estimation control flags
 namespace estimation_control {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::EstimationControl::flags)::value_type &flags,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::EstimationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.flags = flags;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::EstimationControlResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::EstimationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::EstimationControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::EstimationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::EstimationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::EstimationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::EstimationControl::flags)::value_type &flags,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::EstimationControlResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace estimation_control
 
 /// GNSS source control
 namespace gnss_source_control {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::GnssSourceControl::source)::value_type &source,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssSourceControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GnssSourceControlResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssSourceControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GnssSourceControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssSourceControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssSourceControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssSourceControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::GnssSourceControl::source)::value_type &source,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::GnssSourceControlResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gnss_source_control
 
 /// External GNSS update
 namespace external_gnss_update {
-inline Call
-call(Connection &connection, const decltype(::mipcodec::filter::ExternalGnssUpdate::gps_tow) &gps_tow,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::gps_week) &gps_week,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::latitude) &latitude,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::longitude) &longitude,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::height) &height,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::velocity) &velocity,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::position_uncertainty) &position_uncertainty,
-     const decltype(::mipcodec::filter::ExternalGnssUpdate::velocity_uncertainty) &velocity_uncertainty,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ExternalGnssUpdate v{};
-        v.gps_tow = gps_tow;
-        v.gps_week = gps_week;
-        v.latitude = latitude;
-        v.longitude = longitude;
-        v.height = height;
-        v.velocity = velocity;
-        v.position_uncertainty = position_uncertainty;
-        v.velocity_uncertainty = velocity_uncertainty;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::filter::ExternalGnssUpdate::gps_tow) &gps_tow,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::gps_week) &gps_week,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::latitude) &latitude,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::longitude) &longitude,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::height) &height,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::velocity) &velocity,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::position_uncertainty) &position_uncertainty,
+          const decltype(::mipcodec::filter::ExternalGnssUpdate::velocity_uncertainty) &velocity_uncertainty,
+          const StartOptions &options = {});
 } // namespace external_gnss_update
 
 /// External heading update
 namespace external_heading_update {
-inline Call
-call(Connection &connection, const decltype(::mipcodec::filter::ExternalHeadingUpdate::heading) &heading,
-     const decltype(::mipcodec::filter::ExternalHeadingUpdate::heading_uncertainty) &heading_uncertainty,
-     const decltype(::mipcodec::filter::ExternalHeadingUpdate::type) &type,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ExternalHeadingUpdate v{};
-        v.heading = heading;
-        v.heading_uncertainty = heading_uncertainty;
-        v.type = type;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::filter::ExternalHeadingUpdate::heading) &heading,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdate::heading_uncertainty) &heading_uncertainty,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdate::type) &type,
+          const StartOptions &options = {});
 } // namespace external_heading_update
 
 /// Heading update control
 namespace heading_update_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::HeadingUpdateControl::source)::value_type &source,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HeadingUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::HeadingUpdateControlResponse> read(Connection &connection,
-                                                                    const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HeadingUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::HeadingUpdateControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HeadingUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HeadingUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HeadingUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::HeadingUpdateControl::source)::value_type &source,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::HeadingUpdateControlResponse> read(Connection &connection,
+                                                             const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace heading_update_control
 
 /// Auto-initialization control
 namespace auto_init_control {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::AutoInitControl::enable)::value_type &enable,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AutoInitControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AutoInitControlResponse> read(Connection &connection,
-                                                               const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AutoInitControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AutoInitControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AutoInitControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AutoInitControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AutoInitControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::AutoInitControl::enable)::value_type &enable,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AutoInitControlResponse> read(Connection &connection,
+                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace auto_init_control
 
 /// Accelerometer noise standard deviation
 namespace accel_noise {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::AccelNoise::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AccelNoiseResponse> read(Connection &connection,
-                                                          const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AccelNoiseResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::AccelNoise::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AccelNoiseResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace accel_noise
 
 /// Gyroscope noise standard deviation
 namespace gyro_noise {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::GyroNoise::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GyroNoiseResponse> read(Connection &connection,
-                                                         const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GyroNoiseResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::GyroNoise::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::GyroNoiseResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gyro_noise
 
 /// Accelerometer bias model parameters
 namespace accel_bias_model {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::AccelBiasModel::beta)::value_type &beta,
-                  const typename decltype(::mipcodec::filter::AccelBiasModel::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.beta = beta;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AccelBiasModelResponse> read(Connection &connection,
-                                                              const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AccelBiasModelResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AccelBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::AccelBiasModel::beta)::value_type &beta,
+           const typename decltype(::mipcodec::filter::AccelBiasModel::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AccelBiasModelResponse> read(Connection &connection,
+                                                       const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace accel_bias_model
 
 /// Gyroscope bias model parameters
 namespace gyro_bias_model {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::GyroBiasModel::beta)::value_type &beta,
-                  const typename decltype(::mipcodec::filter::GyroBiasModel::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.beta = beta;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GyroBiasModelResponse> read(Connection &connection,
-                                                             const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GyroBiasModelResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GyroBiasModel v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::GyroBiasModel::beta)::value_type &beta,
+           const typename decltype(::mipcodec::filter::GyroBiasModel::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::GyroBiasModelResponse> read(Connection &connection,
+                                                      const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gyro_bias_model
 
 /// Zero velocity update (ZUPT) control
 namespace zupt_control {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::ZuptControl::enable)::value_type &enable,
-                  const typename decltype(::mipcodec::filter::ZuptControl::threshold)::value_type &threshold,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZuptControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        v.threshold = threshold;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::ZuptControlResponse> read(Connection &connection,
-                                                           const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZuptControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::ZuptControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZuptControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZuptControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZuptControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::ZuptControl::enable)::value_type &enable,
+           const typename decltype(::mipcodec::filter::ZuptControl::threshold)::value_type &threshold,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::ZuptControlResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace zupt_control
 
 /// External heading update with timestamp
 namespace external_heading_update_with_time {
-inline Call call(Connection &connection,
-                 const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::gps_tow) &gps_tow,
-                 const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::gps_week) &gps_week,
-                 const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::heading) &heading,
-                 const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::heading_uncertainty)
-                     &heading_uncertainty,
-                 const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::type) &type,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ExternalHeadingUpdateWithTime v{};
-        v.gps_tow = gps_tow;
-        v.gps_week = gps_week;
-        v.heading = heading;
-        v.heading_uncertainty = heading_uncertainty;
-        v.type = type;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::gps_tow) &gps_tow,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::gps_week) &gps_week,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::heading) &heading,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::heading_uncertainty)
+              &heading_uncertainty,
+          const decltype(::mipcodec::filter::ExternalHeadingUpdateWithTime::type) &type,
+          const StartOptions &options = {});
 } // namespace external_heading_update_with_time
 
 /// Zero angular rate update control
 namespace zero_angular_rate_update_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::ZeroAngularRateUpdateControl::enable)::value_type &enable,
-      const typename decltype(::mipcodec::filter::ZeroAngularRateUpdateControl::threshold)::value_type
-          &threshold,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZeroAngularRateUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        v.threshold = threshold;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::ZeroAngularRateUpdateControlResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZeroAngularRateUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::ZeroAngularRateUpdateControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZeroAngularRateUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZeroAngularRateUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ZeroAngularRateUpdateControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::ZeroAngularRateUpdateControl::enable)::value_type &enable,
+    const typename decltype(::mipcodec::filter::ZeroAngularRateUpdateControl::threshold)::value_type
+        &threshold,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::ZeroAngularRateUpdateControlResponse> read(Connection &connection,
+                                                                     const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace zero_angular_rate_update_control
 
 /// Tare orientation
 namespace tare_orientation {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::TareOrientation::axes)::value_type &axes,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::TareOrientation v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.axes = axes;
-        return connection.run(v, options);
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::TareOrientation v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::TareOrientation v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::TareOrientation v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::TareOrientation::axes)::value_type &axes,
+           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace tare_orientation
 
 /// Commanded zero velocity update
 namespace commanded_zupt {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::CommandedZupt v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace commanded_zupt
 
 /// Commanded zero angular rate update
 namespace commanded_zero_angular_rate_update {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::CommandedZeroAngularRateUpdate v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace commanded_zero_angular_rate_update
 
 /// Magnetometer capture auto calibration
 namespace mag_capture_auto_calibration {
-inline Call write(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagCaptureAutoCalibration v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        return connection.run(v, options);
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagCaptureAutoCalibration v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
 } // namespace mag_capture_auto_calibration
 
 /// Gravity noise standard deviation
 namespace gravity_noise_std_dev {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::GravityNoiseStdDev::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GravityNoiseStdDevResponse> read(Connection &connection,
-                                                                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GravityNoiseStdDevResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::GravityNoiseStdDev::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::GravityNoiseStdDevResponse> read(Connection &connection,
+                                                           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gravity_noise_std_dev
 
 /// Pressure altitude noise standard deviation
 namespace pressure_altitude_noise_std_dev {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::PressureAltitudeNoiseStdDev::noise)::value_type &noise,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PressureAltitudeNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse> read(Connection &connection,
-                                                                           const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PressureAltitudeNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PressureAltitudeNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PressureAltitudeNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PressureAltitudeNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::PressureAltitudeNoiseStdDev::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::PressureAltitudeNoiseStdDevResponse> read(Connection &connection,
+                                                                    const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace pressure_altitude_noise_std_dev
 
 /// Hard iron offset process noise
 namespace hard_iron_offset_noise {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::HardIronOffsetNoise::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HardIronOffsetNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::HardIronOffsetNoiseResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HardIronOffsetNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::HardIronOffsetNoiseResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HardIronOffsetNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HardIronOffsetNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::HardIronOffsetNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::HardIronOffsetNoise::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::HardIronOffsetNoiseResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace hard_iron_offset_noise
 
 /// Soft iron matrix process noise
 namespace soft_iron_matrix_noise {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::SoftIronMatrixNoise::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SoftIronMatrixNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::SoftIronMatrixNoiseResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SoftIronMatrixNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::SoftIronMatrixNoiseResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SoftIronMatrixNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SoftIronMatrixNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SoftIronMatrixNoise v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::SoftIronMatrixNoise::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::SoftIronMatrixNoiseResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace soft_iron_matrix_noise
 
 /// Magnetometer noise standard deviation
 namespace mag_noise_std_dev {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::filter::MagNoiseStdDev::noise)::value_type &noise,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.noise = noise;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::MagNoiseStdDevResponse> read(Connection &connection,
-                                                              const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::MagNoiseStdDevResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagNoiseStdDev v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::MagNoiseStdDev::noise)::value_type &noise,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::MagNoiseStdDevResponse> read(Connection &connection,
+                                                       const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace mag_noise_std_dev
 
 /// Declination source
 namespace declination_source {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::DeclinationSource::source)::value_type &source,
-      const typename decltype(::mipcodec::filter::DeclinationSource::declination)::value_type &declination,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::DeclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.declination = declination;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::DeclinationSourceResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::DeclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::DeclinationSourceResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::DeclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::DeclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::DeclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::DeclinationSource::source)::value_type &source,
+    const typename decltype(::mipcodec::filter::DeclinationSource::declination)::value_type &declination,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::DeclinationSourceResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace declination_source
 
 /// Gravity magnitude error adaptive measurement
 namespace gravity_magnitude_adaptive_measurement {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::mode)::value_type &mode,
     const typename decltype(::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::frequency)::value_type
@@ -3382,412 +1118,136 @@ inline Call write(
         value_type &high_limit_uncertainty,
     const typename decltype(::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement::minimum_uncertainty)::
         value_type &minimum_uncertainty,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        v.frequency = frequency;
-        v.low_limit = low_limit;
-        v.high_limit = high_limit;
-        v.low_limit_uncertainty = low_limit_uncertainty;
-        v.high_limit_uncertainty = high_limit_uncertainty;
-        v.minimum_uncertainty = minimum_uncertainty;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GravityMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::GravityMagnitudeAdaptiveMeasurementResponse> read(Connection &connection,
+                                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gravity_magnitude_adaptive_measurement
 
 /// Magnetometer magnitude error adaptive measurement
 namespace mag_magnitude_adaptive_measurement {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::mode)::value_type &mode,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::frequency)::value_type
-          &frequency,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::low_limit)::value_type
-          &low_limit,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::high_limit)::value_type
-          &high_limit,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::low_limit_uncertainty)::
-          value_type &low_limit_uncertainty,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::high_limit_uncertainty)::
-          value_type &high_limit_uncertainty,
-      const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::minimum_uncertainty)::
-          value_type &minimum_uncertainty,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        v.frequency = frequency;
-        v.low_limit = low_limit;
-        v.high_limit = high_limit;
-        v.low_limit_uncertainty = low_limit_uncertainty;
-        v.high_limit_uncertainty = high_limit_uncertainty;
-        v.minimum_uncertainty = minimum_uncertainty;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagMagnitudeAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::mode)::value_type &mode,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::frequency)::value_type
+        &frequency,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::low_limit)::value_type
+        &low_limit,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::high_limit)::value_type
+        &high_limit,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::low_limit_uncertainty)::
+        value_type &low_limit_uncertainty,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::high_limit_uncertainty)::
+        value_type &high_limit_uncertainty,
+    const typename decltype(::mipcodec::filter::MagMagnitudeAdaptiveMeasurement::minimum_uncertainty)::
+        value_type &minimum_uncertainty,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::MagMagnitudeAdaptiveMeasurementResponse> read(Connection &connection,
+                                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace mag_magnitude_adaptive_measurement
 
 /// Magnetometer dip angle error adaptive measurement
 namespace mag_dip_angle_adaptive_measurement {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::mode)::value_type &mode,
-      const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::frequency)::value_type
-          &frequency,
-      const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::high_limit)::value_type
-          &high_limit,
-      const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::high_limit_uncertainty)::
-          value_type &high_limit_uncertainty,
-      const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::minimum_uncertainty)::
-          value_type &minimum_uncertainty,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagDipAngleAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        v.frequency = frequency;
-        v.high_limit = high_limit;
-        v.high_limit_uncertainty = high_limit_uncertainty;
-        v.minimum_uncertainty = minimum_uncertainty;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagDipAngleAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagDipAngleAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagDipAngleAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagDipAngleAdaptiveMeasurement v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::mode)::value_type &mode,
+    const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::frequency)::value_type
+        &frequency,
+    const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::high_limit)::value_type
+        &high_limit,
+    const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::high_limit_uncertainty)::
+        value_type &high_limit_uncertainty,
+    const typename decltype(::mipcodec::filter::MagDipAngleAdaptiveMeasurement::minimum_uncertainty)::
+        value_type &minimum_uncertainty,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::MagDipAngleAdaptiveMeasurementResponse> read(Connection &connection,
+                                                                       const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace mag_dip_angle_adaptive_measurement
 
 /// Altitude aiding control
 namespace altitude_aiding_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::AltitudeAidingControl::source)::value_type &source,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AltitudeAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AltitudeAidingControlResponse> read(Connection &connection,
-                                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AltitudeAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AltitudeAidingControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AltitudeAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AltitudeAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AltitudeAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::AltitudeAidingControl::source)::value_type &source,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AltitudeAidingControlResponse> read(Connection &connection,
+                                                              const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace altitude_aiding_control
 
 /// Pitch/roll aiding control
 namespace pitch_roll_aiding_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::PitchRollAidingControl::source)::value_type &source,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PitchRollAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::PitchRollAidingControlResponse> read(Connection &connection,
-                                                                      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PitchRollAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::PitchRollAidingControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PitchRollAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PitchRollAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::PitchRollAidingControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::PitchRollAidingControl::source)::value_type &source,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::PitchRollAidingControlResponse> read(Connection &connection,
+                                                               const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace pitch_roll_aiding_control
 
 /// Inclination source
 namespace inclination_source {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::InclinationSource::source)::value_type &source,
-      const typename decltype(::mipcodec::filter::InclinationSource::inclination)::value_type &inclination,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.inclination = inclination;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::InclinationSourceResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::InclinationSourceResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InclinationSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::InclinationSource::source)::value_type &source,
+    const typename decltype(::mipcodec::filter::InclinationSource::inclination)::value_type &inclination,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::InclinationSourceResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace inclination_source
 
 /// Magnetic field magnitude source
 namespace magnetic_field_magnitude_source {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::MagneticFieldMagnitudeSource::source)::value_type &source,
-      const typename decltype(::mipcodec::filter::MagneticFieldMagnitudeSource::magnitude)::value_type
-          &magnitude,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagneticFieldMagnitudeSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.magnitude = magnitude;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagneticFieldMagnitudeSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagneticFieldMagnitudeSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagneticFieldMagnitudeSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MagneticFieldMagnitudeSource v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::MagneticFieldMagnitudeSource::source)::value_type &source,
+    const typename decltype(::mipcodec::filter::MagneticFieldMagnitudeSource::magnitude)::value_type
+        &magnitude,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::MagneticFieldMagnitudeSourceResponse> read(Connection &connection,
+                                                                     const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace magnetic_field_magnitude_source
 
 /// Aiding measurement control
 namespace aiding_measurement_control {
-inline Call
-write(Connection &connection, const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
-      const typename decltype(::mipcodec::filter::AidingMeasurementControl::enable)::value_type &enable,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AidingMeasurementControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AidingMeasurementControlResponse>
+Call write(Connection &connection,
+           const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
+           const typename decltype(::mipcodec::filter::AidingMeasurementControl::enable)::value_type &enable,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::AidingMeasurementControlResponse>
 read(Connection &connection, const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AidingMeasurementControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.source = source;
-        return reply_of<::mipcodec::filter::AidingMeasurementControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AidingMeasurementControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AidingMeasurementControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AidingMeasurementControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::filter::AidingMeasurementControl::source) &source,
+              const StartOptions &options = {});
 } // namespace aiding_measurement_control
 
 /// Navigation filter initialization
 namespace initialization_configuration {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::filter::InitializationConfiguration::wait_for_run_command)::value_type
         &wait_for_run_command,
@@ -3807,400 +1267,124 @@ inline Call write(
         &initial_velocity,
     const typename decltype(::mipcodec::filter::InitializationConfiguration::reference_frame_selector)::
         value_type &reference_frame_selector,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InitializationConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.wait_for_run_command = wait_for_run_command;
-        v.initial_cond_src = initial_cond_src;
-        v.auto_heading_alignment_selector = auto_heading_alignment_selector;
-        v.initial_heading = initial_heading;
-        v.initial_pitch = initial_pitch;
-        v.initial_roll = initial_roll;
-        v.initial_position = initial_position;
-        v.initial_velocity = initial_velocity;
-        v.reference_frame_selector = reference_frame_selector;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::InitializationConfigurationResponse> read(Connection &connection,
-                                                                           const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InitializationConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::InitializationConfigurationResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InitializationConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InitializationConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::InitializationConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::InitializationConfigurationResponse> read(Connection &connection,
+                                                                    const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace initialization_configuration
 
 /// Adaptive filter control
 namespace adaptive_filter_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::AdaptiveFilterControl::level)::value_type &level,
-      const typename decltype(::mipcodec::filter::AdaptiveFilterControl::time_limit)::value_type &time_limit,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AdaptiveFilterControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.level = level;
-        v.time_limit = time_limit;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::AdaptiveFilterControlResponse> read(Connection &connection,
-                                                                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AdaptiveFilterControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::AdaptiveFilterControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AdaptiveFilterControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AdaptiveFilterControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::AdaptiveFilterControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::AdaptiveFilterControl::level)::value_type &level,
+    const typename decltype(::mipcodec::filter::AdaptiveFilterControl::time_limit)::value_type &time_limit,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::AdaptiveFilterControlResponse> read(Connection &connection,
+                                                              const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace adaptive_filter_control
 
 /// GNSS multi-antenna offset
 namespace multi_antenna_offset {
-inline Call write(Connection &connection,
-                  const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
-                  const typename decltype(::mipcodec::filter::MultiAntennaOffset::antenna_offset)::value_type
-                      &antenna_offset,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MultiAntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.receiver_id = receiver_id;
-        v.antenna_offset = antenna_offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::MultiAntennaOffsetResponse>
+Call write(Connection &connection,
+           const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
+           const typename decltype(::mipcodec::filter::MultiAntennaOffset::antenna_offset)::value_type
+               &antenna_offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::MultiAntennaOffsetResponse>
 read(Connection &connection, const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MultiAntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.receiver_id = receiver_id;
-        return reply_of<::mipcodec::filter::MultiAntennaOffsetResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection,
-                 const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MultiAntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.receiver_id = receiver_id;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection,
-                 const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MultiAntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.receiver_id = receiver_id;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::MultiAntennaOffset v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.receiver_id = receiver_id;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection,
+          const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
+          const StartOptions &options = {});
+Call load(Connection &connection,
+          const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
+          const StartOptions &options = {});
+Call default_(Connection &connection,
+              const decltype(::mipcodec::filter::MultiAntennaOffset::receiver_id) &receiver_id,
+              const StartOptions &options = {});
 } // namespace multi_antenna_offset
 
 /// Relative position configuration
 namespace relative_position_configuration {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::RelativePositionConfiguration::source)::value_type &source,
-      const typename decltype(::mipcodec::filter::RelativePositionConfiguration::reference_frame_selector)::
-          value_type &reference_frame_selector,
-      const typename decltype(::mipcodec::filter::RelativePositionConfiguration::reference_coordinates)::
-          value_type &reference_coordinates,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RelativePositionConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.reference_frame_selector = reference_frame_selector;
-        v.reference_coordinates = reference_coordinates;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::RelativePositionConfigurationResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RelativePositionConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::RelativePositionConfigurationResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RelativePositionConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RelativePositionConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::RelativePositionConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::RelativePositionConfiguration::source)::value_type &source,
+    const typename decltype(::mipcodec::filter::RelativePositionConfiguration::reference_frame_selector)::
+        value_type &reference_frame_selector,
+    const typename decltype(::mipcodec::filter::RelativePositionConfiguration::reference_coordinates)::
+        value_type &reference_coordinates,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::RelativePositionConfigurationResponse> read(Connection &connection,
+                                                                      const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace relative_position_configuration
 
 /// Reference point lever arm
 namespace reference_point_lever_arm {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::ReferencePointLeverArm::ref_point_sel)::value_type
-          &ref_point_sel,
-      const typename decltype(::mipcodec::filter::ReferencePointLeverArm::lever_arm_offset)::value_type
-          &lever_arm_offset,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ReferencePointLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.ref_point_sel = ref_point_sel;
-        v.lever_arm_offset = lever_arm_offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::ReferencePointLeverArmResponse> read(Connection &connection,
-                                                                      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ReferencePointLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::ReferencePointLeverArmResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ReferencePointLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ReferencePointLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::ReferencePointLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::filter::ReferencePointLeverArm::ref_point_sel)::value_type
+               &ref_point_sel,
+           const typename decltype(::mipcodec::filter::ReferencePointLeverArm::lever_arm_offset)::value_type
+               &lever_arm_offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::ReferencePointLeverArmResponse> read(Connection &connection,
+                                                               const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace reference_point_lever_arm
 
 /// Measurement speed lever arm
 namespace speed_lever_arm {
-inline Call write(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
-                  const typename decltype(::mipcodec::filter::SpeedLeverArm::lever_arm_offset)::value_type
-                      &lever_arm_offset,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SpeedLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.source = source;
-        v.lever_arm_offset = lever_arm_offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::SpeedLeverArmResponse>
+Call write(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
+           const typename decltype(::mipcodec::filter::SpeedLeverArm::lever_arm_offset)::value_type
+               &lever_arm_offset,
+           const StartOptions &options = {});
+Reply<::mipcodec::filter::SpeedLeverArmResponse>
 read(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SpeedLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.source = source;
-        return reply_of<::mipcodec::filter::SpeedLeverArmResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SpeedLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SpeedLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::SpeedLeverArm v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.source = source;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::filter::SpeedLeverArm::source) &source,
+              const StartOptions &options = {});
 } // namespace speed_lever_arm
 
 /// Wheeled vehicle constraint control
 namespace wheeled_vehicle_constraint_control {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::filter::WheeledVehicleConstraintControl::enable)::value_type &enable,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::WheeledVehicleConstraintControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::WheeledVehicleConstraintControlResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::WheeledVehicleConstraintControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::WheeledVehicleConstraintControlResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::WheeledVehicleConstraintControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::WheeledVehicleConstraintControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::WheeledVehicleConstraintControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::WheeledVehicleConstraintControlResponse> read(Connection &connection,
+                                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace wheeled_vehicle_constraint_control
 
 /// GNSS antenna offset calibration control
 namespace gnss_antenna_calibration_control {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mipcodec::filter::GnssAntennaCalibrationControl::enable)::value_type &enable,
-      const typename decltype(::mipcodec::filter::GnssAntennaCalibrationControl::max_offset)::value_type
-          &max_offset,
-      const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssAntennaCalibrationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        v.max_offset = max_offset;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::filter::GnssAntennaCalibrationControlResponse>
-read(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssAntennaCalibrationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::filter::GnssAntennaCalibrationControlResponse>(
-            connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssAntennaCalibrationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssAntennaCalibrationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::filter::GnssAntennaCalibrationControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(
+    Connection &connection,
+    const typename decltype(::mipcodec::filter::GnssAntennaCalibrationControl::enable)::value_type &enable,
+    const typename decltype(::mipcodec::filter::GnssAntennaCalibrationControl::max_offset)::value_type
+        &max_offset,
+    const StartOptions &options = {});
+Reply<::mipcodec::filter::GnssAntennaCalibrationControlResponse> read(Connection &connection,
+                                                                      const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gnss_antenna_calibration_control
 } // namespace filter
 
@@ -4209,18 +1393,12 @@ namespace gnss {
 
 /// Receiver info
 namespace receiver_info {
-inline Reply<::mipcodec::gnss::ReceiverInfoResponse> call(Connection &connection,
-                                                          const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::ReceiverInfo v{};
-        return reply_of<::mipcodec::gnss::ReceiverInfoResponse>(connection.run(v, options));
-    }
-}
+Reply<::mipcodec::gnss::ReceiverInfoResponse> call(Connection &connection, const StartOptions &options = {});
 } // namespace receiver_info
 
 /// Signal configuration
 namespace signal_configuration {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::gnss::SignalConfiguration::gps_enable)::value_type &gps_enable,
     const typename decltype(::mipcodec::gnss::SignalConfiguration::glonass_enable)::value_type
@@ -4229,52 +1407,17 @@ inline Call write(
         &galileo_enable,
     const typename decltype(::mipcodec::gnss::SignalConfiguration::beidou_enable)::value_type &beidou_enable,
     const typename decltype(::mipcodec::gnss::SignalConfiguration::reserved)::value_type &reserved,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SignalConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.gps_enable = gps_enable;
-        v.glonass_enable = glonass_enable;
-        v.galileo_enable = galileo_enable;
-        v.beidou_enable = beidou_enable;
-        v.reserved = reserved;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::gnss::SignalConfigurationResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SignalConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::gnss::SignalConfigurationResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SignalConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SignalConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SignalConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::gnss::SignalConfigurationResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace signal_configuration
 
 /// SPARTN configuration
 namespace spartn_configuration {
-inline Call write(
+Call write(
     Connection &connection,
     const typename decltype(::mipcodec::gnss::SpartnConfiguration::enable)::value_type &enable,
     const typename decltype(::mipcodec::gnss::SpartnConfiguration::type)::value_type &type,
@@ -4286,50 +1429,12 @@ inline Call write(
     const typename decltype(::mipcodec::gnss::SpartnConfiguration::next_key_tow)::value_type &next_key_tow,
     const typename decltype(::mipcodec::gnss::SpartnConfiguration::next_key_week)::value_type &next_key_week,
     const typename decltype(::mipcodec::gnss::SpartnConfiguration::next_key)::value_type &next_key,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SpartnConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.enable = enable;
-        v.type = type;
-        v.current_key_tow = current_key_tow;
-        v.current_key_week = current_key_week;
-        v.current_key = current_key;
-        v.next_key_tow = next_key_tow;
-        v.next_key_week = next_key_week;
-        v.next_key = next_key;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::gnss::SpartnConfigurationResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SpartnConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::gnss::SpartnConfigurationResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SpartnConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SpartnConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::gnss::SpartnConfiguration v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+    const StartOptions &options = {});
+Reply<::mipcodec::gnss::SpartnConfigurationResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace spartn_configuration
 } // namespace gnss
 
@@ -4338,291 +1443,126 @@ namespace aiding {
 
 /// Frame configuration
 namespace frame_config {
-inline Call write(
+Call write(
     Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
     const typename decltype(::mipcodec::aiding::FrameConfig::format)::value_type &format,
     const typename decltype(::mipcodec::aiding::FrameConfig::tracking_enabled)::value_type &tracking_enabled,
     const typename decltype(::mipcodec::aiding::FrameConfig::translation)::value_type &translation,
     const typename decltype(::mipcodec::aiding::FrameConfig::rotation)::value_type &rotation,
-    const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::FrameConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.frame_id = frame_id;
-        v.format = format;
-        v.tracking_enabled = tracking_enabled;
-        v.translation = translation;
-        v.rotation = rotation;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::aiding::FrameConfigResponse>
+    const StartOptions &options = {});
+Reply<::mipcodec::aiding::FrameConfigResponse>
 read(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
      const typename decltype(::mipcodec::aiding::FrameConfig::format)::value_type &format,
-     const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::FrameConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        v.frame_id = frame_id;
-        v.format = format;
-        return reply_of<::mipcodec::aiding::FrameConfigResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::FrameConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        v.frame_id = frame_id;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::FrameConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        v.frame_id = frame_id;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection,
-                     const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
-                     const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::FrameConfig v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        v.frame_id = frame_id;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
+          const StartOptions &options = {});
+Call load(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
+          const StartOptions &options = {});
+Call default_(Connection &connection, const decltype(::mipcodec::aiding::FrameConfig::frame_id) &frame_id,
+              const StartOptions &options = {});
 } // namespace frame_config
 
 /// Echo control
 namespace echo_control {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::aiding::EchoControl::mode)::value_type &mode,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EchoControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::aiding::EchoControlResponse> read(Connection &connection,
-                                                           const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EchoControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::aiding::EchoControlResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EchoControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EchoControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EchoControl v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::aiding::EchoControl::mode)::value_type &mode,
+           const StartOptions &options = {});
+Reply<::mipcodec::aiding::EchoControlResponse> read(Connection &connection, const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace echo_control
 
 /// ECEF position
 namespace ecef_position {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::EcefPosition::time) &time,
-                 const decltype(::mipcodec::aiding::EcefPosition::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::EcefPosition::position) &position,
-                 const decltype(::mipcodec::aiding::EcefPosition::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::EcefPosition::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EcefPosition v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.position = position;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::EcefPosition::time) &time,
+          const decltype(::mipcodec::aiding::EcefPosition::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::EcefPosition::position) &position,
+          const decltype(::mipcodec::aiding::EcefPosition::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::EcefPosition::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace ecef_position
 
 /// LLH position
 namespace llh_position {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::LlhPosition::time) &time,
-                 const decltype(::mipcodec::aiding::LlhPosition::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::LlhPosition::latitude) &latitude,
-                 const decltype(::mipcodec::aiding::LlhPosition::longitude) &longitude,
-                 const decltype(::mipcodec::aiding::LlhPosition::height) &height,
-                 const decltype(::mipcodec::aiding::LlhPosition::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::LlhPosition::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::LlhPosition v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.latitude = latitude;
-        v.longitude = longitude;
-        v.height = height;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::LlhPosition::time) &time,
+          const decltype(::mipcodec::aiding::LlhPosition::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::LlhPosition::latitude) &latitude,
+          const decltype(::mipcodec::aiding::LlhPosition::longitude) &longitude,
+          const decltype(::mipcodec::aiding::LlhPosition::height) &height,
+          const decltype(::mipcodec::aiding::LlhPosition::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::LlhPosition::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace llh_position
 
 /// Height above ellipsoid
 namespace height_above_ellipsoid {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::HeightAboveEllipsoid::time) &time,
-                 const decltype(::mipcodec::aiding::HeightAboveEllipsoid::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::HeightAboveEllipsoid::height) &height,
-                 const decltype(::mipcodec::aiding::HeightAboveEllipsoid::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::HeightAboveEllipsoid::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::HeightAboveEllipsoid v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.height = height;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::HeightAboveEllipsoid::time) &time,
+          const decltype(::mipcodec::aiding::HeightAboveEllipsoid::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::HeightAboveEllipsoid::height) &height,
+          const decltype(::mipcodec::aiding::HeightAboveEllipsoid::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::HeightAboveEllipsoid::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace height_above_ellipsoid
 
 /// ECEF velocity
 namespace ecef_velocity {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::EcefVelocity::time) &time,
-                 const decltype(::mipcodec::aiding::EcefVelocity::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::EcefVelocity::velocity) &velocity,
-                 const decltype(::mipcodec::aiding::EcefVelocity::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::EcefVelocity::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::EcefVelocity v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.velocity = velocity;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::EcefVelocity::time) &time,
+          const decltype(::mipcodec::aiding::EcefVelocity::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::EcefVelocity::velocity) &velocity,
+          const decltype(::mipcodec::aiding::EcefVelocity::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::EcefVelocity::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace ecef_velocity
 
 /// NED velocity
 namespace ned_velocity {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::NedVelocity::time) &time,
-                 const decltype(::mipcodec::aiding::NedVelocity::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::NedVelocity::velocity) &velocity,
-                 const decltype(::mipcodec::aiding::NedVelocity::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::NedVelocity::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::NedVelocity v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.velocity = velocity;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::NedVelocity::time) &time,
+          const decltype(::mipcodec::aiding::NedVelocity::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::NedVelocity::velocity) &velocity,
+          const decltype(::mipcodec::aiding::NedVelocity::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::NedVelocity::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace ned_velocity
 
 /// Body frame velocity
 namespace body_frame_velocity {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::BodyFrameVelocity::time) &time,
-                 const decltype(::mipcodec::aiding::BodyFrameVelocity::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::BodyFrameVelocity::velocity) &velocity,
-                 const decltype(::mipcodec::aiding::BodyFrameVelocity::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::BodyFrameVelocity::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::BodyFrameVelocity v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.velocity = velocity;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::BodyFrameVelocity::time) &time,
+          const decltype(::mipcodec::aiding::BodyFrameVelocity::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::BodyFrameVelocity::velocity) &velocity,
+          const decltype(::mipcodec::aiding::BodyFrameVelocity::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::BodyFrameVelocity::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace body_frame_velocity
 
 /// True heading
 namespace true_heading {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::TrueHeading::time) &time,
-                 const decltype(::mipcodec::aiding::TrueHeading::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::TrueHeading::heading) &heading,
-                 const decltype(::mipcodec::aiding::TrueHeading::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::TrueHeading::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::TrueHeading v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.heading = heading;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::TrueHeading::time) &time,
+          const decltype(::mipcodec::aiding::TrueHeading::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::TrueHeading::heading) &heading,
+          const decltype(::mipcodec::aiding::TrueHeading::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::TrueHeading::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace true_heading
 
 /// Magnetic field
 namespace magnetic_field {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::MagneticField::time) &time,
-                 const decltype(::mipcodec::aiding::MagneticField::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::MagneticField::magnetic_field) &magnetic_field,
-                 const decltype(::mipcodec::aiding::MagneticField::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::MagneticField::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::MagneticField v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.magnetic_field = magnetic_field;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::MagneticField::time) &time,
+          const decltype(::mipcodec::aiding::MagneticField::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::MagneticField::magnetic_field) &magnetic_field,
+          const decltype(::mipcodec::aiding::MagneticField::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::MagneticField::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace magnetic_field
 
 /// Pressure
 namespace pressure {
-inline Call call(Connection &connection, const decltype(::mipcodec::aiding::Pressure::time) &time,
-                 const decltype(::mipcodec::aiding::Pressure::frame_id) &frame_id,
-                 const decltype(::mipcodec::aiding::Pressure::pressure) &pressure,
-                 const decltype(::mipcodec::aiding::Pressure::uncertainty) &uncertainty,
-                 const decltype(::mipcodec::aiding::Pressure::valid_flags) &valid_flags,
-                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::aiding::Pressure v{};
-        v.time = time;
-        v.frame_id = frame_id;
-        v.pressure = pressure;
-        v.uncertainty = uncertainty;
-        v.valid_flags = valid_flags;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mipcodec::aiding::Pressure::time) &time,
+          const decltype(::mipcodec::aiding::Pressure::frame_id) &frame_id,
+          const decltype(::mipcodec::aiding::Pressure::pressure) &pressure,
+          const decltype(::mipcodec::aiding::Pressure::uncertainty) &uncertainty,
+          const decltype(::mipcodec::aiding::Pressure::valid_flags) &valid_flags,
+          const StartOptions &options = {});
 } // namespace pressure
 } // namespace aiding
 
@@ -4631,45 +1571,14 @@ namespace system {
 
 /// Communication mode
 namespace communication_mode {
-inline Call write(Connection &connection,
-                  const typename decltype(::mipcodec::system::CommunicationMode::mode)::value_type &mode,
-                  const StartOptions &options = {}) {
-    {
-        ::mipcodec::system::CommunicationMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::write;
-        v.mode = mode;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mipcodec::system::CommunicationModeResponse> read(Connection &connection,
-                                                                 const StartOptions &options = {}) {
-    {
-        ::mipcodec::system::CommunicationMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::read;
-        return reply_of<::mipcodec::system::CommunicationModeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::system::CommunicationMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::system::CommunicationMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mipcodec::system::CommunicationMode v{};
-        v.function = ::mipcodec::types::FunctionSelector::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mipcodec::system::CommunicationMode::mode)::value_type &mode,
+           const StartOptions &options = {});
+Reply<::mipcodec::system::CommunicationModeResponse> read(Connection &connection,
+                                                          const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace communication_mode
 } // namespace system
 

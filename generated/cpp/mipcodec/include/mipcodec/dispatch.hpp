@@ -110,4 +110,10 @@ MIPCODEC_INLINE void decode_field(std::uint8_t set, std::uint8_t descriptor, con
     }
 }
 
+/// Whether the data of field (set, descriptor) decodes (with the device's layout when chosen): false
+/// with the error decode_field would give visitor.raw. One instance of the dispatch, compiled into
+/// the library (src/dispatch.cpp), for callers that need no value (the session's reply check).
+bool decodes_field(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data, std::size_t size,
+                   const std::optional<Device> &device, DecodeError &err);
+
 } // namespace mipcodec

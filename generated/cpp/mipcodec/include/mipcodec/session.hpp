@@ -639,17 +639,6 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         return any;
     }
 
-    /// Whether a reply entry decodes (with the session's device), and its error when not.
-    struct ReplyCheck {
-        bool raw_seen = false;
-        DecodeError err;
-        template <class T> void field(const T &) {}
-        void raw(const DecodeError &e) {
-            err = e;
-            raw_seen = true;
-        }
-    };
-
     void complete(const Slot &slot, const PacketView &packet, std::int64_t code, std::size_t begin,
                   std::size_t end) {
         begin_result(slot, Status::ack);
@@ -674,11 +663,12 @@ template <std::size_t N = kDefaultMaxPending> class Session {
                 result_.error = f.text();
                 return;
             }
-            ReplyCheck check;
-            decode_field(packet.set(), f.descriptor, f.data, f.size, opt_.device, check);
-            if (check.raw_seen) {
+            // Whether the reply entry decodes (with the session's device): the library's one
+            // instance of the dispatch (dispatch.hpp decodes_field), not one per program.
+            DecodeError check;
+            if (!decodes_field(packet.set(), f.descriptor, f.data, f.size, opt_.device, check)) {
                 bad = true;
-                result_.error = check.err.text();
+                result_.error = check.text();
                 return;
             }
             for (std::size_t k = 0; k < slot.expect_count; ++k) {

@@ -5,7 +5,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <variant>
 
@@ -25,63 +24,10 @@ enum class AckCode : std::uint8_t {
 };
 
 /// Spec name of a value ("ok"), or nullptr when the value has no name.
-inline const char *to_string(AckCode v) {
-    if (v == AckCode::ok) {
-        return "ok";
-    }
-    if (v == AckCode::unknown_command) {
-        return "unknown_command";
-    }
-    if (v == AckCode::bad_checksum) {
-        return "bad_checksum";
-    }
-    if (v == AckCode::invalid_parameter) {
-        return "invalid_parameter";
-    }
-    if (v == AckCode::command_failed) {
-        return "command_failed";
-    }
-    if (v == AckCode::command_timeout) {
-        return "command_timeout";
-    }
-    if (v == AckCode::unknown_descriptor_set) {
-        return "unknown_descriptor_set";
-    }
-    return nullptr;
-}
+const char *to_string(AckCode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AckCode &out) {
-    if (std::strcmp(name, "ok") == 0) {
-        out = AckCode::ok;
-        return true;
-    }
-    if (std::strcmp(name, "unknown_command") == 0) {
-        out = AckCode::unknown_command;
-        return true;
-    }
-    if (std::strcmp(name, "bad_checksum") == 0) {
-        out = AckCode::bad_checksum;
-        return true;
-    }
-    if (std::strcmp(name, "invalid_parameter") == 0) {
-        out = AckCode::invalid_parameter;
-        return true;
-    }
-    if (std::strcmp(name, "command_failed") == 0) {
-        out = AckCode::command_failed;
-        return true;
-    }
-    if (std::strcmp(name, "command_timeout") == 0) {
-        out = AckCode::command_timeout;
-        return true;
-    }
-    if (std::strcmp(name, "unknown_descriptor_set") == 0) {
-        out = AckCode::unknown_descriptor_set;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AckCode &out);
 
 /// GPIO action mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ActionGpioMode : std::uint8_t {
@@ -94,56 +40,10 @@ enum class ActionGpioMode : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(ActionGpioMode v) {
-    if (v == ActionGpioMode::disabled) {
-        return "disabled";
-    }
-    if (v == ActionGpioMode::active_high) {
-        return "active_high";
-    }
-    if (v == ActionGpioMode::active_low) {
-        return "active_low";
-    }
-    if (v == ActionGpioMode::oneshot_high) {
-        return "oneshot_high";
-    }
-    if (v == ActionGpioMode::oneshot_low) {
-        return "oneshot_low";
-    }
-    if (v == ActionGpioMode::toggle) {
-        return "toggle";
-    }
-    return nullptr;
-}
+const char *to_string(ActionGpioMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ActionGpioMode &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = ActionGpioMode::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "active_high") == 0) {
-        out = ActionGpioMode::active_high;
-        return true;
-    }
-    if (std::strcmp(name, "active_low") == 0) {
-        out = ActionGpioMode::active_low;
-        return true;
-    }
-    if (std::strcmp(name, "oneshot_high") == 0) {
-        out = ActionGpioMode::oneshot_high;
-        return true;
-    }
-    if (std::strcmp(name, "oneshot_low") == 0) {
-        out = ActionGpioMode::oneshot_low;
-        return true;
-    }
-    if (std::strcmp(name, "toggle") == 0) {
-        out = ActionGpioMode::toggle;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ActionGpioMode &out);
 
 /// Event action type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ActionType : std::uint8_t {
@@ -153,35 +53,10 @@ enum class ActionType : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(ActionType v) {
-    if (v == ActionType::none) {
-        return "none";
-    }
-    if (v == ActionType::gpio) {
-        return "gpio";
-    }
-    if (v == ActionType::message) {
-        return "message";
-    }
-    return nullptr;
-}
+const char *to_string(ActionType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ActionType &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = ActionType::none;
-        return true;
-    }
-    if (std::strcmp(name, "gpio") == 0) {
-        out = ActionType::gpio;
-        return true;
-    }
-    if (std::strcmp(name, "message") == 0) {
-        out = ActionType::message;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ActionType &out);
 
 /// Auto-adaptive filter operating level. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AdaptiveFilterLevel : std::uint8_t {
@@ -192,42 +67,10 @@ enum class AdaptiveFilterLevel : std::uint8_t {
 };
 
 /// Spec name of a value ("off"), or nullptr when the value has no name.
-inline const char *to_string(AdaptiveFilterLevel v) {
-    if (v == AdaptiveFilterLevel::off) {
-        return "off";
-    }
-    if (v == AdaptiveFilterLevel::conservative) {
-        return "conservative";
-    }
-    if (v == AdaptiveFilterLevel::moderate) {
-        return "moderate";
-    }
-    if (v == AdaptiveFilterLevel::aggressive) {
-        return "aggressive";
-    }
-    return nullptr;
-}
+const char *to_string(AdaptiveFilterLevel v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AdaptiveFilterLevel &out) {
-    if (std::strcmp(name, "off") == 0) {
-        out = AdaptiveFilterLevel::off;
-        return true;
-    }
-    if (std::strcmp(name, "conservative") == 0) {
-        out = AdaptiveFilterLevel::conservative;
-        return true;
-    }
-    if (std::strcmp(name, "moderate") == 0) {
-        out = AdaptiveFilterLevel::moderate;
-        return true;
-    }
-    if (std::strcmp(name, "aggressive") == 0) {
-        out = AdaptiveFilterLevel::aggressive;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AdaptiveFilterLevel &out);
 
 /// Adaptive measurement mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AdaptiveMeasurementMode : std::uint8_t {
@@ -237,35 +80,10 @@ enum class AdaptiveMeasurementMode : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(AdaptiveMeasurementMode v) {
-    if (v == AdaptiveMeasurementMode::disabled) {
-        return "disabled";
-    }
-    if (v == AdaptiveMeasurementMode::fixed) {
-        return "fixed";
-    }
-    if (v == AdaptiveMeasurementMode::auto_) {
-        return "auto";
-    }
-    return nullptr;
-}
+const char *to_string(AdaptiveMeasurementMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AdaptiveMeasurementMode &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = AdaptiveMeasurementMode::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "fixed") == 0) {
-        out = AdaptiveMeasurementMode::fixed;
-        return true;
-    }
-    if (std::strcmp(name, "auto") == 0) {
-        out = AdaptiveMeasurementMode::auto_;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AdaptiveMeasurementMode &out);
 
 /// Aiding command echo mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AidingEchoMode : std::uint8_t {
@@ -275,35 +93,10 @@ enum class AidingEchoMode : std::uint8_t {
 };
 
 /// Spec name of a value ("suppress_ack"), or nullptr when the value has no name.
-inline const char *to_string(AidingEchoMode v) {
-    if (v == AidingEchoMode::suppress_ack) {
-        return "suppress_ack";
-    }
-    if (v == AidingEchoMode::standard) {
-        return "standard";
-    }
-    if (v == AidingEchoMode::response) {
-        return "response";
-    }
-    return nullptr;
-}
+const char *to_string(AidingEchoMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AidingEchoMode &out) {
-    if (std::strcmp(name, "suppress_ack") == 0) {
-        out = AidingEchoMode::suppress_ack;
-        return true;
-    }
-    if (std::strcmp(name, "standard") == 0) {
-        out = AidingEchoMode::standard;
-        return true;
-    }
-    if (std::strcmp(name, "response") == 0) {
-        out = AidingEchoMode::response;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AidingEchoMode &out);
 
 /// Aiding frame rotation format. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AidingFrameFormat : std::uint8_t {
@@ -312,28 +105,10 @@ enum class AidingFrameFormat : std::uint8_t {
 };
 
 /// Spec name of a value ("euler"), or nullptr when the value has no name.
-inline const char *to_string(AidingFrameFormat v) {
-    if (v == AidingFrameFormat::euler) {
-        return "euler";
-    }
-    if (v == AidingFrameFormat::quaternion) {
-        return "quaternion";
-    }
-    return nullptr;
-}
+const char *to_string(AidingFrameFormat v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AidingFrameFormat &out) {
-    if (std::strcmp(name, "euler") == 0) {
-        out = AidingFrameFormat::euler;
-        return true;
-    }
-    if (std::strcmp(name, "quaternion") == 0) {
-        out = AidingFrameFormat::quaternion;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AidingFrameFormat &out);
 
 /// LLH position aiding valid flags. Reserved and unnamed bits are kept in raw().
 class AidingLlhValidFlags {
@@ -397,84 +172,10 @@ enum class AidingMeasurementSource : std::uint16_t {
 };
 
 /// Spec name of a value ("gnss_pos_vel"), or nullptr when the value has no name.
-inline const char *to_string(AidingMeasurementSource v) {
-    if (v == AidingMeasurementSource::gnss_pos_vel) {
-        return "gnss_pos_vel";
-    }
-    if (v == AidingMeasurementSource::gnss_heading) {
-        return "gnss_heading";
-    }
-    if (v == AidingMeasurementSource::altimeter) {
-        return "altimeter";
-    }
-    if (v == AidingMeasurementSource::speed) {
-        return "speed";
-    }
-    if (v == AidingMeasurementSource::magnetometer) {
-        return "magnetometer";
-    }
-    if (v == AidingMeasurementSource::external_heading) {
-        return "external_heading";
-    }
-    if (v == AidingMeasurementSource::external_altimeter) {
-        return "external_altimeter";
-    }
-    if (v == AidingMeasurementSource::external_magnetometer) {
-        return "external_magnetometer";
-    }
-    if (v == AidingMeasurementSource::body_frame_vel) {
-        return "body_frame_vel";
-    }
-    if (v == AidingMeasurementSource::all) {
-        return "all";
-    }
-    return nullptr;
-}
+const char *to_string(AidingMeasurementSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AidingMeasurementSource &out) {
-    if (std::strcmp(name, "gnss_pos_vel") == 0) {
-        out = AidingMeasurementSource::gnss_pos_vel;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_heading") == 0) {
-        out = AidingMeasurementSource::gnss_heading;
-        return true;
-    }
-    if (std::strcmp(name, "altimeter") == 0) {
-        out = AidingMeasurementSource::altimeter;
-        return true;
-    }
-    if (std::strcmp(name, "speed") == 0) {
-        out = AidingMeasurementSource::speed;
-        return true;
-    }
-    if (std::strcmp(name, "magnetometer") == 0) {
-        out = AidingMeasurementSource::magnetometer;
-        return true;
-    }
-    if (std::strcmp(name, "external_heading") == 0) {
-        out = AidingMeasurementSource::external_heading;
-        return true;
-    }
-    if (std::strcmp(name, "external_altimeter") == 0) {
-        out = AidingMeasurementSource::external_altimeter;
-        return true;
-    }
-    if (std::strcmp(name, "external_magnetometer") == 0) {
-        out = AidingMeasurementSource::external_magnetometer;
-        return true;
-    }
-    if (std::strcmp(name, "body_frame_vel") == 0) {
-        out = AidingMeasurementSource::body_frame_vel;
-        return true;
-    }
-    if (std::strcmp(name, "all") == 0) {
-        out = AidingMeasurementSource::all;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AidingMeasurementSource &out);
 
 /// Aiding measurement timebase. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AidingTimebase : std::uint8_t {
@@ -484,35 +185,10 @@ enum class AidingTimebase : std::uint8_t {
 };
 
 /// Spec name of a value ("internal_reference"), or nullptr when the value has no name.
-inline const char *to_string(AidingTimebase v) {
-    if (v == AidingTimebase::internal_reference) {
-        return "internal_reference";
-    }
-    if (v == AidingTimebase::external_time) {
-        return "external_time";
-    }
-    if (v == AidingTimebase::time_of_arrival) {
-        return "time_of_arrival";
-    }
-    return nullptr;
-}
+const char *to_string(AidingTimebase v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AidingTimebase &out) {
-    if (std::strcmp(name, "internal_reference") == 0) {
-        out = AidingTimebase::internal_reference;
-        return true;
-    }
-    if (std::strcmp(name, "external_time") == 0) {
-        out = AidingTimebase::external_time;
-        return true;
-    }
-    if (std::strcmp(name, "time_of_arrival") == 0) {
-        out = AidingTimebase::time_of_arrival;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AidingTimebase &out);
 
 /// Aiding vector valid flags. Reserved and unnamed bits are kept in raw().
 class AidingVectorValidFlags {
@@ -568,28 +244,10 @@ enum class AltitudeAidingSource : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(AltitudeAidingSource v) {
-    if (v == AltitudeAidingSource::none) {
-        return "none";
-    }
-    if (v == AltitudeAidingSource::pressure) {
-        return "pressure";
-    }
-    return nullptr;
-}
+const char *to_string(AltitudeAidingSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AltitudeAidingSource &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = AltitudeAidingSource::none;
-        return true;
-    }
-    if (std::strcmp(name, "pressure") == 0) {
-        out = AltitudeAidingSource::pressure;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AltitudeAidingSource &out);
 
 /// Assisted fix option. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class AssistedFixOption : std::uint8_t {
@@ -598,28 +256,10 @@ enum class AssistedFixOption : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(AssistedFixOption v) {
-    if (v == AssistedFixOption::none) {
-        return "none";
-    }
-    if (v == AssistedFixOption::enabled) {
-        return "enabled";
-    }
-    return nullptr;
-}
+const char *to_string(AssistedFixOption v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AssistedFixOption &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = AssistedFixOption::none;
-        return true;
-    }
-    if (std::strcmp(name, "enabled") == 0) {
-        out = AssistedFixOption::enabled;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AssistedFixOption &out);
 
 /// GNSS constellation option flags. Reserved and unnamed bits are kept in raw().
 class ConstellationOptions {
@@ -1646,28 +1286,10 @@ enum class DeviceStatusSelector : std::uint8_t {
 };
 
 /// Spec name of a value ("basic"), or nullptr when the value has no name.
-inline const char *to_string(DeviceStatusSelector v) {
-    if (v == DeviceStatusSelector::basic) {
-        return "basic";
-    }
-    if (v == DeviceStatusSelector::diagnostic) {
-        return "diagnostic";
-    }
-    return nullptr;
-}
+const char *to_string(DeviceStatusSelector v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, DeviceStatusSelector &out) {
-    if (std::strcmp(name, "basic") == 0) {
-        out = DeviceStatusSelector::basic;
-        return true;
-    }
-    if (std::strcmp(name, "diagnostic") == 0) {
-        out = DeviceStatusSelector::diagnostic;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, DeviceStatusSelector &out);
 
 /// Estimation control flags. Reserved and unnamed bits are kept in raw().
 class EstimationControlFlags {
@@ -1772,42 +1394,10 @@ enum class EventControlMode : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(EventControlMode v) {
-    if (v == EventControlMode::disabled) {
-        return "disabled";
-    }
-    if (v == EventControlMode::enabled) {
-        return "enabled";
-    }
-    if (v == EventControlMode::test) {
-        return "test";
-    }
-    if (v == EventControlMode::test_pulse) {
-        return "test_pulse";
-    }
-    return nullptr;
-}
+const char *to_string(EventControlMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, EventControlMode &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = EventControlMode::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "enabled") == 0) {
-        out = EventControlMode::enabled;
-        return true;
-    }
-    if (std::strcmp(name, "test") == 0) {
-        out = EventControlMode::test;
-        return true;
-    }
-    if (std::strcmp(name, "test_pulse") == 0) {
-        out = EventControlMode::test_pulse;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, EventControlMode &out);
 
 /// External heading type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ExternalHeadingType : std::uint8_t {
@@ -1816,28 +1406,10 @@ enum class ExternalHeadingType : std::uint8_t {
 };
 
 /// Spec name of a value ("true_heading"), or nullptr when the value has no name.
-inline const char *to_string(ExternalHeadingType v) {
-    if (v == ExternalHeadingType::true_heading) {
-        return "true_heading";
-    }
-    if (v == ExternalHeadingType::magnetic_heading) {
-        return "magnetic_heading";
-    }
-    return nullptr;
-}
+const char *to_string(ExternalHeadingType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ExternalHeadingType &out) {
-    if (std::strcmp(name, "true_heading") == 0) {
-        out = ExternalHeadingType::true_heading;
-        return true;
-    }
-    if (std::strcmp(name, "magnetic_heading") == 0) {
-        out = ExternalHeadingType::magnetic_heading;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ExternalHeadingType &out);
 
 /// External time delta valid flags. Reserved and unnamed bits are kept in raw().
 class ExternalTimeDeltaValidFlags {
@@ -1930,35 +1502,10 @@ enum class FactoryStreamingAction : std::uint8_t {
 };
 
 /// Spec name of a value ("overwrite"), or nullptr when the value has no name.
-inline const char *to_string(FactoryStreamingAction v) {
-    if (v == FactoryStreamingAction::overwrite) {
-        return "overwrite";
-    }
-    if (v == FactoryStreamingAction::merge) {
-        return "merge";
-    }
-    if (v == FactoryStreamingAction::add) {
-        return "add";
-    }
-    return nullptr;
-}
+const char *to_string(FactoryStreamingAction v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FactoryStreamingAction &out) {
-    if (std::strcmp(name, "overwrite") == 0) {
-        out = FactoryStreamingAction::overwrite;
-        return true;
-    }
-    if (std::strcmp(name, "merge") == 0) {
-        out = FactoryStreamingAction::merge;
-        return true;
-    }
-    if (std::strcmp(name, "add") == 0) {
-        out = FactoryStreamingAction::add;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FactoryStreamingAction &out);
 
 /// Aiding measurement indicator. Reserved and unnamed bits are kept in raw().
 class FilterAidingMeasurementIndicator {
@@ -2055,119 +1602,10 @@ enum class FilterAidingMeasurementType : std::uint8_t {
 };
 
 /// Spec name of a value ("gnss"), or nullptr when the value has no name.
-inline const char *to_string(FilterAidingMeasurementType v) {
-    if (v == FilterAidingMeasurementType::gnss) {
-        return "gnss";
-    }
-    if (v == FilterAidingMeasurementType::dual_antenna) {
-        return "dual_antenna";
-    }
-    if (v == FilterAidingMeasurementType::heading) {
-        return "heading";
-    }
-    if (v == FilterAidingMeasurementType::pressure) {
-        return "pressure";
-    }
-    if (v == FilterAidingMeasurementType::magnetometer) {
-        return "magnetometer";
-    }
-    if (v == FilterAidingMeasurementType::speed) {
-        return "speed";
-    }
-    if (v == FilterAidingMeasurementType::aiding_pos_ecef) {
-        return "aiding_pos_ecef";
-    }
-    if (v == FilterAidingMeasurementType::aiding_pos_llh) {
-        return "aiding_pos_llh";
-    }
-    if (v == FilterAidingMeasurementType::aiding_height_above_ellipsoid) {
-        return "aiding_height_above_ellipsoid";
-    }
-    if (v == FilterAidingMeasurementType::aiding_vel_ecef) {
-        return "aiding_vel_ecef";
-    }
-    if (v == FilterAidingMeasurementType::aiding_vel_ned) {
-        return "aiding_vel_ned";
-    }
-    if (v == FilterAidingMeasurementType::aiding_vel_body_frame) {
-        return "aiding_vel_body_frame";
-    }
-    if (v == FilterAidingMeasurementType::aiding_heading_true) {
-        return "aiding_heading_true";
-    }
-    if (v == FilterAidingMeasurementType::aiding_magnetic_field) {
-        return "aiding_magnetic_field";
-    }
-    if (v == FilterAidingMeasurementType::aiding_pressure) {
-        return "aiding_pressure";
-    }
-    return nullptr;
-}
+const char *to_string(FilterAidingMeasurementType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterAidingMeasurementType &out) {
-    if (std::strcmp(name, "gnss") == 0) {
-        out = FilterAidingMeasurementType::gnss;
-        return true;
-    }
-    if (std::strcmp(name, "dual_antenna") == 0) {
-        out = FilterAidingMeasurementType::dual_antenna;
-        return true;
-    }
-    if (std::strcmp(name, "heading") == 0) {
-        out = FilterAidingMeasurementType::heading;
-        return true;
-    }
-    if (std::strcmp(name, "pressure") == 0) {
-        out = FilterAidingMeasurementType::pressure;
-        return true;
-    }
-    if (std::strcmp(name, "magnetometer") == 0) {
-        out = FilterAidingMeasurementType::magnetometer;
-        return true;
-    }
-    if (std::strcmp(name, "speed") == 0) {
-        out = FilterAidingMeasurementType::speed;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_pos_ecef") == 0) {
-        out = FilterAidingMeasurementType::aiding_pos_ecef;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_pos_llh") == 0) {
-        out = FilterAidingMeasurementType::aiding_pos_llh;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_height_above_ellipsoid") == 0) {
-        out = FilterAidingMeasurementType::aiding_height_above_ellipsoid;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_vel_ecef") == 0) {
-        out = FilterAidingMeasurementType::aiding_vel_ecef;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_vel_ned") == 0) {
-        out = FilterAidingMeasurementType::aiding_vel_ned;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_vel_body_frame") == 0) {
-        out = FilterAidingMeasurementType::aiding_vel_body_frame;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_heading_true") == 0) {
-        out = FilterAidingMeasurementType::aiding_heading_true;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_magnetic_field") == 0) {
-        out = FilterAidingMeasurementType::aiding_magnetic_field;
-        return true;
-    }
-    if (std::strcmp(name, "aiding_pressure") == 0) {
-        out = FilterAidingMeasurementType::aiding_pressure;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterAidingMeasurementType &out);
 
 /// Dual-antenna fix type. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FilterDualAntennaFixType : std::uint8_t {
@@ -2177,35 +1615,10 @@ enum class FilterDualAntennaFixType : std::uint8_t {
 };
 
 /// Spec name of a value ("fix_none"), or nullptr when the value has no name.
-inline const char *to_string(FilterDualAntennaFixType v) {
-    if (v == FilterDualAntennaFixType::fix_none) {
-        return "fix_none";
-    }
-    if (v == FilterDualAntennaFixType::fix_da_float) {
-        return "fix_da_float";
-    }
-    if (v == FilterDualAntennaFixType::fix_da_fixed) {
-        return "fix_da_fixed";
-    }
-    return nullptr;
-}
+const char *to_string(FilterDualAntennaFixType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterDualAntennaFixType &out) {
-    if (std::strcmp(name, "fix_none") == 0) {
-        out = FilterDualAntennaFixType::fix_none;
-        return true;
-    }
-    if (std::strcmp(name, "fix_da_float") == 0) {
-        out = FilterDualAntennaFixType::fix_da_float;
-        return true;
-    }
-    if (std::strcmp(name, "fix_da_fixed") == 0) {
-        out = FilterDualAntennaFixType::fix_da_fixed;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterDualAntennaFixType &out);
 
 /// Dual-antenna status flags. Reserved and unnamed bits are kept in raw().
 class FilterDualAntennaStatusFlags {
@@ -2263,21 +1676,10 @@ enum class FilterDynamicsModeCv7 : std::uint16_t {
 };
 
 /// Spec name of a value ("default"), or nullptr when the value has no name.
-inline const char *to_string(FilterDynamicsModeCv7 v) {
-    if (v == FilterDynamicsModeCv7::default_) {
-        return "default";
-    }
-    return nullptr;
-}
+const char *to_string(FilterDynamicsModeCv7 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterDynamicsModeCv7 &out) {
-    if (std::strcmp(name, "default") == 0) {
-        out = FilterDynamicsModeCv7::default_;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterDynamicsModeCv7 &out);
 
 /// Filter dynamics mode (3DM-GX5-45). Unknown values are kept (an enum class holds any std::uint16_t).
 enum class FilterDynamicsModeGx5 : std::uint16_t {
@@ -2287,35 +1689,10 @@ enum class FilterDynamicsModeGx5 : std::uint16_t {
 };
 
 /// Spec name of a value ("portable"), or nullptr when the value has no name.
-inline const char *to_string(FilterDynamicsModeGx5 v) {
-    if (v == FilterDynamicsModeGx5::portable) {
-        return "portable";
-    }
-    if (v == FilterDynamicsModeGx5::automotive) {
-        return "automotive";
-    }
-    if (v == FilterDynamicsModeGx5::airborne) {
-        return "airborne";
-    }
-    return nullptr;
-}
+const char *to_string(FilterDynamicsModeGx5 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterDynamicsModeGx5 &out) {
-    if (std::strcmp(name, "portable") == 0) {
-        out = FilterDynamicsModeGx5::portable;
-        return true;
-    }
-    if (std::strcmp(name, "automotive") == 0) {
-        out = FilterDynamicsModeGx5::automotive;
-        return true;
-    }
-    if (std::strcmp(name, "airborne") == 0) {
-        out = FilterDynamicsModeGx5::airborne;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterDynamicsModeGx5 &out);
 
 /// GNSS position aiding status. Reserved and unnamed bits are kept in raw().
 class FilterGnssAidingStatusFlags {
@@ -2481,42 +1858,10 @@ enum class FilterGnssSource : std::uint8_t {
 };
 
 /// Spec name of a value ("all_internal"), or nullptr when the value has no name.
-inline const char *to_string(FilterGnssSource v) {
-    if (v == FilterGnssSource::all_internal) {
-        return "all_internal";
-    }
-    if (v == FilterGnssSource::external) {
-        return "external";
-    }
-    if (v == FilterGnssSource::internal_1) {
-        return "internal_1";
-    }
-    if (v == FilterGnssSource::internal_2) {
-        return "internal_2";
-    }
-    return nullptr;
-}
+const char *to_string(FilterGnssSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterGnssSource &out) {
-    if (std::strcmp(name, "all_internal") == 0) {
-        out = FilterGnssSource::all_internal;
-        return true;
-    }
-    if (std::strcmp(name, "external") == 0) {
-        out = FilterGnssSource::external;
-        return true;
-    }
-    if (std::strcmp(name, "internal_1") == 0) {
-        out = FilterGnssSource::internal_1;
-        return true;
-    }
-    if (std::strcmp(name, "internal_2") == 0) {
-        out = FilterGnssSource::internal_2;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterGnssSource &out);
 
 /// Heading update sources in use. Reserved and unnamed bits are kept in raw().
 class FilterHeadingSourceFlags {
@@ -2609,42 +1954,10 @@ enum class FilterInitialConditionSource : std::uint8_t {
 };
 
 /// Spec name of a value ("auto_pos_vel_att"), or nullptr when the value has no name.
-inline const char *to_string(FilterInitialConditionSource v) {
-    if (v == FilterInitialConditionSource::auto_pos_vel_att) {
-        return "auto_pos_vel_att";
-    }
-    if (v == FilterInitialConditionSource::auto_pos_vel_pitch_roll) {
-        return "auto_pos_vel_pitch_roll";
-    }
-    if (v == FilterInitialConditionSource::auto_pos_vel) {
-        return "auto_pos_vel";
-    }
-    if (v == FilterInitialConditionSource::manual) {
-        return "manual";
-    }
-    return nullptr;
-}
+const char *to_string(FilterInitialConditionSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterInitialConditionSource &out) {
-    if (std::strcmp(name, "auto_pos_vel_att") == 0) {
-        out = FilterInitialConditionSource::auto_pos_vel_att;
-        return true;
-    }
-    if (std::strcmp(name, "auto_pos_vel_pitch_roll") == 0) {
-        out = FilterInitialConditionSource::auto_pos_vel_pitch_roll;
-        return true;
-    }
-    if (std::strcmp(name, "auto_pos_vel") == 0) {
-        out = FilterInitialConditionSource::auto_pos_vel;
-        return true;
-    }
-    if (std::strcmp(name, "manual") == 0) {
-        out = FilterInitialConditionSource::manual;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterInitialConditionSource &out);
 
 /// Filter mode (3DM-CV7). Unknown values are kept (an enum class holds any std::uint16_t).
 enum class FilterModeCv7 : std::uint16_t {
@@ -2655,42 +1968,10 @@ enum class FilterModeCv7 : std::uint16_t {
 };
 
 /// Spec name of a value ("init"), or nullptr when the value has no name.
-inline const char *to_string(FilterModeCv7 v) {
-    if (v == FilterModeCv7::init) {
-        return "init";
-    }
-    if (v == FilterModeCv7::vert_gyro) {
-        return "vert_gyro";
-    }
-    if (v == FilterModeCv7::ahrs) {
-        return "ahrs";
-    }
-    if (v == FilterModeCv7::full_nav) {
-        return "full_nav";
-    }
-    return nullptr;
-}
+const char *to_string(FilterModeCv7 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterModeCv7 &out) {
-    if (std::strcmp(name, "init") == 0) {
-        out = FilterModeCv7::init;
-        return true;
-    }
-    if (std::strcmp(name, "vert_gyro") == 0) {
-        out = FilterModeCv7::vert_gyro;
-        return true;
-    }
-    if (std::strcmp(name, "ahrs") == 0) {
-        out = FilterModeCv7::ahrs;
-        return true;
-    }
-    if (std::strcmp(name, "full_nav") == 0) {
-        out = FilterModeCv7::full_nav;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterModeCv7 &out);
 
 /// Filter output valid flags. Reserved and unnamed bits are kept in raw().
 class FilterOutputValidFlags {
@@ -2731,28 +2012,10 @@ enum class FilterReferenceFrame : std::uint8_t {
 };
 
 /// Spec name of a value ("ecef"), or nullptr when the value has no name.
-inline const char *to_string(FilterReferenceFrame v) {
-    if (v == FilterReferenceFrame::ecef) {
-        return "ecef";
-    }
-    if (v == FilterReferenceFrame::llh) {
-        return "llh";
-    }
-    return nullptr;
-}
+const char *to_string(FilterReferenceFrame v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterReferenceFrame &out) {
-    if (std::strcmp(name, "ecef") == 0) {
-        out = FilterReferenceFrame::ecef;
-        return true;
-    }
-    if (std::strcmp(name, "llh") == 0) {
-        out = FilterReferenceFrame::llh;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterReferenceFrame &out);
 
 /// Filter state (3DM-GX5-45). Unknown values are kept (an enum class holds any std::uint16_t).
 enum class FilterStateGx5 : std::uint16_t {
@@ -2763,42 +2026,10 @@ enum class FilterStateGx5 : std::uint16_t {
 };
 
 /// Spec name of a value ("startup"), or nullptr when the value has no name.
-inline const char *to_string(FilterStateGx5 v) {
-    if (v == FilterStateGx5::startup) {
-        return "startup";
-    }
-    if (v == FilterStateGx5::init) {
-        return "init";
-    }
-    if (v == FilterStateGx5::run_solution_valid) {
-        return "run_solution_valid";
-    }
-    if (v == FilterStateGx5::run_solution_error) {
-        return "run_solution_error";
-    }
-    return nullptr;
-}
+const char *to_string(FilterStateGx5 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterStateGx5 &out) {
-    if (std::strcmp(name, "startup") == 0) {
-        out = FilterStateGx5::startup;
-        return true;
-    }
-    if (std::strcmp(name, "init") == 0) {
-        out = FilterStateGx5::init;
-        return true;
-    }
-    if (std::strcmp(name, "run_solution_valid") == 0) {
-        out = FilterStateGx5::run_solution_valid;
-        return true;
-    }
-    if (std::strcmp(name, "run_solution_error") == 0) {
-        out = FilterStateGx5::run_solution_error;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterStateGx5 &out);
 
 /// Filter status flags (3DM-CV7). Reserved and unnamed bits are kept in raw().
 class FilterStatusFlagsCv7 {
@@ -3129,56 +2360,10 @@ enum class FunctionSelector : std::uint8_t {
 };
 
 /// Spec name of a value ("write"), or nullptr when the value has no name.
-inline const char *to_string(FunctionSelector v) {
-    if (v == FunctionSelector::write) {
-        return "write";
-    }
-    if (v == FunctionSelector::read) {
-        return "read";
-    }
-    if (v == FunctionSelector::save) {
-        return "save";
-    }
-    if (v == FunctionSelector::load) {
-        return "load";
-    }
-    if (v == FunctionSelector::default_) {
-        return "default";
-    }
-    if (v == FunctionSelector::write_no_ack) {
-        return "write_no_ack";
-    }
-    return nullptr;
-}
+const char *to_string(FunctionSelector v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FunctionSelector &out) {
-    if (std::strcmp(name, "write") == 0) {
-        out = FunctionSelector::write;
-        return true;
-    }
-    if (std::strcmp(name, "read") == 0) {
-        out = FunctionSelector::read;
-        return true;
-    }
-    if (std::strcmp(name, "save") == 0) {
-        out = FunctionSelector::save;
-        return true;
-    }
-    if (std::strcmp(name, "load") == 0) {
-        out = FunctionSelector::load;
-        return true;
-    }
-    if (std::strcmp(name, "default") == 0) {
-        out = FunctionSelector::default_;
-        return true;
-    }
-    if (std::strcmp(name, "write_no_ack") == 0) {
-        out = FunctionSelector::write_no_ack;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FunctionSelector &out);
 
 /// GNSS antenna power. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GnssAntennaPower : std::uint8_t {
@@ -3188,35 +2373,10 @@ enum class GnssAntennaPower : std::uint8_t {
 };
 
 /// Spec name of a value ("off"), or nullptr when the value has no name.
-inline const char *to_string(GnssAntennaPower v) {
-    if (v == GnssAntennaPower::off) {
-        return "off";
-    }
-    if (v == GnssAntennaPower::on) {
-        return "on";
-    }
-    if (v == GnssAntennaPower::unknown) {
-        return "unknown";
-    }
-    return nullptr;
-}
+const char *to_string(GnssAntennaPower v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssAntennaPower &out) {
-    if (std::strcmp(name, "off") == 0) {
-        out = GnssAntennaPower::off;
-        return true;
-    }
-    if (std::strcmp(name, "on") == 0) {
-        out = GnssAntennaPower::on;
-        return true;
-    }
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssAntennaPower::unknown;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssAntennaPower &out);
 
 /// GNSS antenna state. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GnssAntennaState : std::uint8_t {
@@ -3228,49 +2388,10 @@ enum class GnssAntennaState : std::uint8_t {
 };
 
 /// Spec name of a value ("init"), or nullptr when the value has no name.
-inline const char *to_string(GnssAntennaState v) {
-    if (v == GnssAntennaState::init) {
-        return "init";
-    }
-    if (v == GnssAntennaState::short_) {
-        return "short";
-    }
-    if (v == GnssAntennaState::open) {
-        return "open";
-    }
-    if (v == GnssAntennaState::good) {
-        return "good";
-    }
-    if (v == GnssAntennaState::unknown) {
-        return "unknown";
-    }
-    return nullptr;
-}
+const char *to_string(GnssAntennaState v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssAntennaState &out) {
-    if (std::strcmp(name, "init") == 0) {
-        out = GnssAntennaState::init;
-        return true;
-    }
-    if (std::strcmp(name, "short") == 0) {
-        out = GnssAntennaState::short_;
-        return true;
-    }
-    if (std::strcmp(name, "open") == 0) {
-        out = GnssAntennaState::open;
-        return true;
-    }
-    if (std::strcmp(name, "good") == 0) {
-        out = GnssAntennaState::good;
-        return true;
-    }
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssAntennaState::unknown;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssAntennaState &out);
 
 /// Base station indicators. Reserved and unnamed bits are kept in raw().
 class GnssBaseStationIndicators {
@@ -3669,56 +2790,10 @@ enum class GnssConstellationId : std::uint8_t {
 };
 
 /// Spec name of a value ("unknown"), or nullptr when the value has no name.
-inline const char *to_string(GnssConstellationId v) {
-    if (v == GnssConstellationId::unknown) {
-        return "unknown";
-    }
-    if (v == GnssConstellationId::gps) {
-        return "gps";
-    }
-    if (v == GnssConstellationId::glonass) {
-        return "glonass";
-    }
-    if (v == GnssConstellationId::galileo) {
-        return "galileo";
-    }
-    if (v == GnssConstellationId::beidou) {
-        return "beidou";
-    }
-    if (v == GnssConstellationId::sbas) {
-        return "sbas";
-    }
-    return nullptr;
-}
+const char *to_string(GnssConstellationId v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssConstellationId &out) {
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssConstellationId::unknown;
-        return true;
-    }
-    if (std::strcmp(name, "gps") == 0) {
-        out = GnssConstellationId::gps;
-        return true;
-    }
-    if (std::strcmp(name, "glonass") == 0) {
-        out = GnssConstellationId::glonass;
-        return true;
-    }
-    if (std::strcmp(name, "galileo") == 0) {
-        out = GnssConstellationId::galileo;
-        return true;
-    }
-    if (std::strcmp(name, "beidou") == 0) {
-        out = GnssConstellationId::beidou;
-        return true;
-    }
-    if (std::strcmp(name, "sbas") == 0) {
-        out = GnssConstellationId::sbas;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssConstellationId &out);
 
 /// DGNSS base station status. Unknown values are kept (an enum class holds any std::int16_t).
 enum class GnssDgnssBaseStationStatus : std::int16_t {
@@ -3733,70 +2808,10 @@ enum class GnssDgnssBaseStationStatus : std::int16_t {
 };
 
 /// Spec name of a value ("udre_scale_1_0"), or nullptr when the value has no name.
-inline const char *to_string(GnssDgnssBaseStationStatus v) {
-    if (v == GnssDgnssBaseStationStatus::udre_scale_1_0) {
-        return "udre_scale_1_0";
-    }
-    if (v == GnssDgnssBaseStationStatus::udre_scale_0_75) {
-        return "udre_scale_0_75";
-    }
-    if (v == GnssDgnssBaseStationStatus::udre_scale_0_5) {
-        return "udre_scale_0_5";
-    }
-    if (v == GnssDgnssBaseStationStatus::udre_scale_0_3) {
-        return "udre_scale_0_3";
-    }
-    if (v == GnssDgnssBaseStationStatus::udre_scale_0_2) {
-        return "udre_scale_0_2";
-    }
-    if (v == GnssDgnssBaseStationStatus::udre_scale_0_1) {
-        return "udre_scale_0_1";
-    }
-    if (v == GnssDgnssBaseStationStatus::transmission_not_monitored) {
-        return "transmission_not_monitored";
-    }
-    if (v == GnssDgnssBaseStationStatus::station_not_working) {
-        return "station_not_working";
-    }
-    return nullptr;
-}
+const char *to_string(GnssDgnssBaseStationStatus v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssDgnssBaseStationStatus &out) {
-    if (std::strcmp(name, "udre_scale_1_0") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_1_0;
-        return true;
-    }
-    if (std::strcmp(name, "udre_scale_0_75") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_0_75;
-        return true;
-    }
-    if (std::strcmp(name, "udre_scale_0_5") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_0_5;
-        return true;
-    }
-    if (std::strcmp(name, "udre_scale_0_3") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_0_3;
-        return true;
-    }
-    if (std::strcmp(name, "udre_scale_0_2") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_0_2;
-        return true;
-    }
-    if (std::strcmp(name, "udre_scale_0_1") == 0) {
-        out = GnssDgnssBaseStationStatus::udre_scale_0_1;
-        return true;
-    }
-    if (std::strcmp(name, "transmission_not_monitored") == 0) {
-        out = GnssDgnssBaseStationStatus::transmission_not_monitored;
-        return true;
-    }
-    if (std::strcmp(name, "station_not_working") == 0) {
-        out = GnssDgnssBaseStationStatus::station_not_working;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssDgnssBaseStationStatus &out);
 
 /// DGNSS channel status valid flags. Reserved and unnamed bits are kept in raw().
 class GnssDgnssChannelStatusValidFlags {
@@ -4349,70 +3364,10 @@ enum class GnssFixTypeCv7 : std::uint8_t {
 };
 
 /// Spec name of a value ("fix_3d"), or nullptr when the value has no name.
-inline const char *to_string(GnssFixTypeCv7 v) {
-    if (v == GnssFixTypeCv7::fix_3d) {
-        return "fix_3d";
-    }
-    if (v == GnssFixTypeCv7::fix_2d) {
-        return "fix_2d";
-    }
-    if (v == GnssFixTypeCv7::fix_time_only) {
-        return "fix_time_only";
-    }
-    if (v == GnssFixTypeCv7::fix_none) {
-        return "fix_none";
-    }
-    if (v == GnssFixTypeCv7::fix_invalid) {
-        return "fix_invalid";
-    }
-    if (v == GnssFixTypeCv7::fix_rtk_float) {
-        return "fix_rtk_float";
-    }
-    if (v == GnssFixTypeCv7::fix_rtk_fixed) {
-        return "fix_rtk_fixed";
-    }
-    if (v == GnssFixTypeCv7::fix_differential) {
-        return "fix_differential";
-    }
-    return nullptr;
-}
+const char *to_string(GnssFixTypeCv7 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssFixTypeCv7 &out) {
-    if (std::strcmp(name, "fix_3d") == 0) {
-        out = GnssFixTypeCv7::fix_3d;
-        return true;
-    }
-    if (std::strcmp(name, "fix_2d") == 0) {
-        out = GnssFixTypeCv7::fix_2d;
-        return true;
-    }
-    if (std::strcmp(name, "fix_time_only") == 0) {
-        out = GnssFixTypeCv7::fix_time_only;
-        return true;
-    }
-    if (std::strcmp(name, "fix_none") == 0) {
-        out = GnssFixTypeCv7::fix_none;
-        return true;
-    }
-    if (std::strcmp(name, "fix_invalid") == 0) {
-        out = GnssFixTypeCv7::fix_invalid;
-        return true;
-    }
-    if (std::strcmp(name, "fix_rtk_float") == 0) {
-        out = GnssFixTypeCv7::fix_rtk_float;
-        return true;
-    }
-    if (std::strcmp(name, "fix_rtk_fixed") == 0) {
-        out = GnssFixTypeCv7::fix_rtk_fixed;
-        return true;
-    }
-    if (std::strcmp(name, "fix_differential") == 0) {
-        out = GnssFixTypeCv7::fix_differential;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssFixTypeCv7 &out);
 
 /// GNSS fix type (GX5-45). Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GnssFixTypeGx5 : std::uint8_t {
@@ -4424,49 +3379,10 @@ enum class GnssFixTypeGx5 : std::uint8_t {
 };
 
 /// Spec name of a value ("fix_3d"), or nullptr when the value has no name.
-inline const char *to_string(GnssFixTypeGx5 v) {
-    if (v == GnssFixTypeGx5::fix_3d) {
-        return "fix_3d";
-    }
-    if (v == GnssFixTypeGx5::fix_2d) {
-        return "fix_2d";
-    }
-    if (v == GnssFixTypeGx5::fix_time_only) {
-        return "fix_time_only";
-    }
-    if (v == GnssFixTypeGx5::fix_none) {
-        return "fix_none";
-    }
-    if (v == GnssFixTypeGx5::fix_invalid) {
-        return "fix_invalid";
-    }
-    return nullptr;
-}
+const char *to_string(GnssFixTypeGx5 v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssFixTypeGx5 &out) {
-    if (std::strcmp(name, "fix_3d") == 0) {
-        out = GnssFixTypeGx5::fix_3d;
-        return true;
-    }
-    if (std::strcmp(name, "fix_2d") == 0) {
-        out = GnssFixTypeGx5::fix_2d;
-        return true;
-    }
-    if (std::strcmp(name, "fix_time_only") == 0) {
-        out = GnssFixTypeGx5::fix_time_only;
-        return true;
-    }
-    if (std::strcmp(name, "fix_none") == 0) {
-        out = GnssFixTypeGx5::fix_none;
-        return true;
-    }
-    if (std::strcmp(name, "fix_invalid") == 0) {
-        out = GnssFixTypeGx5::fix_invalid;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssFixTypeGx5 &out);
 
 /// Galileo signals enabled. Reserved and unnamed bits are kept in raw().
 class GnssGalileoSignals {
@@ -4571,28 +3487,10 @@ enum class GnssGlonassSatelliteType : std::uint8_t {
 };
 
 /// Spec name of a value ("glonass"), or nullptr when the value has no name.
-inline const char *to_string(GnssGlonassSatelliteType v) {
-    if (v == GnssGlonassSatelliteType::glonass) {
-        return "glonass";
-    }
-    if (v == GnssGlonassSatelliteType::glonass_m) {
-        return "glonass_m";
-    }
-    return nullptr;
-}
+const char *to_string(GnssGlonassSatelliteType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssGlonassSatelliteType &out) {
-    if (std::strcmp(name, "glonass") == 0) {
-        out = GnssGlonassSatelliteType::glonass;
-        return true;
-    }
-    if (std::strcmp(name, "glonass_m") == 0) {
-        out = GnssGlonassSatelliteType::glonass_m;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssGlonassSatelliteType &out);
 
 /// GLONASS signals enabled. Reserved and unnamed bits are kept in raw().
 class GnssGlonassSignals {
@@ -5219,35 +4117,10 @@ enum class GnssReceiverState : std::uint8_t {
 };
 
 /// Spec name of a value ("off"), or nullptr when the value has no name.
-inline const char *to_string(GnssReceiverState v) {
-    if (v == GnssReceiverState::off) {
-        return "off";
-    }
-    if (v == GnssReceiverState::on) {
-        return "on";
-    }
-    if (v == GnssReceiverState::unknown) {
-        return "unknown";
-    }
-    return nullptr;
-}
+const char *to_string(GnssReceiverState v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssReceiverState &out) {
-    if (std::strcmp(name, "off") == 0) {
-        out = GnssReceiverState::off;
-        return true;
-    }
-    if (std::strcmp(name, "on") == 0) {
-        out = GnssReceiverState::on;
-        return true;
-    }
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssReceiverState::unknown;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssReceiverState &out);
 
 /// Satellite status valid flags. Reserved and unnamed bits are kept in raw().
 class GnssSatelliteStatusValidFlags {
@@ -5522,49 +4395,10 @@ enum class GnssSbasSystem : std::uint8_t {
 };
 
 /// Spec name of a value ("unknown"), or nullptr when the value has no name.
-inline const char *to_string(GnssSbasSystem v) {
-    if (v == GnssSbasSystem::unknown) {
-        return "unknown";
-    }
-    if (v == GnssSbasSystem::waas) {
-        return "waas";
-    }
-    if (v == GnssSbasSystem::egnos) {
-        return "egnos";
-    }
-    if (v == GnssSbasSystem::msas) {
-        return "msas";
-    }
-    if (v == GnssSbasSystem::gagan) {
-        return "gagan";
-    }
-    return nullptr;
-}
+const char *to_string(GnssSbasSystem v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssSbasSystem &out) {
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssSbasSystem::unknown;
-        return true;
-    }
-    if (std::strcmp(name, "waas") == 0) {
-        out = GnssSbasSystem::waas;
-        return true;
-    }
-    if (std::strcmp(name, "egnos") == 0) {
-        out = GnssSbasSystem::egnos;
-        return true;
-    }
-    if (std::strcmp(name, "msas") == 0) {
-        out = GnssSbasSystem::msas;
-        return true;
-    }
-    if (std::strcmp(name, "gagan") == 0) {
-        out = GnssSbasSystem::gagan;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssSbasSystem &out);
 
 /// GNSS signal identifier. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GnssSignalId : std::uint8_t {
@@ -5637,476 +4471,10 @@ enum class GnssSignalId : std::uint8_t {
 };
 
 /// Spec name of a value ("unknown"), or nullptr when the value has no name.
-inline const char *to_string(GnssSignalId v) {
-    if (v == GnssSignalId::unknown) {
-        return "unknown";
-    }
-    if (v == GnssSignalId::gps_l1ca) {
-        return "gps_l1ca";
-    }
-    if (v == GnssSignalId::gps_l1p) {
-        return "gps_l1p";
-    }
-    if (v == GnssSignalId::gps_l1z) {
-        return "gps_l1z";
-    }
-    if (v == GnssSignalId::gps_l2ca) {
-        return "gps_l2ca";
-    }
-    if (v == GnssSignalId::gps_l2p) {
-        return "gps_l2p";
-    }
-    if (v == GnssSignalId::gps_l2z) {
-        return "gps_l2z";
-    }
-    if (v == GnssSignalId::gps_l2cl) {
-        return "gps_l2cl";
-    }
-    if (v == GnssSignalId::gps_l2cm) {
-        return "gps_l2cm";
-    }
-    if (v == GnssSignalId::gps_l2cml) {
-        return "gps_l2cml";
-    }
-    if (v == GnssSignalId::gps_l5i) {
-        return "gps_l5i";
-    }
-    if (v == GnssSignalId::gps_l5q) {
-        return "gps_l5q";
-    }
-    if (v == GnssSignalId::gps_l5iq) {
-        return "gps_l5iq";
-    }
-    if (v == GnssSignalId::gps_l1cd) {
-        return "gps_l1cd";
-    }
-    if (v == GnssSignalId::gps_l1cp) {
-        return "gps_l1cp";
-    }
-    if (v == GnssSignalId::gps_l1cdp) {
-        return "gps_l1cdp";
-    }
-    if (v == GnssSignalId::glonass_g1ca) {
-        return "glonass_g1ca";
-    }
-    if (v == GnssSignalId::glonass_g1p) {
-        return "glonass_g1p";
-    }
-    if (v == GnssSignalId::glonass_g2c) {
-        return "glonass_g2c";
-    }
-    if (v == GnssSignalId::glonass_g2p) {
-        return "glonass_g2p";
-    }
-    if (v == GnssSignalId::galileo_e1c) {
-        return "galileo_e1c";
-    }
-    if (v == GnssSignalId::galileo_e1a) {
-        return "galileo_e1a";
-    }
-    if (v == GnssSignalId::galileo_e1b) {
-        return "galileo_e1b";
-    }
-    if (v == GnssSignalId::galileo_e1bc) {
-        return "galileo_e1bc";
-    }
-    if (v == GnssSignalId::galileo_e1abc) {
-        return "galileo_e1abc";
-    }
-    if (v == GnssSignalId::galileo_e6c) {
-        return "galileo_e6c";
-    }
-    if (v == GnssSignalId::galileo_e6a) {
-        return "galileo_e6a";
-    }
-    if (v == GnssSignalId::galileo_e6b) {
-        return "galileo_e6b";
-    }
-    if (v == GnssSignalId::galileo_e6bc) {
-        return "galileo_e6bc";
-    }
-    if (v == GnssSignalId::galileo_e6abc) {
-        return "galileo_e6abc";
-    }
-    if (v == GnssSignalId::galileo_e5bi) {
-        return "galileo_e5bi";
-    }
-    if (v == GnssSignalId::galileo_e5bq) {
-        return "galileo_e5bq";
-    }
-    if (v == GnssSignalId::galileo_e5biq) {
-        return "galileo_e5biq";
-    }
-    if (v == GnssSignalId::galileo_e5abi) {
-        return "galileo_e5abi";
-    }
-    if (v == GnssSignalId::galileo_e5abq) {
-        return "galileo_e5abq";
-    }
-    if (v == GnssSignalId::galileo_e5abiq) {
-        return "galileo_e5abiq";
-    }
-    if (v == GnssSignalId::galileo_e5ai) {
-        return "galileo_e5ai";
-    }
-    if (v == GnssSignalId::galileo_e5aq) {
-        return "galileo_e5aq";
-    }
-    if (v == GnssSignalId::galileo_e5aiq) {
-        return "galileo_e5aiq";
-    }
-    if (v == GnssSignalId::sbas_l1ca) {
-        return "sbas_l1ca";
-    }
-    if (v == GnssSignalId::sbas_l5i) {
-        return "sbas_l5i";
-    }
-    if (v == GnssSignalId::sbas_l5q) {
-        return "sbas_l5q";
-    }
-    if (v == GnssSignalId::sbas_l5iq) {
-        return "sbas_l5iq";
-    }
-    if (v == GnssSignalId::qzss_l1ca) {
-        return "qzss_l1ca";
-    }
-    if (v == GnssSignalId::qzss_lexs) {
-        return "qzss_lexs";
-    }
-    if (v == GnssSignalId::qzss_lexl) {
-        return "qzss_lexl";
-    }
-    if (v == GnssSignalId::qzss_lexsl) {
-        return "qzss_lexsl";
-    }
-    if (v == GnssSignalId::qzss_l2cm) {
-        return "qzss_l2cm";
-    }
-    if (v == GnssSignalId::qzss_l2cl) {
-        return "qzss_l2cl";
-    }
-    if (v == GnssSignalId::qzss_l2cml) {
-        return "qzss_l2cml";
-    }
-    if (v == GnssSignalId::qzss_l5i) {
-        return "qzss_l5i";
-    }
-    if (v == GnssSignalId::qzss_l5q) {
-        return "qzss_l5q";
-    }
-    if (v == GnssSignalId::qzss_l5iq) {
-        return "qzss_l5iq";
-    }
-    if (v == GnssSignalId::qzss_l1cd) {
-        return "qzss_l1cd";
-    }
-    if (v == GnssSignalId::qzss_l1cp) {
-        return "qzss_l1cp";
-    }
-    if (v == GnssSignalId::qzss_l1cdp) {
-        return "qzss_l1cdp";
-    }
-    if (v == GnssSignalId::beidou_b1i) {
-        return "beidou_b1i";
-    }
-    if (v == GnssSignalId::beidou_b1q) {
-        return "beidou_b1q";
-    }
-    if (v == GnssSignalId::beidou_b1iq) {
-        return "beidou_b1iq";
-    }
-    if (v == GnssSignalId::beidou_b3i) {
-        return "beidou_b3i";
-    }
-    if (v == GnssSignalId::beidou_b3q) {
-        return "beidou_b3q";
-    }
-    if (v == GnssSignalId::beidou_b3iq) {
-        return "beidou_b3iq";
-    }
-    if (v == GnssSignalId::beidou_b2i) {
-        return "beidou_b2i";
-    }
-    if (v == GnssSignalId::beidou_b2q) {
-        return "beidou_b2q";
-    }
-    if (v == GnssSignalId::beidou_b2iq) {
-        return "beidou_b2iq";
-    }
-    if (v == GnssSignalId::beidou_b2a) {
-        return "beidou_b2a";
-    }
-    return nullptr;
-}
+const char *to_string(GnssSignalId v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssSignalId &out) {
-    if (std::strcmp(name, "unknown") == 0) {
-        out = GnssSignalId::unknown;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1ca") == 0) {
-        out = GnssSignalId::gps_l1ca;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1p") == 0) {
-        out = GnssSignalId::gps_l1p;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1z") == 0) {
-        out = GnssSignalId::gps_l1z;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2ca") == 0) {
-        out = GnssSignalId::gps_l2ca;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2p") == 0) {
-        out = GnssSignalId::gps_l2p;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2z") == 0) {
-        out = GnssSignalId::gps_l2z;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2cl") == 0) {
-        out = GnssSignalId::gps_l2cl;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2cm") == 0) {
-        out = GnssSignalId::gps_l2cm;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l2cml") == 0) {
-        out = GnssSignalId::gps_l2cml;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l5i") == 0) {
-        out = GnssSignalId::gps_l5i;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l5q") == 0) {
-        out = GnssSignalId::gps_l5q;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l5iq") == 0) {
-        out = GnssSignalId::gps_l5iq;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1cd") == 0) {
-        out = GnssSignalId::gps_l1cd;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1cp") == 0) {
-        out = GnssSignalId::gps_l1cp;
-        return true;
-    }
-    if (std::strcmp(name, "gps_l1cdp") == 0) {
-        out = GnssSignalId::gps_l1cdp;
-        return true;
-    }
-    if (std::strcmp(name, "glonass_g1ca") == 0) {
-        out = GnssSignalId::glonass_g1ca;
-        return true;
-    }
-    if (std::strcmp(name, "glonass_g1p") == 0) {
-        out = GnssSignalId::glonass_g1p;
-        return true;
-    }
-    if (std::strcmp(name, "glonass_g2c") == 0) {
-        out = GnssSignalId::glonass_g2c;
-        return true;
-    }
-    if (std::strcmp(name, "glonass_g2p") == 0) {
-        out = GnssSignalId::glonass_g2p;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e1c") == 0) {
-        out = GnssSignalId::galileo_e1c;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e1a") == 0) {
-        out = GnssSignalId::galileo_e1a;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e1b") == 0) {
-        out = GnssSignalId::galileo_e1b;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e1bc") == 0) {
-        out = GnssSignalId::galileo_e1bc;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e1abc") == 0) {
-        out = GnssSignalId::galileo_e1abc;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e6c") == 0) {
-        out = GnssSignalId::galileo_e6c;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e6a") == 0) {
-        out = GnssSignalId::galileo_e6a;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e6b") == 0) {
-        out = GnssSignalId::galileo_e6b;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e6bc") == 0) {
-        out = GnssSignalId::galileo_e6bc;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e6abc") == 0) {
-        out = GnssSignalId::galileo_e6abc;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5bi") == 0) {
-        out = GnssSignalId::galileo_e5bi;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5bq") == 0) {
-        out = GnssSignalId::galileo_e5bq;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5biq") == 0) {
-        out = GnssSignalId::galileo_e5biq;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5abi") == 0) {
-        out = GnssSignalId::galileo_e5abi;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5abq") == 0) {
-        out = GnssSignalId::galileo_e5abq;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5abiq") == 0) {
-        out = GnssSignalId::galileo_e5abiq;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5ai") == 0) {
-        out = GnssSignalId::galileo_e5ai;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5aq") == 0) {
-        out = GnssSignalId::galileo_e5aq;
-        return true;
-    }
-    if (std::strcmp(name, "galileo_e5aiq") == 0) {
-        out = GnssSignalId::galileo_e5aiq;
-        return true;
-    }
-    if (std::strcmp(name, "sbas_l1ca") == 0) {
-        out = GnssSignalId::sbas_l1ca;
-        return true;
-    }
-    if (std::strcmp(name, "sbas_l5i") == 0) {
-        out = GnssSignalId::sbas_l5i;
-        return true;
-    }
-    if (std::strcmp(name, "sbas_l5q") == 0) {
-        out = GnssSignalId::sbas_l5q;
-        return true;
-    }
-    if (std::strcmp(name, "sbas_l5iq") == 0) {
-        out = GnssSignalId::sbas_l5iq;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l1ca") == 0) {
-        out = GnssSignalId::qzss_l1ca;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_lexs") == 0) {
-        out = GnssSignalId::qzss_lexs;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_lexl") == 0) {
-        out = GnssSignalId::qzss_lexl;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_lexsl") == 0) {
-        out = GnssSignalId::qzss_lexsl;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l2cm") == 0) {
-        out = GnssSignalId::qzss_l2cm;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l2cl") == 0) {
-        out = GnssSignalId::qzss_l2cl;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l2cml") == 0) {
-        out = GnssSignalId::qzss_l2cml;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l5i") == 0) {
-        out = GnssSignalId::qzss_l5i;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l5q") == 0) {
-        out = GnssSignalId::qzss_l5q;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l5iq") == 0) {
-        out = GnssSignalId::qzss_l5iq;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l1cd") == 0) {
-        out = GnssSignalId::qzss_l1cd;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l1cp") == 0) {
-        out = GnssSignalId::qzss_l1cp;
-        return true;
-    }
-    if (std::strcmp(name, "qzss_l1cdp") == 0) {
-        out = GnssSignalId::qzss_l1cdp;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b1i") == 0) {
-        out = GnssSignalId::beidou_b1i;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b1q") == 0) {
-        out = GnssSignalId::beidou_b1q;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b1iq") == 0) {
-        out = GnssSignalId::beidou_b1iq;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b3i") == 0) {
-        out = GnssSignalId::beidou_b3i;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b3q") == 0) {
-        out = GnssSignalId::beidou_b3q;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b3iq") == 0) {
-        out = GnssSignalId::beidou_b3iq;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b2i") == 0) {
-        out = GnssSignalId::beidou_b2i;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b2q") == 0) {
-        out = GnssSignalId::beidou_b2q;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b2iq") == 0) {
-        out = GnssSignalId::beidou_b2iq;
-        return true;
-    }
-    if (std::strcmp(name, "beidou_b2a") == 0) {
-        out = GnssSignalId::beidou_b2a;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssSignalId &out);
 
 /// GNSS raw observation signal quality. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GnssSignalQuality : std::uint8_t {
@@ -6119,56 +4487,10 @@ enum class GnssSignalQuality : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(GnssSignalQuality v) {
-    if (v == GnssSignalQuality::none) {
-        return "none";
-    }
-    if (v == GnssSignalQuality::searching) {
-        return "searching";
-    }
-    if (v == GnssSignalQuality::acquired) {
-        return "acquired";
-    }
-    if (v == GnssSignalQuality::unusable) {
-        return "unusable";
-    }
-    if (v == GnssSignalQuality::time_locked) {
-        return "time_locked";
-    }
-    if (v == GnssSignalQuality::fully_locked) {
-        return "fully_locked";
-    }
-    return nullptr;
-}
+const char *to_string(GnssSignalQuality v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GnssSignalQuality &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = GnssSignalQuality::none;
-        return true;
-    }
-    if (std::strcmp(name, "searching") == 0) {
-        out = GnssSignalQuality::searching;
-        return true;
-    }
-    if (std::strcmp(name, "acquired") == 0) {
-        out = GnssSignalQuality::acquired;
-        return true;
-    }
-    if (std::strcmp(name, "unusable") == 0) {
-        out = GnssSignalQuality::unusable;
-        return true;
-    }
-    if (std::strcmp(name, "time_locked") == 0) {
-        out = GnssSignalQuality::time_locked;
-        return true;
-    }
-    if (std::strcmp(name, "fully_locked") == 0) {
-        out = GnssSignalQuality::fully_locked;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GnssSignalQuality &out);
 
 /// Space vehicle flags. Reserved and unnamed bits are kept in raw().
 class GnssSvFlags {
@@ -6428,35 +4750,10 @@ enum class GpioEncoderBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioEncoderBehavior v) {
-    if (v == GpioEncoderBehavior::unused) {
-        return "unused";
-    }
-    if (v == GpioEncoderBehavior::encoder_a) {
-        return "encoder_a";
-    }
-    if (v == GpioEncoderBehavior::encoder_b) {
-        return "encoder_b";
-    }
-    return nullptr;
-}
+const char *to_string(GpioEncoderBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioEncoderBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioEncoderBehavior::unused;
-        return true;
-    }
-    if (std::strcmp(name, "encoder_a") == 0) {
-        out = GpioEncoderBehavior::encoder_a;
-        return true;
-    }
-    if (std::strcmp(name, "encoder_b") == 0) {
-        out = GpioEncoderBehavior::encoder_b;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioEncoderBehavior &out);
 
 /// GPIO pin feature. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpioFeature : std::uint8_t {
@@ -6469,56 +4766,10 @@ enum class GpioFeature : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioFeature v) {
-    if (v == GpioFeature::unused) {
-        return "unused";
-    }
-    if (v == GpioFeature::gpio) {
-        return "gpio";
-    }
-    if (v == GpioFeature::pps) {
-        return "pps";
-    }
-    if (v == GpioFeature::encoder) {
-        return "encoder";
-    }
-    if (v == GpioFeature::timestamp) {
-        return "timestamp";
-    }
-    if (v == GpioFeature::uart) {
-        return "uart";
-    }
-    return nullptr;
-}
+const char *to_string(GpioFeature v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioFeature &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioFeature::unused;
-        return true;
-    }
-    if (std::strcmp(name, "gpio") == 0) {
-        out = GpioFeature::gpio;
-        return true;
-    }
-    if (std::strcmp(name, "pps") == 0) {
-        out = GpioFeature::pps;
-        return true;
-    }
-    if (std::strcmp(name, "encoder") == 0) {
-        out = GpioFeature::encoder;
-        return true;
-    }
-    if (std::strcmp(name, "timestamp") == 0) {
-        out = GpioFeature::timestamp;
-        return true;
-    }
-    if (std::strcmp(name, "uart") == 0) {
-        out = GpioFeature::uart;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioFeature &out);
 
 /// GPIO behavior for the GPIO feature. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpioIoBehavior : std::uint8_t {
@@ -6529,42 +4780,10 @@ enum class GpioIoBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioIoBehavior v) {
-    if (v == GpioIoBehavior::unused) {
-        return "unused";
-    }
-    if (v == GpioIoBehavior::input) {
-        return "input";
-    }
-    if (v == GpioIoBehavior::output_low) {
-        return "output_low";
-    }
-    if (v == GpioIoBehavior::output_high) {
-        return "output_high";
-    }
-    return nullptr;
-}
+const char *to_string(GpioIoBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioIoBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioIoBehavior::unused;
-        return true;
-    }
-    if (std::strcmp(name, "input") == 0) {
-        out = GpioIoBehavior::input;
-        return true;
-    }
-    if (std::strcmp(name, "output_low") == 0) {
-        out = GpioIoBehavior::output_low;
-        return true;
-    }
-    if (std::strcmp(name, "output_high") == 0) {
-        out = GpioIoBehavior::output_high;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioIoBehavior &out);
 
 /// GPIO pin electrical mode. Reserved and unnamed bits are kept in raw().
 class GpioPinMode {
@@ -6686,35 +4905,10 @@ enum class GpioPpsBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioPpsBehavior v) {
-    if (v == GpioPpsBehavior::unused) {
-        return "unused";
-    }
-    if (v == GpioPpsBehavior::input) {
-        return "input";
-    }
-    if (v == GpioPpsBehavior::output) {
-        return "output";
-    }
-    return nullptr;
-}
+const char *to_string(GpioPpsBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioPpsBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioPpsBehavior::unused;
-        return true;
-    }
-    if (std::strcmp(name, "input") == 0) {
-        out = GpioPpsBehavior::input;
-        return true;
-    }
-    if (std::strcmp(name, "output") == 0) {
-        out = GpioPpsBehavior::output;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioPpsBehavior &out);
 
 /// GPIO behavior for the TIMESTAMP feature. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpioTimestampBehavior : std::uint8_t {
@@ -6725,42 +4919,10 @@ enum class GpioTimestampBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioTimestampBehavior v) {
-    if (v == GpioTimestampBehavior::unused) {
-        return "unused";
-    }
-    if (v == GpioTimestampBehavior::rising) {
-        return "rising";
-    }
-    if (v == GpioTimestampBehavior::falling) {
-        return "falling";
-    }
-    if (v == GpioTimestampBehavior::either) {
-        return "either";
-    }
-    return nullptr;
-}
+const char *to_string(GpioTimestampBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioTimestampBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioTimestampBehavior::unused;
-        return true;
-    }
-    if (std::strcmp(name, "rising") == 0) {
-        out = GpioTimestampBehavior::rising;
-        return true;
-    }
-    if (std::strcmp(name, "falling") == 0) {
-        out = GpioTimestampBehavior::falling;
-        return true;
-    }
-    if (std::strcmp(name, "either") == 0) {
-        out = GpioTimestampBehavior::either;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioTimestampBehavior &out);
 
 /// GPIO behavior for the UART feature. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpioUartBehavior : std::uint8_t {
@@ -6772,49 +4934,10 @@ enum class GpioUartBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioUartBehavior v) {
-    if (v == GpioUartBehavior::unused) {
-        return "unused";
-    }
-    if (v == GpioUartBehavior::port2_tx) {
-        return "port2_tx";
-    }
-    if (v == GpioUartBehavior::port2_rx) {
-        return "port2_rx";
-    }
-    if (v == GpioUartBehavior::port3_tx) {
-        return "port3_tx";
-    }
-    if (v == GpioUartBehavior::port3_rx) {
-        return "port3_rx";
-    }
-    return nullptr;
-}
+const char *to_string(GpioUartBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioUartBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioUartBehavior::unused;
-        return true;
-    }
-    if (std::strcmp(name, "port2_tx") == 0) {
-        out = GpioUartBehavior::port2_tx;
-        return true;
-    }
-    if (std::strcmp(name, "port2_rx") == 0) {
-        out = GpioUartBehavior::port2_rx;
-        return true;
-    }
-    if (std::strcmp(name, "port3_tx") == 0) {
-        out = GpioUartBehavior::port3_tx;
-        return true;
-    }
-    if (std::strcmp(name, "port3_rx") == 0) {
-        out = GpioUartBehavior::port3_rx;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioUartBehavior &out);
 
 /// GPIO behavior for the UNUSED feature. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpioUnusedBehavior : std::uint8_t {
@@ -6822,21 +4945,10 @@ enum class GpioUnusedBehavior : std::uint8_t {
 };
 
 /// Spec name of a value ("unused"), or nullptr when the value has no name.
-inline const char *to_string(GpioUnusedBehavior v) {
-    if (v == GpioUnusedBehavior::unused) {
-        return "unused";
-    }
-    return nullptr;
-}
+const char *to_string(GpioUnusedBehavior v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpioUnusedBehavior &out) {
-    if (std::strcmp(name, "unused") == 0) {
-        out = GpioUnusedBehavior::unused;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpioUnusedBehavior &out);
 
 /// GPS time field selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class GpsTimeField : std::uint8_t {
@@ -6845,28 +4957,10 @@ enum class GpsTimeField : std::uint8_t {
 };
 
 /// Spec name of a value ("week_number"), or nullptr when the value has no name.
-inline const char *to_string(GpsTimeField v) {
-    if (v == GpsTimeField::week_number) {
-        return "week_number";
-    }
-    if (v == GpsTimeField::time_of_week) {
-        return "time_of_week";
-    }
-    return nullptr;
-}
+const char *to_string(GpsTimeField v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GpsTimeField &out) {
-    if (std::strcmp(name, "week_number") == 0) {
-        out = GpsTimeField::week_number;
-        return true;
-    }
-    if (std::strcmp(name, "time_of_week") == 0) {
-        out = GpsTimeField::time_of_week;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GpsTimeField &out);
 
 /// 3DM-GX5-45 built-in test error flags. Reserved and unnamed bits are kept in raw().
 class Gx5BitFlags {
@@ -6948,56 +5042,10 @@ enum class Gx5ConstellationId : std::uint8_t {
 };
 
 /// Spec name of a value ("gps"), or nullptr when the value has no name.
-inline const char *to_string(Gx5ConstellationId v) {
-    if (v == Gx5ConstellationId::gps) {
-        return "gps";
-    }
-    if (v == Gx5ConstellationId::sbas) {
-        return "sbas";
-    }
-    if (v == Gx5ConstellationId::galileo) {
-        return "galileo";
-    }
-    if (v == Gx5ConstellationId::beidou) {
-        return "beidou";
-    }
-    if (v == Gx5ConstellationId::qzss) {
-        return "qzss";
-    }
-    if (v == Gx5ConstellationId::glonass) {
-        return "glonass";
-    }
-    return nullptr;
-}
+const char *to_string(Gx5ConstellationId v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Gx5ConstellationId &out) {
-    if (std::strcmp(name, "gps") == 0) {
-        out = Gx5ConstellationId::gps;
-        return true;
-    }
-    if (std::strcmp(name, "sbas") == 0) {
-        out = Gx5ConstellationId::sbas;
-        return true;
-    }
-    if (std::strcmp(name, "galileo") == 0) {
-        out = Gx5ConstellationId::galileo;
-        return true;
-    }
-    if (std::strcmp(name, "beidou") == 0) {
-        out = Gx5ConstellationId::beidou;
-        return true;
-    }
-    if (std::strcmp(name, "qzss") == 0) {
-        out = Gx5ConstellationId::qzss;
-        return true;
-    }
-    if (std::strcmp(name, "glonass") == 0) {
-        out = Gx5ConstellationId::glonass;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Gx5ConstellationId &out);
 
 /// Poll option selector. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class Gx5PollOption : std::uint8_t {
@@ -7006,28 +5054,10 @@ enum class Gx5PollOption : std::uint8_t {
 };
 
 /// Spec name of a value ("normal"), or nullptr when the value has no name.
-inline const char *to_string(Gx5PollOption v) {
-    if (v == Gx5PollOption::normal) {
-        return "normal";
-    }
-    if (v == Gx5PollOption::suppress_ack) {
-        return "suppress_ack";
-    }
-    return nullptr;
-}
+const char *to_string(Gx5PollOption v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Gx5PollOption &out) {
-    if (std::strcmp(name, "normal") == 0) {
-        out = Gx5PollOption::normal;
-        return true;
-    }
-    if (std::strcmp(name, "suppress_ack") == 0) {
-        out = Gx5PollOption::suppress_ack;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Gx5PollOption &out);
 
 /// Continuous data stream selector (GX5-45). Unknown values are kept (an enum class holds any std::uint8_t).
 enum class Gx5StreamSelector : std::uint8_t {
@@ -7036,28 +5066,10 @@ enum class Gx5StreamSelector : std::uint8_t {
 };
 
 /// Spec name of a value ("imu"), or nullptr when the value has no name.
-inline const char *to_string(Gx5StreamSelector v) {
-    if (v == Gx5StreamSelector::imu) {
-        return "imu";
-    }
-    if (v == Gx5StreamSelector::estimation_filter) {
-        return "estimation_filter";
-    }
-    return nullptr;
-}
+const char *to_string(Gx5StreamSelector v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Gx5StreamSelector &out) {
-    if (std::strcmp(name, "imu") == 0) {
-        out = Gx5StreamSelector::imu;
-        return true;
-    }
-    if (std::strcmp(name, "estimation_filter") == 0) {
-        out = Gx5StreamSelector::estimation_filter;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Gx5StreamSelector &out);
 
 /// Allowed automatic heading alignment methods. Reserved and unnamed bits are kept in raw().
 class HeadingAlignmentMethods {
@@ -7129,70 +5141,10 @@ enum class HeadingUpdateSource : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(HeadingUpdateSource v) {
-    if (v == HeadingUpdateSource::none) {
-        return "none";
-    }
-    if (v == HeadingUpdateSource::magnetometer) {
-        return "magnetometer";
-    }
-    if (v == HeadingUpdateSource::gnss_velocity) {
-        return "gnss_velocity";
-    }
-    if (v == HeadingUpdateSource::external) {
-        return "external";
-    }
-    if (v == HeadingUpdateSource::gnss_velocity_and_magnetometer) {
-        return "gnss_velocity_and_magnetometer";
-    }
-    if (v == HeadingUpdateSource::gnss_velocity_and_external) {
-        return "gnss_velocity_and_external";
-    }
-    if (v == HeadingUpdateSource::magnetometer_and_external) {
-        return "magnetometer_and_external";
-    }
-    if (v == HeadingUpdateSource::gnss_velocity_magnetometer_and_external) {
-        return "gnss_velocity_magnetometer_and_external";
-    }
-    return nullptr;
-}
+const char *to_string(HeadingUpdateSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, HeadingUpdateSource &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = HeadingUpdateSource::none;
-        return true;
-    }
-    if (std::strcmp(name, "magnetometer") == 0) {
-        out = HeadingUpdateSource::magnetometer;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_velocity") == 0) {
-        out = HeadingUpdateSource::gnss_velocity;
-        return true;
-    }
-    if (std::strcmp(name, "external") == 0) {
-        out = HeadingUpdateSource::external;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_velocity_and_magnetometer") == 0) {
-        out = HeadingUpdateSource::gnss_velocity_and_magnetometer;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_velocity_and_external") == 0) {
-        out = HeadingUpdateSource::gnss_velocity_and_external;
-        return true;
-    }
-    if (std::strcmp(name, "magnetometer_and_external") == 0) {
-        out = HeadingUpdateSource::magnetometer_and_external;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_velocity_magnetometer_and_external") == 0) {
-        out = HeadingUpdateSource::gnss_velocity_magnetometer_and_external;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, HeadingUpdateSource &out);
 
 /// Source of a magnetic field parameter (declination, inclination, magnitude). Unknown values are kept (an
 /// enum class holds any std::uint8_t).
@@ -7203,35 +5155,10 @@ enum class MagneticParamSource : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(MagneticParamSource v) {
-    if (v == MagneticParamSource::none) {
-        return "none";
-    }
-    if (v == MagneticParamSource::wmm) {
-        return "wmm";
-    }
-    if (v == MagneticParamSource::manual) {
-        return "manual";
-    }
-    return nullptr;
-}
+const char *to_string(MagneticParamSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, MagneticParamSource &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = MagneticParamSource::none;
-        return true;
-    }
-    if (std::strcmp(name, "wmm") == 0) {
-        out = MagneticParamSource::wmm;
-        return true;
-    }
-    if (std::strcmp(name, "manual") == 0) {
-        out = MagneticParamSource::manual;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, MagneticParamSource &out);
 
 /// Odometer data valid flags. Reserved and unnamed bits are kept in raw().
 class OdometerDataValidFlags {
@@ -7281,28 +5208,10 @@ enum class OdometerMode : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(OdometerMode v) {
-    if (v == OdometerMode::disabled) {
-        return "disabled";
-    }
-    if (v == OdometerMode::quadrature) {
-        return "quadrature";
-    }
-    return nullptr;
-}
+const char *to_string(OdometerMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, OdometerMode &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = OdometerMode::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "quadrature") == 0) {
-        out = OdometerMode::quadrature;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, OdometerMode &out);
 
 /// Sensor over-range status. Reserved and unnamed bits are kept in raw().
 class OverrangeStatusFlags {
@@ -7449,28 +5358,10 @@ enum class PitchRollAidingSource : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(PitchRollAidingSource v) {
-    if (v == PitchRollAidingSource::none) {
-        return "none";
-    }
-    if (v == PitchRollAidingSource::gravity_vector) {
-        return "gravity_vector";
-    }
-    return nullptr;
-}
+const char *to_string(PitchRollAidingSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, PitchRollAidingSource &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = PitchRollAidingSource::none;
-        return true;
-    }
-    if (std::strcmp(name, "gravity_vector") == 0) {
-        out = PitchRollAidingSource::gravity_vector;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, PitchRollAidingSource &out);
 
 /// PPS source. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class PpsSource : std::uint8_t {
@@ -7482,49 +5373,10 @@ enum class PpsSource : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(PpsSource v) {
-    if (v == PpsSource::disabled) {
-        return "disabled";
-    }
-    if (v == PpsSource::receiver_1) {
-        return "receiver_1";
-    }
-    if (v == PpsSource::receiver_2) {
-        return "receiver_2";
-    }
-    if (v == PpsSource::gpio) {
-        return "gpio";
-    }
-    if (v == PpsSource::generated) {
-        return "generated";
-    }
-    return nullptr;
-}
+const char *to_string(PpsSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, PpsSource &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = PpsSource::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "receiver_1") == 0) {
-        out = PpsSource::receiver_1;
-        return true;
-    }
-    if (std::strcmp(name, "receiver_2") == 0) {
-        out = PpsSource::receiver_2;
-        return true;
-    }
-    if (std::strcmp(name, "gpio") == 0) {
-        out = PpsSource::gpio;
-        return true;
-    }
-    if (std::strcmp(name, "generated") == 0) {
-        out = PpsSource::generated;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, PpsSource &out);
 
 /// Filter reference point. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ReferencePointSelector : std::uint8_t {
@@ -7532,21 +5384,10 @@ enum class ReferencePointSelector : std::uint8_t {
 };
 
 /// Spec name of a value ("veh"), or nullptr when the value has no name.
-inline const char *to_string(ReferencePointSelector v) {
-    if (v == ReferencePointSelector::veh) {
-        return "veh";
-    }
-    return nullptr;
-}
+const char *to_string(ReferencePointSelector v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ReferencePointSelector &out) {
-    if (std::strcmp(name, "veh") == 0) {
-        out = ReferencePointSelector::veh;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ReferencePointSelector &out);
 
 /// Reference location source for relative position outputs. Unknown values are kept (an enum class holds any
 /// std::uint8_t).
@@ -7556,28 +5397,10 @@ enum class RelativePositionSource : std::uint8_t {
 };
 
 /// Spec name of a value ("auto"), or nullptr when the value has no name.
-inline const char *to_string(RelativePositionSource v) {
-    if (v == RelativePositionSource::auto_) {
-        return "auto";
-    }
-    if (v == RelativePositionSource::manual) {
-        return "manual";
-    }
-    return nullptr;
-}
+const char *to_string(RelativePositionSource v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, RelativePositionSource &out) {
-    if (std::strcmp(name, "auto") == 0) {
-        out = RelativePositionSource::auto_;
-        return true;
-    }
-    if (std::strcmp(name, "manual") == 0) {
-        out = RelativePositionSource::manual;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, RelativePositionSource &out);
 
 /// RTK corrections epoch status. Reserved and unnamed bits are kept in raw().
 class RtkCorrectionsEpochStatus {
@@ -7943,49 +5766,10 @@ enum class SensorRangeType : std::uint8_t {
 };
 
 /// Spec name of a value ("all"), or nullptr when the value has no name.
-inline const char *to_string(SensorRangeType v) {
-    if (v == SensorRangeType::all) {
-        return "all";
-    }
-    if (v == SensorRangeType::accel) {
-        return "accel";
-    }
-    if (v == SensorRangeType::gyro) {
-        return "gyro";
-    }
-    if (v == SensorRangeType::mag) {
-        return "mag";
-    }
-    if (v == SensorRangeType::press) {
-        return "press";
-    }
-    return nullptr;
-}
+const char *to_string(SensorRangeType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, SensorRangeType &out) {
-    if (std::strcmp(name, "all") == 0) {
-        out = SensorRangeType::all;
-        return true;
-    }
-    if (std::strcmp(name, "accel") == 0) {
-        out = SensorRangeType::accel;
-        return true;
-    }
-    if (std::strcmp(name, "gyro") == 0) {
-        out = SensorRangeType::gyro;
-        return true;
-    }
-    if (std::strcmp(name, "mag") == 0) {
-        out = SensorRangeType::mag;
-        return true;
-    }
-    if (std::strcmp(name, "press") == 0) {
-        out = SensorRangeType::press;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, SensorRangeType &out);
 
 /// Shared GPS timestamp valid flags. Reserved and unnamed bits are kept in raw().
 class SharedGpsTimestampValidFlags {
@@ -8055,35 +5839,10 @@ enum class SpartnConnectionType : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(SpartnConnectionType v) {
-    if (v == SpartnConnectionType::none) {
-        return "none";
-    }
-    if (v == SpartnConnectionType::network) {
-        return "network";
-    }
-    if (v == SpartnConnectionType::l_band) {
-        return "l_band";
-    }
-    return nullptr;
-}
+const char *to_string(SpartnConnectionType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, SpartnConnectionType &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = SpartnConnectionType::none;
-        return true;
-    }
-    if (std::strcmp(name, "network") == 0) {
-        out = SpartnConnectionType::network;
-        return true;
-    }
-    if (std::strcmp(name, "l_band") == 0) {
-        out = SpartnConnectionType::l_band;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, SpartnConnectionType &out);
 
 /// Supported events query. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class SupportedEventsQuery : std::uint8_t {
@@ -8092,28 +5851,10 @@ enum class SupportedEventsQuery : std::uint8_t {
 };
 
 /// Spec name of a value ("trigger_types"), or nullptr when the value has no name.
-inline const char *to_string(SupportedEventsQuery v) {
-    if (v == SupportedEventsQuery::trigger_types) {
-        return "trigger_types";
-    }
-    if (v == SupportedEventsQuery::action_types) {
-        return "action_types";
-    }
-    return nullptr;
-}
+const char *to_string(SupportedEventsQuery v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, SupportedEventsQuery &out) {
-    if (std::strcmp(name, "trigger_types") == 0) {
-        out = SupportedEventsQuery::trigger_types;
-        return true;
-    }
-    if (std::strcmp(name, "action_types") == 0) {
-        out = SupportedEventsQuery::action_types;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, SupportedEventsQuery &out);
 
 /// Communication mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class SystemCommMode : std::uint8_t {
@@ -8123,35 +5864,10 @@ enum class SystemCommMode : std::uint8_t {
 };
 
 /// Spec name of a value ("standard"), or nullptr when the value has no name.
-inline const char *to_string(SystemCommMode v) {
-    if (v == SystemCommMode::standard) {
-        return "standard";
-    }
-    if (v == SystemCommMode::sensor_direct) {
-        return "sensor_direct";
-    }
-    if (v == SystemCommMode::gnss_direct) {
-        return "gnss_direct";
-    }
-    return nullptr;
-}
+const char *to_string(SystemCommMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, SystemCommMode &out) {
-    if (std::strcmp(name, "standard") == 0) {
-        out = SystemCommMode::standard;
-        return true;
-    }
-    if (std::strcmp(name, "sensor_direct") == 0) {
-        out = SystemCommMode::sensor_direct;
-        return true;
-    }
-    if (std::strcmp(name, "gnss_direct") == 0) {
-        out = SystemCommMode::gnss_direct;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, SystemCommMode &out);
 
 /// Tare orientation axes. Reserved and unnamed bits are kept in raw().
 class TareAxes {
@@ -8207,28 +5923,10 @@ enum class ThresholdType : std::uint8_t {
 };
 
 /// Spec name of a value ("window"), or nullptr when the value has no name.
-inline const char *to_string(ThresholdType v) {
-    if (v == ThresholdType::window) {
-        return "window";
-    }
-    if (v == ThresholdType::interval) {
-        return "interval";
-    }
-    return nullptr;
-}
+const char *to_string(ThresholdType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ThresholdType &out) {
-    if (std::strcmp(name, "window") == 0) {
-        out = ThresholdType::window;
-        return true;
-    }
-    if (std::strcmp(name, "interval") == 0) {
-        out = ThresholdType::interval;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ThresholdType &out);
 
 /// GPIO trigger mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class TriggerGpioMode : std::uint8_t {
@@ -8239,42 +5937,10 @@ enum class TriggerGpioMode : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(TriggerGpioMode v) {
-    if (v == TriggerGpioMode::disabled) {
-        return "disabled";
-    }
-    if (v == TriggerGpioMode::while_high) {
-        return "while_high";
-    }
-    if (v == TriggerGpioMode::while_low) {
-        return "while_low";
-    }
-    if (v == TriggerGpioMode::edge) {
-        return "edge";
-    }
-    return nullptr;
-}
+const char *to_string(TriggerGpioMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, TriggerGpioMode &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = TriggerGpioMode::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "while_high") == 0) {
-        out = TriggerGpioMode::while_high;
-        return true;
-    }
-    if (std::strcmp(name, "while_low") == 0) {
-        out = TriggerGpioMode::while_low;
-        return true;
-    }
-    if (std::strcmp(name, "edge") == 0) {
-        out = TriggerGpioMode::edge;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, TriggerGpioMode &out);
 
 /// Event trigger status. Reserved and unnamed bits are kept in raw().
 class TriggerStatus {
@@ -8332,42 +5998,10 @@ enum class TriggerType : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(TriggerType v) {
-    if (v == TriggerType::none) {
-        return "none";
-    }
-    if (v == TriggerType::gpio) {
-        return "gpio";
-    }
-    if (v == TriggerType::threshold) {
-        return "threshold";
-    }
-    if (v == TriggerType::combination) {
-        return "combination";
-    }
-    return nullptr;
-}
+const char *to_string(TriggerType v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, TriggerType &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = TriggerType::none;
-        return true;
-    }
-    if (std::strcmp(name, "gpio") == 0) {
-        out = TriggerType::gpio;
-        return true;
-    }
-    if (std::strcmp(name, "threshold") == 0) {
-        out = TriggerType::threshold;
-        return true;
-    }
-    if (std::strcmp(name, "combination") == 0) {
-        out = TriggerType::combination;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, TriggerType &out);
 
 /// Vehicle dynamics mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class VehicleDynamicsMode : std::uint8_t {
@@ -8378,42 +6012,10 @@ enum class VehicleDynamicsMode : std::uint8_t {
 };
 
 /// Spec name of a value ("portable"), or nullptr when the value has no name.
-inline const char *to_string(VehicleDynamicsMode v) {
-    if (v == VehicleDynamicsMode::portable) {
-        return "portable";
-    }
-    if (v == VehicleDynamicsMode::automotive) {
-        return "automotive";
-    }
-    if (v == VehicleDynamicsMode::airborne) {
-        return "airborne";
-    }
-    if (v == VehicleDynamicsMode::airborne_high_g) {
-        return "airborne_high_g";
-    }
-    return nullptr;
-}
+const char *to_string(VehicleDynamicsMode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, VehicleDynamicsMode &out) {
-    if (std::strcmp(name, "portable") == 0) {
-        out = VehicleDynamicsMode::portable;
-        return true;
-    }
-    if (std::strcmp(name, "automotive") == 0) {
-        out = VehicleDynamicsMode::automotive;
-        return true;
-    }
-    if (std::strcmp(name, "airborne") == 0) {
-        out = VehicleDynamicsMode::airborne;
-        return true;
-    }
-    if (std::strcmp(name, "airborne_high_g") == 0) {
-        out = VehicleDynamicsMode::airborne_high_g;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, VehicleDynamicsMode &out);
 
 /// ActionGpioParams
 struct ActionGpioParams {
@@ -10539,117 +8141,27 @@ template <> struct Codec<::mipcodec::types::ActionGpioParams> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::ActionGpioParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::ActionGpioParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pin);
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::ActionGpioParams &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::ActionGpioParams &v);
 };
 
 template <> struct Codec<::mipcodec::types::MessageParams> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
-    static bool read(Reader &r, ::mipcodec::types::MessageParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.decimation, err)) {
-            err.enter("decimation");
-            return false;
-        }
-        if (!read_value(r, v.num_fields, err)) {
-            err.enter("num_fields");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_fields), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::MessageParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.decimation);
-        write_value(w, v.num_fields);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_fields));
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::MessageParams &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::MessageParams &v);
 };
 
 template <> struct Codec<::mipcodec::types::ActionParams> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::ActionParams &v, ::mipcodec::types::ActionType selector,
-                     DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::ActionGpioParams>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // message
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::MessageParams>::read(r, std::get<2>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::ActionParams &v,
-                      ::mipcodec::types::ActionType selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (v.value.index() != 0) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::ActionGpioParams>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // message
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::MessageParams>::write(w, std::get<2>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::ActionType selector);
 };
 
 template <> struct Codec<::mipcodec::types::ActionStatusEntry> {
@@ -10668,28 +8180,9 @@ template <> struct Codec<::mipcodec::types::ActionStatusEntry> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::ActionStatusEntry &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.action_type, err)) {
-            err.enter("action_type");
-            return false;
-        }
-        if (!read_value(r, v.trigger_id, err)) {
-            err.enter("trigger_id");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::ActionStatusEntry &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.action_type);
-        write_value(w, v.trigger_id);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::ActionStatusEntry &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::ActionStatusEntry &v);
 };
 
 template <> struct Codec<::mipcodec::types::AidingFrameEuler> {
@@ -10705,23 +8198,9 @@ template <> struct Codec<::mipcodec::types::AidingFrameEuler> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::AidingFrameEuler &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.euler, err)) {
-            err.enter("euler");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::AidingFrameEuler &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.euler);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::AidingFrameEuler &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::AidingFrameEuler &v);
 };
 
 template <> struct Codec<::mipcodec::types::AidingFrameQuaternion> {
@@ -10737,64 +8216,19 @@ template <> struct Codec<::mipcodec::types::AidingFrameQuaternion> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::AidingFrameQuaternion &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.quaternion, err)) {
-            err.enter("quaternion");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::AidingFrameQuaternion &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.quaternion);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::AidingFrameQuaternion &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::AidingFrameQuaternion &v);
 };
 
 template <> struct Codec<::mipcodec::types::AidingFrameRotation> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::AidingFrameRotation &v,
-                     ::mipcodec::types::AidingFrameFormat selector, DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // euler
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::AidingFrameEuler>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::AidingFrameQuaternion>::read(r, std::get<2>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     ::mipcodec::types::AidingFrameFormat selector, DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::AidingFrameRotation &v,
-                      ::mipcodec::types::AidingFrameFormat selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // euler
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::AidingFrameEuler>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::AidingFrameQuaternion>::write(w, std::get<2>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::AidingFrameFormat selector);
 };
 
 template <> struct Codec<::mipcodec::types::AidingTime> {
@@ -10815,33 +8249,9 @@ template <> struct Codec<::mipcodec::types::AidingTime> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::AidingTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.timebase, err)) {
-            err.enter("timebase");
-            return false;
-        }
-        if (!read_value(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        if (!read_value(r, v.nanoseconds, err)) {
-            err.enter("nanoseconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::AidingTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.timebase);
-        write_value(w, v.reserved);
-        write_value(w, v.nanoseconds);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::AidingTime &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::AidingTime &v);
 };
 
 template <> struct Codec<::mipcodec::types::CombinationParams> {
@@ -10860,28 +8270,9 @@ template <> struct Codec<::mipcodec::types::CombinationParams> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::CombinationParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.logic_table, err)) {
-            err.enter("logic_table");
-            return false;
-        }
-        if (!read_fixed(r, v.input_triggers, err)) {
-            err.enter("input_triggers");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::CombinationParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.logic_table);
-        write_fixed(w, v.input_triggers);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::CombinationParams &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::CombinationParams &v);
 };
 
 template <> struct Codec<::mipcodec::types::ConstellationSettings> {
@@ -10908,43 +8299,9 @@ template <> struct Codec<::mipcodec::types::ConstellationSettings> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::ConstellationSettings &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.constellation_id, err)) {
-            err.enter("constellation_id");
-            return false;
-        }
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.reserved_channels, err)) {
-            err.enter("reserved_channels");
-            return false;
-        }
-        if (!read_value(r, v.max_channels, err)) {
-            err.enter("max_channels");
-            return false;
-        }
-        if (!read_value(r, v.option_flags, err)) {
-            err.enter("option_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::ConstellationSettings &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.constellation_id);
-        write_value(w, v.enable);
-        write_value(w, v.reserved_channels);
-        write_value(w, v.max_channels);
-        write_value(w, v.option_flags);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::ConstellationSettings &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::ConstellationSettings &v);
 };
 
 template <> struct Codec<::mipcodec::types::Cv7ContinuousBit> {
@@ -11001,98 +8358,9 @@ template <> struct Codec<::mipcodec::types::Cv7ContinuousBit> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBit &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.system_byte_0, err)) {
-            err.enter("system_byte_0");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_1, err)) {
-            err.enter("reserved_byte_1");
-            return false;
-        }
-        if (!read_value(r, v.system_byte_2, err)) {
-            err.enter("system_byte_2");
-            return false;
-        }
-        if (!read_value(r, v.system_byte_3, err)) {
-            err.enter("system_byte_3");
-            return false;
-        }
-        if (!read_value(r, v.imu_byte_4, err)) {
-            err.enter("imu_byte_4");
-            return false;
-        }
-        if (!read_value(r, v.imu_byte_5, err)) {
-            err.enter("imu_byte_5");
-            return false;
-        }
-        if (!read_value(r, v.imu_byte_6, err)) {
-            err.enter("imu_byte_6");
-            return false;
-        }
-        if (!read_value(r, v.imu_byte_7, err)) {
-            err.enter("imu_byte_7");
-            return false;
-        }
-        if (!read_value(r, v.nav_byte_8, err)) {
-            err.enter("nav_byte_8");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_9, err)) {
-            err.enter("reserved_byte_9");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_10, err)) {
-            err.enter("reserved_byte_10");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_11, err)) {
-            err.enter("reserved_byte_11");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_12, err)) {
-            err.enter("reserved_byte_12");
-            return false;
-        }
-        if (!read_value(r, v.gnss_byte_13, err)) {
-            err.enter("gnss_byte_13");
-            return false;
-        }
-        if (!read_value(r, v.gnss_byte_14, err)) {
-            err.enter("gnss_byte_14");
-            return false;
-        }
-        if (!read_value(r, v.reserved_byte_15, err)) {
-            err.enter("reserved_byte_15");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBit &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.system_byte_0);
-        write_value(w, v.reserved_byte_1);
-        write_value(w, v.system_byte_2);
-        write_value(w, v.system_byte_3);
-        write_value(w, v.imu_byte_4);
-        write_value(w, v.imu_byte_5);
-        write_value(w, v.imu_byte_6);
-        write_value(w, v.imu_byte_7);
-        write_value(w, v.nav_byte_8);
-        write_value(w, v.reserved_byte_9);
-        write_value(w, v.reserved_byte_10);
-        write_value(w, v.reserved_byte_11);
-        write_value(w, v.reserved_byte_12);
-        write_value(w, v.gnss_byte_13);
-        write_value(w, v.gnss_byte_14);
-        write_value(w, v.reserved_byte_15);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::Cv7ContinuousBit &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::Cv7ContinuousBit &v);
 };
 
 template <> struct Codec<::mipcodec::types::DescriptorRate> {
@@ -11110,28 +8378,9 @@ template <> struct Codec<::mipcodec::types::DescriptorRate> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::DescriptorRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.descriptor, err)) {
-            err.enter("descriptor");
-            return false;
-        }
-        if (!read_value(r, v.decimation, err)) {
-            err.enter("decimation");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::DescriptorRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.descriptor);
-        write_value(w, v.decimation);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::DescriptorRate &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::DescriptorRate &v);
 };
 
 template <> struct Codec<::mipcodec::types::DeviceInfo> {
@@ -11160,48 +8409,9 @@ template <> struct Codec<::mipcodec::types::DeviceInfo> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::DeviceInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.firmware_version, err)) {
-            err.enter("firmware_version");
-            return false;
-        }
-        if (!read_string(r, v.model_name, err)) {
-            err.enter("model_name");
-            return false;
-        }
-        if (!read_string(r, v.model_number, err)) {
-            err.enter("model_number");
-            return false;
-        }
-        if (!read_string(r, v.serial_number, err)) {
-            err.enter("serial_number");
-            return false;
-        }
-        if (!read_string(r, v.lot_number, err)) {
-            err.enter("lot_number");
-            return false;
-        }
-        if (!read_string(r, v.device_options, err)) {
-            err.enter("device_options");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::DeviceInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.firmware_version);
-        write_string(w, v.model_name);
-        write_string(w, v.model_number);
-        write_string(w, v.serial_number);
-        write_string(w, v.lot_number);
-        write_string(w, v.device_options);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::DeviceInfo &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::DeviceInfo &v);
 };
 
 template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
@@ -11222,33 +8432,9 @@ template <> struct Codec<::mipcodec::types::GnssReceiverInfoEntry> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GnssReceiverInfoEntry &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_value(r, v.mip_data_descriptor_set, err)) {
-            err.enter("mip_data_descriptor_set");
-            return false;
-        }
-        if (!read_string(r, v.description, err)) {
-            err.enter("description");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GnssReceiverInfoEntry &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_id);
-        write_value(w, v.mip_data_descriptor_set);
-        write_string(w, v.description);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GnssReceiverInfoEntry &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GnssReceiverInfoEntry &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorUnused> {
@@ -11264,23 +8450,9 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorUnused> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUnused &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUnused &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUnused &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUnused &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorIo> {
@@ -11296,23 +8468,9 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorIo> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorIo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorIo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorIo &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorIo &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorPps> {
@@ -11328,23 +8486,9 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorPps> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorPps &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorPps &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorPps &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorPps &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorEncoder> {
@@ -11360,23 +8504,9 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorEncoder> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorEncoder &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorEncoder &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorEncoder &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorEncoder &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorTimestamp> {
@@ -11392,23 +8522,9 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorTimestamp> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorTimestamp &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehaviorUart> {
@@ -11424,112 +8540,19 @@ template <> struct Codec<::mipcodec::types::GpioBehaviorUart> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUart &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.behavior, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUart &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.behavior);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::GpioBehaviorUart &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::GpioBehaviorUart &v);
 };
 
 template <> struct Codec<::mipcodec::types::GpioBehavior> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::GpioBehavior &v, ::mipcodec::types::GpioFeature selector,
-                     DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // unused
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::GpioBehaviorUnused>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::GpioBehaviorIo>::read(r, std::get<2>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // pps
-            v.value.emplace<3>();
-            return Codec<::mipcodec::types::GpioBehaviorPps>::read(r, std::get<3>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // encoder
-            v.value.emplace<4>();
-            return Codec<::mipcodec::types::GpioBehaviorEncoder>::read(r, std::get<4>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
-            v.value.emplace<5>();
-            return Codec<::mipcodec::types::GpioBehaviorTimestamp>::read(r, std::get<5>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(5)) { // uart
-            v.value.emplace<6>();
-            return Codec<::mipcodec::types::GpioBehaviorUart>::read(r, std::get<6>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::GpioBehavior &v,
-                      ::mipcodec::types::GpioFeature selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // unused
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorUnused>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorIo>::write(w, std::get<2>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // pps
-            if (v.value.index() != 3) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorPps>::write(w, std::get<3>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // encoder
-            if (v.value.index() != 4) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorEncoder>::write(w, std::get<4>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
-            if (v.value.index() != 5) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorTimestamp>::write(w, std::get<5>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(5)) { // uart
-            if (v.value.index() != 6) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::GpioBehaviorUart>::write(w, std::get<6>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::GpioFeature selector);
 };
 
 template <> struct Codec<::mipcodec::types::Gx5BasicStatus> {
@@ -11550,33 +8573,9 @@ template <> struct Codec<::mipcodec::types::Gx5BasicStatus> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::Gx5BasicStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.status_flags, err)) {
-            err.enter("status_flags");
-            return false;
-        }
-        if (!read_value(r, v.system_state, err)) {
-            err.enter("system_state");
-            return false;
-        }
-        if (!read_value(r, v.system_timer, err)) {
-            err.enter("system_timer");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::Gx5BasicStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.status_flags);
-        write_value(w, v.system_state);
-        write_value(w, v.system_timer);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::Gx5BasicStatus &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::Gx5BasicStatus &v);
 };
 
 template <> struct Codec<::mipcodec::types::Gx5DiagnosticStatus> {
@@ -11639,164 +8638,19 @@ template <> struct Codec<::mipcodec::types::Gx5DiagnosticStatus> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::Gx5DiagnosticStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.status_flags, err)) {
-            err.enter("status_flags");
-            return false;
-        }
-        if (!read_value(r, v.system_state, err)) {
-            err.enter("system_state");
-            return false;
-        }
-        if (!read_value(r, v.system_timer, err)) {
-            err.enter("system_timer");
-            return false;
-        }
-        if (!read_value(r, v.gnss_power_state, err)) {
-            err.enter("gnss_power_state");
-            return false;
-        }
-        if (!read_value(r, v.pps_pulse_count, err)) {
-            err.enter("pps_pulse_count");
-            return false;
-        }
-        if (!read_value(r, v.last_pps_time, err)) {
-            err.enter("last_pps_time");
-            return false;
-        }
-        if (!read_value(r, v.imu_stream_enabled, err)) {
-            err.enter("imu_stream_enabled");
-            return false;
-        }
-        if (!read_value(r, v.gnss_stream_enabled, err)) {
-            err.enter("gnss_stream_enabled");
-            return false;
-        }
-        if (!read_value(r, v.filter_stream_enabled, err)) {
-            err.enter("filter_stream_enabled");
-            return false;
-        }
-        if (!read_value(r, v.imu_dropped_packets, err)) {
-            err.enter("imu_dropped_packets");
-            return false;
-        }
-        if (!read_value(r, v.gnss_dropped_packets, err)) {
-            err.enter("gnss_dropped_packets");
-            return false;
-        }
-        if (!read_value(r, v.filter_dropped_packets, err)) {
-            err.enter("filter_dropped_packets");
-            return false;
-        }
-        if (!read_value(r, v.com_bytes_written, err)) {
-            err.enter("com_bytes_written");
-            return false;
-        }
-        if (!read_value(r, v.com_bytes_read, err)) {
-            err.enter("com_bytes_read");
-            return false;
-        }
-        if (!read_value(r, v.com_write_overruns, err)) {
-            err.enter("com_write_overruns");
-            return false;
-        }
-        if (!read_value(r, v.imu_parse_errors, err)) {
-            err.enter("imu_parse_errors");
-            return false;
-        }
-        if (!read_value(r, v.imu_messages_read, err)) {
-            err.enter("imu_messages_read");
-            return false;
-        }
-        if (!read_value(r, v.last_imu_message_time, err)) {
-            err.enter("last_imu_message_time");
-            return false;
-        }
-        if (!read_value(r, v.gnss_parse_errors, err)) {
-            err.enter("gnss_parse_errors");
-            return false;
-        }
-        if (!read_value(r, v.gnss_messages_read, err)) {
-            err.enter("gnss_messages_read");
-            return false;
-        }
-        if (!read_value(r, v.last_gnss_message_time, err)) {
-            err.enter("last_gnss_message_time");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::Gx5DiagnosticStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.status_flags);
-        write_value(w, v.system_state);
-        write_value(w, v.system_timer);
-        write_value(w, v.gnss_power_state);
-        write_value(w, v.pps_pulse_count);
-        write_value(w, v.last_pps_time);
-        write_value(w, v.imu_stream_enabled);
-        write_value(w, v.gnss_stream_enabled);
-        write_value(w, v.filter_stream_enabled);
-        write_value(w, v.imu_dropped_packets);
-        write_value(w, v.gnss_dropped_packets);
-        write_value(w, v.filter_dropped_packets);
-        write_value(w, v.com_bytes_written);
-        write_value(w, v.com_bytes_read);
-        write_value(w, v.com_write_overruns);
-        write_value(w, v.imu_parse_errors);
-        write_value(w, v.imu_messages_read);
-        write_value(w, v.last_imu_message_time);
-        write_value(w, v.gnss_parse_errors);
-        write_value(w, v.gnss_messages_read);
-        write_value(w, v.last_gnss_message_time);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::Gx5DiagnosticStatus &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::Gx5DiagnosticStatus &v);
 };
 
 template <> struct Codec<::mipcodec::types::Gx5DeviceStatus> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::Gx5DeviceStatus &v,
-                     ::mipcodec::types::DeviceStatusSelector selector, DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // basic
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::Gx5BasicStatus>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::Gx5DiagnosticStatus>::read(r, std::get<2>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     ::mipcodec::types::DeviceStatusSelector selector, DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::Gx5DeviceStatus &v,
-                      ::mipcodec::types::DeviceStatusSelector selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // basic
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::Gx5BasicStatus>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::Gx5DiagnosticStatus>::write(w, std::get<2>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::DeviceStatusSelector selector);
 };
 
 template <> struct Codec<::mipcodec::types::Gx5PollDescriptor> {
@@ -11814,28 +8668,9 @@ template <> struct Codec<::mipcodec::types::Gx5PollDescriptor> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::Gx5PollDescriptor &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.descriptor, err)) {
-            err.enter("descriptor");
-            return false;
-        }
-        if (!read_value(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::Gx5PollDescriptor &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.descriptor);
-        write_value(w, v.reserved);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::Gx5PollDescriptor &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::Gx5PollDescriptor &v);
 };
 
 template <> struct Codec<::mipcodec::types::NmeaMessage> {
@@ -11858,38 +8693,9 @@ template <> struct Codec<::mipcodec::types::NmeaMessage> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::NmeaMessage &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.message_id, err)) {
-            err.enter("message_id");
-            return false;
-        }
-        if (!read_value(r, v.talker_id, err)) {
-            err.enter("talker_id");
-            return false;
-        }
-        if (!read_value(r, v.source_desc_set, err)) {
-            err.enter("source_desc_set");
-            return false;
-        }
-        if (!read_value(r, v.decimation, err)) {
-            err.enter("decimation");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::NmeaMessage &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.message_id);
-        write_value(w, v.talker_id);
-        write_value(w, v.source_desc_set);
-        write_value(w, v.decimation);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::NmeaMessage &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::NmeaMessage &v);
 };
 
 template <> struct Codec<::mipcodec::types::SensorRangeEntry> {
@@ -11907,28 +8713,9 @@ template <> struct Codec<::mipcodec::types::SensorRangeEntry> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::SensorRangeEntry &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.setting, err)) {
-            err.enter("setting");
-            return false;
-        }
-        if (!read_value(r, v.range, err)) {
-            err.enter("range");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::SensorRangeEntry &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.setting);
-        write_value(w, v.range);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::SensorRangeEntry &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::SensorRangeEntry &v);
 };
 
 template <> struct Codec<::mipcodec::types::SupportedActionType> {
@@ -11947,60 +8734,17 @@ template <> struct Codec<::mipcodec::types::SupportedActionType> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::SupportedActionType &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::SupportedActionType &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.type);
-        write_value(w, v.count);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::SupportedActionType &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::SupportedActionType &v);
 };
 
 template <> struct Codec<::mipcodec::types::SupportedActions> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
-    static bool read(Reader &r, ::mipcodec::types::SupportedActions &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.max_instances, err)) {
-            err.enter("max_instances");
-            return false;
-        }
-        if (!read_value(r, v.num_entries, err)) {
-            err.enter("num_entries");
-            return false;
-        }
-        if (!read_counted(r, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
-            err.enter("entries");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::SupportedActions &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.max_instances);
-        write_value(w, v.num_entries);
-        write_counted(w, v.entries, static_cast<std::uint64_t>(v.num_entries));
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::SupportedActions &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::SupportedActions &v);
 };
 
 template <> struct Codec<::mipcodec::types::SupportedTriggerType> {
@@ -12019,101 +8763,27 @@ template <> struct Codec<::mipcodec::types::SupportedTriggerType> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::SupportedTriggerType &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::SupportedTriggerType &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.type);
-        write_value(w, v.count);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::SupportedTriggerType &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::SupportedTriggerType &v);
 };
 
 template <> struct Codec<::mipcodec::types::SupportedTriggers> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
-    static bool read(Reader &r, ::mipcodec::types::SupportedTriggers &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.max_instances, err)) {
-            err.enter("max_instances");
-            return false;
-        }
-        if (!read_value(r, v.num_entries, err)) {
-            err.enter("num_entries");
-            return false;
-        }
-        if (!read_counted(r, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
-            err.enter("entries");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::SupportedTriggers &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.max_instances);
-        write_value(w, v.num_entries);
-        write_counted(w, v.entries, static_cast<std::uint64_t>(v.num_entries));
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::SupportedTriggers &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::SupportedTriggers &v);
 };
 
 template <> struct Codec<::mipcodec::types::SupportedEventsInfo> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::SupportedEventsInfo &v,
-                     ::mipcodec::types::SupportedEventsQuery selector, DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::SupportedTriggers>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // action_types
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::SupportedActions>::read(r, std::get<2>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     ::mipcodec::types::SupportedEventsQuery selector, DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::SupportedEventsInfo &v,
-                      ::mipcodec::types::SupportedEventsQuery selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::SupportedTriggers>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // action_types
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::SupportedActions>::write(w, std::get<2>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::SupportedEventsQuery selector);
 };
 
 template <> struct Codec<::mipcodec::types::ThresholdParams> {
@@ -12141,48 +8811,9 @@ template <> struct Codec<::mipcodec::types::ThresholdParams> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::ThresholdParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.field_desc, err)) {
-            err.enter("field_desc");
-            return false;
-        }
-        if (!read_value(r, v.param_id, err)) {
-            err.enter("param_id");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.low_thres, err)) {
-            err.enter("low_thres");
-            return false;
-        }
-        if (!read_value(r, v.high_thres, err)) {
-            err.enter("high_thres");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::ThresholdParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.field_desc);
-        write_value(w, v.param_id);
-        write_value(w, v.type);
-        write_value(w, v.low_thres);
-        write_value(w, v.high_thres);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::ThresholdParams &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::ThresholdParams &v);
 };
 
 template <> struct Codec<::mipcodec::types::TriggerGpioParams> {
@@ -12201,92 +8832,19 @@ template <> struct Codec<::mipcodec::types::TriggerGpioParams> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::TriggerGpioParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::TriggerGpioParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pin);
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::TriggerGpioParams &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::TriggerGpioParams &v);
 };
 
 template <> struct Codec<::mipcodec::types::TriggerParams> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::mipcodec::types::TriggerParams &v, ::mipcodec::types::TriggerType selector,
-                     DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Codec<::mipcodec::types::TriggerGpioParams>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            v.value.emplace<2>();
-            return Codec<::mipcodec::types::ThresholdParams>::read(r, std::get<2>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // combination
-            v.value.emplace<3>();
-            return Codec<::mipcodec::types::CombinationParams>::read(r, std::get<3>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     DecodeError &err);
     static void write(Writer &w, const ::mipcodec::types::TriggerParams &v,
-                      ::mipcodec::types::TriggerType selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (v.value.index() != 0) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::TriggerGpioParams>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::ThresholdParams>::write(w, std::get<2>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // combination
-            if (v.value.index() != 3) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::mipcodec::types::CombinationParams>::write(w, std::get<3>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::mipcodec::types::TriggerType selector);
 };
 
 template <> struct Codec<::mipcodec::types::TriggerStatusEntry> {
@@ -12305,28 +8863,9 @@ template <> struct Codec<::mipcodec::types::TriggerStatusEntry> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mipcodec::types::TriggerStatusEntry &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.status, err)) {
-            err.enter("status");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mipcodec::types::TriggerStatusEntry &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.type);
-        write_value(w, v.status);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mipcodec::types::TriggerStatusEntry &v, DecodeError &err);
+    static void write(Writer &w, const ::mipcodec::types::TriggerStatusEntry &v);
 };
 
 } // namespace mipcodec

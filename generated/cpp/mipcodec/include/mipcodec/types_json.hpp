@@ -2,7 +2,6 @@
 // JSON of the named types of protocol 'mip' (bitfields, structs, unions; enums are generic).
 #pragma once
 
-#include <string>
 #include <variant>
 
 #include "mipcodec/json_codec.hpp"
@@ -976,1994 +975,231 @@ template <> struct Json<::mipcodec::types::TriggerStatus> {
 };
 
 template <> struct Json<::mipcodec::types::ActionGpioParams> {
-    static void write(JsonWriter &w, const ::mipcodec::types::ActionGpioParams &v) {
-        w.begin_object();
-        w.key("pin");
-        json_write_value(w, v.pin);
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::ActionGpioParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pin",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::ActionGpioParams &v);
+    static bool read(const json::Value &in, ::mipcodec::types::ActionGpioParams &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::MessageParams> {
-    static void write(JsonWriter &w, const ::mipcodec::types::MessageParams &v) {
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("decimation");
-        json_write_value(w, v.decimation);
-        w.key("num_fields");
-        json_write_value(w, v.num_fields);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::MessageParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "decimation",
-                                   "num_fields",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("decimation")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.decimation, err)) {
-                err.enter("decimation");
-                return false;
-            }
-        } else {
-            return err.missing("decimation");
-        }
-        if (const json::Value *found = in.find("num_fields")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_fields, err)) {
-                err.enter("num_fields");
-                return false;
-            }
-        } else {
-            return err.missing("num_fields");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_fields), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::MessageParams &v);
+    static bool read(const json::Value &in, ::mipcodec::types::MessageParams &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::ActionParams> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::ActionParams &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::ActionGpioParams>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::MessageParams>::write(w, std::get<2>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::ActionParams &v);
     static bool read(const json::Value &x, ::mipcodec::types::ActionParams &v,
-                     ::mipcodec::types::ActionType selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (x.type != json::Value::Type::null) {
-                return err.fail("expected null (member 'none' has no data)");
-            }
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::ActionGpioParams>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // message
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::MessageParams>::read(x, std::get<2>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::ActionType selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::ActionStatusEntry> {
-    static void write(JsonWriter &w, const ::mipcodec::types::ActionStatusEntry &v) {
-        w.begin_object();
-        w.key("action_type");
-        json_write_value(w, v.action_type);
-        w.key("trigger_id");
-        json_write_value(w, v.trigger_id);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::ActionStatusEntry &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "action_type",
-                                   "trigger_id",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("action_type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.action_type, err)) {
-                err.enter("action_type");
-                return false;
-            }
-        } else {
-            return err.missing("action_type");
-        }
-        if (const json::Value *found = in.find("trigger_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.trigger_id, err)) {
-                err.enter("trigger_id");
-                return false;
-            }
-        } else {
-            return err.missing("trigger_id");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::ActionStatusEntry &v);
+    static bool read(const json::Value &in, ::mipcodec::types::ActionStatusEntry &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::AidingFrameEuler> {
-    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameEuler &v) {
-        w.begin_object();
-        w.key("euler");
-        json_write_array(w, v.euler);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameEuler &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "euler",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("euler")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.euler, err)) {
-                err.enter("euler");
-                return false;
-            }
-        } else {
-            return err.missing("euler");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameEuler &v);
+    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameEuler &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::AidingFrameQuaternion> {
-    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameQuaternion &v) {
-        w.begin_object();
-        w.key("quaternion");
-        json_write_array(w, v.quaternion);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameQuaternion &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "quaternion",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("quaternion")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.quaternion, err)) {
-                err.enter("quaternion");
-                return false;
-            }
-        } else {
-            return err.missing("quaternion");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameQuaternion &v);
+    static bool read(const json::Value &in, ::mipcodec::types::AidingFrameQuaternion &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::AidingFrameRotation> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameRotation &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::AidingFrameEuler>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::AidingFrameQuaternion>::write(w, std::get<2>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingFrameRotation &v);
     static bool read(const json::Value &x, ::mipcodec::types::AidingFrameRotation &v,
-                     ::mipcodec::types::AidingFrameFormat selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // euler
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::AidingFrameEuler>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // quaternion
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::AidingFrameQuaternion>::read(x, std::get<2>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::AidingFrameFormat selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::AidingTime> {
-    static void write(JsonWriter &w, const ::mipcodec::types::AidingTime &v) {
-        w.begin_object();
-        w.key("timebase");
-        json_write_value(w, v.timebase);
-        w.key("reserved");
-        json_write_value(w, v.reserved);
-        w.key("nanoseconds");
-        json_write_value(w, v.nanoseconds);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::AidingTime &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "timebase",
-                                   "reserved",
-                                   "nanoseconds",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("timebase")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.timebase, err)) {
-                err.enter("timebase");
-                return false;
-            }
-        } else {
-            return err.missing("timebase");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved, err)) {
-                err.enter("reserved");
-                return false;
-            }
-        } else {
-            return err.missing("reserved");
-        }
-        if (const json::Value *found = in.find("nanoseconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.nanoseconds, err)) {
-                err.enter("nanoseconds");
-                return false;
-            }
-        } else {
-            return err.missing("nanoseconds");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::AidingTime &v);
+    static bool read(const json::Value &in, ::mipcodec::types::AidingTime &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::CombinationParams> {
-    static void write(JsonWriter &w, const ::mipcodec::types::CombinationParams &v) {
-        w.begin_object();
-        w.key("logic_table");
-        json_write_value(w, v.logic_table);
-        w.key("input_triggers");
-        json_write_array(w, v.input_triggers);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::CombinationParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "logic_table",
-                                   "input_triggers",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("logic_table")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.logic_table, err)) {
-                err.enter("logic_table");
-                return false;
-            }
-        } else {
-            return err.missing("logic_table");
-        }
-        if (const json::Value *found = in.find("input_triggers")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.input_triggers, err)) {
-                err.enter("input_triggers");
-                return false;
-            }
-        } else {
-            return err.missing("input_triggers");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::CombinationParams &v);
+    static bool read(const json::Value &in, ::mipcodec::types::CombinationParams &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::ConstellationSettings> {
-    static void write(JsonWriter &w, const ::mipcodec::types::ConstellationSettings &v) {
-        w.begin_object();
-        w.key("constellation_id");
-        json_write_value(w, v.constellation_id);
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("reserved_channels");
-        json_write_value(w, v.reserved_channels);
-        w.key("max_channels");
-        json_write_value(w, v.max_channels);
-        w.key("option_flags");
-        json_write_value(w, v.option_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::ConstellationSettings &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "constellation_id",
-                                   "enable",
-                                   "reserved_channels",
-                                   "max_channels",
-                                   "option_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("constellation_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.constellation_id, err)) {
-                err.enter("constellation_id");
-                return false;
-            }
-        } else {
-            return err.missing("constellation_id");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("reserved_channels")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_channels, err)) {
-                err.enter("reserved_channels");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_channels");
-        }
-        if (const json::Value *found = in.find("max_channels")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_channels, err)) {
-                err.enter("max_channels");
-                return false;
-            }
-        } else {
-            return err.missing("max_channels");
-        }
-        if (const json::Value *found = in.find("option_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.option_flags, err)) {
-                err.enter("option_flags");
-                return false;
-            }
-        } else {
-            return err.missing("option_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::ConstellationSettings &v);
+    static bool read(const json::Value &in, ::mipcodec::types::ConstellationSettings &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::Cv7ContinuousBit> {
-    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBit &v) {
-        w.begin_object();
-        w.key("system_byte_0");
-        json_write_value(w, v.system_byte_0);
-        w.key("reserved_byte_1");
-        json_write_value(w, v.reserved_byte_1);
-        w.key("system_byte_2");
-        json_write_value(w, v.system_byte_2);
-        w.key("system_byte_3");
-        json_write_value(w, v.system_byte_3);
-        w.key("imu_byte_4");
-        json_write_value(w, v.imu_byte_4);
-        w.key("imu_byte_5");
-        json_write_value(w, v.imu_byte_5);
-        w.key("imu_byte_6");
-        json_write_value(w, v.imu_byte_6);
-        w.key("imu_byte_7");
-        json_write_value(w, v.imu_byte_7);
-        w.key("nav_byte_8");
-        json_write_value(w, v.nav_byte_8);
-        w.key("reserved_byte_9");
-        json_write_value(w, v.reserved_byte_9);
-        w.key("reserved_byte_10");
-        json_write_value(w, v.reserved_byte_10);
-        w.key("reserved_byte_11");
-        json_write_value(w, v.reserved_byte_11);
-        w.key("reserved_byte_12");
-        json_write_value(w, v.reserved_byte_12);
-        w.key("gnss_byte_13");
-        json_write_value(w, v.gnss_byte_13);
-        w.key("gnss_byte_14");
-        json_write_value(w, v.gnss_byte_14);
-        w.key("reserved_byte_15");
-        json_write_value(w, v.reserved_byte_15);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::Cv7ContinuousBit &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "system_byte_0",
-                                   "reserved_byte_1",
-                                   "system_byte_2",
-                                   "system_byte_3",
-                                   "imu_byte_4",
-                                   "imu_byte_5",
-                                   "imu_byte_6",
-                                   "imu_byte_7",
-                                   "nav_byte_8",
-                                   "reserved_byte_9",
-                                   "reserved_byte_10",
-                                   "reserved_byte_11",
-                                   "reserved_byte_12",
-                                   "gnss_byte_13",
-                                   "gnss_byte_14",
-                                   "reserved_byte_15",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("system_byte_0")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_byte_0, err)) {
-                err.enter("system_byte_0");
-                return false;
-            }
-        } else {
-            return err.missing("system_byte_0");
-        }
-        if (const json::Value *found = in.find("reserved_byte_1")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_1, err)) {
-                err.enter("reserved_byte_1");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_1");
-        }
-        if (const json::Value *found = in.find("system_byte_2")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_byte_2, err)) {
-                err.enter("system_byte_2");
-                return false;
-            }
-        } else {
-            return err.missing("system_byte_2");
-        }
-        if (const json::Value *found = in.find("system_byte_3")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_byte_3, err)) {
-                err.enter("system_byte_3");
-                return false;
-            }
-        } else {
-            return err.missing("system_byte_3");
-        }
-        if (const json::Value *found = in.find("imu_byte_4")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_byte_4, err)) {
-                err.enter("imu_byte_4");
-                return false;
-            }
-        } else {
-            return err.missing("imu_byte_4");
-        }
-        if (const json::Value *found = in.find("imu_byte_5")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_byte_5, err)) {
-                err.enter("imu_byte_5");
-                return false;
-            }
-        } else {
-            return err.missing("imu_byte_5");
-        }
-        if (const json::Value *found = in.find("imu_byte_6")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_byte_6, err)) {
-                err.enter("imu_byte_6");
-                return false;
-            }
-        } else {
-            return err.missing("imu_byte_6");
-        }
-        if (const json::Value *found = in.find("imu_byte_7")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_byte_7, err)) {
-                err.enter("imu_byte_7");
-                return false;
-            }
-        } else {
-            return err.missing("imu_byte_7");
-        }
-        if (const json::Value *found = in.find("nav_byte_8")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.nav_byte_8, err)) {
-                err.enter("nav_byte_8");
-                return false;
-            }
-        } else {
-            return err.missing("nav_byte_8");
-        }
-        if (const json::Value *found = in.find("reserved_byte_9")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_9, err)) {
-                err.enter("reserved_byte_9");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_9");
-        }
-        if (const json::Value *found = in.find("reserved_byte_10")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_10, err)) {
-                err.enter("reserved_byte_10");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_10");
-        }
-        if (const json::Value *found = in.find("reserved_byte_11")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_11, err)) {
-                err.enter("reserved_byte_11");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_11");
-        }
-        if (const json::Value *found = in.find("reserved_byte_12")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_12, err)) {
-                err.enter("reserved_byte_12");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_12");
-        }
-        if (const json::Value *found = in.find("gnss_byte_13")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_byte_13, err)) {
-                err.enter("gnss_byte_13");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_byte_13");
-        }
-        if (const json::Value *found = in.find("gnss_byte_14")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_byte_14, err)) {
-                err.enter("gnss_byte_14");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_byte_14");
-        }
-        if (const json::Value *found = in.find("reserved_byte_15")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved_byte_15, err)) {
-                err.enter("reserved_byte_15");
-                return false;
-            }
-        } else {
-            return err.missing("reserved_byte_15");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::Cv7ContinuousBit &v);
+    static bool read(const json::Value &in, ::mipcodec::types::Cv7ContinuousBit &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::DescriptorRate> {
-    static void write(JsonWriter &w, const ::mipcodec::types::DescriptorRate &v) {
-        w.begin_object();
-        w.key("descriptor");
-        json_write_value(w, v.descriptor);
-        w.key("decimation");
-        json_write_value(w, v.decimation);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::DescriptorRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "descriptor",
-                                   "decimation",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("descriptor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.descriptor, err)) {
-                err.enter("descriptor");
-                return false;
-            }
-        } else {
-            return err.missing("descriptor");
-        }
-        if (const json::Value *found = in.find("decimation")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.decimation, err)) {
-                err.enter("decimation");
-                return false;
-            }
-        } else {
-            return err.missing("decimation");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::DescriptorRate &v);
+    static bool read(const json::Value &in, ::mipcodec::types::DescriptorRate &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::DeviceInfo> {
-    static void write(JsonWriter &w, const ::mipcodec::types::DeviceInfo &v) {
-        w.begin_object();
-        w.key("firmware_version");
-        json_write_value(w, v.firmware_version);
-        w.key("model_name");
-        json_write_string(w, v.model_name);
-        w.key("model_number");
-        json_write_string(w, v.model_number);
-        w.key("serial_number");
-        json_write_string(w, v.serial_number);
-        w.key("lot_number");
-        json_write_string(w, v.lot_number);
-        w.key("device_options");
-        json_write_string(w, v.device_options);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::DeviceInfo &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "firmware_version",
-                                   "model_name",
-                                   "model_number",
-                                   "serial_number",
-                                   "lot_number",
-                                   "device_options",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("firmware_version")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.firmware_version, err)) {
-                err.enter("firmware_version");
-                return false;
-            }
-        } else {
-            return err.missing("firmware_version");
-        }
-        if (const json::Value *found = in.find("model_name")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.model_name, err)) {
-                err.enter("model_name");
-                return false;
-            }
-        } else {
-            return err.missing("model_name");
-        }
-        if (const json::Value *found = in.find("model_number")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.model_number, err)) {
-                err.enter("model_number");
-                return false;
-            }
-        } else {
-            return err.missing("model_number");
-        }
-        if (const json::Value *found = in.find("serial_number")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.serial_number, err)) {
-                err.enter("serial_number");
-                return false;
-            }
-        } else {
-            return err.missing("serial_number");
-        }
-        if (const json::Value *found = in.find("lot_number")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.lot_number, err)) {
-                err.enter("lot_number");
-                return false;
-            }
-        } else {
-            return err.missing("lot_number");
-        }
-        if (const json::Value *found = in.find("device_options")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.device_options, err)) {
-                err.enter("device_options");
-                return false;
-            }
-        } else {
-            return err.missing("device_options");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::DeviceInfo &v);
+    static bool read(const json::Value &in, ::mipcodec::types::DeviceInfo &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GnssReceiverInfoEntry> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GnssReceiverInfoEntry &v) {
-        w.begin_object();
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        w.key("mip_data_descriptor_set");
-        json_write_value(w, v.mip_data_descriptor_set);
-        w.key("description");
-        json_write_string(w, v.description);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GnssReceiverInfoEntry &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "receiver_id",
-                                   "mip_data_descriptor_set",
-                                   "description",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("mip_data_descriptor_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mip_data_descriptor_set, err)) {
-                err.enter("mip_data_descriptor_set");
-                return false;
-            }
-        } else {
-            return err.missing("mip_data_descriptor_set");
-        }
-        if (const json::Value *found = in.find("description")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.description, err)) {
-                err.enter("description");
-                return false;
-            }
-        } else {
-            return err.missing("description");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GnssReceiverInfoEntry &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GnssReceiverInfoEntry &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorUnused> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUnused &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUnused &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUnused &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUnused &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorIo> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorIo &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorIo &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorIo &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorIo &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorPps> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorPps &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorPps &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorPps &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorPps &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorEncoder> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorEncoder &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorEncoder &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorEncoder &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorEncoder &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorTimestamp> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorTimestamp &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorTimestamp &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehaviorUart> {
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUart &v) {
-        w.begin_object();
-        w.key("behavior");
-        json_write_value(w, v.behavior);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUart &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "behavior",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.behavior, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehaviorUart &v);
+    static bool read(const json::Value &in, ::mipcodec::types::GpioBehaviorUart &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::GpioBehavior> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehavior &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::GpioBehaviorUnused>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::GpioBehaviorIo>::write(w, std::get<2>(v.value));
-            return;
-        case 3:
-            Json<::mipcodec::types::GpioBehaviorPps>::write(w, std::get<3>(v.value));
-            return;
-        case 4:
-            Json<::mipcodec::types::GpioBehaviorEncoder>::write(w, std::get<4>(v.value));
-            return;
-        case 5:
-            Json<::mipcodec::types::GpioBehaviorTimestamp>::write(w, std::get<5>(v.value));
-            return;
-        case 6:
-            Json<::mipcodec::types::GpioBehaviorUart>::write(w, std::get<6>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::GpioBehavior &v);
     static bool read(const json::Value &x, ::mipcodec::types::GpioBehavior &v,
-                     ::mipcodec::types::GpioFeature selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // unused
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::GpioBehaviorUnused>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::GpioBehaviorIo>::read(x, std::get<2>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // pps
-            v.value.emplace<3>();
-            return Json<::mipcodec::types::GpioBehaviorPps>::read(x, std::get<3>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // encoder
-            v.value.emplace<4>();
-            return Json<::mipcodec::types::GpioBehaviorEncoder>::read(x, std::get<4>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(4)) { // timestamp
-            v.value.emplace<5>();
-            return Json<::mipcodec::types::GpioBehaviorTimestamp>::read(x, std::get<5>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(5)) { // uart
-            v.value.emplace<6>();
-            return Json<::mipcodec::types::GpioBehaviorUart>::read(x, std::get<6>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::GpioFeature selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::Gx5BasicStatus> {
-    static void write(JsonWriter &w, const ::mipcodec::types::Gx5BasicStatus &v) {
-        w.begin_object();
-        w.key("status_flags");
-        json_write_value(w, v.status_flags);
-        w.key("system_state");
-        json_write_value(w, v.system_state);
-        w.key("system_timer");
-        json_write_value(w, v.system_timer);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::Gx5BasicStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "status_flags",
-                                   "system_state",
-                                   "system_timer",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("status_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_flags, err)) {
-                err.enter("status_flags");
-                return false;
-            }
-        } else {
-            return err.missing("status_flags");
-        }
-        if (const json::Value *found = in.find("system_state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_state, err)) {
-                err.enter("system_state");
-                return false;
-            }
-        } else {
-            return err.missing("system_state");
-        }
-        if (const json::Value *found = in.find("system_timer")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_timer, err)) {
-                err.enter("system_timer");
-                return false;
-            }
-        } else {
-            return err.missing("system_timer");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5BasicStatus &v);
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5BasicStatus &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::Gx5DiagnosticStatus> {
-    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DiagnosticStatus &v) {
-        w.begin_object();
-        w.key("status_flags");
-        json_write_value(w, v.status_flags);
-        w.key("system_state");
-        json_write_value(w, v.system_state);
-        w.key("system_timer");
-        json_write_value(w, v.system_timer);
-        w.key("gnss_power_state");
-        json_write_value(w, v.gnss_power_state);
-        w.key("pps_pulse_count");
-        json_write_value(w, v.pps_pulse_count);
-        w.key("last_pps_time");
-        json_write_value(w, v.last_pps_time);
-        w.key("imu_stream_enabled");
-        json_write_value(w, v.imu_stream_enabled);
-        w.key("gnss_stream_enabled");
-        json_write_value(w, v.gnss_stream_enabled);
-        w.key("filter_stream_enabled");
-        json_write_value(w, v.filter_stream_enabled);
-        w.key("imu_dropped_packets");
-        json_write_value(w, v.imu_dropped_packets);
-        w.key("gnss_dropped_packets");
-        json_write_value(w, v.gnss_dropped_packets);
-        w.key("filter_dropped_packets");
-        json_write_value(w, v.filter_dropped_packets);
-        w.key("com_bytes_written");
-        json_write_value(w, v.com_bytes_written);
-        w.key("com_bytes_read");
-        json_write_value(w, v.com_bytes_read);
-        w.key("com_write_overruns");
-        json_write_value(w, v.com_write_overruns);
-        w.key("imu_parse_errors");
-        json_write_value(w, v.imu_parse_errors);
-        w.key("imu_messages_read");
-        json_write_value(w, v.imu_messages_read);
-        w.key("last_imu_message_time");
-        json_write_value(w, v.last_imu_message_time);
-        w.key("gnss_parse_errors");
-        json_write_value(w, v.gnss_parse_errors);
-        w.key("gnss_messages_read");
-        json_write_value(w, v.gnss_messages_read);
-        w.key("last_gnss_message_time");
-        json_write_value(w, v.last_gnss_message_time);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::Gx5DiagnosticStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "status_flags",        "system_state",         "system_timer",
-                                   "gnss_power_state",    "pps_pulse_count",      "last_pps_time",
-                                   "imu_stream_enabled",  "gnss_stream_enabled",  "filter_stream_enabled",
-                                   "imu_dropped_packets", "gnss_dropped_packets", "filter_dropped_packets",
-                                   "com_bytes_written",   "com_bytes_read",       "com_write_overruns",
-                                   "imu_parse_errors",    "imu_messages_read",    "last_imu_message_time",
-                                   "gnss_parse_errors",   "gnss_messages_read",   "last_gnss_message_time",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("status_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_flags, err)) {
-                err.enter("status_flags");
-                return false;
-            }
-        } else {
-            return err.missing("status_flags");
-        }
-        if (const json::Value *found = in.find("system_state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_state, err)) {
-                err.enter("system_state");
-                return false;
-            }
-        } else {
-            return err.missing("system_state");
-        }
-        if (const json::Value *found = in.find("system_timer")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.system_timer, err)) {
-                err.enter("system_timer");
-                return false;
-            }
-        } else {
-            return err.missing("system_timer");
-        }
-        if (const json::Value *found = in.find("gnss_power_state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_power_state, err)) {
-                err.enter("gnss_power_state");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_power_state");
-        }
-        if (const json::Value *found = in.find("pps_pulse_count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pps_pulse_count, err)) {
-                err.enter("pps_pulse_count");
-                return false;
-            }
-        } else {
-            return err.missing("pps_pulse_count");
-        }
-        if (const json::Value *found = in.find("last_pps_time")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.last_pps_time, err)) {
-                err.enter("last_pps_time");
-                return false;
-            }
-        } else {
-            return err.missing("last_pps_time");
-        }
-        if (const json::Value *found = in.find("imu_stream_enabled")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_stream_enabled, err)) {
-                err.enter("imu_stream_enabled");
-                return false;
-            }
-        } else {
-            return err.missing("imu_stream_enabled");
-        }
-        if (const json::Value *found = in.find("gnss_stream_enabled")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_stream_enabled, err)) {
-                err.enter("gnss_stream_enabled");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_stream_enabled");
-        }
-        if (const json::Value *found = in.find("filter_stream_enabled")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.filter_stream_enabled, err)) {
-                err.enter("filter_stream_enabled");
-                return false;
-            }
-        } else {
-            return err.missing("filter_stream_enabled");
-        }
-        if (const json::Value *found = in.find("imu_dropped_packets")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_dropped_packets, err)) {
-                err.enter("imu_dropped_packets");
-                return false;
-            }
-        } else {
-            return err.missing("imu_dropped_packets");
-        }
-        if (const json::Value *found = in.find("gnss_dropped_packets")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_dropped_packets, err)) {
-                err.enter("gnss_dropped_packets");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_dropped_packets");
-        }
-        if (const json::Value *found = in.find("filter_dropped_packets")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.filter_dropped_packets, err)) {
-                err.enter("filter_dropped_packets");
-                return false;
-            }
-        } else {
-            return err.missing("filter_dropped_packets");
-        }
-        if (const json::Value *found = in.find("com_bytes_written")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.com_bytes_written, err)) {
-                err.enter("com_bytes_written");
-                return false;
-            }
-        } else {
-            return err.missing("com_bytes_written");
-        }
-        if (const json::Value *found = in.find("com_bytes_read")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.com_bytes_read, err)) {
-                err.enter("com_bytes_read");
-                return false;
-            }
-        } else {
-            return err.missing("com_bytes_read");
-        }
-        if (const json::Value *found = in.find("com_write_overruns")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.com_write_overruns, err)) {
-                err.enter("com_write_overruns");
-                return false;
-            }
-        } else {
-            return err.missing("com_write_overruns");
-        }
-        if (const json::Value *found = in.find("imu_parse_errors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_parse_errors, err)) {
-                err.enter("imu_parse_errors");
-                return false;
-            }
-        } else {
-            return err.missing("imu_parse_errors");
-        }
-        if (const json::Value *found = in.find("imu_messages_read")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.imu_messages_read, err)) {
-                err.enter("imu_messages_read");
-                return false;
-            }
-        } else {
-            return err.missing("imu_messages_read");
-        }
-        if (const json::Value *found = in.find("last_imu_message_time")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.last_imu_message_time, err)) {
-                err.enter("last_imu_message_time");
-                return false;
-            }
-        } else {
-            return err.missing("last_imu_message_time");
-        }
-        if (const json::Value *found = in.find("gnss_parse_errors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_parse_errors, err)) {
-                err.enter("gnss_parse_errors");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_parse_errors");
-        }
-        if (const json::Value *found = in.find("gnss_messages_read")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gnss_messages_read, err)) {
-                err.enter("gnss_messages_read");
-                return false;
-            }
-        } else {
-            return err.missing("gnss_messages_read");
-        }
-        if (const json::Value *found = in.find("last_gnss_message_time")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.last_gnss_message_time, err)) {
-                err.enter("last_gnss_message_time");
-                return false;
-            }
-        } else {
-            return err.missing("last_gnss_message_time");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DiagnosticStatus &v);
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5DiagnosticStatus &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::Gx5DeviceStatus> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DeviceStatus &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::Gx5BasicStatus>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::Gx5DiagnosticStatus>::write(w, std::get<2>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5DeviceStatus &v);
     static bool read(const json::Value &x, ::mipcodec::types::Gx5DeviceStatus &v,
-                     ::mipcodec::types::DeviceStatusSelector selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // basic
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::Gx5BasicStatus>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // diagnostic
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::Gx5DiagnosticStatus>::read(x, std::get<2>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::DeviceStatusSelector selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::Gx5PollDescriptor> {
-    static void write(JsonWriter &w, const ::mipcodec::types::Gx5PollDescriptor &v) {
-        w.begin_object();
-        w.key("descriptor");
-        json_write_value(w, v.descriptor);
-        w.key("reserved");
-        json_write_value(w, v.reserved);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::Gx5PollDescriptor &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "descriptor",
-                                   "reserved",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("descriptor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.descriptor, err)) {
-                err.enter("descriptor");
-                return false;
-            }
-        } else {
-            return err.missing("descriptor");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved, err)) {
-                err.enter("reserved");
-                return false;
-            }
-        } else {
-            return err.missing("reserved");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::Gx5PollDescriptor &v);
+    static bool read(const json::Value &in, ::mipcodec::types::Gx5PollDescriptor &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::NmeaMessage> {
-    static void write(JsonWriter &w, const ::mipcodec::types::NmeaMessage &v) {
-        w.begin_object();
-        w.key("message_id");
-        json_write_value(w, v.message_id);
-        w.key("talker_id");
-        json_write_value(w, v.talker_id);
-        w.key("source_desc_set");
-        json_write_value(w, v.source_desc_set);
-        w.key("decimation");
-        json_write_value(w, v.decimation);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::NmeaMessage &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "message_id",
-                                   "talker_id",
-                                   "source_desc_set",
-                                   "decimation",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("message_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.message_id, err)) {
-                err.enter("message_id");
-                return false;
-            }
-        } else {
-            return err.missing("message_id");
-        }
-        if (const json::Value *found = in.find("talker_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.talker_id, err)) {
-                err.enter("talker_id");
-                return false;
-            }
-        } else {
-            return err.missing("talker_id");
-        }
-        if (const json::Value *found = in.find("source_desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source_desc_set, err)) {
-                err.enter("source_desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("source_desc_set");
-        }
-        if (const json::Value *found = in.find("decimation")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.decimation, err)) {
-                err.enter("decimation");
-                return false;
-            }
-        } else {
-            return err.missing("decimation");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::NmeaMessage &v);
+    static bool read(const json::Value &in, ::mipcodec::types::NmeaMessage &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SensorRangeEntry> {
-    static void write(JsonWriter &w, const ::mipcodec::types::SensorRangeEntry &v) {
-        w.begin_object();
-        w.key("setting");
-        json_write_value(w, v.setting);
-        w.key("range");
-        json_write_value(w, v.range);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::SensorRangeEntry &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "setting",
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("setting")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.setting, err)) {
-                err.enter("setting");
-                return false;
-            }
-        } else {
-            return err.missing("setting");
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.range, err)) {
-                err.enter("range");
-                return false;
-            }
-        } else {
-            return err.missing("range");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::SensorRangeEntry &v);
+    static bool read(const json::Value &in, ::mipcodec::types::SensorRangeEntry &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SupportedActionType> {
-    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActionType &v) {
-        w.begin_object();
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("count");
-        json_write_value(w, v.count);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::SupportedActionType &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "type",
-                                   "count",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActionType &v);
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedActionType &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SupportedActions> {
-    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActions &v) {
-        w.begin_object();
-        w.key("max_instances");
-        json_write_value(w, v.max_instances);
-        w.key("num_entries");
-        json_write_value(w, v.num_entries);
-        w.key("entries");
-        json_write_array(w, v.entries);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::SupportedActions &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "max_instances",
-                                   "num_entries",
-                                   "entries",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("max_instances")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_instances, err)) {
-                err.enter("max_instances");
-                return false;
-            }
-        } else {
-            return err.missing("max_instances");
-        }
-        if (const json::Value *found = in.find("num_entries")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_entries, err)) {
-                err.enter("num_entries");
-                return false;
-            }
-        } else {
-            return err.missing("num_entries");
-        }
-        if (const json::Value *found = in.find("entries")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
-                err.enter("entries");
-                return false;
-            }
-        } else {
-            return err.missing("entries");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedActions &v);
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedActions &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SupportedTriggerType> {
-    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggerType &v) {
-        w.begin_object();
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("count");
-        json_write_value(w, v.count);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggerType &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "type",
-                                   "count",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggerType &v);
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggerType &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SupportedTriggers> {
-    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggers &v) {
-        w.begin_object();
-        w.key("max_instances");
-        json_write_value(w, v.max_instances);
-        w.key("num_entries");
-        json_write_value(w, v.num_entries);
-        w.key("entries");
-        json_write_array(w, v.entries);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggers &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "max_instances",
-                                   "num_entries",
-                                   "entries",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("max_instances")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_instances, err)) {
-                err.enter("max_instances");
-                return false;
-            }
-        } else {
-            return err.missing("max_instances");
-        }
-        if (const json::Value *found = in.find("num_entries")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_entries, err)) {
-                err.enter("num_entries");
-                return false;
-            }
-        } else {
-            return err.missing("num_entries");
-        }
-        if (const json::Value *found = in.find("entries")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.entries, static_cast<std::uint64_t>(v.num_entries), err)) {
-                err.enter("entries");
-                return false;
-            }
-        } else {
-            return err.missing("entries");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedTriggers &v);
+    static bool read(const json::Value &in, ::mipcodec::types::SupportedTriggers &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::SupportedEventsInfo> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::SupportedEventsInfo &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::SupportedTriggers>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::SupportedActions>::write(w, std::get<2>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::SupportedEventsInfo &v);
     static bool read(const json::Value &x, ::mipcodec::types::SupportedEventsInfo &v,
-                     ::mipcodec::types::SupportedEventsQuery selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(1)) { // trigger_types
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::SupportedTriggers>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // action_types
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::SupportedActions>::read(x, std::get<2>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::SupportedEventsQuery selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::ThresholdParams> {
-    static void write(JsonWriter &w, const ::mipcodec::types::ThresholdParams &v) {
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("field_desc");
-        json_write_value(w, v.field_desc);
-        w.key("param_id");
-        json_write_value(w, v.param_id);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("low_thres");
-        json_write_value(w, v.low_thres);
-        w.key("high_thres");
-        json_write_value(w, v.high_thres);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::ThresholdParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "field_desc",
-                                   "param_id",
-                                   "type",
-                                   "low_thres",
-                                   "high_thres",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("field_desc")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.field_desc, err)) {
-                err.enter("field_desc");
-                return false;
-            }
-        } else {
-            return err.missing("field_desc");
-        }
-        if (const json::Value *found = in.find("param_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.param_id, err)) {
-                err.enter("param_id");
-                return false;
-            }
-        } else {
-            return err.missing("param_id");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("low_thres")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low_thres, err)) {
-                err.enter("low_thres");
-                return false;
-            }
-        } else {
-            return err.missing("low_thres");
-        }
-        if (const json::Value *found = in.find("high_thres")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_thres, err)) {
-                err.enter("high_thres");
-                return false;
-            }
-        } else {
-            return err.missing("high_thres");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::ThresholdParams &v);
+    static bool read(const json::Value &in, ::mipcodec::types::ThresholdParams &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::TriggerGpioParams> {
-    static void write(JsonWriter &w, const ::mipcodec::types::TriggerGpioParams &v) {
-        w.begin_object();
-        w.key("pin");
-        json_write_value(w, v.pin);
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::TriggerGpioParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pin",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::TriggerGpioParams &v);
+    static bool read(const json::Value &in, ::mipcodec::types::TriggerGpioParams &v, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::TriggerParams> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::mipcodec::types::TriggerParams &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::mipcodec::types::TriggerGpioParams>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::mipcodec::types::ThresholdParams>::write(w, std::get<2>(v.value));
-            return;
-        case 3:
-            Json<::mipcodec::types::CombinationParams>::write(w, std::get<3>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::mipcodec::types::TriggerParams &v);
     static bool read(const json::Value &x, ::mipcodec::types::TriggerParams &v,
-                     ::mipcodec::types::TriggerType selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (x.type != json::Value::Type::null) {
-                return err.fail("expected null (member 'none' has no data)");
-            }
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Json<::mipcodec::types::TriggerGpioParams>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            v.value.emplace<2>();
-            return Json<::mipcodec::types::ThresholdParams>::read(x, std::get<2>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(3)) { // combination
-            v.value.emplace<3>();
-            return Json<::mipcodec::types::CombinationParams>::read(x, std::get<3>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::mipcodec::types::TriggerType selector, JsonError &err);
 };
 
 template <> struct Json<::mipcodec::types::TriggerStatusEntry> {
-    static void write(JsonWriter &w, const ::mipcodec::types::TriggerStatusEntry &v) {
-        w.begin_object();
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("status");
-        json_write_value(w, v.status);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mipcodec::types::TriggerStatusEntry &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "type",
-                                   "status",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("status")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status, err)) {
-                err.enter("status");
-                return false;
-            }
-        } else {
-            return err.missing("status");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mipcodec::types::TriggerStatusEntry &v);
+    static bool read(const json::Value &in, ::mipcodec::types::TriggerStatusEntry &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -4,7 +4,9 @@
 // sends the command over a Connection (transport.hpp) and waits for its result. With a device
 // selected, a command or function that device does not support is refused before sending
 // (StartOptions::check_device = false overrides). Returns Reply<R> (the typed reply field in
-// `value`) when the command answers with one, else Call.
+// `value`) when the command answers with one, else Call. The functions are defined in
+// src/commands.cpp (compiled into the library): a program instantiates Connection::run only for
+// the commands it sends itself.
 #pragma once
 
 #include <optional>
@@ -30,87 +32,44 @@ namespace base {
 
 /// Ping
 namespace ping {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::Ping v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace ping
 
 /// Get device messages
 namespace get_device_messages {
-inline Reply<::mscipcodec::base::DeviceMessages> call(Connection &connection,
-                                                      const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::GetDeviceMessages v{};
-        return reply_of<::mscipcodec::base::DeviceMessages>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::base::DeviceMessages> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_messages
 
 /// Device reset
 namespace device_reset {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::DeviceReset v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace device_reset
 
 /// Get device model
 namespace get_device_model {
-inline Reply<::mscipcodec::base::DeviceModel> call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::GetDeviceModel v{};
-        return reply_of<::mscipcodec::base::DeviceModel>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::base::DeviceModel> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_model
 
 /// Get device serial number
 namespace get_device_sn {
-inline Reply<::mscipcodec::base::DeviceSn> call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::GetDeviceSn v{};
-        return reply_of<::mscipcodec::base::DeviceSn>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::base::DeviceSn> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_sn
 
 /// Get device firmware
 namespace get_device_fw {
-inline Reply<::mscipcodec::base::DeviceFw> call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::GetDeviceFw v{};
-        return reply_of<::mscipcodec::base::DeviceFw>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::base::DeviceFw> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_fw
 
 /// Get device calibration date
 namespace get_device_cal {
-inline Reply<::mscipcodec::base::DeviceCal> call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::GetDeviceCal v{};
-        return reply_of<::mscipcodec::base::DeviceCal>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::base::DeviceCal> call(Connection &connection, const StartOptions &options = {});
 } // namespace get_device_cal
 
 /// Correlate GPS time
 namespace correlate_gps_time {
-inline Call call(Connection &connection, const decltype(::mscipcodec::base::CorrelateGpsTime::week) &week,
-                 const decltype(::mscipcodec::base::CorrelateGpsTime::seconds) &seconds,
-                 const StartOptions &options = {}) {
-    {
-        ::mscipcodec::base::CorrelateGpsTime v{};
-        v.week = week;
-        v.seconds = seconds;
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const decltype(::mscipcodec::base::CorrelateGpsTime::week) &week,
+          const decltype(::mscipcodec::base::CorrelateGpsTime::seconds) &seconds,
+          const StartOptions &options = {});
 } // namespace correlate_gps_time
 } // namespace base
 
@@ -119,474 +78,136 @@ namespace imu_config {
 
 /// UART baud rate configure
 namespace uart_baud_rate {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mscipcodec::imu_config::UartBaudRate::baud_rate)::value_type &baud_rate,
-      const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::UartBaudRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.baud_rate = baud_rate;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::UartBaudRateResponse> read(Connection &connection,
-                                                                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::UartBaudRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::UartBaudRateResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::UartBaudRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::UartBaudRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::UartBaudRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::UartBaudRate::baud_rate)::value_type &baud_rate,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::UartBaudRateResponse> read(Connection &connection,
+                                                           const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace uart_baud_rate
 
 /// Configure filter
 namespace filter {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::Filter::bandwidth)::value_type &bandwidth,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::Filter v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.bandwidth = bandwidth;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::FilterResponse> read(Connection &connection,
-                                                            const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::Filter v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::FilterResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::Filter v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::Filter v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::Filter v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::Filter::bandwidth)::value_type &bandwidth,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::FilterResponse> read(Connection &connection,
+                                                     const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace filter
 
 /// IMU sample rate configure
 namespace sample_rate {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mscipcodec::imu_config::SampleRate::decimation)::value_type &decimation,
-      const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SampleRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.decimation = decimation;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::SampleRateResponse> read(Connection &connection,
-                                                                const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SampleRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::SampleRateResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SampleRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SampleRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SampleRate v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::SampleRate::decimation)::value_type &decimation,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::SampleRateResponse> read(Connection &connection,
+                                                         const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace sample_rate
 
 /// Select sensors (Rev A)
 namespace select_sensors {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mscipcodec::imu_config::SelectSensors::reserved)::value_type &reserved,
-      const typename decltype(::mscipcodec::imu_config::SelectSensors::sensors)::value_type &sensors,
-      const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensors v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.reserved = reserved;
-        v.sensors = sensors;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::SelectSensorsResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensors v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::SelectSensorsResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensors v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensors v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensors v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::SelectSensors::reserved)::value_type &reserved,
+           const typename decltype(::mscipcodec::imu_config::SelectSensors::sensors)::value_type &sensors,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::SelectSensorsResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace select_sensors
 
 /// Get IMU internal sample rate
 namespace get_internal_sample_rate {
-inline Reply<::mscipcodec::imu_config::InternalSampleRate> call(Connection &connection,
-                                                                const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GetInternalSampleRate v{};
-        return reply_of<::mscipcodec::imu_config::InternalSampleRate>(connection.run(v, options));
-    }
-}
+Reply<::mscipcodec::imu_config::InternalSampleRate> call(Connection &connection,
+                                                         const StartOptions &options = {});
 } // namespace get_internal_sample_rate
 
 /// Config accel range
 namespace accel_range {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::AccelRange::range)::value_type &range,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.range = range;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::AccelRangeResponse> read(Connection &connection,
-                                                                const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::AccelRangeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::AccelRange::range)::value_type &range,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::AccelRangeResponse> read(Connection &connection,
+                                                         const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace accel_range
 
 /// Configure gyro range
 namespace gyro_range {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::GyroRange::range)::value_type &range,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GyroRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.range = range;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::GyroRangeResponse> read(Connection &connection,
-                                                               const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GyroRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::GyroRangeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GyroRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GyroRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::GyroRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::GyroRange::range)::value_type &range,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::GyroRangeResponse> read(Connection &connection,
+                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace gyro_range
 
 /// Configure all
 namespace config_all {
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::ConfigAll v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::ConfigAll v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::ConfigAll v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace config_all
 
 /// Data on/off
 namespace data_on_off {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::DataOnOff::control)::value_type &control,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::DataOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.control = control;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::DataOnOffResponse> read(Connection &connection,
-                                                               const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::DataOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::DataOnOffResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::DataOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::DataOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::DataOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::DataOnOff::control)::value_type &control,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::DataOnOffResponse> read(Connection &connection,
+                                                        const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace data_on_off
 
 /// XTRIG on/off
 namespace xtrig_on_off {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::XtrigOnOff::control)::value_type &control,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::XtrigOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.control = control;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::XtrigOnOffResponse> read(Connection &connection,
-                                                                const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::XtrigOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::XtrigOnOffResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::XtrigOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::XtrigOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::XtrigOnOff v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::XtrigOnOff::control)::value_type &control,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::XtrigOnOffResponse> read(Connection &connection,
+                                                         const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace xtrig_on_off
 
 /// Select sensors (Rev B)
 namespace select_sensors_rev_b {
-inline Call
-write(Connection &connection,
-      const typename decltype(::mscipcodec::imu_config::SelectSensorsRevB::sensors)::value_type &sensors,
-      const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensorsRevB v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.sensors = sensors;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::SelectSensorsRevBResponse> read(Connection &connection,
-                                                                       const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensorsRevB v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::SelectSensorsRevBResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensorsRevB v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensorsRevB v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::SelectSensorsRevB v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::SelectSensorsRevB::sensors)::value_type &sensors,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::SelectSensorsRevBResponse> read(Connection &connection,
+                                                                const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace select_sensors_rev_b
 
 /// Config aux accel range
 namespace aux_accel_range {
-inline Call write(Connection &connection,
-                  const typename decltype(::mscipcodec::imu_config::AuxAccelRange::range)::value_type &range,
-                  const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AuxAccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::write;
-        v.range = range;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::mscipcodec::imu_config::AuxAccelRangeResponse> read(Connection &connection,
-                                                                   const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AuxAccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::read;
-        return reply_of<::mscipcodec::imu_config::AuxAccelRangeResponse>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AuxAccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::save;
-        return connection.run(v, options);
-    }
-}
-inline Call load(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AuxAccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::load;
-        return connection.run(v, options);
-    }
-}
-inline Call default_(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::mscipcodec::imu_config::AuxAccelRange v{};
-        v.function = ::mscipcodec::types::FunctionCode::default_;
-        return connection.run(v, options);
-    }
-}
+Call write(Connection &connection,
+           const typename decltype(::mscipcodec::imu_config::AuxAccelRange::range)::value_type &range,
+           const StartOptions &options = {});
+Reply<::mscipcodec::imu_config::AuxAccelRangeResponse> read(Connection &connection,
+                                                            const StartOptions &options = {});
+Call save(Connection &connection, const StartOptions &options = {});
+Call load(Connection &connection, const StartOptions &options = {});
+Call default_(Connection &connection, const StartOptions &options = {});
 } // namespace aux_accel_range
 } // namespace imu_config
 

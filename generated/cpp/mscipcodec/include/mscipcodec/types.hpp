@@ -5,7 +5,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <variant>
 
@@ -25,63 +24,10 @@ enum class AccelRange : std::uint8_t {
 };
 
 /// Spec name of a value ("range_2g"), or nullptr when the value has no name.
-inline const char *to_string(AccelRange v) {
-    if (v == AccelRange::range_2g) {
-        return "range_2g";
-    }
-    if (v == AccelRange::range_4g) {
-        return "range_4g";
-    }
-    if (v == AccelRange::range_8g) {
-        return "range_8g";
-    }
-    if (v == AccelRange::range_10g) {
-        return "range_10g";
-    }
-    if (v == AccelRange::range_15g) {
-        return "range_15g";
-    }
-    if (v == AccelRange::range_20g) {
-        return "range_20g";
-    }
-    if (v == AccelRange::range_40g) {
-        return "range_40g";
-    }
-    return nullptr;
-}
+const char *to_string(AccelRange v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, AccelRange &out) {
-    if (std::strcmp(name, "range_2g") == 0) {
-        out = AccelRange::range_2g;
-        return true;
-    }
-    if (std::strcmp(name, "range_4g") == 0) {
-        out = AccelRange::range_4g;
-        return true;
-    }
-    if (std::strcmp(name, "range_8g") == 0) {
-        out = AccelRange::range_8g;
-        return true;
-    }
-    if (std::strcmp(name, "range_10g") == 0) {
-        out = AccelRange::range_10g;
-        return true;
-    }
-    if (std::strcmp(name, "range_15g") == 0) {
-        out = AccelRange::range_15g;
-        return true;
-    }
-    if (std::strcmp(name, "range_20g") == 0) {
-        out = AccelRange::range_20g;
-        return true;
-    }
-    if (std::strcmp(name, "range_40g") == 0) {
-        out = AccelRange::range_40g;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, AccelRange &out);
 
 /// UART baud rate. Unknown values are kept (an enum class holds any std::uint32_t).
 enum class BaudRate : std::uint32_t {
@@ -94,56 +40,10 @@ enum class BaudRate : std::uint32_t {
 };
 
 /// Spec name of a value ("baud_9600"), or nullptr when the value has no name.
-inline const char *to_string(BaudRate v) {
-    if (v == BaudRate::baud_9600) {
-        return "baud_9600";
-    }
-    if (v == BaudRate::baud_19200) {
-        return "baud_19200";
-    }
-    if (v == BaudRate::baud_115200) {
-        return "baud_115200";
-    }
-    if (v == BaudRate::baud_230400) {
-        return "baud_230400";
-    }
-    if (v == BaudRate::baud_460800) {
-        return "baud_460800";
-    }
-    if (v == BaudRate::baud_921600) {
-        return "baud_921600";
-    }
-    return nullptr;
-}
+const char *to_string(BaudRate v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, BaudRate &out) {
-    if (std::strcmp(name, "baud_9600") == 0) {
-        out = BaudRate::baud_9600;
-        return true;
-    }
-    if (std::strcmp(name, "baud_19200") == 0) {
-        out = BaudRate::baud_19200;
-        return true;
-    }
-    if (std::strcmp(name, "baud_115200") == 0) {
-        out = BaudRate::baud_115200;
-        return true;
-    }
-    if (std::strcmp(name, "baud_230400") == 0) {
-        out = BaudRate::baud_230400;
-        return true;
-    }
-    if (std::strcmp(name, "baud_460800") == 0) {
-        out = BaudRate::baud_460800;
-        return true;
-    }
-    if (std::strcmp(name, "baud_921600") == 0) {
-        out = BaudRate::baud_921600;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, BaudRate &out);
 
 /// Error code. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class ErrorCode : std::uint8_t {
@@ -155,49 +55,10 @@ enum class ErrorCode : std::uint8_t {
 };
 
 /// Spec name of a value ("ok"), or nullptr when the value has no name.
-inline const char *to_string(ErrorCode v) {
-    if (v == ErrorCode::ok) {
-        return "ok";
-    }
-    if (v == ErrorCode::checksum_error) {
-        return "checksum_error";
-    }
-    if (v == ErrorCode::invalid_message_type) {
-        return "invalid_message_type";
-    }
-    if (v == ErrorCode::invalid_message_code) {
-        return "invalid_message_code";
-    }
-    if (v == ErrorCode::invalid_parameter) {
-        return "invalid_parameter";
-    }
-    return nullptr;
-}
+const char *to_string(ErrorCode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, ErrorCode &out) {
-    if (std::strcmp(name, "ok") == 0) {
-        out = ErrorCode::ok;
-        return true;
-    }
-    if (std::strcmp(name, "checksum_error") == 0) {
-        out = ErrorCode::checksum_error;
-        return true;
-    }
-    if (std::strcmp(name, "invalid_message_type") == 0) {
-        out = ErrorCode::invalid_message_type;
-        return true;
-    }
-    if (std::strcmp(name, "invalid_message_code") == 0) {
-        out = ErrorCode::invalid_message_code;
-        return true;
-    }
-    if (std::strcmp(name, "invalid_parameter") == 0) {
-        out = ErrorCode::invalid_parameter;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, ErrorCode &out);
 
 /// Filter bandwidth control code. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FilterBandwidth : std::uint8_t {
@@ -212,70 +73,10 @@ enum class FilterBandwidth : std::uint8_t {
 };
 
 /// Spec name of a value ("disabled"), or nullptr when the value has no name.
-inline const char *to_string(FilterBandwidth v) {
-    if (v == FilterBandwidth::disabled) {
-        return "disabled";
-    }
-    if (v == FilterBandwidth::iir_25hz) {
-        return "iir_25hz";
-    }
-    if (v == FilterBandwidth::iir_50hz) {
-        return "iir_50hz";
-    }
-    if (v == FilterBandwidth::iir_75hz) {
-        return "iir_75hz";
-    }
-    if (v == FilterBandwidth::iir_100hz) {
-        return "iir_100hz";
-    }
-    if (v == FilterBandwidth::iir_10hz) {
-        return "iir_10hz";
-    }
-    if (v == FilterBandwidth::iir_150hz) {
-        return "iir_150hz";
-    }
-    if (v == FilterBandwidth::iir_200hz) {
-        return "iir_200hz";
-    }
-    return nullptr;
-}
+const char *to_string(FilterBandwidth v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FilterBandwidth &out) {
-    if (std::strcmp(name, "disabled") == 0) {
-        out = FilterBandwidth::disabled;
-        return true;
-    }
-    if (std::strcmp(name, "iir_25hz") == 0) {
-        out = FilterBandwidth::iir_25hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_50hz") == 0) {
-        out = FilterBandwidth::iir_50hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_75hz") == 0) {
-        out = FilterBandwidth::iir_75hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_100hz") == 0) {
-        out = FilterBandwidth::iir_100hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_10hz") == 0) {
-        out = FilterBandwidth::iir_10hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_150hz") == 0) {
-        out = FilterBandwidth::iir_150hz;
-        return true;
-    }
-    if (std::strcmp(name, "iir_200hz") == 0) {
-        out = FilterBandwidth::iir_200hz;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FilterBandwidth &out);
 
 /// Function code. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class FunctionCode : std::uint8_t {
@@ -287,49 +88,10 @@ enum class FunctionCode : std::uint8_t {
 };
 
 /// Spec name of a value ("write"), or nullptr when the value has no name.
-inline const char *to_string(FunctionCode v) {
-    if (v == FunctionCode::write) {
-        return "write";
-    }
-    if (v == FunctionCode::read) {
-        return "read";
-    }
-    if (v == FunctionCode::save) {
-        return "save";
-    }
-    if (v == FunctionCode::load) {
-        return "load";
-    }
-    if (v == FunctionCode::default_) {
-        return "default";
-    }
-    return nullptr;
-}
+const char *to_string(FunctionCode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, FunctionCode &out) {
-    if (std::strcmp(name, "write") == 0) {
-        out = FunctionCode::write;
-        return true;
-    }
-    if (std::strcmp(name, "read") == 0) {
-        out = FunctionCode::read;
-        return true;
-    }
-    if (std::strcmp(name, "save") == 0) {
-        out = FunctionCode::save;
-        return true;
-    }
-    if (std::strcmp(name, "load") == 0) {
-        out = FunctionCode::load;
-        return true;
-    }
-    if (std::strcmp(name, "default") == 0) {
-        out = FunctionCode::default_;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, FunctionCode &out);
 
 /// GPS correlated time flags. Reserved and unnamed bits are kept in raw().
 class GpsTimeFlags {
@@ -410,63 +172,10 @@ enum class GyroRange : std::uint8_t {
 };
 
 /// Spec name of a value ("range_120dps"), or nullptr when the value has no name.
-inline const char *to_string(GyroRange v) {
-    if (v == GyroRange::range_120dps) {
-        return "range_120dps";
-    }
-    if (v == GyroRange::range_240dps) {
-        return "range_240dps";
-    }
-    if (v == GyroRange::range_480dps) {
-        return "range_480dps";
-    }
-    if (v == GyroRange::range_960dps) {
-        return "range_960dps";
-    }
-    if (v == GyroRange::range_1920dps) {
-        return "range_1920dps";
-    }
-    if (v == GyroRange::range_75dps) {
-        return "range_75dps";
-    }
-    if (v == GyroRange::range_200dps) {
-        return "range_200dps";
-    }
-    return nullptr;
-}
+const char *to_string(GyroRange v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, GyroRange &out) {
-    if (std::strcmp(name, "range_120dps") == 0) {
-        out = GyroRange::range_120dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_240dps") == 0) {
-        out = GyroRange::range_240dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_480dps") == 0) {
-        out = GyroRange::range_480dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_960dps") == 0) {
-        out = GyroRange::range_960dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_1920dps") == 0) {
-        out = GyroRange::range_1920dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_75dps") == 0) {
-        out = GyroRange::range_75dps;
-        return true;
-    }
-    if (std::strcmp(name, "range_200dps") == 0) {
-        out = GyroRange::range_200dps;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, GyroRange &out);
 
 /// On/off control code. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class OnOff : std::uint8_t {
@@ -475,28 +184,10 @@ enum class OnOff : std::uint8_t {
 };
 
 /// Spec name of a value ("off"), or nullptr when the value has no name.
-inline const char *to_string(OnOff v) {
-    if (v == OnOff::off) {
-        return "off";
-    }
-    if (v == OnOff::on) {
-        return "on";
-    }
-    return nullptr;
-}
+const char *to_string(OnOff v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, OnOff &out) {
-    if (std::strcmp(name, "off") == 0) {
-        out = OnOff::off;
-        return true;
-    }
-    if (std::strcmp(name, "on") == 0) {
-        out = OnOff::on;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, OnOff &out);
 
 /// Sensor select code. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class SensorCode : std::uint8_t {
@@ -512,77 +203,10 @@ enum class SensorCode : std::uint8_t {
 };
 
 /// Spec name of a value ("scaled_accel"), or nullptr when the value has no name.
-inline const char *to_string(SensorCode v) {
-    if (v == SensorCode::scaled_accel) {
-        return "scaled_accel";
-    }
-    if (v == SensorCode::scaled_gyro) {
-        return "scaled_gyro";
-    }
-    if (v == SensorCode::scaled_mag) {
-        return "scaled_mag";
-    }
-    if (v == SensorCode::delta_theta) {
-        return "delta_theta";
-    }
-    if (v == SensorCode::delta_velocity) {
-        return "delta_velocity";
-    }
-    if (v == SensorCode::scaled_pressure) {
-        return "scaled_pressure";
-    }
-    if (v == SensorCode::scaled_temperature) {
-        return "scaled_temperature";
-    }
-    if (v == SensorCode::gps_correlated_time) {
-        return "gps_correlated_time";
-    }
-    if (v == SensorCode::scaled_aux_accel) {
-        return "scaled_aux_accel";
-    }
-    return nullptr;
-}
+const char *to_string(SensorCode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, SensorCode &out) {
-    if (std::strcmp(name, "scaled_accel") == 0) {
-        out = SensorCode::scaled_accel;
-        return true;
-    }
-    if (std::strcmp(name, "scaled_gyro") == 0) {
-        out = SensorCode::scaled_gyro;
-        return true;
-    }
-    if (std::strcmp(name, "scaled_mag") == 0) {
-        out = SensorCode::scaled_mag;
-        return true;
-    }
-    if (std::strcmp(name, "delta_theta") == 0) {
-        out = SensorCode::delta_theta;
-        return true;
-    }
-    if (std::strcmp(name, "delta_velocity") == 0) {
-        out = SensorCode::delta_velocity;
-        return true;
-    }
-    if (std::strcmp(name, "scaled_pressure") == 0) {
-        out = SensorCode::scaled_pressure;
-        return true;
-    }
-    if (std::strcmp(name, "scaled_temperature") == 0) {
-        out = SensorCode::scaled_temperature;
-        return true;
-    }
-    if (std::strcmp(name, "gps_correlated_time") == 0) {
-        out = SensorCode::gps_correlated_time;
-        return true;
-    }
-    if (std::strcmp(name, "scaled_aux_accel") == 0) {
-        out = SensorCode::scaled_aux_accel;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, SensorCode &out);
 
 /// Message identifier
 struct MessageId {
@@ -639,28 +263,9 @@ template <> struct Codec<::mscipcodec::types::MessageId> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::mscipcodec::types::MessageId &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.message_type, err)) {
-            err.enter("message_type");
-            return false;
-        }
-        if (!read_value(r, v.message_code, err)) {
-            err.enter("message_code");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::mscipcodec::types::MessageId &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.message_type);
-        write_value(w, v.message_code);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::mscipcodec::types::MessageId &v, DecodeError &err);
+    static void write(Writer &w, const ::mscipcodec::types::MessageId &v);
 };
 
 } // namespace mscipcodec

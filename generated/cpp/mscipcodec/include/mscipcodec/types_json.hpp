@@ -2,7 +2,6 @@
 // JSON of the named types of protocol 'mscip' (bitfields, structs, unions; enums are generic).
 #pragma once
 
-#include <string>
 #include <variant>
 
 #include "mscipcodec/json_codec.hpp"
@@ -25,44 +24,9 @@ template <> struct Json<::mscipcodec::types::GpsTimeFlags> {
 };
 
 template <> struct Json<::mscipcodec::types::MessageId> {
-    static void write(JsonWriter &w, const ::mscipcodec::types::MessageId &v) {
-        w.begin_object();
-        w.key("message_type");
-        json_write_value(w, v.message_type);
-        w.key("message_code");
-        json_write_value(w, v.message_code);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::mscipcodec::types::MessageId &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "message_type",
-                                   "message_code",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("message_type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.message_type, err)) {
-                err.enter("message_type");
-                return false;
-            }
-        } else {
-            return err.missing("message_type");
-        }
-        if (const json::Value *found = in.find("message_code")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.message_code, err)) {
-                err.enter("message_code");
-                return false;
-            }
-        } else {
-            return err.missing("message_code");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::mscipcodec::types::MessageId &v);
+    static bool read(const json::Value &in, ::mscipcodec::types::MessageId &v, JsonError &err);
 };
 
 } // namespace mscipcodec

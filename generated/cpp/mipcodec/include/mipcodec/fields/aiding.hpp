@@ -334,170 +334,21 @@ struct Pressure {
 namespace mipcodec {
 
 template <> struct Codec<aiding::FrameConfig> {
-    static bool read(Reader &r, aiding::FrameConfig &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.format.emplace();
-            if (!read_value(r, (*v.format), err)) {
-                err.enter("format");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.tracking_enabled.emplace();
-            if (!read_value(r, (*v.tracking_enabled), err)) {
-                err.enter("tracking_enabled");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.translation.emplace();
-            if (!read_fixed(r, (*v.translation), err)) {
-                err.enter("translation");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.rotation.emplace();
-            if (!::mipcodec::Codec<::mipcodec::types::AidingFrameRotation>::read(
-                    r, (*v.rotation), v.format.value_or(::mipcodec::types::AidingFrameFormat{}), err)) {
-                err.enter("rotation");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::FrameConfig &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.frame_id);
-        if (v.format) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.format));
-        } else {
-            absent = true;
-        }
-        if (v.tracking_enabled) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.tracking_enabled));
-        } else {
-            absent = true;
-        }
-        if (v.translation) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.translation));
-        } else {
-            absent = true;
-        }
-        if (v.rotation) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            ::mipcodec::Codec<::mipcodec::types::AidingFrameRotation>::write(
-                w, (*v.rotation), v.format.value_or(::mipcodec::types::AidingFrameFormat{}));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::FrameConfig &v, DecodeError &err);
+    static void write(Writer &w, const aiding::FrameConfig &v);
 };
 
 template <> struct Codec<aiding::FrameConfigResponse> {
-    static bool read(Reader &r, aiding::FrameConfigResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_value(r, v.format, err)) {
-            err.enter("format");
-            return false;
-        }
-        if (!read_value(r, v.tracking_enabled, err)) {
-            err.enter("tracking_enabled");
-            return false;
-        }
-        if (!read_fixed(r, v.translation, err)) {
-            err.enter("translation");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::AidingFrameRotation>::read(r, v.rotation, v.format, err)) {
-            err.enter("rotation");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::FrameConfigResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.frame_id);
-        write_value(w, v.format);
-        write_value(w, v.tracking_enabled);
-        write_fixed(w, v.translation);
-        ::mipcodec::Codec<::mipcodec::types::AidingFrameRotation>::write(w, v.rotation, v.format);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::FrameConfigResponse &v, DecodeError &err);
+    static void write(Writer &w, const aiding::FrameConfigResponse &v);
 };
 
 template <> struct Codec<aiding::EchoControl> {
-    static bool read(Reader &r, aiding::EchoControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::EchoControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::EchoControl &v, DecodeError &err);
+    static void write(Writer &w, const aiding::EchoControl &v);
 };
 
 template <> struct Codec<aiding::EchoControlResponse> {
@@ -512,23 +363,9 @@ template <> struct Codec<aiding::EchoControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::EchoControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::EchoControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::EchoControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const aiding::EchoControlResponse &v);
 };
 
 template <> struct Codec<aiding::EcefPosition> {
@@ -554,43 +391,9 @@ template <> struct Codec<aiding::EcefPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::EcefPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.position, err)) {
-            err.enter("position");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::EcefPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_fixed(w, v.position);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::EcefPosition &v, DecodeError &err);
+    static void write(Writer &w, const aiding::EcefPosition &v);
 };
 
 template <> struct Codec<aiding::LlhPosition> {
@@ -620,53 +423,9 @@ template <> struct Codec<aiding::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.height, err)) {
-            err.enter("height");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.height);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const aiding::LlhPosition &v);
 };
 
 template <> struct Codec<aiding::HeightAboveEllipsoid> {
@@ -691,43 +450,9 @@ template <> struct Codec<aiding::HeightAboveEllipsoid> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::HeightAboveEllipsoid &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_value(r, v.height, err)) {
-            err.enter("height");
-            return false;
-        }
-        if (!read_value(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::HeightAboveEllipsoid &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_value(w, v.height);
-        write_value(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::HeightAboveEllipsoid &v, DecodeError &err);
+    static void write(Writer &w, const aiding::HeightAboveEllipsoid &v);
 };
 
 template <> struct Codec<aiding::EcefVelocity> {
@@ -753,43 +478,9 @@ template <> struct Codec<aiding::EcefVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::EcefVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::EcefVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_fixed(w, v.velocity);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::EcefVelocity &v, DecodeError &err);
+    static void write(Writer &w, const aiding::EcefVelocity &v);
 };
 
 template <> struct Codec<aiding::NedVelocity> {
@@ -815,43 +506,9 @@ template <> struct Codec<aiding::NedVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::NedVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::NedVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_fixed(w, v.velocity);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::NedVelocity &v, DecodeError &err);
+    static void write(Writer &w, const aiding::NedVelocity &v);
 };
 
 template <> struct Codec<aiding::BodyFrameVelocity> {
@@ -877,43 +534,9 @@ template <> struct Codec<aiding::BodyFrameVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::BodyFrameVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::BodyFrameVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_fixed(w, v.velocity);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::BodyFrameVelocity &v, DecodeError &err);
+    static void write(Writer &w, const aiding::BodyFrameVelocity &v);
 };
 
 template <> struct Codec<aiding::TrueHeading> {
@@ -938,43 +561,9 @@ template <> struct Codec<aiding::TrueHeading> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::TrueHeading &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::TrueHeading &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_value(w, v.heading);
-        write_value(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::TrueHeading &v, DecodeError &err);
+    static void write(Writer &w, const aiding::TrueHeading &v);
 };
 
 template <> struct Codec<aiding::MagneticField> {
@@ -1000,43 +589,9 @@ template <> struct Codec<aiding::MagneticField> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::MagneticField &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.magnetic_field, err)) {
-            err.enter("magnetic_field");
-            return false;
-        }
-        if (!read_fixed(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::MagneticField &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_fixed(w, v.magnetic_field);
-        write_fixed(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::MagneticField &v, DecodeError &err);
+    static void write(Writer &w, const aiding::MagneticField &v);
 };
 
 template <> struct Codec<aiding::Pressure> {
@@ -1061,43 +616,9 @@ template <> struct Codec<aiding::Pressure> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, aiding::Pressure &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time, err)) {
-            err.enter("time");
-            return false;
-        }
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_value(r, v.pressure, err)) {
-            err.enter("pressure");
-            return false;
-        }
-        if (!read_value(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const aiding::Pressure &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time);
-        write_value(w, v.frame_id);
-        write_value(w, v.pressure);
-        write_value(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/aiding.cpp (compiled into the library).
+    static bool read(Reader &r, aiding::Pressure &v, DecodeError &err);
+    static void write(Writer &w, const aiding::Pressure &v);
 };
 
 } // namespace mipcodec

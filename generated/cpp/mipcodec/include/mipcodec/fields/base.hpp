@@ -433,18 +433,9 @@ template <> struct Codec<base::Ping> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::Ping &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::Ping &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::Ping &v, DecodeError &err);
+    static void write(Writer &w, const base::Ping &v);
 };
 
 template <> struct Codec<base::SetToIdle> {
@@ -458,18 +449,9 @@ template <> struct Codec<base::SetToIdle> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::SetToIdle &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::SetToIdle &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::SetToIdle &v, DecodeError &err);
+    static void write(Writer &w, const base::SetToIdle &v);
 };
 
 template <> struct Codec<base::GetDeviceInfo> {
@@ -483,18 +465,9 @@ template <> struct Codec<base::GetDeviceInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceInfo &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceInfo &v);
 };
 
 template <> struct Codec<base::DeviceInfo> {
@@ -509,23 +482,9 @@ template <> struct Codec<base::DeviceInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.info, err)) {
-            err.enter("info");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.info);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceInfo &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceInfo &v);
 };
 
 template <> struct Codec<base::GetDeviceDescriptors> {
@@ -539,38 +498,15 @@ template <> struct Codec<base::GetDeviceDescriptors> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceDescriptors &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceDescriptors &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceDescriptors &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceDescriptors &v);
 };
 
 template <> struct Codec<base::DeviceDescriptors> {
-    static bool read(Reader &r, base::DeviceDescriptors &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.descriptors, err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceDescriptors &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.descriptors);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceDescriptors &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceDescriptors &v);
 };
 
 template <> struct Codec<base::BuiltInTest> {
@@ -584,18 +520,9 @@ template <> struct Codec<base::BuiltInTest> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::BuiltInTest &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::BuiltInTest &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::BuiltInTest &v, DecodeError &err);
+    static void write(Writer &w, const base::BuiltInTest &v);
 };
 
 template <> struct Codec<base::BuiltInTestResultGx545> {
@@ -610,23 +537,9 @@ template <> struct Codec<base::BuiltInTestResultGx545> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::BuiltInTestResultGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::BuiltInTestResultGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.flags);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::BuiltInTestResultGx545 &v, DecodeError &err);
+    static void write(Writer &w, const base::BuiltInTestResultGx545 &v);
 };
 
 template <> struct Codec<base::BuiltInTestResultCv7Ins> {
@@ -641,23 +554,9 @@ template <> struct Codec<base::BuiltInTestResultCv7Ins> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::BuiltInTestResultCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::BuiltInTestResultCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.flags);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::BuiltInTestResultCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const base::BuiltInTestResultCv7Ins &v);
 };
 
 template <> struct Codec<base::Resume> {
@@ -671,18 +570,9 @@ template <> struct Codec<base::Resume> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::Resume &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::Resume &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::Resume &v, DecodeError &err);
+    static void write(Writer &w, const base::Resume &v);
 };
 
 template <> struct Codec<base::GetExtendedDescriptors> {
@@ -696,38 +586,15 @@ template <> struct Codec<base::GetExtendedDescriptors> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetExtendedDescriptors &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetExtendedDescriptors &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetExtendedDescriptors &v, DecodeError &err);
+    static void write(Writer &w, const base::GetExtendedDescriptors &v);
 };
 
 template <> struct Codec<base::ExtendedDescriptors> {
-    static bool read(Reader &r, base::ExtendedDescriptors &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.descriptors, err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::ExtendedDescriptors &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.descriptors);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::ExtendedDescriptors &v, DecodeError &err);
+    static void write(Writer &w, const base::ExtendedDescriptors &v);
 };
 
 template <> struct Codec<base::ContinuousBit> {
@@ -741,18 +608,9 @@ template <> struct Codec<base::ContinuousBit> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::ContinuousBit &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::ContinuousBit &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::ContinuousBit &v, DecodeError &err);
+    static void write(Writer &w, const base::ContinuousBit &v);
 };
 
 template <> struct Codec<base::ContinuousBitResult> {
@@ -767,64 +625,15 @@ template <> struct Codec<base::ContinuousBitResult> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::ContinuousBitResult &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.result, err)) {
-            err.enter("result");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::ContinuousBitResult &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.result);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::ContinuousBitResult &v, DecodeError &err);
+    static void write(Writer &w, const base::ContinuousBitResult &v);
 };
 
 template <> struct Codec<base::CommPortSpeed> {
-    static bool read(Reader &r, base::CommPortSpeed &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.port, err)) {
-            err.enter("port");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.baud.emplace();
-            if (!read_value(r, (*v.baud), err)) {
-                err.enter("baud");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::CommPortSpeed &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.port);
-        if (v.baud) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.baud));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::CommPortSpeed &v, DecodeError &err);
+    static void write(Writer &w, const base::CommPortSpeed &v);
 };
 
 template <> struct Codec<base::CommPortSpeedResponse> {
@@ -841,69 +650,15 @@ template <> struct Codec<base::CommPortSpeedResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::CommPortSpeedResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.port, err)) {
-            err.enter("port");
-            return false;
-        }
-        if (!read_value(r, v.baud, err)) {
-            err.enter("baud");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::CommPortSpeedResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.port);
-        write_value(w, v.baud);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::CommPortSpeedResponse &v, DecodeError &err);
+    static void write(Writer &w, const base::CommPortSpeedResponse &v);
 };
 
 template <> struct Codec<base::GpsTimeUpdateGx545> {
-    static bool read(Reader &r, base::GpsTimeUpdateGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.field_id, err)) {
-            err.enter("field_id");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.value.emplace();
-            if (!read_value(r, (*v.value), err)) {
-                err.enter("value");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::GpsTimeUpdateGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.field_id);
-        if (v.value) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.value));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GpsTimeUpdateGx545 &v, DecodeError &err);
+    static void write(Writer &w, const base::GpsTimeUpdateGx545 &v);
 };
 
 template <> struct Codec<base::GpsTimeUpdateCv7Ins> {
@@ -924,33 +679,9 @@ template <> struct Codec<base::GpsTimeUpdateCv7Ins> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GpsTimeUpdateCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.field_id, err)) {
-            err.enter("field_id");
-            return false;
-        }
-        if (!read_value(r, v.value, err)) {
-            err.enter("value");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::GpsTimeUpdateCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.field_id);
-        write_value(w, v.value);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GpsTimeUpdateCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const base::GpsTimeUpdateCv7Ins &v);
 };
 
 template <> struct Codec<base::GpsWeek> {
@@ -965,23 +696,9 @@ template <> struct Codec<base::GpsWeek> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GpsWeek &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.week, err)) {
-            err.enter("week");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::GpsWeek &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.week);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GpsWeek &v, DecodeError &err);
+    static void write(Writer &w, const base::GpsWeek &v);
 };
 
 template <> struct Codec<base::GpsSeconds> {
@@ -996,23 +713,9 @@ template <> struct Codec<base::GpsSeconds> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GpsSeconds &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.seconds, err)) {
-            err.enter("seconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::GpsSeconds &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.seconds);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GpsSeconds &v, DecodeError &err);
+    static void write(Writer &w, const base::GpsSeconds &v);
 };
 
 template <> struct Codec<base::DeviceReset> {
@@ -1026,18 +729,9 @@ template <> struct Codec<base::DeviceReset> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceReset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceReset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceReset &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceReset &v);
 };
 
 } // namespace mipcodec

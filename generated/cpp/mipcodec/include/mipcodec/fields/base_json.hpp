@@ -9,584 +9,129 @@
 namespace mipcodec {
 
 template <> struct Json<base::Ping> {
-    static void write(JsonWriter &w, const base::Ping &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::Ping &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::Ping &v);
+    static bool read(const json::Value &in, base::Ping &v, JsonError &err);
 };
 
 template <> struct Json<base::SetToIdle> {
-    static void write(JsonWriter &w, const base::SetToIdle &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::SetToIdle &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::SetToIdle &v);
+    static bool read(const json::Value &in, base::SetToIdle &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceInfo> {
-    static void write(JsonWriter &w, const base::GetDeviceInfo &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceInfo &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceInfo &v);
+    static bool read(const json::Value &in, base::GetDeviceInfo &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceInfo> {
-    static void write(JsonWriter &w, const base::DeviceInfo &v) {
-        (void)v;
-        w.begin_object();
-        w.key("info");
-        json_write_value(w, v.info);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceInfo &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "info",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("info")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.info, err)) {
-                err.enter("info");
-                return false;
-            }
-        } else {
-            return err.missing("info");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceInfo &v);
+    static bool read(const json::Value &in, base::DeviceInfo &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceDescriptors> {
-    static void write(JsonWriter &w, const base::GetDeviceDescriptors &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceDescriptors &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceDescriptors &v);
+    static bool read(const json::Value &in, base::GetDeviceDescriptors &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceDescriptors> {
-    static void write(JsonWriter &w, const base::DeviceDescriptors &v) {
-        (void)v;
-        w.begin_object();
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceDescriptors &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.descriptors, err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceDescriptors &v);
+    static bool read(const json::Value &in, base::DeviceDescriptors &v, JsonError &err);
 };
 
 template <> struct Json<base::BuiltInTest> {
-    static void write(JsonWriter &w, const base::BuiltInTest &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::BuiltInTest &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::BuiltInTest &v);
+    static bool read(const json::Value &in, base::BuiltInTest &v, JsonError &err);
 };
 
 template <> struct Json<base::BuiltInTestResultGx545> {
-    static void write(JsonWriter &w, const base::BuiltInTestResultGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::BuiltInTestResultGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::BuiltInTestResultGx545 &v);
+    static bool read(const json::Value &in, base::BuiltInTestResultGx545 &v, JsonError &err);
 };
 
 template <> struct Json<base::BuiltInTestResultCv7Ins> {
-    static void write(JsonWriter &w, const base::BuiltInTestResultCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::BuiltInTestResultCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::BuiltInTestResultCv7Ins &v);
+    static bool read(const json::Value &in, base::BuiltInTestResultCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<base::Resume> {
-    static void write(JsonWriter &w, const base::Resume &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::Resume &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::Resume &v);
+    static bool read(const json::Value &in, base::Resume &v, JsonError &err);
 };
 
 template <> struct Json<base::GetExtendedDescriptors> {
-    static void write(JsonWriter &w, const base::GetExtendedDescriptors &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetExtendedDescriptors &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetExtendedDescriptors &v);
+    static bool read(const json::Value &in, base::GetExtendedDescriptors &v, JsonError &err);
 };
 
 template <> struct Json<base::ExtendedDescriptors> {
-    static void write(JsonWriter &w, const base::ExtendedDescriptors &v) {
-        (void)v;
-        w.begin_object();
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::ExtendedDescriptors &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.descriptors, err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::ExtendedDescriptors &v);
+    static bool read(const json::Value &in, base::ExtendedDescriptors &v, JsonError &err);
 };
 
 template <> struct Json<base::ContinuousBit> {
-    static void write(JsonWriter &w, const base::ContinuousBit &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::ContinuousBit &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::ContinuousBit &v);
+    static bool read(const json::Value &in, base::ContinuousBit &v, JsonError &err);
 };
 
 template <> struct Json<base::ContinuousBitResult> {
-    static void write(JsonWriter &w, const base::ContinuousBitResult &v) {
-        (void)v;
-        w.begin_object();
-        w.key("result");
-        json_write_value(w, v.result);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::ContinuousBitResult &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "result",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("result")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.result, err)) {
-                err.enter("result");
-                return false;
-            }
-        } else {
-            return err.missing("result");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::ContinuousBitResult &v);
+    static bool read(const json::Value &in, base::ContinuousBitResult &v, JsonError &err);
 };
 
 template <> struct Json<base::CommPortSpeed> {
-    static void write(JsonWriter &w, const base::CommPortSpeed &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("port");
-        json_write_value(w, v.port);
-        if (v.baud) {
-            w.key("baud");
-            json_write_value(w, (*v.baud));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::CommPortSpeed &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "port",
-                                   "baud",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("port")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.port, err)) {
-                err.enter("port");
-                return false;
-            }
-        } else {
-            return err.missing("port");
-        }
-        if (const json::Value *found = in.find("baud")) {
-            const json::Value &x = *found;
-            v.baud.emplace();
-            if (!json_read_value(x, (*v.baud), err)) {
-                err.enter("baud");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::CommPortSpeed &v);
+    static bool read(const json::Value &in, base::CommPortSpeed &v, JsonError &err);
 };
 
 template <> struct Json<base::CommPortSpeedResponse> {
-    static void write(JsonWriter &w, const base::CommPortSpeedResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("port");
-        json_write_value(w, v.port);
-        w.key("baud");
-        json_write_value(w, v.baud);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::CommPortSpeedResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "port",
-                                   "baud",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("port")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.port, err)) {
-                err.enter("port");
-                return false;
-            }
-        } else {
-            return err.missing("port");
-        }
-        if (const json::Value *found = in.find("baud")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.baud, err)) {
-                err.enter("baud");
-                return false;
-            }
-        } else {
-            return err.missing("baud");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::CommPortSpeedResponse &v);
+    static bool read(const json::Value &in, base::CommPortSpeedResponse &v, JsonError &err);
 };
 
 template <> struct Json<base::GpsTimeUpdateGx545> {
-    static void write(JsonWriter &w, const base::GpsTimeUpdateGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("field_id");
-        json_write_value(w, v.field_id);
-        if (v.value) {
-            w.key("value");
-            json_write_value(w, (*v.value));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GpsTimeUpdateGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "field_id",
-                                   "value",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("field_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.field_id, err)) {
-                err.enter("field_id");
-                return false;
-            }
-        } else {
-            return err.missing("field_id");
-        }
-        if (const json::Value *found = in.find("value")) {
-            const json::Value &x = *found;
-            v.value.emplace();
-            if (!json_read_value(x, (*v.value), err)) {
-                err.enter("value");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GpsTimeUpdateGx545 &v);
+    static bool read(const json::Value &in, base::GpsTimeUpdateGx545 &v, JsonError &err);
 };
 
 template <> struct Json<base::GpsTimeUpdateCv7Ins> {
-    static void write(JsonWriter &w, const base::GpsTimeUpdateCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("field_id");
-        json_write_value(w, v.field_id);
-        w.key("value");
-        json_write_value(w, v.value);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GpsTimeUpdateCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "field_id",
-                                   "value",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("field_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.field_id, err)) {
-                err.enter("field_id");
-                return false;
-            }
-        } else {
-            return err.missing("field_id");
-        }
-        if (const json::Value *found = in.find("value")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.value, err)) {
-                err.enter("value");
-                return false;
-            }
-        } else {
-            return err.missing("value");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GpsTimeUpdateCv7Ins &v);
+    static bool read(const json::Value &in, base::GpsTimeUpdateCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<base::GpsWeek> {
-    static void write(JsonWriter &w, const base::GpsWeek &v) {
-        (void)v;
-        w.begin_object();
-        w.key("week");
-        json_write_value(w, v.week);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GpsWeek &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "week",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week, err)) {
-                err.enter("week");
-                return false;
-            }
-        } else {
-            return err.missing("week");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GpsWeek &v);
+    static bool read(const json::Value &in, base::GpsWeek &v, JsonError &err);
 };
 
 template <> struct Json<base::GpsSeconds> {
-    static void write(JsonWriter &w, const base::GpsSeconds &v) {
-        (void)v;
-        w.begin_object();
-        w.key("seconds");
-        json_write_value(w, v.seconds);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GpsSeconds &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "seconds",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("seconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.seconds, err)) {
-                err.enter("seconds");
-                return false;
-            }
-        } else {
-            return err.missing("seconds");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GpsSeconds &v);
+    static bool read(const json::Value &in, base::GpsSeconds &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceReset> {
-    static void write(JsonWriter &w, const base::DeviceReset &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceReset &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceReset &v);
+    static bool read(const json::Value &in, base::DeviceReset &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -1857,18 +1857,9 @@ template <> struct Codec<filter::ResetFilter> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ResetFilter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const filter::ResetFilter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ResetFilter &v, DecodeError &err);
+    static void write(Writer &w, const filter::ResetFilter &v);
 };
 
 template <> struct Codec<filter::SetInitialAttitude> {
@@ -1888,33 +1879,9 @@ template <> struct Codec<filter::SetInitialAttitude> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SetInitialAttitude &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SetInitialAttitude &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.heading);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SetInitialAttitude &v, DecodeError &err);
+    static void write(Writer &w, const filter::SetInitialAttitude &v);
 };
 
 template <> struct Codec<filter::SetInitialHeading> {
@@ -1929,23 +1896,9 @@ template <> struct Codec<filter::SetInitialHeading> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SetInitialHeading &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SetInitialHeading &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.heading);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SetInitialHeading &v, DecodeError &err);
+    static void write(Writer &w, const filter::SetInitialHeading &v);
 };
 
 template <> struct Codec<filter::RunFilter> {
@@ -1959,54 +1912,15 @@ template <> struct Codec<filter::RunFilter> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::RunFilter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const filter::RunFilter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::RunFilter &v, DecodeError &err);
+    static void write(Writer &w, const filter::RunFilter &v);
 };
 
 template <> struct Codec<filter::VehicleDynamicsMode> {
-    static bool read(Reader &r, filter::VehicleDynamicsMode &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::VehicleDynamicsMode &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::VehicleDynamicsMode &v, DecodeError &err);
+    static void write(Writer &w, const filter::VehicleDynamicsMode &v);
 };
 
 template <> struct Codec<filter::VehicleDynamicsModeResponse> {
@@ -2021,91 +1935,15 @@ template <> struct Codec<filter::VehicleDynamicsModeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::VehicleDynamicsModeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::VehicleDynamicsModeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::VehicleDynamicsModeResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::VehicleDynamicsModeResponse &v);
 };
 
 template <> struct Codec<filter::SensorToVehicleTransform> {
-    static bool read(Reader &r, filter::SensorToVehicleTransform &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.roll.emplace();
-            if (!read_value(r, (*v.roll), err)) {
-                err.enter("roll");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.pitch.emplace();
-            if (!read_value(r, (*v.pitch), err)) {
-                err.enter("pitch");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.yaw.emplace();
-            if (!read_value(r, (*v.yaw), err)) {
-                err.enter("yaw");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SensorToVehicleTransform &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.roll) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.roll));
-        } else {
-            absent = true;
-        }
-        if (v.pitch) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.pitch));
-        } else {
-            absent = true;
-        }
-        if (v.yaw) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.yaw));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SensorToVehicleTransform &v, DecodeError &err);
+    static void write(Writer &w, const filter::SensorToVehicleTransform &v);
 };
 
 template <> struct Codec<filter::SensorToVehicleTransformResponse> {
@@ -2125,69 +1963,15 @@ template <> struct Codec<filter::SensorToVehicleTransformResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SensorToVehicleTransformResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.yaw, err)) {
-            err.enter("yaw");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SensorToVehicleTransformResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.yaw);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SensorToVehicleTransformResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::SensorToVehicleTransformResponse &v);
 };
 
 template <> struct Codec<filter::SensorToVehicleOffset> {
-    static bool read(Reader &r, filter::SensorToVehicleOffset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.offset.emplace();
-            if (!read_fixed(r, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SensorToVehicleOffset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SensorToVehicleOffset &v, DecodeError &err);
+    static void write(Writer &w, const filter::SensorToVehicleOffset &v);
 };
 
 template <> struct Codec<filter::SensorToVehicleOffsetResponse> {
@@ -2202,59 +1986,15 @@ template <> struct Codec<filter::SensorToVehicleOffsetResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SensorToVehicleOffsetResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.offset, err)) {
-            err.enter("offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SensorToVehicleOffsetResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SensorToVehicleOffsetResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::SensorToVehicleOffsetResponse &v);
 };
 
 template <> struct Codec<filter::AntennaOffset> {
-    static bool read(Reader &r, filter::AntennaOffset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.offset.emplace();
-            if (!read_fixed(r, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AntennaOffset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AntennaOffset &v, DecodeError &err);
+    static void write(Writer &w, const filter::AntennaOffset &v);
 };
 
 template <> struct Codec<filter::AntennaOffsetResponse> {
@@ -2269,59 +2009,15 @@ template <> struct Codec<filter::AntennaOffsetResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AntennaOffsetResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.offset, err)) {
-            err.enter("offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AntennaOffsetResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AntennaOffsetResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AntennaOffsetResponse &v);
 };
 
 template <> struct Codec<filter::EstimationControl> {
-    static bool read(Reader &r, filter::EstimationControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.flags.emplace();
-            if (!read_value(r, (*v.flags), err)) {
-                err.enter("flags");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::EstimationControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.flags) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.flags));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::EstimationControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::EstimationControl &v);
 };
 
 template <> struct Codec<filter::EstimationControlResponse> {
@@ -2336,59 +2032,15 @@ template <> struct Codec<filter::EstimationControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::EstimationControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::EstimationControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::EstimationControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::EstimationControlResponse &v);
 };
 
 template <> struct Codec<filter::GnssSourceControl> {
-    static bool read(Reader &r, filter::GnssSourceControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GnssSourceControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GnssSourceControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::GnssSourceControl &v);
 };
 
 template <> struct Codec<filter::GnssSourceControlResponse> {
@@ -2403,23 +2055,9 @@ template <> struct Codec<filter::GnssSourceControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GnssSourceControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GnssSourceControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GnssSourceControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GnssSourceControlResponse &v);
 };
 
 template <> struct Codec<filter::ExternalGnssUpdate> {
@@ -2451,58 +2089,9 @@ template <> struct Codec<filter::ExternalGnssUpdate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ExternalGnssUpdate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gps_tow, err)) {
-            err.enter("gps_tow");
-            return false;
-        }
-        if (!read_value(r, v.gps_week, err)) {
-            err.enter("gps_week");
-            return false;
-        }
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.height, err)) {
-            err.enter("height");
-            return false;
-        }
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_fixed(r, v.position_uncertainty, err)) {
-            err.enter("position_uncertainty");
-            return false;
-        }
-        if (!read_fixed(r, v.velocity_uncertainty, err)) {
-            err.enter("velocity_uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ExternalGnssUpdate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gps_tow);
-        write_value(w, v.gps_week);
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.height);
-        write_fixed(w, v.velocity);
-        write_fixed(w, v.position_uncertainty);
-        write_fixed(w, v.velocity_uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ExternalGnssUpdate &v, DecodeError &err);
+    static void write(Writer &w, const filter::ExternalGnssUpdate &v);
 };
 
 template <> struct Codec<filter::ExternalHeadingUpdate> {
@@ -2522,69 +2111,15 @@ template <> struct Codec<filter::ExternalHeadingUpdate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ExternalHeadingUpdate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.heading_uncertainty, err)) {
-            err.enter("heading_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ExternalHeadingUpdate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.heading);
-        write_value(w, v.heading_uncertainty);
-        write_value(w, v.type);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ExternalHeadingUpdate &v, DecodeError &err);
+    static void write(Writer &w, const filter::ExternalHeadingUpdate &v);
 };
 
 template <> struct Codec<filter::HeadingUpdateControl> {
-    static bool read(Reader &r, filter::HeadingUpdateControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::HeadingUpdateControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::HeadingUpdateControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::HeadingUpdateControl &v);
 };
 
 template <> struct Codec<filter::HeadingUpdateControlResponse> {
@@ -2599,59 +2134,15 @@ template <> struct Codec<filter::HeadingUpdateControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::HeadingUpdateControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::HeadingUpdateControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::HeadingUpdateControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::HeadingUpdateControlResponse &v);
 };
 
 template <> struct Codec<filter::AutoInitControl> {
-    static bool read(Reader &r, filter::AutoInitControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AutoInitControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AutoInitControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::AutoInitControl &v);
 };
 
 template <> struct Codec<filter::AutoInitControlResponse> {
@@ -2666,59 +2157,15 @@ template <> struct Codec<filter::AutoInitControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AutoInitControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AutoInitControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AutoInitControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AutoInitControlResponse &v);
 };
 
 template <> struct Codec<filter::AccelNoise> {
-    static bool read(Reader &r, filter::AccelNoise &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AccelNoise &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AccelNoise &v, DecodeError &err);
+    static void write(Writer &w, const filter::AccelNoise &v);
 };
 
 template <> struct Codec<filter::AccelNoiseResponse> {
@@ -2733,59 +2180,15 @@ template <> struct Codec<filter::AccelNoiseResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AccelNoiseResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AccelNoiseResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AccelNoiseResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AccelNoiseResponse &v);
 };
 
 template <> struct Codec<filter::GyroNoise> {
-    static bool read(Reader &r, filter::GyroNoise &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GyroNoise &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GyroNoise &v, DecodeError &err);
+    static void write(Writer &w, const filter::GyroNoise &v);
 };
 
 template <> struct Codec<filter::GyroNoiseResponse> {
@@ -2800,75 +2203,15 @@ template <> struct Codec<filter::GyroNoiseResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GyroNoiseResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GyroNoiseResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GyroNoiseResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GyroNoiseResponse &v);
 };
 
 template <> struct Codec<filter::AccelBiasModel> {
-    static bool read(Reader &r, filter::AccelBiasModel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.beta.emplace();
-            if (!read_fixed(r, (*v.beta), err)) {
-                err.enter("beta");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AccelBiasModel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.beta) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.beta));
-        } else {
-            absent = true;
-        }
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AccelBiasModel &v, DecodeError &err);
+    static void write(Writer &w, const filter::AccelBiasModel &v);
 };
 
 template <> struct Codec<filter::AccelBiasModelResponse> {
@@ -2886,80 +2229,15 @@ template <> struct Codec<filter::AccelBiasModelResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AccelBiasModelResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.beta, err)) {
-            err.enter("beta");
-            return false;
-        }
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AccelBiasModelResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.beta);
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AccelBiasModelResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AccelBiasModelResponse &v);
 };
 
 template <> struct Codec<filter::GyroBiasModel> {
-    static bool read(Reader &r, filter::GyroBiasModel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.beta.emplace();
-            if (!read_fixed(r, (*v.beta), err)) {
-                err.enter("beta");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GyroBiasModel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.beta) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.beta));
-        } else {
-            absent = true;
-        }
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GyroBiasModel &v, DecodeError &err);
+    static void write(Writer &w, const filter::GyroBiasModel &v);
 };
 
 template <> struct Codec<filter::GyroBiasModelResponse> {
@@ -2977,80 +2255,15 @@ template <> struct Codec<filter::GyroBiasModelResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GyroBiasModelResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.beta, err)) {
-            err.enter("beta");
-            return false;
-        }
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GyroBiasModelResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.beta);
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GyroBiasModelResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GyroBiasModelResponse &v);
 };
 
 template <> struct Codec<filter::ZuptControl> {
-    static bool read(Reader &r, filter::ZuptControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.threshold.emplace();
-            if (!read_value(r, (*v.threshold), err)) {
-                err.enter("threshold");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ZuptControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.threshold) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.threshold));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ZuptControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::ZuptControl &v);
 };
 
 template <> struct Codec<filter::ZuptControlResponse> {
@@ -3067,28 +2280,9 @@ template <> struct Codec<filter::ZuptControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ZuptControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.threshold, err)) {
-            err.enter("threshold");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ZuptControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        write_value(w, v.threshold);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ZuptControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::ZuptControlResponse &v);
 };
 
 template <> struct Codec<filter::ExternalHeadingUpdateWithTime> {
@@ -3113,95 +2307,15 @@ template <> struct Codec<filter::ExternalHeadingUpdateWithTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ExternalHeadingUpdateWithTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gps_tow, err)) {
-            err.enter("gps_tow");
-            return false;
-        }
-        if (!read_value(r, v.gps_week, err)) {
-            err.enter("gps_week");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.heading_uncertainty, err)) {
-            err.enter("heading_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ExternalHeadingUpdateWithTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gps_tow);
-        write_value(w, v.gps_week);
-        write_value(w, v.heading);
-        write_value(w, v.heading_uncertainty);
-        write_value(w, v.type);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ExternalHeadingUpdateWithTime &v, DecodeError &err);
+    static void write(Writer &w, const filter::ExternalHeadingUpdateWithTime &v);
 };
 
 template <> struct Codec<filter::ZeroAngularRateUpdateControl> {
-    static bool read(Reader &r, filter::ZeroAngularRateUpdateControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.threshold.emplace();
-            if (!read_value(r, (*v.threshold), err)) {
-                err.enter("threshold");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ZeroAngularRateUpdateControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.threshold) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.threshold));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ZeroAngularRateUpdateControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::ZeroAngularRateUpdateControl &v);
 };
 
 template <> struct Codec<filter::ZeroAngularRateUpdateControlResponse> {
@@ -3218,64 +2332,15 @@ template <> struct Codec<filter::ZeroAngularRateUpdateControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ZeroAngularRateUpdateControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.threshold, err)) {
-            err.enter("threshold");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ZeroAngularRateUpdateControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        write_value(w, v.threshold);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ZeroAngularRateUpdateControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::ZeroAngularRateUpdateControlResponse &v);
 };
 
 template <> struct Codec<filter::TareOrientation> {
-    static bool read(Reader &r, filter::TareOrientation &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.axes.emplace();
-            if (!read_value(r, (*v.axes), err)) {
-                err.enter("axes");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::TareOrientation &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.axes) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.axes));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::TareOrientation &v, DecodeError &err);
+    static void write(Writer &w, const filter::TareOrientation &v);
 };
 
 template <> struct Codec<filter::CommandedZupt> {
@@ -3289,18 +2354,9 @@ template <> struct Codec<filter::CommandedZupt> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::CommandedZupt &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const filter::CommandedZupt &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::CommandedZupt &v, DecodeError &err);
+    static void write(Writer &w, const filter::CommandedZupt &v);
 };
 
 template <> struct Codec<filter::CommandedZeroAngularRateUpdate> {
@@ -3314,18 +2370,9 @@ template <> struct Codec<filter::CommandedZeroAngularRateUpdate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::CommandedZeroAngularRateUpdate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const filter::CommandedZeroAngularRateUpdate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::CommandedZeroAngularRateUpdate &v, DecodeError &err);
+    static void write(Writer &w, const filter::CommandedZeroAngularRateUpdate &v);
 };
 
 template <> struct Codec<filter::MagCaptureAutoCalibration> {
@@ -3340,59 +2387,15 @@ template <> struct Codec<filter::MagCaptureAutoCalibration> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MagCaptureAutoCalibration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagCaptureAutoCalibration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagCaptureAutoCalibration &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagCaptureAutoCalibration &v);
 };
 
 template <> struct Codec<filter::GravityNoiseStdDev> {
-    static bool read(Reader &r, filter::GravityNoiseStdDev &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GravityNoiseStdDev &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GravityNoiseStdDev &v, DecodeError &err);
+    static void write(Writer &w, const filter::GravityNoiseStdDev &v);
 };
 
 template <> struct Codec<filter::GravityNoiseStdDevResponse> {
@@ -3407,59 +2410,15 @@ template <> struct Codec<filter::GravityNoiseStdDevResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GravityNoiseStdDevResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GravityNoiseStdDevResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GravityNoiseStdDevResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GravityNoiseStdDevResponse &v);
 };
 
 template <> struct Codec<filter::PressureAltitudeNoiseStdDev> {
-    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDev &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_value(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDev &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDev &v, DecodeError &err);
+    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDev &v);
 };
 
 template <> struct Codec<filter::PressureAltitudeNoiseStdDevResponse> {
@@ -3474,59 +2433,15 @@ template <> struct Codec<filter::PressureAltitudeNoiseStdDevResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDevResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDevResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::PressureAltitudeNoiseStdDevResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::PressureAltitudeNoiseStdDevResponse &v);
 };
 
 template <> struct Codec<filter::HardIronOffsetNoise> {
-    static bool read(Reader &r, filter::HardIronOffsetNoise &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::HardIronOffsetNoise &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::HardIronOffsetNoise &v, DecodeError &err);
+    static void write(Writer &w, const filter::HardIronOffsetNoise &v);
 };
 
 template <> struct Codec<filter::HardIronOffsetNoiseResponse> {
@@ -3541,59 +2456,15 @@ template <> struct Codec<filter::HardIronOffsetNoiseResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::HardIronOffsetNoiseResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::HardIronOffsetNoiseResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::HardIronOffsetNoiseResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::HardIronOffsetNoiseResponse &v);
 };
 
 template <> struct Codec<filter::SoftIronMatrixNoise> {
-    static bool read(Reader &r, filter::SoftIronMatrixNoise &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SoftIronMatrixNoise &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SoftIronMatrixNoise &v, DecodeError &err);
+    static void write(Writer &w, const filter::SoftIronMatrixNoise &v);
 };
 
 template <> struct Codec<filter::SoftIronMatrixNoiseResponse> {
@@ -3608,59 +2479,15 @@ template <> struct Codec<filter::SoftIronMatrixNoiseResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SoftIronMatrixNoiseResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SoftIronMatrixNoiseResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SoftIronMatrixNoiseResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::SoftIronMatrixNoiseResponse &v);
 };
 
 template <> struct Codec<filter::MagNoiseStdDev> {
-    static bool read(Reader &r, filter::MagNoiseStdDev &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.noise.emplace();
-            if (!read_fixed(r, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagNoiseStdDev &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.noise) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.noise));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagNoiseStdDev &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagNoiseStdDev &v);
 };
 
 template <> struct Codec<filter::MagNoiseStdDevResponse> {
@@ -3675,75 +2502,15 @@ template <> struct Codec<filter::MagNoiseStdDevResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MagNoiseStdDevResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.noise, err)) {
-            err.enter("noise");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagNoiseStdDevResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.noise);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagNoiseStdDevResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagNoiseStdDevResponse &v);
 };
 
 template <> struct Codec<filter::DeclinationSource> {
-    static bool read(Reader &r, filter::DeclinationSource &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.declination.emplace();
-            if (!read_value(r, (*v.declination), err)) {
-                err.enter("declination");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::DeclinationSource &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        if (v.declination) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.declination));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::DeclinationSource &v, DecodeError &err);
+    static void write(Writer &w, const filter::DeclinationSource &v);
 };
 
 template <> struct Codec<filter::DeclinationSourceResponse> {
@@ -3761,160 +2528,15 @@ template <> struct Codec<filter::DeclinationSourceResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::DeclinationSourceResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.declination, err)) {
-            err.enter("declination");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::DeclinationSourceResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_value(w, v.declination);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::DeclinationSourceResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::DeclinationSourceResponse &v);
 };
 
 template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurement> {
-    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurement &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.frequency.emplace();
-            if (!read_value(r, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.low_limit.emplace();
-            if (!read_value(r, (*v.low_limit), err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit.emplace();
-            if (!read_value(r, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.low_limit_uncertainty.emplace();
-            if (!read_value(r, (*v.low_limit_uncertainty), err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit_uncertainty.emplace();
-            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.minimum_uncertainty.emplace();
-            if (!read_value(r, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurement &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        if (v.frequency) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.frequency));
-        } else {
-            absent = true;
-        }
-        if (v.low_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.low_limit));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit));
-        } else {
-            absent = true;
-        }
-        if (v.low_limit_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.low_limit_uncertainty));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit_uncertainty));
-        } else {
-            absent = true;
-        }
-        if (v.minimum_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.minimum_uncertainty));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurement &v, DecodeError &err);
+    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurement &v);
 };
 
 template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurementResponse> {
@@ -3945,185 +2567,15 @@ template <> struct Codec<filter::GravityMagnitudeAdaptiveMeasurementResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        if (!read_value(r, v.frequency, err)) {
-            err.enter("frequency");
-            return false;
-        }
-        if (!read_value(r, v.low_limit, err)) {
-            err.enter("low_limit");
-            return false;
-        }
-        if (!read_value(r, v.high_limit, err)) {
-            err.enter("high_limit");
-            return false;
-        }
-        if (!read_value(r, v.low_limit_uncertainty, err)) {
-            err.enter("low_limit_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.high_limit_uncertainty, err)) {
-            err.enter("high_limit_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.minimum_uncertainty, err)) {
-            err.enter("minimum_uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurementResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        write_value(w, v.frequency);
-        write_value(w, v.low_limit);
-        write_value(w, v.high_limit);
-        write_value(w, v.low_limit_uncertainty);
-        write_value(w, v.high_limit_uncertainty);
-        write_value(w, v.minimum_uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GravityMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GravityMagnitudeAdaptiveMeasurementResponse &v);
 };
 
 template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurement> {
-    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurement &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.frequency.emplace();
-            if (!read_value(r, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.low_limit.emplace();
-            if (!read_value(r, (*v.low_limit), err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit.emplace();
-            if (!read_value(r, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.low_limit_uncertainty.emplace();
-            if (!read_value(r, (*v.low_limit_uncertainty), err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit_uncertainty.emplace();
-            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.minimum_uncertainty.emplace();
-            if (!read_value(r, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurement &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        if (v.frequency) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.frequency));
-        } else {
-            absent = true;
-        }
-        if (v.low_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.low_limit));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit));
-        } else {
-            absent = true;
-        }
-        if (v.low_limit_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.low_limit_uncertainty));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit_uncertainty));
-        } else {
-            absent = true;
-        }
-        if (v.minimum_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.minimum_uncertainty));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurement &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurement &v);
 };
 
 template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurementResponse> {
@@ -4154,153 +2606,15 @@ template <> struct Codec<filter::MagMagnitudeAdaptiveMeasurementResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        if (!read_value(r, v.frequency, err)) {
-            err.enter("frequency");
-            return false;
-        }
-        if (!read_value(r, v.low_limit, err)) {
-            err.enter("low_limit");
-            return false;
-        }
-        if (!read_value(r, v.high_limit, err)) {
-            err.enter("high_limit");
-            return false;
-        }
-        if (!read_value(r, v.low_limit_uncertainty, err)) {
-            err.enter("low_limit_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.high_limit_uncertainty, err)) {
-            err.enter("high_limit_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.minimum_uncertainty, err)) {
-            err.enter("minimum_uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurementResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        write_value(w, v.frequency);
-        write_value(w, v.low_limit);
-        write_value(w, v.high_limit);
-        write_value(w, v.low_limit_uncertainty);
-        write_value(w, v.high_limit_uncertainty);
-        write_value(w, v.minimum_uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagMagnitudeAdaptiveMeasurementResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagMagnitudeAdaptiveMeasurementResponse &v);
 };
 
 template <> struct Codec<filter::MagDipAngleAdaptiveMeasurement> {
-    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurement &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.frequency.emplace();
-            if (!read_value(r, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit.emplace();
-            if (!read_value(r, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.high_limit_uncertainty.emplace();
-            if (!read_value(r, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.minimum_uncertainty.emplace();
-            if (!read_value(r, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurement &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        if (v.frequency) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.frequency));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit));
-        } else {
-            absent = true;
-        }
-        if (v.high_limit_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.high_limit_uncertainty));
-        } else {
-            absent = true;
-        }
-        if (v.minimum_uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.minimum_uncertainty));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurement &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurement &v);
 };
 
 template <> struct Codec<filter::MagDipAngleAdaptiveMeasurementResponse> {
@@ -4326,79 +2640,15 @@ template <> struct Codec<filter::MagDipAngleAdaptiveMeasurementResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurementResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        if (!read_value(r, v.frequency, err)) {
-            err.enter("frequency");
-            return false;
-        }
-        if (!read_value(r, v.high_limit, err)) {
-            err.enter("high_limit");
-            return false;
-        }
-        if (!read_value(r, v.high_limit_uncertainty, err)) {
-            err.enter("high_limit_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.minimum_uncertainty, err)) {
-            err.enter("minimum_uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurementResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        write_value(w, v.frequency);
-        write_value(w, v.high_limit);
-        write_value(w, v.high_limit_uncertainty);
-        write_value(w, v.minimum_uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagDipAngleAdaptiveMeasurementResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagDipAngleAdaptiveMeasurementResponse &v);
 };
 
 template <> struct Codec<filter::AltitudeAidingControl> {
-    static bool read(Reader &r, filter::AltitudeAidingControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AltitudeAidingControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AltitudeAidingControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::AltitudeAidingControl &v);
 };
 
 template <> struct Codec<filter::AltitudeAidingControlResponse> {
@@ -4413,59 +2663,15 @@ template <> struct Codec<filter::AltitudeAidingControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AltitudeAidingControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AltitudeAidingControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AltitudeAidingControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AltitudeAidingControlResponse &v);
 };
 
 template <> struct Codec<filter::PitchRollAidingControl> {
-    static bool read(Reader &r, filter::PitchRollAidingControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::PitchRollAidingControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::PitchRollAidingControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::PitchRollAidingControl &v);
 };
 
 template <> struct Codec<filter::PitchRollAidingControlResponse> {
@@ -4480,75 +2686,15 @@ template <> struct Codec<filter::PitchRollAidingControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::PitchRollAidingControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::PitchRollAidingControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::PitchRollAidingControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::PitchRollAidingControlResponse &v);
 };
 
 template <> struct Codec<filter::InclinationSource> {
-    static bool read(Reader &r, filter::InclinationSource &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.inclination.emplace();
-            if (!read_value(r, (*v.inclination), err)) {
-                err.enter("inclination");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::InclinationSource &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        if (v.inclination) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.inclination));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::InclinationSource &v, DecodeError &err);
+    static void write(Writer &w, const filter::InclinationSource &v);
 };
 
 template <> struct Codec<filter::InclinationSourceResponse> {
@@ -4566,80 +2712,15 @@ template <> struct Codec<filter::InclinationSourceResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::InclinationSourceResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.inclination, err)) {
-            err.enter("inclination");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::InclinationSourceResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_value(w, v.inclination);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::InclinationSourceResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::InclinationSourceResponse &v);
 };
 
 template <> struct Codec<filter::MagneticFieldMagnitudeSource> {
-    static bool read(Reader &r, filter::MagneticFieldMagnitudeSource &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.magnitude.emplace();
-            if (!read_value(r, (*v.magnitude), err)) {
-                err.enter("magnitude");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagneticFieldMagnitudeSource &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        if (v.magnitude) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.magnitude));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagneticFieldMagnitudeSource &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagneticFieldMagnitudeSource &v);
 };
 
 template <> struct Codec<filter::MagneticFieldMagnitudeSourceResponse> {
@@ -4657,258 +2738,27 @@ template <> struct Codec<filter::MagneticFieldMagnitudeSourceResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MagneticFieldMagnitudeSourceResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.magnitude, err)) {
-            err.enter("magnitude");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MagneticFieldMagnitudeSourceResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_value(w, v.magnitude);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MagneticFieldMagnitudeSourceResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::MagneticFieldMagnitudeSourceResponse &v);
 };
 
 template <> struct Codec<filter::AidingMeasurementControl> {
-    static bool read(Reader &r, filter::AidingMeasurementControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AidingMeasurementControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.source);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AidingMeasurementControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::AidingMeasurementControl &v);
 };
 
 template <> struct Codec<filter::AidingMeasurementControlResponse> {
-    static bool read(Reader &r, filter::AidingMeasurementControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AidingMeasurementControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_value(w, v.enable);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AidingMeasurementControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AidingMeasurementControlResponse &v);
 };
 
 template <> struct Codec<filter::InitializationConfiguration> {
-    static bool read(Reader &r, filter::InitializationConfiguration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.wait_for_run_command.emplace();
-            if (!read_value(r, (*v.wait_for_run_command), err)) {
-                err.enter("wait_for_run_command");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_cond_src.emplace();
-            if (!read_value(r, (*v.initial_cond_src), err)) {
-                err.enter("initial_cond_src");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.auto_heading_alignment_selector.emplace();
-            if (!read_value(r, (*v.auto_heading_alignment_selector), err)) {
-                err.enter("auto_heading_alignment_selector");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_heading.emplace();
-            if (!read_value(r, (*v.initial_heading), err)) {
-                err.enter("initial_heading");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_pitch.emplace();
-            if (!read_value(r, (*v.initial_pitch), err)) {
-                err.enter("initial_pitch");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_roll.emplace();
-            if (!read_value(r, (*v.initial_roll), err)) {
-                err.enter("initial_roll");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_position.emplace();
-            if (!read_fixed(r, (*v.initial_position), err)) {
-                err.enter("initial_position");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.initial_velocity.emplace();
-            if (!read_fixed(r, (*v.initial_velocity), err)) {
-                err.enter("initial_velocity");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.reference_frame_selector.emplace();
-            if (!read_value(r, (*v.reference_frame_selector), err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::InitializationConfiguration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.wait_for_run_command) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.wait_for_run_command));
-        } else {
-            absent = true;
-        }
-        if (v.initial_cond_src) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.initial_cond_src));
-        } else {
-            absent = true;
-        }
-        if (v.auto_heading_alignment_selector) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.auto_heading_alignment_selector));
-        } else {
-            absent = true;
-        }
-        if (v.initial_heading) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.initial_heading));
-        } else {
-            absent = true;
-        }
-        if (v.initial_pitch) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.initial_pitch));
-        } else {
-            absent = true;
-        }
-        if (v.initial_roll) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.initial_roll));
-        } else {
-            absent = true;
-        }
-        if (v.initial_position) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.initial_position));
-        } else {
-            absent = true;
-        }
-        if (v.initial_velocity) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.initial_velocity));
-        } else {
-            absent = true;
-        }
-        if (v.reference_frame_selector) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.reference_frame_selector));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::InitializationConfiguration &v, DecodeError &err);
+    static void write(Writer &w, const filter::InitializationConfiguration &v);
 };
 
 template <> struct Codec<filter::InitializationConfigurationResponse> {
@@ -4943,115 +2793,15 @@ template <> struct Codec<filter::InitializationConfigurationResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::InitializationConfigurationResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.wait_for_run_command, err)) {
-            err.enter("wait_for_run_command");
-            return false;
-        }
-        if (!read_value(r, v.initial_cond_src, err)) {
-            err.enter("initial_cond_src");
-            return false;
-        }
-        if (!read_value(r, v.auto_heading_alignment_selector, err)) {
-            err.enter("auto_heading_alignment_selector");
-            return false;
-        }
-        if (!read_value(r, v.initial_heading, err)) {
-            err.enter("initial_heading");
-            return false;
-        }
-        if (!read_value(r, v.initial_pitch, err)) {
-            err.enter("initial_pitch");
-            return false;
-        }
-        if (!read_value(r, v.initial_roll, err)) {
-            err.enter("initial_roll");
-            return false;
-        }
-        if (!read_fixed(r, v.initial_position, err)) {
-            err.enter("initial_position");
-            return false;
-        }
-        if (!read_fixed(r, v.initial_velocity, err)) {
-            err.enter("initial_velocity");
-            return false;
-        }
-        if (!read_value(r, v.reference_frame_selector, err)) {
-            err.enter("reference_frame_selector");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::InitializationConfigurationResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.wait_for_run_command);
-        write_value(w, v.initial_cond_src);
-        write_value(w, v.auto_heading_alignment_selector);
-        write_value(w, v.initial_heading);
-        write_value(w, v.initial_pitch);
-        write_value(w, v.initial_roll);
-        write_fixed(w, v.initial_position);
-        write_fixed(w, v.initial_velocity);
-        write_value(w, v.reference_frame_selector);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::InitializationConfigurationResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::InitializationConfigurationResponse &v);
 };
 
 template <> struct Codec<filter::AdaptiveFilterControl> {
-    static bool read(Reader &r, filter::AdaptiveFilterControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.level.emplace();
-            if (!read_value(r, (*v.level), err)) {
-                err.enter("level");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.time_limit.emplace();
-            if (!read_value(r, (*v.time_limit), err)) {
-                err.enter("time_limit");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AdaptiveFilterControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.level) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.level));
-        } else {
-            absent = true;
-        }
-        if (v.time_limit) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.time_limit));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AdaptiveFilterControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::AdaptiveFilterControl &v);
 };
 
 template <> struct Codec<filter::AdaptiveFilterControlResponse> {
@@ -5069,69 +2819,15 @@ template <> struct Codec<filter::AdaptiveFilterControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::AdaptiveFilterControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.level, err)) {
-            err.enter("level");
-            return false;
-        }
-        if (!read_value(r, v.time_limit, err)) {
-            err.enter("time_limit");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::AdaptiveFilterControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.level);
-        write_value(w, v.time_limit);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::AdaptiveFilterControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::AdaptiveFilterControlResponse &v);
 };
 
 template <> struct Codec<filter::MultiAntennaOffset> {
-    static bool read(Reader &r, filter::MultiAntennaOffset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.antenna_offset.emplace();
-            if (!read_fixed(r, (*v.antenna_offset), err)) {
-                err.enter("antenna_offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MultiAntennaOffset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.receiver_id);
-        if (v.antenna_offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.antenna_offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MultiAntennaOffset &v, DecodeError &err);
+    static void write(Writer &w, const filter::MultiAntennaOffset &v);
 };
 
 template <> struct Codec<filter::MultiAntennaOffsetResponse> {
@@ -5149,96 +2845,15 @@ template <> struct Codec<filter::MultiAntennaOffsetResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::MultiAntennaOffsetResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_fixed(r, v.antenna_offset, err)) {
-            err.enter("antenna_offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::MultiAntennaOffsetResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_id);
-        write_fixed(w, v.antenna_offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::MultiAntennaOffsetResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::MultiAntennaOffsetResponse &v);
 };
 
 template <> struct Codec<filter::RelativePositionConfiguration> {
-    static bool read(Reader &r, filter::RelativePositionConfiguration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.reference_frame_selector.emplace();
-            if (!read_value(r, (*v.reference_frame_selector), err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.reference_coordinates.emplace();
-            if (!read_fixed(r, (*v.reference_coordinates), err)) {
-                err.enter("reference_coordinates");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::RelativePositionConfiguration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        if (v.reference_frame_selector) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.reference_frame_selector));
-        } else {
-            absent = true;
-        }
-        if (v.reference_coordinates) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.reference_coordinates));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::RelativePositionConfiguration &v, DecodeError &err);
+    static void write(Writer &w, const filter::RelativePositionConfiguration &v);
 };
 
 template <> struct Codec<filter::RelativePositionConfigurationResponse> {
@@ -5260,85 +2875,15 @@ template <> struct Codec<filter::RelativePositionConfigurationResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::RelativePositionConfigurationResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.reference_frame_selector, err)) {
-            err.enter("reference_frame_selector");
-            return false;
-        }
-        if (!read_fixed(r, v.reference_coordinates, err)) {
-            err.enter("reference_coordinates");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::RelativePositionConfigurationResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_value(w, v.reference_frame_selector);
-        write_fixed(w, v.reference_coordinates);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::RelativePositionConfigurationResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::RelativePositionConfigurationResponse &v);
 };
 
 template <> struct Codec<filter::ReferencePointLeverArm> {
-    static bool read(Reader &r, filter::ReferencePointLeverArm &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.ref_point_sel.emplace();
-            if (!read_value(r, (*v.ref_point_sel), err)) {
-                err.enter("ref_point_sel");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.lever_arm_offset.emplace();
-            if (!read_fixed(r, (*v.lever_arm_offset), err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ReferencePointLeverArm &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.ref_point_sel) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.ref_point_sel));
-        } else {
-            absent = true;
-        }
-        if (v.lever_arm_offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.lever_arm_offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ReferencePointLeverArm &v, DecodeError &err);
+    static void write(Writer &w, const filter::ReferencePointLeverArm &v);
 };
 
 template <> struct Codec<filter::ReferencePointLeverArmResponse> {
@@ -5356,69 +2901,15 @@ template <> struct Codec<filter::ReferencePointLeverArmResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::ReferencePointLeverArmResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.ref_point_sel, err)) {
-            err.enter("ref_point_sel");
-            return false;
-        }
-        if (!read_fixed(r, v.lever_arm_offset, err)) {
-            err.enter("lever_arm_offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::ReferencePointLeverArmResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.ref_point_sel);
-        write_fixed(w, v.lever_arm_offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::ReferencePointLeverArmResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::ReferencePointLeverArmResponse &v);
 };
 
 template <> struct Codec<filter::SpeedLeverArm> {
-    static bool read(Reader &r, filter::SpeedLeverArm &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.lever_arm_offset.emplace();
-            if (!read_fixed(r, (*v.lever_arm_offset), err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SpeedLeverArm &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.source);
-        if (v.lever_arm_offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.lever_arm_offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SpeedLeverArm &v, DecodeError &err);
+    static void write(Writer &w, const filter::SpeedLeverArm &v);
 };
 
 template <> struct Codec<filter::SpeedLeverArmResponse> {
@@ -5436,64 +2927,15 @@ template <> struct Codec<filter::SpeedLeverArmResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::SpeedLeverArmResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_fixed(r, v.lever_arm_offset, err)) {
-            err.enter("lever_arm_offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::SpeedLeverArmResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        write_fixed(w, v.lever_arm_offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::SpeedLeverArmResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::SpeedLeverArmResponse &v);
 };
 
 template <> struct Codec<filter::WheeledVehicleConstraintControl> {
-    static bool read(Reader &r, filter::WheeledVehicleConstraintControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::WheeledVehicleConstraintControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::WheeledVehicleConstraintControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::WheeledVehicleConstraintControl &v);
 };
 
 template <> struct Codec<filter::WheeledVehicleConstraintControlResponse> {
@@ -5509,75 +2951,15 @@ template <> struct Codec<filter::WheeledVehicleConstraintControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::WheeledVehicleConstraintControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::WheeledVehicleConstraintControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::WheeledVehicleConstraintControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::WheeledVehicleConstraintControlResponse &v);
 };
 
 template <> struct Codec<filter::GnssAntennaCalibrationControl> {
-    static bool read(Reader &r, filter::GnssAntennaCalibrationControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.max_offset.emplace();
-            if (!read_value(r, (*v.max_offset), err)) {
-                err.enter("max_offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GnssAntennaCalibrationControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.max_offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.max_offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GnssAntennaCalibrationControl &v, DecodeError &err);
+    static void write(Writer &w, const filter::GnssAntennaCalibrationControl &v);
 };
 
 template <> struct Codec<filter::GnssAntennaCalibrationControlResponse> {
@@ -5595,28 +2977,9 @@ template <> struct Codec<filter::GnssAntennaCalibrationControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter::GnssAntennaCalibrationControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.max_offset, err)) {
-            err.enter("max_offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter::GnssAntennaCalibrationControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        write_value(w, v.max_offset);
-        (void)absent;
-    }
+    // Defined in src/fields/filter.cpp (compiled into the library).
+    static bool read(Reader &r, filter::GnssAntennaCalibrationControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const filter::GnssAntennaCalibrationControlResponse &v);
 };
 
 } // namespace mipcodec

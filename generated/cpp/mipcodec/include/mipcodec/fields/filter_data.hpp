@@ -1109,38 +1109,9 @@ template <> struct Codec<filter_data::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.ellipsoid_height, err)) {
-            err.enter("ellipsoid_height");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.ellipsoid_height);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::LlhPosition &v);
 };
 
 template <> struct Codec<filter_data::NedVelocity> {
@@ -1163,38 +1134,9 @@ template <> struct Codec<filter_data::NedVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::NedVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.north, err)) {
-            err.enter("north");
-            return false;
-        }
-        if (!read_value(r, v.east, err)) {
-            err.enter("east");
-            return false;
-        }
-        if (!read_value(r, v.down, err)) {
-            err.enter("down");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::NedVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.north);
-        write_value(w, v.east);
-        write_value(w, v.down);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::NedVelocity &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::NedVelocity &v);
 };
 
 template <> struct Codec<filter_data::AttitudeQuaternion> {
@@ -1212,28 +1154,9 @@ template <> struct Codec<filter_data::AttitudeQuaternion> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AttitudeQuaternion &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.q, err)) {
-            err.enter("q");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AttitudeQuaternion &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.q);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AttitudeQuaternion &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AttitudeQuaternion &v);
 };
 
 template <> struct Codec<filter_data::AttitudeDcm> {
@@ -1251,28 +1174,9 @@ template <> struct Codec<filter_data::AttitudeDcm> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AttitudeDcm &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.dcm, err)) {
-            err.enter("dcm");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AttitudeDcm &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.dcm);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AttitudeDcm &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AttitudeDcm &v);
 };
 
 template <> struct Codec<filter_data::EulerAngles> {
@@ -1295,38 +1199,9 @@ template <> struct Codec<filter_data::EulerAngles> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EulerAngles &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.yaw, err)) {
-            err.enter("yaw");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EulerAngles &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.yaw);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EulerAngles &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EulerAngles &v);
 };
 
 template <> struct Codec<filter_data::GyroBias> {
@@ -1344,28 +1219,9 @@ template <> struct Codec<filter_data::GyroBias> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GyroBias &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GyroBias &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GyroBias &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GyroBias &v);
 };
 
 template <> struct Codec<filter_data::AccelBias> {
@@ -1383,28 +1239,9 @@ template <> struct Codec<filter_data::AccelBias> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AccelBias &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AccelBias &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AccelBias &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AccelBias &v);
 };
 
 template <> struct Codec<filter_data::LlhPositionUncertainty> {
@@ -1427,38 +1264,9 @@ template <> struct Codec<filter_data::LlhPositionUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::LlhPositionUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.north, err)) {
-            err.enter("north");
-            return false;
-        }
-        if (!read_value(r, v.east, err)) {
-            err.enter("east");
-            return false;
-        }
-        if (!read_value(r, v.down, err)) {
-            err.enter("down");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::LlhPositionUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.north);
-        write_value(w, v.east);
-        write_value(w, v.down);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::LlhPositionUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::LlhPositionUncertainty &v);
 };
 
 template <> struct Codec<filter_data::NedVelocityUncertainty> {
@@ -1481,38 +1289,9 @@ template <> struct Codec<filter_data::NedVelocityUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::NedVelocityUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.north, err)) {
-            err.enter("north");
-            return false;
-        }
-        if (!read_value(r, v.east, err)) {
-            err.enter("east");
-            return false;
-        }
-        if (!read_value(r, v.down, err)) {
-            err.enter("down");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::NedVelocityUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.north);
-        write_value(w, v.east);
-        write_value(w, v.down);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::NedVelocityUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::NedVelocityUncertainty &v);
 };
 
 template <> struct Codec<filter_data::EulerAnglesUncertainty> {
@@ -1535,38 +1314,9 @@ template <> struct Codec<filter_data::EulerAnglesUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EulerAnglesUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.yaw, err)) {
-            err.enter("yaw");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EulerAnglesUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.yaw);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EulerAnglesUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EulerAnglesUncertainty &v);
 };
 
 template <> struct Codec<filter_data::GyroBiasUncertainty> {
@@ -1584,28 +1334,9 @@ template <> struct Codec<filter_data::GyroBiasUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GyroBiasUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias_uncertainty, err)) {
-            err.enter("bias_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GyroBiasUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GyroBiasUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GyroBiasUncertainty &v);
 };
 
 template <> struct Codec<filter_data::AccelBiasUncertainty> {
@@ -1623,28 +1354,9 @@ template <> struct Codec<filter_data::AccelBiasUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AccelBiasUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias_uncertainty, err)) {
-            err.enter("bias_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AccelBiasUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AccelBiasUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AccelBiasUncertainty &v);
 };
 
 template <> struct Codec<filter_data::LinearAccel> {
@@ -1662,28 +1374,9 @@ template <> struct Codec<filter_data::LinearAccel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::LinearAccel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.accel, err)) {
-            err.enter("accel");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::LinearAccel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.accel);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::LinearAccel &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::LinearAccel &v);
 };
 
 template <> struct Codec<filter_data::CompAngularRate> {
@@ -1701,28 +1394,9 @@ template <> struct Codec<filter_data::CompAngularRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::CompAngularRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.gyro, err)) {
-            err.enter("gyro");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::CompAngularRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.gyro);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::CompAngularRate &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::CompAngularRate &v);
 };
 
 template <> struct Codec<filter_data::Wgs84GravityMagnitude> {
@@ -1740,28 +1414,9 @@ template <> struct Codec<filter_data::Wgs84GravityMagnitude> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::Wgs84GravityMagnitude &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gravity_magnitude, err)) {
-            err.enter("gravity_magnitude");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::Wgs84GravityMagnitude &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gravity_magnitude);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::Wgs84GravityMagnitude &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::Wgs84GravityMagnitude &v);
 };
 
 template <> struct Codec<filter_data::FilterStatusGx545> {
@@ -1782,33 +1437,9 @@ template <> struct Codec<filter_data::FilterStatusGx545> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::FilterStatusGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.filter_state, err)) {
-            err.enter("filter_state");
-            return false;
-        }
-        if (!read_value(r, v.dynamics_mode, err)) {
-            err.enter("dynamics_mode");
-            return false;
-        }
-        if (!read_value(r, v.status_flags, err)) {
-            err.enter("status_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::FilterStatusGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.filter_state);
-        write_value(w, v.dynamics_mode);
-        write_value(w, v.status_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::FilterStatusGx545 &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::FilterStatusGx545 &v);
 };
 
 template <> struct Codec<filter_data::FilterStatusCv7Ins> {
@@ -1829,33 +1460,9 @@ template <> struct Codec<filter_data::FilterStatusCv7Ins> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::FilterStatusCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.filter_state, err)) {
-            err.enter("filter_state");
-            return false;
-        }
-        if (!read_value(r, v.dynamics_mode, err)) {
-            err.enter("dynamics_mode");
-            return false;
-        }
-        if (!read_value(r, v.status_flags, err)) {
-            err.enter("status_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::FilterStatusCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.filter_state);
-        write_value(w, v.dynamics_mode);
-        write_value(w, v.status_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::FilterStatusCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::FilterStatusCv7Ins &v);
 };
 
 template <> struct Codec<filter_data::GpsTimestamp> {
@@ -1875,33 +1482,9 @@ template <> struct Codec<filter_data::GpsTimestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GpsTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GpsTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GpsTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GpsTimestamp &v);
 };
 
 template <> struct Codec<filter_data::QuaternionAttitudeUncertainty> {
@@ -1919,28 +1502,9 @@ template <> struct Codec<filter_data::QuaternionAttitudeUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::QuaternionAttitudeUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.q, err)) {
-            err.enter("q");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::QuaternionAttitudeUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.q);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::QuaternionAttitudeUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::QuaternionAttitudeUncertainty &v);
 };
 
 template <> struct Codec<filter_data::GravityVector> {
@@ -1958,28 +1522,9 @@ template <> struct Codec<filter_data::GravityVector> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GravityVector &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.gravity, err)) {
-            err.enter("gravity");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GravityVector &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.gravity);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GravityVector &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GravityVector &v);
 };
 
 template <> struct Codec<filter_data::HeadingUpdateState> {
@@ -2002,38 +1547,9 @@ template <> struct Codec<filter_data::HeadingUpdateState> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::HeadingUpdateState &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.heading_uncertainty, err)) {
-            err.enter("heading_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::HeadingUpdateState &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.heading);
-        write_value(w, v.heading_uncertainty);
-        write_value(w, v.source);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::HeadingUpdateState &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::HeadingUpdateState &v);
 };
 
 template <> struct Codec<filter_data::MagneticModel> {
@@ -2060,48 +1576,9 @@ template <> struct Codec<filter_data::MagneticModel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MagneticModel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.intensity_north, err)) {
-            err.enter("intensity_north");
-            return false;
-        }
-        if (!read_value(r, v.intensity_east, err)) {
-            err.enter("intensity_east");
-            return false;
-        }
-        if (!read_value(r, v.intensity_down, err)) {
-            err.enter("intensity_down");
-            return false;
-        }
-        if (!read_value(r, v.inclination, err)) {
-            err.enter("inclination");
-            return false;
-        }
-        if (!read_value(r, v.declination, err)) {
-            err.enter("declination");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MagneticModel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.intensity_north);
-        write_value(w, v.intensity_east);
-        write_value(w, v.intensity_down);
-        write_value(w, v.inclination);
-        write_value(w, v.declination);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MagneticModel &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MagneticModel &v);
 };
 
 template <> struct Codec<filter_data::GyroScaleFactor> {
@@ -2119,28 +1596,9 @@ template <> struct Codec<filter_data::GyroScaleFactor> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GyroScaleFactor &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scale_factor, err)) {
-            err.enter("scale_factor");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GyroScaleFactor &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scale_factor);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GyroScaleFactor &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GyroScaleFactor &v);
 };
 
 template <> struct Codec<filter_data::AccelScaleFactor> {
@@ -2158,28 +1616,9 @@ template <> struct Codec<filter_data::AccelScaleFactor> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AccelScaleFactor &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scale_factor, err)) {
-            err.enter("scale_factor");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AccelScaleFactor &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scale_factor);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AccelScaleFactor &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AccelScaleFactor &v);
 };
 
 template <> struct Codec<filter_data::GyroScaleFactorUncertainty> {
@@ -2197,28 +1636,9 @@ template <> struct Codec<filter_data::GyroScaleFactorUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GyroScaleFactorUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scale_factor_uncertainty, err)) {
-            err.enter("scale_factor_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GyroScaleFactorUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scale_factor_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GyroScaleFactorUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GyroScaleFactorUncertainty &v);
 };
 
 template <> struct Codec<filter_data::AccelScaleFactorUncertainty> {
@@ -2236,28 +1656,9 @@ template <> struct Codec<filter_data::AccelScaleFactorUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AccelScaleFactorUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scale_factor_uncertainty, err)) {
-            err.enter("scale_factor_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AccelScaleFactorUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scale_factor_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AccelScaleFactorUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AccelScaleFactorUncertainty &v);
 };
 
 template <> struct Codec<filter_data::CompensatedAccel> {
@@ -2275,28 +1676,9 @@ template <> struct Codec<filter_data::CompensatedAccel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::CompensatedAccel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.accel, err)) {
-            err.enter("accel");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::CompensatedAccel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.accel);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::CompensatedAccel &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::CompensatedAccel &v);
 };
 
 template <> struct Codec<filter_data::StandardAtmosphere> {
@@ -2323,48 +1705,9 @@ template <> struct Codec<filter_data::StandardAtmosphere> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::StandardAtmosphere &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.geometric_altitude, err)) {
-            err.enter("geometric_altitude");
-            return false;
-        }
-        if (!read_value(r, v.geopotential_altitude, err)) {
-            err.enter("geopotential_altitude");
-            return false;
-        }
-        if (!read_value(r, v.temperature, err)) {
-            err.enter("temperature");
-            return false;
-        }
-        if (!read_value(r, v.pressure, err)) {
-            err.enter("pressure");
-            return false;
-        }
-        if (!read_value(r, v.density, err)) {
-            err.enter("density");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::StandardAtmosphere &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.geometric_altitude);
-        write_value(w, v.geopotential_altitude);
-        write_value(w, v.temperature);
-        write_value(w, v.pressure);
-        write_value(w, v.density);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::StandardAtmosphere &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::StandardAtmosphere &v);
 };
 
 template <> struct Codec<filter_data::PressureAltitude> {
@@ -2382,28 +1725,9 @@ template <> struct Codec<filter_data::PressureAltitude> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::PressureAltitude &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pressure_altitude, err)) {
-            err.enter("pressure_altitude");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::PressureAltitude &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pressure_altitude);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::PressureAltitude &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::PressureAltitude &v);
 };
 
 template <> struct Codec<filter_data::MagAutoHardIronOffset> {
@@ -2421,28 +1745,9 @@ template <> struct Codec<filter_data::MagAutoHardIronOffset> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MagAutoHardIronOffset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.hard_iron_offset, err)) {
-            err.enter("hard_iron_offset");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MagAutoHardIronOffset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.hard_iron_offset);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MagAutoHardIronOffset &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MagAutoHardIronOffset &v);
 };
 
 template <> struct Codec<filter_data::MagAutoSoftIronMatrix> {
@@ -2460,28 +1765,9 @@ template <> struct Codec<filter_data::MagAutoSoftIronMatrix> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MagAutoSoftIronMatrix &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.soft_iron_matrix, err)) {
-            err.enter("soft_iron_matrix");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MagAutoSoftIronMatrix &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.soft_iron_matrix);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MagAutoSoftIronMatrix &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MagAutoSoftIronMatrix &v);
 };
 
 template <> struct Codec<filter_data::MagAutoHardIronOffsetUncertainty> {
@@ -2500,28 +1786,9 @@ template <> struct Codec<filter_data::MagAutoHardIronOffsetUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MagAutoHardIronOffsetUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.hard_iron_offset_uncertainty, err)) {
-            err.enter("hard_iron_offset_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MagAutoHardIronOffsetUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.hard_iron_offset_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MagAutoHardIronOffsetUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MagAutoHardIronOffsetUncertainty &v);
 };
 
 template <> struct Codec<filter_data::MagAutoSoftIronMatrixUncertainty> {
@@ -2540,28 +1807,9 @@ template <> struct Codec<filter_data::MagAutoSoftIronMatrixUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MagAutoSoftIronMatrixUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.soft_iron_matrix_uncertainty, err)) {
-            err.enter("soft_iron_matrix_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MagAutoSoftIronMatrixUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.soft_iron_matrix_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MagAutoSoftIronMatrixUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MagAutoSoftIronMatrixUncertainty &v);
 };
 
 template <> struct Codec<filter_data::GnssAntennaOffsetCorrection> {
@@ -2579,28 +1827,9 @@ template <> struct Codec<filter_data::GnssAntennaOffsetCorrection> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrection &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.offset, err)) {
-            err.enter("offset");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GnssAntennaOffsetCorrection &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.offset);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrection &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GnssAntennaOffsetCorrection &v);
 };
 
 template <> struct Codec<filter_data::GnssAntennaOffsetCorrectionUncertainty> {
@@ -2619,28 +1848,9 @@ template <> struct Codec<filter_data::GnssAntennaOffsetCorrectionUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrectionUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.offset_uncertainty, err)) {
-            err.enter("offset_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GnssAntennaOffsetCorrectionUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.offset_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GnssAntennaOffsetCorrectionUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GnssAntennaOffsetCorrectionUncertainty &v);
 };
 
 template <> struct Codec<filter_data::MultiAntennaOffsetCorrection> {
@@ -2661,33 +1871,9 @@ template <> struct Codec<filter_data::MultiAntennaOffsetCorrection> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrection &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_fixed(r, v.offset, err)) {
-            err.enter("offset");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MultiAntennaOffsetCorrection &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_id);
-        write_fixed(w, v.offset);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrection &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MultiAntennaOffsetCorrection &v);
 };
 
 template <> struct Codec<filter_data::MultiAntennaOffsetCorrectionUncertainty> {
@@ -2709,33 +1895,9 @@ template <> struct Codec<filter_data::MultiAntennaOffsetCorrectionUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrectionUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_fixed(r, v.offset_uncertainty, err)) {
-            err.enter("offset_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::MultiAntennaOffsetCorrectionUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_id);
-        write_fixed(w, v.offset_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::MultiAntennaOffsetCorrectionUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::MultiAntennaOffsetCorrectionUncertainty &v);
 };
 
 template <> struct Codec<filter_data::EcefPositionUncertainty> {
@@ -2753,28 +1915,9 @@ template <> struct Codec<filter_data::EcefPositionUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EcefPositionUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.position_uncertainty, err)) {
-            err.enter("position_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EcefPositionUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.position_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EcefPositionUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EcefPositionUncertainty &v);
 };
 
 template <> struct Codec<filter_data::EcefVelocityUncertainty> {
@@ -2792,28 +1935,9 @@ template <> struct Codec<filter_data::EcefVelocityUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EcefVelocityUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity_uncertainty, err)) {
-            err.enter("velocity_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EcefVelocityUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EcefVelocityUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EcefVelocityUncertainty &v);
 };
 
 template <> struct Codec<filter_data::EcefPosition> {
@@ -2831,28 +1955,9 @@ template <> struct Codec<filter_data::EcefPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EcefPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.position, err)) {
-            err.enter("position");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EcefPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.position);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EcefPosition &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EcefPosition &v);
 };
 
 template <> struct Codec<filter_data::EcefVelocity> {
@@ -2870,28 +1975,9 @@ template <> struct Codec<filter_data::EcefVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::EcefVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::EcefVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::EcefVelocity &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::EcefVelocity &v);
 };
 
 template <> struct Codec<filter_data::NedRelativePosition> {
@@ -2909,28 +1995,9 @@ template <> struct Codec<filter_data::NedRelativePosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::NedRelativePosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.relative_position, err)) {
-            err.enter("relative_position");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::NedRelativePosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.relative_position);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::NedRelativePosition &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::NedRelativePosition &v);
 };
 
 template <> struct Codec<filter_data::GnssPositionAidingStatus> {
@@ -2953,38 +2020,9 @@ template <> struct Codec<filter_data::GnssPositionAidingStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GnssPositionAidingStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_value(r, v.time_of_week, err)) {
-            err.enter("time_of_week");
-            return false;
-        }
-        if (!read_value(r, v.status, err)) {
-            err.enter("status");
-            return false;
-        }
-        if (!read_fixed(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GnssPositionAidingStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_id);
-        write_value(w, v.time_of_week);
-        write_value(w, v.status);
-        write_fixed(w, v.reserved);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GnssPositionAidingStatus &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GnssPositionAidingStatus &v);
 };
 
 template <> struct Codec<filter_data::AidingMeasurementSummary> {
@@ -3008,38 +2046,9 @@ template <> struct Codec<filter_data::AidingMeasurementSummary> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AidingMeasurementSummary &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time_of_week, err)) {
-            err.enter("time_of_week");
-            return false;
-        }
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.indicator, err)) {
-            err.enter("indicator");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AidingMeasurementSummary &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time_of_week);
-        write_value(w, v.source);
-        write_value(w, v.type);
-        write_value(w, v.indicator);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AidingMeasurementSummary &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AidingMeasurementSummary &v);
 };
 
 template <> struct Codec<filter_data::OdometerScaleFactorError> {
@@ -3057,28 +2066,9 @@ template <> struct Codec<filter_data::OdometerScaleFactorError> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::OdometerScaleFactorError &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.scale_factor_error, err)) {
-            err.enter("scale_factor_error");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::OdometerScaleFactorError &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.scale_factor_error);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::OdometerScaleFactorError &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::OdometerScaleFactorError &v);
 };
 
 template <> struct Codec<filter_data::OdometerScaleFactorErrorUncertainty> {
@@ -3097,28 +2087,9 @@ template <> struct Codec<filter_data::OdometerScaleFactorErrorUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::OdometerScaleFactorErrorUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.scale_factor_error_uncertainty, err)) {
-            err.enter("scale_factor_error_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::OdometerScaleFactorErrorUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.scale_factor_error_uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::OdometerScaleFactorErrorUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::OdometerScaleFactorErrorUncertainty &v);
 };
 
 template <> struct Codec<filter_data::GnssDualAntennaStatus> {
@@ -3147,48 +2118,9 @@ template <> struct Codec<filter_data::GnssDualAntennaStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::GnssDualAntennaStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time_of_week, err)) {
-            err.enter("time_of_week");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.heading_uncertainty, err)) {
-            err.enter("heading_uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.fix_type, err)) {
-            err.enter("fix_type");
-            return false;
-        }
-        if (!read_value(r, v.status_flags, err)) {
-            err.enter("status_flags");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::GnssDualAntennaStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time_of_week);
-        write_value(w, v.heading);
-        write_value(w, v.heading_uncertainty);
-        write_value(w, v.fix_type);
-        write_value(w, v.status_flags);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::GnssDualAntennaStatus &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::GnssDualAntennaStatus &v);
 };
 
 template <> struct Codec<filter_data::AidingFrameConfigError> {
@@ -3209,33 +2141,9 @@ template <> struct Codec<filter_data::AidingFrameConfigError> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AidingFrameConfigError &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.translation, err)) {
-            err.enter("translation");
-            return false;
-        }
-        if (!read_fixed(r, v.attitude, err)) {
-            err.enter("attitude");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AidingFrameConfigError &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.frame_id);
-        write_fixed(w, v.translation);
-        write_fixed(w, v.attitude);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AidingFrameConfigError &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AidingFrameConfigError &v);
 };
 
 template <> struct Codec<filter_data::AidingFrameConfigErrorUncertainty> {
@@ -3257,33 +2165,9 @@ template <> struct Codec<filter_data::AidingFrameConfigErrorUncertainty> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, filter_data::AidingFrameConfigErrorUncertainty &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.frame_id, err)) {
-            err.enter("frame_id");
-            return false;
-        }
-        if (!read_fixed(r, v.translation_uncertainty, err)) {
-            err.enter("translation_uncertainty");
-            return false;
-        }
-        if (!read_fixed(r, v.attitude_uncertainty, err)) {
-            err.enter("attitude_uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const filter_data::AidingFrameConfigErrorUncertainty &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.frame_id);
-        write_fixed(w, v.translation_uncertainty);
-        write_fixed(w, v.attitude_uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/filter_data.cpp (compiled into the library).
+    static bool read(Reader &r, filter_data::AidingFrameConfigErrorUncertainty &v, DecodeError &err);
+    static void write(Writer &w, const filter_data::AidingFrameConfigErrorUncertainty &v);
 };
 
 } // namespace mipcodec

@@ -9,2511 +9,301 @@
 namespace mipcodec {
 
 template <> struct Json<filter_data::LlhPosition> {
-    static void write(JsonWriter &w, const filter_data::LlhPosition &v) {
-        (void)v;
-        w.begin_object();
-        w.key("latitude");
-        json_write_value(w, v.latitude);
-        w.key("longitude");
-        json_write_value(w, v.longitude);
-        w.key("ellipsoid_height");
-        json_write_value(w, v.ellipsoid_height);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::LlhPosition &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "latitude",
-                                   "longitude",
-                                   "ellipsoid_height",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("latitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.latitude, err)) {
-                err.enter("latitude");
-                return false;
-            }
-        } else {
-            return err.missing("latitude");
-        }
-        if (const json::Value *found = in.find("longitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.longitude, err)) {
-                err.enter("longitude");
-                return false;
-            }
-        } else {
-            return err.missing("longitude");
-        }
-        if (const json::Value *found = in.find("ellipsoid_height")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.ellipsoid_height, err)) {
-                err.enter("ellipsoid_height");
-                return false;
-            }
-        } else {
-            return err.missing("ellipsoid_height");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::LlhPosition &v);
+    static bool read(const json::Value &in, filter_data::LlhPosition &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::NedVelocity> {
-    static void write(JsonWriter &w, const filter_data::NedVelocity &v) {
-        (void)v;
-        w.begin_object();
-        w.key("north");
-        json_write_value(w, v.north);
-        w.key("east");
-        json_write_value(w, v.east);
-        w.key("down");
-        json_write_value(w, v.down);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::NedVelocity &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "north",
-                                   "east",
-                                   "down",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("north")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.north, err)) {
-                err.enter("north");
-                return false;
-            }
-        } else {
-            return err.missing("north");
-        }
-        if (const json::Value *found = in.find("east")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.east, err)) {
-                err.enter("east");
-                return false;
-            }
-        } else {
-            return err.missing("east");
-        }
-        if (const json::Value *found = in.find("down")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.down, err)) {
-                err.enter("down");
-                return false;
-            }
-        } else {
-            return err.missing("down");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::NedVelocity &v);
+    static bool read(const json::Value &in, filter_data::NedVelocity &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AttitudeQuaternion> {
-    static void write(JsonWriter &w, const filter_data::AttitudeQuaternion &v) {
-        (void)v;
-        w.begin_object();
-        w.key("q");
-        json_write_array(w, v.q);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AttitudeQuaternion &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "q",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("q")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.q, err)) {
-                err.enter("q");
-                return false;
-            }
-        } else {
-            return err.missing("q");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AttitudeQuaternion &v);
+    static bool read(const json::Value &in, filter_data::AttitudeQuaternion &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AttitudeDcm> {
-    static void write(JsonWriter &w, const filter_data::AttitudeDcm &v) {
-        (void)v;
-        w.begin_object();
-        w.key("dcm");
-        json_write_array(w, v.dcm);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AttitudeDcm &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "dcm",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("dcm")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.dcm, err)) {
-                err.enter("dcm");
-                return false;
-            }
-        } else {
-            return err.missing("dcm");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AttitudeDcm &v);
+    static bool read(const json::Value &in, filter_data::AttitudeDcm &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::EulerAngles> {
-    static void write(JsonWriter &w, const filter_data::EulerAngles &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("yaw");
-        json_write_value(w, v.yaw);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EulerAngles &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.yaw, err)) {
-                err.enter("yaw");
-                return false;
-            }
-        } else {
-            return err.missing("yaw");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EulerAngles &v);
+    static bool read(const json::Value &in, filter_data::EulerAngles &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GyroBias> {
-    static void write(JsonWriter &w, const filter_data::GyroBias &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias");
-        json_write_array(w, v.bias);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GyroBias &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias, err)) {
-                err.enter("bias");
-                return false;
-            }
-        } else {
-            return err.missing("bias");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GyroBias &v);
+    static bool read(const json::Value &in, filter_data::GyroBias &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AccelBias> {
-    static void write(JsonWriter &w, const filter_data::AccelBias &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias");
-        json_write_array(w, v.bias);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AccelBias &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias, err)) {
-                err.enter("bias");
-                return false;
-            }
-        } else {
-            return err.missing("bias");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AccelBias &v);
+    static bool read(const json::Value &in, filter_data::AccelBias &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::LlhPositionUncertainty> {
-    static void write(JsonWriter &w, const filter_data::LlhPositionUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("north");
-        json_write_value(w, v.north);
-        w.key("east");
-        json_write_value(w, v.east);
-        w.key("down");
-        json_write_value(w, v.down);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::LlhPositionUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "north",
-                                   "east",
-                                   "down",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("north")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.north, err)) {
-                err.enter("north");
-                return false;
-            }
-        } else {
-            return err.missing("north");
-        }
-        if (const json::Value *found = in.find("east")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.east, err)) {
-                err.enter("east");
-                return false;
-            }
-        } else {
-            return err.missing("east");
-        }
-        if (const json::Value *found = in.find("down")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.down, err)) {
-                err.enter("down");
-                return false;
-            }
-        } else {
-            return err.missing("down");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::LlhPositionUncertainty &v);
+    static bool read(const json::Value &in, filter_data::LlhPositionUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::NedVelocityUncertainty> {
-    static void write(JsonWriter &w, const filter_data::NedVelocityUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("north");
-        json_write_value(w, v.north);
-        w.key("east");
-        json_write_value(w, v.east);
-        w.key("down");
-        json_write_value(w, v.down);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::NedVelocityUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "north",
-                                   "east",
-                                   "down",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("north")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.north, err)) {
-                err.enter("north");
-                return false;
-            }
-        } else {
-            return err.missing("north");
-        }
-        if (const json::Value *found = in.find("east")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.east, err)) {
-                err.enter("east");
-                return false;
-            }
-        } else {
-            return err.missing("east");
-        }
-        if (const json::Value *found = in.find("down")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.down, err)) {
-                err.enter("down");
-                return false;
-            }
-        } else {
-            return err.missing("down");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::NedVelocityUncertainty &v);
+    static bool read(const json::Value &in, filter_data::NedVelocityUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::EulerAnglesUncertainty> {
-    static void write(JsonWriter &w, const filter_data::EulerAnglesUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("yaw");
-        json_write_value(w, v.yaw);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EulerAnglesUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.yaw, err)) {
-                err.enter("yaw");
-                return false;
-            }
-        } else {
-            return err.missing("yaw");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EulerAnglesUncertainty &v);
+    static bool read(const json::Value &in, filter_data::EulerAnglesUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GyroBiasUncertainty> {
-    static void write(JsonWriter &w, const filter_data::GyroBiasUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias_uncertainty");
-        json_write_array(w, v.bias_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GyroBiasUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias_uncertainty, err)) {
-                err.enter("bias_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("bias_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GyroBiasUncertainty &v);
+    static bool read(const json::Value &in, filter_data::GyroBiasUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AccelBiasUncertainty> {
-    static void write(JsonWriter &w, const filter_data::AccelBiasUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias_uncertainty");
-        json_write_array(w, v.bias_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AccelBiasUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias_uncertainty, err)) {
-                err.enter("bias_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("bias_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AccelBiasUncertainty &v);
+    static bool read(const json::Value &in, filter_data::AccelBiasUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::LinearAccel> {
-    static void write(JsonWriter &w, const filter_data::LinearAccel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("accel");
-        json_write_array(w, v.accel);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::LinearAccel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "accel",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("accel")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.accel, err)) {
-                err.enter("accel");
-                return false;
-            }
-        } else {
-            return err.missing("accel");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::LinearAccel &v);
+    static bool read(const json::Value &in, filter_data::LinearAccel &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::CompAngularRate> {
-    static void write(JsonWriter &w, const filter_data::CompAngularRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gyro");
-        json_write_array(w, v.gyro);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::CompAngularRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gyro",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gyro")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.gyro, err)) {
-                err.enter("gyro");
-                return false;
-            }
-        } else {
-            return err.missing("gyro");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::CompAngularRate &v);
+    static bool read(const json::Value &in, filter_data::CompAngularRate &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::Wgs84GravityMagnitude> {
-    static void write(JsonWriter &w, const filter_data::Wgs84GravityMagnitude &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gravity_magnitude");
-        json_write_value(w, v.gravity_magnitude);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::Wgs84GravityMagnitude &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gravity_magnitude",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gravity_magnitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gravity_magnitude, err)) {
-                err.enter("gravity_magnitude");
-                return false;
-            }
-        } else {
-            return err.missing("gravity_magnitude");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::Wgs84GravityMagnitude &v);
+    static bool read(const json::Value &in, filter_data::Wgs84GravityMagnitude &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::FilterStatusGx545> {
-    static void write(JsonWriter &w, const filter_data::FilterStatusGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("filter_state");
-        json_write_value(w, v.filter_state);
-        w.key("dynamics_mode");
-        json_write_value(w, v.dynamics_mode);
-        w.key("status_flags");
-        json_write_value(w, v.status_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::FilterStatusGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "filter_state",
-                                   "dynamics_mode",
-                                   "status_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("filter_state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.filter_state, err)) {
-                err.enter("filter_state");
-                return false;
-            }
-        } else {
-            return err.missing("filter_state");
-        }
-        if (const json::Value *found = in.find("dynamics_mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.dynamics_mode, err)) {
-                err.enter("dynamics_mode");
-                return false;
-            }
-        } else {
-            return err.missing("dynamics_mode");
-        }
-        if (const json::Value *found = in.find("status_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_flags, err)) {
-                err.enter("status_flags");
-                return false;
-            }
-        } else {
-            return err.missing("status_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::FilterStatusGx545 &v);
+    static bool read(const json::Value &in, filter_data::FilterStatusGx545 &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::FilterStatusCv7Ins> {
-    static void write(JsonWriter &w, const filter_data::FilterStatusCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("filter_state");
-        json_write_value(w, v.filter_state);
-        w.key("dynamics_mode");
-        json_write_value(w, v.dynamics_mode);
-        w.key("status_flags");
-        json_write_value(w, v.status_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::FilterStatusCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "filter_state",
-                                   "dynamics_mode",
-                                   "status_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("filter_state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.filter_state, err)) {
-                err.enter("filter_state");
-                return false;
-            }
-        } else {
-            return err.missing("filter_state");
-        }
-        if (const json::Value *found = in.find("dynamics_mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.dynamics_mode, err)) {
-                err.enter("dynamics_mode");
-                return false;
-            }
-        } else {
-            return err.missing("dynamics_mode");
-        }
-        if (const json::Value *found = in.find("status_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_flags, err)) {
-                err.enter("status_flags");
-                return false;
-            }
-        } else {
-            return err.missing("status_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::FilterStatusCv7Ins &v);
+    static bool read(const json::Value &in, filter_data::FilterStatusCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GpsTimestamp> {
-    static void write(JsonWriter &w, const filter_data::GpsTimestamp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("tow");
-        json_write_value(w, v.tow);
-        w.key("week_number");
-        json_write_value(w, v.week_number);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GpsTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "tow",
-                                   "week_number",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.tow, err)) {
-                err.enter("tow");
-                return false;
-            }
-        } else {
-            return err.missing("tow");
-        }
-        if (const json::Value *found = in.find("week_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week_number, err)) {
-                err.enter("week_number");
-                return false;
-            }
-        } else {
-            return err.missing("week_number");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GpsTimestamp &v);
+    static bool read(const json::Value &in, filter_data::GpsTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::QuaternionAttitudeUncertainty> {
-    static void write(JsonWriter &w, const filter_data::QuaternionAttitudeUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("q");
-        json_write_array(w, v.q);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::QuaternionAttitudeUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "q",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("q")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.q, err)) {
-                err.enter("q");
-                return false;
-            }
-        } else {
-            return err.missing("q");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::QuaternionAttitudeUncertainty &v);
+    static bool read(const json::Value &in, filter_data::QuaternionAttitudeUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GravityVector> {
-    static void write(JsonWriter &w, const filter_data::GravityVector &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gravity");
-        json_write_array(w, v.gravity);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GravityVector &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gravity",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gravity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.gravity, err)) {
-                err.enter("gravity");
-                return false;
-            }
-        } else {
-            return err.missing("gravity");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GravityVector &v);
+    static bool read(const json::Value &in, filter_data::GravityVector &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::HeadingUpdateState> {
-    static void write(JsonWriter &w, const filter_data::HeadingUpdateState &v) {
-        (void)v;
-        w.begin_object();
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.key("heading_uncertainty");
-        json_write_value(w, v.heading_uncertainty);
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::HeadingUpdateState &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "heading",
-                                   "heading_uncertainty",
-                                   "source",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        if (const json::Value *found = in.find("heading_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_uncertainty, err)) {
-                err.enter("heading_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("heading_uncertainty");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::HeadingUpdateState &v);
+    static bool read(const json::Value &in, filter_data::HeadingUpdateState &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MagneticModel> {
-    static void write(JsonWriter &w, const filter_data::MagneticModel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("intensity_north");
-        json_write_value(w, v.intensity_north);
-        w.key("intensity_east");
-        json_write_value(w, v.intensity_east);
-        w.key("intensity_down");
-        json_write_value(w, v.intensity_down);
-        w.key("inclination");
-        json_write_value(w, v.inclination);
-        w.key("declination");
-        json_write_value(w, v.declination);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MagneticModel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "intensity_north",
-                                   "intensity_east",
-                                   "intensity_down",
-                                   "inclination",
-                                   "declination",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("intensity_north")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.intensity_north, err)) {
-                err.enter("intensity_north");
-                return false;
-            }
-        } else {
-            return err.missing("intensity_north");
-        }
-        if (const json::Value *found = in.find("intensity_east")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.intensity_east, err)) {
-                err.enter("intensity_east");
-                return false;
-            }
-        } else {
-            return err.missing("intensity_east");
-        }
-        if (const json::Value *found = in.find("intensity_down")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.intensity_down, err)) {
-                err.enter("intensity_down");
-                return false;
-            }
-        } else {
-            return err.missing("intensity_down");
-        }
-        if (const json::Value *found = in.find("inclination")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.inclination, err)) {
-                err.enter("inclination");
-                return false;
-            }
-        } else {
-            return err.missing("inclination");
-        }
-        if (const json::Value *found = in.find("declination")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.declination, err)) {
-                err.enter("declination");
-                return false;
-            }
-        } else {
-            return err.missing("declination");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MagneticModel &v);
+    static bool read(const json::Value &in, filter_data::MagneticModel &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GyroScaleFactor> {
-    static void write(JsonWriter &w, const filter_data::GyroScaleFactor &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor");
-        json_write_array(w, v.scale_factor);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GyroScaleFactor &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scale_factor, err)) {
-                err.enter("scale_factor");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GyroScaleFactor &v);
+    static bool read(const json::Value &in, filter_data::GyroScaleFactor &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AccelScaleFactor> {
-    static void write(JsonWriter &w, const filter_data::AccelScaleFactor &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor");
-        json_write_array(w, v.scale_factor);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AccelScaleFactor &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scale_factor, err)) {
-                err.enter("scale_factor");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AccelScaleFactor &v);
+    static bool read(const json::Value &in, filter_data::AccelScaleFactor &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GyroScaleFactorUncertainty> {
-    static void write(JsonWriter &w, const filter_data::GyroScaleFactorUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor_uncertainty");
-        json_write_array(w, v.scale_factor_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GyroScaleFactorUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scale_factor_uncertainty, err)) {
-                err.enter("scale_factor_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GyroScaleFactorUncertainty &v);
+    static bool read(const json::Value &in, filter_data::GyroScaleFactorUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AccelScaleFactorUncertainty> {
-    static void write(JsonWriter &w, const filter_data::AccelScaleFactorUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor_uncertainty");
-        json_write_array(w, v.scale_factor_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AccelScaleFactorUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scale_factor_uncertainty, err)) {
-                err.enter("scale_factor_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AccelScaleFactorUncertainty &v);
+    static bool read(const json::Value &in, filter_data::AccelScaleFactorUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::CompensatedAccel> {
-    static void write(JsonWriter &w, const filter_data::CompensatedAccel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("accel");
-        json_write_array(w, v.accel);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::CompensatedAccel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "accel",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("accel")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.accel, err)) {
-                err.enter("accel");
-                return false;
-            }
-        } else {
-            return err.missing("accel");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::CompensatedAccel &v);
+    static bool read(const json::Value &in, filter_data::CompensatedAccel &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::StandardAtmosphere> {
-    static void write(JsonWriter &w, const filter_data::StandardAtmosphere &v) {
-        (void)v;
-        w.begin_object();
-        w.key("geometric_altitude");
-        json_write_value(w, v.geometric_altitude);
-        w.key("geopotential_altitude");
-        json_write_value(w, v.geopotential_altitude);
-        w.key("temperature");
-        json_write_value(w, v.temperature);
-        w.key("pressure");
-        json_write_value(w, v.pressure);
-        w.key("density");
-        json_write_value(w, v.density);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::StandardAtmosphere &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "geometric_altitude",
-                                   "geopotential_altitude",
-                                   "temperature",
-                                   "pressure",
-                                   "density",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("geometric_altitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.geometric_altitude, err)) {
-                err.enter("geometric_altitude");
-                return false;
-            }
-        } else {
-            return err.missing("geometric_altitude");
-        }
-        if (const json::Value *found = in.find("geopotential_altitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.geopotential_altitude, err)) {
-                err.enter("geopotential_altitude");
-                return false;
-            }
-        } else {
-            return err.missing("geopotential_altitude");
-        }
-        if (const json::Value *found = in.find("temperature")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.temperature, err)) {
-                err.enter("temperature");
-                return false;
-            }
-        } else {
-            return err.missing("temperature");
-        }
-        if (const json::Value *found = in.find("pressure")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pressure, err)) {
-                err.enter("pressure");
-                return false;
-            }
-        } else {
-            return err.missing("pressure");
-        }
-        if (const json::Value *found = in.find("density")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.density, err)) {
-                err.enter("density");
-                return false;
-            }
-        } else {
-            return err.missing("density");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::StandardAtmosphere &v);
+    static bool read(const json::Value &in, filter_data::StandardAtmosphere &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::PressureAltitude> {
-    static void write(JsonWriter &w, const filter_data::PressureAltitude &v) {
-        (void)v;
-        w.begin_object();
-        w.key("pressure_altitude");
-        json_write_value(w, v.pressure_altitude);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::PressureAltitude &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pressure_altitude",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pressure_altitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pressure_altitude, err)) {
-                err.enter("pressure_altitude");
-                return false;
-            }
-        } else {
-            return err.missing("pressure_altitude");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::PressureAltitude &v);
+    static bool read(const json::Value &in, filter_data::PressureAltitude &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MagAutoHardIronOffset> {
-    static void write(JsonWriter &w, const filter_data::MagAutoHardIronOffset &v) {
-        (void)v;
-        w.begin_object();
-        w.key("hard_iron_offset");
-        json_write_array(w, v.hard_iron_offset);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MagAutoHardIronOffset &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "hard_iron_offset",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("hard_iron_offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.hard_iron_offset, err)) {
-                err.enter("hard_iron_offset");
-                return false;
-            }
-        } else {
-            return err.missing("hard_iron_offset");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MagAutoHardIronOffset &v);
+    static bool read(const json::Value &in, filter_data::MagAutoHardIronOffset &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MagAutoSoftIronMatrix> {
-    static void write(JsonWriter &w, const filter_data::MagAutoSoftIronMatrix &v) {
-        (void)v;
-        w.begin_object();
-        w.key("soft_iron_matrix");
-        json_write_array(w, v.soft_iron_matrix);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MagAutoSoftIronMatrix &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "soft_iron_matrix",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("soft_iron_matrix")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.soft_iron_matrix, err)) {
-                err.enter("soft_iron_matrix");
-                return false;
-            }
-        } else {
-            return err.missing("soft_iron_matrix");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MagAutoSoftIronMatrix &v);
+    static bool read(const json::Value &in, filter_data::MagAutoSoftIronMatrix &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MagAutoHardIronOffsetUncertainty> {
-    static void write(JsonWriter &w, const filter_data::MagAutoHardIronOffsetUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("hard_iron_offset_uncertainty");
-        json_write_array(w, v.hard_iron_offset_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MagAutoHardIronOffsetUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "hard_iron_offset_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("hard_iron_offset_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.hard_iron_offset_uncertainty, err)) {
-                err.enter("hard_iron_offset_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("hard_iron_offset_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MagAutoHardIronOffsetUncertainty &v);
+    static bool read(const json::Value &in, filter_data::MagAutoHardIronOffsetUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MagAutoSoftIronMatrixUncertainty> {
-    static void write(JsonWriter &w, const filter_data::MagAutoSoftIronMatrixUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("soft_iron_matrix_uncertainty");
-        json_write_array(w, v.soft_iron_matrix_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MagAutoSoftIronMatrixUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "soft_iron_matrix_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("soft_iron_matrix_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.soft_iron_matrix_uncertainty, err)) {
-                err.enter("soft_iron_matrix_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("soft_iron_matrix_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MagAutoSoftIronMatrixUncertainty &v);
+    static bool read(const json::Value &in, filter_data::MagAutoSoftIronMatrixUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GnssAntennaOffsetCorrection> {
-    static void write(JsonWriter &w, const filter_data::GnssAntennaOffsetCorrection &v) {
-        (void)v;
-        w.begin_object();
-        w.key("offset");
-        json_write_array(w, v.offset);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GnssAntennaOffsetCorrection &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "offset",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset, err)) {
-                err.enter("offset");
-                return false;
-            }
-        } else {
-            return err.missing("offset");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GnssAntennaOffsetCorrection &v);
+    static bool read(const json::Value &in, filter_data::GnssAntennaOffsetCorrection &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GnssAntennaOffsetCorrectionUncertainty> {
-    static void write(JsonWriter &w, const filter_data::GnssAntennaOffsetCorrectionUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("offset_uncertainty");
-        json_write_array(w, v.offset_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GnssAntennaOffsetCorrectionUncertainty &v);
     static bool read(const json::Value &in, filter_data::GnssAntennaOffsetCorrectionUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "offset_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("offset_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset_uncertainty, err)) {
-                err.enter("offset_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("offset_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter_data::MultiAntennaOffsetCorrection> {
-    static void write(JsonWriter &w, const filter_data::MultiAntennaOffsetCorrection &v) {
-        (void)v;
-        w.begin_object();
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        w.key("offset");
-        json_write_array(w, v.offset);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::MultiAntennaOffsetCorrection &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "receiver_id",
-                                   "offset",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset, err)) {
-                err.enter("offset");
-                return false;
-            }
-        } else {
-            return err.missing("offset");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MultiAntennaOffsetCorrection &v);
+    static bool read(const json::Value &in, filter_data::MultiAntennaOffsetCorrection &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::MultiAntennaOffsetCorrectionUncertainty> {
-    static void write(JsonWriter &w, const filter_data::MultiAntennaOffsetCorrectionUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        w.key("offset_uncertainty");
-        json_write_array(w, v.offset_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::MultiAntennaOffsetCorrectionUncertainty &v);
     static bool read(const json::Value &in, filter_data::MultiAntennaOffsetCorrectionUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "receiver_id",
-                                   "offset_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("offset_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset_uncertainty, err)) {
-                err.enter("offset_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("offset_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter_data::EcefPositionUncertainty> {
-    static void write(JsonWriter &w, const filter_data::EcefPositionUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("position_uncertainty");
-        json_write_array(w, v.position_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EcefPositionUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "position_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("position_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.position_uncertainty, err)) {
-                err.enter("position_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("position_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EcefPositionUncertainty &v);
+    static bool read(const json::Value &in, filter_data::EcefPositionUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::EcefVelocityUncertainty> {
-    static void write(JsonWriter &w, const filter_data::EcefVelocityUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("velocity_uncertainty");
-        json_write_array(w, v.velocity_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EcefVelocityUncertainty &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "velocity_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("velocity_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.velocity_uncertainty, err)) {
-                err.enter("velocity_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("velocity_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EcefVelocityUncertainty &v);
+    static bool read(const json::Value &in, filter_data::EcefVelocityUncertainty &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::EcefPosition> {
-    static void write(JsonWriter &w, const filter_data::EcefPosition &v) {
-        (void)v;
-        w.begin_object();
-        w.key("position");
-        json_write_array(w, v.position);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EcefPosition &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "position",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("position")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.position, err)) {
-                err.enter("position");
-                return false;
-            }
-        } else {
-            return err.missing("position");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EcefPosition &v);
+    static bool read(const json::Value &in, filter_data::EcefPosition &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::EcefVelocity> {
-    static void write(JsonWriter &w, const filter_data::EcefVelocity &v) {
-        (void)v;
-        w.begin_object();
-        w.key("velocity");
-        json_write_array(w, v.velocity);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::EcefVelocity &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "velocity",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("velocity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.velocity, err)) {
-                err.enter("velocity");
-                return false;
-            }
-        } else {
-            return err.missing("velocity");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::EcefVelocity &v);
+    static bool read(const json::Value &in, filter_data::EcefVelocity &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::NedRelativePosition> {
-    static void write(JsonWriter &w, const filter_data::NedRelativePosition &v) {
-        (void)v;
-        w.begin_object();
-        w.key("relative_position");
-        json_write_array(w, v.relative_position);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::NedRelativePosition &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "relative_position",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("relative_position")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.relative_position, err)) {
-                err.enter("relative_position");
-                return false;
-            }
-        } else {
-            return err.missing("relative_position");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::NedRelativePosition &v);
+    static bool read(const json::Value &in, filter_data::NedRelativePosition &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::GnssPositionAidingStatus> {
-    static void write(JsonWriter &w, const filter_data::GnssPositionAidingStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        w.key("time_of_week");
-        json_write_value(w, v.time_of_week);
-        w.key("status");
-        json_write_value(w, v.status);
-        w.key("reserved");
-        json_write_array(w, v.reserved);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GnssPositionAidingStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "receiver_id",
-                                   "time_of_week",
-                                   "status",
-                                   "reserved",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("time_of_week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.time_of_week, err)) {
-                err.enter("time_of_week");
-                return false;
-            }
-        } else {
-            return err.missing("time_of_week");
-        }
-        if (const json::Value *found = in.find("status")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status, err)) {
-                err.enter("status");
-                return false;
-            }
-        } else {
-            return err.missing("status");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.reserved, err)) {
-                err.enter("reserved");
-                return false;
-            }
-        } else {
-            return err.missing("reserved");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GnssPositionAidingStatus &v);
+    static bool read(const json::Value &in, filter_data::GnssPositionAidingStatus &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AidingMeasurementSummary> {
-    static void write(JsonWriter &w, const filter_data::AidingMeasurementSummary &v) {
-        (void)v;
-        w.begin_object();
-        w.key("time_of_week");
-        json_write_value(w, v.time_of_week);
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("indicator");
-        json_write_value(w, v.indicator);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AidingMeasurementSummary &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "time_of_week",
-                                   "source",
-                                   "type",
-                                   "indicator",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("time_of_week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.time_of_week, err)) {
-                err.enter("time_of_week");
-                return false;
-            }
-        } else {
-            return err.missing("time_of_week");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("indicator")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.indicator, err)) {
-                err.enter("indicator");
-                return false;
-            }
-        } else {
-            return err.missing("indicator");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AidingMeasurementSummary &v);
+    static bool read(const json::Value &in, filter_data::AidingMeasurementSummary &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::OdometerScaleFactorError> {
-    static void write(JsonWriter &w, const filter_data::OdometerScaleFactorError &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor_error");
-        json_write_value(w, v.scale_factor_error);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::OdometerScaleFactorError &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor_error",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor_error")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.scale_factor_error, err)) {
-                err.enter("scale_factor_error");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor_error");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::OdometerScaleFactorError &v);
+    static bool read(const json::Value &in, filter_data::OdometerScaleFactorError &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::OdometerScaleFactorErrorUncertainty> {
-    static void write(JsonWriter &w, const filter_data::OdometerScaleFactorErrorUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scale_factor_error_uncertainty");
-        json_write_value(w, v.scale_factor_error_uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::OdometerScaleFactorErrorUncertainty &v);
     static bool read(const json::Value &in, filter_data::OdometerScaleFactorErrorUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scale_factor_error_uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scale_factor_error_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.scale_factor_error_uncertainty, err)) {
-                err.enter("scale_factor_error_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("scale_factor_error_uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter_data::GnssDualAntennaStatus> {
-    static void write(JsonWriter &w, const filter_data::GnssDualAntennaStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("time_of_week");
-        json_write_value(w, v.time_of_week);
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.key("heading_uncertainty");
-        json_write_value(w, v.heading_uncertainty);
-        w.key("fix_type");
-        json_write_value(w, v.fix_type);
-        w.key("status_flags");
-        json_write_value(w, v.status_flags);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::GnssDualAntennaStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "time_of_week",
-                                   "heading",
-                                   "heading_uncertainty",
-                                   "fix_type",
-                                   "status_flags",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("time_of_week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.time_of_week, err)) {
-                err.enter("time_of_week");
-                return false;
-            }
-        } else {
-            return err.missing("time_of_week");
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        if (const json::Value *found = in.find("heading_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_uncertainty, err)) {
-                err.enter("heading_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("heading_uncertainty");
-        }
-        if (const json::Value *found = in.find("fix_type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.fix_type, err)) {
-                err.enter("fix_type");
-                return false;
-            }
-        } else {
-            return err.missing("fix_type");
-        }
-        if (const json::Value *found = in.find("status_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_flags, err)) {
-                err.enter("status_flags");
-                return false;
-            }
-        } else {
-            return err.missing("status_flags");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::GnssDualAntennaStatus &v);
+    static bool read(const json::Value &in, filter_data::GnssDualAntennaStatus &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AidingFrameConfigError> {
-    static void write(JsonWriter &w, const filter_data::AidingFrameConfigError &v) {
-        (void)v;
-        w.begin_object();
-        w.key("frame_id");
-        json_write_value(w, v.frame_id);
-        w.key("translation");
-        json_write_array(w, v.translation);
-        w.key("attitude");
-        json_write_array(w, v.attitude);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter_data::AidingFrameConfigError &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "frame_id",
-                                   "translation",
-                                   "attitude",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("frame_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frame_id, err)) {
-                err.enter("frame_id");
-                return false;
-            }
-        } else {
-            return err.missing("frame_id");
-        }
-        if (const json::Value *found = in.find("translation")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.translation, err)) {
-                err.enter("translation");
-                return false;
-            }
-        } else {
-            return err.missing("translation");
-        }
-        if (const json::Value *found = in.find("attitude")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.attitude, err)) {
-                err.enter("attitude");
-                return false;
-            }
-        } else {
-            return err.missing("attitude");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AidingFrameConfigError &v);
+    static bool read(const json::Value &in, filter_data::AidingFrameConfigError &v, JsonError &err);
 };
 
 template <> struct Json<filter_data::AidingFrameConfigErrorUncertainty> {
-    static void write(JsonWriter &w, const filter_data::AidingFrameConfigErrorUncertainty &v) {
-        (void)v;
-        w.begin_object();
-        w.key("frame_id");
-        json_write_value(w, v.frame_id);
-        w.key("translation_uncertainty");
-        json_write_array(w, v.translation_uncertainty);
-        w.key("attitude_uncertainty");
-        json_write_array(w, v.attitude_uncertainty);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter_data::AidingFrameConfigErrorUncertainty &v);
     static bool read(const json::Value &in, filter_data::AidingFrameConfigErrorUncertainty &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "frame_id",
-                                   "translation_uncertainty",
-                                   "attitude_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("frame_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frame_id, err)) {
-                err.enter("frame_id");
-                return false;
-            }
-        } else {
-            return err.missing("frame_id");
-        }
-        if (const json::Value *found = in.find("translation_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.translation_uncertainty, err)) {
-                err.enter("translation_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("translation_uncertainty");
-        }
-        if (const json::Value *found = in.find("attitude_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.attitude_uncertainty, err)) {
-                err.enter("attitude_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("attitude_uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 } // namespace mipcodec

@@ -9,4122 +9,505 @@
 namespace mipcodec {
 
 template <> struct Json<filter::ResetFilter> {
-    static void write(JsonWriter &w, const filter::ResetFilter &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ResetFilter &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ResetFilter &v);
+    static bool read(const json::Value &in, filter::ResetFilter &v, JsonError &err);
 };
 
 template <> struct Json<filter::SetInitialAttitude> {
-    static void write(JsonWriter &w, const filter::SetInitialAttitude &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SetInitialAttitude &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "heading",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SetInitialAttitude &v);
+    static bool read(const json::Value &in, filter::SetInitialAttitude &v, JsonError &err);
 };
 
 template <> struct Json<filter::SetInitialHeading> {
-    static void write(JsonWriter &w, const filter::SetInitialHeading &v) {
-        (void)v;
-        w.begin_object();
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SetInitialHeading &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "heading",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SetInitialHeading &v);
+    static bool read(const json::Value &in, filter::SetInitialHeading &v, JsonError &err);
 };
 
 template <> struct Json<filter::RunFilter> {
-    static void write(JsonWriter &w, const filter::RunFilter &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::RunFilter &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::RunFilter &v);
+    static bool read(const json::Value &in, filter::RunFilter &v, JsonError &err);
 };
 
 template <> struct Json<filter::VehicleDynamicsMode> {
-    static void write(JsonWriter &w, const filter::VehicleDynamicsMode &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::VehicleDynamicsMode &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::VehicleDynamicsMode &v);
+    static bool read(const json::Value &in, filter::VehicleDynamicsMode &v, JsonError &err);
 };
 
 template <> struct Json<filter::VehicleDynamicsModeResponse> {
-    static void write(JsonWriter &w, const filter::VehicleDynamicsModeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::VehicleDynamicsModeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::VehicleDynamicsModeResponse &v);
+    static bool read(const json::Value &in, filter::VehicleDynamicsModeResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::SensorToVehicleTransform> {
-    static void write(JsonWriter &w, const filter::SensorToVehicleTransform &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.roll) {
-            w.key("roll");
-            json_write_value(w, (*v.roll));
-        }
-        if (v.pitch) {
-            w.key("pitch");
-            json_write_value(w, (*v.pitch));
-        }
-        if (v.yaw) {
-            w.key("yaw");
-            json_write_value(w, (*v.yaw));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SensorToVehicleTransform &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            v.roll.emplace();
-            if (!json_read_value(x, (*v.roll), err)) {
-                err.enter("roll");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            v.pitch.emplace();
-            if (!json_read_value(x, (*v.pitch), err)) {
-                err.enter("pitch");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            v.yaw.emplace();
-            if (!json_read_value(x, (*v.yaw), err)) {
-                err.enter("yaw");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SensorToVehicleTransform &v);
+    static bool read(const json::Value &in, filter::SensorToVehicleTransform &v, JsonError &err);
 };
 
 template <> struct Json<filter::SensorToVehicleTransformResponse> {
-    static void write(JsonWriter &w, const filter::SensorToVehicleTransformResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("yaw");
-        json_write_value(w, v.yaw);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SensorToVehicleTransformResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.yaw, err)) {
-                err.enter("yaw");
-                return false;
-            }
-        } else {
-            return err.missing("yaw");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SensorToVehicleTransformResponse &v);
+    static bool read(const json::Value &in, filter::SensorToVehicleTransformResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::SensorToVehicleOffset> {
-    static void write(JsonWriter &w, const filter::SensorToVehicleOffset &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.offset) {
-            w.key("offset");
-            json_write_array(w, (*v.offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SensorToVehicleOffset &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            v.offset.emplace();
-            if (!json_read_fixed(x, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SensorToVehicleOffset &v);
+    static bool read(const json::Value &in, filter::SensorToVehicleOffset &v, JsonError &err);
 };
 
 template <> struct Json<filter::SensorToVehicleOffsetResponse> {
-    static void write(JsonWriter &w, const filter::SensorToVehicleOffsetResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("offset");
-        json_write_array(w, v.offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SensorToVehicleOffsetResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset, err)) {
-                err.enter("offset");
-                return false;
-            }
-        } else {
-            return err.missing("offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SensorToVehicleOffsetResponse &v);
+    static bool read(const json::Value &in, filter::SensorToVehicleOffsetResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AntennaOffset> {
-    static void write(JsonWriter &w, const filter::AntennaOffset &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.offset) {
-            w.key("offset");
-            json_write_array(w, (*v.offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AntennaOffset &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            v.offset.emplace();
-            if (!json_read_fixed(x, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AntennaOffset &v);
+    static bool read(const json::Value &in, filter::AntennaOffset &v, JsonError &err);
 };
 
 template <> struct Json<filter::AntennaOffsetResponse> {
-    static void write(JsonWriter &w, const filter::AntennaOffsetResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("offset");
-        json_write_array(w, v.offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AntennaOffsetResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset, err)) {
-                err.enter("offset");
-                return false;
-            }
-        } else {
-            return err.missing("offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AntennaOffsetResponse &v);
+    static bool read(const json::Value &in, filter::AntennaOffsetResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::EstimationControl> {
-    static void write(JsonWriter &w, const filter::EstimationControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.flags) {
-            w.key("flags");
-            json_write_value(w, (*v.flags));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::EstimationControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            v.flags.emplace();
-            if (!json_read_value(x, (*v.flags), err)) {
-                err.enter("flags");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::EstimationControl &v);
+    static bool read(const json::Value &in, filter::EstimationControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::EstimationControlResponse> {
-    static void write(JsonWriter &w, const filter::EstimationControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::EstimationControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::EstimationControlResponse &v);
+    static bool read(const json::Value &in, filter::EstimationControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::GnssSourceControl> {
-    static void write(JsonWriter &w, const filter::GnssSourceControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GnssSourceControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GnssSourceControl &v);
+    static bool read(const json::Value &in, filter::GnssSourceControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::GnssSourceControlResponse> {
-    static void write(JsonWriter &w, const filter::GnssSourceControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GnssSourceControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GnssSourceControlResponse &v);
+    static bool read(const json::Value &in, filter::GnssSourceControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::ExternalGnssUpdate> {
-    static void write(JsonWriter &w, const filter::ExternalGnssUpdate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gps_tow");
-        json_write_value(w, v.gps_tow);
-        w.key("gps_week");
-        json_write_value(w, v.gps_week);
-        w.key("latitude");
-        json_write_value(w, v.latitude);
-        w.key("longitude");
-        json_write_value(w, v.longitude);
-        w.key("height");
-        json_write_value(w, v.height);
-        w.key("velocity");
-        json_write_array(w, v.velocity);
-        w.key("position_uncertainty");
-        json_write_array(w, v.position_uncertainty);
-        w.key("velocity_uncertainty");
-        json_write_array(w, v.velocity_uncertainty);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ExternalGnssUpdate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gps_tow",
-                                   "gps_week",
-                                   "latitude",
-                                   "longitude",
-                                   "height",
-                                   "velocity",
-                                   "position_uncertainty",
-                                   "velocity_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gps_tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gps_tow, err)) {
-                err.enter("gps_tow");
-                return false;
-            }
-        } else {
-            return err.missing("gps_tow");
-        }
-        if (const json::Value *found = in.find("gps_week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gps_week, err)) {
-                err.enter("gps_week");
-                return false;
-            }
-        } else {
-            return err.missing("gps_week");
-        }
-        if (const json::Value *found = in.find("latitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.latitude, err)) {
-                err.enter("latitude");
-                return false;
-            }
-        } else {
-            return err.missing("latitude");
-        }
-        if (const json::Value *found = in.find("longitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.longitude, err)) {
-                err.enter("longitude");
-                return false;
-            }
-        } else {
-            return err.missing("longitude");
-        }
-        if (const json::Value *found = in.find("height")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.height, err)) {
-                err.enter("height");
-                return false;
-            }
-        } else {
-            return err.missing("height");
-        }
-        if (const json::Value *found = in.find("velocity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.velocity, err)) {
-                err.enter("velocity");
-                return false;
-            }
-        } else {
-            return err.missing("velocity");
-        }
-        if (const json::Value *found = in.find("position_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.position_uncertainty, err)) {
-                err.enter("position_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("position_uncertainty");
-        }
-        if (const json::Value *found = in.find("velocity_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.velocity_uncertainty, err)) {
-                err.enter("velocity_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("velocity_uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ExternalGnssUpdate &v);
+    static bool read(const json::Value &in, filter::ExternalGnssUpdate &v, JsonError &err);
 };
 
 template <> struct Json<filter::ExternalHeadingUpdate> {
-    static void write(JsonWriter &w, const filter::ExternalHeadingUpdate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.key("heading_uncertainty");
-        json_write_value(w, v.heading_uncertainty);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ExternalHeadingUpdate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "heading",
-                                   "heading_uncertainty",
-                                   "type",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        if (const json::Value *found = in.find("heading_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_uncertainty, err)) {
-                err.enter("heading_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("heading_uncertainty");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ExternalHeadingUpdate &v);
+    static bool read(const json::Value &in, filter::ExternalHeadingUpdate &v, JsonError &err);
 };
 
 template <> struct Json<filter::HeadingUpdateControl> {
-    static void write(JsonWriter &w, const filter::HeadingUpdateControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::HeadingUpdateControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::HeadingUpdateControl &v);
+    static bool read(const json::Value &in, filter::HeadingUpdateControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::HeadingUpdateControlResponse> {
-    static void write(JsonWriter &w, const filter::HeadingUpdateControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::HeadingUpdateControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::HeadingUpdateControlResponse &v);
+    static bool read(const json::Value &in, filter::HeadingUpdateControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AutoInitControl> {
-    static void write(JsonWriter &w, const filter::AutoInitControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AutoInitControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AutoInitControl &v);
+    static bool read(const json::Value &in, filter::AutoInitControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::AutoInitControlResponse> {
-    static void write(JsonWriter &w, const filter::AutoInitControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AutoInitControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AutoInitControlResponse &v);
+    static bool read(const json::Value &in, filter::AutoInitControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AccelNoise> {
-    static void write(JsonWriter &w, const filter::AccelNoise &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AccelNoise &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AccelNoise &v);
+    static bool read(const json::Value &in, filter::AccelNoise &v, JsonError &err);
 };
 
 template <> struct Json<filter::AccelNoiseResponse> {
-    static void write(JsonWriter &w, const filter::AccelNoiseResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AccelNoiseResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AccelNoiseResponse &v);
+    static bool read(const json::Value &in, filter::AccelNoiseResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::GyroNoise> {
-    static void write(JsonWriter &w, const filter::GyroNoise &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GyroNoise &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GyroNoise &v);
+    static bool read(const json::Value &in, filter::GyroNoise &v, JsonError &err);
 };
 
 template <> struct Json<filter::GyroNoiseResponse> {
-    static void write(JsonWriter &w, const filter::GyroNoiseResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GyroNoiseResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GyroNoiseResponse &v);
+    static bool read(const json::Value &in, filter::GyroNoiseResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AccelBiasModel> {
-    static void write(JsonWriter &w, const filter::AccelBiasModel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.beta) {
-            w.key("beta");
-            json_write_array(w, (*v.beta));
-        }
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AccelBiasModel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "beta",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("beta")) {
-            const json::Value &x = *found;
-            v.beta.emplace();
-            if (!json_read_fixed(x, (*v.beta), err)) {
-                err.enter("beta");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AccelBiasModel &v);
+    static bool read(const json::Value &in, filter::AccelBiasModel &v, JsonError &err);
 };
 
 template <> struct Json<filter::AccelBiasModelResponse> {
-    static void write(JsonWriter &w, const filter::AccelBiasModelResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("beta");
-        json_write_array(w, v.beta);
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AccelBiasModelResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "beta",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("beta")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.beta, err)) {
-                err.enter("beta");
-                return false;
-            }
-        } else {
-            return err.missing("beta");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AccelBiasModelResponse &v);
+    static bool read(const json::Value &in, filter::AccelBiasModelResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::GyroBiasModel> {
-    static void write(JsonWriter &w, const filter::GyroBiasModel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.beta) {
-            w.key("beta");
-            json_write_array(w, (*v.beta));
-        }
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GyroBiasModel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "beta",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("beta")) {
-            const json::Value &x = *found;
-            v.beta.emplace();
-            if (!json_read_fixed(x, (*v.beta), err)) {
-                err.enter("beta");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GyroBiasModel &v);
+    static bool read(const json::Value &in, filter::GyroBiasModel &v, JsonError &err);
 };
 
 template <> struct Json<filter::GyroBiasModelResponse> {
-    static void write(JsonWriter &w, const filter::GyroBiasModelResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("beta");
-        json_write_array(w, v.beta);
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GyroBiasModelResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "beta",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("beta")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.beta, err)) {
-                err.enter("beta");
-                return false;
-            }
-        } else {
-            return err.missing("beta");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GyroBiasModelResponse &v);
+    static bool read(const json::Value &in, filter::GyroBiasModelResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::ZuptControl> {
-    static void write(JsonWriter &w, const filter::ZuptControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        if (v.threshold) {
-            w.key("threshold");
-            json_write_value(w, (*v.threshold));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ZuptControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                                   "threshold",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("threshold")) {
-            const json::Value &x = *found;
-            v.threshold.emplace();
-            if (!json_read_value(x, (*v.threshold), err)) {
-                err.enter("threshold");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ZuptControl &v);
+    static bool read(const json::Value &in, filter::ZuptControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::ZuptControlResponse> {
-    static void write(JsonWriter &w, const filter::ZuptControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("threshold");
-        json_write_value(w, v.threshold);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ZuptControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                                   "threshold",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("threshold")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.threshold, err)) {
-                err.enter("threshold");
-                return false;
-            }
-        } else {
-            return err.missing("threshold");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ZuptControlResponse &v);
+    static bool read(const json::Value &in, filter::ZuptControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::ExternalHeadingUpdateWithTime> {
-    static void write(JsonWriter &w, const filter::ExternalHeadingUpdateWithTime &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gps_tow");
-        json_write_value(w, v.gps_tow);
-        w.key("gps_week");
-        json_write_value(w, v.gps_week);
-        w.key("heading");
-        json_write_value(w, v.heading);
-        w.key("heading_uncertainty");
-        json_write_value(w, v.heading_uncertainty);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ExternalHeadingUpdateWithTime &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gps_tow",
-                                   "gps_week",
-                                   "heading",
-                                   "heading_uncertainty",
-                                   "type",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gps_tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gps_tow, err)) {
-                err.enter("gps_tow");
-                return false;
-            }
-        } else {
-            return err.missing("gps_tow");
-        }
-        if (const json::Value *found = in.find("gps_week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.gps_week, err)) {
-                err.enter("gps_week");
-                return false;
-            }
-        } else {
-            return err.missing("gps_week");
-        }
-        if (const json::Value *found = in.find("heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading, err)) {
-                err.enter("heading");
-                return false;
-            }
-        } else {
-            return err.missing("heading");
-        }
-        if (const json::Value *found = in.find("heading_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_uncertainty, err)) {
-                err.enter("heading_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("heading_uncertainty");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ExternalHeadingUpdateWithTime &v);
+    static bool read(const json::Value &in, filter::ExternalHeadingUpdateWithTime &v, JsonError &err);
 };
 
 template <> struct Json<filter::ZeroAngularRateUpdateControl> {
-    static void write(JsonWriter &w, const filter::ZeroAngularRateUpdateControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        if (v.threshold) {
-            w.key("threshold");
-            json_write_value(w, (*v.threshold));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ZeroAngularRateUpdateControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                                   "threshold",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("threshold")) {
-            const json::Value &x = *found;
-            v.threshold.emplace();
-            if (!json_read_value(x, (*v.threshold), err)) {
-                err.enter("threshold");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ZeroAngularRateUpdateControl &v);
+    static bool read(const json::Value &in, filter::ZeroAngularRateUpdateControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::ZeroAngularRateUpdateControlResponse> {
-    static void write(JsonWriter &w, const filter::ZeroAngularRateUpdateControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("threshold");
-        json_write_value(w, v.threshold);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ZeroAngularRateUpdateControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                                   "threshold",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("threshold")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.threshold, err)) {
-                err.enter("threshold");
-                return false;
-            }
-        } else {
-            return err.missing("threshold");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ZeroAngularRateUpdateControlResponse &v);
+    static bool read(const json::Value &in, filter::ZeroAngularRateUpdateControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::TareOrientation> {
-    static void write(JsonWriter &w, const filter::TareOrientation &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.axes) {
-            w.key("axes");
-            json_write_value(w, (*v.axes));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::TareOrientation &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "axes",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("axes")) {
-            const json::Value &x = *found;
-            v.axes.emplace();
-            if (!json_read_value(x, (*v.axes), err)) {
-                err.enter("axes");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::TareOrientation &v);
+    static bool read(const json::Value &in, filter::TareOrientation &v, JsonError &err);
 };
 
 template <> struct Json<filter::CommandedZupt> {
-    static void write(JsonWriter &w, const filter::CommandedZupt &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::CommandedZupt &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::CommandedZupt &v);
+    static bool read(const json::Value &in, filter::CommandedZupt &v, JsonError &err);
 };
 
 template <> struct Json<filter::CommandedZeroAngularRateUpdate> {
-    static void write(JsonWriter &w, const filter::CommandedZeroAngularRateUpdate &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::CommandedZeroAngularRateUpdate &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::CommandedZeroAngularRateUpdate &v);
+    static bool read(const json::Value &in, filter::CommandedZeroAngularRateUpdate &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagCaptureAutoCalibration> {
-    static void write(JsonWriter &w, const filter::MagCaptureAutoCalibration &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagCaptureAutoCalibration &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagCaptureAutoCalibration &v);
+    static bool read(const json::Value &in, filter::MagCaptureAutoCalibration &v, JsonError &err);
 };
 
 template <> struct Json<filter::GravityNoiseStdDev> {
-    static void write(JsonWriter &w, const filter::GravityNoiseStdDev &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GravityNoiseStdDev &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GravityNoiseStdDev &v);
+    static bool read(const json::Value &in, filter::GravityNoiseStdDev &v, JsonError &err);
 };
 
 template <> struct Json<filter::GravityNoiseStdDevResponse> {
-    static void write(JsonWriter &w, const filter::GravityNoiseStdDevResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GravityNoiseStdDevResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GravityNoiseStdDevResponse &v);
+    static bool read(const json::Value &in, filter::GravityNoiseStdDevResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::PressureAltitudeNoiseStdDev> {
-    static void write(JsonWriter &w, const filter::PressureAltitudeNoiseStdDev &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_value(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::PressureAltitudeNoiseStdDev &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_value(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::PressureAltitudeNoiseStdDev &v);
+    static bool read(const json::Value &in, filter::PressureAltitudeNoiseStdDev &v, JsonError &err);
 };
 
 template <> struct Json<filter::PressureAltitudeNoiseStdDevResponse> {
-    static void write(JsonWriter &w, const filter::PressureAltitudeNoiseStdDevResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_value(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::PressureAltitudeNoiseStdDevResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::PressureAltitudeNoiseStdDevResponse &v);
+    static bool read(const json::Value &in, filter::PressureAltitudeNoiseStdDevResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::HardIronOffsetNoise> {
-    static void write(JsonWriter &w, const filter::HardIronOffsetNoise &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::HardIronOffsetNoise &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::HardIronOffsetNoise &v);
+    static bool read(const json::Value &in, filter::HardIronOffsetNoise &v, JsonError &err);
 };
 
 template <> struct Json<filter::HardIronOffsetNoiseResponse> {
-    static void write(JsonWriter &w, const filter::HardIronOffsetNoiseResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::HardIronOffsetNoiseResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::HardIronOffsetNoiseResponse &v);
+    static bool read(const json::Value &in, filter::HardIronOffsetNoiseResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::SoftIronMatrixNoise> {
-    static void write(JsonWriter &w, const filter::SoftIronMatrixNoise &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SoftIronMatrixNoise &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SoftIronMatrixNoise &v);
+    static bool read(const json::Value &in, filter::SoftIronMatrixNoise &v, JsonError &err);
 };
 
 template <> struct Json<filter::SoftIronMatrixNoiseResponse> {
-    static void write(JsonWriter &w, const filter::SoftIronMatrixNoiseResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SoftIronMatrixNoiseResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SoftIronMatrixNoiseResponse &v);
+    static bool read(const json::Value &in, filter::SoftIronMatrixNoiseResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagNoiseStdDev> {
-    static void write(JsonWriter &w, const filter::MagNoiseStdDev &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.noise) {
-            w.key("noise");
-            json_write_array(w, (*v.noise));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagNoiseStdDev &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            v.noise.emplace();
-            if (!json_read_fixed(x, (*v.noise), err)) {
-                err.enter("noise");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagNoiseStdDev &v);
+    static bool read(const json::Value &in, filter::MagNoiseStdDev &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagNoiseStdDevResponse> {
-    static void write(JsonWriter &w, const filter::MagNoiseStdDevResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("noise");
-        json_write_array(w, v.noise);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagNoiseStdDevResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "noise",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("noise")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.noise, err)) {
-                err.enter("noise");
-                return false;
-            }
-        } else {
-            return err.missing("noise");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagNoiseStdDevResponse &v);
+    static bool read(const json::Value &in, filter::MagNoiseStdDevResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::DeclinationSource> {
-    static void write(JsonWriter &w, const filter::DeclinationSource &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        if (v.declination) {
-            w.key("declination");
-            json_write_value(w, (*v.declination));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::DeclinationSource &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "declination",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("declination")) {
-            const json::Value &x = *found;
-            v.declination.emplace();
-            if (!json_read_value(x, (*v.declination), err)) {
-                err.enter("declination");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::DeclinationSource &v);
+    static bool read(const json::Value &in, filter::DeclinationSource &v, JsonError &err);
 };
 
 template <> struct Json<filter::DeclinationSourceResponse> {
-    static void write(JsonWriter &w, const filter::DeclinationSourceResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("declination");
-        json_write_value(w, v.declination);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::DeclinationSourceResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "declination",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("declination")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.declination, err)) {
-                err.enter("declination");
-                return false;
-            }
-        } else {
-            return err.missing("declination");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::DeclinationSourceResponse &v);
+    static bool read(const json::Value &in, filter::DeclinationSourceResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::GravityMagnitudeAdaptiveMeasurement> {
-    static void write(JsonWriter &w, const filter::GravityMagnitudeAdaptiveMeasurement &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        if (v.frequency) {
-            w.key("frequency");
-            json_write_value(w, (*v.frequency));
-        }
-        if (v.low_limit) {
-            w.key("low_limit");
-            json_write_value(w, (*v.low_limit));
-        }
-        if (v.high_limit) {
-            w.key("high_limit");
-            json_write_value(w, (*v.high_limit));
-        }
-        if (v.low_limit_uncertainty) {
-            w.key("low_limit_uncertainty");
-            json_write_value(w, (*v.low_limit_uncertainty));
-        }
-        if (v.high_limit_uncertainty) {
-            w.key("high_limit_uncertainty");
-            json_write_value(w, (*v.high_limit_uncertainty));
-        }
-        if (v.minimum_uncertainty) {
-            w.key("minimum_uncertainty");
-            json_write_value(w, (*v.minimum_uncertainty));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GravityMagnitudeAdaptiveMeasurement &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                                   "frequency",
-                                   "low_limit",
-                                   "high_limit",
-                                   "low_limit_uncertainty",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            v.frequency.emplace();
-            if (!json_read_value(x, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("low_limit")) {
-            const json::Value &x = *found;
-            v.low_limit.emplace();
-            if (!json_read_value(x, (*v.low_limit), err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            v.high_limit.emplace();
-            if (!json_read_value(x, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("low_limit_uncertainty")) {
-            const json::Value &x = *found;
-            v.low_limit_uncertainty.emplace();
-            if (!json_read_value(x, (*v.low_limit_uncertainty), err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            v.high_limit_uncertainty.emplace();
-            if (!json_read_value(x, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            v.minimum_uncertainty.emplace();
-            if (!json_read_value(x, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GravityMagnitudeAdaptiveMeasurement &v);
+    static bool read(const json::Value &in, filter::GravityMagnitudeAdaptiveMeasurement &v, JsonError &err);
 };
 
 template <> struct Json<filter::GravityMagnitudeAdaptiveMeasurementResponse> {
-    static void write(JsonWriter &w, const filter::GravityMagnitudeAdaptiveMeasurementResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.key("frequency");
-        json_write_value(w, v.frequency);
-        w.key("low_limit");
-        json_write_value(w, v.low_limit);
-        w.key("high_limit");
-        json_write_value(w, v.high_limit);
-        w.key("low_limit_uncertainty");
-        json_write_value(w, v.low_limit_uncertainty);
-        w.key("high_limit_uncertainty");
-        json_write_value(w, v.high_limit_uncertainty);
-        w.key("minimum_uncertainty");
-        json_write_value(w, v.minimum_uncertainty);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GravityMagnitudeAdaptiveMeasurementResponse &v);
     static bool read(const json::Value &in, filter::GravityMagnitudeAdaptiveMeasurementResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                                   "frequency",
-                                   "low_limit",
-                                   "high_limit",
-                                   "low_limit_uncertainty",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frequency, err)) {
-                err.enter("frequency");
-                return false;
-            }
-        } else {
-            return err.missing("frequency");
-        }
-        if (const json::Value *found = in.find("low_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low_limit, err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        } else {
-            return err.missing("low_limit");
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit, err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit");
-        }
-        if (const json::Value *found = in.find("low_limit_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low_limit_uncertainty, err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("low_limit_uncertainty");
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit_uncertainty, err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit_uncertainty");
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.minimum_uncertainty, err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("minimum_uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter::MagMagnitudeAdaptiveMeasurement> {
-    static void write(JsonWriter &w, const filter::MagMagnitudeAdaptiveMeasurement &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        if (v.frequency) {
-            w.key("frequency");
-            json_write_value(w, (*v.frequency));
-        }
-        if (v.low_limit) {
-            w.key("low_limit");
-            json_write_value(w, (*v.low_limit));
-        }
-        if (v.high_limit) {
-            w.key("high_limit");
-            json_write_value(w, (*v.high_limit));
-        }
-        if (v.low_limit_uncertainty) {
-            w.key("low_limit_uncertainty");
-            json_write_value(w, (*v.low_limit_uncertainty));
-        }
-        if (v.high_limit_uncertainty) {
-            w.key("high_limit_uncertainty");
-            json_write_value(w, (*v.high_limit_uncertainty));
-        }
-        if (v.minimum_uncertainty) {
-            w.key("minimum_uncertainty");
-            json_write_value(w, (*v.minimum_uncertainty));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagMagnitudeAdaptiveMeasurement &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                                   "frequency",
-                                   "low_limit",
-                                   "high_limit",
-                                   "low_limit_uncertainty",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            v.frequency.emplace();
-            if (!json_read_value(x, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("low_limit")) {
-            const json::Value &x = *found;
-            v.low_limit.emplace();
-            if (!json_read_value(x, (*v.low_limit), err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            v.high_limit.emplace();
-            if (!json_read_value(x, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("low_limit_uncertainty")) {
-            const json::Value &x = *found;
-            v.low_limit_uncertainty.emplace();
-            if (!json_read_value(x, (*v.low_limit_uncertainty), err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            v.high_limit_uncertainty.emplace();
-            if (!json_read_value(x, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            v.minimum_uncertainty.emplace();
-            if (!json_read_value(x, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagMagnitudeAdaptiveMeasurement &v);
+    static bool read(const json::Value &in, filter::MagMagnitudeAdaptiveMeasurement &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagMagnitudeAdaptiveMeasurementResponse> {
-    static void write(JsonWriter &w, const filter::MagMagnitudeAdaptiveMeasurementResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.key("frequency");
-        json_write_value(w, v.frequency);
-        w.key("low_limit");
-        json_write_value(w, v.low_limit);
-        w.key("high_limit");
-        json_write_value(w, v.high_limit);
-        w.key("low_limit_uncertainty");
-        json_write_value(w, v.low_limit_uncertainty);
-        w.key("high_limit_uncertainty");
-        json_write_value(w, v.high_limit_uncertainty);
-        w.key("minimum_uncertainty");
-        json_write_value(w, v.minimum_uncertainty);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagMagnitudeAdaptiveMeasurementResponse &v);
     static bool read(const json::Value &in, filter::MagMagnitudeAdaptiveMeasurementResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                                   "frequency",
-                                   "low_limit",
-                                   "high_limit",
-                                   "low_limit_uncertainty",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frequency, err)) {
-                err.enter("frequency");
-                return false;
-            }
-        } else {
-            return err.missing("frequency");
-        }
-        if (const json::Value *found = in.find("low_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low_limit, err)) {
-                err.enter("low_limit");
-                return false;
-            }
-        } else {
-            return err.missing("low_limit");
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit, err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit");
-        }
-        if (const json::Value *found = in.find("low_limit_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low_limit_uncertainty, err)) {
-                err.enter("low_limit_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("low_limit_uncertainty");
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit_uncertainty, err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit_uncertainty");
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.minimum_uncertainty, err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("minimum_uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter::MagDipAngleAdaptiveMeasurement> {
-    static void write(JsonWriter &w, const filter::MagDipAngleAdaptiveMeasurement &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        if (v.frequency) {
-            w.key("frequency");
-            json_write_value(w, (*v.frequency));
-        }
-        if (v.high_limit) {
-            w.key("high_limit");
-            json_write_value(w, (*v.high_limit));
-        }
-        if (v.high_limit_uncertainty) {
-            w.key("high_limit_uncertainty");
-            json_write_value(w, (*v.high_limit_uncertainty));
-        }
-        if (v.minimum_uncertainty) {
-            w.key("minimum_uncertainty");
-            json_write_value(w, (*v.minimum_uncertainty));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagDipAngleAdaptiveMeasurement &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                                   "frequency",
-                                   "high_limit",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            v.frequency.emplace();
-            if (!json_read_value(x, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            v.high_limit.emplace();
-            if (!json_read_value(x, (*v.high_limit), err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            v.high_limit_uncertainty.emplace();
-            if (!json_read_value(x, (*v.high_limit_uncertainty), err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            v.minimum_uncertainty.emplace();
-            if (!json_read_value(x, (*v.minimum_uncertainty), err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagDipAngleAdaptiveMeasurement &v);
+    static bool read(const json::Value &in, filter::MagDipAngleAdaptiveMeasurement &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagDipAngleAdaptiveMeasurementResponse> {
-    static void write(JsonWriter &w, const filter::MagDipAngleAdaptiveMeasurementResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.key("frequency");
-        json_write_value(w, v.frequency);
-        w.key("high_limit");
-        json_write_value(w, v.high_limit);
-        w.key("high_limit_uncertainty");
-        json_write_value(w, v.high_limit_uncertainty);
-        w.key("minimum_uncertainty");
-        json_write_value(w, v.minimum_uncertainty);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagDipAngleAdaptiveMeasurementResponse &v);
     static bool read(const json::Value &in, filter::MagDipAngleAdaptiveMeasurementResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                                   "frequency",
-                                   "high_limit",
-                                   "high_limit_uncertainty",
-                                   "minimum_uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frequency, err)) {
-                err.enter("frequency");
-                return false;
-            }
-        } else {
-            return err.missing("frequency");
-        }
-        if (const json::Value *found = in.find("high_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit, err)) {
-                err.enter("high_limit");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit");
-        }
-        if (const json::Value *found = in.find("high_limit_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high_limit_uncertainty, err)) {
-                err.enter("high_limit_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("high_limit_uncertainty");
-        }
-        if (const json::Value *found = in.find("minimum_uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.minimum_uncertainty, err)) {
-                err.enter("minimum_uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("minimum_uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter::AltitudeAidingControl> {
-    static void write(JsonWriter &w, const filter::AltitudeAidingControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AltitudeAidingControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AltitudeAidingControl &v);
+    static bool read(const json::Value &in, filter::AltitudeAidingControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::AltitudeAidingControlResponse> {
-    static void write(JsonWriter &w, const filter::AltitudeAidingControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AltitudeAidingControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AltitudeAidingControlResponse &v);
+    static bool read(const json::Value &in, filter::AltitudeAidingControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::PitchRollAidingControl> {
-    static void write(JsonWriter &w, const filter::PitchRollAidingControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::PitchRollAidingControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::PitchRollAidingControl &v);
+    static bool read(const json::Value &in, filter::PitchRollAidingControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::PitchRollAidingControlResponse> {
-    static void write(JsonWriter &w, const filter::PitchRollAidingControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::PitchRollAidingControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::PitchRollAidingControlResponse &v);
+    static bool read(const json::Value &in, filter::PitchRollAidingControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::InclinationSource> {
-    static void write(JsonWriter &w, const filter::InclinationSource &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        if (v.inclination) {
-            w.key("inclination");
-            json_write_value(w, (*v.inclination));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::InclinationSource &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "inclination",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("inclination")) {
-            const json::Value &x = *found;
-            v.inclination.emplace();
-            if (!json_read_value(x, (*v.inclination), err)) {
-                err.enter("inclination");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::InclinationSource &v);
+    static bool read(const json::Value &in, filter::InclinationSource &v, JsonError &err);
 };
 
 template <> struct Json<filter::InclinationSourceResponse> {
-    static void write(JsonWriter &w, const filter::InclinationSourceResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("inclination");
-        json_write_value(w, v.inclination);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::InclinationSourceResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "inclination",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("inclination")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.inclination, err)) {
-                err.enter("inclination");
-                return false;
-            }
-        } else {
-            return err.missing("inclination");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::InclinationSourceResponse &v);
+    static bool read(const json::Value &in, filter::InclinationSourceResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagneticFieldMagnitudeSource> {
-    static void write(JsonWriter &w, const filter::MagneticFieldMagnitudeSource &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        if (v.magnitude) {
-            w.key("magnitude");
-            json_write_value(w, (*v.magnitude));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagneticFieldMagnitudeSource &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "magnitude",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("magnitude")) {
-            const json::Value &x = *found;
-            v.magnitude.emplace();
-            if (!json_read_value(x, (*v.magnitude), err)) {
-                err.enter("magnitude");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagneticFieldMagnitudeSource &v);
+    static bool read(const json::Value &in, filter::MagneticFieldMagnitudeSource &v, JsonError &err);
 };
 
 template <> struct Json<filter::MagneticFieldMagnitudeSourceResponse> {
-    static void write(JsonWriter &w, const filter::MagneticFieldMagnitudeSourceResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("magnitude");
-        json_write_value(w, v.magnitude);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MagneticFieldMagnitudeSourceResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "magnitude",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("magnitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.magnitude, err)) {
-                err.enter("magnitude");
-                return false;
-            }
-        } else {
-            return err.missing("magnitude");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MagneticFieldMagnitudeSourceResponse &v);
+    static bool read(const json::Value &in, filter::MagneticFieldMagnitudeSourceResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AidingMeasurementControl> {
-    static void write(JsonWriter &w, const filter::AidingMeasurementControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("source");
-        json_write_value(w, v.source);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AidingMeasurementControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AidingMeasurementControl &v);
+    static bool read(const json::Value &in, filter::AidingMeasurementControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::AidingMeasurementControlResponse> {
-    static void write(JsonWriter &w, const filter::AidingMeasurementControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AidingMeasurementControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AidingMeasurementControlResponse &v);
+    static bool read(const json::Value &in, filter::AidingMeasurementControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::InitializationConfiguration> {
-    static void write(JsonWriter &w, const filter::InitializationConfiguration &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.wait_for_run_command) {
-            w.key("wait_for_run_command");
-            json_write_value(w, (*v.wait_for_run_command));
-        }
-        if (v.initial_cond_src) {
-            w.key("initial_cond_src");
-            json_write_value(w, (*v.initial_cond_src));
-        }
-        if (v.auto_heading_alignment_selector) {
-            w.key("auto_heading_alignment_selector");
-            json_write_value(w, (*v.auto_heading_alignment_selector));
-        }
-        if (v.initial_heading) {
-            w.key("initial_heading");
-            json_write_value(w, (*v.initial_heading));
-        }
-        if (v.initial_pitch) {
-            w.key("initial_pitch");
-            json_write_value(w, (*v.initial_pitch));
-        }
-        if (v.initial_roll) {
-            w.key("initial_roll");
-            json_write_value(w, (*v.initial_roll));
-        }
-        if (v.initial_position) {
-            w.key("initial_position");
-            json_write_array(w, (*v.initial_position));
-        }
-        if (v.initial_velocity) {
-            w.key("initial_velocity");
-            json_write_array(w, (*v.initial_velocity));
-        }
-        if (v.reference_frame_selector) {
-            w.key("reference_frame_selector");
-            json_write_value(w, (*v.reference_frame_selector));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::InitializationConfiguration &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "wait_for_run_command",
-                                   "initial_cond_src",
-                                   "auto_heading_alignment_selector",
-                                   "initial_heading",
-                                   "initial_pitch",
-                                   "initial_roll",
-                                   "initial_position",
-                                   "initial_velocity",
-                                   "reference_frame_selector",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("wait_for_run_command")) {
-            const json::Value &x = *found;
-            v.wait_for_run_command.emplace();
-            if (!json_read_value(x, (*v.wait_for_run_command), err)) {
-                err.enter("wait_for_run_command");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_cond_src")) {
-            const json::Value &x = *found;
-            v.initial_cond_src.emplace();
-            if (!json_read_value(x, (*v.initial_cond_src), err)) {
-                err.enter("initial_cond_src");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("auto_heading_alignment_selector")) {
-            const json::Value &x = *found;
-            v.auto_heading_alignment_selector.emplace();
-            if (!json_read_value(x, (*v.auto_heading_alignment_selector), err)) {
-                err.enter("auto_heading_alignment_selector");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_heading")) {
-            const json::Value &x = *found;
-            v.initial_heading.emplace();
-            if (!json_read_value(x, (*v.initial_heading), err)) {
-                err.enter("initial_heading");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_pitch")) {
-            const json::Value &x = *found;
-            v.initial_pitch.emplace();
-            if (!json_read_value(x, (*v.initial_pitch), err)) {
-                err.enter("initial_pitch");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_roll")) {
-            const json::Value &x = *found;
-            v.initial_roll.emplace();
-            if (!json_read_value(x, (*v.initial_roll), err)) {
-                err.enter("initial_roll");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_position")) {
-            const json::Value &x = *found;
-            v.initial_position.emplace();
-            if (!json_read_fixed(x, (*v.initial_position), err)) {
-                err.enter("initial_position");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("initial_velocity")) {
-            const json::Value &x = *found;
-            v.initial_velocity.emplace();
-            if (!json_read_fixed(x, (*v.initial_velocity), err)) {
-                err.enter("initial_velocity");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("reference_frame_selector")) {
-            const json::Value &x = *found;
-            v.reference_frame_selector.emplace();
-            if (!json_read_value(x, (*v.reference_frame_selector), err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::InitializationConfiguration &v);
+    static bool read(const json::Value &in, filter::InitializationConfiguration &v, JsonError &err);
 };
 
 template <> struct Json<filter::InitializationConfigurationResponse> {
-    static void write(JsonWriter &w, const filter::InitializationConfigurationResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("wait_for_run_command");
-        json_write_value(w, v.wait_for_run_command);
-        w.key("initial_cond_src");
-        json_write_value(w, v.initial_cond_src);
-        w.key("auto_heading_alignment_selector");
-        json_write_value(w, v.auto_heading_alignment_selector);
-        w.key("initial_heading");
-        json_write_value(w, v.initial_heading);
-        w.key("initial_pitch");
-        json_write_value(w, v.initial_pitch);
-        w.key("initial_roll");
-        json_write_value(w, v.initial_roll);
-        w.key("initial_position");
-        json_write_array(w, v.initial_position);
-        w.key("initial_velocity");
-        json_write_array(w, v.initial_velocity);
-        w.key("reference_frame_selector");
-        json_write_value(w, v.reference_frame_selector);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::InitializationConfigurationResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "wait_for_run_command",
-                                   "initial_cond_src",
-                                   "auto_heading_alignment_selector",
-                                   "initial_heading",
-                                   "initial_pitch",
-                                   "initial_roll",
-                                   "initial_position",
-                                   "initial_velocity",
-                                   "reference_frame_selector",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("wait_for_run_command")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.wait_for_run_command, err)) {
-                err.enter("wait_for_run_command");
-                return false;
-            }
-        } else {
-            return err.missing("wait_for_run_command");
-        }
-        if (const json::Value *found = in.find("initial_cond_src")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.initial_cond_src, err)) {
-                err.enter("initial_cond_src");
-                return false;
-            }
-        } else {
-            return err.missing("initial_cond_src");
-        }
-        if (const json::Value *found = in.find("auto_heading_alignment_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.auto_heading_alignment_selector, err)) {
-                err.enter("auto_heading_alignment_selector");
-                return false;
-            }
-        } else {
-            return err.missing("auto_heading_alignment_selector");
-        }
-        if (const json::Value *found = in.find("initial_heading")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.initial_heading, err)) {
-                err.enter("initial_heading");
-                return false;
-            }
-        } else {
-            return err.missing("initial_heading");
-        }
-        if (const json::Value *found = in.find("initial_pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.initial_pitch, err)) {
-                err.enter("initial_pitch");
-                return false;
-            }
-        } else {
-            return err.missing("initial_pitch");
-        }
-        if (const json::Value *found = in.find("initial_roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.initial_roll, err)) {
-                err.enter("initial_roll");
-                return false;
-            }
-        } else {
-            return err.missing("initial_roll");
-        }
-        if (const json::Value *found = in.find("initial_position")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.initial_position, err)) {
-                err.enter("initial_position");
-                return false;
-            }
-        } else {
-            return err.missing("initial_position");
-        }
-        if (const json::Value *found = in.find("initial_velocity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.initial_velocity, err)) {
-                err.enter("initial_velocity");
-                return false;
-            }
-        } else {
-            return err.missing("initial_velocity");
-        }
-        if (const json::Value *found = in.find("reference_frame_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reference_frame_selector, err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        } else {
-            return err.missing("reference_frame_selector");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::InitializationConfigurationResponse &v);
+    static bool read(const json::Value &in, filter::InitializationConfigurationResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::AdaptiveFilterControl> {
-    static void write(JsonWriter &w, const filter::AdaptiveFilterControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.level) {
-            w.key("level");
-            json_write_value(w, (*v.level));
-        }
-        if (v.time_limit) {
-            w.key("time_limit");
-            json_write_value(w, (*v.time_limit));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AdaptiveFilterControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "level",
-                                   "time_limit",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("level")) {
-            const json::Value &x = *found;
-            v.level.emplace();
-            if (!json_read_value(x, (*v.level), err)) {
-                err.enter("level");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("time_limit")) {
-            const json::Value &x = *found;
-            v.time_limit.emplace();
-            if (!json_read_value(x, (*v.time_limit), err)) {
-                err.enter("time_limit");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AdaptiveFilterControl &v);
+    static bool read(const json::Value &in, filter::AdaptiveFilterControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::AdaptiveFilterControlResponse> {
-    static void write(JsonWriter &w, const filter::AdaptiveFilterControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("level");
-        json_write_value(w, v.level);
-        w.key("time_limit");
-        json_write_value(w, v.time_limit);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::AdaptiveFilterControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "level",
-                                   "time_limit",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("level")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.level, err)) {
-                err.enter("level");
-                return false;
-            }
-        } else {
-            return err.missing("level");
-        }
-        if (const json::Value *found = in.find("time_limit")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.time_limit, err)) {
-                err.enter("time_limit");
-                return false;
-            }
-        } else {
-            return err.missing("time_limit");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::AdaptiveFilterControlResponse &v);
+    static bool read(const json::Value &in, filter::AdaptiveFilterControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::MultiAntennaOffset> {
-    static void write(JsonWriter &w, const filter::MultiAntennaOffset &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        if (v.antenna_offset) {
-            w.key("antenna_offset");
-            json_write_array(w, (*v.antenna_offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MultiAntennaOffset &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "receiver_id",
-                                   "antenna_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("antenna_offset")) {
-            const json::Value &x = *found;
-            v.antenna_offset.emplace();
-            if (!json_read_fixed(x, (*v.antenna_offset), err)) {
-                err.enter("antenna_offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MultiAntennaOffset &v);
+    static bool read(const json::Value &in, filter::MultiAntennaOffset &v, JsonError &err);
 };
 
 template <> struct Json<filter::MultiAntennaOffsetResponse> {
-    static void write(JsonWriter &w, const filter::MultiAntennaOffsetResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("receiver_id");
-        json_write_value(w, v.receiver_id);
-        w.key("antenna_offset");
-        json_write_array(w, v.antenna_offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::MultiAntennaOffsetResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "receiver_id",
-                                   "antenna_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("receiver_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.receiver_id, err)) {
-                err.enter("receiver_id");
-                return false;
-            }
-        } else {
-            return err.missing("receiver_id");
-        }
-        if (const json::Value *found = in.find("antenna_offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.antenna_offset, err)) {
-                err.enter("antenna_offset");
-                return false;
-            }
-        } else {
-            return err.missing("antenna_offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::MultiAntennaOffsetResponse &v);
+    static bool read(const json::Value &in, filter::MultiAntennaOffsetResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::RelativePositionConfiguration> {
-    static void write(JsonWriter &w, const filter::RelativePositionConfiguration &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        if (v.reference_frame_selector) {
-            w.key("reference_frame_selector");
-            json_write_value(w, (*v.reference_frame_selector));
-        }
-        if (v.reference_coordinates) {
-            w.key("reference_coordinates");
-            json_write_array(w, (*v.reference_coordinates));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::RelativePositionConfiguration &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "reference_frame_selector",
-                                   "reference_coordinates",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("reference_frame_selector")) {
-            const json::Value &x = *found;
-            v.reference_frame_selector.emplace();
-            if (!json_read_value(x, (*v.reference_frame_selector), err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("reference_coordinates")) {
-            const json::Value &x = *found;
-            v.reference_coordinates.emplace();
-            if (!json_read_fixed(x, (*v.reference_coordinates), err)) {
-                err.enter("reference_coordinates");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::RelativePositionConfiguration &v);
+    static bool read(const json::Value &in, filter::RelativePositionConfiguration &v, JsonError &err);
 };
 
 template <> struct Json<filter::RelativePositionConfigurationResponse> {
-    static void write(JsonWriter &w, const filter::RelativePositionConfigurationResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("reference_frame_selector");
-        json_write_value(w, v.reference_frame_selector);
-        w.key("reference_coordinates");
-        json_write_array(w, v.reference_coordinates);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::RelativePositionConfigurationResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "reference_frame_selector",
-                                   "reference_coordinates",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("reference_frame_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reference_frame_selector, err)) {
-                err.enter("reference_frame_selector");
-                return false;
-            }
-        } else {
-            return err.missing("reference_frame_selector");
-        }
-        if (const json::Value *found = in.find("reference_coordinates")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.reference_coordinates, err)) {
-                err.enter("reference_coordinates");
-                return false;
-            }
-        } else {
-            return err.missing("reference_coordinates");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::RelativePositionConfigurationResponse &v);
+    static bool read(const json::Value &in, filter::RelativePositionConfigurationResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::ReferencePointLeverArm> {
-    static void write(JsonWriter &w, const filter::ReferencePointLeverArm &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.ref_point_sel) {
-            w.key("ref_point_sel");
-            json_write_value(w, (*v.ref_point_sel));
-        }
-        if (v.lever_arm_offset) {
-            w.key("lever_arm_offset");
-            json_write_array(w, (*v.lever_arm_offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ReferencePointLeverArm &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "ref_point_sel",
-                                   "lever_arm_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("ref_point_sel")) {
-            const json::Value &x = *found;
-            v.ref_point_sel.emplace();
-            if (!json_read_value(x, (*v.ref_point_sel), err)) {
-                err.enter("ref_point_sel");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("lever_arm_offset")) {
-            const json::Value &x = *found;
-            v.lever_arm_offset.emplace();
-            if (!json_read_fixed(x, (*v.lever_arm_offset), err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ReferencePointLeverArm &v);
+    static bool read(const json::Value &in, filter::ReferencePointLeverArm &v, JsonError &err);
 };
 
 template <> struct Json<filter::ReferencePointLeverArmResponse> {
-    static void write(JsonWriter &w, const filter::ReferencePointLeverArmResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("ref_point_sel");
-        json_write_value(w, v.ref_point_sel);
-        w.key("lever_arm_offset");
-        json_write_array(w, v.lever_arm_offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::ReferencePointLeverArmResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "ref_point_sel",
-                                   "lever_arm_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("ref_point_sel")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.ref_point_sel, err)) {
-                err.enter("ref_point_sel");
-                return false;
-            }
-        } else {
-            return err.missing("ref_point_sel");
-        }
-        if (const json::Value *found = in.find("lever_arm_offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.lever_arm_offset, err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        } else {
-            return err.missing("lever_arm_offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::ReferencePointLeverArmResponse &v);
+    static bool read(const json::Value &in, filter::ReferencePointLeverArmResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::SpeedLeverArm> {
-    static void write(JsonWriter &w, const filter::SpeedLeverArm &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("source");
-        json_write_value(w, v.source);
-        if (v.lever_arm_offset) {
-            w.key("lever_arm_offset");
-            json_write_array(w, (*v.lever_arm_offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SpeedLeverArm &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                                   "lever_arm_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("lever_arm_offset")) {
-            const json::Value &x = *found;
-            v.lever_arm_offset.emplace();
-            if (!json_read_fixed(x, (*v.lever_arm_offset), err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SpeedLeverArm &v);
+    static bool read(const json::Value &in, filter::SpeedLeverArm &v, JsonError &err);
 };
 
 template <> struct Json<filter::SpeedLeverArmResponse> {
-    static void write(JsonWriter &w, const filter::SpeedLeverArmResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.key("lever_arm_offset");
-        json_write_array(w, v.lever_arm_offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::SpeedLeverArmResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                                   "lever_arm_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        if (const json::Value *found = in.find("lever_arm_offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.lever_arm_offset, err)) {
-                err.enter("lever_arm_offset");
-                return false;
-            }
-        } else {
-            return err.missing("lever_arm_offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::SpeedLeverArmResponse &v);
+    static bool read(const json::Value &in, filter::SpeedLeverArmResponse &v, JsonError &err);
 };
 
 template <> struct Json<filter::WheeledVehicleConstraintControl> {
-    static void write(JsonWriter &w, const filter::WheeledVehicleConstraintControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::WheeledVehicleConstraintControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::WheeledVehicleConstraintControl &v);
+    static bool read(const json::Value &in, filter::WheeledVehicleConstraintControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::WheeledVehicleConstraintControlResponse> {
-    static void write(JsonWriter &w, const filter::WheeledVehicleConstraintControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.end_object();
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::WheeledVehicleConstraintControlResponse &v);
     static bool read(const json::Value &in, filter::WheeledVehicleConstraintControlResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        (void)v;
-        return true;
-    }
+                     JsonError &err);
 };
 
 template <> struct Json<filter::GnssAntennaCalibrationControl> {
-    static void write(JsonWriter &w, const filter::GnssAntennaCalibrationControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        if (v.max_offset) {
-            w.key("max_offset");
-            json_write_value(w, (*v.max_offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GnssAntennaCalibrationControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                                   "max_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("max_offset")) {
-            const json::Value &x = *found;
-            v.max_offset.emplace();
-            if (!json_read_value(x, (*v.max_offset), err)) {
-                err.enter("max_offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GnssAntennaCalibrationControl &v);
+    static bool read(const json::Value &in, filter::GnssAntennaCalibrationControl &v, JsonError &err);
 };
 
 template <> struct Json<filter::GnssAntennaCalibrationControlResponse> {
-    static void write(JsonWriter &w, const filter::GnssAntennaCalibrationControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("max_offset");
-        json_write_value(w, v.max_offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, filter::GnssAntennaCalibrationControlResponse &v,
-                     JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                                   "max_offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("max_offset")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_offset, err)) {
-                err.enter("max_offset");
-                return false;
-            }
-        } else {
-            return err.missing("max_offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/filter_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const filter::GnssAntennaCalibrationControlResponse &v);
+    static bool read(const json::Value &in, filter::GnssAntennaCalibrationControlResponse &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -180,143 +180,21 @@ template <> struct Codec<gnss::ReceiverInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss::ReceiverInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const gnss::ReceiverInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::ReceiverInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss::ReceiverInfo &v);
 };
 
 template <> struct Codec<gnss::ReceiverInfoResponse> {
-    static bool read(Reader &r, gnss::ReceiverInfoResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.num_receivers, err)) {
-            err.enter("num_receivers");
-            return false;
-        }
-        if (!read_counted(r, v.receiver_info, static_cast<std::uint64_t>(v.num_receivers), err)) {
-            err.enter("receiver_info");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss::ReceiverInfoResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.num_receivers);
-        write_counted(w, v.receiver_info, static_cast<std::uint64_t>(v.num_receivers));
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::ReceiverInfoResponse &v, DecodeError &err);
+    static void write(Writer &w, const gnss::ReceiverInfoResponse &v);
 };
 
 template <> struct Codec<gnss::SignalConfiguration> {
-    static bool read(Reader &r, gnss::SignalConfiguration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.gps_enable.emplace();
-            if (!read_value(r, (*v.gps_enable), err)) {
-                err.enter("gps_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.glonass_enable.emplace();
-            if (!read_value(r, (*v.glonass_enable), err)) {
-                err.enter("glonass_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.galileo_enable.emplace();
-            if (!read_value(r, (*v.galileo_enable), err)) {
-                err.enter("galileo_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.beidou_enable.emplace();
-            if (!read_value(r, (*v.beidou_enable), err)) {
-                err.enter("beidou_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.reserved.emplace();
-            if (!read_fixed(r, (*v.reserved), err)) {
-                err.enter("reserved");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss::SignalConfiguration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.gps_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.gps_enable));
-        } else {
-            absent = true;
-        }
-        if (v.glonass_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.glonass_enable));
-        } else {
-            absent = true;
-        }
-        if (v.galileo_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.galileo_enable));
-        } else {
-            absent = true;
-        }
-        if (v.beidou_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.beidou_enable));
-        } else {
-            absent = true;
-        }
-        if (v.reserved) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.reserved));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::SignalConfiguration &v, DecodeError &err);
+    static void write(Writer &w, const gnss::SignalConfiguration &v);
 };
 
 template <> struct Codec<gnss::SignalConfigurationResponse> {
@@ -343,191 +221,15 @@ template <> struct Codec<gnss::SignalConfigurationResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss::SignalConfigurationResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gps_enable, err)) {
-            err.enter("gps_enable");
-            return false;
-        }
-        if (!read_value(r, v.glonass_enable, err)) {
-            err.enter("glonass_enable");
-            return false;
-        }
-        if (!read_value(r, v.galileo_enable, err)) {
-            err.enter("galileo_enable");
-            return false;
-        }
-        if (!read_value(r, v.beidou_enable, err)) {
-            err.enter("beidou_enable");
-            return false;
-        }
-        if (!read_fixed(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss::SignalConfigurationResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gps_enable);
-        write_value(w, v.glonass_enable);
-        write_value(w, v.galileo_enable);
-        write_value(w, v.beidou_enable);
-        write_fixed(w, v.reserved);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::SignalConfigurationResponse &v, DecodeError &err);
+    static void write(Writer &w, const gnss::SignalConfigurationResponse &v);
 };
 
 template <> struct Codec<gnss::SpartnConfiguration> {
-    static bool read(Reader &r, gnss::SpartnConfiguration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.type.emplace();
-            if (!read_value(r, (*v.type), err)) {
-                err.enter("type");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.current_key_tow.emplace();
-            if (!read_value(r, (*v.current_key_tow), err)) {
-                err.enter("current_key_tow");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.current_key_week.emplace();
-            if (!read_value(r, (*v.current_key_week), err)) {
-                err.enter("current_key_week");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.current_key.emplace();
-            if (!read_string(r, (*v.current_key), err)) {
-                err.enter("current_key");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.next_key_tow.emplace();
-            if (!read_value(r, (*v.next_key_tow), err)) {
-                err.enter("next_key_tow");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.next_key_week.emplace();
-            if (!read_value(r, (*v.next_key_week), err)) {
-                err.enter("next_key_week");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.next_key.emplace();
-            if (!read_string(r, (*v.next_key), err)) {
-                err.enter("next_key");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss::SpartnConfiguration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.type) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.type));
-        } else {
-            absent = true;
-        }
-        if (v.current_key_tow) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.current_key_tow));
-        } else {
-            absent = true;
-        }
-        if (v.current_key_week) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.current_key_week));
-        } else {
-            absent = true;
-        }
-        if (v.current_key) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_string(w, (*v.current_key));
-        } else {
-            absent = true;
-        }
-        if (v.next_key_tow) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.next_key_tow));
-        } else {
-            absent = true;
-        }
-        if (v.next_key_week) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.next_key_week));
-        } else {
-            absent = true;
-        }
-        if (v.next_key) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_string(w, (*v.next_key));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::SpartnConfiguration &v, DecodeError &err);
+    static void write(Writer &w, const gnss::SpartnConfiguration &v);
 };
 
 template <> struct Codec<gnss::SpartnConfigurationResponse> {
@@ -559,58 +261,9 @@ template <> struct Codec<gnss::SpartnConfigurationResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss::SpartnConfigurationResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!read_value(r, v.current_key_tow, err)) {
-            err.enter("current_key_tow");
-            return false;
-        }
-        if (!read_value(r, v.current_key_week, err)) {
-            err.enter("current_key_week");
-            return false;
-        }
-        if (!read_string(r, v.current_key, err)) {
-            err.enter("current_key");
-            return false;
-        }
-        if (!read_value(r, v.next_key_tow, err)) {
-            err.enter("next_key_tow");
-            return false;
-        }
-        if (!read_value(r, v.next_key_week, err)) {
-            err.enter("next_key_week");
-            return false;
-        }
-        if (!read_string(r, v.next_key, err)) {
-            err.enter("next_key");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss::SpartnConfigurationResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        write_value(w, v.type);
-        write_value(w, v.current_key_tow);
-        write_value(w, v.current_key_week);
-        write_string(w, v.current_key);
-        write_value(w, v.next_key_tow);
-        write_value(w, v.next_key_week);
-        write_string(w, v.next_key);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss.cpp (compiled into the library).
+    static bool read(Reader &r, gnss::SpartnConfigurationResponse &v, DecodeError &err);
+    static void write(Writer &w, const gnss::SpartnConfigurationResponse &v);
 };
 
 } // namespace mipcodec

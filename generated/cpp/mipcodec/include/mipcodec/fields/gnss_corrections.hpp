@@ -108,53 +108,9 @@ template <> struct Codec<gnss_corrections::BaseStationInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_corrections::BaseStationInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_fixed(r, v.ecef_position, err)) {
-            err.enter("ecef_position");
-            return false;
-        }
-        if (!read_value(r, v.height, err)) {
-            err.enter("height");
-            return false;
-        }
-        if (!read_value(r, v.station_id, err)) {
-            err.enter("station_id");
-            return false;
-        }
-        if (!read_value(r, v.indicators, err)) {
-            err.enter("indicators");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_corrections::BaseStationInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_fixed(w, v.ecef_position);
-        write_value(w, v.height);
-        write_value(w, v.station_id);
-        write_value(w, v.indicators);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_corrections.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_corrections::BaseStationInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_corrections::BaseStationInfo &v);
 };
 
 template <> struct Codec<gnss_corrections::RtkCorrectionsStatus> {
@@ -192,68 +148,9 @@ template <> struct Codec<gnss_corrections::RtkCorrectionsStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_corrections::RtkCorrectionsStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.epoch_status, err)) {
-            err.enter("epoch_status");
-            return false;
-        }
-        if (!read_value(r, v.dongle_status, err)) {
-            err.enter("dongle_status");
-            return false;
-        }
-        if (!read_value(r, v.gps_correction_latency, err)) {
-            err.enter("gps_correction_latency");
-            return false;
-        }
-        if (!read_value(r, v.glonass_correction_latency, err)) {
-            err.enter("glonass_correction_latency");
-            return false;
-        }
-        if (!read_value(r, v.galileo_correction_latency, err)) {
-            err.enter("galileo_correction_latency");
-            return false;
-        }
-        if (!read_value(r, v.beidou_correction_latency, err)) {
-            err.enter("beidou_correction_latency");
-            return false;
-        }
-        if (!read_fixed(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_corrections::RtkCorrectionsStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.epoch_status);
-        write_value(w, v.dongle_status);
-        write_value(w, v.gps_correction_latency);
-        write_value(w, v.glonass_correction_latency);
-        write_value(w, v.galileo_correction_latency);
-        write_value(w, v.beidou_correction_latency);
-        write_fixed(w, v.reserved);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_corrections.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_corrections::RtkCorrectionsStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_corrections::RtkCorrectionsStatus &v);
 };
 
 } // namespace mipcodec

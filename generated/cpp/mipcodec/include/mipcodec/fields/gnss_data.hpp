@@ -371,53 +371,9 @@ template <> struct Codec<gnss_data::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.ellipsoid_height, err)) {
-            err.enter("ellipsoid_height");
-            return false;
-        }
-        if (!read_value(r, v.msl_height, err)) {
-            err.enter("msl_height");
-            return false;
-        }
-        if (!read_value(r, v.horizontal_accuracy, err)) {
-            err.enter("horizontal_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.vertical_accuracy, err)) {
-            err.enter("vertical_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.ellipsoid_height);
-        write_value(w, v.msl_height);
-        write_value(w, v.horizontal_accuracy);
-        write_value(w, v.vertical_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::LlhPosition &v);
 };
 
 template <> struct Codec<gnss_data::EcefPosition> {
@@ -437,33 +393,9 @@ template <> struct Codec<gnss_data::EcefPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::EcefPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.position, err)) {
-            err.enter("position");
-            return false;
-        }
-        if (!read_value(r, v.position_accuracy, err)) {
-            err.enter("position_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::EcefPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.position);
-        write_value(w, v.position_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::EcefPosition &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::EcefPosition &v);
 };
 
 template <> struct Codec<gnss_data::NedVelocity> {
@@ -493,53 +425,9 @@ template <> struct Codec<gnss_data::NedVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::NedVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.speed, err)) {
-            err.enter("speed");
-            return false;
-        }
-        if (!read_value(r, v.ground_speed, err)) {
-            err.enter("ground_speed");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.speed_accuracy, err)) {
-            err.enter("speed_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.heading_accuracy, err)) {
-            err.enter("heading_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::NedVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.speed);
-        write_value(w, v.ground_speed);
-        write_value(w, v.heading);
-        write_value(w, v.speed_accuracy);
-        write_value(w, v.heading_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::NedVelocity &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::NedVelocity &v);
 };
 
 template <> struct Codec<gnss_data::EcefVelocity> {
@@ -559,33 +447,9 @@ template <> struct Codec<gnss_data::EcefVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::EcefVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.velocity_accuracy, err)) {
-            err.enter("velocity_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::EcefVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.velocity_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::EcefVelocity &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::EcefVelocity &v);
 };
 
 template <> struct Codec<gnss_data::Dop> {
@@ -617,58 +481,9 @@ template <> struct Codec<gnss_data::Dop> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::Dop &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gdop, err)) {
-            err.enter("gdop");
-            return false;
-        }
-        if (!read_value(r, v.pdop, err)) {
-            err.enter("pdop");
-            return false;
-        }
-        if (!read_value(r, v.hdop, err)) {
-            err.enter("hdop");
-            return false;
-        }
-        if (!read_value(r, v.vdop, err)) {
-            err.enter("vdop");
-            return false;
-        }
-        if (!read_value(r, v.tdop, err)) {
-            err.enter("tdop");
-            return false;
-        }
-        if (!read_value(r, v.ndop, err)) {
-            err.enter("ndop");
-            return false;
-        }
-        if (!read_value(r, v.edop, err)) {
-            err.enter("edop");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::Dop &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gdop);
-        write_value(w, v.pdop);
-        write_value(w, v.hdop);
-        write_value(w, v.vdop);
-        write_value(w, v.tdop);
-        write_value(w, v.ndop);
-        write_value(w, v.edop);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::Dop &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::Dop &v);
 };
 
 template <> struct Codec<gnss_data::UtcTime> {
@@ -700,58 +515,9 @@ template <> struct Codec<gnss_data::UtcTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::UtcTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.year, err)) {
-            err.enter("year");
-            return false;
-        }
-        if (!read_value(r, v.month, err)) {
-            err.enter("month");
-            return false;
-        }
-        if (!read_value(r, v.day, err)) {
-            err.enter("day");
-            return false;
-        }
-        if (!read_value(r, v.hour, err)) {
-            err.enter("hour");
-            return false;
-        }
-        if (!read_value(r, v.minute, err)) {
-            err.enter("minute");
-            return false;
-        }
-        if (!read_value(r, v.second, err)) {
-            err.enter("second");
-            return false;
-        }
-        if (!read_value(r, v.millisecond, err)) {
-            err.enter("millisecond");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::UtcTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.year);
-        write_value(w, v.month);
-        write_value(w, v.day);
-        write_value(w, v.hour);
-        write_value(w, v.minute);
-        write_value(w, v.second);
-        write_value(w, v.millisecond);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::UtcTime &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::UtcTime &v);
 };
 
 template <> struct Codec<gnss_data::GpsTime> {
@@ -771,33 +537,9 @@ template <> struct Codec<gnss_data::GpsTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::GpsTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::GpsTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::GpsTime &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::GpsTime &v);
 };
 
 template <> struct Codec<gnss_data::ClockInfo> {
@@ -820,38 +562,9 @@ template <> struct Codec<gnss_data::ClockInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::ClockInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        if (!read_value(r, v.drift, err)) {
-            err.enter("drift");
-            return false;
-        }
-        if (!read_value(r, v.accuracy_estimate, err)) {
-            err.enter("accuracy_estimate");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::ClockInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.bias);
-        write_value(w, v.drift);
-        write_value(w, v.accuracy_estimate);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::ClockInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::ClockInfo &v);
 };
 
 template <> struct Codec<gnss_data::FixInfo> {
@@ -875,38 +588,9 @@ template <> struct Codec<gnss_data::FixInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::FixInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.fix_type, err)) {
-            err.enter("fix_type");
-            return false;
-        }
-        if (!read_value(r, v.num_sv, err)) {
-            err.enter("num_sv");
-            return false;
-        }
-        if (!read_value(r, v.fix_flags, err)) {
-            err.enter("fix_flags");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::FixInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.fix_type);
-        write_value(w, v.num_sv);
-        write_value(w, v.fix_flags);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::FixInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::FixInfo &v);
 };
 
 template <> struct Codec<gnss_data::SvInfo> {
@@ -936,53 +620,9 @@ template <> struct Codec<gnss_data::SvInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::SvInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.channel, err)) {
-            err.enter("channel");
-            return false;
-        }
-        if (!read_value(r, v.sv_id, err)) {
-            err.enter("sv_id");
-            return false;
-        }
-        if (!read_value(r, v.carrier_to_noise_ratio, err)) {
-            err.enter("carrier_to_noise_ratio");
-            return false;
-        }
-        if (!read_value(r, v.azimuth, err)) {
-            err.enter("azimuth");
-            return false;
-        }
-        if (!read_value(r, v.elevation, err)) {
-            err.enter("elevation");
-            return false;
-        }
-        if (!read_value(r, v.sv_flags, err)) {
-            err.enter("sv_flags");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::SvInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.channel);
-        write_value(w, v.sv_id);
-        write_value(w, v.carrier_to_noise_ratio);
-        write_value(w, v.azimuth);
-        write_value(w, v.elevation);
-        write_value(w, v.sv_flags);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::SvInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::SvInfo &v);
 };
 
 template <> struct Codec<gnss_data::HardwareStatus> {
@@ -1006,38 +646,9 @@ template <> struct Codec<gnss_data::HardwareStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::HardwareStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_state, err)) {
-            err.enter("receiver_state");
-            return false;
-        }
-        if (!read_value(r, v.antenna_state, err)) {
-            err.enter("antenna_state");
-            return false;
-        }
-        if (!read_value(r, v.antenna_power, err)) {
-            err.enter("antenna_power");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::HardwareStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_state);
-        write_value(w, v.antenna_state);
-        write_value(w, v.antenna_power);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::HardwareStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::HardwareStatus &v);
 };
 
 template <> struct Codec<gnss_data::DgnssInfo> {
@@ -1063,43 +674,9 @@ template <> struct Codec<gnss_data::DgnssInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::DgnssInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.newest_age, err)) {
-            err.enter("newest_age");
-            return false;
-        }
-        if (!read_value(r, v.base_station_id, err)) {
-            err.enter("base_station_id");
-            return false;
-        }
-        if (!read_value(r, v.base_station_status, err)) {
-            err.enter("base_station_status");
-            return false;
-        }
-        if (!read_value(r, v.num_channels, err)) {
-            err.enter("num_channels");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::DgnssInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.newest_age);
-        write_value(w, v.base_station_id);
-        write_value(w, v.base_station_status);
-        write_value(w, v.num_channels);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::DgnssInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::DgnssInfo &v);
 };
 
 template <> struct Codec<gnss_data::DgnssChannelStatus> {
@@ -1124,43 +701,9 @@ template <> struct Codec<gnss_data::DgnssChannelStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_data::DgnssChannelStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.sv_id, err)) {
-            err.enter("sv_id");
-            return false;
-        }
-        if (!read_value(r, v.age, err)) {
-            err.enter("age");
-            return false;
-        }
-        if (!read_value(r, v.pseudorange_correction, err)) {
-            err.enter("pseudorange_correction");
-            return false;
-        }
-        if (!read_value(r, v.pseudorange_rate_correction, err)) {
-            err.enter("pseudorange_rate_correction");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_data::DgnssChannelStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.sv_id);
-        write_value(w, v.age);
-        write_value(w, v.pseudorange_correction);
-        write_value(w, v.pseudorange_rate_correction);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_data.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_data::DgnssChannelStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_data::DgnssChannelStatus &v);
 };
 
 } // namespace mipcodec

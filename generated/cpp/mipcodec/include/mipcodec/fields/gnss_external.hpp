@@ -183,53 +183,9 @@ template <> struct Codec<gnss_external::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_external::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.ellipsoid_height, err)) {
-            err.enter("ellipsoid_height");
-            return false;
-        }
-        if (!read_value(r, v.msl_height, err)) {
-            err.enter("msl_height");
-            return false;
-        }
-        if (!read_value(r, v.horizontal_accuracy, err)) {
-            err.enter("horizontal_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.vertical_accuracy, err)) {
-            err.enter("vertical_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_external::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.ellipsoid_height);
-        write_value(w, v.msl_height);
-        write_value(w, v.horizontal_accuracy);
-        write_value(w, v.vertical_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_external.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_external::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const gnss_external::LlhPosition &v);
 };
 
 template <> struct Codec<gnss_external::NedVelocity> {
@@ -259,53 +215,9 @@ template <> struct Codec<gnss_external::NedVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_external::NedVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.speed, err)) {
-            err.enter("speed");
-            return false;
-        }
-        if (!read_value(r, v.ground_speed, err)) {
-            err.enter("ground_speed");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.speed_accuracy, err)) {
-            err.enter("speed_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.heading_accuracy, err)) {
-            err.enter("heading_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_external::NedVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.speed);
-        write_value(w, v.ground_speed);
-        write_value(w, v.heading);
-        write_value(w, v.speed_accuracy);
-        write_value(w, v.heading_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_external.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_external::NedVelocity &v, DecodeError &err);
+    static void write(Writer &w, const gnss_external::NedVelocity &v);
 };
 
 template <> struct Codec<gnss_external::UtcTime> {
@@ -337,58 +249,9 @@ template <> struct Codec<gnss_external::UtcTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_external::UtcTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.year, err)) {
-            err.enter("year");
-            return false;
-        }
-        if (!read_value(r, v.month, err)) {
-            err.enter("month");
-            return false;
-        }
-        if (!read_value(r, v.day, err)) {
-            err.enter("day");
-            return false;
-        }
-        if (!read_value(r, v.hour, err)) {
-            err.enter("hour");
-            return false;
-        }
-        if (!read_value(r, v.minute, err)) {
-            err.enter("minute");
-            return false;
-        }
-        if (!read_value(r, v.second, err)) {
-            err.enter("second");
-            return false;
-        }
-        if (!read_value(r, v.millisecond, err)) {
-            err.enter("millisecond");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_external::UtcTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.year);
-        write_value(w, v.month);
-        write_value(w, v.day);
-        write_value(w, v.hour);
-        write_value(w, v.minute);
-        write_value(w, v.second);
-        write_value(w, v.millisecond);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_external.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_external::UtcTime &v, DecodeError &err);
+    static void write(Writer &w, const gnss_external::UtcTime &v);
 };
 
 template <> struct Codec<gnss_external::FixInfo> {
@@ -412,103 +275,15 @@ template <> struct Codec<gnss_external::FixInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_external::FixInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.fix_type, err)) {
-            err.enter("fix_type");
-            return false;
-        }
-        if (!read_value(r, v.num_sv, err)) {
-            err.enter("num_sv");
-            return false;
-        }
-        if (!read_value(r, v.fix_flags, err)) {
-            err.enter("fix_flags");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_external::FixInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.fix_type);
-        write_value(w, v.num_sv);
-        write_value(w, v.fix_flags);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_external.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_external::FixInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_external::FixInfo &v);
 };
 
 template <> struct Codec<gnss_external::SatelliteStatus> {
-    static bool read(Reader &r, gnss_external::SatelliteStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.gnss_id, err)) {
-            err.enter("gnss_id");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.elevation, err)) {
-            err.enter("elevation");
-            return false;
-        }
-        if (!read_value(r, v.azimuth, err)) {
-            err.enter("azimuth");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_external::SatelliteStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.gnss_id);
-        write_value(w, v.satellite_id);
-        write_value(w, v.elevation);
-        write_value(w, v.azimuth);
-        write_value(w, v.health);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_external.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_external::SatelliteStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_external::SatelliteStatus &v);
 };
 
 } // namespace mipcodec

@@ -668,53 +668,9 @@ template <> struct Codec<gnss_receiver_2::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.ellipsoid_height, err)) {
-            err.enter("ellipsoid_height");
-            return false;
-        }
-        if (!read_value(r, v.msl_height, err)) {
-            err.enter("msl_height");
-            return false;
-        }
-        if (!read_value(r, v.horizontal_accuracy, err)) {
-            err.enter("horizontal_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.vertical_accuracy, err)) {
-            err.enter("vertical_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.ellipsoid_height);
-        write_value(w, v.msl_height);
-        write_value(w, v.horizontal_accuracy);
-        write_value(w, v.vertical_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::LlhPosition &v);
 };
 
 template <> struct Codec<gnss_receiver_2::EcefPosition> {
@@ -734,33 +690,9 @@ template <> struct Codec<gnss_receiver_2::EcefPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::EcefPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.position, err)) {
-            err.enter("position");
-            return false;
-        }
-        if (!read_value(r, v.position_accuracy, err)) {
-            err.enter("position_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::EcefPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.position);
-        write_value(w, v.position_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::EcefPosition &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::EcefPosition &v);
 };
 
 template <> struct Codec<gnss_receiver_2::NedVelocity> {
@@ -790,53 +722,9 @@ template <> struct Codec<gnss_receiver_2::NedVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::NedVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.speed, err)) {
-            err.enter("speed");
-            return false;
-        }
-        if (!read_value(r, v.ground_speed, err)) {
-            err.enter("ground_speed");
-            return false;
-        }
-        if (!read_value(r, v.heading, err)) {
-            err.enter("heading");
-            return false;
-        }
-        if (!read_value(r, v.speed_accuracy, err)) {
-            err.enter("speed_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.heading_accuracy, err)) {
-            err.enter("heading_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::NedVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.speed);
-        write_value(w, v.ground_speed);
-        write_value(w, v.heading);
-        write_value(w, v.speed_accuracy);
-        write_value(w, v.heading_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::NedVelocity &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::NedVelocity &v);
 };
 
 template <> struct Codec<gnss_receiver_2::EcefVelocity> {
@@ -856,33 +744,9 @@ template <> struct Codec<gnss_receiver_2::EcefVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::EcefVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.velocity, err)) {
-            err.enter("velocity");
-            return false;
-        }
-        if (!read_value(r, v.velocity_accuracy, err)) {
-            err.enter("velocity_accuracy");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::EcefVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.velocity);
-        write_value(w, v.velocity_accuracy);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::EcefVelocity &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::EcefVelocity &v);
 };
 
 template <> struct Codec<gnss_receiver_2::Dop> {
@@ -914,58 +778,9 @@ template <> struct Codec<gnss_receiver_2::Dop> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::Dop &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.gdop, err)) {
-            err.enter("gdop");
-            return false;
-        }
-        if (!read_value(r, v.pdop, err)) {
-            err.enter("pdop");
-            return false;
-        }
-        if (!read_value(r, v.hdop, err)) {
-            err.enter("hdop");
-            return false;
-        }
-        if (!read_value(r, v.vdop, err)) {
-            err.enter("vdop");
-            return false;
-        }
-        if (!read_value(r, v.tdop, err)) {
-            err.enter("tdop");
-            return false;
-        }
-        if (!read_value(r, v.ndop, err)) {
-            err.enter("ndop");
-            return false;
-        }
-        if (!read_value(r, v.edop, err)) {
-            err.enter("edop");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::Dop &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.gdop);
-        write_value(w, v.pdop);
-        write_value(w, v.hdop);
-        write_value(w, v.vdop);
-        write_value(w, v.tdop);
-        write_value(w, v.ndop);
-        write_value(w, v.edop);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::Dop &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::Dop &v);
 };
 
 template <> struct Codec<gnss_receiver_2::UtcTime> {
@@ -997,58 +812,9 @@ template <> struct Codec<gnss_receiver_2::UtcTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::UtcTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.year, err)) {
-            err.enter("year");
-            return false;
-        }
-        if (!read_value(r, v.month, err)) {
-            err.enter("month");
-            return false;
-        }
-        if (!read_value(r, v.day, err)) {
-            err.enter("day");
-            return false;
-        }
-        if (!read_value(r, v.hour, err)) {
-            err.enter("hour");
-            return false;
-        }
-        if (!read_value(r, v.minute, err)) {
-            err.enter("minute");
-            return false;
-        }
-        if (!read_value(r, v.second, err)) {
-            err.enter("second");
-            return false;
-        }
-        if (!read_value(r, v.millisecond, err)) {
-            err.enter("millisecond");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::UtcTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.year);
-        write_value(w, v.month);
-        write_value(w, v.day);
-        write_value(w, v.hour);
-        write_value(w, v.minute);
-        write_value(w, v.second);
-        write_value(w, v.millisecond);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::UtcTime &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::UtcTime &v);
 };
 
 template <> struct Codec<gnss_receiver_2::GpsTime> {
@@ -1068,33 +834,9 @@ template <> struct Codec<gnss_receiver_2::GpsTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::GpsTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::GpsTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::GpsTime &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::GpsTime &v);
 };
 
 template <> struct Codec<gnss_receiver_2::FixInfo> {
@@ -1118,38 +860,9 @@ template <> struct Codec<gnss_receiver_2::FixInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::FixInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.fix_type, err)) {
-            err.enter("fix_type");
-            return false;
-        }
-        if (!read_value(r, v.num_sv, err)) {
-            err.enter("num_sv");
-            return false;
-        }
-        if (!read_value(r, v.fix_flags, err)) {
-            err.enter("fix_flags");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::FixInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.fix_type);
-        write_value(w, v.num_sv);
-        write_value(w, v.fix_flags);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::FixInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::FixInfo &v);
 };
 
 template <> struct Codec<gnss_receiver_2::HardwareStatus> {
@@ -1173,38 +886,9 @@ template <> struct Codec<gnss_receiver_2::HardwareStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::HardwareStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.receiver_state, err)) {
-            err.enter("receiver_state");
-            return false;
-        }
-        if (!read_value(r, v.antenna_state, err)) {
-            err.enter("antenna_state");
-            return false;
-        }
-        if (!read_value(r, v.antenna_power, err)) {
-            err.enter("antenna_power");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::HardwareStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.receiver_state);
-        write_value(w, v.antenna_state);
-        write_value(w, v.antenna_power);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::HardwareStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::HardwareStatus &v);
 };
 
 template <> struct Codec<gnss_receiver_2::ClockInfo2> {
@@ -1229,43 +913,9 @@ template <> struct Codec<gnss_receiver_2::ClockInfo2> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::ClockInfo2 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        if (!read_value(r, v.drift, err)) {
-            err.enter("drift");
-            return false;
-        }
-        if (!read_value(r, v.bias_accuracy_estimate, err)) {
-            err.enter("bias_accuracy_estimate");
-            return false;
-        }
-        if (!read_value(r, v.drift_accuracy_estimate, err)) {
-            err.enter("drift_accuracy_estimate");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::ClockInfo2 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.bias);
-        write_value(w, v.drift);
-        write_value(w, v.bias_accuracy_estimate);
-        write_value(w, v.drift_accuracy_estimate);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::ClockInfo2 &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::ClockInfo2 &v);
 };
 
 template <> struct Codec<gnss_receiver_2::GpsLeapSeconds> {
@@ -1283,28 +933,9 @@ template <> struct Codec<gnss_receiver_2::GpsLeapSeconds> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::GpsLeapSeconds &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.leap_seconds, err)) {
-            err.enter("leap_seconds");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::GpsLeapSeconds &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.leap_seconds);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::GpsLeapSeconds &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::GpsLeapSeconds &v);
 };
 
 template <> struct Codec<gnss_receiver_2::SbasInfo> {
@@ -1335,118 +966,15 @@ template <> struct Codec<gnss_receiver_2::SbasInfo> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::SbasInfo &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.sbas_system, err)) {
-            err.enter("sbas_system");
-            return false;
-        }
-        if (!read_value(r, v.sbas_id, err)) {
-            err.enter("sbas_id");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.sbas_status, err)) {
-            err.enter("sbas_status");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::SbasInfo &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.sbas_system);
-        write_value(w, v.sbas_id);
-        write_value(w, v.count);
-        write_value(w, v.sbas_status);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::SbasInfo &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::SbasInfo &v);
 };
 
 template <> struct Codec<gnss_receiver_2::SatelliteStatus> {
-    static bool read(Reader &r, gnss_receiver_2::SatelliteStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.gnss_id, err)) {
-            err.enter("gnss_id");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.elevation, err)) {
-            err.enter("elevation");
-            return false;
-        }
-        if (!read_value(r, v.azimuth, err)) {
-            err.enter("azimuth");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::SatelliteStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.gnss_id);
-        write_value(w, v.satellite_id);
-        write_value(w, v.elevation);
-        write_value(w, v.azimuth);
-        write_value(w, v.health);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::SatelliteStatus &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::SatelliteStatus &v);
 };
 
 template <> struct Codec<gnss_receiver_2::Raw> {
@@ -1504,113 +1032,9 @@ template <> struct Codec<gnss_receiver_2::Raw> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::Raw &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.receiver_id, err)) {
-            err.enter("receiver_id");
-            return false;
-        }
-        if (!read_value(r, v.tracking_channel, err)) {
-            err.enter("tracking_channel");
-            return false;
-        }
-        if (!read_value(r, v.gnss_id, err)) {
-            err.enter("gnss_id");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.signal_id, err)) {
-            err.enter("signal_id");
-            return false;
-        }
-        if (!read_value(r, v.signal_strength, err)) {
-            err.enter("signal_strength");
-            return false;
-        }
-        if (!read_value(r, v.quality, err)) {
-            err.enter("quality");
-            return false;
-        }
-        if (!read_value(r, v.pseudorange, err)) {
-            err.enter("pseudorange");
-            return false;
-        }
-        if (!read_value(r, v.carrier_phase, err)) {
-            err.enter("carrier_phase");
-            return false;
-        }
-        if (!read_value(r, v.doppler, err)) {
-            err.enter("doppler");
-            return false;
-        }
-        if (!read_value(r, v.range_uncert, err)) {
-            err.enter("range_uncert");
-            return false;
-        }
-        if (!read_value(r, v.phase_uncert, err)) {
-            err.enter("phase_uncert");
-            return false;
-        }
-        if (!read_value(r, v.doppler_uncert, err)) {
-            err.enter("doppler_uncert");
-            return false;
-        }
-        if (!read_value(r, v.lock_time, err)) {
-            err.enter("lock_time");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::Raw &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.receiver_id);
-        write_value(w, v.tracking_channel);
-        write_value(w, v.gnss_id);
-        write_value(w, v.satellite_id);
-        write_value(w, v.signal_id);
-        write_value(w, v.signal_strength);
-        write_value(w, v.quality);
-        write_value(w, v.pseudorange);
-        write_value(w, v.carrier_phase);
-        write_value(w, v.doppler);
-        write_value(w, v.range_uncert);
-        write_value(w, v.phase_uncert);
-        write_value(w, v.doppler_uncert);
-        write_value(w, v.lock_time);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::Raw &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::Raw &v);
 };
 
 template <> struct Codec<gnss_receiver_2::GpsEphemeris> {
@@ -1701,188 +1125,9 @@ template <> struct Codec<gnss_receiver_2::GpsEphemeris> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::GpsEphemeris &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.iodc, err)) {
-            err.enter("iodc");
-            return false;
-        }
-        if (!read_value(r, v.iode, err)) {
-            err.enter("iode");
-            return false;
-        }
-        if (!read_value(r, v.t_oc, err)) {
-            err.enter("t_oc");
-            return false;
-        }
-        if (!read_value(r, v.af0, err)) {
-            err.enter("af0");
-            return false;
-        }
-        if (!read_value(r, v.af1, err)) {
-            err.enter("af1");
-            return false;
-        }
-        if (!read_value(r, v.af2, err)) {
-            err.enter("af2");
-            return false;
-        }
-        if (!read_value(r, v.t_gd, err)) {
-            err.enter("t_gd");
-            return false;
-        }
-        if (!read_value(r, v.isc_l1ca, err)) {
-            err.enter("isc_l1ca");
-            return false;
-        }
-        if (!read_value(r, v.isc_l2c, err)) {
-            err.enter("isc_l2c");
-            return false;
-        }
-        if (!read_value(r, v.t_oe, err)) {
-            err.enter("t_oe");
-            return false;
-        }
-        if (!read_value(r, v.a, err)) {
-            err.enter("a");
-            return false;
-        }
-        if (!read_value(r, v.a_dot, err)) {
-            err.enter("a_dot");
-            return false;
-        }
-        if (!read_value(r, v.mean_anomaly, err)) {
-            err.enter("mean_anomaly");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion, err)) {
-            err.enter("delta_mean_motion");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion_dot, err)) {
-            err.enter("delta_mean_motion_dot");
-            return false;
-        }
-        if (!read_value(r, v.eccentricity, err)) {
-            err.enter("eccentricity");
-            return false;
-        }
-        if (!read_value(r, v.argument_of_perigee, err)) {
-            err.enter("argument_of_perigee");
-            return false;
-        }
-        if (!read_value(r, v.omega, err)) {
-            err.enter("omega");
-            return false;
-        }
-        if (!read_value(r, v.omega_dot, err)) {
-            err.enter("omega_dot");
-            return false;
-        }
-        if (!read_value(r, v.inclination, err)) {
-            err.enter("inclination");
-            return false;
-        }
-        if (!read_value(r, v.inclination_dot, err)) {
-            err.enter("inclination_dot");
-            return false;
-        }
-        if (!read_value(r, v.c_ic, err)) {
-            err.enter("c_ic");
-            return false;
-        }
-        if (!read_value(r, v.c_is, err)) {
-            err.enter("c_is");
-            return false;
-        }
-        if (!read_value(r, v.c_uc, err)) {
-            err.enter("c_uc");
-            return false;
-        }
-        if (!read_value(r, v.c_us, err)) {
-            err.enter("c_us");
-            return false;
-        }
-        if (!read_value(r, v.c_rc, err)) {
-            err.enter("c_rc");
-            return false;
-        }
-        if (!read_value(r, v.c_rs, err)) {
-            err.enter("c_rs");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::GpsEphemeris &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.satellite_id);
-        write_value(w, v.health);
-        write_value(w, v.iodc);
-        write_value(w, v.iode);
-        write_value(w, v.t_oc);
-        write_value(w, v.af0);
-        write_value(w, v.af1);
-        write_value(w, v.af2);
-        write_value(w, v.t_gd);
-        write_value(w, v.isc_l1ca);
-        write_value(w, v.isc_l2c);
-        write_value(w, v.t_oe);
-        write_value(w, v.a);
-        write_value(w, v.a_dot);
-        write_value(w, v.mean_anomaly);
-        write_value(w, v.delta_mean_motion);
-        write_value(w, v.delta_mean_motion_dot);
-        write_value(w, v.eccentricity);
-        write_value(w, v.argument_of_perigee);
-        write_value(w, v.omega);
-        write_value(w, v.omega_dot);
-        write_value(w, v.inclination);
-        write_value(w, v.inclination_dot);
-        write_value(w, v.c_ic);
-        write_value(w, v.c_is);
-        write_value(w, v.c_uc);
-        write_value(w, v.c_us);
-        write_value(w, v.c_rc);
-        write_value(w, v.c_rs);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::GpsEphemeris &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::GpsEphemeris &v);
 };
 
 template <> struct Codec<gnss_receiver_2::GlonassEphemeris> {
@@ -1955,143 +1200,9 @@ template <> struct Codec<gnss_receiver_2::GlonassEphemeris> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::GlonassEphemeris &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.freq_number, err)) {
-            err.enter("freq_number");
-            return false;
-        }
-        if (!read_value(r, v.tk, err)) {
-            err.enter("tk");
-            return false;
-        }
-        if (!read_value(r, v.tb, err)) {
-            err.enter("tb");
-            return false;
-        }
-        if (!read_value(r, v.sat_type, err)) {
-            err.enter("sat_type");
-            return false;
-        }
-        if (!read_value(r, v.gamma, err)) {
-            err.enter("gamma");
-            return false;
-        }
-        if (!read_value(r, v.tau_n, err)) {
-            err.enter("tau_n");
-            return false;
-        }
-        if (!read_fixed(r, v.x, err)) {
-            err.enter("x");
-            return false;
-        }
-        if (!read_fixed(r, v.v, err)) {
-            err.enter("v");
-            return false;
-        }
-        if (!read_fixed(r, v.a, err)) {
-            err.enter("a");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.p, err)) {
-            err.enter("p");
-            return false;
-        }
-        if (!read_value(r, v.nt, err)) {
-            err.enter("nt");
-            return false;
-        }
-        if (!read_value(r, v.delta_tau_n, err)) {
-            err.enter("delta_tau_n");
-            return false;
-        }
-        if (!read_value(r, v.ft, err)) {
-            err.enter("ft");
-            return false;
-        }
-        if (!read_value(r, v.en, err)) {
-            err.enter("en");
-            return false;
-        }
-        if (!read_value(r, v.p1, err)) {
-            err.enter("p1");
-            return false;
-        }
-        if (!read_value(r, v.p2, err)) {
-            err.enter("p2");
-            return false;
-        }
-        if (!read_value(r, v.p3, err)) {
-            err.enter("p3");
-            return false;
-        }
-        if (!read_value(r, v.p4, err)) {
-            err.enter("p4");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::GlonassEphemeris &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.satellite_id);
-        write_value(w, v.freq_number);
-        write_value(w, v.tk);
-        write_value(w, v.tb);
-        write_value(w, v.sat_type);
-        write_value(w, v.gamma);
-        write_value(w, v.tau_n);
-        write_fixed(w, v.x);
-        write_fixed(w, v.v);
-        write_fixed(w, v.a);
-        write_value(w, v.health);
-        write_value(w, v.p);
-        write_value(w, v.nt);
-        write_value(w, v.delta_tau_n);
-        write_value(w, v.ft);
-        write_value(w, v.en);
-        write_value(w, v.p1);
-        write_value(w, v.p2);
-        write_value(w, v.p3);
-        write_value(w, v.p4);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::GlonassEphemeris &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::GlonassEphemeris &v);
 };
 
 template <> struct Codec<gnss_receiver_2::GalileoEphemeris> {
@@ -2182,188 +1293,9 @@ template <> struct Codec<gnss_receiver_2::GalileoEphemeris> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::GalileoEphemeris &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.iodc, err)) {
-            err.enter("iodc");
-            return false;
-        }
-        if (!read_value(r, v.iode, err)) {
-            err.enter("iode");
-            return false;
-        }
-        if (!read_value(r, v.t_oc, err)) {
-            err.enter("t_oc");
-            return false;
-        }
-        if (!read_value(r, v.af0, err)) {
-            err.enter("af0");
-            return false;
-        }
-        if (!read_value(r, v.af1, err)) {
-            err.enter("af1");
-            return false;
-        }
-        if (!read_value(r, v.af2, err)) {
-            err.enter("af2");
-            return false;
-        }
-        if (!read_value(r, v.t_gd, err)) {
-            err.enter("t_gd");
-            return false;
-        }
-        if (!read_value(r, v.isc_l1ca, err)) {
-            err.enter("isc_l1ca");
-            return false;
-        }
-        if (!read_value(r, v.isc_l2c, err)) {
-            err.enter("isc_l2c");
-            return false;
-        }
-        if (!read_value(r, v.t_oe, err)) {
-            err.enter("t_oe");
-            return false;
-        }
-        if (!read_value(r, v.a, err)) {
-            err.enter("a");
-            return false;
-        }
-        if (!read_value(r, v.a_dot, err)) {
-            err.enter("a_dot");
-            return false;
-        }
-        if (!read_value(r, v.mean_anomaly, err)) {
-            err.enter("mean_anomaly");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion, err)) {
-            err.enter("delta_mean_motion");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion_dot, err)) {
-            err.enter("delta_mean_motion_dot");
-            return false;
-        }
-        if (!read_value(r, v.eccentricity, err)) {
-            err.enter("eccentricity");
-            return false;
-        }
-        if (!read_value(r, v.argument_of_perigee, err)) {
-            err.enter("argument_of_perigee");
-            return false;
-        }
-        if (!read_value(r, v.omega, err)) {
-            err.enter("omega");
-            return false;
-        }
-        if (!read_value(r, v.omega_dot, err)) {
-            err.enter("omega_dot");
-            return false;
-        }
-        if (!read_value(r, v.inclination, err)) {
-            err.enter("inclination");
-            return false;
-        }
-        if (!read_value(r, v.inclination_dot, err)) {
-            err.enter("inclination_dot");
-            return false;
-        }
-        if (!read_value(r, v.c_ic, err)) {
-            err.enter("c_ic");
-            return false;
-        }
-        if (!read_value(r, v.c_is, err)) {
-            err.enter("c_is");
-            return false;
-        }
-        if (!read_value(r, v.c_uc, err)) {
-            err.enter("c_uc");
-            return false;
-        }
-        if (!read_value(r, v.c_us, err)) {
-            err.enter("c_us");
-            return false;
-        }
-        if (!read_value(r, v.c_rc, err)) {
-            err.enter("c_rc");
-            return false;
-        }
-        if (!read_value(r, v.c_rs, err)) {
-            err.enter("c_rs");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::GalileoEphemeris &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.satellite_id);
-        write_value(w, v.health);
-        write_value(w, v.iodc);
-        write_value(w, v.iode);
-        write_value(w, v.t_oc);
-        write_value(w, v.af0);
-        write_value(w, v.af1);
-        write_value(w, v.af2);
-        write_value(w, v.t_gd);
-        write_value(w, v.isc_l1ca);
-        write_value(w, v.isc_l2c);
-        write_value(w, v.t_oe);
-        write_value(w, v.a);
-        write_value(w, v.a_dot);
-        write_value(w, v.mean_anomaly);
-        write_value(w, v.delta_mean_motion);
-        write_value(w, v.delta_mean_motion_dot);
-        write_value(w, v.eccentricity);
-        write_value(w, v.argument_of_perigee);
-        write_value(w, v.omega);
-        write_value(w, v.omega_dot);
-        write_value(w, v.inclination);
-        write_value(w, v.inclination_dot);
-        write_value(w, v.c_ic);
-        write_value(w, v.c_is);
-        write_value(w, v.c_uc);
-        write_value(w, v.c_us);
-        write_value(w, v.c_rc);
-        write_value(w, v.c_rs);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::GalileoEphemeris &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::GalileoEphemeris &v);
 };
 
 template <> struct Codec<gnss_receiver_2::BeidouEphemeris> {
@@ -2454,188 +1386,9 @@ template <> struct Codec<gnss_receiver_2::BeidouEphemeris> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, gnss_receiver_2::BeidouEphemeris &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.index, err)) {
-            err.enter("index");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.satellite_id, err)) {
-            err.enter("satellite_id");
-            return false;
-        }
-        if (!read_value(r, v.health, err)) {
-            err.enter("health");
-            return false;
-        }
-        if (!read_value(r, v.iodc, err)) {
-            err.enter("iodc");
-            return false;
-        }
-        if (!read_value(r, v.iode, err)) {
-            err.enter("iode");
-            return false;
-        }
-        if (!read_value(r, v.t_oc, err)) {
-            err.enter("t_oc");
-            return false;
-        }
-        if (!read_value(r, v.af0, err)) {
-            err.enter("af0");
-            return false;
-        }
-        if (!read_value(r, v.af1, err)) {
-            err.enter("af1");
-            return false;
-        }
-        if (!read_value(r, v.af2, err)) {
-            err.enter("af2");
-            return false;
-        }
-        if (!read_value(r, v.t_gd, err)) {
-            err.enter("t_gd");
-            return false;
-        }
-        if (!read_value(r, v.isc_l1ca, err)) {
-            err.enter("isc_l1ca");
-            return false;
-        }
-        if (!read_value(r, v.isc_l2c, err)) {
-            err.enter("isc_l2c");
-            return false;
-        }
-        if (!read_value(r, v.t_oe, err)) {
-            err.enter("t_oe");
-            return false;
-        }
-        if (!read_value(r, v.a, err)) {
-            err.enter("a");
-            return false;
-        }
-        if (!read_value(r, v.a_dot, err)) {
-            err.enter("a_dot");
-            return false;
-        }
-        if (!read_value(r, v.mean_anomaly, err)) {
-            err.enter("mean_anomaly");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion, err)) {
-            err.enter("delta_mean_motion");
-            return false;
-        }
-        if (!read_value(r, v.delta_mean_motion_dot, err)) {
-            err.enter("delta_mean_motion_dot");
-            return false;
-        }
-        if (!read_value(r, v.eccentricity, err)) {
-            err.enter("eccentricity");
-            return false;
-        }
-        if (!read_value(r, v.argument_of_perigee, err)) {
-            err.enter("argument_of_perigee");
-            return false;
-        }
-        if (!read_value(r, v.omega, err)) {
-            err.enter("omega");
-            return false;
-        }
-        if (!read_value(r, v.omega_dot, err)) {
-            err.enter("omega_dot");
-            return false;
-        }
-        if (!read_value(r, v.inclination, err)) {
-            err.enter("inclination");
-            return false;
-        }
-        if (!read_value(r, v.inclination_dot, err)) {
-            err.enter("inclination_dot");
-            return false;
-        }
-        if (!read_value(r, v.c_ic, err)) {
-            err.enter("c_ic");
-            return false;
-        }
-        if (!read_value(r, v.c_is, err)) {
-            err.enter("c_is");
-            return false;
-        }
-        if (!read_value(r, v.c_uc, err)) {
-            err.enter("c_uc");
-            return false;
-        }
-        if (!read_value(r, v.c_us, err)) {
-            err.enter("c_us");
-            return false;
-        }
-        if (!read_value(r, v.c_rc, err)) {
-            err.enter("c_rc");
-            return false;
-        }
-        if (!read_value(r, v.c_rs, err)) {
-            err.enter("c_rs");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const gnss_receiver_2::BeidouEphemeris &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.index);
-        write_value(w, v.count);
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.satellite_id);
-        write_value(w, v.health);
-        write_value(w, v.iodc);
-        write_value(w, v.iode);
-        write_value(w, v.t_oc);
-        write_value(w, v.af0);
-        write_value(w, v.af1);
-        write_value(w, v.af2);
-        write_value(w, v.t_gd);
-        write_value(w, v.isc_l1ca);
-        write_value(w, v.isc_l2c);
-        write_value(w, v.t_oe);
-        write_value(w, v.a);
-        write_value(w, v.a_dot);
-        write_value(w, v.mean_anomaly);
-        write_value(w, v.delta_mean_motion);
-        write_value(w, v.delta_mean_motion_dot);
-        write_value(w, v.eccentricity);
-        write_value(w, v.argument_of_perigee);
-        write_value(w, v.omega);
-        write_value(w, v.omega_dot);
-        write_value(w, v.inclination);
-        write_value(w, v.inclination_dot);
-        write_value(w, v.c_ic);
-        write_value(w, v.c_is);
-        write_value(w, v.c_uc);
-        write_value(w, v.c_us);
-        write_value(w, v.c_rc);
-        write_value(w, v.c_rs);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/gnss_receiver_2.cpp (compiled into the library).
+    static bool read(Reader &r, gnss_receiver_2::BeidouEphemeris &v, DecodeError &err);
+    static void write(Writer &w, const gnss_receiver_2::BeidouEphemeris &v);
 };
 
 } // namespace mipcodec

@@ -51,28 +51,9 @@ template <> struct Codec<reserved::AckNack> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, reserved::AckNack &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.command_descriptor, err)) {
-            err.enter("command_descriptor");
-            return false;
-        }
-        if (!read_value(r, v.ack_code, err)) {
-            err.enter("ack_code");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const reserved::AckNack &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.command_descriptor);
-        write_value(w, v.ack_code);
-        (void)absent;
-    }
+    // Defined in src/fields/reserved.cpp (compiled into the library).
+    static bool read(Reader &r, reserved::AckNack &v, DecodeError &err);
+    static void write(Writer &w, const reserved::AckNack &v);
 };
 
 } // namespace mipcodec

@@ -9,45 +9,9 @@
 namespace mipcodec {
 
 template <> struct Json<reserved::AckNack> {
-    static void write(JsonWriter &w, const reserved::AckNack &v) {
-        (void)v;
-        w.begin_object();
-        w.key("command_descriptor");
-        json_write_value(w, v.command_descriptor);
-        w.key("ack_code");
-        json_write_value(w, v.ack_code);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, reserved::AckNack &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "command_descriptor",
-                                   "ack_code",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("command_descriptor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.command_descriptor, err)) {
-                err.enter("command_descriptor");
-                return false;
-            }
-        } else {
-            return err.missing("command_descriptor");
-        }
-        if (const json::Value *found = in.find("ack_code")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.ack_code, err)) {
-                err.enter("ack_code");
-                return false;
-            }
-        } else {
-            return err.missing("ack_code");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/reserved_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const reserved::AckNack &v);
+    static bool read(const json::Value &in, reserved::AckNack &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -326,23 +326,9 @@ template <> struct Codec<sensor::ScaledAccel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::ScaledAccel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scaled_accel, err)) {
-            err.enter("scaled_accel");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::ScaledAccel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scaled_accel);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::ScaledAccel &v, DecodeError &err);
+    static void write(Writer &w, const sensor::ScaledAccel &v);
 };
 
 template <> struct Codec<sensor::ScaledGyro> {
@@ -357,23 +343,9 @@ template <> struct Codec<sensor::ScaledGyro> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::ScaledGyro &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scaled_gyro, err)) {
-            err.enter("scaled_gyro");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::ScaledGyro &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scaled_gyro);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::ScaledGyro &v, DecodeError &err);
+    static void write(Writer &w, const sensor::ScaledGyro &v);
 };
 
 template <> struct Codec<sensor::ScaledMag> {
@@ -388,23 +360,9 @@ template <> struct Codec<sensor::ScaledMag> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::ScaledMag &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.scaled_mag, err)) {
-            err.enter("scaled_mag");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::ScaledMag &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.scaled_mag);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::ScaledMag &v, DecodeError &err);
+    static void write(Writer &w, const sensor::ScaledMag &v);
 };
 
 template <> struct Codec<sensor::DeltaTheta> {
@@ -419,23 +377,9 @@ template <> struct Codec<sensor::DeltaTheta> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::DeltaTheta &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.delta_theta, err)) {
-            err.enter("delta_theta");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::DeltaTheta &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.delta_theta);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::DeltaTheta &v, DecodeError &err);
+    static void write(Writer &w, const sensor::DeltaTheta &v);
 };
 
 template <> struct Codec<sensor::DeltaVelocity> {
@@ -450,23 +394,9 @@ template <> struct Codec<sensor::DeltaVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::DeltaVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.delta_velocity, err)) {
-            err.enter("delta_velocity");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::DeltaVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.delta_velocity);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::DeltaVelocity &v, DecodeError &err);
+    static void write(Writer &w, const sensor::DeltaVelocity &v);
 };
 
 template <> struct Codec<sensor::CfOrientationMatrix> {
@@ -481,23 +411,9 @@ template <> struct Codec<sensor::CfOrientationMatrix> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::CfOrientationMatrix &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.m, err)) {
-            err.enter("m");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::CfOrientationMatrix &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.m);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::CfOrientationMatrix &v, DecodeError &err);
+    static void write(Writer &w, const sensor::CfOrientationMatrix &v);
 };
 
 template <> struct Codec<sensor::CfQuaternion> {
@@ -512,23 +428,9 @@ template <> struct Codec<sensor::CfQuaternion> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::CfQuaternion &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.q, err)) {
-            err.enter("q");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::CfQuaternion &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.q);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::CfQuaternion &v, DecodeError &err);
+    static void write(Writer &w, const sensor::CfQuaternion &v);
 };
 
 template <> struct Codec<sensor::CfEulerAngles> {
@@ -548,33 +450,9 @@ template <> struct Codec<sensor::CfEulerAngles> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::CfEulerAngles &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.yaw, err)) {
-            err.enter("yaw");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::CfEulerAngles &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.yaw);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::CfEulerAngles &v, DecodeError &err);
+    static void write(Writer &w, const sensor::CfEulerAngles &v);
 };
 
 template <> struct Codec<sensor::CfStabilizedNorth> {
@@ -589,23 +467,9 @@ template <> struct Codec<sensor::CfStabilizedNorth> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::CfStabilizedNorth &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.stabilized_north, err)) {
-            err.enter("stabilized_north");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::CfStabilizedNorth &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.stabilized_north);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::CfStabilizedNorth &v, DecodeError &err);
+    static void write(Writer &w, const sensor::CfStabilizedNorth &v);
 };
 
 template <> struct Codec<sensor::CfStabilizedUp> {
@@ -620,23 +484,9 @@ template <> struct Codec<sensor::CfStabilizedUp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::CfStabilizedUp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.stabilized_up, err)) {
-            err.enter("stabilized_up");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::CfStabilizedUp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.stabilized_up);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::CfStabilizedUp &v, DecodeError &err);
+    static void write(Writer &w, const sensor::CfStabilizedUp &v);
 };
 
 template <> struct Codec<sensor::GpsTimestamp> {
@@ -656,33 +506,9 @@ template <> struct Codec<sensor::GpsTimestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::GpsTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::GpsTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::GpsTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const sensor::GpsTimestamp &v);
 };
 
 template <> struct Codec<sensor::TemperatureStatistics> {
@@ -702,33 +528,9 @@ template <> struct Codec<sensor::TemperatureStatistics> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::TemperatureStatistics &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.min_temp, err)) {
-            err.enter("min_temp");
-            return false;
-        }
-        if (!read_value(r, v.max_temp, err)) {
-            err.enter("max_temp");
-            return false;
-        }
-        if (!read_value(r, v.mean_temp, err)) {
-            err.enter("mean_temp");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::TemperatureStatistics &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.min_temp);
-        write_value(w, v.max_temp);
-        write_value(w, v.mean_temp);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::TemperatureStatistics &v, DecodeError &err);
+    static void write(Writer &w, const sensor::TemperatureStatistics &v);
 };
 
 template <> struct Codec<sensor::ScaledPressure> {
@@ -743,23 +545,9 @@ template <> struct Codec<sensor::ScaledPressure> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::ScaledPressure &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.scaled_pressure, err)) {
-            err.enter("scaled_pressure");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::ScaledPressure &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.scaled_pressure);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::ScaledPressure &v, DecodeError &err);
+    static void write(Writer &w, const sensor::ScaledPressure &v);
 };
 
 template <> struct Codec<sensor::OverrangeStatus> {
@@ -774,23 +562,9 @@ template <> struct Codec<sensor::OverrangeStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::OverrangeStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.status, err)) {
-            err.enter("status");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::OverrangeStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.status);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::OverrangeStatus &v, DecodeError &err);
+    static void write(Writer &w, const sensor::OverrangeStatus &v);
 };
 
 template <> struct Codec<sensor::OdometerData> {
@@ -810,33 +584,9 @@ template <> struct Codec<sensor::OdometerData> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, sensor::OdometerData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.speed, err)) {
-            err.enter("speed");
-            return false;
-        }
-        if (!read_value(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const sensor::OdometerData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.speed);
-        write_value(w, v.uncertainty);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/sensor.cpp (compiled into the library).
+    static bool read(Reader &r, sensor::OdometerData &v, DecodeError &err);
+    static void write(Writer &w, const sensor::OdometerData &v);
 };
 
 } // namespace mipcodec

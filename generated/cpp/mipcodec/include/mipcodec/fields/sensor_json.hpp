@@ -9,549 +9,93 @@
 namespace mipcodec {
 
 template <> struct Json<sensor::ScaledAccel> {
-    static void write(JsonWriter &w, const sensor::ScaledAccel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scaled_accel");
-        json_write_array(w, v.scaled_accel);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::ScaledAccel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scaled_accel",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scaled_accel")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scaled_accel, err)) {
-                err.enter("scaled_accel");
-                return false;
-            }
-        } else {
-            return err.missing("scaled_accel");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::ScaledAccel &v);
+    static bool read(const json::Value &in, sensor::ScaledAccel &v, JsonError &err);
 };
 
 template <> struct Json<sensor::ScaledGyro> {
-    static void write(JsonWriter &w, const sensor::ScaledGyro &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scaled_gyro");
-        json_write_array(w, v.scaled_gyro);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::ScaledGyro &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scaled_gyro",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scaled_gyro")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scaled_gyro, err)) {
-                err.enter("scaled_gyro");
-                return false;
-            }
-        } else {
-            return err.missing("scaled_gyro");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::ScaledGyro &v);
+    static bool read(const json::Value &in, sensor::ScaledGyro &v, JsonError &err);
 };
 
 template <> struct Json<sensor::ScaledMag> {
-    static void write(JsonWriter &w, const sensor::ScaledMag &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scaled_mag");
-        json_write_array(w, v.scaled_mag);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::ScaledMag &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scaled_mag",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scaled_mag")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.scaled_mag, err)) {
-                err.enter("scaled_mag");
-                return false;
-            }
-        } else {
-            return err.missing("scaled_mag");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::ScaledMag &v);
+    static bool read(const json::Value &in, sensor::ScaledMag &v, JsonError &err);
 };
 
 template <> struct Json<sensor::DeltaTheta> {
-    static void write(JsonWriter &w, const sensor::DeltaTheta &v) {
-        (void)v;
-        w.begin_object();
-        w.key("delta_theta");
-        json_write_array(w, v.delta_theta);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::DeltaTheta &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "delta_theta",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("delta_theta")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.delta_theta, err)) {
-                err.enter("delta_theta");
-                return false;
-            }
-        } else {
-            return err.missing("delta_theta");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::DeltaTheta &v);
+    static bool read(const json::Value &in, sensor::DeltaTheta &v, JsonError &err);
 };
 
 template <> struct Json<sensor::DeltaVelocity> {
-    static void write(JsonWriter &w, const sensor::DeltaVelocity &v) {
-        (void)v;
-        w.begin_object();
-        w.key("delta_velocity");
-        json_write_array(w, v.delta_velocity);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::DeltaVelocity &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "delta_velocity",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("delta_velocity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.delta_velocity, err)) {
-                err.enter("delta_velocity");
-                return false;
-            }
-        } else {
-            return err.missing("delta_velocity");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::DeltaVelocity &v);
+    static bool read(const json::Value &in, sensor::DeltaVelocity &v, JsonError &err);
 };
 
 template <> struct Json<sensor::CfOrientationMatrix> {
-    static void write(JsonWriter &w, const sensor::CfOrientationMatrix &v) {
-        (void)v;
-        w.begin_object();
-        w.key("m");
-        json_write_array(w, v.m);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::CfOrientationMatrix &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "m",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("m")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.m, err)) {
-                err.enter("m");
-                return false;
-            }
-        } else {
-            return err.missing("m");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::CfOrientationMatrix &v);
+    static bool read(const json::Value &in, sensor::CfOrientationMatrix &v, JsonError &err);
 };
 
 template <> struct Json<sensor::CfQuaternion> {
-    static void write(JsonWriter &w, const sensor::CfQuaternion &v) {
-        (void)v;
-        w.begin_object();
-        w.key("q");
-        json_write_array(w, v.q);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::CfQuaternion &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "q",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("q")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.q, err)) {
-                err.enter("q");
-                return false;
-            }
-        } else {
-            return err.missing("q");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::CfQuaternion &v);
+    static bool read(const json::Value &in, sensor::CfQuaternion &v, JsonError &err);
 };
 
 template <> struct Json<sensor::CfEulerAngles> {
-    static void write(JsonWriter &w, const sensor::CfEulerAngles &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("yaw");
-        json_write_value(w, v.yaw);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::CfEulerAngles &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.yaw, err)) {
-                err.enter("yaw");
-                return false;
-            }
-        } else {
-            return err.missing("yaw");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::CfEulerAngles &v);
+    static bool read(const json::Value &in, sensor::CfEulerAngles &v, JsonError &err);
 };
 
 template <> struct Json<sensor::CfStabilizedNorth> {
-    static void write(JsonWriter &w, const sensor::CfStabilizedNorth &v) {
-        (void)v;
-        w.begin_object();
-        w.key("stabilized_north");
-        json_write_array(w, v.stabilized_north);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::CfStabilizedNorth &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "stabilized_north",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("stabilized_north")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.stabilized_north, err)) {
-                err.enter("stabilized_north");
-                return false;
-            }
-        } else {
-            return err.missing("stabilized_north");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::CfStabilizedNorth &v);
+    static bool read(const json::Value &in, sensor::CfStabilizedNorth &v, JsonError &err);
 };
 
 template <> struct Json<sensor::CfStabilizedUp> {
-    static void write(JsonWriter &w, const sensor::CfStabilizedUp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("stabilized_up");
-        json_write_array(w, v.stabilized_up);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::CfStabilizedUp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "stabilized_up",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("stabilized_up")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.stabilized_up, err)) {
-                err.enter("stabilized_up");
-                return false;
-            }
-        } else {
-            return err.missing("stabilized_up");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::CfStabilizedUp &v);
+    static bool read(const json::Value &in, sensor::CfStabilizedUp &v, JsonError &err);
 };
 
 template <> struct Json<sensor::GpsTimestamp> {
-    static void write(JsonWriter &w, const sensor::GpsTimestamp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("tow");
-        json_write_value(w, v.tow);
-        w.key("week_number");
-        json_write_value(w, v.week_number);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::GpsTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "tow",
-                                   "week_number",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.tow, err)) {
-                err.enter("tow");
-                return false;
-            }
-        } else {
-            return err.missing("tow");
-        }
-        if (const json::Value *found = in.find("week_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week_number, err)) {
-                err.enter("week_number");
-                return false;
-            }
-        } else {
-            return err.missing("week_number");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::GpsTimestamp &v);
+    static bool read(const json::Value &in, sensor::GpsTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<sensor::TemperatureStatistics> {
-    static void write(JsonWriter &w, const sensor::TemperatureStatistics &v) {
-        (void)v;
-        w.begin_object();
-        w.key("min_temp");
-        json_write_value(w, v.min_temp);
-        w.key("max_temp");
-        json_write_value(w, v.max_temp);
-        w.key("mean_temp");
-        json_write_value(w, v.mean_temp);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::TemperatureStatistics &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "min_temp",
-                                   "max_temp",
-                                   "mean_temp",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("min_temp")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.min_temp, err)) {
-                err.enter("min_temp");
-                return false;
-            }
-        } else {
-            return err.missing("min_temp");
-        }
-        if (const json::Value *found = in.find("max_temp")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_temp, err)) {
-                err.enter("max_temp");
-                return false;
-            }
-        } else {
-            return err.missing("max_temp");
-        }
-        if (const json::Value *found = in.find("mean_temp")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mean_temp, err)) {
-                err.enter("mean_temp");
-                return false;
-            }
-        } else {
-            return err.missing("mean_temp");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::TemperatureStatistics &v);
+    static bool read(const json::Value &in, sensor::TemperatureStatistics &v, JsonError &err);
 };
 
 template <> struct Json<sensor::ScaledPressure> {
-    static void write(JsonWriter &w, const sensor::ScaledPressure &v) {
-        (void)v;
-        w.begin_object();
-        w.key("scaled_pressure");
-        json_write_value(w, v.scaled_pressure);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::ScaledPressure &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "scaled_pressure",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("scaled_pressure")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.scaled_pressure, err)) {
-                err.enter("scaled_pressure");
-                return false;
-            }
-        } else {
-            return err.missing("scaled_pressure");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::ScaledPressure &v);
+    static bool read(const json::Value &in, sensor::ScaledPressure &v, JsonError &err);
 };
 
 template <> struct Json<sensor::OverrangeStatus> {
-    static void write(JsonWriter &w, const sensor::OverrangeStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("status");
-        json_write_value(w, v.status);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::OverrangeStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "status",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("status")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status, err)) {
-                err.enter("status");
-                return false;
-            }
-        } else {
-            return err.missing("status");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::OverrangeStatus &v);
+    static bool read(const json::Value &in, sensor::OverrangeStatus &v, JsonError &err);
 };
 
 template <> struct Json<sensor::OdometerData> {
-    static void write(JsonWriter &w, const sensor::OdometerData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("speed");
-        json_write_value(w, v.speed);
-        w.key("uncertainty");
-        json_write_value(w, v.uncertainty);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, sensor::OdometerData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "speed",
-                                   "uncertainty",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("speed")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.speed, err)) {
-                err.enter("speed");
-                return false;
-            }
-        } else {
-            return err.missing("speed");
-        }
-        if (const json::Value *found = in.find("uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.uncertainty, err)) {
-                err.enter("uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("uncertainty");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/sensor_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const sensor::OdometerData &v);
+    static bool read(const json::Value &in, sensor::OdometerData &v, JsonError &err);
 };
 
 } // namespace mipcodec

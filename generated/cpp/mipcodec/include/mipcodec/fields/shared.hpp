@@ -168,23 +168,9 @@ template <> struct Codec<shared::EventSource> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::EventSource &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.trigger_id, err)) {
-            err.enter("trigger_id");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::EventSource &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.trigger_id);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::EventSource &v, DecodeError &err);
+    static void write(Writer &w, const shared::EventSource &v);
 };
 
 template <> struct Codec<shared::GpsTimestamp> {
@@ -204,33 +190,9 @@ template <> struct Codec<shared::GpsTimestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::GpsTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::GpsTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::GpsTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const shared::GpsTimestamp &v);
 };
 
 template <> struct Codec<shared::DeltaTime> {
@@ -245,23 +207,9 @@ template <> struct Codec<shared::DeltaTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::DeltaTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.seconds, err)) {
-            err.enter("seconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::DeltaTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.seconds);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::DeltaTime &v, DecodeError &err);
+    static void write(Writer &w, const shared::DeltaTime &v);
 };
 
 template <> struct Codec<shared::ReferenceTimestamp> {
@@ -276,23 +224,9 @@ template <> struct Codec<shared::ReferenceTimestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::ReferenceTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.nanoseconds, err)) {
-            err.enter("nanoseconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::ReferenceTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.nanoseconds);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::ReferenceTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const shared::ReferenceTimestamp &v);
 };
 
 template <> struct Codec<shared::ReferenceTimeDelta> {
@@ -307,23 +241,9 @@ template <> struct Codec<shared::ReferenceTimeDelta> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::ReferenceTimeDelta &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.dt_nanos, err)) {
-            err.enter("dt_nanos");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::ReferenceTimeDelta &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.dt_nanos);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::ReferenceTimeDelta &v, DecodeError &err);
+    static void write(Writer &w, const shared::ReferenceTimeDelta &v);
 };
 
 template <> struct Codec<shared::ExternalTimestamp> {
@@ -341,28 +261,9 @@ template <> struct Codec<shared::ExternalTimestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::ExternalTimestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.nanoseconds, err)) {
-            err.enter("nanoseconds");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::ExternalTimestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.nanoseconds);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::ExternalTimestamp &v, DecodeError &err);
+    static void write(Writer &w, const shared::ExternalTimestamp &v);
 };
 
 template <> struct Codec<shared::ExternalTimeDelta> {
@@ -380,28 +281,9 @@ template <> struct Codec<shared::ExternalTimeDelta> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::ExternalTimeDelta &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.dt_nanos, err)) {
-            err.enter("dt_nanos");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::ExternalTimeDelta &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.dt_nanos);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::ExternalTimeDelta &v, DecodeError &err);
+    static void write(Writer &w, const shared::ExternalTimeDelta &v);
 };
 
 } // namespace mipcodec

@@ -9,261 +9,45 @@
 namespace mipcodec {
 
 template <> struct Json<shared::EventSource> {
-    static void write(JsonWriter &w, const shared::EventSource &v) {
-        (void)v;
-        w.begin_object();
-        w.key("trigger_id");
-        json_write_value(w, v.trigger_id);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::EventSource &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "trigger_id",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("trigger_id")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.trigger_id, err)) {
-                err.enter("trigger_id");
-                return false;
-            }
-        } else {
-            return err.missing("trigger_id");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::EventSource &v);
+    static bool read(const json::Value &in, shared::EventSource &v, JsonError &err);
 };
 
 template <> struct Json<shared::GpsTimestamp> {
-    static void write(JsonWriter &w, const shared::GpsTimestamp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("tow");
-        json_write_value(w, v.tow);
-        w.key("week_number");
-        json_write_value(w, v.week_number);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::GpsTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "tow",
-                                   "week_number",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.tow, err)) {
-                err.enter("tow");
-                return false;
-            }
-        } else {
-            return err.missing("tow");
-        }
-        if (const json::Value *found = in.find("week_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week_number, err)) {
-                err.enter("week_number");
-                return false;
-            }
-        } else {
-            return err.missing("week_number");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::GpsTimestamp &v);
+    static bool read(const json::Value &in, shared::GpsTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<shared::DeltaTime> {
-    static void write(JsonWriter &w, const shared::DeltaTime &v) {
-        (void)v;
-        w.begin_object();
-        w.key("seconds");
-        json_write_value(w, v.seconds);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::DeltaTime &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "seconds",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("seconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.seconds, err)) {
-                err.enter("seconds");
-                return false;
-            }
-        } else {
-            return err.missing("seconds");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::DeltaTime &v);
+    static bool read(const json::Value &in, shared::DeltaTime &v, JsonError &err);
 };
 
 template <> struct Json<shared::ReferenceTimestamp> {
-    static void write(JsonWriter &w, const shared::ReferenceTimestamp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("nanoseconds");
-        json_write_value(w, v.nanoseconds);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::ReferenceTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "nanoseconds",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("nanoseconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.nanoseconds, err)) {
-                err.enter("nanoseconds");
-                return false;
-            }
-        } else {
-            return err.missing("nanoseconds");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::ReferenceTimestamp &v);
+    static bool read(const json::Value &in, shared::ReferenceTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<shared::ReferenceTimeDelta> {
-    static void write(JsonWriter &w, const shared::ReferenceTimeDelta &v) {
-        (void)v;
-        w.begin_object();
-        w.key("dt_nanos");
-        json_write_value(w, v.dt_nanos);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::ReferenceTimeDelta &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "dt_nanos",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("dt_nanos")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.dt_nanos, err)) {
-                err.enter("dt_nanos");
-                return false;
-            }
-        } else {
-            return err.missing("dt_nanos");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::ReferenceTimeDelta &v);
+    static bool read(const json::Value &in, shared::ReferenceTimeDelta &v, JsonError &err);
 };
 
 template <> struct Json<shared::ExternalTimestamp> {
-    static void write(JsonWriter &w, const shared::ExternalTimestamp &v) {
-        (void)v;
-        w.begin_object();
-        w.key("nanoseconds");
-        json_write_value(w, v.nanoseconds);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::ExternalTimestamp &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "nanoseconds",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("nanoseconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.nanoseconds, err)) {
-                err.enter("nanoseconds");
-                return false;
-            }
-        } else {
-            return err.missing("nanoseconds");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::ExternalTimestamp &v);
+    static bool read(const json::Value &in, shared::ExternalTimestamp &v, JsonError &err);
 };
 
 template <> struct Json<shared::ExternalTimeDelta> {
-    static void write(JsonWriter &w, const shared::ExternalTimeDelta &v) {
-        (void)v;
-        w.begin_object();
-        w.key("dt_nanos");
-        json_write_value(w, v.dt_nanos);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, shared::ExternalTimeDelta &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "dt_nanos",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("dt_nanos")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.dt_nanos, err)) {
-                err.enter("dt_nanos");
-                return false;
-            }
-        } else {
-            return err.missing("dt_nanos");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/shared_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const shared::ExternalTimeDelta &v);
+    static bool read(const json::Value &in, shared::ExternalTimeDelta &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -58,39 +58,9 @@ struct CommunicationModeResponse {
 namespace mipcodec {
 
 template <> struct Codec<system::CommunicationMode> {
-    static bool read(Reader &r, system::CommunicationMode &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const system::CommunicationMode &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/system.cpp (compiled into the library).
+    static bool read(Reader &r, system::CommunicationMode &v, DecodeError &err);
+    static void write(Writer &w, const system::CommunicationMode &v);
 };
 
 template <> struct Codec<system::CommunicationModeResponse> {
@@ -105,23 +75,9 @@ template <> struct Codec<system::CommunicationModeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, system::CommunicationModeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const system::CommunicationModeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/fields/system.cpp (compiled into the library).
+    static bool read(Reader &r, system::CommunicationModeResponse &v, DecodeError &err);
+    static void write(Writer &w, const system::CommunicationModeResponse &v);
 };
 
 } // namespace mipcodec

@@ -88,48 +88,15 @@ template <> struct Codec<system_data::BuiltInTest> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, system_data::BuiltInTest &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.result, err)) {
-            err.enter("result");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const system_data::BuiltInTest &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.result);
-        (void)absent;
-    }
+    // Defined in src/fields/system_data.cpp (compiled into the library).
+    static bool read(Reader &r, system_data::BuiltInTest &v, DecodeError &err);
+    static void write(Writer &w, const system_data::BuiltInTest &v);
 };
 
 template <> struct Codec<system_data::TimeSyncStatus> {
-    static bool read(Reader &r, system_data::TimeSyncStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.time_sync, err)) {
-            err.enter("time_sync");
-            return false;
-        }
-        if (!read_value(r, v.last_pps_rcvd, err)) {
-            err.enter("last_pps_rcvd");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const system_data::TimeSyncStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.time_sync);
-        write_value(w, v.last_pps_rcvd);
-        (void)absent;
-    }
+    // Defined in src/fields/system_data.cpp (compiled into the library).
+    static bool read(Reader &r, system_data::TimeSyncStatus &v, DecodeError &err);
+    static void write(Writer &w, const system_data::TimeSyncStatus &v);
 };
 
 template <> struct Codec<system_data::GpioState> {
@@ -144,23 +111,9 @@ template <> struct Codec<system_data::GpioState> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, system_data::GpioState &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.states, err)) {
-            err.enter("states");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const system_data::GpioState &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.states);
-        (void)absent;
-    }
+    // Defined in src/fields/system_data.cpp (compiled into the library).
+    static bool read(Reader &r, system_data::GpioState &v, DecodeError &err);
+    static void write(Writer &w, const system_data::GpioState &v);
 };
 
 } // namespace mipcodec

@@ -9,105 +9,21 @@
 namespace mipcodec {
 
 template <> struct Json<system_data::BuiltInTest> {
-    static void write(JsonWriter &w, const system_data::BuiltInTest &v) {
-        (void)v;
-        w.begin_object();
-        w.key("result");
-        json_write_value(w, v.result);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, system_data::BuiltInTest &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "result",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("result")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.result, err)) {
-                err.enter("result");
-                return false;
-            }
-        } else {
-            return err.missing("result");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/system_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const system_data::BuiltInTest &v);
+    static bool read(const json::Value &in, system_data::BuiltInTest &v, JsonError &err);
 };
 
 template <> struct Json<system_data::TimeSyncStatus> {
-    static void write(JsonWriter &w, const system_data::TimeSyncStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("time_sync");
-        json_write_value(w, v.time_sync);
-        w.key("last_pps_rcvd");
-        json_write_value(w, v.last_pps_rcvd);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, system_data::TimeSyncStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "time_sync",
-                                   "last_pps_rcvd",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("time_sync")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.time_sync, err)) {
-                err.enter("time_sync");
-                return false;
-            }
-        } else {
-            return err.missing("time_sync");
-        }
-        if (const json::Value *found = in.find("last_pps_rcvd")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.last_pps_rcvd, err)) {
-                err.enter("last_pps_rcvd");
-                return false;
-            }
-        } else {
-            return err.missing("last_pps_rcvd");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/system_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const system_data::TimeSyncStatus &v);
+    static bool read(const json::Value &in, system_data::TimeSyncStatus &v, JsonError &err);
 };
 
 template <> struct Json<system_data::GpioState> {
-    static void write(JsonWriter &w, const system_data::GpioState &v) {
-        (void)v;
-        w.begin_object();
-        w.key("states");
-        json_write_value(w, v.states);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, system_data::GpioState &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "states",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("states")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.states, err)) {
-                err.enter("states");
-                return false;
-            }
-        } else {
-            return err.missing("states");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/system_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const system_data::GpioState &v);
+    static bool read(const json::Value &in, system_data::GpioState &v, JsonError &err);
 };
 
 } // namespace mipcodec

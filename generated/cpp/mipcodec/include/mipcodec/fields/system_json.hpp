@@ -9,76 +9,15 @@
 namespace mipcodec {
 
 template <> struct Json<system::CommunicationMode> {
-    static void write(JsonWriter &w, const system::CommunicationMode &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, system::CommunicationMode &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/system_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const system::CommunicationMode &v);
+    static bool read(const json::Value &in, system::CommunicationMode &v, JsonError &err);
 };
 
 template <> struct Json<system::CommunicationModeResponse> {
-    static void write(JsonWriter &w, const system::CommunicationModeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, system::CommunicationModeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/system_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const system::CommunicationModeResponse &v);
+    static bool read(const json::Value &in, system::CommunicationModeResponse &v, JsonError &err);
 };
 
 } // namespace mipcodec

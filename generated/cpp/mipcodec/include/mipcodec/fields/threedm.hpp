@@ -2050,44 +2050,9 @@ struct DeviceStatusResponse {
 namespace mipcodec {
 
 template <> struct Codec<threedm::EventControl> {
-    static bool read(Reader &r, threedm::EventControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.instance);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventControl &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventControl &v);
 };
 
 template <> struct Codec<threedm::EventControlResponse> {
@@ -2105,327 +2070,57 @@ template <> struct Codec<threedm::EventControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::EventControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.instance);
-        write_value(w, v.mode);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventControlResponse &v);
 };
 
 template <> struct Codec<threedm::GetEventTriggerStatus> {
-    static bool read(Reader &r, threedm::GetEventTriggerStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.requested_count, err)) {
-            err.enter("requested_count");
-            return false;
-        }
-        if (!read_counted(r, v.requested_instances, static_cast<std::uint64_t>(v.requested_count), err)) {
-            err.enter("requested_instances");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetEventTriggerStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.requested_count);
-        write_counted(w, v.requested_instances, static_cast<std::uint64_t>(v.requested_count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetEventTriggerStatus &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetEventTriggerStatus &v);
 };
 
 template <> struct Codec<threedm::EventTriggerStatus> {
-    static bool read(Reader &r, threedm::EventTriggerStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_counted(r, v.triggers, static_cast<std::uint64_t>(v.count), err)) {
-            err.enter("triggers");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventTriggerStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.count);
-        write_counted(w, v.triggers, static_cast<std::uint64_t>(v.count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventTriggerStatus &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventTriggerStatus &v);
 };
 
 template <> struct Codec<threedm::GetEventActionStatus> {
-    static bool read(Reader &r, threedm::GetEventActionStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.requested_count, err)) {
-            err.enter("requested_count");
-            return false;
-        }
-        if (!read_counted(r, v.requested_instances, static_cast<std::uint64_t>(v.requested_count), err)) {
-            err.enter("requested_instances");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetEventActionStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.requested_count);
-        write_counted(w, v.requested_instances, static_cast<std::uint64_t>(v.requested_count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetEventActionStatus &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetEventActionStatus &v);
 };
 
 template <> struct Codec<threedm::EventActionStatus> {
-    static bool read(Reader &r, threedm::EventActionStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_counted(r, v.actions, static_cast<std::uint64_t>(v.count), err)) {
-            err.enter("actions");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventActionStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.count);
-        write_counted(w, v.actions, static_cast<std::uint64_t>(v.count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventActionStatus &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventActionStatus &v);
 };
 
 template <> struct Codec<threedm::EventTriggerConfig> {
-    static bool read(Reader &r, threedm::EventTriggerConfig &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.type.emplace();
-            if (!read_value(r, (*v.type), err)) {
-                err.enter("type");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.parameters.emplace();
-            if (!::mipcodec::Codec<::mipcodec::types::TriggerParams>::read(
-                    r, (*v.parameters), v.type.value_or(::mipcodec::types::TriggerType{}), err)) {
-                err.enter("parameters");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventTriggerConfig &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.instance);
-        if (v.type) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.type));
-        } else {
-            absent = true;
-        }
-        if (v.parameters) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            ::mipcodec::Codec<::mipcodec::types::TriggerParams>::write(
-                w, (*v.parameters), v.type.value_or(::mipcodec::types::TriggerType{}));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventTriggerConfig &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventTriggerConfig &v);
 };
 
 template <> struct Codec<threedm::EventTriggerConfigResponse> {
-    static bool read(Reader &r, threedm::EventTriggerConfigResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::TriggerParams>::read(r, v.parameters, v.type, err)) {
-            err.enter("parameters");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventTriggerConfigResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.instance);
-        write_value(w, v.type);
-        ::mipcodec::Codec<::mipcodec::types::TriggerParams>::write(w, v.parameters, v.type);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventTriggerConfigResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventTriggerConfigResponse &v);
 };
 
 template <> struct Codec<threedm::EventActionConfig> {
-    static bool read(Reader &r, threedm::EventActionConfig &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.trigger.emplace();
-            if (!read_value(r, (*v.trigger), err)) {
-                err.enter("trigger");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.type.emplace();
-            if (!read_value(r, (*v.type), err)) {
-                err.enter("type");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.parameters.emplace();
-            if (!::mipcodec::Codec<::mipcodec::types::ActionParams>::read(
-                    r, (*v.parameters), v.type.value_or(::mipcodec::types::ActionType{}), err)) {
-                err.enter("parameters");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventActionConfig &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.instance);
-        if (v.trigger) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.trigger));
-        } else {
-            absent = true;
-        }
-        if (v.type) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.type));
-        } else {
-            absent = true;
-        }
-        if (v.parameters) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            ::mipcodec::Codec<::mipcodec::types::ActionParams>::write(
-                w, (*v.parameters), v.type.value_or(::mipcodec::types::ActionType{}));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventActionConfig &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventActionConfig &v);
 };
 
 template <> struct Codec<threedm::EventActionConfigResponse> {
-    static bool read(Reader &r, threedm::EventActionConfigResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (!read_value(r, v.trigger, err)) {
-            err.enter("trigger");
-            return false;
-        }
-        if (!read_value(r, v.type, err)) {
-            err.enter("type");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::ActionParams>::read(r, v.parameters, v.type, err)) {
-            err.enter("parameters");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::EventActionConfigResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.instance);
-        write_value(w, v.trigger);
-        write_value(w, v.type);
-        ::mipcodec::Codec<::mipcodec::types::ActionParams>::write(w, v.parameters, v.type);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::EventActionConfigResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::EventActionConfigResponse &v);
 };
 
 template <> struct Codec<threedm::DeviceStartupSettingsGx545> {
@@ -2440,23 +2135,9 @@ template <> struct Codec<threedm::DeviceStartupSettingsGx545> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::DeviceStartupSettingsGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DeviceStartupSettingsGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DeviceStartupSettingsGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DeviceStartupSettingsGx545 &v);
 };
 
 template <> struct Codec<threedm::DeviceStartupSettingsCv7Ins> {
@@ -2471,91 +2152,15 @@ template <> struct Codec<threedm::DeviceStartupSettingsCv7Ins> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::DeviceStartupSettingsCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DeviceStartupSettingsCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DeviceStartupSettingsCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DeviceStartupSettingsCv7Ins &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleEuler> {
-    static bool read(Reader &r, threedm::SensorToVehicleEuler &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.roll.emplace();
-            if (!read_value(r, (*v.roll), err)) {
-                err.enter("roll");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.pitch.emplace();
-            if (!read_value(r, (*v.pitch), err)) {
-                err.enter("pitch");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.yaw.emplace();
-            if (!read_value(r, (*v.yaw), err)) {
-                err.enter("yaw");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleEuler &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.roll) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.roll));
-        } else {
-            absent = true;
-        }
-        if (v.pitch) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.pitch));
-        } else {
-            absent = true;
-        }
-        if (v.yaw) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.yaw));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleEuler &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleEuler &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleEulerResponse> {
@@ -2575,69 +2180,15 @@ template <> struct Codec<threedm::SensorToVehicleEulerResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::SensorToVehicleEulerResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.roll, err)) {
-            err.enter("roll");
-            return false;
-        }
-        if (!read_value(r, v.pitch, err)) {
-            err.enter("pitch");
-            return false;
-        }
-        if (!read_value(r, v.yaw, err)) {
-            err.enter("yaw");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleEulerResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.roll);
-        write_value(w, v.pitch);
-        write_value(w, v.yaw);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleEulerResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleEulerResponse &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleQuaternion> {
-    static bool read(Reader &r, threedm::SensorToVehicleQuaternion &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.q.emplace();
-            if (!read_fixed(r, (*v.q), err)) {
-                err.enter("q");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleQuaternion &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.q) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.q));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleQuaternion &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleQuaternion &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleQuaternionResponse> {
@@ -2652,59 +2203,15 @@ template <> struct Codec<threedm::SensorToVehicleQuaternionResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::SensorToVehicleQuaternionResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.q, err)) {
-            err.enter("q");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleQuaternionResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.q);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleQuaternionResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleQuaternionResponse &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleDcm> {
-    static bool read(Reader &r, threedm::SensorToVehicleDcm &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.dcm.emplace();
-            if (!read_fixed(r, (*v.dcm), err)) {
-                err.enter("dcm");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleDcm &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.dcm) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.dcm));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleDcm &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleDcm &v);
 };
 
 template <> struct Codec<threedm::SensorToVehicleDcmResponse> {
@@ -2719,95 +2226,21 @@ template <> struct Codec<threedm::SensorToVehicleDcmResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::SensorToVehicleDcmResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.dcm, err)) {
-            err.enter("dcm");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorToVehicleDcmResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.dcm);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorToVehicleDcmResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorToVehicleDcmResponse &v);
 };
 
 template <> struct Codec<threedm::AccelBiasGx545> {
-    static bool read(Reader &r, threedm::AccelBiasGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.bias.emplace();
-            if (!read_fixed(r, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::AccelBiasGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.bias) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.bias));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::AccelBiasGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::AccelBiasGx545 &v);
 };
 
 template <> struct Codec<threedm::AccelBiasCv7Ins> {
-    static bool read(Reader &r, threedm::AccelBiasCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.bias.emplace();
-            if (!read_fixed(r, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::AccelBiasCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.bias) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.bias));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::AccelBiasCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::AccelBiasCv7Ins &v);
 };
 
 template <> struct Codec<threedm::AccelBiasResponse> {
@@ -2822,95 +2255,21 @@ template <> struct Codec<threedm::AccelBiasResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::AccelBiasResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::AccelBiasResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::AccelBiasResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::AccelBiasResponse &v);
 };
 
 template <> struct Codec<threedm::GyroBiasGx545> {
-    static bool read(Reader &r, threedm::GyroBiasGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.bias.emplace();
-            if (!read_fixed(r, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GyroBiasGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.bias) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.bias));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GyroBiasGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GyroBiasGx545 &v);
 };
 
 template <> struct Codec<threedm::GyroBiasCv7Ins> {
-    static bool read(Reader &r, threedm::GyroBiasCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.bias.emplace();
-            if (!read_fixed(r, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GyroBiasCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.bias) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.bias));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GyroBiasCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GyroBiasCv7Ins &v);
 };
 
 template <> struct Codec<threedm::GyroBiasResponse> {
@@ -2925,23 +2284,9 @@ template <> struct Codec<threedm::GyroBiasResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GyroBiasResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.bias, err)) {
-            err.enter("bias");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GyroBiasResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.bias);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GyroBiasResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GyroBiasResponse &v);
 };
 
 template <> struct Codec<threedm::CaptureGyroBias> {
@@ -2956,95 +2301,21 @@ template <> struct Codec<threedm::CaptureGyroBias> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::CaptureGyroBias &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.averaging_time_ms, err)) {
-            err.enter("averaging_time_ms");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::CaptureGyroBias &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.averaging_time_ms);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::CaptureGyroBias &v, DecodeError &err);
+    static void write(Writer &w, const threedm::CaptureGyroBias &v);
 };
 
 template <> struct Codec<threedm::MagHardIronOffsetGx545> {
-    static bool read(Reader &r, threedm::MagHardIronOffsetGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.offset.emplace();
-            if (!read_fixed(r, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagHardIronOffsetGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagHardIronOffsetGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagHardIronOffsetGx545 &v);
 };
 
 template <> struct Codec<threedm::MagHardIronOffsetCv7Ins> {
-    static bool read(Reader &r, threedm::MagHardIronOffsetCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.offset.emplace();
-            if (!read_fixed(r, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagHardIronOffsetCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.offset) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.offset));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagHardIronOffsetCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagHardIronOffsetCv7Ins &v);
 };
 
 template <> struct Codec<threedm::MagHardIronOffsetResponse> {
@@ -3059,95 +2330,21 @@ template <> struct Codec<threedm::MagHardIronOffsetResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::MagHardIronOffsetResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.offset, err)) {
-            err.enter("offset");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagHardIronOffsetResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.offset);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagHardIronOffsetResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagHardIronOffsetResponse &v);
 };
 
 template <> struct Codec<threedm::MagSoftIronMatrixGx545> {
-    static bool read(Reader &r, threedm::MagSoftIronMatrixGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.matrix.emplace();
-            if (!read_fixed(r, (*v.matrix), err)) {
-                err.enter("matrix");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagSoftIronMatrixGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.matrix) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.matrix));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagSoftIronMatrixGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagSoftIronMatrixGx545 &v);
 };
 
 template <> struct Codec<threedm::MagSoftIronMatrixCv7Ins> {
-    static bool read(Reader &r, threedm::MagSoftIronMatrixCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.matrix.emplace();
-            if (!read_fixed(r, (*v.matrix), err)) {
-                err.enter("matrix");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagSoftIronMatrixCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.matrix) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_fixed(w, (*v.matrix));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagSoftIronMatrixCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagSoftIronMatrixCv7Ins &v);
 };
 
 template <> struct Codec<threedm::MagSoftIronMatrixResponse> {
@@ -3162,115 +2359,27 @@ template <> struct Codec<threedm::MagSoftIronMatrixResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::MagSoftIronMatrixResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.matrix, err)) {
-            err.enter("matrix");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MagSoftIronMatrixResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.matrix);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MagSoftIronMatrixResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MagSoftIronMatrixResponse &v);
 };
 
 template <> struct Codec<threedm::ConingScullingEnable> {
-    static bool read(Reader &r, threedm::ConingScullingEnable &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ConingScullingEnable &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ConingScullingEnable &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ConingScullingEnable &v);
 };
 
 template <> struct Codec<threedm::ConingScullingEnableResponse> {
-    static bool read(Reader &r, threedm::ConingScullingEnableResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ConingScullingEnableResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ConingScullingEnableResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ConingScullingEnableResponse &v);
 };
 
 template <> struct Codec<threedm::UartBaudrate> {
-    static bool read(Reader &r, threedm::UartBaudrate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.baud.emplace();
-            if (!read_value(r, (*v.baud), err)) {
-                err.enter("baud");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::UartBaudrate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.baud) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.baud));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::UartBaudrate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::UartBaudrate &v);
 };
 
 template <> struct Codec<threedm::UartBaudrateResponse> {
@@ -3285,267 +2394,39 @@ template <> struct Codec<threedm::UartBaudrateResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::UartBaudrateResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.baud, err)) {
-            err.enter("baud");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::UartBaudrateResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.baud);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::UartBaudrateResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::UartBaudrateResponse &v);
 };
 
 template <> struct Codec<threedm::GpioConfig> {
-    static bool read(Reader &r, threedm::GpioConfig &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.feature.emplace();
-            if (!read_value(r, (*v.feature), err)) {
-                err.enter("feature");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.behavior.emplace();
-            if (!::mipcodec::Codec<::mipcodec::types::GpioBehavior>::read(
-                    r, (*v.behavior), v.feature.value_or(::mipcodec::types::GpioFeature{}), err)) {
-                err.enter("behavior");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.pin_mode.emplace();
-            if (!read_value(r, (*v.pin_mode), err)) {
-                err.enter("pin_mode");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GpioConfig &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.pin);
-        if (v.feature) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.feature));
-        } else {
-            absent = true;
-        }
-        if (v.behavior) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            ::mipcodec::Codec<::mipcodec::types::GpioBehavior>::write(
-                w, (*v.behavior), v.feature.value_or(::mipcodec::types::GpioFeature{}));
-        } else {
-            absent = true;
-        }
-        if (v.pin_mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.pin_mode));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GpioConfig &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GpioConfig &v);
 };
 
 template <> struct Codec<threedm::GpioConfigResponse> {
-    static bool read(Reader &r, threedm::GpioConfigResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (!read_value(r, v.feature, err)) {
-            err.enter("feature");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::GpioBehavior>::read(r, v.behavior, v.feature, err)) {
-            err.enter("behavior");
-            return false;
-        }
-        if (!read_value(r, v.pin_mode, err)) {
-            err.enter("pin_mode");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GpioConfigResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pin);
-        write_value(w, v.feature);
-        ::mipcodec::Codec<::mipcodec::types::GpioBehavior>::write(w, v.behavior, v.feature);
-        write_value(w, v.pin_mode);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GpioConfigResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GpioConfigResponse &v);
 };
 
 template <> struct Codec<threedm::GpioState> {
-    static bool read(Reader &r, threedm::GpioState &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.state.emplace();
-            if (!read_value(r, (*v.state), err)) {
-                err.enter("state");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GpioState &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.pin);
-        if (v.state) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.state));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GpioState &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GpioState &v);
 };
 
 template <> struct Codec<threedm::GpioStateResponse> {
-    static bool read(Reader &r, threedm::GpioStateResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (!read_value(r, v.state, err)) {
-            err.enter("state");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GpioStateResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pin);
-        write_value(w, v.state);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GpioStateResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GpioStateResponse &v);
 };
 
 template <> struct Codec<threedm::OdometerConfig> {
-    static bool read(Reader &r, threedm::OdometerConfig &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.scaling.emplace();
-            if (!read_value(r, (*v.scaling), err)) {
-                err.enter("scaling");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.uncertainty.emplace();
-            if (!read_value(r, (*v.uncertainty), err)) {
-                err.enter("uncertainty");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::OdometerConfig &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        if (v.scaling) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.scaling));
-        } else {
-            absent = true;
-        }
-        if (v.uncertainty) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.uncertainty));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::OdometerConfig &v, DecodeError &err);
+    static void write(Writer &w, const threedm::OdometerConfig &v);
 };
 
 template <> struct Codec<threedm::OdometerConfigResponse> {
@@ -3565,322 +2446,39 @@ template <> struct Codec<threedm::OdometerConfigResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::OdometerConfigResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.mode, err)) {
-            err.enter("mode");
-            return false;
-        }
-        if (!read_value(r, v.scaling, err)) {
-            err.enter("scaling");
-            return false;
-        }
-        if (!read_value(r, v.uncertainty, err)) {
-            err.enter("uncertainty");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::OdometerConfigResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.mode);
-        write_value(w, v.scaling);
-        write_value(w, v.uncertainty);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::OdometerConfigResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::OdometerConfigResponse &v);
 };
 
 template <> struct Codec<threedm::AdvancedLowpassFilter> {
-    static bool read(Reader &r, threedm::AdvancedLowpassFilter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.target_descriptor, err)) {
-            err.enter("target_descriptor");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.manual.emplace();
-            if (!read_value(r, (*v.manual), err)) {
-                err.enter("manual");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.frequency.emplace();
-            if (!read_value(r, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.reserved.emplace();
-            if (!read_value(r, (*v.reserved), err)) {
-                err.enter("reserved");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::AdvancedLowpassFilter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.target_descriptor);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.manual) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.manual));
-        } else {
-            absent = true;
-        }
-        if (v.frequency) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.frequency));
-        } else {
-            absent = true;
-        }
-        if (v.reserved) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.reserved));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::AdvancedLowpassFilter &v, DecodeError &err);
+    static void write(Writer &w, const threedm::AdvancedLowpassFilter &v);
 };
 
 template <> struct Codec<threedm::AdvancedLowpassFilterResponse> {
-    static bool read(Reader &r, threedm::AdvancedLowpassFilterResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.target_descriptor, err)) {
-            err.enter("target_descriptor");
-            return false;
-        }
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.manual, err)) {
-            err.enter("manual");
-            return false;
-        }
-        if (!read_value(r, v.frequency, err)) {
-            err.enter("frequency");
-            return false;
-        }
-        if (!read_value(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::AdvancedLowpassFilterResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.target_descriptor);
-        write_value(w, v.enable);
-        write_value(w, v.manual);
-        write_value(w, v.frequency);
-        write_value(w, v.reserved);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::AdvancedLowpassFilterResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::AdvancedLowpassFilterResponse &v);
 };
 
 template <> struct Codec<threedm::ComplementaryFilter> {
-    static bool read(Reader &r, threedm::ComplementaryFilter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.pitch_roll_enable.emplace();
-            if (!read_value(r, (*v.pitch_roll_enable), err)) {
-                err.enter("pitch_roll_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.heading_enable.emplace();
-            if (!read_value(r, (*v.heading_enable), err)) {
-                err.enter("heading_enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.pitch_roll_time_constant.emplace();
-            if (!read_value(r, (*v.pitch_roll_time_constant), err)) {
-                err.enter("pitch_roll_time_constant");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.heading_time_constant.emplace();
-            if (!read_value(r, (*v.heading_time_constant), err)) {
-                err.enter("heading_time_constant");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ComplementaryFilter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.pitch_roll_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.pitch_roll_enable));
-        } else {
-            absent = true;
-        }
-        if (v.heading_enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.heading_enable));
-        } else {
-            absent = true;
-        }
-        if (v.pitch_roll_time_constant) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.pitch_roll_time_constant));
-        } else {
-            absent = true;
-        }
-        if (v.heading_time_constant) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.heading_time_constant));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ComplementaryFilter &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ComplementaryFilter &v);
 };
 
 template <> struct Codec<threedm::ComplementaryFilterResponse> {
-    static bool read(Reader &r, threedm::ComplementaryFilterResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pitch_roll_enable, err)) {
-            err.enter("pitch_roll_enable");
-            return false;
-        }
-        if (!read_value(r, v.heading_enable, err)) {
-            err.enter("heading_enable");
-            return false;
-        }
-        if (!read_value(r, v.pitch_roll_time_constant, err)) {
-            err.enter("pitch_roll_time_constant");
-            return false;
-        }
-        if (!read_value(r, v.heading_time_constant, err)) {
-            err.enter("heading_time_constant");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ComplementaryFilterResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pitch_roll_enable);
-        write_value(w, v.heading_enable);
-        write_value(w, v.pitch_roll_time_constant);
-        write_value(w, v.heading_time_constant);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ComplementaryFilterResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ComplementaryFilterResponse &v);
 };
 
 template <> struct Codec<threedm::SensorRange> {
-    static bool read(Reader &r, threedm::SensorRange &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.sensor, err)) {
-            err.enter("sensor");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.setting.emplace();
-            if (!read_value(r, (*v.setting), err)) {
-                err.enter("setting");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorRange &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.sensor);
-        if (v.setting) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.setting));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorRange &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorRange &v);
 };
 
 template <> struct Codec<threedm::SensorRangeResponse> {
@@ -3898,28 +2496,9 @@ template <> struct Codec<threedm::SensorRangeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::SensorRangeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.sensor, err)) {
-            err.enter("sensor");
-            return false;
-        }
-        if (!read_value(r, v.setting, err)) {
-            err.enter("setting");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SensorRangeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.sensor);
-        write_value(w, v.setting);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SensorRangeResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SensorRangeResponse &v);
 };
 
 template <> struct Codec<threedm::GetCalibratedSensorRanges> {
@@ -3934,326 +2513,57 @@ template <> struct Codec<threedm::GetCalibratedSensorRanges> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetCalibratedSensorRanges &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.sensor, err)) {
-            err.enter("sensor");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetCalibratedSensorRanges &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.sensor);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetCalibratedSensorRanges &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetCalibratedSensorRanges &v);
 };
 
 template <> struct Codec<threedm::CalibratedSensorRanges> {
-    static bool read(Reader &r, threedm::CalibratedSensorRanges &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.sensor, err)) {
-            err.enter("sensor");
-            return false;
-        }
-        if (!read_value(r, v.num_ranges, err)) {
-            err.enter("num_ranges");
-            return false;
-        }
-        if (!read_counted(r, v.ranges, static_cast<std::uint64_t>(v.num_ranges), err)) {
-            err.enter("ranges");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::CalibratedSensorRanges &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.sensor);
-        write_value(w, v.num_ranges);
-        write_counted(w, v.ranges, static_cast<std::uint64_t>(v.num_ranges));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::CalibratedSensorRanges &v, DecodeError &err);
+    static void write(Writer &w, const threedm::CalibratedSensorRanges &v);
 };
 
 template <> struct Codec<threedm::LowpassFilter> {
-    static bool read(Reader &r, threedm::LowpassFilter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.field_desc, err)) {
-            err.enter("field_desc");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.manual.emplace();
-            if (!read_value(r, (*v.manual), err)) {
-                err.enter("manual");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.frequency.emplace();
-            if (!read_value(r, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::LowpassFilter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.desc_set);
-        write_value(w, v.field_desc);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        if (v.manual) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.manual));
-        } else {
-            absent = true;
-        }
-        if (v.frequency) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.frequency));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::LowpassFilter &v, DecodeError &err);
+    static void write(Writer &w, const threedm::LowpassFilter &v);
 };
 
 template <> struct Codec<threedm::LowpassFilterResponse> {
-    static bool read(Reader &r, threedm::LowpassFilterResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.field_desc, err)) {
-            err.enter("field_desc");
-            return false;
-        }
-        if (!read_value(r, v.enable, err)) {
-            err.enter("enable");
-            return false;
-        }
-        if (!read_value(r, v.manual, err)) {
-            err.enter("manual");
-            return false;
-        }
-        if (!read_value(r, v.frequency, err)) {
-            err.enter("frequency");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::LowpassFilterResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.field_desc);
-        write_value(w, v.enable);
-        write_value(w, v.manual);
-        write_value(w, v.frequency);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::LowpassFilterResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::LowpassFilterResponse &v);
 };
 
 template <> struct Codec<threedm::PollImuData> {
-    static bool read(Reader &r, threedm::PollImuData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.option, err)) {
-            err.enter("option");
-            return false;
-        }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PollImuData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.option);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PollImuData &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PollImuData &v);
 };
 
 template <> struct Codec<threedm::PollGnssData> {
-    static bool read(Reader &r, threedm::PollGnssData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.option, err)) {
-            err.enter("option");
-            return false;
-        }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PollGnssData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.option);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PollGnssData &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PollGnssData &v);
 };
 
 template <> struct Codec<threedm::PollFilterData> {
-    static bool read(Reader &r, threedm::PollFilterData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.option, err)) {
-            err.enter("option");
-            return false;
-        }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PollFilterData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.option);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PollFilterData &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PollFilterData &v);
 };
 
 template <> struct Codec<threedm::PollNmeaData> {
-    static bool read(Reader &r, threedm::PollNmeaData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.suppress_ack, err)) {
-            err.enter("suppress_ack");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_counted(r, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
-            err.enter("format_entries");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PollNmeaData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.suppress_ack);
-        write_value(w, v.count);
-        write_counted(w, v.format_entries, static_cast<std::uint64_t>(v.count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PollNmeaData &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PollNmeaData &v);
 };
 
 template <> struct Codec<threedm::PollData> {
-    static bool read(Reader &r, threedm::PollData &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.suppress_ack, err)) {
-            err.enter("suppress_ack");
-            return false;
-        }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PollData &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.suppress_ack);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PollData &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PollData &v);
 };
 
 template <> struct Codec<threedm::GetImuBaseRate> {
@@ -4267,18 +2577,9 @@ template <> struct Codec<threedm::GetImuBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetImuBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetImuBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetImuBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetImuBaseRate &v);
 };
 
 template <> struct Codec<threedm::ImuBaseRate> {
@@ -4293,23 +2594,9 @@ template <> struct Codec<threedm::ImuBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::ImuBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.rate, err)) {
-            err.enter("rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ImuBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.rate);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ImuBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ImuBaseRate &v);
 };
 
 template <> struct Codec<threedm::GetGnssBaseRate> {
@@ -4323,18 +2610,9 @@ template <> struct Codec<threedm::GetGnssBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetGnssBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetGnssBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetGnssBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetGnssBaseRate &v);
 };
 
 template <> struct Codec<threedm::GnssBaseRate> {
@@ -4349,23 +2627,9 @@ template <> struct Codec<threedm::GnssBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GnssBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.rate, err)) {
-            err.enter("rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.rate);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssBaseRate &v);
 };
 
 template <> struct Codec<threedm::GetFilterBaseRate> {
@@ -4379,18 +2643,9 @@ template <> struct Codec<threedm::GetFilterBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetFilterBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetFilterBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetFilterBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetFilterBaseRate &v);
 };
 
 template <> struct Codec<threedm::FilterBaseRate> {
@@ -4405,23 +2660,9 @@ template <> struct Codec<threedm::FilterBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::FilterBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.rate, err)) {
-            err.enter("rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::FilterBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.rate);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::FilterBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::FilterBaseRate &v);
 };
 
 template <> struct Codec<threedm::GetBaseRate> {
@@ -4436,23 +2677,9 @@ template <> struct Codec<threedm::GetBaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetBaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetBaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetBaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetBaseRate &v);
 };
 
 template <> struct Codec<threedm::BaseRate> {
@@ -4469,427 +2696,69 @@ template <> struct Codec<threedm::BaseRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::BaseRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.rate, err)) {
-            err.enter("rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::BaseRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.rate);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::BaseRate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::BaseRate &v);
 };
 
 template <> struct Codec<threedm::ImuMessageFormat> {
-    static bool read(Reader &r, threedm::ImuMessageFormat &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.num_descriptors.emplace();
-            if (!read_value(r, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.descriptors.emplace();
-            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
-                              err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ImuMessageFormat &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.num_descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.num_descriptors));
-        } else {
-            absent = true;
-        }
-        if (v.descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ImuMessageFormat &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ImuMessageFormat &v);
 };
 
 template <> struct Codec<threedm::ImuMessageFormatResponse> {
-    static bool read(Reader &r, threedm::ImuMessageFormatResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::ImuMessageFormatResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::ImuMessageFormatResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::ImuMessageFormatResponse &v);
 };
 
 template <> struct Codec<threedm::GnssMessageFormat> {
-    static bool read(Reader &r, threedm::GnssMessageFormat &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.num_descriptors.emplace();
-            if (!read_value(r, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.descriptors.emplace();
-            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
-                              err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssMessageFormat &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.num_descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.num_descriptors));
-        } else {
-            absent = true;
-        }
-        if (v.descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssMessageFormat &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssMessageFormat &v);
 };
 
 template <> struct Codec<threedm::GnssMessageFormatResponse> {
-    static bool read(Reader &r, threedm::GnssMessageFormatResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssMessageFormatResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssMessageFormatResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssMessageFormatResponse &v);
 };
 
 template <> struct Codec<threedm::FilterMessageFormat> {
-    static bool read(Reader &r, threedm::FilterMessageFormat &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.num_descriptors.emplace();
-            if (!read_value(r, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.descriptors.emplace();
-            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
-                              err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::FilterMessageFormat &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.num_descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.num_descriptors));
-        } else {
-            absent = true;
-        }
-        if (v.descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::FilterMessageFormat &v, DecodeError &err);
+    static void write(Writer &w, const threedm::FilterMessageFormat &v);
 };
 
 template <> struct Codec<threedm::FilterMessageFormatResponse> {
-    static bool read(Reader &r, threedm::FilterMessageFormatResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::FilterMessageFormatResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::FilterMessageFormatResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::FilterMessageFormatResponse &v);
 };
 
 template <> struct Codec<threedm::NmeaMessageFormat> {
-    static bool read(Reader &r, threedm::NmeaMessageFormat &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.count.emplace();
-            if (!read_value(r, (*v.count), err)) {
-                err.enter("count");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.format_entries.emplace();
-            if (!read_counted(r, (*v.format_entries), static_cast<std::uint64_t>(v.count.value_or(0)), err)) {
-                err.enter("format_entries");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::NmeaMessageFormat &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.count) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.count));
-        } else {
-            absent = true;
-        }
-        if (v.format_entries) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.format_entries), static_cast<std::uint64_t>(v.count.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::NmeaMessageFormat &v, DecodeError &err);
+    static void write(Writer &w, const threedm::NmeaMessageFormat &v);
 };
 
 template <> struct Codec<threedm::NmeaMessageFormatResponse> {
-    static bool read(Reader &r, threedm::NmeaMessageFormatResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_counted(r, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
-            err.enter("format_entries");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::NmeaMessageFormatResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.count);
-        write_counted(w, v.format_entries, static_cast<std::uint64_t>(v.count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::NmeaMessageFormatResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::NmeaMessageFormatResponse &v);
 };
 
 template <> struct Codec<threedm::MessageFormat> {
-    static bool read(Reader &r, threedm::MessageFormat &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.num_descriptors.emplace();
-            if (!read_value(r, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.descriptors.emplace();
-            if (!read_counted(r, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)),
-                              err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MessageFormat &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.desc_set);
-        if (v.num_descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.num_descriptors));
-        } else {
-            absent = true;
-        }
-        if (v.descriptors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.descriptors), static_cast<std::uint64_t>(v.num_descriptors.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MessageFormat &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MessageFormat &v);
 };
 
 template <> struct Codec<threedm::MessageFormatResponse> {
-    static bool read(Reader &r, threedm::MessageFormatResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.num_descriptors, err)) {
-            err.enter("num_descriptors");
-            return false;
-        }
-        if (!read_counted(r, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-            err.enter("descriptors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::MessageFormatResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.num_descriptors);
-        write_counted(w, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::MessageFormatResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::MessageFormatResponse &v);
 };
 
 template <> struct Codec<threedm::FactoryStreaming> {
@@ -4907,110 +2776,21 @@ template <> struct Codec<threedm::FactoryStreaming> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::FactoryStreaming &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.action, err)) {
-            err.enter("action");
-            return false;
-        }
-        if (!read_value(r, v.reserved, err)) {
-            err.enter("reserved");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::FactoryStreaming &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.action);
-        write_value(w, v.reserved);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::FactoryStreaming &v, DecodeError &err);
+    static void write(Writer &w, const threedm::FactoryStreaming &v);
 };
 
 template <> struct Codec<threedm::DataStreamControlGx545> {
-    static bool read(Reader &r, threedm::DataStreamControlGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.device_selector, err)) {
-            err.enter("device_selector");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DataStreamControlGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.device_selector);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DataStreamControlGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DataStreamControlGx545 &v);
 };
 
 template <> struct Codec<threedm::DataStreamControlCv7Ins> {
-    static bool read(Reader &r, threedm::DataStreamControlCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable.emplace();
-            if (!read_value(r, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DataStreamControlCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.desc_set);
-        if (v.enable) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DataStreamControlCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DataStreamControlCv7Ins &v);
 };
 
 template <> struct Codec<threedm::DataStreamControlResponseGx545> {
@@ -5028,349 +2808,51 @@ template <> struct Codec<threedm::DataStreamControlResponseGx545> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::DataStreamControlResponseGx545 &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.device_selector, err)) {
-            err.enter("device_selector");
-            return false;
-        }
-        if (!read_value(r, v.enabled, err)) {
-            err.enter("enabled");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DataStreamControlResponseGx545 &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.device_selector);
-        write_value(w, v.enabled);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DataStreamControlResponseGx545 &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DataStreamControlResponseGx545 &v);
 };
 
 template <> struct Codec<threedm::DataStreamControlResponseCv7Ins> {
-    static bool read(Reader &r, threedm::DataStreamControlResponseCv7Ins &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.desc_set, err)) {
-            err.enter("desc_set");
-            return false;
-        }
-        if (!read_value(r, v.enabled, err)) {
-            err.enter("enabled");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DataStreamControlResponseCv7Ins &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.desc_set);
-        write_value(w, v.enabled);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DataStreamControlResponseCv7Ins &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DataStreamControlResponseCv7Ins &v);
 };
 
 template <> struct Codec<threedm::RawRtcmMessage> {
-    static bool read(Reader &r, threedm::RawRtcmMessage &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.data, err)) {
-            err.enter("data");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::RawRtcmMessage &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.data);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::RawRtcmMessage &v, DecodeError &err);
+    static void write(Writer &w, const threedm::RawRtcmMessage &v);
 };
 
 template <> struct Codec<threedm::GnssConstellationSettings> {
-    static bool read(Reader &r, threedm::GnssConstellationSettings &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.max_channels.emplace();
-            if (!read_value(r, (*v.max_channels), err)) {
-                err.enter("max_channels");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.config_count.emplace();
-            if (!read_value(r, (*v.config_count), err)) {
-                err.enter("config_count");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.settings.emplace();
-            if (!read_counted(r, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)),
-                              err)) {
-                err.enter("settings");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssConstellationSettings &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.max_channels) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.max_channels));
-        } else {
-            absent = true;
-        }
-        if (v.config_count) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.config_count));
-        } else {
-            absent = true;
-        }
-        if (v.settings) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssConstellationSettings &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssConstellationSettings &v);
 };
 
 template <> struct Codec<threedm::GnssConstellationSettingsResponse> {
-    static bool read(Reader &r, threedm::GnssConstellationSettingsResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.max_channels_available, err)) {
-            err.enter("max_channels_available");
-            return false;
-        }
-        if (!read_value(r, v.max_channels, err)) {
-            err.enter("max_channels");
-            return false;
-        }
-        if (!read_value(r, v.config_count, err)) {
-            err.enter("config_count");
-            return false;
-        }
-        if (!read_counted(r, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
-            err.enter("settings");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssConstellationSettingsResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.max_channels_available);
-        write_value(w, v.max_channels);
-        write_value(w, v.config_count);
-        write_counted(w, v.settings, static_cast<std::uint64_t>(v.config_count));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssConstellationSettingsResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssConstellationSettingsResponse &v);
 };
 
 template <> struct Codec<threedm::GnssSbasSettings> {
-    static bool read(Reader &r, threedm::GnssSbasSettings &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.enable_sbas.emplace();
-            if (!read_value(r, (*v.enable_sbas), err)) {
-                err.enter("enable_sbas");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.sbas_options.emplace();
-            if (!read_value(r, (*v.sbas_options), err)) {
-                err.enter("sbas_options");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.num_included_prns.emplace();
-            if (!read_value(r, (*v.num_included_prns), err)) {
-                err.enter("num_included_prns");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.included_prns.emplace();
-            if (!read_counted(r, (*v.included_prns),
-                              static_cast<std::uint64_t>(v.num_included_prns.value_or(0)), err)) {
-                err.enter("included_prns");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssSbasSettings &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.enable_sbas) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.enable_sbas));
-        } else {
-            absent = true;
-        }
-        if (v.sbas_options) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.sbas_options));
-        } else {
-            absent = true;
-        }
-        if (v.num_included_prns) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.num_included_prns));
-        } else {
-            absent = true;
-        }
-        if (v.included_prns) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_counted(w, (*v.included_prns), static_cast<std::uint64_t>(v.num_included_prns.value_or(0)));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssSbasSettings &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssSbasSettings &v);
 };
 
 template <> struct Codec<threedm::GnssSbasSettingsResponse> {
-    static bool read(Reader &r, threedm::GnssSbasSettingsResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.enable_sbas, err)) {
-            err.enter("enable_sbas");
-            return false;
-        }
-        if (!read_value(r, v.sbas_options, err)) {
-            err.enter("sbas_options");
-            return false;
-        }
-        if (!read_value(r, v.num_included_prns, err)) {
-            err.enter("num_included_prns");
-            return false;
-        }
-        if (!read_counted(r, v.included_prns, static_cast<std::uint64_t>(v.num_included_prns), err)) {
-            err.enter("included_prns");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssSbasSettingsResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.enable_sbas);
-        write_value(w, v.sbas_options);
-        write_value(w, v.num_included_prns);
-        write_counted(w, v.included_prns, static_cast<std::uint64_t>(v.num_included_prns));
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssSbasSettingsResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssSbasSettingsResponse &v);
 };
 
 template <> struct Codec<threedm::GnssAssistedFixControl> {
-    static bool read(Reader &r, threedm::GnssAssistedFixControl &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.option.emplace();
-            if (!read_value(r, (*v.option), err)) {
-                err.enter("option");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.flags.emplace();
-            if (!read_value(r, (*v.flags), err)) {
-                err.enter("flags");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssAssistedFixControl &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.option) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.option));
-        } else {
-            absent = true;
-        }
-        if (v.flags) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.flags));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssAssistedFixControl &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssAssistedFixControl &v);
 };
 
 template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
@@ -5388,96 +2870,15 @@ template <> struct Codec<threedm::GnssAssistedFixControlResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GnssAssistedFixControlResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.option, err)) {
-            err.enter("option");
-            return false;
-        }
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssAssistedFixControlResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.option);
-        write_value(w, v.flags);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssAssistedFixControlResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssAssistedFixControlResponse &v);
 };
 
 template <> struct Codec<threedm::GnssAssistTimeUpdate> {
-    static bool read(Reader &r, threedm::GnssAssistTimeUpdate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.tow.emplace();
-            if (!read_value(r, (*v.tow), err)) {
-                err.enter("tow");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.week_number.emplace();
-            if (!read_value(r, (*v.week_number), err)) {
-                err.enter("week_number");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.accuracy.emplace();
-            if (!read_value(r, (*v.accuracy), err)) {
-                err.enter("accuracy");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssAssistTimeUpdate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.tow) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.tow));
-        } else {
-            absent = true;
-        }
-        if (v.week_number) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.week_number));
-        } else {
-            absent = true;
-        }
-        if (v.accuracy) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.accuracy));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssAssistTimeUpdate &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssAssistTimeUpdate &v);
 };
 
 template <> struct Codec<threedm::GnssAssistTimeUpdateResponse> {
@@ -5497,69 +2898,15 @@ template <> struct Codec<threedm::GnssAssistTimeUpdateResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GnssAssistTimeUpdateResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.tow, err)) {
-            err.enter("tow");
-            return false;
-        }
-        if (!read_value(r, v.week_number, err)) {
-            err.enter("week_number");
-            return false;
-        }
-        if (!read_value(r, v.accuracy, err)) {
-            err.enter("accuracy");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GnssAssistTimeUpdateResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.tow);
-        write_value(w, v.week_number);
-        write_value(w, v.accuracy);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GnssAssistTimeUpdateResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GnssAssistTimeUpdateResponse &v);
 };
 
 template <> struct Codec<threedm::PpsSource> {
-    static bool read(Reader &r, threedm::PpsSource &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.source.emplace();
-            if (!read_value(r, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PpsSource &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.source) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.source));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PpsSource &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PpsSource &v);
 };
 
 template <> struct Codec<threedm::PpsSourceResponse> {
@@ -5574,23 +2921,9 @@ template <> struct Codec<threedm::PpsSourceResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::PpsSourceResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.source, err)) {
-            err.enter("source");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::PpsSourceResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.source);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::PpsSourceResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::PpsSourceResponse &v);
 };
 
 template <> struct Codec<threedm::GetSupportedEvents> {
@@ -5605,48 +2938,15 @@ template <> struct Codec<threedm::GetSupportedEvents> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::GetSupportedEvents &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.query, err)) {
-            err.enter("query");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::GetSupportedEvents &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.query);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::GetSupportedEvents &v, DecodeError &err);
+    static void write(Writer &w, const threedm::GetSupportedEvents &v);
 };
 
 template <> struct Codec<threedm::SupportedEvents> {
-    static bool read(Reader &r, threedm::SupportedEvents &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.query, err)) {
-            err.enter("query");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::SupportedEventsInfo>::read(r, v.info, v.query, err)) {
-            err.enter("info");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::SupportedEvents &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.query);
-        ::mipcodec::Codec<::mipcodec::types::SupportedEventsInfo>::write(w, v.info, v.query);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::SupportedEvents &v, DecodeError &err);
+    static void write(Writer &w, const threedm::SupportedEvents &v);
 };
 
 template <> struct Codec<threedm::DeviceStatus> {
@@ -5664,59 +2964,15 @@ template <> struct Codec<threedm::DeviceStatus> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, threedm::DeviceStatus &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.model_number, err)) {
-            err.enter("model_number");
-            return false;
-        }
-        if (!read_value(r, v.status_selector, err)) {
-            err.enter("status_selector");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DeviceStatus &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.model_number);
-        write_value(w, v.status_selector);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DeviceStatus &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DeviceStatus &v);
 };
 
 template <> struct Codec<threedm::DeviceStatusResponse> {
-    static bool read(Reader &r, threedm::DeviceStatusResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.model_number, err)) {
-            err.enter("model_number");
-            return false;
-        }
-        if (!read_value(r, v.status_selector, err)) {
-            err.enter("status_selector");
-            return false;
-        }
-        if (!::mipcodec::Codec<::mipcodec::types::Gx5DeviceStatus>::read(r, v.status, v.status_selector,
-                                                                         err)) {
-            err.enter("status");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const threedm::DeviceStatusResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.model_number);
-        write_value(w, v.status_selector);
-        ::mipcodec::Codec<::mipcodec::types::Gx5DeviceStatus>::write(w, v.status, v.status_selector);
-        (void)absent;
-    }
+    // Defined in src/fields/threedm.cpp (compiled into the library).
+    static bool read(Reader &r, threedm::DeviceStatusResponse &v, DecodeError &err);
+    static void write(Writer &w, const threedm::DeviceStatusResponse &v);
 };
 
 } // namespace mipcodec

@@ -9,4573 +9,567 @@
 namespace mipcodec {
 
 template <> struct Json<threedm::EventControl> {
-    static void write(JsonWriter &w, const threedm::EventControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("instance");
-        json_write_value(w, v.instance);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "instance",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventControl &v);
+    static bool read(const json::Value &in, threedm::EventControl &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventControlResponse> {
-    static void write(JsonWriter &w, const threedm::EventControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("instance");
-        json_write_value(w, v.instance);
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "instance",
-                                   "mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventControlResponse &v);
+    static bool read(const json::Value &in, threedm::EventControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetEventTriggerStatus> {
-    static void write(JsonWriter &w, const threedm::GetEventTriggerStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("requested_count");
-        json_write_value(w, v.requested_count);
-        w.key("requested_instances");
-        json_write_array(w, v.requested_instances);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetEventTriggerStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "requested_count",
-                                   "requested_instances",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("requested_count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.requested_count, err)) {
-                err.enter("requested_count");
-                return false;
-            }
-        } else {
-            return err.missing("requested_count");
-        }
-        if (const json::Value *found = in.find("requested_instances")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.requested_instances, static_cast<std::uint64_t>(v.requested_count),
-                                   err)) {
-                err.enter("requested_instances");
-                return false;
-            }
-        } else {
-            return err.missing("requested_instances");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetEventTriggerStatus &v);
+    static bool read(const json::Value &in, threedm::GetEventTriggerStatus &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventTriggerStatus> {
-    static void write(JsonWriter &w, const threedm::EventTriggerStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("count");
-        json_write_value(w, v.count);
-        w.key("triggers");
-        json_write_array(w, v.triggers);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventTriggerStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "count",
-                                   "triggers",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        if (const json::Value *found = in.find("triggers")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.triggers, static_cast<std::uint64_t>(v.count), err)) {
-                err.enter("triggers");
-                return false;
-            }
-        } else {
-            return err.missing("triggers");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventTriggerStatus &v);
+    static bool read(const json::Value &in, threedm::EventTriggerStatus &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetEventActionStatus> {
-    static void write(JsonWriter &w, const threedm::GetEventActionStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("requested_count");
-        json_write_value(w, v.requested_count);
-        w.key("requested_instances");
-        json_write_array(w, v.requested_instances);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetEventActionStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "requested_count",
-                                   "requested_instances",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("requested_count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.requested_count, err)) {
-                err.enter("requested_count");
-                return false;
-            }
-        } else {
-            return err.missing("requested_count");
-        }
-        if (const json::Value *found = in.find("requested_instances")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.requested_instances, static_cast<std::uint64_t>(v.requested_count),
-                                   err)) {
-                err.enter("requested_instances");
-                return false;
-            }
-        } else {
-            return err.missing("requested_instances");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetEventActionStatus &v);
+    static bool read(const json::Value &in, threedm::GetEventActionStatus &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventActionStatus> {
-    static void write(JsonWriter &w, const threedm::EventActionStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("count");
-        json_write_value(w, v.count);
-        w.key("actions");
-        json_write_array(w, v.actions);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventActionStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "count",
-                                   "actions",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        if (const json::Value *found = in.find("actions")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.actions, static_cast<std::uint64_t>(v.count), err)) {
-                err.enter("actions");
-                return false;
-            }
-        } else {
-            return err.missing("actions");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventActionStatus &v);
+    static bool read(const json::Value &in, threedm::EventActionStatus &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventTriggerConfig> {
-    static void write(JsonWriter &w, const threedm::EventTriggerConfig &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("instance");
-        json_write_value(w, v.instance);
-        if (v.type) {
-            w.key("type");
-            json_write_value(w, (*v.type));
-        }
-        if (v.parameters) {
-            w.key("parameters");
-            ::mipcodec::Json<::mipcodec::types::TriggerParams>::write(w, (*v.parameters));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventTriggerConfig &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "instance",
-                                   "type",
-                                   "parameters",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            v.type.emplace();
-            if (!json_read_value(x, (*v.type), err)) {
-                err.enter("type");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("parameters")) {
-            const json::Value &x = *found;
-            v.parameters.emplace();
-            if (!::mipcodec::Json<::mipcodec::types::TriggerParams>::read(
-                    x, (*v.parameters), v.type.value_or(::mipcodec::types::TriggerType{}), err)) {
-                err.enter("parameters");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventTriggerConfig &v);
+    static bool read(const json::Value &in, threedm::EventTriggerConfig &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventTriggerConfigResponse> {
-    static void write(JsonWriter &w, const threedm::EventTriggerConfigResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("instance");
-        json_write_value(w, v.instance);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("parameters");
-        ::mipcodec::Json<::mipcodec::types::TriggerParams>::write(w, v.parameters);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventTriggerConfigResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "instance",
-                                   "type",
-                                   "parameters",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("parameters")) {
-            const json::Value &x = *found;
-            if (!::mipcodec::Json<::mipcodec::types::TriggerParams>::read(x, v.parameters, v.type, err)) {
-                err.enter("parameters");
-                return false;
-            }
-        } else {
-            return err.missing("parameters");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventTriggerConfigResponse &v);
+    static bool read(const json::Value &in, threedm::EventTriggerConfigResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventActionConfig> {
-    static void write(JsonWriter &w, const threedm::EventActionConfig &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("instance");
-        json_write_value(w, v.instance);
-        if (v.trigger) {
-            w.key("trigger");
-            json_write_value(w, (*v.trigger));
-        }
-        if (v.type) {
-            w.key("type");
-            json_write_value(w, (*v.type));
-        }
-        if (v.parameters) {
-            w.key("parameters");
-            ::mipcodec::Json<::mipcodec::types::ActionParams>::write(w, (*v.parameters));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventActionConfig &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "instance",
-                                   "trigger",
-                                   "type",
-                                   "parameters",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("trigger")) {
-            const json::Value &x = *found;
-            v.trigger.emplace();
-            if (!json_read_value(x, (*v.trigger), err)) {
-                err.enter("trigger");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            v.type.emplace();
-            if (!json_read_value(x, (*v.type), err)) {
-                err.enter("type");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("parameters")) {
-            const json::Value &x = *found;
-            v.parameters.emplace();
-            if (!::mipcodec::Json<::mipcodec::types::ActionParams>::read(
-                    x, (*v.parameters), v.type.value_or(::mipcodec::types::ActionType{}), err)) {
-                err.enter("parameters");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventActionConfig &v);
+    static bool read(const json::Value &in, threedm::EventActionConfig &v, JsonError &err);
 };
 
 template <> struct Json<threedm::EventActionConfigResponse> {
-    static void write(JsonWriter &w, const threedm::EventActionConfigResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("instance");
-        json_write_value(w, v.instance);
-        w.key("trigger");
-        json_write_value(w, v.trigger);
-        w.key("type");
-        json_write_value(w, v.type);
-        w.key("parameters");
-        ::mipcodec::Json<::mipcodec::types::ActionParams>::write(w, v.parameters);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::EventActionConfigResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "instance",
-                                   "trigger",
-                                   "type",
-                                   "parameters",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("trigger")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.trigger, err)) {
-                err.enter("trigger");
-                return false;
-            }
-        } else {
-            return err.missing("trigger");
-        }
-        if (const json::Value *found = in.find("type")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.type, err)) {
-                err.enter("type");
-                return false;
-            }
-        } else {
-            return err.missing("type");
-        }
-        if (const json::Value *found = in.find("parameters")) {
-            const json::Value &x = *found;
-            if (!::mipcodec::Json<::mipcodec::types::ActionParams>::read(x, v.parameters, v.type, err)) {
-                err.enter("parameters");
-                return false;
-            }
-        } else {
-            return err.missing("parameters");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::EventActionConfigResponse &v);
+    static bool read(const json::Value &in, threedm::EventActionConfigResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DeviceStartupSettingsGx545> {
-    static void write(JsonWriter &w, const threedm::DeviceStartupSettingsGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DeviceStartupSettingsGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DeviceStartupSettingsGx545 &v);
+    static bool read(const json::Value &in, threedm::DeviceStartupSettingsGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DeviceStartupSettingsCv7Ins> {
-    static void write(JsonWriter &w, const threedm::DeviceStartupSettingsCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DeviceStartupSettingsCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DeviceStartupSettingsCv7Ins &v);
+    static bool read(const json::Value &in, threedm::DeviceStartupSettingsCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleEuler> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleEuler &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.roll) {
-            w.key("roll");
-            json_write_value(w, (*v.roll));
-        }
-        if (v.pitch) {
-            w.key("pitch");
-            json_write_value(w, (*v.pitch));
-        }
-        if (v.yaw) {
-            w.key("yaw");
-            json_write_value(w, (*v.yaw));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleEuler &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            v.roll.emplace();
-            if (!json_read_value(x, (*v.roll), err)) {
-                err.enter("roll");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            v.pitch.emplace();
-            if (!json_read_value(x, (*v.pitch), err)) {
-                err.enter("pitch");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            v.yaw.emplace();
-            if (!json_read_value(x, (*v.yaw), err)) {
-                err.enter("yaw");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleEuler &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleEuler &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleEulerResponse> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleEulerResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("roll");
-        json_write_value(w, v.roll);
-        w.key("pitch");
-        json_write_value(w, v.pitch);
-        w.key("yaw");
-        json_write_value(w, v.yaw);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleEulerResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "roll",
-                                   "pitch",
-                                   "yaw",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("roll")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.roll, err)) {
-                err.enter("roll");
-                return false;
-            }
-        } else {
-            return err.missing("roll");
-        }
-        if (const json::Value *found = in.find("pitch")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch, err)) {
-                err.enter("pitch");
-                return false;
-            }
-        } else {
-            return err.missing("pitch");
-        }
-        if (const json::Value *found = in.find("yaw")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.yaw, err)) {
-                err.enter("yaw");
-                return false;
-            }
-        } else {
-            return err.missing("yaw");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleEulerResponse &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleEulerResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleQuaternion> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleQuaternion &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.q) {
-            w.key("q");
-            json_write_array(w, (*v.q));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleQuaternion &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "q",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("q")) {
-            const json::Value &x = *found;
-            v.q.emplace();
-            if (!json_read_fixed(x, (*v.q), err)) {
-                err.enter("q");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleQuaternion &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleQuaternion &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleQuaternionResponse> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleQuaternionResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("q");
-        json_write_array(w, v.q);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleQuaternionResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "q",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("q")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.q, err)) {
-                err.enter("q");
-                return false;
-            }
-        } else {
-            return err.missing("q");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleQuaternionResponse &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleQuaternionResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleDcm> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleDcm &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.dcm) {
-            w.key("dcm");
-            json_write_array(w, (*v.dcm));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleDcm &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "dcm",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("dcm")) {
-            const json::Value &x = *found;
-            v.dcm.emplace();
-            if (!json_read_fixed(x, (*v.dcm), err)) {
-                err.enter("dcm");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleDcm &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleDcm &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorToVehicleDcmResponse> {
-    static void write(JsonWriter &w, const threedm::SensorToVehicleDcmResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("dcm");
-        json_write_array(w, v.dcm);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorToVehicleDcmResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "dcm",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("dcm")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.dcm, err)) {
-                err.enter("dcm");
-                return false;
-            }
-        } else {
-            return err.missing("dcm");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorToVehicleDcmResponse &v);
+    static bool read(const json::Value &in, threedm::SensorToVehicleDcmResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::AccelBiasGx545> {
-    static void write(JsonWriter &w, const threedm::AccelBiasGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.bias) {
-            w.key("bias");
-            json_write_array(w, (*v.bias));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::AccelBiasGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            v.bias.emplace();
-            if (!json_read_fixed(x, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::AccelBiasGx545 &v);
+    static bool read(const json::Value &in, threedm::AccelBiasGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::AccelBiasCv7Ins> {
-    static void write(JsonWriter &w, const threedm::AccelBiasCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.bias) {
-            w.key("bias");
-            json_write_array(w, (*v.bias));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::AccelBiasCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            v.bias.emplace();
-            if (!json_read_fixed(x, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::AccelBiasCv7Ins &v);
+    static bool read(const json::Value &in, threedm::AccelBiasCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::AccelBiasResponse> {
-    static void write(JsonWriter &w, const threedm::AccelBiasResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias");
-        json_write_array(w, v.bias);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::AccelBiasResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias, err)) {
-                err.enter("bias");
-                return false;
-            }
-        } else {
-            return err.missing("bias");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::AccelBiasResponse &v);
+    static bool read(const json::Value &in, threedm::AccelBiasResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GyroBiasGx545> {
-    static void write(JsonWriter &w, const threedm::GyroBiasGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.bias) {
-            w.key("bias");
-            json_write_array(w, (*v.bias));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GyroBiasGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            v.bias.emplace();
-            if (!json_read_fixed(x, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GyroBiasGx545 &v);
+    static bool read(const json::Value &in, threedm::GyroBiasGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GyroBiasCv7Ins> {
-    static void write(JsonWriter &w, const threedm::GyroBiasCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.bias) {
-            w.key("bias");
-            json_write_array(w, (*v.bias));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GyroBiasCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            v.bias.emplace();
-            if (!json_read_fixed(x, (*v.bias), err)) {
-                err.enter("bias");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GyroBiasCv7Ins &v);
+    static bool read(const json::Value &in, threedm::GyroBiasCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GyroBiasResponse> {
-    static void write(JsonWriter &w, const threedm::GyroBiasResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bias");
-        json_write_array(w, v.bias);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GyroBiasResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bias",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bias")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.bias, err)) {
-                err.enter("bias");
-                return false;
-            }
-        } else {
-            return err.missing("bias");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GyroBiasResponse &v);
+    static bool read(const json::Value &in, threedm::GyroBiasResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::CaptureGyroBias> {
-    static void write(JsonWriter &w, const threedm::CaptureGyroBias &v) {
-        (void)v;
-        w.begin_object();
-        w.key("averaging_time_ms");
-        json_write_value(w, v.averaging_time_ms);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::CaptureGyroBias &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "averaging_time_ms",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("averaging_time_ms")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.averaging_time_ms, err)) {
-                err.enter("averaging_time_ms");
-                return false;
-            }
-        } else {
-            return err.missing("averaging_time_ms");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::CaptureGyroBias &v);
+    static bool read(const json::Value &in, threedm::CaptureGyroBias &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagHardIronOffsetGx545> {
-    static void write(JsonWriter &w, const threedm::MagHardIronOffsetGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.offset) {
-            w.key("offset");
-            json_write_array(w, (*v.offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagHardIronOffsetGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            v.offset.emplace();
-            if (!json_read_fixed(x, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagHardIronOffsetGx545 &v);
+    static bool read(const json::Value &in, threedm::MagHardIronOffsetGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagHardIronOffsetCv7Ins> {
-    static void write(JsonWriter &w, const threedm::MagHardIronOffsetCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.offset) {
-            w.key("offset");
-            json_write_array(w, (*v.offset));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagHardIronOffsetCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            v.offset.emplace();
-            if (!json_read_fixed(x, (*v.offset), err)) {
-                err.enter("offset");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagHardIronOffsetCv7Ins &v);
+    static bool read(const json::Value &in, threedm::MagHardIronOffsetCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagHardIronOffsetResponse> {
-    static void write(JsonWriter &w, const threedm::MagHardIronOffsetResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("offset");
-        json_write_array(w, v.offset);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagHardIronOffsetResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "offset",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("offset")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.offset, err)) {
-                err.enter("offset");
-                return false;
-            }
-        } else {
-            return err.missing("offset");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagHardIronOffsetResponse &v);
+    static bool read(const json::Value &in, threedm::MagHardIronOffsetResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagSoftIronMatrixGx545> {
-    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.matrix) {
-            w.key("matrix");
-            json_write_array(w, (*v.matrix));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagSoftIronMatrixGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "matrix",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("matrix")) {
-            const json::Value &x = *found;
-            v.matrix.emplace();
-            if (!json_read_fixed(x, (*v.matrix), err)) {
-                err.enter("matrix");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixGx545 &v);
+    static bool read(const json::Value &in, threedm::MagSoftIronMatrixGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagSoftIronMatrixCv7Ins> {
-    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.matrix) {
-            w.key("matrix");
-            json_write_array(w, (*v.matrix));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagSoftIronMatrixCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "matrix",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("matrix")) {
-            const json::Value &x = *found;
-            v.matrix.emplace();
-            if (!json_read_fixed(x, (*v.matrix), err)) {
-                err.enter("matrix");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixCv7Ins &v);
+    static bool read(const json::Value &in, threedm::MagSoftIronMatrixCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MagSoftIronMatrixResponse> {
-    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("matrix");
-        json_write_array(w, v.matrix);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MagSoftIronMatrixResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "matrix",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("matrix")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.matrix, err)) {
-                err.enter("matrix");
-                return false;
-            }
-        } else {
-            return err.missing("matrix");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MagSoftIronMatrixResponse &v);
+    static bool read(const json::Value &in, threedm::MagSoftIronMatrixResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ConingScullingEnable> {
-    static void write(JsonWriter &w, const threedm::ConingScullingEnable &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ConingScullingEnable &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ConingScullingEnable &v);
+    static bool read(const json::Value &in, threedm::ConingScullingEnable &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ConingScullingEnableResponse> {
-    static void write(JsonWriter &w, const threedm::ConingScullingEnableResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ConingScullingEnableResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ConingScullingEnableResponse &v);
+    static bool read(const json::Value &in, threedm::ConingScullingEnableResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::UartBaudrate> {
-    static void write(JsonWriter &w, const threedm::UartBaudrate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.baud) {
-            w.key("baud");
-            json_write_value(w, (*v.baud));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::UartBaudrate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "baud",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("baud")) {
-            const json::Value &x = *found;
-            v.baud.emplace();
-            if (!json_read_value(x, (*v.baud), err)) {
-                err.enter("baud");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::UartBaudrate &v);
+    static bool read(const json::Value &in, threedm::UartBaudrate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::UartBaudrateResponse> {
-    static void write(JsonWriter &w, const threedm::UartBaudrateResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("baud");
-        json_write_value(w, v.baud);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::UartBaudrateResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "baud",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("baud")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.baud, err)) {
-                err.enter("baud");
-                return false;
-            }
-        } else {
-            return err.missing("baud");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::UartBaudrateResponse &v);
+    static bool read(const json::Value &in, threedm::UartBaudrateResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GpioConfig> {
-    static void write(JsonWriter &w, const threedm::GpioConfig &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("pin");
-        json_write_value(w, v.pin);
-        if (v.feature) {
-            w.key("feature");
-            json_write_value(w, (*v.feature));
-        }
-        if (v.behavior) {
-            w.key("behavior");
-            ::mipcodec::Json<::mipcodec::types::GpioBehavior>::write(w, (*v.behavior));
-        }
-        if (v.pin_mode) {
-            w.key("pin_mode");
-            json_write_value(w, (*v.pin_mode));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GpioConfig &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "pin",
-                                   "feature",
-                                   "behavior",
-                                   "pin_mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("feature")) {
-            const json::Value &x = *found;
-            v.feature.emplace();
-            if (!json_read_value(x, (*v.feature), err)) {
-                err.enter("feature");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            v.behavior.emplace();
-            if (!::mipcodec::Json<::mipcodec::types::GpioBehavior>::read(
-                    x, (*v.behavior), v.feature.value_or(::mipcodec::types::GpioFeature{}), err)) {
-                err.enter("behavior");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("pin_mode")) {
-            const json::Value &x = *found;
-            v.pin_mode.emplace();
-            if (!json_read_value(x, (*v.pin_mode), err)) {
-                err.enter("pin_mode");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GpioConfig &v);
+    static bool read(const json::Value &in, threedm::GpioConfig &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GpioConfigResponse> {
-    static void write(JsonWriter &w, const threedm::GpioConfigResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("pin");
-        json_write_value(w, v.pin);
-        w.key("feature");
-        json_write_value(w, v.feature);
-        w.key("behavior");
-        ::mipcodec::Json<::mipcodec::types::GpioBehavior>::write(w, v.behavior);
-        w.key("pin_mode");
-        json_write_value(w, v.pin_mode);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GpioConfigResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pin",
-                                   "feature",
-                                   "behavior",
-                                   "pin_mode",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("feature")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.feature, err)) {
-                err.enter("feature");
-                return false;
-            }
-        } else {
-            return err.missing("feature");
-        }
-        if (const json::Value *found = in.find("behavior")) {
-            const json::Value &x = *found;
-            if (!::mipcodec::Json<::mipcodec::types::GpioBehavior>::read(x, v.behavior, v.feature, err)) {
-                err.enter("behavior");
-                return false;
-            }
-        } else {
-            return err.missing("behavior");
-        }
-        if (const json::Value *found = in.find("pin_mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin_mode, err)) {
-                err.enter("pin_mode");
-                return false;
-            }
-        } else {
-            return err.missing("pin_mode");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GpioConfigResponse &v);
+    static bool read(const json::Value &in, threedm::GpioConfigResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GpioState> {
-    static void write(JsonWriter &w, const threedm::GpioState &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("pin");
-        json_write_value(w, v.pin);
-        if (v.state) {
-            w.key("state");
-            json_write_value(w, (*v.state));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GpioState &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "pin",
-                                   "state",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("state")) {
-            const json::Value &x = *found;
-            v.state.emplace();
-            if (!json_read_value(x, (*v.state), err)) {
-                err.enter("state");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GpioState &v);
+    static bool read(const json::Value &in, threedm::GpioState &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GpioStateResponse> {
-    static void write(JsonWriter &w, const threedm::GpioStateResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("pin");
-        json_write_value(w, v.pin);
-        w.key("state");
-        json_write_value(w, v.state);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GpioStateResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pin",
-                                   "state",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("state")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.state, err)) {
-                err.enter("state");
-                return false;
-            }
-        } else {
-            return err.missing("state");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GpioStateResponse &v);
+    static bool read(const json::Value &in, threedm::GpioStateResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::OdometerConfig> {
-    static void write(JsonWriter &w, const threedm::OdometerConfig &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        if (v.scaling) {
-            w.key("scaling");
-            json_write_value(w, (*v.scaling));
-        }
-        if (v.uncertainty) {
-            w.key("uncertainty");
-            json_write_value(w, (*v.uncertainty));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::OdometerConfig &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "mode",
-                                   "scaling",
-                                   "uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("scaling")) {
-            const json::Value &x = *found;
-            v.scaling.emplace();
-            if (!json_read_value(x, (*v.scaling), err)) {
-                err.enter("scaling");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("uncertainty")) {
-            const json::Value &x = *found;
-            v.uncertainty.emplace();
-            if (!json_read_value(x, (*v.uncertainty), err)) {
-                err.enter("uncertainty");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::OdometerConfig &v);
+    static bool read(const json::Value &in, threedm::OdometerConfig &v, JsonError &err);
 };
 
 template <> struct Json<threedm::OdometerConfigResponse> {
-    static void write(JsonWriter &w, const threedm::OdometerConfigResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mode");
-        json_write_value(w, v.mode);
-        w.key("scaling");
-        json_write_value(w, v.scaling);
-        w.key("uncertainty");
-        json_write_value(w, v.uncertainty);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::OdometerConfigResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mode",
-                                   "scaling",
-                                   "uncertainty",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.mode, err)) {
-                err.enter("mode");
-                return false;
-            }
-        } else {
-            return err.missing("mode");
-        }
-        if (const json::Value *found = in.find("scaling")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.scaling, err)) {
-                err.enter("scaling");
-                return false;
-            }
-        } else {
-            return err.missing("scaling");
-        }
-        if (const json::Value *found = in.find("uncertainty")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.uncertainty, err)) {
-                err.enter("uncertainty");
-                return false;
-            }
-        } else {
-            return err.missing("uncertainty");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::OdometerConfigResponse &v);
+    static bool read(const json::Value &in, threedm::OdometerConfigResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::AdvancedLowpassFilter> {
-    static void write(JsonWriter &w, const threedm::AdvancedLowpassFilter &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("target_descriptor");
-        json_write_value(w, v.target_descriptor);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        if (v.manual) {
-            w.key("manual");
-            json_write_value(w, (*v.manual));
-        }
-        if (v.frequency) {
-            w.key("frequency");
-            json_write_value(w, (*v.frequency));
-        }
-        if (v.reserved) {
-            w.key("reserved");
-            json_write_value(w, (*v.reserved));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::AdvancedLowpassFilter &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "target_descriptor",
-                                   "enable",
-                                   "manual",
-                                   "frequency",
-                                   "reserved",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("target_descriptor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.target_descriptor, err)) {
-                err.enter("target_descriptor");
-                return false;
-            }
-        } else {
-            return err.missing("target_descriptor");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("manual")) {
-            const json::Value &x = *found;
-            v.manual.emplace();
-            if (!json_read_value(x, (*v.manual), err)) {
-                err.enter("manual");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            v.frequency.emplace();
-            if (!json_read_value(x, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            v.reserved.emplace();
-            if (!json_read_value(x, (*v.reserved), err)) {
-                err.enter("reserved");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::AdvancedLowpassFilter &v);
+    static bool read(const json::Value &in, threedm::AdvancedLowpassFilter &v, JsonError &err);
 };
 
 template <> struct Json<threedm::AdvancedLowpassFilterResponse> {
-    static void write(JsonWriter &w, const threedm::AdvancedLowpassFilterResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("target_descriptor");
-        json_write_value(w, v.target_descriptor);
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("manual");
-        json_write_value(w, v.manual);
-        w.key("frequency");
-        json_write_value(w, v.frequency);
-        w.key("reserved");
-        json_write_value(w, v.reserved);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::AdvancedLowpassFilterResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "target_descriptor",
-                                   "enable",
-                                   "manual",
-                                   "frequency",
-                                   "reserved",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("target_descriptor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.target_descriptor, err)) {
-                err.enter("target_descriptor");
-                return false;
-            }
-        } else {
-            return err.missing("target_descriptor");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("manual")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.manual, err)) {
-                err.enter("manual");
-                return false;
-            }
-        } else {
-            return err.missing("manual");
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frequency, err)) {
-                err.enter("frequency");
-                return false;
-            }
-        } else {
-            return err.missing("frequency");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved, err)) {
-                err.enter("reserved");
-                return false;
-            }
-        } else {
-            return err.missing("reserved");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::AdvancedLowpassFilterResponse &v);
+    static bool read(const json::Value &in, threedm::AdvancedLowpassFilterResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ComplementaryFilter> {
-    static void write(JsonWriter &w, const threedm::ComplementaryFilter &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.pitch_roll_enable) {
-            w.key("pitch_roll_enable");
-            json_write_value(w, (*v.pitch_roll_enable));
-        }
-        if (v.heading_enable) {
-            w.key("heading_enable");
-            json_write_value(w, (*v.heading_enable));
-        }
-        if (v.pitch_roll_time_constant) {
-            w.key("pitch_roll_time_constant");
-            json_write_value(w, (*v.pitch_roll_time_constant));
-        }
-        if (v.heading_time_constant) {
-            w.key("heading_time_constant");
-            json_write_value(w, (*v.heading_time_constant));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ComplementaryFilter &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "pitch_roll_enable",
-                                   "heading_enable",
-                                   "pitch_roll_time_constant",
-                                   "heading_time_constant",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("pitch_roll_enable")) {
-            const json::Value &x = *found;
-            v.pitch_roll_enable.emplace();
-            if (!json_read_value(x, (*v.pitch_roll_enable), err)) {
-                err.enter("pitch_roll_enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("heading_enable")) {
-            const json::Value &x = *found;
-            v.heading_enable.emplace();
-            if (!json_read_value(x, (*v.heading_enable), err)) {
-                err.enter("heading_enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("pitch_roll_time_constant")) {
-            const json::Value &x = *found;
-            v.pitch_roll_time_constant.emplace();
-            if (!json_read_value(x, (*v.pitch_roll_time_constant), err)) {
-                err.enter("pitch_roll_time_constant");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("heading_time_constant")) {
-            const json::Value &x = *found;
-            v.heading_time_constant.emplace();
-            if (!json_read_value(x, (*v.heading_time_constant), err)) {
-                err.enter("heading_time_constant");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ComplementaryFilter &v);
+    static bool read(const json::Value &in, threedm::ComplementaryFilter &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ComplementaryFilterResponse> {
-    static void write(JsonWriter &w, const threedm::ComplementaryFilterResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("pitch_roll_enable");
-        json_write_value(w, v.pitch_roll_enable);
-        w.key("heading_enable");
-        json_write_value(w, v.heading_enable);
-        w.key("pitch_roll_time_constant");
-        json_write_value(w, v.pitch_roll_time_constant);
-        w.key("heading_time_constant");
-        json_write_value(w, v.heading_time_constant);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ComplementaryFilterResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pitch_roll_enable",
-                                   "heading_enable",
-                                   "pitch_roll_time_constant",
-                                   "heading_time_constant",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pitch_roll_enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch_roll_enable, err)) {
-                err.enter("pitch_roll_enable");
-                return false;
-            }
-        } else {
-            return err.missing("pitch_roll_enable");
-        }
-        if (const json::Value *found = in.find("heading_enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_enable, err)) {
-                err.enter("heading_enable");
-                return false;
-            }
-        } else {
-            return err.missing("heading_enable");
-        }
-        if (const json::Value *found = in.find("pitch_roll_time_constant")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pitch_roll_time_constant, err)) {
-                err.enter("pitch_roll_time_constant");
-                return false;
-            }
-        } else {
-            return err.missing("pitch_roll_time_constant");
-        }
-        if (const json::Value *found = in.find("heading_time_constant")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.heading_time_constant, err)) {
-                err.enter("heading_time_constant");
-                return false;
-            }
-        } else {
-            return err.missing("heading_time_constant");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ComplementaryFilterResponse &v);
+    static bool read(const json::Value &in, threedm::ComplementaryFilterResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorRange> {
-    static void write(JsonWriter &w, const threedm::SensorRange &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("sensor");
-        json_write_value(w, v.sensor);
-        if (v.setting) {
-            w.key("setting");
-            json_write_value(w, (*v.setting));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorRange &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "sensor",
-                                   "setting",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("sensor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.sensor, err)) {
-                err.enter("sensor");
-                return false;
-            }
-        } else {
-            return err.missing("sensor");
-        }
-        if (const json::Value *found = in.find("setting")) {
-            const json::Value &x = *found;
-            v.setting.emplace();
-            if (!json_read_value(x, (*v.setting), err)) {
-                err.enter("setting");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorRange &v);
+    static bool read(const json::Value &in, threedm::SensorRange &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SensorRangeResponse> {
-    static void write(JsonWriter &w, const threedm::SensorRangeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("sensor");
-        json_write_value(w, v.sensor);
-        w.key("setting");
-        json_write_value(w, v.setting);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SensorRangeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "sensor",
-                                   "setting",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("sensor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.sensor, err)) {
-                err.enter("sensor");
-                return false;
-            }
-        } else {
-            return err.missing("sensor");
-        }
-        if (const json::Value *found = in.find("setting")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.setting, err)) {
-                err.enter("setting");
-                return false;
-            }
-        } else {
-            return err.missing("setting");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SensorRangeResponse &v);
+    static bool read(const json::Value &in, threedm::SensorRangeResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetCalibratedSensorRanges> {
-    static void write(JsonWriter &w, const threedm::GetCalibratedSensorRanges &v) {
-        (void)v;
-        w.begin_object();
-        w.key("sensor");
-        json_write_value(w, v.sensor);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetCalibratedSensorRanges &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "sensor",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("sensor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.sensor, err)) {
-                err.enter("sensor");
-                return false;
-            }
-        } else {
-            return err.missing("sensor");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetCalibratedSensorRanges &v);
+    static bool read(const json::Value &in, threedm::GetCalibratedSensorRanges &v, JsonError &err);
 };
 
 template <> struct Json<threedm::CalibratedSensorRanges> {
-    static void write(JsonWriter &w, const threedm::CalibratedSensorRanges &v) {
-        (void)v;
-        w.begin_object();
-        w.key("sensor");
-        json_write_value(w, v.sensor);
-        w.key("num_ranges");
-        json_write_value(w, v.num_ranges);
-        w.key("ranges");
-        json_write_array(w, v.ranges);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::CalibratedSensorRanges &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "sensor",
-                                   "num_ranges",
-                                   "ranges",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("sensor")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.sensor, err)) {
-                err.enter("sensor");
-                return false;
-            }
-        } else {
-            return err.missing("sensor");
-        }
-        if (const json::Value *found = in.find("num_ranges")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_ranges, err)) {
-                err.enter("num_ranges");
-                return false;
-            }
-        } else {
-            return err.missing("num_ranges");
-        }
-        if (const json::Value *found = in.find("ranges")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.ranges, static_cast<std::uint64_t>(v.num_ranges), err)) {
-                err.enter("ranges");
-                return false;
-            }
-        } else {
-            return err.missing("ranges");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::CalibratedSensorRanges &v);
+    static bool read(const json::Value &in, threedm::CalibratedSensorRanges &v, JsonError &err);
 };
 
 template <> struct Json<threedm::LowpassFilter> {
-    static void write(JsonWriter &w, const threedm::LowpassFilter &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("field_desc");
-        json_write_value(w, v.field_desc);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        if (v.manual) {
-            w.key("manual");
-            json_write_value(w, (*v.manual));
-        }
-        if (v.frequency) {
-            w.key("frequency");
-            json_write_value(w, (*v.frequency));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::LowpassFilter &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "desc_set",
-                                   "field_desc",
-                                   "enable",
-                                   "manual",
-                                   "frequency",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("field_desc")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.field_desc, err)) {
-                err.enter("field_desc");
-                return false;
-            }
-        } else {
-            return err.missing("field_desc");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("manual")) {
-            const json::Value &x = *found;
-            v.manual.emplace();
-            if (!json_read_value(x, (*v.manual), err)) {
-                err.enter("manual");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            v.frequency.emplace();
-            if (!json_read_value(x, (*v.frequency), err)) {
-                err.enter("frequency");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::LowpassFilter &v);
+    static bool read(const json::Value &in, threedm::LowpassFilter &v, JsonError &err);
 };
 
 template <> struct Json<threedm::LowpassFilterResponse> {
-    static void write(JsonWriter &w, const threedm::LowpassFilterResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("field_desc");
-        json_write_value(w, v.field_desc);
-        w.key("enable");
-        json_write_value(w, v.enable);
-        w.key("manual");
-        json_write_value(w, v.manual);
-        w.key("frequency");
-        json_write_value(w, v.frequency);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::LowpassFilterResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "field_desc",
-                                   "enable",
-                                   "manual",
-                                   "frequency",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("field_desc")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.field_desc, err)) {
-                err.enter("field_desc");
-                return false;
-            }
-        } else {
-            return err.missing("field_desc");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable, err)) {
-                err.enter("enable");
-                return false;
-            }
-        } else {
-            return err.missing("enable");
-        }
-        if (const json::Value *found = in.find("manual")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.manual, err)) {
-                err.enter("manual");
-                return false;
-            }
-        } else {
-            return err.missing("manual");
-        }
-        if (const json::Value *found = in.find("frequency")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.frequency, err)) {
-                err.enter("frequency");
-                return false;
-            }
-        } else {
-            return err.missing("frequency");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::LowpassFilterResponse &v);
+    static bool read(const json::Value &in, threedm::LowpassFilterResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PollImuData> {
-    static void write(JsonWriter &w, const threedm::PollImuData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("option");
-        json_write_value(w, v.option);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PollImuData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "option",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("option")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.option, err)) {
-                err.enter("option");
-                return false;
-            }
-        } else {
-            return err.missing("option");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PollImuData &v);
+    static bool read(const json::Value &in, threedm::PollImuData &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PollGnssData> {
-    static void write(JsonWriter &w, const threedm::PollGnssData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("option");
-        json_write_value(w, v.option);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PollGnssData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "option",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("option")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.option, err)) {
-                err.enter("option");
-                return false;
-            }
-        } else {
-            return err.missing("option");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PollGnssData &v);
+    static bool read(const json::Value &in, threedm::PollGnssData &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PollFilterData> {
-    static void write(JsonWriter &w, const threedm::PollFilterData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("option");
-        json_write_value(w, v.option);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PollFilterData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "option",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("option")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.option, err)) {
-                err.enter("option");
-                return false;
-            }
-        } else {
-            return err.missing("option");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PollFilterData &v);
+    static bool read(const json::Value &in, threedm::PollFilterData &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PollNmeaData> {
-    static void write(JsonWriter &w, const threedm::PollNmeaData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("suppress_ack");
-        json_write_value(w, v.suppress_ack);
-        w.key("count");
-        json_write_value(w, v.count);
-        w.key("format_entries");
-        json_write_array(w, v.format_entries);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PollNmeaData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "suppress_ack",
-                                   "count",
-                                   "format_entries",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("suppress_ack")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.suppress_ack, err)) {
-                err.enter("suppress_ack");
-                return false;
-            }
-        } else {
-            return err.missing("suppress_ack");
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        if (const json::Value *found = in.find("format_entries")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
-                err.enter("format_entries");
-                return false;
-            }
-        } else {
-            return err.missing("format_entries");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PollNmeaData &v);
+    static bool read(const json::Value &in, threedm::PollNmeaData &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PollData> {
-    static void write(JsonWriter &w, const threedm::PollData &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("suppress_ack");
-        json_write_value(w, v.suppress_ack);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PollData &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "suppress_ack",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("suppress_ack")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.suppress_ack, err)) {
-                err.enter("suppress_ack");
-                return false;
-            }
-        } else {
-            return err.missing("suppress_ack");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PollData &v);
+    static bool read(const json::Value &in, threedm::PollData &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetImuBaseRate> {
-    static void write(JsonWriter &w, const threedm::GetImuBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetImuBaseRate &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetImuBaseRate &v);
+    static bool read(const json::Value &in, threedm::GetImuBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ImuBaseRate> {
-    static void write(JsonWriter &w, const threedm::ImuBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("rate");
-        json_write_value(w, v.rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ImuBaseRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.rate, err)) {
-                err.enter("rate");
-                return false;
-            }
-        } else {
-            return err.missing("rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ImuBaseRate &v);
+    static bool read(const json::Value &in, threedm::ImuBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetGnssBaseRate> {
-    static void write(JsonWriter &w, const threedm::GetGnssBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetGnssBaseRate &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetGnssBaseRate &v);
+    static bool read(const json::Value &in, threedm::GetGnssBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssBaseRate> {
-    static void write(JsonWriter &w, const threedm::GnssBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("rate");
-        json_write_value(w, v.rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssBaseRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.rate, err)) {
-                err.enter("rate");
-                return false;
-            }
-        } else {
-            return err.missing("rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssBaseRate &v);
+    static bool read(const json::Value &in, threedm::GnssBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetFilterBaseRate> {
-    static void write(JsonWriter &w, const threedm::GetFilterBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetFilterBaseRate &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetFilterBaseRate &v);
+    static bool read(const json::Value &in, threedm::GetFilterBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::FilterBaseRate> {
-    static void write(JsonWriter &w, const threedm::FilterBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("rate");
-        json_write_value(w, v.rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::FilterBaseRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.rate, err)) {
-                err.enter("rate");
-                return false;
-            }
-        } else {
-            return err.missing("rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::FilterBaseRate &v);
+    static bool read(const json::Value &in, threedm::FilterBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetBaseRate> {
-    static void write(JsonWriter &w, const threedm::GetBaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetBaseRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetBaseRate &v);
+    static bool read(const json::Value &in, threedm::GetBaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::BaseRate> {
-    static void write(JsonWriter &w, const threedm::BaseRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("rate");
-        json_write_value(w, v.rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::BaseRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.rate, err)) {
-                err.enter("rate");
-                return false;
-            }
-        } else {
-            return err.missing("rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::BaseRate &v);
+    static bool read(const json::Value &in, threedm::BaseRate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ImuMessageFormat> {
-    static void write(JsonWriter &w, const threedm::ImuMessageFormat &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.num_descriptors) {
-            w.key("num_descriptors");
-            json_write_value(w, (*v.num_descriptors));
-        }
-        if (v.descriptors) {
-            w.key("descriptors");
-            json_write_array(w, (*v.descriptors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ImuMessageFormat &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            v.num_descriptors.emplace();
-            if (!json_read_value(x, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            v.descriptors.emplace();
-            if (!json_read_counted(x, (*v.descriptors),
-                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ImuMessageFormat &v);
+    static bool read(const json::Value &in, threedm::ImuMessageFormat &v, JsonError &err);
 };
 
 template <> struct Json<threedm::ImuMessageFormatResponse> {
-    static void write(JsonWriter &w, const threedm::ImuMessageFormatResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::ImuMessageFormatResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::ImuMessageFormatResponse &v);
+    static bool read(const json::Value &in, threedm::ImuMessageFormatResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssMessageFormat> {
-    static void write(JsonWriter &w, const threedm::GnssMessageFormat &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.num_descriptors) {
-            w.key("num_descriptors");
-            json_write_value(w, (*v.num_descriptors));
-        }
-        if (v.descriptors) {
-            w.key("descriptors");
-            json_write_array(w, (*v.descriptors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssMessageFormat &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            v.num_descriptors.emplace();
-            if (!json_read_value(x, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            v.descriptors.emplace();
-            if (!json_read_counted(x, (*v.descriptors),
-                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssMessageFormat &v);
+    static bool read(const json::Value &in, threedm::GnssMessageFormat &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssMessageFormatResponse> {
-    static void write(JsonWriter &w, const threedm::GnssMessageFormatResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssMessageFormatResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssMessageFormatResponse &v);
+    static bool read(const json::Value &in, threedm::GnssMessageFormatResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::FilterMessageFormat> {
-    static void write(JsonWriter &w, const threedm::FilterMessageFormat &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.num_descriptors) {
-            w.key("num_descriptors");
-            json_write_value(w, (*v.num_descriptors));
-        }
-        if (v.descriptors) {
-            w.key("descriptors");
-            json_write_array(w, (*v.descriptors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::FilterMessageFormat &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            v.num_descriptors.emplace();
-            if (!json_read_value(x, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            v.descriptors.emplace();
-            if (!json_read_counted(x, (*v.descriptors),
-                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::FilterMessageFormat &v);
+    static bool read(const json::Value &in, threedm::FilterMessageFormat &v, JsonError &err);
 };
 
 template <> struct Json<threedm::FilterMessageFormatResponse> {
-    static void write(JsonWriter &w, const threedm::FilterMessageFormatResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::FilterMessageFormatResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::FilterMessageFormatResponse &v);
+    static bool read(const json::Value &in, threedm::FilterMessageFormatResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::NmeaMessageFormat> {
-    static void write(JsonWriter &w, const threedm::NmeaMessageFormat &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.count) {
-            w.key("count");
-            json_write_value(w, (*v.count));
-        }
-        if (v.format_entries) {
-            w.key("format_entries");
-            json_write_array(w, (*v.format_entries));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::NmeaMessageFormat &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "count",
-                                   "format_entries",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            v.count.emplace();
-            if (!json_read_value(x, (*v.count), err)) {
-                err.enter("count");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("format_entries")) {
-            const json::Value &x = *found;
-            v.format_entries.emplace();
-            if (!json_read_counted(x, (*v.format_entries), static_cast<std::uint64_t>(v.count.value_or(0)),
-                                   err)) {
-                err.enter("format_entries");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::NmeaMessageFormat &v);
+    static bool read(const json::Value &in, threedm::NmeaMessageFormat &v, JsonError &err);
 };
 
 template <> struct Json<threedm::NmeaMessageFormatResponse> {
-    static void write(JsonWriter &w, const threedm::NmeaMessageFormatResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("count");
-        json_write_value(w, v.count);
-        w.key("format_entries");
-        json_write_array(w, v.format_entries);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::NmeaMessageFormatResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "count",
-                                   "format_entries",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        if (const json::Value *found = in.find("format_entries")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.format_entries, static_cast<std::uint64_t>(v.count), err)) {
-                err.enter("format_entries");
-                return false;
-            }
-        } else {
-            return err.missing("format_entries");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::NmeaMessageFormatResponse &v);
+    static bool read(const json::Value &in, threedm::NmeaMessageFormatResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MessageFormat> {
-    static void write(JsonWriter &w, const threedm::MessageFormat &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        if (v.num_descriptors) {
-            w.key("num_descriptors");
-            json_write_value(w, (*v.num_descriptors));
-        }
-        if (v.descriptors) {
-            w.key("descriptors");
-            json_write_array(w, (*v.descriptors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MessageFormat &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "desc_set",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            v.num_descriptors.emplace();
-            if (!json_read_value(x, (*v.num_descriptors), err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            v.descriptors.emplace();
-            if (!json_read_counted(x, (*v.descriptors),
-                                   static_cast<std::uint64_t>(v.num_descriptors.value_or(0)), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MessageFormat &v);
+    static bool read(const json::Value &in, threedm::MessageFormat &v, JsonError &err);
 };
 
 template <> struct Json<threedm::MessageFormatResponse> {
-    static void write(JsonWriter &w, const threedm::MessageFormatResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("num_descriptors");
-        json_write_value(w, v.num_descriptors);
-        w.key("descriptors");
-        json_write_array(w, v.descriptors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::MessageFormatResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "num_descriptors",
-                                   "descriptors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("num_descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_descriptors, err)) {
-                err.enter("num_descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("num_descriptors");
-        }
-        if (const json::Value *found = in.find("descriptors")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.descriptors, static_cast<std::uint64_t>(v.num_descriptors), err)) {
-                err.enter("descriptors");
-                return false;
-            }
-        } else {
-            return err.missing("descriptors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::MessageFormatResponse &v);
+    static bool read(const json::Value &in, threedm::MessageFormatResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::FactoryStreaming> {
-    static void write(JsonWriter &w, const threedm::FactoryStreaming &v) {
-        (void)v;
-        w.begin_object();
-        w.key("action");
-        json_write_value(w, v.action);
-        w.key("reserved");
-        json_write_value(w, v.reserved);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::FactoryStreaming &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "action",
-                                   "reserved",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("action")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.action, err)) {
-                err.enter("action");
-                return false;
-            }
-        } else {
-            return err.missing("action");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.reserved, err)) {
-                err.enter("reserved");
-                return false;
-            }
-        } else {
-            return err.missing("reserved");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::FactoryStreaming &v);
+    static bool read(const json::Value &in, threedm::FactoryStreaming &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DataStreamControlGx545> {
-    static void write(JsonWriter &w, const threedm::DataStreamControlGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("device_selector");
-        json_write_value(w, v.device_selector);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DataStreamControlGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "device_selector",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("device_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.device_selector, err)) {
-                err.enter("device_selector");
-                return false;
-            }
-        } else {
-            return err.missing("device_selector");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DataStreamControlGx545 &v);
+    static bool read(const json::Value &in, threedm::DataStreamControlGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DataStreamControlCv7Ins> {
-    static void write(JsonWriter &w, const threedm::DataStreamControlCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        if (v.enable) {
-            w.key("enable");
-            json_write_value(w, (*v.enable));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DataStreamControlCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "desc_set",
-                                   "enable",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("enable")) {
-            const json::Value &x = *found;
-            v.enable.emplace();
-            if (!json_read_value(x, (*v.enable), err)) {
-                err.enter("enable");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DataStreamControlCv7Ins &v);
+    static bool read(const json::Value &in, threedm::DataStreamControlCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DataStreamControlResponseGx545> {
-    static void write(JsonWriter &w, const threedm::DataStreamControlResponseGx545 &v) {
-        (void)v;
-        w.begin_object();
-        w.key("device_selector");
-        json_write_value(w, v.device_selector);
-        w.key("enabled");
-        json_write_value(w, v.enabled);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DataStreamControlResponseGx545 &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "device_selector",
-                                   "enabled",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("device_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.device_selector, err)) {
-                err.enter("device_selector");
-                return false;
-            }
-        } else {
-            return err.missing("device_selector");
-        }
-        if (const json::Value *found = in.find("enabled")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enabled, err)) {
-                err.enter("enabled");
-                return false;
-            }
-        } else {
-            return err.missing("enabled");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DataStreamControlResponseGx545 &v);
+    static bool read(const json::Value &in, threedm::DataStreamControlResponseGx545 &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DataStreamControlResponseCv7Ins> {
-    static void write(JsonWriter &w, const threedm::DataStreamControlResponseCv7Ins &v) {
-        (void)v;
-        w.begin_object();
-        w.key("desc_set");
-        json_write_value(w, v.desc_set);
-        w.key("enabled");
-        json_write_value(w, v.enabled);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DataStreamControlResponseCv7Ins &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "desc_set",
-                                   "enabled",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("desc_set")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.desc_set, err)) {
-                err.enter("desc_set");
-                return false;
-            }
-        } else {
-            return err.missing("desc_set");
-        }
-        if (const json::Value *found = in.find("enabled")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enabled, err)) {
-                err.enter("enabled");
-                return false;
-            }
-        } else {
-            return err.missing("enabled");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DataStreamControlResponseCv7Ins &v);
+    static bool read(const json::Value &in, threedm::DataStreamControlResponseCv7Ins &v, JsonError &err);
 };
 
 template <> struct Json<threedm::RawRtcmMessage> {
-    static void write(JsonWriter &w, const threedm::RawRtcmMessage &v) {
-        (void)v;
-        w.begin_object();
-        w.key("data");
-        json_write_array(w, v.data);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::RawRtcmMessage &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "data",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("data")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.data, err)) {
-                err.enter("data");
-                return false;
-            }
-        } else {
-            return err.missing("data");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::RawRtcmMessage &v);
+    static bool read(const json::Value &in, threedm::RawRtcmMessage &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssConstellationSettings> {
-    static void write(JsonWriter &w, const threedm::GnssConstellationSettings &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.max_channels) {
-            w.key("max_channels");
-            json_write_value(w, (*v.max_channels));
-        }
-        if (v.config_count) {
-            w.key("config_count");
-            json_write_value(w, (*v.config_count));
-        }
-        if (v.settings) {
-            w.key("settings");
-            json_write_array(w, (*v.settings));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssConstellationSettings &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "max_channels",
-                                   "config_count",
-                                   "settings",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("max_channels")) {
-            const json::Value &x = *found;
-            v.max_channels.emplace();
-            if (!json_read_value(x, (*v.max_channels), err)) {
-                err.enter("max_channels");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("config_count")) {
-            const json::Value &x = *found;
-            v.config_count.emplace();
-            if (!json_read_value(x, (*v.config_count), err)) {
-                err.enter("config_count");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("settings")) {
-            const json::Value &x = *found;
-            v.settings.emplace();
-            if (!json_read_counted(x, (*v.settings), static_cast<std::uint64_t>(v.config_count.value_or(0)),
-                                   err)) {
-                err.enter("settings");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssConstellationSettings &v);
+    static bool read(const json::Value &in, threedm::GnssConstellationSettings &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssConstellationSettingsResponse> {
-    static void write(JsonWriter &w, const threedm::GnssConstellationSettingsResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("max_channels_available");
-        json_write_value(w, v.max_channels_available);
-        w.key("max_channels");
-        json_write_value(w, v.max_channels);
-        w.key("config_count");
-        json_write_value(w, v.config_count);
-        w.key("settings");
-        json_write_array(w, v.settings);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssConstellationSettingsResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "max_channels_available",
-                                   "max_channels",
-                                   "config_count",
-                                   "settings",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("max_channels_available")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_channels_available, err)) {
-                err.enter("max_channels_available");
-                return false;
-            }
-        } else {
-            return err.missing("max_channels_available");
-        }
-        if (const json::Value *found = in.find("max_channels")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.max_channels, err)) {
-                err.enter("max_channels");
-                return false;
-            }
-        } else {
-            return err.missing("max_channels");
-        }
-        if (const json::Value *found = in.find("config_count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.config_count, err)) {
-                err.enter("config_count");
-                return false;
-            }
-        } else {
-            return err.missing("config_count");
-        }
-        if (const json::Value *found = in.find("settings")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.settings, static_cast<std::uint64_t>(v.config_count), err)) {
-                err.enter("settings");
-                return false;
-            }
-        } else {
-            return err.missing("settings");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssConstellationSettingsResponse &v);
+    static bool read(const json::Value &in, threedm::GnssConstellationSettingsResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssSbasSettings> {
-    static void write(JsonWriter &w, const threedm::GnssSbasSettings &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.enable_sbas) {
-            w.key("enable_sbas");
-            json_write_value(w, (*v.enable_sbas));
-        }
-        if (v.sbas_options) {
-            w.key("sbas_options");
-            json_write_value(w, (*v.sbas_options));
-        }
-        if (v.num_included_prns) {
-            w.key("num_included_prns");
-            json_write_value(w, (*v.num_included_prns));
-        }
-        if (v.included_prns) {
-            w.key("included_prns");
-            json_write_array(w, (*v.included_prns));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssSbasSettings &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "enable_sbas",
-                                   "sbas_options",
-                                   "num_included_prns",
-                                   "included_prns",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("enable_sbas")) {
-            const json::Value &x = *found;
-            v.enable_sbas.emplace();
-            if (!json_read_value(x, (*v.enable_sbas), err)) {
-                err.enter("enable_sbas");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("sbas_options")) {
-            const json::Value &x = *found;
-            v.sbas_options.emplace();
-            if (!json_read_value(x, (*v.sbas_options), err)) {
-                err.enter("sbas_options");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("num_included_prns")) {
-            const json::Value &x = *found;
-            v.num_included_prns.emplace();
-            if (!json_read_value(x, (*v.num_included_prns), err)) {
-                err.enter("num_included_prns");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("included_prns")) {
-            const json::Value &x = *found;
-            v.included_prns.emplace();
-            if (!json_read_counted(x, (*v.included_prns),
-                                   static_cast<std::uint64_t>(v.num_included_prns.value_or(0)), err)) {
-                err.enter("included_prns");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssSbasSettings &v);
+    static bool read(const json::Value &in, threedm::GnssSbasSettings &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssSbasSettingsResponse> {
-    static void write(JsonWriter &w, const threedm::GnssSbasSettingsResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("enable_sbas");
-        json_write_value(w, v.enable_sbas);
-        w.key("sbas_options");
-        json_write_value(w, v.sbas_options);
-        w.key("num_included_prns");
-        json_write_value(w, v.num_included_prns);
-        w.key("included_prns");
-        json_write_array(w, v.included_prns);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssSbasSettingsResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "enable_sbas",
-                                   "sbas_options",
-                                   "num_included_prns",
-                                   "included_prns",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("enable_sbas")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.enable_sbas, err)) {
-                err.enter("enable_sbas");
-                return false;
-            }
-        } else {
-            return err.missing("enable_sbas");
-        }
-        if (const json::Value *found = in.find("sbas_options")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.sbas_options, err)) {
-                err.enter("sbas_options");
-                return false;
-            }
-        } else {
-            return err.missing("sbas_options");
-        }
-        if (const json::Value *found = in.find("num_included_prns")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.num_included_prns, err)) {
-                err.enter("num_included_prns");
-                return false;
-            }
-        } else {
-            return err.missing("num_included_prns");
-        }
-        if (const json::Value *found = in.find("included_prns")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.included_prns, static_cast<std::uint64_t>(v.num_included_prns),
-                                   err)) {
-                err.enter("included_prns");
-                return false;
-            }
-        } else {
-            return err.missing("included_prns");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssSbasSettingsResponse &v);
+    static bool read(const json::Value &in, threedm::GnssSbasSettingsResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssAssistedFixControl> {
-    static void write(JsonWriter &w, const threedm::GnssAssistedFixControl &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.option) {
-            w.key("option");
-            json_write_value(w, (*v.option));
-        }
-        if (v.flags) {
-            w.key("flags");
-            json_write_value(w, (*v.flags));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssAssistedFixControl &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "option",
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("option")) {
-            const json::Value &x = *found;
-            v.option.emplace();
-            if (!json_read_value(x, (*v.option), err)) {
-                err.enter("option");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            v.flags.emplace();
-            if (!json_read_value(x, (*v.flags), err)) {
-                err.enter("flags");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssAssistedFixControl &v);
+    static bool read(const json::Value &in, threedm::GnssAssistedFixControl &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssAssistedFixControlResponse> {
-    static void write(JsonWriter &w, const threedm::GnssAssistedFixControlResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("option");
-        json_write_value(w, v.option);
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssAssistedFixControlResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "option",
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("option")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.option, err)) {
-                err.enter("option");
-                return false;
-            }
-        } else {
-            return err.missing("option");
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssAssistedFixControlResponse &v);
+    static bool read(const json::Value &in, threedm::GnssAssistedFixControlResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssAssistTimeUpdate> {
-    static void write(JsonWriter &w, const threedm::GnssAssistTimeUpdate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.tow) {
-            w.key("tow");
-            json_write_value(w, (*v.tow));
-        }
-        if (v.week_number) {
-            w.key("week_number");
-            json_write_value(w, (*v.week_number));
-        }
-        if (v.accuracy) {
-            w.key("accuracy");
-            json_write_value(w, (*v.accuracy));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssAssistTimeUpdate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "tow",
-                                   "week_number",
-                                   "accuracy",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("tow")) {
-            const json::Value &x = *found;
-            v.tow.emplace();
-            if (!json_read_value(x, (*v.tow), err)) {
-                err.enter("tow");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("week_number")) {
-            const json::Value &x = *found;
-            v.week_number.emplace();
-            if (!json_read_value(x, (*v.week_number), err)) {
-                err.enter("week_number");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("accuracy")) {
-            const json::Value &x = *found;
-            v.accuracy.emplace();
-            if (!json_read_value(x, (*v.accuracy), err)) {
-                err.enter("accuracy");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssAssistTimeUpdate &v);
+    static bool read(const json::Value &in, threedm::GnssAssistTimeUpdate &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GnssAssistTimeUpdateResponse> {
-    static void write(JsonWriter &w, const threedm::GnssAssistTimeUpdateResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("tow");
-        json_write_value(w, v.tow);
-        w.key("week_number");
-        json_write_value(w, v.week_number);
-        w.key("accuracy");
-        json_write_value(w, v.accuracy);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GnssAssistTimeUpdateResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "tow",
-                                   "week_number",
-                                   "accuracy",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("tow")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.tow, err)) {
-                err.enter("tow");
-                return false;
-            }
-        } else {
-            return err.missing("tow");
-        }
-        if (const json::Value *found = in.find("week_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week_number, err)) {
-                err.enter("week_number");
-                return false;
-            }
-        } else {
-            return err.missing("week_number");
-        }
-        if (const json::Value *found = in.find("accuracy")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.accuracy, err)) {
-                err.enter("accuracy");
-                return false;
-            }
-        } else {
-            return err.missing("accuracy");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GnssAssistTimeUpdateResponse &v);
+    static bool read(const json::Value &in, threedm::GnssAssistTimeUpdateResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PpsSource> {
-    static void write(JsonWriter &w, const threedm::PpsSource &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.source) {
-            w.key("source");
-            json_write_value(w, (*v.source));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PpsSource &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            v.source.emplace();
-            if (!json_read_value(x, (*v.source), err)) {
-                err.enter("source");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PpsSource &v);
+    static bool read(const json::Value &in, threedm::PpsSource &v, JsonError &err);
 };
 
 template <> struct Json<threedm::PpsSourceResponse> {
-    static void write(JsonWriter &w, const threedm::PpsSourceResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("source");
-        json_write_value(w, v.source);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::PpsSourceResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "source",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("source")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.source, err)) {
-                err.enter("source");
-                return false;
-            }
-        } else {
-            return err.missing("source");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::PpsSourceResponse &v);
+    static bool read(const json::Value &in, threedm::PpsSourceResponse &v, JsonError &err);
 };
 
 template <> struct Json<threedm::GetSupportedEvents> {
-    static void write(JsonWriter &w, const threedm::GetSupportedEvents &v) {
-        (void)v;
-        w.begin_object();
-        w.key("query");
-        json_write_value(w, v.query);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::GetSupportedEvents &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "query",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("query")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.query, err)) {
-                err.enter("query");
-                return false;
-            }
-        } else {
-            return err.missing("query");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::GetSupportedEvents &v);
+    static bool read(const json::Value &in, threedm::GetSupportedEvents &v, JsonError &err);
 };
 
 template <> struct Json<threedm::SupportedEvents> {
-    static void write(JsonWriter &w, const threedm::SupportedEvents &v) {
-        (void)v;
-        w.begin_object();
-        w.key("query");
-        json_write_value(w, v.query);
-        w.key("info");
-        ::mipcodec::Json<::mipcodec::types::SupportedEventsInfo>::write(w, v.info);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::SupportedEvents &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "query",
-                                   "info",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("query")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.query, err)) {
-                err.enter("query");
-                return false;
-            }
-        } else {
-            return err.missing("query");
-        }
-        if (const json::Value *found = in.find("info")) {
-            const json::Value &x = *found;
-            if (!::mipcodec::Json<::mipcodec::types::SupportedEventsInfo>::read(x, v.info, v.query, err)) {
-                err.enter("info");
-                return false;
-            }
-        } else {
-            return err.missing("info");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::SupportedEvents &v);
+    static bool read(const json::Value &in, threedm::SupportedEvents &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DeviceStatus> {
-    static void write(JsonWriter &w, const threedm::DeviceStatus &v) {
-        (void)v;
-        w.begin_object();
-        w.key("model_number");
-        json_write_value(w, v.model_number);
-        w.key("status_selector");
-        json_write_value(w, v.status_selector);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DeviceStatus &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "model_number",
-                                   "status_selector",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("model_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.model_number, err)) {
-                err.enter("model_number");
-                return false;
-            }
-        } else {
-            return err.missing("model_number");
-        }
-        if (const json::Value *found = in.find("status_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_selector, err)) {
-                err.enter("status_selector");
-                return false;
-            }
-        } else {
-            return err.missing("status_selector");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DeviceStatus &v);
+    static bool read(const json::Value &in, threedm::DeviceStatus &v, JsonError &err);
 };
 
 template <> struct Json<threedm::DeviceStatusResponse> {
-    static void write(JsonWriter &w, const threedm::DeviceStatusResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("model_number");
-        json_write_value(w, v.model_number);
-        w.key("status_selector");
-        json_write_value(w, v.status_selector);
-        w.key("status");
-        ::mipcodec::Json<::mipcodec::types::Gx5DeviceStatus>::write(w, v.status);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, threedm::DeviceStatusResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "model_number",
-                                   "status_selector",
-                                   "status",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("model_number")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.model_number, err)) {
-                err.enter("model_number");
-                return false;
-            }
-        } else {
-            return err.missing("model_number");
-        }
-        if (const json::Value *found = in.find("status_selector")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.status_selector, err)) {
-                err.enter("status_selector");
-                return false;
-            }
-        } else {
-            return err.missing("status_selector");
-        }
-        if (const json::Value *found = in.find("status")) {
-            const json::Value &x = *found;
-            if (!::mipcodec::Json<::mipcodec::types::Gx5DeviceStatus>::read(x, v.status, v.status_selector,
-                                                                            err)) {
-                err.enter("status");
-                return false;
-            }
-        } else {
-            return err.missing("status");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/threedm_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const threedm::DeviceStatusResponse &v);
+    static bool read(const json::Value &in, threedm::DeviceStatusResponse &v, JsonError &err);
 };
 
 } // namespace mipcodec

@@ -270,18 +270,9 @@ template <> struct Codec<base::Ping> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::Ping &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::Ping &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::Ping &v, DecodeError &err);
+    static void write(Writer &w, const base::Ping &v);
 };
 
 template <> struct Codec<base::GetDeviceMessages> {
@@ -295,38 +286,15 @@ template <> struct Codec<base::GetDeviceMessages> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceMessages &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceMessages &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceMessages &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceMessages &v);
 };
 
 template <> struct Codec<base::DeviceMessages> {
-    static bool read(Reader &r, base::DeviceMessages &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.messages, err)) {
-            err.enter("messages");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceMessages &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.messages);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceMessages &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceMessages &v);
 };
 
 template <> struct Codec<base::DeviceReset> {
@@ -340,18 +308,9 @@ template <> struct Codec<base::DeviceReset> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceReset &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceReset &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceReset &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceReset &v);
 };
 
 template <> struct Codec<base::GetDeviceModel> {
@@ -365,18 +324,9 @@ template <> struct Codec<base::GetDeviceModel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceModel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceModel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceModel &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceModel &v);
 };
 
 template <> struct Codec<base::DeviceModel> {
@@ -391,23 +341,9 @@ template <> struct Codec<base::DeviceModel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceModel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_string(r, v.model, err)) {
-            err.enter("model");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceModel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_string(w, v.model);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceModel &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceModel &v);
 };
 
 template <> struct Codec<base::GetDeviceSn> {
@@ -421,18 +357,9 @@ template <> struct Codec<base::GetDeviceSn> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceSn &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceSn &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceSn &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceSn &v);
 };
 
 template <> struct Codec<base::DeviceSn> {
@@ -447,23 +374,9 @@ template <> struct Codec<base::DeviceSn> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceSn &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_string(r, v.serial_number, err)) {
-            err.enter("serial_number");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceSn &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_string(w, v.serial_number);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceSn &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceSn &v);
 };
 
 template <> struct Codec<base::GetDeviceFw> {
@@ -477,18 +390,9 @@ template <> struct Codec<base::GetDeviceFw> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceFw &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceFw &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceFw &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceFw &v);
 };
 
 template <> struct Codec<base::DeviceFw> {
@@ -503,23 +407,9 @@ template <> struct Codec<base::DeviceFw> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceFw &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_string(r, v.firmware, err)) {
-            err.enter("firmware");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceFw &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_string(w, v.firmware);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceFw &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceFw &v);
 };
 
 template <> struct Codec<base::GetDeviceCal> {
@@ -533,18 +423,9 @@ template <> struct Codec<base::GetDeviceCal> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::GetDeviceCal &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const base::GetDeviceCal &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::GetDeviceCal &v, DecodeError &err);
+    static void write(Writer &w, const base::GetDeviceCal &v);
 };
 
 template <> struct Codec<base::DeviceCal> {
@@ -559,23 +440,9 @@ template <> struct Codec<base::DeviceCal> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::DeviceCal &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_string(r, v.date, err)) {
-            err.enter("date");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::DeviceCal &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_string(w, v.date);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::DeviceCal &v, DecodeError &err);
+    static void write(Writer &w, const base::DeviceCal &v);
 };
 
 template <> struct Codec<base::CorrelateGpsTime> {
@@ -592,28 +459,9 @@ template <> struct Codec<base::CorrelateGpsTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, base::CorrelateGpsTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.week, err)) {
-            err.enter("week");
-            return false;
-        }
-        if (!read_value(r, v.seconds, err)) {
-            err.enter("seconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const base::CorrelateGpsTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.week);
-        write_value(w, v.seconds);
-        (void)absent;
-    }
+    // Defined in src/fields/base.cpp (compiled into the library).
+    static bool read(Reader &r, base::CorrelateGpsTime &v, DecodeError &err);
+    static void write(Writer &w, const base::CorrelateGpsTime &v);
 };
 
 } // namespace mscipcodec

@@ -9,300 +9,81 @@
 namespace mscipcodec {
 
 template <> struct Json<base::Ping> {
-    static void write(JsonWriter &w, const base::Ping &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::Ping &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::Ping &v);
+    static bool read(const json::Value &in, base::Ping &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceMessages> {
-    static void write(JsonWriter &w, const base::GetDeviceMessages &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceMessages &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceMessages &v);
+    static bool read(const json::Value &in, base::GetDeviceMessages &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceMessages> {
-    static void write(JsonWriter &w, const base::DeviceMessages &v) {
-        (void)v;
-        w.begin_object();
-        w.key("messages");
-        json_write_array(w, v.messages);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceMessages &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "messages",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("messages")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.messages, err)) {
-                err.enter("messages");
-                return false;
-            }
-        } else {
-            return err.missing("messages");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceMessages &v);
+    static bool read(const json::Value &in, base::DeviceMessages &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceReset> {
-    static void write(JsonWriter &w, const base::DeviceReset &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceReset &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceReset &v);
+    static bool read(const json::Value &in, base::DeviceReset &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceModel> {
-    static void write(JsonWriter &w, const base::GetDeviceModel &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceModel &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceModel &v);
+    static bool read(const json::Value &in, base::GetDeviceModel &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceModel> {
-    static void write(JsonWriter &w, const base::DeviceModel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("model");
-        json_write_string(w, v.model);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceModel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "model",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("model")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.model, err)) {
-                err.enter("model");
-                return false;
-            }
-        } else {
-            return err.missing("model");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceModel &v);
+    static bool read(const json::Value &in, base::DeviceModel &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceSn> {
-    static void write(JsonWriter &w, const base::GetDeviceSn &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceSn &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceSn &v);
+    static bool read(const json::Value &in, base::GetDeviceSn &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceSn> {
-    static void write(JsonWriter &w, const base::DeviceSn &v) {
-        (void)v;
-        w.begin_object();
-        w.key("serial_number");
-        json_write_string(w, v.serial_number);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceSn &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "serial_number",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("serial_number")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.serial_number, err)) {
-                err.enter("serial_number");
-                return false;
-            }
-        } else {
-            return err.missing("serial_number");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceSn &v);
+    static bool read(const json::Value &in, base::DeviceSn &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceFw> {
-    static void write(JsonWriter &w, const base::GetDeviceFw &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceFw &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceFw &v);
+    static bool read(const json::Value &in, base::GetDeviceFw &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceFw> {
-    static void write(JsonWriter &w, const base::DeviceFw &v) {
-        (void)v;
-        w.begin_object();
-        w.key("firmware");
-        json_write_string(w, v.firmware);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceFw &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "firmware",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("firmware")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.firmware, err)) {
-                err.enter("firmware");
-                return false;
-            }
-        } else {
-            return err.missing("firmware");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceFw &v);
+    static bool read(const json::Value &in, base::DeviceFw &v, JsonError &err);
 };
 
 template <> struct Json<base::GetDeviceCal> {
-    static void write(JsonWriter &w, const base::GetDeviceCal &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::GetDeviceCal &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::GetDeviceCal &v);
+    static bool read(const json::Value &in, base::GetDeviceCal &v, JsonError &err);
 };
 
 template <> struct Json<base::DeviceCal> {
-    static void write(JsonWriter &w, const base::DeviceCal &v) {
-        (void)v;
-        w.begin_object();
-        w.key("date");
-        json_write_string(w, v.date);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::DeviceCal &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "date",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("date")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.date, err)) {
-                err.enter("date");
-                return false;
-            }
-        } else {
-            return err.missing("date");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::DeviceCal &v);
+    static bool read(const json::Value &in, base::DeviceCal &v, JsonError &err);
 };
 
 template <> struct Json<base::CorrelateGpsTime> {
-    static void write(JsonWriter &w, const base::CorrelateGpsTime &v) {
-        (void)v;
-        w.begin_object();
-        w.key("week");
-        json_write_value(w, v.week);
-        w.key("seconds");
-        json_write_value(w, v.seconds);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, base::CorrelateGpsTime &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "week",
-                                   "seconds",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week, err)) {
-                err.enter("week");
-                return false;
-            }
-        } else {
-            return err.missing("week");
-        }
-        if (const json::Value *found = in.find("seconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.seconds, err)) {
-                err.enter("seconds");
-                return false;
-            }
-        } else {
-            return err.missing("seconds");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/base_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const base::CorrelateGpsTime &v);
+    static bool read(const json::Value &in, base::CorrelateGpsTime &v, JsonError &err);
 };
 
 } // namespace mscipcodec

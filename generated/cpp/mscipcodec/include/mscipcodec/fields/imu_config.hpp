@@ -468,39 +468,9 @@ struct AuxAccelRangeResponse {
 namespace mscipcodec {
 
 template <> struct Codec<imu_config::UartBaudRate> {
-    static bool read(Reader &r, imu_config::UartBaudRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.baud_rate.emplace();
-            if (!read_value(r, (*v.baud_rate), err)) {
-                err.enter("baud_rate");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::UartBaudRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.baud_rate) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.baud_rate));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::UartBaudRate &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::UartBaudRate &v);
 };
 
 template <> struct Codec<imu_config::UartBaudRateResponse> {
@@ -515,59 +485,15 @@ template <> struct Codec<imu_config::UartBaudRateResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::UartBaudRateResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.baud_rate, err)) {
-            err.enter("baud_rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::UartBaudRateResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.baud_rate);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::UartBaudRateResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::UartBaudRateResponse &v);
 };
 
 template <> struct Codec<imu_config::Filter> {
-    static bool read(Reader &r, imu_config::Filter &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.bandwidth.emplace();
-            if (!read_value(r, (*v.bandwidth), err)) {
-                err.enter("bandwidth");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::Filter &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.bandwidth) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.bandwidth));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::Filter &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::Filter &v);
 };
 
 template <> struct Codec<imu_config::FilterResponse> {
@@ -582,59 +508,15 @@ template <> struct Codec<imu_config::FilterResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::FilterResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.bandwidth, err)) {
-            err.enter("bandwidth");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::FilterResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.bandwidth);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::FilterResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::FilterResponse &v);
 };
 
 template <> struct Codec<imu_config::SampleRate> {
-    static bool read(Reader &r, imu_config::SampleRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.decimation.emplace();
-            if (!read_value(r, (*v.decimation), err)) {
-                err.enter("decimation");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SampleRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.decimation) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.decimation));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SampleRate &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SampleRate &v);
 };
 
 template <> struct Codec<imu_config::SampleRateResponse> {
@@ -649,95 +531,21 @@ template <> struct Codec<imu_config::SampleRateResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::SampleRateResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.decimation, err)) {
-            err.enter("decimation");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SampleRateResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.decimation);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SampleRateResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SampleRateResponse &v);
 };
 
 template <> struct Codec<imu_config::SelectSensors> {
-    static bool read(Reader &r, imu_config::SelectSensors &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.reserved.emplace();
-            if (!read_value(r, (*v.reserved), err)) {
-                err.enter("reserved");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.sensors.emplace();
-            if (!read_remaining(r, (*v.sensors), err)) {
-                err.enter("sensors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SelectSensors &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.reserved) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.reserved));
-        } else {
-            absent = true;
-        }
-        if (v.sensors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_remaining(w, (*v.sensors));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SelectSensors &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SelectSensors &v);
 };
 
 template <> struct Codec<imu_config::SelectSensorsResponse> {
-    static bool read(Reader &r, imu_config::SelectSensorsResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.sensors, err)) {
-            err.enter("sensors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SelectSensorsResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.sensors);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SelectSensorsResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SelectSensorsResponse &v);
 };
 
 template <> struct Codec<imu_config::GetInternalSampleRate> {
@@ -751,18 +559,9 @@ template <> struct Codec<imu_config::GetInternalSampleRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::GetInternalSampleRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const imu_config::GetInternalSampleRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::GetInternalSampleRate &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::GetInternalSampleRate &v);
 };
 
 template <> struct Codec<imu_config::InternalSampleRate> {
@@ -777,59 +576,15 @@ template <> struct Codec<imu_config::InternalSampleRate> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::InternalSampleRate &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.rate, err)) {
-            err.enter("rate");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::InternalSampleRate &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.rate);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::InternalSampleRate &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::InternalSampleRate &v);
 };
 
 template <> struct Codec<imu_config::AccelRange> {
-    static bool read(Reader &r, imu_config::AccelRange &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.range.emplace();
-            if (!read_value(r, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::AccelRange &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.range) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.range));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::AccelRange &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::AccelRange &v);
 };
 
 template <> struct Codec<imu_config::AccelRangeResponse> {
@@ -844,59 +599,15 @@ template <> struct Codec<imu_config::AccelRangeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::AccelRangeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.range, err)) {
-            err.enter("range");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::AccelRangeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.range);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::AccelRangeResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::AccelRangeResponse &v);
 };
 
 template <> struct Codec<imu_config::GyroRange> {
-    static bool read(Reader &r, imu_config::GyroRange &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.range.emplace();
-            if (!read_value(r, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::GyroRange &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.range) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.range));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::GyroRange &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::GyroRange &v);
 };
 
 template <> struct Codec<imu_config::GyroRangeResponse> {
@@ -911,23 +622,9 @@ template <> struct Codec<imu_config::GyroRangeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::GyroRangeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.range, err)) {
-            err.enter("range");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::GyroRangeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.range);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::GyroRangeResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::GyroRangeResponse &v);
 };
 
 template <> struct Codec<imu_config::ConfigAll> {
@@ -942,59 +639,15 @@ template <> struct Codec<imu_config::ConfigAll> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::ConfigAll &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::ConfigAll &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::ConfigAll &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::ConfigAll &v);
 };
 
 template <> struct Codec<imu_config::DataOnOff> {
-    static bool read(Reader &r, imu_config::DataOnOff &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.control.emplace();
-            if (!read_value(r, (*v.control), err)) {
-                err.enter("control");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::DataOnOff &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.control) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.control));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::DataOnOff &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::DataOnOff &v);
 };
 
 template <> struct Codec<imu_config::DataOnOffResponse> {
@@ -1009,59 +662,15 @@ template <> struct Codec<imu_config::DataOnOffResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::DataOnOffResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.control, err)) {
-            err.enter("control");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::DataOnOffResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.control);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::DataOnOffResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::DataOnOffResponse &v);
 };
 
 template <> struct Codec<imu_config::XtrigOnOff> {
-    static bool read(Reader &r, imu_config::XtrigOnOff &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.control.emplace();
-            if (!read_value(r, (*v.control), err)) {
-                err.enter("control");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::XtrigOnOff &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.control) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.control));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::XtrigOnOff &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::XtrigOnOff &v);
 };
 
 template <> struct Codec<imu_config::XtrigOnOffResponse> {
@@ -1076,115 +685,27 @@ template <> struct Codec<imu_config::XtrigOnOffResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::XtrigOnOffResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.control, err)) {
-            err.enter("control");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::XtrigOnOffResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.control);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::XtrigOnOffResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::XtrigOnOffResponse &v);
 };
 
 template <> struct Codec<imu_config::SelectSensorsRevB> {
-    static bool read(Reader &r, imu_config::SelectSensorsRevB &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.sensors.emplace();
-            if (!read_remaining(r, (*v.sensors), err)) {
-                err.enter("sensors");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SelectSensorsRevB &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.sensors) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_remaining(w, (*v.sensors));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SelectSensorsRevB &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SelectSensorsRevB &v);
 };
 
 template <> struct Codec<imu_config::SelectSensorsRevBResponse> {
-    static bool read(Reader &r, imu_config::SelectSensorsRevBResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_remaining(r, v.sensors, err)) {
-            err.enter("sensors");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::SelectSensorsRevBResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_remaining(w, v.sensors);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::SelectSensorsRevBResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::SelectSensorsRevBResponse &v);
 };
 
 template <> struct Codec<imu_config::AuxAccelRange> {
-    static bool read(Reader &r, imu_config::AuxAccelRange &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.range.emplace();
-            if (!read_value(r, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::AuxAccelRange &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        if (v.range) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.range));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::AuxAccelRange &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::AuxAccelRange &v);
 };
 
 template <> struct Codec<imu_config::AuxAccelRangeResponse> {
@@ -1199,23 +720,9 @@ template <> struct Codec<imu_config::AuxAccelRangeResponse> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_config::AuxAccelRangeResponse &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.range, err)) {
-            err.enter("range");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_config::AuxAccelRangeResponse &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.range);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_config.cpp (compiled into the library).
+    static bool read(Reader &r, imu_config::AuxAccelRangeResponse &v, DecodeError &err);
+    static void write(Writer &w, const imu_config::AuxAccelRangeResponse &v);
 };
 
 } // namespace mscipcodec

@@ -9,821 +9,141 @@
 namespace mscipcodec {
 
 template <> struct Json<imu_config::UartBaudRate> {
-    static void write(JsonWriter &w, const imu_config::UartBaudRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.baud_rate) {
-            w.key("baud_rate");
-            json_write_value(w, (*v.baud_rate));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::UartBaudRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "baud_rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("baud_rate")) {
-            const json::Value &x = *found;
-            v.baud_rate.emplace();
-            if (!json_read_value(x, (*v.baud_rate), err)) {
-                err.enter("baud_rate");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::UartBaudRate &v);
+    static bool read(const json::Value &in, imu_config::UartBaudRate &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::UartBaudRateResponse> {
-    static void write(JsonWriter &w, const imu_config::UartBaudRateResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("baud_rate");
-        json_write_value(w, v.baud_rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::UartBaudRateResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "baud_rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("baud_rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.baud_rate, err)) {
-                err.enter("baud_rate");
-                return false;
-            }
-        } else {
-            return err.missing("baud_rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::UartBaudRateResponse &v);
+    static bool read(const json::Value &in, imu_config::UartBaudRateResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::Filter> {
-    static void write(JsonWriter &w, const imu_config::Filter &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.bandwidth) {
-            w.key("bandwidth");
-            json_write_value(w, (*v.bandwidth));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::Filter &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "bandwidth",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("bandwidth")) {
-            const json::Value &x = *found;
-            v.bandwidth.emplace();
-            if (!json_read_value(x, (*v.bandwidth), err)) {
-                err.enter("bandwidth");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::Filter &v);
+    static bool read(const json::Value &in, imu_config::Filter &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::FilterResponse> {
-    static void write(JsonWriter &w, const imu_config::FilterResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("bandwidth");
-        json_write_value(w, v.bandwidth);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::FilterResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "bandwidth",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("bandwidth")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.bandwidth, err)) {
-                err.enter("bandwidth");
-                return false;
-            }
-        } else {
-            return err.missing("bandwidth");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::FilterResponse &v);
+    static bool read(const json::Value &in, imu_config::FilterResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SampleRate> {
-    static void write(JsonWriter &w, const imu_config::SampleRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.decimation) {
-            w.key("decimation");
-            json_write_value(w, (*v.decimation));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SampleRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "decimation",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("decimation")) {
-            const json::Value &x = *found;
-            v.decimation.emplace();
-            if (!json_read_value(x, (*v.decimation), err)) {
-                err.enter("decimation");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SampleRate &v);
+    static bool read(const json::Value &in, imu_config::SampleRate &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SampleRateResponse> {
-    static void write(JsonWriter &w, const imu_config::SampleRateResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("decimation");
-        json_write_value(w, v.decimation);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SampleRateResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "decimation",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("decimation")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.decimation, err)) {
-                err.enter("decimation");
-                return false;
-            }
-        } else {
-            return err.missing("decimation");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SampleRateResponse &v);
+    static bool read(const json::Value &in, imu_config::SampleRateResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SelectSensors> {
-    static void write(JsonWriter &w, const imu_config::SelectSensors &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.reserved) {
-            w.key("reserved");
-            json_write_value(w, (*v.reserved));
-        }
-        if (v.sensors) {
-            w.key("sensors");
-            json_write_array(w, (*v.sensors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SelectSensors &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "reserved",
-                                   "sensors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("reserved")) {
-            const json::Value &x = *found;
-            v.reserved.emplace();
-            if (!json_read_value(x, (*v.reserved), err)) {
-                err.enter("reserved");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("sensors")) {
-            const json::Value &x = *found;
-            v.sensors.emplace();
-            if (!json_read_remaining(x, (*v.sensors), err)) {
-                err.enter("sensors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SelectSensors &v);
+    static bool read(const json::Value &in, imu_config::SelectSensors &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SelectSensorsResponse> {
-    static void write(JsonWriter &w, const imu_config::SelectSensorsResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("sensors");
-        json_write_array(w, v.sensors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SelectSensorsResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "sensors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("sensors")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.sensors, err)) {
-                err.enter("sensors");
-                return false;
-            }
-        } else {
-            return err.missing("sensors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SelectSensorsResponse &v);
+    static bool read(const json::Value &in, imu_config::SelectSensorsResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::GetInternalSampleRate> {
-    static void write(JsonWriter &w, const imu_config::GetInternalSampleRate &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::GetInternalSampleRate &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::GetInternalSampleRate &v);
+    static bool read(const json::Value &in, imu_config::GetInternalSampleRate &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::InternalSampleRate> {
-    static void write(JsonWriter &w, const imu_config::InternalSampleRate &v) {
-        (void)v;
-        w.begin_object();
-        w.key("rate");
-        json_write_value(w, v.rate);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::InternalSampleRate &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "rate",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("rate")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.rate, err)) {
-                err.enter("rate");
-                return false;
-            }
-        } else {
-            return err.missing("rate");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::InternalSampleRate &v);
+    static bool read(const json::Value &in, imu_config::InternalSampleRate &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::AccelRange> {
-    static void write(JsonWriter &w, const imu_config::AccelRange &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.range) {
-            w.key("range");
-            json_write_value(w, (*v.range));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::AccelRange &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            v.range.emplace();
-            if (!json_read_value(x, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::AccelRange &v);
+    static bool read(const json::Value &in, imu_config::AccelRange &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::AccelRangeResponse> {
-    static void write(JsonWriter &w, const imu_config::AccelRangeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("range");
-        json_write_value(w, v.range);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::AccelRangeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.range, err)) {
-                err.enter("range");
-                return false;
-            }
-        } else {
-            return err.missing("range");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::AccelRangeResponse &v);
+    static bool read(const json::Value &in, imu_config::AccelRangeResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::GyroRange> {
-    static void write(JsonWriter &w, const imu_config::GyroRange &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.range) {
-            w.key("range");
-            json_write_value(w, (*v.range));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::GyroRange &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            v.range.emplace();
-            if (!json_read_value(x, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::GyroRange &v);
+    static bool read(const json::Value &in, imu_config::GyroRange &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::GyroRangeResponse> {
-    static void write(JsonWriter &w, const imu_config::GyroRangeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("range");
-        json_write_value(w, v.range);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::GyroRangeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.range, err)) {
-                err.enter("range");
-                return false;
-            }
-        } else {
-            return err.missing("range");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::GyroRangeResponse &v);
+    static bool read(const json::Value &in, imu_config::GyroRangeResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::ConfigAll> {
-    static void write(JsonWriter &w, const imu_config::ConfigAll &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::ConfigAll &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::ConfigAll &v);
+    static bool read(const json::Value &in, imu_config::ConfigAll &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::DataOnOff> {
-    static void write(JsonWriter &w, const imu_config::DataOnOff &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.control) {
-            w.key("control");
-            json_write_value(w, (*v.control));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::DataOnOff &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "control",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("control")) {
-            const json::Value &x = *found;
-            v.control.emplace();
-            if (!json_read_value(x, (*v.control), err)) {
-                err.enter("control");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::DataOnOff &v);
+    static bool read(const json::Value &in, imu_config::DataOnOff &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::DataOnOffResponse> {
-    static void write(JsonWriter &w, const imu_config::DataOnOffResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("control");
-        json_write_value(w, v.control);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::DataOnOffResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "control",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("control")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.control, err)) {
-                err.enter("control");
-                return false;
-            }
-        } else {
-            return err.missing("control");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::DataOnOffResponse &v);
+    static bool read(const json::Value &in, imu_config::DataOnOffResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::XtrigOnOff> {
-    static void write(JsonWriter &w, const imu_config::XtrigOnOff &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.control) {
-            w.key("control");
-            json_write_value(w, (*v.control));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::XtrigOnOff &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "control",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("control")) {
-            const json::Value &x = *found;
-            v.control.emplace();
-            if (!json_read_value(x, (*v.control), err)) {
-                err.enter("control");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::XtrigOnOff &v);
+    static bool read(const json::Value &in, imu_config::XtrigOnOff &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::XtrigOnOffResponse> {
-    static void write(JsonWriter &w, const imu_config::XtrigOnOffResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("control");
-        json_write_value(w, v.control);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::XtrigOnOffResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "control",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("control")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.control, err)) {
-                err.enter("control");
-                return false;
-            }
-        } else {
-            return err.missing("control");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::XtrigOnOffResponse &v);
+    static bool read(const json::Value &in, imu_config::XtrigOnOffResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SelectSensorsRevB> {
-    static void write(JsonWriter &w, const imu_config::SelectSensorsRevB &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.sensors) {
-            w.key("sensors");
-            json_write_array(w, (*v.sensors));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SelectSensorsRevB &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "sensors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("sensors")) {
-            const json::Value &x = *found;
-            v.sensors.emplace();
-            if (!json_read_remaining(x, (*v.sensors), err)) {
-                err.enter("sensors");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SelectSensorsRevB &v);
+    static bool read(const json::Value &in, imu_config::SelectSensorsRevB &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::SelectSensorsRevBResponse> {
-    static void write(JsonWriter &w, const imu_config::SelectSensorsRevBResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("sensors");
-        json_write_array(w, v.sensors);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::SelectSensorsRevBResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "sensors",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("sensors")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.sensors, err)) {
-                err.enter("sensors");
-                return false;
-            }
-        } else {
-            return err.missing("sensors");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::SelectSensorsRevBResponse &v);
+    static bool read(const json::Value &in, imu_config::SelectSensorsRevBResponse &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::AuxAccelRange> {
-    static void write(JsonWriter &w, const imu_config::AuxAccelRange &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        if (v.range) {
-            w.key("range");
-            json_write_value(w, (*v.range));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::AuxAccelRange &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            v.range.emplace();
-            if (!json_read_value(x, (*v.range), err)) {
-                err.enter("range");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::AuxAccelRange &v);
+    static bool read(const json::Value &in, imu_config::AuxAccelRange &v, JsonError &err);
 };
 
 template <> struct Json<imu_config::AuxAccelRangeResponse> {
-    static void write(JsonWriter &w, const imu_config::AuxAccelRangeResponse &v) {
-        (void)v;
-        w.begin_object();
-        w.key("range");
-        json_write_value(w, v.range);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_config::AuxAccelRangeResponse &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "range",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("range")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.range, err)) {
-                err.enter("range");
-                return false;
-            }
-        } else {
-            return err.missing("range");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_config_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_config::AuxAccelRangeResponse &v);
+    static bool read(const json::Value &in, imu_config::AuxAccelRangeResponse &v, JsonError &err);
 };
 
 } // namespace mscipcodec

@@ -202,23 +202,9 @@ template <> struct Codec<imu_data::ScaledAccel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledAccel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.accel, err)) {
-            err.enter("accel");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledAccel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.accel);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledAccel &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledAccel &v);
 };
 
 template <> struct Codec<imu_data::ScaledGyro> {
@@ -233,23 +219,9 @@ template <> struct Codec<imu_data::ScaledGyro> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledGyro &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.gyro, err)) {
-            err.enter("gyro");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledGyro &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.gyro);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledGyro &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledGyro &v);
 };
 
 template <> struct Codec<imu_data::ScaledMag> {
@@ -264,23 +236,9 @@ template <> struct Codec<imu_data::ScaledMag> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledMag &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.mag, err)) {
-            err.enter("mag");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledMag &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.mag);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledMag &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledMag &v);
 };
 
 template <> struct Codec<imu_data::DeltaTheta> {
@@ -295,23 +253,9 @@ template <> struct Codec<imu_data::DeltaTheta> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::DeltaTheta &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.delta_theta, err)) {
-            err.enter("delta_theta");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::DeltaTheta &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.delta_theta);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::DeltaTheta &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::DeltaTheta &v);
 };
 
 template <> struct Codec<imu_data::DeltaVelocity> {
@@ -326,23 +270,9 @@ template <> struct Codec<imu_data::DeltaVelocity> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::DeltaVelocity &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.delta_velocity, err)) {
-            err.enter("delta_velocity");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::DeltaVelocity &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.delta_velocity);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::DeltaVelocity &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::DeltaVelocity &v);
 };
 
 template <> struct Codec<imu_data::ScaledPressure> {
@@ -357,23 +287,9 @@ template <> struct Codec<imu_data::ScaledPressure> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledPressure &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pressure, err)) {
-            err.enter("pressure");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledPressure &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pressure);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledPressure &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledPressure &v);
 };
 
 template <> struct Codec<imu_data::ScaledTemperature> {
@@ -388,23 +304,9 @@ template <> struct Codec<imu_data::ScaledTemperature> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledTemperature &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.temperature, err)) {
-            err.enter("temperature");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledTemperature &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.temperature);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledTemperature &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledTemperature &v);
 };
 
 template <> struct Codec<imu_data::GpsCorrelatedTime> {
@@ -424,33 +326,9 @@ template <> struct Codec<imu_data::GpsCorrelatedTime> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::GpsCorrelatedTime &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.seconds, err)) {
-            err.enter("seconds");
-            return false;
-        }
-        if (!read_value(r, v.week, err)) {
-            err.enter("week");
-            return false;
-        }
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::GpsCorrelatedTime &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.seconds);
-        write_value(w, v.week);
-        write_value(w, v.flags);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::GpsCorrelatedTime &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::GpsCorrelatedTime &v);
 };
 
 template <> struct Codec<imu_data::ScaledAuxAccel> {
@@ -465,23 +343,9 @@ template <> struct Codec<imu_data::ScaledAuxAccel> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, imu_data::ScaledAuxAccel &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.accel, err)) {
-            err.enter("accel");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const imu_data::ScaledAuxAccel &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.accel);
-        (void)absent;
-    }
+    // Defined in src/fields/imu_data.cpp (compiled into the library).
+    static bool read(Reader &r, imu_data::ScaledAuxAccel &v, DecodeError &err);
+    static void write(Writer &w, const imu_data::ScaledAuxAccel &v);
 };
 
 } // namespace mscipcodec

@@ -9,297 +9,57 @@
 namespace mscipcodec {
 
 template <> struct Json<imu_data::ScaledAccel> {
-    static void write(JsonWriter &w, const imu_data::ScaledAccel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("accel");
-        json_write_array(w, v.accel);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledAccel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "accel",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("accel")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.accel, err)) {
-                err.enter("accel");
-                return false;
-            }
-        } else {
-            return err.missing("accel");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledAccel &v);
+    static bool read(const json::Value &in, imu_data::ScaledAccel &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::ScaledGyro> {
-    static void write(JsonWriter &w, const imu_data::ScaledGyro &v) {
-        (void)v;
-        w.begin_object();
-        w.key("gyro");
-        json_write_array(w, v.gyro);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledGyro &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "gyro",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("gyro")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.gyro, err)) {
-                err.enter("gyro");
-                return false;
-            }
-        } else {
-            return err.missing("gyro");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledGyro &v);
+    static bool read(const json::Value &in, imu_data::ScaledGyro &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::ScaledMag> {
-    static void write(JsonWriter &w, const imu_data::ScaledMag &v) {
-        (void)v;
-        w.begin_object();
-        w.key("mag");
-        json_write_array(w, v.mag);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledMag &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "mag",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("mag")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.mag, err)) {
-                err.enter("mag");
-                return false;
-            }
-        } else {
-            return err.missing("mag");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledMag &v);
+    static bool read(const json::Value &in, imu_data::ScaledMag &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::DeltaTheta> {
-    static void write(JsonWriter &w, const imu_data::DeltaTheta &v) {
-        (void)v;
-        w.begin_object();
-        w.key("delta_theta");
-        json_write_array(w, v.delta_theta);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::DeltaTheta &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "delta_theta",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("delta_theta")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.delta_theta, err)) {
-                err.enter("delta_theta");
-                return false;
-            }
-        } else {
-            return err.missing("delta_theta");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::DeltaTheta &v);
+    static bool read(const json::Value &in, imu_data::DeltaTheta &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::DeltaVelocity> {
-    static void write(JsonWriter &w, const imu_data::DeltaVelocity &v) {
-        (void)v;
-        w.begin_object();
-        w.key("delta_velocity");
-        json_write_array(w, v.delta_velocity);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::DeltaVelocity &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "delta_velocity",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("delta_velocity")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.delta_velocity, err)) {
-                err.enter("delta_velocity");
-                return false;
-            }
-        } else {
-            return err.missing("delta_velocity");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::DeltaVelocity &v);
+    static bool read(const json::Value &in, imu_data::DeltaVelocity &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::ScaledPressure> {
-    static void write(JsonWriter &w, const imu_data::ScaledPressure &v) {
-        (void)v;
-        w.begin_object();
-        w.key("pressure");
-        json_write_value(w, v.pressure);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledPressure &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pressure",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pressure")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pressure, err)) {
-                err.enter("pressure");
-                return false;
-            }
-        } else {
-            return err.missing("pressure");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledPressure &v);
+    static bool read(const json::Value &in, imu_data::ScaledPressure &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::ScaledTemperature> {
-    static void write(JsonWriter &w, const imu_data::ScaledTemperature &v) {
-        (void)v;
-        w.begin_object();
-        w.key("temperature");
-        json_write_value(w, v.temperature);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledTemperature &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "temperature",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("temperature")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.temperature, err)) {
-                err.enter("temperature");
-                return false;
-            }
-        } else {
-            return err.missing("temperature");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledTemperature &v);
+    static bool read(const json::Value &in, imu_data::ScaledTemperature &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::GpsCorrelatedTime> {
-    static void write(JsonWriter &w, const imu_data::GpsCorrelatedTime &v) {
-        (void)v;
-        w.begin_object();
-        w.key("seconds");
-        json_write_value(w, v.seconds);
-        w.key("week");
-        json_write_value(w, v.week);
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::GpsCorrelatedTime &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "seconds",
-                                   "week",
-                                   "flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("seconds")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.seconds, err)) {
-                err.enter("seconds");
-                return false;
-            }
-        } else {
-            return err.missing("seconds");
-        }
-        if (const json::Value *found = in.find("week")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.week, err)) {
-                err.enter("week");
-                return false;
-            }
-        } else {
-            return err.missing("week");
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::GpsCorrelatedTime &v);
+    static bool read(const json::Value &in, imu_data::GpsCorrelatedTime &v, JsonError &err);
 };
 
 template <> struct Json<imu_data::ScaledAuxAccel> {
-    static void write(JsonWriter &w, const imu_data::ScaledAuxAccel &v) {
-        (void)v;
-        w.begin_object();
-        w.key("accel");
-        json_write_array(w, v.accel);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, imu_data::ScaledAuxAccel &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "accel",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("accel")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.accel, err)) {
-                err.enter("accel");
-                return false;
-            }
-        } else {
-            return err.missing("accel");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/imu_data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const imu_data::ScaledAuxAccel &v);
+    static bool read(const json::Value &in, imu_data::ScaledAuxAccel &v, JsonError &err);
 };
 
 } // namespace mscipcodec

@@ -9,45 +9,9 @@
 namespace mscipcodec {
 
 template <> struct Json<reserved::Ack> {
-    static void write(JsonWriter &w, const reserved::Ack &v) {
-        (void)v;
-        w.begin_object();
-        w.key("command_code");
-        json_write_value(w, v.command_code);
-        w.key("error_code");
-        json_write_value(w, v.error_code);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, reserved::Ack &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "command_code",
-                                   "error_code",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("command_code")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.command_code, err)) {
-                err.enter("command_code");
-                return false;
-            }
-        } else {
-            return err.missing("command_code");
-        }
-        if (const json::Value *found = in.find("error_code")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.error_code, err)) {
-                err.enter("error_code");
-                return false;
-            }
-        } else {
-            return err.missing("error_code");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/reserved_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const reserved::Ack &v);
+    static bool read(const json::Value &in, reserved::Ack &v, JsonError &err);
 };
 
 } // namespace mscipcodec

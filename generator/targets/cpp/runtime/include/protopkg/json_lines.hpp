@@ -461,4 +461,16 @@ bool encode_json_line(const std::string &line, std::vector<std::uint8_t> &out, s
     return true;
 }
 
+// The default instances (Defer = void) of the functions above are compiled once, into the library
+// (src/json_lines.cpp): a program that calls them links them instead of compiling the dispatch
+// and the JSON codec of every layout itself.
+extern template void write_field_entry_json<void>(JsonWriter &, std::uint8_t, const FieldEntry &,
+                                                  const std::optional<Device> &);
+extern template void write_packet_json<void>(JsonWriter &, std::uint64_t, const PacketView &,
+                                             const std::optional<Device> &);
+namespace detail {
+extern template bool encode_field<void>(const json::Value &, PacketBuilder &, JsonError &);
+} // namespace detail
+extern template bool encode_json_line<void>(const std::string &, std::vector<std::uint8_t> &, std::string &);
+
 } // namespace protopkg

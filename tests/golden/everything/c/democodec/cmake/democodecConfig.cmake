@@ -8,23 +8,27 @@
 #   target_link_libraries(app PRIVATE democodec::c_json)     # C canonical JSON (links democodec::c)
 #   target_link_libraries(app PRIVATE democodec::c_posix)    # C POSIX transports of the session API
 #   target_link_libraries(app PRIVATE democodec::c_win32)    # C Win32 transports (Windows; links ws2_32)
-#   target_link_libraries(app PRIVATE democodec::cpp)        # C++17 header-only library
+#   target_link_libraries(app PRIVATE democodec::cpp)        # C++17 library (static unless built shared)
 #
 # Components: c, c_json, c_posix and c_win32 (the C package: democodec-c-targets.cmake; c_posix when
 # built with DEMOCODEC_POSIX, c_win32 with DEMOCODEC_WIN32), cpp (the C++ package: democodec-cpp-targets.cmake).
 #
-# The version file is ARCH_INDEPENDENT (one file for both packages); the C package's libraries are
-# not, so democodec-c-abi.cmake records their pointer size and a project of another one (a 32-bit
-# or firmware build finding a 64-bit host install) does not get the C targets: its c components
-# are reported missing with the reason.
+# The version file is ARCH_INDEPENDENT (one file for both packages); the packages' libraries are
+# not, so democodec-c-abi.cmake and democodec-cpp-abi.cmake record their pointer size and a project
+# of another one (a 32-bit or firmware build finding a 64-bit host install) does not get that
+# package's targets: its components are reported missing with the reason.
 set(_democodec_c_why "")
 foreach(_democodec_part c cpp)
     if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-targets.cmake")
-        if(_democodec_part STREQUAL "c" AND EXISTS "${CMAKE_CURRENT_LIST_DIR}/democodec-c-abi.cmake")
-            include("${CMAKE_CURRENT_LIST_DIR}/democodec-c-abi.cmake")
-            if(CMAKE_SIZEOF_VOID_P AND _democodec_c_sizeof_void_p
-               AND NOT CMAKE_SIZEOF_VOID_P EQUAL _democodec_c_sizeof_void_p)
-                set(_democodec_c_why "; the C package in ${CMAKE_CURRENT_LIST_DIR} was built for ${_democodec_c_sizeof_void_p}-byte pointers, this project has ${CMAKE_SIZEOF_VOID_P}")
+        if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-abi.cmake")
+            include("${CMAKE_CURRENT_LIST_DIR}/democodec-${_democodec_part}-abi.cmake")
+            set(_democodec_bits "${_democodec_${_democodec_part}_sizeof_void_p}")
+            if(CMAKE_SIZEOF_VOID_P AND _democodec_bits AND NOT CMAKE_SIZEOF_VOID_P EQUAL _democodec_bits)
+                set(_democodec_name "C")
+                if(_democodec_part STREQUAL "cpp")
+                    set(_democodec_name "C++")
+                endif()
+                string(APPEND _democodec_c_why "; the ${_democodec_name} package in ${CMAKE_CURRENT_LIST_DIR} was built for ${_democodec_bits}-byte pointers, this project has ${CMAKE_SIZEOF_VOID_P}")
                 continue()
             endif()
         endif()
@@ -32,9 +36,13 @@ foreach(_democodec_part c cpp)
     endif()
 endforeach()
 unset(_democodec_part)
+unset(_democodec_bits)
+unset(_democodec_name)
 unset(_democodec_c_sizeof_void_p)
+unset(_democodec_cpp_sizeof_void_p)
 
-if(NOT TARGET democodec::c AND NOT TARGET democodec::cpp)
+# (With components asked for and a package refused for its pointer size, the components below say why.)
+if(NOT TARGET democodec::c AND NOT TARGET democodec::cpp AND NOT (_democodec_c_why AND democodec_FIND_COMPONENTS))
     set(democodec_FOUND FALSE)
     set(democodec_NOT_FOUND_MESSAGE "neither the C nor the C++ package of democodec is installed in ${CMAKE_CURRENT_LIST_DIR}${_democodec_c_why}")
     unset(_democodec_c_why)

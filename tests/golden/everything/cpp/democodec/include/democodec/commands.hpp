@@ -4,7 +4,9 @@
 // arguments...)`, which sends the command over a Connection (transport.hpp) and waits for its result. With a
 // device selected, a command or function that device does not support is refused before sending
 // (StartOptions::check_device = false overrides). Returns Reply<R> (the typed reply field in
-// `value`) when the command answers with one, else Call.
+// `value`) when the command answers with one, else Call. The functions are defined in
+// src/commands.cpp (compiled into the library): a program instantiates Connection::run only for
+// the commands it sends itself.
 #pragma once
 
 #include <optional>
@@ -30,73 +32,30 @@ namespace commands {
 
 /// Ping
 namespace ping {
-inline Call call(Connection &connection, const StartOptions &options = {}) {
-    {
-        ::democodec::commands::Ping v{};
-        return connection.run(v, options);
-    }
-}
+Call call(Connection &connection, const StartOptions &options = {});
 } // namespace ping
 
 /// Configure
 namespace configure {
-inline Call
-write(Connection &connection, const decltype(::democodec::commands::Configure::instance) &instance,
-      const typename decltype(::democodec::commands::Configure::mode)::value_type &mode,
-      const typename decltype(::democodec::commands::Configure::params)::value_type &params,
-      const typename decltype(::democodec::commands::Configure::suppress_ack)::value_type &suppress_ack,
-      const StartOptions &options = {}) {
-    {
-        ::democodec::commands::Configure v{};
-        v.function = ::democodec::types::Function::write;
-        v.instance = instance;
-        v.mode = mode;
-        v.params = params;
-        v.suppress_ack = suppress_ack;
-        return connection.run(v, options);
-    }
-}
-inline Reply<::democodec::commands::Configuration>
+Call write(Connection &connection, const decltype(::democodec::commands::Configure::instance) &instance,
+           const typename decltype(::democodec::commands::Configure::mode)::value_type &mode,
+           const typename decltype(::democodec::commands::Configure::params)::value_type &params,
+           const typename decltype(::democodec::commands::Configure::suppress_ack)::value_type &suppress_ack,
+           const StartOptions &options = {});
+Reply<::democodec::commands::Configuration>
 read(Connection &connection, const decltype(::democodec::commands::Configure::instance) &instance,
-     const StartOptions &options = {}) {
-    {
-        ::democodec::commands::Configure v{};
-        v.function = ::democodec::types::Function::read;
-        v.instance = instance;
-        return reply_of<::democodec::commands::Configuration>(connection.run(v, options));
-    }
-}
-inline Call save(Connection &connection, const decltype(::democodec::commands::Configure::instance) &instance,
-                 const StartOptions &options = {}) {
-    {
-        ::democodec::commands::Configure v{};
-        v.function = ::democodec::types::Function::save;
-        v.instance = instance;
-        return connection.run(v, options);
-    }
-}
+     const StartOptions &options = {});
+Call save(Connection &connection, const decltype(::democodec::commands::Configure::instance) &instance,
+          const StartOptions &options = {});
 } // namespace configure
 
 /// Per-device command
 namespace per_device {
-inline Call call_dev_a(Connection &connection, const decltype(::democodec::commands::PerDeviceDevA::a) &a,
-                       const StartOptions &options = {}) {
-    {
-        ::democodec::commands::PerDeviceDevA v{};
-        v.a = a;
-        return connection.run(v, options);
-    }
-}
-inline Call call_dev_b(Connection &connection, const decltype(::democodec::commands::PerDeviceDevB::b) &b,
-                       const decltype(::democodec::commands::PerDeviceDevB::extra) &extra = {},
-                       const StartOptions &options = {}) {
-    {
-        ::democodec::commands::PerDeviceDevB v{};
-        v.b = b;
-        v.extra = extra;
-        return connection.run(v, options);
-    }
-}
+Call call_dev_a(Connection &connection, const decltype(::democodec::commands::PerDeviceDevA::a) &a,
+                const StartOptions &options = {});
+Call call_dev_b(Connection &connection, const decltype(::democodec::commands::PerDeviceDevB::b) &b,
+                const decltype(::democodec::commands::PerDeviceDevB::extra) &extra = {},
+                const StartOptions &options = {});
 } // namespace per_device
 } // namespace commands
 

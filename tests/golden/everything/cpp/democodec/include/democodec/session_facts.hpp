@@ -27,31 +27,10 @@ inline constexpr bool kHasAckRule = true;
 inline constexpr std::uint8_t kAckDescriptor = 0x80;
 inline constexpr std::int64_t kAckOk = 0;
 
-namespace detail {
-struct AckVisitor {
-    bool ok = false;
-    std::uint8_t echo = 0;
-    std::int64_t code = 0;
-    void field(const ::democodec::reserved::Ack &v) {
-        ok = true;
-        echo = static_cast<std::uint8_t>(v.echo);
-        code = static_cast<std::int64_t>(v.code);
-    }
-    template <class T> void field(const T &) {}
-    void raw(const DecodeError &) {}
-};
-} // namespace detail
-
 /// Decodes field data of descriptor kAckDescriptor in set `set`: true (with its echo and code)
-/// when it is the ack field, false for a raw field or another layout.
-inline bool decode_ack(std::uint8_t set, const std::uint8_t *data, std::size_t size,
-                       const std::optional<Device> &device, std::uint8_t &echo, std::int64_t &code) {
-    detail::AckVisitor v;
-    decode_field(set, kAckDescriptor, data, size, device, v);
-    echo = v.echo;
-    code = v.code;
-    return v.ok;
-}
+/// when it is the ack field, false for a raw field or another layout (src/session_facts.cpp).
+bool decode_ack(std::uint8_t set, const std::uint8_t *data, std::size_t size,
+                const std::optional<Device> &device, std::uint8_t &echo, std::int64_t &code);
 
 /// The name of a function selector value, or nullptr.
 inline const char *function_name(std::int64_t value) {

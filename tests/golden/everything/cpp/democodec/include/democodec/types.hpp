@@ -5,7 +5,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <variant>
 
@@ -72,35 +71,10 @@ enum class Function : std::uint8_t {
 };
 
 /// Spec name of a value ("write"), or nullptr when the value has no name.
-inline const char *to_string(Function v) {
-    if (v == Function::write) {
-        return "write";
-    }
-    if (v == Function::read) {
-        return "read";
-    }
-    if (v == Function::save) {
-        return "save";
-    }
-    return nullptr;
-}
+const char *to_string(Function v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Function &out) {
-    if (std::strcmp(name, "write") == 0) {
-        out = Function::write;
-        return true;
-    }
-    if (std::strcmp(name, "read") == 0) {
-        out = Function::read;
-        return true;
-    }
-    if (std::strcmp(name, "save") == 0) {
-        out = Function::save;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Function &out);
 
 /// Mode. Unknown values are kept (an enum class holds any std::uint8_t).
 enum class Mode : std::uint8_t {
@@ -112,49 +86,10 @@ enum class Mode : std::uint8_t {
 };
 
 /// Spec name of a value ("none"), or nullptr when the value has no name.
-inline const char *to_string(Mode v) {
-    if (v == Mode::none) {
-        return "none";
-    }
-    if (v == Mode::gpio) {
-        return "gpio";
-    }
-    if (v == Mode::threshold) {
-        return "threshold";
-    }
-    if (v == Mode::fast) {
-        return "fast";
-    }
-    if (v == Mode::quiet) {
-        return "quiet";
-    }
-    return nullptr;
-}
+const char *to_string(Mode v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Mode &out) {
-    if (std::strcmp(name, "none") == 0) {
-        out = Mode::none;
-        return true;
-    }
-    if (std::strcmp(name, "gpio") == 0) {
-        out = Mode::gpio;
-        return true;
-    }
-    if (std::strcmp(name, "threshold") == 0) {
-        out = Mode::threshold;
-        return true;
-    }
-    if (std::strcmp(name, "fast") == 0) {
-        out = Mode::fast;
-        return true;
-    }
-    if (std::strcmp(name, "quiet") == 0) {
-        out = Mode::quiet;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Mode &out);
 
 /// Signed. Unknown values are kept (an enum class holds any std::int16_t).
 enum class Signed : std::int16_t {
@@ -163,28 +98,10 @@ enum class Signed : std::int16_t {
 };
 
 /// Spec name of a value ("minus_one"), or nullptr when the value has no name.
-inline const char *to_string(Signed v) {
-    if (v == Signed::minus_one) {
-        return "minus_one";
-    }
-    if (v == Signed::plus_one) {
-        return "plus_one";
-    }
-    return nullptr;
-}
+const char *to_string(Signed v);
 
 /// Value of a spec name; false when the name is unknown.
-inline bool from_string(const char *name, Signed &out) {
-    if (std::strcmp(name, "minus_one") == 0) {
-        out = Signed::minus_one;
-        return true;
-    }
-    if (std::strcmp(name, "plus_one") == 0) {
-        out = Signed::plus_one;
-        return true;
-    }
-    return false;
-}
+bool from_string(const char *name, Signed &out);
 
 /// GpioParams
 struct GpioParams {
@@ -256,28 +173,9 @@ template <> struct Codec<::democodec::types::Flags> {
 template <> struct Codec<::democodec::types::GpioParams> {
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = 2;
-    static bool read(Reader &r, ::democodec::types::GpioParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.pin, err)) {
-            err.enter("pin");
-            return false;
-        }
-        if (!read_value(r, v.polarity, err)) {
-            err.enter("polarity");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::democodec::types::GpioParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.pin);
-        write_value(w, v.polarity);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::democodec::types::GpioParams &v, DecodeError &err);
+    static void write(Writer &w, const ::democodec::types::GpioParams &v);
 };
 
 template <> struct Codec<::democodec::types::ThresholdParams> {
@@ -298,85 +196,19 @@ template <> struct Codec<::democodec::types::ThresholdParams> {
     }
 
     static_assert(kFixedSize && kSize == kPlainSize, "a plain struct's size is the sum of its parameters'");
-    static bool read(Reader &r, ::democodec::types::ThresholdParams &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.low, err)) {
-            err.enter("low");
-            return false;
-        }
-        if (!read_value(r, v.high, err)) {
-            err.enter("high");
-            return false;
-        }
-        if (!read_fixed(r, v.axes, err)) {
-            err.enter("axes");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const ::democodec::types::ThresholdParams &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.low);
-        write_value(w, v.high);
-        write_fixed(w, v.axes);
-        (void)absent;
-    }
+    // Defined in src/types.cpp (compiled into the library).
+    static bool read(Reader &r, ::democodec::types::ThresholdParams &v, DecodeError &err);
+    static void write(Writer &w, const ::democodec::types::ThresholdParams &v);
 };
 
 template <> struct Codec<::democodec::types::TriggerParams> {
     static constexpr bool kFixedSize = false;
     static constexpr std::size_t kSize = 0;
+    // Defined in src/types.cpp (compiled into the library).
     static bool read(Reader &r, ::democodec::types::TriggerParams &v, ::democodec::types::Mode selector,
-                     DecodeError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Codec<::democodec::types::GpioParams>::read(r, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            v.value.emplace<2>();
-            return Codec<::democodec::types::ThresholdParams>::read(r, std::get<2>(v.value), err);
-        }
-        (void)r;
-        err = no_union_member_error(raw);
-        return false;
-    }
+                     DecodeError &err);
     static void write(Writer &w, const ::democodec::types::TriggerParams &v,
-                      ::democodec::types::Mode selector) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (v.value.index() != 0) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            if (v.value.index() != 1) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::democodec::types::GpioParams>::write(w, std::get<1>(v.value));
-            return;
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            if (v.value.index() != 2) {
-                w.fail(EncodeError::union_mismatch);
-                return;
-            }
-            Codec<::democodec::types::ThresholdParams>::write(w, std::get<2>(v.value));
-            return;
-        }
-        w.fail(EncodeError::union_mismatch);
-    }
+                      ::democodec::types::Mode selector);
 };
 
 } // namespace democodec

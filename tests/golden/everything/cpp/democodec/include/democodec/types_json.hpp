@@ -2,7 +2,6 @@
 // JSON of the named types of protocol 'demo' (bitfields, structs, unions; enums are generic).
 #pragma once
 
-#include <string>
 #include <variant>
 
 #include "democodec/json_codec.hpp"
@@ -25,135 +24,23 @@ template <> struct Json<::democodec::types::Flags> {
 };
 
 template <> struct Json<::democodec::types::GpioParams> {
-    static void write(JsonWriter &w, const ::democodec::types::GpioParams &v) {
-        w.begin_object();
-        w.key("pin");
-        json_write_value(w, v.pin);
-        w.key("polarity");
-        json_write_value(w, v.polarity);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::democodec::types::GpioParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "pin",
-                                   "polarity",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("pin")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.pin, err)) {
-                err.enter("pin");
-                return false;
-            }
-        } else {
-            return err.missing("pin");
-        }
-        if (const json::Value *found = in.find("polarity")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.polarity, err)) {
-                err.enter("polarity");
-                return false;
-            }
-        } else {
-            return err.missing("polarity");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::democodec::types::GpioParams &v);
+    static bool read(const json::Value &in, ::democodec::types::GpioParams &v, JsonError &err);
 };
 
 template <> struct Json<::democodec::types::ThresholdParams> {
-    static void write(JsonWriter &w, const ::democodec::types::ThresholdParams &v) {
-        w.begin_object();
-        w.key("low");
-        json_write_value(w, v.low);
-        w.key("high");
-        json_write_value(w, v.high);
-        w.key("axes");
-        json_write_array(w, v.axes);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, ::democodec::types::ThresholdParams &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "low",
-                                   "high",
-                                   "axes",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("low")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.low, err)) {
-                err.enter("low");
-                return false;
-            }
-        } else {
-            return err.missing("low");
-        }
-        if (const json::Value *found = in.find("high")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.high, err)) {
-                err.enter("high");
-                return false;
-            }
-        } else {
-            return err.missing("high");
-        }
-        if (const json::Value *found = in.find("axes")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.axes, err)) {
-                err.enter("axes");
-                return false;
-            }
-        } else {
-            return err.missing("axes");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/types_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const ::democodec::types::ThresholdParams &v);
+    static bool read(const json::Value &in, ::democodec::types::ThresholdParams &v, JsonError &err);
 };
 
 template <> struct Json<::democodec::types::TriggerParams> {
-    /// The selected member's object, or null for a member without data.
-    static void write(JsonWriter &w, const ::democodec::types::TriggerParams &v) {
-        switch (v.value.index()) {
-        case 1:
-            Json<::democodec::types::GpioParams>::write(w, std::get<1>(v.value));
-            return;
-        case 2:
-            Json<::democodec::types::ThresholdParams>::write(w, std::get<2>(v.value));
-            return;
-        default:
-            w.null();
-            return;
-        }
-    }
+    /// The selected member's object, or null for a member without data. Defined in
+    /// src/types_json.cpp (compiled into the library), as read.
+    static void write(JsonWriter &w, const ::democodec::types::TriggerParams &v);
     static bool read(const json::Value &x, ::democodec::types::TriggerParams &v,
-                     ::democodec::types::Mode selector, JsonError &err) {
-        const auto raw = static_cast<std::uint8_t>(selector);
-        if (raw == static_cast<std::uint8_t>(0)) { // none
-            if (x.type != json::Value::Type::null) {
-                return err.fail("expected null (member 'none' has no data)");
-            }
-            v.value.emplace<0>();
-            return true;
-        }
-        if (raw == static_cast<std::uint8_t>(1)) { // gpio
-            v.value.emplace<1>();
-            return Json<::democodec::types::GpioParams>::read(x, std::get<1>(v.value), err);
-        }
-        if (raw == static_cast<std::uint8_t>(2)) { // threshold
-            v.value.emplace<2>();
-            return Json<::democodec::types::ThresholdParams>::read(x, std::get<2>(v.value), err);
-        }
-        (void)x;
-        return err.fail("no member for selector value " + std::to_string(raw));
-    }
+                     ::democodec::types::Mode selector, JsonError &err);
 };
 
 } // namespace democodec

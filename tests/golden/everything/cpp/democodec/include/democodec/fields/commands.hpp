@@ -142,158 +142,21 @@ template <> struct Codec<commands::Ping> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, commands::Ping &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        return true;
-    }
-    static void write(Writer &w, const commands::Ping &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        (void)absent;
-    }
+    // Defined in src/fields/commands.cpp (compiled into the library).
+    static bool read(Reader &r, commands::Ping &v, DecodeError &err);
+    static void write(Writer &w, const commands::Ping &v);
 };
 
 template <> struct Codec<commands::Configure> {
-    static bool read(Reader &r, commands::Configure &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.function, err)) {
-            err.enter("function");
-            return false;
-        }
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.mode.emplace();
-            if (!read_value(r, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.params.emplace();
-            if (!::democodec::Codec<::democodec::types::TriggerParams>::read(
-                    r, (*v.params), v.mode.value_or(::democodec::types::Mode{}), err)) {
-                err.enter("params");
-                return false;
-            }
-        }
-        if (r.left() > 0) {
-            v.suppress_ack.emplace();
-            if (!read_value(r, (*v.suppress_ack), err)) {
-                err.enter("suppress_ack");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const commands::Configure &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.function);
-        write_value(w, v.instance);
-        if (v.mode) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.mode));
-        } else {
-            absent = true;
-        }
-        if (v.params) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            ::democodec::Codec<::democodec::types::TriggerParams>::write(
-                w, (*v.params), v.mode.value_or(::democodec::types::Mode{}));
-        } else {
-            absent = true;
-        }
-        if (v.suppress_ack) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.suppress_ack));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/commands.cpp (compiled into the library).
+    static bool read(Reader &r, commands::Configure &v, DecodeError &err);
+    static void write(Writer &w, const commands::Configure &v);
 };
 
 template <> struct Codec<commands::Configuration> {
-    static bool read(Reader &r, commands::Configuration &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.instance, err)) {
-            err.enter("instance");
-            return false;
-        }
-        if (!read_value(r, v.count, err)) {
-            err.enter("count");
-            return false;
-        }
-        if (!read_counted(r, v.rates, static_cast<std::uint64_t>(v.count), err)) {
-            err.enter("rates");
-            return false;
-        }
-        if (!read_string(r, v.name, err)) {
-            err.enter("name");
-            return false;
-        }
-        if (!read_string(r, v.label, err)) {
-            err.enter("label");
-            return false;
-        }
-        if (!read_fixed(r, v.matrix, err)) {
-            err.enter("matrix");
-            return false;
-        }
-        if (!read_fixed(r, v.fixed, err)) {
-            err.enter("fixed");
-            return false;
-        }
-        if (!read_value(r, v.flags, err)) {
-            err.enter("flags");
-            return false;
-        }
-        if (!read_value(r, v.signed_, err)) {
-            err.enter("signed");
-            return false;
-        }
-        if (!read_remaining(r, v.tail, err)) {
-            err.enter("tail");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const commands::Configuration &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.instance);
-        write_value(w, v.count);
-        write_counted(w, v.rates, static_cast<std::uint64_t>(v.count));
-        write_string(w, v.name);
-        write_string(w, v.label);
-        write_fixed(w, v.matrix);
-        write_fixed(w, v.fixed);
-        write_value(w, v.flags);
-        write_value(w, v.signed_);
-        write_remaining(w, v.tail);
-        (void)absent;
-    }
+    // Defined in src/fields/commands.cpp (compiled into the library).
+    static bool read(Reader &r, commands::Configuration &v, DecodeError &err);
+    static void write(Writer &w, const commands::Configuration &v);
 };
 
 template <> struct Codec<commands::PerDeviceDevA> {
@@ -308,59 +171,15 @@ template <> struct Codec<commands::PerDeviceDevA> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, commands::PerDeviceDevA &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.a, err)) {
-            err.enter("a");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const commands::PerDeviceDevA &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.a);
-        (void)absent;
-    }
+    // Defined in src/fields/commands.cpp (compiled into the library).
+    static bool read(Reader &r, commands::PerDeviceDevA &v, DecodeError &err);
+    static void write(Writer &w, const commands::PerDeviceDevA &v);
 };
 
 template <> struct Codec<commands::PerDeviceDevB> {
-    static bool read(Reader &r, commands::PerDeviceDevB &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.b, err)) {
-            err.enter("b");
-            return false;
-        }
-        if (r.left() > 0) {
-            v.extra.emplace();
-            if (!read_value(r, (*v.extra), err)) {
-                err.enter("extra");
-                return false;
-            }
-        }
-        return true;
-    }
-    static void write(Writer &w, const commands::PerDeviceDevB &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.b);
-        if (v.extra) {
-            if (absent) {
-                w.fail(EncodeError::optional_gap);
-                return;
-            }
-            write_value(w, (*v.extra));
-        } else {
-            absent = true;
-        }
-        (void)absent;
-    }
+    // Defined in src/fields/commands.cpp (compiled into the library).
+    static bool read(Reader &r, commands::PerDeviceDevB &v, DecodeError &err);
+    static void write(Writer &w, const commands::PerDeviceDevB &v);
 };
 
 } // namespace democodec

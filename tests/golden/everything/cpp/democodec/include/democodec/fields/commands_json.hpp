@@ -9,311 +9,33 @@
 namespace democodec {
 
 template <> struct Json<commands::Ping> {
-    static void write(JsonWriter &w, const commands::Ping &v) {
-        (void)v;
-        w.begin_object();
-        w.end_object();
-    }
-    static bool read(const json::Value &in, commands::Ping &v, JsonError &err) {
-        if (!json_check_object(in, {}, err)) {
-            return false;
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/commands_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const commands::Ping &v);
+    static bool read(const json::Value &in, commands::Ping &v, JsonError &err);
 };
 
 template <> struct Json<commands::Configure> {
-    static void write(JsonWriter &w, const commands::Configure &v) {
-        (void)v;
-        w.begin_object();
-        w.key("function");
-        json_write_value(w, v.function);
-        w.key("instance");
-        json_write_value(w, v.instance);
-        if (v.mode) {
-            w.key("mode");
-            json_write_value(w, (*v.mode));
-        }
-        if (v.params) {
-            w.key("params");
-            ::democodec::Json<::democodec::types::TriggerParams>::write(w, (*v.params));
-        }
-        if (v.suppress_ack) {
-            w.key("suppress_ack");
-            json_write_value(w, (*v.suppress_ack));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, commands::Configure &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "function",
-                                   "instance",
-                                   "mode",
-                                   "params",
-                                   "suppress_ack",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("function")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.function, err)) {
-                err.enter("function");
-                return false;
-            }
-        } else {
-            return err.missing("function");
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("mode")) {
-            const json::Value &x = *found;
-            v.mode.emplace();
-            if (!json_read_value(x, (*v.mode), err)) {
-                err.enter("mode");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("params")) {
-            const json::Value &x = *found;
-            v.params.emplace();
-            if (!::democodec::Json<::democodec::types::TriggerParams>::read(
-                    x, (*v.params), v.mode.value_or(::democodec::types::Mode{}), err)) {
-                err.enter("params");
-                return false;
-            }
-        }
-        if (const json::Value *found = in.find("suppress_ack")) {
-            const json::Value &x = *found;
-            v.suppress_ack.emplace();
-            if (!json_read_value(x, (*v.suppress_ack), err)) {
-                err.enter("suppress_ack");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/commands_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const commands::Configure &v);
+    static bool read(const json::Value &in, commands::Configure &v, JsonError &err);
 };
 
 template <> struct Json<commands::Configuration> {
-    static void write(JsonWriter &w, const commands::Configuration &v) {
-        (void)v;
-        w.begin_object();
-        w.key("instance");
-        json_write_value(w, v.instance);
-        w.key("count");
-        json_write_value(w, v.count);
-        w.key("rates");
-        json_write_array(w, v.rates);
-        w.key("name");
-        json_write_string(w, v.name);
-        w.key("label");
-        json_write_string(w, v.label);
-        w.key("matrix");
-        json_write_array(w, v.matrix);
-        w.key("fixed");
-        json_write_array(w, v.fixed);
-        w.key("flags");
-        json_write_value(w, v.flags);
-        w.key("signed");
-        json_write_value(w, v.signed_);
-        w.key("tail");
-        json_write_array(w, v.tail);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, commands::Configuration &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "instance",
-                                   "count",
-                                   "rates",
-                                   "name",
-                                   "label",
-                                   "matrix",
-                                   "fixed",
-                                   "flags",
-                                   "signed",
-                                   "tail",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("instance")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.instance, err)) {
-                err.enter("instance");
-                return false;
-            }
-        } else {
-            return err.missing("instance");
-        }
-        if (const json::Value *found = in.find("count")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.count, err)) {
-                err.enter("count");
-                return false;
-            }
-        } else {
-            return err.missing("count");
-        }
-        if (const json::Value *found = in.find("rates")) {
-            const json::Value &x = *found;
-            if (!json_read_counted(x, v.rates, static_cast<std::uint64_t>(v.count), err)) {
-                err.enter("rates");
-                return false;
-            }
-        } else {
-            return err.missing("rates");
-        }
-        if (const json::Value *found = in.find("name")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.name, err)) {
-                err.enter("name");
-                return false;
-            }
-        } else {
-            return err.missing("name");
-        }
-        if (const json::Value *found = in.find("label")) {
-            const json::Value &x = *found;
-            if (!json_read_string(x, v.label, err)) {
-                err.enter("label");
-                return false;
-            }
-        } else {
-            return err.missing("label");
-        }
-        if (const json::Value *found = in.find("matrix")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.matrix, err)) {
-                err.enter("matrix");
-                return false;
-            }
-        } else {
-            return err.missing("matrix");
-        }
-        if (const json::Value *found = in.find("fixed")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.fixed, err)) {
-                err.enter("fixed");
-                return false;
-            }
-        } else {
-            return err.missing("fixed");
-        }
-        if (const json::Value *found = in.find("flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.flags, err)) {
-                err.enter("flags");
-                return false;
-            }
-        } else {
-            return err.missing("flags");
-        }
-        if (const json::Value *found = in.find("signed")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.signed_, err)) {
-                err.enter("signed");
-                return false;
-            }
-        } else {
-            return err.missing("signed");
-        }
-        if (const json::Value *found = in.find("tail")) {
-            const json::Value &x = *found;
-            if (!json_read_remaining(x, v.tail, err)) {
-                err.enter("tail");
-                return false;
-            }
-        } else {
-            return err.missing("tail");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/commands_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const commands::Configuration &v);
+    static bool read(const json::Value &in, commands::Configuration &v, JsonError &err);
 };
 
 template <> struct Json<commands::PerDeviceDevA> {
-    static void write(JsonWriter &w, const commands::PerDeviceDevA &v) {
-        (void)v;
-        w.begin_object();
-        w.key("a");
-        json_write_value(w, v.a);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, commands::PerDeviceDevA &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "a",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("a")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.a, err)) {
-                err.enter("a");
-                return false;
-            }
-        } else {
-            return err.missing("a");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/commands_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const commands::PerDeviceDevA &v);
+    static bool read(const json::Value &in, commands::PerDeviceDevA &v, JsonError &err);
 };
 
 template <> struct Json<commands::PerDeviceDevB> {
-    static void write(JsonWriter &w, const commands::PerDeviceDevB &v) {
-        (void)v;
-        w.begin_object();
-        w.key("b");
-        json_write_value(w, v.b);
-        if (v.extra) {
-            w.key("extra");
-            json_write_value(w, (*v.extra));
-        }
-        w.end_object();
-    }
-    static bool read(const json::Value &in, commands::PerDeviceDevB &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "b",
-                                   "extra",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("b")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.b, err)) {
-                err.enter("b");
-                return false;
-            }
-        } else {
-            return err.missing("b");
-        }
-        if (const json::Value *found = in.find("extra")) {
-            const json::Value &x = *found;
-            v.extra.emplace();
-            if (!json_read_value(x, (*v.extra), err)) {
-                err.enter("extra");
-                return false;
-            }
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/commands_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const commands::PerDeviceDevB &v);
+    static bool read(const json::Value &in, commands::PerDeviceDevB &v, JsonError &err);
 };
 
 } // namespace democodec

@@ -59,38 +59,9 @@ template <> struct Codec<data::Sample> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, data::Sample &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_fixed(r, v.quat, err)) {
-            err.enter("quat");
-            return false;
-        }
-        if (!read_value(r, v.big, err)) {
-            err.enter("big");
-            return false;
-        }
-        if (!read_value(r, v.small, err)) {
-            err.enter("small");
-            return false;
-        }
-        if (!read_value(r, v.f, err)) {
-            err.enter("f");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const data::Sample &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_fixed(w, v.quat);
-        write_value(w, v.big);
-        write_value(w, v.small);
-        write_value(w, v.f);
-        (void)absent;
-    }
+    // Defined in src/fields/data.cpp (compiled into the library).
+    static bool read(Reader &r, data::Sample &v, DecodeError &err);
+    static void write(Writer &w, const data::Sample &v);
 };
 
 } // namespace democodec

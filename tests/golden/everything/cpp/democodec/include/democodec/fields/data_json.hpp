@@ -9,69 +9,9 @@
 namespace democodec {
 
 template <> struct Json<data::Sample> {
-    static void write(JsonWriter &w, const data::Sample &v) {
-        (void)v;
-        w.begin_object();
-        w.key("quat");
-        json_write_array(w, v.quat);
-        w.key("big");
-        json_write_value(w, v.big);
-        w.key("small");
-        json_write_value(w, v.small);
-        w.key("f");
-        json_write_value(w, v.f);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, data::Sample &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "quat",
-                                   "big",
-                                   "small",
-                                   "f",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("quat")) {
-            const json::Value &x = *found;
-            if (!json_read_fixed(x, v.quat, err)) {
-                err.enter("quat");
-                return false;
-            }
-        } else {
-            return err.missing("quat");
-        }
-        if (const json::Value *found = in.find("big")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.big, err)) {
-                err.enter("big");
-                return false;
-            }
-        } else {
-            return err.missing("big");
-        }
-        if (const json::Value *found = in.find("small")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.small, err)) {
-                err.enter("small");
-                return false;
-            }
-        } else {
-            return err.missing("small");
-        }
-        if (const json::Value *found = in.find("f")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.f, err)) {
-                err.enter("f");
-                return false;
-            }
-        } else {
-            return err.missing("f");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/data_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const data::Sample &v);
+    static bool read(const json::Value &in, data::Sample &v, JsonError &err);
 };
 
 } // namespace democodec

@@ -56,33 +56,9 @@ template <> struct Codec<receiver_1::LlhPosition> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, receiver_1::LlhPosition &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.latitude, err)) {
-            err.enter("latitude");
-            return false;
-        }
-        if (!read_value(r, v.longitude, err)) {
-            err.enter("longitude");
-            return false;
-        }
-        if (!read_value(r, v.valid_flags, err)) {
-            err.enter("valid_flags");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const receiver_1::LlhPosition &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.latitude);
-        write_value(w, v.longitude);
-        write_value(w, v.valid_flags);
-        (void)absent;
-    }
+    // Defined in src/fields/receiver_1.cpp (compiled into the library).
+    static bool read(Reader &r, receiver_1::LlhPosition &v, DecodeError &err);
+    static void write(Writer &w, const receiver_1::LlhPosition &v);
 };
 
 } // namespace democodec

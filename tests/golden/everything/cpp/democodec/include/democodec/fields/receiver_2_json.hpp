@@ -9,57 +9,9 @@
 namespace democodec {
 
 template <> struct Json<receiver_2::LlhPosition> {
-    static void write(JsonWriter &w, const receiver_2::LlhPosition &v) {
-        (void)v;
-        w.begin_object();
-        w.key("latitude");
-        json_write_value(w, v.latitude);
-        w.key("longitude");
-        json_write_value(w, v.longitude);
-        w.key("valid_flags");
-        json_write_value(w, v.valid_flags);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, receiver_2::LlhPosition &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "latitude",
-                                   "longitude",
-                                   "valid_flags",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("latitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.latitude, err)) {
-                err.enter("latitude");
-                return false;
-            }
-        } else {
-            return err.missing("latitude");
-        }
-        if (const json::Value *found = in.find("longitude")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.longitude, err)) {
-                err.enter("longitude");
-                return false;
-            }
-        } else {
-            return err.missing("longitude");
-        }
-        if (const json::Value *found = in.find("valid_flags")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.valid_flags, err)) {
-                err.enter("valid_flags");
-                return false;
-            }
-        } else {
-            return err.missing("valid_flags");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/receiver_2_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const receiver_2::LlhPosition &v);
+    static bool read(const json::Value &in, receiver_2::LlhPosition &v, JsonError &err);
 };
 
 } // namespace democodec

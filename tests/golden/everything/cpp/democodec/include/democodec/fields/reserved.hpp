@@ -50,28 +50,9 @@ template <> struct Codec<reserved::Ack> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, reserved::Ack &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.echo, err)) {
-            err.enter("echo");
-            return false;
-        }
-        if (!read_value(r, v.code, err)) {
-            err.enter("code");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const reserved::Ack &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.echo);
-        write_value(w, v.code);
-        (void)absent;
-    }
+    // Defined in src/fields/reserved.cpp (compiled into the library).
+    static bool read(Reader &r, reserved::Ack &v, DecodeError &err);
+    static void write(Writer &w, const reserved::Ack &v);
 };
 
 } // namespace democodec

@@ -9,45 +9,9 @@
 namespace democodec {
 
 template <> struct Json<reserved::Ack> {
-    static void write(JsonWriter &w, const reserved::Ack &v) {
-        (void)v;
-        w.begin_object();
-        w.key("echo");
-        json_write_value(w, v.echo);
-        w.key("code");
-        json_write_value(w, v.code);
-        w.end_object();
-    }
-    static bool read(const json::Value &in, reserved::Ack &v, JsonError &err) {
-        if (!json_check_object(in,
-                               {
-                                   "echo",
-                                   "code",
-                               },
-                               err)) {
-            return false;
-        }
-        if (const json::Value *found = in.find("echo")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.echo, err)) {
-                err.enter("echo");
-                return false;
-            }
-        } else {
-            return err.missing("echo");
-        }
-        if (const json::Value *found = in.find("code")) {
-            const json::Value &x = *found;
-            if (!json_read_value(x, v.code, err)) {
-                err.enter("code");
-                return false;
-            }
-        } else {
-            return err.missing("code");
-        }
-        (void)v;
-        return true;
-    }
+    // Defined in src/fields/reserved_json.cpp (compiled into the library).
+    static void write(JsonWriter &w, const reserved::Ack &v);
+    static bool read(const json::Value &in, reserved::Ack &v, JsonError &err);
 };
 
 } // namespace democodec

@@ -48,23 +48,9 @@ template <> struct Codec<shared::Timestamp> {
 
     static constexpr bool kFixedSize = true;
     static constexpr std::size_t kSize = kPlainSize;
-    static bool read(Reader &r, shared::Timestamp &v, DecodeError &err) {
-        (void)r;
-        (void)v;
-        (void)err;
-        if (!read_value(r, v.nanoseconds, err)) {
-            err.enter("nanoseconds");
-            return false;
-        }
-        return true;
-    }
-    static void write(Writer &w, const shared::Timestamp &v) {
-        (void)w;
-        (void)v;
-        bool absent = false;
-        write_value(w, v.nanoseconds);
-        (void)absent;
-    }
+    // Defined in src/fields/shared.cpp (compiled into the library).
+    static bool read(Reader &r, shared::Timestamp &v, DecodeError &err);
+    static void write(Writer &w, const shared::Timestamp &v);
 };
 
 } // namespace democodec
