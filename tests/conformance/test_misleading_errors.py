@@ -129,23 +129,64 @@ def dev_command(session, name: str):
     raise AssertionError(name)
 
 
-def test_python_session_tool_names_the_connected_model() -> None:
-    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+# The session tool of every language, told one model and connected to the other (either way):
+# (simulated model, --device, the command lines, the stderr line after the tool's name).
+GX5_ONLY = '{"offset":0,"set":12,"fields":[{"descriptor":6,"name":"get_imu_base_rate","values":{}}]}'
+WRONG_MODEL = [
+    ("gx5_45", "cv7_ins", [PING, CV7_ONLY, CV7_ONLY], MISMATCH),
+    (
+        "cv7_ins",
+        "gx5_45",
+        [PING, GX5_ONLY, GX5_ONLY],
+        "connected device is 3DM-CV7-GNSS/INS, this session was told gx5_45",
+    ),
+]
+
+
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+@pytest.mark.parametrize("case", WRONG_MODEL, ids=[f"{m}-told-{d}" for m, d, _, _ in WRONG_MODEL])
+def test_session_tools_name_the_connected_model(lang: str, case) -> None:
+    model, told, lines, said = case
+    with Sim("mip", model, "tcp:127.0.0.1:0") as sim:
         run = subprocess.run(
-            [str(SESSION), "python", "--connect", sim.address, "--device", "cv7_ins", "--timeout-ms", "500"],
-            input="\n".join([PING, CV7_ONLY, CV7_ONLY]) + "\n",
+            [str(SESSION), lang, "--connect", sim.address, "--device", told, "--timeout-ms", "500"],
+            input="\n".join(lines) + "\n",
             capture_output=True,
             text=True,
-            timeout=120,
+            timeout=1800,  # the first call builds the tool (C++: minutes on a loaded machine)
         )
-    assert run.returncode == 0, run.stderr
+    assert run.returncode == 0, (lang, run.stderr)
     out = run.stdout.splitlines()
     assert [line.split(',"reply"')[0] for line in out] == [
         '{"line":1,"result":"ack","code":0',
         '{"line":2,"result":"nack","code":1',
         '{"line":3,"result":"nack","code":1',
-    ], run.stdout  # the identity query is not a line of its own
-    assert run.stderr.splitlines() == [f"mipcodec.session_tool: {MISMATCH}"], run.stderr
+    ], (lang, run.stdout)  # the identity query is not a line of its own
+    # Said once, at the first NACK, as one line: the tool's name, then the note. (The build's own
+    # output, cargo's or cmake's, may come before it.)
+    notes = [line for line in run.stderr.splitlines() if "connected device" in line or "session was told" in line]
+    assert len(notes) == 1 and notes[0].endswith(f": {said}"), (lang, run.stderr)
+    if lang == "python":
+        assert run.stderr.splitlines() == [f"mipcodec.session_tool: {said}"], run.stderr
+
+
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+def test_session_tools_say_nothing_more_for_the_right_model(lang: str) -> None:
+    # Told the model it is: the CV7-only command is refused before sending (no NACK, no question).
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+        run = subprocess.run(
+            [str(SESSION), lang, "--connect", sim.address, "--device", "gx5_45", "--timeout-ms", "500"],
+            input="\n".join([PING, CV7_ONLY]) + "\n",
+            capture_output=True,
+            text=True,
+            timeout=1800,
+        )
+    assert run.returncode == 0, (lang, run.stderr)
+    assert [line.split(',"reply"')[0] for line in run.stdout.splitlines()] == [
+        '{"line":1,"result":"ack","code":0',
+        '{"line":2,"result":"refused","code":null',
+    ], (lang, run.stdout)
+    assert "connected device" not in run.stderr, (lang, run.stderr)
 
 
 # ------------------------------------------------------------------ a mistyped device name
