@@ -8,8 +8,9 @@
    generator/targets/rust/runtime/tests/addresses.rs.
 2. A session told one model but connected to another: the first NACK for an unknown command asks
    the device what it is and says `connected device is 3DM-GX5-45, this session was told
-   cv7_ins` (the Python Device API and the Python session tool, against the simulated GX5-45;
-   the Python device command line, which reads the identity at connect, says it then).
+   cv7_ins` (the Python Device API and the session tool of every language, against the simulated
+   GX5-45, and the other way round; the Python and C device command lines, which read the
+   identity at connect, say it then).
 3. `connect()` with a mistyped device name refuses it before opening anything: no connection
    reaches the listener, no descriptor is left open.
 """
@@ -23,6 +24,7 @@ import subprocess
 
 import pytest
 
+from tests.conformance.test_device_c import ctool, tool  # noqa: F401 (tool: the C device tool fixture)
 from tests.conformance.test_simulator import SESSION, SESSION_LANGUAGES, Sim
 from tests.helpers.generated import python_package
 
@@ -218,6 +220,16 @@ def test_python_device_command_line_names_the_connected_model() -> None:
     with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
         run = cli(sim.address, "ping", "--device", "cv7_ins")
         right = cli(sim.address, "ping", "--device", "gx5_45")
+    assert run.returncode == 0, run.stderr
+    assert f"mipcodec-device: {MISMATCH}" in run.stderr.splitlines(), run.stderr
+    assert right.returncode == 0 and "connected device is" not in right.stderr, right.stderr
+
+
+def test_c_device_tool_names_the_connected_model(tool) -> None:  # noqa: F811 (the fixture)
+    # The C device tool reads the identity at connect, as the Python device command line does.
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
+        run = ctool(tool, sim.address, "ping", "--device", "cv7_ins")
+        right = ctool(tool, sim.address, "ping", "--device", "gx5_45")
     assert run.returncode == 0, run.stderr
     assert f"mipcodec-device: {MISMATCH}" in run.stderr.splitlines(), run.stderr
     assert right.returncode == 0 and "connected device is" not in right.stderr, right.stderr
