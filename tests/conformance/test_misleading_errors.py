@@ -21,6 +21,7 @@ import importlib
 import os
 import socket
 import subprocess
+import threading
 
 import pytest
 
@@ -170,6 +171,87 @@ def test_session_tools_name_the_connected_model(lang: str, case) -> None:
     assert len(notes) == 1 and notes[0].endswith(f": {said}"), (lang, run.stderr)
     if lang == "python":
         assert run.stderr.splitlines() == [f"mipcodec.session_tool: {said}"], run.stderr
+
+
+# A device whose Device Information reply names its model with bytes a terminal would act on: the
+# name is at most its 16 bytes, spaces and NULs at either end go, and every byte outside printable
+# ASCII is printed as \\xNN (the same text in every language).
+HOSTILE_NAME = b" \x1b[31mGX5\xff\x07" + b"\x00" * 5
+HOSTILE_SAID = "connected device is \\x1b[31mGX5\\xff\\x07, this session was told cv7_ins"
+
+
+class HostileDevice:
+    """One TCP connection on 127.0.0.1: answers the device information command (0x01, 0x03) with
+    HOSTILE_NAME as the model name and NACKs every other command with code 1 (unknown command)."""
+
+    def __init__(self) -> None:
+        framing = importlib.import_module("mipcodec.framing")
+        self.builder = framing.PacketBuilder
+        self.srv = socket.socket()
+        self.srv.bind(("127.0.0.1", 0))
+        self.srv.listen(1)
+        self.srv.settimeout(60)
+        self.address = f"tcp:127.0.0.1:{self.srv.getsockname()[1]}"
+        self.thread = threading.Thread(target=self._serve, daemon=True)
+        self.thread.start()
+
+    def _serve(self) -> None:
+        try:
+            conn, _ = self.srv.accept()
+        except OSError:
+            return
+        buf = b""
+        with conn:
+            while True:
+                try:
+                    data = conn.recv(4096)
+                except OSError:
+                    return
+                if not data:
+                    return
+                buf += data
+                while len(buf) >= 4 and len(buf) >= 6 + buf[3]:
+                    start = buf.find(b"\x75\x65")
+                    if start != 0:
+                        buf = buf[max(start, 1) :]
+                        continue
+                    set_id, payload = buf[2], buf[4 : 4 + buf[3]]
+                    buf = buf[6 + buf[3] :]
+                    descriptor = payload[1]
+                    reply = self.builder(set_id)
+                    if (set_id, descriptor) == (0x01, 0x03):
+                        reply.add_field(0xF1, bytes([descriptor, 0]))
+                        reply.add_field(0x81, b"\x05\xfe" + HOSTILE_NAME + b" " * 64)
+                    else:
+                        reply.add_field(0xF1, bytes([descriptor, 1]))
+                    conn.sendall(reply.build())
+
+    def close(self) -> None:
+        self.srv.close()
+
+
+@pytest.mark.parametrize("lang", SESSION_LANGUAGES)
+def test_session_tools_show_the_device_name_safely(lang: str) -> None:
+    python_package("mipcodec")
+    device = HostileDevice()
+    try:
+        run = subprocess.run(
+            [str(SESSION), lang, "--connect", device.address, "--device", "cv7_ins", "--timeout-ms", "500"],
+            input=("\n".join([CV7_ONLY, CV7_ONLY]) + "\n").encode(),
+            capture_output=True,
+            timeout=1800,
+        )
+    finally:
+        device.close()
+    stderr = run.stderr.decode("latin-1")
+    assert run.returncode == 0, (lang, stderr)
+    assert [line.split(b',"reply"')[0] for line in run.stdout.splitlines()] == [
+        b'{"line":1,"result":"nack","code":1',
+        b'{"line":2,"result":"nack","code":1',
+    ], (lang, run.stdout)
+    notes = [line for line in stderr.splitlines() if "session was told" in line]
+    assert len(notes) == 1 and notes[0].endswith(f": {HOSTILE_SAID}"), (lang, stderr)
+    assert all(32 <= b < 127 for b in notes[0].encode("latin-1")), notes  # nothing a terminal acts on
 
 
 @pytest.mark.parametrize("lang", SESSION_LANGUAGES)
