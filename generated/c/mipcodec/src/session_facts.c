@@ -1695,3 +1695,19 @@ int mipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, mipc_d
     *code = (uint32_t)ack.ack_code;
     return 1;
 }
+
+/* The names a device answers to in the wrong-model check: its title and its identity model name
+ * (the spec's simulation.identity), upper case without spaces and punctuation; NULL-terminated. */
+const char *const *mipc_device_model_names(mipc_device_t device) {
+    static const char *const names_0[] = {"3DMGX545", NULL};      /* 3DM-GX5-45, 3DM-GX5-45 */
+    static const char *const names_1[] = {"3DMCV7GNSSINS", NULL}; /* 3DM-CV7-GNSS/INS, 3DM-CV7-GNSS/INS */
+    static const char *const none[] = {NULL};
+    switch (device) {
+    case MIPC_DEVICE_GX5_45:
+        return names_0;
+    case MIPC_DEVICE_CV7_INS:
+        return names_1;
+    default:
+        return none;
+    }
+}

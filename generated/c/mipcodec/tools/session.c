@@ -672,6 +672,10 @@ int main(int argc, char **argv) {
         mipc_start_options_init(&opt);
         opt.tag = number;
         kind = mipc_link_run(&link, &command, &opt, NULL);
+        if (link.note[0] != '\0') { /* the first unknown-command NACK: the connected model is another one */
+            fprintf(stderr, PROG ": %s\n", link.note);
+            fflush(stderr);
+        }
         if (kind == MIPC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
             print_result(&link.result, number, device);
             continue;

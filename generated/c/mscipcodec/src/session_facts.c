@@ -313,3 +313,16 @@ int mscipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, msci
     *code = (uint32_t)ack.error_code;
     return 1;
 }
+
+/* The names a device answers to in the wrong-model check: its title and its identity model name
+ * (the spec's simulation.identity), upper case without spaces and punctuation; NULL-terminated. */
+const char *const *mscipc_device_model_names(mscipc_device_t device) {
+    static const char *const names_0[] = {"MSIMU3020", NULL}; /* MS-IMU3020, MS_IMU3020 */
+    static const char *const none[] = {NULL};
+    switch (device) {
+    case MSCIPC_DEVICE_MS_IMU3020:
+        return names_0;
+    default:
+        return none;
+    }
+}

@@ -472,6 +472,10 @@ int main(int argc, char **argv) {
             status = 1;
             continue;
         }
+        if (!call.note.empty()) { // the first unknown-command NACK: the connected model is another one
+            std::fprintf(stderr, "%s: %s\n", kProg, call.note.c_str());
+            std::fflush(stderr);
+        }
         if (call.io_error) {
             if (call.lost && dev.connected()) { // reconnected: the command was lost with the port
                 print(lost_line(number, call.io.str()));

@@ -1054,7 +1054,7 @@ class Device(_CommandSets):
             self._identifying = False
         if not name or model_matches(str(name), self.device):
             return None
-        return f"connected device is {name}, this session was told {self.device}"
+        return f"connected device is {shown_name(str(name))}, this session was told {self.device}"
 
     def call(self, command: Field, timeout_ms: Optional[int] = None, check_device: Optional[bool] = None) -> Result:
         """As `run`, but raises CommandRefused, Nack, CommandTimeout or InvalidReply unless it succeeded."""
@@ -1312,7 +1312,15 @@ def read_identity(device: Device, quiet: bool = False) -> Dict[str, Any]:
 
 
 def _plain_name(text: str) -> str:
-    return "".join(c for c in text.upper() if c.isalnum())
+    """Upper case without spaces and punctuation; a character outside ASCII is kept (it matches no
+    model name: the spec's are ASCII). The rule of every language (generator/linkfacts.py)."""
+    return "".join(c for c in text.upper() if (c.isascii() and c.isalnum()) or not c.isascii())
+
+
+def shown_name(text: str) -> str:
+    """A name the device reported, as printed: a character outside printable ASCII is written
+    `\\xNN` (the device's bytes reach no terminal as they are). The rule of every language."""
+    return "".join(c if " " <= c <= "~" else f"\\x{ord(c) & 0xFF:02x}" for c in text)
 
 
 def model_matches(name: str, device: str) -> bool:

@@ -30,7 +30,7 @@ from . import _session as _meta
 from . import settings as st
 from ._protocol import PACKAGE
 from .codec import Field
-from .session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity
+from .session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity, shown_name
 from .transport import TransportError, open_transport, parse_address
 
 PROG = f"{PACKAGE}-device"
@@ -99,7 +99,7 @@ def connect(address: str, model: Optional[str], baud: Optional[int], timeout_ms:
     found = model or model_of(identity)
     name = identity.get("model_name")
     if model is not None and name and not model_matches(str(name), model):
-        _note(f"connected device is {name}, this session was told {model}")
+        _note(f"connected device is {shown_name(str(name))}, this session was told {model}")
     if found is None:
         transport.close()
         _fail(f"{address}: unknown model {identity.get('model_name')!r}; give --device ({', '.join(registry.DEVICES)})")

@@ -385,6 +385,11 @@ pub struct Completed {
     pub error: Option<ResultError>,
     /// The reply descriptors the command expected.
     pub expect: Expect,
+    /// What the result alone does not tell: after the first NACK for a command the device does
+    /// not know, a device told a model asks the device what it is (the spec's identity command,
+    /// once) and, when it is another model ([`model_note`]), says so here: "connected device is
+    /// 3DM-GX5-45, this session was told cv7_ins".
+    pub note: Option<String>,
     device: Option<Model>,
     reply: Vec<u8>,
     start: usize,
@@ -398,6 +403,7 @@ impl Completed {
             code: r.code,
             error: r.error,
             expect: r.expect,
+            note: None,
             device,
             reply: r.reply_bytes().to_vec(),
             start: r.reply_offset(),
@@ -599,6 +605,9 @@ pub struct Device<T: Transport = Box<dyn Transport>> {
     settings: Vec<(String, FieldValue)>,
     // The application's last idle or resume command was an idle (no resume after reconnecting).
     idle: bool,
+    // The wrong-model check is done (or not to do: no model); inside it (its result is no event).
+    identified: bool,
+    identifying: bool,
 }
 
 /// Connects to `address` (`tcp:HOST:PORT` or a serial port path at `baud`) for `model` (its
@@ -641,6 +650,8 @@ impl<T: Transport> Device<T> {
             dropping: None,
             settings: Vec::new(),
             idle: false,
+            identified: model.is_none(),
+            identifying: false,
         }
     }
 
@@ -756,11 +767,44 @@ impl<T: Transport> Device<T> {
         command: &FieldValue,
         options: StartOptions,
     ) -> Result<Completed, SessionError> {
-        let done = self.exchange(command, options)?;
+        let mut done = self.exchange(command, options)?;
+        if !self.identified
+            && !self.recovering
+            && done.status == Status::Nack
+            && matches!(done.code, Some(c) if crate::framing::IDENTITY_UNKNOWN_CODES.contains(&c))
+        {
+            self.identified = true;
+            done.note = self.model_mismatch();
+        }
         if done.is_ok() {
             self.remember(command);
         }
         Ok(done)
+    }
+
+    /// Asks the device for its identity (the spec's identity command, sent whatever the model):
+    /// the note of [`model_note`] when the model name it reports is not the device's.
+    fn model_mismatch(&mut self) -> Option<String> {
+        let told = self.session.device()?;
+        let (set, command, reply, offset, length) = crate::framing::IDENTITY?;
+        let identity = link_command(Some((set, command)), Some(told))?;
+        let options = StartOptions {
+            check_device: Some(false),
+            ..StartOptions::default()
+        };
+        self.identifying = true;
+        let done = self.exchange(&identity, options);
+        self.identifying = false;
+        let done = done.ok().filter(|d| d.status == Status::Ack)?;
+        let name = done.reply().find_map(|item| match item {
+            FieldItem::Field { descriptor, data }
+                if descriptor == reply && data.len() >= offset + length =>
+            {
+                Some(data[offset..offset + length].to_vec())
+            }
+            _ => None,
+        })?;
+        model_note(told, &name)
     }
 
     fn exchange(
@@ -779,7 +823,7 @@ impl<T: Transport> Device<T> {
         let name = crate::commands::command_facts(command).map_or("", |f| f.name);
         if let Some(r) = &result {
             let done = Completed::from_result(r, model);
-            if self.dropping.is_none() {
+            if self.dropping.is_none() && !self.identifying {
                 if let Some(h) = self.on_event.as_mut() {
                     h(&SessionEvent::Result(*r));
                 }
@@ -1131,6 +1175,7 @@ impl<T: Transport> Device<T> {
             on_event,
             on_bytes,
             dropping,
+            identifying,
             ..
         } = self;
         if let Some(h) = on_bytes.as_mut() {
@@ -1145,9 +1190,13 @@ impl<T: Transport> Device<T> {
             return Ok(());
         }
         let model = session.device();
+        let identifying = *identifying;
         session.feed(&buf[..n], now, |e| {
             if let Some(h) = on_event.as_mut() {
-                h(&e);
+                // the identity query of the wrong-model check is no result of the caller's
+                if !(identifying && matches!(e, SessionEvent::Result(_))) {
+                    h(&e);
+                }
             }
             match e {
                 SessionEvent::Result(r) => on_result(&r),
@@ -1230,6 +1279,38 @@ fn lost_reason(e: &io::Error) -> String {
 }
 
 /// The command (set, descriptor) as a value, when it takes no parameters.
+/// The wrong-model rule (the same in every language): `name` (as the device reported it) with
+/// spaces and NULs at either end removed, is not empty and, upper case without spaces and
+/// punctuation (a byte outside ASCII kept), is none of `told`'s [`Model::model_names`]: then
+/// "connected device is NAME, this session was told ID", NAME with every byte outside printable
+/// ASCII written `\xNN`. `None` when the name is the model's, or the device does not say.
+pub fn model_note(told: Model, name: &[u8]) -> Option<String> {
+    let pad = |b: &u8| *b == b' ' || *b == 0;
+    let start = name.iter().position(|b| !pad(b))?;
+    let end = name.iter().rposition(|b| !pad(b))? + 1;
+    let name = &name[start..end];
+    let plain: Vec<u8> = name
+        .iter()
+        .filter(|b| b.is_ascii_alphanumeric() || !b.is_ascii())
+        .map(u8::to_ascii_uppercase)
+        .collect();
+    if !plain.is_empty() && told.model_names().iter().any(|n| n.as_bytes() == plain) {
+        return None;
+    }
+    let mut shown = String::with_capacity(name.len());
+    for &b in name {
+        if (0x20..=0x7e).contains(&b) {
+            shown.push(char::from(b));
+        } else {
+            shown.push_str(&format!("\\x{b:02x}"));
+        }
+    }
+    Some(format!(
+        "connected device is {shown}, this session was told {}",
+        told.id()
+    ))
+}
+
 fn link_command(which: Option<(u8, u8)>, model: Option<Model>) -> Option<FieldValue> {
     let (set, descriptor) = which?;
     decode_field(set, descriptor, &[], model).ok()

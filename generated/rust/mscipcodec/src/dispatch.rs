@@ -68,6 +68,14 @@ impl Device {
         }
     }
 
+    /// The names the device answers to in the wrong-model check: its title and its identity
+    /// model name (the spec's `simulation.identity`), upper case without spaces and punctuation.
+    pub fn model_names(self) -> &'static [&'static str] {
+        match self {
+            Device::MsImu3020 => &["MSIMU3020"],
+        }
+    }
+
     /// The default baud rate of the device's main port (`None`: its manual states none).
     pub fn default_baud(self) -> Option<u32> {
         match self {

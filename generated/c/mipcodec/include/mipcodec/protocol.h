@@ -93,6 +93,21 @@ static inline int mipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define MIPC_LINK_PACKET_OVERHEAD 6
 #define MIPC_LINK_FIELD_OVERHEAD 2
 
+/* The wrong-model check (issue 39, docs/conformance.md section 8): after the first NACK whose code
+ * is an unknown-command code (the spec's simulation.nack unknown_descriptor and unknown_set), a link
+ * told a device sends the identity command once and compares the model name it reports (the
+ * MODEL_LENGTH bytes at MODEL_OFFSET of the reply field's data) with that device's names
+ * (mipc_device_model_names); HAS 0: the spec names no identity. */
+/* get_device_info answered by device_info */
+#define MIPC_IDENTITY_HAS 1
+#define MIPC_IDENTITY_SET 0x01
+#define MIPC_IDENTITY_COMMAND 0x03
+#define MIPC_IDENTITY_REPLY 0x81
+#define MIPC_IDENTITY_MODEL_OFFSET 2u
+#define MIPC_IDENTITY_MODEL_LENGTH 16u
+#define MIPC_IDENTITY_UNKNOWN_CODES {1u, 6u}
+#define MIPC_IDENTITY_UNKNOWN_COUNT 2u
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MIPC_PATH_MAX_DEPTH 3
 /** Enough room for any message mipc_decode_error_format() can produce. */

@@ -243,6 +243,9 @@ const char *mipc_function_name(int value);
  * as another field. */
 int mipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, mipc_device_t device, uint8_t *echo,
                             uint32_t *code);
+/** The names `device` answers to in the wrong-model check (mipc_link_t note): its title and its
+ * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
+const char *const *mipc_device_model_names(mipc_device_t device);
 
 #ifdef __cplusplus
 }

@@ -91,6 +91,9 @@ typedef struct {
 #if MSCIPC_LINK_READ_MAX < 1 || MSCIPC_LINK_READ_MAX > 65536
 #error "MSCIPC_LINK_READ_MAX must be from 1 to 65536"
 #endif
+/** Room for a link's note ("connected device is NAME, this session was told ID": the model name
+ * as shown, at most 4 characters per byte, and a device id). */
+#define MSCIPC_LINK_NOTE_MAX (64u + 4u * MSCIPC_IDENTITY_MODEL_LENGTH + MSCIPC_NAME_MAX)
 /** The most baud rates a search tries (every device's supported rates). */
 #define MSCIPC_LINK_MAX_BAUD_RATES 16
 
@@ -127,6 +130,14 @@ typedef struct {
     size_t setting_count;
     bool idled; /* the application's last idle or resume command was an idle (no resume after a reconnect) */
     char line[MSCIPC_LINK_LOG_MAX];
+    /* the wrong-model check: done (or not to do: no device selected), and the note of the last run */
+    bool identified;
+    /** After mscipc_link_run: what its result alone does not tell, else "". The first NACK for a
+     * command the device does not know (an unknown-command code) makes a link told a device ask
+     * the device what it is (the spec's identity command, once); when the model name it reports
+     * is not that device's (mscipc_link_model_note), the note is "connected device is 3DM-GX5-45,
+     * this session was told cv7_ins". */
+    char note[MSCIPC_LINK_NOTE_MAX];
 } mscipc_link_t;
 
 /**
@@ -192,6 +203,15 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link);
  * REASON"). Returns 0 when reconnected, < 0 when not (link->connected false).
  */
 int mscipc_link_reconnect(mscipc_link_t *link);
+
+/**
+ * The wrong-model rule (the same in every language): `name` (len bytes, as the device reported
+ * it) with spaces and NULs at either end removed, is not empty and, upper case without spaces and
+ * punctuation (a byte outside ASCII kept), is none of mscipc_device_model_names(told): writes
+ * "connected device is NAME, this session was told ID" to out (NAME with every byte outside
+ * printable ASCII written \xNN, truncated to fit cap) and returns true; else false (out "").
+ */
+bool mscipc_link_model_note(mscipc_device_t told, const uint8_t *name, size_t len, char *out, size_t cap);
 
 /**
  * Decodes the typed reply of an acknowledged result (mscipc_result_reply_entry) into *value for

@@ -91,6 +91,21 @@ static inline int mscipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define MSCIPC_LINK_PACKET_OVERHEAD 0
 #define MSCIPC_LINK_FIELD_OVERHEAD 0
 
+/* The wrong-model check (issue 39, docs/conformance.md section 8): after the first NACK whose code
+ * is an unknown-command code (the spec's simulation.nack unknown_descriptor and unknown_set), a link
+ * told a device sends the identity command once and compares the model name it reports (the
+ * MODEL_LENGTH bytes at MODEL_OFFSET of the reply field's data) with that device's names
+ * (mscipc_device_model_names); HAS 0: the spec names no identity. */
+/* get_device_model answered by device_model */
+#define MSCIPC_IDENTITY_HAS 1
+#define MSCIPC_IDENTITY_SET 0x01
+#define MSCIPC_IDENTITY_COMMAND 0x05
+#define MSCIPC_IDENTITY_REPLY 0x85
+#define MSCIPC_IDENTITY_MODEL_OFFSET 0u
+#define MSCIPC_IDENTITY_MODEL_LENGTH 16u
+#define MSCIPC_IDENTITY_UNKNOWN_CODES {2u, 3u}
+#define MSCIPC_IDENTITY_UNKNOWN_COUNT 2u
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define MSCIPC_PATH_MAX_DEPTH 2
 /** Enough room for any message mscipc_decode_error_format() can produce. */

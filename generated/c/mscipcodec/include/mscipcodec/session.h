@@ -244,6 +244,9 @@ const char *mscipc_function_name(int value);
  * as another field. */
 int mscipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, mscipc_device_t device,
                               uint8_t *echo, uint32_t *code);
+/** The names `device` answers to in the wrong-model check (mscipc_link_t note): its title and its
+ * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
+const char *const *mscipc_device_model_names(mscipc_device_t device);
 
 #ifdef __cplusplus
 }

@@ -82,6 +82,11 @@ struct Call {
     bool lost = false; ///< the port was lost under the command and the connection reopened it (io: "link
                        ///< lost: REASON")
     ErrorText io{};
+    /// What the result alone does not tell: after the first NACK for a command the device does not
+    /// know, a connection told a device asks it what it is (the spec's identity command, once)
+    /// and, when it is another model (model_note), says so here ("connected device is 3DM-GX5-45,
+    /// this session was told cv7_ins"); else empty.
+    std::string note;
     /// The command succeeded (ack or sent) and the transport did not fail.
     bool ok() const {
         return !io_error && result.ok();
@@ -111,13 +116,59 @@ template <class R> struct Reply {
     }
 };
 
+/// The wrong-model rule (the same in every language): `name` (size bytes, as the device reported
+/// it) with spaces and NULs at either end removed, is not empty and, upper case without spaces and
+/// punctuation (a byte outside ASCII kept), is none of device_model_names(told): then "connected
+/// device is NAME, this session was told ID", NAME with every byte outside printable ASCII written
+/// \xNN; else empty (the name is the device's, or the device does not say).
+inline std::string model_note(Device told, const std::uint8_t *name, std::size_t size) {
+    std::size_t a = 0;
+    std::size_t b = size;
+    while (a < b && (name[a] == ' ' || name[a] == 0)) {
+        ++a;
+    }
+    while (b > a && (name[b - 1] == ' ' || name[b - 1] == 0)) {
+        --b;
+    }
+    if (a == b) {
+        return {};
+    }
+    std::string plain;
+    for (std::size_t i = a; i < b; ++i) {
+        const std::uint8_t c = name[i];
+        if ((c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || c >= 0x80) {
+            plain.push_back(static_cast<char>(c));
+        } else if (c >= 'a' && c <= 'z') {
+            plain.push_back(static_cast<char>(c - ('a' - 'A')));
+        }
+    }
+    for (const char *const *n = device_model_names(told); !plain.empty() && *n != nullptr; ++n) {
+        if (plain == *n) {
+            return {};
+        }
+    }
+    static const char kHex[] = "0123456789abcdef";
+    std::string out = "connected device is ";
+    for (std::size_t i = a; i < b; ++i) {
+        const std::uint8_t c = name[i];
+        if (c >= 0x20 && c <= 0x7E) {
+            out.push_back(static_cast<char>(c));
+        } else {
+            out += "\\x";
+            out.push_back(kHex[c >> 4]);
+            out.push_back(kHex[c & 0x0F]);
+        }
+    }
+    return out + ", this session was told " + device_name(told);
+}
+
 /// A session over a transport, blocking. The session has one pending command at a time.
 class Connection {
   public:
     using Clock = std::function<std::int64_t()>;
 
     explicit Connection(Transport &transport, const Session<1>::Options &options = {}, Clock clock = {})
-        : transport_(transport), session_(options), clock_(std::move(clock)) {
+        : transport_(transport), session_(options), clock_(std::move(clock)), identified_(!options.device) {
         if (!clock_) {
             const auto t0 = std::chrono::steady_clock::now();
             clock_ = [t0]() {
@@ -165,6 +216,11 @@ class Connection {
                     return lost_call(call);
                 }
             }
+        }
+        if (!internal_ && !identified_ && call.result.status == Status::nack && call.result.has_code &&
+            unknown_command_code(call.result.code)) {
+            identified_ = true;
+            call.note = model_mismatch();
         }
         if (!internal_ && call.result.ok()) {
             record(command, sent.data(), sent_size);
@@ -335,12 +391,40 @@ class Connection {
         decode_field(c.set, c.descriptor, nullptr, 0, session_.options().device, pick);
     }
 
+    /// Asks the device for its identity (the spec's identity command, sent whatever the device):
+    /// model_note of the model name it reports.
+    std::string model_mismatch() {
+        const std::optional<Device> told = session_.options().device;
+        if (!told || !kIdentity.present) {
+            return {};
+        }
+        StartOptions unchecked;
+        unchecked.check_device = false;
+        bool have = false;
+        Call call;
+        with_bare(LinkCommand{true, kIdentity.set, kIdentity.command}, have,
+                  [&](const auto &identity) { call = run_internal(identity, unchecked); });
+        std::string note;
+        if (!have || call.io_error || call.result.status != Status::ack) {
+            return note;
+        }
+        bool seen = false;
+        call.result.for_each_reply([&](const FieldEntry &e) {
+            if (!seen && e.kind == FieldEntry::Kind::field && e.descriptor == kIdentity.reply &&
+                e.size >= kIdentity.model_offset + kIdentity.model_length) {
+                seen = true;
+                note = model_note(*told, e.data + kIdentity.model_offset, kIdentity.model_length);
+            }
+        });
+        return note;
+    }
+
     /// A command of the connection itself: events counted and dropped, handlers paused, not recorded.
-    template <class T> Call run_internal(const T &command) {
+    template <class T> Call run_internal(const T &command, const StartOptions &options = {}) {
         const bool was = internal_;
         internal_ = true;
         session_.mute_handlers(true);
-        Call call = run(command);
+        Call call = run(command, options);
         session_.mute_handlers(was);
         internal_ = was;
         return call;
@@ -504,6 +588,7 @@ class Connection {
     bool connected_ = true;
     bool idled_ = false; // the application's last idle or resume command was an idle
     std::uint64_t dropped_ = 0;
+    bool identified_ = false; // the wrong-model check is done (or not to do: no device)
     std::array<Setting, kMaxSettings> settings_{};
     std::size_t setting_count_ = 0;
 };

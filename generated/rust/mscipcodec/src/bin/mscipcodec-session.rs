@@ -411,7 +411,12 @@ fn run(o: Options) -> Result<ExitCode, String> {
             }
         };
         match dev.run(&command, StartOptions::default()) {
-            Ok(_) => {}
+            Ok(done) => {
+                // the first unknown-command NACK: the connected model is another one
+                if let Some(note) = &done.note {
+                    eprintln!("{PROG}: {note}");
+                }
+            }
             Err(SessionError::Start(e)) => return Err(format!("line {number}: {e}")),
             Err(SessionError::LinkLost {
                 reason, gave_up, ..

@@ -55,6 +55,7 @@ codec_status_t codec_link_init(codec_link_t *link, const codec_transport_t *tran
     st = codec_session_init(&link->session, &c);
     link->next_tag = 1;
     link->connected = true;
+    link->identified = config->device == CODEC_DEVICE_ANY;
     codec_link_options_init(&link->options);
     link->options.reconnect_ms = 0;
     return st;
@@ -231,6 +232,130 @@ static codec_result_kind_t link_lost(codec_link_t *link, const char *what, codec
     return failed(link, CODEC_RESULT_TRANSPORT, why, result);
 }
 
+/* ------------------------------------------------------------------ the wrong-model check */
+static codec_result_kind_t run_internal(codec_link_t *link, const codec_field_value_t *command,
+                                        const codec_start_options_t *options);
+
+/* A NACK code of a command the device does not know (the spec's simulation.nack). */
+static bool unknown_command(uint32_t code) {
+    static const uint32_t codes[] = CODEC_IDENTITY_UNKNOWN_CODES;
+    size_t count = CODEC_IDENTITY_UNKNOWN_COUNT;
+    size_t i;
+    for (i = 0; i < count; i++) {
+        if (codes[i] == code) {
+            return true;
+        }
+    }
+    return false;
+}
+
+static bool ascii_alnum(uint8_t c) {
+    return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+
+bool codec_link_model_note(codec_device_t told, const uint8_t *name, size_t len, char *out, size_t cap) {
+    static const char hex[] = "0123456789abcdef";
+    uint8_t plain[256];
+    size_t n = 0;
+    size_t a = 0;
+    size_t b = len;
+    size_t i;
+    const char *const *names = codec_device_model_names(told);
+    const char *id = codec_device_id(told);
+    line_t l;
+    assert(name != NULL || len == 0);
+    assert(out != NULL && cap > 0);
+    out[0] = '\0';
+    while (a < b && (name[a] == ' ' || name[a] == '\0')) {
+        a++;
+    }
+    while (b > a && (name[b - 1] == ' ' || name[b - 1] == '\0')) {
+        b--;
+    }
+    if (a == b || id == NULL) {
+        return false; /* the device does not say */
+    }
+    for (i = a; i < b && n < sizeof plain; i++) {
+        uint8_t c = name[i];
+        if (ascii_alnum(c)) {
+            plain[n++] = (uint8_t)(c >= 'a' && c <= 'z' ? c - ('a' - 'A') : c);
+        } else if (c >= 0x80u) {
+            plain[n++] = c; /* matches no name: the spec's are ASCII */
+        }
+    }
+    for (i = 0; n > 0 && names[i] != NULL; i++) {
+        if (strlen(names[i]) == n && memcmp(names[i], plain, n) == 0) {
+            return false;
+        }
+    }
+    l.buf = out;
+    l.cap = cap;
+    l.len = 0;
+    line_add(&l, "connected device is ");
+    for (i = a; i < b; i++) {
+        char shown[5];
+        uint8_t c = name[i];
+        if (c >= 0x20u && c <= 0x7Eu) {
+            shown[0] = (char)c;
+            shown[1] = '\0';
+        } else {
+            shown[0] = '\\';
+            shown[1] = 'x';
+            shown[2] = hex[c >> 4];
+            shown[3] = hex[c & 0x0Fu];
+            shown[4] = '\0';
+        }
+        line_add(&l, shown);
+    }
+    line_add(&l, ", this session was told ");
+    line_add(&l, id);
+    return true;
+}
+
+/* After the first unknown-command NACK: asks the device what it is (the spec's identity command,
+ * not checked against the device) and notes when it is another model. The NACK stays the result. */
+static void check_model(codec_link_t *link) {
+#if CODEC_IDENTITY_HAS
+    codec_result_t saved = link->result;
+    uint8_t reply[CODEC_MAX_PACKET];
+    char error[CODEC_SESSION_ERROR_MAX];
+    uintptr_t tag = link->tag;
+    bool done = link->done;
+    codec_field_value_t identity;
+    codec_start_options_t opt;
+    size_t n = saved.packet != NULL && saved.packet_len <= sizeof reply ? saved.packet_len : 0;
+    memcpy(reply, link->reply, n);
+    memcpy(error, link->error, sizeof error);
+    codec_start_options_init(&opt);
+    opt.check_device = 0;
+    if (codec_decode_field(CODEC_IDENTITY_SET, CODEC_IDENTITY_COMMAND, NULL, 0, link->session.config.device,
+                           &identity, NULL) == CODEC_OK &&
+        run_internal(link, &identity, &opt) == CODEC_RESULT_ACK) {
+        codec_field_iter_t it;
+        codec_field_entry_t e;
+        codec_result_reply_iter(&link->result, &it);
+        while (codec_field_iter_next(&it, &e)) {
+            if (e.kind == CODEC_ENTRY_FIELD && e.descriptor == CODEC_IDENTITY_REPLY &&
+                e.length >= CODEC_IDENTITY_MODEL_OFFSET + CODEC_IDENTITY_MODEL_LENGTH) {
+                (void)codec_link_model_note(link->session.config.device, e.data + CODEC_IDENTITY_MODEL_OFFSET,
+                                            CODEC_IDENTITY_MODEL_LENGTH, link->note, sizeof link->note);
+                break;
+            }
+        }
+    }
+    link->result = saved;
+    memcpy(link->reply, reply, n);
+    memcpy(link->error, error, sizeof error);
+    link->result.packet = saved.packet != NULL ? link->reply : NULL;
+    link->result.packet_len = n;
+    link->result.error = link->error;
+    link->tag = tag;
+    link->done = done;
+#else
+    (void)link;
+#endif
+}
+
 codec_result_kind_t codec_link_run(codec_link_t *link, const codec_field_value_t *command,
                                    const codec_start_options_t *options, codec_result_t *result) {
     codec_start_options_t opt;
@@ -249,6 +374,9 @@ codec_result_kind_t codec_link_run(codec_link_t *link, const codec_field_value_t
     }
     memset(&link->result, 0, sizeof link->result);
     link->result.error = "";
+    if (!link->internal) {
+        link->note[0] = '\0';
+    }
     link->tag = opt.tag;
     link->done = false;
     st = codec_session_start(&link->session, command, link->transport.now_ms(link->transport.ctx), &opt,
@@ -284,6 +412,11 @@ codec_result_kind_t codec_link_run(codec_link_t *link, const codec_field_value_t
             return link_lost(link, "the transport failed", result);
         }
         codec_session_feed(&link->session, link->rx, (size_t)n, link->transport.now_ms(link->transport.ctx));
+    }
+    if (!link->internal && !link->identified && link->result.kind == CODEC_RESULT_NACK &&
+        unknown_command(link->result.code)) {
+        link->identified = true;
+        check_model(link);
     }
     if (!link->internal &&
         (link->result.kind == CODEC_RESULT_ACK || link->result.kind == CODEC_RESULT_SENT)) {

@@ -38,6 +38,12 @@
     !defined(CODEC_LINK_FIELD_OVERHEAD)
 #error "codec/protocol.h lacks a link constant of the runtime contract"
 #endif
+#if !defined(CODEC_IDENTITY_HAS) || !defined(CODEC_IDENTITY_SET) || !defined(CODEC_IDENTITY_COMMAND) ||      \
+    !defined(CODEC_IDENTITY_REPLY) || !defined(CODEC_IDENTITY_MODEL_OFFSET) ||                               \
+    !defined(CODEC_IDENTITY_MODEL_LENGTH) || !defined(CODEC_IDENTITY_UNKNOWN_CODES) ||                       \
+    !defined(CODEC_IDENTITY_UNKNOWN_COUNT)
+#error "codec/protocol.h lacks an identity constant of the runtime contract"
+#endif
 #if CODEC_MAX_PACKET != CODEC_HEADER_SIZE + CODEC_MAX_PAYLOAD + CODEC_CHECKSUM_SIZE
 #error "CODEC_MAX_PACKET is not header + maximum payload + checksum"
 #endif
@@ -68,6 +74,7 @@ bool codec_command_facts(const codec_field_value_t *command, codec_command_facts
 const char *codec_function_name(int value);
 int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device,
                              uint8_t *echo, uint32_t *code);
+const char *const *codec_device_model_names(codec_device_t device);
 
 /* The generated side defines every function: each address, so that the link fails without one. */
 struct codec_contract {
@@ -86,6 +93,7 @@ struct codec_contract {
     bool (*command_facts)(const codec_field_value_t *, codec_command_facts_t *);
     const char *(*function_name)(int);
     int (*session_ack_decode)(uint8_t, const uint8_t *, size_t, codec_device_t, uint8_t *, uint32_t *);
+    const char *const *(*device_model_names)(codec_device_t);
     int (*field_length_adjust)(uint8_t, uint8_t);
     const uint32_t *(*device_baud_rates)(codec_device_t, size_t *);
     uint32_t (*device_default_baud)(codec_device_t);
@@ -96,24 +104,11 @@ struct codec_contract {
 
 extern const struct codec_contract codec_contract;
 const struct codec_contract codec_contract = {
-    codec_device_id,
-    codec_device_from_id,
-    codec_device_title,
-    codec_device_manual,
-    codec_device_supports,
-    codec_layout_info,
-    codec_find_field,
-    codec_decode_field,
-    codec_encode_field,
-    codec_value_to_json,
-    codec_value_from_json,
-    codec_command_facts,
-    codec_function_name,
-    codec_session_ack_decode,
-    codec_field_length_adjust,
-    codec_device_baud_rates,
-    codec_device_default_baud,
-    CODEC_DEVICE_ANY,
-    codec_set_kind,
-    {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
+    codec_device_id,           codec_device_from_id,     codec_device_title,
+    codec_device_manual,       codec_device_supports,    codec_layout_info,
+    codec_find_field,          codec_decode_field,       codec_encode_field,
+    codec_value_to_json,       codec_value_from_json,    codec_command_facts,
+    codec_function_name,       codec_session_ack_decode, codec_device_model_names,
+    codec_field_length_adjust, codec_device_baud_rates,  codec_device_default_baud,
+    CODEC_DEVICE_ANY,          codec_set_kind,           {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
 };

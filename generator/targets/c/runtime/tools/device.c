@@ -1878,7 +1878,13 @@ static int connect_device(conn_t *c, const char *address, const char *model, uns
     read_identity(c, &r);
     result_free(&r);
     if (model != NULL) {
+        char said[CODEC_LINK_NOTE_MAX];
         codec_device_from_id(model, &found);
+        name = identity_text(c, "model_name", &b);
+        if (name != NULL &&
+            codec_link_model_note(found, (const uint8_t *)name, strlen(name), said, sizeof said)) {
+            note("%s", said); /* told another model: said, and the command goes on with it */
+        }
     } else {
         name = identity_text(c, "model_name", &b);
         for (i = 0; name && name[0] && i < DEV_MODEL_COUNT; i++) {

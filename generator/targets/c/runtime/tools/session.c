@@ -672,6 +672,10 @@ int main(int argc, char **argv) {
         codec_start_options_init(&opt);
         opt.tag = number;
         kind = codec_link_run(&link, &command, &opt, NULL);
+        if (link.note[0] != '\0') { /* the first unknown-command NACK: the connected model is another one */
+            fprintf(stderr, PROG ": %s\n", link.note);
+            fflush(stderr);
+        }
         if (kind == CODEC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
             print_result(&link.result, number, device);
             continue;

@@ -244,6 +244,9 @@ const char *codec_function_name(int value);
  * as another field. */
 int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device,
                              uint8_t *echo, uint32_t *code);
+/** The names `device` answers to in the wrong-model check (codec_link_t note): its title and its
+ * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
+const char *const *codec_device_model_names(codec_device_t device);
 
 #ifdef __cplusplus
 }

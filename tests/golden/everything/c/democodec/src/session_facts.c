@@ -115,3 +115,13 @@ int democ_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, democ
     *code = (uint32_t)ack.code;
     return 1;
 }
+
+/* The names a device answers to in the wrong-model check: its title and its identity model name
+ * (the spec's simulation.identity), upper case without spaces and punctuation; NULL-terminated. */
+const char *const *democ_device_model_names(democ_device_t device) {
+    static const char *const none[] = {NULL};
+    switch (device) {
+    default:
+        return none;
+    }
+}

@@ -80,6 +80,15 @@ pub const LINK_PACKET_OVERHEAD: u32 = 0;
 /// Bytes of field header per field (0 without the calculation).
 pub const LINK_FIELD_OVERHEAD: u32 = 0;
 
+// The wrong-model check (issue 39, `docs/conformance.md` section 8): after the first NACK whose
+// code is an unknown-command code, a device told a model sends the identity command once and
+// compares the model name it reports with that model's names (`Device::model_names`).
+/// The spec names no identity command.
+pub const IDENTITY: Option<(u8, u8, u8, usize, usize)> = None;
+/// The NACK codes of a command the device does not know (the spec's `simulation.nack`
+/// unknown_descriptor and unknown_set).
+pub const IDENTITY_UNKNOWN_CODES: &[u32] = &[];
+
 /// Fletcher-16 sums `(sum1, sum2)` of `bytes`: `sum1 += b; sum2 += sum1`, both modulo 256.
 ///
 /// [`fletcher16_lanes`] where the target has vector registers the compiler can use for it (every

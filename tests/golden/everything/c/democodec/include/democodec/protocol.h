@@ -88,6 +88,20 @@ static inline int democ_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define DEMOC_LINK_PACKET_OVERHEAD 0
 #define DEMOC_LINK_FIELD_OVERHEAD 0
 
+/* The wrong-model check (issue 39, docs/conformance.md section 8): after the first NACK whose code
+ * is an unknown-command code (the spec's simulation.nack unknown_descriptor and unknown_set), a link
+ * told a device sends the identity command once and compares the model name it reports (the
+ * MODEL_LENGTH bytes at MODEL_OFFSET of the reply field's data) with that device's names
+ * (democ_device_model_names); HAS 0: the spec names no identity. */
+#define DEMOC_IDENTITY_HAS 0
+#define DEMOC_IDENTITY_SET 0x00
+#define DEMOC_IDENTITY_COMMAND 0x00
+#define DEMOC_IDENTITY_REPLY 0x00
+#define DEMOC_IDENTITY_MODEL_OFFSET 0u
+#define DEMOC_IDENTITY_MODEL_LENGTH 0u
+#define DEMOC_IDENTITY_UNKNOWN_CODES {0u}
+#define DEMOC_IDENTITY_UNKNOWN_COUNT 0u
+
 /** Deepest parameter path a layout of this protocol can have (members of nested structs). */
 #define DEMOC_PATH_MAX_DEPTH 2
 /** Enough room for any message democ_decode_error_format() can produce. */

@@ -185,6 +185,43 @@ inline constexpr bool device_supports(Device d, std::uint8_t set, std::uint8_t d
     return device_commands(d).contains(key) || device_data(d).contains(key);
 }
 
+// The wrong-model check (issue 39, docs/conformance.md section 8): after the first NACK whose
+// code is an unknown-command code, a Connection told a device sends the identity command once and
+// compares the model name it reports with that device's names (device_model_names).
+/// The identity command: set, command and reply
+/// descriptors, the byte offset and length of the model name in the reply's data; `present`
+/// false: the spec names none.
+struct IdentityCommand {
+    bool present;
+    std::uint8_t set;
+    std::uint8_t command;
+    std::uint8_t reply;
+    std::size_t model_offset;
+    std::size_t model_length;
+};
+inline constexpr IdentityCommand kIdentity{false, 0x00, 0x00, 0x00, 0, 0};
+/// True for a NACK code of a command the device does not know (the spec's simulation.nack
+/// unknown_descriptor and unknown_set).
+inline constexpr bool unknown_command_code(std::int64_t code) {
+    static_cast<void>(code);
+    return false;
+}
+
+/// The names the device answers to in the wrong-model check: its title and its identity model
+/// name (the spec's simulation.identity), upper case without spaces and punctuation; nullptr ends
+/// the list.
+inline const char *const *device_model_names(Device d) {
+    static const char *const names_0[] = {nullptr};
+    static const char *const names_1[] = {nullptr};
+    switch (d) {
+    case Device::dev_a:
+        return names_0;
+    case Device::dev_b:
+        return names_1;
+    }
+    return names_0;
+}
+
 inline std::optional<Device> device_from_name(const char *name) {
     if (std::strcmp(name, "dev_a") == 0) {
         return Device::dev_a;
