@@ -710,7 +710,11 @@ COUNT_STREAMS = ("accel_gyro", "mixed")
 COUNT_MODES = ("frame", "decode")
 # The other decode paths of issue 38, counted beside `decode` (each language's `decode` row is the path
 # it recommends for throughput: C's layout cache, C++'s and Rust's decode_field).
-COUNT_EXTRA_MODES = {"c": ("decode-straight",), "cpp": ("decode-cached", "decode-straight"), "rust": ("decode-cached", "decode-straight")}
+COUNT_EXTRA_MODES = {
+    "c": ("decode-straight",),
+    "cpp": ("decode-cached", "decode-straight"),
+    "rust": ("decode-cached", "decode-straight"),
+}
 COUNT_SCALE = 0.01
 
 
