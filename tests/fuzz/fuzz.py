@@ -130,8 +130,21 @@ def build_c(package: str, mode: str) -> dict[str, Path]:
     return bins
 
 
+def compile_parallel(jobs: list[list[str]]) -> None:
+    """Runs independent compile commands on every core (the C++ library's sources are many
+    translation units: one after another they took minutes of wall time on a 2-core machine)."""
+    if not jobs:
+        return
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
+        for f in [pool.submit(sh, cmd) for cmd in jobs]:
+            f.result()  # the first failure (SystemExit with the command) stops the build
+
+
 def build_cpp(package: str, mode: str) -> dict[str, Path]:
-    """The C++ harness binaries: fuzz_targets.cpp compiled once, entry.cpp once per target."""
+    """The C++ harness binaries: fuzz_targets.cpp compiled once, entry.cpp once per target, the
+    library's sources once each; the compiles run in parallel, then one link per target."""
     inc = ROOT / "generated" / "cpp" / package / "include"
     out = BUILD / mode / "cpp" / package
     out.mkdir(parents=True, exist_ok=True)
@@ -141,10 +154,11 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
     # replay: -O0, the generated headers compile much faster and a few hundred inputs run anyway
     flags = ["-g", "-O1" if fuzz else "-O0", "-fno-omit-frame-pointer", *(SANITIZE_FUZZ if fuzz else SANITIZE_REPLAY)]
     deps = max(newest(inc.rglob("*.hpp")), newest(HERE.glob("cpp/*")), newest(HERE.glob("c/replay_main.c")))
+    jobs: list[list[str]] = []
     main_o = out / "fuzz_targets.o"
     if stale(main_o, deps):
         log(f"fuzz.py: compiling the C++ harnesses of {package} ({mode}; takes a few minutes)")
-        sh(
+        jobs.append(
             [
                 cxx,
                 "-std=c++17",
@@ -167,19 +181,19 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
         o = out / "lib" / (c.relative_to(inc.parent / "src").as_posix().replace("/", "_") + ".o")
         o.parent.mkdir(parents=True, exist_ok=True)
         if stale(o, max(deps, c.stat().st_mtime)):
-            sh([cxx, "-std=c++17", *flags, *WARN, f"-I{inc}", "-c", str(c), "-o", str(o)])
+            jobs.append([cxx, "-std=c++17", *flags, *WARN, f"-I{inc}", "-c", str(c), "-o", str(o)])
         extra.append(o)
     if not fuzz:
         replay_o = out / "replay_main.o"
         if stale(replay_o, deps):
-            sh([cc, *flags, *WARN, "-c", str(HERE / "c" / "replay_main.c"), "-o", str(replay_o)])
+            jobs.append([cc, *flags, *WARN, "-c", str(HERE / "c" / "replay_main.c"), "-o", str(replay_o)])
         extra.append(replay_o)
-    bins = {}
+    entries = {}
     for target in TARGETS:
         # entry.cpp defines LLVMFuzzerTestOneInput (called by libFuzzer, or by replay_main.c)
-        entry = out / f"entry_{target}.o"
+        entry = entries[target] = out / f"entry_{target}.o"
         if stale(entry, deps):
-            sh(
+            jobs.append(
                 [
                     cxx,
                     "-std=c++17",
@@ -192,7 +206,10 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
                     str(entry),
                 ]
             )
-        objs = [entry, main_o, *extra]
+    compile_parallel(jobs)
+    bins = {}
+    for target in TARGETS:
+        objs = [entries[target], main_o, *extra]
         exe = out / target
         if stale(exe, newest(objs)):
             link = ["-fsanitize=fuzzer,address,undefined"] if fuzz else SANITIZE_REPLAY
