@@ -352,11 +352,14 @@ def test_adding_one_descriptor_changes_only_its_files_and_indexes(tmp_path):
     ]
     # 26 before the capabilities tables (Python, C++ devices.hpp) and the C device tool's tables;
     # 31 since the C++ package compiles like a library (the set's src/fields/sensor.cpp and
-    # sensor_json.cpp beside its headers)
-    assert len(changed) <= 31, changed
+    # sensor_json.cpp beside its headers); 32 with the C++ straight-line packet decoders of issue 38
+    # (the set's packets/sensor.hpp)
+    assert len(changed) <= 32, changed
     # Before issue 24 the C layout ids (`= 236`) and the k_fields index comments renumbered:
     # 455 lines removed after formatting. Now the index tables alone shift.
-    assert removed <= 200, removed
+    # 201 with issue 38's packet decoders and layout caches (173 of them C's dispatch.c index
+    # tables, the rest one or two lines per index file)
+    assert removed <= 210, removed
 
 
 def test_python_m_generator_subcommands_are_mipgen():
