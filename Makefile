@@ -49,25 +49,32 @@ build/.generated: $(VENV)/.stamp $(SPEC_INPUTS)
 bootstrap: $(VENV)/.stamp
 	@tools/bootstrap
 
+# Each test target's first line says when it started (CI's log shows where the time goes).
+STAMP = @echo "== $@ started $$(date -u +%H:%M:%S) UTC"
+
 test: bootstrap generate test-generator test-spec test-docs $(addprefix test-,$(LANGS)) test-conformance test-capture test-export test-fuzz-regressions test-bench test-golden test-consumer test-outside
 
 # Python everywhere under tests/ is one package (tests/__init__.py): pytest and the scripts run
 # from the project root (`python -m tests.conformance.differential`), shared helpers in tests/helpers/.
 test-generator: $(VENV)/.stamp
+	$(STAMP)
 	$(VENV)/bin/ruff check --config ruff.toml generator tests
 	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests
 	$(PY) -m pytest -q tests/generator
 
 # The spec against what its manuals state outside the field tables (prose sizes, worked examples).
 test-spec: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/spec
 
 # The benchmark streams are what their sidecars say (small scale; `make bench` runs the benchmarks).
 # The Python packages' user commands (export, info, plot) against the canonical decode.
 test-export: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/export
 
 test-bench: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/bench
 
 # The golden tree tests/golden/everything/ (the every-feature fixture rendered by every back end:
@@ -75,17 +82,20 @@ test-bench: generate
 # (build/golden/tree/) byte for byte, and those packages build and pass their own tests (build dirs
 # under build/golden/, reused). `make golden` refreshes the tree after a wanted change.
 test-golden: $(VENV)/.stamp
+	$(STAMP)
 	$(PY) -m pytest -q tests/golden
 
 golden: $(VENV)/.stamp
 	$(PY) -m tests.golden.refresh
 
 $(addprefix test-,$(LANGS)): test-%: generate
+	$(STAMP)
 	tests/lang/$*.sh test
 
 # The reference documentation: Markdown links and pages (fast), then the HTML site served on
 # localhost and opened in headless Chromium (Debian `chromium`); screenshots go to build/screenshots/.
 test-docs: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/docs
 
 # The reference documentation as an offline HTML site in build/html/ (open build/html/index.html).
@@ -93,6 +103,7 @@ html: generate
 	$(PY) -m generator.docs.site --out build/html
 
 test-conformance: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/conformance
 
 # Differential rounds (tests/conformance/differential.py; one round runs in test-conformance):
@@ -106,6 +117,7 @@ differential: generate
 # The device capture decodes completely and identically in the four languages (run when the
 # file exists; `make test` says so when it does not).
 test-capture: generate
+	$(STAMP)
 ifneq ($(wildcard $(CAPTURE)),)
 	$(PY) tests/conformance/check_capture.py $(CAPTURE)
 else
@@ -123,6 +135,7 @@ test-bigendian: generate
 # prefix, then a versioned find_package, pkg-config (the session API through <pkg>-posix), and
 # add_subdirectory into a C-only project (only the linked libraries built).
 test-consumer: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/consumer/test_consumers.py
 
 # The outside user (issue 39; docs/conformance.md §11): every command of every user-facing page
@@ -132,6 +145,7 @@ test-consumer: generate
 # packages copied out as a user vendors them, cargo offline. A few minutes (the C++ example build
 # most of it).
 test-outside: generate
+	$(STAMP)
 	$(PY) -m pytest -q tests/consumer/test_outside_user.py
 
 # Release checks (docs/versioning.md "Releasing"): the Python packages' sdists and wheels pass
@@ -177,6 +191,7 @@ fuzz-long: generate
 # Part of `make test`: the inputs of tests/fuzz/regressions/ (and the seed corpus) through every
 # language's harnesses without clang or libFuzzer (gcc/g++ with ASan+UBSan, cargo test, pytest).
 test-fuzz-regressions: generate
+	$(STAMP)
 	$(PY) -m tests.fuzz.fuzz replay
 
 # Benchmarks of the four languages (tests/bench/run.py, docs/benchmarks.md): builds them into
