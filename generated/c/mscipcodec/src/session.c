@@ -420,7 +420,11 @@ static void complete(mscipc_session_t *s, const mscipc_pending_t *p, const mscip
 }
 
 /* Matches the ack fields of a packet of a set with a pending command; true when it answered at
- * least one (then it is a reply, not data). */
+ * least one (then it is a reply, not data). Out of line: route() stays a short function for the
+ * data packets that make up a stream (issue 38: the session's ingest at the rate of decode). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
 static bool match(mscipc_session_t *s, const mscipc_event_t *pkt) {
     const uint8_t set = mscipc_packet_set(pkt->packet);
     const uint8_t *payload = mscipc_packet_payload(pkt->packet);
@@ -472,6 +476,39 @@ static bool match(mscipc_session_t *s, const mscipc_event_t *pkt) {
     }
 }
 
+/* The field handlers of a data packet (out of line, like match()). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void route_fields(mscipc_session_t *s, const mscipc_event_t *pkt, uint8_t set) {
+    size_t i;
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
+    mscipc_field_iter_init(&it, set, mscipc_packet_payload(pkt->packet),
+                           mscipc_packet_payload_length(pkt->packet));
+    while (mscipc_field_iter_next(&it, &e)) {
+        mscipc_field_value_t value;
+        bool decoded = false;
+        if (e.kind != MSCIPC_ENTRY_FIELD) {
+            continue;
+        }
+        for (i = 0; i < s->field_count; i++) {
+            const mscipc_field_handler_t *h = &s->fields[i];
+            if (h->set != set || h->descriptor != e.descriptor) {
+                continue;
+            }
+            if (!decoded) {
+                if (mscipc_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value,
+                                        NULL) != MSCIPC_OK) {
+                    break;
+                }
+                decoded = true;
+            }
+            h->fn(h->ctx, &value, pkt);
+        }
+    }
+}
+
 static void route(mscipc_session_t *s, const mscipc_event_t *pkt) {
     mscipc_session_event_t ev;
     size_t i;
@@ -484,39 +521,17 @@ static void route(mscipc_session_t *s, const mscipc_event_t *pkt) {
             break;
         }
     }
-    ev.kind = MSCIPC_SESSION_PACKET;
-    ev.result = NULL;
-    ev.stream = pkt;
-    emit(s, &ev);
+    if (s->config.on_event) {
+        ev.kind = MSCIPC_SESSION_PACKET;
+        ev.result = NULL;
+        ev.stream = pkt;
+        s->config.on_event(s->config.ctx, &ev);
+    }
     if (s->packet_fn) {
         s->packet_fn(s->packet_ctx, pkt);
     }
     if (s->field_count > 0) {
-        mscipc_field_iter_t it;
-        mscipc_field_entry_t e;
-        mscipc_field_iter_init(&it, set, mscipc_packet_payload(pkt->packet),
-                               mscipc_packet_payload_length(pkt->packet));
-        while (mscipc_field_iter_next(&it, &e)) {
-            mscipc_field_value_t value;
-            bool decoded = false;
-            if (e.kind != MSCIPC_ENTRY_FIELD) {
-                continue;
-            }
-            for (i = 0; i < s->field_count; i++) {
-                const mscipc_field_handler_t *h = &s->fields[i];
-                if (h->set != set || h->descriptor != e.descriptor) {
-                    continue;
-                }
-                if (!decoded) {
-                    if (mscipc_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value,
-                                            NULL) != MSCIPC_OK) {
-                        break;
-                    }
-                    decoded = true;
-                }
-                h->fn(h->ctx, &value, pkt);
-            }
-        }
+        route_fields(s, pkt, set);
     }
 }
 

@@ -419,7 +419,11 @@ static void complete(codec_session_t *s, const codec_pending_t *p, const codec_e
 }
 
 /* Matches the ack fields of a packet of a set with a pending command; true when it answered at
- * least one (then it is a reply, not data). */
+ * least one (then it is a reply, not data). Out of line: route() stays a short function for the
+ * data packets that make up a stream (issue 38: the session's ingest at the rate of decode). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
 static bool match(codec_session_t *s, const codec_event_t *pkt) {
     const uint8_t set = codec_packet_set(pkt->packet);
     const uint8_t *payload = codec_packet_payload(pkt->packet);
@@ -471,6 +475,39 @@ static bool match(codec_session_t *s, const codec_event_t *pkt) {
     }
 }
 
+/* The field handlers of a data packet (out of line, like match()). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void route_fields(codec_session_t *s, const codec_event_t *pkt, uint8_t set) {
+    size_t i;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    codec_field_iter_init(&it, set, codec_packet_payload(pkt->packet),
+                          codec_packet_payload_length(pkt->packet));
+    while (codec_field_iter_next(&it, &e)) {
+        codec_field_value_t value;
+        bool decoded = false;
+        if (e.kind != CODEC_ENTRY_FIELD) {
+            continue;
+        }
+        for (i = 0; i < s->field_count; i++) {
+            const codec_field_handler_t *h = &s->fields[i];
+            if (h->set != set || h->descriptor != e.descriptor) {
+                continue;
+            }
+            if (!decoded) {
+                if (codec_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value, NULL) !=
+                    CODEC_OK) {
+                    break;
+                }
+                decoded = true;
+            }
+            h->fn(h->ctx, &value, pkt);
+        }
+    }
+}
+
 static void route(codec_session_t *s, const codec_event_t *pkt) {
     codec_session_event_t ev;
     size_t i;
@@ -483,39 +520,17 @@ static void route(codec_session_t *s, const codec_event_t *pkt) {
             break;
         }
     }
-    ev.kind = CODEC_SESSION_PACKET;
-    ev.result = NULL;
-    ev.stream = pkt;
-    emit(s, &ev);
+    if (s->config.on_event) {
+        ev.kind = CODEC_SESSION_PACKET;
+        ev.result = NULL;
+        ev.stream = pkt;
+        s->config.on_event(s->config.ctx, &ev);
+    }
     if (s->packet_fn) {
         s->packet_fn(s->packet_ctx, pkt);
     }
     if (s->field_count > 0) {
-        codec_field_iter_t it;
-        codec_field_entry_t e;
-        codec_field_iter_init(&it, set, codec_packet_payload(pkt->packet),
-                              codec_packet_payload_length(pkt->packet));
-        while (codec_field_iter_next(&it, &e)) {
-            codec_field_value_t value;
-            bool decoded = false;
-            if (e.kind != CODEC_ENTRY_FIELD) {
-                continue;
-            }
-            for (i = 0; i < s->field_count; i++) {
-                const codec_field_handler_t *h = &s->fields[i];
-                if (h->set != set || h->descriptor != e.descriptor) {
-                    continue;
-                }
-                if (!decoded) {
-                    if (codec_decode_field(set, e.descriptor, e.data, e.length, s->config.device, &value,
-                                           NULL) != CODEC_OK) {
-                        break;
-                    }
-                    decoded = true;
-                }
-                h->fn(h->ctx, &value, pkt);
-            }
-        }
+        route_fields(s, pkt, set);
     }
 }
 
