@@ -380,8 +380,41 @@ def compile_command(lang: str, source: Path, obj: Path) -> list[str]:
     return [cxx, *flags, "-I", str(pkg / "include"), "-c", str(source), "-o", str(obj)]
 
 
+# The floor under minimal.cpp: a translation unit of nothing but the standard headers minimal.cpp
+# reaches through the umbrella header (what any C++ API of std::string, std::vector and
+# std::optional costs), generated at bench time from `g++ -H` so that it follows the package.
+STD_UNIT = "std headers of minimal.cpp"
+_STD_HEADER = re.compile(r"^\.+ \S*/c\+\+/[0-9]+/([a-z_]+)$")
+
+
+def std_headers(h_output: str) -> list[str]:
+    """The standard headers named in `g++ -H` output (its stderr): the extension-less names directly
+    under the compiler's C++ include directory (not bits/ and the C headers under them), sorted."""
+    return sorted({m.group(1) for line in h_output.splitlines() if (m := _STD_HEADER.match(line))})
+
+
+def std_headers_unit(where: Path) -> Path | None:
+    """Writes the STD_UNIT source (where/std_headers.cpp); None when g++ -H fails."""
+    pkg = ROOT / "generated" / "cpp" / "mipcodec"
+    cxx = os.environ.get("CXX", "g++")
+    minimal = ROOT / "tests" / "bench" / "compile" / "minimal.cpp"
+    proc = subprocess.run(
+        [cxx, "-std=c++17", "-H", "-fsyntax-only", "-I", str(pkg / "include"), str(minimal)],
+        capture_output=True,
+        text=True,
+    )
+    names = std_headers(proc.stderr)
+    if proc.returncode != 0 or not names:
+        return None
+    source = where / "std_headers.cpp"
+    lines = [f"#include <{n}>" for n in names]
+    source.write_text("\n".join([*lines, "", "int main() {", "    return 0;", "}", ""]))
+    return source
+
+
 def compile_bench(out: Path) -> tuple[list[dict], bool]:
-    """One row per translation unit of COMPILE_UNITS: CPU seconds and peak memory of its compile."""
+    """One row per translation unit of COMPILE_UNITS (and STD_UNIT after minimal.cpp): CPU seconds
+    and peak memory of its compile."""
     if not os.access("/usr/bin/time", os.X_OK):
         log("compile cost: needs GNU time (/usr/bin/time)")
         return [], False
@@ -390,9 +423,16 @@ def compile_bench(out: Path) -> tuple[list[dict], bool]:
     timed = where / "time.txt"
     rows: list[dict] = []
     ok = True
-    for name, lang, rel in COMPILE_UNITS:
-        source = ROOT / rel
-        obj = where / (name + ".o")
+    units: list[tuple[str, str, Path]] = [(name, lang, ROOT / rel) for name, lang, rel in COMPILE_UNITS]
+    floor = std_headers_unit(where)
+    if floor is None:
+        log("compile cost: g++ -H of minimal.cpp failed: no standard-header row")
+        ok = False
+    else:
+        units.insert(2, (STD_UNIT, "cpp", floor))
+    for name, lang, source in units:
+        rel = str(source.relative_to(ROOT) if source.is_relative_to(ROOT) else source)
+        obj = where / (re.sub(r"[^A-Za-z0-9_.]+", "_", name) + ".o")
         cmd = compile_command(lang, source, obj)
         log(f"compiling {rel} (-O2, one at a time)")
         proc = subprocess.run(["/usr/bin/time", "-f", "%U %S %M", "-o", str(timed), *cmd], cwd=ROOT)
@@ -417,13 +457,16 @@ def compile_bench(out: Path) -> tuple[list[dict], bool]:
 def compile_table(rows: list[dict]) -> str:
     """The compile-cost rows: CPU s, peak MB, and both as multiples of minimal.c's."""
     base = next((r for r in rows if r["unit"] == COMPILE_UNITS[0][0]), None)
-    head = "| translation unit | CPU s | peak MB | x C CPU | x C memory |"
-    lines = [head, "|---|---:|---:|---:|---:|"]
+    floor = next((r for r in rows if r["unit"] == STD_UNIT), None)
+    head = "| translation unit | CPU s | peak MB | x C CPU | x C memory | x std headers CPU |"
+    lines = [head, "|---|---:|---:|---:|---:|---:|"]
     for r in rows:
         cpu, mb = r["cpu_seconds"], r["peak_rss_kb"] / 1024
         x_cpu = f"{cpu / base['cpu_seconds']:.0f}" if base and base["cpu_seconds"] > 0 else "-"
         x_mem = f"{r['peak_rss_kb'] / base['peak_rss_kb']:.1f}" if base and base["peak_rss_kb"] > 0 else "-"
-        lines.append(f"| {r['unit']} | {cpu:.2f} | {mb:.0f} | {x_cpu} | {x_mem} |")
+        cpp = r["source"].endswith(".cpp") if "source" in r else r["unit"].endswith(".cpp")
+        x_std = f"{cpu / floor['cpu_seconds']:.1f}" if floor and floor["cpu_seconds"] > 0 and cpp else "-"
+        lines.append(f"| {r['unit']} | {cpu:.2f} | {mb:.0f} | {x_cpu} | {x_mem} | {x_std} |")
     return "\n".join(lines)
 
 

@@ -12,6 +12,7 @@ import pytest
 from tests.bench.run import (
     COMPILE_UNITS,
     ROOT,
+    STD_UNIT,
     aggregate,
     callgrind_total,
     compile_command,
@@ -23,6 +24,7 @@ from tests.bench.run import (
     per_packet,
     previous,
     spread_pct,
+    std_headers,
     table,
 )
 
@@ -247,18 +249,45 @@ def test_previous_keeps_timed_rows_without_counts(tmp_path):
 
 def test_compile_table_ratios_to_the_c_unit():
     """The compile-cost table divides each row by minimal.c's CPU seconds and peak memory (the
-    first unit of COMPILE_UNITS): 0.05 s and 32768 kB here, so 2.50 s is x50 and 327680 kB x10.0."""
+    first unit of COMPILE_UNITS): 0.05 s and 32768 kB here, so 2.50 s is x50 and 327680 kB x10.0;
+    and each C++ row by the standard-header row's CPU seconds (0.5 s here: 2.50 s is x5.0)."""
     assert COMPILE_UNITS[0][:2] == ("minimal.c", "c")
     rows = [
         {"lang": "compile", "unit": "minimal.c", "cpu_seconds": 0.05, "peak_rss_kb": 32768},
         {"lang": "compile", "unit": "minimal.cpp", "cpu_seconds": 2.5, "peak_rss_kb": 327680},
+        {
+            "lang": "compile",
+            "unit": STD_UNIT,
+            "source": "build/bench/compile/std_headers.cpp",
+            "cpu_seconds": 0.5,
+            "peak_rss_kb": 65536,
+        },
     ]
     lines = compile_table(rows).splitlines()
-    assert lines[0] == "| translation unit | CPU s | peak MB | x C CPU | x C memory |"
-    assert lines[2] == "| minimal.c | 0.05 | 32 | 1 | 1.0 |"
-    assert lines[3] == "| minimal.cpp | 2.50 | 320 | 50 | 10.0 |"
-    # without the C row the ratios are not invented
-    assert compile_table(rows[1:]).splitlines()[2] == "| minimal.cpp | 2.50 | 320 | - | - |"
+    assert lines[0] == "| translation unit | CPU s | peak MB | x C CPU | x C memory | x std headers CPU |"
+    assert lines[2] == "| minimal.c | 0.05 | 32 | 1 | 1.0 | - |"
+    assert lines[3] == "| minimal.cpp | 2.50 | 320 | 50 | 10.0 | 5.0 |"
+    assert lines[4] == f"| {STD_UNIT} | 0.50 | 64 | 10 | 2.0 | 1.0 |"
+    # without the C row and the standard-header row the ratios are not invented
+    assert compile_table(rows[1:2]).splitlines()[2] == "| minimal.cpp | 2.50 | 320 | - | - | - |"
+
+
+def test_std_headers_from_g_plus_plus_h_output():
+    """The standard-header unit lists the extension-less headers directly under the C++ include
+    directory at any depth of `g++ -H` output, once each, sorted: not bits/, not C headers."""
+    out = "\n".join(
+        [
+            ". /usr/include/c++/12/vector",
+            ".. /usr/include/c++/12/bits/stl_vector.h",
+            ".. /usr/include/x86_64-linux-gnu/c++/12/bits/c++config.h",
+            "... /usr/include/c++/12/optional",
+            ". /work/generated/cpp/mipcodec/include/mipcodec/types.hpp",
+            ".. /usr/include/c++/12/vector",
+            ".... /usr/include/stdint.h",
+            "Multiple include guards may be useful for:",
+        ]
+    )
+    assert std_headers(out) == ["optional", "vector"]
 
 
 def test_compile_units_exist_and_are_compiled_with_strict_flags(tmp_path):
