@@ -61,7 +61,9 @@ fn kept(packet: &[u8], item: &FieldItem<'_>) -> Kept {
     let at = |s: &[u8]| (s.as_ptr() as usize).wrapping_sub(packet.as_ptr() as usize);
     match item {
         FieldItem::Field { descriptor, data } => Kept::Field(at(data), data.len(), *descriptor),
-        FieldItem::Trailing { bytes, error } => Kept::Trailing(at(bytes), bytes.len(), error.to_string()),
+        FieldItem::Trailing { bytes, error } => {
+            Kept::Trailing(at(bytes), bytes.len(), error.to_string())
+        }
     }
 }
 
@@ -69,7 +71,9 @@ fn kept(packet: &[u8], item: &FieldItem<'_>) -> Kept {
 fn write_item(out: &mut String, set: u8, item: &FieldItem<'_>, device: Option<Device>) {
     // Writing to a String cannot fail.
     let _ = match *item {
-        FieldItem::Field { descriptor, data } => write_field_json(out, set, descriptor, data, device),
+        FieldItem::Field { descriptor, data } => {
+            write_field_json(out, set, descriptor, data, device)
+        }
         FieldItem::Trailing { bytes, ref error } => (|| {
             out.write_str("{\"trailing\":\"")?;
             json::write_hex(out, bytes)?;
