@@ -196,7 +196,7 @@ impl TypedLines {
 
 /// The general decoder or a typed one.
 enum Lines {
-    General(StreamDecoder),
+    General(Box<StreamDecoder>),
     Typed(Box<TypedLines>, &'static str),
 }
 
@@ -413,7 +413,7 @@ fn main() -> ExitCode {
         if samples {
             d = d.with_samples();
         }
-        Lines::General(d)
+        Lines::General(Box::new(d))
     } else {
         Lines::Typed(
             Box::new(TypedLines::new(device, samples, decoder_name == "cached")),
