@@ -24,7 +24,8 @@ the spec does not define):
   that they reach the field decoders.
 
 `check_group` runs the four languages' `encode` / `decode` CLIs over one device group (one stream
-per language and direction) and returns every disagreement as text. `test_differential.py` runs
+per language and direction; C, C++ and Rust decode both streams again with `--decoder straight`
+and `--decoder cached`, the packet decoders of issue 38) and returns every disagreement as text. `test_differential.py` runs
 one round in `make test`; `python -m tests.conformance.differential --rounds N [--seed S]`
 (`make differential`) runs many. Nothing here calls generated code.
 """
@@ -59,6 +60,9 @@ MAX_SAMPLES_PER_LAYOUT = 160
 # How strings are made (see string_bytes): mostly every byte value in turn, so that a round
 # covers 0..255 even in a protocol with few strings.
 STRING_MODES = [1, 1, 1, 1, 0, 2, 3, 4, 5]
+# The languages whose decode tool also runs the straight-line decoder and the layout cache
+# (`--decoder straight|cached`, docs/conformance.md §5).
+TYPED_DECODER_LANGS = ("c", "cpp", "rust")
 ELEMENT = re.compile(r"\[[1-9]")  # a path inside an array element past the first
 
 
@@ -1028,6 +1032,25 @@ def check_group(g: Group, seed: int, langs=LANGS) -> tuple[list[str], dict]:
             f"\n  cmd: tests/conformance/decode {lang} {rel}/mutants-{g.gid}.bin{devtxt} --protocol {g.protocol}\n"
             + "\n".join(lines)
         )
+
+    # 3b. the packet decoders of issue 38 (C, C++, Rust `decode --decoder straight|cached`: the set's
+    # straight-line decoder and the layout cache, their typed members written by the same JSON
+    # writer) print the same lines on both streams: the same two files, 12 more decode runs.
+    for lang in [x for x in TYPED_DECODER_LANGS if x in langs]:
+        for decoder in ("straight", "cached"):
+            for name, path, want in (("values", vfile, g.lines), ("mutants", mfile, outs["reference"])):
+                dec = run_cli("decode", lang, g.protocol, args=(str(path), "--decoder", decoder) + dev)
+                got = dec.stdout.decode(errors="replace").splitlines()
+                if dec.returncode != 0 or got != want:
+                    i = _first_diff(got, want)
+                    fails.append(
+                        f"{head} {lang} decode --decoder {decoder} of the {name} (exit {dec.returncode},"
+                        f" {_short(dec.stderr.decode(errors='replace'))}) differs at line {i}:"
+                        f"\n    want {_short(want[i]) if i < len(want) else '(none)'}"
+                        f"\n    got  {_short(got[i]) if i < len(got) else '(none)'}"
+                        f"\n  cmd: tests/conformance/decode {lang} {rel}/{path.name} --decoder {decoder}{devtxt}"
+                        f" --protocol {g.protocol}"
+                    )
 
     # 4. encoder input (§5): other spellings of the same lines give the same bytes; lines made
     # invalid are refused by every encoder, and the others still encoded.

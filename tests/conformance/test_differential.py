@@ -11,6 +11,8 @@ For every device group of every protocol:
    exactly what the reference decoder (`reference.py`, the contract read independently of the
    generator's templates) prints, error messages included, with and without --samples, and
    decode | encode gives back the bytes in every language;
+   C, C++ and Rust decode both streams again with `--decoder straight` and `--decoder cached`
+   (the straight-line decoders and the layout cache of issue 38): the same lines;
 3. encoder input (§5): both streams' lines respelled (`respell.py`: key order, whitespace,
    escapes, number notation, hex case, other offsets and error texts) encode to the same bytes,
    and lines made invalid among them are refused by every encoder while the others are kept.

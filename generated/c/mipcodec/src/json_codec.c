@@ -103,6 +103,82 @@ size_t mipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset,
     return mipc_jw_finish(&w);
 }
 
+/* The object of the i-th field a straight-line decoder decoded (set's field with a single layout),
+ * written from its typed member with the writer the general path uses. */
+static void member_json(mipc_jw_t *w, uint8_t set, const mipc_packet_index_t *index, size_t i) {
+    const uint8_t descriptor = index->fields[i].descriptor;
+    mipc_status_t why = MIPC_ERR_UNKNOWN_SET;
+    const mipc_field_info_t *f = mipc_find_field(set, descriptor, &why);
+    const mipc_layout_info_t *info;
+    mipc_jw_lit(w, "{\"descriptor\":");
+    mipc_jw_uint(w, descriptor);
+    if (!f) {
+        mipc_jw_lit(w, ",\"error\":\"no field for a decoded member\"}"); /* never: a member is a field */
+        return;
+    }
+    info = mipc_layout_info(f->first_layout);
+    mipc_jw_lit(w, ",\"name\":\"");
+    mipc_jw_lit(w, info->name);
+    mipc_jw_lit(w, "\"");
+    if (info->device) {
+        mipc_jw_lit(w, ",\"device\":\"");
+        mipc_jw_lit(w, info->device);
+        mipc_jw_lit(w, "\"");
+    }
+    mipc_jw_lit(w, ",\"values\":");
+    mipc_layout_to_json(w, f->first_layout, mipc_packet_value(index, i));
+    mipc_jw_lit(w, "}");
+}
+
+size_t mipc_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mipc_device_t device,
+                                     const mipc_packet_index_t *index, const mipc_field_entry_t *others,
+                                     size_t other_count, char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(others != NULL || other_count == 0);
+    assert(out != NULL || cap == 0);
+    mipc_jw_t w;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    size_t payload = 0;
+    size_t i = 0;
+    size_t decoded = 0;
+    size_t passed = 0;
+    uint8_t set = 0;
+    if (len >= MIPC_HEADER_SIZE) {
+        set = packet[MIPC_SET_OFFSET];
+        payload = packet[MIPC_LENGTH_OFFSET];
+        if (payload > len - MIPC_HEADER_SIZE) {
+            payload = len - MIPC_HEADER_SIZE;
+        }
+    }
+    mipc_jw_init(&w, out, cap);
+    mipc_jw_lit(&w, "{\"offset\":");
+    mipc_jw_uint(&w, offset);
+    mipc_jw_lit(&w, ",\"set\":");
+    mipc_jw_uint(&w, set);
+    mipc_jw_lit(&w, ",\"fields\":[");
+    /* The entries in packet order (the walk only places them): each is the next entry passed on
+     * when it starts where that one does, else the next decoded field, which must have its
+     * descriptor. */
+    mipc_field_iter_init(&it, set, len >= MIPC_HEADER_SIZE ? packet + MIPC_HEADER_SIZE : NULL, payload);
+    while (mipc_field_iter_next(&it, &e)) {
+        mipc_jw_sep(&w, i++);
+        if (passed < other_count && others[passed].offset == e.offset && others[passed].kind == e.kind) {
+            field_json(&w, set, &others[passed++], device);
+        } else if (e.kind == MIPC_ENTRY_FIELD && index != NULL && decoded < index->count &&
+                   index->fields[decoded].descriptor == e.descriptor) {
+            member_json(&w, set, index, decoded++);
+        } else {
+            return 0;
+        }
+    }
+    if (passed != other_count || decoded != (index != NULL ? index->count : 0)) {
+        return 0;
+    }
+    mipc_jw_lit(&w, "]}");
+    return mipc_jw_finish(&w);
+}
+
 /* ------------------------------------------------------------------ JSON line -> bytes */
 
 static const char *const k_packet_keys[] = {"offset", "set", "fields"};

@@ -1117,6 +1117,9 @@ int mipc_shared_external_time_delta_from_json(mipc_jr_t *jr, size_t pos,
 
 /* The "values" object of a decoded field. */
 void mipc_value_to_json(mipc_jw_t *w, const mipc_field_value_t *value);
+/* The "values" object of a typed struct of layout id (in: a mipc_<layout>_t, e.g. a member of a
+ * set's packet struct that a straight-line decoder filled). */
+void mipc_layout_to_json(mipc_jw_t *w, mipc_field_id_t id, const void *in);
 /* Reads the "values" object of layout id into *value (sets value->id). */
 int mipc_value_from_json(mipc_jr_t *jr, size_t pos, mipc_field_id_t id, mipc_field_value_t *value);
 

@@ -103,6 +103,83 @@ size_t mscipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offse
     return mscipc_jw_finish(&w);
 }
 
+/* The object of the i-th field a straight-line decoder decoded (set's field with a single layout),
+ * written from its typed member with the writer the general path uses. */
+static void member_json(mscipc_jw_t *w, uint8_t set, const mscipc_packet_index_t *index, size_t i) {
+    const uint8_t descriptor = index->fields[i].descriptor;
+    mscipc_status_t why = MSCIPC_ERR_UNKNOWN_SET;
+    const mscipc_field_info_t *f = mscipc_find_field(set, descriptor, &why);
+    const mscipc_layout_info_t *info;
+    mscipc_jw_lit(w, "{\"descriptor\":");
+    mscipc_jw_uint(w, descriptor);
+    if (!f) {
+        mscipc_jw_lit(w, ",\"error\":\"no field for a decoded member\"}"); /* never: a member is a field */
+        return;
+    }
+    info = mscipc_layout_info(f->first_layout);
+    mscipc_jw_lit(w, ",\"name\":\"");
+    mscipc_jw_lit(w, info->name);
+    mscipc_jw_lit(w, "\"");
+    if (info->device) {
+        mscipc_jw_lit(w, ",\"device\":\"");
+        mscipc_jw_lit(w, info->device);
+        mscipc_jw_lit(w, "\"");
+    }
+    mscipc_jw_lit(w, ",\"values\":");
+    mscipc_layout_to_json(w, f->first_layout, mscipc_packet_value(index, i));
+    mscipc_jw_lit(w, "}");
+}
+
+size_t mscipc_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t offset,
+                                       mscipc_device_t device, const mscipc_packet_index_t *index,
+                                       const mscipc_field_entry_t *others, size_t other_count, char *out,
+                                       size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(others != NULL || other_count == 0);
+    assert(out != NULL || cap == 0);
+    mscipc_jw_t w;
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
+    size_t payload = 0;
+    size_t i = 0;
+    size_t decoded = 0;
+    size_t passed = 0;
+    uint8_t set = 0;
+    if (len >= MSCIPC_HEADER_SIZE) {
+        set = packet[MSCIPC_SET_OFFSET];
+        payload = packet[MSCIPC_LENGTH_OFFSET];
+        if (payload > len - MSCIPC_HEADER_SIZE) {
+            payload = len - MSCIPC_HEADER_SIZE;
+        }
+    }
+    mscipc_jw_init(&w, out, cap);
+    mscipc_jw_lit(&w, "{\"offset\":");
+    mscipc_jw_uint(&w, offset);
+    mscipc_jw_lit(&w, ",\"set\":");
+    mscipc_jw_uint(&w, set);
+    mscipc_jw_lit(&w, ",\"fields\":[");
+    /* The entries in packet order (the walk only places them): each is the next entry passed on
+     * when it starts where that one does, else the next decoded field, which must have its
+     * descriptor. */
+    mscipc_field_iter_init(&it, set, len >= MSCIPC_HEADER_SIZE ? packet + MSCIPC_HEADER_SIZE : NULL, payload);
+    while (mscipc_field_iter_next(&it, &e)) {
+        mscipc_jw_sep(&w, i++);
+        if (passed < other_count && others[passed].offset == e.offset && others[passed].kind == e.kind) {
+            field_json(&w, set, &others[passed++], device);
+        } else if (e.kind == MSCIPC_ENTRY_FIELD && index != NULL && decoded < index->count &&
+                   index->fields[decoded].descriptor == e.descriptor) {
+            member_json(&w, set, index, decoded++);
+        } else {
+            return 0;
+        }
+    }
+    if (passed != other_count || decoded != (index != NULL ? index->count : 0)) {
+        return 0;
+    }
+    mscipc_jw_lit(&w, "]}");
+    return mscipc_jw_finish(&w);
+}
+
 /* ------------------------------------------------------------------ JSON line -> bytes */
 
 static const char *const k_packet_keys[] = {"offset", "set", "fields"};

@@ -152,6 +152,9 @@ int mscipc_imu_data_scaled_aux_accel_from_json(mscipc_jr_t *jr, size_t pos,
 
 /* The "values" object of a decoded field. */
 void mscipc_value_to_json(mscipc_jw_t *w, const mscipc_field_value_t *value);
+/* The "values" object of a typed struct of layout id (in: a mscipc_<layout>_t, e.g. a member of a
+ * set's packet struct that a straight-line decoder filled). */
+void mscipc_layout_to_json(mscipc_jw_t *w, mscipc_field_id_t id, const void *in);
 /* Reads the "values" object of layout id into *value (sets value->id). */
 int mscipc_value_from_json(mscipc_jr_t *jr, size_t pos, mscipc_field_id_t id, mscipc_field_value_t *value);
 

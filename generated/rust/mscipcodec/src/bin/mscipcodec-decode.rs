@@ -1,5 +1,10 @@
-//! `mscipcodec-decode [--device ID] [--samples] [FILE|-]`: reads a binary stream (FILE, or stdin when
-//! FILE is absent or `-`) and prints the canonical JSON lines of `docs/conformance.md` §4.
+//! `mscipcodec-decode [--device ID] [--samples] [--decoder general|straight|cached] [FILE|-]`: reads a
+//! binary stream (FILE, or stdin when FILE is absent or `-`) and prints the canonical JSON lines of
+//! `docs/conformance.md` §4. `--decoder straight` or `cached` decodes the data packets with
+//! `packets::decode_packet` or a `packets::LayoutCache` (issue 38) and writes their typed members
+//! with the same writer (the same lines: the conformance corpus checks those decoders with it); a
+//! packet whose decoded fields and passed-on entries do not make up its entries ends it with
+//! exit status 1.
 //! Exit status: 0, or 2 for usage and I/O errors (one line on stderr; a closed pipe on stdout
 //! ends it by SIGPIPE). The input is read in blocks as it arrives and decoded in bounded memory;
 //! when stdout is not a regular file, the lines of every block are flushed at once, so a live
@@ -8,14 +13,224 @@
 use std::io::{self, Read, Write};
 use std::process::ExitCode;
 
+use std::fmt::Write as _;
+
+use mscipcodec::dispatch::{write_field_json, write_skip_json};
+use mscipcodec::fields::{FieldItem, Packet};
+use mscipcodec::packets::{decode_packet, AnyPacket, LayoutCache};
+use mscipcodec::parser::{Event, Parser};
+use mscipcodec::samples::SampleTracker;
 use mscipcodec::text::StreamDecoder;
-use mscipcodec::Device;
+use mscipcodec::{json, Device};
 
 const PROG: &str = "mscipcodec-decode";
 
 fn usage_error(message: &str) -> ExitCode {
-    eprintln!("{PROG}: {message} (usage: {PROG} [--device ID] [--samples] [FILE|-])");
+    eprintln!(
+        "{PROG}: {message} (usage: {PROG} [--device ID] [--samples] [--decoder general|straight|cached] [FILE|-])"
+    );
     ExitCode::from(2)
+}
+
+/// The lines of `StreamDecoder` with the data packets decoded by `decode_packet` (straight) or a
+/// `LayoutCache` (cached): each decoded field written from its member (`AnyPacket::field`, the
+/// value `decode_field` gives) by `FieldValue::write_json`, every entry the decoder passed on as
+/// `write_packet_json` writes it.
+struct TypedLines {
+    parser: Parser,
+    device: Option<Device>,
+    samples: Option<SampleTracker>,
+    cache: Option<LayoutCache>,
+    any: Box<AnyPacket>,
+    hist: Vec<u8>,
+    hist_base: u64,
+    /// Stream offset of the first packet the decoder did not cover.
+    mismatch: Option<u64>,
+}
+
+/// An entry a decoder passed on, as it can be kept past the call (its bytes are a slice of the
+/// packet): where its bytes start in the packet and their length, and its descriptor or, for
+/// trailing bytes, its error's text.
+#[derive(PartialEq)]
+enum Kept {
+    Field(usize, usize, u8),
+    Trailing(usize, usize, String),
+}
+
+fn kept(packet: &[u8], item: &FieldItem<'_>) -> Kept {
+    let at = |s: &[u8]| (s.as_ptr() as usize).wrapping_sub(packet.as_ptr() as usize);
+    match item {
+        FieldItem::Field { descriptor, data } => Kept::Field(at(data), data.len(), *descriptor),
+        FieldItem::Trailing { bytes, error } => {
+            Kept::Trailing(at(bytes), bytes.len(), error.to_string())
+        }
+    }
+}
+
+/// An entry as `write_packet_json` writes it.
+fn write_item(out: &mut String, set: u8, item: &FieldItem<'_>, device: Option<Device>) {
+    // Writing to a String cannot fail.
+    let _ = match *item {
+        FieldItem::Field { descriptor, data } => {
+            write_field_json(out, set, descriptor, data, device)
+        }
+        FieldItem::Trailing { bytes, ref error } => (|| {
+            out.write_str("{\"trailing\":\"")?;
+            json::write_hex(out, bytes)?;
+            out.write_str("\",\"error\":")?;
+            json::write_display(out, error)?;
+            out.write_char('}')
+        })(),
+    };
+}
+
+impl TypedLines {
+    fn new(device: Option<Device>, samples: bool, cached: bool) -> Self {
+        Self {
+            parser: Parser::new(),
+            device,
+            samples: samples.then(SampleTracker::new),
+            cache: cached.then(LayoutCache::new),
+            any: Box::default(),
+            hist: Vec::new(),
+            hist_base: 0,
+            mismatch: None,
+        }
+    }
+
+    /// The packet's line from the decoder's result; false when the decoded fields and the
+    /// entries passed on do not make up the packet's entries in order.
+    fn write_packet(&mut self, out: &mut String, offset: u64, bytes: &[u8]) -> bool {
+        let Some(packet) = Packet::new(bytes) else {
+            return true;
+        };
+        let mut others: Vec<Kept> = Vec::new();
+        let keep = |item: FieldItem<'_>| others.push(kept(bytes, &item));
+        match self.cache.as_mut() {
+            Some(cache) => cache.decode(bytes, &mut self.any, keep),
+            None => decode_packet(bytes, &mut self.any, keep),
+        };
+        let decoded: &[u8] = self.any.index().map_or(&[], |i| i.descriptors());
+        let set = packet.set();
+        let _ = write!(out, "{{\"offset\":{offset},\"set\":{set}");
+        let sample_at = out.len();
+        out.push_str(",\"fields\":[");
+        // The entries in packet order (the walk only places them): each is the next entry passed
+        // on when it is that one, else the next decoded field, of its descriptor.
+        let (mut passed, mut next) = (0, 0);
+        for (i, item) in packet.fields().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            if passed < others.len() && others[passed] == kept(bytes, &item) {
+                // the entry the decoder passed on (the same kind, bytes, descriptor or error)
+                write_item(out, set, &item, self.device);
+                passed += 1;
+            } else if let FieldItem::Field { descriptor, .. } = item {
+                match self.any.field(descriptor) {
+                    Some(value) if decoded.get(next) == Some(&descriptor) => {
+                        let _ = value.write_json(out);
+                        next += 1;
+                    }
+                    _ => return false,
+                }
+            } else {
+                return false;
+            }
+        }
+        out.push_str("]}");
+        if passed != others.len() || next != decoded.len() {
+            return false;
+        }
+        if let Some(place) = self.samples.as_mut().and_then(|t| t.feed(&packet)) {
+            out.insert_str(sample_at, &format!(",\"sample\":{}", place.number));
+        }
+        true
+    }
+
+    fn on_event(&mut self, out: &mut String, event: Event<'_>) {
+        if self.mismatch.is_some() {
+            return;
+        }
+        let start = out.len();
+        match event {
+            Event::Skip { offset, count } => {
+                let at = (offset - self.hist_base) as usize;
+                let _ = write_skip_json(out, offset, &self.hist[at..at + count as usize]);
+            }
+            Event::Packet { offset, bytes } => {
+                if !self.write_packet(out, offset, bytes) {
+                    out.truncate(start);
+                    self.mismatch = Some(offset);
+                    return;
+                }
+            }
+        }
+        out.push('\n');
+    }
+
+    fn feed(&mut self, chunk: &[u8], out: &mut String) {
+        self.hist.extend_from_slice(chunk);
+        let mut parser = std::mem::take(&mut self.parser);
+        parser.feed(chunk, |event| self.on_event(out, event));
+        self.parser = parser;
+        self.trim();
+    }
+
+    fn finish(&mut self, out: &mut String) {
+        let mut parser = std::mem::take(&mut self.parser);
+        parser.flush(|event| self.on_event(out, event));
+        self.parser = parser;
+        self.trim();
+    }
+
+    fn trim(&mut self) {
+        let keep = self.parser.retain_from();
+        let drop = (keep - self.hist_base) as usize;
+        if drop > 0 {
+            self.hist.drain(..drop);
+            self.hist_base = keep;
+        }
+    }
+}
+
+/// The general decoder or a typed one.
+enum Lines {
+    General(Box<StreamDecoder>),
+    Typed(Box<TypedLines>, &'static str),
+}
+
+impl Lines {
+    fn feed(&mut self, chunk: &[u8], out: &mut String) {
+        match self {
+            Lines::General(d) => d.feed(chunk, out),
+            Lines::Typed(d, _) => d.feed(chunk, out),
+        }
+    }
+    fn finish(&mut self, out: &mut String) {
+        match self {
+            Lines::General(d) => d.finish(out),
+            Lines::Typed(d, _) => {
+                if d.mismatch.is_none() {
+                    d.finish(out)
+                }
+            }
+        }
+    }
+    /// The decoder's name and the offset of the packet it did not cover.
+    fn mismatch(&self) -> Option<(&'static str, u64)> {
+        match self {
+            Lines::General(_) => None,
+            Lines::Typed(d, name) => d.mismatch.map(|at| (*name, at)),
+        }
+    }
+}
+
+fn mismatch_error(name: &str, at: u64) -> ExitCode {
+    eprintln!(
+        "{PROG}: the {name} decoder's fields and passed-on entries of the packet at offset {at} do not make up its entries"
+    );
+    ExitCode::from(1)
 }
 
 /// The one rule for I/O faults of the tools (docs/conformance.md §5): a closed pipe on stdout
@@ -111,6 +326,7 @@ fn main() -> ExitCode {
     let mut device: Option<Device> = None;
     let mut file: Option<String> = None;
     let mut samples = false;
+    let mut decoder_name = "general";
     let mut i = 0;
     while i < args.len() {
         let arg = args[i].as_str();
@@ -133,6 +349,27 @@ fn main() -> ExitCode {
                     ))
                 }
             }
+        } else if arg == "--decoder" || arg.starts_with("--decoder=") {
+            let name = match arg.strip_prefix("--decoder=") {
+                Some(name) => name,
+                None => {
+                    i += 1;
+                    match args.get(i) {
+                        Some(name) => name.as_str(),
+                        None => return usage_error("--decoder needs general, straight or cached"),
+                    }
+                }
+            };
+            decoder_name = match name {
+                "general" => "general",
+                "straight" => "straight",
+                "cached" => "cached",
+                _ => {
+                    return usage_error(&format!(
+                        "unknown decoder '{name}' (expected general, straight or cached)"
+                    ))
+                }
+            };
         } else if arg == "--samples" {
             samples = true;
         } else if arg == "-h" || arg == "--help" {
@@ -171,10 +408,18 @@ fn main() -> ExitCode {
         Err(e) => return write_error(&e),
     };
     let mut out = io::BufWriter::with_capacity(1 << 16, stdout);
-    let mut decoder = StreamDecoder::new(device);
-    if samples {
-        decoder = decoder.with_samples();
-    }
+    let mut decoder = if decoder_name == "general" {
+        let mut d = StreamDecoder::new(device);
+        if samples {
+            d = d.with_samples();
+        }
+        Lines::General(Box::new(d))
+    } else {
+        Lines::Typed(
+            Box::new(TypedLines::new(device, samples, decoder_name == "cached")),
+            decoder_name,
+        )
+    };
     let mut buf = vec![0u8; 1 << 16];
     let mut text = String::new();
     loop {
@@ -193,6 +438,12 @@ fn main() -> ExitCode {
         text.clear();
         decoder.feed(&buf[..n], &mut text);
         let written = out.write_all(text.as_bytes());
+        if let Some((name, at)) = decoder.mismatch() {
+            if let Err(e) = written.and_then(|()| out.flush()) {
+                return write_error(&e);
+            }
+            return mismatch_error(name, at);
+        }
         if let Err(e) = written.and_then(|()| if is_file { Ok(()) } else { out.flush() }) {
             return write_error(&e);
         }
@@ -201,6 +452,9 @@ fn main() -> ExitCode {
     decoder.finish(&mut text);
     if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         return write_error(&e);
+    }
+    if let Some((name, at)) = decoder.mismatch() {
+        return mismatch_error(name, at);
     }
     ExitCode::SUCCESS
 }

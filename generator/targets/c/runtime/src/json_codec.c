@@ -103,6 +103,83 @@ size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset
     return codec_jw_finish(&w);
 }
 
+/* The object of the i-th field a straight-line decoder decoded (set's field with a single layout),
+ * written from its typed member with the writer the general path uses. */
+static void member_json(codec_jw_t *w, uint8_t set, const codec_packet_index_t *index, size_t i) {
+    const uint8_t descriptor = index->fields[i].descriptor;
+    codec_status_t why = CODEC_ERR_UNKNOWN_SET;
+    const codec_field_info_t *f = codec_find_field(set, descriptor, &why);
+    const codec_layout_info_t *info;
+    codec_jw_lit(w, "{\"descriptor\":");
+    codec_jw_uint(w, descriptor);
+    if (!f) {
+        codec_jw_lit(w, ",\"error\":\"no field for a decoded member\"}"); /* never: a member is a field */
+        return;
+    }
+    info = codec_layout_info(f->first_layout);
+    codec_jw_lit(w, ",\"name\":\"");
+    codec_jw_lit(w, info->name);
+    codec_jw_lit(w, "\"");
+    if (info->device) {
+        codec_jw_lit(w, ",\"device\":\"");
+        codec_jw_lit(w, info->device);
+        codec_jw_lit(w, "\"");
+    }
+    codec_jw_lit(w, ",\"values\":");
+    codec_layout_to_json(w, f->first_layout, codec_packet_value(index, i));
+    codec_jw_lit(w, "}");
+}
+
+size_t codec_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t offset,
+                                      codec_device_t device, const codec_packet_index_t *index,
+                                      const codec_field_entry_t *others, size_t other_count, char *out,
+                                      size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(others != NULL || other_count == 0);
+    assert(out != NULL || cap == 0);
+    codec_jw_t w;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    size_t payload = 0;
+    size_t i = 0;
+    size_t decoded = 0;
+    size_t passed = 0;
+    uint8_t set = 0;
+    if (len >= CODEC_HEADER_SIZE) {
+        set = packet[CODEC_SET_OFFSET];
+        payload = packet[CODEC_LENGTH_OFFSET];
+        if (payload > len - CODEC_HEADER_SIZE) {
+            payload = len - CODEC_HEADER_SIZE;
+        }
+    }
+    codec_jw_init(&w, out, cap);
+    codec_jw_lit(&w, "{\"offset\":");
+    codec_jw_uint(&w, offset);
+    codec_jw_lit(&w, ",\"set\":");
+    codec_jw_uint(&w, set);
+    codec_jw_lit(&w, ",\"fields\":[");
+    /* The entries in packet order (the walk only places them): each is the next entry passed on
+     * when it starts where that one does, else the next decoded field, which must have its
+     * descriptor. */
+    codec_field_iter_init(&it, set, len >= CODEC_HEADER_SIZE ? packet + CODEC_HEADER_SIZE : NULL, payload);
+    while (codec_field_iter_next(&it, &e)) {
+        codec_jw_sep(&w, i++);
+        if (passed < other_count && others[passed].offset == e.offset && others[passed].kind == e.kind) {
+            field_json(&w, set, &others[passed++], device);
+        } else if (e.kind == CODEC_ENTRY_FIELD && index != NULL && decoded < index->count &&
+                   index->fields[decoded].descriptor == e.descriptor) {
+            member_json(&w, set, index, decoded++);
+        } else {
+            return 0;
+        }
+    }
+    if (passed != other_count || decoded != (index != NULL ? index->count : 0)) {
+        return 0;
+    }
+    codec_jw_lit(&w, "]}");
+    return codec_jw_finish(&w);
+}
+
 /* ------------------------------------------------------------------ JSON line -> bytes */
 
 static const char *const k_packet_keys[] = {"offset", "set", "fields"};

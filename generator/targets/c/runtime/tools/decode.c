@@ -1,8 +1,10 @@
-/* codec-decode [--device ID] [--samples] [FILE|-]: binary stream -> canonical JSON lines
- * (docs/conformance.md section 5). The input is read in blocks as it arrives and decoded in
- * bounded memory: only the bytes the parser has not decided on are kept (a candidate packet, or
- * the bytes of a pending skip run; a skip run longer than k_skip_spill is printed as it grows).
- * When stdout is not a regular file, the lines of every block are flushed as soon as they are
+/* codec-decode [--device ID] [--samples] [--decoder general|straight|cached] [FILE|-]: binary stream
+ * -> canonical JSON lines (docs/conformance.md section 5). --decoder straight or cached decodes the
+ * data packets with codec_decode_packet or codec_decode_packet_cached (issue 38) and writes their
+ * typed members (the same lines: the conformance corpus checks those decoders with it). The input is read in
+ * blocks as it arrives and decoded in bounded memory: only the bytes the parser has not decided on are kept
+ * (a candidate packet, or the bytes of a pending skip run; a skip run longer than k_skip_spill is printed as
+ * it grows). When stdout is not a regular file, the lines of every block are flushed as soon as they are
  * printed, so a live stream shows each packet when it arrives. */
 #if defined(__unix__) || defined(__APPLE__)
 #define _POSIX_C_SOURCE 200809L
@@ -12,7 +14,8 @@
 #include "codec/samples.h"
 #include "tool_io.h"
 
-static const char k_usage[] = "usage: codec-decode [--device ID] [--samples] [FILE|-]\n";
+static const char k_usage[] =
+    "usage: codec-decode [--device ID] [--samples] [--decoder general|straight|cached] [FILE|-]\n";
 static const char k_prog[] = "codec-decode";
 static const char k_hex_digits[] = "0123456789abcdef";
 
@@ -35,7 +38,26 @@ typedef struct {
     int skip_open;      /* a skip line's start is printed, its end is not */
     uint64_t skip_done; /* stream offset up to which the open skip line's bytes are printed */
     codec_sample_tracker_t tracker;
+    int decoder;                       /* k_general, k_straight or k_cached */
+    uint64_t mismatch;                 /* stream offset + 1 of a packet the decoder did not cover, or 0 */
+    const codec_packet_index_t *index; /* of the packet being printed (k_straight, k_cached) */
+    size_t other_count;                /* entries passed on, in g_others */
 } decode_ctx_t;
+
+enum { k_general, k_straight, k_cached };
+
+/* What --decoder straight or cached decodes into, and the entries it passes on (static: large). */
+static codec_packet_t g_packet;
+static codec_layout_cache_t g_cache;
+static codec_field_entry_t g_others[CODEC_PACKET_FIELDS_MAX + 1];
+
+static void keep_other(void *arg, const codec_field_entry_t *entry) {
+    decode_ctx_t *ctx = (decode_ctx_t *)arg;
+    if (ctx->other_count < sizeof g_others / sizeof g_others[0]) {
+        g_others[ctx->other_count] = *entry;
+    }
+    ctx->other_count++; /* more than fit: reported as a mismatch */
+}
 
 static int grow(decode_ctx_t *ctx, size_t need) {
     char *bigger = (char *)realloc(ctx->line, need + 1);
@@ -67,6 +89,17 @@ static size_t format(decode_ctx_t *ctx, const codec_event_t *ev) {
         return codec_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
                                     (size_t)ev->length, ctx->line, ctx->line_cap);
     }
+    if (ctx->decoder != k_general) {
+        size_t n = ctx->other_count <= sizeof g_others / sizeof g_others[0]
+                       ? codec_json_decoded_packet_line(ev->packet, (size_t)ev->length, ev->offset,
+                                                        ctx->device, ctx->index, g_others, ctx->other_count,
+                                                        ctx->line, ctx->line_cap)
+                       : 0;
+        if (n == 0 && !ctx->mismatch) {
+            ctx->mismatch = ev->offset + 1;
+        }
+        return n;
+    }
     return codec_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, ctx->device, ctx->line,
                                   ctx->line_cap);
 }
@@ -83,7 +116,16 @@ static void on_event(void *arg, const codec_event_t *ev) {
         ctx->skip_open = 0;
         return;
     }
+    if (ev->kind == CODEC_EVENT_PACKET && ctx->decoder != k_general) {
+        ctx->other_count = 0;
+        ctx->index = ctx->decoder == k_cached
+                         ? codec_decode_packet_cached(&g_cache, ev->packet, &g_packet, keep_other, ctx)
+                         : codec_decode_packet(ev->packet, &g_packet, keep_other, ctx);
+    }
     need = format(ctx, ev);
+    if (ctx->mismatch) {
+        return;
+    }
     if (need >= ctx->line_cap) {
         if (grow(ctx, need)) {
             return;
@@ -154,6 +196,7 @@ static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
     codec_parser_t parser;
     const int flush_blocks = !tool_stdout_is_file();
     codec_parser_init(&parser);
+    codec_layout_cache_init(&g_cache);
     codec_sample_tracker_init(&ctx->tracker);
     for (;;) {
         long n;
@@ -188,12 +231,21 @@ static int run(decode_ctx_t *ctx, FILE *in, const char *name) {
         if (ctx->write_err) {
             return tool_write_error(k_prog, ctx->write_err);
         }
-        if (ctx->failed) {
+        if (ctx->failed || ctx->mismatch) {
             break;
         }
     }
-    if (!ctx->failed) {
+    if (!ctx->failed && !ctx->mismatch) {
         codec_parser_flush(&parser, on_event, ctx);
+    }
+    if (ctx->mismatch) {
+        tool_flush(&ctx->write_err);
+        fprintf(stderr,
+                "%s: the %s decoder's fields and passed-on entries of the packet at offset %llu do not make "
+                "up its entries\n",
+                k_prog, ctx->decoder == k_cached ? "cached" : "straight",
+                (unsigned long long)(ctx->mismatch - 1));
+        return 1;
     }
     if (ctx->failed) {
         fprintf(stderr, "%s: out of memory\n", k_prog);
@@ -226,6 +278,22 @@ int main(int argc, char **argv) {
             id = argv[++i];
         } else if (strncmp(a, "--device=", 9) == 0) {
             id = a + 9;
+        } else if (strcmp(a, "--decoder") == 0 || strncmp(a, "--decoder=", 10) == 0) {
+            const char *name = a[9] == '=' ? a + 10 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!name) {
+                return usage_error("--decoder needs general, straight or cached");
+            }
+            if (strcmp(name, "general") == 0) {
+                ctx.decoder = k_general;
+            } else if (strcmp(name, "straight") == 0) {
+                ctx.decoder = k_straight;
+            } else if (strcmp(name, "cached") == 0) {
+                ctx.decoder = k_cached;
+            } else {
+                fprintf(stderr, "%s: unknown decoder '%s' (expected general, straight or cached)\n%s", k_prog,
+                        name, k_usage);
+                return 2;
+            }
         } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             fputs(k_usage, stdout);
             return 0;

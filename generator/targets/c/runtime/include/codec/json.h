@@ -37,6 +37,18 @@ size_t codec_json_format_string(const char *bytes, size_t n, char *buf, size_t c
  */
 size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
                               char *out, size_t cap);
+/**
+ * The JSON line of codec_json_packet_line, from a packet that codec_decode_packet or
+ * codec_decode_packet_cached decoded (issue 38; the decode tool's --decoder): the fields of index
+ * (may be NULL: none) are written from their typed members, and the entries the decoder passed to
+ * other, copied in order into others[0..other_count), through the general path. The same bytes as
+ * codec_json_packet_line for a correct decoder. Returns the full length, like snprintf, or 0 when
+ * the decoded fields and the entries passed on do not make up the packet's entries in order.
+ */
+size_t codec_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t offset,
+                                      codec_device_t device, const codec_packet_index_t *index,
+                                      const codec_field_entry_t *others, size_t other_count, char *out,
+                                      size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
 size_t codec_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
 

@@ -4,36 +4,40 @@
 #include "layouts_internal.h"
 
 void democ_value_to_json(democ_jw_t *w, const democ_field_value_t *value) {
-    switch (value->id) {
+    democ_layout_to_json(w, value->id, &value->u);
+}
+
+void democ_layout_to_json(democ_jw_t *w, democ_field_id_t id, const void *in) {
+    switch (id) {
     case DEMOC_FIELD_ACK:
-        democ_ack_to_json(w, &value->u.ack);
+        democ_ack_to_json(w, (const democ_ack_t *)in);
         return;
     case DEMOC_FIELD_COMMANDS_PING:
-        democ_commands_ping_to_json(w, &value->u.commands_ping);
+        democ_commands_ping_to_json(w, (const democ_commands_ping_t *)in);
         return;
     case DEMOC_FIELD_COMMANDS_CONFIGURE:
-        democ_commands_configure_to_json(w, &value->u.commands_configure);
+        democ_commands_configure_to_json(w, (const democ_commands_configure_t *)in);
         return;
     case DEMOC_FIELD_COMMANDS_CONFIGURATION:
-        democ_commands_configuration_to_json(w, &value->u.commands_configuration);
+        democ_commands_configuration_to_json(w, (const democ_commands_configuration_t *)in);
         return;
     case DEMOC_FIELD_COMMANDS_PER_DEVICE_DEV_A:
-        democ_commands_per_device_dev_a_to_json(w, &value->u.commands_per_device_dev_a);
+        democ_commands_per_device_dev_a_to_json(w, (const democ_commands_per_device_dev_a_t *)in);
         return;
     case DEMOC_FIELD_COMMANDS_PER_DEVICE_DEV_B:
-        democ_commands_per_device_dev_b_to_json(w, &value->u.commands_per_device_dev_b);
+        democ_commands_per_device_dev_b_to_json(w, (const democ_commands_per_device_dev_b_t *)in);
         return;
     case DEMOC_FIELD_DATA_SAMPLE:
-        democ_data_sample_to_json(w, &value->u.data_sample);
+        democ_data_sample_to_json(w, (const democ_data_sample_t *)in);
         return;
     case DEMOC_FIELD_RECEIVER_1_LLH_POSITION:
-        democ_receiver_1_llh_position_to_json(w, &value->u.receiver_1_llh_position);
+        democ_receiver_1_llh_position_to_json(w, (const democ_receiver_1_llh_position_t *)in);
         return;
     case DEMOC_FIELD_RECEIVER_2_LLH_POSITION:
-        democ_receiver_2_llh_position_to_json(w, &value->u.receiver_2_llh_position);
+        democ_receiver_2_llh_position_to_json(w, (const democ_receiver_2_llh_position_t *)in);
         return;
     case DEMOC_FIELD_SHARED_TIMESTAMP:
-        democ_shared_timestamp_to_json(w, &value->u.shared_timestamp);
+        democ_shared_timestamp_to_json(w, (const democ_shared_timestamp_t *)in);
         return;
     case DEMOC_FIELD_NONE:
     case DEMOC_FIELD_COUNT:

@@ -41,6 +41,9 @@ int democ_shared_timestamp_from_json(democ_jr_t *jr, size_t pos, democ_shared_ti
 
 /* The "values" object of a decoded field. */
 void democ_value_to_json(democ_jw_t *w, const democ_field_value_t *value);
+/* The "values" object of a typed struct of layout id (in: a democ_<layout>_t, e.g. a member of a
+ * set's packet struct that a straight-line decoder filled). */
+void democ_layout_to_json(democ_jw_t *w, democ_field_id_t id, const void *in);
 /* Reads the "values" object of layout id into *value (sets value->id). */
 int democ_value_from_json(democ_jr_t *jr, size_t pos, democ_field_id_t id, democ_field_value_t *value);
 
