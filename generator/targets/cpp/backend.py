@@ -791,6 +791,8 @@ def session_context(P: _Protocol) -> dict:
     fields = {(s["id"], f["name"]): f for s in proto["sets"] for f in s["fields"]}
     rows = []
     for lay in cm.layouts:
+        if len(lay.reads) > 8:
+            raise ValueError("the C++ session's CommandFacts hold at most 8 parameter slots (kMaxParamSlots)")
         v = fields[(lay.set, lay.field)]["variants"][lay.variant]
         params = {q["name"]: q for q in v["params"]}
         rows.append(
