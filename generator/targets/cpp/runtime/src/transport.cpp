@@ -29,8 +29,8 @@ struct FactsPick {
 
 } // namespace
 
-bool Connection::facts_of(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data, std::size_t size,
-                          CommandFacts &facts) {
+bool Connection::facts_of(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data,
+                          std::size_t size, CommandFacts &facts) {
     FactsPick pick{facts};
     decode_field(set, descriptor, data, size, session_.options().device, pick);
     return pick.have;
@@ -139,9 +139,9 @@ void Connection::record(const CommandFacts &facts, const std::uint8_t *packet, s
     }
     const std::size_t key = key_size(row.set, row.descriptor, e.data, e.size);
     std::size_t i = 0;
-    while (i < setting_count_ &&
-           !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
-             settings_[i].key_size == key && std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
+    while (i < setting_count_ && !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
+                                   settings_[i].key_size == key &&
+                                   std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
         ++i;
     }
     if (i == setting_count_ && setting_count_ == kMaxSettings) {

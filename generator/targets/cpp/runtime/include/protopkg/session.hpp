@@ -366,7 +366,8 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     }
     /// start() with the command's facts computed already (command_facts(command)).
     template <class T>
-    Started start(const CommandFacts &facts, const T &command, std::int64_t now, const StartOptions &call = {}) {
+    Started start(const CommandFacts &facts, const T &command, std::int64_t now,
+                  const StartOptions &call = {}) {
         static_assert(CommandTraits<T>::kCommand, "not a command layout");
         Started s;
         if (refuse_unsupported(facts, call, s)) {
@@ -473,8 +474,8 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         return false;
     }
     /// The rest of start(), once the command is in out_ (`encoded`: how its encoding went).
-    Started &started(const CommandFacts &facts, EncodeError encoded, std::int64_t now, const StartOptions &call,
-                     Started &s) {
+    Started &started(const CommandFacts &facts, EncodeError encoded, std::int64_t now,
+                     const StartOptions &call, Started &s) {
         if (encoded != EncodeError::none) {
             s.complete = true;
             s.result.status = Status::refused;

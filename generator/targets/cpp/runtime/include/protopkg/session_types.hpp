@@ -55,7 +55,7 @@ inline constexpr std::size_t kMaxParamSlots = 8;
 /// connection's loop are plain functions, not one instance per command type.
 struct CommandFacts {
     const CommandRow *row = nullptr;
-    std::optional<std::int64_t> function;                            ///< its function selector value
+    std::optional<std::int64_t> function;                             ///< its function selector value
     std::array<std::optional<std::int64_t>, kMaxParamSlots> params{}; ///< by slot
     std::optional<std::int64_t> param(std::int8_t slot) const {
         if (slot < 0 || static_cast<std::size_t>(slot) >= kMaxParamSlots) {
