@@ -24,6 +24,22 @@
 namespace protopkg {
 namespace detail {
 
+/// The members of a decoded field's object before its values (`device`: nullptr for a field
+/// without per-device layouts). Out of line of the per-layout code (compile cost, issue 39).
+PROTOPKG_NOINLINE inline void write_field_head(JsonWriter &w, unsigned descriptor, const char *name,
+                                               const char *device) {
+    w.begin_object();
+    w.key("descriptor");
+    w.uinteger(descriptor);
+    w.key("name");
+    w.string(name);
+    if (device != nullptr) {
+        w.key("device");
+        w.string(device);
+    }
+    w.key("values");
+}
+
 struct FieldJsonVisitor {
     JsonWriter &w;
     std::uint8_t descriptor;
@@ -31,20 +47,15 @@ struct FieldJsonVisitor {
     std::size_t size;
 
     template <class T> void field(const T &value) {
-        w.begin_object();
-        w.key("descriptor");
-        w.uinteger(T::kDescriptor);
-        w.key("name");
-        w.string(T::kName);
         if constexpr (T::kHasVariants) {
-            w.key("device");
-            w.string(T::kDevice);
+            write_field_head(w, T::kDescriptor, T::kName, T::kDevice);
+        } else {
+            write_field_head(w, T::kDescriptor, T::kName, nullptr);
         }
-        w.key("values");
         Json<T>::write(w, value);
         w.end_object();
     }
-    void raw(const DecodeError &err) {
+    PROTOPKG_NOINLINE void raw(const DecodeError &err) {
         w.begin_object();
         w.key("descriptor");
         w.uinteger(descriptor);
@@ -257,6 +268,39 @@ inline bool error_text_ok(const json::Value &f, JsonError &err) {
     return true;
 }
 
+// The error messages of EncodeLayouts, out of line of the per-layout code (compile cost, issue 39).
+PROTOPKG_NOINLINE inline void no_variants_error(JsonError &err, const char *name) {
+    err.path = "device";
+    err.message = std::string("field '") + name + "' has no per-device layouts";
+}
+PROTOPKG_NOINLINE inline void name_device_error(JsonError &err, const char *name) {
+    err.path = "device";
+    err.message = std::string("field '") + name + "' has per-device layouts; name the device";
+}
+PROTOPKG_NOINLINE inline void no_layout_error(JsonError &err, const char *name, const std::string &device) {
+    err.path = "device";
+    err.message =
+        std::string("field '") + name + "' has no layout for device '" + json::printable(device) + "'";
+}
+PROTOPKG_NOINLINE inline bool name_error(JsonError &err, unsigned descriptor, const char *expected,
+                                         const std::string &name) {
+    if (name == expected) {
+        return false;
+    }
+    err.path = "name";
+    err.message = "descriptor " + std::to_string(descriptor) + " is '" + expected + "', not '" +
+                  json::printable(name) + "'";
+    return true;
+}
+PROTOPKG_NOINLINE inline bool add_error(JsonError &err, EncodeError e) {
+    if (e == EncodeError::none) {
+        return false;
+    }
+    err.path = "values";
+    err.message = to_string(e);
+    return true;
+}
+
 struct EncodeLayouts {
     const json::Value &values;
     const std::string &name;
@@ -269,24 +313,20 @@ struct EncodeLayouts {
     template <class T, class... Rest> void operator()(Layouts<T, Rest...>) {
         if constexpr (!T::kHasVariants) {
             if (device != nullptr) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has no per-device layouts";
+                no_variants_error(err, T::kName);
                 return;
             }
             matched = true;
             encode_as<T>();
         } else {
             if (device == nullptr || device->type != json::Value::Type::string) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has per-device layouts; name the device";
+                name_device_error(err, T::kName);
                 return;
             }
             attempt<T>();
             (attempt<Rest>(), ...);
             if (!matched) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has no layout for device '" +
-                              json::printable(device->text) + "'";
+                no_layout_error(err, T::kName, device->text);
             }
         }
     }
@@ -299,10 +339,7 @@ struct EncodeLayouts {
     }
 
     template <class T> void encode_as() {
-        if (name != T::kName) {
-            err.path = "name";
-            err.message = "descriptor " + std::to_string(T::kDescriptor) + " is '" + T::kName + "', not '" +
-                          json::printable(name) + "'";
+        if (name_error(err, T::kDescriptor, T::kName, name)) {
             return;
         }
         T value{};
@@ -310,10 +347,7 @@ struct EncodeLayouts {
             err.enter("values");
             return;
         }
-        const EncodeError e = builder.add(value);
-        if (e != EncodeError::none) {
-            err.path = "values";
-            err.message = to_string(e);
+        if (add_error(err, builder.add(value))) {
             return;
         }
         ok = true;

@@ -459,8 +459,10 @@ template <std::size_t N = kDefaultMaxPending> class Session {
 
   private:
     /// The first part of start(): the result's row, tag and expected replies; true (a refused
-    /// result) when the device does not support the command.
-    bool refuse_unsupported(const CommandFacts &facts, const StartOptions &call, Started &s) const {
+    /// result) when the device does not support the command. Not inlined into each start<T>
+    /// (compile cost, issue 39), nor started().
+    PROTOPKG_NOINLINE bool refuse_unsupported(const CommandFacts &facts, const StartOptions &call,
+                                              Started &s) const {
         s.result.row = facts.row;
         s.result.tag = call.tag;
         s.result.expect_count = expected_replies(facts, s.result.expect);
@@ -474,8 +476,8 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         return false;
     }
     /// The rest of start(), once the command is in out_ (`encoded`: how its encoding went).
-    Started &started(const CommandFacts &facts, EncodeError encoded, std::int64_t now,
-                     const StartOptions &call, Started &s) {
+    PROTOPKG_NOINLINE Started &started(const CommandFacts &facts, EncodeError encoded, std::int64_t now,
+                                       const StartOptions &call, Started &s) {
         if (encoded != EncodeError::none) {
             s.complete = true;
             s.result.status = Status::refused;
