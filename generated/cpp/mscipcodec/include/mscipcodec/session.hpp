@@ -371,11 +371,12 @@ template <std::size_t N = kDefaultMaxPending> class Session {
                   const StartOptions &call = {}) {
         static_assert(CommandTraits<T>::kCommand, "not a command layout");
         Started s;
-        if (refuse_unsupported(facts, call, s)) {
+        if (refused(facts, call, s)) {
             return s;
         }
         out_ = PacketBuilder(facts.row->set);
-        return started(facts, out_.add(command), now, call, s);
+        started(facts, out_.add(command), now + call.timeout_ms.value_or(opt_.timeout_ms), s);
+        return s;
     }
     /// start() of a command given as its field data (`size` bytes after the field header: the
     /// function selector first when the row has one) and its facts: the connection's own commands
@@ -383,11 +384,13 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     Started start_raw(const CommandFacts &facts, const std::uint8_t *data, std::size_t size, std::int64_t now,
                       const StartOptions &call = {}) {
         Started s;
-        if (refuse_unsupported(facts, call, s)) {
+        if (refused(facts, call, s)) {
             return s;
         }
         out_ = PacketBuilder(facts.row->set);
-        return started(facts, out_.add_raw_field(facts.row->descriptor, data, size), now, call, s);
+        const EncodeError e = out_.add_raw_field(facts.row->descriptor, data, size);
+        started(facts, e, now + call.timeout_ms.value_or(opt_.timeout_ms), s);
+        return s;
     }
 
     /// The earliest time at which poll() has something to do: the earliest command deadline, and
@@ -462,13 +465,12 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     /// The first part of start(): the result's row, tag and expected replies; true (a refused
     /// result) when the device does not support the command. Not inlined into each start<T>
     /// (compile cost, issue 39), nor started().
-    MSCIPCODEC_NOINLINE bool refuse_unsupported(const CommandFacts &facts, const StartOptions &call,
-                                                Started &s) const {
-        s.result.row = facts.row;
+    MSCIPCODEC_NOINLINE bool refused(const CommandFacts &f, const StartOptions &call, Started &s) const {
+        s.result.row = f.row;
         s.result.tag = call.tag;
-        s.result.expect_count = expected_replies(facts, s.result.expect);
+        s.result.expect_count = expected_replies(f, s.result.expect);
         const bool check = call.check_device.value_or(opt_.check_device);
-        if (check && support_error(facts, opt_.device, s.result.error)) {
+        if (check && support_error(f, opt_.device, s.result.error)) {
             s.complete = true;
             s.result.status = Status::refused;
             s.result.has_error = true;
@@ -476,24 +478,24 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         }
         return false;
     }
-    /// The rest of start(), once the command is in out_ (`encoded`: how its encoding went).
-    MSCIPCODEC_NOINLINE Started &started(const CommandFacts &facts, EncodeError encoded, std::int64_t now,
-                                         const StartOptions &call, Started &s) {
-        if (encoded != EncodeError::none) {
+    /// The rest of start(), once the command is in out_ (`e`: how its encoding went; `at`: `now`
+    /// plus the reply timeout, to which the command's allowance is added).
+    MSCIPCODEC_NOINLINE void started(const CommandFacts &f, EncodeError e, std::int64_t at, Started &s) {
+        if (e != EncodeError::none) {
             s.complete = true;
             s.result.status = Status::refused;
             s.result.has_error = true;
             std::snprintf(s.result.error.text.data(), s.result.error.text.size(), "%s",
                           to_string(out_.error()));
-            return s;
+            return;
         }
         const PacketView bytes = out_.finish();
-        s.deadline = now + call.timeout_ms.value_or(opt_.timeout_ms) + allowance_ms(facts);
-        if (ack_suppressed(facts)) {
+        s.deadline = at + allowance_ms(f);
+        if (ack_suppressed(f)) {
             s.packet = bytes;
             s.complete = true;
             s.result.status = Status::sent;
-            return s;
+            return;
         }
         if (count_ >= N) {
             s.complete = true;
@@ -501,16 +503,15 @@ template <std::size_t N = kDefaultMaxPending> class Session {
             s.result.has_error = true;
             std::snprintf(s.result.error.text.data(), s.result.error.text.size(),
                           "%llu commands already pending", static_cast<unsigned long long>(N));
-            return s;
+            return;
         }
         s.packet = bytes;
         Slot &slot = queue_[count_++];
-        slot.row = facts.row;
+        slot.row = f.row;
         slot.deadline = s.deadline;
-        slot.tag = call.tag;
+        slot.tag = s.result.tag;
         slot.expect = s.result.expect;
         slot.expect_count = s.result.expect_count;
-        return s;
     }
 
     struct Slot {

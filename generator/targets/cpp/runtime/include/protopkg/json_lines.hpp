@@ -24,22 +24,6 @@
 namespace protopkg {
 namespace detail {
 
-/// The members of a decoded field's object before its values (`device`: nullptr for a field
-/// without per-device layouts). Out of line of the per-layout code (compile cost, issue 39).
-PROTOPKG_NOINLINE inline void write_field_head(JsonWriter &w, unsigned descriptor, const char *name,
-                                               const char *device) {
-    w.begin_object();
-    w.key("descriptor");
-    w.uinteger(descriptor);
-    w.key("name");
-    w.string(name);
-    if (device != nullptr) {
-        w.key("device");
-        w.string(device);
-    }
-    w.key("values");
-}
-
 struct FieldJsonVisitor {
     JsonWriter &w;
     std::uint8_t descriptor;
@@ -48,12 +32,26 @@ struct FieldJsonVisitor {
 
     template <class T> void field(const T &value) {
         if constexpr (T::kHasVariants) {
-            write_field_head(w, T::kDescriptor, T::kName, T::kDevice);
+            head(T::kDescriptor, T::kName, T::kDevice);
         } else {
-            write_field_head(w, T::kDescriptor, T::kName, nullptr);
+            head(T::kDescriptor, T::kName, nullptr);
         }
         Json<T>::write(w, value);
         w.end_object();
+    }
+    /// The members of a decoded field's object before its values (`device`: nullptr for a field
+    /// without per-device layouts). Out of line of the per-layout code (compile cost, issue 39).
+    PROTOPKG_NOINLINE void head(unsigned id, const char *name, const char *device) {
+        w.begin_object();
+        w.key("descriptor");
+        w.uinteger(id);
+        w.key("name");
+        w.string(name);
+        if (device != nullptr) {
+            w.key("device");
+            w.string(device);
+        }
+        w.key("values");
     }
     PROTOPKG_NOINLINE void raw(const DecodeError &err) {
         w.begin_object();
@@ -268,39 +266,6 @@ inline bool error_text_ok(const json::Value &f, JsonError &err) {
     return true;
 }
 
-// The error messages of EncodeLayouts, out of line of the per-layout code (compile cost, issue 39).
-PROTOPKG_NOINLINE inline void no_variants_error(JsonError &err, const char *name) {
-    err.path = "device";
-    err.message = std::string("field '") + name + "' has no per-device layouts";
-}
-PROTOPKG_NOINLINE inline void name_device_error(JsonError &err, const char *name) {
-    err.path = "device";
-    err.message = std::string("field '") + name + "' has per-device layouts; name the device";
-}
-PROTOPKG_NOINLINE inline void no_layout_error(JsonError &err, const char *name, const std::string &device) {
-    err.path = "device";
-    err.message =
-        std::string("field '") + name + "' has no layout for device '" + json::printable(device) + "'";
-}
-PROTOPKG_NOINLINE inline bool name_error(JsonError &err, unsigned descriptor, const char *expected,
-                                         const std::string &name) {
-    if (name == expected) {
-        return false;
-    }
-    err.path = "name";
-    err.message = "descriptor " + std::to_string(descriptor) + " is '" + expected + "', not '" +
-                  json::printable(name) + "'";
-    return true;
-}
-PROTOPKG_NOINLINE inline bool add_error(JsonError &err, EncodeError e) {
-    if (e == EncodeError::none) {
-        return false;
-    }
-    err.path = "values";
-    err.message = to_string(e);
-    return true;
-}
-
 struct EncodeLayouts {
     const json::Value &values;
     const std::string &name;
@@ -313,20 +278,20 @@ struct EncodeLayouts {
     template <class T, class... Rest> void operator()(Layouts<T, Rest...>) {
         if constexpr (!T::kHasVariants) {
             if (device != nullptr) {
-                no_variants_error(err, T::kName);
+                no_variants(T::kName);
                 return;
             }
             matched = true;
             encode_as<T>();
         } else {
             if (device == nullptr || device->type != json::Value::Type::string) {
-                name_device_error(err, T::kName);
+                name_device(T::kName);
                 return;
             }
             attempt<T>();
             (attempt<Rest>(), ...);
             if (!matched) {
-                no_layout_error(err, T::kName, device->text);
+                no_layout(T::kName);
             }
         }
     }
@@ -339,7 +304,7 @@ struct EncodeLayouts {
     }
 
     template <class T> void encode_as() {
-        if (name_error(err, T::kDescriptor, T::kName, name)) {
+        if (wrong_name(T::kDescriptor, T::kName)) {
             return;
         }
         T value{};
@@ -347,10 +312,42 @@ struct EncodeLayouts {
             err.enter("values");
             return;
         }
-        if (add_error(err, builder.add(value))) {
+        if (add_failed(builder.add(value))) {
             return;
         }
         ok = true;
+    }
+
+    // The error messages, out of line of the per-layout code (compile cost, issue 39).
+    PROTOPKG_NOINLINE void no_variants(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has no per-device layouts";
+    }
+    PROTOPKG_NOINLINE void name_device(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has per-device layouts; name the device";
+    }
+    PROTOPKG_NOINLINE void no_layout(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has no layout for device '" +
+                      json::printable(device->text) + "'";
+    }
+    PROTOPKG_NOINLINE bool wrong_name(unsigned id, const char *want) {
+        if (name == want) {
+            return false;
+        }
+        err.path = "name";
+        err.message =
+            "descriptor " + std::to_string(id) + " is '" + want + "', not '" + json::printable(name) + "'";
+        return true;
+    }
+    PROTOPKG_NOINLINE bool add_failed(EncodeError e) {
+        if (e == EncodeError::none) {
+            return false;
+        }
+        err.path = "values";
+        err.message = to_string(e);
+        return true;
     }
 };
 
