@@ -74,7 +74,7 @@ RUNTIME_HEADERS = [
 
 # The hand-written runtime's sources (runtime/src/), compiled into the library with the generated
 # ones (library_sources): the members that instantiate the field dispatch once for every program.
-RUNTIME_SOURCES = ["dispatch.cpp", "json_lines.cpp", "transport.cpp"]
+RUNTIME_SOURCES = ["dispatch.cpp", "json_encode.cpp", "json_lines.cpp", "transport.cpp"]
 
 
 def runtime_files(pkg: str) -> dict[str, str]:
