@@ -74,7 +74,7 @@ RUNTIME_HEADERS = [
 
 # The hand-written runtime's sources (runtime/src/), compiled into the library with the generated
 # ones (library_sources): the members that instantiate the field dispatch once for every program.
-RUNTIME_SOURCES = ["dispatch.cpp", "json_lines.cpp", "transport.cpp"]
+RUNTIME_SOURCES = ["dispatch.cpp", "json_encode.cpp", "json_lines.cpp", "transport.cpp"]
 
 
 def runtime_files(pkg: str) -> dict[str, str]:
@@ -791,6 +791,8 @@ def session_context(P: _Protocol) -> dict:
     fields = {(s["id"], f["name"]): f for s in proto["sets"] for f in s["fields"]}
     rows = []
     for lay in cm.layouts:
+        if len(lay.reads) > 8:
+            raise ValueError("the C++ session's CommandFacts hold at most 8 parameter slots (kMaxParamSlots)")
         v = fields[(lay.set, lay.field)]["variants"][lay.variant]
         params = {q["name"]: q for q in v["params"]}
         rows.append(

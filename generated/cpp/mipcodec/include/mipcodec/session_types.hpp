@@ -3,6 +3,7 @@
 // section 8): one CommandRow of constant integers per command layout, no allocation.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -45,6 +46,24 @@ struct CommandRow {
 /// value of a parameter the row's rules name, nullopt when absent).
 template <class T> struct CommandTraits {
     static constexpr bool kCommand = false;
+};
+
+/// The parameter slots a command layout's rules may name (the generator refuses more).
+inline constexpr std::size_t kMaxParamSlots = 8;
+
+/// What the session's rules read of one command value, computed once from its CommandTraits
+/// (session.hpp command_facts) or from its field bytes (transport.cpp), so that the rules and the
+/// connection's loop are plain functions, not one instance per command type.
+struct CommandFacts {
+    const CommandRow *row = nullptr;
+    std::optional<std::int64_t> function;                             ///< its function selector value
+    std::array<std::optional<std::int64_t>, kMaxParamSlots> params{}; ///< by slot
+    std::optional<std::int64_t> param(std::int8_t slot) const {
+        if (slot < 0 || static_cast<std::size_t>(slot) >= kMaxParamSlots) {
+            return std::nullopt;
+        }
+        return params[static_cast<std::size_t>(slot)];
+    }
 };
 
 } // namespace mipcodec

@@ -32,20 +32,29 @@ struct FieldJsonVisitor {
     std::size_t size;
 
     template <class T> void field(const T &value) {
-        w.begin_object();
-        w.key("descriptor");
-        w.uinteger(T::kDescriptor);
-        w.key("name");
-        w.string(T::kName);
         if constexpr (T::kHasVariants) {
-            w.key("device");
-            w.string(T::kDevice);
+            head(T::kDescriptor, T::kName, T::kDevice);
+        } else {
+            head(T::kDescriptor, T::kName, nullptr);
         }
-        w.key("values");
         Json<T>::write(w, value);
         w.end_object();
     }
-    void raw(const DecodeError &err) {
+    /// The members of a decoded field's object before its values (`device`: nullptr for a field
+    /// without per-device layouts). Out of line of the per-layout code (compile cost, issue 39).
+    MSCIPCODEC_NOINLINE void head(unsigned id, const char *name, const char *device) {
+        w.begin_object();
+        w.key("descriptor");
+        w.uinteger(id);
+        w.key("name");
+        w.string(name);
+        if (device != nullptr) {
+            w.key("device");
+            w.string(device);
+        }
+        w.key("values");
+    }
+    MSCIPCODEC_NOINLINE void raw(const DecodeError &err) {
         w.begin_object();
         w.key("descriptor");
         w.uinteger(descriptor);
@@ -270,24 +279,20 @@ struct EncodeLayouts {
     template <class T, class... Rest> void operator()(Layouts<T, Rest...>) {
         if constexpr (!T::kHasVariants) {
             if (device != nullptr) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has no per-device layouts";
+                no_variants(T::kName);
                 return;
             }
             matched = true;
             encode_as<T>();
         } else {
             if (device == nullptr || device->type != json::Value::Type::string) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has per-device layouts; name the device";
+                name_device(T::kName);
                 return;
             }
             attempt<T>();
             (attempt<Rest>(), ...);
             if (!matched) {
-                err.path = "device";
-                err.message = std::string("field '") + T::kName + "' has no layout for device '" +
-                              json::printable(device->text) + "'";
+                no_layout(T::kName);
             }
         }
     }
@@ -300,10 +305,7 @@ struct EncodeLayouts {
     }
 
     template <class T> void encode_as() {
-        if (name != T::kName) {
-            err.path = "name";
-            err.message = "descriptor " + std::to_string(T::kDescriptor) + " is '" + T::kName + "', not '" +
-                          json::printable(name) + "'";
+        if (wrong_name(T::kDescriptor, T::kName)) {
             return;
         }
         T value{};
@@ -311,13 +313,42 @@ struct EncodeLayouts {
             err.enter("values");
             return;
         }
-        const EncodeError e = builder.add(value);
-        if (e != EncodeError::none) {
-            err.path = "values";
-            err.message = to_string(e);
+        if (add_failed(builder.add(value))) {
             return;
         }
         ok = true;
+    }
+
+    // The error messages, out of line of the per-layout code (compile cost, issue 39).
+    MSCIPCODEC_NOINLINE void no_variants(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has no per-device layouts";
+    }
+    MSCIPCODEC_NOINLINE void name_device(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has per-device layouts; name the device";
+    }
+    MSCIPCODEC_NOINLINE void no_layout(const char *field) {
+        err.path = "device";
+        err.message = std::string("field '") + field + "' has no layout for device '" +
+                      json::printable(device->text) + "'";
+    }
+    MSCIPCODEC_NOINLINE bool wrong_name(unsigned id, const char *want) {
+        if (name == want) {
+            return false;
+        }
+        err.path = "name";
+        err.message =
+            "descriptor " + std::to_string(id) + " is '" + want + "', not '" + json::printable(name) + "'";
+        return true;
+    }
+    MSCIPCODEC_NOINLINE bool add_failed(EncodeError e) {
+        if (e == EncodeError::none) {
+            return false;
+        }
+        err.path = "values";
+        err.message = to_string(e);
+        return true;
     }
 };
 

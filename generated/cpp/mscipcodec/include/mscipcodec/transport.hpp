@@ -193,39 +193,12 @@ class Connection {
     /// Sends the command and waits for its result (nack, timeout and refusal are results).
     /// A transport failure ends the command with an I/O error "link lost: REASON" (it is not sent
     /// again); with link options that allow it, the port is reopened first (reconnect()).
+    /// Only what the type knows is compiled per command type (its facts and its encoding, in
+    /// Session::start); the write, the wait for the result, the wrong-model check and the record are
+    /// one function of the library (src/transport.cpp).
     template <class T> Call run(const T &command, const StartOptions &options = {}) {
-        Call call;
-        Started s = session_.start(command, now_ms(), options);
-        std::array<std::uint8_t, kMaxPacket> sent{};
-        const std::size_t sent_size = s.packet.size <= sent.size() ? s.packet.size : 0;
-        if (sent_size > 0) {
-            std::memcpy(sent.data(), s.packet.data, sent_size);
-        }
-        if (s.packet.size > 0 && !transport_.write(s.packet.data, s.packet.size, call.io)) {
-            call.result = s.result;
-            return lost_call(call);
-        }
-        if (s.complete) {
-            call.result = s.result;
-            deliver_result(call.result);
-        } else {
-            bool done = false;
-            while (!done) {
-                const std::int64_t wait = session_.next_deadline().value_or(s.deadline) - now_ms();
-                if (!pump(wait > 0 ? wait : 0, call, done)) {
-                    return lost_call(call);
-                }
-            }
-        }
-        if (!internal_ && !identified_ && call.result.status == Status::nack && call.result.has_code &&
-            unknown_command_code(call.result.code)) {
-            identified_ = true;
-            call.note = model_mismatch();
-        }
-        if (!internal_ && call.result.ok()) {
-            record(command, sent.data(), sent_size);
-        }
-        return call;
+        const CommandFacts facts = command_facts(command);
+        return run_started(facts, session_.start(facts, command, now_ms(), options));
     }
 
     /// Gives the connection its getting-through options (the transport's port operations are
@@ -372,63 +345,28 @@ class Connection {
         return call;
     }
 
-    /// The command (set, descriptor) without parameters, as its layout value: f(const T&).
-    /// Runs f(const T&) with a decoded command value (the other layouts are not commands).
-    template <class F> struct CommandPick {
-        F &f;
-        bool &have;
-        template <class T> void field(const T &v) {
-            if constexpr (CommandTraits<T>::kCommand) {
-                have = true;
-                f(v);
-            }
-        }
-        void raw(const DecodeError &) {}
-    };
-    template <class F> void with_bare(const LinkCommand &c, bool &have, F &&f) {
-        CommandPick<F> pick{f, have};
-        have = false;
-        decode_field(c.set, c.descriptor, nullptr, 0, session_.options().device, pick);
-    }
+    /// The facts of the command (set, descriptor) whose field data is `data` (`size` bytes) as the
+    /// session's device decodes it; false when it does not decode as a command layout. The
+    /// library's one dispatch of the connection (src/transport.cpp).
+    bool facts_of(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data, std::size_t size,
+                  CommandFacts &facts);
+    /// Sends the command given as field data (Session::start_raw) and waits for its result.
+    Call run_raw(const CommandFacts &facts, const std::uint8_t *data, std::size_t size,
+                 const StartOptions &options = {});
+    /// The rest of run() once the command is started: write, wait, wrong-model check, record.
+    Call run_started(const CommandFacts &facts, const Started &s);
 
     /// Asks the device for its identity (the spec's identity command, sent whatever the device):
     /// model_note of the model name it reports.
-    std::string model_mismatch() {
-        const std::optional<Device> told = session_.options().device;
-        if (!told || !kIdentity.present) {
-            return {};
-        }
-        StartOptions unchecked;
-        unchecked.check_device = false;
-        bool have = false;
-        Call call;
-        with_bare(LinkCommand{true, kIdentity.set, kIdentity.command}, have,
-                  [&](const auto &identity) { call = run_internal(identity, unchecked); });
-        std::string note;
-        if (!have || call.io_error || call.result.status != Status::ack) {
-            return note;
-        }
-        bool seen = false;
-        call.result.for_each_reply([&](const FieldEntry &e) {
-            if (!seen && e.kind == FieldEntry::Kind::field && e.descriptor == kIdentity.reply &&
-                e.size >= kIdentity.model_offset + kIdentity.model_length) {
-                seen = true;
-                note = model_note(*told, e.data + kIdentity.model_offset, kIdentity.model_length);
-            }
-        });
-        return note;
-    }
+    std::string model_mismatch();
 
-    /// A command of the connection itself: events counted and dropped, handlers paused, not recorded.
-    template <class T> Call run_internal(const T &command, const StartOptions &options = {}) {
-        const bool was = internal_;
-        internal_ = true;
-        session_.mute_handlers(true);
-        Call call = run(command, options);
-        session_.mute_handlers(was);
-        internal_ = was;
-        return call;
-    }
+    /// The command of link option `c` (no parameters) run as the connection's own (run_internal);
+    /// `have`: false when (set, descriptor) with no data is not a command layout.
+    Call run_bare(const LinkCommand &c, bool &have, const StartOptions &options = {});
+    /// run_raw as the connection's own command: events counted and dropped, handlers paused, not recorded.
+    Call run_internal(const CommandFacts &facts, const std::uint8_t *data, std::size_t size,
+                      const StartOptions &options = {});
+
     bool drain(std::int64_t ms) {
         const bool was = internal_;
         internal_ = true;
@@ -496,49 +434,7 @@ class Connection {
     /// function selector, acknowledged or sent): the latest per key replaces the earlier one and
     /// moves to the end; one more than kMaxSettings keys forgets the oldest. Also notes whether the
     /// last idle or resume command was an idle.
-    template <class T> void record(const T &command, const std::uint8_t *packet, std::size_t size) {
-        const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
-        const std::optional<std::int64_t> fn = CommandTraits<T>::function(command);
-        if (link_.idle.present && row.set == link_.idle.set && row.descriptor == link_.idle.descriptor) {
-            idled_ = true;
-        }
-        if (link_.resume.present && row.set == link_.resume.set &&
-            row.descriptor == link_.resume.descriptor) {
-            idled_ = false;
-        }
-        if (!fn || (*fn != 1 && *fn != 6)) {
-            return;
-        }
-        const PacketView view{packet, size};
-        FieldIterator it(view);
-        FieldEntry e;
-        if (!it.next(e) || e.kind != FieldEntry::Kind::field || e.size == 0) {
-            return;
-        }
-        const std::size_t key = key_size(row.set, row.descriptor, e.data, e.size);
-        std::size_t i = 0;
-        while (i < setting_count_ &&
-               !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
-                 settings_[i].key_size == key &&
-                 std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
-            ++i;
-        }
-        if (i == setting_count_ && setting_count_ == kMaxSettings) {
-            i = 0;
-        }
-        if (i < setting_count_) {
-            for (std::size_t j = i; j + 1 < setting_count_; ++j) {
-                settings_[j] = settings_[j + 1];
-            }
-            --setting_count_;
-        }
-        Setting &slot = settings_[setting_count_++];
-        slot.set = row.set;
-        slot.descriptor = row.descriptor;
-        slot.key_size = key;
-        slot.size = e.size;
-        std::memcpy(slot.data.data(), e.data, e.size);
-    }
+    void record(const CommandFacts &facts, const std::uint8_t *packet, std::size_t size);
 
     /// Re-sends the recorded configuration in order; how many were acknowledged (or sent).
     std::size_t reapply();

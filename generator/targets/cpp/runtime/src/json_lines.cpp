@@ -1,5 +1,7 @@
-// The JSON lines functions of json_lines.hpp compiled once (their default instances, declared
-// `extern template` there): the field dispatch with the JSON writer and the encoder of every layout.
+// The JSON lines writer of json_lines.hpp compiled once (its default instances, declared
+// `extern template` there): the field dispatch with the JSON writer of every layout. The encoder
+// (a second dispatch, JSON to every layout's encoder) is json_encode.cpp: two sources of about
+// half the cost each, so that no library source dominates a build (compile cost, issue 39).
 #include "protopkg/json_lines.hpp"
 
 namespace protopkg {
@@ -8,9 +10,5 @@ template void write_field_entry_json<void>(JsonWriter &, std::uint8_t, const Fie
                                            const std::optional<Device> &);
 template void write_packet_json<void>(JsonWriter &, std::uint64_t, const PacketView &,
                                       const std::optional<Device> &);
-namespace detail {
-template bool encode_field<void>(const json::Value &, PacketBuilder &, JsonError &);
-} // namespace detail
-template bool encode_json_line<void>(const std::string &, std::vector<std::uint8_t> &, std::string &);
 
 } // namespace protopkg

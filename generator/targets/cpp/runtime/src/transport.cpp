@@ -1,6 +1,8 @@
-// The members of Connection (transport.hpp) that decode a command by its (set, descriptor) and
-// run it: each reaches the field dispatch and Connection::run of every command, so they are
-// compiled once, into the library, not in every program that includes transport.hpp.
+// The members of Connection (transport.hpp) compiled once, into the library: the part of run() that
+// does not depend on the command's type (write, wait for the result, wrong-model check, record),
+// and the connection's own commands (idle, ping, resume, identity, the recorded settings), which it
+// holds as bytes and sends as they are (Session::start_raw) with their facts decoded through one
+// visitor (facts_of): one field dispatch here, not one per site, and no run() per command type.
 #include "protopkg/transport.hpp"
 
 #include <algorithm>
@@ -9,6 +11,155 @@
 #include <string>
 
 namespace protopkg {
+
+namespace {
+
+/// The facts of a decoded command layout (the other layouts are not commands).
+struct FactsPick {
+    CommandFacts &facts;
+    bool have = false;
+    template <class T> void field(const T &v) {
+        if constexpr (CommandTraits<T>::kCommand) {
+            have = true;
+            facts = command_facts(v);
+        }
+    }
+    void raw(const DecodeError &) {}
+};
+
+} // namespace
+
+bool Connection::facts_of(std::uint8_t set, std::uint8_t descriptor, const std::uint8_t *data,
+                          std::size_t size, CommandFacts &facts) {
+    FactsPick pick{facts};
+    decode_field(set, descriptor, data, size, session_.options().device, pick);
+    return pick.have;
+}
+
+Call Connection::run_raw(const CommandFacts &facts, const std::uint8_t *data, std::size_t size,
+                         const StartOptions &options) {
+    return run_started(facts, session_.start_raw(facts, data, size, now_ms(), options));
+}
+
+Call Connection::run_started(const CommandFacts &facts, const Started &s) {
+    Call call;
+    std::array<std::uint8_t, kMaxPacket> sent{};
+    const std::size_t sent_size = s.packet.size <= sent.size() ? s.packet.size : 0;
+    if (sent_size > 0) {
+        std::memcpy(sent.data(), s.packet.data, sent_size);
+    }
+    if (s.packet.size > 0 && !transport_.write(s.packet.data, s.packet.size, call.io)) {
+        call.result = s.result;
+        return lost_call(call);
+    }
+    if (s.complete) {
+        call.result = s.result;
+        deliver_result(call.result);
+    } else {
+        bool done = false;
+        while (!done) {
+            const std::int64_t wait = session_.next_deadline().value_or(s.deadline) - now_ms();
+            if (!pump(wait > 0 ? wait : 0, call, done)) {
+                return lost_call(call);
+            }
+        }
+    }
+    if (!internal_ && !identified_ && call.result.status == Status::nack && call.result.has_code &&
+        unknown_command_code(call.result.code)) {
+        identified_ = true;
+        call.note = model_mismatch();
+    }
+    if (!internal_ && call.result.ok()) {
+        record(facts, sent.data(), sent_size);
+    }
+    return call;
+}
+
+Call Connection::run_internal(const CommandFacts &facts, const std::uint8_t *data, std::size_t size,
+                              const StartOptions &options) {
+    const bool was = internal_;
+    internal_ = true;
+    session_.mute_handlers(true);
+    Call call = run_raw(facts, data, size, options);
+    session_.mute_handlers(was);
+    internal_ = was;
+    return call;
+}
+
+Call Connection::run_bare(const LinkCommand &c, bool &have, const StartOptions &options) {
+    CommandFacts facts;
+    have = facts_of(c.set, c.descriptor, nullptr, 0, facts);
+    if (!have) {
+        return Call{};
+    }
+    return run_internal(facts, nullptr, 0, options);
+}
+
+std::string Connection::model_mismatch() {
+    const std::optional<Device> told = session_.options().device;
+    if (!told || !kIdentity.present) {
+        return {};
+    }
+    StartOptions unchecked;
+    unchecked.check_device = false;
+    bool have = false;
+    const Call call = run_bare(LinkCommand{true, kIdentity.set, kIdentity.command}, have, unchecked);
+    std::string note;
+    if (!have || call.io_error || call.result.status != Status::ack) {
+        return note;
+    }
+    bool seen = false;
+    call.result.for_each_reply([&](const FieldEntry &e) {
+        if (!seen && e.kind == FieldEntry::Kind::field && e.descriptor == kIdentity.reply &&
+            e.size >= kIdentity.model_offset + kIdentity.model_length) {
+            seen = true;
+            note = model_note(*told, e.data + kIdentity.model_offset, kIdentity.model_length);
+        }
+    });
+    return note;
+}
+
+void Connection::record(const CommandFacts &facts, const std::uint8_t *packet, std::size_t size) {
+    const CommandRow &row = *facts.row;
+    const std::optional<std::int64_t> fn = facts.function;
+    if (link_.idle.present && row.set == link_.idle.set && row.descriptor == link_.idle.descriptor) {
+        idled_ = true;
+    }
+    if (link_.resume.present && row.set == link_.resume.set && row.descriptor == link_.resume.descriptor) {
+        idled_ = false;
+    }
+    if (!fn || (*fn != 1 && *fn != 6)) {
+        return;
+    }
+    const PacketView view{packet, size};
+    FieldIterator it(view);
+    FieldEntry e;
+    if (!it.next(e) || e.kind != FieldEntry::Kind::field || e.size == 0) {
+        return;
+    }
+    const std::size_t key = key_size(row.set, row.descriptor, e.data, e.size);
+    std::size_t i = 0;
+    while (i < setting_count_ && !(settings_[i].set == row.set && settings_[i].descriptor == row.descriptor &&
+                                   settings_[i].key_size == key &&
+                                   std::memcmp(settings_[i].data.data() + 1, e.data + 1, key) == 0)) {
+        ++i;
+    }
+    if (i == setting_count_ && setting_count_ == kMaxSettings) {
+        i = 0;
+    }
+    if (i < setting_count_) {
+        for (std::size_t j = i; j + 1 < setting_count_; ++j) {
+            settings_[j] = settings_[j + 1];
+        }
+        --setting_count_;
+    }
+    Setting &slot = settings_[setting_count_++];
+    slot.set = row.set;
+    slot.descriptor = row.descriptor;
+    slot.key_size = key;
+    slot.size = e.size;
+    std::memcpy(slot.data.data(), e.data, e.size);
+}
 
 Call Connection::to_idle() {
     Call call;
@@ -20,10 +171,12 @@ Call Connection::to_idle() {
     std::int64_t timeout = session_.options().timeout_ms;
     for (unsigned attempt = 1; attempt <= kLinkIdleAttempts; ++attempt) {
         dropped_ = 0;
-        with_bare(link_.idle, have, [&](const auto &idle) {
+        CommandFacts idle;
+        have = facts_of(link_.idle.set, link_.idle.descriptor, nullptr, 0, idle);
+        if (have) {
             timeout = session_.options().timeout_ms + allowance_ms(idle);
-            call = run_internal(idle);
-        });
+            call = run_internal(idle, nullptr, 0);
+        }
         if (!have) {
             return refused(call, "the idle command does not decode");
         }
@@ -65,7 +218,7 @@ Call Connection::find_baud() {
         return refused(call, "the protocol has no ping command");
     }
     bool have = false;
-    with_bare(link_.ping, have, [&](const auto &ping) { call = run_internal(ping); });
+    call = run_bare(link_.ping, have);
     if (!have) {
         return refused(call, "the ping command does not decode");
     }
@@ -90,7 +243,7 @@ Call Connection::find_baud() {
             continue;
         }
         flush_input();
-        with_bare(link_.ping, have, [&](const auto &ping) { call = run_internal(ping); });
+        call = run_bare(link_.ping, have);
         if (call.io_error) {
             return call;
         }
@@ -107,11 +260,8 @@ std::size_t Connection::key_size(std::uint8_t set, std::uint8_t descriptor, cons
     std::memcpy(read.data(), data, size);
     read[0] = 2;
     for (std::size_t k = 1; k <= size; ++k) {
-        bool have = false;
-        auto ignore = [](const auto &) {};
-        CommandPick<decltype(ignore)> pick{ignore, have};
-        decode_field(set, descriptor, read.data(), k, session_.options().device, pick);
-        if (have) {
+        CommandFacts facts;
+        if (facts_of(set, descriptor, read.data(), k, facts)) {
             return k - 1;
         }
     }
@@ -122,18 +272,15 @@ std::size_t Connection::reapply() {
     std::size_t done = 0;
     for (std::size_t i = 0; i < setting_count_; ++i) {
         const Setting s = settings_[i];
-        bool have = false;
-        auto resend = [&](const auto &v) {
-            if (run_internal(v).ok()) {
-                ++done;
-            }
-        };
-        CommandPick<decltype(resend)> pick{resend, have};
-        decode_field(s.set, s.descriptor, s.data.data(), s.size, session_.options().device, pick);
+        CommandFacts facts;
+        if (facts_of(s.set, s.descriptor, s.data.data(), s.size, facts) &&
+            run_internal(facts, s.data.data(), s.size).ok()) {
+            ++done;
+        }
     }
     if (link_.resume.present && !idled_) {
         bool have = false;
-        with_bare(link_.resume, have, [&](const auto &resume) { run_internal(resume); });
+        run_bare(link_.resume, have);
     }
     return done;
 }

@@ -178,10 +178,25 @@ struct Started {
     std::int64_t deadline = 0;
 };
 
-/// Why `device` does not support `command` (a layout of row `row`), written to `out`; false when it does.
-template <class T> bool support_error(const T &command, std::optional<Device> device, ErrorText &out) {
+/// What the session's rules read of `command` (a command layout): its row, function selector and
+/// the parameter slots its CommandTraits give. The rules below take these facts, so they (and the
+/// connection's loop) are compiled once, not once per command type.
+template <class T> CommandFacts command_facts(const T &command) {
     using Traits = CommandTraits<T>;
-    const CommandRow &row = kCommandRows[Traits::kRow];
+    static_assert(Traits::kCommand, "not a command layout");
+    CommandFacts f;
+    f.row = &kCommandRows[Traits::kRow];
+    f.function = Traits::function(command);
+    for (std::size_t slot = 0; slot < kMaxParamSlots; ++slot) {
+        f.params[slot] = Traits::param(command, static_cast<std::int8_t>(slot));
+    }
+    return f;
+}
+
+/// Why `device` does not support the command (facts of a layout of row `row`), written to `out`;
+/// false when it does.
+inline bool support_error(const CommandFacts &facts, std::optional<Device> device, ErrorText &out) {
+    const CommandRow &row = *facts.row;
     if (!device) {
         return false;
     }
@@ -197,7 +212,7 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
                       device_name(kDevices[static_cast<std::size_t>(row.device)]), device_name(*device));
         return true;
     }
-    const std::optional<std::int64_t> fn = Traits::function(command);
+    const std::optional<std::int64_t> fn = facts.function;
     if (row.has_functions && fn) {
         const bool in_layout = *fn >= 0 && *fn < 64 && ((row.functions >> *fn) & 1U) != 0;
         const std::uint32_t limited = function_devices(*fn);
@@ -219,54 +234,50 @@ template <class T> bool support_error(const T &command, std::optional<Device> de
 }
 
 /// True when the command as given asks the device not to reply (spec `ack_suppressed_by`).
-template <class T> bool ack_suppressed(const T &command) {
-    using Traits = CommandTraits<T>;
-    const CommandRow &row = kCommandRows[Traits::kRow];
+inline bool ack_suppressed(const CommandFacts &facts) {
+    const CommandRow &row = *facts.row;
     if (row.ack_kind == 1) {
-        const std::optional<std::int64_t> fn = Traits::function(command);
+        const std::optional<std::int64_t> fn = facts.function;
         return fn && *fn == row.ack_value;
     }
     if (row.ack_kind == 2) {
-        const std::optional<std::int64_t> v = Traits::param(command, row.ack_param);
+        const std::optional<std::int64_t> v = facts.param(row.ack_param);
         return v && (row.ack_has_value ? *v == row.ack_value : *v != 0);
     }
     return false;
 }
 
 /// The extra reply time the spec gives the command as given (spec `timeout`).
-template <class T> std::int64_t allowance_ms(const T &command) {
-    using Traits = CommandTraits<T>;
-    const CommandRow &row = kCommandRows[Traits::kRow];
+inline std::int64_t allowance_ms(const CommandFacts &facts) {
+    const CommandRow &row = *facts.row;
     if (!row.has_timeout) {
         return 0;
     }
     if (!row.timeout_all_functions) {
-        const std::optional<std::int64_t> fn = Traits::function(command);
+        const std::optional<std::int64_t> fn = facts.function;
         if (!fn || *fn < 0 || *fn >= 64 || ((row.timeout_functions >> *fn) & 1U) == 0) {
             return 0;
         }
     }
     std::int64_t ms = row.timeout_ms;
     if (row.timeout_param >= 0) {
-        ms += Traits::param(command, row.timeout_param).value_or(0);
+        ms += facts.param(row.timeout_param).value_or(0);
     }
     return ms;
 }
 
 /// The reply field descriptors the command as given expects with its ack (spec `responses`).
-template <class T>
-std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExpected> &out) {
-    using Traits = CommandTraits<T>;
-    const CommandRow &row = kCommandRows[Traits::kRow];
+inline std::uint8_t expected_replies(const CommandFacts &facts, std::array<std::uint8_t, kMaxExpected> &out) {
+    const CommandRow &row = *facts.row;
     std::uint8_t n = 0;
-    const std::optional<std::int64_t> fn = Traits::function(command);
+    const std::optional<std::int64_t> fn = facts.function;
     for (std::size_t i = 0; i < row.reply_count && n < kMaxExpected; ++i) {
         const ReplyRule &r = row.replies[i];
         if (r.function >= 0 && (!fn || *fn != r.function)) {
             continue;
         }
         if (r.param >= 0) {
-            const std::optional<std::int64_t> v = Traits::param(command, r.param);
+            const std::optional<std::int64_t> v = facts.param(r.param);
             if (!v || (r.has_value ? *v != r.value : *v == 0)) {
                 continue;
             }
@@ -274,6 +285,21 @@ std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExp
         out[n++] = r.descriptor;
     }
     return n;
+}
+
+/// The rules of a command value (the facts its CommandTraits give).
+template <class T> bool support_error(const T &command, std::optional<Device> device, ErrorText &out) {
+    return support_error(command_facts(command), device, out);
+}
+template <class T> bool ack_suppressed(const T &command) {
+    return ack_suppressed(command_facts(command));
+}
+template <class T> std::int64_t allowance_ms(const T &command) {
+    return allowance_ms(command_facts(command));
+}
+template <class T>
+std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExpected> &out) {
+    return expected_replies(command_facts(command), out);
 }
 
 /// The session core. N: the pending queue's capacity.
@@ -336,51 +362,33 @@ template <std::size_t N = kDefaultMaxPending> class Session {
 
     /// Starts a command at `now`: see Started.
     template <class T> Started start(const T &command, std::int64_t now, const StartOptions &call = {}) {
+        return start(command_facts(command), command, now, call);
+    }
+    /// start() with the command's facts computed already (command_facts(command)).
+    template <class T>
+    Started start(const CommandFacts &facts, const T &command, std::int64_t now,
+                  const StartOptions &call = {}) {
         static_assert(CommandTraits<T>::kCommand, "not a command layout");
-        const CommandRow &row = kCommandRows[CommandTraits<T>::kRow];
         Started s;
-        s.result.row = &row;
-        s.result.tag = call.tag;
-        s.result.expect_count = expected_replies(command, s.result.expect);
-        const bool check = call.check_device.value_or(opt_.check_device);
-        if (check && support_error(command, opt_.device, s.result.error)) {
-            s.complete = true;
-            s.result.status = Status::refused;
-            s.result.has_error = true;
+        if (refused(facts, call, s)) {
             return s;
         }
-        out_ = PacketBuilder(row.set);
-        if (out_.add(command) != EncodeError::none) {
-            s.complete = true;
-            s.result.status = Status::refused;
-            s.result.has_error = true;
-            std::snprintf(s.result.error.text.data(), s.result.error.text.size(), "%s",
-                          to_string(out_.error()));
+        out_ = PacketBuilder(facts.row->set);
+        started(facts, out_.add(command), now + call.timeout_ms.value_or(opt_.timeout_ms), s);
+        return s;
+    }
+    /// start() of a command given as its field data (`size` bytes after the field header: the
+    /// function selector first when the row has one) and its facts: the connection's own commands
+    /// (a bare idle or ping, a recorded setting sent again), sent as they are, without a type.
+    Started start_raw(const CommandFacts &facts, const std::uint8_t *data, std::size_t size, std::int64_t now,
+                      const StartOptions &call = {}) {
+        Started s;
+        if (refused(facts, call, s)) {
             return s;
         }
-        const PacketView bytes = out_.finish();
-        s.deadline = now + call.timeout_ms.value_or(opt_.timeout_ms) + allowance_ms(command);
-        if (ack_suppressed(command)) {
-            s.packet = bytes;
-            s.complete = true;
-            s.result.status = Status::sent;
-            return s;
-        }
-        if (count_ >= N) {
-            s.complete = true;
-            s.result.status = Status::refused;
-            s.result.has_error = true;
-            std::snprintf(s.result.error.text.data(), s.result.error.text.size(),
-                          "%llu commands already pending", static_cast<unsigned long long>(N));
-            return s;
-        }
-        s.packet = bytes;
-        Slot &slot = queue_[count_++];
-        slot.row = &row;
-        slot.deadline = s.deadline;
-        slot.tag = call.tag;
-        slot.expect = s.result.expect;
-        slot.expect_count = s.result.expect_count;
+        out_ = PacketBuilder(facts.row->set);
+        const EncodeError e = out_.add_raw_field(facts.row->descriptor, data, size);
+        started(facts, e, now + call.timeout_ms.value_or(opt_.timeout_ms), s);
         return s;
     }
 
@@ -453,6 +461,58 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     }
 
   private:
+    /// The first part of start(): the result's row, tag and expected replies; true (a refused
+    /// result) when the device does not support the command. Not inlined into each start<T>
+    /// (compile cost, issue 39), nor started().
+    PROTOPKG_NOINLINE bool refused(const CommandFacts &f, const StartOptions &call, Started &s) const {
+        s.result.row = f.row;
+        s.result.tag = call.tag;
+        s.result.expect_count = expected_replies(f, s.result.expect);
+        const bool check = call.check_device.value_or(opt_.check_device);
+        if (check && support_error(f, opt_.device, s.result.error)) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            return true;
+        }
+        return false;
+    }
+    /// The rest of start(), once the command is in out_ (`e`: how its encoding went; `at`: `now`
+    /// plus the reply timeout, to which the command's allowance is added).
+    PROTOPKG_NOINLINE void started(const CommandFacts &f, EncodeError e, std::int64_t at, Started &s) {
+        if (e != EncodeError::none) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            std::snprintf(s.result.error.text.data(), s.result.error.text.size(), "%s",
+                          to_string(out_.error()));
+            return;
+        }
+        const PacketView bytes = out_.finish();
+        s.deadline = at + allowance_ms(f);
+        if (ack_suppressed(f)) {
+            s.packet = bytes;
+            s.complete = true;
+            s.result.status = Status::sent;
+            return;
+        }
+        if (count_ >= N) {
+            s.complete = true;
+            s.result.status = Status::refused;
+            s.result.has_error = true;
+            std::snprintf(s.result.error.text.data(), s.result.error.text.size(),
+                          "%llu commands already pending", static_cast<unsigned long long>(N));
+            return;
+        }
+        s.packet = bytes;
+        Slot &slot = queue_[count_++];
+        slot.row = f.row;
+        slot.deadline = s.deadline;
+        slot.tag = s.result.tag;
+        slot.expect = s.result.expect;
+        slot.expect_count = s.result.expect_count;
+    }
+
     struct Slot {
         const CommandRow *row = nullptr;
         std::int64_t deadline = 0;
