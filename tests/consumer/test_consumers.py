@@ -4,10 +4,14 @@ run by .ci/run):
 
 - Release (-O3) builds of both packages with -Werror (the packages' <PKG>_WERROR option) under gcc,
   and under clang where it is installed (CI installs clang-14), tools and examples asked for;
-- the READMEs' install recipes as they stand (`cmake -S . -B build && cmake --build build &&
-  cmake --install build --prefix DIR`, nothing asked for) where googletest cannot be found (any
-  find_package(GTest) fails the configure) and, for the C package, no C++ compiler exists; both
-  packages installed into one temporary prefix;
+- the READMEs' install recipes as they stand, taken from the READMEs' blocks marked
+  `<!-- consumer: install -->` (`cmake -S . -B build && cmake --build build && cmake --install
+  build --prefix /opt/PKG`, nothing asked for, /opt/PKG read as the test's prefix) and run in a copy
+  of the package where googletest cannot be found (any find_package(GTest) fails the configure)
+  and, for the C package, no C++ compiler exists; both packages installed into one prefix;
+- the READMEs' `<!-- consumer: find_package -->` blocks (a project's CMake lines around a program
+  `app`) and `<!-- consumer: pkg-config -->` blocks (the compile commands), run as they stand with
+  the consumer programs as `app.c`, `session_app.c`, `app.cpp`;
 - a consumer project with C and C++ programs that finds them with find_package(mipcodec X.Y
   CONFIG) (the version of VERSION), and the versions mipcodecConfigVersion.cmake accepts and
   refuses (docs/versioning.md);
@@ -26,6 +30,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import socket
 import struct
@@ -177,24 +182,78 @@ def no_gtest() -> list[str]:
     return [f"-DCMAKE_MODULE_PATH={NO_GTEST / 'modules'}", f"-DCMAKE_PREFIX_PATH={NO_GTEST / 'prefix'}"]
 
 
-def recipe(lang: str) -> Path:
-    """The package's README install recipe, as it stands: `cmake -S . -B build && cmake --build
-    build` (nothing asked for, the default generator and build type) where googletest cannot be
-    found and, for the C package, with a C++ compiler that does not exist. Configured once (the
-    build directory is reused, the GTest traps stay in its cache). Returns the build directory."""
-    src, out = (C_SRC if lang == "c" else CPP_SRC), BUILD / "recipe" / lang
-    cxx = ["-DCMAKE_CXX_COMPILER=/nonexistent/c++"] if lang == "c" else []
-    if not (out / "CMakeCache.txt").is_file():
-        log = run(["cmake", "-S", src, "-B", out, *no_gtest(), *cxx])
-        assert "gtest" not in (log.stdout + log.stderr).lower()
-        if lang == "c":  # the C project never enables C++
-            assert "CMAKE_CXX_COMPILER" in log.stderr and "not used by the project" in log.stderr
-    run(["cmake", "--build", out])
-    cache = (out / "CMakeCache.txt").read_text()
-    assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest was looked for"
-    if lang == "c":
-        assert not list(out.glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
+# A README block the consumer tests run, marked by an HTML comment on the line before its fence:
+# `<!-- consumer: install -->` the install recipe (sh), `<!-- consumer: find_package -->` the
+# CMake lines of a project that uses the installed package (around a program `app`),
+# `<!-- consumer: pkg-config -->` the compile commands without CMake (sh; app.c, session_app.c,
+# app.cpp). docs/packaging.md "Consumer tests" describes them.
+README_BLOCK = re.compile(r"^<!-- consumer: ([\w-]+) -->\n(`{3,})\w*\n(.*?)^\2\n", re.S | re.M)
+README_KINDS = {"install", "find_package", "pkg-config"}
+
+
+def readme_blocks(lang: str) -> dict[str, str]:
+    """The package README's blocks marked for the consumer tests, by kind: each kind exactly once."""
+    readme = (C_SRC if lang == "c" else CPP_SRC) / "README.md"
+    found: dict[str, str] = {}
+    for m in README_BLOCK.finditer(readme.read_text(encoding="utf-8")):
+        assert m[1] in README_KINDS and m[1] not in found, f"{readme}: marker consumer: {m[1]} unknown or repeated"
+        found[m[1]] = m[3]
+    assert set(found) == README_KINDS, f"{readme}: no block marked consumer: {sorted(README_KINDS - set(found))}"
+    return found
+
+
+def sh_lines(body: str) -> list[str]:
+    """The commands of a sh block: one a line, `\\` continues, comments dropped."""
+    out, pending = [], ""
+    for raw in body.splitlines():
+        line = re.split(r"\s{2,}#\s", raw.rstrip(), maxsplit=1)[0]
+        if not pending and (not line.strip() or line.lstrip().startswith("#")):
+            continue
+        if line.endswith("\\"):
+            pending += line[:-1] + " "
+            continue
+        out.append(pending + line)
+        pending = ""
     return out
+
+
+def readme_env(lang: str) -> dict[str, str]:
+    """The recipe's machine: no CMAKE_* variables of ours but every core for the build
+    (CMAKE_BUILD_PARALLEL_LEVEL), googletest that fails any find_package(GTest) first on
+    CMAKE_PREFIX_PATH, and for the C package a C++ compiler that does not exist (CXX)."""
+    no_gtest()
+    env = {k: v for k, v in os.environ.items() if not k.startswith("CMAKE_")}
+    env["CMAKE_BUILD_PARALLEL_LEVEL"] = str(os.cpu_count() or 2)
+    env["CMAKE_PREFIX_PATH"] = str(NO_GTEST / "prefix")
+    if lang == "c":
+        env["CXX"] = "/nonexistent/c++"
+    return env
+
+
+RECIPE = {lang: BUILD / "recipe" / lang / PKG / "build" for lang in ("c", "cpp")}
+
+
+def recipe(lang: str, prefix: Path) -> Path:
+    """The package README's install block, the command as it stands (default generator and build
+    type, nothing asked for; `/opt/PKG` read as PREFIX), run in a copy of the package made outside
+    the repository where googletest cannot be found and, for the C package, no C++ compiler
+    exists. The copy's build directory is kept (a rerun only rebuilds what changed). Returns it."""
+    src = C_SRC if lang == "c" else CPP_SRC
+    work = RECIPE[lang].parent
+    work.mkdir(parents=True, exist_ok=True)
+    for old in work.iterdir():  # the package as it is now, the build directory kept
+        if old.name != "build":
+            shutil.rmtree(old) if old.is_dir() else old.unlink()
+    shutil.copytree(src, work, dirs_exist_ok=True, ignore=shutil.ignore_patterns("build", "build-*"))
+    (command,) = sh_lines(readme_blocks(lang)["install"])
+    assert f"--prefix /opt/{PKG}" in command, command
+    log = run(["bash", "-c", command.replace(f"/opt/{PKG}", str(prefix))], cwd=work, env=readme_env(lang))
+    assert "gtest" not in (log.stdout + log.stderr).lower()
+    cache = (RECIPE[lang] / "CMakeCache.txt").read_text()
+    assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest was looked for"
+    if lang == "c":  # the C project never enables C++ (CXX names no compiler: enabling it would fail)
+        assert not list(RECIPE[lang].glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
+    return RECIPE[lang]
 
 
 @pytest.fixture(scope="module")
@@ -203,7 +262,7 @@ def prefix() -> Path:
     out = BUILD / "prefix"
     shutil.rmtree(out, ignore_errors=True)
     for lang in ("c", "cpp"):
-        run(["cmake", "--install", recipe(lang), "--prefix", out])
+        recipe(lang, out)
     return out
 
 
@@ -236,7 +295,7 @@ def test_install_tree(prefix):
     # no test, source or internal header is installed, and no program unless asked for
     assert not [f for f in files if f.endswith((".c", ".cpp")) or "/src/" in f or "test" in f or f.startswith("bin/")]
     # the C and the C++ package write the same version file (either may be installed last)
-    versions = [(BUILD / "recipe" / lang / f"{PKG}ConfigVersion.cmake").read_bytes() for lang in ("c", "cpp")]
+    versions = [(RECIPE[lang] / f"{PKG}ConfigVersion.cmake").read_bytes() for lang in ("c", "cpp")]
     assert versions[0] == versions[1]
     # every linker symbol the C libraries define starts with the package's prefix (mipc_), so a
     # program links them beside the vendor SDK (mip_)
@@ -258,6 +317,59 @@ def test_find_package_c_and_cpp_in_one_project(prefix, stream):
     check_cpp(out / "consumer_cpp", stream, with_c=True)
     with fake_device(stream) as address:
         check_session(out / "consumer_session", address)
+
+
+# The programs the READMEs' blocks name, played by the consumer programs.
+PROGRAMS = {"app.c": "consumer.c", "session_app.c": "session.c", "app.cpp": "consumer.cpp"}
+
+
+@pytest.mark.parametrize("lang", ["c", "cpp"])
+def test_readme_find_package(prefix, stream, lang):
+    """The README's find_package block, as it stands, as the CMake lines of a project whose program
+    `app` is the consumer program (consumer.c, consumer.cpp): configured with the prefix the README
+    recipes installed into, built and run."""
+    out = BUILD / "readme-find-package" / lang
+    shutil.rmtree(out, ignore_errors=True)
+    out.mkdir(parents=True)
+    main = "app.c" if lang == "c" else "app.cpp"
+    shutil.copy2(HERE / PROGRAMS[main], out / main)
+    head = (
+        "cmake_minimum_required(VERSION 3.16)\n"
+        f"project(app LANGUAGES {'C' if lang == 'c' else 'CXX'})\n"
+        f"add_executable(app {main})\n"
+    )
+    (out / "CMakeLists.txt").write_text(head + readme_blocks(lang)["find_package"], encoding="utf-8")
+    env = {**readme_env(lang), "CMAKE_PREFIX_PATH": str(prefix)}
+    run(["cmake", "-S", out, "-B", out / "build"], env=env)
+    run(["cmake", "--build", out / "build"], env=env)
+    if lang == "c":
+        check_c(out / "build" / "app", stream)
+    else:
+        check_cpp(out / "build" / "app", stream, with_c=False)
+
+
+def test_readme_pkg_config(prefix, stream):
+    """The READMEs' pkg-config blocks, each command as it stands (`/opt/PKG` read as the prefix the
+    recipes installed into), in a directory holding the programs they name (app.c, session_app.c,
+    app.cpp: the consumer programs); each program built (a.out) must print what it should."""
+    for lang in ("c", "cpp"):
+        commands = sh_lines(readme_blocks(lang)["pkg-config"])
+        assert commands, lang
+        for n, command in enumerate(commands):
+            (source,) = [name for name in PROGRAMS if re.search(rf"(^|\s){re.escape(name)}(\s|$)", command)]
+            out = BUILD / "readme-pkg-config" / f"{lang}-{n}"
+            shutil.rmtree(out, ignore_errors=True)
+            out.mkdir(parents=True)
+            shutil.copy2(HERE / PROGRAMS[source], out / source)
+            assert f"/opt/{PKG}/" in command, command
+            run(["bash", "-c", command.replace(f"/opt/{PKG}/", f"{prefix}/")], cwd=out, env=readme_env(lang))
+            if source == "app.c":
+                check_c(out / "a.out", stream)
+            elif source == "app.cpp":
+                check_cpp(out / "a.out", stream, with_c=False)
+            else:
+                with fake_device(stream) as address:
+                    check_session(out / "a.out", address)
 
 
 def compatible(want: str, prefix: Path, tmp_path: Path) -> subprocess.CompletedProcess:
