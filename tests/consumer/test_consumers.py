@@ -23,7 +23,8 @@ run by .ci/run):
   package built top-level for Cortex-M with only the shipped toolchain file.
 
 Every program decodes the same stream (golden vectors) and must print the vectors' expected lines.
-Build directories live under build/consumer/ (kept, so a rerun only rebuilds what changed).
+Build directories live under build/consumer/ (kept, so a rerun only rebuilds what changed); the
+package builds start together on two threads (the `builds` fixture) and each test waits for its own.
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ import struct
 import subprocess
 import threading
 from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -147,20 +149,48 @@ def compilers() -> list[tuple[str, str, str]]:
     return found
 
 
+def release_build(name: str, cc: str, cxx: str, lang: str) -> str:
+    """A Release (-O3) build of one package with MIPCODEC_WERROR, tools and examples asked for;
+    returns its log."""
+    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", *ASKED]
+    out = BUILD / f"release-{name}" / lang
+    if lang == "c":
+        return cmake_build(C_SRC, out, f"-DCMAKE_C_COMPILER={cc}", *common)
+    # One translation unit that includes every C++ header (the example includes the umbrella
+    # header): the C++ tools would only add minutes of compile time.
+    return cmake_build(CPP_SRC, out, f"-DCMAKE_CXX_COMPILER={cxx}", *common, "-DMIPCODEC_BUILD_TOOLS=OFF")
+
+
+@pytest.fixture(scope="module")
+def builds() -> Iterator[dict[str, Future]]:
+    """Every package build of this module, started at once on two threads (each build's own jobs
+    use every core: CMAKE_BUILD_PARALLEL_LEVEL), so that one build's serial steps (configure, link,
+    the longest source compiled last and alone) overlap another's compiles: the Release builds per
+    compiler and package, and the README recipes' configure and build (their install steps run in
+    order in `prefix`). Each test waits for the builds it checks; a failed build fails those."""
+    no_gtest()  # the traps, written before any thread reads them
+    jobs: dict[str, tuple] = {}
+    for name, cc, cxx in compilers():
+        if name == "clang" and not shutil.which(cxx):
+            cxx = CLANG
+        jobs[f"release-{name}-cpp"] = (release_build, name, cc, cxx, "cpp")
+        jobs[f"release-{name}-c"] = (release_build, name, cc, cxx, "c")
+    jobs["recipe-cpp"] = (recipe_build, "cpp")
+    jobs["recipe-c"] = (recipe_build, "c")
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        futures = {key: pool.submit(*job) for key, job in jobs.items()}
+        yield futures
+        for f in futures.values():
+            f.cancel()
+
+
 @pytest.mark.parametrize("name,cc,cxx", compilers(), ids=[c[0] for c in compilers()])
-def test_release_build_is_warning_free(name, cc, cxx):
+def test_release_build_is_warning_free(builds, name, cc, cxx):
     """Release (-O3) builds of both packages, -Werror through MIPCODEC_WERROR (never forced on a
     consumer): libraries, tools and examples (asked for: they are OFF by default) compile without a
     warning under gcc and clang."""
-    if name == "clang" and not shutil.which(cxx):
-        cxx = CLANG
-    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", *ASKED]
-    c_log = cmake_build(C_SRC, BUILD / f"release-{name}" / "c", f"-DCMAKE_C_COMPILER={cc}", *common)
-    # One translation unit that includes every C++ header (the example includes the umbrella
-    # header): the C++ tools would only add minutes of compile time.
-    cpp_log = cmake_build(
-        CPP_SRC, BUILD / f"release-{name}" / "cpp", f"-DCMAKE_CXX_COMPILER={cxx}", *common, "-DMIPCODEC_BUILD_TOOLS=OFF"
-    )
+    c_log = builds[f"release-{name}-c"].result()
+    cpp_log = builds[f"release-{name}-cpp"].result()
     assert "warning" not in c_log + cpp_log
     for tool in ("decode", "encode", "getting-started"):
         assert (BUILD / f"release-{name}" / "c" / f"{PKG}-{tool}").is_file()
@@ -220,8 +250,8 @@ def sh_lines(body: str) -> list[str]:
 def readme_env(lang: str) -> dict[str, str]:
     """The recipe's machine: no CMAKE_* variables of ours but every core for the build
     (CMAKE_BUILD_PARALLEL_LEVEL), googletest that fails any find_package(GTest) first on
-    CMAKE_PREFIX_PATH, and for the C package a C++ compiler that does not exist (CXX)."""
-    no_gtest()
+    CMAKE_PREFIX_PATH (no_gtest(), written by the `builds` fixture), and for the C package a C++
+    compiler that does not exist (CXX)."""
     env = {k: v for k, v in os.environ.items() if not k.startswith("CMAKE_")}
     env["CMAKE_BUILD_PARALLEL_LEVEL"] = str(os.cpu_count() or 2)
     env["CMAKE_PREFIX_PATH"] = str(NO_GTEST / "prefix")
@@ -233,11 +263,19 @@ def readme_env(lang: str) -> dict[str, str]:
 RECIPE = {lang: BUILD / "recipe" / lang / PKG / "build" for lang in ("c", "cpp")}
 
 
-def recipe(lang: str, prefix: Path) -> Path:
-    """The package README's install block, the command as it stands (default generator and build
-    type, nothing asked for; `/opt/PKG` read as PREFIX), run in a copy of the package made outside
-    the repository where googletest cannot be found and, for the C package, no C++ compiler
-    exists. The copy's build directory is kept (a rerun only rebuilds what changed). Returns it."""
+def recipe_steps(lang: str) -> tuple[str, str]:
+    """The README's install command split before its install step: (configure and build, install)."""
+    (command,) = sh_lines(readme_blocks(lang)["install"])
+    *build, install = command.split(" && ")
+    assert build and install == f"cmake --install build --prefix /opt/{PKG}", command
+    return " && ".join(build), install
+
+
+def recipe_build(lang: str) -> str:
+    """The README's install command up to its install step, as it stands (default generator and
+    build type, nothing asked for), run in a copy of the package made outside the repository where
+    googletest cannot be found and, for the C package, no C++ compiler exists. The copy's build
+    directory is kept (a rerun only rebuilds what changed). Returns the log."""
     src = C_SRC if lang == "c" else CPP_SRC
     work = RECIPE[lang].parent
     work.mkdir(parents=True, exist_ok=True)
@@ -245,24 +283,25 @@ def recipe(lang: str, prefix: Path) -> Path:
         if old.name != "build":
             shutil.rmtree(old) if old.is_dir() else old.unlink()
     shutil.copytree(src, work, dirs_exist_ok=True, ignore=shutil.ignore_patterns("build", "build-*"))
-    (command,) = sh_lines(readme_blocks(lang)["install"])
-    assert f"--prefix /opt/{PKG}" in command, command
-    log = run(["bash", "-c", command.replace(f"/opt/{PKG}", str(prefix))], cwd=work, env=readme_env(lang))
-    assert "gtest" not in (log.stdout + log.stderr).lower()
-    cache = (RECIPE[lang] / "CMakeCache.txt").read_text()
-    assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest was looked for"
-    if lang == "c":  # the C project never enables C++ (CXX names no compiler: enabling it would fail)
-        assert not list(RECIPE[lang].glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
-    return RECIPE[lang]
+    r = run(["bash", "-c", recipe_steps(lang)[0]], cwd=work, env=readme_env(lang))
+    return r.stdout + r.stderr
 
 
 @pytest.fixture(scope="module")
-def prefix() -> Path:
-    """Both packages installed into one fresh prefix by their README recipes."""
+def prefix(builds) -> Path:
+    """Both packages installed into one fresh prefix by their README recipes (`/opt/PKG` read as
+    the prefix), the C package first."""
     out = BUILD / "prefix"
     shutil.rmtree(out, ignore_errors=True)
     for lang in ("c", "cpp"):
-        recipe(lang, out)
+        log = builds[f"recipe-{lang}"].result()
+        install = recipe_steps(lang)[1].replace(f"/opt/{PKG}", str(out))
+        r = run(["bash", "-c", install], cwd=RECIPE[lang].parent, env=readme_env(lang))
+        assert "gtest" not in (log + r.stdout + r.stderr).lower()
+        cache = (RECIPE[lang] / "CMakeCache.txt").read_text()
+        assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest looked for"
+        if lang == "c":  # the C project never enables C++ (CXX names no compiler: enabling it would fail)
+            assert not list(RECIPE[lang].glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
     return out
 
 
