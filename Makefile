@@ -131,9 +131,11 @@ test-bigendian: generate
 
 # The C and C++ packages consumed from outside the repository as docs/packaging.md says
 # (tests/consumer/): Release -O3 with -Werror under gcc (and clang where installed), the READMEs'
-# install recipes where googletest cannot be found (and, for C, no C++ compiler exists) into one
-# prefix, then a versioned find_package, pkg-config (the session API through <pkg>-posix), and
-# add_subdirectory into a C-only project (only the linked libraries built).
+# install recipes (the blocks marked <!-- consumer: install -->, run as they stand) where googletest
+# cannot be found (and, for C, no C++ compiler exists) into one prefix, then the READMEs'
+# find_package and pkg-config blocks, a versioned find_package, pkg-config (the session API through
+# <pkg>-posix), and add_subdirectory into a C-only project (only the linked libraries built). The
+# package builds run two at a time, each on every core.
 test-consumer: generate
 	$(STAMP)
 	$(PY) -m pytest -q tests/consumer/test_consumers.py

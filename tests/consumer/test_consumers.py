@@ -4,10 +4,14 @@ run by .ci/run):
 
 - Release (-O3) builds of both packages with -Werror (the packages' <PKG>_WERROR option) under gcc,
   and under clang where it is installed (CI installs clang-14), tools and examples asked for;
-- the READMEs' install recipes as they stand (`cmake -S . -B build && cmake --build build &&
-  cmake --install build --prefix DIR`, nothing asked for) where googletest cannot be found (any
-  find_package(GTest) fails the configure) and, for the C package, no C++ compiler exists; both
-  packages installed into one temporary prefix;
+- the READMEs' install recipes as they stand, taken from the READMEs' blocks marked
+  `<!-- consumer: install -->` (`cmake -S . -B build && cmake --build build && cmake --install
+  build --prefix /opt/PKG`, nothing asked for, /opt/PKG read as the test's prefix) and run in a copy
+  of the package where googletest cannot be found (any find_package(GTest) fails the configure)
+  and, for the C package, no C++ compiler exists; both packages installed into one prefix;
+- the READMEs' `<!-- consumer: find_package -->` blocks (a project's CMake lines around a program
+  `app`) and `<!-- consumer: pkg-config -->` blocks (the compile commands), run as they stand with
+  the consumer programs as `app.c`, `session_app.c`, `app.cpp`;
 - a consumer project with C and C++ programs that finds them with find_package(mipcodec X.Y
   CONFIG) (the version of VERSION), and the versions mipcodecConfigVersion.cmake accepts and
   refuses (docs/versioning.md);
@@ -19,19 +23,22 @@ run by .ci/run):
   package built top-level for Cortex-M with only the shipped toolchain file.
 
 Every program decodes the same stream (golden vectors) and must print the vectors' expected lines.
-Build directories live under build/consumer/ (kept, so a rerun only rebuilds what changed).
+Build directories live under build/consumer/ (kept, so a rerun only rebuilds what changed); the
+package builds start together on two threads (the `builds` fixture) and each test waits for its own.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import socket
 import struct
 import subprocess
 import threading
 from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -142,20 +149,48 @@ def compilers() -> list[tuple[str, str, str]]:
     return found
 
 
+def release_build(name: str, cc: str, cxx: str, lang: str) -> str:
+    """A Release (-O3) build of one package with MIPCODEC_WERROR, tools and examples asked for;
+    returns its log."""
+    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", *ASKED]
+    out = BUILD / f"release-{name}" / lang
+    if lang == "c":
+        return cmake_build(C_SRC, out, f"-DCMAKE_C_COMPILER={cc}", *common)
+    # One translation unit that includes every C++ header (the example includes the umbrella
+    # header): the C++ tools would only add minutes of compile time.
+    return cmake_build(CPP_SRC, out, f"-DCMAKE_CXX_COMPILER={cxx}", *common, "-DMIPCODEC_BUILD_TOOLS=OFF")
+
+
+@pytest.fixture(scope="module")
+def builds() -> Iterator[dict[str, Future]]:
+    """Every package build of this module, started at once on two threads (each build's own jobs
+    use every core: CMAKE_BUILD_PARALLEL_LEVEL), so that one build's serial steps (configure, link,
+    the longest source compiled last and alone) overlap another's compiles: the Release builds per
+    compiler and package, and the README recipes' configure and build (their install steps run in
+    order in `prefix`). Each test waits for the builds it checks; a failed build fails those."""
+    no_gtest()  # the traps, written before any thread reads them
+    jobs: dict[str, tuple] = {}
+    for name, cc, cxx in compilers():
+        if name == "clang" and not shutil.which(cxx):
+            cxx = CLANG
+        jobs[f"release-{name}-cpp"] = (release_build, name, cc, cxx, "cpp")
+        jobs[f"release-{name}-c"] = (release_build, name, cc, cxx, "c")
+    jobs["recipe-cpp"] = (recipe_build, "cpp")
+    jobs["recipe-c"] = (recipe_build, "c")
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        futures = {key: pool.submit(*job) for key, job in jobs.items()}
+        yield futures
+        for f in futures.values():
+            f.cancel()
+
+
 @pytest.mark.parametrize("name,cc,cxx", compilers(), ids=[c[0] for c in compilers()])
-def test_release_build_is_warning_free(name, cc, cxx):
+def test_release_build_is_warning_free(builds, name, cc, cxx):
     """Release (-O3) builds of both packages, -Werror through MIPCODEC_WERROR (never forced on a
     consumer): libraries, tools and examples (asked for: they are OFF by default) compile without a
     warning under gcc and clang."""
-    if name == "clang" and not shutil.which(cxx):
-        cxx = CLANG
-    common = ["-DCMAKE_BUILD_TYPE=Release", "-DMIPCODEC_WERROR=ON", *ASKED]
-    c_log = cmake_build(C_SRC, BUILD / f"release-{name}" / "c", f"-DCMAKE_C_COMPILER={cc}", *common)
-    # One translation unit that includes every C++ header (the example includes the umbrella
-    # header): the C++ tools would only add minutes of compile time.
-    cpp_log = cmake_build(
-        CPP_SRC, BUILD / f"release-{name}" / "cpp", f"-DCMAKE_CXX_COMPILER={cxx}", *common, "-DMIPCODEC_BUILD_TOOLS=OFF"
-    )
+    c_log = builds[f"release-{name}-c"].result()
+    cpp_log = builds[f"release-{name}-cpp"].result()
     assert "warning" not in c_log + cpp_log
     for tool in ("decode", "encode", "getting-started"):
         assert (BUILD / f"release-{name}" / "c" / f"{PKG}-{tool}").is_file()
@@ -177,33 +212,96 @@ def no_gtest() -> list[str]:
     return [f"-DCMAKE_MODULE_PATH={NO_GTEST / 'modules'}", f"-DCMAKE_PREFIX_PATH={NO_GTEST / 'prefix'}"]
 
 
-def recipe(lang: str) -> Path:
-    """The package's README install recipe, as it stands: `cmake -S . -B build && cmake --build
-    build` (nothing asked for, the default generator and build type) where googletest cannot be
-    found and, for the C package, with a C++ compiler that does not exist. Configured once (the
-    build directory is reused, the GTest traps stay in its cache). Returns the build directory."""
-    src, out = (C_SRC if lang == "c" else CPP_SRC), BUILD / "recipe" / lang
-    cxx = ["-DCMAKE_CXX_COMPILER=/nonexistent/c++"] if lang == "c" else []
-    if not (out / "CMakeCache.txt").is_file():
-        log = run(["cmake", "-S", src, "-B", out, *no_gtest(), *cxx])
-        assert "gtest" not in (log.stdout + log.stderr).lower()
-        if lang == "c":  # the C project never enables C++
-            assert "CMAKE_CXX_COMPILER" in log.stderr and "not used by the project" in log.stderr
-    run(["cmake", "--build", out])
-    cache = (out / "CMakeCache.txt").read_text()
-    assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest was looked for"
-    if lang == "c":
-        assert not list(out.glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
+# A README block the consumer tests run, marked by an HTML comment on the line before its fence:
+# `<!-- consumer: install -->` the install recipe (sh), `<!-- consumer: find_package -->` the
+# CMake lines of a project that uses the installed package (around a program `app`),
+# `<!-- consumer: pkg-config -->` the compile commands without CMake (sh; app.c, session_app.c,
+# app.cpp). docs/packaging.md "Consumer tests" describes them.
+README_BLOCK = re.compile(r"^<!-- consumer: ([\w-]+) -->\n(`{3,})\w*\n(.*?)^\2\n", re.S | re.M)
+README_KINDS = {"install", "find_package", "pkg-config"}
+
+
+def readme_blocks(lang: str) -> dict[str, str]:
+    """The package README's blocks marked for the consumer tests, by kind: each kind exactly once."""
+    readme = (C_SRC if lang == "c" else CPP_SRC) / "README.md"
+    found: dict[str, str] = {}
+    for m in README_BLOCK.finditer(readme.read_text(encoding="utf-8")):
+        assert m[1] in README_KINDS and m[1] not in found, f"{readme}: marker consumer: {m[1]} unknown or repeated"
+        found[m[1]] = m[3]
+    assert set(found) == README_KINDS, f"{readme}: no block marked consumer: {sorted(README_KINDS - set(found))}"
+    return found
+
+
+def sh_lines(body: str) -> list[str]:
+    """The commands of a sh block: one a line, `\\` continues, comments dropped."""
+    out, pending = [], ""
+    for raw in body.splitlines():
+        line = re.split(r"\s{2,}#\s", raw.rstrip(), maxsplit=1)[0]
+        if not pending and (not line.strip() or line.lstrip().startswith("#")):
+            continue
+        if line.endswith("\\"):
+            pending += line[:-1] + " "
+            continue
+        out.append(pending + line)
+        pending = ""
     return out
 
 
+def readme_env(lang: str) -> dict[str, str]:
+    """The recipe's machine: no CMAKE_* variables of ours but every core for the build
+    (CMAKE_BUILD_PARALLEL_LEVEL), googletest that fails any find_package(GTest) first on
+    CMAKE_PREFIX_PATH (no_gtest(), written by the `builds` fixture), and for the C package a C++
+    compiler that does not exist (CXX)."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("CMAKE_")}
+    env["CMAKE_BUILD_PARALLEL_LEVEL"] = str(os.cpu_count() or 2)
+    env["CMAKE_PREFIX_PATH"] = str(NO_GTEST / "prefix")
+    if lang == "c":
+        env["CXX"] = "/nonexistent/c++"
+    return env
+
+
+RECIPE = {lang: BUILD / "recipe" / lang / PKG / "build" for lang in ("c", "cpp")}
+
+
+def recipe_steps(lang: str) -> tuple[str, str]:
+    """The README's install command split before its install step: (configure and build, install)."""
+    (command,) = sh_lines(readme_blocks(lang)["install"])
+    *build, install = command.split(" && ")
+    assert build and install == f"cmake --install build --prefix /opt/{PKG}", command
+    return " && ".join(build), install
+
+
+def recipe_build(lang: str) -> str:
+    """The README's install command up to its install step, as it stands (default generator and
+    build type, nothing asked for), run in a copy of the package made outside the repository where
+    googletest cannot be found and, for the C package, no C++ compiler exists. The copy's build
+    directory is kept (a rerun only rebuilds what changed). Returns the log."""
+    src = C_SRC if lang == "c" else CPP_SRC
+    work = RECIPE[lang].parent
+    work.mkdir(parents=True, exist_ok=True)
+    for old in work.iterdir():  # the package as it is now, the build directory kept
+        if old.name != "build":
+            shutil.rmtree(old) if old.is_dir() else old.unlink()
+    shutil.copytree(src, work, dirs_exist_ok=True, ignore=shutil.ignore_patterns("build", "build-*"))
+    r = run(["bash", "-c", recipe_steps(lang)[0]], cwd=work, env=readme_env(lang))
+    return r.stdout + r.stderr
+
+
 @pytest.fixture(scope="module")
-def prefix() -> Path:
-    """Both packages installed into one fresh prefix by their README recipes."""
+def prefix(builds) -> Path:
+    """Both packages installed into one fresh prefix by their README recipes (`/opt/PKG` read as
+    the prefix), the C package first."""
     out = BUILD / "prefix"
     shutil.rmtree(out, ignore_errors=True)
     for lang in ("c", "cpp"):
-        run(["cmake", "--install", recipe(lang), "--prefix", out])
+        log = builds[f"recipe-{lang}"].result()
+        install = recipe_steps(lang)[1].replace(f"/opt/{PKG}", str(out))
+        r = run(["bash", "-c", install], cwd=RECIPE[lang].parent, env=readme_env(lang))
+        assert "gtest" not in (log + r.stdout + r.stderr).lower()
+        cache = (RECIPE[lang] / "CMakeCache.txt").read_text()
+        assert not [ln for ln in cache.splitlines() if ln.upper().startswith(("GTEST", "GMOCK"))], "GTest looked for"
+        if lang == "c":  # the C project never enables C++ (CXX names no compiler: enabling it would fail)
+            assert not list(RECIPE[lang].glob("CMakeFiles/*/CMakeCXXCompiler.cmake")), "C++ was enabled"
     return out
 
 
@@ -236,7 +334,7 @@ def test_install_tree(prefix):
     # no test, source or internal header is installed, and no program unless asked for
     assert not [f for f in files if f.endswith((".c", ".cpp")) or "/src/" in f or "test" in f or f.startswith("bin/")]
     # the C and the C++ package write the same version file (either may be installed last)
-    versions = [(BUILD / "recipe" / lang / f"{PKG}ConfigVersion.cmake").read_bytes() for lang in ("c", "cpp")]
+    versions = [(RECIPE[lang] / f"{PKG}ConfigVersion.cmake").read_bytes() for lang in ("c", "cpp")]
     assert versions[0] == versions[1]
     # every linker symbol the C libraries define starts with the package's prefix (mipc_), so a
     # program links them beside the vendor SDK (mip_)
@@ -258,6 +356,59 @@ def test_find_package_c_and_cpp_in_one_project(prefix, stream):
     check_cpp(out / "consumer_cpp", stream, with_c=True)
     with fake_device(stream) as address:
         check_session(out / "consumer_session", address)
+
+
+# The programs the READMEs' blocks name, played by the consumer programs.
+PROGRAMS = {"app.c": "consumer.c", "session_app.c": "session.c", "app.cpp": "consumer.cpp"}
+
+
+@pytest.mark.parametrize("lang", ["c", "cpp"])
+def test_readme_find_package(prefix, stream, lang):
+    """The README's find_package block, as it stands, as the CMake lines of a project whose program
+    `app` is the consumer program (consumer.c, consumer.cpp): configured with the prefix the README
+    recipes installed into, built and run."""
+    out = BUILD / "readme-find-package" / lang
+    shutil.rmtree(out, ignore_errors=True)
+    out.mkdir(parents=True)
+    main = "app.c" if lang == "c" else "app.cpp"
+    shutil.copy2(HERE / PROGRAMS[main], out / main)
+    head = (
+        "cmake_minimum_required(VERSION 3.16)\n"
+        f"project(app LANGUAGES {'C' if lang == 'c' else 'CXX'})\n"
+        f"add_executable(app {main})\n"
+    )
+    (out / "CMakeLists.txt").write_text(head + readme_blocks(lang)["find_package"], encoding="utf-8")
+    env = {**readme_env(lang), "CMAKE_PREFIX_PATH": str(prefix)}
+    run(["cmake", "-S", out, "-B", out / "build"], env=env)
+    run(["cmake", "--build", out / "build"], env=env)
+    if lang == "c":
+        check_c(out / "build" / "app", stream)
+    else:
+        check_cpp(out / "build" / "app", stream, with_c=False)
+
+
+def test_readme_pkg_config(prefix, stream):
+    """The READMEs' pkg-config blocks, each command as it stands (`/opt/PKG` read as the prefix the
+    recipes installed into), in a directory holding the programs they name (app.c, session_app.c,
+    app.cpp: the consumer programs); each program built (a.out) must print what it should."""
+    for lang in ("c", "cpp"):
+        commands = sh_lines(readme_blocks(lang)["pkg-config"])
+        assert commands, lang
+        for n, command in enumerate(commands):
+            (source,) = [name for name in PROGRAMS if re.search(rf"(^|\s){re.escape(name)}(\s|$)", command)]
+            out = BUILD / "readme-pkg-config" / f"{lang}-{n}"
+            shutil.rmtree(out, ignore_errors=True)
+            out.mkdir(parents=True)
+            shutil.copy2(HERE / PROGRAMS[source], out / source)
+            assert f"/opt/{PKG}/" in command, command
+            run(["bash", "-c", command.replace(f"/opt/{PKG}/", f"{prefix}/")], cwd=out, env=readme_env(lang))
+            if source == "app.c":
+                check_c(out / "a.out", stream)
+            elif source == "app.cpp":
+                check_cpp(out / "a.out", stream, with_c=False)
+            else:
+                with fake_device(stream) as address:
+                    check_session(out / "a.out", address)
 
 
 def compatible(want: str, prefix: Path, tmp_path: Path) -> subprocess.CompletedProcess:
