@@ -175,9 +175,18 @@ def build_cpp(package: str, mode: str) -> dict[str, Path]:
             ]
         )
     # The library's sources (src/: the codecs, the session facts, the typed API), instrumented like
-    # the harness, one object each.
-    extra = []
-    for c in sorted((inc.parent / "src").rglob("*.cpp")):
+    # the harness, one object each; for replay, the sanitized library of `tests/lang/cpp.sh test`
+    # when that build exists (CMake Debug with the same instrumentation: -O0 -g,
+    # -fsanitize=address,undefined -fno-sanitize-recover=all; make test runs test-cpp first), so
+    # CI compiles the library's sources under ASan once, not twice.
+    extra: list[Path] = []
+    shared = ROOT / "build" / "cpp-sanitize" / package
+    sources = [] if not fuzz and (shared / "build.ninja").is_file() else sorted((inc.parent / "src").rglob("*.cpp"))
+    if not sources:
+        log(f"fuzz.py: the C++ library of {package} from {shared.relative_to(ROOT)} (tests/lang/cpp.sh test)")
+        sh(["cmake", "--build", str(shared), "--target", f"{package}_cpp"], stdout=subprocess.DEVNULL)
+        extra.append(shared / f"lib{package}_cpp.a")
+    for c in sources:
         o = out / "lib" / (c.relative_to(inc.parent / "src").as_posix().replace("/", "_") + ".o")
         o.parent.mkdir(parents=True, exist_ok=True)
         if stale(o, max(deps, c.stat().st_mtime)):
