@@ -112,7 +112,8 @@ impl TypedLines {
         };
         let decoded: &[u8] = self.any.index().map_or(&[], |i| i.descriptors());
         let set = packet.set();
-        let _ = write!(out, "{{\"offset\":{offset},\"set\":{set}");
+        out.push('{');
+        let _ = write!(out, "\"offset\":{offset},\"set\":{set}");
         let sample_at = out.len();
         out.push_str(",\"fields\":[");
         // The entries in packet order (the walk only places them): each is the next entry passed

@@ -67,6 +67,7 @@ codec_status_t codec_encode_field(const codec_field_value_t *value, uint8_t *buf
 
 /* src/layouts_internal.h */
 void codec_value_to_json(codec_jw_t *w, const codec_field_value_t *value);
+void codec_layout_to_json(codec_jw_t *w, codec_field_id_t id, const void *in);
 int codec_value_from_json(codec_jr_t *jr, size_t pos, codec_field_id_t id, codec_field_value_t *value);
 
 /* src/session_facts.c (declared by the runtime's codec/session.h) */
@@ -100,6 +101,8 @@ struct codec_contract {
     codec_device_t any;
     codec_set_kind_t (*set_kind)(uint8_t);
     codec_set_kind_t kinds[2];
+    void (*layout_to_json)(codec_jw_t *, codec_field_id_t, const void *);
+    size_t packet_size; /* codec_packet_t (dispatch.h): a data packet as its set's decoder fills it */
 };
 
 extern const struct codec_contract codec_contract;
@@ -111,4 +114,5 @@ const struct codec_contract codec_contract = {
     codec_function_name,       codec_session_ack_decode, codec_device_model_names,
     codec_field_length_adjust, codec_device_baud_rates,  codec_device_default_baud,
     CODEC_DEVICE_ANY,          codec_set_kind,           {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
+    codec_layout_to_json,      sizeof(codec_packet_t),
 };
