@@ -71,15 +71,11 @@ static void field_json(mipc_jw_t *w, uint8_t set, const mipc_field_entry_t *e, m
     mipc_jw_lit(w, "}");
 }
 
-size_t mipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mipc_device_t device,
-                             char *out, size_t cap) {
-    assert(packet != NULL || len == 0);
-    assert(out != NULL || cap == 0);
-    mipc_jw_t w;
-    mipc_field_iter_t it;
-    mipc_field_entry_t e;
+/* The start of a packet's line, `{"offset":N,"set":S,"fields":[`, written to w (over out, cap),
+ * and the iterator over the packet's fields (its payload as far as len holds it); the set. */
+static uint8_t packet_line_head(mipc_jw_t *w, mipc_field_iter_t *it, const uint8_t *packet, size_t len,
+                                uint64_t offset, char *out, size_t cap) {
     size_t payload = 0;
-    size_t i = 0;
     uint8_t set = 0;
     if (len >= MIPC_HEADER_SIZE) {
         set = packet[MIPC_SET_OFFSET];
@@ -88,13 +84,25 @@ size_t mipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset,
             payload = len - MIPC_HEADER_SIZE;
         }
     }
-    mipc_jw_init(&w, out, cap);
-    mipc_jw_lit(&w, "{\"offset\":");
-    mipc_jw_uint(&w, offset);
-    mipc_jw_lit(&w, ",\"set\":");
-    mipc_jw_uint(&w, set);
-    mipc_jw_lit(&w, ",\"fields\":[");
-    mipc_field_iter_init(&it, set, len >= MIPC_HEADER_SIZE ? packet + MIPC_HEADER_SIZE : NULL, payload);
+    mipc_jw_init(w, out, cap);
+    mipc_jw_lit(w, "{\"offset\":");
+    mipc_jw_uint(w, offset);
+    mipc_jw_lit(w, ",\"set\":");
+    mipc_jw_uint(w, set);
+    mipc_jw_lit(w, ",\"fields\":[");
+    mipc_field_iter_init(it, set, len >= MIPC_HEADER_SIZE ? packet + MIPC_HEADER_SIZE : NULL, payload);
+    return set;
+}
+
+size_t mipc_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, mipc_device_t device,
+                             char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(out != NULL || cap == 0);
+    mipc_jw_t w;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    size_t i = 0;
+    const uint8_t set = packet_line_head(&w, &it, packet, len, offset, out, cap);
     while (mipc_field_iter_next(&it, &e)) {
         mipc_jw_sep(&w, i++);
         field_json(&w, set, &e, device);
@@ -139,28 +147,13 @@ size_t mipc_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t
     mipc_jw_t w;
     mipc_field_iter_t it;
     mipc_field_entry_t e;
-    size_t payload = 0;
     size_t i = 0;
     size_t decoded = 0;
     size_t passed = 0;
-    uint8_t set = 0;
-    if (len >= MIPC_HEADER_SIZE) {
-        set = packet[MIPC_SET_OFFSET];
-        payload = packet[MIPC_LENGTH_OFFSET];
-        if (payload > len - MIPC_HEADER_SIZE) {
-            payload = len - MIPC_HEADER_SIZE;
-        }
-    }
-    mipc_jw_init(&w, out, cap);
-    mipc_jw_lit(&w, "{\"offset\":");
-    mipc_jw_uint(&w, offset);
-    mipc_jw_lit(&w, ",\"set\":");
-    mipc_jw_uint(&w, set);
-    mipc_jw_lit(&w, ",\"fields\":[");
     /* The entries in packet order (the walk only places them): each is the next entry passed on
      * when it starts where that one does, else the next decoded field, which must have its
      * descriptor. */
-    mipc_field_iter_init(&it, set, len >= MIPC_HEADER_SIZE ? packet + MIPC_HEADER_SIZE : NULL, payload);
+    const uint8_t set = packet_line_head(&w, &it, packet, len, offset, out, cap);
     while (mipc_field_iter_next(&it, &e)) {
         mipc_jw_sep(&w, i++);
         if (passed < other_count && others[passed].offset == e.offset && others[passed].kind == e.kind) {

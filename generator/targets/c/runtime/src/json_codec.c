@@ -71,15 +71,11 @@ static void field_json(codec_jw_t *w, uint8_t set, const codec_field_entry_t *e,
     codec_jw_lit(w, "}");
 }
 
-size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
-                              char *out, size_t cap) {
-    assert(packet != NULL || len == 0);
-    assert(out != NULL || cap == 0);
-    codec_jw_t w;
-    codec_field_iter_t it;
-    codec_field_entry_t e;
+/* The start of a packet's line, `{"offset":N,"set":S,"fields":[`, written to w (over out, cap),
+ * and the iterator over the packet's fields (its payload as far as len holds it); the set. */
+static uint8_t packet_line_head(codec_jw_t *w, codec_field_iter_t *it, const uint8_t *packet, size_t len,
+                                uint64_t offset, char *out, size_t cap) {
     size_t payload = 0;
-    size_t i = 0;
     uint8_t set = 0;
     if (len >= CODEC_HEADER_SIZE) {
         set = packet[CODEC_SET_OFFSET];
@@ -88,13 +84,25 @@ size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset
             payload = len - CODEC_HEADER_SIZE;
         }
     }
-    codec_jw_init(&w, out, cap);
-    codec_jw_lit(&w, "{\"offset\":");
-    codec_jw_uint(&w, offset);
-    codec_jw_lit(&w, ",\"set\":");
-    codec_jw_uint(&w, set);
-    codec_jw_lit(&w, ",\"fields\":[");
-    codec_field_iter_init(&it, set, len >= CODEC_HEADER_SIZE ? packet + CODEC_HEADER_SIZE : NULL, payload);
+    codec_jw_init(w, out, cap);
+    codec_jw_lit(w, "{\"offset\":");
+    codec_jw_uint(w, offset);
+    codec_jw_lit(w, ",\"set\":");
+    codec_jw_uint(w, set);
+    codec_jw_lit(w, ",\"fields\":[");
+    codec_field_iter_init(it, set, len >= CODEC_HEADER_SIZE ? packet + CODEC_HEADER_SIZE : NULL, payload);
+    return set;
+}
+
+size_t codec_json_packet_line(const uint8_t *packet, size_t len, uint64_t offset, codec_device_t device,
+                              char *out, size_t cap) {
+    assert(packet != NULL || len == 0);
+    assert(out != NULL || cap == 0);
+    codec_jw_t w;
+    codec_field_iter_t it;
+    codec_field_entry_t e;
+    size_t i = 0;
+    const uint8_t set = packet_line_head(&w, &it, packet, len, offset, out, cap);
     while (codec_field_iter_next(&it, &e)) {
         codec_jw_sep(&w, i++);
         field_json(&w, set, &e, device);
@@ -140,28 +148,13 @@ size_t codec_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_
     codec_jw_t w;
     codec_field_iter_t it;
     codec_field_entry_t e;
-    size_t payload = 0;
     size_t i = 0;
     size_t decoded = 0;
     size_t passed = 0;
-    uint8_t set = 0;
-    if (len >= CODEC_HEADER_SIZE) {
-        set = packet[CODEC_SET_OFFSET];
-        payload = packet[CODEC_LENGTH_OFFSET];
-        if (payload > len - CODEC_HEADER_SIZE) {
-            payload = len - CODEC_HEADER_SIZE;
-        }
-    }
-    codec_jw_init(&w, out, cap);
-    codec_jw_lit(&w, "{\"offset\":");
-    codec_jw_uint(&w, offset);
-    codec_jw_lit(&w, ",\"set\":");
-    codec_jw_uint(&w, set);
-    codec_jw_lit(&w, ",\"fields\":[");
     /* The entries in packet order (the walk only places them): each is the next entry passed on
      * when it starts where that one does, else the next decoded field, which must have its
      * descriptor. */
-    codec_field_iter_init(&it, set, len >= CODEC_HEADER_SIZE ? packet + CODEC_HEADER_SIZE : NULL, payload);
+    const uint8_t set = packet_line_head(&w, &it, packet, len, offset, out, cap);
     while (codec_field_iter_next(&it, &e)) {
         codec_jw_sep(&w, i++);
         if (passed < other_count && others[passed].offset == e.offset && others[passed].kind == e.kind) {
