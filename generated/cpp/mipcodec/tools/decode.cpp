@@ -116,13 +116,7 @@ class TypedJsonLines {
         if (index == nullptr ? !typed_.empty() : typed_.size() != index->count) {
             return false;
         }
-        w.begin_object();
-        w.key("offset");
-        w.uinteger(offset);
-        w.key("set");
-        w.uinteger(packet.set());
-        w.key("fields");
-        w.begin_array();
+        mipcodec::write_packet_head(w, offset, packet.set());
         // The entries in packet order (the walk only places them): each is the next entry passed
         // on when it starts where that one does, else the next decoded field, of its descriptor.
         mipcodec::FieldIterator it(packet);

@@ -97,17 +97,22 @@ void write_field_entry_json(JsonWriter &w, std::uint8_t set, const FieldEntry &e
     decode_field(set, e.descriptor, e.data, e.size, device, visitor);
 }
 
-/// {"offset":O,"set":S,"fields":[...]} for one packet (no newline).
-template <class Defer = void>
-void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
-                       const std::optional<Device> &device) {
+/// The start of a packet's line, `{"offset":O,"set":S,"fields":[` (the fields and `]}` follow).
+inline void write_packet_head(JsonWriter &w, std::uint64_t offset, std::uint8_t set) {
     w.begin_object();
     w.key("offset");
     w.uinteger(offset);
     w.key("set");
-    w.uinteger(packet.set());
+    w.uinteger(set);
     w.key("fields");
     w.begin_array();
+}
+
+/// {"offset":O,"set":S,"fields":[...]} for one packet (no newline).
+template <class Defer = void>
+void write_packet_json(JsonWriter &w, std::uint64_t offset, const PacketView &packet,
+                       const std::optional<Device> &device) {
+    write_packet_head(w, offset, packet.set());
     FieldIterator it(packet);
     FieldEntry e;
     while (it.next(e)) {
