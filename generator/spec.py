@@ -187,7 +187,20 @@ def load_spec(spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Pa
             errors.extend(e.errors)
     if errors:
         raise SpecErrors(errors)
+    if not protocols:
+        raise SpecError(None, _no_protocol(Path(spec_dir)), "a spec root: one directory per protocol, e.g. spec/")
     return {"ir_version": IR_VERSION, "protocols": protocols}
+
+
+def _no_protocol(spec_dir: Path) -> str:
+    """Why spec_dir yields no protocol: a protocol's own directory given for the spec root, or
+    a directory with no protocol directory at all (either would make an IR of nothing)."""
+    if any(p.suffix in (".yaml", ".yml") for p in spec_dir.iterdir()):
+        return (
+            f"spec directory {spec_dir} has no protocol directory: it holds spec files, so it looks like one"
+            f" protocol's directory; give its parent ({os.path.relpath(spec_dir.resolve().parent)})"
+        )
+    return f"spec directory {spec_dir} has no protocol directory"
 
 
 def locate_names(

@@ -421,3 +421,44 @@ def test_generate_prints_what_changed(tmp_path, capsys):
     lines = capsys.readouterr().err.splitlines()
     assert re.fullmatch(r".*out: 1 changed, 0 added, 1 removed \(\d+ files\)", lines[0]), lines[0]
     assert lines[1:] == ["  D python/left-over.py", "  M python/mipcodec/mipcodec/sensor.py"]
+
+
+# ------------------------------------------------------------------------------ a spec with no protocol
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["generate", "--spec", "{spec}", "--out", "{out}"],
+        ["generate", "--spec", "{spec}", "--out", "{out}", "--validate-only"],
+        ["lint", "--spec", "{spec}"],
+    ],
+)
+@pytest.mark.parametrize("given", ["protocol_dir", "empty_dir"])
+def test_a_spec_with_no_protocol_is_one_error_line_and_writes_nothing(tmp_path, capsys, argv, given):
+    """`--spec spec/mip` (a protocol's directory given for the spec root) once wrote an ir.json with
+    no protocol and exited 0 (issue 49): now one error line, exit 1, and no output directory."""
+    if given == "protocol_dir":
+        spec = ROOT / "spec" / "mip"
+    else:
+        spec = tmp_path / "empty"
+        spec.mkdir()
+    out = tmp_path / "out"
+    assert mipgen([a.format(spec=spec, out=out) for a in argv]) == 1
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and err[0].startswith("error: spec directory ") and "has no protocol directory" in err[0]
+    if given == "protocol_dir":
+        assert "give its parent (" in err[0] and "looks like one protocol's directory" in err[0]
+    assert not out.exists()
+
+
+def test_diff_of_a_spec_with_no_protocol_is_a_tool_error(tmp_path, capsys):
+    assert mipgen(["diff", str(ROOT / "spec" / "mip"), str(ROOT / "spec")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and "does not load" in err[0] and "has no protocol directory" in err[0]
+
+
+def test_the_old_entry_point_refuses_a_spec_with_no_protocol(tmp_path, capsys):
+    from generator.__main__ import main as old_main
+
+    out = tmp_path / "out"
+    assert old_main(["--spec", str(ROOT / "spec" / "mip"), "--out", str(out)]) == 1
+    assert len(capsys.readouterr().err.splitlines()) == 1 and not out.exists()
