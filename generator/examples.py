@@ -17,6 +17,8 @@ from typing import Callable
 
 from . import model
 from .commands import Call, commands
+from .passes.session_example import CALLS as SESSION_CALLS
+from .passes.session_example import STEPS as SESSION_STEPS
 from .render import ToolError
 
 # The source file of the example in each package, without its extension, and the block size the
@@ -94,39 +96,13 @@ def example_context(protocol: dict, api_names: Callable[[dict, dict, dict], dict
 # packets through one handler per data descriptor. The documentation quotes the parts between
 # the marker comments `[connect]`, `[configure]`, `[stream]` and `[end]`.
 #
-# The commands are the spec's names per protocol (the commands a user of that device family
-# configures first); session_example() resolves and checks them against the IR, so a renamed
-# command fails the generator with a clear message instead of generating a broken example.
+# The commands are the protocol file's `session_example` (the IR's `session_example`, checked by
+# generator/passes/session_example.py); session_example() resolves them against the IR into the
+# calls each step makes, so every back end prints the same program.
 SESSION_PROGRAM = "configure_and_stream"
 SESSION_PARTS = ("connect", "configure", "stream")
 SESSION_COUNT = 5  # data packets printed when COUNT is not given
-SESSION_EXAMPLES: dict[str, dict] = {
-    "mip": {
-        "device": "cv7_ins",
-        "ping": ("base", "ping"),
-        "info": ("base", "get_device_info"),
-        "setting": ("threedm", "sensor_to_vehicle_euler", {"roll": 0.0, "pitch": 0.0, "yaw": 1.5}),
-        "format": (
-            "threedm",
-            "message_format",
-            {
-                "desc_set": 0x80,
-                "descriptors": [{"descriptor": 0x04, "decimation": 100}, {"descriptor": 0x05, "decimation": 100}],
-            },
-        ),
-        "enable": ("threedm", "data_stream_control", {"desc_set": 0x80, "enable": True}),
-        "data": ("sensor", ("scaled_accel", "scaled_gyro")),
-    },
-    "mscip": {
-        "device": "ms_imu3020",
-        "ping": ("base", "ping"),
-        "info": ("base", "get_device_model"),
-        "setting": ("imu_config", "sample_rate", {"decimation": 10}),
-        "format": ("imu_config", "select_sensors", {"reserved": 0, "sensors": [0x81, 0x82]}),
-        "enable": ("imu_config", "data_on_off", {"control": 1}),
-        "data": ("imu_data", ("scaled_accel", "scaled_gyro")),
-    },
-}
+_WHERE = "the protocol file's session_example"
 
 
 def _find(protocol: dict, set_name: str, field_name: str) -> tuple[dict, dict]:
@@ -137,7 +113,7 @@ def _find(protocol: dict, set_name: str, field_name: str) -> tuple[dict, dict]:
                     return s, f
     raise ExampleError(
         f"protocol {protocol['name']}: the configure-and-stream example uses {set_name}.{field_name},"
-        " which the spec does not have (generator/examples.py SESSION_EXAMPLES)"
+        f" which the spec does not have ({_WHERE})"
     )
 
 
@@ -149,24 +125,13 @@ def device_variant(protocol: dict, field: dict, device: str) -> dict:
     raise ExampleError(f"protocol {protocol['name']}: {field['name']} has no layout for {device}")
 
 
-# The functions each step calls (None: the plain command, or "write" when the field has a function
-# selector); values are given to the calls that send them (None and "write").
-SESSION_CALLS = {
-    "ping": (None,),
-    "info": (None,),
-    "setting": ("write", "read"),
-    "format": ("write",),
-    "enable": ("write",),
-}
-
-
 def session_example(protocol: dict) -> dict | None:
     """The configure-and-stream example of a protocol, resolved against the IR (None when the
     protocol has none): device, and per step (ping, info, setting, format, enable) the set, field,
     layout variant for the device, the values written and `calls`: per function the step calls
     (SESSION_CALLS; None for a command without function selector) the generator/commands.py
     Call the program makes for the device; data: the set and its fields."""
-    table = SESSION_EXAMPLES.get(protocol["name"])
+    table = protocol.get("session_example")
     if table is None or not protocol.get("session"):
         return None
     device = table["device"]
@@ -174,11 +139,10 @@ def session_example(protocol: dict) -> dict | None:
         raise ExampleError(f"protocol {protocol['name']}: the example's device {device} is not in the spec")
     out: dict = {"program": SESSION_PROGRAM, "count": SESSION_COUNT, "device": device}
     model = commands(protocol)
-    for step in ("ping", "info", "setting", "format", "enable"):
-        set_name, field_name, *rest = table[step]
+    for step in SESSION_STEPS:
+        set_name, field_name, values = table[step]["set"], table[step]["command"], table[step]["values"]
         s, f = _find(protocol, set_name, field_name)
         v = device_variant(protocol, f, device)
-        values = rest[0] if rest else {}
         names = {q["name"] for q in v["params"]}
         unknown = sorted(set(values) - names)
         if unknown:
@@ -189,12 +153,11 @@ def session_example(protocol: dict) -> dict | None:
             call = model.call(s["id"], f["name"], fn, device)
             if call is None:
                 raise ExampleError(
-                    f"protocol {protocol['name']}: {field_name} has no {fn or 'plain'} call for {device}"
-                    " (generator/examples.py SESSION_EXAMPLES)"
+                    f"protocol {protocol['name']}: {field_name} has no {fn or 'plain'} call for {device} ({_WHERE})"
                 )
             calls[fn] = call
         out[step] = {"set": s, "field": f, "variant": v, "values": values, "calls": calls}
-    data_set, data_names = table["data"]
+    data_set, data_names = table["data"]["set"], table["data"]["fields"]
     fields = [_find(protocol, data_set, n) for n in data_names]
     out["data"] = {"set": fields[0][0], "fields": [f for _s, f in fields]}
     return out
@@ -282,7 +245,7 @@ def example_arguments(protocol: dict, ex: dict, step: str, fn: str | None, lang:
         if a.name not in values and a.required:
             raise ExampleError(
                 f"{lang} back end: the configure-and-stream example gives no value for {a.name} of"
-                f" {st['field']['name']} (generator/examples.py SESSION_EXAMPLES)"
+                f" {st['field']['name']} ({_WHERE})"
             )
         out.append((a, params[a.name], values.get(a.name)))
     return out

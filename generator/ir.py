@@ -27,6 +27,7 @@ from .passes import (
     reserved_fields,
     resolve_types,
     sample_rule,
+    session_example,
     session_rule,
     sets,
     settings,
@@ -52,6 +53,7 @@ PASSES = (
     size_limits,  # every layout's largest encoding fits one field (framing max_field_data)
     sample_rule,  # the sample-grouping rule (conformance.md section 6)
     session_rule,  # command timeouts; how a reply is matched (conformance.md section 7)
+    session_example,  # the configure-and-stream example program's commands, checked
     time_facts,  # the fields giving a packet its GPS time, device clock and leap seconds
     simulation,  # the simulated device's streaming commands, base rates, filters, checked
     settings,  # the settings files' keyed reads and non-settings (device command line), checked

@@ -28,6 +28,7 @@ def run(ctx: Context) -> None:
         "shared_data": p.get("shared_data"),
         "samples": ctx.samples,
         "session": ctx.session,
+        "session_example": ctx.session_example,
         "time": ctx.time,
         "simulation": ctx.simulation,
         "settings": ctx.settings,

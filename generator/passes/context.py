@@ -51,6 +51,7 @@ class Context:
         self.sets: list[dict] = []
         self.samples: dict = {}
         self.session: dict | None = None  # session_rule: how replies are matched
+        self.session_example: dict | None = None  # session_example: the example program's steps
         self.time: dict = {}  # time_facts: the fields giving a packet its time
         self.simulation: dict | None = None  # simulation: what the simulated device needs
         self.settings: dict | None = None  # settings: the settings files' keyed reads (device command line)

@@ -746,7 +746,7 @@ class _Protocol:
                 if fn not in (None, "write") or a["name"] not in st["values"]:
                     raise ExampleError(
                         f"C back end: the configure-and-stream example gives no value for {a['name']} of"
-                        f" {row['name']} (generator/examples.py SESSION_EXAMPLES)"
+                        f" {row['name']} (the protocol file's session_example)"
                     )
                 value, tref = st["values"][a["name"]], types[a["name"]]
                 arg = {"how": a["how"], "arg": a["arg"], "ctype": self._c_type(tref)}
