@@ -5,23 +5,26 @@ its package (`examples/getting_started.*`, between `[build-command]` / `[parse-s
 `[read-file]` and `[end]` comment lines). That program is built and run by the test suite
 (tests/conformance/test_getting_started.py), so the snippets are code that compiles and works.
 The output shown comes from the golden vectors, never from running the code here.
+
+What a page says in its language's own words (how to vendor and build the package, the variable
+that picks it in tests/lang/<lang>.sh, how to run the example from the package's directory) is
+that target's GETTING_STARTED record (generator/targets/<lang>/facts.py): this module branches on
+no language name, so a new target gets its own text or an error naming the missing fact.
 """
 
 from __future__ import annotations
 
 import json
-import re
 
 from ..examples import END, PARTS, PROGRAM, SESSION_PARTS, SESSION_PROGRAM, example_command, session_example
-from ..targets import TARGETS
-from .model import CONFIGURE_ANCHOR, LANG_TITLES, Docs, Page, code, hx
+from ..render import ToolError
+from ..targets import TARGETS, GettingStarted
+from .model import CONFIGURE_ANCHOR, Docs, Page, code, hx
 
 EXTENSIONS = {name: TARGETS[name].EXTENSION for name in TARGETS}  # the target registry's languages
 EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 SESSION_EXAMPLE_FILES = {lang: f"{lang}/{{pkg}}/examples/{SESSION_PROGRAM}.{ext}" for lang, ext in EXTENSIONS.items()}
 TITLES = {"build-command": "Build a command", "parse-stream": "Parse a stream", "read-file": "Decode a capture"}
-# The variable that picks the package of tests/lang/<lang>.sh (default mipcodec).
-RUN_PACKAGE_VARS = {"c": "C_PACKAGE", "cpp": "CPP_PACKAGE", "python": "PY_PACKAGE", "rust": "RUST_PACKAGE"}
 SESSION_TITLES = {
     "connect": "Connect and identify the device",
     "configure": "Write and read a setting",
@@ -45,41 +48,26 @@ def snippet(source: str, part: str) -> str:
     return "\n".join(ln[indent:] for ln in body)
 
 
-def _setup(lang: str, pkg: str, files: dict[str, str]) -> tuple[str, str]:
-    """(text, code) telling how to vendor and build the package."""
-    if lang == "c":
-        return (
-            f"Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your"
-            f" CMake build (or install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see"
-            " the package's README). Its tests, tools and examples stay off when it is not the top-level"
-            " project:",
-            f"add_subdirectory(third_party/{pkg})\n"
-            f"target_link_libraries(your_app PRIVATE {pkg}::c)   # {pkg}::c_json for canonical JSON lines",
+def target_facts(lang: str) -> GettingStarted:
+    """The getting-started record of the registered target lang; a ToolError naming the missing
+    fact when its wing has none."""
+    fact = getattr(TARGETS[lang], "GETTING_STARTED", None)
+    if not isinstance(fact, GettingStarted):
+        raise ToolError(
+            f"target {lang} has no GETTING_STARTED (a generator.targets.GettingStarted in"
+            f" generator/targets/{lang}/facts.py, exported by its __init__): its getting-started page needs it"
         )
-    if lang == "cpp":
-        return (
-            f"Copy `generated/cpp/{pkg}/` into your tree (a C++17 library: CMake builds it) and add it to your CMake build (or"
-            f" install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see the package's README):",
-            f"add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::cpp)",
-        )
-    if lang == "python":
-        return (
-            f"Install `generated/python/{pkg}/` (Python 3.9+, no dependencies, typed for mypy; its optional C "
-            "accelerator is compiled when a C compiler is there), or build a wheel and an sdist once and install "
-            f"from them anywhere, offline too (`generated/python/{pkg}/README.md` has the details):",
-            f"pip install ./generated/python/{pkg}\n"
-            f"# or: python -m build --outdir dist generated/python/{pkg}\n"
-            f"#     pip install --no-index --find-links dist {pkg}\n"
-            f"python -m {pkg} decode capture.bin   # canonical JSON lines",
-        )
-    msrv = re.search(r'^rust-version = "([^"]+)"', files.get(f"rust/{pkg}/Cargo.toml", ""), re.M)
-    since = f"Rust {msrv.group(1)} or newer, " if msrv else ""
-    return (
-        f"Copy `generated/rust/{pkg}/` into your tree ({since}no dependencies) and depend on it by path; "
-        "for `no_std` firmware (no allocator), turn off the default `std` feature:",
-        f'[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}\n'
-        f'# no_std: {pkg} = {{ path = "third_party/{pkg}", default-features = false }}',
-    )
+    return fact
+
+
+def say(lang: str, template: str, pkg: str) -> str:
+    """One of lang's getting-started texts for the package pkg (GettingStarted's variables filled in)."""
+    return template.format(pkg=pkg, PKG=pkg.upper(), **target_facts(lang).variables)
+
+
+def _example_file(lang: str, program: str, pkg: str) -> str:
+    """An example program's path under generated/ in lang's package pkg."""
+    return f"{lang}/{pkg}/examples/{program}.{TARGETS[lang].EXTENSION}"
 
 
 def _include(lang: str, pkg: str, source: str) -> str:
@@ -121,11 +109,11 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
         if ex is None:
             continue
         pkg = p["package"]
-        rel = SESSION_EXAMPLE_FILES[lang].format(pkg=pkg)
+        rel = _example_file(lang, SESSION_PROGRAM, pkg)
         source = docs.examples.get(rel)
         pg.h(3, f"{p['title']} ({pkg})", f"{CONFIGURE_ANCHOR}-{p['name']}")
         if source is None:
-            pg.p(f"The {LANG_TITLES[lang]} session example of `{pkg}` is not generated yet.")
+            pg.p(f"The {TARGETS[lang].TITLE} session example of `{pkg}` is not generated yet.")
             continue
         devices = {d["id"]: d["title"] for d in p["devices"]}
         pg.p(
@@ -153,20 +141,6 @@ def configure_section(docs: Docs, pg: Page, lang: str) -> None:
         simulator_section(pg, lang, p, ex)
 
 
-# How an outside user builds and runs the configure-and-stream example from the package's own
-# directory (no repository): {pkg} the package, ADDRESS the simulator's address. Checked by
-# tests/docs/test_outside_user.py (the Python and C commands run against the simulator there).
-OUTSIDE_RUN = {
-    # only the example run (--target): the package's other examples are not needed for it
-    "c": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
-    "build/{pkg}-configure-and-stream ADDRESS 5",
-    "cpp": "cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
-    "build/{pkg}-configure-and-stream ADDRESS 5",
-    "python": "python examples/configure_and_stream.py ADDRESS 5",
-    "rust": "cargo run --features serial --example configure_and_stream -- ADDRESS 5",
-}
-
-
 def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
     """How to run the example against the simulated device: from the package (an outside user,
     after `pip install` of the Python package that carries the simulator), then in this repository."""
@@ -179,10 +153,13 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         "(docs/simulator.md). The simulator comes with the Python package; start it, then give the address "
         "it prints first to the program. From the package's directory (`generated/"
         f"{lang}/{pkg}`, or wherever you vendored it), with the Python package installed"
-        + (" (the crate's `serial` feature is what serial ports and pseudo-terminals need):" if lang == "rust" else ":")
+        + say(lang, target_facts(lang).simulator_note, pkg)
+        + ":"
     )
     sim = f"python -m {pkg}.sim --device {ex['device']}"
-    run = OUTSIDE_RUN[lang].format(pkg=pkg, PKG=pkg.upper())
+    # How an outside user builds and runs the example from the package's own directory (no
+    # repository): checked by tests/docs/test_outside_user.py (the Python and C commands run there).
+    run = say(lang, target_facts(lang).outside_run, pkg)
     pg.code(
         f"pip install 'generated/python/{pkg}[serial]'   # the Python package's directory, sdist or wheel\n"
         f"{sim} --listen tcp:127.0.0.1:0 &   # prints tcp:127.0.0.1:PORT\n"
@@ -195,7 +172,7 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
         "`tests/conformance/simulate` starts the simulator (`tests/conformance/test_simulator_examples.py` runs "
         "both, over TCP and a pseudo-terminal):"
     )
-    select = "" if pkg == "mipcodec" else f"{RUN_PACKAGE_VARS[lang]}={pkg} "
+    select = "" if pkg == "mipcodec" else f"{target_facts(lang).run_package_var}={pkg} "
     sim = f"tests/conformance/simulate --protocol {p['name']} --device {ex['device']}"
     run = f"{select}tests/lang/{lang}.sh configure"
     pg.code(
@@ -211,7 +188,9 @@ def simulator_section(pg: Page, lang: str, p: dict, ex: dict) -> None:
 def add_pages(docs: Docs) -> None:
     for lang in docs.api:
         pg = docs.add(
-            Page(f"getting-started/{lang}.md", f"Getting started in {LANG_TITLES[lang]}", [("Reference", "README.md")])
+            Page(
+                f"getting-started/{lang}.md", f"Getting started in {TARGETS[lang].TITLE}", [("Reference", "README.md")]
+            )
         )
         pg.p(
             "Every snippet on this page is cut from the example program generated into the package "
@@ -221,21 +200,16 @@ def add_pages(docs: Docs) -> None:
         )
         for p in docs.ir["protocols"]:
             pkg = p["package"]
-            rel = EXAMPLE_FILES[lang].format(pkg=pkg)
+            rel = _example_file(lang, PROGRAM, pkg)
             source = docs.examples.get(rel)
             pg.h(2, f"{p['title']} ({pkg})", p["name"])
-            text, setup = _setup(lang, pkg, docs.examples)
-            pg.p(text)
-            # for the outside-user test (docs/conformance.md §11): capture.bin is the page's placeholder for
-            # a device log; a CMake or Cargo snippet is built as a project around the package's example
-            pg.code(
-                setup,
-                "cmake" if lang in ("c", "cpp") else ("toml" if lang == "rust" else "sh"),
-                outside="files capture.bin" if lang == "python" else "project",
-            )
+            facts = target_facts(lang)
+            pg.p(say(lang, facts.install, pkg))
+            # for the outside-user test (docs/conformance.md §11): GettingStarted.setup_outside
+            pg.code(say(lang, facts.setup, pkg), facts.setup_lang, outside=facts.setup_outside)
             include = _include(lang, pkg, source or "")
             if include:
-                pg.p("and include the package's umbrella header:" if lang in ("c", "cpp") else "and import it:")
+                pg.p(say(lang, facts.include_intro, pkg))
                 pg.code(include, lang)
             if source is None:
                 pg.p(f"The example program `generated/{rel}` is not generated.")

@@ -18,6 +18,9 @@ Each target module exposes:
   names(protocol) -> [generator.name_check.Name]: every identifier its code gives a spec element,
       and reserved(identifier) -> why it is still reserved in the language, or None (the name
       check the pipeline runs before rendering; targets/<lang>/identifiers.py)
+  TITLE, EXTENSION: the language's name in the documentation, its source files' extension
+  GETTING_STARTED: a GettingStarted (below; targets/<lang>/facts.py), the language's own text on
+      its getting-started page (generator/docs/getting_started.py reads nothing else per language)
 
 Each target also has a runner, tests/lang/<lang>.sh (build, test, decode, encode, session), which
 the conformance tools (tests/conformance/decode, encode, session) and the cross-language tests
@@ -28,6 +31,7 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
 from types import ModuleType
 
 NAMES: tuple[str, ...] = ("c", "cpp", "python", "rust")
@@ -50,4 +54,24 @@ class _Registry(Mapping):
 
 TARGETS: Mapping[str, ModuleType] = _Registry()
 
-__all__ = ["NAMES", "TARGETS"]
+
+@dataclass(frozen=True)
+class GettingStarted:
+    """What a language's getting-started page says in its own words (generated/docs/getting-started/
+    <lang>.md; generator/docs/getting_started.py). Every text is a `str.format` template of `{pkg}`
+    (the package), `{PKG}` (upper case) and the record's `variables`."""
+
+    install: str  # how to vendor and build the package: the paragraph before `setup`
+    setup: str  # the build-file lines or shell commands that go with it
+    setup_lang: str  # the code block's language (cmake, toml, sh)
+    # the outside-user test's marker for `setup` (docs/conformance.md section 11): "project" (built
+    # as a project around the package's example) or "files capture.bin" (run as commands)
+    setup_outside: str
+    include_intro: str  # the sentence before the example's lines that include or import the package
+    run_package_var: str  # the variable of tests/lang/<lang>.sh that picks the package
+    outside_run: str  # build and run the configure-and-stream example from the package's directory (ADDRESS)
+    simulator_note: str = ""  # said of the simulator run's prerequisites, before its commands
+    variables: Mapping[str, str] = field(default_factory=dict)
+
+
+__all__ = ["NAMES", "TARGETS", "GettingStarted"]

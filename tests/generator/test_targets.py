@@ -187,3 +187,93 @@ def test_runtime_sources_carry_no_generated_banner_and_their_copies_do():
     long = "/* " + "w" * 80 + " */\nx"
     assert add_banner(long) == "/* " + "w" * 80 + "\n * Generated: do not edit. */\nx"
     assert add_banner("// a\n// b\n#include <x>") == "// a\n// b Generated: do not edit.\n#include <x>"
+
+
+# ------------------------------------------------------------------ a fifth target's getting-started page
+def _fake_target(monkeypatch, with_facts: bool):
+    """Registers a fifth target `fake` (issue 49): its wing is a module put where the registry
+    imports it from, with its own getting-started record unless with_facts is False."""
+    from types import ModuleType
+
+    import generator.targets as registry
+    from generator.targets import GettingStarted
+
+    mod = ModuleType("generator.targets.fake")
+    mod.TITLE, mod.EXTENSION = "Fake", "fk"
+    if with_facts:
+        mod.GETTING_STARTED = GettingStarted(
+            install="Fetch `{pkg}` with fakepkg ({fake_version}).",
+            setup="fakepkg add {pkg}",
+            setup_lang="fakesh",
+            setup_outside="project",
+            include_intro="and summon it:",
+            run_package_var="FAKE_PACKAGE",
+            outside_run="fakerun {PKG} ADDRESS 5",
+            simulator_note=" (fakepkg's serial extra)",
+            variables={"fake_version": "fake 9"},
+        )
+    monkeypatch.setitem(sys.modules, "generator.targets.fake", mod)
+    monkeypatch.setattr(registry, "NAMES", (*NAMES, "fake"))
+    return mod
+
+
+def _fake_docs(ir: dict):
+    """The part of the documentation model add_pages reads: the fake language's API, the IR, and
+    the configure-and-stream example of each package (marker lines only) in the fake language."""
+    from generator.examples import SESSION_PARTS
+
+    source = "\n".join(f"# [{part}]\nstep {part}\n# [end]" for part in SESSION_PARTS)
+
+    class FakeDocs:
+        def __init__(self):
+            self.api, self.ir, self.vectors, self.pages = {"fake": {}}, ir, [], {}
+            self.examples = {f"fake/{p['package']}/examples/configure_and_stream.fk": source for p in ir["protocols"]}
+
+        def add(self, page):
+            self.pages[page.path] = page
+            return page
+
+    return FakeDocs()
+
+
+def _page_text(page) -> str:
+    return "\n".join(str(b.get("text", "")) for b in page.blocks)
+
+
+def test_a_fifth_target_gets_its_own_getting_started_text(monkeypatch):
+    import json
+
+    from generator.docs import getting_started
+
+    _fake_target(monkeypatch, with_facts=True)
+    ir = json.loads((ROOT / "generated" / "ir.json").read_text())
+    docs = _fake_docs(ir)
+    getting_started.add_pages(docs)
+    page = docs.pages["getting-started/fake.md"]
+    text = _page_text(page)
+    assert page.title == "Getting started in Fake"
+    assert "Fetch `mipcodec` with fakepkg (fake 9)." in text and "fakepkg add mscipcodec" in text
+    assert "fakerun MIPCODEC tcp:127.0.0.1:PORT 5" in text  # the outside user's run, {PKG} upper case
+    assert "FAKE_PACKAGE=mscipcodec tests/lang/fake.sh configure" in text
+    assert "with the Python package installed (fakepkg's serial extra):" in text
+    code = [b for b in page.blocks if b["kind"] == "code" and b["text"].startswith("fakepkg add")]
+    assert [(b["lang"], b["outside"]) for b in code] == [("fakesh", "project")] * 2
+    # nothing of another language's record
+    for other in NAMES:
+        facts = TARGETS[other].GETTING_STARTED
+        assert facts.run_package_var not in text and facts.install.split("`")[0] not in text, other
+    assert "cargo" not in text and "Rust" not in text
+
+
+def test_a_target_without_its_getting_started_record_is_a_clear_error(monkeypatch):
+    import json
+
+    import pytest
+
+    from generator.docs import getting_started
+    from generator.render import ToolError
+
+    _fake_target(monkeypatch, with_facts=False)
+    ir = json.loads((ROOT / "generated" / "ir.json").read_text())
+    with pytest.raises(ToolError, match=r"^target fake has no GETTING_STARTED .*generator/targets/fake/facts\.py"):
+        getting_started.add_pages(_fake_docs(ir))

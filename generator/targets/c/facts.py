@@ -3,6 +3,8 @@ wire primitive. Data only, so that adding a primitive or a keyword is one line h
 
 from __future__ import annotations
 
+from generator.targets import GettingStarted
+
 # C99 and C++ keywords (the headers are also compiled as C++ by the tests) and names the
 # generated code uses itself. A spec identifier among them gets a trailing underscore.
 KEYWORDS = frozenset(
@@ -53,4 +55,22 @@ assert static_assert complex imaginary errno math_errhandling setjmp va_arg va_c
 offsetof stdin stdout stderr noreturn NULL EOF
 linux unix i386
 """.split()
+)
+
+
+# The getting-started page (generated/docs/getting-started/c.md).
+GETTING_STARTED = GettingStarted(
+    install="Copy `generated/c/{pkg}/` into your tree (C99, no allocation, no dependencies) and add it to your"
+    " CMake build (or install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see"
+    " the package's README). Its tests, tools and examples stay off when it is not the top-level"
+    " project:",
+    setup="add_subdirectory(third_party/{pkg})\n"
+    "target_link_libraries(your_app PRIVATE {pkg}::c)   # {pkg}::c_json for canonical JSON lines",
+    setup_lang="cmake",
+    setup_outside="project",
+    include_intro="and include the package's umbrella header:",
+    run_package_var="C_PACKAGE",
+    # only the example run (--target): the package's other examples are not needed for it
+    outside_run="cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
 )

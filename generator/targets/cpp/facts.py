@@ -3,6 +3,8 @@ type of each IR primitive. Nothing here knows about a protocol."""
 
 from __future__ import annotations
 
+from generator.targets import GettingStarted
+
 # C++20 keywords and alternative tokens, and names (std, common macros) that a generated member or
 # namespace must not shadow: an IR name among these gets a "_" suffix (backend.ident).
 KEYWORDS = frozenset(
@@ -51,3 +53,17 @@ PRIMITIVE_TYPES = {
     "float": "float",
     "double": "double",
 }
+
+
+# The getting-started page (generated/docs/getting-started/cpp.md).
+GETTING_STARTED = GettingStarted(
+    install="Copy `generated/cpp/{pkg}/` into your tree (a C++17 library: CMake builds it) and add it to your CMake build (or"
+    " install it and use `find_package({pkg} CONFIG REQUIRED)` or pkg-config: see the package's README):",
+    setup="add_subdirectory(third_party/{pkg})\ntarget_link_libraries(your_app PRIVATE {pkg}::cpp)",
+    setup_lang="cmake",
+    setup_outside="project",
+    include_intro="and include the package's umbrella header:",
+    run_package_var="CPP_PACKAGE",
+    outside_run="cmake -S . -B build -D{PKG}_BUILD_EXAMPLES=ON && cmake --build build --target {pkg}-configure-and-stream\n"
+    "build/{pkg}-configure-and-stream ADDRESS 5",
+)

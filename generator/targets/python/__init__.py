@@ -3,9 +3,20 @@ facts.py, the hand-written runtime (plain files, unit-tested in place) in runtim
 docs/design.md."""
 
 from .backend import OUTPUT_DIRS, api_names, public_name, render
+from .facts import GETTING_STARTED
 from .identifiers import names, reserved
 
 TITLE = "Python"  # the language's name in the documentation
 EXTENSION = "py"  # of its source files (the getting-started programs)
 
-__all__ = ["EXTENSION", "OUTPUT_DIRS", "TITLE", "api_names", "names", "public_name", "render", "reserved"]
+__all__ = [
+    "EXTENSION",
+    "GETTING_STARTED",
+    "OUTPUT_DIRS",
+    "TITLE",
+    "api_names",
+    "names",
+    "public_name",
+    "render",
+    "reserved",
+]

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+from generator.targets import GettingStarted
+
 # Python's reserved words (keyword.kwlist, unchanged from 3.9 to 3.13): a parameter, member or
 # module name that is one of them gets a "_" suffix.
 KEYWORDS = frozenset(
@@ -205,3 +207,20 @@ EXPORTS = {
 # Modules of EXPORTS whose names the package's __init__ imports on first use (they import the
 # command sets' modules): `import <package>` stays cheap for the decode tools.
 LAZY_EXPORTS = ("session",)
+
+
+# The getting-started page (generated/docs/getting-started/python.md).
+GETTING_STARTED = GettingStarted(
+    install="Install `generated/python/{pkg}/` (Python 3.9+, no dependencies, typed for mypy; its optional C "
+    "accelerator is compiled when a C compiler is there), or build a wheel and an sdist once and install "
+    "from them anywhere, offline too (`generated/python/{pkg}/README.md` has the details):",
+    setup="pip install ./generated/python/{pkg}\n"
+    "# or: python -m build --outdir dist generated/python/{pkg}\n"
+    "#     pip install --no-index --find-links dist {pkg}\n"
+    "python -m {pkg} decode capture.bin   # canonical JSON lines",
+    setup_lang="sh",
+    setup_outside="files capture.bin",  # capture.bin: the page's placeholder for a device log
+    include_intro="and import it:",
+    run_package_var="PY_PACKAGE",
+    outside_run="python examples/configure_and_stream.py ADDRESS 5",
+)

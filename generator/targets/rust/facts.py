@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from generator.targets import GettingStarted
+
 # Rust keywords: strict and reserved words of the 2021 edition, plus `gen` (reserved in 2024).
 # Most can be written as raw identifiers (`r#type`).
 KEYWORDS = frozenset(
@@ -98,3 +100,19 @@ KEYWORDS_COMMON = ["protocol", "codec", "parser"]
 # What `cargo package` puts into the .crate: the manifest, README, LICENSE (when present), the
 # library, tools, example and tests; nothing else a generator run could leave beside them.
 INCLUDE = ["/Cargo.toml", "/README.md", "/LICENSE", "/src/", "/examples/", "/tests/"]
+
+
+# The getting-started page (generated/docs/getting-started/rust.md); `rust_version` is RUST_VERSION.
+GETTING_STARTED = GettingStarted(
+    install="Copy `generated/rust/{pkg}/` into your tree (Rust {rust_version} or newer, no dependencies) and depend on it"
+    " by path; for `no_std` firmware (no allocator), turn off the default `std` feature:",
+    setup='[dependencies]\n{pkg} = {{ path = "third_party/{pkg}" }}\n'
+    '# no_std: {pkg} = {{ path = "third_party/{pkg}", default-features = false }}',
+    setup_lang="toml",
+    setup_outside="project",
+    include_intro="and import it:",
+    run_package_var="RUST_PACKAGE",
+    outside_run="cargo run --features serial --example configure_and_stream -- ADDRESS 5",
+    simulator_note=" (the crate's `serial` feature is what serial ports and pseudo-terminals need)",
+    variables={"rust_version": RUST_VERSION},
+)
