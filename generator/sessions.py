@@ -16,9 +16,9 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from .corpus import CorpusFile, fletcher16, json_str, packet_line, resolve_field
 from .diagnostics import SpecError, SpecErrors
 from .passes.context import SpecFile
-from .vectors import _Ctx, _json_str, _packet, fletcher16, resolve_field
 from .yamlpos import load
 
 RESULTS = ("ack", "nack", "timeout", "invalid", "sent", "refused")
@@ -49,7 +49,7 @@ def load_sessions(ir: dict, sessions_dir: Path, root: Path | None = None) -> lis
             if proto is None:
                 errors.append(SpecError(locate(()), f"no protocol '{proto_dir.name}' in spec/", "a protocol directory"))
                 continue
-            ctx = _Ctx(sf, proto)
+            ctx = CorpusFile(sf, proto)
             if not isinstance(data, dict) or not isinstance(data.get("cases"), list) or set(data) != {"cases"}:
                 ctx.err((), "a session file is a mapping with only a 'cases' list", "cases: [...]")
                 errors.extend(ctx.errors)
@@ -71,14 +71,14 @@ def load_sessions(ir: dict, sessions_dir: Path, root: Path | None = None) -> lis
     return cases
 
 
-def _int(ctx: _Ctx, path: tuple, v, lo: int, hi: int, what: str) -> bool:
+def _int(ctx: CorpusFile, path: tuple, v, lo: int, hi: int, what: str) -> bool:
     if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
         ctx.err(path, f"{what} must be an integer {lo}..{hi}", f"{lo}..{hi}")
         return False
     return True
 
 
-def _hex(ctx: _Ctx, path: tuple, v) -> bytes | None:
+def _hex(ctx: CorpusFile, path: tuple, v) -> bytes | None:
     if not isinstance(v, str):
         ctx.err(path, "expected hex bytes as a string", '"7565 0102 ..."')
         return None
@@ -89,7 +89,7 @@ def _hex(ctx: _Ctx, path: tuple, v) -> bytes | None:
         return None
 
 
-def _case(ctx: _Ctx, path: tuple, c) -> dict | None:
+def _case(ctx: CorpusFile, path: tuple, c) -> dict | None:
     if not isinstance(c, dict):
         ctx.err(path, "a case is a mapping", "name, steps, expect")
         return None
@@ -146,7 +146,7 @@ def _case(ctx: _Ctx, path: tuple, c) -> dict | None:
             continue
         if "packet" in e:
             p = e["packet"]
-            expect.append(_packet(ctx, ep + ("packet",), p, device))
+            expect.append(packet_line(ctx, ep + ("packet",), p, device))
             tiles.append(json.loads(expect[-1]))
         elif "skipped" in e:
             data = _hex(ctx, ep + ("skipped",), e["skipped"])
@@ -175,7 +175,7 @@ def _case(ctx: _Ctx, path: tuple, c) -> dict | None:
     }
 
 
-def _send_line(ctx: _Ctx, path: tuple, s) -> str:
+def _send_line(ctx: CorpusFile, path: tuple, s) -> str:
     if not isinstance(s, dict) or set(s) - {"set", "descriptor", "name", "values", "device"} or "set" not in s:
         ctx.err(path, "a send is {set, descriptor, name, values}", "one command field")
         return ""
@@ -186,10 +186,10 @@ def _send_line(ctx: _Ctx, path: tuple, s) -> str:
         )
         return ""
     field = {k: v for k, v in s.items() if k != "set"}
-    return _packet(ctx, path, {"offset": 0, "set": s["set"], "fields": [field]}, s.get("device"))
+    return packet_line(ctx, path, {"offset": 0, "set": s["set"], "fields": [field]}, s.get("device"))
 
 
-def _result(ctx: _Ctx, path: tuple, e: dict, sends: list, device: str | None, seen: dict) -> str | None:
+def _result(ctx: CorpusFile, path: tuple, e: dict, sends: list, device: str | None, seen: dict) -> str | None:
     extra = set(e) - {"line", "result", "code", "reply", "error", "offset"}
     if extra:
         ctx.err(path, f"unknown keys {sorted(extra)} in a result", "line, result, code, reply, error, offset")
@@ -217,15 +217,15 @@ def _result(ctx: _Ctx, path: tuple, e: dict, sends: list, device: str | None, se
         ctx.err(path, f"error goes with invalid and refused results only (here: {result})", "error: message")
     set_id = sends[n - 1]["set"]
     e["_set"] = set_id
-    reply = _packet(ctx, path + ("reply",), {"offset": 0, "set": set_id, "fields": e.get("reply") or []}, device)
+    reply = packet_line(ctx, path + ("reply",), {"offset": 0, "set": set_id, "fields": e.get("reply") or []}, device)
     fields = reply[reply.index('"fields":[') + len('"fields":[') : -2]
     text = '{"line":%d,"result":"%s","code":%s,"reply":[%s]' % (n, result, "null" if code is None else code, fields)
     if "error" in e:
-        text += ',"error":' + _json_str(e["error"])
+        text += ',"error":' + json_str(e["error"])
     return text + "}"
 
 
-def _check_tiling(ctx: _Ctx, path: tuple, name: str, raw: bytes, tiles: list[dict]) -> None:
+def _check_tiling(ctx: CorpusFile, path: tuple, name: str, raw: bytes, tiles: list[dict]) -> None:
     """Reply packets, printed packets and skip runs must cover the received bytes exactly, in order."""
     fr = ctx.proto["framing"]
     sync = bytes(fr["sync"])

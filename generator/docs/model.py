@@ -22,9 +22,9 @@ import posixpath
 import re
 from dataclasses import dataclass, field
 
+from ..corpus import resolve_field
 from ..errata import KIND_TITLES
 from ..targets import TARGETS
-from ..vectors import resolve_field
 from . import svg
 
 MAX_VECTORS = 24  # golden vectors shown per descriptor page (every erratum is always shown)
