@@ -331,7 +331,7 @@ def _reply(s: dict, variants: list[dict], fn: str | None) -> tuple[str, ReplyFie
     if len(ids) > 1:
         return ANY, None
     target = next(f for f in s["fields"] if f["id"] == ids[0])
-    return FIELD, ReplyField(target["id"], target["name"], len(target["variants"]) > 1)
+    return FIELD, ReplyField(target["id"], target["name"], model.per_device(target))
 
 
 def _calls(proto: dict, fvalues: dict, s: dict, f: dict) -> list[Call]:

@@ -14,6 +14,7 @@ import struct
 
 from .canonical import float_text, string_text
 from .diagnostics import SpecError
+from .model import per_device
 from .passes.context import SpecFile
 from .passes.lookup_order import entries as lookup_entries
 from .passes.lookup_order import set_kind
@@ -73,7 +74,7 @@ def packet_line(ctx: CorpusFile, path: tuple, p: dict, device: str | None) -> st
             )
         dev = f.get("device", device)
         variants = fdef["variants"]
-        if len(variants) > 1:
+        if per_device(fdef):
             match = [v for v in variants if v["device"] == dev]
             if not match:
                 ctx.err(

@@ -40,7 +40,7 @@ def _is_plain_command(field: dict) -> bool:
         field["role"] == "command"
         and field["params"] == []
         and field["functions"] is None
-        and len(field["variants"]) == 1
+        and not model.per_device(field)
     )
 
 
@@ -68,7 +68,7 @@ def typed_field_example(protocol: dict) -> tuple[dict, dict] | None:
     example is then left out)."""
     for s in sorted((s for s in protocol["sets"] if s["kind"] == "data"), key=lambda s: s["id"]):
         for field in s["fields"]:
-            if field["role"] == "data" and len(field["variants"]) == 1:
+            if field["role"] == "data" and not model.per_device(field):
                 size = field["variants"][0]["size"]
                 if size["fixed"] and size["min"] > 0:
                     return s, field
@@ -138,7 +138,7 @@ def session_example(protocol: dict) -> dict | None:
     if device not in [d["id"] if isinstance(d, dict) else d for d in protocol["devices"]]:
         raise ExampleError(f"protocol {protocol['name']}: the example's device {device} is not in the spec")
     out: dict = {"program": SESSION_PROGRAM, "count": SESSION_COUNT, "device": device}
-    model = commands(protocol)
+    cmds = commands(protocol)
     for step in SESSION_STEPS:
         set_name, field_name, values = table[step]["set"], table[step]["command"], table[step]["values"]
         s, f = _find(protocol, set_name, field_name)
@@ -150,7 +150,7 @@ def session_example(protocol: dict) -> dict | None:
         calls: dict[str | None, Call] = {}
         for fn in SESSION_CALLS[step]:
             fn = fn if f["functions"] else None
-            call = model.call(s["id"], f["name"], fn, device)
+            call = cmds.call(s["id"], f["name"], fn, device)
             if call is None:
                 raise ExampleError(
                     f"protocol {protocol['name']}: {field_name} has no {fn or 'plain'} call for {device} ({_WHERE})"

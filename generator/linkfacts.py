@@ -4,6 +4,8 @@ so the four packages' constants say the same thing in the same words."""
 
 from __future__ import annotations
 
+from . import model
+
 
 def lines(sources: list[dict]) -> str:
     """ "manual:line, manual:line" of a sources list ("" for none)."""
@@ -97,7 +99,7 @@ def identity_facts(proto: dict) -> dict | None:
         ),
         None,
     )
-    if command is None or len(reply["variants"]) != 1:
+    if command is None or model.per_device(reply):
         return None
     types = {t["name"]: t for t in proto["types"]}
     params, offset, param = reply["variants"][0]["params"], 0, None

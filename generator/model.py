@@ -27,6 +27,18 @@ KINDS = (SCALAR, FIXED, COUNTED, REMAINING, STRING, UNION)
 ARRAYS = (FIXED, COUNTED, REMAINING)
 
 
+def per_device(field: dict) -> bool:
+    """Whether a field of the IR (or a reserved field) has per-device layouts: the spec gives it
+    `variants`, one layout per device, where every other field has one layout shared by all its
+    devices (docs/ir.md). The back ends then name a type, a decoder, a call per device."""
+    return len(field["variants"]) > 1
+
+
+def layout_device(field: dict, variant: dict) -> str | None:
+    """The device a layout of field is for, or None for the one layout every device shares."""
+    return variant["device"] if per_device(field) else None
+
+
 @dataclass(frozen=True)
 class Size:
     """Encoded size in bytes: `min`..`max`, and whether every value has the same size."""

@@ -22,6 +22,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
+from . import model
 from .commands import commands
 from .diagnostics import Location, SpecError
 
@@ -148,7 +149,7 @@ def layouts(proto: dict) -> Iterator[Layout]:
     for s in [None, *proto["sets"]]:
         fields = proto["reserved_fields"] if s is None else s["fields"]
         for f in fields:
-            multi = len(f["variants"]) > 1
+            multi = model.per_device(f)
             where = (f["name"],) if s is None else (s["name"], f["name"])
             for v in f["variants"]:
                 dev = v["device"] if multi else None
@@ -210,8 +211,6 @@ def types(out: list[Name], scope: str, proto: dict, spell: Callable[[str], str])
 
 def struct_members(scope: str, owner: str, proto: dict, t: dict, spell: Callable[[str], str]) -> list[Name]:
     """The names of struct t's members in one target's spelling, each located at its member."""
-    from . import model
-
     return [
         Name(scope, spell(q.name), param_element(q, owner), (t["name"], q.name), owner=owner)
         for q in model.struct(proto, t)

@@ -111,7 +111,7 @@ def packet_plans(proto: dict) -> dict[int, SetPlan | None]:
                 f, field_set = reserved[(s["kind"], e["descriptor"])], None
             else:
                 f, field_set = fields[(e["set"], e["descriptor"])], e["set"]
-            if len(f["variants"]) != 1:
+            if model.per_device(f):
                 continue
             v = f["variants"][0]
             members.append(Member(e["descriptor"], e["source"], f, field_set, v, fast_layout(model.layout(proto, v))))

@@ -46,9 +46,7 @@ def setting_rows(proto: dict, sets: list[dict]) -> tuple[list[dict], dict[str, d
                 continue
             rf = by_id[reply["id"]]
             rvariant, rdev = next(
-                (rv, (rv["device"] if len(rf["variants"]) > 1 else None))
-                for rv in rf["variants"]
-                if set(rv["devices"]) & set(v["devices"])
+                (rv, model.layout_device(rf, rv)) for rv in rf["variants"] if set(rv["devices"]) & set(v["devices"])
             )
             params = [q for q in v["params"] if q["type"].get("name") != fsel]
             written = [q for q in params if "write" in (q["functions"] or [])]

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 from ..corpus import resolve_field
 from ..errata import KIND_TITLES
+from ..model import per_device
 from ..targets import TARGETS
 from . import svg
 
@@ -349,7 +350,7 @@ class Docs:
             for d in devices:
                 if d["id"] not in f["devices"]:
                     cells.append("–")
-                elif len(f["variants"]) > 1:
+                elif per_device(f):
                     own = [v for v in f["variants"] if d["id"] in v["devices"]]
                     cells.append("✓ " + (code(own[0]["device"]) if own else ""))
                 else:
@@ -661,7 +662,7 @@ class Docs:
             pg.table(["language", "session call"], calls, "session-call")
         pg.h(2, "Sources")
         pg.items([source_text(x) for x in f["sources"]])
-        multi = len(f["variants"]) > 1
+        multi = per_device(f)
         letters = {v: k for k, v in p["function_selector"].get("letters", {}).items()}
         fsel = types.get(p["function_selector"]["enum"])
         shown_types: set[str] = set()

@@ -411,7 +411,7 @@ class _Protocol:
     # -------------------------------------------------------------- fields and layouts
     def _field_view(self, set_: dict | None, f: dict) -> dict:
         base = f"{self.p}_{set_['name']}_{f['name']}" if set_ else f"{self.p}_{f['name']}"
-        multi = len(f["variants"]) > 1
+        multi = model.per_device(f)
         what = f"field {set_['name']}.{f['name']}" if set_ else f"reserved field {f['name']}"
         where = (set_["name"], f["name"]) if set_ else (f["name"],)
         fv = {
@@ -780,7 +780,7 @@ class _Protocol:
                     "handler": f"on_{f['name']}",
                     "ctype": lv["c"],
                     "member": lv["member"],
-                    "id": lv["id"] if len(f["variants"]) > 1 else None,
+                    "id": lv["id"] if model.per_device(f) else None,
                     **printed,
                 }
             )

@@ -205,7 +205,7 @@ def _layout_names(fields: list[dict]) -> dict[tuple[str, str | None], str]:
     taken = {camel(f["name"]) for f in fields}
     out: dict[tuple[str, str | None], str] = {}
     for f in fields:
-        if len(f["variants"]) == 1:
+        if not model.per_device(f):
             out[(f["name"], None)] = camel(f["name"])
             continue
         for v in f["variants"]:
@@ -416,7 +416,7 @@ class _Protocol:
         names = _layout_names(fields)
         cases = []
         for f in fields:
-            multi = len(f["variants"]) > 1
+            multi = model.per_device(f)
             cases.append(
                 {
                     "descriptor": f["id"],
@@ -843,7 +843,7 @@ def call_name(c: commands.Call) -> str:
 
 def _layout_type(P: _Protocol, s: dict, f: dict, device: str | None) -> str:
     """The struct of field f's layout for device (None: its only layout)."""
-    multi = len(f["variants"]) > 1
+    multi = model.per_device(f)
     return f"::{P.ns}::{_set_ns(s)}::{_layout_names(s['fields'])[(f['name'], device if multi else None)]}"
 
 
@@ -852,7 +852,7 @@ def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Cal
     the members each layout sets (the other devices' layouts first, each when its device is
     selected; the first layout last, for any other device or none) and the reply struct."""
     name = call_name(c)
-    first = _layout_type(P, s, f, f["variants"][c.variants[0]]["device"] if len(f["variants"]) > 1 else None)
+    first = _layout_type(P, s, f, model.layout_device(f, f["variants"][c.variants[0]]))
     args = [{"name": ident(a.name), "required": a.required, "optional": a.optional} for a in c.arguments]
     sent = {a.name for a in c.arguments}
     layouts = []
@@ -861,7 +861,7 @@ def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Cal
         params = {q["name"]: q for q in v["params"]}
         layouts.append(
             {
-                "type": _layout_type(P, s, f, v["device"] if len(f["variants"]) > 1 else None),
+                "type": _layout_type(P, s, f, model.layout_device(f, v)),
                 "device": ident(v["device"]) if v["device"] else None,
                 "members": [ident(q["name"]) for q in v["params"] if q["name"] in sent],
                 "counts": [
@@ -949,7 +949,7 @@ def configure_example(P: _Protocol, session: dict) -> dict | None:
     data_set = ex["data"]["set"]
     fields = []
     for f in ex["data"]["fields"]:
-        if len(f["variants"]) > 1:
+        if model.per_device(f):
             raise ExampleError(f"C++ back end: the example's data field {f['name']} has per-device layouts")
         fields.append({"name": f["name"], "type": _layout_type(P, data_set, f, None)})
     return {

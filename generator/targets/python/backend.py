@@ -141,7 +141,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     is_reserved = set_ is None or field.get("role") == "ack" or "applies_to" in field
     module = f"{pkg}.reserved" if is_reserved else f"{pkg}.{set_module(set_)}"
     names = _layout_classes(protocol["reserved_fields"] if is_reserved else set_["fields"])
-    multi = len(field["variants"]) > 1
+    multi = model.per_device(field)
     classes = [f"{module}.{names[(field['name'], v['device'] if multi else None)]}" for v in field["variants"]]
     out = {
         "class": classes[0],
@@ -838,7 +838,7 @@ def session_context(m: _Protocol, sets: list[dict]) -> dict:
     fields = {(s["id"], f["name"]): f for s in m.p["sets"] for f in s["fields"]}
 
     def cls(set_id: int, field: str, device: str | None) -> str:
-        multi = len(fields[(set_id, field)]["variants"]) > 1
+        multi = model.per_device(fields[(set_id, field)])
         return f"{module[set_id]}.{classes[set_id][(field, device if multi else None)]}"
 
     rows: list[dict] = []
@@ -910,7 +910,7 @@ def _method(m: _Protocol, f: dict, c: commands.Call, cls) -> dict:
         "name": name,
         "fn_const": f"_t.{m.function_enum}.{const_name(c.function)}" if c.function is not None else None,
         "cls": cls(c.set, c.field, c.devices[0]),
-        "choose": [{"device": d, "cls": cls(c.set, c.field, d)} for d in devices] if len(f["variants"]) > 1 else None,
+        "choose": [{"device": d, "cls": cls(c.set, c.field, d)} for d in devices] if model.per_device(f) else None,
         "args": args,
         "counts": [{"attr": py_attr(k.param), "array": py_attr(k.array)} for k in c.counts],
         "returns": returns,
@@ -1055,7 +1055,7 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
     for sm in sets:
         names = _layout_classes(sm["set"]["fields"])
         for f in sm["set"]["fields"]:
-            if len(f["variants"]) == 1:
+            if not model.per_device(f):
                 classes[(sm["set"]["id"], f["id"])] = f"{sm['module']}.{names[(f['name'], None)]}"
     struct_types = {t["name"]: t for t in proto["types"]}
     lists = []

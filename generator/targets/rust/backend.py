@@ -197,7 +197,7 @@ class _Protocol:
 
     def _field_type_names(self, f: dict) -> list[str]:
         base = camel(f["name"])
-        if len(f["variants"]) == 1:
+        if not model.per_device(f):
             return [base]
         return [base] + [base + camel(v["device"]) for v in f["variants"]]
 
@@ -380,7 +380,7 @@ class _Protocol:
     def field_model(self, s: dict, f: dict) -> dict:
         base = camel(f["name"])
         doc = doc_line(f.get("title"), f.get("description"))
-        if len(f["variants"]) == 1:
+        if not model.per_device(f):
             layouts = [self.layout_model(f["name"], base, f["variants"][0], f["id"], s["id"], doc)]
             return {
                 "name": f["name"],
@@ -491,7 +491,7 @@ class _Protocol:
     def reserved_model(self) -> list[dict]:
         out = []
         for r in self.proto["reserved_fields"]:
-            if len(r["variants"]) != 1:
+            if model.per_device(r):
                 raise ToolError(f"rust back end: reserved field {r['name']} has several variants")
             doc = doc_line(r.get("title"), r.get("description")) + f" Reserved in every {r['applies_to']} set."
             lm = self.layout_model(r["name"], camel(r["name"]), r["variants"][0], r["id"], None, doc)
@@ -647,7 +647,7 @@ class _Protocol:
                 module, rust = "reserved", camel(c.field["name"])
             else:
                 module = self.set_module(c.set)
-                multi = len(c.field["variants"]) > 1
+                multi = model.per_device(c.field)
                 rust = camel(c.field["name"]) + (camel(c.layout["device"]) if multi else "")
             case = {"module": module, "rust": rust, "empty": None, "extra_len": None}
             if c.empty == "":
@@ -758,7 +758,7 @@ def _names(m: _Protocol, s: dict, f: dict, device: str | None) -> dict:
     FieldValue variant, the field's SetField variant, its per-device variant and struct."""
     module = m.set_module(s)
     rust = camel(f["name"])
-    per_device = len(f["variants"]) > 1 and device is not None
+    per_device = model.per_device(f) and device is not None
     return {
         "module": module,
         "set_variant": camel(module),
@@ -811,7 +811,7 @@ def _method(m: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.C
                     "optional": q.optional,
                 }
             )
-        names = _names(m, s, f, v["device"] if len(f["variants"]) > 1 else None)
+        names = _names(m, s, f, model.layout_device(f, v))
         builds.append(
             {
                 "device": m.device_variant(v["device"]) if v["device"] else None,
@@ -900,7 +900,7 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
     data_set = ex["data"]["set"]
     fields = []
     for f in ex["data"]["fields"]:
-        if len(f["variants"]) > 1:
+        if model.per_device(f):
             raise ExampleError(f"Rust back end: the example's data field {f['name']} has per-device layouts")
         fields.append({"name": f["name"], "descriptor": f["id"], "names": _names(m, data_set, f, None)})
     titles = {d["id"]: d["title"] for d in m.proto["devices"]}
@@ -1013,7 +1013,7 @@ def _example(proto: dict) -> dict:
 
 def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     """Names a Rust user types for a field: its type (per device when it has variants) and module."""
-    model = _Protocol(protocol, [])
+    m = _Protocol(protocol, [])
     pkg = protocol["package"]
     if set_ is None or "applies_to" in field:
         module = f"{pkg}::reserved"
@@ -1023,20 +1023,20 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
             "enum": f"{module}::ReservedField",
             "decode": f"{pkg}::decode_field",
         }
-    module = f"{pkg}::{model.set_module(set_)}"
+    module = f"{pkg}::{m.set_module(set_)}"
     out = {
         "type": f"{module}::{camel(field['name'])}",
         "module": module,
         "enum": f"{module}::SetField",
         "decode": f"{pkg}::decode_field",
     }
-    if len(field["variants"]) > 1:
+    if model.per_device(field):
         out["variants"] = ", ".join(
             f"{v['device']}: {module}::{camel(field['name'])}{camel(v['device'])}" for v in field["variants"]
         )
     if field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (command_api.rs.j2): device.<set>().<command>().<function>(...).
-        call = f"device.{_set_method(model.set_module(set_))}()"
+        call = f"device.{_set_method(m.set_module(set_))}()"
         functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
         if len(functions) > 1:
             out["session"] = f"{call}.{ident(field['name'])}().{{{','.join(ident(fn) for fn in functions)}}}(...)"
