@@ -22,7 +22,7 @@ import re
 import sys
 from pathlib import Path
 
-from .errata import _spec_notes
+from .errata import spec_notes
 from .spec import ROOT, load_spec
 
 WORD = re.compile(r"default", re.I)
@@ -92,7 +92,7 @@ def coverage(ir: dict) -> dict[tuple[str, int], list[tuple[str, str]]]:
             for ref in [d["source"], *d.get("also", [])]:
                 where = f"{label} = {_value_text(q, types)}"
                 cover.setdefault((ref["manual"], ref["line"]), []).append(("transcribed", where))
-    for proto, label, _sources, note in _spec_notes(ir):
+    for proto, label, _sources, note in spec_notes(ir):
         how = "decided" if note["kind"] == "decision" else "not a decision"
         for ref in note.get("lines", []):
             text = " ".join(note["text"].split())

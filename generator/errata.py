@@ -23,7 +23,7 @@ def _cell(text: str) -> str:
     return " ".join(str(text).split()).replace("|", "\\|")
 
 
-def _spec_notes(ir: dict):
+def spec_notes(ir: dict):
     for p in ir["protocols"]:
         for t in p["types"]:
             for n in t.get("notes", []):
@@ -73,7 +73,7 @@ def render_errata(ir: dict, vectors: list[dict]) -> str:
             f"| `{c['name']}` | {_src(c['sources'])} | {e['kind']} | {_cell(e['evidence'])} | `{e.get('corrected', '-')}` |"
         )
     out += ["", "## Spec entries", "", "| protocol | entry | source | kind | note |", "|---|---|---|---|---|"]
-    for proto, label, sources, n in _spec_notes(ir):
+    for proto, label, sources, n in spec_notes(ir):
         # a decision on stated defaults cites the lines it decides (generator/defaults_audit.py)
         out.append(
             f"| {proto} | {label} | {_src(n.get('lines') or sources)} | {KIND_TITLES[n['kind']]} | {_cell(n['text'])} |"

@@ -7,6 +7,7 @@ quote the example programs as the language back ends generated and formatted the
 from __future__ import annotations
 
 from ..targets import TARGETS
+from . import getting_started
 from .markdown import write_markdown
 from .model import Docs
 
@@ -17,6 +18,7 @@ def build(ir: dict, vectors: list[dict], generated: dict[str, str]) -> Docs:
     api = dict(TARGETS)  # the language targets, in their order
     docs = Docs(ir, vectors, api, generated)
     docs.build()
+    getting_started.add_pages(docs)  # last: after every reference page (it imports the model, not the reverse)
     return docs
 
 

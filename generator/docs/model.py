@@ -216,7 +216,6 @@ class Docs:
                 for f in s["fields"]:
                     self._field_page(p, s, f)
         self._errata_page()
-        self._getting_started()
 
     def add(self, page: Page) -> Page:
         self.pages[page.path] = page
@@ -862,7 +861,7 @@ class Docs:
 
     # ------------------------------------------------------------------ errata
     def _errata_page(self) -> None:
-        from ..errata import _spec_notes
+        from ..errata import spec_notes
 
         pg = self.add(Page("errata.md", "Errata in the manuals", [("Reference", "README.md")]))
         pg.p(
@@ -890,7 +889,7 @@ class Docs:
             pg.table(["vector", "descriptor", "published at", "kind", "evidence"], rows, "errata")
             rows = []
             only = {"protocols": [p]}
-            for _proto, label, sources, n in _spec_notes(only):
+            for _proto, label, sources, n in spec_notes(only):
                 rows.append(
                     [esc(label), "; ".join(source_text(x) for x in sources), KIND_TITLES[n["kind"]], esc(n["text"])]
                 )
@@ -915,12 +914,6 @@ class Docs:
             if s["id"] == sid:
                 return next(((s, f) for f in s["fields"] if f["id"] == fid), None)
         return None
-
-    # ------------------------------------------------------------------ getting started
-    def _getting_started(self) -> None:
-        from .getting_started import add_pages
-
-        add_pages(self)
 
 
 def _hex_lines(h: str) -> str:

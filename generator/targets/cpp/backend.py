@@ -190,17 +190,17 @@ def cpp_string(s: str) -> str:
     return c_string(s, cpp=True)
 
 
-def _reserved_ns(proto: dict) -> str:
+def reserved_namespace(proto: dict) -> str:
     names = {s["name"] for s in proto["sets"]}
     return "reserved" if "reserved" not in names else "reserved_fields"
 
 
-def _set_ns(set_: dict) -> str:
+def set_namespace(set_: dict) -> str:
     n = ident(set_["name"])
     return n + "_set" if n in RUNTIME_NAMESPACES or n == "reserved" else n
 
 
-def _layout_names(fields: list[dict]) -> dict[tuple[str, str | None], str]:
+def layout_names(fields: list[dict]) -> dict[tuple[str, str | None], str]:
     """(field name, device) -> C++ struct name, unique within a set."""
     taken = {camel(f["name"]) for f in fields}
     out: dict[tuple[str, str | None], str] = {}
@@ -221,12 +221,9 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
     """The names a C++ user types for a field (documentation back end)."""
     pkg = protocol["package"]
     is_reserved = set_ is None or field.get("role") == "ack"
-    ns = _reserved_ns(protocol) if is_reserved else _set_ns(set_)
-    names = _layout_names(protocol["reserved_fields"] if is_reserved else set_["fields"])
-    types = [
-        f"{pkg}::{ns}::{names[(field['name'], v['device'] if len(field['variants']) > 1 else None)]}"
-        for v in field["variants"]
-    ]
+    ns = reserved_namespace(protocol) if is_reserved else set_namespace(set_)
+    names = layout_names(protocol["reserved_fields"] if is_reserved else set_["fields"])
+    types = [f"{pkg}::{ns}::{names[(field['name'], model.layout_device(field, v))]}" for v in field["variants"]]
     out = {
         "type": types[0],
         "header": f"{pkg}/fields/{ns}.hpp",
@@ -241,7 +238,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
             out[f"type_{v['device']}"] = t
     if not is_reserved and field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (commands.hpp.j2): api::<set>::<command>::<function>(connection, ...).
-        call = f"{pkg}::api::{_set_ns(set_)}::{ident(field['name'])}"
+        call = f"{pkg}::api::{set_namespace(set_)}::{ident(field['name'])}"
         functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
         if len(functions) > 1:
             out["session"] = f"{call}::{{{','.join(ident(fn) for fn in functions)}}}(connection, ...)"
@@ -255,7 +252,7 @@ class _Protocol:
         self.p = proto
         self.ns = ident(proto["package"])
         self.types = {t["name"]: t for t in proto["types"]}
-        self.reserved_ns = _reserved_ns(proto)
+        self.reserved_ns = reserved_namespace(proto)
 
     # ------------------------------------------------------------ type mapping
     def type_name(self, name: str) -> str:
@@ -364,7 +361,7 @@ class _Protocol:
 
     # ------------------------------------------------------------ fields
     def layouts(self, fields: list[dict], set_: dict | None) -> list[dict]:
-        names = _layout_names(fields)
+        names = layout_names(fields)
         out = []
         for f, v, dev in model.layouts_of(fields):
             params = self.params(v["params"], v["functions"])
@@ -388,7 +385,7 @@ class _Protocol:
     def set_models(self) -> list[dict]:
         out = []
         for s in self.p["sets"]:
-            ns = _set_ns(s)
+            ns = set_namespace(s)
             out.append(
                 {
                     "ns": ns,
@@ -413,7 +410,7 @@ class _Protocol:
         return out
 
     def lookup_cases(self, fields: list[dict], ns: str) -> list[dict]:
-        names = _layout_names(fields)
+        names = layout_names(fields)
         cases = []
         for f in fields:
             multi = model.per_device(f)
@@ -429,7 +426,7 @@ class _Protocol:
         return cases
 
     def lookup(self) -> dict:
-        sets = [{"id": s["id"], "cases": self.lookup_cases(s["fields"], _set_ns(s))} for s in self.p["sets"]]
+        sets = [{"id": s["id"], "cases": self.lookup_cases(s["fields"], set_namespace(s))} for s in self.p["sets"]]
         kinds = []
         for k, r in self.p["set_kinds"].items():
             conds = ([f"set >= {r['first']}"] if r["first"] > 0 else []) + (
@@ -446,7 +443,7 @@ class _Protocol:
         if sd:
             sset = next((s for s in self.p["sets"] if s["id"] == sd["set"]), None)
             if sset and any(k["name"] == "data" for k in kinds):
-                shared = {"kind": ident("data"), "cases": self.lookup_cases(sset["fields"], _set_ns(sset))}
+                shared = {"kind": ident("data"), "cases": self.lookup_cases(sset["fields"], set_namespace(sset))}
         return {
             "sets": sets,
             "kinds": kinds,
@@ -605,7 +602,7 @@ def packet_models(P: _Protocol) -> list[dict]:
         headers = set()
         for m, name in zip(plan.members, names):
             owner = sets[m.field_set] if m.field_set is not None else None
-            ns = _set_ns(owner) if owner else P.reserved_ns
+            ns = set_namespace(owner) if owner else P.reserved_ns
             if names.count(name) > 1 or name in ("index", "Packet"):
                 name = f"{name}_{ns}"
             fields = owner["fields"] if owner else proto["reserved_fields"]
@@ -627,14 +624,14 @@ def packet_models(P: _Protocol) -> list[dict]:
                 {
                     "descriptor": m.descriptor,
                     "member": name,
-                    "type": f"::{P.ns}::{ns}::{_layout_names(fields)[(m.field['name'], None)]}",
+                    "type": f"::{P.ns}::{ns}::{layout_names(fields)[(m.field['name'], None)]}",
                     "source": m.source,
                     "size": m.fast.size if m.fast else None,
                     "bools": list(m.fast.bools) if m.fast else [],
                     "loads": loads,
                 }
             )
-        ns = _set_ns(s)
+        ns = set_namespace(s)
         out.append(
             {"ns": ns, "file": ns, "id": set_id, "name": s["name"], "members": members, "includes": sorted(headers)}
         )
@@ -783,7 +780,7 @@ def session_context(P: _Protocol) -> dict:
         ack = {
             "descriptor": rule["ack"],
             "ok": rule["ok"],
-            "type": f"::{P.ns}::{P.reserved_ns}::{_layout_names(proto['reserved_fields'])[(rf['name'], None)]}",
+            "type": f"::{P.ns}::{P.reserved_ns}::{layout_names(proto['reserved_fields'])[(rf['name'], None)]}",
             "echo": ident(rule["echo"]),
             "code": ident(rule["code"]),
         }
@@ -810,7 +807,7 @@ def session_context(P: _Protocol) -> dict:
     calls: dict[commands.Call, dict] = {}
     for g in cm.api_sets():
         s = sets[g.set]
-        api_sets.append({"id": g.set, "ns": _set_ns(s), "title": s["title"], "commands": []})
+        api_sets.append({"id": g.set, "ns": set_namespace(s), "title": s["title"], "commands": []})
         for cmd in g.commands:
             f = fields[(g.set, cmd.field)]
             ns, cs = ident(f["name"]), [_call(P, cm, s, f, c) for c in cmd.calls]
@@ -844,7 +841,7 @@ def call_name(c: commands.Call) -> str:
 def _layout_type(P: _Protocol, s: dict, f: dict, device: str | None) -> str:
     """The struct of field f's layout for device (None: its only layout)."""
     multi = model.per_device(f)
-    return f"::{P.ns}::{_set_ns(s)}::{_layout_names(s['fields'])[(f['name'], device if multi else None)]}"
+    return f"::{P.ns}::{set_namespace(s)}::{layout_names(s['fields'])[(f['name'], device if multi else None)]}"
 
 
 def _call(P: _Protocol, cm: commands.Commands, s: dict, f: dict, c: commands.Call) -> dict:
@@ -963,5 +960,5 @@ def public_name(protocol: dict, kind: str, *path) -> str:
     """The C++ name of a set (`kind` "set") or enum value (kind "value": enum type, value), for
     `mipgen diff` (generator/wirediff.py public_names, which names fields and members itself)."""
     if kind == "set":
-        return f"{protocol['package']}::{_set_ns(path[0])}"
+        return f"{protocol['package']}::{set_namespace(path[0])}"
     return f"{protocol['package']}::{path[0]['name']}::{ident(path[1]['name'])}"

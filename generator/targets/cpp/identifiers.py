@@ -7,7 +7,7 @@ from generator import model
 from generator import name_check as nc
 from generator.name_check import Name, calls, layouts, param_element, taken
 
-from .backend import RUNTIME_NAMESPACES, _layout_names, _reserved_ns, _set_ns, call_name, ident
+from .backend import RUNTIME_NAMESPACES, call_name, ident, layout_names, reserved_namespace, set_namespace
 from .facts import KEYWORDS, RESERVED
 
 # What the bitfield classes of templates/cpp/include/types.hpp.j2 define besides their members.
@@ -31,9 +31,9 @@ def names(proto: dict) -> list[Name]:
     top = f"namespace {ns}"
     out.extend(taken(top, RUNTIME_NAMESPACES, "a name of the runtime,"))
     for s in proto["sets"]:
-        out.append(Name(top, _set_ns(s), f"the namespace of set {s['name']}", (s["name"],)))
+        out.append(Name(top, set_namespace(s), f"the namespace of set {s['name']}", (s["name"],)))
     if proto["reserved_fields"]:
-        out.append(Name(top, _reserved_ns(proto), "the namespace of the reserved fields", (), False))
+        out.append(Name(top, reserved_namespace(proto), "the namespace of the reserved fields", (), False))
     for t, owner in nc.types(out, f"namespace {ns}::types", proto, str):
         scope = f"{t['kind']} {ns}::types::{t['name']}"
         if t["kind"] == "enum":
@@ -49,8 +49,8 @@ def names(proto: dict) -> list[Name]:
             out.extend(nc.struct_members(scope, owner, proto, t, ident))
     for s in [None, *proto["sets"]]:
         fields = proto["reserved_fields"] if s is None else s["fields"]
-        set_ns = _reserved_ns(proto) if s is None else _set_ns(s)
-        structs = _layout_names(fields)
+        set_ns = reserved_namespace(proto) if s is None else set_namespace(s)
+        structs = layout_names(fields)
         for lay in (x for x in layouts(proto) if x.set is s):
             scope = f"namespace {ns}::{set_ns}"
             struct = structs[(lay.field["name"], lay.device)]
@@ -72,7 +72,7 @@ def _command_api(proto: dict, ns: str) -> list[Name]:
     <ns>::api::<set>::<command>::<function>(connection, arguments..., options)."""
     out: list[Name] = []
     for s, f, c in calls(proto):
-        set_ns = f"namespace {ns}::api::{_set_ns(s)}"
+        set_ns = f"namespace {ns}::api::{set_namespace(s)}"
         what = f"the command namespace of field {s['name']}.{f['name']}"
         fw = (s["name"], f["name"])
         out.append(Name(set_ns, ident(f["name"]), what, fw, owner=s["name"]))

@@ -712,7 +712,7 @@ def session_context(m: _Protocol) -> dict:
         s, module = sets[g.set], m.set_module(sets[g.set])
         api_set = {
             "id": g.set,
-            "method": _set_method(module),
+            "method": set_method(module),
             "struct": camel(module) + "Commands",
             "title": s["title"],
             "set": _hex(s["id"]),
@@ -912,7 +912,7 @@ def _session_example(m: _Protocol, session: dict) -> dict | None:
     }
 
 
-def _set_method(module: str) -> str:
+def set_method(module: str) -> str:
     """The method of `device::Device` that gives a set's typed commands (`device.threedm()`)."""
     return ident(module + "_set" if module in DEVICE_METHODS else module)
 
@@ -1036,7 +1036,7 @@ def api_names(protocol: dict, set_: dict | None, field: dict) -> dict[str, str]:
         )
     if field.get("role") == "command" and set_["kind"] == "command":
         # The typed command API (command_api.rs.j2): device.<set>().<command>().<function>(...).
-        call = f"device.{_set_method(m.set_module(set_))}()"
+        call = f"device.{set_method(m.set_module(set_))}()"
         functions = list(dict.fromkeys(fn for v in field["variants"] for fn in v["functions"] or []))
         if len(functions) > 1:
             out["session"] = f"{call}.{ident(field['name'])}().{{{','.join(ident(fn) for fn in functions)}}}(...)"

@@ -8,7 +8,7 @@ from generator import name_check as nc
 from generator.name_check import Name, calls, layouts, param_element, taken
 from generator.naming import upper
 
-from .backend import _set_method, camel, ident
+from .backend import camel, ident, set_method
 from .facts import DEVICE_METHODS, KEYWORDS, NOT_RAW, RESERVED_MODULES
 
 
@@ -92,7 +92,7 @@ def _command_api(proto: dict, modules: dict[int, str]) -> list[Name]:
     for s, f, c in calls(proto):
         sw, fw = (s["name"],), (s["name"], f["name"])
         set_struct = camel(modules[s["id"]]) + "Commands"
-        out.append(Name(device, _set_method(modules[s["id"]]), f"the command set {s['name']}", sw))
+        out.append(Name(device, set_method(modules[s["id"]]), f"the command set {s['name']}", sw))
         out.append(Name(module, set_struct, f"the command struct of set {s['name']}", sw))
         what = f"the command {s['name']}.{f['name']}"
         base = ident(f["name"]) if c.function is None else ident(c.function)
