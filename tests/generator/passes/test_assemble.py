@@ -34,6 +34,7 @@ def test_the_protocol_entry_has_the_documented_keys_and_no_notes(tmp_path):
         "shared_data",
         "samples",
         "session",
+        "session_example",
         "time",
         "simulation",
         "settings",
