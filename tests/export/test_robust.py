@@ -48,7 +48,7 @@ def accel_stream(n: int, start_ns: int = 1_000_000_000, step_ns: int = 8_000_000
     ts = mod.shared.ReferenceTimestamp(nanoseconds=0).encode()
     accel = mod.sensor.ScaledAccel(scaled_accel=[0.25, -0.5, -1.0]).encode()
     template = np.frombuffer(
-        mod.framing.PacketBuilder(0x80).add_field(0xD5, ts).add_field(0x04, accel).build(), np.uint8
+        mod.codec.framing.PacketBuilder(0x80).add_field(0xD5, ts).add_field(0x04, accel).build(), np.uint8
     )
     # the timestamp's 8 data bytes follow the header (4 bytes) and the field header (2 bytes)
     assert bytes(template[4:6]) == bytes([2 + 8, 0xD5])
@@ -59,7 +59,7 @@ def accel_stream(n: int, start_ns: int = 1_000_000_000, step_ns: int = 8_000_000
     rows[:, -2] = prefix[:, -1] % 256  # sum1
     rows[:, -1] = prefix.sum(axis=1) % 256  # sum2 (the sum of the running sum1 values)
     data = rows.tobytes()
-    assert mod.framing.parse(data[: len(template)])[0].data == data[: len(template)]  # a valid packet
+    assert mod.codec.framing.parse(data[: len(template)])[0].data == data[: len(template)]  # a valid packet
     return data
 
 
@@ -180,7 +180,7 @@ def test_no_space_left_mid_table_in_process(tmp_path, monkeypatch, capsys):
     mod = pkg("mipcodec")
     log = tmp_path / "log.bin"
     log.write_bytes(accel_stream(10000))
-    real = mod.tools.CsvWriter.write
+    real = mod.logs.tools.CsvWriter.write
     calls = []
 
     def write(self, rows):
@@ -189,7 +189,7 @@ def test_no_space_left_mid_table_in_process(tmp_path, monkeypatch, capsys):
         self.file.flush()
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
-    monkeypatch.setattr(mod.tools.CsvWriter, "write", write)
+    monkeypatch.setattr(mod.logs.tools.CsvWriter, "write", write)
     monkeypatch.setenv("MIPCODEC_EXPORT_SLOW", "1")
     assert mod.cli.main(["export", str(log), "--out", str(tmp_path / "o")]) == 2
     assert calls

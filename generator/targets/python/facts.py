@@ -166,9 +166,9 @@ PRIMITIVES: dict[str, Primitive] = {
 # The runtime's public names that a package's __init__ re-exports, by runtime module, in the order
 # it imports them (templates/python/package/__init__.py.j2).
 EXPORTS = {
-    "canonical": ["NaN"],
-    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
-    "framing": [
+    "codec.canonical": ["NaN"],
+    "codec.layout": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
+    "codec.framing": [
         "ACCELERATED",
         "FramingError",
         "PacketBuilder",
@@ -181,7 +181,7 @@ EXPORTS = {
         "iter_fields",
         "parse",
     ],
-    "packets": [
+    "codec.packets": [
         "Columns",
         "DecodedField",
         "Decoder",
@@ -198,7 +198,7 @@ EXPORTS = {
         "encode_lines",
     ],
     "registry": ["DEVICES", "lookup"],
-    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
+    "codec.samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
     "session": ["Device", "Result", "Session", "connect"],
 }
 

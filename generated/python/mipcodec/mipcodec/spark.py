@@ -52,9 +52,9 @@ import sys
 from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
 from urllib.parse import unquote, urlparse
 
-from . import dataset, timebase
 from ._protocol import PACKAGE as PROG
-from .tools import ToolError, _positive  # _positive: the option type of export --split-bytes
+from .logs import dataset, timebase
+from .logs.tools import ToolError, _positive  # _positive: the option type of export --split-bytes
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"

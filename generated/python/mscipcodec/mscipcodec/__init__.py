@@ -18,9 +18,9 @@ IR: two packages with the same hash were generated from the same spec.
 import importlib
 from typing import TYPE_CHECKING, Any, List
 
-from .canonical import NaN
-from .codec import DecodeError, EncodeError, Field, Layout, Struct
-from .framing import (
+from .codec.canonical import NaN
+from .codec.layout import DecodeError, EncodeError, Field, Layout, Struct
+from .codec.framing import (
     ACCELERATED,
     FramingError,
     PacketBuilder,
@@ -33,7 +33,7 @@ from .framing import (
     iter_fields,
     parse,
 )
-from .packets import (
+from .codec.packets import (
     Columns,
     DecodedField,
     Decoder,
@@ -50,7 +50,7 @@ from .packets import (
     encode_lines,
 )
 from .registry import DEVICES, lookup
-from .samples import Sample, SampleGrouper, SampleTracker, sample_key
+from .codec.samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 if TYPE_CHECKING:
     from . import base, imu_config, imu_data, reserved, types

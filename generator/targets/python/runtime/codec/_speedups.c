@@ -391,7 +391,7 @@ static void gc_resume(int was_enabled) {
 static PyObject *scan(PyObject *self, PyObject *args) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
         return NULL;
     }
     PyObject *buf;
@@ -948,7 +948,7 @@ static PyObject *decode_packet_c(const unsigned char *p, Py_ssize_t n, PyObject 
 static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
         return NULL;
     }
     static char *names[] = {"packet", "offset", "device", NULL};
@@ -988,7 +988,7 @@ static PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs)
 static PyObject *decode_all(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg); /* a private immutable copy (no copy for bytes) */
@@ -1459,7 +1459,7 @@ static void columns_free(Columns *c) {
 static PyObject *decode_columns(PyObject *self, PyObject *arg) {
     (void)self;
     if (packet_type == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg);
@@ -1858,7 +1858,7 @@ static int text_skip(Text *t, SkipRun *s) {
 static PyObject *scan_text(PyObject *self, PyObject *args) {
     (void)self;
     if (packet_type == NULL || py_field_line == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup() was not called");
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
         return NULL;
     }
     PyObject *buf;
@@ -1981,7 +1981,7 @@ static PyMethodDef methods[] = {
 
 static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT,
-    PROTOCOL_PACKAGE "._speedups",
+    PROTOCOL_PACKAGE ".codec._speedups",
     "C accelerator of " PROTOCOL_PACKAGE " (optional).",
     -1,
     methods,
@@ -1993,9 +1993,9 @@ static struct PyModuleDef module = {
 
 PyMODINIT_FUNC PyInit__speedups(void) {
     PyTypeObject *types[3] = {&EventBase, &PacketBase, &DecodedFieldBase};
-    if (ready_base(&EventBase, PROTOCOL_PACKAGE "._speedups.EventBase", event_members) < 0 ||
-        ready_base(&PacketBase, PROTOCOL_PACKAGE "._speedups.PacketBase", packet_members) < 0 ||
-        ready_lazy(&DecodedFieldBase, PROTOCOL_PACKAGE "._speedups.DecodedFieldBase") < 0) {
+    if (ready_base(&EventBase, PROTOCOL_PACKAGE ".codec._speedups.EventBase", event_members) < 0 ||
+        ready_base(&PacketBase, PROTOCOL_PACKAGE ".codec._speedups.PacketBase", packet_members) < 0 ||
+        ready_lazy(&DecodedFieldBase, PROTOCOL_PACKAGE ".codec._speedups.DecodedFieldBase") < 0) {
         return NULL;
     }
     empty_tuple = PyTuple_New(0);

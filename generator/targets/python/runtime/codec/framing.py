@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any, Iterator, List, Tuple, Union
 
 # The protocol's constants (generated). framing.MAX_PACKET and the others the code below does not
 # use are part of the package's API: re-exported (listed in __all__ at the end, so type checkers see them exported).
-from ._protocol import (  # noqa: F401
+from .._protocol import (  # noqa: F401
     CHECKSUM_SIZE,
     CHECKSUM_SUM1_FIRST,
     FIELD_DESCRIPTOR_OFFSET,
@@ -33,7 +33,7 @@ from ._protocol import (  # noqa: F401
 )
 
 if TYPE_CHECKING:
-    from .codec import BytesLike, Field
+    from .layout import BytesLike, Field
 
 # The optional C accelerator (_speedups.c, built by setup.py when a compiler is there): the parser
 # loop and packet decoding run in C with the same results. <PACKAGE>_PURE=1 in the
@@ -93,7 +93,7 @@ class PacketBuilder:
         """Append a typed field value (a generated layout: DESCRIPTOR and encode()). A layout that
         is not a field of this packet's descriptor set (its own, a reserved or a shared data field;
         docs/conformance.md section 2) raises FramingError: its descriptor means another field here."""
-        from . import registry  # the dispatch tables (imported here: they import this module)
+        from .. import registry  # the dispatch tables (imported here: they import this module)
 
         classes = registry.lookup(self.set, value.DESCRIPTOR)
         if classes is None or type(value) not in classes:

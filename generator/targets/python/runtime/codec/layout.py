@@ -21,7 +21,7 @@ from operator import attrgetter
 from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Type, TypeVar
 from typing import Union as _Union  # `Union` below is the base of generated unions
 
-from ._protocol import BYTE_ORDER
+from .._protocol import BYTE_ORDER
 from .canonical import (
     NaN,
     f32_bits,

@@ -11,9 +11,8 @@ import importlib
 from array import array
 from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Optional, Tuple, Type, Union, cast
 
-from . import registry
+from .. import registry
 from .canonical import JsonError, error_text, hex_bytes, is_int, loads, skip_line
-from .codec import BytesLike, DecodeError, EncodeError, Field, fast_items
 from .framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
@@ -31,6 +30,7 @@ from .framing import (
     iter_fields,
     parse,
 )
+from .layout import BytesLike, DecodeError, EncodeError, Field, fast_items
 
 # Type checkers see the pure-Python classes (the C bases hold the same attributes).
 _PACKET_SLOTS: Tuple[str, ...] = ("offset", "set", "fields")
@@ -463,7 +463,7 @@ class Table:
             import numpy as np
         except ImportError:
             raise ImportError("Table.arrays needs numpy: pip install numpy") from None
-        from . import _columns
+        from .. import _columns
 
         key = _columns_key(self.cls)
         shapes = _columns.SHAPES.get(key, {}) if key is not None else {}
@@ -486,7 +486,7 @@ class Table:
             pd: Any = importlib.import_module("pandas")  # no type stubs
         except ImportError:
             raise ImportError("Table.dataframe needs pandas: pip install pandas") from None
-        from . import _columns
+        from .. import _columns
 
         key = _columns_key(self.cls)
         specs = _columns.COLUMNS.get(key, ()) if key is not None else ()

@@ -16,9 +16,9 @@ from __future__ import annotations
 
 from typing import Dict, List, Optional, Tuple, Union
 
-from ._protocol import DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS  # noqa: F401 (samples.MAX_KEY: API)
-from .codec import BytesLike
+from .._protocol import DATA_SETS, FIRST_SHARED, MAX_KEY, TIMESTAMPS  # noqa: F401 (samples.MAX_KEY: API)
 from .framing import CHECKSUM_SIZE, FIELD_HEADER_SIZE, HEADER_SIZE, SET_OFFSET, FieldBytes, RawPacket, iter_fields
+from .layout import BytesLike
 from .packets import Entry, Packet, decode_packet
 
 

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from typing import List, Mapping, NamedTuple, Optional, Sequence, Tuple
 
-from . import _link, _settings, _sim, registry
-from .codec import Field
+from .. import _link, _settings, _sim, registry
+from ..codec.layout import Field
 
 Entries = Sequence[Tuple[int, int]]  # (descriptor, decimation)
 

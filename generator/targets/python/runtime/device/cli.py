@@ -25,13 +25,14 @@ import time
 import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple, Union
 
-from . import _link, _sim, budget, capabilities, registry
-from . import _session as _meta
+from .. import _link, _sim, capabilities, registry
+from .. import _session as _meta
+from .._protocol import PACKAGE
+from ..codec.layout import Field
+from ..session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity, shown_name
+from ..session.transport import TransportError, open_transport, parse_address
+from . import budget
 from . import settings as st
-from ._protocol import PACKAGE
-from .codec import Field
-from .session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity, shown_name
-from .transport import TransportError, open_transport, parse_address
 
 PROG = f"{PACKAGE}-device"
 DEFAULT_BAUD = 115200

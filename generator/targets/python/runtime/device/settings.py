@@ -7,7 +7,7 @@ not exclude (`_settings.SETTINGS`, generated). Its entry in a file holds the par
 write (enum members by name, the counts of lists left out: they follow from the lists); a setting
 read per key parameter (the parameters its read sends: a port, a data set) is a list of entries,
 each with its key parameters, read for the key values the spec's `settings: keys` gives. The
-file's JSON Schema is `settings.schema.json` beside this module, generated from the spec.
+file's JSON Schema is `settings.schema.json` at the package's top, generated from the spec.
 
 Needs PyYAML (the package's `device` extra).
 """
@@ -18,9 +18,9 @@ import json
 import typing
 from typing import Any, Dict, List, NamedTuple, Optional, Tuple
 
-from . import _settings, capabilities
-from .codec import EncodeError, Enum, Field
-from .session import support_error
+from .. import _settings, capabilities
+from ..codec.layout import EncodeError, Enum, Field
+from ..session import support_error
 
 READ = 2
 WRITE = 1
@@ -182,7 +182,7 @@ def read_entry(device: Any, setting: Setting, key: Dict[str, Any]) -> Dict[str, 
 def read_all(device: Any, model: str, warn: Any = None) -> Dict[str, Any]:
     """Every setting of the model: name -> entry, or a list of entries for a keyed setting. A read
     the device refuses (NACK) is reported through `warn` and left out."""
-    from .session import Nack
+    from ..session import Nack
 
     out: Dict[str, Any] = {}
     for s in settings_for(model):
@@ -428,4 +428,4 @@ def schema_path() -> str:
     """The path of the settings files' JSON Schema (generated from the spec)."""
     import os
 
-    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "settings.schema.json")
+    return os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "settings.schema.json")

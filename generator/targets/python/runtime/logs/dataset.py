@@ -30,9 +30,9 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
-from . import _columns, registry
-from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
-from ._protocol import PACKAGE as PROG
+from .. import _columns, registry
+from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
+from .._protocol import PACKAGE as PROG
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
@@ -139,7 +139,7 @@ def model_slug(name: str) -> str:
 def identity_from_packet(packet: Any) -> Optional[Identity]:
     """The identity a decoded packet reports when it is a device information reply, else None."""
     reports = _identity_reports()
-    from .packets import DecodedField
+    from ..codec.packets import DecodedField
 
     for f in packet.fields:
         if not isinstance(f, DecodedField):
@@ -171,7 +171,7 @@ def identity_from_packet(packet: Any) -> Optional[Identity]:
 def _identity_reports() -> Dict[Any, Any]:
     """Device information reply class -> its identity items (the generated `_sim.IDENTITY_REPORTS`)."""
     try:
-        sim = importlib.import_module("._sim", __package__)
+        sim = importlib.import_module(".._sim", __package__)
     except ImportError:
         return {}
     reports: Dict[Any, Any] = getattr(sim, "IDENTITY_REPORTS", {})
@@ -182,7 +182,7 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
     """The log's identity: from its first device information reply (Get Device Information,
     searched through the whole log in pieces), else `model` / `serial` (as given, made partition
     safe), else `unknown`. A reply's values win over the options."""
-    from .packets import Packet, decode_all
+    from ..codec.packets import Packet, decode_all
 
     reports = _identity_reports()
     sets = {cls.SET for cls in reports if getattr(cls, "SET", None) is not None}
@@ -373,12 +373,12 @@ def file_metadata(identity: Identity, log: str, split_start: int) -> Dict[bytes,
 
 def _spec_hash() -> str:
     """The package's SPEC_HASH (16 hex digits of the SHA-256 of the protocol's canonical IR)."""
-    return str(getattr(importlib.import_module(__package__ or PROG), "SPEC_HASH", ""))
+    return str(getattr(importlib.import_module(PROG), "SPEC_HASH", ""))
 
 
 def _spec_version() -> str:
     """The package's version (docs/versioning.md: it moves with the spec)."""
-    return str(getattr(importlib.import_module(__package__ or PROG), "__version__", ""))
+    return str(getattr(importlib.import_module(PROG), "__version__", ""))
 
 
 # ------------------------------------------------------------------------------ decode a split
@@ -405,7 +405,7 @@ def device_of(model: str) -> Optional[str]:
     cv7_ins`), or the device whose model name the reported one is (`3dm-cv7-gnss-ins` is the
     3DM-CV7-GNSS/INS: compared without case and punctuation, as the session compares them); None
     when it is none of them (`unknown`)."""
-    from .session import model_matches
+    from ..session import model_matches
 
     if model in registry.DEVICES:
         return model
@@ -418,7 +418,7 @@ def _for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
     `cols.others` as the packet decoder gives them for `device`. Nothing changes for device None."""
     if device is None:
         return
-    from .packets import DecodedField, decode_packet
+    from ..codec.packets import DecodedField, decode_packet
 
     def redo(off: int, k: int) -> Any:
         n = HEADER_SIZE + data[off + LENGTH_OFFSET] + CHECKSUM_SIZE
@@ -457,7 +457,7 @@ def decode_split(
     split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
     np = _need("numpy")
     pa = _need("pyarrow")
-    from .packets import decode_columns
+    from ..codec.packets import decode_columns
     from .tools import FastExporter, _as_arrow, _unify, table_name
 
     ident = identity if identity is not None else Identity()

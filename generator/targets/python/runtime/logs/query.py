@@ -28,7 +28,7 @@ import os
 import sys
 from typing import Any, Dict, List, Sequence, Tuple
 
-from ._protocol import PACKAGE as PROG
+from .._protocol import PACKAGE as PROG
 
 DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # Hive/Spark's directory name for a null value
 TYPED = {"date": "DATE"}  # partition columns that are not text

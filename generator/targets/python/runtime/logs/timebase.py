@@ -45,8 +45,8 @@ import math
 import os
 from typing import Any, Dict, Iterable, List, NamedTuple, Optional, Sequence, Tuple
 
-from . import _columns
-from .packets import DecodedField, Packet
+from .. import _columns
+from ..codec.packets import DecodedField, Packet
 
 NS = 1_000_000_000
 SECONDS_PER_WEEK = 604_800
@@ -259,7 +259,7 @@ def split_anchors(data: Any, base: int, start: int, end: int) -> SplitAnchors:
     """The `SplitAnchors` of the packets whose first byte is in [start, end) (log offsets) of
     `data`, the log's bytes from offset `base` (decoded with `packets.decode_columns`; packets
     starting before `start` are read only to resynchronise)."""
-    from .packets import decode_columns
+    from ..codec.packets import decode_columns
 
     np = importlib.import_module("numpy")
     p = _columns_arrays(np, decode_columns(data), base)
@@ -721,12 +721,12 @@ def file_clock(path: str, split_bytes: int = FILE_SPLIT) -> ClockMap:
     each split of `split_bytes` (with numpy; decoded by `decode_columns`), or, without numpy, the
     file's packets decoded one by one (one split). `.split(0)` is then the state to time the whole
     file from its start, packet by packet."""
-    from ._protocol import MAX_PACKET
+    from .._protocol import MAX_PACKET
 
     try:
         importlib.import_module("numpy")
     except ImportError:
-        from .packets import Decoder
+        from ..codec.packets import Decoder
 
         dec = Decoder()
         found: List[PacketTime] = []

@@ -39,11 +39,11 @@ import tempfile
 import time
 from typing import Any, Callable, Dict, Iterator, List, Optional, Tuple, Type
 
-from . import _columns, registry
-from ._protocol import FIRST_SHARED, MAX_PACKET, SET_OFFSET, SYNC, TIMESTAMPS
-from ._protocol import PACKAGE as PROG
-from .framing import Skip, fletcher16
-from .packets import DecodedField, Decoder, Packet
+from .. import _columns, registry
+from .._protocol import FIRST_SHARED, MAX_PACKET, SET_OFFSET, SYNC, TIMESTAMPS
+from .._protocol import PACKAGE as PROG
+from ..codec.framing import Skip, fletcher16
+from ..codec.packets import DecodedField, Decoder, Packet
 
 CHUNK = 1 << 16
 _F32 = struct.Struct(">f")
@@ -761,7 +761,7 @@ BLOCK = 16 << 20  # bytes decoded by one decode_columns call on the fast path
 def _fast_path(args: argparse.Namespace) -> bool:
     """The columnar path (decode_columns in C, numpy, pyarrow) applies: a whole file to CSV or
     Parquet, one table per field, the accelerator built and numpy and pyarrow installed."""
-    from .framing import ACCELERATED
+    from ..codec.framing import ACCELERATED
 
     if args.log == "-" or args.follow or args.join or args.format not in ("csv", "parquet") or not ACCELERATED:
         return False
@@ -1231,7 +1231,7 @@ def _export_fast(
     """The columnar export: blocks of BLOCK bytes through decode_columns; bytes that end a block
     in a skipped run (possibly a packet cut by the block's end) start the next block, at most
     MAX_PACKET - 1 of them (a packet cut by the end starts there; bytes before are skipped)."""
-    from .packets import Columns, decode_columns
+    from ..codec.packets import Columns, decode_columns
 
     source = Source(args.log)
     ex = FastExporter(args.out, args.format, fields, args.enum_numbers, outputs)
@@ -1417,8 +1417,8 @@ class Summary:
 def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
     """Complete packets with a wrong checksum inside a skipped run (same header, wrong sum),
     among those that start before `starts` (default: anywhere)."""
-    from ._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET
-    from .framing import checksum_bytes
+    from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET
+    from ..codec.framing import checksum_bytes
 
     limit = len(data) if starts is None else starts
     n = 0

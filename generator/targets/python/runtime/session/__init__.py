@@ -31,11 +31,10 @@ import time
 from collections import OrderedDict, deque
 from typing import TYPE_CHECKING, Any, Callable, Dict, FrozenSet, List, Optional, Tuple, Union
 
-from . import _link, _sim, capabilities, registry
-from . import _session as _meta
-from .canonical import error_text, loads
-from .codec import Field
-from .framing import (
+from .. import _link, _sim, capabilities, registry
+from .. import _session as _meta
+from ..codec.canonical import error_text, loads
+from ..codec.framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
     LENGTH_OFFSET,
@@ -48,9 +47,10 @@ from .framing import (
     _checksum_ok,
     _speedups,
 )
-from .packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
-from .samples import Sample, SampleGrouper
-from .timebase import SplitClock, Times
+from ..codec.layout import Field
+from ..codec.packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
+from ..codec.samples import Sample, SampleGrouper
+from ..logs.timebase import SplitClock, Times
 from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
@@ -331,8 +331,8 @@ def expected_replies(command: Field, info: Optional[CommandInfo] = None) -> Tupl
 def command_from_line(text: str) -> Field:
     """The command of one input line of the conformance tool: a canonical packet line (what
     `encode` accepts) with exactly one decoded command field. Raises ValueError naming the problem."""
-    from .codec import EncodeError
-    from .packets import encode_line
+    from ..codec.layout import EncodeError
+    from ..codec.packets import encode_line
 
     try:
         encode_line(text)  # every rule of the encoder's input (section 5)
@@ -902,7 +902,7 @@ def _complete(p: Pending, code: Any, reply: List[Entry]) -> Result:
 # ----------------------------------------------------------------------------- blocking API
 if TYPE_CHECKING:
     # The typed command API's attributes (device.base, ...), which command_api.bind sets at run time.
-    from .command_api import DeviceCommands as _CommandSets
+    from ..command_api import DeviceCommands as _CommandSets
 else:
     _CommandSets = object
 
@@ -935,7 +935,7 @@ class Device(_CommandSets):
         self._clock = clock
         self._t0 = clock()
         self.on_event = on_event
-        self.log: Callable[[str], Any] = log or logging.getLogger(f"{__package__}.link").info
+        self.log: Callable[[str], Any] = log or logging.getLogger(f"{__name__.rsplit('.', 1)[0]}.link").info
         self.reopen = reopen
         self.address = address or "the port"
         self.reconnect_ms = reconnect_ms
@@ -949,7 +949,7 @@ class Device(_CommandSets):
         self._linking = False  # inside a reconnect: no nested one
         self._identified = device is None  # the model check after the first unknown-command NACK
         self._identifying = False  # inside that check: its own result is no event
-        from . import command_api  # the generated typed API (imports this module)
+        from .. import command_api  # the generated typed API (imports this module)
 
         command_api.bind(self)
 

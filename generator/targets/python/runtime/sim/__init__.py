@@ -27,14 +27,14 @@ import sys
 import time
 from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 
-from . import _link, _sim, capabilities, registry
-from . import _session as _meta
-from ._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
-from .codec import Choice, Enum, Field
-from .framing import PacketBuilder, Parser, RawPacket
-from .packets import DecodedField, RawField, decode_packet
-from .session import support_error
-from .sim_world import GRAVITY, RADIANS, World, gps_start_of_utc
+from .. import _link, _sim, capabilities, registry
+from .. import _session as _meta
+from .._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
+from ..codec.framing import PacketBuilder, Parser, RawPacket
+from ..codec.layout import Choice, Enum, Field
+from ..codec.packets import DecodedField, RawField, decode_packet
+from ..session import support_error
+from .world import GRAVITY, RADIANS, World, gps_start_of_utc
 
 Chunk = Tuple[float, bytes]
 FAULT_KINDS = ("drop", "delay", "corrupt", "split", "garbage", "nack")
@@ -219,7 +219,7 @@ class Simulator:
             try:
                 name, code, replies, extra = self._answer(set_id, entry, now)
             except Exception as e:  # a simulator bug must not end the session: report, NACK
-                print(f"{__package__}.sim: {type(e).__name__}: {e}", file=sys.stderr)
+                print(f"{__name__}: {type(e).__name__}: {e}", file=sys.stderr)
                 name, code, replies, extra = "", _sim.NACK["failed"], [], []
             if code is None:
                 out.extend(extra)
@@ -788,7 +788,7 @@ def _plain(value: Any) -> Any:
 
 
 def _suppressed(command: Field) -> bool:
-    from .session import ack_suppressed
+    from ..session import ack_suppressed
 
     return bool(ack_suppressed(command))
 
@@ -920,7 +920,7 @@ def replay_chunks(data: bytes, fast: bool = False) -> List[Tuple[float, bytes]]:
     """The packets of a capture with their times from its first: from the shared timestamps
     (_columns.TIMES) of the data packets, each packet sent when its time comes (a packet without
     one at the time of the one before); all at 0 when `fast`."""
-    from . import _columns
+    from .. import _columns
 
     times = {(s, d): (a, per) for s, d, a, per in getattr(_columns, "TIMES", ())}
     out: List[Tuple[float, bytes]] = []
@@ -1167,7 +1167,7 @@ def _loop(
         now = time.monotonic()
         if link is not None and link.sock is not None and (link.dead or link.stalled(now)):
             if not link.dead:
-                print(f"{__package__}.sim: a host read nothing for {link.STALL:g} s: disconnected", file=sys.stderr)
+                print(f"{__name__}: a host read nothing for {link.STALL:g} s: disconnected", file=sys.stderr)
             link.close()  # a TCP host that has gone or stalled: the next one is served
             link = None
             pending.clear()
@@ -1273,7 +1273,7 @@ def _loop(
 # ---------------------------------------------------------------------------------------- command
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
-        prog=f"python -m {__package__}.sim",
+        prog=f"python -m {__name__}",
         description="A simulated device answering commands and streaming data as the spec says "
         "(docs/conformance.md section 9). Prints the address it listens on, then serves until terminated.",
     )
