@@ -457,7 +457,7 @@ def test_budget_matches_the_manuals_worked_example() -> None:
 
 def test_the_console_script_is_declared() -> None:
     text = (PACKAGE_DIR / "pyproject.toml").read_text()
-    assert 'mipcodec-device = "mipcodec.device_cli:main"' in text
+    assert 'mipcodec-device = "mipcodec.device.cli:main"' in text
     assert '"settings.schema.json"' in text
 
 

@@ -58,7 +58,7 @@ def messy_log() -> bytes:
     good = bytes.fromhex("7565800e0e04") + struct.pack(">fff", 0.5, -0.25, 1.0)
     from tests.export.test_export import pkg as _pkg
 
-    framing = _pkg("mipcodec").framing
+    framing = _pkg("mipcodec").codec.framing
     packet = good + framing.checksum_bytes(good)
     bad = bytearray(packet)
     bad[-1] ^= 0xFF
@@ -191,8 +191,8 @@ def test_whole_log_counts_match_info(tmp_path):
     log.write_bytes(data)
     whole = dsm.decode_split(data, 0, 0, len(data), None, None, "L", len(data))
     mod = pkg()
-    summary = mod.logs.tools.Summary()
-    for e in mod.logs.tools.events(mod.logs.tools.Source(str(log), progress=False), None):
+    summary = mod.logs.info.Summary()
+    for e in mod.logs.writers.events(mod.logs.writers.Source(str(log), progress=False), None):
         summary.add(e)
     assert whole.packets == sum(summary.packets.values())
     assert whole.skipped_bytes == summary.skipped

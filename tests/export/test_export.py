@@ -35,7 +35,17 @@ PACKAGES = {p["name"]: p["package"] for p in IR["protocols"]}
 def pkg(name: str = "mipcodec"):
     """The generated package with the submodules these tests use imported."""
     mod = python_package(name)
-    for sub in ("cli", "logs.tools", "_columns", "registry", "codec.framing", "shared", "sensor"):
+    for sub in (
+        "cli",
+        "logs.commands",
+        "logs.info",
+        "logs.plot",
+        "_columns",
+        "registry",
+        "codec.framing",
+        "shared",
+        "sensor",
+    ):
         try:
             importlib.import_module(f"{name}.{sub}")
         except ModuleNotFoundError:
@@ -354,7 +364,7 @@ def test_plot_writes_a_labelled_image(tmp_path):
     data, _ = gap_stream(mod)
     log = tmp_path / "gaps.bin"
     log.write_bytes(data)
-    fig = mod.logs.tools.figure(str(log), ["scaled_accel"])
+    fig = mod.logs.plot.figure(str(log), ["scaled_accel"])
     ax = fig.axes[0]
     assert ax.get_xlabel() == "time [s]" and ax.get_ylabel() == "g"
     assert [line.get_label() for line in ax.lines] == ["scaled_accel.x", "scaled_accel.y", "scaled_accel.z"]
@@ -397,8 +407,8 @@ def test_missing_extra_is_named(monkeypatch):
 
     monkeypatch.setattr(builtins, "__import__", fake)
     monkeypatch.delitem(__import__("sys").modules, "pyarrow", raising=False)
-    with pytest.raises(mod.logs.tools.ToolError, match=r"pip install 'mipcodec\[export\]'"):
-        mod.logs.tools.need("pyarrow")
+    with pytest.raises(mod.logs.writers.ToolError, match=r"pip install 'mipcodec\[export\]'"):
+        mod.logs.writers.need("pyarrow")
 
 
 ARRAYS_CHECK = """

@@ -55,7 +55,8 @@ RUNTIME_EXCLUDED = ("tests", "package_tests", "protocols")
 
 def runtime_files(folder: str = "", excluded: tuple[str, ...] = RUNTIME_EXCLUDED) -> list[str]:
     """The runtime's files under `folder` (a path under runtime/), as paths under runtime/, sorted;
-    the `excluded` folders of runtime/ and Python's caches left out."""
+    the `excluded` folders of runtime/, hidden files and folders (tool caches) and Python's caches
+    left out."""
     root = runtime_dir("python")
     base = root / folder
     if not base.is_dir():
@@ -65,6 +66,7 @@ def runtime_files(folder: str = "", excluded: tuple[str, ...] = RUNTIME_EXCLUDED
         for p in sorted(base.rglob("*"))
         if p.is_file()
         and "__pycache__" not in p.parts
+        and not any(part.startswith(".") for part in p.relative_to(root).parts)  # caches, editor files
         and p.suffix != ".pyc"
         and p.relative_to(root).parts[0] not in excluded
     ]

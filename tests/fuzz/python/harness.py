@@ -104,7 +104,7 @@ def _check_line(m: ModuleType, line: str, data: bytes) -> None:
 
 
 def _check_packet(m: ModuleType, packet: bytes, offset: int, device, tracker) -> str:
-    framing = m.framing
+    framing = m.codec.framing
     check(len(packet) >= framing.HEADER_SIZE + framing.CHECKSUM_SIZE, "short packet")
     set_id = packet[framing.SET_OFFSET]
     payload = packet[framing.HEADER_SIZE : -framing.CHECKSUM_SIZE]
@@ -175,7 +175,7 @@ def parser(package: str, data: bytes) -> None:
 
 
 def _decode_fields(m: ModuleType, packet: bytes, device) -> None:
-    framing = m.framing
+    framing = m.codec.framing
     set_id = packet[framing.SET_OFFSET]
     payload = packet[framing.HEADER_SIZE : -framing.CHECKSUM_SIZE]
     check(packet[framing.LENGTH_OFFSET] == len(payload), "payload length byte")

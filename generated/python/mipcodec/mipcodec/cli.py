@@ -268,7 +268,7 @@ def main(argv: Optional[List[str]] = None) -> int:
 
             return device_main(rest)
         if command in ("export", "info", "plot", "query"):
-            from .logs.tools import main as tools_main  # the user commands (optional libraries, see tools)
+            from .logs.commands import main as tools_main  # the user commands (optional libraries, see logs)
 
             return tools_main(args)
         if command == "decode":

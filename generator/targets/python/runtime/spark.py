@@ -54,7 +54,8 @@ from urllib.parse import unquote, urlparse
 
 from ._protocol import PACKAGE as PROG
 from .logs import dataset, timebase
-from .logs.tools import ToolError, _positive  # _positive: the option type of export --split-bytes
+from .logs.commands import positive  # the option type of export --split-bytes
+from .logs.writers import ToolError
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"
@@ -423,7 +424,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("logs", nargs="+", metavar="LOG", help="log files, directories or globs (any path Spark lists)")
     p.add_argument("--out", required=True, metavar="DIR", help="the dataset directory (seen by every executor)")
     p.add_argument("--master", default=DEFAULT_MASTER, metavar="URL", help=f"Spark master (default {DEFAULT_MASTER})")
-    p.add_argument("--split-bytes", type=_positive, metavar="N", help="bytes of log per task (default 64 MiB)")
+    p.add_argument("--split-bytes", type=positive, metavar="N", help="bytes of log per task (default 64 MiB)")
     p.add_argument("--model", metavar="NAME", help="the model of logs without a device information reply")
     p.add_argument("--serial", metavar="SN", help="the serial of logs without a device information reply")
     p.add_argument("--conf", action="append", default=[], metavar="KEY=VALUE", help="a Spark setting (repeatable)")

@@ -33,6 +33,10 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 from .. import _columns, registry
 from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
 from .._protocol import PACKAGE as PROG
+from .arrow import as_arrow, to_arrow, unify
+from .export import FastExporter
+from .info import bad_checksums
+from .writers import need, table_name
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
@@ -328,7 +332,6 @@ def data_sets() -> List[int]:
 def table_names() -> Dict[str, Any]:
     """Every table the spec can give: name -> schema (per field in each data set, shared
     fields in each data set, and `<set>.samples`)."""
-    from .tools import table_name
 
     out: Dict[str, Any] = {}
     for set_id in data_sets():
@@ -339,7 +342,7 @@ def table_names() -> Dict[str, Any]:
 
 
 class _Key:
-    """A layout key seen as a layout class by `tools.table_name` (SET, NAME, DEVICE)."""
+    """A layout key seen as a layout class by `writers.table_name` (SET, NAME, DEVICE)."""
 
     def __init__(self, key: Tuple[int, int, Optional[str]]) -> None:
         self.SET, self.DESCRIPTOR, self.DEVICE = key
@@ -458,7 +461,6 @@ def decode_split(
     np = _need("numpy")
     pa = _need("pyarrow")
     from ..codec.packets import decode_columns
-    from .tools import FastExporter, _as_arrow, _unify, table_name
 
     ident = identity if identity is not None else Identity()
     result = SplitResult(log, start, end, ident)
@@ -492,9 +494,9 @@ def decode_split(
         key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
         values = []
         for j in range(2, len(parts[0][2])):
-            chunk = _unify(pa, [p[2][j] for p in parts])
+            chunk = unify(pa, [p[2][j] for p in parts])
             col = chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk)
-            values.append(_as_arrow(pa, col).take(pa.array(sel, type=pa.int64())))
+            values.append(as_arrow(pa, col).take(pa.array(sel, type=pa.int64())))
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
@@ -671,20 +673,19 @@ class _PacketTimes:
         """Arrow arrays of the base columns (BASE_COLUMNS order) of rows at packet offsets `offs`."""
         np = self.np
         pa = _need("pyarrow")
-        from .tools import _arrow
 
         cols = given if given is not None else self.columns(offs)
         t_ns, t_ok = cols["t_ns"]
         t_ns = np.asarray(t_ns, dtype=np.int64)
         out = [
-            _arrow(np, pa, t_ns, t_ok),
-            _arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
-            _arrow(np, pa, np.asarray(offs, dtype=np.int64)),
+            to_arrow(np, pa, t_ns, t_ok),
+            to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
+            to_arrow(np, pa, np.asarray(offs, dtype=np.int64)),
             pa.array([log] * len(offs), type=pa.string()),
         ]
         for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
             vals, ok = cols[name]
-            out.append(_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
+            out.append(to_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
         return out
 
 
@@ -696,9 +697,8 @@ def whole_clock(data: bytes, base: int, start: int, end: int) -> Any:
 
 
 def _bad_checksums(run: bytes, starts: int) -> int:
-    """Complete packets with a wrong checksum inside a skipped run (`tools.bad_checksums`), among
+    """Complete packets with a wrong checksum inside a skipped run (`info.bad_checksums`), among
     those whose sync starts in the run's first `starts` bytes."""
-    from .tools import bad_checksums
 
     return bad_checksums(run, starts)
 
@@ -955,7 +955,6 @@ def export_dataset(
 
 
 def _need(module: str) -> Any:
-    from .tools import need
 
     return need(module)
 

@@ -187,7 +187,7 @@ class _Text:
 
 
 def add_parser(sub: Any) -> None:
-    """The `query` subcommand in tools.py's command table."""
+    """The `query` subcommand in the command table of logs/commands.py."""
     q = sub.add_parser(
         "query",
         help="run SQL on a dataset with DuckDB (needs duckdb)",
