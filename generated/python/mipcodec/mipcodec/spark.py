@@ -7,8 +7,8 @@ The same dataset as `python -m mipcodec export --dataset DIR LOGS...` (docs/data
 same file names and rows, written by the same functions of `mipcodec.dataset`: this module is a
 second driver of them, not a second decoder. From a Spark application of your own:
 
-    from mipcodec import spark as mip_spark
-    summary = mip_spark.export_dataset(spark_session, ["/data/logs/"], "/data/dataset")
+    from mipcodec import spark as spark_job
+    summary = spark_job.export_dataset(spark_session, ["/data/logs/"], "/data/dataset")
 
 The job, in two Spark stages after a listing:
 
@@ -55,7 +55,7 @@ from urllib.parse import unquote, urlparse
 from ._protocol import PACKAGE as PROG
 from .logs import dataset, timebase
 from .logs.commands import positive  # the option type of export --split-bytes
-from .logs.writers import ToolError
+from .logs.writers import ToolError, need
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"
@@ -139,7 +139,7 @@ def open_log(uri: str) -> Tuple[ReadAt, int]:
     local = _local_path(uri)
     if local is not None:
         return dataset.file_reader(local)
-    fs_mod = dataset._need("pyarrow.fs")
+    fs_mod = need("pyarrow.fs")
     parsed = urlparse(uri)
     if parsed.scheme in ("s3a", "s3n"):
         uri = "s3" + uri[len(parsed.scheme) :]
@@ -443,8 +443,8 @@ def main(argv: Optional[List[str]] = None) -> int:
         if "-" in args.logs:
             raise ToolError("reads log files only (not - for stdin)")
         need_pyspark()
-        dataset._need("pyarrow")
-        dataset._need("numpy")
+        need("pyarrow")
+        need("numpy")
         try:
             os.makedirs(args.out, exist_ok=True)
         except OSError as e:

@@ -25,10 +25,12 @@ from .framing import (
     RawPacket,
     Skip,
     TrailingBytes,
-    _speedups,
     checksum_bytes,
     iter_fields,
     parse,
+)
+from .framing import (
+    speedups as _speedups,
 )
 from .layout import BytesLike, DecodeError, EncodeError, Field, fast_items
 

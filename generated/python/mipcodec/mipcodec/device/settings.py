@@ -64,7 +64,7 @@ def known_names() -> Dict[str, List[str]]:
     return out
 
 
-def _enums(cls: Any) -> Dict[str, Any]:
+def enum_types(cls: Any) -> Dict[str, Any]:
     """attribute -> its enum class, for the enum parameters of a command class."""
     out: Dict[str, Any] = {}
     try:
@@ -84,7 +84,7 @@ def enum_name(cls: Any, value: Any) -> Any:
     return member.name.lower() if member is not None else int(value)
 
 
-def _enum_value(cls: Any, value: Any) -> Any:
+def enum_value(cls: Any, value: Any) -> Any:
     if isinstance(value, str):
         member = cls.__members__.get(value.upper())
         if member is None:
@@ -98,7 +98,7 @@ def _enum_value(cls: Any, value: Any) -> Any:
 def plain_of_reply(setting: Setting, reply: Field) -> Dict[str, Any]:
     """The file entry of one read reply: the write's parameters, enum members by name."""
     values = json.loads(reply.to_json())
-    enums = _enums(setting.cls)
+    enums = enum_types(setting.cls)
     out: Dict[str, Any] = {}
     for attr, reply_attr, _ in setting.attrs:
         v = values.get(reply_attr)
@@ -111,7 +111,7 @@ def plain_of_reply(setting: Setting, reply: Field) -> Dict[str, Any]:
 def command_of(setting: Setting, entry: Dict[str, Any], function: int = WRITE) -> Field:
     """The command that writes a file entry (or reads it, function 2, with its key parameters only).
     Raises ValueError naming the parameter."""
-    enums = _enums(setting.cls)
+    enums = enum_types(setting.cls)
     values: Dict[str, Any] = {"function": function}
     attrs = setting.key_attrs if function != WRITE else tuple(a for a, _, _ in setting.attrs)
     for attr in attrs:
@@ -120,7 +120,7 @@ def command_of(setting: Setting, entry: Dict[str, Any], function: int = WRITE) -
         v = entry[attr]
         if attr in enums:
             try:
-                v = _enum_value(enums[attr], v)
+                v = enum_value(enums[attr], v)
             except ValueError as e:
                 raise ValueError(f"{setting.name}.{attr}: {e}") from None
         values[attr] = v
@@ -148,7 +148,7 @@ def normalized(setting: Setting, entry: Dict[str, Any]) -> Dict[str, Any]:
     for _, lst in setting.counts:  # an empty list decodes as absent
         if values.get(lst) is None:
             values[lst] = []
-    enums = _enums(setting.cls)
+    enums = enum_types(setting.cls)
     out = {}
     for attr, _, _ in setting.attrs:
         v = values.get(attr)
@@ -159,12 +159,12 @@ def normalized(setting: Setting, entry: Dict[str, Any]) -> Dict[str, Any]:
 
 
 def key_of(setting: Setting, entry: Dict[str, Any]) -> Tuple[Any, ...]:
-    enums = _enums(setting.cls)
+    enums = enum_types(setting.cls)
     out = []
     for attr in setting.key_attrs:
         v = entry.get(attr)
         if attr in enums and isinstance(v, str):
-            v = _enum_value(enums[attr], v)
+            v = enum_value(enums[attr], v)
         out.append(v)
     return tuple(out)
 
@@ -198,7 +198,7 @@ def read_all(device: Any, model: str, warn: Any = None) -> Dict[str, Any]:
 
 
 # ------------------------------------------------------------------------------------ YAML
-def _flow(value: Any) -> str:
+def flow_text(value: Any) -> str:
     import yaml  # type: ignore[import-untyped, unused-ignore]
 
     text: str = yaml.safe_dump(value, default_flow_style=True, width=1 << 30, sort_keys=False).strip()
@@ -224,7 +224,7 @@ def dump_text(values: Dict[str, Any], model: str, header: List[str]) -> str:
             for attr, v in entry.items():
                 prefix = ("  - " if first else "    ") if s.keyed else "  "
                 comment = f"  # {units[attr]}" if units.get(attr) else ""
-                lines.append(f"{prefix}{attr}: {_flow(v)}{comment}")
+                lines.append(f"{prefix}{attr}: {flow_text(v)}{comment}")
                 first = False
             if s.keyed and not entry:
                 lines.append("  - {}")
@@ -420,7 +420,7 @@ def changed_params(old: Optional[Dict[str, Any]], new: Dict[str, Any]) -> List[s
     for attr, v in new.items():
         before = None if old is None else old.get(attr)
         if before != v:
-            out.append(f"{attr}: {_flow(before)} -> {_flow(v)}")
+            out.append(f"{attr}: {flow_text(before)} -> {flow_text(v)}")
     return out
 
 

@@ -44,8 +44,12 @@ from ..codec.framing import (
     Parser,
     RawPacket,
     Skip,
-    _checksum_ok,
-    _speedups,
+)
+from ..codec.framing import (
+    checksum_ok as _checksum_ok,
+)
+from ..codec.framing import (
+    speedups as _speedups,
 )
 from ..codec.layout import Field
 from ..codec.packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet

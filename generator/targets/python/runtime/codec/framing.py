@@ -45,6 +45,7 @@ if os.environ.get(PACKAGE.upper() + "_PURE", "") in ("", "0"):
     except ImportError:
         _speedups = None
 ACCELERATED = _speedups is not None
+speedups = _speedups  # the accelerator module or None, for the modules that call it (packets, session)
 # Type checkers see the pure-Python classes (the C base holds the same attributes).
 _EVENT_SLOTS: Tuple[str, ...] = ("offset", "data")
 if _speedups is not None and not TYPE_CHECKING:
@@ -201,7 +202,7 @@ class Skip(_EventBase):
 Event = Union[RawPacket, Skip]
 
 
-def _checksum_ok(buf: bytearray, i: int, body: int) -> bool:
+def checksum_ok(buf: bytearray, i: int, body: int) -> bool:
     return checksum_bytes(memoryview(buf)[i : i + body]) == buf[i + body : i + body + CHECKSUM_SIZE]
 
 
@@ -272,7 +273,7 @@ class Parser:
                 body = HEADER_SIZE + length
                 total = body + CHECKSUM_SIZE
                 if n - i >= total:
-                    if _checksum_ok(buf, i, body):
+                    if checksum_ok(buf, i, body):
                         if self._skip:
                             events.append(Skip(self._skip_at, bytes(self._skip)))
                             self._skip = bytearray()

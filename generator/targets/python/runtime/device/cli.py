@@ -366,7 +366,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
         if fn is None:
             raise Usage(f"unknown function (one of: {', '.join(_meta.FUNCTION_NAMES.values())})")
         values["function"] = fn
-    enums = st._enums(cls)
+    enums = st.enum_types(cls)
     for arg in rest:
         name, eq, text = arg.partition("=")
         if not eq or name not in cls._ATTRS:
@@ -376,7 +376,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
         v = _parse_value(text)
         if name in enums:
             try:
-                v = st._enum_value(enums[name], v)
+                v = st.enum_value(enums[name], v)
             except ValueError as e:
                 raise Usage(f"{cls.NAME}.{name}: {e}") from None
         values[name] = v
@@ -559,7 +559,7 @@ def cmd_diff(conn: Connection, args: argparse.Namespace) -> int:
         for attr, v in c.file.items():
             before = None if c.device is None else c.device.get(attr)
             if before != v:
-                _say(f"{what}.{attr}: device {st._flow(before)}, file {st._flow(v)}")
+                _say(f"{what}.{attr}: device {st.flow_text(before)}, file {st.flow_text(v)}")
     return 1 if changes else 0
 
 

@@ -42,6 +42,7 @@ SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
 ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes for object storage)
 COMPRESSION = "zstd"
+META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
 FILES_TABLE = "_files"
 DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # the partition value of null (Hive, Spark)
 UNKNOWN = "unknown"  # model / serial of a log that names neither, without --model / --serial
@@ -361,16 +362,16 @@ def samples_name(set_id: int) -> str:
 
 
 def file_metadata(identity: Identity, log: str, split_start: int) -> Dict[bytes, bytes]:
-    """The Parquet file (schema) metadata of a part."""
+    """The Parquet file (schema) metadata of a part (keys in the package's namespace, `<package>.model`)."""
     return {
-        b"mipcodec.spec_version": _spec_version().encode(),
-        b"mipcodec.spec_hash": _spec_hash().encode(),
-        b"mipcodec.package": PROG.encode(),
-        b"mipcodec.model": identity.model.encode(),
-        b"mipcodec.serial": identity.serial.encode(),
-        b"mipcodec.firmware": (identity.firmware or "").encode(),
-        b"mipcodec.log": log.encode(),
-        b"mipcodec.split": split_name(split_start).encode(),
+        META + b"spec_version": _spec_version().encode(),
+        META + b"spec_hash": _spec_hash().encode(),
+        META + b"package": PROG.encode(),
+        META + b"model": identity.model.encode(),
+        META + b"serial": identity.serial.encode(),
+        META + b"firmware": (identity.firmware or "").encode(),
+        META + b"log": log.encode(),
+        META + b"split": split_name(split_start).encode(),
     }
 
 
@@ -861,7 +862,7 @@ def write_files_row(out_dir: str, row: Dict[str, Any]) -> str:
     arrays = [pa.array([row[f.name]], type=f.type) for f in schema]
     table = pa.Table.from_arrays(arrays, schema=schema)
     table = table.replace_schema_metadata(
-        {b"mipcodec.spec_version": _spec_version().encode(), b"mipcodec.spec_hash": _spec_hash().encode()}
+        {META + b"spec_version": _spec_version().encode(), META + b"spec_hash": _spec_hash().encode()}
     )
     rel = os.path.join(FILES_TABLE, f"part-{row['log']}.parquet")
     _write_atomic(pa, os.path.join(out_dir, rel), table)
