@@ -19,7 +19,6 @@ import io
 import json
 import re
 import tokenize
-from pathlib import Path
 
 from generator.render import ROOT, runtime_dir
 from generator.targets.python.backend import RUNTIME_FILES, RUNTIME_ROOMS, runtime_files
