@@ -22,7 +22,7 @@ static const unsigned char SYNC[SYNC_LEN] = {
 #define BIG_ENDIAN_WIRE 1
 
 /* Length byte - data length of a field (framing.field_length_adjust). */
-static int field_length_adjust(int set_id, int descriptor) {
+static inline int field_length_adjust(int set_id, int descriptor) {
     (void)set_id;
     (void)descriptor;
     return FIELD_LENGTH_ADJUST;
