@@ -1,4 +1,4 @@
-/* Constants of the Memsense MS-CIP for the C accelerator (_speedups.c), generated from the IR:
+/* Constants of the Memsense MS-CIP for the C accelerator (codec/_speedups*.c), generated from the IR:
  * the same facts as _protocol.py, the only protocol input of the runtime. */
 #ifndef MSCIPCODEC_PROTOCOL_H
 #define MSCIPCODEC_PROTOCOL_H

@@ -1,5 +1,5 @@
-/* Constants of the Demo protocol with every spec feature for the C accelerator (_speedups.c), generated from
- * the IR: the same facts as _protocol.py, the only protocol input of the runtime. */
+/* Constants of the Demo protocol with every spec feature for the C accelerator (codec/_speedups*.c),
+ * generated from the IR: the same facts as _protocol.py, the only protocol input of the runtime. */
 #ifndef DEMOCODEC_PROTOCOL_H
 #define DEMOCODEC_PROTOCOL_H
 
