@@ -164,10 +164,9 @@ PRIMITIVES: dict[str, Primitive] = {
 }
 
 # The runtime's public names that a package's __init__ re-exports, by runtime module, in the order
-# it imports them (templates/python/package/__init__.py.j2).
+# it imports them (templates/python/package/__init__.py.j2), sorted as the import sorter wants them.
 EXPORTS = {
     "codec.canonical": ["NaN"],
-    "codec.layout": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
     "codec.framing": [
         "ACCELERATED",
         "FramingError",
@@ -181,6 +180,7 @@ EXPORTS = {
         "iter_fields",
         "parse",
     ],
+    "codec.layout": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
     "codec.packets": [
         "Columns",
         "DecodedField",
@@ -197,8 +197,8 @@ EXPORTS = {
         "encode_line",
         "encode_lines",
     ],
-    "registry": ["DEVICES", "lookup"],
     "codec.samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
+    "registry": ["DEVICES", "lookup"],
     "session": ["Device", "Result", "Session", "connect"],
 }
 
