@@ -70,7 +70,7 @@ def package_dir() -> Path:
     accelerator (built by `tests/lang/python.sh ext`, again only when its sources changed). A
     build that fails raises: the figures of the pure-Python decoder are not the export's."""
     subprocess.run([str(ROOT / "tests" / "lang" / "python.sh"), "ext"], check=True, capture_output=True, text=True)
-    if not list((ACCEL_DIR / "mipcodec").glob("_speedups*.so")):
+    if not list((ACCEL_DIR / "mipcodec").glob("codec/_speedups*.so")):
         raise RuntimeError(f"no C accelerator in {ACCEL_DIR} after tests/lang/python.sh ext")
     return ACCEL_DIR
 

@@ -112,7 +112,7 @@ class Recorder:
     def commands(self) -> list[tuple[str, int | None]]:
         """(command name, function value or None) of every command received so far."""
         out = []
-        decoder = mip.packets.Decoder(self.device)
+        decoder = mip.codec.packets.Decoder(self.device)
         for event in decoder.feed(bytes(self.sent)) + decoder.flush():
             for f in getattr(event, "fields", []):
                 value = getattr(f, "value", None)
@@ -447,7 +447,7 @@ def test_budget_matches_the_manuals_worked_example() -> None:
     # (a 14-byte field) and an internal timestamp (6 bytes), both at 100 Hz: 26000 baud. Neither
     # model's sensor set has a 4-byte timestamp field, so the 6-byte field here is the scaled
     # pressure (0x80,0x17: one f32, 4 + 2 bytes), the same size.
-    budget = importlib.import_module("mipcodec.budget")
+    budget = importlib.import_module("mipcodec.device.budget")
     for model, base, decimation in (("gx5_45", 500.0, 5), ("cv7_ins", 1000.0, 10)):
         s = budget.stream(model, 0x80, [(0x04, decimation), (0x17, decimation)], base)
         assert s.fields == ((0x04, 14, 100.0), (0x17, 6, 100.0)), model
@@ -457,7 +457,7 @@ def test_budget_matches_the_manuals_worked_example() -> None:
 
 def test_the_console_script_is_declared() -> None:
     text = (PACKAGE_DIR / "pyproject.toml").read_text()
-    assert 'mipcodec-device = "mipcodec.device_cli:main"' in text
+    assert 'mipcodec-device = "mipcodec.device.cli:main"' in text
     assert '"settings.schema.json"' in text
 
 

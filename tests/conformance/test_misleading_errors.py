@@ -35,7 +35,7 @@ TCP_LOOKING = ["127.0.0.1:5000", "localhost:5000", "[::1]:5000"]
 def _modules(package: str = "mipcodec"):
     python_package(package)
     session = importlib.import_module(f"{package}.session")
-    transport = importlib.import_module(f"{package}.transport")
+    transport = importlib.import_module(f"{package}.session.transport")
     return session, transport
 
 
@@ -185,7 +185,7 @@ class HostileDevice:
     HOSTILE_NAME as the model name and NACKs every other command with code 1 (unknown command)."""
 
     def __init__(self) -> None:
-        framing = importlib.import_module("mipcodec.framing")
+        framing = importlib.import_module("mipcodec.codec.framing")
         self.builder = framing.PacketBuilder
         self.srv = socket.socket()
         self.srv.bind(("127.0.0.1", 0))

@@ -321,7 +321,7 @@ def pump_for(dev, seconds: float) -> None:
 
 def open_device(pkg, address: str, device: str):
     session = importlib.import_module(pkg.__name__ + ".session")
-    transport = importlib.import_module(pkg.__name__ + ".transport")
+    transport = importlib.import_module(pkg.__name__ + ".session.transport")
     return session.Device(transport.open_transport(address), device=device, timeout_ms=500)
 
 

@@ -21,9 +21,9 @@ from tests.helpers.generated import python_package
 pkg = python_package("mipcodec")
 sim_mod = importlib.import_module("mipcodec.sim")
 session = importlib.import_module("mipcodec.session")
-transport = importlib.import_module("mipcodec.transport")
+transport = importlib.import_module("mipcodec.session.transport")
 capabilities = importlib.import_module("mipcodec.capabilities")
-framing = importlib.import_module("mipcodec.framing")
+framing = importlib.import_module("mipcodec.codec.framing")
 
 # GX5-45 base rates (3dm-gx5-45-dcp.txt lines 375, 387, 973): IMU and filter 500 Hz, GNSS 4 Hz.
 GX5_RATES = {0x80: 500, 0x81: 4, 0x82: 500}

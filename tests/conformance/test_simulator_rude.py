@@ -31,9 +31,9 @@ from tests.helpers.generated import python_package
 pkg = python_package("mipcodec")
 sim_mod = importlib.import_module("mipcodec.sim")
 session = importlib.import_module("mipcodec.session")
-transport = importlib.import_module("mipcodec.transport")
-framing = importlib.import_module("mipcodec.framing")
-packets = importlib.import_module("mipcodec.packets")
+transport = importlib.import_module("mipcodec.session.transport")
+framing = importlib.import_module("mipcodec.codec.framing")
+packets = importlib.import_module("mipcodec.codec.packets")
 types = importlib.import_module("mipcodec.types")
 
 # The simulator's stated bounds (docs/conformance.md section 9): a TCP host that reads nothing for
@@ -330,12 +330,12 @@ def test_a_host_connecting_to_a_streaming_device_gets_data_from_now() -> None:
 # ------------------------------------------------------------------------------ baud rates
 def _answer(sim, field, package: str = "mipcodec") -> int:
     """The ack code of the simulator's reply to one command."""
-    fr = importlib.import_module(f"{package}.framing")
+    fr = importlib.import_module(f"{package}.codec.framing")
     b = fr.PacketBuilder(field.SET)
     b.add(field)
     chunks = sim.feed(b.build(), 0.0)
     replies = [e.data for _, d in chunks for e in fr.Parser().feed(d) if isinstance(e, fr.RawPacket)]
-    packet = importlib.import_module(f"{package}.packets").decode_packet(replies[0], device=sim.device)
+    packet = importlib.import_module(f"{package}.codec.packets").decode_packet(replies[0], device=sim.device)
     code = importlib.import_module(f"{package}._session").ACK_CODE
     return int(getattr(packet.fields[0].value, code))
 

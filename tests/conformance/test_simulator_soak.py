@@ -26,7 +26,7 @@ from tests.conformance.test_simulator import Sim
 from tests.helpers.generated import python_package
 
 pkg = python_package("mipcodec")
-framing = importlib.import_module("mipcodec.framing")
+framing = importlib.import_module("mipcodec.codec.framing")
 types = importlib.import_module("mipcodec.types")
 
 SPEED = 1440  # 24 simulated hours in 60 s

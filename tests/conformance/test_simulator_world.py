@@ -34,7 +34,7 @@ from tests.helpers.generated import python_package
 
 pkg = python_package("mipcodec")
 sim_mod = importlib.import_module("mipcodec.sim")
-world_mod = importlib.import_module("mipcodec.sim_world")
+world_mod = importlib.import_module("mipcodec.sim.world")
 t = pkg.types
 SPEED = 10.0  # simulated seconds per real second: fast, with room for a busy machine
 
@@ -48,10 +48,10 @@ def sample(sim, set_id: int, descriptor: int, at: float):
 
 def command(sim, value, now: float):
     """Feeds one command at real time `now`; the (time, ack code, reply fields) answered."""
-    raw = pkg.framing.PacketBuilder(value.SET).add(value).build()
+    raw = pkg.codec.framing.PacketBuilder(value.SET).add(value).build()
     out = []
     for when, data in sim.feed(raw, now):
-        packet = pkg.packets.decode_packet(data)
+        packet = pkg.codec.packets.decode_packet(data)
         if packet.set == value.SET:
             fields = [f.value for f in packet.fields]
             out.append((when, int(getattr(fields[0], sim_mod._meta.ACK_CODE)), fields[1:]))
@@ -325,7 +325,7 @@ def test_baud_rate_change_over_the_pty() -> None:
     """With --baud, comm port speed is acknowledged at the old rate; then only a host at the new
     rate is understood (a host left at the old one times out)."""
     session = importlib.import_module("mipcodec.session")
-    transport = importlib.import_module("mipcodec.transport")
+    transport = importlib.import_module("mipcodec.session.transport")
     with Sim("mip", "cv7_ins", "pty", "--baud") as sim:
         dev = session.Device(transport.open_transport(sim.address, 115200), device="cv7_ins", timeout_ms=300)
         try:

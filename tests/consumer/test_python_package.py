@@ -163,7 +163,7 @@ def test_sdist_carries_the_whole_package(built: Built) -> None:
         names = {n[len(top) :] for n in tar.getnames() if n.startswith(top)}
     missing = [f for f in shipped_files(GENERATED / built.package) if f not in names]
     assert not missing, f"{built.sdist.name} lacks {missing}"
-    for needed in ("py.typed", "_protocol.h", "_speedups.c"):
+    for needed in ("py.typed", "codec/_protocol.h", "codec/_speedups.c"):
         assert f"{built.package}/{needed}" in names
     assert not [n for n in names if n.endswith((".so", ".pyc"))], f"build leftovers in {built.sdist.name}"
 
@@ -174,12 +174,12 @@ def test_wheels_carry_the_marker_and_the_accelerator_when_compiled(built: Built)
             names = z.namelist()
         assert f"{built.package}/py.typed" in names, wheel.name
         assert f"{built.package}/__init__.py" in names, wheel.name
-        so = [n for n in names if n.startswith(f"{built.package}/_speedups") and n.endswith(".so")]
+        so = [n for n in names if n.startswith(f"{built.package}/codec/_speedups") and n.endswith(".so")]
         assert bool(so) == compiled, f"{wheel.name}: accelerator {so}, expected compiled={compiled}"
         if (GENERATED / built.package / "LICENSE").is_file():
             assert any(n.endswith("/LICENSE") and ".dist-info/" in n for n in names), f"{wheel.name} lacks LICENSE"
     # The build log shows the compiler was tried and the optional extension skipped.
-    assert f'building extension "{built.package}._speedups" failed' in built.nocc_log, built.nocc_log
+    assert f'building extension "{built.package}.codec._speedups" failed' in built.nocc_log, built.nocc_log
 
 
 @pytest.mark.parametrize("mode", ["accelerated", "pure"])

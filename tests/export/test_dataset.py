@@ -39,7 +39,7 @@ PARTITIONING = pads.partitioning(
 
 def ds(package: str = "mipcodec"):
     pkg(package)
-    return importlib.import_module(f"{package}.dataset")
+    return importlib.import_module(f"{package}.logs.dataset")
 
 
 def capture_bytes() -> bytes:
@@ -58,7 +58,7 @@ def messy_log() -> bytes:
     good = bytes.fromhex("7565800e0e04") + struct.pack(">fff", 0.5, -0.25, 1.0)
     from tests.export.test_export import pkg as _pkg
 
-    framing = _pkg("mipcodec").framing
+    framing = _pkg("mipcodec").codec.framing
     packet = good + framing.checksum_bytes(good)
     bad = bytearray(packet)
     bad[-1] ^= 0xFF
@@ -132,13 +132,13 @@ def timed_log(n: int = 30) -> bytes:
     shared, sensor, filter_data = (
         importlib.import_module(f"mipcodec.{m}") for m in ("shared", "sensor", "filter_data")
     )
-    out = mod.framing.build_packet(
+    out = mod.codec.framing.build_packet(
         0x82,
         shared.ReferenceTimestamp(nanoseconds=DEV0),
         filter_data.GpsTimestamp(tow=TOW0, week_number=int(WEEK0), valid_flags=1),
     )
     for i in range(n):
-        out += mod.framing.build_packet(
+        out += mod.codec.framing.build_packet(
             0x80,
             shared.ReferenceTimestamp(nanoseconds=DEV0 + i * 100_000_000),
             sensor.ScaledAccel(scaled_accel=[0.0, 0.0, float(i)]),
@@ -191,8 +191,8 @@ def test_whole_log_counts_match_info(tmp_path):
     log.write_bytes(data)
     whole = dsm.decode_split(data, 0, 0, len(data), None, None, "L", len(data))
     mod = pkg()
-    summary = mod.tools.Summary()
-    for e in mod.tools.events(mod.tools.Source(str(log), progress=False), None):
+    summary = mod.logs.info.Summary()
+    for e in mod.logs.writers.events(mod.logs.writers.Source(str(log), progress=False), None):
         summary.add(e)
     assert whole.packets == sum(summary.packets.values())
     assert whole.skipped_bytes == summary.skipped
@@ -397,7 +397,7 @@ def test_identity_from_the_device_information_reply(tmp_path):
     base = importlib.import_module("mipcodec.base")
     types = importlib.import_module("mipcodec.types")
     info = types.DeviceInfo(firmware_version=1534, model_name=b"3DM-GX5-45      ", serial_number=b"6232-00122      ")
-    reply = mod.framing.build_packet(0x01, base.DeviceInfo(info=info))
+    reply = mod.codec.framing.build_packet(0x01, base.DeviceInfo(info=info))
     data = capture_bytes()[:5000] + reply + capture_bytes()[5000:9000]
     ident = dsm.log_identity(lambda o, n: data[o : o + n], len(data), "other", "x")
     assert ident == dsm.Identity("3dm-gx5-45", "6232-00122", "1534")
@@ -550,10 +550,10 @@ def test_continuation_packets_make_one_sample_row():
     shared, sensor = (importlib.import_module(f"mipcodec.{m}") for m in ("shared", "sensor"))
     ts = lambda ns: shared.ReferenceTimestamp(nanoseconds=ns)  # noqa: E731
     data = (
-        mod.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[1.0, 2.0, 3.0]))
-        + mod.framing.build_packet(0x80, ts(1000), sensor.ScaledGyro(scaled_gyro=[4.0, 5.0, 6.0]))
-        + mod.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[9.0, 9.0, 9.0]))
-        + mod.framing.build_packet(0x80, ts(2000), sensor.ScaledAccel(scaled_accel=[7.0, 8.0, 9.0]))
+        mod.codec.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[1.0, 2.0, 3.0]))
+        + mod.codec.framing.build_packet(0x80, ts(1000), sensor.ScaledGyro(scaled_gyro=[4.0, 5.0, 6.0]))
+        + mod.codec.framing.build_packet(0x80, ts(1000), sensor.ScaledAccel(scaled_accel=[9.0, 9.0, 9.0]))
+        + mod.codec.framing.build_packet(0x80, ts(2000), sensor.ScaledAccel(scaled_accel=[7.0, 8.0, 9.0]))
     )
     r = dsm.decode_split(data, 0, 0, len(data), None, None, "L", len(data))
     rows = r.tables["sensor.samples"].to_pylist()

@@ -35,7 +35,17 @@ PACKAGES = {p["name"]: p["package"] for p in IR["protocols"]}
 def pkg(name: str = "mipcodec"):
     """The generated package with the submodules these tests use imported."""
     mod = python_package(name)
-    for sub in ("cli", "tools", "_columns", "registry", "framing", "shared", "sensor"):
+    for sub in (
+        "cli",
+        "logs.commands",
+        "logs.info",
+        "logs.plot",
+        "_columns",
+        "registry",
+        "codec.framing",
+        "shared",
+        "sensor",
+    ):
         try:
             importlib.import_module(f"{name}.{sub}")
         except ModuleNotFoundError:
@@ -237,7 +247,7 @@ def test_device_capture_export_equals_canonical_decode(tmp_path, fmt):
 def test_join_one_row_per_sample(tmp_path):
     """--join: one table per set, a row per sample (continuation packets share a timestamp)."""
     mod = pkg("mipcodec")
-    b = mod.framing.PacketBuilder
+    b = mod.codec.framing.PacketBuilder
     ts = mod.shared.ReferenceTimestamp(nanoseconds=5_000_000_000).encode()
     accel = mod.sensor.ScaledAccel(scaled_accel=[1.0, 2.0, 3.0]).encode()
     gyro = mod.sensor.ScaledGyro(scaled_gyro=[0.5, 0.25, 0.125]).encode()
@@ -287,7 +297,7 @@ def test_follow_a_growing_file(tmp_path):
     mod = pkg("mipcodec")
     ts = lambda n: mod.shared.ReferenceTimestamp(nanoseconds=n).encode()  # noqa: E731
     accel = mod.sensor.ScaledAccel(scaled_accel=[1.0, 2.0, 3.0]).encode()
-    pkt = lambda n: mod.framing.PacketBuilder(0x80).add_field(0xD5, ts(n)).add_field(0x04, accel).build()  # noqa: E731
+    pkt = lambda n: mod.codec.framing.PacketBuilder(0x80).add_field(0xD5, ts(n)).add_field(0x04, accel).build()  # noqa: E731
     log = tmp_path / "grow.bin"
     log.write_bytes(pkt(1))
 
@@ -309,7 +319,7 @@ def test_follow_a_growing_file(tmp_path):
 
 def gap_stream(mod) -> tuple[bytes, dict]:
     """100 Hz accel samples, samples 20-22 and 50 missing, 5 garbage bytes, one bad checksum."""
-    b = mod.framing.PacketBuilder
+    b = mod.codec.framing.PacketBuilder
     accel = mod.sensor.ScaledAccel(scaled_accel=[0.0, 0.0, -1.0]).encode()
     out = bytearray()
     n = 0
@@ -354,7 +364,7 @@ def test_plot_writes_a_labelled_image(tmp_path):
     data, _ = gap_stream(mod)
     log = tmp_path / "gaps.bin"
     log.write_bytes(data)
-    fig = mod.tools.figure(str(log), ["scaled_accel"])
+    fig = mod.logs.plot.figure(str(log), ["scaled_accel"])
     ax = fig.axes[0]
     assert ax.get_xlabel() == "time [s]" and ax.get_ylabel() == "g"
     assert [line.get_label() for line in ax.lines] == ["scaled_accel.x", "scaled_accel.y", "scaled_accel.z"]
@@ -397,8 +407,8 @@ def test_missing_extra_is_named(monkeypatch):
 
     monkeypatch.setattr(builtins, "__import__", fake)
     monkeypatch.delitem(__import__("sys").modules, "pyarrow", raising=False)
-    with pytest.raises(mod.tools.ToolError, match=r"pip install 'mipcodec\[export\]'"):
-        mod.tools.need("pyarrow")
+    with pytest.raises(mod.logs.writers.ToolError, match=r"pip install 'mipcodec\[export\]'"):
+        mod.logs.writers.need("pyarrow")
 
 
 ARRAYS_CHECK = """

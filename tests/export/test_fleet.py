@@ -25,8 +25,8 @@ from tests.helpers.generated import GENERATED_PYTHON, python_package
 
 pkg = python_package("mipcodec")
 fleet = importlib.import_module("mipcodec.fleet")
-framing = importlib.import_module("mipcodec.framing")
-packets = importlib.import_module("mipcodec.packets")
+framing = importlib.import_module("mipcodec.codec.framing")
+packets = importlib.import_module("mipcodec.codec.packets")
 
 LEAP = 18
 GPS_EPOCH = datetime.datetime(1980, 1, 6)
@@ -176,7 +176,7 @@ def test_start_utc(capsys) -> None:
     """The simulator's --start-utc: GPS week 2400 starts on Sunday 2026-01-04 (1980-01-06 + 16,800
     days), so 345,600 s into it is 2026-01-08 00:00:00 GPS time, 2026-01-07 23:59:42 UTC (18 leap
     seconds): the world's default start. A time near a week's end rolls the week over."""
-    world = importlib.import_module("mipcodec.sim_world")
+    world = importlib.import_module("mipcodec.sim.world")
     sim = importlib.import_module("mipcodec.sim")
     assert world.gps_start_of_utc("2026-01-07T23:59:42Z") == (world.GPS_WEEK, world.GPS_TOW0) == (2400, 345600.0)
     assert world.gps_start_of_utc("2026-01-10T23:59:42") == (2401, 0.0)

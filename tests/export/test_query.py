@@ -24,7 +24,7 @@ pytest.importorskip("duckdb")
 pkg = python_package("mipcodec")
 
 import mipcodec.cli  # noqa: E402
-import mipcodec.query as query  # noqa: E402
+import mipcodec.logs.query as query  # noqa: E402
 
 
 def _part(root: Path, table: str, parts: str, name: str, columns: dict) -> None:

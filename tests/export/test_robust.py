@@ -48,7 +48,7 @@ def accel_stream(n: int, start_ns: int = 1_000_000_000, step_ns: int = 8_000_000
     ts = mod.shared.ReferenceTimestamp(nanoseconds=0).encode()
     accel = mod.sensor.ScaledAccel(scaled_accel=[0.25, -0.5, -1.0]).encode()
     template = np.frombuffer(
-        mod.framing.PacketBuilder(0x80).add_field(0xD5, ts).add_field(0x04, accel).build(), np.uint8
+        mod.codec.framing.PacketBuilder(0x80).add_field(0xD5, ts).add_field(0x04, accel).build(), np.uint8
     )
     # the timestamp's 8 data bytes follow the header (4 bytes) and the field header (2 bytes)
     assert bytes(template[4:6]) == bytes([2 + 8, 0xD5])
@@ -59,7 +59,7 @@ def accel_stream(n: int, start_ns: int = 1_000_000_000, step_ns: int = 8_000_000
     rows[:, -2] = prefix[:, -1] % 256  # sum1
     rows[:, -1] = prefix.sum(axis=1) % 256  # sum2 (the sum of the running sum1 values)
     data = rows.tobytes()
-    assert mod.framing.parse(data[: len(template)])[0].data == data[: len(template)]  # a valid packet
+    assert mod.codec.framing.parse(data[: len(template)])[0].data == data[: len(template)]  # a valid packet
     return data
 
 
@@ -180,7 +180,7 @@ def test_no_space_left_mid_table_in_process(tmp_path, monkeypatch, capsys):
     mod = pkg("mipcodec")
     log = tmp_path / "log.bin"
     log.write_bytes(accel_stream(10000))
-    real = mod.tools.CsvWriter.write
+    real = mod.logs.writers.CsvWriter.write
     calls = []
 
     def write(self, rows):
@@ -189,7 +189,7 @@ def test_no_space_left_mid_table_in_process(tmp_path, monkeypatch, capsys):
         self.file.flush()
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
-    monkeypatch.setattr(mod.tools.CsvWriter, "write", write)
+    monkeypatch.setattr(mod.logs.writers.CsvWriter, "write", write)
     monkeypatch.setenv("MIPCODEC_EXPORT_SLOW", "1")
     assert mod.cli.main(["export", str(log), "--out", str(tmp_path / "o")]) == 2
     assert calls
@@ -381,7 +381,7 @@ def test_memory_does_not_grow_with_the_entries(tmp_path, command):
 def test_info_histogram_keeps_the_rate_gaps_and_drops():
     """The bounded interval histogram of `info`: exact while few distinct intervals; past
     MAX_BINS, the median within the bin width and the gaps (far from 1.5 times it) counted."""
-    tools = pkg("mipcodec").tools
+    tools = pkg("mipcodec").logs.info
     rng = random.Random(7)
     exact = tools.Intervals()
     for dt in [0.01] * 90 + [0.03] * 3 + [0.02] * 2:
@@ -414,7 +414,8 @@ def test_idle_must_be_finite_seconds(tmp_path, value):
 def test_f32_text_is_the_shortest_float32_digits_in_repr_layout():
     """Golden texts by the rule (fewest digits reading back as the float32, laid out as
     repr(float): positional from 1e-4 to below 1e16, else d.ddde-XX), then random values."""
-    tools = pkg("mipcodec").tools
+    tools = pkg("mipcodec").logs.writers
+    arrow = pkg("mipcodec").logs.arrow
 
     def f32(x: float) -> float:
         return struct.unpack("<f", struct.pack("<f", x))[0]
@@ -426,7 +427,7 @@ def test_f32_text_is_the_shortest_float32_digits_in_repr_layout():
     assert tools.f32_text(f32(111460500000.0)) == "111460500000.0"  # not 1.114605e+11
     assert tools.f32_text(f32(1e16)) == "1e+16"
     assert tools.f32_text(-0.0) == "-0.0"
-    np_texts = tools._f32_texts(np, np.zeros(0, dtype=np.float32))
+    np_texts = arrow.f32_texts(np, np.zeros(0, dtype=np.float32))
     assert list(np_texts) == []
     rng = random.Random(39)
     values = []
@@ -437,7 +438,7 @@ def test_f32_text_is_the_shortest_float32_digits_in_repr_layout():
     for _ in range(20000):  # where pyarrow's text is used (sensor values), integral ones too
         v = f32(rng.gauss(0, 1) * 10 ** rng.uniform(-5, 16))
         values += [v, f32(float(round(v)))]
-    texts = tools._f32_texts(np, np.array(values, dtype=np.float32)).tolist()
+    texts = arrow.f32_texts(np, np.array(values, dtype=np.float32)).tolist()
     for v, fast in zip(values, texts):
         text = tools.f32_text(v)
         assert text == fast, (v, text, fast)

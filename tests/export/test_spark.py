@@ -33,7 +33,7 @@ SPLIT = 50_000  # bytes per split: a packet is at most 261 bytes, so boundaries 
 
 def mip():
     mod = python_package("mipcodec")
-    for sub in ("dataset", "spark", "fleet", "packets", "_protocol"):
+    for sub in ("logs.dataset", "spark", "fleet", "codec.packets", "_protocol"):
         __import__(f"mipcodec.{sub}")
     return mod
 
@@ -87,7 +87,7 @@ def datasets(tmp_path_factory, logs, spark):
     out = tmp_path_factory.mktemp("out")
     spark_dir, local_dir = out / "spark", out / "local"
     summary = m.spark.export_dataset(spark, logs, str(spark_dir), split_bytes=SPLIT)
-    m.dataset.export_dataset(logs, str(local_dir), split_bytes=SPLIT)
+    m.logs.dataset.export_dataset(logs, str(local_dir), split_bytes=SPLIT)
     return spark_dir, local_dir, summary
 
 
@@ -168,7 +168,7 @@ def test_files_table(datasets, logs):
         if not os.path.exists(path):
             continue
         data = Path(path).read_bytes()
-        packets = [e for e in m.packets.decode_all(data) if isinstance(e, m.packets.Packet)]
+        packets = [e for e in m.codec.packets.decode_all(data) if isinstance(e, m.codec.packets.Packet)]
         assert by_name[os.path.basename(path)][2] == len(packets), path
         proto = m._protocol
         for p in packets:
@@ -226,7 +226,7 @@ def test_cli_replaces_a_logs_parts(tmp_path, logs):
     m = mip()
     out = tmp_path / "ds"
     path = logs[0]  # the fleet's first GX5-45
-    log = m.dataset.log_id(path)
+    log = m.logs.dataset.log_id(path)
     stale = out / "sensor.scaled_accel" / "model=x" / "serial=y" / "date=z" / f"part-{log}-ffffffffffff.parquet"
     stale.parent.mkdir(parents=True)
     stale.write_bytes(b"old")

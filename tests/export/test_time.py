@@ -24,8 +24,17 @@ NS = 10**9
 def _pkg():
     python_package("mipcodec")
     mods = {}
-    for sub in ("timebase", "shared", "sensor", "filter_data", "gnss_receiver_1", "types", "framing", "packets"):
-        mods[sub] = importlib.import_module(f"mipcodec.{sub}")
+    for sub in (
+        "logs.timebase",
+        "shared",
+        "sensor",
+        "filter_data",
+        "gnss_receiver_1",
+        "types",
+        "codec.framing",
+        "codec.packets",
+    ):
+        mods[sub.split(".")[-1]] = importlib.import_module(f"mipcodec.{sub}")
     return mods
 
 
@@ -222,11 +231,11 @@ def test_other_gps_fields_and_preference():
 
 def test_mscip_inverted_flag():
     python_package("mscipcodec")
-    m_tb = importlib.import_module("mscipcodec.timebase")
+    m_tb = importlib.import_module("mscipcodec.logs.timebase")
     imu = importlib.import_module("mscipcodec.imu_data")
     mt = importlib.import_module("mscipcodec.types")
-    P = importlib.import_module("mscipcodec.packets")
-    F = importlib.import_module("mscipcodec.framing")
+    P = importlib.import_module("mscipcodec.codec.packets")
+    F = importlib.import_module("mscipcodec.codec.framing")
     # Table 72's example: week 1839, 207000.0 s (2015-04-07T09:30:00 GPS; GPS - UTC 16 s then).
     ok = F.build_packet(0xA2, imu.GpsCorrelatedTime(207000.0, 1839, mt.GpsTimeFlags(0)))
     unset = F.build_packet(0xA2, imu.GpsCorrelatedTime(5.0, 0, mt.GpsTimeFlags(4)))  # time_not_set
@@ -393,7 +402,7 @@ def test_info_reports_gaps_jumps_resets_and_invalid_stretches(tmp_path, capsys):
     import subprocess
     import sys
 
-    env = {"PYTHONPATH": str(Path(M["timebase"].__file__).parents[1])}
+    env = {"PYTHONPATH": str(Path(M["timebase"].__file__).parents[2])}
     out = subprocess.run(
         [sys.executable, "-m", "mipcodec", "info", "-"], input=data, capture_output=True, env=env, check=True
     )

@@ -97,7 +97,7 @@ def test_python_package_passes_its_tests_pure() -> None:
 
 
 def test_python_package_passes_its_tests_with_the_c_accelerator() -> None:
-    # the extension is built in place in a copy (an unchanged _speedups.c is not recompiled:
+    # the extension is built in place in a copy (unchanged codec/_speedups*.c are not recompiled:
     # its object file stays in build/golden/python/ext-tmp/), never in the golden tree
     out = copy_of("python")
     run(
@@ -105,7 +105,7 @@ def test_python_package_passes_its_tests_with_the_c_accelerator() -> None:
         cwd=out,
         env=dict(os.environ, PYTHONPYCACHEPREFIX=""),
     )
-    assert list((out / PACKAGE).glob("_speedups*.so")), "the C accelerator did not build"
+    assert list((out / PACKAGE).glob("codec/_speedups*.so")), "the C accelerator did not build"
     _pytest(out, DEMOCODEC_EXPECT_ACCELERATED="1")
 
 

@@ -22,7 +22,7 @@
 # The package for decode/encode/example is $PY_PACKAGE (default: mipcodec). Works from any directory.
 # decode/encode run the pure-Python code straight from generated/python/<package>; bytecode
 # is cached under build/python/pycache (PYTHONPYCACHEPREFIX), never inside generated/. The optional
-# C accelerator (<package>/_speedups.c) is built by the package's own setup.py (build_ext --inplace)
+# C accelerator (<package>/codec/_speedups*.c) is built by the package's own setup.py (build_ext --inplace)
 # in a copy under build/python/ext/, never in generated/ and without installing anything.
 set -euo pipefail
 
@@ -60,7 +60,7 @@ run_cli() {
     run_py -m "$PACKAGE" "$@"
 }
 
-# Copies package $1 to build/python/ext/$1 (timestamps kept, so an unchanged _speedups.c is not
+# Copies package $1 to build/python/ext/$1 (timestamps kept, so unchanged _speedups*.c are not
 # recompiled) and builds its C accelerator in place there; fails when it did not build.
 build_ext() {
     local pkg="$1" out="$ROOT/build/python/ext/$1"
@@ -70,12 +70,12 @@ build_ext() {
     (cd "$out" && PYTHONPYCACHEPREFIX= "$PY" setup.py -q build_ext --inplace \
         --build-temp "$ROOT/build/python/ext-tmp/$pkg" >"$out/build.log" 2>&1) || {
         cat "$out/build.log" >&2
-        echo "tests/lang/python.sh: building $pkg/_speedups.c failed" >&2
+        echo "tests/lang/python.sh: building $pkg/codec/_speedups*.c failed" >&2
         exit 1
     }
-    if ! ls "$out/$pkg"/_speedups*.so >/dev/null 2>&1; then
+    if ! ls "$out/$pkg"/codec/_speedups*.so >/dev/null 2>&1; then
         cat "$out/build.log" >&2
-        echo "tests/lang/python.sh: $pkg/_speedups.c did not build (a C compiler and the Python headers, e.g. Debian python3-dev, are needed)" >&2
+        echo "tests/lang/python.sh: $pkg/codec/_speedups*.c did not build (a C compiler and the Python headers, e.g. Debian python3-dev, are needed)" >&2
         exit 1
     fi
 }

@@ -45,6 +45,6 @@ def test_only_row_4_of_table_1_is_misprinted():
 
 
 def test_generated_checksum_gives_the_published_bytes():
-    framing = python_package("mscipcodec").framing
+    framing = python_package("mscipcodec").codec.framing
     packet = bytes(b for b, _, _ in TABLE_1)
     assert framing.checksum_bytes(packet) == bytes(PUBLISHED_CHECKSUM)

@@ -27,7 +27,7 @@ from generator.linkfacts import bandwidth_sources, link_facts
 from generator.naming import camel, upper
 from generator.primitives import PRIMITIVES
 from generator.release import Release, load_release
-from generator.render import copy_runtime, environment
+from generator.render import copy_runtime, environment, runtime_dir
 from generator.settings_rows import setting_rows, settings_schema
 from generator.targets.python import facts
 from generator.testcases import (
@@ -46,32 +46,35 @@ OUTPUT_DIRS = ["python"]
 
 # Names the package exports at top level (a set module must not shadow them).
 EXPORTED = {name for names in facts.EXPORTS.values() for name in names}
-# The runtime: plain files of generator/targets/python/runtime/, copied into every package.
-RUNTIME_FILES = [
-    "__main__.py",
-    "canonical.py",
-    "cli.py",
-    "codec.py",
-    "framing.py",
-    "packets.py",
-    "samples.py",
-    "session.py",
-    "session_tool.py",
-    "sim.py",
-    "sim_world.py",
-    "fleet.py",
-    "query.py",
-    "transport.py",
-    "tools.py",
-    "dataset.py",
-    "timebase.py",
-    "spark.py",
-    "budget.py",
-    "settings.py",
-    "device_cli.py",
-    "_speedups.c",
-    "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
-]
+# The runtime: the files of generator/targets/python/runtime/ and its rooms (codec/, session/,
+# device/, sim/, logs/; docs/design.md), copied folder by folder into every package, except the
+# runtime's own unit tests (tests/), the package tests' plain files (package_tests/) and the
+# modules of one protocol (protocols/<protocol name>/, copied only into that protocol's package).
+RUNTIME_EXCLUDED = ("tests", "package_tests", "protocols")
+
+
+def runtime_files(folder: str = "", excluded: tuple[str, ...] = RUNTIME_EXCLUDED) -> list[str]:
+    """The runtime's files under `folder` (a path under runtime/), as paths under runtime/, sorted;
+    the `excluded` folders of runtime/, hidden files and folders (tool caches) and Python's caches
+    left out."""
+    root = runtime_dir("python")
+    base = root / folder
+    if not base.is_dir():
+        return []
+    return [
+        p.relative_to(root).as_posix()
+        for p in sorted(base.rglob("*"))
+        if p.is_file()
+        and "__pycache__" not in p.parts
+        and not any(part.startswith(".") for part in p.relative_to(root).parts)  # caches, editor files
+        and p.suffix != ".pyc"
+        and p.relative_to(root).parts[0] not in excluded
+    ]
+
+
+RUNTIME_FILES = runtime_files()
+# The rooms: the runtime's folders with an __init__.py.
+RUNTIME_ROOMS = sorted({name.split("/")[0] for name in RUNTIME_FILES if name.endswith("/__init__.py")})
 # Plain files of runtime/package_tests/, copied into every package's tests/ directory; the test
 # files import the protocol's cases from generated modules beside them (tests/vector_cases.py,
 # tests/canonical_cases.py, tests/typed_cases.py).
@@ -83,7 +86,31 @@ PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
 # and the typed command API.
 SESSION_TEMPLATES = ["_session.py", "command_api.py"]
 # Modules of every package; a descriptor set whose name collides gets a "_set" suffix.
-RUNTIME_MODULES = {name.split(".")[0] for name in RUNTIME_FILES + PACKAGE_TEMPLATES if name.endswith((".py", ".c"))} | {
+# (the top modules and rooms of the runtime, and the module names of the flat runtime before its
+# rooms, so that no set module changes its name)
+RUNTIME_MODULES = {
+    name.split("/")[0].split(".")[0]
+    for name in RUNTIME_FILES + PACKAGE_TEMPLATES
+    if "/" in name or name.endswith(".py")
+} | {
+    "canonical",
+    "codec",
+    "framing",
+    "packets",
+    "samples",
+    "session_tool",
+    "sim_world",
+    "fleet",
+    "query",
+    "transport",
+    "tools",
+    "dataset",
+    "timebase",
+    "spark",
+    "budget",
+    "settings",
+    "device_cli",
+    "_speedups",
     "registry",
     "reserved",
     "types",
@@ -639,6 +666,8 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             # submodules the package's __getattr__ imports on first use: the sets, types, reserved
             # and the modules whose names it re-exports lazily (`pkg.session` keeps working)
             "lazy_modules": sorted([sm["module"] for sm in sets] + ["reserved", "types", *facts.LAZY_EXPORTS]),
+            # the package and its rooms (pyproject.toml's packages)
+            "python_packages": [pkg] + [f"{pkg}.{room}" for room in RUNTIME_ROOMS],
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
             **release.stamp(proto),
@@ -646,7 +675,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/LICENSE"] = release.license
         files.update(_runtime(proto, root))
         for name in PACKAGE_TEMPLATES:
-            files[f"{root}/{pkg}/{name}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
+            # (_protocol.h: beside the accelerator's C sources that #include it, in the codec room)
+            where = f"codec/{name}" if name.endswith(".h") else name
+            files[f"{root}/{pkg}/{where}"] = env.get_template(f"python/package/{name}.j2").render(**ctx)
         files[f"{root}/{pkg}/types.py"] = env.get_template("python/package/types.py.j2").render(
             **ctx, **m.types_module()
         )
@@ -760,10 +791,15 @@ def _runtime(proto: dict, dest: str) -> dict[str, str]:
         ("<protocol title>", proto["title"]),
     ]
     mapping = {name: f"{dest}/{proto['package']}/{name}" for name in RUNTIME_FILES}
+    # the modules of this protocol only (e.g. the MIP package's fleet simulation): at the package's top
+    own = f"protocols/{proto['name']}"
+    mapping.update(
+        {name: f"{dest}/{proto['package']}/{name[len(own) + 1 :]}" for name in runtime_files(own, excluded=())}
+    )
     mapping.update({f"package_tests/{name}": f"{dest}/tests/{name}" for name in PACKAGE_TEST_FILES})
     # grisu3.h, #included by _speedups.c: the C runtime's file (one source for the C JSON printer
     # and the accelerator's), copied verbatim.
-    grisu = copy_runtime("c", {"src/grisu3.h": f"{dest}/{proto['package']}/grisu3.h"})
+    grisu = copy_runtime("c", {"src/grisu3.h": f"{dest}/{proto['package']}/codec/grisu3.h"})
     return {**copy_runtime("python", mapping, placeholders), **grisu}
 
 

@@ -166,11 +166,10 @@ PRIMITIVES: dict[str, Primitive] = {
 }
 
 # The runtime's public names that a package's __init__ re-exports, by runtime module, in the order
-# it imports them (templates/python/package/__init__.py.j2).
+# it imports them (templates/python/package/__init__.py.j2), sorted as the import sorter wants them.
 EXPORTS = {
-    "canonical": ["NaN"],
-    "codec": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
-    "framing": [
+    "codec.canonical": ["NaN"],
+    "codec.framing": [
         "ACCELERATED",
         "FramingError",
         "PacketBuilder",
@@ -183,7 +182,8 @@ EXPORTS = {
         "iter_fields",
         "parse",
     ],
-    "packets": [
+    "codec.layout": ["DecodeError", "EncodeError", "Field", "Layout", "Struct"],
+    "codec.packets": [
         "Columns",
         "DecodedField",
         "Decoder",
@@ -199,8 +199,8 @@ EXPORTS = {
         "encode_line",
         "encode_lines",
     ],
+    "codec.samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
     "registry": ["DEVICES", "lookup"],
-    "samples": ["Sample", "SampleGrouper", "SampleTracker", "sample_key"],
     "session": ["Device", "Result", "Session", "connect"],
 }
 

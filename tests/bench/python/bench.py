@@ -262,7 +262,7 @@ def export_pass(mipcodec, path: Path, fmt: str, passes: int) -> tuple[float, int
     import io
     import tempfile
 
-    tools = importlib.import_module("mipcodec.tools")
+    tools = importlib.import_module("mipcodec.logs.commands")
     best = math.inf
     rows = 0
     for _ in range(passes):

@@ -46,7 +46,7 @@ def main(argv: list[str]) -> int:
             fail(f"{case['name']}: decode printed {lines}, expected {case['expect']}")
         decoder = pkg.Decoder(case["device"])
         events = [e for i in range(len(data)) for e in decoder.feed(data[i : i + 1])] + decoder.flush()
-        chunked = [pkg.packets.event_line(e) if isinstance(e, pkg.Skip) else e.line() for e in events]
+        chunked = [pkg.codec.packets.event_line(e) if isinstance(e, pkg.Skip) else e.line() for e in events]
         if chunked != lines:
             fail(f"{case['name']}: fed byte by byte, Decoder gave {chunked}, expected {lines}")
         encoded = pkg.encode_lines(case["expect"])

@@ -30,7 +30,7 @@ from mipcodec import (
     encode_line,
 )
 from mipcodec.base import Ping
-from mipcodec.framing import MAX_PACKET
+from mipcodec.codec.framing import MAX_PACKET
 from mipcodec.reserved import AckNack
 from mipcodec.sensor import ScaledAccel
 from mipcodec.types import AckCode, AidingLlhValidFlags

@@ -104,7 +104,7 @@ def _check_line(m: ModuleType, line: str, data: bytes) -> None:
 
 
 def _check_packet(m: ModuleType, packet: bytes, offset: int, device, tracker) -> str:
-    framing = m.framing
+    framing = m.codec.framing
     check(len(packet) >= framing.HEADER_SIZE + framing.CHECKSUM_SIZE, "short packet")
     set_id = packet[framing.SET_OFFSET]
     payload = packet[framing.HEADER_SIZE : -framing.CHECKSUM_SIZE]
@@ -150,7 +150,7 @@ def parser(package: str, data: bytes) -> None:
         if isinstance(ev, m.RawPacket):
             lines.append(_check_packet(m, bytes(ev.data), ev.offset, device, tracker))
         else:
-            line = m.packets.event_line(ev, device)
+            line = m.codec.packets.event_line(ev, device)
             _check_line(m, line, bytes(ev.data))
             lines.append(line)
     chunked = _events(m, stream, chunk_sizes(control))
@@ -168,14 +168,14 @@ def parser(package: str, data: bytes) -> None:
         pos += n
     check(list(m.decode_stream(pieces, device)) == lines, "decode_stream in chunks differs")
     if stream:
-        built = m.PacketBuilder(stream[0]).add_bytes(stream[1 : 1 + m.framing.MAX_PAYLOAD]).build()
+        built = m.PacketBuilder(stream[0]).add_bytes(stream[1 : 1 + m.codec.framing.MAX_PAYLOAD]).build()
         one = _events(m, built)
         check(len(one) == 1 and isinstance(one[0], m.RawPacket), "a built packet does not parse as one packet")
         _check_packet(m, built, 0, device, m.SampleTracker())
 
 
 def _decode_fields(m: ModuleType, packet: bytes, device) -> None:
-    framing = m.framing
+    framing = m.codec.framing
     set_id = packet[framing.SET_OFFSET]
     payload = packet[framing.HEADER_SIZE : -framing.CHECKSUM_SIZE]
     check(packet[framing.LENGTH_OFFSET] == len(payload), "payload length byte")
@@ -203,7 +203,7 @@ def decode(package: str, data: bytes) -> None:
         if isinstance(ev, m.RawPacket):
             _decode_fields(m, bytes(ev.data), device)
     if stream:
-        built = m.PacketBuilder(stream[0]).add_bytes(stream[1 : 1 + m.framing.MAX_PAYLOAD]).build()
+        built = m.PacketBuilder(stream[0]).add_bytes(stream[1 : 1 + m.codec.framing.MAX_PAYLOAD]).build()
         one = _events(m, built)
         check(len(one) == 1 and isinstance(one[0], m.RawPacket), "a built packet does not parse as one packet")
         _decode_fields(m, built, device)
@@ -222,7 +222,7 @@ def json(package: str, data: bytes) -> None:
         except m.EncodeError:
             continue
         for ev in _events(m, out):
-            again = m.packets.event_line(ev, None)
+            again = m.codec.packets.event_line(ev, None)
             try:
                 back = m.encode_line(again)
             except m.EncodeError as e:

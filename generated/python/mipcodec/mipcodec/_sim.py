@@ -851,7 +851,7 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.ExternalTimeDelta: (("dt_nanos", "ns", None),),
 }
 
-# The simulated world (sim_world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
+# The simulated world (sim/world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
 WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {
     sensor.ScaledAccel: (("scaled_accel", "specific_force"),),
     sensor.ScaledGyro: (("scaled_gyro", "angular_rate"),),

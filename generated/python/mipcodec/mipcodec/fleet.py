@@ -39,9 +39,9 @@ from fractions import Fraction
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _sim, registry
-from .framing import PacketBuilder
+from .codec.framing import PacketBuilder
 from .sim import Simulator, parse_identity
-from .sim_world import GNSS_FIX_AFTER, NavFilter, gps_start_of_utc
+from .sim.world import GNSS_FIX_AFTER, NavFilter, gps_start_of_utc
 
 MODELS = ("gx5_45", "cv7_ins")
 # Per model: data set -> (output rate in Hz, descriptors streamed). Rates divide the base rates

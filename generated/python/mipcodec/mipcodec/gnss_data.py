@@ -9,8 +9,8 @@ from __future__ import annotations
 import dataclasses as _dc
 import typing as _ty
 
-from . import codec as _c
 from . import types as _t
+from .codec import layout as _c
 
 
 @_c.slotted

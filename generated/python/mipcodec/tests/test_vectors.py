@@ -5,7 +5,7 @@ Plain source, the same in every package (generator/targets/python/runtime/packag
 import pytest
 from vector_cases import CASES, package
 
-packets = package.packets
+packets = package.codec.packets
 Decoder, Packet, Parser, RawPacket, Skip, Trailing = (
     package.Decoder,
     package.Packet,

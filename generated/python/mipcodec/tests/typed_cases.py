@@ -22,7 +22,8 @@ from mipcodec import (
     threedm,
     types,
 )
-from mipcodec import canonical, framing, packets, registry
+from mipcodec import registry
+from mipcodec.codec import canonical, framing, packets
 
 __all__ = ["BITFIELD_MEMBERS", "SAMPLES", "canonical", "framing", "packets", "registry"]
 

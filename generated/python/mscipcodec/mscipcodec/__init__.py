@@ -18,9 +18,8 @@ IR: two packages with the same hash were generated from the same spec.
 import importlib
 from typing import TYPE_CHECKING, Any, List
 
-from .canonical import NaN
-from .codec import DecodeError, EncodeError, Field, Layout, Struct
-from .framing import (
+from .codec.canonical import NaN
+from .codec.framing import (
     ACCELERATED,
     FramingError,
     PacketBuilder,
@@ -33,7 +32,8 @@ from .framing import (
     iter_fields,
     parse,
 )
-from .packets import (
+from .codec.layout import DecodeError, EncodeError, Field, Layout, Struct
+from .codec.packets import (
     Columns,
     DecodedField,
     Decoder,
@@ -49,8 +49,8 @@ from .packets import (
     encode_line,
     encode_lines,
 )
+from .codec.samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .registry import DEVICES, lookup
-from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 if TYPE_CHECKING:
     from . import base, imu_config, imu_data, reserved, types
@@ -105,11 +105,6 @@ __all__ = [
     "reserved",
     "types",
     "NaN",
-    "DecodeError",
-    "EncodeError",
-    "Field",
-    "Layout",
-    "Struct",
     "ACCELERATED",
     "FramingError",
     "PacketBuilder",
@@ -121,6 +116,11 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "DecodeError",
+    "EncodeError",
+    "Field",
+    "Layout",
+    "Struct",
     "Columns",
     "DecodedField",
     "Decoder",
@@ -135,12 +135,12 @@ __all__ = [
     "decode_stream",
     "encode_line",
     "encode_lines",
-    "DEVICES",
-    "lookup",
     "Sample",
     "SampleGrouper",
     "SampleTracker",
     "sample_key",
+    "DEVICES",
+    "lookup",
     "Device",
     "Result",
     "Session",

@@ -26,10 +26,10 @@ from typing import BinaryIO, Iterable, List, Optional, Tuple, Union
 
 from . import registry
 from ._protocol import PACKAGE as PROG
-from .codec import EncodeError
-from .framing import Parser, RawPacket, Skip
-from .packets import LineDecoder, encode_line, event_line
-from .samples import SampleTracker
+from .codec.framing import Parser, RawPacket, Skip
+from .codec.layout import EncodeError
+from .codec.packets import LineDecoder, encode_line, event_line
+from .codec.samples import SampleTracker
 
 USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
 CHUNK = 1 << 16
@@ -264,11 +264,11 @@ def main(argv: Optional[List[str]] = None) -> int:
             print(f"python -m {PROG} device ADDRESS SUBCOMMAND (--help): look at, stream from and configure a device")
             return 0
         if command == "device":
-            from .device_cli import main as device_main  # the device command line (docs/configure-a-device.md)
+            from .device.cli import main as device_main  # the device command line (docs/configure-a-device.md)
 
             return device_main(rest)
         if command in ("export", "info", "plot", "query"):
-            from .tools import main as tools_main  # the user commands (optional libraries, see tools)
+            from .logs.commands import main as tools_main  # the user commands (optional libraries, see logs)
 
             return tools_main(args)
         if command == "decode":

@@ -1,6 +1,6 @@
 """The typed command API of the Memsense MS-CIP, generated per command and function.
 
-A `Device` (session.py) has one attribute per command set and, in it, one object per command
+A `Device` (session/) has one attribute per command set and, in it, one object per command
 with one method per function it supports (or a plain call):
 
     device = connect("tcp:192.168.1.10:5000", device="ms_imu3020")

@@ -19,10 +19,10 @@ import sys
 from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 from . import _link, registry
-from .framing import Skip
-from .packets import Packet
+from .codec.framing import Skip
+from .codec.packets import Packet
 from .session import DEFAULT_TIMEOUT_MS, Device, LinkError, Result, SessionError, command_from_line
-from .transport import TransportError, open_transport
+from .session.transport import TransportError, open_transport
 
 PROG = f"{__package__}.session_tool"
 USAGE = "usage: session --connect ADDRESS [--timeout-ms N] [--device ID] [--baud N] [--auto-baud] [--reconnect-ms N]"

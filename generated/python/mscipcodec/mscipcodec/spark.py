@@ -7,8 +7,8 @@ The same dataset as `python -m mscipcodec export --dataset DIR LOGS...` (docs/da
 same file names and rows, written by the same functions of `mscipcodec.dataset`: this module is a
 second driver of them, not a second decoder. From a Spark application of your own:
 
-    from mscipcodec import spark as mip_spark
-    summary = mip_spark.export_dataset(spark_session, ["/data/logs/"], "/data/dataset")
+    from mscipcodec import spark as spark_job
+    summary = spark_job.export_dataset(spark_session, ["/data/logs/"], "/data/dataset")
 
 The job, in two Spark stages after a listing:
 
@@ -52,9 +52,10 @@ import sys
 from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tuple
 from urllib.parse import unquote, urlparse
 
-from . import dataset, timebase
 from ._protocol import PACKAGE as PROG
-from .tools import ToolError, _positive  # _positive: the option type of export --split-bytes
+from .logs import dataset, timebase
+from .logs.commands import positive  # the option type of export --split-bytes
+from .logs.writers import ToolError, need
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"
@@ -138,7 +139,7 @@ def open_log(uri: str) -> Tuple[ReadAt, int]:
     local = _local_path(uri)
     if local is not None:
         return dataset.file_reader(local)
-    fs_mod = dataset._need("pyarrow.fs")
+    fs_mod = need("pyarrow.fs")
     parsed = urlparse(uri)
     if parsed.scheme in ("s3a", "s3n"):
         uri = "s3" + uri[len(parsed.scheme) :]
@@ -423,7 +424,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("logs", nargs="+", metavar="LOG", help="log files, directories or globs (any path Spark lists)")
     p.add_argument("--out", required=True, metavar="DIR", help="the dataset directory (seen by every executor)")
     p.add_argument("--master", default=DEFAULT_MASTER, metavar="URL", help=f"Spark master (default {DEFAULT_MASTER})")
-    p.add_argument("--split-bytes", type=_positive, metavar="N", help="bytes of log per task (default 64 MiB)")
+    p.add_argument("--split-bytes", type=positive, metavar="N", help="bytes of log per task (default 64 MiB)")
     p.add_argument("--model", metavar="NAME", help="the model of logs without a device information reply")
     p.add_argument("--serial", metavar="SN", help="the serial of logs without a device information reply")
     p.add_argument("--conf", action="append", default=[], metavar="KEY=VALUE", help="a Spark setting (repeatable)")
@@ -442,8 +443,8 @@ def main(argv: Optional[List[str]] = None) -> int:
         if "-" in args.logs:
             raise ToolError("reads log files only (not - for stdin)")
         need_pyspark()
-        dataset._need("pyarrow")
-        dataset._need("numpy")
+        need("pyarrow")
+        need("numpy")
         try:
             os.makedirs(args.out, exist_ok=True)
         except OSError as e:

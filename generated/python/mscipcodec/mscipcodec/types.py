@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses as _dc
 
-from . import codec as _c
+from .codec import layout as _c
 
 
 class AccelRange(_c.Enum):

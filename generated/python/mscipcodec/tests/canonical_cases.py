@@ -4,7 +4,7 @@ tests/test_canonical.py."""
 
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
-from mscipcodec import canonical
+from mscipcodec.codec import canonical
 
 __all__ = ["ALL_BYTES", "DOUBLES", "FLOATS", "canonical"]
 

@@ -5,8 +5,9 @@ import os
 import random
 
 import mscipcodec
-from mscipcodec import codec, decode_columns, packets, registry
-from mscipcodec.framing import PacketBuilder
+from mscipcodec import decode_columns, registry
+from mscipcodec.codec import layout, packets
+from mscipcodec.codec.framing import PacketBuilder
 
 
 def test_accelerator_is_what_the_environment_asks_for():
@@ -26,7 +27,7 @@ def test_accelerated_decoder_matches_the_pure_decoder_on_every_fixed_layout():
     checked = 0
     for (set_id, descriptor), classes in registry.FIELDS.items():
         for cls in classes:
-            items = codec.fast_items(cls)
+            items = layout.fast_items(cls)
             if items is None:
                 continue
             size = sum(s * (1 if n < 0 else n) for _a, _k, s, n, _x in items)

@@ -4,7 +4,8 @@ member, checked by tests/test_typed.py."""
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
 from mscipcodec import base, imu_config, imu_data, reserved, types
-from mscipcodec import canonical, framing, packets, registry
+from mscipcodec import registry
+from mscipcodec.codec import canonical, framing, packets
 
 __all__ = ["BITFIELD_MEMBERS", "SAMPLES", "canonical", "framing", "packets", "registry"]
 

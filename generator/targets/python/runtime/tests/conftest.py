@@ -6,8 +6,8 @@ the runtime files of this folder's parent copied in, beside the modules the temp
 that package is put first on sys.path: the tests run against what the generator produces, not
 against hand-written stand-ins. TESTPROTO_FRAMING=b takes the spec's framing b instead of framing a:
 between them, each branch of the runtime's framing choices. Unless TESTPROTO_PURE=1 asks for the
-pure-Python code, the C accelerator is compiled there by the package's own setup.py (an unchanged
-_speedups.c is not recompiled); it must build. tests/lang/python.sh test runs these tests with both
+pure-Python code, the C accelerator is compiled there by the package's own setup.py (unchanged
+_speedups*.c are not recompiled); it must build. tests/lang/python.sh test runs these tests with both
 framings, pure and accelerated.
 """
 
@@ -42,9 +42,9 @@ def _build_accelerator(out: Path) -> None:
     env = dict(os.environ, PYTHONPYCACHEPREFIX="")
     env.pop(PACKAGE.upper() + "_NO_EXTENSION", None)
     run = subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True)
-    if run.returncode != 0 or not list(pkg.glob("_speedups*.so")) + list(pkg.glob("_speedups*.pyd")):
+    if run.returncode != 0 or not list(pkg.glob("codec/_speedups*.so")) + list(pkg.glob("codec/_speedups*.pyd")):
         pytest.exit(
-            f"building the C accelerator (runtime/_speedups.c) failed (TESTPROTO_PURE=1 runs the pure-Python code):\n"
+            f"building the C accelerator (runtime/codec/_speedups*.c) failed (TESTPROTO_PURE=1 runs the pure-Python code):\n"
             f"{run.stdout}{run.stderr}",
             returncode=1,
         )

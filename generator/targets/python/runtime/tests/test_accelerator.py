@@ -11,10 +11,11 @@ import random
 import struct
 
 import testproto
-from testproto import codec as c
-from testproto import packets, registry, sensor
-from testproto.framing import SYNC, PacketBuilder, Parser, RawPacket, Skip, parse
-from testproto.packets import Packet, decode_all, decode_columns
+from testproto import registry, sensor
+from testproto.codec import layout as c
+from testproto.codec import packets
+from testproto.codec.framing import SYNC, PacketBuilder, Parser, RawPacket, Skip, parse
+from testproto.codec.packets import Packet, decode_all, decode_columns
 
 
 def test_accelerator_is_what_the_environment_asks_for():
@@ -237,7 +238,7 @@ def test_float_text_is_repr():
     # cannot tell): the text of every value it prints is repr's, and it gives up rarely.
     if not testproto.ACCELERATED:
         return  # the pure run: no C printer to check (the accelerated run checks it)
-    from testproto import _speedups
+    from testproto.codec import _speedups
 
     cases = _float_cases()
     given_up = 0

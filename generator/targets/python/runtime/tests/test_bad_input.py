@@ -7,8 +7,8 @@ import array
 
 import pytest
 from testproto import control, registry, reserved, sensor, shared
-from testproto.framing import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, SYNC, FramingError, PacketBuilder, parse
-from testproto.packets import Decoder, decode_all, decode_field, decode_packet, event_line
+from testproto.codec.framing import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, SYNC, FramingError, PacketBuilder, parse
+from testproto.codec.packets import Decoder, decode_all, decode_field, decode_packet, event_line
 
 SET_ID = control.Ping.SET
 

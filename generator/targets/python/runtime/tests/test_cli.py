@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 import testproto
-from testproto.framing import PacketBuilder
+from testproto.codec.framing import PacketBuilder
 from testproto.registry import SET_KINDS
 
 # The directory holding the assembled package (conftest.py).

@@ -8,8 +8,8 @@ import typing
 from pathlib import Path
 
 import pytest
-from testproto import codec as c
-from testproto.canonical import NaN, f32_text, f64_text, float_from_json, string_text
+from testproto.codec import layout as c
+from testproto.codec.canonical import NaN, f32_text, f64_text, float_from_json, string_text
 
 ROOT = Path(__file__).resolve().parents[5]
 

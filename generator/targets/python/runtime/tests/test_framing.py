@@ -3,7 +3,7 @@
 import random
 
 import pytest
-from testproto.framing import (
+from testproto.codec.framing import (
     CHECKSUM_SIZE,
     FIELD_DESCRIPTOR_OFFSET,
     FIELD_HEADER_SIZE,

@@ -13,7 +13,7 @@ from typing import List, Optional, Tuple
 
 import pytest
 from testproto import _link, control
-from testproto.framing import PacketBuilder
+from testproto.codec.framing import PacketBuilder
 from testproto.session import (
     MAX_SETTINGS,
     Device,
@@ -21,8 +21,8 @@ from testproto.session import (
     LinkLost,
     baud_search_order,
 )
+from testproto.session.transport import TransportError
 from testproto.sim import Fault, Simulator
-from testproto.transport import TransportError
 
 
 class Clock:

@@ -1,6 +1,6 @@
 """samples.py: continuation packets grouped by their shared timestamp (docs/conformance.md section 6)."""
 
-from testproto.framing import (
+from testproto.codec.framing import (
     FIELD_DESCRIPTOR_OFFSET,
     FIELD_HEADER_SIZE,
     FIELD_LENGTH_ADJUST,
@@ -8,7 +8,7 @@ from testproto.framing import (
     PacketBuilder,
     RawPacket,
 )
-from testproto.samples import DATA_SETS, TIMESTAMPS, SampleGrouper, SampleTracker, sample_key
+from testproto.codec.samples import DATA_SETS, TIMESTAMPS, SampleGrouper, SampleTracker, sample_key
 
 
 def _stamped(stamp: int, *fields: tuple, key: bool = True) -> bytes:

@@ -10,8 +10,8 @@ import threading
 import pytest
 from testproto import control, reserved, sensor
 from testproto import types as t
-from testproto.framing import PacketBuilder, Skip
-from testproto.packets import Packet
+from testproto.codec.framing import PacketBuilder, Skip
+from testproto.codec.packets import Packet
 from testproto.session import (
     CommandRefused,
     CommandTimeout,
@@ -22,7 +22,7 @@ from testproto.session import (
     TimedParser,
     command_from_line,
 )
-from testproto.transport import TcpTransport, TransportError, open_transport, parse_address
+from testproto.session.transport import TcpTransport, TransportError, open_transport, parse_address
 
 
 def ack(descriptor: int, code: int = 0, set_id: int = 0x01, extra: tuple = ()) -> bytes:
@@ -119,7 +119,7 @@ def test_routing_with_a_pending_command_does_not_depend_on_chunks_or_handlers(ha
     # the events, one in C when the accelerator is built) against the events of a plain Decoder:
     # every chunking gives the same events, the reply is matched once, every other packet reaches
     # the handlers in stream order, once, and the interleaving of handlers is per packet.
-    from testproto.packets import Decoder
+    from testproto.codec.packets import Decoder
 
     stream = _routing_stream()
     reference = Decoder().feed(stream) + Decoder().flush()
@@ -302,7 +302,7 @@ def test_skip_runs_are_reported_in_pieces_of_65536_bytes_whatever_the_split():
 def test_a_flood_of_false_syncs_holds_bounded_memory():
     """Repeated false syncs (a length claiming 240 bytes): the parser holds at most one packet
     of undecided bytes and a pending skip run shorter than a piece after every feed."""
-    from testproto.framing import MAX_PACKET, SYNC
+    from testproto.codec.framing import MAX_PACKET, SYNC
 
     flood = (SYNC + b"\x01\xf0") * 50000
     p = TimedParser(100)

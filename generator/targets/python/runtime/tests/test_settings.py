@@ -6,8 +6,9 @@ from __future__ import annotations
 from typing import Any, Dict, List
 
 import pytest
-from testproto import budget, control
-from testproto import settings as st
+from testproto import control
+from testproto.device import budget
+from testproto.device import settings as st
 
 
 class _Result:

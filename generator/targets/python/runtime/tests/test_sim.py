@@ -8,8 +8,8 @@ from __future__ import annotations
 import pytest
 from testproto import control, sensor, shared
 from testproto import types as t
-from testproto.framing import PacketBuilder, Parser, RawPacket
-from testproto.packets import decode_packet
+from testproto.codec.framing import PacketBuilder, Parser, RawPacket
+from testproto.codec.packets import decode_packet
 from testproto.sim import Fault, Simulator
 
 

@@ -18,9 +18,8 @@ IR: two packages with the same hash were generated from the same spec.
 import importlib
 from typing import TYPE_CHECKING, Any, List
 
-from .canonical import NaN
-from .codec import DecodeError, EncodeError, Field, Layout, Struct
-from .framing import (
+from .codec.canonical import NaN
+from .codec.framing import (
     ACCELERATED,
     FramingError,
     PacketBuilder,
@@ -33,7 +32,8 @@ from .framing import (
     iter_fields,
     parse,
 )
-from .packets import (
+from .codec.layout import DecodeError, EncodeError, Field, Layout, Struct
+from .codec.packets import (
     Columns,
     DecodedField,
     Decoder,
@@ -49,8 +49,8 @@ from .packets import (
     encode_line,
     encode_lines,
 )
+from .codec.samples import Sample, SampleGrouper, SampleTracker, sample_key
 from .registry import DEVICES, lookup
-from .samples import Sample, SampleGrouper, SampleTracker, sample_key
 
 if TYPE_CHECKING:
     from . import commands, data, receiver_1, receiver_2, reserved, shared, types
@@ -109,11 +109,6 @@ __all__ = [
     "shared",
     "types",
     "NaN",
-    "DecodeError",
-    "EncodeError",
-    "Field",
-    "Layout",
-    "Struct",
     "ACCELERATED",
     "FramingError",
     "PacketBuilder",
@@ -125,6 +120,11 @@ __all__ = [
     "fletcher16",
     "iter_fields",
     "parse",
+    "DecodeError",
+    "EncodeError",
+    "Field",
+    "Layout",
+    "Struct",
     "Columns",
     "DecodedField",
     "Decoder",
@@ -139,12 +139,12 @@ __all__ = [
     "decode_stream",
     "encode_line",
     "encode_lines",
-    "DEVICES",
-    "lookup",
     "Sample",
     "SampleGrouper",
     "SampleTracker",
     "sample_key",
+    "DEVICES",
+    "lookup",
     "Device",
     "Result",
     "Session",

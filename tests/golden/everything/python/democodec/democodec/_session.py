@@ -1,4 +1,4 @@
-"""What the Demo protocol with every spec feature spec says about every command, for the session layer (session.py):
+"""What the Demo protocol with every spec feature spec says about every command, for the session layer (session/):
 how a reply is matched, and per command layout (set, descriptor) -> rows of
 (class, device, devices, functions, replies, ack suppression, timeout allowance).
 

@@ -1,5 +1,5 @@
 """What the Demo protocol with every spec feature spec says, for the device command line's settings files and link
-budget (settings.py, budget.py; docs/configure-a-device.md): per device every setting -- a command
+budget (device/settings.py, device/budget.py; docs/configure-a-device.md): per device every setting -- a command
 with the write and read functions that the spec's `settings` section does not exclude -- and per
 device the largest data size of every data field (without its header). Generated from the spec: do not edit.
 

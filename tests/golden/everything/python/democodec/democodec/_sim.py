@@ -35,7 +35,7 @@ DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     shared.Timestamp: (("nanoseconds", None, None),),
 }
 
-# The simulated world (sim_world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
+# The simulated world (sim/world.py; the spec's simulation.world): class -> ((parameter, world quantity), ...)
 WORLD: Dict[Any, Tuple[Tuple[str, str], ...]] = {}
 
 # The navigation filter of each device (backend.py FILTER): states, aiding, fix type members

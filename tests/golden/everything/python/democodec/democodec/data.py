@@ -5,7 +5,7 @@ from __future__ import annotations
 import dataclasses as _dc
 import typing as _ty
 
-from . import codec as _c
+from .codec import layout as _c
 
 
 @_c.slotted

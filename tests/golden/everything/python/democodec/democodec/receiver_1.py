@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses as _dc
 
-from . import codec as _c
+from .codec import layout as _c
 
 
 @_c.slotted

@@ -9,7 +9,7 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any, Dict, Iterable, Optional, Tuple, Type
 
-from .codec import Field
+from .codec.layout import Field
 
 DEVICES: Tuple[str, ...] = ("dev_a", "dev_b")
 

@@ -4,7 +4,8 @@ member, checked by tests/test_typed.py."""
 # ruff: noqa: I001  (whether the package is first- or third-party depends on where ruff runs)
 
 from democodec import commands, data, receiver_1, receiver_2, reserved, shared, types
-from democodec import canonical, framing, packets, registry
+from democodec import registry
+from democodec.codec import canonical, framing, packets
 
 __all__ = ["BITFIELD_MEMBERS", "SAMPLES", "canonical", "framing", "packets", "registry"]
 

@@ -1,0 +1,134 @@
+"""The Arrow helpers of the exporters and the dataset: arrays from numpy columns, CSV text of Arrow
+columns with the cell text of the CSV writer, chunks unified to one type.
+"""
+
+from __future__ import annotations
+
+import csv
+import importlib
+import io
+from typing import Any, List
+
+from .writers import f32_text
+
+
+class ArrowCsvText:
+    """CSV of arrow tables with the cell text of `CsvWriter` (so both paths write the same bytes):
+    floats as `_cell_text` prints them (float32 as `f32_text`: `_float_texts`), bools true/false,
+    null empty, strings quoted only when they need it, headers quoted. pyarrow writes the rows."""
+
+    def __init__(self, np: Any, pa: Any, path: str, headers: List[str]) -> None:
+        self.np, self.pa = np, pa
+        self.pacsv = importlib.import_module("pyarrow.csv")
+        self.headers = headers
+        self.file = open(path, "wb")
+        head = io.StringIO()
+        csv.writer(head, lineterminator="\n", quoting=csv.QUOTE_ALL).writerow(headers)
+        self.file.write(head.getvalue().encode("utf-8"))
+
+    def write_table(self, table: Any) -> None:
+        np, pa = self.np, self.pa
+        if table.num_rows == 0:
+            return
+        columns, plain = [], True
+        for j in range(table.num_columns):
+            col = table.column(j)
+            col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
+            t = col.type
+            if pa.types.is_floating(t):
+                col = _float_texts(np, pa, col)
+            elif pa.types.is_string(t) or pa.types.is_large_string(t):
+                texts = col.to_pylist()
+                if any(v is not None and any(c in v for c in ',"\n\r') for v in texts):
+                    plain = False
+                    col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
+            columns.append(col)
+        if plain:  # nothing to quote: pyarrow writes the cells as they are
+            names = [f"c{j}" for j in range(len(columns))]
+            options = self.pacsv.WriteOptions(include_header=False, quoting_style="none")
+            self.pacsv.write_csv(pa.Table.from_arrays(columns, names=names), self.file, write_options=options)
+            return
+        texts = [["" if v is None else str(v) for v in _text_cells(pa, c)] for c in columns]
+        self.file.write(("\n".join(map(",".join, zip(*texts))) + "\n").encode("utf-8"))
+
+    def close(self) -> None:
+        self.file.close()
+
+
+def _text_cells(pa: Any, col: Any) -> List[Any]:
+    """Cells of an arrow column as CsvWriter prints them (strings already final)."""
+    if pa.types.is_boolean(col.type):
+        return [None if v is None else ("true" if v else "false") for v in col.to_pylist()]
+    out: List[Any] = col.to_pylist()
+    return out
+
+
+def _float_texts(np: Any, pa: Any, col: Any) -> Any:
+    """The text of each value of a float32 / float64 arrow array as the packet path prints it
+    (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
+    positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
+    float32 values (where repr is positional too): there, its text plus `.0` when integral is
+    repr's; the values outside that range or in pyarrow's exponent form are printed one by one."""
+    pc = importlib.import_module("pyarrow.compute")
+    single = col.type == pa.float32()
+    text = pc.cast(col, pa.string())
+    integral = pc.match_substring_regex(text, "^-?[0-9]+$")
+    text = pc.if_else(integral, pc.binary_join_element_wise(text, pa.scalar(".0"), ""), text)
+    values = col.fill_null(0).to_numpy(zero_copy_only=False)
+    size = np.abs(values.astype(np.float64))
+    with np.errstate(invalid="ignore"):
+        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
+    odd |= pc.match_substring(text, "e").fill_null(False).to_numpy(zero_copy_only=False)  # pyarrow's exponent form
+    if col.null_count:
+        odd &= col.is_valid().to_numpy(zero_copy_only=False)
+    where = np.flatnonzero(odd)
+    if len(where) == 0:
+        return text
+    fmt = f32_text if single else (lambda v: repr(float(v)))
+    fixed = pa.array([fmt(float(v)) for v in values[where]], type=pa.string())
+    mask = np.zeros(len(values), dtype=bool)
+    mask[where] = True
+    return pc.replace_with_mask(text, pa.array(mask), fixed)
+
+
+def f32_texts(np: Any, a: Any) -> Any:
+    """`f32_text` of each value of a float32 numpy array, as the columnar path prints them."""
+    pa = importlib.import_module("pyarrow")
+    texts: List[str] = _float_texts(np, pa, pa.array(a.astype(np.float32), type=pa.float32())).to_pylist()
+    return np.array(texts, dtype=object)
+
+
+def _csv_quote(text: str) -> str:
+    """A string cell as the csv module writes it (QUOTE_MINIMAL, lineterminator \\n)."""
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
+
+
+def as_arrow(pa: Any, c: Any) -> Any:
+    if isinstance(c, (pa.Array, pa.ChunkedArray)):
+        return c
+    np = importlib.import_module("numpy")
+    return to_arrow(np, pa, c) if isinstance(c, np.ndarray) else pa.array(c)
+
+
+def to_arrow(np: Any, pa: Any, a: Any, valid: Any = None) -> Any:
+    """A one-dimensional numpy array of numbers or bools as an arrow array, sharing its memory;
+    `valid` (bools) marks the non-null entries. (pa.array would do the same but imports pandas,
+    about a second of start-up, on its first call.)"""
+    a = np.ascontiguousarray(a)
+    mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))
+    nulls = 0 if valid is None else int(len(a) - np.count_nonzero(valid))
+    if a.dtype == np.bool_:
+        return pa.Array.from_buffers(pa.bool_(), len(a), [mask, pa.py_buffer(np.packbits(a, bitorder="little"))], nulls)
+    return pa.Array.from_buffers(pa.from_numpy_dtype(a.dtype), len(a), [mask, pa.py_buffer(a)], nulls)
+
+
+def unify(pa: Any, chunks: List[Any]) -> List[Any]:
+    """Chunks of one column as one arrow type (the first non-null type wins; ints widen to float)."""
+    arrs = [as_arrow(pa, c) for c in chunks]
+    types = [a.type for a in arrs if a.type != pa.null()]
+    target = types[0] if types else pa.null()
+    if any(pa.types.is_floating(t) for t in types) and pa.types.is_integer(target):
+        target = next(t for t in types if pa.types.is_floating(t))
+    return [a if a.type == target else a.cast(target) for a in arrs]

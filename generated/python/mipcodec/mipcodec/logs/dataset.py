@@ -1,0 +1,989 @@
+"""Raw logs to a Hive-partitioned Parquet dataset (`python -m mipcodec export --dataset DIR LOGS...`).
+
+The layout (docs/dataset.md), which the single-machine export and the Spark job
+(`mipcodec.spark`) both write through the functions below:
+
+    DIR/_files/part-<LOG>.parquet                                  one row per source log
+    DIR/<TABLE>/model=<MODEL>/serial=<SERIAL>/date=<YYYY-MM-DD>/part-<LOG>-<SPLIT>.parquet
+
+`<TABLE>` is a per-(set, field) table named as `export` names its files (`sensor.scaled_accel`)
+or a joined-sample table `<set>.samples`; `<LOG>` the first 16 hex digits of the SHA-256 of the
+log's content; `<SPLIT>` the split's start offset as 12 hex digits. A log is cut into a fixed grid
+of splits of SPLIT_BYTES; split [start, end) holds the packets whose first byte is in it: its
+bytes are decoded from LOOKBACK bytes before `start` (the parser resynchronises there) to
+MAX_PACKET bytes past `end` (the last packet that starts inside is complete), and only the
+packets starting in [start, end) are kept, so that every packet is decoded exactly once across
+the splits. Skipped bytes and bad checksums are counted for the bytes in [start, end) only.
+
+Engines drive the same four steps per log: `log_id` and `log_identity` (model, serial and firmware
+from the log's device information reply), per split `read_split` and `decode_split`, then
+`write_split`; `files_row` / `write_files_row` record the log in `_files`. `export_dataset` is the
+single-machine driver. numpy and pyarrow are imported when used (the `[export]` extra).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib
+import os
+import re
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
+
+from .. import _columns, registry
+from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
+from .._protocol import PACKAGE as PROG
+from .arrow import as_arrow, to_arrow, unify
+from .export import FastExporter
+from .info import bad_checksums
+from .writers import need, table_name
+
+SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
+LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
+ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes for object storage)
+COMPRESSION = "zstd"
+META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
+FILES_TABLE = "_files"
+DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # the partition value of null (Hive, Spark)
+UNKNOWN = "unknown"  # model / serial of a log that names neither, without --model / --serial
+SAMPLES = "samples"  # joined-sample tables: <set>.samples
+BASE_COLUMNS = ("t_ns", "time", "offset", "log", "device_ns", "gps_week", "gps_tow")
+PARTITION_COLUMNS = ("model", "serial", "date")
+
+ReadAt = Callable[[int, int], bytes]
+
+
+# ---------------------------------------------------------------------------------- the grid
+def log_id(path: str) -> str:
+    """The log's id: the first 16 hex digits of the SHA-256 of its whole content (read in pieces).
+    ReadError when it cannot be read."""
+    h = hashlib.sha256()
+    try:
+        with open(path, "rb") as f:
+            while True:
+                chunk = f.read(1 << 22)
+                if not chunk:
+                    break
+                h.update(chunk)
+    except OSError as e:
+        raise ReadError(e.strerror or str(e)) from None
+    return h.hexdigest()[:16]
+
+
+def splits(size: int, split_bytes: int = SPLIT_BYTES) -> List[Tuple[int, int]]:
+    """The split grid of a log of `size` bytes: [(k*S, min((k+1)*S, size))]; one empty split for
+    an empty log (so that it is still decoded and recorded)."""
+    if split_bytes <= 0:
+        raise ValueError("split_bytes must be positive")
+    if size <= 0:
+        return [(0, 0)]
+    return [(s, min(s + split_bytes, size)) for s in range(0, size, split_bytes)]
+
+
+def split_name(start: int) -> str:
+    """<SPLIT> of a part file: the split's start offset as 12 hex digits."""
+    return f"{start:012x}"
+
+
+class ReadError(Exception):
+    """A log that cannot be read (recorded in `_files` as `unreadable`, the run goes on)."""
+
+
+def file_reader(path: str) -> Tuple[ReadAt, int]:
+    """(read_at(offset, length) -> bytes, size) of a local file; an OSError reading it is a
+    ReadError (so that it is told apart from a failed write)."""
+    try:
+        size = os.path.getsize(path)
+        if os.path.isdir(path):
+            raise ReadError("is a directory")
+    except OSError as e:
+        raise ReadError(e.strerror or str(e)) from None
+
+    def read_at(offset: int, length: int) -> bytes:
+        try:
+            with open(path, "rb") as f:
+                f.seek(offset)
+                return f.read(length)
+        except OSError as e:
+            raise ReadError(e.strerror or str(e)) from None
+
+    return read_at, size
+
+
+def read_split(read_at: ReadAt, size: int, start: int, end: int) -> Tuple[bytes, int]:
+    """The bytes a split decodes and the log offset of their first byte:
+    [max(0, start - LOOKBACK), min(size, end + MAX_PACKET))."""
+    lo = max(0, start - LOOKBACK)
+    hi = min(size, end + MAX_PACKET)
+    return read_at(lo, hi - lo), lo
+
+
+# ------------------------------------------------------------------------------ the identity
+@dataclass(frozen=True)
+class Identity:
+    """Partition values and file metadata of a log: model, serial (never empty), firmware or None."""
+
+    model: str = UNKNOWN
+    serial: str = UNKNOWN
+    firmware: Optional[str] = None
+
+
+def partition_value(text: Optional[str]) -> str:
+    """A model or serial as a partition value: stripped; characters a path or Hive partition
+    cannot hold (/ \\ = : and control characters) as '-'; empty -> `unknown`."""
+    t = re.sub(r"[/\\=:\x00-\x1f\x7f]", "-", (text or "").strip())
+    return t or UNKNOWN
+
+
+def model_slug(name: str) -> str:
+    """The model partition value of a reported model name: lower case, runs of other characters
+    than letters and digits as '-' ("3DM-GX5-45" -> "3dm-gx5-45")."""
+    return re.sub(r"[^a-z0-9]+", "-", name.strip().lower()).strip("-") or UNKNOWN
+
+
+def identity_from_packet(packet: Any) -> Optional[Identity]:
+    """The identity a decoded packet reports when it is a device information reply, else None."""
+    reports = _identity_reports()
+    from ..codec.packets import DecodedField
+
+    for f in packet.fields:
+        if not isinstance(f, DecodedField):
+            continue
+        items = reports.get(type(f.value))
+        if items is None:
+            continue
+        found: Dict[str, Any] = {}
+        for path, item, _fmt in items:
+            v: Any = f.value
+            for name in path:
+                v = getattr(v, name, None)
+            if isinstance(v, (bytes, bytearray)):
+                v = bytes(v).decode("latin-1")
+            if isinstance(v, str):
+                v = v.strip(" \x00")
+            found[item] = v
+        model = str(found.get("model_name") or "").strip()
+        serial = str(found.get("serial_number") or "").strip()
+        firmware = found.get("firmware")
+        return Identity(
+            model_slug(model) if model else UNKNOWN,
+            partition_value(serial),
+            None if firmware is None else str(firmware),
+        )
+    return None
+
+
+def _identity_reports() -> Dict[Any, Any]:
+    """Device information reply class -> its identity items (the generated `_sim.IDENTITY_REPORTS`)."""
+    try:
+        sim = importlib.import_module(".._sim", __package__)
+    except ImportError:
+        return {}
+    reports: Dict[Any, Any] = getattr(sim, "IDENTITY_REPORTS", {})
+    return reports
+
+
+def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial: Optional[str] = None) -> Identity:
+    """The log's identity: from its first device information reply (Get Device Information,
+    searched through the whole log in pieces), else `model` / `serial` (as given, made partition
+    safe), else `unknown`. A reply's values win over the options."""
+    from ..codec.packets import Packet, decode_all
+
+    reports = _identity_reports()
+    sets = {cls.SET for cls in reports if getattr(cls, "SET", None) is not None}
+    piece = 16 << 20
+    found: Optional[Identity] = None
+    for set_id in sorted(sets):
+        needle = bytes(SYNC) + bytes([set_id])
+        pos = 0
+        while pos < size and found is None:
+            data = read_at(pos, min(piece + MAX_PACKET, size - pos))
+            i = data.find(needle)
+            while 0 <= i < min(piece, len(data)) and found is None:
+                for e in decode_all(data[i : i + MAX_PACKET]):
+                    if isinstance(e, Packet):
+                        found = identity_from_packet(e)
+                    break  # only the packet at i
+                i = data.find(needle, i + 1)
+            pos += piece
+        if found is not None:
+            break
+    fallback = Identity(
+        partition_value(model) if model else UNKNOWN, partition_value(serial) if serial else UNKNOWN, None
+    )
+    if found is None:
+        return fallback
+    return Identity(
+        found.model if found.model != UNKNOWN else fallback.model,
+        found.serial if found.serial != UNKNOWN else fallback.serial,
+        found.firmware,
+    )
+
+
+# --------------------------------------------------------------------------------- the schema
+def column_name(export_name: str) -> str:
+    """A dataset column name from an export column name: '.', '[' and ']' as '_' (runs as one,
+    none at the ends): scaled_accel.x -> scaled_accel_x, satellites[0].prn -> satellites_0_prn."""
+    return re.sub(r"[.\[\]]+", "_", export_name).strip("_")
+
+
+def arrow_type(kind: str) -> Any:
+    """The Arrow type of a column kind of `_columns` (the type depends on the spec only)."""
+    pa = _need("pyarrow")
+    return {
+        "float32": pa.float32(),
+        "float64": pa.float64(),
+        "int": pa.int64(),
+        "bits": pa.int64(),
+        "bool": pa.bool_(),
+        "enum": pa.string(),  # the enum value's name from the spec (its number when the spec has none)
+        "json": pa.string(),
+    }[kind]
+
+
+def base_fields() -> List[Any]:
+    """The leading columns of every table (t_ns, time, offset, log, device_ns, gps_week, gps_tow)."""
+    pa = _need("pyarrow")
+    meta = {
+        "t_ns": ("ns", "UTC time, nanoseconds since 1970-01-01 00:00:00 UTC (null when unknown)"),
+        "time": ("", "UTC time (t_ns to microseconds)"),
+        "offset": ("bytes", "offset of the packet's first byte in the log"),
+        "log": ("", "the log's id: first 16 hex digits of the SHA-256 of its content"),
+        "device_ns": ("ns", "the device's own clock (reference timestamp), as sent"),
+        "gps_week": ("weeks", "GPS week number the packet carries, as sent"),
+        "gps_tow": ("s", "GPS time of week the packet carries, as sent"),
+    }
+    types = {
+        "t_ns": pa.int64(),
+        "time": pa.timestamp("us", tz="UTC"),
+        "offset": pa.int64(),
+        "log": pa.string(),
+        "device_ns": pa.int64(),
+        "gps_week": pa.int32(),
+        "gps_tow": pa.float64(),
+    }
+    out = []
+    for name in BASE_COLUMNS:
+        units, description = meta[name]
+        md = {"description": description}
+        if units:
+            md["units"] = units
+        out.append(pa.field(name, types[name], nullable=name not in ("offset", "log"), metadata=md))
+    return out
+
+
+def _value_fields(set_id: int, key: Tuple[int, int, Optional[str]]) -> List[Any]:
+    """The value columns of one field layout (key of `_columns.COLUMNS`) with their metadata."""
+    pa = _need("pyarrow")
+    title = _columns.TITLES.get(key, "")
+    descriptions = _columns.DESCRIPTIONS
+    frames: Dict[Any, Tuple[Optional[str], ...]] = getattr(_columns, "FRAMES", {})
+    out = []
+    for j, (name, _path, units, kind, _enum) in enumerate(_columns.COLUMNS.get(key, ())):
+        md = {"set": f"0x{set_id:02X}", "descriptor": f"0x{key[1]:02X}", "title": title}
+        if key[0] != set_id:
+            md["field_set"] = f"0x{key[0]:02X}"  # a shared field: the shared set it belongs to
+        if units:
+            md["units"] = units
+        desc = descriptions.get(key, ())
+        md["description"] = desc[j] if j < len(desc) and desc[j] else title
+        frame = frames.get(key, ())
+        if j < len(frame) and frame[j]:
+            md["frame"] = str(frame[j])
+        out.append(pa.field(column_name(name), arrow_type(kind), metadata=md))
+    return out
+
+
+def table_schema(set_id: int, key: Tuple[int, int, Optional[str]]) -> Any:
+    """The Arrow schema of the per-field table of layout `key` in packets of set `set_id`
+    (partition columns not included)."""
+    pa = _need("pyarrow")
+    return pa.schema(base_fields() + _value_fields(set_id, key))
+
+
+def set_layouts(set_id: int) -> List[Tuple[int, int, Optional[str]]]:
+    """The layouts a packet of data set `set_id` can carry: the shared fields (FIRST_SHARED and up,
+    of the protocol's shared set) then the set's own fields, by descriptor (spec order)."""
+    shared = getattr(registry, "SHARED_SET", None)
+    own = sorted(k for k in _columns.COLUMNS if k[0] == set_id)
+    common = sorted(k for k in _columns.COLUMNS if shared is not None and k[0] == shared and shared != set_id)
+    return common + own
+
+
+def samples_schema(set_id: int) -> Any:
+    """The Arrow schema of `<set>.samples`: the base columns, then the columns of every layout of
+    `set_layouts` (a name met twice, as per-device variants of a field, once: the first)."""
+    pa = _need("pyarrow")
+    fields = base_fields()
+    seen = {f.name for f in fields}
+    for key in set_layouts(set_id):
+        for f in _value_fields(set_id, key):
+            if f.name not in seen:
+                seen.add(f.name)
+                fields.append(f)
+    return pa.schema(fields)
+
+
+def data_sets() -> List[int]:
+    """The data sets with tables (those with field layouts, the shared set excluded)."""
+    shared = getattr(registry, "SHARED_SET", None)
+    return sorted({k[0] for k in _columns.COLUMNS if k[0] != shared})
+
+
+def table_names() -> Dict[str, Any]:
+    """Every table the spec can give: name -> schema (per field in each data set, shared
+    fields in each data set, and `<set>.samples`)."""
+
+    out: Dict[str, Any] = {}
+    for set_id in data_sets():
+        for key in set_layouts(set_id):
+            out[table_name(set_id, _Key(key))] = table_schema(set_id, key)
+        out[samples_name(set_id)] = samples_schema(set_id)
+    return out
+
+
+class _Key:
+    """A layout key seen as a layout class by `writers.table_name` (SET, NAME, DEVICE)."""
+
+    def __init__(self, key: Tuple[int, int, Optional[str]]) -> None:
+        self.SET, self.DESCRIPTOR, self.DEVICE = key
+        self.NAME = _field_name(key)
+
+
+def _field_name(key: Tuple[int, int, Optional[str]]) -> str:
+    specs = _columns.COLUMNS.get(key, ())
+    if specs:
+        return specs[0][0].split(".")[0].split("[")[0]
+    return f"field_{key[1]:02x}"
+
+
+def samples_name(set_id: int) -> str:
+    return f"{registry.SET_NAMES.get(set_id, f'set_{set_id:02x}')}.{SAMPLES}"
+
+
+def file_metadata(identity: Identity, log: str, split_start: int) -> Dict[bytes, bytes]:
+    """The Parquet file (schema) metadata of a part (keys in the package's namespace, `mipcodec.model`)."""
+    return {
+        META + b"spec_version": _spec_version().encode(),
+        META + b"spec_hash": _spec_hash().encode(),
+        META + b"package": PROG.encode(),
+        META + b"model": identity.model.encode(),
+        META + b"serial": identity.serial.encode(),
+        META + b"firmware": (identity.firmware or "").encode(),
+        META + b"log": log.encode(),
+        META + b"split": split_name(split_start).encode(),
+    }
+
+
+def _spec_hash() -> str:
+    """The package's SPEC_HASH (16 hex digits of the SHA-256 of the protocol's canonical IR)."""
+    return str(getattr(importlib.import_module(PROG), "SPEC_HASH", ""))
+
+
+def _spec_version() -> str:
+    """The package's version (docs/versioning.md: it moves with the spec)."""
+    return str(getattr(importlib.import_module(PROG), "__version__", ""))
+
+
+# ------------------------------------------------------------------------------ decode a split
+@dataclass
+class SplitResult:
+    """One split decoded: `tables[name]` (pyarrow Tables in the dataset's columns, partition
+    columns not included, rows in stream order) and the split's counts for `_files`."""
+
+    log: str
+    start: int
+    end: int
+    identity: Identity
+    tables: Dict[str, Any] = field(default_factory=dict)
+    packets: int = 0
+    skipped_bytes: int = 0
+    bad_checksums: int = 0
+    truncated: bool = False  # the split ends the log inside a packet
+    first_t_ns: Optional[int] = None
+    last_t_ns: Optional[int] = None
+
+
+def device_of(model: str) -> Optional[str]:
+    """The registry device id of a log's model partition value: a device id as given (`--model
+    cv7_ins`), or the device whose model name the reported one is (`3dm-cv7-gnss-ins` is the
+    3DM-CV7-GNSS/INS: compared without case and punctuation, as the session compares them); None
+    when it is none of them (`unknown`)."""
+    from ..session import model_matches
+
+    if model in registry.DEVICES:
+        return model
+    return next((d for d in registry.DEVICES if model != UNKNOWN and model_matches(model, d)), None)
+
+
+def _for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
+    """Decode the fields that have per-device layouts with the log's device: decode_columns
+    decodes them with the first device's layout (it has no device argument); their rows move to
+    `cols.others` as the packet decoder gives them for `device`. Nothing changes for device None."""
+    if device is None:
+        return
+    from ..codec.packets import DecodedField, decode_packet
+
+    def redo(off: int, k: int) -> Any:
+        n = HEADER_SIZE + data[off + LENGTH_OFFSET] + CHECKSUM_SIZE
+        return decode_packet(bytes(data[off : off + n]), off, device, check=False).fields[k]
+
+    moved: List[Tuple[int, int, Any]] = []
+    for key, t in list(cols.tables.items()):
+        dev = getattr(t.cls, "DEVICE", None)
+        if dev is None or dev == device or t.rows == 0:
+            continue
+        moved.extend((int(o), int(k), redo(int(o), int(k))) for o, k in zip(t.offsets, t.index))
+        del cols.tables[key]
+    others: List[Tuple[int, int, Any]] = []
+    for off, k, entry in cols.others:
+        dev = getattr(getattr(entry, "value", None), "DEVICE", None) if isinstance(entry, DecodedField) else None
+        others.append((off, k, redo(off, k)) if dev is not None and dev != device else (off, k, entry))
+    if moved or others != cols.others:
+        cols.others = sorted(others + moved, key=lambda x: (x[0], x[1]))
+
+
+def decode_split(
+    data: bytes,
+    base: int,
+    start: int,
+    end: int,
+    clock: Any = None,
+    identity: Optional[Identity] = None,
+    log: str = "",
+    size: Optional[int] = None,
+) -> SplitResult:
+    """Decode the packets whose first byte is in [start, end) from `data` (the bytes of the log
+    from offset `base`, as `read_split` gives them) into the dataset's tables.
+
+    `clock` is the split's clock (`clock_maps(...)[k]`, a timebase.SplitClock; None: the split
+    is taken as a whole log, `whole_clock`) for the UTC time of packets with only the device clock; `identity` the log's (`log_identity`); `log` its id; `size` the log's size (the
+    split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
+    np = _need("numpy")
+    pa = _need("pyarrow")
+    from ..codec.packets import decode_columns
+
+    ident = identity if identity is not None else Identity()
+    result = SplitResult(log, start, end, ident)
+    cols = decode_columns(data)
+    _for_device(cols, data, device_of(ident.model))
+    # skipped bytes and bad checksums inside [start, end)
+    for skip in cols.skips:
+        a, b = skip.offset + base, skip.offset + base + len(skip.data)
+        lo, hi = max(a, start), min(b, end)
+        if lo < hi:
+            result.skipped_bytes += hi - lo
+            result.bad_checksums += _bad_checksums(bytes(skip.data[lo - a :]), hi - lo)
+        if size is not None and end == size and b == size == base + len(data) and lo < hi:
+            result.truncated = _ends_in_packet(bytes(skip.data))
+    maker = FastExporter("", "parquet", None, False)
+    pieces = maker.pieces(cols, data, base)
+    times = _PacketTimes(
+        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
+    )
+    per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
+    for (set_id, cls), parts in pieces.items():
+        offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
+        idx = np.concatenate([np.asarray(p[1], dtype=np.int64) for p in parts])
+        order = np.lexsort((idx, offs))
+        offs, idx = offs[order], idx[order]
+        keep = (offs >= start) & (offs < end)
+        if not keep.any():
+            continue
+        sel = order[keep]
+        offs, idx = offs[keep], idx[keep]
+        key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
+        values = []
+        for j in range(2, len(parts[0][2])):
+            chunk = unify(pa, [p[2][j] for p in parts])
+            col = chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk)
+            values.append(as_arrow(pa, col).take(pa.array(sel, type=pa.int64())))
+        schema = table_schema(set_id, key)
+        table = _table(np, pa, schema, times, offs, log, values)
+        result.tables[table_name(set_id, cls)] = table
+        per_set.setdefault(set_id, []).append((key, offs, idx, table))
+    for set_id, tables in per_set.items():
+        result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log)
+    packets = _packet_offsets(np, cols, base)
+    packets = packets[(packets >= start) & (packets < end)]
+    result.packets = int(len(packets))
+    if len(packets):
+        t = times.t_ns_of(packets)
+        if len(t):
+            result.first_t_ns, result.last_t_ns = int(t.min()), int(t.max())
+    return result
+
+
+def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
+    """The sorted log offsets of the packets of a decoded window: those of its field entries (in
+    a table or among the others; a packet with an empty payload has none and is not counted)."""
+    parts = [np.frombuffer(t.offsets, dtype=np.int64) for t in cols.tables.values() if t.rows]
+    if cols.others:
+        parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
+    if not parts:
+        return np.zeros(0, dtype=np.int64)
+    out: Any = _sorted_unique(np, np.concatenate(parts)) + base
+    return out
+
+
+def _sorted_unique(np: Any, a: Any) -> Any:
+    """The distinct values of an int64 array, sorted (np.unique without its hashing path)."""
+    a = np.sort(a, kind="stable")
+    keep = np.ones(len(a), dtype=bool)
+    keep[1:] = a[1:] != a[:-1]
+    return a[keep]
+
+
+def _table(np: Any, pa: Any, schema: Any, times: Any, offs: Any, log: str, values: List[Any]) -> Any:
+    """A table of the schema: the base columns of the packets at `offs`, then `values`."""
+    arrays = times.base_columns(offs, log) + [
+        _cast(pa, v, schema.field(len(BASE_COLUMNS) + j).type) for j, v in enumerate(values)
+    ]
+    return pa.Table.from_arrays(arrays, schema=schema)
+
+
+def _cast(pa: Any, a: Any, t: Any) -> Any:
+    if a.type == t:
+        return a
+    if pa.types.is_string(t) and not pa.types.is_string(a.type):
+        return pa.array([None if v is None else str(v) for v in a.to_pylist()], type=t)
+    try:
+        return a.cast(t)
+    except (pa.ArrowInvalid, pa.ArrowNotImplementedError):
+        return a.cast(t, safe=False)  # uint64 values from 2^63 up wrap (docs/dataset.md)
+
+
+def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]], times: Any, log: str) -> Any:
+    """`<set>.samples`: one row per sample (docs/conformance.md section 6, as `export --join`):
+    consecutive packets of the set with the same sample key (the timestamp fields of the sample
+    rule, equal values) make one row; no key, one row per packet; a column's first value wins."""
+    schema = samples_schema(set_id)
+    packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
+    n = len(packets)
+    # the sample key per packet: (present, values) of each TIMESTAMPS field
+    new = np.ones(n, dtype=bool)
+    keyed = np.zeros(n, dtype=bool)
+    same = np.ones(max(n - 1, 0), dtype=bool)
+    for key, offs, _idx, table in tables:
+        if key[1] not in TIMESTAMPS or key[0] == set_id:
+            continue
+        first = np.ones(len(offs), dtype=bool)
+        first[1:] = offs[1:] != offs[:-1]
+        pos = np.searchsorted(packets, offs[first])
+        present = np.zeros(n, dtype=bool)
+        present[pos] = True
+        keyed |= present
+        same &= present[1:] == present[:-1]
+        for c in range(len(BASE_COLUMNS), table.num_columns):
+            col = table.column(c).combine_chunks().filter(pa.array(first))
+            vals = np.zeros(n, dtype=np.float64)
+            vals[pos] = np.asarray(col.fill_null(0).to_numpy(zero_copy_only=False), dtype=np.float64)
+            same &= (vals[1:] == vals[:-1]) | ~present[1:]
+    if n > 1:
+        new[1:] = ~(same & keyed[1:] & keyed[:-1])
+    group = np.cumsum(new) - 1
+    rows = int(group[-1]) + 1 if n else 0
+    row_offs = packets[new]
+    arrays: Dict[str, Any] = {}
+    for _key, offs, _idx, table in tables:
+        g = group[np.searchsorted(packets, offs)]
+        firsts = np.ones(len(g), dtype=bool)
+        firsts[1:] = g[1:] != g[:-1]
+        target = g[firsts]
+        take = np.flatnonzero(firsts)
+        for c in range(len(BASE_COLUMNS), table.num_columns):
+            name = table.schema.field(c).name
+            col = table.column(c).combine_chunks().take(pa.array(take, type=pa.int64()))
+            prev = arrays.get(name)
+            if prev is None:
+                arrays[name] = (target, col)
+            else:  # first value wins: only the rows this column did not fill yet
+                have = np.zeros(rows, dtype=bool)
+                have[prev[0]] = True
+                extra = ~have[target]
+                if extra.any():
+                    arrays[name] = (
+                        np.concatenate([prev[0], target[extra]]),
+                        pa.concat_arrays([prev[1], col.filter(pa.array(extra))]),
+                    )
+    # a row's time: its first packet with one
+    t_group = times.row_times(packets, group, rows)
+    out = times.base_columns(row_offs, log, t_group)
+    for j in range(len(BASE_COLUMNS), len(schema)):
+        f = schema.field(j)
+        entry = arrays.get(f.name)
+        if entry is None:
+            out.append(pa.nulls(rows, type=f.type))
+            continue
+        where, col = entry
+        col = _cast(pa, col, f.type)
+        full_idx = np.full(rows, -1, dtype=np.int64)
+        full_idx[where] = np.arange(len(where))
+        mask = full_idx < 0
+        full_idx[mask] = 0
+        taken = col.take(pa.array(full_idx, type=pa.int64()))
+        out.append(_null_where(np, pa, taken, mask))
+    return pa.Table.from_arrays(out, schema=schema)
+
+
+def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
+    if not mask.any():
+        return a
+    pc = importlib.import_module("pyarrow.compute")
+    return pc.if_else(pa.array(mask), pa.nulls(len(a), type=a.type), a)
+
+
+class _PacketTimes:
+    """The time columns of the packets of a decoded window (timebase: the split's clock map):
+    t_ns (UTC), the device clock and the GPS week / time of week the packet carries, as sent."""
+
+    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any) -> None:
+        self.np = np
+        self.block = clock.block(cols, base, start, end)
+
+    def columns(self, offs: Any) -> Dict[str, Tuple[Any, Any]]:
+        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets."""
+        got = self.block.lookup(offs)
+        return {
+            "t_ns": (got["t_ns"], got["t_valid"]),
+            "device_ns": (got["device_ns"], got["device_valid"]),
+            "gps_week": (got["gps_week"], got["gps_valid"]),
+            "gps_tow": (got["gps_tow"], got["gps_valid"]),
+        }
+
+    def t_ns_of(self, offs: Any) -> Any:
+        vals, valid = self.columns(offs)["t_ns"]
+        return vals[valid]
+
+    def row_times(self, packets: Any, group: Any, rows: int) -> Dict[str, Tuple[Any, Any]]:
+        """Per joined row: each time column from the row's first packet that has it."""
+        np = self.np
+        cols = self.columns(packets)
+        out = {}
+        for name, (vals, valid) in cols.items():
+            rv = np.zeros(rows, dtype=vals.dtype)
+            rk = np.zeros(rows, dtype=bool)
+            # the last write wins: written in reverse, the first valid packet of a group stays
+            idx = np.flatnonzero(valid)[::-1]
+            rv[group[idx]] = vals[idx]
+            rk[group[idx]] = True
+            out[name] = (rv, rk)
+        return out
+
+    def base_columns(self, offs: Any, log: str, given: Optional[Dict[str, Tuple[Any, Any]]] = None) -> List[Any]:
+        """Arrow arrays of the base columns (BASE_COLUMNS order) of rows at packet offsets `offs`."""
+        np = self.np
+        pa = _need("pyarrow")
+
+        cols = given if given is not None else self.columns(offs)
+        t_ns, t_ok = cols["t_ns"]
+        t_ns = np.asarray(t_ns, dtype=np.int64)
+        out = [
+            to_arrow(np, pa, t_ns, t_ok),
+            to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
+            to_arrow(np, pa, np.asarray(offs, dtype=np.int64)),
+            pa.array([log] * len(offs), type=pa.string()),
+        ]
+        for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
+            vals, ok = cols[name]
+            out.append(to_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
+        return out
+
+
+def whole_clock(data: bytes, base: int, start: int, end: int) -> Any:
+    """The clock of a split decoded on its own as a whole log (no split before it)."""
+    from . import timebase
+
+    return timebase.ClockMap.from_splits([timebase.split_anchors(data, base, start, end)]).split(0)
+
+
+def _bad_checksums(run: bytes, starts: int) -> int:
+    """Complete packets with a wrong checksum inside a skipped run (`info.bad_checksums`), among
+    those whose sync starts in the run's first `starts` bytes."""
+
+    return bad_checksums(run, starts)
+
+
+def _ends_in_packet(run: bytes) -> bool:
+    """True when a skipped run that ends the log holds the start of a packet cut by the end: a
+    sync whose header is incomplete or whose stated length runs past the end."""
+    i = run.find(SYNC)
+    while i >= 0:
+        if len(run) - i < HEADER_SIZE:
+            return True
+        if i + HEADER_SIZE + run[i + LENGTH_OFFSET] + CHECKSUM_SIZE > len(run):
+            return True
+        i = run.find(SYNC, i + 1)
+    return False
+
+
+# ------------------------------------------------------------------------------------- writing
+def write_split(out_dir: str, result: SplitResult) -> List[str]:
+    """Write the tables of a decoded split as part files (paths relative to `out_dir` returned):
+    partitioned by model, serial and UTC date, rows sorted by (t_ns nulls last, offset), each
+    written under a dot name in its directory and renamed whole (a crash leaves no visible part)."""
+    pa = _need("pyarrow")
+    pc = importlib.import_module("pyarrow.compute")
+    written: List[str] = []
+    meta = file_metadata(result.identity, result.log, result.start)
+    for name in sorted(result.tables):
+        table = result.tables[name]
+        if table.num_rows == 0:
+            continue
+        table = table.sort_by([("t_ns", "ascending"), ("offset", "ascending")])  # nulls last
+        day = pc.strftime(table.column("time"), format="%Y-%m-%d")
+        dates = pc.unique(day).to_pylist()
+        for date in sorted(d for d in dates if d is not None) + ([None] if None in dates else []):
+            mask = pc.is_null(day) if date is None else pc.equal(day, date)
+            part = table.filter(mask).replace_schema_metadata({**(table.schema.metadata or {}), **meta})
+            rel = os.path.join(
+                name,
+                f"model={result.identity.model}",
+                f"serial={result.identity.serial}",
+                f"date={date or DEFAULT_PARTITION}",
+                f"part-{result.log}-{split_name(result.start)}.parquet",
+            )
+            _write_atomic(pa, os.path.join(out_dir, rel), part)
+            written.append(rel)
+    return written
+
+
+def _write_atomic(pa: Any, path: str, table: Any) -> None:
+    pq = importlib.import_module("pyarrow.parquet")
+    directory, base = os.path.split(path)
+    os.makedirs(directory, exist_ok=True)
+    tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
+    try:
+        pq.write_table(
+            table,
+            tmp,
+            row_group_size=ROW_GROUP_ROWS,
+            compression=COMPRESSION,
+            use_dictionary=True,
+            write_statistics=True,
+        )
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def remove_parts(out_dir: str, log: str, keep: Iterable[str] = ()) -> int:
+    """Delete every `part-<log>-*` file of the dataset (tables and partitions) but those in `keep`
+    (paths relative to out_dir); the number removed. A re-run then replaces, never duplicates."""
+    keep_set = {os.path.normpath(k) for k in keep}
+    prefix = f"part-{log}-"
+    removed = 0
+    if not os.path.isdir(out_dir):
+        return 0
+    for root, dirs, files in os.walk(out_dir):
+        dirs[:] = [d for d in dirs if not d.startswith(".") and d != FILES_TABLE]
+        for f in files:
+            if f.startswith(prefix):
+                rel = os.path.normpath(os.path.relpath(os.path.join(root, f), out_dir))
+                if rel not in keep_set:
+                    os.unlink(os.path.join(root, f))
+                    removed += 1
+    return removed
+
+
+# --------------------------------------------------------------------------------------- _files
+def files_schema() -> Any:
+    pa = _need("pyarrow")
+    ts = pa.timestamp("us", tz="UTC")
+    return pa.schema(
+        [
+            ("log", pa.string()),
+            ("path", pa.string()),
+            ("bytes", pa.int64()),
+            ("packets", pa.int64()),
+            ("skipped_bytes", pa.int64()),
+            ("bad_checksums", pa.int64()),
+            ("first_t_ns", pa.int64()),
+            ("last_t_ns", pa.int64()),
+            ("first_time", ts),
+            ("last_time", ts),
+            ("model", pa.string()),
+            ("serial", pa.string()),
+            ("firmware", pa.string()),
+            ("status", pa.string()),
+            ("error", pa.string()),
+        ]
+    )
+
+
+def files_row(
+    log: str, path: str, size: int, identity: Identity, results: Sequence[SplitResult], error: Optional[str] = None
+) -> Dict[str, Any]:
+    """The `_files` row of a log from its split results (or an `error` when it could not be read):
+    status `unreadable` (error), `truncated` (ends inside a packet), `corrupt` (bad checksums or
+    skipped bytes), else `ok`."""
+    packets = sum(r.packets for r in results)
+    skipped = sum(r.skipped_bytes for r in results)
+    bad = sum(r.bad_checksums for r in results)
+    firsts = [r.first_t_ns for r in results if r.first_t_ns is not None]
+    lasts = [r.last_t_ns for r in results if r.last_t_ns is not None]
+    if error is not None:
+        status = "unreadable"
+    elif any(r.truncated for r in results):
+        status = "truncated"
+    elif skipped or bad:
+        status = "corrupt"
+    else:
+        status = "ok"
+    first = min(firsts) if firsts else None
+    last = max(lasts) if lasts else None
+    return {
+        "log": log,
+        "path": path,
+        "bytes": size,
+        "packets": packets,
+        "skipped_bytes": skipped,
+        "bad_checksums": bad,
+        "first_t_ns": first,
+        "last_t_ns": last,
+        "first_time": None if first is None else first // 1000,
+        "last_time": None if last is None else last // 1000,
+        "model": identity.model,
+        "serial": identity.serial,
+        "firmware": identity.firmware,
+        "status": status,
+        "error": error,
+    }
+
+
+def write_files_row(out_dir: str, row: Dict[str, Any]) -> str:
+    """Write `_files/part-<log>.parquet` (replacing the log's previous row); its relative path."""
+    pa = _need("pyarrow")
+    schema = files_schema()
+    arrays = [pa.array([row[f.name]], type=f.type) for f in schema]
+    table = pa.Table.from_arrays(arrays, schema=schema)
+    table = table.replace_schema_metadata(
+        {META + b"spec_version": _spec_version().encode(), META + b"spec_hash": _spec_hash().encode()}
+    )
+    rel = os.path.join(FILES_TABLE, f"part-{row['log']}.parquet")
+    _write_atomic(pa, os.path.join(out_dir, rel), table)
+    return rel
+
+
+def unreadable_id(path: str) -> str:
+    """The `_files` id of a log that cannot be read: 16 hex digits of the SHA-256 of its path."""
+    return hashlib.sha256(("unreadable:" + path).encode("utf-8", "surrogateescape")).hexdigest()[:16]
+
+
+# ------------------------------------------------------------------------- the local driver
+@dataclass
+class Summary:
+    """What `export_dataset` did: the `_files` rows and the part files written."""
+
+    logs: List[Dict[str, Any]] = field(default_factory=list)
+    parts: List[str] = field(default_factory=list)
+    rows: Dict[str, int] = field(default_factory=dict)
+
+
+def export_log(
+    path: str, out_dir: str, split_bytes: int = SPLIT_BYTES, model: Optional[str] = None, serial: Optional[str] = None
+) -> Tuple[Dict[str, Any], List[str], Dict[str, int]]:
+    """Export one log (every split in turn, then its `_files` row; the log's stale parts
+    removed): (its `_files` row, the parts written, rows per table). A log that cannot be read
+    is a `_files` row with status `unreadable` and its error; a failed write raises OSError."""
+    fallback = Identity(partition_value(model) if model else UNKNOWN, partition_value(serial) if serial else UNKNOWN)
+    try:
+        read_at, size = file_reader(path)
+        log = log_id(path)
+        identity = log_identity(read_at, size, model, serial)
+    except ReadError as e:
+        row = files_row(unreadable_id(path), path, 0, fallback, [], error=str(e))
+        write_files_row(out_dir, row)
+        return row, [], {}
+    results: List[SplitResult] = []
+    parts: List[str] = []
+    rows: Dict[str, int] = {}
+    try:
+        clock = clock_maps(read_at, size, split_bytes)
+        for k, (start, end) in enumerate(splits(size, split_bytes)):
+            data, base = read_split(read_at, size, start, end)
+            r = decode_split(data, base, start, end, clock[k], identity, log, size)
+            parts += write_split(out_dir, r)
+            for name, t in r.tables.items():
+                rows[name] = rows.get(name, 0) + t.num_rows
+            r.tables = {}
+            results.append(r)
+    except ReadError as e:  # read before (the parts written stay: a re-run replaces them)
+        row = files_row(log, path, size, identity, results, error=str(e))
+        write_files_row(out_dir, row)
+        return row, parts, rows
+    remove_parts(out_dir, log, keep=parts)
+    row = files_row(log, path, size, identity, results)
+    write_files_row(out_dir, row)
+    return row, parts, rows
+
+
+def clock_maps(read_at: ReadAt, size: int, split_bytes: int = SPLIT_BYTES) -> List[Any]:
+    """Each split's clock (timebase's two phases: the anchors of every split, `split_anchors`,
+    then `ClockMap.from_splits` gives each split its starting state): `decode_split`'s `clock`."""
+    from . import timebase
+
+    anchors = []
+    for start, end in splits(size, split_bytes):
+        data, base = read_split(read_at, size, start, end)
+        anchors.append(timebase.split_anchors(data, base, start, end))
+    cmap = timebase.ClockMap.from_splits(anchors)
+    return [cmap.split(k) for k in range(len(anchors))]
+
+
+def export_dataset(
+    paths: Sequence[str],
+    out_dir: str,
+    split_bytes: int = SPLIT_BYTES,
+    model: Optional[str] = None,
+    serial: Optional[str] = None,
+) -> Summary:
+    """Export logs into the dataset at `out_dir` (created): each log's parts and `_files` row.
+    A log that cannot be read or decoded is recorded in `_files`; a failed write raises OSError."""
+    os.makedirs(out_dir, exist_ok=True)
+    summary = Summary()
+    for path in paths:
+        row, parts, rows = export_log(path, out_dir, split_bytes, model, serial)
+        summary.logs.append(row)
+        summary.parts += parts
+        for name, n in rows.items():
+            summary.rows[name] = summary.rows.get(name, 0) + n
+    return summary
+
+
+def _need(module: str) -> Any:
+
+    return need(module)
+
+
+__all__ = [
+    "SPLIT_BYTES",
+    "LOOKBACK",
+    "Identity",
+    "ReadError",
+    "SplitResult",
+    "Summary",
+    "log_id",
+    "splits",
+    "split_name",
+    "file_reader",
+    "read_split",
+    "log_identity",
+    "decode_split",
+    "clock_maps",
+    "whole_clock",
+    "write_split",
+    "remove_parts",
+    "files_row",
+    "write_files_row",
+    "export_log",
+    "export_dataset",
+    "table_schema",
+    "samples_schema",
+    "table_names",
+    "column_name",
+]

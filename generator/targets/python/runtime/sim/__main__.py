@@ -1,0 +1,7 @@
+"""python -m <package>.sim: the simulated device (see <package>.sim)."""
+
+import sys
+
+from . import main
+
+sys.exit(main())
