@@ -15,7 +15,7 @@ from generator.settings_rows import setting_rows
 
 
 def device_tables(proto: dict) -> dict:
-    """The tables of a device tool (the C package's tools/device.c, docs/configure-a-device.md):
+    """The tables of a device tool (the C package's tools/device/, docs/configure-a-device.md):
     every setting per device (generator/settings_rows.py, the same derivation as the Python
     package's _settings.py), the enums their parameters name, the largest data size of every data
     field, and the facts of the spec's simulation section the tool uses (identity, descriptor

@@ -1,14 +1,14 @@
-"""The C package's device tool (`mipcodec-device` built from generated/c/mipcodec, tools/device.c;
+"""The C package's device tool (`mipcodec-device` built from generated/c/mipcodec, tools/device/;
 docs/configure-a-device.md "The C tool") against the simulated devices over a pty and TCP, and
 against the Python package's device command line (tests/conformance/test_device_cli.py, whose
 simulator and recording proxy this reuses):
 
-- the same output and exit status as the Python CLI for ping (but the reply time), info, send,
-  settings dump and settings diff, on both MIP models and both transports;
+- the same output and exit status as the Python CLI for ping (but the reply time), info, send
+  and settings dump, on both MIP models and both transports (settings diff and apply: the corpus
+  tests/settings/, run by test_settings_corpus.py for both command lines);
 - dump -> edit -> apply -> diff is empty; a second apply writes nothing (the recording proxy sees
   no write command);
-- refused before any write is sent: a setting the model does not support, a message format over
-  the link budget;
+- a stream over the link budget is refused before any write is sent;
 - stream: the text and JSON lines of the fields asked for, --count;
 - bad settings files (every mutation of a dump tried here): exit 0, 1 or 2, never a crash; exit 2
   with located `FILE:LINE:` lines or one `mipcodec-device:` line; and the YAML subset's refusals.
@@ -106,13 +106,7 @@ def test_same_output_as_the_python_cli(tool: Path, model: str, transport: str, t
         assert (c.returncode, p.returncode) == (0, 0)
         assert cf.read_text() == pf.read_text()
         assert c.stderr.replace(str(cf), "F") == p.stderr.replace(str(pf), "F")
-        # diff of an edited file (written by PyYAML in block style), before anything is applied
-        edited = tmp_path / "edited.yaml"
-        edited.write_text(yaml.safe_dump(_edit(model, yaml.safe_load(cf.read_text())), sort_keys=False))
-        c, p = ctool(tool, a, "settings", "diff", str(edited)), cli(a, "settings", "diff", str(edited))
-        same(c, p, "settings diff")
-        assert c.returncode == 1
-        assert "accel_bias.bias: device [0.0, 0.0, 0.0], file [0.25, 0.0, -0.5]" in c.stdout
+        # settings diff and apply: the corpus (tests/settings/, test_settings_corpus.py)
 
 
 # ------------------------------------------------------------------------------ settings as data
@@ -148,47 +142,21 @@ def test_dump_edit_apply_diff_and_nothing_written_twice(tool: Path, model: str, 
         recorder.close()
 
 
-def test_refused_before_any_write(tool: Path, tmp_path: Path) -> None:
+def test_stream_over_the_budget_is_refused_before_any_write(tool: Path, tmp_path: Path) -> None:
+    """The settings files refused before a write (a setting of another model, a message format
+    over the link budget) are corpus cases (tests/settings/mip/); a stream over the budget is
+    refused the same way, before its format is written (CV7 lines 4099-4127: three 14-byte fields
+    at 1000 Hz need 480000 bit/s, over the device's 115200 baud)."""
     with Sim("cv7_ins", "tcp:127.0.0.1:0") as sim:
         recorder = Recorder(sim.address, "cv7_ins")
         a = recorder.address
-        wrong = tmp_path / "wrong.yaml"
-        wrong.write_text(
-            "device: cv7_ins\n"
-            "sensor_to_vehicle_euler:\n  roll: 0.0\n  pitch: 0.0\n  yaw: 1.0\n"
-            "coning_sculling_enable:\n  enable: true\n"
-            "sensor_range:\n  - sensor: wind\n    setting: 1\n"
-        )
-        run = ctool(tool, a, "settings", "apply", str(wrong))
-        assert run.returncode == 2
-        assert run.stderr.splitlines() == [
-            f"{wrong}:6: coning_sculling_enable is not supported by 3DM-CV7-GNSS/INS (3dm-cv7-ins-docs.txt) (a setting of gx5_45)",
-            f"{wrong}:9: sensor_range.sensor: 'wind' is not a member of SensorRangeType (one of: all, accel, gyro, mag, press) (3DM-CV7-GNSS/INS (3dm-cv7-ins-docs.txt))",
-            "mipcodec-device: 2 problem(s) in the settings file; nothing was written",
-        ]
-        assert cli(a, "settings", "apply", str(wrong)).stderr == run.stderr
-        # over the link budget at the device's 115200 baud (CV7 lines 4099-4127: n (k f_mr + sum S_f f_dr)
-        # with three fields of 12 bytes and their 2-byte headers at 1000 Hz: 10 x (6 x 1000 + 3 x 14 x
-        # 1000) = 480000 bit/s)
         baud = tmp_path / "baud.yaml"
         baud.write_text("uart_baudrate:\n  baud: 115200\n")
         assert ctool(tool, a, "settings", "apply", str(baud)).returncode == 0
         writes = len(recorder.writes())
-        fast = tmp_path / "fast.yaml"
-        fast.write_text(
-            "message_format:\n  - desc_set: 128\n    descriptors:\n"
-            "      - {descriptor: 4, decimation: 1}\n      - {descriptor: 5, decimation: 1}\n"
-            "      - {descriptor: 6, decimation: 1}\n"
-        )
-        run = ctool(tool, a, "settings", "apply", str(fast))
-        assert run.returncode == 2
-        assert "mipcodec-device: total 480000 bit/s of 115200 baud (the device's uart_baudrate) (417%)" in run.stderr
-        assert "link budget exceeded: the message formats need 480000 bit/s" in run.stderr
-        assert len(recorder.writes()) == writes
-        assert cli(a, "settings", "apply", str(fast)).stderr == run.stderr
-        # a stream over the budget is refused too, before its format is written
         run = ctool(tool, a, "stream", "scaled_accel", "scaled_gyro", "scaled_mag", "--count", "1")
         assert run.returncode == 2
+        assert "mipcodec-device: total 480000 bit/s of 115200 baud (the device's uart_baudrate) (417%)" in run.stderr
         assert len(recorder.writes()) == writes
         recorder.close()
 

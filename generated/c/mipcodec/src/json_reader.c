@@ -1,6 +1,8 @@
 /* Reader of canonical JSON lines (no allocation). Generated: do not edit. */
 #include "json_reader.h"
 
+#include "hex.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -88,19 +90,6 @@ static int is_digit(const mipc_jr_t *jr, size_t pos) {
     return pos < jr->len && jr->s[pos] >= '0' && jr->s[pos] <= '9';
 }
 
-static int hex_value(char c) {
-    if (c >= '0' && c <= '9') {
-        return c - '0';
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    return -1;
-}
-
 /* Length of the well-formed UTF-8 sequence at s (RFC 3629: no overlong forms, no surrogates,
  * at most U+10FFFF), or 0. */
 static size_t utf8_length(const unsigned char *s, size_t n) {
@@ -157,7 +146,7 @@ static int scan_string(mipc_jr_t *jr, size_t pos, size_t *end) {
             if (jr->s[i] == 'u') {
                 int k;
                 for (k = 1; k <= 4; k++) {
-                    if (i + (size_t)k >= jr->len || hex_value(jr->s[i + (size_t)k]) < 0) {
+                    if (i + (size_t)k >= jr->len || mipc_hex_value(jr->s[i + (size_t)k]) < 0) {
                         return mipc_jr_fail(jr, "bad \\u escape in a string");
                     }
                 }
@@ -319,8 +308,8 @@ static unsigned string_char(const mipc_jr_t *jr, size_t *i) {
         const char *at_e;
         if (u[1] == 'u') {
             *i += 6;
-            return (unsigned)(hex_value((char)u[2]) << 12 | hex_value((char)u[3]) << 8 |
-                              hex_value((char)u[4]) << 4 | hex_value((char)u[5]));
+            return (unsigned)(mipc_hex_value((char)u[2]) << 12 | mipc_hex_value((char)u[3]) << 8 |
+                              mipc_hex_value((char)u[4]) << 4 | mipc_hex_value((char)u[5]));
         }
         *i += 2;
         at_e = strchr(from, (char)u[1]);
@@ -450,6 +439,48 @@ int mipc_jr_next(mipc_jr_t *jr, size_t *it, size_t *elem) {
     return 1;
 }
 
+int mipc_jr_members(mipc_jr_t *jr, size_t pos, size_t *it) {
+    size_t end;
+    pos = mipc_jr_ws(jr, pos);
+    if (!at(jr, pos, '{')) {
+        return mipc_jr_fail(jr, "expected an object");
+    }
+    if (mipc_jr_skip(jr, pos, &end)) {
+        return -1;
+    }
+    *it = mipc_jr_ws(jr, pos + 1);
+    return 0;
+}
+
+int mipc_jr_next_member(mipc_jr_t *jr, size_t *it, size_t *key, size_t *value) {
+    size_t pos = mipc_jr_ws(jr, *it);
+    size_t key_end;
+    if (at(jr, pos, '}')) {
+        return 0;
+    }
+    if (at(jr, pos, ',')) {
+        pos = mipc_jr_ws(jr, pos + 1);
+    }
+    if (scan_string(jr, pos, &key_end)) {
+        return -1;
+    }
+    *key = pos;
+    *value = mipc_jr_ws(jr, mipc_jr_ws(jr, key_end) + 1);
+    if (skip_value(jr, *value, it, 0)) {
+        return -1;
+    }
+    return 1;
+}
+
+int mipc_jr_number(mipc_jr_t *jr, size_t pos, size_t *end, bool *is_int) {
+    int whole;
+    if (scan_number(jr, mipc_jr_ws(jr, pos), end, &whole)) {
+        return -1;
+    }
+    *is_int = whole != 0;
+    return 0;
+}
+
 /* Magnitude of an integer token; *negative for a leading '-'. Returns 0, or -1 after recording
  * the failure: a literal -1 on every failing path (not mipc_jr_fail's result), so that the
  * compiler sees that *mag and *negative are written whenever 0 is returned (gcc -O3 otherwise
@@ -572,8 +603,8 @@ static int string_bytes(mipc_jr_t *jr, size_t pos, char *out, size_t cap, size_t
                 code = 0x09;
                 break;
             case 'u':
-                code = (unsigned)(hex_value(jr->s[i + 1]) << 12 | hex_value(jr->s[i + 2]) << 8 |
-                                  hex_value(jr->s[i + 3]) << 4 | hex_value(jr->s[i + 4]));
+                code = (unsigned)(mipc_hex_value(jr->s[i + 1]) << 12 | mipc_hex_value(jr->s[i + 2]) << 8 |
+                                  mipc_hex_value(jr->s[i + 3]) << 4 | mipc_hex_value(jr->s[i + 4]));
                 i += 4;
                 break;
             default:
@@ -598,6 +629,10 @@ static int string_bytes(mipc_jr_t *jr, size_t pos, char *out, size_t cap, size_t
         (*n)++;
     }
     return 0;
+}
+
+int mipc_jr_bytes(mipc_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n) {
+    return string_bytes(jr, pos, out, cap, n, "a string");
 }
 
 int mipc_jr_chars(mipc_jr_t *jr, size_t pos, char *out, size_t n) {
@@ -628,7 +663,7 @@ int mipc_jr_hex(mipc_jr_t *jr, size_t pos, uint8_t *out, size_t cap, size_t *n) 
     /* The digits are the string's characters, escapes decoded (§5). */
     for (i = pos + 1; i < end - 1;) {
         unsigned code = string_char(jr, &i);
-        int d = code < 0x80 ? hex_value((char)code) : -1;
+        int d = code < 0x80 ? mipc_hex_value((char)code) : -1;
         if (d < 0) {
             return mipc_jr_fail(jr, "expected hex digits");
         }
@@ -842,7 +877,7 @@ static int number(mipc_jr_t *jr, size_t pos, double *out, uint64_t *bits, int *h
                 size_t i;
                 *bits = 0;
                 for (i = 6; i < n; i++) {
-                    int d = hex_value(text[i]);
+                    int d = mipc_hex_value(text[i]);
                     if (d < 0) {
                         break;
                     }

@@ -3,6 +3,7 @@
 #include "json_writer.h"
 #include "mipcodec/json.h"
 #include "grisu3.h"
+#include "hex.h"
 
 #include <assert.h>
 #include <stdio.h>
@@ -64,15 +65,13 @@ void mipc_jw_int(mipc_jw_t *w, int64_t v) {
     mipc_jw_raw(w, buf, n > 0 ? (size_t)n : 0);
 }
 
-static const char k_hex[] = "0123456789abcdef";
-
 void mipc_jw_hex(mipc_jw_t *w, const uint8_t *bytes, size_t n) {
     size_t i;
     mipc_jw_raw(w, "\"", 1);
     for (i = 0; i < n; i++) {
         char two[2];
-        two[0] = k_hex[bytes[i] >> 4];
-        two[1] = k_hex[bytes[i] & 0x0F];
+        two[0] = mipc_hex_digit(bytes[i] >> 4);
+        two[1] = mipc_hex_digit(bytes[i]);
         mipc_jw_raw(w, two, 2);
     }
     mipc_jw_raw(w, "\"", 1);
@@ -93,8 +92,8 @@ void mipc_jw_string(mipc_jw_t *w, const char *bytes, size_t n) {
             esc[1] = 'u';
             esc[2] = '0';
             esc[3] = '0';
-            esc[4] = k_hex[b >> 4];
-            esc[5] = k_hex[b & 0x0F];
+            esc[4] = mipc_hex_digit(b >> 4u);
+            esc[5] = mipc_hex_digit(b);
             mipc_jw_raw(w, esc, 6);
         } else {
             mipc_jw_raw(w, (const char *)&bytes[i], 1);

@@ -75,8 +75,10 @@ void mipc_result_reply_iter(const mipc_result_t *result, mipc_field_iter_t *it) 
         mipc_field_iter_init(it, result->set, NULL, 0);
         return;
     }
-    mipc_field_iter_init(it, result->set, mipc_packet_payload(result->packet) + result->reply_begin,
-                         result->reply_end - result->reply_begin);
+    /* over the payload up to the reply's end, from its beginning: an entry's offset (a trailing
+     * entry's in its message) is its payload offset, as in every other language */
+    mipc_field_iter_init(it, result->set, mipc_packet_payload(result->packet), result->reply_end);
+    it->pos = result->reply_begin;
 }
 
 bool mipc_result_reply_entry(const mipc_result_t *result, mipc_field_entry_t *entry) {

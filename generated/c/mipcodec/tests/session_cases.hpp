@@ -240,6 +240,20 @@ inline const std::vector<Case> &cases() {
          "{\"line\":1,\"result\":\"invalid\",\"code\":0,\"reply\":[{\"descriptor\":177,\"data\":"
          "\"000000003fc90ff9\",\"error\":\"yaw: needs 4 bytes at offset 8, 0 left\"}],\"error\":\"yaw: needs "
          "4 bytes at offset 8, 0 left\"}\n"},
+        {"bad_field_header_after_the_ack",
+         MIPC_DEVICE_CV7_INS,
+         1000,
+         100,
+         {
+             {0,
+              "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\","
+              "\"values\":{\"function\":2}}]}",
+              nullptr, nullptr},
+             {3, nullptr, nullptr, "75650c0604f1310001b1c4ed"},
+         },
+         "{\"line\":1,\"result\":\"invalid\",\"code\":0,\"reply\":[{\"trailing\":\"01b1\",\"error\":\"field "
+         "length 1 at payload offset 4 is shorter than the field header\"}],\"error\":\"field length 1 at "
+         "payload offset 4 is shorter than the field header\"}\n"},
         {"reply_field_missing",
          MIPC_DEVICE_CV7_INS,
          1000,

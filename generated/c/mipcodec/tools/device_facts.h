@@ -1,4 +1,4 @@
-/* The tables of the device tool (mipcodec-device, tools/device.c; docs/configure-a-device.md): every
+/* The tables of the device tool (mipcodec-device, tools/device/; docs/configure-a-device.md): every
  * setting of every model (a command with the write and read functions that the spec's `settings`
  * section does not exclude; the same derivation as the Python package's _settings.py,
  * generator/settings_rows.py), the enums their parameters name, the largest data size of every data

@@ -48,6 +48,16 @@ int mscipc_jr_get(mscipc_jr_t *jr, size_t pos, const char *key, size_t *value);
 int mscipc_jr_array(mscipc_jr_t *jr, size_t pos, size_t *it);
 int mscipc_jr_next(mscipc_jr_t *jr, size_t *it, size_t *elem);
 
+/* Iterates an object: begin, then next returns 1 per member (the positions of its key, a string,
+ * and of its value), 0 at the end. */
+int mscipc_jr_members(mscipc_jr_t *jr, size_t pos, size_t *it);
+int mscipc_jr_next_member(mscipc_jr_t *jr, size_t *it, size_t *key, size_t *value);
+/* A number's token (the JSON grammar): *end after it; *is_int when it has no fraction or exponent. */
+int mscipc_jr_number(mscipc_jr_t *jr, size_t pos, size_t *end, bool *is_int);
+/* A string of code points U+0000..U+00FF as bytes: *n is the count, of which at most cap are
+ * stored (as the writer's mscipc_jw_string writes bytes). */
+int mscipc_jr_bytes(mscipc_jr_t *jr, size_t pos, char *out, size_t cap, size_t *n);
+
 int mscipc_jr_uint(mscipc_jr_t *jr, size_t pos, uint64_t max, uint64_t *out);
 int mscipc_jr_sint(mscipc_jr_t *jr, size_t pos, int64_t min, int64_t max, int64_t *out);
 int mscipc_jr_null(mscipc_jr_t *jr, size_t pos);

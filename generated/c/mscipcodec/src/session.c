@@ -75,8 +75,10 @@ void mscipc_result_reply_iter(const mscipc_result_t *result, mscipc_field_iter_t
         mscipc_field_iter_init(it, result->set, NULL, 0);
         return;
     }
-    mscipc_field_iter_init(it, result->set, mscipc_packet_payload(result->packet) + result->reply_begin,
-                           result->reply_end - result->reply_begin);
+    /* over the payload up to the reply's end, from its beginning: an entry's offset (a trailing
+     * entry's in its message) is its payload offset, as in every other language */
+    mscipc_field_iter_init(it, result->set, mscipc_packet_payload(result->packet), result->reply_end);
+    it->pos = result->reply_begin;
 }
 
 bool mscipc_result_reply_entry(const mscipc_result_t *result, mscipc_field_entry_t *entry) {

@@ -12,12 +12,12 @@
 #include "mscipcodec/json.h"
 #include "mscipcodec/parser.h"
 #include "mscipcodec/samples.h"
+#include "hex.h" /* the package's src/ (private headers) */
 #include "tool_io.h"
 
 static const char k_usage[] =
     "usage: mscipcodec-decode [--device ID] [--samples] [--decoder general|straight|cached] [FILE|-]\n";
 static const char k_prog[] = "mscipcodec-decode";
-static const char k_hex_digits[] = "0123456789abcdef";
 
 enum {
     k_block = 65536,       /* bytes read at a time */
@@ -77,8 +77,8 @@ static void put_hex(decode_ctx_t *ctx, uint64_t from, uint64_t to) {
     char two[2];
     size_t i;
     for (i = 0; i < n; i++) {
-        two[0] = k_hex_digits[p[i] >> 4];
-        two[1] = k_hex_digits[p[i] & 0x0F];
+        two[0] = mscipc_hex_digit(p[i] >> 4u);
+        two[1] = mscipc_hex_digit(p[i]);
         tool_put(two, 2, &ctx->write_err);
     }
 }

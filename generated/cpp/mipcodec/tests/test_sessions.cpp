@@ -292,6 +292,24 @@ TEST(Sessions, reply_field_that_does_not_decode) {
                        });
 }
 
+// tests/sessions/mip/commands.yaml: bad_field_header_after_the_ack
+TEST(Sessions, bad_field_header_after_the_ack) {
+    check_session_case(
+        "cv7_ins", 1000, 100,
+        {
+            SessionStep{0,
+                        "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_"
+                        "vehicle_euler\",\"values\":{\"function\":2}}]}",
+                        nullptr, nullptr},
+            SessionStep{3, nullptr, nullptr, "75650c0604f1310001b1c4ed"},
+        },
+        {
+            "{\"line\":1,\"result\":\"invalid\",\"code\":0,\"reply\":[{\"trailing\":\"01b1\",\"error\":"
+            "\"field length 1 at payload offset 4 is shorter than the field header\"}],\"error\":\"field "
+            "length 1 at payload offset 4 is shorter than the field header\"}",
+        });
+}
+
 // tests/sessions/mip/commands.yaml: reply_field_missing
 TEST(Sessions, reply_field_missing) {
     check_session_case("cv7_ins", 1000, 100,

@@ -238,29 +238,69 @@ bool utf8(const std::string &s) {
     return true;
 }
 
-} // namespace
-
-int main(int argc, char **argv) {
+// The command line's options.
+struct Args {
     std::string connect;
     long timeout_ms = mipcodec::kDefaultTimeoutMs;
     long baud = 115200;
     long reconnect_ms = 0;
     bool auto_baud = false;
     std::optional<mipcodec::Device> device_id;
-    std::vector<std::string> args(argv + 1, argv + argc);
-    for (const std::string &a : args) {
+};
+
+constexpr int kArgsRead = -1;
+
+// One option's value into args: kArgsRead, or the exit status (the message printed).
+int option_value(const std::string &name, const std::string &value, Args &args) {
+    if (name == "--connect") {
+        args.connect = value;
+    } else if (name == "--timeout-ms") {
+        if (!int_option(value, 1, 600000, args.timeout_ms)) {
+            return option_error("--timeout-ms: expected an integer from 1 to 600000, got " + value);
+        }
+    } else if (name == "--baud") {
+        const std::vector<std::uint32_t> rates = baud_rates();
+        if (!int_option(value, 1, 100000000, args.baud) ||
+            std::find(rates.begin(), rates.end(), static_cast<std::uint32_t>(args.baud)) == rates.end()) {
+            std::string all;
+            for (const std::uint32_t r : rates) {
+                all += (all.empty() ? "" : ", ") + std::to_string(r);
+            }
+            return option_error("--baud: " + value + " is not a baud rate of " + mipcodec::kProtocolName +
+                                " devices (" + all + ")");
+        }
+    } else if (name == "--reconnect-ms") {
+        if (!int_option(value, 1, 3600000, args.reconnect_ms)) {
+            return option_error("--reconnect-ms: expected an integer from 1 to 3600000, got " + value);
+        }
+    } else {
+        args.device_id = mipcodec::device_from_name(value.c_str());
+        if (!args.device_id) {
+            std::string all;
+            for (mipcodec::Device d : mipcodec::kDevices) {
+                all += std::string(all.empty() ? "" : ", ") + mipcodec::device_name(d);
+            }
+            return usage_error("unknown device '" + value + "' (one of: " + all + ")");
+        }
+    }
+    return kArgsRead;
+}
+
+// Every option checked before anything is opened or sent: kArgsRead, or the exit status.
+int read_args(const std::vector<std::string> &argv, Args &args) {
+    for (const std::string &a : argv) {
         if (a == "-h" || a == "--help") {
             std::printf("%s\n", kUsage);
             return 0;
         }
     }
-    for (std::size_t i = 0; i < args.size();) {
-        const std::string a = args[i];
+    for (std::size_t i = 0; i < argv.size();) {
+        const std::string a = argv[i];
         const std::size_t eq = a.find('=');
         const std::string name = a.substr(0, eq);
         std::string value;
         if (a == "--auto-baud") {
-            auto_baud = true;
+            args.auto_baud = true;
             ++i;
             continue;
         }
@@ -269,123 +309,173 @@ int main(int argc, char **argv) {
             return usage_error("unknown argument '" + a + "'");
         }
         if (eq == std::string::npos) {
-            if (i + 1 >= args.size()) {
+            if (i + 1 >= argv.size()) {
                 if (name == "--connect") {
                     return option_error("--connect ADDRESS is required");
                 }
                 return usage_error(name + " needs a value");
             }
-            value = args[i + 1];
+            value = argv[i + 1];
             ++i;
         } else {
             value = a.substr(eq + 1);
         }
         ++i;
-        if (name == "--connect") {
-            connect = value;
-        } else if (name == "--timeout-ms") {
-            if (!int_option(value, 1, 600000, timeout_ms)) {
-                return option_error("--timeout-ms: expected an integer from 1 to 600000, got " + value);
-            }
-        } else if (name == "--baud") {
-            const std::vector<std::uint32_t> rates = baud_rates();
-            if (!int_option(value, 1, 100000000, baud) ||
-                std::find(rates.begin(), rates.end(), static_cast<std::uint32_t>(baud)) == rates.end()) {
-                std::string all;
-                for (const std::uint32_t r : rates) {
-                    all += (all.empty() ? "" : ", ") + std::to_string(r);
-                }
-                return option_error("--baud: " + value + " is not a baud rate of " + mipcodec::kProtocolName +
-                                    " devices (" + all + ")");
-            }
-        } else if (name == "--reconnect-ms") {
-            if (!int_option(value, 1, 3600000, reconnect_ms)) {
-                return option_error("--reconnect-ms: expected an integer from 1 to 3600000, got " + value);
-            }
-        } else {
-            device_id = mipcodec::device_from_name(value.c_str());
-            if (!device_id) {
-                std::string all;
-                for (mipcodec::Device d : mipcodec::kDevices) {
-                    all += std::string(all.empty() ? "" : ", ") + mipcodec::device_name(d);
-                }
-                return usage_error("unknown device '" + value + "' (one of: " + all + ")");
-            }
+        const int status = option_value(name, value, args);
+        if (status != kArgsRead) {
+            return status;
         }
     }
-    if (connect.empty()) {
+    if (args.connect.empty()) {
         return option_error("--connect ADDRESS is required");
+    }
+    return kArgsRead;
+}
+
+// The transport that keeps every byte read until the parser has decided on it: the received bytes
+// not yet decided on, to print skip runs (from stream offset base).
+struct Recording : mipcodec::Transport {
+    mipcodec::Transport &inner;
+    std::vector<std::uint8_t> hist;
+    std::uint64_t base = 0;
+    mipcodec::Connection *device = nullptr;
+    explicit Recording(mipcodec::Transport &t) : inner(t) {}
+    bool write(const std::uint8_t *data, std::size_t size, mipcodec::ErrorText &err) override {
+        return inner.write(data, size, err);
+    }
+    long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
+              mipcodec::ErrorText &err) override {
+        // Bounded: the session keeps retain_from() within a skip piece and a candidate of
+        // the stream's end; the bytes before it are dropped once they are half of what is kept
+        // (each byte moved a bounded number of times).
+        const std::uint64_t keep = device->session().retain_from();
+        if (keep > base && (keep - base) * 2 >= hist.size()) {
+            hist.erase(hist.begin(), hist.begin() + static_cast<std::ptrdiff_t>(keep - base));
+            base = keep;
+        }
+        const long n = inner.read(buffer, capacity, timeout_ms, err);
+        if (n > 0) {
+            hist.insert(hist.end(), buffer, buffer + n);
+        }
+        return n;
+    }
+    bool flush() override {
+        return inner.flush();
+    }
+    std::uint32_t baud() const override {
+        return inner.baud();
+    }
+    bool set_baud(std::uint32_t rate) override {
+        return inner.set_baud(rate);
+    }
+    bool reopen() override {
+        return inner.reopen();
+    }
+    std::string address() const override {
+        return inner.address();
+    }
+    std::string reason() const override {
+        return inner.reason();
+    }
+    bool sleep_ms(std::int64_t ms) override {
+        return inner.sleep_ms(ms);
+    }
+    // The event's line, its skipped bytes read from what is kept.
+    std::string line(const mipcodec::SessionEvent &e,
+                     const std::optional<mipcodec::Device> &device_id) const {
+        return mipcodec::session_event_line(
+            e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - base); });
+    }
+};
+
+// A link line ({"link":"idle"}, {"link":"listen","ms":M}) or a command line, not blank and UTF-8:
+// 0 done, 1 a bad line (reported, the next one runs), 2 the connection is gone (reported: stop).
+int run_line(mipcodec::Connection &dev, const Recording &recording, const std::string &line,
+             unsigned long number, const std::optional<mipcodec::Device> &device_id) {
+    long listen_ms = 0;
+    std::string why;
+    const int link_kind = link_line(line, listen_ms, why);
+    if (link_kind < 0) {
+        std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number, why.c_str());
+        return 1;
+    }
+    if (link_kind == 1) {
+        const mipcodec::Call idle = dev.to_idle();
+        if (idle.io_error || idle.result.status == mipcodec::Status::refused) {
+            std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number,
+                         idle.io_error ? idle.io.c_str() : idle.result.error.c_str());
+            return 2;
+        }
+        mipcodec::Result r = idle.result;
+        r.tag = number;
+        mipcodec::SessionEvent e;
+        e.kind = mipcodec::SessionEvent::Kind::result;
+        e.result = &r;
+        print(recording.line(e, device_id));
+        return 0;
+    }
+    if (link_kind == 2) {
+        mipcodec::ErrorText err;
+        if (!dev.listen(listen_ms, &err)) {
+            std::fprintf(stderr, "%s: %s\n", kProg, err.c_str());
+            return 2;
+        }
+        print("{\"line\":" + std::to_string(number) + ",\"listened\":" + std::to_string(listen_ms) + "}");
+        return 0;
+    }
+    mipcodec::Call call;
+    bool ran = false;
+    std::string error;
+    const bool ok = mipcodec::with_command_from_line(line, error, [&](const auto &command) {
+        mipcodec::StartOptions start;
+        start.tag = number;
+        call = dev.run(command, start);
+        ran = true;
+    });
+    if (!ok && !ran) {
+        std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number, error.c_str());
+        return 1;
+    }
+    if (!call.note.empty()) { // the first unknown-command NACK: the connected model is another one
+        std::fprintf(stderr, "%s: %s\n", kProg, call.note.c_str());
+        std::fflush(stderr);
+    }
+    if (call.io_error) {
+        if (call.lost && dev.connected()) { // reconnected: the command was lost with the port
+            print(lost_line(number, call.io.str()));
+            return 0;
+        }
+        std::fprintf(stderr, "%s: %s\n", kProg, call.io.c_str());
+        return 2;
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    Args args;
+    const int read = read_args(std::vector<std::string>(argv + 1, argv + argc), args);
+    if (read != kArgsRead) {
+        return read;
     }
 #ifdef SIGPIPE
     std::signal(SIGPIPE, SIG_IGN);
 #endif
     std::string error;
-    std::unique_ptr<mipcodec::Transport> transport = mipcodec::open_transport(connect, baud, error);
+    std::unique_ptr<mipcodec::Transport> transport = mipcodec::open_transport(args.connect, args.baud, error);
     if (!transport) {
         std::fprintf(stderr, "%s: %s\n", kProg, error.c_str());
         return 2;
     }
     mipcodec::Session<1>::Options options;
-    options.device = device_id;
-    options.timeout_ms = timeout_ms;
-    // The received bytes not yet decided on, to print skip runs (from stream offset hist_base).
-    std::vector<std::uint8_t> hist;
-    std::uint64_t hist_base = 0;
-    // Keep every byte read until the parser has decided on it (done by wrapping the transport).
-    struct Recording : mipcodec::Transport {
-        mipcodec::Transport &inner;
-        std::vector<std::uint8_t> &hist;
-        std::uint64_t &base;
-        mipcodec::Connection *device = nullptr;
-        Recording(mipcodec::Transport &t, std::vector<std::uint8_t> &h, std::uint64_t &b)
-            : inner(t), hist(h), base(b) {}
-        bool write(const std::uint8_t *data, std::size_t size, mipcodec::ErrorText &err) override {
-            return inner.write(data, size, err);
-        }
-        long read(std::uint8_t *buffer, std::size_t capacity, std::int64_t timeout_ms,
-                  mipcodec::ErrorText &err) override {
-            // Bounded: the session keeps retain_from() within a skip piece and a candidate of
-            // the stream's end; the bytes before it are dropped once they are half of what is kept
-            // (each byte moved a bounded number of times).
-            const std::uint64_t keep = device->session().retain_from();
-            if (keep > base && (keep - base) * 2 >= hist.size()) {
-                hist.erase(hist.begin(), hist.begin() + static_cast<std::ptrdiff_t>(keep - base));
-                base = keep;
-            }
-            const long n = inner.read(buffer, capacity, timeout_ms, err);
-            if (n > 0) {
-                hist.insert(hist.end(), buffer, buffer + n);
-            }
-            return n;
-        }
-        bool flush() override {
-            return inner.flush();
-        }
-        std::uint32_t baud() const override {
-            return inner.baud();
-        }
-        bool set_baud(std::uint32_t rate) override {
-            return inner.set_baud(rate);
-        }
-        bool reopen() override {
-            return inner.reopen();
-        }
-        std::string address() const override {
-            return inner.address();
-        }
-        std::string reason() const override {
-            return inner.reason();
-        }
-        bool sleep_ms(std::int64_t ms) override {
-            return inner.sleep_ms(ms);
-        }
-    };
-    Recording recording(*transport, hist, hist_base);
+    options.device = args.device_id;
+    options.timeout_ms = args.timeout_ms;
+    Recording recording(*transport);
     mipcodec::Connection dev(recording, options);
     recording.device = &dev;
     dev.on_event([&](const mipcodec::SessionEvent &e) {
-        const std::string line = mipcodec::session_event_line(
-            e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); });
+        const std::string line = recording.line(e, args.device_id);
         std::fwrite(line.data(), 1, line.size(), stdout);
         std::fputc('\n', stdout);
         std::fflush(stdout);
@@ -395,9 +485,9 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "%s\n", text.c_str());
         std::fflush(stderr);
     };
-    link.reconnect_ms = reconnect_ms;
+    link.reconnect_ms = args.reconnect_ms;
     dev.link_options(link);
-    if (auto_baud && recording.baud() != 0) {
+    if (args.auto_baud && recording.baud() != 0) {
         const mipcodec::Call found = dev.find_baud();
         if (!found.ok()) {
             std::fprintf(stderr, "%s: %s\n", kProg,
@@ -426,64 +516,11 @@ int main(int argc, char **argv) {
         if (blank(line)) {
             continue;
         }
-        long listen_ms = 0;
-        std::string why;
-        const int link_kind = link_line(line, listen_ms, why);
-        if (link_kind < 0) {
-            std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number, why.c_str());
-            status = 1;
-            continue;
-        }
-        if (link_kind == 1) {
-            const mipcodec::Call idle = dev.to_idle();
-            if (idle.io_error || idle.result.status == mipcodec::Status::refused) {
-                std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number,
-                             idle.io_error ? idle.io.c_str() : idle.result.error.c_str());
-                return 2;
-            }
-            mipcodec::Result r = idle.result;
-            r.tag = number;
-            mipcodec::SessionEvent e;
-            e.kind = mipcodec::SessionEvent::Kind::result;
-            e.result = &r;
-            print(mipcodec::session_event_line(
-                e, device_id, [&](std::uint64_t offset) { return hist.data() + (offset - hist_base); }));
-            continue;
-        }
-        if (link_kind == 2) {
-            mipcodec::ErrorText err;
-            if (!dev.listen(listen_ms, &err)) {
-                std::fprintf(stderr, "%s: %s\n", kProg, err.c_str());
-                return 2;
-            }
-            print("{\"line\":" + std::to_string(number) + ",\"listened\":" + std::to_string(listen_ms) + "}");
-            continue;
-        }
-        mipcodec::Call call;
-        bool ran = false;
-        const bool ok = mipcodec::with_command_from_line(line, error, [&](const auto &command) {
-            mipcodec::StartOptions start;
-            start.tag = number;
-            call = dev.run(command, start);
-            ran = true;
-        });
-        if (!ok && !ran) {
-            std::fprintf(stderr, "%s: line %lu: %s\n", kProg, number, error.c_str());
-            status = 1;
-            continue;
-        }
-        if (!call.note.empty()) { // the first unknown-command NACK: the connected model is another one
-            std::fprintf(stderr, "%s: %s\n", kProg, call.note.c_str());
-            std::fflush(stderr);
-        }
-        if (call.io_error) {
-            if (call.lost && dev.connected()) { // reconnected: the command was lost with the port
-                print(lost_line(number, call.io.str()));
-                continue;
-            }
-            std::fprintf(stderr, "%s: %s\n", kProg, call.io.c_str());
+        const int outcome = run_line(dev, recording, line, number, args.device_id);
+        if (outcome == 2) {
             return 2;
         }
+        status = outcome != 0 ? outcome : status;
     }
     dev.close();
     return status;

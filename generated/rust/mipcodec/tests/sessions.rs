@@ -419,6 +419,23 @@ fn session_reply_field_that_does_not_decode() {
     );
 }
 
+/// `bad_field_header_after_the_ack`
+#[test]
+fn session_bad_field_header_after_the_ack() {
+    check(
+        Some("cv7_ins"),
+        1000,
+        100,
+        &[
+            Step::Send { at: 0, line: "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":49,\"name\":\"sensor_to_vehicle_euler\",\"values\":{\"function\":2}}]}", bytes: None },
+            Step::Receive { at: 3, hex: "75650c0604f1310001b1c4ed" },
+        ],
+        &[
+            "{\"line\":1,\"result\":\"invalid\",\"code\":0,\"reply\":[{\"trailing\":\"01b1\",\"error\":\"field length 1 at payload offset 4 is shorter than the field header\"}],\"error\":\"field length 1 at payload offset 4 is shorter than the field header\"}",
+        ],
+    );
+}
+
 /// `reply_field_missing`
 #[test]
 fn session_reply_field_missing() {

@@ -80,7 +80,8 @@ typedef struct {
     const char *error; /* invalid, refused, transport: why (NUL-terminated); else "" */
 } mscipc_result_t;
 
-/** Iterates the reply field entries of a result (none unless it has a packet). */
+/** Iterates the reply field entries of a result (none unless it has a packet); entry offsets are
+ * payload offsets. */
 void mscipc_result_reply_iter(const mscipc_result_t *result, mscipc_field_iter_t *it);
 /** The typed reply entry: the first reply entry whose descriptor is expected, else the first
  * field entry. Returns false when there is none. */

@@ -2,6 +2,8 @@
  * heap. */
 #include "codec/link.h"
 
+#include "hex.h"
+
 #include <assert.h>
 #include <string.h>
 
@@ -254,7 +256,6 @@ static bool ascii_alnum(uint8_t c) {
 }
 
 bool codec_link_model_note(codec_device_t told, const uint8_t *name, size_t len, char *out, size_t cap) {
-    static const char hex[] = "0123456789abcdef";
     uint8_t plain[256];
     size_t n = 0;
     size_t a = 0;
@@ -301,8 +302,8 @@ bool codec_link_model_note(codec_device_t told, const uint8_t *name, size_t len,
         } else {
             shown[0] = '\\';
             shown[1] = 'x';
-            shown[2] = hex[c >> 4];
-            shown[3] = hex[c & 0x0Fu];
+            shown[2] = codec_hex_digit(c >> 4u);
+            shown[3] = codec_hex_digit(c);
             shown[4] = '\0';
         }
         line_add(&l, shown);

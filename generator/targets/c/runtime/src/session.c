@@ -74,8 +74,10 @@ void codec_result_reply_iter(const codec_result_t *result, codec_field_iter_t *i
         codec_field_iter_init(it, result->set, NULL, 0);
         return;
     }
-    codec_field_iter_init(it, result->set, codec_packet_payload(result->packet) + result->reply_begin,
-                          result->reply_end - result->reply_begin);
+    /* over the payload up to the reply's end, from its beginning: an entry's offset (a trailing
+     * entry's in its message) is its payload offset, as in every other language */
+    codec_field_iter_init(it, result->set, codec_packet_payload(result->packet), result->reply_end);
+    it->pos = result->reply_begin;
 }
 
 bool codec_result_reply_entry(const codec_result_t *result, codec_field_entry_t *entry) {

@@ -487,36 +487,34 @@ static bool utf8_ok(const unsigned char *s, size_t n) {
     return true;
 }
 
-int main(int argc, char **argv) {
-    const char *connect = NULL;
-    unsigned long timeout_ms = CODEC_SESSION_DEFAULT_TIMEOUT_MS;
-    unsigned long baud = 115200;
-    unsigned long reconnect_ms = 0;
-    unsigned long ms = 0;
-    codec_result_kind_t kind;
-    bool auto_baud = false;
-    codec_port_t port;
-    codec_link_options_t link_options;
-    codec_device_t device = CODEC_DEVICE_ANY;
-    codec_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
-    recorder_t rec;
-    codec_transport_t transport;
-    codec_session_config_t config;
-    static codec_link_t link;
-    static tool_t tool;
-    size_t len = 0;
-    int got;
-    unsigned long number = 0;
-    int status = 0;
+/* The command line's options. */
+typedef struct {
+    const char *connect;
+    unsigned long timeout_ms;
+    unsigned long baud;
+    unsigned long reconnect_ms;
+    bool auto_baud;
+    codec_device_t device;
+} args_t;
+
+#define ARGS_READ (-1)
+
+/* Every option checked before anything is opened or sent (docs/conformance.md section 8, the
+ * option table: exit status 2 and one line): ARGS_READ, or the exit status. */
+static int read_args(int argc, char **argv, args_t *args) {
     int i;
+    args->connect = NULL;
+    args->timeout_ms = CODEC_SESSION_DEFAULT_TIMEOUT_MS;
+    args->baud = 115200;
+    args->reconnect_ms = 0;
+    args->auto_baud = false;
+    args->device = CODEC_DEVICE_ANY;
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
             printf("%s\n", USAGE);
             return 0;
         }
     }
-    /* every option checked before anything is opened or sent (docs/conformance.md section 8, the
-       option table: exit status 2 and one line) */
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *eq = strchr(a, '=');
@@ -524,7 +522,7 @@ int main(int argc, char **argv) {
         const char *value;
         size_t n = eq ? (size_t)(eq - a) : strlen(a);
         if (strcmp(a, "--auto-baud") == 0) {
-            auto_baud = true;
+            args->auto_baud = true;
             continue;
         }
         if (n >= sizeof name) {
@@ -545,36 +543,123 @@ int main(int argc, char **argv) {
             return usage_error("%s needs a value", name);
         }
         if (strcmp(name, "--connect") == 0) {
-            connect = value;
+            args->connect = value;
         } else if (strcmp(name, "--timeout-ms") == 0) {
-            if (!decimal(value, 1, TOOL_TIMEOUT_MAX, &timeout_ms)) {
+            if (!decimal(value, 1, TOOL_TIMEOUT_MAX, &args->timeout_ms)) {
                 fprintf(stderr, PROG ": --timeout-ms: expected an integer from 1 to %lu, got %s\n",
                         TOOL_TIMEOUT_MAX, value);
                 return 2;
             }
         } else if (strcmp(name, "--baud") == 0) {
-            if (!baud_option(value, &baud)) {
+            if (!baud_option(value, &args->baud)) {
                 return 2;
             }
         } else if (strcmp(name, "--reconnect-ms") == 0) {
-            if (!decimal(value, 1, TOOL_RECONNECT_MAX, &reconnect_ms)) {
+            if (!decimal(value, 1, TOOL_RECONNECT_MAX, &args->reconnect_ms)) {
                 fprintf(stderr, PROG ": --reconnect-ms: expected an integer from 1 to %lu, got %s\n",
                         TOOL_RECONNECT_MAX, value);
                 return 2;
             }
-        } else if (!codec_device_from_id(value, &device) || device == CODEC_DEVICE_ANY) {
+        } else if (!codec_device_from_id(value, &args->device) || args->device == CODEC_DEVICE_ANY) {
             return usage_error("unknown device '%s'", value);
         }
     }
-    if (connect == NULL) {
+    if (args->connect == NULL) {
         fprintf(stderr, PROG ": --connect ADDRESS is required\n");
         return 2;
     }
-    if (codec_native_open(&posix, connect, baud) != CODEC_OK) {
+    return ARGS_READ;
+}
+
+/* One input line, not blank and UTF-8: 0 done, 1 a bad line (reported, the next one runs), 2 the
+ * connection is gone (reported: the tool stops). */
+static int run_line(codec_link_t *link, const codec_native_t *posix, const char *line, size_t len,
+                    unsigned long number, codec_device_t device) {
+    codec_field_value_t command;
+    codec_command_facts_t facts;
+    codec_start_options_t opt;
+    codec_result_kind_t kind;
+    char msg[CODEC_ERROR_MESSAGE_MAX + 200];
+    unsigned long ms = 0;
+    switch (link_line(line, len, &ms)) {
+    case LINK_IDLE:
+        if (codec_link_to_idle(link) == CODEC_RESULT_REFUSED || !link->connected) {
+            fprintf(stderr, PROG ": line %lu: %s\n", number, link->result.error);
+            return 2;
+        }
+        print_result(&link->result, number, device);
+        return 0;
+    case LINK_LISTEN:
+        if (codec_link_listen(link, (uint32_t)ms) < 0) {
+            fprintf(stderr, PROG ": %s\n", posix->error);
+            return 2;
+        }
+        printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
+        fflush(stdout);
+        return 0;
+    case LINK_BAD_MS:
+        fprintf(stderr, PROG ": line %lu: \"ms\" must be an integer from 0 to %lu\n", number,
+                TOOL_LISTEN_MAX);
+        return 1;
+    case LINK_BAD:
+        fprintf(stderr, PROG ": line %lu: expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}\n",
+                number);
+        return 1;
+    default:
+        break;
+    }
+    if (codec_json_command_line(line, len, &command, msg, sizeof msg) != CODEC_OK) {
+        fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
+        return 1;
+    }
+    if (!codec_command_facts(&command, &facts)) {
+        const codec_layout_info_t *info = codec_layout_info(command.id);
+        fprintf(stderr, PROG ": line %lu: %s (descriptor %u) is not a command\n", number,
+                info ? info->name : "?", info ? (unsigned)info->descriptor : 0u);
+        return 1;
+    }
+    codec_start_options_init(&opt);
+    opt.tag = number;
+    kind = codec_link_run(link, &command, &opt, NULL);
+    if (link->note[0] != '\0') { /* the first unknown-command NACK: the connected model is another one */
+        fprintf(stderr, PROG ": %s\n", link->note);
+        fflush(stderr);
+    }
+    if (kind == CODEC_RESULT_LOST && link->connected) { /* reconnected: the command was lost */
+        print_result(&link->result, number, device);
+        return 0;
+    }
+    if (kind == CODEC_RESULT_TRANSPORT || kind == CODEC_RESULT_LOST) {
+        fprintf(stderr, PROG ": %s\n", posix->error);
+        return 2;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv) {
+    args_t args;
+    codec_result_kind_t kind;
+    codec_port_t port;
+    codec_link_options_t link_options;
+    codec_native_t posix; /* the platform's transport: POSIX, or Win32 on Windows */
+    recorder_t rec;
+    codec_transport_t transport;
+    codec_session_config_t config;
+    static codec_link_t link;
+    static tool_t tool;
+    size_t len = 0;
+    int got;
+    unsigned long number = 0;
+    int status = read_args(argc, argv, &args);
+    if (status != ARGS_READ) {
+        return status;
+    }
+    status = 0;
+    if (codec_native_open(&posix, args.connect, args.baud) != CODEC_OK) {
         fprintf(stderr, PROG ": %s\n", posix.error);
         return 2;
     }
-    tool.device = device;
+    tool.device = args.device;
     codec_native_transport(&posix, &rec.inner);
     rec.tool = &tool;
     transport.ctx = &rec;
@@ -582,8 +667,8 @@ int main(int argc, char **argv) {
     transport.write = rec_write;
     transport.now_ms = rec_now;
     codec_session_config_init(&config);
-    config.device = device;
-    config.timeout_ms = (uint32_t)timeout_ms;
+    config.device = args.device;
+    config.timeout_ms = (uint32_t)args.timeout_ms;
     config.on_event = on_event;
     config.ctx = &tool;
     if (codec_link_init(&link, &transport, &config) != CODEC_OK) {
@@ -593,11 +678,11 @@ int main(int argc, char **argv) {
     codec_native_port(&posix, &port);
     codec_link_options_init(&link_options);
     link_options.log = log_line;
-    link_options.reconnect_ms = (uint32_t)reconnect_ms;
-    link_options.auto_baud = auto_baud;
+    link_options.reconnect_ms = (uint32_t)args.reconnect_ms;
+    link_options.auto_baud = args.auto_baud;
     codec_link_attach(&link, &port, &link_options);
     tool.parser = &link.session.parser;
-    if (auto_baud && port.set_baud != NULL) {
+    if (args.auto_baud && port.set_baud != NULL) {
         kind = codec_link_find_baud(&link);
         if (kind != CODEC_RESULT_ACK) {
             fprintf(stderr, PROG ": %s\n", kind == CODEC_RESULT_TRANSPORT ? posix.error : link.result.error);
@@ -606,85 +691,27 @@ int main(int argc, char **argv) {
         }
     }
     while ((got = read_line(&len)) != 0) {
-        const char *line = g_input;
-        codec_field_value_t command;
-        codec_command_facts_t facts;
-        codec_start_options_t opt;
-        char msg[CODEC_ERROR_MESSAGE_MAX + 200];
+        int outcome;
         number++;
         if (got < 0) {
             fprintf(stderr, PROG ": line %lu: longer than %u bytes\n", number, (unsigned)TOOL_LINE_MAX);
             status = 1;
             continue;
         }
-        if (!utf8_ok((const unsigned char *)line, len)) {
+        if (!utf8_ok((const unsigned char *)g_input, len)) {
             fprintf(stderr, PROG ": line %lu: not UTF-8\n", number);
             status = 1;
             continue;
         }
-        if (blank(line, len)) {
+        if (blank(g_input, len)) {
             continue;
         }
-        switch (link_line(line, len, &ms)) {
-        case LINK_IDLE:
-            if (codec_link_to_idle(&link) == CODEC_RESULT_REFUSED || !link.connected) {
-                fprintf(stderr, PROG ": line %lu: %s\n", number, link.result.error);
-                codec_native_close(&posix);
-                return 2;
-            }
-            print_result(&link.result, number, device);
-            continue;
-        case LINK_LISTEN:
-            if (codec_link_listen(&link, (uint32_t)ms) < 0) {
-                fprintf(stderr, PROG ": %s\n", posix.error);
-                codec_native_close(&posix);
-                return 2;
-            }
-            printf("{\"line\":%lu,\"listened\":%lu}\n", number, ms);
-            fflush(stdout);
-            continue;
-        case LINK_BAD_MS:
-            fprintf(stderr, PROG ": line %lu: \"ms\" must be an integer from 0 to %lu\n", number,
-                    TOOL_LISTEN_MAX);
-            status = 1;
-            continue;
-        case LINK_BAD:
-            fprintf(stderr,
-                    PROG ": line %lu: expected {\"link\":\"idle\"} or {\"link\":\"listen\",\"ms\":M}\n",
-                    number);
-            status = 1;
-            continue;
-        default:
-            break;
-        }
-        if (codec_json_command_line(line, len, &command, msg, sizeof msg) != CODEC_OK) {
-            fprintf(stderr, PROG ": line %lu: %s\n", number, msg);
-            status = 1;
-            continue;
-        }
-        if (!codec_command_facts(&command, &facts)) {
-            const codec_layout_info_t *info = codec_layout_info(command.id);
-            fprintf(stderr, PROG ": line %lu: %s (descriptor %u) is not a command\n", number,
-                    info ? info->name : "?", info ? (unsigned)info->descriptor : 0u);
-            status = 1;
-            continue;
-        }
-        codec_start_options_init(&opt);
-        opt.tag = number;
-        kind = codec_link_run(&link, &command, &opt, NULL);
-        if (link.note[0] != '\0') { /* the first unknown-command NACK: the connected model is another one */
-            fprintf(stderr, PROG ": %s\n", link.note);
-            fflush(stderr);
-        }
-        if (kind == CODEC_RESULT_LOST && link.connected) { /* reconnected: the command was lost */
-            print_result(&link.result, number, device);
-            continue;
-        }
-        if (kind == CODEC_RESULT_TRANSPORT || kind == CODEC_RESULT_LOST) {
-            fprintf(stderr, PROG ": %s\n", posix.error);
+        outcome = run_line(&link, &posix, g_input, len, number, args.device);
+        if (outcome == 2) {
             codec_native_close(&posix);
             return 2;
         }
+        status = outcome ? outcome : status;
     }
     codec_link_close(&link);
     codec_native_close(&posix);
