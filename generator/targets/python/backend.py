@@ -995,7 +995,14 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             if f["role"] == "command":
                 by_name.setdefault(f["name"], []).append(cls)
                 facts_ = simulation.command_facts(proto, v, py_attr)
-                commands.append({"cls": cls, "sends": pyrepr(facts_["sends"]), "enums": pyrepr(facts_["enums"])})
+                commands.append(
+                    {
+                        "cls": cls,
+                        "sends": pyrepr(facts_["sends"]),
+                        "enums": pyrepr(facts_["enums"]),
+                        "ignored": pyrepr(facts_["ignored"]) if facts_["ignored"] else None,
+                    }
+                )
                 for dev, factory in facts_["factory"].items():  # as its manual states them
                     defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
             elif s["kind"] == "data" or f["role"] == "data":
