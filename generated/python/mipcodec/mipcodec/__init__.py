@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "844ee5c148380544"
+SPEC_HASH = "f69cc75263eaaaa3"
 
 __all__ = [
     "SPEC_HASH",

@@ -1595,9 +1595,11 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
         system.CommunicationMode: {"mode": 1},
     },
     "cv7_ins": {
+        base.CommPortSpeed: {"baud": 115200},
         threedm.EventControl: {"mode": 0},
         threedm.EventTriggerConfig: {"type": 0},
         threedm.EventActionConfig: {"type": 0},
+        threedm.UartBaudrate: {"baud": 115200},
         threedm.GpioConfig: {"feature": 0},
         threedm.AdvancedLowpassFilter: {"enable": True, "manual": False},
         threedm.ComplementaryFilter: {"pitch_roll_time_constant": 10.0, "heading_time_constant": 10.0},
