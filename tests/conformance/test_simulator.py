@@ -688,11 +688,11 @@ def test_identity_defaults_and_flags() -> None:
             info = dev.base.get_device_info().info
         finally:
             dev.transport.close()
-    # the GX5-45 manual's example reply (3dm-gx5-45-dcp.txt line 785)
+    # the GX5-45 manual's example reply (3dm-gx5-45-dcp.txt line 785), model number 6251 (line 1349)
     assert info.firmware_version == 0x05FE and info.serial_number.strip() == b"6232-00122"
     assert (info.model_name.strip(), info.model_number.strip(), info.device_options.strip()) == (
         b"3DM-GX5-45",
-        b"6232-4270",
+        b"6251-4270",  # the model number Device Status states (line 1349; docs/errata.md)
         b"5g, 150d/s",
     )
     flags = ["--serial", "SN-42", "--lot", "L7", "--options", "2g, 75d/s", "--firmware", "1209"]

@@ -185,3 +185,28 @@ def test_no_read_reports_a_value_the_device_cannot_hold(device: str) -> None:
                             assert _holdable(got, q, types, rates), (f["name"], q["name"], got)
                         checked += 1
     assert checked > 10
+
+
+def test_the_model_number_read_selects_the_device_status_structure() -> None:
+    """The GX5-45's Device Status section: its model number "is always = 6251 (0x186B)"
+    (3dm-gx5-45-dcp.txt:1341, 1349, 1386). The model number the simulated Device Information
+    reports, passed to Device Status as a client does, is that number, and Device Status answers
+    with the GX5-45's structure (docs/errata.md: the example reply at line 786 says 6232)."""
+    sim = sim_mod.Simulator("gx5_45", scenario="static")
+    info = [v for v in _values(sim, pkg.base.GetDeviceInfo()) if isinstance(v, pkg.base.DeviceInfo)]
+    number = int(info[0].info.model_number.strip().split(b"-")[0])
+    assert number == 6251
+    selector = pkg.types.DeviceStatusSelector.BASIC
+    status = _values(sim, pkg.threedm.DeviceStatus(model_number=number, status_selector=selector))
+    reply = next(v for v in status if isinstance(v, pkg.threedm.DeviceStatusResponse))
+    assert reply.model_number == 6251 and reply.status_selector == selector
+
+
+def _values(sim, command) -> list:
+    """The reply values (after the ack) of one command fed to the simulator, the ack checked OK."""
+    out = []
+    for _when, data in sim.feed(raw_packet(command.SET, command.DESCRIPTOR, command.encode()), 0.0):
+        fields = [f.value for f in pkg.packets.decode_packet(data, device=sim.device).fields]
+        assert int(getattr(fields[0], sim_mod._meta.ACK_CODE)) == sim_mod._meta.ACK_OK, fields
+        out.extend(fields[1:])
+    return out

@@ -1546,7 +1546,7 @@ IDENTITY: Dict[str, Dict[str, Any]] = {
     "gx5_45": {
         "firmware": 1534,
         "model_name": "3DM-GX5-45",
-        "model_number": "6232-4270",
+        "model_number": "6251-4270",
         "serial_number": "6232-00122",
         "lot_number": "",
         "options": "5g, 150d/s",
