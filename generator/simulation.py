@@ -127,9 +127,14 @@ def command_facts(proto: dict, v: dict, param: Callable[[str], str]) -> dict:
             return q["default"]["value"]
         return q["plausible"]["value"] if q.get("plausible") else None
 
-    factory = {
-        dev: {param(q["name"]): x for q in qs if (x := factory_value(q, dev)) is not None} for dev in v["devices"]
-    }
+    factory = {}
+    for dev in v["devices"]:
+        values = {param(q["name"]): x for q in qs if (x := factory_value(q, dev)) is not None}
+        for q in qs:  # a counted list's count parameter: the number of its records
+            count = q["count"] or {}
+            if count.get("kind") == "param" and isinstance(values.get(param(q["name"])), list):
+                values.setdefault(param(count["param"]), len(values[param(q["name"])]))
+        factory[dev] = values
     return {
         "ignored": {fn: names for fn, names in ignored.items() if names},
         "sends": sends,

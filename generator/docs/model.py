@@ -395,7 +395,9 @@ class Docs:
                             elif q.get("plausible"):
                                 pl = q["plausible"]
                                 cells.append("plausible " + code(str(pl["value"])))
-                                plausible.append(f"{link} {code(q['name'])} = {code(str(pl['value']))}: {esc(pl['why'])}")
+                                plausible.append(
+                                    f"{link} {code(q['name'])} = {code(str(pl['value']))}: {esc(pl['why'])}"
+                                )
                             else:
                                 cells.append("assumed 0")
                                 assumed[dev["id"]].append(f"{link} {code(q['name'])}")

@@ -464,6 +464,19 @@ def _plausible(
 def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: str, tref: dict, item):
     kind = tref["kind"]
     bad = f"{owner}: default of {name}: {item!r} is not a value of {tref.get('name', kind)}"
+    if kind == "struct":  # one record of a counted struct list: every member, each checked
+        members = ctx.types.get(tref["name"], {}).get("params", [])
+        names = [m["name"] for m in members]
+        if not isinstance(item, dict) or sorted(item) != sorted(names):
+            ctx.err(sf, where, bad, "a record naming every member: " + ", ".join(names))
+            return None
+        record = {}
+        for m in members:
+            v = _default_item(ctx, sf, where, owner, f"{name}.{m['name']}", m["type"], item[m["name"]])
+            if v is None:
+                return None
+            record[m["name"]] = v
+        return record
     if kind == "enum":
         values = ctx.types.get(tref["name"], {}).get("values", [])
         for v in values:

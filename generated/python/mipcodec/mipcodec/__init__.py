@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "36b6b86eda4256be"
+SPEC_HASH = "46dde505d5457225"
 
 __all__ = [
     "SPEC_HASH",

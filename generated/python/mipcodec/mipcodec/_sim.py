@@ -24,6 +24,7 @@ from . import (
     system,
     system_data,
     threedm,
+    types,
 )
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
@@ -1586,6 +1587,24 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
             "heading_time_constant": 10.0,
         },
         threedm.DataStreamControl_gx5_45: {"enable": 1},
+        threedm.GnssConstellationSettings: {
+            "max_channels": 32,
+            "settings": [
+                types.ConstellationSettings(
+                    constellation_id=0, enable=1, reserved_channels=8, max_channels=16, option_flags=0
+                ),
+                types.ConstellationSettings(
+                    constellation_id=6, enable=1, reserved_channels=8, max_channels=14, option_flags=0
+                ),
+                types.ConstellationSettings(
+                    constellation_id=1, enable=0, reserved_channels=1, max_channels=3, option_flags=0
+                ),
+                types.ConstellationSettings(
+                    constellation_id=5, enable=0, reserved_channels=0, max_channels=3, option_flags=0
+                ),
+            ],
+            "config_count": 4,
+        },
         threedm.GnssSbasSettings: {"enable_sbas": 1, "sbas_options": 3},
         threedm.GnssAssistedFixControl: {"option": 0, "flags": 255},
         filter.VehicleDynamicsMode: {"mode": 1},
