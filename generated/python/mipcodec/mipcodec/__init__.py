@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "46dde505d5457225"
+SPEC_HASH = "178217d214dbf841"
 
 __all__ = [
     "SPEC_HASH",
