@@ -1050,7 +1050,9 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             for c in by_name.get(a["command"], [])
         ],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
-        "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())),
+        "sim_modules": sorted(
+            {sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())
+        ),
         **_sim_identity(proto, sets),
     }
 
@@ -1070,7 +1072,8 @@ def _records(factory: dict, v: dict, proto: dict) -> dict:
     for attr, name in structs.items():
         if isinstance(out.get(attr), list):
             out[attr] = [
-                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={x!r}" for k, x in r.items()) + ")") for r in out[attr]
+                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={x!r}" for k, x in r.items()) + ")")
+                for r in out[attr]
             ]
     return out
 
