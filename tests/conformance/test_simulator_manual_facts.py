@@ -6,7 +6,8 @@
    same without the ignored bytes, with zeros in them and with 0xFF in them (an enum value, a
    bool and a baud rate no device has), and a read after it reports the same setting.
 2. Plausible values: no read of a simulated setting reports a placeholder the device cannot hold
-   (an enum value outside its enum, a baud rate outside the port's rates).
+   (an enum value outside its enum, a baud rate outside the port's rates, a noise 1-sigma that is
+   not greater than 0).
 3. Identity: the model number the simulated Device Information reports selects the device's own
    Device Status structure.
 """
@@ -154,6 +155,8 @@ def _holdable(value, q: dict, types: dict, rates: set) -> bool:
         return all(isinstance(x, Enum) for x in items)
     if q.get("units") == "bit/s" and rates:
         return all(int(x) in rates for x in items)
+    if "noise 1-sigma" in q["description"]:  # "must be greater than 0.0" (3dm-gx5-45-dcp.txt:1792, cv7:8339)
+        return all(float(x) > 0.0 for x in items)
     return True
 
 
@@ -210,3 +213,23 @@ def _values(sim, command) -> list:
         assert int(getattr(fields[0], sim_mod._meta.ACK_CODE)) == sim_mod._meta.ACK_OK, fields
         out.extend(fields[1:])
     return out
+
+
+def test_the_initial_state_follows_the_defaults_stated_in_sentences() -> None:
+    """Defaults the manuals state in sentences, read from fresh simulated devices: the GX5-45's
+    "Factory default setting is GPS and GLONASS enabled with min/max of GPS 8/16, GLONASS 8/14,
+    SBAS 1/3, QZSS 0/3" (3dm-gx5-45-dcp.txt:1106), the CV7's complementary filter "The default
+    time constant is 10 seconds" (3dm-cv7-ins-docs.txt:7594) and its axes "In its default state
+    ... aligned with the vehicle frame" (3dm-cv7-ins-docs.txt:154): a unit quaternion."""
+    read = FUNCTIONS["read"]
+    gx5 = sim_mod.Simulator("gx5_45", scenario="static")
+    (reply,) = _values(gx5, pkg.threedm.GnssConstellationSettings(function=read))
+    records = {r.constellation_id.name: (r.enable, r.reserved_channels, r.max_channels) for r in reply.settings}
+    assert records == {"GPS": (1, 8, 16), "GLONASS": (1, 8, 14), "SBAS": (0, 1, 3), "QZSS": (0, 0, 3)}
+    cv7 = sim_mod.Simulator("cv7_ins", scenario="static")
+    (reply,) = _values(cv7, pkg.threedm.ComplementaryFilter(function=read))
+    assert (reply.pitch_roll_time_constant, reply.heading_time_constant) == (10.0, 10.0)
+    (reply,) = _values(cv7, pkg.threedm.SensorToVehicleQuaternion(function=read))
+    assert list(reply.q) == [1.0, 0.0, 0.0, 0.0]
+    (reply,) = _values(cv7, pkg.threedm.SensorToVehicleDcm(function=read))
+    assert list(reply.dcm) == [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]

@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "178217d214dbf841"
+SPEC_HASH = "43f53db45cae41a5"
 
 __all__ = [
     "SPEC_HASH",
