@@ -233,3 +233,21 @@ def test_the_initial_state_follows_the_defaults_stated_in_sentences() -> None:
     assert list(reply.q) == [1.0, 0.0, 0.0, 0.0]
     (reply,) = _values(cv7, pkg.threedm.SensorToVehicleDcm(function=read))
     assert list(reply.dcm) == [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+
+
+def test_the_ms_imu3020_reads_a_decimation_and_a_baud_rate_it_can_hold() -> None:
+    """MS-IMU3020: the decimation divides the internal rate (ms-cip-doc00419-revM.txt:664), so 0 is
+    no value it can hold; the baud rate is one of Table 20 (line 539)."""
+    mscip = python_package("mscipcodec")
+    msim = importlib.import_module("mscipcodec.sim")
+    cfg = mscip.imu_config
+    read = mscip.types.FunctionCode.READ
+    sim = msim.Simulator("ms_imu3020", scenario="static")
+    got = {}
+    for command in (cfg.SampleRate(function=read), cfg.UartBaudRate(function=read)):
+        raw = mscip.framing.PacketBuilder(command.SET).add(command).build()
+        for _when, data in sim.feed(raw, 0.0):
+            for entry in mscip.packets.decode_packet(data, device="ms_imu3020").fields:
+                got[type(entry.value).__name__] = entry.value
+    assert got["SampleRateResponse"].decimation >= 1
+    assert int(got["UartBaudRateResponse"].baud_rate) in (9600, 19200, 115200, 230400, 460800, 921600)

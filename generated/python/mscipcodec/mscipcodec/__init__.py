@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "6218566391dd5d4c"
+SPEC_HASH = "3f646fff2caad6f1"
 
 __all__ = [
     "SPEC_HASH",

@@ -164,6 +164,8 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
 # device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
     "ms_imu3020": {
+        imu_config.UartBaudRate: {"baud_rate": 115200},
+        imu_config.SampleRate: {"decimation": 1},
         imu_config.SelectSensors: {"sensors": [129, 130]},
         imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
     },
