@@ -1031,9 +1031,16 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             if f["role"] == "command":
                 by_name.setdefault(f["name"], []).append(cls)
                 facts_ = simulation.command_facts(proto, v, py_attr)
-                commands.append({"cls": cls, "sends": pyrepr(facts_["sends"]), "enums": pyrepr(facts_["enums"])})
+                commands.append(
+                    {
+                        "cls": cls,
+                        "sends": pyrepr(facts_["sends"]),
+                        "enums": pyrepr(facts_["enums"]),
+                        "ignored": pyrepr(facts_["ignored"]) if facts_["ignored"] else None,
+                    }
+                )
                 for dev, factory in facts_["factory"].items():  # as its manual states them
-                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
+                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(_records(factory, v, proto))})
             elif s["kind"] == "data" or f["role"] == "data":
                 units = tuple(
                     (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1079,9 +1086,32 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             for c in by_name.get(a["command"], [])
         ],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
-        "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
+        "sim_modules": sorted(
+            {sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())
+        ),
         **_sim_identity(proto, sets),
     }
+
+
+class _Code(str):
+    """Python source text printed as it is by pyrepr (a struct record's constructor)."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def _records(factory: dict, v: dict, proto: dict) -> dict:
+    """A command's factory values with struct records (a counted struct list's default, IR dicts)
+    written as constructors of the package's types module (`types.Name(member=value, ...)`)."""
+    structs = {py_attr(q["name"]): q["type"]["name"] for q in v["params"] if q["type"]["kind"] == "struct"}
+    out = dict(factory)
+    for attr, name in structs.items():
+        if isinstance(out.get(attr), list):
+            out[attr] = [
+                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={x!r}" for k, x in r.items()) + ")")
+                for r in out[attr]
+            ]
+    return out
 
 
 def _sim_identity(proto: dict, sets: list[dict]) -> dict:
