@@ -1201,6 +1201,23 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "options": ("string", 16),
 }
 
+# Device status replies kept live (spec simulation status; sim_status.py): reply class -> the
+# attributes of each role (timer, power, streams {attribute: set}, bytes, pps, messages (set, count, last, only while
+# the receiver has a fix))
+STATUS: Dict[Any, Dict[str, Any]] = {
+    threedm.DeviceStatusResponse: {
+        "timer": ("system_timer",),
+        "power": ("gnss_power_state",),
+        "streams": {"imu_stream_enabled": 128, "gnss_stream_enabled": 129, "filter_stream_enabled": 130},
+        "bytes": {"written": "com_bytes_written", "read": "com_bytes_read"},
+        "pps": {"count": "pps_pulse_count", "last": "last_pps_time"},
+        "messages": (
+            (128, "imu_messages_read", "last_imu_message_time", False),
+            (129, "gnss_messages_read", "last_gnss_message_time", True),
+        ),
+    },
+}
+
 # Factory values the manuals state (the spec's `default`, with its source line); every other
 # parameter's factory value is zero: device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {

@@ -27,7 +27,7 @@ import sys
 import time
 from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 
-from . import _link, _sim, capabilities, registry
+from . import _link, _sim, capabilities, registry, sim_status
 from . import _session as _meta
 from ._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
 from .codec import Choice, Enum, Field
@@ -173,6 +173,8 @@ class Simulator:
         # settings: every data set with a base rate streams every data quantity the model documents
         # in it (capabilities), at decimation 1, until the host changes the format or the stream
         self.full: Dict[int, List[Tuple[int, int]]] = {}
+        self.counters = sim_status.Counters()  # bytes, pulses and messages a device status reports
+        self.now = 0.0  # when the command being answered came
         if stream_full:
             model = capabilities.MODELS.get(device)
             for set_id in self.base_rates:
@@ -196,6 +198,8 @@ class Simulator:
     def feed(self, data: bytes, now: float) -> List[Chunk]:
         """The replies to the commands in `data` (and the data due by `now`)."""
         out = self.poll(now)
+        self.now = now
+        self.counters.read += len(data)
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
@@ -472,6 +476,7 @@ class Simulator:
         except (TypeError, ValueError):
             value = _complete(cls())
         self._report(value)
+        sim_status.fill(self, value, self.sim_time(self.now))
         return value  # type: ignore[no-any-return]
 
     def descriptor_lists(self) -> List[List[Tuple[int, int]]]:
@@ -1209,6 +1214,8 @@ def _loop(
                 due += 1
             for when, chunk in pending[:due]:
                 link.write(chunk)
+                if sim is not None:
+                    sim.counters.written += len(chunk)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
             del pending[:due]
