@@ -405,6 +405,15 @@ class _Checker:
         if heading:
             self.params(path + ("heading",), heading["command"], [heading["param"]])
             self.members(path + ("heading",), heading["enum"], list(heading["members"]))
+            if "without_aids" in heading:
+                member = heading["without_aids"]["member"]
+                self.members(path + ("heading", "without_aids"), heading["enum"], [member])
+                if heading["members"].get(member):
+                    self.err(
+                        path + ("heading", "without_aids", "member"),
+                        f"simulation heading: '{member}' enables heading sources: not without aids",
+                        "the member that enables no heading source",
+                    )
             if "in_use" in heading:
                 used = sorted({s for sources in heading["members"].values() for s in sources})
                 self.bits(path + ("heading", "in_use"), heading["in_use"], used)

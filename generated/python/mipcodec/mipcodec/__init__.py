@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "93519baaea5b327a"
+SPEC_HASH = "f2b30163d6796245"
 
 __all__ = [
     "SPEC_HASH",

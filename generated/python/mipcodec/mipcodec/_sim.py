@@ -1040,6 +1040,13 @@ FILTER: Dict[str, Dict[str, Any]] = {
             },
             "in_use": {"magnetometer": 1, "gnss_velocity": 2, "external": 4},
             "external": ["external_heading_update", "external_heading_update_with_time"],
+            "without_aids": {
+                "source": 0,
+                "min_speed": 1.0,
+                "turn_rate": 0.03490658503988659,
+                "converge_turn": 1.5707963267948966,
+                "drift": 0.0008726646259971648,
+            },
         },
     },
     "cv7_ins": {
