@@ -168,6 +168,8 @@ def run_readback(lang: str, protocol: str, device: str) -> list[str]:
     plan = readback_plan(proto, device)
     assert plan, (protocol, device)
     failures: list[str] = []
+    # the tool built first (a compiled language's first run builds it; the answers' timeout is not for that)
+    subprocess.run([str(SESSION), lang, "--help", "--protocol", protocol], capture_output=True, timeout=900)
     with Sim(protocol, device, "tcp:127.0.0.1:0") as sim:
         tool = Tool(lang, protocol, sim.address, device)
         try:

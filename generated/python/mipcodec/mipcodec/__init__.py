@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "f2b30163d6796245"
+SPEC_HASH = "32fcdbe017e05d5b"
 
 __all__ = [
     "SPEC_HASH",
