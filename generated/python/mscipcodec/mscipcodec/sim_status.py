@@ -68,7 +68,9 @@ def streams_enabled(sim: Any) -> Set[int]:
             on |= set(sim.base_rates)
     for value in sim.current.values():
         en = _sim.ENABLES.get(type(value))
-        set_id = None if en is None else _set_of(en[0], value)
+        if en is None:
+            continue
+        set_id = _set_of(en[0], value)
         if set_id is not None:
             (on.add if getattr(value, en[1], None) else on.discard)(set_id)
     return on | set(_sim.UNADDRESSED.get(sim.device, ()))
