@@ -208,5 +208,8 @@ def test_the_plan_covers_every_read() -> None:
         plan = readback_plan(proto, device)
         names = {item["field"]["name"] for item in plan}
         assert len(names) >= (10 if protocol == "mscip" else 46), (device, sorted(names))
-        assert any(not item["write"] for item in plan) or protocol == "mscip" or device == "cv7_ins"
+    gx5 = readback_plan(PROTOCOLS["mip"], "gx5_45")
+    assert [i["field"]["name"] for i in gx5 if not i["write"]] == ["device_startup_settings"]  # read twice
+    cv7 = readback_plan(PROTOCOLS["mip"], "cv7_ins")
+    assert len([i for i in cv7 if i["field"]["name"] == "event_control"]) == 12  # the spec's settings keys
     assert IR["protocols"]
