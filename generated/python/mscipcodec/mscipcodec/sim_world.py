@@ -341,7 +341,8 @@ class World:
         Control note 3): whether the velocity vector's turn observes the heading at t. While the
         receiver has a fix and the horizontal velocity (from min_speed) turns at turn_rate or more,
         the turn adds up; from converge_turn in all, each such sample observes the heading. While
-        the filter runs without it, the heading drifts at `drift` (rad/s)."""
+        the filter runs and the velocity vector does not turn, the heading drifts at `drift`
+        (rad/s)."""
         nav = self.filter
         rule = (nav.profile.get("heading") or {}).get("without_aids")
         if not rule or nav.heading_sources:
@@ -353,8 +354,7 @@ class World:
         turning = fix and rate >= rule["turn_rate"]
         if turning:
             nav.turned += rate * dt
-        if turning and nav.turned >= rule["converge_turn"]:
-            return True
+            return bool(nav.turned >= rule["converge_turn"])
         if nav.running and dt:
             old = nav.offsets.get("heading", (0.0,))[0]
             nav.offsets["heading"] = (_wrap(old + rule["drift"] * dt),)
