@@ -173,8 +173,6 @@ class Simulator:
         # settings: every data set with a base rate streams every data quantity the model documents
         # in it (capabilities), at decimation 1, until the host changes the format or the stream
         self.full: Dict[int, List[Tuple[int, int]]] = {}
-        self.counters = sim_status.Counters()  # bytes, pulses and messages a device status reports
-        self.now = 0.0  # when the command being answered came
         if stream_full:
             model = capabilities.MODELS.get(device)
             for set_id in self.base_rates:
@@ -198,8 +196,7 @@ class Simulator:
     def feed(self, data: bytes, now: float) -> List[Chunk]:
         """The replies to the commands in `data` (and the data due by `now`)."""
         out = self.poll(now)
-        self.now = now
-        self.counters.read += len(data)
+        sim_status.received(self, data, now)  # what a device status counts
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
@@ -476,7 +473,7 @@ class Simulator:
         except (TypeError, ValueError):
             value = _complete(cls())
         self._report(value)
-        sim_status.fill(self, value, self.sim_time(self.now))
+        sim_status.fill(self, value)
         return value  # type: ignore[no-any-return]
 
     def descriptor_lists(self) -> List[List[Tuple[int, int]]]:
@@ -1213,9 +1210,7 @@ def _loop(
             while due < len(pending) and pending[due][0] <= now:
                 due += 1
             for when, chunk in pending[:due]:
-                link.write(chunk)
-                if sim is not None:
-                    sim.counters.written += len(chunk)
+                sim_status.write(link, chunk, sim)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
             del pending[:due]

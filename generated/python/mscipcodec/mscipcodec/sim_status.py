@@ -49,12 +49,34 @@ class Counters:
     def __init__(self) -> None:
         self.written = 0
         self.read = 0
+        self.now = 0.0  # real time of the latest bytes from the host
         self.ticks: Dict[Any, Ticks] = {}
 
     def of(self, key: Any, rate: float, when: Optional[Callable[[float], bool]]) -> Ticks:
         if key not in self.ticks:
             self.ticks[key] = Ticks(rate, when)
         return self.ticks[key]
+
+
+def counters(sim: Any) -> Counters:
+    """The Simulator's counters (made on first use)."""
+    found: Optional[Counters] = sim.__dict__.get("status_counters")
+    if found is None:
+        found = sim.__dict__["status_counters"] = Counters()
+    return found
+
+
+def received(sim: Any, data: bytes, now: float) -> None:
+    """The host sent `data` at real time `now` (the time the replies to it are built at)."""
+    counters(sim).read += len(data)
+    counters(sim).now = now
+
+
+def write(link: Any, chunk: bytes, sim: Any) -> None:
+    """Writes `chunk` to the host's link, counting it."""
+    link.write(chunk)
+    if sim is not None:
+        counters(sim).written += len(chunk)
 
 
 def streams_enabled(sim: Any) -> Set[int]:
@@ -86,13 +108,14 @@ def _set(obj: Any, values: Dict[str, int]) -> None:
             _set(current, values)
 
 
-def fill(sim: Any, value: Any, t: float) -> None:
-    """Writes the live status into a reply `value` of a class in _sim.STATUS, at simulated time
-    `t` (seconds since power-on) of the Simulator `sim`."""
+def fill(sim: Any, value: Any) -> None:
+    """Writes the live status into a reply `value` of a class in _sim.STATUS, as the Simulator
+    `sim` is when the host's latest command came."""
     roles = _sim.STATUS.get(type(value))
     if roles is None:
         return
-    counters: Counters = sim.counters
+    c = counters(sim)
+    t = sim.sim_time(c.now)  # simulated seconds since power-on
     has_fix = sim.world.gnss_fix
     values: Dict[str, int] = {}
     for name in roles.get("timer", ()):
@@ -103,17 +126,17 @@ def fill(sim: Any, value: Any, t: float) -> None:
     for name, set_id in roles.get("streams", {}).items():
         values[name] = 1 if set_id in enabled else 0
     if roles.get("bytes"):
-        values[roles["bytes"]["written"]] = counters.written
-        values[roles["bytes"]["read"]] = counters.read
+        values[roles["bytes"]["written"]] = c.written
+        values[roles["bytes"]["read"]] = c.read
     if roles.get("pps"):  # one pulse at each whole second while the receiver has a fix
-        pps = counters.of("pps", 1.0, has_fix)
+        pps = c.of("pps", 1.0, has_fix)
         pps.advance(t)
         values[roles["pps"]["count"]] = pps.count
         values[roles["pps"]["last"]] = pps.last_ms()
     for set_id, count, last, while_fix in roles.get("messages", ()):
         rate = float(sim.base_rates.get(set_id, 0) or 0)
         if rate:
-            ticks = counters.of(set_id, rate, has_fix if while_fix else None)
+            ticks = c.of(set_id, rate, has_fix if while_fix else None)
             ticks.advance(t)
             values[count] = ticks.count
             values[last] = ticks.last_ms()
