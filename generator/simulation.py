@@ -11,6 +11,7 @@ the language's name of a layout parameter). The Python back end prints the resul
 
 from __future__ import annotations
 
+import math
 from typing import Callable
 
 # The refusals of the simulated device (runtime sim.py), each answered with an ack code.
@@ -61,6 +62,15 @@ def filters(proto: dict, param: Callable[[str], str]) -> dict[str, dict]:
                 "in_use": masks(used) if "in_use" in h else {},
                 "external": list(h.get("external", [])),
             }
+            if "without_aids" in h:  # note 3: the velocity vector's turns observe the heading
+                w = h["without_aids"]
+                f["heading"]["without_aids"] = {
+                    "source": value(h["enum"], w["member"]),
+                    "min_speed": float(w["min_speed"]),
+                    "turn_rate": math.radians(w["turn_rate"]),
+                    "converge_turn": math.radians(w["converge_turn"]),
+                    "drift": math.radians(w["drift"]),
+                }
         if "internal" in e:
             i = e["internal"]
             f["internal"] = {

@@ -1139,7 +1139,22 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
         fmt = (t["length"], " " if t["padding"] == "space" else "\x00", t["justify"]) if t["kind"] == "string" else None
         path = tuple(py_attr(n) for n in r["param"].split("."))
         reports.setdefault(classes[(r["set"], r["descriptor"])], []).append((path, r["item"], fmt))
+    status = []
+    for e in sim.get("status", []):  # the device status replies (sim/status.py): roles by attribute
+        roles = {
+            "timer": tuple(py_attr(n) for n in e.get("timer", [])),
+            "power": tuple(py_attr(n) for n in e.get("power", [])),
+            "streams": {py_attr(n): s for n, s in e.get("streams", {}).items()},
+            "bytes": {k: py_attr(n) for k, n in e.get("bytes", {}).items()},
+            "pps": {k: py_attr(n) for k, n in e.get("pps", {}).items()},
+            "messages": tuple(
+                (m["set"], py_attr(m["count"]), py_attr(m["last"]), bool(m.get("while_fix")))
+                for m in e.get("messages", [])
+            ),
+        }
+        status.append({"cls": classes[(e["set"], e["descriptor"])], "value": pyrepr(roles)})
     return {
+        "status": status,
         "descriptor_lists": lists,
         "descriptor_contents": pyrepr(tuple((dl or {}).get("contents", []))),
         "identity_reports": [{"cls": c, "value": pyrepr(tuple(v))} for c, v in reports.items()],

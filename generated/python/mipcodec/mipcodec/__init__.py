@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "38662f701c0007f3"
+SPEC_HASH = "c6ab2277cf2163f5"
 
 __all__ = [
     "SPEC_HASH",

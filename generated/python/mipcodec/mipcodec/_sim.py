@@ -1409,6 +1409,13 @@ FILTER: Dict[str, Dict[str, Any]] = {
             },
             "in_use": {"magnetometer": 1, "gnss_velocity": 2, "external": 4},
             "external": ["external_heading_update", "external_heading_update_with_time"],
+            "without_aids": {
+                "source": 0,
+                "min_speed": 1.0,
+                "turn_rate": 0.03490658503988659,
+                "converge_turn": 1.5707963267948966,
+                "drift": 0.0008726646259971648,
+            },
         },
     },
     "cv7_ins": {
@@ -1568,6 +1575,23 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "serial_number": ("string", 16),
     "lot_number": ("string", 16),
     "options": ("string", 16),
+}
+
+# Device status replies kept live (spec simulation status; sim/status.py): reply class -> the
+# attributes of each role (timer, power, streams {attribute: set}, bytes, pps, messages (set, count, last, only while
+# the receiver has a fix))
+STATUS: Dict[Any, Dict[str, Any]] = {
+    threedm.DeviceStatusResponse: {
+        "timer": ("system_timer",),
+        "power": ("gnss_power_state",),
+        "streams": {"imu_stream_enabled": 128, "gnss_stream_enabled": 129, "filter_stream_enabled": 130},
+        "bytes": {"written": "com_bytes_written", "read": "com_bytes_read"},
+        "pps": {"count": "pps_pulse_count", "last": "last_pps_time"},
+        "messages": (
+            (128, "imu_messages_read", "last_imu_message_time", False),
+            (129, "gnss_messages_read", "last_gnss_message_time", True),
+        ),
+    },
 }
 
 # Factory values the manuals state (the spec's `default`, with its source line), else the spec's

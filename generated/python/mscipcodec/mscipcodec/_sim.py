@@ -159,6 +159,11 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "calibration_date": ("string", 16),
 }
 
+# Device status replies kept live (spec simulation status; sim/status.py): reply class -> the
+# attributes of each role (timer, power, streams {attribute: set}, bytes, pps, messages (set, count, last, only while
+# the receiver has a fix))
+STATUS: Dict[Any, Dict[str, Any]] = {}
+
 # Factory values the manuals state (the spec's `default`, with its source line), else the spec's
 # `plausible` value (with its reason); every other parameter's factory value is zero:
 # device -> class -> {parameter: value}

@@ -34,6 +34,8 @@ from ..codec.framing import PacketBuilder, Parser, RawPacket
 from ..codec.layout import Choice, Enum, Field
 from ..codec.packets import DecodedField, RawField, decode_packet
 from ..session import support_error
+from . import status as sim_status
+from .status import set_of as _set_of
 from .world import GRAVITY, RADIANS, World, gps_start_of_utc
 
 Chunk = Tuple[float, bytes]
@@ -112,23 +114,6 @@ def check_speed(speed: float) -> float:
     return float(speed)
 
 
-def _set_of(source: Any, command: Any) -> Optional[int]:
-    """The data set a streaming command refers to (_sim.py: a number, a parameter, alternatives)."""
-    if isinstance(source, int):
-        return source
-    if isinstance(source, str):
-        value = getattr(command, source, None)
-        return None if value is None else int(value)
-    for alt in source:
-        name, mapping = (alt, None) if isinstance(alt, str) else alt
-        if hasattr(command, name):
-            value = getattr(command, name)
-            if value is None:
-                return None
-            return mapping.get(int(value)) if mapping else int(value)
-    return None
-
-
 class Simulator:
     """The simulated device: settings (current, startup, factory), replies, streams, faults."""
 
@@ -196,6 +181,7 @@ class Simulator:
     def feed(self, data: bytes, now: float) -> List[Chunk]:
         """The replies to the commands in `data` (and the data due by `now`)."""
         out = self.poll(now)
+        sim_status.received(self, data, now)  # what a device status counts
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
@@ -478,6 +464,7 @@ class Simulator:
         except (TypeError, ValueError):
             value = _complete(cls())
         self._report(value)
+        sim_status.fill(self, value)
         return value  # type: ignore[no-any-return]
 
     def descriptor_lists(self) -> List[List[Tuple[int, int]]]:
@@ -1240,7 +1227,7 @@ def _loop(
             while due < len(pending) and pending[due][0] <= now:
                 due += 1
             for when, chunk in pending[:due]:
-                link.write(chunk)
+                sim_status.write(link, chunk, sim)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
             del pending[:due]
