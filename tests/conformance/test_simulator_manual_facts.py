@@ -26,6 +26,7 @@ IR = load_spec()
 MIP = next(p for p in IR["protocols"] if p["name"] == "mip")
 pkg = python_package("mipcodec")
 sim_mod = importlib.import_module("mipcodec.sim")
+importlib.import_module("mipcodec.codec.packets")
 FUNCTIONS = {v["name"]: v["value"] for t in MIP["types"] if t["name"] == "FunctionSelector" for v in t["values"]}
 
 
@@ -44,7 +45,7 @@ def exchange(sim, set_id: int, descriptor: int, payload: bytes) -> list:
     """(ack code, reply values) of one command fed to the simulator."""
     out = []
     for _when, data in sim.feed(raw_packet(set_id, descriptor, payload), 0.0):
-        packet = pkg.packets.decode_packet(data, device=sim.device)
+        packet = pkg.codec.packets.decode_packet(data, device=sim.device)
         if packet.set == set_id:
             fields = [f.value for f in packet.fields]
             out.append((int(getattr(fields[0], sim_mod._meta.ACK_CODE)), [repr(f) for f in fields[1:]]))
@@ -179,7 +180,7 @@ def test_no_read_reports_a_value_the_device_cannot_hold(device: str) -> None:
                 sim = sim_mod.Simulator(device, scenario="static")
                 payload = cls(function=read, **_key_values(v, "read")).encode()
                 for _when, data in sim.feed(raw_packet(s["id"], f["id"], payload), 0.0):
-                    for entry in pkg.packets.decode_packet(data, device=device).fields[1:]:
+                    for entry in pkg.codec.packets.decode_packet(data, device=device).fields[1:]:
                         value = entry.value
                         rf = replies[entry.descriptor]
                         rv = next(x for x in rf["variants"] if x["device"] in (None, device))
@@ -209,7 +210,7 @@ def _values(sim, command) -> list:
     """The reply values (after the ack) of one command fed to the simulator, the ack checked OK."""
     out = []
     for _when, data in sim.feed(raw_packet(command.SET, command.DESCRIPTOR, command.encode()), 0.0):
-        fields = [f.value for f in pkg.packets.decode_packet(data, device=sim.device).fields]
+        fields = [f.value for f in pkg.codec.packets.decode_packet(data, device=sim.device).fields]
         assert int(getattr(fields[0], sim_mod._meta.ACK_CODE)) == sim_mod._meta.ACK_OK, fields
         out.extend(fields[1:])
     return out
@@ -239,15 +240,17 @@ def test_the_ms_imu3020_reads_a_decimation_and_a_baud_rate_it_can_hold() -> None
     """MS-IMU3020: the decimation divides the internal rate (ms-cip-doc00419-revM.txt:664), so 0 is
     no value it can hold; the baud rate is one of Table 20 (line 539)."""
     mscip = python_package("mscipcodec")
+    importlib.import_module("mscipcodec.codec.packets")
+    importlib.import_module("mscipcodec.codec.framing")
     msim = importlib.import_module("mscipcodec.sim")
     cfg = mscip.imu_config
     read = mscip.types.FunctionCode.READ
     sim = msim.Simulator("ms_imu3020", scenario="static")
     got = {}
     for command in (cfg.SampleRate(function=read), cfg.UartBaudRate(function=read)):
-        raw = mscip.framing.PacketBuilder(command.SET).add(command).build()
+        raw = mscip.codec.framing.PacketBuilder(command.SET).add(command).build()
         for _when, data in sim.feed(raw, 0.0):
-            for entry in mscip.packets.decode_packet(data, device="ms_imu3020").fields:
+            for entry in mscip.codec.packets.decode_packet(data, device="ms_imu3020").fields:
                 got[type(entry.value).__name__] = entry.value
     assert got["SampleRateResponse"].decimation >= 1
     assert int(got["UartBaudRateResponse"].baud_rate) in (9600, 19200, 115200, 230400, 460800, 921600)

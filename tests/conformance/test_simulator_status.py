@@ -12,6 +12,7 @@ receiver's at 4 Hz while it has a fix. Each expectation follows from the reply's
 
 from __future__ import annotations
 
+import importlib
 import math
 import select
 import socket
@@ -21,6 +22,8 @@ from tests.conformance.test_simulator import Sim
 from tests.helpers.generated import python_package
 
 pkg = python_package("mipcodec")
+importlib.import_module("mipcodec.codec.framing")
+importlib.import_module("mipcodec.codec.packets")
 threedm = pkg.threedm
 FIX_AFTER = 2  # seconds of simulated time to a 3D fix (sim_world.GNSS_FIX_AFTER)
 OUTAGE = 6  # --gnss-outage 6:END
@@ -33,12 +36,12 @@ class Host:
     def __init__(self, address: str) -> None:
         host, port = address.removeprefix("tcp:").rsplit(":", 1)
         self.sock = socket.create_connection((host, int(port)), timeout=10)
-        self.parser = pkg.framing.Parser()
+        self.parser = pkg.codec.framing.Parser()
         self.sent = 0
         self.received = 0
 
     def ask(self, value):
-        raw = pkg.framing.PacketBuilder(value.SET).add(value).build()
+        raw = pkg.codec.framing.PacketBuilder(value.SET).add(value).build()
         received_before = self.received
         self.sock.sendall(raw)
         self.sent += len(raw)
@@ -51,8 +54,8 @@ class Host:
             assert data, "the simulator closed the connection"
             self.received += len(data)
             for event in self.parser.feed(data):
-                if isinstance(event, pkg.framing.RawPacket):
-                    packet = pkg.packets.decode_packet(event.data, device="gx5_45")
+                if isinstance(event, pkg.codec.framing.RawPacket):
+                    packet = pkg.codec.packets.decode_packet(event.data, device="gx5_45")
                     fields = [f.value for f in packet.fields]
                     if packet.set == value.SET and fields[0].command_descriptor == value.DESCRIPTOR:
                         assert int(fields[0].ack_code) == 0, fields
