@@ -51,6 +51,8 @@ _RUNTIME_FILES = {
     "src/field_iter.c": "src/field_iter.c",
     "include/codec/samples.h": "include/codec/samples.h",
     "src/samples.c": "src/samples.c",
+    "include/codec/clock.h": "include/codec/clock.h",
+    "src/clock.c": "src/clock.c",
     "src/wire.h": "src/wire.h",
     "src/wire.c": "src/wire.c",
     "src/grisu3.h": "src/grisu3.h",
