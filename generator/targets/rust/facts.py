@@ -51,6 +51,7 @@ RESERVED_MODULES = frozenset(
         "parser",
         "reserved",
         "samples",
+        "clock",
         "session",
         "text",
         "types",
