@@ -12,6 +12,10 @@ C++ and Rust carry the same algorithm step for step (tests/clock/cases.txt, run 
 from __future__ import annotations
 
 import math
+from typing import Any, Optional
+
+from . import _columns
+from .packets import DecodedField
 
 BUCKET_NS = 1_000_000_000  # device time per bucket
 BUCKETS = 64  # closed buckets kept
@@ -116,3 +120,22 @@ class ClockModel:
         """Host time minus device time at the latest packet's device time."""
         h = self.host_time(self._last_d)
         return None if h is None else h - self._last_d
+
+
+WEEK_NS = 604_800 * 1_000_000_000
+
+
+def reference_ns(packet: Any, device: Optional[str] = None) -> Optional[int]:
+    """The device's reference time (ns) of a decoded packet: the field the spec names for `device`
+    (`_columns.REFERENCE_TIMES`, the protocol's `time.reference_time`; every device's when None),
+    or None when the packet carries none."""
+    for dev, s, d, kind, param, per_second, tow, week, _monotonic in _columns.REFERENCE_TIMES:
+        if device is not None and dev != device:
+            continue
+        for f in packet.fields:
+            if not isinstance(f, DecodedField) or (type(f.value).SET, type(f.value).DESCRIPTOR) != (s, d):
+                continue
+            if kind == "count":
+                return int(getattr(f.value, param)) * (1_000_000_000 // per_second)
+            return int(getattr(f.value, week)) * WEEK_NS + math.floor(float(getattr(f.value, tow)) * 1e9 + 0.5)
+    return None
