@@ -17,7 +17,8 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
 be set, `inverted`: bits that must be clear); a `reference_time` entry its `device`, `kind`
-(`count`: `param` and `per_second`; `gps`: `tow` and `week`) and `monotonic`; without the section
+(`count`: `param`, `per_second`, its `offset` and `size` in the field data; `gps`: `tow`, `week`,
+`tow_offset`, `week_offset`, `week_size`) and `monotonic`; without the section
 it is empty lists.
 """
 
@@ -141,7 +142,10 @@ class _Check:
             ):
                 return None
             q = _params(f, e["param"])[0]
-            out.update(kind="count", param=e["param"], per_second=_CLOCK_UNITS[q["units"]])
+            at = self.fixed(path + ("param",), f, e["param"])
+            if at is None:
+                return None
+            out.update(kind="count", param=e["param"], per_second=_CLOCK_UNITS[q["units"]], offset=at[0], size=at[1])
         else:
             ok = self.param(
                 path + ("tow",),
@@ -157,11 +161,32 @@ class _Check:
                 lambda q: _prim(q) in _UNSIGNED and q["units"] == "weeks",
                 "an unsigned integer parameter in weeks",
             )
-            if not ok:
+            tow_at = self.fixed(path + ("tow",), f, e["tow"]) if ok else None
+            week_at = self.fixed(path + ("week",), f, e["week"]) if ok else None
+            if tow_at is None or week_at is None:
                 return None
-            out.update(kind="gps", tow=e["tow"], week=e["week"])
+            out.update(
+                kind="gps",
+                tow=e["tow"],
+                week=e["week"],
+                tow_offset=tow_at[0],
+                week_offset=week_at[0],
+                week_size=week_at[1],
+            )
         out["monotonic"] = e["monotonic"]
         return out
+
+    def fixed(self, path: tuple, f: dict, name: str) -> tuple[int, int] | None:
+        """(offset, size) of parameter `name`, the same in every layout of the field (for readers of
+        the raw field data: the C session), else an error."""
+        places = {(q.get("offset"), q["size"]["max"] if q["size"]["fixed"] else None) for q in _params(f, name)}
+        place = places.pop() if len(places) == 1 else (None, None)
+        if place[0] is None or place[1] is None:
+            self.err(
+                path, f"time: '{name}' of {f['name']} is not at one fixed offset", "a fixed offset in every layout"
+            )
+            return None
+        return place
 
     def field(self, path: tuple, ref: str) -> tuple[dict, dict] | None:
         set_name, _, field_name = ref.partition(".")

@@ -140,6 +140,8 @@ def test_reference_time_per_device(tmp_path):
             "kind": "count",
             "param": "us",
             "per_second": 1_000_000,
+            "offset": 0,
+            "size": 8,
             "monotonic": True,
         },
         {
@@ -149,6 +151,9 @@ def test_reference_time_per_device(tmp_path):
             "kind": "gps",
             "tow": "tow",
             "week": "week",
+            "tow_offset": 0,
+            "week_offset": 8,
+            "week_size": 2,
             "monotonic": False,
         },
     ]

@@ -137,5 +137,8 @@ def reference_ns(packet: Any, device: Optional[str] = None) -> Optional[int]:
                 continue
             if kind == "count":
                 return int(getattr(f.value, param)) * (1_000_000_000 // per_second)
-            return int(getattr(f.value, week)) * WEEK_NS + math.floor(float(getattr(f.value, tow)) * 1e9 + 0.5)
+            t = float(getattr(f.value, tow))
+            if not 0.0 <= t < 1e7:
+                continue  # not a time of week (NaN, negative, absurd)
+            return int(getattr(f.value, week)) * WEEK_NS + math.floor(t * 1e9 + 0.5)
     return None
