@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "254db85b48c0cf70"
+SPEC_HASH = "145c0beda36b5e2a"
 
 __all__ = [
     "SPEC_HASH",
