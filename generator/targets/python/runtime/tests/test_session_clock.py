@@ -2,6 +2,7 @@
 device's reference time (the spec's time.reference_time: alpha's shared 0xD5) of every data
 packet at the feed's host time."""
 
+import pytest
 from testproto import shared
 from testproto.framing import PacketBuilder
 from testproto.packets import Packet
@@ -18,8 +19,11 @@ def _stream(ppm: float, seconds: int, rate: int = 50):
         yield PacketBuilder(0x80).add(shared.ReferenceTimestamp(nanoseconds=d)).build(), a, d
 
 
-def test_the_session_feeds_the_model_the_reference_time_at_the_read_time():
+@pytest.mark.parametrize("samples", [False, True], ids=["packets", "samples"])
+def test_the_session_feeds_the_model_the_reference_time_at_the_read_time(samples):
     session = Session("alpha")
+    if samples:  # the session then parses raw packets (another route to the handlers)
+        session.on_sample(lambda sample: None)
     model = session.host_clock
     got = []
     for data, a, d in _stream(100.0, 10):
