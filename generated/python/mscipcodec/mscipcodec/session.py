@@ -753,7 +753,13 @@ class Session:
         if a < b:
             run = parsed[a:b]
             events += run
-            if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
+            if (
+                self._packet_handlers
+                or self._field_handlers
+                or self._grouper is not None
+                or self._clock is not None
+                or self._host is not None
+            ):
                 self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
@@ -834,7 +840,13 @@ class Session:
                 self._data(e)
 
     def _route(self, parsed: List[Any], events: List[Event]) -> None:
-        if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
+        if (
+            self._packet_handlers
+            or self._field_handlers
+            or self._grouper is not None
+            or self._clock is not None
+            or self._host is not None
+        ):
             for e in parsed:
                 self._event(e, events)
             return
