@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "7457a3650f0d773b"
+SPEC_HASH = "15b65204dde0ae31"
 
 __all__ = [
     "SPEC_HASH",

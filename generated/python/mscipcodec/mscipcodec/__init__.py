@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "709cb62b335cc528"
+SPEC_HASH = "140179861cdc44a5"
 
 __all__ = [
     "SPEC_HASH",
