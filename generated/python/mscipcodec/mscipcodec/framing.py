@@ -331,6 +331,10 @@ def foreign_frame(buf: BytesLike, i: int, n: int) -> int:
     return total if x == int(bytes((h, lo)), 16) else 0
 
 
+if _speedups is not None:
+    _speedups.setup_foreign(Nmea, Rtcm)
+
+
 def _foreign_event(offset: int, data: bytes) -> Event:
     return Rtcm(offset, data) if data[0] == 0xD3 else Nmea(offset, data)
 
