@@ -27,6 +27,7 @@
 //! let mut on_event = |event: Event<'_>| match event {
 //!     Event::Packet { offset, bytes } => packets.push((offset, bytes.to_vec())),
 //!     Event::Skip { offset, count } => assert_eq!((offset, count), (0, 1)),
+//!     Event::Nmea { .. } | Event::Rtcm { .. } => {} // other protocols' frames between packets
 //! };
 //! parser.feed(&stream, &mut on_event);
 //! parser.flush(&mut on_event);

@@ -51,6 +51,8 @@ fn text(e: SessionEvent<'_>) -> String {
         }
         SessionEvent::Packet { offset, packet } => format!("packet {offset} set {}", packet.set()),
         SessionEvent::Skip { offset, count } => format!("skip {offset} {count}"),
+        SessionEvent::Nmea { offset, bytes } => format!("nmea {offset} {}", bytes.len()),
+        SessionEvent::Rtcm { offset, bytes } => format!("rtcm {offset} {}", bytes.len()),
     }
 }
 
