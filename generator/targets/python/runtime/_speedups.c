@@ -280,7 +280,10 @@ static unsigned long crc24q(const unsigned char *p, Py_ssize_t n) {
 }
 
 static int hex_value(unsigned char c) {
-    return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                                  : -1;
 }
 
 /* The foreign frame at p[0] (a start byte) with n bytes available: its length when it is whole
@@ -301,7 +304,8 @@ static Py_ssize_t foreign_frame(const unsigned char *p, Py_ssize_t n) {
         if (n < total) {
             return FOREIGN_WAIT;
         }
-        unsigned long crc = (unsigned long)p[total - 3] << 16 | (unsigned long)p[total - 2] << 8 | p[total - 1];
+        unsigned long crc =
+            (unsigned long)p[total - 3] << 16 | (unsigned long)p[total - 2] << 8 | p[total - 1];
         return crc24q(p, total - 3) == crc ? total : 0;
     }
     const Py_ssize_t lim = NMEA_MAX - 4; /* the '*' stands before lim */
@@ -377,7 +381,8 @@ static int foreign_found(const unsigned char *p, Py_ssize_t n, Py_ssize_t offset
         PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup_foreign() was not called");
         return -1;
     }
-    PyObject *ev = PyObject_CallFunction(p[0] == 0xD3 ? rtcm_type : nmea_type, "ny#", offset, (const char *)p, n);
+    PyObject *ev =
+        PyObject_CallFunction(p[0] == 0xD3 ? rtcm_type : nmea_type, "ny#", offset, (const char *)p, n);
     if (ev == NULL || PyList_Append(events, ev) < 0) {
         Py_XDECREF(ev);
         return -1;
@@ -459,7 +464,8 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
     Py_ssize_t pos = 0;
     while (pos < n) {
         /* Most packets start where the last one ended. */
-        Py_ssize_t i = n - pos >= SYNC_LEN && memcmp(p + pos, SYNC, SYNC_LEN) == 0 ? pos : find_sync(p, pos, n);
+        Py_ssize_t i =
+            n - pos >= SYNC_LEN && memcmp(p + pos, SYNC, SYNC_LEN) == 0 ? pos : find_sync(p, pos, n);
         if (i < 0) {
             /* Keep a partial sync sequence at the very end (unless this is the end of input). */
             Py_ssize_t keep = n;
@@ -475,7 +481,8 @@ static Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t bas
                     }
                 }
             }
-            Py_ssize_t at = keep > pos ? scan_gap(p, n, base, pos, keep, final, mode, ctx, skip, events) : keep;
+            Py_ssize_t at =
+                keep > pos ? scan_gap(p, n, base, pos, keep, final, mode, ctx, skip, events) : keep;
             if (at == -1) {
                 return -1;
             }
@@ -663,13 +670,13 @@ static PyObject *scan(PyObject *self, PyObject *args) {
 /* ------------------------------------------------------------------------------ typed values */
 /* One wire item of a fixed layout: a scalar (count < 0) or a fixed array (a list). */
 typedef struct {
-    char kind;      /* u: unsigned, i: signed, f: float32, d: float64, ?: bool, c: char, s: string,
-                       e: enum (aux: value -> member dict), F: bitfield (aux: class) */
-    int size;       /* bytes of one element */
-    int count;      /* -1: scalar */
-    PyObject *aux;  /* owned */
-    PyObject *attr; /* owned, interned attribute name */
-    PyObject *key;  /* owned bytes: '"name":' of the canonical JSON */
+    char kind;       /* u: unsigned, i: signed, f: float32, d: float64, ?: bool, c: char, s: string,
+                        e: enum (aux: value -> member dict), F: bitfield (aux: class) */
+    int size;        /* bytes of one element */
+    int count;       /* -1: scalar */
+    PyObject *aux;   /* owned */
+    PyObject *attr;  /* owned, interned attribute name */
+    PyObject *key;   /* owned bytes: '"name":' of the canonical JSON */
     Py_ssize_t slot; /* offset of the attribute's slot in the instance (slotted classes), else 0 */
 } Item;
 
@@ -845,7 +852,8 @@ static int slots_of(Entry *e) {
             PyErr_Clear();
             return 0;
         }
-        int ok = Py_IS_TYPE(d, &PyMemberDescr_Type) && ((PyMemberDescrObject *)d)->d_member->type == T_OBJECT_EX &&
+        int ok = Py_IS_TYPE(d, &PyMemberDescr_Type) &&
+                 ((PyMemberDescrObject *)d)->d_member->type == T_OBJECT_EX &&
                  !(((PyMemberDescrObject *)d)->d_member->flags & READONLY) &&
                  PyType_IsSubtype(tp, ((PyDescrObject *)d)->d_type);
         if (ok) {
@@ -950,7 +958,7 @@ static Entry *entry_for(int set_id, int descriptor) {
  * Python (DecodedField(descriptor, value)) holds its value from the start. */
 typedef struct {
     PyObject_VAR_HEAD /* ob_size: bytes of data (0 unless made lazy) */
-    PyObject *descriptor;
+        PyObject *descriptor;
     PyObject *value;    /* NULL while lazy (or after `del field.value`) */
     const Entry *entry; /* the layout that reads data; NULL once the value is set */
     unsigned char data[1];
@@ -1248,17 +1256,17 @@ typedef struct {
     const Entry *e;
     int set_id, descriptor;
     Py_ssize_t rows, cap;
-    int ncols;  /* 2 + items: offsets (long long per row: packet offset), index (long long per row:
-                   position of the field in its packet), then per item: double (f, d), long long
-                   (i), unsigned long long (u, e, F), unsigned char (?), count values per row */
+    int ncols; /* 2 + items: offsets (long long per row: packet offset), index (long long per row:
+                  position of the field in its packet), then per item: double (f, d), long long
+                  (i), unsigned long long (u, e, F), unsigned char (?), count values per row */
     Col cols[];
 } Table;
 
 /* One field of a known layout. */
 typedef struct {
-    Table **slot;     /* the table's place in Columns.by_set (NULL: an `others` entry) */
+    Table **slot; /* the table's place in Columns.by_set (NULL: an `others` entry) */
     const Entry *e;
-    int hdr;          /* offset of the field header in the payload */
+    int hdr; /* offset of the field header in the payload */
     unsigned char length_byte, descriptor;
     int data_len;
 } LField;
@@ -1272,12 +1280,12 @@ typedef struct Layout {
 } Layout;
 
 struct Columns {
-    Table **by_set[256]; /* [set][descriptor], rows allocated on first use */
+    Table **by_set[256];   /* [set][descriptor], rows allocated on first use */
     Layout **layouts[256]; /* [set][payload length]: chains of known layouts */
     Table **list;
     Py_ssize_t ntables, cap;
     Py_ssize_t packets;
-    Py_ssize_t size; /* bytes of the input */
+    Py_ssize_t size;  /* bytes of the input */
     PyObject *others; /* [(offset, index, entry) | (offset, -1, Packet)] */
 };
 

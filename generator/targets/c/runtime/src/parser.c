@@ -94,7 +94,8 @@ static size_t foreign_frame(const uint8_t *p, size_t n) {
         if (n < total) {
             return FOREIGN_WAIT;
         }
-        return crc24q(p, total - 3) == ((uint32_t)p[total - 3] << 16 | (uint32_t)p[total - 2] << 8 | p[total - 1])
+        return crc24q(p, total - 3) ==
+                       ((uint32_t)p[total - 3] << 16 | (uint32_t)p[total - 2] << 8 | p[total - 1])
                    ? total
                    : 0;
     }
@@ -106,7 +107,8 @@ static size_t foreign_frame(const uint8_t *p, size_t n) {
         unsigned x = 0;
         int hi;
         int lo;
-        while (j < n && j < lim && p[j] >= 0x20 && p[j] <= 0x7E && p[j] != '$' && p[j] != '!' && p[j] != '*') {
+        while (j < n && j < lim && p[j] >= 0x20 && p[j] <= 0x7E && p[j] != '$' && p[j] != '!' &&
+               p[j] != '*') {
             x ^= p[j];
             j++;
         }

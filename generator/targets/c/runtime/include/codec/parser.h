@@ -36,17 +36,17 @@ static inline unsigned codec_rtcm_type(const uint8_t *frame) {
 typedef void (*codec_event_fn)(void *ctx, const codec_event_t *event);
 
 /**
- * Fixed-size state: at most one maximum packet (or one longest foreign frame) is buffered. Events do not depend on how the
- * input is split into chunks; a skip run is reported just before the next packet or at flush,
- * and, when skip_piece is not 0, as soon as its pending length reaches skip_piece: then a run of
+ * Fixed-size state: at most one maximum packet (or one longest foreign frame) is buffered. Events do not
+ * depend on how the input is split into chunks; a skip run is reported just before the next packet or at
+ * flush, and, when skip_piece is not 0, as soon as its pending length reaches skip_piece: then a run of
  * exactly skip_piece bytes is reported and the bytes skipped after it start a new run (sessions
  * set it to CODEC_SESSION_SKIP_PIECE, docs/conformance.md section 8; decoding leaves it 0).
  */
 typedef struct {
     uint8_t buf[CODEC_PARSER_CAPACITY]; /* a maximum packet, or a longer foreign frame */
-    size_t used;          /* bytes in buf */
-    uint64_t base;        /* stream offset of buf[0] */
-    uint64_t skip_offset; /* pending skip run */
+    size_t used;                        /* bytes in buf */
+    uint64_t base;                      /* stream offset of buf[0] */
+    uint64_t skip_offset;               /* pending skip run */
     uint64_t skip_count;
     uint64_t skip_piece; /* 0: skip runs whole; else reported in pieces of at most this many bytes */
 } codec_parser_t;

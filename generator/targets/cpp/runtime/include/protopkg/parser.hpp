@@ -1,7 +1,7 @@
 // Stream parser of docs/conformance.md section 1: fed arbitrary chunks, it reports packets and
 // runs of skipped bytes exactly as if it had seen the whole stream at once. Its state is one
-// maximum packet or foreign frame (kParserCapacity bytes); skipped bytes are reported by offset and count only (a run
-// of any length costs two integers).
+// maximum packet or foreign frame (kParserCapacity bytes); skipped bytes are reported by offset and count
+// only (a run of any length costs two integers).
 #pragma once
 
 #include <array>
@@ -119,7 +119,8 @@ inline std::size_t frame(const std::uint8_t *p, std::size_t n) {
     }
     const int hi = hex_digit(p[j + 1]);
     const int lo = hex_digit(p[j + 2]);
-    if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' || static_cast<unsigned>(hi << 4 | lo) != x) {
+    if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' ||
+        static_cast<unsigned>(hi << 4 | lo) != x) {
         return 0;
     }
     return j + 5;
@@ -493,9 +494,9 @@ class StreamParser {
     }
 
     std::array<std::uint8_t, kParserCapacity> buf_{}; ///< a maximum packet, or a longer foreign frame
-    std::size_t start_ = 0;  ///< first unconsumed byte in buf_
-    std::size_t len_ = 0;    ///< unconsumed bytes in buf_
-    std::uint64_t base_ = 0; ///< stream offset of buf_[start_]
+    std::size_t start_ = 0;                           ///< first unconsumed byte in buf_
+    std::size_t len_ = 0;                             ///< unconsumed bytes in buf_
+    std::uint64_t base_ = 0;                          ///< stream offset of buf_[start_]
     std::uint64_t skip_offset_ = 0;
     std::uint64_t skip_count_ = 0;
 };
