@@ -507,8 +507,8 @@ def test_nmea_and_rtcm_between_packets_go_to_the_foreign_handler_whatever_the_sp
         s = Session()
         p = s.start(control.Ping(), 0)
         seen = []
-        s.on_foreign(lambda f: seen.append(f))
-        s.on_packet(lambda pk: seen.append(pk.offset))
+        s.on_foreign(seen.append)
+        s.on_packet(lambda pk, seen=seen: seen.append(pk.offset))
         events = s.feed(stream[:cut], 1) + s.feed(stream[cut:], 1) + s.close(2)
         assert p.result.status == "ack", cut
         kinds = [type(e).__name__ for e in events]

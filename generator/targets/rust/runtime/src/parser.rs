@@ -79,7 +79,8 @@ fn foreign_frame(p: &[u8]) -> Foreign {
         if n < total {
             return Foreign::Wait;
         }
-        let crc = u32::from(p[total - 3]) << 16 | u32::from(p[total - 2]) << 8 | u32::from(p[total - 1]);
+        let crc =
+            u32::from(p[total - 3]) << 16 | u32::from(p[total - 2]) << 8 | u32::from(p[total - 1]);
         return if crc24q(&p[..total - 3]) == crc {
             Foreign::Frame(total)
         } else {

@@ -33,7 +33,9 @@ fn write_event(
             let start = (offset - hist_base) as usize;
             write_skip_json(out, offset, &hist[start..start + count as usize])
         }
-        Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => write_foreign_json(out, offset, bytes),
+        Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+            write_foreign_json(out, offset, bytes)
+        }
         Event::Packet { offset, bytes } => match Packet::new(bytes) {
             Some(packet) => {
                 let r = write_packet_json(out, offset, &packet, device);

@@ -40,7 +40,9 @@ fn events_in_chunks(input: &[u8], chunk: usize) -> Vec<Ev> {
         out.push(match e {
             Event::Skip { offset, count } => Ev::Skip(offset, count),
             Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
-            Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => Ev::Foreign(offset, bytes.to_vec()),
+            Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+                Ev::Foreign(offset, bytes.to_vec())
+            }
         })
     };
     for piece in input.chunks(chunk.max(1)) {
@@ -213,7 +215,9 @@ fn events_do_not_depend_on_the_split_point() {
             out.push(match e {
                 Event::Skip { offset, count } => Ev::Skip(offset, count),
                 Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
-            Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => Ev::Foreign(offset, bytes.to_vec()),
+                Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+                    Ev::Foreign(offset, bytes.to_vec())
+                }
             })
         };
         parser.feed(&input[..k], &mut push);
