@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "254db85b48c0cf70"
+SPEC_HASH = "1cac011e9dff1e09"
 
 __all__ = [
     "SPEC_HASH",
