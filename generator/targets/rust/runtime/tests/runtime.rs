@@ -326,7 +326,7 @@ fn packets_behind_garbage_full_of_sync_prefixes_are_found() {
         .iter()
         .filter_map(|e| match e {
             Ev::Packet(offset, _) => Some(*offset),
-            Ev::Skip(..) => None,
+            Ev::Skip(..) | Ev::Foreign(..) => None,
         })
         .collect();
     assert_eq!(found, offsets);
