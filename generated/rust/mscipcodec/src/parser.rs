@@ -375,13 +375,15 @@ impl Parser {
                     }
                 }
             };
-            match self.gap_in_place(data, pos, at, on) {
-                Ok(next) if next > at => {
-                    pos = next; // a frame ran over the sync: go on after it
-                    continue;
+            if at > pos {
+                match self.gap_in_place(data, pos, at, on) {
+                    Ok(next) if next > at => {
+                        pos = next; // a frame ran over the sync: go on after it
+                        continue;
+                    }
+                    Ok(_) => {}
+                    Err(wait) => return wait,
                 }
-                Ok(_) => {}
-                Err(wait) => return wait,
             }
             pos = at;
             let candidate = &data[pos..];
@@ -417,7 +419,9 @@ impl Parser {
 
     /// The bytes `data[pos..to]` hold no sync: skipped, but for the foreign frames among them.
     /// Returns where scanning goes on (`to`, or past it after a frame that runs over it), or
-    /// `Err(s)` to wait at `s` (nothing buffered).
+    /// `Err(s)` to wait at `s` (nothing buffered). Out of line: the packet loop calls `on` in
+    /// one place only, where the compiler can inline it.
+    #[inline(never)]
     fn gap_in_place<F: FnMut(Event<'_>)>(
         &mut self,
         data: &[u8],
