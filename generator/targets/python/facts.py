@@ -172,9 +172,11 @@ EXPORTS = {
     "codec.framing": [
         "ACCELERATED",
         "FramingError",
+        "Nmea",
         "PacketBuilder",
         "Parser",
         "RawPacket",
+        "Rtcm",
         "Skip",
         "build_packet",
         "checksum_bytes",

@@ -8,7 +8,7 @@ The documentation quotes the parts between the [...] and [end] comments. Generat
 import sys
 from typing import List, Union
 
-from mscipcodec import DecodedField, PacketBuilder, Parser, RawPacket, Skip, decode_packet
+from mscipcodec import DecodedField, Nmea, PacketBuilder, Parser, RawPacket, Rtcm, Skip, decode_packet
 from mscipcodec.base import Ping
 
 
@@ -23,10 +23,14 @@ def print_command() -> None:
 
 
 # [parse-stream]
-def on_event(event: Union[RawPacket, Skip]) -> None:
-    """Prints one parser event: a packet with the names of its fields, or a run of skipped bytes."""
+def on_event(event: Union[RawPacket, Skip, Nmea, Rtcm]) -> None:
+    """Prints one parser event: a packet with the names of its fields, a run of skipped bytes, or
+    an NMEA sentence or RTCM3 frame between packets (protocols whose framing has them)."""
     if isinstance(event, Skip):
         print("skipped", event.count)
+        return
+    if not isinstance(event, RawPacket):
+        print(type(event).__name__.lower(), len(event.data))
         return
     packet = decode_packet(event.data)
     # A field that does not decode, or trailing bytes that are not a whole field, print "?".

@@ -22,11 +22,11 @@ import os
 import signal
 import stat
 import sys
-from typing import BinaryIO, Iterable, List, Optional, Tuple, Union
+from typing import BinaryIO, Iterable, List, Optional, Tuple
 
 from . import registry
 from ._protocol import PACKAGE as PROG
-from .codec.framing import Parser, RawPacket, Skip
+from .codec.framing import Event, Parser, RawPacket
 from .codec.layout import EncodeError
 from .codec.packets import LineDecoder, encode_line, event_line
 from .codec.samples import SampleTracker
@@ -144,7 +144,7 @@ def _decode(args: List[str]) -> int:
     parser = Parser()
     tracker = SampleTracker() if samples else None
 
-    def line(event: Union[RawPacket, Skip]) -> str:
+    def line(event: Event) -> str:
         text = event_line(event, device)
         placed = tracker.feed(event.data) if tracker is not None and isinstance(event, RawPacket) else None
         if placed is not None:
@@ -160,7 +160,7 @@ def _decode(args: List[str]) -> int:
         except OSError as e:
             raise _write_failed(e) from None
 
-    def write(events: Iterable[Union[RawPacket, Skip]]) -> None:
+    def write(events: Iterable[Event]) -> None:
         put("".join(line(event) + "\n" for event in events).encode("ascii"))
 
     # The plain decode (no device, no sample numbers) prints its lines in C when it can.

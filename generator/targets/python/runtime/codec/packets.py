@@ -19,6 +19,7 @@ from .framing import (
     LENGTH_OFFSET,
     SET_OFFSET,
     SYNC,
+    Event,
     FramingError,
     Nmea,
     PacketBuilder,
@@ -286,7 +287,7 @@ if _speedups is not None:
     _fast_decode_packet = _speedups.decode_packet  # the unchecked decode, in C
 
 
-DecodedEvent = Union["Packet", Skip]
+DecodedEvent = Union["Packet", Skip, Nmea, Rtcm]
 
 
 class Decoder(Parser):
@@ -564,7 +565,7 @@ def decode_columns(data: BytesLike) -> Columns:
     return Columns(packets, skips, [], others)
 
 
-def event_line(event: Union[RawPacket, Skip], device: Optional[str] = None) -> str:
+def event_line(event: Event, device: Optional[str] = None) -> str:
     """The canonical JSON line of a parser event."""
     if isinstance(event, Skip):
         return skip_line(event.offset, event.data)
