@@ -75,6 +75,8 @@ _RUNTIME_FILES = {
     "tools/encode.c": "tools/encode.c",
     "tools/tool_io.h": "tools/tool_io.h",
     "tools/device.c": "tools/device.c",
+    "tools/device_record.h": "tools/device_record.h",
+    "tools/device_record.c": "tools/device_record.c",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
     "tests/package/canonical_test.cpp": "tests/canonical_test.cpp",

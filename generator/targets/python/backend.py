@@ -69,6 +69,7 @@ RUNTIME_FILES = [
     "budget.py",
     "settings.py",
     "device_cli.py",
+    "recorder.py",
     "_speedups.c",
     "py.typed",  # PEP 561 marker: type checkers read the package's annotations (mypy --strict)
 ]

@@ -93,9 +93,9 @@ def connect(address: str, model: Optional[str], baud: Optional[int], timeout_ms:
     probe = Device(transport, None, timeout_ms=timeout_ms, check_device=False)
     try:
         identity = read_identity(probe)
-    except SessionError as e:
+    except (SessionError, TransportError) as e:  # a silent device: 1, as no reply to any command sent
         transport.close()
-        _fail(f"{address}: no answer to the device information command ({e})")
+        raise Refused(f"{address}: no answer to the device information command ({e})") from None
     found = model or model_of(identity)
     name = identity.get("model_name")
     if model is not None and name and not model_matches(str(name), model):
@@ -366,6 +366,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
             raise Usage(f"unknown function (one of: {', '.join(_meta.FUNCTION_NAMES.values())})")
         values["function"] = fn
     enums = st._enums(cls)
+    given: Dict[str, Any] = {}
     for arg in rest:
         name, eq, text = arg.partition("=")
         if not eq or name not in cls._ATTRS:
@@ -373,6 +374,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
                 f"{cls.NAME}: expected PARAMETER=VALUE with a parameter of {', '.join(a for a in cls._ATTRS if a != 'function')}, got {arg!r}"
             )
         v = _parse_value(text)
+        given[name] = v
         if name in enums:
             try:
                 v = st._enum_value(enums[name], v)
@@ -380,7 +382,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
                 raise Usage(f"{cls.NAME}.{name}: {e}") from None
         values[name] = v
     try:
-        command = cls.from_json(values, f"{cls.NAME}.")
+        command = _complete_write(conn, cls, values, given) or cls.from_json(values, f"{cls.NAME}.")
     except (ValueError, TypeError) as e:
         raise Usage(str(e)) from None
     result = conn.device.run(command)
@@ -395,6 +397,35 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
             if isinstance(value, Field):
                 _say(f"{value.NAME} {value.to_json()}")
     return 0 if result.ok else 1
+
+
+def _complete_write(conn: Connection, cls: Any, values: Dict[str, Any], given: Dict[str, Any]) -> Optional[Field]:
+    """`send NAME write P=V ...` with parameters left out: a setting (a command the model also
+    reads) is read first (with the key parameters given) and the given parameters replace its
+    values (read, modify, write); any other command needs every parameter (Usage). None: nothing
+    left out, the values as given."""
+    if values.get("function") != _function_value("write"):
+        return None
+    missing = [a for a in cls._ATTRS if a != "function" and a not in values]
+    if not missing:
+        return None
+    setting = next(
+        (s for s in st.settings_for(conn.model) if (s.cls.SET, s.cls.DESCRIPTOR) == (cls.SET, cls.DESCRIPTOR)), None
+    )
+    if setting is None:
+        raise Usage(
+            f"{cls.NAME} write: give every parameter ({', '.join(missing)} left out; "
+            "the command has no read to fill them from)"
+        )
+    absent = [a for a in setting.key_attrs if a not in given]
+    if absent:
+        raise Usage(
+            f"{cls.NAME} write: give {', '.join(absent)} (the key of the read that fills the parameters left out)"
+        )
+    entry = st.read_entry(conn.device, setting, {a: given[a] for a in setting.key_attrs})
+    kept = [a for a, _, _ in setting.attrs if a not in given]
+    _note(f"{cls.NAME}: {', '.join(kept)} as read from the device (read, modify, write)")
+    return st.command_of(setting, {**entry, **given})
 
 
 def _header(conn: Connection) -> List[str]:
@@ -762,26 +793,42 @@ def _baud_rates() -> List[int]:
 
 
 # ------------------------------------------------------------------------------------ main
-def _parser() -> argparse.ArgumentParser:
+def _common(defaults: bool) -> argparse.ArgumentParser:
+    """The options of every subcommand. Given before the subcommand, the main parser reads them
+    (with the defaults); after it, a subparser does, whose defaults are suppressed so that they do
+    not overwrite what was given before it (argparse copies a subparser's defaults over)."""
+    unset: Dict[str, Any] = {} if defaults else {"default": argparse.SUPPRESS}
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--device",
         dest="model",
         metavar="ID",
         help=f"the model ({', '.join(registry.DEVICES)}); default: the one the device reports",
+        **unset,
     )
     common.add_argument(
         "--baud",
         type=int,
         help="the serial port's baud rate (default 115200); over TCP: the rate the link budget is checked against",
+        **unset,
     )
-    common.add_argument("--timeout-ms", type=int, default=1000, help="reply timeout of each command (default 1000)")
-    common.add_argument("--ports", nargs="+", metavar="PATH", help="auto: scan only these serial ports")
+    common.add_argument(
+        "--timeout-ms",
+        type=int,
+        help="reply timeout of each command (default 1000)",
+        **(unset or {"default": 1000}),
+    )
+    common.add_argument("--ports", nargs="+", metavar="PATH", help="auto: scan only these serial ports", **unset)
+    return common
+
+
+def _parser() -> argparse.ArgumentParser:
+    common = _common(False)
     p = argparse.ArgumentParser(
         prog=PROG,
         description="Look at, stream from and configure a device (docs/configure-a-device.md). "
         "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused before sending).",
-        parents=[common],
+        parents=[_common(True)],
     )
     p.add_argument("address", help="tcp:HOST:PORT, a serial port path, or auto")
     sub = p.add_subparsers(dest="subcommand", metavar="SUBCOMMAND", required=True)
@@ -812,6 +859,13 @@ def _parser() -> argparse.ArgumentParser:
     f = gs.add_parser("diff", parents=[common])
     f.add_argument("file")
     gs.add_parser("schema", parents=[common], help="print the path of the settings files' JSON Schema")
+    r = sub.add_parser(
+        "record", parents=[common], help="record the device's stream to FILE, its Device Information reply first"
+    )
+    r.add_argument("file", metavar="FILE")
+    r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
+    r.add_argument("--split-size", type=int, default=0, metavar="BYTES", help="a new file once one holds BYTES")
+    r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
     return p
@@ -842,6 +896,18 @@ def main(argv: Optional[List[str]] = None) -> int:
             if args.subcommand != "ping":
                 raise Usage("auto lists the devices that answer: use `auto ping`")
             return scan(args.ports, args.model, min(args.timeout_ms, 300))
+        if args.subcommand == "record":  # the device's own bytes: no session in between
+            from .recorder import record
+
+            return record(
+                args.address,
+                args.file,
+                args.baud or DEFAULT_BAUD,
+                args.timeout_ms,
+                args.duration,
+                args.split_size,
+                args.split_time,
+            )
         precheck_apply(args)  # with --device: refused before any byte is sent
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":

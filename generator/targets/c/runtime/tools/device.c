@@ -40,6 +40,7 @@
 #include "codec/link.h"
 #include "codec/posix_transport.h"
 #include "device_facts.h"
+#include "device_record.h"
 
 #define PROG "codec-device"
 #define DEFAULT_BAUD 115200UL
@@ -1841,6 +1842,10 @@ static int start_link(conn_t *c, codec_device_t device, bool check) {
     return 0;
 }
 
+/* No reply to the device information command: 1, as no reply to any command that was sent (the
+ * outcomes below are defined after this function). */
+#define EXIT_REFUSED_EARLY 1
+
 /* Opens ADDRESS and identifies the device: 0, or the exit status. */
 static int connect_device(conn_t *c, const char *address, const char *model, unsigned long baud,
                           unsigned long timeout_ms) {
@@ -1873,7 +1878,7 @@ static int connect_device(conn_t *c, const char *address, const char *model, uns
     if (run != R_OK) {
         note("%s: no answer to the device information command (%s)", address, r.describe);
         result_free(&r);
-        return 2;
+        return EXIT_REFUSED_EARLY; /* a device that does not answer: 1, as any command sent */
     }
     read_identity(c, &r);
     result_free(&r);
@@ -2529,6 +2534,8 @@ typedef struct {
     double rate;
     double duration;
     unsigned long count;
+    double split_size; /* record: --split-size BYTES, --split-time S */
+    double split_time;
     bool json;
     bool force;
     bool keep;
@@ -2740,6 +2747,134 @@ static bool has_function(const conn_t *c, uint8_t set, const codec_field_info_t 
     return yes;
 }
 
+/* The parameters of a command (but function) as a list of names: the values given, encoded and
+ * decoded again (the decoded field names every parameter of the layout). NULL when that fails. */
+static val_t *command_params(conn_t *c, uint8_t set, const codec_field_info_t *f, const char *values) {
+    buf_t line = {0};
+    uint8_t packet[CODEC_HEADER_SIZE + CODEC_MAX_PAYLOAD + CODEC_CHECKSUM_SIZE];
+    size_t len = 0;
+    size_t n;
+    char msg[CODEC_ERROR_MESSAGE_MAX + 200];
+    val_t *decoded;
+    const val_t *fields;
+    const val_t *vals = NULL;
+    val_t *out = NULL;
+    size_t i;
+    buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set, f->descriptor);
+    json_string(&line, f->name, strlen(f->name));
+    if (f->layout_count > 1) {
+        buf_fmt(&line, ",\"device\":\"%s\"", codec_device_id(c->device));
+    }
+    buf_fmt(&line, ",\"values\":%s}]}", values);
+    if (codec_json_encode_line(buf_text(&line), line.n, packet, sizeof packet, &len, msg, sizeof msg) != CODEC_OK) {
+        free(line.s);
+        return NULL;
+    }
+    free(line.s);
+    n = codec_json_packet_line(packet, len, 0, c->device, g_line, sizeof g_line);
+    if (n >= sizeof g_line) {
+        return NULL;
+    }
+    decoded = json_parse(g_line, n);
+    fields = val_get(decoded, "fields");
+    if (fields && fields->kind == V_LIST && fields->n == 1) {
+        vals = val_get(fields->items[0], "values");
+    }
+    if (vals && vals->kind == V_MAP) {
+        out = val_new(V_LIST, 0);
+        for (i = 0; i < vals->n; i++) {
+            if (strcmp(vals->keys[i], "function") != 0) {
+                val_push(out, val_str(vals->keys[i], strlen(vals->keys[i]), 0));
+            }
+        }
+    }
+    val_free(decoded);
+    return out;
+}
+
+/* send NAME write P=V ... with parameters left out: a setting (a command the model also reads) is
+ * read first (with the key parameters given) and the given parameters replace its values (read,
+ * modify, write): *values becomes the write's; any other command needs every parameter. 0, or the
+ * exit status (the message printed). */
+static int complete_write(conn_t *c, uint8_t set, const codec_field_info_t *f, const val_t *given, buf_t *values,
+                          const char **variant) {
+    const dev_setting_t *s = NULL;
+    val_t *params = command_params(c, set, f, buf_text(values));
+    buf_t missing = {0};
+    size_t i;
+    int status = 0;
+    for (i = 0; params && i < params->n; i++) {
+        if (val_get(given, params->items[i]->text) == NULL) {
+            buf_fmt(&missing, "%s%s", missing.n ? ", " : "", params->items[i]->text);
+        }
+    }
+    val_free(params);
+    for (i = 0; missing.n && i < c->model->setting_count; i++) {
+        if (c->model->settings[i].set == set && c->model->settings[i].descriptor == f->descriptor) {
+            s = &c->model->settings[i];
+        }
+    }
+    if (missing.n && s == NULL) {
+        note("%s write: give every parameter (%s left out; the command has no read to fill them from)", f->name,
+             buf_text(&missing));
+        status = EXIT_TROUBLE;
+    } else if (missing.n) {
+        buf_t absent = {0};
+        val_t *key = val_new(V_MAP, 0);
+        val_t *entry = NULL;
+        bool nack;
+        char msg[1000];
+        run_t run;
+        for (i = 0; i < s->keyed_count; i++) {
+            const val_t *v = val_get(given, s->keyed[i]);
+            if (v == NULL) {
+                buf_fmt(&absent, "%s%s", absent.n ? ", " : "", s->keyed[i]);
+            } else {
+                val_put(key, s->keyed[i], strlen(s->keyed[i]), 0, val_copy(v));
+            }
+        }
+        if (absent.n) {
+            note("%s write: give %s (the key of the read that fills the parameters left out)", f->name,
+                 buf_text(&absent));
+            status = EXIT_TROUBLE;
+        } else if ((run = read_entry(c, s, key, &entry, &nack, msg, sizeof msg)) != R_OK) {
+            note("%s", msg);
+            status = run == R_FAILED ? EXIT_REFUSED : EXIT_TROUBLE;
+        } else {
+            buf_t kept = {0};
+            for (i = 0; i < s->attr_count; i++) {
+                const char *a = s->attrs[i].name;
+                const val_t *v = val_get(given, a);
+                if (v == NULL) {
+                    buf_fmt(&kept, "%s%s", kept.n ? ", " : "", a);
+                    continue;
+                }
+                {
+                    long at = val_index(entry, a);
+                    if (at >= 0) {
+                        val_free(entry->items[at]);
+                        entry->items[at] = val_copy(v);
+                    } else {
+                        val_put(entry, a, strlen(a), 0, val_copy(v));
+                    }
+                }
+            }
+            note("%s: %s as read from the device (read, modify, write)", f->name, buf_text(&kept));
+            free(kept.s);
+            if (!command_values(s, entry, function_value("write"), values, msg, sizeof msg)) {
+                note("%s", msg);
+                status = EXIT_TROUBLE;
+            }
+            *variant = s->device;
+        }
+        val_free(entry);
+        val_free(key);
+        free(absent.s);
+    }
+    free(missing.s);
+    return status;
+}
+
 static int cmd_send(conn_t *c, const opts_t *o) {
     uint8_t set = 0;
     const codec_field_info_t *f;
@@ -2749,17 +2884,23 @@ static int cmd_send(conn_t *c, const opts_t *o) {
     run_t run;
     const val_t *reply;
     bool first = true;
+    bool write = false;
+    const char *variant = NULL;
+    val_t *given = val_new(V_MAP, 0);
     if (o->npos < 1) {
         note("send: give the command's NAME");
+        val_free(given);
         return EXIT_TROUBLE;
     }
     f = command_field(o->pos[0], &set);
     if (f == NULL) {
         note("unknown command '%s'", o->pos[0]);
+        val_free(given);
         return EXIT_TROUBLE;
     }
     if (!layout_for(f, c->device)) {
         note("%s is not supported by %s", f->name, describe_model(c->device));
+        val_free(given);
         return EXIT_TROUBLE;
     }
     buf_str(&values, "{");
@@ -2774,6 +2915,7 @@ static int cmd_send(conn_t *c, const opts_t *o) {
             note("%s: give the function first (%s)", f->name, buf_text(&names));
             free(names.s);
             free(values.s);
+            val_free(given);
             return EXIT_TROUBLE;
         }
         fn = function_value(o->pos[1]);
@@ -2786,9 +2928,11 @@ static int cmd_send(conn_t *c, const opts_t *o) {
             note("unknown function (one of: %s)", buf_text(&names));
             free(names.s);
             free(values.s);
+            val_free(given);
             return EXIT_TROUBLE;
         }
         buf_fmt(&values, "\"function\":%lld", (long long)fn);
+        write = fn == function_value("write");
         first = false;
         i = 2;
     }
@@ -2800,6 +2944,7 @@ static int cmd_send(conn_t *c, const opts_t *o) {
         if (eq == NULL || eq == arg) {
             note("%s: expected PARAMETER=VALUE, got '%s'", f->name, arg);
             free(values.s);
+            val_free(given);
             return EXIT_TROUBLE;
         }
         if (!first) {
@@ -2809,6 +2954,7 @@ static int cmd_send(conn_t *c, const opts_t *o) {
         json_string(&values, arg, (size_t)(eq - arg));
         buf_str(&values, ":");
         v = parse_value(eq + 1);
+        val_put(given, arg, (size_t)(eq - arg), 0, val_copy(v));
         {
             char *pname = xstrndup(arg, (size_t)(eq - arg));
             e = param_enum(c, set, f->descriptor, pname);
@@ -2828,6 +2974,7 @@ static int cmd_send(conn_t *c, const opts_t *o) {
                      DEV_ENUMS[e].name);
                 val_free(v);
                 free(values.s);
+                val_free(given);
                 return EXIT_TROUBLE;
             }
         } else {
@@ -2836,7 +2983,16 @@ static int cmd_send(conn_t *c, const opts_t *o) {
         val_free(v);
     }
     buf_str(&values, "}");
-    run = run_values(c, set, f->descriptor, NULL, buf_text(&values), &r);
+    if (write) {
+        int status = complete_write(c, set, f, given, &values, &variant);
+        if (status) {
+            val_free(given);
+            free(values.s);
+            return status;
+        }
+    }
+    val_free(given);
+    run = run_values(c, set, f->descriptor, variant, buf_text(&values), &r);
     free(values.s);
     if (run == R_VALUE) {
         note("%s", g_value_error);
@@ -3912,6 +4068,32 @@ static int cmd_stream(conn_t *c, const opts_t *o) {
     return c->stream_count ? 0 : EXIT_REFUSED;
 }
 
+/* ------------------------------------------------------------------------------ record */
+static int cmd_record(const char *address, const opts_t *o) {
+    device_record_options_t r;
+    if (o->npos != 1) {
+        note("record: give one FILE");
+        return EXIT_TROUBLE;
+    }
+    if (DEV_IDENTITY_SET == 0 || DEV_REPORT_COUNT == 0) {
+        note("the spec names no device information command");
+        return EXIT_TROUBLE;
+    }
+    memset(&r, 0, sizeof r);
+    r.address = address;
+    r.path = o->pos[0];
+    r.baud = o->baud ? o->baud : DEFAULT_BAUD;
+    r.timeout_ms = o->timeout_ms;
+    r.duration = o->duration;
+    r.split_size = o->split_size;
+    r.split_time = o->split_time;
+    r.command_set = DEV_IDENTITY_SET;
+    r.command_descriptor = DEV_IDENTITY_DESCRIPTOR;
+    r.reply_set = DEV_REPORTS[0].set;
+    r.reply_descriptor = DEV_REPORTS[0].descriptor;
+    return device_record(&r);
+}
+
 /* ------------------------------------------------------------------------------ auto */
 static int cmp_rate_desc(const void *a, const void *b) {
     unsigned long x = *(const unsigned long *)a, y = *(const unsigned long *)b;
@@ -4027,6 +4209,7 @@ static int cmd_auto(const opts_t *o) {
     "  ping | info | send NAME [FUNCTION] [PARAM=VALUE ...] [--json] | save-startup | factory-reset\n"       \
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
+    "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                 \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
     "before sending)."
@@ -4130,7 +4313,8 @@ int main(int argc, char **argv) {
         }
         if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
             strcmp(name, "--timeout-ms") != 0 && strcmp(name, "--rate") != 0 &&
-            strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0) {
+            strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 && strcmp(name, "--split-size") != 0 &&
+            strcmp(name, "--split-time") != 0) {
             free(pos);
             return usage("unknown option '%s'", a);
         }
@@ -4148,7 +4332,9 @@ int main(int argc, char **argv) {
                    (strcmp(name, "--timeout-ms") == 0 && !int_option(name, value, &o.timeout_ms)) ||
                    (strcmp(name, "--count") == 0 && !int_option(name, value, &o.count)) ||
                    (strcmp(name, "--rate") == 0 && !number_option(name, value, &o.rate)) ||
-                   (strcmp(name, "--duration") == 0 && !number_option(name, value, &o.duration))) {
+                   (strcmp(name, "--duration") == 0 && !number_option(name, value, &o.duration)) ||
+                   (strcmp(name, "--split-size") == 0 && !number_option(name, value, &o.split_size)) ||
+                   (strcmp(name, "--split-time") == 0 && !number_option(name, value, &o.split_time))) {
             free(pos);
             return EXIT_TROUBLE;
         }
@@ -4178,7 +4364,7 @@ int main(int argc, char **argv) {
         }
     } else if (strcmp(sub, "ping") != 0 && strcmp(sub, "info") != 0 && strcmp(sub, "send") != 0 &&
                strcmp(sub, "stream") != 0 && strcmp(sub, "save-startup") != 0 &&
-               strcmp(sub, "factory-reset") != 0) {
+               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0) {
         free(pos);
         return usage("unknown subcommand '%s'", sub);
     }
@@ -4203,6 +4389,11 @@ int main(int argc, char **argv) {
     if (o.ports != NULL) {
         free(pos);
         return usage("%s", "--ports goes with auto");
+    }
+    if (strcmp(sub, "record") == 0) { /* the device's own bytes: no session in between */
+        status = cmd_record(pos[0], &o);
+        free(pos);
+        return status;
     }
     status = connect_device(&conn, pos[0], o.model, o.baud, o.timeout_ms);
     if (status == 0) {
