@@ -2747,50 +2747,45 @@ static bool has_function(const conn_t *c, uint8_t set, const mipc_field_info_t *
     return yes;
 }
 
-/* The parameters of a command (but function) as a list of names: the values given, encoded and
- * decoded again (the decoded field names every parameter of the layout). NULL when that fails. */
-static val_t *command_params(conn_t *c, uint8_t set, const mipc_field_info_t *f, const char *values) {
-    buf_t line = {0};
-    uint8_t packet[MIPC_HEADER_SIZE + MIPC_MAX_PAYLOAD + MIPC_CHECKSUM_SIZE];
-    size_t len = 0;
-    size_t n;
+/* The parameters a command's write leaves out (", " between, in the layout's order), for a
+ * command that is no setting: the values given are read by the JSON reader, and every parameter it
+ * says is missing is added (as 0) and read again. */
+static void missing_params(conn_t *c, uint8_t set, const mipc_field_info_t *f, const char *values,
+                           buf_t *out) {
+    buf_t probe = {0};
+    mipc_field_value_t command;
     char msg[MIPC_ERROR_MESSAGE_MAX + 200];
-    val_t *decoded;
-    const val_t *fields;
-    const val_t *vals = NULL;
-    val_t *out = NULL;
-    size_t i;
-    buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set, f->descriptor);
-    json_string(&line, f->name, strlen(f->name));
-    if (f->layout_count > 1) {
-        buf_fmt(&line, ",\"device\":\"%s\"", mipc_device_id(c->device));
-    }
-    buf_fmt(&line, ",\"values\":%s}]}", values);
-    if (mipc_json_encode_line(buf_text(&line), line.n, packet, sizeof packet, &len, msg, sizeof msg) !=
-        MIPC_OK) {
-        free(line.s);
-        return NULL;
-    }
-    free(line.s);
-    n = mipc_json_packet_line(packet, len, 0, c->device, g_line, sizeof g_line);
-    if (n >= sizeof g_line) {
-        return NULL;
-    }
-    decoded = json_parse(g_line, n);
-    fields = val_get(decoded, "fields");
-    if (fields && fields->kind == V_LIST && fields->n == 1) {
-        vals = val_get(fields->items[0], "values");
-    }
-    if (vals && vals->kind == V_MAP) {
-        out = val_new(V_LIST, 0);
-        for (i = 0; i < vals->n; i++) {
-            if (strcmp(vals->keys[i], "function") != 0) {
-                val_push(out, val_str(vals->keys[i], strlen(vals->keys[i]), 0));
-            }
+    int round;
+    buf_str(&probe, values);
+    for (round = 0; round < 64; round++) {
+        buf_t line = {0};
+        const char *at;
+        const char *end;
+        mipc_status_t st;
+        buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set,
+                f->descriptor);
+        json_string(&line, f->name, strlen(f->name));
+        if (f->layout_count > 1) {
+            buf_fmt(&line, ",\"device\":\"%s\"", mipc_device_id(c->device));
         }
+        buf_fmt(&line, ",\"values\":%s}]}", buf_text(&probe));
+        msg[0] = '\0';
+        st = mipc_json_command_line(buf_text(&line), line.n, &command, msg, sizeof msg);
+        free(line.s);
+        at = strstr(msg, "missing parameter \"");
+        if (st == MIPC_OK || at == NULL) {
+            break;
+        }
+        at += strlen("missing parameter \"");
+        end = strchr(at, '"');
+        if (end == NULL) {
+            break;
+        }
+        buf_fmt(out, "%s%.*s", out->n ? ", " : "", (int)(end - at), at);
+        probe.n--; /* the closing brace */
+        buf_fmt(&probe, "%s\"%.*s\":0}", probe.n > 1 ? "," : "", (int)(end - at), at);
     }
-    val_free(decoded);
-    return out;
+    free(probe.s);
 }
 
 /* send NAME write P=V ... with parameters left out: a setting (a command the model also reads) is
@@ -2800,19 +2795,20 @@ static val_t *command_params(conn_t *c, uint8_t set, const mipc_field_info_t *f,
 static int complete_write(conn_t *c, uint8_t set, const mipc_field_info_t *f, const val_t *given,
                           buf_t *values, const char **variant) {
     const dev_setting_t *s = NULL;
-    val_t *params = command_params(c, set, f, buf_text(values));
     buf_t missing = {0};
     size_t i;
     int status = 0;
-    for (i = 0; params && i < params->n; i++) {
-        if (val_get(given, params->items[i]->text) == NULL) {
-            buf_fmt(&missing, "%s%s", missing.n ? ", " : "", params->items[i]->text);
-        }
-    }
-    val_free(params);
-    for (i = 0; missing.n && i < c->model->setting_count; i++) {
+    for (i = 0; i < c->model->setting_count; i++) {
         if (c->model->settings[i].set == set && c->model->settings[i].descriptor == f->descriptor) {
             s = &c->model->settings[i];
+        }
+    }
+    if (s == NULL) {
+        missing_params(c, set, f, buf_text(values), &missing);
+    }
+    for (i = 0; s != NULL && i < s->attr_count; i++) {
+        if (val_get(given, s->attrs[i].name) == NULL) {
+            buf_fmt(&missing, "%s%s", missing.n ? ", " : "", s->attrs[i].name);
         }
     }
     if (missing.n && s == NULL) {
