@@ -147,8 +147,12 @@ static bool log_write_raw(log_t *l, const uint8_t *data, size_t len) {
             if (err == EINTR) {
                 continue;
             }
-            if (done > 0 && ftruncate(l->fd, (off_t)l->size) != 0) {
-                /* the file stays as it is: nothing better to do */
+            if (done > 0) { /* what was written, cut back to its last whole packet */
+                size_t keep = whole(data, done, -1, 0, NULL);
+                if (ftruncate(l->fd, (off_t)(l->size + keep)) == 0) {
+                    l->size += keep;
+                    l->total += keep;
+                }
             }
             snprintf(l->error, sizeof l->error, "cannot write %s: %s", l->name, strerror(err));
             return false;

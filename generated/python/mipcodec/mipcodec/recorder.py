@@ -98,7 +98,7 @@ class WriteFailed(Exception):
 
 
 class Log:
-    """The log file(s): writes whole chunks, and cuts a file back to its last whole chunk when a
+    """The log file(s): writes whole chunks, and cuts a file back to its last whole packet when a
     write fails part way (a full disk, a file size limit)."""
 
     def __init__(self, path: str, reply: bytes, split_size: int, split_time: float) -> None:
@@ -131,15 +131,18 @@ class Log:
         self._write(self.reply)
 
     def _write(self, data: bytes) -> None:
-        """All of data, or the file cut back to its size before (WriteFailed)."""
+        """All of data, or what was written of it cut back to its last whole packet (WriteFailed)."""
         done = 0
         try:
             while done < len(data):
                 done += os.write(self.fd, data[done:])
         except OSError as e:
             if done:
+                keep, _ = whole(data[:done])
                 try:
-                    os.ftruncate(self.fd, self.size)
+                    os.ftruncate(self.fd, self.size + keep)
+                    self.size += keep
+                    self.total += keep
                 except OSError:
                     pass
             raise WriteFailed(f"cannot write {self.files[-1]}: {e.strerror or e}") from None

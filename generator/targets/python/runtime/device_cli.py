@@ -406,7 +406,9 @@ def _complete_write(conn: Connection, cls: Any, values: Dict[str, Any], given: D
     left out, the values as given."""
     if values.get("function") != _function_value("write"):
         return None
-    setting = next((s for s in st.settings_for(conn.model) if (s.cls.SET, s.cls.DESCRIPTOR) == (cls.SET, cls.DESCRIPTOR)), None)
+    setting = next(
+        (s for s in st.settings_for(conn.model) if (s.cls.SET, s.cls.DESCRIPTOR) == (cls.SET, cls.DESCRIPTOR)), None
+    )
     if setting is not None:  # what a settings file entry holds (counts and reserved bytes follow)
         missing = [a for a, _, _ in setting.attrs if a not in given]
     else:
@@ -420,7 +422,9 @@ def _complete_write(conn: Connection, cls: Any, values: Dict[str, Any], given: D
         )
     absent = [a for a in setting.key_attrs if a not in given]
     if absent:
-        raise Usage(f"{cls.NAME} write: give {', '.join(absent)} (the key of the read that fills the parameters left out)")
+        raise Usage(
+            f"{cls.NAME} write: give {', '.join(absent)} (the key of the read that fills the parameters left out)"
+        )
     entry = st.read_entry(conn.device, setting, {a: given[a] for a in setting.key_attrs})
     _note(f"{cls.NAME}: {', '.join(missing)} as read from the device (read, modify, write)")
     return st.command_of(setting, {**entry, **given})
