@@ -2750,7 +2750,8 @@ static bool has_function(const conn_t *c, uint8_t set, const codec_field_info_t 
 /* The parameters a command's write leaves out (", " between, in the layout's order), for a
  * command that is no setting: the values given are read by the JSON reader, and every parameter it
  * says is missing is added (as 0) and read again. */
-static void missing_params(conn_t *c, uint8_t set, const codec_field_info_t *f, const char *values, buf_t *out) {
+static void missing_params(conn_t *c, uint8_t set, const codec_field_info_t *f, const char *values,
+                           buf_t *out) {
     buf_t probe = {0};
     codec_field_value_t command;
     char msg[CODEC_ERROR_MESSAGE_MAX + 200];
@@ -2761,7 +2762,8 @@ static void missing_params(conn_t *c, uint8_t set, const codec_field_info_t *f, 
         const char *at;
         const char *end;
         codec_status_t st;
-        buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set, f->descriptor);
+        buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set,
+                f->descriptor);
         json_string(&line, f->name, strlen(f->name));
         if (f->layout_count > 1) {
             buf_fmt(&line, ",\"device\":\"%s\"", codec_device_id(c->device));
@@ -2790,8 +2792,8 @@ static void missing_params(conn_t *c, uint8_t set, const codec_field_info_t *f, 
  * read first (with the key parameters given) and the given parameters replace its values (read,
  * modify, write): *values becomes the write's; any other command needs every parameter. 0, or the
  * exit status (the message printed). */
-static int complete_write(conn_t *c, uint8_t set, const codec_field_info_t *f, const val_t *given, buf_t *values,
-                          const char **variant) {
+static int complete_write(conn_t *c, uint8_t set, const codec_field_info_t *f, const val_t *given,
+                          buf_t *values, const char **variant) {
     const dev_setting_t *s = NULL;
     buf_t missing = {0};
     size_t i;
@@ -2810,8 +2812,8 @@ static int complete_write(conn_t *c, uint8_t set, const codec_field_info_t *f, c
         }
     }
     if (missing.n && s == NULL) {
-        note("%s write: give every parameter (%s left out; the command has no read to fill them from)", f->name,
-             buf_text(&missing));
+        note("%s write: give every parameter (%s left out; the command has no read to fill them from)",
+             f->name, buf_text(&missing));
         status = EXIT_TROUBLE;
     } else if (missing.n) {
         buf_t absent = {0};
@@ -4204,7 +4206,7 @@ static int cmd_auto(const opts_t *o) {
     "  ping | info | send NAME [FUNCTION] [PARAM=VALUE ...] [--json] | save-startup | factory-reset\n"       \
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
-    "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                 \
+    "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                  \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
     "before sending)."
@@ -4308,8 +4310,8 @@ int main(int argc, char **argv) {
         }
         if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 &&
             strcmp(name, "--timeout-ms") != 0 && strcmp(name, "--rate") != 0 &&
-            strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 && strcmp(name, "--split-size") != 0 &&
-            strcmp(name, "--split-time") != 0) {
+            strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 &&
+            strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0) {
             free(pos);
             return usage("unknown option '%s'", a);
         }

@@ -239,7 +239,8 @@ static int await_reply(const device_record_options_t *o, codec_transport_t *tr, 
             const codec_field_info_t *f;
             codec_status_t why;
             f = codec_find_field(o->command_set, o->command_descriptor, &why);
-            snprintf(msg, sizeof msg, "no answer to the device information command (%s: no reply before the timeout)",
+            snprintf(msg, sizeof msg,
+                     "no answer to the device information command (%s: no reply before the timeout)",
                      f ? f->name : "?");
             note(msg);
             return 1;
