@@ -360,6 +360,7 @@ int device_record(const device_record_options_t *o) {
             note(l.error);
             status = 2;
             snprintf(why, sizeof why, "the write failed");
+            nheld = 0; /* not written: the disk is full, not a packet unfinished */
             break;
         }
         memmove(held, held + e, nheld - e);
@@ -383,6 +384,7 @@ int device_record(const device_record_options_t *o) {
                 note(l.error);
                 status = 2;
                 snprintf(why, sizeof why, "the write failed");
+                nheld = 0;
             } else {
                 memmove(held, held + e, nheld - e);
                 nheld -= e;

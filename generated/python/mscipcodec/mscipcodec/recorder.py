@@ -285,6 +285,7 @@ def _run(
     except WriteFailed as e:
         _note(str(e))
         status, why = TROUBLE, "the write failed"
+        held.clear()  # not written: the disk is full, not a packet unfinished
     finally:
         log.close()
     left_out = f"; {len(held)} bytes of an unfinished packet left out" if held else ""

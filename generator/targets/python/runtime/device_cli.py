@@ -5,10 +5,12 @@ device from the shell.
 
 ADDRESS: tcp:HOST:PORT, a serial port path, or `auto` (scan the serial ports, ping each at the
 model's baud rates, list what answers). Subcommands: ping, info, stream, send, settings dump|apply|
-diff|schema, save-startup, factory-reset.
+diff|schema, save-startup, factory-reset, record (recorder.py, docs/record.md: its own statuses).
+The options of every subcommand (--device, --baud, --timeout-ms) go before or after it.
 
 Exit status: 0 done (diff: the device matches the file); 1 the device said no or differs: a
-NACK or no reply to a command sent, a write that failed part way, `diff` found differences,
+NACK or no reply to a command sent (a silent device: no reply to the device information command),
+a write that failed part way, `diff` found differences,
 `ping` or `auto` found no device; 2 nothing was changed: a usage error, an unreadable or invalid
 settings file (every problem one `FILE:LINE: message` line), a setting the model does not support
 or a link budget exceeded (refused before any write is sent), no connection, a missing optional
