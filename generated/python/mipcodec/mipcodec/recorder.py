@@ -22,7 +22,7 @@ import os
 import signal
 import sys
 import time
-from typing import Any, List, Optional, Tuple
+from typing import Any, List, Optional, Tuple, Union
 
 from ._protocol import PACKAGE
 from .framing import (
@@ -48,7 +48,7 @@ DEVICE = 1
 TROUBLE = 2
 
 
-def whole(buf: bytes) -> Tuple[int, List[Tuple[int, int]]]:
+def whole(buf: Union[bytes, bytearray]) -> Tuple[int, List[Tuple[int, int]]]:
     """(end, packets): buf[:end] is whole packets and bytes that are not part of any packet, the
     rest the start of a packet that has not ended yet (waits for more bytes); packets: the (start,
     end) of every complete packet in buf[:end]. The framing rule of docs/conformance.md section 1:
@@ -57,7 +57,7 @@ def whole(buf: bytes) -> Tuple[int, List[Tuple[int, int]]]:
     n = len(buf)
     pos = 0
     packets: List[Tuple[int, int]] = []
-    view = bytearray(buf) if not isinstance(buf, bytearray) else buf
+    view = buf if isinstance(buf, bytearray) else bytearray(buf)
     while pos < n:
         i = view.find(SYNC, pos)
         if i < 0:
@@ -101,7 +101,7 @@ class Log:
     """The log file(s): writes whole chunks, and cuts a file back to its last whole packet when a
     write fails part way (a full disk, a file size limit)."""
 
-    def __init__(self, path: str, reply: bytes, split_size: int, split_time: float) -> None:
+    def __init__(self, path: str, reply: bytes, split_size: float, split_time: float) -> None:
         self.path = path
         self.reply = reply
         self.split_size = split_size
@@ -169,7 +169,7 @@ class Log:
             self.fd = -1
 
 
-def _is_reply(packet: bytes, set_id: int, descriptor: int) -> bool:
+def _is_reply(packet: Union[bytes, bytearray], set_id: int, descriptor: int) -> bool:
     if packet[SET_OFFSET] != set_id:
         return False
     payload = packet[HEADER_SIZE : len(packet) - CHECKSUM_SIZE]
@@ -189,7 +189,7 @@ def record(
     baud: int,
     timeout_ms: int,
     duration: Optional[float] = None,
-    split_size: int = 0,
+    split_size: float = 0,
     split_time: float = 0.0,
 ) -> int:
     """Records the device at address into path; returns the exit status (messages on stderr)."""
@@ -231,7 +231,7 @@ def _run(
     path: str,
     timeout_ms: int,
     duration: Optional[float],
-    split_size: int,
+    split_size: float,
     split_time: float,
     stop: List[str],
 ) -> int:

@@ -868,7 +868,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     r.add_argument("file", metavar="FILE")
     r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
-    r.add_argument("--split-size", type=int, default=0, metavar="BYTES", help="a new file once one holds BYTES")
+    r.add_argument("--split-size", type=float, default=0, metavar="BYTES", help="a new file once one holds BYTES")
     r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
