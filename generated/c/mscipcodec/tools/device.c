@@ -2872,6 +2872,14 @@ static int complete_write(conn_t *c, uint8_t set, const mscipc_field_info_t *f, 
     return status;
 }
 
+/* The function selector's names, ", " between. */
+static void function_names(buf_t *names) {
+    size_t k;
+    for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
+        buf_fmt(names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
+    }
+}
+
 static int cmd_send(conn_t *c, const opts_t *o) {
     uint8_t set = 0;
     const mscipc_field_info_t *f;
@@ -2883,32 +2891,27 @@ static int cmd_send(conn_t *c, const opts_t *o) {
     bool first = true;
     bool write = false;
     const char *variant = NULL;
-    val_t *given = val_new(V_MAP, 0);
+    val_t *given;
     if (o->npos < 1) {
         note("send: give the command's NAME");
-        val_free(given);
         return EXIT_TROUBLE;
     }
     f = command_field(o->pos[0], &set);
     if (f == NULL) {
         note("unknown command '%s'", o->pos[0]);
-        val_free(given);
         return EXIT_TROUBLE;
     }
     if (!layout_for(f, c->device)) {
         note("%s is not supported by %s", f->name, describe_model(c->device));
-        val_free(given);
         return EXIT_TROUBLE;
     }
+    given = val_new(V_MAP, 0); /* the parameters given, by name */
     buf_str(&values, "{");
     if (has_function(c, set, f)) {
         int64_t fn;
         if (o->npos < 2 || strchr(o->pos[1], '=') != NULL) {
             buf_t names = {0};
-            size_t k;
-            for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
-                buf_fmt(&names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
-            }
+            function_names(&names);
             note("%s: give the function first (%s)", f->name, buf_text(&names));
             free(names.s);
             free(values.s);
@@ -2918,10 +2921,7 @@ static int cmd_send(conn_t *c, const opts_t *o) {
         fn = function_value(o->pos[1]);
         if (fn < 0) {
             buf_t names = {0};
-            size_t k;
-            for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
-                buf_fmt(&names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
-            }
+            function_names(&names);
             note("unknown function (one of: %s)", buf_text(&names));
             free(names.s);
             free(values.s);
