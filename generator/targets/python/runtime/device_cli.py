@@ -864,7 +864,9 @@ def _parser() -> argparse.ArgumentParser:
     f.add_argument("file")
     gs.add_parser("schema", parents=[common], help="print the path of the settings files' JSON Schema")
     r = sub.add_parser(
-        "record", parents=[common], help="record the device's stream to FILE, its Device Information reply first"
+        "record",
+        parents=[common],
+        help="record the device's stream to FILE, its Device Information first (docs/record.md)",
     )
     r.add_argument("file", metavar="FILE")
     r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
