@@ -9,6 +9,13 @@ Default [WRSLD]", "when function is SAVE, LOAD, or DEFAULT" name the function, n
 - transcribed: a parameter's `default` cites it (`source` or `also`, docs/spec-format.md), or
 - decided: a `kind: decision` note lists it in its `lines` (why it is no parameter's value).
 
+A default stated in a sentence (PROSE below: "The default time constant is 10 seconds", "Factory
+default setting is GPS and GLONASS enabled with ...", "In its default state, the labeled axes ...
+are aligned", "Triggers are disabled by default": a default for a structure, for several
+parameters at once, or as a property of the device's initial state) must be transcribed; a
+decision covers such a line only when it says the sentence names no parameter's value
+(`no_value: true`).
+
 A transcription or decision citing a line that states no default is reported too (the manual
 changed, or the line is wrong). Prints one row per stated line and the counts per manual; exit
 status 1 when a stated default is not covered, 2 when the manuals are missing. Not part of
@@ -40,6 +47,25 @@ SELECTOR = re.compile(
     ),
     re.I,
 )
+
+# A default stated in a sentence rather than marked in a table ("(default)").
+PROSE = re.compile(
+    "|".join(
+        [
+            r"\bdefault(?:\s+[\w/-]+){0,3}\s+(?:is|are|was|of)\s+",
+            r"\bin\s+its\s+default\s+state\b",
+            r"\bis\s+the\s+default\b",
+            r"\bdefaults?\s+to\b",
+            r"\bby\s+default\b",
+        ]
+    ),
+    re.I,
+)
+
+
+def in_a_sentence(line: str) -> bool:
+    """Whether a line states a default in a sentence (PROSE), the function selector's names left out."""
+    return bool(PROSE.search(SELECTOR.sub(" ", re.sub(r"<[^>]+>", " ", line))))
 
 
 def stated_lines(text: str) -> tuple[list[tuple[int, str]], int]:
@@ -94,6 +120,8 @@ def coverage(ir: dict) -> dict[tuple[str, int], list[tuple[str, str]]]:
                 cover.setdefault((ref["manual"], ref["line"]), []).append(("transcribed", where))
     for proto, label, _sources, note in spec_notes(ir):
         how = "decided" if note["kind"] == "decision" else "not a decision"
+        if how == "decided" and note.get("no_value"):
+            how = "decided: names no value"
         for ref in note.get("lines", []):
             text = " ".join(note["text"].split())
             cover.setdefault((ref["manual"], ref["line"]), []).append(
@@ -112,7 +140,7 @@ def audit(ir: dict, texts: dict[str, str]) -> tuple[list[dict], list[str], dict[
     counts: dict[str, dict] = {}
     for manual, text in texts.items():
         stated, selector = stated_lines(text)
-        c = counts[manual] = {"stated": len(stated), "transcribed": 0, "decided": 0, "uncovered": 0}
+        c = counts[manual] = {"stated": len(stated), "transcribed": 0, "decided": 0, "uncovered": 0, "sentences": 0}
         c["selector"] = selector
         at = {n for n, _ in stated}
         for lineno, line in stated:
@@ -120,16 +148,24 @@ def audit(ir: dict, texts: dict[str, str]) -> tuple[list[dict], list[str], dict[
             kinds = {h for h, _ in how}
             status = "transcribed" if "transcribed" in kinds else "decided" if kinds else "uncovered"
             c[status] += 1
+            sentence = in_a_sentence(line)
+            c["sentences"] += sentence
             excerpt = " ".join(re.sub(r"<[^>]+>", " ", line).split())
             rows.append(
                 {
                     "manual": manual,
                     "line": lineno,
                     "status": status,
+                    "sentence": sentence,
                     "where": "; ".join(w for _, w in how),
                     "text": excerpt,
                 }
             )
+            if sentence and status == "decided" and "decided: names no value" not in kinds:
+                problems.append(
+                    f"{manual}:{lineno}: states a default in a sentence that only a decision covers: transcribe "
+                    f"it (or mark the decision no_value when the sentence names no value): {excerpt[:100]}"
+                )
             if status == "uncovered":
                 problems.append(
                     f"{manual}:{lineno}: states a default that no parameter's default or decision note cites: "
@@ -174,10 +210,14 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{r['manual']}:{r['line']}\t{r['status']}\t{r['where'] or '-'}\t{r['text'][:80]}")
     for msg in problems:
         print(msg)
-    print("manual\tstated\ttranscribed\tdecided\tuncovered\t(function selector mentions)", file=sys.stderr)
+    print(
+        "manual\tstated\ttranscribed\tdecided\tuncovered\tin sentences\t(function selector mentions)",
+        file=sys.stderr,
+    )
     for manual, c in counts.items():
         print(
-            f"{manual}\t{c['stated']}\t{c['transcribed']}\t{c['decided']}\t{c['uncovered']}\t({c['selector']})",
+            f"{manual}\t{c['stated']}\t{c['transcribed']}\t{c['decided']}\t{c['uncovered']}\t{c['sentences']}"
+            f"\t({c['selector']})",
             file=sys.stderr,
         )
     print(

@@ -50,6 +50,21 @@ def spec_notes(ir: dict):
                     for q in [] if v.get("layout") else v["params"]:  # layout params: listed once, above
                         for n in q.get("notes", []):
                             yield p["name"], f"{label} param {q['name']}", v["sources"], n
+        yield from _simulation_notes(p)
+
+
+def _simulation_notes(p: dict):
+    """The decisions of the simulated device (the protocol file's `simulation` section): the notes
+    of its entries, and of each per-device or per-reply entry of its lists."""
+    for key, entry in (p.get("simulation") or {}).items():
+        items = entry if isinstance(entry, list) else [entry]
+        for i, e in enumerate(items):
+            if not isinstance(e, dict):
+                continue
+            which = e.get("device") or e.get("reply") or (str(i) if isinstance(entry, list) else "")
+            label = f"simulation {key}" + (f" {which}" if which else "")
+            for n in e.get("notes", []):
+                yield p["name"], label, e.get("sources", []), n
 
 
 def render_errata(ir: dict, vectors: list[dict]) -> str:

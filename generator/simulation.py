@@ -11,6 +11,7 @@ the language's name of a layout parameter). The Python back end prints the resul
 
 from __future__ import annotations
 
+import math
 from typing import Callable
 
 # The refusals of the simulated device (runtime sim.py), each answered with an ack code.
@@ -61,6 +62,15 @@ def filters(proto: dict, param: Callable[[str], str]) -> dict[str, dict]:
                 "in_use": masks(used) if "in_use" in h else {},
                 "external": list(h.get("external", [])),
             }
+            if "without_aids" in h:  # note 3: the velocity vector's turns observe the heading
+                w = h["without_aids"]
+                f["heading"]["without_aids"] = {
+                    "source": value(h["enum"], w["member"]),
+                    "min_speed": float(w["min_speed"]),
+                    "turn_rate": math.radians(w["turn_rate"]),
+                    "converge_turn": math.radians(w["converge_turn"]),
+                    "drift": math.radians(w["drift"]),
+                }
         if "internal" in e:
             i = e["internal"]
             f["internal"] = {
@@ -97,8 +107,11 @@ def filters(proto: dict, param: Callable[[str], str]) -> dict[str, dict]:
 def command_facts(proto: dict, v: dict, param: Callable[[str], str]) -> dict:
     """What the simulated device reads of command layout v (runtime sim.py): per function value
     the parameters a request must carry (`sends`: not optional; the function selector left out),
-    the scalar enum parameters it checks (`enums`) and per device the factory defaults its
-    manual states (`factory`), parameters named by `param`."""
+    the scalar enum parameters it checks (`enums`), per function value the parameters the device
+    ignores (`ignored`: not sent for that function, or stated ignored for it, `ignored` in the spec:
+    neither required nor checked nor taken into a reply) and per device the factory values
+    (`factory`: the defaults its manual states, else the spec's `plausible` value), parameters
+    named by `param`."""
     fenum = (proto.get("function_selector") or {}).get("enum")
     types = {t["name"]: t for t in proto["types"]}
     fvalues = {x["name"]: x["value"] for x in types[fenum]["values"]} if fenum else {}
@@ -109,13 +122,31 @@ def command_facts(proto: dict, v: dict, param: Callable[[str], str]) -> dict:
         )
         for fn in v["functions"] or []
     }
-    factory = {
-        dev: {
-            param(q["name"]): q["default"]["value"] for q in qs if q.get("default") and dev in q["default"]["devices"]
-        }
-        for dev in v["devices"]
+    ignored = {
+        fvalues[fn]: tuple(
+            param(q["name"])
+            for q in qs
+            if (q["functions"] is not None and fn not in q["functions"])
+            or (q.get("ignored") and fn in q["ignored"]["functions"])
+        )
+        for fn in v["functions"] or []
     }
+
+    def factory_value(q: dict, dev: str):
+        if q.get("default") and dev in q["default"]["devices"]:
+            return q["default"]["value"]
+        return q["plausible"]["value"] if q.get("plausible") else None
+
+    factory = {}
+    for dev in v["devices"]:
+        values = {param(q["name"]): x for q in qs if (x := factory_value(q, dev)) is not None}
+        for q in qs:  # a counted list's count parameter: the number of its records
+            count = q["count"] or {}
+            if count.get("kind") == "param" and isinstance(values.get(param(q["name"])), list):
+                values.setdefault(param(count["param"]), len(values[param(q["name"])]))
+        factory[dev] = values
     return {
+        "ignored": {fn: names for fn, names in ignored.items() if names},
         "sends": sends,
         "enums": tuple(param(q["name"]) for q in qs if q["type"]["kind"] == "enum" and q["count"] is None),
         "factory": {dev: values for dev, values in factory.items() if values},

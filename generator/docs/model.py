@@ -379,6 +379,7 @@ class Docs:
         devices = p["devices"]
         types = {t["name"]: t for t in p["types"]}
         stated_rows, assumed = [], {d["id"]: [] for d in devices}
+        plausible: list[str] = []
         for s in p["sets"]:
             for f in s["fields"]:
                 for v in f["variants"]:
@@ -391,6 +392,12 @@ class Docs:
                                 cells.append("–")
                             elif d and dev["id"] in d["devices"]:
                                 cells.append(code(default_value_text(q, types)))
+                            elif q.get("plausible"):
+                                pl = q["plausible"]
+                                cells.append("plausible " + code(str(pl["value"])))
+                                plausible.append(
+                                    f"{link} {code(q['name'])} = {code(str(pl['value']))}: {esc(pl['why'])}"
+                                )
                             else:
                                 cells.append("assumed 0")
                                 assumed[dev["id"]].append(f"{link} {code(q['name'])}")
@@ -409,6 +416,12 @@ class Docs:
             pg.table(head, stated_rows, "defaults")
         else:
             pg.p("No manual of this protocol states a factory value.")
+        pg.h(2, "Plausible values")
+        pg.p(
+            "Settings whose factory value no manual states but whose zero the device cannot hold (a baud rate): "
+            "the simulated device starts from the spec's `plausible` value, for the reason given."
+        )
+        pg.items(sorted(set(plausible)) or ["none"])
         pg.h(2, "Settings without a stated default")
         pg.p(
             "Every value a setting command holds whose factory value no manual states: the simulated device "

@@ -146,6 +146,8 @@ def build_params(
             "optional_for": optional_for,
             "notes": p.get("notes", []),
             "default": _default(ctx, sf, pp, p, owner, tref, count, pf),
+            "ignored": _ignored(ctx, sf, pp, p, owner, functions, pf, optional_for),
+            "plausible": _plausible(ctx, sf, pp, p, owner, tref, count, pf),
         }
         q["size"] = param_size(q)
         names[name] = q
@@ -319,7 +321,15 @@ def _is_integer(tref: dict) -> bool:
 
 
 def _default(
-    ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, tref: dict, count: dict | None, pf: list | None
+    ctx: Context,
+    sf: SpecFile,
+    pp: tuple,
+    p: dict,
+    owner: str,
+    tref: dict,
+    count: dict | None,
+    pf: list | None,
+    check_manual: bool = True,
 ) -> dict | None:
     """The `default` of a setting's parameter (docs/spec-format.md), its value checked against the
     type (an enum value by name or number, as the enum's number in the IR) and its manual against
@@ -339,7 +349,7 @@ def _default(
     cited = [("source",), *(("also", i) for i in range(len(d.get("also", []))))]
     refs = [d["source"], *d.get("also", [])]
     for at, ref in zip(cited, refs):
-        if ref["manual"] not in ctx.manual_devices:
+        if check_manual and ref["manual"] not in ctx.manual_devices:
             ctx.err(
                 sf,
                 where + at + ("manual",),
@@ -385,9 +395,88 @@ def _default(
     }
 
 
+def _ignored(
+    ctx: Context,
+    sf: SpecFile,
+    pp: tuple,
+    p: dict,
+    owner: str,
+    functions: list[str] | None,
+    pf: list | None,
+    optional_for: list | None,
+) -> dict | None:
+    """The functions for which the manual says the device ignores the parameter (`ignored`,
+    docs/spec-format.md): functions of the command for which the parameter is not required (not
+    sent for them, or optional_for them), with the line saying so; None without one."""
+    ig = p.get("ignored")
+    if ig is None:
+        return None
+    where = pp + ("ignored",)
+    for fn in ig["functions"]:
+        if functions is None or fn not in functions:
+            ctx.err(
+                sf,
+                where + ("functions",),
+                f"{owner}: parameter {p['name']} is ignored for function '{fn}', which the command does not support",
+                "a subset of the command's functions",
+            )
+        elif pf is not None and fn in pf and fn not in (optional_for or []):
+            ctx.err(
+                sf,
+                where + ("functions",),
+                f"{owner}: parameter {p['name']} is ignored for function '{fn}' but required for it",
+                "leave the function out of the parameter's functions, or list it in optional_for",
+            )
+    if ig["source"]["manual"] not in ctx.manual_devices:
+        ctx.err(sf, where + ("source", "manual"), f"unknown manual '{ig['source']['manual']}'", "a protocol manual")
+    return {"functions": list(ig["functions"]), "source": dict(ig["source"])}
+
+
+def _plausible(
+    ctx: Context, sf: SpecFile, pp: tuple, p: dict, owner: str, tref: dict, count: dict | None, pf: list | None
+) -> dict | None:
+    """The value the simulated device starts with when no manual states one (`plausible`,
+    docs/spec-format.md), checked against the type as a default is; None without one."""
+    pl = p.get("plausible")
+    if pl is None:
+        return None
+    where = pp + ("plausible",)
+    source = pl.get("source")
+    if source is not None and source["manual"] not in ctx.manual_devices:
+        ctx.err(sf, where + ("source", "manual"), f"unknown manual '{source['manual']}'", "a protocol manual")
+    # Checked as a default would be (type, count), then kept apart from it.
+    shaped = _default(
+        ctx,
+        sf,
+        pp,
+        {"name": p["name"], "default": {"value": pl["value"], "source": source or {"manual": "", "line": 1}}},
+        owner,
+        tref,
+        count,
+        pf,
+        check_manual=False,
+    )
+    if shaped is None:
+        return None
+    return {"value": shaped["value"], "why": " ".join(pl["why"].split()), "source": source}
+
+
 def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: str, tref: dict, item):
     kind = tref["kind"]
     bad = f"{owner}: default of {name}: {item!r} is not a value of {tref.get('name', kind)}"
+    if kind == "struct":  # one record of a counted struct list: every member, each checked
+        members = ctx.types.get(tref["name"], {}).get("params", [])
+        names = [m["name"] for m in members]
+        if not isinstance(item, dict) or sorted(item) != sorted(names):
+            ctx.err(sf, where, bad, "a record naming every member: " + ", ".join(names))
+            return None
+        record = {}
+        for m in members:
+            v = _default_item(ctx, sf, where, owner, f"{name}.{m['name']}", m["type"], item[m["name"]])
+            if v is None:
+                return None
+            record[m["name"]] = v
+        return record
     if kind == "enum":
         values = ctx.types.get(tref["name"], {}).get("values", [])
         for v in values:

@@ -13,7 +13,8 @@ bitfield members; the descriptor lists' commands, replies and list parameters ex
 command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
 descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
 the identity's reply parameters exist (an unsigned integer or a string) and every device gives a
-fitting value for every item; the world table's sets are data sets and its fields and parameters
+fitting value for every item; each device status reply (`status`) is a response and names unsigned
+integer parameters of it or of the structures and union members it holds, and data sets; the world table's sets are data sets and its fields and parameters
 exist; every world action's command, parameters and flag exist, it has the keys its action needs,
 and an aid's `enabled_by` are members of the enum of the `enable` action's parameter (each aid
 gains `enabled_by_values`). The entry keeps the section's shape with sources resolved (each gains
@@ -78,6 +79,7 @@ def run(ctx: Context) -> None:
     sim.setdefault("world", [])
     sim["descriptor_lists"] = check.descriptor_lists(spec.get("descriptor_lists"))
     sim["identity"] = check.identity(spec.get("identity"))
+    sim["status"] = [check.status(("status", i), e) for i, e in enumerate(spec.get("status", []))]
     ctx.simulation = sim
 
 
@@ -146,6 +148,45 @@ class _Checker:
             "sources": self.ctx.check_sources(self.sf, ("simulation",) + path + ("sources",), spec["sources"]),
             "notes": spec.get("notes", []),
         }
+
+    def status(self, path: tuple, entry: dict) -> dict:
+        """A device status reply (sim/status.py): a response whose parameters, in it or in the
+        structures and union members it holds, include every named one, each an unsigned integer;
+        the stream and message sets are data sets."""
+        reply = next((f for _, f in self.fields.get(entry["reply"], []) if f["role"] == "response"), None)
+        if reply is None:
+            self.err(path + ("reply",), f"simulation status: '{entry['reply']}' is not a response", "a response")
+            return dict(entry)
+        found: dict[str, str] = {}
+        todo = [reply["params"]]
+        while todo:
+            for q in todo.pop():
+                t = q["type"]
+                found.setdefault(q["name"], t.get("name", "") if q["count"] is None else "")
+                known = self.ctx.types.get(t.get("name", ""), {})
+                if t["kind"] == "struct":
+                    todo.append(known.get("params", []))
+                elif t["kind"] == "union":
+                    todo.extend(self.ctx.types[m["type"]]["params"] for m in known.get("members", []))
+        named = [(("timer", i), n) for i, n in enumerate(entry.get("timer", []))]
+        named += [(("power", i), n) for i, n in enumerate(entry.get("power", []))]
+        named += [(("streams", n), n) for n in entry.get("streams", {})]
+        named += [(("bytes", k), n) for k, n in entry.get("bytes", {}).items()]
+        named += [(("pps", k), n) for k, n in entry.get("pps", {}).items()]
+        for i, m in enumerate(entry.get("messages", [])):
+            named += [(("messages", i, k), m[k]) for k in ("count", "last")]
+            self.data_set(path + ("messages", i, "set"), m["set"])
+        for j, number in enumerate(entry.get("streams", {}).values()):
+            self.data_set(path + ("streams", j), number)
+        for p, name in named:
+            if found.get(name) not in _UNSIGNED:
+                self.err(
+                    path + p, f"simulation status: '{name}' is not an unsigned integer parameter of {entry['reply']}",
+                    "the name of an unsigned integer parameter of the reply or of a structure it holds",
+                )  # fmt: skip
+        sources = self.ctx.check_sources(self.sf, ("simulation",) + path + ("sources",), entry["sources"])
+        set_id = next(s["id"] for s, f in self.fields[entry["reply"]] if f is reply)
+        return {**entry, "set": set_id, "descriptor": reply["id"], "sources": sources}
 
     def identity(self, spec: dict | None) -> dict | None:
         if spec is None:
@@ -364,6 +405,15 @@ class _Checker:
         if heading:
             self.params(path + ("heading",), heading["command"], [heading["param"]])
             self.members(path + ("heading",), heading["enum"], list(heading["members"]))
+            if "without_aids" in heading:
+                member = heading["without_aids"]["member"]
+                self.members(path + ("heading", "without_aids"), heading["enum"], [member])
+                if heading["members"].get(member):
+                    self.err(
+                        path + ("heading", "without_aids", "member"),
+                        f"simulation heading: '{member}' enables heading sources: not without aids",
+                        "the member that enables no heading source",
+                    )
             if "in_use" in heading:
                 used = sorted({s for sources in heading["members"].values() for s in sources})
                 self.bits(path + ("heading", "in_use"), heading["in_use"], used)

@@ -120,14 +120,19 @@ def _perturbed(value):
 
 def _factory(protocol: dict, set_: dict, variant: dict, device: str) -> dict:
     """The factory values of the read reply's plain parameters (by name): the spec's default of the
-    command parameter of that name where the device's manual states one, else zero (an enum without a zero
-    value: its first value)."""
+    command parameter of that name where the device's manual states one, else its plausible value,
+    else zero (an enum without a zero value: its first value)."""
     types = {t["name"]: t for t in protocol["types"]}
     defaults = {
         q["name"]: q["default"]["value"]
-        for q in variant["params"]
         if q.get("default") and device in q["default"]["devices"]
+        else q["plausible"]["value"]
+        for q in variant["params"]
+        if (q.get("default") and device in q["default"]["devices"]) or q.get("plausible")
     }
+    for q in variant["params"]:  # a counted list's count parameter: the number of its records
+        if (q["count"] or {}).get("kind") == "param" and isinstance(defaults.get(q["name"]), list):
+            defaults.setdefault(q["count"]["param"], len(defaults[q["name"]]))
     rid = next(r["id"] for r in variant["responses"] if (r["when"] or {}).get("function") == "read")
     reply = next(f for f in set_["fields"] if f["id"] == rid)
     params = next(v for v in reply["variants"] if v["device"] in (None, device))["params"]
@@ -688,11 +693,11 @@ def test_identity_defaults_and_flags() -> None:
             info = dev.base.get_device_info().info
         finally:
             dev.transport.close()
-    # the GX5-45 manual's example reply (3dm-gx5-45-dcp.txt line 785)
+    # the GX5-45 manual's example reply (3dm-gx5-45-dcp.txt line 785), model number 6251 (line 1349)
     assert info.firmware_version == 0x05FE and info.serial_number.strip() == b"6232-00122"
     assert (info.model_name.strip(), info.model_number.strip(), info.device_options.strip()) == (
         b"3DM-GX5-45",
-        b"6232-4270",
+        b"6251-4270",  # the model number Device Status states (line 1349; docs/errata.md)
         b"5g, 150d/s",
     )
     flags = ["--serial", "SN-42", "--lot", "L7", "--options", "2g, 75d/s", "--firmware", "1209"]

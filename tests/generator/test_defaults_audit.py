@@ -21,7 +21,9 @@ MANUAL = "\n".join(
 )
 
 
-def _ir(notes_lines: list[int], default: dict | None, kind: str = "decision", manual: str = "a.txt") -> dict:
+def _ir(
+    notes_lines: list[int], default: dict | None, kind: str = "decision", manual: str = "a.txt", no_value: bool = False
+) -> dict:
     """A one-command protocol: a parameter with `default` (IR shape) and a decision note listing
     `notes_lines` of manual a.txt."""
     param = {"name": "enable", "type": {"kind": "primitive", "name": "bool"}, "notes": [], "default": default}
@@ -30,6 +32,8 @@ def _ir(notes_lines: list[int], default: dict | None, kind: str = "decision", ma
         "text": "Not a parameter's value.",
         "lines": [{"manual": manual, "line": n} for n in notes_lines],
     }
+    if no_value:
+        note["no_value"] = True
     field = {
         "id": 0x11,
         "name": "stream",
@@ -76,7 +80,9 @@ def test_transcribed_decided_and_uncovered_lines():
         "a.txt:6: states a default that no parameter's default or decision note cites: "
         "Baud rates: 9600, 115200 ( default )"
     ]
-    assert counts == {"a.txt": {"stated": 4, "transcribed": 2, "decided": 1, "uncovered": 1, "selector": 3}}
+    assert counts == {
+        "a.txt": {"stated": 4, "transcribed": 2, "decided": 1, "uncovered": 1, "sentences": 2, "selector": 3}
+    }  # lines 4 and 8 state their default in a sentence
 
 
 def test_everything_covered_is_no_problem():
@@ -110,3 +116,47 @@ def test_lines_on_a_note_other_than_a_decision_or_of_another_manual_are_reported
         "z.txt:5: p: cmd.stream (0x0C,0x11): Not a parameter's value. (decided) cites a manual that is not audited"
         in problems
     )
+
+
+# Defaults stated in sentences (issue 51): for a structure, for several parameters at once, or as
+# a property of the device's initial state. Excerpts in the manuals' words (3dm-gx5-45-dcp.txt:1106,
+# 3dm-cv7-ins-docs.txt:7594, :154, :7021, :2161), one per line.
+PROSE_MANUAL = "\n".join(
+    [
+        "Factory default setting is GPS and GLONASS enabled with min/max of GPS 8/16, GLONASS 8/14.",  # 1
+        "Pitch/roll and heading corrections each have their own configurable time constants, with a "
+        "valid range of 1-1000 seconds. The default time constant is 10 seconds.",  # 2
+        "In its default state, the labeled axes of the 3DM-CV7 are assumed to be aligned with the vehicle frame.",  # 3
+        "Triggers are disabled by default.",  # 4
+        "When the device is connected to a computer via USB, the Main port will default to USB1.",  # 5
+        "0x01 - Portable (default)",  # 6: a table's mark, not a sentence
+        "0x05 - Reset to factory default settings",  # 7: the selector's name
+    ]
+)
+
+
+def test_defaults_stated_in_sentences_are_found():
+    stated, _ = stated_lines(PROSE_MANUAL)
+    assert [n for n, _ in stated] == [1, 2, 3, 4, 5, 6]
+    assert [n for n, line in stated if defaults_audit.in_a_sentence(line)] == [1, 2, 3, 4, 5]
+
+
+def test_a_default_stated_in_a_sentence_is_not_waived_by_a_decision():
+    rows, problems, counts = audit(_ir([1, 2, 3, 4, 5, 6], None), {"a.txt": PROSE_MANUAL})
+    assert [(r["line"], r["status"], r["sentence"]) for r in rows] == [
+        (1, "decided", True),
+        (2, "decided", True),
+        (3, "decided", True),
+        (4, "decided", True),
+        (5, "decided", True),
+        (6, "decided", False),
+    ]
+    assert [p.split(":")[1] for p in problems] == ["1", "2", "3", "4", "5"]
+    assert all("states a default in a sentence that only a decision covers" in p for p in problems)
+    assert counts["a.txt"]["sentences"] == 5
+
+
+def test_a_sentence_is_covered_by_its_transcription_or_a_decision_that_it_names_no_value():
+    # lines 1-4 transcribed (one parameter's default citing them all), line 5 decided as naming no value
+    _, problems, _ = audit(_ir([5, 6], _default(1, also=(2, 3, 4)), no_value=True), {"a.txt": PROSE_MANUAL})
+    assert problems == []

@@ -82,7 +82,7 @@ _RUNTIME_FILES = {
     "tools/device/connect.c": "tools/device/connect.c",
     "tools/device/settings.c": "tools/device/settings.c",
     "tools/device/budget.c": "tools/device/budget.c",
-    "tools/device/commands.c": "tools/device/commands.c",
+    "tools/device/requests.c": "tools/device/requests.c",
     "tools/device/plan.c": "tools/device/plan.c",
     "tools/device/stream.c": "tools/device/stream.c",
     "tools/device/record.c": "tools/device/record.c",

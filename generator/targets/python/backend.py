@@ -1031,9 +1031,16 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             if f["role"] == "command":
                 by_name.setdefault(f["name"], []).append(cls)
                 facts_ = simulation.command_facts(proto, v, py_attr)
-                commands.append({"cls": cls, "sends": pyrepr(facts_["sends"]), "enums": pyrepr(facts_["enums"])})
+                commands.append(
+                    {
+                        "cls": cls,
+                        "sends": pyrepr(facts_["sends"]),
+                        "enums": pyrepr(facts_["enums"]),
+                        "ignored": pyrepr(facts_["ignored"]) if facts_["ignored"] else None,
+                    }
+                )
                 for dev, factory in facts_["factory"].items():  # as its manual states them
-                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(factory)})
+                    defaults.append({"device": dev, "cls": cls, "value": pyrepr(_records(factory, v, proto))})
             elif s["kind"] == "data" or f["role"] == "data":
                 units = tuple(
                     (py_attr(q["name"]), q.get("units"), (q["count"] or {}).get("value"))
@@ -1079,9 +1086,32 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             for c in by_name.get(a["command"], [])
         ],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
-        "sim_modules": sorted({sm["module"] for sm in sets if sm["classes"]}),
+        "sim_modules": sorted(
+            {sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())
+        ),
         **_sim_identity(proto, sets),
     }
+
+
+class _Code(str):
+    """Python source text printed as it is by pyrepr (a struct record's constructor)."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def _records(factory: dict, v: dict, proto: dict) -> dict:
+    """A command's factory values with struct records (a counted struct list's default, IR dicts)
+    written as constructors of the package's types module (`types.Name(member=value, ...)`)."""
+    structs = {py_attr(q["name"]): q["type"]["name"] for q in v["params"] if q["type"]["kind"] == "struct"}
+    out = dict(factory)
+    for attr, name in structs.items():
+        if isinstance(out.get(attr), list):
+            out[attr] = [
+                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={x!r}" for k, x in r.items()) + ")")
+                for r in out[attr]
+            ]
+    return out
 
 
 def _sim_identity(proto: dict, sets: list[dict]) -> dict:
@@ -1109,7 +1139,22 @@ def _sim_identity(proto: dict, sets: list[dict]) -> dict:
         fmt = (t["length"], " " if t["padding"] == "space" else "\x00", t["justify"]) if t["kind"] == "string" else None
         path = tuple(py_attr(n) for n in r["param"].split("."))
         reports.setdefault(classes[(r["set"], r["descriptor"])], []).append((path, r["item"], fmt))
+    status = []
+    for e in sim.get("status", []):  # the device status replies (sim/status.py): roles by attribute
+        roles = {
+            "timer": tuple(py_attr(n) for n in e.get("timer", [])),
+            "power": tuple(py_attr(n) for n in e.get("power", [])),
+            "streams": {py_attr(n): s for n, s in e.get("streams", {}).items()},
+            "bytes": {k: py_attr(n) for k, n in e.get("bytes", {}).items()},
+            "pps": {k: py_attr(n) for k, n in e.get("pps", {}).items()},
+            "messages": tuple(
+                (m["set"], py_attr(m["count"]), py_attr(m["last"]), bool(m.get("while_fix")))
+                for m in e.get("messages", [])
+            ),
+        }
+        status.append({"cls": classes[(e["set"], e["descriptor"])], "value": pyrepr(roles)})
     return {
+        "status": status,
         "descriptor_lists": lists,
         "descriptor_contents": pyrepr(tuple((dl or {}).get("contents", []))),
         "identity_reports": [{"cls": c, "value": pyrepr(tuple(v))} for c, v in reports.items()],

@@ -181,3 +181,68 @@ def test_frame_one_name_or_one_per_device_of_the_protocol(tmp_path):
     ctx, _ = _layout(tmp_path, "      - {name: a, type: vector3f, frame: {dev_c: sensor}}\n")
     (err,) = errors(ctx)
     assert "parameter a: frame for unknown device 'dev_c'" in err and "dev_a, dev_b" in err, err
+
+
+def test_ignored_names_functions_that_do_not_require_the_parameter(tmp_path):
+    # "For all functions except 0x01 ..., the new ... value is ignored" (3dm-gx5-45-dcp.txt:2005).
+    src = "source: {manual: a.txt, line: 9}"
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: key, type: u8, functions: [write, read]}\n"
+        f"      - {{name: flag, type: bool, functions: [write, read], ignored: {{functions: [read, save], {src}}}}}\n"
+        f"      - {{name: mode, type: u8, functions: [write], ignored: {{functions: [read], {src}}}}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert [e.split("error: ")[1] for e in errors(ctx)] == [
+        "base.cmd: parameter flag is ignored for function 'read' but required for it"
+        " (expected leave the function out of the parameter's functions, or list it in optional_for)",
+        "base.cmd: parameter flag is ignored for function 'save', which the command does not support"
+        " (expected a subset of the command's functions)",
+    ]
+    assert v["params"][2]["ignored"] == {"functions": ["read"], "source": {"manual": "a.txt", "line": 9}}
+    assert v["params"][0]["ignored"] is None
+
+
+def test_plausible_values_are_checked_like_defaults_and_keep_their_reason(tmp_path):
+    ctx, v = _layout(
+        tmp_path,
+        "      - {name: baud, type: u32, functions: [write], plausible: {value: 115200, why: 'the lowest rate\n"
+        "          the port serves', source: {manual: a.txt, line: 3}}}\n"
+        "      - {name: noise, type: vector3f, functions: [write], plausible: {value: [1, 2], why: x}}\n",
+        "    functions: [write, read]\n",
+    )
+    assert [e.split("error: ")[1] for e in errors(ctx)] == [
+        "base.cmd: default of noise is not a list of 3 values (expected 3 values)",
+    ]
+    assert v["params"][0]["plausible"] == {
+        "value": 115200,
+        "why": "the lowest rate the port serves",
+        "source": {"manual": "a.txt", "line": 3},
+    }
+
+
+def test_a_counted_struct_list_default_is_records_of_every_member(tmp_path):
+    # The GX5-45's factory constellations (3dm-gx5-45-dcp.txt:1106): one record per constellation.
+    types = (
+        "structs:\n  - name: Pair\n    title: Pair\n    sources: [{manual: a.txt, line: 5}]\n    params:\n"
+        "      - {name: a, type: u8}\n      - {name: b, type: bool}\n"
+    )
+    field = (
+        "  - id: 0x01\n    name: cmd\n    role: command\n    title: Cmd\n    functions: [write, read]\n"
+        "    sources: [{manual: a.txt, line: 4}]\n    params:\n"
+        "      - {name: n, type: u8, functions: [write]}\n"
+        "      - {name: items, type: Pair, count: n, functions: [write], default: {value: VALUE,"
+        " source: {manual: a.txt, line: 9}}}\n"
+    )
+    good = field.replace("VALUE", "[{a: 1, b: true}, {a: 3, b: false}]")
+    (tmp_path / "good").mkdir()
+    (tmp_path / "bad").mkdir()
+    ctx = build(tmp_path / "good", {"base.yaml": command_set(good, types)}, "variants")
+    assert errors(ctx) == []
+    items = ctx.sets[0]["fields"][0]["variants"][0]["params"][1]
+    assert items["default"]["value"] == [{"a": 1, "b": True}, {"a": 3, "b": False}]
+    bad = field.replace("VALUE", "[{a: 1, b: true}, {a: 3}]")
+    ctx = build(tmp_path / "bad", {"base.yaml": command_set(bad, types)}, "variants")
+    assert [e.split("error: ")[1] for e in errors(ctx)] == [
+        "base.cmd: default of items: {'a': 3} is not a value of Pair (expected a record naming every member: a, b)"
+    ]

@@ -310,3 +310,76 @@ def test_world_names_are_checked(tmp_path):
     param = WORLD.replace("accel: {}", "accel: {x: specific_force}")
     got = errors(build(tmp_path / "param", _files(SIMULATION + param), "simulation"))
     assert any("'x' is not a parameter of accel" in e for e in got), got
+
+
+WITHOUT_AIDS = (
+    "        without_aids: {member: init, min_speed: 1.0, turn_rate: 2.0, converge_turn: 90.0, drift: 0.05}\n"
+)
+
+
+def test_heading_without_aids_is_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _aiding(AIDING + WITHOUT_AIDS), "simulation")
+    assert errors(ctx) == []
+    assert ctx.simulation["filters"][0]["heading"]["without_aids"]["member"] == "init"
+    for i, (member, message) in enumerate(
+        [
+            ("full", "'full' is not a member of FilterState"),
+            ("navigating", "'navigating' enables heading sources: not without aids"),  # it enables the magnetometer
+        ]
+    ):
+        (tmp_path / str(i)).mkdir()
+        got = errors(build(tmp_path / str(i), _aiding(AIDING + WITHOUT_AIDS.replace("init", member)), "simulation"))
+        assert any(message in e for e in got), (message, got)
+
+
+STATUS_FIELDS = """\
+  - id: 0x03
+    name: status
+    role: command
+    title: Status
+    response: 0x83
+    sources: [{manual: a.txt, line: 9}]
+    params: []
+  - id: 0x83
+    name: status_reply
+    role: response
+    title: Status reply
+    sources: [{manual: a.txt, line: 9}]
+    params:
+      - {name: timer, type: u32}
+      - {name: inner, type: Rate}
+      - {name: ratio, type: float}
+"""
+STATUS = """\
+  status:
+    - reply: status_reply
+      timer: [timer]
+      pps: {count: decimation, last: timer}
+      streams: {descriptor: 0x80}
+      messages: [{set: 0x80, count: decimation, last: timer, while_fix: true}]
+      sources: [{manual: a.txt, line: 9}]
+"""
+
+
+def test_status_is_checked_and_exported(tmp_path):
+    files = _files(SIMULATION + STATUS)
+    files["base.yaml"] = command_set(COMMANDS + STATUS_FIELDS)
+    ctx = build(tmp_path, files, "simulation")
+    assert errors(ctx) == []
+    entry = ctx.simulation["status"][0]
+    assert (entry["set"], entry["descriptor"]) == (0x01, 0x83) and entry["pps"]["count"] == "decimation"
+    bad = STATUS.replace("timer: [timer]", "timer: [ratio, missing]").replace("descriptor: 0x80", "descriptor: 0x81")
+    files["protocol.yaml"] = files["protocol.yaml"].replace(STATUS, bad)
+    (tmp_path / "bad").mkdir()
+    got = errors(build(tmp_path / "bad", files, "simulation"))
+    expected = [
+        "'ratio' is not an unsigned integer parameter of status_reply",  # a float
+        "'missing' is not an unsigned integer parameter of status_reply",
+        "0x81 is not a data set of the protocol",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    files["protocol.yaml"] = files["protocol.yaml"].replace("reply: status_reply", "reply: status")
+    (tmp_path / "command").mkdir()
+    got = errors(build(tmp_path / "command", files, "simulation"))
+    assert any("'status' is not a response" in e for e in got), got

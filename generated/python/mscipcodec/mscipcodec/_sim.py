@@ -43,6 +43,26 @@ COMMANDS: Dict[Any, Tuple[Dict[int, Tuple[str, ...]], Tuple[str, ...]]] = {
     imu_config.AuxAccelRange: ({1: (), 2: (), 3: (), 4: (), 5: ()}, ("range",)),
 }
 
+# class -> {function value: parameters the device ignores for it}: not sent for that function, or
+# stated ignored by the manual (the spec's `ignored`); neither checked nor taken into a reply
+IGNORED: Dict[Any, Dict[int, Tuple[str, ...]]] = {
+    imu_config.UartBaudRate: {2: ("baud_rate",), 3: ("baud_rate",), 4: ("baud_rate",), 5: ("baud_rate",)},
+    imu_config.Filter: {2: ("bandwidth",), 3: ("bandwidth",), 4: ("bandwidth",), 5: ("bandwidth",)},
+    imu_config.SampleRate: {2: ("decimation",), 3: ("decimation",), 4: ("decimation",), 5: ("decimation",)},
+    imu_config.SelectSensors: {
+        2: ("reserved", "sensors"),
+        3: ("reserved", "sensors"),
+        4: ("reserved", "sensors"),
+        5: ("reserved", "sensors"),
+    },
+    imu_config.AccelRange: {2: ("range",), 3: ("range",), 4: ("range",), 5: ("range",)},
+    imu_config.GyroRange: {2: ("range",), 3: ("range",), 4: ("range",), 5: ("range",)},
+    imu_config.DataOnOff: {2: ("control",), 3: ("control",), 4: ("control",), 5: ("control",)},
+    imu_config.XtrigOnOff: {2: ("control",), 3: ("control",), 4: ("control",), 5: ("control",)},
+    imu_config.SelectSensorsRevB: {2: ("sensors",), 3: ("sensors",), 4: ("sensors",), 5: ("sensors",)},
+    imu_config.AuxAccelRange: {2: ("range",), 3: ("range",), 4: ("range",), 5: ("range",)},
+}
+
 # class -> ((parameter, units, fixed count or None), ...) of its plain values
 DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     imu_data.ScaledAccel: (("accel", "g", 3),),
@@ -139,10 +159,18 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "calibration_date": ("string", 16),
 }
 
-# Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: device -> class -> {parameter: value}
+# Device status replies kept live (spec simulation status; sim/status.py): reply class -> the
+# attributes of each role (timer, power, streams {attribute: set}, bytes, pps, messages (set, count, last, only while
+# the receiver has a fix))
+STATUS: Dict[Any, Dict[str, Any]] = {}
+
+# Factory values the manuals state (the spec's `default`, with its source line), else the spec's
+# `plausible` value (with its reason); every other parameter's factory value is zero:
+# device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
     "ms_imu3020": {
+        imu_config.UartBaudRate: {"baud_rate": 115200},
+        imu_config.SampleRate: {"decimation": 1},
         imu_config.SelectSensors: {"sensors": [129, 130]},
         imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
     },

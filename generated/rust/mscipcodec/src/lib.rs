@@ -122,7 +122,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "a7da37fef031acf2";
+pub const SPEC_HASH: &str = "c45605a5aa7c5e40";
 /// The protocol's name in the spec (`spec/mscip/`), as the tools print it.
 pub const PROTOCOL: &str = "mscip";
 

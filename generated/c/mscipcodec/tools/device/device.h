@@ -24,7 +24,7 @@
 /* The tool's parts, each file's functions declared here under its name: text.c (messages,
  * buffers), values.c (the value model; JSON lines read through the runtime's JSON reader),
  * yaml.c (settings files), connect.c (the spec's tables, the connection), settings.c (one
- * setting's command values, read and normalized), budget.c (the link budget), commands.c (ping,
+ * setting's command values, read and normalized), budget.c (the link budget), requests.c (ping,
  * info, send, save-startup, factory-reset, settings dump), plan.c (settings diff and apply),
  * stream.c (stream, auto ping), record.c (record: the device's stream to a log file), main.c (the
  * options). */
@@ -218,7 +218,7 @@ int check_budget(const conn_t *c, const formats_t *formats, const double *base, 
 /* The baud rate the budget is checked against and where it comes from. */
 unsigned long link_baud(conn_t *c, unsigned long option, char *where, size_t cap);
 
-/* commands.c */
+/* requests.c */
 int cmd_ping(conn_t *c, const opts_t *o);
 int cmd_info(conn_t *c, const opts_t *o);
 int cmd_send(conn_t *c, const opts_t *o);

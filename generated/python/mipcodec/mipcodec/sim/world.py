@@ -28,6 +28,7 @@ GNSS_FIX_AFTER = 2.0  # seconds of simulated time a receiver takes to a 3D fix
 KINEMATIC_SPEED = 2.0  # m/s: GNSS velocity gives a heading from this speed on (CV7 manual line 533)
 MAG_DISTURBANCE = (0.15, 0.10, 0.30)  # gauss, body frame: a magnetic disturbance (--mag-disturbance)
 INTERNAL_GAIN = 0.1  # how far each sample of an internal sensor pulls the filter's output toward it
+TURN = "velocity_turn"  # no heading aid: the velocity vector's turn observes the heading (not a source)
 MAG_ANOMALY = 0.10  # a field magnitude this far (relative) from the model's is rejected as disturbed
 # RTK (--rtk-corrections): seconds of corrections and a fix without a break before the receivers
 # report RTK float, then RTK fixed (the manuals state no times: the simulator's choice, in the
@@ -215,6 +216,8 @@ class NavFilter:
         self.offsets: Dict[str, Tuple[float, ...]] = {}  # output - truth the aiding left (NED m, m/s; rad)
         self.mode_since = t
         self.last_state = ""
+        self.turned = 0.0  # rad the velocity vector has turned with a fix (no heading aid: note 3)
+        self.turn_t: Optional[float] = None  # when the turn was last sampled
 
     def accept(self, kind: str, t: float) -> None:
         self.accepted[kind] = t
@@ -333,8 +336,41 @@ class World:
     def mag_disturbed(self, t: float) -> bool:
         return any(a <= t < b for a, b in self.mag_disturbances)
 
+    def _turn_observes(self, t: float, fix: bool, vel: Vec, acc: Vec) -> bool:
+        """With no heading aid (the heading profile's `without_aids`, GX5-45 Heading Update
+        Control note 3): whether the velocity vector's turn observes the heading at t. While the
+        receiver has a fix and the horizontal velocity (from min_speed) turns at turn_rate or more,
+        the turn adds up; from converge_turn in all, each such sample observes the heading. While
+        the filter runs and the velocity vector does not turn, the heading drifts at `drift`
+        (rad/s)."""
+        nav = self.filter
+        rule = (nav.profile.get("heading") or {}).get("without_aids")
+        if not rule or nav.heading_sources:
+            return False
+        dt = 0.0 if nav.turn_t is None else max(0.0, t - nav.turn_t)
+        nav.turn_t = t if nav.turn_t is None else max(t, nav.turn_t)
+        speed2 = vel[0] * vel[0] + vel[1] * vel[1]
+        rate = abs(vel[0] * acc[1] - vel[1] * acc[0]) / speed2 if speed2 >= rule["min_speed"] ** 2 else 0.0
+        turning = fix and rate >= rule["turn_rate"]
+        if turning:
+            nav.turned += rate * dt
+            return bool(nav.turned >= rule["converge_turn"])
+        if nav.running and dt:
+            old = nav.offsets.get("heading", (0.0,))[0]
+            nav.offsets["heading"] = (_wrap(old + rule["drift"] * dt),)
+        return False
+
     def _aid_internal(
-        self, t: float, fix: bool, pos: Vec, vel: Vec, yaw: float, mag: Vec, euler: Vec, gnss: Tuple[Vec, Vec]
+        self,
+        t: float,
+        fix: bool,
+        pos: Vec,
+        vel: Vec,
+        yaw: float,
+        mag: Vec,
+        euler: Vec,
+        gnss: Tuple[Vec, Vec],
+        acc: Vec = (0.0, 0.0, 0.0),
     ) -> Dict[str, Any]:
         """The device's own sensors aiding the filter at t (the sources its settings enable): the
         magnetometer heading (rejected while the field's magnitude is off the model's), the
@@ -365,6 +401,9 @@ class World:
         enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
         nav.in_use = [s for s in enabled if available.get(s)]
         g = INTERNAL_GAIN
+        if self._turn_observes(t, fix, vel, acc):  # no heading aid: the velocity vector's turn
+            nav.in_use.append(TURN)
+            headings[TURN] = yaw + self.rng.gauss(0.0, 0.003)
 
         def blend(kind: str, error: Sequence[float]) -> None:
             old = nav.offsets.get(kind, (0.0,) * len(error))
@@ -399,7 +438,7 @@ class World:
         gnss_err = (n(0.0, sigma), n(0.0, sigma), n(0.0, 1.6 * sigma))
         gnss_pos = tuple(pos[k] + gnss_err[k] for k in range(3))
         gnss_vel = tuple(v + n(0.0, 0.05) for v in vel)
-        dual = self._aid_internal(t, fix, pos, vel, yaw, mag, euler, (gnss_pos, gnss_vel))  # type: ignore[arg-type]
+        dual = self._aid_internal(t, fix, pos, vel, yaw, mag, euler, (gnss_pos, gnss_vel), acc)  # type: ignore[arg-type]
         offsets = self.filter.offsets
         out_pos = [pos[k] + offsets.get("position", (0.0, 0.0, 0.0))[k] for k in range(3)]
         out_vel = [vel[k] + offsets.get("velocity", (0.0, 0.0, 0.0))[k] for k in range(3)]

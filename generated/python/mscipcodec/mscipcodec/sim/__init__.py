@@ -35,6 +35,8 @@ from ..codec.layout import Choice, Enum, Field
 from ..codec.packets import DecodedField, RawField, decode_packet
 from ..codec.stdio import closed_stdout
 from ..session import support_error
+from . import status as sim_status
+from .status import set_of as _set_of
 from .world import GRAVITY, RADIANS, World, gps_start_of_utc
 
 Chunk = Tuple[float, bytes]
@@ -113,23 +115,6 @@ def check_speed(speed: float) -> float:
     return float(speed)
 
 
-def _set_of(source: Any, command: Any) -> Optional[int]:
-    """The data set a streaming command refers to (_sim.py: a number, a parameter, alternatives)."""
-    if isinstance(source, int):
-        return source
-    if isinstance(source, str):
-        value = getattr(command, source, None)
-        return None if value is None else int(value)
-    for alt in source:
-        name, mapping = (alt, None) if isinstance(alt, str) else alt
-        if hasattr(command, name):
-            value = getattr(command, name)
-            if value is None:
-                return None
-            return mapping.get(int(value)) if mapping else int(value)
-    return None
-
-
 class Simulator:
     """The simulated device: settings (current, startup, factory), replies, streams, faults."""
 
@@ -197,6 +182,7 @@ class Simulator:
     def feed(self, data: bytes, now: float) -> List[Chunk]:
         """The replies to the commands in `data` (and the data due by `now`)."""
         out = self.poll(now)
+        sim_status.received(self, data, now)  # what a device status counts
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
@@ -242,6 +228,8 @@ class Simulator:
         if not any(s == set_id for s, _ in registry.FIELDS):
             return "", nack["unknown_set"], [], []
         if isinstance(entry, RawField):
+            entry = _without_ignored(set_id, entry, self.device) or entry
+        if isinstance(entry, RawField):
             classes = registry.FIELDS.get((set_id, entry.descriptor))
             rows = _meta.COMMANDS.get((set_id, entry.descriptor), ())
             if not classes or classes[0].ROLE != "command" or not any(self.device in r[2] for r in rows):
@@ -261,8 +249,11 @@ class Simulator:
             unknown = not capabilities.supports(self.device, int(command.SET or 0), command.DESCRIPTOR)
             return name, nack["unknown_descriptor" if unknown else "invalid_parameter"], [], []
         info = _sim.COMMANDS.get(type(command))
+        ignored = _ignored(command)  # what the function does not read: never checked
         if info is not None and any(
-            not isinstance(getattr(command, a, None), Enum) and getattr(command, a, None) is not None for a in info[1]
+            not isinstance(getattr(command, a, None), Enum) and getattr(command, a, None) is not None
+            for a in info[1]
+            if a not in ignored
         ):
             return name, nack["invalid_parameter"], [], []
         if not self._baud_supported(command):
@@ -447,9 +438,10 @@ class Simulator:
         for source in (stored, command):
             if source is None:
                 continue
+            skip = _ignored(source)  # a read's ignored bytes are not the setting's value
             for a in source._ATTRS:
                 v = getattr(source, a)
-                if a != "function" and v is not None:
+                if a != "function" and v is not None and a not in skip:
                     values[a] = v
         internal = _sim.FILTER.get(self.device, {}).get("internal")
         if internal and command.NAME == internal["command"]:  # a source's effective state (ALL included)
@@ -473,6 +465,7 @@ class Simulator:
         except (TypeError, ValueError):
             value = _complete(cls())
         self._report(value)
+        sim_status.fill(self, value)
         return value  # type: ignore[no-any-return]
 
     def descriptor_lists(self) -> List[List[Tuple[int, int]]]:
@@ -778,6 +771,32 @@ def _build(set_id: int, fields: List[Tuple[int, bytes]]) -> bytes:
 
 def _function_value(name: str) -> Optional[int]:
     return next((v for v, n in _meta.FUNCTION_NAMES.items() if n == name), None)
+
+
+def _ignored(command: Any) -> Tuple[str, ...]:
+    """The parameters the command's function does not read (_sim.IGNORED: not sent for it, or
+    stated ignored by the manual): a request may carry any bytes there."""
+    fn = getattr(command, "function", None)
+    if fn is None:
+        return ()
+    return _sim.IGNORED.get(type(command), {}).get(int(fn), ())
+
+
+def _without_ignored(set_id: int, entry: Any, device: str) -> Optional[DecodedField]:
+    """A command field that does not decode because of bytes its function ignores (a bool of 0xFF
+    in a read: "For all functions except 0x01 ... the new ... value is ignored"), decoded without
+    them: the longest prefix that decodes leaving every ignored parameter out; None otherwise."""
+    data = bytes(entry.data)
+    for cls in registry.FIELDS.get((set_id, entry.descriptor), ()):
+        ignored = _sim.IGNORED.get(cls, {}).get(data[0]) if data else None
+        if not ignored:
+            continue
+        for n in range(len(data) - 1, 0, -1):
+            fields = decode_packet(_build(set_id, [(entry.descriptor, data[:n])]), device=device).fields
+            got = fields[0] if fields else None
+            if isinstance(got, DecodedField) and all(getattr(got.value, a, None) is None for a in ignored):
+                return got
+    return None
 
 
 def _plain(value: Any) -> Any:
@@ -1209,7 +1228,7 @@ def _loop(
             while due < len(pending) and pending[due][0] <= now:
                 due += 1
             for when, chunk in pending[:due]:
-                link.write(chunk)
+                sim_status.write(link, chunk, sim)
                 while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
                     link.baud = sim.baud_changes.pop(0)[1]
             del pending[:due]

@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "fea0ef00f041f4a3"
+SPEC_HASH = "c3e8c524292e529f"
 
 __all__ = [
     "SPEC_HASH",

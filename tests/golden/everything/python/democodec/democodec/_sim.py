@@ -27,6 +27,12 @@ COMMANDS: Dict[Any, Tuple[Dict[int, Tuple[str, ...]], Tuple[str, ...]]] = {
     commands.PerDevice_dev_b: ({}, ()),
 }
 
+# class -> {function value: parameters the device ignores for it}: not sent for that function, or
+# stated ignored by the manual (the spec's `ignored`); neither checked nor taken into a reply
+IGNORED: Dict[Any, Dict[int, Tuple[str, ...]]] = {
+    commands.Configure: {2: ("mode", "params", "suppress_ack"), 3: ("mode", "params", "suppress_ack")},
+}
+
 # class -> ((parameter, units, fixed count or None), ...) of its plain values
 DATA: Dict[Any, Tuple[Tuple[str, Any, Any], ...]] = {
     data.Sample: (("quat", None, 4), ("big", None, None), ("small", None, None), ("f", None, None)),
@@ -86,6 +92,12 @@ IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {}
 IDENTITY: Dict[str, Dict[str, Any]] = {}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
 
-# Factory values the manuals state (the spec's `default`, with its source line); every other
-# parameter's factory value is zero: device -> class -> {parameter: value}
+# Device status replies kept live (spec simulation status; sim/status.py): reply class -> the
+# attributes of each role (timer, power, streams {attribute: set}, bytes, pps, messages (set, count, last, only while
+# the receiver has a fix))
+STATUS: Dict[Any, Dict[str, Any]] = {}
+
+# Factory values the manuals state (the spec's `default`, with its source line), else the spec's
+# `plausible` value (with its reason); every other parameter's factory value is zero:
+# device -> class -> {parameter: value}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {}
