@@ -76,15 +76,15 @@ def run(command: List[str], *args: str, timeout: float = 60, **kw: object) -> su
 
 def packets(data: bytes) -> List[bytes]:
     """The packets of a log; asserts that every byte is part of one (no skipped bytes)."""
-    events = mip.framing.parse(data)
-    skipped = [e for e in events if not isinstance(e, mip.framing.RawPacket)]
+    events = mip.codec.framing.parse(data)
+    skipped = [e for e in events if not isinstance(e, mip.codec.framing.RawPacket)]
     assert not skipped, f"{sum(len(e.data) for e in skipped)} bytes outside packets"
     return [bytes(e.data) for e in events]
 
 
 def device_info(packet: bytes) -> object:
     """The Device Information reply's value in a packet (None: not such a reply)."""
-    decoded = mip.packets.decode_packet(packet, 0, MODEL)
+    decoded = mip.codec.packets.decode_packet(packet, 0, MODEL)
     for f in decoded.fields:
         value = getattr(f, "value", None)
         if value is not None and type(value).NAME == "device_info":
