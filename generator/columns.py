@@ -165,7 +165,7 @@ def time_sources(proto: dict) -> list[tuple[int, int, str, int]]:
 
 def time_facts(proto: dict, attr=lambda name: name) -> dict:
     """The IR's `time` entry as the time model's tables: per kind (`gps_time`, `device_clock`,
-    `leap_seconds`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
+    `leap_seconds`, `reference_time`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
     parameter names through `attr` (a back end's attribute naming)."""
     t = proto.get("time") or {}
     out: dict = {}
@@ -183,4 +183,18 @@ def time_facts(proto: dict, attr=lambda name: name) -> dict:
                 row["per_second"] = e["per_second"]
             rows.append(row)
         out[kind] = rows
+    out["reference_time"] = [
+        {
+            "device": e["device"],
+            "set": f"0x{e['set']:02X}",
+            "descriptor": f"0x{e['descriptor']:02X}",
+            "kind": e["kind"],
+            "param": attr(e["param"]) if "param" in e else "",
+            "per_second": e.get("per_second", 0),
+            "tow": attr(e["tow"]) if "tow" in e else "",
+            "week": attr(e["week"]) if "week" in e else "",
+            "monotonic": e["monotonic"],
+        }
+        for e in t.get("reference_time", [])
+    ]
     return out

@@ -8,11 +8,18 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
 - `device_clock`: fields carrying the device's own monotonic clock: `field`, `param` (an unsigned
   integer in ns, us, ms or s);
 - `leap_seconds`: fields reporting GPS - UTC: `field`, `param` (an unsigned integer in s),
-  `valid_flags` and `valid` as above.
+  `valid_flags` and `valid` as above;
+- `reference_time`: per device (`device`, at most one entry each), the field carrying the device's
+  own reference time for the sessions' host clock model (docs/time.md): either `param` (an
+  unsigned integer in ns, us, ms or s) or `tow` and `week` as in `gps_time`, and `monotonic`
+  (whether the manual promises it never jumps).
 
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
-be set, `inverted`: bits that must be clear); without the section it is empty lists.
+be set, `inverted`: bits that must be clear); a `reference_time` entry its `device`, `kind`
+(`count`: `param`, `per_second`, its `offset` and `size` in the field data; `gps`: `tow`, `week`,
+`tow_offset`, `week_offset`, `week_size`) and `monotonic`; without the section
+it is empty lists.
 """
 
 from __future__ import annotations
@@ -25,10 +32,15 @@ _CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
 
 def run(ctx: Context) -> None:
     spec = ctx.pf.data.get("time")
-    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": []}
+    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
     if spec is None:
         return
     check = _Check(ctx)
+    seen: set[str] = set()
+    for i, entry in enumerate(spec.get("reference_time") or []):
+        out = check.reference(("time", "reference_time", i), entry, seen)
+        if out is not None:
+            ctx.time["reference_time"].append(out)
     for kind in ("gps_time", "device_clock", "leap_seconds"):
         for i, entry in enumerate(spec.get(kind) or []):
             out = check.entry(kind, ("time", kind, i), entry)
@@ -99,6 +111,82 @@ class _Check:
                 return None
             out.update(param=e["param"], valid_flags=e["valid_flags"], mask=masks[0])
         return out if ok else None
+
+    def reference(self, path: tuple, e: dict, seen: set[str]) -> dict | None:
+        device = e["device"]
+        if device not in self.ctx.device_ids:
+            self.err(
+                path + ("device",), f"time reference_time: unknown device '{device}'", "a device of the protocol file"
+            )
+            return None
+        if device in seen:
+            self.err(path + ("device",), f"time reference_time: a second entry for '{device}'", "one entry per device")
+            return None
+        seen.add(device)
+        found = self.field(path + ("field",), e["field"])
+        sources = self.ctx.check_sources(self.sf, path + ("sources",), e["sources"])
+        if found is None:
+            return None
+        s, f = found
+        out = {"device": device, "field": e["field"], "set": s["id"], "descriptor": f["id"], "sources": sources}
+        if ("param" in e) == ("tow" in e or "week" in e) or ("tow" in e) != ("week" in e):
+            self.err(path, "time reference_time: give either param or both tow and week", "param, or tow and week")
+            return None
+        if "param" in e:
+            if not self.param(
+                path + ("param",),
+                f,
+                e["param"],
+                lambda q: _prim(q) in _UNSIGNED and q["units"] in _CLOCK_UNITS,
+                "an unsigned integer parameter in ns, us, ms or s",
+            ):
+                return None
+            q = _params(f, e["param"])[0]
+            at = self.fixed(path + ("param",), f, e["param"])
+            if at is None:
+                return None
+            out.update(kind="count", param=e["param"], per_second=_CLOCK_UNITS[q["units"]], offset=at[0], size=at[1])
+        else:
+            ok = self.param(
+                path + ("tow",),
+                f,
+                e["tow"],
+                lambda q: _prim(q) in ("double", "f64") and q["units"] == "s",
+                "a double parameter in s",
+            )
+            ok &= self.param(
+                path + ("week",),
+                f,
+                e["week"],
+                lambda q: _prim(q) in _UNSIGNED and q["units"] == "weeks",
+                "an unsigned integer parameter in weeks",
+            )
+            tow_at = self.fixed(path + ("tow",), f, e["tow"]) if ok else None
+            week_at = self.fixed(path + ("week",), f, e["week"]) if ok else None
+            if tow_at is None or week_at is None:
+                return None
+            out.update(
+                kind="gps",
+                tow=e["tow"],
+                week=e["week"],
+                tow_offset=tow_at[0],
+                week_offset=week_at[0],
+                week_size=week_at[1],
+            )
+        out["monotonic"] = e["monotonic"]
+        return out
+
+    def fixed(self, path: tuple, f: dict, name: str) -> tuple[int, int] | None:
+        """(offset, size) of parameter `name`, the same in every layout of the field (for readers of
+        the raw field data: the C session), else an error."""
+        places = {(q.get("offset"), q["size"]["max"] if q["size"]["fixed"] else None) for q in _params(f, name)}
+        place = places.pop() if len(places) == 1 else (None, None)
+        if place[0] is None or place[1] is None:
+            self.err(
+                path, f"time: '{name}' of {f['name']} is not at one fixed offset", "a fixed offset in every layout"
+            )
+            return None
+        return place
 
     def field(self, path: tuple, ref: str) -> tuple[dict, dict] | None:
         set_name, _, field_name = ref.partition(".")

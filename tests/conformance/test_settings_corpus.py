@@ -12,6 +12,7 @@ once, in a case, and each implementation is checked against it, not against the 
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 import shutil
@@ -114,7 +115,7 @@ class CorpusRecorder(Recorder):
 
     def commands(self) -> list[tuple[str, int | None]]:
         out = []
-        decoder = self.package.packets.Decoder(self.device)
+        decoder = importlib.import_module(f"{self.package.__name__}.codec.packets").Decoder(self.device)
         for event in decoder.feed(bytes(self.sent)) + decoder.flush():
             for f in getattr(event, "fields", []):
                 value = getattr(f, "value", None)
@@ -132,7 +133,7 @@ def put_state(address: str, package: str, device: str, state: list[dict]) -> Non
         for command in state:
             line = {"offset": 0, "set": command["set"], "fields": [{k: v for k, v in command.items() if k != "set"}]}
             s.sendall(pkg.encode_line(json.dumps(line)))
-            decoder = pkg.packets.Decoder(device)
+            decoder = importlib.import_module(f"{package}.codec.packets").Decoder(device)
             acked = None
             deadline = time.monotonic() + 10
             while acked is None and time.monotonic() < deadline:

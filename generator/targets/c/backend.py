@@ -51,6 +51,8 @@ _RUNTIME_FILES = {
     "src/field_iter.c": "src/field_iter.c",
     "include/codec/samples.h": "include/codec/samples.h",
     "src/samples.c": "src/samples.c",
+    "include/codec/clock.h": "include/codec/clock.h",
+    "src/clock.c": "src/clock.c",
     "src/wire.h": "src/wire.h",
     "src/wire.c": "src/wire.c",
     "src/grisu3.h": "src/grisu3.h",
@@ -653,7 +655,31 @@ class _Protocol:
                 {"value": f.value, "name": f.name, "mask": mask(f.devices) if f.devices else None} for f in cm.functions
             ],
             "all_devices": mask([d["id"] for d in self.proto["devices"]]),
+            "reference_times": self._reference_times(),
         }
+
+    def _reference_times(self) -> list[dict]:
+        """The spec's time.reference_time as the rows of codec_reference_times (session_facts.c.j2)."""
+        shared = (self.proto.get("shared_data") or {}).get("set")
+        rows = []
+        for e in (self.proto.get("time") or {}).get("reference_time", []):
+            gps = e["kind"] == "gps"
+            rows.append(
+                {
+                    "device": f"{self.P}_DEVICE_{e['device'].upper()}",
+                    "set": f"0x{e['set']:02X}",
+                    "shared": "true" if e["set"] == shared else "false",
+                    "descriptor": f"0x{e['descriptor']:02X}",
+                    "gps": "true" if gps else "false",
+                    "offset": e["tow_offset"] if gps else e["offset"],
+                    "size": 8 if gps else e["size"],
+                    "week_offset": e["week_offset"] if gps else 0,
+                    "week_size": e["week_size"] if gps else 0,
+                    "ns_per_unit": 1 if gps else 1_000_000_000 // e["per_second"],
+                    "field": e["field"],
+                }
+            )
+        return rows
 
     def command_api(self) -> list[dict]:
         """The typed command API (commands.h.j2, commands.c.j2): one C function per call of

@@ -10,6 +10,7 @@ templates/cpp/ only loop and print, and the hand-written runtime in runtime/ is 
   include/<pkg>/packet.hpp           runtime: PacketBuilder, PacketView, FieldIterator
   include/<pkg>/parser.hpp           runtime: StreamParser (docs/conformance.md section 1)
   include/<pkg>/samples.hpp          runtime: SampleTracker, SampleGrouper (continuation packets, section 6)
+  include/<pkg>/clock.hpp            runtime: ClockModel (the host clock model, docs/time.md)
   include/<pkg>/json_{writer,reader,codec}.hpp  runtime: canonical JSON writer, JSON reader, Json<T> of primitives
   include/<pkg>/dispatch.hpp         runtime: decode_field(): variants, raw fallback
   include/<pkg>/json_lines.hpp       runtime: stream -> JSON lines, JSON line -> bytes (what the CLIs do)
@@ -59,6 +60,7 @@ RUNTIME_HEADERS = [
     "packet.hpp",
     "parser.hpp",
     "samples.hpp",
+    "clock.hpp",
     "dispatch.hpp",
     "json_writer.hpp",
     "json_reader.hpp",

@@ -1104,11 +1104,21 @@ def _records(factory: dict, v: dict, proto: dict) -> dict:
     """A command's factory values with struct records (a counted struct list's default, IR dicts)
     written as constructors of the package's types module (`types.Name(member=value, ...)`)."""
     structs = {py_attr(q["name"]): q["type"]["name"] for q in v["params"] if q["type"]["kind"] == "struct"}
+    types_by_name = {t["name"]: t for t in proto["types"]}
+
+    def member(struct: str, key: str, x: object) -> str:
+        # A bitfield member is written as its type's constructor (the struct's annotation is the
+        # bitfield class, not int: mypy --strict).
+        q = next((q for q in types_by_name[struct]["params"] if q["name"] == key), None)
+        if q is not None and q["type"]["kind"] == "bitfield":
+            return f"types.{camel(q['type']['name'])}({x!r})"
+        return repr(x)
+
     out = dict(factory)
     for attr, name in structs.items():
         if isinstance(out.get(attr), list):
             out[attr] = [
-                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={x!r}" for k, x in r.items()) + ")")
+                _Code(f"types.{name}(" + ", ".join(f"{py_attr(k)}={member(name, k, x)}" for k, x in r.items()) + ")")
                 for r in out[attr]
             ]
     return out

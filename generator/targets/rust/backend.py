@@ -949,6 +949,7 @@ _RUNTIME = {
         "fields",
         "builder",
         "samples",
+        "clock",
         "text",
         "session",
         "device",

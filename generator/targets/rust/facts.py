@@ -53,6 +53,7 @@ RESERVED_MODULES = frozenset(
         "parser",
         "reserved",
         "samples",
+        "clock",
         "session",
         "text",
         "types",

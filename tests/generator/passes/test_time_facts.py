@@ -62,7 +62,7 @@ def test_the_tables(tmp_path):
 
 def test_without_the_section_the_tables_are_empty(tmp_path):
     ctx = _build(tmp_path, "")
-    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": []}
+    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
 
 
 def _at(text: str, line_text: str, value: str) -> str:
@@ -108,7 +108,7 @@ def test_wrong_parameters(tmp_path):
         f"{_at(text, 'valid: [reserved]', 'reserved')}: error: time: 'reserved' is not a member of flags"
         " (expected a named member of the bitfield)",
     ]
-    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": []}
+    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
 
 
 def test_a_flag_rule_is_needed(tmp_path):
@@ -120,3 +120,62 @@ def test_a_flag_rule_is_needed(tmp_path):
     assert [e.split(": error: ")[1] for e in errors(ctx)] == [
         "time: no valid flag member given (expected the members that say the value is valid)"
     ]
+
+
+def test_reference_time_per_device(tmp_path):
+    text = (
+        "time:\n"
+        "  reference_time:\n"
+        "    - {device: dev_a, field: sensor.clock, param: us, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
+        "    - {device: dev_b, field: sensor.gps_time, tow: tow, week: week, monotonic: false, sources: [{manual: b.txt, line: 2}]}\n"
+    )
+    ctx = _build(tmp_path, text)
+    assert errors(ctx) == []
+    rows = [{k: v for k, v in r.items() if k not in ("sources", "field")} for r in ctx.time["reference_time"]]
+    assert rows == [
+        {
+            "device": "dev_a",
+            "set": 0x80,
+            "descriptor": 0x13,
+            "kind": "count",
+            "param": "us",
+            "per_second": 1_000_000,
+            "offset": 0,
+            "size": 8,
+            "monotonic": True,
+        },
+        {
+            "device": "dev_b",
+            "set": 0x80,
+            "descriptor": 0x12,
+            "kind": "gps",
+            "tow": "tow",
+            "week": "week",
+            "tow_offset": 0,
+            "week_offset": 8,
+            "week_size": 2,
+            "monotonic": False,
+        },
+    ]
+
+
+def test_reference_time_errors(tmp_path):
+    text = (
+        "time:\n"
+        "  reference_time:\n"
+        "    - {device: dev_c, field: sensor.clock, param: us, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
+        "    - {device: dev_a, field: sensor.clock, param: secs, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
+        "    - {device: dev_a, field: sensor.clock, param: us, monotonic: false, sources: [{manual: a.txt, line: 6}]}\n"
+        "    - {device: dev_b, field: sensor.gps_time, tow: tow, monotonic: false, sources: [{manual: b.txt, line: 2}]}\n"
+    )
+    ctx = _build(tmp_path, text)
+    assert errors(ctx) == [
+        f"{_at(text, 'dev_c', 'dev_c')}: error: time reference_time: unknown device 'dev_c' (expected a device of the protocol file)",
+        f"{_at(text, 'param: secs', 'secs')}: error: time: 'secs' of clock is not an unsigned integer parameter in"
+        " ns, us, ms or s (in every layout) (expected an unsigned integer parameter in ns, us, ms or s)",
+        f"{_at(text, 'dev_a, field: sensor.clock, param: us', 'dev_a')}:"
+        " error: time reference_time: a second entry for 'dev_a' (expected one entry per device)",
+        f"{_at(text, '{device: dev_b', '{')}: error: time reference_time: give either param or both tow and week"
+        " (expected param, or tow and week)",
+    ]
+    assert ctx.time["reference_time"] == []

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "mipcodec/field_iter.h"
+#include "wire.h"
 
 const char *mipc_result_kind_name(mipc_result_kind_t kind) {
     switch (kind) {
@@ -510,6 +511,81 @@ static void route_fields(mipc_session_t *s, const mipc_event_t *pkt, uint8_t set
     }
 }
 
+static bool field_reference(const mipc_reference_time_t *r, const mipc_field_entry_t *e, int64_t *ns) {
+    uint64_t bits;
+    double tow, t;
+    int64_t whole;
+    if (!r->gps) {
+        if ((size_t)r->offset + r->size > e->length) {
+            return false;
+        }
+        bits = r->size == 8   ? mipc_ld_u64(e->data + r->offset)
+               : r->size == 4 ? mipc_ld_u32(e->data + r->offset)
+               : r->size == 2 ? mipc_ld_u16(e->data + r->offset)
+                              : mipc_ld_u8(e->data + r->offset);
+        *ns = (int64_t)bits * r->ns_per_unit;
+        return true;
+    }
+    if ((size_t)r->offset + 8 > e->length || (size_t)r->week_offset + r->week_size > e->length) {
+        return false;
+    }
+    bits = mipc_ld_u64(e->data + r->offset);
+    memcpy(&tow, &bits, sizeof tow);
+    bits = r->week_size == 4 ? mipc_ld_u32(e->data + r->week_offset) : mipc_ld_u16(e->data + r->week_offset);
+    if (!(tow >= 0.0 && tow < 1e7)) {
+        return false; /* not a time of week (NaN, negative, absurd) */
+    }
+    t = tow * 1e9 + 0.5;
+    whole = (int64_t)t; /* floor, t >= 0 */
+    *ns = (int64_t)bits * 604800000000000LL + whole;
+    return true;
+}
+
+bool mipc_reference_ns(mipc_device_t device, uint8_t set, const uint8_t *payload, size_t len, int64_t *ns) {
+    size_t i;
+    mipc_field_iter_t it;
+    mipc_field_entry_t e;
+    assert(ns != NULL);
+    for (i = 0; i < mipc_reference_time_count; i++) {
+        const mipc_reference_time_t *r = &mipc_reference_times[i];
+        if ((device != MIPC_DEVICE_ANY && r->device != device) || (!r->shared && r->set != set)) {
+            continue;
+        }
+        mipc_field_iter_init(&it, set, payload, len);
+        while (mipc_field_iter_next(&it, &e)) {
+            if (e.kind == MIPC_ENTRY_FIELD && e.descriptor == r->descriptor && field_reference(r, &e, ns)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+/* The clock model's step for a data packet (docs/time.md): its host time for the handlers. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void clock_packet(mipc_session_t *s, const mipc_event_t *pkt, uint8_t set) {
+    int64_t d;
+    if (mipc_reference_ns(s->config.device, set, mipc_packet_payload(pkt->packet),
+                          mipc_packet_payload_length(pkt->packet), &d)) {
+        s->packet_host = mipc_clock_add(s->clock, d, s->read_ns, &s->packet_host_ns);
+    }
+}
+
+void mipc_session_use_clock(mipc_session_t *session, mipc_clock_t *clock) {
+    assert(session != NULL);
+    session->clock = clock;
+}
+
+bool mipc_session_host_ns(const mipc_session_t *session, int64_t *host_ns) {
+    assert(session != NULL && host_ns != NULL);
+    if (session->packet_host) {
+        *host_ns = session->packet_host_ns;
+    }
+    return session->packet_host;
+}
+
 static void route(mipc_session_t *s, const mipc_event_t *pkt) {
     mipc_session_event_t ev;
     size_t i;
@@ -521,6 +597,10 @@ static void route(mipc_session_t *s, const mipc_event_t *pkt) {
             }
             break;
         }
+    }
+    s->packet_host = false;
+    if (s->clock) {
+        clock_packet(s, pkt, set);
     }
     if (s->config.on_event) {
         ev.kind = MIPC_SESSION_PACKET;
@@ -575,9 +655,15 @@ static void look_ahead(mipc_session_t *s, uint64_t now) {
 }
 
 void mipc_session_feed(mipc_session_t *session, const uint8_t *data, size_t len, uint64_t now) {
+    mipc_session_feed_at(session, data, len, now, (int64_t)now * 1000000);
+}
+
+void mipc_session_feed_at(mipc_session_t *session, const uint8_t *data, size_t len, uint64_t now,
+                          int64_t read_ns) {
     assert(session != NULL);
     assert(data != NULL || len == 0);
     session->now = now;
+    session->read_ns = read_ns;
     expire(session, now);
     /* (a) on the buffer as it was, before the new bytes: the same whether the caller polled */
     look_ahead(session, now);

@@ -6,6 +6,14 @@
 
 #include <string.h>
 
+/* Per device, where a data packet carries the device's reference time (the spec's
+ * time.reference_time; the host clock model, docs/time.md). */
+const mipc_reference_time_t mipc_reference_times[] = {
+    {MIPC_DEVICE_CV7_INS, 0xFF, true, 0xD5, false, 0, 8, 0, 0, 1}, /* shared.reference_timestamp */
+    {MIPC_DEVICE_GX5_45, 0x80, false, 0x12, true, 0, 8, 8, 2, 1},  /* sensor.gps_timestamp */
+};
+const size_t mipc_reference_time_count = 2;
+
 const char *mipc_function_name(int value) {
     switch (value) {
     case 1:

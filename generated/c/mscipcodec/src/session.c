@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "mscipcodec/field_iter.h"
+#include "wire.h"
 
 const char *mscipc_result_kind_name(mscipc_result_kind_t kind) {
     switch (kind) {
@@ -511,6 +512,83 @@ static void route_fields(mscipc_session_t *s, const mscipc_event_t *pkt, uint8_t
     }
 }
 
+static bool field_reference(const mscipc_reference_time_t *r, const mscipc_field_entry_t *e, int64_t *ns) {
+    uint64_t bits;
+    double tow, t;
+    int64_t whole;
+    if (!r->gps) {
+        if ((size_t)r->offset + r->size > e->length) {
+            return false;
+        }
+        bits = r->size == 8   ? mscipc_ld_u64(e->data + r->offset)
+               : r->size == 4 ? mscipc_ld_u32(e->data + r->offset)
+               : r->size == 2 ? mscipc_ld_u16(e->data + r->offset)
+                              : mscipc_ld_u8(e->data + r->offset);
+        *ns = (int64_t)bits * r->ns_per_unit;
+        return true;
+    }
+    if ((size_t)r->offset + 8 > e->length || (size_t)r->week_offset + r->week_size > e->length) {
+        return false;
+    }
+    bits = mscipc_ld_u64(e->data + r->offset);
+    memcpy(&tow, &bits, sizeof tow);
+    bits =
+        r->week_size == 4 ? mscipc_ld_u32(e->data + r->week_offset) : mscipc_ld_u16(e->data + r->week_offset);
+    if (!(tow >= 0.0 && tow < 1e7)) {
+        return false; /* not a time of week (NaN, negative, absurd) */
+    }
+    t = tow * 1e9 + 0.5;
+    whole = (int64_t)t; /* floor, t >= 0 */
+    *ns = (int64_t)bits * 604800000000000LL + whole;
+    return true;
+}
+
+bool mscipc_reference_ns(mscipc_device_t device, uint8_t set, const uint8_t *payload, size_t len,
+                         int64_t *ns) {
+    size_t i;
+    mscipc_field_iter_t it;
+    mscipc_field_entry_t e;
+    assert(ns != NULL);
+    for (i = 0; i < mscipc_reference_time_count; i++) {
+        const mscipc_reference_time_t *r = &mscipc_reference_times[i];
+        if ((device != MSCIPC_DEVICE_ANY && r->device != device) || (!r->shared && r->set != set)) {
+            continue;
+        }
+        mscipc_field_iter_init(&it, set, payload, len);
+        while (mscipc_field_iter_next(&it, &e)) {
+            if (e.kind == MSCIPC_ENTRY_FIELD && e.descriptor == r->descriptor && field_reference(r, &e, ns)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+/* The clock model's step for a data packet (docs/time.md): its host time for the handlers. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void clock_packet(mscipc_session_t *s, const mscipc_event_t *pkt, uint8_t set) {
+    int64_t d;
+    if (mscipc_reference_ns(s->config.device, set, mscipc_packet_payload(pkt->packet),
+                            mscipc_packet_payload_length(pkt->packet), &d)) {
+        s->packet_host = mscipc_clock_add(s->clock, d, s->read_ns, &s->packet_host_ns);
+    }
+}
+
+void mscipc_session_use_clock(mscipc_session_t *session, mscipc_clock_t *clock) {
+    assert(session != NULL);
+    session->clock = clock;
+}
+
+bool mscipc_session_host_ns(const mscipc_session_t *session, int64_t *host_ns) {
+    assert(session != NULL && host_ns != NULL);
+    if (session->packet_host) {
+        *host_ns = session->packet_host_ns;
+    }
+    return session->packet_host;
+}
+
 static void route(mscipc_session_t *s, const mscipc_event_t *pkt) {
     mscipc_session_event_t ev;
     size_t i;
@@ -522,6 +600,10 @@ static void route(mscipc_session_t *s, const mscipc_event_t *pkt) {
             }
             break;
         }
+    }
+    s->packet_host = false;
+    if (s->clock) {
+        clock_packet(s, pkt, set);
     }
     if (s->config.on_event) {
         ev.kind = MSCIPC_SESSION_PACKET;
@@ -576,9 +658,15 @@ static void look_ahead(mscipc_session_t *s, uint64_t now) {
 }
 
 void mscipc_session_feed(mscipc_session_t *session, const uint8_t *data, size_t len, uint64_t now) {
+    mscipc_session_feed_at(session, data, len, now, (int64_t)now * 1000000);
+}
+
+void mscipc_session_feed_at(mscipc_session_t *session, const uint8_t *data, size_t len, uint64_t now,
+                            int64_t read_ns) {
     assert(session != NULL);
     assert(data != NULL || len == 0);
     session->now = now;
+    session->read_ns = read_ns;
     expire(session, now);
     /* (a) on the buffer as it was, before the new bytes: the same whether the caller polled */
     look_ahead(session, now);

@@ -2906,3 +2906,11 @@ LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = (
     (0x91, 0x11, "leap_seconds", "valid_flags", 0x0002),
     (0x92, 0x11, "leap_seconds", "valid_flags", 0x0002),
 )
+
+# Per device, the field carrying its own reference time (the host clock model, clock.py;
+# docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per
+# second, tow parameter, week parameter, monotonic).
+REFERENCE_TIMES: Tuple[Tuple[str, int, int, str, str, int, str, str, bool], ...] = (
+    ("cv7_ins", 0xFF, 0xD5, "count", "nanoseconds", 1000000000, "", "", True),
+    ("gx5_45", 0x80, 0x12, "gps", "", 0, "tow", "week_number", False),
+)

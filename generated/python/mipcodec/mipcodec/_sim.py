@@ -1615,16 +1615,32 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
             "max_channels": 32,
             "settings": [
                 types.ConstellationSettings(
-                    constellation_id=0, enable=1, reserved_channels=8, max_channels=16, option_flags=0
+                    constellation_id=0,
+                    enable=1,
+                    reserved_channels=8,
+                    max_channels=16,
+                    option_flags=types.ConstellationOptions(0),
                 ),
                 types.ConstellationSettings(
-                    constellation_id=6, enable=1, reserved_channels=8, max_channels=14, option_flags=0
+                    constellation_id=6,
+                    enable=1,
+                    reserved_channels=8,
+                    max_channels=14,
+                    option_flags=types.ConstellationOptions(0),
                 ),
                 types.ConstellationSettings(
-                    constellation_id=1, enable=0, reserved_channels=1, max_channels=3, option_flags=0
+                    constellation_id=1,
+                    enable=0,
+                    reserved_channels=1,
+                    max_channels=3,
+                    option_flags=types.ConstellationOptions(0),
                 ),
                 types.ConstellationSettings(
-                    constellation_id=5, enable=0, reserved_channels=0, max_channels=3, option_flags=0
+                    constellation_id=5,
+                    enable=0,
+                    reserved_channels=0,
+                    max_channels=3,
+                    option_flags=types.ConstellationOptions(0),
                 ),
             ],
             "config_count": 4,

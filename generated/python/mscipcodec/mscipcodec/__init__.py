@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "c45605a5aa7c5e40"
+SPEC_HASH = "d85e8fa253bc16e1"
 
 __all__ = [
     "SPEC_HASH",

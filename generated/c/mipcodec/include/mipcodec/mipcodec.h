@@ -9,6 +9,7 @@
 #include "mipcodec/parser.h"
 #include "mipcodec/field_iter.h"
 #include "mipcodec/samples.h"
+#include "mipcodec/clock.h"
 #include "mipcodec/types.h"
 #include "mipcodec/reserved.h"
 #include "mipcodec/sets/base.h"

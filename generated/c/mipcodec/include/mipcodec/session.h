@@ -18,6 +18,7 @@
 #ifndef MIPC_SESSION_H
 #define MIPC_SESSION_H
 
+#include "mipcodec/clock.h"
 #include "mipcodec/dispatch.h"
 #include "mipcodec/field_iter.h"
 #include "mipcodec/parser.h"
@@ -152,6 +153,10 @@ typedef struct {
     mipc_field_handler_t fields[MIPC_SESSION_MAX_FIELD_HANDLERS];
     size_t field_count;
     char error[MIPC_SESSION_ERROR_MAX];
+    mipc_clock_t *clock;    /* the host clock model the data route feeds (NULL: none) */
+    int64_t read_ns;        /* the host time of the bytes being fed (ns) */
+    bool packet_host;       /* the packet being routed has a host time: */
+    int64_t packet_host_ns; /* this one */
 } mipc_session_t;
 
 /** Starts a session; MIPC_ERR_INVALID for a bad configuration (max_pending out of range, an
@@ -164,6 +169,20 @@ void mipc_session_on_packet(mipc_session_t *session, mipc_packet_handler_fn fn, 
  * reply. MIPC_ERR_BUFFER when MIPC_SESSION_MAX_FIELD_HANDLERS are registered already. */
 mipc_status_t mipc_session_on_field(mipc_session_t *session, uint8_t set, uint8_t descriptor,
                                     mipc_field_handler_fn fn, void *ctx);
+
+/**
+ * The host clock model (docs/time.md): from now on every packet that is not a reply and carries
+ * the device's reference time (the spec's time.reference_time: mipc_reference_ns) feeds *clock
+ * (placed and initialised by the caller) at the host time of its bytes. NULL stops it.
+ */
+void mipc_session_use_clock(mipc_session_t *session, mipc_clock_t *clock);
+/** mipc_session_feed with the host time the bytes were read (ns of a monotonic clock), for the
+ * clock model; mipc_session_feed takes now (ms) x 1000000. */
+void mipc_session_feed_at(mipc_session_t *session, const uint8_t *data, size_t len, uint64_t now,
+                          int64_t read_ns);
+/** Inside a packet or field handler (or the event callback of a packet): the packet's host time by
+ * the clock model into *host_ns; false without a model, an estimate or the reference time. */
+bool mipc_session_host_ns(const mipc_session_t *session, int64_t *host_ns);
 
 /** Per-call options of mipc_session_start (NULL: the session's). */
 typedef struct {
@@ -244,6 +263,25 @@ const char *mipc_function_name(int value);
  * as another field. */
 int mipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, mipc_device_t device, uint8_t *echo,
                             uint32_t *code);
+/** Per device, where a data packet carries the device's reference time (the spec's
+ * time.reference_time; session_facts.c): a count of units (ns_per_unit ns each) or a GPS time. */
+typedef struct {
+    mipc_device_t device;
+    uint8_t set; /* the field's set */
+    bool shared; /* the set is the shared one: the field is valid in every data set */
+    uint8_t descriptor;
+    bool gps;       /* tow (f64 s) at offset and week (week_size bytes) at week_offset */
+    uint8_t offset; /* of the count or of tow, in the field data */
+    uint8_t size;   /* of the count */
+    uint8_t week_offset;
+    uint8_t week_size;
+    int64_t ns_per_unit; /* of the count */
+} mipc_reference_time_t;
+extern const mipc_reference_time_t mipc_reference_times[];
+extern const size_t mipc_reference_time_count;
+/** The device's reference time (ns) in the payload of a packet of `set`: the first field the table
+ * names for `device` (every device's for MIPC_DEVICE_ANY); false when it carries none. */
+bool mipc_reference_ns(mipc_device_t device, uint8_t set, const uint8_t *payload, size_t len, int64_t *ns);
 /** The names `device` answers to in the wrong-model check (mipc_link_t note): its title and its
  * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
 const char *const *mipc_device_model_names(mipc_device_t device);

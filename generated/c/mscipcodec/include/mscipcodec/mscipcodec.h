@@ -9,6 +9,7 @@
 #include "mscipcodec/parser.h"
 #include "mscipcodec/field_iter.h"
 #include "mscipcodec/samples.h"
+#include "mscipcodec/clock.h"
 #include "mscipcodec/types.h"
 #include "mscipcodec/reserved.h"
 #include "mscipcodec/sets/base.h"

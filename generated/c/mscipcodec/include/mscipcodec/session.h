@@ -18,6 +18,7 @@
 #ifndef MSCIPC_SESSION_H
 #define MSCIPC_SESSION_H
 
+#include "mscipcodec/clock.h"
 #include "mscipcodec/dispatch.h"
 #include "mscipcodec/field_iter.h"
 #include "mscipcodec/parser.h"
@@ -153,6 +154,10 @@ typedef struct {
     mscipc_field_handler_t fields[MSCIPC_SESSION_MAX_FIELD_HANDLERS];
     size_t field_count;
     char error[MSCIPC_SESSION_ERROR_MAX];
+    mscipc_clock_t *clock;  /* the host clock model the data route feeds (NULL: none) */
+    int64_t read_ns;        /* the host time of the bytes being fed (ns) */
+    bool packet_host;       /* the packet being routed has a host time: */
+    int64_t packet_host_ns; /* this one */
 } mscipc_session_t;
 
 /** Starts a session; MSCIPC_ERR_INVALID for a bad configuration (max_pending out of range, an
@@ -165,6 +170,20 @@ void mscipc_session_on_packet(mscipc_session_t *session, mscipc_packet_handler_f
  * reply. MSCIPC_ERR_BUFFER when MSCIPC_SESSION_MAX_FIELD_HANDLERS are registered already. */
 mscipc_status_t mscipc_session_on_field(mscipc_session_t *session, uint8_t set, uint8_t descriptor,
                                         mscipc_field_handler_fn fn, void *ctx);
+
+/**
+ * The host clock model (docs/time.md): from now on every packet that is not a reply and carries
+ * the device's reference time (the spec's time.reference_time: mscipc_reference_ns) feeds *clock
+ * (placed and initialised by the caller) at the host time of its bytes. NULL stops it.
+ */
+void mscipc_session_use_clock(mscipc_session_t *session, mscipc_clock_t *clock);
+/** mscipc_session_feed with the host time the bytes were read (ns of a monotonic clock), for the
+ * clock model; mscipc_session_feed takes now (ms) x 1000000. */
+void mscipc_session_feed_at(mscipc_session_t *session, const uint8_t *data, size_t len, uint64_t now,
+                            int64_t read_ns);
+/** Inside a packet or field handler (or the event callback of a packet): the packet's host time by
+ * the clock model into *host_ns; false without a model, an estimate or the reference time. */
+bool mscipc_session_host_ns(const mscipc_session_t *session, int64_t *host_ns);
 
 /** Per-call options of mscipc_session_start (NULL: the session's). */
 typedef struct {
@@ -245,6 +264,26 @@ const char *mscipc_function_name(int value);
  * as another field. */
 int mscipc_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, mscipc_device_t device,
                               uint8_t *echo, uint32_t *code);
+/** Per device, where a data packet carries the device's reference time (the spec's
+ * time.reference_time; session_facts.c): a count of units (ns_per_unit ns each) or a GPS time. */
+typedef struct {
+    mscipc_device_t device;
+    uint8_t set; /* the field's set */
+    bool shared; /* the set is the shared one: the field is valid in every data set */
+    uint8_t descriptor;
+    bool gps;       /* tow (f64 s) at offset and week (week_size bytes) at week_offset */
+    uint8_t offset; /* of the count or of tow, in the field data */
+    uint8_t size;   /* of the count */
+    uint8_t week_offset;
+    uint8_t week_size;
+    int64_t ns_per_unit; /* of the count */
+} mscipc_reference_time_t;
+extern const mscipc_reference_time_t mscipc_reference_times[];
+extern const size_t mscipc_reference_time_count;
+/** The device's reference time (ns) in the payload of a packet of `set`: the first field the table
+ * names for `device` (every device's for MSCIPC_DEVICE_ANY); false when it carries none. */
+bool mscipc_reference_ns(mscipc_device_t device, uint8_t set, const uint8_t *payload, size_t len,
+                         int64_t *ns);
 /** The names `device` answers to in the wrong-model check (mscipc_link_t note): its title and its
  * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
 const char *const *mscipc_device_model_names(mscipc_device_t device);

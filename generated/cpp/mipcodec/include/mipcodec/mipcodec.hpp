@@ -11,6 +11,7 @@
 #include "mipcodec/packet.hpp"
 #include "mipcodec/parser.hpp"
 #include "mipcodec/samples.hpp"
+#include "mipcodec/clock.hpp"
 #include "mipcodec/types.hpp"
 #include "mipcodec/version.hpp"
 #include "mipcodec/wire.hpp"

@@ -11,6 +11,7 @@
 #include "mscipcodec/packet.hpp"
 #include "mscipcodec/parser.hpp"
 #include "mscipcodec/samples.hpp"
+#include "mscipcodec/clock.hpp"
 #include "mscipcodec/types.hpp"
 #include "mscipcodec/version.hpp"
 #include "mscipcodec/wire.hpp"

@@ -76,6 +76,8 @@ const char *codec_function_name(int value);
 int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device,
                              uint8_t *echo, uint32_t *code);
 const char *const *codec_device_model_names(codec_device_t device);
+extern const codec_reference_time_t codec_reference_times[];
+extern const size_t codec_reference_time_count;
 
 /* The generated side defines every function: each address, so that the link fails without one. */
 struct codec_contract {
@@ -103,16 +105,35 @@ struct codec_contract {
     codec_set_kind_t kinds[2];
     void (*layout_to_json)(codec_jw_t *, codec_field_id_t, const void *);
     size_t packet_size; /* codec_packet_t (dispatch.h): a data packet as its set's decoder fills it */
+    const codec_reference_time_t *reference_times;
+    const size_t *reference_time_count;
 };
 
 extern const struct codec_contract codec_contract;
 const struct codec_contract codec_contract = {
-    codec_device_id,           codec_device_from_id,     codec_device_title,
-    codec_device_manual,       codec_device_supports,    codec_layout_info,
-    codec_find_field,          codec_decode_field,       codec_encode_field,
-    codec_value_to_json,       codec_value_from_json,    codec_command_facts,
-    codec_function_name,       codec_session_ack_decode, codec_device_model_names,
-    codec_field_length_adjust, codec_device_baud_rates,  codec_device_default_baud,
-    CODEC_DEVICE_ANY,          codec_set_kind,           {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
-    codec_layout_to_json,      sizeof(codec_packet_t),
+    codec_device_id,
+    codec_device_from_id,
+    codec_device_title,
+    codec_device_manual,
+    codec_device_supports,
+    codec_layout_info,
+    codec_find_field,
+    codec_decode_field,
+    codec_encode_field,
+    codec_value_to_json,
+    codec_value_from_json,
+    codec_command_facts,
+    codec_function_name,
+    codec_session_ack_decode,
+    codec_device_model_names,
+    codec_field_length_adjust,
+    codec_device_baud_rates,
+    codec_device_default_baud,
+    CODEC_DEVICE_ANY,
+    codec_set_kind,
+    {CODEC_SET_KIND_COMMAND, CODEC_SET_KIND_DATA},
+    codec_layout_to_json,
+    sizeof(codec_packet_t),
+    codec_reference_times,
+    &codec_reference_time_count,
 };

@@ -55,6 +55,7 @@ from ..codec.layout import Field
 from ..codec.packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from ..codec.samples import Sample, SampleGrouper
 from ..logs.timebase import SplitClock, Times
+from .clock import ClockModel, reference_ns
 from .transport import TransportError
 
 DEFAULT_TIMEOUT_MS = 1000  # the reply timeout of a command (plus the spec's allowance)
@@ -582,6 +583,11 @@ class Session:
         self._clock: Optional[SplitClock] = None
         self._timed: Dict[int, Times] = {}  # offset -> times of the packets of the last feed
         self._timed_to = -1  # the offset of the last packet fed to the time model
+        # The host clock model (clock.py, docs/time.md), from its first use on fed every packet
+        # that is not a reply and carries the device's reference time, at the feed's host time.
+        self._host: Optional[ClockModel] = None
+        self._host_times: Dict[int, Optional[int]] = {}  # offset -> host ns, packets of the last feed
+        self._now_ns = 0
 
     # -------------------------------------------------------------- handlers
     def on_packet(self, handler: Callable[[Packet], Any]) -> None:
@@ -633,6 +639,26 @@ class Session:
     def utc_ns(self, packet: Packet) -> Optional[int]:
         """UTC ns since the Unix epoch of a data packet (None when unknown); see `times`."""
         return self.times(packet).t_ns
+
+    # -------------------------------------------------------------- host clock
+    @property
+    def host_clock(self) -> ClockModel:
+        """The host clock model (`clock.ClockModel`: offset, drift_ppm, bound_ns, restarts of the
+        device's reference clock against the host clock of `feed`'s now_ns). Its first use starts
+        it: from then on every packet that is not a reply and carries the device's reference time
+        (the spec's `time.reference_time`) feeds it."""
+        if self._host is None:
+            self._host = ClockModel()
+        return self._host
+
+    def host_ns(self, packet: Packet) -> Optional[int]:
+        """The host time (ns, the clock of `feed`'s now_ns) of a data packet: by the model's
+        estimate when it was fed (a packet of the last feed), else by the current one; None
+        before an estimate or without the reference time."""
+        if packet.offset in self._host_times:
+            return self._host_times[packet.offset]
+        d = reference_ns(packet, self.device)
+        return None if d is None else self.host_clock.host_time(d)
 
     # -------------------------------------------------------------- commands
     @property
@@ -691,12 +717,17 @@ class Session:
         self._sets = frozenset(p.set for p in self._pending if p.set is not None)
 
     # -------------------------------------------------------------- input
-    def feed(self, data: Any, now_ms: int) -> List[Event]:
+    def feed(self, data: Any, now_ms: int, now_ns: Optional[int] = None) -> List[Event]:
         """Bytes received at `now_ms`: returns the events in order (Results of commands that
-        completed, Packets that are not replies, Skip runs) after calling the handlers."""
+        completed, Packets that are not replies, Skip runs) after calling the handlers. `now_ns`:
+        the host time the bytes were read (ns, a monotonic clock; default now_ms), for the host
+        clock model."""
         events: List[Event] = self._expire(now_ms) if self._pending else []
         if self._timed:
             self._timed = {}  # (the times of the last call's packets only: bounded memory)
+        if self._host_times:
+            self._host_times = {}
+        self._now_ns = now_ms * 1_000_000 if now_ns is None else now_ns
         parsed, hits, clean = self._parser.feed_watch(data, now_ms, self._sets)
         if not parsed:
             return events
@@ -710,7 +741,7 @@ class Session:
                 events += parsed
             else:
                 events = parsed
-            if self._packet_handlers or self._field_handlers or self._clock is not None:
+            if self._packet_handlers or self._field_handlers or self._clock is not None or self._host is not None:
                 self._deliver(parsed, clean)
             return events
         at = 0
@@ -726,7 +757,13 @@ class Session:
         if a < b:
             run = parsed[a:b]
             events += run
-            if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
+            if (
+                self._packet_handlers
+                or self._field_handlers
+                or self._grouper is not None
+                or self._clock is not None
+                or self._host is not None
+            ):
                 self._deliver(run, False)
 
     def poll(self, now_ms: int) -> List[Event]:
@@ -782,13 +819,14 @@ class Session:
             and not self._field_handlers
             and self._grouper is None
             and self._clock is None
+            and self._host is None
         ):
             if not clean:
                 packet_type = Packet
                 parsed = [e for e in parsed if type(e) is packet_type]
             deque(map(self._packet_handlers[0], parsed), 0)
             return
-        if self._grouper is None and not self._packet_handlers and self._clock is None:
+        if self._grouper is None and not self._packet_handlers and self._clock is None and self._host is None:
             # Field handlers only: a look at the packets of the sets they are for.
             handlers = self._field_handlers
             sets = {k[0] for k in handlers}
@@ -806,7 +844,13 @@ class Session:
                 self._data(e)
 
     def _route(self, parsed: List[Any], events: List[Event]) -> None:
-        if self._packet_handlers or self._field_handlers or self._grouper is not None or self._clock is not None:
+        if (
+            self._packet_handlers
+            or self._field_handlers
+            or self._grouper is not None
+            or self._clock is not None
+            or self._host is not None
+        ):
             for e in parsed:
                 self._event(e, events)
             return
@@ -844,6 +888,10 @@ class Session:
             packet = decode_packet(raw.data, raw.offset, self.device)
         if self._clock is not None:
             self._step(packet)
+        if self._host is not None:
+            d = reference_ns(packet, self.device)
+            if d is not None:
+                self._host_times[packet.offset] = self._host.add(d, self._now_ns)
         for on_packet in self._packet_handlers:
             on_packet(packet)
         if self._field_handlers:
@@ -986,6 +1034,15 @@ class Device(_CommandSets):
         """`Session.utc_ns`: UTC ns since the Unix epoch of a data packet, or None."""
         return self.session.utc_ns(packet)
 
+    @property
+    def host_clock(self) -> ClockModel:
+        """The session's host clock model (`Session.host_clock`; host times from the device's clock)."""
+        return self.session.host_clock
+
+    def host_ns(self, packet: Packet) -> Optional[int]:
+        """`Session.host_ns`: the host time of a data packet (the device's clock), or None."""
+        return self.session.host_ns(packet)
+
     def _deliver(self, events: List[Event]) -> None:
         if self.on_event is not None:
             if self._quiet:
@@ -1075,8 +1132,9 @@ class Device(_CommandSets):
             return self._lost(e)
         if self._quiet:
             self._dropped += len(data)
+        read_ns = int((self._clock() - self._t0) * 1e9)  # the host time of the read (host clock model)
         if len(data) <= FEED_SLICE:
-            events = self.session.feed(data, self.now_ms())
+            events = self.session.feed(data, self.now_ms(), read_ns)
             self._deliver(events)
             return events
         # A long read is fed in slices, each at the current time: a deadline that passes while
@@ -1084,7 +1142,7 @@ class Device(_CommandSets):
         # about 7 us a byte on a flood of false syncs), not after the whole read.
         events = []
         for k in range(0, len(data), FEED_SLICE):
-            part = self.session.feed(data[k : k + FEED_SLICE], self.now_ms())
+            part = self.session.feed(data[k : k + FEED_SLICE], self.now_ms(), read_ns)
             self._deliver(part)
             events += part
         return events

@@ -18,6 +18,7 @@
 #ifndef CODEC_SESSION_H
 #define CODEC_SESSION_H
 
+#include "codec/clock.h"
 #include "codec/dispatch.h"
 #include "codec/field_iter.h"
 #include "codec/parser.h"
@@ -153,6 +154,10 @@ typedef struct {
     codec_field_handler_t fields[CODEC_SESSION_MAX_FIELD_HANDLERS];
     size_t field_count;
     char error[CODEC_SESSION_ERROR_MAX];
+    codec_clock_t *clock;   /* the host clock model the data route feeds (NULL: none) */
+    int64_t read_ns;        /* the host time of the bytes being fed (ns) */
+    bool packet_host;       /* the packet being routed has a host time: */
+    int64_t packet_host_ns; /* this one */
 } codec_session_t;
 
 /** Starts a session; CODEC_ERR_INVALID for a bad configuration (max_pending out of range, an
@@ -165,6 +170,20 @@ void codec_session_on_packet(codec_session_t *session, codec_packet_handler_fn f
  * reply. CODEC_ERR_BUFFER when CODEC_SESSION_MAX_FIELD_HANDLERS are registered already. */
 codec_status_t codec_session_on_field(codec_session_t *session, uint8_t set, uint8_t descriptor,
                                       codec_field_handler_fn fn, void *ctx);
+
+/**
+ * The host clock model (docs/time.md): from now on every packet that is not a reply and carries
+ * the device's reference time (the spec's time.reference_time: codec_reference_ns) feeds *clock
+ * (placed and initialised by the caller) at the host time of its bytes. NULL stops it.
+ */
+void codec_session_use_clock(codec_session_t *session, codec_clock_t *clock);
+/** codec_session_feed with the host time the bytes were read (ns of a monotonic clock), for the
+ * clock model; codec_session_feed takes now (ms) x 1000000. */
+void codec_session_feed_at(codec_session_t *session, const uint8_t *data, size_t len, uint64_t now,
+                           int64_t read_ns);
+/** Inside a packet or field handler (or the event callback of a packet): the packet's host time by
+ * the clock model into *host_ns; false without a model, an estimate or the reference time. */
+bool codec_session_host_ns(const codec_session_t *session, int64_t *host_ns);
 
 /** Per-call options of codec_session_start (NULL: the session's). */
 typedef struct {
@@ -245,6 +264,25 @@ const char *codec_function_name(int value);
  * as another field. */
 int codec_session_ack_decode(uint8_t set, const uint8_t *data, size_t len, codec_device_t device,
                              uint8_t *echo, uint32_t *code);
+/** Per device, where a data packet carries the device's reference time (the spec's
+ * time.reference_time; session_facts.c): a count of units (ns_per_unit ns each) or a GPS time. */
+typedef struct {
+    codec_device_t device;
+    uint8_t set; /* the field's set */
+    bool shared; /* the set is the shared one: the field is valid in every data set */
+    uint8_t descriptor;
+    bool gps;       /* tow (f64 s) at offset and week (week_size bytes) at week_offset */
+    uint8_t offset; /* of the count or of tow, in the field data */
+    uint8_t size;   /* of the count */
+    uint8_t week_offset;
+    uint8_t week_size;
+    int64_t ns_per_unit; /* of the count */
+} codec_reference_time_t;
+extern const codec_reference_time_t codec_reference_times[];
+extern const size_t codec_reference_time_count;
+/** The device's reference time (ns) in the payload of a packet of `set`: the first field the table
+ * names for `device` (every device's for CODEC_DEVICE_ANY); false when it carries none. */
+bool codec_reference_ns(codec_device_t device, uint8_t set, const uint8_t *payload, size_t len, int64_t *ns);
 /** The names `device` answers to in the wrong-model check (codec_link_t note): its title and its
  * identity model name, upper case without spaces and punctuation; a NULL-terminated list. */
 const char *const *codec_device_model_names(codec_device_t device);

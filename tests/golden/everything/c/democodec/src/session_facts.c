@@ -6,6 +6,12 @@
 
 #include <string.h>
 
+/* Per device, where a data packet carries the device's reference time (the spec's
+ * time.reference_time; the host clock model, docs/time.md). */
+const democ_reference_time_t democ_reference_times[] = {
+    {DEMOC_DEVICE_ANY, 0, false, 0, false, 0, 0, 0, 0, 0}}; /* none (C has no empty arrays) */
+const size_t democ_reference_time_count = 0;
+
 const char *democ_function_name(int value) {
     switch (value) {
     case 1:

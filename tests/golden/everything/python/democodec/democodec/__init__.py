@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "c3e8c524292e529f"
+SPEC_HASH = "10936918bd241e9a"
 
 __all__ = [
     "SPEC_HASH",

@@ -83,3 +83,8 @@ GPS_TIMES: Tuple[Tuple[int, int, str, str, str, int, int], ...] = ()
 DEVICE_CLOCKS: Tuple[Tuple[int, int, str, int], ...] = ()
 
 LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = ()
+
+# Per device, the field carrying its own reference time (the host clock model, clock.py;
+# docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per
+# second, tow parameter, week parameter, monotonic).
+REFERENCE_TIMES: Tuple[Tuple[str, int, int, str, str, int, str, str, bool], ...] = ()

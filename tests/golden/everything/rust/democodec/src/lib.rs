@@ -81,6 +81,7 @@ pub mod prelude {
 
 pub mod bounded;
 pub mod builder;
+pub mod clock;
 #[cfg(feature = "std")]
 pub mod command_api;
 pub mod commands;
@@ -124,7 +125,7 @@ pub const VERSION_MINOR: u32 = 10;
 pub const VERSION_PATCH: u32 = 3;
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "c3e8c524292e529f";
+pub const SPEC_HASH: &str = "10936918bd241e9a";
 /// The protocol's name in the spec (`spec/demo/`), as the tools print it.
 pub const PROTOCOL: &str = "demo";
 

@@ -9,6 +9,7 @@
 #include "democodec/parser.h"
 #include "democodec/field_iter.h"
 #include "democodec/samples.h"
+#include "democodec/clock.h"
 #include "democodec/types.h"
 #include "democodec/reserved.h"
 #include "democodec/sets/commands.h"

@@ -11,6 +11,7 @@
 #include "democodec/packet.hpp"
 #include "democodec/parser.hpp"
 #include "democodec/samples.hpp"
+#include "democodec/clock.hpp"
 #include "democodec/types.hpp"
 #include "democodec/version.hpp"
 #include "democodec/wire.hpp"
