@@ -33,6 +33,7 @@ CASE_KEYS = {
     "rejected",
     "notes",
     "skipped",
+    "foreign",
     "quoted",
     "encode_inputs",
     "refused_inputs",
@@ -181,6 +182,8 @@ def _case(ctx: CorpusFile, path: tuple, c: dict, rel: str) -> dict | None:
                         path + ("skipped", k), f"skip run at {s['offset']} of {s['count']} bytes runs past the input"
                     )
             lines.append('{"offset":%d,"skipped":"%s"}' % (s["offset"], skipped))
+        for f in c.get("foreign") or []:
+            lines.append(foreign_line(f))
         lines.sort(key=lambda line: int(re.match(r'\{"offset":(\d+)', line).group(1)))
         _check_tiling(ctx, path, c["name"], raw, lines)
     return {
@@ -228,6 +231,15 @@ def _check_tiling(ctx: CorpusFile, path: tuple, name: str, raw: bytes, lines: li
         off = ev["offset"]
         if off != pos:
             return bad(f"an event starts at offset {off}, but the previous one ends at {pos}")
+        if "nmea" in ev or "rtcm" in ev:
+            n = foreign_length(raw, off, fr)
+            if n == 0:
+                return bad(f"no whole valid NMEA sentence or RTCM3 frame at offset {off}")
+            if json.loads(foreign_line(foreign_fields(raw[off : off + n]))) != {**ev, "offset": 0}:
+                return bad(f"the frame at offset {off} is {raw[off : off + n]!r}, not the line's")
+            pos += n
+            last_skip = False
+            continue
         if "skipped" in ev:
             if last_skip:
                 return bad(f"skip runs at offset {off} and before it are adjacent; they are one run")
@@ -251,3 +263,58 @@ def _check_tiling(ctx: CorpusFile, path: tuple, name: str, raw: bytes, lines: li
         pos = end
     if pos != len(raw):
         bad(f"the events end at offset {pos}, the input at {len(raw)}")
+
+
+def crc24q(data: bytes) -> int:
+    """CRC-24Q of RTCM3 from its definition: polynomial 0x1864CFB (x^24 + x^23 + x^18 + x^17 +
+    x^14 + x^11 + x^10 + x^7 + x^6 + x^5 + x^4 + x^3 + x + 1), initial value 0, not reflected, no
+    final XOR, bit by bit."""
+    crc = 0
+    for b in data:
+        crc ^= b << 16
+        for _ in range(8):
+            crc <<= 1
+            if crc & 0x1000000:
+                crc ^= 0x1864CFB
+    return crc
+
+
+# The check value of this CRC (CRC-24/LTE-A in the CRC catalogue, the same parameters) for the
+# ASCII bytes "123456789" is 0xCDE703: a wrong polynomial or bit order would not give it.
+assert crc24q(b"123456789") == 0xCDE703
+
+
+def foreign_length(raw: bytes, off: int, framing: dict) -> int:
+    """The length of the whole, valid NMEA-0183 sentence or RTCM3 frame at raw[off] under the
+    protocol's framing (docs/conformance.md section 1), else 0. Written from the definitions,
+    apart from the runtimes."""
+    kinds = (framing.get("foreign_frames") or {}).get("kinds", [])
+    data = raw[off:]
+    if data[:1] == b"\xd3" and "rtcm3" in kinds and len(data) >= 6 and data[1] >> 2 == 0:
+        n = (data[1] & 3) * 256 + data[2]
+        if n >= 2 and len(data) >= n + 6 and crc24q(data[: n + 3]) == int.from_bytes(data[n + 3 : n + 6], "big"):
+            return n + 6
+        return 0
+    if data[:1] in (b"$", b"!") and "nmea" in kinds:
+        m = re.match(rb"[$!]([\x20-\x23\x25-\x29\x2b-\x7e]*)\*([0-9A-Fa-f]{2})\r\n", data)
+        if m is None or m.end() > framing["nmea_max"] or b"!" in m.group(1):
+            return 0
+        x = 0
+        for b in m.group(1):
+            x ^= b
+        return m.end() if x == int(m.group(2), 16) else 0
+    return 0
+
+
+def foreign_fields(frame: bytes) -> dict:
+    """The line fields of a frame foreign_length accepted (offset 0)."""
+    if frame[0] == 0xD3:
+        return {"offset": 0, "rtcm": (frame[3] << 4) | (frame[4] >> 4), "length": len(frame) - 6}
+    return {"offset": 0, "nmea": frame[:-2].decode("ascii")}
+
+
+def foreign_line(f: dict) -> str:
+    """The decode line of a foreign frame (docs/conformance.md section 5)."""
+    if "rtcm" in f:
+        return '{"offset":%d,"rtcm":%d,"length":%d}' % (f["offset"], f["rtcm"], f["length"])
+    return '{"offset":%d,"nmea":%s}' % (f["offset"], json.dumps(f["nmea"]))

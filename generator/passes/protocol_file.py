@@ -22,6 +22,19 @@ def run(ctx: Context) -> None:
     if fs_enum in ctx.types and ctx.types[fs_enum]["kind"] == "enum":
         ctx.function_values = {v["name"]: v["value"] for v in ctx.types[fs_enum]["values"]}
     ctx.sources = ctx.check_sources(ctx.pf, ("sources",), p["sources"])
+    foreign = p["framing"].get("foreign_frames")
+    if foreign:
+        ctx.framing["foreign_frames"]["sources"] = ctx.check_sources(
+            ctx.pf, ("framing", "foreign_frames", "sources"), foreign["sources"]
+        )
+        starts = foreign_starts(ctx.framing)
+        if p["framing"]["sync"][0] in starts:
+            ctx.err(
+                ctx.pf,
+                ("framing", "sync"),
+                f"the sync's first byte 0x{p['framing']['sync'][0]:02X} starts a foreign frame too",
+                "a sync byte that is none of " + ", ".join(f"0x{b:02X}" for b in sorted(starts)),
+            )
 
 
 def derive_framing(spec: dict) -> dict:
@@ -38,4 +51,24 @@ def derive_framing(spec: dict) -> dict:
     f["checksum_size"] = 2
     f["max_packet"] = header_size + f["max_payload"] + 2
     f["max_field_data"] = max_field_data(f)  # largest data a single field can carry
+    # Foreign frames (NMEA-0183 sentences, RTCM3 frames; docs/conformance.md section 1): which
+    # the parser recognises, their longest lengths, and the parser's buffer (the longest
+    # candidate it may have to wait for).
+    kinds = (f.get("foreign_frames") or {}).get("kinds", [])
+    f["nmea"] = "nmea" in kinds
+    f["rtcm3"] = "rtcm3" in kinds
+    f["nmea_max"] = (f.get("foreign_frames") or {}).get("nmea_max_length", NMEA_MAX_DEFAULT) if f["nmea"] else 0
+    f["rtcm3_max"] = RTCM3_MAX if f["rtcm3"] else 0
+    f["parser_capacity"] = max(f["max_packet"], f["nmea_max"], f["rtcm3_max"])
     return f
+
+
+# NMEA-0183: 82 characters from '$' to LF; the default when a protocol file names no limit.
+NMEA_MAX_DEFAULT = 82
+# RTCM3 (RTCM 10403): 3 header bytes, a payload of at most 1023 (10-bit length), 3 CRC bytes.
+RTCM3_MAX = 3 + 1023 + 3
+
+
+def foreign_starts(framing: dict) -> set[int]:
+    """The first bytes of the foreign frames the framing recognises."""
+    return ({0x24, 0x21} if framing["nmea"] else set()) | ({0xD3} if framing["rtcm3"] else set())

@@ -13,6 +13,7 @@ import json
 
 from generator.canonical import float_text, string_text
 from generator.primitives import PRIMITIVES
+from generator.vectors import foreign_fields, foreign_length, foreign_line
 from tests.helpers.packets import checksum
 
 INTS = ("u8", "u16", "u32", "u64", "s8", "s16", "s32", "s64")
@@ -70,10 +71,20 @@ class Reference:
         pos = 0
         while pos < n:
             i = buf.find(self.sync, pos)
-            if i < 0:
-                skip(pos, n - pos)
-                break
-            skip(pos, i - pos)
+            # Bytes before the next sync are skipped, but for the NMEA sentences and RTCM3 frames
+            # among them (§1, foreign frames; generator/vectors.py checks the corpus the same way).
+            end = i if i >= 0 else n
+            while pos < end:
+                size = foreign_length(buf, pos, fr) if fr.get("foreign_frames") else 0
+                if size:
+                    flush_skip()
+                    lines.append(foreign_line(foreign_fields(buf[pos : pos + size]) | {"offset": pos}))
+                    pos += size
+                else:
+                    skip(pos, 1)
+                    pos += 1
+            if i < 0 or pos > i:
+                continue
             if n - i < hs:
                 skip(i, 1)
                 pos = i + 1

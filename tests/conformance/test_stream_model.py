@@ -10,6 +10,7 @@ generated test suites: `make test-c`, `test-cpp`, `test-python`, `test-rust`.)
 """
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -25,9 +26,47 @@ CASES = load_corpus(IR, ROOT)
 STREAMS = [c for c in CASES if c["corpus"] == "streams"]
 
 
+def crc24(data: bytes) -> int:
+    """CRC-24Q (RTCM 10403): polynomial 0x1864CFB, register starting at 0, MSB first."""
+    reg = 0
+    for byte in data:
+        for bit in range(7, -1, -1):
+            top = (reg >> 23) & 1
+            reg = (reg << 1) & 0xFFFFFF
+            if top ^ ((byte >> bit) & 1):
+                reg ^= 0x864CFB
+    return reg
+
+
+def foreign_at(data: bytes, i: int, framing: dict) -> int:
+    """Size of the whole valid NMEA sentence or RTCM3 frame at data[i] (§1, foreign frames), else 0."""
+    kinds = (framing.get("foreign_frames") or {}).get("kinds", [])
+    if "rtcm3" in kinds and data[i] == 0xD3 and i + 3 <= len(data) and data[i + 1] < 4:
+        size = ((data[i + 1] << 8) | data[i + 2]) + 6
+        tail = data[i + size - 3 : i + size]
+        ok = size >= 8 and i + size <= len(data) and crc24(data[i : i + size - 3]) == int.from_bytes(tail, "big")
+        return size if ok else 0
+    if "nmea" in kinds and data[i] in b"$!":
+        end = i + 1
+        while end < len(data) and 32 <= data[end] <= 126 and chr(data[end]) not in "$!*":
+            end += 1
+        tail = data[end : end + 5]
+        size = end + 5 - i
+        if size > framing["nmea_max"] or len(tail) < 5 or tail[0:1] != b"*" or tail[3:] != b"\r\n":
+            return 0
+        if not all(chr(c) in "0123456789abcdefABCDEF" for c in tail[1:3]):
+            return 0
+        xor = 0
+        for c in data[i + 1 : end]:
+            xor ^= c
+        return size if xor == int(tail[1:3], 16) else 0
+    return 0
+
+
 def frame(data: bytes, framing: dict) -> list[tuple]:
     """Events of §1 for the whole input followed by the end of the stream: ("packet", offset,
-    size) and ("skip", offset, count), skip runs merged."""
+    size), ("frame", offset, size) for an NMEA sentence or RTCM3 frame, and ("skip", offset,
+    count), skip runs merged."""
     sync = bytes(framing["sync"])
     hsize, lpos = framing["header_size"], framing["length_offset"]
     events: list[tuple] = []
@@ -44,12 +83,21 @@ def frame(data: bytes, framing: dict) -> list[tuple]:
     pos = 0
     while pos < len(data):
         i = data.find(sync, pos)
-        if i < 0:  # no whole sync left; at the end of the stream a partial one is skipped too
-            for j in range(pos, len(data)):
+        # no whole sync before `end`; at the end of the stream a partial one is skipped too
+        end = i if i >= 0 else len(data)
+        j = pos
+        while j < end:  # where bytes would be skipped, a foreign frame is one event
+            n = foreign_at(data, j, framing)
+            if n:
+                flush_skips()
+                events.append(("frame", j, n))
+                j += n
+            else:
                 skip(j)
-            break
-        for j in range(pos, i):
-            skip(j)
+                j += 1
+        if i < 0 or j > end:  # the end, or a frame that ran over the sync
+            pos = j
+            continue
         if i + hsize > len(data):  # header incomplete at the end: a false sync
             skip(i)
             pos = i + 1
@@ -78,6 +126,9 @@ def expected_events(case: dict) -> list[tuple]:
     for k, ev in enumerate(lines):
         if "skipped" in ev:
             out.append(("skip", ev["offset"], len(ev["skipped"]) // 2))
+        elif "nmea" in ev or "rtcm" in ev:
+            end = lines[k + 1]["offset"] if k + 1 < len(lines) else case["size"]
+            out.append(("frame", ev["offset"], end - ev["offset"]))
         else:
             end = lines[k + 1]["offset"] if k + 1 < len(lines) else case["size"]
             out.append(("packet", ev["offset"], end - ev["offset"]))
@@ -103,6 +154,21 @@ def _features(case: dict) -> set[str]:
         out.add("empty input")
     packets = [e for e in events if e[0] == "packet"]
     skips = [e for e in events if e[0] == "skip"]
+    for f in (e for e in events if e[0] == "frame"):
+        out.add("rtcm3 frame" if data[f[1]] == 0xD3 else "nmea sentence")
+    for s in skips:
+        chunk = data[s[1] : s[1] + s[2]]
+        if re.match(rb"[$!][\x20-\x7e]*?\*[0-9A-Fa-f]{2}\r\n", chunk):
+            shape = re.match(rb"[$!][\x20-\x7e]*?\*[0-9A-Fa-f]{2}\r\n", chunk)
+            out.add("overlong nmea sentence" if shape.end() > fr.get("nmea_max", 0) else "nmea with a bad checksum")
+        if chunk[:1] == b"\xd3" and len(chunk) >= 3 and chunk[1] < 4:
+            claimed = ((chunk[1] << 8) | chunk[2]) + 6
+            out.add("rtcm3 frame cut short" if s[1] + claimed > len(data) else "rtcm3 frame with a bad crc")
+            if any(s[1] < p[1] < s[1] + claimed for p in packets):
+                out.add("packet inside a failed rtcm3 frame")
+    for p in packets:
+        if 0xD3 in data[p[1] + fr["header_size"] : p[1] + p[2] - 2]:
+            out.add("0xD3 inside a packet's payload")
     for s in skips:
         chunk = data[s[1] : s[1] + s[2]]
         if s[1] == 0 and packets:
@@ -195,6 +261,19 @@ REQUIRED = {
 }
 
 
+# A protocol with foreign frames (framing.foreign_frames, §1) needs these too.
+REQUIRED_FOREIGN = {
+    "nmea sentence",
+    "rtcm3 frame",
+    "nmea with a bad checksum",
+    "overlong nmea sentence",
+    "rtcm3 frame with a bad crc",
+    "rtcm3 frame cut short",
+    "packet inside a failed rtcm3 frame",
+    "0xD3 inside a packet's payload",
+}
+
+
 @pytest.mark.parametrize("protocol", sorted(PROTOCOLS))
 def test_stream_corpus_covers_every_hostile_input(protocol):
     """The corpus of each protocol has at least one case of every kind the parser must survive
@@ -204,6 +283,8 @@ def test_stream_corpus_covers_every_hostile_input(protocol):
         if c["protocol"] == protocol:
             have |= _features(c)
     required = set(REQUIRED)
+    if PROTOCOLS[protocol]["framing"].get("foreign_frames"):
+        required |= REQUIRED_FOREIGN
     if PROTOCOLS[protocol].get("shared_data"):
         required.add("continuation packets")
     assert required <= have, f"tests/streams/{protocol}/ has no case of: {sorted(required - have)}"

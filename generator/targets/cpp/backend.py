@@ -538,6 +538,10 @@ class _Protocol:
             "sum1_index": order.index("sum1"),
             "sum2_index": order.index("sum2"),
             "max_packet": f["max_packet"],
+            "nmea": f["nmea"],
+            "rtcm3": f["rtcm3"],
+            "nmea_max": f["nmea_max"],
+            "parser_capacity": f["parser_capacity"],
             "max_field_data": f["max_field_data"],
             "big_endian": "true" if self.p["byte_order"] == "big" else "false",
         }

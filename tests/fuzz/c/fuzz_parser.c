@@ -75,8 +75,8 @@ static void check_line(const uint8_t *bytes, size_t len, uint64_t offset, int pa
     i = n < sizeof small - 1 ? n : sizeof small - 1;
     FZ_CHECK(small[i] == '\0' && memcmp(small, line, i) == 0, "small-buffer line is not a prefix: %s", line);
     for (i = 0; i < n; i++) {
-        FZ_CHECK(line[i] >= 0x20 && line[i] < 0x7f, "byte 0x%02x at %zu of the line: %s", (unsigned char)line[i],
-                 i, line);
+        FZ_CHECK(line[i] >= 0x20 && line[i] < 0x7f, "byte 0x%02x at %zu of the line: %s",
+                 (unsigned char)line[i], i, line);
     }
     /* encode: exactly the bytes, into an exact-size buffer (the json target checks tighter ones) */
     out = (uint8_t *)malloc(len ? len : 1);
@@ -89,7 +89,8 @@ static void check_line(const uint8_t *bytes, size_t len, uint64_t offset, int pa
 }
 
 /* One complete field: decoded with the given device, re-encoded when it decodes. */
-static void check_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len, FZ(device_t) device) {
+static void check_field(uint8_t set, uint8_t descriptor, const uint8_t *data, size_t len,
+                        FZ(device_t) device) {
     FZ(field_value_t) value;
     FZ(decode_error_t) err;
     FZ(status_t) st;
@@ -101,7 +102,8 @@ static void check_field(uint8_t set, uint8_t descriptor, const uint8_t *data, si
     st = FZ(decode_field)(set, descriptor, data, len, device, &value, &err);
     if (st == FZU(OK)) {
         const FZ(layout_info_t) *layout = FZ(layout_info)(value.id);
-        FZ_CHECK(info != NULL, "decoded a field find_field does not know (set %u descriptor %u)", set, descriptor);
+        FZ_CHECK(info != NULL, "decoded a field find_field does not know (set %u descriptor %u)", set,
+                 descriptor);
         FZ_CHECK(layout != NULL && layout->descriptor == descriptor, "layout info of id %d", (int)value.id);
         FZ_CHECK((size_t)value.id >= (size_t)info->first_layout &&
                      (size_t)value.id < (size_t)info->first_layout + info->layout_count,
@@ -109,11 +111,11 @@ static void check_field(uint8_t set, uint8_t descriptor, const uint8_t *data, si
         buf = (uint8_t *)malloc(len ? len : 1);
         FZ_CHECK(buf != NULL, "out of memory");
         st = FZ(encode_field)(&value, buf, len, &n);
-        FZ_CHECK(st == FZU(OK), "re-encode of %s (set %u descriptor %u) failed: %d, data %s", layout->name, set,
-                 descriptor, (int)st, fz_hex(data, len));
+        FZ_CHECK(st == FZU(OK), "re-encode of %s (set %u descriptor %u) failed: %d, data %s", layout->name,
+                 set, descriptor, (int)st, fz_hex(data, len));
         FZ_CHECK(n == len && memcmp(buf, data, len) == 0,
-                 "%s (set %u descriptor %u) re-encodes to different bytes: data %s", layout->name, set, descriptor,
-                 fz_hex(data, len));
+                 "%s (set %u descriptor %u) re-encodes to different bytes: data %s", layout->name, set,
+                 descriptor, fz_hex(data, len));
         if (len > 0) {
             st = FZ(encode_field)(&value, buf, len - 1, &n);
             FZ_CHECK(st != FZU(OK), "%s encoded %zu bytes into %zu", layout->name, len, len - 1);
@@ -126,11 +128,14 @@ static void check_field(uint8_t set, uint8_t descriptor, const uint8_t *data, si
         size_t full2 = FZ(decode_error_format)(&err, msg, sizeof msg);
         FZ_CHECK(info != NULL, "a decode error for a field find_field does not know");
         FZ_CHECK(full == full2 && full < sizeof msg, "error message length %zu / %zu", full, full2);
-        FZ_CHECK(strlen(msg) == full && memcmp(small, msg, sizeof small - 1) == 0 && small[sizeof small - 1] == 0,
+        FZ_CHECK(strlen(msg) == full && memcmp(small, msg, sizeof small - 1) == 0 &&
+                     small[sizeof small - 1] == 0,
                  "error message truncation: %s", msg);
     } else {
-        FZ_CHECK(st == FZU(ERR_UNKNOWN_SET) || st == FZU(ERR_UNKNOWN_DESCRIPTOR), "decode status %d", (int)st);
-        FZ_CHECK(info == NULL && why == st, "find_field and decode_field disagree (%d / %d)", (int)why, (int)st);
+        FZ_CHECK(st == FZU(ERR_UNKNOWN_SET) || st == FZU(ERR_UNKNOWN_DESCRIPTOR), "decode status %d",
+                 (int)st);
+        FZ_CHECK(info == NULL && why == st, "find_field and decode_field disagree (%d / %d)", (int)why,
+                 (int)st);
     }
 }
 
@@ -146,7 +151,8 @@ static void check_packet(fz_run_t *run, const uint8_t *packet, size_t len, uint6
     uint8_t set;
     FZ(device_t) d;
     FZ(device_t) devices = device_count();
-    FZ_CHECK(len >= HEADER + CHECKSUM && FZ(packet_valid)(packet, len), "invalid packet %s", fz_hex(packet, len));
+    FZ_CHECK(len >= HEADER + CHECKSUM && FZ(packet_valid)(packet, len), "invalid packet %s",
+             fz_hex(packet, len));
     set = FZ(packet_set)(packet);
     plen = FZ(packet_payload_length)(packet);
     FZ_CHECK(len == HEADER + plen + CHECKSUM, "packet length %zu for payload %zu", len, plen);
@@ -159,7 +165,8 @@ static void check_packet(fz_run_t *run, const uint8_t *packet, size_t len, uint6
             int adjust = FZ(field_length_adjust)(set, head[FZU(FIELD_DESCRIPTOR_OFFSET)]);
             FZ_CHECK(e.descriptor == head[FZU(FIELD_DESCRIPTOR_OFFSET)] && e.data == head + FIELD_HEADER,
                      "field entry at %zu", pos);
-            FZ_CHECK((int)e.length == (int)head[FZU(FIELD_LENGTH_OFFSET)] - adjust, "field length %zu", e.length);
+            FZ_CHECK((int)e.length == (int)head[FZU(FIELD_LENGTH_OFFSET)] - adjust, "field length %zu",
+                     e.length);
             pos += FIELD_HEADER + e.length;
             FZ_CHECK(pos <= plen, "field runs past the payload");
             check_field(set, e.descriptor, e.data, e.length, FZU(DEVICE_ANY));
@@ -171,10 +178,12 @@ static void check_packet(fz_run_t *run, const uint8_t *packet, size_t len, uint6
             char msg[160];
             size_t full;
             FZ_CHECK(e.kind == FZU(ENTRY_TRAILING), "entry kind %d", (int)e.kind);
-            FZ_CHECK(e.data == payload + pos && e.length == plen - pos, "trailing entry does not hold the rest");
+            FZ_CHECK(e.data == payload + pos && e.length == plen - pos,
+                     "trailing entry does not hold the rest");
             FZ_CHECK(e.length > 0, "empty trailing entry");
             full = FZ(trailing_format)(&e, small, sizeof small);
-            FZ_CHECK(full == FZ(trailing_format)(&e, msg, sizeof msg) && full < sizeof msg && strlen(msg) == full,
+            FZ_CHECK(full == FZ(trailing_format)(&e, msg, sizeof msg) && full < sizeof msg &&
+                         strlen(msg) == full,
                      "trailing message length %zu", full);
             pos = plen;
             ended = 1;
@@ -186,7 +195,8 @@ static void check_packet(fz_run_t *run, const uint8_t *packet, size_t len, uint6
         run->data_packets++;
         FZ_CHECK(info.number < run->data_packets, "sample %llu after %llu data packets",
                  (unsigned long long)info.number, (unsigned long long)run->data_packets);
-        FZ_CHECK(info.shared_prefix <= plen, "shared prefix %zu of a %zu-byte payload", info.shared_prefix, plen);
+        FZ_CHECK(info.shared_prefix <= plen, "shared prefix %zu of a %zu-byte payload", info.shared_prefix,
+                 plen);
     }
 }
 
@@ -203,7 +213,7 @@ static void on_event(void *arg, const FZ(event_t) * ev) {
     FZ_CHECK(ev->length > 0 && ev->length <= run->size - ev->offset, "event length %llu at %llu of %zu",
              (unsigned long long)ev->length, (unsigned long long)ev->offset, run->size);
     FZ_CHECK(run->count < run->cap, "more events than stream bytes");
-    if (ev->kind == FZU(EVENT_PACKET)) {
+    if (ev->kind == FZU(EVENT_PACKET) || ev->kind == FZU(EVENT_NMEA) || ev->kind == FZU(EVENT_RTCM)) {
         FZ_CHECK(ev->packet != NULL && memcmp(ev->packet, run->stream + ev->offset, (size_t)ev->length) == 0,
                  "packet bytes differ from the stream at %llu", (unsigned long long)ev->offset);
     } else {
@@ -216,7 +226,7 @@ static void on_event(void *arg, const FZ(event_t) * ev) {
     if (run->inspect) {
         if (ev->kind == FZU(EVENT_PACKET)) {
             check_packet(run, ev->packet, (size_t)ev->length, ev->offset);
-        } else {
+        } else if (ev->kind == FZU(EVENT_SKIP)) {
             check_line(run->stream + ev->offset, (size_t)ev->length, ev->offset, 0, run->device);
         }
     }
@@ -242,7 +252,8 @@ static void check_wrapped(fz_run_t *run) {
     plen = run->size - 1 < MAX_PAYLOAD ? run->size - 1 : MAX_PAYLOAD;
     FZ(packet_begin)(&b, buf, sizeof buf, run->stream[0]);
     FZ_CHECK(FZ(packet_add_raw)(&b, run->stream + 1, plen) == FZU(OK), "add_raw of %zu bytes", plen);
-    FZ_CHECK(FZ(packet_finish)(&b, &len) == FZU(OK) && len == HEADER + plen + CHECKSUM, "finish: %zu bytes", len);
+    FZ_CHECK(FZ(packet_finish)(&b, &len) == FZU(OK) && len == HEADER + plen + CHECKSUM, "finish: %zu bytes",
+             len);
     memset(&one, 0, sizeof one);
     one.stream = buf;
     one.size = len;
@@ -307,7 +318,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     check_covered(&chunked);
     FZ_CHECK(chunked.count == whole.count, "%zu events in chunks, %zu whole", chunked.count, whole.count);
     for (i = 0; i < whole.count; i++) {
-        FZ_CHECK(chunked.events[i].kind == whole.events[i].kind && chunked.events[i].length == whole.events[i].length,
+        FZ_CHECK(chunked.events[i].kind == whole.events[i].kind &&
+                     chunked.events[i].length == whole.events[i].length,
                  "event %zu differs when fed in chunks", i);
     }
     check_wrapped(&whole);

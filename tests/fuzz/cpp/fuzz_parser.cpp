@@ -10,7 +10,7 @@ namespace fz_parser {
 
 namespace pkg = fz::pkg;
 
-enum class Kind { packet, skip };
+enum class Kind { packet, skip, foreign };
 
 struct Ev {
     Kind kind;
@@ -153,18 +153,22 @@ std::vector<Ev> events(const std::uint8_t *stream, std::size_t size, fz::Chunks 
     std::vector<Ev> out;
     auto on = [&](const pkg::StreamEvent &ev) {
         const bool packet = ev.kind == pkg::StreamEvent::Kind::packet;
-        const std::uint64_t len = packet ? ev.packet.size : ev.count;
+        const bool foreign =
+            ev.kind == pkg::StreamEvent::Kind::nmea || ev.kind == pkg::StreamEvent::Kind::rtcm;
+        const std::uint64_t len = packet || foreign ? ev.packet.size : ev.count;
         const std::uint64_t expected = out.empty() ? 0 : out.back().offset + out.back().length;
         FZ_CHECK(out.empty() || packet || out.back().kind != Kind::skip, "two skip runs in a row");
         FZ_CHECK(ev.offset == expected, "event at %llu, expected %llu", (unsigned long long)ev.offset,
                  (unsigned long long)expected);
         FZ_CHECK(len > 0 && len <= size - ev.offset, "event length %llu", (unsigned long long)len);
-        if (packet) {
+        if (packet || foreign) {
             FZ_CHECK(std::memcmp(ev.packet.data, stream + ev.offset, len) == 0, "packet bytes differ at %llu",
                      (unsigned long long)ev.offset);
         }
-        out.push_back(Ev{packet ? Kind::packet : Kind::skip, ev.offset, len});
-        each(packet, ev.offset, stream + ev.offset, static_cast<std::size_t>(len));
+        out.push_back(Ev{packet ? Kind::packet : foreign ? Kind::foreign : Kind::skip, ev.offset, len});
+        if (!foreign) { // a foreign frame's line is not encoder input (docs/conformance.md section 5)
+            each(packet, ev.offset, stream + ev.offset, static_cast<std::size_t>(len));
+        }
     };
     pkg::StreamParser parser;
     if (plan == nullptr) {

@@ -7,6 +7,48 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The line of a foreign frame into out (cap bytes); returns its full length: an NMEA sentence
+ * without its CR LF ('"' and '\\' escaped: the rest is printable ASCII), an RTCM3 frame's message
+ * number and payload length (docs/conformance.md section 5). */
+size_t mipc_json_foreign_line(const mipc_event_t *ev, char *out, size_t cap) {
+    char head[96];
+    size_t n;
+    size_t i;
+    if (ev->kind == MIPC_EVENT_RTCM) {
+        int k = snprintf(head, sizeof head, "{\"offset\":%llu,\"rtcm\":%u,\"length\":%llu}",
+                         (unsigned long long)ev->offset, mipc_rtcm_type(ev->packet),
+                         (unsigned long long)(ev->length - 6));
+        n = (size_t)k;
+        if (n < cap) {
+            memcpy(out, head, n + 1);
+        }
+        return n;
+    }
+    n = (size_t)snprintf(head, sizeof head, "{\"offset\":%llu,\"nmea\":\"", (unsigned long long)ev->offset);
+    if (n < cap) {
+        memcpy(out, head, n);
+    }
+    for (i = 0; i + 2 < ev->length; i++) {
+        const char c = (char)ev->packet[i];
+        if (c == '"' || c == '\\') {
+            if (n < cap) {
+                out[n] = '\\';
+            }
+            n++;
+        }
+        if (n < cap) {
+            out[n] = c;
+        }
+        n++;
+    }
+    if (n + 2 < cap) {
+        out[n] = '"';
+        out[n + 1] = '}';
+        out[n + 2] = '\0';
+    }
+    return n + 2;
+}
+
 size_t mipc_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap) {
     assert(bytes != NULL || n == 0);
     assert(out != NULL || cap == 0);

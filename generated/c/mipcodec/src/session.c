@@ -618,9 +618,9 @@ static void route(mipc_session_t *s, const mipc_event_t *pkt) {
 
 static void on_stream(void *ctx, const mipc_event_t *event) {
     mipc_session_t *s = (mipc_session_t *)ctx;
-    if (event->kind == MIPC_EVENT_SKIP) {
+    if (event->kind != MIPC_EVENT_PACKET) {
         mipc_session_event_t ev;
-        ev.kind = MIPC_SESSION_SKIP;
+        ev.kind = event->kind == MIPC_EVENT_SKIP ? MIPC_SESSION_SKIP : MIPC_SESSION_FOREIGN;
         ev.result = NULL;
         ev.stream = event;
         emit(s, &ev);

@@ -4539,3 +4539,17 @@ TEST(Streams, union_selector_without_member) {
                  "{\"offset\":0,\"set\":12,\"fields\":[{\"descriptor\":46,\"data\":\"0101090104\",\"error\":"
                  "\"parameters: no member for selector value 9\"}]}\n");
 }
+
+TEST(Streams, rtcm_bad_crc_over_a_packet) {
+    check_vector(
+        "d3000c3ed0756501020201e0c6aabb321af0756501020201e0c6", MIPC_DEVICE_ANY,
+        "{\"offset\":0,\"skipped\":\"d3000c3ed0\"}\n{\"offset\":5,\"set\":1,\"fields\":[{\"descriptor\":1,"
+        "\"name\":\"ping\",\"values\":{}}]}\n{\"offset\":13,\"skipped\":\"aabb321af0\"}\n{\"offset\":18,"
+        "\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n");
+}
+
+TEST(Streams, rtcm_cut_short_at_the_end) {
+    check_vector("756501020201e0c6d300133ed7d30202980edeef34b4bd62ac094198", MIPC_DEVICE_ANY,
+                 "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}\n{"
+                 "\"offset\":8,\"skipped\":\"d300133ed7d30202980edeef34b4bd62ac094198\"}\n");
+}

@@ -85,6 +85,9 @@ static void put_hex(decode_ctx_t *ctx, uint64_t from, uint64_t to) {
 
 /* The line of an event into ctx->line; returns its full length. */
 static size_t format(decode_ctx_t *ctx, const mipc_event_t *ev) {
+    if (ev->kind == MIPC_EVENT_NMEA || ev->kind == MIPC_EVENT_RTCM) {
+        return mipc_json_foreign_line(ev, ctx->line, ctx->line_cap);
+    }
     if (ev->kind == MIPC_EVENT_SKIP) {
         return mipc_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
                                    (size_t)ev->length, ctx->line, ctx->line_cap);

@@ -34,7 +34,7 @@
 #define TOOL_RECONNECT_MAX 3600000ul
 #define TOOL_LISTEN_MAX 3600000ul
 /* The received bytes the tool keeps: the pending skip piece, the parser's candidate, one read. */
-#define TOOL_KEEP (MIPC_SESSION_SKIP_PIECE + MIPC_MAX_PACKET + MIPC_LINK_READ_MAX)
+#define TOOL_KEEP (MIPC_SESSION_SKIP_PIECE + MIPC_PARSER_CAPACITY + MIPC_LINK_READ_MAX)
 
 typedef struct {
     mipc_device_t device;
@@ -103,6 +103,9 @@ static size_t stream_fmt(const void *arg, char *out, size_t cap) {
     const tool_t *t = a->tool;
     if (ev->kind == MIPC_EVENT_PACKET) {
         return mipc_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, t->device, out, cap);
+    }
+    if (ev->kind == MIPC_EVENT_NMEA || ev->kind == MIPC_EVENT_RTCM) {
+        return mipc_json_foreign_line(ev, out, cap);
     }
     if (ev->offset < t->base || ev->offset - t->base + ev->length > t->len) {
         /* the tool keeps every byte a skip run can report: this does not happen */

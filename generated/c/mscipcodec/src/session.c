@@ -621,9 +621,9 @@ static void route(mscipc_session_t *s, const mscipc_event_t *pkt) {
 
 static void on_stream(void *ctx, const mscipc_event_t *event) {
     mscipc_session_t *s = (mscipc_session_t *)ctx;
-    if (event->kind == MSCIPC_EVENT_SKIP) {
+    if (event->kind != MSCIPC_EVENT_PACKET) {
         mscipc_session_event_t ev;
-        ev.kind = MSCIPC_SESSION_SKIP;
+        ev.kind = event->kind == MSCIPC_EVENT_SKIP ? MSCIPC_SESSION_SKIP : MSCIPC_SESSION_FOREIGN;
         ev.result = NULL;
         ev.stream = event;
         emit(s, &ev);

@@ -85,6 +85,9 @@ static void put_hex(decode_ctx_t *ctx, uint64_t from, uint64_t to) {
 
 /* The line of an event into ctx->line; returns its full length. */
 static size_t format(decode_ctx_t *ctx, const mscipc_event_t *ev) {
+    if (ev->kind == MSCIPC_EVENT_NMEA || ev->kind == MSCIPC_EVENT_RTCM) {
+        return mscipc_json_foreign_line(ev, ctx->line, ctx->line_cap);
+    }
     if (ev->kind == MSCIPC_EVENT_SKIP) {
         return mscipc_json_skip_line(ev->offset, ctx->hist + (size_t)(ev->offset - ctx->hist_base),
                                      (size_t)ev->length, ctx->line, ctx->line_cap);

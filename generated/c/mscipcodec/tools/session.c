@@ -34,7 +34,7 @@
 #define TOOL_RECONNECT_MAX 3600000ul
 #define TOOL_LISTEN_MAX 3600000ul
 /* The received bytes the tool keeps: the pending skip piece, the parser's candidate, one read. */
-#define TOOL_KEEP (MSCIPC_SESSION_SKIP_PIECE + MSCIPC_MAX_PACKET + MSCIPC_LINK_READ_MAX)
+#define TOOL_KEEP (MSCIPC_SESSION_SKIP_PIECE + MSCIPC_PARSER_CAPACITY + MSCIPC_LINK_READ_MAX)
 
 typedef struct {
     mscipc_device_t device;
@@ -103,6 +103,9 @@ static size_t stream_fmt(const void *arg, char *out, size_t cap) {
     const tool_t *t = a->tool;
     if (ev->kind == MSCIPC_EVENT_PACKET) {
         return mscipc_json_packet_line(ev->packet, (size_t)ev->length, ev->offset, t->device, out, cap);
+    }
+    if (ev->kind == MSCIPC_EVENT_NMEA || ev->kind == MSCIPC_EVENT_RTCM) {
+        return mscipc_json_foreign_line(ev, out, cap);
     }
     if (ev->offset < t->base || ev->offset - t->base + ev->length > t->len) {
         /* the tool keeps every byte a skip run can report: this does not happen */

@@ -6407,3 +6407,25 @@ TEST(Streams, union_selector_without_member) {
                      "\"error\":\"parameters: no member for selector value 9\"}]}",
                  });
 }
+
+// rtcm_bad_crc_over_a_packet
+TEST(Streams, rtcm_bad_crc_over_a_packet) {
+    check_vector(
+        "d3000c3ed0756501020201e0c6aabb321af0756501020201e0c6", nullptr, false,
+        {
+            "{\"offset\":0,\"skipped\":\"d3000c3ed0\"}",
+            "{\"offset\":5,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":13,\"skipped\":\"aabb321af0\"}",
+            "{\"offset\":18,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        });
+}
+
+// rtcm_cut_short_at_the_end
+TEST(Streams, rtcm_cut_short_at_the_end) {
+    check_vector(
+        "756501020201e0c6d300133ed7d30202980edeef34b4bd62ac094198", nullptr, false,
+        {
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":8,\"skipped\":\"d300133ed7d30202980edeef34b4bd62ac094198\"}",
+        });
+}

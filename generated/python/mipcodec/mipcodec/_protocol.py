@@ -24,6 +24,10 @@ FIELD_LENGTH_COUNTS_HEADER = True
 FIELD_LENGTH_ADJUST = 2  # field length byte - data length
 MAX_PAYLOAD = 255
 MAX_PACKET = 261
+# Foreign frames the parser reports between packets (docs/conformance.md section 1).
+FOREIGN_NMEA = True  # NMEA-0183 sentences, at most NMEA_MAX bytes
+FOREIGN_RTCM3 = True
+NMEA_MAX = 128
 MAX_FIELD_DATA = 253
 CHECKSUM_SIZE = 2
 CHECKSUM_SUM1_FIRST = True  # Fletcher-16 bytes on the wire: sum1 then sum2 when True

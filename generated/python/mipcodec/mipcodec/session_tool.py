@@ -18,7 +18,8 @@ import sys
 from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 from . import _link, registry
-from .codec.framing import Skip
+from .codec.canonical import foreign_line
+from .codec.framing import Nmea, Rtcm, Skip
 from .codec.packets import Packet
 from .codec.stdio import silence_stdout
 from .session import DEFAULT_TIMEOUT_MS, Device, LinkError, Result, SessionError, command_from_line
@@ -128,6 +129,8 @@ def _print_event(e: Any) -> None:
         print('{"offset":' + str(e.offset) + ',"skipped":"' + e.data.hex() + '"}', flush=True)
     elif isinstance(e, Packet):
         print(e.line(), flush=True)
+    elif isinstance(e, (Nmea, Rtcm)):
+        print(foreign_line(e.offset, e.data), flush=True)
 
 
 def run(argv: List[str]) -> int:

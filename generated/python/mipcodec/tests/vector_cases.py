@@ -6009,4 +6009,28 @@ CASES = [
             '{"offset":0,"set":12,"fields":[{"descriptor":46,"data":"0101090104","error":"parameters: no member for selector value 9"}]}'
         ],
     },
+    {
+        "name": "rtcm_bad_crc_over_a_packet",
+        "hex": "d3000c3ed0756501020201e0c6aabb321af0756501020201e0c6",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mip/mixed_nmea_rtcm.yaml:74",
+        "expect": [
+            '{"offset":0,"skipped":"d3000c3ed0"}',
+            '{"offset":5,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}',
+            '{"offset":13,"skipped":"aabb321af0"}',
+            '{"offset":18,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}',
+        ],
+    },
+    {
+        "name": "rtcm_cut_short_at_the_end",
+        "hex": "756501020201e0c6d300133ed7d30202980edeef34b4bd62ac094198",
+        "device": None,
+        "rejected": False,
+        "where": "tests/streams/mip/mixed_nmea_rtcm.yaml:95",
+        "expect": [
+            '{"offset":0,"set":1,"fields":[{"descriptor":1,"name":"ping","values":{}}]}',
+            '{"offset":8,"skipped":"d300133ed7d30202980edeef34b4bd62ac094198"}',
+        ],
+    },
 ]

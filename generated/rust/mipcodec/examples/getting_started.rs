@@ -36,6 +36,7 @@ fn print_command() -> Result<(), String> {
 fn on_event(event: Event<'_>) {
     match event {
         Event::Skip { count, .. } => println!("skipped {count}"),
+        Event::Nmea { .. } | Event::Rtcm { .. } => {} // NMEA sentences, RTCM3 frames between packets
         Event::Packet { bytes, .. } => {
             let Some(packet) = Packet::new(bytes) else {
                 return;

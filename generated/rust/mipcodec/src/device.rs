@@ -1077,6 +1077,9 @@ impl<T: Transport> Device<T> {
             dropped += match e {
                 SessionEvent::Packet { packet, .. } => packet.bytes().len() as u64,
                 SessionEvent::Skip { count, .. } => count,
+                SessionEvent::Nmea { bytes, .. } | SessionEvent::Rtcm { bytes, .. } => {
+                    bytes.len() as u64
+                }
                 SessionEvent::Result(_) => 0,
             }
         });
@@ -1186,6 +1189,9 @@ impl<T: Transport> Device<T> {
                 SessionEvent::Result(r) => on_result(&r),
                 SessionEvent::Packet { packet, .. } => *dropped += packet.bytes().len() as u64,
                 SessionEvent::Skip { count, .. } => *dropped += count,
+                SessionEvent::Nmea { bytes, .. } | SessionEvent::Rtcm { bytes, .. } => {
+                    *dropped += bytes.len() as u64
+                }
             });
             return Ok(());
         }
@@ -1214,7 +1220,9 @@ impl<T: Transport> Device<T> {
                         });
                     }
                 }
-                SessionEvent::Skip { .. } => {}
+                SessionEvent::Skip { .. }
+                | SessionEvent::Nmea { .. }
+                | SessionEvent::Rtcm { .. } => {}
             }
         });
         Ok(())

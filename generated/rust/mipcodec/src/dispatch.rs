@@ -5008,6 +5008,29 @@ pub fn write_skip_json(w: &mut dyn Write, offset: u64, bytes: &[u8]) -> fmt::Res
     w.write_str("\"}")
 }
 
+/// Writes the canonical JSON line of a foreign frame (no newline; `docs/conformance.md` §5): an
+/// NMEA sentence without its CR LF, or an RTCM3 frame's message number and payload length.
+pub fn write_foreign_json(w: &mut dyn Write, offset: u64, bytes: &[u8]) -> fmt::Result {
+    w.write_char('{')?;
+    if bytes[0] == 0xD3 {
+        let kind = crate::parser::rtcm_type(bytes);
+        write!(
+            w,
+            "\"offset\":{offset},\"rtcm\":{kind},\"length\":{}",
+            bytes.len() - 6
+        )?;
+        return w.write_char('}');
+    }
+    write!(w, "\"offset\":{offset},\"nmea\":\"")?;
+    for &b in &bytes[..bytes.len() - 2] {
+        if b == b'"' || b == b'\\' {
+            w.write_char('\\')?;
+        }
+        w.write_char(char::from(b))?;
+    }
+    w.write_str("\"}")
+}
+
 /// Error unless `device` is `None` (for fields without per-device layouts).
 #[cfg(feature = "std")]
 pub fn no_device(device: Option<Device>) -> Result<(), crate::json_read::JsonError> {

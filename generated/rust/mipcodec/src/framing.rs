@@ -19,6 +19,14 @@ pub const MAX_PAYLOAD: usize = 255;
 pub const CHECKSUM_SIZE: usize = 2;
 /// Largest packet: header, maximum payload and checksum.
 pub const MAX_PACKET: usize = 261;
+/// Whether the parser reports NMEA-0183 sentences between packets (docs/conformance.md section 1).
+pub const FOREIGN_NMEA: bool = true;
+/// Whether the parser reports RTCM3 frames between packets.
+pub const FOREIGN_RTCM3: bool = true;
+/// Longest NMEA sentence recognised, '$' to LF (0: none).
+pub const NMEA_MAX: usize = 128;
+/// The parser's buffer: the longest candidate it may wait for (a packet or a foreign frame).
+pub const PARSER_CAPACITY: usize = 1029;
 /// Size of a field header.
 pub const FIELD_HEADER_SIZE: usize = 2;
 /// Offset of the length byte within a field header.

@@ -27,6 +27,7 @@
 //! let mut on_event = |event: Event<'_>| match event {
 //!     Event::Packet { offset, bytes } => packets.push((offset, bytes.to_vec())),
 //!     Event::Skip { offset, count } => assert_eq!((offset, count), (0, 1)),
+//!     Event::Nmea { .. } | Event::Rtcm { .. } => {} // other protocols' frames between packets
 //! };
 //! parser.feed(&stream, &mut on_event);
 //! parser.flush(&mut on_event);
@@ -135,7 +136,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "7c416cbb43e3775a";
+pub const SPEC_HASH: &str = "cbe3e91838bfaeff";
 /// The protocol's name in the spec (`spec/mip/`), as the tools print it.
 pub const PROTOCOL: &str = "mip";
 

@@ -7,7 +7,7 @@
 use std::fmt::Write;
 
 use mipcodec::device::command_from_line;
-use mipcodec::dispatch::{write_packet_json, write_skip_json};
+use mipcodec::dispatch::{write_foreign_json, write_packet_json, write_skip_json};
 use mipcodec::session::{Session, SessionEvent, StartOptions};
 use mipcodec::Device;
 
@@ -54,6 +54,9 @@ fn line(e: SessionEvent<'_>, hist: &[u8], lines: &[(u32, u64)], device: Option<D
             &hist[offset as usize..(offset + count) as usize],
         )
         .unwrap(),
+        SessionEvent::Nmea { offset, bytes } | SessionEvent::Rtcm { offset, bytes } => {
+            write_foreign_json(&mut t, offset, bytes).unwrap()
+        }
     }
     t
 }

@@ -8015,3 +8015,33 @@ fn stream_union_selector_without_member() {
         false,
     );
 }
+
+/// `rtcm_bad_crc_over_a_packet` (tests/streams/mip/mixed_nmea_rtcm.yaml:74)
+#[test]
+fn stream_rtcm_bad_crc_over_a_packet() {
+    check(
+        "d3000c3ed0756501020201e0c6aabb321af0756501020201e0c6",
+        None,
+        &[
+            "{\"offset\":0,\"skipped\":\"d3000c3ed0\"}",
+            "{\"offset\":5,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":13,\"skipped\":\"aabb321af0\"}",
+            "{\"offset\":18,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+        ],
+        false,
+    );
+}
+
+/// `rtcm_cut_short_at_the_end` (tests/streams/mip/mixed_nmea_rtcm.yaml:95)
+#[test]
+fn stream_rtcm_cut_short_at_the_end() {
+    check(
+        "756501020201e0c6d300133ed7d30202980edeef34b4bd62ac094198",
+        None,
+        &[
+            "{\"offset\":0,\"set\":1,\"fields\":[{\"descriptor\":1,\"name\":\"ping\",\"values\":{}}]}",
+            "{\"offset\":8,\"skipped\":\"d300133ed7d30202980edeef34b4bd62ac094198\"}",
+        ],
+        false,
+    );
+}

@@ -1,9 +1,11 @@
 //! Stream parser (`docs/conformance.md` §1): finds packets in a byte stream fed in chunks of
 //! any size and reports the bytes between them as skip runs. The events do not depend on the
-//! chunking. State: one maximum packet ([`MAX_PACKET`] bytes) and a few counters.
+//! chunking. State: one maximum packet or foreign frame ([`PARSER_CAPACITY`] bytes) and a few
+//! counters.
 
 use crate::framing::{
-    checksum_bytes, CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, MAX_PAYLOAD, SYNC,
+    checksum_bytes, CHECKSUM_SIZE, FOREIGN_NMEA, FOREIGN_RTCM3, HEADER_SIZE, LENGTH_OFFSET,
+    MAX_PAYLOAD, NMEA_MAX, PARSER_CAPACITY, SYNC,
 };
 
 /// What the parser found.
@@ -13,12 +15,117 @@ pub enum Event<'a> {
     Skip { offset: u64, count: u64 },
     /// A packet with a valid checksum at stream offset `offset`: sync to checksum.
     Packet { offset: u64, bytes: &'a [u8] },
+    /// An NMEA-0183 sentence between packets ([`FOREIGN_NMEA`]): `$` or `!` to CR LF.
+    Nmea { offset: u64, bytes: &'a [u8] },
+    /// An RTCM3 frame between packets ([`FOREIGN_RTCM3`]): 0xD3 to its CRC-24Q.
+    Rtcm { offset: u64, bytes: &'a [u8] },
+}
+
+/// The message number of an RTCM3 frame (the first 12 bits of its payload).
+pub fn rtcm_type(frame: &[u8]) -> u16 {
+    u16::from(frame[3]) << 4 | u16::from(frame[4]) >> 4
+}
+
+// Foreign frames (`docs/conformance.md` §1): where the parser would skip bytes, a whole
+// NMEA-0183 sentence or RTCM3 frame is reported instead; a candidate that fails stays skipped
+// bytes, one byte at a time. Never on the packet path.
+enum Foreign {
+    // A whole valid frame of this many bytes.
+    Frame(usize),
+    // Not a frame: its first byte is skipped.
+    Not,
+    // More bytes decide.
+    Wait,
+}
+
+fn foreign_start(b: u8) -> bool {
+    (FOREIGN_NMEA && (b == b'$' || b == b'!')) || (FOREIGN_RTCM3 && b == 0xD3)
+}
+
+/// CRC-24Q of RTCM3: polynomial 0x1864CFB, initial value 0, not reflected.
+fn crc24q(data: &[u8]) -> u32 {
+    let mut crc = 0u32;
+    for &b in data {
+        crc ^= u32::from(b) << 16;
+        for _ in 0..8 {
+            crc <<= 1;
+            if crc & 0x100_0000 != 0 {
+                crc ^= 0x186_4CFB;
+            }
+        }
+    }
+    crc
+}
+
+fn hex_digit(c: u8) -> Option<u32> {
+    char::from(c).to_digit(16)
+}
+
+/// The foreign frame at `p[0]` (a start byte), with the bytes `p` holds.
+fn foreign_frame(p: &[u8]) -> Foreign {
+    let n = p.len();
+    if p[0] == 0xD3 {
+        if n < 3 {
+            return Foreign::Wait;
+        }
+        if p[1] & 0xFC != 0 {
+            return Foreign::Not;
+        }
+        let length = usize::from(p[1] & 3) << 8 | usize::from(p[2]);
+        let total = 3 + length + 3;
+        if length < 2 {
+            return Foreign::Not; // no message number
+        }
+        if n < total {
+            return Foreign::Wait;
+        }
+        let crc =
+            u32::from(p[total - 3]) << 16 | u32::from(p[total - 2]) << 8 | u32::from(p[total - 1]);
+        return if crc24q(&p[..total - 3]) == crc {
+            Foreign::Frame(total)
+        } else {
+            Foreign::Not
+        };
+    }
+    let lim = NMEA_MAX.saturating_sub(4).max(1); // the '*' stands before lim
+    let mut j = 1;
+    let mut x = 0u32;
+    while j < n && j < lim && (0x20..=0x7E).contains(&p[j]) && !matches!(p[j], b'$' | b'!' | b'*') {
+        x ^= u32::from(p[j]);
+        j += 1;
+    }
+    if j == lim {
+        return Foreign::Not; // overlong
+    }
+    if j == n {
+        return Foreign::Wait;
+    }
+    if p[j] != b'*' {
+        return Foreign::Not;
+    }
+    if n < j + 5 {
+        return Foreign::Wait;
+    }
+    match (hex_digit(p[j + 1]), hex_digit(p[j + 2])) {
+        (Some(hi), Some(lo)) if p[j + 3] == b'\r' && p[j + 4] == b'\n' && (hi << 4 | lo) == x => {
+            Foreign::Frame(j + 5)
+        }
+        _ => Foreign::Not,
+    }
+}
+
+fn foreign_event(offset: u64, bytes: &[u8]) -> Event<'_> {
+    if bytes[0] == 0xD3 {
+        Event::Rtcm { offset, bytes }
+    } else {
+        Event::Nmea { offset, bytes }
+    }
 }
 
 /// The stream parser.
 #[derive(Clone)]
 pub struct Parser {
-    buf: [u8; MAX_PACKET],
+    buf: [u8; PARSER_CAPACITY],
     len: usize,
     // Stream offset of buf[0].
     base: u64,
@@ -117,7 +224,7 @@ impl Parser {
     /// A parser at stream offset 0.
     pub const fn new() -> Self {
         Self {
-            buf: [0; MAX_PACKET],
+            buf: [0; PARSER_CAPACITY],
             len: 0,
             base: 0,
             skip_start: 0,
@@ -228,6 +335,15 @@ impl Parser {
     /// Bytes the buffered candidate needs before it can be decided (more than `self.len`
     /// whenever `process` left bytes waiting).
     fn wanted(&self) -> usize {
+        if (FOREIGN_NMEA || FOREIGN_RTCM3) && foreign_start(self.buf[0]) {
+            return if self.buf[0] != 0xD3 {
+                NMEA_MAX
+            } else if self.len < 3 {
+                3
+            } else {
+                3 + (usize::from(self.buf[1] & 3) << 8 | usize::from(self.buf[2])) + 3
+            };
+        }
         if self.len < HEADER_SIZE {
             HEADER_SIZE
         } else {
@@ -252,12 +368,23 @@ impl Parser {
                 match find_sync_from(data, pos) {
                     Some(at) => at,
                     None => {
-                        self.skip_in_place(end - pos);
-                        return end;
+                        return match self.gap_in_place(data, pos, end, on) {
+                            Ok(_) => end,
+                            Err(wait) => wait,
+                        };
                     }
                 }
             };
-            self.skip_in_place(at - pos);
+            if at > pos {
+                match self.gap_in_place(data, pos, at, on) {
+                    Ok(next) if next > at => {
+                        pos = next; // a frame ran over the sync: go on after it
+                        continue;
+                    }
+                    Ok(_) => {}
+                    Err(wait) => return wait,
+                }
+            }
             pos = at;
             let candidate = &data[pos..];
             if candidate.len() < HEADER_SIZE {
@@ -288,6 +415,44 @@ impl Parser {
                 pos += 1;
             }
         }
+    }
+
+    /// The bytes `data[pos..to]` hold no sync: skipped, but for the foreign frames among them.
+    /// Returns where scanning goes on (`to`, or past it after a frame that runs over it), or
+    /// `Err(s)` to wait at `s` (nothing buffered). Out of line: the packet loop calls `on` in
+    /// one place only, where the compiler can inline it.
+    #[inline(never)]
+    fn gap_in_place<F: FnMut(Event<'_>)>(
+        &mut self,
+        data: &[u8],
+        mut pos: usize,
+        to: usize,
+        on: &mut F,
+    ) -> Result<usize, usize> {
+        if FOREIGN_NMEA || FOREIGN_RTCM3 {
+            while let Some(k) = data[pos..to].iter().position(|&b| foreign_start(b)) {
+                let s = pos + k;
+                self.skip_in_place(k);
+                match foreign_frame(&data[s..]) {
+                    Foreign::Wait => return Err(s),
+                    Foreign::Frame(n) => {
+                        self.emit_skip(on);
+                        on(foreign_event(self.base, &data[s..s + n]));
+                        self.base += n as u64;
+                        pos = s + n;
+                        if pos >= to {
+                            return Ok(pos);
+                        }
+                    }
+                    Foreign::Not => {
+                        self.skip_in_place(1);
+                        pos = s + 1;
+                    }
+                }
+            }
+        }
+        self.skip_in_place(to - pos);
+        Ok(to)
     }
 
     /// Adds `n` bytes at the parser's offset to the skip run (nothing buffered).
@@ -330,6 +495,24 @@ impl Parser {
     /// for more input it returns, unless `at_end`: then the candidate's first byte is skipped.
     fn process<F: FnMut(Event<'_>)>(&mut self, on: &mut F, at_end: bool) {
         loop {
+            if FOREIGN_NMEA || FOREIGN_RTCM3 {
+                let gap = match self.find_sync() {
+                    Sync::Full(i) | Sync::Partial(i) => i,
+                };
+                if let Some(s) = self.buf[..gap].iter().position(|&b| foreign_start(b)) {
+                    self.skip(s);
+                    match foreign_frame(&self.buf[..self.len]) {
+                        Foreign::Wait if !at_end => return,
+                        Foreign::Frame(n) => {
+                            self.emit_skip(on);
+                            on(foreign_event(self.base, &self.buf[..n]));
+                            self.consume(n);
+                        }
+                        _ => self.skip(1),
+                    }
+                    continue;
+                }
+            }
             let start = match self.find_sync() {
                 Sync::Full(i) => i,
                 Sync::Partial(i) => {

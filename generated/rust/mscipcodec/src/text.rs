@@ -2,7 +2,7 @@
 //! JSON lines, and JSON lines back to bytes (`docs/conformance.md` §4, §5).
 
 use crate::builder::PacketBuilder;
-use crate::dispatch::{write_packet_json, write_skip_json, Device, FieldValue};
+use crate::dispatch::{write_foreign_json, write_packet_json, write_skip_json, Device, FieldValue};
 use crate::fields::Packet;
 use crate::json_read::{hex_bytes, parse, FromJson, Json, JsonError, Obj};
 use crate::parser::{Event, Parser};
@@ -32,6 +32,9 @@ fn write_event(
         Event::Skip { offset, count } => {
             let start = (offset - hist_base) as usize;
             write_skip_json(out, offset, &hist[start..start + count as usize])
+        }
+        Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+            write_foreign_json(out, offset, bytes)
         }
         Event::Packet { offset, bytes } => match Packet::new(bytes) {
             Some(packet) => {

@@ -7,7 +7,7 @@
 use std::fmt::Write;
 
 use mscipcodec::device::command_from_line;
-use mscipcodec::dispatch::{write_packet_json, write_skip_json};
+use mscipcodec::dispatch::{write_foreign_json, write_packet_json, write_skip_json};
 use mscipcodec::session::{Session, SessionEvent, StartOptions};
 use mscipcodec::Device;
 
@@ -54,6 +54,9 @@ fn line(e: SessionEvent<'_>, hist: &[u8], lines: &[(u32, u64)], device: Option<D
             &hist[offset as usize..(offset + count) as usize],
         )
         .unwrap(),
+        SessionEvent::Nmea { offset, bytes } | SessionEvent::Rtcm { offset, bytes } => {
+            write_foreign_json(&mut t, offset, bytes).unwrap()
+        }
     }
     t
 }

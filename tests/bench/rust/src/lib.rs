@@ -135,6 +135,9 @@ pub fn frame(data: &[u8]) -> Tally {
                 .wrapping_add(offset ^ u64::from(bytes[bytes.len() - 1]));
         }
         Event::Skip { count, .. } => t.skipped_bytes += count,
+        Event::Nmea { bytes, .. } | Event::Rtcm { bytes, .. } => {
+            t.skipped_bytes += bytes.len() as u64
+        }
     };
     let mut parser = Parser::new();
     parser.feed(data, &mut on);
@@ -259,6 +262,9 @@ fn decode_with(data: &[u8], cached: bool) -> Tally {
                 .wrapping_add(sum);
         }
         Event::Skip { count, .. } => t.skipped_bytes += count,
+        Event::Nmea { bytes, .. } | Event::Rtcm { bytes, .. } => {
+            t.skipped_bytes += bytes.len() as u64
+        }
     };
     let mut parser = Parser::new();
     parser.feed(data, &mut on);
@@ -298,6 +304,9 @@ pub fn decode_field_each(data: &[u8]) -> Tally {
             }
         }
         Event::Skip { count, .. } => t.skipped_bytes += count,
+        Event::Nmea { bytes, .. } | Event::Rtcm { bytes, .. } => {
+            t.skipped_bytes += bytes.len() as u64
+        }
     };
     let mut parser = Parser::new();
     parser.feed(data, &mut on);
@@ -345,6 +354,9 @@ pub fn session_ingest(data: &[u8]) -> Tally {
             decode_packet_fields(&mut t, &packet);
         }
         SessionEvent::Skip { count, .. } => t.skipped_bytes += count,
+        SessionEvent::Nmea { bytes, .. } | SessionEvent::Rtcm { bytes, .. } => {
+            t.skipped_bytes += bytes.len() as u64
+        }
         SessionEvent::Result(_) => t.errors += 1,
     };
     session.feed(data, 1, &mut on);

@@ -51,6 +51,9 @@ size_t mipc_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64_t
                                      size_t other_count, char *out, size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
 size_t mipc_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
+/** The JSON line (without newline) of a foreign frame (a MIPC_EVENT_NMEA or MIPC_EVENT_RTCM
+ * event; docs/conformance.md section 5). Returns the full length, like snprintf. */
+size_t mipc_json_foreign_line(const mipc_event_t *ev, char *out, size_t cap);
 
 /**
  * Turns one JSON line (a packet or a skip run, as printed by the decoder) back into bytes:

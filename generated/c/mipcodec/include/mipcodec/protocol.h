@@ -27,6 +27,13 @@
 #define MIPC_CHECKSUM_SUM1_FIRST 1
 /* Largest packet: header, maximum payload and checksum. */
 #define MIPC_MAX_PACKET 261
+/* Foreign frames the parser reports between packets (docs/conformance.md section 1): NMEA-0183
+ * sentences (MIPC_NMEA_MAX bytes at most, '$' to LF) and RTCM3 frames; 0 where the protocol has none. */
+#define MIPC_FOREIGN_NMEA 1
+#define MIPC_FOREIGN_RTCM3 1
+#define MIPC_NMEA_MAX 128
+/* The parser's buffer: the longest candidate it may wait for (a packet or a foreign frame). */
+#define MIPC_PARSER_CAPACITY 1029
 /* Field header: length, descriptor. */
 #define MIPC_FIELD_HEADER_SIZE 2
 #define MIPC_FIELD_LENGTH_OFFSET 0

@@ -91,13 +91,15 @@ bool mipc_result_reply_entry(const mipc_result_t *result, mipc_field_entry_t *en
 typedef enum {
     MIPC_SESSION_RESULT = 1, /* a command completed (result) */
     MIPC_SESSION_PACKET = 2, /* a packet that is not a reply (stream: its bytes and offset) */
-    MIPC_SESSION_SKIP = 3    /* a run of skipped bytes (stream: offset, length) */
+    MIPC_SESSION_SKIP = 3,   /* a run of skipped bytes (stream: offset, length) */
+    MIPC_SESSION_FOREIGN = 4 /* an NMEA sentence or RTCM3 frame between packets (stream: the parser's
+                                 MIPC_EVENT_NMEA or MIPC_EVENT_RTCM event); ignore it if unwanted */
 } mipc_session_event_kind_t;
 
 typedef struct {
     mipc_session_event_kind_t kind;
     const mipc_result_t *result; /* RESULT */
-    const mipc_event_t *stream;  /* PACKET, SKIP: the parser's event */
+    const mipc_event_t *stream;  /* PACKET, SKIP, FOREIGN: the parser's event */
 } mipc_session_event_t;
 
 /** Receives every event in stream order (may be NULL in the configuration: no events). */

@@ -52,6 +52,9 @@ size_t mscipc_json_decoded_packet_line(const uint8_t *packet, size_t len, uint64
                                        size_t cap);
 /** The JSON line (without newline) of a skip run. Returns the full length, like snprintf. */
 size_t mscipc_json_skip_line(uint64_t offset, const uint8_t *bytes, size_t n, char *out, size_t cap);
+/** The JSON line (without newline) of a foreign frame (a MSCIPC_EVENT_NMEA or MSCIPC_EVENT_RTCM
+ * event; docs/conformance.md section 5). Returns the full length, like snprintf. */
+size_t mscipc_json_foreign_line(const mscipc_event_t *ev, char *out, size_t cap);
 
 /**
  * Turns one JSON line (a packet or a skip run, as printed by the decoder) back into bytes:

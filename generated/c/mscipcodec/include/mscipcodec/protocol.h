@@ -27,6 +27,13 @@
 #define MSCIPC_CHECKSUM_SUM1_FIRST 1
 /* Largest packet: header, maximum payload and checksum. */
 #define MSCIPC_MAX_PACKET 261
+/* Foreign frames the parser reports between packets (docs/conformance.md section 1): NMEA-0183
+ * sentences (MSCIPC_NMEA_MAX bytes at most, '$' to LF) and RTCM3 frames; 0 where the protocol has none. */
+#define MSCIPC_FOREIGN_NMEA 0
+#define MSCIPC_FOREIGN_RTCM3 0
+#define MSCIPC_NMEA_MAX 0
+/* The parser's buffer: the longest candidate it may wait for (a packet or a foreign frame). */
+#define MSCIPC_PARSER_CAPACITY 261
 /* Field header: descriptor, length. */
 #define MSCIPC_FIELD_HEADER_SIZE 2
 #define MSCIPC_FIELD_LENGTH_OFFSET 1

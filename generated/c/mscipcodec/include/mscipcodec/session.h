@@ -91,13 +91,15 @@ bool mscipc_result_reply_entry(const mscipc_result_t *result, mscipc_field_entry
 typedef enum {
     MSCIPC_SESSION_RESULT = 1, /* a command completed (result) */
     MSCIPC_SESSION_PACKET = 2, /* a packet that is not a reply (stream: its bytes and offset) */
-    MSCIPC_SESSION_SKIP = 3    /* a run of skipped bytes (stream: offset, length) */
+    MSCIPC_SESSION_SKIP = 3,   /* a run of skipped bytes (stream: offset, length) */
+    MSCIPC_SESSION_FOREIGN = 4 /* an NMEA sentence or RTCM3 frame between packets (stream: the parser's
+                                 MSCIPC_EVENT_NMEA or MSCIPC_EVENT_RTCM event); ignore it if unwanted */
 } mscipc_session_event_kind_t;
 
 typedef struct {
     mscipc_session_event_kind_t kind;
     const mscipc_result_t *result; /* RESULT */
-    const mscipc_event_t *stream;  /* PACKET, SKIP: the parser's event */
+    const mscipc_event_t *stream;  /* PACKET, SKIP, FOREIGN: the parser's event */
 } mscipc_session_event_t;
 
 /** Receives every event in stream order (may be NULL in the configuration: no events). */

@@ -58,6 +58,15 @@ std::string session_event_line(const SessionEvent &e, const std::optional<Device
     case SessionEvent::Kind::skip:
         write_skip_json(w, e.offset, bytes(e.offset), static_cast<std::size_t>(e.count));
         break;
+    case SessionEvent::Kind::nmea:
+    case SessionEvent::Kind::rtcm: {
+        StreamEvent f;
+        f.kind = e.kind == SessionEvent::Kind::nmea ? StreamEvent::Kind::nmea : StreamEvent::Kind::rtcm;
+        f.offset = e.offset;
+        f.packet = e.packet;
+        write_foreign_json(w, f);
+        break;
+    }
     }
     return line;
 }

@@ -456,7 +456,8 @@ class Connection {
     }
     void deliver(const SessionEvent &e) {
         if (internal_) { // the connection's own operation: counted and dropped
-            if (e.kind == SessionEvent::Kind::packet) {
+            if (e.kind == SessionEvent::Kind::packet || e.kind == SessionEvent::Kind::nmea ||
+                e.kind == SessionEvent::Kind::rtcm) {
                 dropped_ += e.packet.size;
             } else if (e.kind == SessionEvent::Kind::skip) {
                 dropped_ += e.count;

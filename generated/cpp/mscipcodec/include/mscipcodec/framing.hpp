@@ -38,6 +38,13 @@ inline constexpr std::size_t kSum1Index = 0;
 inline constexpr std::size_t kSum2Index = 1;
 /// Largest packet: header, maximum payload, checksum.
 inline constexpr std::size_t kMaxPacket = 261;
+/// Foreign frames the parser reports between packets (docs/conformance.md section 1): NMEA-0183
+/// sentences (at most kNmeaMax bytes, '$' to LF) and RTCM3 frames.
+inline constexpr bool kForeignNmea = false;
+inline constexpr bool kForeignRtcm3 = false;
+inline constexpr std::size_t kNmeaMax = 0;
+/// The parser's buffer: the longest candidate it may wait for (a packet or a foreign frame).
+inline constexpr std::size_t kParserCapacity = 261;
 /// Largest data a single field can carry.
 inline constexpr std::size_t kMaxFieldData = 253;
 /// Byte order of multi-byte values in field data.

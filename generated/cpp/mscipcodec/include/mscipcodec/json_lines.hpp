@@ -133,6 +133,25 @@ inline void write_skip_json(JsonWriter &w, std::uint64_t offset, const std::uint
     w.end_object();
 }
 
+/// {"offset":O,"nmea":"$...*hh"} (the sentence without its CR LF) or {"offset":O,"rtcm":T,"length":L}
+/// (message number, payload length) for a foreign frame event (no newline; docs/conformance.md
+/// section 5).
+inline void write_foreign_json(JsonWriter &w, const StreamEvent &e) {
+    w.begin_object();
+    w.key("offset");
+    w.uinteger(e.offset);
+    if (e.kind == StreamEvent::Kind::rtcm) {
+        w.key("rtcm");
+        w.uinteger(e.rtcm_type());
+        w.key("length");
+        w.uinteger(e.packet.size - 6);
+    } else {
+        w.key("nmea");
+        w.string(reinterpret_cast<const char *>(e.packet.data), e.packet.size - 2);
+    }
+    w.end_object();
+}
+
 /// Canonical JSON lines of a stream fed in chunks of any size (the decode tool): keeps only the
 /// input bytes the parser has not decided on (a candidate packet, a pending skip run), so memory
 /// does not grow with the stream. on_line(const std::string&) receives each line without its
@@ -165,9 +184,11 @@ class JsonLinesDecoder {
             if (place && at != std::string::npos) {
                 line_.insert(at, ",\"sample\":" + std::to_string(place->number));
             }
-        } else {
+        } else if (e.kind == StreamEvent::Kind::skip) {
             write_skip_json(w, e.offset, hist_.data() + (e.offset - hist_base_),
                             static_cast<std::size_t>(e.count));
+        } else {
+            write_foreign_json(w, e);
         }
         on_line(static_cast<const std::string &>(line_));
     }
@@ -209,8 +230,10 @@ void decode_to_json_lines(const std::uint8_t *input, std::size_t size, std::size
             if (place && at != std::string::npos) {
                 line.insert(at, ",\"sample\":" + std::to_string(place->number));
             }
-        } else {
+        } else if (e.kind == StreamEvent::Kind::skip) {
             write_skip_json(w, e.offset, input + e.offset, static_cast<std::size_t>(e.count));
+        } else {
+            write_foreign_json(w, e);
         }
         on_line(static_cast<const std::string &>(line));
     };

@@ -155,12 +155,14 @@ struct Result {
 
 /// One event of feed/poll/close, in stream order.
 struct SessionEvent {
-    enum class Kind : std::uint8_t { result, packet, skip };
+    /// nmea, rtcm: an NMEA sentence or RTCM3 frame between packets (its bytes in `packet`; the
+    /// parser's StreamEvent kinds): a handler that does not want them ignores them.
+    enum class Kind : std::uint8_t { result, packet, skip, nmea, rtcm };
     Kind kind = Kind::packet;
     const Result *result = nullptr; ///< result events (valid during the callback)
-    std::uint64_t offset = 0;       ///< packet or first skipped byte, counted from the first byte fed
+    std::uint64_t offset = 0;       ///< packet, frame or first skipped byte, counted from the first byte fed
     std::uint64_t count = 0;        ///< skipped bytes
-    PacketView packet;              ///< packet events (valid during the callback)
+    PacketView packet;              ///< packet and frame events (valid during the callback)
 };
 
 /// Per-call options of start().
@@ -604,6 +606,13 @@ template <std::size_t N = kDefaultMaxPending> class Session {
                 ev.offset += ev.count;
                 left -= ev.count;
             }
+            return;
+        }
+        if (e.kind != StreamEvent::Kind::packet) { // a foreign frame: handed on as it is
+            ev.kind = e.kind == StreamEvent::Kind::nmea ? SessionEvent::Kind::nmea : SessionEvent::Kind::rtcm;
+            ev.offset = e.offset;
+            ev.packet = e.packet;
+            on_event(static_cast<const SessionEvent &>(ev));
             return;
         }
         if (count_ > 0 && set_pending(e.packet.set()) && match(e.packet, on_event)) {

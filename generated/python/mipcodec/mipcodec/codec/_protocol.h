@@ -17,6 +17,10 @@ static const unsigned char SYNC[SYNC_LEN] = {
 #define FIELD_DESCRIPTOR_OFFSET 1
 #define FIELD_LENGTH_ADJUST 2
 #define MAX_PAYLOAD 255
+/* Foreign frames between packets (docs/conformance.md section 1). */
+#define FOREIGN_NMEA 1
+#define FOREIGN_RTCM3 1
+#define NMEA_MAX 128
 #define CHECKSUM_SIZE 2
 #define CHECKSUM_SUM1_FIRST 1
 #define BIG_ENDIAN_WIRE 1

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib
 import os
+import re
 from operator import mul
 from typing import TYPE_CHECKING, Any, Iterator, List, Tuple, Union
 
@@ -21,12 +22,15 @@ from .._protocol import (  # noqa: F401
     FIELD_LENGTH_ADJUST,
     FIELD_LENGTH_COUNTS_HEADER,
     FIELD_LENGTH_OFFSET,
+    FOREIGN_NMEA,
+    FOREIGN_RTCM3,
     HEADER_SIZE,
     IRREGULAR_LENGTHS,
     LENGTH_OFFSET,
     MAX_FIELD_DATA,
     MAX_PACKET,
     MAX_PAYLOAD,
+    NMEA_MAX,
     PACKAGE,
     SET_OFFSET,
     SYNC,
@@ -199,7 +203,141 @@ class Skip(_EventBase):
         return f"Skip(offset={self.offset}, data={self.data.hex()})"
 
 
-Event = Union[RawPacket, Skip]
+class Nmea(_EventBase):
+    """A whole NMEA-0183 sentence with a valid checksum at `offset` (between packets; section 1)."""
+
+    __slots__ = _EVENT_SLOTS
+
+    def __init__(self, offset: int, data: bytes) -> None:
+        self.offset = offset
+        self.data = data
+
+    @property
+    def sentence(self) -> str:
+        """The sentence without its CR LF ("$GPGGA,...*hh")."""
+        return self.data[:-2].decode("ascii")
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Nmea) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
+
+    def __repr__(self) -> str:
+        return f"Nmea(offset={self.offset}, data={self.data!r})"
+
+
+class Rtcm(_EventBase):
+    """A whole RTCM3 frame with a valid CRC-24Q at `offset` (between packets; section 1)."""
+
+    __slots__ = _EVENT_SLOTS
+
+    def __init__(self, offset: int, data: bytes) -> None:
+        self.offset = offset
+        self.data = data
+
+    @property
+    def message_type(self) -> int:
+        """The message number: the first 12 bits of the payload."""
+        return (self.data[3] << 4) | (self.data[4] >> 4)
+
+    @property
+    def length(self) -> int:
+        """The payload length (the frame less its 3 header and 3 CRC bytes)."""
+        return len(self.data) - 6
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Rtcm) and (other.offset, other.data) == (self.offset, self.data)
+
+    def __reduce__(self) -> Any:
+        return (type(self), (self.offset, self.data))
+
+    def __repr__(self) -> str:
+        return f"Rtcm(offset={self.offset}, data={self.data.hex()})"
+
+
+Event = Union[RawPacket, Skip, Nmea, Rtcm]
+
+
+# ------------------------------------------------------------------- foreign frames (section 1)
+# Where the parser would skip bytes, a whole NMEA-0183 sentence or RTCM3 frame is reported as an
+# Nmea or Rtcm event instead; a candidate that fails stays skipped bytes, one byte at a time.
+_FOREIGN_START = re.compile(
+    b"[" + (b"$!" if FOREIGN_NMEA else b"") + (b"\\xd3" if FOREIGN_RTCM3 else b"") + b"]"
+    if FOREIGN_NMEA or FOREIGN_RTCM3
+    else b"(?!)"
+)
+_NMEA_BODY = bytes(b in range(0x20, 0x7F) and b not in b"$!*" for b in range(256))
+_HEX_DIGIT = b"0123456789ABCDEFabcdef"
+FOREIGN_WAIT = -1
+
+
+def crc24q(data: BytesLike) -> int:
+    """CRC-24Q of RTCM3 (polynomial 0x1864CFB, initial value 0, not reflected)."""
+    crc = 0
+    for b in data:
+        crc = _CRC24Q[((crc >> 16) ^ b) & 0xFF] ^ ((crc << 8) & 0xFFFFFF)
+    return crc
+
+
+def _crc24q_table() -> List[int]:
+    table = []
+    for i in range(256):
+        c = i << 16
+        for _ in range(8):
+            c = ((c << 1) ^ 0x1864CFB) if c & 0x800000 else c << 1
+        table.append(c & 0xFFFFFF)
+    return table
+
+
+_CRC24Q = _crc24q_table()
+
+
+def foreign_frame(buf: BytesLike, i: int, n: int) -> int:
+    """The foreign frame starting at buf[i] (a start byte) with buf[i:n] available: its length
+    when it is whole and valid, 0 when it is not one, FOREIGN_WAIT when more bytes decide."""
+    if buf[i] == 0xD3:
+        if n - i < 3:
+            return FOREIGN_WAIT
+        if buf[i + 1] & 0xFC:
+            return 0
+        length = ((buf[i + 1] & 3) << 8) | buf[i + 2]
+        total = 3 + length + 3
+        if length < 2:
+            return 0
+        if n - i < total:
+            return FOREIGN_WAIT
+        crc = (buf[i + total - 3] << 16) | (buf[i + total - 2] << 8) | buf[i + total - 1]
+        return total if crc24q(memoryview(buf)[i : i + total - 3]) == crc else 0
+    lim = i + NMEA_MAX - 4  # the '*' stands before lim: '*', two digits, CR, LF end the sentence
+    j = i + 1
+    stop = min(n, lim)
+    while j < stop and _NMEA_BODY[buf[j]]:
+        j += 1
+    if j == lim:
+        return 0  # overlong
+    if j == n:
+        return FOREIGN_WAIT
+    if buf[j] != 0x2A:
+        return 0
+    total = j + 5 - i
+    if n - i < total:
+        return FOREIGN_WAIT
+    h, lo = buf[j + 1], buf[j + 2]
+    if h not in _HEX_DIGIT or lo not in _HEX_DIGIT or buf[j + 3] != 0x0D or buf[j + 4] != 0x0A:
+        return 0
+    x = 0
+    for b in memoryview(buf)[i + 1 : j]:
+        x ^= b
+    return total if x == int(bytes((h, lo)), 16) else 0
+
+
+if _speedups is not None:
+    _speedups.setup_foreign(Nmea, Rtcm)
+
+
+def _foreign_event(offset: int, data: bytes) -> Event:
+    return Rtcm(offset, data) if data[0] == 0xD3 else Nmea(offset, data)
 
 
 def checksum_ok(buf: bytearray, i: int, body: int) -> bool:
@@ -237,6 +375,35 @@ class Parser:
             self._skip_at = self._base + a
         self._skip += self._buf[a:b]
 
+    def _gap(self, a: int, b: int, final: bool, events: List[Event]) -> int:
+        """Bytes a..b-1 hold no sync: skipped, but for the foreign frames among them (section 1).
+        Returns where scanning goes on (b, or before b after a frame or where a candidate waits)."""
+        buf = self._buf
+        while a < b:
+            m = _FOREIGN_START.search(buf, a, b)
+            if m is None:
+                break
+            s = m.start()
+            if s > a:
+                self._skipped(a, s)
+            r = foreign_frame(buf, s, len(buf))
+            if r == FOREIGN_WAIT and not final:
+                return -1 - s  # wait at s
+            if r > 0:
+                if self._skip:
+                    events.append(Skip(self._skip_at, bytes(self._skip)))
+                    self._skip = bytearray()
+                events.append(_foreign_event(self._base + s, bytes(buf[s : s + r])))
+                a = s + r
+                if a > b:
+                    return a  # the frame ran past the sync: scanning resumes after it
+                continue
+            self._skipped(s, s + 1)
+            a = s + 1
+        if a < b:
+            self._skipped(a, b)
+        return b
+
     def _scan(self, final: bool) -> List[Event]:
         if _speedups is None:
             return self._scan_pure(final)
@@ -262,12 +429,22 @@ class Parser:
                         if buf[j:] == SYNC[: n - j]:
                             keep = j
                             break
-                if keep > pos:
-                    self._skipped(pos, keep)
+                at = self._gap(pos, keep, final, events)
+                if at < 0:
+                    pos = -1 - at
+                    break
+                if at > keep:
+                    pos = at
+                    continue
                 pos = keep
                 break
-            if i > pos:
-                self._skipped(pos, i)
+            at = self._gap(pos, i, final, events) if i > pos else i
+            if at < 0:
+                pos = -1 - at
+                break
+            if at != i:
+                pos = at
+                continue
             length = buf[i + LENGTH_OFFSET] if n - i >= HEADER_SIZE else -1
             if 0 <= length <= MAX_PAYLOAD:
                 body = HEADER_SIZE + length
@@ -368,7 +545,12 @@ __all__ = [
     "build_packet",
     "RawPacket",
     "Skip",
+    "Nmea",
+    "Rtcm",
     "Event",
+    "crc24q",
+    "foreign_frame",
+    "FOREIGN_WAIT",
     "Parser",
     "parse",
     "FieldBytes",
@@ -382,12 +564,15 @@ __all__ = [
     "FIELD_LENGTH_ADJUST",
     "FIELD_LENGTH_COUNTS_HEADER",
     "FIELD_LENGTH_OFFSET",
+    "FOREIGN_NMEA",
+    "FOREIGN_RTCM3",
     "HEADER_SIZE",
     "IRREGULAR_LENGTHS",
     "LENGTH_OFFSET",
     "MAX_FIELD_DATA",
     "MAX_PACKET",
     "MAX_PAYLOAD",
+    "NMEA_MAX",
     "PACKAGE",
     "SET_OFFSET",
     "SYNC",

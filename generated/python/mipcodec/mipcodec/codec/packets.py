@@ -12,7 +12,7 @@ from array import array
 from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Optional, Tuple, Type, Union, cast
 
 from .. import registry
-from .canonical import JsonError, error_text, hex_bytes, is_int, loads, skip_line
+from .canonical import JsonError, error_text, foreign_line, hex_bytes, is_int, loads, skip_line
 from .framing import (
     CHECKSUM_SIZE,
     HEADER_SIZE,
@@ -20,9 +20,11 @@ from .framing import (
     SET_OFFSET,
     SYNC,
     FramingError,
+    Nmea,
     PacketBuilder,
     Parser,
     RawPacket,
+    Rtcm,
     Skip,
     TrailingBytes,
     checksum_bytes,
@@ -552,6 +554,8 @@ def decode_columns(data: BytesLike) -> Columns:
         if isinstance(e, Skip):
             skips.append(e)
             continue
+        if isinstance(e, (Nmea, Rtcm)):
+            continue  # other protocols' frames hold no fields
         packets += 1
         if any(isinstance(f, Trailing) for f in e.fields):
             others.append((e.offset, -1, e))
@@ -564,6 +568,8 @@ def event_line(event: Union[RawPacket, Skip], device: Optional[str] = None) -> s
     """The canonical JSON line of a parser event."""
     if isinstance(event, Skip):
         return skip_line(event.offset, event.data)
+    if isinstance(event, (Nmea, Rtcm)):
+        return foreign_line(event.offset, event.data)
     check_device(device)
     return _decode_event(event.data, event.offset, device).line()
 

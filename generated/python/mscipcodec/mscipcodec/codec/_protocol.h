@@ -17,6 +17,10 @@ static const unsigned char SYNC[SYNC_LEN] = {
 #define FIELD_DESCRIPTOR_OFFSET 0
 #define FIELD_LENGTH_ADJUST 0
 #define MAX_PAYLOAD 255
+/* Foreign frames between packets (docs/conformance.md section 1). */
+#define FOREIGN_NMEA 0
+#define FOREIGN_RTCM3 0
+#define NMEA_MAX 0
 #define CHECKSUM_SIZE 2
 #define CHECKSUM_SUM1_FIRST 1
 #define BIG_ENDIAN_WIRE 1

@@ -186,6 +186,7 @@ static PyObject *float_text(PyObject *self, PyObject *arg) {
 static PyMethodDef methods[] = {
     {"setup", setup, METH_VARARGS, "Register the package's classes and pure-Python fallbacks."},
     {"scan", scan, METH_VARARGS, "The stream parser loop (framing.Parser._scan)."},
+    {"setup_foreign", setup_foreign, METH_VARARGS, "Register the event classes of foreign frames."},
     {"decode_packet", (PyCFunction)(void (*)(void))decode_packet, METH_VARARGS | METH_KEYWORDS,
      "decode_packet(packet, offset=0, device=None): a complete packet decoded into typed fields."},
     {"decode_all", decode_all, METH_O,

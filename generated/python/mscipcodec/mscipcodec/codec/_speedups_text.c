@@ -331,6 +331,38 @@ int text_packet(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset
     return text_put(t, "]}\n", 3);
 }
 
+/* The canonical line of a frame (docs/conformance.md section 5) into t. */
+int text_foreign(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset) {
+    if (text_reserve(t, 2 * n + 64) < 0) {
+        return -1;
+    }
+    memcpy(t->p + t->len, "{\"offset\":", 10);
+    t->len += 10;
+    text_i64(t, (long long)offset);
+    if (p[0] == 0xD3) {
+        memcpy(t->p + t->len, ",\"rtcm\":", 8);
+        t->len += 8;
+        text_u64(t, (unsigned long long)(p[3] << 4 | p[4] >> 4));
+        memcpy(t->p + t->len, ",\"length\":", 10);
+        t->len += 10;
+        text_u64(t, (unsigned long long)(n - 6));
+        memcpy(t->p + t->len, "}\n", 2);
+        t->len += 2;
+        return 0;
+    }
+    memcpy(t->p + t->len, ",\"nmea\":\"", 9);
+    t->len += 9;
+    for (Py_ssize_t k = 0; k + 2 < n; k++) {
+        if (p[k] == '"' || p[k] == '\\') {
+            t->p[t->len++] = '\\';
+        }
+        t->p[t->len++] = (char)p[k];
+    }
+    memcpy(t->p + t->len, "\"}\n", 3);
+    t->len += 3;
+    return 0;
+}
+
 /* The line of the pending skip run, if any, and the run emptied. */
 int text_skip(Text *t, SkipRun *s) {
     Py_ssize_t have = PyByteArray_GET_SIZE(s->bytes);

@@ -209,3 +209,14 @@ def hex_bytes(text: Any, what: str) -> bytes:
 def skip_line(offset: int, data: Any) -> str:
     """The canonical line of a skip run."""
     return '{"offset":' + str(offset) + ',"skipped":"' + bytes(data).hex() + '"}'
+
+
+def foreign_line(offset: int, data: Any) -> str:
+    """The canonical line of an NMEA sentence (without its CR LF; only '"' and '\\' need escaping
+    in its printable ASCII) or of an RTCM3 frame (message type and payload length)."""
+    data = bytes(data)
+    if data[0] == 0xD3:
+        kind = (data[3] << 4) | (data[4] >> 4)
+        return '{"offset":' + str(offset) + ',"rtcm":' + str(kind) + ',"length":' + str(len(data) - 6) + "}"
+    text = data[:-2].decode("ascii").replace("\\", "\\\\").replace('"', '\\"')
+    return '{"offset":' + str(offset) + ',"nmea":"' + text + '"}'

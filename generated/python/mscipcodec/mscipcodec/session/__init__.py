@@ -40,9 +40,11 @@ from ..codec.framing import (
     LENGTH_OFFSET,
     MAX_PAYLOAD,
     SYNC,
+    Nmea,
     PacketBuilder,
     Parser,
     RawPacket,
+    Rtcm,
     Skip,
 )
 from ..codec.framing import (
@@ -421,7 +423,7 @@ class TimedParser(Decoder):
         events = self._pieces(events)
         if self._watching is None:
             if sets:
-                self._hits = [i for i, e in enumerate(events) if type(e) is not Skip and e.set in sets]
+                self._hits = [i for i, e in enumerate(events) if not isinstance(e, _NOT_PACKETS) and e.set in sets]
             return events, self._hits, False
         return events, self._hits, self._packets == len(events)
 
@@ -531,7 +533,11 @@ def _split_skip(offset: int, data: Any) -> List[Skip]:
 
 
 # ----------------------------------------------------------------------------- the core
-Event = Union[Result, Packet, Skip]
+Event = Union[Result, Packet, Skip, Nmea, Rtcm]
+# Events that are not packets: skip runs, and the NMEA sentences and RTCM3 frames between packets
+# (section 1), which go to the on_foreign handlers.
+_NOT_PACKETS = (Skip, Nmea, Rtcm)
+_FOREIGN = (Nmea, Rtcm)
 
 
 def check_device_name(device: Optional[str]) -> None:
@@ -577,6 +583,7 @@ class Session:
         self._packet_handlers: List[Callable[[Packet], Any]] = []
         self._field_handlers: Dict[Tuple[int, int], List[Callable[[Any, Packet], Any]]] = {}
         self._sample_handlers: List[Callable[[Sample], Any]] = []
+        self._foreign_handlers: List[Callable[[Union[Nmea, Rtcm]], Any]] = []
         self._grouper: Optional[SampleGrouper] = None
         # The time model (timebase; docs/log-to-csv.md "Time"), from its first use on fed every
         # packet that is not a reply: the live clock map (anchors so far, resets, leap seconds).
@@ -597,6 +604,11 @@ class Session:
     def on_field(self, set_id: int, descriptor: int, handler: Callable[[Any, Packet], Any]) -> None:
         """Call handler(value, packet) for every decoded field (set, descriptor) of a packet that is not a reply."""
         self._field_handlers.setdefault((set_id, descriptor), []).append(handler)
+
+    def on_foreign(self, handler: Callable[[Union[Nmea, Rtcm]], Any]) -> None:
+        """Call handler(frame) for every NMEA sentence (Nmea) and RTCM3 frame (Rtcm) between the
+        packets, in stream order with the packet handlers (section 1; none: they are only events)."""
+        self._foreign_handlers.append(handler)
 
     def on_sample(self, handler: Callable[[Sample], Any]) -> None:
         """Call handler(sample) for every complete sample of data packets (section 6 grouping)."""
@@ -741,7 +753,13 @@ class Session:
                 events += parsed
             else:
                 events = parsed
-            if self._packet_handlers or self._field_handlers or self._clock is not None or self._host is not None:
+            if (
+                self._packet_handlers
+                or self._field_handlers
+                or self._clock is not None
+                or self._host is not None
+                or self._foreign_handlers
+            ):
                 self._deliver(parsed, clean)
             return events
         at = 0
@@ -763,6 +781,7 @@ class Session:
                 or self._grouper is not None
                 or self._clock is not None
                 or self._host is not None
+                or self._foreign_handlers
             ):
                 self._deliver(run, False)
 
@@ -820,19 +839,25 @@ class Session:
             and self._grouper is None
             and self._clock is None
             and self._host is None
+            and not self._foreign_handlers
         ):
             if not clean:
                 packet_type = Packet
                 parsed = [e for e in parsed if type(e) is packet_type]
             deque(map(self._packet_handlers[0], parsed), 0)
             return
-        if self._grouper is None and not self._packet_handlers and self._clock is None and self._host is None:
+        if (
+            self._grouper is None
+            and not self._packet_handlers
+            and self._clock is None
+            and self._host is None
+            and not self._foreign_handlers
+        ):
             # Field handlers only: a look at the packets of the sets they are for.
             handlers = self._field_handlers
             sets = {k[0] for k in handlers}
-            skip_type = Skip
             for e in parsed:
-                if type(e) is skip_type or e.set not in sets:
+                if isinstance(e, _NOT_PACKETS) or e.set not in sets:
                     continue
                 for f in e.fields:
                     if isinstance(f, DecodedField):
@@ -840,7 +865,10 @@ class Session:
                             on_field(f.value, e)
             return
         for e in parsed:
-            if not isinstance(e, Skip):
+            if isinstance(e, _FOREIGN):
+                for on_foreign in self._foreign_handlers:
+                    on_foreign(e)
+            elif not isinstance(e, Skip):
                 self._data(e)
 
     def _route(self, parsed: List[Any], events: List[Event]) -> None:
@@ -850,6 +878,7 @@ class Session:
             or self._grouper is not None
             or self._clock is not None
             or self._host is not None
+            or self._foreign_handlers
         ):
             for e in parsed:
                 self._event(e, events)
@@ -858,14 +887,17 @@ class Session:
         # with a pending command need a look.
         sets = self._sets
         for e in parsed:
-            if type(e) is Skip or e.set not in sets:
+            if isinstance(e, _NOT_PACKETS) or e.set not in sets:
                 events.append(e)
             else:
                 self._event(e, events)
 
     def _event(self, e: Any, events: List[Event]) -> None:
-        if isinstance(e, Skip):
+        if isinstance(e, _NOT_PACKETS):
             events.append(e)
+            if isinstance(e, _FOREIGN):
+                for on_foreign in self._foreign_handlers:
+                    on_foreign(e)
             return
         raw: Optional[RawPacket] = None
         if isinstance(e, RawPacket):
@@ -1020,6 +1052,9 @@ class Device(_CommandSets):
 
     def on_sample(self, handler: Callable[[Sample], Any]) -> None:
         self.session.on_sample(handler)
+
+    def on_foreign(self, handler: Callable[[Union[Nmea, Rtcm]], Any]) -> None:
+        self.session.on_foreign(handler)
 
     @property
     def time(self) -> SplitClock:

@@ -15,7 +15,7 @@ use std::process::ExitCode;
 
 use std::fmt::Write as _;
 
-use mscipcodec::dispatch::{write_field_json, write_skip_json};
+use mscipcodec::dispatch::{write_field_json, write_foreign_json, write_skip_json};
 use mscipcodec::fields::{FieldItem, Packet};
 use mscipcodec::packets::{decode_packet, AnyPacket, LayoutCache};
 use mscipcodec::parser::{Event, Parser};
@@ -158,6 +158,9 @@ impl TypedLines {
             Event::Skip { offset, count } => {
                 let at = (offset - self.hist_base) as usize;
                 let _ = write_skip_json(out, offset, &self.hist[at..at + count as usize]);
+            }
+            Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+                let _ = write_foreign_json(out, offset, bytes);
             }
             Event::Packet { offset, bytes } => {
                 if !self.write_packet(out, offset, bytes) {

@@ -17,6 +17,151 @@ void codec_parser_init(codec_parser_t *parser) {
 
 static void emit_skip(codec_parser_t *parser, codec_event_fn fn, void *ctx);
 
+/* Foreign frames (docs/conformance.md section 1): where the parser would skip bytes, a whole
+ * NMEA-0183 sentence or RTCM3 frame is reported instead (CODEC_EVENT_NMEA, CODEC_EVENT_RTCM); a
+ * candidate that fails stays skipped bytes, one byte at a time. Never on the packet path. */
+#define FOREIGN (CODEC_FOREIGN_NMEA || CODEC_FOREIGN_RTCM3)
+#if FOREIGN
+#define FOREIGN_WAIT ((size_t)-1)
+
+static inline bool foreign_start(uint8_t b) {
+    return (CODEC_FOREIGN_NMEA && (b == 0x24 || b == 0x21)) || (CODEC_FOREIGN_RTCM3 && b == 0xD3);
+}
+
+/* Index in p[0..n) of the first byte that starts a foreign frame, else n. */
+static size_t next_foreign(const uint8_t *p, size_t n) {
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (foreign_start(p[i])) {
+            return i;
+        }
+    }
+    return n;
+}
+
+#if CODEC_FOREIGN_RTCM3
+/* CRC-24Q of RTCM3: polynomial 0x1864CFB, initial value 0, not reflected. */
+static uint32_t crc24q(const uint8_t *p, size_t n) {
+    uint32_t crc = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        int k;
+        crc ^= (uint32_t)p[i] << 16;
+        for (k = 0; k < 8; k++) {
+            crc <<= 1;
+            if (crc & 0x1000000u) {
+                crc ^= 0x1864CFBu;
+            }
+        }
+    }
+    return crc;
+}
+#endif
+
+#if CODEC_FOREIGN_NMEA
+static int hex_digit(uint8_t c) {
+    if (c >= '0' && c <= '9') {
+        return c - '0';
+    }
+    if (c >= 'A' && c <= 'F') {
+        return c - 'A' + 10;
+    }
+    if (c >= 'a' && c <= 'f') {
+        return c - 'a' + 10;
+    }
+    return -1;
+}
+#endif
+
+/* The foreign frame at p[0] (a start byte) with n bytes available: its length when it is whole
+ * and valid, 0 when it is not one, FOREIGN_WAIT when more bytes decide. */
+static size_t foreign_frame(const uint8_t *p, size_t n) {
+#if CODEC_FOREIGN_RTCM3
+    if (p[0] == 0xD3) {
+        size_t length;
+        size_t total;
+        if (n < 3) {
+            return FOREIGN_WAIT;
+        }
+        if ((p[1] & 0xFC) != 0) {
+            return 0;
+        }
+        length = (size_t)(p[1] & 3) << 8 | p[2];
+        if (length < 2) {
+            return 0; /* no message number */
+        }
+        total = 3 + length + 3;
+        if (n < total) {
+            return FOREIGN_WAIT;
+        }
+        return crc24q(p, total - 3) ==
+                       ((uint32_t)p[total - 3] << 16 | (uint32_t)p[total - 2] << 8 | p[total - 1])
+                   ? total
+                   : 0;
+    }
+#endif
+#if CODEC_FOREIGN_NMEA
+    {
+        const size_t lim = CODEC_NMEA_MAX - 4; /* the '*' stands before lim */
+        size_t j = 1;
+        unsigned x = 0;
+        int hi;
+        int lo;
+        while (j < n && j < lim && p[j] >= 0x20 && p[j] <= 0x7E && p[j] != '$' && p[j] != '!' &&
+               p[j] != '*') {
+            x ^= p[j];
+            j++;
+        }
+        if (j == lim) {
+            return 0; /* overlong */
+        }
+        if (j == n) {
+            return FOREIGN_WAIT;
+        }
+        if (p[j] != '*') {
+            return 0;
+        }
+        if (n < j + 5) {
+            return FOREIGN_WAIT;
+        }
+        hi = hex_digit(p[j + 1]);
+        lo = hex_digit(p[j + 2]);
+        if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' || (unsigned)(hi << 4 | lo) != x) {
+            return 0;
+        }
+        return j + 5;
+    }
+#else
+    (void)n;
+    return 0;
+#endif
+}
+
+/* Bytes the foreign candidate at p[0] (undecided with n bytes) needs at most before it is decided. */
+static size_t foreign_wanted(const uint8_t *p, size_t n) {
+    size_t total = CODEC_NMEA_MAX;
+    if (p[0] == 0xD3) {
+        total = n < 3 ? 3 : 3 + ((size_t)(p[1] & 3) << 8 | p[2]) + 3;
+    }
+    return total > n ? total - n : 1;
+}
+
+/* Reports a foreign frame (out of line: never on the packet path). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static void report_foreign(const uint8_t *p, size_t n, uint64_t offset, codec_event_fn fn, void *ctx) {
+    codec_event_t ev;
+    ev.kind = p[0] == 0xD3 ? CODEC_EVENT_RTCM : CODEC_EVENT_NMEA;
+    ev.offset = offset;
+    ev.length = n;
+    ev.packet = p;
+    if (fn) {
+        fn(ctx, &ev);
+    }
+}
+#endif
+
 /* Adds the n bytes from stream offset `at` to the pending skip run; with skip_piece set, a run
  * that reaches skip_piece bytes is reported at once. */
 static void add_skip(codec_parser_t *parser, uint64_t at, uint64_t n, codec_event_fn fn, void *ctx) {
@@ -84,7 +229,32 @@ static void process(codec_parser_t *parser, codec_event_fn fn, void *ctx, int fi
     for (;;) {
         size_t payload;
         size_t total;
-        skip(parser, find_sync(parser), fn, ctx);
+        size_t i = find_sync(parser);
+#if FOREIGN
+        const size_t s = next_foreign(parser->buf, i);
+        if (s < i) {
+            size_t r;
+            skip(parser, s, fn, ctx);
+            r = foreign_frame(parser->buf, parser->used);
+            if (r == FOREIGN_WAIT) {
+                if (!final) {
+                    return; /* an undecided frame: wait */
+                }
+                r = 0;
+            }
+            if (r == 0) {
+                skip(parser, 1, fn, ctx); /* not a frame: its first byte is skipped */
+                continue;
+            }
+            emit_skip(parser, fn, ctx);
+            report_foreign(parser->buf, r, parser->base, fn, ctx);
+            parser->used -= r;
+            memmove(parser->buf, parser->buf + r, parser->used);
+            parser->base += r;
+            continue;
+        }
+#endif
+        skip(parser, i, fn, ctx);
         if (parser->used == 0) {
             return;
         }
@@ -134,6 +304,11 @@ static size_t wanted(const codec_parser_t *parser) {
     if (parser->used == 0) {
         return 0;
     }
+#if FOREIGN
+    if (foreign_start(parser->buf[0])) {
+        return foreign_wanted(parser->buf, parser->used);
+    }
+#endif
     if (parser->used < CODEC_HEADER_SIZE) {
         return CODEC_HEADER_SIZE - parser->used;
     }
@@ -292,6 +467,32 @@ static size_t scan(const uint8_t *data, size_t len, codec_parser_t *parser, code
             if (skipped == 0) {
                 break; /* a partial sync at the end: the caller buffers it */
             }
+#if FOREIGN
+            {
+                const size_t s = next_foreign(p, skipped);
+                if (s < skipped) {
+                    size_t r;
+                    if (s > 0) {
+                        run = grow_run(run, base + pos, s, piece, fn, ctx);
+                        pos += s;
+                    }
+                    r = foreign_frame(data + pos, len - pos);
+                    if (r == FOREIGN_WAIT) {
+                        break; /* an undecided frame at the end: the caller buffers it */
+                    }
+                    if (r != 0) {
+                        if (run.count != 0) {
+                            report_run(run.offset, run.count, fn, ctx);
+                            run.count = 0;
+                        }
+                        report_foreign(data + pos, r, base + pos, fn, ctx);
+                        pos += r;
+                        continue;
+                    }
+                    skipped = 1; /* not a frame: its first byte is skipped */
+                }
+            }
+#endif
         } else if (left < CODEC_HEADER_SIZE) {
             break; /* a partial header at the end: the caller buffers it */
         } else {

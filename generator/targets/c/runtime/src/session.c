@@ -619,9 +619,9 @@ static void route(codec_session_t *s, const codec_event_t *pkt) {
 
 static void on_stream(void *ctx, const codec_event_t *event) {
     codec_session_t *s = (codec_session_t *)ctx;
-    if (event->kind == CODEC_EVENT_SKIP) {
+    if (event->kind != CODEC_EVENT_PACKET) {
         codec_session_event_t ev;
-        ev.kind = CODEC_SESSION_SKIP;
+        ev.kind = event->kind == CODEC_EVENT_SKIP ? CODEC_SESSION_SKIP : CODEC_SESSION_FOREIGN;
         ev.result = NULL;
         ev.stream = event;
         emit(s, &ev);

@@ -34,6 +34,9 @@ void on_event(void *ctx, const codec_session_event_t *ev) {
         log->lines.push_back(s);
     } else if (ev->kind == CODEC_SESSION_PACKET) {
         log->lines.push_back("packet " + std::to_string(ev->stream->offset));
+    } else if (ev->kind == CODEC_SESSION_FOREIGN) {
+        log->lines.push_back(std::string(ev->stream->kind == CODEC_EVENT_NMEA ? "nmea " : "rtcm ") +
+                             std::to_string(ev->stream->offset) + "+" + std::to_string(ev->stream->length));
     } else {
         log->lines.push_back("skip " + std::to_string(ev->stream->offset) + "+" +
                              std::to_string(ev->stream->length));
@@ -109,6 +112,37 @@ TEST(Session, AckMatchesAndDataIsRouted) {
     f.feed(ack, 6);
     EXPECT_EQ(f.log.lines, (std::vector<std::string>{"packet 0", "ack 7 code 0"}));
     EXPECT_EQ(codec_session_pending(&f.s), 0u);
+}
+
+// The example GGA sentence NMEA references quote (checksum 47, 67 bytes) and the RTCM 10403
+// example frame of message 1005 (25 bytes, CRC-24Q 36 0B 98) between a data packet and a reply:
+// framing a carries them (CODEC_FOREIGN_NMEA, CODEC_FOREIGN_RTCM3; docs/conformance.md section 1)
+// and the session hands them on as CODEC_SESSION_FOREIGN events in stream order, whatever the
+// split; framing b has none, and the same bytes are skip runs.
+TEST(Session, ForeignFramesGoToTheHandler) {
+    const std::string gga = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
+    const std::vector<uint8_t> rtcm = {0xD3, 0x00, 0x13, 0x3E, 0xD7, 0xD3, 0x02, 0x02, 0x98,
+                                       0x0E, 0xDE, 0xEF, 0x34, 0xB4, 0xBD, 0x62, 0xAC, 0x09,
+                                       0x41, 0x98, 0x6F, 0x33, 0x36, 0x0B, 0x98};
+    std::vector<uint8_t> data = packet({{0x02, {0x00, 0x01}}});
+    std::vector<uint8_t> stream(gga.begin(), gga.end());
+    stream.insert(stream.end(), data.begin(), data.end());
+    stream.insert(stream.end(), rtcm.begin(), rtcm.end());
+    std::vector<uint8_t> ack = packet({{0xF1, {0x01, 0x00}}});
+    stream.insert(stream.end(), ack.begin(), ack.end());
+    const std::string at_data = std::to_string(gga.size());
+    const std::string at_rtcm = std::to_string(gga.size() + data.size());
+    const bool foreign = CODEC_FOREIGN_NMEA && CODEC_FOREIGN_RTCM3;
+    const std::vector<std::string> want = {
+        std::string(foreign ? "nmea 0+" : "skip 0+") + std::to_string(gga.size()), "packet " + at_data,
+        std::string(foreign ? "rtcm " : "skip ") + at_rtcm + "+25", "ack 7 code 0"};
+    for (size_t cut = 0; cut <= stream.size(); ++cut) {
+        Fixture f;
+        f.start(ping(), 0, 7);
+        f.feed(std::vector<uint8_t>(stream.begin(), stream.begin() + static_cast<std::ptrdiff_t>(cut)), 1);
+        f.feed(std::vector<uint8_t>(stream.begin() + static_cast<std::ptrdiff_t>(cut), stream.end()), 1);
+        EXPECT_EQ(f.log.lines, want) << "cut " << cut;
+    }
 }
 
 TEST(Session, TwoAcksInOnePacketAndTimeout) {

@@ -52,6 +52,9 @@ struct Log {
             lines.push_back(s);
         } else if (e.kind == SessionEvent::Kind::packet) {
             lines.push_back("packet:" + std::to_string(e.offset));
+        } else if (e.kind == SessionEvent::Kind::nmea || e.kind == SessionEvent::Kind::rtcm) {
+            lines.push_back(std::string(e.kind == SessionEvent::Kind::nmea ? "nmea:" : "rtcm:") +
+                            std::to_string(e.offset) + "+" + std::to_string(e.packet.size));
         } else {
             lines.push_back("skip:" + std::to_string(e.offset) + "+" + std::to_string(e.count));
         }
@@ -77,6 +80,38 @@ TEST(Session, AckNackAndSeveralAcksInOnePacket) {
     s.feed(both.data(), both.size(), 5, log);
     EXPECT_EQ(log.lines, (std::vector<std::string>{"result:nack:2:3", "result:ack:1:0"}));
     EXPECT_EQ(s.pending(), 0u);
+}
+
+// The example GGA sentence NMEA references quote (checksum 47, 67 bytes) and the RTCM 10403
+// example frame of message 1005 (25 bytes, CRC-24Q 36 0B 98) between a data packet and a reply:
+// framing a carries them (kForeignNmea, kForeignRtcm3; docs/conformance.md section 1) and the
+// session hands them on as nmea and rtcm events in stream order, whatever the split; framing b
+// has none, and the same bytes are skip runs.
+TEST(Session, ForeignFramesGoToTheHandler) {
+    const std::string gga = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
+    const Bytes rtcm = {0xD3, 0x00, 0x13, 0x3E, 0xD7, 0xD3, 0x02, 0x02, 0x98, 0x0E, 0xDE, 0xEF, 0x34,
+                        0xB4, 0xBD, 0x62, 0xAC, 0x09, 0x41, 0x98, 0x6F, 0x33, 0x36, 0x0B, 0x98};
+    const Bytes data = packet({{0x02, {0x00, 0x01}}});
+    const Bytes ack = packet({{0xF1, {0x01, 0x00}}});
+    Bytes stream(gga.begin(), gga.end());
+    stream.insert(stream.end(), data.begin(), data.end());
+    stream.insert(stream.end(), rtcm.begin(), rtcm.end());
+    stream.insert(stream.end(), ack.begin(), ack.end());
+    const bool foreign = protopkg::kForeignNmea && protopkg::kForeignRtcm3;
+    const std::vector<std::string> want = {
+        std::string(foreign ? "nmea:0+" : "skip:0+") + std::to_string(gga.size()),
+        "packet:" + std::to_string(gga.size()),
+        std::string(foreign ? "rtcm:" : "skip:") + std::to_string(gga.size() + data.size()) + "+25",
+        "result:ack:7:0"};
+    for (std::size_t cut = 0; cut <= stream.size(); ++cut) {
+        Session<> s;
+        control::Ping ping;
+        s.start(ping, 0, tag(7));
+        Log log;
+        s.feed(stream.data(), cut, 1, log);
+        s.feed(stream.data() + cut, stream.size() - cut, 1, log);
+        EXPECT_EQ(log.lines, want) << "cut " << cut;
+    }
 }
 
 TEST(Session, ReplyFieldsExpectedMissingAndTimeout) {

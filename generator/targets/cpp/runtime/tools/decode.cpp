@@ -91,9 +91,11 @@ class TypedJsonLines {
             if (place && at != std::string::npos) {
                 line_.insert(at, ",\"sample\":" + std::to_string(place->number));
             }
-        } else {
+        } else if (e.kind == protopkg::StreamEvent::Kind::skip) {
             protopkg::write_skip_json(w, e.offset, hist_.data() + (e.offset - hist_base_),
                                       static_cast<std::size_t>(e.count));
+        } else {
+            protopkg::write_foreign_json(w, e);
         }
         on_line(static_cast<const std::string &>(line_));
     }

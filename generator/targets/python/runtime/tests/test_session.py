@@ -485,3 +485,48 @@ def test_session_tool_option_ranges_and_baud_rates():
         assert str(e.value) == f"--baud: {bad} is not a baud rate of testproto devices (9600, 115200, 230400, 921600)"
     with pytest.raises(st.UsageError, match=r"^--connect ADDRESS is required$"):
         st._options(["--timeout-ms", "5"])
+
+
+# The example GGA sentence NMEA references quote (checksum 47) and the RTCM 10403 example frame of
+# message 1005 (19 payload bytes, CRC-24Q 36 0B 98).
+GGA = b"$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n"
+RTCM_1005 = bytes.fromhex("D300133ED7D30202980EDEEF34B4BD62AC0941986F33360B98")
+
+
+def test_nmea_and_rtcm_between_packets_go_to_the_foreign_handler_whatever_the_split():
+    """Framing a carries NMEA and RTCM3 between its packets (docs/conformance.md section 1): the
+    sentence and the frame are events of their own and reach on_foreign in stream order with the
+    packet handlers, and the reply after them still answers its command. Framing b has none: the
+    same bytes are skip runs and the handler is never called."""
+    from testproto.framing import FOREIGN_NMEA, FOREIGN_RTCM3, Nmea, Rtcm
+
+    data = data_packet()
+    stream = GGA + data + RTCM_1005 + ack(0x01)
+    foreign = FOREIGN_NMEA and FOREIGN_RTCM3
+    for cut in range(len(stream) + 1):
+        s = Session()
+        p = s.start(control.Ping(), 0)
+        seen = []
+        s.on_foreign(seen.append)
+        s.on_packet(lambda pk, seen=seen: seen.append(pk.offset))
+        events = s.feed(stream[:cut], 1) + s.feed(stream[cut:], 1) + s.close(2)
+        assert p.result.status == "ack", cut
+        kinds = [type(e).__name__ for e in events]
+        if foreign:
+            assert kinds == ["Nmea", "Packet", "Rtcm", "Result"], cut
+            assert seen == [Nmea(0, GGA), len(GGA), Rtcm(len(GGA) + len(data), RTCM_1005)], cut
+            assert seen[0].sentence == GGA[:-2].decode() and seen[2].message_type == 1005 and seen[2].length == 19
+        else:
+            assert kinds == ["Skip", "Packet", "Skip", "Result"], cut
+            assert seen == [len(GGA)], cut
+
+
+def test_without_a_foreign_handler_frames_are_only_events():
+    """The default: no handler, the frames are listed among the events (a caller that does not
+    look at them loses nothing else), and a packet handler sees only packets."""
+    s = Session()
+    seen = []
+    s.on_packet(lambda pk: seen.append(pk.offset))
+    events = s.feed(RTCM_1005 + data_packet() + GGA, 0) + s.close(0)
+    assert seen == [len(RTCM_1005)]
+    assert len(events) == 3 and events[1].offset == len(RTCM_1005)

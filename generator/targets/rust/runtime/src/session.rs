@@ -529,6 +529,20 @@ pub enum SessionEvent<'a> {
         /// How many.
         count: u64,
     },
+    /// An NMEA-0183 sentence between packets (`$` or `!` to CR LF); ignore it if unwanted.
+    Nmea {
+        /// Stream offset.
+        offset: u64,
+        /// The sentence's bytes.
+        bytes: &'a [u8],
+    },
+    /// An RTCM3 frame between packets (0xD3 to its CRC-24Q); ignore it if unwanted.
+    Rtcm {
+        /// Stream offset.
+        offset: u64,
+        /// The frame's bytes ([`crate::parser::rtcm_type`] gives its message number).
+        bytes: &'a [u8],
+    },
 }
 
 /// Options of one [`Session::start`].
@@ -636,6 +650,8 @@ impl<const N: usize> Queue<N> {
                 }
                 on(SessionEvent::Skip { offset, count })
             }
+            Event::Nmea { offset, bytes } => on(SessionEvent::Nmea { offset, bytes }),
+            Event::Rtcm { offset, bytes } => on(SessionEvent::Rtcm { offset, bytes }),
             Event::Packet { offset, bytes } => {
                 let Some(packet) = Packet::new(bytes) else {
                     return;

@@ -30,6 +30,7 @@ const READING: u8 = <sensor::Reading as Layout>::DESCRIPTOR;
 enum Ev {
     Skip(u64, u64),
     Packet(u64, Vec<u8>),
+    Foreign(u64, Vec<u8>),
 }
 
 fn events_in_chunks(input: &[u8], chunk: usize) -> Vec<Ev> {
@@ -39,6 +40,9 @@ fn events_in_chunks(input: &[u8], chunk: usize) -> Vec<Ev> {
         out.push(match e {
             Event::Skip { offset, count } => Ev::Skip(offset, count),
             Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
+            Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+                Ev::Foreign(offset, bytes.to_vec())
+            }
         })
     };
     for piece in input.chunks(chunk.max(1)) {
@@ -211,6 +215,9 @@ fn events_do_not_depend_on_the_split_point() {
             out.push(match e {
                 Event::Skip { offset, count } => Ev::Skip(offset, count),
                 Event::Packet { offset, bytes } => Ev::Packet(offset, bytes.to_vec()),
+                Event::Nmea { offset, bytes } | Event::Rtcm { offset, bytes } => {
+                    Ev::Foreign(offset, bytes.to_vec())
+                }
             })
         };
         parser.feed(&input[..k], &mut push);
@@ -319,7 +326,7 @@ fn packets_behind_garbage_full_of_sync_prefixes_are_found() {
         .iter()
         .filter_map(|e| match e {
             Ev::Packet(offset, _) => Some(*offset),
-            Ev::Skip(..) => None,
+            Ev::Skip(..) | Ev::Foreign(..) => None,
         })
         .collect();
     assert_eq!(found, offsets);

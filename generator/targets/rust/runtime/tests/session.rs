@@ -8,7 +8,9 @@
 
 use protocodec::builder::PacketBuilder;
 use protocodec::commands::ACK_DESCRIPTOR as ACK;
-use protocodec::framing::{HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET, SYNC};
+use protocodec::framing::{
+    FOREIGN_NMEA, FOREIGN_RTCM3, HEADER_SIZE, LENGTH_OFFSET, SET_OFFSET, SYNC,
+};
 use protocodec::session::{Session, SessionEvent, StartOptions, Status, SKIP_PIECE};
 use protocodec::wire::{Layout, Wire};
 use protocodec::{control, sensor, Device, FieldValue};
@@ -51,6 +53,8 @@ fn text(e: SessionEvent<'_>) -> String {
         }
         SessionEvent::Packet { offset, packet } => format!("packet {offset} set {}", packet.set()),
         SessionEvent::Skip { offset, count } => format!("skip {offset} {count}"),
+        SessionEvent::Nmea { offset, bytes } => format!("nmea {offset} {}", bytes.len()),
+        SessionEvent::Rtcm { offset, bytes } => format!("rtcm {offset} {}", bytes.len()),
     }
 }
 
@@ -83,6 +87,48 @@ fn ack_answers_the_command_and_data_is_routed_meanwhile() {
     assert_eq!(s.pending(), 0);
     // Every split gives the same events.
     for cut in 1..stream.len() {
+        let mut s: Session = Session::new(None);
+        start(&mut s, 0);
+        let mut got = feed(&mut s, &stream[..cut], 5);
+        got.extend(feed(&mut s, &stream[cut..], 5));
+        assert_eq!(got, want, "split at {cut}");
+    }
+}
+
+/// The example GGA sentence NMEA references quote (checksum 47, 67 bytes) and the RTCM 10403
+/// example frame of message 1005 (25 bytes, CRC-24Q 36 0B 98) between a data packet and a reply:
+/// framing a carries them (`FOREIGN_NMEA`, `FOREIGN_RTCM3`; docs/conformance.md §1) and the
+/// session hands them on as `SessionEvent::Nmea` and `SessionEvent::Rtcm` in stream order,
+/// whatever the split; framing b has none, and the same bytes are skip runs.
+#[test]
+fn foreign_frames_go_to_the_handler_whatever_the_split() {
+    let gga: &[u8] = b"$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
+    let rtcm: [u8; 25] = [
+        0xD3, 0x00, 0x13, 0x3E, 0xD7, 0xD3, 0x02, 0x02, 0x98, 0x0E, 0xDE, 0xEF, 0x34, 0xB4, 0xBD,
+        0x62, 0xAC, 0x09, 0x41, 0x98, 0x6F, 0x33, 0x36, 0x0B, 0x98,
+    ];
+    let d = data(7);
+    let mut stream = gga.to_vec();
+    stream.extend(&d);
+    stream.extend(rtcm);
+    stream.extend(ack(0));
+    let (g, r) = (gga.len(), gga.len() + d.len());
+    let want = if FOREIGN_NMEA && FOREIGN_RTCM3 {
+        vec![
+            format!("nmea 0 {g}"),
+            format!("packet {g} set 128"),
+            format!("rtcm {r} 25"),
+        ]
+    } else {
+        vec![
+            format!("skip 0 {g}"),
+            format!("packet {g} set 128"),
+            format!("skip {r} 25"),
+        ]
+    };
+    let mut want = want;
+    want.push(r#"{"line":1,"result":"ack","code":0,"reply":[]}"#.to_string());
+    for cut in 0..=stream.len() {
         let mut s: Session = Session::new(None);
         start(&mut s, 0);
         let mut got = feed(&mut s, &stream[..cut], 5);

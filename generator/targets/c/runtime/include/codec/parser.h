@@ -16,30 +16,37 @@ extern "C" {
 
 typedef enum {
     CODEC_EVENT_PACKET = 1, /* a packet with a valid checksum */
-    CODEC_EVENT_SKIP = 2    /* a maximal run of skipped bytes */
+    CODEC_EVENT_SKIP = 2,   /* a maximal run of skipped bytes */
+    CODEC_EVENT_NMEA = 3,   /* an NMEA-0183 sentence between packets ('$' to LF; CODEC_FOREIGN_NMEA) */
+    CODEC_EVENT_RTCM = 4    /* an RTCM3 frame between packets (0xD3 to its CRC; CODEC_FOREIGN_RTCM3) */
 } codec_event_kind_t;
 
 typedef struct {
     codec_event_kind_t kind;
-    uint64_t offset;       /* stream offset of the packet or of the first skipped byte */
-    uint64_t length;       /* packet size, or number of skipped bytes */
-    const uint8_t *packet; /* the packet bytes (valid during the callback); NULL for skips */
+    uint64_t offset;       /* stream offset of the packet, frame or first skipped byte */
+    uint64_t length;       /* packet or frame size, or number of skipped bytes */
+    const uint8_t *packet; /* the packet or frame bytes (valid during the callback); NULL for skips */
 } codec_event_t;
+
+/** The message number of an RTCM3 frame (the first 12 bits of its payload). */
+static inline unsigned codec_rtcm_type(const uint8_t *frame) {
+    return (unsigned)frame[3] << 4 | (unsigned)frame[4] >> 4;
+}
 
 typedef void (*codec_event_fn)(void *ctx, const codec_event_t *event);
 
 /**
- * Fixed-size state: at most one maximum packet is buffered. Events do not depend on how the
- * input is split into chunks; a skip run is reported just before the next packet or at flush,
- * and, when skip_piece is not 0, as soon as its pending length reaches skip_piece: then a run of
+ * Fixed-size state: at most one maximum packet (or one longest foreign frame) is buffered. Events do not
+ * depend on how the input is split into chunks; a skip run is reported just before the next packet or at
+ * flush, and, when skip_piece is not 0, as soon as its pending length reaches skip_piece: then a run of
  * exactly skip_piece bytes is reported and the bytes skipped after it start a new run (sessions
  * set it to CODEC_SESSION_SKIP_PIECE, docs/conformance.md section 8; decoding leaves it 0).
  */
 typedef struct {
-    uint8_t buf[CODEC_MAX_PACKET];
-    size_t used;          /* bytes in buf */
-    uint64_t base;        /* stream offset of buf[0] */
-    uint64_t skip_offset; /* pending skip run */
+    uint8_t buf[CODEC_PARSER_CAPACITY]; /* a maximum packet, or a longer foreign frame */
+    size_t used;                        /* bytes in buf */
+    uint64_t base;                      /* stream offset of buf[0] */
+    uint64_t skip_offset;               /* pending skip run */
     uint64_t skip_count;
     uint64_t skip_piece; /* 0: skip runs whole; else reported in pieces of at most this many bytes */
 } codec_parser_t;

@@ -91,13 +91,15 @@ bool codec_result_reply_entry(const codec_result_t *result, codec_field_entry_t 
 typedef enum {
     CODEC_SESSION_RESULT = 1, /* a command completed (result) */
     CODEC_SESSION_PACKET = 2, /* a packet that is not a reply (stream: its bytes and offset) */
-    CODEC_SESSION_SKIP = 3    /* a run of skipped bytes (stream: offset, length) */
+    CODEC_SESSION_SKIP = 3,   /* a run of skipped bytes (stream: offset, length) */
+    CODEC_SESSION_FOREIGN = 4 /* an NMEA sentence or RTCM3 frame between packets (stream: the parser's
+                                 CODEC_EVENT_NMEA or CODEC_EVENT_RTCM event); ignore it if unwanted */
 } codec_session_event_kind_t;
 
 typedef struct {
     codec_session_event_kind_t kind;
     const codec_result_t *result; /* RESULT */
-    const codec_event_t *stream;  /* PACKET, SKIP: the parser's event */
+    const codec_event_t *stream;  /* PACKET, SKIP, FOREIGN: the parser's event */
 } codec_session_event_t;
 
 /** Receives every event in stream order (may be NULL in the configuration: no events). */

@@ -1,7 +1,7 @@
 // Stream parser of docs/conformance.md section 1: fed arbitrary chunks, it reports packets and
 // runs of skipped bytes exactly as if it had seen the whole stream at once. Its state is one
-// maximum packet (kMaxPacket bytes); skipped bytes are reported by offset and count only (a run
-// of any length costs two integers).
+// maximum packet or foreign frame (kParserCapacity bytes); skipped bytes are reported by offset and count
+// only (a run of any length costs two integers).
 #pragma once
 
 #include <array>
@@ -16,12 +16,125 @@
 namespace protopkg {
 
 struct StreamEvent {
-    enum class Kind : std::uint8_t { packet, skip };
+    /// nmea, rtcm: an NMEA-0183 sentence ('$' to LF) or an RTCM3 frame (0xD3 to its CRC) between
+    /// packets (kForeignNmea, kForeignRtcm3; docs/conformance.md section 1), its bytes in `packet`.
+    enum class Kind : std::uint8_t { packet, skip, nmea, rtcm };
     Kind kind = Kind::packet;
-    std::uint64_t offset = 0; ///< stream offset of the packet or of the first skipped byte
+    std::uint64_t offset = 0; ///< stream offset of the packet, frame or first skipped byte
     std::uint64_t count = 0;  ///< skipped bytes (skip events)
-    PacketView packet;        ///< packet bytes (packet events), valid during the callback only
+    PacketView packet;        ///< packet or frame bytes, valid during the callback only
+
+    /// The message number of an rtcm event's frame (the first 12 bits of its payload).
+    unsigned rtcm_type() const {
+        return static_cast<unsigned>(packet.data[3]) << 4 | static_cast<unsigned>(packet.data[4]) >> 4;
+    }
 };
+
+/// Foreign frames (docs/conformance.md section 1): where the parser would skip bytes, a whole
+/// NMEA-0183 sentence or RTCM3 frame is reported instead; a candidate that fails stays skipped
+/// bytes, one byte at a time. Never on the packet path.
+namespace foreign {
+inline constexpr std::size_t kWait = static_cast<std::size_t>(-1);
+
+inline bool starts(std::uint8_t b) {
+    return (kForeignNmea && (b == 0x24 || b == 0x21)) || (kForeignRtcm3 && b == 0xD3);
+}
+
+/// Index in p[0..n) of the first byte that starts a foreign frame, else n.
+inline std::size_t next(const std::uint8_t *p, std::size_t n) {
+    std::size_t i = 0;
+    while (i < n && !starts(p[i])) {
+        ++i;
+    }
+    return i;
+}
+
+/// CRC-24Q of RTCM3: polynomial 0x1864CFB, initial value 0, not reflected.
+inline std::uint32_t crc24q(const std::uint8_t *p, std::size_t n) {
+    std::uint32_t crc = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        crc ^= static_cast<std::uint32_t>(p[i]) << 16;
+        for (int k = 0; k < 8; ++k) {
+            crc <<= 1;
+            if ((crc & 0x1000000u) != 0) {
+                crc ^= 0x1864CFBu;
+            }
+        }
+    }
+    return crc;
+}
+
+inline int hex_digit(std::uint8_t c) {
+    if (c >= '0' && c <= '9') {
+        return c - '0';
+    }
+    if (c >= 'A' && c <= 'F') {
+        return c - 'A' + 10;
+    }
+    if (c >= 'a' && c <= 'f') {
+        return c - 'a' + 10;
+    }
+    return -1;
+}
+
+/// The foreign frame at p[0] (a start byte) with n bytes available: its length when it is whole
+/// and valid, 0 when it is not one, kWait when more bytes decide.
+inline std::size_t frame(const std::uint8_t *p, std::size_t n) {
+    if (p[0] == 0xD3) {
+        if (n < 3) {
+            return kWait;
+        }
+        if ((p[1] & 0xFC) != 0) {
+            return 0;
+        }
+        const std::size_t length = static_cast<std::size_t>(p[1] & 3) << 8 | p[2];
+        const std::size_t total = 3 + length + 3;
+        if (length < 2) {
+            return 0; // no message number
+        }
+        if (n < total) {
+            return kWait;
+        }
+        const std::uint32_t crc = static_cast<std::uint32_t>(p[total - 3]) << 16 |
+                                  static_cast<std::uint32_t>(p[total - 2]) << 8 | p[total - 1];
+        return crc24q(p, total - 3) == crc ? total : 0;
+    }
+    const std::size_t lim = kNmeaMax > 4 ? kNmeaMax - 4 : 1; // the '*' stands before lim
+    std::size_t j = 1;
+    unsigned x = 0;
+    while (j < n && j < lim && p[j] >= 0x20 && p[j] <= 0x7E && p[j] != '$' && p[j] != '!' && p[j] != '*') {
+        x ^= p[j++];
+    }
+    if (j == lim) {
+        return 0; // overlong
+    }
+    if (j == n) {
+        return kWait;
+    }
+    if (p[j] != '*') {
+        return 0;
+    }
+    if (n < j + 5) {
+        return kWait;
+    }
+    const int hi = hex_digit(p[j + 1]);
+    const int lo = hex_digit(p[j + 2]);
+    if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' ||
+        static_cast<unsigned>(hi << 4 | lo) != x) {
+        return 0;
+    }
+    return j + 5;
+}
+
+/// Bytes the undecided candidate at p[0] (n bytes) needs at most before it is decided.
+inline std::size_t wanted(const std::uint8_t *p, std::size_t n) {
+    std::size_t total = kNmeaMax;
+    if (p[0] == 0xD3) {
+        total = n < 3 ? 3 : 3 + (static_cast<std::size_t>(p[1] & 3) << 8 | p[2]) + 3;
+    }
+    return total > n ? total - n : 1;
+}
+} // namespace foreign
 
 class StreamParser {
   public:
@@ -131,6 +244,11 @@ class StreamParser {
   private:
     /// Bytes the buffered candidate (at buf_[start_]) needs before process() can decide on it.
     std::size_t wanted() const {
+        if constexpr (kForeignNmea || kForeignRtcm3) {
+            if (foreign::starts(buf_[start_])) {
+                return foreign::wanted(buf_.data() + start_, len_);
+            }
+        }
         if (len_ < kHeaderSize) {
             return kHeaderSize - len_;
         }
@@ -153,6 +271,32 @@ class StreamParser {
             std::size_t skipped = 1; // a false sync: resynchronise at the next byte
             if (p[0] != kSync[0]) {
                 skipped = find_sync_byte(p, left);
+                if constexpr (kForeignNmea || kForeignRtcm3) {
+                    const std::size_t s = foreign::next(p, skipped);
+                    if (s < skipped) {
+                        if (s > 0) {
+                            if (skip_count == 0) {
+                                skip_offset = base + pos;
+                            }
+                            skip_count += s;
+                            pos += s;
+                        }
+                        const std::size_t r = foreign::frame(data + pos, size - pos);
+                        if (r == foreign::kWait) {
+                            break; // an undecided frame at the end: buffered
+                        }
+                        if (r != 0) {
+                            if (skip_count > 0) {
+                                emit_skip_run(on_event, skip_offset, skip_count);
+                                skip_count = 0;
+                            }
+                            emit_foreign(on_event, data + pos, r, base + pos);
+                            pos += r;
+                            continue;
+                        }
+                        skipped = 1; // not a frame: its first byte is skipped
+                    }
+                }
             } else if (left >= kHeaderSize) {
                 const std::size_t length = p[kLengthOffset];
                 if (std::memcmp(p + 1, kSync.data() + 1, kSyncSize - 1) == 0 && length <= kMaxPayload) {
@@ -211,6 +355,15 @@ class StreamParser {
     }
 
     template <class Handler>
+    static void emit_foreign(Handler &on_event, const std::uint8_t *p, std::size_t n, std::uint64_t offset) {
+        StreamEvent e;
+        e.kind = p[0] == 0xD3 ? StreamEvent::Kind::rtcm : StreamEvent::Kind::nmea;
+        e.offset = offset;
+        e.packet = PacketView{p, n};
+        on_event(static_cast<const StreamEvent &>(e));
+    }
+
+    template <class Handler>
     static void emit_skip_run(Handler &on_event, std::uint64_t offset, std::uint64_t count) {
         StreamEvent e;
         e.kind = StreamEvent::Kind::skip;
@@ -237,6 +390,31 @@ class StreamParser {
                     break;
                 }
                 ++i;
+            }
+            if constexpr (kForeignNmea || kForeignRtcm3) {
+                const std::size_t gap = found ? i : final ? len_ : len_ - partial_sync_tail(p, len_);
+                const std::size_t s = foreign::next(p, gap);
+                if (s < gap) {
+                    skip(s);
+                    p = buf_.data() + start_;
+                    std::size_t r = foreign::frame(p, len_);
+                    if (r == foreign::kWait) {
+                        if (!final) {
+                            return; // an undecided frame: wait
+                        }
+                        r = 0;
+                    }
+                    if (r == 0) {
+                        skip(1); // not a frame: its first byte is skipped
+                        continue;
+                    }
+                    emit_skip(on_event);
+                    emit_foreign(on_event, p, r, base_);
+                    start_ += r;
+                    len_ -= r;
+                    base_ += r;
+                    continue;
+                }
             }
             if (!found) {
                 skip(final ? len_ : len_ - partial_sync_tail(p, len_));
@@ -315,10 +493,10 @@ class StreamParser {
         emit_skip_run(on_event, skip_offset_, count);
     }
 
-    std::array<std::uint8_t, kMaxPacket> buf_{};
-    std::size_t start_ = 0;  ///< first unconsumed byte in buf_
-    std::size_t len_ = 0;    ///< unconsumed bytes in buf_
-    std::uint64_t base_ = 0; ///< stream offset of buf_[start_]
+    std::array<std::uint8_t, kParserCapacity> buf_{}; ///< a maximum packet, or a longer foreign frame
+    std::size_t start_ = 0;                           ///< first unconsumed byte in buf_
+    std::size_t len_ = 0;                             ///< unconsumed bytes in buf_
+    std::uint64_t base_ = 0;                          ///< stream offset of buf_[start_]
     std::uint64_t skip_offset_ = 0;
     std::uint64_t skip_count_ = 0;
 };

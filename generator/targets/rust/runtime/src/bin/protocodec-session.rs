@@ -23,7 +23,7 @@ use std::process::ExitCode;
 use std::rc::Rc;
 
 use protocodec::device::{command_from_line, connect, SessionError, DEFAULT_BAUD};
-use protocodec::dispatch::{write_packet_json, write_skip_json};
+use protocodec::dispatch::{write_foreign_json, write_packet_json, write_skip_json};
 use protocodec::framing::MAX_PACKET;
 use protocodec::json_read::{parse, Json};
 use protocodec::session::{SessionEvent, StartOptions, DEFAULT_TIMEOUT_MS, SKIP_PIECE};
@@ -198,6 +198,11 @@ impl Printer {
                 let to = (from + count as usize).min(self.hist.len());
                 let r = write_skip_json(t, offset, &self.hist[from.min(to)..to]);
                 self.trim(offset + count);
+                r
+            }
+            SessionEvent::Nmea { offset, bytes } | SessionEvent::Rtcm { offset, bytes } => {
+                let r = write_foreign_json(t, offset, bytes);
+                self.trim(offset + bytes.len() as u64);
                 r
             }
         };

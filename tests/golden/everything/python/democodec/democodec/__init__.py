@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "10936918bd241e9a"
+SPEC_HASH = "def950f90c006f1a"
 
 __all__ = [
     "SPEC_HASH",

@@ -24,6 +24,10 @@ FIELD_LENGTH_COUNTS_HEADER = False
 FIELD_LENGTH_ADJUST = 0  # field length byte - data length
 MAX_PAYLOAD = 255
 MAX_PACKET = 261
+# Foreign frames the parser reports between packets (docs/conformance.md section 1).
+FOREIGN_NMEA = False  # NMEA-0183 sentences, at most NMEA_MAX bytes
+FOREIGN_RTCM3 = False
+NMEA_MAX = 0
 MAX_FIELD_DATA = 253
 CHECKSUM_SIZE = 2
 CHECKSUM_SUM1_FIRST = True  # Fletcher-16 bytes on the wire: sum1 then sum2 when True

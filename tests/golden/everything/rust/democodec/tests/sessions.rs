@@ -8,7 +8,7 @@
 use std::fmt::Write;
 
 use democodec::device::command_from_line;
-use democodec::dispatch::{write_packet_json, write_skip_json};
+use democodec::dispatch::{write_foreign_json, write_packet_json, write_skip_json};
 use democodec::session::{Session, SessionEvent, StartOptions};
 use democodec::Device;
 
@@ -55,6 +55,9 @@ fn line(e: SessionEvent<'_>, hist: &[u8], lines: &[(u32, u64)], device: Option<D
             &hist[offset as usize..(offset + count) as usize],
         )
         .unwrap(),
+        SessionEvent::Nmea { offset, bytes } | SessionEvent::Rtcm { offset, bytes } => {
+            write_foreign_json(&mut t, offset, bytes).unwrap()
+        }
     }
     t
 }

@@ -221,6 +221,8 @@ PyObject *decode_columns(PyObject *self, PyObject *arg);
 int repr_double(double v, char *out);
 int text_packet(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
 int text_skip(Text *t, SkipRun *s);
+int text_foreign(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
+PyObject *setup_foreign(PyObject *self, PyObject *args);
 PyObject *scan_text(PyObject *self, PyObject *args);
 
 #if defined(__GNUC__)

@@ -94,6 +94,166 @@ int flush_skip(SkipRun *s, PyObject *events) {
     return PyByteArray_Resize(s->bytes, 0);
 }
 
+/* ------------------------------------------------------------------ foreign frames (section 1)
+ * Where the parser would skip bytes, a whole NMEA-0183 sentence or RTCM3 frame becomes an Nmea or
+ * Rtcm event (framing.py; its line in SCAN_TEXT, nothing in SCAN_COLUMNS); a candidate that fails
+ * stays skipped bytes, one byte at a time. The same decisions as framing.foreign_frame. */
+static PyObject *nmea_type, *rtcm_type; /* framing.Nmea, framing.Rtcm (setup_foreign) */
+#define FOREIGN_WAIT (-1)
+
+static int foreign_start(unsigned char b) {
+    return (FOREIGN_NMEA && (b == 0x24 || b == 0x21)) || (FOREIGN_RTCM3 && b == 0xD3);
+}
+
+static unsigned long crc24q(const unsigned char *p, Py_ssize_t n) {
+    unsigned long crc = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        crc ^= (unsigned long)p[i] << 16;
+        for (int k = 0; k < 8; k++) {
+            crc <<= 1;
+            if (crc & 0x1000000UL) {
+                crc ^= 0x1864CFBUL;
+            }
+        }
+    }
+    return crc;
+}
+
+static int hex_value(unsigned char c) {
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                                  : -1;
+}
+
+/* The foreign frame at p[0] (a start byte) with n bytes available: its length when it is whole
+ * and valid, 0 when it is not one, FOREIGN_WAIT when more bytes decide. */
+static Py_ssize_t foreign_frame(const unsigned char *p, Py_ssize_t n) {
+    if (p[0] == 0xD3) {
+        if (n < 3) {
+            return FOREIGN_WAIT;
+        }
+        if (p[1] & 0xFC) {
+            return 0;
+        }
+        Py_ssize_t length = (Py_ssize_t)(p[1] & 3) << 8 | p[2];
+        Py_ssize_t total = 3 + length + 3;
+        if (length < 2) {
+            return 0;
+        }
+        if (n < total) {
+            return FOREIGN_WAIT;
+        }
+        unsigned long crc =
+            (unsigned long)p[total - 3] << 16 | (unsigned long)p[total - 2] << 8 | p[total - 1];
+        return crc24q(p, total - 3) == crc ? total : 0;
+    }
+    const Py_ssize_t lim = NMEA_MAX - 4; /* the '*' stands before lim */
+    Py_ssize_t j = 1;
+    unsigned x = 0;
+    while (j < n && j < lim && p[j] >= 0x20 && p[j] <= 0x7E && p[j] != '$' && p[j] != '!' && p[j] != '*') {
+        x ^= p[j++];
+    }
+    if (j == lim) {
+        return 0; /* overlong */
+    }
+    if (j == n) {
+        return FOREIGN_WAIT;
+    }
+    if (p[j] != '*') {
+        return 0;
+    }
+    if (n < j + 5) {
+        return FOREIGN_WAIT;
+    }
+    int hi = hex_value(p[j + 1]), lo = hex_value(p[j + 2]);
+    if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' || (unsigned)(hi << 4 | lo) != x) {
+        return 0;
+    }
+    return j + 5;
+}
+
+/* A frame found: the pending skip run goes first, then the frame's event (or line). */
+static int foreign_found(const unsigned char *p, Py_ssize_t n, Py_ssize_t offset, int mode, void *ctx,
+                         SkipRun *skip, PyObject *events) {
+    if (mode == SCAN_TEXT) {
+        return text_skip(ctx, skip) < 0 ? -1 : text_foreign(ctx, p, n, offset);
+    }
+    if (PyByteArray_GET_SIZE(skip->bytes) != 0 && flush_skip(skip, events) < 0) {
+        return -1;
+    }
+    if (mode == SCAN_COLUMNS) {
+        return 0; /* other protocols' frames hold no fields */
+    }
+    if (nmea_type == NULL || rtcm_type == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE "._speedups.setup_foreign() was not called");
+        return -1;
+    }
+    PyObject *ev =
+        PyObject_CallFunction(p[0] == 0xD3 ? rtcm_type : nmea_type, "ny#", offset, (const char *)p, n);
+    if (ev == NULL || PyList_Append(events, ev) < 0) {
+        Py_XDECREF(ev);
+        return -1;
+    }
+    Py_DECREF(ev);
+    return 0;
+}
+
+/* Bytes p[a..b) hold no sync: skipped, but for the foreign frames among them. Returns where
+ * scanning goes on (b, or past b after a frame that runs over it), -2 - s to wait at s, or -1
+ * with an exception set. */
+static Py_ssize_t scan_gap(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, Py_ssize_t a, Py_ssize_t b,
+                           int final, int mode, void *ctx, SkipRun *skip, PyObject *events) {
+    while (FOREIGN_NMEA || FOREIGN_RTCM3) {
+        Py_ssize_t s = a;
+        while (s < b && !foreign_start(p[s])) {
+            s++;
+        }
+        if (s == b) {
+            break;
+        }
+        if (s > a && skipped(skip, p, base, a, s) < 0) {
+            return -1;
+        }
+        Py_ssize_t r = foreign_frame(p + s, n - s);
+        if (r == FOREIGN_WAIT && !final) {
+            return -2 - s;
+        }
+        if (r > 0) {
+            if (foreign_found(p + s, r, base + s, mode, ctx, skip, events) < 0) {
+                return -1;
+            }
+            a = s + r;
+            if (a >= b) {
+                return a;
+            }
+            continue;
+        }
+        if (skipped(skip, p, base, s, s + 1) < 0) {
+            return -1;
+        }
+        a = s + 1;
+    }
+    if (a < b && skipped(skip, p, base, a, b) < 0) {
+        return -1;
+    }
+    return b;
+}
+
+/* setup_foreign(Nmea, Rtcm): the event classes of foreign frames (framing.py). */
+PyObject *setup_foreign(PyObject *self, PyObject *args) {
+    (void)self;
+    PyObject *a, *b;
+    if (!PyArg_ParseTuple(args, "O!O!", &PyType_Type, &a, &PyType_Type, &b)) {
+        return NULL;
+    }
+    Py_XDECREF(nmea_type);
+    Py_XDECREF(rtcm_type);
+    nmea_type = Py_NewRef(a);
+    rtcm_type = Py_NewRef(b);
+    Py_RETURN_NONE;
+}
+
 /* The parser loop of framing.Parser._scan over p[0:n] (stream offset `base`). A packet becomes
  * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), rows of `ctx` (SCAN_COLUMNS, a
  * Columns) or its canonical line in `ctx` (SCAN_TEXT, a Text, skip runs too); Skip events go to
@@ -120,14 +280,34 @@ Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int 
                     }
                 }
             }
-            if (keep > pos && skipped(skip, p, base, pos, keep) < 0) {
+            Py_ssize_t at =
+                keep > pos ? scan_gap(p, n, base, pos, keep, final, mode, ctx, skip, events) : keep;
+            if (at == -1) {
                 return -1;
+            }
+            if (at < -1 || at > keep) {
+                pos = at < -1 ? -2 - at : at; /* wait at a frame, or go on after one */
+                if (at < -1) {
+                    break;
+                }
+                continue;
             }
             pos = keep;
             break;
         }
-        if (i > pos && skipped(skip, p, base, pos, i) < 0) {
-            return -1;
+        if (i > pos) {
+            Py_ssize_t at = scan_gap(p, n, base, pos, i, final, mode, ctx, skip, events);
+            if (at == -1) {
+                return -1;
+            }
+            if (at < -1) {
+                pos = -2 - at; /* wait at a frame */
+                break;
+            }
+            if (at != i) {
+                pos = at; /* a frame ran over the sync: go on after it */
+                continue;
+            }
         }
         int length = n - i >= HEADER_SIZE ? p[i + LENGTH_OFFSET] : -1;
         if (length >= 0 && length <= MAX_PAYLOAD) {
