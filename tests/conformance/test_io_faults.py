@@ -9,11 +9,15 @@ and the same number of lines on stderr in all four languages, never a traceback 
 | a directory as input FILE | exit 2, one line | (no FILE) |
 | a missing input FILE | exit 2, one line | (no FILE) |
 | stdin closed (descriptor 0 not open) | exit 2, one line | exit 2, one line |
+
+Every other Python command line of the package (the log tools, the device command line, the
+simulator, the fleet generator) ends the same way on a closed stdout: killed by SIGPIPE, quiet.
 """
 
 import os
 import signal
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -124,3 +128,32 @@ def test_closed_stdin(lang, tool, files):
     assert proc.stdout == b""
     line = _check_one_line(proc.stderr, lang, f"{tool} <&-")
     assert "standard input" in line
+
+
+# Each writes to stdout at once and little (block-buffered: the failed write comes at a flush).
+PYTHON_COMMAND_LINES = {
+    "info": ["-m", "mipcodec", "info", "LOG"],
+    "help": ["-m", "mipcodec", "--help"],
+    "device": ["-m", "mipcodec", "device", "x", "settings", "schema"],
+    "device-script": ["-m", "mipcodec.device.cli", "x", "settings", "schema"],  # mipcodec-device
+    "sim": ["-m", "mipcodec.sim", "--listen", "tcp:127.0.0.1:0"],  # its address line, then it serves
+    "fleet": ["-m", "mipcodec.fleet", "--out", "DIR", "--devices", "1", "--size", "20K"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(PYTHON_COMMAND_LINES))
+def test_every_python_command_line_ends_quietly_on_a_closed_pipe(name, tmp_path):
+    """stdout a pipe whose reader has gone before the first write (`python -m mipcodec info LOG |
+    head` when head has what it wants): killed by SIGPIPE, nothing on stderr (a BrokenPipeError
+    traceback before, or `Broken pipe` and exit 2)."""
+    log = tmp_path / "ping.bin"
+    log.write_bytes(PING * 10)
+    argv = [{"LOG": str(log), "DIR": str(tmp_path / "fleet")}.get(a, a) for a in PYTHON_COMMAND_LINES[name]]
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "generated" / "python" / "mipcodec"))
+    read_end, write_end = os.pipe()
+    os.close(read_end)
+    try:
+        proc = subprocess.run([sys.executable, *argv], stdout=write_end, stderr=subprocess.PIPE, env=env, timeout=60)
+    finally:
+        os.close(write_end)
+    assert (proc.returncode, proc.stderr.decode(errors="replace")) == (-signal.SIGPIPE, "")

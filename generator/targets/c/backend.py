@@ -87,6 +87,7 @@ _RUNTIME_FILES = {
     "tools/device/requests.c": "tools/device/requests.c",
     "tools/device/plan.c": "tools/device/plan.c",
     "tools/device/stream.c": "tools/device/stream.c",
+    "tools/device/record.c": "tools/device/record.c",
     "tools/device/main.c": "tools/device/main.c",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",

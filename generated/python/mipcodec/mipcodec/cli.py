@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import errno
 import os
-import signal
 import stat
 import sys
 from typing import BinaryIO, Iterable, List, Optional, Tuple
@@ -30,6 +29,7 @@ from .codec.framing import Event, Parser, RawPacket
 from .codec.layout import EncodeError
 from .codec.packets import LineDecoder, encode_line, event_line
 from .codec.samples import SampleTracker
+from .codec.stdio import closed_stdout, flushed, silence_stdout
 
 USAGE = f"usage: python -m {PROG} decode [--device ID] [--samples] [FILE|-] | python -m {PROG} encode"
 CHUNK = 1 << 16
@@ -80,21 +80,11 @@ def _is_regular_file(stream: BinaryIO) -> bool:
 
 
 def _write_failed(e: OSError) -> IOFailure:
-    """A write to stdout failed: a closed pipe ends the process by SIGPIPE (Python ignores the
-    signal; its default action is restored and the signal raised); otherwise the one line."""
-    if e.errno == errno.EPIPE and hasattr(signal, "SIGPIPE"):
-        signal.signal(signal.SIGPIPE, signal.SIG_DFL)
-        os.kill(os.getpid(), signal.SIGPIPE)
+    """A write to stdout failed: a closed pipe ends the process by SIGPIPE (codec.stdio); otherwise
+    the one line."""
+    if e.errno == errno.EPIPE:
+        closed_stdout()
     return IOFailure(f"cannot write standard output: {_reason(e)}", write=True)
-
-
-def _silence_stdout() -> None:
-    """After a failed write, the interpreter's last flush of stdout must not fail again."""
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, AttributeError, ValueError):
-        pass
 
 
 def _decode_args(args: List[str]) -> Tuple[Optional[str], Optional[str], bool]:
@@ -262,15 +252,15 @@ def main(argv: Optional[List[str]] = None) -> int:
                 f"python -m {PROG} export|info|plot|query --help: recorded logs to tables, summaries and plots; SQL on datasets"
             )
             print(f"python -m {PROG} device ADDRESS SUBCOMMAND (--help): look at, stream from and configure a device")
-            return 0
+            return flushed(0)
         if command == "device":
             from .device.cli import main as device_main  # the device command line (docs/configure-a-device.md)
 
-            return device_main(rest)
+            return flushed(device_main(rest))
         if command in ("export", "info", "plot", "query"):
             from .logs.commands import main as tools_main  # the user commands (optional libraries, see logs)
 
-            return tools_main(args)
+            return flushed(tools_main(args))
         if command == "decode":
             if "-h" in rest or "--help" in rest:
                 print(USAGE)
@@ -284,8 +274,10 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 2
     except IOFailure as e:
         if e.write:
-            _silence_stdout()
+            silence_stdout()
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # stdout closed by its reader (`info LOG | head`): quietly, by SIGPIPE
+        return closed_stdout()
     except KeyboardInterrupt:
         return 130

@@ -40,6 +40,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _sim, registry
 from .codec.framing import PacketBuilder
+from .codec.stdio import closed_stdout
 from .sim import Simulator, parse_identity
 from .sim.world import GNSS_FIX_AFTER, NavFilter, gps_start_of_utc
 
@@ -381,9 +382,13 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     except OSError as e:
         print(f"{p.prog}: {args.out}: {e.strerror or e}", file=sys.stderr)
         return 2
-    for entry in manifest["devices"]:
-        print(f"{entry['log']}: {entry['bytes']} bytes, {entry['seconds']} s from {entry['start_utc']}")
-    print(f"{os.path.join(args.out, MANIFEST)}: {len(manifest['devices'])} devices, {manifest['bytes']} bytes")
+    try:
+        for entry in manifest["devices"]:
+            print(f"{entry['log']}: {entry['bytes']} bytes, {entry['seconds']} s from {entry['start_utc']}")
+        print(f"{os.path.join(args.out, MANIFEST)}: {len(manifest['devices'])} devices, {manifest['bytes']} bytes")
+        sys.stdout.flush()
+    except BrokenPipeError:  # stdout closed by its reader: quietly, by SIGPIPE (codec.stdio)
+        return closed_stdout()
     return 0
 
 

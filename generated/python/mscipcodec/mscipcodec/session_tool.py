@@ -14,7 +14,6 @@ finds the baud rate at connect, `--reconnect-ms N` reopens a lost port, the line
 from __future__ import annotations
 
 import json
-import os
 import sys
 from typing import Any, Dict, Iterator, List, Optional, Tuple
 
@@ -22,6 +21,7 @@ from . import _link, registry
 from .codec.canonical import foreign_line
 from .codec.framing import Nmea, Rtcm, Skip
 from .codec.packets import Packet
+from .codec.stdio import silence_stdout
 from .session import DEFAULT_TIMEOUT_MS, Device, LinkError, Result, SessionError, command_from_line
 from .session.transport import TransportError, open_transport
 
@@ -245,11 +245,7 @@ def main(argv: Optional[List[str]] = None) -> int:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     except BrokenPipeError:
-        try:
-            devnull = os.open(os.devnull, os.O_WRONLY)
-            os.dup2(devnull, sys.stdout.fileno())
-        except OSError:
-            pass
+        silence_stdout()
         return 0
     except KeyboardInterrupt:
         return 130

@@ -53,6 +53,7 @@ from typing import Any, Callable, Dict, Iterator, List, Optional, Sequence, Tupl
 from urllib.parse import unquote, urlparse
 
 from ._protocol import PACKAGE as PROG
+from .codec.stdio import closed_stdout
 from .logs import dataset, timebase
 from .logs.commands import positive  # the option type of export --split-bytes
 from .logs.writers import ToolError, need
@@ -467,12 +468,16 @@ def main(argv: Optional[List[str]] = None) -> int:
         return e.status
     except KeyboardInterrupt:
         return 130
-    for row in summary.logs:
-        error = f" ({row['error']})" if row["error"] else ""
-        print(
-            f"{row['path']}: {row['status']}{error}, {row['packets']} packets, {row['skipped_bytes']} bytes skipped, "
-            f"{row['bad_checksums']} bad checksums -> log {row['log']}"
-        )
+    try:
+        for row in summary.logs:
+            error = f" ({row['error']})" if row["error"] else ""
+            print(
+                f"{row['path']}: {row['status']}{error}, {row['packets']} packets, {row['skipped_bytes']} bytes "
+                f"skipped, {row['bad_checksums']} bad checksums -> log {row['log']}"
+            )
+        sys.stdout.flush()
+    except BrokenPipeError:  # stdout closed by its reader: quietly, by SIGPIPE (codec.stdio)
+        return closed_stdout()
     print(f"{args.out}: {len(summary.parts)} part files, {sum(summary.rows.values())} rows", file=sys.stderr)
     return 0
 

@@ -183,34 +183,249 @@ static bool layout_for(const mscipc_field_info_t *f, mscipc_device_t device) {
     return false;
 }
 
-/* Whether the command's layout has a function selector: probes the JSON reader. */
-static bool has_function(const conn_t *c, uint8_t set, const mscipc_field_info_t *f) {
+/* Reads the command line of (set, f) with the values (a JSON object) through the library's JSON
+ * reader: its status, its message in msg. */
+static mscipc_status_t probe_command(const conn_t *c, uint8_t set, const mscipc_field_info_t *f,
+                                     const char *values, char *msg, size_t cap) {
     buf_t line = {0};
     mscipc_field_value_t command;
-    char msg[MSCIPC_ERROR_MESSAGE_MAX + 200];
-    bool yes;
+    mscipc_status_t st;
     buf_fmt(&line, "{\"offset\":0,\"set\":%u,\"fields\":[{\"descriptor\":%u,\"name\":", set, f->descriptor);
     json_string(&line, f->name, strlen(f->name));
     if (f->layout_count > 1) {
         buf_fmt(&line, ",\"device\":\"%s\"", mscipc_device_id(c->device));
     }
-    buf_str(&line, ",\"values\":{\"function\":1}}]}");
+    buf_fmt(&line, ",\"values\":%s}]}", values);
     msg[0] = '\0';
-    yes = mscipc_json_command_line(buf_text(&line), line.n, &command, msg, sizeof msg) == MSCIPC_OK ||
-          strstr(msg, "unknown key \"function\"") == NULL;
+    st = mscipc_json_command_line(buf_text(&line), line.n, &command, msg, cap);
     free(line.s);
-    return yes;
+    return st;
+}
+
+/* Whether the command's layout has a function selector: probes the JSON reader. */
+static bool has_function(const conn_t *c, uint8_t set, const mscipc_field_info_t *f) {
+    char msg[MSCIPC_ERROR_MESSAGE_MAX + 200];
+    return probe_command(c, set, f, "{\"function\":1}", msg, sizeof msg) == MSCIPC_OK ||
+           strstr(msg, "unknown key \"function\"") == NULL;
+}
+
+/* The parameters a command's write leaves out (", " between, in the layout's order), for a
+ * command that is no setting: the values given are read by the JSON reader, and every parameter it
+ * says is missing is added (as 0) and read again. */
+static void missing_params(const conn_t *c, uint8_t set, const mscipc_field_info_t *f, const char *values,
+                           buf_t *out) {
+    static const char said[] = "missing parameter \"";
+    buf_t probe = {0};
+    char msg[MSCIPC_ERROR_MESSAGE_MAX + 200];
+    int round;
+    buf_str(&probe, values);
+    for (round = 0; round < 64; round++) {
+        const char *at;
+        const char *end;
+        if (probe_command(c, set, f, buf_text(&probe), msg, sizeof msg) == MSCIPC_OK ||
+            (at = strstr(msg, said)) == NULL) {
+            break;
+        }
+        at += strlen(said);
+        end = strchr(at, '"');
+        if (end == NULL) {
+            break;
+        }
+        buf_fmt(out, "%s%.*s", out->n ? ", " : "", (int)(end - at), at);
+        probe.n--; /* the closing brace */
+        buf_fmt(&probe, "%s\"%.*s\":0}", probe.n > 1 ? "," : "", (int)(end - at), at);
+    }
+    free(probe.s);
+}
+
+/* The setting of the model that (set, descriptor) reads and writes (NULL: none). */
+static const dev_setting_t *setting_of(const conn_t *c, uint8_t set, uint8_t descriptor) {
+    size_t i;
+    for (i = 0; i < c->model->setting_count; i++) {
+        if (c->model->settings[i].set == set && c->model->settings[i].descriptor == descriptor) {
+            return &c->model->settings[i];
+        }
+    }
+    return NULL;
+}
+
+/* Reads the setting s for the key parameters given, replaces its values with the given ones and
+ * writes the write's values into *values: 0, or the exit status (the message printed). */
+static int read_modify(conn_t *c, const dev_setting_t *s, const mscipc_field_info_t *f, const val_t *given,
+                       buf_t *values) {
+    buf_t absent = {0};
+    buf_t kept = {0};
+    val_t *key = val_new(V_MAP, 0);
+    val_t *entry = NULL;
+    bool nack;
+    char msg[1000];
+    run_t run;
+    int status = 0;
+    size_t i;
+    for (i = 0; i < s->keyed_count; i++) {
+        const val_t *v = val_get(given, s->keyed[i]);
+        if (v == NULL) {
+            buf_fmt(&absent, "%s%s", absent.n ? ", " : "", s->keyed[i]);
+        } else {
+            val_put(key, s->keyed[i], strlen(s->keyed[i]), 0, val_copy(v));
+        }
+    }
+    if (absent.n) {
+        note("%s write: give %s (the key of the read that fills the parameters left out)", f->name,
+             buf_text(&absent));
+        status = EXIT_TROUBLE;
+    } else if ((run = read_entry(c, s, key, &entry, &nack, msg, sizeof msg)) != R_OK) {
+        note("%s", msg);
+        status = run == R_FAILED ? EXIT_REFUSED : EXIT_TROUBLE;
+    } else {
+        for (i = 0; i < s->attr_count; i++) {
+            const char *a = s->attrs[i].name;
+            const val_t *v = val_get(given, a);
+            long at = val_index(entry, a);
+            if (v == NULL) {
+                buf_fmt(&kept, "%s%s", kept.n ? ", " : "", a);
+            } else if (at >= 0) {
+                val_free(entry->items[at]);
+                entry->items[at] = val_copy(v);
+            } else {
+                val_put(entry, a, strlen(a), 0, val_copy(v));
+            }
+        }
+        note("%s: %s as read from the device (read, modify, write)", f->name, buf_text(&kept));
+        if (!command_values(s, entry, function_value("write"), values, msg, sizeof msg)) {
+            note("%s", msg);
+            status = EXIT_TROUBLE;
+        }
+    }
+    val_free(entry);
+    val_free(key);
+    free(absent.s);
+    free(kept.s);
+    return status;
+}
+
+/* send NAME write P=V ... with parameters left out: a setting (a command the model also reads) is
+ * read first (with the key parameters given) and the given parameters replace its values (read,
+ * modify, write): *values becomes the write's, *variant the setting's device; any other command
+ * needs every parameter. 0, or the exit status (the message printed). */
+static int complete_write(conn_t *c, uint8_t set, const mscipc_field_info_t *f, const val_t *given,
+                          buf_t *values, const char **variant) {
+    const dev_setting_t *s = setting_of(c, set, f->descriptor);
+    buf_t missing = {0};
+    size_t i;
+    int status = 0;
+    if (s == NULL) {
+        missing_params(c, set, f, buf_text(values), &missing);
+    }
+    for (i = 0; s != NULL && i < s->attr_count; i++) {
+        if (val_get(given, s->attrs[i].name) == NULL) {
+            buf_fmt(&missing, "%s%s", missing.n ? ", " : "", s->attrs[i].name);
+        }
+    }
+    if (missing.n && s == NULL) {
+        note("%s write: give every parameter (%s left out; the command has no read to fill them from)",
+             f->name, buf_text(&missing));
+        status = EXIT_TROUBLE;
+    } else if (missing.n) {
+        status = read_modify(c, s, f, given, values);
+        *variant = s->device;
+    }
+    free(missing.s);
+    return status;
+}
+
+/* The function selector's names, ", " between. */
+static void function_names(buf_t *names) {
+    size_t k;
+    for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
+        buf_fmt(names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
+    }
+}
+
+/* The values of `send NAME [FUNCTION] [PARAM=VALUE ...]` as a JSON object into *values, each
+ * parameter given also into the map given, *write when the function is write: 0, or the exit
+ * status (the message printed). */
+static int send_values(conn_t *c, uint8_t set, const mscipc_field_info_t *f, const opts_t *o, buf_t *values,
+                       val_t *given, bool *write) {
+    size_t i = 1;
+    bool first = true;
+    buf_str(values, "{");
+    if (has_function(c, set, f)) {
+        int64_t fn = o->npos < 2 || strchr(o->pos[1], '=') != NULL ? -2 : function_value(o->pos[1]);
+        if (fn < 0) {
+            buf_t names = {0};
+            function_names(&names);
+            if (fn == -2) {
+                note("%s: give the function first (%s)", f->name, buf_text(&names));
+            } else {
+                note("unknown function (one of: %s)", buf_text(&names));
+            }
+            free(names.s);
+            return EXIT_TROUBLE;
+        }
+        buf_fmt(values, "\"function\":%lld", (long long)fn);
+        *write = fn == function_value("write");
+        first = false;
+        i = 2;
+    }
+    for (; i < o->npos; i++) {
+        const char *arg = o->pos[i];
+        const char *eq = strchr(arg, '=');
+        val_t *v;
+        int e;
+        if (eq == NULL || eq == arg) {
+            note("%s: expected PARAMETER=VALUE, got '%s'", f->name, arg);
+            return EXIT_TROUBLE;
+        }
+        if (!first) {
+            buf_str(values, ",");
+        }
+        first = false;
+        json_string(values, arg, (size_t)(eq - arg));
+        buf_str(values, ":");
+        v = parse_value(eq + 1);
+        val_put(given, arg, (size_t)(eq - arg), 0, val_copy(v));
+        {
+            char *pname = xstrndup(arg, (size_t)(eq - arg));
+            e = param_enum(c, set, f->descriptor, pname);
+            free(pname);
+        }
+        if (e >= 0 && v->kind == V_STR) {
+            size_t k;
+            bool found = false;
+            for (k = 0; k < DEV_ENUMS[e].count; k++) {
+                if (strcasecmp_ascii_eq(DEV_ENUMS[e].members[k].name, v->text)) {
+                    buf_fmt(values, "%lld", (long long)DEV_ENUMS[e].members[k].value);
+                    found = true;
+                }
+            }
+            if (!found) {
+                note("%s.%.*s: '%s' is not a member of %s", f->name, (int)(eq - arg), arg, v->text,
+                     DEV_ENUMS[e].name);
+                val_free(v);
+                return EXIT_TROUBLE;
+            }
+        } else {
+            val_json(values, v);
+        }
+        val_free(v);
+    }
+    buf_str(values, "}");
+    return 0;
 }
 
 int cmd_send(conn_t *c, const opts_t *o) {
     uint8_t set = 0;
     const mscipc_field_info_t *f;
     buf_t values = {0};
-    size_t i = 1;
+    size_t i;
     result_t r;
     run_t run;
     const val_t *reply;
-    bool first = true;
+    bool write = false;
+    const char *variant = NULL;
+    val_t *given;
+    int status;
     if (o->npos < 1) {
         note("send: give the command's NAME");
         return EXIT_TROUBLE;
@@ -224,81 +439,17 @@ int cmd_send(conn_t *c, const opts_t *o) {
         note("%s is not supported by %s", f->name, describe_model(c->device));
         return EXIT_TROUBLE;
     }
-    buf_str(&values, "{");
-    if (has_function(c, set, f)) {
-        int64_t fn;
-        if (o->npos < 2 || strchr(o->pos[1], '=') != NULL) {
-            buf_t names = {0};
-            size_t k;
-            for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
-                buf_fmt(&names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
-            }
-            note("%s: give the function first (%s)", f->name, buf_text(&names));
-            free(names.s);
-            free(values.s);
-            return EXIT_TROUBLE;
-        }
-        fn = function_value(o->pos[1]);
-        if (fn < 0) {
-            buf_t names = {0};
-            size_t k;
-            for (k = 0; k < DEV_FUNCTION_COUNT; k++) {
-                buf_fmt(&names, "%s%s", k ? ", " : "", DEV_FUNCTIONS[k].name);
-            }
-            note("unknown function (one of: %s)", buf_text(&names));
-            free(names.s);
-            free(values.s);
-            return EXIT_TROUBLE;
-        }
-        buf_fmt(&values, "\"function\":%lld", (long long)fn);
-        first = false;
-        i = 2;
+    given = val_new(V_MAP, 0); /* the parameters given, by name */
+    status = send_values(c, set, f, o, &values, given, &write);
+    if (status == 0 && write) {
+        status = complete_write(c, set, f, given, &values, &variant);
     }
-    for (; i < o->npos; i++) {
-        const char *arg = o->pos[i];
-        const char *eq = strchr(arg, '=');
-        val_t *v;
-        int e;
-        if (eq == NULL || eq == arg) {
-            note("%s: expected PARAMETER=VALUE, got '%s'", f->name, arg);
-            free(values.s);
-            return EXIT_TROUBLE;
-        }
-        if (!first) {
-            buf_str(&values, ",");
-        }
-        first = false;
-        json_string(&values, arg, (size_t)(eq - arg));
-        buf_str(&values, ":");
-        v = parse_value(eq + 1);
-        {
-            char *pname = xstrndup(arg, (size_t)(eq - arg));
-            e = param_enum(c, set, f->descriptor, pname);
-            free(pname);
-        }
-        if (e >= 0 && v->kind == V_STR) {
-            size_t k;
-            bool found = false;
-            for (k = 0; k < DEV_ENUMS[e].count; k++) {
-                if (strcasecmp_ascii_eq(DEV_ENUMS[e].members[k].name, v->text)) {
-                    buf_fmt(&values, "%lld", (long long)DEV_ENUMS[e].members[k].value);
-                    found = true;
-                }
-            }
-            if (!found) {
-                note("%s.%.*s: '%s' is not a member of %s", f->name, (int)(eq - arg), arg, v->text,
-                     DEV_ENUMS[e].name);
-                val_free(v);
-                free(values.s);
-                return EXIT_TROUBLE;
-            }
-        } else {
-            val_json(&values, v);
-        }
-        val_free(v);
+    val_free(given);
+    if (status != 0) {
+        free(values.s);
+        return status;
     }
-    buf_str(&values, "}");
-    run = run_values(c, set, f->descriptor, NULL, buf_text(&values), &r);
+    run = run_values(c, set, f->descriptor, variant, buf_text(&values), &r);
     free(values.s);
     if (run == R_VALUE) {
         note("%s", g_value_error);

@@ -1,6 +1,7 @@
 """The device room of mipcodec: configuring a device.
 
 `settings` (a settings file validated, normalized, diffed against a device and applied),
-`budget` (the link budget of a streaming configuration) and `cli` (the device command line,
+`budget` (the link budget of a streaming configuration), `record` (the recorder: the device's
+stream to a log file, docs/record.md) and `cli` (the device command line,
 `mipcodec-device` and `python -m mipcodec device`). Imports the codec and session rooms.
 """

@@ -5,10 +5,12 @@ device from the shell.
 
 ADDRESS: tcp:HOST:PORT, a serial port path, or `auto` (scan the serial ports, ping each at the
 model's baud rates, list what answers). Subcommands: ping, info, stream, send, settings dump|apply|
-diff|schema, save-startup, factory-reset.
+diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses).
+The options of every subcommand (--device, --baud, --timeout-ms) go before or after it.
 
 Exit status: 0 done (diff: the device matches the file); 1 the device said no or differs: a
-NACK or no reply to a command sent, a write that failed part way, `diff` found differences,
+NACK or no reply to a command sent (a silent device: no reply to the device information command),
+a write that failed part way, `diff` found differences,
 `ping` or `auto` found no device; 2 nothing was changed: a usage error, an unreadable or invalid
 settings file (every problem one `FILE:LINE: message` line), a setting the model does not support
 or a link budget exceeded (refused before any write is sent), no connection, a missing optional
@@ -29,6 +31,7 @@ from .. import _link, _sim, capabilities, registry
 from .. import _session as _meta
 from .._protocol import PACKAGE
 from ..codec.layout import Field
+from ..codec.stdio import closed_stdout, flushed, silence_stdout
 from ..session import CommandRefused, Device, Nack, SessionError, model_matches, model_of, read_identity, shown_name
 from ..session.transport import TransportError, open_transport, parse_address
 from . import budget
@@ -94,9 +97,9 @@ def connect(address: str, model: Optional[str], baud: Optional[int], timeout_ms:
     probe = Device(transport, None, timeout_ms=timeout_ms, check_device=False)
     try:
         identity = read_identity(probe)
-    except SessionError as e:
+    except (SessionError, TransportError) as e:  # a silent device: 1, as no reply to any command sent
         transport.close()
-        _fail(f"{address}: no answer to the device information command ({e})")
+        raise Refused(f"{address}: no answer to the device information command ({e})") from None
     found = model or model_of(identity)
     name = identity.get("model_name")
     if model is not None and name and not model_matches(str(name), model):
@@ -367,6 +370,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
             raise Usage(f"unknown function (one of: {', '.join(_meta.FUNCTION_NAMES.values())})")
         values["function"] = fn
     enums = st.enum_types(cls)
+    given: Dict[str, Any] = {}
     for arg in rest:
         name, eq, text = arg.partition("=")
         if not eq or name not in cls._ATTRS:
@@ -374,6 +378,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
                 f"{cls.NAME}: expected PARAMETER=VALUE with a parameter of {', '.join(a for a in cls._ATTRS if a != 'function')}, got {arg!r}"
             )
         v = _parse_value(text)
+        given[name] = v
         if name in enums:
             try:
                 v = st.enum_value(enums[name], v)
@@ -381,7 +386,7 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
                 raise Usage(f"{cls.NAME}.{name}: {e}") from None
         values[name] = v
     try:
-        command = cls.from_json(values, f"{cls.NAME}.")
+        command = _complete_write(conn, cls, values, given) or cls.from_json(values, f"{cls.NAME}.")
     except (ValueError, TypeError) as e:
         raise Usage(str(e)) from None
     result = conn.device.run(command)
@@ -396,6 +401,37 @@ def cmd_send(conn: Connection, args: argparse.Namespace) -> int:
             if isinstance(value, Field):
                 _say(f"{value.NAME} {value.to_json()}")
     return 0 if result.ok else 1
+
+
+def _complete_write(conn: Connection, cls: Any, values: Dict[str, Any], given: Dict[str, Any]) -> Optional[Field]:
+    """`send NAME write P=V ...` with parameters left out: a setting (a command the model also
+    reads) is read first (with the key parameters given) and the given parameters replace its
+    values (read, modify, write); any other command needs every parameter (Usage). None: nothing
+    left out, the values as given."""
+    if values.get("function") != _function_value("write"):
+        return None
+    setting = next(
+        (s for s in st.settings_for(conn.model) if (s.cls.SET, s.cls.DESCRIPTOR) == (cls.SET, cls.DESCRIPTOR)), None
+    )
+    if setting is not None:  # what a settings file entry holds (counts and reserved bytes follow)
+        missing = [a for a, _, _ in setting.attrs if a not in given]
+    else:
+        missing = [a for a in cls._ATTRS if a != "function" and a not in values]
+    if not missing:
+        return None
+    if setting is None:
+        raise Usage(
+            f"{cls.NAME} write: give every parameter ({', '.join(missing)} left out; "
+            "the command has no read to fill them from)"
+        )
+    absent = [a for a in setting.key_attrs if a not in given]
+    if absent:
+        raise Usage(
+            f"{cls.NAME} write: give {', '.join(absent)} (the key of the read that fills the parameters left out)"
+        )
+    entry = st.read_entry(conn.device, setting, {a: given[a] for a in setting.key_attrs})
+    _note(f"{cls.NAME}: {', '.join(missing)} as read from the device (read, modify, write)")
+    return st.command_of(setting, {**entry, **given})
 
 
 def _header(conn: Connection) -> List[str]:
@@ -652,7 +688,7 @@ def cmd_stream(conn: Connection, args: argparse.Namespace) -> int:
                 ]
                 _say(" ".join(values))
         except BrokenPipeError:  # the reader went away (`stream ... | head`): stop quietly
-            _quiet_stdout()
+            silence_stdout()
             closed = True
 
     conn.device.on_packet(on_packet)
@@ -676,18 +712,6 @@ def cmd_stream(conn: Connection, args: argparse.Namespace) -> int:
         f"{shown} packets of set 0x{set_id:02X}; observed {observed:.1f} Hz (configured {hz / decimation:g} Hz: base {hz:g} Hz / decimation {decimation})"
     )
     return 0 if count else 1
-
-
-def _quiet_stdout() -> None:
-    """After a closed pipe on stdout: further output goes nowhere (as `cli` does)."""
-    import os
-
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        os.close(devnull)
-    except (OSError, ValueError):
-        pass
 
 
 def _list_item_class(s: st.Setting) -> Any:
@@ -763,26 +787,42 @@ def _baud_rates() -> List[int]:
 
 
 # ------------------------------------------------------------------------------------ main
-def _parser() -> argparse.ArgumentParser:
+def _common(defaults: bool) -> argparse.ArgumentParser:
+    """The options of every subcommand. Given before the subcommand, the main parser reads them
+    (with the defaults); after it, a subparser does, whose defaults are suppressed so that they do
+    not overwrite what was given before it (argparse copies a subparser's defaults over)."""
+    unset: Dict[str, Any] = {} if defaults else {"default": argparse.SUPPRESS}
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument(
         "--device",
         dest="model",
         metavar="ID",
         help=f"the model ({', '.join(registry.DEVICES)}); default: the one the device reports",
+        **unset,
     )
     common.add_argument(
         "--baud",
         type=int,
         help="the serial port's baud rate (default 115200); over TCP: the rate the link budget is checked against",
+        **unset,
     )
-    common.add_argument("--timeout-ms", type=int, default=1000, help="reply timeout of each command (default 1000)")
-    common.add_argument("--ports", nargs="+", metavar="PATH", help="auto: scan only these serial ports")
+    common.add_argument(
+        "--timeout-ms",
+        type=int,
+        help="reply timeout of each command (default 1000)",
+        **(unset or {"default": 1000}),
+    )
+    common.add_argument("--ports", nargs="+", metavar="PATH", help="auto: scan only these serial ports", **unset)
+    return common
+
+
+def _parser() -> argparse.ArgumentParser:
+    common = _common(False)
     p = argparse.ArgumentParser(
         prog=PROG,
         description="Look at, stream from and configure a device (docs/configure-a-device.md). "
         "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused before sending).",
-        parents=[common],
+        parents=[_common(True)],
     )
     p.add_argument("address", help="tcp:HOST:PORT, a serial port path, or auto")
     sub = p.add_subparsers(dest="subcommand", metavar="SUBCOMMAND", required=True)
@@ -813,6 +853,15 @@ def _parser() -> argparse.ArgumentParser:
     f = gs.add_parser("diff", parents=[common])
     f.add_argument("file")
     gs.add_parser("schema", parents=[common], help="print the path of the settings files' JSON Schema")
+    r = sub.add_parser(
+        "record",
+        parents=[common],
+        help="record the device's stream to FILE, its Device Information first (docs/record.md)",
+    )
+    r.add_argument("file", metavar="FILE")
+    r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
+    r.add_argument("--split-size", type=float, default=0, metavar="BYTES", help="a new file once one holds BYTES")
+    r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
     return p
@@ -830,8 +879,15 @@ SETTINGS = {"dump": cmd_dump, "apply": cmd_apply, "diff": cmd_diff}
 
 
 def main(argv: Optional[List[str]] = None) -> int:
-    parser = _parser()
-    args = parser.parse_args(sys.argv[1:] if argv is None else argv)
+    args = _parser().parse_args(sys.argv[1:] if argv is None else argv)
+    try:
+        return flushed(_main(args))
+    except BrokenPipeError:  # stdout closed by its reader (`settings dump - | head`): quietly, by SIGPIPE
+        return closed_stdout()
+
+
+def _main(args: argparse.Namespace) -> int:
+    """The subcommand run: its exit status, every error one line on stderr."""
     conn: Optional[Connection] = None
     try:
         if args.model is not None and args.model not in registry.DEVICES:
@@ -843,6 +899,18 @@ def main(argv: Optional[List[str]] = None) -> int:
             if args.subcommand != "ping":
                 raise Usage("auto lists the devices that answer: use `auto ping`")
             return scan(args.ports, args.model, min(args.timeout_ms, 300))
+        if args.subcommand == "record":  # the device's own bytes: no session in between
+            from .record import record
+
+            return record(
+                args.address,
+                args.file,
+                args.baud or DEFAULT_BAUD,
+                args.timeout_ms,
+                args.duration,
+                args.split_size,
+                args.split_time,
+            )
         precheck_apply(args)  # with --device: refused before any byte is sent
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":
@@ -872,6 +940,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     except ValueError as e:  # a value the spec's layouts refuse
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # stdout closed by its reader: main's
+        raise
     except (TransportError, OSError) as e:
         print(f"{PROG}: {getattr(e, 'strerror', None) or e}", file=sys.stderr)
         return 2

@@ -35,6 +35,7 @@ from .. import registry
 from .._protocol import MAX_PACKET
 from .._protocol import PACKAGE as PROG
 from ..codec.packets import Packet
+from ..codec.stdio import closed_stdout, flushed
 from .export import BLOCK, Exporter, FastExporter, fast_path
 from .info import info
 from .plot import plot
@@ -298,10 +299,12 @@ def main(argv: List[str]) -> int:
         return 2
     run: Callable[[argparse.Namespace], int] = args.run
     try:
-        return run(args)
+        return flushed(run(args))
     except ToolError as e:
         print(f"{PROG} {args.command}: {e}", file=sys.stderr)
         return e.status
+    except BrokenPipeError:  # stdout closed by its reader (`info LOG | head`): quietly, by SIGPIPE
+        return closed_stdout()
     except KeyboardInterrupt:
         return 130
 

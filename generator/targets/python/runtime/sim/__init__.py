@@ -33,6 +33,7 @@ from .._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
 from ..codec.framing import PacketBuilder, Parser, RawPacket
 from ..codec.layout import Choice, Enum, Field
 from ..codec.packets import DecodedField, RawField, decode_packet
+from ..codec.stdio import closed_stdout
 from ..session import support_error
 from . import status as sim_status
 from .status import set_of as _set_of
@@ -1477,6 +1478,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     except ValueError as e:
         print(f"{parser.prog}: {e}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # stdout closed by its reader: quietly, by SIGPIPE (codec.stdio)
+        return closed_stdout()
     except OSError as e:
         print(f"{parser.prog}: {e.strerror or e}", file=sys.stderr)
         return 2

@@ -338,7 +338,7 @@ int connect_device(conn_t *c, const char *address, const char *model, unsigned l
     if (run != R_OK) {
         note("%s: no answer to the device information command (%s)", address, r.describe);
         result_free(&r);
-        return 2;
+        return EXIT_REFUSED; /* a device that does not answer: 1, as no reply to any command sent */
     }
     read_identity(c, &r);
     result_free(&r);

@@ -1,7 +1,7 @@
 /* codec-device ADDRESS SUBCOMMAND [OPTIONS]: the device command line of docs/configure-a-device.md
  * in C, for machines without Python: the same subcommands, arguments, output and exit statuses as
  * the Python package's device CLI (ping, info, send, save-startup, factory-reset, stream, settings
- * dump|diff|apply).
+ * dump|diff|apply, record).
  *
  * What the spec says comes from tools/device_facts.h (generated from the same derivation as the
  * Python package's _settings.py: generator/settings_rows.py); values travel as the library's
@@ -26,7 +26,8 @@
  * yaml.c (settings files), connect.c (the spec's tables, the connection), settings.c (one
  * setting's command values, read and normalized), budget.c (the link budget), requests.c (ping,
  * info, send, save-startup, factory-reset, settings dump), plan.c (settings diff and apply),
- * stream.c (stream, auto ping), main.c (the options). */
+ * stream.c (stream, auto ping), record.c (record: the device's stream to a log file), main.c (the
+ * options). */
 #ifndef CODEC_DEVICE_TOOL_H
 #define CODEC_DEVICE_TOOL_H
 
@@ -150,6 +151,8 @@ typedef struct {
     double rate;
     double duration;
     unsigned long count;
+    double split_size; /* record: --split-size BYTES, --split-time S */
+    double split_time;
     bool json;
     bool force;
     bool keep;
@@ -187,6 +190,7 @@ typedef struct {
     "  ping | info | send NAME [FUNCTION] [PARAM=VALUE ...] [--json] | save-startup | factory-reset\n"       \
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
+    "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                  \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
     "before sending)."
@@ -253,6 +257,11 @@ int usage(const char *fmt, const char *arg);
 /* plan.c */
 int cmd_diff(conn_t *c, const opts_t *o);
 int cmd_apply(conn_t *c, const opts_t *o);
+
+/* record.c */
+/* `record FILE`: the device's stream into a log file (docs/record.md); its own exit statuses (0
+ * stopped, 1 no answer or the device gone, 2 no connection or a file problem). */
+int cmd_record(const char *address, const opts_t *o);
 
 /* settings.c */
 const dev_format_t *format_of(const dev_setting_t *s);

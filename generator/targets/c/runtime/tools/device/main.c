@@ -77,7 +77,8 @@ static int read_option(int argc, char **argv, int *i, opts_t *o) {
         return OPTIONS_READ;
     }
     if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 && strcmp(name, "--timeout-ms") != 0 &&
-        strcmp(name, "--rate") != 0 && strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0) {
+        strcmp(name, "--rate") != 0 && strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 &&
+        strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0) {
         return usage("unknown option '%s'", a);
     }
     if (eq) {
@@ -93,7 +94,9 @@ static int read_option(int argc, char **argv, int *i, opts_t *o) {
                (strcmp(name, "--timeout-ms") == 0 && !int_option(name, value, &o->timeout_ms)) ||
                (strcmp(name, "--count") == 0 && !int_option(name, value, &o->count)) ||
                (strcmp(name, "--rate") == 0 && !number_option(name, value, &o->rate)) ||
-               (strcmp(name, "--duration") == 0 && !number_option(name, value, &o->duration))) {
+               (strcmp(name, "--duration") == 0 && !number_option(name, value, &o->duration)) ||
+               (strcmp(name, "--split-size") == 0 && !number_option(name, value, &o->split_size)) ||
+               (strcmp(name, "--split-time") == 0 && !number_option(name, value, &o->split_time))) {
         return EXIT_TROUBLE;
     }
     return OPTIONS_READ;
@@ -140,7 +143,7 @@ static int check_subcommand(const opts_t *o, const char *sub, const char *action
         }
     } else if (strcmp(sub, "ping") != 0 && strcmp(sub, "info") != 0 && strcmp(sub, "send") != 0 &&
                strcmp(sub, "stream") != 0 && strcmp(sub, "save-startup") != 0 &&
-               strcmp(sub, "factory-reset") != 0) {
+               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0) {
         return usage("unknown subcommand '%s'", sub);
     }
     if (o->model != NULL && model_by_id(o->model) == NULL) {
@@ -215,6 +218,9 @@ static int tool(int argc, char **argv, const char **pos) {
     }
     if (o.ports != NULL) {
         return usage("%s", "--ports goes with auto");
+    }
+    if (strcmp(sub, "record") == 0) { /* the device's own bytes: no session in between */
+        return cmd_record(pos[0], &o);
     }
     return run(pos[0], sub, action, &o);
 }
