@@ -65,6 +65,7 @@ RUNTIME_FILES = [
     "tools.py",
     "dataset.py",
     "timebase.py",
+    "logpipe.py",
     "spark.py",
     "budget.py",
     "settings.py",

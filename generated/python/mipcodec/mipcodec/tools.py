@@ -43,6 +43,7 @@ from . import _columns, registry
 from ._protocol import FIRST_SHARED, MAX_PACKET, SET_OFFSET, SYNC, TIMESTAMPS
 from ._protocol import PACKAGE as PROG
 from .framing import Skip, fletcher16
+from .logpipe import LogDevice, PacketClock, UtcText, plot_times, t_ns_array, time_array, time_cells
 from .packets import DecodedField, Decoder, Packet
 
 CHUNK = 1 << 16
@@ -158,7 +159,8 @@ def header(name: str, units: Optional[str]) -> str:
     return f"{name} [{units}]" if units else name
 
 
-TIME_HEADER = "time [s]"
+# Every table starts with the row's UTC time (logpipe: the dataset's time model) and its offset.
+TIME_HEADERS = ["t_ns", "time"]
 
 
 def packet_time(packet: Packet) -> Optional[float]:
@@ -314,7 +316,10 @@ class Events:
 
 def events(source: Source, device: Optional[str]) -> Iterator[Any]:
     """Decoded events (Packet, Skip, SkipPart) of the source, chunk by chunk."""
-    ev = Events(device)
+    return _stream_events(source, Events(device))
+
+
+def _stream_events(source: Source, ev: Events) -> Iterator[Any]:
     for chunk in source.chunks():
         yield from ev.feed(chunk)
     yield from ev.flush()
@@ -387,7 +392,7 @@ class Rows:
     def __init__(self, name: str, headers: List[str], keep: List[int]) -> None:
         self.name = name
         self.keep = keep
-        self.headers = [TIME_HEADER, "offset"] + [headers[i] for i in keep]
+        self.headers = TIME_HEADERS + ["offset"] + [headers[i] for i in keep]
         self.count = 0
 
 
@@ -497,6 +502,8 @@ class ParquetWriter(Writer):
     def _type(self, cells: List[Any]) -> Any:
         pa = self.pa
         sample = next((c for c in cells if c is not None), None)
+        if isinstance(sample, UtcText):
+            return pa.timestamp("us", tz="UTC")
         if isinstance(sample, _F32Cell):
             return pa.float32()
         if isinstance(sample, bool):
@@ -519,12 +526,14 @@ class ParquetWriter(Writer):
         self.pending = []
         if self.types is None:
             self.types = [self._type(list(c)) for c in cols]
-            self.types[1] = self.pa.uint64()
+            self.types[:3] = [self.pa.int64(), self.pa.timestamp("us", tz="UTC"), self.pa.int64()]  # t_ns, time, offset
         arrays = []
         for c, t in zip(cols, self.types):
             values: List[Any] = list(c)
             if t == self.pa.string():
                 values = [None if x is None else str(x) for x in values]
+            elif t == self.types[1]:  # the time: UtcText cells
+                values = [None if x is None else x.t_ns // 1000 for x in values]
             arrays.append(self.pa.array(values, type=t))
         table = self.pa.Table.from_arrays(arrays, names=self.headers)
         if self.writer is None:
@@ -567,7 +576,9 @@ class Exporter:
         enum_numbers: bool,
         join: bool,
         outputs: Optional[Outputs] = None,
+        clock: Optional[PacketClock] = None,
     ) -> None:
+        self.clock = clock  # the rows' UTC time (None: none)
         self.out = out
         self.writer = WRITERS[fmt]
         self.fields = fields
@@ -587,9 +598,9 @@ class Exporter:
         return lay
 
     def packet(self, p: Packet) -> None:
+        t = self.clock.t_ns(p) if self.clock is not None else None  # every packet, in log order
         if p.set not in _DATA_SETS:
             return
-        t = packet_time(p)
         if self.join:
             self._join(p, t)
             return
@@ -614,7 +625,7 @@ class Exporter:
                 continue
             rows, _w, lay = entry
             cells = _typed(lay, f.value)
-            self.pending[key].append([t, p.offset] + [cells[i] for i in rows.keep])
+            self.pending[key].append(time_cells(t) + [p.offset] + [cells[i] for i in rows.keep])
             rows.count += 1
             if len(self.pending[key]) >= 4096:
                 self._drain(key)
@@ -631,7 +642,7 @@ class Exporter:
             self._writer(key).write(rows)
             self.pending[key] = []
 
-    def _join(self, p: Packet, t: Optional[float]) -> None:
+    def _join(self, p: Packet, t: Optional[int]) -> None:
         table = self.joined.get(p.set)
         if table is None:
             name = registry.SET_NAMES.get(p.set, f"set_{p.set:02x}") + self.writer.suffix
@@ -687,12 +698,12 @@ class JoinTable:
     def __init__(self, name: str, path: str, spool: Any) -> None:
         self.name, self.path, self.spool = name, path, spool
         self.columns: Dict[str, int] = {}  # header -> index among the value columns
-        self.batch: List[Tuple[Optional[float], int, Dict[int, Any]]] = []
+        self.batch: List[Tuple[Optional[int], int, Dict[int, Any]]] = []
         self.rows = 0
         self.key: Any = None
-        self.row: Optional[Tuple[Optional[float], int, Dict[int, Any]]] = None
+        self.row: Optional[Tuple[Optional[int], int, Dict[int, Any]]] = None
 
-    def packet(self, key: Any, t: Optional[float], offset: int, cells: List[Tuple[str, Any]]) -> None:
+    def packet(self, key: Any, t: Optional[int], offset: int, cells: List[Tuple[str, Any]]) -> None:
         if self.row is None or key is None or key != self.key:
             self._end_row()
             self.row = (t, offset, {})
@@ -721,7 +732,7 @@ class JoinTable:
         self._end_row()
         self.spill()
         width = len(self.columns)
-        w = writer(path, [TIME_HEADER, "offset"] + list(self.columns))
+        w = writer(path, TIME_HEADERS + ["offset"] + list(self.columns))
         self.spool.seek(0)
         while True:
             try:
@@ -730,9 +741,9 @@ class JoinTable:
                 break
             out = []
             for t, offset, values in batch:
-                row: List[Any] = [t, offset] + [None] * width
+                row: List[Any] = time_cells(t) + [offset] + [None] * width
                 for i, c in values.items():
-                    row[2 + i] = c
+                    row[3 + i] = c
                 out.append(row)
             w.write(out)
         w.close()
@@ -809,9 +820,10 @@ class FastExporter:
         assert chosen is not None
         return chosen
 
-    def block(self, cols: Any, data: Any, base: int) -> None:
-        """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
-        pieces = self.pieces(cols, data, base)
+    def block(self, cols: Any, data: Any, base: int, times: Any = None) -> None:
+        """Write the tables of one decode_columns block (`data`, at stream offset `base`; `times`
+        its `timebase.BlockTimes`)."""
+        pieces = self.pieces(cols, data, base, times)
         # pyarrow formats and writes without the GIL: one table per thread, while the caller
         # decodes the next block; a block's writes start when the previous block's are done.
         self.wait()
@@ -825,29 +837,20 @@ class FastExporter:
             for key, parts in pieces.items():
                 self._write(key, parts)
 
-    def pieces(self, cols: Any, data: Any, base: int) -> Dict[Any, List[Any]]:
+    def pieces(self, cols: Any, data: Any, base: int, times: Any = None) -> Dict[Any, List[Any]]:
         """The rows of one decode_columns block (`data`, at stream offset `base`) per (set,
         layout class): a list of (packet offsets in the block, field index, columns), the columns
-        being the time in seconds, the stream offset and the kept value columns (numpy or arrow
-        arrays, or lists); rows of one piece in stream order, pieces to be merged by (offset,
-        index). Shared by the dataset export (dataset.py)."""
-        np = self.np
-        # The time of a packet as `packet_time` picks it: the first TIMES source it carries, its
-        # first occurrence in the packet. set -> [(offsets, preference, field index, seconds)]
-        sources: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
+        being the UTC `t_ns` (from `times`, the block's `timebase.BlockTimes`; None without),
+        the stream offset and the kept value columns (numpy or arrow arrays, or lists); rows of
+        one piece in stream order, pieces to be merged by (offset, index). Shared by the dataset
+        export (dataset.py), which times its rows itself."""
+        np, pa = self.np, self.pa
+
+        def t_ns(offs: Any) -> Any:
+            return None if times is None else t_ns_array(np, pa, times, offs + base)
+
         pieces: Dict[Any, List[Any]] = {}
-        for (set_id, _d), t in cols.tables.items():
-            if set_id not in _DATA_SETS or t.rows == 0:
-                continue
-            arrays = t.arrays()
-            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
-                if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
-                    offs = np.frombuffer(t.offsets, dtype=np.int64)
-                    sec = arrays[attr].astype(np.float64) / per_second
-                    idx = np.frombuffer(t.index, dtype=np.int64)
-                    sources.setdefault(set_id, []).append((offs, np.full(len(offs), pref), idx, sec))
         other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
-        other_times: Dict[int, List[Tuple[int, int, int, float]]] = {}
         for off, k, entry in cols.others:
             if k < 0 or not isinstance(entry, DecodedField):
                 continue
@@ -855,20 +858,9 @@ class FastExporter:
             if packet_set not in _DATA_SETS:
                 continue
             cls = type(entry.value)
-            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
-                if cls.SET == s and cls.DESCRIPTOR == d:
-                    other_times.setdefault(packet_set, []).append(
-                        (off, pref, k, getattr(entry.value, attr) / per_second)
-                    )
             chosen = self._layout(cls)
             if chosen is not None:
                 other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
-        for set_id, extra in other_times.items():
-            cols4 = list(zip(*extra))
-            sources.setdefault(set_id, []).append(
-                tuple(np.array(c, dtype=np.float64 if j == 3 else np.int64) for j, c in enumerate(cols4))
-            )
-        times = {set_id: _pick_times(np, parts) for set_id, parts in sources.items()}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in _DATA_SETS or t.rows == 0:
                 continue
@@ -878,7 +870,7 @@ class FastExporter:
             lay, keep = chosen
             arrays = t.arrays()
             offs = np.frombuffer(t.offsets, dtype=np.int64)
-            cols_out: List[Any] = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            cols_out: List[Any] = [t_ns(offs), offs + base]
             for i in keep:
                 _name, path, _units, kind, enum = lay.specs[i]
                 a = arrays[path[0]]
@@ -890,7 +882,7 @@ class FastExporter:
             lay, keep = self._kept(cls)
             offs = np.array([r[0] for r in rows], dtype=np.int64)
             idx = np.array([r[1] for r in rows], dtype=np.int64)
-            cells = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            cells = [t_ns(offs), offs + base]
             for i in keep:
                 cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
             pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
@@ -932,18 +924,19 @@ class FastExporter:
         np, pa = self.np, self.pa
         set_id, cls = key
         lay, keep = self._kept(cls)
-        headers = [TIME_HEADER, "offset"] + [lay.headers[i] for i in keep]
+        headers = TIME_HEADERS + ["offset"] + [lay.headers[i] for i in keep]
         offs = np.concatenate([p[0] for p in parts])
         idx = np.concatenate([p[1] for p in parts])
         order = np.lexsort((idx, offs))
         columns = []
-        for j in range(len(headers)):
+        for j in range(len(headers) - 1):
             chunk = [p[2][j] for p in parts]
             col = chunk[0] if len(chunk) == 1 else pa.concat_arrays([_as_arrow(pa, c) for c in _unify(pa, chunk)])
             col = _as_arrow(pa, col)
             if len(parts) > 1:
                 col = col.take(_arrow(np, pa, order))
             columns.append(col)
+        columns.insert(1, time_array(pa, columns[0], self.fmt == "csv"))
         table = pa.Table.from_arrays(columns, names=headers)
         with self.lock:
             w = self._writer(key, table)
@@ -1102,32 +1095,6 @@ def _unify(pa: Any, chunks: List[Any]) -> List[Any]:
     return [a if a.type == target else a.cast(target) for a in arrs]
 
 
-def _pick_times(np: Any, parts: List[Tuple[Any, Any, Any, Any]]) -> Tuple[Any, Any]:
-    """Packet offsets -> seconds, sorted by offset, from (offsets, preference, field index,
-    seconds) sources: per packet, the most preferred source, its first occurrence."""
-    offs = np.concatenate([p[0] for p in parts])
-    prefs = np.concatenate([p[1] for p in parts])
-    idx = np.concatenate([p[2] for p in parts])
-    secs = np.concatenate([p[3] for p in parts])
-    order = np.lexsort((idx, prefs, offs))
-    offs, secs = offs[order], secs[order]
-    keep = np.ones(len(offs), dtype=bool)
-    keep[1:] = offs[1:] != offs[:-1]
-    return offs[keep], secs[keep]
-
-
-def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
-    """Seconds of each packet offset (NaN -> null where the packet has no timestamp)."""
-    pa = importlib.import_module("pyarrow")
-
-    if times is None or len(times[0]) == 0:
-        return pa.nulls(len(offsets), type=pa.float64())
-    pos = np.searchsorted(times[0], offsets)
-    pos[pos >= len(times[0])] = 0
-    hit = times[0][pos] == offsets
-    return _arrow(np, pa, np.where(hit, times[1][pos], 0.0), hit)
-
-
 def export(args: argparse.Namespace) -> int:
     if args.dataset is not None:
         return _export_dataset(args)
@@ -1195,15 +1162,18 @@ def _export_packets(
 ) -> Tuple[List[Tuple[str, int]], str]:
     """The packet-by-packet export; with --follow, Ctrl-C ends the reading and the tables of what
     was read are written (the documented way to stop it)."""
+    dev = LogDevice.of(args.log, args.device, args.follow)
+    clock = PacketClock(args.log, args.follow)
     source = Source(args.log, follow=args.follow, idle=args.idle)
-    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join, outputs)
-    stream = Events(args.device)
+    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join, outputs, clock)
+    stream = Events(dev.device)
     tally = [0, 0]  # packets, skipped bytes
 
     def take(evs: List[Any]) -> None:
         for ev in evs:
             if isinstance(ev, Packet):
                 tally[0] += 1
+                dev.packet(ev, stream.decoder)
                 ex.packet(ev)
             else:
                 tally[1] += len(ev.data)
@@ -1233,6 +1203,8 @@ def _export_fast(
     MAX_PACKET - 1 of them (a packet cut by the end starts there; bytes before are skipped)."""
     from .packets import Columns, decode_columns
 
+    dev = LogDevice.of(args.log, args.device)
+    clock = PacketClock(args.log)
     source = Source(args.log)
     ex = FastExporter(args.out, args.format, fields, args.enum_numbers, outputs)
     packets = skipped = 0
@@ -1253,7 +1225,8 @@ def _export_fast(
                 cut = max(cols.skips[-1].offset, len(data) - (MAX_PACKET - 1))
                 block = decode_columns(data[:cut]) if cut else None
             if block is not None:
-                ex.block(block, data, base)
+                dev.columns(block, data)
+                ex.block(block, data, base, clock.block(block, base))
                 packets += block.packets
                 skipped += sum(len(k.data) for k in block.skips)
             carry = data[cut:]
@@ -1261,7 +1234,8 @@ def _export_fast(
         data = carry + bytes(pending)
         if data:
             cols = decode_columns(data)
-            ex.block(cols, data, base)
+            dev.columns(cols, data)
+            ex.block(cols, data, base, clock.block(cols, base))
             packets += cols.packets
             skipped += sum(len(k.data) for k in cols.skips)
         written = ex.close()
@@ -1397,10 +1371,6 @@ class Summary:
         out.append(
             f"bytes: {self.bytes}  packets: {total}  skipped bytes: {self.skipped} in {self.skip_runs} runs  bad checksums: {self.bad_checksums}"
         )
-        if self.first is not None and self.last is not None:
-            out.append(f"time: first {self.first:.6f} s  last {self.last:.6f} s  span {self.last - self.first:.6f} s")
-        else:
-            out.append("time: no timestamps")
         for s in sorted(self.packets):
             out.append(f"set 0x{s:02X} {registry.SET_NAMES.get(s, '?')}: {self.packets[s]} packets")
             for (fs, d, name), summary in sorted(self.fields.items()):
@@ -1434,29 +1404,26 @@ def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
 
 
 def info(args: argparse.Namespace) -> int:
+    """The log's counts, its device, a line per clock (device clock, GPS time, UTC: logpipe's
+    ClockLines and timebase's TimeReport, the time model of export) and its fields' rates."""
     from . import timebase
+    from .logpipe import ClockLines
 
-    # The time report's clock map: a regular file is read twice (first its anchors, so rows before
-    # an epoch's first anchor are timed as export times them); stdin or a device file once, where
-    # such rows have no time (docs/log-to-csv.md, "Time").
-    regular = args.log != "-" and os.path.isfile(args.log)
-    if regular:
-        try:
-            clock = timebase.file_clock(args.log).split(0)
-        except OSError as err:
-            raise ToolError(f"cannot read {args.log}: {err.strerror or err}") from None
-    else:
-        clock = timebase.SplitClock()
+    dev = LogDevice.of(args.log, args.device)
+    clock = PacketClock(args.log)
     report = timebase.TimeReport(_DATA_SETS)
+    clocks = ClockLines(_DATA_SETS)
     source = Source(args.log)
     summary = Summary()
-    stream = Events(args.device)
+    stream = Events(dev.device)
 
     def add(e: Any) -> None:
         summary.add(e)
         if isinstance(e, Packet):
+            dev.packet(e, stream.decoder, strict=False)  # info reports an unknown device, decodes on
             pt = timebase.packet_time(e)
-            report.add(e, pt, clock.step(pt))
+            clocks.add(e, pt)
+            report.add(e, pt, clock.clock.step(pt))
 
     for chunk in source.chunks():
         summary.bytes += len(chunk)
@@ -1464,7 +1431,8 @@ def info(args: argparse.Namespace) -> int:
             add(e)
     for e in stream.flush():
         add(e)
-    print("\n".join(summary.lines() + report.lines()))
+    lines = summary.lines()
+    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + report.lines() + lines[1:]))
     return 0
 
 
@@ -1477,14 +1445,21 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    series: Dict[str, Tuple[List[float], List[float], str]] = {}
+    # x: (UTC t_ns or None, offset); plotted against UTC when the log has it (logpipe.plot_times)
+    series: Dict[str, Tuple[List[Any], List[float], str]] = {}
+    dev = LogDevice.of(log, device)
+    clock = PacketClock(log)
     source = Source(log)
+    stream = Events(dev.device)
     have_time = False
-    for e in events(source, device):
-        if not isinstance(e, Packet) or e.set not in _DATA_SETS:
+    for e in _stream_events(source, stream):
+        if not isinstance(e, Packet):
             continue
-        t = packet_time(e)
-        x = t if t is not None else float(e.offset)
+        dev.packet(e, stream.decoder)
+        t = clock.t_ns(e)
+        if e.set not in _DATA_SETS:
+            continue
+        x = (t, e.offset)
         have_time = have_time or t is not None
         for f in e.fields:
             if not isinstance(f, DecodedField):
@@ -1502,6 +1477,7 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
                 s[1].append(float(cells[i]))
     if not series:
         raise ToolError("no values of the selected fields in the log", 1)
+    series = plot_times(series, have_time)
     by_units: Dict[str, List[str]] = {}
     for name, (_x, _y, units) in series.items():
         by_units.setdefault(units, []).append(name)
@@ -1513,7 +1489,7 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
         ax.set_ylabel(units or "value")
         ax.legend(loc="upper right", fontsize="small")
         ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel(TIME_HEADER if have_time else "packet offset [bytes]")
+    axes[-1, 0].set_xlabel("time (UTC)" if have_time else "packet offset [bytes]")
     fig.suptitle(os.path.basename(log))
     fig.tight_layout()
     return fig

@@ -39,7 +39,10 @@ LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser i
 ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes for object storage)
 COMPRESSION = "zstd"
 FILES_TABLE = "_files"
-DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # the partition value of null (Hive, Spark)
+# The `date` partition of rows without a UTC time: a plain value every reader takes as a string
+# (pyarrow's hive partitioning fails on a field whose every value is Hive's null spelling
+# `__HIVE_DEFAULT_PARTITION__`), spelled as the `unknown` model and serial (docs/dataset.md).
+DEFAULT_PARTITION = "unknown"
 UNKNOWN = "unknown"  # model / serial of a log that names neither, without --model / --serial
 SAMPLES = "samples"  # joined-sample tables: <set>.samples
 BASE_COLUMNS = ("t_ns", "time", "offset", "log", "device_ns", "gps_week", "gps_tow")
@@ -457,13 +460,14 @@ def decode_split(
     split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
     np = _need("numpy")
     pa = _need("pyarrow")
+    from . import logpipe
     from .packets import decode_columns
     from .tools import FastExporter, _as_arrow, _unify, table_name
 
     ident = identity if identity is not None else Identity()
     result = SplitResult(log, start, end, ident)
     cols = decode_columns(data)
-    _for_device(cols, data, device_of(ident.model))
+    logpipe.split_device(cols, data, ident, log)  # the log's device, else DeviceUnknown (a ReadError)
     # skipped bytes and bad checksums inside [start, end)
     for skip in cols.skips:
         a, b = skip.offset + base, skip.offset + base + len(skip.data)
