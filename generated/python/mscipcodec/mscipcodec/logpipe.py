@@ -138,7 +138,7 @@ class LogDevice:
                     decoder.device = reported
         if self.device is None and strict:
             for f in p.fields:
-                if isinstance(f, DecodedField) and getattr(f.value, "DEVICE", None) is not None:
+                if isinstance(f, DecodedField) and _per_device(f.value):
                     raise _tool_error(unknown_device(self.log, type(f.value)))
 
     def columns(self, cols: Any, data: Any) -> None:
@@ -155,13 +155,20 @@ class LogDevice:
 def per_device_class(cols: Any) -> Any:
     """The layout class of the first per-device entry of a `decode_columns` block, else None."""
     for t in cols.tables.values():
-        if t.rows and getattr(t.cls, "DEVICE", None) is not None:
+        if t.rows and _per_device(t.cls):
             return t.cls
     for _off, _k, entry in cols.others:
-        value = getattr(entry, "value", None) if isinstance(entry, DecodedField) else None
-        if value is not None and getattr(value, "DEVICE", None) is not None:
-            return type(value)
+        if isinstance(entry, DecodedField) and _per_device(entry.value):
+            return type(entry.value)
     return None
+
+
+def _per_device(cls_or_value: Any) -> bool:
+    """A data field layout (class or value) of a field with a layout per device (PER_DEVICE: the
+    tables' fields; replies to commands are not exported)."""
+    return getattr(cls_or_value, "DEVICE", None) is not None and (
+        (cls_or_value.SET, cls_or_value.DESCRIPTOR) in PER_DEVICE
+    )
 
 
 def split_device(cols: Any, data: Any, identity: Any, log: str) -> None:
