@@ -1556,7 +1556,7 @@ def parser() -> argparse.ArgumentParser:
     e = sub.add_parser(
         "export",
         help="decode a log into tables (CSV, JSON lines, Parquet)",
-        description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after a 'time [s]' column from the shared timestamps and the packet's 'offset' in the log.",
+        description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after the row's UTC time ('t_ns', 'time'; empty where unknown) and the packet's 'offset' in the log. Per-device layouts are the log's device's (its Device Information reply, else --device).",
     )
     e.add_argument("logs", nargs="+", metavar="LOG", help="binary log file, or - for stdin (--dataset: several logs)")
     e.add_argument(
