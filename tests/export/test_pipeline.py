@@ -227,16 +227,3 @@ def test_dataset_without_dates_opens_with_pyarrow_polars_duckdb(capture_dataset)
         n,
         "unknown",
     )
-
-
-def test_dataset_without_dates_opens_with_spark(capture_dataset):
-    spark_mod = importlib.import_module("mipcodec.spark")
-    if spark_mod.java_missing():
-        pytest.fail(spark_mod.java_missing())
-    spark = spark_mod.session("local[1]")
-    try:
-        df = spark.read.option("basePath", str(capture_dataset)).parquet(str(capture_dataset))
-        got = df.groupBy("date").count().collect()
-    finally:
-        spark.stop()
-    assert [(r["date"], r["count"] > 100) for r in got] == [("unknown", True)]
