@@ -187,5 +187,5 @@ def info(args: argparse.Namespace) -> int:
     for e in stream.flush():
         add(e)
     lines = summary.lines()
-    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + report.lines() + lines[1:]))
+    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + lines[1:] + report.lines()))
     return 0

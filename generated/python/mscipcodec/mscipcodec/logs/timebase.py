@@ -588,7 +588,7 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     dev_off, dev_val = _first(np, dev_parts, [3])
     gps_off, (g_week, g_tow, g_ok) = _first_many(np, gps_parts, [3, 4, 5])
     leap_off, leap_val = _first(np, leap_parts, [3])
-    offsets = np.union1d(np.union1d(dev_off, gps_off), leap_off).astype(np.int64)
+    offsets = _union(np, [dev_off, gps_off, leap_off])
     n = len(offsets)
     out: Dict[str, Any] = {"offset": offsets + base}
 
@@ -616,6 +616,15 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     out["gps_ok"] = ok
     out["leap"], out["leap_ok"] = place(leap_off, leap_val[0] if leap_val else [], np.int64)
     return out
+
+
+def _union(np: Any, arrays: List[Any]) -> Any:
+    """The sorted distinct int64 values of the arrays (np.union1d without np.unique's hashing
+    path, which costs more than the block's decode on large blocks)."""
+    a = np.sort(np.concatenate([np.asarray(x, dtype=np.int64) for x in arrays]))
+    keep = np.ones(len(a), dtype=bool)
+    keep[1:] = a[1:] != a[:-1]
+    return a[keep]
 
 
 def _one(np: Any, off: int, rank: int, k: int, value: int) -> Tuple[Any, Any, Any, Any]:
