@@ -718,10 +718,11 @@ def columns_times(cols: Any, base: int) -> List[PacketTime]:
     return out
 
 
-# A log file is read in splits of this many bytes by `file_clock` (small, so that `info`'s memory
-# does not grow with the log: one split's columns at a time), each from FILE_LOOKBACK bytes before
-# its start, to resynchronise as the dataset's splits do.
-FILE_SPLIT = 4 << 20
+# A log file is read in splits of this many bytes by `file_clock` (small, so that the memory of
+# `info` and of every single-log export, which time their rows with it, does not grow with the log:
+# one split's columns at a time), each from FILE_LOOKBACK bytes before its start, to resynchronise
+# as the dataset's splits do.
+FILE_SPLIT = 1 << 20
 FILE_LOOKBACK = 64 << 10
 
 
