@@ -175,15 +175,15 @@ def check_export(package: str, data: bytes, out: Path, fmt: str, enum_numbers: b
         )
         specs = cols.COLUMNS[key]
         headers, rows = read_table(path)
-        assert headers[:2] == ["time [s]", "offset"]
+        assert headers[:3] == ["t_ns", "time", "offset"]
         entries = want[(sid, key[1])]
         seen.add((sid, key[1]))
         assert len(rows) == len(entries), path.name
-        for header, spec in zip(headers[2:], specs):
+        for header, spec in zip(headers[3:], specs):
             assert header == (f"{spec[0]} [{spec[2]}]" if spec[2] else spec[0])
         for row, (offset, values) in zip(rows, entries):
-            assert int(row[1]) == offset
-            for cell, (name, path_, _units, kind, enum) in zip(row[2:], specs):
+            assert int(row[2]) == offset
+            for cell, (name, path_, _units, kind, enum) in zip(row[3:], specs):
                 names = None if enum_numbers or kind != "enum" else {int(k): v for k, v in cols.ENUMS[enum].items()}
                 assert same(kind, cell, walk(values, path_), names), (
                     path.name,
@@ -238,10 +238,9 @@ def test_device_capture_export_equals_canonical_decode(tmp_path, fmt):
     data = CAPTURE.read_bytes()
     assert check_export("mipcodec", data, tmp_path, fmt, enum_numbers=False, accelerated=(fmt == "csv")) > 40000
     headers, rows = read_table(tmp_path / fmt / f"sensor.scaled_accel.{fmt}")
-    assert headers == ["time [s]", "offset", "scaled_accel.x [g]", "scaled_accel.y [g]", "scaled_accel.z [g]"]
-    # the time column is the reference timestamp of the packet, in seconds
-    ts = canonical("mipcodec", data)[(0x80, 0xD5)]
-    assert float(rows[0][0]) == ts[0][1]["nanoseconds"] / 1e9
+    assert headers == ["t_ns", "time", "offset", "scaled_accel.x [g]", "scaled_accel.y [g]", "scaled_accel.z [g]"]
+    # the capture has a device clock and no GPS time: no UTC time (t_ns and time empty / null)
+    assert all(r[0] in ("", None) and r[1] in ("", None) for r in rows)
 
 
 def test_join_one_row_per_sample(tmp_path):
@@ -258,10 +257,10 @@ def test_join_one_row_per_sample(tmp_path):
     (tmp_path / "log.bin").write_bytes(p1 + p2 + p3)
     assert mod.cli.main(["export", str(tmp_path / "log.bin"), "--out", str(tmp_path / "o"), "--join"]) == 0
     headers, rows = read_table(tmp_path / "o" / "sensor.csv")
-    assert headers[:3] == ["time [s]", "offset", "reference_timestamp.nanoseconds [ns]"]
+    assert headers[:4] == ["t_ns", "time", "offset", "reference_timestamp.nanoseconds [ns]"]
     assert len(rows) == 2
     row = dict(zip(headers, rows[0]))
-    assert row["time [s]"] == "5.0" and row["scaled_accel.y [g]"] == "2.0" and row["scaled_gyro.z [rad/s]"] == "0.125"
+    assert row["t_ns"] == "" and row["scaled_accel.y [g]"] == "2.0" and row["scaled_gyro.z [rad/s]"] == "0.125"
     assert dict(zip(headers, rows[1]))["scaled_gyro.z [rad/s]"] == ""
 
 
@@ -275,7 +274,7 @@ def test_fields_enum_names_stdin(tmp_path, monkeypatch):
     assert "sensor.scaled_accel.csv" in names and "sensor.shared.gps_timestamp.csv" in names
     assert all(n.split(".")[-2] in ("scaled_accel", "gps_timestamp") for n in names), names
     headers, _rows = read_table(out / "sensor.scaled_accel.csv")
-    assert headers == ["time [s]", "offset", "scaled_accel.z [g]"]
+    assert headers == ["t_ns", "time", "offset", "scaled_accel.z [g]"]
 
 
 def test_enum_names_come_from_the_spec():
@@ -314,7 +313,8 @@ def test_follow_a_growing_file(tmp_path):
     assert mod.cli.main(["export", str(log), "--out", str(tmp_path / "o"), "--follow", "--idle", "1.0"]) == 0
     th.join()
     _h, rows = read_table(tmp_path / "o" / "sensor.scaled_accel.csv")
-    assert [r[0] for r in rows] == ["1e-09", "2e-09", "3e-09"]
+    n = len(pkt(1))
+    assert [r[2] for r in rows] == [str(0), str(n), str(2 * n)]  # each packet once, the cut one whole
 
 
 def gap_stream(mod) -> tuple[bytes, dict]:
@@ -351,7 +351,7 @@ def test_info_on_a_stream_with_known_gaps(tmp_path, capsys):
     assert f"packets: {facts['packets']}" in text
     assert f"skipped bytes: {facts['skipped']} in 2 runs" in text
     assert "bad checksums: 1" in text
-    assert "time: first 1.000000 s  last 1.990000 s  span 0.990000 s" in text
+    assert "device clock: first 1.000000 s  last 1.990000 s  span 0.990000 s" in text
     line = next(x for x in text.splitlines() if "scaled_accel" in x)
     assert line.split()[2] == str(facts["packets"])
     assert "100.000 Hz" in line and "gaps 2" in line and "dropped 4" in line
@@ -366,7 +366,7 @@ def test_plot_writes_a_labelled_image(tmp_path):
     log.write_bytes(data)
     fig = mod.logs.plot.figure(str(log), ["scaled_accel"])
     ax = fig.axes[0]
-    assert ax.get_xlabel() == "time [s]" and ax.get_ylabel() == "g"
+    assert ax.get_xlabel() == "packet offset [bytes]" and ax.get_ylabel() == "g"  # no UTC time in it
     assert [line.get_label() for line in ax.lines] == ["scaled_accel.x", "scaled_accel.y", "scaled_accel.z"]
     assert len(ax.lines[2].get_xdata()) == 96
     for ext in ("png", "svg", "html"):

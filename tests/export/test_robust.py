@@ -99,7 +99,11 @@ def test_follow_stopped_by_ctrl_c_writes_what_was_read(tmp_path, join):
     name = "sensor.csv" if join else "sensor.scaled_accel.csv"
     headers, rows = read_table(out / name)
     assert len(rows) == 500
-    assert [float(r[0]) for r in rows] == [(1_000_000_000 + 8_000_000 * i) / 1e9 for i in range(500)]
+    # t_ns, time, offset: the stream has the device clock only, no GPS time (so no UTC time); its
+    # 500 packets all the same size, one after the other
+    assert headers[:3] == ["t_ns", "time", "offset"] and all(r[0] == r[1] == "" for r in rows)
+    size = len(accel_stream(1))
+    assert [int(r[2]) for r in rows] == [size * i for i in range(500)]
     assert f"{out / name}: 500 rows" in stdout.decode()
     assert "stopped by Ctrl-C" in stderr.decode()
     assert not [n for n in leftovers(out) if n.startswith(".")]
@@ -514,8 +518,10 @@ def test_join_gives_one_row_per_sample_of_the_capture(tmp_path):
     names = mod.registry.SET_NAMES
     for set_id, offsets in samples.items():
         headers, rows = read_table(tmp_path / "o" / f"{names[set_id]}.csv")
-        assert [int(r[1]) for r in rows] == offsets, names[set_id]
+        assert [int(r[2]) for r in rows] == offsets, names[set_id]  # t_ns, time, offset
     headers, rows = read_table(tmp_path / "o" / "sensor.csv")
-    untimed = [dict(zip(headers, r)) for r in rows if r[0] == ""]
+    # the capture has no GPS time: no UTC time; the samples without a reference timestamp
+    assert all(r[0] == r[1] == "" for r in rows)
+    untimed = [dict(zip(headers, r)) for r in rows if r[headers.index("reference_timestamp.nanoseconds [ns]")] == ""]
     assert len(untimed) == 2684  # the packets without a timestamp (info: 2684 scaled_mag entries)
     assert all(r["scaled_accel.x [g]"] == "" and r["scaled_mag.x [gauss]"] != "" for r in untimed)

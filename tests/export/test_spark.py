@@ -23,6 +23,7 @@ from pathlib import Path
 import duckdb
 import pytest
 
+from tests.export.test_pipeline import capture_dataset  # noqa: F401 (a fixture: the dataset of a log without dates)
 from tests.helpers.generated import python_package
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -247,3 +248,11 @@ def test_cli_replaces_a_logs_parts(tmp_path, logs):
     assert (out / "_files" / f"part-{log}.parquet").exists()
     parts = list(out.glob("sensor.scaled_accel/model=3dm-gx5-45/serial=6232-10100/date=*/*.parquet"))
     assert parts and {p.name for p in parts} == {f"part-{log}-000000000000.parquet"}  # one split (< 64 MiB)
+
+
+def test_dataset_without_dates_opens_with_spark(spark, capture_dataset):  # noqa: F811
+    """A table whose every row has an unknown date (`date=unknown`) opens with Spark's partition
+    discovery in this module's session (issue 50 item 6; pyarrow, Polars, DuckDB: test_pipeline.py)."""
+    df = spark.read.option("basePath", str(capture_dataset)).parquet(str(capture_dataset))
+    got = df.groupBy("date").count().collect()
+    assert [(r["date"], r["count"] > 100) for r in got] == [("unknown", True)]

@@ -320,9 +320,9 @@ def _decode(out_dir: str, task: Tuple[str, int, int, int, str, Any, Any]) -> Any
     try:
         read_at, _ = open_log(uri)
         data, base = dataset.read_split(read_at, size, start, end)
-    except dataset.ReadError as e:
+        result = dataset.decode_split(data, base, start, end, clock, identity, log, size)
+    except dataset.ReadError as e:  # also a log of unknown device with per-device fields
         return ("unreadable", str(e))
-    result = dataset.decode_split(data, base, start, end, clock, identity, log, size)
     try:
         parts = dataset.write_split(out_dir, result)
     except OSError as e:

@@ -38,6 +38,7 @@ from ..codec.packets import Packet
 from ..codec.stdio import closed_stdout, flushed
 from .export import BLOCK, Exporter, FastExporter, fast_path
 from .info import info
+from .pipeline import LogDevice, PacketClock
 from .plot import plot
 from .writers import WRITERS, Events, Outputs, Source, ToolError, field_list, need, write_error
 
@@ -109,15 +110,18 @@ def _export_packets(
 ) -> Tuple[List[Tuple[str, int]], str]:
     """The packet-by-packet export; with --follow, Ctrl-C ends the reading and the tables of what
     was read are written (the documented way to stop it)."""
+    dev = LogDevice.of(args.log, args.device, args.follow)
+    clock = PacketClock(args.log, args.follow)
     source = Source(args.log, follow=args.follow, idle=args.idle)
-    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join, outputs)
-    stream = Events(args.device)
+    ex = Exporter(args.out, args.format, fields, args.enum_numbers, args.join, outputs, clock)
+    stream = Events(dev.device)
     tally = [0, 0]  # packets, skipped bytes
 
     def take(evs: List[Any]) -> None:
         for ev in evs:
             if isinstance(ev, Packet):
                 tally[0] += 1
+                dev.packet(ev, stream.decoder)
                 ex.packet(ev)
             else:
                 tally[1] += len(ev.data)
@@ -147,6 +151,8 @@ def _export_fast(
     MAX_PACKET - 1 of them (a packet cut by the end starts there; bytes before are skipped)."""
     from ..codec.packets import Columns, decode_columns
 
+    dev = LogDevice.of(args.log, args.device)
+    clock = PacketClock(args.log)
     source = Source(args.log)
     ex = FastExporter(args.out, args.format, fields, args.enum_numbers, outputs)
     packets = skipped = 0
@@ -167,7 +173,8 @@ def _export_fast(
                 cut = max(cols.skips[-1].offset, len(data) - (MAX_PACKET - 1))
                 block = decode_columns(data[:cut]) if cut else None
             if block is not None:
-                ex.block(block, data, base)
+                dev.columns(block, data)
+                ex.block(block, data, base, clock.block(block, base))
                 packets += block.packets
                 skipped += sum(len(k.data) for k in block.skips)
             carry = data[cut:]
@@ -175,7 +182,8 @@ def _export_fast(
         data = carry + bytes(pending)
         if data:
             cols = decode_columns(data)
-            ex.block(cols, data, base)
+            dev.columns(cols, data)
+            ex.block(cols, data, base, clock.block(cols, base))
             packets += cols.packets
             skipped += sum(len(k.data) for k in cols.skips)
         written = ex.close()
@@ -206,7 +214,7 @@ def parser() -> argparse.ArgumentParser:
     e = sub.add_parser(
         "export",
         help="decode a log into tables (CSV, JSON lines, Parquet)",
-        description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after a 'time [s]' column from the shared timestamps and the packet's 'offset' in the log.",
+        description="Decode a log into one table per (set, field) (or per sample with --join). Columns are named from the spec with units in the header, e.g. 'scaled_accel.x [g]', after the row's UTC time ('t_ns', 'time'; empty where unknown) and the packet's 'offset' in the log. Per-device layouts are the log's device's (its Device Information reply, else --device).",
     )
     e.add_argument("logs", nargs="+", metavar="LOG", help="binary log file, or - for stdin (--dataset: several logs)")
     e.add_argument(

@@ -15,16 +15,16 @@ from .._protocol import FIRST_SHARED, SET_OFFSET, TIMESTAMPS
 from .._protocol import PACKAGE as PROG
 from ..codec.packets import DecodedField, Packet
 from .arrow import ArrowCsvText, as_arrow, to_arrow, unify
+from .pipeline import PacketClock, t_ns_array, time_array, time_cells
 from .writers import (
     COLUMN_SETS,
-    TIME_HEADER,
+    TIME_HEADERS,
     WRITERS,
     F32Cell,
     Layout,
     Outputs,
     Rows,
     Writer,
-    packet_time,
     select,
     table_name,
 )
@@ -51,7 +51,9 @@ class Exporter:
         enum_numbers: bool,
         join: bool,
         outputs: Optional[Outputs] = None,
+        clock: Optional[PacketClock] = None,
     ) -> None:
+        self.clock = clock  # the rows' UTC time (None: none)
         self.out = out
         self.writer = WRITERS[fmt]
         self.fields = fields
@@ -71,9 +73,9 @@ class Exporter:
         return lay
 
     def packet(self, p: Packet) -> None:
+        t = self.clock.t_ns(p) if self.clock is not None else None  # every packet, in log order
         if p.set not in COLUMN_SETS:
             return
-        t = packet_time(p)
         if self.join:
             self._join(p, t)
             return
@@ -98,7 +100,7 @@ class Exporter:
                 continue
             rows, _w, lay = entry
             cells = _typed(lay, f.value)
-            self.pending[key].append([t, p.offset] + [cells[i] for i in rows.keep])
+            self.pending[key].append(time_cells(t) + [p.offset] + [cells[i] for i in rows.keep])
             rows.count += 1
             if len(self.pending[key]) >= 4096:
                 self._drain(key)
@@ -115,7 +117,7 @@ class Exporter:
             self._writer(key).write(rows)
             self.pending[key] = []
 
-    def _join(self, p: Packet, t: Optional[float]) -> None:
+    def _join(self, p: Packet, t: Optional[int]) -> None:
         table = self.joined.get(p.set)
         if table is None:
             name = registry.SET_NAMES.get(p.set, f"set_{p.set:02x}") + self.writer.suffix
@@ -171,12 +173,12 @@ class JoinTable:
     def __init__(self, name: str, path: str, spool: Any) -> None:
         self.name, self.path, self.spool = name, path, spool
         self.columns: Dict[str, int] = {}  # header -> index among the value columns
-        self.batch: List[Tuple[Optional[float], int, Dict[int, Any]]] = []
+        self.batch: List[Tuple[Optional[int], int, Dict[int, Any]]] = []
         self.rows = 0
         self.key: Any = None
-        self.row: Optional[Tuple[Optional[float], int, Dict[int, Any]]] = None
+        self.row: Optional[Tuple[Optional[int], int, Dict[int, Any]]] = None
 
-    def packet(self, key: Any, t: Optional[float], offset: int, cells: List[Tuple[str, Any]]) -> None:
+    def packet(self, key: Any, t: Optional[int], offset: int, cells: List[Tuple[str, Any]]) -> None:
         if self.row is None or key is None or key != self.key:
             self._end_row()
             self.row = (t, offset, {})
@@ -205,7 +207,7 @@ class JoinTable:
         self._end_row()
         self.spill()
         width = len(self.columns)
-        w = writer(path, [TIME_HEADER, "offset"] + list(self.columns))
+        w = writer(path, TIME_HEADERS + ["offset"] + list(self.columns))
         self.spool.seek(0)
         while True:
             try:
@@ -214,9 +216,9 @@ class JoinTable:
                 break
             out = []
             for t, offset, values in batch:
-                row: List[Any] = [t, offset] + [None] * width
+                row: List[Any] = time_cells(t) + [offset] + [None] * width
                 for i, c in values.items():
-                    row[2 + i] = c
+                    row[3 + i] = c
                 out.append(row)
             w.write(out)
         w.close()
@@ -290,9 +292,10 @@ class FastExporter:
         assert chosen is not None
         return chosen
 
-    def block(self, cols: Any, data: Any, base: int) -> None:
-        """Write the tables of one decode_columns block (`data`, at stream offset `base`)."""
-        pieces = self.pieces(cols, data, base)
+    def block(self, cols: Any, data: Any, base: int, times: Any = None) -> None:
+        """Write the tables of one decode_columns block (`data`, at stream offset `base`; `times`
+        its `timebase.BlockTimes`)."""
+        pieces = self.pieces(cols, data, base, times)
         # pyarrow formats and writes without the GIL: one table per thread, while the caller
         # decodes the next block; a block's writes start when the previous block's are done.
         self.wait()
@@ -306,29 +309,20 @@ class FastExporter:
             for key, parts in pieces.items():
                 self._write(key, parts)
 
-    def pieces(self, cols: Any, data: Any, base: int) -> Dict[Any, List[Any]]:
+    def pieces(self, cols: Any, data: Any, base: int, times: Any = None) -> Dict[Any, List[Any]]:
         """The rows of one decode_columns block (`data`, at stream offset `base`) per (set,
         layout class): a list of (packet offsets in the block, field index, columns), the columns
-        being the time in seconds, the stream offset and the kept value columns (numpy or arrow
-        arrays, or lists); rows of one piece in stream order, pieces to be merged by (offset,
-        index). Shared by the dataset export (dataset.py)."""
-        np = self.np
-        # The time of a packet as `packet_time` picks it: the first TIMES source it carries, its
-        # first occurrence in the packet. set -> [(offsets, preference, field index, seconds)]
-        sources: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
+        being the UTC `t_ns` (from `times`, the block's `timebase.BlockTimes`; None without),
+        the stream offset and the kept value columns (numpy or arrow arrays, or lists); rows of
+        one piece in stream order, pieces to be merged by (offset, index). Shared by the dataset
+        export (dataset.py), which times its rows itself."""
+        np, pa = self.np, self.pa
+
+        def t_ns(offs: Any) -> Any:
+            return None if times is None else t_ns_array(np, pa, times, offs + base)
+
         pieces: Dict[Any, List[Any]] = {}
-        for (set_id, _d), t in cols.tables.items():
-            if set_id not in COLUMN_SETS or t.rows == 0:
-                continue
-            arrays = t.arrays()
-            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
-                if t.cls.SET == s and t.cls.DESCRIPTOR == d and attr in arrays:
-                    offs = np.frombuffer(t.offsets, dtype=np.int64)
-                    sec = arrays[attr].astype(np.float64) / per_second
-                    idx = np.frombuffer(t.index, dtype=np.int64)
-                    sources.setdefault(set_id, []).append((offs, np.full(len(offs), pref), idx, sec))
         other_rows: Dict[Any, List[Tuple[int, int, List[Any]]]] = {}
-        other_times: Dict[int, List[Tuple[int, int, int, float]]] = {}
         for off, k, entry in cols.others:
             if k < 0 or not isinstance(entry, DecodedField):
                 continue
@@ -336,20 +330,9 @@ class FastExporter:
             if packet_set not in COLUMN_SETS:
                 continue
             cls = type(entry.value)
-            for pref, (s, d, attr, per_second) in enumerate(_columns.TIMES):
-                if cls.SET == s and cls.DESCRIPTOR == d:
-                    other_times.setdefault(packet_set, []).append(
-                        (off, pref, k, getattr(entry.value, attr) / per_second)
-                    )
             chosen = self._layout(cls)
             if chosen is not None:
                 other_rows.setdefault((packet_set, cls), []).append((off, k, _typed(chosen[0], entry.value)))
-        for set_id, extra in other_times.items():
-            cols4 = list(zip(*extra))
-            sources.setdefault(set_id, []).append(
-                tuple(np.array(c, dtype=np.float64 if j == 3 else np.int64) for j, c in enumerate(cols4))
-            )
-        times = {set_id: _pick_times(np, parts) for set_id, parts in sources.items()}
         for (set_id, _d), t in cols.tables.items():
             if set_id not in COLUMN_SETS or t.rows == 0:
                 continue
@@ -359,7 +342,7 @@ class FastExporter:
             lay, keep = chosen
             arrays = t.arrays()
             offs = np.frombuffer(t.offsets, dtype=np.int64)
-            cols_out: List[Any] = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            cols_out: List[Any] = [t_ns(offs), offs + base]
             for i in keep:
                 _name, path, _units, kind, enum = lay.specs[i]
                 a = arrays[path[0]]
@@ -371,7 +354,7 @@ class FastExporter:
             lay, keep = self._kept(cls)
             offs = np.array([r[0] for r in rows], dtype=np.int64)
             idx = np.array([r[1] for r in rows], dtype=np.int64)
-            cells = [_lookup_times(np, times.get(set_id), offs), offs + base]
+            cells = [t_ns(offs), offs + base]
             for i in keep:
                 cells.append(self._py_column([r[2][i] for r in rows], lay.specs[i][3]))
             pieces.setdefault((set_id, cls), []).append((offs, idx, cells))
@@ -413,18 +396,19 @@ class FastExporter:
         np, pa = self.np, self.pa
         set_id, cls = key
         lay, keep = self._kept(cls)
-        headers = [TIME_HEADER, "offset"] + [lay.headers[i] for i in keep]
+        headers = TIME_HEADERS + ["offset"] + [lay.headers[i] for i in keep]
         offs = np.concatenate([p[0] for p in parts])
         idx = np.concatenate([p[1] for p in parts])
         order = np.lexsort((idx, offs))
         columns = []
-        for j in range(len(headers)):
+        for j in range(len(headers) - 1):  # t_ns, offset, the values (time: from t_ns)
             chunk = [p[2][j] for p in parts]
             col = chunk[0] if len(chunk) == 1 else pa.concat_arrays([as_arrow(pa, c) for c in unify(pa, chunk)])
             col = as_arrow(pa, col)
             if len(parts) > 1:
                 col = col.take(to_arrow(np, pa, order))
             columns.append(col)
+        columns.insert(1, time_array(pa, columns[0], self.fmt == "csv"))
         table = pa.Table.from_arrays(columns, names=headers)
         with self.lock:
             w = self._writer(key, table)
@@ -459,29 +443,3 @@ class FastExporter:
             w.close()
             out.append((table_name(set_id, cls) + "." + self.fmt, self.counts[(set_id, cls)]))
         return sorted(out)
-
-
-def _pick_times(np: Any, parts: List[Tuple[Any, Any, Any, Any]]) -> Tuple[Any, Any]:
-    """Packet offsets -> seconds, sorted by offset, from (offsets, preference, field index,
-    seconds) sources: per packet, the most preferred source, its first occurrence."""
-    offs = np.concatenate([p[0] for p in parts])
-    prefs = np.concatenate([p[1] for p in parts])
-    idx = np.concatenate([p[2] for p in parts])
-    secs = np.concatenate([p[3] for p in parts])
-    order = np.lexsort((idx, prefs, offs))
-    offs, secs = offs[order], secs[order]
-    keep = np.ones(len(offs), dtype=bool)
-    keep[1:] = offs[1:] != offs[:-1]
-    return offs[keep], secs[keep]
-
-
-def _lookup_times(np: Any, times: Any, offsets: Any) -> Any:
-    """Seconds of each packet offset (NaN -> null where the packet has no timestamp)."""
-    pa = importlib.import_module("pyarrow")
-
-    if times is None or len(times[0]) == 0:
-        return pa.nulls(len(offsets), type=pa.float64())
-    pos = np.searchsorted(times[0], offsets)
-    pos[pos >= len(times[0])] = 0
-    hit = times[0][pos] == offsets
-    return to_arrow(np, pa, np.where(hit, times[1][pos], 0.0), hit)

@@ -7,7 +7,7 @@ DATASET is a directory `export --dataset` (or the Spark job) wrote: one subdirec
 dataset (`model=`/`serial=`/`date=` directories). Every table is registered as a DuckDB view named
 after its directory (quote the names: they have dots, `"sensor.scaled_accel"`); the partition
 columns are text (`model`, `serial`: a serial such as `6284.170401` stays text) and `date` a DATE,
-NULL for the `__HIVE_DEFAULT_PARTITION__` of rows without a UTC time. The result prints as a plain
+NULL for the `unknown` date (or `__HIVE_DEFAULT_PARTITION__`) of rows without a UTC time. The result prints as a plain
 table (default), CSV with a header, or JSON lines (one object per row).
 
 Needs duckdb (the package's `[query]` extra). Errors are one line on stderr, exit status 2: a
@@ -32,6 +32,7 @@ from .._protocol import PACKAGE as PROG
 
 DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # Hive/Spark's directory name for a null value
 TYPED = {"date": "DATE"}  # partition columns that are not text
+UNKNOWN_DATE = "unknown"  # the dataset's `date` of rows without a UTC time (dataset.DEFAULT_PARTITION)
 
 
 class QueryError(Exception):
@@ -96,13 +97,16 @@ def connect(dataset: str) -> Any:
         else:
             source += ", hive_partitioning = false"
         source += ")"
-        replace = [
-            f"CAST(NULLIF({_ident(k)}, {_literal(DEFAULT_PARTITION)}) AS {TYPED.get(k, 'VARCHAR')}) AS {_ident(k)}"
-            for k in keys
-        ]
+        replace = [f"CAST({_null_value(k)} AS {TYPED.get(k, 'VARCHAR')}) AS {_ident(k)}" for k in keys]
         select = f"SELECT * REPLACE ({', '.join(replace)})" if replace else "SELECT *"
         con.execute(f"CREATE VIEW {_ident(name)} AS {select} FROM {source}")
     return con
+
+
+def _null_value(key: str) -> str:
+    """A partition column with its null spellings as NULL (a date: also `unknown`)."""
+    expr = f"NULLIF({_ident(key)}, {_literal(DEFAULT_PARTITION)})"
+    return f"NULLIF({expr}, {_literal(UNKNOWN_DATE)})" if key in TYPED else expr
 
 
 def run(dataset: str, sql: str) -> Tuple[List[str], List[Tuple[Any, ...]]]:

@@ -588,7 +588,7 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     dev_off, dev_val = _first(np, dev_parts, [3])
     gps_off, (g_week, g_tow, g_ok) = _first_many(np, gps_parts, [3, 4, 5])
     leap_off, leap_val = _first(np, leap_parts, [3])
-    offsets = np.union1d(np.union1d(dev_off, gps_off), leap_off).astype(np.int64)
+    offsets = _union(np, [dev_off, gps_off, leap_off])
     n = len(offsets)
     out: Dict[str, Any] = {"offset": offsets + base}
 
@@ -616,6 +616,15 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     out["gps_ok"] = ok
     out["leap"], out["leap_ok"] = place(leap_off, leap_val[0] if leap_val else [], np.int64)
     return out
+
+
+def _union(np: Any, arrays: List[Any]) -> Any:
+    """The sorted distinct int64 values of the arrays (np.union1d without np.unique's hashing
+    path, which costs more than the block's decode on large blocks)."""
+    a = np.sort(np.concatenate([np.asarray(x, dtype=np.int64) for x in arrays]))
+    keep = np.ones(len(a), dtype=bool)
+    keep[1:] = a[1:] != a[:-1]
+    return a[keep]
 
 
 def _one(np: Any, off: int, rank: int, k: int, value: int) -> Tuple[Any, Any, Any, Any]:
@@ -709,10 +718,11 @@ def columns_times(cols: Any, base: int) -> List[PacketTime]:
     return out
 
 
-# A log file is read in splits of this many bytes by `file_clock` (small, so that `info`'s memory
-# does not grow with the log: one split's columns at a time), each from FILE_LOOKBACK bytes before
-# its start, to resynchronise as the dataset's splits do.
-FILE_SPLIT = 4 << 20
+# A log file is read in splits of this many bytes by `file_clock` (small, so that the memory of
+# `info` and of every single-log export, which time their rows with it, does not grow with the log:
+# one split's columns at a time), each from FILE_LOOKBACK bytes before its start, to resynchronise
+# as the dataset's splits do.
+FILE_SPLIT = 1 << 20
 FILE_LOOKBACK = 64 << 10
 
 

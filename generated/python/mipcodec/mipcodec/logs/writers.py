@@ -135,7 +135,8 @@ def header(name: str, units: Optional[str]) -> str:
     return f"{name} [{units}]" if units else name
 
 
-TIME_HEADER = "time [s]"
+# Every table starts with the row's UTC time (pipeline.py: the dataset's time model) and its offset.
+TIME_HEADERS = ["t_ns", "time"]
 
 
 def packet_time(packet: Packet) -> Optional[float]:
@@ -291,7 +292,11 @@ class Events:
 
 def events(source: Source, device: Optional[str]) -> Iterator[Any]:
     """Decoded events (Packet, Skip, SkipPart) of the source, chunk by chunk."""
-    ev = Events(device)
+    return stream_events(source, Events(device))
+
+
+def stream_events(source: Source, ev: Events) -> Iterator[Any]:
+    """The events of the source through the given Events (whose decoder the caller can steer)."""
     for chunk in source.chunks():
         yield from ev.feed(chunk)
     yield from ev.flush()
@@ -364,7 +369,7 @@ class Rows:
     def __init__(self, name: str, headers: List[str], keep: List[int]) -> None:
         self.name = name
         self.keep = keep
-        self.headers = [TIME_HEADER, "offset"] + [headers[i] for i in keep]
+        self.headers = TIME_HEADERS + ["offset"] + [headers[i] for i in keep]
         self.count = 0
 
 
@@ -496,11 +501,14 @@ class ParquetWriter(Writer):
         self.pending = []
         if self.types is None:
             self.types = [self._type(list(c)) for c in cols]
-            self.types[1] = self.pa.uint64()
+            # t_ns, time (pipeline.UtcText cells, carrying their t_ns), offset
+            self.types[:3] = [self.pa.int64(), self.pa.timestamp("us", tz="UTC"), self.pa.int64()]
         arrays = []
-        for c, t in zip(cols, self.types):
+        for j, (c, t) in enumerate(zip(cols, self.types)):
             values: List[Any] = list(c)
-            if t == self.pa.string():
+            if j == 1:
+                values = [None if x is None else x.t_ns // 1000 for x in values]
+            elif t == self.pa.string():
                 values = [None if x is None else str(x) for x in values]
             arrays.append(self.pa.array(values, type=t))
         table = self.pa.Table.from_arrays(arrays, names=self.headers)

@@ -37,11 +37,10 @@ class ArrowCsvText:
             t = col.type
             if pa.types.is_floating(t):
                 col = _float_texts(np, pa, col)
-            elif pa.types.is_string(t) or pa.types.is_large_string(t):
+            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(pa, col):
+                plain = False  # (the check in arrow: the cells become Python strings only here)
                 texts = col.to_pylist()
-                if any(v is not None and any(c in v for c in ',"\n\r') for v in texts):
-                    plain = False
-                    col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
+                col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
             columns.append(col)
         if plain:  # nothing to quote: pyarrow writes the cells as they are
             names = [f"c{j}" for j in range(len(columns))]
@@ -53,6 +52,14 @@ class ArrowCsvText:
 
     def close(self) -> None:
         self.file.close()
+
+
+def _needs_quotes(pa: Any, col: Any) -> bool:
+    """Whether a string column has a cell the csv module would quote (a comma, quote or line end)."""
+    if col.null_count == len(col):
+        return False
+    pc = importlib.import_module("pyarrow.compute")
+    return bool(pc.any(pc.match_substring_regex(col, '[,"\n\r]')).as_py())
 
 
 def _text_cells(pa: Any, col: Any) -> List[Any]:

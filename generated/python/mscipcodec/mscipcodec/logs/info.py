@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 from typing import Any, Dict, List, Optional, Tuple
 
 from .. import registry
 from .._protocol import SYNC
 from ..codec.packets import DecodedField, Packet
-from .writers import COLUMN_SETS, Events, SkipPart, Source, ToolError, packet_time
+from .pipeline import ClockLines, LogDevice, PacketClock
+from .writers import COLUMN_SETS, Events, SkipPart, Source, packet_time
 
 
 # --------------------------------------------------------------------------------------- info
@@ -127,10 +127,6 @@ class Summary:
         out.append(
             f"bytes: {self.bytes}  packets: {total}  skipped bytes: {self.skipped} in {self.skip_runs} runs  bad checksums: {self.bad_checksums}"
         )
-        if self.first is not None and self.last is not None:
-            out.append(f"time: first {self.first:.6f} s  last {self.last:.6f} s  span {self.last - self.first:.6f} s")
-        else:
-            out.append("time: no timestamps")
         for s in sorted(self.packets):
             out.append(f"set 0x{s:02X} {registry.SET_NAMES.get(s, '?')}: {self.packets[s]} packets")
             for (fs, d, name), summary in sorted(self.fields.items()):
@@ -164,28 +160,24 @@ def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
 
 
 def info(args: argparse.Namespace) -> int:
+    """The log's counts, its device, a line per clock (device clock, GPS time, UTC: pipeline's
+    ClockLines and timebase's TimeReport, the time model of export) and its fields' rates."""
     from . import timebase
 
-    # The time report's clock map: a regular file is read twice (first its anchors, so rows before
-    # an epoch's first anchor are timed as export times them); stdin or a device file once, where
-    # such rows have no time (docs/log-to-csv.md, "Time").
-    regular = args.log != "-" and os.path.isfile(args.log)
-    if regular:
-        try:
-            clock = timebase.file_clock(args.log).split(0)
-        except OSError as err:
-            raise ToolError(f"cannot read {args.log}: {err.strerror or err}") from None
-    else:
-        clock = timebase.SplitClock()
+    dev = LogDevice.of(args.log, args.device)
+    clock = PacketClock(args.log)
     report = timebase.TimeReport(COLUMN_SETS)
+    clocks = ClockLines(COLUMN_SETS)
     source = Source(args.log)
     summary = Summary()
-    stream = Events(args.device)
+    stream = Events(dev.device)
 
     def add(e: Any) -> None:
         summary.add(e)
         if isinstance(e, Packet):
+            dev.packet(e, stream.decoder, strict=False)  # info reports an unknown device, decodes on
             pt = timebase.packet_time(e)
+            clocks.add(e, pt)
             report.add(e, pt, clock.step(pt))
 
     for chunk in source.chunks():
@@ -194,5 +186,6 @@ def info(args: argparse.Namespace) -> int:
             add(e)
     for e in stream.flush():
         add(e)
-    print("\n".join(summary.lines() + report.lines()))
+    lines = summary.lines()
+    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + lines[1:] + report.lines()))
     return 0

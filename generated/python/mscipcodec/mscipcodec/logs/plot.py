@@ -8,18 +8,18 @@ import os
 from typing import Any, Dict, List, Optional, Tuple
 
 from ..codec.packets import DecodedField, Packet
+from .pipeline import LogDevice, PacketClock, plot_times
 from .writers import (
     COLUMN_SETS,
-    TIME_HEADER,
+    Events,
     Layout,
     Outputs,
     Source,
     ToolError,
-    events,
     field_list,
     need,
-    packet_time,
     select,
+    stream_events,
     write_error,
 )
 
@@ -33,14 +33,21 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    series: Dict[str, Tuple[List[float], List[float], str]] = {}
+    # x: (UTC t_ns or None, offset); plotted against UTC when the log has it (pipeline.plot_times)
+    series: Dict[str, Tuple[List[Any], List[float], str]] = {}
+    dev = LogDevice.of(log, device)
+    clock = PacketClock(log)
     source = Source(log)
+    stream = Events(dev.device)
     have_time = False
-    for e in events(source, device):
-        if not isinstance(e, Packet) or e.set not in COLUMN_SETS:
+    for e in stream_events(source, stream):
+        if not isinstance(e, Packet):
             continue
-        t = packet_time(e)
-        x = t if t is not None else float(e.offset)
+        dev.packet(e, stream.decoder)
+        t = clock.t_ns(e)
+        if e.set not in COLUMN_SETS:
+            continue
+        x = (t, e.offset)
         have_time = have_time or t is not None
         for f in e.fields:
             if not isinstance(f, DecodedField):
@@ -58,6 +65,7 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
                 s[1].append(float(cells[i]))
     if not series:
         raise ToolError("no values of the selected fields in the log", 1)
+    series = plot_times(series, have_time)
     by_units: Dict[str, List[str]] = {}
     for name, (_x, _y, units) in series.items():
         by_units.setdefault(units, []).append(name)
@@ -69,7 +77,7 @@ def figure(log: str, fields: Optional[List[str]], device: Optional[str] = None) 
         ax.set_ylabel(units or "value")
         ax.legend(loc="upper right", fontsize="small")
         ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel(TIME_HEADER if have_time else "packet offset [bytes]")
+    axes[-1, 0].set_xlabel("time (UTC)" if have_time else "packet offset [bytes]")
     fig.suptitle(os.path.basename(log))
     fig.tight_layout()
     return fig
