@@ -139,6 +139,8 @@ def test_a_recording_begins_with_the_device_and_skips_nothing(
         [sys.executable, "-m", "mipcodec", "info", str(files[0])], capture_output=True, text=True, env=env
     )
     assert info.returncode == 0 and "skipped bytes: 0 in 0 runs" in info.stdout, info.stdout + info.stderr
+    # `info` names the recorded device by its model and serial (issue 50: "names its serial")
+    assert f"serial {SERIAL}" in info.stdout and "device: cv7_ins" in info.stdout, info.stdout
 
 
 def test_sigint_leaves_a_whole_log(sim: Sim, command: List[str], tmp_path: Path) -> None:

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "checksum_impl.h"
+#include "hex.h"
 
 /* The sync sequence as a constant of this unit (codec_sync lives in framing.c, where the compiler
  * could not fold its bytes into the comparisons). */
@@ -55,21 +56,6 @@ static uint32_t crc24q(const uint8_t *p, size_t n) {
         }
     }
     return crc;
-}
-#endif
-
-#if CODEC_FOREIGN_NMEA
-static int hex_digit(uint8_t c) {
-    if (c >= '0' && c <= '9') {
-        return c - '0';
-    }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    return -1;
 }
 #endif
 
@@ -124,8 +110,8 @@ static size_t foreign_frame(const uint8_t *p, size_t n) {
         if (n < j + 5) {
             return FOREIGN_WAIT;
         }
-        hi = hex_digit(p[j + 1]);
-        lo = hex_digit(p[j + 2]);
+        hi = codec_hex_value((char)p[j + 1]);
+        lo = codec_hex_value((char)p[j + 2]);
         if (hi < 0 || lo < 0 || p[j + 3] != '\r' || p[j + 4] != '\n' || (unsigned)(hi << 4 | lo) != x) {
             return 0;
         }

@@ -14,7 +14,7 @@
     !defined(CODEC_MAX_PAYLOAD) || !defined(CODEC_CHECKSUM_SIZE) || !defined(CODEC_CHECKSUM_SUM1_FIRST) ||   \
     !defined(CODEC_MAX_PACKET) || !defined(CODEC_FIELD_HEADER_SIZE) ||                                       \
     !defined(CODEC_FIELD_LENGTH_OFFSET) || !defined(CODEC_FIELD_DESCRIPTOR_OFFSET) ||                        \
-    !defined(CODEC_MAX_FIELD_DATA)
+    !defined(CODEC_MAX_FIELD_DATA) || !defined(CODEC_NMEA_MAX)
 #error "codec/protocol.h lacks a framing constant of the runtime contract"
 #endif
 #if !defined(CODEC_SAMPLE_DATA_SET_COUNT) || !defined(CODEC_SAMPLE_SETS) ||                                  \
