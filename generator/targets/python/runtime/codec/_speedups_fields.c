@@ -136,7 +136,8 @@ static int slots_of(Entry *e) {
             PyErr_Clear();
             return 0;
         }
-        int ok = Py_IS_TYPE(d, &PyMemberDescr_Type) && ((PyMemberDescrObject *)d)->d_member->type == T_OBJECT_EX &&
+        int ok = Py_IS_TYPE(d, &PyMemberDescr_Type) &&
+                 ((PyMemberDescrObject *)d)->d_member->type == T_OBJECT_EX &&
                  !(((PyMemberDescrObject *)d)->d_member->flags & READONLY) &&
                  PyType_IsSubtype(tp, ((PyDescrObject *)d)->d_type);
         if (ok) {

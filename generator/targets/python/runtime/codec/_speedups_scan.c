@@ -258,12 +258,13 @@ PyObject *setup_foreign(PyObject *self, PyObject *args) {
  * a RawPacket (SCAN_RAW), a decoded Packet (SCAN_DECODE), rows of `ctx` (SCAN_COLUMNS, a
  * Columns) or its canonical line in `ctx` (SCAN_TEXT, a Text, skip runs too); Skip events go to
  * `events`. Returns the number of bytes consumed, or -1 with an exception set. */
-Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode,
-                            void *ctx, SkipRun *skip, PyObject *events, Watch *watch) {
+Py_ssize_t scan_core(const unsigned char *p, Py_ssize_t n, Py_ssize_t base, int final, int mode, void *ctx,
+                     SkipRun *skip, PyObject *events, Watch *watch) {
     Py_ssize_t pos = 0;
     while (pos < n) {
         /* Most packets start where the last one ended. */
-        Py_ssize_t i = n - pos >= SYNC_LEN && memcmp(p + pos, SYNC, SYNC_LEN) == 0 ? pos : find_sync(p, pos, n);
+        Py_ssize_t i =
+            n - pos >= SYNC_LEN && memcmp(p + pos, SYNC, SYNC_LEN) == 0 ? pos : find_sync(p, pos, n);
         if (i < 0) {
             /* Keep a partial sync sequence at the very end (unless this is the end of input). */
             Py_ssize_t keep = n;

@@ -363,7 +363,6 @@ int text_foreign(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offse
     return 0;
 }
 
-
 /* The line of the pending skip run, if any, and the run emptied. */
 int text_skip(Text *t, SkipRun *s) {
     Py_ssize_t have = PyByteArray_GET_SIZE(s->bytes);
