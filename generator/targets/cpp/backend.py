@@ -821,7 +821,27 @@ def session_context(P: _Protocol) -> dict:
                 {"id": cmd.descriptor, "ns": ns, "title": " ".join(f["title"].split()), "calls": cs}
             )
             calls.update({c: {"set": api_sets[-1]["ns"], "command": ns, "call": x} for c, x in zip(cmd.calls, cs)})
+    shared = (proto.get("shared_data") or {}).get("set")
+    reference_times = []
+    for e in (proto.get("time") or {}).get("reference_time", []):
+        gps = e["kind"] == "gps"
+        reference_times.append(
+            {
+                "device": ident(e["device"]),
+                "set": f"0x{e['set']:02X}",
+                "shared": "true" if e["set"] == shared else "false",
+                "descriptor": f"0x{e['descriptor']:02X}",
+                "gps": "true" if gps else "false",
+                "offset": e["tow_offset"] if gps else e["offset"],
+                "size": 8 if gps else e["size"],
+                "week_offset": e["week_offset"] if gps else 0,
+                "week_size": e["week_size"] if gps else 0,
+                "ns_per_unit": 1 if gps else 1_000_000_000 // e["per_second"],
+                "field": e["field"],
+            }
+        )
     return {
+        "reference_times": reference_times,
         "session_ack": ack,
         "session_functions": [
             {"value": f.value, "name": f.name, "devices": sum(1 << devices.index(d) for d in f.devices)}

@@ -5,7 +5,7 @@
 //! Generated from `spec/mip/`; do not edit.
 
 use crate::dispatch::{Device, FieldValue};
-use crate::session::{AckSuppression, Allowance, CommandFacts, ReplyFacts};
+use crate::session::{AckSuppression, Allowance, CommandFacts, ReferenceTime, ReplyFacts};
 
 /// Descriptor of the ack/nack field that answers a command (in a packet of the command's set).
 pub const ACK_DESCRIPTOR: u8 = 0xF1;
@@ -22,6 +22,38 @@ pub fn ack_of(value: &FieldValue) -> Option<(u8, u32)> {
         _ => None,
     }
 }
+
+/// Per device, where a data packet carries the device's reference time (the spec's
+/// `time.reference_time`; the host clock model, `docs/time.md`), read by
+/// [`crate::session::reference_ns`].
+pub static REFERENCE_TIMES: &[ReferenceTime] = &[
+    // shared.reference_timestamp
+    ReferenceTime {
+        device: Device::Cv7Ins,
+        set: 0xFF,
+        shared: true,
+        descriptor: 0xD5,
+        gps: false,
+        offset: 0,
+        size: 8,
+        week_offset: 0,
+        week_size: 0,
+        ns_per_unit: 1,
+    },
+    // sensor.gps_timestamp
+    ReferenceTime {
+        device: Device::Gx5_45,
+        set: 0x80,
+        shared: false,
+        descriptor: 0x12,
+        gps: true,
+        offset: 0,
+        size: 8,
+        week_offset: 8,
+        week_size: 2,
+        ns_per_unit: 1,
+    },
+];
 
 /// The spec's name of a function selector value.
 pub fn function_name(value: u8) -> Option<&'static str> {

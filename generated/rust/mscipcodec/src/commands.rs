@@ -5,7 +5,7 @@
 //! Generated from `spec/mscip/`; do not edit.
 
 use crate::dispatch::{Device, FieldValue};
-use crate::session::{AckSuppression, CommandFacts, ReplyFacts};
+use crate::session::{AckSuppression, CommandFacts, ReferenceTime, ReplyFacts};
 
 /// Descriptor of the ack/nack field that answers a command (in a packet of the command's set).
 pub const ACK_DESCRIPTOR: u8 = 0x80;
@@ -22,6 +22,11 @@ pub fn ack_of(value: &FieldValue) -> Option<(u8, u32)> {
         _ => None,
     }
 }
+
+/// Per device, where a data packet carries the device's reference time (the spec's
+/// `time.reference_time`; the host clock model, `docs/time.md`), read by
+/// [`crate::session::reference_ns`].
+pub static REFERENCE_TIMES: &[ReferenceTime] = &[];
 
 /// The spec's name of a function selector value.
 pub fn function_name(value: u8) -> Option<&'static str> {

@@ -10,6 +10,7 @@ use std::io::{self, Read, Write};
 use std::net::{TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
+use crate::clock::ClockModel;
 use crate::dispatch::{decode_field, Device as Model, FieldValue};
 use crate::fields::{FieldItem, Fields, Packet};
 use crate::session::{
@@ -561,6 +562,7 @@ impl From<io::Error> for SessionError {
 }
 
 type PacketHandler = Box<dyn FnMut(u64, &Packet<'_>)>;
+type TimedPacketHandler = Box<dyn FnMut(u64, &Packet<'_>, Option<i64>)>;
 type FieldHandler = Box<dyn FnMut(&FieldValue, &Packet<'_>)>;
 type EventHandler = Box<dyn FnMut(&SessionEvent<'_>)>;
 type BytesHandler = Box<dyn FnMut(&[u8])>;
@@ -590,6 +592,7 @@ pub struct Device<T: Transport = Box<dyn Transport>> {
     t0: Instant,
     buf: Vec<u8>,
     on_packet: Vec<PacketHandler>,
+    on_packet_at: Vec<TimedPacketHandler>,
     on_field: Vec<(u8, u8, FieldHandler)>,
     on_event: Option<EventHandler>,
     on_bytes: Option<BytesHandler>,
@@ -637,6 +640,7 @@ impl<T: Transport> Device<T> {
             t0: Instant::now(),
             buf: vec![0; READ_MAX],
             on_packet: Vec::new(),
+            on_packet_at: Vec::new(),
             on_field: Vec::new(),
             on_event: None,
             on_bytes: None,
@@ -716,6 +720,31 @@ impl<T: Transport> Device<T> {
     /// Milliseconds since the device was opened (the session's clock).
     pub fn now_ms(&self) -> u64 {
         u64::try_from(self.t0.elapsed().as_millis()).unwrap_or(u64::MAX)
+    }
+
+    /// Nanoseconds since the device was opened (the clock model's arrival times: the time the
+    /// transport's read returned).
+    pub fn now_ns(&self) -> i64 {
+        i64::try_from(self.t0.elapsed().as_nanos()).unwrap_or(i64::MAX)
+    }
+
+    /// Starts (true: a new model) or stops the host clock model (`docs/time.md`): every data
+    /// packet that carries the device's reference time feeds it at the time its bytes were read.
+    pub fn use_clock(&mut self, on: bool) {
+        self.session
+            .use_clock(if on { Some(ClockModel::new()) } else { None });
+    }
+
+    /// The host clock model, when started ([`Device::use_clock`]).
+    pub fn clock(&self) -> Option<&ClockModel> {
+        self.session.clock()
+    }
+
+    /// Calls `handler(offset, packet, host_ns)` for every packet that is not a reply, `host_ns`
+    /// its host time by the clock model ([`Device::use_clock`]; `None` without a model, an
+    /// estimate or the reference time), in ns of [`Device::now_ns`]'s clock.
+    pub fn on_packet_at(&mut self, handler: impl FnMut(u64, &Packet<'_>, Option<i64>) + 'static) {
+        self.on_packet_at.push(Box::new(handler));
     }
 
     /// Calls `handler(offset, packet)` for every packet that is not a reply.
@@ -1169,11 +1198,13 @@ impl<T: Transport> Device<T> {
         let n = self
             .transport
             .receive(&mut self.buf, Duration::from_millis(wait_ms))?;
-        let now = self.now_ms();
+        let read_ns = self.now_ns();
+        let now = u64::try_from(read_ns / 1_000_000).unwrap_or(0);
         let Self {
             session,
             buf,
             on_packet,
+            on_packet_at,
             on_field,
             on_event,
             on_bytes,
@@ -1185,7 +1216,7 @@ impl<T: Transport> Device<T> {
             h(&buf[..n]);
         }
         if let Some(dropped) = dropping.as_mut() {
-            session.feed(&buf[..n], now, |e| match e {
+            session.feed_at(&buf[..n], now, read_ns, |e, _| match e {
                 SessionEvent::Result(r) => on_result(&r),
                 SessionEvent::Packet { packet, .. } => *dropped += packet.bytes().len() as u64,
                 SessionEvent::Skip { count, .. } => *dropped += count,
@@ -1197,7 +1228,7 @@ impl<T: Transport> Device<T> {
         }
         let model = session.device();
         let identifying = *identifying;
-        session.feed(&buf[..n], now, |e| {
+        session.feed_at(&buf[..n], now, read_ns, |e, host_ns| {
             if let Some(h) = on_event.as_mut() {
                 // the identity query of the wrong-model check is no result of the caller's
                 if !(identifying && matches!(e, SessionEvent::Result(_))) {
@@ -1209,6 +1240,9 @@ impl<T: Transport> Device<T> {
                 SessionEvent::Packet { offset, packet } => {
                     for h in on_packet.iter_mut() {
                         h(offset, &packet);
+                    }
+                    for h in on_packet_at.iter_mut() {
+                        h(offset, &packet, host_ns);
                     }
                     if !on_field.is_empty() {
                         crate::session::for_each_field(&packet, model, |d, v| {

@@ -29,6 +29,7 @@
 use core::fmt::{self, Write};
 
 use crate::builder::PacketBuilder;
+use crate::clock::ClockModel;
 use crate::commands;
 use crate::dispatch::{decode_field, write_field_json, Device, FieldValue};
 use crate::error::{DecodeError, EncodeError};
@@ -750,6 +751,78 @@ fn complete<'a>(
     r
 }
 
+/// Where a data packet carries a device's reference time (the spec's `time.reference_time`,
+/// [`commands::REFERENCE_TIMES`]): a count of units (`ns_per_unit` ns each) or a GPS time (the
+/// time of week, f64 s, at `offset`; the week, `week_size` bytes, at `week_offset`).
+#[derive(Clone, Copy, Debug)]
+pub struct ReferenceTime {
+    /// The device.
+    pub device: Device,
+    /// The field's set.
+    pub set: u8,
+    /// The set is the shared one: the field is valid in every data set.
+    pub shared: bool,
+    /// The field's descriptor.
+    pub descriptor: u8,
+    /// A GPS time (else a count).
+    pub gps: bool,
+    /// Of the count or of the time of week, in the field data.
+    pub offset: u8,
+    /// Of the count.
+    pub size: u8,
+    /// Of the week number.
+    pub week_offset: u8,
+    /// Of the week number.
+    pub week_size: u8,
+    /// Of the count.
+    pub ns_per_unit: i64,
+}
+
+fn load(data: &[u8], at: usize, size: usize) -> Option<u64> {
+    let bytes = data.get(at..at.checked_add(size)?)?;
+    let mut v = 0u64;
+    for k in 0..size {
+        let b = if crate::framing::BIG_ENDIAN {
+            bytes[k]
+        } else {
+            bytes[size - 1 - k]
+        };
+        v = (v << 8) | u64::from(b);
+    }
+    Some(v)
+}
+
+fn field_reference(r: &ReferenceTime, data: &[u8]) -> Option<i64> {
+    if !r.gps {
+        let units = load(data, usize::from(r.offset), usize::from(r.size))?;
+        return Some((units as i64).wrapping_mul(r.ns_per_unit));
+    }
+    let tow = f64::from_bits(load(data, usize::from(r.offset), 8)?);
+    let week = load(data, usize::from(r.week_offset), usize::from(r.week_size))?;
+    if !(0.0..1e7).contains(&tow) {
+        return None; // not a time of week (NaN, negative, absurd)
+    }
+    Some(week as i64 * 604_800_000_000_000 + (tow * 1e9 + 0.5) as i64)
+}
+
+/// The device's reference time (ns) in a data packet (the spec's `time.reference_time`,
+/// [`commands::REFERENCE_TIMES`]): the first field the table names for `device` (every device's
+/// for `None`); `None` when it carries none.
+pub fn reference_ns(device: Option<Device>, packet: &Packet<'_>) -> Option<i64> {
+    let set = packet.set();
+    commands::REFERENCE_TIMES
+        .iter()
+        .filter(|r| device.map_or(true, |d| d == r.device) && (r.shared || r.set == set))
+        .find_map(|r| {
+            packet.fields().find_map(|item| match item {
+                FieldItem::Field { descriptor, data } if descriptor == r.descriptor => {
+                    field_reference(r, data)
+                }
+                _ => None,
+            })
+        })
+}
+
 /// The sans-I/O session core (`docs/conformance.md` §8), with at most `N` pending commands.
 pub struct Session<const N: usize = MAX_PENDING> {
     parser: Parser,
@@ -764,6 +837,7 @@ pub struct Session<const N: usize = MAX_PENDING> {
     check_device: bool,
     next_id: u32,
     builder: PacketBuilder,
+    clock: Option<ClockModel>,
 }
 
 impl<const N: usize> Default for Session<N> {
@@ -791,6 +865,7 @@ impl<const N: usize> Session<N> {
             check_device: true,
             next_id: 1,
             builder: PacketBuilder::new(0),
+            clock: None,
         }
     }
 
@@ -935,7 +1010,55 @@ impl<const N: usize> Session<N> {
     /// else nothing is dropped. It runs after the timeouts on the bytes buffered before this
     /// call, and again after `data` is parsed. A skip run is reported in pieces of
     /// [`SKIP_PIECE`] bytes as soon as it reaches that length.
+    ///
+    /// With a clock model ([`Session::use_clock`]) every data packet is fed to it at `now` ms
+    /// (as [`Session::feed_at`] with `now` x 1000000 ns).
     pub fn feed<F: FnMut(SessionEvent<'_>)>(&mut self, data: &[u8], now: u64, mut on: F) {
+        if self.clock.is_some() {
+            let read_ns = i64::try_from(now).unwrap_or(i64::MAX / 1_000_000) * 1_000_000;
+            self.feed_at(data, now, read_ns, |e, _| on(e));
+        } else {
+            self.feed_events(data, now, on);
+        }
+    }
+
+    /// The host clock model (`docs/time.md`) this session feeds (`None`: none): from then on
+    /// every packet that is not a reply and carries the device's reference time
+    /// ([`reference_ns`]) is added to it at the host time of its bytes ([`Session::feed_at`]).
+    pub fn use_clock(&mut self, model: Option<ClockModel>) {
+        self.clock = model;
+    }
+
+    /// The host clock model, when the session feeds one.
+    pub fn clock(&self) -> Option<&ClockModel> {
+        self.clock.as_ref()
+    }
+
+    /// [`Session::feed`] with the host time the bytes were read (`read_ns`, ns of a monotonic
+    /// clock: the clock model's arrival time); `on` gets every event with, for a packet, its host
+    /// time by the clock model (`None` without a model, an estimate or the reference time).
+    pub fn feed_at<F: FnMut(SessionEvent<'_>, Option<i64>)>(
+        &mut self,
+        data: &[u8],
+        now: u64,
+        read_ns: i64,
+        mut on: F,
+    ) {
+        let mut clock = self.clock.take();
+        let device = self.queue.device;
+        self.feed_events(data, now, |e: SessionEvent<'_>| {
+            let host = match (&e, clock.as_mut()) {
+                (SessionEvent::Packet { packet, .. }, Some(c)) => {
+                    reference_ns(device, packet).and_then(|d| c.add(d, read_ns))
+                }
+                _ => None,
+            };
+            on(e, host)
+        });
+        self.clock = clock;
+    }
+
+    fn feed_events<F: FnMut(SessionEvent<'_>)>(&mut self, data: &[u8], now: u64, mut on: F) {
         self.expire(now, &mut on);
         self.look_ahead(now, &mut on);
         if !data.is_empty() {

@@ -42,6 +42,26 @@ inline constexpr std::int64_t kAckOk = 0;
 bool decode_ack(std::uint8_t set, const std::uint8_t *data, std::size_t size,
                 const std::optional<Device> &device, std::uint8_t &echo, std::int64_t &code);
 
+/// Per device, where a data packet carries the device's reference time (the spec's
+/// time.reference_time; the host clock model, docs/time.md): a count of units (ns_per_unit ns each)
+/// or a GPS time (tow, f64 s, at offset; the week, week_size bytes, at week_offset).
+struct ReferenceTime {
+    Device device;
+    std::uint8_t set; ///< the field's set
+    bool shared;      ///< the set is the shared one: the field is valid in every data set
+    std::uint8_t descriptor;
+    bool gps;
+    std::uint8_t offset; ///< of the count or of tow, in the field data
+    std::uint8_t size;   ///< of the count
+    std::uint8_t week_offset;
+    std::uint8_t week_size;
+    std::int64_t ns_per_unit; ///< of the count
+};
+inline constexpr std::array<ReferenceTime, 2> kReferenceTimes = {{
+    {Device::cv7_ins, 0xFF, true, 0xD5, false, 0, 8, 0, 0, 1}, // shared.reference_timestamp
+    {Device::gx5_45, 0x80, false, 0x12, true, 0, 8, 8, 2, 1},  // sensor.gps_timestamp
+}};
+
 /// The name of a function selector value, or nullptr.
 inline const char *function_name(std::int64_t value) {
     switch (value) {

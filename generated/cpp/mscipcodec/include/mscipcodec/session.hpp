@@ -25,6 +25,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "mscipcodec/clock.hpp"
 #include "mscipcodec/devices.hpp"
 #include "mscipcodec/dispatch.hpp"
 #include "mscipcodec/packet.hpp"
@@ -305,6 +306,50 @@ std::uint8_t expected_replies(const T &command, std::array<std::uint8_t, kMaxExp
     return expected_replies(command_facts(command), out);
 }
 
+/// The device's reference time (ns) in the payload of a packet of `set` (the spec's
+/// time.reference_time, kReferenceTimes): the first field the table names for `device` (every
+/// device's when nullopt); nullopt when it carries none.
+inline std::optional<std::int64_t> reference_ns(const std::optional<Device> &device, std::uint8_t set,
+                                                const std::uint8_t *payload, std::size_t size) {
+    for (const ReferenceTime &r : kReferenceTimes) {
+        if ((device && r.device != *device) || (!r.shared && r.set != set)) {
+            continue;
+        }
+        FieldIterator it(set, payload, size);
+        FieldEntry e;
+        while (it.next(e)) {
+            if (e.kind != FieldEntry::Kind::field || e.descriptor != r.descriptor) {
+                continue;
+            }
+            if (!r.gps) {
+                if (std::size_t(r.offset) + r.size > e.size) {
+                    continue;
+                }
+                const std::uint8_t *p = e.data + r.offset;
+                std::uint64_t bits = r.size == 8   ? load_uint<8>(p)
+                                     : r.size == 4 ? load_uint<4>(p)
+                                     : r.size == 2 ? load_uint<2>(p)
+                                                   : load_uint<1>(p);
+                return static_cast<std::int64_t>(bits) * r.ns_per_unit;
+            }
+            if (std::size_t(r.offset) + 8 > e.size || std::size_t(r.week_offset) + r.week_size > e.size) {
+                continue;
+            }
+            std::uint64_t bits = load_uint<8>(e.data + r.offset);
+            double tow = 0;
+            std::memcpy(&tow, &bits, sizeof tow);
+            if (!(tow >= 0.0 && tow < 1e7)) {
+                continue; // not a time of week (NaN, negative, absurd)
+            }
+            std::uint64_t week = r.week_size == 4 ? load_uint<4>(e.data + r.week_offset)
+                                                  : load_uint<2>(e.data + r.week_offset);
+            return static_cast<std::int64_t>(week) * 604800000000000LL +
+                   static_cast<std::int64_t>(tow * 1e9 + 0.5);
+        }
+    }
+    return std::nullopt;
+}
+
 /// The session core. N: the pending queue's capacity.
 template <std::size_t N = kDefaultMaxPending> class Session {
     static_assert(N >= 1, "a session needs room for one pending command");
@@ -422,7 +467,16 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     /// pieces of kSkipPiece bytes.
     template <class Handler>
     void feed(const std::uint8_t *data, std::size_t size, std::int64_t now, Handler &&on_event) {
+        feed_at(data, size, now, now * 1000000, on_event);
+    }
+
+    /// feed() with the host time the bytes were read (ns of a monotonic clock), for the clock
+    /// model; feed() takes now (ms) x 1000000.
+    template <class Handler>
+    void feed_at(const std::uint8_t *data, std::size_t size, std::int64_t now, std::int64_t read_ns,
+                 Handler &&on_event) {
         last_now_ = now;
+        read_ns_ = read_ns;
         expire(now, on_event);
         auto parsed = [&](const StreamEvent &e) { route(e, on_event); };
         look_ahead(now, parsed);
@@ -452,6 +506,17 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     /// lost: the caller reports them; their replies, should they come, are data).
     void forget() {
         count_ = 0;
+    }
+    /// The host clock model (docs/time.md): from now on every packet that is not a reply and carries
+    /// the device's reference time (reference_ns) feeds *clock (owned by the caller) at the host
+    /// time of its bytes (feed_at). nullptr stops it.
+    void use_clock(ClockModel *clock) {
+        clock_ = clock;
+    }
+    /// Inside a packet or field handler (or the event handler of a packet): the packet's host time
+    /// by the clock model; nullopt without a model, an estimate or the reference time.
+    std::optional<std::int64_t> host_ns() const {
+        return packet_host_;
     }
     /// Pauses (true) or resumes the packet and field handlers (the link's own operations).
     void mute_handlers(bool muted) {
@@ -618,6 +683,10 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         if (count_ > 0 && set_pending(e.packet.set()) && match(e.packet, on_event)) {
             return;
         }
+        packet_host_.reset();
+        if (clock_ != nullptr) {
+            clock_packet(e.packet);
+        }
         ev.kind = SessionEvent::Kind::packet;
         ev.offset = e.offset;
         ev.packet = e.packet;
@@ -630,6 +699,13 @@ template <std::size_t N = kDefaultMaxPending> class Session {
         }
         if (field_handlers_ > 0) {
             route_fields(e.packet);
+        }
+    }
+
+    /// The clock model's step for a data packet: its host time for the handlers.
+    MSCIPCODEC_NOINLINE void clock_packet(const PacketView &packet) {
+        if (auto d = reference_ns(opt_.device, packet.set(), packet.payload(), packet.payload_size())) {
+            packet_host_ = clock_->add(*d, read_ns_);
         }
     }
 
@@ -772,6 +848,9 @@ template <std::size_t N = kDefaultMaxPending> class Session {
     std::array<FieldHandler, kMaxHandlers> field_{};
     std::size_t field_handlers_ = 0;
     bool muted_ = false;
+    ClockModel *clock_ = nullptr;             ///< the host clock model fed (nullptr: none)
+    std::int64_t read_ns_ = 0;                ///< the host time of the bytes being fed (ns)
+    std::optional<std::int64_t> packet_host_; ///< the routed packet's host time
 };
 
 } // namespace mscipcodec

@@ -3,14 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "protopkg/clock.hpp"
+#include "protopkg/packet.hpp"
+#include "protopkg/session.hpp"
 
 namespace {
 
@@ -106,4 +110,63 @@ TEST(Clock, RestartsWhenDeviceTimeGoesBack) {
     EXPECT_EQ(model.restarts(), 0u);
     EXPECT_FALSE(model.add(1000000, 5000000000000 + 301 * 10000000LL));
     EXPECT_EQ(model.restarts(), 1u);
+}
+
+namespace {
+
+// A data packet of the test protocol's sensor set (0x80) carrying alpha's reference time (shared
+// 0xD5, ns, in the protocol's byte order).
+std::vector<std::uint8_t> stamped(std::uint64_t ns) {
+    std::uint8_t data[8];
+    for (int i = 0; i < 8; i++) {
+        data[protopkg::kBigEndian ? 7 - i : i] = static_cast<std::uint8_t>(ns >> (8 * i));
+    }
+    protopkg::PacketBuilder b(0x80);
+    EXPECT_EQ(b.add_raw_field(0xD5, data, sizeof data), protopkg::EncodeError::none);
+    const protopkg::PacketView p = b.finish();
+    return std::vector<std::uint8_t>(p.data, p.data + p.size);
+}
+
+} // namespace
+
+// The session feeds the model the reference time of every data packet at the host time of its
+// bytes (feed_at) and gives the packet handler the packet's host time (host_ns).
+TEST(Clock, SessionFeedsTheModel) {
+    for (protopkg::Device device : {protopkg::Device::alpha, protopkg::Device::beta}) {
+        protopkg::Session<>::Options o;
+        o.device = device;
+        protopkg::Session<> s(o);
+        protopkg::ClockModel model;
+        s.use_clock(&model);
+        std::vector<std::optional<std::int64_t>> hosts;
+        s.on_packet([&](const protopkg::PacketView &, std::uint64_t) { hosts.push_back(s.host_ns()); });
+        const std::int64_t host0 = 9000000000000;
+        std::int64_t a = 0;
+        for (std::int64_t k = 0; k < 500; k++) { // 10 s at 50 Hz, the device's clock 100 ppm fast, no delay
+            const std::int64_t d = 3000000000 + k * 20000000;
+            a = host0 + std::llround(static_cast<double>(d - 3000000000) / (1 + 100e-6));
+            const std::vector<std::uint8_t> p = stamped(static_cast<std::uint64_t>(d));
+            s.feed_at(p.data(), p.size(), a / 1000000, a, [](const protopkg::SessionEvent &) {});
+        }
+        ASSERT_EQ(hosts.size(), 500u);
+        if (device == protopkg::Device::beta) { // beta has no reference time in the spec: nothing fed
+            EXPECT_FALSE(model.drift_ppm().has_value());
+            EXPECT_FALSE(hosts.back().has_value());
+            continue;
+        }
+        EXPECT_FALSE(hosts.front().has_value()); // nothing before two buckets closed
+        ASSERT_TRUE(model.drift_ppm().has_value());
+        // No delay or jitter: the fit is the true line, to the whole-ns rounding of arrival times.
+        EXPECT_LT(std::fabs(*model.drift_ppm() - 100.0), 0.01);
+        ASSERT_TRUE(hosts.back().has_value());
+        EXPECT_LE(std::llabs(*hosts.back() - a), 1);
+        // A packet without the reference time has no host time; feed() takes now (ms) x 1000000.
+        const std::uint8_t other[] = {1, 2};
+        protopkg::PacketBuilder b(0x80);
+        b.add_raw_field(0x04, other, sizeof other);
+        const protopkg::PacketView p = b.finish();
+        s.feed(p.data, p.size, a / 1000000 + 20, [](const protopkg::SessionEvent &) {});
+        ASSERT_EQ(hosts.size(), 501u);
+        EXPECT_FALSE(hosts.back().has_value());
+    }
 }

@@ -122,3 +122,80 @@ fn clock_restarts_when_device_time_goes_back() {
     );
     assert_eq!(model.restarts(), 1);
 }
+
+/// A data packet of the test protocol's sensor set (0x80) carrying alpha's reference time
+/// (shared 0xD5, ns, in the protocol's byte order).
+fn stamped(ns: u64) -> Vec<u8> {
+    let data = if protocodec::framing::BIG_ENDIAN {
+        ns.to_be_bytes()
+    } else {
+        ns.to_le_bytes()
+    };
+    let mut b = protocodec::builder::PacketBuilder::new(0x80);
+    b.add_raw_field(0xD5, &data).unwrap();
+    b.finish().to_vec()
+}
+
+/// The session feeds the model the reference time of every data packet at the host time of its
+/// bytes (feed_at) and gives the packet's host time with the packet's event.
+#[test]
+fn session_feeds_the_model() {
+    use protocodec::session::{Session, SessionEvent};
+    use protocodec::Device;
+    for device in [Device::Alpha, Device::Beta] {
+        let mut s: Session = Session::new(Some(device));
+        s.use_clock(Some(ClockModel::new()));
+        let mut hosts: Vec<Option<i64>> = Vec::new();
+        let host0: i64 = 9_000_000_000_000;
+        let mut a = 0;
+        // 10 s at 50 Hz, the device's clock 100 ppm fast, no delay
+        for k in 0..500i64 {
+            let d = 3_000_000_000 + k * 20_000_000;
+            a = host0 + ((d - 3_000_000_000) as f64 / (1.0 + 100e-6)).round() as i64;
+            s.feed_at(&stamped(d as u64), (a / 1_000_000) as u64, a, |e, host| {
+                if let SessionEvent::Packet { .. } = e {
+                    hosts.push(host);
+                }
+            });
+        }
+        assert_eq!(hosts.len(), 500);
+        let model = s.clock().unwrap();
+        if device == Device::Beta {
+            // beta has no reference time in the spec: nothing fed
+            assert!(!model.estimated());
+            assert!(hosts.last().unwrap().is_none());
+            continue;
+        }
+        assert!(hosts[0].is_none(), "nothing before two buckets closed");
+        // No delay or jitter: the fit is the true line, to the whole-ns rounding of arrival times.
+        assert!((model.drift_ppm().unwrap() - 100.0).abs() < 0.01);
+        let last = hosts.last().unwrap().expect("the last packet's host time");
+        assert!((last - a).abs() <= 1, "{last} vs {a}");
+        // feed() feeds the model at now (ms) x 1000000; a packet without the reference time has
+        // no host time and feeds nothing.
+        let mut b = protocodec::builder::PacketBuilder::new(0x80);
+        b.add_raw_field(0x04, &[1, 2]).unwrap();
+        let other = b.finish().to_vec();
+        let mut seen = Vec::new();
+        s.feed_at(
+            &other,
+            (a / 1_000_000) as u64 + 20,
+            a + 20_000_000,
+            |e, host| {
+                if let SessionEvent::Packet { .. } = e {
+                    seen.push(host);
+                }
+            },
+        );
+        assert_eq!(seen, vec![None]);
+        let mut packets = 0;
+        let next: i64 = 3_000_000_000 + 500 * 20_000_000;
+        s.feed(&stamped(next as u64), (a / 1_000_000) as u64 + 20, |e| {
+            if let SessionEvent::Packet { .. } = e {
+                packets += 1;
+            }
+        });
+        assert_eq!(packets, 1);
+        assert_eq!(s.clock().unwrap().restarts(), 0);
+    }
+}

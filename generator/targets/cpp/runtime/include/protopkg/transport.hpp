@@ -170,11 +170,14 @@ class Connection {
         : transport_(transport), session_(options), clock_(std::move(clock)), identified_(!options.device) {
         if (!clock_) {
             const auto t0 = std::chrono::steady_clock::now();
-            clock_ = [t0]() {
-                return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+            clock_ns_ = [t0]() {
+                return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
                                                      std::chrono::steady_clock::now() - t0)
                                                      .count());
             };
+            clock_ = [ns = clock_ns_]() { return ns() / 1000000; };
+        } else {
+            clock_ns_ = [ms = clock_]() { return ms() * 1000000; };
         }
     }
 
@@ -183,6 +186,11 @@ class Connection {
     }
     std::int64_t now_ms() const {
         return clock_();
+    }
+    /// The host time (ns of the monotonic clock; the injected clock's ms x 1000000) at which the
+    /// bytes fed to the session were read: the clock model's arrival times (session().use_clock).
+    std::int64_t now_ns() const {
+        return clock_ns_();
     }
     /// Called for every event (results, packets that are not replies, skip runs), in order.
     void on_event(std::function<void(const SessionEvent &)> handler) {
@@ -444,13 +452,15 @@ class Connection {
             call.io_error = true;
             return false;
         }
-        session_.feed(buf_.data(), static_cast<std::size_t>(n), now_ms(), [&](const SessionEvent &e) {
-            if (e.kind == SessionEvent::Kind::result) {
-                call.result = *e.result;
-                done = true;
-            }
-            deliver(e);
-        });
+        const std::int64_t read_ns = now_ns();
+        session_.feed_at(buf_.data(), static_cast<std::size_t>(n), read_ns / 1000000, read_ns,
+                         [&](const SessionEvent &e) {
+                             if (e.kind == SessionEvent::Kind::result) {
+                                 call.result = *e.result;
+                                 done = true;
+                             }
+                             deliver(e);
+                         });
         return true;
     }
     void deliver(const SessionEvent &e) {
@@ -477,6 +487,7 @@ class Connection {
     Transport &transport_;
     Session<1> session_;
     Clock clock_;
+    Clock clock_ns_; ///< the same clock in ns
     std::function<void(const SessionEvent &)> on_event_;
     std::array<std::uint8_t, 4096> buf_{};
     LinkOptions link_ = no_reconnect();
