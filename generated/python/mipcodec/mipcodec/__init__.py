@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "7c416cbb43e3775a"
+SPEC_HASH = "9ea96c31bc3bfd6c"
 
 __all__ = [
     "SPEC_HASH",
