@@ -485,7 +485,10 @@ def check_starting_values(
     ctx: Context, sf: SpecFile, path: tuple, functions: list[str] | None, params: list[dict], devices: list, owner: str
 ) -> None:
     """Every value a setting holds starts somewhere the spec records: a `default` the manual of
-    each device states, else a `plausible` value with its reason (docs/spec-format.md)."""
+    each device states, else a `plausible` value with its reason (docs/spec-format.md). Checked
+    for a protocol the simulator serves (one with a `simulation` section)."""
+    if ctx.pf.data.get("simulation") is None:
+        return
     for i, q in enumerate(params):
         if q not in held_params(functions, params) or q.get("plausible"):
             continue

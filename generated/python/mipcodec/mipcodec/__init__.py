@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "9ea96c31bc3bfd6c"
+SPEC_HASH = "f5379dd3be8d629c"
 
 __all__ = [
     "SPEC_HASH",
