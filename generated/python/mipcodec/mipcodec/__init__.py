@@ -124,7 +124,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "f5379dd3be8d629c"
+SPEC_HASH = "e4dabd815cfc4b0e"
 
 __all__ = [
     "SPEC_HASH",

@@ -1754,10 +1754,10 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
         filter.WheeledVehicleConstraintControl: {"enable": 0},
         filter.GnssAntennaCalibrationControl: {"enable": 0, "max_offset": 0.1},
         gnss.SignalConfiguration: {
-            "gps_enable": 7,
-            "glonass_enable": 3,
-            "galileo_enable": 7,
-            "beidou_enable": 7,
+            "gps_enable": 5,
+            "glonass_enable": 1,
+            "galileo_enable": 5,
+            "beidou_enable": 5,
             "reserved": [0, 0, 0, 0],
         },
         gnss.SpartnConfiguration: {

@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "df5d5a96675e4896"
+SPEC_HASH = "e00f089b1dbfea5f"
 
 __all__ = [
     "SPEC_HASH",
