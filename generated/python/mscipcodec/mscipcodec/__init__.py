@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "e00f089b1dbfea5f"
+SPEC_HASH = "f4d20d109a49f804"
 
 __all__ = [
     "SPEC_HASH",

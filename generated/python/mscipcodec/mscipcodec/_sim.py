@@ -175,7 +175,7 @@ FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
         imu_config.SelectSensors: {"reserved": 0, "sensors": [129, 130]},
         imu_config.AccelRange: {"range": 0},
         imu_config.GyroRange: {"range": 1},
-        imu_config.DataOnOff: {"control": 1},
+        imu_config.DataOnOff: {"control": 0},
         imu_config.XtrigOnOff: {"control": 0},
         imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
         imu_config.AuxAccelRange: {"range": 0},
