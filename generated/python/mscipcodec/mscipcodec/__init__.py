@@ -94,7 +94,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "f4d20d109a49f804"
+SPEC_HASH = "086e92d74b75e52a"
 
 __all__ = [
     "SPEC_HASH",
