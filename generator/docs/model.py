@@ -385,7 +385,11 @@ class Docs:
                                 cells.append(code(default_value_text(q, types)))
                             elif q.get("plausible"):
                                 pl = q["plausible"]
-                                shown = "zero" if pl["value"] is None else str(pl["value"])
+                                shown = (
+                                    "zero"
+                                    if pl["value"] is None
+                                    else default_value_text({"type": q["type"], "default": pl}, types)
+                                )
                                 cells.append("plausible " + code(shown))
                                 plausible.append(f"{link} {code(q['name'])} = {code(shown)}: {esc(pl['why'])}")
                             else:
