@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 from ..corpus import resolve_field
 from ..errata import KIND_TITLES
 from ..model import per_device
+from ..passes.params import held_params as _held_params
 from ..targets import TARGETS
 from . import svg
 
@@ -99,18 +100,8 @@ def source_text(s: dict) -> str:
 
 
 def held_params(v: dict) -> list[dict]:
-    """The values a setting command's variant holds: the parameters sent for write that do not
-    select which setting (a key is sent, and required, for read too), less the counts of lists."""
-    if "write" not in (v.get("functions") or []):
-        return []
-    counts = {(q.get("count") or {}).get("param") for q in v["params"]}  # follow their list's length
-    return [
-        q
-        for q in v["params"]
-        if "write" in (q.get("functions") or [])
-        and not ("read" in q["functions"] and "read" not in (q.get("optional_for") or []))
-        and q["name"] not in counts
-    ]
+    """The values a setting command's variant holds (generator/passes/params.py held_params)."""
+    return _held_params(v.get("functions"), v["params"])
 
 
 def default_value_text(q: dict, types: dict) -> str:
@@ -394,10 +385,13 @@ class Docs:
                                 cells.append(code(default_value_text(q, types)))
                             elif q.get("plausible"):
                                 pl = q["plausible"]
-                                cells.append("plausible " + code(str(pl["value"])))
-                                plausible.append(
-                                    f"{link} {code(q['name'])} = {code(str(pl['value']))}: {esc(pl['why'])}"
+                                shown = (
+                                    "zero"
+                                    if pl["value"] is None
+                                    else default_value_text({"type": q["type"], "default": pl}, types)
                                 )
+                                cells.append("plausible " + code(shown))
+                                plausible.append(f"{link} {code(q['name'])} = {code(shown)}: {esc(pl['why'])}")
                             else:
                                 cells.append("assumed 0")
                                 assumed[dev["id"]].append(f"{link} {code(q['name'])}")
@@ -418,16 +412,16 @@ class Docs:
             pg.p("No manual of this protocol states a factory value.")
         pg.h(2, "Plausible values")
         pg.p(
-            "Settings whose factory value no manual states but whose zero the device cannot hold (a baud rate): "
-            "the simulated device starts from the spec's `plausible` value, for the reason given."
+            "Settings whose factory value no manual states: the simulated device starts from the spec's "
+            "`plausible` value, for the reason given (`zero`: the type's zero, a union's first member or an "
+            "empty string, where no value can be written)."
         )
         pg.items(sorted(set(plausible)) or ["none"])
         pg.h(2, "Settings without a stated default")
         pg.p(
-            "Every value a setting command holds whose factory value no manual states: the simulated device "
-            "assumes zero for it (0, false, an empty list; an enum without a zero value: its first value) until a "
-            "write changes it (docs/conformance.md section 9). These are "
-            "assumptions, not facts; a real device may start elsewhere."
+            "Every value a setting command holds whose factory value no manual states and that has no plausible "
+            "value: the generator refuses such a spec (generator/passes/params.py check_starting_values), so "
+            "each list is empty."
         )
         for dev in devices:
             pg.h(3, f"{esc(dev['title'])}: {len(assumed[dev['id']])} assumed values")

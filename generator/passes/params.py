@@ -444,6 +444,11 @@ def _plausible(
     source = pl.get("source")
     if source is not None and source["manual"] not in ctx.manual_devices:
         ctx.err(sf, where + ("source", "manual"), f"unknown manual '{source['manual']}'", "a protocol manual")
+    if "value" not in pl:  # the type's zero (a union's, a string's: no value to write), for the reason given
+        if pf is None or "write" not in pf:
+            ctx.err(sf, where, f"{owner}: plausible value of {p['name']}: only a setting's parameters have one", "none")
+            return None
+        return {"value": None, "why": " ".join(pl["why"].split()), "source": source}
     # Checked as a default would be (type, count), then kept apart from it.
     shaped = _default(
         ctx,
@@ -459,6 +464,44 @@ def _plausible(
     if shaped is None:
         return None
     return {"value": shaped["value"], "why": " ".join(pl["why"].split()), "source": source}
+
+
+def held_params(functions: list[str] | None, params: list[dict]) -> list[dict]:
+    """The values a setting command's layout holds: the parameters sent for write that do not
+    select which setting (a key is sent, and required, for read too), less the counts of lists."""
+    if "write" not in (functions or []):
+        return []
+    counts = {(q.get("count") or {}).get("param") for q in params}  # follow their list's length
+    return [
+        q
+        for q in params
+        if "write" in (q.get("functions") or [])
+        and not ("read" in q["functions"] and "read" not in (q.get("optional_for") or []))
+        and q["name"] not in counts
+    ]
+
+
+def check_starting_values(
+    ctx: Context, sf: SpecFile, path: tuple, functions: list[str] | None, params: list[dict], devices: list, owner: str
+) -> None:
+    """Every value a setting holds starts somewhere the spec records: a `default` the manual of
+    each device states, else a `plausible` value with its reason (docs/spec-format.md). Checked
+    for a protocol the simulator serves (one with a `simulation` section)."""
+    if ctx.pf.data.get("simulation") is None:
+        return
+    for i, q in enumerate(params):
+        if q not in held_params(functions, params) or q.get("plausible"):
+            continue
+        stated = (q.get("default") or {}).get("devices", [])
+        missing = [d for d in devices if d not in stated]
+        if missing:
+            ctx.err(
+                sf,
+                path + (i,),
+                f"{owner}: setting parameter {q['name']} has no default stated for {', '.join(missing)} "
+                "and no plausible value",
+                "plausible: {value, why, source} (the value the device starts with and the reason)",
+            )
 
 
 def _default_item(ctx: Context, sf: SpecFile, where: tuple, owner: str, name: str, tref: dict, item):

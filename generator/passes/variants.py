@@ -8,7 +8,7 @@ of its first variant (docs/ir.md).
 from __future__ import annotations
 
 from .context import Context, SpecFile
-from .params import build_params
+from .params import build_params, check_starting_values
 from .sizes import layout_size
 
 
@@ -124,9 +124,14 @@ def _layout(ctx: Context, sf: SpecFile, path: tuple, src: dict, set_name: str, f
                 f"{owner}: variant for device '{device}' cites only manuals of {', '.join(devs)}",
                 "sources from that device's manual",
             )
+    devices = [device] if device else ctx.devices_of(sources)
+    if layout_name is None:
+        check_starting_values(ctx, sf, path + ("params",), functions, params, devices, owner)
+    elif shared is not None:
+        check_starting_values(ctx, lsf, lpath + ("params",), functions, params, devices, owner)
     return {
         "device": device,
-        "devices": [device] if device else ctx.devices_of(sources),
+        "devices": devices,
         "sources": sources,
         "notes": src.get("notes", []) if device else [],
         "functions": functions,

@@ -7,7 +7,8 @@
    bool and a baud rate no device has), and a read after it reports the same setting.
 2. Plausible values: no read of a simulated setting reports a placeholder the device cannot hold
    (an enum value outside its enum, a baud rate outside the port's rates, a noise 1-sigma that is
-   not greater than 0).
+   not greater than 0, a soft iron matrix of zeros, a sensor range selector the range table does
+   not list).
 3. Identity: the model number the simulated Device Information reports selects the device's own
    Device Status structure.
 """
@@ -156,6 +157,8 @@ def _holdable(value, q: dict, types: dict, rates: set) -> bool:
         return all(isinstance(x, Enum) for x in items)
     if q.get("units") == "bit/s" and rates:
         return all(int(x) in rates for x in items)
+    if q["description"].startswith("Soft iron matrix"):  # multiplies the reading (3dm-cv7-ins-docs.txt:7397)
+        return any(float(x) != 0.0 for x in items)  # all zeros would erase the magnetic field
     if "noise 1-sigma" in q["description"]:  # "must be greater than 0.0" (3dm-gx5-45-dcp.txt:1792, cv7:8339)
         return all(float(x) > 0.0 for x in items)
     return True
@@ -254,3 +257,16 @@ def test_the_ms_imu3020_reads_a_decimation_and_a_baud_rate_it_can_hold() -> None
                 got[type(entry.value).__name__] = entry.value
     assert got["SampleRateResponse"].decimation >= 1
     assert int(got["UartBaudRateResponse"].baud_rate) in (9600, 19200, 115200, 230400, 460800, 921600)
+
+
+def test_the_cv7_reads_a_sensor_range_selector_its_range_table_lists() -> None:
+    """The CV7-INS range table (3dm-cv7-ins-docs.txt:1502) lists the accelerometer selectors
+    2 = 4g, 3 = 8g, 4 = 16g and the gyro selector 2; "Using values other than those specified may
+    result in a NACK" (line 7619), so a fresh device's selector is one of them, never 0."""
+    read = FUNCTIONS["read"]
+    sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    listed = {"ACCEL": {2, 3, 4}, "GYRO": {2}}
+    for sensor, selectors in listed.items():
+        kind = pkg.types.SensorRangeType[sensor]
+        (reply,) = _values(sim, pkg.threedm.SensorRange(function=read, sensor=kind))
+        assert reply.setting in selectors, (sensor, reply.setting)

@@ -246,3 +246,34 @@ def test_a_counted_struct_list_default_is_records_of_every_member(tmp_path):
     assert [e.split("error: ")[1] for e in errors(ctx)] == [
         "base.cmd: default of items: {'a': 3} is not a value of Pair (expected a record naming every member: a, b)"
     ]
+
+
+def test_a_simulated_setting_starts_from_a_default_or_a_plausible_value(tmp_path):
+    # Issue 51: every value a setting holds starts from a value the spec records with its reason,
+    # never from an unexplained zero; checked where the simulator serves the protocol.
+    from tiny_spec import PROTOCOL
+
+    simulated = PROTOCOL + (
+        "simulation:\n  nack: {unknown_descriptor: a, unknown_set: b, invalid_parameter: c, failed: d}\n"
+    )
+    field = (
+        "  - id: 0x01\n    name: cmd\n    role: command\n    title: Cmd\n    functions: [write, read]\n"
+        "    sources: [{manual: a.txt, line: 4}, {manual: b.txt, line: 4}]\n    params:\n"
+        "      - {name: key, type: u8, functions: [write, read]}\n"
+        "      - {name: stated, type: u8, functions: [write], default: {value: 1, source: {manual: a.txt, line: 5}}}\n"
+        "      - {name: none, type: u8, functions: [write]}\n"
+        "      - {name: offset, type: float, functions: [write], plausible: {why: 'zero: no offset applied'}}\n"
+    )
+    (tmp_path / "sim").mkdir()
+    (tmp_path / "plain").mkdir()
+    ctx = build(tmp_path / "sim", {"protocol.yaml": simulated, "base.yaml": command_set(field)}, "variants")
+    # `key` selects the setting (read sends it); `stated` lacks a value on dev_b only; `offset`
+    # starts from its type's zero for the reason recorded.
+    assert [e.split("error: ")[1].split(" (expected")[0] for e in errors(ctx)] == [
+        "base.cmd: setting parameter stated has no default stated for dev_b and no plausible value",
+        "base.cmd: setting parameter none has no default stated for dev_a, dev_b and no plausible value",
+    ]
+    offset = ctx.sets[0]["fields"][0]["variants"][0]["params"][3]
+    assert offset["plausible"] == {"value": None, "why": "zero: no offset applied", "source": None}
+    ctx = build(tmp_path / "plain", {"base.yaml": command_set(field)}, "variants")
+    assert errors(ctx) == []

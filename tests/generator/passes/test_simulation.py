@@ -12,9 +12,9 @@ COMMANDS = """\
     functions: [write]
     sources: [{manual: a.txt, line: 4}]
     params:
-      - {name: desc_set, type: u8, functions: [write]}
-      - {name: count, type: u8, functions: [write]}
-      - {name: entries, type: Rate, count: count, functions: [write]}
+      - {name: desc_set, type: u8, functions: [write], plausible: {why: "zero, the fixture's start"}}
+      - {name: count, type: u8, functions: [write], plausible: {why: "zero, the fixture's start"}}
+      - {name: entries, type: Rate, count: count, functions: [write], plausible: {why: "zero, the fixture's start"}}
   - id: 0x02
     name: stream_control
     role: command
@@ -22,8 +22,8 @@ COMMANDS = """\
     functions: [write]
     sources: [{manual: a.txt, line: 5}]
     params:
-      - {name: selector, type: u8, functions: [write]}
-      - {name: enable, type: bool, functions: [write]}
+      - {name: selector, type: u8, functions: [write], plausible: {why: "zero, the fixture's start"}}
+      - {name: enable, type: bool, functions: [write], plausible: {why: "zero, the fixture's start"}}
 """
 TYPES = """\
 structs:
@@ -230,8 +230,8 @@ AIDING_COMMAND = """\
     functions: [write]
     sources: [{manual: a.txt, line: 9}]
     params:
-      - {name: source, type: FilterState, functions: [write]}
-      - {name: enable, type: bool, functions: [write]}
+      - {name: source, type: FilterState, functions: [write], plausible: {why: "zero, the fixture's start"}}
+      - {name: enable, type: bool, functions: [write], plausible: {why: "zero, the fixture's start"}}
 """
 ACTIONS = """\
   actions:

@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "cbe3e91838bfaeff"
+SPEC_HASH = "d1a289fc4871c01b"
 
 __all__ = [
     "SPEC_HASH",

@@ -170,8 +170,14 @@ STATUS: Dict[Any, Dict[str, Any]] = {}
 FACTORY: Dict[str, Dict[Any, Dict[str, Any]]] = {
     "ms_imu3020": {
         imu_config.UartBaudRate: {"baud_rate": 115200},
+        imu_config.Filter: {"bandwidth": 0},
         imu_config.SampleRate: {"decimation": 1},
-        imu_config.SelectSensors: {"sensors": [129, 130]},
+        imu_config.SelectSensors: {"reserved": 0, "sensors": [129, 130]},
+        imu_config.AccelRange: {"range": 0},
+        imu_config.GyroRange: {"range": 1},
+        imu_config.DataOnOff: {"control": 0},
+        imu_config.XtrigOnOff: {"control": 0},
         imu_config.SelectSensorsRevB: {"sensors": [129, 130]},
+        imu_config.AuxAccelRange: {"range": 0},
     },
 }
