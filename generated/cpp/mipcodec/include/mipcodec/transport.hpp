@@ -445,6 +445,9 @@ class Connection {
             call.io_error = true;
             return false;
         }
+        if (internal_) {
+            dropped_ += static_cast<std::uint64_t>(n); // data, garbage and the reply alike
+        }
         session_.feed(buf_.data(), static_cast<std::size_t>(n), now_ms(), [&](const SessionEvent &e) {
             if (e.kind == SessionEvent::Kind::result) {
                 call.result = *e.result;
@@ -455,12 +458,7 @@ class Connection {
         return true;
     }
     void deliver(const SessionEvent &e) {
-        if (internal_) { // the connection's own operation: counted and dropped
-            if (e.kind == SessionEvent::Kind::packet) {
-                dropped_ += e.packet.size;
-            } else if (e.kind == SessionEvent::Kind::skip) {
-                dropped_ += e.count;
-            }
+        if (internal_) { // the connection's own operation: dropped (its bytes counted in pump)
             return;
         }
         if (on_event_) {
