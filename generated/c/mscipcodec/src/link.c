@@ -25,10 +25,7 @@ static void on_event(void *ctx, const mscipc_session_event_t *event) {
         link->result.error = link->error;
         link->done = true;
     }
-    if (link->internal) { /* the link's own operation: counted and dropped */
-        if (event->kind != MSCIPC_SESSION_RESULT) {
-            link->dropped += event->stream->length;
-        }
+    if (link->internal) { /* the link's own operation: dropped (its bytes counted as read) */
         return;
     }
     if (link->on_event) {
@@ -74,6 +71,9 @@ int mscipc_link_pump(mscipc_link_t *link, uint32_t wait_ms) {
             return 0; /* reconnected: the caller goes on receiving */
         }
         return n;
+    }
+    if (link->internal) {
+        link->dropped += (size_t)n; /* data, garbage and the reply alike */
     }
     mscipc_session_feed(&link->session, link->rx, (size_t)n, link->transport.now_ms(link->transport.ctx));
     return n;
@@ -413,6 +413,9 @@ mscipc_result_kind_t mscipc_link_run(mscipc_link_t *link, const mscipc_field_val
         if (n < 0) {
             return link_lost(link, "the transport failed", result);
         }
+        if (link->internal) {
+            link->dropped += (size_t)n; /* data, garbage and the reply alike */
+        }
         mscipc_session_feed(&link->session, link->rx, (size_t)n, link->transport.now_ms(link->transport.ctx));
     }
     if (!link->internal && !link->identified && link->result.kind == MSCIPC_RESULT_NACK &&
@@ -581,6 +584,11 @@ mscipc_result_kind_t mscipc_link_to_idle(mscipc_link_t *link) {
     for (attempt = 1; attempt <= MSCIPC_LINK_IDLE_ATTEMPTS; attempt++) {
         link->dropped = 0;
         kind = run_internal(link, &idle, NULL);
+        if (kind == MSCIPC_RESULT_TRANSPORT && !link->internal) {
+            /* the application's idle command went with the port: lost, and reconnected as for
+               its other commands (not retried) */
+            return link_lost(link, "the transport failed", NULL);
+        }
         if (kind == MSCIPC_RESULT_ACK) {
             line_init(&l, link);
             line_add(&l, "link: idle: ACK on attempt ");
@@ -709,6 +717,7 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
     size_t n;
     size_t i;
     mscipc_result_kind_t kind;
+    uint32_t configured;
     assert(link != NULL);
     if (!bare_command(link, &link->options.ping, &ping)) {
         return mscipc_link_fail(link, MSCIPC_RESULT_REFUSED, "the protocol has no ping command");
@@ -717,6 +726,7 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
     if (kind != MSCIPC_RESULT_TIMEOUT || link->port.set_baud == NULL) {
         return kind; /* an answer, or no baud rate to change (TCP) */
     }
+    configured = link->port.baud;
     n = candidate_rates(link, rates, sizeof rates / sizeof rates[0]);
     i = n > 0 && rates[0] == link->port.baud ? 0 : (size_t)-1;
     for (;;) {
@@ -727,6 +737,9 @@ mscipc_result_kind_t mscipc_link_find_baud(mscipc_link_t *link) {
             line_init(&l, link);
             line_add(&l, "link: baud: no answer at any rate");
             log_line(link, &l);
+            if (link->port.baud != configured && link->port.set_baud(link->port.ctx, configured) == 0) {
+                link->port.baud = configured; /* back at the configured rate */
+            }
             return mscipc_link_fail(link, MSCIPC_RESULT_TIMEOUT, "no answer at any baud rate");
         }
         line_init(&l, link);

@@ -181,6 +181,11 @@ Call Connection::to_idle() {
         if (!have) {
             return refused(call, "the idle command does not decode");
         }
+        if (call.io_error && !internal_) {
+            // the application's idle command went with the port: lost, and reconnected as for its
+            // other commands (not retried)
+            return lost_call(call);
+        }
         if (!call.io_error && call.result.status == Status::ack) {
             log("link: idle: ACK on attempt " + std::to_string(attempt) + " of " +
                 std::to_string(kLinkIdleAttempts) + " (" + std::to_string(dropped_) + " bytes dropped)");
@@ -227,12 +232,16 @@ Call Connection::find_baud() {
         return call;
     }
     const std::vector<std::uint32_t> rates = candidate_rates();
+    const std::uint32_t configured = transport_.baud();
     std::size_t i = 0;
     for (;;) {
         const std::uint32_t current = transport_.baud();
         const std::size_t next = i + 1;
         if (next >= rates.size()) {
             log("link: baud: no answer at any rate");
+            if (transport_.baud() != configured) {
+                (void)transport_.set_baud(configured); // back at the configured rate
+            }
             call.io_error = false;
             call.result.status = Status::timeout;
             return call;

@@ -1088,7 +1088,7 @@ impl<T: Transport> Device<T> {
     }
 
     /// Flushes the input: the transport's buffer, what arrives during a quiet time, and the
-    /// parser's partial packet (all counted as dropped).
+    /// parser's partial packet (its bytes were counted as dropped when they were read).
     fn flush_input(&mut self) -> Result<(), SessionError> {
         self.transport.clear_input()?;
         let end = self.now_ms().saturating_add(QUIET_MS);
@@ -1101,20 +1101,7 @@ impl<T: Transport> Device<T> {
         }
         self.transport.clear_input()?;
         let now = self.now_ms();
-        let mut dropped = 0;
-        self.session.close(now, |e| {
-            dropped += match e {
-                SessionEvent::Packet { packet, .. } => packet.bytes().len() as u64,
-                SessionEvent::Skip { count, .. } => count,
-                SessionEvent::Nmea { bytes, .. } | SessionEvent::Rtcm { bytes, .. } => {
-                    bytes.len() as u64
-                }
-                SessionEvent::Result(_) => 0,
-            }
-        });
-        if let Some(d) = self.dropping.as_mut() {
-            *d += dropped;
-        }
+        self.session.close(now, |_| {});
         Ok(())
     }
 
@@ -1216,12 +1203,10 @@ impl<T: Transport> Device<T> {
             h(&buf[..n]);
         }
         if let Some(dropped) = dropping.as_mut() {
-            session.feed_at(&buf[..n], now, read_ns, |e, _| match e {
-                SessionEvent::Result(r) => on_result(&r),
-                SessionEvent::Packet { packet, .. } => *dropped += packet.bytes().len() as u64,
-                SessionEvent::Skip { count, .. } => *dropped += count,
-                SessionEvent::Nmea { bytes, .. } | SessionEvent::Rtcm { bytes, .. } => {
-                    *dropped += bytes.len() as u64
+            *dropped += n as u64; // data, garbage and the reply alike
+            session.feed_at(&buf[..n], now, read_ns, |e, _| {
+                if let SessionEvent::Result(r) = e {
+                    on_result(&r);
                 }
             });
             return Ok(());

@@ -454,6 +454,9 @@ class Connection {
             return false;
         }
         const std::int64_t read_ns = now_ns();
+        if (internal_) {
+            dropped_ += static_cast<std::uint64_t>(n); // data, garbage and the reply alike
+        }
         session_.feed_at(buf_.data(), static_cast<std::size_t>(n), read_ns / 1000000, read_ns,
                          [&](const SessionEvent &e) {
                              if (e.kind == SessionEvent::Kind::result) {
@@ -465,13 +468,7 @@ class Connection {
         return true;
     }
     void deliver(const SessionEvent &e) {
-        if (internal_) { // the connection's own operation: counted and dropped
-            if (e.kind == SessionEvent::Kind::packet || e.kind == SessionEvent::Kind::nmea ||
-                e.kind == SessionEvent::Kind::rtcm) {
-                dropped_ += e.packet.size;
-            } else if (e.kind == SessionEvent::Kind::skip) {
-                dropped_ += e.count;
-            }
+        if (internal_) { // the connection's own operation: dropped (its bytes counted in pump)
             return;
         }
         if (on_event_) {

@@ -1,12 +1,14 @@
 // Getting through (src/link.c, docs/conformance.md section 8 "Getting through") on the rendered
-// test protocol (tests/runtime_specs/: its link section names ping, alpha's main port 9600, 115200
-// (default), 921600 baud, 3 idle attempts by default; it has no idle command: these tests give the
-// ping its place through the options): to idle while the device streams, the baud rate found, a
-// lost port reopened with the configuration re-sent, and the log lines. A fake device over a fake clock:
-// every read of a streaming device returns one data packet 10 ms later.
+// test protocol (tests/runtime_specs/): the link corpus tests/link/cases.txt (its path LINK_CASES
+// from CMakeLists.txt; the format and the fake device's rules in tests/link/README.md), as the C++
+// and Python runtimes run it, then the cases of this API only. The test protocol has no idle
+// command: a case gives the ping its place through the options unless it says `set idle none`.
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,7 @@ struct Device {
     int unanswered = 0;      // commands left that get no reply
     uint32_t answers_at = 0; // the only baud rate the device answers at (0: any)
     uint32_t baud = 115200;  // the host side's rate
+    bool has_baud = true;    // false: a port without a baud rate (TCP)
     bool lost = false;       // the port is gone
     int reopen_failures = 0; // reopens that fail before one succeeds
     int flushes = 0;
@@ -141,11 +144,14 @@ struct Fixture {
     Device dev;
     codec_link_t link;
     codec_port_t port;
-    explicit Fixture(uint32_t reconnect_ms = CODEC_LINK_DEFAULT_RECONNECT_MS) {
+    explicit Fixture(uint32_t reconnect_ms = CODEC_LINK_DEFAULT_RECONNECT_MS,
+                     codec_device_t device = CODEC_DEVICE_ALPHA, uint32_t baud = 115200,
+                     bool ping_as_idle = true) {
+        dev.baud = baud;
         codec_transport_t t{&dev, dev_read, dev_write, dev_now};
         codec_session_config_t c;
         codec_session_config_init(&c);
-        c.device = CODEC_DEVICE_ALPHA;
+        c.device = device;
         c.on_event = dev_event;
         c.ctx = &dev;
         EXPECT_EQ(codec_link_init(&link, &t, &c), CODEC_OK);
@@ -157,168 +163,270 @@ struct Fixture {
         port.address = dev_address;
         port.reason = dev_reason;
         port.sleep_ms = dev_sleep;
-        port.baud = 115200;
+        port.baud = baud;
         codec_link_options_t o;
         codec_link_options_init(&o);
         o.log = dev_log;
         o.log_ctx = &dev;
         o.reconnect_ms = reconnect_ms;
-        o.idle = o.ping; // the ping in the idle command's place
+        if (ping_as_idle) {
+            o.idle = o.ping; // the ping in the idle command's place
+        }
         codec_link_attach(&link, &port, &o);
     }
 };
 
-codec_field_value_t command(uint8_t descriptor, std::vector<uint8_t> data) {
+struct LinkCase {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> set;
+    std::vector<std::vector<std::string>> steps;
+    std::vector<std::string> log;
+    std::vector<std::pair<std::string, std::string>> expect;
+};
+
+std::vector<std::string> words(const std::string &text) {
+    std::istringstream in(text);
+    std::vector<std::string> out;
+    std::string w;
+    while (in >> w) {
+        out.push_back(w);
+    }
+    return out;
+}
+
+std::vector<LinkCase> read_cases() {
+    std::ifstream in(LINK_CASES);
+    EXPECT_TRUE(in.good()) << LINK_CASES;
+    std::vector<LinkCase> cases;
+    LinkCase c;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') {
+            continue;
+        }
+        const size_t space = line.find(' ');
+        const std::string what = line.substr(0, space);
+        const std::string rest = space == std::string::npos ? "" : line.substr(space + 1);
+        if (what == "case") {
+            c = LinkCase();
+            c.name = rest;
+        } else if (what == "set") {
+            const size_t sp = rest.find(' ');
+            c.set.emplace_back(rest.substr(0, sp), sp == std::string::npos ? "" : rest.substr(sp + 1));
+        } else if (what == "step") {
+            c.steps.push_back(words(rest));
+        } else if (what == "log") {
+            c.log.push_back(rest);
+        } else if (what == "end") {
+            cases.push_back(c);
+        } else {
+            c.expect.emplace_back(what, rest);
+        }
+    }
+    return cases;
+}
+
+// {data N} and {ack N}: N data or ACK packets' bytes.
+std::string expanded(std::string line) {
+    for (const char *what : {"{data ", "{ack "}) {
+        size_t at;
+        while ((at = line.find(what)) != std::string::npos) {
+            const size_t close = line.find('}', at);
+            const size_t n = std::stoul(line.substr(at + strlen(what), close - at - strlen(what)));
+            const size_t size =
+                what[1] == 'd' ? data_packet().size() : build(0x01, 0xF1, {0x01, 0x00}).size();
+            line.replace(at, close - at + 1, std::to_string(n * size));
+        }
+    }
+    return line;
+}
+
+codec_field_value_t gain_command(codec_function_t function, bool has_gain, uint16_t gain) {
     codec_field_value_t v;
-    EXPECT_EQ(codec_decode_field(0x01, descriptor, data.data(), data.size(), CODEC_DEVICE_ALPHA, &v, NULL),
-              CODEC_OK);
+    memset(&v, 0, sizeof v);
+    v.id = CODEC_FIELD_CONTROL_GAIN;
+    v.u.control_gain.function = function;
+    v.u.control_gain.has_gain = has_gain;
+    v.u.control_gain.gain = gain;
     return v;
 }
 
-TEST(LinkGettingThrough, IdleWhileStreaming) {
-    static Fixture f;
-    f.dev.streaming = true;
-    f.dev.unanswered = 2;
-    EXPECT_EQ(codec_link_to_idle(&f.link), CODEC_RESULT_ACK);
-    // Each unanswered attempt waits T = 1000 ms: the packets read at 10, 20, ... 1000 ms are
-    // dropped (the last one after the timeout, in the same read): 100 packets (12 bytes in framing
-    // a, 13 with framing b's 3 sync bytes).
-    const std::string dropped = std::to_string(100 * data_packet().size());
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{
-                             "link: idle: no ACK in 1000 ms while streaming (" + dropped +
-                                 " bytes dropped), flushing, attempt 2 of 3",
-                             "link: idle: no ACK in 1000 ms while streaming (" + dropped +
-                                 " bytes dropped), flushing, attempt 3 of 3",
-                             "link: idle: ACK on attempt 3 of 3 (0 bytes dropped)",
-                         }));
-    EXPECT_EQ(f.dev.commands.size(), 3u);
-    EXPECT_EQ(f.dev.flushes, 4); // before and after the quiet time, twice
-    EXPECT_EQ(f.dev.events, 0);  // the application saw none of it
-    EXPECT_FALSE(f.dev.streaming);
-    // The application's data flows again afterwards.
-    f.dev.streaming = true;
-    EXPECT_EQ(codec_link_listen(&f.link, 100), 0);
-    EXPECT_GT(f.dev.packets, 0);
+codec_field_value_t ping_command() {
+    codec_field_value_t v;
+    memset(&v, 0, sizeof v);
+    v.id = CODEC_FIELD_CONTROL_PING;
+    return v;
 }
 
-TEST(LinkGettingThrough, IdleGivesUpAfterTheAttempts) {
-    static Fixture f;
-    f.dev.unanswered = 100;
-    EXPECT_EQ(codec_link_to_idle(&f.link), CODEC_RESULT_TIMEOUT);
-    EXPECT_EQ(f.dev.commands.size(), (size_t)CODEC_LINK_IDLE_ATTEMPTS);
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{"link: idle: no ACK in 1000 ms, flushing, attempt 2 of 3",
-                                                   "link: idle: no ACK in 1000 ms, flushing, attempt 3 of 3",
-                                                   "link: idle: no ACK after 3 attempts, giving up"}));
+codec_field_value_t token_command(const std::string &token) {
+    if (token == "ping") {
+        return ping_command();
+    }
+    if (token == "read") {
+        return gain_command(CODEC_FUNCTION_READ, false, 0);
+    }
+    return gain_command(CODEC_FUNCTION_WRITE, true, static_cast<uint16_t>(std::stoul(token.substr(6))));
 }
 
-TEST(LinkGettingThrough, FindsTheBaudRate) {
-    static Fixture f;
-    f.dev.answers_at = 921600;
-    EXPECT_EQ(codec_link_find_baud(&f.link), CODEC_RESULT_ACK);
-    // The configured 115200 is also alpha's default: next the highest, 921600.
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{"link: baud: no answer at 115200, trying 921600",
-                                                   "link: baud: device answers at 921600"}));
-    EXPECT_EQ(f.dev.baud, 921600u);
-    EXPECT_EQ(f.link.port.baud, 921600u);
-    EXPECT_EQ(f.dev.flushes, 1); // after switching
+std::vector<uint8_t> token_packet(const std::string &token) {
+    const codec_field_value_t v = token_command(token);
+    uint8_t data[CODEC_MAX_FIELD_DATA];
+    size_t n = 0;
+    EXPECT_EQ(codec_encode_field(&v, data, sizeof data, &n), CODEC_OK);
+    return build(0x01, token == "ping" ? 0x01 : 0x03, std::vector<uint8_t>(data, data + n));
 }
 
-TEST(LinkGettingThrough, BaudSearchTriesEveryRateOnce) {
-    static Fixture f;
-    f.dev.answers_at = 1; // never
-    EXPECT_EQ(codec_link_find_baud(&f.link), CODEC_RESULT_TIMEOUT);
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{"link: baud: no answer at 115200, trying 921600",
-                                                   "link: baud: no answer at 921600, trying 9600",
-                                                   "link: baud: no answer at any rate"}));
-    EXPECT_EQ(f.dev.commands.size(), 3u);
+std::string kind_name(codec_result_kind_t kind) {
+    switch (kind) {
+    case CODEC_RESULT_ACK:
+        return "ack";
+    case CODEC_RESULT_NACK:
+        return "nack";
+    case CODEC_RESULT_TIMEOUT:
+        return "timeout";
+    case CODEC_RESULT_INVALID:
+        return "invalid";
+    case CODEC_RESULT_SENT:
+        return "sent";
+    case CODEC_RESULT_REFUSED:
+        return "refused";
+    case CODEC_RESULT_TRANSPORT:
+        return "error";
+    case CODEC_RESULT_LOST:
+        return "lost";
+    }
+    return "?";
 }
 
-TEST(LinkGettingThrough, NoBaudSearchWithoutABaudRate) {
-    static Fixture f;
-    f.link.port.set_baud = NULL; // TCP
-    f.dev.answers_at = 1;
-    EXPECT_EQ(codec_link_find_baud(&f.link), CODEC_RESULT_TIMEOUT);
-    EXPECT_TRUE(f.dev.log.empty());
-    EXPECT_EQ(f.dev.commands.size(), 1u);
+std::string run_step(Fixture &f, const std::vector<std::string> &step) {
+    const std::string &what = step[0];
+    if (what == "to_idle") {
+        return kind_name(codec_link_to_idle(&f.link));
+    }
+    if (what == "find_baud") {
+        const codec_result_kind_t kind = codec_link_find_baud(&f.link);
+        return kind == CODEC_RESULT_ACK ? "ack" : kind == CODEC_RESULT_TIMEOUT ? "fail" : kind_name(kind);
+    }
+    if (what == "listen") {
+        return codec_link_listen(&f.link, static_cast<uint32_t>(std::stoul(step[1]))) == 0 ? "ok" : "fail";
+    }
+    const codec_field_value_t command = token_command(what == "write" ? "write:" + step[1] : what);
+    return kind_name(codec_link_run(&f.link, &command, NULL, NULL));
 }
 
-TEST(LinkGettingThrough, ReconnectsAndReappliesTheConfiguration) {
-    static Fixture f;
-    codec_field_value_t gain = command(0x03, {0x01, 0x07, 0x00}); // write gain 7
-    codec_field_value_t read = command(0x03, {0x02});             // read: not recorded
-    EXPECT_EQ(codec_link_run(&f.link, &gain, NULL, NULL), CODEC_RESULT_ACK);
-    codec_link_run(&f.link, &read, NULL, NULL);
-    EXPECT_EQ(f.link.setting_count, 1u);
-    std::vector<uint8_t> written = f.dev.commands[0];
-    f.dev.commands.clear();
+void run_case(const LinkCase &c) {
+    uint32_t reconnect = CODEC_LINK_DEFAULT_RECONNECT_MS;
+    uint32_t baud = 115200;
+    codec_device_t device = CODEC_DEVICE_ALPHA;
+    bool ping_as_idle = true;
+    bool tcp = false;
+    for (const auto &s : c.set) {
+        if (s.first == "reconnect") {
+            reconnect = s.second == "off" ? 0 : static_cast<uint32_t>(std::stoul(s.second));
+        } else if (s.first == "baud") {
+            tcp = s.second == "none";
+            baud = tcp ? 115200 : static_cast<uint32_t>(std::stoul(s.second));
+        } else if (s.first == "model") {
+            device = s.second == "beta" ? CODEC_DEVICE_BETA : s.second == "none" ? CODEC_DEVICE_ANY : device;
+        } else if (s.first == "idle") {
+            ping_as_idle = s.second != "none";
+        }
+    }
+    std::unique_ptr<Fixture> f(new Fixture(reconnect, device, baud, ping_as_idle));
+    if (tcp) {
+        f->link.port.set_baud = NULL;
+        f->dev.has_baud = false;
+    }
+    for (const auto &s : c.set) {
+        if (s.first == "streaming") {
+            f->dev.streaming = true;
+        } else if (s.first == "unanswered") {
+            f->dev.unanswered = std::stoi(s.second);
+        } else if (s.first == "answers_at") {
+            f->dev.answers_at = static_cast<uint32_t>(std::stoul(s.second));
+        }
+    }
+    for (const auto &step : c.steps) {
+        SCOPED_TRACE(step[0]);
+        if (step[0] == "lose") {
+            f->dev.lost = true;
+            f->dev.reopen_failures = std::stoi(step[1]);
+        } else if (step[0] == "stream") {
+            f->dev.streaming = true;
+        } else {
+            const std::string got = run_step(*f, step);
+            if (step.back() != "any") {
+                EXPECT_EQ(got, step.back());
+            }
+        }
+    }
+    std::vector<std::string> log;
+    for (const auto &line : c.log) {
+        log.push_back(expanded(line));
+    }
+    EXPECT_EQ(f->dev.log, log);
+    for (const auto &e : c.expect) {
+        SCOPED_TRACE(e.first);
+        if (e.first == "sent") {
+            std::vector<std::vector<uint8_t>> sent;
+            for (const auto &token : words(e.second)) {
+                sent.push_back(token_packet(token));
+            }
+            EXPECT_EQ(f->dev.commands, sent);
+        } else if (e.first == "flushes") {
+            EXPECT_EQ(f->dev.flushes, std::stoi(e.second));
+        } else if (e.first == "packets") {
+            EXPECT_EQ(f->dev.packets, std::stoi(e.second));
+        } else if (e.first == "sleeps") {
+            std::vector<uint32_t> sleeps;
+            for (const auto &ms : words(e.second)) {
+                sleeps.push_back(static_cast<uint32_t>(std::stoul(ms)));
+            }
+            EXPECT_EQ(f->dev.sleeps, sleeps);
+        } else if (e.first == "rate") {
+            EXPECT_EQ(tcp ? std::string("none") : std::to_string(f->dev.baud), e.second);
+        } else {
+            ADD_FAILURE() << "unknown line " << e.first;
+        }
+    }
+}
+
+TEST(LinkGettingThrough, TheLinkCorpus) {
+    const std::vector<LinkCase> cases = read_cases();
+    ASSERT_GE(cases.size(), 10u);
+    for (const LinkCase &c : cases) {
+        SCOPED_TRACE(c.name);
+        run_case(c);
+    }
+}
+
+// The cases of this API only.
+
+TEST(LinkGettingThrough, TheLinkStateAfterALoss) {
+    static Fixture f(1200);
     f.dev.lost = true;
-    f.dev.reopen_failures = 2;
-    codec_field_value_t ping = command(0x01, {});
+    f.dev.reopen_failures = 100;
+    codec_field_value_t ping = ping_command();
     codec_result_t r;
     EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, &r), CODEC_RESULT_LOST);
     EXPECT_STREQ(r.error, "link lost: Input/output error");
-    EXPECT_TRUE(f.link.connected);
-    // Reopened at 0, 500 and 1000 ms (the third succeeds), then to idle and the write again (the
-    // test protocol has no resume command).
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{
-                             "link: port lost (Input/output error), reopening /tmp/x/dev every 500 ms",
-                             "link: idle: ACK on attempt 1 of 3 (0 bytes dropped)",
-                             "link: reconnected after 1.0 s, re-applied 1 settings"}));
-    ASSERT_EQ(f.dev.commands.size(), 2u);
-    EXPECT_EQ(f.dev.commands[0][CODEC_HEADER_SIZE + CODEC_FIELD_DESCRIPTOR_OFFSET],
-              CODEC_LINK_PING_DESCRIPTOR);
-    EXPECT_EQ(f.dev.commands[1], written);
-    EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, NULL), CODEC_RESULT_ACK); // and on it goes
+    EXPECT_FALSE(f.link.connected);
+    EXPECT_EQ(codec_link_listen(&f.link, 10), -1);
+    static Fixture g(0);
+    g.dev.lost = true;
+    EXPECT_EQ(codec_link_run(&g.link, &ping, NULL, NULL), CODEC_RESULT_TRANSPORT);
+    EXPECT_FALSE(g.link.connected);
 }
 
-TEST(LinkGettingThrough, TheLatestWriteOfASettingWins) {
+TEST(LinkGettingThrough, TheLatestWriteIsTheOneRecorded) {
     static Fixture f;
-    codec_field_value_t gain7 = command(0x03, {0x01, 0x07, 0x00});
-    codec_field_value_t gain9 = command(0x03, {0x01, 0x09, 0x00});
+    codec_field_value_t gain7 = gain_command(CODEC_FUNCTION_WRITE, true, 7);
+    codec_field_value_t gain9 = gain_command(CODEC_FUNCTION_WRITE, true, 9);
     EXPECT_EQ(codec_link_run(&f.link, &gain7, NULL, NULL), CODEC_RESULT_ACK);
-    EXPECT_EQ(codec_link_run(&f.link, &gain9, NULL, NULL), CODEC_RESULT_ACK);
     EXPECT_EQ(codec_link_run(&f.link, &gain9, NULL, NULL), CODEC_RESULT_ACK);
     // gain's read sends no parameter: one key, the latest write.
     ASSERT_EQ(f.link.setting_count, 1u);
     EXPECT_EQ(f.link.settings[0].key_len, 0u);
-    EXPECT_EQ(f.link.settings[0].data[1], 0x09);
-}
-
-TEST(LinkGettingThrough, GivesUpWhenThePortStaysAway) {
-    static Fixture f(1200);
-    f.dev.lost = true;
-    f.dev.reopen_failures = 100;
-    codec_field_value_t ping = command(0x01, {});
-    EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, NULL), CODEC_RESULT_LOST);
-    EXPECT_FALSE(f.link.connected);
-    // Reopened at 0, 500 and 1000 ms: another 500 ms would be past the 1200 ms.
-    ASSERT_EQ(f.dev.log.size(), 2u);
-    EXPECT_EQ(f.dev.log[1], "link: gave up reopening /tmp/x/dev after 1200 ms");
-    EXPECT_EQ(f.dev.sleeps, (std::vector<uint32_t>{500, 500}));
-    EXPECT_EQ(codec_link_listen(&f.link, 10), -1);
-}
-
-TEST(LinkGettingThrough, WithoutAnIdleCommandToIdleIsRefused) {
-    static Fixture f;
-    codec_link_options_t o;
-    codec_link_options_init(&o);
-    EXPECT_FALSE(o.idle.present); // the test protocol names none
-    o.log = dev_log;
-    o.log_ctx = &f.dev;
-    codec_link_attach(&f.link, &f.port, &o);
-    EXPECT_EQ(codec_link_to_idle(&f.link), CODEC_RESULT_REFUSED);
-    EXPECT_STREQ(f.link.result.error, "the protocol has no idle command");
-    EXPECT_EQ(f.dev.log, (std::vector<std::string>{"link: idle: the protocol has no idle command"}));
-    EXPECT_TRUE(f.dev.commands.empty());
-}
-
-TEST(LinkGettingThrough, NoReconnectWithoutTheOption) {
-    static Fixture f(0);
-    f.dev.lost = true;
-    codec_field_value_t ping = command(0x01, {});
-    EXPECT_EQ(codec_link_run(&f.link, &ping, NULL, NULL), CODEC_RESULT_TRANSPORT);
-    EXPECT_FALSE(f.link.connected);
-    EXPECT_TRUE(f.dev.log.empty());
 }
 
 } // namespace

@@ -1,14 +1,18 @@
 // Getting through (transport.hpp Connection, docs/conformance.md section 8 "Getting through") on
-// the rendered test protocol (tests/runtime_specs/: its link section names ping, alpha's main port
-// 9600, 115200 (default), 921600 baud, 3 idle attempts by default; it has no idle command: these
-// tests give the ping its place through LinkOptions): the same cases and lines as the C runtime's
-// link_test.cpp. A fake device over a fake clock: every read of a streaming device returns one data
-// packet 10 ms later.
+// the rendered test protocol (tests/runtime_specs/): the link corpus tests/link/cases.txt (its path
+// LINK_CASES from CMakeLists.txt; the format and the fake device's rules in tests/link/README.md),
+// as the C and Python runtimes run it, then the cases of this API only. The test protocol has no
+// idle command: a case gives the ping its place through LinkOptions unless it says `set idle none`.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "protopkg/protopkg.hpp"
@@ -118,8 +122,11 @@ struct Fixture {
     int events = 0;
     int packets = 0;
     protopkg::Connection dev;
-    explicit Fixture(std::int64_t reconnect_ms = 10000, bool ping_as_idle = true)
-        : dev(port, options(), [this]() { return port.now; }) {
+    explicit Fixture(std::int64_t reconnect_ms = 10000, bool ping_as_idle = true,
+                     std::optional<protopkg::Device> device = protopkg::Device::alpha,
+                     std::uint32_t baud = 115200)
+        : dev(port, options(device), [this]() { return port.now; }) {
+        port.rate = baud;
         protopkg::LinkOptions o;
         o.log = [this](const std::string &line) { log.push_back(line); };
         o.reconnect_ms = reconnect_ms;
@@ -134,153 +141,240 @@ struct Fixture {
             }
         });
     }
-    static protopkg::Session<1>::Options options() {
+    static protopkg::Session<1>::Options options(std::optional<protopkg::Device> device) {
         protopkg::Session<1>::Options o;
-        o.device = protopkg::Device::alpha;
+        o.device = device;
         return o;
     }
 };
 
-control::Gain gain(std::uint16_t value) {
+struct LinkCase {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> set;
+    std::vector<std::vector<std::string>> steps;
+    std::vector<std::string> log;
+    std::vector<std::pair<std::string, std::string>> expect;
+};
+
+std::vector<std::string> words(const std::string &text) {
+    std::istringstream in(text);
+    std::vector<std::string> out;
+    std::string w;
+    while (in >> w) {
+        out.push_back(w);
+    }
+    return out;
+}
+
+std::vector<LinkCase> read_cases() {
+    std::ifstream in(LINK_CASES);
+    EXPECT_TRUE(in.good()) << LINK_CASES;
+    std::vector<LinkCase> cases;
+    LinkCase c;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') {
+            continue;
+        }
+        const std::size_t space = line.find(' ');
+        const std::string what = line.substr(0, space);
+        const std::string rest = space == std::string::npos ? "" : line.substr(space + 1);
+        if (what == "case") {
+            c = LinkCase();
+            c.name = rest;
+        } else if (what == "set") {
+            const std::size_t sp = rest.find(' ');
+            c.set.emplace_back(rest.substr(0, sp), sp == std::string::npos ? "" : rest.substr(sp + 1));
+        } else if (what == "step") {
+            c.steps.push_back(words(rest));
+        } else if (what == "log") {
+            c.log.push_back(rest);
+        } else if (what == "end") {
+            cases.push_back(c);
+        } else {
+            c.expect.emplace_back(what, rest);
+        }
+    }
+    return cases;
+}
+
+/// {data N} and {ack N}: N data or ACK packets' bytes.
+std::string expanded(std::string line) {
+    for (const std::string what : {"{data ", "{ack "}) {
+        std::size_t at;
+        while ((at = line.find(what)) != std::string::npos) {
+            const std::size_t close = line.find('}', at);
+            const std::size_t n = std::stoul(line.substr(at + what.size(), close - at - what.size()));
+            const std::size_t size =
+                what[1] == 'd' ? data_packet().size() : build(0x01, 0xF1, {0x01, 0x00}).size();
+            line.replace(at, close - at + 1, std::to_string(n * size));
+        }
+    }
+    return line;
+}
+
+control::Gain gain_of(const std::string &token) {
     control::Gain g;
-    g.function = protopkg::types::Function::write;
-    g.gain = value;
+    if (token == "read") {
+        g.function = protopkg::types::Function::read;
+    } else {
+        g.function = protopkg::types::Function::write;
+        g.gain = static_cast<std::uint16_t>(std::stoul(token.substr(6)));
+    }
     return g;
 }
 
-TEST(LinkGettingThrough, IdleWhileStreaming) {
-    Fixture f;
-    f.port.streaming = true;
-    f.port.unanswered = 2;
-    EXPECT_TRUE(f.dev.to_idle().ok());
-    // Each unanswered attempt waits T = 1000 ms: the packets read at 10, 20, ... 1000 ms are
-    // dropped (the last one after the timeout, in the same read): 100 packets.
-    const std::string dropped = std::to_string(100 * data_packet().size());
-    EXPECT_EQ(f.log, (std::vector<std::string>{
-                         "link: idle: no ACK in 1000 ms while streaming (" + dropped +
-                             " bytes dropped), flushing, attempt 2 of 3",
-                         "link: idle: no ACK in 1000 ms while streaming (" + dropped +
-                             " bytes dropped), flushing, attempt 3 of 3",
-                         "link: idle: ACK on attempt 3 of 3 (0 bytes dropped)",
-                     }));
-    EXPECT_EQ(f.port.commands.size(), 3u);
-    EXPECT_EQ(f.port.flushes, 4);
-    EXPECT_EQ(f.events, 0);
-    f.port.streaming = true;
-    EXPECT_TRUE(f.dev.listen(100));
-    EXPECT_GT(f.packets, 0);
+Bytes token_packet(const std::string &token) {
+    protopkg::PacketBuilder b(0x01);
+    if (token == "ping") {
+        EXPECT_EQ(b.add(control::Ping{}), protopkg::EncodeError::none);
+    } else {
+        EXPECT_EQ(b.add(gain_of(token)), protopkg::EncodeError::none);
+    }
+    const protopkg::PacketView p = b.finish();
+    return Bytes(p.data, p.data + p.size);
 }
 
-TEST(LinkGettingThrough, IdleGivesUpAfterTheAttempts) {
-    Fixture f;
-    f.port.unanswered = 100;
-    const protopkg::Call call = f.dev.to_idle();
-    EXPECT_EQ(call.result.status, protopkg::Status::timeout);
-    EXPECT_EQ(f.port.commands.size(), std::size_t{protopkg::kLinkIdleAttempts});
-    EXPECT_EQ(f.log, (std::vector<std::string>{"link: idle: no ACK in 1000 ms, flushing, attempt 2 of 3",
-                                               "link: idle: no ACK in 1000 ms, flushing, attempt 3 of 3",
-                                               "link: idle: no ACK after 3 attempts, giving up"}));
+std::string call_name(const protopkg::Call &call) {
+    if (call.lost) {
+        return "lost";
+    }
+    if (call.io_error) {
+        return "error";
+    }
+    return protopkg::to_string(call.result.status);
 }
 
-TEST(LinkGettingThrough, WithoutAnIdleCommandToIdleIsRefused) {
-    Fixture f(10000, false);
-    const protopkg::Call call = f.dev.to_idle();
-    EXPECT_EQ(call.result.status, protopkg::Status::refused);
-    EXPECT_STREQ(call.result.error.c_str(), "the protocol has no idle command");
-    EXPECT_EQ(f.log, (std::vector<std::string>{"link: idle: the protocol has no idle command"}));
-    EXPECT_TRUE(f.port.commands.empty());
+std::string run_step(Fixture &f, const std::vector<std::string> &step) {
+    const std::string &what = step[0];
+    if (what == "to_idle") {
+        return call_name(f.dev.to_idle());
+    }
+    if (what == "find_baud") {
+        const protopkg::Call call = f.dev.find_baud();
+        return call.ok() ? "ack" : call.result.status == protopkg::Status::timeout ? "fail" : call_name(call);
+    }
+    if (what == "listen") {
+        return f.dev.listen(std::stoll(step[1])) ? "ok" : "fail";
+    }
+    if (what == "ping") {
+        return call_name(f.dev.run(control::Ping{}));
+    }
+    return call_name(f.dev.run(gain_of(what == "write" ? "write:" + step[1] : what)));
 }
 
-TEST(LinkGettingThrough, FindsTheBaudRate) {
-    Fixture f;
-    f.port.answers_at = 921600;
-    EXPECT_TRUE(f.dev.find_baud().ok());
-    EXPECT_EQ(f.log, (std::vector<std::string>{"link: baud: no answer at 115200, trying 921600",
-                                               "link: baud: device answers at 921600"}));
-    EXPECT_EQ(f.port.rate, 921600u);
-    EXPECT_EQ(f.port.flushes, 1);
+void run_case(const LinkCase &c) {
+    std::int64_t reconnect = 10000;
+    std::uint32_t baud = 115200;
+    std::optional<protopkg::Device> device = protopkg::Device::alpha;
+    bool ping_as_idle = true;
+    bool tcp = false;
+    for (const auto &s : c.set) {
+        if (s.first == "reconnect") {
+            reconnect = s.second == "off" ? 0 : std::stoll(s.second);
+        } else if (s.first == "baud") {
+            tcp = s.second == "none";
+            baud = tcp ? 115200 : static_cast<std::uint32_t>(std::stoul(s.second));
+        } else if (s.first == "model") {
+            device = s.second == "beta"   ? std::optional<protopkg::Device>(protopkg::Device::beta)
+                     : s.second == "none" ? std::nullopt
+                                          : device;
+        } else if (s.first == "idle") {
+            ping_as_idle = s.second != "none";
+        }
+    }
+    std::unique_ptr<Fixture> f(new Fixture(reconnect, ping_as_idle, device, baud));
+    f->port.has_baud = !tcp;
+    for (const auto &s : c.set) {
+        if (s.first == "streaming") {
+            f->port.streaming = true;
+        } else if (s.first == "unanswered") {
+            f->port.unanswered = std::stoi(s.second);
+        } else if (s.first == "answers_at") {
+            f->port.answers_at = static_cast<std::uint32_t>(std::stoul(s.second));
+        }
+    }
+    for (const auto &step : c.steps) {
+        SCOPED_TRACE(step[0]);
+        if (step[0] == "lose") {
+            f->port.lost = true;
+            f->port.reopen_failures = std::stoi(step[1]);
+        } else if (step[0] == "stream") {
+            f->port.streaming = true;
+        } else {
+            const std::string got = run_step(*f, step);
+            if (step.back() != "any") {
+                EXPECT_EQ(got, step.back());
+            }
+        }
+    }
+    std::vector<std::string> log;
+    for (const auto &line : c.log) {
+        log.push_back(expanded(line));
+    }
+    EXPECT_EQ(f->log, log);
+    for (const auto &e : c.expect) {
+        SCOPED_TRACE(e.first);
+        if (e.first == "sent") {
+            std::vector<Bytes> sent;
+            for (const auto &token : words(e.second)) {
+                sent.push_back(token_packet(token));
+            }
+            EXPECT_EQ(f->port.commands, sent);
+        } else if (e.first == "flushes") {
+            EXPECT_EQ(f->port.flushes, std::stoi(e.second));
+        } else if (e.first == "packets") {
+            EXPECT_EQ(f->packets, std::stoi(e.second));
+        } else if (e.first == "sleeps") {
+            std::vector<std::int64_t> sleeps;
+            for (const auto &ms : words(e.second)) {
+                sleeps.push_back(std::stoll(ms));
+            }
+            EXPECT_EQ(f->port.sleeps, sleeps);
+        } else if (e.first == "rate") {
+            EXPECT_EQ(tcp ? std::string("none") : std::to_string(f->port.rate), e.second);
+        } else {
+            ADD_FAILURE() << "unknown line " << e.first;
+        }
+    }
 }
 
-TEST(LinkGettingThrough, BaudSearchTriesEveryRateOnce) {
-    Fixture f;
-    f.port.answers_at = 1;
-    EXPECT_FALSE(f.dev.find_baud().ok());
-    EXPECT_EQ(f.log, (std::vector<std::string>{"link: baud: no answer at 115200, trying 921600",
-                                               "link: baud: no answer at 921600, trying 9600",
-                                               "link: baud: no answer at any rate"}));
-    EXPECT_EQ(f.port.commands.size(), 3u);
+TEST(LinkGettingThrough, TheLinkCorpus) {
+    const std::vector<LinkCase> cases = read_cases();
+    ASSERT_GE(cases.size(), 10u);
+    for (const LinkCase &c : cases) {
+        SCOPED_TRACE(c.name);
+        run_case(c);
+    }
 }
 
-TEST(LinkGettingThrough, NoBaudSearchWithoutABaudRate) {
-    Fixture f;
-    f.port.has_baud = false; // TCP
-    f.port.answers_at = 1;
-    EXPECT_FALSE(f.dev.find_baud().ok());
-    EXPECT_TRUE(f.log.empty());
-    EXPECT_EQ(f.port.commands.size(), 1u);
-}
+// The cases of this API only.
 
-TEST(LinkGettingThrough, ReconnectsAndReappliesTheConfiguration) {
+TEST(LinkGettingThrough, TheCallOfALostCommand) {
     Fixture f;
-    EXPECT_TRUE(f.dev.run(gain(7)).ok());
-    control::Gain read;
-    read.function = protopkg::types::Function::read;
-    f.dev.run(read);
-    EXPECT_EQ(f.dev.settings(), 1u);
-    const Bytes written = f.port.commands[0];
-    f.port.commands.clear();
     f.port.lost = true;
-    f.port.reopen_failures = 2;
     const protopkg::Call call = f.dev.run(control::Ping{});
     EXPECT_TRUE(call.io_error);
     EXPECT_TRUE(call.lost);
     EXPECT_STREQ(call.io.c_str(), "link lost: Input/output error");
     EXPECT_TRUE(f.dev.connected());
-    EXPECT_EQ(f.log, (std::vector<std::string>{
-                         "link: port lost (Input/output error), reopening /tmp/x/dev every 500 ms",
-                         "link: idle: ACK on attempt 1 of 3 (0 bytes dropped)",
-                         "link: reconnected after 1.0 s, re-applied 1 settings"}));
-    ASSERT_EQ(f.port.commands.size(), 2u);
-    EXPECT_EQ(f.port.commands[0][protopkg::kHeaderSize + protopkg::kFieldDescriptorOffset],
-              control::Ping::kDescriptor);
-    EXPECT_EQ(f.port.commands[1], written);
-    EXPECT_TRUE(f.dev.run(control::Ping{}).ok());
+    Fixture g(1200);
+    g.port.lost = true;
+    g.port.reopen_failures = 100;
+    EXPECT_TRUE(g.dev.run(control::Ping{}).io_error);
+    EXPECT_FALSE(g.dev.connected());
+    Fixture h(0);
+    h.port.lost = true;
+    EXPECT_FALSE(h.dev.run(control::Ping{}).lost);
+    EXPECT_FALSE(h.dev.connected());
 }
 
-TEST(LinkGettingThrough, TheLatestWriteOfASettingWins) {
+TEST(LinkGettingThrough, OneKeyPerSettingWithoutReadParameters) {
     Fixture f;
-    EXPECT_TRUE(f.dev.run(gain(7)).ok());
-    f.port.commands.clear();
-    EXPECT_TRUE(f.dev.run(gain(9)).ok());
-    const Bytes written = f.port.commands[0];
+    EXPECT_TRUE(f.dev.run(gain_of("write:7")).ok());
+    EXPECT_TRUE(f.dev.run(gain_of("write:9")).ok());
+    f.dev.run(gain_of("read"));
     EXPECT_EQ(f.dev.settings(), 1u); // gain's read sends no parameter: one key
-    f.port.commands.clear();
-    f.port.lost = true;
-    f.dev.run(control::Ping{});
-    ASSERT_EQ(f.port.commands.size(), 2u);
-    EXPECT_EQ(f.port.commands[1], written);
-}
-
-TEST(LinkGettingThrough, GivesUpWhenThePortStaysAway) {
-    Fixture f(1200);
-    f.port.lost = true;
-    f.port.reopen_failures = 100;
-    const protopkg::Call call = f.dev.run(control::Ping{});
-    EXPECT_TRUE(call.io_error);
-    EXPECT_FALSE(f.dev.connected());
-    ASSERT_EQ(f.log.size(), 2u);
-    EXPECT_EQ(f.log[1], "link: gave up reopening /tmp/x/dev after 1200 ms");
-    EXPECT_EQ(f.port.sleeps, (std::vector<std::int64_t>{500, 500})); // 1000 + 500 is past 1200
-}
-
-TEST(LinkGettingThrough, NoReconnectWithoutTheOption) {
-    Fixture f(0);
-    f.port.lost = true;
-    const protopkg::Call call = f.dev.run(control::Ping{});
-    EXPECT_TRUE(call.io_error);
-    EXPECT_FALSE(call.lost);
-    EXPECT_FALSE(f.dev.connected());
-    EXPECT_TRUE(f.log.empty());
 }
 
 } // namespace
