@@ -18,6 +18,14 @@ from generator.vectors import load_corpus
 ROOT = Path(__file__).resolve().parents[2]
 IR = load_spec()
 VECTORS = load_corpus(IR, ROOT)
+
+
+def _foreign(case: dict) -> bool:
+    """Whether a case's lines hold an NMEA sentence or RTCM3 frame: encode refuses those lines
+    (docs/conformance.md section 5), so such a case is decoded but not encoded back."""
+    return any('"nmea":' in line or '"rtcm":' in line for line in case["expect"])
+
+
 PACKAGES = {p["name"]: p["package"] for p in IR["protocols"]}
 CC = "s390x-linux-gnu-gcc"
 QEMU = "qemu-s390x"
@@ -77,7 +85,7 @@ def test_every_vector_on_big_endian(tools, tmp_path):
         if got != want:
             failures.append(f"{c['name']}: got {got!r}")
             continue
-        if _run(tools, "encode", data=got.encode(), protocol=c["protocol"]) != p.read_bytes():
+        if not _foreign(c) and _run(tools, "encode", data=got.encode(), protocol=c["protocol"]) != p.read_bytes():
             failures.append(f"{c['name']}: encode differs")
     assert not failures, "\n".join(failures)
 
@@ -88,7 +96,7 @@ def test_mixed_stream_matches_native(tools, tmp_path, protocol):
     protocol's packets are skipped bytes) on big-endian and natively: the same lines."""
     rng = random.Random(7)
     parts = []
-    for c in VECTORS * 3:
+    for c in [c for c in VECTORS if not _foreign(c)] * 3:  # encoded back below
         parts.append(bytes(rng.randrange(256) for _ in range(rng.randrange(4))))
         parts.append(bytes.fromhex(c["hex"]))
     stream = tmp_path / "mixed.bin"

@@ -218,7 +218,9 @@ def test_diff_cli_on_directories_and_revisions(tmp_path, capsys, monkeypatch):
     shutil.copytree(ROOT / "spec", repo / "spec")
     streaming = repo / "spec" / "mip" / "3dm_streaming.yaml"
     current = streaming.read_text()
-    streaming.write_text(re.sub(r", optional_for: \[[^\]]*\]", "", current))
+    # (the `ignored:` facts of issue 51 came later and need optional_for: gone with it)
+    before = re.sub(r", optional_for: \[[^\]]*\]", "", current)
+    streaming.write_text(re.sub(r", ignored: \{functions: \[[^\]]*\], source: \{[^}]*\}\}", "", before))
     git = [
         "git",
         "-C",
@@ -238,7 +240,9 @@ def test_diff_cli_on_directories_and_revisions(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(repo)
     assert mipgen(["diff", "HEAD~1", "HEAD", "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    assert doc["verdict"] == "wire-compatible" and doc["counts"]["wire-compatible"] == 15
+    # 14: GNSS constellation settings' `settings` is written in block style since issue 51 gave it
+    # its factory records, so the flow-style substitution above leaves its optional_for in place
+    assert doc["verdict"] == "wire-compatible" and doc["counts"]["wire-compatible"] == 14
     assert all(c["what"].endswith("is now optional") for c in doc["changes"] if c["kind"] == "wire-compatible")
     assert {c["where"].split()[0] for c in doc["changes"]} == {
         "0x0C,0x08",
