@@ -10,8 +10,9 @@ columns are text (`model`, `serial`: a serial such as `6284.170401` stays text) 
 NULL for the `unknown` date (or `__HIVE_DEFAULT_PARTITION__`) of rows without a UTC time. The result prints as a plain
 table (default), CSV with a header, or JSON lines (one object per row).
 
-Needs duckdb (the package's `[query]` extra). Errors are one line on stderr, exit status 2: a
-missing or empty dataset, SQL DuckDB refuses (its first line), duckdb not installed.
+Needs duckdb (the package's `[query]` extra, with pytz for timestamps). Errors are one line on
+stderr, exit status 2: a missing or empty dataset, SQL DuckDB refuses (its first line), duckdb not
+installed (or pytz, for a timestamp with a time zone: the library and the extra).
 `connect(DATASET)` gives the same views to a Python program.
 """
 
