@@ -441,8 +441,9 @@ def main(argv: Optional[List[str]] = None) -> int:
         if "-" in args.logs:
             raise ToolError("reads log files only (not - for stdin)")
         need_pyspark()
-        for module in ("pandas", "pyarrow", "numpy"):  # pandas: pyspark's mapInArrow imports it
-            need(module, "spark")
+        need("pandas", "spark")  # pyspark's mapInArrow imports it
+        need("pyarrow", "spark")
+        need("numpy", "spark")
         try:
             os.makedirs(args.out, exist_ok=True)
         except OSError as e:
