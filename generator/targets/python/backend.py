@@ -81,7 +81,7 @@ RUNTIME_ROOMS = sorted({name.split("/")[0] for name in RUNTIME_FILES if name.end
 PACKAGE_TEST_FILES = ["conftest.py", "test_vectors.py", "test_canonical.py", "test_typed.py"]
 # Templates of the package directory that do not need a model of their own (the protocol's
 # constants, the package's exports).
-PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h"]
+PACKAGE_TEMPLATES = ["__init__.py", "_protocol.py", "_protocol.h", "_extras.py"]
 # Templates of the session layer (docs/conformance.md section 8): the spec facts of every command
 # and the typed command API.
 SESSION_TEMPLATES = ["_session.py", "command_api.py"]
@@ -670,6 +670,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
             "python_packages": [pkg] + [f"{pkg}.{room}" for room in RUNTIME_ROOMS],
             "devices": [d["id"] for d in proto["devices"]],
             "sample_rule": proto["samples"],
+            **extras(pkg),
             **release.stamp(proto),
         }
         files[f"{root}/LICENSE"] = release.license
@@ -727,6 +728,41 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         for name, extra in tests.items():
             files[f"{root}/tests/{name}"] = env.get_template(f"python/tests/{name}.j2").render(**ctx, **extra)
     return files
+
+
+def extras(package: str) -> dict:
+    """The optional extras (facts.EXTRAS) for pyproject.toml and the runtime's _extras.py:
+    `extras` [{name, note, requires}] (`all` last, the union of the others' requirements),
+    `extra_home` (import name -> the first extra listing it), `extra_distributions` (import name ->
+    what pip installs)."""
+    rows = []
+    every: list[str] = []
+    for name, (note, modules) in facts.EXTRAS.items():
+        libs = [facts.LIBRARIES[m] for m in modules]
+        rows.append(
+            {
+                "name": name,
+                "note": note.format(package=package),
+                "requires": [f"{x.distribution}>={x.minimum}" for x in libs],
+            }
+        )
+        every += [m for m in modules if m not in every]
+    rows.append(
+        {
+            "name": "all",
+            "note": "every extra above",
+            "requires": [f"{facts.LIBRARIES[m].distribution}>={facts.LIBRARIES[m].minimum}" for m in every],
+        }
+    )
+    home: dict[str, str] = {}
+    for name, (_note, modules) in facts.EXTRAS.items():
+        for m in modules:
+            home.setdefault(m, name)
+    return {
+        "extras": rows,
+        "extra_home": home,
+        "extra_distributions": {m: lib.distribution for m, lib in facts.LIBRARIES.items()},
+    }
 
 
 def _capabilities(proto: dict) -> list[dict]:

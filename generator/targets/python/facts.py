@@ -226,3 +226,56 @@ GETTING_STARTED = GettingStarted(
     run_package_var="PY_PACKAGE",
     outside_run="python examples/configure_and_stream.py ADDRESS 5",
 )
+
+
+# ------------------------------------------------------------------------------ optional extras
+class Library(NamedTuple):
+    """An optional library of the packages: its distribution (what pip installs), the lower bound
+    of its version (the version requirements.txt / requirements-spark.txt pin, which the tests
+    run: tests/generator/test_extras.py checks they agree) and its import name."""
+
+    distribution: str
+    minimum: str
+    module: str
+
+
+LIBRARIES = {
+    lib.module: lib
+    for lib in (
+        Library("numpy", "2.3.5", "numpy"),
+        Library("pyarrow", "22.0.0", "pyarrow"),
+        Library("tqdm", "4.67.1", "tqdm"),
+        Library("matplotlib", "3.10.7", "matplotlib"),
+        Library("pandas", "2.3.3", "pandas"),
+        Library("duckdb", "1.4.4", "duckdb"),
+        Library("pytz", "2026.6", "pytz"),
+        Library("pyspark", "4.0.1", "pyspark"),
+        Library("pyserial", "3.5", "serial"),
+        Library("pyyaml", "6.0.3", "yaml"),
+    )
+}
+
+# The extras of every Python package (pyproject.toml's optional-dependencies, and the runtime's
+# `_extras.py`, which names the extra to install when a library is missing): extra -> (what it is
+# for, the import names of its libraries). Each extra holds what its documented commands import;
+# `all` (the union of every extra) is added by the back end. The first extra that lists a library
+# is the one a missing-library error names unless the command names its own.
+EXTRAS = {
+    "serial": ("serial ports of the session layer (transport.SerialTransport; TCP needs nothing)", ("serial",)),
+    "device": ("the device command line (`{package}-device`): YAML settings files, serial ports", ("yaml", "serial")),
+    "export": (
+        "`{package} export|info` (CSV, JSON lines, Parquet, --dataset; the progress bar) and Table.arrays",
+        ("numpy", "pyarrow", "tqdm"),
+    ),
+    "plot": ("`{package} plot` (png, svg, html)", ("numpy", "matplotlib")),
+    "pandas": ("Table.dataframe", ("numpy", "pandas")),
+    "query": (
+        '`{package} query DATASET "SQL"` with DuckDB (pytz: its timestamps with a time zone)',
+        ("duckdb", "pytz"),
+    ),
+    "spark": (
+        "the Spark job (`python -m {package}.spark`; Java 17 or 21): pyspark, pandas (its mapInArrow needs it)"
+        " and the libraries of the dataset functions it drives",
+        ("pyspark", "pandas", "numpy", "pyarrow"),
+    ),
+}

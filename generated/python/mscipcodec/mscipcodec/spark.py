@@ -75,10 +75,7 @@ ReadAt = Callable[[int, int], bytes]
 # ------------------------------------------------------------------------------------ libraries
 def need_pyspark() -> Any:
     """The pyspark module, or the one-line error that names the extra installing it."""
-    try:
-        return importlib.import_module("pyspark.sql")
-    except ImportError:
-        raise ToolError(f"pyspark is not installed: pip install '{PROG}[spark]' (or pip install pyspark)") from None
+    return need("pyspark.sql", "spark")
 
 
 def java_missing() -> Optional[str]:
@@ -140,7 +137,7 @@ def open_log(uri: str) -> Tuple[ReadAt, int]:
     local = _local_path(uri)
     if local is not None:
         return dataset.file_reader(local)
-    fs_mod = need("pyarrow.fs")
+    fs_mod = need("pyarrow.fs", "spark")
     parsed = urlparse(uri)
     if parsed.scheme in ("s3a", "s3n"):
         uri = "s3" + uri[len(parsed.scheme) :]
@@ -444,8 +441,9 @@ def main(argv: Optional[List[str]] = None) -> int:
         if "-" in args.logs:
             raise ToolError("reads log files only (not - for stdin)")
         need_pyspark()
-        need("pyarrow")
-        need("numpy")
+        need("pandas", "spark")  # pyspark's mapInArrow imports it
+        need("pyarrow", "spark")
+        need("numpy", "spark")
         try:
             os.makedirs(args.out, exist_ok=True)
         except OSError as e:

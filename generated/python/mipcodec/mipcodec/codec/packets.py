@@ -7,11 +7,10 @@ such line back into bytes (the encode CLI).
 
 from __future__ import annotations
 
-import importlib
 from array import array
 from typing import TYPE_CHECKING, Any, Dict, Iterable, List, Optional, Tuple, Type, Union, cast
 
-from .. import registry
+from .. import _extras, registry
 from .canonical import JsonError, error_text, foreign_line, hex_bytes, is_int, loads, skip_line
 from .framing import (
     CHECKSUM_SIZE,
@@ -464,10 +463,7 @@ class Table:
             accel = cols.tables[(0x80, 0x04)].arrays()["scaled_accel"]   # shape (n, 3)
             norm = np.linalg.norm(accel, axis=1)
         """
-        try:
-            import numpy as np
-        except ImportError:
-            raise ImportError("Table.arrays needs numpy: pip install numpy") from None
+        np = _extras.need("numpy", "export")
         from .. import _columns
 
         key = _columns_key(self.cls)
@@ -485,12 +481,8 @@ class Table:
     def dataframe(self) -> Any:
         """The columns as a pandas DataFrame (needs pandas): one row per entry, one column per
         value, named as in `export` (`scaled_accel.x`, ...), and "offset"."""
-        try:
-            import numpy as np
-
-            pd: Any = importlib.import_module("pandas")  # no type stubs
-        except ImportError:
-            raise ImportError("Table.dataframe needs pandas: pip install pandas") from None
+        np = _extras.need("numpy", "pandas")
+        pd = _extras.need("pandas", "pandas")
         from .. import _columns
 
         key = _columns_key(self.cls)

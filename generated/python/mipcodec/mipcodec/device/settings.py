@@ -18,7 +18,7 @@ import json
 import typing
 from typing import Any, Dict, List, NamedTuple, Optional, Tuple
 
-from .. import _settings, capabilities
+from .. import _extras, _settings, capabilities
 from ..codec.layout import EncodeError, Enum, Field
 from ..session import support_error
 
@@ -251,7 +251,7 @@ def load_text(text: str, filename: str) -> Any:
     try:
         import yaml  # type: ignore[import-untyped, unused-ignore]
     except ImportError:
-        raise FileError([f"{filename}: reading settings files needs PyYAML: pip install pyyaml"]) from None
+        raise FileError([f"{filename}: reading settings files: {_extras.missing('yaml', 'device')}"]) from None
 
     class Loader(yaml.SafeLoader):  # type: ignore[misc, unused-ignore]
         pass

@@ -15,6 +15,8 @@ import os
 import socket
 from typing import Any, Optional, Tuple
 
+from .. import _extras
+
 READ_MAX = 65536  # a read returns at most this many bytes (docs/conformance.md section 8)
 FLUSH_MAX_READS = 64  # flush_input reads at most this many times (a flood never ends)
 
@@ -117,9 +119,7 @@ class SerialTransport:
         try:
             import serial  # type: ignore[import-not-found, import-untyped, unused-ignore]
         except ImportError:
-            raise TransportError(
-                "serial ports need pyserial: pip install pyserial (or the package's [serial] extra)"
-            ) from None
+            raise TransportError(f"serial ports: {_extras.missing('serial', 'serial')}") from None
         try:
             self._port = serial.Serial(path, baudrate=baudrate, timeout=0)
         except (OSError, ValueError, serial.SerialException) as e:

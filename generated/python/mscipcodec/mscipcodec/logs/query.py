@@ -10,8 +10,9 @@ columns are text (`model`, `serial`: a serial such as `6284.170401` stays text) 
 NULL for the `unknown` date (or `__HIVE_DEFAULT_PARTITION__`) of rows without a UTC time. The result prints as a plain
 table (default), CSV with a header, or JSON lines (one object per row).
 
-Needs duckdb (the package's `[query]` extra). Errors are one line on stderr, exit status 2: a
-missing or empty dataset, SQL DuckDB refuses (its first line), duckdb not installed.
+Needs duckdb (the package's `[query]` extra, with pytz for timestamps). Errors are one line on
+stderr, exit status 2: a missing or empty dataset, SQL DuckDB refuses (its first line), duckdb not
+installed (or pytz, for a timestamp with a time zone: the library and the extra).
 `connect(DATASET)` gives the same views to a Python program.
 """
 
@@ -21,17 +22,19 @@ import argparse
 import csv
 import datetime
 import decimal
-import importlib
 import json
 import math
 import os
+import re
 import sys
 from typing import Any, Dict, List, Sequence, Tuple
 
+from .. import _extras
 from .._protocol import PACKAGE as PROG
 
 DEFAULT_PARTITION = "__HIVE_DEFAULT_PARTITION__"  # Hive/Spark's directory name for a null value
 TYPED = {"date": "DATE"}  # partition columns that are not text
+_MISSING = re.compile(r"Required module '([\w.]+)' failed to import")
 UNKNOWN_DATE = "unknown"  # the dataset's `date` of rows without a UTC time (dataset.DEFAULT_PARTITION)
 
 
@@ -40,10 +43,7 @@ class QueryError(Exception):
 
 
 def _duckdb() -> Any:
-    try:
-        return importlib.import_module("duckdb")  # (Any: mypy needs no duckdb stubs)
-    except ImportError:
-        raise QueryError(f"duckdb is not installed: pip install '{PROG}[query]' (or pip install duckdb)") from None
+    return _extras.need("duckdb", "query", QueryError)  # (Any: mypy needs no duckdb stubs)
 
 
 def tables(dataset: str) -> Dict[str, Tuple[str, List[str]]]:
@@ -119,12 +119,21 @@ def run(dataset: str, sql: str) -> Tuple[List[str], List[Tuple[Any, ...]]]:
         columns = [d[0] for d in result.description or []]
         rows = result.fetchall() if columns else []
     except duckdb.Error as e:
-        first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
-        raise QueryError(first) from None
+        raise QueryError(_error_line(e)) from None
     finally:
         if con is not None:
             con.close()
     return columns, rows
+
+
+def _error_line(e: Exception) -> str:
+    """DuckDB's error as one line: its first, or, when DuckDB could not import a library it needs
+    for the result (pytz for a timestamp with a time zone, ...), the library and the extra."""
+    text = str(e).strip()
+    lib = _MISSING.search(text)
+    if lib is not None:
+        return _extras.missing(lib.group(1), "query")
+    return text.splitlines()[0] if text else type(e).__name__
 
 
 def _cell(v: Any) -> str:

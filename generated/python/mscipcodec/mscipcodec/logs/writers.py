@@ -16,15 +16,13 @@ import tempfile
 import time
 from typing import Any, Dict, Iterator, List, Optional, Tuple, Type
 
-from .. import _columns, registry
+from .. import _columns, _extras, registry
 from .._protocol import MAX_PACKET
-from .._protocol import PACKAGE as PROG
 from ..codec.framing import Skip
 from ..codec.packets import DecodedField, Decoder, Packet
 
 CHUNK = 1 << 16
 _F32 = struct.Struct(">f")
-EXTRAS = {"pyarrow": "export", "numpy": "export", "matplotlib": "plot", "tqdm": "export"}
 
 
 class ToolError(Exception):
@@ -35,15 +33,10 @@ class ToolError(Exception):
         self.status = status
 
 
-def need(module: str) -> Any:
-    """Import an optional library or say which extra installs it."""
-    try:
-        return importlib.import_module(module)
-    except ImportError:
-        extra = EXTRAS.get(module.split(".")[0], "export")
-        raise ToolError(
-            f"{module} is not installed: pip install '{PROG}[{extra}]' (or pip install {module.split('.')[0]})"
-        ) from None
+def need(module: str, extra: Optional[str] = None) -> Any:
+    """Import an optional library, or a ToolError line naming it and the extra that installs it
+    (`extra`: the command's own, else the library's; the package's `_extras`)."""
+    return _extras.need(module, extra, ToolError)
 
 
 # ------------------------------------------------------------------------------ values to cells

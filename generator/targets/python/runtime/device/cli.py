@@ -27,7 +27,7 @@ import time
 import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple, Union
 
-from .. import _link, _sim, capabilities, registry
+from .. import _extras, _link, _sim, capabilities, registry
 from .. import _session as _meta
 from .._protocol import PACKAGE
 from ..codec.layout import Field
@@ -756,10 +756,7 @@ def _enable(conn: Connection, set_id: int) -> None:
 def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) -> int:
     """Ping every serial port at the models' baud rates; one line per device that answers."""
     if ports is None:
-        try:
-            from serial.tools import list_ports  # type: ignore[import-not-found, import-untyped, unused-ignore]
-        except ImportError:
-            _fail("auto needs pyserial: pip install pyserial (or the package's [device] extra)")
+        list_ports = _extras.need("serial.tools.list_ports", "device", lambda m: Trouble(f"auto: {m}"))
         ports = [p.device for p in list_ports.comports()]
     rates = _baud_rates()
     found = 0
