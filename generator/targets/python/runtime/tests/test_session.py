@@ -498,7 +498,7 @@ def test_nmea_and_rtcm_between_packets_go_to_the_foreign_handler_whatever_the_sp
     sentence and the frame are events of their own and reach on_foreign in stream order with the
     packet handlers, and the reply after them still answers its command. Framing b has none: the
     same bytes are skip runs and the handler is never called."""
-    from testproto.framing import FOREIGN_NMEA, FOREIGN_RTCM3, Nmea, Rtcm
+    from testproto.codec.framing import FOREIGN_NMEA, FOREIGN_RTCM3, Nmea, Rtcm
 
     data = data_packet()
     stream = GGA + data + RTCM_1005 + ack(0x01)
