@@ -1,6 +1,6 @@
 """Export table of the Demo protocol with every spec feature, generated from the IR (generator/columns.py).
 
-What the `export`, `info` and `plot` commands (`democodec.tools`) and `Table.arrays` need to
+What the `export`, `info` and `plot` commands (`democodec.logs`) and `Table.arrays` need to
 know about the data fields, taken from the spec rather than written by hand:
 
 - `COLUMNS[(set, descriptor, device)]`: one entry per value a row of that field layout holds:
@@ -15,7 +15,7 @@ know about the data fields, taken from the spec rather than written by hand:
 - `FRAMES[(set, descriptor, device)]`: per column, the coordinate frame the spec states for its
   parameter (`sensor`, `vehicle`, `sensor_or_vehicle`, `ned`, `ecef`, `wgs84`, or `device: frame`
   per device joined by `; `), None where it states none; layouts without any frame are left out;
-- the time model's facts (the spec's `time` section; `democodec.timebase`): `GPS_TIMES`
+- the time model's facts (the spec's `time` section; `democodec.logs.timebase`): `GPS_TIMES`
   (set, descriptor, time-of-week attribute, week attribute, valid-flags attribute, bits that must
   be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
   of the protocol's shared data placeholder: that field in any data set); `DEVICE_CLOCKS` (set, descriptor,
