@@ -47,7 +47,7 @@ CONF = {"spark.driver.memory": "1g", "spark.sql.shuffle.partitions": "2"}
 
 def _pkg() -> Any:
     mod = python_package("mipcodec")
-    for sub in ("fleet", "spark", "dataset"):
+    for sub in ("fleet", "spark", "logs.dataset"):
         __import__(f"mipcodec.{sub}")
     return mod
 

@@ -199,7 +199,7 @@ def capture_dataset(tmp_path_factory) -> Path:
         log = out / "clock-only.bin"
         log.write_bytes(
             b"".join(
-                mod.framing.PacketBuilder(0x80).add_field(0xD5, ts(k * 10**7)).add_field(0x04, accel).build()
+                mod.PacketBuilder(0x80).add_field(0xD5, ts(k * 10**7)).add_field(0x04, accel).build()
                 for k in range(200)
             )
         )
