@@ -74,7 +74,7 @@ def _events(m: ModuleType, stream: bytes, chunks=None) -> list:
         if isinstance(ev, m.Skip):
             check(not isinstance(last, m.Skip), "two skip runs in a row")
         else:
-            check(isinstance(ev, (m.RawPacket, m.codec.framing.Nmea, m.codec.framing.Rtcm)), f"event {ev!r}")
+            check(isinstance(ev, (m.RawPacket, m.Nmea, m.Rtcm)), f"event {ev!r}")
         end += len(ev.data)
         last = ev
     check(end == len(stream), f"the events cover {end} of {len(stream)} bytes")
@@ -149,7 +149,7 @@ def parser(package: str, data: bytes) -> None:
     for ev in whole:
         if isinstance(ev, m.RawPacket):
             lines.append(_check_packet(m, bytes(ev.data), ev.offset, device, tracker))
-        elif isinstance(ev, (m.codec.framing.Nmea, m.codec.framing.Rtcm)):  # section 1 foreign frames: not encoder input
+        elif isinstance(ev, (m.Nmea, m.Rtcm)):  # section 1 foreign frames: not encoder input
             line = m.codec.packets.event_line(ev, device)
             check(all(0x20 <= ord(c) < 0x7F for c in line), f"not printable ASCII: {line}")
             lines.append(line)
