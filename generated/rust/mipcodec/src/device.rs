@@ -25,6 +25,28 @@ pub const DEFAULT_BAUD: u32 = 115_200;
 /// command's deadline is kept whatever arrives (`docs/conformance.md` §8).
 pub const READ_MAX: usize = 65_536;
 
+/// The time of a [`Device`]: how long since it was opened, and a wait (between reopens of a
+/// lost port). The default is the system's monotonic clock and `std::thread::sleep`; a test can
+/// give the device a clock of its own ([`Device::with_clock`]).
+pub trait DeviceClock {
+    /// The time since a fixed start (the default: the device's creation).
+    fn elapsed(&self) -> Duration;
+    /// Waits for `duration`.
+    fn sleep(&mut self, duration: Duration);
+}
+
+/// The default [`DeviceClock`]: the system's monotonic clock.
+struct SystemClock(Instant);
+
+impl DeviceClock for SystemClock {
+    fn elapsed(&self) -> Duration {
+        self.0.elapsed()
+    }
+    fn sleep(&mut self, duration: Duration) {
+        std::thread::sleep(duration);
+    }
+}
+
 /// A byte connection to a device.
 pub trait Transport {
     /// Writes all of `bytes`.
@@ -589,7 +611,9 @@ pub const MAX_SETTINGS: usize = 64;
 pub struct Device<T: Transport = Box<dyn Transport>> {
     transport: T,
     session: Session<1>,
-    t0: Instant,
+    clock: Box<dyn DeviceClock>,
+    // The command that gets the device to idle (the spec's `link.idle`, unless replaced).
+    idle_command: Option<(u8, u8)>,
     buf: Vec<u8>,
     on_packet: Vec<PacketHandler>,
     on_packet_at: Vec<TimedPacketHandler>,
@@ -637,7 +661,8 @@ impl<T: Transport> Device<T> {
         Self {
             transport,
             session: Session::new(model),
-            t0: Instant::now(),
+            clock: Box::new(SystemClock(Instant::now())),
+            idle_command: crate::framing::LINK_IDLE,
             buf: vec![0; READ_MAX],
             on_packet: Vec::new(),
             on_packet_at: Vec::new(),
@@ -672,8 +697,8 @@ impl<T: Transport> Device<T> {
         self
     }
 
-    /// When the port goes away, reopens it every [`RECONNECT_INTERVAL_MS`] until `ms`
-    /// milliseconds have passed since the loss ([`DEFAULT_RECONNECT_MS`] is the usual choice),
+    /// When the port goes away, reopens it at once, then every [`RECONNECT_INTERVAL_MS`] while
+    /// the next try is within `ms` milliseconds of the loss ([`DEFAULT_RECONNECT_MS`] is the usual choice),
     /// then gets to idle, re-sends the settings written since connecting, in order, and resumes
     /// (unless the application's last idle or resume command was an idle). Needs a device made by
     /// [`connect`] or given a way to reopen ([`Device::with_opener`]).
@@ -690,6 +715,21 @@ impl<T: Transport> Device<T> {
     ) -> Self {
         self.opener = Some(Box::new(open));
         self.address = address.to_string();
+        self
+    }
+
+    /// Reads the time from `clock` instead of the system's monotonic clock (the session's
+    /// deadlines, [`Device::now_ms`], the waits between reopens): a test's fake clock.
+    pub fn with_clock(mut self, clock: impl DeviceClock + 'static) -> Self {
+        self.clock = Box::new(clock);
+        self
+    }
+
+    /// The command (set, descriptor; it takes no parameters) that gets the device to idle
+    /// ([`Device::to_idle`], and after a reconnection) instead of the spec's `link.idle`;
+    /// `None`: no idle command.
+    pub fn with_idle_command(mut self, idle: Option<(u8, u8)>) -> Self {
+        self.idle_command = idle;
         self
     }
 
@@ -719,13 +759,13 @@ impl<T: Transport> Device<T> {
 
     /// Milliseconds since the device was opened (the session's clock).
     pub fn now_ms(&self) -> u64 {
-        u64::try_from(self.t0.elapsed().as_millis()).unwrap_or(u64::MAX)
+        u64::try_from(self.clock.elapsed().as_millis()).unwrap_or(u64::MAX)
     }
 
     /// Nanoseconds since the device was opened (the clock model's arrival times: the time the
     /// transport's read returned).
     pub fn now_ns(&self) -> i64 {
-        i64::try_from(self.t0.elapsed().as_nanos()).unwrap_or(i64::MAX)
+        i64::try_from(self.clock.elapsed().as_nanos()).unwrap_or(i64::MAX)
     }
 
     /// Starts (true: a new model) or stops the host clock model (`docs/time.md`): every data
@@ -931,8 +971,8 @@ impl<T: Transport> Device<T> {
         }
     }
 
-    /// Reopens the lost port every [`RECONNECT_INTERVAL_MS`] until the deadline, then gets to
-    /// idle, re-applies the settings and resumes.
+    /// Reopens the lost port at once, then every [`RECONNECT_INTERVAL_MS`] while the next try is
+    /// within the deadline, then gets to idle, re-applies the settings and resumes.
     fn recover(&mut self, e: io::Error) -> Result<(), SessionError> {
         let (Some(limit), false, true) =
             (self.reconnect_ms, self.recovering, self.opener.is_some())
@@ -944,11 +984,10 @@ impl<T: Transport> Device<T> {
             "port lost ({}), reopening {address} every {RECONNECT_INTERVAL_MS} ms",
             lost_reason(&e)
         ));
-        let began = Instant::now();
-        let deadline = Duration::from_millis(limit);
+        // Reopened at once, then every interval while the next try is within the deadline.
+        let began = self.clock.elapsed();
         let interval = Duration::from_millis(RECONNECT_INTERVAL_MS);
         loop {
-            std::thread::sleep(interval.min(deadline.saturating_sub(began.elapsed())));
             let opened = match self.opener.as_mut() {
                 Some(open) => open(self.baud),
                 None => return Err(SessionError::Io(e)),
@@ -958,7 +997,12 @@ impl<T: Transport> Device<T> {
                     self.transport = t;
                     break;
                 }
-                Err(_) if began.elapsed() < deadline => {}
+                Err(_)
+                    if self.clock.elapsed().saturating_sub(began) + interval
+                        <= Duration::from_millis(limit) =>
+                {
+                    self.clock.sleep(interval);
+                }
                 Err(_) => {
                     let m = format!("gave up reopening {address} after {limit} ms");
                     self.log(&m);
@@ -977,7 +1021,7 @@ impl<T: Transport> Device<T> {
         let applied = applied?;
         self.log(&format!(
             "reconnected after {:.1} s, re-applied {applied} settings",
-            began.elapsed().as_secs_f64()
+            self.clock.elapsed().saturating_sub(began).as_secs_f64()
         ));
         Ok(())
     }
@@ -986,7 +1030,7 @@ impl<T: Transport> Device<T> {
     /// application had the device idle.
     fn reapply(&mut self) -> Result<usize, SessionError> {
         let model = self.session.device();
-        if link_command(crate::framing::LINK_IDLE, model).is_some() {
+        if link_command(self.idle_command, model).is_some() {
             // The session's own idle: what the application left stays (resumed or idle).
             let idle = self.idle;
             let done = self.to_idle();
@@ -1015,7 +1059,7 @@ impl<T: Transport> Device<T> {
             return;
         };
         let key = Some((facts.set, facts.descriptor));
-        if key == crate::framing::LINK_IDLE {
+        if key == self.idle_command {
             self.idle = true;
             return;
         }
@@ -1043,8 +1087,11 @@ impl<T: Transport> Device<T> {
     /// Returns the last attempt's result (ack, nack, or timeout after the last attempt).
     pub fn to_idle(&mut self) -> Result<Completed, SessionError> {
         let model = self.session.device();
-        let idle = link_command(crate::framing::LINK_IDLE, model)
-            .ok_or_else(|| SessionError::Link("idle: the protocol has no idle command".into()))?;
+        let Some(idle) = link_command(self.idle_command, model) else {
+            let m = "idle: the protocol has no idle command";
+            self.log(m);
+            return Err(SessionError::Link(m.into()));
+        };
         let attempts = crate::framing::LINK_IDLE_ATTEMPTS.max(1);
         let outer = self.dropping;
         let mut attempt = 1;
