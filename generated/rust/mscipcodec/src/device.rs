@@ -698,10 +698,10 @@ impl<T: Transport> Device<T> {
     }
 
     /// When the port goes away, reopens it at once, then every [`RECONNECT_INTERVAL_MS`] while
-    /// the next try is within `ms` milliseconds of the loss ([`DEFAULT_RECONNECT_MS`] is the usual choice),
-    /// then gets to idle, re-sends the settings written since connecting, in order, and resumes
-    /// (unless the application's last idle or resume command was an idle). Needs a device made by
-    /// [`connect`] or given a way to reopen ([`Device::with_opener`]).
+    /// the next try is within `ms` milliseconds of the loss ([`DEFAULT_RECONNECT_MS`] is the
+    /// usual choice), then gets to idle, re-sends the settings written since connecting, in
+    /// order, and resumes (unless the application's last idle or resume command was an idle).
+    /// Needs a device made by [`connect`] or given a way to reopen ([`Device::with_opener`]).
     pub fn with_reconnect_ms(mut self, ms: u64) -> Self {
         self.reconnect_ms = Some(ms);
         self
