@@ -18,10 +18,12 @@ import mipcodec
 from mipcodec import (
     DecodedField,
     Decoder,
+    Nmea,
     Packet,
     PacketBuilder,
     Parser,
     RawPacket,
+    Rtcm,
     SampleGrouper,
     Skip,
     decode_all,
@@ -59,7 +61,8 @@ def main(argv: List[str]) -> int:
 
     # The stream parser, fed in blocks, then flushed.
     parser = Parser()
-    events: List[Union[RawPacket, Skip]] = parser.feed(data[:5]) + parser.feed(data[5:]) + parser.flush()
+    # (NMEA sentences and RTCM3 frames between packets are events too where the protocol has them)
+    events: List[Union[RawPacket, Skip, Nmea, Rtcm]] = parser.feed(data[:5]) + parser.feed(data[5:]) + parser.flush()
     raw = [e for e in events if isinstance(e, RawPacket)]
     check(len(raw) == 1 and len(events) == 1, f"parser events {events}")
     packet = decode_packet(raw[0].data, raw[0].offset)
@@ -89,13 +92,13 @@ def main(argv: List[str]) -> int:
     # Whole-stream and chunked decoding, samples and the column API.
     decoded = decode_all(data + data)
     if TYPE_CHECKING:
-        assert_type(decoded, List[Union[Packet, Skip]])
+        assert_type(decoded, List[Union[Packet, Skip, Nmea, Rtcm]])
     offsets = [e.offset for e in decoded if isinstance(e, Packet)]
     check(offsets == [0, len(data)], f"decode_all found packets at {offsets}")
     decoder = Decoder()
     chunked = decoder.feed(data) + decoder.flush()
     if TYPE_CHECKING:
-        assert_type(chunked, List[Union[Packet, Skip]])
+        assert_type(chunked, List[Union[Packet, Skip, Nmea, Rtcm]])
     check(len(chunked) == 1 and isinstance(chunked[0], Packet), f"Decoder gave {chunked}")
     grouper = SampleGrouper()
     samples = grouper.feed(raw[0]) + grouper.flush()
