@@ -636,7 +636,7 @@ def build_round(protocols: list[dict], seed: int) -> list[Group]:
                     or len(pk.payload(framing)) + size > framing.max_payload
                 ):
                     pk = Packet(s.set_id, [])
-                    g.codec.packets.append(pk)
+                    g.packets.append(pk)
                 pk.fields.append(s)
             out = bytearray()
             for p in g.packets:
