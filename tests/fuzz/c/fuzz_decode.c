@@ -170,7 +170,12 @@ static void on_event(void *arg, const FZ(event_t) * ev) {
     FZ_CHECK(ev->length > 0 && ev->length <= run->size - ev->offset, "event length %llu at %llu",
              (unsigned long long)ev->length, (unsigned long long)ev->offset);
     FZ_CHECK(!(skip && run->last_skip), "two skip runs in a row");
-    if (!skip) {
+    if (ev->kind == FZU(EVENT_NMEA) || ev->kind == FZU(EVENT_RTCM)) {
+        /* a sentence or correction frame between packets (docs/conformance.md section 1): its
+         * bytes, nothing to decode */
+        FZ_CHECK(ev->packet != NULL && memcmp(ev->packet, run->stream + ev->offset, (size_t)ev->length) == 0,
+                 "frame bytes differ from the stream at %llu", (unsigned long long)ev->offset);
+    } else if (!skip) {
         FZ_CHECK(ev->kind == FZU(EVENT_PACKET) && ev->packet != NULL &&
                      memcmp(ev->packet, run->stream + ev->offset, (size_t)ev->length) == 0,
                  "packet bytes differ from the stream at %llu", (unsigned long long)ev->offset);
