@@ -206,10 +206,12 @@ def test_every_vector_under_wine(lang, pkg, c_prefixes, cpp_prefixes, wine, tmp_
     assert not failures, "\n".join(failures)
     assert len(runs) < len(vectors) // 4  # the concatenation keeps the run short
     # the lines back to bytes (every vector, in order; one process)
-    text = "".join(line + "\n" for v in vectors for line in v["expect"]).encode()
+    # (not the cases with NMEA or RTCM3 lines: encode refuses those lines, docs/conformance.md section 5)
+    encodable = [v for v in vectors if not any('"nmea":' in line or '"rtcm":' in line for line in v["expect"])]
+    text = "".join(line + "\n" for v in encodable for line in v["expect"]).encode()
     r = subprocess.run([*wine, exe(lang, pkg, "encode")], input=text, capture_output=True)
     assert r.returncode == 0, r.stderr
-    assert r.stdout == b"".join(bytes.fromhex(v["hex"]) for v in vectors)
+    assert r.stdout == b"".join(bytes.fromhex(v["hex"]) for v in encodable)
 
 
 @pytest.mark.parametrize("lang", ["c", "cpp"])
