@@ -504,7 +504,9 @@ def test_cv7_holds_the_defaults_of_its_own_manual_only() -> None:
     with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0") as sim:
         dev = open_device(pkg, sim.address, "cv7_ins")
         try:
-            assert dev.threedm.uart_baudrate.read().baud == 0  # no stated default: zero (an assumption)
+            # no stated default: the spec's plausible value, the lowest rate its main UART serves
+            # (issue 51; 3dm-cv7-ins-docs.txt:2718), not the GX5-45's stated default
+            assert dev.threedm.uart_baudrate.read().baud == 115200
             assert dev.threedm.pps_source.read().source == t.PpsSource.RECEIVER_1
             cal = dev.filter.gnss_antenna_calibration_control.read()
             assert abs(cal.max_offset - 0.1) < 1e-6  # line 271
