@@ -13,6 +13,21 @@ typedef struct {
     uint64_t covered;
 } fz_json_run_t;
 
+/* A foreign frame's line is not encoder input (docs/conformance.md section 5): refused with a message. */
+static void check_foreign(const FZ(event_t) * ev) {
+    char line[1024];
+    uint8_t out[8];
+    char msg[256];
+    size_t out_len = 0;
+    size_t n = FZ(json_foreign_line)(ev, line, sizeof line);
+    FZ(status_t) st;
+    FZ_CHECK(n > 0 && n < sizeof line, "foreign line of %zu bytes", n);
+    memset(msg, 'x', sizeof msg);
+    st = FZ(json_encode_line)(line, n, out, sizeof out, &out_len, msg, sizeof msg);
+    FZ_CHECK(st == FZU(ERR_JSON), "the foreign frame's line gives status %d: %s", (int)st, line);
+    FZ_CHECK(memchr(msg, '\0', sizeof msg) != NULL && strlen(msg) > 0, "refused without a message: %s", line);
+}
+
 static void on_event(void *arg, const FZ(event_t) * ev) {
     fz_json_run_t *run = (fz_json_run_t *)arg;
     const uint8_t *bytes = run->bytes + ev->offset;
@@ -26,6 +41,10 @@ static void on_event(void *arg, const FZ(event_t) * ev) {
     FZ_CHECK(ev->offset == run->covered && ev->length <= run->size - ev->offset, "event at %llu, expected %llu",
              (unsigned long long)ev->offset, (unsigned long long)run->covered);
     run->covered += ev->length;
+    if (ev->kind == FZU(EVENT_NMEA) || ev->kind == FZU(EVENT_RTCM)) {
+        check_foreign(ev);
+        return;
+    }
     n = ev->kind == FZU(EVENT_PACKET) ? FZ(json_packet_line)(bytes, len, ev->offset, FZU(DEVICE_ANY), NULL, 0)
                                       : FZ(json_skip_line)(ev->offset, bytes, len, NULL, 0);
     line = (char *)malloc(n + 1);

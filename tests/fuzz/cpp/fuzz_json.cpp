@@ -22,13 +22,23 @@ void check_line(const std::string &line) {
     std::string text;
     auto on = [&](const pkg::StreamEvent &ev) {
         const bool packet = ev.kind == pkg::StreamEvent::Kind::packet;
-        const std::size_t len = static_cast<std::size_t>(packet ? ev.packet.size : ev.count);
+        const bool foreign = ev.kind == pkg::StreamEvent::Kind::nmea || ev.kind == pkg::StreamEvent::Kind::rtcm;
+        const std::size_t len = static_cast<std::size_t>(packet || foreign ? ev.packet.size : ev.count);
         FZ_CHECK(ev.offset == covered && len <= bytes.size() - covered, "event at %llu, expected %llu",
                  (unsigned long long)ev.offset, (unsigned long long)covered);
         const std::uint8_t *b = bytes.data() + ev.offset;
         covered += len;
         text.clear();
         pkg::JsonWriter w(pkg::string_sink, &text);
+        if (foreign) {
+            // a foreign frame's line is not encoder input (docs/conformance.md section 5)
+            pkg::write_foreign_json(w, ev);
+            std::vector<std::uint8_t> refused;
+            std::string why;
+            FZ_CHECK(!pkg::encode_json_line(text, refused, why) && refused.empty() && !why.empty(),
+                     "the foreign frame's line encodes or is refused without a message: %s", text.c_str());
+            return;
+        }
         if (packet) {
             pkg::write_packet_json(w, ev.offset, pkg::PacketView{b, len}, std::nullopt);
         } else {
