@@ -177,7 +177,7 @@ def test_start_utc(capsys) -> None:
     days), so 345,600 s into it is 2026-01-08 00:00:00 GPS time, 2026-01-07 23:59:42 UTC (18 leap
     seconds): the world's default start. A time near a week's end rolls the week over."""
     world = importlib.import_module("mipcodec.sim.world")
-    sim = importlib.import_module("mipcodec.sim")
+    sim = importlib.import_module("mipcodec.sim.cli")
     assert world.gps_start_of_utc("2026-01-07T23:59:42Z") == (world.GPS_WEEK, world.GPS_TOW0) == (2400, 345600.0)
     assert world.gps_start_of_utc("2026-01-10T23:59:42") == (2401, 0.0)
     w = world.World()
