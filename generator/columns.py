@@ -165,7 +165,7 @@ def time_sources(proto: dict) -> list[tuple[int, int, str, int]]:
 
 def time_facts(proto: dict, attr=lambda name: name) -> dict:
     """The IR's `time` entry as the time model's tables: per kind (`gps_time`, `device_clock`,
-    `leap_seconds`, `reference_time`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
+    `leap_seconds`, `reference_time`, `external`, `sync_health`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
     parameter names through `attr` (a back end's attribute naming)."""
     t = proto.get("time") or {}
     out: dict = {}
@@ -196,5 +196,25 @@ def time_facts(proto: dict, attr=lambda name: name) -> dict:
             "monotonic": e["monotonic"],
         }
         for e in t.get("reference_time", [])
+    ]
+    out["external"] = [
+        {
+            "set": f"0x{e['set']:02X}",
+            "descriptor": f"0x{e['descriptor']:02X}",
+            "param": attr(e["param"]),
+            "per_second": e["per_second"],
+            "valid_flags": attr(e["valid_flags"]),
+            "mask": f"0x{e['mask']:04X}",
+        }
+        for e in t.get("external", [])
+    ]
+    out["sync_health"] = [
+        {
+            "set": f"0x{e['set']:02X}",
+            "descriptor": f"0x{e['descriptor']:02X}",
+            "attr": attr(e["param"] if e["kind"] == "bool" else e["valid_flags"]),
+            "mask": f"0x{e.get('mask', 0):04X}",
+        }
+        for e in t.get("sync_health", [])
     ]
     return out

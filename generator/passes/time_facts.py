@@ -12,13 +12,19 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
 - `reference_time`: per device (`device`, at most one entry each), the field carrying the device's
   own reference time for the sessions' host clock model (docs/time.md): either `param` (an
   unsigned integer in ns, us, ms or s) or `tow` and `week` as in `gps_time`, and `monotonic`
-  (whether the manual promises it never jumps).
+  (whether the manual promises it never jumps);
+- `external`: fields carrying the device's external time as an unsigned count (ns, us, ms or s) on
+  the GPS time scale: `field`, `param`, `valid_flags` and `valid` (the log time model's second
+  choice, after a valid GPS time);
+- `sync_health`: fields saying whether a PPS is present (`info`'s synchronization section): `field`
+  and either `param` (a bool) or `valid_flags` and `valid`.
 
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
 be set, `inverted`: bits that must be clear); a `reference_time` entry its `device`, `kind`
 (`count`: `param`, `per_second`, its `offset` and `size` in the field data; `gps`: `tow`, `week`,
-`tow_offset`, `week_offset`, `week_size`) and `monotonic`; without the section
+`tow_offset`, `week_offset`, `week_size`) and `monotonic`; an `external` entry `param`, `per_second`, `valid_flags`, `mask`; a
+`sync_health` entry `kind` (`bool`: `param`; `flags`: `valid_flags`, `mask`); without the section
 it is empty lists.
 """
 
@@ -33,9 +39,11 @@ _CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
 def run(ctx: Context) -> None:
     spec = ctx.pf.data.get("time")
     ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
+    ctx.time.update(external=[], sync_health=[])
     if spec is None:
         return
     check = _Check(ctx)
+    _log_sync(ctx, spec, check)
     seen: set[str] = set()
     for i, entry in enumerate(spec.get("reference_time") or []):
         out = check.reference(("time", "reference_time", i), entry, seen)
@@ -249,3 +257,64 @@ def _params(f: dict, name: str) -> list[dict | None]:
 
 def _prim(q: dict) -> str | None:
     return q["type"]["name"] if q["type"]["kind"] == "primitive" else None
+
+
+def _log_sync(ctx: Context, spec: dict, check: _Check) -> None:
+    """The `external` and `sync_health` entries (the log time model and `info`, docs/time.md)."""
+    for i, e in enumerate(spec.get("external") or []):
+        path = ("time", "external", i)
+        found = check.field(path + ("field",), e["field"])
+        sources = ctx.check_sources(ctx.pf, path + ("sources",), e["sources"])
+        if found is None:
+            continue
+        s, f = found
+        ok = check.param(
+            path + ("param",),
+            f,
+            e["param"],
+            lambda q: _prim(q) in _UNSIGNED and q["units"] in _CLOCK_UNITS,
+            "an unsigned integer parameter in ns, us, ms or s",
+        )
+        masks = check.flags(path, f, e)
+        if not ok or masks is None:
+            continue
+        if masks[1]:
+            check.err(path + ("invalid",), "time external: 'invalid' is not supported here", "valid members only")
+            continue
+        q = _params(f, e["param"])[0]
+        ctx.time["external"].append(
+            {
+                "field": e["field"],
+                "set": s["id"],
+                "descriptor": f["id"],
+                "param": e["param"],
+                "per_second": _CLOCK_UNITS[q["units"]],
+                "valid_flags": e["valid_flags"],
+                "mask": masks[0],
+                "sources": sources,
+            }
+        )
+    for i, e in enumerate(spec.get("sync_health") or []):
+        path = ("time", "sync_health", i)
+        found = check.field(path + ("field",), e["field"])
+        sources = ctx.check_sources(ctx.pf, path + ("sources",), e["sources"])
+        if found is None:
+            continue
+        s, f = found
+        out = {"field": e["field"], "set": s["id"], "descriptor": f["id"], "sources": sources}
+        if ("param" in e) == ("valid_flags" in e):
+            check.err(path, "time sync_health: give either param or valid_flags", "param, or valid_flags and valid")
+            continue
+        if "param" in e:
+            if not check.param(path + ("param",), f, e["param"], lambda q: _prim(q) == "bool", "a bool parameter"):
+                continue
+            out.update(kind="bool", param=e["param"])
+        else:
+            masks = check.flags(path, f, e)
+            if masks is None:
+                continue
+            if masks[1]:
+                check.err(path + ("invalid",), "time sync_health: 'invalid' is not supported here", "valid members only")
+                continue
+            out.update(kind="flags", valid_flags=e["valid_flags"], mask=masks[0])
+        ctx.time["sync_health"].append(out)

@@ -2907,6 +2907,21 @@ LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = (
     (0x92, 0x11, "leap_seconds", "valid_flags", 0x0002),
 )
 
+# The fields carrying the device's external time on the GPS time scale (the time model's second
+# choice, after a valid GPS time): (set, descriptor, count attribute, counts per second,
+# valid-flags attribute, bits that must be set).
+EXTERNAL_TIMES: Tuple[Tuple[int, int, str, int, str, int], ...] = (
+    (0xFF, 0xD7, "nanoseconds", 1000000000, "valid_flags", 0x0001),
+)
+
+# The fields saying whether a PPS is present (`info`'s synchronization section): (set,
+# descriptor, attribute, mask): mask 0: a bool attribute, true while PPS sync is valid; else the
+# flag bits set while a PPS is present.
+SYNC_PPS: Tuple[Tuple[int, int, str, int], ...] = (
+    (0xA0, 0x02, "time_sync", 0x0000),
+    (0x80, 0x12, "valid_flags", 0x0001),
+)
+
 # Per device, the field carrying its own reference time (the host clock model, clock.py;
 # docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per
 # second, tow parameter, week parameter, monotonic).
