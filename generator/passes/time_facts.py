@@ -314,7 +314,9 @@ def _log_sync(ctx: Context, spec: dict, check: _Check) -> None:
             if masks is None:
                 continue
             if masks[1]:
-                check.err(path + ("invalid",), "time sync_health: 'invalid' is not supported here", "valid members only")
+                check.err(
+                    path + ("invalid",), "time sync_health: 'invalid' is not supported here", "valid members only"
+                )
                 continue
             out.update(kind="flags", valid_flags=e["valid_flags"], mask=masks[0])
         ctx.time["sync_health"].append(out)

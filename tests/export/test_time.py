@@ -384,7 +384,8 @@ def test_info_reports_gaps_jumps_resets_and_invalid_stretches(tmp_path, capsys):
     text = capsys.readouterr().out.splitlines()
     start = next(i for i, line in enumerate(text) if line.startswith("UTC:"))
     at = lambda tow: WEEK0 + round(tow * NS)  # noqa: E731
-    assert text[start:] == [
+    end = text.index("synchronization:")  # (tests/export/test_sync.py)
+    assert text[start:end] == [
         # 11 data packets, 7 timed: 3 by their own GPS time (1, 2, 5), 4 by the device clock (0, 3, 4, 7)
         f"UTC: first {iso(at(90))}  last {iso(at(107))}  span 17.000000 s"
         "  (7 of 11 data packets: 3 by their own GPS time, 4 by the device clock)",

@@ -13,10 +13,11 @@ its bytes (docs/log-to-csv.md, "The device" and "Time"):
   decodes with it (`packets.Decoder(device)`), the columnar path re-decodes the per-device entries
   `decode_columns` read with the first device's layout (`columns`).
 - **Time.** Every row's `t_ns` (UTC ns since the Unix epoch, None/null where unknown) comes from
-  the time model of `timebase` (GPS time, else the device clock through the log's clock map), the
+  the time model of `timebase` (GPS time, else external time, else the device clock through the
+  log's clock map), the
   same as the dataset's: `PacketClock` packet by packet, `SplitClock.block` block by block; `time`
   is the same instant as ISO 8601 text (`iso`, CSV and JSONL) or a UTC timestamp in microseconds
-  (Parquet). `ClockLines` gives `info` a line per clock (device clock, GPS time).
+  (Parquet). `ClockLines` gives `info` a line per clock (device clock, GPS time, external time).
 
 Errors are `writers.ToolError` (one line, exit status 2) for the single-log tools and
 `DeviceUnknown` (a `dataset.ReadError`: the log's `_files` row, status `unreadable`) for the
@@ -304,8 +305,9 @@ class _Track:
 class ClockLines:
     """`info`'s line per clock of the data packets, in memory that does not grow with the log:
     the device clock (reference time, ns since power-on) and the GPS time the packets carry as
-    valid (week and time of week); each with its first and last value, its span (from its lowest
-    to its highest value), its gaps over GAP_NS and its backward jumps. The UTC line is
+    valid (week and time of week) and, when the log has an external time field, the external time
+    the packets carry as valid (ns on the GPS scale); each with its first and last value, its span
+    (from its lowest to its highest value), its gaps over GAP_NS and its backward jumps. The UTC line is
     `timebase.TimeReport`'s (the time model's result)."""
 
     GAP_NS = 1_000_000_000
@@ -315,6 +317,8 @@ class ClockLines:
         self.packets = 0
         self.device = _Track()
         self.gps = _Track()
+        self.external = _Track()
+        self.has_external = False
 
     def add(self, packet: Packet, pt: Any) -> None:
         """One packet in log order and its `timebase.PacketTime`."""
@@ -323,13 +327,19 @@ class ClockLines:
         self.packets += 1
         if pt.device_ns is not None:
             self.device.add(pt.device_ns, packet.offset, self.GAP_NS, _seconds)
-        if pt.gps_ns is not None:
+        if pt.gps_ns is not None and not pt.external:
             self.gps.add(pt.gps_ns, packet.offset, self.GAP_NS, _gps_text)
+        if pt.ext_ns is not None:
+            self.has_external = True
+            if pt.ext_valid:
+                self.external.add(pt.ext_ns, packet.offset, self.GAP_NS, _gps_text)
 
     def lines(self) -> List[str]:
-        return self.device.text("device clock", _seconds, self.GAP_NS, self.packets) + self.gps.text(
-            "GPS time", _gps_text, self.GAP_NS, self.packets
-        )
+        out = self.device.text("device clock", _seconds, self.GAP_NS, self.packets)
+        out += self.gps.text("GPS time", _gps_text, self.GAP_NS, self.packets)
+        if self.has_external:
+            out += self.external.text("external time", _gps_text, self.GAP_NS, self.packets)
+        return out
 
 
 def _seconds(ns: int) -> str:

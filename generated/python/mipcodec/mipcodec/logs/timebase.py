@@ -6,9 +6,15 @@ A packet's time comes from, in this order:
 1. its own GPS time (week number + time of week) when its valid flags say it is valid: which
    fields carry GPS time, in which parameters, and which flag bits must be set is a spec fact
    (the protocol's `time` section; the generated table `_columns.GPS_TIMES`);
-2. else its device clock (the reference timestamp, ns since power-on; `_columns.DEVICE_CLOCKS`)
+2. else its external time when its valid flag says it is valid (the CV7's External Timestamp
+   0xFF,0xD7, "Equivalent to the GPS Timestamp but in nanoseconds": a count of ns on the GPS time
+   scale, since the GPS epoch; the spec's `time.external`, `_columns.EXTERNAL_TIMES`);
+3. else its device clock (the reference timestamp, ns since power-on; `_columns.DEVICE_CLOCKS`)
    through the log's clock map (below);
-3. else no time (`t_ns` None / null).
+4. else no time (`t_ns` None / null).
+
+A packet's own time (1 or 2) is its `PacketTime.gps_ns`; the rest of the model (anchors, the
+block path) does not distinguish the two.
 
 GPS time to UTC: UTC = GPS - leap seconds, the leap seconds being the log's own report
 (`_columns.LEAP_SECONDS`, e.g. the CV7's GPS leap seconds 0x91/0x92,0x11, when its valid flag is
@@ -145,8 +151,10 @@ class PacketTime(NamedTuple):
     """The time facts one packet carries (None where it carries none).
 
     `device_ns`: its device clock; `gps_week`/`gps_tow`: its own GPS time as sent (raw, whatever
-    the flags); `gps_ns`: that GPS time in ns since the GPS epoch when valid (flags set, tow in
-    range), else None; `leap`: a valid GPS - UTC leap second report."""
+    the flags); `gps_ns`: the packet's own time in ns since the GPS epoch: that GPS time when
+    valid (flags set, tow in range), else its external time when valid, else None; `leap`: a valid
+    GPS - UTC leap second report; `ext_ns`: its external time as sent (ns on the GPS scale, raw,
+    whatever the flag), `ext_valid` its valid flag; `external`: `gps_ns` is the external time."""
 
     offset: int
     device_ns: Optional[int] = None
@@ -154,9 +162,14 @@ class PacketTime(NamedTuple):
     gps_tow: Optional[float] = None
     gps_ns: Optional[int] = None
     leap: Optional[int] = None
+    ext_ns: Optional[int] = None
+    ext_valid: bool = False
+    external: bool = False
 
     def has_time(self) -> bool:
-        return self.device_ns is not None or self.gps_week is not None or self.leap is not None
+        return (
+            self.device_ns is not None or self.gps_week is not None or self.leap is not None or self.ext_ns is not None
+        )
 
 
 class Times(NamedTuple):
@@ -180,9 +193,11 @@ def _field_key(value: Any) -> Tuple[Any, Any]:
 
 def packet_time(packet: Packet) -> PacketTime:
     """The time facts of a decoded packet (its first device clock field, its most preferred GPS
-    time field -- the spec table's order, first occurrence -- and its first valid leap report)."""
+    time field -- the spec table's order, first occurrence --, its most preferred external time
+    field and its first valid leap report)."""
     device: Optional[int] = None
     gps: Optional[Tuple[int, Any, Any, Any]] = None
+    ext: Optional[Tuple[int, int, bool]] = None
     leap: Optional[int] = None
     for f in packet.fields:
         if not isinstance(f, DecodedField):
@@ -195,13 +210,25 @@ def packet_time(packet: Packet) -> PacketTime:
             if key == (s, d) and (gps is None or rank < gps[0]):
                 v = f.value
                 gps = (rank, getattr(v, week), getattr(v, tow), _flags_ok(getattr(v, flags), mask, inverted))
+        for rank, (s, d, attr, per_second, flags, mask) in enumerate(_columns.EXTERNAL_TIMES):
+            if key == (s, d) and (ext is None or rank < ext[0]):
+                v = f.value
+                ext = (rank, int(getattr(v, attr)) * (NS // per_second), _flags_ok(getattr(v, flags), mask, 0))
         for s, d, attr, flags, mask in _columns.LEAP_SECONDS:
             if leap is None and key == (s, d) and _flags_ok(getattr(f.value, flags), mask, 0):
                 leap = int(getattr(f.value, attr))
-    if gps is None:
-        return PacketTime(packet.offset, device, None, None, None, leap)
-    wk, sec, ok = int(gps[1]), float(gps[2]), gps[3]
-    return PacketTime(packet.offset, device, wk, sec, gps_ns(wk, sec) if ok and valid_tow(sec) else None, leap)
+    ext_ns, ext_ok = (ext[1], ext[2]) if ext is not None else (None, False)
+    own: Optional[int] = None
+    wk: Optional[int] = None
+    sec: Optional[float] = None
+    if gps is not None:
+        wk, sec = int(gps[1]), float(gps[2])
+        if gps[3] and valid_tow(sec):
+            own = gps_ns(wk, sec)
+    external = own is None and ext_ok
+    if external:
+        own = ext_ns
+    return PacketTime(packet.offset, device, wk, sec, own, leap, ext_ns, ext_ok, external)
 
 
 class Segment(NamedTuple):
@@ -517,6 +544,7 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     # (offsets, rank, field index, values...) per kind, from the C tables and the other entries.
     dev_parts: List[Tuple[Any, Any, Any, Any]] = []
     gps_parts: List[Tuple[Any, Any, Any, Any, Any, Any]] = []
+    ext_parts: List[Tuple[Any, Any, Any, Any, Any]] = []
     leap_parts: List[Tuple[Any, Any, Any, Any]] = []
     for t in cols.tables.values():
         if t.rows == 0:
@@ -545,6 +573,12 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
                         ok,
                     )
                 )
+        for rank, (s, d, attr, per_second, flags, mask) in enumerate(_columns.EXTERNAL_TIMES):
+            if key == (s, d):
+                arrays = arrays if arrays is not None else t.arrays()
+                fl = arrays[flags].astype(np.int64)
+                v = arrays[attr].astype(np.int64) * (NS // per_second)
+                ext_parts.append((offs, np.full(len(offs), rank), idx, v, (fl & mask) == mask))
         for rank, (s, d, attr, flags, mask) in enumerate(_columns.LEAP_SECONDS):
             if key == (s, d):
                 arrays = arrays if arrays is not None else t.arrays()
@@ -582,13 +616,20 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
                             np.array([ok]),
                         )
                     )
+            for rank, (s, d, attr, per_second, flags, mask) in enumerate(_columns.EXTERNAL_TIMES):
+                if key == (s, d):
+                    v = f.value
+                    e_ok = _flags_ok(getattr(v, flags), mask, 0)
+                    ns = int(getattr(v, attr)) * (NS // per_second)
+                    ext_parts.append(_one(np, off, rank, k, ns) + (np.array([e_ok]),))
             for rank, (s, d, attr, flags, mask) in enumerate(_columns.LEAP_SECONDS):
                 if key == (s, d) and _flags_ok(getattr(f.value, flags), mask, 0):
                     leap_parts.append(_one(np, off, rank, k, int(getattr(f.value, attr))))
     dev_off, dev_val = _first(np, dev_parts, [3])
     gps_off, (g_week, g_tow, g_ok) = _first_many(np, gps_parts, [3, 4, 5])
+    ext_off, (e_ns, e_ok) = _first_many(np, ext_parts, [3, 4])
     leap_off, leap_val = _first(np, leap_parts, [3])
-    offsets = _union(np, [dev_off, gps_off, leap_off])
+    offsets = _union(np, [dev_off, gps_off, ext_off, leap_off])
     n = len(offsets)
     out: Dict[str, Any] = {"offset": offsets + base}
 
@@ -613,7 +654,12 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     out["gps_ns"] = np.where(
         ok, out["gps_week"] * WEEK_NS + whole.astype(np.int64) * NS + np.rint((safe - whole) * NS).astype(np.int64), 0
     )
-    out["gps_ok"] = ok
+    # The external time where the GPS time is not valid (the order of the module docstring).
+    out["ext_ns"], out["has_ext"] = place(ext_off, e_ns, np.int64)
+    out["ext_valid"], _ = place(ext_off, e_ok, bool)
+    out["external"] = out["ext_valid"] & ~ok
+    out["gps_ns"] = np.where(out["external"], out["ext_ns"], out["gps_ns"])
+    out["gps_ok"] = ok | out["external"]
     out["leap"], out["leap_ok"] = place(leap_off, leap_val[0] if leap_val else [], np.int64)
     return out
 
@@ -713,6 +759,9 @@ def columns_times(cols: Any, base: int) -> List[PacketTime]:
                 float(p["gps_tow"][i]) if p["has_gps"][i] else None,
                 int(p["gps_ns"][i]) if p["gps_ok"][i] else None,
                 int(p["leap"][i]) if p["leap_ok"][i] else None,
+                int(p["ext_ns"][i]) if p["has_ext"][i] else None,
+                bool(p["ext_valid"][i]),
+                bool(p["external"][i]),
             )
         )
     return out
@@ -808,7 +857,7 @@ class TimeReport:
     `lines()` gives the text.
 
     - time span: first and last UTC time of the data packets, and how many had one (from their
-      own GPS time or through the device clock);
+      own GPS time, their external time or through the device clock);
     - time gaps: more than `GAP_NS` without a timed data packet (UTC, against the latest time so far);
     - backward jumps: a data set's UTC time going back from that set's previous timed packet;
     - device clock resets: the device clock going back by more than `RESET_NS` (a new epoch);
@@ -822,6 +871,7 @@ class TimeReport:
         self.data_sets = frozenset(data_sets)
         self.packets = 0
         self.own = 0
+        self.external = 0
         self.mapped = 0
         self.first: Optional[int] = None
         self.last: Optional[int] = None
@@ -862,6 +912,8 @@ class TimeReport:
         if t is None:
             if pt.gps_week is not None and d is None:
                 reason = "GPS time not valid"
+            elif pt.ext_ns is not None and d is None:
+                reason = "external time not valid"
             elif d is not None:
                 reason = "no GPS anchor for the device clock"
             else:
@@ -873,7 +925,9 @@ class TimeReport:
             self.run[3].add(reason)
             return
         self._end_run()
-        if pt.gps_ns is not None:
+        if pt.external:
+            self.external += 1
+        elif pt.gps_ns is not None:
             self.own += 1
         else:
             self.mapped += 1
@@ -895,13 +949,14 @@ class TimeReport:
     def lines(self) -> List[str]:
         """The report's text lines (docs/log-to-csv.md, "Time")."""
         self._end_run()
-        timed = self.own + self.mapped
+        timed = self.own + self.external + self.mapped
+        ext = f", {self.external} by their external time" if self.external else ""
         if self.first is None or self.last is None:
             out = [f"UTC: none of {self.packets} data packets has a UTC time"]
         else:
             out = [
                 f"UTC: first {iso(self.first)}  last {iso(self.last)}  span {(self.last - self.first) / NS:.6f} s"
-                f"  ({timed} of {self.packets} data packets: {self.own} by their own GPS time, {self.mapped} by the device clock)"
+                f"  ({timed} of {self.packets} data packets: {self.own} by their own GPS time{ext}, {self.mapped} by the device clock)"
             ]
         titles = {
             "gaps": f"time gaps over {self.GAP_NS / NS:g} s",

@@ -161,13 +161,16 @@ def bad_checksums(data: bytes, starts: Optional[int] = None) -> int:
 
 def info(args: argparse.Namespace) -> int:
     """The log's counts, its device, a line per clock (device clock, GPS time, UTC: pipeline's
-    ClockLines and timebase's TimeReport, the time model of export) and its fields' rates."""
+    ClockLines and timebase's TimeReport, the time model of export), its fields' rates and its
+    synchronization health (sync.SyncReport)."""
     from . import timebase
+    from .sync import SyncReport
 
     dev = LogDevice.of(args.log, args.device)
     clock = PacketClock(args.log)
     report = timebase.TimeReport(COLUMN_SETS)
     clocks = ClockLines(COLUMN_SETS)
+    sync = SyncReport(COLUMN_SETS)
     source = Source(args.log)
     summary = Summary()
     stream = Events(dev.device)
@@ -178,7 +181,9 @@ def info(args: argparse.Namespace) -> int:
             dev.packet(e, stream.decoder, strict=False)  # info reports an unknown device, decodes on
             pt = timebase.packet_time(e)
             clocks.add(e, pt)
-            report.add(e, pt, clock.step(pt))
+            times = clock.step(pt)
+            report.add(e, pt, times)
+            sync.add(e, pt, times)
 
     for chunk in source.chunks():
         summary.bytes += len(chunk)
@@ -187,5 +192,5 @@ def info(args: argparse.Namespace) -> int:
     for e in stream.flush():
         add(e)
     lines = summary.lines()
-    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + lines[1:] + report.lines()))
+    print("\n".join(lines[:1] + [dev.line()] + clocks.lines() + lines[1:] + report.lines() + sync.lines()))
     return 0
