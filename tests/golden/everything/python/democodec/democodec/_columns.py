@@ -84,6 +84,16 @@ DEVICE_CLOCKS: Tuple[Tuple[int, int, str, int], ...] = ()
 
 LEAP_SECONDS: Tuple[Tuple[int, int, str, str, int], ...] = ()
 
+# The fields carrying the device's external time on the GPS time scale (the time model's second
+# choice, after a valid GPS time): (set, descriptor, count attribute, counts per second,
+# valid-flags attribute, bits that must be set).
+EXTERNAL_TIMES: Tuple[Tuple[int, int, str, int, str, int], ...] = ()
+
+# The fields saying whether a PPS is present (`info`'s synchronization section): (set,
+# descriptor, attribute, mask): mask 0: a bool attribute, true while PPS sync is valid; else the
+# flag bits set while a PPS is present.
+SYNC_PPS: Tuple[Tuple[int, int, str, int], ...] = ()
+
 # Per device, the field carrying its own reference time (the host clock model, clock.py;
 # docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per
 # second, tow parameter, week parameter, monotonic).
