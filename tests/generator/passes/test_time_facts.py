@@ -62,7 +62,14 @@ def test_the_tables(tmp_path):
 
 def test_without_the_section_the_tables_are_empty(tmp_path):
     ctx = _build(tmp_path, "")
-    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
+    assert ctx.time == {
+        "gps_time": [],
+        "device_clock": [],
+        "leap_seconds": [],
+        "reference_time": [],
+        "external": [],
+        "sync_health": [],
+    }
 
 
 def _at(text: str, line_text: str, value: str) -> str:
@@ -108,7 +115,14 @@ def test_wrong_parameters(tmp_path):
         f"{_at(text, 'valid: [reserved]', 'reserved')}: error: time: 'reserved' is not a member of flags"
         " (expected a named member of the bitfield)",
     ]
-    assert ctx.time == {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
+    assert ctx.time == {
+        "gps_time": [],
+        "device_clock": [],
+        "leap_seconds": [],
+        "reference_time": [],
+        "external": [],
+        "sync_health": [],
+    }
 
 
 def test_a_flag_rule_is_needed(tmp_path):
@@ -179,3 +193,38 @@ def test_reference_time_errors(tmp_path):
         " (expected param, or tow and week)",
     ]
     assert ctx.time["reference_time"] == []
+
+
+SYNC_FIELDS = FIELDS + (
+    "  - {id: 0x15, name: sync, role: data, title: S, sources: [{manual: a.txt, line: 8}], params: ["
+    "{name: synced, type: bool}, {name: since, type: u8, units: s}]}\n"
+)
+
+
+def test_external_time_and_sync_health(tmp_path):
+    text = (
+        "time:\n"
+        "  external:\n"
+        "    - {field: sensor.clock, param: us, valid_flags: flags, valid: [tow_ok], sources: [{manual: a.txt, line: 6}]}\n"
+        "    - {field: sensor.leap, param: seconds, valid_flags: flags, valid: [week_ok], sources: [{manual: a.txt, line: 7}]}\n"
+        "  sync_health:\n"
+        "    - {field: sensor.sync, param: synced, sources: [{manual: a.txt, line: 8}]}\n"
+        "    - {field: sensor.gps_time, valid_flags: flags, valid: [week_ok], sources: [{manual: a.txt, line: 5}]}\n"
+        "    - {field: sensor.sync, param: since, sources: [{manual: a.txt, line: 8}]}\n"
+        "    - {field: sensor.sync, sources: [{manual: a.txt, line: 8}]}\n"
+    )
+    ctx = build(tmp_path, {"protocol.yaml": PROTOCOL + text, "sensor.yaml": data_set(SYNC_FIELDS, FLAGS)}, "time_facts")
+    # sensor.clock has no valid_flags parameter: its entry is refused; the leap field's seconds
+    # (u8 in s) with bit 1 is an external time in whole seconds
+    assert [e.split(": error: ")[1] for e in errors(ctx)] == [
+        "time: 'flags' of clock is not a bitfield parameter (expected a bitfield parameter)",
+        "time: 'since' of sync is not a bool parameter (in every layout) (expected a bool parameter)",
+        "time sync_health: give either param or valid_flags (expected param, or valid_flags and valid)",
+    ]
+    assert [
+        (e["descriptor"], e["param"], e["per_second"], e["valid_flags"], e["mask"]) for e in ctx.time["external"]
+    ] == [(0x14, "seconds", 1, "flags", 0b10)]
+    assert [(e["descriptor"], e["kind"], e.get("param"), e.get("mask")) for e in ctx.time["sync_health"]] == [
+        (0x15, "bool", "synced", None),
+        (0x12, "flags", None, 0b10),
+    ]
