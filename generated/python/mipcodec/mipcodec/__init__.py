@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "7c8f31a6d0b79d68"
+SPEC_HASH = "819e1675e237516c"
 
 __all__ = [
     "SPEC_HASH",
