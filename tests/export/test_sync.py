@@ -186,16 +186,17 @@ def test_info_synchronization_of_a_cv7_log(tmp_path, capsys):
 
 
 def test_info_synchronization_of_a_gx5_45_log(tmp_path, capsys):
-    # GX5-45 IMU packets every 1 s with the correlation timestamp, time initialized (bit 2) all
-    # along, PPS Beacon Good (bit 0) clear at TOW 12 and 13: one stretch without PPS, its span in
-    # UTC (no device clock), ended by TOW 14. No device clock: no jumps to compare.
-    tows = [10, 11, 12, 13, 14, 15]
+    # GX5-45 IMU packets every 1 s with the correlation timestamp: at TOW 8 and 9 neither PPS
+    # Beacon Good (bit 0) nor GPS Time Initialized (bit 2): no PPS and no valid time, stretches
+    # whose start has no time (no device clock, no UTC yet): "until" the UTC of TOW 10. Then time
+    # initialized all along, PPS clear at TOW 12 and 13: a stretch without PPS, its span in UTC,
+    # ended by TOW 14. No device clock: no jumps to compare.
+    def flags(t):
+        return 0 if t < 10 else 0b100 | (0 if t in (12, 13) else 1)
+
+    tows = [8, 9, 10, 11, 12, 13, 14, 15]
     pk = [
-        build_packet(
-            0x80,
-            SEN.GpsTimestamp(float(t), W, T.SensorGpsTimestampFlags(0b100 | (0 if t in (12, 13) else 1))),
-            SEN.ScaledAccel(),
-        )
+        build_packet(0x80, SEN.GpsTimestamp(float(t), W, T.SensorGpsTimestampFlags(flags(t))), SEN.ScaledAccel())
         for t in tows
     ]
     offs = offsets(pk)
@@ -206,9 +207,11 @@ def test_info_synchronization_of_a_gx5_45_log(tmp_path, capsys):
     start = lines.index("synchronization:")
     assert lines[start:] == [
         "synchronization:",
-        "  PPS (sensor 0x80,0x12 gps_timestamp): 6 packets, 2 without PPS, 1 stretch",
-        f"    offsets {offs[2]}-{offs[3]}: 2 packets, UTC {at(12)} to {at(14)} (2.000 s)",
-        "  GPS time fields: 6 packets, 0 not valid, 0 stretches",
+        "  PPS (sensor 0x80,0x12 gps_timestamp): 8 packets, 4 without PPS, 2 stretches",
+        f"    offsets {offs[0]}-{offs[1]}: 2 packets, until UTC {at(10)}",
+        f"    offsets {offs[4]}-{offs[5]}: 2 packets, UTC {at(12)} to {at(14)} (2.000 s)",
+        "  GPS time fields: 8 packets, 2 not valid, 1 stretch",
+        f"    offsets {offs[0]}-{offs[1]}: 2 packets, until UTC {at(10)}",
         "  time jumps: no packet with both a device clock and a valid time to compare",
     ]
 

@@ -19,8 +19,8 @@ counted):
 A run is broken only by a packet of the same field saying the opposite; packets without that
 field do not break it. Its span: from its first packet to the packet that ends it (the first
 saying PPS / valid again), or to its last packet when the log ends first; given on the device
-clock when both ends have one (the latest device clock seen at or before each), else in UTC, else
-only as log offsets.
+clock when both ends have one (the latest device clock seen at or before each), else in UTC (only
+its end, `until UTC ...`, when the log had no time yet at its start), else only as log offsets.
 """
 
 from __future__ import annotations
@@ -38,6 +38,10 @@ from .timebase import NS, RESET_NS, iso
 # number). 1 ms + 1000 ppm is above the first and below the second.
 JUMP_NS = 1_000_000
 JUMP_PPM = 1000
+
+
+# (set, descriptor) -> (attribute, mask) of the PPS fields.
+_PPS_FIELDS = {(s, d): (attr, mask) for s, d, attr, mask in _columns.SYNC_PPS}
 
 
 def _pps(value: Any, attr: str, mask: int) -> bool:
@@ -106,6 +110,8 @@ def _span(start: Tuple[Optional[int], Optional[int]], end: Tuple[Optional[int], 
         return f"device clock {d0 / NS:.6f} s to {d1 / NS:.6f} s ({(d1 - d0) / NS:.3f} s)"
     if t0 is not None and t1 is not None:
         return f"UTC {iso(t0)} to {iso(t1)} ({(t1 - t0) / NS:.3f} s)"
+    if t1 is not None:
+        return f"until UTC {iso(t1)}"
     return ""
 
 
@@ -137,17 +143,17 @@ class SyncReport:
         if packet.set not in self.data_sets:
             return
         clocks = (self.device, self.utc)
-        for f in packet.fields:
+        for f in packet.fields if _PPS_FIELDS else ():
             if not isinstance(f, DecodedField):
                 continue
             key = (type(f.value).SET, type(f.value).DESCRIPTOR)
-            for s, desc, attr, mask in _columns.SYNC_PPS:
-                if key == (s, desc):
-                    runs = self.pps.get(key)
-                    if runs is None:
-                        name = f"{registry.SET_NAMES.get(s, '?')} 0x{s:02X},0x{desc:02X} {f.name}"
-                        runs = self.pps[key] = _Runs(f"PPS ({name})")
-                    runs.add(packet.offset, not _pps(f.value, attr, mask), clocks)
+            hit = _PPS_FIELDS.get(key)
+            if hit is not None:
+                runs = self.pps.get(key)
+                if runs is None:
+                    name = f"{registry.SET_NAMES.get(key[0], '?')} 0x{key[0]:02X},0x{key[1]:02X} {f.name}"
+                    runs = self.pps[key] = _Runs(f"PPS ({name})")
+                runs.add(packet.offset, not _pps(f.value, hit[0], hit[1]), clocks)
         if pt.gps_week is not None:
             self.gps.add(packet.offset, pt.gps_ns is None or pt.external, clocks)
         if pt.ext_ns is not None:
