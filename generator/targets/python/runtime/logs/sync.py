@@ -121,7 +121,7 @@ class SyncReport:
 
     def __init__(self, data_sets: Any) -> None:
         self.data_sets = frozenset(data_sets)
-        self.pps: Dict[Tuple[int, int], _Runs] = {}
+        self.pps: Dict[Tuple[Any, Any], _Runs] = {}
         self.gps = _Runs("GPS time fields")
         self.external = _Runs("external time fields")
         self.device: Optional[int] = None
@@ -146,7 +146,7 @@ class SyncReport:
         for f in packet.fields if _PPS_FIELDS else ():
             if not isinstance(f, DecodedField):
                 continue
-            key = (type(f.value).SET, type(f.value).DESCRIPTOR)
+            key: Tuple[Any, Any] = (type(f.value).SET, type(f.value).DESCRIPTOR)
             hit = _PPS_FIELDS.get(key)
             if hit is not None:
                 runs = self.pps.get(key)
