@@ -20,11 +20,15 @@ from __future__ import annotations
 
 import csv
 import importlib
+import os
+import subprocess
+import sys
 from datetime import datetime, timezone
 
 import numpy as np
 import pytest
 
+from tests.export.test_export import ext_build
 from tests.helpers.generated import python_package
 
 python_package("mipcodec")
@@ -222,17 +226,31 @@ def test_info_without_synchronization_fields(tmp_path, capsys):
     assert info_lines(path, capsys)[-1] == "synchronization: no synchronization fields"
 
 
+def exported_t_ns(out) -> list:
+    with (out / "sensor.scaled_accel.csv").open(newline="") as fh:
+        return [int(r["t_ns"]) for r in csv.DictReader(fh)]
+
+
 def test_export_and_dataset_rows_agree(tmp_path):
+    """The CSV export (packet path here, columnar path with the C accelerator) and the dataset
+    (block path) give the sensor packets the times reasoned in `cv7_log`."""
     pq = pytest.importorskip("pyarrow.parquet")
     pk, want = cv7_log()
     path = tmp_path / "cv7.bin"
     path.write_bytes(b"".join(pk))
+    sensor_want = [w for p, w in zip(pk, want) if p[2] == 0x80]
     out = tmp_path / "csv"
     assert cli.main(["export", str(path), "--out", str(out)]) == 0
-    with (out / "sensor.scaled_accel.csv").open(newline="") as fh:
-        exported = [int(r["t_ns"]) for r in csv.DictReader(fh)]
-    sensor_want = [w for p, w in zip(pk, want) if p[2] == 0x80]
-    assert exported == sensor_want
+    assert exported_t_ns(out) == sensor_want
+    fast = tmp_path / "fast"
+    run = subprocess.run(
+        [sys.executable, "-m", "mipcodec", "export", str(path), "--out", str(fast)],
+        env=dict(os.environ, PYTHONPATH=ext_build("mipcodec")),
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0 and "(columnar path)" in run.stderr, run.stderr
+    assert exported_t_ns(fast) == sensor_want
     ds = tmp_path / "ds"
     assert cli.main(["export", "--dataset", str(ds), str(path), "--model", "cv7_ins"]) == 0
     parts = sorted((ds / "sensor.scaled_accel").glob("**/*.parquet"))
