@@ -168,12 +168,12 @@ def test_info_synchronization_of_a_cv7_log(tmp_path, capsys):
     assert lines[start:] == [
         "synchronization:",
         # 6 status packets, 2 without PPS (3 s, 4 s), ended by the status packet of 5 s
-        "  PPS (system_data 0xA0,0x02 time_sync_status): 6 packets, 2 without PPS, 1 stretch",
+        "  PPS (system_data 0xA0,0x02 time_sync_status): packets 6, without PPS 2, stretches 1",
         f"    offsets {offs[6]}-{offs[9]}: 2 packets, device clock 3.000000 s to 5.000000 s (2.000 s)",
         # the one packet with a GPS time field has it valid
-        "  GPS time fields: 1 packet, 0 not valid, 0 stretches",
+        "  GPS time fields: packets 1, not valid 0, stretches 0",
         # 12 packets carry the external time; 4 not valid (3.0-4.5 s), ended by the packet of 5.0 s
-        "  external time fields: 12 packets, 4 not valid, 1 stretch",
+        "  external time fields: packets 12, not valid 4, stretches 1",
         f"    offsets {offs[7]}-{offs[11]}: 4 packets, device clock 3.000000 s to 5.000000 s (2.000 s)",
         # set 0x80: from (2.5 s, ext(2.5)) to (5.0 s, ext(5.0) + 2 s): the external time stepped
         # 4.5 s over a device clock step of 2.5 s: +2 s, over 1 ms + 1000 ppm of 2.5 s (3.5 ms)
@@ -211,10 +211,10 @@ def test_info_synchronization_of_a_gx5_45_log(tmp_path, capsys):
     start = lines.index("synchronization:")
     assert lines[start:] == [
         "synchronization:",
-        "  PPS (sensor 0x80,0x12 gps_timestamp): 8 packets, 4 without PPS, 2 stretches",
+        "  PPS (sensor 0x80,0x12 gps_timestamp): packets 8, without PPS 4, stretches 2",
         f"    offsets {offs[0]}-{offs[1]}: 2 packets, until UTC {at(10)}",
         f"    offsets {offs[4]}-{offs[5]}: 2 packets, UTC {at(12)} to {at(14)} (2.000 s)",
-        "  GPS time fields: 8 packets, 2 not valid, 1 stretch",
+        "  GPS time fields: packets 8, not valid 2, stretches 1",
         f"    offsets {offs[0]}-{offs[1]}: 2 packets, until UTC {at(10)}",
         "  time jumps: no packet with both a device clock and a valid time to compare",
     ]

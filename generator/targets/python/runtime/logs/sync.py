@@ -94,10 +94,8 @@ class _Runs:
     def lines(self, what: str) -> List[str]:
         if self.run is not None:
             self._close(self.run[4], True)
-        n, k = self.packets, self.count
-        out = [
-            f"  {self.title}: {n} packet{'' if n == 1 else 's'}, {self.bad} {what}, {k} stretch{'' if k == 1 else 'es'}"
-        ]
+        # "word N", the same words whatever the counts (a docs example's counts depend on timing)
+        out = [f"  {self.title}: packets {self.packets}, {what} {self.bad}, stretches {self.count}"]
         out += ["    " + t for t in self.shown]
         if self.count > len(self.shown):
             out.append(f"    ... and {self.count - len(self.shown)} more")
