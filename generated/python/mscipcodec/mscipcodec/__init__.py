@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "050d4364ddd08608"
+SPEC_HASH = "3aacaf1c073264ba"
 
 __all__ = [
     "SPEC_HASH",
