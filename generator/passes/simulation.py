@@ -289,7 +289,9 @@ class _Checker:
         kinds = set()
         for i, o in enumerate(spec["origins"]):
             if o["kind"] in kinds:
-                self.err(path + ("origins", i, "kind"), f"simulation nmea: origin '{o['kind']}' twice", "one entry per kind")
+                self.err(
+                    path + ("origins", i, "kind"), f"simulation nmea: origin '{o['kind']}' twice", "one entry per kind"
+                )
             kinds.add(o["kind"])
             for j, number in enumerate(o["sets"]):
                 self.data_set(path + ("origins", i, "sets", j), number)
@@ -303,12 +305,20 @@ class _Checker:
         for i, e in enumerate(spec["sentences"]):
             for j, kind in enumerate(e["sources"]):
                 if kind not in kinds:
-                    self.err(path + ("sentences", i, "sources", j), f"simulation nmea: '{kind}' is not an origin", "an origin kind")
+                    self.err(
+                        path + ("sentences", i, "sources", j),
+                        f"simulation nmea: '{kind}' is not an origin",
+                        "an origin kind",
+                    )
         if "input" in spec:
             self.data_set(path + ("input", "set"), spec["input"]["set"])
             for j, name in enumerate(spec["input"]["sentences"]):
                 if name not in names:
-                    self.err(path + ("input", "sentences", j), f"simulation nmea: '{name}' is not a sentence", "a sentence name")
+                    self.err(
+                        path + ("input", "sentences", j),
+                        f"simulation nmea: '{name}' is not a sentence",
+                        "a sentence name",
+                    )
         out["sources"] = self.ctx.check_sources(self.sf, ("simulation",) + path + ("sources",), spec["sources"])
         out["notes"] = spec.get("notes", [])
         return out

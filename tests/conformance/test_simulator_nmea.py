@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import datetime
 import math
-import time
 
 import pytest
 
@@ -204,9 +203,7 @@ def _rmc(stamp: str) -> bytes:
 
 
 def _external(sim, data: bytes, at: float) -> list:
-    return [
-        pkg.codec.packets.decode_packet(c) for _, c in sim.feed(data, at) if c[:1] == b"u" and c[2] == 0x94
-    ]
+    return [pkg.codec.packets.decode_packet(c) for _, c in sim.feed(data, at) if c[:1] == b"u" and c[2] == 0x94]
 
 
 def test_nmea_input_is_mirrored_into_0x94_after_two_updates() -> None:

@@ -690,7 +690,9 @@ class Simulator:
         """When the next data packet is due (None: no stream)."""
         due = [self.nmea.next_wakeup()]
         if self.plan and self.start_time is not None:
-            due.append(min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan))
+            due.append(
+                min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan)
+            )
         return min((d for d in due if d is not None), default=None)
 
     def _sample_packets(

@@ -215,7 +215,9 @@ class NmeaPort:
             return []
         listed = [self._entry(e) for e in getattr(command, role[1], None) or []] or self.entries()
         elapsed = self.sim.sim_time(now)
-        return [(now + 0.001, s) for code, talker, set_id, _ in listed for s in self.build(code, talker, set_id, elapsed)]
+        return [
+            (now + 0.001, s) for code, talker, set_id, _ in listed for s in self.build(code, talker, set_id, elapsed)
+        ]
 
     def world(self, elapsed: float) -> Dict[str, Any]:
         sim = self.sim
@@ -238,7 +240,9 @@ class NmeaPort:
         if kind == "filter" and not q["filter_valid_" + ("attitude" if name in ATTITUDE_SENTENCES else "navigation")]:
             return []
         prefix = _sim.NMEA["talkers"].get(talker, "GN")
-        return [sentence(b) for b in _bodies(name, prefix, kind, q, self.sim.world.rtk(elapsed) if kind == "gnss" else "")]
+        return [
+            sentence(b) for b in _bodies(name, prefix, kind, q, self.sim.world.rtk(elapsed) if kind == "gnss" else "")
+        ]
 
     # ------------------------------------------------------------------------------ input
     def receive(self, data: bytes, now: float) -> List[Chunk]:
@@ -434,7 +438,14 @@ def _fill(value: Any, update: Dict[str, Any]) -> None:
         if when is None or date is None:
             return
         days = _days(*date)
-        gps = (days - GPS_EPOCH_DAYS) * 86400.0 + when[0] * 3600 + when[1] * 60 + when[2] + when[3] / 1000.0 + LEAP_SECONDS
+        gps = (
+            (days - GPS_EPOCH_DAYS) * 86400.0
+            + when[0] * 3600
+            + when[1] * 60
+            + when[2]
+            + when[3] / 1000.0
+            + LEAP_SECONDS
+        )
         value.week_number, value.tow = int(gps // 604800.0), gps % 604800.0
         value.valid_flags = type(value.valid_flags)(int(type(value.valid_flags).TIME_VALID))
 
