@@ -285,7 +285,10 @@ class NmeaPort:
             if cls is None:
                 continue
             value = cls()
-            _fill(value, update)
+            try:
+                _fill(value, update)
+            except (ValueError, IndexError):  # a field NMEA-0183 does not allow: what it gave, not valid
+                pass
             try:
                 builder.add_field(d, value.encode())
             except (TypeError, ValueError):
@@ -368,6 +371,7 @@ def _flags(value: Any, names: List[str]) -> Any:
 def _fill(value: Any, update: Dict[str, Any]) -> None:
     """An external data field from one NMEA update (a parameter NMEA does not give: flag 0)."""
     gga, rmc, gll, vtg, zda = (update.get(k) for k in ("GGA", "RMC", "GLL", "VTG", "ZDA"))
+    source: List[str] = []
     name = value.NAME
     stamp = update.get("stamp") or ""
     date = None
@@ -391,11 +395,11 @@ def _fill(value: Any, update: Dict[str, Any]) -> None:
             return
         value.latitude, value.longitude = lat, lon
         flags = ["lat_lon"]
-        msl = _float(gga[9]) if source is gga else None
+        msl = _float(source[9]) if source is gga else None
         if msl is not None:
             value.msl_height = msl
             flags.append("msl_height")
-            separation = _float(gga[11])
+            separation = _float(source[11])
             if separation is not None:
                 value.ellipsoid_height = msl + separation
                 flags.append("ellipsoid_height")
