@@ -285,7 +285,13 @@ class _Checker:
                         path + ("entry", role), f"simulation nmea: '{name}' is not a member of the entries of {entry['list']}",
                         "a member of the list's struct",
                     )  # fmt: skip
-        self.nack({"nmea": spec["nack"]})
+        session = self.ctx.session or {}
+        codes = self.ctx.types.get(session.get("code_enum") or "", {}).get("values", [])
+        if spec["nack"] not in {v["name"] for v in codes}:
+            self.err(
+                path + ("nack",), f"simulation nmea: '{spec['nack']}' is not a member of the ack code enum",
+                "a member of the ack code enum",
+            )  # fmt: skip
         kinds = set()
         for i, o in enumerate(spec["origins"]):
             if o["kind"] in kinds:
