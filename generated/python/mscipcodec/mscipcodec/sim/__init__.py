@@ -728,6 +728,12 @@ class Simulator:
             packets.append(_build(set_id, shared + current))
         return packets
 
+    def world_at(self, elapsed: float) -> Dict[str, Any]:
+        """The world's quantities at simulated time `elapsed`, one world per sample."""
+        if self._world_at is None or self._world_at[0] != elapsed:
+            self._world_at = (elapsed, self.world.quantities(elapsed))
+        return self._world_at[1]
+
     def _data_value(self, set_id: int, descriptor: int, t: float, elapsed: Optional[float] = None) -> Optional[Field]:
         classes = registry.lookup(set_id, descriptor) or ()
         cls = next((c for c in classes if c.DEVICE in (None, self.device)), None)
@@ -752,9 +758,7 @@ class Simulator:
                 setattr(value, attr, _plausible(attr, units, 0, 1, elapsed, self.rng, current))
         shows = _sim.WORLD.get(cls)
         if shows:
-            if self._world_at is None or self._world_at[0] != elapsed:  # one world per sample
-                self._world_at = (elapsed, self.world.quantities(elapsed))
-            world = self._world_at[1]
+            world = self.world_at(elapsed)
             units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
             for attr, quantity in shows:
                 _show(value, attr, quantity, units.get(attr), world, _sim.FILTER.get(self.device, {}))

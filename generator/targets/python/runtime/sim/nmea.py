@@ -11,13 +11,14 @@ the spec's `simulation.nmea` (listed in docs/errata.md).
 
 from __future__ import annotations
 
+import datetime
 import math
 from functools import reduce
 from typing import Any, Dict, List, Optional, Tuple
 
 from .. import _session, _sim, registry
 from ..codec.framing import PacketBuilder
-from .world import GPS_EPOCH_DAYS, GRAVITY, LEAP_SECONDS, _civil
+from .world import GPS_EPOCH_DAYS, GRAVITY, LEAP_SECONDS
 
 Chunk = Tuple[float, bytes]
 LATE_WINDOW = 1.0  # seconds of real time: older sentences are dropped, as the MIP data are
@@ -30,6 +31,7 @@ QUALITY_FIX = {0: "fix_none", 1: "fix_3d", 2: "fix_differential", 4: "fix_rtk_fi
 STAMPED = {"GGA": 1, "GLL": 5, "RMC": 1, "ZDA": 1}
 # Filter-sourced sentences that need the attitude (the others need the navigation solution)
 ATTITUDE_SENTENCES = ("HDT", "PMSRA")
+EPOCH = datetime.date(1970, 1, 1)
 
 
 def checksum(body: str) -> int:
@@ -64,7 +66,8 @@ def _utc(q: Dict[str, Any]) -> Tuple[Tuple[int, int, int], str]:
     days, rest = divmod(centis, 8640000)
     seconds, hundredths = divmod(rest, 100)
     hms = f"{seconds // 3600:02d}{seconds % 3600 // 60:02d}{seconds % 60:02d}.{hundredths:02d}"
-    return _civil(int(days)), hms
+    day = EPOCH + datetime.timedelta(days=int(days))
+    return (day.year, day.month, day.day), hms
 
 
 def _angle(value: float, degrees_digits: int, hemispheres: str) -> str:
@@ -219,12 +222,6 @@ class NmeaPort:
             (now + 0.001, s) for code, talker, set_id, _ in listed for s in self.build(code, talker, set_id, elapsed)
         ]
 
-    def world(self, elapsed: float) -> Dict[str, Any]:
-        sim = self.sim
-        if sim._world_at is None or sim._world_at[0] != elapsed:  # one world per sample, as MIP data
-            sim._world_at = (elapsed, sim.world.quantities(elapsed))
-        return sim._world_at[1]  # type: ignore[no-any-return]
-
     def build(self, code: int, talker: int, set_id: int, elapsed: float) -> List[bytes]:
         """The sentences of one entry at simulated time `elapsed` ([] while its data is invalid)."""
         known = _sim.NMEA["sentences"].get(code)
@@ -232,7 +229,7 @@ class NmeaPort:
         if known is None or kind is None:
             return []
         name = known[0]
-        q = self.world(elapsed)
+        q = self.sim.world_at(elapsed)  # the world of the MIP data of the same tick
         if kind == "gnss" and not q["gnss_fix"]:
             return []
         if kind == "gnss" and name == "HDT" and not q["dual_heading_uncertainty"]:
@@ -463,10 +460,5 @@ def _clock(stamp: str) -> Optional[Tuple[int, int, int, int]]:
 
 
 def _days(year: int, month: int, day: int) -> int:
-    """Days from 1970-01-01 to a civil date (proleptic Gregorian)."""
-    y = year - (1 if month <= 2 else 0)
-    era = y // 400
-    yoe = y - era * 400
-    doy = (153 * (month + (-3 if month > 2 else 9)) + 2) // 5 + day - 1
-    doe = yoe * 365 + yoe // 4 - yoe // 100 + doy
-    return era * 146097 + doe - 719468
+    """Days from 1970-01-01 to a civil date."""
+    return (datetime.date(year, month, day) - EPOCH).days
