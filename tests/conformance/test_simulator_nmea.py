@@ -202,6 +202,8 @@ def test_sentences_are_whole_between_mip_packets() -> None:
 
 def test_idle_stops_the_sentences_and_poll_sends_once() -> None:
     sim = sim_mod.Simulator("cv7_ins", scenario="static")
+    empty = pkg.threedm.PollNmeaData(suppress_ack=False, count=0, format_entries=[])
+    assert command(sim, empty, 0.0) == [(0.0, INVALID_PARAMETER)]  # no format given, none stored (line 6796)
     assert nmea_format(sim, [entry(PMSRR, 0, 0x80, 100)]) == 0
     assert sentences(sim.poll(0.5))
     assert command(sim, pkg.base.SetToIdle(), 0.5)[0][1] == 0

@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "38b8ba61217f192f"
+SPEC_HASH = "a5ccb981c996a001"
 
 __all__ = [
     "SPEC_HASH",

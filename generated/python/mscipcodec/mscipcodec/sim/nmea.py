@@ -127,7 +127,10 @@ class NmeaPort:
         if kind == "format" and fn is not None and int(fn) not in (_function("write"), _function("write_no_ack")):
             return None
         table = _sim.NMEA
-        for entry in getattr(command, attr, None) or []:
+        listed = getattr(command, attr, None) or []
+        if kind == "poll" and not listed and not self.entries():
+            return int(table["nack"])  # no format given and none stored (line 6796)
+        for entry in listed:
             if self.entry_error(entry, kind == "poll") is not None:
                 return int(table["nack"])
         return None
