@@ -151,3 +151,31 @@ def command_facts(proto: dict, v: dict, param: Callable[[str], str]) -> dict:
         "enums": tuple(param(q["name"]) for q in qs if q["type"]["kind"] == "enum" and q["count"] is None),
         "factory": {dev: values for dev, values in factory.items() if values},
     }
+
+
+def nmea(proto: dict, param: Callable[[str], str]) -> dict:
+    """NMEA output and input (sim/nmea.py; the simulation section's `nmea`, empty without it): the
+    entry members as attributes, the NACK code of a refused entry, per origin its sets and highest
+    rate, the talker IDs and sentences by code, the input's set, sentences and updates."""
+    spec = (proto["simulation"] or {}).get("nmea")
+    if not spec:
+        return {}
+    rule = proto["session"]
+    types = {t["name"]: t for t in proto["types"]}
+    codes = {v["name"]: v["value"] for v in types[rule["code_enum"]]["values"]} if rule and rule["code_enum"] else {}
+    return {
+        "entry": {role: param(name) for role, name in spec["entry"].items()},
+        "nack": codes.get(spec["nack"], nack_codes(proto)["invalid_parameter"]),
+        "origins": {o["kind"]: (tuple(o["sets"]), o["max_hz"]) for o in spec["origins"]},
+        "talkers": {t["code"]: t["id"] for t in spec["talkers"]},
+        "sentences": {s["code"]: (s["name"], s["talker"], tuple(s["sources"])) for s in spec["sentences"]},
+        "input": (
+            {k: (tuple(v) if isinstance(v, list) else v) for k, v in spec["input"].items()} if "input" in spec else None
+        ),
+    }
+
+
+def nmea_commands(proto: dict, param: Callable[[str], str]) -> dict[str, tuple[str, str]]:
+    """The NMEA format and poll commands by name: (role, the list attribute)."""
+    spec = (proto["simulation"] or {}).get("nmea") or {}
+    return {spec[k]["command"]: (k, param(spec[k]["list"])) for k in ("format", "poll") if k in spec}

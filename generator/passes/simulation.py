@@ -80,6 +80,7 @@ def run(ctx: Context) -> None:
     sim["descriptor_lists"] = check.descriptor_lists(spec.get("descriptor_lists"))
     sim["identity"] = check.identity(spec.get("identity"))
     sim["status"] = [check.status(("status", i), e) for i, e in enumerate(spec.get("status", []))]
+    sim["nmea"] = check.nmea(spec.get("nmea"))
     ctx.simulation = sim
 
 
@@ -254,6 +255,79 @@ class _Checker:
                 {**d, "sources": self.ctx.check_sources(self.sf, ("simulation",) + p + ("sources",), d["sources"])}
             )
         return {"reports": reports, "items": items, "devices": devices, "notes": spec.get("notes", [])}
+
+    def nmea(self, spec: dict | None) -> dict | None:
+        """NMEA output and input (sim/nmea.py): the format and poll commands with their list of
+        structs holding the entry's members; the nack a member of the ack code enum; the origins'
+        sets data sets; codes and names unique; each sentence's sources origins; the input's set a
+        data set and its sentences output sentences. Gains each command's set and descriptor."""
+        if spec is None:
+            return None
+        path = ("nmea",)
+        out = dict(spec)
+        for key in ("format", "poll"):
+            if key not in spec:
+                continue
+            entry = spec[key]
+            variants = self.command(path + (key, "command"), entry["command"])
+            params = {q["name"]: q for v in variants for q in v["params"]}
+            item = params.get(entry["list"], {}).get("type", {})
+            if variants and (entry["list"] not in params or item.get("kind") != "struct"):
+                self.err(
+                    path + (key, "list"), f"simulation nmea: '{entry['list']}' is not a struct list of {entry['command']}",
+                    f"a list parameter of {entry['command']}",
+                )  # fmt: skip
+                continue
+            members = {q["name"] for q in self.ctx.types.get(item.get("name", ""), {}).get("params", [])}
+            for role, name in spec["entry"].items():
+                if variants and name not in members:
+                    self.err(
+                        path + ("entry", role), f"simulation nmea: '{name}' is not a member of the entries of {entry['list']}",
+                        "a member of the list's struct",
+                    )  # fmt: skip
+        session = self.ctx.session or {}
+        codes = self.ctx.types.get(session.get("code_enum") or "", {}).get("values", [])
+        if spec["nack"] not in {v["name"] for v in codes}:
+            self.err(
+                path + ("nack",), f"simulation nmea: '{spec['nack']}' is not a member of the ack code enum",
+                "a member of the ack code enum",
+            )  # fmt: skip
+        kinds = set()
+        for i, o in enumerate(spec["origins"]):
+            if o["kind"] in kinds:
+                self.err(
+                    path + ("origins", i, "kind"), f"simulation nmea: origin '{o['kind']}' twice", "one entry per kind"
+                )
+            kinds.add(o["kind"])
+            for j, number in enumerate(o["sets"]):
+                self.data_set(path + ("origins", i, "sets", j), number)
+        for key, attr in (("talkers", "id"), ("talkers", "code"), ("sentences", "name"), ("sentences", "code")):
+            seen = set()
+            for i, e in enumerate(spec[key]):
+                if e[attr] in seen:
+                    self.err(path + (key, i, attr), f"simulation nmea: {key} {attr} {e[attr]!r} twice", "unique values")
+                seen.add(e[attr])
+        names = {e["name"] for e in spec["sentences"]}
+        for i, e in enumerate(spec["sentences"]):
+            for j, kind in enumerate(e["sources"]):
+                if kind not in kinds:
+                    self.err(
+                        path + ("sentences", i, "sources", j),
+                        f"simulation nmea: '{kind}' is not an origin",
+                        "an origin kind",
+                    )
+        if "input" in spec:
+            self.data_set(path + ("input", "set"), spec["input"]["set"])
+            for j, name in enumerate(spec["input"]["sentences"]):
+                if name not in names:
+                    self.err(
+                        path + ("input", "sentences", j),
+                        f"simulation nmea: '{name}' is not a sentence",
+                        "a sentence name",
+                    )
+        out["sources"] = self.ctx.check_sources(self.sf, ("simulation",) + path + ("sources",), spec["sources"])
+        out["notes"] = spec.get("notes", [])
+        return out
 
     def err(self, path: tuple, message: str, expected: str) -> None:
         self.ctx.err(self.sf, ("simulation",) + path, message, expected)

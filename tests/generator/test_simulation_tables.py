@@ -107,3 +107,21 @@ def test_command_facts_per_function_enums_and_factory_defaults():
     assert got["sends"] == {1: ("MODE", "INDEX"), 2: ("INDEX",)}
     assert got["enums"] == ("MODE",)
     assert got["factory"] == {"b": {"MODE": 2}}
+
+
+def test_nmea_of_mip_is_the_manuals_rate_limits_and_sources():
+    # 3dm-cv7-ins-docs.txt:1062: at most 10 Hz per sentence from the IMU and filter sources, 2 Hz
+    # from a GNSS source, else NACK'd (the simulator's code: 0x03 Invalid Parameter, line 8878);
+    # line 1056: IMU, Filter, GNSS 1 or GNSS 2 (0x80, 0x82, 0x91, 0x92); line 1013: PMSRA from the
+    # filter, PMSRR from the IMU, GSV and the proprietary sentences without a talker ID to choose.
+    got = simulation.nmea(MIP, str)
+    assert got["origins"] == {"imu": ((0x80,), 10), "filter": ((0x82,), 10), "gnss": ((0x91, 0x92), 2)}
+    assert got["nack"] == 0x03
+    by_name = {name: (talker, sources) for name, talker, sources in got["sentences"].values()}
+    assert set(by_name) == {"GGA", "GLL", "GSV", "RMC", "VTG", "HDT", "ZDA", "GST", "PMSRA", "PMSRR"}
+    assert by_name["PMSRA"] == (False, ("filter",)) and by_name["PMSRR"] == (False, ("imu",))
+    assert by_name["GSV"] == (False, ("gnss",)) and by_name["ZDA"] == (True, ("gnss",))
+    assert sorted(got["talkers"].values()) == ["GA", "GL", "GN", "GP"]
+    # lines 1084-1092 and 1102: the input sentences, into GNSS External (0x94), two updates
+    assert got["input"] == {"set": 0x94, "sentences": ("RMC", "ZDA", "HDT", "GGA", "VTG", "GLL", "GSV"), "updates": 2}
+    assert simulation.nmea({"simulation": None}, str) == {}

@@ -1122,6 +1122,8 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
             for c in by_name.get(a["command"], [])
         ],
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
+        "nmea": pyrepr(simulation.nmea(proto, py_attr)),
+        "nmea_commands": classes(simulation.nmea_commands(proto, py_attr)),
         "sim_modules": sorted(
             {sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())
         ),

@@ -383,3 +383,44 @@ def test_status_is_checked_and_exported(tmp_path):
     (tmp_path / "command").mkdir()
     got = errors(build(tmp_path / "command", files, "simulation"))
     assert any("'status' is not a response" in e for e in got), got
+
+
+NMEA = """\
+  nmea:
+    format: {command: message_format, list: entries}
+    entry: {sentence: descriptor, talker: descriptor, source: descriptor, decimation: decimation}
+    nack: failed
+    origins: [{kind: imu, sets: [0x80], max_hz: 10}]
+    talkers: [{code: 1, id: GN}]
+    sentences: [{name: GGA, code: 1, talker: true, sources: [imu]}]
+    input: {set: 0x80, sentences: [GGA], updates: 2}
+    sources: [{manual: a.txt, line: 9}]
+"""
+
+
+def test_nmea_is_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _files(SIMULATION + NMEA), "simulation")
+    assert errors(ctx) == []
+    nmea = ctx.simulation["nmea"]
+    assert nmea["origins"] == [{"kind": "imu", "sets": [0x80], "max_hz": 10}] and nmea["input"]["updates"] == 2
+    assert nmea["sources"][0]["line"] == 9
+    bad = (
+        NMEA.replace("list: entries", "list: desc_set")
+        .replace("nack: failed", "nack: refused")
+        .replace("sets: [0x80]", "sets: [0x81]")
+        .replace("sources: [imu]", "sources: [gnss]")
+        .replace("sentences: [GGA], updates", "sentences: [RMC], updates")
+        .replace("{code: 1, id: GN}", "{code: 1, id: GN}, {code: 1, id: GP}")
+    )
+    (tmp_path / "bad").mkdir()
+    got = errors(build(tmp_path / "bad", _files(SIMULATION + bad), "simulation"))
+    expected = [
+        "'desc_set' is not a struct list of message_format",
+        "'refused' is not a member of the ack code enum",
+        "0x81 is not a data set of the protocol",
+        "'gnss' is not an origin",
+        "'RMC' is not a sentence",
+        "talkers code 1 twice",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)

@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "819e1675e237516c"
+SPEC_HASH = "c522031128eb53e8"
 
 __all__ = [
     "SPEC_HASH",

@@ -1594,6 +1594,34 @@ STATUS: Dict[Any, Dict[str, Any]] = {
     },
 }
 
+# NMEA-0183 output and input (spec simulation nmea; sim/nmea.py): entry attributes by role, the
+# NACK code of a refused entry, origins {kind: (sets, highest Hz)}, talker IDs and sentences
+# {code: (name, talker configurable, source kinds)} by code, the input (set, sentences, updates);
+# the commands: class -> ("format" or "poll", list attribute)
+NMEA: Dict[str, Any] = {
+    "entry": {"sentence": "message_id", "talker": "talker_id", "source": "source_desc_set", "decimation": "decimation"},
+    "nack": 3,
+    "origins": {"imu": ((128,), 10), "filter": ((130,), 10), "gnss": ((145, 146), 2)},
+    "talkers": {1: "GN", 2: "GP", 3: "GA", 4: "GL"},
+    "sentences": {
+        1: ("GGA", True, ("gnss", "filter")),
+        2: ("GLL", True, ("gnss", "filter")),
+        3: ("GSV", False, ("gnss",)),
+        4: ("RMC", True, ("gnss", "filter")),
+        5: ("VTG", True, ("gnss", "filter")),
+        6: ("HDT", True, ("gnss", "filter")),
+        7: ("ZDA", True, ("gnss",)),
+        8: ("GST", True, ("gnss", "filter")),
+        129: ("PMSRA", False, ("filter",)),
+        130: ("PMSRR", False, ("imu",)),
+    },
+    "input": {"set": 148, "sentences": ("RMC", "ZDA", "HDT", "GGA", "VTG", "GLL", "GSV"), "updates": 2},
+}
+NMEA_COMMANDS: Dict[Any, Tuple[str, str]] = {
+    threedm.NmeaMessageFormat: ("format", "format_entries"),
+    threedm.PollNmeaData: ("poll", "format_entries"),
+}
+
 # Factory values the manuals state (the spec's `default`, with its source line), else the spec's
 # `plausible` value (with its reason); every other parameter's factory value is zero:
 # device -> class -> {parameter: value}

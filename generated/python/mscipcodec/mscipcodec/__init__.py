@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "1f8d9289620743fe"
+SPEC_HASH = "0a3d001048f6eb9c"
 
 __all__ = [
     "SPEC_HASH",

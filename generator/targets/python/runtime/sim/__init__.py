@@ -29,11 +29,12 @@ from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 from .. import _link, _sim, capabilities, registry
 from .. import _session as _meta
 from .._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
-from ..codec.framing import PacketBuilder, Parser, RawPacket
+from ..codec.framing import Nmea, PacketBuilder, Parser, RawPacket
 from ..codec.layout import Choice, Enum, Field
 from ..codec.packets import DecodedField, RawField, decode_packet
 from ..session import support_error
 from . import status as sim_status
+from .nmea import NmeaPort
 from .status import set_of as _set_of
 from .world import GRAVITY, RADIANS, World
 
@@ -163,6 +164,7 @@ class Simulator:
                 entries = [(d, 1) for s, d in (model.data if model else ()) if s == set_id]
                 if entries:
                     self.full[set_id] = entries
+        self.nmea = NmeaPort(self)  # NMEA out and in (sim/nmea.py)
         self._replan()
 
     def sim_time(self, now: float) -> float:
@@ -184,6 +186,8 @@ class Simulator:
         for event in self.parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
+            elif isinstance(event, Nmea):
+                out.extend(self.nmea.receive(event.data, now))
         # The device reports no skip run: the parser holds at most one partial packet (at most
         # the maximum packet size), never the noise between packets.
         del self.parser._skip[:]
@@ -326,6 +330,7 @@ class Simulator:
                 wanted = [_descriptor_of(d) for d in (getattr(command, poll[1], None) or [])]
                 fields = wanted or [d for d, _ in self.plan.get(set_id, [])]
                 extra = [(now + 0.001, p) for p in self._sample_packets(set_id, fields, now)]
+        extra += self.nmea.poll_command(command, now)
         return replies, extra
 
     def _factory(self, cls: Any) -> Dict[str, Any]:
@@ -346,6 +351,8 @@ class Simulator:
 
     def _act(self, command: Field, now: float) -> Optional[int]:
         """What a command does to the world (_sim.ACTIONS): None, or the NACK code refusing it."""
+        if type(command) in _sim.NMEA_COMMANDS:  # NMEA entries: rate limits (sim/nmea.py)
+            return self.nmea.refuse(command)
         heading = _sim.FILTER.get(self.device, {}).get("heading") or {}
         if command.NAME in heading.get("external", ()):  # an external heading update (0x0D,0x17)
             if "external" not in self.world.filter.heading_sources:
@@ -575,6 +582,7 @@ class Simulator:
                 self.world.filter.wait_for_run = self._setting_on(cls, action[1])
         self._filter_settings()
         plan = {s: e for s, e in plan.items() if s in enabled}
+        self.unpaced = {s: e for s, e in plan.items() if e and not self.base_rates.get(s)}  # sent as data arrives
         self.plan = {s: e for s, e in plan.items() if e and self.base_rates.get(s)}
         for set_id in [s for s in self.ticks if s not in self.plan]:
             del self.ticks[set_id]  # a stream turned off: when it is on again it resumes from then
@@ -668,7 +676,7 @@ class Simulator:
                 fields = [d for d, dec in entries if tick % dec == 0]
                 t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
                 out.extend((t, p) for p in self._sample_packets(set_id, fields, t, tick / rate))
-        return out
+        return out + self.nmea.poll(now)
 
     def skip(self, now: float) -> None:
         """No host is there to read the data due by `now` (between two TCP hosts): the streams go
@@ -676,12 +684,16 @@ class Simulator:
         sim_now = self.sim_time(now)
         for set_id in self.plan:
             self.ticks[set_id] = int(sim_now * self.base_rates[set_id])
+        self.nmea.ticks.clear()  # the sentences resume from the next host's arrival
 
     def next_wakeup(self, now: float) -> Optional[float]:
         """When the next data packet is due (None: no stream)."""
-        if not self.plan or self.start_time is None:
-            return None
-        return min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan)
+        due = [self.nmea.next_wakeup()]
+        if self.plan and self.start_time is not None:
+            due.append(
+                min(self.start_time + (self.ticks.get(s, 0) + 1) / self.base_rates[s] / self.speed for s in self.plan)
+            )
+        return min((d for d in due if d is not None), default=None)
 
     def _sample_packets(
         self, set_id: int, descriptors: List[int], t: float, elapsed: Optional[float] = None
@@ -716,6 +728,12 @@ class Simulator:
             packets.append(_build(set_id, shared + current))
         return packets
 
+    def world_at(self, elapsed: float) -> Dict[str, Any]:
+        """The world's quantities at simulated time `elapsed`, one world per sample."""
+        if self._world_at is None or self._world_at[0] != elapsed:
+            self._world_at = (elapsed, self.world.quantities(elapsed))
+        return self._world_at[1]
+
     def _data_value(self, set_id: int, descriptor: int, t: float, elapsed: Optional[float] = None) -> Optional[Field]:
         classes = registry.lookup(set_id, descriptor) or ()
         cls = next((c for c in classes if c.DEVICE in (None, self.device)), None)
@@ -740,9 +758,7 @@ class Simulator:
                 setattr(value, attr, _plausible(attr, units, 0, 1, elapsed, self.rng, current))
         shows = _sim.WORLD.get(cls)
         if shows:
-            if self._world_at is None or self._world_at[0] != elapsed:  # one world per sample
-                self._world_at = (elapsed, self.world.quantities(elapsed))
-            world = self._world_at[1]
+            world = self.world_at(elapsed)
             units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
             for attr, quantity in shows:
                 _show(value, attr, quantity, units.get(attr), world, _sim.FILTER.get(self.device, {}))

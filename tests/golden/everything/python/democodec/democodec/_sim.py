@@ -97,6 +97,13 @@ IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
 # the receiver has a fix))
 STATUS: Dict[Any, Dict[str, Any]] = {}
 
+# NMEA-0183 output and input (spec simulation nmea; sim/nmea.py): entry attributes by role, the
+# NACK code of a refused entry, origins {kind: (sets, highest Hz)}, talker IDs and sentences
+# {code: (name, talker configurable, source kinds)} by code, the input (set, sentences, updates);
+# the commands: class -> ("format" or "poll", list attribute)
+NMEA: Dict[str, Any] = {}
+NMEA_COMMANDS: Dict[Any, Tuple[str, str]] = {}
+
 # Factory values the manuals state (the spec's `default`, with its source line), else the spec's
 # `plausible` value (with its reason); every other parameter's factory value is zero:
 # device -> class -> {parameter: value}
