@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "d1a289fc4871c01b"
+SPEC_HASH = "5dce653086c1e3c9"
 
 __all__ = [
     "SPEC_HASH",
