@@ -469,6 +469,10 @@ class _Checker:
                     "a subset of `types`",
                 )
         if set(c["station"]) & set(c["observations"]):
-            self.err(path + ("station",), "simulation: an RTCM message type is both a station position and an observation", "disjoint lists")
+            self.err(
+                path + ("station",),
+                "simulation: an RTCM message type is both a station position and an observation",
+                "disjoint lists",
+            )
         if c.get("spartn"):
             self.params(path + ("spartn",), c["spartn"]["command"], [c["spartn"]["param"]])
