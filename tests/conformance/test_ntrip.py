@@ -29,6 +29,7 @@ import base64
 import os
 import random
 import re
+import signal
 import socket
 import subprocess
 import sys
@@ -90,8 +91,12 @@ class Caster:
     open), "garbage" (after the 200 OK: random bytes forever) or "endless" (a header that never
     ends). The requests and the GGA sentences received are kept."""
 
-    def __init__(self, version: str = "2.0", mode: str = "stream", stream_for: float = 60.0, bare_lf: bool = False):
+    def __init__(
+        self, version: str = "2.0", mode: str = "stream", stream_for: float = 60.0, bare_lf: bool = False,
+        drop_first_after: float = 0.0,
+    ) -> None:  # fmt: skip
         self.version, self.mode, self.stream_for, self.bare_lf = version, mode, stream_for, bare_lf
+        self.drop_first_after = drop_first_after  # the first stream's connection closed after this long
         self.requests: List[Dict[str, str]] = []
         self.gga: List[str] = []
         self.sent: Dict[int, int] = {}
@@ -174,7 +179,11 @@ class Caster:
         rng = random.Random(7)
         start = time.monotonic()
         tick = 0
+        first = len(self.requests) == 1
         while not self.stop.is_set():
+            if first and self.drop_first_after and time.monotonic() - start > self.drop_first_after:
+                conn.shutdown(socket.SHUT_RDWR)  # the connection closes (the GGA reader too): the client reconnects
+                return
             if self.mode == "garbage":
                 data = bytes(rng.getrandbits(8) for _ in range(4096))
             elif time.monotonic() - start < self.stream_for:
@@ -391,13 +400,23 @@ def test_cv7_reaches_rtk_fixed_through_ntrip_and_falls_back(cv7: Sim) -> None:
     assert {f.split(",")[6] for f in good} <= {"1", "5", "4"} and "4" in {f.split(",")[6] for f in good}
 
 
-def test_ntrip1_icy_stream_reaches_the_device(cv7: Sim) -> None:
-    c = Caster("1.0", bare_lf=True)
+def test_ntrip1_icy_stream_reconnects_and_stops_on_ctrl_c(cv7: Sim) -> None:
+    """NTRIP 1.0 with bare LF line ends; the caster drops the first connection after 0.5 s: the
+    client retries 1 s later (the first backoff step) and streams on; SIGINT ends it with 0."""
+    c = Caster("1.0", bare_lf=True, drop_first_after=0.5)
+    env = {**os.environ, "PYTHONPATH": str(PACKAGE_DIR)}
+    cmd = [sys.executable, "-m", "mipcodec", "device", cv7.address, "ntrip", c.url(), "--gga-interval", "0"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     try:
-        done = device(cv7.address, c.url(), "--gga-interval", "0", "--duration", "1.5")
+        lines = [proc.stdout.readline() for _ in range(3)]  # 3 s of status lines
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
     finally:
         c.close()
-    assert done.returncode == 0, done.stderr
-    last = done.stdout.splitlines()[-1]
-    assert "caster=streaming" in last and re.search(r" 1077:\d+ ", last), last
-    assert not c.gga
+        if proc.poll() is None:
+            proc.kill()
+    assert proc.returncode == 0 and "Traceback" not in err, err
+    assert "retrying in 1 s" in err and len(c.requests) == 2, (err, c.requests)
+    last = (lines + out.splitlines())[-1]
+    assert re.search(r" 1077:\d+ ", last), last
+    assert not c.gga  # --gga-interval 0: none sent
