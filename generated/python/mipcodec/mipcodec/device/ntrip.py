@@ -445,12 +445,13 @@ def _position_format(conn: Any) -> Optional[Tuple[Any, Dict[str, Any], Any, int]
     from . import settings as st
 
     model = capabilities.MODELS.get(conn.model)
-    sets = sorted({s for s, _ in (model.data if model else ())})
-    for set_id in sets:
-        names = {}
-        for s, d in model.data:
-            if s == set_id:
-                for cls in registry.lookup(s, d) or ():
+    if model is None:
+        return None
+    for set_id in sorted({set_ for set_, _ in model.data}):
+        names: Dict[str, int] = {}
+        for set_, d in model.data:
+            if set_ == set_id:
+                for cls in registry.lookup(set_, d) or ():
                     names[cls.NAME] = d
         if "llh_position" not in names or "fix_info" not in names:
             continue
@@ -526,7 +527,7 @@ def run(conn: Any, target: Target, gga_interval: float, end: float, start: float
         if fmt is None or packet.set != fmt[3]:
             return
         for e in packet.fields:
-            value = getattr(e, "value", None)
+            value: Any = getattr(e, "value", None)
             name = getattr(value, "NAME", "")
             if name == "llh_position":
                 pos.llh = (value.latitude, value.longitude, value.ellipsoid_height, value.msl_height)

@@ -80,4 +80,5 @@ def feed(sim: Any, frame: Any, now: float) -> str:
         command, param = spec["spartn"]
         spartn = any(sim._setting_on(cls, param) for cls in sim._named(command))
     sim._world_at = None  # the world's RTK state may change
-    return sim.corrections.take(frame.message_type, sim.sim_time(now), spartn)
+    taken: str = sim.corrections.take(frame.message_type, sim.sim_time(now), spartn)
+    return taken
