@@ -558,29 +558,37 @@ def _note(text: str) -> None:
 
 def _with_retries(client: Client, retries: int, end: float, body: Callable[[bytes], int]) -> int:
     """Connect (retrying with backoff) and run `body` on the first body bytes once the header
-    ended (the sourcetable)."""
+    ended (the sourcetable; once it has begun to print, a failure is not retried: exit 1)."""
+    first = b""
     while True:
         try:
             client.connect(time.monotonic())
             assert client.sock is not None and client.response is not None
             client.sock.setblocking(True)
             client.sock.settimeout(SILENCE_S)
-            first = b""
             while client.response.kind is None:
                 data = client.sock.recv(READ_MAX)
                 if not data:
                     raise Broken("the caster closed the connection before its response header ended")
                 first = client.response.feed(data)
-            if client.response.kind == "stream":
-                raise Refused("the caster sent a data stream, not its sourcetable")
-            return body(first)
+            break
         except (OSError, Broken) as e:
             client.close()
             client.failures += 1
-            _note(f"{getattr(e, 'strerror', None) or e}")
             if client.failures > retries or time.monotonic() >= end:
-                raise Refused(f"gave up after {client.failures} failed attempt(s)") from None
-            time.sleep(min(_backoff(client.failures), max(0.0, end - time.monotonic())))
+                raise Refused(
+                    f"{getattr(e, 'strerror', None) or e}; gave up after {client.failures} failed attempt(s)"
+                ) from None
+            wait = _backoff(client.failures)
+            _note(f"{getattr(e, 'strerror', None) or e}; retrying in {wait:g} s")
+            time.sleep(min(wait, max(0.0, end - time.monotonic())))
+    assert client.response is not None
+    if client.response.kind == "stream":
+        raise Refused("the caster sent a data stream, not its sourcetable")
+    try:
+        return body(first)
+    except (OSError, Broken) as e:
+        raise Refused(f"{getattr(e, 'strerror', None) or e}") from None
 
 
 def _backoff(failures: int) -> float:
