@@ -148,7 +148,7 @@ class Caster:
     def _answer(self, conn: socket.socket, request: Dict[str, str]) -> None:
         path = request["line"].split()[1]
         v2 = self.version == "2.0"
-        if path == "/":
+        if path == "/" or (not v2 and path != f"/{MOUNT}"):  # NTRIP 1.0: an unknown mountpoint gets the table
             table = "".join(line + "\r\n" for line in SOURCETABLE) + "ENDSOURCETABLE\r\n"
             if v2:
                 head = ["HTTP/1.1 200 OK", "Ntrip-Version: Ntrip/2.0", "Content-Type: gnss/sourcetable"]
@@ -346,14 +346,17 @@ def cv7() -> Iterator[Sim]:
 
 
 def test_refusals_exit_1(cv7: Sim) -> None:
-    c = Caster("1.0", bare_lf=True)
+    c, c2 = Caster("1.0", bare_lf=True), Caster("2.0")
     try:
         bad = device(cv7.address, c.url(password="wrong"), "--duration", "10")
-        missing = device(cv7.address, c.url(mount="NOPE"), "--duration", "10")
+        missing = device(cv7.address, c.url(mount="NOPE"), "--duration", "10")  # 1.0: the sourcetable
+        missing2 = device(cv7.address, c2.url(mount="NOPE"), "--duration", "10")  # 2.0: 404
     finally:
         c.close()
+        c2.close()
     assert bad.returncode == 1 and "credentials" in bad.stderr and len(bad.stderr.splitlines()) == 1, bad.stderr
-    assert missing.returncode == 1 and "mountpoint" in missing.stderr, missing.stderr
+    assert missing.returncode == 1 and "no mountpoint 'NOPE'" in missing.stderr, missing.stderr
+    assert missing2.returncode == 1 and "no such mountpoint (HTTP/1.1 404" in missing2.stderr, missing2.stderr
     unreachable = device(cv7.address, "ntrip://127.0.0.1:1/M", "--retries", "1", "--duration", "10")
     assert unreachable.returncode == 1 and "gave up after 2" in unreachable.stderr.splitlines()[-1]
 
