@@ -100,6 +100,15 @@ def filters(proto: dict, param: Callable[[str], str]) -> dict[str, dict]:
                 "aiding_status": masks(r["aiding_status"]),
                 "uncertainty": dict(r["uncertainty"]),
             }
+            if "corrections" in r:
+                c = r["corrections"]
+                f["rtk"]["corrections"] = {
+                    "types": sorted(c["types"]),
+                    "station": sorted(c["station"]),
+                    "observations": sorted(c["observations"]),
+                    "max_age": float(c["max_age"]),
+                    "spartn": (c["spartn"]["command"], param(c["spartn"]["param"])) if "spartn" in c else None,
+                }
         out[e["device"]] = f
     return out
 

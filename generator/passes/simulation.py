@@ -7,8 +7,9 @@ one of its layouts (a list's `descriptor`/`decimation` members of the list's str
 number is a data set of the protocol; every device is one of the protocol's devices; the `nack`
 members are members of the ack code enum; the filter's enums exist and name their members, and its internal
 aiding (the status flag roles, heading update sources, aiding measurement control sources, heading
-alignment methods, antenna offsets, dual-antenna status, RTK fix members, aiding status flags and
-uncertainties) names commands, their parameters, enum and
+alignment methods, antenna offsets, dual-antenna status, RTK fix members, aiding status flags,
+uncertainties, and the RTCM3 types: station and observation types among the supported ones, the
+SPARTN command's parameter) names commands, their parameters, enum and
 bitfield members; the descriptor lists' commands, replies and list parameters exist (a reply of that
 command whose list runs to the end of the field, of u16 items or of a struct of two u8: set,
 descriptor), each gaining its `capacity`, the most entries that fit beside the ack in one packet;
@@ -527,3 +528,25 @@ class _Checker:
                     "simulation: the position uncertainties must shrink from single point to RTK float to RTK fixed",
                     "single > float > fixed",
                 )
+            if rtk.get("corrections"):
+                self.corrections(path + ("rtk", "corrections"), rtk["corrections"])
+
+    def corrections(self, path: tuple, c: dict) -> None:
+        """RTCM3 intake: the station and observation types are supported types, the SPARTN
+        command and its parameter exist."""
+        for key in ("station", "observations"):
+            extra = sorted(set(c[key]) - set(c["types"]))
+            if extra:
+                self.err(
+                    path + (key,),
+                    f"simulation: RTCM message types {extra} of `{key}` are not among the supported `types`",
+                    "a subset of `types`",
+                )
+        if set(c["station"]) & set(c["observations"]):
+            self.err(
+                path + ("station",),
+                "simulation: an RTCM message type is both a station position and an observation",
+                "disjoint lists",
+            )
+        if c.get("spartn"):
+            self.params(path + ("spartn",), c["spartn"]["command"], [c["spartn"]["param"]])

@@ -1,6 +1,7 @@
 """simulation: the protocol file's `simulation` section, checked against the spec's commands,
 parameters, data sets, devices and enums, and exported with its sources resolved."""
 
+import pytest
 from test_session_rule import ACK
 from tiny_spec import PROTOCOL, build, command_set, data_set, errors
 
@@ -220,6 +221,39 @@ def test_rtk_names_and_uncertainties_are_checked(tmp_path):
     other = RTK.replace("enum: FilterState, float", "enum: AckCode, float")
     got = errors(build(tmp_path, _aiding(AIDING + other), "simulation"))
     assert any("is not the filter's fix enum 'FilterState'" in e for e in got), got
+
+
+CORRECTIONS = """\
+        corrections:
+          types: [1005, 1077, 1087, 1230]
+          station: [1005]
+          observations: [1077, 1087]
+          max_age: 10.0
+          spartn: {command: stream_control, param: enable}
+"""
+
+
+def test_rtcm_corrections_are_checked_and_exported(tmp_path):
+    ctx = build(tmp_path, _aiding(AIDING + RTK + CORRECTIONS), "simulation")
+    assert errors(ctx) == []
+    assert ctx.simulation["filters"][0]["rtk"]["corrections"]["observations"] == [1077, 1087]
+    bad = (
+        CORRECTIONS.replace("station: [1005]", "station: [1006, 1077]")
+        .replace("observations: [1077, 1087]", "observations: [1077, 1097]")
+        .replace("param: enable}", "param: spartn_enable}")
+    )
+    got = errors(build(tmp_path, _aiding(AIDING + RTK + bad), "simulation"))
+    expected = [
+        "RTCM message types [1006] of `station` are not among the supported `types`",
+        "RTCM message types [1097] of `observations` are not among the supported `types`",
+        "an RTCM message type is both a station position and an observation",
+        "'spartn_enable' is not a parameter of stream_control",
+    ]
+    for message in expected:
+        assert any(message in e for e in got), (message, got)
+    negative = CORRECTIONS.replace("max_age: 10.0", "max_age: 0")
+    with pytest.raises(AssertionError, match="max_age: 0 is less than or equal to the minimum of 0"):
+        build(tmp_path, _aiding(AIDING + RTK + negative), "simulation")  # the schema refuses it
 
 
 AIDING_COMMAND = """\

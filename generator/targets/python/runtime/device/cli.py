@@ -5,7 +5,8 @@ device from the shell.
 
 ADDRESS: tcp:HOST:PORT, a serial port path, or `auto` (scan the serial ports, ping each at the
 model's baud rates, list what answers). Subcommands: ping, info, stream, send, settings dump|apply|
-diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses).
+diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses),
+ntrip (ntrip.py, docs/rtk-and-nmea.md).
 The options of every subcommand (--device, --baud, --timeout-ms) go before or after it.
 
 Exit status: 0 done (diff: the device matches the file); 1 the device said no or differs: a
@@ -36,6 +37,7 @@ from ..session import CommandRefused, Device, Nack, SessionError, model_matches,
 from ..session.transport import TransportError, open_transport, parse_address
 from . import budget
 from . import settings as st
+from .ntrip import add_parser as ntrip_parser
 
 PROG = f"{PACKAGE}-device"
 DEFAULT_BAUD = 115200
@@ -859,6 +861,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
     r.add_argument("--split-size", type=float, default=0, metavar="BYTES", help="a new file once one holds BYTES")
     r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
+    ntrip_parser(sub, common)  # ntrip.py
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
     return p
@@ -908,6 +911,10 @@ def _main(args: argparse.Namespace) -> int:
                 args.split_size,
                 args.split_time,
             )
+        if args.subcommand == "ntrip":  # corrections from a caster (ntrip.py: connects when it needs the device)
+            from . import ntrip
+
+            return ntrip.main(args, lambda: connect(args.address, args.model, args.baud, args.timeout_ms))
         precheck_apply(args)  # with --device: refused before any byte is sent
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":

@@ -29,10 +29,11 @@ from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 from .. import _link, _sim, capabilities, registry
 from .. import _session as _meta
 from .._protocol import FIELD_HEADER_SIZE, FIRST_SHARED, MAX_PAYLOAD, SET_OFFSET
-from ..codec.framing import Nmea, PacketBuilder, Parser, RawPacket
+from ..codec.framing import Nmea, PacketBuilder, Parser, RawPacket, Rtcm
 from ..codec.layout import Choice, Enum, Field
 from ..codec.packets import DecodedField, RawField, decode_packet
 from ..session import support_error
+from . import corrections as sim_corrections
 from . import status as sim_status
 from .nmea import NmeaPort
 from .status import set_of as _set_of
@@ -149,6 +150,7 @@ class Simulator:
         self._names: Dict[str, List[Any]] = {}  # command name -> its classes on this device
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
+        self.corrections = sim_corrections.Corrections(_sim.FILTER.get(device, {}), self.world)  # RTCM3 in
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
         self.idle = False  # set to idle: no streams until resume
         self._world_at: Optional[Tuple[float, Dict[str, Any]]] = None
@@ -188,6 +190,8 @@ class Simulator:
                 out.extend(self._packet(event.data, now))
             elif isinstance(event, Nmea):
                 out.extend(self.nmea.receive(event.data, now))
+            elif isinstance(event, Rtcm):
+                sim_corrections.feed(self, event, now)
         # The device reports no skip run: the parser holds at most one partial packet (at most
         # the maximum packet size), never the noise between packets.
         del self.parser._skip[:]
