@@ -7,8 +7,10 @@ runs it after `make test`); the convention is docs/conformance.md §11.
   table): a new extra is covered as soon as it exists, and one without an example fails.
 - The wheel is tests/consumer/test_python_package.py's (reused through test_outside_user.wheels()).
 - uv stands in for pip (the version pinned in requirements.txt): `uv venv` (no pip, no .pth: the
-  project's .venv libraries are not seen) and `uv pip install 'mipcodec[EXTRA] @ file:///...whl'`;
-  its cache (UV_CACHE_DIR, else ~/.cache/uv) makes pyspark's 300 MB cheap after the first run.
+  project's .venv libraries are not seen) and `uv pip install 'mipcodec[EXTRA] @ file:///...whl'`
+  with the project's pinned versions as constraints (the extras' lower bounds; a constraint adds
+  no library, so a forgotten one stays missing); `--offline` first, so a warm cache (UV_CACHE_DIR,
+  else ~/.cache/uv) installs without the network and without building pyspark's sdist again.
 - The examples stay in the user pages (one source): a block marked `<!-- extra-example: EXTRA[,EXTRA]
   [INPUT...] -->` on a line just before its fence (beside an `outside-user` marker, either order)
   is run with test_outside_user's Runner in the extra's virtualenv, the blocks of one extra in
@@ -29,6 +31,7 @@ import re
 import shutil
 import subprocess
 import sys
+import sysconfig
 import time
 from pathlib import Path
 
@@ -67,6 +70,22 @@ def uv() -> str:
     return path
 
 
+def constraints() -> Path:
+    """The versions the project's tests run (requirements.txt, requirements-spark.txt): the extras'
+    libraries are installed at these (their lower bounds), the same on every run; a library an
+    extra forgets is not added by a constraint."""
+    out = BUILD / "constraints.txt"
+    pins = [
+        line
+        for name in ("requirements.txt", "requirements-spark.txt")
+        for line in (ROOT / name).read_text().splitlines()
+        if re.match(r"^[A-Za-z0-9_.-]+==\S+$", line)
+    ]
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text("\n".join(pins) + "\n")
+    return out
+
+
 def timed(cmd: list[str], what: str, **kwargs) -> subprocess.CompletedProcess:
     start = time.monotonic()
     proc = subprocess.run(cmd, capture_output=True, text=True, **kwargs)
@@ -99,14 +118,23 @@ def extra_env(extra: str, wheel: Path) -> dict[str, str]:
     if "UV_CACHE_DIR" in os.environ:
         uv_env["UV_CACHE_DIR"] = os.environ["UV_CACHE_DIR"]
     timed([uv(), "venv", "--quiet", "--python", sys.executable, str(venv)], f"[{extra}]: uv venv", env=uv_env)
-    requirement = f"{PACKAGE}[{extra}] @ {wheel.as_uri()}"
     python = str(venv / "bin" / "python")
-    timed([uv(), "pip", "install", "--quiet", "--python", python, requirement], f"[{extra}]: uv pip install", env=uv_env)
+    cmd = [uv(), "pip", "install", "--quiet", "--python", python, "--constraint", str(constraints())]
+    cmd.append(f"{PACKAGE}[{extra}] @ {wheel.as_uri()}")
+    # from the cache alone when it has everything (uv finds PyPI's cached responses stale and would
+    # build pyspark's sdist again), else from PyPI
+    start = time.monotonic()
+    proc = subprocess.run([*cmd, "--offline"], capture_output=True, text=True, env=uv_env)
+    how = "from the cache"
+    if proc.returncode != 0:
+        proc, how = subprocess.run(cmd, capture_output=True, text=True, env=uv_env), "from PyPI"
+    TIMINGS[f"extras alone: [{extra}]: uv pip install ({how})"] = time.monotonic() - start
+    assert proc.returncode == 0, f"[{extra}]: {' '.join(cmd)}: exit {proc.returncode}\n{proc.stderr[-3000:]}"
     (home / "work").mkdir()
     env.update(HOME=str(home), PATH=f"{venv / 'bin'}{os.pathsep}{env.get('PATH', '')}", VIRTUAL_ENV=str(venv))
     # the virtualenv sees none of the project's libraries
     seen = subprocess.run([python, "-c", "import sys; print(sys.path)"], capture_output=True, text=True, env=env)
-    assert str(ROOT) not in seen.stdout, seen.stdout
+    assert sysconfig.get_paths()["purelib"] not in seen.stdout, seen.stdout
     ENVS[extra] = env
     return env
 
