@@ -44,9 +44,7 @@ from tests.helpers.generated import python_package
 ROOT = Path(__file__).resolve().parents[2]
 BUILD = ROOT / "build" / "extras"
 PACKAGE = "mipcodec"
-REQUIRES: dict[str, tuple[str, ...]] = importlib.import_module(
-    f"{python_package(PACKAGE).__name__}._extras"
-).REQUIRES
+REQUIRES: dict[str, tuple[str, ...]] = importlib.import_module(f"{python_package(PACKAGE).__name__}._extras").REQUIRES
 ENVS: dict[str, dict[str, str]] = {}  # extra -> the environment of its virtualenv (made once)
 
 
@@ -163,7 +161,8 @@ class ExtraRunner(Runner):
                 continue
             if name.startswith("dataset:"):
                 out = cwd / name.removeprefix("dataset:")
-                cmd = [sys.executable, "-m", PACKAGE, "export", "--dataset", str(out), *map(str, self.logs.glob("*.mip"))]
+                logs = [str(log) for log in sorted(self.logs.glob("*.mip"))]
+                cmd = [sys.executable, "-m", PACKAGE, "export", "--dataset", str(out), *logs]
                 env = {**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python" / PACKAGE)}
                 timed(cmd, f"[{self.extra}]: {name} (placeholder, the project's .venv)", env=env)
             else:
@@ -209,7 +208,11 @@ def test_missing_library_names_it_and_its_extra(wheel: Path, logs: Path) -> None
     log = sorted(logs.glob("*.mip"))[0]
     cwd = Path(env["HOME"])
     proc = subprocess.run(
-        ["python", "-m", PACKAGE, "export", "--dataset", "out", str(log)], capture_output=True, text=True, env=env, cwd=cwd
+        ["python", "-m", PACKAGE, "export", "--dataset", "out", str(log)],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=cwd,
     )
     assert proc.returncode == 2, (proc.returncode, proc.stderr)
     lines = proc.stderr.splitlines()

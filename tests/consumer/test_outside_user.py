@@ -32,6 +32,8 @@ device log, `NAME/` a directory of them, from `python -m mipcodec.fleet`),
 outside the repository, as a user who vendored it), `<!-- outside-user: project -->` (a
 getting-started page's CMake or Cargo snippet built as the user's project: the package in
 third_party/ by add_subdirectory or path dependency, its getting-started example the program).
+A block may also carry `<!-- extra-example: EXTRA... [INPUT...] -->` (either order with the
+outside-user marker): tests/consumer/test_extras_alone.py runs it in a virtualenv of that extra alone.
 """
 
 from __future__ import annotations
