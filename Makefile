@@ -154,7 +154,8 @@ test-outside: generate
 # `mipcodec[EXTRA]` installed by itself into a fresh virtualenv with uv (pip's stand-in, pinned in
 # requirements.txt) from the wheel and PyPI, then the extra's example from the user pages run there
 # (tests/consumer/test_extras_alone.py). Not part of `make test` (PyPI); .ci/run runs it. About
-# 3 minutes with a cold uv cache (pyspark's sdist build and the Spark job most of it), 1.5 warm.
+# 2 minutes with a cold uv cache (pyspark most of it: its sdist's download and build, about 50 s,
+# and the Spark job, 25-50 s), 1 minute warm.
 test-extras: generate
 	$(PY) -m pytest -q tests/consumer/test_extras_alone.py
 
