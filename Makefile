@@ -21,7 +21,7 @@ export RUFF := $(abspath $(VENV)/bin/ruff)
 
 SPEC_INPUTS := $(shell find spec generator templates tests/vectors tests/streams tests/sessions -type f -not -name '*.pyc' 2>/dev/null) requirements.txt .clang-format ruff.toml rustfmt.toml VERSION LICENSE
 
-.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-outside test-cortexm test-release test-mingw test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
+.PHONY: all bootstrap generate golden html test test-generator test-spec test-bench test-export test-golden test-docs test-conformance test-capture test-bigendian test-consumer test-outside test-extras test-cortexm test-release test-mingw test-fuzz-regressions fuzz fuzz-long differential $(addprefix test-,$(LANGS)) check lint audit bench bench-instructions clean distclean
 
 all: generate
 
@@ -149,6 +149,15 @@ test-consumer: generate
 test-outside: generate
 	$(STAMP)
 	$(PY) -m pytest -q tests/consumer/test_outside_user.py
+
+# Each extra of the Python package alone (issue 50; docs/conformance.md §11 "Each extra alone"):
+# `mipcodec[EXTRA]` installed by itself into a fresh virtualenv with uv (pip's stand-in, pinned in
+# requirements.txt) from the wheel and PyPI, then the extra's example from the user pages run there
+# (tests/consumer/test_extras_alone.py). Not part of `make test` (PyPI); .ci/run runs it. About
+# 2 minutes with a cold uv cache (pyspark most of it: its sdist's download and build, about 50 s,
+# and the Spark job, 25-50 s), 1 minute warm.
+test-extras: generate
+	$(PY) -m pytest -q tests/consumer/test_extras_alone.py
 
 # Release checks (docs/versioning.md "Releasing"): the Python packages' sdists and wheels pass
 # `twine check --strict` with PyPI's classifiers (tests/consumer/test_release.py), and `cargo publish

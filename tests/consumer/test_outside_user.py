@@ -32,6 +32,8 @@ device log, `NAME/` a directory of them, from `python -m mipcodec.fleet`),
 outside the repository, as a user who vendored it), `<!-- outside-user: project -->` (a
 getting-started page's CMake or Cargo snippet built as the user's project: the package in
 third_party/ by add_subdirectory or path dependency, its getting-started example the program).
+A block may also carry `<!-- extra-example: EXTRA... [INPUT...] -->` (either order with the
+outside-user marker): tests/consumer/test_extras_alone.py runs it in a virtualenv of that extra alone.
 """
 
 from __future__ import annotations
@@ -72,7 +74,10 @@ PAGES = [
 ]
 PYTHON_PACKAGES = ["mipcodec", "mscipcodec"]
 FENCE = re.compile(r"^(`{3,})(\w*)\n(.*?)^\1\n", re.S | re.M)
-MARKER = re.compile(r"<!-- outside-user: (.*?) -->\n$")
+# A block's markers: the comments on the lines just before its fence, in either order.
+MARKER = re.compile(r"<!-- outside-user: (.*?) -->\n(?:<!-- extra-example: .*? -->\n)?$")
+# The example of an extra (tests/consumer/test_extras_alone.py): `EXTRA[,EXTRA...] [INPUT...]`.
+EXTRA_MARKER = re.compile(r"<!-- extra-example: (.*?) -->\n(?:<!-- outside-user: .*? -->\n)?$")
 # The pages' example addresses, replaced by the running simulator's.
 ADDRESS = re.compile(r"tcp:127\.0\.0\.1:(?:PORT|[1-9]\d*)|/dev/pts/\d+")
 SIM = re.compile(r"^python3? -m (\w+)\.sim\b")
@@ -86,6 +91,7 @@ class Block:
     lang: str
     body: str
     marker: str = ""
+    extra_example: str = ""  # the extra-example marker: the extras whose example it is, its inputs
     commands: list[tuple[str, str]] = field(default_factory=list)  # (command, the output shown)
 
     @property
@@ -139,7 +145,9 @@ def blocks(page: str) -> list[Block]:
         if any("repository" in t.lower() for _, t in chain):
             continue
         marker = MARKER.search(before)
+        extra = EXTRA_MARKER.search(before)
         block = Block(page, before.count("\n") + 1, m.group(2), m.group(3), marker.group(1) if marker else "")
+        block.extra_example = extra.group(1) if extra else ""
         if block.lang == "sh":
             block.commands = sh_commands(block.body)
         elif block.lang == "console":
@@ -162,6 +170,11 @@ def test_every_page_is_linked_and_every_marker_is_known():
                 assert re.fullmatch(r"not run: .{10,}|run|project|files [\w./ -]+|cd generated/\w+/\w+", b.marker), (
                     b.where,
                     b.marker,
+                )
+            if b.extra_example:
+                assert re.fullmatch(r"[a-z]+(,[a-z]+)*( [\w.-]+/?| dataset:[\w.-]+)*", b.extra_example), (
+                    b.where,
+                    b.extra_example,
                 )
 
 
@@ -238,14 +251,18 @@ def machine(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
 def logs(machine: dict[str, str]) -> Path:
     """Simulated device logs for the pages' placeholders (`python -m mipcodec.fleet` of the generated
     package: test data, made before the pages install anything into the virtualenv)."""
-    out = BUILD / "logs"
+    return fleet_logs(BUILD / "logs", "outside user")
+
+
+def fleet_logs(out: Path, who: str) -> Path:
+    """Two simulated devices' logs of 400 kB in `out` (recreated), by the project's .venv."""
     shutil.rmtree(out, ignore_errors=True)
     start = time.monotonic()
     cmd = [sys.executable, "-m", "mipcodec.fleet", "--out", str(out), "--devices", "2", "--size", "400k"]
     env = {**os.environ, "PYTHONPATH": str(ROOT / "generated" / "python" / "mipcodec")}
     proc = subprocess.run(cmd, env=env, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
-    TIMINGS["outside user: python -m mipcodec.fleet (placeholder logs)"] = time.monotonic() - start
+    TIMINGS[f"{who}: python -m mipcodec.fleet (placeholder logs)"] = time.monotonic() - start
     return out
 
 

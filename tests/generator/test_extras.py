@@ -7,7 +7,7 @@ packages' pyproject.toml and into their `_extras.py` (the runtime's `need`). Thi
 generated pyproject.toml and the runtime's source (ast: every import of a library that is not in
 the standard library, and every `need(...)` call), and blocks libraries through sys.modules to see
 the error lines. No network, no virtualenv: installing each extra alone into a fresh virtualenv
-and running its documentation's example is left to a later test.
+and running its documentation's example is tests/consumer/test_extras_alone.py (`make test-extras`).
 """
 
 from __future__ import annotations
