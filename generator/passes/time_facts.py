@@ -12,7 +12,8 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
 - `reference_time`: per device (`device`, at most one entry each), the field carrying the device's
   own reference time for the sessions' host clock model (docs/time.md): either `param` (an
   unsigned integer in ns, us, ms or s) or `tow` and `week` as in `gps_time`, and `monotonic`
-  (whether the manual promises it never jumps).
+  (whether the manual promises it never jumps);
+- `sync`: per device, how its external time is synchronized (time_sync.py).
 
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
@@ -24,6 +25,7 @@ it is empty lists.
 
 from __future__ import annotations
 
+from . import time_sync
 from .context import Context
 
 _UNSIGNED = {"u8", "u16", "u32", "u64"}
@@ -32,9 +34,10 @@ _CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
 
 def run(ctx: Context) -> None:
     spec = ctx.pf.data.get("time")
-    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
+    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": [], "sync": []}
     if spec is None:
         return
+    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [])
     check = _Check(ctx)
     seen: set[str] = set()
     for i, entry in enumerate(spec.get("reference_time") or []):

@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "d1a289fc4871c01b"
+SPEC_HASH = "e778eb57a26eaee0"
 
 __all__ = [
     "SPEC_HASH",

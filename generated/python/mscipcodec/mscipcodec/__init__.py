@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "050d4364ddd08608"
+SPEC_HASH = "7a3dd7891da96dac"
 
 __all__ = [
     "SPEC_HASH",
