@@ -54,6 +54,10 @@ class Clocks:
         self.refreshes: List[float] = []  # simulated times of the applied updates
         self.late = 0  # updates not used: outside the window, or no PPS
         self._last: Tuple[Any, Optional[Tuple[int, float]]] = (None, None)  # last_edge's latest answer
+        # the GPS-time reference fields' parameter names (the GX5-45's correlation timestamp)
+        self.gps_names = {
+            (s, d): (tow, week) for dev, s, d, kind, _p, _n, tow, week, _m in _columns.REFERENCE_TIMES if kind == "gps"
+        }
         self.reference = next(
             (
                 (s, d, param, per)
@@ -220,8 +224,9 @@ class Clocks:
             refreshes = len([r for r in self.refreshes if r <= t]) + self._fix_refreshes(t)
             flags = (c["pps"] if self.pps_kind_at(t) else 0) | (c["refresh"] if refreshes % 2 else 0)
             flags |= c["initialized"] if refreshes else 0
-            setattr(value, "tow", float(tow))
-            setattr(value, "week_number", int(week))
+            names = self.gps_names.get(key, ("tow", "week_number"))
+            setattr(value, names[0], float(tow))
+            setattr(value, names[1], int(week))
             _flags(value, c["flags"], flags)
 
     def _fix_refreshes(self, t: float) -> int:
