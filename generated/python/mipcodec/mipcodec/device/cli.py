@@ -5,7 +5,8 @@ device from the shell.
 
 ADDRESS: tcp:HOST:PORT, a serial port path, or `auto` (scan the serial ports, ping each at the
 model's baud rates, list what answers). Subcommands: ping, info, stream, send, settings dump|apply|
-diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses).
+diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses),
+timesync (timesync.py, docs/timesync.md: exit 0 synced, 1 not, 2 usage).
 The options of every subcommand (--device, --baud, --timeout-ms) go before or after it.
 
 Exit status: 0 done (diff: the device matches the file); 1 the device said no or differs: a
@@ -859,6 +860,15 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--duration", type=float, help="seconds (default: until interrupted or the device goes away)")
     r.add_argument("--split-size", type=float, default=0, metavar="BYTES", help="a new file once one holds BYTES")
     r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
+    # timesync: device/timesync.py, docs/timesync.md
+    t = sub.add_parser(
+        "timesync", parents=[common], help="set up time synchronization and monitor it (docs/timesync.md)"
+    )
+    t.add_argument("--duration", type=float, default=30.0, help="seconds (default 30)")
+    t.add_argument("--json", action="store_true", help="one JSON object a line")
+    t.add_argument(
+        "--pps-source", metavar="NAME", help="models with a PPS source setting: the source (default: a receiver)"
+    )
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
     return p
@@ -912,6 +922,11 @@ def _main(args: argparse.Namespace) -> int:
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":
             return SETTINGS[args.action](conn, args)
+        if args.subcommand == "timesync":  # device/timesync.py
+            from .timesync import TimeSync, check_duration
+
+            check_duration(args.duration)
+            return TimeSync(conn, args.pps_source, args.json, _say).run(args.duration)
         return COMMANDS[args.subcommand](conn, args)
     except Usage as e:
         print(f"{PROG}: {e}", file=sys.stderr)
