@@ -239,11 +239,11 @@ class TimeSync:
         if self.as_json:
             self.out(json.dumps(line, separators=(",", ":")))
             return
-        words = [f"t={line['t']:g}s", "synced" if line["synced"] else f"not synced ({line['reason']})"]
+        words = [f"t={line['t']:.1f}s", "synced" if line["synced"] else f"not synced ({line['reason']})"]
         words.append(f"pps={'yes' if line['pps'] else 'no'}")
         words.append(f"time_valid={'yes' if line['time_valid'] else 'no'}")
-        for key, unit in (("drift_ppm", "ppm"), ("offset_ms", "ms"), ("jitter_ms", "ms")):
-            words.append(f"{key.rsplit('_', 1)[0]}={'-' if line[key] is None else format(line[key], '+.3f') + unit}")
+        for key, unit, spec in (("drift_ppm", "ppm", "+.1f"), ("offset_ms", "ms", "+.3f"), ("jitter_ms", "ms", ".3f")):
+            words.append(f"{key.rsplit('_', 1)[0]}={'-' if line[key] is None else format(line[key], spec) + unit}")
         words.append(f"updates={line['updates']}")
         self.out(" ".join(words))
 
