@@ -25,6 +25,7 @@ import json
 import math
 import sys
 import time
+import types
 import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple, Union
 
@@ -753,6 +754,13 @@ def _enable(conn: Connection, set_id: int) -> None:
         return
 
 
+def timesync_tools() -> types.SimpleNamespace:
+    """What timesync (device/timesync.py) uses of this command line (it cannot import it back)."""
+    tools = dict(command_classes=_command_classes, function_value=_function_value, note=_note, enable=_enable)
+    tools.update(format_setting=_format_setting, list_item_class=_list_item_class, st=st, usage=Usage)
+    return types.SimpleNamespace(read_base_rates=read_base_rates, trouble=Trouble, **tools)
+
+
 # ------------------------------------------------------------------------------------ auto
 def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) -> int:
     """Ping every serial port at the models' baud rates; one line per device that answers."""
@@ -926,7 +934,7 @@ def _main(args: argparse.Namespace) -> int:
             from .timesync import TimeSync, check_duration
 
             check_duration(args.duration)
-            return TimeSync(conn, args.pps_source, args.json, _say).run(args.duration)
+            return TimeSync(conn, args.pps_source, args.json, _say, tools=timesync_tools()).run(args.duration)
         return COMMANDS[args.subcommand](conn, args)
     except Usage as e:
         print(f"{PROG}: {e}", file=sys.stderr)

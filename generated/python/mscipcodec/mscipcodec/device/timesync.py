@@ -47,11 +47,9 @@ def host_gps_seconds() -> float:
 
 
 def check_duration(duration: float) -> float:
-    """--duration: finite, above 0 (Usage names it)."""
-    from .cli import Usage
-
+    """--duration: finite, above 0 (ValueError names it: a usage error, exit 2)."""
     if not (math.isfinite(duration) and 0 < duration <= 7 * 86400):
-        raise Usage(f"--duration {duration:g}: expected seconds above 0 (at most a week)")
+        raise ValueError(f"--duration {duration:g}: expected seconds above 0 (at most a week)")
     return duration
 
 
@@ -110,15 +108,15 @@ class TimeSync:
         as_json: bool = False,
         out: Callable[[str], Any] = print,
         gps_now: Callable[[], float] = host_gps_seconds,
+        tools: Any = None,
     ) -> None:
-        from . import cli  # the device command line's helpers (it imports this module lazily)
-
-        self.cli = cli
+        # the device command line's helpers (device/cli.py passes them: it imports this module)
+        self.cli = cli = tools
         self.conn = conn
         self.model = conn.model
         facts = _sim.TIME_SYNC.get(self.model)
         if facts is None:
-            raise cli.Usage(f"timesync: the spec gives no time synchronization facts for {self.model}")
+            raise cli.usage(f"timesync: the spec gives no time synchronization facts for {self.model}")
         self.facts = facts
         self.as_json = as_json
         self.out = out
@@ -134,7 +132,7 @@ class TimeSync:
         setting = self.facts.get("pps_source")
         if setting is None:
             if name is not None:
-                raise self.cli.Usage(f"--pps-source: {self.model} has no PPS source setting")
+                raise self.cli.usage(f"--pps-source: {self.model} has no PPS source setting")
             return None
         cls = self._command(setting["command"])
         enum = next(iter(_enum_types(cls, setting["param"])), None)
@@ -142,24 +140,24 @@ class TimeSync:
         if name is None:
             name = next((n for n, v in members.items() if setting["kinds"].get(v) == "receiver"), None)
         if name not in members:
-            raise self.cli.Usage(f"--pps-source {name}: expected one of {', '.join(members)}")
+            raise self.cli.usage(f"--pps-source {name}: expected one of {', '.join(members)}")
         value = members[name]
         kind = setting["kinds"].get(value, "none")
         if kind == "none":
-            raise self.cli.Usage(f"--pps-source {name}: no PPS (expected one of {', '.join(members)} but {name})")
+            raise self.cli.usage(f"--pps-source {name}: no PPS (expected one of {', '.join(members)} but {name})")
         self.send_updates = kind != "receiver"  # a receiver's PPS: the device takes GPS time itself
         return value
 
     def _command(self, name: str) -> Any:
-        classes = self.cli._command_classes(name, self.model)
+        classes = self.cli.command_classes(name, self.model)
         if not classes:
-            raise self.cli.Trouble(f"timesync: {self.model} has no {name} command")
+            raise self.cli.trouble(f"timesync: {self.model} has no {name} command")
         return classes[0]
 
     # ------------------------------------------------------------------ setup
     def setup(self) -> None:
         device = self.conn.device
-        write = self.cli._function_value("write")
+        write = self.cli.function_value("write")
         if self.source is not None:
             setting = self.facts["pps_source"]
             cls = self._command(setting["command"])
@@ -172,7 +170,7 @@ class TimeSync:
         elif c is not None:
             set_id, descriptors = c["set"], [c["descriptor"]]
         else:
-            raise self.cli.Trouble(f"timesync: the spec names no status field for {self.model}")
+            raise self.cli.trouble(f"timesync: the spec names no status field for {self.model}")
         ref = next((r for r in REFERENCE_TIMES if r[0] == self.model), None)  # the clock model's field
         if ref is not None and ref[2] not in descriptors and ref[1] in (set_id, 0xFF):
             descriptors.append(ref[2])
@@ -180,29 +178,29 @@ class TimeSync:
 
     def _stream(self, set_id: int, descriptors: List[int]) -> None:
         cli, st = self.cli, self.cli.st
-        found = cli._format_setting(self.model, set_id)
+        found = cli.format_setting(self.model, set_id)
         if found is None:
-            raise cli.Trouble(f"timesync: {self.model} has no message format for data set 0x{set_id:02X}")
+            raise cli.trouble(f"timesync: {self.model} has no message format for data set 0x{set_id:02X}")
         s, key = found
         base = cli.read_base_rates(self.conn).get(set_id)
         if not base:
-            raise cli.Trouble(f"timesync: no base rate known for data set 0x{set_id:02X}")
+            raise cli.trouble(f"timesync: no base rate known for data set 0x{set_id:02X}")
         decimation = max(1, round(base / RATE_HZ))
         spec = _sim.FORMATS[s.cls]
-        item_cls = cli._list_item_class(s)
+        item_cls = cli.list_item_class(s)
         items = [item_cls(**{spec[2]: d, spec[3]: decimation}) for d in descriptors]
         previous = st.read_entry(self.conn.device, s, key)
         entry = {**key, spec[1]: [json.loads(i.to_json()) if hasattr(i, "to_json") else i for i in items]}
         self.conn.device.call(st.command_of(s, {**previous, **entry}))
         self.restore.append(st.command_of(s, {**key, **previous}))
-        cli._enable(self.conn, set_id)
+        cli.enable(self.conn, set_id)
 
     def _update(self, edge: float, now: float) -> None:
         """GPS Time Updates (time of week, then week) labelling the PPS edge at host time `edge`."""
         u = self.facts["update"]
         cls = self._command(u["command"])
         label = round(self.gps_now() - (now - edge))  # the host's GPS time at the edge, whole seconds
-        write = self.cli._function_value("write")
+        write = self.cli.function_value("write")
         for selector, value in ((u["tow"], label % WEEK_S), (u["week"], label // WEEK_S)):
             self.conn.device.call(cls.from_json({"function": write, u["selector"]: selector, u["value"]: value}))
         self.updates += 1
@@ -289,9 +287,9 @@ class TimeSync:
                 try:
                     device.call(command)
                 except (SessionError, ValueError, OSError):
-                    self.cli._note("could not restore the previous message format")
+                    self.cli.note("could not restore the previous message format")
         if not last.get("synced"):
-            self.cli._note(f"not synchronized: {last.get('reason', 'no data')}")
+            self.cli.note(f"not synchronized: {last.get('reason', 'no data')}")
             return 1
         return 0
 
