@@ -98,7 +98,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "def950f90c006f1a"
+SPEC_HASH = "b9238e5399886971"
 
 __all__ = [
     "SPEC_HASH",

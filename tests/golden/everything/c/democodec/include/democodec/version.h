@@ -11,6 +11,6 @@
 #define DEMOC_VERSION "2.10.3"
 /* First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two packages
  * with the same hash were generated from the same spec. */
-#define DEMOC_SPEC_HASH "def950f90c006f1a"
+#define DEMOC_SPEC_HASH "b9238e5399886971"
 
 #endif
