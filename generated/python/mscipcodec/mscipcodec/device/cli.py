@@ -756,9 +756,9 @@ def _enable(conn: Connection, set_id: int) -> None:
 
 def timesync_tools() -> types.SimpleNamespace:
     """What timesync (device/timesync.py) uses of this command line (it cannot import it back)."""
-    tools = dict(command_classes=_command_classes, function_value=_function_value, note=_note, enable=_enable)
-    tools.update(format_setting=_format_setting, list_item_class=_list_item_class, st=st, usage=Usage)
-    return types.SimpleNamespace(read_base_rates=read_base_rates, trouble=Trouble, **tools)
+    tools: Dict[str, Any] = dict(command_classes=_command_classes, function_value=_function_value, note=_note)
+    tools.update(enable=_enable, format_setting=_format_setting, list_item_class=_list_item_class, st=st)
+    return types.SimpleNamespace(read_base_rates=read_base_rates, trouble=Trouble, usage=Usage, **tools)
 
 
 # ------------------------------------------------------------------------------------ auto

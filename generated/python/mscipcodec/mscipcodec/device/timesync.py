@@ -250,7 +250,7 @@ class TimeSync:
         device.host_clock  # noqa: B018 (its first use starts the host clock model)
 
         def now() -> float:
-            return device.now_ms() / 1000.0
+            return float(device.now_ms()) / 1000.0
 
         def on_packet(packet: Any) -> None:
             h = device.host_ns(packet)

@@ -89,7 +89,7 @@ class Clocks:
         return str(setting["kinds"].get(value, "none")) if value is not None else "none"
 
     def _gps_phase(self) -> float:
-        return self.sim.world.gps_start[1] % 1.0
+        return float(self.sim.world.gps_start[1]) % 1.0
 
     def edge(self, t: float, kind: Optional[str] = None) -> Tuple[int, float]:
         """(index, true time) of the last rising edge at or before t of the PPS of `kind`."""
@@ -103,7 +103,7 @@ class Clocks:
     def present(self, t: float, kind: Optional[str] = None) -> bool:
         """Whether a PPS pulses at t."""
         kind = kind or self.kind()
-        fix = self.sim.world.gnss_fix(t)
+        fix = bool(self.sim.world.gnss_fix(t))
         if kind == "any":
             return self.pps_input or fix
         return {"input": self.pps_input, "receiver": fix, "generated": True}.get(kind, False)
