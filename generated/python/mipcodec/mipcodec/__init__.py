@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "e778eb57a26eaee0"
+SPEC_HASH = "69cafc78d2f154c4"
 
 __all__ = [
     "SPEC_HASH",
