@@ -54,6 +54,7 @@ class Clocks:
         self.refreshes: List[float] = []  # simulated times of the applied updates
         self.late = 0  # updates not used: outside the window, or no PPS
         self._last: Tuple[Any, Optional[Tuple[int, float]]] = (None, None)  # last_edge's latest answer
+        self._kind: Tuple[int, str] = (-1, "")  # (the simulator's command count, the PPS kind then)
         # the GPS-time reference fields' parameter names (the GX5-45's correlation timestamp)
         self.gps_names = {
             (s, d): (tow, week) for dev, s, d, kind, _p, _n, tow, week, _m in _columns.REFERENCE_TIMES if kind == "gps"
@@ -77,6 +78,12 @@ class Clocks:
         setting = self.facts.get("pps_source")
         if setting is None:
             return "any"
+        if self._kind[0] == self.sim.commands:  # the settings change only with a command
+            return self._kind[1]
+        self._kind = (self.sim.commands, self._kind_of(setting))
+        return self._kind[1]
+
+    def _kind_of(self, setting: Dict[str, Any]) -> str:
         value = None
         for v in self.sim.current.values():
             if getattr(v, "NAME", "") == setting["command"] and getattr(v, setting["param"], None) is not None:
