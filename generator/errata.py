@@ -51,6 +51,9 @@ def spec_notes(ir: dict):
                         for n in q.get("notes", []):
                             yield p["name"], f"{label} param {q['name']}", v["sources"], n
         yield from _simulation_notes(p)
+        for e in (p.get("time") or {}).get("sync", []):
+            for n in e.get("notes", []):
+                yield p["name"], f"time sync {e['device']}", e.get("sources", []), n
 
 
 def _simulation_notes(p: dict):

@@ -18,6 +18,7 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
   choice, after a valid GPS time);
 - `sync_health`: fields saying whether a PPS is present (`info`'s synchronization section): `field`
   and either `param` (a bool) or `valid_flags` and `valid`.
+- `sync`: per device, how its external time is synchronized (time_sync.py).
 
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
@@ -30,6 +31,7 @@ it is empty lists.
 
 from __future__ import annotations
 
+from . import time_sync
 from .context import Context
 
 _UNSIGNED = {"u8", "u16", "u32", "u64"}
@@ -38,10 +40,11 @@ _CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
 
 def run(ctx: Context) -> None:
     spec = ctx.pf.data.get("time")
-    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": []}
+    ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": [], "sync": []}
     ctx.time.update(external=[], sync_health=[])
     if spec is None:
         return
+    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [])
     check = _Check(ctx)
     _log_sync(ctx, spec, check)
     seen: set[str] = set()

@@ -1124,11 +1124,33 @@ def _sim_context(m: _Protocol, sets: list[dict]) -> dict:
         "device_titles": pyrepr({d["id"]: d["title"] for d in proto["devices"]}),
         "nmea": pyrepr(simulation.nmea(proto, py_attr)),
         "nmea_commands": classes(simulation.nmea_commands(proto, py_attr)),
+        "time_sync": pyrepr(_time_sync(proto)),
         "sim_modules": sorted(
             {sm["module"] for sm in sets if sm["classes"]} | ({"types"} if "types." in str(defaults) else set())
         ),
         **_sim_identity(proto, sets),
     }
+
+
+def _time_sync(proto: dict) -> dict:
+    """The spec's `time.sync` per device (sim/clocks.py, device/timesync.py), names as attributes."""
+    out = {}
+    for e in (proto.get("time") or {}).get("sync", []):
+        d = {k: v for k, v in e.items() if k not in ("device", "notes", "sources")}
+        u = dict(d["update"], selector=py_attr(d["update"]["selector"]), value=py_attr(d["update"]["value"]))
+        d["update"] = u
+        if "pps_source" in d:
+            d["pps_source"] = dict(d["pps_source"], param=py_attr(d["pps_source"]["param"]))
+        if "status" in d:
+            st = d["status"]
+            d["status"] = dict(st, synced=py_attr(st["synced"]), last_pps=py_attr(st["last_pps"]))
+        d["external"] = [
+            {k: (py_attr(v) if k in ("flags", "tow", "week", "ns") else v) for k, v in x.items()} for x in d["external"]
+        ]
+        if "correlation" in d:
+            d["correlation"] = dict(d["correlation"], flags=py_attr(d["correlation"]["flags"]))
+        out[e["device"]] = d
+    return out
 
 
 class _Code(str):

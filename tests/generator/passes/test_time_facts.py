@@ -1,7 +1,7 @@
 """time_facts: the protocol file's `time` section (which fields give a packet its GPS time, its
 device clock and the GPS - UTC leap seconds), checked against the fields, parameters and flags."""
 
-from tiny_spec import PROTOCOL, build, data_set, errors
+from tiny_spec import PROTOCOL, build, command_set, data_set, errors
 
 FLAGS = """\
 bitfields:
@@ -69,6 +69,7 @@ def test_without_the_section_the_tables_are_empty(tmp_path):
         "reference_time": [],
         "external": [],
         "sync_health": [],
+        "sync": [],
     }
 
 
@@ -122,6 +123,7 @@ def test_wrong_parameters(tmp_path):
         "reference_time": [],
         "external": [],
         "sync_health": [],
+        "sync": [],
     }
 
 
@@ -228,3 +230,81 @@ def test_external_time_and_sync_health(tmp_path):
         (0x15, "bool", "synced", None),
         (0x12, "flags", None, 0b10),
     ]
+
+
+# --------------------------------------------------------------------------------- time.sync
+SYNC_TYPES = """\
+enums:
+  - name: TimeField
+    type: u8
+    title: T
+    sources: [{manual: a.txt, line: 3}]
+    values:
+      - {name: week_number, value: 1, description: d}
+      - {name: time_of_week, value: 2, description: d}
+  - name: Source
+    type: u8
+    title: S
+    sources: [{manual: a.txt, line: 3}]
+    values:
+      - {name: disabled, value: 0, description: d}
+      - {name: pin, value: 3, description: d}
+"""
+COMMANDS = (
+    "  - {id: 0x72, name: time_update, role: command, title: U, sources: [{manual: a.txt, line: 8}], params: ["
+    "{name: field_id, type: TimeField}, {name: value, type: u32}]}\n"
+    "  - {id: 0x28, name: pps_source, role: command, title: P, sources: [{manual: a.txt, line: 9}], params: ["
+    "{name: source, type: Source}]}\n"
+)
+SYNC = """\
+time:
+  sync:
+    - device: dev_a
+      update: {command: time_update, selector: field_id, value: value, week: week_number, tow: time_of_week}
+      window_ms: 500
+      pps: [input, generated]
+      pps_source: {command: pps_source, param: source, kinds: {disabled: none, pin: input}}
+      correlation: {field: sensor.gps_time, flags: flags, pps: tow_ok, refresh: week_ok, initialized: not_set}
+      sources: [{manual: a.txt, line: 8}]
+"""
+
+
+def _sync(tmp_path, text: str):
+    files = {
+        "protocol.yaml": PROTOCOL + text,
+        "sensor.yaml": data_set(FIELDS, FLAGS),
+        "base.yaml": command_set(COMMANDS, SYNC_TYPES),
+    }
+    return build(tmp_path, files, "time_facts")
+
+
+def test_sync_resolves_names_to_numbers(tmp_path):
+    ctx = _sync(tmp_path, SYNC)
+    assert errors(ctx) == []
+    (e,) = ctx.time["sync"]
+    assert e["update"] == {
+        "command": "time_update", "selector": "field_id", "value": "value", "set": 0x01, "descriptor": 0x72,
+        "week": 1, "tow": 2,
+    }  # fmt: skip
+    assert e["pps_source"]["kinds"] == {0: "none", 3: "input"}
+    assert e["external"] == []
+    assert (e["correlation"]["pps"], e["correlation"]["refresh"], e["correlation"]["initialized"]) == (1, 2, 4)
+
+
+def test_sync_errors(tmp_path):
+    # the external time's flag members are named as its parameters: tow and week are no members of
+    # TimeFlags here (tow_ok, week_ok); an enum member without a PPS kind; an unknown selector value
+    text = SYNC.replace("kinds: {disabled: none, pin: input}", "kinds: {disabled: none}").replace(
+        "tow: time_of_week}", "tow: hour}"
+    )
+    text = text.replace(
+        "      correlation:",
+        "      external: [{field: sensor.gps_time, flags: flags, tow: tow, week: week}]\n      correlation:",
+    )
+    ctx = _sync(tmp_path, text)
+    assert [e.split(": error: ")[1] for e in errors(ctx)] == [
+        "time sync: 'hour' is not a member of the selector's enum (expected an enum member)",
+        "time sync: no kind for pin (expected a kind for every member)",
+        "time sync: 'tow' is not a member of TimeFlags (expected a member of TimeFlags)",
+    ]
+    assert ctx.time["sync"] == []

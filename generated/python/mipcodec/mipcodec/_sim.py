@@ -1549,6 +1549,81 @@ ALL_SETTINGS: Tuple[Any, ...] = (
 
 DEVICE_TITLES: Dict[str, str] = {"gx5_45": "3DM-GX5-45", "cv7_ins": "3DM-CV7-GNSS/INS"}
 
+# How each device's external (GPS) time is synchronized (spec time.sync; sim/clocks.py,
+# device/timesync.py): the update command and window, the PPS kinds, the PPS source setting, the
+# sync status field, the external time fields with their flag masks, the correlation flags
+TIME_SYNC: Dict[str, Dict[str, Any]] = {
+    "cv7_ins": {
+        "window_ms": 500,
+        "pps": ["input", "receiver", "generated"],
+        "update": {
+            "command": "gps_time_update",
+            "selector": "field_id",
+            "value": "value",
+            "set": 1,
+            "descriptor": 114,
+            "week": 1,
+            "tow": 2,
+        },
+        "pps_source": {
+            "command": "pps_source",
+            "param": "source",
+            "kinds": {0: "none", 1: "receiver", 2: "receiver", 3: "input", 4: "generated"},
+        },
+        "status": {
+            "field": "system_data.time_sync_status",
+            "set": 160,
+            "descriptor": 2,
+            "synced": "time_sync",
+            "last_pps": "last_pps_rcvd",
+            "last_pps_max": 255,
+        },
+        "external": [
+            {
+                "field": "shared.gps_timestamp",
+                "set": 255,
+                "descriptor": 211,
+                "flags": "valid_flags",
+                "tow": "tow",
+                "tow_mask": 1,
+                "week": "week_number",
+                "week_mask": 2,
+            },
+            {
+                "field": "shared.external_timestamp",
+                "set": 255,
+                "descriptor": 215,
+                "flags": "valid_flags",
+                "ns": "nanoseconds",
+                "ns_mask": 1,
+            },
+        ],
+    },
+    "gx5_45": {
+        "window_ms": 500,
+        "pps": ["input", "receiver"],
+        "update": {
+            "command": "gps_time_update",
+            "selector": "field_id",
+            "value": "value",
+            "set": 1,
+            "descriptor": 114,
+            "week": 1,
+            "tow": 2,
+        },
+        "external": [],
+        "correlation": {
+            "field": "sensor.gps_timestamp",
+            "set": 128,
+            "descriptor": 18,
+            "flags": "valid_flags",
+            "pps": 1,
+            "refresh": 2,
+            "initialized": 4,
+        },
+    },
+}
+
 # The replies that list what the device supports (spec simulation descriptor_lists): reply class ->
 # (which reply: 0 the first, 1 the extended; its capacity; the list attribute), and the item class
 # (None: a u16, (set << 8) | descriptor); which capabilities lists they hold, in that order

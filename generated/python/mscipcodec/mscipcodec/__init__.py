@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "0a3d001048f6eb9c"
+SPEC_HASH = "a86d21004f49ee45"
 
 __all__ = [
     "SPEC_HASH",

@@ -124,6 +124,11 @@ ALL_SETTINGS: Tuple[Any, ...] = (imu_config.ConfigAll,)
 
 DEVICE_TITLES: Dict[str, str] = {"ms_imu3020": "MS-IMU3020"}
 
+# How each device's external (GPS) time is synchronized (spec time.sync; sim/clocks.py,
+# device/timesync.py): the update command and window, the PPS kinds, the PPS source setting, the
+# sync status field, the external time fields with their flag masks, the correlation flags
+TIME_SYNC: Dict[str, Dict[str, Any]] = {}
+
 # The replies that list what the device supports (spec simulation descriptor_lists): reply class ->
 # (which reply: 0 the first, 1 the extended; its capacity; the list attribute), and the item class
 # (None: a u16, (set << 8) | descriptor); which capabilities lists they hold, in that order

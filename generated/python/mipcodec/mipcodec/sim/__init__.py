@@ -35,6 +35,7 @@ from ..codec.packets import DecodedField, RawField, decode_packet
 from ..session import support_error
 from . import corrections as sim_corrections
 from . import status as sim_status
+from .clocks import Clocks
 from .nmea import NmeaPort
 from .status import set_of as _set_of
 from .world import GRAVITY, RADIANS, World
@@ -151,6 +152,7 @@ class Simulator:
         self.speed = float(speed)
         self.world = World(scenario, seed, _sim.FILTER.get(device))
         self.corrections = sim_corrections.Corrections(_sim.FILTER.get(device, {}), self.world)  # RTCM3 in
+        self.clocks = Clocks(self, seed)  # reference and external time, PPS, link delay (clocks.py)
         self.delay = 0.0  # seconds of simulated time the reply being built comes late
         self.idle = False  # set to idle: no streams until resume
         self._world_at: Optional[Tuple[float, Dict[str, Any]]] = None
@@ -355,6 +357,7 @@ class Simulator:
 
     def _act(self, command: Field, now: float) -> Optional[int]:
         """What a command does to the world (_sim.ACTIONS): None, or the NACK code refusing it."""
+        self.clocks.command(command, self.sim_time(now))  # a GPS Time Update sets the external time
         if type(command) in _sim.NMEA_COMMANDS:  # NMEA entries: rate limits (sim/nmea.py)
             return self.nmea.refuse(command)
         heading = _sim.FILTER.get(self.device, {}).get("heading") or {}
@@ -680,7 +683,7 @@ class Simulator:
                 fields = [d for d, dec in entries if tick % dec == 0]
                 t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
                 out.extend((t, p) for p in self._sample_packets(set_id, fields, t, tick / rate))
-        return out + self.nmea.poll(now)
+        return self.clocks.delay(out + self.nmea.poll(now), self.speed)  # --link-jitter
 
     def skip(self, now: float) -> None:
         """No host is there to read the data due by `now` (between two TCP hosts): the streams go
@@ -766,6 +769,7 @@ class Simulator:
             units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
             for attr, quantity in shows:
                 _show(value, attr, quantity, units.get(attr), world, _sim.FILTER.get(self.device, {}))
+        self.clocks.fill(value, elapsed)  # the time fields from the simulated clocks
         return value
 
 

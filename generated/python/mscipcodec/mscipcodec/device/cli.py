@@ -6,7 +6,8 @@ device from the shell.
 ADDRESS: tcp:HOST:PORT, a serial port path, or `auto` (scan the serial ports, ping each at the
 model's baud rates, list what answers). Subcommands: ping, info, stream, send, settings dump|apply|
 diff|schema, save-startup, factory-reset, record (record.py, docs/record.md: its own statuses),
-ntrip (ntrip.py, docs/rtk-and-nmea.md).
+ntrip (ntrip.py, docs/rtk-and-nmea.md),
+timesync (timesync.py, docs/timesync.md: exit 0 synced, 1 not, 2 usage).
 The options of every subcommand (--device, --baud, --timeout-ms) go before or after it.
 
 Exit status: 0 done (diff: the device matches the file); 1 the device said no or differs: a
@@ -25,6 +26,7 @@ import json
 import math
 import sys
 import time
+import types
 import typing
 from typing import Any, Dict, List, NoReturn, Optional, Sequence, Tuple, Union
 
@@ -754,6 +756,13 @@ def _enable(conn: Connection, set_id: int) -> None:
         return
 
 
+def timesync_tools() -> types.SimpleNamespace:
+    """What timesync (device/timesync.py) uses of this command line (it cannot import it back)."""
+    tools: Dict[str, Any] = dict(command_classes=_command_classes, function_value=_function_value, note=_note)
+    tools.update(enable=_enable, format_setting=_format_setting, list_item_class=_list_item_class, st=st)
+    return types.SimpleNamespace(read_base_rates=read_base_rates, trouble=Trouble, usage=Usage, **tools)
+
+
 # ------------------------------------------------------------------------------------ auto
 def scan(ports: Optional[Sequence[str]], model: Optional[str], timeout_ms: int) -> int:
     """Ping every serial port at the models' baud rates; one line per device that answers."""
@@ -862,6 +871,15 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--split-size", type=float, default=0, metavar="BYTES", help="a new file once one holds BYTES")
     r.add_argument("--split-time", type=float, default=0.0, metavar="S", help="a new file every S seconds")
     ntrip_parser(sub, common)  # ntrip.py
+    # timesync: device/timesync.py, docs/timesync.md
+    t = sub.add_parser(
+        "timesync", parents=[common], help="set up time synchronization and monitor it (docs/timesync.md)"
+    )
+    t.add_argument("--duration", type=float, default=30.0, help="seconds (default 30)")
+    t.add_argument("--json", action="store_true", help="one JSON object a line")
+    t.add_argument(
+        "--pps-source", metavar="NAME", help="models with a PPS source setting: the source (default: a receiver)"
+    )
     sub.add_parser("save-startup", parents=[common], help="save the current settings as startup settings")
     sub.add_parser("factory-reset", parents=[common], help="load the factory default settings")
     return p
@@ -919,6 +937,11 @@ def _main(args: argparse.Namespace) -> int:
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":
             return SETTINGS[args.action](conn, args)
+        if args.subcommand == "timesync":  # device/timesync.py
+            from .timesync import TimeSync, check_duration
+
+            check_duration(args.duration)
+            return TimeSync(conn, args.pps_source, args.json, _say, tools=timesync_tools()).run(args.duration)
         return COMMANDS[args.subcommand](conn, args)
     except Usage as e:
         print(f"{PROG}: {e}", file=sys.stderr)

@@ -107,6 +107,27 @@ def _parser() -> argparse.ArgumentParser:
         default=1.0,
         help=f"simulated seconds per real second, {SPEED_RANGE[0]:g} to {SPEED_RANGE[1]:g} (default 1)",
     )
+    # the simulated clocks (clocks.py, docs/timesync.md)
+    p.add_argument(
+        "--clock-drift",
+        type=float,
+        default=0.0,
+        metavar="PPM",
+        help=f"the device's reference clock runs fast by PPM against true time (|PPM| <= {MAX_DRIFT_PPM:g}; default 0)",
+    )
+    p.add_argument(
+        "--link-jitter",
+        type=float,
+        default=0.0,
+        metavar="MS",
+        help=f"each data packet waits a random 0 to MS ms of simulated time before it is sent, in order "
+        f"(0 to {MAX_JITTER_MS:g}; default 0)",
+    )
+    p.add_argument(
+        "--pps-input",
+        action="store_true",
+        help="a PPS is applied to the device's PPS pin (CV7: its GPIO, with PPS source gpio; GX5-45: pin 7)",
+    )
     for flag, item in IDENTITY_FLAGS.items():
         p.add_argument(
             f"--{flag}", metavar="VALUE", help=f"the {item.replace('_', ' ')} the device reports (default: the spec's)"
@@ -142,6 +163,18 @@ def _outage(text: str, option: str = "--gnss-outage") -> Tuple[float, float]:
     return a, b
 
 
+MAX_DRIFT_PPM = 10000.0
+MAX_JITTER_MS = 1000.0
+
+
+def _clock_options(drift: float, jitter: float) -> None:
+    """--clock-drift and --link-jitter: finite, in range (ValueError names it)."""
+    if not (math.isfinite(drift) and abs(drift) <= MAX_DRIFT_PPM):
+        raise ValueError(f"--clock-drift {drift:g}: expected ppm from -{MAX_DRIFT_PPM:g} to {MAX_DRIFT_PPM:g}")
+    if not (math.isfinite(jitter) and 0 <= jitter <= MAX_JITTER_MS):
+        raise ValueError(f"--link-jitter {jitter:g}: expected milliseconds from 0 to {MAX_JITTER_MS:g}")
+
+
 def _replay_file(path: str, fast: bool) -> List[Tuple[float, bytes]]:
     """The packets of --replay FILE, read no further than MAX_REPLAY_BYTES (a larger file, or an
     endless one such as /dev/zero, is refused)."""
@@ -175,6 +208,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     args = parser.parse_args(argv)
     try:
         check_speed(args.speed)
+        _clock_options(args.clock_drift, args.link_jitter)
         faults = [Fault.parse(kind, text) for kind in FAULT_KINDS for text in getattr(args, kind)]
         outages = [_outage(text) for text in args.gnss_outage]
         disturbances = [_outage(text, "--mag-disturbance") for text in args.mag_disturbance]
@@ -206,6 +240,8 @@ def main(argv: Optional[List[str]] = None) -> int:
                 stream_full=args.stream_full,
             )
             sim.world.gnss_outages.extend(outages)
+            sim.clocks.drift_ppm, sim.clocks.jitter_ms = args.clock_drift, args.link_jitter
+            sim.clocks.pps_input = args.pps_input
             sim.world.mag_disturbances.extend(disturbances)
             sim.world.rtk_corrections.extend(corrections)
             if args.start_utc is not None:

@@ -145,8 +145,9 @@ def fill(sim: Any, value: Any) -> None:
     if roles.get("bytes"):
         values[roles["bytes"]["written"]] = c.written
         values[roles["bytes"]["read"]] = c.read
-    if roles.get("pps"):  # one pulse at each whole second while the receiver has a fix
-        pps = c.of("pps", 1.0, has_fix)
+    if roles.get("pps"):  # one pulse at each whole second while a PPS is present
+        clocks = getattr(sim, "clocks", None)  # a PPS present (clocks.py), else the receiver's fix
+        pps = c.of("pps", 1.0, (lambda s: bool(clocks.pps_kind_at(s))) if clocks is not None else has_fix)
         pps.advance(t)
         values[roles["pps"]["count"]] = pps.count
         values[roles["pps"]["last"]] = pps.last_ms()

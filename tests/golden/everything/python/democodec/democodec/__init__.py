@@ -98,7 +98,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "bafb968d0470baea"
+SPEC_HASH = "2e50ffb2c2f49eaf"
 
 __all__ = [
     "SPEC_HASH",
