@@ -88,7 +88,7 @@ def virtual_run(device: str, seconds: float, *, drift=0.0, jitter=0.0, pps_input
     lines: list = []
     gps0 = 1_451_865_600.0  # the host's GPS time at the start (any: the updates label edges with it)
     ts = timesync.TimeSync(
-        conn, source, True, lines.append, gps_now=lambda: gps0 + link.now, tools=cli.timesync_tools()
+        conn, source, True, lines.append, gps_now=lambda: gps0 + link.now, tools=cli.subcommand_tools()
     )
     code = ts.run(seconds)
     return code, [json.loads(x) for x in lines], sim

@@ -756,8 +756,9 @@ def _enable(conn: Connection, set_id: int) -> None:
         return
 
 
-def timesync_tools() -> types.SimpleNamespace:
-    """What timesync (device/timesync.py) uses of this command line (it cannot import it back)."""
+def subcommand_tools() -> types.SimpleNamespace:
+    """What the subcommands in their own modules (timesync.py, ntrip.py) use of this command line
+    (they cannot import it back: no import circle, no private names across modules)."""
     tools: Dict[str, Any] = dict(command_classes=_command_classes, function_value=_function_value, note=_note)
     tools.update(enable=_enable, format_setting=_format_setting, list_item_class=_list_item_class, st=st)
     return types.SimpleNamespace(read_base_rates=read_base_rates, trouble=Trouble, usage=Usage, **tools)
@@ -932,7 +933,9 @@ def _main(args: argparse.Namespace) -> int:
         if args.subcommand == "ntrip":  # corrections from a caster (ntrip.py: connects when it needs the device)
             from . import ntrip
 
-            return ntrip.main(args, lambda: connect(args.address, args.model, args.baud, args.timeout_ms))
+            return ntrip.main(
+                args, lambda: connect(args.address, args.model, args.baud, args.timeout_ms), subcommand_tools()
+            )
         precheck_apply(args)  # with --device: refused before any byte is sent
         conn = connect(args.address, args.model, args.baud, args.timeout_ms)
         if args.subcommand == "settings":
@@ -941,7 +944,7 @@ def _main(args: argparse.Namespace) -> int:
             from .timesync import TimeSync, check_duration
 
             check_duration(args.duration)
-            return TimeSync(conn, args.pps_source, args.json, _say, tools=timesync_tools()).run(args.duration)
+            return TimeSync(conn, args.pps_source, args.json, _say, tools=subcommand_tools()).run(args.duration)
         return COMMANDS[args.subcommand](conn, args)
     except Usage as e:
         print(f"{PROG}: {e}", file=sys.stderr)

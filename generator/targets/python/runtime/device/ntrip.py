@@ -437,11 +437,11 @@ def _sourcetable(client: Client, out: Any, deadline: float, first: bytes) -> int
     return 0
 
 
-def _position_format(conn: Any) -> Optional[Tuple[Any, Dict[str, Any], Any, int]]:
+def _position_format(conn: Any, tools: Any) -> Optional[Tuple[Any, Dict[str, Any], Any, int]]:
     """(setting, its key, the command setting the format at 1 Hz, set) for the model's first data
-    set with LLH position and fix information and a message format (None: none)."""
+    set with LLH position and fix information and a message format (None: none); `tools`: the
+    command line's helpers (device/cli.py `subcommand_tools`)."""
     from .. import _sim, capabilities, registry
-    from . import cli
     from . import settings as st
 
     model = capabilities.MODELS.get(conn.model)
@@ -455,16 +455,16 @@ def _position_format(conn: Any) -> Optional[Tuple[Any, Dict[str, Any], Any, int]
                     names[cls.NAME] = d
         if "llh_position" not in names or "fix_info" not in names:
             continue
-        found = cli._format_setting(conn.model, set_id)
+        found = tools.format_setting(conn.model, set_id)
         if found is None:
             continue
         s, key = found
-        hz = cli.read_base_rates(conn).get(set_id)
+        hz = tools.read_base_rates(conn).get(set_id)
         if not hz:
             continue
         decimation = max(1, round(hz))
         spec = _sim.FORMATS[s.cls]
-        item = cli._list_item_class(s)
+        item = tools.list_item_class(s)
         wanted = [names["llh_position"], names["fix_info"]]
         items = [item(**{spec[2]: d, spec[3]: decimation}) for d in wanted]
         previous = st.read_entry(conn.device, s, key)
@@ -473,9 +473,10 @@ def _position_format(conn: Any) -> Optional[Tuple[Any, Dict[str, Any], Any, int]
     return None
 
 
-def main(args: Any, connect: Callable[[], Any]) -> int:
+def main(args: Any, connect: Callable[[], Any], tools: Any) -> int:
     """The `ntrip` subcommand (device/cli.py): its options checked, then `connect()` (the device's
-    Connection; cli's own errors pass through) unless only the sourcetable is asked for."""
+    Connection; cli's own errors pass through) unless only the sourcetable is asked for; `tools`:
+    the command line's helpers (device/cli.py `subcommand_tools`)."""
     try:
         target = parse_url(args.url)
         if args.gga_interval < 0 or not math.isfinite(args.gga_interval):
@@ -496,7 +497,7 @@ def main(args: Any, connect: Callable[[], Any]) -> int:
                 client.close()
         conn = connect()
         try:
-            return run(conn, target, args.gga_interval, end, start, args.retries)
+            return run(conn, target, args.gga_interval, end, start, args.retries, tools)
         except (OSError, SessionError) as e:  # the device went away or said no
             raise Refused(f"{conn.address}: {getattr(e, 'strerror', None) or e}") from None
         finally:
@@ -511,15 +512,14 @@ def main(args: Any, connect: Callable[[], Any]) -> int:
         return 0
 
 
-def run(conn: Any, target: Target, gga_interval: float, end: float, start: float, retries: int) -> int:
+def run(conn: Any, target: Target, gga_interval: float, end: float, start: float, retries: int, tools: Any) -> int:
     """Stream the mountpoint into the open device (a device/cli.py Connection) until `end`."""
-    from . import cli
     from . import settings as st
 
     device = conn.device
     client = Client(target, device.transport.write)
     pos = Position()
-    fmt = _position_format(conn)
+    fmt = _position_format(conn, tools)
     if fmt is None:
         _note(f"{conn.model}: no data set with LLH position and fix information: no GGA, no fix type")
 
@@ -538,7 +538,7 @@ def run(conn: Any, target: Target, gga_interval: float, end: float, start: float
     device.on_packet(on_packet)
     if fmt is not None:
         device.call(fmt[2])
-        cli._enable(conn, fmt[3])
+        tools.enable(conn, fmt[3])
     try:
         return _stream(client, device, pos, gga_interval, end, start, retries)
     except KeyboardInterrupt:
