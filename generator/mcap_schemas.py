@@ -1,8 +1,8 @@
 """JSON Schemas of the data fields as JSON messages (the MCAP export's `<protocol>/<set>/<field>`
 topics; docs/mcap.md), computed from the IR alone (the same columns as generator/columns.py).
 
-A field's JSON message is an object: `t_ns` (UTC ns, null when unknown), `offset` (the packet's
-offset in the log), then the field's values nested as its column paths are (a parameter, an
+A field's JSON message is an object: `t_ns` (UTC ns, null when unknown), `log_offset` (the
+packet's offset in the log), then the field's values nested as its column paths are (a parameter, an
 element of a fixed array, a member of a struct): `scaled_accel` is `[x, y, z]`,
 `gps_timestamp` is `{"tow": .., "week_number": .., "valid_flags": ..}`. The leaves are the CSV
 export's cells: numbers (null for NaN or infinity, which JSON cannot hold), integers, booleans,
@@ -17,6 +17,7 @@ import json
 from generator import columns
 
 DRAFT = "http://json-schema.org/draft-07/schema#"
+ENVELOPE = ("t_ns", "log_offset")  # the message's own keys before the field's parameters
 
 
 def _leaf(c: columns.Column, enums: dict) -> dict:
@@ -72,6 +73,9 @@ def layout_schema(proto: dict, field: dict, variant: dict, set_name: str, attr=l
         path = tuple(x if isinstance(x, int) else attr(x) for x in c.path)
         _insert(tree, path, {"\0leaf": _leaf(c, enums)})
     body = _render(tree)
+    clash = set(body["properties"]) & set(ENVELOPE)
+    if clash:
+        raise ValueError(f"{set_name}.{field['name']}: parameter {sorted(clash)[0]!r} is a key of the message's envelope")
     device = f" ({variant['device']})" if variant.get("device") else ""
     schema = {
         "$schema": DRAFT,
@@ -84,10 +88,10 @@ def layout_schema(proto: dict, field: dict, variant: dict, set_name: str, attr=l
                 "description": "UTC time of the packet in ns since the Unix epoch (the time model); null when unknown",
                 "units": "ns",
             },
-            "offset": {"type": "integer", "description": "the packet's offset in the log [bytes]"},
+            "log_offset": {"type": "integer", "description": "the packet's offset in the log [bytes]"},
             **body["properties"],
         },
-        "required": ["t_ns", "offset", *body["required"]],
+        "required": ["t_ns", "log_offset", *body["required"]],
         "additionalProperties": False,
     }
     return schema

@@ -106,7 +106,7 @@ def _put(obj: Any, path: Tuple[Any, ...], value: Any) -> None:
 
 def json_message(specs: Any, cells: List[Any], t_ns: Optional[int], offset: int) -> Dict[str, Any]:
     """The JSON message of one decoded field (docs/mcap.md; its schema: `_mcap_schemas`)."""
-    out: Dict[str, Any] = {"t_ns": t_ns, "offset": offset}
+    out: Dict[str, Any] = {"t_ns": t_ns, "log_offset": offset}
     for (_name, path, _units, kind, _enum), cell in zip(specs, cells):
         _put(out, tuple(path), _cell(kind, cell))
     return out
