@@ -1,0 +1,309 @@
+"""MCAP files with ROS 2 messages and JSON schemas (issue 54; runtime logs/mcap.py, logs/ros.py,
+device/record_mcap.py; docs/mcap.md), read back with readers independent of the writer: the
+`mcap` library's reader and `mcap-ros2-support`'s ROS 2 decoder, which parses the files' own
+`ros2msg` schema text and decodes the CDR bytes by it.
+
+Logs: a small simulated fleet (docs/fleet.md: a 3DM-GX5-45 and a 3DM-CV7-GNSS/INS, 10 s each, the
+level circle), and a live recording of the simulated CV7. Expected values come from the CSV export
+of the same log (the issue: "the values equal the CSV export's"), the spec's units (g to m/s^2 by
+the standard 9.80665, gauss to tesla by 1e-4) and REP-103's axes (y and z negated), and from
+reasoning written beside each check; never from the writer under test.
+"""
+
+from __future__ import annotations
+
+import csv
+import importlib
+import json
+import math
+import os
+import statistics
+import struct
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.conformance.test_device_cli import Sim
+from tests.helpers.generated import GENERATED_PYTHON, python_package
+
+pkg = python_package("mipcodec")
+fleet = importlib.import_module("mipcodec.fleet")
+columns = importlib.import_module("mipcodec._columns")
+ros = importlib.import_module("mipcodec.logs.ros")
+
+GENERATED = str(GENERATED_PYTHON / "mipcodec")
+SECONDS = 10
+G = 9.80665  # m/s^2 per g: the CGPM's standard gravity (the spec's accelerations are in g)
+SERIALS = {"gx5_45": "6232-10100", "cv7_ins": "6284.170401"}  # the fleet's (docs/fleet.md), seed 3
+
+
+def tool(*args: str, cwd=None) -> subprocess.CompletedProcess:
+    """python -m mipcodec ARGS (the pure-Python package: the MCAP export takes the packet path)."""
+    path = os.pathsep.join(p for p in (GENERATED, os.environ.get("PYTHONPATH")) if p)
+    env = dict(os.environ, PYTHONPATH=path)
+    return subprocess.run([sys.executable, "-m", "mipcodec", *args], env=env, capture_output=True, text=True, cwd=cwd)
+
+
+def rows(path: Path) -> list:
+    with path.open(newline="", encoding="utf-8") as fh:
+        return list(csv.DictReader(fh))
+
+
+@pytest.fixture(scope="module")
+def made(tmp_path_factory) -> dict:
+    """model -> (log, its MCAP file, its CSV tables' directory)."""
+    out = tmp_path_factory.mktemp("fleet")
+    fleet.generate(str(out), devices=2, hours=SECONDS / 3600, seed=3)
+    manifest = json.loads((out / "fleet.json").read_text())
+    found = {}
+    for d in manifest["devices"]:
+        log = out / d["log"]
+        mcap_file = out / f"{d['model']}.mcap"
+        run = tool("export", str(log), "--format", "mcap", "--out", str(mcap_file))
+        assert run.returncode == 0, run.stderr
+        run = tool("export", str(log), "--out", str(out / d["model"]))
+        assert run.returncode == 0, run.stderr
+        found[d["model"]] = (log, mcap_file, out / d["model"])
+    return found
+
+
+def read(path: Path):
+    """(summary, [(channel, schema, message, decoded or None)]) in file order."""
+    reader_mod = importlib.import_module("mcap.reader")
+    decoder = importlib.import_module("mcap_ros2.decoder")
+    with path.open("rb") as fh:
+        reader = reader_mod.make_reader(fh)
+        summary = reader.get_summary()
+        metadata = {m.name: dict(m.metadata) for m in reader.iter_metadata()}
+    factory = decoder.DecoderFactory()
+    decoders: dict = {}
+    with path.open("rb") as fh:
+        out = []
+        for schema, channel, message in reader_mod.make_reader(fh).iter_messages(log_time_order=False):
+            decoded = None
+            if channel.message_encoding == "cdr":
+                if schema.id not in decoders:
+                    decoders[schema.id] = factory.decoder_for("cdr", schema)
+                decoded = decoders[schema.id](message.data)
+            out.append((channel, schema, message, decoded))
+    return summary, metadata, out
+
+
+def check_file(path: Path) -> dict:
+    """The checks every MCAP file passes; returns topic -> [(message, decoded or JSON)]."""
+    jsonschema = importlib.import_module("jsonschema")
+    summary, metadata, messages = read(path)
+    # chunked, compressed, indexed (the summary's chunk and message indexes)
+    assert summary.chunk_indexes and {c.compression for c in summary.chunk_indexes} == {"zstd"}
+    assert all(c.message_index_offsets for c in summary.chunk_indexes)
+    assert summary.statistics.message_count == len(messages)
+    assert metadata["protocol"]["spec_hash"] == pkg.SPEC_HASH
+    by_topic: dict = {}
+    validators: dict = {}
+    last: dict = {}
+    for channel, schema, message, decoded in messages:
+        assert message.publish_time == message.log_time
+        assert message.log_time >= last.get(channel.topic, 0), channel.topic  # never decreasing on a channel
+        last[channel.topic] = message.log_time
+        if channel.message_encoding == "json":
+            assert schema.encoding == "jsonschema" and channel.topic.startswith("/mip/")
+            v = validators.get(schema.id)
+            if v is None:
+                body = json.loads(schema.data)
+                jsonschema.Draft7Validator.check_schema(body)
+                v = validators[schema.id] = jsonschema.Draft7Validator(body)
+            value = json.loads(message.data)
+            errors = [e.message for e in v.iter_errors(value)]
+            assert not errors, (channel.topic, errors[:3])
+            by_topic.setdefault(channel.topic, []).append((message, value))
+        else:
+            assert (channel.message_encoding, schema.encoding) == ("cdr", "ros2msg")
+            assert message.data[:4] == b"\x00\x01\x00\x00"  # CDR little endian, no options
+            by_topic.setdefault(channel.topic, []).append((message, decoded))
+    by_topic["_metadata"] = metadata
+    return by_topic
+
+
+def utc_span(tables: Path) -> tuple:
+    times = [int(r["t_ns"]) for p in tables.iterdir() for r in rows(p) if r["t_ns"]]
+    return min(times), max(times)
+
+
+@pytest.mark.parametrize("model", ["gx5_45", "cv7_ins"])
+def test_ros_messages_of_each_device(made, model):
+    log, path, tables = made[model]
+    got = check_file(path)
+    meta = got["_metadata"]["device"]
+    assert (meta["device"], meta["serial"], meta["source"]) == (model, SERIALS[model], "reply")
+    lo, hi = utc_span(tables)
+    for topic, msgs in got.items():
+        if topic != "_metadata":
+            assert all(lo <= m.log_time <= hi for m, _v in msgs), topic  # inside the log's UTC span
+    # one Imu per accel+gyro sample with a known time (both fields in each sensor packet: the
+    # CSV tables have the same offsets), its values the CSV's in m/s^2 and REP-103 axes
+    accel = [r for r in rows(tables / "sensor.scaled_accel.csv") if r["t_ns"]]
+    gyro = {r["offset"]: r for r in rows(tables / "sensor.scaled_gyro.csv")}
+    imu = [d for _m, d in got["/imu/data"]]
+    assert len(imu) == len(accel) > 0
+    for r, d in zip(accel, imu):
+        assert d.header.stamp.sec * 10**9 + d.header.stamp.nanosec == int(r["t_ns"])
+        la = d.linear_acceleration
+        assert (la.x, la.y, la.z) == pytest.approx(
+            (float(r["scaled_accel.x [g]"]) * G, -float(r["scaled_accel.y [g]"]) * G, -float(r["scaled_accel.z [g]"]) * G),
+            rel=1e-6,
+        )
+        g = gyro[r["offset"]]
+        av = d.angular_velocity
+        assert (av.x, av.y, av.z) == pytest.approx(
+            (float(g["scaled_gyro.x [rad/s]"]), -float(g["scaled_gyro.y [rad/s]"]), -float(g["scaled_gyro.z [rad/s]"])),
+            rel=1e-6,
+        )
+        assert d.orientation_covariance[0] == -1  # no filter attitude in a sensor packet
+    # on the level circle the specific force is 1 g up: +9.8 m/s^2 on ROS's z (up)
+    assert statistics.mean(d.linear_acceleration.z for d in imu) == pytest.approx(G, abs=0.1)
+    frame = "imu_link" if model == "gx5_45" else "base_link"  # the spec's frames: sensor / vehicle
+    assert {d.header.frame_id for d in imu} == {frame}
+    if model == "gx5_45":  # GNSS position: the GX5-45's gnss_data set
+        fixes = [d for _m, d in got["/gnss_data/fix"]]
+        llh = [r for r in rows(tables / "gnss_data.llh_position.csv") if r["t_ns"]]
+        assert len(fixes) == len(llh) > 0
+        for r, d in zip(llh, fixes):
+            assert -90 <= d.latitude <= 90 and -180 <= d.longitude <= 180
+            assert (d.latitude, d.longitude, d.altitude) == (
+                float(r["llh_position.latitude [deg]"]),
+                float(r["llh_position.longitude [deg]"]),
+                float(r["llh_position.ellipsoid_height [m]"]),
+            )
+            h = float(r["llh_position.horizontal_accuracy [m]"])
+            assert d.position_covariance[0] == pytest.approx(h * h) and d.position_covariance_type == 1
+    odometry = [d for _m, d in got["/odometry/filtered"]]
+    assert odometry and odometry[0].header.frame_id == "odom" and odometry[0].child_frame_id == "base_link"
+    first = odometry[0].pose.pose.position
+    assert (first.x, first.y, first.z) == (0.0, 0.0, 0.0)  # the odom frame's origin: the first position
+
+
+# column name -> (its path in the decoded value, its kind): the JSON message nests by the path
+PATHS = {name: (path, kind) for specs in columns.COLUMNS.values() for name, path, _u, kind, _e in specs}
+
+
+def same(leaf, cell: str, kind: str) -> bool:
+    """A JSON leaf and its CSV cell hold the same value (JSON has null for an absent value, NaN
+    and infinities; a `json` column is JSON text in the CSV)."""
+    if leaf is None:
+        return cell.lower() in ("", "nan", "inf", "-inf")
+    if kind == "json":
+        return json.loads(cell) == leaf
+    if kind in ("float32", "float64"):
+        return leaf == float(cell)
+    if kind == "bool":
+        return cell.lower() in (("true", "1") if leaf else ("false", "0"))
+    return str(leaf) == cell
+
+
+@pytest.mark.parametrize("model", ["gx5_45", "cv7_ins"])
+def test_json_messages_equal_the_csv(made, model):
+    """Every CSV table's rows are the messages of its topic, value for value (the CSV cell as
+    text, the JSON leaf at the column's path)."""
+    log, path, tables = made[model]
+    got = check_file(path)
+    compared = 0
+    for table in sorted(tables.iterdir()):
+        parts = table.stem.split(".")
+        if parts[-1] in ("gx5_45", "cv7_ins"):
+            parts = parts[:-1]
+        topic = "/mip/" + "/".join(parts)
+        msgs = [v for _m, v in got[topic]]
+        table_rows = rows(table)
+        assert len(msgs) == len(table_rows), topic
+        for r, v in zip(table_rows, msgs):
+            assert str(v["log_offset"]) == r["offset"]
+            assert ("" if v["t_ns"] is None else str(v["t_ns"])) == r["t_ns"]
+            for header, cell in r.items():
+                if header in ("t_ns", "time", "offset"):
+                    continue
+                path, kind = PATHS[header.split(" [")[0]]
+                leaf = v
+                for step in path:
+                    leaf = leaf[step]
+                assert same(leaf, cell, kind), (topic, header, leaf, cell)
+                compared += 1
+    assert compared > 10000
+
+
+def test_live_recording_of_the_simulator(tmp_path):
+    """`device ADDRESS record FILE.mcap` of the simulated CV7: a whole MCAP file (no temporary
+    file left), read back as above, naming the simulator's serial."""
+    serial = "6284.515151"
+    target = tmp_path / "live.mcap"
+    with Sim("cv7_ins", "tcp:127.0.0.1:0", "--stream-full", "--speed", "1", "--serial", serial) as sim:
+        run = tool("device", sim.address, "record", str(target), "--duration", "1.5")
+    assert run.returncode == 0 and "Traceback" not in run.stderr, run.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["live.mcap"]
+    got = check_file(target)
+    assert got["_metadata"]["device"]["serial"] == serial
+    timed = [v for _m, v in got["/mip/sensor/scaled_accel"] if v["t_ns"] is not None]
+    imu = [d for _m, d in got["/imu/data"]]
+    assert len(imu) == len(timed) > 50
+    assert statistics.mean(d.linear_acceleration.z for d in imu) == pytest.approx(G, abs=0.5)
+    fixes = [d for topic in ("/gnss_receiver_1/fix", "/gnss_receiver_2/fix") for _m, d in got.get(topic, [])]
+    assert fixes and all(-90 <= d.latitude <= 90 and -180 <= d.longitude <= 180 for d in fixes)
+    assert target.stat().st_size > 0 and not run.stdout
+
+
+def test_missing_mcap_is_one_line(tmp_path, made):
+    """Without the `mcap` library: one line naming it and the extra, exit 2, nothing written."""
+    blocker = tmp_path / "block"
+    blocker.mkdir()
+    (blocker / "mcap.py").write_text("raise ImportError('No module named mcap', name='mcap')\n")
+    log, _path, _tables = made["gx5_45"]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join((str(blocker), GENERATED)))
+    out = tmp_path / "x.mcap"
+    run = subprocess.run(
+        [sys.executable, "-m", "mipcodec", "export", str(log), "--format", "mcap", "--out", str(out)],
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert "mcap is not installed: pip install 'mipcodec[mcap]'" in run.stderr
+    assert not out.exists()
+
+
+# ------------------------------------------------------------------------------ the rules
+def test_cdr_bytes_follow_the_rules():
+    """TimeReference from the CDR rules (module docstring of ros.py): header 00 01 00 00; int32
+    sec, uint32 nanosec; frame_id "gnss" as uint32 5 + b"gnss\\0"; the next Time's int32 aligned
+    to 4 (3 bytes of padding after 17 bytes); source "gps" as uint32 4 + b"gps\\0"."""
+    msg = {"header": {"stamp": {"sec": 7, "nanosec": 9}, "frame_id": "gnss"}, "time_ref": {"sec": 1, "nanosec": 2}}
+    data = ros.encode("sensor_msgs/TimeReference", {**msg, "source": "gps"})
+    want = (
+        b"\x00\x01\x00\x00"
+        + struct.pack("<iI", 7, 9)
+        + struct.pack("<I", 5)
+        + b"gnss\x00"
+        + b"\x00\x00\x00"
+        + struct.pack("<iI", 1, 2)
+        + struct.pack("<I", 4)
+        + b"gps\x00"
+    )
+    assert data == want
+    # a float64 after a 4-byte value is aligned to 8 from the end of the header
+    w = ros.Cdr()
+    w.primitive("uint32", 1)
+    w.primitive("float64", 2.0)
+    assert w.bytes() == b"\x00\x01\x00\x00" + struct.pack("<I", 1) + b"\x00" * 4 + struct.pack("<d", 2.0)
+
+
+def test_attitude_in_enu():
+    """A vehicle facing east (MIP yaw +90 deg: q = (cos 45, 0, 0, sin 45) in NED) faces ROS's x
+    (east): the identity; facing north (MIP yaw 0: the identity) is ROS yaw +90 deg about up."""
+    c = math.cos(math.pi / 4)
+    east = ros.enu_orientation((c, 0.0, 0.0, c))
+    assert (east["w"], east["x"], east["y"], east["z"]) == pytest.approx((1, 0, 0, 0), abs=1e-12)
+    north = ros.enu_orientation((1.0, 0.0, 0.0, 0.0))
+    assert (north["w"], north["x"], north["y"], north["z"]) == pytest.approx((c, 0, 0, c), abs=1e-12)
+    # 1 m/s north seen from a vehicle facing east: to its left (FLU +y)
+    v = ros.rotate_to_body((c, 0.0, 0.0, c), (1.0, 0.0, 0.0))
+    assert (v["x"], v["y"], v["z"]) == pytest.approx((0, 1, 0), abs=1e-12)
