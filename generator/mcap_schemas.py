@@ -75,7 +75,9 @@ def layout_schema(proto: dict, field: dict, variant: dict, set_name: str, attr=l
     body = _render(tree)
     clash = set(body["properties"]) & set(ENVELOPE)
     if clash:
-        raise ValueError(f"{set_name}.{field['name']}: parameter {sorted(clash)[0]!r} is a key of the message's envelope")
+        raise ValueError(
+            f"{set_name}.{field['name']}: parameter {sorted(clash)[0]!r} is a key of the message's envelope"
+        )
     device = f" ({variant['device']})" if variant.get("device") else ""
     schema = {
         "$schema": DRAFT,

@@ -274,7 +274,10 @@ EXTRAS = {
         '`{package} query DATASET "SQL"` with DuckDB (pytz: its timestamps with a time zone)',
         ("duckdb", "pytz"),
     ),
-    "mcap": ("`{package} export --format mcap` and `{package}-device ADDRESS record FILE.mcap` (MCAP, ROS 2 messages)", ("mcap",)),
+    "mcap": (
+        "`{package} export --format mcap` and `{package}-device ADDRESS record FILE.mcap` (MCAP, ROS 2 messages)",
+        ("mcap",),
+    ),
     "spark": (
         "the Spark job (`python -m {package}.spark`; Java 17 or 21): pyspark, pandas (its mapInArrow needs it)"
         " and the libraries of the dataset functions it drives",
