@@ -50,7 +50,7 @@ def record_mcap(
     split_size: float = 0,
     split_time: float = 0.0,
 ) -> int:
-    from .._extras import missing
+    from .._extras import need
     from ..logs import mcap, ros
     from ..logs.writers import Outputs, ToolError
     from .record import TROUBLE, record
@@ -59,9 +59,9 @@ def record_mcap(
         _note("record: --split-size and --split-time write raw logs, not FILE.mcap")
         return TROUBLE
     try:
-        __import__("mcap.writer")
-    except ImportError:
-        _note(f"record: {missing('mcap', 'mcap')}")
+        need("mcap.writer", "mcap")
+    except ImportError as e:  # one line naming the library and the extra
+        _note(f"record: {e}")
         return TROUBLE
     if os.path.lexists(path):
         _note(f"cannot create {path}: exists")
