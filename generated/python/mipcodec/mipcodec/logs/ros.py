@@ -30,6 +30,7 @@ STANDARD_GRAVITY = 9.80665  # m/s^2 per g (the CGPM's standard value; the spec's
 TO_SI: Dict[str, float] = {
     "g": STANDARD_GRAVITY,
     "rad/s": 1.0,
+    "deg/s": math.pi / 180,
     "rad": 1.0,
     "gauss": 1e-4,  # tesla per gauss
     "deg": 1.0,  # NavSatFix keeps degrees
@@ -328,6 +329,13 @@ class Values:
             raise ValueError(f"{name}: no conversion of {units!r} to SI units")
         return float(self.cells[name]) * (TO_SI[units] if units else 1.0)
 
+    def find(self, role: str) -> Optional[str]:
+        """The column prefix of a vector `role` (VECTORS) this packet holds, else None."""
+        for prefix in VECTORS[role]:
+            if self.has(f"{prefix}.x", f"{prefix}.y", f"{prefix}.z"):
+                return prefix
+        return None
+
     def vec(self, prefix: str, parts: Sequence[str] = ("x", "y", "z")) -> List[float]:
         return [self.si(f"{prefix}.{p}") for p in parts]
 
@@ -363,6 +371,14 @@ class Topics:
         return self.frames["vehicle" if spec_frame == "vehicle" else "sensor"]
 
 
+# The body-frame vectors of the messages: role -> the column prefixes that hold it (the MIP
+# packages' `scaled_accel.x`, the MS-CIP packages' `scaled_accel.accel.x`; the spec's units)
+VECTORS: Dict[str, Tuple[str, ...]] = {
+    "accel": ("scaled_accel", "scaled_accel.accel"),
+    "gyro": ("scaled_gyro", "scaled_gyro.gyro"),
+    "mag": ("scaled_mag", "scaled_mag.mag"),
+}
+
 # MIP GNSS fix type names (the spec's enums) -> NavSatStatus.status
 FIX_STATUS = {
     "fix_3d": 0,
@@ -395,7 +411,8 @@ class Mapper:
         return out
 
     def imu(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
-        if not v.has("scaled_accel.x", "scaled_gyro.x"):
+        accel, gyro = v.find("accel"), v.find("gyro")
+        if accel is None or gyro is None:
             return None
         covariance_unknown = [0.0] * 9
         if v.has("attitude_quaternion.q.w"):
@@ -403,24 +420,25 @@ class Mapper:
             orientation_cov = [0.0] * 9
         else:
             orientation = {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}
-            orientation_cov = [-1.0] + [0.0] * 8  # REP-145 / sensor_msgs: no orientation
+            orientation_cov = [-1.0] + [0.0] * 8  # sensor_msgs/Imu: no orientation estimate
         msg = {
-            "header": header(t_ns, self.topics.frame_id(v.frame("scaled_accel.x", self.device))),
+            "header": header(t_ns, self.topics.frame_id(v.frame(f"{accel}.x", self.device))),
             "orientation": orientation,
             "orientation_covariance": orientation_cov,
-            "angular_velocity": flu(v.vec("scaled_gyro")),
+            "angular_velocity": flu(v.vec(gyro)),
             "angular_velocity_covariance": covariance_unknown,
-            "linear_acceleration": flu(v.vec("scaled_accel")),
+            "linear_acceleration": flu(v.vec(accel)),
             "linear_acceleration_covariance": covariance_unknown,
         }
         return self.topics.topic("imu/data"), "sensor_msgs/Imu", msg
 
     def mag(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
-        if not v.has("scaled_mag.x"):
+        mag = v.find("mag")
+        if mag is None:
             return None
         msg = {
-            "header": header(t_ns, self.topics.frame_id(v.frame("scaled_mag.x", self.device))),
-            "magnetic_field": flu(v.vec("scaled_mag")),
+            "header": header(t_ns, self.topics.frame_id(v.frame(f"{mag}.x", self.device))),
+            "magnetic_field": flu(v.vec(mag)),
             "magnetic_field_covariance": [0.0] * 9,
         }
         return self.topics.topic("imu/mag"), "sensor_msgs/MagneticField", msg
