@@ -17,6 +17,7 @@ import importlib
 import json
 import math
 import os
+import resource
 import signal
 import statistics
 import struct
@@ -294,6 +295,37 @@ def test_missing_mcap_is_one_line(tmp_path, made):
     assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
     assert "mcap is not installed: pip install 'mipcodec[mcap]'" in run.stderr
     assert not out.exists()
+    run = subprocess.run(  # the recorder says so before it connects (port 1 of loopback: closed)
+        [sys.executable, "-m", "mipcodec", "device", "tcp:127.0.0.1:1", "record", str(out)],
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert "mcap is not installed: pip install 'mipcodec[mcap]'" in run.stderr
+    assert not out.exists()
+
+
+def test_a_full_disk_writes_no_mcap(tmp_path, made):
+    """The file size limit (RLIMIT_FSIZE: a write fails with EFBIG, as a full disk with ENOSPC)
+    below the MCAP file's size: one line, exit 2, no FILE.mcap and no temporary file left."""
+    log, _path, _tables = made["gx5_45"]
+    out = tmp_path / "x.mcap"
+
+    def small_files() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (100_000, 100_000))
+
+    path = os.pathsep.join(p for p in (GENERATED, os.environ.get("PYTHONPATH")) if p)
+    run = subprocess.run(
+        [sys.executable, "-m", "mipcodec", "export", str(log), "--format", "mcap", "--out", str(out)],
+        env=dict(os.environ, PYTHONPATH=path),
+        capture_output=True,
+        text=True,
+        preexec_fn=small_files,
+    )
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert f"cannot write {str(out)!r}: File too large" in run.stderr, run.stderr
+    assert list(tmp_path.iterdir()) == []
 
 
 # ------------------------------------------------------------------------------ the rules
