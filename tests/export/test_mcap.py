@@ -28,6 +28,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.conformance.test_device_c import tool  # noqa: F401 - the C tool's fixture
 from tests.conformance.test_device_cli import Sim
 from tests.helpers.generated import GENERATED_PYTHON, python_package
 
@@ -42,7 +43,7 @@ G = 9.80665  # m/s^2 per g: the CGPM's standard gravity (the spec's acceleration
 SERIALS = {"gx5_45": "6232-10100", "cv7_ins": "6284.170401"}  # the fleet's (docs/fleet.md), seed 3
 
 
-def tool(*args: str, cwd=None) -> subprocess.CompletedProcess:
+def cli(*args: str, cwd=None) -> subprocess.CompletedProcess:
     """python -m mipcodec ARGS (the pure-Python package: the MCAP export takes the packet path)."""
     path = os.pathsep.join(p for p in (GENERATED, os.environ.get("PYTHONPATH")) if p)
     env = dict(os.environ, PYTHONPATH=path)
@@ -64,9 +65,9 @@ def made(tmp_path_factory) -> dict:
     for d in manifest["devices"]:
         log = out / d["log"]
         mcap_file = out / f"{d['model']}.mcap"
-        run = tool("export", str(log), "--format", "mcap", "--out", str(mcap_file))
+        run = cli("export", str(log), "--format", "mcap", "--out", str(mcap_file))
         assert run.returncode == 0, run.stderr
-        run = tool("export", str(log), "--out", str(out / d["model"]))
+        run = cli("export", str(log), "--out", str(out / d["model"]))
         assert run.returncode == 0, run.stderr
         found[d["model"]] = (log, mcap_file, out / d["model"])
     return found
@@ -325,6 +326,16 @@ def test_a_full_disk_writes_no_mcap(tmp_path, made):
     )
     assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
     assert f"cannot write {str(out)!r}: File too large" in run.stderr, run.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_c_tool_refuses_an_mcap_file(tool, tmp_path):  # noqa: F811 - the fixture
+    """The C package's recorder writes raw logs only: FILE.mcap is one line, exit 2, before it
+    connects (port 1 of loopback: closed), nothing written."""
+    out = tmp_path / "x.MCAP"
+    run = subprocess.run([str(tool), "tcp:127.0.0.1:1", "record", str(out)], capture_output=True, text=True)
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert "MCAP files are written by the Python package's recorder" in run.stderr
     assert list(tmp_path.iterdir()) == []
 
 
