@@ -261,7 +261,7 @@ def test_live_recording_of_the_simulator(tmp_path):
         deadline = time.monotonic() + 30
         while time.monotonic() < deadline and not list(tmp_path.glob(".live.mcap.part-*.mip")):
             time.sleep(0.05)  # the log exists once the device has answered
-        time.sleep(2.0)  # the simulated GPS time is valid from about 1 s after the start (real time)
+        time.sleep(1.6)  # the simulated GPS time is valid about 1 s after the start (real time)
         proc.send_signal(signal.SIGINT)  # Ctrl-C: the way to stop a recording
         out, err = proc.communicate(timeout=60)
     assert proc.returncode == 0 and "Traceback" not in err, err

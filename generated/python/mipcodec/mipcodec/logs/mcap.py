@@ -108,7 +108,10 @@ def json_message(specs: Any, cells: List[Any], t_ns: Optional[int], offset: int)
     """The JSON message of one decoded field (docs/mcap.md; its schema: `_mcap_schemas`)."""
     out: Dict[str, Any] = {"t_ns": t_ns, "log_offset": offset}
     for (_name, path, _units, kind, _enum), cell in zip(specs, cells):
-        _put(out, tuple(path), _cell(kind, cell))
+        if len(path) == 1:  # a parameter (the most of them)
+            out[path[0]] = _cell(kind, cell)
+        else:
+            _put(out, tuple(path), _cell(kind, cell))
     return out
 
 
@@ -132,6 +135,7 @@ class McapLog:
         self.last: Optional[int] = None  # the last log_time written
         self.waiting: List[Tuple[int, bytes]] = []  # JSON messages before the first known time
         self.counts: Dict[str, int] = {}
+        self.json_channels: Dict[Tuple[int, Any], Tuple[int, str]] = {}
 
     def _channel(self, topic: str, schema: str, encoding: str, data: bytes, message_encoding: str) -> int:
         cid = self.channels.get(topic)
@@ -150,6 +154,14 @@ class McapLog:
         self.writer.add_message(channel_id=cid, log_time=log_time, data=data, publish_time=log_time, sequence=seq)
 
     def _json_channel(self, set_id: int, cls: Any) -> int:
+        found = self.json_channels.get((set_id, cls))
+        if found is None:
+            found = self.json_channels[(set_id, cls)] = self._new_json_channel(set_id, cls)
+        cid, topic = found
+        self.counts[topic] = self.counts.get(topic, 0) + 1
+        return cid
+
+    def _new_json_channel(self, set_id: int, cls: Any) -> Tuple[int, str]:
         name = table_name(set_id, cls)
         if cls.DEVICE:
             name = name[: -len(cls.DEVICE) - 1]
@@ -158,8 +170,7 @@ class McapLog:
         schema = f"{_mcap_schemas.PROTOCOL}.{registry.SET_NAMES.get(cls.SET, cls.SET)}.{cls.NAME}"
         if cls.DEVICE:
             schema += f".{cls.DEVICE}"
-        self.counts[topic] = self.counts.get(topic, 0) + 1
-        return self._channel(topic, schema, "jsonschema", _mcap_schemas.SCHEMAS[key].encode(), "json")
+        return self._channel(topic, schema, "jsonschema", _mcap_schemas.SCHEMAS[key].encode(), "json"), topic
 
     def packet(self, p: Packet, t_ns: Optional[int]) -> None:
         set_name = registry.SET_NAMES.get(p.set)
