@@ -339,6 +339,24 @@ def test_the_c_tool_refuses_an_mcap_file(tool, tmp_path):  # noqa: F811 - the fi
     assert list(tmp_path.iterdir()) == []
 
 
+def test_topic_prefix_and_frames(tmp_path, made):
+    """--topic-prefix puts every topic under /P; --frame NAME=ID renames a frame; a bad --frame is
+    one line, exit 2."""
+    log, _path, _tables = made["gx5_45"]
+    out = tmp_path / "p.mcap"
+    run = cli(
+        "export", str(log), "--format", "mcap", "--out", str(out), "--topic-prefix", "robot1", "--frame", "sensor=imu0"
+    )
+    assert run.returncode == 0, run.stderr
+    _summary, _meta, messages = read(out)
+    assert messages and all(c.topic.startswith("/robot1/") for c, _s, _m, _d in messages)
+    imu = [d for c, _s, _m, d in messages if c.topic == "/robot1/imu/data"]
+    assert imu and {d.header.frame_id for d in imu} == {"imu0"}
+    run = cli("export", str(log), "--format", "mcap", "--out", str(tmp_path / "q.mcap"), "--frame", "lidar=x")
+    assert run.returncode == 2 and run.stderr.count("\n") == 1 and "unknown frame 'lidar'" in run.stderr, run.stderr
+    assert not (tmp_path / "q.mcap").exists()
+
+
 # ------------------------------------------------------------------------------ the rules
 def test_cdr_bytes_follow_the_rules():
     """TimeReference from the CDR rules (module docstring of ros.py): header 00 01 00 00; int32

@@ -450,6 +450,8 @@ class Mapper:
         fix = v.cells.get("fix_info.fix_type")
         if fix is not None:
             status = FIX_STATUS.get(str(fix), NO_FIX)
+        if v.cells.get("llh_position.valid_flags") == 0:
+            status = NO_FIX  # the device flags the position as not valid
         h = v.si("llh_position.horizontal_accuracy") if v.has("llh_position.horizontal_accuracy") else None
         vert = v.si("llh_position.vertical_accuracy") if v.has("llh_position.vertical_accuracy") else None
         known = h is not None and vert is not None
@@ -474,6 +476,8 @@ class Mapper:
     def odometry(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
         if set_name != "filter_data" or not v.has("llh_position.latitude", "llh_position.longitude"):
             return None
+        if v.cells.get("llh_position.valid_flags") == 0:
+            return None  # the filter's position is not valid (yet): no pose, and not the odom origin
         llh = (v.si("llh_position.latitude"), v.si("llh_position.longitude"), v.si("llh_position.ellipsoid_height"))
         if self.origin is None:
             self.origin = llh
