@@ -357,6 +357,29 @@ def test_topic_prefix_and_frames(tmp_path, made):
     assert not (tmp_path / "q.mcap").exists()
 
 
+@pytest.mark.parametrize("package", ["mipcodec", "mscipcodec"])
+def test_every_schema_is_valid_and_carries_the_units(package):
+    """Every generated JSON Schema (both packages, every data field layout) is a valid draft-07
+    schema; every column with units in the export table has them in its leaf (`units`, and in
+    the description), every enum column lists the spec's names."""
+    jsonschema = importlib.import_module("jsonschema")
+    python_package(package)
+    schemas = importlib.import_module(f"{package}._mcap_schemas").SCHEMAS
+    table = importlib.import_module(f"{package}._columns")
+    assert set(schemas) == set(table.COLUMNS)
+    for key, text in schemas.items():
+        body = json.loads(text)
+        jsonschema.Draft7Validator.check_schema(body)
+        for name, path, units, kind, enum in table.COLUMNS[key]:
+            leaf = body
+            for step in path:
+                leaf = leaf["items"] if isinstance(step, int) else leaf["properties"][step]
+            if units:
+                assert leaf["units"] == units and leaf["description"].endswith(f"[{units}]"), (key, name)
+            if kind == "enum":
+                assert set(leaf["anyOf"][0]["enum"]) == set(table.ENUMS[enum].values()), (key, name)
+
+
 # ------------------------------------------------------------------------------ the rules
 def test_cdr_bytes_follow_the_rules():
     """TimeReference from the CDR rules (module docstring of ros.py): header 00 01 00 00; int32
