@@ -416,3 +416,45 @@ def test_attitude_in_enu():
     # 1 m/s north seen from a vehicle facing east: to its left (FLU +y)
     v = ros.rotate_to_body((c, 0.0, 0.0, c), (1.0, 0.0, 0.0))
     assert (v["x"], v["y"], v["z"]) == pytest.approx((0, 1, 0), abs=1e-12)
+
+
+def sensor_values(accel_z: float) -> object:
+    v = ros.Values()
+    v.add((0x80, 0x04, None), [0.0, 0.0, accel_z])  # scaled_accel [g]
+    v.add((0x80, 0x05, None), [0.0, 0.0, 0.0])  # scaled_gyro [rad/s]
+    return v
+
+
+def filter_values(q: tuple, valid: int = 1) -> object:
+    v = ros.Values()
+    v.add((0x82, 0x03, None), [*q, valid])  # attitude_quaternion (w, x, y, z), valid_flags
+    return v
+
+
+def test_the_imu_takes_the_attitude_of_its_sample():
+    """The sample rule (packets sharing a time): a filter attitude with the Imu's time, coming
+    right after the sensor packet or before it, is the Imu's orientation (facing north, MIP's
+    identity, is ROS yaw +90 deg: (cos 45, 0, 0, sin 45) as x, y, z, w = (0, 0, s, c)); another
+    time's attitude, or one flagged not valid, is not (orientation_covariance[0] = -1)."""
+    c = math.cos(math.pi / 4)
+    m = ros.Mapper(ros.Topics(), "gx5_45")
+    assert m.messages("sensor", sensor_values(-1.0), 1000, 1000) == []  # held: its attitude may follow
+    out = m.messages("filter_data", filter_values((1.0, 0.0, 0.0, 0.0)), 1000, 1000)
+    (_t, (topic, ros_type, msg)), *_rest = out
+    assert (topic, ros_type) == ("/imu/data", "sensor_msgs/Imu")
+    o = msg["orientation"]
+    assert (o["x"], o["y"], o["z"], o["w"]) == pytest.approx((0, 0, c, c)) and msg["orientation_covariance"][0] == 0
+    assert msg["linear_acceleration"]["z"] == pytest.approx(G)  # -1 g down is +9.80665 m/s^2 up
+    # the attitude first, then the sensor packet of the same time: at once
+    m.messages("filter_data", filter_values((1.0, 0.0, 0.0, 0.0)), 2000, 2000)
+    out = m.messages("sensor", sensor_values(-1.0), 2000, 2000)
+    assert len(out) == 1 and out[0][1][2]["orientation_covariance"][0] == 0
+    # a later packet of another time gives the held Imu out without an orientation
+    assert m.messages("sensor", sensor_values(-1.0), 3000, 3000) == []
+    out = m.messages("sensor", sensor_values(-1.0), 4000, 4000)
+    assert [t for t, _msg in out] == [3000] and out[0][1][2]["orientation_covariance"][0] == -1
+    # an attitude flagged not valid is not taken; the last Imu comes out with flush()
+    assert m.messages("filter_data", filter_values((1.0, 0.0, 0.0, 0.0), valid=0), 4000, 4000) == []
+    out = m.messages("sensor", sensor_values(-1.0), 5000, 5000)
+    assert [t for t, _msg in out] == [4000] and out[0][1][2]["orientation_covariance"][0] == -1
+    assert [t for t, _msg in m.flush()] == [5000] and m.flush() == []

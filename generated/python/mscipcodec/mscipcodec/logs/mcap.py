@@ -205,7 +205,10 @@ class McapLog:
                 self._write(cid, log_time, data)
         if t_ns is None or log_time is None:
             return  # no ROS message without a time
-        for topic, ros_type, msg in self.mapper.messages(set_name, values, t_ns):
+        self._ros(self.mapper.messages(set_name, values, t_ns, log_time))
+
+    def _ros(self, messages: List[Tuple[int, ros.Message]]) -> None:
+        for log_time, (topic, ros_type, msg) in messages:
             cid = self._channel(topic, ros.schema_name(ros_type), "ros2msg", ros.definition(ros_type).encode(), "cdr")
             self.counts[topic] = self.counts.get(topic, 0) + 1
             self._write(cid, log_time, ros.encode(ros_type, msg))
@@ -217,6 +220,7 @@ class McapLog:
 
     def finish(self) -> None:
         """The waiting messages (a log without any known time), the metadata, the summary."""
+        self._ros(self.mapper.flush())
         self._release(self.fallback_ns)
         from .. import SPEC_HASH, __version__
 

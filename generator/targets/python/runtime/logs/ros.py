@@ -392,35 +392,72 @@ NO_FIX = -1
 GNSS_SETS = ("gnss_data", "gnss_receiver_1", "gnss_receiver_2")
 
 
+Message = Tuple[str, str, Dict[str, Any]]  # topic, ROS type, the message as nested dicts
+
+
 class Mapper:
-    """The ROS messages of one packet: (topic, ROS type, message dict) for each message the mapping
-    table makes of its fields. Stateful only for Odometry (its `odom` origin: the first valid
-    filter position)."""
+    """The ROS messages of one packet: (log_time, (topic, ROS type, message dict)) for each message
+    the mapping table makes of its fields, in log order. Stateful for Odometry (its `odom` origin:
+    the first valid filter position) and for the Imu's orientation: the filter's attitude of the
+    same sample (a filter packet with the same time, before or right after the sensor packet: the
+    sample rule of `--join`), so an Imu waits for the next packet before it is given out (`flush`
+    gives out the last one)."""
 
     def __init__(self, topics: Topics, device: Optional[str]) -> None:
         self.topics = topics
         self.device = device
         self.origin: Optional[Tuple[float, float, float]] = None
+        self.attitude: Optional[Tuple[int, List[float]]] = None  # the last valid filter attitude (t_ns, q)
+        self.held: Optional[Tuple[int, int, Message]] = None  # an Imu waiting: (t_ns, log_time, message)
 
-    def messages(self, set_name: str, v: Values, t_ns: int) -> List[Tuple[str, str, Dict[str, Any]]]:
-        out: List[Tuple[str, str, Dict[str, Any]]] = []
+    def messages(self, set_name: str, v: Values, t_ns: int, log_time: int) -> List[Tuple[int, Message]]:
+        out: List[Tuple[int, Message]] = []
+        if v.has("attitude_quaternion.q.w") and v.cells.get("attitude_quaternion.valid_flags") != 0:
+            self.attitude = (t_ns, v.vec("attitude_quaternion.q", ("w", "x", "y", "z")))
+        if self.held is not None and (self.held[0] != t_ns or self._matches(t_ns)):
+            out += self.flush()
         for rule in RULES:
             got = rule(self, set_name, v, t_ns)
-            if got is not None:
-                out.append(got)
+            if got is None:
+                continue
+            if got[1] == "sensor_msgs/Imu" and not self._orient(got, t_ns):
+                out += self.flush()
+                self.held = (t_ns, log_time, got)  # its sample's attitude may come next
+                continue
+            out.append((log_time, got))
         return out
 
-    def imu(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
+    def flush(self) -> List[Tuple[int, Message]]:
+        """The Imu held (with its sample's attitude if it has come)."""
+        if self.held is None:
+            return []
+        t_ns, log_time, got = self.held
+        self.held = None
+        self._orient(got, t_ns)
+        return [(log_time, got)]
+
+    def _matches(self, t_ns: int) -> bool:
+        return self.attitude is not None and self.attitude[0] == t_ns
+
+    def _orient(self, got: Message, t_ns: int) -> bool:
+        """The Imu's orientation from the filter attitude of its sample, if known (else as it is:
+        none, orientation_covariance[0] = -1)."""
+        msg = got[2]
+        if msg["orientation_covariance"][0] != -1.0:
+            return True
+        if self.attitude is None or self.attitude[0] != t_ns:
+            return False
+        msg["orientation"] = enu_orientation(self.attitude[1])
+        msg["orientation_covariance"] = [0.0] * 9  # an estimate, its covariance unknown
+        return True
+
+    def imu(self, set_name: str, v: Values, t_ns: int) -> Optional[Message]:
         accel, gyro = v.find("accel"), v.find("gyro")
         if accel is None or gyro is None:
             return None
         covariance_unknown = [0.0] * 9
-        if v.has("attitude_quaternion.q.w"):
-            orientation = enu_orientation(v.vec("attitude_quaternion.q", ("w", "x", "y", "z")))
-            orientation_cov = [0.0] * 9
-        else:
-            orientation = {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}
-            orientation_cov = [-1.0] + [0.0] * 8  # sensor_msgs/Imu: no orientation estimate
+        orientation = {"x": 0.0, "y": 0.0, "z": 0.0, "w": 1.0}  # none until its sample's attitude (_orient)
+        orientation_cov = [-1.0] + [0.0] * 8  # sensor_msgs/Imu: no orientation estimate
         msg = {
             "header": header(t_ns, self.topics.frame_id(v.frame(f"{accel}.x", self.device))),
             "orientation": orientation,
@@ -432,7 +469,7 @@ class Mapper:
         }
         return self.topics.topic("imu/data"), "sensor_msgs/Imu", msg
 
-    def mag(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
+    def mag(self, set_name: str, v: Values, t_ns: int) -> Optional[Message]:
         mag = v.find("mag")
         if mag is None:
             return None
@@ -443,7 +480,7 @@ class Mapper:
         }
         return self.topics.topic("imu/mag"), "sensor_msgs/MagneticField", msg
 
-    def navsatfix(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
+    def navsatfix(self, set_name: str, v: Values, t_ns: int) -> Optional[Message]:
         if set_name not in GNSS_SETS or not v.has("llh_position.latitude", "llh_position.longitude"):
             return None
         status = 0
@@ -466,14 +503,14 @@ class Mapper:
         }
         return self.topics.topic(f"{set_name}/fix"), "sensor_msgs/NavSatFix", msg
 
-    def time_reference(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
+    def time_reference(self, set_name: str, v: Values, t_ns: int) -> Optional[Message]:
         if set_name not in GNSS_SETS or not v.has("gps_time.tow", "gps_time.week_number"):
             return None
         gps_ns = v.cells["gps_time.week_number"] * 604_800 * 1_000_000_000 + round(v.si("gps_time.tow") * 1e9)
         msg = {"header": header(t_ns, self.topics.frames["gnss"]), "time_ref": stamp(gps_ns), "source": "gps"}
         return self.topics.topic(f"{set_name}/time_reference"), "sensor_msgs/TimeReference", msg
 
-    def odometry(self, set_name: str, v: Values, t_ns: int) -> Optional[Tuple[str, str, Dict[str, Any]]]:
+    def odometry(self, set_name: str, v: Values, t_ns: int) -> Optional[Message]:
         if set_name != "filter_data" or not v.has("llh_position.latitude", "llh_position.longitude"):
             return None
         if v.cells.get("llh_position.valid_flags") == 0:
@@ -510,7 +547,7 @@ class Mapper:
         return self.topics.topic("odometry/filtered"), "nav_msgs/Odometry", msg
 
 
-Rule = Callable[[Mapper, str, Values, int], Optional[Tuple[str, str, Dict[str, Any]]]]
+Rule = Callable[[Mapper, str, Values, int], Optional[Message]]
 # The mapping table: each rule makes at most one message of a packet's values.
 RULES: Tuple[Rule, ...] = (Mapper.imu, Mapper.mag, Mapper.navsatfix, Mapper.time_reference, Mapper.odometry)
 
