@@ -259,7 +259,7 @@ def test_live_recording_of_the_simulator(tmp_path):
             text=True,
         )
         deadline = time.monotonic() + 30
-        while time.monotonic() < deadline and not list(tmp_path.glob(".live.mcap.part-*.mip")):
+        while time.monotonic() < deadline and not list(tmp_path.glob(".live.mcap.part-*.bin")):
             time.sleep(0.05)  # the log exists once the device has answered
         time.sleep(1.6)  # the simulated GPS time is valid about 1 s after the start (real time)
         proc.send_signal(signal.SIGINT)  # Ctrl-C: the way to stop a recording

@@ -2,13 +2,13 @@
 FILE.mcap [--duration S]`.
 
 The device's bytes are recorded as by `record FILE` (record.py: the Device Information reply
-first, whole packets, the same stop rules) into a log beside FILE (`.FILE.part-PID.mip`); when the
+first, whole packets, the same stop rules) into a log beside FILE (`.FILE.part-PID.bin`); when the
 recording ends, that log goes through the MCAP export (logs/mcap.py: the log's device, the time
 model over the whole log, so that packets before the first GPS time are timed as `export` times
 them), written under a temporary name and renamed to FILE when finished; the log is then removed.
 So Ctrl-C, SIGTERM, a vanished device or a full disk during the recording leave a whole, readable
 FILE.mcap of what was recorded; if the MCAP cannot be written (a full disk, Ctrl-C while it is
-written), no FILE.mcap is left and the recording is kept as FILE-stem.mip (named on stderr),
+written), no FILE.mcap is left and the recording is kept as FILE-stem.bin (named on stderr),
 nothing lost. `--split-size`/`--split-time` are for raw logs only.
 
 Exit status: the recorder's (0 stopped, 1 no answer / device gone, 2 trouble), and 2 when the
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import Optional
+from typing import Callable, Optional
 
 from .._protocol import PACKAGE
 
@@ -31,17 +31,21 @@ def _note(text: str) -> None:
 
 
 def _keep(raw: str, path: str) -> str:
-    """Moves the recorded log to FILE-stem.mip (or .NNN.mip if taken); returns its name."""
+    """Moves the recorded log to FILE-stem.bin (or .NNN.bin if taken); returns its name."""
     stem = os.path.splitext(path)[0]
     for i in range(1000):
-        name = f"{stem}.mip" if i == 0 else f"{stem}.{i:03d}.mip"
+        name = f"{stem}.bin" if i == 0 else f"{stem}.{i:03d}.bin"
         if not os.path.lexists(name):
             os.replace(raw, name)
             return name
     return raw
 
 
+TROUBLE = 2  # record.py's status of a usage error or a failed write (docs/record.md)
+
+
 def record_mcap(
+    raw_recorder: Callable[..., int],
     address: str,
     path: str,
     baud: int,
@@ -50,10 +54,11 @@ def record_mcap(
     split_size: float = 0,
     split_time: float = 0.0,
 ) -> int:
+    """Records into FILE.mcap through `raw_recorder` (record.py's `record`, which calls this for a
+    FILE ending in .mcap: passed in, not imported, so the two modules import no circle)."""
     from .._extras import need
     from ..logs import mcap, ros
     from ..logs.writers import Outputs, ToolError
-    from .record import TROUBLE, record
 
     if split_size or split_time:
         _note("record: --split-size and --split-time write raw logs, not FILE.mcap")
@@ -67,8 +72,8 @@ def record_mcap(
         _note(f"cannot create {path}: exists")
         return TROUBLE
     head, tail = os.path.split(path)
-    raw = os.path.join(head, f".{tail}.part-{os.getpid()}.mip")
-    status = record(address, raw, baud, timeout_ms, duration)
+    raw = os.path.join(head, f".{tail}.part-{os.getpid()}.bin")
+    status = raw_recorder(address, raw, baud, timeout_ms, duration)
     if not os.path.exists(raw):
         return status
     outputs = Outputs(force=False)

@@ -197,7 +197,7 @@ def record(
     if path.lower().endswith(".mcap"):  # an MCAP file: recorded, then exported (record_mcap.py, docs/mcap.md)
         from .record_mcap import record_mcap
 
-        return record_mcap(address, path, baud, timeout_ms, duration, split_size, split_time)
+        return record_mcap(record, address, path, baud, timeout_ms, duration, split_size, split_time)
     found = identity_command()
     if found is None:
         _note("the spec names no device information command")
