@@ -250,6 +250,7 @@ def test_live_recording_of_the_simulator(tmp_path):
     serial = "6232-51515"
     target = tmp_path / "live.mcap"
     path = os.pathsep.join(p for p in (GENERATED, os.environ.get("PYTHONPATH")) if p)
+    started = time.monotonic()
     with Sim("gx5_45", "tcp:127.0.0.1:0", "--stream-full", "--speed", "1", "--serial", serial) as sim:
         proc = subprocess.Popen(
             [sys.executable, "-m", "mipcodec", "device", sim.address, "record", str(target)],
@@ -261,7 +262,9 @@ def test_live_recording_of_the_simulator(tmp_path):
         deadline = time.monotonic() + 30
         while time.monotonic() < deadline and not list(tmp_path.glob(".live.mcap.part-*.bin")):
             time.sleep(0.05)  # the log exists once the device has answered
-        time.sleep(1.6)  # the simulated GPS time is valid about 1 s after the start (real time)
+        # the simulated GPS time is valid from 2 s after the simulator's start (its clock is real
+        # time, and it starts after `started`): a recording that goes on past 3.2 s has timed packets
+        time.sleep(max(0.5, started + 3.2 - time.monotonic()))
         proc.send_signal(signal.SIGINT)  # Ctrl-C: the way to stop a recording
         out, err = proc.communicate(timeout=60)
     assert proc.returncode == 0 and "Traceback" not in err, err
