@@ -64,6 +64,7 @@ PAGES = [
     "docs/record.md",
     "docs/log-to-csv.md",
     "docs/dataset.md",
+    "docs/mcap.md",
     "docs/time.md",
     "docs/fleet.md",
     "docs/packaging.md",

@@ -46,6 +46,8 @@ COMMAND_EXTRAS = {
     "logs/timebase.py": LOGS,
     "logs/plot.py": ("plot",),
     "logs/query.py": ("query",),
+    "logs/mcap.py": ("mcap",),
+    "device/record_mcap.py": ("mcap",),
     "spark.py": ("spark",),
     "device/cli.py": ("device",),
     "device/settings.py": ("device",),

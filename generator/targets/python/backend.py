@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import textwrap
 
-from generator import columns, commands, model, simulation
+from generator import columns, commands, mcap_schemas, model, simulation
 from generator.examples import example_context, example_literal, session_example, session_example_context
 from generator.linkfacts import bandwidth_sources, link_facts
 from generator.naming import camel, upper
@@ -706,6 +706,9 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/{pkg}/settings.schema.json"] = settings["schema"]
         files[f"{root}/{pkg}/_columns.py"] = env.get_template("python/package/_columns.py.j2").render(
             **ctx, **_columns_context(proto)
+        )
+        files[f"{root}/{pkg}/_mcap_schemas.py"] = env.get_template("python/package/_mcap_schemas.py.j2").render(
+            **ctx, mcap_schemas=mcap_schemas.schemas(proto, py_attr)
         )
         files[f"{root}/pyproject.toml"] = env.get_template("python/pyproject.toml.j2").render(**ctx)
         files[f"{root}/setup.py"] = env.get_template("python/setup.py.j2").render(**ctx)

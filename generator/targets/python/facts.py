@@ -252,6 +252,7 @@ LIBRARIES = {
         Library("pyspark", "4.0.1", "pyspark"),
         Library("pyserial", "3.5", "serial"),
         Library("pyyaml", "6.0.3", "yaml"),
+        Library("mcap", "1.6.0", "mcap"),
     )
 }
 
@@ -272,6 +273,10 @@ EXTRAS = {
     "query": (
         '`{package} query DATASET "SQL"` with DuckDB (pytz: its timestamps with a time zone)',
         ("duckdb", "pytz"),
+    ),
+    "mcap": (
+        "`{package} export --format mcap` and `{package}-device ADDRESS record FILE.mcap` (MCAP, ROS 2 messages)",
+        ("mcap",),
     ),
     "spark": (
         "the Spark job (`python -m {package}.spark`; Java 17 or 21): pyspark, pandas (its mapInArrow needs it)"

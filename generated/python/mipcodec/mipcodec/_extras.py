@@ -35,6 +35,7 @@ REQUIRES: Dict[str, Tuple[str, ...]] = {
         "duckdb>=1.4.4",
         "pytz>=2026.6",
     ),
+    "mcap": ("mcap>=1.6.0",),
     "spark": (
         "pyspark>=4.0.1",
         "pandas>=2.3.3",
@@ -51,6 +52,7 @@ REQUIRES: Dict[str, Tuple[str, ...]] = {
         "pandas>=2.3.3",
         "duckdb>=1.4.4",
         "pytz>=2026.6",
+        "mcap>=1.6.0",
         "pyspark>=4.0.1",
     ),
 }
@@ -65,6 +67,7 @@ EXTRA: Dict[str, str] = {
     "pandas": "pandas",
     "duckdb": "query",
     "pytz": "query",
+    "mcap": "mcap",
     "pyspark": "spark",
 }
 # import name -> the distribution pip installs
@@ -79,6 +82,7 @@ DISTRIBUTION: Dict[str, str] = {
     "pyspark": "pyspark",
     "serial": "pyserial",
     "yaml": "pyyaml",
+    "mcap": "mcap",
 }
 
 

@@ -340,6 +340,26 @@ static int record_device(const opts_t *o, const char *path, mipc_posix_t *posix)
     return status;
 }
 
+/* A FILE ending in .mcap (any case). */
+static int is_mcap(const char *path) {
+    static const char ext[] = ".mcap";
+    size_t n = strlen(path);
+    size_t i;
+    if (n < sizeof ext - 1) {
+        return 0;
+    }
+    for (i = 0; i < sizeof ext - 1; i++) {
+        char c = path[n - (sizeof ext - 1) + i];
+        if (c >= 'A' && c <= 'Z') {
+            c = (char)(c - 'A' + 'a');
+        }
+        if (c != ext[i]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 int cmd_record(const char *address, const opts_t *o) {
     mipc_posix_t posix;
     struct sigaction sa;
@@ -354,6 +374,12 @@ int cmd_record(const char *address, const opts_t *o) {
     }
     if (DEV_IDENTITY_SET == 0 || DEV_REPORT_COUNT == 0) {
         note("the spec names no device information command");
+        return EXIT_TROUBLE;
+    }
+    if (is_mcap(o->pos[0])) { /* not a raw log under an MCAP name (docs/mcap.md) */
+        note("record: %s: MCAP files are written by the Python package's recorder (docs/mcap.md); "
+             "this tool records raw logs",
+             o->pos[0]);
         return EXIT_TROUBLE;
     }
     if (o->split_size > 0 || o->split_time > 0) {

@@ -8,7 +8,7 @@ are not part of a packet are kept (the log is the device's stream) but a write n
 packet. At the end (--duration, Ctrl-C or SIGTERM, the device gone, a failed write) the bytes of a
 packet not finished yet are left out, so the log is whole. `--split-size`/`--split-time` start a
 new file FILE-stem.NNN.ext (000, 001, ...), each beginning with the Device Information reply
-again. The C tool's tools/device/record.c is the same rule, message for message.
+again. A FILE ending in `.mcap` is an MCAP file (record_mcap.py, docs/mcap.md). The C tool's tools/device/record.c is the same rule, message for message.
 
 Exit status (the C tool's too): 0 stopped by --duration, Ctrl-C or SIGTERM; 1 the device did not
 answer the Device Information command, or went away (end of file, a closed socket, a read error);
@@ -194,6 +194,10 @@ def record(
     split_time: float = 0.0,
 ) -> int:
     """Records the device at address into path; returns the exit status (messages on stderr)."""
+    if path.lower().endswith(".mcap"):  # an MCAP file: recorded, then exported (record_mcap.py, docs/mcap.md)
+        from .record_mcap import record_mcap
+
+        return record_mcap(record, address, path, baud, timeout_ms, duration, split_size, split_time)
     found = identity_command()
     if found is None:
         _note("the spec names no device information command")

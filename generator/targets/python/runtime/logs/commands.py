@@ -54,6 +54,10 @@ def export(args: argparse.Namespace) -> int:
         if getattr(args, option) is not None:
             raise ToolError(f"--{option.replace('_', '-')} needs --dataset")
     args.log = args.logs[0]
+    if args.format == "mcap":  # MCAP: one file, ROS 2 and JSON messages (mcap.py, docs/mcap.md)
+        from .mcap import export_mcap
+
+        return export_mcap(args)
     if args.format == "parquet":
         need("pyarrow")
     fields = field_list(args.fields)
@@ -218,7 +222,10 @@ def parser() -> argparse.ArgumentParser:
     )
     e.add_argument("logs", nargs="+", metavar="LOG", help="binary log file, or - for stdin (--dataset: several logs)")
     e.add_argument(
-        "--format", choices=sorted(WRITERS), default="csv", help="table format (default csv; parquet needs pyarrow)"
+        "--format",
+        choices=sorted(WRITERS) + ["mcap"],
+        default="csv",
+        help="table format (default csv; parquet needs pyarrow); mcap: one MCAP file (--out FILE.mcap; docs/mcap.md)",
     )
     e.add_argument("--out", metavar="DIR", help="directory for the tables (created if missing)")
     e.add_argument(
@@ -242,6 +249,9 @@ def parser() -> argparse.ArgumentParser:
     )
     e.add_argument("--force", action="store_true", help="overwrite tables that exist (default: refuse)")
     device(e)
+    from .mcap import add_options as mcap_options  # --topic-prefix, --frame (mcap.py)
+
+    mcap_options(e)
     e.set_defaults(run=export)
 
     i = sub.add_parser(
