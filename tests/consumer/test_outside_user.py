@@ -65,6 +65,8 @@ PAGES = [
     "docs/log-to-csv.md",
     "docs/dataset.md",
     "docs/mcap.md",
+    "docs/rtk-and-nmea.md",
+    "docs/timesync.md",
     "docs/time.md",
     "docs/fleet.md",
     "docs/packaging.md",
