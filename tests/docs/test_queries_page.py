@@ -7,9 +7,8 @@ queries (`python -m mipcodec query`).
 Then the answers are checked against what the simulated world implies, from the fleet's manifest
 (fleet.json: computed from the simulation's parameters, tests/export/test_fleet.py checks it
 against an independent count of the logs): samples per vehicle and UTC date = rate x duration, split
-at midnight (rows without a valid GPS time, which the GX5-45 flags invalid before its first fix
-and during outages, have no date: NULL); seconds in each filter mode = the modes' spans (the time
-out of full navigation = the outages configured, less the 2 s the CV7 coasts on its IMU); the
+at midnight (rows without a valid GPS time, which the GX5-45 flags invalid before its first fix,
+have no date: NULL); seconds in each filter mode = the modes' samples at 50 Hz (the time out of full navigation = the outages configured, less the 2 s the CV7 coasts on its IMU); the
 largest acceleration norm = 1 g at rest, sqrt(1 + (v^2 / r / g)^2) g on the 50 m circle at 5 m/s,
 within the accelerometer's simulated noise.
 
@@ -163,7 +162,7 @@ def test_time_in_each_filter_mode_gx5(replay: tuple) -> None:
     for serial, d in devices.items():
         if d["model"] != "gx5_45":
             continue
-        assert got[serial] == {s: m["seconds"] for s, m in d["filter_modes"].items()}
+        assert got[serial] == {s: m["samples"] / 50 for s, m in d["filter_modes"].items()}  # 50 Hz
         out = sum(o["seconds"] for o in d["gnss_outages"])
         assert got[serial].get("run_solution_error", 0.0) == out  # out of full navigation: the outages
 
@@ -176,7 +175,7 @@ def test_time_in_each_filter_mode_cv7_seconds(replay: tuple) -> None:
     for serial, d in devices.items():
         if d["model"] != "cv7_ins":
             continue
-        assert sorted(got[serial].values()) == sorted(m["seconds"] for m in d["filter_modes"].values())
+        assert sorted(got[serial].values()) == sorted(m["samples"] / 50 for m in d["filter_modes"].values())
         out = sum(o["seconds"] - 2 for o in d["gnss_outages"]) + 1
         assert d["filter_modes"]["ahrs"]["seconds"] == out
 
@@ -186,7 +185,7 @@ def test_time_in_each_filter_mode_cv7_names(replay: tuple) -> None:
     got = _modes(replay)
     for serial, d in devices.items():
         if d["model"] == "cv7_ins":
-            assert got[serial] == {s: m["seconds"] for s, m in d["filter_modes"].items()}
+            assert got[serial] == {s: m["samples"] / 50 for s, m in d["filter_modes"].items()}
 
 
 def test_maximum_acceleration_norm(replay: tuple) -> None:

@@ -146,6 +146,17 @@ class Device:
         spans.append((t, Fraction(self.seconds) + Fraction(1, 1000)))  # the last sample, at `seconds`
         return spans
 
+    def gps_time_valid(self, set_id: int) -> List[Tuple[Fraction, Fraction]]:
+        """When data set `set_id`'s GPS time field is flagged valid ([from, to) in seconds of the
+        device's time). The CV7's GPS timestamps (0xFF,0xD3) and the GX5-45's GNSS GPS time are the
+        receiver's, valid while it has a fix: `fixed()`. The GX5-45's GPS Correlation Timestamp
+        (0x80,0x12) is initialized by the receiver's first fix and then runs on, on the IMU's clock
+        through an outage (3dm-gx5-45-dcp.txt line 2159; sim/clocks.py): from the first fix on."""
+        if self.model == "gx5_45" and set_id == 0x80:
+            first = self.fixed()[0][0]
+            return [(first, Fraction(self.seconds) + Fraction(1, 1000))]
+        return self.fixed()
+
     def modes(self) -> List[Tuple[str, Fraction, Fraction]]:
         """(filter state, from, to) in seconds of the device's time: what sim_world.NavFilter does
         with this device's aiding (configuration) and outages. GX5-45 (GNSS-aided): startup for
@@ -249,7 +260,9 @@ def _entry(dev: Device, size: int, garbage: int, last_set: Optional[int]) -> Dic
             total -= 1  # the cut packet: the last sample of the log
             per_day[days[-1][0]] -= 1
         valid = {
-            d: sum(_samples(max(lo, a), min(hi, b), hz) for a, b in dev.fixed() if min(hi, b) > max(lo, a))
+            d: sum(
+                _samples(max(lo, a), min(hi, b), hz) for a, b in dev.gps_time_valid(set_id) if min(hi, b) > max(lo, a)
+            )
             for d, lo, hi in days
         }
         if dev.truncated and set_id == last_set:
