@@ -175,6 +175,27 @@ def _baud_rates(protocol: dict, device: str) -> list[int]:
     return next((list(e["rates"]) for e in entries if e["device"] == device), [])
 
 
+def _nmea_entries(protocol: dict, device: str, name: str, a: dict, b: dict) -> tuple[dict, dict]:
+    """An NMEA message format write (spec `simulation.nmea`): entries the simulator takes (a
+    sentence, talker and source of the table at most its source's rate; any other is NACKed,
+    docs/conformance.md section 9) instead of the random samples: GGA from the filter at 1 Hz (a)
+    and at 2 Hz (b)."""
+    nmea = (protocol.get("simulation") or {}).get("nmea")
+    if not nmea or name != nmea["format"]["command"]:
+        return a, b
+    gga = next(x for x in nmea["sentences"] if x["name"] == "GGA")
+    origin = next(o for o in nmea["origins"] if o["kind"] in gga["sources"] and o["max_hz"] >= 2)
+    rates = next(r["rates"] for r in protocol["simulation"]["base_rates"] if r["device"] == device)
+    set_id, base = next((r["set"], r["hz"]) for r in rates if r["set"] in origin["sets"])
+    e = nmea["entry"]
+    entry = {e["sentence"]: gga["code"], e["talker"]: nmea["talkers"][0]["code"], e["source"]: set_id}
+    lst = nmea["format"]["list"]
+    return (
+        {**a, lst: [{**entry, e["decimation"]: base}]},
+        {**b, lst: [{**entry, e["decimation"]: base // 2}]},
+    )
+
+
 def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], list]]:
     """Per command with write and read on `device`: (name, its lines, what each read must give
     back: "factory", or the values written)."""
@@ -220,6 +241,7 @@ def roundtrip_plan(protocol: dict, device: str) -> list[tuple[str, list[str], li
             if rate is not None and rate in a and len(rates) >= 2 and isinstance(a[rate], int):
                 # a baud rate write: rates the model's port lists (another is NACKed, docs/conformance.md §9)
                 a, b = {**a, rate: rates[-1]}, {**b, rate: rates[-2]}
+            a, b = _nmea_entries(protocol, device, f["name"], a, b)
 
             def line(function: str, values: dict, set_id: int = s["id"], field: dict = f) -> str:
                 return _command(
