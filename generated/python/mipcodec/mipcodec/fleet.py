@@ -152,7 +152,8 @@ class Device:
         receiver's, valid while it has a fix: `fixed()`. The GX5-45's GPS Correlation Timestamp
         (0x80,0x12) is initialized by the receiver's first fix and then runs on, on the IMU's clock
         through an outage (3dm-gx5-45-dcp.txt line 2159; sim/clocks.py): from the first fix on."""
-        if self.model == "gx5_45" and set_id == 0x80:
+        correlation = (_sim.TIME_SYNC.get(self.model) or {}).get("correlation")  # spec time.sync
+        if correlation is not None and set_id == correlation["set"]:
             first = self.fixed()[0][0]
             return [(first, Fraction(self.seconds) + Fraction(1, 1000))]
         return self.fixed()
