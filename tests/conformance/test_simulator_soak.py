@@ -120,9 +120,9 @@ class Host:
         assert self.last[set_id] == stopped, "data of a stream turned off"
         clock = self.latest
         self.last[set_id] = None  # the next sample starts a new run
+        before = self.stats["checked"]  # before the enable: its first sample can share the ack's read
         self.command(_enable(set_id, True))
         self.read(0.0, until_acks=n + 2)
-        before = self.stats["checked"]
         while self.last[set_id] is None:
             self.read(0.05)
         assert self.last[set_id] >= clock, (set_id, self.last[set_id], clock)  # from now, no backlog
