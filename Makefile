@@ -71,7 +71,7 @@ test-spec: generate
 # The Python packages' user commands (export, info, plot) against the canonical decode.
 test-export: generate
 	$(STAMP)
-	$(PY) -m pytest -q tests/export
+	$(PY) -m pytest -q --durations=10 tests/export
 
 test-bench: generate
 	$(STAMP)
@@ -83,7 +83,7 @@ test-bench: generate
 # under build/golden/, reused). `make golden` refreshes the tree after a wanted change.
 test-golden: $(VENV)/.stamp
 	$(STAMP)
-	$(PY) -m pytest -q tests/golden
+	$(PY) -m pytest -q --durations=10 tests/golden
 
 golden: $(VENV)/.stamp
 	$(PY) -m tests.golden.refresh
@@ -104,7 +104,7 @@ html: generate
 
 test-conformance: generate
 	$(STAMP)
-	$(PY) -m pytest -q tests/conformance
+	$(PY) -m pytest -q --durations=15 tests/conformance
 
 # Differential rounds (tests/conformance/differential.py; one round runs in test-conformance):
 # hostile values of every layout and corrupted packets through the four languages' CLIs against
@@ -185,16 +185,18 @@ test-mingw: generate
 # time, with a final table (target, executions, exec/s, wall time, findings). A finding fails the
 # run; its input is saved under build/fuzz/findings/<lang>/<package>/<target>/. Needs clang-14,
 # libclang-rt-14-dev, llvm-14, a nightly Rust toolchain with cargo-fuzz, and atheris (in .venv).
+# FUZZ_JOBS runs that many targets at once (default 1: the machine may be shared; CI runs 2).
 # FUZZ_ONLY limits the targets: LANG[/PACKAGE[/TARGET]] words, e.g. FUZZ_ONLY="c cpp/mipcodec"; "spec" is
 # the generator's front end (tests/fuzz/spec/: spec files through the YAML loader, schema and IR passes).
 FUZZ_SECONDS ?= 10
 FUZZ_RUNS ?= 10000000
 FUZZ_PY_RUNS ?= 1000000
 FUZZ_ONLY ?=
+FUZZ_JOBS ?= 1
 FUZZ_SELECT = $(foreach o,$(FUZZ_ONLY),--only $(o))
 
 fuzz: generate
-	$(PY) -m tests.fuzz.fuzz run --seconds $(FUZZ_SECONDS) $(FUZZ_SELECT)
+	$(PY) -m tests.fuzz.fuzz run --seconds $(FUZZ_SECONDS) --jobs $(FUZZ_JOBS) $(FUZZ_SELECT)
 
 fuzz-long: generate
 	$(PY) -m tests.fuzz.fuzz run --runs $(FUZZ_RUNS) --python-runs $(FUZZ_PY_RUNS) $(FUZZ_SELECT)
