@@ -88,6 +88,7 @@ _RUNTIME_FILES = {
     "tools/device/plan.c": "tools/device/plan.c",
     "tools/device/stream.c": "tools/device/stream.c",
     "tools/device/record.c": "tools/device/record.c",
+    "tools/device/timesync.c": "tools/device/timesync.c",
     "tools/device/main.c": "tools/device/main.c",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
