@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from generator import commands, diagnostics, model, packet_plan
+from generator.clock_model import clock_model
 from generator.cmake import cmake_package_files, pkg_config
 from generator.device_tables import device_tables
 from generator.examples import (
@@ -923,6 +924,7 @@ class _Protocol:
             "types": self.type_views,
             "devices": self.devices,
             "link_facts": self.link,
+            "clock_model": clock_model(self.proto),
             "layouts": self.layouts,
             "fields": self.fields,
             "reserved": self.reserved,
