@@ -196,7 +196,7 @@ typedef struct {
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
     "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                  \
-    "  timesync [--duration S] [--json] [--pps-source NAME] (docs/timesync.md)\n"                           \
+    "  timesync [--duration S] [--json] [--pps-source NAME] (docs/timesync.md)\n"                            \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
     "before sending)."

@@ -78,7 +78,8 @@ static int read_option(int argc, char **argv, int *i, opts_t *o) {
     }
     if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 && strcmp(name, "--timeout-ms") != 0 &&
         strcmp(name, "--rate") != 0 && strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 &&
-        strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0 && strcmp(name, "--pps-source") != 0) {
+        strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0 &&
+        strcmp(name, "--pps-source") != 0) {
         return usage("unknown option '%s'", a);
     }
     if (eq) {
@@ -146,7 +147,8 @@ static int check_subcommand(const opts_t *o, const char *sub, const char *action
         }
     } else if (strcmp(sub, "ping") != 0 && strcmp(sub, "info") != 0 && strcmp(sub, "send") != 0 &&
                strcmp(sub, "stream") != 0 && strcmp(sub, "save-startup") != 0 &&
-               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0 && strcmp(sub, "timesync") != 0) {
+               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0 &&
+               strcmp(sub, "timesync") != 0) {
         return usage("unknown subcommand '%s'", sub);
     }
     if (strcmp(sub, "timesync") == 0 && timesync_check(o) != 0) {

@@ -184,8 +184,8 @@ static int stream_budget(conn_t *c, const opts_t *o, int set, const dev_format_t
 
 /* The message format entry to write: the previous one with the fields (at the decimation) as its
  * list and the key parameters of key. */
-val_t *stream_entry(const val_t *previous, const val_t *key, const dev_format_t *spec,
-                           const int *fields, size_t nf, unsigned long decimation) {
+val_t *stream_entry(const val_t *previous, const val_t *key, const dev_format_t *spec, const int *fields,
+                    size_t nf, unsigned long decimation) {
     val_t *entry = val_copy(previous);
     val_t *list = val_new(V_LIST, 0);
     size_t i;

@@ -16,8 +16,8 @@
  * read returned, in ns, which is when the Python session dates the bytes of a read. */
 #include "device.h"
 
-#define RATE_HZ 50.0       /* the status and time fields' rate (packets for the clock model) */
-#define UPDATE_AFTER_S 0.15 /* an update goes out this long after the device's PPS edge */
+#define RATE_HZ 50.0               /* the status and time fields' rate (packets for the clock model) */
+#define UPDATE_AFTER_S 0.15        /* an update goes out this long after the device's PPS edge */
 #define GPS_EPOCH_UNIX 315964800.0 /* 1980-01-06T00:00:00Z in Unix seconds */
 #define GPS_UTC_S 18.0             /* GPS - UTC since 2017-01-01 (the host's wall clock is UTC) */
 #define WEEK_S 604800LL
@@ -30,8 +30,8 @@ typedef struct {
     int64_t t0_ns;           /* the monotonic clock at the start */
     int64_t read_ns;         /* host time of the latest read (since t0_ns) */
     codec_clock_t clock;     /* the host clock model, fed with every data packet's reference time */
-    bool send_updates;   /* false: the device takes GPS time from its receiver's PPS */
-    int64_t source;      /* the PPS source value to write (-1: the model has no such setting) */
+    bool send_updates;       /* false: the device takes GPS time from its receiver's PPS */
+    int64_t source;          /* the PPS source value to write (-1: the model has no such setting) */
     unsigned long updates;
     /* the monitor: what the device reports about its time */
     unsigned long packets;
@@ -160,7 +160,8 @@ static int choose_source(sync_t *s, const char *name) {
     if (chosen == NULL) {
         note("--pps-source %s: expected one of %s", name ? name : "None", buf_text(&list));
     } else if (chosen->kind == DEV_PPS_NONE) {
-        note("--pps-source %s: no PPS (expected one of %s but %s)", chosen->name, buf_text(&list), chosen->name);
+        note("--pps-source %s: no PPS (expected one of %s but %s)", chosen->name, buf_text(&list),
+             chosen->name);
         chosen = NULL;
     }
     free(list.s);
@@ -205,7 +206,8 @@ static double num_of(const val_t *values, const char *name) {
 
 static bool bool_of(const val_t *values, const char *name) {
     const val_t *v = val_get(values, name);
-    return v != NULL && ((v->kind == V_BOOL && v->b) || ((v->kind == V_INT || v->kind == V_NUM) && strtod(v->text, NULL) != 0));
+    return v != NULL && ((v->kind == V_BOOL && v->b) ||
+                         ((v->kind == V_INT || v->kind == V_NUM) && strtod(v->text, NULL) != 0));
 }
 
 /* One field (set, descriptor, values) of a data packet received at host time at. */
@@ -242,13 +244,13 @@ static void on_packet(void *ctx, const codec_session_event_t *ev) {
     int64_t host_ns;
     double at = (double)s->read_ns / 1e9;
     size_t n;
-    if (codec_reference_ns(s->c->device, codec_packet_set(p), codec_packet_payload(p), codec_packet_payload_length(p),
-                           &device_ns) &&
+    if (codec_reference_ns(s->c->device, codec_packet_set(p), codec_packet_payload(p),
+                           codec_packet_payload_length(p), &device_ns) &&
         codec_clock_add(&s->clock, device_ns, s->read_ns, &host_ns)) {
         at = (double)host_ns / 1e9;
     }
     n = codec_json_packet_line(ev->stream->packet, (size_t)ev->stream->length, ev->stream->offset,
-                                      s->c->device, g_line, sizeof g_line);
+                               s->c->device, g_line, sizeof g_line);
     val_t *line = json_parse(g_line, n < sizeof g_line ? n : sizeof g_line - 1);
     const val_t *set = val_get(line, "set");
     const val_t *fields = val_get(line, "fields");
@@ -401,10 +403,10 @@ static line_t state(const sync_t *s, double t) {
     l.updates = s->updates;
     l.reason = NULL;
     if (!l.synced) {
-        l.reason = !s->packets                       ? "no data"
-                   : !l.pps                          ? "no PPS"
+        l.reason = !s->packets                          ? "no data"
+                   : !l.pps                             ? "no PPS"
                    : s->send_updates && s->updates >= 2 ? "updates outside the window"
-                                                      : "no GPS time";
+                                                        : "no GPS time";
     }
     return l;
 }
@@ -432,7 +434,8 @@ static void show(const line_t *l, bool json) {
         l->synced ? buf_str(&b, "synced") : buf_fmt(&b, "not synced (%s)", l->reason);
         buf_fmt(&b, " pps=%s time_valid=%s", l->pps ? "yes" : "no", l->time_valid ? "yes" : "no");
         if (l->estimated) {
-            buf_fmt(&b, " drift=%+.1fppm offset=%+.3fms jitter=%.3fms", l->drift_ppm, l->offset_ms, l->jitter_ms);
+            buf_fmt(&b, " drift=%+.1fppm offset=%+.3fms jitter=%.3fms", l->drift_ppm, l->offset_ms,
+                    l->jitter_ms);
         } else {
             buf_str(&b, " drift=- offset=- jitter=-");
         }

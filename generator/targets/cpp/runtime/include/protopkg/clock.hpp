@@ -15,10 +15,10 @@ namespace protopkg {
 class ClockModel {
   public:
     // the parameters: the spec's time.clock_model (framing.hpp)
-    static constexpr std::int64_t kBucketNs = kClockBucketNs;  ///< device time per bucket
-    static constexpr std::size_t kBuckets = kClockBuckets;     ///< closed buckets kept
+    static constexpr std::int64_t kBucketNs = kClockBucketNs;    ///< device time per bucket
+    static constexpr std::size_t kBuckets = kClockBuckets;       ///< closed buckets kept
     static constexpr std::size_t kMinBuckets = kClockMinBuckets; ///< closed buckets before an estimate
-    static constexpr std::int64_t kRestartNs = kClockRestartNs; ///< a larger step disagreement restarts
+    static constexpr std::int64_t kRestartNs = kClockRestartNs;  ///< a larger step disagreement restarts
 
     /// One data packet: its device reference time and host arrival time (ns); its host time once
     /// estimated.
