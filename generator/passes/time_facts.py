@@ -48,9 +48,10 @@ def run(ctx: Context) -> None:
     ctx.time.update(external=[], sync_health=[], clock_model=None)
     if spec is None:
         return
-    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [])
     check = _Check(ctx)
     _log_sync(ctx, spec, check)
+    # after `external`: a sync entry's external times in ns are the `external` entries of its device
+    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [], ctx.time["external"])
     seen: set[str] = set()
     for i, entry in enumerate(spec.get("reference_time") or []):
         out = check.reference(("time", "reference_time", i), entry, seen)

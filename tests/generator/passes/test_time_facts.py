@@ -322,6 +322,35 @@ def test_sync_resolves_names_to_numbers(tmp_path):
     assert (e["correlation"]["pps"], e["correlation"]["refresh"], e["correlation"]["initialized"]) == (1, 2, 4)
 
 
+def test_sync_takes_the_external_count_from_the_time_section(tmp_path):
+    # the external time as a count is named once, in `time.external` (the log time model's): each
+    # sync entry of a device that has the field gets it, after its own GPS time fields
+    text = SYNC.replace(
+        "      correlation:",
+        "      external: [{field: sensor.gps_time, flags: flags, tow: tow_ok, week: week_ok}]\n      correlation:",
+    )
+    text += (
+        "  external:\n"
+        "    - {field: sensor.leap, param: seconds, valid_flags: flags, valid: [week_ok], sources: [{manual: a.txt, line: 7}]}\n"
+    )
+    files = {
+        "protocol.yaml": PROTOCOL + text,
+        "sensor.yaml": data_set(
+            FIELDS.replace("name: tow,", "name: tow_ok,").replace("name: week,", "name: week_ok,"), FLAGS
+        ),
+        "base.yaml": command_set(COMMANDS, SYNC_TYPES),
+    }
+    ctx = build(tmp_path, files, "time_facts")
+    assert errors(ctx) == []
+    (e,) = ctx.time["sync"]
+    assert e["external"] == [
+        {"field": "sensor.gps_time", "set": 0x80, "descriptor": 0x12, "flags": "flags", "tow": "tow_ok",
+         "tow_mask": 0b01, "week": "week_ok", "week_mask": 0b10},
+        {"field": "sensor.leap", "set": 0x80, "descriptor": 0x14, "flags": "flags", "ns": "seconds",
+         "ns_mask": 0b10, "per_second": 1},
+    ]  # fmt: skip
+
+
 def test_sync_errors(tmp_path):
     # the external time's flag members are named as its parameters: tow and week are no members of
     # TimeFlags here (tow_ok, week_ok); an enum member without a PPS kind; an unknown selector value

@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "3acbbe901f01581e"
+SPEC_HASH = "17a97fa053a36fa9"
 
 __all__ = [
     "SPEC_HASH",
