@@ -180,8 +180,9 @@ def _timesync(proto: dict, types: dict) -> list[dict]:
         if p is not None:
             f = by_name[p["command"]]
             enum = next(q["type"]["name"] for v in f["variants"] for q in v["params"] if q["name"] == p["param"])
+            kinds = {int(k): kind for k, kind in p["kinds"].items()}  # (keys are text in the exported IR)
             row["members"] = [
-                (upper(v["name"]).lower(), int(v["value"]), _PPS_KINDS.index(p["kinds"][int(v["value"])]))
+                (upper(v["name"]).lower(), int(v["value"]), _PPS_KINDS.index(kinds[int(v["value"])]))
                 for v in types[enum]["values"]
             ]
             set_id = next(s["id"] for s in proto["sets"] if f in s["fields"])
