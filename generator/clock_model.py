@@ -4,12 +4,12 @@ that the four runtimes (C protocol.h, C++ framing.hpp, Rust framing.rs, Python _
 tests/clock/make_cases.py take them from the spec.
 
 A protocol file without `reference_time` states no clock model: nothing feeds the model there, and
-its packages carry the model's code with UNUSED, a model that never estimates (one bucket kept,
-two needed)."""
+its packages carry the model's code with UNUSED, a model that never estimates (two buckets kept,
+three needed: its ring still has two places, so no index is taken modulo one)."""
 
 from __future__ import annotations
 
-UNUSED = {"bucket_ns": 1_000_000_000, "buckets": 1, "min_buckets": 2, "restart_ns": 1_000_000_000}
+UNUSED = {"bucket_ns": 1_000_000_000, "buckets": 2, "min_buckets": 3, "restart_ns": 1_000_000_000}
 
 
 def clock_model(proto: dict) -> dict:

@@ -140,8 +140,8 @@ SYNC_PPS: Tuple[Tuple[int, int, str, int], ...] = ()
 # device time per bucket (ns), closed buckets kept, closed buckets before an estimate, and the
 # step disagreement (ns) above which consecutive packets restart the model.
 CLOCK_BUCKET_NS = 1000000000
-CLOCK_BUCKETS = 1
-CLOCK_MIN_BUCKETS = 2
+CLOCK_BUCKETS = 2
+CLOCK_MIN_BUCKETS = 3
 CLOCK_RESTART_NS = 1000000000
 
 # Per device, the field carrying its own reference time (the host clock model, clock.py;

@@ -68,9 +68,9 @@ pub const MAX_KEY: usize = 1;
 /// own; `clock`, docs/time.md).
 pub const CLOCK_BUCKET_NS: i64 = 1000000000;
 /// Closed buckets the host clock model keeps.
-pub const CLOCK_BUCKETS: usize = 1;
+pub const CLOCK_BUCKETS: usize = 2;
 /// Closed buckets before the host clock model has an estimate.
-pub const CLOCK_MIN_BUCKETS: usize = 2;
+pub const CLOCK_MIN_BUCKETS: usize = 3;
 /// A larger disagreement (ns) of consecutive packets' arrival and device time steps restarts the
 /// host clock model.
 pub const CLOCK_RESTART_NS: i64 = 1000000000;

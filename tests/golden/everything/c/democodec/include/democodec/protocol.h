@@ -77,8 +77,8 @@ static inline int democ_field_length_adjust(uint8_t set, uint8_t descriptor) {
  * docs/time.md): device time per bucket (ns), closed buckets kept, closed buckets before there is
  * an estimate, and the step disagreement (ns) above which consecutive packets restart the model. */
 #define DEMOC_CLOCK_BUCKET_NS 1000000000LL
-#define DEMOC_CLOCK_BUCKETS 1
-#define DEMOC_CLOCK_MIN_BUCKETS 2
+#define DEMOC_CLOCK_BUCKETS 2
+#define DEMOC_CLOCK_MIN_BUCKETS 3
 #define DEMOC_CLOCK_RESTART_NS 1000000000LL
 
 /* Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through"):

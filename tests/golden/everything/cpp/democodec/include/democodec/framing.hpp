@@ -58,8 +58,8 @@ inline constexpr std::size_t kMaxJsonDepth = 10;
 /// docs/time.md): device time per bucket (ns), closed buckets kept, closed buckets before an
 /// estimate, the step disagreement (ns) above which consecutive packets restart the model.
 inline constexpr std::int64_t kClockBucketNs = 1000000000;
-inline constexpr std::size_t kClockBuckets = 1;
-inline constexpr std::size_t kClockMinBuckets = 2;
+inline constexpr std::size_t kClockBuckets = 2;
+inline constexpr std::size_t kClockMinBuckets = 3;
 inline constexpr std::int64_t kClockRestartNs = 1000000000;
 
 /// The sample rule exported as `samples` in generated/ir.json (read by samples.hpp).
