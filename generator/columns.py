@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from generator import model
+from generator.clock_model import clock_model
 
 # Components of the spec's fixed-array aliases, and the array shape they stand for.
 COMPONENTS: dict[str, tuple[str, ...]] = {
@@ -166,7 +167,8 @@ def time_sources(proto: dict) -> list[tuple[int, int, str, int]]:
 def time_facts(proto: dict, attr=lambda name: name) -> dict:
     """The IR's `time` entry as the time model's tables: per kind (`gps_time`, `device_clock`,
     `leap_seconds`, `reference_time`, `external`, `sync_health`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
-    parameter names through `attr` (a back end's attribute naming)."""
+    parameter names through `attr` (a back end's attribute naming); `clock_model` the host clock
+    model's parameters (generator/clock_model.py)."""
     t = proto.get("time") or {}
     out: dict = {}
     for kind in ("gps_time", "device_clock", "leap_seconds"):
@@ -217,4 +219,5 @@ def time_facts(proto: dict, attr=lambda name: name) -> dict:
         }
         for e in t.get("sync_health", [])
     ]
+    out["clock_model"] = clock_model(proto)
     return out

@@ -126,6 +126,7 @@ def device_tables(proto: dict) -> dict:
     if fs.get("enum") in types:
         functions = [(v["name"], int(v["value"])) for v in types[fs["enum"]]["values"]]
     return {
+        "dev_timesync": _timesync(proto, types),
         "dev_settings": settings,
         "dev_enums": enums,
         "dev_ack_enum": ack_enum,
@@ -158,3 +159,37 @@ def device_tables(proto: dict) -> dict:
             None,
         ),
     }
+
+
+_PPS_KINDS = ("none", "input", "receiver", "generated")
+
+
+def _timesync(proto: dict, types: dict) -> list[dict]:
+    """The spec's `time.sync` per device (the IR's, names resolved to numbers) as the rows of the
+    tool's DEV_TIMESYNC (tools/device/timesync.c, docs/timesync.md): the PPS source's members in
+    their enum's order with their kinds (the default is the first receiver), the status field, the
+    external time fields carrying a time of week, and the correlation flags with the time of week
+    parameter of its field's `time.gps_time` entry."""
+    t = proto.get("time") or {}
+    tows = {e["field"]: e["tow"] for e in t.get("gps_time", [])}
+    by_name = {f["name"]: f for s in proto["sets"] for f in s["fields"] if f["role"] == "command"}
+    out = []
+    for e in t.get("sync", []):
+        row: dict = {"device": e["device"], "cmd": e["update"], "members": [], "pps": None}
+        p = e.get("pps_source")
+        if p is not None:
+            f = by_name[p["command"]]
+            enum = next(q["type"]["name"] for v in f["variants"] for q in v["params"] if q["name"] == p["param"])
+            kinds = {int(k): kind for k, kind in p["kinds"].items()}  # (keys are text in the exported IR)
+            row["members"] = [
+                (upper(v["name"]).lower(), int(v["value"]), _PPS_KINDS.index(kinds[int(v["value"])]))
+                for v in types[enum]["values"]
+            ]
+            set_id = next(s["id"] for s in proto["sets"] if f in s["fields"])
+            row["pps"] = {"at": (set_id, f["id"]), "param": p["param"]}
+        row["status"] = e.get("status")
+        row["external"] = [x for x in e.get("external", []) if "tow" in x]
+        c = e.get("correlation")
+        row["correlation"] = dict(c, tow=tows.get(c["field"], "tow")) if c is not None else None
+        out.append(row)
+    return out

@@ -19,6 +19,10 @@ of the Python tools, generator/targets/python/runtime/timebase.py; docs/log-to-c
 - `sync_health`: fields saying whether a PPS is present (`info`'s synchronization section): `field`
   and either `param` (a bool) or `valid_flags` and `valid`.
 - `sync`: per device, how its external time is synchronized (time_sync.py).
+- `clock_model`: the host clock model's parameters, the project's own (no manual line: `basis`
+  says why): `bucket_ns`, `buckets`, `min_buckets` (at most `buckets`), `restart_ns`; required
+  with `reference_time` (the model the sessions feed from it). The IR entry: the four numbers, or
+  None without it (the packages then carry the model unused, generator/clock_model.py).
 
 Each entry cites its manual lines. Every check gives one located error. The IR entry `time` holds
 per entry the set and descriptor, the parameter names, and the flag masks (`mask`: bits that must
@@ -26,7 +30,7 @@ be set, `inverted`: bits that must be clear); a `reference_time` entry its `devi
 (`count`: `param`, `per_second`, its `offset` and `size` in the field data; `gps`: `tow`, `week`,
 `tow_offset`, `week_offset`, `week_size`) and `monotonic`; an `external` entry `param`, `per_second`, `valid_flags`, `mask`; a
 `sync_health` entry `kind` (`bool`: `param`; `flags`: `valid_flags`, `mask`); without the section
-it is empty lists.
+it is empty lists (and `clock_model` None).
 """
 
 from __future__ import annotations
@@ -41,17 +45,19 @@ _CLOCK_UNITS = {"ns": 1_000_000_000, "us": 1_000_000, "ms": 1000, "s": 1}
 def run(ctx: Context) -> None:
     spec = ctx.pf.data.get("time")
     ctx.time = {"gps_time": [], "device_clock": [], "leap_seconds": [], "reference_time": [], "sync": []}
-    ctx.time.update(external=[], sync_health=[])
+    ctx.time.update(external=[], sync_health=[], clock_model=None)
     if spec is None:
         return
-    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [])
     check = _Check(ctx)
     _log_sync(ctx, spec, check)
+    # after `external`: a sync entry's external times in ns are the `external` entries of its device
+    ctx.time["sync"] = time_sync.check(ctx, spec.get("sync") or [], ctx.time["external"])
     seen: set[str] = set()
     for i, entry in enumerate(spec.get("reference_time") or []):
         out = check.reference(("time", "reference_time", i), entry, seen)
         if out is not None:
             ctx.time["reference_time"].append(out)
+    ctx.time["clock_model"] = _clock_model(ctx, spec)
     for kind in ("gps_time", "device_clock", "leap_seconds"):
         for i, entry in enumerate(spec.get(kind) or []):
             out = check.entry(kind, ("time", kind, i), entry)
@@ -323,3 +329,28 @@ def _log_sync(ctx: Context, spec: dict, check: _Check) -> None:
                 continue
             out.update(kind="flags", valid_flags=e["valid_flags"], mask=masks[0])
         ctx.time["sync_health"].append(out)
+
+
+def _clock_model(ctx: Context, spec: dict) -> dict | None:
+    """`clock_model`: the host clock model's parameters (the project's own, docs/time.md), required
+    where the sessions run the model (the protocol file has `reference_time` entries); the IR entry
+    is the four numbers, or None without the section."""
+    m = spec.get("clock_model")
+    if m is None:
+        if spec.get("reference_time"):
+            ctx.err(
+                ctx.pf,
+                ("time",),
+                "time: reference_time without clock_model (the host clock model it feeds needs its parameters)",
+                "clock_model: {bucket_ns, buckets, min_buckets, restart_ns, basis}",
+            )
+        return None
+    if m["min_buckets"] > m["buckets"]:
+        ctx.err(
+            ctx.pf,
+            ("time", "clock_model", "min_buckets"),
+            f"time clock_model: min_buckets {m['min_buckets']} above buckets {m['buckets']} (never an estimate)",
+            "at most buckets",
+        )
+        return None
+    return {k: m[k] for k in ("bucket_ns", "buckets", "min_buckets", "restart_ns")}

@@ -7,11 +7,16 @@ selector and value parameters and the selector's week and time-of-week members; 
 where a PPS can come from (input, receiver, generated); optionally `pps_source` (the setting choosing
 the PPS: command, parameter, each member of the parameter's enum mapped to none, input, receiver or
 generated, every member covered), `status` (a data field with the synced and last-PPS parameters),
-`external` (data fields carrying the external time: `flags` a bitfield parameter, and the `tow`,
-`week` or `ns` parameters, each with the flag member of its name) and `correlation` (a data field
-whose bitfield parameter `flags` has the `pps`, `refresh` and `initialized` members). Every check
-gives one located error. The IR entry resolves names to numbers: set and descriptor of each field
-and command, enum values, flag masks; notes and sources kept.
+`external` (data fields carrying the external time as a GPS time: `flags` a bitfield parameter, and
+the `tow` and `week` parameters, each with the flag member of its name) and `correlation` (a data
+field whose bitfield parameter `flags` has the `pps`, `refresh` and `initialized` members). Every
+check gives one located error. The IR entry resolves names to numbers: set and descriptor of each
+field and command, enum values, flag masks; notes and sources kept.
+
+The external time as a count (the CV7's External Timestamp, 0xFF,0xD7) is named once, in the time
+section's `external` entries (the log time model's, time_facts.py): the IR entry's `external` list
+gets, after its own fields, each of those whose field the device has, with `ns` (the parameter),
+`ns_mask` (the valid members' mask), `per_second` (its units a second) and `flags`.
 """
 
 from __future__ import annotations
@@ -21,11 +26,12 @@ from .context import Context
 KINDS = ("none", "input", "receiver", "generated")
 
 
-def check(ctx: Context, entries: list[dict]) -> list[dict]:
+def check(ctx: Context, entries: list[dict], external: list[dict]) -> list[dict]:
+    """The IR entries of `time.sync`; `external`: the IR's `time.external` entries (time_facts.py)."""
     out: list[dict] = []
     seen: set[str] = set()
     for i, e in enumerate(entries):
-        r = _Sync(ctx, ("time", "sync", i)).entry(e, seen)
+        r = _Sync(ctx, ("time", "sync", i)).entry(e, seen, external)
         if r is not None:
             out.append(r)
     return out
@@ -41,7 +47,7 @@ class _Sync:
         self.ok = False
         self.ctx.err(self.ctx.pf, self.path + sub, f"time sync: {message}", expected)
 
-    def entry(self, e: dict, seen: set[str]) -> dict | None:
+    def entry(self, e: dict, seen: set[str], external: list[dict]) -> dict | None:
         device = e["device"]
         if device not in self.ctx.device_ids:
             self.err(("device",), f"unknown device '{device}'", "a device of the protocol file")
@@ -75,6 +81,7 @@ class _Sync:
             r = self.external(("external", j), x)
             if r is not None:
                 out["external"].append(r)
+        out["external"] += [self.count_view(x) for x in external if self.has_field(device, x)]
         if "correlation" in e:
             c = e["correlation"]
             f = self.data_field(("correlation", "field"), c["field"])
@@ -141,27 +148,44 @@ class _Sync:
             self.err(("pps_source", "kinds"), f"no kind for {', '.join(missing)}", "a kind for every member")
         return out
 
+    def has_field(self, device: str, x: dict) -> bool:
+        """Whether the device has the field of a `time.external` entry."""
+        for s in self.ctx.sets:
+            for f in s["fields"] if s["id"] == x["set"] else []:
+                if f["id"] == x["descriptor"]:
+                    return not f.get("devices") or device in f["devices"]
+        return False
+
+    @staticmethod
+    def count_view(x: dict) -> dict:
+        """A `time.external` entry as a sync entry's external time in ns."""
+        return {
+            "field": x["field"],
+            "set": x["set"],
+            "descriptor": x["descriptor"],
+            "flags": x["valid_flags"],
+            "ns": x["param"],
+            "ns_mask": x["mask"],
+            "per_second": x["per_second"],
+        }
+
     def external(self, sub: tuple, x: dict) -> dict | None:
         f = self.data_field(sub + ("field",), x["field"])
         if f is None:
             return None
-        params = [x[k] for k in ("tow", "week", "ns") if k in x]
-        if not params:
-            self.err(sub, "give tow and week, or ns", "the parameters carrying the external time")
-            return None
+        params = [x["tow"], x["week"]]
         names = {q["name"] for v in f[1]["variants"] for q in v["params"]}
-        for k in ("tow", "week", "ns"):
-            if k in x and x[k] not in names:
+        for k in ("tow", "week"):
+            if x[k] not in names:
                 self.err(sub + (k,), f"'{x[k]}' is not a parameter of {x['field']}", "a parameter")
                 return None
         masks = self.masks(sub, f, x["flags"], params)
         if masks is None:
             return None
         out = {"field": x["field"], "set": f[0]["id"], "descriptor": f[1]["id"], "flags": x["flags"]}
-        for k in ("tow", "week", "ns"):
-            if k in x:
-                out[k] = x[k]
-                out[f"{k}_mask"] = masks[params.index(x[k])]
+        for k in ("tow", "week"):
+            out[k] = x[k]
+            out[f"{k}_mask"] = masks[params.index(x[k])]
         return out
 
     def masks(self, sub: tuple, f: tuple | None, flags: str, members: list[str]) -> list[int] | None:

@@ -16,8 +16,12 @@ from a model's output:
   for the slope's conversion at these drifts), the host time of the last packet within
   e + slope error x 1 s (it is at most one bucket past the last kept point), and every kept point's
   residual above the line (the reported bound) at most 2 e, plus J + B where a burst covers a bucket.
-- A reset (device time goes back) or a jump (arrival and device time steps disagree by > 1 s)
-  restarts the model: `restarts` counts them, and the estimate after it uses only later packets.
+- A reset (device time goes back) or a jump (arrival and device time steps disagree by more than
+  RESTART_NS) restarts the model: `restarts` counts them, and the estimate after it uses only later
+  packets. There is an estimate once MIN_BUCKETS buckets have closed.
+
+The model's parameters (BUCKET_NS, BUCKETS, MIN_BUCKETS, RESTART_NS) are the spec's
+`time.clock_model` (spec/mip/protocol.yaml), the one source the four runtimes are generated from.
 """
 
 from __future__ import annotations
@@ -25,8 +29,14 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
-BUCKET_NS = 1_000_000_000  # the model's bucket (docs/time.md)
-BUCKETS = 64
+import yaml
+
+SPEC = Path(__file__).resolve().parents[2] / "spec" / "mip" / "protocol.yaml"
+MODEL = yaml.safe_load(SPEC.read_text(encoding="utf-8"))["time"]["clock_model"]
+BUCKET_NS = MODEL["bucket_ns"]  # device time per bucket (docs/time.md)
+BUCKETS = MODEL["buckets"]  # closed buckets kept
+MIN_BUCKETS = MODEL["min_buckets"]  # closed buckets before there is an estimate
+RESTART_NS = MODEL["restart_ns"]  # a larger step disagreement restarts the model
 OUT = Path(__file__).resolve().parent / "cases.txt"
 
 CASES = [
@@ -66,7 +76,9 @@ def simulate(rng: random.Random, c: dict) -> tuple[list[tuple[int, int]], dict]:
             t_dev = 400_000_000  # power-on again: reference time restarts near zero
             dev_at_reset, host_at_reset = t_dev, host0 + host_s * 1e9
         if c.get("jump_at") is not None and not jump_done and host_s >= c["jump_at"][0]:
-            jump_done, restarts, epoch_start_s = True, restarts + 1, host_s
+            jump_done = True
+            if c["jump_at"][1] * 1e9 > RESTART_NS:  # the steps disagree by the jump: a restart
+                restarts, epoch_start_s = restarts + 1, host_s
             t_dev += int(c["jump_at"][1] * 1e9)
         # true host send time of device time t_dev: the device runs ppm fast
         if reset_done:
@@ -81,10 +93,11 @@ def simulate(rng: random.Random, c: dict) -> tuple[list[tuple[int, int]], dict]:
         last_true = (t_dev, int(round(send + base_ns)))
         t_dev += int(round(1e9 / c["rate_hz"]))
         k += 1
-    span_buckets = min(BUCKETS, int((c["seconds"] - epoch_start_s) * (1 + ppm * 1e-6))) - 1
+    device_s = (c["seconds"] - epoch_start_s) * (1 + ppm * 1e-6)  # device time since the (re)start
+    span_buckets = min(BUCKETS, int(device_s * 1e9 / BUCKET_NS)) - 1
     n = c["rate_hz"]  # packets per bucket
     e = 10 * j_ns / n
-    expect: dict = {"restarts": restarts, "estimated": span_buckets >= 1}
+    expect: dict = {"restarts": restarts, "estimated": span_buckets >= MIN_BUCKETS - 1}
     if expect["estimated"]:
         span = (span_buckets - 1) * BUCKET_NS  # kept points span at least this much device time
         slope_err = e / (span / 2)

@@ -12,6 +12,10 @@
    100 --link-jitter 4 ends synced with a drift within 10 ppm of 100.
 3. The command line against the simulator over TCP: a GX5-45 without a fix or a PPS ends with exit
    1 and its reason; a usage error is exit 2.
+4. The C tool's timesync (`mipcodec-device`, tools/device/timesync.c) beside the Python command on
+   the same simulated device: the GX5-45 without a fix or PPS ends with exit 1 and `no PPS`, the
+   CV7 with its receiver's fix ends synced, both printing the same keys and reasons each second;
+   usage errors are exit 2 with one line from both.
 """
 
 from __future__ import annotations
@@ -19,11 +23,13 @@ from __future__ import annotations
 import importlib
 import json
 import os
+import re
 import subprocess
 import sys
 
 import pytest
 
+from tests.conformance.test_device_c import tool  # noqa: F401 (the C tool's fixture)
 from tests.conformance.test_simulator import ROOT, Sim
 from tests.helpers.generated import python_package
 
@@ -266,18 +272,70 @@ def device_cli(*args: str) -> subprocess.CompletedProcess:
     return run
 
 
-def test_timesync_cli_gx5_45_without_fix_or_pps_exits_1_with_a_reason():
-    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0", "--speed", "10", "--gnss-outage", "0:1000") as sim:
-        run = device_cli(sim.address, "timesync", "--duration", "2", "--json")
-    assert run.returncode == 1, run.stderr
-    lines = [json.loads(x) for x in run.stdout.splitlines()]
-    assert len(lines) == 2 and all(not x["synced"] and x["reason"] == "no PPS" for x in lines)
-    assert {"synced", "pps", "time_valid", "drift_ppm", "offset_ms", "jitter_ms", "reason"} <= set(lines[-1])
-    assert "not synchronized: no PPS" in run.stderr
-
-
-def test_timesync_cli_usage_errors_exit_2():
+def test_timesync_cli_duration_nan_exits_2():
+    # (the GX5-45 without fix or PPS over TCP, and the other usage errors: section 4, both tools)
     assert device_cli("tcp:127.0.0.1:9", "timesync", "--duration", "nan").returncode == 2
-    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0") as sim:
-        run = device_cli(sim.address, "timesync", "--pps-source", "gpio", "--duration", "1")
-    assert run.returncode == 2 and "no PPS source setting" in run.stderr
+
+
+# ------------------------------------------------------------------- 4. the C tool beside the Python command
+def both(tool_path, *args: str) -> tuple:
+    """The Python command line's run and the C tool's, one after the other, with the same arguments."""
+    py = device_cli(*args)
+    c = subprocess.run([str(tool_path), *args], capture_output=True, text=True, timeout=120)
+    assert c.returncode >= 0, f"killed by signal {-c.returncode}: {c.stderr}"
+    return py, c
+
+
+def json_lines(run: subprocess.CompletedProcess) -> list:
+    return [json.loads(x) for x in run.stdout.splitlines()]
+
+
+KEYS = ["t", "synced", "pps", "time_valid", "drift_ppm", "offset_ms", "jitter_ms", "updates"]
+
+
+def test_timesync_c_gx5_45_without_fix_or_pps_exits_1_as_python(tool):  # noqa: F811
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0", "--speed", "10", "--gnss-outage", "0:1000") as sim:
+        py, c = both(tool, sim.address, "timesync", "--duration", "2", "--json")
+        text = subprocess.run(
+            [str(tool), sim.address, "timesync", "--duration", "1"], capture_output=True, text=True, timeout=60
+        )
+    for run in (py, c):
+        assert run.returncode == 1, run.stderr
+        lines = json_lines(run)
+        assert len(lines) == 2 and all(list(x) == KEYS + ["reason"] for x in lines), run.stdout
+        assert all(not x["synced"] and not x["pps"] and x["reason"] == "no PPS" for x in lines)
+        assert lines[-1]["updates"] >= 1  # the host sends updates: the GX5-45 has no receiver source
+        assert run.stderr.splitlines()[-1] == "mipcodec-device: not synchronized: no PPS"
+    assert text.returncode == 1
+    assert re.fullmatch(
+        r"t=1\.0s not synced \(no PPS\) pps=no time_valid=no drift=(-|[+-]\d+\.\dppm) "
+        r"offset=(-|[+-]\d+\.\d{3}ms) jitter=(-|\d+\.\d{3}ms) updates=\d+\n",
+        text.stdout,
+    ), text.stdout
+
+
+def test_timesync_c_cv7_with_a_fix_ends_synced_as_python(tool):  # noqa: F811
+    # the receiver's fix from 2 s of simulated time (0.2 s at --speed 10): its PPS and GPS time
+    with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0", "--speed", "10") as sim:
+        py, c = both(tool, sim.address, "timesync", "--duration", "2", "--json")
+    for run in (py, c):
+        assert run.returncode == 0, run.stderr
+        lines = json_lines(run)
+        assert len(lines) == 2 and all(list(x) == KEYS for x in lines), run.stdout
+        last = lines[-1]
+        assert last["synced"] and last["pps"] and last["time_valid"] and last["updates"] == 0
+        # the clock model's estimate (20 s of simulated data): numbers, the bound not negative
+        assert all(isinstance(last[k], float) for k in ("drift_ppm", "offset_ms", "jitter_ms"))
+        assert last["jitter_ms"] >= 0.0
+
+
+def test_timesync_c_usage_errors_exit_2_as_python(tool):  # noqa: F811
+    with Sim("mip", "gx5_45", "tcp:127.0.0.1:0", "--speed", "10") as sim:
+        runs = [
+            both(tool, sim.address, "timesync", "--pps-source", "gpio", "--duration", "1"),
+            both(tool, sim.address, "timesync", "--duration", "0"),
+        ]
+    for (py, c), says in zip(runs, ["--pps-source: gx5_45 has no PPS source setting", "--duration 0: expected"]):
+        for run in (py, c):
+            assert run.returncode == 2 and run.stdout == "", run.stderr
+            assert len(run.stderr.splitlines()) == 1 and run.stderr.startswith("mipcodec-device: " + says)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from generator import commands, diagnostics, model, packet_plan
+from generator.clock_model import clock_model
 from generator.cmake import cmake_package_files, pkg_config
 from generator.device_tables import device_tables
 from generator.examples import (
@@ -88,6 +89,7 @@ _RUNTIME_FILES = {
     "tools/device/plan.c": "tools/device/plan.c",
     "tools/device/stream.c": "tools/device/stream.c",
     "tools/device/record.c": "tools/device/record.c",
+    "tools/device/timesync.c": "tools/device/timesync.c",
     "tools/device/main.c": "tools/device/main.c",
     "tests/package/test_support.hpp": "tests/test_support.hpp",
     "tests/package/runtime_test.cpp": "tests/runtime_test.cpp",
@@ -922,6 +924,7 @@ class _Protocol:
             "types": self.type_views,
             "devices": self.devices,
             "link_facts": self.link,
+            "clock_model": clock_model(self.proto),
             "layouts": self.layouts,
             "fields": self.fields,
             "reserved": self.reserved,

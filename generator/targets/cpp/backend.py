@@ -30,6 +30,7 @@ from __future__ import annotations
 import re
 
 from generator import commands, examples, model, packet_plan
+from generator.clock_model import clock_model
 from generator.cmake import cmake_package_files, pkg_config
 from generator.examples import ExampleError
 from generator.linkfacts import link_facts
@@ -682,6 +683,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
                 for d, lf in zip(proto["devices"], link["devices"])
             ],
             "link_facts": link,
+            "clock_model": clock_model(proto),
             "types": [P.type_model(t) for t in model.type_order(P.p)],
             "sets": sets,
             "lookup": P.lookup(),

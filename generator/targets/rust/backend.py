@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from generator import commands, examples, model, naming, packet_plan
+from generator.clock_model import clock_model
 from generator.examples import ExampleError
 from generator.linkfacts import link_facts
 from generator.naming import upper
@@ -1007,6 +1008,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         ctx["short_cases"] = model.short_cases()
         ctx["sample_rule"] = proto["samples"]
         ctx["link_facts"] = link_facts(proto)
+        ctx["clock_model"] = clock_model(proto)
         ctx["example"] = _example(proto)
         session = session_context(model)
         ctx.update(session)

@@ -70,6 +70,7 @@ def test_without_the_section_the_tables_are_empty(tmp_path):
         "external": [],
         "sync_health": [],
         "sync": [],
+        "clock_model": None,
     }
 
 
@@ -124,6 +125,7 @@ def test_wrong_parameters(tmp_path):
         "external": [],
         "sync_health": [],
         "sync": [],
+        "clock_model": None,
     }
 
 
@@ -138,15 +140,24 @@ def test_a_flag_rule_is_needed(tmp_path):
     ]
 
 
+CLOCK = "  clock_model: {bucket_ns: 500000000, buckets: 32, min_buckets: 3, restart_ns: 2000000000, basis: b}\n"
+
+
 def test_reference_time_per_device(tmp_path):
     text = (
-        "time:\n"
-        "  reference_time:\n"
+        "time:\n" + CLOCK + "  reference_time:\n"
         "    - {device: dev_a, field: sensor.clock, param: us, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
         "    - {device: dev_b, field: sensor.gps_time, tow: tow, week: week, monotonic: false, sources: [{manual: b.txt, line: 2}]}\n"
     )
     ctx = _build(tmp_path, text)
     assert errors(ctx) == []
+    # the host clock model's parameters, carried as they are (the project's own, no manual line)
+    assert ctx.time["clock_model"] == {
+        "bucket_ns": 500_000_000,
+        "buckets": 32,
+        "min_buckets": 3,
+        "restart_ns": 2_000_000_000,
+    }
     rows = [{k: v for k, v in r.items() if k not in ("sources", "field")} for r in ctx.time["reference_time"]]
     assert rows == [
         {
@@ -177,8 +188,7 @@ def test_reference_time_per_device(tmp_path):
 
 def test_reference_time_errors(tmp_path):
     text = (
-        "time:\n"
-        "  reference_time:\n"
+        "time:\n" + CLOCK + "  reference_time:\n"
         "    - {device: dev_c, field: sensor.clock, param: us, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
         "    - {device: dev_a, field: sensor.clock, param: secs, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
         "    - {device: dev_a, field: sensor.clock, param: us, monotonic: false, sources: [{manual: a.txt, line: 6}]}\n"
@@ -195,6 +205,27 @@ def test_reference_time_errors(tmp_path):
         " (expected param, or tow and week)",
     ]
     assert ctx.time["reference_time"] == []
+
+
+def test_clock_model_errors(tmp_path):
+    ref = "  reference_time:\n    - {device: dev_a, field: sensor.clock, param: us, monotonic: true, sources: [{manual: a.txt, line: 6}]}\n"
+    # the model the sessions feed from the reference time needs its parameters
+    ctx = _build(tmp_path, "time:\n" + ref)
+    assert [e.split(": error: ")[1] for e in errors(ctx)] == [
+        "time: reference_time without clock_model (the host clock model it feeds needs its parameters)"
+        " (expected clock_model: {bucket_ns, buckets, min_buckets, restart_ns, basis})"
+    ]
+    assert ctx.time["clock_model"] is None
+    # more closed buckets needed than kept: never an estimate
+    text = "time:\n" + CLOCK.replace("min_buckets: 3", "min_buckets: 33") + ref
+    ctx = _build(tmp_path, text)
+    assert errors(ctx) == [
+        f"{_at(text, 'min_buckets', '33')}: error: time clock_model: min_buckets 33 above buckets 32 (never an estimate)"
+        " (expected at most buckets)"
+    ]
+    # without reference_time the model is not fed: the section is optional
+    ctx = _build(tmp_path, GOOD)
+    assert errors(ctx) == [] and ctx.time["clock_model"] is None
 
 
 SYNC_FIELDS = FIELDS + (
@@ -289,6 +320,35 @@ def test_sync_resolves_names_to_numbers(tmp_path):
     assert e["pps_source"]["kinds"] == {0: "none", 3: "input"}
     assert e["external"] == []
     assert (e["correlation"]["pps"], e["correlation"]["refresh"], e["correlation"]["initialized"]) == (1, 2, 4)
+
+
+def test_sync_takes_the_external_count_from_the_time_section(tmp_path):
+    # the external time as a count is named once, in `time.external` (the log time model's): each
+    # sync entry of a device that has the field gets it, after its own GPS time fields
+    text = SYNC.replace(
+        "      correlation:",
+        "      external: [{field: sensor.gps_time, flags: flags, tow: tow_ok, week: week_ok}]\n      correlation:",
+    )
+    text += (
+        "  external:\n"
+        "    - {field: sensor.leap, param: seconds, valid_flags: flags, valid: [week_ok], sources: [{manual: a.txt, line: 7}]}\n"
+    )
+    files = {
+        "protocol.yaml": PROTOCOL + text,
+        "sensor.yaml": data_set(
+            FIELDS.replace("name: tow,", "name: tow_ok,").replace("name: week,", "name: week_ok,"), FLAGS
+        ),
+        "base.yaml": command_set(COMMANDS, SYNC_TYPES),
+    }
+    ctx = build(tmp_path, files, "time_facts")
+    assert errors(ctx) == []
+    (e,) = ctx.time["sync"]
+    assert e["external"] == [
+        {"field": "sensor.gps_time", "set": 0x80, "descriptor": 0x12, "flags": "flags", "tow": "tow_ok",
+         "tow_mask": 0b01, "week": "week_ok", "week_mask": 0b10},
+        {"field": "sensor.leap", "set": 0x80, "descriptor": 0x14, "flags": "flags", "ns": "seconds",
+         "ns_mask": 0b10, "per_second": 1},
+    ]  # fmt: skip
 
 
 def test_sync_errors(tmp_path):

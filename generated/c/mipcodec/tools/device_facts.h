@@ -1235,4 +1235,91 @@ static const dev_set_name_t DEV_SET_NAMES[] = {{1, "base"},
 /* the data set of the shared fields (valid in every data set), -1: none */
 #define DEV_SHARED_SET (255)
 
+/* time synchronization (the spec's time.sync; tools/device/timesync.c, docs/timesync.md) */
+typedef enum { DEV_PPS_NONE, DEV_PPS_INPUT, DEV_PPS_RECEIVER, DEV_PPS_GENERATED } dev_pps_kind_t;
+
+typedef struct {
+    const char *name; /* lower case, as --pps-source takes it */
+    int64_t value;
+    dev_pps_kind_t kind;
+} dev_pps_member_t;
+
+typedef struct {
+    uint8_t set; /* the field (the shared set's: in every data set) */
+    uint8_t descriptor;
+    const char *flags;
+    const char *tow;
+    uint32_t tow_mask;
+    uint32_t week_mask;
+} dev_sync_time_t;
+
+typedef struct {
+    const char *device;
+    /* the GPS Time Update command: its selector and value parameters, the selector's values */
+    uint8_t update_set;
+    uint8_t update_descriptor;
+    const char *update_selector;
+    const char *update_value;
+    int64_t update_week;
+    int64_t update_tow;
+    /* the PPS source setting (pps_param NULL: none); its members in their enum's order */
+    uint8_t pps_set;
+    uint8_t pps_descriptor;
+    const char *pps_param;
+    const dev_pps_member_t *pps_members;
+    size_t pps_member_count;
+    /* the status field (status_set -1: none) and its synced parameter */
+    int status_set;
+    uint8_t status_descriptor;
+    const char *status_synced;
+    /* the external time fields with a time of week and week */
+    const dev_sync_time_t *external;
+    size_t external_count;
+    /* the correlation timestamp (corr_set -1: none): its flags and their masks */
+    int corr_set;
+    uint8_t corr_descriptor;
+    const char *corr_flags;
+    const char *corr_tow;
+    uint32_t corr_pps;
+    uint32_t corr_refresh;
+    uint32_t corr_initialized;
+} dev_timesync_t;
+static const dev_pps_member_t DEV_PPS_MEMBERS_0[] = {
+    {"disabled", 0, DEV_PPS_NONE}, {"receiver_1", 1, DEV_PPS_RECEIVER}, {"receiver_2", 2, DEV_PPS_RECEIVER},
+    {"gpio", 3, DEV_PPS_INPUT},    {"generated", 4, DEV_PPS_GENERATED}, {NULL, 0, DEV_PPS_NONE}};
+static const dev_sync_time_t DEV_SYNC_TIMES_0[] = {{255, 211, "valid_flags", "tow", 1u, 2u},
+                                                   {0, 0, NULL, NULL, 0, 0}};
+static const dev_pps_member_t DEV_PPS_MEMBERS_1[] = {{NULL, 0, DEV_PPS_NONE}};
+static const dev_sync_time_t DEV_SYNC_TIMES_1[] = {{0, 0, NULL, NULL, 0, 0}};
+static const dev_timesync_t DEV_TIMESYNC[] = {
+    {"cv7_ins", 1,   114, "field_id",  "value",          1,  2,  12, 40,   "source", DEV_PPS_MEMBERS_0,
+     5u,        160, 2,   "time_sync", DEV_SYNC_TIMES_0, 1u, -1, 0,  NULL, NULL,     0u,
+     0u,        0u},
+    {"gx5_45",
+     1,
+     114,
+     "field_id",
+     "value",
+     1,
+     2,
+     0,
+     0,
+     NULL,
+     DEV_PPS_MEMBERS_1,
+     0u,
+     -1,
+     0,
+     NULL,
+     DEV_SYNC_TIMES_1,
+     0u,
+     128,
+     18,
+     "valid_flags",
+     "tow",
+     1u,
+     2u,
+     4u},
+    {NULL, 0, 0, NULL, NULL, 0, 0, 0, 0, NULL, NULL, 0, -1, 0, NULL, NULL, 0, -1, 0, NULL, NULL, 0, 0, 0}};
+static const size_t DEV_TIMESYNC_COUNT = 2u;
+
 #endif

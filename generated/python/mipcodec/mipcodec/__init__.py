@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "6ba2e55bbe3f4637"
+SPEC_HASH = "17a97fa053a36fa9"
 
 __all__ = [
     "SPEC_HASH",

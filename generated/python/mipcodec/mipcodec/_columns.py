@@ -2922,6 +2922,14 @@ SYNC_PPS: Tuple[Tuple[int, int, str, int], ...] = (
     (0x80, 0x12, "valid_flags", 0x0001),
 )
 
+# The host clock model's parameters (session/clock.py, docs/time.md; the spec's time.clock_model):
+# device time per bucket (ns), closed buckets kept, closed buckets before an estimate, and the
+# step disagreement (ns) above which consecutive packets restart the model.
+CLOCK_BUCKET_NS = 1000000000
+CLOCK_BUCKETS = 64
+CLOCK_MIN_BUCKETS = 2
+CLOCK_RESTART_NS = 1000000000
+
 # Per device, the field carrying its own reference time (the host clock model, clock.py;
 # docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per
 # second, tow parameter, week parameter, monotonic).

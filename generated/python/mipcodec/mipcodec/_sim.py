@@ -1596,6 +1596,7 @@ TIME_SYNC: Dict[str, Dict[str, Any]] = {
                 "flags": "valid_flags",
                 "ns": "nanoseconds",
                 "ns_mask": 1,
+                "per_second": 1000000000,
             },
         ],
     },

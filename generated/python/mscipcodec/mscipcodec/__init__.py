@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "a86d21004f49ee45"
+SPEC_HASH = "eb9f6631ca28d8fc"
 
 __all__ = [
     "SPEC_HASH",

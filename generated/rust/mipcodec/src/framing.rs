@@ -64,6 +64,17 @@ pub const TIMESTAMPS: [(u8, usize); 3] = [(0xD3, 12), (0xD5, 8), (0xD7, 10)];
 /// Bytes of the largest sample key.
 pub const MAX_KEY: usize = 36;
 
+/// Device time per bucket of the host clock model (ns; the spec's time.clock_model, the project's
+/// own; `clock`, docs/time.md).
+pub const CLOCK_BUCKET_NS: i64 = 1000000000;
+/// Closed buckets the host clock model keeps.
+pub const CLOCK_BUCKETS: usize = 64;
+/// Closed buckets before the host clock model has an estimate.
+pub const CLOCK_MIN_BUCKETS: usize = 2;
+/// A larger disagreement (ns) of consecutive packets' arrival and device time steps restarts the
+/// host clock model.
+pub const CLOCK_RESTART_NS: i64 = 1000000000;
+
 // Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through";
 // per device: `Device::baud_rates`, `Device::default_baud`).
 /// (set, descriptor) of set_to_idle, sent as it is: 3dm-gx5-45-dcp.txt:363, 3dm-gx5-45-dcp.txt:759, 3dm-cv7-ins-docs.txt:8043.

@@ -9,14 +9,16 @@
 //! `f64`. The same algorithm step for step as the C, C++ and Python runtimes (the corpus
 //! tests/clock/cases.txt). `no_std`, no allocation.
 
+// The parameters: the spec's time.clock_model (the project's own choice), generated into
+// crate::framing.
 /// Device time per bucket (ns).
-pub const BUCKET_NS: i64 = 1_000_000_000;
+pub const BUCKET_NS: i64 = crate::framing::CLOCK_BUCKET_NS;
 /// Closed buckets kept.
-pub const BUCKETS: usize = 64;
+pub const BUCKETS: usize = crate::framing::CLOCK_BUCKETS;
 /// Closed buckets before there is an estimate.
-pub const MIN_BUCKETS: usize = 2;
+pub const MIN_BUCKETS: usize = crate::framing::CLOCK_MIN_BUCKETS;
 /// Consecutive packets whose arrival and device time steps differ by more restart the model.
-pub const RESTART_NS: i64 = 1_000_000_000;
+pub const RESTART_NS: i64 = crate::framing::CLOCK_RESTART_NS;
 
 /// Offset and drift of a device's reference clock against the host's (fixed size, about 1.2 KB).
 #[derive(Clone, Debug)]

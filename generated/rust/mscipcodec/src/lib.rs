@@ -124,7 +124,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "a86d21004f49ee45";
+pub const SPEC_HASH: &str = "eb9f6631ca28d8fc";
 /// The protocol's name in the spec (`spec/mscip/`), as the tools print it.
 pub const PROTOCOL: &str = "mscip";
 

@@ -1,7 +1,7 @@
 /* mipcodec-device ADDRESS SUBCOMMAND [OPTIONS]: the device command line of docs/configure-a-device.md
  * in C, for machines without Python: the same subcommands, arguments, output and exit statuses as
  * the Python package's device CLI (ping, info, send, save-startup, factory-reset, stream, settings
- * dump|diff|apply, record).
+ * dump|diff|apply, record, timesync).
  *
  * What the spec says comes from tools/device_facts.h (generated from the same derivation as the
  * Python package's _settings.py: generator/settings_rows.py); values travel as the library's
@@ -26,8 +26,8 @@
  * yaml.c (settings files), connect.c (the spec's tables, the connection), settings.c (one
  * setting's command values, read and normalized), budget.c (the link budget), requests.c (ping,
  * info, send, save-startup, factory-reset, settings dump), plan.c (settings diff and apply),
- * stream.c (stream, auto ping), record.c (record: the device's stream to a log file), main.c (the
- * options). */
+ * stream.c (stream, auto ping), record.c (record: the device's stream to a log file), timesync.c
+ * (timesync: the device's time synchronization set up and monitored), main.c (the options). */
 #ifndef MIPC_DEVICE_TOOL_H
 #define MIPC_DEVICE_TOOL_H
 
@@ -114,6 +114,9 @@ typedef struct {
     unsigned long stream_count;
     double stream_first;
     double stream_last;
+    /* every data packet's event also goes here (NULL: nowhere): timesync's monitor */
+    void (*packet_hook)(void *ctx, const mipc_session_event_t *ev);
+    void *hook_ctx;
 } conn_t;
 
 typedef enum { R_OK = 0, R_FAILED = 1, R_VALUE = 2, R_LOST = 3 } run_t;
@@ -150,6 +153,8 @@ typedef struct {
     unsigned long timeout_ms;
     double rate;
     double duration;
+    bool duration_given;
+    const char *pps_source; /* timesync: --pps-source NAME (NULL: not given) */
     unsigned long count;
     double split_size; /* record: --split-size BYTES, --split-time S */
     double split_time;
@@ -191,6 +196,7 @@ typedef struct {
     "  stream FIELD ... [--rate HZ] [--duration S] [--count N] [--json] [--force] [--keep]\n"                \
     "  settings dump [FILE|-] | settings diff FILE | settings apply FILE [--save] [--force]\n"               \
     "  record FILE [--duration S] [--split-size BYTES] [--split-time S] (docs/record.md)\n"                  \
+    "  timesync [--duration S] [--json] [--pps-source NAME] (docs/timesync.md)\n"                            \
     "  options of every subcommand: --device ID, --baud N, --timeout-ms N\n"                                 \
     "Exit status: 0 done; 1 the device said no or differs; 2 nothing was changed (usage, bad file, refused " \
     "before sending)."
@@ -287,10 +293,27 @@ val_t *normalized(conn_t *c, const dev_setting_t *s, const val_t *entry, char *e
 
 /* stream.c */
 int cmd_stream(conn_t *c, const opts_t *o);
+/* Turns the data set's stream on where the model's stream control addresses it: 0, or the exit
+ * status (the message printed). */
+int enable_stream(conn_t *c, int set);
+/* The message format entry to write: the previous one with the fields (at the decimation) as its
+ * list and the key parameters of key. */
+val_t *stream_entry(const val_t *previous, const val_t *key, const dev_format_t *spec, const int *fields,
+                    size_t nf, unsigned long decimation);
+/* Writes an entry of the message format setting: 0, or the exit status (the note printed; what
+ * is the note's text, NULL: the reason). */
+int write_format(conn_t *c, const dev_setting_t *s, const val_t *entry, const char *what);
 /* `auto ping`: pings every serial port at the rates above, one line per device that answers
  * (port, rate, model, serial number); a port that answers at no rate is one note. Exit 0 when a
  * device answered, 1 when none did. */
 int cmd_auto(const opts_t *o);
+
+/* timesync.c */
+/* `timesync`: the checks of its options before connecting (0, or 2 with the message printed). */
+int timesync_check(const opts_t *o);
+/* `timesync` (docs/timesync.md): exit 0 synchronized at the end, 1 not (the reason on stderr) or
+ * the device refused a command, 2 a usage error or no connection. */
+int cmd_timesync(conn_t *c, const opts_t *o);
 
 /* text.c */
 /* src into dst[cap], cut to fit. Not snprintf("%s"): gcc -O3 warns that it may truncate, which is

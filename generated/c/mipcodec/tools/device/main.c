@@ -79,7 +79,8 @@ static int read_option(int argc, char **argv, int *i, opts_t *o) {
     }
     if (strcmp(name, "--device") != 0 && strcmp(name, "--baud") != 0 && strcmp(name, "--timeout-ms") != 0 &&
         strcmp(name, "--rate") != 0 && strcmp(name, "--duration") != 0 && strcmp(name, "--count") != 0 &&
-        strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0) {
+        strcmp(name, "--split-size") != 0 && strcmp(name, "--split-time") != 0 &&
+        strcmp(name, "--pps-source") != 0) {
         return usage("unknown option '%s'", a);
     }
     if (eq) {
@@ -89,8 +90,11 @@ static int read_option(int argc, char **argv, int *i, opts_t *o) {
     } else {
         return usage("%s needs a value", name);
     }
+    o->duration_given = o->duration_given || strcmp(name, "--duration") == 0;
     if (strcmp(name, "--device") == 0) {
         o->model = value;
+    } else if (strcmp(name, "--pps-source") == 0) {
+        o->pps_source = value;
     } else if ((strcmp(name, "--baud") == 0 && !int_option(name, value, &o->baud)) ||
                (strcmp(name, "--timeout-ms") == 0 && !int_option(name, value, &o->timeout_ms)) ||
                (strcmp(name, "--count") == 0 && !int_option(name, value, &o->count)) ||
@@ -144,8 +148,12 @@ static int check_subcommand(const opts_t *o, const char *sub, const char *action
         }
     } else if (strcmp(sub, "ping") != 0 && strcmp(sub, "info") != 0 && strcmp(sub, "send") != 0 &&
                strcmp(sub, "stream") != 0 && strcmp(sub, "save-startup") != 0 &&
-               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0) {
+               strcmp(sub, "factory-reset") != 0 && strcmp(sub, "record") != 0 &&
+               strcmp(sub, "timesync") != 0) {
         return usage("unknown subcommand '%s'", sub);
+    }
+    if (strcmp(sub, "timesync") == 0 && timesync_check(o) != 0) {
+        return EXIT_TROUBLE;
     }
     if (o->model != NULL && model_by_id(o->model) == NULL) {
         buf_t ids = {0};
@@ -177,6 +185,8 @@ static int run(const char *address, const char *sub, const char *action, const o
             status = cmd_send(&conn, o);
         } else if (strcmp(sub, "stream") == 0) {
             status = cmd_stream(&conn, o);
+        } else if (strcmp(sub, "timesync") == 0) {
+            status = cmd_timesync(&conn, o);
         } else if (strcmp(sub, "save-startup") == 0) {
             status = cmd_save(&conn, o);
         } else {

@@ -71,7 +71,7 @@ static int data_field(const conn_t *c, const char *text, int *set, int *descript
 }
 
 /* Turns the data set's stream on where the model's stream control addresses it. */
-static int enable_stream(conn_t *c, int set) {
+int enable_stream(conn_t *c, int set) {
     size_t i;
     size_t k;
     for (i = 0; i < c->model->unaddressed_count; i++) {
@@ -184,8 +184,8 @@ static int stream_budget(conn_t *c, const opts_t *o, int set, const dev_format_t
 
 /* The message format entry to write: the previous one with the fields (at the decimation) as its
  * list and the key parameters of key. */
-static val_t *stream_entry(const val_t *previous, const val_t *key, const dev_format_t *spec,
-                           const int *fields, size_t nf, unsigned long decimation) {
+val_t *stream_entry(const val_t *previous, const val_t *key, const dev_format_t *spec, const int *fields,
+                    size_t nf, unsigned long decimation) {
     val_t *entry = val_copy(previous);
     val_t *list = val_new(V_LIST, 0);
     size_t i;
@@ -225,7 +225,7 @@ static val_t *stream_entry(const val_t *previous, const val_t *key, const dev_fo
 
 /* Writes an entry of the message format setting: 0, or the exit status (the note printed; what
  * is the note's text, NULL: the reason). */
-static int write_format(conn_t *c, const dev_setting_t *s, const val_t *entry, const char *what) {
+int write_format(conn_t *c, const dev_setting_t *s, const val_t *entry, const char *what) {
     buf_t values = {0};
     char msg[1000];
     result_t r;

@@ -74,6 +74,14 @@ static inline int mscipc_field_length_adjust(uint8_t set, uint8_t descriptor) {
 #define MSCIPC_SESSION_ACK_OK 0u
 #define MSCIPC_SESSION_MAX_EXPECT 1
 
+/* The host clock model's parameters (the spec's time.clock_model, the project's own; codec/clock.h,
+ * docs/time.md): device time per bucket (ns), closed buckets kept, closed buckets before there is
+ * an estimate, and the step disagreement (ns) above which consecutive packets restart the model. */
+#define MSCIPC_CLOCK_BUCKET_NS 1000000000LL
+#define MSCIPC_CLOCK_BUCKETS 2
+#define MSCIPC_CLOCK_MIN_BUCKETS 3
+#define MSCIPC_CLOCK_RESTART_NS 1000000000LL
+
 /* Getting through to a device (the IR's `link`, docs/conformance.md section 8 "Getting through"):
  * the idle, ping and resume commands (HAS 0: the manual names none), how many times the idle
  * command is sent before giving up, the milliseconds after a baud-rate change before the device

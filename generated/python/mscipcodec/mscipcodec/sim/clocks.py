@@ -217,7 +217,8 @@ class Clocks:
                     setattr(value, x["week"], int(week))
                     flags = (x["tow_mask"] if tow_set else 0) | (x["week_mask"] if week_set else 0)
                 else:
-                    setattr(value, x["ns"], max(0, int(round((week * WEEK_S + tow) * 1e9))))
+                    # the external time as a count (the spec's time.external entry of the field)
+                    setattr(value, x["ns"], max(0, int(round((week * WEEK_S + tow) * x["per_second"]))))
                     flags = x["ns_mask"] if (tow_set and week_set and self.pps_kind_at(t)) else 0
                 _flags(value, x["flags"], flags)
                 return

@@ -38,6 +38,10 @@
     !defined(CODEC_LINK_FIELD_OVERHEAD)
 #error "codec/protocol.h lacks a link constant of the runtime contract"
 #endif
+#if !defined(CODEC_CLOCK_BUCKET_NS) || !defined(CODEC_CLOCK_BUCKETS) || !defined(CODEC_CLOCK_MIN_BUCKETS) || \
+    !defined(CODEC_CLOCK_RESTART_NS)
+#error "codec/protocol.h lacks a clock model constant of the runtime contract"
+#endif
 #if !defined(CODEC_IDENTITY_HAS) || !defined(CODEC_IDENTITY_SET) || !defined(CODEC_IDENTITY_COMMAND) ||      \
     !defined(CODEC_IDENTITY_REPLY) || !defined(CODEC_IDENTITY_MODEL_OFFSET) ||                               \
     !defined(CODEC_IDENTITY_MODEL_LENGTH) || !defined(CODEC_IDENTITY_UNKNOWN_CODES) ||                       \

@@ -38,6 +38,10 @@ static_assert(is<decltype(pkg::kMaxPayload), std::size_t> && is<decltype(pkg::kC
 static_assert(is<decltype(pkg::kBigEndian), bool> && is<decltype(pkg::kMaxErrorPath), std::size_t> &&
               is<decltype(pkg::kMaxJsonDepth), std::size_t>);
 static_assert(pkg::kMaxPacket == pkg::kHeaderSize + pkg::kMaxPayload + pkg::kChecksumSize);
+static_assert(is<decltype(pkg::kClockBucketNs), std::int64_t> &&
+              is<decltype(pkg::kClockBuckets), std::size_t> &&
+              is<decltype(pkg::kClockMinBuckets), std::size_t> &&
+              is<decltype(pkg::kClockRestartNs), std::int64_t>);
 static_assert(is_byte_array<std::remove_cv_t<decltype(pkg::sample_rule::kDataSets)>> &&
               is<decltype(pkg::sample_rule::kFirstShared), unsigned> &&
               is<decltype(pkg::sample_rule::kTimestamps[0].descriptor), std::uint8_t> &&

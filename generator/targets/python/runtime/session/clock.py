@@ -17,10 +17,11 @@ from typing import Any, Optional
 from .. import _columns
 from ..codec.packets import DecodedField
 
-BUCKET_NS = 1_000_000_000  # device time per bucket
-BUCKETS = 64  # closed buckets kept
-MIN_BUCKETS = 2  # closed buckets before there is an estimate
-RESTART_NS = 1_000_000_000  # consecutive packets whose arrival and device time steps differ by more restart
+# The model's parameters: the spec's time.clock_model (the project's own choice), generated.
+BUCKET_NS = _columns.CLOCK_BUCKET_NS  # device time per bucket
+BUCKETS = _columns.CLOCK_BUCKETS  # closed buckets kept
+MIN_BUCKETS = _columns.CLOCK_MIN_BUCKETS  # closed buckets before there is an estimate
+RESTART_NS = _columns.CLOCK_RESTART_NS  # consecutive packets whose arrival and device time steps differ by more restart
 
 
 class ClockModel:

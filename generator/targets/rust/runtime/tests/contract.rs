@@ -25,7 +25,7 @@ type FromJsonFn = fn(u8, u8, Option<Device>, &Json) -> Result<FieldValue, JsonEr
 #[test]
 fn framing_provides_the_constants_the_runtime_reads() {
     let sync: &[u8] = &framing::SYNC;
-    let sizes: [usize; 13] = [
+    let sizes: [usize; 15] = [
         framing::HEADER_SIZE,
         framing::SET_OFFSET,
         framing::LENGTH_OFFSET,
@@ -39,7 +39,11 @@ fn framing_provides_the_constants_the_runtime_reads() {
         framing::MAX_FIELD_DATA,
         framing::PATH_DEPTH,
         framing::MAX_KEY,
+        framing::CLOCK_BUCKETS,
+        framing::CLOCK_MIN_BUCKETS,
     ];
+    let clock_ns: [i64; 2] = [framing::CLOCK_BUCKET_NS, framing::CLOCK_RESTART_NS];
+    assert!(clock_ns.iter().all(|&n| n > 0));
     let flags: [bool; 3] = [
         framing::FIELD_LENGTH_COUNTS_HEADER,
         framing::BIG_ENDIAN,

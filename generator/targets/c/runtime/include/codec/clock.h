@@ -10,14 +10,16 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "codec/protocol.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-#define CODEC_CLOCK_BUCKET_NS 1000000000LL  /* device time per bucket */
-#define CODEC_CLOCK_BUCKETS 64              /* closed buckets kept */
-#define CODEC_CLOCK_MIN_BUCKETS 2           /* closed buckets before there is an estimate */
-#define CODEC_CLOCK_RESTART_NS 1000000000LL /* a larger step disagreement restarts the model */
+/* The model's parameters come from codec/protocol.h (the spec's time.clock_model):
+ * CODEC_CLOCK_BUCKET_NS (device time per bucket), CODEC_CLOCK_BUCKETS (closed buckets kept),
+ * CODEC_CLOCK_MIN_BUCKETS (closed buckets before there is an estimate), CODEC_CLOCK_RESTART_NS (a
+ * larger step disagreement restarts the model). */
 
 /**
  * Fixed-size state (no allocation; about 1.2 KB). Per bucket of device time the packet with the

@@ -105,6 +105,9 @@ static void on_event(void *ctx, const codec_session_event_t *ev) {
     conn_t *c = (conn_t *)ctx;
     size_t n;
     val_t *line;
+    if (ev->kind == CODEC_SESSION_PACKET && c->packet_hook != NULL) {
+        c->packet_hook(c->hook_ctx, ev);
+    }
     if (ev->kind != CODEC_SESSION_PACKET || c->stream_set < 0) {
         return;
     }

@@ -8,14 +8,17 @@
 #include <cstdint>
 #include <optional>
 
+#include "protopkg/framing.hpp"
+
 namespace protopkg {
 
 class ClockModel {
   public:
-    static constexpr std::int64_t kBucketNs = 1000000000;  ///< device time per bucket
-    static constexpr std::size_t kBuckets = 64;            ///< closed buckets kept
-    static constexpr std::size_t kMinBuckets = 2;          ///< closed buckets before an estimate
-    static constexpr std::int64_t kRestartNs = 1000000000; ///< a larger step disagreement restarts
+    // the parameters: the spec's time.clock_model (framing.hpp)
+    static constexpr std::int64_t kBucketNs = kClockBucketNs;    ///< device time per bucket
+    static constexpr std::size_t kBuckets = kClockBuckets;       ///< closed buckets kept
+    static constexpr std::size_t kMinBuckets = kClockMinBuckets; ///< closed buckets before an estimate
+    static constexpr std::int64_t kRestartNs = kClockRestartNs;  ///< a larger step disagreement restarts
 
     /// One data packet: its device reference time and host arrival time (ns); its host time once
     /// estimated.

@@ -98,7 +98,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "2e50ffb2c2f49eaf"
+SPEC_HASH = "09faa6715ed220e4"
 
 __all__ = [
     "SPEC_HASH",

@@ -54,6 +54,14 @@ inline constexpr std::size_t kMaxErrorPath = 23;
 /// Deepest JSON nesting of a canonical line.
 inline constexpr std::size_t kMaxJsonDepth = 10;
 
+/// The host clock model's parameters (the spec's time.clock_model, the project's own; clock.hpp,
+/// docs/time.md): device time per bucket (ns), closed buckets kept, closed buckets before an
+/// estimate, the step disagreement (ns) above which consecutive packets restart the model.
+inline constexpr std::int64_t kClockBucketNs = 1000000000;
+inline constexpr std::size_t kClockBuckets = 2;
+inline constexpr std::size_t kClockMinBuckets = 3;
+inline constexpr std::int64_t kClockRestartNs = 1000000000;
+
 /// The sample rule exported as `samples` in generated/ir.json (read by samples.hpp).
 namespace sample_rule {
 inline constexpr std::array<std::uint8_t, 3> kDataSets = {0x90, 0x91, 0x92};

@@ -12,7 +12,7 @@
 #define DEMOCODEC_VERSION "2.10.3"
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two packages
 /// with the same hash were generated from the same spec.
-#define DEMOCODEC_SPEC_HASH "2e50ffb2c2f49eaf"
+#define DEMOCODEC_SPEC_HASH "09faa6715ed220e4"
 
 namespace democodec {
 
@@ -20,6 +20,6 @@ inline constexpr int kVersionMajor = 2;
 inline constexpr int kVersionMinor = 10;
 inline constexpr int kVersionPatch = 3;
 inline constexpr std::string_view kVersion = "2.10.3";
-inline constexpr std::string_view kSpecHash = "2e50ffb2c2f49eaf";
+inline constexpr std::string_view kSpecHash = "09faa6715ed220e4";
 
 } // namespace democodec
