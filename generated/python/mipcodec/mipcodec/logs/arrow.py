@@ -37,7 +37,7 @@ class ArrowCsvText:
             t = col.type
             if pa.types.is_floating(t):
                 col = _float_texts(np, pa, col)
-            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(pa, col):
+            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(np, pa, col):
                 plain = False  # (the check in arrow: the cells become Python strings only here)
                 texts = col.to_pylist()
                 col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
@@ -54,9 +54,14 @@ class ArrowCsvText:
         self.file.close()
 
 
-def _needs_quotes(pa: Any, col: Any) -> bool:
+def _needs_quotes(np: Any, pa: Any, col: Any) -> bool:
     """Whether a string column has a cell the csv module would quote (a comma, quote or line end)."""
     if col.null_count == len(col):
+        return False
+    first, last = col.offset, col.offset + len(col)  # the cells' bytes, from the offsets buffer
+    bounds = np.frombuffer(col.buffers()[1], dtype=np.int64 if pa.types.is_large_string(col.type) else np.int32)
+    cells = bytes(memoryview(col.buffers()[2] or b"")[int(bounds[first]) : int(bounds[last])])
+    if not any(c in cells for c in (b",", b'"', b"\n", b"\r")):  # (memchr: most columns)
         return False
     pc = importlib.import_module("pyarrow.compute")
     return bool(pc.any(pc.match_substring_regex(col, '[,"\n\r]')).as_py())
@@ -74,18 +79,17 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     """The text of each value of a float32 / float64 arrow array as the packet path prints it
     (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
     positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
-    float32 values (where repr is positional too): there, its text plus `.0` when integral is
-    repr's; the values outside that range or in pyarrow's exponent form are printed by repr (a
-    float32's: its pyarrow digits read as a double, which repr prints as `f32_text` does: the same
-    shortest digits, positional from 1e-4 to below 1e16)."""
+    float32 values (where repr is positional too): there, its text is repr's but for integral
+    values; those, the values outside that range and those in pyarrow's exponent form are printed
+    by repr (a float32's: its pyarrow digits read as a double, which repr prints as `f32_text`
+    does: the same shortest digits, positional from 1e-4 to below 1e16, `.0` when integral)."""
     pc = importlib.import_module("pyarrow.compute")
     single = col.type == pa.float32()
     text = pc.cast(col, pa.string())
-    text = pc.replace_substring_regex(text, pattern="^(-?[0-9]+)$", replacement="\\1.0")  # integral: .0
     values = values_view(np, col, np.float32 if single else np.float64)  # (pa.scalar would import pandas)
     size = np.abs(values.astype(np.float64))
     with np.errstate(invalid="ignore"):
-        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
+        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15) | (size == np.floor(size)))  # integral: .0
     odd |= bool_values(np, pc.match_substring(text, "e"))  # pyarrow's exponent form
     if col.null_count:
         odd &= bool_values(np, col.is_valid())

@@ -145,12 +145,15 @@ def bool_values(np: Any, col: Any) -> Any:
 def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
     """An arrow string array of Python strings, built from its buffers (pa.array would import
     pandas, about a quarter of a second, on its first call)."""
-    data = [t.encode("utf-8") for t in texts]
-    offsets = np.zeros(len(data) + 1, dtype=np.int64)
-    np.cumsum(np.fromiter(map(len, data), dtype=np.int64, count=len(data)), out=offsets[1:])
+    n = len(texts)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(np.fromiter(map(len, texts), dtype=np.int64, count=n), out=offsets[1:])
+    body = "".join(texts).encode("utf-8")
+    if len(body) != offsets[-1]:  # not all ASCII: the lengths in bytes
+        data = [t.encode("utf-8") for t in texts]
+        np.cumsum(np.fromiter(map(len, data), dtype=np.int64, count=n), out=offsets[1:])
     kind, width = (pa.string(), np.int32) if offsets[-1] < 1 << 31 else (pa.large_string(), np.int64)
-    body = pa.py_buffer(b"".join(data))
-    return pa.Array.from_buffers(kind, len(data), [None, pa.py_buffer(offsets.astype(width)), body], 0)
+    return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], 0)
 
 
 def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
@@ -165,9 +168,19 @@ def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
         t_ns = t_ns.combine_chunks()
     n = len(t_ns)
     ns = values_view(np, t_ns, np.int64)  # (not fill_null: pa.scalar imports pandas)
+    if t_ns.null_count:
+        ns = np.where(bool_values(np, t_ns.is_valid()), ns, 0)  # (a null slot holds anything)
     us = np.where(ns < 0, -(-ns // 1000), ns // 1000)
     sec, frac = np.divmod(us, 1_000_000)
-    seconds, where = np.unique(sec, return_inverse=True)
+    # The seconds of the runs of equal seconds (a log's times mostly rise: few runs), else sorted.
+    starts = np.flatnonzero(sec[1:] != sec[:-1]) + 1 if n else np.zeros(0, dtype=np.int64)
+    if len(starts) < n // 4:
+        seconds = sec[np.concatenate(([0], starts))] if n else sec
+        where = np.zeros(n, dtype=np.int64)
+        where[starts] = 1
+        where = np.cumsum(where)
+    else:
+        seconds, where = np.unique(sec, return_inverse=True)
     epoch = datetime.datetime(1970, 1, 1)
     try:
         heads = [(epoch + datetime.timedelta(seconds=int(s))).strftime("%Y-%m-%dT%H:%M:%S") for s in seconds]
