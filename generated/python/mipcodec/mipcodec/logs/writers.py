@@ -136,6 +136,8 @@ def bool_values(np: Any, col: Any) -> Any:
     """A boolean arrow array as numpy bools, null as False (to_numpy would import pandas)."""
     n, at = len(col), col.offset
     validity, data = col.buffers()[:2]
+    if data is None:  # (an array of nulls only)
+        return np.zeros(n, dtype=bool)
     out = np.unpackbits(np.frombuffer(data, dtype=np.uint8), bitorder="little")[at : at + n].astype(bool)
     if col.null_count:
         out &= np.unpackbits(np.frombuffer(validity, dtype=np.uint8), bitorder="little")[at : at + n].astype(bool)
