@@ -369,9 +369,13 @@ def generate(
     workers = min(len(plans), jobs or (1 if short else cpus()))
     if workers > 1:  # processes started afresh (spawn): the caller's threads are not copied
         import multiprocessing
+        import site
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+        # The workers import this package from where this process found it (maybe not on sys.path).
+        where = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+        spawn = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(workers, mp_context=spawn, initializer=site.addsitedir, initargs=(where,)) as pool:
             entries = list(pool.map(_simulate_device, plans))
     else:
         entries = [simulate(dev, path) for dev, path in plans]
