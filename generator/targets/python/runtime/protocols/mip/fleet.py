@@ -67,7 +67,6 @@ POLL_STEP = Fraction(1, 100)
 GARBAGE_EVERY = 997  # about one packet in this many is preceded by garbage
 MIN_SECONDS = 10  # the shortest log (--size too small for a device gets this much)
 MANIFEST = "fleet.json"
-PARALLEL_SECONDS = 120  # simulated seconds in all from which the devices are simulated in parallel
 
 
 def _mod(name: str) -> Any:
@@ -328,7 +327,7 @@ def _simulate_device(args: Tuple[Device, str]) -> Dict[str, Any]:
 
 
 def cpus() -> int:
-    """The processors this process may run on (the default --jobs)."""
+    """The processors this process may run on (the most --jobs uses)."""
     try:
         return len(os.sched_getaffinity(0))
     except (AttributeError, OSError):
@@ -344,8 +343,8 @@ def generate(
     jobs: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Writes the fleet into `out` (created if needed); returns the manifest (also fleet.json).
-    The devices are simulated by `jobs` processes at once (default: one per processor, or one
-    for a fleet of fewer than PARALLEL_SECONDS simulated seconds in all; each device's log is its
+    The devices are simulated by `jobs` processes at once (default 1: a process costs about half
+    a second of start-up and gains only on a processor nobody else uses; each device's log is its
     own simulation, so the bytes do not depend on it)."""
     if not all(m in registry.DEVICES for m in MODELS):
         raise ValueError(f"this package simulates no fleet: it has no {' and '.join(MODELS)} devices")
@@ -364,9 +363,7 @@ def generate(
             seconds = max(MIN_SECONDS, int(round(hours * 3600)))
         dev = Device(k, seed, seconds, truncated=k == devices - 1)
         plans.append((dev, os.path.join(out, dev.name)))
-    # A process costs about half a second of start-up (spawn, imports): not for a short fleet.
-    short = sum(dev.seconds for dev, _ in plans) < PARALLEL_SECONDS
-    workers = min(len(plans), jobs or (1 if short else cpus()))
+    workers = min(len(plans), jobs or 1, cpus())
     if workers > 1:  # processes started afresh (spawn): the caller's threads are not copied
         import multiprocessing
         import site
@@ -418,7 +415,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     p.add_argument("--hours", type=float, default=1.0, help="simulated hours per device (default 1)")
     p.add_argument("--seed", type=int, default=0, help="seed (default 0)")
     p.add_argument(
-        "--jobs", type=int, metavar="N", help="devices simulated at once, one process each (default: the processors)"
+        "--jobs",
+        type=int,
+        metavar="N",
+        help="devices simulated at once, one process each (default 1; at most the processors)",
     )
     p.add_argument(
         "--size",
