@@ -140,8 +140,9 @@ def _digest(directory: Path) -> dict:
 
 
 def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path: Path) -> None:
-    for name, seed in (("a", 3), ("b", 3), ("c", 4)):
-        fleet.generate(str(tmp_path / name), devices=2, hours=12 / 3600, seed=seed)
+    """Also whatever the number of processes (b: one per device, where there are two processors)."""
+    for name, seed, jobs in (("a", 3, 1), ("b", 3, 2), ("c", 4, None)):
+        fleet.generate(str(tmp_path / name), devices=2, hours=12 / 3600, seed=seed, jobs=jobs)
     a, b, c = (_digest(tmp_path / n) for n in "abc")
     assert a == b
     assert set(a) == set(c) and all(a[k] != c[k] for k in a if k.endswith(".mip"))

@@ -10,6 +10,7 @@ must not follow the input; no wall-clock assertions.
 from __future__ import annotations
 
 import errno
+import importlib
 import json
 import math
 import os
@@ -449,6 +450,26 @@ def test_f32_text_is_the_shortest_float32_digits_in_repr_layout():
         assert f32(float(text)) == v and text == repr(float(text))
         digits = len(text.split("e")[0].replace("-", "").replace(".", "").strip("0"))
         assert digits <= 1 or f32(float(f"{v:.{digits - 1}g}")) != v, (v, text)
+
+
+def test_time_text_of_the_columnar_csv_is_timebase_iso():
+    """The CSV `time` cells of the columnar path (writers.iso_texts, digits from numpy) are
+    timebase.iso's text of each t_ns (microseconds, truncated toward zero; empty where t_ns is
+    null), also for times before 1970, rows out of order and a sliced column."""
+    pa = pytest.importorskip("pyarrow")
+    tools = pkg("mipcodec").logs.writers
+    iso = importlib.import_module("mipcodec.logs.timebase").iso
+    rng = random.Random(50)
+    base = 1773479642 * 10**9  # 2026-03-14T09:14:02Z
+    values = [base + k * 10_000_000 for k in range(300)]  # 100 Hz, rising
+    values += [rng.randrange(-(10**18), 4 * 10**18) for _ in range(300)]  # any order, 1938..2096
+    values += [None, -1, -999, -1000, -1001, 0, 999, 1000, None, 2**63 - 1, -(2**63) + 1]
+    column = pa.array(values, type=pa.int64())
+    for part in (column, column.slice(7, 400)):
+        got = tools.iso_texts(np, pa, part).to_pylist()
+        micro = [None if v is None else -(-v // 1000 * 1000) if v < 0 else v // 1000 * 1000 for v in part.to_pylist()]
+        want = [None if v is None else iso(v) for v in micro]
+        assert got == want
 
 
 def capture_or_vectors() -> list:

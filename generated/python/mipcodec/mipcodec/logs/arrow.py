@@ -9,7 +9,7 @@ import importlib
 import io
 from typing import Any, List
 
-from .writers import f32_text
+from .writers import bool_values, text_array, values_view
 
 
 class ArrowCsvText:
@@ -37,7 +37,7 @@ class ArrowCsvText:
             t = col.type
             if pa.types.is_floating(t):
                 col = _float_texts(np, pa, col)
-            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(pa, col):
+            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(np, pa, col):
                 plain = False  # (the check in arrow: the cells become Python strings only here)
                 texts = col.to_pylist()
                 col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
@@ -54,9 +54,14 @@ class ArrowCsvText:
         self.file.close()
 
 
-def _needs_quotes(pa: Any, col: Any) -> bool:
+def _needs_quotes(np: Any, pa: Any, col: Any) -> bool:
     """Whether a string column has a cell the csv module would quote (a comma, quote or line end)."""
     if col.null_count == len(col):
+        return False
+    first, last = col.offset, col.offset + len(col)  # the cells' bytes, from the offsets buffer
+    bounds = np.frombuffer(col.buffers()[1], dtype=np.int64 if pa.types.is_large_string(col.type) else np.int32)
+    cells = bytes(memoryview(col.buffers()[2] or b"")[int(bounds[first]) : int(bounds[last])])
+    if not any(c in cells for c in (b",", b'"', b"\n", b"\r")):  # (memchr: most columns)
         return False
     pc = importlib.import_module("pyarrow.compute")
     return bool(pc.any(pc.match_substring_regex(col, '[,"\n\r]')).as_py())
@@ -74,28 +79,31 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     """The text of each value of a float32 / float64 arrow array as the packet path prints it
     (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
     positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
-    float32 values (where repr is positional too): there, its text plus `.0` when integral is
-    repr's; the values outside that range or in pyarrow's exponent form are printed one by one."""
+    float32 values (where repr is positional too): there, its text is repr's but for integral
+    values; those, the values outside that range and those in pyarrow's exponent form are printed
+    by repr (a float32's: its pyarrow digits read as a double, which repr prints as `f32_text`
+    does: the same shortest digits, positional from 1e-4 to below 1e16, `.0` when integral)."""
     pc = importlib.import_module("pyarrow.compute")
     single = col.type == pa.float32()
     text = pc.cast(col, pa.string())
-    integral = pc.match_substring_regex(text, "^-?[0-9]+$")
-    text = pc.if_else(integral, pc.binary_join_element_wise(text, pa.scalar(".0"), ""), text)
-    values = col.fill_null(0).to_numpy(zero_copy_only=False)
+    values = values_view(np, col, np.float32 if single else np.float64)  # (pa.scalar would import pandas)
     size = np.abs(values.astype(np.float64))
     with np.errstate(invalid="ignore"):
-        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15))
-    odd |= pc.match_substring(text, "e").fill_null(False).to_numpy(zero_copy_only=False)  # pyarrow's exponent form
+        odd = np.isfinite(size) & ((size < 2e-4) | (size >= 1e15) | (size == np.floor(size)))  # integral: .0
+    odd |= bool_values(np, pc.match_substring(text, "e"))  # pyarrow's exponent form
     if col.null_count:
-        odd &= col.is_valid().to_numpy(zero_copy_only=False)
+        odd &= bool_values(np, col.is_valid())
     where = np.flatnonzero(odd)
     if len(where) == 0:
         return text
-    fmt = f32_text if single else (lambda v: repr(float(v)))
-    fixed = pa.array([fmt(float(v)) for v in values[where]], type=pa.string())
+    if single:  # pyarrow's shortest float32 digits read as a double: repr prints them as f32_text does
+        exact = values_view(np, pc.cast(text.take(to_arrow(np, pa, where)), pa.float64()), np.float64)
+    else:
+        exact = values[where]
+    fixed = text_array(np, pa, list(map(repr, exact.tolist())))
     mask = np.zeros(len(values), dtype=bool)
     mask[where] = True
-    return pc.replace_with_mask(text, pa.array(mask), fixed)
+    return pc.replace_with_mask(text, to_arrow(np, pa, mask), fixed)
 
 
 def f32_texts(np: Any, a: Any) -> Any:

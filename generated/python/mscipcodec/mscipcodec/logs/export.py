@@ -25,8 +25,10 @@ from .writers import (
     Outputs,
     Rows,
     Writer,
+    iso_texts,
     select,
     table_name,
+    text_array,
 )
 
 
@@ -372,7 +374,9 @@ class FastExporter:
             return to_arrow(np, pa, a.astype(np.float32))
         if kind == "enum" and not self.enum_numbers:
             names = _columns.ENUMS.get(enum or "", {})
-            return pa.array([names.get(int(v), str(int(v))) for v in a], type=pa.string())
+            values, where = np.unique(a, return_inverse=True)  # each value's name once
+            texts = text_array(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()])
+            return texts.take(to_arrow(np, pa, where.reshape(-1).astype(np.int64)))
         if kind == "bool":
             return to_arrow(np, pa, a.astype(bool))
         if kind in ("int", "bits", "enum") and a.dtype == np.uint64 and (a.size == 0 or a.max() < (1 << 63)):
@@ -408,7 +412,8 @@ class FastExporter:
             if len(parts) > 1:
                 col = col.take(to_arrow(np, pa, order))
             columns.append(col)
-        columns.insert(1, time_array(pa, columns[0], self.fmt == "csv"))
+        text = iso_texts(np, pa, columns[0]) if self.fmt == "csv" else None
+        columns.insert(1, text if text is not None else time_array(pa, columns[0], self.fmt == "csv"))
         table = pa.Table.from_arrays(columns, names=headers)
         with self.lock:
             w = self._writer(key, table)

@@ -124,6 +124,91 @@ class Layout:
         return out
 
 
+def values_view(np: Any, col: Any, dtype: Any) -> Any:
+    """The values of a primitive arrow array (of numpy type `dtype`) as a numpy view, whatever
+    its null slots hold."""
+    if col.buffers()[1] is None:  # (an array of nulls only)
+        return np.zeros(len(col), dtype=dtype)
+    return np.frombuffer(col.buffers()[1], dtype=dtype, count=len(col) + col.offset)[col.offset :]
+
+
+def bool_values(np: Any, col: Any) -> Any:
+    """A boolean arrow array as numpy bools, null as False (to_numpy would import pandas)."""
+    n, at = len(col), col.offset
+    validity, data = col.buffers()[:2]
+    if data is None:  # (an array of nulls only)
+        return np.zeros(n, dtype=bool)
+    out = np.unpackbits(np.frombuffer(data, dtype=np.uint8), bitorder="little")[at : at + n].astype(bool)
+    if col.null_count:
+        out &= np.unpackbits(np.frombuffer(validity, dtype=np.uint8), bitorder="little")[at : at + n].astype(bool)
+    return out
+
+
+def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
+    """An arrow string array of Python strings, built from its buffers (pa.array would import
+    pandas, about a quarter of a second, on its first call)."""
+    n = len(texts)
+    offsets = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(np.fromiter(map(len, texts), dtype=np.int64, count=n), out=offsets[1:])
+    body = "".join(texts).encode("utf-8")
+    if len(body) != offsets[-1]:  # not all ASCII: the lengths in bytes
+        data = [t.encode("utf-8") for t in texts]
+        np.cumsum(np.fromiter(map(len, data), dtype=np.int64, count=n), out=offsets[1:])
+    kind, width = (pa.string(), np.int32) if offsets[-1] < 1 << 31 else (pa.large_string(), np.int64)
+    return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], 0)
+
+
+def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
+    """The `time` text of an arrow int64 `t_ns` column (UTC ns, null where unknown) as
+    `timebase.iso` writes it (2026-03-14T09:14:02.010000Z: microseconds, truncated toward zero as
+    pipeline.time_array's timestamps are), as an arrow string array: each distinct second's
+    `YYYY-MM-DDTHH:MM:SS` from datetime once, the microseconds as digits, 27 bytes a row.
+    None where a second's text is not 19 characters (a year before 1000 or after 9999)."""
+    import datetime
+
+    if isinstance(t_ns, pa.ChunkedArray):
+        t_ns = t_ns.combine_chunks()
+    n = len(t_ns)
+    ns = values_view(np, t_ns, np.int64)  # (not fill_null: pa.scalar imports pandas)
+    if t_ns.null_count:
+        ns = np.where(bool_values(np, t_ns.is_valid()), ns, 0)  # (a null slot holds anything)
+    us = np.where(ns < 0, -(-ns // 1000), ns // 1000)
+    sec, frac = np.divmod(us, 1_000_000)
+    # The seconds of the runs of equal seconds (a log's times mostly rise: few runs), else sorted.
+    starts = np.flatnonzero(sec[1:] != sec[:-1]) + 1 if n else np.zeros(0, dtype=np.int64)
+    if len(starts) < n // 4:
+        seconds = sec[np.concatenate(([0], starts))] if n else sec
+        where = np.zeros(n, dtype=np.int64)
+        where[starts] = 1
+        where = np.cumsum(where)
+    else:
+        seconds, where = np.unique(sec, return_inverse=True)
+    epoch = datetime.datetime(1970, 1, 1)
+    try:
+        heads = [(epoch + datetime.timedelta(seconds=int(s))).strftime("%Y-%m-%dT%H:%M:%S") for s in seconds]
+    except OverflowError:
+        return None
+    if any(len(h) != 19 for h in heads):
+        return None
+    table = np.frombuffer("".join(heads).encode("ascii"), dtype=np.uint8).reshape(-1, 19)
+    cells = np.empty((n, 27), dtype=np.uint8)
+    cells[:, :19] = table[where.reshape(-1)]
+    cells[:, 19] = ord(".")
+    for k in range(6):
+        cells[:, 25 - k] = frac % 10 + ord("0")
+        frac = frac // 10
+    cells[:, 26] = ord("Z")
+    offsets = np.arange(0, 27 * (n + 1), 27, dtype=np.int32)
+    nulls = t_ns.null_count
+    valid = None
+    if nulls:  # the validity bits from offset 0 (is_valid().to_numpy would import pandas)
+        valid = t_ns.buffers()[0]
+        if t_ns.offset:
+            bits = np.unpackbits(np.frombuffer(valid, dtype=np.uint8), bitorder="little")
+            valid = pa.py_buffer(np.packbits(bits[t_ns.offset : t_ns.offset + n], bitorder="little"))
+    return pa.Array.from_buffers(pa.string(), n, [valid, pa.py_buffer(offsets), pa.py_buffer(cells.reshape(-1))], nulls)
+
+
 def header(name: str, units: Optional[str]) -> str:
     return f"{name} [{units}]" if units else name
 

@@ -1,7 +1,7 @@
 """A simulated fleet (issue 41, docs/fleet.md): the raw logs several simulated devices write, for
 tests and benchmarks of the dataset, Spark and DuckDB tooling.
 
-    python -m <package>.fleet --out DIR [--devices N] [--hours H] [--seed S] [--size BYTES]
+    python -m <package>.fleet --out DIR [--devices N] [--hours H] [--seed S] [--size BYTES] [--jobs N]
 
 writes DIR/<NAME>.mip per device and DIR/fleet.json, the manifest of what was simulated. The
 devices are the package's simulator (`sim.Simulator`, driven in process with an injected clock:
@@ -322,16 +322,38 @@ def _bytes_per_second(model: str) -> float:
     return float(sum(len(b) for _, b in chunks))
 
 
+def _simulate_device(args: Tuple[Device, str]) -> Dict[str, Any]:
+    return simulate(*args)
+
+
+def cpus() -> int:
+    """The processors this process may run on (the most --jobs uses)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 def generate(
-    out: str, devices: int = 4, hours: float = 1.0, seed: int = 0, size: Optional[int] = None
+    out: str,
+    devices: int = 4,
+    hours: float = 1.0,
+    seed: int = 0,
+    size: Optional[int] = None,
+    jobs: Optional[int] = None,
 ) -> Dict[str, Any]:
-    """Writes the fleet into `out` (created if needed); returns the manifest (also fleet.json)."""
+    """Writes the fleet into `out` (created if needed); returns the manifest (also fleet.json).
+    The devices are simulated by `jobs` processes at once (default 1: a process costs about half
+    a second of start-up and gains only on a processor nobody else uses; each device's log is its
+    own simulation, so the bytes do not depend on it)."""
     if not all(m in registry.DEVICES for m in MODELS):
         raise ValueError(f"this package simulates no fleet: it has no {' and '.join(MODELS)} devices")
     if devices < 1:
         raise ValueError(f"--devices {devices}: expected at least 1")
+    if jobs is not None and jobs < 1:
+        raise ValueError(f"--jobs {jobs}: expected at least 1")
     os.makedirs(out, exist_ok=True)
-    entries = []
+    plans = []
     rates = {m: _bytes_per_second(m) for m in MODELS} if size is not None else {}
     for k in range(devices):
         model = MODELS[k % 2]
@@ -340,7 +362,20 @@ def generate(
         else:
             seconds = max(MIN_SECONDS, int(round(hours * 3600)))
         dev = Device(k, seed, seconds, truncated=k == devices - 1)
-        entries.append(simulate(dev, os.path.join(out, dev.name)))
+        plans.append((dev, os.path.join(out, dev.name)))
+    workers = min(len(plans), jobs or 1, cpus())
+    if workers > 1:  # processes started afresh (spawn): the caller's threads are not copied
+        import multiprocessing
+        import site
+        from concurrent.futures import ProcessPoolExecutor
+
+        # The workers import this package from where this process found it (maybe not on sys.path).
+        where = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+        spawn = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(workers, mp_context=spawn, initializer=site.addsitedir, initargs=(where,)) as pool:
+            entries = list(pool.map(_simulate_device, plans))
+    else:
+        entries = [simulate(dev, path) for dev, path in plans]
     manifest = {
         "generator": f"{__package__}.fleet",
         "seed": seed,
@@ -380,6 +415,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     p.add_argument("--hours", type=float, default=1.0, help="simulated hours per device (default 1)")
     p.add_argument("--seed", type=int, default=0, help="seed (default 0)")
     p.add_argument(
+        "--jobs",
+        type=int,
+        metavar="N",
+        help="devices simulated at once, one process each (default 1; at most the processors)",
+    )
+    p.add_argument(
         "--size",
         type=_size,
         metavar="BYTES",
@@ -389,7 +430,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     try:
         if not (math.isfinite(args.hours) and 0 < args.hours <= 24 * 366):
             raise ValueError(f"--hours {args.hours:g}: expected more than 0, at most a year")
-        manifest = generate(args.out, args.devices, args.hours, args.seed, args.size)
+        manifest = generate(args.out, args.devices, args.hours, args.seed, args.size, args.jobs)
     except ValueError as e:
         print(f"{p.prog}: {e}", file=sys.stderr)
         return 2
