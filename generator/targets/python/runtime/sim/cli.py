@@ -10,7 +10,6 @@ from typing import List, Optional, Tuple
 from .. import _link, registry
 from ..codec.stdio import closed_stdout
 from . import (
-    BAUD_CODES,
     FAULT_KINDS,
     IDENTITY_FLAGS,
     MAX_REPLAY_BYTES,
@@ -21,8 +20,8 @@ from . import (
     check_speed,
     parse_identity,
     replay_chunks,
-    serve,
 )
+from .hosts import BAUD_CODES, serve
 from .world import gps_start_of_utc
 
 
