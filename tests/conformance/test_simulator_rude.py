@@ -145,6 +145,7 @@ def test_a_host_that_floods_commands_without_reading_is_dropped_and_the_next_ser
         # hosts at once), before the rude one is dropped at the stall bound.
         waited = _pinged(sim, STALL_S + 20)
         assert waited < STALL_S  # served beside the rude one, not after it was dropped
+        said = _stderr_line(sim, "a host read nothing for 5 s: disconnected", STALL_S + 20)
         peak = _rss_kb(sim.proc.pid, "VmHWM")
         assert peak - base < SLACK_KB, (base, peak)
         rude.setblocking(True)
@@ -157,7 +158,18 @@ def test_a_host_that_floods_commands_without_reading_is_dropped_and_the_next_ser
             _reset(gone)
         assert _pinged(sim, 10) < 10
         _alive(sim)
-        assert "Traceback" not in _stderr_so_far(sim)
+        assert "Traceback" not in said + _stderr_so_far(sim)
+
+
+def _stderr_line(sim: Sim, words: str, within: float) -> str:
+    """The simulator's stderr until a line with `words` came (AssertionError: not within `within` s)."""
+    said = ""
+    end = time.monotonic() + within
+    while words not in said:
+        assert time.monotonic() < end, f"no {words!r} on stderr within {within} s: {said}"
+        time.sleep(0.1)
+        said += _stderr_so_far(sim)
+    return said
 
 
 def _stderr_so_far(sim: Sim) -> str:
@@ -170,16 +182,18 @@ def _stderr_so_far(sim: Sim) -> str:
 
 def test_a_stalled_host_while_data_streams_holds_no_memory_and_is_dropped() -> None:
     # --stream-full: the CV7 asks about 900 KB/s; a host that reads nothing fills the socket
-    # buffers, then the simulator's output bound, then is disconnected; the next host is served.
+    # buffers, then the simulator's output bound, then is disconnected; another host is served
+    # meanwhile.
     with Sim("mip", "cv7_ins", "tcp:127.0.0.1:0", "--stream-full") as sim:
         time.sleep(0.5)
         base = _rss_kb(sim.proc.pid)
         stalled = socket.create_connection(("127.0.0.1", _port(sim)))
         time.sleep(1.0)
         waited = _pinged(sim, STALL_S + 15)
+        assert waited < STALL_S  # served beside the stalled one, not after it was dropped
+        _stderr_line(sim, "a host read nothing for 5 s: disconnected", STALL_S + 15)
         peak = _rss_kb(sim.proc.pid, "VmHWM")
         assert peak - base < SLACK_KB, (base, peak)
-        assert waited < STALL_S  # served beside the stalled one, not after it was dropped
         assert _closed_by_peer(stalled, 15)
         stalled.close()
         _alive(sim)
