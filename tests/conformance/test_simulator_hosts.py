@@ -1,4 +1,4 @@
-"""Several TCP hosts at once on the simulator's address (docs/conformance.md section 9, "Hosts";
+"""Several TCP hosts at once on the simulator's address (docs/conformance.md section 9, "Several hosts";
 runtime `sim/hosts.py`): a device port behind a network bridge with several clients. Every host
 receives every byte the device sends; each host's bytes are framed on their own (half a packet
 from one host never merges with another's); a host that does not read is dropped without holding

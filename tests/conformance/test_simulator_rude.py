@@ -1,7 +1,7 @@
 """The simulator under rude hosts and bad options (issue 37, docs/conformance.md section 9,
 "Hosts that misbehave" and "Validation"): a host may flood commands without reading, stall,
 send noise, leave half a packet or vanish at once while data streams, and the other hosts (served
-at the same time, docs/conformance.md section 9 "Hosts") and the next are served cleanly, with the
+at the same time, docs/conformance.md section 9 "Several hosts") and the next are served cleanly, with the
 simulator's memory bounded; a stream turned on again (or a host connecting to a
 streaming device) resumes from now, without samples dated in the time nobody received them;
 every option and scenario file outside its stated range is one line on stderr and exit 2, files

@@ -1,4 +1,4 @@
-"""Serving the simulated device (docs/conformance.md section 9, "Hosts"): over a pty (one host,
+"""Serving the simulated device (docs/conformance.md section 9, "Several hosts"): over a pty (one host,
 a serial line) or TCP, where several hosts are served at once, as a device's serial port behind
 a network bridge with several clients (ser2net-style):
 
