@@ -19,8 +19,11 @@ Golden values come from the specifications and the manual, not from the code und
   float 3 s and fixed 10 s after corrections and a fix, corrections aged out 10 s after the
   newest observation.
 
-The simulator serves one TCP host at a time (sim `serve`), so the fix is read from the data
-stream the ntrip command itself receives (its status lines), not over a second connection.
+The simulator serves several TCP hosts at once, every host receiving what the device sends
+(docs/conformance.md section 9, "Several hosts"): the fix is read both from the ntrip command's
+status lines and over a second connection that only reads, as an application beside the client
+would. Fix Info's layout (field length 8, descriptor 0x0B, the fix type its first byte) is the
+manual's, line 5163.
 """
 
 from __future__ import annotations
@@ -100,6 +103,7 @@ class Caster:
         self.requests: List[Dict[str, str]] = []
         self.gga: List[str] = []
         self.sent: Dict[int, int] = {}
+        self.last_sent = 0.0  # time.monotonic() after the newest corrections were sent
         self.stop = threading.Event()
         self.server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         self.server.bind(("127.0.0.1", 0))
@@ -199,6 +203,7 @@ class Caster:
                 data = b"".join(b"%x\r\n%s\r\n" % (len(p), p) for p in (data[:cut], data[cut:]))
             if data:
                 conn.sendall(data)
+                self.last_sent = time.monotonic()
             tick += 1
             time.sleep(0.001 if self.mode == "garbage" else 0.1)
 
@@ -375,14 +380,66 @@ def test_garbage_and_an_endless_header(cv7: Sim) -> None:
     assert e.returncode == 1 and "longer than 16384 bytes" in e.stderr, e.stderr
 
 
+class Reader:
+    """A second connection to the simulator that only reads: the fix type of every GNSS receiver 1
+    Fix Info (0x91,0x0B) in the stream, with the time it came (time.monotonic())."""
+
+    def __init__(self, address: str) -> None:
+        host, _, port = address[4:].rpartition(":")
+        self.sock = socket.create_connection((host, int(port)), timeout=5)
+        self.sock.settimeout(0.1)
+        self.fixes: List[tuple] = []
+        self.stop = threading.Event()
+        self.thread = threading.Thread(target=self._read, daemon=True)
+        self.thread.start()
+
+    def _read(self) -> None:
+        parser = pkg.codec.framing.Parser()
+        while not self.stop.is_set():
+            try:
+                data = self.sock.recv(65536)
+            except socket.timeout:
+                continue
+            if not data:
+                return
+            now = time.monotonic()
+            for e in parser.feed(data):
+                p = getattr(e, "data", b"")
+                if isinstance(e, pkg.codec.framing.RawPacket) and p[2] == 0x91:
+                    k = 4
+                    while k < 4 + p[3]:  # the fields: length, descriptor, data
+                        if p[k + 1] == 0x0B and p[k] == 8:
+                            self.fixes.append((now, p[k + 2]))
+                        k += p[k]
+
+    def close(self) -> List[tuple]:
+        self.stop.set()
+        self.thread.join(5)
+        self.sock.close()
+        return self.fixes
+
+
 def test_cv7_reaches_rtk_fixed_through_ntrip_and_falls_back(cv7: Sim) -> None:
-    """NTRIP 2.0 chunked: corrections for 3 s (60 simulated s at --speed 20), then silence."""
+    """NTRIP 2.0 chunked: corrections for 3 s (60 simulated s at --speed 20), then silence. A second
+    connection reads receiver 1's Fix Info meanwhile (the issue's "read over a second connection")."""
     c = Caster("2.0", stream_for=3.0)
+    reader = Reader(cv7.address)
     try:
         done = device(cv7.address, c.url(scheme="http"), "--gga-interval", "0.5", "--duration", "6.5")
     finally:
         c.close()
+        seen = reader.close()
     assert done.returncode == 0, done.stderr
+    # Over the second connection: 3D (0), RTK float (5), RTK fixed (6) while corrections flow, then
+    # back to 3D once they age out, 10 simulated s (0.5 s real) after the caster's last frames
+    types = [t for _, t in seen]
+    assert 6 in types and 5 in types[: types.index(6)], types
+    fixed_at = seen[types.index(6)][0]
+    assert fixed_at < c.last_sent, (fixed_at, c.last_sent)
+    last_fixed = len(types) - 1 - types[::-1].index(6)
+    after = seen[last_fixed + 1 :]
+    assert after and {t for _, t in after} <= {0, 5} and after[-1][1] == 0, types
+    assert after[0][0] >= c.last_sent + 0.4, (after[0][0] - c.last_sent, types)
     lines = done.stdout.splitlines()
     fixes = [re.search(r"fix=(\S+)", line).group(1) for line in lines]
     # RTK fixed while corrections flow (a fix at 2 s, fixed 10 s later: 0.6 s real), back to the

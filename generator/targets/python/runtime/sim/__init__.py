@@ -10,20 +10,16 @@ values, the streaming commands, base rates, NACK codes), both generated from the
 
 `Simulator` is the sans-I/O core: `feed(bytes, now)` takes what the host sent, `poll(now)`
 produces the data stream due by `now`; both return `(time, bytes)` chunks to write at those
-times (faults delay and split them). `serve()` runs it over a pty or a TCP socket.
+times (faults delay and split them). `hosts.serve()` runs it over a pty or a TCP socket (several
+TCP hosts at once, as a device's port behind a network bridge).
 """
 
 from __future__ import annotations
 
 import dataclasses
-import errno
 import math
-import os
 import random
-import select
-import socket
 import sys
-import time
 from typing import Any, Dict, List, Optional, Sequence, Set, Tuple
 
 from .. import _link, _sim, capabilities, registry
@@ -56,7 +52,6 @@ MAX_REPLAY_BYTES = 16 << 20  # --replay FILE: at most 16 MiB (read no further)
 LATE_WINDOW = 1.0
 STREAM_FULL_WINDOW = 0.02
 MAX_BURST = 4096
-LISTEN_BACKLOG = 16  # TCP hosts waiting to be served (more: the kernel makes them retry)
 
 
 class Fault:
@@ -178,16 +173,14 @@ class Simulator:
         return (now - self.start_time) * self.speed
 
     # ------------------------------------------------------------------ commands
-    def new_host(self) -> None:
-        """A new host (a TCP connection, a re-plugged port): what an earlier one left half-sent
-        (a partial header) is forgotten, so the new host's first bytes are read as its own."""
-        self.parser = Parser()
-
-    def feed(self, data: bytes, now: float) -> List[Chunk]:
-        """The replies to the commands in `data` (and the data due by `now`)."""
+    def feed(self, data: bytes, now: float, parser: Optional[Parser] = None) -> List[Chunk]:
+        """The replies to the commands in `data` (and the data due by `now`). `parser`: the framing
+        of the host that sent `data` (hosts.py: each host its own, so half a packet from one host
+        never merges with another's bytes; default the simulator's own)."""
+        parser = self.parser if parser is None else parser
         out = self.poll(now)
         sim_status.received(self, data, now)  # what a device status counts
-        for event in self.parser.feed(data):
+        for event in parser.feed(data):
             if isinstance(event, RawPacket):
                 out.extend(self._packet(event.data, now))
             elif isinstance(event, Nmea):
@@ -196,7 +189,7 @@ class Simulator:
                 sim_corrections.feed(self, event, now)
         # The device reports no skip run: the parser holds at most one partial packet (at most
         # the maximum packet size), never the noise between packets.
-        del self.parser._skip[:]
+        del parser._skip[:]
         return out
 
     def _packet(self, raw: bytes, now: float) -> List[Chunk]:
@@ -992,321 +985,3 @@ def replay_chunks(data: bytes, fast: bool = False) -> List[Tuple[float, bytes]]:
 
 def _shared_set() -> int:
     return -1 if registry.SHARED_SET is None else int(registry.SHARED_SET)
-
-
-# ---------------------------------------------------------------------------------------- serving
-class _Link:
-    """One byte pipe to the host (a pty master or an accepted TCP connection), non-blocking: what
-    the host does not read yet waits in `backlog`, up to BACKLOG bytes (more is dropped, as a
-    device's output buffer overruns). A TCP host that has read nothing for STALL seconds while
-    output waits, or whose connection fails a write, is `dead`: the serving loop closes it and
-    serves the next one."""
-
-    BACKLOG = 1 << 18
-    FULL_BACKLOG = 1 << 15  # with --stream-full: a device's output buffer, not a pipe's
-    STALL = 5.0
-    DEAF = 1.0
-    SNDBUF = 1 << 16
-
-    def __init__(self, fd: int, sock: Optional[socket.socket] = None, slave: Optional[int] = None) -> None:
-        self.fd = fd
-        self.sock = sock
-        self.slave = slave  # a pty's slave side: the host's line settings (its baud rate)
-        self.baud: Optional[int] = None  # the device's rate once a command changed it
-        self.backlog = bytearray()
-        self.progress = time.monotonic()  # the last time the host took bytes (or had none waiting)
-        self.dead = False
-        os.set_blocking(fd, False)
-
-    def stalled(self, now: float) -> bool:
-        """Whether a TCP host has read nothing for STALL seconds while output waits."""
-        return self.sock is not None and bool(self.backlog) and now - self.progress > self.STALL
-
-    def deaf(self, now: float) -> bool:
-        """Whether a TCP host has read nothing for DEAF seconds while output waits: its commands
-        are not read meanwhile (their replies could not be sent; a host flooding commands without
-        reading gets no more of the simulator's time)."""
-        return self.sock is not None and bool(self.backlog) and now - self.progress > self.DEAF
-
-    def mismatched(self) -> bool:
-        """Whether the host's line runs at another rate than the device's (after a baud change on
-        a pty; before one, any rate works): bytes then arrive as garbage on both sides."""
-        if self.baud is None or self.slave is None:
-            return False
-        import termios
-
-        try:
-            speed = termios.tcgetattr(self.slave)[5]
-        except termios.error:
-            return False
-        return BAUD_CODES.get(speed) != self.baud
-
-    def write(self, data: bytes) -> None:
-        if not self.backlog:
-            self.progress = time.monotonic()
-        if len(self.backlog) + len(data) <= self.BACKLOG:
-            self.backlog += data
-        self.flush()
-
-    def flush(self) -> None:
-        while self.backlog and not self.dead:
-            chunk = bytes(self.backlog)
-            if self.mismatched():  # read at the host's rate when it leaves, not when it was queued
-                chunk = bytes((b ^ 0x5A) for b in chunk)
-            try:
-                n = os.write(self.fd, chunk)
-            except BlockingIOError:
-                return
-            except OSError as e:
-                if self.sock is None and e.errno == errno.EIO:  # a pty whose host closed it: keep the bytes
-                    return
-                self.backlog.clear()  # a host that has gone (EPIPE, ECONNRESET, ...): serve the next
-                self.dead = self.sock is not None
-                return
-            if n > 0:
-                self.progress = time.monotonic()
-            del self.backlog[:n]
-
-    def read(self) -> Optional[bytes]:
-        """The bytes the host sent (b"": none yet), None when a TCP host has gone."""
-        try:
-            data = os.read(self.fd, 65536)
-        except BlockingIOError:
-            return b""
-        except OSError as e:
-            if e.errno == errno.EIO and self.sock is None:
-                return b""
-            return None
-        if not data and self.sock is not None:
-            return None
-        if data and self.mismatched():
-            return bytes((b ^ 0x5A) for b in data)
-        return data
-
-    def close(self) -> None:
-        if self.sock is not None:
-            self.sock.close()
-            return
-        for fd in (self.fd, self.slave):
-            if fd is not None:
-                try:
-                    os.close(fd)
-                except OSError:
-                    pass
-
-
-def serve(
-    listen: str,
-    sim: Optional[Simulator],
-    replay: Optional[List[Tuple[float, bytes]]] = None,
-    out: Any = None,
-    replug: Sequence[Tuple[float, float]] = (),
-    start_baud: Optional[int] = None,
-) -> None:
-    """Serves `sim` (or a replay) on `listen` ("pty", "pty:PATH" or "tcp:HOST:PORT") until
-    terminated; the first line written to `out` (stdout) is the address to connect to (with
-    pty:PATH, PATH: a symbolic link to the pty's slave side, replaced when the pty is reopened). A
-    pty's slave side stays open here too, so its master never reads end-of-file between two hosts.
-
-    `replug`: (START, END) pairs in seconds of real time since the first bytes a host sent: at
-    START the port goes away (the pty is closed and PATH removed; TCP: the connection and the
-    listening socket are closed), at END a fresh one comes back (a new pty, PATH pointing to it,
-    with plain pty its path printed as a further line; TCP: listening on the same port again). The
-    device keeps its settings and streams on meanwhile, as a device whose USB cable is re-plugged.
-    `start_baud`: the pty serves at that rate only from the start (the device's port was set to it).
-    """
-    out = out or sys.stdout
-    if listen == "pty" or listen.startswith("pty:"):
-        path = listen[4:] or None
-        if path is not None and os.path.lexists(path) and not os.path.islink(path):
-            raise ValueError(f"bad --listen {listen!r}: {path} exists and is not a symbolic link")
-
-        def open_pty(previous: Optional[_Link]) -> _Link:
-            import tty
-
-            master, slave = os.openpty()
-            tty.setraw(slave)
-            name = os.ttyname(slave)
-            if path is not None:
-                tmp = f"{path}.{os.getpid()}.tmp"
-                if os.path.lexists(tmp):
-                    os.unlink(tmp)
-                os.symlink(name, tmp)
-                os.replace(tmp, path)
-            if previous is None or path is None:
-                print(path or name, file=out, flush=True)
-            link = _Link(master, slave=slave)
-            if sim is not None and sim.full:
-                link.BACKLOG = _Link.FULL_BACKLOG
-            link.baud = previous.baud if previous is not None else start_baud
-            return link
-
-        def close_pty(link: _Link) -> None:
-            if path is not None and os.path.islink(path):
-                os.unlink(path)
-            link.close()
-
-        _loop(open_pty(None), None, sim, replay, replug, reopen=open_pty, unplug=close_pty)
-        return
-    if not listen.startswith("tcp:"):
-        raise ValueError(f"bad --listen {listen!r} (expected pty, pty:PATH or tcp:HOST:PORT)")
-    host, _, port = listen[4:].rpartition(":")
-    host = host.strip("[]") or "127.0.0.1"
-    if not port.isdigit() or int(port) > 65535:
-        raise ValueError(f"bad --listen {listen!r} (expected tcp:HOST:PORT; port 0 picks a free one)")
-    family = socket.AF_INET6 if ":" in host else socket.AF_INET
-
-    def listen_on(number: int) -> socket.socket:
-        server = socket.socket(family, socket.SOCK_STREAM)
-        server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-        # the connections' send buffer (inherited): a host that does not read holds at most this
-        # much in the kernel beside the simulator's own bounded backlog
-        server.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, _Link.SNDBUF)
-        server.bind((host, number))
-        server.listen(LISTEN_BACKLOG)  # hosts that connect while one is served wait their turn
-        return server
-
-    server = listen_on(int(port))
-    bound = server.getsockname()[1]
-    shown = f"[{host}]" if family == socket.AF_INET6 else host
-    print(f"tcp:{shown}:{bound}", file=out, flush=True)
-    _loop(None, server, sim, replay, replug, relisten=lambda: listen_on(bound))
-
-
-def _baud_codes() -> Dict[int, int]:
-    try:
-        import termios
-    except ImportError:
-        return {}
-    return {getattr(termios, n): int(n[1:]) for n in dir(termios) if n[:1] == "B" and n[1:].isdigit()}
-
-
-BAUD_CODES = _baud_codes()
-
-
-def _loop(
-    link: Optional[_Link],
-    server: Optional[socket.socket],
-    sim: Optional[Simulator],
-    replay: Optional[List[Tuple[float, bytes]]],
-    replug: Sequence[Tuple[float, float]] = (),
-    reopen: Any = None,
-    unplug: Any = None,
-    relisten: Any = None,
-) -> None:
-    """Serves one host at a time (TCP: the next connection after the last one closed, failed a
-    write or stalled); the simulated settings persist across connections, as a device's do, and
-    each host starts with a fresh command parser. `replug` (see serve): the pty is closed with
-    `unplug(link)` and reopened with `reopen(link)`; TCP: the connection and `server` are closed
-    and `relisten()` listens again."""
-    pending: List[Chunk] = []
-    started = time.monotonic()
-    queue = list(replay or [])
-    plugs = sorted(replug)
-    first_bytes: Optional[float] = None  # when a host first sent something: replug times count from it
-    unplugged: Optional[Tuple[float, Optional[_Link]]] = None  # (back at, the closed pty's link)
-    while True:
-        now = time.monotonic()
-        if link is not None and link.sock is not None and (link.dead or link.stalled(now)):
-            if not link.dead:
-                print(f"{__name__}: a host read nothing for {link.STALL:g} s: disconnected", file=sys.stderr)
-            link.close()  # a TCP host that has gone or stalled: the next one is served
-            link = None
-            pending.clear()
-        if plugs and first_bytes is not None and unplugged is None and now >= first_bytes + plugs[0][0]:
-            begin, end = plugs.pop(0)
-            pending.clear()
-            closed = link
-            if server is not None:  # first: no host connects between the two
-                server.close()
-                server = None
-            if link is not None:
-                if unplug is not None:
-                    unplug(link)
-                else:
-                    link.close()
-                link = None
-            unplugged = (first_bytes + end, closed)
-        if unplugged is not None and now >= unplugged[0]:
-            if reopen is not None:
-                link = reopen(unplugged[1])
-            elif relisten is not None:
-                server = relisten()
-            if sim is not None:
-                sim.new_host()
-            unplugged = None
-        if unplugged is not None:
-            if sim is not None:
-                sim.poll(now)  # the device streams on into a port nobody reads
-            time.sleep(min(0.01, max(0.0, unplugged[0] - now)))
-            continue
-        if link is not None:
-            if sim is not None:
-                pending.extend(sim.poll(now))
-            while queue and started + queue[0][0] <= now:
-                pending.append((now, queue.pop(0)[1]))
-            pending.sort(key=lambda c: c[0])
-            due = 0
-            while due < len(pending) and pending[due][0] <= now:
-                due += 1
-            for when, chunk in pending[:due]:
-                sim_status.write(link, chunk, sim)
-                while sim is not None and sim.baud_changes and 0 <= sim.baud_changes[0][0] <= when:
-                    link.baud = sim.baud_changes.pop(0)[1]
-            del pending[:due]
-            # replies scheduled later (--delay, --split) wait here: at most a backlog's worth
-            while sum(len(c) for _, c in pending) > link.BACKLOG:
-                pending.pop()
-        elif sim is not None:
-            sim.skip(now)  # no host connected: nobody reads what the device sends
-        wake = [c[0] for c in pending[:1]]
-        if sim is not None and link is not None:
-            w = sim.next_wakeup(now)
-            if w is not None:
-                wake.append(w)
-        if queue and link is not None:
-            wake.append(started + queue[0][0])
-        if plugs and first_bytes is not None:
-            wake.append(first_bytes + plugs[0][0])
-        if link is not None and link.sock is not None and link.backlog:
-            wake.append(link.progress + link.STALL + 0.01)
-        timeout = min(0.5, max(0.0, min(wake) - now)) if wake else 0.5
-        readers = [link.fd] if link is not None and not link.deaf(now) else []
-        if server is not None and link is None:
-            readers.append(server.fileno())
-        writers = [link.fd] if link is not None and link.backlog else []
-        ready, writable, _ = select.select(readers, writers, [], timeout)
-        if link is not None and writable:
-            link.flush()
-        if server is not None and server.fileno() in ready:
-            try:
-                conn, _ = server.accept()
-            except OSError:  # the host left before it was served (ECONNABORTED, ...)
-                continue
-            try:
-                conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-            except OSError:  # ... or reset its connection already
-                conn.close()
-                continue
-            link = _Link(conn.fileno(), conn)
-            if sim is not None:
-                if sim.full:
-                    link.BACKLOG = _Link.FULL_BACKLOG
-                sim.skip(time.monotonic())
-                sim.new_host()
-            started = time.monotonic()
-            queue = list(replay or [])
-            continue
-        if link is not None and link.fd in ready:
-            data = link.read()
-            if data is None:
-                link.close()
-                link = None
-                pending.clear()
-                continue
-            if data and first_bytes is None:
-                first_bytes = time.monotonic()
-            if data and sim is not None:
-                pending.extend(sim.feed(data, time.monotonic()))
-            elif not data and link.sock is None:
-                time.sleep(0.01)  # a pty without a host reports EIO at once: do not spin

@@ -10,7 +10,6 @@ from typing import List, Optional, Tuple
 from .. import _link, registry
 from ..codec.stdio import closed_stdout
 from . import (
-    BAUD_CODES,
     FAULT_KINDS,
     IDENTITY_FLAGS,
     MAX_REPLAY_BYTES,
@@ -21,8 +20,8 @@ from . import (
     check_speed,
     parse_identity,
     replay_chunks,
-    serve,
 )
+from .hosts import BAUD_CODES, serve
 from .world import gps_start_of_utc
 
 
@@ -37,7 +36,7 @@ def _parser() -> argparse.ArgumentParser:
         "--listen",
         required=True,
         help="pty, pty:PATH (PATH: a symbolic link to the pty, replaced when it is reopened), "
-        "or tcp:HOST:PORT (port 0: a free port)",
+        "or tcp:HOST:PORT (port 0: a free port; up to 8 hosts at once, each receiving all the device sends)",
     )
     p.add_argument("--device", help=f"device model: {', '.join(registry.DEVICES)} (default {registry.DEVICES[0]})")
     p.add_argument("--seed", type=int, default=0, help="seed of the simulated values (default 0)")
@@ -70,7 +69,7 @@ def _parser() -> argparse.ArgumentParser:
         default=[],
         metavar="START:END",
         help="the port goes away at START and a fresh one comes back at END, seconds of real time since the first "
-        "bytes a host sent (pty: closed and reopened, pty:PATH re-pointed; TCP: connection and listener closed, "
+        "bytes a host sent (pty: closed and reopened, pty:PATH re-pointed; TCP: connections and listener closed, "
         "listening again on the same port); the device keeps its settings (repeatable)",
     )
     p.add_argument(
