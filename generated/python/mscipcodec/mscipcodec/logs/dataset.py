@@ -558,20 +558,17 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
     """Write the tables of a decoded split as part files (paths relative to `out_dir` returned):
     partitioned by model, serial and UTC date, rows sorted by (t_ns nulls last, offset), each
     written under a dot name in its directory and renamed whole (a crash leaves no visible part)."""
+    np = _need("numpy")
     pa = _need("pyarrow")
-    pc = importlib.import_module("pyarrow.compute")
     written: List[str] = []
     meta = file_metadata(result.identity, result.log, result.start)
     for name in sorted(result.tables):
         table = result.tables[name]
         if table.num_rows == 0:
             continue
-        table = table.sort_by([("t_ns", "ascending"), ("offset", "ascending")])  # nulls last
-        day = pc.strftime(table.column("time"), format="%Y-%m-%d")
-        dates = pc.unique(day).to_pylist()
-        for date in sorted(d for d in dates if d is not None) + ([None] if None in dates else []):
-            mask = pc.is_null(day) if date is None else pc.equal(day, date)
-            part = table.filter(mask).replace_schema_metadata({**(table.schema.metadata or {}), **meta})
+        table = _sorted(np, pa, table)
+        for date, part in _by_date(np, pa, table):
+            part = part.replace_schema_metadata({**(table.schema.metadata or {}), **meta})
             rel = os.path.join(
                 name,
                 f"model={result.identity.model}",
@@ -584,18 +581,78 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
     return written
 
 
+def _sorted(np: Any, pa: Any, table: Any) -> Any:
+    """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
+    order already (a log's rows mostly are)."""
+    t_ns = table.column("t_ns").combine_chunks()
+    offs = table.column("offset").combine_chunks().to_numpy()
+    valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else t_ns.is_valid().to_numpy(zero_copy_only=False)
+    t = t_ns.fill_null(0).to_numpy() if t_ns.null_count else t_ns.to_numpy()
+    known = int(valid.sum())
+    if bool(valid[:known].all()):  # nulls (if any) last: in order when each part is (a stable sort)
+        step = np.diff(t[:known])
+        if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
+            if bool((np.diff(offs[known:]) >= 0).all()):
+                return table
+    order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
+    return table.take(pa.array(order, type=pa.int64()))
+
+
+DAY_US = 86_400_000_000
+
+
+def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
+    """The table's rows by UTC date of `time` ("YYYY-MM-DD"; None: no time), in date order with
+    None last; rows in their order within each date."""
+    import datetime
+
+    time_col = table.column("time").combine_chunks()
+    us = time_col.cast(pa.int64()).fill_null(np.iinfo(np.int64).max).to_numpy()
+    day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
+    days = np.unique(day)
+    epoch = datetime.date(1970, 1, 1)
+    out: List[Tuple[Optional[str], Any]] = []
+    for d in days:
+        text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
+        if len(days) == 1:
+            out.append((text, table))
+        else:
+            out.append((text, table.filter(pa.array(day == d))))
+    return out
+
+
+def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
+    """The Parquet encodings of a table's columns (docs/dataset.md, "Storage"): integers and
+    timestamps DELTA_BINARY_PACKED (time, offsets and counters step by small amounts), floats
+    BYTE_STREAM_SPLIT (their bytes compress apart), strings and bools a dictionary; the columns
+    with a dictionary listed."""
+    encodings: Dict[str, str] = {}
+    dictionary: List[str] = []
+    for f in schema:
+        t = f.type
+        if pa.types.is_integer(t) or pa.types.is_timestamp(t):
+            encodings[f.name] = "DELTA_BINARY_PACKED"
+        elif pa.types.is_floating(t):
+            encodings[f.name] = "BYTE_STREAM_SPLIT"
+        else:
+            dictionary.append(f.name)
+    return encodings, dictionary
+
+
 def _write_atomic(pa: Any, path: str, table: Any) -> None:
     pq = importlib.import_module("pyarrow.parquet")
     directory, base = os.path.split(path)
     os.makedirs(directory, exist_ok=True)
     tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
+    encodings, dictionary = _encodings(pa, table.schema)
     try:
         pq.write_table(
             table,
             tmp,
             row_group_size=ROW_GROUP_ROWS,
             compression=COMPRESSION,
-            use_dictionary=True,
+            use_dictionary=dictionary,
+            column_encoding=encodings or None,
             write_statistics=True,
         )
         os.replace(tmp, path)
