@@ -312,7 +312,7 @@ def decode_split(
             result.bad_checksums += _bad_checksums(bytes(skip.data[lo - a :]), hi - lo)
         if size is not None and end == size and b == size == base + len(data) and lo < hi:
             result.truncated = _ends_in_packet(bytes(skip.data))
-    maker = FastExporter("", "parquet", None, False)
+    maker = _Pieces("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
     times = _PacketTimes(
         np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
@@ -524,6 +524,19 @@ class _PacketTimes:
             vals, ok = cols[name]
             out.append(to_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
         return out
+
+
+class _Pieces(FastExporter):
+    """The columnar exporter's pieces with enum names taken per distinct value (not per row)."""
+
+    def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
+        if kind != "enum" or self.enum_numbers:
+            return super()._column(a, kind, enum)
+        np, pa = self.np, self.pa
+        names = _columns.ENUMS.get(enum or "", {})
+        values, where = np.unique(a, return_inverse=True)
+        texts = pa.array([names.get(int(v), str(int(v))) for v in values], type=pa.string())
+        return texts.take(to_arrow(np, pa, where.astype(np.int64).reshape(-1)))
 
 
 def whole_clock(data: bytes, base: int, start: int, end: int) -> Any:
