@@ -27,6 +27,7 @@ import hashlib
 import importlib
 import os
 import re
+import sys
 from dataclasses import dataclass, field
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
 
@@ -38,6 +39,7 @@ from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
 from .info import bad_checksums
 from .pipeline import split_device
+from .writers import _progress as progress_bar
 from .writers import need, table_name
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
@@ -791,11 +793,17 @@ class Summary:
 
 
 def export_log(
-    path: str, out_dir: str, split_bytes: int = SPLIT_BYTES, model: Optional[str] = None, serial: Optional[str] = None
+    path: str,
+    out_dir: str,
+    split_bytes: int = SPLIT_BYTES,
+    model: Optional[str] = None,
+    serial: Optional[str] = None,
+    bar: Any = None,
 ) -> Tuple[Dict[str, Any], List[str], Dict[str, int]]:
     """Export one log (every split in turn, then its `_files` row; the log's stale parts
     removed): (its `_files` row, the parts written, rows per table). A log that cannot be read
-    is a `_files` row with status `unreadable` and its error; a failed write raises OSError."""
+    is a `_files` row with status `unreadable` and its error; a failed write raises OSError.
+    `bar` (a tqdm bar in bytes, or None) moves by each split's bytes once it is written."""
     fallback = Identity(partition_value(model) if model else UNKNOWN, partition_value(serial) if serial else UNKNOWN)
     try:
         read_at, size = file_reader(path)
@@ -818,6 +826,8 @@ def export_log(
                 rows[name] = rows.get(name, 0) + t.num_rows
             r.tables = {}
             results.append(r)
+            if bar is not None:
+                bar.update(end - start)
     except ReadError as e:  # read before (the parts written stay: a re-run replaces them)
         row = files_row(log, path, size, identity, results, error=str(e))
         write_files_row(out_dir, row)
@@ -847,18 +857,39 @@ def export_dataset(
     split_bytes: int = SPLIT_BYTES,
     model: Optional[str] = None,
     serial: Optional[str] = None,
+    progress: bool = False,
 ) -> Summary:
     """Export logs into the dataset at `out_dir` (created): each log's parts and `_files` row.
-    A log that cannot be read or decoded is recorded in `_files`; a failed write raises OSError."""
+    A log that cannot be read or decoded is recorded in `_files`; a failed write raises OSError.
+    `progress`: a bar of the bytes of log done on stderr when it is a terminal (tqdm, of the
+    `[export]` extra; none without it)."""
     os.makedirs(out_dir, exist_ok=True)
     summary = Summary()
-    for path in paths:
-        row, parts, rows = export_log(path, out_dir, split_bytes, model, serial)
-        summary.logs.append(row)
-        summary.parts += parts
-        for name, n in rows.items():
-            summary.rows[name] = summary.rows.get(name, 0) + n
+    bar = _bar(paths) if progress else None
+    try:
+        for path in paths:
+            row, parts, rows = export_log(path, out_dir, split_bytes, model, serial, bar)
+            summary.logs.append(row)
+            summary.parts += parts
+            for name, n in rows.items():
+                summary.rows[name] = summary.rows.get(name, 0) + n
+    finally:
+        if bar is not None:
+            bar.close()
     return summary
+
+
+def _bar(paths: Sequence[str]) -> Any:
+    """A progress bar of the logs' bytes on stderr when it is a terminal, else None."""
+    if not sys.stderr.isatty():
+        return None
+    total = 0
+    for path in paths:
+        try:
+            total += os.path.getsize(path)
+        except OSError:
+            pass  # an unreadable log is a `_files` row; the bar counts what can be read
+    return progress_bar(total) if total else None
 
 
 def _need(module: str) -> Any:
