@@ -18,7 +18,9 @@ the splits. Skipped bytes and bad checksums are counted for the bytes in [start,
 Engines drive the same four steps per log: `log_id` and `log_identity` (model, serial and firmware
 from the log's device information reply), per split `read_split` and `decode_split`, then
 `write_split`; `files_row` / `write_files_row` record the log in `_files`. `export_dataset` is the
-single-machine driver. numpy and pyarrow are imported when used (the `[export]` extra).
+single-machine driver: it decodes each split in windows of WINDOW_BYTES (`windows`, each timed by
+`range_clocks`) and writes the split's part files as the windows come (`SplitWriter`), so that its
+memory is bounded by a window whatever the size of the logs and splits. numpy and pyarrow are imported when used (the `[export]` extra).
 """
 
 from __future__ import annotations
@@ -45,6 +47,12 @@ from .writers import need, table_name
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
 ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes for object storage)
+# The local driver decodes a split window by window (memory bounded by a window, not by the split)
+# and writes each part file of the split as its windows come, a row group per ROW_GROUP_BYTES of
+# rows (PENDING_BYTES of rows held in all, the largest written first beyond that).
+WINDOW_BYTES = 4 << 20
+ROW_GROUP_BYTES = 16 << 20
+PENDING_BYTES = 64 << 20
 COMPRESSION = "zstd"
 META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
 FILES_TABLE = "_files"
@@ -817,17 +825,28 @@ def export_log(
     parts: List[str] = []
     rows: Dict[str, int] = {}
     try:
-        clock = clock_maps(read_at, size, split_bytes)
-        for k, (start, end) in enumerate(splits(size, split_bytes)):
-            data, base = read_split(read_at, size, start, end)
-            r = decode_split(data, base, start, end, clock[k], identity, log, size)
-            parts += write_split(out_dir, r)
-            for name, t in r.tables.items():
-                rows[name] = rows.get(name, 0) + t.num_rows
-            r.tables = {}
-            results.append(r)
-            if bar is not None:
-                bar.update(end - start)
+        grid = [(start, end, windows(start, end)) for start, end in splits(size, split_bytes)]
+        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws])
+        k = 0
+        for start, _end, ws in grid:
+            out = SplitWriter(out_dir, identity, log, start)
+            try:
+                for w_start, w_end in ws:
+                    data, base = read_split(read_at, size, w_start, w_end)
+                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size)
+                    k += 1
+                    del data
+                    out.add(r.tables)
+                    for name, t in r.tables.items():
+                        rows[name] = rows.get(name, 0) + t.num_rows
+                    r.tables = {}
+                    results.append(r)
+                    if bar is not None:
+                        bar.update(w_end - w_start)
+                parts += out.close()
+            except BaseException:
+                out.abort()
+                raise
     except ReadError as e:  # read before (the parts written stay: a re-run replaces them)
         row = files_row(log, path, size, identity, results, error=str(e))
         write_files_row(out_dir, row)
@@ -836,6 +855,159 @@ def export_log(
     row = files_row(log, path, size, identity, results)
     write_files_row(out_dir, row)
     return row, parts, rows
+
+
+def windows(start: int, end: int, window: Optional[int] = None) -> List[Tuple[int, int]]:
+    """The windows of split [start, end) the local driver decodes one at a time (WINDOW_BYTES)."""
+    window = window or WINDOW_BYTES
+    if end <= start:
+        return [(start, end)]
+    return [(w, min(w + window, end)) for w in range(start, end, window)]
+
+
+def range_clocks(read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]]) -> List[Any]:
+    """The clock of each of `ranges` (consecutive, covering the log; `clock_maps` for any grid:
+    the time model does not depend on where the log is cut)."""
+    from . import timebase
+
+    anchors = []
+    for start, end in ranges:
+        data, base = read_split(read_at, size, start, end)
+        anchors.append(timebase.split_anchors(data, base, start, end))
+        del data
+    cmap = timebase.ClockMap.from_splits(anchors)
+    return [cmap.split(k) for k in range(len(anchors))]
+
+
+class SplitWriter:
+    """The part files of one split written as its windows' tables come (`add`, in log order),
+    each under a dot name renamed whole by `close` (`abort` removes them). Rows of a part are in
+    the order `write_split` gives them (t_ns, then offset): each window's rows are sorted, and a
+    part whose rows would go back in time from one window to the next is sorted again whole
+    when the split ends (a log whose clock steps back; memory then that part's)."""
+
+    def __init__(self, out_dir: str, identity: Identity, log: str, start: int) -> None:
+        self.np, self.pa = _need("numpy"), _need("pyarrow")
+        self.pq = importlib.import_module("pyarrow.parquet")
+        self.out_dir, self.identity, self.log, self.start = out_dir, identity, log, start
+        self.meta = file_metadata(identity, log, start)
+        self.parts: Dict[Tuple[str, Optional[str]], _Part] = {}
+
+    def add(self, tables: Dict[str, Any]) -> None:
+        for name in sorted(tables):
+            table = tables[name]
+            if table.num_rows == 0:
+                continue
+            table = _sorted(self.np, self.pa, table)
+            for date, rows in _by_date(self.np, self.pa, table):
+                part = self.parts.get((name, date))
+                if part is None:
+                    part = self.parts[(name, date)] = self._open(name, date, table.schema)
+                part.add(self.np, rows)
+                if part.pending_bytes >= ROW_GROUP_BYTES:
+                    part.flush()
+        pending = sorted(self.parts.values(), key=lambda p: p.pending_bytes, reverse=True)
+        total = sum(p.pending_bytes for p in pending)
+        for part in pending:
+            if total <= PENDING_BYTES:
+                break
+            total -= part.pending_bytes
+            part.flush()
+
+    def _open(self, name: str, date: Optional[str], schema: Any) -> _Part:
+        rel = os.path.join(
+            name,
+            f"model={self.identity.model}",
+            f"serial={self.identity.serial}",
+            f"date={date or DEFAULT_PARTITION}",
+            f"part-{self.log}-{split_name(self.start)}.parquet",
+        )
+        schema = schema.with_metadata({**(schema.metadata or {}), **self.meta})
+        return _Part(self.pq, self.pa, rel, os.path.join(self.out_dir, rel), schema)
+
+    def close(self) -> List[str]:
+        """Finish every part (rows flushed, sorted again where needed, renamed whole): their
+        relative paths, in table then date order as `write_split` lists them."""
+        for part in self.parts.values():
+            part.finish(self.np)
+        keys = sorted(self.parts, key=lambda k: (k[0], k[1] is None, k[1] or ""))
+        return [self.parts[k].rel for k in keys]
+
+    def abort(self) -> None:
+        for part in self.parts.values():
+            part.discard()
+
+
+class _Part:
+    """One part file being written: its pending rows, its writer and whether its rows went back."""
+
+    def __init__(self, pq: Any, pa: Any, rel: str, path: str, schema: Any) -> None:
+        self.pq, self.pa, self.rel, self.path, self.schema = pq, pa, rel, path, schema
+        directory, base = os.path.split(path)
+        os.makedirs(directory, exist_ok=True)
+        self.tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
+        self.writer: Any = None
+        self.pending: List[Any] = []
+        self.pending_bytes = 0
+        self.last: Optional[Tuple[Any, int]] = None  # (t_ns or None, offset) of the last row added
+        self.unsorted = False
+
+    def add(self, np: Any, rows: Any) -> None:
+        rows = rows.replace_schema_metadata(self.schema.metadata)
+        t = rows.column("t_ns")
+        offs = rows.column("offset")
+        first = (t[0].as_py(), offs[0].as_py())
+        if self.last is not None and _row_key(first) < _row_key(self.last):
+            self.unsorted = True
+        self.last = (t[-1].as_py(), offs[-1].as_py())
+        self.pending.append(rows)
+        self.pending_bytes += rows.nbytes
+
+    def flush(self) -> None:
+        if not self.pending:
+            return
+        table = self.pa.concat_tables(self.pending)
+        self.pending, self.pending_bytes = [], 0
+        if self.writer is None:
+            encodings, dictionary = _encodings(self.pa, self.schema)
+            self.writer = self.pq.ParquetWriter(
+                self.tmp,
+                self.schema,
+                compression=COMPRESSION,
+                use_dictionary=dictionary,
+                column_encoding=encodings or None,
+                write_statistics=True,
+            )
+        self.writer.write_table(table, row_group_size=ROW_GROUP_ROWS)
+
+    def finish(self, np: Any) -> None:
+        self.flush()
+        if self.writer is not None:
+            self.writer.close()
+            self.writer = None
+        if self.unsorted:  # a clock that stepped back: the whole part in order again
+            table = self.pq.read_table(self.tmp, partitioning=None).replace_schema_metadata(self.schema.metadata)
+            os.unlink(self.tmp)
+            _write_atomic(self.pa, self.path, _sorted(np, self.pa, table))
+            return
+        os.replace(self.tmp, self.path)
+
+    def discard(self) -> None:
+        try:
+            if self.writer is not None:
+                self.writer.close()
+        except Exception:  # the write that failed already said why
+            pass
+        try:
+            os.unlink(self.tmp)
+        except OSError:
+            pass
+
+
+def _row_key(key: Tuple[Any, int]) -> Tuple[bool, int, int]:
+    """The sort key of a row's (t_ns, offset): known times first, by time, then by offset."""
+    t, off = key
+    return (t is None, t or 0, off)
 
 
 def clock_maps(read_at: ReadAt, size: int, split_bytes: int = SPLIT_BYTES) -> List[Any]:
