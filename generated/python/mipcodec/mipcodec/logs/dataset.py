@@ -340,10 +340,13 @@ def decode_split(
         offs, idx = offs[keep], idx[keep]
         key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
         values = []
+        lo = int(sel[0])
+        contiguous = bool(sel[-1] - lo == len(sel) - 1 and (len(sel) < 2 or (np.diff(sel) == 1).all()))
         for j in range(2, len(parts[0][2])):
             chunk = unify(pa, [p[2][j] for p in parts])
-            col = chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk)
-            values.append(as_arrow(pa, col).take(pa.array(sel, type=pa.int64())))
+            col = as_arrow(pa, chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk))
+            # rows in stream order already (the usual case): a slice, not a copy
+            values.append(col.slice(lo, len(sel)) if contiguous else col.take(pa.array(sel, type=pa.int64())))
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
@@ -436,10 +439,11 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
-        take = np.flatnonzero(firsts)
+        take = None if firsts.all() else pa.array(np.flatnonzero(firsts), type=pa.int64())
         for c in range(len(BASE_COLUMNS), table.num_columns):
             name = table.schema.field(c).name
-            col = table.column(c).combine_chunks().take(pa.array(take, type=pa.int64()))
+            col = table.column(c).combine_chunks()
+            col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
                 arrays[name] = (target, col)
@@ -463,6 +467,9 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
             continue
         where, col = entry
         col = _cast(pa, col, f.type)
+        if len(where) == rows and (rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
+            out.append(col)  # every row, in order
+            continue
         full_idx = np.full(rows, -1, dtype=np.int64)
         full_idx[where] = np.arange(len(where))
         mask = full_idx < 0
