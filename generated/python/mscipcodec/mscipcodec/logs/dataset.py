@@ -287,6 +287,8 @@ class SplitResult:
     truncated: bool = False  # the split ends the log inside a packet
     first_t_ns: Optional[int] = None
     last_t_ns: Optional[int] = None
+    # per `<set>.samples` table: the sample key of its first and of its last packet (None: no key)
+    sample_edges: Dict[str, Tuple[Any, Any]] = field(default_factory=dict)
 
 
 def decode_split(
@@ -352,7 +354,9 @@ def decode_split(
         result.tables[table_name(set_id, cls)] = table
         per_set.setdefault(set_id, []).append((key, offs, idx, table))
     for set_id, tables in per_set.items():
-        result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log)
+        edges: List[Any] = []
+        result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log, edges)
+        result.sample_edges[samples_name(set_id)] = (edges[0], edges[1])
     packets = _packet_offsets(np, cols, base)
     packets = packets[(packets >= start) & (packets < end)]
     result.packets = int(len(packets))
@@ -402,10 +406,13 @@ def _cast(pa: Any, a: Any, t: Any) -> Any:
         return a.cast(t, safe=False)  # uint64 values from 2^63 up wrap (docs/dataset.md)
 
 
-def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]], times: Any, log: str) -> Any:
+def _join(
+    np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]], times: Any, log: str, edges: Any = None
+) -> Any:
     """`<set>.samples`: one row per sample (docs/conformance.md section 6, as `export --join`):
     consecutive packets of the set with the same sample key (the timestamp fields of the sample
-    rule, equal values) make one row; no key, one row per packet; a column's first value wins."""
+    rule, equal values) make one row; no key, one row per packet; a column's first value wins.
+    `edges` (a list) gets the sample key of the first and of the last packet (None: no key)."""
     schema = samples_schema(set_id)
     packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
     n = len(packets)
@@ -413,6 +420,7 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
     new = np.ones(n, dtype=bool)
     keyed = np.zeros(n, dtype=bool)
     same = np.ones(max(n - 1, 0), dtype=bool)
+    key_values: List[Tuple[Any, Any]] = []  # (present, values) per key field and per column
     for key, offs, _idx, table in tables:
         if key[1] not in TIMESTAMPS or key[0] == set_id:
             continue
@@ -428,8 +436,11 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
             vals = np.zeros(n, dtype=np.float64)
             vals[pos] = np.asarray(col.fill_null(0).to_numpy(zero_copy_only=False), dtype=np.float64)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
+            key_values.append((present, vals))
     if n > 1:
         new[1:] = ~(same & keyed[1:] & keyed[:-1])
+    if edges is not None:
+        edges[:] = [_packet_key(keyed, key_values, i) for i in ((0, n - 1) if n else (None, None))]
     group = np.cumsum(new) - 1
     rows = int(group[-1]) + 1 if n else 0
     row_offs = packets[new]
@@ -477,6 +488,13 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
         taken = col.take(pa.array(full_idx, type=pa.int64()))
         out.append(_null_where(np, pa, taken, mask))
     return pa.Table.from_arrays(out, schema=schema)
+
+
+def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int]) -> Any:
+    """The sample key of packet i of a join (None without one): what `_join` compares."""
+    if i is None or not keyed[i]:
+        return None
+    return tuple((bool(p[i]), float(v[i]) if p[i] else None) for p, v in key_values)
 
 
 def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
@@ -837,19 +855,25 @@ def export_log(
         k = 0
         for start, _end, ws in grid:
             out = SplitWriter(out_dir, identity, log, start)
+            held = _HeldSamples()
             try:
                 for w_start, w_end in ws:
                     data, base = read_split(read_at, size, w_start, w_end)
                     r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size)
                     k += 1
                     del data
-                    out.add(r.tables)
-                    for name, t in r.tables.items():
+                    tables = held.take(r)
+                    out.add(tables)
+                    for name, t in tables.items():
                         rows[name] = rows.get(name, 0) + t.num_rows
                     r.tables = {}
                     results.append(r)
                     if bar is not None:
                         bar.update(w_end - w_start)
+                tables = held.rest()
+                out.add(tables)
+                for name, t in tables.items():
+                    rows[name] = rows.get(name, 0) + t.num_rows
                 parts += out.close()
             except BaseException:
                 out.abort()
@@ -862,6 +886,50 @@ def export_log(
     row = files_row(log, path, size, identity, results)
     write_files_row(out_dir, row)
     return row, parts, rows
+
+
+class _HeldSamples:
+    """The joined-sample rows of a split decoded in windows as the whole split gives them: each
+    window's last `<set>.samples` row is held back, and merged with the next window's first row
+    when that row continues its sample (`_join`'s rule: the last packet of the one and the first
+    of the other have the same sample key), the first value of each column winning; the held
+    rows go out when the split ends (`rest`)."""
+
+    def __init__(self) -> None:
+        self.pa = _need("pyarrow")
+        self.held: Dict[str, Tuple[Any, Any]] = {}  # name -> (row, sample key of its last packet)
+
+    def take(self, result: SplitResult) -> Dict[str, Any]:
+        pa = self.pa
+        out = dict(result.tables)
+        for name, table in result.tables.items():
+            if name not in result.sample_edges or table.num_rows == 0:
+                continue
+            first_key, last_key = result.sample_edges[name]
+            prev, prev_key = self.held.pop(name, (None, None))
+            if prev is not None and prev_key is not None and prev_key == first_key:
+                prev = _coalesce(pa, prev, table.slice(0, 1))
+                table = table.slice(1)
+                if table.num_rows == 0:
+                    self.held[name] = (prev, last_key)
+                    del out[name]
+                    continue
+            front = table.slice(0, table.num_rows - 1)
+            out[name] = front if prev is None else pa.concat_tables([prev, front])
+            self.held[name] = (table.slice(table.num_rows - 1), last_key)
+        return out
+
+    def rest(self) -> Dict[str, Any]:
+        out = {name: row for name, (row, _key) in self.held.items()}
+        self.held = {}
+        return out
+
+
+def _coalesce(pa: Any, a: Any, b: Any) -> Any:
+    """Row `a` with each null cell taken from row `b` (one row each): the first value wins."""
+    pc = importlib.import_module("pyarrow.compute")
+    cols = [pc.coalesce(a.column(j), b.column(j)) for j in range(a.num_columns)]
+    return pa.Table.from_arrays(cols, schema=a.schema)
 
 
 def windows(start: int, end: int, window: Optional[int] = None) -> List[Tuple[int, int]]:
