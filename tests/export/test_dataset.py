@@ -608,3 +608,37 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
         )
         assert "BYTE_STREAM_SPLIT" in columns["gps_tow"].encodings
     assert groups > 1  # the small row groups were written as the windows came
+
+
+def test_progress_bar_only_on_a_terminal(tmp_path):
+    """`export --dataset` draws its progress bar (tqdm: percent and bytes) when stderr is a
+    terminal, and writes none when stderr is a pipe (what the other tests and scripts see)."""
+    import pty
+
+    log = tmp_path / "p.bin"
+    log.write_bytes(timed_log())
+    piped = export_dataset_cli(tmp_path / "piped", str(log), extra=("--model", "gx5_45"))
+    assert piped.returncode == 0, piped.stderr
+    assert "%" not in piped.stderr and "\r" not in piped.stderr
+    leader, follower = pty.openpty()
+    try:
+        cmd = [sys.executable, "-m", "mipcodec", "export", "--dataset", str(tmp_path / "tty"), str(log)]
+        env = dict(os.environ, PYTHONPATH=ext_build("mipcodec"))
+        done = subprocess.run(cmd + ["--model", "gx5_45"], env=env, stdout=subprocess.DEVNULL, stderr=follower)
+        os.close(follower)
+        follower = -1
+        drawn = b""
+        while True:
+            try:
+                chunk = os.read(leader, 4096)
+            except OSError:  # the terminal's other end is closed: all read
+                break
+            if not chunk:
+                break
+            drawn += chunk
+    finally:
+        os.close(leader)
+        if follower >= 0:
+            os.close(follower)
+    assert done.returncode == 0
+    assert b"100%" in drawn and b"\r" in drawn, drawn
