@@ -49,8 +49,8 @@
   8. the dataset (issue 41; --no-dataset leaves it out, --dataset-size BYTES sets the fleet's
      size, default 48 MiB): the simulated fleet of tests/bench/spark_bench.py (mipcodec.fleet,
      build/bench/spark-fleet/), exported with `export --dataset`'s function in this process (one
-     core): MB/s of raw log (10^6 bytes per second of wall time) and the dataset's size over the
-     raw logs'; then the Spark job with local[1] and local[2] and the scaling ratio
+     core): MB/s of raw log (10^6 bytes per second of wall time), MB per CPU second, its peak
+     memory (maximum resident set) and the dataset's size over the raw logs'; then the Spark job with local[1] and local[2] and the scaling ratio
      (spark_bench.measure; needs pyspark and Java, else reported as skipped). build/bench/dataset.json.
      Then the fleet generator's MB/s (one 4 MiB log) and the single-log CSV export's MB/s (the
      fleet's largest log), each over the columnar decode's rate of the exported log
@@ -474,10 +474,10 @@ def compile_table(rows: list[dict]) -> str:
 
 
 def dataset_bench(out: Path, size: int) -> tuple[str, bool]:
-    """Section 8 (issue 41): the dataset export's throughput on one core, the dataset's size
-    over the raw logs', and Spark's throughput with 1 and 2 local workers (scaling ratio)."""
+    """Section 8 (issue 41): the dataset export's throughput on one core, its CPU time and peak
+    memory, the dataset's size over the raw logs', and Spark's throughput with 1 and 2 local
+    workers (scaling ratio)."""
     import importlib
-    import resource
     import subprocess
     import tempfile
 
@@ -491,17 +491,21 @@ def dataset_bench(out: Path, size: int) -> tuple[str, bool]:
     # accelerator (spark_bench.package_dir), in a child process: its wall and CPU time.
     env = dict(os.environ, PYTHONPATH=str(spark_bench.package_dir()))
     with tempfile.TemporaryDirectory(prefix="dataset-bench-", dir=out) as tmp:
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
-        subprocess.run(
+        child = subprocess.Popen(
             [sys.executable, "-m", "mipcodec", "export", "--dataset", tmp, *paths],
             env=env,
-            check=True,
-            capture_output=True,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.PIPE,
         )
+        errors = child.stderr.read() if child.stderr else b""
+        _pid, status, usage = os.wait4(child.pid, 0)  # this child's own CPU time and peak memory
+        child.returncode = os.waitstatus_to_exitcode(status)
         seconds = time.perf_counter() - t0
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
+        if child.returncode != 0:
+            raise subprocess.CalledProcessError(child.returncode, child.args, stderr=errors)
+        cpu = usage.ru_utime + usage.ru_stime
+        peak = usage.ru_maxrss * 1024  # kilobytes on Linux
         stored = sum(f.stat().st_size for f in Path(tmp).rglob("*") if f.is_file())
     record: dict = {
         "logs": len(paths),
@@ -510,6 +514,7 @@ def dataset_bench(out: Path, size: int) -> tuple[str, bool]:
         "export_cpu_seconds": cpu,
         "export_mb_s": raw / seconds / 1e6,
         "export_mb_per_cpu_s": raw / cpu / 1e6,
+        "export_peak_bytes": peak,
         "dataset_bytes": stored,
         "dataset_over_raw": stored / raw,
     }
@@ -518,6 +523,7 @@ def dataset_bench(out: Path, size: int) -> tuple[str, bool]:
         ("raw logs", f"{len(paths)} logs, {raw / 1e6:.1f} MB"),
         ("export --dataset, 1 core", f"{record['export_mb_s']:.2f} MB/s ({seconds:.1f} s)"),
         ("export --dataset, per CPU second", f"{record['export_mb_per_cpu_s']:.2f} MB ({cpu:.1f} s CPU)"),
+        ("export --dataset, peak memory", f"{peak / 1e6:.0f} MB (maximum resident set)"),
         ("dataset / raw logs", f"{stored / 1e6:.1f} MB, {record['dataset_over_raw']:.2f}"),
     ]
     ok = True

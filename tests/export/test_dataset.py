@@ -566,3 +566,79 @@ def test_continuation_packets_make_one_sample_row():
     assert [x["scaled_accel_x"] for x in rows] == [1.0, 7.0]
     assert [x["scaled_gyro_z"] for x in rows] == [6.0, None]
     assert r.tables["sensor.scaled_accel"].num_rows == 3
+
+
+def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
+    """The local export decodes a split in windows and writes its parts as they come: with
+    windows that cut packets, row groups of a few rows and a clock that steps back (the timed log
+    again after the messy one), every part holds the rows of the one-window export in the same
+    order (sorted by t_ns, nulls last, then offset, as docs/dataset.md says), and its columns
+    carry the encodings docs/dataset.md names (delta for integers and times, byte-stream-split
+    for floats)."""
+    dsm = ds()
+    log = tmp_path / "w.bin"
+    log.write_bytes(timed_log() + messy_log() + timed_log())
+    whole, cut = tmp_path / "whole", tmp_path / "cut"
+    dsm.export_dataset([str(log)], str(whole), model="gx5_45")
+    monkeypatch.setattr(dsm, "WINDOW_BYTES", 997)
+    monkeypatch.setattr(dsm, "ROW_GROUP_BYTES", 2000)
+    monkeypatch.setattr(dsm, "PENDING_BYTES", 6000)
+    dsm.export_dataset([str(log)], str(cut), model="gx5_45")
+    parts = sorted(str(p.relative_to(whole)) for p in whole.rglob("part-*.parquet"))
+    assert parts == sorted(str(p.relative_to(cut)) for p in cut.rglob("part-*.parquet"))
+    assert not list(cut.rglob(".*"))  # no temporary file left
+    groups = 0
+    for rel in parts:
+        a, b = pq.read_table(whole / rel, partitioning=None), pq.read_table(cut / rel, partitioning=None)
+        assert a.schema.equals(b.schema), rel
+        assert [{k: _bits(v) for k, v in r.items()} for r in a.to_pylist()] == [
+            {k: _bits(v) for k, v in r.items()} for r in b.to_pylist()
+        ], rel  # (NaN values compared by their bits)
+        if rel.startswith("_files"):
+            continue
+        keys = [(t is None, t or 0, o) for t, o in zip(b.column("t_ns").to_pylist(), b.column("offset").to_pylist())]
+        assert keys == sorted(keys), rel
+        meta = pq.ParquetFile(cut / rel).metadata
+        groups = max(groups, meta.num_row_groups)
+        columns = {
+            meta.row_group(0).column(j).path_in_schema: meta.row_group(0).column(j) for j in range(meta.num_columns)
+        }
+        assert (
+            "DELTA_BINARY_PACKED" in columns["t_ns"].encodings and "DELTA_BINARY_PACKED" in columns["offset"].encodings
+        )
+        assert "BYTE_STREAM_SPLIT" in columns["gps_tow"].encodings
+    assert groups > 1  # the small row groups were written as the windows came
+
+
+def test_progress_bar_only_on_a_terminal(tmp_path):
+    """`export --dataset` draws its progress bar (tqdm: percent and bytes) when stderr is a
+    terminal, and writes none when stderr is a pipe (what the other tests and scripts see)."""
+    import pty
+
+    log = tmp_path / "p.bin"
+    log.write_bytes(timed_log())
+    piped = export_dataset_cli(tmp_path / "piped", str(log), extra=("--model", "gx5_45"))
+    assert piped.returncode == 0, piped.stderr
+    assert "%" not in piped.stderr and "\r" not in piped.stderr
+    leader, follower = pty.openpty()
+    try:
+        cmd = [sys.executable, "-m", "mipcodec", "export", "--dataset", str(tmp_path / "tty"), str(log)]
+        env = dict(os.environ, PYTHONPATH=ext_build("mipcodec"))
+        done = subprocess.run(cmd + ["--model", "gx5_45"], env=env, stdout=subprocess.DEVNULL, stderr=follower)
+        os.close(follower)
+        follower = -1
+        drawn = b""
+        while True:
+            try:
+                chunk = os.read(leader, 4096)
+            except OSError:  # the terminal's other end is closed: all read
+                break
+            if not chunk:
+                break
+            drawn += chunk
+    finally:
+        os.close(leader)
+        if follower >= 0:
+            os.close(follower)
+    assert done.returncode == 0
+    assert b"100%" in drawn and b"\r" in drawn, drawn

@@ -18,7 +18,9 @@ the splits. Skipped bytes and bad checksums are counted for the bytes in [start,
 Engines drive the same four steps per log: `log_id` and `log_identity` (model, serial and firmware
 from the log's device information reply), per split `read_split` and `decode_split`, then
 `write_split`; `files_row` / `write_files_row` record the log in `_files`. `export_dataset` is the
-single-machine driver. numpy and pyarrow are imported when used (the `[export]` extra).
+single-machine driver: it decodes each split in windows of WINDOW_BYTES (`windows`, each timed by
+`range_clocks`) and writes the split's part files as the windows come (`SplitWriter`), so that its
+memory is bounded by a window whatever the size of the logs and splits. numpy and pyarrow are imported when used (the `[export]` extra).
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ import hashlib
 import importlib
 import os
 import re
+import sys
 from dataclasses import dataclass, field
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
 
@@ -38,11 +41,18 @@ from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
 from .info import bad_checksums
 from .pipeline import split_device
+from .writers import _progress as progress_bar
 from .writers import need, table_name
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
 ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes for object storage)
+# The local driver decodes a split window by window (memory bounded by a window, not by the split)
+# and writes each part file of the split as its windows come, a row group per ROW_GROUP_BYTES of
+# rows (PENDING_BYTES of rows held in all, the largest written first beyond that).
+WINDOW_BYTES = 4 << 20
+ROW_GROUP_BYTES = 16 << 20
+PENDING_BYTES = 64 << 20
 COMPRESSION = "zstd"
 META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
 FILES_TABLE = "_files"
@@ -277,6 +287,8 @@ class SplitResult:
     truncated: bool = False  # the split ends the log inside a packet
     first_t_ns: Optional[int] = None
     last_t_ns: Optional[int] = None
+    # per `<set>.samples` table: the sample key of its first and of its last packet (None: no key)
+    sample_edges: Dict[str, Tuple[Any, Any]] = field(default_factory=dict)
 
 
 def decode_split(
@@ -312,7 +324,7 @@ def decode_split(
             result.bad_checksums += _bad_checksums(bytes(skip.data[lo - a :]), hi - lo)
         if size is not None and end == size and b == size == base + len(data) and lo < hi:
             result.truncated = _ends_in_packet(bytes(skip.data))
-    maker = FastExporter("", "parquet", None, False)
+    maker = _Pieces("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
     times = _PacketTimes(
         np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
@@ -330,16 +342,21 @@ def decode_split(
         offs, idx = offs[keep], idx[keep]
         key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
         values = []
+        lo = int(sel[0])
+        contiguous = bool(sel[-1] - lo == len(sel) - 1 and (len(sel) < 2 or (np.diff(sel) == 1).all()))
         for j in range(2, len(parts[0][2])):
             chunk = unify(pa, [p[2][j] for p in parts])
-            col = chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk)
-            values.append(as_arrow(pa, col).take(pa.array(sel, type=pa.int64())))
+            col = as_arrow(pa, chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk))
+            # rows in stream order already (the usual case): a slice, not a copy
+            values.append(col.slice(lo, len(sel)) if contiguous else col.take(pa.array(sel, type=pa.int64())))
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
         per_set.setdefault(set_id, []).append((key, offs, idx, table))
     for set_id, tables in per_set.items():
-        result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log)
+        edges: List[Any] = []
+        result.tables[samples_name(set_id)] = _join(np, pa, set_id, tables, times, log, edges)
+        result.sample_edges[samples_name(set_id)] = (edges[0], edges[1])
     packets = _packet_offsets(np, cols, base)
     packets = packets[(packets >= start) & (packets < end)]
     result.packets = int(len(packets))
@@ -389,10 +406,13 @@ def _cast(pa: Any, a: Any, t: Any) -> Any:
         return a.cast(t, safe=False)  # uint64 values from 2^63 up wrap (docs/dataset.md)
 
 
-def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]], times: Any, log: str) -> Any:
+def _join(
+    np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]], times: Any, log: str, edges: Any = None
+) -> Any:
     """`<set>.samples`: one row per sample (docs/conformance.md section 6, as `export --join`):
     consecutive packets of the set with the same sample key (the timestamp fields of the sample
-    rule, equal values) make one row; no key, one row per packet; a column's first value wins."""
+    rule, equal values) make one row; no key, one row per packet; a column's first value wins.
+    `edges` (a list) gets the sample key of the first and of the last packet (None: no key)."""
     schema = samples_schema(set_id)
     packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
     n = len(packets)
@@ -400,6 +420,7 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
     new = np.ones(n, dtype=bool)
     keyed = np.zeros(n, dtype=bool)
     same = np.ones(max(n - 1, 0), dtype=bool)
+    key_values: List[Tuple[Any, Any]] = []  # (present, values) per key field and per column
     for key, offs, _idx, table in tables:
         if key[1] not in TIMESTAMPS or key[0] == set_id:
             continue
@@ -415,8 +436,11 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
             vals = np.zeros(n, dtype=np.float64)
             vals[pos] = np.asarray(col.fill_null(0).to_numpy(zero_copy_only=False), dtype=np.float64)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
+            key_values.append((present, vals))
     if n > 1:
         new[1:] = ~(same & keyed[1:] & keyed[:-1])
+    if edges is not None:
+        edges[:] = [_packet_key(keyed, key_values, i) for i in ((0, n - 1) if n else (None, None))]
     group = np.cumsum(new) - 1
     rows = int(group[-1]) + 1 if n else 0
     row_offs = packets[new]
@@ -426,10 +450,11 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
-        take = np.flatnonzero(firsts)
+        take = None if firsts.all() else pa.array(np.flatnonzero(firsts), type=pa.int64())
         for c in range(len(BASE_COLUMNS), table.num_columns):
             name = table.schema.field(c).name
-            col = table.column(c).combine_chunks().take(pa.array(take, type=pa.int64()))
+            col = table.column(c).combine_chunks()
+            col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
                 arrays[name] = (target, col)
@@ -453,6 +478,9 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
             continue
         where, col = entry
         col = _cast(pa, col, f.type)
+        if len(where) == rows and (rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
+            out.append(col)  # every row, in order
+            continue
         full_idx = np.full(rows, -1, dtype=np.int64)
         full_idx[where] = np.arange(len(where))
         mask = full_idx < 0
@@ -460,6 +488,13 @@ def _join(np: Any, pa: Any, set_id: int, tables: List[Tuple[Any, Any, Any, Any]]
         taken = col.take(pa.array(full_idx, type=pa.int64()))
         out.append(_null_where(np, pa, taken, mask))
     return pa.Table.from_arrays(out, schema=schema)
+
+
+def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int]) -> Any:
+    """The sample key of packet i of a join (None without one): what `_join` compares."""
+    if i is None or not keyed[i]:
+        return None
+    return tuple((bool(p[i]), float(v[i]) if p[i] else None) for p, v in key_values)
 
 
 def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
@@ -526,6 +561,19 @@ class _PacketTimes:
         return out
 
 
+class _Pieces(FastExporter):
+    """The columnar exporter's pieces with enum names taken per distinct value (not per row)."""
+
+    def _column(self, a: Any, kind: str, enum: Optional[str]) -> Any:
+        if kind != "enum" or self.enum_numbers:
+            return super()._column(a, kind, enum)
+        np, pa = self.np, self.pa
+        names = _columns.ENUMS.get(enum or "", {})
+        values, where = np.unique(a, return_inverse=True)
+        texts = pa.array([names.get(int(v), str(int(v))) for v in values], type=pa.string())
+        return texts.take(to_arrow(np, pa, where.astype(np.int64).reshape(-1)))
+
+
 def whole_clock(data: bytes, base: int, start: int, end: int) -> Any:
     """The clock of a split decoded on its own as a whole log (no split before it)."""
     from . import timebase
@@ -558,20 +606,17 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
     """Write the tables of a decoded split as part files (paths relative to `out_dir` returned):
     partitioned by model, serial and UTC date, rows sorted by (t_ns nulls last, offset), each
     written under a dot name in its directory and renamed whole (a crash leaves no visible part)."""
+    np = _need("numpy")
     pa = _need("pyarrow")
-    pc = importlib.import_module("pyarrow.compute")
     written: List[str] = []
     meta = file_metadata(result.identity, result.log, result.start)
     for name in sorted(result.tables):
         table = result.tables[name]
         if table.num_rows == 0:
             continue
-        table = table.sort_by([("t_ns", "ascending"), ("offset", "ascending")])  # nulls last
-        day = pc.strftime(table.column("time"), format="%Y-%m-%d")
-        dates = pc.unique(day).to_pylist()
-        for date in sorted(d for d in dates if d is not None) + ([None] if None in dates else []):
-            mask = pc.is_null(day) if date is None else pc.equal(day, date)
-            part = table.filter(mask).replace_schema_metadata({**(table.schema.metadata or {}), **meta})
+        table = _sorted(np, pa, table)
+        for date, part in _by_date(np, pa, table):
+            part = part.replace_schema_metadata({**(table.schema.metadata or {}), **meta})
             rel = os.path.join(
                 name,
                 f"model={result.identity.model}",
@@ -584,18 +629,78 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
     return written
 
 
+def _sorted(np: Any, pa: Any, table: Any) -> Any:
+    """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
+    order already (a log's rows mostly are)."""
+    t_ns = table.column("t_ns").combine_chunks()
+    offs = table.column("offset").combine_chunks().to_numpy()
+    valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else t_ns.is_valid().to_numpy(zero_copy_only=False)
+    t = t_ns.fill_null(0).to_numpy() if t_ns.null_count else t_ns.to_numpy()
+    known = int(valid.sum())
+    if bool(valid[:known].all()):  # nulls (if any) last: in order when each part is (a stable sort)
+        step = np.diff(t[:known])
+        if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
+            if bool((np.diff(offs[known:]) >= 0).all()):
+                return table
+    order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
+    return table.take(pa.array(order, type=pa.int64()))
+
+
+DAY_US = 86_400_000_000
+
+
+def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
+    """The table's rows by UTC date of `time` ("YYYY-MM-DD"; None: no time), in date order with
+    None last; rows in their order within each date."""
+    import datetime
+
+    time_col = table.column("time").combine_chunks()
+    us = time_col.cast(pa.int64()).fill_null(np.iinfo(np.int64).max).to_numpy()
+    day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
+    days = np.unique(day)
+    epoch = datetime.date(1970, 1, 1)
+    out: List[Tuple[Optional[str], Any]] = []
+    for d in days:
+        text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
+        if len(days) == 1:
+            out.append((text, table))
+        else:
+            out.append((text, table.filter(pa.array(day == d))))
+    return out
+
+
+def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
+    """The Parquet encodings of a table's columns (docs/dataset.md, "Storage"): integers and
+    timestamps DELTA_BINARY_PACKED (time, offsets and counters step by small amounts), floats
+    BYTE_STREAM_SPLIT (their bytes compress apart), strings and bools a dictionary; the columns
+    with a dictionary listed."""
+    encodings: Dict[str, str] = {}
+    dictionary: List[str] = []
+    for f in schema:
+        t = f.type
+        if pa.types.is_integer(t) or pa.types.is_timestamp(t):
+            encodings[f.name] = "DELTA_BINARY_PACKED"
+        elif pa.types.is_floating(t):
+            encodings[f.name] = "BYTE_STREAM_SPLIT"
+        else:
+            dictionary.append(f.name)
+    return encodings, dictionary
+
+
 def _write_atomic(pa: Any, path: str, table: Any) -> None:
     pq = importlib.import_module("pyarrow.parquet")
     directory, base = os.path.split(path)
     os.makedirs(directory, exist_ok=True)
     tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
+    encodings, dictionary = _encodings(pa, table.schema)
     try:
         pq.write_table(
             table,
             tmp,
             row_group_size=ROW_GROUP_ROWS,
             compression=COMPRESSION,
-            use_dictionary=True,
+            use_dictionary=dictionary,
+            column_encoding=encodings or None,
             write_statistics=True,
         )
         os.replace(tmp, path)
@@ -721,11 +826,17 @@ class Summary:
 
 
 def export_log(
-    path: str, out_dir: str, split_bytes: int = SPLIT_BYTES, model: Optional[str] = None, serial: Optional[str] = None
+    path: str,
+    out_dir: str,
+    split_bytes: int = SPLIT_BYTES,
+    model: Optional[str] = None,
+    serial: Optional[str] = None,
+    bar: Any = None,
 ) -> Tuple[Dict[str, Any], List[str], Dict[str, int]]:
     """Export one log (every split in turn, then its `_files` row; the log's stale parts
     removed): (its `_files` row, the parts written, rows per table). A log that cannot be read
-    is a `_files` row with status `unreadable` and its error; a failed write raises OSError."""
+    is a `_files` row with status `unreadable` and its error; a failed write raises OSError.
+    `bar` (a tqdm bar in bytes, or None) moves by each split's bytes once it is written."""
     fallback = Identity(partition_value(model) if model else UNKNOWN, partition_value(serial) if serial else UNKNOWN)
     try:
         read_at, size = file_reader(path)
@@ -739,15 +850,34 @@ def export_log(
     parts: List[str] = []
     rows: Dict[str, int] = {}
     try:
-        clock = clock_maps(read_at, size, split_bytes)
-        for k, (start, end) in enumerate(splits(size, split_bytes)):
-            data, base = read_split(read_at, size, start, end)
-            r = decode_split(data, base, start, end, clock[k], identity, log, size)
-            parts += write_split(out_dir, r)
-            for name, t in r.tables.items():
-                rows[name] = rows.get(name, 0) + t.num_rows
-            r.tables = {}
-            results.append(r)
+        grid = [(start, end, windows(start, end)) for start, end in splits(size, split_bytes)]
+        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws])
+        k = 0
+        for start, _end, ws in grid:
+            out = SplitWriter(out_dir, identity, log, start)
+            held = _HeldSamples()
+            try:
+                for w_start, w_end in ws:
+                    data, base = read_split(read_at, size, w_start, w_end)
+                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size)
+                    k += 1
+                    del data
+                    tables = held.take(r)
+                    out.add(tables)
+                    for name, t in tables.items():
+                        rows[name] = rows.get(name, 0) + t.num_rows
+                    r.tables = {}
+                    results.append(r)
+                    if bar is not None:
+                        bar.update(w_end - w_start)
+                tables = held.rest()
+                out.add(tables)
+                for name, t in tables.items():
+                    rows[name] = rows.get(name, 0) + t.num_rows
+                parts += out.close()
+            except BaseException:
+                out.abort()
+                raise
     except ReadError as e:  # read before (the parts written stay: a re-run replaces them)
         row = files_row(log, path, size, identity, results, error=str(e))
         write_files_row(out_dir, row)
@@ -756,6 +886,203 @@ def export_log(
     row = files_row(log, path, size, identity, results)
     write_files_row(out_dir, row)
     return row, parts, rows
+
+
+class _HeldSamples:
+    """The joined-sample rows of a split decoded in windows as the whole split gives them: each
+    window's last `<set>.samples` row is held back, and merged with the next window's first row
+    when that row continues its sample (`_join`'s rule: the last packet of the one and the first
+    of the other have the same sample key), the first value of each column winning; the held
+    rows go out when the split ends (`rest`)."""
+
+    def __init__(self) -> None:
+        self.pa = _need("pyarrow")
+        self.held: Dict[str, Tuple[Any, Any]] = {}  # name -> (row, sample key of its last packet)
+
+    def take(self, result: SplitResult) -> Dict[str, Any]:
+        pa = self.pa
+        out = dict(result.tables)
+        for name, table in result.tables.items():
+            if name not in result.sample_edges or table.num_rows == 0:
+                continue
+            first_key, last_key = result.sample_edges[name]
+            prev, prev_key = self.held.pop(name, (None, None))
+            if prev is not None and prev_key is not None and prev_key == first_key:
+                prev = _coalesce(pa, prev, table.slice(0, 1))
+                table = table.slice(1)
+                if table.num_rows == 0:
+                    self.held[name] = (prev, last_key)
+                    del out[name]
+                    continue
+            front = table.slice(0, table.num_rows - 1)
+            out[name] = front if prev is None else pa.concat_tables([prev, front])
+            self.held[name] = (table.slice(table.num_rows - 1), last_key)
+        return out
+
+    def rest(self) -> Dict[str, Any]:
+        out = {name: row for name, (row, _key) in self.held.items()}
+        self.held = {}
+        return out
+
+
+def _coalesce(pa: Any, a: Any, b: Any) -> Any:
+    """Row `a` with each null cell taken from row `b` (one row each): the first value wins."""
+    pc = importlib.import_module("pyarrow.compute")
+    cols = [pc.coalesce(a.column(j), b.column(j)) for j in range(a.num_columns)]
+    return pa.Table.from_arrays(cols, schema=a.schema)
+
+
+def windows(start: int, end: int, window: Optional[int] = None) -> List[Tuple[int, int]]:
+    """The windows of split [start, end) the local driver decodes one at a time (WINDOW_BYTES)."""
+    window = window or WINDOW_BYTES
+    if end <= start:
+        return [(start, end)]
+    return [(w, min(w + window, end)) for w in range(start, end, window)]
+
+
+def range_clocks(read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]]) -> List[Any]:
+    """The clock of each of `ranges` (consecutive, covering the log; `clock_maps` for any grid:
+    the time model does not depend on where the log is cut)."""
+    from . import timebase
+
+    anchors = []
+    for start, end in ranges:
+        data, base = read_split(read_at, size, start, end)
+        anchors.append(timebase.split_anchors(data, base, start, end))
+        del data
+    cmap = timebase.ClockMap.from_splits(anchors)
+    return [cmap.split(k) for k in range(len(anchors))]
+
+
+class SplitWriter:
+    """The part files of one split written as its windows' tables come (`add`, in log order),
+    each under a dot name renamed whole by `close` (`abort` removes them). Rows of a part are in
+    the order `write_split` gives them (t_ns, then offset): each window's rows are sorted, and a
+    part whose rows would go back in time from one window to the next is sorted again whole
+    when the split ends (a log whose clock steps back; memory then that part's)."""
+
+    def __init__(self, out_dir: str, identity: Identity, log: str, start: int) -> None:
+        self.np, self.pa = _need("numpy"), _need("pyarrow")
+        self.pq = importlib.import_module("pyarrow.parquet")
+        self.out_dir, self.identity, self.log, self.start = out_dir, identity, log, start
+        self.meta = file_metadata(identity, log, start)
+        self.parts: Dict[Tuple[str, Optional[str]], _Part] = {}
+
+    def add(self, tables: Dict[str, Any]) -> None:
+        for name in sorted(tables):
+            table = tables[name]
+            if table.num_rows == 0:
+                continue
+            table = _sorted(self.np, self.pa, table)
+            for date, rows in _by_date(self.np, self.pa, table):
+                part = self.parts.get((name, date))
+                if part is None:
+                    part = self.parts[(name, date)] = self._open(name, date, table.schema)
+                part.add(self.np, rows)
+                if part.pending_bytes >= ROW_GROUP_BYTES:
+                    part.flush()
+        pending = sorted(self.parts.values(), key=lambda p: p.pending_bytes, reverse=True)
+        total = sum(p.pending_bytes for p in pending)
+        for part in pending:
+            if total <= PENDING_BYTES:
+                break
+            total -= part.pending_bytes
+            part.flush()
+
+    def _open(self, name: str, date: Optional[str], schema: Any) -> _Part:
+        rel = os.path.join(
+            name,
+            f"model={self.identity.model}",
+            f"serial={self.identity.serial}",
+            f"date={date or DEFAULT_PARTITION}",
+            f"part-{self.log}-{split_name(self.start)}.parquet",
+        )
+        schema = schema.with_metadata({**(schema.metadata or {}), **self.meta})
+        return _Part(self.pq, self.pa, rel, os.path.join(self.out_dir, rel), schema)
+
+    def close(self) -> List[str]:
+        """Finish every part (rows flushed, sorted again where needed, renamed whole): their
+        relative paths, in table then date order as `write_split` lists them."""
+        for part in self.parts.values():
+            part.finish(self.np)
+        keys = sorted(self.parts, key=lambda k: (k[0], k[1] is None, k[1] or ""))
+        return [self.parts[k].rel for k in keys]
+
+    def abort(self) -> None:
+        for part in self.parts.values():
+            part.discard()
+
+
+class _Part:
+    """One part file being written: its pending rows, its writer and whether its rows went back."""
+
+    def __init__(self, pq: Any, pa: Any, rel: str, path: str, schema: Any) -> None:
+        self.pq, self.pa, self.rel, self.path, self.schema = pq, pa, rel, path, schema
+        directory, base = os.path.split(path)
+        os.makedirs(directory, exist_ok=True)
+        self.tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
+        self.writer: Any = None
+        self.pending: List[Any] = []
+        self.pending_bytes = 0
+        self.last: Optional[Tuple[Any, int]] = None  # (t_ns or None, offset) of the last row added
+        self.unsorted = False
+
+    def add(self, np: Any, rows: Any) -> None:
+        rows = rows.replace_schema_metadata(self.schema.metadata)
+        t = rows.column("t_ns")
+        offs = rows.column("offset")
+        first = (t[0].as_py(), offs[0].as_py())
+        if self.last is not None and _row_key(first) < _row_key(self.last):
+            self.unsorted = True
+        self.last = (t[-1].as_py(), offs[-1].as_py())
+        self.pending.append(rows)
+        self.pending_bytes += rows.nbytes
+
+    def flush(self) -> None:
+        if not self.pending:
+            return
+        table = self.pa.concat_tables(self.pending)
+        self.pending, self.pending_bytes = [], 0
+        if self.writer is None:
+            encodings, dictionary = _encodings(self.pa, self.schema)
+            self.writer = self.pq.ParquetWriter(
+                self.tmp,
+                self.schema,
+                compression=COMPRESSION,
+                use_dictionary=dictionary,
+                column_encoding=encodings or None,
+                write_statistics=True,
+            )
+        self.writer.write_table(table, row_group_size=ROW_GROUP_ROWS)
+
+    def finish(self, np: Any) -> None:
+        self.flush()
+        if self.writer is not None:
+            self.writer.close()
+            self.writer = None
+        if self.unsorted:  # a clock that stepped back: the whole part in order again
+            table = self.pq.read_table(self.tmp, partitioning=None).replace_schema_metadata(self.schema.metadata)
+            os.unlink(self.tmp)
+            _write_atomic(self.pa, self.path, _sorted(np, self.pa, table))
+            return
+        os.replace(self.tmp, self.path)
+
+    def discard(self) -> None:
+        try:
+            if self.writer is not None:
+                self.writer.close()
+        except Exception:  # the write that failed already said why
+            pass
+        try:
+            os.unlink(self.tmp)
+        except OSError:
+            pass
+
+
+def _row_key(key: Tuple[Any, int]) -> Tuple[bool, int, int]:
+    """The sort key of a row's (t_ns, offset): known times first, by time, then by offset."""
+    t, off = key
+    return (t is None, t or 0, off)
 
 
 def clock_maps(read_at: ReadAt, size: int, split_bytes: int = SPLIT_BYTES) -> List[Any]:
@@ -777,18 +1104,39 @@ def export_dataset(
     split_bytes: int = SPLIT_BYTES,
     model: Optional[str] = None,
     serial: Optional[str] = None,
+    progress: bool = False,
 ) -> Summary:
     """Export logs into the dataset at `out_dir` (created): each log's parts and `_files` row.
-    A log that cannot be read or decoded is recorded in `_files`; a failed write raises OSError."""
+    A log that cannot be read or decoded is recorded in `_files`; a failed write raises OSError.
+    `progress`: a bar of the bytes of log done on stderr when it is a terminal (tqdm, of the
+    `[export]` extra; none without it)."""
     os.makedirs(out_dir, exist_ok=True)
     summary = Summary()
-    for path in paths:
-        row, parts, rows = export_log(path, out_dir, split_bytes, model, serial)
-        summary.logs.append(row)
-        summary.parts += parts
-        for name, n in rows.items():
-            summary.rows[name] = summary.rows.get(name, 0) + n
+    bar = _bar(paths) if progress else None
+    try:
+        for path in paths:
+            row, parts, rows = export_log(path, out_dir, split_bytes, model, serial, bar)
+            summary.logs.append(row)
+            summary.parts += parts
+            for name, n in rows.items():
+                summary.rows[name] = summary.rows.get(name, 0) + n
+    finally:
+        if bar is not None:
+            bar.close()
     return summary
+
+
+def _bar(paths: Sequence[str]) -> Any:
+    """A progress bar of the logs' bytes on stderr when it is a terminal, else None."""
+    if not sys.stderr.isatty():
+        return None
+    total = 0
+    for path in paths:
+        try:
+            total += os.path.getsize(path)
+        except OSError:
+            pass  # an unreadable log is a `_files` row; the bar counts what can be read
+    return progress_bar(total) if total else None
 
 
 def _need(module: str) -> Any:

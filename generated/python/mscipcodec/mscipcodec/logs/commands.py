@@ -95,7 +95,7 @@ def _export_dataset(args: argparse.Namespace) -> int:
 
     try:
         summary = dataset.export_dataset(
-            args.logs, args.dataset, args.split_bytes or dataset.SPLIT_BYTES, args.model, args.serial
+            args.logs, args.dataset, args.split_bytes or dataset.SPLIT_BYTES, args.model, args.serial, progress=True
         )
     except OSError as e:
         raise write_error(args.dataset, e) from None

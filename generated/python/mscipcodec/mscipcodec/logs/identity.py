@@ -159,11 +159,13 @@ def device_of(model: str) -> Optional[str]:
 
 def for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
     """Decode the fields that have per-device layouts with the log's device: decode_columns
-    decodes them with the first device's layout (it has no device argument); their rows move to
-    `cols.others` as the packet decoder gives them for `device`. Nothing changes for device None."""
+    decodes them with the first device's layout (it has no device argument). A table whose layout
+    `device` reads the same way (`_same_wire_layout`) keeps its rows under `device`'s class; the
+    rows of any other move to `cols.others` as the packet decoder gives them for `device`.
+    Nothing changes for device None."""
     if device is None:
         return
-    from ..codec.packets import DecodedField, decode_packet
+    from ..codec.packets import DecodedField, Table, decode_packet
 
     def redo(off: int, k: int) -> Any:
         n = HEADER_SIZE + data[off + LENGTH_OFFSET] + CHECKSUM_SIZE
@@ -174,6 +176,12 @@ def for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
         dev = getattr(t.cls, "DEVICE", None)
         if dev is None or dev == device or t.rows == 0:
             continue
+        same = _same_wire_layout(t.cls, device)
+        if same is not None:  # the same numbers read the same way: the rows stay, named for `device`
+            cols.tables[key] = Table(
+                t.set, t.descriptor, same, t.rows, t._raw_offsets, t._raw_index, [t._raw[item[0]] for item in t._items]
+            )
+            continue
         moved.extend((int(o), int(k), redo(int(o), int(k))) for o, k in zip(t.offsets, t.index))
         del cols.tables[key]
     others: List[Tuple[int, int, Any]] = []
@@ -182,3 +190,20 @@ def for_device(cols: Any, data: bytes, device: Optional[str]) -> None:
         others.append((off, k, redo(off, k)) if dev is not None and dev != device else (off, k, entry))
     if moved or others != cols.others:
         cols.others = sorted(others + moved, key=lambda x: (x[0], x[1]))
+
+
+def _same_wire_layout(cls: Any, device: str) -> Any:
+    """The layout class of `device` for the field of `cls` when the C accelerator reads both the
+    same way (`fast_items`: the same attributes, kinds, sizes and counts, in order; enums and
+    bit fields are kept as their wire numbers, so only their names differ), else None."""
+    from ..codec.layout import fast_items
+
+    mine = fast_items(cls)
+    for other in registry.lookup(cls.SET, cls.DESCRIPTOR) or ():
+        if getattr(other, "DEVICE", None) != device:
+            continue
+        theirs = fast_items(other)
+        if mine is not None and theirs is not None and [i[:4] for i in mine] == [i[:4] for i in theirs]:
+            return other
+        return None
+    return None
