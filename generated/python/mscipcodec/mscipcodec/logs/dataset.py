@@ -41,7 +41,7 @@ from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
 from .info import bad_checksums
 from .pipeline import split_device
-from .writers import _progress as progress_bar
+from .writers import progress_bar
 from .writers import need, table_name
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)

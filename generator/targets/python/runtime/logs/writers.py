@@ -277,7 +277,7 @@ class Source:
             except OSError as e:
                 raise ToolError(f"cannot open {path!r}: {e.strerror or e}") from None
             self.size = None if follow else os.fstat(self.file.fileno()).st_size
-        self.bar = _progress(self.size) if progress and sys.stderr.isatty() and self.size else None
+        self.bar = progress_bar(self.size) if progress and sys.stderr.isatty() and self.size else None
 
     def stop(self) -> None:
         self.stopped = True
@@ -320,7 +320,7 @@ class Source:
         return b"".join(self.chunks())
 
 
-def _progress(total: int) -> Any:
+def progress_bar(total: int) -> Any:
     """A tqdm bar in bytes (with bytes/s) on stderr, or None when tqdm is not installed."""
     try:
         tqdm = importlib.import_module("tqdm").tqdm  # no type stubs
