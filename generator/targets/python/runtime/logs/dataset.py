@@ -41,8 +41,7 @@ from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
 from .info import bad_checksums
 from .pipeline import split_device
-from .writers import progress_bar
-from .writers import need, table_name
+from .writers import need, progress_bar, table_name
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
