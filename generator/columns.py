@@ -168,7 +168,8 @@ def time_facts(proto: dict, attr=lambda name: name) -> dict:
     """The IR's `time` entry as the time model's tables: per kind (`gps_time`, `device_clock`,
     `leap_seconds`, `reference_time`, `external`, `sync_health`) a list of dicts with the set and descriptor as hex text, masks as hex text, and
     parameter names through `attr` (a back end's attribute naming); `clock_model` the host clock
-    model's parameters (generator/clock_model.py)."""
+    model's parameters (generator/clock_model.py); `gps_scale` the GPS time scale (the IR's
+    `time.gps_scale`: `epoch_unix_s`, `leap_seconds` rows)."""
     t = proto.get("time") or {}
     out: dict = {}
     for kind in ("gps_time", "device_clock", "leap_seconds"):
@@ -220,4 +221,5 @@ def time_facts(proto: dict, attr=lambda name: name) -> dict:
         for e in t.get("sync_health", [])
     ]
     out["clock_model"] = clock_model(proto)
+    out["gps_scale"] = t["gps_scale"]  # the GPS epoch and GPS - UTC (generator/gps_scale.py)
     return out

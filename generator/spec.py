@@ -9,6 +9,7 @@ from pathlib import Path
 import jsonschema
 
 from .diagnostics import Location, SpecError, SpecErrors
+from .gps_scale import COMMON, load_gps_scale
 from .ir import IR_VERSION, build_protocol
 from .overlay import apply_extensions
 from .passes.context import SpecFile
@@ -141,7 +142,7 @@ def load_protocol_dir(directory: Path, root: Path = ROOT, overlays: list[tuple[P
 
 
 def _protocol_dirs(spec_dir: Path) -> list[Path]:
-    return sorted(p for p in spec_dir.iterdir() if p.is_dir() and p.name != "schema")
+    return sorted(p for p in spec_dir.iterdir() if p.is_dir() and p.name not in ("schema", COMMON))
 
 
 def load_spec(spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Path] = ()) -> dict:
@@ -185,10 +186,16 @@ def load_spec(spec_dir: Path | None = None, root: Path = ROOT, overlays: list[Pa
             protocols.append(load_protocol_dir(d, own_root, extra[name]))
         except SpecErrors as e:
             errors.extend(e.errors)
+    try:
+        gps_scale = load_gps_scale(Path(spec_dir), root)
+    except SpecErrors as e:
+        errors.extend(e.errors)
     if errors:
         raise SpecErrors(errors)
     if not protocols:
         raise SpecError(None, _no_protocol(Path(spec_dir)), "a spec root: one directory per protocol, e.g. spec/")
+    for p in protocols:  # the GPS time scale, the same for every protocol (generator/gps_scale.py)
+        p["time"]["gps_scale"] = gps_scale
     return {"ir_version": IR_VERSION, "protocols": protocols}
 
 

@@ -995,7 +995,10 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         for tpl, path in _TEMPLATES.items():
             out[root + path.format(pkg=pkg.pkg)] = env.get_template(f"c/{tpl}").render(ctx)
         out[root + "tools/device_facts.h"] = env.get_template("c/tools/device_facts.h.j2").render(
-            ctx, cs=lambda v: "NULL" if v is None else c_string(str(v)), **device_tables(proto)
+            ctx,
+            cs=lambda v: "NULL" if v is None else c_string(str(v)),
+            gps_scale=proto["time"]["gps_scale"],
+            **device_tables(proto),
         )
         if ctx["stream_example"]:
             out[root + "examples/configure_and_stream.c"] = env.get_template(

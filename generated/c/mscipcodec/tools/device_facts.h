@@ -367,4 +367,20 @@ static const dev_timesync_t DEV_TIMESYNC[] = {
     {NULL, 0, 0, NULL, NULL, 0, 0, 0, 0, NULL, NULL, 0, -1, 0, NULL, NULL, 0, -1, 0, NULL, NULL, 0, 0, 0}};
 static const size_t DEV_TIMESYNC_COUNT = 0u;
 
+/* The GPS time scale (spec/common/gps_time.yaml, the same for every protocol): the GPS epoch
+   1980-01-06T00:00:00Z in Unix seconds, and GPS - UTC in seconds from each UTC instant on (the
+   Unix time of the first UTC second with the new offset; IERS Bulletin C), 0 before the first. */
+#define DEV_GPS_EPOCH_UNIX_S 315964800LL
+typedef struct {
+    int64_t from_unix_s;
+    int gps_minus_utc_s;
+} dev_leap_t;
+static const dev_leap_t DEV_LEAP_TABLE[] = {
+    {362793600LL, 1},   {394329600LL, 2},   {425865600LL, 3},   {489024000LL, 4},   {567993600LL, 5},
+    {631152000LL, 6},   {662688000LL, 7},   {709948800LL, 8},   {741484800LL, 9},   {773020800LL, 10},
+    {820454400LL, 11},  {867715200LL, 12},  {915148800LL, 13},  {1136073600LL, 14}, {1230768000LL, 15},
+    {1341100800LL, 16}, {1435708800LL, 17}, {1483228800LL, 18},
+};
+static const size_t DEV_LEAP_COUNT = 18u;
+
 #endif

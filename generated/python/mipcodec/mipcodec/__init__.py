@@ -126,7 +126,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "17a97fa053a36fa9"
+SPEC_HASH = "fc07cd5fc98d115a"
 
 __all__ = [
     "SPEC_HASH",

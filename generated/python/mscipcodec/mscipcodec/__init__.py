@@ -96,7 +96,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "0.1.0"
-SPEC_HASH = "eb9f6631ca28d8fc"
+SPEC_HASH = "3314b414c7a35ed5"
 
 __all__ = [
     "SPEC_HASH",

@@ -20,7 +20,8 @@ know about the data fields, taken from the spec rather than written by hand:
   be set, bits that must be clear) of the fields carrying a GPS time, in order of preference (set
   of the protocol's shared data placeholder: that field in any data set); `DEVICE_CLOCKS` (set, descriptor,
   attribute, counts per second) of the device clock; `LEAP_SECONDS` (set, descriptor, attribute,
-  valid-flags attribute, bits that must be set) of the GPS - UTC leap second reports.
+  valid-flags attribute, bits that must be set) of the GPS - UTC leap second reports;
+  `GPS_EPOCH_UNIX_S` and `LEAP_TABLE`, the GPS time scale (spec/common/gps_time.yaml).
 """
 
 from __future__ import annotations
@@ -143,6 +144,32 @@ CLOCK_BUCKET_NS = 1000000000
 CLOCK_BUCKETS = 2
 CLOCK_MIN_BUCKETS = 3
 CLOCK_RESTART_NS = 1000000000
+
+# The GPS time scale (spec/common/gps_time.yaml, the same for every protocol; logs/timebase.py,
+# sim/world.py and device/timesync.py read it): the GPS epoch 1980-01-06T00:00:00Z in Unix seconds,
+# and GPS - UTC in seconds from each UTC instant on (the Unix time of the first UTC second with the
+# new offset; IERS Bulletin C), 0 before the first.
+GPS_EPOCH_UNIX_S = 315964800
+LEAP_TABLE: Tuple[Tuple[int, int], ...] = (
+    (362793600, 1),
+    (394329600, 2),
+    (425865600, 3),
+    (489024000, 4),
+    (567993600, 5),
+    (631152000, 6),
+    (662688000, 7),
+    (709948800, 8),
+    (741484800, 9),
+    (773020800, 10),
+    (820454400, 11),
+    (867715200, 12),
+    (915148800, 13),
+    (1136073600, 14),
+    (1230768000, 15),
+    (1341100800, 16),
+    (1435708800, 17),
+    (1483228800, 18),
+)
 
 # Per device, the field carrying its own reference time (the host clock model, clock.py;
 # docs/time.md): (device, set, descriptor, kind "count" or "gps", count parameter, its units per

@@ -136,7 +136,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "17a97fa053a36fa9";
+pub const SPEC_HASH: &str = "fc07cd5fc98d115a";
 /// The protocol's name in the spec (`spec/mip/`), as the tools print it.
 pub const PROTOCOL: &str = "mip";
 

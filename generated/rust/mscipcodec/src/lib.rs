@@ -124,7 +124,7 @@ pub const VERSION_MINOR: u32 = 1;
 pub const VERSION_PATCH: u32 = 0;
 /// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "eb9f6631ca28d8fc";
+pub const SPEC_HASH: &str = "3314b414c7a35ed5";
 /// The protocol's name in the spec (`spec/mscip/`), as the tools print it.
 pub const PROTOCOL: &str = "mscip";
 

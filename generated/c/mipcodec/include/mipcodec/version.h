@@ -11,6 +11,6 @@
 #define MIPC_VERSION "0.1.0"
 /* First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two packages
  * with the same hash were generated from the same spec. */
-#define MIPC_SPEC_HASH "17a97fa053a36fa9"
+#define MIPC_SPEC_HASH "fc07cd5fc98d115a"
 
 #endif

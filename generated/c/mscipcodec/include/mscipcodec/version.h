@@ -11,6 +11,6 @@
 #define MSCIPC_VERSION "0.1.0"
 /* First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two packages
  * with the same hash were generated from the same spec. */
-#define MSCIPC_SPEC_HASH "eb9f6631ca28d8fc"
+#define MSCIPC_SPEC_HASH "3314b414c7a35ed5"
 
 #endif

@@ -12,7 +12,7 @@
 #define MIPCODEC_VERSION "0.1.0"
 /// First 16 hex digits of the SHA-256 of the mip protocol's canonical IR: two packages
 /// with the same hash were generated from the same spec.
-#define MIPCODEC_SPEC_HASH "17a97fa053a36fa9"
+#define MIPCODEC_SPEC_HASH "fc07cd5fc98d115a"
 
 namespace mipcodec {
 
@@ -20,6 +20,6 @@ inline constexpr int kVersionMajor = 0;
 inline constexpr int kVersionMinor = 1;
 inline constexpr int kVersionPatch = 0;
 inline constexpr std::string_view kVersion = "0.1.0";
-inline constexpr std::string_view kSpecHash = "17a97fa053a36fa9";
+inline constexpr std::string_view kSpecHash = "fc07cd5fc98d115a";
 
 } // namespace mipcodec

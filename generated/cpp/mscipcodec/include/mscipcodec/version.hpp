@@ -12,7 +12,7 @@
 #define MSCIPCODEC_VERSION "0.1.0"
 /// First 16 hex digits of the SHA-256 of the mscip protocol's canonical IR: two packages
 /// with the same hash were generated from the same spec.
-#define MSCIPCODEC_SPEC_HASH "eb9f6631ca28d8fc"
+#define MSCIPCODEC_SPEC_HASH "3314b414c7a35ed5"
 
 namespace mscipcodec {
 
@@ -20,6 +20,6 @@ inline constexpr int kVersionMajor = 0;
 inline constexpr int kVersionMinor = 1;
 inline constexpr int kVersionPatch = 0;
 inline constexpr std::string_view kVersion = "0.1.0";
-inline constexpr std::string_view kSpecHash = "eb9f6631ca28d8fc";
+inline constexpr std::string_view kSpecHash = "3314b414c7a35ed5";
 
 } // namespace mscipcodec

@@ -19,7 +19,7 @@ block path) does not distinguish the two.
 GPS time to UTC: UTC = GPS - leap seconds, the leap seconds being the log's own report
 (`_columns.LEAP_SECONDS`, e.g. the CV7's GPS leap seconds 0x91/0x92,0x11, when its valid flag is
 set) -- the latest at or before the row, else the log's first -- and otherwise this module's
-table `LEAP_TABLE` (IERS Bulletin C).
+table `LEAP_TABLE` (the GPS time scale of spec/common/gps_time.yaml; IERS Bulletin C).
 
 **Clock map.** Anchors are (device_ns, gps_ns) pairs from packets that carry both a device clock
 and a valid GPS time. A row with only a device clock gets gps = anchor.gps + (device_ns -
@@ -57,39 +57,15 @@ from ..codec.packets import DecodedField, Packet
 NS = 1_000_000_000
 SECONDS_PER_WEEK = 604_800
 WEEK_NS = SECONDS_PER_WEEK * NS
-# 1980-01-06T00:00:00Z, the GPS epoch, in seconds since the Unix epoch: 3657 days after
-# 1970-01-01 (10 years of which 2 leap years: 3652 days to 1980-01-01, then 5 days) * 86400.
-GPS_EPOCH_UNIX_S = 315_964_800
+# The GPS time scale (spec/common/gps_time.yaml, generated into _columns): the GPS epoch
+# 1980-01-06T00:00:00Z in Unix seconds, and `LEAP_TABLE`, GPS - UTC in seconds from each UTC
+# instant on (the Unix time of the first UTC second with the new offset; IERS Bulletin C), 0 before
+# the first.
+GPS_EPOCH_UNIX_S = _columns.GPS_EPOCH_UNIX_S
 GPS_EPOCH_UNIX_NS = GPS_EPOCH_UNIX_S * NS
 # A device clock going back by more than this from its previous value is a reset (new epoch).
 RESET_NS = 1 * NS
-
-# GPS - UTC in seconds from each UTC instant on (seconds since the Unix epoch of the first UTC
-# second with the new offset). Source: IERS Bulletin C (https://www.iers.org/IERS/EN/Publications/
-# Bulletins/bulletins.html; the history is the file Leap_Second.dat of the IERS Earth Orientation
-# Center): TAI - UTC was 19 s at the GPS epoch, so GPS - UTC = (TAI - UTC) - 19. Bulletin C 72
-# (July 2026) and every one since C 53 (January 2017) announce no new leap second: 18 s holds
-# from 2017-01-01. Before 1981-07-01 GPS - UTC is 0.
-LEAP_TABLE: Tuple[Tuple[int, int], ...] = (
-    (362_793_600, 1),  # 1981-07-01
-    (394_329_600, 2),  # 1982-07-01
-    (425_865_600, 3),  # 1983-07-01
-    (489_024_000, 4),  # 1985-07-01
-    (567_993_600, 5),  # 1988-01-01
-    (631_152_000, 6),  # 1990-01-01
-    (662_688_000, 7),  # 1991-01-01
-    (709_948_800, 8),  # 1992-07-01
-    (741_484_800, 9),  # 1993-07-01
-    (773_020_800, 10),  # 1994-07-01
-    (820_454_400, 11),  # 1996-01-01
-    (867_715_200, 12),  # 1997-07-01
-    (915_148_800, 13),  # 1999-01-01
-    (1_136_073_600, 14),  # 2006-01-01
-    (1_230_768_000, 15),  # 2009-01-01
-    (1_341_100_800, 16),  # 2012-07-01
-    (1_435_708_800, 17),  # 2015-07-01
-    (1_483_228_800, 18),  # 2017-01-01
-)
+LEAP_TABLE: Tuple[Tuple[int, int], ...] = _columns.LEAP_TABLE
 # The same instants on the GPS time scale (ns since the GPS epoch): the UTC instant T with the new
 # offset L is GPS T - epoch + L. GPS instants before it use the previous offset, so the inserted
 # second 23:59:60 (GPS T - epoch + L - 1 .. + L) maps to T .. T + 1 (see the module docstring).

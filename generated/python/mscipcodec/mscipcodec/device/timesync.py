@@ -31,19 +31,24 @@ import time
 from typing import Any, Callable, Dict, List, Optional
 
 from .. import _sim
-from .._columns import REFERENCE_TIMES
+from .._columns import GPS_EPOCH_UNIX_S, LEAP_TABLE, REFERENCE_TIMES
 from ..session import SessionError
 
 RATE_HZ = 50.0  # the status and time fields' rate (enough packets per second for the clock model)
 UPDATE_AFTER_S = 0.15  # an update is sent this long after the device's PPS edge (window: the spec's)
-GPS_EPOCH_UNIX = 315964800  # 1980-01-06T00:00:00Z in Unix seconds
-GPS_UTC_S = 18  # GPS - UTC since 2017-01-01 (the host's wall clock is UTC)
 WEEK_S = 604800
 
 
+def gps_minus_utc(unix_s: float) -> int:
+    """GPS - UTC (s) at a UTC instant (Unix seconds), from the GPS time scale (`_columns.LEAP_TABLE`,
+    spec/common/gps_time.yaml)."""
+    return next((leap for at, leap in reversed(LEAP_TABLE) if unix_s >= at), 0)
+
+
 def host_gps_seconds() -> float:
-    """The host's wall clock as GPS seconds since the GPS epoch."""
-    return time.time() - GPS_EPOCH_UNIX + GPS_UTC_S
+    """The host's wall clock (UTC) as GPS seconds since the GPS epoch."""
+    now = time.time()
+    return now - GPS_EPOCH_UNIX_S + gps_minus_utc(now)
 
 
 def check_duration(duration: float) -> float:

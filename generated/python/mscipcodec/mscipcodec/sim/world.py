@@ -16,14 +16,19 @@ import math
 import random
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
+from .. import _columns
+
 GRAVITY = 9.80665
 EARTH_RADIUS = 6378137.0
 ORIGIN = (46.5197, 6.6323, 372.0)  # latitude, longitude (deg), height above the ellipsoid (m)
 MAG_NED = (0.2160, 0.0076, 0.4270)  # a fixed field model (gauss): near Lausanne, declination 2 deg
 GPS_WEEK = 2400
 GPS_TOW0 = 345600.0  # Wednesday 00:00 of week 2400
-GPS_EPOCH_DAYS = 3657  # days from 1970-01-01 to the GPS epoch 1980-01-06
-LEAP_SECONDS = 18
+# The GPS time scale (spec/common/gps_time.yaml through _columns): days from 1970-01-01 to the
+# GPS epoch 1980-01-06, and GPS - UTC in the simulated world's time (2026: after the last leap
+# second of the table).
+GPS_EPOCH_DAYS = _columns.GPS_EPOCH_UNIX_S // 86400
+LEAP_SECONDS = _columns.LEAP_TABLE[-1][1]
 GNSS_FIX_AFTER = 2.0  # seconds of simulated time a receiver takes to a 3D fix
 KINEMATIC_SPEED = 2.0  # m/s: GNSS velocity gives a heading from this speed on (CV7 manual line 533)
 MAG_DISTURBANCE = (0.15, 0.10, 0.30)  # gauss, body frame: a magnetic disturbance (--mag-disturbance)

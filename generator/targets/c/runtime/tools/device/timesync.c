@@ -16,10 +16,8 @@
  * read returned, in ns, which is when the Python session dates the bytes of a read. */
 #include "device.h"
 
-#define RATE_HZ 50.0               /* the status and time fields' rate (packets for the clock model) */
-#define UPDATE_AFTER_S 0.15        /* an update goes out this long after the device's PPS edge */
-#define GPS_EPOCH_UNIX 315964800.0 /* 1980-01-06T00:00:00Z in Unix seconds */
-#define GPS_UTC_S 18.0             /* GPS - UTC since 2017-01-01 (the host's wall clock is UTC) */
+#define RATE_HZ 50.0        /* the status and time fields' rate (packets for the clock model) */
+#define UPDATE_AFTER_S 0.15 /* an update goes out this long after the device's PPS edge */
 #define WEEK_S 604800LL
 #define MAX_WEEK_S (7.0 * 86400.0) /* the longest --duration */
 
@@ -86,11 +84,19 @@ static uint64_t wrap_now_ms(void *ctx) {
     return s->inner.now_ms(s->inner.ctx);
 }
 
-/* The host's wall clock as GPS seconds since the GPS epoch. */
+/* The host's wall clock (UTC) as GPS seconds since the GPS epoch: GPS - UTC from the GPS time
+   scale's table (DEV_LEAP_TABLE, spec/common/gps_time.yaml), as device/timesync.py does. */
 static double host_gps_seconds(void) {
     struct timespec ts;
+    int leap = 0;
+    size_t i;
     clock_gettime(CLOCK_REALTIME, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9 - GPS_EPOCH_UNIX + GPS_UTC_S;
+    for (i = 0; i < DEV_LEAP_COUNT; i++) {
+        if ((int64_t)ts.tv_sec >= DEV_LEAP_TABLE[i].from_unix_s) {
+            leap = DEV_LEAP_TABLE[i].gps_minus_utc_s;
+        }
+    }
+    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9 - (double)DEV_GPS_EPOCH_UNIX_S + (double)leap;
 }
 
 /* x rounded to 3 decimals as Python's round(x, 3) (correctly rounded). */

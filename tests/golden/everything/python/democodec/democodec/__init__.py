@@ -98,7 +98,7 @@ def __dir__() -> List[str]:
 
 
 __version__ = "2.10.3"
-SPEC_HASH = "09faa6715ed220e4"
+SPEC_HASH = "f5fc3f0d91525c4c"
 
 __all__ = [
     "SPEC_HASH",

@@ -126,7 +126,7 @@ pub const VERSION_MINOR: u32 = 10;
 pub const VERSION_PATCH: u32 = 3;
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two crates
 /// with the same hash were generated from the same spec.
-pub const SPEC_HASH: &str = "09faa6715ed220e4";
+pub const SPEC_HASH: &str = "f5fc3f0d91525c4c";
 /// The protocol's name in the spec (`spec/demo/`), as the tools print it.
 pub const PROTOCOL: &str = "demo";
 

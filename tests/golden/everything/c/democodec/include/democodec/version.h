@@ -11,6 +11,6 @@
 #define DEMOC_VERSION "2.10.3"
 /* First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two packages
  * with the same hash were generated from the same spec. */
-#define DEMOC_SPEC_HASH "09faa6715ed220e4"
+#define DEMOC_SPEC_HASH "f5fc3f0d91525c4c"
 
 #endif

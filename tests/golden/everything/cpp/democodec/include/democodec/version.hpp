@@ -12,7 +12,7 @@
 #define DEMOCODEC_VERSION "2.10.3"
 /// First 16 hex digits of the SHA-256 of the demo protocol's canonical IR: two packages
 /// with the same hash were generated from the same spec.
-#define DEMOCODEC_SPEC_HASH "09faa6715ed220e4"
+#define DEMOCODEC_SPEC_HASH "f5fc3f0d91525c4c"
 
 namespace democodec {
 
@@ -20,6 +20,6 @@ inline constexpr int kVersionMajor = 2;
 inline constexpr int kVersionMinor = 10;
 inline constexpr int kVersionPatch = 3;
 inline constexpr std::string_view kVersion = "2.10.3";
-inline constexpr std::string_view kSpecHash = "09faa6715ed220e4";
+inline constexpr std::string_view kSpecHash = "f5fc3f0d91525c4c";
 
 } // namespace democodec
