@@ -133,6 +133,30 @@ class Scenario:
         rate = tuple((e1[k] - e0[k]) / h for k in range(3))
         return p1, vel, acc, e1, rate  # type: ignore[return-value]
 
+    def truth_many(self, ts: Any) -> Tuple[Any, Any, Any, Any, Any]:
+        """`truth` at many times at once (a numpy array `ts`): arrays of shape (N, 3), the same
+        formulas element by element (the batch path of the fleet generator, fleet_batch.py).
+        A trajectory file has no batch form: NotImplementedError (the caller takes `truth`)."""
+        import numpy as np
+
+        n = len(ts)
+        if self.name == "circle":
+            radius, speed = 50.0, 5.0
+            w = speed / radius
+            a = w * ts
+            sin, cos = np.sin(a), np.cos(a)
+            zero = np.zeros(n)
+            pos = np.stack([radius * sin, radius * (1.0 - cos), zero], axis=1)
+            vel = np.stack([speed * cos, speed * sin, zero], axis=1)
+            acc = np.stack([-speed * w * sin, speed * w * cos, zero], axis=1)
+            euler = np.stack([zero, zero, np.arctan2(sin, cos)], axis=1)
+            rate = np.tile([0.0, 0.0, w], (n, 1))
+            return pos, vel, acc, euler, rate
+        if self.track:
+            raise NotImplementedError("a trajectory file has no batch form")
+        still = np.zeros((n, 3))
+        return still, still, still, np.tile([0.0, 0.0, math.radians(30.0)], (n, 1)), still
+
 
 MAX_TRACK_BYTES = 16 << 20  # a trajectory file is read no further than 16 MiB
 
@@ -548,6 +572,174 @@ class World:
             "heading_sources": sum(in_use.get(s, 0) for s in nav.in_use),
             "filter_valid_heading_update": any(s in in_use for s in nav.in_use),
         }
+
+    # ------------------------------------------------------------------ batch
+    def batchable(self) -> bool:
+        """Whether `batch` gives what `quantities` would: a static or circle scenario, no magnetic
+        disturbance, no RTK corrections, no dual-antenna heading, at most one heading source and
+        no heading from the velocity vector's turn (what the simulated fleet uses)."""
+        nav = self.filter
+        enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
+        rule = (nav.profile.get("heading") or {}).get("without_aids")
+        return (
+            not self.scenario.track
+            and not self.mag_disturbances
+            and not self.rtk_corrections
+            and not nav.antennas_ok
+            and set(enabled) <= {"magnetometer", "gnss_velocity", "gnss", "pressure"}
+            and len(set(enabled) & {"magnetometer", "gnss_velocity"}) <= 1
+            and not (rule and not nav.heading_sources)
+        )
+
+    def batch(self, ts: Any, rng: Any) -> Dict[str, Any]:
+        """The quantities of `quantities` a data stream of the simulated fleet shows, at the
+        increasing simulated times `ts` (a numpy array) at once, when `batchable()`: the same
+        formulas on arrays, the noise drawn from `rng` (a numpy Generator), the filter's aiding
+        and state machine advanced sample by sample as `quantities` does (NavFilter itself).
+        Arrays of shape (N,) or (N, 3); filter_state: the state names, an array of str."""
+        import numpy as np
+
+        n = len(ts)
+        pos, vel, acc, euler, rate = self.scenario.truth_many(ts)
+        c = _rot_many(euler[:, 0], euler[:, 1], euler[:, 2])
+        mag = np.einsum("nij,i->nj", c, MAG_NED) + rng.normal(0.0, 1e-4, (n, 3))
+        fix = ts >= GNSS_FIX_AFTER
+        for a, b in self.gnss_outages:
+            fix &= ~((ts >= a) & (ts < b))
+        rtk = self.filter.profile.get("rtk") or {}
+        sigma = 0.5  # no RTK solution: the receivers' horizontal 1 sigma (m), as in quantities
+        gnss_err = rng.normal(0.0, 1.0, (n, 3)) * (sigma, sigma, 1.6 * sigma)
+        gnss_vel = vel + rng.normal(0.0, 0.05, (n, 3))
+        offsets = self._aid_many(ts, fix, pos, vel, euler[:, 2], mag, pos + gnss_err, gnss_vel)
+        out_pos = pos + offsets["position"]
+        lat0 = math.radians(ORIGIN[0])
+        lat = ORIGIN[0] + np.degrees(pos[:, 0] / EARTH_RADIUS)
+        lon = ORIGIN[1] + np.degrees(pos[:, 1] / (EARTH_RADIUS * math.cos(lat0)))
+        height = ORIGIN[2] - pos[:, 2]
+        force = np.einsum("nij,ni->nj", c, acc - (0.0, 0.0, GRAVITY))
+        gyro = rate + np.subtract(self.gyro_bias, self.captured_bias)
+        week, tow = self.gps_start[0] + np.zeros(n, dtype=np.int64), self.gps_start[1] + ts
+        late = tow >= 604800.0
+        week[late] += (tow[late] // 604800.0).astype(np.int64)
+        tow[late] %= 604800.0
+        horizontal = rtk["uncertainty"]["single"] if rtk else 1.2
+        return {
+            "specific_force": force + rng.normal(0.0, 0.002, (n, 3)),
+            "angular_rate": gyro + rng.normal(0.0, 1e-4, (n, 3)),
+            "magnetic_field": mag,
+            "linear_accel": np.einsum("nij,ni->nj", c, acc),
+            "latitude": ORIGIN[0] + np.degrees((out_pos[:, 0] + rng.normal(0.0, 0.05, n)) / EARTH_RADIUS),
+            "longitude": ORIGIN[1]
+            + np.degrees((out_pos[:, 1] + rng.normal(0.0, 0.05, n)) / (EARTH_RADIUS * math.cos(lat0))),
+            "height": ORIGIN[2] - out_pos[:, 2] + rng.normal(0.0, 0.05, n),
+            "velocity_ned": vel + offsets["velocity"] + rng.normal(0.0, 0.01, (n, 3)),
+            "gnss_latitude": lat + np.degrees(gnss_err[:, 0] / EARTH_RADIUS),
+            "gnss_longitude": lon + np.degrees(gnss_err[:, 1] / EARTH_RADIUS),
+            "gnss_height": height + gnss_err[:, 2],
+            "gnss_velocity_ned": gnss_vel,
+            "horizontal_accuracy": np.full(n, horizontal),
+            "vertical_accuracy": np.full(n, 1.6 * horizontal if rtk else 2.0),
+            "gps_tow": tow,
+            "gps_week": week,
+            "gnss_fix": fix,
+            "num_sv": np.where(fix, 14, 0),
+            **offsets["filter"],
+        }
+
+    def _aid_many(self, ts: Any, fix: Any, pos: Any, vel: Any, yaw: Any, mag: Any, gnss_pos: Any, gnss_vel: Any) -> Any:
+        """`_aid_internal` and the filter's state over `batch`'s samples: the offsets the aiding
+        leaves (each sample in use pulls them INTERNAL_GAIN toward the measurement's error), and
+        the filter's state, flags and valid outputs (NavFilter.state, called at every sample)."""
+        import numpy as np
+
+        nav = self.filter
+        enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
+        anomaly = np.abs(np.sqrt((mag * mag).sum(axis=1)) / _MAG_NORM - 1.0) > MAG_ANOMALY
+        speed = np.hypot(vel[:, 0], vel[:, 1])
+        available = {"magnetometer": ~anomaly, "gnss_velocity": fix & (speed >= KINEMATIC_SPEED), "gnss": fix}
+        use = {s: available[s] for s in enabled if s in available}
+        heading = next((s for s in enabled if s in ("magnetometer", "gnss_velocity")), None)
+        gnss = use.get("gnss", np.zeros(len(ts), dtype=bool))
+        out = {
+            "position": _blend_many(nav, "position", gnss, gnss_pos - pos),
+            "velocity": _blend_many(nav, "velocity", gnss, gnss_vel - vel),
+        }
+        # (the heading offset shows only in nav_yaw, which batch does not give: left as it was)
+        names, flags = [], np.zeros(len(ts), dtype=np.int64)
+        in_use_of = {}
+        for i, t in enumerate(ts.tolist()):
+            key = tuple(bool(u[i]) for u in use.values())
+            if key not in in_use_of:
+                in_use_of[key] = [s for s, on in zip(use, key) if on]
+            nav.in_use = in_use_of[key]
+            if heading is not None and use[heading][i]:
+                nav.accepted["heading"] = t
+            if gnss[i]:
+                nav.accepted["position"] = nav.accepted["velocity"] = t
+            nav.anomaly = bool(anomaly[i]) and "magnetometer" in enabled
+            name, flags[i] = nav.state(t, bool(fix[i]))
+            names.append(name)
+        states = np.array(names)
+        out["filter"] = {
+            "filter_state": states,
+            "filter_flags": flags,
+            "filter_valid_attitude": _valid_many(nav, states, "attitude"),
+            "filter_valid_navigation": _valid_many(nav, states, "navigation"),
+        }
+        return out
+
+
+def _valid_many(nav: NavFilter, states: Any, kind: str) -> Any:
+    import numpy as np
+
+    ok = {s: nav.valid(s, kind) for s in set(states.tolist())}
+    return np.array([ok[s] for s in states.tolist()], dtype=bool)
+
+
+def _blend_many(nav: NavFilter, kind: str, mask: Any, error: Any) -> Any:
+    """The offsets of `kind` after each sample when the samples where `mask` is set each pull them
+    INTERNAL_GAIN toward `error` (`blend` in `_aid_internal`): an exponential average over those
+    samples, held between them; computed in blocks of 64 (a lower-triangular matrix of powers of
+    1 - INTERNAL_GAIN). Leaves nav.offsets[kind] at the last one."""
+    import numpy as np
+
+    n, width = error.shape
+    g = INTERNAL_GAIN
+    start = np.asarray(nav.offsets.get(kind, (0.0,) * width), dtype=float)
+    idx = np.flatnonzero(mask)
+    if not len(idx):
+        return np.tile(start, (n, 1))
+    e = error[idx]
+    block = 64
+    k = np.arange(block)
+    weights = np.tril(g * (1.0 - g) ** (k[:, None] - k[None, :]))
+    decay = (1.0 - g) ** (k + 1)
+    blended = np.empty_like(e)
+    prev = start
+    for b in range(0, len(e), block):
+        chunk = e[b : b + block]
+        m = len(chunk)
+        blended[b : b + m] = weights[:m, :m] @ chunk + decay[:m, None] * prev
+        prev = blended[b + m - 1]
+    nav.offsets[kind] = tuple(float(x) for x in prev)
+    # each sample: the offsets after the last sample in use at or before it (the start before any)
+    last = np.searchsorted(idx, np.arange(n), side="right") - 1
+    return np.where(last[:, None] >= 0, blended[np.maximum(last, 0)], start)
+
+
+def _rot_many(roll: Any, pitch: Any, yaw: Any) -> Any:
+    """`_rot` of arrays of Euler angles: shape (N, 3, 3)."""
+    import numpy as np
+
+    cr, sr, cp, sp, cy, sy = np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
+    return np.stack(
+        [
+            np.stack([cp * cy, sr * sp * cy - cr * sy, cr * sp * cy + sr * sy], axis=1),
+            np.stack([cp * sy, sr * sp * sy + cr * cy, cr * sp * sy - sr * cy], axis=1),
+            np.stack([-sp, sr * cp, cr * cp], axis=1),
+        ],
+        axis=1,
+    )
 
 
 _MAG_NORM = math.sqrt(sum(m * m for m in MAG_NED))

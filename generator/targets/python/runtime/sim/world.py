@@ -133,7 +133,6 @@ class Scenario:
         rate = tuple((e1[k] - e0[k]) / h for k in range(3))
         return p1, vel, acc, e1, rate  # type: ignore[return-value]
 
-
     def truth_many(self, ts: Any) -> Tuple[Any, Any, Any, Any, Any]:
         """`truth` at many times at once (a numpy array `ts`): arrays of shape (N, 3), the same
         formulas element by element (the batch path of the fleet generator, fleet_batch.py).
@@ -573,7 +572,6 @@ class World:
             "heading_sources": sum(in_use.get(s, 0) for s in nav.in_use),
             "filter_valid_heading_update": any(s in in_use for s in nav.in_use),
         }
-
 
     # ------------------------------------------------------------------ batch
     def batchable(self) -> bool:

@@ -87,7 +87,10 @@ class Stream:
         self.fields: List[_Field] = []
         at = framing.HEADER_SIZE
         while at < len(packets[0]) - 2:
-            length, descriptor = packets[0][at + framing.FIELD_LENGTH_OFFSET], packets[0][at + framing.FIELD_DESCRIPTOR_OFFSET]
+            length, descriptor = (
+                packets[0][at + framing.FIELD_LENGTH_OFFSET],
+                packets[0][at + framing.FIELD_DESCRIPTOR_OFFSET],
+            )
             size = length - framing.field_length_adjust(set_id, descriptor)
             data_at = at + framing.FIELD_HEADER_SIZE
             self.fields.append(_Field(sim, set_id, descriptor, data_at, packets[0][data_at : data_at + size]))
@@ -301,7 +304,9 @@ def _interleave(
         out[starts[mine][:, None] + np.arange(p.shape[1])] = p[row[mine]]
     total = int(junk_len.sum())
     if total:
-        at = np.repeat(starts - junk_len, junk_len) + (np.arange(total) - np.repeat(np.cumsum(junk_len) - junk_len, junk_len))
+        at = np.repeat(starts - junk_len, junk_len) + (
+            np.arange(total) - np.repeat(np.cumsum(junk_len) - junk_len, junk_len)
+        )
         out[at] = junk[rng.integers(0, len(junk), total)]
     f.write(memoryview(out))
     return total, (int(lengths[-1]), int(which[-1]))
