@@ -39,6 +39,7 @@ from fractions import Fraction
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _sim, registry
+from ._protocol import SET_OFFSET
 from .codec.framing import PacketBuilder
 from .codec.stdio import closed_stdout
 from .sim import Simulator, parse_identity
@@ -345,10 +346,10 @@ def _bytes_per_second(model: str) -> float:
     sim = Simulator(model, 0)
     chunks: List[Tuple[float, bytes]] = []
     for packet in configuration(model):
-        sim.feed(packet, 0.0)
-    sim.poll(0.0)
-    chunks = sim.poll(1.0)
-    return float(sum(len(b) for _, b in chunks))
+        chunks += sim.feed(packet, 0.0)
+    chunks += sim.poll(0.0)  # each stream's first sample: a packet of each data set
+    sizes = {packet[SET_OFFSET]: len(packet) for _, packet in chunks if packet[SET_OFFSET] in sim.plan}
+    return float(sum(n * sim.base_rates[s] / sim.plan[s][0][1] for s, n in sizes.items()))
 
 
 def _simulate_device(args: Tuple[Device, str]) -> Dict[str, Any]:

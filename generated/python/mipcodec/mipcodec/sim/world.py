@@ -656,7 +656,12 @@ class World:
         enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
         anomaly = np.abs(np.sqrt((mag * mag).sum(axis=1)) / _MAG_NORM - 1.0) > MAG_ANOMALY
         speed = np.hypot(vel[:, 0], vel[:, 1])
-        available = {"magnetometer": ~anomaly, "gnss_velocity": fix & (speed >= KINEMATIC_SPEED), "gnss": fix}
+        available = {
+            "magnetometer": ~anomaly,
+            "gnss_velocity": fix & (speed >= KINEMATIC_SPEED),
+            "gnss": fix,
+            "pressure": np.ones(len(ts), dtype=bool),
+        }
         use = {s: available[s] for s in enabled if s in available}
         heading = next((s for s in enabled if s in ("magnetometer", "gnss_velocity")), None)
         gnss = use.get("gnss", np.zeros(len(ts), dtype=bool))
@@ -665,20 +670,28 @@ class World:
             "velocity": _blend_many(nav, "velocity", gnss, gnss_vel - vel),
         }
         # (the heading offset shows only in nav_yaw, which batch does not give: left as it was)
-        names, flags = [], np.zeros(len(ts), dtype=np.int64)
-        in_use_of = {}
-        for i, t in enumerate(ts.tolist()):
-            key = tuple(bool(u[i]) for u in use.values())
-            if key not in in_use_of:
-                in_use_of[key] = [s for s, on in zip(use, key) if on]
-            nav.in_use = in_use_of[key]
-            if heading is not None and use[heading][i]:
-                nav.accepted["heading"] = t
-            if gnss[i]:
-                nav.accepted["position"] = nav.accepted["velocity"] = t
-            nav.anomaly = bool(anomaly[i]) and "magnetometer" in enabled
-            name, flags[i] = nav.state(t, bool(fix[i]))
+        # sample by sample (the filter is a state machine): which sources are in use (a bit each),
+        # the heading and GNSS measurements accepted, the magnetometer's anomaly, then the state
+        codes = sum((u.astype(np.int64) << j for j, u in enumerate(use.values())), np.zeros(len(ts), dtype=np.int64))
+        sources = list(use)
+        in_use_of = {c: [s for j, s in enumerate(sources) if c >> j & 1] for c in set(codes.tolist())}
+        head_bit = 1 << sources.index(heading) if heading is not None else 0
+        gnss_bit = 1 << sources.index("gnss") if "gnss" in use else 0
+        flagged = (anomaly & ("magnetometer" in enabled)).tolist()
+        accepted, state = nav.accepted, nav.state
+        names, flag_list, prev = [], [], -1
+        for t, code, fixed, anomalous in zip(ts.tolist(), codes.tolist(), fix.tolist(), flagged):
+            if code != prev:
+                nav.in_use, prev = in_use_of[code], code
+            if code & head_bit:
+                accepted["heading"] = t
+            if code & gnss_bit:
+                accepted["position"] = accepted["velocity"] = t
+            nav.anomaly = anomalous
+            name, bits = state(t, fixed)
             names.append(name)
+            flag_list.append(bits)
+        flags = np.array(flag_list, dtype=np.int64)
         states = np.array(names)
         out["filter"] = {
             "filter_state": states,

@@ -206,11 +206,36 @@ def _clock_values(sim: Any, field: _Field, ts: Any, world: Dict[str, Any]) -> Op
             out[names[1]][lo:hi] = world["gps_week"][lo:hi]
             out[names[2]][lo:hi] = first[names[2]]
             continue
-        for i in range(lo, hi):
-            got = first if i == lo else _filled(clocks, field, float(ts[i]), names)
-            for a in names:
-                out[a][i] = got[a]
+        for a in range(lo, hi, PIECE):
+            _piece(clocks, field, ts, names, out, a, min(a + PIECE, hi))
     return out
+
+
+PIECE = 64  # samples a GPS time without the receiver's fix is checked to run on the reference clock over
+
+
+def _piece(clocks: Any, field: _Field, ts: Any, names: Tuple[str, ...], out: Dict[str, Any], lo: int, hi: int) -> None:
+    """Samples lo..hi-1 of a clock field, filled by the clocks at both ends: when the time of
+    week runs on the reference clock between them (`Clocks.external` between PPS edges: the same
+    week and flags, the time of week advanced by the reference clock's advance), the samples
+    between follow it; else each sample is filled by the clocks."""
+    first = _filled(clocks, field, float(ts[lo]), names)
+    last = _filled(clocks, field, float(ts[hi - 1]), names)
+    ref = clocks.ref(ts[lo:hi])
+    if (
+        len(names) == 3
+        and first[names[1]] == last[names[1]]
+        and first[names[2]] == last[names[2]]
+        and abs((last[names[0]] - first[names[0]]) - (ref[-1] - ref[0])) < 1e-9
+    ):
+        out[names[0]][lo:hi] = first[names[0]] + (ref - ref[0])
+        out[names[1]][lo:hi] = first[names[1]]
+        out[names[2]][lo:hi] = first[names[2]]
+        return
+    for i in range(lo, hi):
+        got = first if i == lo else last if i == hi - 1 else _filled(clocks, field, float(ts[i]), names)
+        for a in names:
+            out[a][i] = got[a]
 
 
 def _filled(clocks: Any, field: _Field, t: float, names: Tuple[str, ...]) -> Dict[str, Any]:
