@@ -195,3 +195,37 @@ def test_start_utc(capsys) -> None:
         assert sim.main(["--listen", "tcp:127.0.0.1:0", "--start-utc", bad]) == 2
         err = capsys.readouterr().err
         assert err.startswith("python -m mipcodec.sim: --start-utc ") and err.count("\n") == 1, err
+
+
+def test_world_batch_is_world_quantities() -> None:
+    """The batch path's world (World.batch, runtime sim/world.py) gives what World.quantities gives
+    sample by sample, noise aside: both worlds configured as a fleet device (the fleet's commands),
+    with an outage, their noise set to its mean, on a circle; the filter's states, flags and valid
+    outputs the same at every sample (the aiding's offsets: zero with no noise)."""
+    np = pytest.importorskip("numpy")
+    sim_mod = importlib.import_module("mipcodec.sim")
+
+    class Mean:  # a numpy generator whose draws are the mean
+        def normal(self, mu, sigma, size):
+            return np.full(size, mu, dtype=float)
+
+    ts = np.arange(0, 1200) / 100.0
+    for model in fleet.MODELS:
+        worlds = []
+        for _ in range(2):
+            sim = sim_mod.Simulator(model, 1, scenario="circle")
+            for packet in fleet.configuration(model):
+                sim.feed(packet, 0.0)
+            sim.world.gnss_outages.append((5.0, 8.5))
+            sim.world.rng.gauss = lambda mu, sigma: mu
+            worlds.append(sim.world)
+        assert worlds[0].batchable()
+        got = worlds[0].batch(ts, Mean())
+        want = [worlds[1].quantities(t) for t in ts.tolist()]
+        assert len(set(got["filter_state"].tolist())) >= 3, model  # the outage changes the filter's mode
+        for name, values in got.items():
+            expect = np.array([q[name] for q in want])
+            if values.dtype.kind in "fc":
+                assert np.allclose(values, expect, rtol=1e-12, atol=1e-9), (model, name)
+            else:
+                assert (values == expect).all(), (model, name)
