@@ -5,7 +5,9 @@ tests and benchmarks of the dataset, Spark and DuckDB tooling.
 
 writes DIR/<NAME>.mip per device and DIR/fleet.json, the manifest of what was simulated. The
 devices are the package's simulator (`sim.Simulator`, driven in process with an injected clock:
-no socket, no real time), so the same arguments give the same bytes. Device k:
+no socket, no real time), so the same arguments give the same bytes; with numpy, its data streams
+are written block by block by fleet_batch.py from the same plan, world and layouts (other noise
+draws, so other bytes than the sample-by-sample path). Device k:
 
 - model: GX5-45 for even k, CV7-INS for odd k; serial number `6232-1010k` / `6284.17040k`
   (the simulator's --serial identity), scenario `circle` for k % 4 in (0, 1), else `static`;
