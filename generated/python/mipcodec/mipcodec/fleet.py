@@ -386,7 +386,8 @@ def generate(
         raise ValueError(f"--jobs {jobs}: expected at least 1")
     os.makedirs(out, exist_ok=True)
     plans = []
-    rates = {m: _bytes_per_second(m) for m in MODELS} if size is not None else {}
+    used = MODELS[: min(devices, len(MODELS))]  # the models of devices 0.. (one device: the first only)
+    rates = {m: _bytes_per_second(m) for m in used} if size is not None else {}
     for k in range(devices):
         model = MODELS[k % 2]
         if size is not None:
