@@ -139,8 +139,9 @@ def _shown(field: _Field, attr: str, quantity: str, world: Dict[str, Any], nav: 
             fix = nav.get("fix", ["", ""])
             states = np.where(world["gnss_fix"], fix[0], fix[1])
         members = type(current).__members__
-        value = {s: members[str(s).upper()].value for s in set(states.tolist()) if str(s).upper() in members}
-        return np.array([value.get(s, int(current)) for s in states.tolist()])
+        names, index = np.unique(states, return_inverse=True)
+        value = [members[str(s).upper()].value if str(s).upper() in members else int(current) for s in names.tolist()]
+        return np.array(value, dtype=np.int64)[index]
     if kind == "flags":
         return world[name]
     index = None
@@ -303,10 +304,25 @@ def write(sim: Any, f: Any, seconds: int, seed: int, garbage_every: int, not_syn
         pieces = []
         for k, elapsed in parts:
             at = np.searchsorted(times, elapsed)
-            pieces.append(rows(sim, streams[k], elapsed, {q: v[at] for q, v in world.items()}))
+            pieces.append(rows(sim, streams[k], elapsed, _At(world, at)))
         garbage_block, last = _interleave(f, parts, pieces, rng, garbage_every, junk_bytes, last)
         garbage += garbage_block
     return garbage, last[0], streams[last[1]].set if last[0] else -1
+
+
+class _At(dict):  # type: ignore[type-arg]
+    """The world's quantities at some of its samples (`at`: their indices), each taken on first use."""
+
+    def __init__(self, world: Dict[str, Any], at: Any) -> None:
+        super().__init__()
+        self.world, self.at = world, at
+
+    def __missing__(self, name: str) -> Any:
+        value = self[name] = self.world[name][self.at]
+        return value
+
+    def get(self, name: str, default: Any = None) -> Any:  # type: ignore[override]
+        return self[name] if name in self.world else default
 
 
 def _interleave(
