@@ -182,7 +182,13 @@ class Device:
             spans = [(states[0], Fraction(0), settle), (states[2], settle, fix)]
             ok, bad, delay = states[3], states[2], Fraction(NavFilter.TIMEOUT).limit_denominator(1000)
         t = fix
+        merged: List[Tuple[int, int]] = []  # outages that abut (a short log's) are one for the filter
         for a, b in self.outages:
+            if merged and merged[-1][1] >= a:
+                merged[-1] = (merged[-1][0], max(b, merged[-1][1]))
+            else:
+                merged.append((a, b))
+        for a, b in merged:
             lost = Fraction(a) + delay
             if lost < b:
                 spans += [(ok, t, lost), (bad, lost, Fraction(b))]
