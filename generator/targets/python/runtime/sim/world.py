@@ -705,8 +705,8 @@ class World:
 def _valid_many(nav: NavFilter, states: Any, kind: str) -> Any:
     import numpy as np
 
-    ok = {s: nav.valid(s, kind) for s in set(states.tolist())}
-    return np.array([ok[s] for s in states.tolist()], dtype=bool)
+    names, index = np.unique(states, return_inverse=True)
+    return np.array([nav.valid(s, kind) for s in names.tolist()], dtype=bool)[index]
 
 
 def _blend_many(nav: NavFilter, kind: str, mask: Any, error: Any) -> Any:

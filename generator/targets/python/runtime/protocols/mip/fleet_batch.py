@@ -105,10 +105,10 @@ class Stream:
 
 def _checksums(rows: Any) -> Any:
     """The checksum bytes of each packet row (its last two bytes not read): framing.fletcher16."""
-    body = rows[:, :-2].astype(np.int64)
+    body = rows[:, :-2]
     n = body.shape[1]
-    sum1 = body.sum(axis=1) & 0xFF
-    sum2 = (body @ np.arange(n, 0, -1, dtype=np.int64)) & 0xFF
+    sum1 = body.sum(axis=1, dtype=np.int64) & 0xFF
+    sum2 = (body.astype(np.int64) @ np.arange(n, 0, -1, dtype=np.int64)) & 0xFF  # integers: no BLAS threads
     pair = (sum1, sum2) if framing.CHECKSUM_SUM1_FIRST else (sum2, sum1)
     return np.stack(pair, axis=1).astype(np.uint8)
 
