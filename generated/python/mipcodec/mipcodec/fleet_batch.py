@@ -285,6 +285,9 @@ def write(sim: Any, f: Any, seconds: int, seed: int, garbage_every: int, not_syn
     bytes, the last packet's length, its data set). Unsupported before anything is written."""
     if not sim.world.batchable():
         raise Unsupported("world")
+    # what poll does besides the data sets' samples: none of it here (the fleet's configuration)
+    if sim.idle or sim.speed != 1.0 or sim.clocks.jitter_ms or sim.nmea.entries() or set(sim.plan) - set(sim.ticks):
+        raise Unsupported("idle, --speed, link jitter, NMEA output or a stream not started")
     streams = [Stream(sim, s, e, sim.ticks[s]) for s, e in sim.plan.items()]
     rng = np.random.default_rng([seed, sim.world.rng.getrandbits(64)])
     junk_bytes = np.frombuffer(not_sync, dtype=np.uint8)
