@@ -57,12 +57,12 @@ class _Field:
     def __init__(self, sim: Any, set_id: int, descriptor: int, data_at: int, data: bytes) -> None:
         classes = registry.lookup(set_id, descriptor) or ()
         cls = next((c for c in classes if c.DEVICE in (None, sim.device)), None)
-        ops = getattr(cls, "_OPS", ())
+        ops: Any = getattr(cls, "_OPS", ())
         if cls is None or len(ops) != 1 or not isinstance(ops[0], Run) or ops[0].size != len(data):
             raise Unsupported(f"field 0x{set_id:02X},0x{descriptor:02X}: not one run of scalars")
         self.cls = cls
         self.key = (cls.SET, cls.DESCRIPTOR)
-        self.template = cls.decode(data) if hasattr(cls, "decode") else cls()
+        self.template: Any = cls.decode(data)
         self.params = {p.name: _Param(p.name, data_at + p.offset, p.scalar.code, p.count) for p in ops[0].params}
         self.units = {a: u for a, u, _ in _sim.DATA.get(cls, ())}
 
@@ -126,32 +126,32 @@ def _convert(x: Any, units: Optional[str], quantity: str) -> Any:
 
 def _shown(field: _Field, attr: str, quantity: str, world: Dict[str, Any], nav: Dict[str, Any]) -> Any:
     """sim._show on arrays: the values of parameter `attr` (None: it keeps the template's)."""
-    current = getattr(field.template, attr, None)
+    current: Any = getattr(field.template, attr, None)
     kind, _, name = quantity.partition(":")
     n = len(world["gnss_fix"])
     if kind == "valid":
-        ok = {"always": np.ones(n, dtype=bool), "gnss": world["gnss_fix"]}.get(name)
-        ok = world[f"filter_valid_{name}"] if ok is None else ok
-        return np.where(ok, _all_bits(type(current)), 0)
+        ok: Any = {"always": np.ones(n, dtype=bool), "gnss": world["gnss_fix"]}.get(name)
+        valid = world[f"filter_valid_{name}"] if ok is None else ok
+        return np.where(valid, _all_bits(type(current)), 0)
     if kind == "enum":
         states = world.get(name)
         if states is None:
             fix = nav.get("fix", ["", ""])
             states = np.where(world["gnss_fix"], fix[0], fix[1])
         members = type(current).__members__
-        names, index = np.unique(states, return_inverse=True)
+        names, where = np.unique(states, return_inverse=True)
         value = [members[str(s).upper()].value if str(s).upper() in members else int(current) for s in names.tolist()]
-        return np.array(value, dtype=np.int64)[index]
+        return np.array(value, dtype=np.int64)[where]
     if kind == "flags":
         return world[name]
-    index = None
+    index: Optional[int] = None
     if quantity.endswith("]"):
         quantity, _, rest = quantity.partition("[")
         index = int(rest[:-1])
     q = world[quantity]
     if index is not None:
         q = q[:, index]
-    if isinstance(current, list) or (isinstance(current, float)):
+    if isinstance(current, (list, float)):
         return _convert(q, field.units.get(attr), quantity)
     if isinstance(current, int) and not isinstance(current, bool):
         return np.rint(q)
@@ -180,7 +180,7 @@ def _clock_values(sim: Any, field: _Field, ts: Any, world: Dict[str, Any]) -> Op
     clocks = sim.clocks
     if clocks.reference is not None and field.key == clocks.reference[:2]:
         return {clocks.reference[2]: np.rint(clocks.ref(ts) * clocks.reference[3])}
-    names = _gps_clock(sim, field)
+    names: Optional[Tuple[str, ...]] = _gps_clock(sim, field)
     facts = clocks.facts
     status = facts.get("status")
     if names is None and status is not None and field.key == (status["set"], status["descriptor"]):
@@ -313,7 +313,7 @@ def write(sim: Any, f: Any, seconds: int, seed: int, garbage_every: int, not_syn
     return garbage, last[0], streams[last[1]].set if last[0] else -1
 
 
-class _At(dict):  # type: ignore[type-arg]
+class _At(Dict[str, Any]):
     """The world's quantities at some of its samples (`at`: their indices), each taken on first use."""
 
     def __init__(self, world: Dict[str, Any], at: Any) -> None:
@@ -324,7 +324,7 @@ class _At(dict):  # type: ignore[type-arg]
         value = self[name] = self.world[name][self.at]
         return value
 
-    def get(self, name: str, default: Any = None) -> Any:  # type: ignore[override]
+    def get(self, name: str, default: Any = None) -> Any:
         return self[name] if name in self.world else default
 
 
@@ -352,5 +352,5 @@ def _interleave(
             np.arange(total) - np.repeat(np.cumsum(junk_len) - junk_len, junk_len)
         )
         out[at] = junk[rng.integers(0, len(junk), total)]
-    f.write(memoryview(out))
+    f.write(out.data)
     return total, (int(lengths[-1]), int(which[-1]))
