@@ -10,7 +10,7 @@ from the same facts as the simulator's own sample-by-sample path (`Simulator.pol
   parameter's units as `sim._show` does), `_sim.DATA` (the units of the values) and the clocks
   (`sim/clocks.py`: reference time, GPS time while the receiver has a fix, and sample by sample
   by `Clocks.fill` otherwise);
-- the packet: one real sample built by the simulator (`_sample_packets`, the generated codec's
+- the packet: one real sample built by the simulator (`sample_packets`, the generated codec's
   encoding) is the template; each parameter's bytes are at the offset the codec's layout (the
   field's `Run` of struct parameters) gives, written for every sample at once; the Fletcher
   checksum is computed on the rows and checked against framing's on the template.
@@ -29,7 +29,7 @@ import numpy as np
 from . import _sim, registry
 from .codec import framing
 from .codec.layout import Run
-from .sim import _all_bits
+from .sim import all_bits
 from .sim.world import GRAVITY, RADIANS
 
 BLOCK_S = 120  # seconds of simulated time per block (bounded memory whatever the duration)
@@ -78,7 +78,7 @@ class Stream:
         self.dec = decimations.pop()
         self.rate = sim.base_rates[set_id]
         self.next = (last_tick // self.dec + 1) * self.dec
-        packets = sim._sample_packets(set_id, [d for d, _ in entries], 0.0, 0.0)
+        packets = sim.sample_packets(set_id, [d for d, _ in entries], 0.0, 0.0)
         if len(packets) != 1:
             raise Unsupported(f"set 0x{set_id:02X}: continuation packets")
         self.template = np.frombuffer(packets[0], dtype=np.uint8)
@@ -132,7 +132,7 @@ def _shown(field: _Field, attr: str, quantity: str, world: Dict[str, Any], nav: 
     if kind == "valid":
         ok: Any = {"always": np.ones(n, dtype=bool), "gnss": world["gnss_fix"]}.get(name)
         valid = world[f"filter_valid_{name}"] if ok is None else ok
-        return np.where(valid, _all_bits(type(current)), 0)
+        return np.where(valid, all_bits(type(current)), 0)
     if kind == "enum":
         states = world.get(name)
         if states is None:
