@@ -250,6 +250,8 @@ def rows(sim: Any, stream: Stream, elapsed: Any, world: Dict[str, Any]) -> Any:
     row of bytes each, checksums included."""
     n = len(elapsed)
     out = np.empty((n, len(stream.template)), dtype=np.uint8)
+    if not n:  # (a set slower than one sample per block)
+        return out
     out[:] = stream.template
     nav = _sim.FILTER.get(sim.device, {})
     for field in stream.fields:
