@@ -12,6 +12,7 @@ velocity and rates from differences).
 from __future__ import annotations
 
 import bisect
+import copy
 import math
 import random
 from typing import Any, Dict, List, Optional, Sequence, Tuple
@@ -670,27 +671,25 @@ class World:
             "velocity": _blend_many(nav, "velocity", gnss, gnss_vel - vel),
         }
         # (the heading offset shows only in nav_yaw, which batch does not give: left as it was)
-        # sample by sample (the filter is a state machine): which sources are in use (a bit each),
-        # the heading and GNSS measurements accepted, the magnetometer's anomaly, then the state
+        # which sources are in use at each sample (a bit each), whether the magnetometer's anomaly
+        # is flagged, then the filter's state and flags through the runs of samples where neither
+        # nor the fix changes (_states_many)
         codes = sum((u.astype(np.int64) << j for j, u in enumerate(use.values())), np.zeros(len(ts), dtype=np.int64))
         sources = list(use)
-        in_use_of = {c: [s for j, s in enumerate(sources) if c >> j & 1] for c in set(codes.tolist())}
-        head_bit = 1 << sources.index(heading) if heading is not None else 0
-        gnss_bit = 1 << sources.index("gnss") if "gnss" in use else 0
-        flagged = (anomaly & ("magnetometer" in enabled)).tolist()
-        accepted, state = nav.accepted, nav.state
-        names, flag_list, prev = [], [], -1
-        for t, code, fixed, anomalous in zip(ts.tolist(), codes.tolist(), fix.tolist(), flagged):
-            if code != prev:
-                nav.in_use, prev = in_use_of[code], code
-            if code & head_bit:
-                accepted["heading"] = t
-            if code & gnss_bit:
-                accepted["position"] = accepted["velocity"] = t
-            nav.anomaly = anomalous
-            name, bits = state(t, fixed)
-            names.append(name)
-            flag_list.append(bits)
+        bits = {"heading": 1 << sources.index(heading) if heading is not None else 0}
+        bits["position"] = bits["velocity"] = 1 << sources.index("gnss") if "gnss" in use else 0
+        flagged = anomaly & ("magnetometer" in enabled)
+        changes = (np.diff(codes) != 0) | (np.diff(fix.astype(np.int8)) != 0) | (np.diff(flagged.astype(np.int8)) != 0)
+        bounds = [0, *(np.flatnonzero(changes) + 1).tolist(), len(ts)]
+        names: List[str] = []
+        flag_list: List[int] = []
+        tl = ts.tolist()
+        for lo, hi in zip(bounds[:-1], bounds[1:]):
+            code = int(codes[lo])
+            nav.in_use = [s for j, s in enumerate(sources) if code >> j & 1]
+            nav.anomaly = bool(flagged[lo])
+            kinds = [k for k, b in bits.items() if code & b]
+            _states_many(nav, tl[lo:hi], bool(fix[lo]), kinds, names, flag_list)
         flags = np.array(flag_list, dtype=np.int64)
         states = np.array(names)
         out["filter"] = {
@@ -700,6 +699,51 @@ class World:
             "filter_valid_navigation": _valid_many(nav, states, "navigation"),
         }
         return out
+
+
+def _states_many(
+    nav: NavFilter, ts: List[float], fix: bool, kinds: List[str], names: List[str], flags: List[int]
+) -> None:
+    """NavFilter.state at each time of `ts` (a run of samples where the fix, the sources in use
+    and the anomaly hold; each sample re-accepts the measurements of `kinds`), appended to `names`
+    and `flags`. While its inputs hold, the filter's state and flags change only as time passes
+    thresholds (settling, a source going stale, a mode becoming stable), each once: so where the
+    state at a later sample, computed on a copy of the filter, equals the state now, so is every
+    sample between, and computing it on the filter leaves the filter as every sample would. The
+    first sample whose state differs is found by galloping, then bisection, on copies; there the
+    filter is advanced as the sample-by-sample path advances it."""
+
+    def at(target: NavFilter, i: int) -> Tuple[str, int]:
+        for kind in kinds:
+            target.accepted[kind] = ts[i]
+        return target.state(ts[i], fix)
+
+    def probe(i: int) -> Tuple[str, int]:
+        other = copy.copy(nav)
+        other.accepted = dict(nav.accepted)
+        return at(other, i)
+
+    i, n = 0, len(ts)
+    while i < n:
+        now = at(nav, i)
+        names.append(now[0])
+        flags.append(now[1])
+        same, step = i, 1  # `same`: the last sample known to have the state `now`
+        while same + 1 < n:
+            j = min(n - 1, same + step)
+            if probe(j) != now:
+                lo, hi = same, j  # the state changes after lo, at hi at the latest
+                while hi - lo > 1:
+                    mid = (lo + hi) // 2
+                    lo, hi = (mid, hi) if probe(mid) == now else (lo, mid)
+                same = lo
+                break
+            same, step = j, step * 2
+        if same > i:
+            at(nav, same)  # (the same state: the filter as after every sample up to `same`)
+            names.extend([now[0]] * (same - i))
+            flags.extend([now[1]] * (same - i))
+        i = same + 1
 
 
 def _valid_many(nav: NavFilter, states: Any, kind: str) -> Any:
