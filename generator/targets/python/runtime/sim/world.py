@@ -596,7 +596,8 @@ class World:
         """The quantities of `quantities` a data stream of the simulated fleet shows, at the
         increasing simulated times `ts` (a numpy array) at once, when `batchable()`: the same
         formulas on arrays, the noise drawn from `rng` (a numpy Generator), the filter's aiding
-        and state machine advanced sample by sample as `quantities` does (NavFilter itself).
+        as `quantities` applies it each sample, its state from NavFilter itself, the state of
+        every sample (runs of unchanged inputs bisected: _states_many).
         Arrays of shape (N,) or (N, 3); filter_state: the state names, an array of str."""
         import numpy as np
 

@@ -5,7 +5,7 @@ from the same facts as the simulator's own sample-by-sample path (`Simulator.pol
 - the samples due: the simulator's plan after the configuration (data set, descriptors and
   decimation, `_sim.BASE_RATES`), every tick k * decimation / base rate up to the end;
 - the world: `World.batch` (sim/world.py), the quantities of `World.quantities` on arrays, its
-  filter advanced sample by sample (NavFilter), one world per sample time as the simulator does;
+  filter's state that of every sample (NavFilter), one world per sample time as the simulator does;
 - each field's values: the spec's `_sim.WORLD` (which quantity a parameter shows, converted to the
   parameter's units as `sim._show` does), `_sim.DATA` (the units of the values) and the clocks
   (`sim/clocks.py`: reference time, GPS time while the receiver has a fix, and sample by sample
