@@ -466,6 +466,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         help="about this many bytes of logs in all (K, M, G suffixes); sets each device's duration instead of --hours",
     )
     args = p.parse_args(argv)
+    if "numpy" not in sys.modules:  # this process's own: the batch path's matrices are small (64 x 64),
+        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # BLAS threads would cost only their start-up
     try:
         if not (math.isfinite(args.hours) and 0 < args.hours <= 24 * 366):
             raise ValueError(f"--hours {args.hours:g}: expected more than 0, at most a year")
