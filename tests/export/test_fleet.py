@@ -104,35 +104,56 @@ def test_manifest_equals_an_independent_count(small: Path) -> None:
     assert spans_midnight, "no log spans UTC midnight"
     assert [d["truncated"] for d in devices] == [False, False, False, True]
     for d in devices:
-        path = small / d["log"]
-        got = _count(path, d["model"])
-        assert path.stat().st_size == d["bytes"]
-        assert got["info"] is not None, f"{d['log']}: no device information reply"
-        assert got["info"].serial_number.decode().strip() == d["serial"]
-        assert got["info"].firmware_version == d["firmware"]
-        for key, stream in d["streams"].items():
-            set_id = int(key, 16)
-            assert got["sets"][set_id] == stream["samples"], (d["log"], key)
-            # A sample's own GPS time dates it only where its flags say valid: before the first fix
-            # the simulated devices send their free-running clock (week 0, sim/clocks.py), as the
-            # GX5-45's correlation timestamp does before GPS Time Initialized (3dm-gx5-45-dcp.txt
-            # line 2159). Every sample is dated once: the dates cover the samples.
-            assert sum(stream["samples_per_date"].values()) == stream["samples"], (d["log"], key)
-            dated = {day: n for (s, day), n in got["dates"].items() if s == set_id}
-            for day, n in stream["samples_gps_valid_per_date"].items():
-                assert dated.get(day, 0) >= n, (d["log"], key, day)
-            valid = {day: n for (s, day), n in got["valid_dates"].items() if s == set_id and n}
-            assert valid == stream["samples_gps_valid_per_date"], (d["log"], key)
-        assert dict(got["states"]) == {s: m["samples"] for s, m in d["filter_modes"].items()}, d["log"]
-        assert got["skipped"] == d["garbage_bytes"] > 0
-        assert (got["tail"] > 0) == d["truncated"], d["log"]
-        # The time out of the filter's best mode is the outages (GX5-45) or the outages less the
-        # 2 s the CV7 coasts on its IMU (sim_world.NavFilter.TIMEOUT)
-        bad = "run_solution_error" if d["model"] == "gx5_45" else "ahrs"
-        coast = 0 if d["model"] == "gx5_45" else 2
-        outage = sum(o["seconds"] - coast for o in d["gnss_outages"])
-        startup = 2 - 1 if d["model"] == "cv7_ins" else 0  # AHRS from SETTLE (1 s) to the first fix (2 s)
-        assert d["filter_modes"].get(bad, {"seconds": 0})["seconds"] == outage + startup
+        _check_device(small, d)
+
+
+def test_sample_by_sample_path(tmp_path: Path, monkeypatch) -> None:
+    """Without the batch path (no numpy, or MIPCODEC_FLEET_BATCH=0: the simulator polled every 10
+    ms) the logs fit their manifest too; the manifests of both paths differ only in the garbage
+    (drawn otherwise) and so the sizes."""
+    hours = 25 / 3600  # both devices have outages (at 10 s; at 7 and 15 s), for 5 s each
+    batch = fleet.generate(str(tmp_path / "batch"), devices=2, hours=hours, seed=7)
+    monkeypatch.setenv("MIPCODEC_FLEET_BATCH", "0")
+    manifest = fleet.generate(str(tmp_path / "slow"), devices=2, hours=hours, seed=7)
+    assert all(d["gnss_outages"] for d in manifest["devices"])
+    for d, b in zip(manifest["devices"], batch["devices"]):
+        _check_device(tmp_path / "slow", d)
+        assert (tmp_path / "slow" / d["log"]).read_bytes() != (tmp_path / "batch" / b["log"]).read_bytes()
+        differ = ("garbage_bytes", "bytes")
+        assert {k: v for k, v in d.items() if k not in differ} == {k: v for k, v in b.items() if k not in differ}
+
+
+def _check_device(directory: Path, d: dict) -> None:
+    """One device's log against its manifest entry `d` (the independent count)."""
+    path = directory / d["log"]
+    got = _count(path, d["model"])
+    assert path.stat().st_size == d["bytes"]
+    assert got["info"] is not None, f"{d['log']}: no device information reply"
+    assert got["info"].serial_number.decode().strip() == d["serial"]
+    assert got["info"].firmware_version == d["firmware"]
+    for key, stream in d["streams"].items():
+        set_id = int(key, 16)
+        assert got["sets"][set_id] == stream["samples"], (d["log"], key)
+        # A sample's own GPS time dates it only where its flags say valid: before the first fix
+        # the simulated devices send their free-running clock (week 0, sim/clocks.py), as the
+        # GX5-45's correlation timestamp does before GPS Time Initialized (3dm-gx5-45-dcp.txt
+        # line 2159). Every sample is dated once: the dates cover the samples.
+        assert sum(stream["samples_per_date"].values()) == stream["samples"], (d["log"], key)
+        dated = {day: n for (s, day), n in got["dates"].items() if s == set_id}
+        for day, n in stream["samples_gps_valid_per_date"].items():
+            assert dated.get(day, 0) >= n, (d["log"], key, day)
+        valid = {day: n for (s, day), n in got["valid_dates"].items() if s == set_id and n}
+        assert valid == stream["samples_gps_valid_per_date"], (d["log"], key)
+    assert dict(got["states"]) == {s: m["samples"] for s, m in d["filter_modes"].items()}, d["log"]
+    assert got["skipped"] == d["garbage_bytes"] > 0
+    assert (got["tail"] > 0) == d["truncated"], d["log"]
+    # The time out of the filter's best mode is the outages (GX5-45) or the outages less the
+    # 2 s the CV7 coasts on its IMU (sim_world.NavFilter.TIMEOUT)
+    bad = "run_solution_error" if d["model"] == "gx5_45" else "ahrs"
+    coast = 0 if d["model"] == "gx5_45" else 2
+    outage = sum(o["seconds"] - coast for o in d["gnss_outages"])
+    startup = 2 - 1 if d["model"] == "cv7_ins" else 0  # AHRS from SETTLE (1 s) to the first fix (2 s)
+    assert d["filter_modes"].get(bad, {"seconds": 0})["seconds"] == outage + startup
 
 
 def _digest(directory: Path) -> dict:
@@ -195,3 +216,37 @@ def test_start_utc(capsys) -> None:
         assert sim.main(["--listen", "tcp:127.0.0.1:0", "--start-utc", bad]) == 2
         err = capsys.readouterr().err
         assert err.startswith("python -m mipcodec.sim: --start-utc ") and err.count("\n") == 1, err
+
+
+def test_world_batch_is_world_quantities() -> None:
+    """The batch path's world (World.batch, runtime sim/world.py) gives what World.quantities gives
+    sample by sample, noise aside: both worlds configured as a fleet device (the fleet's commands),
+    with an outage, their noise set to its mean, on a circle; the filter's states, flags and valid
+    outputs the same at every sample (the aiding's offsets: zero with no noise)."""
+    np = pytest.importorskip("numpy")
+    sim_mod = importlib.import_module("mipcodec.sim")
+
+    class Mean:  # a numpy generator whose draws are the mean
+        def normal(self, mu, sigma, size):
+            return np.full(size, mu, dtype=float)
+
+    ts = np.arange(0, 1200) / 100.0
+    for model in fleet.MODELS:
+        worlds = []
+        for _ in range(2):
+            sim = sim_mod.Simulator(model, 1, scenario="circle")
+            for packet in fleet.configuration(model):
+                sim.feed(packet, 0.0)
+            sim.world.gnss_outages.append((5.0, 8.5))
+            sim.world.rng.gauss = lambda mu, sigma: mu
+            worlds.append(sim.world)
+        assert worlds[0].batchable()
+        got = worlds[0].batch(ts, Mean())
+        want = [worlds[1].quantities(t) for t in ts.tolist()]
+        assert len(set(got["filter_state"].tolist())) >= 3, model  # the outage changes the filter's mode
+        for name, values in got.items():
+            expect = np.array([q[name] for q in want])
+            if values.dtype.kind in "fc":
+                assert np.allclose(values, expect, rtol=1e-12, atol=1e-9), (model, name)
+            else:
+                assert (values == expect).all(), (model, name)

@@ -12,6 +12,7 @@ velocity and rates from differences).
 from __future__ import annotations
 
 import bisect
+import copy
 import math
 import random
 from typing import Any, Dict, List, Optional, Sequence, Tuple
@@ -137,6 +138,30 @@ class Scenario:
         acc = tuple((p2[k] - 2 * p1[k] + p0[k]) / (h * h) for k in range(3))
         rate = tuple((e1[k] - e0[k]) / h for k in range(3))
         return p1, vel, acc, e1, rate  # type: ignore[return-value]
+
+    def truth_many(self, ts: Any) -> Tuple[Any, Any, Any, Any, Any]:
+        """`truth` at many times at once (a numpy array `ts`): arrays of shape (N, 3), the same
+        formulas element by element (the batch path of the fleet generator, fleet_batch.py).
+        A trajectory file has no batch form: NotImplementedError (the caller takes `truth`)."""
+        import numpy as np
+
+        n = len(ts)
+        if self.name == "circle":
+            radius, speed = 50.0, 5.0
+            w = speed / radius
+            a = w * ts
+            sin, cos = np.sin(a), np.cos(a)
+            zero = np.zeros(n)
+            pos = np.stack([radius * sin, radius * (1.0 - cos), zero], axis=1)
+            vel = np.stack([speed * cos, speed * sin, zero], axis=1)
+            acc = np.stack([-speed * w * sin, speed * w * cos, zero], axis=1)
+            euler = np.stack([zero, zero, np.arctan2(sin, cos)], axis=1)
+            rate = np.tile([0.0, 0.0, w], (n, 1))
+            return pos, vel, acc, euler, rate
+        if self.track:
+            raise NotImplementedError("a trajectory file has no batch form")
+        still = np.zeros((n, 3))
+        return still, still, still, np.tile([0.0, 0.0, math.radians(30.0)], (n, 1)), still
 
 
 MAX_TRACK_BYTES = 16 << 20  # a trajectory file is read no further than 16 MiB
@@ -553,6 +578,231 @@ class World:
             "heading_sources": sum(in_use.get(s, 0) for s in nav.in_use),
             "filter_valid_heading_update": any(s in in_use for s in nav.in_use),
         }
+
+    # ------------------------------------------------------------------ batch
+    def batchable(self) -> bool:
+        """Whether `batch` gives what `quantities` would: a static or circle scenario, no magnetic
+        disturbance, no RTK corrections, no dual-antenna heading, at most one heading source and
+        no heading from the velocity vector's turn (what the simulated fleet uses)."""
+        nav = self.filter
+        enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
+        rule = (nav.profile.get("heading") or {}).get("without_aids")
+        return (
+            not self.scenario.track
+            and not self.mag_disturbances
+            and not self.rtk_corrections
+            and not nav.antennas_ok
+            and set(enabled) <= {"magnetometer", "gnss_velocity", "gnss", "pressure"}
+            and len(set(enabled) & {"magnetometer", "gnss_velocity"}) <= 1
+            and not (rule and not nav.heading_sources)
+        )
+
+    def batch(self, ts: Any, rng: Any) -> Dict[str, Any]:
+        """The quantities of `quantities` a data stream of the simulated fleet shows, at the
+        increasing simulated times `ts` (a numpy array) at once, when `batchable()`: the same
+        formulas on arrays, the noise drawn from `rng` (a numpy Generator), the filter's aiding
+        as `quantities` applies it each sample, its state from NavFilter itself, the state of
+        every sample (runs of unchanged inputs bisected: _states_many).
+        Arrays of shape (N,) or (N, 3); filter_state: the state names, an array of str."""
+        import numpy as np
+
+        n = len(ts)
+        pos, vel, acc, euler, rate = self.scenario.truth_many(ts)
+        c = _rot_many(euler[:, 0], euler[:, 1], euler[:, 2])
+        mag = np.einsum("nij,i->nj", c, MAG_NED) + rng.normal(0.0, 1e-4, (n, 3))
+        fix = ts >= GNSS_FIX_AFTER
+        for a, b in self.gnss_outages:
+            fix &= ~((ts >= a) & (ts < b))
+        rtk = self.filter.profile.get("rtk") or {}
+        sigma = 0.5  # no RTK solution: the receivers' horizontal 1 sigma (m), as in quantities
+        gnss_err = rng.normal(0.0, 1.0, (n, 3)) * (sigma, sigma, 1.6 * sigma)
+        gnss_vel = vel + rng.normal(0.0, 0.05, (n, 3))
+        offsets = self._aid_many(ts, fix, pos, vel, euler[:, 2], mag, pos + gnss_err, gnss_vel)
+        out_pos = pos + offsets["position"]
+        lat0 = math.radians(ORIGIN[0])
+        lat = ORIGIN[0] + np.degrees(pos[:, 0] / EARTH_RADIUS)
+        lon = ORIGIN[1] + np.degrees(pos[:, 1] / (EARTH_RADIUS * math.cos(lat0)))
+        height = ORIGIN[2] - pos[:, 2]
+        force = np.einsum("nij,ni->nj", c, acc - (0.0, 0.0, GRAVITY))
+        gyro = rate + np.subtract(self.gyro_bias, self.captured_bias)
+        week, tow = self.gps_start[0] + np.zeros(n, dtype=np.int64), self.gps_start[1] + ts
+        late = tow >= 604800.0
+        week[late] += (tow[late] // 604800.0).astype(np.int64)
+        tow[late] %= 604800.0
+        horizontal = rtk["uncertainty"]["single"] if rtk else 1.2
+        return {
+            "specific_force": force + rng.normal(0.0, 0.002, (n, 3)),
+            "angular_rate": gyro + rng.normal(0.0, 1e-4, (n, 3)),
+            "magnetic_field": mag,
+            "linear_accel": np.einsum("nij,ni->nj", c, acc),
+            "latitude": ORIGIN[0] + np.degrees((out_pos[:, 0] + rng.normal(0.0, 0.05, n)) / EARTH_RADIUS),
+            "longitude": ORIGIN[1]
+            + np.degrees((out_pos[:, 1] + rng.normal(0.0, 0.05, n)) / (EARTH_RADIUS * math.cos(lat0))),
+            "height": ORIGIN[2] - out_pos[:, 2] + rng.normal(0.0, 0.05, n),
+            "velocity_ned": vel + offsets["velocity"] + rng.normal(0.0, 0.01, (n, 3)),
+            "gnss_latitude": lat + np.degrees(gnss_err[:, 0] / EARTH_RADIUS),
+            "gnss_longitude": lon + np.degrees(gnss_err[:, 1] / EARTH_RADIUS),
+            "gnss_height": height + gnss_err[:, 2],
+            "gnss_velocity_ned": gnss_vel,
+            "horizontal_accuracy": np.full(n, horizontal),
+            "vertical_accuracy": np.full(n, 1.6 * horizontal if rtk else 2.0),
+            "gps_tow": tow,
+            "gps_week": week,
+            "gnss_fix": fix,
+            "num_sv": np.where(fix, 14, 0),
+            **offsets["filter"],
+        }
+
+    def _aid_many(self, ts: Any, fix: Any, pos: Any, vel: Any, yaw: Any, mag: Any, gnss_pos: Any, gnss_vel: Any) -> Any:
+        """`_aid_internal` and the filter's state over `batch`'s samples: the offsets the aiding
+        leaves (each sample in use pulls them INTERNAL_GAIN toward the measurement's error), and
+        the filter's state, flags and valid outputs (NavFilter.state, called at every sample)."""
+        import numpy as np
+
+        nav = self.filter
+        enabled = list(dict.fromkeys(list(nav.internal) + list(nav.heading_sources)))
+        anomaly = np.abs(np.sqrt((mag * mag).sum(axis=1)) / _MAG_NORM - 1.0) > MAG_ANOMALY
+        speed = np.hypot(vel[:, 0], vel[:, 1])
+        available = {
+            "magnetometer": ~anomaly,
+            "gnss_velocity": fix & (speed >= KINEMATIC_SPEED),
+            "gnss": fix,
+            "pressure": np.ones(len(ts), dtype=bool),
+        }
+        use = {s: available[s] for s in enabled if s in available}
+        heading = next((s for s in enabled if s in ("magnetometer", "gnss_velocity")), None)
+        gnss = use.get("gnss", np.zeros(len(ts), dtype=bool))
+        out = {
+            "position": _blend_many(nav, "position", gnss, gnss_pos - pos),
+            "velocity": _blend_many(nav, "velocity", gnss, gnss_vel - vel),
+        }
+        # (the heading offset shows only in nav_yaw, which batch does not give: left as it was)
+        # which sources are in use at each sample (a bit each), whether the magnetometer's anomaly
+        # is flagged, then the filter's state and flags through the runs of samples where neither
+        # nor the fix changes (_states_many)
+        codes = sum((u.astype(np.int64) << j for j, u in enumerate(use.values())), np.zeros(len(ts), dtype=np.int64))
+        sources = list(use)
+        bits = {"heading": 1 << sources.index(heading) if heading is not None else 0}
+        bits["position"] = bits["velocity"] = 1 << sources.index("gnss") if "gnss" in use else 0
+        flagged = anomaly & ("magnetometer" in enabled)
+        changes = (np.diff(codes) != 0) | (np.diff(fix.astype(np.int8)) != 0) | (np.diff(flagged.astype(np.int8)) != 0)
+        bounds = [0, *(np.flatnonzero(changes) + 1).tolist(), len(ts)]
+        names: List[str] = []
+        flag_list: List[int] = []
+        tl = ts.tolist()
+        for lo, hi in zip(bounds[:-1], bounds[1:]):
+            code = int(codes[lo])
+            nav.in_use = [s for j, s in enumerate(sources) if code >> j & 1]
+            nav.anomaly = bool(flagged[lo])
+            kinds = [k for k, b in bits.items() if code & b]
+            _states_many(nav, tl[lo:hi], bool(fix[lo]), kinds, names, flag_list)
+        flags = np.array(flag_list, dtype=np.int64)
+        states = np.array(names)
+        out["filter"] = {
+            "filter_state": states,
+            "filter_flags": flags,
+            "filter_valid_attitude": _valid_many(nav, states, "attitude"),
+            "filter_valid_navigation": _valid_many(nav, states, "navigation"),
+        }
+        return out
+
+
+def _states_many(
+    nav: NavFilter, ts: List[float], fix: bool, kinds: List[str], names: List[str], flags: List[int]
+) -> None:
+    """NavFilter.state at each time of `ts` (a run of samples where the fix, the sources in use
+    and the anomaly hold; each sample re-accepts the measurements of `kinds`), appended to `names`
+    and `flags`. While its inputs hold, the filter's state and flags change only as time passes
+    thresholds (settling, a source going stale, a mode becoming stable), each once: so where the
+    state at a later sample, computed on a copy of the filter, equals the state now, so is every
+    sample between, and computing it on the filter leaves the filter as every sample would. The
+    first sample whose state differs is found by galloping, then bisection, on copies; there the
+    filter is advanced as the sample-by-sample path advances it."""
+
+    def at(target: NavFilter, i: int) -> Tuple[str, int]:
+        for kind in kinds:
+            target.accepted[kind] = ts[i]
+        return target.state(ts[i], fix)
+
+    def probe(i: int) -> Tuple[str, int]:
+        other = copy.copy(nav)
+        other.accepted = dict(nav.accepted)
+        return at(other, i)
+
+    i, n = 0, len(ts)
+    while i < n:
+        now = at(nav, i)
+        names.append(now[0])
+        flags.append(now[1])
+        same, step = i, 1  # `same`: the last sample known to have the state `now`
+        while same + 1 < n:
+            j = min(n - 1, same + step)
+            if probe(j) != now:
+                lo, hi = same, j  # the state changes after lo, at hi at the latest
+                while hi - lo > 1:
+                    mid = (lo + hi) // 2
+                    lo, hi = (mid, hi) if probe(mid) == now else (lo, mid)
+                same = lo
+                break
+            same, step = j, step * 2
+        if same > i:
+            at(nav, same)  # (the same state: the filter as after every sample up to `same`)
+            names.extend([now[0]] * (same - i))
+            flags.extend([now[1]] * (same - i))
+        i = same + 1
+
+
+def _valid_many(nav: NavFilter, states: Any, kind: str) -> Any:
+    import numpy as np
+
+    names, index = np.unique(states, return_inverse=True)
+    return np.array([nav.valid(s, kind) for s in names.tolist()], dtype=bool)[index]
+
+
+def _blend_many(nav: NavFilter, kind: str, mask: Any, error: Any) -> Any:
+    """The offsets of `kind` after each sample when the samples where `mask` is set each pull them
+    INTERNAL_GAIN toward `error` (`blend` in `_aid_internal`): an exponential average over those
+    samples, held between them; computed in blocks of 64 (a lower-triangular matrix of powers of
+    1 - INTERNAL_GAIN). Leaves nav.offsets[kind] at the last one."""
+    import numpy as np
+
+    n, width = error.shape
+    g = INTERNAL_GAIN
+    start = np.asarray(nav.offsets.get(kind, (0.0,) * width), dtype=float)
+    idx = np.flatnonzero(mask)
+    if not len(idx):
+        return np.tile(start, (n, 1))
+    e = error[idx]
+    block = 64
+    k = np.arange(block)
+    weights = np.tril(g * (1.0 - g) ** (k[:, None] - k[None, :]))
+    decay = (1.0 - g) ** (k + 1)
+    blended = np.empty_like(e)
+    prev = start
+    for b in range(0, len(e), block):
+        chunk = e[b : b + block]
+        m = len(chunk)
+        blended[b : b + m] = weights[:m, :m] @ chunk + decay[:m, None] * prev
+        prev = blended[b + m - 1]
+    nav.offsets[kind] = tuple(float(x) for x in prev)
+    # each sample: the offsets after the last sample in use at or before it (the start before any)
+    last = np.searchsorted(idx, np.arange(n), side="right") - 1
+    return np.where(last[:, None] >= 0, blended[np.maximum(last, 0)], start)
+
+
+def _rot_many(roll: Any, pitch: Any, yaw: Any) -> Any:
+    """`_rot` of arrays of Euler angles: shape (N, 3, 3)."""
+    import numpy as np
+
+    cr, sr, cp, sp, cy, sy = np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
+    return np.stack(
+        [
+            np.stack([cp * cy, sr * sp * cy - cr * sy, cr * sp * cy + sr * sy], axis=1),
+            np.stack([cp * sy, sr * sp * sy + cr * cy, cr * sp * sy - sr * cy], axis=1),
+            np.stack([-sp, sr * cp, cr * cp], axis=1),
+        ],
+        axis=1,
+    )
 
 
 _MAG_NORM = math.sqrt(sum(m * m for m in MAG_NED))

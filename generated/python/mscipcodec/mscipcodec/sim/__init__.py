@@ -328,7 +328,7 @@ class Simulator:
             if set_id is not None:
                 wanted = [_descriptor_of(d) for d in (getattr(command, poll[1], None) or [])]
                 fields = wanted or [d for d, _ in self.plan.get(set_id, [])]
-                extra = [(now + 0.001, p) for p in self._sample_packets(set_id, fields, now)]
+                extra = [(now + 0.001, p) for p in self.sample_packets(set_id, fields, now)]
         extra += self.nmea.poll_command(command, now)
         return replies, extra
 
@@ -675,7 +675,7 @@ class Simulator:
             for tick in sorted(due)[-MAX_BURST:]:
                 fields = [d for d, dec in entries if tick % dec == 0]
                 t = self.start_time + tick / rate / self.speed  # type: ignore[operator]
-                out.extend((t, p) for p in self._sample_packets(set_id, fields, t, tick / rate))
+                out.extend((t, p) for p in self.sample_packets(set_id, fields, t, tick / rate))
         return self.clocks.delay(out + self.nmea.poll(now), self.speed)  # --link-jitter
 
     def skip(self, now: float) -> None:
@@ -695,7 +695,7 @@ class Simulator:
             )
         return min((d for d in due if d is not None), default=None)
 
-    def _sample_packets(
+    def sample_packets(
         self, set_id: int, descriptors: List[int], t: float, elapsed: Optional[float] = None
     ) -> List[bytes]:
         """One sample of `descriptors` as a packet and continuation packets (docs/conformance.md
@@ -865,7 +865,7 @@ def _show(
     if kind == "valid":
         ok = {"always": True, "gnss": world["gnss_fix"]}.get(name, world.get(f"filter_valid_{name}"))
         if current is not None:
-            setattr(value, attr, type(current)(_all_bits(type(current)) if ok else 0))
+            setattr(value, attr, type(current)(all_bits(type(current)) if ok else 0))
         return
     if kind == "enum":
         member = (
@@ -892,7 +892,7 @@ def _show(
         setattr(value, attr, _convert(float(q), units, quantity))
 
 
-def _all_bits(cls: Any) -> int:
+def all_bits(cls: Any) -> int:
     """The single-bit, not reserved members of a bitfield type (every bit of a valid flags)."""
     mask = 0
     for name, _attr, _const, first, width in getattr(cls, "_MEMBERS", ()):

@@ -70,7 +70,7 @@ def test_fault_options_are_checked():
 def test_a_sample_larger_than_a_packet_repeats_its_shared_fields():
     sim = Simulator("alpha", seed=3)
     sim.start_time = 0.0
-    packets = sim._sample_packets(0x80, [0xD3] + [0x02] * 12, 0.5)
+    packets = sim.sample_packets(0x80, [0xD3] + [0x02] * 12, 0.5)
     assert len(packets) >= 2
     for p in packets:
         fields = decode_packet(p).fields
@@ -83,7 +83,7 @@ def test_a_sample_larger_than_a_packet_repeats_its_shared_fields():
 def test_world_quantities_through_the_table_and_the_clock_speed():
     sim = Simulator("alpha", seed=1, scenario="circle", speed=4.0)
     sim.start_time = 0.0
-    (packet,) = sim._sample_packets(0x80, [0x02, 0x07], 0.5)  # 2 s of simulated time at speed 4
+    (packet,) = sim.sample_packets(0x80, [0x02, 0x07], 0.5)  # 2 s of simulated time at speed 4
     vector, gps = (f.value for f in decode_packet(packet).fields)
     assert (
         abs(vector.scaled_accel[1] - 0.5 / 9.80665) < 0.005

@@ -5,7 +5,9 @@ tests and benchmarks of the dataset, Spark and DuckDB tooling.
 
 writes DIR/<NAME>.mip per device and DIR/fleet.json, the manifest of what was simulated. The
 devices are the package's simulator (`sim.Simulator`, driven in process with an injected clock:
-no socket, no real time), so the same arguments give the same bytes. Device k:
+no socket, no real time), so the same arguments give the same bytes; with numpy, its data streams
+are written block by block by fleet_batch.py from the same plan, world and layouts (other noise
+draws, so other bytes than the sample-by-sample path). Device k:
 
 - model: GX5-45 for even k, CV7-INS for odd k; serial number `6232-1010k` / `6284.17040k`
   (the simulator's --serial identity), scenario `circle` for k % 4 in (0, 1), else `static`;
@@ -39,6 +41,7 @@ from fractions import Fraction
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _sim, registry
+from ._protocol import SET_OFFSET
 from .codec.framing import PacketBuilder
 from .codec.stdio import closed_stdout
 from .sim import Simulator, parse_identity
@@ -179,7 +182,13 @@ class Device:
             spans = [(states[0], Fraction(0), settle), (states[2], settle, fix)]
             ok, bad, delay = states[3], states[2], Fraction(NavFilter.TIMEOUT).limit_denominator(1000)
         t = fix
+        merged: List[Tuple[int, int]] = []  # outages that abut (a short log's) are one for the filter
         for a, b in self.outages:
+            if merged and merged[-1][1] >= a:
+                merged[-1] = (merged[-1][0], max(b, merged[-1][1]))
+            else:
+                merged.append((a, b))
+        for a, b in merged:
             lost = Fraction(a) + delay
             if lost < b:
                 spans += [(ok, t, lost), (bad, lost, Fraction(b))]
@@ -221,6 +230,23 @@ def simulate(dev: Device, out_path: str) -> Dict[str, Any]:
     for packet in configuration(dev.model):
         chunks += sim.feed(packet, 0.0)
     chunks += sim.poll(0.0)  # the streams from tick 0: the samples are at k / rate exactly
+    batch = _batch()
+    if batch is not None:
+        with open(out_path + ".tmp", "wb") as f:
+            for _, packet in sorted(chunks, key=lambda c: c[0]):
+                f.write(packet)  # the replies and the first samples, as the simulator sent them
+            try:
+                garbage, last_len, last_set = batch.write(sim, f, dev.seconds, dev.seed, GARBAGE_EVERY, _NOT_SYNC)
+            except batch.Unsupported:  # nothing written by it: the sample-by-sample path below
+                f.close()
+            else:
+                size = f.tell()
+                if dev.truncated:
+                    size -= last_len // 2
+                    f.truncate(size)
+                f.close()
+                os.replace(out_path + ".tmp", out_path)
+                return _entry(dev, size, garbage, last_set)
     garbage = 0
     last_set = None
     with open(out_path + ".tmp", "wb") as f:
@@ -248,6 +274,18 @@ def simulate(dev: Device, out_path: str) -> Dict[str, Any]:
 
 
 _NOT_SYNC = bytes(b for b in range(256) if b != 0x75)
+
+
+def _batch() -> Any:
+    """The batch path (fleet_batch.py, with numpy: the `export` extra), or None without numpy
+    or with MIPCODEC_FLEET_BATCH=0 (the simulator's own sample-by-sample path: slower, other bytes)."""
+    if os.environ.get("MIPCODEC_FLEET_BATCH", "1") == "0":
+        return None
+    try:
+        from . import fleet_batch
+    except ImportError:
+        return None
+    return fleet_batch
 
 
 def _entry(dev: Device, size: int, garbage: int, last_set: Optional[int]) -> Dict[str, Any]:
@@ -316,10 +354,10 @@ def _bytes_per_second(model: str) -> float:
     sim = Simulator(model, 0)
     chunks: List[Tuple[float, bytes]] = []
     for packet in configuration(model):
-        sim.feed(packet, 0.0)
-    sim.poll(0.0)
-    chunks = sim.poll(1.0)
-    return float(sum(len(b) for _, b in chunks))
+        chunks += sim.feed(packet, 0.0)
+    chunks += sim.poll(0.0)  # each stream's first sample: a packet of each data set
+    sizes = {packet[SET_OFFSET]: len(packet) for _, packet in chunks if packet[SET_OFFSET] in sim.plan}
+    return float(sum(n * sim.base_rates[s] / sim.plan[s][0][1] for s, n in sizes.items()))
 
 
 def _simulate_device(args: Tuple[Device, str]) -> Dict[str, Any]:
@@ -354,7 +392,8 @@ def generate(
         raise ValueError(f"--jobs {jobs}: expected at least 1")
     os.makedirs(out, exist_ok=True)
     plans = []
-    rates = {m: _bytes_per_second(m) for m in MODELS} if size is not None else {}
+    used = MODELS[: min(devices, len(MODELS))]  # the models of devices 0.. (one device: the first only)
+    rates = {m: _bytes_per_second(m) for m in used} if size is not None else {}
     for k in range(devices):
         model = MODELS[k % 2]
         if size is not None:
@@ -427,6 +466,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         help="about this many bytes of logs in all (K, M, G suffixes); sets each device's duration instead of --hours",
     )
     args = p.parse_args(argv)
+    if "numpy" not in sys.modules:  # this process's own: the batch path's matrices are small (64 x 64),
+        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # BLAS threads would cost only their start-up
     try:
         if not (math.isfinite(args.hours) and 0 < args.hours <= 24 * 366):
             raise ValueError(f"--hours {args.hours:g}: expected more than 0, at most a year")
