@@ -144,9 +144,10 @@ def bool_values(np: Any, col: Any) -> Any:
     return out
 
 
-def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
+def text_array(np: Any, pa: Any, texts: List[str], valid: Any = None) -> Any:
     """An arrow string array of Python strings, built from its buffers (pa.array would import
-    pandas, about a quarter of a second, on its first call)."""
+    pandas, about a quarter of a second, on its first call); `valid` (numpy bools) marks the
+    non-null entries (a null's text is empty)."""
     n = len(texts)
     offsets = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.fromiter(map(len, texts), dtype=np.int64, count=n), out=offsets[1:])
@@ -155,7 +156,9 @@ def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
         data = [t.encode("utf-8") for t in texts]
         np.cumsum(np.fromiter(map(len, data), dtype=np.int64, count=n), out=offsets[1:])
     kind, width = (pa.string(), np.int32) if offsets[-1] < 1 << 31 else (pa.large_string(), np.int64)
-    return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], 0)
+    mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))
+    nulls = 0 if valid is None else int(n - np.count_nonzero(valid))
+    return pa.Array.from_buffers(kind, n, [mask, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], nulls)
 
 
 def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
