@@ -25,6 +25,7 @@ memory is bounded by a window whatever the size of the logs and splits. numpy an
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib
 import os
@@ -178,9 +179,10 @@ def _value_fields(set_id: int, key: Tuple[int, int, Optional[str]]) -> List[Any]
     return out
 
 
+@functools.cache
 def table_schema(set_id: int, key: Tuple[int, int, Optional[str]]) -> Any:
     """The Arrow schema of the per-field table of layout `key` in packets of set `set_id`
-    (partition columns not included)."""
+    (partition columns not included; made once: every window of every log asks)."""
     pa = _need("pyarrow")
     return pa.schema(base_fields() + _value_fields(set_id, key))
 
@@ -194,6 +196,7 @@ def set_layouts(set_id: int) -> List[Tuple[int, int, Optional[str]]]:
     return common + own
 
 
+@functools.cache
 def samples_schema(set_id: int) -> Any:
     """The Arrow schema of `<set>.samples`: the base columns, then the columns of every layout of
     `set_layouts` (a name met twice, as per-device variants of a field, once: the first)."""
@@ -681,7 +684,8 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     if time_col.null_count:
         us = np.where(bool_values(np, time_col.is_valid()), us, np.iinfo(np.int64).max)
     day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
-    days = np.unique(day)
+    lo, hi = (int(day.min()), int(day.max())) if len(day) else (0, 1)
+    days = np.unique(day) if lo != hi else [lo]  # (one date, most tables: without a sort)
     epoch = datetime.date(1970, 1, 1)
     out: List[Tuple[Optional[str], Any]] = []
     for d in days:

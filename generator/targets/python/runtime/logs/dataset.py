@@ -179,7 +179,7 @@ def _value_fields(set_id: int, key: Tuple[int, int, Optional[str]]) -> List[Any]
     return out
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def table_schema(set_id: int, key: Tuple[int, int, Optional[str]]) -> Any:
     """The Arrow schema of the per-field table of layout `key` in packets of set `set_id`
     (partition columns not included; made once: every window of every log asks)."""
@@ -196,7 +196,7 @@ def set_layouts(set_id: int) -> List[Tuple[int, int, Optional[str]]]:
     return common + own
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def samples_schema(set_id: int) -> Any:
     """The Arrow schema of `<set>.samples`: the base columns, then the columns of every layout of
     `set_layouts` (a name met twice, as per-device variants of a field, once: the first)."""
