@@ -226,6 +226,7 @@ PyObject *setup_foreign(PyObject *self, PyObject *args);
 PyObject *scan_text(PyObject *self, PyObject *args);
 PyObject *repr_texts(PyObject *self, PyObject *args);
 PyObject *relayout_texts(PyObject *self, PyObject *args);
+PyObject *iso_texts(PyObject *self, PyObject *args);
 
 #if defined(__GNUC__)
 #pragma GCC visibility pop

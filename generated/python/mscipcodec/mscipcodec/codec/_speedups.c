@@ -200,6 +200,9 @@ static PyMethodDef methods[] = {
      "repr_texts(values, offset, n, valid=None): repr() of float64 values as (int64 offsets, bytes)."},
     {"relayout_texts", relayout_texts, METH_VARARGS,
      "relayout_texts(offsets, data, offset, n, wide): shortest-digit texts laid out as repr()."},
+    {"iso_texts", iso_texts, METH_VARARGS,
+     "iso_texts(t_ns, offset, n, valid=None): ISO 8601 UTC texts of int64 ns, 27 bytes each (None: a year "
+     "out of 1000-9999)."},
     {NULL, NULL, 0, NULL},
 };
 
