@@ -528,7 +528,7 @@ done:
  * (repr_layout); 0 when it is not such a number (nan, inf: the caller copies it as it is). */
 static int relayout_one(const char *s, Py_ssize_t len, char *out) {
     char d[40];
-    int n = 0, point = 0, neg = 0, seen_point = 0, exp = 0, exp_neg = 0;
+    int n = 0, zeros = 0, point = 0, neg = 0, seen_point = 0, exp = 0, exp_neg = 0;
     Py_ssize_t i = 0;
     if (i < len && s[i] == '-') {
         neg = 1;
@@ -546,11 +546,18 @@ static int relayout_one(const char *s, Py_ssize_t len, char *out) {
         } else if (n == 0 && s[i] == '0') {
             point -= seen_point; /* a leading zero: after the point, the value is 10x smaller */
         } else {
-            if (n >= (int)sizeof d) {
+            point += !seen_point;
+            if (s[i] == '0') {
+                zeros++; /* kept only when a non-zero digit follows */
+                continue;
+            }
+            if (n + zeros >= (int)sizeof d) {
                 return 0;
             }
+            memset(d + n, '0', (size_t)zeros);
+            n += zeros;
+            zeros = 0;
             d[n++] = s[i];
-            point += !seen_point;
         }
     }
     if (i < len) {
@@ -571,9 +578,6 @@ static int relayout_one(const char *s, Py_ssize_t len, char *out) {
             }
             exp = exp * 10 + (s[i] - '0');
         }
-    }
-    while (n > 0 && d[n - 1] == '0') {
-        n--;
     }
     if (n == 0) {
         memcpy(out, neg ? "-0.0" : "0.0", neg ? 4 : 3);

@@ -662,6 +662,8 @@ def _sorted(np: Any, pa: Any, table: Any) -> Any:
     if t_ns.null_count:
         t = np.where(valid, t, 0)
     known = int(valid.sum())
+    if known == len(t) and bool((t[1:] > t[:-1]).all()):  # rising times (most tables): in order
+        return table
     if bool(valid[:known].all()):  # nulls (if any) last: in order when each part is (a stable sort)
         step = np.diff(t[:known])
         if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
@@ -680,13 +682,17 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     import datetime
 
     time_col = table.column("time").combine_chunks()
-    us = values_view(np, time_col.cast(pa.int64()), np.int64)
+    us = values_view(np, time_col, np.int64)  # (timestamps in microseconds: int64 values)
+    epoch = datetime.date(1970, 1, 1)
+    if not time_col.null_count and len(us):  # one date (most tables): from the extremes, no copy
+        first = int(us.min()) // DAY_US
+        if int(us.max()) // DAY_US == first:
+            return [((epoch + datetime.timedelta(days=first)).isoformat(), table)]
     if time_col.null_count:
         us = np.where(bool_values(np, time_col.is_valid()), us, np.iinfo(np.int64).max)
     day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
     lo, hi = (int(day.min()), int(day.max())) if len(day) else (0, 1)
-    days = np.unique(day) if lo != hi else [lo]  # (one date, most tables: without a sort)
-    epoch = datetime.date(1970, 1, 1)
+    days = np.unique(day) if lo != hi else [lo]  # (one date: without a sort)
     out: List[Tuple[Optional[str], Any]] = []
     for d in days:
         text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
