@@ -240,7 +240,7 @@ def sample_key(p: Packet) -> Optional[Tuple[Tuple[int, bytes], ...]]:
 
 
 # ------------------------------------------------------------------------- columnar fast path
-BLOCK = 16 << 20  # bytes decoded by one decode_columns call on the fast path
+BLOCK = 4 << 20  # bytes decoded by one decode_columns call on the fast path (peak memory grows with it)
 
 
 def fast_path(args: argparse.Namespace) -> bool:
