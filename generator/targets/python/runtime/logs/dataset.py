@@ -693,11 +693,17 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
     lo, hi = (int(day.min()), int(day.max())) if len(day) else (0, 1)
     days = np.unique(day) if lo != hi else [lo]  # (one date: without a sort)
+    # Rows in date order (as `_sorted` leaves them: by time, nulls last): each date a slice.
+    rising = len(days) > 1 and bool((day[1:] >= day[:-1]).all())
+    bounds = np.searchsorted(day, days) if rising else None
     out: List[Tuple[Optional[str], Any]] = []
-    for d in days:
+    for k, d in enumerate(days):
         text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
         if len(days) == 1:
             out.append((text, table))
+        elif bounds is not None:
+            end = int(bounds[k + 1]) if k + 1 < len(days) else len(day)
+            out.append((text, table.slice(int(bounds[k]), end - int(bounds[k]))))
         else:
             out.append((text, table.filter(to_arrow(np, pa, day == d))))
     return out
