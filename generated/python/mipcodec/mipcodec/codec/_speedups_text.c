@@ -1,4 +1,5 @@
-/* The canonical JSON lines of the C accelerator (mipcodec): scan_text(), float_text(). */
+/* The canonical JSON lines of the C accelerator (mipcodec): scan_text(), float_text(); the CSV
+ * text of float and time columns (repr_texts, relayout_texts, iso_texts). */
 #include "_speedups.h"
 
 /* ------------------------------------------------------------------------------ text */
@@ -60,26 +61,15 @@ static void text_i64(Text *t, long long v) {
  * (generator/targets/c/runtime/src/grisu3.h, copied beside this file into the package). */
 #include "grisu3.h"
 
-/* repr(float) of a finite double into out (at least 32 bytes): its length, or -1 when Grisu3 gave
- * up. The layout is format_float_short's for repr: exponent form when the decimal point falls
- * before -4 or after 16 digits ("1e+16", "1.5e-05"), else fixed with at least one digit after the
- * point ("100.0", "0.001"). */
-int repr_double(double v, char *out) {
+/* The layout of repr(float) for the digits d[0..n) (value 0.d1d2...dn x 10^decpt) after an
+ * optional '-': format_float_short's for repr, exponent form when the decimal point falls before
+ * -4 or after 16 digits ("1e+16", "1.5e-05"), else fixed with at least one digit after the point
+ * ("100.0", "0.001"). out has room for n + 24 bytes; the length is returned. */
+static int repr_layout(char *out, int neg, const char *d, int n, int decpt) {
     char *o = out;
-    if (signbit(v)) {
+    if (neg) {
         *o++ = '-';
-        v = -v;
     }
-    if (v == 0.0) {
-        memcpy(o, "0.0", 3);
-        return (int)(o + 3 - out);
-    }
-    char d[20];
-    int n, e;
-    if (!grisu3(v, d, &n, &e)) {
-        return -1;
-    }
-    int decpt = n + e; /* value = 0.d1d2... x 10^decpt */
     if (decpt <= -4 || decpt > 16) {
         *o++ = d[0];
         if (n > 1) {
@@ -121,6 +111,25 @@ int repr_double(double v, char *out) {
         *o++ = '0';
     }
     return (int)(o - out);
+}
+
+/* repr(float) of a finite double into out (at least 32 bytes): its length, or -1 when Grisu3 gave
+ * up (repr_layout). */
+int repr_double(double v, char *out) {
+    int neg = signbit(v) != 0;
+    if (neg) {
+        v = -v;
+    }
+    if (v == 0.0) {
+        memcpy(out, neg ? "-0.0" : "0.0", neg ? 4 : 3);
+        return neg ? 4 : 3;
+    }
+    char d[20];
+    int n, e;
+    if (!grisu3(v, d, &n, &e)) {
+        return -1;
+    }
+    return repr_layout(out, neg, d, n, n + e);
 }
 
 /* A finite double as repr(float) prints it; the infinities as the canonical strings. */
@@ -426,4 +435,310 @@ PyObject *scan_text(PyObject *self, PyObject *args) {
     Py_DECREF(copy);
     PyMem_Free(t.p);
     return result;
+}
+
+/* ------------------------------------------------------------------------- float columns */
+/* The CSV text of float columns (logs/arrow.py `_float_texts`): one pass over a column, its texts
+ * as the offsets (int64, n + 1 of them) and the bytes of an Arrow string array. */
+static PyObject *column_result(Text *t, PyObject *offsets) {
+    PyObject *body = PyBytes_FromStringAndSize(t->p ? t->p : "", t->len);
+    PyMem_Free(t->p);
+    if (body == NULL) {
+        Py_DECREF(offsets);
+        return NULL;
+    }
+    PyObject *out = PyTuple_Pack(2, offsets, body);
+    Py_DECREF(offsets);
+    Py_DECREF(body);
+    return out;
+}
+
+/* repr_texts(values, offset, n, valid): repr(float) of the float64 values [offset, offset + n)
+ * of a buffer ("nan", "inf", "-inf" for those); valid (bytes, one per value, or None): the
+ * empty text where 0. */
+PyObject *repr_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    Py_buffer vals, valid = {0};
+    Py_ssize_t offset, n;
+    if (!PyArg_ParseTuple(args, "y*nn|z*", &vals, &offset, &n, &valid)) {
+        return NULL;
+    }
+    PyObject *offsets = NULL;
+    if (offset < 0 || n < 0 || (offset + n) > vals.len / (Py_ssize_t)sizeof(double) ||
+        (valid.buf != NULL && valid.len < n)) {
+        PyErr_SetString(PyExc_ValueError, "repr_texts: the buffers are too short");
+        goto done;
+    }
+    offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
+    if (offsets == NULL) {
+        goto done;
+    }
+    long long *at = (long long *)PyBytes_AS_STRING(offsets);
+    const unsigned char *ok = valid.buf;
+    Text t = {NULL, 0, 0};
+    at[0] = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        double v;
+        memcpy(&v, (const char *)vals.buf + (offset + i) * (Py_ssize_t)sizeof(double), sizeof v);
+        if (ok == NULL || ok[i]) {
+            if (text_reserve(&t, 32) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                goto done;
+            }
+            int k;
+            if (isnan(v)) {
+                k = 3;
+                memcpy(t.p + t.len, "nan", 3);
+            } else if (isinf(v)) {
+                k = v < 0 ? 4 : 3;
+                memcpy(t.p + t.len, v < 0 ? "-inf" : "inf", (size_t)k);
+            } else {
+                k = repr_double(v, t.p + t.len);
+                if (k < 0) {
+                    char *r = PyOS_double_to_string(v, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+                    if (r == NULL) {
+                        PyMem_Free(t.p);
+                        Py_CLEAR(offsets);
+                        goto done;
+                    }
+                    k = (int)strlen(r);
+                    memcpy(t.p + t.len, r, (size_t)k);
+                    PyMem_Free(r);
+                }
+            }
+            t.len += k;
+        }
+        at[i + 1] = (long long)t.len;
+    }
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return column_result(&t, offsets);
+done:
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return offsets;
+}
+
+/* One text of shortest digits ("-1.5e-05", "0.001", "100", pyarrow's) laid out as repr(float)
+ * (repr_layout); 0 when it is not such a number (nan, inf: the caller copies it as it is). */
+static int relayout_one(const char *s, Py_ssize_t len, char *out) {
+    char d[40];
+    int n = 0, zeros = 0, point = 0, neg = 0, seen_point = 0, exp = 0, exp_neg = 0;
+    Py_ssize_t i = 0;
+    if (i < len && s[i] == '-') {
+        neg = 1;
+        i++;
+    }
+    if (i >= len) {
+        return 0;
+    }
+    for (; i < len && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.'); i++) {
+        if (s[i] == '.') {
+            if (seen_point) {
+                return 0;
+            }
+            seen_point = 1;
+        } else if (n == 0 && s[i] == '0') {
+            point -= seen_point; /* a leading zero: after the point, the value is 10x smaller */
+        } else {
+            point += !seen_point;
+            if (s[i] == '0') {
+                zeros++; /* kept only when a non-zero digit follows */
+                continue;
+            }
+            if (n + zeros >= (int)sizeof d) {
+                return 0;
+            }
+            memset(d + n, '0', (size_t)zeros);
+            n += zeros;
+            zeros = 0;
+            d[n++] = s[i];
+        }
+    }
+    if (i < len) {
+        if (s[i] != 'e' && s[i] != 'E') {
+            return 0;
+        }
+        i++;
+        if (i < len && (s[i] == '+' || s[i] == '-')) {
+            exp_neg = s[i] == '-';
+            i++;
+        }
+        if (i >= len) {
+            return 0;
+        }
+        for (; i < len; i++) {
+            if (s[i] < '0' || s[i] > '9' || exp > 10000) {
+                return 0;
+            }
+            exp = exp * 10 + (s[i] - '0');
+        }
+    }
+    if (n == 0) {
+        memcpy(out, neg ? "-0.0" : "0.0", neg ? 4 : 3);
+        return neg ? 4 : 3;
+    }
+    int decpt = point + (exp_neg ? -exp : exp);
+    if (decpt < -400 || decpt > 400) {
+        return 0;
+    }
+    return repr_layout(out, neg, d, n, decpt);
+}
+
+/* relayout_texts(offsets, data, offset, n, wide): the texts [offset, offset + n) of an Arrow
+ * string array (offsets int32, or int64 when wide) of shortest digits (pyarrow's float32 text)
+ * laid out as repr(float) prints the same digits; texts that are not numbers as they are. */
+PyObject *relayout_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    Py_buffer offs, data;
+    Py_ssize_t offset, n;
+    int wide;
+    if (!PyArg_ParseTuple(args, "y*y*nnp", &offs, &data, &offset, &n, &wide)) {
+        return NULL;
+    }
+    PyObject *offsets = NULL;
+    Py_ssize_t width = wide ? 8 : 4;
+    if (offset < 0 || n < 0 || (offset + n + 1) > offs.len / width) {
+        PyErr_SetString(PyExc_ValueError, "relayout_texts: the buffers are too short");
+        goto done;
+    }
+    offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
+    if (offsets == NULL) {
+        goto done;
+    }
+    long long *at = (long long *)PyBytes_AS_STRING(offsets);
+    Text t = {NULL, 0, 0};
+    at[0] = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        long long a, b;
+        if (wide) {
+            memcpy(&a, (const char *)offs.buf + (offset + i) * 8, 8);
+            memcpy(&b, (const char *)offs.buf + (offset + i + 1) * 8, 8);
+        } else {
+            int a32, b32;
+            memcpy(&a32, (const char *)offs.buf + (offset + i) * 4, 4);
+            memcpy(&b32, (const char *)offs.buf + (offset + i + 1) * 4, 4);
+            a = a32;
+            b = b32;
+        }
+        if (a < 0 || b < a || b > (long long)data.len) {
+            PyErr_SetString(PyExc_ValueError, "relayout_texts: an offset out of the data");
+            PyMem_Free(t.p);
+            Py_CLEAR(offsets);
+            goto done;
+        }
+        const char *s = (const char *)data.buf + a;
+        Py_ssize_t len = (Py_ssize_t)(b - a);
+        if (text_reserve(&t, len + 64) < 0) {
+            PyMem_Free(t.p);
+            Py_CLEAR(offsets);
+            goto done;
+        }
+        int k = len ? relayout_one(s, len, t.p + t.len) : 0;
+        if (k == 0 && len) {
+            memcpy(t.p + t.len, s, (size_t)len);
+            k = (int)len;
+        }
+        t.len += k;
+        at[i + 1] = (long long)t.len;
+    }
+    PyBuffer_Release(&offs);
+    PyBuffer_Release(&data);
+    return column_result(&t, offsets);
+done:
+    PyBuffer_Release(&offs);
+    PyBuffer_Release(&data);
+    return offsets;
+}
+
+/* iso_texts(t_ns, offset, n, valid): the `time` text of UTC ns [offset, offset + n) of an int64
+ * buffer as logs/timebase.iso writes it, 27 bytes a row ("2026-03-14T09:14:02.010000Z": the
+ * microseconds truncated toward zero, as logs/writers.iso_texts); a null (valid: bytes, one per
+ * row, or None) as the time 0. None when a year is before 1000 or after 9999. */
+PyObject *iso_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    Py_buffer ns, valid = {0};
+    Py_ssize_t offset, n;
+    if (!PyArg_ParseTuple(args, "y*nn|z*", &ns, &offset, &n, &valid)) {
+        return NULL;
+    }
+    PyObject *out = NULL;
+    if (offset < 0 || n < 0 || (offset + n) > ns.len / 8 || (valid.buf != NULL && valid.len < n)) {
+        PyErr_SetString(PyExc_ValueError, "iso_texts: the buffers are too short");
+        goto done;
+    }
+    out = PyBytes_FromStringAndSize(NULL, n * 27);
+    if (out == NULL) {
+        goto done;
+    }
+    char *o = PyBytes_AS_STRING(out);
+    const unsigned char *ok = valid.buf;
+    long long last_sec = 0;
+    char head[19];
+    int have = 0;
+    for (Py_ssize_t i = 0; i < n; i++, o += 27) {
+        long long t = 0;
+        if (ok == NULL || ok[i]) {
+            memcpy(&t, (const char *)ns.buf + (offset + i) * 8, 8);
+        }
+        long long us = t / 1000; /* toward zero */
+        long long sec = us / 1000000, frac = us % 1000000;
+        if (frac < 0) { /* the second floored, as numpy's divmod */
+            frac += 1000000;
+            sec--;
+        }
+        if (!have || sec != last_sec) {
+            long long days = sec / 86400, rem = sec % 86400;
+            if (rem < 0) {
+                rem += 86400;
+                days--;
+            }
+            /* civil date of a day count (H. Hinnant's days_from_civil, inverted) */
+            long long z = days + 719468;
+            long long era = (z >= 0 ? z : z - 146096) / 146097;
+            long long doe = z - era * 146097;
+            long long yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+            long long doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+            long long mp = (5 * doy + 2) / 153;
+            long long d = doy - (153 * mp + 2) / 5 + 1;
+            long long m = mp < 10 ? mp + 3 : mp - 9;
+            long long y = yoe + era * 400 + (m <= 2);
+            if (y < 1000 || y > 9999) {
+                Py_CLEAR(out);
+                Py_INCREF(Py_None);
+                out = Py_None;
+                goto done;
+            }
+            long long f[6] = {y, m, d, rem / 3600, rem / 60 % 60, rem % 60};
+            static const int at[6] = {0, 5, 8, 11, 14, 17}, width[6] = {4, 2, 2, 2, 2, 2};
+            memcpy(head, "0000-00-00T00:00:00", 19);
+            for (int k = 0; k < 6; k++) {
+                long long v = f[k];
+                for (int j = width[k] - 1; j >= 0; j--) {
+                    head[at[k] + j] = (char)('0' + v % 10);
+                    v /= 10;
+                }
+            }
+            last_sec = sec;
+            have = 1;
+        }
+        memcpy(o, head, 19);
+        o[19] = '.';
+        for (int j = 25; j >= 20; j--) {
+            o[j] = (char)('0' + frac % 10);
+            frac /= 10;
+        }
+        o[26] = 'Z';
+    }
+done:
+    PyBuffer_Release(&ns);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return out;
 }

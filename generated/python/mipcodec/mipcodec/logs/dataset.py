@@ -25,6 +25,7 @@ memory is bounded by a window whatever the size of the logs and splits. numpy an
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib
 import os
@@ -41,7 +42,7 @@ from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
 from .info import bad_checksums
 from .pipeline import split_device
-from .writers import need, progress_bar, table_name
+from .writers import bool_values, need, progress_bar, table_name, text_array, values_view
 
 SPLIT_BYTES = 64 << 20  # the split grid (bytes of log per task / per part file)
 LOOKBACK = 64 << 10  # bytes decoded before a split's start so that the parser is in sync at it
@@ -178,9 +179,10 @@ def _value_fields(set_id: int, key: Tuple[int, int, Optional[str]]) -> List[Any]
     return out
 
 
+@functools.cache
 def table_schema(set_id: int, key: Tuple[int, int, Optional[str]]) -> Any:
     """The Arrow schema of the per-field table of layout `key` in packets of set `set_id`
-    (partition columns not included)."""
+    (partition columns not included; made once: every window of every log asks)."""
     pa = _need("pyarrow")
     return pa.schema(base_fields() + _value_fields(set_id, key))
 
@@ -194,6 +196,7 @@ def set_layouts(set_id: int) -> List[Tuple[int, int, Optional[str]]]:
     return common + own
 
 
+@functools.cache
 def samples_schema(set_id: int) -> Any:
     """The Arrow schema of `<set>.samples`: the base columns, then the columns of every layout of
     `set_layouts` (a name met twice, as per-device variants of a field, once: the first)."""
@@ -347,7 +350,7 @@ def decode_split(
             chunk = unify(pa, [p[2][j] for p in parts])
             col = as_arrow(pa, chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk))
             # rows in stream order already (the usual case): a slice, not a copy
-            values.append(col.slice(lo, len(sel)) if contiguous else col.take(pa.array(sel, type=pa.int64())))
+            values.append(col.slice(lo, len(sel)) if contiguous else col.take(_ints(np, pa, sel)))
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
@@ -431,9 +434,9 @@ def _join(
         keyed |= present
         same &= present[1:] == present[:-1]
         for c in range(len(BASE_COLUMNS), table.num_columns):
-            col = table.column(c).combine_chunks().filter(pa.array(first))
+            col = table.column(c).combine_chunks().filter(to_arrow(np, pa, first))
             vals = np.zeros(n, dtype=np.float64)
-            vals[pos] = np.asarray(col.fill_null(0).to_numpy(zero_copy_only=False), dtype=np.float64)
+            vals[pos] = _floats(np, pa, col)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
             key_values.append((present, vals))
     if n > 1:
@@ -449,7 +452,7 @@ def _join(
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
-        take = None if firsts.all() else pa.array(np.flatnonzero(firsts), type=pa.int64())
+        take = None if firsts.all() else _ints(np, pa, np.flatnonzero(firsts))
         for c in range(len(BASE_COLUMNS), table.num_columns):
             name = table.schema.field(c).name
             col = table.column(c).combine_chunks()
@@ -464,7 +467,7 @@ def _join(
                 if extra.any():
                     arrays[name] = (
                         np.concatenate([prev[0], target[extra]]),
-                        pa.concat_arrays([prev[1], col.filter(pa.array(extra))]),
+                        pa.concat_arrays([prev[1], col.filter(to_arrow(np, pa, extra))]),
                     )
     # a row's time: its first packet with one
     t_group = times.row_times(packets, group, rows)
@@ -484,7 +487,7 @@ def _join(
         full_idx[where] = np.arange(len(where))
         mask = full_idx < 0
         full_idx[mask] = 0
-        taken = col.take(pa.array(full_idx, type=pa.int64()))
+        taken = col.take(_ints(np, pa, full_idx))
         out.append(_null_where(np, pa, taken, mask))
     return pa.Table.from_arrays(out, schema=schema)
 
@@ -496,11 +499,32 @@ def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int])
     return tuple((bool(p[i]), float(v[i]) if p[i] else None) for p, v in key_values)
 
 
+def _ints(np: Any, pa: Any, a: Any) -> Any:
+    """An arrow int64 array of a numpy array of indices (pa.array would import pandas, about a
+    quarter of a second, on its first call: the helpers here build arrays from buffers)."""
+    return to_arrow(np, pa, np.asarray(a, dtype=np.int64))
+
+
+def _floats(np: Any, pa: Any, col: Any) -> Any:
+    """The values of a numeric arrow array as float64 numpy, null as 0."""
+    pc = importlib.import_module("pyarrow.compute")
+    out = values_view(np, pc.cast(col, pa.float64(), safe=False), np.float64)
+    return np.where(bool_values(np, col.is_valid()), out, 0.0) if col.null_count else out
+
+
+def _repeated(np: Any, pa: Any, text: str, n: int) -> Any:
+    """An arrow string array of `n` copies of `text`."""
+    body = text.encode("utf-8")
+    offsets = np.arange(n + 1, dtype=np.int64) * len(body)
+    kind, width = (pa.string(), np.int32) if n * len(body) < 1 << 31 else (pa.large_string(), np.int64)
+    return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body * n)], 0)
+
+
 def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
     if not mask.any():
         return a
     pc = importlib.import_module("pyarrow.compute")
-    return pc.if_else(pa.array(mask), pa.nulls(len(a), type=a.type), a)
+    return pc.if_else(to_arrow(np, pa, mask), pa.nulls(len(a), type=a.type), a)
 
 
 class _PacketTimes:
@@ -552,7 +576,7 @@ class _PacketTimes:
             to_arrow(np, pa, t_ns, t_ok),
             to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
             to_arrow(np, pa, np.asarray(offs, dtype=np.int64)),
-            pa.array([log] * len(offs), type=pa.string()),
+            _repeated(np, pa, log, len(offs)),
         ]
         for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
             vals, ok = cols[name]
@@ -569,7 +593,7 @@ class _Pieces(FastExporter):
         np, pa = self.np, self.pa
         names = _columns.ENUMS.get(enum or "", {})
         values, where = np.unique(a, return_inverse=True)
-        texts = pa.array([names.get(int(v), str(int(v))) for v in values], type=pa.string())
+        texts = text_array(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()])
         return texts.take(to_arrow(np, pa, where.astype(np.int64).reshape(-1)))
 
 
@@ -632,17 +656,21 @@ def _sorted(np: Any, pa: Any, table: Any) -> Any:
     """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
     order already (a log's rows mostly are)."""
     t_ns = table.column("t_ns").combine_chunks()
-    offs = table.column("offset").combine_chunks().to_numpy()
-    valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else t_ns.is_valid().to_numpy(zero_copy_only=False)
-    t = t_ns.fill_null(0).to_numpy() if t_ns.null_count else t_ns.to_numpy()
+    offs = values_view(np, table.column("offset").combine_chunks(), np.int64)
+    valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else bool_values(np, t_ns.is_valid())
+    t = values_view(np, t_ns, np.int64)
+    if t_ns.null_count:
+        t = np.where(valid, t, 0)
     known = int(valid.sum())
+    if known == len(t) and bool((t[1:] > t[:-1]).all()):  # rising times (most tables): in order
+        return table
     if bool(valid[:known].all()):  # nulls (if any) last: in order when each part is (a stable sort)
         step = np.diff(t[:known])
         if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
             if bool((np.diff(offs[known:]) >= 0).all()):
                 return table
     order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
-    return table.take(pa.array(order, type=pa.int64()))
+    return table.take(_ints(np, pa, order))
 
 
 DAY_US = 86_400_000_000
@@ -654,17 +682,30 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     import datetime
 
     time_col = table.column("time").combine_chunks()
-    us = time_col.cast(pa.int64()).fill_null(np.iinfo(np.int64).max).to_numpy()
-    day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
-    days = np.unique(day)
+    us = values_view(np, time_col, np.int64)  # (timestamps in microseconds: int64 values)
     epoch = datetime.date(1970, 1, 1)
+    if not time_col.null_count and len(us):  # one date (most tables): from the extremes, no copy
+        first = int(us.min()) // DAY_US
+        if int(us.max()) // DAY_US == first:
+            return [((epoch + datetime.timedelta(days=first)).isoformat(), table)]
+    if time_col.null_count:
+        us = np.where(bool_values(np, time_col.is_valid()), us, np.iinfo(np.int64).max)
+    day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
+    lo, hi = (int(day.min()), int(day.max())) if len(day) else (0, 1)
+    days = np.unique(day) if lo != hi else [lo]  # (one date: without a sort)
+    # Rows in date order (as `_sorted` leaves them: by time, nulls last): each date a slice.
+    rising = len(days) > 1 and bool((day[1:] >= day[:-1]).all())
+    bounds = np.searchsorted(day, days) if rising else None
     out: List[Tuple[Optional[str], Any]] = []
-    for d in days:
+    for k, d in enumerate(days):
         text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
         if len(days) == 1:
             out.append((text, table))
+        elif bounds is not None:
+            end = int(bounds[k + 1]) if k + 1 < len(days) else len(day)
+            out.append((text, table.slice(int(bounds[k]), end - int(bounds[k]))))
         else:
-            out.append((text, table.filter(pa.array(day == d))))
+            out.append((text, table.filter(to_arrow(np, pa, day == d))))
     return out
 
 
@@ -799,7 +840,7 @@ def write_files_row(out_dir: str, row: Dict[str, Any]) -> str:
     """Write `_files/part-<log>.parquet` (replacing the log's previous row); its relative path."""
     pa = _need("pyarrow")
     schema = files_schema()
-    arrays = [pa.array([row[f.name]], type=f.type) for f in schema]
+    arrays = [_cell(pa, row[f.name], f.type) for f in schema]
     table = pa.Table.from_arrays(arrays, schema=schema)
     table = table.replace_schema_metadata(
         {META + b"spec_version": _spec_version().encode(), META + b"spec_hash": _spec_hash().encode()}
@@ -807,6 +848,17 @@ def write_files_row(out_dir: str, row: Dict[str, Any]) -> str:
     rel = os.path.join(FILES_TABLE, f"part-{row['log']}.parquet")
     _write_atomic(pa, os.path.join(out_dir, rel), table)
     return rel
+
+
+def _cell(pa: Any, value: Any, t: Any) -> Any:
+    """A one-value arrow array of type `t` (a string, an int, a timestamp in microseconds, or
+    None), built without pa.array (which would import pandas)."""
+    np = _need("numpy")
+    if value is None:
+        return pa.nulls(1, type=t)
+    if pa.types.is_string(t):
+        return text_array(np, pa, [str(value)])
+    return to_arrow(np, pa, np.array([value], dtype=np.int64)).cast(t)
 
 
 def unreadable_id(path: str) -> str:

@@ -612,7 +612,10 @@ def _columns_arrays(np: Any, cols: Any, base: int) -> Dict[str, Any]:
     def place(keys: Any, vals: Any, dtype: Any) -> Tuple[Any, Any]:
         a = np.zeros(n, dtype=dtype)
         m = np.zeros(n, dtype=bool)
-        if len(keys):
+        if len(keys) == n:  # distinct offsets among `offsets`, as many: all of them, in order
+            a[:] = vals
+            m[:] = True
+        elif len(keys):
             i = np.searchsorted(offsets, keys)
             a[i] = vals
             m[i] = True

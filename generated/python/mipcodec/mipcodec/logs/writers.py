@@ -144,9 +144,10 @@ def bool_values(np: Any, col: Any) -> Any:
     return out
 
 
-def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
+def text_array(np: Any, pa: Any, texts: List[str], valid: Any = None) -> Any:
     """An arrow string array of Python strings, built from its buffers (pa.array would import
-    pandas, about a quarter of a second, on its first call)."""
+    pandas, about a quarter of a second, on its first call); `valid` (numpy bools) marks the
+    non-null entries (a null's text is empty)."""
     n = len(texts)
     offsets = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.fromiter(map(len, texts), dtype=np.int64, count=n), out=offsets[1:])
@@ -155,7 +156,9 @@ def text_array(np: Any, pa: Any, texts: List[str]) -> Any:
         data = [t.encode("utf-8") for t in texts]
         np.cumsum(np.fromiter(map(len, data), dtype=np.int64, count=n), out=offsets[1:])
     kind, width = (pa.string(), np.int32) if offsets[-1] < 1 << 31 else (pa.large_string(), np.int64)
-    return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], 0)
+    mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))
+    nulls = 0 if valid is None else int(n - np.count_nonzero(valid))
+    return pa.Array.from_buffers(kind, n, [mask, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body)], nulls)
 
 
 def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
@@ -164,11 +167,37 @@ def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
     pipeline.time_array's timestamps are), as an arrow string array: each distinct second's
     `YYYY-MM-DDTHH:MM:SS` from datetime once, the microseconds as digits, 27 bytes a row.
     None where a second's text is not 19 characters (a year before 1000 or after 9999)."""
-    import datetime
-
     if isinstance(t_ns, pa.ChunkedArray):
         t_ns = t_ns.combine_chunks()
     n = len(t_ns)
+    from ..codec.framing import speedups
+
+    if speedups is not None and hasattr(speedups, "iso_texts"):  # the same bytes in one C pass
+        valid = bool_values(np, t_ns.is_valid()).tobytes() if t_ns.null_count else None
+        values = t_ns.buffers()[1] if t_ns.buffers()[1] is not None else bytes(8 * (n + t_ns.offset))
+        text = speedups.iso_texts(values, t_ns.offset, n, valid)
+        if text is None:
+            return None
+        cells = np.frombuffer(text, dtype=np.uint8)
+    else:
+        cells = _iso_cells(np, t_ns, n)
+        if cells is None:
+            return None
+    offsets = np.arange(0, 27 * (n + 1), 27, dtype=np.int32)
+    nulls = t_ns.null_count
+    valid_bits = None
+    if nulls:  # the validity bits from offset 0 (is_valid().to_numpy would import pandas)
+        valid_bits = t_ns.buffers()[0]
+        if t_ns.offset:
+            bits = np.unpackbits(np.frombuffer(valid_bits, dtype=np.uint8), bitorder="little")
+            valid_bits = pa.py_buffer(np.packbits(bits[t_ns.offset : t_ns.offset + n], bitorder="little"))
+    return pa.Array.from_buffers(pa.string(), n, [valid_bits, pa.py_buffer(offsets), pa.py_buffer(cells)], nulls)
+
+
+def _iso_cells(np: Any, t_ns: Any, n: int) -> Any:
+    """`iso_texts`' bytes by numpy (n x 27 uint8, flat), None for a year out of 1000-9999."""
+    import datetime
+
     ns = values_view(np, t_ns, np.int64)  # (not fill_null: pa.scalar imports pandas)
     if t_ns.null_count:
         ns = np.where(bool_values(np, t_ns.is_valid()), ns, 0)  # (a null slot holds anything)
@@ -198,15 +227,7 @@ def iso_texts(np: Any, pa: Any, t_ns: Any) -> Any:
         cells[:, 25 - k] = frac % 10 + ord("0")
         frac = frac // 10
     cells[:, 26] = ord("Z")
-    offsets = np.arange(0, 27 * (n + 1), 27, dtype=np.int32)
-    nulls = t_ns.null_count
-    valid = None
-    if nulls:  # the validity bits from offset 0 (is_valid().to_numpy would import pandas)
-        valid = t_ns.buffers()[0]
-        if t_ns.offset:
-            bits = np.unpackbits(np.frombuffer(valid, dtype=np.uint8), bitorder="little")
-            valid = pa.py_buffer(np.packbits(bits[t_ns.offset : t_ns.offset + n], bitorder="little"))
-    return pa.Array.from_buffers(pa.string(), n, [valid, pa.py_buffer(offsets), pa.py_buffer(cells.reshape(-1))], nulls)
+    return cells.reshape(-1)
 
 
 def header(name: str, units: Optional[str]) -> str:

@@ -240,7 +240,7 @@ def sample_key(p: Packet) -> Optional[Tuple[Tuple[int, bytes], ...]]:
 
 
 # ------------------------------------------------------------------------- columnar fast path
-BLOCK = 16 << 20  # bytes decoded by one decode_columns call on the fast path
+BLOCK = 4 << 20  # bytes decoded by one decode_columns call on the fast path (peak memory grows with it)
 
 
 def fast_path(args: argparse.Namespace) -> bool:
@@ -384,17 +384,20 @@ class FastExporter:
         return to_arrow(np, pa, a)
 
     def _py_column(self, vals: List[Any], kind: str) -> Any:
-        pa = self.pa
-        if kind == "float32":
-            return pa.array([None if v is None else float(v) for v in vals], type=pa.float32())
-        if kind == "float64":
-            return pa.array(vals, type=pa.float64())
-        if kind == "bool":
-            return pa.array(vals, type=pa.bool_())
-        if kind in ("int", "bits") or (kind == "enum" and self.enum_numbers):
-            big = any(v is not None and v >= 1 << 63 for v in vals)
-            return pa.array(vals, type=pa.uint64() if big else pa.int64())
-        return pa.array([None if v is None else str(v) for v in vals], type=pa.string())
+        """An arrow column of Python cells (None: null), built from numpy buffers (pa.array would
+        import pandas, a quarter of a second, on its first call)."""
+        np, pa = self.np, self.pa
+        valid = np.fromiter((v is not None for v in vals), dtype=bool, count=len(vals))
+        mask = None if valid.all() else valid
+        if kind in ("float32", "float64", "bool", "int", "bits") or (kind == "enum" and self.enum_numbers):
+            fill = vals if mask is None else [0 if v is None else v for v in vals]
+            if kind in ("float32", "float64", "bool"):
+                dtype = {"float32": np.float32, "float64": np.float64, "bool": np.bool_}[kind]
+            else:
+                big = any(v >= 1 << 63 for v in fill)
+                dtype = np.uint64 if big else np.int64
+            return to_arrow(np, pa, np.array(fill, dtype=dtype), mask)
+        return text_array(np, pa, ["" if v is None else str(v) for v in vals], mask)
 
     def _write(self, key: Any, parts: List[Any]) -> None:
         np, pa = self.np, self.pa

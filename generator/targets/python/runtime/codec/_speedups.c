@@ -196,6 +196,13 @@ static PyMethodDef methods[] = {
     {"scan_text", scan_text, METH_VARARGS,
      "scan_text(buf, base, skip, skip_at, final): the parser loop printing canonical JSON lines."},
     {"float_text", float_text, METH_O, "float_text(x): repr(x) by the fast path, or None where it gives up."},
+    {"repr_texts", repr_texts, METH_VARARGS,
+     "repr_texts(values, offset, n, valid=None): repr() of float64 values as (int64 offsets, bytes)."},
+    {"relayout_texts", relayout_texts, METH_VARARGS,
+     "relayout_texts(offsets, data, offset, n, wide): shortest-digit texts laid out as repr()."},
+    {"iso_texts", iso_texts, METH_VARARGS,
+     "iso_texts(t_ns, offset, n, valid=None): ISO 8601 UTC texts of int64 ns, 27 bytes each (None: a year "
+     "out of 1000-9999)."},
     {NULL, NULL, 0, NULL},
 };
 

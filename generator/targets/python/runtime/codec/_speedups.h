@@ -224,6 +224,9 @@ int text_skip(Text *t, SkipRun *s);
 int text_foreign(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
 PyObject *setup_foreign(PyObject *self, PyObject *args);
 PyObject *scan_text(PyObject *self, PyObject *args);
+PyObject *repr_texts(PyObject *self, PyObject *args);
+PyObject *relayout_texts(PyObject *self, PyObject *args);
+PyObject *iso_texts(PyObject *self, PyObject *args);
 
 #if defined(__GNUC__)
 #pragma GCC visibility pop

@@ -85,6 +85,9 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     does: the same shortest digits, positional from 1e-4 to below 1e16, `.0` when integral)."""
     pc = importlib.import_module("pyarrow.compute")
     single = col.type == pa.float32()
+    fast = _speedups()
+    if fast is not None:
+        return _c_float_texts(np, pa, pc, fast, col, single)
     text = pc.cast(col, pa.string())
     values = values_view(np, col, np.float32 if single else np.float64)  # (pa.scalar would import pandas)
     size = np.abs(values.astype(np.float64))
@@ -104,6 +107,34 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     mask = np.zeros(len(values), dtype=bool)
     mask[where] = True
     return pc.replace_with_mask(text, to_arrow(np, pa, mask), fixed)
+
+
+def _speedups() -> Any:
+    """The C accelerator (codec/_speedups*.c), or None: pure Python."""
+    from ..codec.framing import speedups
+
+    return speedups if speedups is not None and hasattr(speedups, "repr_texts") else None
+
+
+def _c_float_texts(np: Any, pa: Any, pc: Any, fast: Any, col: Any, single: bool) -> Any:
+    """`_float_texts` by the C accelerator in one pass: a float64 as repr prints it (`repr_texts`,
+    Grisu3 with Python's own printer where Grisu3 gives up); a float32 from pyarrow's shortest
+    float32 digits, laid out as repr lays out the same digits (`relayout_texts`: what the
+    pure-Python branch gets by reading them as a double and printing it with repr)."""
+    n = len(col)
+    valid = bool_values(np, col.is_valid()) if col.null_count else None
+    if single:
+        text = pc.cast(col, pa.string())
+        bufs = text.buffers()
+        offsets, body = fast.relayout_texts(bufs[1], bufs[2] or b"", text.offset, n, False)
+    else:
+        values = col.buffers()[1] if col.buffers()[1] is not None else bytes(8 * (n + col.offset))
+        offsets, body = fast.repr_texts(values, col.offset, n, None if valid is None else valid.tobytes())
+    at = np.frombuffer(offsets, dtype=np.int64)
+    kind, width = (pa.string(), np.int32) if len(body) < 1 << 31 else (pa.large_string(), np.int64)
+    mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))
+    nulls = 0 if valid is None else int(n - np.count_nonzero(valid))
+    return pa.Array.from_buffers(kind, n, [mask, pa.py_buffer(at.astype(width)), pa.py_buffer(body)], nulls)
 
 
 def f32_texts(np: Any, a: Any) -> Any:

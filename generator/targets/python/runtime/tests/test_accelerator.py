@@ -251,6 +251,64 @@ def test_float_text_is_repr():
     assert given_up < len(cases) // 20, given_up
 
 
+def _unpack_texts(offsets, body, n):
+    at = struct.unpack(f"<{n + 1}q", offsets)
+    return [body[at[i] : at[i + 1]].decode("ascii") for i in range(n)]
+
+
+def test_csv_column_printers_are_the_python_texts():
+    # The CSV export's column printers (logs/arrow.py `_float_texts`, logs/writers.iso_texts):
+    # repr_texts prints each float64 as repr does (nan, inf, -inf as such; a row marked invalid
+    # empty); relayout_texts lays out the shortest digits of a number written in another layout
+    # (pyarrow's float32 text: "1.5e-05", "1e+16", "100") as repr lays out the same digits, and
+    # copies what is not a number; iso_texts writes UTC ns as 2026-03-14T09:14:02.010000Z, the
+    # microseconds truncated toward zero, 27 bytes a row.
+    if not testproto.ACCELERATED:
+        return  # the pure run: no C printers (the accelerated run checks them)
+    import datetime
+    import decimal
+
+    from testproto.codec import _speedups
+
+    cases = _float_cases()[:20000] + [0.0, -0.0, 1e16, 1e-4, 9.999e-5, 100.0, float("nan"), float("inf"), -1e300]
+    n = len(cases)
+    valid = bytes(i % 7 != 3 for i in range(n))
+    texts = _unpack_texts(*_speedups.repr_texts(struct.pack(f"<{n}d", *cases), 0, n, valid), n)
+    for x, ok, text in zip(cases, valid, texts):
+        assert text == ("" if not ok else "nan" if x != x else repr(x)), (x, text)
+    texts = _unpack_texts(*_speedups.repr_texts(struct.pack(f"<{n}d", *cases), 5, 10), 10)
+    assert texts == [repr(x) for x in cases[5:15]]
+
+    given, expect = [], []
+    for x in cases[:5000] + [0.0, -0.0, 1e16, 1e-4, 9.999e-5, 100.0]:
+        if x != x or abs(x) == float("inf"):
+            continue
+        digits = decimal.Decimal(repr(x))
+        for form in ("e", "f"):  # the same digits, laid out otherwise: 1.2345e+2, 123.45
+            given.append(format(digits, form))
+            expect.append(repr(x))
+    given += ["nan", "-inf", "", "1e5x"]
+    expect += ["nan", "-inf", "", "1e5x"]
+    body = "".join(given).encode("ascii")
+    bounds = [0]
+    for t in given:
+        bounds.append(bounds[-1] + len(t))
+    for wide, code in ((False, "i"), (True, "q")):
+        offsets = struct.pack(f"<{len(bounds)}{code}", *bounds)
+        assert _unpack_texts(*_speedups.relayout_texts(offsets, body, 0, len(given), wide), len(given)) == expect
+
+    times = [0, 1, 999, 1000, -1, -999, -1000, -1001, 1773479642010000000, 2**63 - 1, -(2**63)]
+    times += [random.Random(7).randrange(-(2**63), 2**63) for _ in range(2000)]
+    ok = bytes(i != 3 for i in range(len(times)))
+    out = _speedups.iso_texts(struct.pack(f"<{len(times)}q", *times), 0, len(times), ok)
+    assert len(out) == 27 * len(times)
+    for i, t in enumerate(times):
+        us = abs(t) // 1000 * (1 if t >= 0 else -1) if ok[i] else 0  # toward zero
+        sec, frac = divmod(us, 1_000_000)
+        head = (datetime.datetime(1970, 1, 1) + datetime.timedelta(seconds=sec)).strftime("%Y-%m-%dT%H:%M:%S")
+        assert out[27 * i : 27 * i + 27].decode() == f"{head}.{frac:06d}Z", t
+
+
 def test_event_objects_and_their_subclasses_are_freed():
     # The accelerator frees Packet, DecodedField, RawPacket and Skip itself (not through
     # CPython's generic dealloc): each instance gives back its class's reference, also for a
