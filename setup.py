@@ -1,6 +1,6 @@
 """The build step of the `mipgen` wheel (metadata: pyproject.toml; docs/packaging.md).
 
-The generator reads templates/, spec/schema/, VERSION, LICENSE and the formatter configurations
+The generator reads templates/, spec/schema/, spec/common/, VERSION, LICENSE and the formatter configurations
 from the checkout, and the runtimes from generator/targets/<lang>/runtime/ (generator/resources.py).
 A wheel has no checkout: this step copies them into the built package (generator/_data/ and the
 runtime directories) so that git keeps one copy of each. An editable install reads the checkout.

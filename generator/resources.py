@@ -1,7 +1,7 @@
 """Every file the generator reads besides the user's spec, in one place.
 
 Run from a checkout (`python -m generator`, `pip install -e .`), the files are the checkout's:
-templates/, spec/schema/, VERSION, LICENSE, .clang-format, ruff.toml, rustfmt.toml and the
+templates/, spec/schema/, spec/common/ (the GPS time scale), VERSION, LICENSE, .clang-format, ruff.toml, rustfmt.toml and the
 runtimes under generator/targets/<lang>/runtime/. Installed from a wheel (`pip install .`,
 docs/packaging.md), the wheel carries copies of them in generator/_data/ (made by the build step
 of setup.py, never kept in git) laid out as in the checkout, and the runtimes as package data.
@@ -19,7 +19,16 @@ PACKAGE_DIR = Path(__file__).resolve().parent
 DATA_DIR = PACKAGE_DIR / "_data"
 
 # The files and directories (relative to the project root) a wheel carries in generator/_data/.
-SHIPPED = ("templates", "spec/schema", "VERSION", "LICENSE", ".clang-format", "ruff.toml", "rustfmt.toml")
+SHIPPED = (
+    "templates",
+    "spec/schema",
+    "spec/common",
+    "VERSION",
+    "LICENSE",
+    ".clang-format",
+    "ruff.toml",
+    "rustfmt.toml",
+)
 
 
 def _checkout() -> Path | None:

@@ -696,8 +696,12 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/{pkg}/_link.py"] = env.get_template("python/package/_link.py.j2").render(
             **ctx, link_facts=link_facts(proto)
         )
-        files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(
-            **ctx, **_sim_context(m, sets)
+        sim_ctx = _sim_context(m, sets)
+        files[f"{root}/{pkg}/_sim.py"] = env.get_template("python/package/_sim.py.j2").render(**ctx, **sim_ctx)
+        files[f"{root}/{pkg}/_identity.py"] = env.get_template("python/package/_identity.py.j2").render(
+            **ctx,
+            identity_reports=sim_ctx["identity_reports"],
+            identity_modules=sorted({c["cls"].split(".")[0] for c in sim_ctx["identity_reports"]}),
         )
         settings = _settings_context(m, sets)
         files[f"{root}/{pkg}/_settings.py"] = env.get_template("python/package/_settings.py.j2").render(

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+
 from . import (
     aiding,
     base,
@@ -1638,19 +1640,9 @@ DESCRIPTOR_ITEMS: Dict[Any, Any] = {
 }
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command", "data")
 
-# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
-# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
-# item its kind and limit (the largest integer, or the most characters)
-IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {
-    base.DeviceInfo: (
-        (("info", "firmware_version"), "firmware", None),
-        (("info", "model_name"), "model_name", (16, " ", "left")),
-        (("info", "model_number"), "model_number", (16, " ", "left")),
-        (("info", "serial_number"), "serial_number", (16, " ", "left")),
-        (("info", "lot_number"), "lot_number", (16, " ", "left")),
-        (("info", "device_options"), "options", (16, " ", "left")),
-    ),
-}
+# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
+# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# largest integer, or the most characters)
 IDENTITY: Dict[str, Dict[str, Any]] = {
     "gx5_45": {
         "firmware": 1534,

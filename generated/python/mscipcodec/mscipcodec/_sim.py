@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+
 from . import base, imu_config, imu_data, types
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
@@ -140,15 +142,9 @@ DESCRIPTOR_ITEMS: Dict[Any, Any] = {
 }
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command",)
 
-# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
-# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
-# item its kind and limit (the largest integer, or the most characters)
-IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {
-    base.DeviceModel: ((("model",), "model_name", (16, " ", "right")),),
-    base.DeviceSn: ((("serial_number",), "serial_number", (16, " ", "right")),),
-    base.DeviceFw: ((("firmware",), "firmware", (16, " ", "right")),),
-    base.DeviceCal: ((("date",), "calibration_date", (16, " ", "right")),),
-}
+# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
+# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# largest integer, or the most characters)
 IDENTITY: Dict[str, Dict[str, Any]] = {
     "ms_imu3020": {
         "model_name": "MS_IMU3020",

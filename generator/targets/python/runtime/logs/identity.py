@@ -99,9 +99,9 @@ def identity_from_packet(packet: Any) -> Optional[Identity]:
 
 
 def identity_reports() -> Dict[Any, Any]:
-    """Device information reply class -> its identity items (the generated `_sim.IDENTITY_REPORTS`)."""
+    """Device information reply class -> its identity items (the generated `_identity.IDENTITY_REPORTS`)."""
     try:
-        sim = importlib.import_module(".._sim", __package__)
+        sim = importlib.import_module(".._identity", __package__)
     except ImportError:
         return {}
     reports: Dict[Any, Any] = getattr(sim, "IDENTITY_REPORTS", {})

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+
 from . import commands, data, receiver_1, receiver_2, shared
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
@@ -90,10 +92,9 @@ DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {}
 DESCRIPTOR_ITEMS: Dict[Any, Any] = {}
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ()
 
-# Identity (spec simulation identity): reply class -> ((attribute path, item, string format:
-# (length, pad, justify) or None for an integer), ...); per device the value of every item; per
-# item its kind and limit (the largest integer, or the most characters)
-IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {}
+# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
+# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# largest integer, or the most characters)
 IDENTITY: Dict[str, Dict[str, Any]] = {}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
 
