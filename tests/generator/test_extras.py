@@ -48,6 +48,9 @@ COMMAND_EXTRAS = {
     "logs/query.py": ("query",),
     "logs/mcap.py": ("mcap",),
     "device/record_mcap.py": ("mcap",),
+    # the fleet's batch path and the world's batch functions it calls (fleet.py falls back without numpy)
+    "protocols/mip/fleet_batch.py": ("export",),
+    "sim/world.py": ("export",),
     "spark.py": ("spark",),
     "device/cli.py": ("device",),
     "device/settings.py": ("device",),
