@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
-from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
-
 from . import (
     aiding,
     base,
@@ -28,6 +26,7 @@ from . import (
     threedm,
     types,
 )
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.

@@ -8,9 +8,8 @@ from __future__ import annotations
 
 from typing import Any, Dict, Tuple
 
-from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
-
 from . import base, imu_config, imu_data, types
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.
