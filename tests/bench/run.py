@@ -47,7 +47,7 @@
      command and the parser) and minimal.c (the same with the C package), whose figures are each
      row's divisor (the "x C" columns); rows lang=compile in results.json.
   8. the dataset (issue 41; --no-dataset leaves it out, --dataset-size BYTES sets the fleet's
-     size, default 48 MiB): the simulated fleet of tests/bench/spark_bench.py (mipcodec.fleet,
+     size, default 200 MiB, the issue's size for the Spark scaling): the simulated fleet of tests/bench/spark_bench.py (mipcodec.fleet,
      build/bench/spark-fleet/), exported with `export --dataset`'s function in this process (one
      core): MB/s of raw log (10^6 bytes per second of wall time), MB per CPU second, its peak
      memory (maximum resident set) and the dataset's size over the raw logs'; then the Spark job with local[1] and local[2] and the scaling ratio
@@ -913,7 +913,7 @@ def main() -> int:
     ap.add_argument("--no-compile", action="store_true", help="leave out the compile-cost section")
     ap.add_argument("--compile-only", action="store_true", help="only measure the compile cost (issue 39)")
     ap.add_argument("--no-dataset", action="store_true", help="leave out the dataset and Spark section (issue 41)")
-    ap.add_argument("--dataset-size", type=int, default=48 << 20, help="bytes of simulated fleet logs (section 8)")
+    ap.add_argument("--dataset-size", type=int, default=200 << 20, help="bytes of simulated fleet logs (section 8)")
     ap.add_argument(
         "--instructions", action="store_true", help="also count instructions per packet (valgrind --tool=callgrind)"
     )
