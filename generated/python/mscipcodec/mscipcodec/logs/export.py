@@ -28,6 +28,7 @@ from .writers import (
     iso_texts,
     select,
     table_name,
+    taken_texts,
     text_array,
 )
 
@@ -375,8 +376,7 @@ class FastExporter:
         if kind == "enum" and not self.enum_numbers:
             names = _columns.ENUMS.get(enum or "", {})
             values, where = np.unique(a, return_inverse=True)  # each value's name once
-            texts = text_array(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()])
-            return texts.take(to_arrow(np, pa, where.reshape(-1).astype(np.int64)))
+            return taken_texts(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()], where.reshape(-1))
         if kind == "bool":
             return to_arrow(np, pa, a.astype(bool))
         if kind in ("int", "bits", "enum") and a.dtype == np.uint64 and (a.size == 0 or a.max() < (1 << 63)):

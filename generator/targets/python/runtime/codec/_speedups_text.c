@@ -524,6 +524,101 @@ done:
     return offsets;
 }
 
+/* The shortest digits of a finite float32 (the digits pyarrow's cast to string prints: Grisu3 with
+ * a float's boundaries, as double-conversion's SHORTEST_SINGLE) laid out as repr(float) lays out
+ * the same digits (repr_layout; what relayout_one makes of pyarrow's text); -1 when Grisu3 gave up
+ * (the caller falls back to pyarrow's digits). out has room for 40 bytes. */
+static int repr_single(float f, char *out) {
+    unsigned int bits;
+    memcpy(&bits, &f, 4);
+    int neg = (bits >> 31) != 0;
+    unsigned int frac = bits & 0x7FFFFFu;
+    int bexp = (int)((bits >> 23) & 0xFF);
+    if (bexp == 0 && frac == 0) {
+        memcpy(out, neg ? "-0.0" : "0.0", neg ? 4 : 3);
+        return neg ? 4 : 3;
+    }
+    DiyFp w;
+    if (bexp) {
+        w.f = frac | 0x800000u;
+        w.e = bexp - 150;
+    } else {
+        w.f = frac;
+        w.e = -149;
+    }
+    char d[20];
+    int n, e;
+    if (!grisu3_bounded(w, frac == 0 && bexp > 1, d, &n, &e)) {
+        return -1;
+    }
+    return repr_layout(out, neg, d, n, n + e);
+}
+
+/* f32_texts(values, offset, n, valid): the float32 values [offset, offset + n) of a buffer as the
+ * CSV prints them (repr_single; "nan", "inf", "-inf" as pyarrow prints those), the empty text where
+ * valid (bytes, one per value, or None) is 0; None when Grisu3 gave up on a value (rare: the
+ * caller then takes pyarrow's digits, relayout_texts). */
+PyObject *f32_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    Py_buffer vals, valid = {0};
+    Py_ssize_t offset, n;
+    if (!PyArg_ParseTuple(args, "y*nn|z*", &vals, &offset, &n, &valid)) {
+        return NULL;
+    }
+    PyObject *offsets = NULL;
+    if (offset < 0 || n < 0 || (offset + n) > vals.len / (Py_ssize_t)sizeof(float) ||
+        (valid.buf != NULL && valid.len < n)) {
+        PyErr_SetString(PyExc_ValueError, "f32_texts: the buffers are too short");
+        goto done;
+    }
+    offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
+    if (offsets == NULL) {
+        goto done;
+    }
+    long long *at = (long long *)PyBytes_AS_STRING(offsets);
+    const unsigned char *ok = valid.buf;
+    Text t = {NULL, 0, 0};
+    at[0] = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        float v;
+        memcpy(&v, (const char *)vals.buf + (offset + i) * (Py_ssize_t)sizeof(float), sizeof v);
+        if (ok == NULL || ok[i]) {
+            if (text_reserve(&t, 40) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                goto done;
+            }
+            int k;
+            if (isnan(v)) {
+                k = 3;
+                memcpy(t.p + t.len, "nan", 3);
+            } else if (isinf(v)) {
+                k = v < 0 ? 4 : 3;
+                memcpy(t.p + t.len, v < 0 ? "-inf" : "inf", (size_t)k);
+            } else if ((k = repr_single(v, t.p + t.len)) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                Py_INCREF(Py_None);
+                offsets = Py_None;
+                goto done;
+            }
+            t.len += k;
+        }
+        at[i + 1] = (long long)t.len;
+    }
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return column_result(&t, offsets);
+done:
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return offsets;
+}
+
 /* One text of shortest digits ("-1.5e-05", "0.001", "100", pyarrow's) laid out as repr(float)
  * (repr_layout); 0 when it is not such a number (nan, inf: the caller copies it as it is). */
 static int relayout_one(const char *s, Py_ssize_t len, char *out) {
