@@ -524,10 +524,62 @@ done:
     return offsets;
 }
 
+/* The shortest digits of a finite positive float32 where Grisu3 gives up (about 1% of all float32
+ * values, mostly above 2^24): for 1 to 9 digits, the value rounded to that many significant digits
+ * (printf's "%.*e", exact and half to even, as double-conversion's exact fallback breaks a tie),
+ * then, when the lower neighbour is the closer one (lower_closer: the interval of values that read
+ * back as f is wider above it), the next such decimal up; the first that reads back as f (strtof,
+ * correctly rounded) is the shortest and the closest. Its digits into d (no trailing zero), their
+ * count in *n; the decimal point's position returned (value 0.d1d2... x 10^decpt), INT_MIN when
+ * the C library printed something unexpected. */
+static int single_digits(float f, int lower_closer, char *d, int *n) {
+    for (int p = 1; p <= 9; p++) {
+        char s[40];
+        int len = snprintf(s, sizeof s, "%.*e", p - 1, (double)f);
+        char *e = strchr(s, 'e');
+        if (len <= 0 || len >= (int)sizeof s || e == NULL) {
+            return INT_MIN;
+        }
+        int k = 0;
+        for (const char *c = s; c < e; c++) {
+            if (*c >= '0' && *c <= '9') {
+                d[k++] = *c;
+            }
+        }
+        int exp10 = atoi(e + 1);
+        for (int up = 0; up <= lower_closer; up++) {
+            if (up) { /* one unit up in the last digit */
+                int i = k - 1;
+                while (i >= 0 && d[i] == '9') {
+                    d[i--] = '0';
+                }
+                if (i < 0) {
+                    d[0] = '1';
+                    memset(d + 1, '0', (size_t)(k - 1));
+                    exp10++;
+                } else {
+                    d[i]++;
+                }
+            }
+            char t[40];
+            snprintf(t, sizeof t, "%c.%.*se%d", d[0], k - 1, d + 1, exp10);
+            if (strtof(t, NULL) == f) {
+                while (k > 1 && d[k - 1] == '0') {
+                    k--;
+                }
+                *n = k;
+                return exp10 + 1;
+            }
+        }
+    }
+    return INT_MIN;
+}
+
 /* The shortest digits of a finite float32 (the digits pyarrow's cast to string prints: Grisu3 with
  * a float's boundaries, as double-conversion's SHORTEST_SINGLE) laid out as repr(float) lays out
- * the same digits (repr_layout; what relayout_one makes of pyarrow's text); -1 when Grisu3 gave up
- * (the caller falls back to pyarrow's digits). out has room for 40 bytes. */
+ * the same digits (repr_layout; what relayout_one makes of pyarrow's text); where Grisu3 gives up,
+ * single_digits' (-1 when the C library failed it: the caller falls back to pyarrow's digits). out
+ * has room for 40 bytes. */
 static int repr_single(float f, char *out) {
     unsigned int bits;
     memcpy(&bits, &f, 4);
@@ -548,16 +600,17 @@ static int repr_single(float f, char *out) {
     }
     char d[20];
     int n, e;
-    if (!grisu3_bounded(w, frac == 0 && bexp > 1, d, &n, &e)) {
-        return -1;
+    if (grisu3_bounded(w, frac == 0 && bexp > 1, d, &n, &e)) {
+        return repr_layout(out, neg, d, n, n + e);
     }
-    return repr_layout(out, neg, d, n, n + e);
+    int decpt = single_digits(neg ? -f : f, frac == 0 && bexp > 1, d, &n);
+    return decpt == INT_MIN ? -1 : repr_layout(out, neg, d, n, decpt);
 }
 
 /* f32_texts(values, offset, n, valid): the float32 values [offset, offset + n) of a buffer as the
  * CSV prints them (repr_single; "nan", "inf", "-inf" as pyarrow prints those), the empty text where
- * valid (bytes, one per value, or None) is 0; None when Grisu3 gave up on a value (rare: the
- * caller then takes pyarrow's digits, relayout_texts). */
+ * valid (bytes, one per value, or None) is 0; None when repr_single failed on a value (the C
+ * library's printf or strtof: the caller then takes pyarrow's digits, relayout_texts). */
 PyObject *f32_texts(PyObject *self, PyObject *args) {
     (void)self;
     Py_buffer vals, valid = {0};
