@@ -890,3 +890,146 @@ done:
     }
     return out;
 }
+
+/* ------------------------------------------------------------------------------- CSV rows */
+/* csv_rows(columns, n): the CSV rows (cells joined by ",", each row ended by "\n") of n rows of
+ * columns, as bytes: what pyarrow's CSV writer writes (quoting_style "none", no header) for the
+ * columns logs/export.py hands it, in one pass. A column is a tuple (kind, values, body, offset,
+ * valid): kind 0 int64 values, 1 uint64 values (decimal digits), 2 text (values: int32 offsets
+ * into body, its bytes copied as they are), 3 text with int64 offsets, 4 bools (values: one byte
+ * a row, "true" / "false"); rows [offset, offset + n) of it; valid (bytes, one a row, or None):
+ * the empty cell where 0. */
+typedef struct {
+    int kind;
+    Py_buffer values, body, valid;
+    Py_ssize_t offset;
+} CsvColumn;
+
+static void csv_release(CsvColumn *c, Py_ssize_t k) {
+    for (Py_ssize_t j = 0; j < k; j++) {
+        PyBuffer_Release(&c[j].values);
+        if (c[j].body.buf != NULL) {
+            PyBuffer_Release(&c[j].body);
+        }
+        if (c[j].valid.buf != NULL) {
+            PyBuffer_Release(&c[j].valid);
+        }
+    }
+    PyMem_Free(c);
+}
+
+/* The text span [a, b) of row i of a text column; -1 with an exception when it is out of its body. */
+static int csv_span(const CsvColumn *c, Py_ssize_t i, long long *a, long long *b) {
+    if (c->kind == 2) {
+        int a32, b32;
+        memcpy(&a32, (const char *)c->values.buf + (c->offset + i) * 4, 4);
+        memcpy(&b32, (const char *)c->values.buf + (c->offset + i + 1) * 4, 4);
+        *a = a32;
+        *b = b32;
+    } else {
+        memcpy(a, (const char *)c->values.buf + (c->offset + i) * 8, 8);
+        memcpy(b, (const char *)c->values.buf + (c->offset + i + 1) * 8, 8);
+    }
+    if (*a < 0 || *b < *a || *b > (long long)c->body.len) {
+        PyErr_SetString(PyExc_ValueError, "csv_rows: an offset out of the text");
+        return -1;
+    }
+    return 0;
+}
+
+PyObject *csv_rows(PyObject *self, PyObject *args) {
+    (void)self;
+    PyObject *list;
+    Py_ssize_t n;
+    if (!PyArg_ParseTuple(args, "O!n", &PyList_Type, &list, &n)) {
+        return NULL;
+    }
+    Py_ssize_t k = PyList_GET_SIZE(list);
+    if (n < 0 || k == 0) {
+        PyErr_SetString(PyExc_ValueError, "csv_rows: needs n >= 0 and a column");
+        return NULL;
+    }
+    CsvColumn *c = PyMem_Calloc((size_t)k, sizeof *c);
+    if (c == NULL) {
+        return PyErr_NoMemory();
+    }
+    Py_ssize_t bound = n; /* the line ends, then each column's widest text */
+    for (Py_ssize_t j = 0; j < k; j++) {
+        PyObject *body = NULL, *valid = NULL;
+        if (!PyArg_ParseTuple(PyList_GET_ITEM(list, j), "iy*OnO", &c[j].kind, &c[j].values, &body,
+                              &c[j].offset, &valid)) {
+            csv_release(c, j);
+            return NULL;
+        }
+        int bad = c[j].kind < 0 || c[j].kind > 4 || c[j].offset < 0;
+        if (!bad && body != Py_None && PyObject_GetBuffer(body, &c[j].body, PyBUF_SIMPLE) < 0) {
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        if (!bad && valid != Py_None && PyObject_GetBuffer(valid, &c[j].valid, PyBUF_SIMPLE) < 0) {
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        Py_ssize_t width = c[j].kind <= 1 ? 8 : c[j].kind == 2 ? 4 : c[j].kind == 3 ? 8 : 1;
+        Py_ssize_t rows = c[j].kind == 2 || c[j].kind == 3 ? n + 1 : n;
+        bad = bad || c[j].offset + rows > c[j].values.len / width ||
+              (c[j].valid.buf != NULL && c[j].valid.len < n) ||
+              ((c[j].kind == 2 || c[j].kind == 3) && c[j].body.buf == NULL);
+        if (bad) {
+            PyErr_SetString(PyExc_ValueError, "csv_rows: a column's buffers are too short");
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        if (c[j].kind == 2 || c[j].kind == 3) { /* each span checked: their total is last - first */
+            long long a = 0, b = 0;
+            for (Py_ssize_t i = 0; i < n; i++) {
+                if (csv_span(&c[j], i, &a, &b) < 0) {
+                    csv_release(c, j + 1);
+                    return NULL;
+                }
+                bound += (Py_ssize_t)(b - a);
+            }
+        } else if (c[j].kind <= 1 || c[j].kind == 4) {
+            bound += n * (c[j].kind == 4 ? 5 : 20);
+        }
+        bound += n; /* the separator (or the line end, counted above, for the last) */
+    }
+    PyObject *out = PyBytes_FromStringAndSize(NULL, bound);
+    if (out == NULL) {
+        csv_release(c, k);
+        return NULL;
+    }
+    Text t = {PyBytes_AS_STRING(out), 0, bound};
+    for (Py_ssize_t i = 0; i < n; i++) {
+        for (Py_ssize_t j = 0; j < k; j++) {
+            const CsvColumn *col = &c[j];
+            if (col->valid.buf == NULL || ((const unsigned char *)col->valid.buf)[i]) {
+                Py_ssize_t r = col->offset + i;
+                if (col->kind == 0) {
+                    long long v;
+                    memcpy(&v, (const char *)col->values.buf + r * 8, 8);
+                    text_i64(&t, v);
+                } else if (col->kind == 1) {
+                    unsigned long long v;
+                    memcpy(&v, (const char *)col->values.buf + r * 8, 8);
+                    text_u64(&t, v);
+                } else if (col->kind == 4) {
+                    int v = ((const unsigned char *)col->values.buf)[r] != 0;
+                    memcpy(t.p + t.len, v ? "true" : "false", v ? 4 : 5);
+                    t.len += v ? 4 : 5;
+                } else {
+                    long long a, b;
+                    (void)csv_span(col, i, &a, &b); /* (checked above) */
+                    memcpy(t.p + t.len, (const char *)col->body.buf + a, (size_t)(b - a));
+                    t.len += (Py_ssize_t)(b - a);
+                }
+            }
+            t.p[t.len++] = j + 1 < k ? ',' : '\n';
+        }
+    }
+    csv_release(c, k);
+    if (_PyBytes_Resize(&out, t.len) < 0) {
+        return NULL;
+    }
+    return out;
+}

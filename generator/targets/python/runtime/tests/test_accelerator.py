@@ -456,3 +456,50 @@ def test_f32_texts_are_the_shortest_float32_digits():
     special = struct.pack("<4f", float("nan"), float("inf"), float("-inf"), 1.5)
     assert _unpack_texts(*_speedups.f32_texts(special, 1, 3), 3) == ["inf", "-inf", "1.5"]
     assert _unpack_texts(*_speedups.f32_texts(special, 0, 1), 1) == ["nan"]
+
+
+def test_csv_rows_are_the_cells_joined():
+    # The CSV export's row writer (logs/export.py `CsvRows`): int64 and uint64 digits, texts as they
+    # are (int32 or int64 offsets, from a row offset), true/false, the empty cell where a row is
+    # marked invalid; cells joined by ",", each row ended by "\n"; bad offsets are a ValueError.
+    if not testproto.ACCELERATED:
+        return  # the pure run: no C writer (the accelerated run checks it)
+    import pytest
+    from testproto.codec import _speedups
+
+    ints = [0, -1, 2**63 - 1, -(2**63), 42]
+    uints = [2**64 - 1, 0, 7, 10**19, 1]
+    words = ["", "a", "2026-03-14T09:14:02.010000Z", "-1.5e-05", "x" * 70, "tail"]
+    bounds = [0]
+    for w in words:
+        bounds.append(bounds[-1] + len(w))
+    body = "".join(words).encode()
+    columns = [
+        (0, struct.pack("<5q", *ints), None, 0, None),
+        (1, struct.pack("<5Q", *uints), None, 0, bytes([1, 1, 0, 1, 1])),
+        (2, struct.pack(f"<{len(bounds)}i", *bounds), body, 1, None),
+        (3, struct.pack(f"<{len(bounds)}q", *bounds), body, 0, bytes([1, 0, 1, 1, 1])),
+        (4, bytes([1, 0, 1, 1, 0]), None, 0, bytes([1, 1, 1, 0, 1])),
+    ]
+    want = "".join(
+        ",".join(
+            [
+                str(ints[i]),
+                "" if i == 2 else str(uints[i]),
+                words[i + 1],
+                "" if i == 1 else words[i],
+                "" if i == 3 else ("true" if (1, 0, 1, 1, 0)[i] else "false"),
+            ]
+        )
+        + "\n"
+        for i in range(5)
+    )
+    assert _speedups.csv_rows(columns, 5).decode() == want
+    assert _speedups.csv_rows(columns, 0) == b""
+    bad = [(2, struct.pack("<3i", 0, 5, 2), b"hello", 0, None)]  # a span that ends before it starts
+    with pytest.raises(ValueError):
+        _speedups.csv_rows(bad, 2)
+    with pytest.raises(ValueError):
+        _speedups.csv_rows([(0, struct.pack("<2q", 1, 2), None, 0, None)], 3)  # too few values
+    with pytest.raises(ValueError):
+        _speedups.csv_rows([(2, struct.pack("<2i", 0, 99), b"short", 0, None)], 1)  # past the text
