@@ -956,8 +956,8 @@ PyObject *csv_rows(PyObject *self, PyObject *args) {
     Py_ssize_t bound = n; /* the line ends, then each column's widest text */
     for (Py_ssize_t j = 0; j < k; j++) {
         PyObject *body = NULL, *valid = NULL;
-        if (!PyArg_ParseTuple(PyList_GET_ITEM(list, j), "iy*OnO", &c[j].kind, &c[j].values, &body, &c[j].offset,
-                              &valid)) {
+        if (!PyArg_ParseTuple(PyList_GET_ITEM(list, j), "iy*OnO", &c[j].kind, &c[j].values, &body,
+                              &c[j].offset, &valid)) {
             csv_release(c, j);
             return NULL;
         }
@@ -972,7 +972,8 @@ PyObject *csv_rows(PyObject *self, PyObject *args) {
         }
         Py_ssize_t width = c[j].kind <= 1 ? 8 : c[j].kind == 2 ? 4 : c[j].kind == 3 ? 8 : 1;
         Py_ssize_t rows = c[j].kind == 2 || c[j].kind == 3 ? n + 1 : n;
-        bad = bad || c[j].offset + rows > c[j].values.len / width || (c[j].valid.buf != NULL && c[j].valid.len < n) ||
+        bad = bad || c[j].offset + rows > c[j].values.len / width ||
+              (c[j].valid.buf != NULL && c[j].valid.len < n) ||
               ((c[j].kind == 2 || c[j].kind == 3) && c[j].body.buf == NULL);
         if (bad) {
             PyErr_SetString(PyExc_ValueError, "csv_rows: a column's buffers are too short");
