@@ -164,12 +164,13 @@ def _export_fast(
     base = 0
     pending = bytearray()
     try:
-        for chunk in source.chunks():
-            pending += chunk
-            if len(pending) < BLOCK:
-                continue
-            data = carry + bytes(pending)
-            pending = bytearray()
+        for chunk in source.chunks(BLOCK):  # (whole blocks from a file: one copy each, no gathering)
+            if pending or len(chunk) < BLOCK:
+                pending += chunk
+                if len(pending) < BLOCK:
+                    continue
+                chunk, pending = bytes(pending), bytearray()
+            data = carry + chunk if carry else chunk
             cols = decode_columns(data)
             cut = len(data)
             block: Optional[Columns] = cols

@@ -333,7 +333,9 @@ class Source:
         if self.reading:  # a read that waits for data (stdin): interrupt it
             raise _Stop()
 
-    def chunks(self) -> Iterator[bytes]:
+    def chunks(self, size: int = 0) -> Iterator[bytes]:
+        """The bytes as they come, in pieces of at most `size` bytes (default CHUNK)."""
+        size = size or CHUNK
         read = getattr(self.file, "read1", self.file.read)
         quiet_since = time.monotonic()
         try:
@@ -341,7 +343,7 @@ class Source:
                 try:
                     self.reading = True
                     try:
-                        chunk = read(CHUNK)
+                        chunk = read(size)
                     finally:
                         self.reading = False
                 except _Stop:
