@@ -372,12 +372,21 @@ class Source:
 
 
 def progress_bar(total: int) -> Any:
-    """A tqdm bar in bytes (with bytes/s) on stderr, or None when tqdm is not installed."""
+    """A tqdm bar in bytes (with bytes/s) on stderr, or None when tqdm is not installed. Its last
+    state is drawn when it closes, before it is cleared (tqdm redraws at most every 0.1 s: a run
+    quicker than that would otherwise never show its end)."""
     try:
         tqdm = importlib.import_module("tqdm").tqdm  # no type stubs
     except ImportError:
         return None
-    return tqdm(total=total, unit="B", unit_scale=True, unit_divisor=1024, file=sys.stderr, leave=False)
+
+    class Bar(tqdm):  # type: ignore[misc,valid-type]
+        def close(self) -> None:
+            if not self.disable and self.n:
+                self.refresh()
+            super().close()
+
+    return Bar(total=total, unit="B", unit_scale=True, unit_divisor=1024, file=sys.stderr, leave=False)
 
 
 SKIP_WINDOW = 1 << 20  # skipped bytes the tools let the parser hold before counting them
