@@ -116,11 +116,11 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
 
     reports = identity_reports()
     sets = {cls.SET for cls in reports if getattr(cls, "SET", None) is not None}
-    piece = 16 << 20
     found: Optional[Identity] = None
     for set_id in sorted(sets):
         needle = bytes(SYNC) + bytes([set_id])
         pos = 0
+        piece = 1 << 20  # doubled up to 16 MiB: the reply is mostly near the start (one read, not 16 MiB)
         while pos < size and found is None:
             data = read_at(pos, min(piece + MAX_PACKET, size - pos))
             i = data.find(needle)
@@ -131,6 +131,7 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
                     break  # only the packet at i
                 i = data.find(needle, i + 1)
             pos += piece
+            piece = min(2 * piece, 16 << 20)
         if found is not None:
             break
     fallback = Identity(
