@@ -1,18 +1,20 @@
 """The log path's two single-process rates (issue 50 item 4): the simulated fleet generator
 (`python -m mipcodec.fleet`) and the single-log CSV export (`python -m mipcodec export LOG --out
 DIR`, default path, with the C accelerator), each as the command users run, in a child process:
-MB/s of log (10^6 bytes per second of wall time) and MB per CPU second (user + system: steadier on
-a shared machine), and each as a ratio to a reference measured in the same run on the same log:
-the columnar decode (`decode_columns` over the whole log, the best of 3, in a child process with
-the accelerator) and a bulk copy of its bytes (the best of 3).
+MB/s of log (10^6 bytes per second of wall time), MB per CPU second (user + system: steadier on
+a shared machine) and the child's peak memory (maximum resident set, from `os.wait4`), and each
+as a ratio to a reference measured in the same run on the same log: the columnar decode
+(`decode_columns` over the whole log, the best of 3, in a child process with the accelerator)
+and a bulk copy of its bytes (the best of 3).
 
     python -m tests.bench.log_speed [--size BYTES] [--log FILE] [--json PATH]
 
 The generator writes one GX5-45 log of the fleet (seed 0) of about --size bytes (default 18 MiB,
 the size of the figures in issue 50) into a temporary directory under build/bench/; the export
 and the references run on that log, or on --log FILE. In make bench (tests/bench/run.py section
-8, `measure()`), the generator writes 4 MiB and the export takes the largest log of the dataset's
-fleet (spark_bench.fleet_logs, already generated there): a few seconds more of the bench.
+8, `measure()`), the generator writes GEN_SIZE (16 MiB) and the export takes that log: a log of
+at least 16 MiB, where start-up (about 0.3 s of imports) is not most of the figure (the dataset
+fleet's logs are 6 MB with CI's 24 MiB).
 """
 
 from __future__ import annotations
@@ -20,7 +22,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
 import subprocess
 import sys
 import tempfile
@@ -30,8 +31,8 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_SIZE = 18 << 20
-# The generator's timed log in make bench: about a second with the batch path (a smaller log would
-# time mostly the start-up, 0.3 s of imports); the export then takes a dataset fleet's log.
+# The generator's timed log in make bench, which the export then takes: about 0.6 s each with the
+# batch path and the accelerator (a smaller log would time mostly the start-up, 0.3 s of imports).
 GEN_SIZE = 16 << 20
 # The reference rates of the log in one child process: JSON {"decode_s", "copy_s"} (best of 3 each).
 REFERENCE = """
@@ -47,25 +48,20 @@ print(json.dumps(best))
 """
 
 
-def _timed(cmd: Sequence[str], env: Dict[str, str]) -> Tuple[float, float]:
-    """Wall and CPU seconds (user + system) of a child process; raises when it fails."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    done = subprocess.run(list(cmd), env=env, capture_output=True, text=True, cwd=ROOT)
-    wall = time.perf_counter() - t0
-    if done.returncode:
-        raise RuntimeError(f"{' '.join(cmd[1:4])}: exit status {done.returncode}: {done.stderr.strip()[-500:]}")
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return wall, (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
-
-
-def largest_fleet_log(size: int) -> str:
-    """The largest log of section 8's fleet (spark_bench.fleet_logs: generated once, cached)."""
-    if str(ROOT) not in sys.path:
-        sys.path.insert(0, str(ROOT))
-    from tests.bench import spark_bench
-
-    return max(spark_bench.fleet_logs(size), key=os.path.getsize)
+def _timed(cmd: Sequence[str], env: Dict[str, str]) -> Tuple[float, float, float]:
+    """Wall and CPU seconds (user + system) and the peak memory (maximum resident set, MB) of a
+    child process; raises when it fails."""
+    with tempfile.TemporaryFile() as err:
+        t0 = time.perf_counter()
+        child = subprocess.Popen(list(cmd), env=env, stdout=subprocess.DEVNULL, stderr=err, cwd=ROOT)
+        _pid, status, usage = os.wait4(child.pid, 0)
+        wall = time.perf_counter() - t0
+        child.returncode = os.waitstatus_to_exitcode(status)
+        if child.returncode:
+            err.seek(0)
+            text = err.read().decode(errors="replace").strip()[-500:]
+            raise RuntimeError(f"{' '.join(cmd[1:4])}: exit status {child.returncode}: {text}")
+    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
 def measure(out: Path, log: Optional[str] = None, gen_size: int = GEN_SIZE) -> Dict[str, Any]:
@@ -80,12 +76,13 @@ def measure(out: Path, log: Optional[str] = None, gen_size: int = GEN_SIZE) -> D
     with tempfile.TemporaryDirectory(prefix="log-speed-", dir=out) as tmp:
         fleet_dir, csv_dir = Path(tmp) / "fleet", Path(tmp) / "csv"
         gen = [sys.executable, "-m", "mipcodec.fleet", "--out", str(fleet_dir), "--devices", "1"]
-        gen_wall, gen_cpu = _timed([*gen, "--size", str(gen_size)], env)
+        gen_wall, gen_cpu, _gen_peak = _timed([*gen, "--size", str(gen_size)], env)
         generated = next(p for p in fleet_dir.iterdir() if p.suffix == ".mip")
         gen_bytes = generated.stat().st_size
         path = Path(log) if log else generated
         raw = path.stat().st_size
-        exp_wall, exp_cpu = _timed([sys.executable, "-m", "mipcodec", "export", str(path), "--out", str(csv_dir)], env)
+        export = [sys.executable, "-m", "mipcodec", "export", str(path), "--out", str(csv_dir)]
+        exp_wall, exp_cpu, exp_peak = _timed(export, env)
         csv_bytes = sum(p.stat().st_size for p in csv_dir.iterdir())
         ref = json.loads(
             subprocess.run(
@@ -106,6 +103,7 @@ def measure(out: Path, log: Optional[str] = None, gen_size: int = GEN_SIZE) -> D
         "export_csv_cpu_seconds": exp_cpu,
         "export_csv_mb_s": mb / exp_wall,
         "export_csv_mb_per_cpu_s": mb / exp_cpu,
+        "export_csv_peak_mb": exp_peak,
         "decode_columns_mb_s": mb / ref["decode_s"],
         "bulk_copy_mb_s": mb / ref["copy_s"],
     }
@@ -124,7 +122,8 @@ def lines(r: Dict[str, Any]) -> List[Tuple[str, str]]:
         (
             "export LOG (CSV, accelerated)",
             f"{r['export_csv_mb_s']:.2f} MB/s ({r['export_csv_seconds']:.2f} s), "
-            f"{r['export_csv_mb_per_cpu_s']:.2f} MB per CPU s; x decode {r['export_csv_mb_s'] / decode:.4f}",
+            f"{r['export_csv_mb_per_cpu_s']:.2f} MB per CPU s, peak {r['export_csv_peak_mb']:.0f} MB; "
+            f"x decode {r['export_csv_mb_s'] / decode:.4f}",
         ),
         ("reference: decode_columns, bulk copy", f"{decode:.0f} MB/s, {copy:.0f} MB/s"),
     ]

@@ -701,6 +701,7 @@ def render(ir: dict, vectors: list[dict], release: Release | None = None, sessio
         files[f"{root}/{pkg}/_identity.py"] = env.get_template("python/package/_identity.py.j2").render(
             **ctx,
             identity_reports=sim_ctx["identity_reports"],
+            identity=sim_ctx["identity"],
             identity_modules=sorted({c["cls"].split(".")[0] for c in sim_ctx["identity_reports"]}),
         )
         settings = _settings_context(m, sets)

@@ -95,21 +95,12 @@ static int round_weed(char *buf, int len, unsigned long long dist_high_w, unsign
     return 2 * unit <= rest && rest <= unsafe - 4 * unit;
 }
 
-/* Digits of a finite positive double into buf (17 chars), their count in *len and the decimal
- * exponent of the last in *exp10; 0 when Grisu3 cannot tell. */
-static int grisu3(double v, char *buf, int *len, int *exp10) {
-    unsigned long long bits;
-    memcpy(&bits, &v, 8);
-    unsigned long long frac = bits & 0x000FFFFFFFFFFFFFull;
-    int bexp = (int)((bits >> 52) & 0x7FF);
-    DiyFp w;
-    if (bexp) {
-        w.f = frac | 0x0010000000000000ull;
-        w.e = bexp - 1075;
-    } else {
-        w.f = frac;
-        w.e = -1074;
-    }
+/* Digits of a finite positive value w whose lower neighbour is closer than its upper one when
+ * lower_closer (a power of two, not the smallest exponent), halfway to each the boundaries (the
+ * value's format's: a double's, or a float's for grisu3_single in the Python accelerator), into
+ * buf (17 chars): their count in *len and the decimal exponent of the last in *exp10; 0 when
+ * Grisu3 cannot tell. */
+static int grisu3_bounded(DiyFp w, int lower_closer, char *buf, int *len, int *exp10) {
     /* Boundaries: halfway to the neighbours (the lower one closer at a power of two). */
     DiyFp plus = {(w.f << 1) + 1, w.e - 1};
     while (!(plus.f & 0xFFC0000000000000ull)) { /* normalize: the top bit at 63 */
@@ -121,7 +112,7 @@ static int grisu3(double v, char *buf, int *len, int *exp10) {
         plus.e--;
     }
     DiyFp minus;
-    if (frac == 0 && bexp > 1) {
+    if (lower_closer) {
         minus.f = (w.f << 2) - 1;
         minus.e = w.e - 2;
     } else {
@@ -211,6 +202,24 @@ static int grisu3(double v, char *buf, int *len, int *exp10) {
             return 0;
         }
     }
+}
+
+/* Digits of a finite positive double into buf (17 chars), their count in *len and the decimal
+ * exponent of the last in *exp10; 0 when Grisu3 cannot tell. */
+static int grisu3(double v, char *buf, int *len, int *exp10) {
+    unsigned long long bits;
+    memcpy(&bits, &v, 8);
+    unsigned long long frac = bits & 0x000FFFFFFFFFFFFFull;
+    int bexp = (int)((bits >> 52) & 0x7FF);
+    DiyFp w;
+    if (bexp) {
+        w.f = frac | 0x0010000000000000ull;
+        w.e = bexp - 1075;
+    } else {
+        w.f = frac;
+        w.e = -1074;
+    }
+    return grisu3_bounded(w, frac == 0 && bexp > 1, buf, len, exp10);
 }
 
 #endif /* MSCIPC_GRISU3_H */

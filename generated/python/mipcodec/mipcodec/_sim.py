@@ -26,7 +26,8 @@ from . import (
     threedm,
     types,
 )
-from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+from ._identity import IDENTITY as IDENTITY  # re-exported (sim, session)
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.
@@ -1639,27 +1640,9 @@ DESCRIPTOR_ITEMS: Dict[Any, Any] = {
 }
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command", "data")
 
-# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
-# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# Identity (spec simulation identity): the reports of each reply class and per device the value of
+# every item (`_identity`, a module of its own for the log tools); per item its kind and limit (the
 # largest integer, or the most characters)
-IDENTITY: Dict[str, Dict[str, Any]] = {
-    "gx5_45": {
-        "firmware": 1534,
-        "model_name": "3DM-GX5-45",
-        "model_number": "6251-4270",
-        "serial_number": "6232-00122",
-        "lot_number": "",
-        "options": "5g, 150d/s",
-    },
-    "cv7_ins": {
-        "firmware": 1202,
-        "model_name": "3DM-CV7-GNSS/INS",
-        "model_number": "6284-4220",
-        "serial_number": "6284.170342",
-        "lot_number": "2407-118",
-        "options": "8g, 300d/s",
-    },
-}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "firmware": ("integer", 65535),
     "model_name": ("string", 16),

@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import Any, Dict, Tuple
 
 from . import base, imu_config, imu_data, types
-from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+from ._identity import IDENTITY as IDENTITY  # re-exported (sim, session)
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.
@@ -141,17 +142,9 @@ DESCRIPTOR_ITEMS: Dict[Any, Any] = {
 }
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ("command",)
 
-# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
-# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# Identity (spec simulation identity): the reports of each reply class and per device the value of
+# every item (`_identity`, a module of its own for the log tools); per item its kind and limit (the
 # largest integer, or the most characters)
-IDENTITY: Dict[str, Dict[str, Any]] = {
-    "ms_imu3020": {
-        "model_name": "MS_IMU3020",
-        "serial_number": "20268",
-        "firmware": "R_1_2_3",
-        "calibration_date": "05-08-2015",
-    }
-}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {
     "model_name": ("string", 16),
     "serial_number": ("string", 16),

@@ -225,6 +225,8 @@ int text_foreign(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offse
 PyObject *setup_foreign(PyObject *self, PyObject *args);
 PyObject *scan_text(PyObject *self, PyObject *args);
 PyObject *repr_texts(PyObject *self, PyObject *args);
+PyObject *csv_rows(PyObject *self, PyObject *args);
+PyObject *f32_texts(PyObject *self, PyObject *args);
 PyObject *relayout_texts(PyObject *self, PyObject *args);
 PyObject *iso_texts(PyObject *self, PyObject *args);
 

@@ -198,6 +198,11 @@ static PyMethodDef methods[] = {
     {"float_text", float_text, METH_O, "float_text(x): repr(x) by the fast path, or None where it gives up."},
     {"repr_texts", repr_texts, METH_VARARGS,
      "repr_texts(values, offset, n, valid=None): repr() of float64 values as (int64 offsets, bytes)."},
+    {"csv_rows", csv_rows, METH_VARARGS,
+     "csv_rows(columns, n): the CSV rows of int, text and bool columns, as bytes."},
+    {"f32_texts", f32_texts, METH_VARARGS,
+     "f32_texts(values, offset, n, valid=None): float32 values' shortest digits as repr() lays them out, or "
+     "None."},
     {"relayout_texts", relayout_texts, METH_VARARGS,
      "relayout_texts(offsets, data, offset, n, wide): shortest-digit texts laid out as repr()."},
     {"iso_texts", iso_texts, METH_VARARGS,

@@ -524,6 +524,154 @@ done:
     return offsets;
 }
 
+/* The shortest digits of a finite positive float32 where Grisu3 gives up (about 1% of all float32
+ * values, mostly above 2^24): for 1 to 9 digits, the value rounded to that many significant digits
+ * (printf's "%.*e", exact and half to even, as double-conversion's exact fallback breaks a tie),
+ * then, when the lower neighbour is the closer one (lower_closer: the interval of values that read
+ * back as f is wider above it), the next such decimal up; the first that reads back as f (strtof,
+ * correctly rounded) is the shortest and the closest. Its digits into d (no trailing zero), their
+ * count in *n; the decimal point's position returned (value 0.d1d2... x 10^decpt), INT_MIN when
+ * the C library printed something unexpected. */
+static int single_digits(float f, int lower_closer, char *d, int *n) {
+    for (int p = 1; p <= 9; p++) {
+        char s[40];
+        int len = snprintf(s, sizeof s, "%.*e", p - 1, (double)f);
+        char *e = strchr(s, 'e');
+        if (len <= 0 || len >= (int)sizeof s || e == NULL) {
+            return INT_MIN;
+        }
+        int k = 0;
+        for (const char *c = s; c < e; c++) {
+            if (*c >= '0' && *c <= '9') {
+                d[k++] = *c;
+            }
+        }
+        int exp10 = atoi(e + 1);
+        for (int up = 0; up <= lower_closer; up++) {
+            if (up) { /* one unit up in the last digit */
+                int i = k - 1;
+                while (i >= 0 && d[i] == '9') {
+                    d[i--] = '0';
+                }
+                if (i < 0) {
+                    d[0] = '1';
+                    memset(d + 1, '0', (size_t)(k - 1));
+                    exp10++;
+                } else {
+                    d[i]++;
+                }
+            }
+            char t[40];
+            snprintf(t, sizeof t, "%c.%.*se%d", d[0], k - 1, d + 1, exp10);
+            if (strtof(t, NULL) == f) {
+                while (k > 1 && d[k - 1] == '0') {
+                    k--;
+                }
+                *n = k;
+                return exp10 + 1;
+            }
+        }
+    }
+    return INT_MIN;
+}
+
+/* The shortest digits of a finite float32 (the digits pyarrow's cast to string prints: Grisu3 with
+ * a float's boundaries, as double-conversion's SHORTEST_SINGLE) laid out as repr(float) lays out
+ * the same digits (repr_layout; what relayout_one makes of pyarrow's text); where Grisu3 gives up,
+ * single_digits' (-1 when the C library failed it: the caller falls back to pyarrow's digits). out
+ * has room for 40 bytes. */
+static int repr_single(float f, char *out) {
+    unsigned int bits;
+    memcpy(&bits, &f, 4);
+    int neg = (bits >> 31) != 0;
+    unsigned int frac = bits & 0x7FFFFFu;
+    int bexp = (int)((bits >> 23) & 0xFF);
+    if (bexp == 0 && frac == 0) {
+        memcpy(out, neg ? "-0.0" : "0.0", neg ? 4 : 3);
+        return neg ? 4 : 3;
+    }
+    DiyFp w;
+    if (bexp) {
+        w.f = frac | 0x800000u;
+        w.e = bexp - 150;
+    } else {
+        w.f = frac;
+        w.e = -149;
+    }
+    char d[20];
+    int n, e;
+    if (grisu3_bounded(w, frac == 0 && bexp > 1, d, &n, &e)) {
+        return repr_layout(out, neg, d, n, n + e);
+    }
+    int decpt = single_digits(neg ? -f : f, frac == 0 && bexp > 1, d, &n);
+    return decpt == INT_MIN ? -1 : repr_layout(out, neg, d, n, decpt);
+}
+
+/* f32_texts(values, offset, n, valid): the float32 values [offset, offset + n) of a buffer as the
+ * CSV prints them (repr_single; "nan", "inf", "-inf" as pyarrow prints those), the empty text where
+ * valid (bytes, one per value, or None) is 0; None when repr_single failed on a value (the C
+ * library's printf or strtof: the caller then takes pyarrow's digits, relayout_texts). */
+PyObject *f32_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    Py_buffer vals, valid = {0};
+    Py_ssize_t offset, n;
+    if (!PyArg_ParseTuple(args, "y*nn|z*", &vals, &offset, &n, &valid)) {
+        return NULL;
+    }
+    PyObject *offsets = NULL;
+    if (offset < 0 || n < 0 || (offset + n) > vals.len / (Py_ssize_t)sizeof(float) ||
+        (valid.buf != NULL && valid.len < n)) {
+        PyErr_SetString(PyExc_ValueError, "f32_texts: the buffers are too short");
+        goto done;
+    }
+    offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
+    if (offsets == NULL) {
+        goto done;
+    }
+    long long *at = (long long *)PyBytes_AS_STRING(offsets);
+    const unsigned char *ok = valid.buf;
+    Text t = {NULL, 0, 0};
+    at[0] = 0;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        float v;
+        memcpy(&v, (const char *)vals.buf + (offset + i) * (Py_ssize_t)sizeof(float), sizeof v);
+        if (ok == NULL || ok[i]) {
+            if (text_reserve(&t, 40) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                goto done;
+            }
+            int k;
+            if (isnan(v)) {
+                k = 3;
+                memcpy(t.p + t.len, "nan", 3);
+            } else if (isinf(v)) {
+                k = v < 0 ? 4 : 3;
+                memcpy(t.p + t.len, v < 0 ? "-inf" : "inf", (size_t)k);
+            } else if ((k = repr_single(v, t.p + t.len)) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                Py_INCREF(Py_None);
+                offsets = Py_None;
+                goto done;
+            }
+            t.len += k;
+        }
+        at[i + 1] = (long long)t.len;
+    }
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return column_result(&t, offsets);
+done:
+    PyBuffer_Release(&vals);
+    if (valid.buf != NULL) {
+        PyBuffer_Release(&valid);
+    }
+    return offsets;
+}
+
 /* One text of shortest digits ("-1.5e-05", "0.001", "100", pyarrow's) laid out as repr(float)
  * (repr_layout); 0 when it is not such a number (nan, inf: the caller copies it as it is). */
 static int relayout_one(const char *s, Py_ssize_t len, char *out) {
@@ -739,6 +887,149 @@ done:
     PyBuffer_Release(&ns);
     if (valid.buf != NULL) {
         PyBuffer_Release(&valid);
+    }
+    return out;
+}
+
+/* ------------------------------------------------------------------------------- CSV rows */
+/* csv_rows(columns, n): the CSV rows (cells joined by ",", each row ended by "\n") of n rows of
+ * columns, as bytes: what pyarrow's CSV writer writes (quoting_style "none", no header) for the
+ * columns logs/export.py hands it, in one pass. A column is a tuple (kind, values, body, offset,
+ * valid): kind 0 int64 values, 1 uint64 values (decimal digits), 2 text (values: int32 offsets
+ * into body, its bytes copied as they are), 3 text with int64 offsets, 4 bools (values: one byte
+ * a row, "true" / "false"); rows [offset, offset + n) of it; valid (bytes, one a row, or None):
+ * the empty cell where 0. */
+typedef struct {
+    int kind;
+    Py_buffer values, body, valid;
+    Py_ssize_t offset;
+} CsvColumn;
+
+static void csv_release(CsvColumn *c, Py_ssize_t k) {
+    for (Py_ssize_t j = 0; j < k; j++) {
+        PyBuffer_Release(&c[j].values);
+        if (c[j].body.buf != NULL) {
+            PyBuffer_Release(&c[j].body);
+        }
+        if (c[j].valid.buf != NULL) {
+            PyBuffer_Release(&c[j].valid);
+        }
+    }
+    PyMem_Free(c);
+}
+
+/* The text span [a, b) of row i of a text column; -1 with an exception when it is out of its body. */
+static int csv_span(const CsvColumn *c, Py_ssize_t i, long long *a, long long *b) {
+    if (c->kind == 2) {
+        int a32, b32;
+        memcpy(&a32, (const char *)c->values.buf + (c->offset + i) * 4, 4);
+        memcpy(&b32, (const char *)c->values.buf + (c->offset + i + 1) * 4, 4);
+        *a = a32;
+        *b = b32;
+    } else {
+        memcpy(a, (const char *)c->values.buf + (c->offset + i) * 8, 8);
+        memcpy(b, (const char *)c->values.buf + (c->offset + i + 1) * 8, 8);
+    }
+    if (*a < 0 || *b < *a || *b > (long long)c->body.len) {
+        PyErr_SetString(PyExc_ValueError, "csv_rows: an offset out of the text");
+        return -1;
+    }
+    return 0;
+}
+
+PyObject *csv_rows(PyObject *self, PyObject *args) {
+    (void)self;
+    PyObject *list;
+    Py_ssize_t n;
+    if (!PyArg_ParseTuple(args, "O!n", &PyList_Type, &list, &n)) {
+        return NULL;
+    }
+    Py_ssize_t k = PyList_GET_SIZE(list);
+    if (n < 0 || k == 0) {
+        PyErr_SetString(PyExc_ValueError, "csv_rows: needs n >= 0 and a column");
+        return NULL;
+    }
+    CsvColumn *c = PyMem_Calloc((size_t)k, sizeof *c);
+    if (c == NULL) {
+        return PyErr_NoMemory();
+    }
+    Py_ssize_t bound = n; /* the line ends, then each column's widest text */
+    for (Py_ssize_t j = 0; j < k; j++) {
+        PyObject *body = NULL, *valid = NULL;
+        if (!PyArg_ParseTuple(PyList_GET_ITEM(list, j), "iy*OnO", &c[j].kind, &c[j].values, &body,
+                              &c[j].offset, &valid)) {
+            csv_release(c, j);
+            return NULL;
+        }
+        int bad = c[j].kind < 0 || c[j].kind > 4 || c[j].offset < 0;
+        if (!bad && body != Py_None && PyObject_GetBuffer(body, &c[j].body, PyBUF_SIMPLE) < 0) {
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        if (!bad && valid != Py_None && PyObject_GetBuffer(valid, &c[j].valid, PyBUF_SIMPLE) < 0) {
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        Py_ssize_t width = c[j].kind <= 1 ? 8 : c[j].kind == 2 ? 4 : c[j].kind == 3 ? 8 : 1;
+        Py_ssize_t rows = c[j].kind == 2 || c[j].kind == 3 ? n + 1 : n;
+        bad = bad || c[j].offset + rows > c[j].values.len / width ||
+              (c[j].valid.buf != NULL && c[j].valid.len < n) ||
+              ((c[j].kind == 2 || c[j].kind == 3) && c[j].body.buf == NULL);
+        if (bad) {
+            PyErr_SetString(PyExc_ValueError, "csv_rows: a column's buffers are too short");
+            csv_release(c, j + 1);
+            return NULL;
+        }
+        if (c[j].kind == 2 || c[j].kind == 3) { /* each span checked: their total is last - first */
+            long long a = 0, b = 0;
+            for (Py_ssize_t i = 0; i < n; i++) {
+                if (csv_span(&c[j], i, &a, &b) < 0) {
+                    csv_release(c, j + 1);
+                    return NULL;
+                }
+                bound += (Py_ssize_t)(b - a);
+            }
+        } else if (c[j].kind <= 1 || c[j].kind == 4) {
+            bound += n * (c[j].kind == 4 ? 5 : 20);
+        }
+        bound += n; /* the separator (or the line end, counted above, for the last) */
+    }
+    PyObject *out = PyBytes_FromStringAndSize(NULL, bound);
+    if (out == NULL) {
+        csv_release(c, k);
+        return NULL;
+    }
+    Text t = {PyBytes_AS_STRING(out), 0, bound};
+    for (Py_ssize_t i = 0; i < n; i++) {
+        for (Py_ssize_t j = 0; j < k; j++) {
+            const CsvColumn *col = &c[j];
+            if (col->valid.buf == NULL || ((const unsigned char *)col->valid.buf)[i]) {
+                Py_ssize_t r = col->offset + i;
+                if (col->kind == 0) {
+                    long long v;
+                    memcpy(&v, (const char *)col->values.buf + r * 8, 8);
+                    text_i64(&t, v);
+                } else if (col->kind == 1) {
+                    unsigned long long v;
+                    memcpy(&v, (const char *)col->values.buf + r * 8, 8);
+                    text_u64(&t, v);
+                } else if (col->kind == 4) {
+                    int v = ((const unsigned char *)col->values.buf)[r] != 0;
+                    memcpy(t.p + t.len, v ? "true" : "false", v ? 4 : 5);
+                    t.len += v ? 4 : 5;
+                } else {
+                    long long a, b;
+                    (void)csv_span(col, i, &a, &b); /* (checked above) */
+                    memcpy(t.p + t.len, (const char *)col->body.buf + a, (size_t)(b - a));
+                    t.len += (Py_ssize_t)(b - a);
+                }
+            }
+            t.p[t.len++] = j + 1 < k ? ',' : '\n';
+        }
+    }
+    csv_release(c, k);
+    if (_PyBytes_Resize(&out, t.len) < 0) {
+        return NULL;
     }
     return out;
 }

@@ -9,7 +9,7 @@ import importlib
 import io
 from typing import Any, List
 
-from .writers import bool_values, text_array, values_view
+from .writers import bool_values, text_array, valid_values, values_view
 
 
 class ArrowCsvText:
@@ -83,11 +83,11 @@ def _float_texts(np: Any, pa: Any, col: Any) -> Any:
     values; those, the values outside that range and those in pyarrow's exponent form are printed
     by repr (a float32's: its pyarrow digits read as a double, which repr prints as `f32_text`
     does: the same shortest digits, positional from 1e-4 to below 1e16, `.0` when integral)."""
-    pc = importlib.import_module("pyarrow.compute")
     single = col.type == pa.float32()
     fast = _speedups()
     if fast is not None:
-        return _c_float_texts(np, pa, pc, fast, col, single)
+        return _c_float_texts(np, pa, fast, col, single)
+    pc = importlib.import_module("pyarrow.compute")
     text = pc.cast(col, pa.string())
     values = values_view(np, col, np.float32 if single else np.float64)  # (pa.scalar would import pandas)
     size = np.abs(values.astype(np.float64))
@@ -116,20 +116,27 @@ def _speedups() -> Any:
     return speedups if speedups is not None and hasattr(speedups, "repr_texts") else None
 
 
-def _c_float_texts(np: Any, pa: Any, pc: Any, fast: Any, col: Any, single: bool) -> Any:
+def _c_float_texts(np: Any, pa: Any, fast: Any, col: Any, single: bool) -> Any:
     """`_float_texts` by the C accelerator in one pass: a float64 as repr prints it (`repr_texts`,
-    Grisu3 with Python's own printer where Grisu3 gives up); a float32 from pyarrow's shortest
-    float32 digits, laid out as repr lays out the same digits (`relayout_texts`: what the
-    pure-Python branch gets by reading them as a double and printing it with repr)."""
+    Grisu3 with Python's own printer where Grisu3 gives up); a float32 as its shortest float32
+    digits (pyarrow's), laid out as repr lays out the same digits (what the pure-Python branch
+    gets by reading them as a double and printing it with repr): `f32_texts` (Grisu3 with a
+    float's boundaries), or where Grisu3 gives up on a value of the column, pyarrow's digits laid
+    out by `relayout_texts`."""
     n = len(col)
-    valid = bool_values(np, col.is_valid()) if col.null_count else None
+    valid = valid_values(np, col) if col.null_count else None
+    ok = None if valid is None else valid.tobytes()
+    size = 4 if single else 8
+    values = col.buffers()[1] if col.buffers()[1] is not None else bytes(size * (n + col.offset))
     if single:
-        text = pc.cast(col, pa.string())
-        bufs = text.buffers()
-        offsets, body = fast.relayout_texts(bufs[1], bufs[2] or b"", text.offset, n, False)
+        got = fast.f32_texts(values, col.offset, n, ok) if hasattr(fast, "f32_texts") else None
+        if got is None:
+            text = importlib.import_module("pyarrow.compute").cast(col, pa.string())
+            bufs = text.buffers()
+            got = fast.relayout_texts(bufs[1], bufs[2] or b"", text.offset, n, False)
+        offsets, body = got
     else:
-        values = col.buffers()[1] if col.buffers()[1] is not None else bytes(8 * (n + col.offset))
-        offsets, body = fast.repr_texts(values, col.offset, n, None if valid is None else valid.tobytes())
+        offsets, body = fast.repr_texts(values, col.offset, n, ok)
     at = np.frombuffer(offsets, dtype=np.int64)
     kind, width = (pa.string(), np.int32) if len(body) < 1 << 31 else (pa.large_string(), np.int64)
     mask = None if valid is None else pa.py_buffer(np.packbits(valid, bitorder="little"))

@@ -116,11 +116,11 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
 
     reports = identity_reports()
     sets = {cls.SET for cls in reports if getattr(cls, "SET", None) is not None}
-    piece = 16 << 20
     found: Optional[Identity] = None
     for set_id in sorted(sets):
         needle = bytes(SYNC) + bytes([set_id])
         pos = 0
+        piece = 1 << 20  # doubled up to 16 MiB: the reply is mostly near the start (one read, not 16 MiB)
         while pos < size and found is None:
             data = read_at(pos, min(piece + MAX_PACKET, size - pos))
             i = data.find(needle)
@@ -131,6 +131,7 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
                     break  # only the packet at i
                 i = data.find(needle, i + 1)
             pos += piece
+            piece = min(2 * piece, 16 << 20)
         if found is not None:
             break
     fallback = Identity(
@@ -145,13 +146,32 @@ def log_identity(read_at: ReadAt, size: int, model: Optional[str] = None, serial
     )
 
 
+def plain_name(text: str) -> str:
+    """Upper case without spaces and punctuation; a character outside ASCII is kept (it matches no
+    model name: the spec's are ASCII). The rule of every language (generator/linkfacts.py)."""
+    return "".join(c for c in text.upper() if (c.isascii() and c.isalnum()) or not c.isascii())
+
+
+def model_matches(name: str, device: str) -> bool:
+    """True when a reported model name is the device's: its title or the spec's identity model
+    name, compared without case, spaces and punctuation (MS_IMU3020 is MS-IMU3020). Here rather
+    than in the session (which uses it) so that the log tools need not import the session and the
+    simulator's tables (`_sim`, every command module: a tenth of a second of every log command)."""
+    from .. import capabilities
+
+    try:
+        known_ids: Dict[str, Dict[str, Any]] = importlib.import_module(".._identity", __package__).IDENTITY
+    except (ImportError, AttributeError):
+        known_ids = {}
+    known = (capabilities.MODELS[device].title, str(known_ids.get(device, {}).get("model_name", "")))
+    return bool(plain_name(name)) and plain_name(name) in {plain_name(k) for k in known if k}
+
+
 def device_of(model: str) -> Optional[str]:
     """The registry device id of a log's model partition value: a device id as given (`--model
     cv7_ins`), or the device whose model name the reported one is (`3dm-cv7-gnss-ins` is the
-    3DM-CV7-GNSS/INS: compared without case and punctuation, as the session compares them); None
-    when it is none of them (`unknown`)."""
-    from ..session import model_matches
-
+    3DM-CV7-GNSS/INS: compared without case and punctuation, `model_matches`); None when it is
+    none of them (`unknown`)."""
     if model in registry.DEVICES:
         return model
     return next((d for d in registry.DEVICES if model != UNKNOWN and model_matches(model, d)), None)

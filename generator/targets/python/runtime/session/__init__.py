@@ -56,6 +56,7 @@ from ..codec.framing import (
 from ..codec.layout import Field
 from ..codec.packets import DecodedField, Decoder, Entry, Packet, RawField, Trailing, decode_packet
 from ..codec.samples import Sample, SampleGrouper
+from ..logs.identity import model_matches as model_matches  # (re-exported: the device CLI)
 from ..logs.timebase import SplitClock, Times
 from .clock import ClockModel, reference_ns
 from .transport import TransportError
@@ -1408,23 +1409,10 @@ def read_identity(device: Device, quiet: bool = False) -> Dict[str, Any]:
     return out
 
 
-def _plain_name(text: str) -> str:
-    """Upper case without spaces and punctuation; a character outside ASCII is kept (it matches no
-    model name: the spec's are ASCII). The rule of every language (generator/linkfacts.py)."""
-    return "".join(c for c in text.upper() if (c.isascii() and c.isalnum()) or not c.isascii())
-
-
 def shown_name(text: str) -> str:
     """A name the device reported, as printed: a character outside printable ASCII is written
     `\\xNN` (the device's bytes reach no terminal as they are). The rule of every language."""
     return "".join(c if " " <= c <= "~" else f"\\x{ord(c) & 0xFF:02x}" for c in text)
-
-
-def model_matches(name: str, device: str) -> bool:
-    """True when a reported model name is the device's: its title or the spec's identity model
-    name, compared without case, spaces and punctuation (MS_IMU3020 is MS-IMU3020)."""
-    known = (capabilities.MODELS[device].title, str(_sim.IDENTITY.get(device, {}).get("model_name", "")))
-    return bool(_plain_name(name)) and _plain_name(name) in {_plain_name(k) for k in known if k}
 
 
 def model_of(identity: Dict[str, Any]) -> Optional[str]:

@@ -384,3 +384,122 @@ def test_column_tables_read_the_same_in_every_form():
     assert arrays["scaled_accel"].shape == (50, 3)
     assert arrays["scaled_accel"].tolist() == [v.scaled_accel for v in values]
     assert np.array_equal(arrays["time"], np.asarray(table.columns["time"]))
+
+
+def _shortest_f32(x):
+    """The shortest digits of a finite float32 x != 0 by the definition, in exact rational
+    arithmetic: the decimals of the fewest significant digits that read back as x (inside the
+    interval halfway to its neighbours, the ends included when its significand is even), the
+    closest to x (a tie to the even last digit); (digits, decimal point: 0.d1d2... x 10^point)."""
+    import fractions
+    import math
+
+    bits = struct.unpack("<I", struct.pack("<f", x))[0] & 0x7FFFFFFF
+    frac, bexp = bits & 0x7FFFFF, bits >> 23
+    m, e = (frac | 0x800000, bexp - 150) if bexp else (frac, -149)
+    v = fractions.Fraction(m) * fractions.Fraction(2) ** e
+    ulp = fractions.Fraction(2) ** e
+    low = v - (ulp / 4 if frac == 0 and bexp > 1 else ulp / 2)
+    high = v + ulp / 2
+    inside = (lambda d: low <= d <= high) if m % 2 == 0 else (lambda d: low < d < high)
+    top = math.floor(math.log10(v)) + 1  # the decimal point after the first digit (or one off)
+    for p in range(1, 10):
+        best = None
+        for point in (top - 1, top, top + 1):
+            scale = fractions.Fraction(10) ** (point - p)
+            q = v / scale
+            for k in (math.floor(q) - 1, math.floor(q), math.floor(q) + 1, math.floor(q) + 2):
+                if not 10 ** (p - 1) <= k < 10**p:
+                    continue
+                d = k * scale
+                if inside(d):
+                    key = (abs(d - v), k % 2)
+                    if best is None or key < best[0]:
+                        best = (key, str(k).rstrip("0"), point)
+        if best is not None:
+            return best[1], best[2]
+    raise AssertionError(x)
+
+
+def test_f32_texts_are_the_shortest_float32_digits():
+    # The CSV printer of float32 columns (logs/arrow.py `_c_float_texts`): Grisu3 with a float's
+    # boundaries, an exact search where Grisu3 gives up (about 1% of all float32, mostly above
+    # 2^24), laid out as repr lays out the same digits: each text against the definition
+    # (_shortest_f32), on random float32 bit patterns, decimals, integers above 2^24 and powers of
+    # two (whose lower neighbour is the closer one).
+    if not testproto.ACCELERATED:
+        return  # the pure run: no C printer (the accelerated run checks it)
+    import decimal
+
+    from testproto.codec import _speedups
+
+    rng = random.Random(50)
+    cases = [struct.unpack("<f", struct.pack("<I", rng.getrandbits(32)))[0] for _ in range(2000)]
+    cases += [rng.randrange(-(10**7), 10**7) / 10 ** rng.randrange(0, 9) for _ in range(1000)]
+    cases += [float(rng.randrange(1 << 24, 1 << 40)) for _ in range(1000)]
+    cases += [float(2.0**k) for k in range(-149, 128)] + [1e-45, 3.4028235e38, 1.1754942e-38, 0.1, 97474816.0]
+    cases = [struct.unpack("<f", struct.pack("<f", x))[0] for x in cases if x == x and abs(x) < 3.4028236e38]
+    cases = [x for x in cases if abs(x) != float("inf")]
+    n = len(cases)
+    valid = bytes(i % 11 != 5 for i in range(n))
+    texts = _unpack_texts(*_speedups.f32_texts(struct.pack(f"<{n}f", *cases), 0, n, valid), n)
+    for x, ok, text in zip(cases, valid, texts):
+        if not ok:
+            assert text == ""
+            continue
+        if x == 0:
+            assert text == ("-0.0" if struct.pack("<f", x)[3] & 0x80 else "0.0")
+            continue
+        digits, point = _shortest_f32(x)
+        want = repr(float(decimal.Decimal(f"{'-' if x < 0 else ''}0.{digits}e{point}")))
+        assert text == want, (x, text, want)
+    special = struct.pack("<4f", float("nan"), float("inf"), float("-inf"), 1.5)
+    assert _unpack_texts(*_speedups.f32_texts(special, 1, 3), 3) == ["inf", "-inf", "1.5"]
+    assert _unpack_texts(*_speedups.f32_texts(special, 0, 1), 1) == ["nan"]
+
+
+def test_csv_rows_are_the_cells_joined():
+    # The CSV export's row writer (logs/export.py `CsvRows`): int64 and uint64 digits, texts as they
+    # are (int32 or int64 offsets, from a row offset), true/false, the empty cell where a row is
+    # marked invalid; cells joined by ",", each row ended by "\n"; bad offsets are a ValueError.
+    if not testproto.ACCELERATED:
+        return  # the pure run: no C writer (the accelerated run checks it)
+    import pytest
+    from testproto.codec import _speedups
+
+    ints = [0, -1, 2**63 - 1, -(2**63), 42]
+    uints = [2**64 - 1, 0, 7, 10**19, 1]
+    words = ["", "a", "2026-03-14T09:14:02.010000Z", "-1.5e-05", "x" * 70, "tail"]
+    bounds = [0]
+    for w in words:
+        bounds.append(bounds[-1] + len(w))
+    body = "".join(words).encode()
+    columns = [
+        (0, struct.pack("<5q", *ints), None, 0, None),
+        (1, struct.pack("<5Q", *uints), None, 0, bytes([1, 1, 0, 1, 1])),
+        (2, struct.pack(f"<{len(bounds)}i", *bounds), body, 1, None),
+        (3, struct.pack(f"<{len(bounds)}q", *bounds), body, 0, bytes([1, 0, 1, 1, 1])),
+        (4, bytes([1, 0, 1, 1, 0]), None, 0, bytes([1, 1, 1, 0, 1])),
+    ]
+    want = "".join(
+        ",".join(
+            [
+                str(ints[i]),
+                "" if i == 2 else str(uints[i]),
+                words[i + 1],
+                "" if i == 1 else words[i],
+                "" if i == 3 else ("true" if (1, 0, 1, 1, 0)[i] else "false"),
+            ]
+        )
+        + "\n"
+        for i in range(5)
+    )
+    assert _speedups.csv_rows(columns, 5).decode() == want
+    assert _speedups.csv_rows(columns, 0) == b""
+    bad = [(2, struct.pack("<3i", 0, 5, 2), b"hello", 0, None)]  # a span that ends before it starts
+    with pytest.raises(ValueError):
+        _speedups.csv_rows(bad, 2)
+    with pytest.raises(ValueError):
+        _speedups.csv_rows([(0, struct.pack("<2q", 1, 2), None, 0, None)], 3)  # too few values
+    with pytest.raises(ValueError):
+        _speedups.csv_rows([(2, struct.pack("<2i", 0, 99), b"short", 0, None)], 1)  # past the text

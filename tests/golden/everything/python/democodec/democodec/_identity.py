@@ -4,7 +4,8 @@ the sessions and the simulator (`_sim` re-exports it). A module of its own so th
 imports only the reply's set module, not every command module `_sim` needs.
 
 `IDENTITY_REPORTS`: reply class -> ((attribute path, item, string format: (length, pad, justify)
-or None for an integer), ...).
+or None for an integer), ...). `IDENTITY`: per device the value of every item (the model name a log's
+reply is compared with: `logs/identity.py` `model_matches`).
 """
 
 from __future__ import annotations
@@ -12,3 +13,4 @@ from __future__ import annotations
 from typing import Any, Dict, Tuple
 
 IDENTITY_REPORTS: Dict[Any, Tuple[Tuple[Any, ...], ...]] = {}
+IDENTITY: Dict[str, Dict[str, Any]] = {}

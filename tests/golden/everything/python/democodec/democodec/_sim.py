@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import Any, Dict, Tuple
 
 from . import commands, data, receiver_1, receiver_2, shared
-from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS  # re-exported (sim, session)
+from ._identity import IDENTITY as IDENTITY  # re-exported (sim, session)
+from ._identity import IDENTITY_REPORTS as IDENTITY_REPORTS
 
 # NACK code per refusal: an unknown descriptor, an unknown descriptor set, a bad parameter value,
 # a command the simulator failed to carry out.
@@ -91,10 +92,9 @@ DESCRIPTOR_LISTS: Dict[Any, Tuple[int, int, str]] = {}
 DESCRIPTOR_ITEMS: Dict[Any, Any] = {}
 DESCRIPTOR_CONTENTS: Tuple[str, ...] = ()
 
-# Identity (spec simulation identity): the reports of each reply class (`_identity`, a module of
-# its own for the log tools); per device the value of every item; per item its kind and limit (the
+# Identity (spec simulation identity): the reports of each reply class and per device the value of
+# every item (`_identity`, a module of its own for the log tools); per item its kind and limit (the
 # largest integer, or the most characters)
-IDENTITY: Dict[str, Dict[str, Any]] = {}
 IDENTITY_ITEMS: Dict[str, Tuple[str, int]] = {}
 
 # Device status replies kept live (spec simulation status; sim/status.py): reply class -> the
