@@ -438,7 +438,7 @@ PyObject *scan_text(PyObject *self, PyObject *args) {
 }
 
 /* ------------------------------------------------------------------------- float columns */
-/* The CSV text of float columns (logs/arrow.py `_float_texts`): one pass over a column, its texts
+/* The CSV text of float columns (logs/arrow.py `float_texts`): one pass over a column, its texts
  * as the offsets (int64, n + 1 of them) and the bytes of an Arrow string array. */
 static PyObject *column_result(Text *t, PyObject *offsets) {
     PyObject *body = PyBytes_FromStringAndSize(t->p ? t->p : "", t->len);

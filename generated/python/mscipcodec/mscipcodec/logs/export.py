@@ -14,7 +14,7 @@ from .. import _columns, registry
 from .._protocol import FIRST_SHARED, SET_OFFSET, TIMESTAMPS
 from .._protocol import PACKAGE as PROG
 from ..codec.packets import DecodedField, Packet
-from .arrow import ArrowCsvText, _float_texts, _needs_quotes, as_arrow, to_arrow, unify
+from .arrow import ArrowCsvText, as_arrow, float_texts, needs_quotes, to_arrow, unify
 from .pipeline import PacketClock, t_ns_array, time_array, time_cells
 from .writers import (
     COLUMN_SETS,
@@ -487,11 +487,11 @@ class CsvRows(ArrowCsvText):
         np, pa = self.np, self.pa
         types = pa.types
         if types.is_floating(col.type):
-            col = _float_texts(np, pa, col)
+            col = float_texts(np, pa, col)
         valid = valid_values(np, col).tobytes() if col.null_count else None
         t = col.type
         if types.is_string(t) or types.is_large_string(t):
-            if _needs_quotes(np, pa, col):
+            if needs_quotes(np, pa, col):
                 return None
             return (3 if types.is_large_string(t) else 2, col.buffers()[1], col.buffers()[2] or b"", col.offset, valid)
         if types.is_boolean(t):

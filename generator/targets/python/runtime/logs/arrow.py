@@ -14,7 +14,7 @@ from .writers import bool_values, text_array, valid_values, values_view
 
 class ArrowCsvText:
     """CSV of arrow tables with the cell text of `CsvWriter` (so both paths write the same bytes):
-    floats as `_cell_text` prints them (float32 as `f32_text`: `_float_texts`), bools true/false,
+    floats as `_cell_text` prints them (float32 as `f32_text`: `float_texts`), bools true/false,
     null empty, strings quoted only when they need it, headers quoted. pyarrow writes the rows."""
 
     def __init__(self, np: Any, pa: Any, path: str, headers: List[str]) -> None:
@@ -36,8 +36,8 @@ class ArrowCsvText:
             col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
             t = col.type
             if pa.types.is_floating(t):
-                col = _float_texts(np, pa, col)
-            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and _needs_quotes(np, pa, col):
+                col = float_texts(np, pa, col)
+            elif (pa.types.is_string(t) or pa.types.is_large_string(t)) and needs_quotes(np, pa, col):
                 plain = False  # (the check in arrow: the cells become Python strings only here)
                 texts = col.to_pylist()
                 col = pa.array([None if v is None else _csv_quote(v) for v in texts], type=pa.string())
@@ -54,7 +54,7 @@ class ArrowCsvText:
         self.file.close()
 
 
-def _needs_quotes(np: Any, pa: Any, col: Any) -> bool:
+def needs_quotes(np: Any, pa: Any, col: Any) -> bool:
     """Whether a string column has a cell the csv module would quote (a comma, quote or line end)."""
     if col.null_count == len(col):
         return False
@@ -75,7 +75,7 @@ def _text_cells(pa: Any, col: Any) -> List[Any]:
     return out
 
 
-def _float_texts(np: Any, pa: Any, col: Any) -> Any:
+def float_texts(np: Any, pa: Any, col: Any) -> Any:
     """The text of each value of a float32 / float64 arrow array as the packet path prints it
     (`f32_text`, repr(float)), as an arrow string array. pyarrow prints the same shortest digits,
     positional without a trailing `.0` over a range that covers 2e-4 to 1e15 but for some large
@@ -117,7 +117,7 @@ def _speedups() -> Any:
 
 
 def _c_float_texts(np: Any, pa: Any, fast: Any, col: Any, single: bool) -> Any:
-    """`_float_texts` by the C accelerator in one pass: a float64 as repr prints it (`repr_texts`,
+    """`float_texts` by the C accelerator in one pass: a float64 as repr prints it (`repr_texts`,
     Grisu3 with Python's own printer where Grisu3 gives up); a float32 as its shortest float32
     digits (pyarrow's), laid out as repr lays out the same digits (what the pure-Python branch
     gets by reading them as a double and printing it with repr): `f32_texts` (Grisu3 with a
@@ -147,7 +147,7 @@ def _c_float_texts(np: Any, pa: Any, fast: Any, col: Any, single: bool) -> Any:
 def f32_texts(np: Any, a: Any) -> Any:
     """`f32_text` of each value of a float32 numpy array, as the columnar path prints them."""
     pa = importlib.import_module("pyarrow")
-    texts: List[str] = _float_texts(np, pa, pa.array(a.astype(np.float32), type=pa.float32())).to_pylist()
+    texts: List[str] = float_texts(np, pa, pa.array(a.astype(np.float32), type=pa.float32())).to_pylist()
     return np.array(texts, dtype=object)
 
 

@@ -257,7 +257,7 @@ def _unpack_texts(offsets, body, n):
 
 
 def test_csv_column_printers_are_the_python_texts():
-    # The CSV export's column printers (logs/arrow.py `_float_texts`, logs/writers.iso_texts):
+    # The CSV export's column printers (logs/arrow.py `float_texts`, logs/writers.iso_texts):
     # repr_texts prints each float64 as repr does (nan, inf, -inf as such; a row marked invalid
     # empty); relayout_texts lays out the shortest digits of a number written in another layout
     # (pyarrow's float32 text: "1.5e-05", "1e+16", "100") as repr lays out the same digits, and
