@@ -476,7 +476,7 @@ def _join(
         f = schema.field(j)
         entry = arrays.get(f.name)
         if entry is None:
-            out.append(pa.nulls(rows, type=f.type))
+            out.append(_nulls(pa, rows, f.type))
             continue
         where, col = entry
         col = _cast(pa, col, f.type)
@@ -520,6 +520,18 @@ def _repeated(np: Any, pa: Any, text: str, n: int) -> Any:
     return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body * n)], 0)
 
 
+_NULLS: Dict[Any, Any] = {}  # type -> an all-null array, sliced by `_nulls` (grown as needed)
+
+
+def _nulls(pa: Any, n: int, t: Any) -> Any:
+    """An all-null array of `n` rows of type `t`: a slice of one array per type, so that the
+    columns a table does not fill (most of a `<set>.samples` table's) take no memory per window."""
+    have = _NULLS.get(t)
+    if have is None or len(have) < n:
+        have = _NULLS[t] = pa.nulls(max(n, 1 << 16, 2 * len(have) if have is not None else 0), type=t)
+    return have.slice(0, n)
+
+
 def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
     if not mask.any():
         return a
@@ -534,6 +546,9 @@ class _PacketTimes:
     def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any) -> None:
         self.np = np
         self.block = clock.block(cols, base, start, end)
+        # the base columns of the last packet offsets asked (the field tables of a data set
+        # mostly have the same packets: their arrays are made once and shared)
+        self.made: List[Tuple[Any, List[Any]]] = []
 
     def columns(self, offs: Any) -> Dict[str, Tuple[Any, Any]]:
         """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets."""
@@ -568,20 +583,26 @@ class _PacketTimes:
         """Arrow arrays of the base columns (BASE_COLUMNS order) of rows at packet offsets `offs`."""
         np = self.np
         pa = _need("pyarrow")
-
+        offs = np.asarray(offs, dtype=np.int64)
+        if given is None:
+            for seen, arrays in self.made:
+                if len(seen) == len(offs) and (seen is offs or np.array_equal(seen, offs)):
+                    return list(arrays)
         cols = given if given is not None else self.columns(offs)
         t_ns, t_ok = cols["t_ns"]
         t_ns = np.asarray(t_ns, dtype=np.int64)
         out = [
             to_arrow(np, pa, t_ns, t_ok),
             to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
-            to_arrow(np, pa, np.asarray(offs, dtype=np.int64)),
+            to_arrow(np, pa, offs),
             _repeated(np, pa, log, len(offs)),
         ]
         for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
             vals, ok = cols[name]
             out.append(to_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
-        return out
+        if given is None:
+            self.made = [(offs, out)] + self.made[:3]
+        return list(out)
 
 
 class _Pieces(FastExporter):
@@ -669,6 +690,12 @@ def _sorted(np: Any, pa: Any, table: Any) -> Any:
         if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
             if bool((np.diff(offs[known:]) >= 0).all()):
                 return table
+    if 0 < known < len(t) and not valid[: len(t) - known].any():  # nulls first (a log's start):
+        k = len(t) - known  # the known rows then the null rows, when each part is in order
+        step = np.diff(t[k:])
+        if bool((step >= 0).all() and (np.diff(offs[k:])[step == 0] >= 0).all()):
+            if bool((np.diff(offs[:k]) >= 0).all()):
+                return pa.concat_tables([table.slice(k), table.slice(0, k)])
     order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
     return table.take(_ints(np, pa, order))
 
