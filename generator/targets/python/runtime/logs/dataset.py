@@ -428,7 +428,7 @@ def _join(
             continue
         first = np.ones(len(offs), dtype=bool)
         first[1:] = offs[1:] != offs[:-1]
-        pos = np.searchsorted(packets, offs[first])
+        pos = _positions(np, packets, offs[first])
         present = np.zeros(n, dtype=bool)
         present[pos] = True
         keyed |= present
@@ -448,7 +448,7 @@ def _join(
     row_offs = packets[new]
     arrays: Dict[str, Any] = {}
     for _key, offs, _idx, table in tables:
-        g = group[np.searchsorted(packets, offs)]
+        g = group[_positions(np, packets, offs)]
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
@@ -490,6 +490,14 @@ def _join(
         taken = col.take(_ints(np, pa, full_idx))
         out.append(_null_where(np, pa, taken, mask))
     return pa.Table.from_arrays(out, schema=schema)
+
+
+def _positions(np: Any, packets: Any, offs: Any) -> Any:
+    """The index in `packets` (sorted) of each of `offs` (members of it): without a search when
+    they are all the packets (a field every packet of the set carries)."""
+    if len(offs) == len(packets) and np.array_equal(offs, packets):
+        return np.arange(len(packets))
+    return np.searchsorted(packets, offs)
 
 
 def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int]) -> Any:
@@ -549,16 +557,24 @@ class _PacketTimes:
         # the base columns of the last packet offsets asked (the field tables of a data set
         # mostly have the same packets: their arrays are made once and shared)
         self.made: List[Tuple[Any, List[Any]]] = []
+        self.looked: List[Tuple[Any, Dict[str, Tuple[Any, Any]]]] = []
 
     def columns(self, offs: Any) -> Dict[str, Tuple[Any, Any]]:
-        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets."""
+        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets
+        (the last few asked kept: the tables of a window mostly ask for the same packets)."""
+        offs = self.np.asarray(offs, dtype=self.np.int64)
+        for seen, cols in self.looked:
+            if len(seen) == len(offs) and (seen is offs or self.np.array_equal(seen, offs)):
+                return cols
         got = self.block.lookup(offs)
-        return {
+        out = {
             "t_ns": (got["t_ns"], got["t_valid"]),
             "device_ns": (got["device_ns"], got["device_valid"]),
             "gps_week": (got["gps_week"], got["gps_valid"]),
             "gps_tow": (got["gps_tow"], got["gps_valid"]),
         }
+        self.looked = [(offs, out)] + self.looked[:3]
+        return out
 
     def t_ns_of(self, offs: Any) -> Any:
         vals, valid = self.columns(offs)["t_ns"]
@@ -613,7 +629,15 @@ class _Pieces(FastExporter):
             return super()._column(a, kind, enum)
         np, pa = self.np, self.pa
         names = _columns.ENUMS.get(enum or "", {})
-        values, where = np.unique(a, return_inverse=True)
+        a = a.reshape(-1)
+        if len(a) and a.dtype.kind in "iu" and int(a.min()) >= 0 and int(a.max()) < 1 << 16:
+            # small codes (every enum of the spec): the distinct values by a table, not a sort
+            seen = np.zeros(int(a.max()) + 1, dtype=bool)
+            seen[a] = True
+            values = np.flatnonzero(seen)
+            where = (np.cumsum(seen) - 1)[a]
+        else:
+            values, where = np.unique(a, return_inverse=True)
         texts = text_array(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()])
         return texts.take(to_arrow(np, pa, where.astype(np.int64).reshape(-1)))
 

@@ -664,6 +664,8 @@ def _first_many(np: Any, parts: List[Tuple[Any, ...]], value_cols: List[int]) ->
     """Per packet offset, the values of its most preferred (lowest rank), first-occurring entry."""
     if not parts:
         return np.zeros(0, dtype=np.int64), [np.zeros(0) for _ in value_cols]
+    if len(parts) == 1 and bool((parts[0][0][1:] > parts[0][0][:-1]).all()):
+        return parts[0][0], [parts[0][c] for c in value_cols]  # one entry per packet, in order
     offs = np.concatenate([p[0] for p in parts])
     ranks = np.concatenate([p[1] for p in parts])
     idx = np.concatenate([p[2] for p in parts])
