@@ -1138,7 +1138,7 @@ class _Part:
             self.unsorted = True
         self.last = (t[-1].as_py(), offs[-1].as_py())
         self.pending.append(rows)
-        self.pending_bytes += rows.nbytes
+        self.pending_bytes += _held_bytes(rows)
 
     def flush(self) -> None:
         if not self.pending:
@@ -1179,6 +1179,14 @@ class _Part:
             os.unlink(self.tmp)
         except OSError:
             pass
+
+
+def _held_bytes(table: Any) -> int:
+    """The memory a window's rows hold: the bytes of their columns with a value (an all-null
+    column is a slice of one shared array, `_nulls`: counted, it would cut a `<set>.samples`
+    part, mostly null columns, into row groups of a few thousand rows, each costing the
+    writer per column)."""
+    return sum(c.nbytes for c in table.columns if c.null_count < len(c))
 
 
 def _row_key(key: Tuple[Any, int]) -> Tuple[bool, int, int]:
