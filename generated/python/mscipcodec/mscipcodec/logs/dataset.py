@@ -53,6 +53,8 @@ ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes f
 WINDOW_BYTES = 4 << 20
 ROW_GROUP_BYTES = 16 << 20
 PENDING_BYTES = 64 << 20
+# The time facts of a log's first windows kept from the clock pass for the decode (range_clocks)
+HELD_TIME_BYTES = 64 << 20
 COMPRESSION = "zstd"
 META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
 FILES_TABLE = "_files"
@@ -302,13 +304,15 @@ def decode_split(
     identity: Optional[Identity] = None,
     log: str = "",
     size: Optional[int] = None,
+    time_arrays: Any = None,
 ) -> SplitResult:
     """Decode the packets whose first byte is in [start, end) from `data` (the bytes of the log
     from offset `base`, as `read_split` gives them) into the dataset's tables.
 
     `clock` is the split's clock (`clock_maps(...)[k]`, a timebase.SplitClock; None: the split
     is taken as a whole log, `whole_clock`) for the UTC time of packets with only the device clock; `identity` the log's (`log_identity`); `log` its id; `size` the log's size (the
-    split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
+    split that ends the log checks whether it ends inside a packet); `time_arrays` the
+    window's time facts from `range_clocks` (None: taken from the decode). Counts are for [start, end)."""
     np = _need("numpy")
     pa = _need("pyarrow")
     from ..codec.packets import decode_columns
@@ -329,14 +333,17 @@ def decode_split(
     maker = _Pieces("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
     times = _PacketTimes(
-        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
+        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end), time_arrays
     )
     per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
     for (set_id, cls), parts in pieces.items():
         offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
         idx = np.concatenate([np.asarray(p[1], dtype=np.int64) for p in parts])
-        order = np.lexsort((idx, offs))
-        offs, idx = offs[order], idx[order]
+        if len(parts) == 1 and bool((offs[1:] > offs[:-1]).all()):
+            order = np.arange(len(offs))  # one entry per packet, in stream order (the usual case)
+        else:
+            order = np.lexsort((idx, offs))
+            offs, idx = offs[order], idx[order]
         keep = (offs >= start) & (offs < end)
         if not keep.any():
             continue
@@ -434,7 +441,7 @@ def _join(
         keyed |= present
         same &= present[1:] == present[:-1]
         for c in range(len(BASE_COLUMNS), table.num_columns):
-            col = table.column(c).combine_chunks().filter(to_arrow(np, pa, first))
+            col = _chunk(table.column(c)).filter(to_arrow(np, pa, first))
             vals = np.zeros(n, dtype=np.float64)
             vals[pos] = _floats(np, pa, col)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
@@ -455,7 +462,7 @@ def _join(
         take = None if firsts.all() else _ints(np, pa, np.flatnonzero(firsts))
         for c in range(len(BASE_COLUMNS), table.num_columns):
             name = table.schema.field(c).name
-            col = table.column(c).combine_chunks()
+            col = _chunk(table.column(c))
             col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
@@ -507,6 +514,11 @@ def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int])
     return tuple((bool(p[i]), float(v[i]) if p[i] else None) for p, v in key_values)
 
 
+def _chunk(col: Any) -> Any:
+    """A table column as one array: its chunk when it has one (combine_chunks would copy it)."""
+    return col.chunk(0) if col.num_chunks == 1 else col.combine_chunks()
+
+
 def _ints(np: Any, pa: Any, a: Any) -> Any:
     """An arrow int64 array of a numpy array of indices (pa.array would import pandas, about a
     quarter of a second, on its first call: the helpers here build arrays from buffers)."""
@@ -551,9 +563,9 @@ class _PacketTimes:
     """The time columns of the packets of a decoded window (timebase: the split's clock map):
     t_ns (UTC), the device clock and the GPS week / time of week the packet carries, as sent."""
 
-    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any) -> None:
+    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any, arrays: Any = None) -> None:
         self.np = np
-        self.block = clock.block(cols, base, start, end)
+        self.block = clock.block(cols, base, start, end, arrays)
         # the base columns of the last packet offsets asked (the field tables of a data set
         # mostly have the same packets: their arrays are made once and shared)
         self.made: List[Tuple[Any, List[Any]]] = []
@@ -700,8 +712,8 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
 def _sorted(np: Any, pa: Any, table: Any) -> Any:
     """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
     order already (a log's rows mostly are)."""
-    t_ns = table.column("t_ns").combine_chunks()
-    offs = values_view(np, table.column("offset").combine_chunks(), np.int64)
+    t_ns = _chunk(table.column("t_ns"))
+    offs = values_view(np, _chunk(table.column("offset")), np.int64)
     valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else bool_values(np, t_ns.is_valid())
     t = values_view(np, t_ns, np.int64)
     if t_ns.null_count:
@@ -732,7 +744,7 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     None last; rows in their order within each date."""
     import datetime
 
-    time_col = table.column("time").combine_chunks()
+    time_col = _chunk(table.column("time"))
     us = values_view(np, time_col, np.int64)  # (timestamps in microseconds: int64 values)
     epoch = datetime.date(1970, 1, 1)
     if not time_col.null_count and len(us):  # one date (most tables): from the extremes, no copy
@@ -773,6 +785,8 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
             encodings[f.name] = "DELTA_BINARY_PACKED"
         elif pa.types.is_floating(t):
             encodings[f.name] = "BYTE_STREAM_SPLIT"
+        elif f.name == "log":  # one value per part: zstd takes its repeats, a dictionary costs more
+            encodings[f.name] = "PLAIN"
         else:
             dictionary.append(f.name)
     return encodings, dictionary
@@ -953,7 +967,8 @@ def export_log(
     rows: Dict[str, int] = {}
     try:
         grid = [(start, end, windows(start, end)) for start, end in splits(size, split_bytes)]
-        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws])
+        held_times: List[Any] = []
+        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws], held_times)
         k = 0
         for start, _end, ws in grid:
             out = SplitWriter(out_dir, identity, log, start)
@@ -961,7 +976,10 @@ def export_log(
             try:
                 for w_start, w_end in ws:
                     data, base = read_split(read_at, size, w_start, w_end)
-                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size)
+                    arrays = held_times[k] if k < len(held_times) else None
+                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size, arrays)
+                    if k < len(held_times):
+                        held_times[k] = None
                     k += 1
                     del data
                     tables = held.take(r)
@@ -1042,16 +1060,27 @@ def windows(start: int, end: int, window: Optional[int] = None) -> List[Tuple[in
     return [(w, min(w + window, end)) for w in range(start, end, window)]
 
 
-def range_clocks(read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]]) -> List[Any]:
+def range_clocks(
+    read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]], held: Optional[List[Any]] = None
+) -> List[Any]:
     """The clock of each of `ranges` (consecutive, covering the log; `clock_maps` for any grid:
-    the time model does not depend on where the log is cut)."""
+    the time model does not depend on where the log is cut). `held` (a list) gets the time facts
+    of the first ranges, up to HELD_TIME_BYTES of them, for `decode_split` (`time_arrays`): the
+    driver then does not make them twice (not when the log's device changes them,
+    `timebase.per_device_times`)."""
     from . import timebase
 
     anchors = []
+    budget = HELD_TIME_BYTES if held is not None and not timebase.per_device_times() else 0
     for start, end in ranges:
         data, base = read_split(read_at, size, start, end)
-        anchors.append(timebase.split_anchors(data, base, start, end))
-        del data
+        got: List[Any] = []
+        anchors.append(timebase.split_anchors(data, base, start, end, got if budget > 0 else None))
+        if got and held is not None:
+            budget -= sum(a.nbytes for a in got[0].values())
+            if budget >= 0:
+                held.append(got[0])
+        del data, got
     cmap = timebase.ClockMap.from_splits(anchors)
     return [cmap.split(k) for k in range(len(anchors))]
 
