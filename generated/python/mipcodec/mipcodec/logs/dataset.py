@@ -476,9 +476,9 @@ def _join(
                         np.concatenate([prev[0], target[extra]]),
                         pa.concat_arrays([prev[1], col.filter(to_arrow(np, pa, extra))]),
                     )
-    # a row's time: its first packet with one
-    t_group = times.row_times(packets, group, rows)
-    out = times.base_columns(row_offs, log, t_group)
+    # a row's time: its first packet with one (a row per packet: the packets' own, as made for
+    # the set's tables)
+    out = times.base_columns(row_offs, log, None if rows == n else times.row_times(packets, group, rows))
     for j in range(len(BASE_COLUMNS), len(schema)):
         f = schema.field(j)
         entry = arrays.get(f.name)

@@ -266,12 +266,17 @@ def split_anchors(data: Any, base: int, start: int, end: int, arrays: Optional[L
     from ..codec.packets import decode_columns
 
     np = importlib.import_module("numpy")
-    p = _columns_arrays(np, decode_columns(data), base)
-    keep = (p["offset"] >= start) & (p["offset"] < end)
-    p = {k: v[keep] for k, v in p.items()}
+    p = _within(np, _columns_arrays(np, decode_columns(data), base), start, end)
     if arrays is not None:
         arrays.append(p)
     return _summarize_arrays(np, p)
+
+
+def _within(np: Any, p: Dict[str, Any], start: int, end: int) -> Dict[str, Any]:
+    """The arrays of `_columns_arrays` for the packets whose offset is in [start, end): a slice
+    of each (the offsets are sorted)."""
+    lo, hi = (int(i) for i in np.searchsorted(p["offset"], [start, end]))
+    return {k: v[lo:hi] for k, v in p.items()}
 
 
 def per_device_times() -> bool:
@@ -380,10 +385,7 @@ class SplitClock:
             return self._block(np, arrays)
         pts = _columns_arrays(np, cols, base)
         if start is not None or end is not None:
-            lo = start if start is not None else -1
-            hi = end if end is not None else 1 << 62
-            keep = (pts["offset"] >= lo) & (pts["offset"] < hi)
-            pts = {k: v[keep] for k, v in pts.items()}
+            pts = _within(np, pts, start if start is not None else -1, end if end is not None else 1 << 62)
         return self._block(np, pts)
 
     def _block(self, np: Any, p: Dict[str, Any]) -> BlockTimes:
