@@ -266,10 +266,24 @@ def split_anchors(data: Any, base: int, start: int, end: int, arrays: Optional[L
     from ..codec.packets import decode_columns
 
     np = importlib.import_module("numpy")
-    p = _within(np, _columns_arrays(np, decode_columns(data), base), start, end)
+    p = _within(np, _columns_arrays(np, decode_columns(data, _time_fields()), base), start, end)
     if arrays is not None:
         arrays.append(p)
     return _summarize_arrays(np, p)
+
+
+_TIME_FIELDS: List[bytes] = []
+
+
+def _time_fields() -> bytes:
+    """`decode_columns`' `want` of the fields with a time fact (all `_columns_arrays` reads)."""
+    if not _TIME_FIELDS:
+        from ..codec.packets import field_mask
+
+        keys = {(r[0], r[1]) for table in (_columns.DEVICE_CLOCKS, _columns.GPS_TIMES) for r in table}
+        keys |= {(r[0], r[1]) for table in (_columns.EXTERNAL_TIMES, _columns.LEAP_SECONDS) for r in table}
+        _TIME_FIELDS.append(field_mask(keys))
+    return _TIME_FIELDS[0]
 
 
 def _within(np: Any, p: Dict[str, Any], start: int, end: int) -> Dict[str, Any]:
