@@ -384,8 +384,20 @@ def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
         parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
     if not parts:
         return np.zeros(0, dtype=np.int64)
-    out: Any = _sorted_unique(np, np.concatenate(parts)) + base
+    out: Any = _union(np, parts) + base
     return out
+
+
+def _union(np: Any, parts: List[Any]) -> Any:
+    """The sorted distinct values of int64 arrays (packet offsets): the fields of one packet type
+    give equal arrays, each taken once; one strictly rising array is its own union."""
+    distinct: List[Any] = []
+    for a in parts:
+        if not any(len(b) == len(a) and np.array_equal(b, a) for b in distinct):
+            distinct.append(a)
+    if len(distinct) == 1 and bool((distinct[0][1:] > distinct[0][:-1]).all()):
+        return distinct[0]
+    return _sorted_unique(np, np.concatenate(distinct))
 
 
 def _sorted_unique(np: Any, a: Any) -> Any:
@@ -423,7 +435,7 @@ def _join(
     rule, equal values) make one row; no key, one row per packet; a column's first value wins.
     `edges` (a list) gets the sample key of the first and of the last packet (None: no key)."""
     schema = samples_schema(set_id)
-    packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
+    packets = _union(np, [t[1] for t in tables])
     n = len(packets)
     # the sample key per packet: (present, values) of each TIMESTAMPS field
     new = np.ones(n, dtype=bool)

@@ -533,9 +533,13 @@ class BlockTimes:
                 "gps_tow": np.zeros(len(offsets), dtype=np.float64),
                 "gps_valid": z,
             }
-        pos = np.searchsorted(self.offset, offsets)
-        pos[pos >= n] = 0
-        hit = self.offset[pos] == offsets
+        if len(offsets) == n and np.array_equal(offsets, self.offset):  # every packet with a fact
+            pos = np.arange(n)
+            hit = np.ones(n, dtype=bool)
+        else:
+            pos = np.searchsorted(self.offset, offsets)
+            pos[pos >= n] = 0
+            hit = self.offset[pos] == offsets
         return {
             "t_ns": np.where(hit, self.t_ns[pos], 0),
             "t_valid": hit & self.t_valid[pos],
