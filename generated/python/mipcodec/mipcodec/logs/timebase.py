@@ -258,16 +258,47 @@ def summarize(times: Iterable[PacketTime]) -> SplitAnchors:
     return SplitAnchors(first_dev, prev, tuple(segments), first_leap, last_leap)
 
 
-def split_anchors(data: Any, base: int, start: int, end: int) -> SplitAnchors:
+def split_anchors(data: Any, base: int, start: int, end: int, arrays: Optional[List[Any]] = None) -> SplitAnchors:
     """The `SplitAnchors` of the packets whose first byte is in [start, end) (log offsets) of
     `data`, the log's bytes from offset `base` (decoded with `packets.decode_columns`; packets
-    starting before `start` are read only to resynchronise)."""
+    starting before `start` are read only to resynchronise). `arrays` (a list) gets the packets'
+    time facts, which `SplitClock.block(..., arrays=)` takes instead of decoding them again."""
     from ..codec.packets import decode_columns
 
     np = importlib.import_module("numpy")
-    p = _columns_arrays(np, decode_columns(data), base)
-    keep = (p["offset"] >= start) & (p["offset"] < end)
-    return _summarize_arrays(np, {k: v[keep] for k, v in p.items()})
+    p = _within(np, _columns_arrays(np, decode_columns(data, _time_fields()), base), start, end)
+    if arrays is not None:
+        arrays.append(p)
+    return _summarize_arrays(np, p)
+
+
+_TIME_FIELDS: List[bytes] = []
+
+
+def _time_fields() -> bytes:
+    """`decode_columns`' `want` of the fields with a time fact (all `_columns_arrays` reads)."""
+    if not _TIME_FIELDS:
+        from ..codec.packets import field_mask
+
+        keys = {(r[0], r[1]) for table in (_columns.DEVICE_CLOCKS, _columns.GPS_TIMES) for r in table}
+        keys |= {(r[0], r[1]) for table in (_columns.EXTERNAL_TIMES, _columns.LEAP_SECONDS) for r in table}
+        _TIME_FIELDS.append(field_mask(keys))
+    return _TIME_FIELDS[0]
+
+
+def _within(np: Any, p: Dict[str, Any], start: int, end: int) -> Dict[str, Any]:
+    """The arrays of `_columns_arrays` for the packets whose offset is in [start, end): a slice
+    of each (the offsets are sorted)."""
+    lo, hi = (int(i) for i in np.searchsorted(p["offset"], [start, end]))
+    return {k: v[lo:hi] for k, v in p.items()}
+
+
+def per_device_times() -> bool:
+    """True when a field with a time fact has per-device layouts (its values then depend on the
+    log's device, which `split_anchors` does not apply: its `arrays` are not the block's)."""
+    keys = {(r[0], r[1]) for table in (_columns.DEVICE_CLOCKS, _columns.GPS_TIMES) for r in table}
+    keys |= {(r[0], r[1]) for table in (_columns.EXTERNAL_TIMES, _columns.LEAP_SECONDS) for r in table}
+    return any(k[2] is not None and (k[0], k[1]) in keys for k in _columns.COLUMNS)
 
 
 def _summarize_arrays(np: Any, p: Dict[str, Any]) -> SplitAnchors:
@@ -355,17 +386,20 @@ class SplitClock:
         other.firsts = self.firsts  # (read only by step)
         return other.step(packet_time(packet))
 
-    def block(self, cols: Any, base: int, start: Optional[int] = None, end: Optional[int] = None) -> BlockTimes:
+    def block(
+        self, cols: Any, base: int, start: Optional[int] = None, end: Optional[int] = None, arrays: Any = None
+    ) -> BlockTimes:
         """The times of every packet of a `decode_columns` block (`cols`, decoded from the bytes
         at log offset `base`) with a time fact, restricted to packets whose first byte is in
-        [start, end) when given; advances the state past them. Needs numpy."""
+        [start, end) when given; advances the state past them. `arrays`: the block's time facts
+        as `split_anchors` gave them for the same bytes and range (then `cols` is not read).
+        Needs numpy."""
         np = importlib.import_module("numpy")
+        if arrays is not None:
+            return self._block(np, arrays)
         pts = _columns_arrays(np, cols, base)
         if start is not None or end is not None:
-            lo = start if start is not None else -1
-            hi = end if end is not None else 1 << 62
-            keep = (pts["offset"] >= lo) & (pts["offset"] < hi)
-            pts = {k: v[keep] for k, v in pts.items()}
+            pts = _within(np, pts, start if start is not None else -1, end if end is not None else 1 << 62)
         return self._block(np, pts)
 
     def _block(self, np: Any, p: Dict[str, Any]) -> BlockTimes:
@@ -499,9 +533,13 @@ class BlockTimes:
                 "gps_tow": np.zeros(len(offsets), dtype=np.float64),
                 "gps_valid": z,
             }
-        pos = np.searchsorted(self.offset, offsets)
-        pos[pos >= n] = 0
-        hit = self.offset[pos] == offsets
+        if len(offsets) == n and np.array_equal(offsets, self.offset):  # every packet with a fact
+            pos = np.arange(n)
+            hit = np.ones(n, dtype=bool)
+        else:
+            pos = np.searchsorted(self.offset, offsets)
+            pos[pos >= n] = 0
+            hit = self.offset[pos] == offsets
         return {
             "t_ns": np.where(hit, self.t_ns[pos], 0),
             "t_valid": hit & self.t_valid[pos],
@@ -664,10 +702,21 @@ def _first_many(np: Any, parts: List[Tuple[Any, ...]], value_cols: List[int]) ->
     """Per packet offset, the values of its most preferred (lowest rank), first-occurring entry."""
     if not parts:
         return np.zeros(0, dtype=np.int64), [np.zeros(0) for _ in value_cols]
+    if len(parts) == 1 and bool((parts[0][0][1:] > parts[0][0][:-1]).all()):
+        return parts[0][0], [parts[0][c] for c in value_cols]  # one entry per packet, in order
+    # by offset, then rank, then field index: the parts by rank, then a stable sort by offset
+    # (a merge of the parts' runs), checked where offsets tie (else the three-key sort)
+    parts = sorted(parts, key=lambda p: int(p[1][0]) if len(p[1]) else 0)
     offs = np.concatenate([p[0] for p in parts])
     ranks = np.concatenate([p[1] for p in parts])
     idx = np.concatenate([p[2] for p in parts])
-    order = np.lexsort((idx, ranks, offs))
+    order = np.argsort(offs, kind="stable")
+    so = offs[order]
+    tie = so[1:] == so[:-1]
+    if tie.any():
+        r, i = ranks[order], idx[order]
+        if bool((tie & ((r[1:] < r[:-1]) | ((r[1:] == r[:-1]) & (i[1:] < i[:-1])))).any()):
+            order = np.lexsort((idx, ranks, offs))
     offs = offs[order]
     keep = np.ones(len(offs), dtype=bool)
     keep[1:] = offs[1:] != offs[:-1]

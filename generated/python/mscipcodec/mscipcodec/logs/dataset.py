@@ -53,6 +53,8 @@ ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes f
 WINDOW_BYTES = 4 << 20
 ROW_GROUP_BYTES = 16 << 20
 PENDING_BYTES = 64 << 20
+# The time facts of a log's first windows kept from the clock pass for the decode (range_clocks)
+HELD_TIME_BYTES = 64 << 20
 COMPRESSION = "zstd"
 META = f"{PROG}.".encode()  # the namespace of the Parquet metadata keys: the package's name
 FILES_TABLE = "_files"
@@ -302,13 +304,15 @@ def decode_split(
     identity: Optional[Identity] = None,
     log: str = "",
     size: Optional[int] = None,
+    time_arrays: Any = None,
 ) -> SplitResult:
     """Decode the packets whose first byte is in [start, end) from `data` (the bytes of the log
     from offset `base`, as `read_split` gives them) into the dataset's tables.
 
     `clock` is the split's clock (`clock_maps(...)[k]`, a timebase.SplitClock; None: the split
     is taken as a whole log, `whole_clock`) for the UTC time of packets with only the device clock; `identity` the log's (`log_identity`); `log` its id; `size` the log's size (the
-    split that ends the log checks whether it ends inside a packet). Counts are for [start, end)."""
+    split that ends the log checks whether it ends inside a packet); `time_arrays` the
+    window's time facts from `range_clocks` (None: taken from the decode). Counts are for [start, end)."""
     np = _need("numpy")
     pa = _need("pyarrow")
     from ..codec.packets import decode_columns
@@ -329,14 +333,17 @@ def decode_split(
     maker = _Pieces("", "parquet", None, False)
     pieces = maker.pieces(cols, data, base)
     times = _PacketTimes(
-        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end)
+        np, cols, base, start, end, clock if clock is not None else whole_clock(data, base, start, end), time_arrays
     )
     per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
     for (set_id, cls), parts in pieces.items():
         offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
         idx = np.concatenate([np.asarray(p[1], dtype=np.int64) for p in parts])
-        order = np.lexsort((idx, offs))
-        offs, idx = offs[order], idx[order]
+        if len(parts) == 1 and bool((offs[1:] > offs[:-1]).all()):
+            order = np.arange(len(offs))  # one entry per packet, in stream order (the usual case)
+        else:
+            order = np.lexsort((idx, offs))
+            offs, idx = offs[order], idx[order]
         keep = (offs >= start) & (offs < end)
         if not keep.any():
             continue
@@ -377,8 +384,20 @@ def _packet_offsets(np: Any, cols: Any, base: int) -> Any:
         parts.append(np.fromiter((o for o, _k, _e in cols.others), dtype=np.int64, count=len(cols.others)))
     if not parts:
         return np.zeros(0, dtype=np.int64)
-    out: Any = _sorted_unique(np, np.concatenate(parts)) + base
+    out: Any = _union(np, parts) + base
     return out
+
+
+def _union(np: Any, parts: List[Any]) -> Any:
+    """The sorted distinct values of int64 arrays (packet offsets): the fields of one packet type
+    give equal arrays, each taken once; one strictly rising array is its own union."""
+    distinct: List[Any] = []
+    for a in parts:
+        if not any(len(b) == len(a) and np.array_equal(b, a) for b in distinct):
+            distinct.append(a)
+    if len(distinct) == 1 and bool((distinct[0][1:] > distinct[0][:-1]).all()):
+        return distinct[0]
+    return _sorted_unique(np, np.concatenate(distinct))
 
 
 def _sorted_unique(np: Any, a: Any) -> Any:
@@ -416,7 +435,7 @@ def _join(
     rule, equal values) make one row; no key, one row per packet; a column's first value wins.
     `edges` (a list) gets the sample key of the first and of the last packet (None: no key)."""
     schema = samples_schema(set_id)
-    packets = _sorted_unique(np, np.concatenate([t[1] for t in tables]))
+    packets = _union(np, [t[1] for t in tables])
     n = len(packets)
     # the sample key per packet: (present, values) of each TIMESTAMPS field
     new = np.ones(n, dtype=bool)
@@ -428,13 +447,13 @@ def _join(
             continue
         first = np.ones(len(offs), dtype=bool)
         first[1:] = offs[1:] != offs[:-1]
-        pos = np.searchsorted(packets, offs[first])
+        pos = _positions(np, packets, offs[first])
         present = np.zeros(n, dtype=bool)
         present[pos] = True
         keyed |= present
         same &= present[1:] == present[:-1]
         for c in range(len(BASE_COLUMNS), table.num_columns):
-            col = table.column(c).combine_chunks().filter(to_arrow(np, pa, first))
+            col = _chunk(table.column(c)).filter(to_arrow(np, pa, first))
             vals = np.zeros(n, dtype=np.float64)
             vals[pos] = _floats(np, pa, col)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
@@ -448,14 +467,14 @@ def _join(
     row_offs = packets[new]
     arrays: Dict[str, Any] = {}
     for _key, offs, _idx, table in tables:
-        g = group[np.searchsorted(packets, offs)]
+        g = group[_positions(np, packets, offs)]
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
         take = None if firsts.all() else _ints(np, pa, np.flatnonzero(firsts))
         for c in range(len(BASE_COLUMNS), table.num_columns):
             name = table.schema.field(c).name
-            col = table.column(c).combine_chunks()
+            col = _chunk(table.column(c))
             col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
@@ -469,14 +488,14 @@ def _join(
                         np.concatenate([prev[0], target[extra]]),
                         pa.concat_arrays([prev[1], col.filter(to_arrow(np, pa, extra))]),
                     )
-    # a row's time: its first packet with one
-    t_group = times.row_times(packets, group, rows)
-    out = times.base_columns(row_offs, log, t_group)
+    # a row's time: its first packet with one (a row per packet: the packets' own, as made for
+    # the set's tables)
+    out = times.base_columns(row_offs, log, None if rows == n else times.row_times(packets, group, rows))
     for j in range(len(BASE_COLUMNS), len(schema)):
         f = schema.field(j)
         entry = arrays.get(f.name)
         if entry is None:
-            out.append(pa.nulls(rows, type=f.type))
+            out.append(_nulls(pa, rows, f.type))
             continue
         where, col = entry
         col = _cast(pa, col, f.type)
@@ -492,11 +511,24 @@ def _join(
     return pa.Table.from_arrays(out, schema=schema)
 
 
+def _positions(np: Any, packets: Any, offs: Any) -> Any:
+    """The index in `packets` (sorted) of each of `offs` (members of it): without a search when
+    they are all the packets (a field every packet of the set carries)."""
+    if len(offs) == len(packets) and np.array_equal(offs, packets):
+        return np.arange(len(packets))
+    return np.searchsorted(packets, offs)
+
+
 def _packet_key(keyed: Any, key_values: List[Tuple[Any, Any]], i: Optional[int]) -> Any:
     """The sample key of packet i of a join (None without one): what `_join` compares."""
     if i is None or not keyed[i]:
         return None
     return tuple((bool(p[i]), float(v[i]) if p[i] else None) for p, v in key_values)
+
+
+def _chunk(col: Any) -> Any:
+    """A table column as one array: its chunk when it has one (combine_chunks would copy it)."""
+    return col.chunk(0) if col.num_chunks == 1 else col.combine_chunks()
 
 
 def _ints(np: Any, pa: Any, a: Any) -> Any:
@@ -520,6 +552,18 @@ def _repeated(np: Any, pa: Any, text: str, n: int) -> Any:
     return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body * n)], 0)
 
 
+_NULLS: Dict[Any, Any] = {}  # type -> an all-null array, sliced by `_nulls` (grown as needed)
+
+
+def _nulls(pa: Any, n: int, t: Any) -> Any:
+    """An all-null array of `n` rows of type `t`: a slice of one array per type, so that the
+    columns a table does not fill (most of a `<set>.samples` table's) take no memory per window."""
+    have = _NULLS.get(t)
+    if have is None or len(have) < n:
+        have = _NULLS[t] = pa.nulls(max(n, 1 << 16, 2 * len(have) if have is not None else 0), type=t)
+    return have.slice(0, n)
+
+
 def _null_where(np: Any, pa: Any, a: Any, mask: Any) -> Any:
     if not mask.any():
         return a
@@ -531,19 +575,30 @@ class _PacketTimes:
     """The time columns of the packets of a decoded window (timebase: the split's clock map):
     t_ns (UTC), the device clock and the GPS week / time of week the packet carries, as sent."""
 
-    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any) -> None:
+    def __init__(self, np: Any, cols: Any, base: int, start: int, end: int, clock: Any, arrays: Any = None) -> None:
         self.np = np
-        self.block = clock.block(cols, base, start, end)
+        self.block = clock.block(cols, base, start, end, arrays)
+        # the base columns of the last packet offsets asked (the field tables of a data set
+        # mostly have the same packets: their arrays are made once and shared)
+        self.made: List[Tuple[Any, List[Any]]] = []
+        self.looked: List[Tuple[Any, Dict[str, Tuple[Any, Any]]]] = []
 
     def columns(self, offs: Any) -> Dict[str, Tuple[Any, Any]]:
-        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets."""
+        """name -> (values, valid) of t_ns, device_ns, gps_week, gps_tow for packet offsets
+        (the last few asked kept: the tables of a window mostly ask for the same packets)."""
+        offs = self.np.asarray(offs, dtype=self.np.int64)
+        for seen, cols in self.looked:
+            if len(seen) == len(offs) and (seen is offs or self.np.array_equal(seen, offs)):
+                return cols
         got = self.block.lookup(offs)
-        return {
+        out = {
             "t_ns": (got["t_ns"], got["t_valid"]),
             "device_ns": (got["device_ns"], got["device_valid"]),
             "gps_week": (got["gps_week"], got["gps_valid"]),
             "gps_tow": (got["gps_tow"], got["gps_valid"]),
         }
+        self.looked = [(offs, out)] + self.looked[:3]
+        return out
 
     def t_ns_of(self, offs: Any) -> Any:
         vals, valid = self.columns(offs)["t_ns"]
@@ -568,20 +623,26 @@ class _PacketTimes:
         """Arrow arrays of the base columns (BASE_COLUMNS order) of rows at packet offsets `offs`."""
         np = self.np
         pa = _need("pyarrow")
-
+        offs = np.asarray(offs, dtype=np.int64)
+        if given is None:
+            for seen, arrays in self.made:
+                if len(seen) == len(offs) and (seen is offs or np.array_equal(seen, offs)):
+                    return list(arrays)
         cols = given if given is not None else self.columns(offs)
         t_ns, t_ok = cols["t_ns"]
         t_ns = np.asarray(t_ns, dtype=np.int64)
         out = [
             to_arrow(np, pa, t_ns, t_ok),
             to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
-            to_arrow(np, pa, np.asarray(offs, dtype=np.int64)),
+            to_arrow(np, pa, offs),
             _repeated(np, pa, log, len(offs)),
         ]
         for name, dtype in (("device_ns", np.int64), ("gps_week", np.int32), ("gps_tow", np.float64)):
             vals, ok = cols[name]
             out.append(to_arrow(np, pa, np.asarray(vals).astype(dtype), ok))
-        return out
+        if given is None:
+            self.made = [(offs, out)] + self.made[:3]
+        return list(out)
 
 
 class _Pieces(FastExporter):
@@ -592,7 +653,15 @@ class _Pieces(FastExporter):
             return super()._column(a, kind, enum)
         np, pa = self.np, self.pa
         names = _columns.ENUMS.get(enum or "", {})
-        values, where = np.unique(a, return_inverse=True)
+        a = a.reshape(-1)
+        if len(a) and a.dtype.kind in "iu" and int(a.min()) >= 0 and int(a.max()) < 1 << 16:
+            # small codes (every enum of the spec): the distinct values by a table, not a sort
+            seen = np.zeros(int(a.max()) + 1, dtype=bool)
+            seen[a] = True
+            values = np.flatnonzero(seen)
+            where = (np.cumsum(seen) - 1)[a]
+        else:
+            values, where = np.unique(a, return_inverse=True)
         texts = text_array(np, pa, [names.get(int(v), str(int(v))) for v in values.tolist()])
         return texts.take(to_arrow(np, pa, where.astype(np.int64).reshape(-1)))
 
@@ -655,8 +724,8 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
 def _sorted(np: Any, pa: Any, table: Any) -> Any:
     """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
     order already (a log's rows mostly are)."""
-    t_ns = table.column("t_ns").combine_chunks()
-    offs = values_view(np, table.column("offset").combine_chunks(), np.int64)
+    t_ns = _chunk(table.column("t_ns"))
+    offs = values_view(np, _chunk(table.column("offset")), np.int64)
     valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else bool_values(np, t_ns.is_valid())
     t = values_view(np, t_ns, np.int64)
     if t_ns.null_count:
@@ -669,6 +738,12 @@ def _sorted(np: Any, pa: Any, table: Any) -> Any:
         if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
             if bool((np.diff(offs[known:]) >= 0).all()):
                 return table
+    if 0 < known < len(t) and not valid[: len(t) - known].any():  # nulls first (a log's start):
+        k = len(t) - known  # the known rows then the null rows, when each part is in order
+        step = np.diff(t[k:])
+        if bool((step >= 0).all() and (np.diff(offs[k:])[step == 0] >= 0).all()):
+            if bool((np.diff(offs[:k]) >= 0).all()):
+                return pa.concat_tables([table.slice(k), table.slice(0, k)])
     order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
     return table.take(_ints(np, pa, order))
 
@@ -681,7 +756,7 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     None last; rows in their order within each date."""
     import datetime
 
-    time_col = table.column("time").combine_chunks()
+    time_col = _chunk(table.column("time"))
     us = values_view(np, time_col, np.int64)  # (timestamps in microseconds: int64 values)
     epoch = datetime.date(1970, 1, 1)
     if not time_col.null_count and len(us):  # one date (most tables): from the extremes, no copy
@@ -722,6 +797,8 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
             encodings[f.name] = "DELTA_BINARY_PACKED"
         elif pa.types.is_floating(t):
             encodings[f.name] = "BYTE_STREAM_SPLIT"
+        elif f.name == "log":  # one value per part: zstd takes its repeats, a dictionary costs more
+            encodings[f.name] = "PLAIN"
         else:
             dictionary.append(f.name)
     return encodings, dictionary
@@ -902,7 +979,8 @@ def export_log(
     rows: Dict[str, int] = {}
     try:
         grid = [(start, end, windows(start, end)) for start, end in splits(size, split_bytes)]
-        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws])
+        held_times: List[Any] = []
+        clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws], held_times)
         k = 0
         for start, _end, ws in grid:
             out = SplitWriter(out_dir, identity, log, start)
@@ -910,7 +988,10 @@ def export_log(
             try:
                 for w_start, w_end in ws:
                     data, base = read_split(read_at, size, w_start, w_end)
-                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size)
+                    arrays = held_times[k] if k < len(held_times) else None
+                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size, arrays)
+                    if k < len(held_times):
+                        held_times[k] = None
                     k += 1
                     del data
                     tables = held.take(r)
@@ -991,16 +1072,27 @@ def windows(start: int, end: int, window: Optional[int] = None) -> List[Tuple[in
     return [(w, min(w + window, end)) for w in range(start, end, window)]
 
 
-def range_clocks(read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]]) -> List[Any]:
+def range_clocks(
+    read_at: ReadAt, size: int, ranges: Sequence[Tuple[int, int]], held: Optional[List[Any]] = None
+) -> List[Any]:
     """The clock of each of `ranges` (consecutive, covering the log; `clock_maps` for any grid:
-    the time model does not depend on where the log is cut)."""
+    the time model does not depend on where the log is cut). `held` (a list) gets the time facts
+    of the first ranges, up to HELD_TIME_BYTES of them, for `decode_split` (`time_arrays`): the
+    driver then does not make them twice (not when the log's device changes them,
+    `timebase.per_device_times`)."""
     from . import timebase
 
     anchors = []
+    budget = HELD_TIME_BYTES if held is not None and not timebase.per_device_times() else 0
     for start, end in ranges:
         data, base = read_split(read_at, size, start, end)
-        anchors.append(timebase.split_anchors(data, base, start, end))
-        del data
+        got: List[Any] = []
+        anchors.append(timebase.split_anchors(data, base, start, end, got if budget > 0 else None))
+        if got and held is not None:
+            budget -= sum(a.nbytes for a in got[0].values())
+            if budget >= 0:
+                held.append(got[0])
+        del data, got
     cmap = timebase.ClockMap.from_splits(anchors)
     return [cmap.split(k) for k in range(len(anchors))]
 
@@ -1087,7 +1179,7 @@ class _Part:
             self.unsorted = True
         self.last = (t[-1].as_py(), offs[-1].as_py())
         self.pending.append(rows)
-        self.pending_bytes += rows.nbytes
+        self.pending_bytes += _held_bytes(rows)
 
     def flush(self) -> None:
         if not self.pending:
@@ -1128,6 +1220,14 @@ class _Part:
             os.unlink(self.tmp)
         except OSError:
             pass
+
+
+def _held_bytes(table: Any) -> int:
+    """The memory a window's rows hold: the bytes of their columns with a value (an all-null
+    column is a slice of one shared array, `_nulls`: counted, it would cut a `<set>.samples`
+    part, mostly null columns, into row groups of a few thousand rows, each costing the
+    writer per column)."""
+    return sum(c.nbytes for c in table.columns if c.null_count < len(c))
 
 
 def _row_key(key: Tuple[Any, int]) -> Tuple[bool, int, int]:

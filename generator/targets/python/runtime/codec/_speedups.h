@@ -185,6 +185,7 @@ struct Columns {
     Py_ssize_t packets;
     Py_ssize_t size;  /* bytes of the input */
     PyObject *others; /* [(offset, index, entry) | (offset, -1, Packet)] */
+    const unsigned char *want; /* [set << 8 | descriptor]: nonzero for a field to decode (NULL: all) */
 };
 
 #define TEXT_NOT_FAST 1
@@ -217,7 +218,7 @@ PyObject *decode_packet(PyObject *self, PyObject *args, PyObject *kwargs);
 PyObject *decode_all(PyObject *self, PyObject *arg);
 int columnable(const Entry *e);
 int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
-PyObject *decode_columns(PyObject *self, PyObject *arg);
+PyObject *decode_columns(PyObject *self, PyObject *args);
 int repr_double(double v, char *out);
 int text_packet(Text *t, const unsigned char *p, Py_ssize_t n, Py_ssize_t offset);
 int text_skip(Text *t, SkipRun *s);

@@ -310,6 +310,9 @@ int column_packet(Columns *c, const unsigned char *p, Py_ssize_t n, Py_ssize_t o
     }
     for (int k = 0; k < l->nfields; k++) {
         const LField *f = &l->f[k];
+        if (c->want != NULL && !c->want[(set_id << 8) | f->descriptor]) {
+            continue; /* a field not asked for: neither a row nor an `others` entry */
+        }
         const unsigned char *data = pl + f->hdr + FIELD_HEADER_SIZE;
         int rc = 1;
         if (f->slot != NULL) {
@@ -386,12 +389,22 @@ static void columns_free(Columns *c) {
     Py_XDECREF(c->others);
 }
 
-/* decode_columns(data) -> (packets, skips, tables, others); tables: [(set, descriptor, class, rows,
- * offsets, index, [column per item])], each column a bytearray of numbers in native byte order. */
-PyObject *decode_columns(PyObject *self, PyObject *arg) {
+/* decode_columns(data, want=None) -> (packets, skips, tables, others); tables: [(set, descriptor,
+ * class, rows, offsets, index, [column per item])], each column a bytearray of numbers in native
+ * byte order. `want`: None (every field) or 65536 bytes, nonzero at [set << 8 | descriptor] for
+ * the fields of packets of that set to decode (the others are left out; packets still counted). */
+PyObject *decode_columns(PyObject *self, PyObject *args) {
     (void)self;
+    PyObject *arg, *want = Py_None;
+    if (!PyArg_ParseTuple(args, "O|O:decode_columns", &arg, &want)) {
+        return NULL;
+    }
     if (packet_type == NULL) {
         PyErr_SetString(PyExc_RuntimeError, PROTOCOL_PACKAGE ".codec._speedups.setup() was not called");
+        return NULL;
+    }
+    if (want != Py_None && (!PyBytes_Check(want) || PyBytes_GET_SIZE(want) != 65536)) {
+        PyErr_SetString(PyExc_TypeError, "decode_columns: want must be None or 65536 bytes");
         return NULL;
     }
     PyObject *copy = PyBytes_FromObject(arg);
@@ -403,6 +416,7 @@ PyObject *decode_columns(PyObject *self, PyObject *arg) {
         Py_DECREF(copy);
         return PyErr_NoMemory();
     }
+    c->want = want == Py_None ? NULL : (const unsigned char *)PyBytes_AS_STRING(want);
     c->size = PyBytes_GET_SIZE(copy);
     c->others = PyList_New(0);
     SkipRun skip = {PyByteArray_FromStringAndSize(NULL, 0), 0};

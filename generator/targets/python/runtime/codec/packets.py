@@ -532,14 +532,16 @@ class Columns:
         return out
 
 
-def decode_columns(data: BytesLike) -> Columns:
+def decode_columns(data: BytesLike, want: Optional[bytes] = None) -> Columns:
     """A complete stream decoded into per-field tables of numbers (see `Columns`): the fast bulk API.
 
     In C when the accelerator is built; it builds no Python object per packet for the fields it
     reads. The same fields and values as `decode_all(data)` (see `Columns.entries`).
+    `want` (`field_mask`): the fields the caller reads; the accelerator leaves the others out
+    (the pure-Python decoder gives every field: a caller must not rely on their absence).
     """
     if _speedups is not None:
-        return Columns(*_speedups.decode_columns(data))
+        return Columns(*_speedups.decode_columns(data, want))
     skips: List[Skip] = []
     others: List[Tuple[int, int, Any]] = []
     packets = 0
@@ -555,6 +557,17 @@ def decode_columns(data: BytesLike) -> Columns:
         else:
             others.extend((e.offset, k, f) for k, f in enumerate(e.fields))
     return Columns(packets, skips, [], others)
+
+
+def field_mask(fields: Iterable[Tuple[int, int]]) -> bytes:
+    """`decode_columns`' `want` for fields given as (set, descriptor) of their layout class: a
+    field of the shared set (`registry.SHARED_SET`) in packets of any set."""
+    mask = bytearray(65536)
+    shared = getattr(registry, "SHARED_SET", None)
+    for s, d in fields:
+        for set_id in range(256) if s == shared else (s,):
+            mask[(set_id << 8) | d] = 1
+    return bytes(mask)
 
 
 def event_line(event: Event, device: Optional[str] = None) -> str:
@@ -704,6 +717,7 @@ __all__ = [
     "decode_packet",
     "decode_all",
     "decode_columns",
+    "field_mask",
     "Columns",
     "Table",
     "Decoder",
