@@ -453,20 +453,23 @@ static PyObject *column_result(Text *t, PyObject *offsets) {
     return out;
 }
 
-/* repr_texts(values, offset, n, valid): repr(float) of the float64 values [offset, offset + n)
- * of a buffer ("nan", "inf", "-inf" for those); valid (bytes, one per value, or None): the
- * empty text where 0. */
-PyObject *repr_texts(PyObject *self, PyObject *args) {
-    (void)self;
+/* The texts of a float column in one pass (repr_texts, f32_texts): the values [offset, offset + n)
+ * of a buffer of `width`-byte floats, "nan", "inf", "-inf" for those, the empty text where valid
+ * (bytes, one per value, or None) is 0. print(src, out) writes the text of the finite value stored
+ * at src into out (room bytes) and returns its length; -1 with a Python exception set; -2 when it
+ * gave up (the result is then None). */
+typedef int (*FloatPrinter)(const char *src, char *out);
+
+static PyObject *float_column(PyObject *args, const char *name, Py_ssize_t width, Py_ssize_t room,
+                              FloatPrinter print) {
     Py_buffer vals, valid = {0};
     Py_ssize_t offset, n;
     if (!PyArg_ParseTuple(args, "y*nn|z*", &vals, &offset, &n, &valid)) {
         return NULL;
     }
     PyObject *offsets = NULL;
-    if (offset < 0 || n < 0 || (offset + n) > vals.len / (Py_ssize_t)sizeof(double) ||
-        (valid.buf != NULL && valid.len < n)) {
-        PyErr_SetString(PyExc_ValueError, "repr_texts: the buffers are too short");
+    if (offset < 0 || n < 0 || (offset + n) > vals.len / width || (valid.buf != NULL && valid.len < n)) {
+        PyErr_Format(PyExc_ValueError, "%s: the buffers are too short", name);
         goto done;
     }
     offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
@@ -478,10 +481,17 @@ PyObject *repr_texts(PyObject *self, PyObject *args) {
     Text t = {NULL, 0, 0};
     at[0] = 0;
     for (Py_ssize_t i = 0; i < n; i++) {
-        double v;
-        memcpy(&v, (const char *)vals.buf + (offset + i) * (Py_ssize_t)sizeof(double), sizeof v);
+        const char *src = (const char *)vals.buf + (offset + i) * width;
         if (ok == NULL || ok[i]) {
-            if (text_reserve(&t, 32) < 0) {
+            double v;
+            if (width == (Py_ssize_t)sizeof(double)) {
+                memcpy(&v, src, sizeof v);
+            } else {
+                float f;
+                memcpy(&f, src, sizeof f);
+                v = f;
+            }
+            if (text_reserve(&t, room) < 0) {
                 PyMem_Free(t.p);
                 Py_CLEAR(offsets);
                 goto done;
@@ -493,19 +503,14 @@ PyObject *repr_texts(PyObject *self, PyObject *args) {
             } else if (isinf(v)) {
                 k = v < 0 ? 4 : 3;
                 memcpy(t.p + t.len, v < 0 ? "-inf" : "inf", (size_t)k);
-            } else {
-                k = repr_double(v, t.p + t.len);
-                if (k < 0) {
-                    char *r = PyOS_double_to_string(v, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
-                    if (r == NULL) {
-                        PyMem_Free(t.p);
-                        Py_CLEAR(offsets);
-                        goto done;
-                    }
-                    k = (int)strlen(r);
-                    memcpy(t.p + t.len, r, (size_t)k);
-                    PyMem_Free(r);
+            } else if ((k = print(src, t.p + t.len)) < 0) {
+                PyMem_Free(t.p);
+                Py_CLEAR(offsets);
+                if (k == -2) {
+                    Py_INCREF(Py_None);
+                    offsets = Py_None;
                 }
+                goto done;
             }
             t.len += k;
         }
@@ -522,6 +527,32 @@ done:
         PyBuffer_Release(&valid);
     }
     return offsets;
+}
+
+/* repr(float) of a finite float64 (repr_double; Python's own where Grisu3 gives up). */
+static int print_double(const char *src, char *out) {
+    double v;
+    memcpy(&v, src, sizeof v);
+    int k = repr_double(v, out);
+    if (k >= 0) {
+        return k;
+    }
+    char *r = PyOS_double_to_string(v, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    if (r == NULL) {
+        return -1;
+    }
+    k = (int)strlen(r);
+    memcpy(out, r, (size_t)k);
+    PyMem_Free(r);
+    return k;
+}
+
+/* repr_texts(values, offset, n, valid): repr(float) of the float64 values [offset, offset + n)
+ * of a buffer ("nan", "inf", "-inf" for those); valid (bytes, one per value, or None): the
+ * empty text where 0. */
+PyObject *repr_texts(PyObject *self, PyObject *args) {
+    (void)self;
+    return float_column(args, "repr_texts", (Py_ssize_t)sizeof(double), 32, print_double);
 }
 
 /* The shortest digits of a finite positive float32 where Grisu3 gives up (about 1% of all float32
@@ -607,69 +638,21 @@ static int repr_single(float f, char *out) {
     return decpt == INT_MIN ? -1 : repr_layout(out, neg, d, n, decpt);
 }
 
+/* repr_single of a float32 as stored; -2 (give up) where the C library failed it. */
+static int print_single(const char *src, char *out) {
+    float v;
+    memcpy(&v, src, sizeof v);
+    int k = repr_single(v, out);
+    return k < 0 ? -2 : k;
+}
+
 /* f32_texts(values, offset, n, valid): the float32 values [offset, offset + n) of a buffer as the
  * CSV prints them (repr_single; "nan", "inf", "-inf" as pyarrow prints those), the empty text where
  * valid (bytes, one per value, or None) is 0; None when repr_single failed on a value (the C
  * library's printf or strtof: the caller then takes pyarrow's digits, relayout_texts). */
 PyObject *f32_texts(PyObject *self, PyObject *args) {
     (void)self;
-    Py_buffer vals, valid = {0};
-    Py_ssize_t offset, n;
-    if (!PyArg_ParseTuple(args, "y*nn|z*", &vals, &offset, &n, &valid)) {
-        return NULL;
-    }
-    PyObject *offsets = NULL;
-    if (offset < 0 || n < 0 || (offset + n) > vals.len / (Py_ssize_t)sizeof(float) ||
-        (valid.buf != NULL && valid.len < n)) {
-        PyErr_SetString(PyExc_ValueError, "f32_texts: the buffers are too short");
-        goto done;
-    }
-    offsets = PyBytes_FromStringAndSize(NULL, (n + 1) * (Py_ssize_t)sizeof(long long));
-    if (offsets == NULL) {
-        goto done;
-    }
-    long long *at = (long long *)PyBytes_AS_STRING(offsets);
-    const unsigned char *ok = valid.buf;
-    Text t = {NULL, 0, 0};
-    at[0] = 0;
-    for (Py_ssize_t i = 0; i < n; i++) {
-        float v;
-        memcpy(&v, (const char *)vals.buf + (offset + i) * (Py_ssize_t)sizeof(float), sizeof v);
-        if (ok == NULL || ok[i]) {
-            if (text_reserve(&t, 40) < 0) {
-                PyMem_Free(t.p);
-                Py_CLEAR(offsets);
-                goto done;
-            }
-            int k;
-            if (isnan(v)) {
-                k = 3;
-                memcpy(t.p + t.len, "nan", 3);
-            } else if (isinf(v)) {
-                k = v < 0 ? 4 : 3;
-                memcpy(t.p + t.len, v < 0 ? "-inf" : "inf", (size_t)k);
-            } else if ((k = repr_single(v, t.p + t.len)) < 0) {
-                PyMem_Free(t.p);
-                Py_CLEAR(offsets);
-                Py_INCREF(Py_None);
-                offsets = Py_None;
-                goto done;
-            }
-            t.len += k;
-        }
-        at[i + 1] = (long long)t.len;
-    }
-    PyBuffer_Release(&vals);
-    if (valid.buf != NULL) {
-        PyBuffer_Release(&valid);
-    }
-    return column_result(&t, offsets);
-done:
-    PyBuffer_Release(&vals);
-    if (valid.buf != NULL) {
-        PyBuffer_Release(&valid);
-    }
-    return offsets;
+    return float_column(args, "f32_texts", (Py_ssize_t)sizeof(float), 40, print_single);
 }
 
 /* One text of shortest digits ("-1.5e-05", "0.001", "100", pyarrow's) laid out as repr(float)
