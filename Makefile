@@ -9,6 +9,12 @@ PY := $(VENV)/bin/python
 # file at a time) uses every core; the C++ package is a compiled library since issue 39.
 CMAKE_BUILD_PARALLEL_LEVEL ?= $(shell nproc 2>/dev/null || echo 2)
 export CMAKE_BUILD_PARALLEL_LEVEL
+# The long pytest suites run on pytest-xdist workers, one per core (at most 4), each worker a test
+# file at a time (--dist loadfile: a module's fixtures, simulators and builds stay in one worker);
+# a tree two workers build takes turns (tests/helpers/builds.py, tests/lang/lock.sh). TEST_JOBS=1
+# runs them in one process.
+TEST_JOBS ?= $(shell n=$$(nproc 2>/dev/null || echo 1); [ "$$n" -gt 4 ] && n=4; echo $$n)
+XDIST := $(if $(filter-out 0 1,$(TEST_JOBS)),-n $(TEST_JOBS) --dist loadfile)
 # The language targets: the registry generator/targets/__init__.py (standard library only, so
 # the bare $(PYTHON) reads it before .venv exists).
 LANGS := $(shell $(PYTHON) -m generator.targets)
@@ -60,7 +66,7 @@ test-generator: $(VENV)/.stamp
 	$(STAMP)
 	$(VENV)/bin/ruff check --config ruff.toml generator tests
 	$(VENV)/bin/ruff format --config ruff.toml --check --quiet generator tests
-	$(PY) -m pytest -q tests/generator
+	$(PY) -m pytest -q $(XDIST) tests/generator
 
 # The spec against what its manuals state outside the field tables (prose sizes, worked examples).
 test-spec: generate
@@ -71,7 +77,7 @@ test-spec: generate
 # The Python packages' user commands (export, info, plot) against the canonical decode.
 test-export: generate
 	$(STAMP)
-	$(PY) -m pytest -q --durations=10 tests/export
+	$(PY) -m pytest -q $(XDIST) --durations=10 tests/export
 
 test-bench: generate
 	$(STAMP)
@@ -104,7 +110,7 @@ html: generate
 
 test-conformance: generate
 	$(STAMP)
-	$(PY) -m pytest -q --durations=15 tests/conformance
+	$(PY) -m pytest -q $(XDIST) --durations=15 tests/conformance
 
 # Differential rounds (tests/conformance/differential.py; one round runs in test-conformance):
 # hostile values of every layout and corrupted packets through the four languages' CLIs against

@@ -4,15 +4,19 @@ print the seed of the differential test.
 
 The seed is DIFF_SEED when set, otherwise fresh for every session (differential.SEED); it is
 printed in the report header, again at the end of the run (also under -q, where the header is
-not shown), and in every failure message, with the command that replays it.
+not shown), and in every failure message, with the command that replays it. A fresh seed is put
+into DIFF_SEED before any pytest worker starts (`make test-conformance` runs the suite on `-n`
+workers, pytest-xdist), so that every worker draws the seed the report prints.
 """
+
+import os
 
 import pytest
 
 from tests.conformance.differential import SEED, replay_command
 from tests.helpers.langs import runner
 
-_RAN = []
+os.environ["DIFF_SEED"] = str(SEED)
 
 
 def _line() -> str:
@@ -23,12 +27,11 @@ def pytest_report_header(config):
     return _line()
 
 
-def pytest_collection_modifyitems(session, config, items):
-    _RAN.extend(i for i in items if i.nodeid.split("::")[0].endswith("test_differential.py"))
-
-
 def pytest_terminal_summary(terminalreporter, exitstatus, config):
-    if _RAN:
+    """The seed again when a differential test ran (its reports reach the controller also when the
+    tests ran on workers)."""
+    reports = (r for rs in terminalreporter.stats.values() for r in rs)
+    if any("test_differential.py" in str(getattr(r, "nodeid", "")) for r in reports):
         terminalreporter.write_line(_line())
 
 

@@ -19,7 +19,6 @@ from __future__ import annotations
 import os
 import random
 import re
-import shutil
 import subprocess
 from pathlib import Path
 
@@ -27,45 +26,19 @@ import pytest
 import yaml
 
 from tests.conformance.test_device_cli import MODELS, TRANSPORTS, Recorder, Sim, _edit, cli, listen_for
+from tests.helpers.builds import c_device_tool
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = "mipcodec"
 # C_DEVICE_SANITIZE=1: the tool built with AddressSanitizer and UndefinedBehaviorSanitizer (any
 # report ends it with a non-zero status the tests see), in its own build directory
 SANITIZE = os.environ.get("C_DEVICE_SANITIZE") == "1"
-SAN_FLAGS = "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-BUILD = ROOT / "build" / ("c-device-sanitize" if SANITIZE else "c-device") / PACKAGE
-TOOL = BUILD / f"{PACKAGE}-device"
 
 
 @pytest.fixture(scope="module")
 def tool() -> Path:
     """The C device tool, built with the project's strict flags (warnings are errors)."""
-    assert shutil.which("cmake"), "cmake is needed to build the C package"
-    if not (BUILD / "CMakeCache.txt").exists():
-        subprocess.run(
-            [
-                "cmake",
-                *(["-G", "Ninja"] if shutil.which("ninja") else []),
-                "-S",
-                str(ROOT / "generated" / "c" / PACKAGE),
-                "-B",
-                str(BUILD),
-                "-DCMAKE_BUILD_TYPE=Debug",
-                f"-D{PACKAGE.upper()}_WERROR=ON",
-                f"-D{PACKAGE.upper()}_BUILD_TOOLS=ON",
-                f"-D{PACKAGE.upper()}_BUILD_TESTS=OFF",
-                f"-D{PACKAGE.upper()}_BUILD_EXAMPLES=OFF",
-                *([f"-DCMAKE_C_FLAGS={SAN_FLAGS}", f"-DCMAKE_EXE_LINKER_FLAGS={SAN_FLAGS}"] if SANITIZE else []),
-            ],
-            check=True,
-            capture_output=True,
-        )
-    built = subprocess.run(
-        ["cmake", "--build", str(BUILD), "--target", f"{PACKAGE}_c_device"], capture_output=True, text=True
-    )
-    assert built.returncode == 0, built.stdout + built.stderr
-    return TOOL
+    return c_device_tool(PACKAGE, sanitize=SANITIZE)
 
 
 def ctool(tool: Path, *args: str, timeout: float = 60) -> subprocess.CompletedProcess:

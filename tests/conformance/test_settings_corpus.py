@@ -27,6 +27,7 @@ import pytest
 import yaml
 
 from tests.conformance.test_device_cli import Recorder, Sim
+from tests.helpers.builds import c_device_tool
 from tests.helpers.generated import python_package
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -75,28 +76,7 @@ def test_the_corpus_covers_the_rules():
 # ------------------------------------------------------------------------------ the C tool
 def c_tool(package: str) -> Path:
     """The package's C device tool, built with warnings as errors (build/c-device/<package>)."""
-    build = ROOT / "build" / "c-device" / package
-    if not (build / "CMakeCache.txt").exists():
-        subprocess.run(
-            [
-                "cmake",
-                *(["-G", "Ninja"] if shutil.which("ninja") else []),
-                "-S",
-                str(ROOT / "generated" / "c" / package),
-            ]
-            + ["-B", str(build), "-DCMAKE_BUILD_TYPE=Debug", f"-D{package.upper()}_WERROR=ON"]
-            + [
-                f"-D{package.upper()}_BUILD_{w}={v}"
-                for w, v in (("TOOLS", "ON"), ("TESTS", "OFF"), ("EXAMPLES", "OFF"))
-            ],
-            check=True,
-            capture_output=True,
-        )
-    built = subprocess.run(
-        ["cmake", "--build", str(build), "--target", f"{package}_c_device"], capture_output=True, text=True
-    )
-    assert built.returncode == 0, built.stdout + built.stderr
-    return build / f"{package}-device"
+    return c_device_tool(package)
 
 
 @pytest.fixture(scope="module")

@@ -19,6 +19,8 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PACKAGE="${C_PACKAGE:-mipcodec}"
+# shellcheck source=tests/lang/lock.sh
+. "$ROOT/tests/lang/lock.sh"
 
 packages() {
     local d
@@ -123,6 +125,14 @@ ensure_example() {
     build_one "$PACKAGE"
 }
 
+# The session tool (docs/conformance.md section 8), built when missing or out of date.
+ensure_session() {
+    local out="$ROOT/build/c/$PACKAGE"
+    if [ ! -x "$out/$PACKAGE-session" ] || ! cmake --build "$out" --target "${PACKAGE}_c_session" >/dev/null 2>&1; then
+        build_one "$PACKAGE"
+    fi
+}
+
 # Configures package $1 when needed and builds only its target $2.
 build_target() {
     local src="$ROOT/generated/c/$1" out="$ROOT/build/c/$1"
@@ -181,31 +191,29 @@ test)
     ;;
 decode)
     [ $# -ge 1 ] || usage
-    ensure_built
+    locked "$ROOT/build/c/$PACKAGE" ensure_built
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-decode" "$@"
     ;;
 encode)
-    ensure_built
+    locked "$ROOT/build/c/$PACKAGE" ensure_built
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-encode" "$@"
     ;;
 session)
     out="$ROOT/build/c/$PACKAGE"
-    if [ ! -x "$out/$PACKAGE-session" ] || ! cmake --build "$out" --target "${PACKAGE}_c_session" >/dev/null 2>&1; then
-        build_one "$PACKAGE"
-    fi
+    locked "$out" ensure_session
     exec "$out/$PACKAGE-session" "$@"
     ;;
 configure)
-    build_target "$PACKAGE" "${PACKAGE}_c_configure_and_stream"
+    locked "$ROOT/build/c/$PACKAGE" build_target "$PACKAGE" "${PACKAGE}_c_configure_and_stream"
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-configure-and-stream" "$@"
     ;;
 app)
     [ $# -ge 1 ] || usage
-    app "$1"
+    locked "$ROOT/build/c-apps" app "$1"
     exec "$ROOT/build/c-apps/$1" "${@:2}"
     ;;
 example)
-    ensure_example
+    locked "$ROOT/build/c/$PACKAGE" ensure_example
     exec "$ROOT/build/c/$PACKAGE/$PACKAGE-getting-started" "$@"
     ;;
 *)

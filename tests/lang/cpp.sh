@@ -11,6 +11,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PKG="${CPP_PACKAGE:-mipcodec}"
 GEN="$ROOT/generated/cpp"
+# shellcheck source=tests/lang/lock.sh
+. "$ROOT/tests/lang/lock.sh"
 
 usage() { echo "usage: $0 build|test|runtime|decode FILE [--device ID]|encode|session --connect ADDRESS ...|example FILE|configure ADDRESS [COUNT]|app NAME [ARGS...]" >&2; exit 2; }
 
@@ -71,6 +73,11 @@ runtime_tests() {
   done
 }
 
+build_app() { # build-dir name: the program NAME of tests/apps/cpp/ (its own CMake project)
+  [ -f "$1/build.ninja" ] || cmake -G Ninja -S "$ROOT/tests/apps/cpp" -B "$1" -DAPP_PACKAGE="$PKG"
+  cmake --build "$1" --target "$2"
+}
+
 build() { # package [targets...]
   local pkg="$1"; shift
   configure "$pkg"
@@ -80,7 +87,7 @@ build() { # package [targets...]
 tool() { # decode|encode|session|getting-started
   local exe="$ROOT/build/cpp/$PKG/$PKG-$1"
   # Always let ninja check (a no-op when up to date), so a regenerated package is rebuilt.
-  build "$PKG" "${PKG}_cpp_${1//-/_}" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
+  locked "$ROOT/build/cpp/$PKG" build "$PKG" "${PKG}_cpp_${1//-/_}" >/dev/null 2>"$ROOT/build/cpp/.$PKG-$1.log" || { cat "$ROOT/build/cpp/.$PKG-$1.log" >&2; exit 2; }
   echo "$exe"
 }
 
@@ -142,10 +149,7 @@ case "$cmd" in
     [ -f "$ROOT/tests/apps/cpp/$name.cpp" ] || { echo "cpp.sh: no program tests/apps/cpp/$name.cpp" >&2; exit 2; }
     out="$ROOT/build/apps/cpp/$PKG"
     mkdir -p "$out"
-    {
-      [ -f "$out/build.ninja" ] || cmake -G Ninja -S "$ROOT/tests/apps/cpp" -B "$out" -DAPP_PACKAGE="$PKG"
-      cmake --build "$out" --target "$name"
-    } >"$out/.$name.log" 2>&1 || { cat "$out/.$name.log" >&2; exit 2; }
+    locked "$out" build_app "$out" "$name" >"$out/.$name.log" 2>&1 || { cat "$out/.$name.log" >&2; exit 2; }
     exec "$out/$name" "$@"
     ;;
   example)

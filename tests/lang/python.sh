@@ -28,6 +28,8 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PACKAGE="${PY_PACKAGE:-mipcodec}"
+# shellcheck source=tests/lang/lock.sh
+. "$ROOT/tests/lang/lock.sh"
 if [ -x "$ROOT/.venv/bin/python" ]; then PY="$ROOT/.venv/bin/python"; else PY="$(command -v python3)"; fi
 if [ -x "$ROOT/.venv/bin/ruff" ]; then RUFF="$ROOT/.venv/bin/ruff"; else RUFF="$(command -v ruff || true)"; fi
 MYPY_CACHE="$ROOT/build/python/mypy-cache"
@@ -60,11 +62,27 @@ run_cli() {
     run_py -m "$PACKAGE" "$@"
 }
 
+# The digest of package $1's sources (generated/python/$1) and of the Python that builds it.
+source_digest() {
+    {
+        "$PY" -c 'import sys; print(sys.version, sys.executable)'
+        (cd "$ROOT/generated/python/$1" && find . -type f ! -name '*.pyc' -print0 | sort -z | xargs -0 sha256sum)
+    } | sha256sum | cut -d' ' -f1
+}
+
 # Copies package $1 to build/python/ext/$1 (timestamps kept, so unchanged _speedups*.c are not
-# recompiled) and builds its C accelerator in place there; fails when it did not build.
+# recompiled) and builds its C accelerator in place there; fails when it did not build. A copy
+# built from the same sources by the same Python (its .built file holds their digest) is left as
+# it is: tests running side by side (pytest workers) each ask for the build, and one must never
+# rewrite the tree while another runs the package from it. Run under the tree's lock (locked).
 build_ext() {
-    local pkg="$1" out="$ROOT/build/python/ext/$1"
+    local pkg="$1" out="$ROOT/build/python/ext/$1" digest
+    digest="$(source_digest "$pkg")"
+    if [ -f "$out/.built" ] && [ "$(cat "$out/.built")" = "$digest" ]; then
+        return
+    fi
     mkdir -p "$out"
+    rm -f "$out/.built"
     find "$out" -name '*.py' -delete
     cp -Rp "$ROOT/generated/python/$pkg/." "$out/"
     (cd "$out" && PYTHONPYCACHEPREFIX= "$PY" setup.py -q build_ext --inplace \
@@ -83,6 +101,7 @@ build_ext() {
     # does, not compiling every module again (about 0.3 s of CPU a run when PYTHONDONTWRITEBYTECODE
     # is set).
     PYTHONPYCACHEPREFIX= "$PY" -m compileall -q "$out/$pkg" >&2
+    echo "$digest" >"$out/.built"
 }
 
 [ $# -ge 1 ] || usage
@@ -100,7 +119,7 @@ build)
     ;;
 ext)
     for pkg in $(packages); do
-        build_ext "$pkg"
+        locked "$ROOT/build/python/ext/$pkg" build_ext "$pkg"
         echo "$ROOT/build/python/ext/$pkg"
     done
     ;;
@@ -129,7 +148,7 @@ test)
         echo "== $pkg: pure Python (${up}_PURE=1)"
         (cd "$ROOT" && env "${up}_PURE=1" PYTHONPATH="$ROOT/generated/python/$pkg" "$PY" -m pytest -q -p no:cacheprovider "generated/python/$pkg/tests")
         echo "== $pkg: with the C accelerator (build/python/ext/$pkg)"
-        build_ext "$pkg"
+        locked "$ROOT/build/python/ext/$pkg" build_ext "$pkg"
         (cd "$ROOT/build/python/ext/$pkg" && env -u "${up}_PURE" "${up}_EXPECT_ACCELERATED=1" PYTHONPATH="$ROOT/build/python/ext/$pkg" "$PY" -m pytest -q -p no:cacheprovider tests)
     done
     "$0" consumer
