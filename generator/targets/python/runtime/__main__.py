@@ -1,7 +1,12 @@
-"""python -m <package> decode|encode (see <package>.cli)."""
+"""python -m <package> decode|encode|export|... (see <package>.cli). A Ctrl-C while the command
+line's modules load (a slow start on a busy machine) ends it as a later one does: status 130, no
+traceback."""
 
 import sys
 
-from .cli import main
+try:
+    from .cli import main
+except KeyboardInterrupt:
+    sys.exit(130)
 
 sys.exit(main())

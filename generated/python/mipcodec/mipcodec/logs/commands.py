@@ -65,19 +65,11 @@ def export(args: argparse.Namespace) -> int:
         os.makedirs(args.out, exist_ok=True)
     except OSError as e:
         raise ToolError(f"cannot create {args.out!r}: {e.strerror or e}") from None
-    outputs = Outputs(args.force)
-    try:
+    with Outputs(args.force).writing(args.out) as outputs:
         if fast_path(args):
             written, tally = _export_fast(args, fields, outputs)
         else:
             written, tally = _export_packets(args, fields, outputs)
-        outputs.commit()
-    except OSError as e:
-        outputs.abort()
-        raise write_error(args.out, e) from None
-    except BaseException:
-        outputs.abort()
-        raise
     for name, n in written:
         print(f"{os.path.join(args.out, name)}: {n} rows")
     print(tally, file=sys.stderr)

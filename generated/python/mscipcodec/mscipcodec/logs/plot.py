@@ -20,7 +20,6 @@ from .writers import (
     need,
     select,
     stream_events,
-    write_error,
 )
 
 
@@ -97,7 +96,7 @@ def plot(args: argparse.Namespace) -> int:
     outputs = Outputs(args.force)
     outputs.refuse_existing(args.out)  # before reading the log
     fig = figure(args.log, fields, args.device)
-    try:
+    with outputs.writing(args.out):
         tmp = outputs.claim(args.out)
         if ext == ".html":
             buf = io.StringIO()
@@ -110,13 +109,6 @@ def plot(args: argparse.Namespace) -> int:
         else:
             with open(tmp, "wb") as fh:
                 fig.savefig(fh, dpi=110, format=ext[1:])
-        outputs.commit()
-    except OSError as e:
-        outputs.abort()
-        raise write_error(args.out, e) from None
-    except BaseException:
-        outputs.abort()
-        raise
     plt.close(fig)
     print(f"{args.out}: {sum(len(ax.lines) for ax in fig.axes)} series")
     return 0

@@ -38,7 +38,7 @@ from .._protocol import PACKAGE as PROG
 from ..codec.packets import DecodedField, Packet
 from . import ros
 from .pipeline import LogDevice, PacketClock
-from .writers import COLUMN_SETS, Events, Layout, Outputs, Source, ToolError, f32_text, need, table_name, write_error
+from .writers import COLUMN_SETS, Events, Layout, Outputs, Source, ToolError, f32_text, need, table_name
 
 CHUNK_SIZE = 1 << 20
 
@@ -286,16 +286,8 @@ def export_mcap(args: argparse.Namespace) -> int:
     if args.log == "-":
         raise ToolError("--format mcap reads a log file, not stdin (the time model reads the file first)")
     topics = topics_of(args.topic_prefix, args.frame)
-    outputs = Outputs(args.force)
-    try:
+    with Outputs(args.force).writing(args.out) as outputs:
         counts, tally = write_mcap(args.log, args.out, args.device, topics, outputs)
-        outputs.commit()
-    except OSError as e:
-        outputs.abort()
-        raise write_error(args.out, e) from None
-    except BaseException:
-        outputs.abort()
-        raise
     for topic, n in sorted(counts.items()):
         print(f"{args.out}: {topic}: {n} messages")
     print(tally, file=sys.stderr)

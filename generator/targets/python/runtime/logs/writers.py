@@ -5,6 +5,7 @@ CSV, JSON-lines and Parquet writers.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import importlib
 import json
@@ -486,6 +487,20 @@ class Outputs:
                 pass
         self.files = []
         self._close_extra()
+
+    @contextlib.contextmanager
+    def writing(self, where: str) -> Iterator[Outputs]:
+        """The block that writes the outputs: they are committed when it ends and aborted when it
+        raises; an OSError (a full disk) becomes one `cannot write WHERE` ToolError."""
+        try:
+            yield self
+            self.commit()
+        except OSError as e:
+            self.abort()
+            raise write_error(where, e) from None
+        except BaseException:
+            self.abort()
+            raise
 
     def _close_extra(self) -> None:
         for f in self.extra:
