@@ -481,6 +481,10 @@ def _table_leaps(np: Any, gps: Any) -> Any:
     """`table_leap_seconds` of an int64 array of GPS ns."""
     at = np.array(_LEAP_GPS_NS, dtype=np.int64)
     values = np.array([0] + [v for _t, v in LEAP_TABLE], dtype=np.int64)
+    if len(gps):
+        lo, hi = np.searchsorted(at, [gps.min(), gps.max()], side="right")
+        if lo == hi:  # every instant between the same two leap seconds (a log mostly is)
+            return np.full(len(gps), values[lo], dtype=np.int64)
     return values[np.searchsorted(at, gps, side="right")]
 
 
