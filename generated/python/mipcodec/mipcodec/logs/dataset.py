@@ -485,9 +485,13 @@ def _join(
     group = np.cumsum(new) - 1
     rows = int(group[-1]) + 1 if n else 0
     row_offs = packets[new]
-    arrays: Dict[str, Any] = {}
+    arrays: Dict[str, Any] = {}  # name -> (rows filled, values, whether `rows` is rising)
+    seen: List[Tuple[Any, Any]] = []  # (offsets, group) of the tables so far: mostly the same packets
     for _key, offs, _idx, table in tables:
-        g = group[_positions(np, packets, offs)]
+        g = next((grp for o, grp in seen if len(o) == len(offs) and (o is offs or np.array_equal(o, offs))), None)
+        if g is None:
+            g = group[_positions(np, packets, offs)]
+            seen.append((offs, g))
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
@@ -498,7 +502,7 @@ def _join(
             col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
-                arrays[name] = (target, col)
+                arrays[name] = (target, col, True)  # (`target` rises: `g` does, its repeats dropped)
             else:  # first value wins: only the rows this column did not fill yet
                 have = np.zeros(rows, dtype=bool)
                 have[prev[0]] = True
@@ -507,6 +511,7 @@ def _join(
                     arrays[name] = (
                         np.concatenate([prev[0], target[extra]]),
                         pa.concat_arrays([prev[1], col.filter(to_arrow(np, pa, extra))]),
+                        False,
                     )
     # a row's time: its first packet with one (a row per packet: the packets' own, as made for
     # the set's tables)
@@ -520,9 +525,9 @@ def _join(
                 empty = nulls[t] = _nulls(pa, rows, t)
             out.append(empty)
             continue
-        where, col = entry
+        where, col, rising = entry
         col = _cast(pa, col, t)
-        if len(where) == rows and (rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
+        if len(where) == rows and (rising or rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
             out.append(col)  # every row, in order
             continue
         full_idx = np.full(rows, -1, dtype=np.int64)
