@@ -51,8 +51,8 @@ ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes f
 # and writes each part file of the split as its windows come, a row group per ROW_GROUP_BYTES of
 # rows (PENDING_BYTES of rows held in all, the largest written first beyond that).
 WINDOW_BYTES = 4 << 20
-ROW_GROUP_BYTES = 16 << 20
-PENDING_BYTES = 64 << 20
+ROW_GROUP_BYTES = 48 << 20
+PENDING_BYTES = 160 << 20
 # The time facts of a log's first windows kept from the clock pass for the decode (range_clocks)
 HELD_TIME_BYTES = 64 << 20
 COMPRESSION = "zstd"
