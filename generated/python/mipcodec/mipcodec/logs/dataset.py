@@ -917,7 +917,7 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
     return encodings, dictionary
 
 
-def _write_atomic(pa: Any, path: str, table: Any) -> None:
+def _write_atomic(pa: Any, path: str, table: Any, compression: Any = COMPRESSION) -> None:
     pq = importlib.import_module("pyarrow.parquet")
     directory, base = os.path.split(path)
     os.makedirs(directory, exist_ok=True)
@@ -928,7 +928,7 @@ def _write_atomic(pa: Any, path: str, table: Any) -> None:
             table,
             tmp,
             row_group_size=ROW_GROUP_ROWS,
-            compression=COMPRESSION,
+            compression=compression,
             use_dictionary=dictionary,
             column_encoding=encodings or None,
             write_statistics=True,
@@ -1324,7 +1324,8 @@ class _Part:
         if self.unsorted:  # a clock that stepped back: the whole part in order again
             table = self.pq.read_table(self.tmp, partitioning=None).replace_schema_metadata(self.schema.metadata)
             os.unlink(self.tmp)
-            _write_atomic(self.pa, self.path, _sorted(np, self.pa, table))
+            table = _sorted(np, self.pa, table)
+            _write_atomic(self.pa, self.path, table, _compression(table.slice(0, ROW_GROUP_ROWS)))
             return
         os.replace(self.tmp, self.path)
 
