@@ -574,7 +574,7 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
     again after the messy one), every part holds the rows of the one-window export in the same
     order (sorted by t_ns, nulls last, then offset, as docs/dataset.md says), and its columns
     carry the encodings docs/dataset.md names (delta for integers and times, byte-stream-split
-    for floats)."""
+    for floats; zstd, none for a column with no value in the part's first row group)."""
     dsm = ds()
     log = tmp_path / "w.bin"
     log.write_bytes(timed_log() + messy_log() + timed_log())
@@ -587,7 +587,7 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
     parts = sorted(str(p.relative_to(whole)) for p in whole.rglob("part-*.parquet"))
     assert parts == sorted(str(p.relative_to(cut)) for p in cut.rglob("part-*.parquet"))
     assert not list(cut.rglob(".*"))  # no temporary file left
-    groups = 0
+    groups = uncompressed = 0
     for rel in parts:
         a, b = pq.read_table(whole / rel, partitioning=None), pq.read_table(cut / rel, partitioning=None)
         assert a.schema.equals(b.schema), rel
@@ -607,7 +607,14 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
             "DELTA_BINARY_PACKED" in columns["t_ns"].encodings and "DELTA_BINARY_PACKED" in columns["offset"].encodings
         )
         assert "BYTE_STREAM_SPLIT" in columns["gps_tow"].encodings
+        # zstd, but none for a column without a value in the part's first row group
+        first = meta.row_group(0)
+        for name, chunk in columns.items():
+            empty = chunk.statistics.null_count == first.num_rows
+            assert chunk.compression == ("UNCOMPRESSED" if empty else "ZSTD"), (rel, name)
+            uncompressed += empty
     assert groups > 1  # the small row groups were written as the windows came
+    assert uncompressed  # (the samples tables' columns of the fields the log does not carry)
 
 
 def test_progress_bar_only_on_a_terminal(tmp_path):

@@ -481,6 +481,10 @@ def _table_leaps(np: Any, gps: Any) -> Any:
     """`table_leap_seconds` of an int64 array of GPS ns."""
     at = np.array(_LEAP_GPS_NS, dtype=np.int64)
     values = np.array([0] + [v for _t, v in LEAP_TABLE], dtype=np.int64)
+    if len(gps):
+        lo, hi = np.searchsorted(at, [gps.min(), gps.max()], side="right")
+        if lo == hi:  # every instant between the same two leap seconds (a log mostly is)
+            return np.full(len(gps), values[lo], dtype=np.int64)
     return values[np.searchsorted(at, gps, side="right")]
 
 
@@ -540,6 +544,16 @@ class BlockTimes:
             pos = np.searchsorted(self.offset, offsets)
             pos[pos >= n] = 0
             hit = self.offset[pos] == offsets
+        if bool(hit.all()):  # (each packet has a time fact: its entries as they are)
+            return {
+                "t_ns": self.t_ns[pos],
+                "t_valid": self.t_valid[pos],
+                "device_ns": self.device_ns[pos],
+                "device_valid": self.device_valid[pos],
+                "gps_week": self.gps_week[pos].astype(np.int32),
+                "gps_tow": self.gps_tow[pos],
+                "gps_valid": self.gps_valid[pos],
+            }
         return {
             "t_ns": np.where(hit, self.t_ns[pos], 0),
             "t_valid": hit & self.t_valid[pos],

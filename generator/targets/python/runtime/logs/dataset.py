@@ -51,8 +51,8 @@ ROW_GROUP_ROWS = 1 << 20  # rows per Parquet row group (docs/dataset.md: sizes f
 # and writes each part file of the split as its windows come, a row group per ROW_GROUP_BYTES of
 # rows (PENDING_BYTES of rows held in all, the largest written first beyond that).
 WINDOW_BYTES = 4 << 20
-ROW_GROUP_BYTES = 16 << 20
-PENDING_BYTES = 64 << 20
+ROW_GROUP_BYTES = 48 << 20
+PENDING_BYTES = 160 << 20
 # The time facts of a log's first windows kept from the clock pass for the decode (range_clocks)
 HELD_TIME_BYTES = 64 << 20
 COMPRESSION = "zstd"
@@ -72,13 +72,15 @@ def log_id(path: str) -> str:
     """The log's id: the first 16 hex digits of the SHA-256 of its whole content (read in pieces).
     ReadError when it cannot be read."""
     h = hashlib.sha256()
+    buf = bytearray(1 << 20)  # (one buffer read into: a fresh 4 MiB bytes per read cost page faults)
+    view = memoryview(buf)
     try:
-        with open(path, "rb") as f:
+        with open(path, "rb", buffering=0) as f:
             while True:
-                chunk = f.read(1 << 22)
-                if not chunk:
+                n = f.readinto(buf)
+                if not n:
                     break
-                h.update(chunk)
+                h.update(view[:n])
     except OSError as e:
         raise ReadError(e.strerror or str(e)) from None
     return h.hexdigest()[:16]
@@ -213,6 +215,13 @@ def samples_schema(set_id: int) -> Any:
     return pa.schema(fields)
 
 
+@functools.cache
+def _value_columns(set_id: int) -> Tuple[Tuple[str, Any], ...]:
+    """(name, type) of the value columns of `<set>.samples` (after the base columns)."""
+    schema = samples_schema(set_id)
+    return tuple((schema.field(j).name, schema.field(j).type) for j in range(len(BASE_COLUMNS), len(schema)))
+
+
 def data_sets() -> List[int]:
     """The data sets with tables (those with field layouts, the shared set excluded)."""
     shared = getattr(registry, "SHARED_SET", None)
@@ -337,27 +346,38 @@ def decode_split(
     )
     per_set: Dict[int, List[Tuple[Any, Any, Any, Any]]] = {}
     for (set_id, cls), parts in pieces.items():
-        offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
-        idx = np.concatenate([np.asarray(p[1], dtype=np.int64) for p in parts])
+        if len(parts) == 1:
+            offs = np.asarray(parts[0][0], dtype=np.int64) + base
+            idx = np.asarray(parts[0][1], dtype=np.int64)
+        else:
+            offs = np.concatenate([np.asarray(p[0], dtype=np.int64) for p in parts]) + base
+            idx = np.concatenate([np.asarray(p[1], dtype=np.int64) for p in parts])
         if len(parts) == 1 and bool((offs[1:] > offs[:-1]).all()):
-            order = np.arange(len(offs))  # one entry per packet, in stream order (the usual case)
+            # one entry per packet, in stream order (the usual case): the rows in [start, end)
+            # are a slice
+            lo, hi = (int(i) for i in np.searchsorted(offs, [start, end]))
+            if lo == hi:
+                continue
+            offs, idx = offs[lo:hi], idx[lo:hi]
+            sel = None
+            contiguous = True
         else:
             order = np.lexsort((idx, offs))
             offs, idx = offs[order], idx[order]
-        keep = (offs >= start) & (offs < end)
-        if not keep.any():
-            continue
-        sel = order[keep]
-        offs, idx = offs[keep], idx[keep]
+            keep = (offs >= start) & (offs < end)
+            if not keep.any():
+                continue
+            sel = order[keep]
+            offs, idx = offs[keep], idx[keep]
+            lo = int(sel[0])
+            contiguous = bool(sel[-1] - lo == len(sel) - 1 and (len(sel) < 2 or (np.diff(sel) == 1).all()))
         key = (cls.SET, cls.DESCRIPTOR, cls.DEVICE)
         values = []
-        lo = int(sel[0])
-        contiguous = bool(sel[-1] - lo == len(sel) - 1 and (len(sel) < 2 or (np.diff(sel) == 1).all()))
         for j in range(2, len(parts[0][2])):
             chunk = unify(pa, [p[2][j] for p in parts])
             col = as_arrow(pa, chunk[0] if len(chunk) == 1 else pa.concat_arrays(chunk))
             # rows in stream order already (the usual case): a slice, not a copy
-            values.append(col.slice(lo, len(sel)) if contiguous else col.take(_ints(np, pa, sel)))
+            values.append(col.slice(lo, len(offs)) if contiguous else col.take(_ints(np, pa, sel)))
         schema = table_schema(set_id, key)
         table = _table(np, pa, schema, times, offs, log, values)
         result.tables[table_name(set_id, cls)] = table
@@ -370,7 +390,7 @@ def decode_split(
     packets = packets[(packets >= start) & (packets < end)]
     result.packets = int(len(packets))
     if len(packets):
-        t = times.t_ns_of(packets)
+        t = times.t_ns_known(start, end)
         if len(t):
             result.first_t_ns, result.last_t_ns = int(t.min()), int(t.max())
     return result
@@ -452,8 +472,10 @@ def _join(
         present[pos] = True
         keyed |= present
         same &= present[1:] == present[:-1]
+        keep_first = None if bool(first.all()) else to_arrow(np, pa, first)
         for c in range(len(BASE_COLUMNS), table.num_columns):
-            col = _chunk(table.column(c)).filter(to_arrow(np, pa, first))
+            col = _chunk(table.column(c))
+            col = col if keep_first is None else col.filter(keep_first)
             vals = np.zeros(n, dtype=np.float64)
             vals[pos] = _floats(np, pa, col)
             same &= (vals[1:] == vals[:-1]) | ~present[1:]
@@ -465,9 +487,13 @@ def _join(
     group = np.cumsum(new) - 1
     rows = int(group[-1]) + 1 if n else 0
     row_offs = packets[new]
-    arrays: Dict[str, Any] = {}
+    arrays: Dict[str, Any] = {}  # name -> (rows filled, values, whether `rows` is rising)
+    seen: List[Tuple[Any, Any]] = []  # (offsets, group) of the tables so far: mostly the same packets
     for _key, offs, _idx, table in tables:
-        g = group[_positions(np, packets, offs)]
+        g = next((grp for o, grp in seen if len(o) == len(offs) and (o is offs or np.array_equal(o, offs))), None)
+        if g is None:
+            g = group[_positions(np, packets, offs)]
+            seen.append((offs, g))
         firsts = np.ones(len(g), dtype=bool)
         firsts[1:] = g[1:] != g[:-1]
         target = g[firsts]
@@ -478,7 +504,7 @@ def _join(
             col = col if take is None else col.take(take)
             prev = arrays.get(name)
             if prev is None:
-                arrays[name] = (target, col)
+                arrays[name] = (target, col, True)  # (`target` rises: `g` does, its repeats dropped)
             else:  # first value wins: only the rows this column did not fill yet
                 have = np.zeros(rows, dtype=bool)
                 have[prev[0]] = True
@@ -487,19 +513,23 @@ def _join(
                     arrays[name] = (
                         np.concatenate([prev[0], target[extra]]),
                         pa.concat_arrays([prev[1], col.filter(to_arrow(np, pa, extra))]),
+                        False,
                     )
     # a row's time: its first packet with one (a row per packet: the packets' own, as made for
     # the set's tables)
     out = times.base_columns(row_offs, log, None if rows == n else times.row_times(packets, group, rows))
-    for j in range(len(BASE_COLUMNS), len(schema)):
-        f = schema.field(j)
-        entry = arrays.get(f.name)
+    nulls: Dict[Any, Any] = {}  # type -> the all-null column of this table's rows (one per type)
+    for name, t in _value_columns(set_id):
+        entry = arrays.get(name)
         if entry is None:
-            out.append(_nulls(pa, rows, f.type))
+            empty = nulls.get(t)
+            if empty is None:
+                empty = nulls[t] = _nulls(pa, rows, t)
+            out.append(empty)
             continue
-        where, col = entry
-        col = _cast(pa, col, f.type)
-        if len(where) == rows and (rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
+        where, col, rising = entry
+        col = _cast(pa, col, t)
+        if len(where) == rows and (rising or rows == 0 or (where[0] == 0 and (np.diff(where) == 1).all())):
             out.append(col)  # every row, in order
             continue
         full_idx = np.full(rows, -1, dtype=np.int64)
@@ -544,12 +574,31 @@ def _floats(np: Any, pa: Any, col: Any) -> Any:
     return np.where(bool_values(np, col.is_valid()), out, 0.0) if col.null_count else out
 
 
+_REPEATED: Dict[str, Any] = {}  # text -> an array of copies of it, sliced by `_repeated`
+
+
 def _repeated(np: Any, pa: Any, text: str, n: int) -> Any:
-    """An arrow string array of `n` copies of `text`."""
+    """An arrow string array of `n` copies of `text` (a slice of one array per text, grown as
+    needed)."""
+    have = _REPEATED.get(text)
+    if have is None or len(have) < n:
+        size = max(n, 1 << 16, 2 * len(have) if have is not None else 0)
+        if size * len(text.encode("utf-8")) >= 1 << 31:  # (a large_string: made for `n` alone)
+            return _repeated_array(np, pa, text, n)
+        if len(_REPEATED) > 8:
+            _REPEATED.clear()
+        have = _REPEATED[text] = _repeated_array(np, pa, text, size)
+    return have.slice(0, n)
+
+
+def _repeated_array(np: Any, pa: Any, text: str, n: int) -> Any:
     body = text.encode("utf-8")
     offsets = np.arange(n + 1, dtype=np.int64) * len(body)
     kind, width = (pa.string(), np.int32) if n * len(body) < 1 << 31 else (pa.large_string(), np.int64)
     return pa.Array.from_buffers(kind, n, [None, pa.py_buffer(offsets.astype(width)), pa.py_buffer(body * n)], 0)
+
+
+_TIMESTAMP: List[Any] = []  # [pa.timestamp("us", tz="UTC")], made on first use
 
 
 _NULLS: Dict[Any, Any] = {}  # type -> an all-null array, sliced by `_nulls` (grown as needed)
@@ -604,6 +653,13 @@ class _PacketTimes:
         vals, valid = self.columns(offs)["t_ns"]
         return vals[valid]
 
+    def t_ns_known(self, start: int, end: int) -> Any:
+        """The known t_ns of the packets in [start, end) (those of `t_ns_of` of all of them: a
+        packet without a time fact has none; the block's packets are sorted by offset)."""
+        b = self.block
+        lo, hi = (int(i) for i in self.np.searchsorted(b.offset, [start, end]))
+        return b.t_ns[lo:hi][b.t_valid[lo:hi]]
+
     def row_times(self, packets: Any, group: Any, rows: int) -> Dict[str, Tuple[Any, Any]]:
         """Per joined row: each time column from the row's first packet that has it."""
         np = self.np
@@ -623,6 +679,8 @@ class _PacketTimes:
         """Arrow arrays of the base columns (BASE_COLUMNS order) of rows at packet offsets `offs`."""
         np = self.np
         pa = _need("pyarrow")
+        if not _TIMESTAMP:
+            _TIMESTAMP.append(pa.timestamp("us", tz="UTC"))
         offs = np.asarray(offs, dtype=np.int64)
         if given is None:
             for seen, arrays in self.made:
@@ -630,10 +688,15 @@ class _PacketTimes:
                     return list(arrays)
         cols = given if given is not None else self.columns(offs)
         t_ns, t_ok = cols["t_ns"]
-        t_ns = np.asarray(t_ns, dtype=np.int64)
+        t_ns = np.ascontiguousarray(t_ns, dtype=np.int64)
+        n = len(t_ns)
+        # t_ns and time share one validity bitmap; time made as a timestamp from its buffers (a
+        # cast would copy it)
+        missing = n - int(np.count_nonzero(t_ok))
+        mask = pa.py_buffer(np.packbits(t_ok, bitorder="little")) if missing else None
         out = [
-            to_arrow(np, pa, t_ns, t_ok),
-            to_arrow(np, pa, t_ns // 1000, t_ok).cast(pa.timestamp("us", tz="UTC")),
+            pa.Array.from_buffers(pa.int64(), n, [mask, pa.py_buffer(t_ns)], missing),
+            pa.Array.from_buffers(_TIMESTAMP[0], n, [mask, pa.py_buffer(t_ns // 1000)], missing),
             to_arrow(np, pa, offs),
             _repeated(np, pa, log, len(offs)),
         ]
@@ -721,9 +784,42 @@ def write_split(out_dir: str, result: SplitResult) -> List[str]:
     return written
 
 
-def _sorted(np: Any, pa: Any, table: Any) -> Any:
+def _sorted(np: Any, pa: Any, table: Any, memo: Optional[Dict[Any, Any]] = None) -> Any:
     """The table's rows by (t_ns, nulls last; then offset): taken only when they are not in that
-    order already (a log's rows mostly are)."""
+    order already (a log's rows mostly are). `memo` (a dict, for the tables of one window, alive
+    together) keeps the order found per set of time and offset columns: the tables of a data set
+    mostly share them (`_PacketTimes.base_columns`)."""
+    key = _order_key(table) if memo is not None else None
+    plan = memo.get(key) if memo is not None and key is not None else None
+    if plan is None:
+        plan = _order(np, pa, table)
+        if memo is not None and key is not None:
+            memo[key] = plan
+    if plan is True:
+        return table
+    if isinstance(plan, int):
+        return pa.concat_tables([table.slice(plan), table.slice(0, plan)])
+    return table.take(plan)
+
+
+def _order_key(table: Any) -> Optional[Tuple[Any, ...]]:
+    """What the rows' order and dates depend on: the buffers of t_ns, time and offset (their
+    addresses, offsets and lengths); None when a column has several chunks (a combined copy
+    would be freed, and its address reused)."""
+    key: List[Any] = [table.num_rows]
+    for name in ("t_ns", "time", "offset"):
+        col = table.column(name)
+        if col.num_chunks != 1:
+            return None
+        a = col.chunk(0)
+        key.append(a.offset)
+        key.extend(None if b is None else b.address for b in a.buffers())
+    return tuple(key)
+
+
+def _order(np: Any, pa: Any, table: Any) -> Any:
+    """How `_sorted` puts the rows in order: True (they are), k (the last rows first, from k:
+    a log's first rows without a time), or the indices to take (an arrow array)."""
     t_ns = _chunk(table.column("t_ns"))
     offs = values_view(np, _chunk(table.column("offset")), np.int64)
     valid = np.ones(len(t_ns), dtype=bool) if t_ns.null_count == 0 else bool_values(np, t_ns.is_valid())
@@ -732,28 +828,45 @@ def _sorted(np: Any, pa: Any, table: Any) -> Any:
         t = np.where(valid, t, 0)
     known = int(valid.sum())
     if known == len(t) and bool((t[1:] > t[:-1]).all()):  # rising times (most tables): in order
-        return table
+        return True
     if bool(valid[:known].all()):  # nulls (if any) last: in order when each part is (a stable sort)
         step = np.diff(t[:known])
         if bool((step >= 0).all() and (np.diff(offs[:known])[step == 0] >= 0).all()):
             if bool((np.diff(offs[known:]) >= 0).all()):
-                return table
+                return True
     if 0 < known < len(t) and not valid[: len(t) - known].any():  # nulls first (a log's start):
         k = len(t) - known  # the known rows then the null rows, when each part is in order
         step = np.diff(t[k:])
         if bool((step >= 0).all() and (np.diff(offs[k:])[step == 0] >= 0).all()):
             if bool((np.diff(offs[:k]) >= 0).all()):
-                return pa.concat_tables([table.slice(k), table.slice(0, k)])
+                return k
     order = np.lexsort((offs, t, ~valid))  # stable, as the sort it stands for
-    return table.take(_ints(np, pa, order))
+    return _ints(np, pa, order)
 
 
 DAY_US = 86_400_000_000
 
 
-def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
+def _by_date(np: Any, pa: Any, table: Any, memo: Optional[Dict[Any, Any]] = None) -> List[Tuple[Optional[str], Any]]:
     """The table's rows by UTC date of `time` ("YYYY-MM-DD"; None: no time), in date order with
-    None last; rows in their order within each date."""
+    None last; rows in their order within each date. `memo` as `_sorted`'s (the dates of tables
+    that share their time columns found once)."""
+    key = _order_key(table) if memo is not None else None
+    plan = memo.get(key) if memo is not None and key is not None else None
+    if plan is None:
+        plan = _dates(np, pa, table)
+        if memo is not None and key is not None:
+            memo[key] = plan
+    if len(plan) == 1:
+        return [(plan[0][0], table)]
+    out: List[Tuple[Optional[str], Any]] = []
+    for text, where in plan:
+        out.append((text, table.slice(where[0], where[1]) if isinstance(where, tuple) else table.filter(where)))
+    return out
+
+
+def _dates(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
+    """`_by_date`'s plan: (date text, rows) per date, rows as (start, count) or a mask (arrow)."""
     import datetime
 
     time_col = _chunk(table.column("time"))
@@ -762,7 +875,7 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     if not time_col.null_count and len(us):  # one date (most tables): from the extremes, no copy
         first = int(us.min()) // DAY_US
         if int(us.max()) // DAY_US == first:
-            return [((epoch + datetime.timedelta(days=first)).isoformat(), table)]
+            return [((epoch + datetime.timedelta(days=first)).isoformat(), (0, len(us)))]
     if time_col.null_count:
         us = np.where(bool_values(np, time_col.is_valid()), us, np.iinfo(np.int64).max)
     day = np.where(us == np.iinfo(np.int64).max, np.iinfo(np.int64).max, us // DAY_US)
@@ -775,12 +888,12 @@ def _by_date(np: Any, pa: Any, table: Any) -> List[Tuple[Optional[str], Any]]:
     for k, d in enumerate(days):
         text = None if d == np.iinfo(np.int64).max else (epoch + datetime.timedelta(days=int(d))).isoformat()
         if len(days) == 1:
-            out.append((text, table))
+            out.append((text, (0, len(day))))
         elif bounds is not None:
             end = int(bounds[k + 1]) if k + 1 < len(days) else len(day)
-            out.append((text, table.slice(int(bounds[k]), end - int(bounds[k]))))
+            out.append((text, (int(bounds[k]), end - int(bounds[k]))))
         else:
-            out.append((text, table.filter(to_arrow(np, pa, day == d))))
+            out.append((text, to_arrow(np, pa, day == d)))
     return out
 
 
@@ -804,7 +917,7 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
     return encodings, dictionary
 
 
-def _write_atomic(pa: Any, path: str, table: Any) -> None:
+def _write_atomic(pa: Any, path: str, table: Any, compression: Any = COMPRESSION) -> None:
     pq = importlib.import_module("pyarrow.parquet")
     directory, base = os.path.split(path)
     os.makedirs(directory, exist_ok=True)
@@ -815,7 +928,7 @@ def _write_atomic(pa: Any, path: str, table: Any) -> None:
             table,
             tmp,
             row_group_size=ROW_GROUP_ROWS,
-            compression=COMPRESSION,
+            compression=compression,
             use_dictionary=dictionary,
             column_encoding=encodings or None,
             write_statistics=True,
@@ -1112,12 +1225,17 @@ class SplitWriter:
         self.parts: Dict[Tuple[str, Optional[str]], _Part] = {}
 
     def add(self, tables: Dict[str, Any]) -> None:
+        order: Dict[Any, Any] = {}
+        dates: Dict[Any, Any] = {}
         for name in sorted(tables):
             table = tables[name]
             if table.num_rows == 0:
                 continue
-            table = _sorted(self.np, self.pa, table)
-            for date, rows in _by_date(self.np, self.pa, table):
+            key = _order_key(table)
+            table = _sorted(self.np, self.pa, table, order)
+            if key is not None and order.get(key) is not True:
+                key = None  # (rows taken: new columns, found again)
+            for date, rows in _by_date(self.np, self.pa, table, dates if key is not None else None):
                 part = self.parts.get((name, date))
                 if part is None:
                     part = self.parts[(name, date)] = self._open(name, date, table.schema)
@@ -1191,7 +1309,7 @@ class _Part:
             self.writer = self.pq.ParquetWriter(
                 self.tmp,
                 self.schema,
-                compression=COMPRESSION,
+                compression=_compression(table),
                 use_dictionary=dictionary,
                 column_encoding=encodings or None,
                 write_statistics=True,
@@ -1206,7 +1324,8 @@ class _Part:
         if self.unsorted:  # a clock that stepped back: the whole part in order again
             table = self.pq.read_table(self.tmp, partitioning=None).replace_schema_metadata(self.schema.metadata)
             os.unlink(self.tmp)
-            _write_atomic(self.pa, self.path, _sorted(np, self.pa, table))
+            table = _sorted(np, self.pa, table)
+            _write_atomic(self.pa, self.path, table, _compression(table.slice(0, ROW_GROUP_ROWS)))
             return
         os.replace(self.tmp, self.path)
 
@@ -1220,6 +1339,15 @@ class _Part:
             os.unlink(self.tmp)
         except OSError:
             pass
+
+
+def _compression(table: Any) -> Dict[str, str]:
+    """The compression of each column of a part, from its first rows (docs/dataset.md, "Storage"):
+    COMPRESSION, but none for a column without a value in them (most columns of a `<set>.samples`
+    table: the fields the device does not send), whose pages hold only the definition levels of
+    nulls, a few bytes that zstd does not shrink; compressing them cost the writer a zstd context
+    per page."""
+    return {f.name: "NONE" if c.null_count == len(c) else COMPRESSION for f, c in zip(table.schema, table.columns)}
 
 
 def _held_bytes(table: Any) -> int:
