@@ -36,6 +36,7 @@ import pytest
 
 from tests.conformance.test_device_c import tool  # noqa: F401 - the C tool's fixture
 from tests.conformance.test_device_cli import PACKAGE_DIR, Sim, mip
+from tests.helpers.procs import as_in_a_terminal
 
 SERIAL = "6284.424242"
 MODEL = "cv7_ins"
@@ -146,7 +147,13 @@ def test_a_recording_begins_with_the_device_and_skips_nothing(
 def test_sigint_leaves_a_whole_log(sim: Sim, command: List[str], tmp_path: Path) -> None:
     log = tmp_path / "cv7.bin"
     env = {**os.environ, "PYTHONPATH": str(PACKAGE_DIR)}
-    proc = subprocess.Popen([*command, sim.address, "record", str(log)], stderr=subprocess.PIPE, text=True, env=env)
+    proc = subprocess.Popen(
+        [*command, sim.address, "record", str(log)],
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+        preexec_fn=as_in_a_terminal,
+    )
     deadline = time.monotonic() + 30
     while (not log.exists() or log.stat().st_size < 50000) and time.monotonic() < deadline:
         time.sleep(0.05)

@@ -44,6 +44,7 @@ import pytest
 
 from tests.conformance.test_device_cli import PACKAGE_DIR, Sim
 from tests.conformance.test_simulator_world import command, pkg, sample, sim_mod, world_mod
+from tests.helpers.procs import as_in_a_terminal
 
 ntrip_mod = __import__("mipcodec.device.ntrip", fromlist=["ntrip"])
 FIX = pkg.types.GnssFixTypeCv7
@@ -466,17 +467,13 @@ def test_ntrip1_icy_stream_reconnects_and_stops_on_ctrl_c(cv7: Sim) -> None:
     c = Caster("1.0", bare_lf=True, drop_first_after=0.5)
     env = {**os.environ, "PYTHONPATH": str(PACKAGE_DIR)}
     cmd = [sys.executable, "-m", "mipcodec", "device", cv7.address, "ntrip", c.url(), "--gga-interval", "0"]
-    # Ctrl-C in a terminal: SIGINT at its default in the child. A test run started in the
-    # background of a non-interactive shell (`.ci/run &`, nohup) has SIGINT ignored, which its
-    # children inherit, and Python then keeps it ignored (no KeyboardInterrupt: the client would
-    # stream on, as a background job should).
     proc = subprocess.Popen(
         cmd,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
         env=env,
-        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+        preexec_fn=as_in_a_terminal,
     )
     try:
         lines = [proc.stdout.readline() for _ in range(3)]  # 3 s of status lines

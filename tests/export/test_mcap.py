@@ -31,6 +31,7 @@ import pytest
 from tests.conformance.test_device_c import tool  # noqa: F401 - the C tool's fixture
 from tests.conformance.test_device_cli import Sim
 from tests.helpers.generated import GENERATED_PYTHON, python_package
+from tests.helpers.procs import as_in_a_terminal
 
 pkg = python_package("mipcodec")
 fleet = importlib.import_module("mipcodec.fleet")
@@ -258,6 +259,7 @@ def test_live_recording_of_the_simulator(tmp_path):
             stdout=subprocess.PIPE,
             stderr=subprocess.PIPE,
             text=True,
+            preexec_fn=as_in_a_terminal,
         )
         deadline = time.monotonic() + 30
         while time.monotonic() < deadline and not list(tmp_path.glob(".live.mcap.part-*.bin")):

@@ -28,6 +28,7 @@ import numpy as np
 import pytest
 
 from tests.export.test_export import CAPTURE, PACKAGES, ROOT, ext_build, pkg, read_table, vector_stream
+from tests.helpers.procs import as_in_a_terminal
 
 GENERATED = str(ROOT / "generated" / "python" / "mipcodec")
 
@@ -89,6 +90,7 @@ def test_follow_stopped_by_ctrl_c_writes_what_was_read(tmp_path, join):
         env=dict(os.environ, PYTHONPATH=GENERATED),
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
+        preexec_fn=as_in_a_terminal,
     )
     time.sleep(1.5)
     with log.open("ab") as fh:  # more packets while it follows
@@ -122,6 +124,7 @@ def test_ctrl_c_without_follow_leaves_whole_tables_or_none(tmp_path, delay):
         env=dict(os.environ, PYTHONPATH=GENERATED),
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
+        preexec_fn=as_in_a_terminal,
     )
     time.sleep(delay)
     proc.send_signal(signal.SIGINT)
@@ -321,6 +324,7 @@ def test_dev_zero_has_no_end_but_bounded_memory(tmp_path):
         env=dict(os.environ, PYTHONPATH=where),
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
+        preexec_fn=as_in_a_terminal,
     )
 
     def rss() -> int:
@@ -347,7 +351,12 @@ def test_dev_zero_has_no_end_but_bounded_memory(tmp_path):
         late = rss()
     finally:
         proc.send_signal(signal.SIGINT)
-        proc.communicate(timeout=60)
+        try:
+            proc.communicate(timeout=60)
+        except subprocess.TimeoutExpired:  # never left reading /dev/zero after the test
+            proc.kill()
+            proc.communicate()
+            raise
     assert late - early < 16 * 1024, (early, late)  # 256 MiB more read, memory flat
     assert proc.returncode == 130
 

@@ -452,7 +452,9 @@ app)
     ;;
 example)
     # cargo run (not the binary under target/): both crates' examples are named getting_started.
-    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --example getting_started -- "$@"
+    # With the tools' features (`serial`), so the crate built for the tools is the one it links
+    # (the example uses none of it; other features would compile the crate once more).
+    exec cargo run --release --quiet --manifest-path "$(manifest "$PACKAGE")" --features serial --example getting_started -- "$@"
     ;;
 *)
     usage
