@@ -32,7 +32,7 @@ import os
 import re
 import sys
 from dataclasses import dataclass, field
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple
 
 from .. import _columns, registry
 from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
@@ -789,17 +789,23 @@ def _sorted(np: Any, pa: Any, table: Any, memo: Optional[Dict[Any, Any]] = None)
     order already (a log's rows mostly are). `memo` (a dict, for the tables of one window, alive
     together) keeps the order found per set of time and offset columns: the tables of a data set
     mostly share them (`_PacketTimes.base_columns`)."""
-    key = _order_key(table) if memo is not None else None
-    plan = memo.get(key) if memo is not None and key is not None else None
-    if plan is None:
-        plan = _order(np, pa, table)
-        if memo is not None and key is not None:
-            memo[key] = plan
+    plan = _planned(memo, table, lambda: _order(np, pa, table))
     if plan is True:
         return table
     if isinstance(plan, int):
         return pa.concat_tables([table.slice(plan), table.slice(0, plan)])
     return table.take(plan)
+
+
+def _planned(memo: Optional[Dict[Any, Any]], table: Any, plan: Callable[[], Any]) -> Any:
+    """`plan()`, kept in `memo` (when given) under the table's `_order_key`: found once for the
+    tables of a window that share their time and offset columns."""
+    key = _order_key(table) if memo is not None else None
+    if memo is None or key is None:
+        return plan()
+    if key not in memo:
+        memo[key] = plan()
+    return memo[key]
 
 
 def _order_key(table: Any) -> Optional[Tuple[Any, ...]]:
@@ -851,12 +857,7 @@ def _by_date(np: Any, pa: Any, table: Any, memo: Optional[Dict[Any, Any]] = None
     """The table's rows by UTC date of `time` ("YYYY-MM-DD"; None: no time), in date order with
     None last; rows in their order within each date. `memo` as `_sorted`'s (the dates of tables
     that share their time columns found once)."""
-    key = _order_key(table) if memo is not None else None
-    plan = memo.get(key) if memo is not None and key is not None else None
-    if plan is None:
-        plan = _dates(np, pa, table)
-        if memo is not None and key is not None:
-            memo[key] = plan
+    plan = _planned(memo, table, lambda: _dates(np, pa, table))
     if len(plan) == 1:
         return [(plan[0][0], table)]
     out: List[Tuple[Optional[str], Any]] = []
