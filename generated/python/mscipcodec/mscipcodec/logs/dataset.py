@@ -37,6 +37,7 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 from .. import _columns, registry
 from .._protocol import CHECKSUM_SIZE, HEADER_SIZE, LENGTH_OFFSET, MAX_PACKET, SYNC, TIMESTAMPS
 from .._protocol import PACKAGE as PROG
+from . import parquet_part
 from .arrow import as_arrow, to_arrow, unify
 from .export import FastExporter
 from .identity import UNKNOWN, Identity, ReadAt, ReadError, file_reader, log_identity, partition_value
@@ -918,21 +919,14 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
     return encodings, dictionary
 
 
-def _write_atomic(pa: Any, path: str, table: Any, compression: Any = COMPRESSION) -> None:
+def _write_atomic(pa: Any, path: str, table: Any) -> None:
     pq = importlib.import_module("pyarrow.parquet")
     directory, base = os.path.split(path)
     os.makedirs(directory, exist_ok=True)
     tmp = os.path.join(directory, f".{base}.tmp-{os.getpid()}")
-    encodings, dictionary = _encodings(pa, table.schema)
     try:
-        pq.write_table(
-            table,
-            tmp,
-            row_group_size=ROW_GROUP_ROWS,
-            compression=compression,
-            use_dictionary=dictionary,
-            column_encoding=encodings or None,
-            write_statistics=True,
+        parquet_part.write_table(
+            pq, pa, tmp, table, _options(pa, table.schema), COMPRESSION, ROW_GROUP_ROWS, _TEMPLATES
         )
         os.replace(tmp, path)
     except BaseException:
@@ -941,6 +935,17 @@ def _write_atomic(pa: Any, path: str, table: Any, compression: Any = COMPRESSION
         except OSError:
             pass
         raise
+
+
+def _options(pa: Any, schema: Any) -> Dict[str, Any]:
+    """pyarrow's writer options of a part with `schema` (`_encodings`; statistics on)."""
+    encodings, dictionary = _encodings(pa, schema)
+    return {"use_dictionary": dictionary, "column_encoding": encodings or None, "write_statistics": True}
+
+
+# Each table schema's Parquet template (parquet_part): the footer's schema and every column's
+# all-null chunk, made once per schema (a few hundred tables in the spec at most).
+_TEMPLATES: Dict[Any, Any] = {}
 
 
 def remove_parts(out_dir: str, log: str, keep: Iterable[str] = ()) -> int:
@@ -1306,16 +1311,11 @@ class _Part:
         table = self.pa.concat_tables(self.pending)
         self.pending, self.pending_bytes = [], 0
         if self.writer is None:
-            encodings, dictionary = _encodings(self.pa, self.schema)
-            self.writer = self.pq.ParquetWriter(
-                self.tmp,
-                self.schema,
-                compression=_compression(table),
-                use_dictionary=dictionary,
-                column_encoding=encodings or None,
-                write_statistics=True,
+            options = _options(self.pa, self.schema)
+            self.writer = parquet_part.PartFile(
+                self.pq, self.pa, self.tmp, self.schema, options, COMPRESSION, ROW_GROUP_ROWS, _TEMPLATES
             )
-        self.writer.write_table(table, row_group_size=ROW_GROUP_ROWS)
+        self.writer.write(table)
 
     def finish(self, np: Any) -> None:
         self.flush()
@@ -1325,30 +1325,20 @@ class _Part:
         if self.unsorted:  # a clock that stepped back: the whole part in order again
             table = self.pq.read_table(self.tmp, partitioning=None).replace_schema_metadata(self.schema.metadata)
             os.unlink(self.tmp)
-            table = _sorted(np, self.pa, table)
-            _write_atomic(self.pa, self.path, table, _compression(table.slice(0, ROW_GROUP_ROWS)))
+            _write_atomic(self.pa, self.path, _sorted(np, self.pa, table))
             return
         os.replace(self.tmp, self.path)
 
     def discard(self) -> None:
         try:
             if self.writer is not None:
-                self.writer.close()
+                self.writer.abort()
         except Exception:  # the write that failed already said why
             pass
         try:
             os.unlink(self.tmp)
         except OSError:
             pass
-
-
-def _compression(table: Any) -> Dict[str, str]:
-    """The compression of each column of a part, from its first rows (docs/dataset.md, "Storage"):
-    COMPRESSION, but none for a column without a value in them (most columns of a `<set>.samples`
-    table: the fields the device does not send), whose pages hold only the definition levels of
-    nulls, a few bytes that zstd does not shrink; compressing them cost the writer a zstd context
-    per page."""
-    return {f.name: "NONE" if c.null_count == len(c) else COMPRESSION for f, c in zip(table.schema, table.columns)}
 
 
 def _held_bytes(table: Any) -> int:
