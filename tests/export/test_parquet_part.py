@@ -35,7 +35,7 @@ def dataset_module():
 
 def table(rows: int = ROWS, valued=lambda name: not name.startswith("n"), seed: int = 1) -> pa.Table:
     """Columns of every type the dataset writes (docs/dataset.md "Columns"): the base columns
-    (`offset` not nullable), then values; the columns `valued` refuses all null."""
+    (`offset` and `log` not nullable, as in the dataset), then values; the columns `valued` refuses all null."""
     rng = np.random.default_rng(seed)
     types = {
         "f32": pa.float32(),
@@ -69,7 +69,9 @@ def table(rows: int = ROWS, valued=lambda name: not name.startswith("n"), seed: 
                 cols[col] = pa.array(rng.integers(0, 100, size=rows), pa.int64()).cast(t)
     schema = pa.schema(
         [
-            pa.field(n, c.type, nullable=n != "offset", metadata={"units": "m/s"} if n == "v_f32" else None)
+            pa.field(
+                n, c.type, nullable=n not in ("offset", "log"), metadata={"units": "m/s"} if n == "v_f32" else None
+            )
             for n, c in cols.items()
         ],
         metadata={"mipcodec.log": "0123456789abcdef", "mipcodec.split": "000000000000"},
@@ -77,18 +79,11 @@ def table(rows: int = ROWS, valued=lambda name: not name.startswith("n"), seed: 
     return pa.table(list(cols.values()), schema=schema)
 
 
-def write_ours(path, t: pa.Table, row_group_rows: int = 1 << 20, templates=None):
+def write_ours(path, t: pa.Table, row_group_rows: int = 1 << 20, templates=None, constant=()):
     d = dataset_module()
-    part_module().write_table(
-        pq,
-        pa,
-        str(path),
-        t,
-        d._options(pa, t.schema),
-        d.COMPRESSION,
-        row_group_rows,
-        {} if templates is None else templates,
-    )
+    templates = {} if templates is None else templates
+    options = d._options(pa, t.schema)
+    part_module().write_table(pq, pa, str(path), t, options, d.COMPRESSION, row_group_rows, templates, constant)
 
 
 def write_pyarrows(path, t: pa.Table):
@@ -221,3 +216,27 @@ def test_a_failed_write_leaves_no_footer_and_raises(tmp_path):
     part.abort()
     with pytest.raises(pa.ArrowInvalid):
         pq.read_table(path)
+
+
+def test_a_constant_text_column_goes_as_a_dictionary_of_its_value(tmp_path):
+    t = table()
+    write_ours(tmp_path / "part.parquet", t, row_group_rows=2000, constant=("log",))
+    back = pq.read_table(tmp_path / "part.parquet")
+    assert back.equals(t) and back.schema.field("log").type == pa.string()
+    md = pq.read_metadata(tmp_path / "part.parquet")
+    at = t.schema.get_field_index("log")
+    for g in range(md.num_row_groups):
+        chunk = md.row_group(g).column(at)
+        assert chunk.has_dictionary_page and "RLE_DICTIONARY" in chunk.encodings
+        assert chunk.statistics.min == chunk.statistics.max == "0123456789abcdef"
+    # not one value (first and last rows differ): written as given, PLAIN
+    logs = pa.array(["0123456789abcdef"] * (t.num_rows - 1) + ["fedcba9876543210"])
+    other = t.set_column(at, t.schema.field("log"), logs)
+    write_ours(tmp_path / "other.parquet", other, constant=("log",))
+    assert pq.read_table(tmp_path / "other.parquet").equals(other)
+    chunk = pq.read_metadata(tmp_path / "other.parquet").row_group(0).column(at)
+    assert not chunk.has_dictionary_page
+    # a column that can be null is never taken as constant
+    write_ours(tmp_path / "state.parquet", t, constant=("v_json",))
+    write_pyarrows(tmp_path / "pyarrow.parquet", t)
+    assert (tmp_path / "state.parquet").read_bytes() == (tmp_path / "pyarrow.parquet").read_bytes()

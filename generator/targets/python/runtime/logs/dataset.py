@@ -912,7 +912,7 @@ def _encodings(pa: Any, schema: Any) -> Tuple[Dict[str, str], List[str]]:
             encodings[f.name] = "DELTA_BINARY_PACKED"
         elif pa.types.is_floating(t):
             encodings[f.name] = "BYTE_STREAM_SPLIT"
-        elif f.name == "log":  # one value per part: zstd takes its repeats, a dictionary costs more
+        elif f.name == "log":  # one value per part: a dictionary of it (CONSTANT), else PLAIN
             encodings[f.name] = "PLAIN"
         else:
             dictionary.append(f.name)
@@ -943,6 +943,8 @@ def _options(pa: Any, schema: Any) -> Dict[str, Any]:
     return {"use_dictionary": dictionary, "column_encoding": encodings or None, "write_statistics": True}
 
 
+# The columns a part's writer may take as one value in every row: `log` (parquet_part.PartFile).
+CONSTANT = ("log",)
 # Each table schema's Parquet template (parquet_part): the footer's schema and every column's
 # all-null chunk, made once per schema (a few hundred tables in the spec at most).
 _TEMPLATES: Dict[Any, Any] = {}
@@ -1313,7 +1315,7 @@ class _Part:
         if self.writer is None:
             options = _options(self.pa, self.schema)
             self.writer = parquet_part.PartFile(
-                self.pq, self.pa, self.tmp, self.schema, options, COMPRESSION, ROW_GROUP_ROWS, _TEMPLATES
+                self.pq, self.pa, self.tmp, self.schema, options, COMPRESSION, ROW_GROUP_ROWS, _TEMPLATES, CONSTANT
             )
         self.writer.write(table)
 
