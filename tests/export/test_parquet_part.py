@@ -240,3 +240,35 @@ def test_a_constant_text_column_goes_as_a_dictionary_of_its_value(tmp_path):
     write_ours(tmp_path / "state.parquet", t, constant=("v_json",))
     write_pyarrows(tmp_path / "pyarrow.parquet", t)
     assert (tmp_path / "state.parquet").read_bytes() == (tmp_path / "pyarrow.parquet").read_bytes()
+
+
+def test_a_moved_chunk_is_the_chunk_encoded_with_new_offsets():
+    # pyarrow's chunks move by re-encoding their page offsets only; a chunk with a file offset
+    # (older writers) or a bloom filter is decoded and encoded whole: both give the same bytes
+    m = part_module()
+    stats = {1: (m._BINARY, b"\xff" * 8), 3: (m._I64, 0), 7: (m._TRUE, True)}
+    meta = {
+        1: (m._I32, 5),
+        2: (m._LIST, (m._I32, [3, 9])),
+        3: (m._LIST, (m._BINARY, [b"x"])),
+        4: (m._I32, 6),
+        5: (m._I64, 1000),
+        6: (m._I64, 8040),
+        7: (m._I64, 300),
+        9: (m._I64, 70),
+        11: (m._I64, 50),
+        12: (m._STRUCT, stats),
+        13: (m._LIST, (m._STRUCT, [{1: (m._I32, 0), 2: (m._I32, 9), 3: (m._I32, 1)}])),
+        16: (m._STRUCT, {3: (m._LIST, (m._I64, [0, 1000]))}),
+    }
+    for extra, offset in (({}, 0), ({14: (m._I64, 400)}, 0), ({}, 350)):
+        chunk = {2: (m._I64, offset), 3: (m._STRUCT, {**meta, **extra})}
+        data = m._encode(chunk)
+        copied = m._Copied(m._Reader(data))
+        assert (copied.before is None) == bool(extra or offset)
+        moved = {9: (m._I64, 70 - 50 + 1_000_000), 11: (m._I64, 1_000_000)}
+        if extra:
+            moved[14] = (m._I64, 400 - 50 + 1_000_000)
+        want = {2: (m._I64, offset - 50 + 1_000_000 if offset else 0), 3: (m._STRUCT, {**meta, **extra, **moved})}
+        assert copied.at(1_000_000) == m._encode(want)
+        assert copied.meta[7][1] == 300 and copied.start == 50

@@ -39,6 +39,7 @@ _CM_CODEC = 4
 # values, sizes, page offsets, statistics, encoding statistics, size statistics).
 _CM_EXPECTED = {1, 2, 3, 4, 5, 6, 7, 9, 11, 12, 13, 16}
 _CM_OFFSETS = (_CM_DATA_PAGE, _CM_INDEX_PAGE, _CM_DICT_PAGE, _CM_BLOOM_OFFSET)  # file offsets: moved
+_CM_MOVING = {_CM_UNCOMPRESSED, _CM_COMPRESSED, *_CM_OFFSETS}  # what moving a chunk reads
 _CC_FILE_OFFSET, _CC_META = 2, 3
 _CC_INDEXES = (4, 5, 6, 7)  # offset index and column index: not written by the dataset
 _PH_TYPE, _PH_UNCOMPRESSED, _PH_COMPRESSED, _PH_DATA_PAGE = 1, 2, 3, 5
@@ -112,8 +113,9 @@ class _Reader:
             return (kt, vt, [(self.value(kt), self.value(vt)) for _ in range(n)])
         raise ValueError(f"Thrift compact type {t} at byte {self.i}")
 
-    def spans(self) -> Tuple[Struct, Dict[int, Tuple[int, int]]]:
-        """A struct and where each of its fields is (from its header to its value's end)."""
+    def spans(self, keep: Any) -> Tuple[Struct, Dict[int, Tuple[int, int]]]:
+        """A struct's fields whose ids are in `keep` (the others skipped, not decoded), and where
+        each field is (from its header to its value's end)."""
         out: Struct = {}
         where: Dict[int, Tuple[int, int]] = {}
         fid = 0
@@ -125,8 +127,50 @@ class _Reader:
                 return out, where
             t, delta = head & 15, head >> 4
             fid = fid + delta if delta else self.zigzag()
-            out[fid] = (t, self.value(t))
+            if fid in keep:
+                out[fid] = (t, self.value(t))
+            else:
+                self.skip(t)
             where[fid] = (at, self.i)
+
+    def skip(self, t: int) -> None:
+        """Past a value of type `t`, decoding nothing."""
+        b = self.b
+        if t in (_I16, _I32, _I64):
+            while b[self.i] & 0x80:
+                self.i += 1
+            self.i += 1
+        elif t == _BINARY:
+            n = self.varint()
+            self.i += n
+        elif t == _STRUCT:
+            while True:
+                head = b[self.i]
+                self.i += 1
+                if head == _STOP:
+                    return
+                if not head >> 4:
+                    self.zigzag()
+                self.skip(head & 15)
+        elif t in (_LIST, _SET):
+            head = b[self.i]
+            self.i += 1
+            n, et = head >> 4, head & 15
+            if n == 15:
+                n = self.varint()
+            if et in (_TRUE, _FALSE, _BYTE):
+                self.i += n
+            elif et == _DOUBLE:
+                self.i += 8 * n
+            else:
+                for _ in range(n):
+                    self.skip(et)
+        elif t == _BYTE:
+            self.i += 1
+        elif t == _DOUBLE:
+            self.i += 8
+        elif t not in (_TRUE, _FALSE):
+            self.value(t)  # a map (not in Parquet's footer): decoded
 
     def struct(self) -> Struct:
         out: Struct = {}
@@ -238,7 +282,7 @@ class _Copied:
             t, delta = head & 15, head >> 4
             fid = fid + delta if delta else r.zigzag()
             if fid == _CC_META and t == _STRUCT:
-                self.meta, spans = r.spans()
+                self.meta, spans = r.spans(_CM_MOVING)
                 self.chunk[fid] = (t, self.meta)
             else:
                 self.chunk[fid] = (t, r.value(t))
@@ -248,13 +292,18 @@ class _Copied:
         self.last = 0
         self.after = b""
         moved = [f for f in _CM_OFFSETS if f in meta]
-        if self.chunk.get(_CC_FILE_OFFSET, (0, 0))[1] or _CM_BLOOM_OFFSET in moved or not spans:
-            return
-        lo, hi = min(spans[f][0] for f in moved), max(spans[f][1] for f in moved)
-        if any(lo <= a < hi for f, (a, _) in spans.items() if f not in moved):
+        lo = min((spans[f][0] for f in moved), default=0)
+        hi = max((spans[f][1] for f in moved), default=0)
+        apart = any(lo <= a < hi for f, (a, _) in spans.items() if f not in moved)  # (never from pyarrow)
+        if self.chunk.get(_CC_FILE_OFFSET, (0, 0))[1] or _CM_BLOOM_OFFSET in moved or not moved or apart:
+            end = r.i  # encoded whole again: the whole metadata decoded
+            r.i = begin
+            self.chunk = r.struct()
+            self.meta = self.chunk[_CC_META][1]
+            r.i = end
             return
         self.before = bytes(r.b[begin:lo])
-        self.last = max((f for f in meta if f < _CM_DATA_PAGE), default=0)
+        self.last = max((f for f in spans if f < min(moved)), default=0)
         self.after = bytes(r.b[hi : r.i])
 
     def at(self, pos: int) -> bytes:
