@@ -83,11 +83,17 @@ def spark():
 
 @pytest.fixture(scope="module")
 def datasets(tmp_path_factory, logs, spark):
-    """(the Spark job's dataset, export --dataset's dataset) of the logs, and the Spark summary."""
+    """(the Spark job's dataset, export --dataset's dataset) of the logs, and the Spark summary.
+    Phase 1 takes at most two splits per task here, so a log's anchors come from several tasks."""
     m = mip()
     out = tmp_path_factory.mktemp("out")
     spark_dir, local_dir = out / "spark", out / "local"
-    summary = m.spark.export_dataset(spark, logs, str(spark_dir), split_bytes=SPLIT)
+    phase1 = m.spark.PHASE1_BYTES
+    m.spark.PHASE1_BYTES = 2 * SPLIT
+    try:
+        summary = m.spark.export_dataset(spark, logs, str(spark_dir), split_bytes=SPLIT)
+    finally:
+        m.spark.PHASE1_BYTES = phase1
     m.logs.dataset.export_dataset(logs, str(local_dir), split_bytes=SPLIT)
     return spark_dir, local_dir, summary
 
@@ -103,6 +109,16 @@ def files(root: Path) -> list:
 
 def tables(root: Path) -> list:
     return sorted(p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith("."))
+
+
+def test_phase1_groups_are_runs_of_splits_within_the_limit():
+    groups = mip().spark.phase1_groups
+    grid = [(0, 100), (100, 200), (200, 300), (300, 350)]
+    assert groups(grid, 200) == [[(0, 100), (100, 200)], [(200, 300), (300, 350)]]
+    assert groups(grid, 250) == [[(0, 100), (100, 200)], [(200, 300), (300, 350)]]
+    assert groups(grid, 99) == [[(0, 100)], [(100, 200)], [(200, 300)], [(300, 350)]]  # one split each at least
+    assert groups(grid, 10**9) == [grid]
+    assert groups([], 200) == [[]]  # an empty log: one task (its id and identity), no split
 
 
 def test_same_file_names(datasets):

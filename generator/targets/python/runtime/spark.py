@@ -16,10 +16,12 @@ The job, in two Spark stages after a listing:
    only: a log's content never travels as one row). A LOG may be a file, a directory (every file
    under it) or a glob, on any filesystem Spark lists and every executor reads: a local or shared
    path, or a URI pyarrow's filesystems open (s3://, gs://, hdfs://; s3a:// is read as s3://).
-2. A cheap pass, one task per log and one per split: the log's id (SHA-256 of its content) and
-   identity (`dataset.log_id`, `dataset.log_identity`), and each split's time anchors
-   (`timebase.split_anchors`). The driver builds each log's clock map from them
-   (`timebase.ClockMap.from_splits`), so split k is decoded with what the splits before it imply.
+2. A cheap pass, one task per `PHASE1_BYTES` (256 MiB) of a log's splits: the log's id (SHA-256
+   of its content) and identity (`dataset.log_id`, `dataset.log_identity`) in its first task, and
+   each split's time anchors (`timebase.split_anchors`). The driver builds each log's clock map
+   from them (`timebase.ClockMap.from_splits`), so split k is decoded with what the splits before
+   it imply. (A task costs Spark about 0.1 s however little it does, on the 2-core machine of
+   docs/benchmarks.md: a task per split here was half the job's time on 8 MiB splits.)
 3. One task per split of the fixed grid (`dataset.splits`, `--split-bytes`, 64 MiB by default):
    `dataset.read_split`, `dataset.decode_split`, `dataset.write_split` (atomic part files in the
    output directory); then the driver removes the log's stale parts (`dataset.remove_parts`) and
@@ -60,6 +62,9 @@ from .logs.writers import ToolError, need
 
 DEFAULT_MASTER = "local[*]"
 GLOB_CHARS = "*?[{"
+# Phase 1's bytes of splits per task (the module docstring): a log's id, identity and anchors in
+# few tasks, a large log's spread over several.
+PHASE1_BYTES = 256 << 20
 # Spark settings of the session the command starts: no web UI, no progress bar; in local mode the
 # driver binds to the loopback interface only (nothing listens on the network).
 SESSION_CONF = {
@@ -252,8 +257,8 @@ def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List
             where = (
                 f"{task[1]}"
                 if task[0] == "log"
-                else f"{task[1]} split at {task[3]}"
-                if task[0] == "split"
+                else f"{task[1]} splits from {task[3][0][0]}"
+                if task[0] == "splits"
                 else f"{task[0]} split at {task[2]}"
             )
             result = _Failed(f"{where}: {type(e).__name__}: {e}")
@@ -284,9 +289,8 @@ class _Failed:
         self.error = error
 
 
-def _identify(task: Tuple[str, str, int, Optional[str], Optional[str]]) -> Any:
-    """Phase 1, per log: ("ok", log id, identity) or ("unreadable", error)."""
-    _kind, uri, _size, model, serial = task
+def _identify(uri: str, model: Optional[str], serial: Optional[str]) -> Any:
+    """A log's ("ok", log id, identity, size) or ("unreadable", error)."""
     try:
         read_at, size = open_log(uri)
         return ("ok", log_id_of(uri, read_at, size), dataset.log_identity(read_at, size, model, serial), size)
@@ -294,20 +298,43 @@ def _identify(task: Tuple[str, str, int, Optional[str], Optional[str]]) -> Any:
         return ("unreadable", str(e))
 
 
-def _anchors(task: Tuple[str, str, int, int, int]) -> Any:
-    """Phase 1, per split: the split's time anchors (`timebase.split_anchors`), or
-    ("unreadable", error)."""
-    _kind, uri, size, start, end = task
+def _anchors(uri: str, size: int, group: Sequence[Tuple[int, int]]) -> List[Any]:
+    """The time anchors of each split of `group` (`timebase.split_anchors`), or ("unreadable",
+    error) for each split from the first that cannot be read."""
+    out: List[Any] = []
     try:
         read_at, _ = open_log(uri)
-        data, base = dataset.read_split(read_at, size, start, end)
+        for start, end in group:
+            data, base = dataset.read_split(read_at, size, start, end)
+            out.append(timebase.split_anchors(data, base, start, end))
     except dataset.ReadError as e:
-        return ("unreadable", str(e))
-    return timebase.split_anchors(data, base, start, end)
+        out += [("unreadable", str(e))] * (len(group) - len(out))
+    return out
 
 
 def _phase1(task: Tuple[Any, ...]) -> Any:
-    return _identify(task) if task[0] == "log" else _anchors(task)
+    """Phase 1: ("log", uri, size, model, serial, splits) -> (the log's identity, anchors);
+    ("splits", uri, size, splits) -> anchors."""
+    if task[0] == "log":
+        _kind, uri, size, model, serial, group = task
+        return (_identify(uri, model, serial), _anchors(uri, size, group))
+    _kind, uri, size, group = task
+    return _anchors(uri, size, group)
+
+
+def phase1_groups(grid: Sequence[Tuple[int, int]], limit: int = 0) -> List[List[Tuple[int, int]]]:
+    """A log's splits in runs of at most `limit` bytes (PHASE1_BYTES; at least one split each): the
+    splits of one phase-1 task. A log without splits (empty) still has one run, empty."""
+    limit = limit or PHASE1_BYTES
+    groups: List[List[Tuple[int, int]]] = [[]]
+    held = 0
+    for start, end in grid:
+        if groups[-1] and held + (end - start) > limit:
+            groups.append([])
+            held = 0
+        groups[-1].append((start, end))
+        held += end - start
+    return groups
 
 
 def _decode(out_dir: str, task: Tuple[str, int, int, int, str, Any, Any]) -> Any:
@@ -355,18 +382,21 @@ def export_dataset(
     logs, bad = list_logs(spark, paths)
     unreadable: List[Tuple[str, str]] = list(bad)
 
-    # phase 1: ids and identities per log, time anchors per split
+    # phase 1: ids and identities per log, time anchors per split (a task per run of splits)
     grids = [dataset.splits(log.size, split_bytes) for log in logs]
-    tasks1: List[Tuple[Any, ...]] = [("log", log.uri, log.size, model, serial) for log in logs]
-    for log, grid in zip(logs, grids):
-        tasks1 += [("split", log.uri, log.size, start, end) for start, end in grid]
+    groups = [phase1_groups(grid) for grid in grids]
+    tasks1: List[Tuple[Any, ...]] = []
+    for log, runs in zip(logs, groups):
+        tasks1.append(("log", log.uri, log.size, model, serial, runs[0]))
+        tasks1 += [("splits", log.uri, log.size, run) for run in runs[1:]]
     results1 = _run_tasks(spark, tasks1, _phase1)
-    pos = len(logs)
+    pos = 0
     ready: List[Tuple[Listed, str, dataset.Identity, int, List[Tuple[int, int]], Any]] = []
-    for i, (log, grid) in enumerate(zip(logs, grids)):
-        ident = results1[i]
-        anchors = results1[pos : pos + len(grid)]
-        pos += len(grid)
+    for log, grid, runs in zip(logs, grids, groups):
+        ident, anchors = results1[pos]
+        for more in results1[pos + 1 : pos + len(runs)]:
+            anchors = anchors + more
+        pos += len(runs)
         if ident[0] != "ok":
             unreadable.append((log.path, ident[1]))
             continue
