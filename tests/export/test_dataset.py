@@ -574,7 +574,7 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
     again after the messy one), every part holds the rows of the one-window export in the same
     order (sorted by t_ns, nulls last, then offset, as docs/dataset.md says), and its columns
     carry the encodings docs/dataset.md names (delta for integers and times, byte-stream-split
-    for floats; zstd, none for a column with no value in the part's first row group)."""
+    for floats; zstd, none for a column chunk with no value in its row group)."""
     dsm = ds()
     log = tmp_path / "w.bin"
     log.write_bytes(timed_log() + messy_log() + timed_log())
@@ -607,14 +607,45 @@ def test_windows_give_the_parts_of_the_whole_split(tmp_path, monkeypatch):
             "DELTA_BINARY_PACKED" in columns["t_ns"].encodings and "DELTA_BINARY_PACKED" in columns["offset"].encodings
         )
         assert "BYTE_STREAM_SPLIT" in columns["gps_tow"].encodings
-        # zstd, but none for a column without a value in the part's first row group
-        first = meta.row_group(0)
-        for name, chunk in columns.items():
-            empty = chunk.statistics.null_count == first.num_rows
-            assert chunk.compression == ("UNCOMPRESSED" if empty else "ZSTD"), (rel, name)
-            uncompressed += empty
+        # zstd, but none for a column chunk without a value in its row group
+        for g in range(meta.num_row_groups):
+            group = meta.row_group(g)
+            for j in range(meta.num_columns):
+                chunk = group.column(j)
+                empty = chunk.statistics.null_count == group.num_rows
+                assert chunk.compression == ("UNCOMPRESSED" if empty else "ZSTD"), (rel, g, chunk.path_in_schema)
+                uncompressed += empty
     assert groups > 1  # the small row groups were written as the windows came
     assert uncompressed  # (the samples tables' columns of the fields the log does not carry)
+
+
+def test_the_api_example_gives_the_exports_dataset(tmp_path, monkeypatch):
+    """docs/dataset.md's "The API (for other engines)" example, run as it is shown on a log of two
+    splits of several windows each: the same files and rows as `export --dataset`."""
+    dsm = ds()
+    text = (ROOT / "docs" / "dataset.md").read_text()
+    section = text[text.index("## The API (for other engines)") :]
+    code = section[
+        section.index("```python\n") + len("```python\n") : section.index("```", section.index("```python") + 3)
+    ]
+    log = tmp_path / "api.bin"
+    log.write_bytes(timed_log() + messy_log() + timed_log())
+    monkeypatch.setattr(dsm, "SPLIT_BYTES", log.stat().st_size // 2 + 1)
+    monkeypatch.setattr(dsm, "WINDOW_BYTES", 3001)
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, "docs/dataset.md", "exec"), {"path": str(log)})
+    dsm.export_dataset([str(log)], str(tmp_path / "export"), split_bytes=log.stat().st_size // 2 + 1)
+    api, export = tmp_path / "fleet", tmp_path / "export"
+    parts = sorted(str(p.relative_to(export)) for p in export.rglob("*.parquet"))
+    assert parts == sorted(str(p.relative_to(api)) for p in api.rglob("*.parquet"))
+    assert len([p for p in parts if "-000000000000.parquet" not in p and not p.startswith("_files")]) > 0
+    for rel in parts:
+        a, b = pq.read_table(api / rel, partitioning=None), pq.read_table(export / rel, partitioning=None)
+        if rel.startswith("_files"):
+            a, b = a.drop_columns(["path"]), b.drop_columns(["path"])
+        assert a.schema.equals(b.schema, check_metadata=True), rel
+        rows = [[{k: _bits(v) for k, v in r.items()} for r in t.to_pylist()] for t in (a, b)]
+        assert rows[0] == rows[1], rel  # (NaN values compared by their bits)
 
 
 def test_progress_bar_only_on_a_terminal(tmp_path):

@@ -84,16 +84,18 @@ def spark():
 @pytest.fixture(scope="module")
 def datasets(tmp_path_factory, logs, spark):
     """(the Spark job's dataset, export --dataset's dataset) of the logs, and the Spark summary.
-    Phase 1 takes at most two splits per task here, so a log's anchors come from several tasks."""
+    Phase 1 takes at most two splits per task here, so a log's anchors come from several tasks,
+    and the Spark job decodes each split in windows of 20,000 bytes (the driver sets them), the
+    local export in one window per split."""
     m = mip()
     out = tmp_path_factory.mktemp("out")
     spark_dir, local_dir = out / "spark", out / "local"
-    phase1 = m.spark.PHASE1_BYTES
-    m.spark.PHASE1_BYTES = 2 * SPLIT
+    phase1, window = m.spark.PHASE1_BYTES, m.logs.dataset.WINDOW_BYTES
+    m.spark.PHASE1_BYTES, m.logs.dataset.WINDOW_BYTES = 2 * SPLIT, 20_000
     try:
         summary = m.spark.export_dataset(spark, logs, str(spark_dir), split_bytes=SPLIT)
     finally:
-        m.spark.PHASE1_BYTES = phase1
+        m.spark.PHASE1_BYTES, m.logs.dataset.WINDOW_BYTES = phase1, window
     m.logs.dataset.export_dataset(logs, str(local_dir), split_bytes=SPLIT)
     return spark_dir, local_dir, summary
 

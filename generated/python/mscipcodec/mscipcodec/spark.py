@@ -18,13 +18,14 @@ The job, in two Spark stages after a listing:
    path, or a URI pyarrow's filesystems open (s3://, gs://, hdfs://; s3a:// is read as s3://).
 2. A cheap pass, one task per `PHASE1_BYTES` (256 MiB) of a log's splits: the log's id (SHA-256
    of its content) and identity (`dataset.log_id`, `dataset.log_identity`) in its first task, and
-   each split's time anchors (`timebase.split_anchors`). The driver builds each log's clock map
-   from them (`timebase.ClockMap.from_splits`), so split k is decoded with what the splits before
-   it imply. (A task costs Spark about 0.1 s however little it does, on the 2-core machine of
+   the time anchors of each window of each split (`dataset.windows`, `timebase.split_anchors`).
+   The driver builds each log's clock map from them (`timebase.ClockMap.from_splits`), so each
+   window is decoded with what the log before it implies. (A task costs Spark about 0.1 s however little it does, on the 2-core machine of
    docs/benchmarks.md: a task per split here was half the job's time on 8 MiB splits.)
 3. One task per split of the fixed grid (`dataset.splits`, `--split-bytes`, 64 MiB by default):
-   `dataset.read_split`, `dataset.decode_split`, `dataset.write_split` (atomic part files in the
-   output directory); then the driver removes the log's stale parts (`dataset.remove_parts`) and
+   `dataset.export_split`, the local export's own loop (the split decoded one window at a time,
+   `dataset.read_split` and `dataset.decode_split`, its part files written atomically in the
+   output directory as the windows come); then the driver removes the log's stale parts (`dataset.remove_parts`) and
    writes its `_files` row (`dataset.files_row`, `dataset.write_files_row`). A log that cannot be
    listed or read is an `unreadable` row there, never a failed run.
 
@@ -298,23 +299,24 @@ def _identify(uri: str, model: Optional[str], serial: Optional[str]) -> Any:
         return ("unreadable", str(e))
 
 
-def _anchors(uri: str, size: int, group: Sequence[Tuple[int, int]]) -> List[Any]:
-    """The time anchors of each split of `group` (`timebase.split_anchors`), or ("unreadable",
-    error) for each split from the first that cannot be read."""
+def _anchors(uri: str, size: int, ranges: Sequence[Tuple[int, int]]) -> List[Any]:
+    """The time anchors of each of `ranges` (the windows of some splits, `dataset.windows`, in log
+    order: `timebase.split_anchors`), or ("unreadable", error) for each from the first that cannot
+    be read."""
     out: List[Any] = []
     try:
         read_at, _ = open_log(uri)
-        for start, end in group:
+        for start, end in ranges:
             data, base = dataset.read_split(read_at, size, start, end)
             out.append(timebase.split_anchors(data, base, start, end))
     except dataset.ReadError as e:
-        out += [("unreadable", str(e))] * (len(group) - len(out))
+        out += [("unreadable", str(e))] * (len(ranges) - len(out))
     return out
 
 
 def _phase1(task: Tuple[Any, ...]) -> Any:
-    """Phase 1: ("log", uri, size, model, serial, splits) -> (the log's identity, anchors);
-    ("splits", uri, size, splits) -> anchors."""
+    """Phase 1: ("log", uri, size, model, serial, windows) -> (the log's identity, anchors);
+    ("splits", uri, size, windows) -> anchors."""
     if task[0] == "log":
         _kind, uri, size, model, serial, group = task
         return (_identify(uri, model, serial), _anchors(uri, size, group))
@@ -337,23 +339,21 @@ def phase1_groups(grid: Sequence[Tuple[int, int]], limit: int = 0) -> List[List[
     return groups
 
 
-def _decode(out_dir: str, task: Tuple[str, int, int, int, str, Any, Any]) -> Any:
-    """Phase 2, per split: decode and write it. ("ok", the split's result without its tables,
-    the parts written, rows per table), ("unreadable", error) or ("write", error)."""
-    uri, size, start, end, log, identity, clock = task
+def _decode(out_dir: str, task: Tuple[str, int, int, Any, str, Any, Any]) -> Any:
+    """Phase 2, per split: decode and write it one window at a time (`dataset.export_split`, as
+    the local export does: the memory of one window; the windows and their clocks from the
+    driver). ("ok", its windows' results without their tables, the parts written, rows per
+    table), ("unreadable", error) or ("write", error)."""
+    uri, size, start, ws, log, identity, clocks = task
+    results: List[Any] = []
     try:
         read_at, _ = open_log(uri)
-        data, base = dataset.read_split(read_at, size, start, end)
-        result = dataset.decode_split(data, base, start, end, clock, identity, log, size)
+        parts, rows = dataset.export_split(out_dir, read_at, size, identity, log, start, ws, clocks, results)
     except dataset.ReadError as e:  # also a log of unknown device with per-device fields
         return ("unreadable", str(e))
-    try:
-        parts = dataset.write_split(out_dir, result)
     except OSError as e:
         return ("write", e.strerror or str(e))
-    rows = {name: int(t.num_rows) for name, t in result.tables.items() if t.num_rows}
-    result.tables = {}
-    return ("ok", result, parts, rows)
+    return ("ok", results, parts, rows)
 
 
 # --------------------------------------------------------------------------------------- the job
@@ -387,8 +387,9 @@ def export_dataset(
     groups = [phase1_groups(grid) for grid in grids]
     tasks1: List[Tuple[Any, ...]] = []
     for log, runs in zip(logs, groups):
-        tasks1.append(("log", log.uri, log.size, model, serial, runs[0]))
-        tasks1 += [("splits", log.uri, log.size, run) for run in runs[1:]]
+        ranges = [[w for start, end in run for w in dataset.windows(start, end)] for run in runs]
+        tasks1.append(("log", log.uri, log.size, model, serial, ranges[0]))
+        tasks1 += [("splits", log.uri, log.size, r) for r in ranges[1:]]
     results1 = _run_tasks(spark, tasks1, _phase1)
     pos = 0
     ready: List[Tuple[Listed, str, dataset.Identity, int, List[Tuple[int, int]], Any]] = []
@@ -410,10 +411,14 @@ def export_dataset(
             continue
         ready.append((log, log_hash, identity, size, grid, timebase.ClockMap.from_splits(anchors)))
 
-    # phase 2: every split decoded and written
-    tasks2: List[Tuple[str, int, int, int, str, Any, Any]] = []
+    # phase 2: every split decoded and written (each window with its clock)
+    tasks2: List[Tuple[str, int, int, Any, str, Any, Any]] = []
     for log, log_hash, identity, size, grid, maps in ready:
-        tasks2 += [(log.uri, size, s, e, log_hash, identity, maps.split(k)) for k, (s, e) in enumerate(grid)]
+        k = 0
+        for s, e in grid:
+            ws = dataset.windows(s, e)
+            tasks2.append((log.uri, size, s, ws, log_hash, identity, [maps.split(k + j) for j in range(len(ws))]))
+            k += len(ws)
     results2 = _run_tasks(spark, tasks2, lambda task: _decode(out_dir, task))
     pos = 0
     for log, log_hash, identity, size, grid, _maps in ready:
@@ -422,7 +427,7 @@ def export_dataset(
         for r in mine:
             if r[0] == "write":
                 raise OSError(f"{out_dir}: {r[1]}")
-        split_results = [r[1] for r in mine if r[0] == "ok"]
+        split_results = [w for r in mine if r[0] == "ok" for w in r[1]]
         parts = [p for r in mine if r[0] == "ok" for p in r[2]]
         for r in mine:
             if r[0] == "ok":

@@ -1104,33 +1104,14 @@ def export_log(
         clock = range_clocks(read_at, size, [w for _s, _e, ws in grid for w in ws], held_times)
         k = 0
         for start, _end, ws in grid:
-            out = SplitWriter(out_dir, identity, log, start)
-            held = _HeldSamples()
-            try:
-                for w_start, w_end in ws:
-                    data, base = read_split(read_at, size, w_start, w_end)
-                    arrays = held_times[k] if k < len(held_times) else None
-                    r = decode_split(data, base, w_start, w_end, clock[k], identity, log, size, arrays)
-                    if k < len(held_times):
-                        held_times[k] = None
-                    k += 1
-                    del data
-                    tables = held.take(r)
-                    out.add(tables)
-                    for name, t in tables.items():
-                        rows[name] = rows.get(name, 0) + t.num_rows
-                    r.tables = {}
-                    results.append(r)
-                    if bar is not None:
-                        bar.update(w_end - w_start)
-                tables = held.rest()
-                out.add(tables)
-                for name, t in tables.items():
-                    rows[name] = rows.get(name, 0) + t.num_rows
-                parts += out.close()
-            except BaseException:
-                out.abort()
-                raise
+            n = len(ws)
+            got, split_rows = export_split(
+                out_dir, read_at, size, identity, log, start, ws, clock[k : k + n], results, held_times, k, bar
+            )
+            k += n
+            parts += got
+            for name, count in split_rows.items():
+                rows[name] = rows.get(name, 0) + count
     except ReadError as e:  # read before (the parts written stay: a re-run replaces them)
         row = files_row(log, path, size, identity, results, error=str(e))
         write_files_row(out_dir, row)
@@ -1139,6 +1120,57 @@ def export_log(
     row = files_row(log, path, size, identity, results)
     write_files_row(out_dir, row)
     return row, parts, rows
+
+
+def export_split(
+    out_dir: str,
+    read_at: ReadAt,
+    size: int,
+    identity: Identity,
+    log: str,
+    start: int,
+    ws: Sequence[Tuple[int, int]],
+    clocks: Sequence[Any],
+    results: List[SplitResult],
+    held_times: Optional[List[Any]] = None,
+    first: int = 0,
+    bar: Any = None,
+) -> Tuple[List[str], Dict[str, int]]:
+    """Decode and write the split starting at `start` one window at a time (`ws`: its `windows`,
+    `clocks`: each window's clock from `range_clocks`): the same part files and rows as
+    `decode_split` and `write_split` of the whole split, in the memory of one window. Returns
+    (the parts written, rows per table); each window's result, without its tables, is appended
+    to `results` as it is decoded (also those before a ReadError). `held_times` (`range_clocks`'
+    held time facts, of the log's windows from number `first` on) are used and let go; `bar`
+    moves by each window's bytes. On any error the split's unfinished parts are removed."""
+    out = SplitWriter(out_dir, identity, log, start)
+    held = _HeldSamples()
+    rows: Dict[str, int] = {}
+    try:
+        for j, ((w_start, w_end), clock) in enumerate(zip(ws, clocks)):
+            k = first + j
+            data, base = read_split(read_at, size, w_start, w_end)
+            arrays = held_times[k] if held_times is not None and k < len(held_times) else None
+            r = decode_split(data, base, w_start, w_end, clock, identity, log, size, arrays)
+            if arrays is not None:
+                held_times[k] = None  # type: ignore[index]
+            del data
+            tables = held.take(r)
+            out.add(tables)
+            for name, t in tables.items():
+                rows[name] = rows.get(name, 0) + t.num_rows
+            r.tables = {}
+            results.append(r)
+            if bar is not None:
+                bar.update(w_end - w_start)
+        tables = held.rest()
+        out.add(tables)
+        for name, t in tables.items():
+            rows[name] = rows.get(name, 0) + t.num_rows
+        return out.close(), rows
+    except BaseException:
+        out.abort()
+        raise
 
 
 class _HeldSamples:
