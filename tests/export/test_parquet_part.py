@@ -272,3 +272,16 @@ def test_a_moved_chunk_is_the_chunk_encoded_with_new_offsets():
         want = {2: (m._I64, offset - 50 + 1_000_000 if offset else 0), 3: (m._STRUCT, {**meta, **extra, **moved})}
         assert copied.at(1_000_000) == m._encode(want)
         assert copied.meta[7][1] == 300 and copied.start == 50
+
+
+def test_a_schema_without_a_template_is_written_by_pyarrow(tmp_path):
+    # a column that cannot be null and has no one-value form here (a list): no template, so
+    # pyarrow writes the whole file, the same rows
+    t = table(100)
+    t = t.append_column(
+        pa.field("items", pa.list_(pa.int32()), nullable=False), pa.array([[1, 2]] * 100, pa.list_(pa.int32()))
+    )
+    templates: dict = {}
+    write_ours(tmp_path / "part.parquet", t, templates=templates)
+    assert list(templates.values()) == [None]
+    assert pq.read_table(tmp_path / "part.parquet").equals(t)

@@ -547,7 +547,10 @@ class PartFile:
         bare = schema.remove_metadata()
         key = bare.serialize().to_pybytes()
         if key not in templates:
-            templates[key] = _Template(pq, pa, bare, options)
+            try:
+                templates[key] = _Template(pq, pa, bare, options)
+            except (ValueError, pa.ArrowException):  # no one-row table of this schema: pyarrow's file
+                templates[key] = None
         self.template = templates[key]
         self.writer: Any = None
         self.file: Any = None
