@@ -28,6 +28,11 @@ def part_module():
     return importlib.import_module("mipcodec.logs.parquet_part")
 
 
+def thrift_module():
+    pkg()
+    return importlib.import_module("mipcodec.logs.thrift")
+
+
 def dataset_module():
     pkg()
     return importlib.import_module("mipcodec.logs.dataset")
@@ -173,7 +178,7 @@ def test_footer_decodes_and_encodes_to_pyarrows_bytes(tmp_path):
     for name in ("a.parquet", "b.parquet"):
         data = (tmp_path / name).read_bytes()
         size = struct.unpack("<I", data[-8:-4])[0]
-        assert m._encode(m.footer(data)) == data[-8 - size : -8]
+        assert thrift_module().encode(m.footer(data)) == data[-8 - size : -8]
 
 
 def test_an_unexpected_template_leaves_the_file_to_pyarrow(tmp_path, monkeypatch):
@@ -245,32 +250,32 @@ def test_a_constant_text_column_goes_as_a_dictionary_of_its_value(tmp_path):
 def test_a_moved_chunk_is_the_chunk_encoded_with_new_offsets():
     # pyarrow's chunks move by re-encoding their page offsets only; a chunk with a file offset
     # (older writers) or a bloom filter is decoded and encoded whole: both give the same bytes
-    m = part_module()
-    stats = {1: (m._BINARY, b"\xff" * 8), 3: (m._I64, 0), 7: (m._TRUE, True)}
+    m, t = part_module(), thrift_module()
+    stats = {1: (t.BINARY, b"\xff" * 8), 3: (t.I64, 0), 7: (t.TRUE, True)}
     meta = {
-        1: (m._I32, 5),
-        2: (m._LIST, (m._I32, [3, 9])),
-        3: (m._LIST, (m._BINARY, [b"x"])),
-        4: (m._I32, 6),
-        5: (m._I64, 1000),
-        6: (m._I64, 8040),
-        7: (m._I64, 300),
-        9: (m._I64, 70),
-        11: (m._I64, 50),
-        12: (m._STRUCT, stats),
-        13: (m._LIST, (m._STRUCT, [{1: (m._I32, 0), 2: (m._I32, 9), 3: (m._I32, 1)}])),
-        16: (m._STRUCT, {3: (m._LIST, (m._I64, [0, 1000]))}),
+        1: (t.I32, 5),
+        2: (t.LIST, (t.I32, [3, 9])),
+        3: (t.LIST, (t.BINARY, [b"x"])),
+        4: (t.I32, 6),
+        5: (t.I64, 1000),
+        6: (t.I64, 8040),
+        7: (t.I64, 300),
+        9: (t.I64, 70),
+        11: (t.I64, 50),
+        12: (t.STRUCT, stats),
+        13: (t.LIST, (t.STRUCT, [{1: (t.I32, 0), 2: (t.I32, 9), 3: (t.I32, 1)}])),
+        16: (t.STRUCT, {3: (t.LIST, (t.I64, [0, 1000]))}),
     }
-    for extra, offset in (({}, 0), ({14: (m._I64, 400)}, 0), ({}, 350)):
-        chunk = {2: (m._I64, offset), 3: (m._STRUCT, {**meta, **extra})}
-        data = m._encode(chunk)
-        copied = m._Copied(m._Reader(data))
+    for extra, offset in (({}, 0), ({14: (t.I64, 400)}, 0), ({}, 350)):
+        chunk = {2: (t.I64, offset), 3: (t.STRUCT, {**meta, **extra})}
+        data = t.encode(chunk)
+        copied = m._Copied(t.Reader(data))
         assert (copied.before is None) == bool(extra or offset)
-        moved = {9: (m._I64, 70 - 50 + 1_000_000), 11: (m._I64, 1_000_000)}
+        moved = {9: (t.I64, 70 - 50 + 1_000_000), 11: (t.I64, 1_000_000)}
         if extra:
-            moved[14] = (m._I64, 400 - 50 + 1_000_000)
-        want = {2: (m._I64, offset - 50 + 1_000_000 if offset else 0), 3: (m._STRUCT, {**meta, **extra, **moved})}
-        assert copied.at(1_000_000) == m._encode(want)
+            moved[14] = (t.I64, 400 - 50 + 1_000_000)
+        want = {2: (t.I64, offset - 50 + 1_000_000 if offset else 0), 3: (t.STRUCT, {**meta, **extra, **moved})}
+        assert copied.at(1_000_000) == t.encode(want)
         assert copied.meta[7][1] == 300 and copied.start == 50
 
 

@@ -14,7 +14,7 @@ data page: one run of N zero definition levels), so:
   options (`_Template`), with N in place of 1 in the page header, the definition-level run and the
   column metadata;
 - the chunks go out in the schema's order, each row group's contiguous, and the footer (Thrift
-  compact protocol, `_Reader` / `_encode`) is pyarrow's for the whole schema: the template's
+  compact protocol, logs/thrift.py) is pyarrow's for the whole schema: the template's
   schema and column orders, the row groups' chunks with their new offsets, and the key-value
   metadata pyarrow writes (the schema's, then `ARROW:schema`).
 
@@ -28,9 +28,10 @@ import base64
 import struct
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
+from . import thrift
+from .thrift import Struct
+
 MAGIC = b"PAR1"
-# Thrift compact protocol's types.
-_STOP, _TRUE, _FALSE, _BYTE, _I16, _I32, _I64, _DOUBLE, _BINARY, _LIST, _SET, _MAP, _STRUCT = range(13)
 # parquet.thrift's field ids used here.
 _CM_NUM_VALUES, _CM_UNCOMPRESSED, _CM_COMPRESSED, _CM_DATA_PAGE, _CM_INDEX_PAGE, _CM_DICT_PAGE = 5, 6, 7, 9, 10, 11
 _CM_STATISTICS, _CM_BLOOM_OFFSET, _CM_SIZE_STATISTICS = 12, 14, 16
@@ -45,220 +46,6 @@ _CC_INDEXES = (4, 5, 6, 7)  # offset index and column index: not written by the 
 _PH_TYPE, _PH_UNCOMPRESSED, _PH_COMPRESSED, _PH_DATA_PAGE = 1, 2, 3, 5
 _DATA_PAGE, _DICTIONARY_PAGE = 0, 2
 
-Struct = Dict[int, Tuple[int, Any]]
-
-
-class _Reader:
-    """Decodes Thrift compact protocol into {field id: (type, value)} dicts (lists as (element
-    type, values)): every field kept, so that encoding it again gives the same bytes."""
-
-    __slots__ = ("b", "i")
-
-    def __init__(self, b: Any, i: int = 0) -> None:
-        self.b, self.i = b, i
-
-    def varint(self) -> int:
-        b, i, shift, out = self.b, self.i, 0, 0
-        while True:
-            c: int = b[i]
-            i += 1
-            out |= (c & 0x7F) << shift
-            if c < 0x80:
-                self.i = i
-                return out
-            shift += 7
-
-    def zigzag(self) -> int:
-        n = self.varint()
-        return (n >> 1) ^ -(n & 1)
-
-    def value(self, t: int) -> Any:
-        if t == _TRUE or t == _FALSE:
-            return t == _TRUE
-        if t in (_I16, _I32, _I64):
-            return self.zigzag()
-        if t == _BINARY:
-            n = self.varint()
-            v = bytes(self.b[self.i : self.i + n])
-            self.i += n
-            return v
-        if t == _STRUCT:
-            return self.struct()
-        if t in (_LIST, _SET):
-            head = self.b[self.i]
-            self.i += 1
-            n, et = head >> 4, head & 15
-            if n == 15:
-                n = self.varint()
-            if et in (_TRUE, _FALSE):  # a bool element is one byte
-                values = [self.b[k] == _TRUE for k in range(self.i, self.i + n)]
-                self.i += n
-                return (et, values)
-            return (et, [self.value(et) for _ in range(n)])
-        if t == _BYTE:
-            v = self.b[self.i]
-            self.i += 1
-            return v - 256 if v > 127 else v
-        if t == _DOUBLE:
-            v = struct.unpack_from("<d", self.b, self.i)[0]
-            self.i += 8
-            return v
-        if t == _MAP:
-            n = self.varint()
-            if not n:
-                return (0, 0, [])
-            head = self.b[self.i]
-            self.i += 1
-            kt, vt = head >> 4, head & 15
-            return (kt, vt, [(self.value(kt), self.value(vt)) for _ in range(n)])
-        raise ValueError(f"Thrift compact type {t} at byte {self.i}")
-
-    def spans(self, keep: Any) -> Tuple[Struct, Dict[int, Tuple[int, int]]]:
-        """A struct's fields whose ids are in `keep` (the others skipped, not decoded), and where
-        each field is (from its header to its value's end)."""
-        out: Struct = {}
-        where: Dict[int, Tuple[int, int]] = {}
-        fid = 0
-        while True:
-            at = self.i
-            head = self.b[self.i]
-            self.i += 1
-            if head == _STOP:
-                return out, where
-            t, delta = head & 15, head >> 4
-            fid = fid + delta if delta else self.zigzag()
-            if fid in keep:
-                out[fid] = (t, self.value(t))
-            else:
-                self.skip(t)
-            where[fid] = (at, self.i)
-
-    def skip(self, t: int) -> None:
-        """Past a value of type `t`, decoding nothing."""
-        b = self.b
-        if t in (_I16, _I32, _I64):
-            while b[self.i] & 0x80:
-                self.i += 1
-            self.i += 1
-        elif t == _BINARY:
-            n = self.varint()
-            self.i += n
-        elif t == _STRUCT:
-            while True:
-                head = b[self.i]
-                self.i += 1
-                if head == _STOP:
-                    return
-                if not head >> 4:
-                    self.zigzag()
-                self.skip(head & 15)
-        elif t in (_LIST, _SET):
-            head = b[self.i]
-            self.i += 1
-            n, et = head >> 4, head & 15
-            if n == 15:
-                n = self.varint()
-            if et in (_TRUE, _FALSE, _BYTE):
-                self.i += n
-            elif et == _DOUBLE:
-                self.i += 8 * n
-            else:
-                for _ in range(n):
-                    self.skip(et)
-        elif t == _BYTE:
-            self.i += 1
-        elif t == _DOUBLE:
-            self.i += 8
-        elif t not in (_TRUE, _FALSE):
-            self.value(t)  # a map (not in Parquet's footer): decoded
-
-    def struct(self) -> Struct:
-        out: Struct = {}
-        fid = 0
-        while True:
-            head = self.b[self.i]
-            self.i += 1
-            if head == _STOP:
-                return out
-            t, delta = head & 15, head >> 4
-            fid = fid + delta if delta else self.zigzag()
-            out[fid] = (t, self.value(t))
-
-
-def _varint(out: bytearray, n: int) -> None:
-    while n >= 0x80:
-        out.append((n & 0x7F) | 0x80)
-        n >>= 7
-    out.append(n)
-
-
-def _value(out: bytearray, t: int, v: Any) -> None:
-    if t in (_I16, _I32, _I64):
-        _varint(out, (v << 1) ^ (v >> 63))
-    elif t == _BINARY:
-        _varint(out, len(v))
-        out += v
-    elif t == _STRUCT:
-        if isinstance(v, (bytes, bytearray)):  # encoded already
-            out += v
-        else:
-            _struct(out, v)
-    elif t in (_LIST, _SET):
-        et, values = v
-        n = len(values)
-        if n < 15:
-            out.append(n << 4 | et)
-        else:
-            out.append(0xF0 | et)
-            _varint(out, n)
-        if et in (_TRUE, _FALSE):
-            out += bytes(_TRUE if x else _FALSE for x in values)
-        else:
-            for x in values:
-                _value(out, et, x)
-    elif t == _BYTE:
-        out.append(v & 0xFF)
-    elif t == _DOUBLE:
-        out += struct.pack("<d", v)
-    elif t == _MAP:
-        kt, vt, items = v
-        _varint(out, len(items))
-        if items:
-            out.append(kt << 4 | vt)
-            for k, x in items:
-                _value(out, kt, k)
-                _value(out, vt, x)
-    elif t not in (_TRUE, _FALSE):
-        raise ValueError(f"Thrift compact type {t}")
-
-
-def _struct(out: bytearray, s: Struct) -> None:
-    _fields(out, s, 0)
-    out.append(_STOP)
-
-
-def _fields(out: bytearray, s: Struct, last: int) -> int:
-    """Struct `s`'s fields (no stop byte), ids counted from `last`; the last id written."""
-    for fid in sorted(s):
-        t, v = s[fid]
-        if t in (_TRUE, _FALSE):
-            t = _TRUE if v else _FALSE
-        delta = fid - last
-        if 0 < delta <= 15:
-            out.append(delta << 4 | t)
-        else:
-            out.append(t)
-            _varint(out, (fid << 1) ^ (fid >> 63))
-        last = fid
-        _value(out, t, v)
-    return last
-
-
-def _encode(s: Struct) -> bytes:
-    out = bytearray()
-    _struct(out, s)
-    return bytes(out)
-
 
 class _Copied:
     """A ColumnChunk of a piece that pyarrow wrote: its metadata, and its encoded bytes around the
@@ -268,7 +55,7 @@ class _Copied:
 
     __slots__ = ("chunk", "meta", "start", "before", "last", "after")
 
-    def __init__(self, r: "_Reader") -> None:
+    def __init__(self, r: "thrift.Reader") -> None:
         begin = r.i
         self.chunk: Struct = {}
         self.meta: Struct = {}
@@ -277,11 +64,11 @@ class _Copied:
         while True:
             head = r.b[r.i]
             r.i += 1
-            if head == _STOP:
+            if head == thrift.STOP:
                 break
             t, delta = head & 15, head >> 4
             fid = fid + delta if delta else r.zigzag()
-            if fid == _CC_META and t == _STRUCT:
+            if fid == _CC_META and t == thrift.STRUCT:
                 self.meta, spans = r.spans(_CM_MOVING)
                 self.chunk[fid] = (t, self.meta)
             else:
@@ -312,12 +99,12 @@ class _Copied:
         moved = {f: (meta[f][0], meta[f][1] - self.start + pos) for f in _CM_OFFSETS if f in meta}
         if self.before is None:
             chunk = dict(self.chunk)
-            chunk[_CC_META] = (_STRUCT, {**meta, **moved})
+            chunk[_CC_META] = (thrift.STRUCT, {**meta, **moved})
             if chunk.get(_CC_FILE_OFFSET, (0, 0))[1]:
-                chunk[_CC_FILE_OFFSET] = (_I64, chunk[_CC_FILE_OFFSET][1] - self.start + pos)
-            return _encode(chunk)
+                chunk[_CC_FILE_OFFSET] = (thrift.I64, chunk[_CC_FILE_OFFSET][1] - self.start + pos)
+            return thrift.encode(chunk)
         out = bytearray(self.before)
-        _fields(out, moved, self.last)
+        thrift.fields(out, moved, self.last)
         out += self.after
         return bytes(out)
 
@@ -326,12 +113,12 @@ def _piece_chunks(data: Any) -> List[_Copied]:
     """The ColumnChunks of the one row group of a piece's bytes (a ValueError otherwise)."""
     n = len(data)
     size = struct.unpack_from("<I", data, n - 8)[0]
-    r = _Reader(data, n - 8 - size)
+    r = thrift.Reader(data, n - 8 - size)
     fid = 0
     while True:  # FileMetaData
         head = r.b[r.i]
         r.i += 1
-        if head == _STOP:
+        if head == thrift.STOP:
             raise ValueError("a piece without a row group")
         t, delta = head & 15, head >> 4
         fid = fid + delta if delta else r.zigzag()
@@ -345,7 +132,7 @@ def _piece_chunks(data: Any) -> List[_Copied]:
         while True:  # RowGroup
             head = r.b[r.i]
             r.i += 1
-            if head == _STOP:
+            if head == thrift.STOP:
                 raise ValueError("a row group without columns")
             t, delta = head & 15, head >> 4
             rfid = rfid + delta if delta else r.zigzag()
@@ -366,7 +153,7 @@ def footer(data: Any) -> Struct:
     if n < 12 or bytes(data[:4]) != MAGIC or bytes(data[n - 4 :]) != MAGIC:
         raise ValueError("not a Parquet file")
     size = struct.unpack_from("<I", data, n - 8)[0]
-    return _Reader(data, n - 8 - size).struct()
+    return thrift.Reader(data, n - 8 - size).struct()
 
 
 class _Shape:
@@ -382,13 +169,12 @@ class _Shape:
         self.dictionary, self.header, self.after_levels, self.meta = dictionary, header, after_levels, meta
         if set(meta) - _CM_EXPECTED or any(f not in meta for f in range(1, _CM_CODEC + 1)):
             raise ValueError("unexpected column metadata")
-        later = bytearray()
-        _struct(later, {f: v for f, v in meta.items() if f > _CM_DICT_PAGE})
-        self.key = (dictionary, _encode(header), after_levels, bytes(later))
+        later = thrift.encode({f: v for f, v in meta.items() if f > _CM_DICT_PAGE})
+        self.key = (dictionary, thrift.encode(header), after_levels, later)
         head = bytearray()
-        _fields(head, {_CC_FILE_OFFSET: (_I64, 0)}, 0)
-        head.append(1 << 4 | _STRUCT)  # field 3: the metadata
-        _fields(head, {f: v for f, v in meta.items() if f <= _CM_CODEC}, 0)
+        thrift.fields(head, {_CC_FILE_OFFSET: (thrift.I64, 0)}, 0)
+        head.append(1 << 4 | thrift.STRUCT)  # field 3: the metadata
+        thrift.fields(head, {f: v for f, v in meta.items() if f <= _CM_CODEC}, 0)
         self.head = bytes(head)
 
 
@@ -425,11 +211,11 @@ class _Template:
         # the footer's fields before the row count (version, schema) and after the key-value
         # metadata (writer, column orders), encoded once
         before = bytearray()
-        self.last = _fields(before, {f: v for f, v in self.meta.items() if f < 3}, 0)
+        self.last = thrift.fields(before, {f: v for f, v in self.meta.items() if f < 3}, 0)
         self.before = bytes(before)
         after = bytearray()
-        _fields(after, {f: v for f, v in self.meta.items() if f > 5}, 5)
-        after.append(_STOP)
+        thrift.fields(after, {f: v for f, v in self.meta.items() if f > 5}, 5)
+        after.append(thrift.STOP)
         self.after = bytes(after)
         self.shapes: Optional[List[Optional[_Shape]]] = None
         try:
@@ -444,7 +230,7 @@ class _Template:
             raise ValueError("unexpected chunk")
         start = meta[_CM_DICT_PAGE][1] if _CM_DICT_PAGE in meta else meta[_CM_DATA_PAGE][1]
         dictionary = bytes(data[start : meta[_CM_DATA_PAGE][1]])
-        r = _Reader(data, meta[_CM_DATA_PAGE][1])
+        r = thrift.Reader(data, meta[_CM_DATA_PAGE][1])
         header = r.struct()
         size = header[_PH_COMPRESSED][1]
         page = bytes(data[r.i : r.i + size])
@@ -469,37 +255,37 @@ class _NullChunk:
 
     def __init__(self, shape: "_Shape", n: int) -> None:
         levels = bytearray()
-        _varint(levels, n << 1)
+        thrift.varint(levels, n << 1)
         levels.append(0)
         page = struct.pack("<I", len(levels)) + bytes(levels) + shape.after_levels
         header = dict(shape.header)
         dp = dict(header[_PH_DATA_PAGE][1])
-        dp[1] = (_I32, n)
+        dp[1] = (thrift.I32, n)
         if 5 in dp:
-            dp[5] = (_STRUCT, {**dp[5][1], 3: (_I64, n)})
-        header[_PH_DATA_PAGE] = (_STRUCT, dp)
-        header[_PH_UNCOMPRESSED] = header[_PH_COMPRESSED] = (_I32, len(page))
-        self.data = shape.dictionary + _encode(header) + page
+            dp[5] = (thrift.STRUCT, {**dp[5][1], 3: (thrift.I64, n)})
+        header[_PH_DATA_PAGE] = (thrift.STRUCT, dp)
+        header[_PH_UNCOMPRESSED] = header[_PH_COMPRESSED] = (thrift.I32, len(page))
+        self.data = shape.dictionary + thrift.encode(header) + page
         meta = shape.meta
         mid = bytearray()
         sizes = {
-            _CM_NUM_VALUES: (_I64, n),
-            _CM_UNCOMPRESSED: (_I64, len(self.data)),
-            _CM_COMPRESSED: (_I64, len(self.data)),
+            _CM_NUM_VALUES: (thrift.I64, n),
+            _CM_UNCOMPRESSED: (thrift.I64, len(self.data)),
+            _CM_COMPRESSED: (thrift.I64, len(self.data)),
         }
-        _fields(mid, sizes, _CM_CODEC)
+        thrift.fields(mid, sizes, _CM_CODEC)
         self.mid = bytes(mid)
         later = {f: v for f, v in meta.items() if f > _CM_DICT_PAGE}
         if _CM_STATISTICS in later:
-            later[_CM_STATISTICS] = (_STRUCT, {**later[_CM_STATISTICS][1], 3: (_I64, n)})
+            later[_CM_STATISTICS] = (thrift.STRUCT, {**later[_CM_STATISTICS][1], 3: (thrift.I64, n)})
         if _CM_SIZE_STATISTICS in later:
             stats = dict(later[_CM_SIZE_STATISTICS][1])
             if 3 in stats:  # the definition levels' histogram: n nulls, no value
-                stats[3] = (_LIST, (_I64, [n, 0]))
-            later[_CM_SIZE_STATISTICS] = (_STRUCT, stats)
+                stats[3] = (thrift.LIST, (thrift.I64, [n, 0]))
+            later[_CM_SIZE_STATISTICS] = (thrift.STRUCT, stats)
         tail = bytearray()
-        _fields(tail, later, _CM_DICT_PAGE if _CM_DICT_PAGE in meta else _CM_DATA_PAGE)
-        tail += bytes((_STOP, _STOP))  # the metadata's end, the ColumnChunk's end
+        thrift.fields(tail, later, _CM_DICT_PAGE if _CM_DICT_PAGE in meta else _CM_DATA_PAGE)
+        tail += bytes((thrift.STOP, thrift.STOP))  # the metadata's end, the ColumnChunk's end
         self.tail = bytes(tail)
 
     def chunk(self, shape: "_Shape", at: int) -> bytes:
@@ -507,9 +293,13 @@ class _NullChunk:
         out = bytearray(shape.head)
         out += self.mid
         if shape.dictionary:
-            _fields(out, {_CM_DATA_PAGE: (_I64, at + len(shape.dictionary)), _CM_DICT_PAGE: (_I64, at)}, _CM_COMPRESSED)
+            thrift.fields(
+                out,
+                {_CM_DATA_PAGE: (thrift.I64, at + len(shape.dictionary)), _CM_DICT_PAGE: (thrift.I64, at)},
+                _CM_COMPRESSED,
+            )
         else:
-            _fields(out, {_CM_DATA_PAGE: (_I64, at)}, _CM_COMPRESSED)
+            thrift.fields(out, {_CM_DATA_PAGE: (thrift.I64, at)}, _CM_COMPRESSED)
         out += self.tail
         return bytes(out)
 
@@ -619,11 +409,11 @@ class PartFile:
         del chunks, piece
         self.row_groups.append(
             {
-                1: (_LIST, (_STRUCT, out)),
-                2: (_I64, unc),
-                3: (_I64, n),
-                5: (_I64, first),
-                6: (_I64, comp),
+                1: (thrift.LIST, (thrift.STRUCT, out)),
+                2: (thrift.I64, unc),
+                3: (thrift.I64, n),
+                5: (thrift.I64, first),
+                6: (thrift.I64, comp),
             }
         )
         self.rows += n
@@ -664,11 +454,20 @@ class PartFile:
         if self.file is None:
             return
         t = self.template
-        kv = [{1: (_BINARY, k), 2: (_BINARY, v)} for k, v in (self.schema.metadata or {}).items()]
-        kv.append({1: (_BINARY, b"ARROW:schema"), 2: (_BINARY, base64.b64encode(self.schema.serialize().to_pybytes()))})
+        kv = [{1: (thrift.BINARY, k), 2: (thrift.BINARY, v)} for k, v in (self.schema.metadata or {}).items()]
+        kv.append(
+            {
+                1: (thrift.BINARY, b"ARROW:schema"),
+                2: (thrift.BINARY, base64.b64encode(self.schema.serialize().to_pybytes())),
+            }
+        )
         out = bytearray(t.before)  # type: ignore[union-attr]
-        rows = {3: (_I64, self.rows), 4: (_LIST, (_STRUCT, self.row_groups)), 5: (_LIST, (_STRUCT, kv))}
-        _fields(out, rows, t.last)  # type: ignore[union-attr]
+        rows = {
+            3: (thrift.I64, self.rows),
+            4: (thrift.LIST, (thrift.STRUCT, self.row_groups)),
+            5: (thrift.LIST, (thrift.STRUCT, kv)),
+        }
+        thrift.fields(out, rows, t.last)  # type: ignore[union-attr]
         out += t.after  # type: ignore[union-attr]
         data = bytes(out)
         self.file.write(data + struct.pack("<I", len(data)) + MAGIC)
