@@ -20,14 +20,16 @@ The job, in two Spark stages after a listing:
    of its content) and identity (`dataset.log_id`, `dataset.log_identity`) in its first task, and
    the time anchors of each window of each split (`dataset.windows`, `timebase.split_anchors`).
    The driver builds each log's clock map from them (`timebase.ClockMap.from_splits`), so each
-   window is decoded with what the log before it implies. (A task costs Spark about 0.1 s however little it does, on the 2-core machine of
-   docs/benchmarks.md: a task per split here was half the job's time on 8 MiB splits.)
+   window is decoded with what the log before it implies. (A task costs Spark about 0.1 s
+   however little it does, on the 2-core machine of docs/benchmarks.md: a task per split here
+   was 40% of the job's time on 8 MiB splits.)
 3. One task per split of the fixed grid (`dataset.splits`, `--split-bytes`, 64 MiB by default):
    `dataset.export_split`, the local export's own loop (the split decoded one window at a time,
    `dataset.read_split` and `dataset.decode_split`, its part files written atomically in the
-   output directory as the windows come); then the driver removes the log's stale parts (`dataset.remove_parts`) and
-   writes its `_files` row (`dataset.files_row`, `dataset.write_files_row`). A log that cannot be
-   listed or read is an `unreadable` row there, never a failed run.
+   output directory as the windows come); then the driver removes the log's stale parts
+   (`dataset.remove_parts`) and writes its `_files` row (`dataset.files_row`,
+   `dataset.write_files_row`). A log that cannot be listed or read is an `unreadable` row there,
+   never a failed run.
 
 The tasks run as `DataFrame.mapInArrow` over a range of task numbers, one task per partition:
 the decoder is columnar and produces Arrow tables, mapInArrow hands a task Arrow batches with no
