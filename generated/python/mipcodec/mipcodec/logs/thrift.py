@@ -50,11 +50,7 @@ class Reader:
         if t == STRUCT:
             return self.struct()
         if t in (LIST, SET):
-            head = self.b[self.i]
-            self.i += 1
-            n, et = head >> 4, head & 15
-            if n == 15:
-                n = self.varint()
+            n, et = self.list_header()
             if et in (TRUE, FALSE):  # a bool element is one byte
                 values = [self.b[k] == TRUE for k in range(self.i, self.i + n)]
                 self.i += n
@@ -98,6 +94,30 @@ class Reader:
                 self.skip(t)
             where[fid] = (at, self.i)
 
+    def list_header(self) -> Tuple[int, int]:
+        """A list's or set's (element count, element type)."""
+        head = self.b[self.i]
+        self.i += 1
+        n, et = head >> 4, head & 15
+        if n == 15:
+            n = self.varint()
+        return n, et
+
+    def find(self, fid: int) -> int:
+        """Past the fields of the struct being read up to field `fid` (the others skipped); its
+        type. A ValueError when the struct ends first."""
+        at = 0
+        while True:
+            head: int = self.b[self.i]
+            self.i += 1
+            if head == STOP:
+                raise ValueError(f"no field {fid}")
+            t, delta = head & 15, head >> 4
+            at = at + delta if delta else self.zigzag()
+            if at == fid:
+                return t
+            self.skip(t)
+
     def skip(self, t: int) -> None:
         """Past a value of type `t`, decoding nothing."""
         b = self.b
@@ -118,11 +138,7 @@ class Reader:
                     self.zigzag()
                 self.skip(head & 15)
         elif t in (LIST, SET):
-            head = b[self.i]
-            self.i += 1
-            n, et = head >> 4, head & 15
-            if n == 15:
-                n = self.varint()
+            n, et = self.list_header()
             if et in (TRUE, FALSE, BYTE):
                 self.i += n
             elif et == DOUBLE:

@@ -114,37 +114,13 @@ def _piece_chunks(data: Any) -> List[_Copied]:
     n = len(data)
     size = struct.unpack_from("<I", data, n - 8)[0]
     r = thrift.Reader(data, n - 8 - size)
-    fid = 0
-    while True:  # FileMetaData
-        head = r.b[r.i]
-        r.i += 1
-        if head == thrift.STOP:
-            raise ValueError("a piece without a row group")
-        t, delta = head & 15, head >> 4
-        fid = fid + delta if delta else r.zigzag()
-        if fid != 4:
-            r.value(t)
-            continue
-        if r.b[r.i] >> 4 != 1:
-            raise ValueError("a piece of more than one row group")
-        r.i += 1
-        rfid = 0
-        while True:  # RowGroup
-            head = r.b[r.i]
-            r.i += 1
-            if head == thrift.STOP:
-                raise ValueError("a row group without columns")
-            t, delta = head & 15, head >> 4
-            rfid = rfid + delta if delta else r.zigzag()
-            if rfid != 1:
-                r.value(t)
-                continue
-            head = r.b[r.i]
-            r.i += 1
-            count = head >> 4
-            if count == 15:
-                count = r.varint()
-            return [_Copied(r) for _ in range(count)]
+    r.find(4)  # FileMetaData's row groups
+    groups, _ = r.list_header()
+    if groups != 1:
+        raise ValueError(f"a piece of {groups} row groups")
+    r.find(1)  # the row group's columns
+    count, _ = r.list_header()
+    return [_Copied(r) for _ in range(count)]
 
 
 def footer(data: Any) -> Struct:
