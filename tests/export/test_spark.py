@@ -274,3 +274,103 @@ def test_dataset_without_dates_opens_with_spark(spark, capture_dataset):  # noqa
     df = spark.read.option("basePath", str(capture_dataset)).parquet(str(capture_dataset))
     got = df.groupBy("date").count().collect()
     assert [(r["date"], r["count"] > 100) for r in got] == [("unknown", True)]
+
+
+def test_local_sessions_compile_with_c1_and_conf_replaces_it(spark):
+    """A local session's JVM runs with `-XX:TieredStopAtLevel=1` (spark.LOCAL_CONF: the JIT's
+    compiling took the workers' cores, docs/benchmarks.md), checked in the running JVM's own
+    arguments; a cluster master does not get it, and a `--conf` of the same key replaces it."""
+    m = mip()
+    args = list(spark._jvm.java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments())
+    assert "-XX:TieredStopAtLevel=1" in args
+    conf = m.spark.session_conf
+    assert conf("local[2]")["spark.driver.extraJavaOptions"] == "-XX:TieredStopAtLevel=1"
+    assert "spark.driver.extraJavaOptions" not in conf("spark://127.0.0.1:7077")
+    mine = conf("local[*]", {"spark.driver.extraJavaOptions": "-Xss4m"})
+    assert mine["spark.driver.extraJavaOptions"] == "-Xss4m"
+    assert mine["spark.driver.host"] == "127.0.0.1" and mine["spark.ui.enabled"] == "false"
+
+
+def test_tasks_run_in_ready_workers(spark):
+    """Every task's Python worker has been through `worker_ready`: its objects frozen out of the
+    collector's reach, and (Python 3.10 and 3.11) zipimport's cache invalidation patched."""
+    m = mip()
+
+    def probe(_task):
+        import gc
+        import zipimport
+
+        return gc.get_freeze_count(), getattr(zipimport.zipimporter.invalidate_caches, "_mipcodec_lazy", False)
+
+    got = m.spark._run_tasks(spark, [0, 1, 2, 3], probe)
+    patched = (3, 10) <= sys.version_info[:2] < (3, 12)
+    assert len(got) == 4
+    assert all(frozen > 1000 and lazy == patched for frozen, lazy in got), got
+
+
+LAZY_ZIP = r"""
+import importlib, json, os, sys, zipfile, zipimport
+import mipcodec.spark as spark_job
+
+def archive(path, name, body):
+    tmp = path + ".new"
+    with zipfile.ZipFile(tmp, "w") as z:
+        z.writestr(name + ".py", body)
+    os.replace(tmp, path)  # a new file in its place, as a reinstall writes it
+
+path = sys.argv[1]
+archive(path, "first_mod", "X = 1\n")
+sys.path.insert(0, path)
+import first_mod
+reads = []
+original = zipimport._read_directory
+zipimport._read_directory = lambda archive: (reads.append(archive), original(archive))[1]
+patched = spark_job.lazy_zip_invalidation()
+again = spark_job.lazy_zip_invalidation()
+importlib.invalidate_caches()
+first = len(reads)
+importlib.invalidate_caches()
+importlib.invalidate_caches()
+unchanged = len(reads) - first
+archive(path, "second_mod", "Y = 22\n# longer\n")
+importlib.invalidate_caches()
+import second_mod
+print(json.dumps({"patched": patched, "again": again, "unchanged": unchanged, "y": second_mod.Y}))
+"""
+
+
+def test_lazy_zip_invalidation(tmp_path):
+    """`lazy_zip_invalidation` (in a fresh interpreter: it patches zipimport for the process): on
+    Python 3.10 and 3.11 `importlib.invalidate_caches()` no longer reads an unchanged archive's
+    directory again (unpatched it reads it at every call, CPython gh-103200), and an archive
+    replaced on disk is still read again: a module only the new archive holds imports. On 3.12
+    and later it patches nothing and the same holds."""
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+    r = subprocess.run(
+        [sys.executable, "-c", LAZY_ZIP, str(tmp_path / "mods.zip")],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=120,
+    )
+    assert r.returncode == 0, r.stderr
+    got = json.loads(r.stdout)
+    patched = (3, 10) <= sys.version_info[:2] < (3, 12)
+    assert got == {"patched": patched, "again": patched, "unchanged": 0, "y": 22}
+
+
+def test_lazy_zip_invalidation_is_needed(tmp_path):
+    """The cost the patch removes is there without it on this Python (3.10, 3.11): each
+    `importlib.invalidate_caches()` reads the archive's directory again. On 3.12 and later it does
+    not, and `lazy_zip_invalidation` leaves zipimport alone (the test above)."""
+    code = LAZY_ZIP.replace("patched = spark_job.lazy_zip_invalidation()", "patched = False").replace(
+        "again = spark_job.lazy_zip_invalidation()", "again = False"
+    )
+    env = {**os.environ, "PYTHONPATH": str(PKG_DIR)}
+    r = subprocess.run(
+        [sys.executable, "-c", code, str(tmp_path / "mods.zip")], capture_output=True, text=True, env=env, timeout=120
+    )
+    assert r.returncode == 0, r.stderr
+    got = json.loads(r.stdout)
+    assert got["y"] == 22
+    assert got["unchanged"] == (2 if (3, 10) <= sys.version_info[:2] < (3, 12) else 0)

@@ -48,6 +48,7 @@ stderr); 130 on Ctrl-C.
 from __future__ import annotations
 
 import argparse
+import gc
 import hashlib
 import importlib
 import os
@@ -69,13 +70,23 @@ GLOB_CHARS = "*?[{"
 # few tasks, a large log's spread over several.
 PHASE1_BYTES = 256 << 20
 # Spark settings of the session the command starts: no web UI, no progress bar; in local mode the
-# driver binds to the loopback interface only (nothing listens on the network).
+# driver binds to the loopback interface only (nothing listens on the network), and its JVM
+# compiles with the client compiler only (C1, `-XX:TieredStopAtLevel=1`). In local mode that one
+# JVM is the driver and the executor, and here it only schedules tasks and moves small Arrow
+# batches: the Python workers do the work. With the server compiler (C2) the JVM spent 2.4 CPU s
+# of a 6-8 s job compiling, and 0.4-0.5 s of each run after (docs/benchmarks.md), on the cores
+# the workers need; with C1 alone, 0.15-0.3 s. A `spark.driver.extraJavaOptions` of your own
+# (`--conf`) replaces this one.
 SESSION_CONF = {
     "spark.ui.enabled": "false",
     "spark.ui.showConsoleProgress": "false",
     "spark.sql.execution.arrow.pyspark.enabled": "true",
 }
-LOCAL_CONF = {"spark.driver.host": "127.0.0.1", "spark.driver.bindAddress": "127.0.0.1"}
+LOCAL_CONF = {
+    "spark.driver.host": "127.0.0.1",
+    "spark.driver.bindAddress": "127.0.0.1",
+    "spark.driver.extraJavaOptions": "-XX:TieredStopAtLevel=1",
+}
 
 ReadAt = Callable[[int, int], bytes]
 
@@ -98,6 +109,12 @@ def java_missing() -> Optional[str]:
     return "no java on PATH and JAVA_HOME is not set"
 
 
+def session_conf(master: str, conf: Optional[Dict[str, str]] = None) -> Dict[str, str]:
+    """The settings `session` gives Spark: SESSION_CONF, LOCAL_CONF on a local master, then
+    `conf`, each replacing the ones before it key by key."""
+    return {**SESSION_CONF, **(LOCAL_CONF if master.startswith("local") else {}), **(conf or {})}
+
+
 def session(master: str = DEFAULT_MASTER, conf: Optional[Dict[str, str]] = None) -> Any:
     """A SparkSession for the command: `master` (local[*] by default), the settings above plus
     `conf`. In local mode the Python workers run this interpreter (PYSPARK_PYTHON unless set),
@@ -113,7 +130,7 @@ def session(master: str = DEFAULT_MASTER, conf: Optional[Dict[str, str]] = None)
         os.environ.setdefault("PYSPARK_PYTHON", sys.executable)
         os.environ.setdefault("SPARK_LOCAL_IP", "127.0.0.1")  # every service on the loopback interface
     builder = sql.SparkSession.builder.master(master).appName(f"{PROG}.spark")
-    for key, value in {**SESSION_CONF, **(LOCAL_CONF if local else {}), **(conf or {})}.items():
+    for key, value in session_conf(master, conf).items():
         builder = builder.config(key, value)
     try:
         spark = builder.getOrCreate()
@@ -268,6 +285,7 @@ def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List
         return pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL)
 
     def run(batches: Iterator[Any]) -> Iterator[Any]:
+        worker_ready()
         pa = importlib.import_module("pyarrow")
         for batch in batches:
             ids = batch.column(0).to_pylist()
@@ -283,6 +301,54 @@ def _run_tasks(spark: Any, tasks: List[Any], work: Callable[[Any], Any]) -> List
     if failed is not None:
         raise RuntimeError(failed.error)
     return results
+
+
+def worker_ready() -> None:
+    """What a task does first in its Python worker, against two costs PySpark's worker adds to
+    every task on top of the task's own work (measured on Python 3.11 in docs/benchmarks.md: a
+    no-op task cost 0.11 s, 0.06 s with both, the rest the JVM's):
+    `lazy_zip_invalidation`, and the full garbage collection the worker runs after each task
+    (`gc.collect()`: about 30 ms once the worker has imported pyarrow, pandas and this package).
+    `gc.freeze()` moves the objects alive now (after the previous task's collection: modules,
+    their tables and caches) out of the collector's reach, so the collection after this task
+    walks only what this task made. Reference counting still frees a frozen object no longer
+    used; only a reference cycle among them would stay."""
+    gc.freeze()
+    lazy_zip_invalidation()
+
+
+def lazy_zip_invalidation() -> bool:
+    """Make `importlib.invalidate_caches()` cheap in this Python worker on Python 3.10 and 3.11
+    (True when it patched, now or before). PySpark's worker calls it before every task, and
+    on those versions it makes each `zipimport.zipimporter` read its whole archive's directory
+    again, in Python: for the `pyspark.zip` Spark puts on the workers' path, about 0.1 s of every
+    task (CPython gh-103200; Python 3.12 reads the directory only when next used). The patched
+    `invalidate_caches` reads it again only when the archive's size, inode or modification time
+    changed since its last read, so a changed archive is still seen. Python 3.12 and later are
+    left alone."""
+    if not (3, 10) <= sys.version_info[:2] < (3, 12):
+        return False
+    zipimport = importlib.import_module("zipimport")
+    cls = zipimport.zipimporter
+    original = cls.invalidate_caches
+    if getattr(original, "_mipcodec_lazy", False):
+        return True
+
+    def invalidate_caches(self: Any) -> None:
+        try:
+            st = os.stat(self.archive)
+            key: Optional[Tuple[int, int, int]] = (st.st_mtime_ns, st.st_size, st.st_ino)
+        except OSError:
+            key = None
+        if key is not None and self.__dict__.get("_mipcodec_stat") == key:
+            return
+        original(self)
+        self.__dict__["_mipcodec_stat"] = key
+
+    patched: Any = invalidate_caches
+    patched._mipcodec_lazy = True
+    cls.invalidate_caches = patched
+    return True
 
 
 class _Failed:
@@ -521,4 +587,4 @@ if __name__ == "__main__":
     sys.exit(main())
 
 
-__all__ = ["export_dataset", "session", "list_logs", "open_log", "main", "DEFAULT_MASTER"]
+__all__ = ["export_dataset", "session", "session_conf", "list_logs", "open_log", "main", "DEFAULT_MASTER"]
