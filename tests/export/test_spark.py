@@ -182,18 +182,22 @@ def test_files_table(datasets, logs):
             assert status == "truncated"
         else:  # the fleet's garbage never holds a sync byte: skipped exactly
             assert (status, skipped) == ("corrupt" if e["garbage_bytes"] else "ok", e["garbage_bytes"])
-    cut = 0
+    cut = boundaries = 0
     for path in logs:
         if not os.path.exists(path):
             continue
         data = Path(path).read_bytes()
+        boundaries += max(0, (len(data) - 1) // SPLIT)  # the split starts after the first
         packets = [e for e in m.codec.packets.decode_all(data) if isinstance(e, m.codec.packets.Packet)]
         assert by_name[os.path.basename(path)][2] == len(packets), path
         proto = m._protocol
         for p in packets:
             last = p.offset + proto.HEADER_SIZE + data[p.offset + proto.LENGTH_OFFSET] + proto.CHECKSUM_SIZE - 1
             cut += p.offset // SPLIT != last // SPLIT
-    assert cut >= 10  # split boundaries did cut packets
+    # split boundaries did cut packets: most boundaries fall inside one (a packet starts on a
+    # boundary only by chance, and the fleet's garbage is short), whether or not the device capture
+    # is there (without it: 8 packets cut at 8 boundaries)
+    assert boundaries >= 4 and cut >= boundaries // 2, (cut, boundaries)
     assert {r["path"] for r in summary.logs} == set(logs)  # paths as given
 
 
