@@ -321,7 +321,7 @@ def lazy_zip_invalidation() -> bool:
     """Make `importlib.invalidate_caches()` cheap in this Python worker on Python 3.10 and 3.11
     (True when it patched, now or before). PySpark's worker calls it before every task, and
     on those versions it makes each `zipimport.zipimporter` read its whole archive's directory
-    again, in Python: for the `pyspark.zip` Spark puts on the workers' path, about 0.1 s of every
+    again, in Python: for the `pyspark.zip` Spark puts on the workers' path, about 0.06 s of every
     task (CPython gh-103200; Python 3.12 reads the directory only when next used). The patched
     `invalidate_caches` reads it again only when the archive's size, inode or modification time
     changed since its last read, so a changed archive is still seen. Python 3.12 and later are
